@@ -1,0 +1,247 @@
+// The syntax tree: mirrors the text, one struct per construct, every node with its SourceRange.
+// Nothing here is resolved or checked; the validator turns it into the model (model.h).
+#pragma once
+
+#include "operators.h"
+#include "source.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gfec::ast {
+
+struct Name {
+  std::string text;
+  SourceRange range;
+};
+
+// ---------------------------------------------------------------- expressions
+
+struct Expr;
+using ExprPtr = std::unique_ptr<Expr>;
+
+struct Expr {
+  enum class Kind {
+    Bool,     ///< `true` / `false`: bool_value
+    Int,      ///< `42`: text is the spelling
+    Float,    ///< `0.5`, `1e-3`: text is the spelling
+    String,   ///< `"..."`: text is the decoded value, spelling the literal as written
+    Duration, ///< `10ms`, `1.5s`: milliseconds in duration_ms
+    Name,     ///< a variable, constant or config entry: name
+    Call,     ///< `f(a, b)` (also `elapsed(P)`): name + args
+    Unary,    ///< unary_op + args[0]
+    Binary,   ///< binary_op + args[0], args[1]
+    Paren,    ///< `( e )`: args[0]; kept so formulas and generated code keep the user's brackets
+  };
+  Kind kind;
+  SourceRange range;
+  std::string text;
+  std::string spelling;
+  bool bool_value = false;
+  double duration_ms = 0;
+  Name name;
+  UnaryOp unary_op = UnaryOp::Not;
+  BinaryOp binary_op = BinaryOp::Add;
+  std::vector<ExprPtr> args;
+};
+
+// ---------------------------------------------------------------- statements
+
+struct Stmt {
+  enum class Kind { Call, Assign, Verbatim };
+  Kind kind;
+  SourceRange range;
+  ExprPtr call;            ///< Kind::Call: an Expr of Kind::Call
+  Name target;             ///< Kind::Assign
+  AssignOp assign_op = AssignOp::Set;
+  ExprPtr value;           ///< Kind::Assign
+  std::string verbatim;    ///< Kind::Verbatim: the text between %{ and %}
+};
+
+using Block = std::vector<Stmt>;
+
+// ---------------------------------------------------------------- declarations
+
+/// A type written as an identifier: bool int float double void string object.
+struct TypeName {
+  std::string text;
+  SourceRange range;
+};
+
+struct Param {
+  TypeName type;
+  std::optional<Name> name;  ///< C prototypes may leave parameters unnamed
+  SourceRange range;
+};
+
+/// `bool Left_IR_Black();` inside an interface.
+struct FunctionDecl {
+  TypeName result;
+  Name name;
+  std::vector<Param> params;
+  SourceRange range;
+};
+
+struct Interface {
+  Name name;
+  std::vector<FunctionDecl> functions;
+  SourceRange range;
+};
+
+/// `const float CRUISE = 0.6;` (file level or in a chart) and `var int laps = 0;` (in a chart).
+struct ValueDecl {
+  bool is_const = false;
+  TypeName type;
+  Name name;
+  ExprPtr init;  ///< may be null for `var`
+  SourceRange range;
+};
+
+enum class StateKind { Normal, Success, Failure };
+
+/// A place of an sfc or a state of an fsm.
+struct Place {
+  bool initial = false;
+  StateKind terminal = StateKind::Normal;  ///< fsm only
+  bool is_state = false;                   ///< written with `state` rather than `place`
+  Name name;
+  bool has_body = false;
+  Block action;
+  std::optional<Block> entry;
+  std::optional<Block> exit;
+  SourceRange entry_range, exit_range;
+  ExprPtr post;                            ///< `post EXPR` of a terminal state
+  SourceRange range;
+};
+
+struct Transition {
+  std::optional<Name> name;
+  std::vector<Name> inputs;
+  std::vector<Name> outputs;
+  bool parenthesised_inputs = false;
+  bool parenthesised_outputs = false;
+  ExprPtr condition;  ///< null: `when true`
+  SourceRange range;
+};
+
+struct Period {
+  double ms = 0;
+  SourceRange range;
+};
+
+/// An `sfc` or an `fsm`: the two share one shape; the validator holds each to its own rules.
+struct Chart {
+  enum class Kind { Sfc, Fsm };
+  Kind kind;
+  Name name;
+  std::vector<Period> periods;  ///< more than one is an error the validator reports
+  std::vector<ValueDecl> values;
+  std::vector<Place> places;
+  std::vector<Transition> transitions;
+  SourceRange range;
+};
+
+// ---------------------------------------------------------------- toolbox and plan
+
+enum class ParamDir { In, Out };
+
+struct TemplateParam {
+  ParamDir dir = ParamDir::In;
+  TypeName type;
+  Name name;
+  SourceRange range;
+};
+
+/// `actor Forward(in float distance) -> FORWARD_OK;`, a computation, or a supervisor.
+struct Template {
+  enum class Kind { Actor, Computation, Supervisor };
+  Kind kind;
+  Name name;
+  std::vector<TemplateParam> params;
+  std::vector<Name> outcomes;     ///< result states, or a supervisor's events
+  std::optional<Period> period;   ///< supervisors only
+  SourceRange range;
+};
+
+struct Toolbox {
+  Name name;
+  std::vector<Template> templates;
+  SourceRange range;
+};
+
+struct ConfigEntry {
+  TypeName type;
+  Name name;
+  ExprPtr init;
+  SourceRange range;
+};
+
+/// `STATE -> target;` — target is an actor name or the keyword `terminate` / `ignore`.
+struct Rule {
+  enum class Target { Actor, Terminate, Ignore };
+  Name outcome;
+  Target target = Target::Actor;
+  Name target_name;  ///< the actor, or the keyword's own text and range
+  SourceRange range;
+};
+
+/// `supervise touch: CheckTouch() { TOUCHED -> backupCollision; }`
+struct Supervise {
+  Name name;
+  Name template_name;
+  std::vector<ExprPtr> args;
+  std::vector<Rule> rules;
+  SourceRange range;
+};
+
+/// `actor followWall: WallForward(walldist, ...) { ...rules and supervisors... }`
+struct ActorUse {
+  Name name;
+  Name template_name;  ///< a toolbox template, or another plan (a sub-plan)
+  std::vector<ExprPtr> args;
+  std::vector<Rule> rules;
+  std::vector<Supervise> supervisors;
+  bool written_as_computation = false;
+  SourceRange range;
+};
+
+struct Plan {
+  Name name;
+  std::vector<std::vector<ConfigEntry>> config_blocks;  ///< every `config { }` block, in order
+  std::vector<Supervise> global_supervisors;
+  std::vector<Name> starts;  ///< every `start X;` (exactly one is required)
+  std::vector<ActorUse> actors;
+  SourceRange range;
+};
+
+// ---------------------------------------------------------------- files
+
+struct Import {
+  std::string path;  ///< decoded string
+  SourceRange range;
+};
+
+struct Verbatim {
+  std::string text;
+  SourceRange range;
+};
+
+struct File {
+  FileId id = 0;
+  std::vector<Import> imports;
+  std::vector<Verbatim> verbatims;
+  std::vector<ValueDecl> consts;
+  std::vector<Interface> interfaces;
+  std::vector<Chart> charts;
+  std::vector<Toolbox> toolboxes;
+  std::vector<Plan> plans;
+};
+
+/// Every file of a compilation: the main file first, then imports in the order first reached.
+struct Program {
+  std::vector<std::unique_ptr<File>> files;
+};
+
+} // namespace gfec::ast

@@ -1,0 +1,62 @@
+#include "code_writer.h"
+
+#include <algorithm>
+
+namespace gfec {
+
+CodeWriter::CodeWriter(std::string output_name, bool line_directives)
+    : output_name_(std::move(output_name)), line_directives_(line_directives) {}
+
+void CodeWriter::put_line(std::string_view text) {
+  if (!text.empty()) out_.append(static_cast<std::size_t>(depth_) * 4, ' ');
+  out_.append(text);
+  out_.push_back('\n');
+  lines_ += 1 + static_cast<unsigned>(std::count(text.begin(), text.end(), '\n'));
+}
+
+void CodeWriter::blank() { put_line({}); }
+
+void CodeWriter::raw(std::string_view text) {
+  out_.append(text);
+  lines_ += static_cast<unsigned>(std::count(text.begin(), text.end(), '\n'));
+  if (!text.empty() && text.back() != '\n') {
+    out_.push_back('\n');
+    ++lines_;
+  }
+}
+
+void CodeWriter::line_from(const SourceManager &sources, const SourceRange &range) {
+  if (!line_directives_) return;
+  const SourceFile &file = sources.file(range.file);
+  // A directive at column 0, whatever the indentation, as compilers and people expect.
+  out_ += fmt::format("#line {} {}\n", file.line_col(range.begin).line, c_string_literal(file.path()));
+  ++lines_;
+  pointing_away_ = true;
+}
+
+void CodeWriter::line_back() {
+  if (!line_directives_ || !pointing_away_) return;
+  // The directive names the line that follows it: lines_ + 2 in 1-based counting.
+  out_ += fmt::format("#line {} {}\n", lines_ + 2, c_string_literal(output_name_));
+  ++lines_;
+  pointing_away_ = false;
+}
+
+std::string c_string_literal(std::string_view text) {
+  std::string s = "\"";
+  for (unsigned char c : text) {
+    switch (c) {
+    case '"': s += "\\\""; break;
+    case '\\': s += "\\\\"; break;
+    case '\n': s += "\\n"; break;
+    case '\t': s += "\\t"; break;
+    case '\r': s += "\\r"; break;
+    default:
+      if (c < 0x20 || c == 0x7f) s += fmt::format("\\{:03o}", c);
+      else s += static_cast<char>(c);
+    }
+  }
+  return s + "\"";
+}
+
+} // namespace gfec

@@ -1,0 +1,71 @@
+// The diagnostics sink: every stage reports here; only the driver prints and picks the exit code.
+#pragma once
+
+#include "checks.h"
+#include "source.h"
+
+#include <array>
+#include <deque>
+#include <string>
+#include <vector>
+
+namespace gfec {
+
+enum class Severity { Note, Warning, Error };
+
+struct DiagnosticNote {
+  std::string message;
+  SourceRange range;
+  bool has_range = false;
+};
+
+struct Diagnostic {
+  Severity severity = Severity::Error;
+  SourceRange range;
+  std::string message;
+  /// Stable check name: "unknown-name", "syntax", ...; for warnings the -W name.
+  std::string check;
+  std::vector<DiagnosticNote> notes;
+
+  Diagnostic &note(std::string message);
+  Diagnostic &note(SourceRange range, std::string message);
+};
+
+/// Which warnings are on, and whether they count as errors (-W, -Wno-, -Werror, -Wall).
+struct WarningOptions {
+  std::array<bool, static_cast<int>(Warning::Count_)> enabled{};
+  bool as_errors = false;
+
+  WarningOptions();
+  bool is_on(Warning w) const { return enabled[static_cast<int>(w)]; }
+  void set(Warning w, bool on) { enabled[static_cast<int>(w)] = on; }
+};
+
+class Diagnostics {
+public:
+  explicit Diagnostics(WarningOptions warnings = {}, std::size_t error_limit = 50);
+
+  /// Reports an error; the returned reference takes notes.
+  Diagnostic &error(SourceRange range, std::string check, std::string message);
+  /// Reports a warning if it is on (as an error under -Werror); returns a sink for notes either way.
+  Diagnostic &warning(Warning w, SourceRange range, std::string message);
+
+  bool has_errors() const { return errors_ > 0; }
+  std::size_t error_count() const { return errors_; }
+  std::size_t warning_count() const { return warnings_; }
+  /// True once the error limit was hit: later errors were dropped.
+  bool limit_reached() const { return limit_reached_; }
+  const std::deque<Diagnostic> &all() const { return list_; }
+  const WarningOptions &warning_options() const { return options_; }
+
+private:
+  WarningOptions options_;
+  std::size_t error_limit_;
+  std::deque<Diagnostic> list_; // a deque: references handed out stay valid
+  std::size_t errors_ = 0;
+  std::size_t warnings_ = 0;
+  bool limit_reached_ = false;
+  Diagnostic discarded_;
+};
+
+} // namespace gfec

@@ -1,0 +1,16 @@
+// The driver: runs the pipeline for the command line's options, prints diagnostics in the
+// chosen format and writes outputs atomically. The only place that decides exit codes.
+#pragma once
+
+#include "options.h"
+
+#include <iosfwd>
+
+namespace gfec {
+
+/// Exit codes, as gcc users expect them.
+enum ExitCode { kExitOk = 0, kExitInputError = 1, kExitUsageOrIo = 2 };
+
+int run(const Options &options, std::ostream &out, std::ostream &err);
+
+} // namespace gfec

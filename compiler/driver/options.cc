@@ -1,0 +1,113 @@
+#include "options.h"
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+namespace gfec {
+
+namespace {
+
+/// Applies one -W value ("error", "all", "no-conflict", "conflict"); false if unknown.
+bool apply_warning_flag(const std::string &flag, WarningOptions &w) {
+  if (flag == "error") {
+    w.as_errors = true;
+    return true;
+  }
+  if (flag == "no-error") {
+    w.as_errors = false;
+    return true;
+  }
+  if (flag == "all" || flag == "extra") {
+    for (int i = 0; i < static_cast<int>(Warning::Count_); ++i) w.enabled[i] = true;
+    return true;
+  }
+  bool on = true;
+  std::string name = flag;
+  if (name.rfind("no-", 0) == 0) {
+    on = false;
+    name = name.substr(3);
+  }
+  auto found = find_warning(name);
+  if (!found) return false;
+  w.set(*found, on);
+  return true;
+}
+
+std::string warning_help() {
+  std::string s = "Warnings (-W<name> turns one on, -Wno-<name> off; -Wall all; -Werror makes them errors):\n";
+  for (int i = 0; i < static_cast<int>(Warning::Count_); ++i) {
+    const WarningInfo &w = warning_table()[i];
+    s += fmt::format("  -W{:<20} {}{}\n", w.name, w.summary, w.on_by_default ? " (on by default)" : "");
+  }
+  return s;
+}
+
+} // namespace
+
+ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
+  ParsedCommandLine result;
+  Options &o = result.options;
+  CLI::App app{"gfec - compiles chart files (sfc, fsm, plan) into C and C++ engines for robots", "gfec"};
+  app.footer(warning_help() + "\nExit status: 0 success, 1 errors in the input, 2 usage or I/O error.\n"
+                              "Documentation: docs/cli.md");
+  std::vector<std::string> warning_flags;
+  std::vector<std::string> f_flags;
+  bool no_line = false;
+  app.add_option("files", o.inputs, "Chart files to compile (several only with --check)")->required();
+  app.add_option("-o,--output", o.output, "Output file; a C engine's header is written beside it");
+  app.add_option("-I", o.include_dirs, "Add DIR to the folders searched for imports")->type_name("DIR");
+  app.add_flag("--check", o.check_only, "Validate only: report every diagnostic and write nothing");
+  app.add_option("--emit", o.emit, "Back end: c, cpp, json, dot, svg or toolbox-skeleton (default: from the file)");
+  app.add_option("--chart", o.chart, "The chart or plan to compile when a file declares several")->type_name("NAME");
+  app.add_flag("--no-line-directives", no_line, "Do not write #line directives pointing back to the chart");
+  app.add_option("-W", warning_flags, "Warning control: -W<name>, -Wno-<name>, -Wall, -Werror")->type_name("NAME");
+  app.add_option("-f", f_flags, "-fdiagnostics-format=text|json|sarif-stderr|sarif-file, -fmax-errors=N")
+      ->type_name("OPTION");
+  app.set_version_flag("--version", fmt::format("gfec {}", GFEC_VERSION));
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError &e) {
+    result.exit_now = true;
+    std::ostringstream out, err;
+    result.exit_code = app.exit(e, out, err) == 0 ? 0 : 2;
+    result.message = result.exit_code == 0 ? out.str() : err.str();
+    if (result.exit_code != 0) result.message += "Run 'gfec --help' for the options.\n";
+    return result;
+  }
+
+  auto usage_error = [&](std::string message) {
+    result.exit_now = true;
+    result.exit_code = 2;
+    result.message = "gfec: error: " + message + "\n";
+    return result;
+  };
+  for (const auto &w : warning_flags)
+    if (!apply_warning_flag(w, o.warnings)) return usage_error(fmt::format("unknown warning option '-W{}'", w));
+  for (const auto &f : f_flags) {
+    if (f.rfind("diagnostics-format=", 0) == 0) {
+      std::string v = f.substr(19);
+      if (v == "text") o.diagnostics_format = DiagnosticsFormat::Text;
+      else if (v == "json") o.diagnostics_format = DiagnosticsFormat::Json;
+      else if (v == "sarif-stderr") o.diagnostics_format = DiagnosticsFormat::SarifStderr;
+      else if (v == "sarif-file") o.diagnostics_format = DiagnosticsFormat::SarifFile;
+      else return usage_error(fmt::format("unknown diagnostics format '{}' (text, json, sarif-stderr, sarif-file)", v));
+    } else if (f.rfind("max-errors=", 0) == 0) {
+      try {
+        o.error_limit = std::stoul(f.substr(11));
+      } catch (const std::exception &) {
+        return usage_error(fmt::format("'-f{}' needs a number", f));
+      }
+      if (o.error_limit == 0) o.error_limit = static_cast<std::size_t>(-1);  // as gcc: 0 = no limit
+    } else {
+      return usage_error(fmt::format("unknown option '-f{}'", f));
+    }
+  }
+  o.line_directives = !no_line;
+  if (!o.check_only && o.inputs.size() > 1)
+    return usage_error("several input files are only allowed with --check");
+  if (o.check_only && !o.output.empty()) return usage_error("--check writes nothing; drop -o");
+  return result;
+}
+
+} // namespace gfec

@@ -1,0 +1,37 @@
+// Everything the command line says, in one value passed down (no option globals).
+#pragma once
+
+#include "diagnostics.h"
+
+#include <string>
+#include <vector>
+
+namespace gfec {
+
+enum class DiagnosticsFormat { Text, Json, SarifStderr, SarifFile };
+
+struct Options {
+  std::vector<std::string> inputs;
+  std::string output;                     ///< -o; empty: derived from the input's name
+  std::vector<std::string> include_dirs;  ///< -I
+  bool check_only = false;                ///< --check: validate, write nothing
+  std::string emit;                       ///< --emit=c|cpp|json|dot|svg|toolbox-skeleton; empty: from the file
+  std::string chart;                      ///< --chart NAME
+  bool line_directives = true;            ///< --no-line-directives turns them off
+  WarningOptions warnings;                ///< -W<name>, -Wno-<name>, -Wall, -Werror
+  DiagnosticsFormat diagnostics_format = DiagnosticsFormat::Text;
+  std::size_t error_limit = 50;           ///< -fmax-errors=N
+};
+
+/// The result of reading argv: options to run with, or an exit code and text to print now
+/// (--help, --version, usage errors).
+struct ParsedCommandLine {
+  Options options;
+  bool exit_now = false;
+  int exit_code = 0;
+  std::string message;  ///< printed to stdout when exit_code is 0, else to stderr
+};
+
+ParsedCommandLine parse_command_line(int argc, const char *const *argv);
+
+} // namespace gfec

@@ -1,0 +1,35 @@
+// The lexer: turns one file's text into tokens, reporting malformed ones (LANGUAGE.md §1).
+#pragma once
+
+#include "diagnostics.h"
+#include "token.h"
+
+namespace gfec {
+
+class Lexer {
+public:
+  Lexer(const SourceManager &sources, FileId file, Diagnostics &diag);
+
+  /// The next token; Tok::End forever at the end of the file.
+  Token next();
+
+private:
+  Token make(Tok kind, std::uint32_t begin);
+  Token error(std::uint32_t begin, std::uint32_t end, std::string message);
+  void skip_space_and_comments();
+  Token number(std::uint32_t begin);
+  Token string(std::uint32_t begin);
+  Token verbatim(std::uint32_t begin);
+  Token word(std::uint32_t begin);
+
+  char peek(std::uint32_t ahead = 0) const {
+    return pos_ + ahead < text_.size() ? text_[pos_ + ahead] : '\0';
+  }
+
+  FileId file_;
+  std::string_view text_;
+  Diagnostics &diag_;
+  std::uint32_t pos_ = 0;
+};
+
+} // namespace gfec

@@ -1,0 +1,117 @@
+#include "loader.h"
+
+#include "parser.h"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <map>
+
+namespace gfec {
+
+namespace {
+
+namespace fsys = std::filesystem;
+
+/// Imports deeper than this are refused: a chain this long is a generated mistake, and the
+/// loader recurses once per level.
+constexpr std::size_t kMaxImportDepth = 200;
+
+std::string normal(const fsys::path &p) {
+  std::string s = p.lexically_normal().generic_string();
+  return s.empty() ? "." : s;
+}
+
+class Loader {
+public:
+  Loader(const LoadOptions &options, const FileSystem &fs, SourceManager &sources, Diagnostics &diag,
+         LoadResult &result)
+      : options_(options), fs_(fs), sources_(sources), diag_(diag), result_(result) {}
+
+  void load_main(const std::string &path) {
+    auto text = fs_.read(path);
+    if (!text) {
+      result_.main_unreadable = true;
+      return;
+    }
+    load(normal(path), std::move(*text));
+  }
+
+private:
+  enum class State { Loading, Done };
+
+  void load(const std::string &path, std::string text) {
+    state_[path] = State::Loading;
+    stack_.push_back(path);
+    FileId id = sources_.add(path, std::move(text));
+    result_.paths.push_back(path);
+    result_.program.files.push_back(parse_file(sources_, id, diag_));
+    // Keep a raw pointer: push_back of imported files may move the unique_ptrs, not the File.
+    const ast::File &file = *result_.program.files.back();
+    for (const ast::Import &import : file.imports) follow(path, import);
+    stack_.pop_back();
+    state_[path] = State::Done;
+  }
+
+  void follow(const std::string &from, const ast::Import &import) {
+    std::vector<std::string> tried;
+    fsys::path dir = fsys::path(from).parent_path();
+    std::vector<fsys::path> candidates;
+    fsys::path wanted(import.path);
+    if (wanted.is_absolute()) {
+      candidates.push_back(wanted);
+    } else {
+      candidates.push_back(dir / wanted);
+      for (const auto &inc : options_.include_dirs) candidates.push_back(fsys::path(inc) / wanted);
+    }
+    for (const auto &candidate : candidates) {
+      std::string path = normal(candidate);
+      auto seen = state_.find(path);
+      if (seen != state_.end()) {
+        if (seen->second == State::Loading) report_cycle(import, path);
+        return;  // a file imported twice is read once
+      }
+      tried.push_back(path);
+      auto text = fs_.read(path);
+      if (!text) continue;
+      if (stack_.size() >= kMaxImportDepth) {
+        diag_.error(import.range, "import", fmt::format("imports nested more than {} deep", kMaxImportDepth));
+        return;
+      }
+      load(path, std::move(*text));
+      return;
+    }
+    auto &d = diag_.error(import.range, "import", fmt::format("cannot find imported file '{}'", import.path));
+    for (const auto &t : tried) d.note(fmt::format("looked for '{}'", t));
+  }
+
+  void report_cycle(const ast::Import &import, const std::string &target) {
+    auto &d = diag_.error(import.range, "import-cycle", fmt::format("import cycle: '{}' imports itself", target));
+    bool in_cycle = false;
+    for (std::size_t i = 0; i < stack_.size(); ++i) {
+      if (stack_[i] == target) in_cycle = true;
+      if (!in_cycle) continue;
+      const std::string &next = i + 1 < stack_.size() ? stack_[i + 1] : target;
+      d.note(fmt::format("'{}' imports '{}'", stack_[i], next));
+    }
+  }
+
+  const LoadOptions &options_;
+  const FileSystem &fs_;
+  SourceManager &sources_;
+  Diagnostics &diag_;
+  LoadResult &result_;
+  std::map<std::string, State> state_;
+  std::vector<std::string> stack_;
+};
+
+} // namespace
+
+LoadResult load_program(const std::string &main_path, const LoadOptions &options, const FileSystem &fs,
+                        SourceManager &sources, Diagnostics &diag) {
+  LoadResult result;
+  Loader(options, fs, sources, diag, result).load_main(main_path);
+  return result;
+}
+
+} // namespace gfec

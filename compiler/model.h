@@ -1,0 +1,240 @@
+// The model: the checked, resolved form of a program. Back ends and the interpreter read only
+// this. Everything refers by index into the tables here; every element keeps its SourceRange
+// (for #line and for tools), and `sources` resolves ranges to file names and lines.
+#pragma once
+
+#include "operators.h"
+#include "source.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gfec::model {
+
+enum class Type { Void, Bool, Int, Float, Double, String, Object, Duration };
+
+/// The type as the language (and C, for the numeric ones) spells it: "bool", "float", ...
+const char *type_name(Type t);
+inline bool is_numeric(Type t) { return t == Type::Int || t == Type::Float || t == Type::Double; }
+
+// ---------------------------------------------------------------- expressions and statements
+
+struct Expr {
+  enum class Kind {
+    Bool,     ///< bool_value
+    Int,      ///< text: the spelling, e.g. "42"
+    Float,    ///< text: the spelling, e.g. "0.5", "1e-3"
+    String,   ///< text: the decoded value
+    Ticks,    ///< a duration in an sfc/fsm, converted to whole ticks (rounded up): ticks; ms kept
+    Var,      ///< index into Chart::vars
+    Const,    ///< index into Model::consts
+    Config,   ///< index into Plan::config
+    Call,     ///< index into Model::functions; args
+    Elapsed,  ///< `elapsed(P)`: index of the place/state; type Duration, counted in ticks
+    Unary,    ///< unary_op, args[0]
+    Binary,   ///< binary_op, args[0], args[1]
+    Paren,    ///< args[0], brackets the user wrote
+  };
+  Kind kind = Kind::Bool;
+  Type type = Type::Bool;
+  SourceRange range;
+  bool bool_value = false;
+  std::string text;
+  unsigned long ticks = 0;
+  double ms = 0;
+  int index = -1;
+  UnaryOp unary_op = UnaryOp::Not;
+  BinaryOp binary_op = BinaryOp::Add;
+  std::vector<Expr> args;
+};
+
+struct Stmt {
+  enum class Kind { Call, Assign, Verbatim };
+  Kind kind = Kind::Call;
+  SourceRange range;
+  Expr call;             ///< Kind::Call: an Expr of Kind::Call (its result, if any, is discarded)
+  int var = -1;          ///< Kind::Assign: index into Chart::vars
+  AssignOp op = AssignOp::Set;
+  Expr value;            ///< Kind::Assign
+  std::string verbatim;  ///< Kind::Verbatim
+};
+
+// ---------------------------------------------------------------- interface
+
+struct Param {
+  Type type = Type::Int;
+  std::string name;  ///< may be empty: C prototypes may leave it out
+};
+
+/// A function of the robot's interface, as declared in C prototype syntax.
+struct Function {
+  std::string name;
+  Type result = Type::Void;
+  std::vector<Param> params;
+  std::string interface_name;
+  SourceRange range;
+};
+
+/// A constant, folded by the validator: `value` is a literal (Bool, Int, Float) or a String.
+struct Const {
+  std::string name;
+  Type type = Type::Int;
+  Expr value;
+  int chart = -1;  ///< the chart that declares it, or -1 at file level
+  SourceRange range;
+};
+
+// ---------------------------------------------------------------- sfc and fsm
+
+struct Var {
+  std::string name;
+  Type type = Type::Int;
+  std::optional<Expr> init;  ///< absent: zero
+  SourceRange range;
+};
+
+enum class Terminal { None, Success, Failure };
+
+/// A place of an sfc or a state of an fsm.
+struct Place {
+  std::string name;
+  bool initial = false;
+  Terminal terminal = Terminal::None;  ///< fsm only
+  std::vector<Stmt> action;
+  std::optional<std::vector<Stmt>> entry;
+  std::optional<std::vector<Stmt>> exit;
+  std::optional<Expr> post;  ///< a terminal state's postcondition
+  bool timed = false;        ///< some `elapsed()` reads this place's timer
+  SourceRange range;
+};
+
+struct Transition {
+  std::string name;      ///< the user's name, or T<position> among all transitions
+  bool named = false;    ///< the user gave the name
+  std::vector<int> inputs;
+  std::vector<int> outputs;
+  std::optional<Expr> condition;  ///< absent: `when true`
+  SourceRange range;
+};
+
+struct Chart {
+  enum class Kind { Sfc, Fsm };
+  Kind kind = Kind::Sfc;
+  std::string name;
+  double period_ms = 0;  ///< 0: no `period` given
+  std::vector<Place> places;
+  std::vector<Transition> transitions;  ///< declaration order: the order of §5.1 and §7
+  std::vector<Var> vars;
+  std::vector<int> functions;  ///< interface functions the chart calls, in declaration order
+  std::vector<int> consts;     ///< constants the chart reads, in declaration order
+  bool in_main_file = false;   ///< declared in the file being compiled, not an import
+  SourceRange range;
+};
+
+// ---------------------------------------------------------------- toolbox and plan
+
+enum class ParamDir { In, Out };
+
+struct TemplateParam {
+  ParamDir dir = ParamDir::In;
+  Type type = Type::Float;
+  std::string name;
+};
+
+/// An actor, computation or supervisor template of a toolbox.
+struct Template {
+  enum class Kind { Actor, Computation, Supervisor };
+  Kind kind = Kind::Actor;
+  std::string name;
+  int toolbox = -1;
+  std::vector<TemplateParam> params;
+  std::vector<std::string> outcomes;  ///< result states, or a supervisor's events
+  double period_ms = 0;               ///< supervisors: 0 means every executor step
+  SourceRange range;
+};
+
+struct Toolbox {
+  std::string name;
+  std::vector<int> templates;  ///< indices into Model::templates
+  SourceRange range;
+};
+
+struct ConfigEntry {
+  std::string name;
+  Type type = Type::Float;
+  std::optional<Expr> init;  ///< folded to a literal
+  SourceRange range;
+};
+
+struct Target {
+  enum class Kind { Actor, Terminate, Ignore };
+  Kind kind = Kind::Actor;
+  int actor = -1;  ///< index into Plan::actors for Kind::Actor
+};
+
+/// `OUTCOME -> target`: outcome indexes the template's outcomes (or a sub-plan's OK/INTERRUPTED/ERROR).
+struct Rule {
+  int outcome = -1;
+  Target target;
+  SourceRange range;
+};
+
+/// An argument: an `in` formula over config entries, or for an `out` parameter a plain entry.
+struct Arg {
+  Expr formula;       ///< for out parameters an Expr of Kind::Config
+  ParamDir dir = ParamDir::In;
+};
+
+struct SupervisorUse {
+  std::string name;
+  int templ = -1;  ///< index into Model::templates
+  std::vector<Arg> args;
+  std::vector<Rule> rules;  ///< one per event, in declaration order
+  SourceRange range;
+};
+
+struct ActorUse {
+  std::string name;
+  int templ = -1;    ///< index into Model::templates, or -1 for a sub-plan
+  int subplan = -1;  ///< index into Model::plans for a sub-plan
+  std::vector<Arg> args;
+  std::vector<Rule> rules;  ///< one per result state, in declaration order
+  std::vector<SupervisorUse> supervisors;
+  SourceRange range;
+};
+
+/// A sub-plan's fixed result states, in this order.
+inline const char *const kSubPlanStates[] = {"OK", "INTERRUPTED", "ERROR"};
+
+struct Plan {
+  std::string name;
+  std::vector<ConfigEntry> config;
+  std::vector<SupervisorUse> globals;
+  int start = -1;  ///< index into actors
+  std::vector<ActorUse> actors;
+  std::vector<int> toolboxes;  ///< toolboxes whose templates the plan uses
+  bool in_main_file = false;
+  SourceRange range;
+};
+
+// ---------------------------------------------------------------- the whole program
+
+struct Verbatim {
+  std::string text;
+  SourceRange range;
+};
+
+struct Model {
+  const SourceManager *sources = nullptr;
+  FileId main_file = 0;
+  std::vector<Function> functions;
+  std::vector<Const> consts;
+  std::vector<Chart> charts;
+  std::vector<Template> templates;
+  std::vector<Toolbox> toolboxes;
+  std::vector<Plan> plans;
+  std::vector<Verbatim> verbatims;  ///< file-level %{ %}: imported files first, then the main file
+};
+
+} // namespace gfec::model

@@ -1,0 +1,744 @@
+#include "parser.h"
+
+#include "lexer.h"
+
+#include <fmt/format.h>
+
+#include <optional>
+
+namespace gfec {
+
+namespace {
+
+using namespace ast;
+
+/// Thrown to abandon the current declaration or statement after a syntax error; caught where
+/// the parser can resynchronise, so an error never cascades into a list of follow-on errors.
+struct SyntaxError {};
+
+class Parser {
+public:
+  Parser(const SourceManager &sources, FileId file, Diagnostics &diag)
+      : file_(file), diag_(diag), lexer_(sources, file, diag) {
+    advance();
+  }
+
+  std::unique_ptr<File> parse();
+
+private:
+  // ------------------------------------------------------------ token handling
+  void advance() {
+    prev_end_ = tok_.range.end;
+    if (lookahead_) {
+      tok_ = std::move(*lookahead_);
+      lookahead_.reset();
+      return;
+    }
+    tok_ = lex();
+  }
+  Token lex() {
+    Token t = lexer_.next();
+    bool after_error = false;
+    while (t.kind == Tok::Error) {  // already reported by the lexer
+      after_error = true;
+      t = lexer_.next();
+    }
+    t.follows_error = after_error;
+    return t;
+  }
+  /// The token after the current one (one token of lookahead is all the grammar needs).
+  const Token &peek() {
+    if (!lookahead_) lookahead_ = lex();
+    return *lookahead_;
+  }
+  bool at(Tok k) const { return tok_.kind == k; }
+  bool accept(Tok k) {
+    if (!at(k)) return false;
+    advance();
+    return true;
+  }
+  Token take() {
+    Token t = tok_;
+    advance();
+    return t;
+  }
+  /// Consumes `k` or reports "expected X before Y" and abandons the construct.
+  Token expect(Tok k, std::string_view context = {}) {
+    if (at(k)) return take();
+    fail(fmt::format("expected {}{}", describe(k), context.empty() ? "" : fmt::format(" {}", context)));
+  }
+  [[noreturn]] void fail(const std::string &what) {
+    // Right after a lexical error the parser's complaint is only its echo: stay quiet.
+    if (!tok_.follows_error) {
+      std::string found = at(Tok::End) ? "end of file" : fmt::format("'{}'", tok_.text);
+      diag_.error(tok_.range, "syntax", fmt::format("{}, found {}", what, found));
+    }
+    throw SyntaxError{};
+  }
+  SourceRange from(std::uint32_t begin) const { return {file_, begin, prev_end_}; }
+  std::uint32_t here() const { return tok_.range.begin; }
+
+  /// After an error: skip to just past the next ';' or to the next '}' at this nesting level.
+  void recover() {
+    int depth = 0;
+    while (!at(Tok::End)) {
+      if (at(Tok::LBrace)) ++depth;
+      if (at(Tok::RBrace)) {
+        if (depth == 0) return;
+        --depth;
+        advance();
+        if (depth == 0) return;
+        continue;
+      }
+      if (at(Tok::Semi) && depth == 0) {
+        advance();
+        return;
+      }
+      advance();
+    }
+  }
+
+  /// Parses `{ item* }`, calling `item` until the closing brace; errors inside one item skip
+  /// only that item.
+  template <typename Item> void braced(const char *what, Item item) {
+    Token open = expect(Tok::LBrace, what);
+    while (!at(Tok::RBrace)) {
+      if (at(Tok::End)) {
+        diag_.error(tok_.range, "syntax", "expected '}' at end of input")
+            .note(open.range, "to match this '{'");
+        throw SyntaxError{};
+      }
+      std::uint32_t before = here();
+      try {
+        item();
+      } catch (const SyntaxError &) {
+        recover();
+        if (here() == before && !at(Tok::RBrace) && !at(Tok::End)) advance();
+      }
+    }
+    advance();
+  }
+
+  Name name(std::string_view context = {}) {
+    Token t = expect(Tok::Ident, context);
+    return {std::string(t.text), t.range};
+  }
+  TypeName type_name(std::string_view context = {}) {
+    Token t = expect(Tok::Ident, context.empty() ? std::string_view("(a type name)") : context);
+    return {std::string(t.text), t.range};
+  }
+
+  // ------------------------------------------------------------ declarations
+  void top_level(File &file);
+  void import_decl(File &file);
+  Interface interface_decl();
+  FunctionDecl function_decl();
+  ValueDecl value_decl();
+  Chart chart(Chart::Kind kind);
+  void chart_item(Chart &chart);
+  Period period();
+  Place place(Chart::Kind kind);
+  Block block();
+  void place_body(Place &p);
+  Transition transition();
+  std::vector<Name> place_list(bool &parenthesised);
+  Toolbox toolbox();
+  Template template_decl();
+  Plan plan();
+  void plan_item(Plan &plan);
+  Supervise supervise();
+  ActorUse actor_use();
+  Rule rule();
+  std::vector<ExprPtr> arguments();
+
+  // ------------------------------------------------------------ statements and expressions
+  Stmt statement();
+  ExprPtr expr() { return binary(1); }
+  ExprPtr binary(int min_precedence);
+  ExprPtr unary();
+  ExprPtr primary();
+  ExprPtr make(Expr::Kind kind, SourceRange range) {
+    auto e = std::make_unique<Expr>();
+    e->kind = kind;
+    e->range = range;
+    return e;
+  }
+
+  struct DepthGuard {
+    Parser &p;
+    explicit DepthGuard(Parser &parser) : p(parser) {
+      if (++p.depth_ > kMaxNesting) {
+        p.diag_.error(p.tok_.range, "nesting", fmt::format("expression nested too deeply (more than {} levels)", kMaxNesting));
+        --p.depth_;
+        throw SyntaxError{};
+      }
+    }
+    ~DepthGuard() { --p.depth_; }
+  };
+
+  FileId file_;
+  Diagnostics &diag_;
+  Lexer lexer_;
+  Token tok_;
+  std::optional<Token> lookahead_;
+  std::uint32_t prev_end_ = 0;
+  int depth_ = 0;
+};
+
+//G file: { import | interface | sfc | fsm | toolbox | plan | const_decl | VERBATIM }
+std::unique_ptr<File> Parser::parse() {
+  auto file = std::make_unique<File>();
+  file->id = file_;
+  while (!at(Tok::End)) {
+    if (diag_.limit_reached()) break;
+    std::uint32_t before = here();
+    try {
+      top_level(*file);
+    } catch (const SyntaxError &) {
+      recover();
+      if (at(Tok::RBrace)) advance();  // a stray '}' at file level
+      if (here() == before && !at(Tok::End)) advance();
+    }
+  }
+  return file;
+}
+
+void Parser::top_level(File &file) {
+  switch (tok_.kind) {
+  case Tok::KwImport: import_decl(file); return;
+  case Tok::KwInterface: file.interfaces.push_back(interface_decl()); return;
+  case Tok::KwSfc: file.charts.push_back(chart(Chart::Kind::Sfc)); return;
+  case Tok::KwFsm: file.charts.push_back(chart(Chart::Kind::Fsm)); return;
+  case Tok::KwToolbox: file.toolboxes.push_back(toolbox()); return;
+  case Tok::KwPlan: file.plans.push_back(plan()); return;
+  case Tok::KwConst: file.consts.push_back(value_decl()); return;
+  case Tok::Verbatim: {
+    Token t = take();
+    file.verbatims.push_back({t.value, t.range});
+    return;
+  }
+  case Tok::KwVar:
+    diag_.error(tok_.range, "syntax", "'var' declares chart state and belongs inside an sfc or fsm");
+    throw SyntaxError{};
+  default:
+    fail("expected a declaration (import, interface, sfc, fsm, toolbox, plan or const)");
+  }
+}
+
+//G import: 'import' STRING ';'
+void Parser::import_decl(File &file) {
+  advance();
+  Token path = expect(Tok::String, "after 'import'");
+  expect(Tok::Semi, "after the import");
+  file.imports.push_back({path.value, path.range});
+}
+
+//G interface: 'interface' IDENT '{' { function } '}'
+Interface Parser::interface_decl() {
+  std::uint32_t begin = here();
+  advance();
+  Interface i;
+  i.name = name("after 'interface'");
+  braced("to open the interface", [&] { i.functions.push_back(function_decl()); });
+  i.range = from(begin);
+  return i;
+}
+
+//G function: type IDENT '(' [ 'void' | param { ',' param } ] ')' ';'
+//G param: type [IDENT]
+FunctionDecl Parser::function_decl() {
+  std::uint32_t begin = here();
+  FunctionDecl f;
+  f.result = type_name("(the function's result type)");
+  f.name = name("(the function's name)");
+  expect(Tok::LParen, "after the function name");
+  // `f(void)` is C's spelling of no parameters.
+  bool c_void = at(Tok::Ident) && tok_.text == "void" && peek().kind == Tok::RParen;
+  if (c_void) advance();
+  if (!c_void && !at(Tok::RParen)) {
+    do {
+      std::uint32_t pbegin = here();
+      Param p;
+      p.type = type_name("(a parameter type)");
+      if (at(Tok::Ident)) p.name = name();
+      p.range = from(pbegin);
+      f.params.push_back(std::move(p));
+    } while (accept(Tok::Comma));
+  }
+  expect(Tok::RParen, "to close the parameter list");
+  expect(Tok::Semi, "after the function declaration");
+  f.range = from(begin);
+  return f;
+}
+
+//G const_decl: 'const' type IDENT '=' expr ';'
+//G var_decl: 'var' type IDENT [ '=' expr ] ';'
+ValueDecl Parser::value_decl() {
+  std::uint32_t begin = here();
+  ValueDecl v;
+  v.is_const = take().kind == Tok::KwConst;
+  v.type = type_name();
+  v.name = name();
+  if (v.is_const) {
+    expect(Tok::Assign, "(a constant needs a value)");
+    v.init = expr();
+  } else if (accept(Tok::Assign)) {
+    v.init = expr();
+  }
+  expect(Tok::Semi, "after the declaration");
+  v.range = from(begin);
+  return v;
+}
+
+//G sfc: 'sfc' IDENT '{' { chart_item } '}'
+//G fsm: 'fsm' IDENT '{' { chart_item } '}'
+Chart Parser::chart(Chart::Kind kind) {
+  std::uint32_t begin = here();
+  advance();
+  Chart c;
+  c.kind = kind;
+  c.name = name(kind == Chart::Kind::Sfc ? "after 'sfc'" : "after 'fsm'");
+  braced("to open the chart", [&] { chart_item(c); });
+  c.range = from(begin);
+  return c;
+}
+
+//G chart_item: period | var_decl | const_decl | place | state | transition
+void Parser::chart_item(Chart &c) {
+  switch (tok_.kind) {
+  case Tok::KwPeriod: c.periods.push_back(period()); return;
+  case Tok::KwVar:
+  case Tok::KwConst: c.values.push_back(value_decl()); return;
+  case Tok::KwInitial:
+  case Tok::KwPlace:
+  case Tok::KwState:
+  case Tok::KwSuccess:
+  case Tok::KwFailure: c.places.push_back(place(c.kind)); return;
+  case Tok::KwTransition:
+  case Tok::Ident:
+  case Tok::LParen: c.transitions.push_back(transition()); return;
+  default:
+    fail(c.kind == Chart::Kind::Sfc ? "expected a place, transition, var, const or period"
+                                    : "expected a state, transition, var, const or period");
+  }
+}
+
+//G period: 'period' DURATION ';'
+Period Parser::period() {
+  std::uint32_t begin = here();
+  advance();
+  Token d = expect(Tok::Duration, "after 'period' (e.g. 'period 10ms;')");
+  expect(Tok::Semi, "after the period");
+  return {d.duration_ms, from(begin)};
+}
+
+//G place: [ 'initial' ] 'place' IDENT ( ';' | place_body )
+//G state: [ 'initial' | 'success' | 'failure' ] 'state' IDENT [ 'post' expr ] ( ';' | place_body )
+Place Parser::place(Chart::Kind) {
+  std::uint32_t begin = here();
+  Place p;
+  if (accept(Tok::KwInitial)) p.initial = true;
+  else if (accept(Tok::KwSuccess)) p.terminal = StateKind::Success;
+  else if (accept(Tok::KwFailure)) p.terminal = StateKind::Failure;
+  if (accept(Tok::KwState)) {
+    p.is_state = true;
+  } else if (!accept(Tok::KwPlace)) {
+    fail(p.terminal != StateKind::Normal ? "expected 'state'" : "expected 'place' or 'state'");
+  }
+  p.name = name(p.is_state ? "after 'state'" : "after 'place'");
+  if (accept(Tok::KwPost)) p.post = expr();
+  if (!accept(Tok::Semi)) {
+    if (!at(Tok::LBrace)) fail("expected ';' or '{'");
+    p.has_body = true;
+    place_body(p);
+  }
+  p.range = from(begin);
+  return p;
+}
+
+//G place_body: '{' { 'entry' block | 'exit' block | statement } '}'
+void Parser::place_body(Place &p) {
+  braced("", [&] {
+    if (at(Tok::KwEntry) || at(Tok::KwExit)) {
+      Token kw = take();
+      std::uint32_t begin = kw.range.begin;
+      Block b = block();
+      bool entry = kw.kind == Tok::KwEntry;
+      std::optional<Block> &slot = entry ? p.entry : p.exit;
+      if (slot) {
+        diag_.error(kw.range, "duplicate", fmt::format("second '{}' block in '{}'", kw.text, p.name.text))
+            .note(entry ? p.entry_range : p.exit_range, "the first one is here");
+        return;
+      }
+      slot = std::move(b);
+      (entry ? p.entry_range : p.exit_range) = from(begin);
+      return;
+    }
+    p.action.push_back(statement());
+  });
+}
+
+//G block: '{' { statement } '}'
+Block Parser::block() {
+  Block b;
+  braced("", [&] { b.push_back(statement()); });
+  return b;
+}
+
+//G transition: [ 'transition' ] [ IDENT ':' ] place_list '->' place_list [ 'when' expr ] ';'
+Transition Parser::transition() {
+  std::uint32_t begin = here();
+  Transition t;
+  bool keyword = accept(Tok::KwTransition);
+  std::vector<Name> inputs;
+  if (at(Tok::Ident)) {
+    Name first = name();
+    if (accept(Tok::Colon)) {
+      t.name = std::move(first);
+      inputs = place_list(t.parenthesised_inputs);
+    } else {
+      inputs.push_back(std::move(first));
+    }
+  } else if (at(Tok::LParen)) {
+    inputs = place_list(t.parenthesised_inputs);
+  } else {
+    fail(keyword ? "expected the transition's input place" : "expected a declaration");
+  }
+  t.inputs = std::move(inputs);
+  expect(Tok::Arrow, "between a transition's inputs and outputs");
+  t.outputs = place_list(t.parenthesised_outputs);
+  if (accept(Tok::KwWhen)) t.condition = expr();
+  expect(Tok::Semi, "after the transition");
+  t.range = from(begin);
+  return t;
+}
+
+//G place_list: IDENT | '(' IDENT { ',' IDENT } ')'
+std::vector<Name> Parser::place_list(bool &parenthesised) {
+  std::vector<Name> names;
+  if (accept(Tok::LParen)) {
+    parenthesised = true;
+    do names.push_back(name("(a place)"));
+    while (accept(Tok::Comma));
+    expect(Tok::RParen, "to close the place list");
+  } else {
+    names.push_back(name("(a place)"));
+  }
+  return names;
+}
+
+//G toolbox: 'toolbox' IDENT '{' { template } '}'
+Toolbox Parser::toolbox() {
+  std::uint32_t begin = here();
+  advance();
+  Toolbox tb;
+  tb.name = name("after 'toolbox'");
+  braced("to open the toolbox", [&] { tb.templates.push_back(template_decl()); });
+  tb.range = from(begin);
+  return tb;
+}
+
+//G template: ( 'actor' | 'computation' ) IDENT '(' [ tparam { ',' tparam } ] ')' '->' IDENT { '|' IDENT } ';'
+//G         | 'supervisor' IDENT '(' [ tparam { ',' tparam } ] ')' 'events' IDENT { ( '|' | ',' ) IDENT } [ 'period' DURATION ] ';'
+//G tparam: ( 'in' | 'out' ) type IDENT
+Template Parser::template_decl() {
+  std::uint32_t begin = here();
+  Template t;
+  if (accept(Tok::KwActor)) t.kind = Template::Kind::Actor;
+  else if (accept(Tok::KwComputation)) t.kind = Template::Kind::Computation;
+  else if (accept(Tok::KwSupervisor)) t.kind = Template::Kind::Supervisor;
+  else fail("expected 'actor', 'computation' or 'supervisor'");
+  t.name = name();
+  expect(Tok::LParen, "after the template name");
+  if (!at(Tok::RParen)) {
+    do {
+      std::uint32_t pbegin = here();
+      TemplateParam p;
+      if (accept(Tok::KwOut)) p.dir = ParamDir::Out;
+      else if (!accept(Tok::KwIn)) fail("expected 'in' or 'out'");
+      p.type = type_name();
+      p.name = name("(the parameter's name)");
+      p.range = from(pbegin);
+      t.params.push_back(std::move(p));
+    } while (accept(Tok::Comma));
+  }
+  expect(Tok::RParen, "to close the parameter list");
+  if (t.kind == Template::Kind::Supervisor) {
+    expect(Tok::KwEvents, "(a supervisor lists its events: 'events A | B')");
+    do t.outcomes.push_back(name("(an event)"));
+    while (accept(Tok::Pipe) || accept(Tok::Comma));
+    if (at(Tok::KwPeriod)) {
+      std::uint32_t pbegin = here();
+      advance();
+      Token d = expect(Tok::Duration, "after 'period'");
+      t.period = Period{d.duration_ms, from(pbegin)};
+    }
+  } else {
+    expect(Tok::Arrow, "(an actor lists its result states: '-> A | B')");
+    do t.outcomes.push_back(name("(a result state)"));
+    while (accept(Tok::Pipe));
+  }
+  expect(Tok::Semi, "after the template");
+  t.range = from(begin);
+  return t;
+}
+
+//G plan: 'plan' IDENT '{' { plan_item } '}'
+Plan Parser::plan() {
+  std::uint32_t begin = here();
+  advance();
+  Plan p;
+  p.name = name("after 'plan'");
+  braced("to open the plan", [&] { plan_item(p); });
+  p.range = from(begin);
+  return p;
+}
+
+//G plan_item: config | supervise | 'start' IDENT ';' | actor_use
+//G config: 'config' '{' { type IDENT [ '=' expr ] ';' } '}'
+void Parser::plan_item(Plan &p) {
+  switch (tok_.kind) {
+  case Tok::KwConfig: {
+    advance();
+    std::vector<ConfigEntry> entries;
+    braced("after 'config'", [&] {
+      std::uint32_t begin = here();
+      ConfigEntry e;
+      e.type = type_name();
+      e.name = name("(the entry's name)");
+      if (accept(Tok::Assign)) e.init = expr();
+      expect(Tok::Semi, "after the config entry");
+      e.range = from(begin);
+      entries.push_back(std::move(e));
+    });
+    p.config_blocks.push_back(std::move(entries));
+    return;
+  }
+  case Tok::KwSupervise: p.global_supervisors.push_back(supervise()); return;
+  case Tok::KwStart: {
+    advance();
+    p.starts.push_back(name("after 'start'"));
+    expect(Tok::Semi, "after the start actor");
+    return;
+  }
+  case Tok::KwActor:
+  case Tok::KwComputation: p.actors.push_back(actor_use()); return;
+  default: fail("expected 'actor', 'supervise', 'start' or 'config'");
+  }
+}
+
+//G supervise: 'supervise' IDENT ':' IDENT '(' [ expr { ',' expr } ] ')' '{' { rule } '}'
+Supervise Parser::supervise() {
+  std::uint32_t begin = here();
+  advance();
+  Supervise s;
+  s.name = name("after 'supervise'");
+  expect(Tok::Colon, "after the supervisor's name");
+  s.template_name = name("(the supervisor template)");
+  s.args = arguments();
+  braced("for the supervisor's events", [&] { s.rules.push_back(rule()); });
+  s.range = from(begin);
+  return s;
+}
+
+//G actor_use: ( 'actor' | 'computation' ) IDENT ':' IDENT '(' [ expr { ',' expr } ] ')' ( ';' | '{' { rule | supervise } '}' )
+ActorUse Parser::actor_use() {
+  std::uint32_t begin = here();
+  ActorUse a;
+  a.written_as_computation = take().kind == Tok::KwComputation;
+  a.name = name();
+  expect(Tok::Colon, "after the actor's name");
+  a.template_name = name("(the template or sub-plan)");
+  a.args = arguments();
+  if (!accept(Tok::Semi)) {
+    braced("for the actor's rules", [&] {
+      if (at(Tok::KwSupervise)) a.supervisors.push_back(supervise());
+      else a.rules.push_back(rule());
+    });
+  }
+  a.range = from(begin);
+  return a;
+}
+
+//G rule: IDENT '->' ( IDENT | 'terminate' | 'ignore' ) ';'
+Rule Parser::rule() {
+  std::uint32_t begin = here();
+  Rule r;
+  r.outcome = name("(a result state or event)");
+  expect(Tok::Arrow, "after the state or event");
+  if (at(Tok::KwTerminate) || at(Tok::KwIgnore)) {
+    Token t = take();
+    r.target = t.kind == Tok::KwTerminate ? Rule::Target::Terminate : Rule::Target::Ignore;
+    r.target_name = {std::string(t.text), t.range};
+  } else {
+    r.target_name = name("(an actor, 'terminate' or 'ignore')");
+  }
+  expect(Tok::Semi, "after the rule");
+  r.range = from(begin);
+  return r;
+}
+
+//G arguments: '(' [ expr { ',' expr } ] ')'
+std::vector<ExprPtr> Parser::arguments() {
+  std::vector<ExprPtr> args;
+  expect(Tok::LParen, "(the argument list)");
+  if (!at(Tok::RParen)) {
+    do args.push_back(expr());
+    while (accept(Tok::Comma));
+  }
+  expect(Tok::RParen, "to close the argument list");
+  return args;
+}
+
+//G statement: call ';' | IDENT ( '=' | '+=' | '-=' ) expr ';' | VERBATIM
+Stmt Parser::statement() {
+  std::uint32_t begin = here();
+  Stmt s;
+  if (at(Tok::Verbatim)) {
+    Token t = take();
+    s.kind = Stmt::Kind::Verbatim;
+    s.verbatim = t.value;
+    s.range = t.range;
+    return s;
+  }
+  if (!at(Tok::Ident)) fail("expected a statement (a call, an assignment or %{ ... %})");
+  Name target = name();
+  if (at(Tok::Assign) || at(Tok::PlusAssign) || at(Tok::MinusAssign)) {
+    Tok op = take().kind;
+    s.kind = Stmt::Kind::Assign;
+    s.target = std::move(target);
+    s.assign_op = op == Tok::Assign ? AssignOp::Set : op == Tok::PlusAssign ? AssignOp::Add : AssignOp::Sub;
+    s.value = expr();
+  } else if (at(Tok::LParen)) {
+    auto call = make(Expr::Kind::Call, target.range);
+    call->name = std::move(target);
+    call->args = arguments();
+    call->range = from(begin);
+    s.kind = Stmt::Kind::Call;
+    s.call = std::move(call);
+  } else {
+    fail("expected '(' or an assignment after the name");
+  }
+  expect(Tok::Semi, "after the statement");
+  s.range = from(begin);
+  return s;
+}
+
+//G expr: or ;  or: and { '||' and } ;  and: eq { '&&' eq } ;  eq: rel { ( '==' | '!=' ) rel } ;
+//G rel: add { ( '<' | '<=' | '>' | '>=' ) add } ;  add: mul { ( '+' | '-' ) mul } ;
+//G mul: unary { ( '*' | '/' | '%' ) unary }
+ExprPtr Parser::binary(int min_precedence) {
+  DepthGuard guard(*this);
+  std::uint32_t begin = here();
+  ExprPtr left = unary();
+  for (;;) {
+    BinaryOp op;
+    switch (tok_.kind) {
+    case Tok::OrOr: op = BinaryOp::Or; break;
+    case Tok::AndAnd: op = BinaryOp::And; break;
+    case Tok::EqEq: op = BinaryOp::Eq; break;
+    case Tok::NotEq: op = BinaryOp::Ne; break;
+    case Tok::Lt: op = BinaryOp::Lt; break;
+    case Tok::Le: op = BinaryOp::Le; break;
+    case Tok::Gt: op = BinaryOp::Gt; break;
+    case Tok::Ge: op = BinaryOp::Ge; break;
+    case Tok::Plus: op = BinaryOp::Add; break;
+    case Tok::Minus: op = BinaryOp::Sub; break;
+    case Tok::Star: op = BinaryOp::Mul; break;
+    case Tok::Slash: op = BinaryOp::Div; break;
+    case Tok::Percent: op = BinaryOp::Mod; break;
+    default: return left;
+    }
+    int prec = precedence(op);
+    if (prec < min_precedence) return left;
+    advance();
+    ExprPtr right = binary(prec + 1);  // left-associative
+    auto e = make(Expr::Kind::Binary, from(begin));
+    e->binary_op = op;
+    e->args.push_back(std::move(left));
+    e->args.push_back(std::move(right));
+    left = std::move(e);
+  }
+}
+
+//G unary: ( '!' | '-' ) unary | primary
+ExprPtr Parser::unary() {
+  if (at(Tok::Not) || at(Tok::Minus)) {
+    DepthGuard guard(*this);
+    std::uint32_t begin = here();
+    UnaryOp op = take().kind == Tok::Not ? UnaryOp::Not : UnaryOp::Neg;
+    ExprPtr operand = unary();
+    auto e = make(Expr::Kind::Unary, from(begin));
+    e->unary_op = op;
+    e->args.push_back(std::move(operand));
+    return e;
+  }
+  return primary();
+}
+
+//G primary: INT | FLOAT | STRING | DURATION | 'true' | 'false' | IDENT [ arguments ] | '(' expr ')'
+ExprPtr Parser::primary() {
+  std::uint32_t begin = here();
+  switch (tok_.kind) {
+  case Tok::Int:
+  case Tok::Float: {
+    Token t = take();
+    auto e = make(t.kind == Tok::Int ? Expr::Kind::Int : Expr::Kind::Float, t.range);
+    e->text = std::string(t.text);
+    e->spelling = e->text;
+    return e;
+  }
+  case Tok::String: {
+    Token t = take();
+    auto e = make(Expr::Kind::String, t.range);
+    e->text = t.value;
+    e->spelling = std::string(t.text);
+    return e;
+  }
+  case Tok::Duration: {
+    Token t = take();
+    auto e = make(Expr::Kind::Duration, t.range);
+    e->duration_ms = t.duration_ms;
+    e->spelling = std::string(t.text);
+    return e;
+  }
+  case Tok::KwTrue:
+  case Tok::KwFalse: {
+    Token t = take();
+    auto e = make(Expr::Kind::Bool, t.range);
+    e->bool_value = t.kind == Tok::KwTrue;
+    return e;
+  }
+  case Tok::Ident: {
+    Name n = name();
+    if (!at(Tok::LParen)) {
+      auto e = make(Expr::Kind::Name, n.range);
+      e->name = std::move(n);
+      return e;
+    }
+    auto e = make(Expr::Kind::Call, n.range);
+    e->name = std::move(n);
+    e->args = arguments();
+    e->range = from(begin);
+    return e;
+  }
+  case Tok::LParen: {
+    DepthGuard guard(*this);
+    advance();
+    ExprPtr inner = expr();
+    expect(Tok::RParen, "to close the bracket");
+    auto e = make(Expr::Kind::Paren, from(begin));
+    e->args.push_back(std::move(inner));
+    return e;
+  }
+  default: fail("expected an expression");
+  }
+}
+
+} // namespace
+
+std::unique_ptr<ast::File> parse_file(const SourceManager &sources, FileId file, Diagnostics &diag) {
+  return Parser(sources, file, diag).parse();
+}
+
+} // namespace gfec

@@ -1,0 +1,62 @@
+// Source files and ranges: every token, AST node, model element and diagnostic points here.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace gfec {
+
+using FileId = std::uint32_t;
+
+/// A half-open byte range [begin, end) in one source file.
+struct SourceRange {
+  FileId file = 0;
+  std::uint32_t begin = 0;
+  std::uint32_t end = 0;
+
+  /// The range covering both `this` and `other` (same file assumed).
+  SourceRange to(const SourceRange &other) const { return {file, begin, other.end}; }
+};
+
+/// A 1-based line and column; columns count bytes, as gcc does.
+struct LineCol {
+  std::uint32_t line = 1;
+  std::uint32_t col = 1;
+};
+
+/// One file's text, kept for the whole compilation so diagnostics can quote it.
+class SourceFile {
+public:
+  SourceFile(std::string path, std::string text);
+
+  const std::string &path() const { return path_; }
+  const std::string &text() const { return text_; }
+  LineCol line_col(std::uint32_t offset) const;
+  /// The text of 1-based line `line`, without its newline.
+  std::string_view line_text(std::uint32_t line) const;
+  std::uint32_t line_count() const { return static_cast<std::uint32_t>(line_starts_.size()); }
+
+private:
+  std::string path_;
+  std::string text_;
+  std::vector<std::uint32_t> line_starts_;
+};
+
+/// Owns every file read in one compilation; FileIds index it.
+class SourceManager {
+public:
+  FileId add(std::string path, std::string text);
+  const SourceFile &file(FileId id) const { return *files_.at(id); }
+  std::size_t size() const { return files_.size(); }
+
+  LineCol begin_of(const SourceRange &r) const { return file(r.file).line_col(r.begin); }
+  LineCol end_of(const SourceRange &r) const { return file(r.file).line_col(r.end); }
+
+private:
+  std::vector<std::unique_ptr<SourceFile>> files_;
+};
+
+} // namespace gfec

@@ -1,0 +1,36 @@
+// Tokens of the chart language (LANGUAGE.md §1).
+#pragma once
+
+#include "source.h"
+
+#include <string>
+#include <string_view>
+
+namespace gfec {
+
+enum class Tok {
+  End, Ident, Int, Float, String, Duration, Verbatim,
+  // keywords
+  KwSfc, KwFsm, KwPlan, KwToolbox, KwInterface, KwImport, KwVar, KwConst, KwInitial, KwPlace,
+  KwState, KwTransition, KwWhen, KwSuccess, KwFailure, KwPost, KwPeriod, KwActor, KwComputation,
+  KwSupervisor, KwSupervise, KwEvents, KwStart, KwTerminate, KwIgnore, KwConfig, KwIn, KwOut,
+  KwEntry, KwExit, KwTrue, KwFalse,
+  // punctuation
+  LBrace, RBrace, LParen, RParen, Semi, Comma, Colon, Arrow, Assign, PlusAssign, MinusAssign,
+  Plus, Minus, Star, Slash, Percent, Lt, Le, Gt, Ge, EqEq, NotEq, AndAnd, OrOr, Not, Pipe,
+  Error,  ///< a lexical error, already reported
+};
+
+struct Token {
+  Tok kind = Tok::End;
+  SourceRange range;
+  std::string_view text;  ///< the token as written (points into the SourceFile)
+  std::string value;      ///< String: the decoded text; Verbatim: the code between %{ and %}
+  double duration_ms = 0; ///< Duration
+  bool follows_error = false; ///< a lexical error was reported just before this token
+};
+
+/// How a token kind reads in a message: "identifier", "'{'", "keyword 'sfc'".
+std::string describe(Tok kind);
+
+} // namespace gfec

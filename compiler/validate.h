@@ -1,0 +1,14 @@
+// The validator: resolves names across files, type-checks, applies the rules of LANGUAGE.md and
+// lowers the syntax tree to the model. Every user error is reported here, never in a back end.
+#pragma once
+
+#include "ast.h"
+#include "diagnostics.h"
+#include "model.h"
+
+namespace gfec {
+
+/// Checks `program` and builds its model. The model is complete only when no error was reported.
+model::Model validate(const ast::Program &program, const SourceManager &sources, Diagnostics &diag);
+
+} // namespace gfec

@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Installs every Debian package gfec needs to build, test and run the simulator.
+set -euo pipefail
+packages=(
+  cmake ninja-build gcc g++ clang lld llvm pkg-config make
+  libfmt-dev nlohmann-json3-dev libcli11-dev catch2 libode-dev
+  graphviz valgrind cppcheck
+)
+# Node (for the SARIF schema and TextMate grammar tests) may come from another repo already.
+command -v npm >/dev/null 2>&1 || packages+=(nodejs npm)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  sudo_cmd=""
+  [ "$(id -u)" -eq 0 ] || sudo_cmd="sudo"
+  $sudo_cmd apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
