@@ -1,0 +1,85 @@
+// The world a Carbot lives in, as read from a world file (docs/sim.md, "World files").
+// Plain data: loading checks every field, the simulation only reads it.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace carbot {
+
+/// A point or vector on the floor, metres; x right, y up (the floor is centred at the origin).
+struct Vec2 {
+  double x = 0;
+  double y = 0;
+};
+
+/// The painted line: a polyline of `width` metres, closed (a loop) or open.
+struct Line {
+  double width = 0.05;
+  bool closed = false;
+  std::vector<Vec2> points;  ///< empty: the world has no line
+};
+
+/// A wall: a thin vertical slab from `from` to `to`.
+struct Wall {
+  Vec2 from, to;
+  double thickness = 0.05;
+  double height = 0.30;
+};
+
+/// A box obstacle: axis-aligned, `size` = [w (along x), d (along y)] metres.
+struct Box {
+  Vec2 center;
+  Vec2 size;
+  double height = 0.30;
+};
+
+/// An item the robot can pick up, and where it belongs.
+struct Item {
+  std::string name;
+  Vec2 at;
+  Vec2 destination;
+};
+
+/// Something that happens at a time: the escape button is pressed, or a carried item drops.
+struct Event {
+  enum class Kind { PressEscape, DropItem };
+  Kind kind = Kind::PressEscape;
+  double at = 0;            ///< seconds of simulated time
+  std::string item;         ///< DropItem: the item's name
+  bool has_to = false;      ///< DropItem: lands at `to` instead of under the gripper
+  Vec2 to;
+};
+
+/// The robot's pose at the start.
+struct Start {
+  Vec2 position;
+  double heading_deg = 0;   ///< counter-clockwise from +x
+};
+
+/// A whole world file.
+struct World {
+  std::string name;         ///< the file's stem, for titles ("oval")
+  std::string path;         ///< as given, for messages
+  Vec2 size{4, 3};          ///< floor [w, h], centred at the origin
+  Line line;
+  std::vector<Wall> walls;
+  std::vector<Box> boxes;
+  std::vector<Item> items;
+  Start start;
+  std::vector<Event> events;
+};
+
+/// A world file that cannot be used; what() is "FILE: FIELD: what is wrong".
+struct WorldError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// Reads and checks a world file. Throws WorldError naming the file and the field.
+World load_world(const std::string& path);
+
+/// Parses world text (for tests); `path` only names it in messages.
+World parse_world(const std::string& text, const std::string& path);
+
+}  // namespace carbot

@@ -1,0 +1,37 @@
+// From a chart file to a loadable engine: ask gfec what the chart is, have it generate the
+// engine, wrap the engine in a fixed entry point (the shim) and compile both into a shared
+// object that carbot-sim dlopen()s. The engine's calls to robot functions resolve against
+// carbot-sim itself, which exports its robot libraries (docs/sim.md, "How a chart is run").
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+#include "driver/options.h"
+
+namespace carbot::driver {
+
+/// What gfec says about a chart (`gfec --emit=json`: top-level "kind" and "name").
+struct ChartInfo {
+  std::string name;
+  std::string kind;  ///< "sfc", "fsm" or "plan"
+};
+
+struct BuiltEngine {
+  ChartInfo chart;
+  std::string library;  ///< path of the shared object
+};
+
+/// A step of the build failed; `code` is the exit code carbot-sim should end with.
+struct BuildError : std::runtime_error {
+  BuildError(const std::string& what, Exit code) : std::runtime_error(what), code(code) {}
+  Exit code;
+};
+
+/// Builds the engine of `options.chart` in `dir` (which must exist).
+BuiltEngine build_engine(const Options& options, const std::string& dir);
+
+/// The shim's C source for a C engine of `chart` (exposed for tests).
+std::string c_shim(const ChartInfo& chart);
+
+}  // namespace carbot::driver

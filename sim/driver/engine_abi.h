@@ -1,0 +1,11 @@
+// The fixed entry points of a loadable engine (written by the shim, found by dlsym).
+#pragma once
+
+namespace carbot::driver {
+
+constexpr const char* kEngineSize = "carbot_engine_size";      ///< size_t (void): bytes of engine state
+constexpr const char* kEngineInit = "carbot_engine_init";      ///< void (void*)
+constexpr const char* kEngineRun = "carbot_engine_run";        ///< void (void*): one tick
+constexpr const char* kEngineStatus = "carbot_engine_status";  ///< int (const void*): 0 running, 1 ok, -1 failed
+
+}  // namespace carbot::driver

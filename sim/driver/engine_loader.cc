@@ -1,0 +1,37 @@
+#include "driver/engine_loader.h"
+
+#include <dlfcn.h>
+
+#include "driver/engine_abi.h"
+
+namespace carbot::driver {
+namespace {
+
+void* symbol(void* handle, const char* name, const std::string& library) {
+  void* p = dlsym(handle, name);
+  if (!p) throw LoadError(library + ": no entry point " + name);
+  return p;
+}
+
+}  // namespace
+
+Engine::Engine(const std::string& library) {
+  handle_ = dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (!handle_) {
+    const char* why = dlerror();
+    throw LoadError(std::string("cannot load the engine: ") + (why ? why : library) +
+                    "\n  (carbot-sim's robot libraries implement samples/linebot.iface and samples/cleanbot.iface)");
+  }
+  auto size = reinterpret_cast<size_t (*)()>(symbol(handle_, kEngineSize, library));
+  init_ = reinterpret_cast<void (*)(void*)>(symbol(handle_, kEngineInit, library));
+  run_ = reinterpret_cast<void (*)(void*)>(symbol(handle_, kEngineRun, library));
+  status_ = reinterpret_cast<int (*)(const void*)>(symbol(handle_, kEngineStatus, library));
+  // max_align_t alignment: vector storage comes from operator new, which guarantees it.
+  memory_.assign(size() + 1, 0);
+}
+
+Engine::~Engine() {
+  if (handle_) dlclose(handle_);
+}
+
+}  // namespace carbot::driver

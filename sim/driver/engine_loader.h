@@ -1,0 +1,38 @@
+// A loaded engine: the shared object from chart_build, its state, its entry points.
+#pragma once
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace carbot::driver {
+
+struct LoadError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+class Engine {
+ public:
+  /// dlopen()s `library` with every symbol resolved now: an engine that calls a robot
+  /// function carbot-sim does not have fails here, with the function's name.
+  explicit Engine(const std::string& library);
+  ~Engine();
+  Engine(const Engine&) = delete;
+  Engine& operator=(const Engine&) = delete;
+
+  void init() { init_(state()); }
+  void run() { run_(state()); }
+  /// 0 running, 1 succeeded, -1 failed.
+  int status() const { return status_(state()); }
+
+ private:
+  void* state() const { return const_cast<unsigned char*>(memory_.data()); }
+  void* handle_ = nullptr;
+  std::vector<unsigned char> memory_;  // the engine's struct, allocated by us
+  void (*init_)(void*) = nullptr;
+  void (*run_)(void*) = nullptr;
+  int (*status_)(const void*) = nullptr;
+};
+
+}  // namespace carbot::driver

@@ -1,0 +1,131 @@
+// carbot-sim: run a chart on the simulated Carbot in a world (docs/sim.md).
+//   carbot-sim CHART --world W.json [--seconds S] [--trace t.csv] [--json r.json] [--svg p.svg]
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "carbot_sim_paths.h"
+#include "core/world.h"
+#include "driver/chart_build.h"
+#include "driver/engine_loader.h"
+#include "driver/options.h"
+#include "driver/reports.h"
+#include "driver/run.h"
+
+namespace fs = std::filesystem;
+using namespace carbot;
+using namespace carbot::driver;
+
+namespace {
+
+std::string env_or(const char* name, const char* fallback) {
+  const char* v = std::getenv(name);
+  return v && *v ? v : fallback;
+}
+
+int fail(Exit code, const std::string& message) {
+  std::fprintf(stderr, "carbot-sim: error: %s\n", message.c_str());
+  return code;
+}
+
+/// A scratch folder for the generated engine: the user's --work-dir (kept), or a fresh
+/// temporary one (removed when the run ends).
+class WorkDir {
+ public:
+  explicit WorkDir(const std::string& keep) {
+    if (!keep.empty()) {
+      fs::create_directories(keep);
+      path_ = keep;
+      return;
+    }
+    std::string templ = (fs::temp_directory_path() / "carbot-sim-XXXXXX").string();
+    if (!mkdtemp(templ.data())) throw std::runtime_error("cannot create a temporary folder");
+    path_ = templ;
+    owned_ = true;
+  }
+  ~WorkDir() {
+    std::error_code ignored;
+    if (owned_) fs::remove_all(path_, ignored);
+  }
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+  bool owned_ = false;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options o;
+  o.gfec = env_or("CARBOT_SIM_GFEC", kGfecPath);
+  o.cc = env_or("CC", kCCompiler);
+  o.cxx = env_or("CXX", kCxxCompiler);
+
+  CLI::App app{"Runs a chart (.sfc/.fsm) on the ODE-simulated Carbot in a world, headless and deterministic."};
+  app.add_option("chart", o.chart, "the chart file")->required();
+  app.add_option("--world", o.world, "the world file (JSON, see docs/sim.md)")->required();
+  app.add_option("--seconds", o.seconds, "simulated time limit")->capture_default_str()->check(CLI::PositiveNumber);
+  app.add_option("--trace", o.trace, "write t,x,y,heading per control tick (CSV)");
+  app.add_option("--json", o.json, "write the result (JSON)");
+  app.add_option("--svg", o.svg, "write a picture of the world and the path (SVG)");
+  app.add_option("--physics-step", o.physics_step, "physics step in seconds")->capture_default_str()->check(CLI::PositiveNumber);
+  app.add_option("--period", o.period, "control period in seconds (the chart's tick)")->capture_default_str()->check(CLI::PositiveNumber);
+  app.add_option("--gfec", o.gfec, "the chart compiler (env CARBOT_SIM_GFEC)")->capture_default_str();
+  app.add_option("--cc", o.cc, "C compiler for the engine (env CC)")->capture_default_str();
+  app.add_option("--work-dir", o.work_dir, "build the engine here and keep it (default: a temporary folder)");
+  app.add_flag("-q,--quiet", o.quiet, "no progress display and no summary");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int rc = app.exit(e);
+    return rc == 0 ? kOk : kUsage;
+  }
+
+  // 1. The world: checked before anything is built, so a typo costs no compile.
+  if (!fs::exists(o.world)) return fail(kUsage, fmt::format("{}: no such world file", o.world));
+  if (!fs::exists(o.chart)) return fail(kUsage, fmt::format("{}: no such chart file", o.chart));
+  World world;
+  try {
+    world = load_world(o.world);
+  } catch (const WorldError& e) {
+    return fail(kBadInput, e.what());
+  }
+
+  try {
+    // 2. The engine: gfec generates it, the C compiler makes it loadable, we load it.
+    WorkDir dir(o.work_dir);
+    const BuiltEngine built = build_engine(o, dir.path());
+    Engine engine(built.library);
+
+    // 3. The run.
+    Simulation sim(world, SimConfig{o.physics_step, o.period});
+    const RunResult result = run_engine(sim, engine, built.chart, o.seconds, o.quiet);
+
+    // 4. What it leaves behind.
+    const RunReport report{built.chart, o.chart, sim, result};
+    std::string error;
+    if (!o.trace.empty() && !write_atomically(o.trace, trace_csv(report), error)) return fail(kUsage, error);
+    if (!o.json.empty() && !write_atomically(o.json, result_json(report), error)) return fail(kUsage, error);
+    if (!o.svg.empty() && !write_atomically(o.svg, svg_picture(report), error)) return fail(kUsage, error);
+    if (!o.quiet) {
+      std::printf("carbot-sim: %s (%s) on %s: %s at %.2f s, %.2f m driven, %d bump%s (%.2f s, %.0fx real time)\n",
+                  built.chart.name.c_str(), built.chart.kind.c_str(), world.name.c_str(), result.status.c_str(),
+                  sim.time(), sim.odometer(), sim.bumps(), sim.bumps() == 1 ? "" : "s", result.wall_seconds,
+                  result.wall_seconds > 0 ? sim.time() / result.wall_seconds : 0.0);
+      for (const SimNote& n : sim.notes()) std::printf("  t=%.2f s: %s\n", n.t, n.text.c_str());
+    }
+    return kOk;
+  } catch (const BuildError& e) {
+    return fail(e.code, e.what());
+  } catch (const LoadError& e) {
+    return fail(kBadInput, e.what());
+  } catch (const std::exception& e) {
+    return fail(kUsage, e.what());
+  }
+}

@@ -1,0 +1,27 @@
+// carbot-sim's command line, parsed once and passed down (docs/sim.md, "carbot-sim").
+#pragma once
+
+#include <string>
+
+namespace carbot::driver {
+
+struct Options {
+  std::string chart;          ///< the chart file (.sfc, .fsm or .plan)
+  std::string world;          ///< the world file (JSON)
+  double seconds = 60;        ///< simulated time limit
+  std::string trace;          ///< t,x,y,heading per control tick ("" = none)
+  std::string json;           ///< result summary ("" = none)
+  std::string svg;            ///< picture of the world and the path ("" = none)
+  double physics_step = 0.002;///< s
+  double period = 0.010;      ///< s, control period
+  std::string gfec;           ///< the chart compiler
+  std::string cc;             ///< C compiler for engines
+  std::string cxx;            ///< C++ compiler for plan engines
+  std::string work_dir;       ///< keep the generated engine here ("" = a temporary folder, removed)
+  bool quiet = false;         ///< no progress, no summary
+};
+
+/// Exit codes, as for gfec: 0 the run happened, 1 bad input (chart, world), 2 usage or I/O.
+enum Exit { kOk = 0, kBadInput = 1, kUsage = 2 };
+
+}  // namespace carbot::driver

@@ -1,0 +1,31 @@
+// What a run leaves behind: the trace (CSV), the result (JSON) and a picture (SVG).
+// Each is written to a temporary file and renamed, so a failed write leaves no half file.
+#pragma once
+
+#include <string>
+
+#include "core/simulation.h"
+#include "driver/chart_build.h"
+#include "driver/run.h"
+
+namespace carbot::driver {
+
+/// Everything a report may show about one run.
+struct RunReport {
+  const ChartInfo& chart;
+  const std::string& chart_file;
+  const Simulation& sim;
+  const RunResult& run;
+};
+
+/// `t,x,y,heading` (s, m, m, degrees), one row per control tick.
+std::string trace_csv(const RunReport& r);
+/// sim_time_s, status, bumps, items [{name, at, ...}], and more (docs/sim.md).
+std::string result_json(const RunReport& r);
+/// The world and the robot's path, with a title and a legend.
+std::string svg_picture(const RunReport& r);
+
+/// Writes `text` to `path` through a temporary file; false (and `error`) on failure.
+bool write_atomically(const std::string& path, const std::string& text, std::string& error);
+
+}  // namespace carbot::driver

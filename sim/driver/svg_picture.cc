@@ -1,0 +1,263 @@
+// The picture of a run: the floor to scale, what stands on it, and the path the robot took.
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "core/carbot_model.h"
+#include "core/geometry.h"
+#include "driver/reports.h"
+
+namespace carbot::driver {
+namespace {
+
+// Colours chosen to read on screen and in print: dark line, warm solids, one blue path.
+constexpr const char* kPage = "#fbfaf7";
+constexpr const char* kFloor = "#ece8de";
+constexpr const char* kGrid = "#dcd6c8";
+constexpr const char* kLineInk = "#26262b";
+constexpr const char* kWallInk = "#5a4636";
+constexpr const char* kBoxFill = "#c49a5c";
+constexpr const char* kBoxEdge = "#7a5a30";
+constexpr const char* kPath = "#1f6fd1";
+constexpr const char* kItem = "#e8772e";
+constexpr const char* kDest = "#2e9e5b";
+constexpr const char* kBump = "#d62839";
+constexpr const char* kText = "#2b2b2b";
+constexpr const char* kMuted = "#6b6b6b";
+
+std::string escape_xml(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+/// World metres -> picture pixels (y up in the world, down in SVG).
+struct Frame {
+  double scale = 100;  ///< px per metre
+  double ox = 0, oy = 0;
+  double x(double wx) const { return ox + wx * scale; }
+  double y(double wy) const { return oy - wy * scale; }
+  double len(double m) const { return m * scale; }
+};
+
+class Svg {
+ public:
+  template <typename... A>
+  void add(fmt::format_string<A...> f, A&&... args) {
+    text_ += fmt::format(f, std::forward<A>(args)...);
+    text_ += '\n';
+  }
+  std::string& text() { return text_; }
+
+ private:
+  std::string text_;
+};
+
+std::string status_phrase(const RunReport& r) {
+  const double t = r.sim.time();
+  if (r.run.status == "running") return fmt::format("still running at the {:.0f} s limit", t);
+  return fmt::format("{} after {:.1f} s", r.run.status, t);
+}
+
+void draw_floor(Svg& s, const Frame& f, const World& w) {
+  const double hw = w.size.x / 2, hh = w.size.y / 2;
+  s.add(R"(<rect x="{:.1f}" y="{:.1f}" width="{:.1f}" height="{:.1f}" rx="4" fill="{}" stroke="{}"/>)",
+        f.x(-hw), f.y(hh), f.len(w.size.x), f.len(w.size.y), kFloor, kGrid);
+  s.add(R"(<g stroke="{}" stroke-width="0.8">)", kGrid);
+  for (double gx = std::ceil(-hw / 0.5) * 0.5; gx < hw; gx += 0.5)
+    s.add(R"(<line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}"/>)", f.x(gx), f.y(hh), f.x(gx), f.y(-hh));
+  for (double gy = std::ceil(-hh / 0.5) * 0.5; gy < hh; gy += 0.5)
+    s.add(R"(<line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}"/>)", f.x(-hw), f.y(gy), f.x(hw), f.y(gy));
+  s.add("</g>");
+}
+
+void draw_line(Svg& s, const Frame& f, const Line& line) {
+  if (line.points.empty()) return;
+  std::string pts;
+  for (const Vec2& p : line.points) pts += fmt::format("{:.1f},{:.1f} ", f.x(p.x), f.y(p.y));
+  s.add(R"(<{} points="{}" fill="none" stroke="{}" stroke-width="{:.1f}" stroke-linejoin="round" stroke-linecap="round"/>)",
+        line.closed ? "polygon" : "polyline", pts, kLineInk, f.len(line.width));
+}
+
+void draw_solids(Svg& s, const Frame& f, const World& w) {
+  for (const Box& b : w.boxes)
+    s.add(R"(<rect x="{:.1f}" y="{:.1f}" width="{:.1f}" height="{:.1f}" rx="2" fill="{}" stroke="{}" stroke-width="1.5"/>)",
+          f.x(b.center.x - b.size.x / 2), f.y(b.center.y + b.size.y / 2), f.len(b.size.x), f.len(b.size.y),
+          kBoxFill, kBoxEdge);
+  for (const Wall& wl : w.walls)
+    s.add(R"(<line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}" stroke="{}" stroke-width="{:.1f}" stroke-linecap="square"/>)",
+          f.x(wl.from.x), f.y(wl.from.y), f.x(wl.to.x), f.y(wl.to.y), kWallInk, f.len(wl.thickness));
+}
+
+void draw_destination(Svg& s, const Frame& f, Vec2 d) {
+  const double x = f.x(d.x), y = f.y(d.y), r = std::max(6.0, f.len(0.10));
+  s.add(R"(<g stroke="{}" fill="none" stroke-width="2"><circle cx="{:.1f}" cy="{:.1f}" r="{:.1f}"/>)"
+        R"(<circle cx="{:.1f}" cy="{:.1f}" r="{:.1f}" stroke-dasharray="4 3"/>)"
+        R"(<line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}"/><line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}"/></g>)",
+        kDest, x, y, r * 0.45, x, y, r, x - r * 0.7, y, x + r * 0.7, y, x, y - r * 0.7, x, y + r * 0.7);
+}
+
+void draw_item(Svg& s, const Frame& f, Vec2 at, bool ghost) {
+  const double r = std::max(5.0, f.len(0.045));
+  if (ghost)
+    s.add(R"(<circle cx="{:.1f}" cy="{:.1f}" r="{:.1f}" fill="none" stroke="{}" stroke-width="1.5" stroke-dasharray="3 2"/>)",
+          f.x(at.x), f.y(at.y), r, kItem);
+  else
+    s.add(R"(<circle cx="{:.1f}" cy="{:.1f}" r="{:.1f}" fill="{}" stroke="#8a3f10" stroke-width="1.2"/>)", f.x(at.x),
+          f.y(at.y), r, kItem);
+}
+
+void draw_items(Svg& s, const Frame& f, const RunReport& r) {
+  const World& w = r.sim.world();
+  for (size_t i = 0; i < w.items.size(); ++i) {
+    const Item& spec = w.items[i];
+    const ItemState& now = r.sim.items()[i];
+    draw_destination(s, f, spec.destination);
+    s.add(R"(<line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}" stroke="{}" stroke-width="1" stroke-dasharray="2 4"/>)",
+          f.x(spec.at.x), f.y(spec.at.y), f.x(spec.destination.x), f.y(spec.destination.y), kMuted);
+    draw_item(s, f, spec.at, true);
+    draw_item(s, f, now.at, false);
+    s.add(R"(<text x="{:.1f}" y="{:.1f}" font-size="13" fill="{}">{}</text>)", f.x(now.at.x) + 9, f.y(now.at.y) - 9,
+          kText, escape_xml(now.name));
+  }
+}
+
+/// The path, thinned to points at least 5 mm apart (the picture cannot show finer), and the
+/// robot drawn to scale where it ended.
+void draw_path(Svg& s, const Frame& f, const RunReport& r) {
+  const auto& trace = r.run.trace;
+  if (trace.empty()) return;
+  std::string pts;
+  Vec2 last{1e9, 1e9};
+  for (size_t i = 0; i < trace.size(); ++i) {
+    const Vec2 p{trace[i].x, trace[i].y};
+    if (i + 1 < trace.size() && distance(p, last) < 0.005) continue;
+    pts += fmt::format("{:.1f},{:.1f} ", f.x(p.x), f.y(p.y));
+    last = p;
+  }
+  s.add(R"(<polyline points="{}" fill="none" stroke="{}" stroke-width="2.2" stroke-opacity="0.85" stroke-linejoin="round"/>)",
+        pts, kPath);
+  for (const Vec2& b : r.sim.bump_points()) {
+    const double x = f.x(b.x), y = f.y(b.y);
+    s.add(R"(<path d="M{:.1f},{:.1f} l10,10 m0,-10 l-10,10" stroke="{}" stroke-width="3" stroke-linecap="round"/>)",
+          x - 5, y - 5, kBump);
+  }
+  const TraceRow& a = trace.front();
+  s.add(R"(<circle cx="{:.1f}" cy="{:.1f}" r="6" fill="#ffffff" stroke="{}" stroke-width="3"/>)", f.x(a.x), f.y(a.y),
+        kPath);
+
+  const Pose p = r.sim.pose();
+  const double hx = std::cos(p.heading), hy = std::sin(p.heading);
+  auto corner = [&](double bx, double by) {
+    return fmt::format("{:.1f},{:.1f}", f.x(p.x + hx * bx - hy * by), f.y(p.y + hy * bx + hx * by));
+  };
+  const double l = model::kLength / 2, w = model::kWidth / 2;
+  s.add(R"(<polygon points="{} {} {} {}" fill="{}" fill-opacity="0.18" stroke="{}" stroke-width="2"/>)", corner(l, w),
+        corner(l, -w), corner(-l, -w), corner(-l, w), kPath, kPath);
+  s.add(R"(<polygon points="{} {} {}" fill="{}"/>)", corner(l - 0.02, 0), corner(l - 0.14, 0.07),
+        corner(l - 0.14, -0.07), kPath);
+}
+
+void draw_scale_bar(Svg& s, const Frame& f, double x, double y) {
+  s.add(R"(<g stroke="{}" stroke-width="2"><line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}"/>)"
+        R"(<line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}"/><line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}"/></g>)",
+        kText, x, y, x + f.len(1), y, x, y - 5, x, y + 5, x + f.len(1), y - 5, x + f.len(1), y + 5);
+  s.add(R"(<text x="{:.1f}" y="{:.1f}" font-size="12" fill="{}" text-anchor="middle">1 m</text>)", x + f.len(0.5),
+        y - 8, kText);
+}
+
+void draw_legend(Svg& s, double x, double y, const RunReport& r) {
+  const World& w = r.sim.world();
+  struct Entry {
+    std::string swatch;
+    std::string label;
+  };
+  std::vector<Entry> entries;
+  entries.push_back({fmt::format(R"(<line x1="0" y1="0" x2="22" y2="0" stroke="{}" stroke-width="3"/>)", kPath),
+                     "robot path"});
+  entries.push_back({fmt::format(R"(<circle cx="11" cy="0" r="5" fill="#fff" stroke="{}" stroke-width="3"/>)", kPath),
+                     "start"});
+  entries.push_back(
+      {fmt::format(R"(<rect x="3" y="-6" width="16" height="12" fill="{}" fill-opacity="0.18" stroke="{}" stroke-width="2"/>)",
+                   kPath, kPath),
+       "robot at the end"});
+  if (!w.line.points.empty())
+    entries.push_back(
+        {fmt::format(R"(<line x1="0" y1="0" x2="22" y2="0" stroke="{}" stroke-width="6"/>)", kLineInk), "line"});
+  if (!w.walls.empty())
+    entries.push_back(
+        {fmt::format(R"(<line x1="0" y1="0" x2="22" y2="0" stroke="{}" stroke-width="6"/>)", kWallInk), "wall"});
+  if (!w.boxes.empty())
+    entries.push_back({fmt::format(R"(<rect x="2" y="-7" width="18" height="14" fill="{}" stroke="{}"/>)", kBoxFill,
+                                   kBoxEdge),
+                       "box"});
+  if (!w.items.empty()) {
+    entries.push_back({fmt::format(R"(<circle cx="11" cy="0" r="6" fill="{}"/>)", kItem), "item"});
+    entries.push_back(
+        {fmt::format(R"(<circle cx="11" cy="0" r="6" fill="none" stroke="{}" stroke-dasharray="3 2"/>)", kItem),
+         "item at the start"});
+    entries.push_back(
+        {fmt::format(R"(<circle cx="11" cy="0" r="7" fill="none" stroke="{}" stroke-width="2"/>)", kDest),
+         "destination"});
+  }
+  if (r.sim.bumps() > 0)
+    entries.push_back({fmt::format(R"(<path d="M6,-5 l10,10 m0,-10 l-10,10" stroke="{}" stroke-width="3"/>)", kBump),
+                       "bump"});
+  double cx = x;
+  for (const Entry& e : entries) {
+    s.add(R"~(<g transform="translate({:.1f},{:.1f})">{}<text x="28" y="4" font-size="13" fill="{}">{}</text></g>)~", cx,
+          y, e.swatch, kText, escape_xml(e.label));
+    cx += 40 + 7.2 * e.label.size();
+  }
+}
+
+}  // namespace
+
+std::string svg_picture(const RunReport& r) {
+  const World& w = r.sim.world();
+  constexpr double kMargin = 28, kTitle = 64, kLegend = 56;
+  Frame f;
+  f.scale = std::min(900.0 / w.size.x, 640.0 / w.size.y);
+  const double width = std::max(f.len(w.size.x) + 2 * kMargin, 760.0);
+  const double height = kTitle + f.len(w.size.y) + kLegend + kMargin;
+  f.ox = width / 2;
+  f.oy = kTitle + f.len(w.size.y) / 2;
+
+  Svg s;
+  s.add(R"(<svg xmlns="http://www.w3.org/2000/svg" width="{:.0f}" height="{:.0f}" viewBox="0 0 {:.0f} {:.0f}" font-family="DejaVu Sans, Helvetica, Arial, sans-serif">)",
+        width, height, width, height);
+  const std::string title = fmt::format("{} ({}) on {}", r.chart.name, r.chart.kind, w.name);
+  s.add("<title>{}</title>", escape_xml(title));
+  s.add(R"(<rect width="100%" height="100%" fill="{}"/>)", kPage);
+  s.add(R"(<text x="{:.0f}" y="28" font-size="20" font-weight="bold" fill="{}">{} — {}</text>)", kMargin, kText,
+        escape_xml(title), escape_xml(status_phrase(r)));
+  std::string facts = fmt::format("{:.2f} m driven · {} bump{}", r.sim.odometer(), r.sim.bumps(),
+                                  r.sim.bumps() == 1 ? "" : "s");
+  for (const ItemState& it : r.sim.items())
+    facts += fmt::format(" · {} {:.2f} m from its destination{}", it.name, distance(it.at, it.destination),
+                         it.held ? " (held)" : "");
+  facts += fmt::format(" · world {:.1f} × {:.1f} m", w.size.x, w.size.y);
+  s.add(R"(<text x="{:.0f}" y="50" font-size="13" fill="{}">{}</text>)", kMargin, kMuted, escape_xml(facts));
+
+  draw_floor(s, f, w);
+  draw_line(s, f, w.line);
+  draw_solids(s, f, w);
+  draw_items(s, f, r);
+  draw_path(s, f, r);
+  const double legend_y = kTitle + f.len(w.size.y) + 30;
+  draw_legend(s, kMargin, legend_y, r);
+  draw_scale_bar(s, f, width - kMargin - f.len(1), legend_y);
+  s.add("</svg>");
+  return s.text();
+}
+
+}  // namespace carbot::driver

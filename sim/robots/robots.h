@@ -1,0 +1,44 @@
+/* The robot libraries carbot-sim links and exports to generated engines, plus their reset
+ * hooks. The interface functions themselves are declared by each generated engine.h
+ * (from samples/linebot.iface and samples/cleanbot.iface); they are repeated here so the
+ * libraries are compiled against the exact C prototypes an engine expects. */
+#ifndef CARBOT_ROBOTS_H
+#define CARBOT_ROBOTS_H
+
+#include <stdbool.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* samples/linebot.iface */
+bool Left_IR_Black(void);
+bool Left_IR_White(void);
+bool Right_IR_Black(void);
+bool Right_IR_White(void);
+void Left_FW(void);
+void Left_Stop(void);
+void Right_FW(void);
+void Right_Stop(void);
+
+/* samples/cleanbot.iface */
+void DriveToItem(void);
+void PickUp(void);
+void Transport(void);
+void PlaceItem(void);
+bool Arrived(void);
+bool Holding(void);
+bool FarFromDestination(void);
+bool ItemPlaced(void);
+bool ItemAtDestination(void);
+bool Stuck(void);
+
+/* Forget all state of a library; carbot-sim calls these before a run. */
+void linebot_reset(void);
+void cleanbot_reset(void);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* CARBOT_ROBOTS_H */
