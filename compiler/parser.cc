@@ -104,8 +104,10 @@ private:
     Token open = expect(Tok::LBrace, what);
     while (!at(Tok::RBrace)) {
       if (at(Tok::End)) {
-        diag_.error(tok_.range, "syntax", "expected '}' at end of input")
-            .note(open.range, "to match this '{'");
+        // Only the innermost unclosed brace: the outer ones are the same mistake.
+        if (!eof_reported_)
+          diag_.error(tok_.range, "syntax", "expected '}' at end of input").note(open.range, "to match this '{'");
+        eof_reported_ = true;
         throw SyntaxError{};
       }
       std::uint32_t before = here();
@@ -183,6 +185,7 @@ private:
   std::optional<Token> lookahead_;
   std::uint32_t prev_end_ = 0;
   int depth_ = 0;
+  bool eof_reported_ = false;
 };
 
 //G file: { import | interface | sfc | fsm | toolbox | plan | const_decl | VERBATIM }

@@ -1,0 +1,40 @@
+// Helpers shared by the unit tests: run the front end on in-memory files and render what it said.
+#pragma once
+
+#include "diagnostic_printer.h"
+#include "loader.h"
+
+#include <initializer_list>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace gfec::test {
+
+/// One front-end run over in-memory files; the first file is the main one.
+struct FrontEnd {
+  SourceManager sources;
+  Diagnostics diag;
+  LoadResult loaded;
+
+  FrontEnd(std::initializer_list<std::pair<std::string, std::string>> files, WarningOptions w = {})
+      : diag(w) {
+    MemoryFileSystem fs;
+    for (auto &f : files) fs.add(f.first, f.second);
+    loaded = load_program(files.begin()->first, {}, fs, sources, diag);
+  }
+
+  /// Every diagnostic as gfec prints it.
+  std::string text() const {
+    std::string out;
+    for (const auto &d : diag.all()) out += render_text(d, sources);
+    return out;
+  }
+};
+
+/// Parses one file called "t.sfc" and returns the printed diagnostics.
+inline std::string parse_errors(const std::string &source) {
+  return FrontEnd({{"t.sfc", source}}).text();
+}
+
+} // namespace gfec::test
