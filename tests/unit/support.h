@@ -32,6 +32,22 @@ struct FrontEnd {
   }
 };
 
+/// What a command printed and how it ended.
+struct CommandResult {
+  int exit_code = -1;
+  std::string out;  ///< standard output and standard error, interleaved as they came
+};
+
+/// Runs `command` through the shell (stderr folded into stdout).
+CommandResult run_command(const std::string &command);
+
+/// A fresh, empty folder under the build tree for one test's files.
+std::string scratch_dir(const std::string &name);
+
+/// Reads a whole file ("" if it does not exist).
+std::string read_file(const std::string &path);
+void write_file(const std::string &path, const std::string &text);
+
 /// Parses one file called "t.sfc" and returns the printed diagnostics.
 inline std::string parse_errors(const std::string &source) {
   return FrontEnd({{"t.sfc", source}}).text();
