@@ -255,7 +255,7 @@ std::string svg_picture(const RunReport& r) {
   draw_path(s, f, r);
   const double legend_y = kTitle + f.len(w.size.y) + 30;
   draw_legend(s, kMargin, legend_y, r);
-  draw_scale_bar(s, f, width - kMargin - f.len(1), legend_y);
+  draw_scale_bar(s, f, width - kMargin - f.len(1), 46);
   s.add("</svg>");
   return s.text();
 }
