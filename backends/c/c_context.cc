@@ -1,0 +1,149 @@
+#include "c_context.h"
+
+#include <fmt/format.h>
+
+#include <cctype>
+#include <set>
+
+namespace gfec::c_backend {
+
+namespace {
+
+/// Words a field or local of the engine cannot be called: C's keywords, the macros of the
+/// headers the engine includes, and C++'s keywords (the header is read by C++ code too).
+bool is_reserved(const std::string &word) {
+  static const std::set<std::string> words = {
+      // C99 and C11
+      "auto", "break", "case", "char", "const", "continue", "default", "do", "double", "else", "enum",
+      "extern", "float", "for", "goto", "if", "inline", "int", "long", "register", "restrict", "return",
+      "short", "signed", "sizeof", "static", "struct", "switch", "typedef", "union", "unsigned", "void",
+      "volatile", "while", "_Bool", "_Complex", "_Imaginary", "_Alignas", "_Alignof", "_Atomic",
+      "_Generic", "_Noreturn", "_Static_assert", "_Thread_local",
+      // <stdbool.h>, <assert.h>, <limits.h>, <string.h> as the engine uses them
+      "bool", "true", "false", "assert", "UINT_MAX", "memcpy", "NULL",
+      // C++
+      "alignas", "alignof", "and", "and_eq", "asm", "bitand", "bitor", "catch", "char16_t", "char32_t",
+      "char8_t", "class", "compl", "concept", "consteval", "constexpr", "constinit", "const_cast",
+      "co_await", "co_return", "co_yield", "decltype", "delete", "dynamic_cast", "explicit", "export",
+      "friend", "mutable", "namespace", "new", "noexcept", "not", "not_eq", "nullptr", "operator", "or",
+      "or_eq", "private", "protected", "public", "reinterpret_cast", "requires", "static_assert",
+      "static_cast", "template", "this", "thread_local", "throw", "try", "typeid", "typename", "using",
+      "virtual", "wchar_t", "xor", "xor_eq"};
+  return words.count(word) > 0;
+}
+
+/// Hands out names that are unique within one C name space, deterministically: a name that is
+/// taken (or reserved) gets a trailing `_` until it is free.
+class NameSpace {
+public:
+  void claim(const std::string &name) { taken_.insert(name); }
+  std::string take(std::string name) {
+    while (taken_.count(name) || is_reserved(name)) name += '_';
+    taken_.insert(name);
+    return name;
+  }
+
+private:
+  std::set<std::string> taken_;
+};
+
+std::string guard_of(const std::string &header_base) {
+  std::string g;
+  for (unsigned char c : header_base) g += std::isalnum(c) ? static_cast<char>(std::toupper(c)) : '_';
+  if (g.empty() || std::isdigit(static_cast<unsigned char>(g[0]))) g = "GFEC_" + g;
+  return g;
+}
+
+void name_globals(Context &c) {
+  // Global names: every interface function the model knows, the engine's fixed API, then the
+  // enumerations. The API names are the contract and never move; an enum constant that would
+  // clash with one of them (a place called `init`) gets the trailing `_`.
+  NameSpace globals;
+  for (const auto &f : c.model.functions) globals.claim(f.name);
+  const std::string &t = c.type;
+  for (const char *api : {"init", "run", "activation", "state", "status"}) globals.claim(t + "_" + api);
+  c.hooks_macro = t + "_HOOKS";
+  c.checks_macro = t + "_CHECKS";
+  c.activated_fn = t + "_activated";
+  c.enabled_fn = t + "_enabled";
+  c.place_count = t + "_PLACE_COUNT";
+  c.transition_count = t + "_TRANSITION_COUNT";
+  for (const auto *n : {&c.hooks_macro, &c.checks_macro, &c.activated_fn, &c.enabled_fn, &c.place_count,
+                        &c.transition_count})
+    globals.claim(*n);
+  for (const auto &p : c.chart.places) c.place_const.push_back(globals.take(t + "_" + p.name));
+  for (const auto &tr : c.chart.transitions) c.transition_const.push_back(globals.take(t + "_" + tr.name));
+}
+
+void name_fields(Context &c) {
+  NameSpace fields;
+  for (const auto &v : c.chart.vars) c.var_field.push_back(fields.take(v.name));
+  c.av = fields.take("av");
+  c.state = fields.take("state");
+  c.status = fields.take("status");
+  c.started = fields.take("started");
+  for (const auto &p : c.chart.places) c.timer_field.push_back(p.timed ? fields.take("timer_" + p.name) : "");
+}
+
+void name_locals(Context &c) {
+  NameSpace locals;
+  for (const auto &f : c.model.functions) locals.claim(f.name);
+  locals.claim(c.type);
+  c.self = locals.take("m");
+  c.add = locals.take("add");
+  c.before = locals.take("before");
+  c.from = locals.take("from");
+  c.index = locals.take("p");
+}
+
+void collect_facts(Context &c) {
+  const auto n = c.chart.places.size();
+  c.is_input.assign(n, false);
+  c.is_output.assign(n, false);
+  for (const auto &t : c.chart.transitions) {
+    for (int p : t.inputs) c.is_input.at(static_cast<std::size_t>(p)) = true;
+    for (int p : t.outputs) c.is_output.at(static_cast<std::size_t>(p)) = true;
+  }
+  for (const auto &p : c.chart.places) {
+    c.has_timers = c.has_timers || p.timed;
+    c.has_post = c.has_post || (p.post.has_value() && p.terminal != model::Terminal::None);
+    c.has_terminal = c.has_terminal || p.terminal != model::Terminal::None;
+    c.needs_started = c.needs_started || (p.initial && has_code(p.entry));
+  }
+}
+
+} // namespace
+
+std::string Context::av_of(int p) const {
+  return fmt::format("{}[{}]", field(av), place_const.at(static_cast<std::size_t>(p)));
+}
+
+std::string Context::timer_of(int p) const { return field(timer_field.at(static_cast<std::size_t>(p))); }
+
+bool Context::runs_exit(int p) const { return is_input.at(static_cast<std::size_t>(p)) && has_code(place(p).exit); }
+
+bool Context::runs_entry(int p) const { return is_output.at(static_cast<std::size_t>(p)) && has_code(place(p).entry); }
+
+bool Context::resets_timer(int p) const { return is_output.at(static_cast<std::size_t>(p)) && place(p).timed; }
+
+bool Context::needs_snapshot() const {
+  for (int p = 0; p < static_cast<int>(chart.places.size()); ++p)
+    if (runs_exit(p) || runs_entry(p) || resets_timer(p)) return true;
+  return false;
+}
+
+Context make_context(const model::Model &model, const model::Chart &chart, const EmitOptions &options) {
+  Context c(model, chart, options);
+  c.fsm = chart.kind == model::Chart::Kind::Fsm;
+  c.type = chart.name;
+  c.source_file = options.output_path;
+  c.header_file = base_name(replace_extension(options.output_path, ".h"));
+  c.guard = guard_of(c.header_file);
+  name_globals(c);
+  name_fields(c);
+  name_locals(c);
+  collect_facts(c);
+  return c;
+}
+
+} // namespace gfec::c_backend

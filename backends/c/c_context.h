@@ -1,0 +1,83 @@
+// What every part of the C back end shares while it writes one chart's engine: the chart, the
+// options, the C name chosen for each element, and the facts about the chart that decide which
+// parts of the engine exist at all (an engine pays only for what its chart uses).
+#pragma once
+
+#include "backend.h"
+#include "model.h"
+
+#include <string>
+#include <vector>
+
+namespace gfec::c_backend {
+
+struct Context {
+  Context(const model::Model &m, const model::Chart &ch, const EmitOptions &o) : model(m), chart(ch), options(o) {}
+
+  const model::Model &model;
+  const model::Chart &chart;
+  const EmitOptions &options;
+  bool fsm = false;
+
+  // ------------------------------------------------------------ names in the generated code
+  std::string type;         ///< the struct and the prefix of every global name: the chart's name
+  std::string source_file;  ///< engine.c as #line names it (the output path as the user gave it)
+  std::string header_file;  ///< engine.h, as engine.c includes it (base name)
+  std::string guard;        ///< the header's include guard
+  std::string hooks_macro;  ///< X_HOOKS: define it to get the observation hooks
+  std::string checks_macro; ///< X_CHECKS: define it to assert the postconditions of an fsm
+  std::string activated_fn; ///< X_activated
+  std::string enabled_fn;   ///< X_enabled
+  std::string place_count;  ///< X_PLACE_COUNT
+  std::string transition_count;             ///< X_TRANSITION_COUNT
+  std::vector<std::string> place_const;     ///< X_<place>, by place index
+  std::vector<std::string> transition_const;///< X_<transition>, by transition index
+
+  // Struct fields: chart variables keep their own names; the engine's own fields give way
+  // (take a trailing `_`) if a variable already has their name.
+  std::vector<std::string> var_field;    ///< by var index
+  std::vector<std::string> timer_field;  ///< by place index; empty for places without a timer
+  std::string av;       ///< sfc: activation counters
+  std::string state;    ///< fsm: the current state
+  std::string status;   ///< fsm: 0 running, 1 succeeded, -1 failed
+  std::string started;  ///< set by the first tick, when an initial place has an entry block
+
+  // Locals of the run function. They must not hide an interface function that chart code calls.
+  std::string self;    ///< the engine parameter, `m`
+  std::string add;     ///< sfc: activation produced in this tick
+  std::string before;  ///< sfc: the activation vector at the start of the tick
+  std::string from;    ///< fsm: the state at the start of the tick
+  std::string index;   ///< a loop index
+
+  // ------------------------------------------------------------ what the chart uses
+  std::vector<bool> is_input;   ///< by place: some transition consumes its activation
+  std::vector<bool> is_output;  ///< by place: some transition produces activation in it
+  bool has_timers = false;      ///< some place has a timer
+  bool has_post = false;        ///< some terminal state has a postcondition
+  bool has_terminal = false;    ///< some state is terminal
+  bool needs_started = false;   ///< an initial place has a non-empty entry block
+
+  const model::Place &place(int i) const { return chart.places.at(static_cast<std::size_t>(i)); }
+  /// `m->field`.
+  std::string field(const std::string &name) const { return self + "->" + name; }
+  /// `m->av[X_P]`.
+  std::string av_of(int place) const;
+  /// `m->timer_P`.
+  std::string timer_of(int place) const;
+  /// A place's exit (or entry) block runs only if the place can lose (gain) its activation.
+  bool runs_exit(int place) const;
+  bool runs_entry(int place) const;
+  /// The place's timer is reset when it gains activation after the start.
+  bool resets_timer(int place) const;
+  /// Some place runs an exit or entry block or resets its timer: the run function compares the
+  /// start of the tick with its end (a snapshot of the activation vector, or of the state).
+  bool needs_snapshot() const;
+};
+
+/// Decides every name and fact for compiling `chart`.
+Context make_context(const model::Model &model, const model::Chart &chart, const EmitOptions &options);
+
+/// The block holds code (an empty `entry { }` is as good as none).
+inline bool has_code(const std::optional<std::vector<model::Stmt>> &block) { return block && !block->empty(); }
+
+} // namespace gfec::c_backend

@@ -1,0 +1,29 @@
+// The parts of the engine, one writer each: the header (c_header.cc), the engine file around the
+// run function (c_source.cc), and the run function of an sfc (c_sfc_run.cc) or an fsm (c_fsm_run.cc).
+#pragma once
+
+#include "c_context.h"
+#include "code_writer.h"
+
+#include <string>
+
+namespace gfec::c_backend {
+
+/// engine.h: the types, the API, the hooks and the interface prototypes.
+std::string emit_header(const Context &c);
+/// engine.c: includes, file-level verbatim code, _init, _run and the accessors.
+std::string emit_source(const Context &c);
+
+/// `void X_run(X *m) { ... }`: one tick, LANGUAGE.md §5.1.
+void emit_sfc_run(CodeWriter &w, const Context &c);
+/// `void X_run(X *m) { ... }`: one tick, LANGUAGE.md §7.
+void emit_fsm_run(CodeWriter &w, const Context &c);
+
+/// "LeftFw -> LeftStop", "(A, B) -> C": a transition as the chart would write it.
+std::string transition_label(const Context &c, const model::Transition &t);
+/// The generated-file comment: names the tool and the chart, never a date.
+std::string banner(const Context &c);
+/// A preprocessor line, at column 0 whatever the indentation.
+void directive(CodeWriter &w, const std::string &text);
+
+} // namespace gfec::c_backend

@@ -1,0 +1,213 @@
+// The run function of an fsm: one tick exactly as LANGUAGE.md §7 says. The state is one
+// number; the transitions form one if/else-if chain in declaration order, so at most one fires
+// and only those leaving the current state evaluate their condition.
+#include "c_emit.h"
+#include "c_expr.h"
+
+#include <fmt/format.h>
+
+namespace gfec::c_backend {
+
+namespace {
+
+class FsmRun {
+public:
+  FsmRun(CodeWriter &w, const Context &c) : w_(w), c_(c) {}
+
+  void emit() {
+    w_.line("void {}_run({} *{})", c_.type, c_.type, c_.self);
+    w_.line("{");
+    w_.indent();
+    if (!uses_self()) {
+      section("");
+      w_.line("(void){}; /* the machine has neither transitions nor actions */", c_.self);
+    }
+    first_tick();
+    stop_when_terminal();
+    count_time();
+    remember_state();
+    transitions();
+    exits_and_entries();
+    hooks();
+    checks();
+    actions();
+    w_.dedent();
+    w_.line("}");
+  }
+
+private:
+  void section(const std::string &comment) {
+    if (started_) w_.blank();
+    started_ = true;
+    if (!comment.empty()) w_.line(std::string_view(comment));
+  }
+
+  bool uses_self() const {
+    if (!c_.chart.transitions.empty() || c_.needs_started || c_.has_timers || c_.has_terminal) return true;
+    for (const auto &p : c_.chart.places)
+      if (!p.action.empty()) return true;
+    return false;
+  }
+
+  std::string in_state(int p) const {
+    return fmt::format("{} == {}", c_.field(c_.state), c_.place_const.at(static_cast<std::size_t>(p)));
+  }
+
+  void first_tick() {
+    if (!c_.needs_started) return;
+    section("/* First tick: the initial state enters */");
+    w_.line("if (!{}) {{", c_.field(c_.started));
+    w_.indent();
+    w_.line("{} = true;", c_.field(c_.started));
+    for (const auto &p : c_.chart.places)
+      if (p.initial && has_code(p.entry)) {
+        emit_statements(w_, c_, *p.entry);
+        w_.line_back();
+      }
+    w_.dedent();
+    w_.line("}");
+  }
+
+  void stop_when_terminal() {
+    if (!c_.has_terminal) return;
+    section("/* In a terminal state nothing happens any more */");
+    w_.line("if ({} != 0) {{", c_.field(c_.status));
+    w_.line("    return;");
+    w_.line("}");
+  }
+
+  void count_time() {
+    if (!c_.has_timers) return;
+    section("/* Count the ticks of the current state, if it has a timer */");
+    for (int p = 0; p < static_cast<int>(c_.chart.places.size()); ++p)
+      if (c_.place(p).timed) w_.line("if ({0} && {1} < UINT_MAX) {{ {1}++; }}", in_state(p), c_.timer_of(p));
+  }
+
+  /// The state at the start of the tick, for exits, entries and hooks (hooks only in a hooks build).
+  void remember_state() {
+    if (c_.chart.transitions.empty()) return;
+    section("");
+    if (!c_.needs_snapshot()) directive(w_, "#ifdef " + c_.hooks_macro);
+    w_.line("int {} = {}; /* the state at the start of the tick */", c_.from, c_.field(c_.state));
+    if (!c_.needs_snapshot()) directive(w_, "#endif");
+  }
+
+  void transitions() {
+    if (c_.chart.transitions.empty()) return;
+    section("/* Perform state update: the first transition leaving the current state whose condition");
+    w_.line("   holds, in declaration order (one per tick) */");
+    for (std::size_t i = 0; i < c_.chart.transitions.size(); ++i) {
+      const auto &t = c_.chart.transitions[i];
+      w_.line("/* {}: {} */", t.name, transition_label(c_, t));
+      std::string test = in_state(t.inputs.at(0));
+      if (t.condition) {
+        test += " && " + c_condition(c_, *t.condition);
+        if (c_.model.sources) w_.line_from(*c_.model.sources, t.condition->range);
+      }
+      w_.line("{}if ({}) {{", i == 0 ? "" : "else ", test);
+      w_.line_back();
+      w_.indent();
+      int to = t.outputs.at(0);
+      w_.line("{} = {};", c_.field(c_.state), c_.place_const.at(static_cast<std::size_t>(to)));
+      model::Terminal terminal = c_.place(to).terminal;
+      if (terminal != model::Terminal::None)
+        w_.line("{} = {};", c_.field(c_.status), terminal == model::Terminal::Success ? 1 : -1);
+      w_.dedent();
+      w_.line("}");
+    }
+  }
+
+  /// The exit block of the state left, then the entry block of the state entered (its timer at 0).
+  void exits_and_entries() {
+    if (!c_.needs_snapshot()) return;
+    section("/* Leave the old state, enter the new one */");
+    w_.line("if ({} != {}) {{", c_.field(c_.state), c_.from);
+    w_.indent();
+    const int n = static_cast<int>(c_.chart.places.size());
+    for (int p = 0; p < n; ++p)
+      if (c_.runs_exit(p)) {
+        w_.line("if ({} == {}) {{", c_.from, c_.place_const[static_cast<std::size_t>(p)]);
+        block(*c_.place(p).exit);
+      }
+    for (int p = 0; p < n; ++p)
+      if (c_.runs_entry(p) || c_.resets_timer(p)) {
+        w_.line("if ({}) {{", in_state(p));
+        std::string reset = c_.resets_timer(p) ? fmt::format("{} = 0;", c_.timer_of(p)) : "";
+        block(c_.runs_entry(p) ? *c_.place(p).entry : std::vector<model::Stmt>{}, reset);
+      }
+    w_.dedent();
+    w_.line("}");
+  }
+
+  void hooks() {
+    if (c_.chart.transitions.empty()) return;
+    section("");
+    directive(w_, "#ifdef " + c_.hooks_macro);
+    w_.line("/* Observation hooks: the state left and the state entered; the transitions leaving it */");
+    w_.line("if ({} != {}) {{", c_.field(c_.state), c_.from);
+    w_.indent();
+    w_.line("{}({}, {}, false);", c_.activated_fn, c_.self, c_.from);
+    w_.line("{}({}, {}, true);", c_.activated_fn, c_.self, c_.field(c_.state));
+    for (int p = 0; p < static_cast<int>(c_.chart.places.size()); ++p) {
+      std::string calls;
+      for (std::size_t t = 0; t < c_.chart.transitions.size(); ++t)
+        if (c_.chart.transitions[t].inputs.at(0) == p)
+          calls += fmt::format(" {}({}, {});", c_.enabled_fn, c_.self, c_.transition_const[t]);
+      if (!calls.empty()) w_.line("if ({}) {{{} }}", in_state(p), calls);
+    }
+    w_.dedent();
+    w_.line("}");
+    directive(w_, "#endif");
+  }
+
+  /// A terminal state's postcondition, in a checks build. The run returns at its top once the
+  /// machine is in a terminal state, so this holds only in the tick that entered it.
+  void checks() {
+    if (!c_.has_post) return;
+    section("");
+    directive(w_, "#ifdef " + c_.checks_macro);
+    w_.line("/* Postconditions of the terminal states, checked on entering them */");
+    for (int p = 0; p < static_cast<int>(c_.chart.places.size()); ++p) {
+      const auto &place = c_.place(p);
+      if (place.terminal == model::Terminal::None || !place.post) continue;
+      w_.line("if ({}) {{", in_state(p));
+      w_.indent();
+      if (c_.model.sources) w_.line_from(*c_.model.sources, place.post->range);
+      w_.line("assert({});", c_expr(c_, *place.post));
+      w_.line_back();
+      w_.dedent();
+      w_.line("}");
+    }
+    directive(w_, "#endif");
+  }
+
+  void actions() {
+    bool any = false;
+    for (int p = 0; p < static_cast<int>(c_.chart.places.size()); ++p) {
+      if (c_.place(p).action.empty()) continue;
+      if (!any) section("/* Perform the action of the current state */");
+      any = true;
+      w_.line("if ({}) {{", in_state(p));
+      block(c_.place(p).action);
+    }
+  }
+
+  void block(const std::vector<model::Stmt> &stmts, const std::string &first = "") {
+    w_.indent();
+    if (!first.empty()) w_.line(std::string_view(first));
+    emit_statements(w_, c_, stmts);
+    w_.line_back();
+    w_.dedent();
+    w_.line("}");
+  }
+
+  CodeWriter &w_;
+  const Context &c_;
+  bool started_ = false;
+};
+
+} // namespace
+
+void emit_fsm_run(CodeWriter &w, const Context &c) { FsmRun(w, c).emit(); }
+
+} // namespace gfec::c_backend

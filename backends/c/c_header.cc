@@ -1,0 +1,157 @@
+// engine.h: everything the encapsulating code and the robot library need, and nothing else.
+#include "c_emit.h"
+#include "c_expr.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace gfec::c_backend {
+
+namespace {
+
+/// Lines `decl; /* comment */` with the comments in one column.
+void aligned(CodeWriter &w, const std::vector<std::pair<std::string, std::string>> &rows) {
+  std::size_t width = 0;
+  for (const auto &r : rows) width = std::max(width, r.first.size());
+  for (const auto &r : rows) w.line("{:<{}} /* {} */", r.first, width, r.second);
+}
+
+void places_enum(CodeWriter &w, const Context &c) {
+  w.line("/* The {} of {} {}, in declaration order. */", c.fsm ? "states" : "places", c.fsm ? "fsm" : "sfc", c.type);
+  w.line("enum {");
+  w.indent();
+  for (const auto &name : c.place_const) w.line("{},", name);
+  w.line("{}", c.place_count);
+  w.dedent();
+  w.line("};");
+}
+
+void transitions_enum(CodeWriter &w, const Context &c) {
+  w.line("/* Its transitions, in declaration order: the numbers the observation hooks pass. */");
+  w.line("enum {");
+  w.indent();
+  std::vector<std::pair<std::string, std::string>> rows;
+  for (std::size_t i = 0; i < c.chart.transitions.size(); ++i)
+    rows.emplace_back(c.transition_const[i] + ",", transition_label(c, c.chart.transitions[i]));
+  aligned(w, rows);
+  w.line("{}", c.transition_count);
+  w.dedent();
+  w.line("};");
+}
+
+void state_struct(CodeWriter &w, const Context &c) {
+  w.line("/* The state of one engine. The type is complete so that the caller can allocate it (several");
+  w.line("   engines may run side by side); only the functions below use its fields. */");
+  w.line("typedef struct {0} {0};", c.type);
+  w.line("struct {} {{", c.type);
+  w.indent();
+  std::vector<std::pair<std::string, std::string>> rows;
+  if (c.fsm) {
+    rows.emplace_back(fmt::format("int {};", c.state), fmt::format("the current state, a {}_<state>", c.type));
+    rows.emplace_back(fmt::format("int {};", c.status), "0 running, 1 succeeded, -1 failed");
+  } else {
+    rows.emplace_back(fmt::format("unsigned {}[{}];", c.av, c.place_count), "activation counter of each place");
+  }
+  for (std::size_t p = 0; p < c.chart.places.size(); ++p)
+    if (c.chart.places[p].timed)
+      rows.emplace_back(fmt::format("unsigned {};", c.timer_field[p]),
+                        fmt::format("ticks {} has been active: elapsed({})", c.chart.places[p].name,
+                                    c.chart.places[p].name));
+  if (c.needs_started) rows.emplace_back(fmt::format("bool {};", c.started), "the first tick has run");
+  for (std::size_t v = 0; v < c.chart.vars.size(); ++v)
+    rows.emplace_back(fmt::format("{} {};", c_type(c.chart.vars[v].type), c.var_field[v]),
+                      fmt::format("var {}", c.chart.vars[v].name));
+  aligned(w, rows);
+  w.dedent();
+  w.line("};");
+}
+
+void api(CodeWriter &w, const Context &c) {
+  const std::string &t = c.type;
+  w.line("/* Sets the initial {}; calls no code of the chart. */", c.fsm ? "state" : "marking");
+  w.line("void {0}_init({0} *m);", t);
+  if (c.chart.period_ms > 0)
+    w.line("/* One tick ({}): call it every {} ms. */", c.fsm ? "LANGUAGE.md 7" : "LANGUAGE.md 5.1", c.chart.period_ms);
+  else
+    w.line("/* One tick ({}). */", c.fsm ? "LANGUAGE.md 7" : "LANGUAGE.md 5.1");
+  w.line("void {0}_run({0} *m);", t);
+  if (c.fsm) {
+    w.line("/* 1 if `place` is the current state, else 0. */");
+    w.line("unsigned {0}_activation(const {0} *m, int place);", t);
+    w.line("/* The current state, a {}_<state>. */", t);
+    w.line("int {0}_state(const {0} *m);", t);
+    w.line("/* 0 while running, 1 once in a success state, -1 once in a failure state. */");
+    w.line("int {0}_status(const {0} *m);", t);
+  } else {
+    w.line("/* The activation counter of a place (a {}_<place>); 0 for a number out of range. */", t);
+    w.line("unsigned {0}_activation(const {0} *m, int place);", t);
+  }
+}
+
+void hooks(CodeWriter &w, const Context &c) {
+  directive(w, "#ifdef " + c.hooks_macro);
+  w.line("/* Observation hooks (GFE_Activated, GFE_Enabled): an engine built with -D{} calls them and", c.hooks_macro);
+  w.line("   the encapsulating code defines them. At the end of each tick's update, in declaration order:");
+  w.line("   every {} that lost (active false), then gained (active true) its activation; then every", c.fsm ? "state" : "place");
+  w.line("   transition whose inputs are all active now but were not at the start of the tick. */");
+  w.line("void {0}({1} *m, int place, bool active);", c.activated_fn, c.type);
+  w.line("void {0}({1} *m, int transition);", c.enabled_fn, c.type);
+  directive(w, "#endif");
+}
+
+void interface_functions(CodeWriter &w, const Context &c) {
+  // Grouped by interface, each group in the order the chart's function list gives.
+  std::vector<std::string> interfaces;
+  for (int f : c.chart.functions) {
+    const auto &name = c.model.functions.at(static_cast<std::size_t>(f)).interface_name;
+    if (std::find(interfaces.begin(), interfaces.end(), name) == interfaces.end()) interfaces.push_back(name);
+  }
+  for (const auto &iface : interfaces) {
+    w.blank();
+    if (iface.empty())
+      w.line("/* Functions the chart calls: the robot library defines them. */");
+    else
+      w.line("/* Functions of interface {} that the chart calls: the robot library defines them. */", iface);
+    for (int f : c.chart.functions) {
+      const auto &fn = c.model.functions.at(static_cast<std::size_t>(f));
+      if (fn.interface_name == iface) w.line("{};", c_prototype(fn));
+    }
+  }
+}
+
+} // namespace
+
+std::string emit_header(const Context &c) {
+  CodeWriter w(c.header_file, false);
+  w.line(std::string_view(banner(c)));
+  directive(w, "#ifndef " + c.guard);
+  directive(w, "#define " + c.guard);
+  w.blank();
+  directive(w, "#include <stdbool.h>");
+  directive(w, "#include <stdint.h>");
+  w.blank();
+  directive(w, "#ifdef __cplusplus");
+  w.line("extern \"C\" {");
+  directive(w, "#endif");
+  w.blank();
+  places_enum(w, c);
+  w.blank();
+  transitions_enum(w, c);
+  w.blank();
+  state_struct(w, c);
+  w.blank();
+  api(w, c);
+  w.blank();
+  hooks(w, c);
+  interface_functions(w, c);
+  w.blank();
+  directive(w, "#ifdef __cplusplus");
+  w.line("}");
+  directive(w, "#endif");
+  w.blank();
+  directive(w, fmt::format("#endif /* {} */", c.guard));
+  return w.take();
+}
+
+} // namespace gfec::c_backend

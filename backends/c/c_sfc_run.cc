@@ -1,0 +1,204 @@
+// The run function of an sfc: one tick exactly as LANGUAGE.md §5.1 says, laid out as GFE's
+// generated engine (Fig. 4 of the GFE paper): one conditional block per transition, then one
+// per place. Every part that a chart does not use is left out, so it costs nothing.
+#include "c_emit.h"
+#include "c_expr.h"
+
+#include <fmt/format.h>
+
+namespace gfec::c_backend {
+
+namespace {
+
+class SfcRun {
+public:
+  SfcRun(CodeWriter &w, const Context &c) : w_(w), c_(c) {}
+
+  void emit() {
+    w_.line("void {}_run({} *{})", c_.type, c_.type, c_.self);
+    w_.line("{");
+    w_.indent();
+    declarations();
+    first_tick();
+    count_time();
+    transitions();
+    commit();
+    exits_and_entries();
+    hooks();
+    actions();
+    w_.dedent();
+    w_.line("}");
+  }
+
+private:
+  /// Starts a section of the function body: a blank line before all but the first.
+  void section(const std::string &comment) {
+    if (started_) w_.blank();
+    started_ = true;
+    if (!comment.empty()) w_.line(std::string_view(comment));
+  }
+
+  bool produces() const {
+    for (const auto &t : c_.chart.transitions)
+      if (!t.outputs.empty()) return true;
+    return false;
+  }
+
+  bool uses_self() const {
+    if (!c_.chart.transitions.empty() || c_.needs_started || c_.has_timers) return true;
+    for (const auto &p : c_.chart.places)
+      if (!p.action.empty()) return true;
+    return false;
+  }
+
+  /// The locals, and the snapshot of the activation vector at the start of the tick (taken
+  /// only when something compares it with the end; for the hooks only in a hooks build).
+  void declarations() {
+    section("");
+    if (produces()) w_.line("unsigned {}[{}] = {{0}}; /* activation produced in this tick */", c_.add, c_.place_count);
+    if (!c_.needs_snapshot()) directive(w_, "#ifdef " + c_.hooks_macro);
+    w_.line("unsigned {}[{}]; /* the activation at the start of the tick */", c_.before, c_.place_count);
+    w_.line("memcpy({0}, {1}, sizeof {0});", c_.before, c_.field(c_.av));
+    if (!c_.needs_snapshot()) directive(w_, "#endif");
+    if (!uses_self()) w_.line("(void){}; /* the chart has neither transitions nor actions */", c_.self);
+  }
+
+  /// Step 0: the entry blocks of the initial places, once.
+  void first_tick() {
+    if (!c_.needs_started) return;
+    section("/* First tick: the initial places enter */");
+    w_.line("if (!{}) {{", c_.field(c_.started));
+    w_.indent();
+    w_.line("{} = true;", c_.field(c_.started));
+    for (const auto &p : c_.chart.places)
+      if (p.initial && has_code(p.entry)) {
+        w_.line("/* entry {} */", p.name);
+        emit_statements(w_, c_, *p.entry);
+        w_.line_back();
+      }
+    w_.dedent();
+    w_.line("}");
+  }
+
+  /// Step 1: timers of the places active at the start of the tick (saturating, never wrapping).
+  void count_time() {
+    if (!c_.has_timers) return;
+    section("/* Count the ticks of the active places that have a timer */");
+    for (int p = 0; p < static_cast<int>(c_.chart.places.size()); ++p)
+      if (c_.place(p).timed)
+        w_.line("if ({0} && {1} < UINT_MAX) {{ {1}++; }}", c_.av_of(p), c_.timer_of(p));
+  }
+
+  /// Step 2: one block per transition, in declaration order. `&&` short-circuits, so the
+  /// condition is evaluated only if the transition is open, and left to right. The input counters
+  /// themselves serve as `avail` (they only decrease here); produced activation waits in add[].
+  void transitions() {
+    if (c_.chart.transitions.empty()) return;
+    section("/* Perform state update: transitions in declaration order; the activation they produce");
+    w_.line("   waits in {}[] and cannot be consumed before the next tick */", c_.add);
+    for (std::size_t i = 0; i < c_.chart.transitions.size(); ++i) {
+      const auto &t = c_.chart.transitions[i];
+      w_.line("/* {}: {} */", t.name, transition_label(c_, t));
+      std::string test;
+      for (int p : t.inputs) test += (test.empty() ? "" : " && ") + c_.av_of(p);
+      if (t.condition) {
+        test += (test.empty() ? "" : " && ") + c_condition(c_, *t.condition);
+        if (c_.model.sources) w_.line_from(*c_.model.sources, t.condition->range);
+      }
+      w_.line("if ({}) {{", test.empty() ? "true" : test);
+      w_.line_back();
+      w_.indent();
+      for (int p : t.inputs) w_.line("{}--;", c_.av_of(p));
+      for (int p : t.outputs) w_.line("{}[{}]++;", c_.add, c_.place_const.at(static_cast<std::size_t>(p)));
+      w_.dedent();
+      w_.line("}");
+    }
+  }
+
+  /// Step 3a: AV := avail + add.
+  void commit() {
+    if (!produces()) return;
+    section("/* Commit the activation produced in this tick */");
+    for (int p = 0; p < static_cast<int>(c_.chart.places.size()); ++p)
+      if (c_.is_output[static_cast<std::size_t>(p)])
+        w_.line("{} += {}[{}];", c_.av_of(p), c_.add, c_.place_const[static_cast<std::size_t>(p)]);
+  }
+
+  /// Step 3b: comparing the start of the tick with its end, all exits, then all entries. A place
+  /// that lost and regained activation in the tick is active at both ends: nothing runs.
+  void exits_and_entries() {
+    if (!c_.needs_snapshot()) return;
+    section("/* Places that lost their activation exit, then places that gained it enter */");
+    const int n = static_cast<int>(c_.chart.places.size());
+    for (int p = 0; p < n; ++p)
+      if (c_.runs_exit(p)) {
+        w_.line("if ({}[{}] && !{}) {{", c_.before, c_.place_const[static_cast<std::size_t>(p)], c_.av_of(p));
+        block(*c_.place(p).exit);
+      }
+    for (int p = 0; p < n; ++p)
+      if (c_.runs_entry(p) || c_.resets_timer(p)) {
+        w_.line("if (!{}[{}] && {}) {{", c_.before, c_.place_const[static_cast<std::size_t>(p)], c_.av_of(p));
+        std::string reset = c_.resets_timer(p) ? fmt::format("{} = 0;", c_.timer_of(p)) : "";
+        block(c_.runs_entry(p) ? *c_.place(p).entry : std::vector<model::Stmt>{}, reset);
+      }
+  }
+
+  /// The observation hooks, compiled only with -DX_HOOKS.
+  void hooks() {
+    section("");
+    directive(w_, "#ifdef " + c_.hooks_macro);
+    w_.line("/* Observation hooks: places that lost, then gained activation; transitions open from now on */");
+    const std::string &b = c_.before, &i = c_.index;
+    const std::string av = c_.field(c_.av);
+    w_.line("for (int {0} = 0; {0} < {1}; ++{0}) {{", i, c_.place_count);
+    w_.line("    if ({0}[{1}] && !{2}[{1}]) {{ {3}({4}, {1}, false); }}", b, i, av, c_.activated_fn, c_.self);
+    w_.line("}");
+    w_.line("for (int {0} = 0; {0} < {1}; ++{0}) {{", i, c_.place_count);
+    w_.line("    if (!{0}[{1}] && {2}[{1}]) {{ {3}({4}, {1}, true); }}", b, i, av, c_.activated_fn, c_.self);
+    w_.line("}");
+    for (std::size_t t = 0; t < c_.chart.transitions.size(); ++t) {
+      std::string was, is;
+      for (int p : c_.chart.transitions[t].inputs) {
+        was += (was.empty() ? "" : " && ") + fmt::format("{}[{}]", b, c_.place_const[static_cast<std::size_t>(p)]);
+        is += " && " + c_.av_of(p);
+      }
+      if (c_.chart.transitions[t].inputs.size() > 1) was = "(" + was + ")";
+      if (!was.empty())
+        w_.line("if (!{}{}) {{ {}({}, {}); }}", was, is, c_.enabled_fn, c_.self, c_.transition_const[t]);
+    }
+    directive(w_, "#endif");
+  }
+
+  /// Step 4: every active place runs its action block once, in declaration order.
+  void actions() {
+    bool any = false;
+    for (int p = 0; p < static_cast<int>(c_.chart.places.size()); ++p) {
+      if (c_.place(p).action.empty()) continue;
+      if (!any) section("/* Perform place actions */");
+      any = true;
+      w_.line("if ({}) {{", c_.av_of(p));
+      block(c_.place(p).action);
+    }
+  }
+
+  /// The chart's statements as the body of the block just opened, and its closing brace.
+  /// `first`, if any, is engine code that goes before them.
+  void block(const std::vector<model::Stmt> &stmts, const std::string &first = "") {
+    w_.indent();
+    if (!first.empty()) w_.line(std::string_view(first));
+    emit_statements(w_, c_, stmts);
+    w_.line_back();
+    w_.dedent();
+    w_.line("}");
+  }
+
+  CodeWriter &w_;
+  const Context &c_;
+  bool started_ = false;
+};
+
+} // namespace
+
+void emit_sfc_run(CodeWriter &w, const Context &c) { SfcRun(w, c).emit(); }
+
+} // namespace gfec::c_backend

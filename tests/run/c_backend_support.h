@@ -1,0 +1,415 @@
+// What the C back end's tests share (tests/unit/c_backend_*_test.cc): a builder for hand-made
+// models, the real pipeline from chart text to engine, scratch directories, running commands,
+// and the generator of the C harness that compile-and-run tests link with an engine.
+#pragma once
+
+#include "backend.h"
+#include "c_backend.h"
+#include "diagnostic_printer.h"
+#include "file_system.h"
+#include "loader.h"
+#include "model.h"
+#include "validate.h"
+
+#include <fmt/format.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace cbt {
+
+namespace fs = std::filesystem;
+using namespace gfec;
+using model::Expr;
+using model::Stmt;
+using model::Type;
+
+// ------------------------------------------------------------------ hand-built models
+
+/// Builds one chart into a model, every element on a line of its own in a fake chart file so
+/// that #line directives have somewhere to point.
+class ChartBuilder {
+public:
+  ChartBuilder(std::string name, model::Chart::Kind kind, std::string path = "hand.sfc")
+      : sources_(std::make_unique<SourceManager>()) {
+    sources_->add(std::move(path), std::string(400, '\n'));
+    model_.sources = sources_.get();
+    model::Chart c;
+    c.name = std::move(name);
+    c.kind = kind;
+    c.in_main_file = true;
+    model_.charts.push_back(std::move(c));
+  }
+
+  model::Chart &chart() { return model_.charts.front(); }
+  const model::Model &model() const { return model_; }
+
+  /// Declares an interface function (once) and marks it used by the chart.
+  ChartBuilder &fn(const std::string &name, Type result = Type::Void, std::vector<model::Param> params = {}) {
+    model::Function f;
+    f.name = name;
+    f.result = result;
+    f.params = std::move(params);
+    f.interface_name = "Bot";
+    f.range = next_range();
+    model_.functions.push_back(f);
+    chart().functions.push_back(static_cast<int>(model_.functions.size() - 1));
+    return *this;
+  }
+
+  model::Place &place(const std::string &name, bool initial = false, std::vector<Stmt> action = {}) {
+    model::Place p;
+    p.name = name;
+    p.initial = initial;
+    p.action = std::move(action);
+    p.range = next_range();
+    chart().places.push_back(std::move(p));
+    return chart().places.back();
+  }
+
+  model::Transition &transition(const std::vector<std::string> &in, const std::vector<std::string> &out,
+                                std::optional<Expr> condition = {}, const std::string &name = "") {
+    model::Transition t;
+    t.name = name.empty() ? fmt::format("T{}", chart().transitions.size()) : name;
+    t.named = !name.empty();
+    for (const auto &p : in) t.inputs.push_back(place_index(p));
+    for (const auto &p : out) t.outputs.push_back(place_index(p));
+    t.range = next_range();
+    if (condition) {
+      t.condition = std::move(condition);
+      t.condition->range = t.range;
+    }
+    chart().transitions.push_back(std::move(t));
+    return chart().transitions.back();
+  }
+
+  int var(const std::string &name, Type type, std::optional<Expr> init = {}) {
+    model::Var v;
+    v.name = name;
+    v.type = type;
+    v.init = std::move(init);
+    v.range = next_range();
+    chart().vars.push_back(std::move(v));
+    return static_cast<int>(chart().vars.size() - 1);
+  }
+
+  int constant(const std::string &name, Expr value) {
+    model::Const k;
+    k.name = name;
+    k.type = value.type;
+    k.value = std::move(value);
+    k.range = next_range();
+    model_.consts.push_back(std::move(k));
+    chart().consts.push_back(static_cast<int>(model_.consts.size() - 1));
+    return static_cast<int>(model_.consts.size() - 1);
+  }
+
+  void verbatim(const std::string &text) { model_.verbatims.push_back({text, next_range()}); }
+
+  // Expressions and statements.
+  Expr call(const std::string &name, std::vector<Expr> args = {}) const {
+    Expr e;
+    e.kind = Expr::Kind::Call;
+    e.index = function_index(name);
+    e.type = model_.functions[static_cast<std::size_t>(e.index)].result;
+    e.args = std::move(args);
+    return e;
+  }
+  Stmt act(const std::string &name, std::vector<Expr> args = {}) {
+    Stmt s;
+    s.kind = Stmt::Kind::Call;
+    s.call = call(name, std::move(args));
+    s.range = next_range();
+    return s;
+  }
+  Stmt assign(const std::string &var, AssignOp op, Expr value) {
+    Stmt s;
+    s.kind = Stmt::Kind::Assign;
+    s.var = var_index(var);
+    s.op = op;
+    s.value = std::move(value);
+    s.range = next_range();
+    return s;
+  }
+  Stmt verbatim_stmt(const std::string &text) {
+    Stmt s;
+    s.kind = Stmt::Kind::Verbatim;
+    s.verbatim = text;
+    s.range = next_range();
+    return s;
+  }
+  Expr var_ref(const std::string &name) const {
+    Expr e;
+    e.kind = Expr::Kind::Var;
+    e.index = var_index(name);
+    e.type = chart_const().vars[static_cast<std::size_t>(e.index)].type;
+    return e;
+  }
+  Expr const_ref(int index) const {
+    Expr e;
+    e.kind = Expr::Kind::Const;
+    e.index = index;
+    e.type = model_.consts[static_cast<std::size_t>(index)].type;
+    return e;
+  }
+  Expr elapsed(const std::string &place) {
+    Expr e;
+    e.kind = Expr::Kind::Elapsed;
+    e.type = Type::Duration;
+    e.index = place_index(place);
+    chart().places[static_cast<std::size_t>(e.index)].timed = true;
+    return e;
+  }
+  static Expr ticks(unsigned long n, double ms) {
+    Expr e;
+    e.kind = Expr::Kind::Ticks;
+    e.type = Type::Duration;
+    e.ticks = n;
+    e.ms = ms;
+    return e;
+  }
+  static Expr lit(Expr::Kind kind, const std::string &text, Type type) {
+    Expr e;
+    e.kind = kind;
+    e.text = text;
+    e.type = type;
+    return e;
+  }
+  static Expr int_lit(const std::string &text) { return lit(Expr::Kind::Int, text, Type::Int); }
+  static Expr float_lit(const std::string &text) { return lit(Expr::Kind::Float, text, Type::Float); }
+  static Expr bool_lit(bool value) {
+    Expr e;
+    e.kind = Expr::Kind::Bool;
+    e.bool_value = value;
+    return e;
+  }
+  static Expr bin(BinaryOp op, Expr a, Expr b) {
+    Expr e;
+    e.kind = Expr::Kind::Binary;
+    e.binary_op = op;
+    e.args.push_back(std::move(a));
+    e.args.push_back(std::move(b));
+    return e;
+  }
+  static Expr un(UnaryOp op, Expr a) {
+    Expr e;
+    e.kind = Expr::Kind::Unary;
+    e.unary_op = op;
+    e.args.push_back(std::move(a));
+    return e;
+  }
+  static Expr paren(Expr a) {
+    Expr e;
+    e.kind = Expr::Kind::Paren;
+    e.type = a.type;
+    e.args.push_back(std::move(a));
+    return e;
+  }
+
+  int place_index(const std::string &name) const {
+    for (std::size_t i = 0; i < chart_const().places.size(); ++i)
+      if (chart_const().places[i].name == name) return static_cast<int>(i);
+    throw std::invalid_argument("no place " + name);
+  }
+
+private:
+  const model::Chart &chart_const() const { return model_.charts.front(); }
+  int function_index(const std::string &name) const {
+    for (std::size_t i = 0; i < model_.functions.size(); ++i)
+      if (model_.functions[i].name == name) return static_cast<int>(i);
+    throw std::invalid_argument("no function " + name);
+  }
+  int var_index(const std::string &name) const {
+    for (std::size_t i = 0; i < chart_const().vars.size(); ++i)
+      if (chart_const().vars[i].name == name) return static_cast<int>(i);
+    throw std::invalid_argument("no var " + name);
+  }
+  SourceRange next_range() {
+    ++line_;
+    return {0, line_ - 1, line_ - 1};  // offset k is the start of line k+1 in the fake file
+  }
+
+  std::unique_ptr<SourceManager> sources_;
+  model::Model model_;
+  std::uint32_t line_ = 0;
+};
+
+/// Runs the C back end on a model: {engine.c, engine.h} for output `output`.
+inline std::vector<OutputFile> emit_c(const model::Model &m, const std::string &output = "engine.c",
+                                      bool line_directives = true, const std::string &source = "hand.sfc") {
+  EmitOptions o;
+  o.output_path = output;
+  o.source_name = source;
+  o.line_directives = line_directives;
+  o.chart = 0;
+  return make_c_backend()->emit(m, o);
+}
+
+// ------------------------------------------------------------------ the real pipeline
+
+/// Chart text through loader, validator and back end, all in memory. Files are named as given
+/// (relative names keep #line paths short and the output byte-stable).
+struct Compiled {
+  SourceManager sources;
+  Diagnostics diag;
+  model::Model model;
+  std::vector<OutputFile> files;
+  std::string errors;  ///< rendered diagnostics when the chart did not compile
+};
+
+inline std::unique_ptr<Compiled> compile_chart(const std::map<std::string, std::string> &files,
+                                               const std::string &main, const std::string &output,
+                                               bool line_directives = true) {
+  auto c = std::make_unique<Compiled>();
+  MemoryFileSystem mem;
+  for (const auto &[path, text] : files) mem.add(path, text);
+  LoadResult loaded = load_program(main, {}, mem, c->sources, c->diag);
+  if (!c->diag.has_errors()) c->model = validate(loaded.program, c->sources, c->diag);
+  for (const auto &d : c->diag.all()) c->errors += render_text(d, c->sources);
+  if (c->diag.has_errors()) return c;
+  c->model.sources = &c->sources;
+  EmitOptions o;
+  o.output_path = output;
+  o.source_name = main;
+  o.line_directives = line_directives;
+  for (std::size_t i = 0; i < c->model.charts.size(); ++i)
+    if (c->model.charts[i].in_main_file && o.chart < 0) o.chart = static_cast<int>(i);
+  c->files = make_c_backend()->emit(c->model, o);
+  return c;
+}
+
+// ------------------------------------------------------------------ files and commands
+
+inline std::string read_file(const fs::path &path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+inline void write_file(const fs::path &path, const std::string &text) {
+  fs::create_directories(path.parent_path());
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+}
+
+/// A fresh directory for one test under the build tree.
+inline fs::path scratch_dir(const std::string &name) {
+  fs::path dir = fs::path(GFEC_BINARY_DIR) / "test-scratch" / "c_backend" / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+struct CommandResult {
+  int status = -1;
+  std::string output;  ///< stdout and stderr together
+};
+
+inline CommandResult run_command(const std::string &command, const fs::path &log) {
+  CommandResult r;
+  r.status = std::system((command + " > '" + log.string() + "' 2>&1").c_str());
+  r.output = read_file(log);
+  return r;
+}
+
+inline bool have_tool(const std::string &tool) {
+  return std::system(("command -v " + tool + " > /dev/null 2>&1").c_str()) == 0;
+}
+
+/// The compilers the generated C must satisfy; clang is skipped (with a warning by the caller)
+/// where it is not installed.
+inline std::vector<std::string> c_compilers() {
+  std::vector<std::string> cc{"gcc"};
+  if (have_tool("clang")) cc.push_back("clang");
+  return cc;
+}
+
+inline const char *kStrictFlags = "-std=c99 -Wall -Wextra -Wpedantic -Werror";
+
+// ------------------------------------------------------------------ the run harness
+
+/// A C main() for one chart: it implements every interface function the chart calls from a
+/// script read on stdin, one line per tick (`Left_IR_Black Distance=12.5`: listed sensing
+/// functions return 1 or the value, others 0), logs each call (`cond F -> 1`, `act G(0, 0.6)`),
+/// runs one tick per line and prints the activation after it (`av A B:2` lists the active
+/// places, counts above one after a colon; an fsm prints `state S status 0`). With -DX_HOOKS it
+/// logs the hooks too (`hook lost A`, `hook gained B`, `hook enabled T0`).
+inline std::string harness_source(const model::Model &m, const model::Chart &chart, const std::string &header) {
+  const std::string &X = chart.name;
+  const bool fsm = chart.kind == model::Chart::Kind::Fsm;
+  std::string s;
+  s += fmt::format("#include \"{}\"\n\n#include <stdio.h>\n#include <stdlib.h>\n#include <string.h>\n\n", header);
+  s += "static char script[1024]; /* this tick's line */\n\n";
+  s += "static double value_of(const char *name)\n{\n"
+       "    size_t n = strlen(name);\n"
+       "    const char *p = script;\n"
+       "    while ((p = strstr(p, name)) != NULL) {\n"
+       "        int starts = p == script || p[-1] == ' ';\n"
+       "        if (starts && (p[n] == '=')) return atof(p + n + 1);\n"
+       "        if (starts && (p[n] == ' ' || p[n] == '\\n' || p[n] == '\\0')) return 1;\n"
+       "        p += n;\n"
+       "    }\n"
+       "    return 0;\n}\n\n";
+  s += "static const char *const place_names[] = {";
+  for (const auto &p : chart.places) s += fmt::format("\"{}\", ", p.name);
+  s += "NULL};\n";
+  s += "static const char *const transition_names[] = {";
+  for (const auto &t : chart.transitions) s += fmt::format("\"{}\", ", t.name);
+  s += "NULL};\n\n";
+  for (int fi : chart.functions) {
+    const auto &f = m.functions[static_cast<std::size_t>(fi)];
+    std::string params, format, args;
+    for (std::size_t i = 0; i < f.params.size(); ++i) {
+      const auto &p = f.params[i];
+      params += fmt::format("{}{} a{}", i ? ", " : "", model::type_name(p.type), i);
+      bool real = p.type == Type::Float || p.type == Type::Double;
+      format += fmt::format("{}{}", i ? ", " : "", real ? "%g" : "%d");
+      args += fmt::format(", {}a{}", real ? "(double)" : "(int)", i);
+    }
+    if (params.empty()) params = "void";
+    if (f.result == Type::Void) {
+      s += fmt::format("void {}({})\n{{\n    printf(\"act {}{}\\n\"{});\n}}\n\n", f.name, params, f.name,
+                       f.params.empty() ? "" : "(" + format + ")", args);
+    } else {
+      bool real = f.result == Type::Float || f.result == Type::Double;
+      std::string t = model::type_name(f.result);
+      s += fmt::format("{} {}({})\n{{\n", t, f.name, params);
+      if (!f.params.empty()) s += fmt::format("    printf(\"call {}({})\\n\"{});\n", f.name, format, args);
+      s += fmt::format("    {} v = ({})value_of(\"{}\");\n", t, t, f.name);
+      s += fmt::format("    printf(\"cond {} -> {}\\n\", {}v);\n    return v;\n}}\n\n", f.name, real ? "%g" : "%d",
+                       real ? "(double)" : "(int)");
+    }
+  }
+  s += fmt::format("#ifdef {}_HOOKS\n", X);
+  s += fmt::format("void {0}_activated({0} *m, int place, bool active)\n{{\n    (void)m;\n"
+                   "    printf(\"hook %s %s\\n\", active ? \"gained\" : \"lost\", place_names[place]);\n}}\n\n", X);
+  s += fmt::format("void {0}_enabled({0} *m, int transition)\n{{\n    (void)m;\n"
+                   "    printf(\"hook enabled %s\\n\", transition_names[transition]);\n}}\n", X);
+  s += "#endif\n\n";
+  s += "static void print_state(const " + X + " *m)\n{\n";
+  if (fsm) {
+    s += fmt::format("    printf(\"state %s status %d\\n\", place_names[{0}_state(m)], {0}_status(m));\n", X);
+  } else {
+    s += fmt::format("    int p;\n    printf(\"av\");\n    for (p = 0; p < {0}_PLACE_COUNT; ++p) {{\n"
+                     "        unsigned n = {0}_activation(m, p);\n"
+                     "        if (n == 1) printf(\" %s\", place_names[p]);\n"
+                     "        if (n > 1) printf(\" %s:%u\", place_names[p], n);\n    }}\n    printf(\"\\n\");\n", X);
+  }
+  s += "}\n\n";
+  s += fmt::format("int main(void)\n{{\n    {0} m;\n    int tick = 0;\n    {0}_init(&m);\n"
+                   "    while (fgets(script, sizeof script, stdin) != NULL) {{\n"
+                   "        printf(\"tick %d\\n\", ++tick);\n"
+                   "        {0}_run(&m);\n"
+                   "        print_state(&m);\n    }}\n    return 0;\n}}\n", X);
+  return s;
+}
+
+} // namespace cbt
