@@ -80,11 +80,8 @@ public:
   std::vector<std::string> names() const;
 
 private:
-  using Entries = std::map<std::string, Value, std::less<>>;
-  const Value& find(std::string_view name) const;  // caller holds mutex_
-
   mutable std::mutex mutex_;
-  Entries entries_;
+  std::map<std::string, Value, std::less<>> entries_;
 };
 
 /// Read access to the configuration, as formulas and In parameters see it.

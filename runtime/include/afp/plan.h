@@ -167,8 +167,8 @@ private:
   std::size_t index_of(const Supervisor* supervisor) const;
   detail::Target target_of(const Actor* actor, detail::Target::Kind kind) const;
   void check_name_free(const std::string& name) const;
-  static void add_reaction(std::vector<detail::Supervision>& list, std::size_t supervisor, int event,
-                           detail::Target target);
+  void add_reaction(std::vector<detail::Supervision>& list, std::size_t supervisor, int event,
+                    detail::Target target);
 
   std::string name_;
   std::vector<std::pair<std::string, Value>> entries_;

@@ -1,0 +1,105 @@
+#include "afp/threaded_executor.h"
+
+#include <atomic>
+#include <mutex>
+#include <stdexcept>
+#include <thread>
+
+#include "level.h"
+#include "thread_watchers.h"
+#include "waker.h"
+
+namespace afp {
+
+using Clock = std::chrono::steady_clock;
+
+// The executor is the services of every level it runs: plan time is the
+// steady clock since the run began.
+struct ThreadedExecutor::Impl final : detail::Services {
+  Impl(Plan& plan, Configuration& config, TraceObserver* trace, ThreadedOptions options)
+      : Services(config, trace), plan(plan), options(options) {}
+
+  Duration now() const override { return Clock::now() - origin; }
+  std::unique_ptr<detail::Watchers> make_watchers() override {
+    return std::make_unique<detail::ThreadWatchers>(*this, waker, options.supervisor_period);
+  }
+
+  // Checks, in the caller's thread, that the plan can run and runs only once.
+  void prepare() {
+    if (prepared) throw std::logic_error("a ThreadedExecutor runs its plan once");
+    plan.validate();
+    prepared = true;
+  }
+
+  // The paper's main loop, one actor step per period or per wake-up.
+  Status execute() {
+    origin = Clock::now();  // before any supervisor thread exists, so they read it race-free
+    detail::Level level(plan, *this);
+    level.begin();
+    if (level.status() == Status::Running) status.store(Status::Running);
+    while (level.status() == Status::Running) {
+      waker.wait_for(options.actor_period);
+      if (stop_requested.load())
+        level.abort();
+      else
+        level.advance();
+    }
+    {
+      std::lock_guard lock(error_mutex);
+      error = level.error();
+    }
+    status.store(level.status());  // after the error, so that a Failed status has its message
+    return level.status();
+  }
+
+  Plan& plan;
+  const ThreadedOptions options;
+  Clock::time_point origin;
+  detail::Waker waker;
+  std::atomic<bool> stop_requested{false};
+  std::atomic<Status> status{Status::NotStarted};
+  mutable std::mutex error_mutex;
+  std::string error;
+  bool prepared = false;  // only the owner's thread touches it
+  std::thread thread;
+};
+
+ThreadedExecutor::ThreadedExecutor(Plan& plan, Configuration& config, TraceObserver* trace,
+                                   ThreadedOptions options)
+    : impl_(std::make_unique<Impl>(plan, config, trace, options)) {
+  plan.declare_into(config);
+}
+
+ThreadedExecutor::~ThreadedExecutor() {
+  request_stop();
+  wait();
+}
+
+Status ThreadedExecutor::run() {
+  impl_->prepare();
+  return impl_->execute();
+}
+
+void ThreadedExecutor::start() {
+  impl_->prepare();
+  impl_->thread = std::thread([this] { impl_->execute(); });
+}
+
+void ThreadedExecutor::request_stop() {
+  impl_->stop_requested.store(true);
+  impl_->waker.notify();
+}
+
+Status ThreadedExecutor::wait() {
+  if (impl_->thread.joinable()) impl_->thread.join();
+  return status();
+}
+
+Status ThreadedExecutor::status() const { return impl_->status.load(); }
+
+std::string ThreadedExecutor::error() const {
+  std::lock_guard lock(impl_->error_mutex);
+  return impl_->error;
+}
+
+}  // namespace afp
