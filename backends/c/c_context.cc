@@ -20,7 +20,7 @@ bool is_reserved(const std::string &word) {
       "volatile", "while", "_Bool", "_Complex", "_Imaginary", "_Alignas", "_Alignof", "_Atomic",
       "_Generic", "_Noreturn", "_Static_assert", "_Thread_local",
       // <stdbool.h>, <assert.h>, <limits.h>, <string.h> as the engine uses them
-      "bool", "true", "false", "assert", "UINT_MAX", "memcpy", "NULL",
+      "bool", "true", "false", "assert", "uint32_t", "UINT32_MAX", "memcpy", "NULL",
       // C++
       "alignas", "alignof", "and", "and_eq", "asm", "bitand", "bitor", "catch", "char16_t", "char32_t",
       "char8_t", "class", "compl", "concept", "consteval", "constexpr", "constinit", "const_cast",

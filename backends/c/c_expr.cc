@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <optional>
+#include <utility>
+
 namespace gfec::c_backend {
 
 namespace {
@@ -72,7 +75,41 @@ Rendered unary(const Context &c, const Expr &e) {
   return {spelling(e.unary_op) + operand.text, kUnary};
 }
 
+const Expr &unbracketed(const Expr &e) { return e.kind == Expr::Kind::Paren ? unbracketed(e.args.at(0)) : e; }
+
+BinaryOp mirrored(BinaryOp op) {
+  switch (op) {
+  case BinaryOp::Lt: return BinaryOp::Gt;
+  case BinaryOp::Le: return BinaryOp::Ge;
+  case BinaryOp::Gt: return BinaryOp::Lt;
+  case BinaryOp::Ge: return BinaryOp::Le;
+  default: return op;
+  }
+}
+
+/// A comparison of a duration with a constant that the compilers can decide, and warn about
+/// (-Wtype-limits): timers are uint32_t, so `elapsed(P) >= 0ms` always holds, and a constant
+/// beyond UINT32_MAX ticks is never reached (timers saturate there). Such a comparison is written
+/// as its value; durations are read from timers and have no side effects to keep.
+std::optional<bool> settled(const Expr &e) {
+  if (!is_comparison(e.binary_op)) return std::nullopt;
+  const Expr *l = &unbracketed(e.args.at(0)), *r = &unbracketed(e.args.at(1));
+  BinaryOp op = e.binary_op;
+  if (l->kind == Expr::Kind::Ticks) {
+    std::swap(l, r);
+    op = mirrored(op);
+  }
+  if (r->kind != Expr::Kind::Ticks || l->kind == Expr::Kind::Ticks || l->type != model::Type::Duration)
+    return std::nullopt;
+  if (r->ticks == 0 && (op == BinaryOp::Ge || op == BinaryOp::Lt)) return op == BinaryOp::Ge;
+  if (r->ticks > 0xFFFFFFFFul) return op == BinaryOp::Lt || op == BinaryOp::Le || op == BinaryOp::Ne;
+  return std::nullopt;
+}
+
 Rendered binary(const Context &c, const Expr &e) {
+  if (auto value = settled(e))
+    return {*value ? "true /* always: timers count from 0 to UINT32_MAX */"
+                   : "false /* never: timers count from 0 to UINT32_MAX */"};
   const int prec = precedence(e.binary_op);
   Rendered l = render(c, e.args.at(0));
   Rendered r = render(c, e.args.at(1));

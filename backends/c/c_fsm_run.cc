@@ -61,6 +61,7 @@ private:
     w_.line("{} = true;", c_.field(c_.started));
     for (const auto &p : c_.chart.places)
       if (p.initial && has_code(p.entry)) {
+        w_.line("/* entry {} */", p.name);
         emit_statements(w_, c_, *p.entry);
         w_.line_back();
       }
@@ -80,7 +81,7 @@ private:
     if (!c_.has_timers) return;
     section("/* Count the ticks of the current state, if it has a timer */");
     for (int p = 0; p < static_cast<int>(c_.chart.places.size()); ++p)
-      if (c_.place(p).timed) w_.line("if ({0} && {1} < UINT_MAX) {{ {1}++; }}", in_state(p), c_.timer_of(p));
+      if (c_.place(p).timed) w_.line("if ({0} && {1} < UINT32_MAX) {{ {1}++; }}", in_state(p), c_.timer_of(p));
   }
 
   /// The state at the start of the tick, for exits, entries and hooks (hooks only in a hooks build).
@@ -126,11 +127,13 @@ private:
     const int n = static_cast<int>(c_.chart.places.size());
     for (int p = 0; p < n; ++p)
       if (c_.runs_exit(p)) {
+        w_.line("/* exit {} */", c_.place(p).name);
         w_.line("if ({} == {}) {{", c_.from, c_.place_const[static_cast<std::size_t>(p)]);
         block(*c_.place(p).exit);
       }
     for (int p = 0; p < n; ++p)
       if (c_.runs_entry(p) || c_.resets_timer(p)) {
+        w_.line("/* {} {} */", c_.runs_entry(p) ? "entry" : "timer of", c_.place(p).name);
         w_.line("if ({}) {{", in_state(p));
         std::string reset = c_.resets_timer(p) ? fmt::format("{} = 0;", c_.timer_of(p)) : "";
         block(c_.runs_entry(p) ? *c_.place(p).entry : std::vector<model::Stmt>{}, reset);

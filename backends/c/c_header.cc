@@ -55,7 +55,7 @@ void state_struct(CodeWriter &w, const Context &c) {
   }
   for (std::size_t p = 0; p < c.chart.places.size(); ++p)
     if (c.chart.places[p].timed)
-      rows.emplace_back(fmt::format("unsigned {};", c.timer_field[p]),
+      rows.emplace_back(fmt::format("uint32_t {};", c.timer_field[p]),
                         fmt::format("ticks {} has been active: elapsed({})", c.chart.places[p].name,
                                     c.chart.places[p].name));
   if (c.needs_started) rows.emplace_back(fmt::format("bool {};", c.started), "the first tick has run");

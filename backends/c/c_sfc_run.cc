@@ -86,7 +86,7 @@ private:
     section("/* Count the ticks of the active places that have a timer */");
     for (int p = 0; p < static_cast<int>(c_.chart.places.size()); ++p)
       if (c_.place(p).timed)
-        w_.line("if ({0} && {1} < UINT_MAX) {{ {1}++; }}", c_.av_of(p), c_.timer_of(p));
+        w_.line("if ({0} && {1} < UINT32_MAX) {{ {1}++; }}", c_.av_of(p), c_.timer_of(p));
   }
 
   /// Step 2: one block per transition, in declaration order. `&&` short-circuits, so the
@@ -132,11 +132,13 @@ private:
     const int n = static_cast<int>(c_.chart.places.size());
     for (int p = 0; p < n; ++p)
       if (c_.runs_exit(p)) {
+        w_.line("/* exit {} */", c_.place(p).name);
         w_.line("if ({}[{}] && !{}) {{", c_.before, c_.place_const[static_cast<std::size_t>(p)], c_.av_of(p));
         block(*c_.place(p).exit);
       }
     for (int p = 0; p < n; ++p)
       if (c_.runs_entry(p) || c_.resets_timer(p)) {
+        w_.line("/* {} {} */", c_.runs_entry(p) ? "entry" : "timer of", c_.place(p).name);
         w_.line("if (!{}[{}] && {}) {{", c_.before, c_.place_const[static_cast<std::size_t>(p)], c_.av_of(p));
         std::string reset = c_.resets_timer(p) ? fmt::format("{} = 0;", c_.timer_of(p)) : "";
         block(c_.runs_entry(p) ? *c_.place(p).entry : std::vector<model::Stmt>{}, reset);

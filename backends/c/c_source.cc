@@ -15,8 +15,7 @@ void includes(CodeWriter &w, const Context &c) {
   directive(w, "#include " + c_string_literal(c.header_file));
   // Standard headers only for what this engine uses.
   bool sfc_hooks_snapshot = !c.fsm && !c.needs_snapshot();
-  if (c.has_timers || c.needs_snapshot() || sfc_hooks_snapshot || c.has_post) w.blank();
-  if (c.has_timers) directive(w, "#include <limits.h>");
+  if (c.needs_snapshot() || sfc_hooks_snapshot || c.has_post) w.blank();
   if (!c.fsm && c.needs_snapshot()) directive(w, "#include <string.h>");
   if (sfc_hooks_snapshot) {
     directive(w, "#ifdef " + c.hooks_macro);

@@ -11,6 +11,7 @@
 #include "model.h"
 #include "validate.h"
 
+#include <catch2/catch.hpp>
 #include <fmt/format.h>
 
 #include <cstdlib>
@@ -348,7 +349,10 @@ inline std::string harness_source(const model::Model &m, const model::Chart &cha
   std::string s;
   s += fmt::format("#include \"{}\"\n\n#include <stdio.h>\n#include <stdlib.h>\n#include <string.h>\n\n", header);
   s += "static char script[1024]; /* this tick's line */\n\n";
-  s += "static double value_of(const char *name)\n{\n"
+  bool senses = false;
+  for (int fi : chart.functions) senses = senses || m.functions[static_cast<std::size_t>(fi)].result != Type::Void;
+  if (senses)
+    s += "static double value_of(const char *name)\n{\n"
        "    size_t n = strlen(name);\n"
        "    const char *p = script;\n"
        "    while ((p = strstr(p, name)) != NULL) {\n"
@@ -361,9 +365,7 @@ inline std::string harness_source(const model::Model &m, const model::Chart &cha
   s += "static const char *const place_names[] = {";
   for (const auto &p : chart.places) s += fmt::format("\"{}\", ", p.name);
   s += "NULL};\n";
-  s += "static const char *const transition_names[] = {";
-  for (const auto &t : chart.transitions) s += fmt::format("\"{}\", ", t.name);
-  s += "NULL};\n\n";
+  s += "\n";
   for (int fi : chart.functions) {
     const auto &f = m.functions[static_cast<std::size_t>(fi)];
     std::string params, format, args;
@@ -389,6 +391,9 @@ inline std::string harness_source(const model::Model &m, const model::Chart &cha
     }
   }
   s += fmt::format("#ifdef {}_HOOKS\n", X);
+  s += "static const char *const transition_names[] = {";
+  for (const auto &t : chart.transitions) s += fmt::format("\"{}\", ", t.name);
+  s += "NULL};\n\n";
   s += fmt::format("void {0}_activated({0} *m, int place, bool active)\n{{\n    (void)m;\n"
                    "    printf(\"hook %s %s\\n\", active ? \"gained\" : \"lost\", place_names[place]);\n}}\n\n", X);
   s += fmt::format("void {0}_enabled({0} *m, int transition)\n{{\n    (void)m;\n"
@@ -404,12 +409,49 @@ inline std::string harness_source(const model::Model &m, const model::Chart &cha
                      "        if (n > 1) printf(\" %s:%u\", place_names[p], n);\n    }}\n    printf(\"\\n\");\n", X);
   }
   s += "}\n\n";
-  s += fmt::format("int main(void)\n{{\n    {0} m;\n    int tick = 0;\n    {0}_init(&m);\n"
+  s += fmt::format("int main(void)\n{{\n    {0} m;\n    int tick = 0;\n"
+                   "    setvbuf(stdout, NULL, _IONBF, 0); /* the log survives a failed assert */\n"
+                   "    {0}_init(&m);\n"
                    "    while (fgets(script, sizeof script, stdin) != NULL) {{\n"
                    "        printf(\"tick %d\\n\", ++tick);\n"
                    "        {0}_run(&m);\n"
                    "        print_state(&m);\n    }}\n    return 0;\n}}\n", X);
   return s;
+}
+
+/// Writes the engine and the harness into a scratch directory, compiles them with every C
+/// compiler at kStrictFlags (plus `defines`), runs each on `script` and returns the log, which
+/// must be the same for every compiler. `exit_ok`: the run must exit with status 0.
+inline std::string compile_and_run(const std::string &test, const std::vector<OutputFile> &files,
+                                   const model::Model &m, const model::Chart &chart, const std::string &script,
+                                   const std::string &defines = "", bool exit_ok = true) {
+  REQUIRE(files.size() == 2);
+  fs::path dir = scratch_dir(test);
+  for (const auto &f : files) write_file(dir / base_name(f.path), f.contents);
+  write_file(dir / "harness.c", harness_source(m, chart, base_name(files[1].path)));
+  write_file(dir / "script.txt", script);
+  if (!have_tool("clang")) WARN("clang is not installed: the generated code is tested with gcc only");
+  std::string first;
+  bool have_first = false;
+  for (const auto &cc : c_compilers()) {
+    fs::path exe = dir / ("run-" + cc);
+    auto build = run_command(fmt::format("cd '{}' && {} {} {} harness.c {} -o '{}'", dir.string(), cc, kStrictFlags,
+                                         defines, base_name(files[0].path), exe.string()),
+                             dir / ("build-" + cc + ".log"));
+    INFO(cc << " " << defines << " in " << dir.string() << ":\n" << build.output);
+    REQUIRE(build.status == 0);
+    auto run = run_command(fmt::format("'{}' < '{}'", exe.string(), (dir / "script.txt").string()),
+                           dir / ("run-" + cc + ".log"));
+    if (exit_ok) REQUIRE(run.status == 0);
+    if (!exit_ok) REQUIRE(run.status != 0);
+    if (!have_first) {
+      first = run.output;
+      have_first = true;
+    } else if (exit_ok) {  // a failed assert's message differs between the C libraries' compilers
+      CHECK(run.output == first);
+    }
+  }
+  return first;
 }
 
 } // namespace cbt
