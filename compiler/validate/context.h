@@ -1,0 +1,64 @@
+// What every family of checks shares while one program is validated: the inputs, the model
+// being built, and the global symbol table across files.
+#pragma once
+
+#include "ast.h"
+#include "diagnostics.h"
+#include "model.h"
+#include "validate/names.h"
+
+#include <set>
+#include <string>
+#include <vector>
+
+namespace gfec::validation {
+
+struct ChartScope;
+
+/// Where a constant comes from, and how far its folding got (folding is lazy: a const may use
+/// one declared later, or in a file imported later).
+struct ConstSource {
+  enum class State { Pending, Busy, Done, Failed };
+  const ast::ValueDecl *decl = nullptr;
+  State state = State::Pending;
+};
+
+struct Context {
+  Context(const ast::Program &p, const SourceManager &s, Diagnostics &d, model::Model &m)
+      : program(p), sources(s), diag(d), model(m) {}
+
+  const ast::Program &program;
+  const SourceManager &sources;
+  Diagnostics &diag;
+  model::Model &model;
+
+  /// Interface functions, file-level constants and charts: generated C puts all three in its
+  /// one global namespace (a chart `X` becomes `X_init`, `struct X`, ...).
+  Namespace c_names;
+  /// Toolbox templates and plans: an actor names either, so they must be told apart.
+  Namespace plan_names;
+  Namespace interfaces;
+  Namespace toolboxes;
+
+  /// Parallel to the model tables: the declaration each element was lowered from.
+  std::vector<ConstSource> consts;
+  std::vector<bool> function_ok;  ///< false: its declaration has an error; calls stay silent
+  std::vector<const ast::Chart *> charts;
+  std::vector<const ast::Template *> templates;
+  std::vector<bool> template_ok;  ///< false: a parameter type is wrong; arguments stay unchecked
+  std::vector<const ast::Plan *> plans;
+
+  /// The chart being validated: its constants fold in its scope.
+  ChartScope *chart = nullptr;
+  /// Unknown names at file level, each reported once.
+  std::set<std::string> file_unknown;
+
+  bool in_main_file(const SourceRange &r) const {
+    return !program.files.empty() && program.files.front() && r.file == program.files.front()->id;
+  }
+};
+
+/// "'int'": a type as messages quote it.
+std::string quoted(model::Type t);
+
+} // namespace gfec::validation

@@ -1,0 +1,381 @@
+#include "validate/expr.h"
+
+#include "validate/fold.h"
+#include "validate/suggest.h"
+#include "validate/types.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace gfec::validation {
+
+namespace {
+
+using K = model::Expr::Kind;
+using model::Type;
+
+model::Expr make(K kind, Type type, SourceRange range) {
+  model::Expr e;
+  e.kind = kind;
+  e.type = type;
+  e.range = range;
+  return e;
+}
+
+/// Time needs a period: said once per chart, at the first place that needs it.
+void require_period(ExprScope &s, SourceRange at, const std::string &what) {
+  ChartScope &c = *s.chart;
+  if (c.out.period_ms > 0 || c.period_reported) return;
+  c.period_reported = true;
+  s.cx.diag.error(at, "missing-period", fmt::format("{} needs a period, but {} '{}' declares none", what,
+                                                    c.kind_word(), c.out.name))
+      .note(c.ast.name.range, "declare one in the chart, e.g. 'period 10ms;'");
+}
+
+/// The unknown names already reported where `s` stands.
+std::set<std::string> &seen(ExprScope &s) { return s.chart ? s.chart->unknown : s.cx.file_unknown; }
+
+std::optional<model::Expr> lower_duration(const ast::Expr &e, ExprScope &s) {
+  model::Expr d = make(K::Ticks, Type::Duration, e.range);
+  d.ms = e.duration_ms;
+  if (s.chart) {
+    require_period(s, e.range, fmt::format("duration '{}'", e.spelling));
+    d.ticks = to_ticks(d.ms, s.chart->out.period_ms);
+  }
+  return d;
+}
+
+std::optional<model::Expr> const_ref(int index, SourceRange at, ExprScope &s) {
+  if (!fold_const(s.cx, index)) return std::nullopt;
+  if (s.chart) s.chart->consts.insert(index);
+  model::Expr e = make(K::Const, s.cx.model.consts[index].type, at);
+  e.index = index;
+  return e;
+}
+
+/// A name that denotes something other than a value, used as one.
+std::nullopt_t not_a_value(ExprScope &s, const ast::Name &name, const Symbol &sym) {
+  auto &d = s.cx.diag.error(name.range, "type-mismatch", fmt::format("'{}' is {}, not a value", name.text, with_article(sym.kind)));
+  if (sym.kind == Sym::Function) d.note(sym.range, fmt::format("to call it, write '{}()'", name.text));
+  if (sym.kind == Sym::Place || sym.kind == Sym::State)
+    d.note(fmt::format("'elapsed({})' is the time it has been active", name.text));
+  return std::nullopt;
+}
+
+std::optional<model::Expr> lower_name(const ast::Expr &e, ExprScope &s) {
+  const ast::Name &name = e.name;
+  if (name.text.empty()) return std::nullopt;
+  if (s.chart) {
+    if (const Symbol *sym = s.chart->names.find(name.text)) {
+      if (sym->kind == Sym::Const) return const_ref(sym->index, e.range, s);
+      if (sym->kind != Sym::Var) return not_a_value(s, name, *sym);
+      if (s.constant) {
+        s.cx.diag.error(name.range, "not-constant",
+                        fmt::format("a constant expression cannot read variable '{}'", name.text));
+        return std::nullopt;
+      }
+      if (sym->index < 0) return std::nullopt;  // its declaration has an error
+      model::Expr v = make(K::Var, s.chart->out.vars[sym->index].type, e.range);
+      v.index = sym->index;
+      return v;
+    }
+  }
+  if (const Symbol *sym = s.cx.c_names.find(name.text)) {
+    if (sym->kind == Sym::Const) return const_ref(sym->index, e.range, s);
+    return not_a_value(s, name, *sym);
+  }
+  std::vector<const Symbol *> candidates;
+  if (s.chart) candidates = s.chart->names.of({Sym::Var, Sym::Const});
+  for (const Symbol *c : s.cx.c_names.of({Sym::Const})) candidates.push_back(c);
+  report_unknown(s.cx.diag, seen(s), name, "name", candidates);
+  return std::nullopt;
+}
+
+std::optional<model::Expr> lower_elapsed(const ast::Expr &e, ExprScope &s, bool statement) {
+  Diagnostics &diag = s.cx.diag;
+  if (!s.chart) {
+    diag.error(e.range, "elapsed", "'elapsed' can only be used inside an sfc or fsm");
+    return std::nullopt;
+  }
+  if (s.constant) {
+    diag.error(e.range, "not-constant", "a constant expression cannot read 'elapsed()'");
+    return std::nullopt;
+  }
+  if (e.args.size() != 1 || !e.args[0] || e.args[0]->kind != ast::Expr::Kind::Name) {
+    diag.error(e.range, "elapsed", fmt::format("'elapsed' takes one argument: the name of a {}", s.chart->place_word()));
+    return std::nullopt;
+  }
+  int place = resolve_place(*s.chart, s.cx, e.args[0]->name);
+  if (place < 0) return std::nullopt;
+  require_period(s, e.range, fmt::format("'elapsed({})'", e.args[0]->name.text));
+  s.chart->out.places[place].timed = true;
+  if (statement) {
+    diag.error(e.range, "type-mismatch", "'elapsed()' as a statement has no effect");
+    return std::nullopt;
+  }
+  model::Expr x = make(K::Elapsed, Type::Duration, e.range);
+  x.index = place;
+  return x;
+}
+
+/// Checks the lowered arguments of a call of `f` against its prototype.
+bool check_arguments(const ast::Expr &call, const model::Function &f, const std::vector<std::optional<model::Expr>> &args,
+                     Diagnostics &diag) {
+  if (args.size() != f.params.size()) {
+    diag.error(call.range, "argument-count",
+               fmt::format("too {} arguments to function '{}' (expected {}, have {})",
+                           args.size() > f.params.size() ? "many" : "few", f.name, f.params.size(), args.size()))
+        .note(f.range, fmt::format("'{}' declared here", f.name));
+    return false;
+  }
+  bool ok = true;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    if (!args[i]) {
+      ok = false;
+      continue;
+    }
+    Type want = f.params[i].type;
+    if (assignable(want, args[i]->type)) continue;
+    diag.error(args[i]->range, "type-mismatch",
+               fmt::format("incompatible type for argument {} of '{}': expected {}, have {}", i + 1, f.name,
+                           quoted(want), quoted(args[i]->type)))
+        .note(f.range, fmt::format("'{}' declared here", f.name));
+    ok = false;
+  }
+  return ok;
+}
+
+/// The note every misuse of a duration gets: durations are for timers only.
+void duration_note(Diagnostic &d, Type a, Type b) {
+  if (a == Type::Duration || b == Type::Duration)
+    d.note("a duration can only be compared with another duration, as in 'elapsed(P) >= 500ms'");
+}
+
+std::optional<model::Expr> lower_unary(const ast::Expr &e, ExprScope &s) {
+  if (e.args.size() != 1) return std::nullopt;
+  auto operand = lower_expr(e.args[0].get(), s);
+  if (!operand) return std::nullopt;
+  auto type = unary_type(e.unary_op, operand->type);
+  if (!type) {
+    auto &d = s.cx.diag.error(e.range, "type-mismatch", fmt::format("invalid operand to unary '{}' (have {})",
+                                                                     spelling(e.unary_op), quoted(operand->type)));
+    duration_note(d, operand->type, operand->type);
+    return std::nullopt;
+  }
+  model::Expr x = make(K::Unary, *type, e.range);
+  x.unary_op = e.unary_op;
+  x.args.push_back(std::move(*operand));
+  return x;
+}
+
+std::optional<model::Expr> lower_binary(const ast::Expr &e, ExprScope &s) {
+  if (e.args.size() != 2) return std::nullopt;
+  auto a = lower_expr(e.args[0].get(), s);
+  auto b = lower_expr(e.args[1].get(), s);
+  if (!a || !b) return std::nullopt;
+  auto type = binary_type(e.binary_op, a->type, b->type);
+  if (!type) {
+    auto &d = s.cx.diag.error(e.range, "type-mismatch",
+                              fmt::format("invalid operands to binary '{}' (have {} and {})", spelling(e.binary_op),
+                                          quoted(a->type), quoted(b->type)));
+    duration_note(d, a->type, b->type);
+    return std::nullopt;
+  }
+  model::Expr x = make(K::Binary, *type, e.range);
+  x.binary_op = e.binary_op;
+  x.args.push_back(std::move(*a));
+  x.args.push_back(std::move(*b));
+  return x;
+}
+
+std::optional<model::Stmt> lower_assign(const ast::Stmt &st, ExprScope &s) {
+  Diagnostics &diag = s.cx.diag;
+  auto value = lower_expr(st.value.get(), s);  // first: its errors are independent of the target's
+  const ast::Name &target = st.target;
+  if (target.text.empty() || !s.chart) return std::nullopt;
+  const Symbol *sym = s.chart->names.find(target.text);
+  if (!sym) sym = s.cx.c_names.find(target.text);
+  if (!sym) {
+    report_unknown(s.cx.diag, seen(s), target, "variable", s.chart->names.of({Sym::Var}));
+    return std::nullopt;
+  }
+  if (sym->kind != Sym::Var) {
+    diag.error(target.range, "not-assignable", fmt::format("cannot assign to {} '{}'", describe(sym->kind), target.text))
+        .note(sym->range, fmt::format("'{}' declared here; only a 'var' can be assigned", target.text));
+    return std::nullopt;
+  }
+  if (sym->index < 0) return std::nullopt;
+  Type type = s.chart->out.vars[sym->index].type;
+  if (st.assign_op != AssignOp::Set && !model::is_numeric(type)) {
+    diag.error(target.range, "type-mismatch", fmt::format("operator '{}' needs a numeric variable; '{}' has type {}",
+                                                          spelling(st.assign_op), target.text, quoted(type)));
+    return std::nullopt;
+  }
+  if (!value) return std::nullopt;
+  if (!assignable(type, value->type)) {
+    auto &d = diag.error(value->range, "type-mismatch",
+                         fmt::format("incompatible types when assigning to '{}' of type {} from type {}", target.text,
+                                     quoted(type), quoted(value->type)));
+    duration_note(d, value->type, value->type);
+    return std::nullopt;
+  }
+  model::Stmt out;
+  out.kind = model::Stmt::Kind::Assign;
+  out.range = st.range;
+  out.var = sym->index;
+  out.op = st.assign_op;
+  out.value = std::move(*value);
+  return out;
+}
+
+} // namespace
+
+unsigned long to_ticks(double ms, double period_ms) {
+  if (period_ms <= 0 || ms <= 0) return 0;
+  // Durations are read as decimals (0.1s is 100.00000000000001 ms): a hair under a whole tick
+  // is that tick, not the next one.
+  return static_cast<unsigned long>(std::ceil(ms / period_ms - 1e-9));
+}
+
+void report_unknown(Diagnostics &diag, std::set<std::string> &seen, const ast::Name &name, const char *what,
+                    const std::vector<const Symbol *> &candidates) {
+  if (!seen.insert(std::string(what) + " " + name.text).second) return;
+  auto &d = diag.error(name.range, "unknown-name", fmt::format("unknown {} '{}'", what, name.text));
+  suggest(d, name.text, candidates);
+}
+
+int resolve_place(ChartScope &chart, Context &cx, const ast::Name &name) {
+  if (name.text.empty()) return -1;
+  const Symbol *sym = chart.names.find(name.text);
+  if (sym && (sym->kind == Sym::Place || sym->kind == Sym::State)) return sym->index;
+  if (sym) {
+    cx.diag.error(name.range, "type-mismatch",
+                  fmt::format("'{}' is {}, not a {}", name.text, with_article(sym->kind), chart.place_word()))
+        .note(sym->range, fmt::format("'{}' declared here", name.text));
+    return -1;
+  }
+  report_unknown(cx.diag, chart.unknown, name, chart.place_word(), chart.names.of({Sym::Place, Sym::State}));
+  return -1;
+}
+
+std::optional<model::Expr> lower_expr(const ast::Expr *e, ExprScope &s) {
+  if (!e) return std::nullopt;  // the parser reported what is missing
+  switch (e->kind) {
+  case ast::Expr::Kind::Bool: {
+    model::Expr x = make(K::Bool, Type::Bool, e->range);
+    x.bool_value = e->bool_value;
+    return x;
+  }
+  case ast::Expr::Kind::Int:
+  case ast::Expr::Kind::Float:
+  case ast::Expr::Kind::String: {
+    // A floating literal is a double, as in C.
+    bool is_int = e->kind == ast::Expr::Kind::Int, is_float = e->kind == ast::Expr::Kind::Float;
+    model::Expr x = make(is_int ? K::Int : is_float ? K::Float : K::String,
+                         is_int ? Type::Int : is_float ? Type::Double : Type::String, e->range);
+    x.text = e->text;
+    return x;
+  }
+  case ast::Expr::Kind::Duration: return lower_duration(*e, s);
+  case ast::Expr::Kind::Name: return lower_name(*e, s);
+  case ast::Expr::Kind::Call: return lower_call(*e, s, false);
+  case ast::Expr::Kind::Unary: return lower_unary(*e, s);
+  case ast::Expr::Kind::Binary: return lower_binary(*e, s);
+  case ast::Expr::Kind::Paren: {
+    if (e->args.size() != 1) return std::nullopt;
+    auto inner = lower_expr(e->args[0].get(), s);
+    if (!inner) return std::nullopt;
+    model::Expr x = make(K::Paren, inner->type, e->range);
+    x.args.push_back(std::move(*inner));
+    return x;
+  }
+  }
+  return std::nullopt;
+}
+
+std::optional<model::Expr> lower_call(const ast::Expr &e, ExprScope &s, bool statement) {
+  const ast::Name &name = e.name;
+  if (name.text == "elapsed") return lower_elapsed(e, s, statement);
+  std::vector<std::optional<model::Expr>> args;
+  for (const auto &a : e.args) args.push_back(lower_expr(a.get(), s));
+  if (name.text.empty()) return std::nullopt;
+  if (s.constant) {
+    s.cx.diag.error(e.range, "not-constant", fmt::format("a constant expression cannot call '{}'", name.text));
+    return std::nullopt;
+  }
+  const Symbol *sym = s.cx.c_names.find(name.text);
+  if (!sym) {
+    report_unknown(s.cx.diag, seen(s), name, "function", s.cx.c_names.of({Sym::Function}));
+    return std::nullopt;
+  }
+  if (sym->kind != Sym::Function) {
+    s.cx.diag.error(name.range, "type-mismatch", fmt::format("called object '{}' is {}, not a function", name.text,
+                                                             with_article(sym->kind)))
+        .note(sym->range, fmt::format("'{}' declared here", name.text));
+    return std::nullopt;
+  }
+  if (!s.cx.function_ok[sym->index]) return std::nullopt;
+  const model::Function &f = s.cx.model.functions[sym->index];
+  if (!check_arguments(e, f, args, s.cx.diag)) return std::nullopt;
+  if (!statement && f.result == Type::Void) {
+    s.cx.diag.error(e.range, "type-mismatch", fmt::format("'{}' returns void; it cannot be used as a value", f.name))
+        .note(f.range, fmt::format("'{}' declared here", f.name));
+    return std::nullopt;
+  }
+  if (s.chart) s.chart->functions.insert(sym->index);
+  model::Expr x = make(K::Call, f.result, e.range);
+  x.index = sym->index;
+  for (auto &a : args) x.args.push_back(std::move(*a));
+  return x;
+}
+
+std::optional<model::Expr> lower_condition(const ast::Expr *e, ExprScope &s, const char *what) {
+  auto x = lower_expr(e, s);
+  if (!x || x->type == Type::Bool) return x;
+  auto &d = s.cx.diag.error(x->range, "type-mismatch", fmt::format("{} must be bool, not {}", what, quoted(x->type)));
+  duration_note(d, x->type, x->type);
+  return std::nullopt;
+}
+
+std::optional<model::Expr> lower_initializer(const ast::Expr *e, ExprScope &s, Type type, const std::string &name) {
+  auto x = lower_expr(e, s);
+  if (!x || assignable(type, x->type)) return x;
+  auto &d = s.cx.diag.error(x->range, "type-mismatch", fmt::format("cannot initialize '{}' of type {} with a value of type {}",
+                                                                    name, quoted(type), quoted(x->type)));
+  duration_note(d, x->type, x->type);
+  return std::nullopt;
+}
+
+std::vector<model::Stmt> lower_block(const ast::Block &b, ExprScope &s) {
+  std::vector<model::Stmt> out;
+  for (const ast::Stmt &st : b) {
+    switch (st.kind) {
+    case ast::Stmt::Kind::Call:
+      if (!st.call || st.call->kind != ast::Expr::Kind::Call) break;
+      if (auto call = lower_call(*st.call, s, true)) {
+        model::Stmt m;
+        m.kind = model::Stmt::Kind::Call;
+        m.range = st.range;
+        m.call = std::move(*call);
+        out.push_back(std::move(m));
+      }
+      break;
+    case ast::Stmt::Kind::Assign:
+      if (auto m = lower_assign(st, s)) out.push_back(std::move(*m));
+      break;
+    case ast::Stmt::Kind::Verbatim: {
+      s.cx.diag.warning(Warning::Verbatim, st.range, "verbatim code is copied unchecked: gfec cannot check it");
+      model::Stmt m;
+      m.kind = model::Stmt::Kind::Verbatim;
+      m.range = st.range;
+      m.verbatim = st.verbatim;
+      out.push_back(std::move(m));
+      break;
+    }
+    }
+  }
+  return out;
+}
+
+} // namespace gfec::validation

@@ -1,0 +1,67 @@
+// Chart expressions and statements (§4): name resolution, typing, lowering to the model.
+// Erroneous sub-expressions lower to nothing, which silences every check above them: each
+// mistake is reported once, where it is.
+#pragma once
+
+#include "validate/context.h"
+
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace gfec::validation {
+
+/// A chart's own names, and what its expressions use, while the chart is validated.
+struct ChartScope {
+  ChartScope(const ast::Chart &a, model::Chart &o, int i) : ast(a), out(o), index(i) {}
+
+  const ast::Chart &ast;
+  model::Chart &out;  ///< being filled in; its period is set before any expression is lowered
+  int index;
+  /// Places (or states), named transitions, vars and the chart's constants.
+  Namespace names;
+  bool period_reported = false;  ///< "needs a period" is said once per chart
+  std::set<std::string> unknown;  ///< unknown names already reported, each once per chart
+  std::set<int> functions;        ///< interface functions called
+  std::set<int> consts;           ///< constants read
+
+  bool is_fsm() const { return ast.kind == ast::Chart::Kind::Fsm; }
+  const char *place_word() const { return is_fsm() ? "state" : "place"; }
+  const char *kind_word() const { return is_fsm() ? "fsm" : "sfc"; }
+};
+
+/// Where an expression stands: decides what its names may mean.
+struct ExprScope {
+  Context &cx;
+  ChartScope *chart = nullptr;  ///< null at file level
+  bool constant = false;        ///< an initialiser: no calls, no vars, no timers
+};
+
+std::optional<model::Expr> lower_expr(const ast::Expr *e, ExprScope &s);
+
+/// A call of an interface function (or `elapsed`). As a `statement` its result is discarded,
+/// so a void function is fine there and only there.
+std::optional<model::Expr> lower_call(const ast::Expr &e, ExprScope &s, bool statement);
+
+/// A `when` condition or a `post`condition (`what` says which, for the message): must be bool.
+std::optional<model::Expr> lower_condition(const ast::Expr *e, ExprScope &s, const char *what);
+
+/// The initialiser of `name`, a value of type `type`.
+std::optional<model::Expr> lower_initializer(const ast::Expr *e, ExprScope &s, model::Type type,
+                                             const std::string &name);
+
+std::vector<model::Stmt> lower_block(const ast::Block &b, ExprScope &s);
+
+/// The index of place (or state) `name` of the chart, or -1 after reporting why not.
+int resolve_place(ChartScope &chart, Context &cx, const ast::Name &name);
+
+/// Reports `unknown <what> 'name'` with a did-you-mean, unless `seen` (the names reported in
+/// this chart, plan or at file level) says it was already.
+void report_unknown(Diagnostics &diag, std::set<std::string> &seen, const ast::Name &name, const char *what,
+                    const std::vector<const Symbol *> &candidates);
+
+/// `ms` in whole ticks of `period_ms`, rounded up (§5.3).
+unsigned long to_ticks(double ms, double period_ms);
+
+} // namespace gfec::validation

@@ -1,0 +1,45 @@
+// The passes of the validator, one family of checks per file; validate.cc runs them in order.
+#pragma once
+
+#include "validate/context.h"
+#include "validate/expr.h"
+
+#include <cstddef>
+
+namespace gfec::validation {
+
+/// symbols.cc: declares every top-level name of every file (so any file may use any other's),
+/// file by file in program order, each file's declarations in textual order.
+void collect_symbols(Context &cx);
+
+/// validate_interface.cc: interface functions (their prototypes are checked here) and
+/// file-level constants (folded later, on first use or by fold_file_consts).
+void declare_interface(Context &cx, const ast::Interface &iface);
+void declare_file_const(Context &cx, const ast::ValueDecl &decl);
+void fold_file_consts(Context &cx);
+
+/// validate_chart.cc: a chart's name now; its body later, once every global name is known.
+void declare_chart(Context &cx, const ast::Chart &chart);
+void validate_chart(Context &cx, int index);
+
+/// validate_sfc.cc and validate_fsm.cc: the rules of each kind, run by validate_chart once the
+/// chart's names, bodies and conditions are lowered. `errors_before` is the error count when
+/// the chart's validation began: warnings are given only for charts without errors, since an
+/// error (an unknown place, say) would make them guesses.
+void check_sfc(Context &cx, ChartScope &chart, std::size_t errors_before);
+void check_fsm(Context &cx, ChartScope &chart, std::size_t errors_before);
+
+/// validate_toolbox.cc: a toolbox and its templates, checked and lowered at once (they use no
+/// other name).
+void declare_toolbox(Context &cx, const ast::Toolbox &toolbox);
+
+/// validate_plan.cc
+void declare_plan(Context &cx, const ast::Plan &plan);
+void validate_plan(Context &cx, int index);
+/// Reports every plan that contains itself, directly or through sub-plans.
+void check_plan_recursion(Context &cx);
+
+/// Whether a condition is constant, and its value (no condition is `when true`).
+std::optional<bool> constant_condition(const std::optional<model::Expr> &condition, const model::Model &model);
+
+} // namespace gfec::validation

@@ -1,0 +1,37 @@
+// Constant evaluation: folds constants and config initialisers to literals, and tells the
+// checks which conditions are constant (a transition `when false` is dead).
+#pragma once
+
+#include "model.h"
+#include "validate/context.h"
+
+#include <optional>
+#include <string>
+
+namespace gfec::validation {
+
+/// A compile-time value; `type` says which member holds it (Int in `i`, Float/Double in `f`).
+struct Value {
+  model::Type type = model::Type::Int;
+  bool b = false;
+  long long i = 0;
+  double f = 0;
+  std::string s;
+};
+
+/// Evaluates `e` with C's semantics (int arithmetic in 32 bits, && and || short-circuit). Not
+/// constant (a call, a var, a timer...) gives nothing. Division by zero and int overflow are
+/// reported when `diag` is given, silently give nothing otherwise.
+std::optional<Value> evaluate(const model::Expr &e, const model::Model &model, Diagnostics *diag);
+
+/// The literal for `v` as a value of type `to` (numbers convert as C converts them; a number
+/// becomes a string as it would be printed). `spelling`, when given, is kept for a literal the
+/// user wrote, so generated code shows `0.6` rather than `0.59999999999999998`.
+std::optional<model::Expr> to_literal(const Value &v, model::Type to, SourceRange range, Diagnostics &diag,
+                                      const model::Expr *spelling = nullptr);
+
+/// Folds constant `index` of the model (on first use, in its own scope) and returns its
+/// literal, or null if its declaration has an error (reported once, where it is).
+const model::Expr *fold_const(Context &cx, int index);
+
+} // namespace gfec::validation

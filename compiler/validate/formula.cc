@@ -1,0 +1,154 @@
+#include "validate/formula.h"
+
+#include "validate/expr.h"
+#include "validate/fold.h"
+#include "validate/types.h"
+
+#include <fmt/format.h>
+
+namespace gfec::validation {
+
+namespace {
+
+using K = model::Expr::Kind;
+using model::Type;
+
+model::Expr make(K kind, Type type, SourceRange range) {
+  model::Expr e;
+  e.kind = kind;
+  e.type = type;
+  e.range = range;
+  return e;
+}
+
+std::nullopt_t not_allowed(Context &cx, SourceRange at, const std::string &what) {
+  cx.diag.error(at, "formula", fmt::format("{} cannot be used in a plan argument", what))
+      .note("a plan argument is a formula over config entries and constants: + - * / and brackets");
+  return std::nullopt;
+}
+
+std::optional<model::Expr> lower_name(const ast::Expr &e, Context &cx, PlanScope &s, bool constant) {
+  const ast::Name &name = e.name;
+  if (name.text.empty()) return std::nullopt;
+  if (const Symbol *sym = s.names.find(name.text)) {
+    if (sym->kind != Sym::ConfigEntry) {
+      cx.diag.error(name.range, "type-mismatch", fmt::format("'{}' is {}, not a config entry", name.text, with_article(sym->kind)))
+          .note(sym->range, fmt::format("'{}' declared here", name.text));
+      return std::nullopt;
+    }
+    if (constant) {
+      cx.diag.error(name.range, "not-constant", fmt::format("a config initializer cannot read config entry '{}'", name.text));
+      return std::nullopt;
+    }
+    if (sym->index < 0) return std::nullopt;  // its declaration has an error
+    model::Expr x = make(K::Config, s.out.config[sym->index].type, e.range);
+    x.index = sym->index;
+    return x;
+  }
+  if (const Symbol *sym = cx.c_names.find(name.text); sym && sym->kind == Sym::Const) {
+    const model::Expr *value = fold_const(cx, sym->index);
+    if (!value) return std::nullopt;
+    model::Expr x = *value;
+    x.range = e.range;
+    return x;
+  }
+  report_unknown(cx.diag, s.unknown, name, "config entry", s.names.of({Sym::ConfigEntry}));
+  return std::nullopt;
+}
+
+std::optional<Type> formula_type(BinaryOp op, Type a, Type b) {
+  bool numbers = model::is_numeric(a) && model::is_numeric(b);
+  if (numbers) return promote(a, b);
+  // `+` joins strings, converting a number on either side to text.
+  bool text = (a == Type::String && (b == Type::String || model::is_numeric(b))) ||
+              (b == Type::String && model::is_numeric(a));
+  if (op == BinaryOp::Add && text) return Type::String;
+  return std::nullopt;
+}
+
+std::optional<model::Expr> lower_binary(const ast::Expr &e, Context &cx, PlanScope &s, bool constant) {
+  BinaryOp op = e.binary_op;
+  if (op != BinaryOp::Add && op != BinaryOp::Sub && op != BinaryOp::Mul && op != BinaryOp::Div)
+    return not_allowed(cx, e.range, fmt::format("operator '{}'", spelling(op)));
+  if (e.args.size() != 2) return std::nullopt;
+  auto a = lower_formula(e.args[0].get(), cx, s, constant);
+  auto b = lower_formula(e.args[1].get(), cx, s, constant);
+  if (!a || !b) return std::nullopt;
+  auto type = formula_type(op, a->type, b->type);
+  if (!type) {
+    cx.diag.error(e.range, "type-mismatch", fmt::format("invalid operands to binary '{}' (have {} and {})", spelling(op),
+                                                        quoted(a->type), quoted(b->type)));
+    return std::nullopt;
+  }
+  model::Expr x = make(K::Binary, *type, e.range);
+  x.binary_op = op;
+  x.args.push_back(std::move(*a));
+  x.args.push_back(std::move(*b));
+  return x;
+}
+
+std::optional<model::Expr> lower_unary(const ast::Expr &e, Context &cx, PlanScope &s, bool constant) {
+  if (e.unary_op != UnaryOp::Neg) return not_allowed(cx, e.range, "operator '!'");
+  if (e.args.size() != 1) return std::nullopt;
+  auto operand = lower_formula(e.args[0].get(), cx, s, constant);
+  if (!operand) return std::nullopt;
+  if (!model::is_numeric(operand->type)) {
+    cx.diag.error(e.range, "type-mismatch", fmt::format("invalid operand to unary '-' (have {})", quoted(operand->type)));
+    return std::nullopt;
+  }
+  model::Expr x = make(K::Unary, operand->type, e.range);
+  x.unary_op = UnaryOp::Neg;
+  x.args.push_back(std::move(*operand));
+  return x;
+}
+
+} // namespace
+
+bool convertible(Type to, Type from) {
+  bool number_or_text_to = model::is_numeric(to) || to == Type::String;
+  bool number_or_text_from = model::is_numeric(from) || from == Type::String;
+  if (number_or_text_to && number_or_text_from) return true;
+  return to == from && (to == Type::Bool || to == Type::Object);
+}
+
+std::optional<model::Expr> lower_formula(const ast::Expr *e, Context &cx, PlanScope &s, bool constant) {
+  if (!e) return std::nullopt;
+  switch (e->kind) {
+  case ast::Expr::Kind::Bool: {
+    model::Expr x = make(K::Bool, Type::Bool, e->range);
+    x.bool_value = e->bool_value;
+    return x;
+  }
+  case ast::Expr::Kind::Int: {
+    model::Expr x = make(K::Int, Type::Int, e->range);
+    x.text = e->text;
+    return x;
+  }
+  case ast::Expr::Kind::Float: {
+    model::Expr x = make(K::Float, Type::Double, e->range);
+    x.text = e->text;
+    return x;
+  }
+  case ast::Expr::Kind::String: {
+    model::Expr x = make(K::String, Type::String, e->range);
+    x.text = e->text;
+    return x;
+  }
+  case ast::Expr::Kind::Duration: return not_allowed(cx, e->range, "a duration");
+  case ast::Expr::Kind::Call: return not_allowed(cx, e->range, "a function call");
+  case ast::Expr::Kind::Name: return lower_name(*e, cx, s, constant);
+  case ast::Expr::Kind::Unary: return lower_unary(*e, cx, s, constant);
+  case ast::Expr::Kind::Binary: return lower_binary(*e, cx, s, constant);
+  case ast::Expr::Kind::Paren: {
+    if (e->args.size() != 1) return std::nullopt;
+    auto inner = lower_formula(e->args[0].get(), cx, s, constant);
+    if (!inner) return std::nullopt;
+    model::Expr x = make(K::Paren, inner->type, e->range);
+    x.args.push_back(std::move(*inner));
+    return x;
+  }
+  }
+  return std::nullopt;
+}
+
+} // namespace gfec::validation

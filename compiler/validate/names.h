@@ -1,0 +1,55 @@
+// Namespaces of declared names: duplicate detection, lookup, and the names gfec may not use
+// because generated C or C++ would not compile.
+#pragma once
+
+#include "ast.h"
+#include "diagnostics.h"
+
+#include <initializer_list>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace gfec::validation {
+
+/// What a name denotes; one enum for every namespace so messages can describe any clash.
+enum class Sym {
+  Interface, Function, Param, Const, Chart, Place, State, Transition, Var,
+  Toolbox, Template, TemplateParam, ResultState, Event, Plan, ConfigEntry, Actor, Supervisor,
+};
+
+/// "function", "place", "config entry", ... as a message says it.
+const char *describe(Sym kind);
+/// "a place", "an actor": the kind with its article.
+std::string with_article(Sym kind);
+
+struct Symbol {
+  Sym kind;
+  int index = -1;  ///< into the model table the kind belongs to
+  std::string name;
+  SourceRange range;
+};
+
+/// One namespace: names in declaration order, the first declaration winning lookups.
+class Namespace {
+public:
+  /// Declares `name`. A clash is reported (with a note at the first declaration) and returns
+  /// false; so does an empty name, which only a recovered syntax error produces.
+  bool declare(const ast::Name &name, Sym kind, int index, Diagnostics &diag);
+  const Symbol *find(const std::string &name) const;
+  /// The symbols of the given kinds in declaration order: did-you-mean candidates.
+  std::vector<const Symbol *> of(std::initializer_list<Sym> kinds) const;
+
+private:
+  std::map<std::string, std::size_t> by_name_;
+  std::vector<Symbol> symbols_;
+};
+
+/// Reports (check `reserved-name`) a name that is a keyword of C99/C11 or C++17 and returns
+/// false; generated code names things after the user's names.
+bool check_reserved(const ast::Name &name, Sym kind, Diagnostics &diag);
+
+/// Reports a clash with `previous` as `duplicate-name`: the same message `declare` gives.
+void report_clash(const ast::Name &name, Sym kind, const Symbol &previous, Diagnostics &diag);
+
+} // namespace gfec::validation

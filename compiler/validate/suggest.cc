@@ -1,0 +1,47 @@
+#include "validate/suggest.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <numeric>
+
+namespace gfec::validation {
+
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  // One row of the classic table is enough.
+  std::vector<std::size_t> row(b.size() + 1);
+  std::iota(row.begin(), row.end(), 0);
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+const Symbol *closest(std::string_view name, const std::vector<const Symbol *> &candidates) {
+  // A third of the name may be wrong (at least one letter): close enough to be a typo, far
+  // enough apart that short unrelated names are not offered.
+  std::size_t limit = std::max<std::size_t>(1, name.size() / 3);
+  const Symbol *best = nullptr;
+  std::size_t best_distance = limit + 1;
+  for (const Symbol *c : candidates) {
+    if (c->name == name) continue;
+    std::size_t d = edit_distance(name, c->name);
+    if (d < best_distance && d < c->name.size()) {
+      best = c;
+      best_distance = d;
+    }
+  }
+  return best;
+}
+
+void suggest(Diagnostic &d, std::string_view name, const std::vector<const Symbol *> &candidates) {
+  if (const Symbol *s = closest(name, candidates)) d.note(s->range, fmt::format("did you mean '{}'?", s->name));
+}
+
+} // namespace gfec::validation

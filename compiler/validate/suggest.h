@@ -1,0 +1,22 @@
+// Did-you-mean: every unknown name is checked against the names that could have been meant.
+#pragma once
+
+#include "diagnostics.h"
+#include "validate/names.h"
+
+#include <string_view>
+#include <vector>
+
+namespace gfec::validation {
+
+/// Levenshtein distance (insert, delete, substitute; each costs 1).
+std::size_t edit_distance(std::string_view a, std::string_view b);
+
+/// The candidate a typo most likely meant, or null when none is close enough. Ties go to the
+/// earlier declaration, so the note is deterministic.
+const Symbol *closest(std::string_view name, const std::vector<const Symbol *> &candidates);
+
+/// Adds the note "did you mean 'X'?" (at X's declaration) when a close candidate exists.
+void suggest(Diagnostic &d, std::string_view name, const std::vector<const Symbol *> &candidates);
+
+} // namespace gfec::validation

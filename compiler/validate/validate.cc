@@ -1,0 +1,41 @@
+// The validator's entry point: the passes in order. Names first (every file's), then each
+// chart and plan against them, then what needs every plan lowered.
+#include "validate.h"
+
+#include "validate/families.h"
+
+namespace gfec {
+
+namespace {
+
+/// File-level %{ %} blocks: dependencies first (imports are reached after the file importing
+/// them, so reverse program order), the main file last.
+void collect_verbatims(validation::Context &cx) {
+  const auto &files = cx.program.files;
+  for (auto it = files.rbegin(); it != files.rend(); ++it) {
+    if (!*it) continue;
+    for (const ast::Verbatim &v : (*it)->verbatims) {
+      cx.diag.warning(Warning::Verbatim, v.range, "verbatim code is copied unchecked: gfec cannot check it");
+      cx.model.verbatims.push_back({v.text, v.range});
+    }
+  }
+}
+
+} // namespace
+
+model::Model validate(const ast::Program &program, const SourceManager &sources, Diagnostics &diag) {
+  model::Model model;
+  model.sources = &sources;
+  if (!program.files.empty() && program.files.front()) model.main_file = program.files.front()->id;
+  validation::Context cx(program, sources, diag, model);
+
+  validation::collect_symbols(cx);
+  validation::fold_file_consts(cx);
+  for (std::size_t i = 0; i < model.charts.size(); ++i) validation::validate_chart(cx, static_cast<int>(i));
+  for (std::size_t i = 0; i < model.plans.size(); ++i) validation::validate_plan(cx, static_cast<int>(i));
+  validation::check_plan_recursion(cx);
+  collect_verbatims(cx);
+  return model;
+}
+
+} // namespace gfec

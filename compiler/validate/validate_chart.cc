@@ -1,0 +1,196 @@
+// What sfc and fsm share (§4, §5, §7): the chart's namespace, its period, vars and constants,
+// place bodies and transition conditions. The rules of each kind follow in validate_sfc.cc and
+// validate_fsm.cc.
+#include "validate/families.h"
+#include "validate/fold.h"
+#include "validate/types.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <functional>
+
+namespace gfec::validation {
+
+namespace {
+
+/// Functions every engine defines as `<Chart>_<suffix>`, and its place-count constant: a place
+/// with one of these names would give its enum constant the same name.
+const char *const kEngineNames[] = {"init", "run", "activation", "state", "status", "PLACE_COUNT"};
+
+void set_period(Context &cx, ChartScope &s) {
+  const auto &periods = s.ast.periods;
+  for (std::size_t i = 0; i < periods.size(); ++i) {
+    const ast::Period &p = periods[i];
+    if (i > 0) {
+      cx.diag.error(p.range, "period", fmt::format("second 'period' in {} '{}'", s.kind_word(), s.out.name))
+          .note(periods[0].range, "the first one is here");
+    } else if (p.ms <= 0) {
+      cx.diag.error(p.range, "period", "the period must be positive");
+    } else {
+      s.out.period_ms = p.ms;
+    }
+  }
+  // A bad period was reported: "needs a period" would only repeat it.
+  if (!periods.empty() && s.out.period_ms <= 0) s.period_reported = true;
+}
+
+/// Places become enum constants `<Chart>_<Place>`: they must not clash with the engine's own
+/// names or with a global C name.
+void check_generated_name(Context &cx, ChartScope &s, const ast::Name &name) {
+  std::string generated = s.out.name + "_" + name.text;
+  for (const char *reserved : kEngineNames) {
+    if (name.text != reserved) continue;
+    cx.diag.error(name.range, "reserved-name", fmt::format("{} '{}' would generate '{}', which the engine already defines",
+                                                           s.place_word(), name.text, generated));
+    return;
+  }
+  if (const Symbol *clash = cx.c_names.find(generated)) {
+    cx.diag.error(name.range, "reserved-name", fmt::format("{} '{}' would generate '{}', the name of {}", s.place_word(),
+                                                           name.text, generated, with_article(clash->kind)))
+        .note(clash->range, fmt::format("'{}' declared here", generated));
+  }
+}
+
+void declare_place(Context &cx, ChartScope &s, const ast::Place &p, int index) {
+  model::Place out;
+  out.name = p.name.text;
+  out.initial = p.initial;
+  out.terminal = p.terminal == ast::StateKind::Success   ? model::Terminal::Success
+                 : p.terminal == ast::StateKind::Failure ? model::Terminal::Failure
+                                                         : model::Terminal::None;
+  out.range = p.range;
+  s.out.places.push_back(std::move(out));
+  if (s.names.declare(p.name, s.is_fsm() ? Sym::State : Sym::Place, index, cx.diag)) check_generated_name(cx, s, p.name);
+}
+
+void declare_value(Context &cx, ChartScope &s, const ast::ValueDecl &v) {
+  if (!v.is_const) {
+    auto type = lower_type(v.type, kScalar, "a variable", cx.diag);
+    int index = -1;
+    if (type) {
+      index = static_cast<int>(s.out.vars.size());
+      s.out.vars.push_back({v.name.text, *type, std::nullopt, v.range});
+    }
+    s.names.declare(v.name, Sym::Var, index, cx.diag);
+    return;
+  }
+  auto type = lower_type(v.type, kScalar, "a constant", cx.diag);
+  int index = static_cast<int>(cx.model.consts.size());
+  model::Const c;
+  c.name = v.name.text;
+  c.type = type.value_or(model::Type::Int);
+  c.chart = s.index;
+  c.range = v.range;
+  cx.model.consts.push_back(std::move(c));
+  cx.consts.push_back({&v, type ? ConstSource::State::Pending : ConstSource::State::Failed});
+  if (!s.names.declare(v.name, Sym::Const, index, cx.diag)) return;
+  // Generated C may define a chart's constants beside the global ones and the functions.
+  if (const Symbol *clash = cx.c_names.find(v.name.text)) report_clash(v.name, Sym::Const, *clash, cx.diag);
+}
+
+/// Declares places, vars, constants and named transitions in textual order, so a duplicate's
+/// note points at the declaration that really comes first.
+void declare_names(Context &cx, ChartScope &s) {
+  std::vector<std::pair<std::uint32_t, std::function<void()>>> decls;
+  const ast::Chart &a = s.ast;
+  for (std::size_t i = 0; i < a.places.size(); ++i)
+    decls.push_back({a.places[i].range.begin, [&, i] { declare_place(cx, s, a.places[i], static_cast<int>(i)); }});
+  for (const auto &v : a.values) decls.push_back({v.range.begin, [&cx, &s, &v] { declare_value(cx, s, v); }});
+  for (std::size_t i = 0; i < a.transitions.size(); ++i) {
+    if (!a.transitions[i].name) continue;
+    decls.push_back({a.transitions[i].range.begin,
+                     [&, i] { s.names.declare(*a.transitions[i].name, Sym::Transition, static_cast<int>(i), cx.diag); }});
+  }
+  std::stable_sort(decls.begin(), decls.end(), [](const auto &x, const auto &y) { return x.first < y.first; });
+  for (auto &d : decls) d.second();
+}
+
+/// Names the transitions: the user's name, or T<position> (§5) unless that name is taken.
+void name_transitions(Context &cx, ChartScope &s) {
+  for (std::size_t i = 0; i < s.ast.transitions.size(); ++i) {
+    const ast::Transition &t = s.ast.transitions[i];
+    model::Transition out;
+    out.named = t.name.has_value();
+    out.name = out.named ? t.name->text : fmt::format("T{}", i);
+    out.range = t.range;
+    if (!out.named) {
+      if (const Symbol *clash = s.names.find(out.name)) {
+        cx.diag.error(t.range, "duplicate-name", fmt::format("this unnamed transition is named '{}' by its position, "
+                                                             "which is already the name of {}", out.name, with_article(clash->kind)))
+            .note(clash->range, fmt::format("'{}' declared here; name the transition ('name: A -> B') or rename it",
+                                            out.name));
+      }
+    }
+    s.out.transitions.push_back(std::move(out));
+  }
+}
+
+void lower_values(Context &cx, ChartScope &s) {
+  for (const ast::ValueDecl &v : s.ast.values) {
+    const Symbol *sym = s.names.find(v.name.text);
+    if (!sym || sym->range.begin != v.name.range.begin) continue;  // a duplicate, already reported
+    if (v.is_const) {
+      fold_const(cx, sym->index);  // used or not, so each error is reported
+      continue;
+    }
+    if (sym->index < 0 || !v.init) continue;
+    ExprScope scope{cx, &s, true};
+    model::Var &var = s.out.vars[sym->index];
+    var.init = lower_initializer(v.init.get(), scope, var.type, var.name);
+  }
+}
+
+void lower_bodies(Context &cx, ChartScope &s) {
+  ExprScope scope{cx, &s, false};
+  for (std::size_t i = 0; i < s.ast.places.size(); ++i) {
+    const ast::Place &p = s.ast.places[i];
+    model::Place &out = s.out.places[i];
+    out.action = lower_block(p.action, scope);
+    if (p.entry) out.entry = lower_block(*p.entry, scope);
+    if (p.exit) out.exit = lower_block(*p.exit, scope);
+  }
+  for (std::size_t i = 0; i < s.ast.transitions.size(); ++i) {
+    const ast::Transition &t = s.ast.transitions[i];
+    if (t.condition) s.out.transitions[i].condition = lower_condition(t.condition.get(), scope, "condition");
+  }
+}
+
+} // namespace
+
+std::optional<bool> constant_condition(const std::optional<model::Expr> &condition, const model::Model &model) {
+  if (!condition) return true;
+  auto v = evaluate(*condition, model, nullptr);
+  if (!v || v->type != model::Type::Bool) return std::nullopt;
+  return v->b;
+}
+
+void declare_chart(Context &cx, const ast::Chart &chart) {
+  model::Chart out;
+  out.kind = chart.kind == ast::Chart::Kind::Fsm ? model::Chart::Kind::Fsm : model::Chart::Kind::Sfc;
+  out.name = chart.name.text;
+  out.in_main_file = cx.in_main_file(chart.range);
+  out.range = chart.range;
+  int index = static_cast<int>(cx.model.charts.size());
+  cx.model.charts.push_back(std::move(out));
+  cx.charts.push_back(&chart);
+  cx.c_names.declare(chart.name, Sym::Chart, index, cx.diag);
+}
+
+void validate_chart(Context &cx, int index) {
+  std::size_t errors_before = cx.diag.error_count();
+  ChartScope scope(*cx.charts[index], cx.model.charts[index], index);
+  cx.chart = &scope;
+  set_period(cx, scope);
+  declare_names(cx, scope);
+  name_transitions(cx, scope);
+  lower_values(cx, scope);
+  lower_bodies(cx, scope);
+  if (scope.is_fsm()) check_fsm(cx, scope, errors_before);
+  else check_sfc(cx, scope, errors_before);
+  scope.out.functions.assign(scope.functions.begin(), scope.functions.end());
+  scope.out.consts.assign(scope.consts.begin(), scope.consts.end());
+  cx.chart = nullptr;
+}
+
+} // namespace gfec::validation

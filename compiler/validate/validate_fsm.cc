@@ -1,0 +1,154 @@
+// The rules of an fsm (§7): one initial state, terminal states that end the machine, one
+// transition per ordered pair of distinct states, and every state connected to the rest.
+#include "validate/families.h"
+
+#include <fmt/format.h>
+
+#include <map>
+#include <numeric>
+
+namespace gfec::validation {
+
+namespace {
+
+SourceRange where(const ast::Transition &t) { return t.name ? t.name->range : t.range; }
+
+bool terminal(const ast::Place &p) { return p.terminal != ast::StateKind::Normal; }
+
+/// sfc-only syntax in an fsm, and the rules of terminal states.
+void check_state(Context &cx, ChartScope &s, const ast::Place &p, model::Place &out) {
+  if (!p.is_state && !terminal(p))
+    cx.diag.error(p.range, "wrong-keyword", fmt::format("'place' in an fsm: an fsm has states (write 'state {}')", p.name.text));
+  // §7 gives a state one action, run on every tick; entering and leaving have no meaning here.
+  if (p.entry) cx.diag.error(p.entry_range, "wrong-keyword", "'entry' blocks belong to sfc places; an fsm state has only its action");
+  if (p.exit) cx.diag.error(p.exit_range, "wrong-keyword", "'exit' blocks belong to sfc places; an fsm state has only its action");
+  if (terminal(p) && p.has_body)
+    cx.diag.error(p.range, "terminal-state", fmt::format("terminal state '{}' cannot have a body", p.name.text));
+  if (p.initial && terminal(p))
+    cx.diag.error(p.name.range, "initial-state", fmt::format("initial state '{}' cannot be a success or failure state", p.name.text));
+  if (!p.post) return;
+  if (!terminal(p)) {
+    cx.diag.error(p.post->range, "terminal-state", "only a success or failure state can have a 'post' condition");
+    return;
+  }
+  ExprScope scope{cx, &s, false};
+  out.post = lower_condition(p.post.get(), scope, "postcondition");
+}
+
+/// The index of the one initial state, or -1 (reported) if there is none; extra initial
+/// states are reported and ignored.
+int find_initial(Context &cx, ChartScope &s) {
+  int initial = -1;
+  for (std::size_t i = 0; i < s.ast.places.size(); ++i) {
+    const ast::Place &p = s.ast.places[i];
+    if (!p.initial) continue;
+    if (initial < 0) {
+      initial = static_cast<int>(i);
+      continue;
+    }
+    cx.diag.error(p.name.range, "initial-state", fmt::format("fsm '{}' has more than one initial state", s.out.name))
+        .note(s.ast.places[initial].name.range, fmt::format("'{}' is already its initial state", s.ast.places[initial].name.text));
+  }
+  if (initial < 0)
+    cx.diag.error(s.ast.name.range, "initial-state", fmt::format("fsm '{}' has no initial state", s.out.name))
+        .note("mark the state it starts in with 'initial state'");
+  return initial;
+}
+
+/// One side of an fsm transition: exactly one state.
+int one_state(Context &cx, ChartScope &s, const ast::Transition &t, const std::vector<ast::Name> &names, const char *side) {
+  if (names.size() != 1) {
+    cx.diag.error(t.range, "fsm-transition", fmt::format("an fsm transition has exactly one {} state", side));
+    return -1;
+  }
+  return resolve_place(s, cx, names[0]);
+}
+
+/// Resolves every transition; false if one could not be, which would make the connectivity
+/// check report its consequences.
+bool resolve_transitions(Context &cx, ChartScope &s) {
+  bool all = true;
+  std::map<std::pair<int, int>, std::size_t> pairs;
+  for (std::size_t i = 0; i < s.ast.transitions.size(); ++i) {
+    const ast::Transition &t = s.ast.transitions[i];
+    int from = one_state(cx, s, t, t.inputs, "source");
+    int to = one_state(cx, s, t, t.outputs, "target");
+    if (from < 0 || to < 0) {
+      all = false;
+      continue;
+    }
+    const ast::Place &source = s.ast.places[from];
+    if (terminal(source))
+      cx.diag.error(where(t), "terminal-state", fmt::format("transition leaves terminal state '{}'", source.name.text))
+          .note(source.name.range, fmt::format("'{}' ends the machine", source.name.text));
+    if (from == to)
+      cx.diag.error(where(t), "self-transition", fmt::format("transition from state '{}' to itself", source.name.text));
+    auto [it, fresh] = pairs.emplace(std::make_pair(from, to), i);
+    if (!fresh)
+      cx.diag.error(where(t), "duplicate-transition", fmt::format("second transition from '{}' to '{}'", source.name.text,
+                                                                  s.ast.places[to].name.text))
+          .note(where(s.ast.transitions[it->second]), "the first one is here");
+    s.out.transitions[i].inputs = {from};
+    s.out.transitions[i].outputs = {to};
+  }
+  return all;
+}
+
+/// Every state must be weakly connected to the initial state (§7).
+void check_connected(Context &cx, ChartScope &s, int initial) {
+  std::vector<int> parent(s.out.places.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto root = [&](int x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (const auto &t : s.out.transitions)
+    if (!t.inputs.empty() && !t.outputs.empty()) parent[root(t.inputs[0])] = root(t.outputs[0]);
+  for (std::size_t p = 0; p < s.out.places.size(); ++p) {
+    if (root(static_cast<int>(p)) == root(initial)) continue;
+    cx.diag.error(s.ast.places[p].name.range, "not-connected",
+                  fmt::format("state '{}' is not connected to the initial state '{}'", s.out.places[p].name,
+                              s.out.places[initial].name));
+  }
+}
+
+/// States the machine can never enter (conditions treated as free, except a constant false)
+/// and the transitions that leave them.
+void warn_unreachable(Context &cx, ChartScope &s, int initial) {
+  const model::Chart &c = s.out;
+  std::vector<bool> live, reach(c.places.size());
+  for (const auto &t : c.transitions) live.push_back(constant_condition(t.condition, cx.model) != false);
+  reach[initial] = true;
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (std::size_t t = 0; t < c.transitions.size(); ++t)
+      if (live[t] && reach[c.transitions[t].inputs[0]] && !reach[c.transitions[t].outputs[0]])
+        reach[c.transitions[t].outputs[0]] = changed = true;
+  }
+  for (std::size_t p = 0; p < c.places.size(); ++p)
+    if (!reach[p])
+      cx.diag.warning(Warning::UnreachablePlace, s.ast.places[p].name.range,
+                      fmt::format("state '{}' can never become active", c.places[p].name));
+  for (std::size_t t = 0; t < c.transitions.size(); ++t) {
+    const auto &tr = c.transitions[t];
+    if (!live[t])
+      cx.diag.warning(Warning::DeadTransition, where(s.ast.transitions[t]),
+                      fmt::format("transition '{}' can never fire: its condition is always false", tr.name));
+    else if (!reach[tr.inputs[0]])
+      cx.diag.warning(Warning::DeadTransition, where(s.ast.transitions[t]),
+                      fmt::format("transition '{}' can never fire: state '{}' never becomes active", tr.name,
+                                  c.places[tr.inputs[0]].name));
+  }
+}
+
+} // namespace
+
+void check_fsm(Context &cx, ChartScope &s, std::size_t errors_before) {
+  for (std::size_t i = 0; i < s.ast.places.size(); ++i) check_state(cx, s, s.ast.places[i], s.out.places[i]);
+  int initial = find_initial(cx, s);
+  bool resolved = resolve_transitions(cx, s);
+  if (initial >= 0 && resolved) check_connected(cx, s, initial);
+  if (initial >= 0 && cx.diag.error_count() == errors_before) warn_unreachable(cx, s, initial);
+}
+
+} // namespace gfec::validation

@@ -1,0 +1,441 @@
+// Plans (§8): actors wired by their result states, supervisors wired by their events, a typed
+// configuration, sub-plans; every state and event connected, nothing left dangling.
+#include "validate/families.h"
+#include "validate/fold.h"
+#include "validate/formula.h"
+#include "validate/suggest.h"
+#include "validate/types.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace gfec::validation {
+
+namespace {
+
+using model::Type;
+
+/// What an actor or supervisor instantiates: a template, or (actors only) a sub-plan.
+struct Callee {
+  std::string name;
+  int templ = -1;
+  int subplan = -1;
+  std::vector<std::string> outcomes;
+  std::vector<const ast::Name *> outcome_decls;  ///< empty for a sub-plan's fixed states
+  SourceRange range;
+  bool events = false;
+};
+
+Callee template_callee(Context &cx, int index) {
+  const model::Template &t = cx.model.templates[index];
+  Callee c{t.name, index, -1, t.outcomes, {}, t.range, t.kind == model::Template::Kind::Supervisor};
+  for (const ast::Name &n : cx.templates[index]->outcomes) c.outcome_decls.push_back(&n);
+  return c;
+}
+
+Callee plan_callee(Context &cx, int index) {
+  const model::Plan &p = cx.model.plans[index];
+  return {p.name, -1, index, {std::begin(model::kSubPlanStates), std::end(model::kSubPlanStates)}, {}, p.range, false};
+}
+
+// ------------------------------------------------------------------ names
+
+/// Lowers the config entries' types: each entry's index into Plan::config, or -1 if its type
+/// is wrong (uses of it then stay silent).
+std::vector<int> lower_config_types(Context &cx, PlanScope &s) {
+  std::vector<int> index;
+  for (const auto &block : s.ast.config_blocks) {
+    for (const ast::ConfigEntry &e : block) {
+      auto type = lower_type(e.type, kScalar | kString | kObject, "a config entry", cx.diag);
+      index.push_back(type ? static_cast<int>(s.out.config.size()) : -1);
+      if (type) s.out.config.push_back({e.name.text, *type, std::nullopt, e.range});
+    }
+  }
+  return index;
+}
+
+/// Config entries, actors and supervisors, declared in textual order so a duplicate's note
+/// points at the one that comes first.
+void declare_members(Context &cx, PlanScope &s, const std::vector<int> &config_index) {
+  struct Member {
+    const ast::Name *name;
+    Sym kind;
+    int index;
+  };
+  std::vector<Member> members;
+  std::size_t entry = 0;
+  for (const auto &block : s.ast.config_blocks)
+    for (const auto &e : block) members.push_back({&e.name, Sym::ConfigEntry, config_index[entry++]});
+  for (const auto &g : s.ast.global_supervisors) members.push_back({&g.name, Sym::Supervisor, -1});
+  for (std::size_t i = 0; i < s.ast.actors.size(); ++i) {
+    members.push_back({&s.ast.actors[i].name, Sym::Actor, static_cast<int>(i)});
+    for (const auto &sup : s.ast.actors[i].supervisors) members.push_back({&sup.name, Sym::Supervisor, -1});
+  }
+  std::stable_sort(members.begin(), members.end(),
+                   [](const Member &a, const Member &b) { return a.name->range.begin < b.name->range.begin; });
+  for (const Member &m : members) s.names.declare(*m.name, m.kind, m.index, cx.diag);
+}
+
+/// A config initialiser: a constant, folded to a literal of the entry's type.
+std::optional<model::Expr> lower_config_init(Context &cx, PlanScope &s, const ast::ConfigEntry &e, Type type) {
+  auto init = lower_formula(e.init.get(), cx, s, true);
+  if (!init) return std::nullopt;
+  bool fits = type != Type::Object && (assignable(type, init->type) || (type == Type::String && model::is_numeric(init->type)));
+  if (!fits) {
+    cx.diag.error(init->range, "type-mismatch", fmt::format("cannot initialize '{}' of type {} with a value of type {}",
+                                                            e.name.text, quoted(type), quoted(init->type)));
+    return std::nullopt;
+  }
+  auto v = evaluate(*init, cx.model, &cx.diag);
+  if (!v) return std::nullopt;
+  return to_literal(*v, type, init->range, cx.diag, &*init);
+}
+
+void lower_config_inits(Context &cx, PlanScope &s, const std::vector<int> &config_index) {
+  std::size_t entry = 0;
+  for (const auto &block : s.ast.config_blocks) {
+    for (const ast::ConfigEntry &e : block) {
+      int index = config_index[entry++];
+      if (index < 0 || !e.init) continue;
+      s.out.config[index].init = lower_config_init(cx, s, e, s.out.config[index].type);
+    }
+  }
+}
+
+/// The actor `name` refers to, or -1 after reporting why not.
+int resolve_actor(Context &cx, PlanScope &s, const ast::Name &name) {
+  if (name.text.empty()) return -1;
+  const Symbol *sym = s.names.find(name.text);
+  if (sym && sym->kind == Sym::Actor) return sym->index;
+  if (sym) {
+    cx.diag.error(name.range, "type-mismatch", fmt::format("'{}' is {}, not an actor", name.text, with_article(sym->kind)))
+        .note(sym->range, fmt::format("'{}' declared here", name.text));
+    return -1;
+  }
+  report_unknown(cx.diag, s.unknown, name, "actor", s.names.of({Sym::Actor}));
+  return -1;
+}
+
+void set_start(Context &cx, PlanScope &s) {
+  const auto &starts = s.ast.starts;
+  if (starts.empty()) {
+    cx.diag.error(s.ast.name.range, "start", fmt::format("plan '{}' has no start actor", s.out.name))
+        .note("name the actor that runs first with 'start NAME;'");
+    return;
+  }
+  for (std::size_t i = 1; i < starts.size(); ++i)
+    cx.diag.error(starts[i].range, "start", fmt::format("plan '{}' has more than one start actor", s.out.name))
+        .note(starts[0].range, "the first 'start' is here");
+  s.out.start = resolve_actor(cx, s, starts[0]);
+}
+
+// ------------------------------------------------------------------ rules
+
+/// `STATE -> target` of one rule; nothing if the target is wrong (reported).
+std::optional<model::Target> lower_target(Context &cx, PlanScope &s, const ast::Rule &r, const Callee &c) {
+  model::Target t;
+  switch (r.target) {
+  case ast::Rule::Target::Terminate: t.kind = model::Target::Kind::Terminate; return t;
+  case ast::Rule::Target::Ignore:
+    if (!c.events) {
+      cx.diag.error(r.target_name.range, "ignore-state",
+                    fmt::format("result state '{}' cannot be ignored: only supervisor events can", r.outcome.text))
+          .note("a result state leads to an actor or to 'terminate'");
+      return std::nullopt;
+    }
+    t.kind = model::Target::Kind::Ignore;
+    return t;
+  case ast::Rule::Target::Actor:
+    t.actor = resolve_actor(cx, s, r.target_name);
+    if (t.actor < 0) return std::nullopt;
+    return t;
+  }
+  return std::nullopt;
+}
+
+/// The index of the outcome a rule names, or -1 after reporting it as unknown.
+int find_outcome(Context &cx, PlanScope &s, const ast::Name &name, const Callee &c) {
+  for (std::size_t k = 0; k < c.outcomes.size(); ++k)
+    if (c.outcomes[k] == name.text) return static_cast<int>(k);
+  if (name.text.empty()) return -1;
+  const char *what = c.events ? "event" : "result state";
+  if (!s.unknown.insert(fmt::format("{} {} {}", what, c.name, name.text)).second) return -1;
+  auto &d = cx.diag.error(name.range, "unknown-name", fmt::format("unknown {} '{}' of '{}'", what, name.text, c.name));
+  std::vector<Symbol> symbols;
+  for (std::size_t k = 0; k < c.outcomes.size(); ++k)
+    symbols.push_back({Sym::ResultState, -1, c.outcomes[k], c.outcome_decls.empty() ? SourceRange{} : c.outcome_decls[k]->range});
+  std::vector<const Symbol *> candidates;
+  for (const Symbol &sym : symbols) candidates.push_back(&sym);
+  if (const Symbol *best = closest(name.text, candidates)) {
+    if (c.outcome_decls.empty()) d.note(fmt::format("did you mean '{}'?", best->name));
+    else d.note(best->range, fmt::format("did you mean '{}'?", best->name));
+  }
+  return -1;
+}
+
+std::string outcome_list(const Callee &c) {
+  std::string list;
+  for (const auto &o : c.outcomes) list += (list.empty() ? "" : ", ") + o;
+  return list;
+}
+
+/// One rule per outcome of `c`, sorted by outcome (so rules[k] is outcome k once valid);
+/// every outcome must be connected exactly once. `owner` is the actor or supervisor.
+std::vector<model::Rule> lower_rules(Context &cx, PlanScope &s, const std::vector<ast::Rule> &rules, const Callee &c,
+                                     const ast::Name &owner) {
+  std::vector<model::Rule> out;
+  std::vector<const ast::Rule *> connected(c.outcomes.size(), nullptr);
+  const char *what = c.events ? "event" : "result state";
+  for (const ast::Rule &r : rules) {
+    int k = find_outcome(cx, s, r.outcome, c);
+    if (k < 0) continue;
+    if (connected[k]) {
+      cx.diag.error(r.outcome.range, "duplicate-rule", fmt::format("{} '{}' is connected twice", what, r.outcome.text))
+          .note(connected[k]->range, "first connected here");
+      continue;
+    }
+    connected[k] = &r;
+    if (auto target = lower_target(cx, s, r, c)) out.push_back({k, *target, r.range});
+  }
+  for (std::size_t k = 0; k < c.outcomes.size(); ++k) {
+    if (connected[k]) continue;
+    auto &d = cx.diag.error(owner.range, "unconnected", fmt::format("{} '{}' of '{}' is not connected", what,
+                                                                    c.outcomes[k], c.name));
+    if (c.subplan >= 0) d.note(fmt::format("a sub-plan's result states are {}", outcome_list(c)));
+    else d.note(c.range, fmt::format("'{}' has the {}s {}", c.name, what, outcome_list(c)));
+  }
+  std::sort(out.begin(), out.end(), [](const model::Rule &a, const model::Rule &b) { return a.outcome < b.outcome; });
+  return out;
+}
+
+// ------------------------------------------------------------------ arguments
+
+/// An `out` argument: a plain config entry, whose type the parameter's value converts to.
+std::optional<model::Expr> lower_out_arg(Context &cx, PlanScope &s, const ast::Expr *arg, const model::TemplateParam &p,
+                                         const Callee &c) {
+  if (!arg) return std::nullopt;
+  const Symbol *sym = arg->kind == ast::Expr::Kind::Name ? s.names.find(arg->name.text) : nullptr;
+  if (arg->kind == ast::Expr::Kind::Name && !sym && !cx.c_names.find(arg->name.text))
+    return lower_formula(arg, cx, s, false);  // reports the unknown name
+  if (!sym || sym->kind != Sym::ConfigEntry) {
+    cx.diag.error(arg->range, "out-argument", fmt::format("out parameter '{}' of '{}' must be bound to a config entry",
+                                                          p.name, c.name))
+        .note(c.range, fmt::format("'{}' declared here", c.name));
+    return std::nullopt;
+  }
+  auto x = lower_formula(arg, cx, s, false);
+  if (x && !convertible(x->type, p.type)) {
+    cx.diag.error(arg->range, "type-mismatch", fmt::format("out parameter '{}' of '{}' has type {}, which config entry "
+                                                           "'{}' of type {} cannot hold", p.name, c.name, quoted(p.type),
+                                                           arg->name.text, quoted(x->type)))
+        .note(c.range, fmt::format("'{}' declared here", c.name));
+    return std::nullopt;
+  }
+  return x;
+}
+
+std::optional<model::Expr> lower_in_arg(Context &cx, PlanScope &s, const ast::Expr *arg, const model::TemplateParam &p,
+                                        const Callee &c, std::size_t position) {
+  auto x = lower_formula(arg, cx, s, false);
+  if (x && !convertible(p.type, x->type)) {
+    cx.diag.error(x->range, "type-mismatch", fmt::format("incompatible type for argument {} ('{}') of '{}': expected {}, have {}",
+                                                         position, p.name, c.name, quoted(p.type), quoted(x->type)))
+        .note(c.range, fmt::format("'{}' declared here", c.name));
+    return std::nullopt;
+  }
+  return x;
+}
+
+std::vector<model::Arg> lower_args(Context &cx, PlanScope &s, const std::vector<ast::ExprPtr> &args, const Callee &c,
+                                   SourceRange call) {
+  std::vector<model::Arg> out;
+  if (c.subplan >= 0) {
+    if (!args.empty()) cx.diag.error(call, "argument-count", fmt::format("sub-plan '{}' takes no arguments", c.name));
+    return out;
+  }
+  const auto &params = cx.model.templates[c.templ].params;
+  if (args.size() != params.size()) {
+    cx.diag.error(call, "argument-count", fmt::format("too {} arguments to '{}' (expected {}, have {})",
+                                                      args.size() > params.size() ? "many" : "few", c.name,
+                                                      params.size(), args.size()))
+        .note(c.range, fmt::format("'{}' declared here", c.name));
+    return out;
+  }
+  if (!cx.template_ok[c.templ]) return out;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const model::TemplateParam &p = params[i];
+    auto x = p.dir == model::ParamDir::Out ? lower_out_arg(cx, s, args[i].get(), p, c)
+                                           : lower_in_arg(cx, s, args[i].get(), p, c, i + 1);
+    if (x) out.push_back({std::move(*x), p.dir});
+  }
+  return out;
+}
+
+// ------------------------------------------------------------------ actors and supervisors
+
+/// The template (or plan) `name` refers to, if it is one of `kinds`; reports why not.
+std::optional<Callee> resolve_callee(Context &cx, PlanScope &s, const ast::Name &name, bool supervisor) {
+  if (name.text.empty()) return std::nullopt;
+  const Symbol *sym = cx.plan_names.find(name.text);
+  if (!sym) {
+    std::vector<const Symbol *> candidates;
+    for (const Symbol *c : cx.plan_names.of({Sym::Template, Sym::Plan})) {
+      bool is_supervisor = c->kind == Sym::Template &&
+                           cx.model.templates[c->index].kind == model::Template::Kind::Supervisor;
+      if (is_supervisor == supervisor) candidates.push_back(c);
+    }
+    report_unknown(cx.diag, s.unknown, name, "template", candidates);
+    return std::nullopt;
+  }
+  if (sym->kind == Sym::Plan) {
+    if (!supervisor) return plan_callee(cx, sym->index);
+    cx.diag.error(name.range, "template-kind", fmt::format("'{}' is a plan; 'supervise' needs a supervisor template", name.text))
+        .note(sym->range, fmt::format("'{}' declared here", name.text));
+    return std::nullopt;
+  }
+  const model::Template &t = cx.model.templates[sym->index];
+  if ((t.kind == model::Template::Kind::Supervisor) != supervisor) {
+    cx.diag.error(name.range, "template-kind",
+                  supervisor ? fmt::format("'{}' is an actor template; 'supervise' needs a supervisor template", name.text)
+                             : fmt::format("'{}' is a supervisor template; an actor needs an actor or computation", name.text))
+        .note(sym->range, fmt::format("'{}' declared here", name.text));
+    return std::nullopt;
+  }
+  s.toolboxes.insert(t.toolbox);
+  return template_callee(cx, sym->index);
+}
+
+model::SupervisorUse lower_supervise(Context &cx, PlanScope &s, const ast::Supervise &sup) {
+  model::SupervisorUse out;
+  out.name = sup.name.text;
+  out.range = sup.range;
+  auto c = resolve_callee(cx, s, sup.template_name, true);
+  if (!c) return out;
+  out.templ = c->templ;
+  out.args = lower_args(cx, s, sup.args, *c, sup.range);
+  out.rules = lower_rules(cx, s, sup.rules, *c, sup.name);
+  return out;
+}
+
+model::ActorUse lower_actor(Context &cx, PlanScope &s, const ast::ActorUse &a) {
+  model::ActorUse out;
+  out.name = a.name.text;
+  out.range = a.range;
+  auto c = resolve_callee(cx, s, a.template_name, false);
+  bool computation = c && c->templ >= 0 && cx.model.templates[c->templ].kind == model::Template::Kind::Computation;
+  if (c && a.written_as_computation && !computation)
+    cx.diag.error(a.template_name.range, "template-kind", fmt::format("'{}' is not a computation", c->name))
+        .note(c->range, fmt::format("'{}' declared here", c->name));
+  for (const ast::Supervise &sup : a.supervisors) {
+    if (computation)
+      cx.diag.error(sup.name.range, "computation-supervisor",
+                    fmt::format("computation '{}' cannot be supervised", a.name.text))
+          .note("a computation runs to its result without interruption");
+    out.supervisors.push_back(lower_supervise(cx, s, sup));
+  }
+  if (!c) return out;
+  out.templ = c->templ;
+  out.subplan = c->subplan;
+  out.args = lower_args(cx, s, a.args, *c, a.range);
+  out.rules = lower_rules(cx, s, a.rules, *c, a.name);
+  return out;
+}
+
+// ------------------------------------------------------------------ warnings
+
+/// Actors no path reaches from the start actor, following every rule of every actor reached
+/// and of the global supervisors (which may interrupt any actor).
+void warn_unreachable(Context &cx, PlanScope &s) {
+  const model::Plan &p = s.out;
+  if (p.start < 0) return;
+  std::vector<bool> reach(p.actors.size());
+  std::vector<int> work{p.start};
+  reach[p.start] = true;
+  auto follow = [&](const std::vector<model::Rule> &rules) {
+    for (const auto &r : rules)
+      if (r.target.kind == model::Target::Kind::Actor && !reach[r.target.actor]) {
+        reach[r.target.actor] = true;
+        work.push_back(r.target.actor);
+      }
+  };
+  for (const auto &g : p.globals) follow(g.rules);
+  while (!work.empty()) {
+    const model::ActorUse &a = p.actors[work.back()];
+    work.pop_back();
+    follow(a.rules);
+    for (const auto &sup : a.supervisors) follow(sup.rules);
+  }
+  for (std::size_t i = 0; i < p.actors.size(); ++i)
+    if (!reach[i])
+      cx.diag.warning(Warning::UnreachableActor, s.ast.actors[i].name.range,
+                      fmt::format("actor '{}' is never reached from the start actor '{}'", p.actors[i].name,
+                                  p.actors[p.start].name));
+}
+
+// ------------------------------------------------------------------ recursion
+
+struct PlanGraph {
+  Context &cx;
+  std::vector<int> color;  ///< 0 unvisited, 1 on the stack, 2 done
+  std::vector<std::pair<int, int>> stack;  ///< (plan, actor through which the next plan is used)
+
+  void visit(int plan) {
+    color[plan] = 1;
+    const auto &actors = cx.model.plans[plan].actors;
+    for (std::size_t a = 0; a < actors.size(); ++a) {
+      int sub = actors[a].subplan;
+      if (sub < 0) continue;
+      stack.push_back({plan, static_cast<int>(a)});
+      if (color[sub] == 1) report(sub);
+      else if (color[sub] == 0) visit(sub);
+      stack.pop_back();
+    }
+    color[plan] = 2;
+  }
+
+  /// `plan` is on the stack: the stack from it to the top is the chain that contains it.
+  void report(int plan) {
+    auto &d = cx.diag.error(cx.plans[plan]->name.range, "recursive-plan", fmt::format("plan '{}' contains itself", cx.model.plans[plan].name));
+    auto first = std::find_if(stack.begin(), stack.end(), [&](const auto &e) { return e.first == plan; });
+    for (auto it = first; it != stack.end(); ++it) {
+      const ast::ActorUse &a = cx.plans[it->first]->actors[it->second];
+      d.note(a.name.range, fmt::format("'{}' uses '{}' as actor '{}'", cx.model.plans[it->first].name,
+                                       a.template_name.text, a.name.text));
+    }
+  }
+};
+
+} // namespace
+
+void declare_plan(Context &cx, const ast::Plan &plan) {
+  model::Plan out;
+  out.name = plan.name.text;
+  out.in_main_file = cx.in_main_file(plan.range);
+  out.range = plan.range;
+  int index = static_cast<int>(cx.model.plans.size());
+  cx.model.plans.push_back(std::move(out));
+  cx.plans.push_back(&plan);
+  cx.plan_names.declare(plan.name, Sym::Plan, index, cx.diag);
+}
+
+void validate_plan(Context &cx, int index) {
+  std::size_t errors_before = cx.diag.error_count();
+  PlanScope s(*cx.plans[index], cx.model.plans[index]);
+  std::vector<int> config_index = lower_config_types(cx, s);
+  declare_members(cx, s, config_index);
+  lower_config_inits(cx, s, config_index);
+  set_start(cx, s);
+  for (const ast::Supervise &g : s.ast.global_supervisors) s.out.globals.push_back(lower_supervise(cx, s, g));
+  for (const ast::ActorUse &a : s.ast.actors) s.out.actors.push_back(lower_actor(cx, s, a));
+  s.out.toolboxes.assign(s.toolboxes.begin(), s.toolboxes.end());
+  if (cx.diag.error_count() == errors_before) warn_unreachable(cx, s);
+}
+
+void check_plan_recursion(Context &cx) {
+  PlanGraph g{cx, std::vector<int>(cx.model.plans.size()), {}};
+  for (std::size_t p = 0; p < cx.model.plans.size(); ++p)
+    if (g.color[p] == 0) g.visit(static_cast<int>(p));
+}
+
+} // namespace gfec::validation

@@ -1,0 +1,137 @@
+// The rules of an sfc (§5): places, at least one initial place, transitions between places of
+// the chart; and the warnings that over-approximate what can ever happen.
+#include "validate/families.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <set>
+
+namespace gfec::validation {
+
+namespace {
+
+/// Where to point at a transition: its name if it has one.
+SourceRange where(const ast::Transition &t) { return t.name ? t.name->range : t.range; }
+
+/// fsm-only syntax in an sfc.
+void check_keywords(Context &cx, const ast::Place &p) {
+  if (p.terminal != ast::StateKind::Normal)
+    cx.diag.error(p.range, "wrong-keyword", "success and failure states belong to an fsm; an sfc has places");
+  else if (p.is_state)
+    cx.diag.error(p.range, "wrong-keyword", fmt::format("'state' in an sfc: an sfc has places (write 'place {}')", p.name.text));
+  if (p.post) cx.diag.error(p.post->range, "wrong-keyword", "'post' belongs to a terminal state of an fsm");
+}
+
+/// Resolves a transition's inputs or outputs (`side`), reporting a place listed twice.
+std::vector<int> resolve_places(Context &cx, ChartScope &s, const std::vector<ast::Name> &names, const char *side,
+                                const std::string &transition) {
+  std::vector<int> out;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    int p = resolve_place(s, cx, names[i]);
+    if (p < 0) continue;
+    bool twice = false;
+    for (std::size_t j = 0; j < i && !twice; ++j) {
+      if (names[j].text != names[i].text) continue;
+      cx.diag.error(names[i].range, "duplicate-place", fmt::format("place '{}' is listed twice in the {} of transition '{}'",
+                                                                   names[i].text, side, transition))
+          .note(names[j].range, "first listed here");
+      twice = true;
+    }
+    if (!twice) out.push_back(p);
+  }
+  return out;
+}
+
+void resolve_transitions(Context &cx, ChartScope &s) {
+  for (std::size_t i = 0; i < s.ast.transitions.size(); ++i) {
+    const ast::Transition &t = s.ast.transitions[i];
+    model::Transition &out = s.out.transitions[i];
+    if (t.inputs.empty())
+      cx.diag.error(t.range, "no-input", fmt::format("transition '{}' has no input place", out.name));
+    out.inputs = resolve_places(cx, s, t.inputs, "inputs", out.name);
+    out.outputs = resolve_places(cx, s, t.outputs, "outputs", out.name);
+  }
+}
+
+/// The places some activation can reach, treating every condition as free except a constant
+/// `false`: a place is reachable if a live transition outputs it from reachable inputs.
+std::vector<bool> reachable_places(const model::Chart &c, const std::vector<bool> &live) {
+  std::vector<bool> reach(c.places.size());
+  for (std::size_t p = 0; p < c.places.size(); ++p) reach[p] = c.places[p].initial;
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (std::size_t t = 0; t < c.transitions.size(); ++t) {
+      bool open = live[t];
+      for (int p : c.transitions[t].inputs) open = open && reach[p];
+      if (!open) continue;
+      for (int q : c.transitions[t].outputs)
+        if (!reach[q]) reach[q] = changed = true;
+    }
+  }
+  return reach;
+}
+
+void warn_unreachable(Context &cx, ChartScope &s) {
+  const model::Chart &c = s.out;
+  std::vector<std::optional<bool>> constant;
+  std::vector<bool> live;
+  for (const auto &t : c.transitions) {
+    constant.push_back(constant_condition(t.condition, cx.model));
+    live.push_back(constant.back() != false);
+  }
+  std::vector<bool> reach = reachable_places(c, live);
+  for (std::size_t p = 0; p < c.places.size(); ++p)
+    if (!reach[p])
+      cx.diag.warning(Warning::UnreachablePlace, s.ast.places[p].name.range,
+                      fmt::format("place '{}' can never become active", c.places[p].name));
+  std::vector<bool> dead(c.transitions.size());
+  for (std::size_t t = 0; t < c.transitions.size(); ++t) {
+    const auto &tr = c.transitions[t];
+    SourceRange at = where(s.ast.transitions[t]);
+    if (!live[t]) {
+      cx.diag.warning(Warning::DeadTransition, at, fmt::format("transition '{}' can never fire: its condition is always false", tr.name));
+      dead[t] = true;
+      continue;
+    }
+    for (int p : tr.inputs) {
+      if (reach[p]) continue;
+      cx.diag.warning(Warning::DeadTransition, at, fmt::format("transition '{}' can never fire: its input place '{}' never "
+                                                               "becomes active", tr.name, c.places[p].name));
+      dead[t] = true;
+      break;
+    }
+  }
+  // Conflicts (§5.1): declaration order decides; worth a look when a condition can vary.
+  for (std::size_t j = 0; j < c.transitions.size(); ++j) {
+    for (std::size_t i = 0; i < j && !dead[j]; ++i) {
+      if (dead[i] || (constant[i] && constant[j])) continue;
+      const auto &first = c.transitions[i], &second = c.transitions[j];
+      auto shared = std::find_first_of(second.inputs.begin(), second.inputs.end(), first.inputs.begin(), first.inputs.end());
+      if (shared == second.inputs.end()) continue;
+      cx.diag.warning(Warning::Conflict, where(s.ast.transitions[j]),
+                      fmt::format("transition '{}' competes with '{}' for place '{}'", second.name, first.name,
+                                  c.places[*shared].name))
+          .note(where(s.ast.transitions[i]),
+                fmt::format("'{}' is declared first: when both can fire, it takes the activation", first.name));
+      break;
+    }
+  }
+}
+
+} // namespace
+
+void check_sfc(Context &cx, ChartScope &s, std::size_t errors_before) {
+  bool initial = false;
+  for (const ast::Place &p : s.ast.places) {
+    check_keywords(cx, p);
+    initial = initial || p.initial;
+  }
+  if (!initial)
+    cx.diag.error(s.ast.name.range, "initial-state", fmt::format("sfc '{}' has no initial place", s.out.name))
+        .note("mark the places active at start with 'initial place'");
+  resolve_transitions(cx, s);
+  if (cx.diag.error_count() == errors_before) warn_unreachable(cx, s);
+}
+
+} // namespace gfec::validation
