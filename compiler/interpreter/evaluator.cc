@@ -1,0 +1,227 @@
+#include "evaluator.h"
+
+#include <fmt/format.h>
+
+#include <cerrno>
+#include <climits>
+#include <cmath>
+#include <cstdlib>
+
+namespace gfec::interp {
+
+namespace {
+
+using model::Expr;
+using model::Type;
+
+/// C's usual arithmetic conversions over int, float and double.
+Type common_type(Type a, Type b) {
+  if (a == Type::Double || b == Type::Double) return Type::Double;
+  if (a == Type::Float || b == Type::Float) return Type::Float;
+  return Type::Int;
+}
+
+bool is_arithmetic(BinaryOp op) {
+  return op == BinaryOp::Mul || op == BinaryOp::Div || op == BinaryOp::Mod || op == BinaryOp::Add ||
+         op == BinaryOp::Sub;
+}
+
+Value int_arith(BinaryOp op, std::int64_t a, std::int64_t b, SourceRange r) {
+  if ((op == BinaryOp::Div || op == BinaryOp::Mod) && b == 0)
+    throw RuntimeError(r, "division by zero (undefined behaviour in C)");
+  std::int64_t v = 0;
+  switch (op) {
+  case BinaryOp::Mul: v = a * b; break;
+  case BinaryOp::Div: v = a / b; break;  // truncates toward zero, as C99 does
+  case BinaryOp::Mod: v = a % b; break;  // takes the dividend's sign, as C99 does
+  case BinaryOp::Add: v = a + b; break;
+  case BinaryOp::Sub: v = a - b; break;
+  default: break;
+  }
+  // INT_MIN / -1 and INT_MIN % -1 overflow in C even though the 64-bit result looks harmless.
+  bool min_by_minus_one = (op == BinaryOp::Div || op == BinaryOp::Mod) && a == INT_MIN && b == -1;
+  if (v < INT_MIN || v > INT_MAX || min_by_minus_one)
+    throw RuntimeError(r, fmt::format("int overflow: {} {} {} (undefined behaviour in C)", a, spelling(op), b));
+  return Value::of_int(static_cast<std::int32_t>(v));
+}
+
+/// Float arithmetic in `T` (float or double). Results C would print or compare differently
+/// across platforms (infinities, NaNs) stop the run, as division by zero does.
+template <typename T> T float_arith(BinaryOp op, T a, T b, SourceRange r) {
+  if (op == BinaryOp::Div && b == 0) throw RuntimeError(r, "division by zero (undefined behaviour in C)");
+  T v = 0;
+  switch (op) {
+  case BinaryOp::Mul: v = a * b; break;
+  case BinaryOp::Div: v = a / b; break;
+  case BinaryOp::Add: v = a + b; break;
+  case BinaryOp::Sub: v = a - b; break;
+  default: break;
+  }
+  if (!std::isfinite(v))
+    throw RuntimeError(r, fmt::format("the result of {} {} {} is not a finite number", a, spelling(op), b));
+  return v;
+}
+
+Value arith(BinaryOp op, const Value &a, const Value &b, SourceRange r) {
+  Type t = common_type(a.type, b.type);
+  Value x = convert(a, t, r), y = convert(b, t, r);
+  switch (t) {
+  case Type::Float:
+    return Value::of_float(float_arith<float>(op, static_cast<float>(x.f), static_cast<float>(y.f), r));
+  case Type::Double: return Value::of_double(float_arith<double>(op, x.f, y.f, r));
+  default: return int_arith(op, x.i, y.i, r);
+  }
+}
+
+template <typename T> bool compare(BinaryOp op, T a, T b) {
+  switch (op) {
+  case BinaryOp::Lt: return a < b;
+  case BinaryOp::Le: return a <= b;
+  case BinaryOp::Gt: return a > b;
+  case BinaryOp::Ge: return a >= b;
+  case BinaryOp::Eq: return a == b;
+  case BinaryOp::Ne: return a != b;
+  default: return false;
+  }
+}
+
+Value comparison(BinaryOp op, const Value &a, const Value &b, SourceRange r) {
+  if (a.type == Type::Bool || b.type == Type::Bool) {
+    Value x = convert(a, Type::Bool, r), y = convert(b, Type::Bool, r);
+    return Value::of_bool(compare(op, x.b, y.b));
+  }
+  if (a.type == Type::Duration && b.type == Type::Duration)  // both unsigned tick counts
+    return Value::of_bool(compare(op, static_cast<std::uint64_t>(a.i), static_cast<std::uint64_t>(b.i)));
+  Type t = common_type(a.type, b.type);
+  Value x = convert(a, t, r), y = convert(b, t, r);
+  if (t == Type::Int) return Value::of_bool(compare(op, x.i, y.i));
+  return Value::of_bool(compare(op, x.f, y.f));  // a float's value is exact in a double
+}
+
+Value literal_int(const Expr &e) {
+  errno = 0;
+  char *end = nullptr;
+  long long v = std::strtoll(e.text.c_str(), &end, 10);
+  if (errno != 0 || end == e.text.c_str() || *end != '\0' || v < INT_MIN || v > INT_MAX)
+    throw RuntimeError(e.range, fmt::format("the literal '{}' is not an int", e.text));
+  return Value::of_int(static_cast<std::int32_t>(v));
+}
+
+Value literal_float(const Expr &e) {
+  char *end = nullptr;
+  double v = std::strtod(e.text.c_str(), &end);
+  if (end == e.text.c_str() || *end != '\0')
+    throw RuntimeError(e.range, fmt::format("the literal '{}' is not a number", e.text));
+  // A literal is a double, as in C, unless the model types it otherwise.
+  return convert(Value::of_double(v), e.type == Type::Float ? Type::Float : Type::Double, e.range);
+}
+
+Value literal(const Expr &e) {
+  switch (e.kind) {
+  case Expr::Kind::Bool: return Value::of_bool(e.bool_value);
+  case Expr::Kind::Int: return literal_int(e);
+  case Expr::Kind::Float: return literal_float(e);
+  case Expr::Kind::Ticks: return Value::of_ticks(e.ticks);
+  default: throw RuntimeError(e.range, "a string has no value in a chart");
+  }
+}
+
+std::string call_text(const model::Function &fn, const std::vector<Value> &args) {
+  std::string text = "call " + fn.name + "(";
+  for (std::size_t i = 0; i < args.size(); ++i) text += (i ? ", " : "") + format_value(args[i]);
+  return text + ")";
+}
+
+Value call(const Expr &e, Frame &f) {
+  const model::Function &fn = f.model.functions.at(static_cast<std::size_t>(e.index));
+  std::vector<Value> args;
+  for (std::size_t i = 0; i < e.args.size(); ++i) {
+    Value v = evaluate(e.args[i], f);
+    args.push_back(i < fn.params.size() ? convert(v, fn.params[i].type, e.args[i].range) : v);
+  }
+  if (!f.env) throw RuntimeError(e.range, fmt::format("'{}' is called in a constant expression", fn.name));
+  Value result = f.env->call(e.index, args, f.tick);
+  std::string text = call_text(fn, args);
+  if (fn.result != Type::Void) {
+    result = convert(result, fn.result, e.range);
+    text += " = " + format_value(result);
+  } else {
+    result = Value::zero(Type::Void);
+    result.type = Type::Void;
+  }
+  if (f.log) f.log->add(EventKind::Call, f.depth, std::move(text));
+  return result;
+}
+
+Value unary(const Expr &e, Frame &f) {
+  Value v = evaluate(e.args.at(0), f);
+  if (e.unary_op == UnaryOp::Not) return Value::of_bool(!convert(v, Type::Bool, e.range).b);
+  switch (v.type) {
+  case Type::Int:
+    if (v.i == INT_MIN) throw RuntimeError(e.range, "int overflow: -(-2147483648) (undefined behaviour in C)");
+    return Value::of_int(static_cast<std::int32_t>(-v.i));
+  case Type::Float: return Value::of_float(-static_cast<float>(v.f));
+  case Type::Double: return Value::of_double(-v.f);
+  default: throw RuntimeError(e.range, "'-' needs a number");
+  }
+}
+
+Value binary(const Expr &e, Frame &f) {
+  const BinaryOp op = e.binary_op;
+  if (op == BinaryOp::And || op == BinaryOp::Or) {
+    bool left = convert(evaluate(e.args.at(0), f), Type::Bool, e.args[0].range).b;
+    if (op == BinaryOp::And ? !left : left) return Value::of_bool(left);
+    return Value::of_bool(convert(evaluate(e.args.at(1), f), Type::Bool, e.args[1].range).b);
+  }
+  Value a = evaluate(e.args.at(0), f);
+  Value b = evaluate(e.args.at(1), f);
+  if (is_arithmetic(op)) return arith(op, a, b, e.range);
+  return comparison(op, a, b, e.range);
+}
+
+} // namespace
+
+Value evaluate(const Expr &e, Frame &f) {
+  switch (e.kind) {
+  case Expr::Kind::Bool:
+  case Expr::Kind::Int:
+  case Expr::Kind::Float:
+  case Expr::Kind::String:
+  case Expr::Kind::Ticks: return literal(e);
+  case Expr::Kind::Var: return f.vars.at(static_cast<std::size_t>(e.index));
+  case Expr::Kind::Const: {
+    const model::Const &k = f.model.consts.at(static_cast<std::size_t>(e.index));
+    return convert(literal(k.value), k.type, e.range);
+  }
+  case Expr::Kind::Elapsed: return Value::of_ticks(f.timers.at(static_cast<std::size_t>(e.index)));
+  case Expr::Kind::Call: return call(e, f);
+  case Expr::Kind::Unary: return unary(e, f);
+  case Expr::Kind::Binary: return binary(e, f);
+  case Expr::Kind::Paren: return evaluate(e.args.at(0), f);
+  case Expr::Kind::Config: break;
+  }
+  throw RuntimeError(e.range, "a config entry has no value in a chart");
+}
+
+void execute(const std::vector<model::Stmt> &block, Frame &f) {
+  for (const model::Stmt &s : block) {
+    switch (s.kind) {
+    case model::Stmt::Kind::Call: evaluate(s.call, f); break;
+    case model::Stmt::Kind::Assign: {
+      Value &slot = f.vars.at(static_cast<std::size_t>(s.var));
+      Value v = evaluate(s.value, f);
+      if (s.op != AssignOp::Set) v = arith(s.op == AssignOp::Add ? BinaryOp::Add : BinaryOp::Sub, slot, v, s.range);
+      slot = convert(v, slot.type, s.range);
+      if (f.log)
+        f.log->add(EventKind::Assign, f.depth,
+                   fmt::format("set {} = {}", f.chart.vars.at(static_cast<std::size_t>(s.var)).name, format_value(slot)));
+      break;
+    }
+    case model::Stmt::Kind::Verbatim:
+      if (f.log) f.log->add(EventKind::Note, f.depth, "note verbatim code is not run by the interpreter");
+      break;
+    }
+  }
+}
+
+} // namespace gfec::interp

@@ -1,0 +1,42 @@
+// Expressions and statements of a chart (LANGUAGE.md §4) with C's semantics: the usual
+// arithmetic conversions, 32-bit ints, float arithmetic in float, `&&` and `||` short-circuit,
+// and everything else evaluated left to right (the language fixes the order C leaves open).
+#pragma once
+
+#include "event_log.h"
+#include "model.h"
+#include "value.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace gfec::interp {
+
+/// What the interpreter calls for the interface functions: an input trace in `gfec run`,
+/// anything a test likes.
+class Environment {
+public:
+  virtual ~Environment() = default;
+  /// The result of interface function `function` (an index into Model::functions) called with
+  /// `args` (already converted to its parameter types) during tick `tick` (counted from 1).
+  /// The interpreter converts the result to the function's type; a void function's is ignored.
+  virtual Value call(int function, const std::vector<Value> &args, std::uint64_t tick) = 0;
+};
+
+/// Everything an expression can read or change while it is evaluated.
+struct Frame {
+  const model::Model &model;
+  const model::Chart &chart;
+  std::vector<Value> &vars;                   ///< by Chart::vars index
+  const std::vector<std::uint32_t> &timers;   ///< ticks, by place index
+  Environment *env = nullptr;                 ///< null: a constant expression, where calls are errors
+  EventLog *log = nullptr;                    ///< null: log nothing
+  std::uint64_t tick = 0;
+  int depth = 1;                              ///< indentation of the events logged
+};
+
+Value evaluate(const model::Expr &e, Frame &f);
+/// Runs the statements in order. Verbatim code cannot be run: it is skipped with a note.
+void execute(const std::vector<model::Stmt> &block, Frame &f);
+
+} // namespace gfec::interp

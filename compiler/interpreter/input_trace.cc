@@ -1,0 +1,157 @@
+#include "input_trace.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <climits>
+#include <cmath>
+#include <cstdlib>
+#include <optional>
+#include <string_view>
+
+namespace gfec::interp {
+
+namespace {
+
+struct Field {
+  std::string_view text;
+  SourceRange range;
+};
+
+/// One CSV line split at commas, each field trimmed of blanks, with its range in the file.
+std::vector<Field> split(std::string_view line, std::uint32_t offset, FileId file) {
+  std::vector<Field> fields;
+  std::size_t start = 0;
+  for (;;) {
+    std::size_t comma = line.find(',', start);
+    std::size_t end = comma == std::string_view::npos ? line.size() : comma;
+    std::size_t b = start, e = end;
+    while (b < e && (line[b] == ' ' || line[b] == '\t')) ++b;
+    while (e > b && (line[e - 1] == ' ' || line[e - 1] == '\t' || line[e - 1] == '\r')) --e;
+    fields.push_back({line.substr(b, e - b),
+                      {file, offset + static_cast<std::uint32_t>(b), offset + static_cast<std::uint32_t>(e)}});
+    if (comma == std::string_view::npos) break;
+    start = comma + 1;
+  }
+  return fields;
+}
+
+bool skipped(std::string_view line) {
+  std::size_t b = line.find_first_not_of(" \t\r");
+  return b == std::string_view::npos || line[b] == '#';
+}
+
+/// `text` as a value of type `t`, or nothing if it is not one.
+std::optional<Value> parse_value(std::string_view text, model::Type t) {
+  std::string s(text);
+  if (s.empty()) return std::nullopt;
+  if (t == model::Type::Bool) {
+    if (s == "1" || s == "true") return Value::of_bool(true);
+    if (s == "0" || s == "false") return Value::of_bool(false);
+    return std::nullopt;
+  }
+  char *end = nullptr;
+  errno = 0;
+  if (t == model::Type::Int) {
+    long long v = std::strtoll(s.c_str(), &end, 10);
+    if (errno || *end || v < INT_MIN || v > INT_MAX) return std::nullopt;
+    return Value::of_int(static_cast<std::int32_t>(v));
+  }
+  double v = std::strtod(s.c_str(), &end);
+  if (errno || *end || !std::isfinite(v)) return std::nullopt;
+  if (t == model::Type::Float) {
+    float f = static_cast<float>(v);
+    if (!std::isfinite(f)) return std::nullopt;
+    return Value::of_float(f);
+  }
+  return Value::of_double(v);
+}
+
+constexpr int kTickColumn = -1;
+constexpr int kBadColumn = -2;
+
+int find_function(const model::Model &m, std::string_view name) {
+  for (std::size_t i = 0; i < m.functions.size(); ++i)
+    if (m.functions[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+} // namespace
+
+InputTrace::InputTrace(const model::Model &model) : model_(model) {}
+
+InputTrace::InputTrace(const model::Model &model, const SourceManager &sources, FileId file, Diagnostics &diag)
+    : model_(model) {
+  const std::string &text = sources.file(file).text();
+  bool header = true;
+  std::size_t at = 0;
+  while (at < text.size()) {
+    std::size_t nl = text.find('\n', at);
+    std::size_t end = nl == std::string::npos ? text.size() : nl;
+    std::string_view line(text.data() + at, end - at);
+    const auto offset = static_cast<std::uint32_t>(at);
+    at = end + 1;
+    if (skipped(line)) continue;
+    std::vector<Field> fields = split(line, offset, file);
+    if (header) {
+      header = false;
+      for (const Field &f : fields) {
+        int fn = find_function(model, f.text);
+        if (f.text == "tick") {
+          columns_.push_back(kTickColumn);
+          continue;
+        }
+        if (fn < 0) {
+          diag.error(f.range, "trace", fmt::format("no interface function '{}' for this column", f.text));
+          fn = kBadColumn;
+        } else if (model.functions[static_cast<std::size_t>(fn)].result == model::Type::Void) {
+          diag.error(f.range, "trace", fmt::format("'{}' returns nothing, so it takes no input", f.text));
+          fn = kBadColumn;
+        } else {
+          for (std::size_t c = 0; c < columns_.size(); ++c)
+            if (columns_[c] == fn) diag.error(f.range, "trace", fmt::format("a second column for '{}'", f.text));
+        }
+        columns_.push_back(fn);
+      }
+      continue;
+    }
+    if (fields.size() != columns_.size()) {
+      diag.error({file, offset, offset + static_cast<std::uint32_t>(line.size())}, "trace",
+                 fmt::format("{} values where the header names {} columns", fields.size(), columns_.size()));
+      continue;
+    }
+    std::vector<Value> row;
+    for (std::size_t c = 0; c < fields.size(); ++c) {
+      int fn = columns_[c];
+      if (fn == kBadColumn) {  // reported at the header
+        row.push_back(Value::zero(model::Type::Int));
+        continue;
+      }
+      model::Type t = fn < 0 ? model::Type::Int : model.functions[static_cast<std::size_t>(fn)].result;
+      std::optional<Value> v = parse_value(fields[c].text, t);
+      if (!v) {
+        diag.error(fields[c].range, "trace",
+                   fmt::format("'{}' is not a value of type '{}'{}", fields[c].text, model::type_name(t),
+                               fn < 0 ? " (the tick column)"
+                                      : fmt::format(" for '{}'", model.functions[static_cast<std::size_t>(fn)].name)));
+        v = Value::zero(t);
+      }
+      row.push_back(*v);
+    }
+    rows_.push_back(std::move(row));
+  }
+}
+
+Value InputTrace::value(int function, std::uint64_t tick) const {
+  const model::Function &fn = model_.functions.at(static_cast<std::size_t>(function));
+  if (rows_.empty() || tick == 0) return Value::zero(fn.result);
+  std::size_t row = static_cast<std::size_t>(std::min<std::uint64_t>(tick, rows_.size()) - 1);
+  for (std::size_t c = 0; c < columns_.size(); ++c)
+    if (columns_[c] == function) return rows_[row][c];
+  return Value::zero(fn.result);
+}
+
+Value InputTrace::call(int function, const std::vector<Value> &, std::uint64_t tick) { return value(function, tick); }
+
+} // namespace gfec::interp

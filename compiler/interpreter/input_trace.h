@@ -1,0 +1,41 @@
+// The input trace of a run (docs/verification.md): CSV with a header row naming interface
+// functions and one row per tick, giving what each function returns during that tick.
+//
+//   # comment lines and blank lines are skipped
+//   tick, Left_IR_Black, Left_IR_White, Distance
+//   1,    1,             0,             0.25
+//   2,    0,             1,             0.5
+//
+// A `tick` column is allowed and ignored (it is for people). A function without a column
+// returns 0 (false). Past the last row, the last row holds (sensors keep their value).
+#pragma once
+
+#include "diagnostics.h"
+#include "evaluator.h"
+
+#include <string>
+#include <vector>
+
+namespace gfec::interp {
+
+class InputTrace : public Environment {
+public:
+  /// Reads the CSV file `file` of `sources` against the model's interface functions. Malformed
+  /// lines, unknown or void functions and values of the wrong type are reported to `diag`,
+  /// located in the CSV file.
+  InputTrace(const model::Model &model, const SourceManager &sources, FileId file, Diagnostics &diag);
+  /// No inputs: every function returns 0 (false).
+  explicit InputTrace(const model::Model &model);
+
+  std::size_t rows() const { return rows_.size(); }
+  /// What `function` returns during `tick` (counted from 1).
+  Value value(int function, std::uint64_t tick) const;
+  Value call(int function, const std::vector<Value> &args, std::uint64_t tick) override;
+
+private:
+  const model::Model &model_;
+  std::vector<int> columns_;              ///< column -> function index; -1 the tick column, -2 a bad one
+  std::vector<std::vector<Value>> rows_;  ///< by row, by column
+};
+
+} // namespace gfec::interp

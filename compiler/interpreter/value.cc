@@ -1,0 +1,116 @@
+#include "value.h"
+
+#include <fmt/format.h>
+
+#include <cfloat>
+#include <climits>
+#include <cmath>
+#include <cstdio>
+
+namespace gfec::interp {
+
+Value Value::of_bool(bool v) {
+  Value r;
+  r.type = model::Type::Bool;
+  r.b = v;
+  return r;
+}
+
+Value Value::of_int(std::int32_t v) {
+  Value r;
+  r.type = model::Type::Int;
+  r.i = v;
+  return r;
+}
+
+Value Value::of_float(float v) {
+  Value r;
+  r.type = model::Type::Float;
+  r.f = v;
+  return r;
+}
+
+Value Value::of_double(double v) {
+  Value r;
+  r.type = model::Type::Double;
+  r.f = v;
+  return r;
+}
+
+Value Value::of_ticks(std::uint64_t v) {
+  Value r;
+  r.type = model::Type::Duration;
+  r.i = static_cast<std::int64_t>(v);
+  return r;
+}
+
+Value Value::zero(model::Type t) {
+  switch (t) {
+  case model::Type::Bool: return of_bool(false);
+  case model::Type::Float: return of_float(0);
+  case model::Type::Double: return of_double(0);
+  case model::Type::Duration: return of_ticks(0);
+  default: return of_int(0);
+  }
+}
+
+namespace {
+
+/// A floating value as an int, as C truncates it; beyond int's range C leaves it undefined.
+Value to_int(double d, SourceRange where) {
+  // Truncation first: -0.9 becomes 0, which fits.
+  double t = std::trunc(d);
+  if (!(t >= static_cast<double>(INT_MIN) && t <= static_cast<double>(INT_MAX)))
+    throw RuntimeError(where, fmt::format("{} does not fit in an int (undefined behaviour in C)", d));
+  return Value::of_int(static_cast<std::int32_t>(t));
+}
+
+Value to_float(double d, SourceRange where) {
+  // A finite double beyond float's range does not convert (C11 6.3.1.5); one that rounds to the
+  // largest float does.
+  if (std::isfinite(d) && std::fabs(d) > static_cast<double>(FLT_MAX) &&
+      !std::isfinite(static_cast<float>(d)))
+    throw RuntimeError(where, fmt::format("{} does not fit in a float (undefined behaviour in C)", d));
+  return Value::of_float(static_cast<float>(d));
+}
+
+} // namespace
+
+Value convert(const Value &v, model::Type to, SourceRange where) {
+  if (v.type == to) return v;
+  switch (to) {
+  case model::Type::Int:
+    if (v.type == model::Type::Float || v.type == model::Type::Double) return to_int(v.f, where);
+    if (v.type == model::Type::Bool) return Value::of_int(v.b ? 1 : 0);
+    break;
+  case model::Type::Float:
+    if (v.type == model::Type::Int) return Value::of_float(static_cast<float>(v.i));
+    if (v.type == model::Type::Double) return to_float(v.f, where);
+    break;
+  case model::Type::Double:
+    if (v.type == model::Type::Int) return Value::of_double(static_cast<double>(v.i));
+    if (v.type == model::Type::Float) return Value::of_double(v.f);
+    break;
+  case model::Type::Bool:
+    // The validator keeps numbers out of bools; a stray one converts as C's _Bool would.
+    if (v.type == model::Type::Int || v.type == model::Type::Duration) return Value::of_bool(v.i != 0);
+    if (v.type == model::Type::Float || v.type == model::Type::Double) return Value::of_bool(v.f != 0);
+    break;
+  default:
+    break;
+  }
+  throw RuntimeError(where, fmt::format("cannot convert a value of type '{}' to '{}'", model::type_name(v.type),
+                                        model::type_name(to)));
+}
+
+std::string format_value(const Value &v) {
+  char buffer[64];
+  switch (v.type) {
+  case model::Type::Bool: return v.b ? "true" : "false";
+  case model::Type::Float: std::snprintf(buffer, sizeof buffer, "%.9g", v.f); return buffer;
+  case model::Type::Double: std::snprintf(buffer, sizeof buffer, "%.17g", v.f); return buffer;
+  default: return std::to_string(v.i);
+  }
+}
+
+} // namespace gfec::interp

@@ -1,0 +1,46 @@
+// Values as the generated C sees them: bool, 32-bit int, float, double and durations (unsigned
+// tick counts). Whatever C leaves undefined (int overflow, division by zero, a float that does
+// not fit an int) is not given a meaning: it raises RuntimeError, so the interpreter never
+// agrees with an engine by accident.
+#pragma once
+
+#include "model.h"
+#include "source.h"
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+namespace gfec::interp {
+
+struct Value {
+  model::Type type = model::Type::Int;
+  bool b = false;      ///< Bool
+  std::int64_t i = 0;  ///< Int (always within int's 32 bits), Duration (ticks)
+  double f = 0;        ///< Float (always a value a float holds) and Double
+
+  static Value of_bool(bool v);
+  static Value of_int(std::int32_t v);
+  static Value of_float(float v);
+  static Value of_double(double v);
+  static Value of_ticks(std::uint64_t v);
+  /// Zero (false) of type `t`: an unset var, a missing input column.
+  static Value zero(model::Type t);
+};
+
+/// Behaviour C leaves undefined or unportable, at the expression that would cause it.
+class RuntimeError : public std::runtime_error {
+public:
+  RuntimeError(SourceRange range, const std::string &message) : std::runtime_error(message), range(range) {}
+  SourceRange range;
+};
+
+/// `v` converted to `to` as C converts on assignment and argument passing. A number that does
+/// not fit (a float into an int, a double beyond float's range) raises RuntimeError at `where`.
+Value convert(const Value &v, model::Type to, SourceRange where);
+
+/// The value as the log prints it: `true`/`false`, `42`, floats with 9 and doubles with 17
+/// significant digits (printf's `%.9g` / `%.17g`, so that an engine prints the same).
+std::string format_value(const Value &v);
+
+} // namespace gfec::interp

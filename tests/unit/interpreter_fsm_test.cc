@@ -1,0 +1,110 @@
+// The reference interpreter on fsm machines: LANGUAGE.md §7.
+#include "interpreter_support.h"
+
+using namespace gfec;
+using test::compile;
+using test::run_log;
+using test::ScriptedEnv;
+
+namespace {
+
+const char *kCleanBot = R"(
+interface CleanBot {
+  void DriveToItem(); void PickUp(); void Transport(); void PlaceItem();
+  bool Arrived(); bool Holding(); bool FarFromDestination(); bool ItemPlaced();
+  bool ItemAtDestination(); bool Stuck();
+}
+)";
+
+const char *kCleanUp = R"(
+fsm CleanUp {
+  initial state Z0 { DriveToItem(); }
+  state Z1 { PickUp(); }
+  state Z2 { Transport(); }
+  state Z3 { PlaceItem(); }
+  success state Done post ItemAtDestination();
+  failure state Failed;
+
+  Z0 -> Z1 when Arrived();
+  Z1 -> Z2 when Holding() && FarFromDestination();
+  Z1 -> Z3 when Holding() && !FarFromDestination();
+  Z2 -> Z3 when Arrived();
+  Z2 -> Z1 when !Holding();
+  Z3 -> Done when ItemPlaced();
+  Z3 -> Z1 when !Holding() && !ItemPlaced();
+  Z0 -> Failed when Stuck();
+}
+)";
+
+} // namespace
+
+TEST_CASE("interpreter fsm: one transition a tick, the first that holds, then the new state's action") {
+  auto c = compile(kCleanUp, kCleanBot);
+  ScriptedEnv env(*c);
+  env.script("Arrived", {0, 1, 1, 1}).script("Holding", {0, 0, 1, 1}).script("FarFromDestination", {0, 0, 0, 0});
+  env.script("ItemPlaced", {0, 0, 0, 1});
+  CHECK(run_log(*c, env, 5) ==
+        "tick 1\n"
+        "call Arrived() = false\n"
+        "call Stuck() = false\n"
+        "call DriveToItem()\n"
+        "av 1 0 0 0 0 0\nstate Z0 running\n"
+        "tick 2\n"
+        "call Arrived() = true\n"  // Z0 -> Z1 fires; Z0 -> Failed is not tried
+        "call PickUp()\n"
+        "av 0 1 0 0 0 0\nstate Z1 running\n"
+        "tick 3\n"
+        "call Holding() = true\n"
+        "call FarFromDestination() = false\n"
+        "call Holding() = true\n"
+        "call FarFromDestination() = false\n"
+        "call PlaceItem()\n"
+        "av 0 0 0 1 0 0\nstate Z3 running\n"
+        "tick 4\n"
+        "call ItemPlaced() = true\n"
+        "av 0 0 0 0 1 0\nstate Done succeeded\n"
+        "tick 5\n"  // in a terminal state nothing happens
+        "av 0 0 0 0 1 0\nstate Done succeeded\n");
+}
+
+TEST_CASE("interpreter fsm: failure, hooks and the postcondition check") {
+  auto c = compile(kCleanUp, kCleanBot);
+  ScriptedEnv env(*c);
+  env.script("Stuck", {1});
+  CHECK(run_log(*c, env, 1, {true, false}) ==
+        "tick 1\ncall Arrived() = false\ncall Stuck() = true\nlost Z0\ngained Failed\nav 0 0 0 0 0 1\nstate Failed failed\n");
+
+  ScriptedEnv done(*c);
+  done.script("Arrived", {1}).script("Holding", {1}).script("ItemPlaced", {1});
+  Diagnostics diag;
+  interp::EngineOptions checks;
+  checks.check_post = true;
+  interp::RunResult r = interp::run_chart(c->model, 0, done, 3, checks, diag);
+  std::string log = r.log.render({false, true});
+  CHECK(log.find("fire T5: Z3 -> Done\nexit Z3\nentry Done\ncall ItemAtDestination() = false\npost Done = false\n") !=
+        std::string::npos);
+}
+
+TEST_CASE("interpreter fsm: timers restart on entry; vars persist") {
+  auto c = compile(R"(
+fsm Blink {
+  period 100ms;
+  var int count = 0;
+  initial state Off { count += 1; Show(count); }
+  state On { Show(100); }
+  success state Enough;
+  Off -> Enough when count >= 3;
+  Off -> On when elapsed(Off) >= 200ms;
+  On -> Off;
+}
+)",
+                   "interface Bot { void Show(int n); }");
+  ScriptedEnv env(*c);
+  CHECK(run_log(*c, env, 6) ==
+        "tick 1\ncall Show(1)\nav 1 0 0\nstate Off running\n"  // elapsed(Off) = 1 < 2
+        "tick 2\ncall Show(100)\nav 0 1 0\nstate On running\n"
+        "tick 3\ncall Show(2)\nav 1 0 0\nstate Off running\n"  // entered: its timer restarts
+        "tick 4\ncall Show(3)\nav 1 0 0\nstate Off running\n"  // elapsed 1
+        "tick 5\nav 0 0 1\nstate Enough succeeded\n"            // count >= 3 is tried first
+        "tick 6\nav 0 0 1\nstate Enough succeeded\n");
+}

@@ -1,0 +1,220 @@
+// The reference interpreter on sfc charts: each test pins one rule of LANGUAGE.md §5.1.
+#include "interpreter_support.h"
+
+using namespace gfec;
+using test::compile;
+using test::run_log;
+using test::ScriptedEnv;
+
+namespace {
+
+const char *kLineBot = R"(
+interface LineBot {
+  bool Left_IR_Black(); bool Left_IR_White(); bool Right_IR_Black(); bool Right_IR_White();
+  void Left_FW(); void Left_Stop(); void Right_FW(); void Right_Stop();
+}
+)";
+
+const char *kLineFollower = R"(
+sfc LineFollower {
+  initial place LeftFw    { Left_FW(); }
+  place        LeftStop   { Left_Stop(); }
+  initial place RightFw   { Right_FW(); }
+  place        RightStop  { Right_Stop(); }
+  transition LeftFw   -> LeftStop  when Left_IR_Black();
+  transition LeftStop -> LeftFw    when Left_IR_White();
+  transition RightFw  -> RightStop when Right_IR_Black();
+  transition RightStop -> RightFw  when Right_IR_White();
+}
+)";
+
+} // namespace
+
+TEST_CASE("interpreter sfc: the line follower, observable log") {
+  auto c = compile(kLineFollower, kLineBot);
+  ScriptedEnv env(*c);
+  env.script("Left_IR_Black", {0, 1, 0}).script("Left_IR_White", {0, 0, 1});
+  CHECK(run_log(*c, env, 3) ==
+        "tick 1\n"
+        "call Left_IR_Black() = false\n"
+        "call Right_IR_Black() = false\n"
+        "call Left_FW()\n"
+        "call Right_FW()\n"
+        "av 1 0 1 0\n"
+        "tick 2\n"
+        "call Left_IR_Black() = true\n"
+        "call Right_IR_Black() = false\n"
+        "call Left_Stop()\n"
+        "call Right_FW()\n"
+        "av 0 1 1 0\n"
+        "tick 3\n"
+        "call Left_IR_White() = true\n"  // LeftFw -> LeftStop is closed: its sensor is not read
+        "call Right_IR_Black() = false\n"
+        "call Left_FW()\n"
+        "call Right_FW()\n"
+        "av 1 0 1 0\n");
+}
+
+TEST_CASE("interpreter sfc: every layer, indented, as gfec run prints it") {
+  auto c = compile(kLineFollower, kLineBot);
+  ScriptedEnv env(*c);
+  env.script("Left_IR_Black", {1});
+  CHECK(run_log(*c, env, 1, {true, true, true}) ==
+        "tick 1\n"
+        "  entry LeftFw\n"
+        "  entry RightFw\n"
+        "    call Left_IR_Black() = true\n"
+        "  cond T0 = true\n"
+        "  fire T0: LeftFw -> LeftStop\n"
+        "    call Right_IR_Black() = false\n"
+        "  cond T2 = false\n"
+        "  exit LeftFw\n"
+        "  entry LeftStop\n"
+        "  lost LeftFw\n"
+        "  gained LeftStop\n"
+        "  enabled T1\n"
+        "  action LeftStop\n"
+        "    call Left_Stop()\n"
+        "  action RightFw\n"
+        "    call Right_FW()\n"
+        "  av 0 1 1 0\n");
+}
+
+TEST_CASE("interpreter sfc: activation produced in a tick is consumed only in the next") {
+  auto c = compile(R"(
+sfc Chain {
+  initial place A;
+  place B;
+  place C;
+  A -> B;
+  B -> C;
+}
+)");
+  ScriptedEnv env(*c);
+  CHECK(run_log(*c, env, 3) == "tick 1\nav 0 1 0\ntick 2\nav 0 0 1\ntick 3\nav 0 0 1\n");
+}
+
+TEST_CASE("interpreter sfc: conflicts go to the first open transition whose condition holds") {
+  auto c = compile(R"(
+sfc Pick {
+  initial place A;
+  place B;
+  place C;
+  transition First: A -> B when Go(1);
+  transition Second: A -> C when Go(2);
+  transition Third: A -> C;
+}
+)",
+                   "interface Bot { bool Go(int which); }");
+  ScriptedEnv env(*c);
+  env.script("Go", {1});
+  // First takes A's only activation: Second is no longer open, so Go(2) is never called.
+  CHECK(run_log(*c, env, 1) == "tick 1\ncall Go(1) = true\nav 0 1 0\n");
+  ScriptedEnv no(*c);
+  CHECK(run_log(*c, no, 1) == "tick 1\ncall Go(1) = false\ncall Go(2) = false\nav 0 0 1\n");
+}
+
+TEST_CASE("interpreter sfc: fork, join and counters above one") {
+  auto c = compile(R"(
+sfc Par {
+  initial place S;
+  place L;
+  place R;
+  place J;
+  transition Fork: S -> (L, R);
+  transition Join: (L, R) -> J;
+  transition Again: J -> S;
+  transition Extra: J -> L;
+}
+)");
+  ScriptedEnv env(*c);
+  // Tick 1 forks; tick 2 joins; tick 3 J goes back to S (Again wins the conflict); tick 4
+  // forks again.
+  CHECK(run_log(*c, env, 4) == "tick 1\nav 0 1 1 0\ntick 2\nav 0 0 0 1\ntick 3\nav 1 0 0 0\ntick 4\nav 0 1 1 0\n");
+
+  auto u = compile(R"(
+sfc Pump {
+  initial place S;
+  place P;
+  transition S -> (S, P);
+}
+)");
+  ScriptedEnv none(*u);
+  // S loses and regains its activation each tick (no exit, no entry); P counts up.
+  CHECK(run_log(*u, none, 3, {true, true}) ==
+        "tick 1\nentry S\nfire T0: S -> (S, P)\nentry P\ngained P\nav 1 1\n"
+        "tick 2\nfire T0: S -> (S, P)\nav 1 2\n"
+        "tick 3\nfire T0: S -> (S, P)\nav 1 3\n");
+}
+
+TEST_CASE("interpreter sfc: all exits before all entries; a place that loses and regains stays") {
+  auto c = compile(R"(
+sfc Blocks {
+  initial place A { entry { Log(1); } Log(2); exit { Log(3); } }
+  initial place B { exit { Log(4); } }
+  place C { entry { Log(5); } }
+  transition A -> A;
+  transition B -> C;
+}
+)",
+                   "interface Bot { void Log(int what); }");
+  ScriptedEnv env(*c);
+  CHECK(run_log(*c, env, 2) ==
+        "tick 1\n"
+        "call Log(1)\n"  // the first tick begins with the initial places' entry blocks
+        "call Log(4)\n"  // B exits, then C enters; A lost and regained: nothing
+        "call Log(5)\n"
+        "call Log(2)\n"
+        "av 1 0 1\n"
+        "tick 2\n"
+        "call Log(2)\n"
+        "av 1 0 1\n");
+}
+
+TEST_CASE("interpreter sfc: timers count whole ticks and restart on entry") {
+  auto c = compile(R"(
+sfc Timed {
+  period 10ms;
+  initial place A { Tick(); }
+  place B;
+  transition A -> B when elapsed(A) >= 25ms;
+  transition B -> A;
+}
+)",
+                   "interface Bot { void Tick(); }");
+  ScriptedEnv env(*c);
+  // 25ms is 3 ticks (rounded up). elapsed(A) is 1 in tick 1 (step 1 counts before the
+  // transitions), so A -> B fires in tick 3; A is back in tick 4 with its timer at 0.
+  CHECK(run_log(*c, env, 8) ==
+        "tick 1\ncall Tick()\nav 1 0\ntick 2\ncall Tick()\nav 1 0\ntick 3\nav 0 1\n"
+        "tick 4\ncall Tick()\nav 1 0\ntick 5\ncall Tick()\nav 1 0\ntick 6\ncall Tick()\nav 1 0\n"
+        "tick 7\nav 0 1\ntick 8\ncall Tick()\nav 1 0\n");
+}
+
+TEST_CASE("interpreter sfc: the engine API mirrors the C engine's") {
+  auto c = compile(R"(
+sfc Api {
+  var int n = 2;
+  initial place A { n += 1; }
+  place B;
+  A -> B when n >= 4;
+}
+)");
+  ScriptedEnv env(*c);
+  interp::Engine e(c->model, 0);
+  CHECK(e.activation(0) == 1);
+  CHECK(e.activation(1) == 0);
+  CHECK(e.activation(7) == 0);
+  CHECK(e.vars().at(0).i == 2);
+  e.run(env, nullptr);
+  CHECK(e.vars().at(0).i == 3);
+  e.run(env, nullptr);
+  e.run(env, nullptr);
+  CHECK(e.activation(0) == 0);
+  CHECK(e.activation(1) == 1);
+  CHECK(e.ticks() == 3);
+  e.init();
+  CHECK(e.activation(0) == 1);
+  CHECK(e.vars().at(0).i == 2);
+  CHECK(e.ticks() == 0);
+}

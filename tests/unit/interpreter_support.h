@@ -1,0 +1,103 @@
+// What the interpreter's and the analyses' tests share: chart text through the real front end
+// and validator to a model, and an environment scripted per function and tick.
+#pragma once
+
+#include "diagnostic_printer.h"
+#include "interpreter/engine.h"
+#include "interpreter/run_chart.h"
+#include "loader.h"
+#include "validate.h"
+
+#include <catch2/catch.hpp>
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace gfec::test {
+
+/// A program compiled to its model; the model points into `sources`, so this never moves.
+struct Compiled {
+  SourceManager sources;
+  Diagnostics diag;
+  LoadResult loaded;
+  model::Model model;
+
+  explicit Compiled(const std::string &text, const std::string &iface = "", WarningOptions w = {}) : diag(w) {
+    MemoryFileSystem fs;
+    fs.add("t.sfc", iface.empty() ? text : "import \"bot.iface\";\n" + text);
+    fs.add("bot.iface", iface);
+    loaded = load_program("t.sfc", {}, fs, sources, diag);
+    if (!diag.has_errors()) model = validate(loaded.program, sources, diag);
+  }
+  Compiled(const Compiled &) = delete;
+
+  std::string diagnostics() const {
+    std::string out;
+    for (const auto &d : diag.all()) out += render_text(d, sources);
+    return out;
+  }
+  int chart(const std::string &name) const {
+    for (std::size_t i = 0; i < model.charts.size(); ++i)
+      if (model.charts[i].name == name) return static_cast<int>(i);
+    FAIL("no chart " << name);
+    return -1;
+  }
+  int function(const std::string &name) const {
+    for (std::size_t i = 0; i < model.functions.size(); ++i)
+      if (model.functions[i].name == name) return static_cast<int>(i);
+    return -1;
+  }
+};
+
+inline std::unique_ptr<Compiled> compile(const std::string &text, const std::string &iface = "") {
+  auto c = std::make_unique<Compiled>(text, iface);
+  INFO(c->diagnostics());
+  REQUIRE_FALSE(c->diag.has_errors());
+  return c;
+}
+
+/// Each function returns, at tick t, the t-th value of its script (the last one after the
+/// end; 0 / false without a script).
+class ScriptedEnv : public interp::Environment {
+public:
+  explicit ScriptedEnv(const Compiled &c) : c_(c) {}
+  ScriptedEnv &script(const std::string &fn, std::vector<double> values) {
+    int i = c_.function(fn);
+    REQUIRE(i >= 0);
+    scripts_[i] = std::move(values);
+    return *this;
+  }
+  interp::Value call(int function, const std::vector<interp::Value> &, std::uint64_t tick) override {
+    const model::Type t = c_.model.functions.at(static_cast<std::size_t>(function)).result;
+    auto s = scripts_.find(function);
+    double v = 0;
+    if (s != scripts_.end() && !s->second.empty())
+      v = s->second[std::min<std::size_t>(static_cast<std::size_t>(tick), s->second.size()) - 1];
+    switch (t) {
+    case model::Type::Bool: return interp::Value::of_bool(v != 0);
+    case model::Type::Float: return interp::Value::of_float(static_cast<float>(v));
+    case model::Type::Double: return interp::Value::of_double(v);
+    default: return interp::Value::of_int(static_cast<std::int32_t>(v));
+    }
+  }
+
+private:
+  const Compiled &c_;
+  std::map<int, std::vector<double>> scripts_;
+};
+
+/// Runs the only (or named) chart for `ticks` ticks; the log's selected layers as text.
+inline std::string run_log(const Compiled &c, interp::Environment &env, std::uint64_t ticks,
+                           interp::RenderOptions render = {}, const std::string &chart = "") {
+  Diagnostics diag;
+  int index = chart.empty() ? 0 : c.chart(chart);
+  interp::RunResult r = interp::run_chart(c.model, index, env, ticks, {}, diag);
+  std::string out = r.log.render(render);
+  for (const auto &d : diag.all()) out += render_text(d, c.sources);
+  return out;
+}
+
+} // namespace gfec::test

@@ -1,0 +1,67 @@
+// The CSV input trace of `gfec run`: columns name functions, rows are ticks.
+#include "interpreter/input_trace.h"
+#include "interpreter_support.h"
+
+using namespace gfec;
+using test::compile;
+
+namespace {
+
+const char *kIface = "interface Bot { bool Black(); int Count(); float Dist(); double Exact(); void Go(); }";
+const char *kChart = "sfc S { initial place A { Go(); } }";
+
+struct Trace {
+  std::unique_ptr<test::Compiled> c = compile(kChart, kIface);
+  SourceManager sources;
+  Diagnostics diag;
+  std::unique_ptr<interp::InputTrace> trace;
+
+  explicit Trace(const std::string &csv) {
+    FileId id = sources.add("trace.csv", csv);
+    trace = std::make_unique<interp::InputTrace>(c->model, sources, id, diag);
+  }
+  std::string errors() const {
+    std::string out;
+    for (const auto &d : diag.all()) out += render_text(d, sources);
+    return out;
+  }
+  std::string at(const std::string &fn, std::uint64_t tick) const {
+    return interp::format_value(trace->value(c->function(fn), tick));
+  }
+};
+
+} // namespace
+
+TEST_CASE("input trace: a column per function, a row per tick") {
+  Trace t("# a comment\n\ntick, Black, Dist ,Exact, Count\n1, 1, 0.25, 0.1, -3\n2,false,1e-1,2,4\n");
+  CHECK(t.errors() == "");
+  CHECK(t.trace->rows() == 2);
+  CHECK(t.at("Black", 1) == "true");
+  CHECK(t.at("Black", 2) == "false");
+  CHECK(t.at("Dist", 1) == "0.25");
+  CHECK(t.at("Dist", 2) == "0.100000001");  // read as a float
+  CHECK(t.at("Exact", 1) == "0.10000000000000001");
+  CHECK(t.at("Count", 1) == "-3");
+  // Past the last row the last row holds; a function without a column returns 0.
+  CHECK(t.at("Count", 9) == "4");
+  Trace none("Black\n");
+  CHECK(none.at("Black", 1) == "false");
+  CHECK(none.at("Count", 1) == "0");
+}
+
+TEST_CASE("input trace: errors are located in the CSV file") {
+  Trace t("Black, Nope, Go\n1, 2, 3\nyes, 1, 1\n1, 2\n");
+  CHECK(t.errors() ==
+        "trace.csv:1:8: error: no interface function 'Nope' for this column [trace]\n"
+        " Black, Nope, Go\n"
+        "        ^~~~\n"
+        "trace.csv:1:14: error: 'Go' returns nothing, so it takes no input [trace]\n"
+        " Black, Nope, Go\n"
+        "              ^~\n"
+        "trace.csv:3:1: error: 'yes' is not a value of type 'bool' for 'Black' [trace]\n"
+        " yes, 1, 1\n"
+        " ^~~\n"
+        "trace.csv:4:1: error: 2 values where the header names 3 columns [trace]\n"
+        " 1, 2\n"
+        " ^~~~\n");
+}
