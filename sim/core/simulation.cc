@@ -104,7 +104,7 @@ void Simulation::step_control() {
   const Pose p = pose();
   if (s.bumper_pressed && !was_pressed) {
     ++s.bumps;
-    s.bump_points.push_back({p.x, p.y});
+    s.bump_log.push_back({s.time(), {p.x, p.y}});
   }
   if (!s.left_floor && (std::fabs(p.x) > s.world.size.x / 2 || std::fabs(p.y) > s.world.size.y / 2)) {
     s.left_floor = true;
@@ -183,7 +183,7 @@ double Simulation::sonar_angle() const { return impl_->sonar_angle; }
 double Simulation::sonar_target() const { return impl_->sonar_target; }
 bool Simulation::bumper() const { return impl_->bumper_pressed; }
 int Simulation::bumps() const { return impl_->bumps; }
-const std::vector<Vec2>& Simulation::bump_points() const { return impl_->bump_points; }
+const std::vector<Bump>& Simulation::bump_log() const { return impl_->bump_log; }
 bool Simulation::escape() const { return impl_->time() < impl_->escape_until - 1e-9; }
 int Simulation::escape_presses() const { return impl_->escape_presses; }
 

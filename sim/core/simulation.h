@@ -37,6 +37,12 @@ struct ItemState {
   bool held = false;
 };
 
+/// A bumper press: when and where (robot centre).
+struct Bump {
+  double t = 0;
+  Vec2 at;
+};
+
 /// Something worth telling the person who watches a run (an event fired, the robot left the floor).
 struct SimNote {
   double t = 0;
@@ -93,8 +99,8 @@ class Simulation {
   bool bumper() const;
   /// Bumper presses so far (a press is a control period touched after one not touched).
   int bumps() const;
-  /// Where each bump happened (robot centre), for pictures.
-  const std::vector<Vec2>& bump_points() const;
+  /// When and where each bump happened.
+  const std::vector<Bump>& bump_log() const;
   /// The escape button is held down (for a short moment after a world "press" event).
   bool escape() const;
   int escape_presses() const;

@@ -51,7 +51,7 @@ struct Simulation::Impl {
   bool bumper_touch_period = false;///< any touch during the running control period
   bool bumper_pressed = false;     ///< the last full control period had a touch
   int bumps = 0;
-  std::vector<Vec2> bump_points;
+  std::vector<Bump> bump_log;
 
   double escape_until = -1;
   int escape_presses = 0;

@@ -26,11 +26,13 @@ Engine::Engine(const std::string& library) {
   init_ = reinterpret_cast<void (*)(void*)>(symbol(handle_, kEngineInit, library));
   run_ = reinterpret_cast<void (*)(void*)>(symbol(handle_, kEngineRun, library));
   status_ = reinterpret_cast<int (*)(const void*)>(symbol(handle_, kEngineStatus, library));
+  fini_ = reinterpret_cast<void (*)(void*)>(dlsym(handle_, kEngineFini));
   // max_align_t alignment: vector storage comes from operator new, which guarantees it.
   memory_.assign(size() + 1, 0);
 }
 
 Engine::~Engine() {
+  finish();
   if (handle_) dlclose(handle_);
 }
 

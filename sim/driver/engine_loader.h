@@ -21,9 +21,18 @@ class Engine {
   Engine(const Engine&) = delete;
   Engine& operator=(const Engine&) = delete;
 
-  void init() { init_(state()); }
+  void init() {
+    init_(state());
+    initialised_ = true;
+  }
   void run() { run_(state()); }
-  /// 0 running, 1 succeeded, -1 failed.
+  /// Destroys the engine's state (a plan stops its actor, which halts the robot): call it
+  /// while the robot is still there. The destructor does it if nobody did.
+  void finish() {
+    if (fini_ && initialised_) fini_(state());
+    initialised_ = false;
+  }
+  /// 0 running, 1 succeeded, -1 failed, 2 terminated (a plan ended by a supervisor or stopped).
   int status() const { return status_(state()); }
 
  private:
@@ -33,6 +42,8 @@ class Engine {
   void (*init_)(void*) = nullptr;
   void (*run_)(void*) = nullptr;
   int (*status_)(const void*) = nullptr;
+  void (*fini_)(void*) = nullptr;  // optional
+  bool initialised_ = false;
 };
 
 }  // namespace carbot::driver

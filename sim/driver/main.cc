@@ -66,8 +66,12 @@ int main(int argc, char** argv) {
   o.gfec = env_or("CARBOT_SIM_GFEC", kGfecPath);
   o.cc = env_or("CC", kCCompiler);
   o.cxx = env_or("CXX", kCxxCompiler);
+  o.plans_supported = kPlansSupported;
+  o.runtime_include = kRuntimeInclude;
+  o.toolbox_include = kToolboxInclude;
+  o.cache_dir = env_or("CARBOT_SIM_CACHE", kCacheDir);
 
-  CLI::App app{"Runs a chart (.sfc/.fsm) on the ODE-simulated Carbot in a world, headless and deterministic."};
+  CLI::App app{"Runs a chart (.sfc, .fsm or .plan) on the ODE-simulated Carbot in a world, headless and deterministic."};
   app.add_option("chart", o.chart, "the chart file")->required();
   app.add_option("--world", o.world, "the world file (JSON, see docs/sim.md)")->required();
   app.add_option("--seconds", o.seconds, "simulated time limit")->capture_default_str()->check(CLI::PositiveNumber);
@@ -77,7 +81,10 @@ int main(int argc, char** argv) {
   app.add_option("--physics-step", o.physics_step, "physics step in seconds")->capture_default_str()->check(CLI::PositiveNumber);
   app.add_option("--period", o.period, "control period in seconds (the chart's tick)")->capture_default_str()->check(CLI::PositiveNumber);
   app.add_option("--gfec", o.gfec, "the chart compiler (env CARBOT_SIM_GFEC)")->capture_default_str();
-  app.add_option("--cc", o.cc, "C compiler for the engine (env CC)")->capture_default_str();
+  app.add_option("--cc", o.cc, "C compiler for sfc/fsm engines (env CC)")->capture_default_str();
+  app.add_option("--cxx", o.cxx, "C++ compiler for plan engines (env CXX)")->capture_default_str();
+  app.add_option("--cache", o.cache_dir, "keep compiled engines here for reuse, '' for none (env CARBOT_SIM_CACHE)")
+      ->capture_default_str();
   app.add_option("--work-dir", o.work_dir, "build the engine here and keep it (default: a temporary folder)");
   app.add_flag("-q,--quiet", o.quiet, "no progress display and no summary");
   try {

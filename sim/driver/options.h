@@ -17,6 +17,10 @@ struct Options {
   std::string gfec;           ///< the chart compiler
   std::string cc;             ///< C compiler for engines
   std::string cxx;            ///< C++ compiler for plan engines
+  bool plans_supported = false;  ///< carbot-sim has the toolbox and the afp runtime
+  std::string runtime_include;   ///< afp headers, for plan engines
+  std::string toolbox_include;   ///< carbot_toolbox.h, for plan engines
+  std::string cache_dir;      ///< compiled engines kept here for reuse ("" = no cache)
   std::string work_dir;       ///< keep the generated engine here ("" = a temporary folder, removed)
   bool quiet = false;         ///< no progress, no summary
 };

@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/geometry.h"
+#include "driver/plan_log.h"
 #include "driver/reports.h"
 
 namespace carbot::driver {
@@ -27,6 +28,10 @@ std::string result_json(const RunReport& r) {
                      {"held", it.held},
                      {"distance_to_destination_m", r4(distance(it.at, it.destination))}});
   }
+  json bumps = json::array();
+  for (const Bump& b : sim.bump_log()) bumps.push_back({{"t", r4(b.t)}, {"at", point(b.at)}});
+  json plan = json::array();
+  for (const PlanEvent& e : plan_log()) plan.push_back({{"t", r4(e.t)}, {"event", e.text}});
   json notes = json::array();
   for (const SimNote& n : sim.notes()) notes.push_back({{"t", r4(n.t)}, {"text", n.text}});
   json doc = {
@@ -35,12 +40,14 @@ std::string result_json(const RunReport& r) {
       {"sim_time_s", r4(sim.time())},
       {"status", r.run.status},
       {"bumps", sim.bumps()},
+      {"bump_log", bumps},
       {"escape_presses", sim.escape_presses()},
       {"distance_m", r4(sim.odometer())},
       {"final_pose", {{"x", r4(p.x)}, {"y", r4(p.y)}, {"heading_deg", r4(deg(p.heading))}}},
       {"left_floor", sim.left_floor()},
       {"items", items},
       {"notes", notes},
+      {"plan_log", plan},
       {"physics_step_s", sim.config().physics_step},
       {"control_period_s", sim.config().control_period},
   };

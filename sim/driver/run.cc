@@ -8,6 +8,7 @@
 
 #include "core/geometry.h"
 #include "hal/hal_binding.h"
+#include "driver/plan_log.h"
 #include "robots/robots.h"
 
 namespace carbot::driver {
@@ -48,12 +49,13 @@ TraceRow row(const Simulation& sim) {
 
 }  // namespace
 
-RunResult run_engine(Simulation& sim, Engine& engine, const ChartInfo&, double seconds, bool quiet) {
+RunResult run_engine(Simulation& sim, Engine& engine, const ChartInfo& chart, double seconds, bool quiet) {
   RunResult result;
   const auto start = Clock::now();
   hal::bind(&sim);
   linebot_reset();
   cleanbot_reset();
+  plan_log().clear();
   engine.init();
   Progress progress(!quiet, seconds);
   const long ticks = std::lround(seconds / sim.config().control_period);
@@ -61,19 +63,20 @@ RunResult run_engine(Simulation& sim, Engine& engine, const ChartInfo&, double s
     result.trace.push_back(row(sim));
     // The escape button is the robot's stop button: an sfc or fsm engine does not read it,
     // so the host stops the engine (a plan reads it through CheckEscape instead).
-    if (sim.escape()) {
+    if (chart.kind != "plan" && sim.escape()) {
       result.status = "terminated";
       break;
     }
     if (tick >= ticks) break;
     engine.run();
     if (const int status = engine.status(); status != 0) {
-      result.status = status > 0 ? "succeeded" : "failed";
+      result.status = status == 2 ? "terminated" : status > 0 ? "succeeded" : "failed";
       break;
     }
     sim.step_control();
     progress.update(sim.time());
   }
+  engine.finish();
   sim.stop();
   hal::bind(nullptr);
   result.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();

@@ -146,8 +146,8 @@ void draw_path(Svg& s, const Frame& f, const RunReport& r) {
   }
   s.add(R"(<polyline points="{}" fill="none" stroke="{}" stroke-width="2.2" stroke-opacity="0.85" stroke-linejoin="round"/>)",
         pts, kPath);
-  for (const Vec2& b : r.sim.bump_points()) {
-    const double x = f.x(b.x), y = f.y(b.y);
+  for (const Bump& b : r.sim.bump_log()) {
+    const double x = f.x(b.at.x), y = f.y(b.at.y);
     s.add(R"(<path d="M{:.1f},{:.1f} l10,10 m0,-10 l-10,10" stroke="{}" stroke-width="3" stroke-linecap="round"/>)",
           x - 5, y - 5, kBump);
   }
