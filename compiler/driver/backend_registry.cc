@@ -1,5 +1,9 @@
 #include "backend_registry.h"
 
+#include "c_backend.h"
+#include "dot_backend.h"
+#include "json_backend.h"
+
 namespace gfec {
 
 namespace {
@@ -11,7 +15,10 @@ struct Entry {
 
 // Back ends register here as they land; the driver reports an unknown --emit with this list.
 const Entry kBackends[] = {
-    {nullptr, nullptr},
+    {"c", make_c_backend},        // the GFE-style C engine of an sfc or fsm (docs/c-engine.md)
+    {"json", make_json_backend},  // the validated model for tools (docs/model-json.md)
+    {"dot", make_dot_backend},    // a picture in Graphviz DOT
+    {"svg", make_svg_backend},    // the same picture rendered by Graphviz's dot
 };
 
 } // namespace

@@ -1,13 +1,16 @@
 #include "driver.h"
 
 #include "backend_registry.h"
-#include "diagnostic_printer.h"
+#include "dependency_file.h"
+#include "diagnostic_report.h"
 #include "loader.h"
 #include "output_files.h"
 #include "validate.h"
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <exception>
 #include <ostream>
 
 namespace gfec {
@@ -23,12 +26,6 @@ struct Compilation {
 
   explicit Compilation(const Options &o) : diag(o.warnings, o.error_limit) {}
 };
-
-void print_diagnostics(const Compilation &c, const Options &, std::ostream &err) {
-  for (const auto &d : c.diag.all()) err << render_text(d, c.sources);
-  if (c.diag.limit_reached())
-    err << fmt::format("gfec: compilation stopped after {} errors (-fmax-errors)\n", c.diag.error_count());
-}
 
 /// Runs lexer, parser and validator. False if the input has errors (already reported).
 bool front_end(const std::string &path, const Options &o, Compilation &c) {
@@ -104,13 +101,23 @@ std::string default_output(const std::string &input, const std::string &backend)
   return replace_extension(base_name(input), ext);
 }
 
-int compile(const Options &o, std::ostream &err) {
+/// Adds the -MD dependency file to the outputs: the files written depend on every file read.
+void add_dependency_file(const Options &o, const LoadResult &loaded, std::vector<OutputFile> &outputs) {
+  std::vector<std::string> targets = o.deps.targets;
+  if (targets.empty())
+    for (const auto &f : outputs) targets.push_back(f.path);
+  std::string name = dependency_file_name(o.deps, outputs.front().path);
+  outputs.push_back({name, dependency_rule(targets, loaded.paths, o.deps.phony)});
+}
+
+/// Compiles (or with --check, validates) the one input of `o`; returns its exit code.
+int compile(const Options &o, DiagnosticReport &report) {
   const std::string &input = o.inputs.front();
   Compilation c(o);
   bool ok = front_end(input, o, c);
-  print_diagnostics(c, o, err);
+  report.add(input, c.diag, c.sources);
   if (c.loaded.main_unreadable) {
-    err << fmt::format("gfec: error: cannot read '{}'\n", input);
+    report.tool_error(input, fmt::format("cannot read '{}'", input), false);
     return kExitUsageOrIo;
   }
   if (!ok) return kExitInputError;
@@ -118,33 +125,44 @@ int compile(const Options &o, std::ostream &err) {
 
   Selection s = select(c.model, o);
   if (!s.error.empty()) {
-    err << fmt::format("{}: error: {}\n", input, s.error);
+    report.tool_error(input, s.error, true);
     return kExitUsageOrIo;
   }
   auto backend = make_backend(s.backend);
   if (!backend) {
     std::string known;
     for (const auto &n : backend_names()) known += (known.empty() ? "" : ", ") + n;
-    err << fmt::format("gfec: error: unknown back end '{}' (known: {})\n", s.backend, known);
+    report.tool_error(input, fmt::format("unknown back end '{}' (known: {})", s.backend, known), false);
     return kExitUsageOrIo;
   }
   s.emit.output_path = o.output.empty() ? default_output(input, s.backend) : o.output;
   s.emit.source_name = input;
   s.emit.line_directives = o.line_directives;
-  std::string failure = write_atomically(backend->emit(c.model, s.emit));
+  std::vector<OutputFile> outputs;
+  try {
+    outputs = backend->emit(c.model, s.emit);
+  } catch (const std::exception &e) {
+    // Back ends report no user errors; what reaches here is the environment (e.g. --emit=svg
+    // without Graphviz installed).
+    report.tool_error(input, e.what(), false);
+    return kExitUsageOrIo;
+  }
+  if (o.deps.write && !outputs.empty()) add_dependency_file(o, c.loaded, outputs);
+  std::string failure = write_atomically(outputs);
   if (!failure.empty()) {
-    err << "gfec: error: " << failure << "\n";
+    report.tool_error(input, failure, false);
     return kExitUsageOrIo;
   }
   return kExitOk;
 }
 
-int check_all(const Options &o, std::ostream &err) {
+/// --check: every file is validated and every diagnostic reported; the worst exit code wins.
+int check_all(const Options &o, DiagnosticReport &report) {
   int worst = kExitOk;
   for (const auto &input : o.inputs) {
     Options one = o;
     one.inputs = {input};
-    worst = std::max(worst, compile(one, err));
+    worst = std::max(worst, compile(one, report));
   }
   return worst;
 }
@@ -152,11 +170,14 @@ int check_all(const Options &o, std::ostream &err) {
 } // namespace
 
 int run(const Options &o, std::ostream &, std::ostream &err) {
-  if (o.diagnostics_format != DiagnosticsFormat::Text) {
-    err << "gfec: error: only -fdiagnostics-format=text is available in this build\n";
+  auto report = make_report(o.diagnostics_format, err);
+  int code = o.check_only ? check_all(o, *report) : compile(o, *report);
+  std::string failure = report->finish(code);
+  if (!failure.empty()) {
+    err << "gfec: error: " << failure << "\n";
     return kExitUsageOrIo;
   }
-  return o.check_only ? check_all(o, err) : compile(o, err);
+  return code;
 }
 
 } // namespace gfec

@@ -33,6 +33,48 @@ bool apply_warning_flag(const std::string &flag, WarningOptions &w) {
   return true;
 }
 
+/// Takes gcc's dependency flags out of argv and returns the rest for CLI11.
+///
+/// Why by hand: CLI11 knows single-letter short options ("-W", "-f", "-I", "-o") and long ones
+/// ("--check"), but not gcc's multi-letter single-dash flags: it would read "-MD" as an option
+/// "-M" with the value "D". Makefiles and CMake pass them exactly as they pass them to gcc, so we
+/// accept gcc's spelling: -MD, -MMD (the same here: charts have no system files), -MP, and -MF /
+/// -MT with the value attached ("-MFdeps.d") or as the next argument. "--" ends the scan, as it
+/// ends CLI11's options.
+std::vector<const char *> take_dependency_flags(int argc, const char *const *argv, DependencyOptions &deps,
+                                                std::string &error) {
+  std::vector<const char *> rest;
+  bool options_ended = false;
+  for (int i = 0; i < argc; ++i) {
+    std::string a = argv[i];
+    if (i == 0 || options_ended || a.rfind("-M", 0) != 0) {
+      options_ended = options_ended || (i > 0 && a == "--");
+      rest.push_back(argv[i]);
+      continue;
+    }
+    if (a == "-MD" || a == "-MMD") {
+      deps.write = true;
+    } else if (a == "-MP") {
+      deps.phony = true;
+    } else if (a.rfind("-MF", 0) == 0 || a.rfind("-MT", 0) == 0) {
+      std::string value = a.substr(3);
+      if (value.empty()) {
+        if (i + 1 >= argc) {
+          error = fmt::format("missing file after '{}'", a);
+          return rest;
+        }
+        value = argv[++i];
+      }
+      if (a[2] == 'F') deps.file = value;
+      else deps.targets.push_back(value);
+    } else {
+      error = fmt::format("unknown option '{}' (dependency files: -MD, -MF FILE, -MP, -MT TARGET)", a);
+      return rest;
+    }
+  }
+  return rest;
+}
+
 std::string warning_help() {
   std::string s = "Warnings (-W<name> turns one on, -Wno-<name> off; -Wall all; -Werror makes them errors):\n";
   for (int i = 0; i < static_cast<int>(Warning::Count_); ++i) {
@@ -64,9 +106,20 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
   app.add_option("-f", f_flags, "-fdiagnostics-format=text|json|sarif-stderr|sarif-file, -fmax-errors=N")
       ->type_name("OPTION");
   app.set_version_flag("--version", fmt::format("gfec {}", GFEC_VERSION));
+  app.footer(app.get_footer() + "\nDependency files (as gcc): -MD writes OUTPUT.d (or -MF FILE) for make, listing\n"
+                                "every imported file; -MP adds an empty rule per import; -MT TARGET names the target.\n");
+
+  std::string dep_error;
+  std::vector<const char *> args = take_dependency_flags(argc, argv, o.deps, dep_error);
+  if (!dep_error.empty()) {
+    result.exit_now = true;
+    result.exit_code = 2;
+    result.message = "gfec: error: " + dep_error + "\nRun 'gfec --help' for the options.\n";
+    return result;
+  }
 
   try {
-    app.parse(argc, argv);
+    app.parse(static_cast<int>(args.size()), args.data());
   } catch (const CLI::ParseError &e) {
     result.exit_now = true;
     std::ostringstream out, err;
@@ -107,6 +160,7 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
   if (!o.check_only && o.inputs.size() > 1)
     return usage_error("several input files are only allowed with --check");
   if (o.check_only && !o.output.empty()) return usage_error("--check writes nothing; drop -o");
+  if (o.check_only && o.deps.write) return usage_error("--check writes nothing; drop -MD");
   return result;
 }
 

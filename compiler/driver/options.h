@@ -10,6 +10,14 @@ namespace gfec {
 
 enum class DiagnosticsFormat { Text, Json, SarifStderr, SarifFile };
 
+/// gcc's -MD, -MF, -MP, -MT: a make rule saying which files the outputs were made from.
+struct DependencyOptions {
+  bool write = false;                ///< -MD (or -MMD): write a dependency file beside the outputs
+  std::string file;                  ///< -MF FILE; empty: the primary output with ".d"
+  bool phony = false;                ///< -MP: an empty rule per import, so deleting one breaks no build
+  std::vector<std::string> targets;  ///< -MT TARGET...; empty: every file written
+};
+
 struct Options {
   std::vector<std::string> inputs;
   std::string output;                     ///< -o; empty: derived from the input's name
@@ -21,6 +29,7 @@ struct Options {
   WarningOptions warnings;                ///< -W<name>, -Wno-<name>, -Wall, -Werror
   DiagnosticsFormat diagnostics_format = DiagnosticsFormat::Text;
   std::size_t error_limit = 50;           ///< -fmax-errors=N
+  DependencyOptions deps;                 ///< -MD, -MF, -MP, -MT
 };
 
 /// The result of reading argv: options to run with, or an exit code and text to print now

@@ -1,0 +1,29 @@
+#include "dot_backend.h"
+
+#include "dot_chart.h"
+#include "dot_plan.h"
+
+#include <stdexcept>
+
+namespace gfec {
+
+namespace {
+
+class DotBackend : public Backend {
+public:
+  std::vector<OutputFile> emit(const model::Model &m, const EmitOptions &o) const override {
+    return {{o.output_path, dot_picture(m, o)}};
+  }
+};
+
+} // namespace
+
+std::string dot_picture(const model::Model &m, const EmitOptions &o) {
+  if (o.chart >= 0) return dot::chart_picture(m, m.charts.at(static_cast<std::size_t>(o.chart)));
+  if (o.plan >= 0) return dot::plan_picture(m, m.plans.at(static_cast<std::size_t>(o.plan)));
+  throw std::invalid_argument("dot back end: no chart or plan chosen");
+}
+
+std::unique_ptr<Backend> make_dot_backend() { return std::make_unique<DotBackend>(); }
+
+} // namespace gfec

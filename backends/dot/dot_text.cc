@@ -1,0 +1,63 @@
+#include "dot_text.h"
+
+#include <fmt/format.h>
+
+#include <cctype>
+
+namespace gfec::dot {
+
+std::string quote(const std::string &text) {
+  std::string out = "\"";
+  for (char c : text) {
+    if (c == '"' || c == '\\') out += '\\';
+    if (c == '\n') {
+      out += "\\n";
+      continue;
+    }
+    out += c;
+  }
+  return out + "\"";
+}
+
+std::string source_text(const model::Model &m, const SourceRange &range) {
+  if (!m.sources || range.file >= m.sources->size() || range.end <= range.begin) return {};
+  const std::string &text = m.sources->file(range.file).text();
+  if (range.end > text.size()) return {};
+  std::string out;
+  bool space = false;
+  for (std::uint32_t i = range.begin; i < range.end; ++i) {
+    if (std::isspace(static_cast<unsigned char>(text[i]))) {
+      space = !out.empty();
+      continue;
+    }
+    if (space) out += ' ';
+    space = false;
+    out += text[i];
+  }
+  return out;
+}
+
+std::string block_text(const model::Model &m, const std::vector<model::Stmt> &block) {
+  std::string out;
+  for (const auto &s : block) {
+    std::string line = s.kind == model::Stmt::Kind::Verbatim ? "%{ ... %}" : source_text(m, s.range);
+    // A statement's range may or may not take in its ';': show it once either way.
+    if (!line.empty() && line.back() != ';' && s.kind != model::Stmt::Kind::Verbatim) line += ';';
+    out += (out.empty() ? "" : "\n") + line;
+  }
+  return out;
+}
+
+std::string preamble(const std::string &title) {
+  return fmt::format("  graph [fontname=\"Helvetica\", fontsize=12, labelloc=t, label={}, nodesep=0.4, ranksep=0.35];\n"
+                     "  node [fontname=\"Helvetica\", fontsize=11];\n"
+                     "  edge [fontname=\"Helvetica\", fontsize=10, arrowsize=0.6];\n",
+                     quote(title));
+}
+
+std::string duration(double ms) {
+  if (ms >= 1000 && static_cast<long long>(ms) % 1000 == 0) return fmt::format("{}s", ms / 1000);
+  return fmt::format("{}ms", ms);
+}
+
+} // namespace gfec::dot

@@ -1,0 +1,280 @@
+#include "json_backend.h"
+
+#include "json_expr.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace gfec {
+
+namespace {
+
+using json_backend::Json;
+using json_backend::Scope;
+using json_backend::expression;
+using json_backend::location;
+using json_backend::statements;
+
+/// Bumped when a field changes meaning or disappears; new fields do not bump it.
+constexpr int kFormatVersion = 1;
+
+std::size_t at(int index) { return static_cast<std::size_t>(index); }
+
+/// The fields every document starts with: what it is, and where it came from.
+Json header(const model::Model &m, const EmitOptions &o, const char *kind, const std::string &name,
+            const SourceRange &range) {
+  Json files = Json::array();
+  if (m.sources)
+    for (FileId i = 0; i < m.sources->size(); ++i) files.push_back(m.sources->file(i).path());
+  return {{"format", "gfec-model"}, {"version", kFormatVersion}, {"kind", kind},       {"name", name},
+          {"source", o.source_name}, {"files", std::move(files)}, {"location", location(m, range)}};
+}
+
+Json function(const model::Function &f) {
+  Json params = Json::array();
+  for (const auto &p : f.params) params.push_back({{"type", model::type_name(p.type)}, {"name", p.name}});
+  return {{"name", f.name}, {"result", model::type_name(f.result)}, {"params", std::move(params)},
+          {"interface", f.interface_name}};
+}
+
+const char *terminal_name(model::Terminal t) {
+  switch (t) {
+  case model::Terminal::Success: return "success";
+  case model::Terminal::Failure: return "failure";
+  case model::Terminal::None: break;
+  }
+  return nullptr;
+}
+
+Json chart_document(const model::Model &m, const EmitOptions &o, const model::Chart &c) {
+  bool fsm = c.kind == model::Chart::Kind::Fsm;
+  Scope scope{&c, nullptr};
+  Json doc = header(m, o, fsm ? "fsm" : "sfc", c.name, c.range);
+  doc["period_ms"] = c.period_ms > 0 ? Json(c.period_ms) : Json(nullptr);
+
+  Json places = Json::array();
+  for (std::size_t i = 0; i < c.places.size(); ++i) {
+    const model::Place &p = c.places[i];
+    const char *terminal = terminal_name(p.terminal);
+    auto block = [&](const std::optional<std::vector<model::Stmt>> &b) {
+      return b ? statements(m, scope, *b) : Json(nullptr);
+    };
+    places.push_back({{"index", i},
+                      {"name", p.name},
+                      {"initial", p.initial},
+                      {"terminal", terminal ? Json(terminal) : Json(nullptr)},
+                      {"action", statements(m, scope, p.action)},
+                      {"entry", block(p.entry)},
+                      {"exit", block(p.exit)},
+                      {"post", p.post ? expression(m, scope, *p.post) : Json(nullptr)},
+                      {"timed", p.timed},
+                      {"location", location(m, p.range)}});
+  }
+  doc[fsm ? "states" : "places"] = std::move(places);
+
+  Json transitions = Json::array();
+  for (std::size_t i = 0; i < c.transitions.size(); ++i) {
+    const model::Transition &t = c.transitions[i];
+    auto names = [&](const std::vector<int> &list) {
+      Json a = Json::array();
+      for (int p : list) a.push_back(c.places.at(at(p)).name);
+      return a;
+    };
+    Json j = {{"index", i}, {"name", t.name}, {"named", t.named}, {"inputs", names(t.inputs)},
+              {"outputs", names(t.outputs)}};
+    if (fsm && t.inputs.size() == 1 && t.outputs.size() == 1) {
+      j["from"] = c.places.at(at(t.inputs[0])).name;
+      j["to"] = c.places.at(at(t.outputs[0])).name;
+    }
+    j["when"] = t.condition ? json_backend::source_text(m, t.condition->range) : "true";
+    j["condition"] = t.condition ? expression(m, scope, *t.condition) : Json(nullptr);
+    j["location"] = location(m, t.range);
+    transitions.push_back(std::move(j));
+  }
+  doc["transitions"] = std::move(transitions);
+
+  Json vars = Json::array();
+  for (const auto &v : c.vars)
+    vars.push_back({{"name", v.name},
+                    {"type", model::type_name(v.type)},
+                    {"init", v.init ? expression(m, scope, *v.init) : Json(nullptr)},
+                    {"location", location(m, v.range)}});
+  doc["vars"] = std::move(vars);
+
+  Json consts = Json::array();
+  for (int k : c.consts) {
+    const model::Const &cst = m.consts.at(at(k));
+    consts.push_back({{"name", cst.name},
+                      {"type", model::type_name(cst.type)},
+                      {"value", json_backend::expression_tree(m, scope, cst.value).value("value", Json(nullptr))},
+                      {"location", location(m, cst.range)}});
+  }
+  doc["consts"] = std::move(consts);
+
+  Json functions = Json::array();
+  for (int f : c.functions) functions.push_back(function(m.functions.at(at(f))));
+  doc["functions"] = std::move(functions);
+  return doc;
+}
+
+// ---------------------------------------------------------------- plans
+
+const char *template_kind(model::Template::Kind k) {
+  switch (k) {
+  case model::Template::Kind::Actor: return "actor";
+  case model::Template::Kind::Computation: return "computation";
+  case model::Template::Kind::Supervisor: return "supervisor";
+  }
+  return "?";
+}
+
+struct PlanWriter {
+  const model::Model &m;
+  const model::Plan &plan;
+  Scope scope{nullptr, &plan};
+  Json flat_rules = Json::array();
+
+  /// Config entries an argument reads (in) or writes (out), in the order they appear.
+  void config_names(const model::Expr &e, Json &out) const {
+    if (e.kind == model::Expr::Kind::Config) {
+      const std::string &name = plan.config.at(at(e.index)).name;
+      if (std::find(out.begin(), out.end(), name) == out.end()) out.push_back(name);
+    }
+    for (const auto &a : e.args) config_names(a, out);
+  }
+
+  Json args(const std::vector<model::Arg> &list, int templ) const {
+    Json out = Json::array();
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const model::Arg &a = list[i];
+      Json config = Json::array();
+      config_names(a.formula, config);
+      Json j = {{"param", nullptr}, {"dir", a.dir == model::ParamDir::Out ? "out" : "in"}};
+      if (templ >= 0 && i < m.templates.at(at(templ)).params.size()) {
+        const model::TemplateParam &p = m.templates.at(at(templ)).params[i];
+        j["param"] = p.name;
+        j["type"] = model::type_name(p.type);
+      }
+      j["formula"] = expression(m, scope, a.formula);
+      j["config"] = std::move(config);
+      out.push_back(std::move(j));
+    }
+    return out;
+  }
+
+  std::string outcome(int templ, int subplan, int index) const {
+    if (subplan >= 0) return index >= 0 && index < 3 ? model::kSubPlanStates[index] : "?";
+    const auto &outcomes = m.templates.at(at(templ)).outcomes;
+    return index >= 0 && at(index) < outcomes.size() ? outcomes[at(index)] : "?";
+  }
+
+  /// The rules of one actor or supervisor; each also goes to the plan's flat "rules" list.
+  Json rules(const std::vector<model::Rule> &list, int templ, int subplan, const std::string &actor,
+             const std::string &supervisor) {
+    Json out = Json::array();
+    for (const auto &r : list) {
+      Json target = r.target.kind == model::Target::Kind::Actor ? Json(plan.actors.at(at(r.target.actor)).name)
+                    : r.target.kind == model::Target::Kind::Terminate ? Json("terminate")
+                                                                      : Json("ignore");
+      const char *kind = r.target.kind == model::Target::Kind::Actor       ? "actor"
+                         : r.target.kind == model::Target::Kind::Terminate ? "terminate"
+                                                                           : "ignore";
+      Json j = {{"outcome", outcome(templ, subplan, r.outcome)}, {"target", target}, {"target_kind", kind},
+                {"location", location(m, r.range)}};
+      out.push_back(j);
+      Json flat = {{"actor", actor.empty() ? Json(nullptr) : Json(actor)},
+                   {"supervisor", supervisor.empty() ? Json(nullptr) : Json(supervisor)},
+                   {"outcome", j["outcome"]},
+                   {"target", target},
+                   {"target_kind", kind}};
+      flat_rules.push_back(std::move(flat));
+    }
+    return out;
+  }
+
+  Json supervisors(const std::vector<model::SupervisorUse> &list, const std::string &actor) {
+    Json out = Json::array();
+    for (const auto &s : list) {
+      const model::Template &t = m.templates.at(at(s.templ));
+      out.push_back({{"name", s.name},
+                     {"template", t.name},
+                     {"period_ms", t.period_ms > 0 ? Json(t.period_ms) : Json(nullptr)},
+                     {"args", args(s.args, s.templ)},
+                     {"rules", rules(s.rules, s.templ, -1, actor, s.name)},
+                     {"location", location(m, s.range)}});
+    }
+    return out;
+  }
+
+  Json document(const EmitOptions &o) {
+    Json doc = header(m, o, "plan", plan.name, plan.range);
+    Json config = Json::array();
+    for (const auto &c : plan.config) {
+      Json init = c.init ? json_backend::expression_tree(m, scope, *c.init).value("value", Json(nullptr)) : Json(nullptr);
+      config.push_back({{"name", c.name}, {"type", model::type_name(c.type)}, {"init", init},
+                        {"location", location(m, c.range)}});
+    }
+    doc["config"] = std::move(config);
+    doc["start"] = plan.start >= 0 ? Json(plan.actors.at(at(plan.start)).name) : Json(nullptr);
+    doc["supervisors"] = supervisors(plan.globals, "");
+    Json actors = Json::array();
+    for (const auto &a : plan.actors) {
+      bool sub = a.subplan >= 0;
+      const char *kind = sub ? "plan" : template_kind(m.templates.at(at(a.templ)).kind);
+      actors.push_back({{"name", a.name},
+                        {"kind", kind},
+                        {"template", sub ? m.plans.at(at(a.subplan)).name : m.templates.at(at(a.templ)).name},
+                        {"args", args(a.args, a.templ)},
+                        {"rules", rules(a.rules, a.templ, a.subplan, a.name, "")},
+                        {"supervisors", supervisors(a.supervisors, a.name)},
+                        {"location", location(m, a.range)}});
+    }
+    doc["actors"] = std::move(actors);
+    doc["rules"] = std::move(flat_rules);
+    doc["templates"] = templates();
+    return doc;
+  }
+
+  /// The toolbox templates the plan uses, in toolbox order, so a tool needs no toolbox parser.
+  Json templates() const {
+    std::vector<bool> used(m.templates.size(), false);
+    for (const auto &s : plan.globals) used.at(at(s.templ)) = true;
+    for (const auto &a : plan.actors) {
+      if (a.templ >= 0) used.at(at(a.templ)) = true;
+      for (const auto &s : a.supervisors) used.at(at(s.templ)) = true;
+    }
+    Json out = Json::array();
+    for (std::size_t i = 0; i < m.templates.size(); ++i) {
+      if (!used[i]) continue;
+      const model::Template &t = m.templates[i];
+      Json params = Json::array();
+      for (const auto &p : t.params)
+        params.push_back({{"dir", p.dir == model::ParamDir::Out ? "out" : "in"}, {"type", model::type_name(p.type)},
+                          {"name", p.name}});
+      out.push_back({{"name", t.name},
+                     {"kind", template_kind(t.kind)},
+                     {"toolbox", t.toolbox >= 0 ? Json(m.toolboxes.at(at(t.toolbox)).name) : Json(nullptr)},
+                     {"params", std::move(params)},
+                     {t.kind == model::Template::Kind::Supervisor ? "events" : "results", t.outcomes},
+                     {"period_ms", t.period_ms > 0 ? Json(t.period_ms) : Json(nullptr)}});
+    }
+    return out;
+  }
+};
+
+class JsonBackend : public Backend {
+public:
+  std::vector<OutputFile> emit(const model::Model &m, const EmitOptions &o) const override {
+    Json doc;
+    if (o.chart >= 0) doc = chart_document(m, o, m.charts.at(at(o.chart)));
+    else if (o.plan >= 0) doc = PlanWriter{m, m.plans.at(at(o.plan))}.document(o);
+    else throw std::invalid_argument("json back end: no chart or plan chosen");
+    return {{o.output_path, doc.dump(2, ' ', false, Json::error_handler_t::replace) + "\n"}};
+  }
+};
+
+} // namespace
+
+std::unique_ptr<Backend> make_json_backend() { return std::make_unique<JsonBackend>(); }
+
+} // namespace gfec

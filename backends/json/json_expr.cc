@@ -1,0 +1,146 @@
+#include "json_expr.h"
+
+#include "operators.h"
+
+#include <cctype>
+
+namespace gfec::json_backend {
+
+namespace {
+
+using model::Expr;
+
+const char *kind_name(Expr::Kind k) {
+  switch (k) {
+  case Expr::Kind::Bool: return "bool";
+  case Expr::Kind::Int: return "int";
+  case Expr::Kind::Float: return "float";
+  case Expr::Kind::String: return "string";
+  case Expr::Kind::Ticks: return "duration";
+  case Expr::Kind::Var: return "var";
+  case Expr::Kind::Const: return "const";
+  case Expr::Kind::Config: return "config";
+  case Expr::Kind::Call: return "call";
+  case Expr::Kind::Elapsed: return "elapsed";
+  case Expr::Kind::Unary: return "unary";
+  case Expr::Kind::Binary: return "binary";
+  case Expr::Kind::Paren: return "paren";
+  }
+  return "?";
+}
+
+/// A literal's spelling as a JSON number; the spelling itself if it does not fit.
+Json number(const std::string &text, bool integer) {
+  try {
+    if (integer) return std::stoll(text);
+    return std::stod(text);
+  } catch (const std::exception &) {
+    return text;
+  }
+}
+
+template <typename T> const std::string &name_at(const std::vector<T> &table, int index) {
+  static const std::string unknown = "?";
+  return index >= 0 && static_cast<std::size_t>(index) < table.size() ? table[static_cast<std::size_t>(index)].name
+                                                                         : unknown;
+}
+
+} // namespace
+
+Json location(const model::Model &m, const SourceRange &range) {
+  if (!m.sources || range.file >= m.sources->size()) return nullptr;
+  const SourceFile &file = m.sources->file(range.file);
+  LineCol begin = file.line_col(range.begin), end = file.line_col(range.end);
+  return {{"file", file.path()},
+          {"line", begin.line},
+          {"column", begin.col},
+          {"end_line", end.line},
+          {"end_column", end.col}};
+}
+
+std::string source_text(const model::Model &m, const SourceRange &range) {
+  if (!m.sources || range.file >= m.sources->size() || range.end <= range.begin) return {};
+  const std::string &text = m.sources->file(range.file).text();
+  if (range.end > text.size()) return {};
+  std::string out;
+  bool space = false;
+  for (std::uint32_t i = range.begin; i < range.end; ++i) {
+    if (std::isspace(static_cast<unsigned char>(text[i]))) {
+      space = !out.empty();
+      continue;
+    }
+    if (space) out += ' ';
+    space = false;
+    out += text[i];
+  }
+  return out;
+}
+
+Json expression_tree(const model::Model &m, const Scope &scope, const Expr &e) {
+  Json j = {{"kind", kind_name(e.kind)}, {"type", model::type_name(e.type)}};
+  auto args = [&] {
+    Json a = Json::array();
+    for (const auto &arg : e.args) a.push_back(expression_tree(m, scope, arg));
+    return a;
+  };
+  switch (e.kind) {
+  case Expr::Kind::Bool: j["value"] = e.bool_value; break;
+  case Expr::Kind::Int: j["value"] = number(e.text, true); break;
+  case Expr::Kind::Float: j["value"] = number(e.text, false); break;
+  case Expr::Kind::String: j["value"] = e.text; break;
+  case Expr::Kind::Ticks:
+    j["ms"] = e.ms;
+    j["ticks"] = e.ticks;
+    break;
+  case Expr::Kind::Var: j["name"] = scope.chart ? name_at(scope.chart->vars, e.index) : "?"; break;
+  case Expr::Kind::Const: j["name"] = name_at(m.consts, e.index); break;
+  case Expr::Kind::Config: j["name"] = scope.plan ? name_at(scope.plan->config, e.index) : "?"; break;
+  case Expr::Kind::Call:
+    j["function"] = name_at(m.functions, e.index);
+    j["args"] = args();
+    break;
+  case Expr::Kind::Elapsed: j["place"] = scope.chart ? name_at(scope.chart->places, e.index) : "?"; break;
+  case Expr::Kind::Unary:
+    j["op"] = spelling(e.unary_op);
+    j["args"] = args();
+    break;
+  case Expr::Kind::Binary:
+    j["op"] = spelling(e.binary_op);
+    j["args"] = args();
+    break;
+  case Expr::Kind::Paren: j["args"] = args(); break;
+  }
+  return j;
+}
+
+Json expression(const model::Model &m, const Scope &scope, const Expr &e) {
+  return {{"text", source_text(m, e.range)}, {"type", model::type_name(e.type)}, {"tree", expression_tree(m, scope, e)}};
+}
+
+Json statements(const model::Model &m, const Scope &scope, const std::vector<model::Stmt> &block) {
+  Json out = Json::array();
+  for (const auto &s : block) {
+    Json j = {{"text", source_text(m, s.range)}};
+    switch (s.kind) {
+    case model::Stmt::Kind::Call:
+      j["kind"] = "call";
+      j["call"] = expression_tree(m, scope, s.call);
+      break;
+    case model::Stmt::Kind::Assign:
+      j["kind"] = "assign";
+      j["var"] = scope.chart ? name_at(scope.chart->vars, s.var) : "?";
+      j["op"] = spelling(s.op);
+      j["value"] = expression_tree(m, scope, s.value);
+      break;
+    case model::Stmt::Kind::Verbatim:
+      j["kind"] = "verbatim";
+      j["code"] = s.verbatim;
+      break;
+    }
+    j["location"] = location(m, s.range);
+    out.push_back(std::move(j));
+  }
+  return out;
+}
+
+} // namespace gfec::json_backend

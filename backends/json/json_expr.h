@@ -1,0 +1,31 @@
+// JSON for the pieces every part of the model document shares: expressions (as source text and
+// as a typed tree), statements, and source locations.
+#pragma once
+
+#include "model.h"
+
+#include <nlohmann/json.hpp>
+
+namespace gfec::json_backend {
+
+using Json = nlohmann::ordered_json;
+
+/// {"file", "line", "column", "end_line", "end_column"}: 1-based, end exclusive.
+Json location(const model::Model &m, const SourceRange &range);
+
+/// The text the user wrote for `range`, whitespace runs folded to one space.
+std::string source_text(const model::Model &m, const SourceRange &range);
+
+/// What names in expressions refer to: the chart's vars and places, the plan's config.
+struct Scope {
+  const model::Chart *chart = nullptr;
+  const model::Plan *plan = nullptr;
+};
+
+/// {"text": "...", "type": "bool", "tree": {...}}.
+Json expression(const model::Model &m, const Scope &scope, const model::Expr &e);
+/// The tree alone: {"kind": "call", "function": "f", "args": [...]}, ...
+Json expression_tree(const model::Model &m, const Scope &scope, const model::Expr &e);
+Json statements(const model::Model &m, const Scope &scope, const std::vector<model::Stmt> &block);
+
+} // namespace gfec::json_backend

@@ -1,0 +1,33 @@
+# Installing gfec: the compiler, the runtime library and its headers, and a CMake package so
+# that another project's find_package(gfec) finds gfec::gfec, gfec::runtime and
+# gfec_add_chart(). Included from the top-level CMakeLists.txt once every target exists.
+include(GNUInstallDirs)
+include(CMakePackageConfigHelpers)
+
+set(GFEC_INSTALL_CMAKEDIR "${CMAKE_INSTALL_LIBDIR}/cmake/gfec" CACHE STRING
+    "Where the CMake package files of gfec are installed")
+
+# The names other projects use, in gfec's own build as after installing.
+if(NOT TARGET gfec::gfec)
+  add_executable(gfec::gfec ALIAS gfec)
+endif()
+set_target_properties(afp_runtime PROPERTIES EXPORT_NAME runtime)
+
+install(TARGETS gfec EXPORT gfecTargets RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}")
+install(TARGETS afp_runtime EXPORT gfecTargets
+  ARCHIVE DESTINATION "${CMAKE_INSTALL_LIBDIR}"
+  LIBRARY DESTINATION "${CMAKE_INSTALL_LIBDIR}"
+  RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}"
+  INCLUDES DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}")
+install(DIRECTORY "${PROJECT_SOURCE_DIR}/runtime/include/afp" DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}")
+
+install(EXPORT gfecTargets NAMESPACE gfec:: DESTINATION "${GFEC_INSTALL_CMAKEDIR}")
+configure_package_config_file("${CMAKE_CURRENT_LIST_DIR}/gfecConfig.cmake.in"
+  "${PROJECT_BINARY_DIR}/gfecConfig.cmake" INSTALL_DESTINATION "${GFEC_INSTALL_CMAKEDIR}")
+write_basic_package_version_file("${PROJECT_BINARY_DIR}/gfecConfigVersion.cmake"
+  VERSION "${PROJECT_VERSION}" COMPATIBILITY SameMinorVersion)
+install(FILES
+  "${PROJECT_BINARY_DIR}/gfecConfig.cmake"
+  "${PROJECT_BINARY_DIR}/gfecConfigVersion.cmake"
+  "${CMAKE_CURRENT_LIST_DIR}/GfecChart.cmake"
+  DESTINATION "${GFEC_INSTALL_CMAKEDIR}")

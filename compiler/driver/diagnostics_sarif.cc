@@ -1,0 +1,194 @@
+#include "diagnostics_sarif.h"
+
+#include "backend.h"
+#include "diagnostic_printer.h"
+#include "output_files.h"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <ostream>
+
+namespace gfec {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+constexpr const char *kSchema = "https://docs.oasis-open.org/sarif/sarif/v2.1.0/errata01/os/schemas/sarif-schema-2.1.0.json";
+constexpr const char *kRoot = "%SRCROOT%";
+
+/// RFC 3986: keep unreserved characters and '/', percent-encode every other byte.
+std::string uri_encode(const std::string &path) {
+  std::string out;
+  for (unsigned char c : path) {
+    if (std::isalnum(c) || c == '-' || c == '.' || c == '_' || c == '~' || c == '/') out += static_cast<char>(c);
+    else out += fmt::format("%{:02X}", c);
+  }
+  return out;
+}
+
+const char *level(Severity s) {
+  switch (s) {
+  case Severity::Error: return "error";
+  case Severity::Warning: return "warning";
+  case Severity::Note: return "note";
+  }
+  return "none";
+}
+
+} // namespace
+
+Json artifact_location(const std::string &path) {
+  if (!path.empty() && path.front() == '/') return {{"uri", "file://" + uri_encode(path)}};
+  return {{"uri", uri_encode(path)}, {"uriBaseId", kRoot}};
+}
+
+SarifLog::SarifLog() {
+  // Every warning is a rule even when it did not fire, so a dashboard can list and explain them.
+  for (int i = 0; i < static_cast<int>(Warning::Count_); ++i) {
+    const WarningInfo &w = warning_table()[i];
+    std::string id = fmt::format("-W{}", w.name);
+    rule_ids_[id] = static_cast<int>(rules_.size());
+    rules_.push_back({{"id", id},
+                      {"name", w.name},
+                      {"shortDescription", {{"text", w.summary}}},
+                      {"fullDescription",
+                       {{"text", fmt::format("Warning: {}. {} by default; -W{} turns it on, -Wno-{} off.", w.summary,
+                                             w.on_by_default ? "On" : "Off", w.name, w.name)}}},
+                      {"defaultConfiguration", {{"enabled", w.on_by_default}, {"level", "warning"}}}});
+  }
+}
+
+int SarifLog::rule_index(const std::string &check, Severity severity) {
+  std::string id = check.empty() ? "error" : check;
+  auto found = rule_ids_.find(id);
+  if (found != rule_ids_.end()) return found->second;
+  // Error checks have no table: they become rules as they occur.
+  int index = static_cast<int>(rules_.size());
+  rule_ids_[id] = index;
+  rules_.push_back({{"id", id},
+                    {"name", id},
+                    {"shortDescription", {{"text", fmt::format("gfec reports this {} as [{}]", level(severity), id)}}},
+                    {"defaultConfiguration", {{"level", level(severity)}}}});
+  return index;
+}
+
+int SarifLog::artifact_index(const std::string &path) {
+  auto found = artifact_ids_.find(path);
+  if (found != artifact_ids_.end()) return found->second;
+  int index = static_cast<int>(artifacts_.size());
+  artifact_ids_[path] = index;
+  artifacts_.push_back(path);
+  return index;
+}
+
+Json SarifLog::physical_location(const SourceManager &sources, const SourceRange &range) {
+  const SourceFile &file = sources.file(range.file);
+  Columns begin = columns_at(file, range.begin);
+  Columns end = columns_at(file, std::max(range.begin, range.end));
+  Json artifact = artifact_location(file.path());
+  artifact["index"] = artifact_index(file.path());
+  // endColumn is exclusive in SARIF, as our ranges are half-open.
+  return {{"artifactLocation", std::move(artifact)},
+          {"region",
+           {{"startLine", begin.line},
+            {"startColumn", begin.code_point},
+            {"endLine", end.line},
+            {"endColumn", end.code_point}}}};
+}
+
+void SarifLog::add(const Diagnostics &diag, const SourceManager &sources) {
+  for (const Diagnostic &d : diag.all()) {
+    int rule = rule_index(d.check, d.severity);
+    Json related = Json::array();
+    for (const auto &n : d.notes) {
+      related.push_back({{"id", related.size()},
+                         {"physicalLocation", physical_location(sources, n.has_range ? n.range : d.range)},
+                         {"message", {{"text", n.message}}}});
+    }
+    Json result = {{"ruleId", rules_[rule]["id"]},
+                   {"ruleIndex", rule},
+                   {"level", level(d.severity)},
+                   {"message", {{"text", d.message}}},
+                   {"locations", Json::array({{{"physicalLocation", physical_location(sources, d.range)}}})}};
+    if (!related.empty()) result["relatedLocations"] = std::move(related);
+    results_.push_back(std::move(result));
+  }
+  if (diag.limit_reached())
+    notification("note", "", fmt::format("compilation stopped after {} errors (-fmax-errors)", diag.error_count()));
+}
+
+void SarifLog::notification(const std::string &lvl, const std::string &input, const std::string &message) {
+  Json n = {{"level", lvl}, {"message", {{"text", message}}}};
+  if (!input.empty()) n["locations"] = Json::array({{{"physicalLocation", {{"artifactLocation", artifact_location(input)}}}}});
+  notifications_.push_back(std::move(n));
+}
+
+Json SarifLog::to_json(int exit_code, const std::string &cwd) const {
+  Json artifacts = Json::array();
+  for (const auto &path : artifacts_) artifacts.push_back({{"location", artifact_location(path)}});
+  Json invocation = {{"executionSuccessful", exit_code != 2}, {"exitCode", exit_code}};
+  if (!notifications_.empty()) invocation["toolExecutionNotifications"] = notifications_;
+  std::string root = "file://" + uri_encode(cwd);
+  if (root.back() != '/') root += '/';
+  Json run = {{"tool",
+               {{"driver",
+                 {{"name", "gfec"},
+                  {"version", GFEC_VERSION},
+                  {"semanticVersion", GFEC_VERSION},
+                  {"rules", rules_}}}}},
+              {"invocations", Json::array({std::move(invocation)})},
+              {"originalUriBaseIds", {{kRoot, {{"uri", root}}}}},
+              {"artifacts", std::move(artifacts)},
+              {"results", results_},
+              {"columnKind", "unicodeCodePoints"}};
+  return {{"$schema", kSchema}, {"version", "2.1.0"}, {"runs", Json::array({std::move(run)})}};
+}
+
+namespace {
+
+class SarifReport : public DiagnosticReport {
+public:
+  explicit SarifReport(std::ostream *err) : err_(err) {}
+
+  void add(const std::string &input, const Diagnostics &diag, const SourceManager &sources) override {
+    log_for(input).add(diag, sources);
+  }
+  void tool_error(const std::string &input, const std::string &message, bool) override {
+    log_for(input).notification("error", input, message);
+  }
+  std::string finish(int exit_code) override {
+    std::string cwd = std::filesystem::current_path().string();
+    // Messages quote the user's text, which need not be UTF-8: replace what JSON cannot hold.
+    auto text = [&](const SarifLog &log) {
+      return log.to_json(exit_code, cwd).dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+    };
+    if (err_) {
+      *err_ << text(log_for(""));
+      return {};
+    }
+    std::vector<OutputFile> files;
+    for (const auto &[input, log] : logs_) files.push_back({base_name(input.empty() ? "gfec" : input) + ".sarif", text(log)});
+    return write_atomically(files);
+  }
+
+private:
+  /// sarif-stderr: one log for the whole run; sarif-file: one per input, as gcc writes them.
+  SarifLog &log_for(const std::string &input) {
+    std::string key = err_ ? std::string() : input;
+    for (auto &entry : logs_)
+      if (entry.first == key) return entry.second;
+    logs_.emplace_back(key, SarifLog());
+    return logs_.back().second;
+  }
+
+  std::ostream *err_;
+  std::vector<std::pair<std::string, SarifLog>> logs_;  ///< in input order
+};
+
+} // namespace
+
+std::unique_ptr<DiagnosticReport> make_sarif_report(std::ostream *err) { return std::make_unique<SarifReport>(err); }
+
+} // namespace gfec
