@@ -31,7 +31,7 @@ void Level::advance() {
 void Level::abort() {
   if (status_ != Status::Running) return;
   watchers_->stop_local();
-  stop_actor();
+  (void)stop_actor();  // the run ends Stopped whatever the actor's stop() does
   end(Status::Stopped);
 }
 
@@ -74,7 +74,7 @@ void Level::fail(const std::string& component, const std::string& what) {
   error_ = component + ": " + what;
   trace([&](TraceObserver& t) { t.component_failed(plan_, component, what, services_.now()); });
   watchers_->stop_local();
-  stop_actor();  // a second failure while stopping adds nothing
+  (void)stop_actor();  // a second failure while stopping adds nothing
   end(Status::Failed);
 }
 

@@ -9,7 +9,7 @@ namespace afp {
 
 // The executor is the services of every level it runs: plan time is its clock.
 struct SteppedExecutor::Impl final : detail::Services {
-  Impl(Plan& plan, Configuration& config, TraceObserver* trace) : Services(config, trace), plan(plan) {}
+  Impl(Plan& to_run, Configuration& config, TraceObserver* trace) : Services(config, trace), plan(to_run) {}
 
   Duration now() const override { return time; }
   std::unique_ptr<detail::Watchers> make_watchers() override {

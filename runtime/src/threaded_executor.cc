@@ -16,8 +16,8 @@ using Clock = std::chrono::steady_clock;
 // The executor is the services of every level it runs: plan time is the
 // steady clock since the run began.
 struct ThreadedExecutor::Impl final : detail::Services {
-  Impl(Plan& plan, Configuration& config, TraceObserver* trace, ThreadedOptions options)
-      : Services(config, trace), plan(plan), options(options) {}
+  Impl(Plan& to_run, Configuration& config, TraceObserver* trace, ThreadedOptions timing)
+      : Services(config, trace), plan(to_run), options(timing) {}
 
   Duration now() const override { return Clock::now() - origin; }
   std::unique_ptr<detail::Watchers> make_watchers() override {

@@ -16,7 +16,7 @@ namespace fakes {
 using namespace std::chrono_literals;
 
 /// Finishes in `state` at its `steps`-th step of each run (never if steps <= 0).
-/// Optional hooks run at start and at each step (read inputs, write outputs, throw).
+/// Optional hooks run at start, at each step and at stop (read inputs, write outputs, throw).
 class FakeActor : public afp::Actor {
 public:
   enum State { DONE, OTHER, THIRD };
@@ -35,10 +35,14 @@ public:
     return ++taken_ == steps_ ? afp::StepResult(state_) : afp::running;
   }
 
-  void stop() override { ++stops; }
+  void stop() override {
+    ++stops;
+    if (on_stop) on_stop();
+  }
 
   std::function<void(afp::Context&)> on_start;
   std::function<void(afp::Context&)> on_step;
+  std::function<void()> on_stop;
   std::atomic<int> starts{0};
   std::atomic<int> steps_total{0};
   std::atomic<int> stops{0};
@@ -49,7 +53,8 @@ private:
   int taken_ = 0;
 };
 
-/// Calls `rule` at each check; counts its life and records check times.
+/// Calls `rule` at each check (and `on_start`, if set, at start); counts its
+/// life and records check times.
 class FakeSupervisor : public afp::Supervisor {
 public:
   enum Event { FIRED, OTHER_EVENT };
@@ -57,7 +62,10 @@ public:
 
   FakeSupervisor(afp::Duration period, Rule rule) : afp::Supervisor(period), rule_(std::move(rule)) {}
 
-  void start(afp::Context&) override { ++starts; }
+  void start(afp::Context& ctx) override {
+    ++starts;
+    if (on_start) on_start(ctx);
+  }
 
   afp::CheckResult check(afp::Context& ctx) override {
     ++checks;
@@ -69,6 +77,8 @@ public:
   }
 
   void stop() override { ++stops; }
+
+  std::function<void(afp::Context&)> on_start;
 
   /// The plan times of every check so far.
   std::vector<afp::Duration> check_times() const {

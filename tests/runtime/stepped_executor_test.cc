@@ -35,7 +35,7 @@ FakeSupervisor* add_supervisor(afp::Plan& plan, const std::string& name, afp::Du
 
 }  // namespace
 
-TEST_CASE("an actor's result state selects the next actor; terminate ends in Succeeded", "[stepped]") {
+TEST_CASE("an actor's result state selects the next actor - terminate ends in Succeeded", "[stepped]") {
   afp::Plan plan("P");
   auto* a = plan.add_actor("a", std::make_unique<FakeActor>(2, FakeActor::DONE));
   auto* b = plan.add_actor("b", std::make_unique<FakeActor>(1, FakeActor::OTHER));
@@ -195,7 +195,7 @@ TEST_CASE("an interrupted actor's outputs are discarded", "[stepped]") {
   CHECK(config.get<int>("x") == 0);
 }
 
-TEST_CASE("the interrupting supervisor's outputs are committed; other checks' outputs are not", "[stepped]") {
+TEST_CASE("the interrupting supervisor's outputs are committed - other checks' outputs are not", "[stepped]") {
   afp::Plan plan("P");
   plan.declare("seen", Value(0));
   plan.declare("ignored", Value(0));
@@ -229,7 +229,7 @@ TEST_CASE("the interrupting supervisor's outputs are committed; other checks' ou
                              "P: end interrupted"});
 }
 
-TEST_CASE("a supervisor's ignored event leaves the actor running; another event of it interrupts", "[stepped]") {
+TEST_CASE("a supervisor's ignored event leaves the actor running - another event of it interrupts", "[stepped]") {
   afp::Plan plan("P");
   auto* a = plan.add_actor("a", std::make_unique<FakeActor>(0));
   auto* s = add_supervisor(plan, "s", 0ms, [](afp::Context& ctx) {
@@ -365,6 +365,11 @@ TEST_CASE("an actor that throws or whose parameter does not convert ends the pla
     a->on_start = [](afp::Context& ctx) { afp::out<int>("nope").write(ctx, 1); };
     what = "unknown configuration entry 'nope'";
   }
+  SECTION("throws in stop after finishing") {
+    plan.define_subsequent(a, FakeActor::DONE, afp::terminate);
+    a->on_stop = [] { throw std::runtime_error("motor jammed"); };
+    what = "motor jammed";
+  }
   SECTION("a result state without a rule") {
     what = "no rule for result state 0";
   }
@@ -391,6 +396,12 @@ TEST_CASE("a supervisor that throws, or raises an event without a rule, fails th
     auto* s = add_supervisor(plan, "s", 0ms, [](afp::Context&) -> afp::CheckResult { throw std::runtime_error("bad"); });
     plan.define_supervision(a, s, FakeSupervisor::FIRED, afp::terminate);
     expected = "s: bad";
+  }
+  SECTION("throws in start") {
+    auto* s = add_supervisor(plan, "s", 0ms, never());
+    s->on_start = [](afp::Context&) { throw std::runtime_error("no sensor"); };
+    plan.define_supervision(a, s, FakeSupervisor::FIRED, afp::terminate);
+    expected = "s: no sensor";
   }
   SECTION("an event without a rule") {
     auto* g = add_supervisor(plan, "g", 0ms, fire_from(0ms, FakeSupervisor::OTHER_EVENT));

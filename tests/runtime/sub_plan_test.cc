@@ -79,7 +79,7 @@ TEST_CASE("a sub-plan that reaches terminate from an event ends in INTERRUPTED",
   CHECK(outer.x->starts + outer.z->starts == 0);
 }
 
-TEST_CASE("a sub-plan whose actor fails ends in ERROR; the plan above goes on", "[subplan]") {
+TEST_CASE("a sub-plan whose actor fails ends in ERROR - the plan above goes on", "[subplan]") {
   auto inner = std::make_unique<afp::Plan>("Inner");
   inner->declare("name", Value("abc"));
   auto* a = inner->add_actor("a", std::make_unique<FakeActor>(1));

@@ -61,7 +61,7 @@ TEST_CASE("threaded: result states select the next actors up to terminate", "[th
   CHECK(b->stops == 1);
 }
 
-TEST_CASE("threaded: an external write makes a supervisor interrupt; its output is committed", "[threaded]") {
+TEST_CASE("threaded: an external write makes a supervisor interrupt - its output is committed", "[threaded]") {
   afp::Plan plan("P");
   plan.declare("go", Value(false));
   plan.declare("reason", Value(""));

@@ -12,7 +12,7 @@ using afp::ConversionError;
 using afp::Type;
 using afp::Value;
 
-TEST_CASE("a value knows its type; text literals are strings, not bools", "[value]") {
+TEST_CASE("a value knows its type - text literals are strings, not bools", "[value]") {
   CHECK(Value(1).type() == Type::Int);
   CHECK(Value(1.5f).type() == Type::Float);
   CHECK(Value(1.5).type() == Type::Double);
