@@ -48,6 +48,20 @@ struct Context {
   std::vector<bool> template_ok;  ///< false: a parameter type is wrong; arguments stay unchecked
   std::vector<const ast::Plan *> plans;
 
+  /// A global name, declared once every file's model entries exist (see collect_symbols).
+  struct GlobalName {
+    Namespace *ns;
+    const ast::Name *name;
+    Sym kind;
+    int index;
+    int file;  ///< position in program.files
+  };
+  std::vector<GlobalName> global_names;
+  int current_file = 0;
+  void declare_global(Namespace &ns, const ast::Name &name, Sym kind, int index) {
+    global_names.push_back({&ns, &name, kind, index, current_file});
+  }
+
   /// The chart being validated: its constants fold in its scope.
   ChartScope *chart = nullptr;
   /// Unknown names at file level, each reported once.

@@ -249,6 +249,9 @@ int resolve_place(ChartScope &chart, Context &cx, const ast::Name &name) {
   if (name.text.empty()) return -1;
   const Symbol *sym = chart.names.find(name.text);
   if (sym && (sym->kind == Sym::Place || sym->kind == Sym::State)) return sym->index;
+  // A place that lost its name to an earlier declaration: the clash is reported already.
+  for (std::size_t i = 0; sym && i < chart.ast.places.size(); ++i)
+    if (chart.ast.places[i].name.text == name.text) return static_cast<int>(i);
   if (sym) {
     cx.diag.error(name.range, "type-mismatch",
                   fmt::format("'{}' is {}, not a {}", name.text, with_article(sym->kind), chart.place_word()))

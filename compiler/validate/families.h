@@ -39,6 +39,10 @@ void validate_plan(Context &cx, int index);
 /// Reports every plan that contains itself, directly or through sub-plans.
 void check_plan_recursion(Context &cx);
 
+/// Lowers the condition of transition `index`; the sfc and fsm checks call it right after the
+/// transition's places, so diagnostics come in source order.
+void lower_transition_condition(Context &cx, ChartScope &chart, std::size_t index);
+
 /// Whether a condition is constant, and its value (no condition is `when true`).
 std::optional<bool> constant_condition(const std::optional<model::Expr> &condition, const model::Model &model);
 

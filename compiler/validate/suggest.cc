@@ -8,25 +8,25 @@
 namespace gfec::validation {
 
 std::size_t edit_distance(std::string_view a, std::string_view b) {
-  // One row of the classic table is enough.
-  std::vector<std::size_t> row(b.size() + 1);
-  std::iota(row.begin(), row.end(), 0);
+  // The classic table, two rows back kept for transpositions ("flaot" is one typo from "float").
+  std::vector<std::size_t> before(b.size() + 1), previous(b.size() + 1), row(b.size() + 1);
+  std::iota(previous.begin(), previous.end(), 0);
   for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
     row[0] = i;
     for (std::size_t j = 1; j <= b.size(); ++j) {
-      std::size_t above = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = above;
+      row[j] = std::min({previous[j] + 1, row[j - 1] + 1, previous[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) row[j] = std::min(row[j], before[j - 2] + 1);
     }
+    std::swap(before, previous);
+    std::swap(previous, row);
   }
-  return row[b.size()];
+  return previous[b.size()];
 }
 
 const Symbol *closest(std::string_view name, const std::vector<const Symbol *> &candidates) {
-  // A third of the name may be wrong (at least one letter): close enough to be a typo, far
-  // enough apart that short unrelated names are not offered.
-  std::size_t limit = std::max<std::size_t>(1, name.size() / 3);
+  // About a third of the name may be wrong (at least one letter): close enough to be a typo,
+  // far enough apart that short unrelated names are not offered.
+  std::size_t limit = std::max<std::size_t>(1, (name.size() + 1) / 3);
   const Symbol *best = nullptr;
   std::size_t best_distance = limit + 1;
   for (const Symbol *c : candidates) {

@@ -9,7 +9,7 @@
 
 namespace gfec::validation {
 
-/// Levenshtein distance (insert, delete, substitute; each costs 1).
+/// Edit distance: insert, delete, substitute, or swap two neighbours; each costs 1.
 std::size_t edit_distance(std::string_view a, std::string_view b);
 
 /// The candidate a typo most likely meant, or null when none is close enough. Ties go to the

@@ -1,5 +1,5 @@
 // The global symbol table: every top-level declaration of every file, declared before any
-// body is checked, so a chart may call a function of a file imported after it.
+// body is checked, so a chart may call a function of a file imported after it (or before).
 #include "validate/families.h"
 
 #include <algorithm>
@@ -30,10 +30,17 @@ std::vector<TopDecl> top_level_of(Context &cx, const ast::File &file) {
 } // namespace
 
 void collect_symbols(Context &cx) {
-  for (const auto &file : cx.program.files) {
-    if (!file) continue;
-    for (const TopDecl &d : top_level_of(cx, *file)) d.declare();
+  // Model tables in program order (main file first): the order back ends emit.
+  for (std::size_t i = 0; i < cx.program.files.size(); ++i) {
+    if (!cx.program.files[i]) continue;
+    cx.current_file = static_cast<int>(i);
+    for (const TopDecl &d : top_level_of(cx, *cx.program.files[i])) d.declare();
   }
+  // Names in dependency order (imports are reached after the file importing them): a name
+  // that clashes with an imported one is reported in the importing file, where it was added.
+  std::stable_sort(cx.global_names.begin(), cx.global_names.end(),
+                   [](const auto &a, const auto &b) { return a.file > b.file; });
+  for (const auto &g : cx.global_names) g.ns->declare(*g.name, g.kind, g.index, cx.diag);
 }
 
 } // namespace gfec::validation

@@ -30,11 +30,11 @@ model::Model validate(const ast::Program &program, const SourceManager &sources,
   validation::Context cx(program, sources, diag, model);
 
   validation::collect_symbols(cx);
+  collect_verbatims(cx);
   validation::fold_file_consts(cx);
   for (std::size_t i = 0; i < model.charts.size(); ++i) validation::validate_chart(cx, static_cast<int>(i));
   for (std::size_t i = 0; i < model.plans.size(); ++i) validation::validate_plan(cx, static_cast<int>(i));
   validation::check_plan_recursion(cx);
-  collect_verbatims(cx);
   return model;
 }
 

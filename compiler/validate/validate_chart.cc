@@ -138,6 +138,7 @@ void lower_values(Context &cx, ChartScope &s) {
     ExprScope scope{cx, &s, true};
     model::Var &var = s.out.vars[sym->index];
     var.init = lower_initializer(v.init.get(), scope, var.type, var.name);
+    if (var.init) evaluate(*var.init, cx.model, &cx.diag);  // _init computes it: no division by zero
   }
 }
 
@@ -150,13 +151,16 @@ void lower_bodies(Context &cx, ChartScope &s) {
     if (p.entry) out.entry = lower_block(*p.entry, scope);
     if (p.exit) out.exit = lower_block(*p.exit, scope);
   }
-  for (std::size_t i = 0; i < s.ast.transitions.size(); ++i) {
-    const ast::Transition &t = s.ast.transitions[i];
-    if (t.condition) s.out.transitions[i].condition = lower_condition(t.condition.get(), scope, "condition");
-  }
 }
 
 } // namespace
+
+void lower_transition_condition(Context &cx, ChartScope &s, std::size_t index) {
+  const ast::Transition &t = s.ast.transitions[index];
+  if (!t.condition) return;
+  ExprScope scope{cx, &s, false};
+  s.out.transitions[index].condition = lower_condition(t.condition.get(), scope, "condition");
+}
 
 std::optional<bool> constant_condition(const std::optional<model::Expr> &condition, const model::Model &model) {
   if (!condition) return true;
@@ -174,7 +178,7 @@ void declare_chart(Context &cx, const ast::Chart &chart) {
   int index = static_cast<int>(cx.model.charts.size());
   cx.model.charts.push_back(std::move(out));
   cx.charts.push_back(&chart);
-  cx.c_names.declare(chart.name, Sym::Chart, index, cx.diag);
+  cx.declare_global(cx.c_names, chart.name, Sym::Chart, index);
 }
 
 void validate_chart(Context &cx, int index) {

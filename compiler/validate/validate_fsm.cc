@@ -35,24 +35,14 @@ void check_state(Context &cx, ChartScope &s, const ast::Place &p, model::Place &
   out.post = lower_condition(p.post.get(), scope, "postcondition");
 }
 
-/// The index of the one initial state, or -1 (reported) if there is none; extra initial
-/// states are reported and ignored.
-int find_initial(Context &cx, ChartScope &s) {
-  int initial = -1;
-  for (std::size_t i = 0; i < s.ast.places.size(); ++i) {
-    const ast::Place &p = s.ast.places[i];
-    if (!p.initial) continue;
-    if (initial < 0) {
-      initial = static_cast<int>(i);
-      continue;
-    }
-    cx.diag.error(p.name.range, "initial-state", fmt::format("fsm '{}' has more than one initial state", s.out.name))
-        .note(s.ast.places[initial].name.range, fmt::format("'{}' is already its initial state", s.ast.places[initial].name.text));
+/// Notes initial state `index`; a second one is an error (§7: exactly one).
+void note_initial(Context &cx, ChartScope &s, int index, int &initial) {
+  if (initial < 0) {
+    initial = index;
+    return;
   }
-  if (initial < 0)
-    cx.diag.error(s.ast.name.range, "initial-state", fmt::format("fsm '{}' has no initial state", s.out.name))
-        .note("mark the state it starts in with 'initial state'");
-  return initial;
+  cx.diag.error(s.ast.places[index].name.range, "initial-state", fmt::format("fsm '{}' has more than one initial state", s.out.name))
+      .note(s.ast.places[initial].name.range, fmt::format("'{}' is already its initial state", s.ast.places[initial].name.text));
 }
 
 /// One side of an fsm transition: exactly one state.
@@ -64,8 +54,27 @@ int one_state(Context &cx, ChartScope &s, const ast::Transition &t, const std::v
   return resolve_place(s, cx, names[0]);
 }
 
-/// Resolves every transition; false if one could not be, which would make the connectivity
-/// check report its consequences.
+/// Checks one resolved transition `from -> to` against the rules of §7.
+void check_transition(Context &cx, ChartScope &s, std::size_t i, int from, int to,
+                      std::map<std::pair<int, int>, std::size_t> &pairs) {
+  const ast::Transition &t = s.ast.transitions[i];
+  const ast::Place &source = s.ast.places[from];
+  if (terminal(source))
+    cx.diag.error(where(t), "terminal-state", fmt::format("transition leaves terminal state '{}'", source.name.text))
+        .note(source.name.range, fmt::format("'{}' ends the machine", source.name.text));
+  if (from == to)
+    cx.diag.error(where(t), "self-transition", fmt::format("transition from state '{}' to itself", source.name.text));
+  auto [it, fresh] = pairs.emplace(std::make_pair(from, to), i);
+  if (!fresh)
+    cx.diag.error(where(t), "duplicate-transition", fmt::format("second transition from '{}' to '{}'", source.name.text,
+                                                                s.ast.places[to].name.text))
+        .note(where(s.ast.transitions[it->second]), "the first one is here");
+  s.out.transitions[i].inputs = {from};
+  s.out.transitions[i].outputs = {to};
+}
+
+/// Resolves and checks every transition; false if one could not be resolved, which would
+/// make the connectivity check report its consequences.
 bool resolve_transitions(Context &cx, ChartScope &s) {
   bool all = true;
   std::map<std::pair<int, int>, std::size_t> pairs;
@@ -73,23 +82,9 @@ bool resolve_transitions(Context &cx, ChartScope &s) {
     const ast::Transition &t = s.ast.transitions[i];
     int from = one_state(cx, s, t, t.inputs, "source");
     int to = one_state(cx, s, t, t.outputs, "target");
-    if (from < 0 || to < 0) {
-      all = false;
-      continue;
-    }
-    const ast::Place &source = s.ast.places[from];
-    if (terminal(source))
-      cx.diag.error(where(t), "terminal-state", fmt::format("transition leaves terminal state '{}'", source.name.text))
-          .note(source.name.range, fmt::format("'{}' ends the machine", source.name.text));
-    if (from == to)
-      cx.diag.error(where(t), "self-transition", fmt::format("transition from state '{}' to itself", source.name.text));
-    auto [it, fresh] = pairs.emplace(std::make_pair(from, to), i);
-    if (!fresh)
-      cx.diag.error(where(t), "duplicate-transition", fmt::format("second transition from '{}' to '{}'", source.name.text,
-                                                                  s.ast.places[to].name.text))
-          .note(where(s.ast.transitions[it->second]), "the first one is here");
-    s.out.transitions[i].inputs = {from};
-    s.out.transitions[i].outputs = {to};
+    if (from >= 0 && to >= 0) check_transition(cx, s, i, from, to, pairs);
+    else all = false;
+    lower_transition_condition(cx, s, i);
   }
   return all;
 }
@@ -144,8 +139,14 @@ void warn_unreachable(Context &cx, ChartScope &s, int initial) {
 } // namespace
 
 void check_fsm(Context &cx, ChartScope &s, std::size_t errors_before) {
-  for (std::size_t i = 0; i < s.ast.places.size(); ++i) check_state(cx, s, s.ast.places[i], s.out.places[i]);
-  int initial = find_initial(cx, s);
+  int initial = -1;
+  for (std::size_t i = 0; i < s.ast.places.size(); ++i) {
+    check_state(cx, s, s.ast.places[i], s.out.places[i]);
+    if (s.ast.places[i].initial) note_initial(cx, s, static_cast<int>(i), initial);
+  }
+  if (initial < 0)
+    cx.diag.error(s.ast.name.range, "initial-state", fmt::format("fsm '{}' has no initial state", s.out.name))
+        .note("mark the state it starts in with 'initial state'");
   bool resolved = resolve_transitions(cx, s);
   if (initial >= 0 && resolved) check_connected(cx, s, initial);
   if (initial >= 0 && cx.diag.error_count() == errors_before) warn_unreachable(cx, s, initial);

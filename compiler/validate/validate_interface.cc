@@ -31,7 +31,7 @@ bool lower_prototype(const ast::FunctionDecl &f, model::Function &out, Diagnosti
 } // namespace
 
 void declare_interface(Context &cx, const ast::Interface &iface) {
-  cx.interfaces.declare(iface.name, Sym::Interface, -1, cx.diag);
+  cx.declare_global(cx.interfaces, iface.name, Sym::Interface, -1);
   for (const ast::FunctionDecl &f : iface.functions) {
     model::Function out;
     out.name = f.name.text;
@@ -43,7 +43,7 @@ void declare_interface(Context &cx, const ast::Interface &iface) {
     int index = static_cast<int>(cx.model.functions.size());
     cx.model.functions.push_back(std::move(out));
     cx.function_ok.push_back(ok);
-    cx.c_names.declare(f.name, Sym::Function, index, cx.diag);
+    cx.declare_global(cx.c_names, f.name, Sym::Function, index);
   }
 }
 
@@ -56,7 +56,7 @@ void declare_file_const(Context &cx, const ast::ValueDecl &decl) {
   int index = static_cast<int>(cx.model.consts.size());
   cx.model.consts.push_back(std::move(c));
   cx.consts.push_back({&decl, type ? ConstSource::State::Pending : ConstSource::State::Failed});
-  cx.c_names.declare(decl.name, Sym::Const, index, cx.diag);
+  cx.declare_global(cx.c_names, decl.name, Sym::Const, index);
 }
 
 void fold_file_consts(Context &cx) {

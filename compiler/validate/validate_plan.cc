@@ -108,6 +108,9 @@ int resolve_actor(Context &cx, PlanScope &s, const ast::Name &name) {
   if (name.text.empty()) return -1;
   const Symbol *sym = s.names.find(name.text);
   if (sym && sym->kind == Sym::Actor) return sym->index;
+  // An actor that lost its name to an earlier declaration: the clash is reported already.
+  for (std::size_t i = 0; sym && i < s.ast.actors.size(); ++i)
+    if (s.ast.actors[i].name.text == name.text) return static_cast<int>(i);
   if (sym) {
     cx.diag.error(name.range, "type-mismatch", fmt::format("'{}' is {}, not an actor", name.text, with_article(sym->kind)))
         .note(sym->range, fmt::format("'{}' declared here", name.text));
@@ -154,23 +157,26 @@ std::optional<model::Target> lower_target(Context &cx, PlanScope &s, const ast::
   return std::nullopt;
 }
 
-/// The index of the outcome a rule names, or -1 after reporting it as unknown.
-int find_outcome(Context &cx, PlanScope &s, const ast::Name &name, const Callee &c) {
+/// The index of the outcome a rule names, or -1 after reporting it as unknown; then `guess`
+/// is the outcome offered as "did you mean", or -1.
+int find_outcome(Context &cx, PlanScope &s, const ast::Name &name, const Callee &c, int &guess) {
+  guess = -1;
   for (std::size_t k = 0; k < c.outcomes.size(); ++k)
     if (c.outcomes[k] == name.text) return static_cast<int>(k);
   if (name.text.empty()) return -1;
+  std::vector<Symbol> symbols;
+  for (std::size_t k = 0; k < c.outcomes.size(); ++k)
+    symbols.push_back({Sym::ResultState, static_cast<int>(k), c.outcomes[k],
+                       c.outcome_decls.empty() ? SourceRange{} : c.outcome_decls[k]->range});
+  std::vector<const Symbol *> candidates;
+  for (const Symbol &sym : symbols) candidates.push_back(&sym);
+  const Symbol *best = closest(name.text, candidates);
+  if (best) guess = best->index;
   const char *what = c.events ? "event" : "result state";
   if (!s.unknown.insert(fmt::format("{} {} {}", what, c.name, name.text)).second) return -1;
   auto &d = cx.diag.error(name.range, "unknown-name", fmt::format("unknown {} '{}' of '{}'", what, name.text, c.name));
-  std::vector<Symbol> symbols;
-  for (std::size_t k = 0; k < c.outcomes.size(); ++k)
-    symbols.push_back({Sym::ResultState, -1, c.outcomes[k], c.outcome_decls.empty() ? SourceRange{} : c.outcome_decls[k]->range});
-  std::vector<const Symbol *> candidates;
-  for (const Symbol &sym : symbols) candidates.push_back(&sym);
-  if (const Symbol *best = closest(name.text, candidates)) {
-    if (c.outcome_decls.empty()) d.note(fmt::format("did you mean '{}'?", best->name));
-    else d.note(best->range, fmt::format("did you mean '{}'?", best->name));
-  }
+  if (best && c.outcome_decls.empty()) d.note(fmt::format("did you mean '{}'?", best->name));
+  else if (best) d.note(best->range, fmt::format("did you mean '{}'?", best->name));
   return -1;
 }
 
@@ -188,7 +194,10 @@ std::vector<model::Rule> lower_rules(Context &cx, PlanScope &s, const std::vecto
   std::vector<const ast::Rule *> connected(c.outcomes.size(), nullptr);
   const char *what = c.events ? "event" : "result state";
   for (const ast::Rule &r : rules) {
-    int k = find_outcome(cx, s, r.outcome, c);
+    int guess;
+    int k = find_outcome(cx, s, r.outcome, c, guess);
+    // A misspelt outcome most likely meant the one offered: not also "not connected".
+    if (k < 0 && guess >= 0 && !connected[guess]) connected[guess] = &r;
     if (k < 0) continue;
     if (connected[k]) {
       cx.diag.error(r.outcome.range, "duplicate-rule", fmt::format("{} '{}' is connected twice", what, r.outcome.text))
@@ -285,13 +294,13 @@ std::optional<Callee> resolve_callee(Context &cx, PlanScope &s, const ast::Name 
                            cx.model.templates[c->index].kind == model::Template::Kind::Supervisor;
       if (is_supervisor == supervisor) candidates.push_back(c);
     }
-    report_unknown(cx.diag, s.unknown, name, "template", candidates);
+    report_unknown(cx.diag, s.unknown, name, supervisor ? "supervisor template" : "template", candidates);
     return std::nullopt;
   }
   if (sym->kind == Sym::Plan) {
     if (!supervisor) return plan_callee(cx, sym->index);
     cx.diag.error(name.range, "template-kind", fmt::format("'{}' is a plan; 'supervise' needs a supervisor template", name.text))
-        .note(sym->range, fmt::format("'{}' declared here", name.text));
+        .note(cx.model.plans[sym->index].range, fmt::format("'{}' declared here", name.text));
     return std::nullopt;
   }
   const model::Template &t = cx.model.templates[sym->index];
@@ -299,7 +308,7 @@ std::optional<Callee> resolve_callee(Context &cx, PlanScope &s, const ast::Name 
     cx.diag.error(name.range, "template-kind",
                   supervisor ? fmt::format("'{}' is an actor template; 'supervise' needs a supervisor template", name.text)
                              : fmt::format("'{}' is a supervisor template; an actor needs an actor or computation", name.text))
-        .note(sym->range, fmt::format("'{}' declared here", name.text));
+        .note(t.range, fmt::format("'{}' declared here", name.text));
     return std::nullopt;
   }
   s.toolboxes.insert(t.toolbox);
@@ -327,6 +336,12 @@ model::ActorUse lower_actor(Context &cx, PlanScope &s, const ast::ActorUse &a) {
   if (c && a.written_as_computation && !computation)
     cx.diag.error(a.template_name.range, "template-kind", fmt::format("'{}' is not a computation", c->name))
         .note(c->range, fmt::format("'{}' declared here", c->name));
+  if (c) {
+    out.templ = c->templ;
+    out.subplan = c->subplan;
+    out.args = lower_args(cx, s, a.args, *c, a.range);
+    out.rules = lower_rules(cx, s, a.rules, *c, a.name);
+  }
   for (const ast::Supervise &sup : a.supervisors) {
     if (computation)
       cx.diag.error(sup.name.range, "computation-supervisor",
@@ -334,12 +349,26 @@ model::ActorUse lower_actor(Context &cx, PlanScope &s, const ast::ActorUse &a) {
           .note("a computation runs to its result without interruption");
     out.supervisors.push_back(lower_supervise(cx, s, sup));
   }
-  if (!c) return out;
-  out.templ = c->templ;
-  out.subplan = c->subplan;
-  out.args = lower_args(cx, s, a.args, *c, a.range);
-  out.rules = lower_rules(cx, s, a.rules, *c, a.name);
   return out;
+}
+
+/// Global supervisors and actors, in textual order so that diagnostics come in it too.
+void lower_members(Context &cx, PlanScope &s) {
+  const auto &globals = s.ast.global_supervisors;
+  const auto &actors = s.ast.actors;
+  s.out.globals.resize(globals.size());
+  s.out.actors.resize(actors.size());
+  std::size_t g = 0, a = 0;
+  while (g < globals.size() || a < actors.size()) {
+    bool global_first = a == actors.size() || (g < globals.size() && globals[g].range.begin < actors[a].range.begin);
+    if (global_first) {
+      s.out.globals[g] = lower_supervise(cx, s, globals[g]);
+      ++g;
+    } else {
+      s.out.actors[a] = lower_actor(cx, s, actors[a]);
+      ++a;
+    }
+  }
 }
 
 // ------------------------------------------------------------------ warnings
@@ -416,7 +445,7 @@ void declare_plan(Context &cx, const ast::Plan &plan) {
   int index = static_cast<int>(cx.model.plans.size());
   cx.model.plans.push_back(std::move(out));
   cx.plans.push_back(&plan);
-  cx.plan_names.declare(plan.name, Sym::Plan, index, cx.diag);
+  cx.declare_global(cx.plan_names, plan.name, Sym::Plan, index);
 }
 
 void validate_plan(Context &cx, int index) {
@@ -426,8 +455,7 @@ void validate_plan(Context &cx, int index) {
   declare_members(cx, s, config_index);
   lower_config_inits(cx, s, config_index);
   set_start(cx, s);
-  for (const ast::Supervise &g : s.ast.global_supervisors) s.out.globals.push_back(lower_supervise(cx, s, g));
-  for (const ast::ActorUse &a : s.ast.actors) s.out.actors.push_back(lower_actor(cx, s, a));
+  lower_members(cx, s);
   s.out.toolboxes.assign(s.toolboxes.begin(), s.toolboxes.end());
   if (cx.diag.error_count() == errors_before) warn_unreachable(cx, s);
 }

@@ -51,6 +51,7 @@ void resolve_transitions(Context &cx, ChartScope &s) {
       cx.diag.error(t.range, "no-input", fmt::format("transition '{}' has no input place", out.name));
     out.inputs = resolve_places(cx, s, t.inputs, "inputs", out.name);
     out.outputs = resolve_places(cx, s, t.outputs, "outputs", out.name);
+    lower_transition_condition(cx, s, i);
   }
 }
 

@@ -71,7 +71,7 @@ void declare_toolbox(Context &cx, const ast::Toolbox &toolbox) {
   box.name = toolbox.name.text;
   box.range = toolbox.range;
   int box_index = static_cast<int>(cx.model.toolboxes.size());
-  cx.toolboxes.declare(toolbox.name, Sym::Toolbox, box_index, cx.diag);
+  cx.declare_global(cx.toolboxes, toolbox.name, Sym::Toolbox, box_index);
   for (const ast::Template &t : toolbox.templates) {
     model::Template out;
     out.kind = kind_of(t.kind);
@@ -86,7 +86,7 @@ void declare_toolbox(Context &cx, const ast::Toolbox &toolbox) {
     cx.templates.push_back(&t);
     cx.template_ok.push_back(ok);
     box.templates.push_back(index);
-    cx.plan_names.declare(t.name, Sym::Template, index, cx.diag);
+    cx.declare_global(cx.plan_names, t.name, Sym::Template, index);
   }
   cx.model.toolboxes.push_back(std::move(box));
 }

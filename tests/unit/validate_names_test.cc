@@ -1,0 +1,397 @@
+// The validator: names across files, duplicates, unknown names, reserved words.
+// Each test validates chart text and compares every diagnostic as gfec prints it.
+#include "support.h"
+#include "validate.h"
+
+#include <catch2/catch.hpp>
+
+#include <string>
+
+using namespace gfec;
+
+namespace {
+
+const char *const kBot = R"--(interface Bot {
+  bool Black();
+  bool White();
+  void Go();
+  void Stop();
+  void Motor(int side, float speed);
+  void Lamp(bool on);
+  float Distance();
+  int Count();
+}
+)--";
+
+const char *const kToolbox = R"--(toolbox Carbot {
+  actor Forward(in float distance) -> FORWARD_OK;
+  actor Turn(in float angle) -> TURN_OK;
+  actor SearchWall(out float angle) -> WALL_FOUND | NO_WALL_FOUND;
+  actor Say(in string text, in bool loud) -> SAID;
+  computation CountDown(in int n, out int rest) -> AGAIN | DONE;
+  supervisor CheckTouch() events TOUCHED;
+  supervisor CheckLane(in float dist) events LANE_NOT_FREE period 10ms;
+}
+)--";
+
+/// Loads in-memory files (the first is the main file) and validates them.
+struct Run {
+  test::FrontEnd fe;
+  model::Model model;
+
+  Run(std::initializer_list<std::pair<std::string, std::string>> files, WarningOptions w = {}) : fe(files, w) {
+    model = validate(fe.loaded.program, fe.sources, fe.diag);
+  }
+  std::string text() const { return fe.text(); }
+};
+
+[[maybe_unused]] WarningOptions all_warnings() {
+  WarningOptions w;
+  for (int i = 0; i < static_cast<int>(Warning::Count_); ++i) w.set(static_cast<Warning>(i), true);
+  return w;
+}
+
+} // namespace
+
+TEST_CASE("validate: a duplicate place is reported with a note at the first", "[validate]") {
+  Run r({{"t.sfc", R"--(import "bot.iface";
+sfc S {
+  initial place A;
+  place B;
+  place A;
+}
+)--"}, {"bot.iface", kBot}});
+  CHECK(r.text() == R"--(t.sfc:5:9: error: redefinition of place 'A' [duplicate-name]
+   place A;
+         ^
+t.sfc:3:17: note: previous definition of 'A' was here
+   initial place A;
+                 ^
+)--");
+}
+
+TEST_CASE("validate: places, transitions, vars and consts share one namespace per chart", "[validate]") {
+  Run r({{"t.sfc", R"--(import "bot.iface";
+sfc S {
+  var int A = 0;
+  initial place A;
+  const int t = 1;
+  t: A -> A;
+}
+)--"}, {"bot.iface", kBot}});
+  CHECK(r.text() == R"--(t.sfc:4:17: error: place 'A' has the same name as a variable [duplicate-name]
+   initial place A;
+                 ^
+t.sfc:3:11: note: variable 'A' declared here
+   var int A = 0;
+           ^
+t.sfc:6:3: error: transition 't' has the same name as a constant [duplicate-name]
+   t: A -> A;
+   ^
+t.sfc:5:13: note: constant 't' declared here
+   const int t = 1;
+             ^
+)--");
+}
+
+TEST_CASE("validate: the same place name in two charts is fine", "[validate]") {
+  Run r({{"t.sfc", R"--(sfc S { initial place A; }
+sfc R { initial place A; }
+)--"}});
+  CHECK(r.text() == R"--()--");
+}
+
+TEST_CASE("validate: a duplicate function within an interface", "[validate]") {
+  Run r({{"t.iface", R"--(interface Bot2 {
+  void Go();
+  bool Go();
+}
+)--"}});
+  CHECK(r.text() == R"--(t.iface:3:8: error: redefinition of function 'Go' [duplicate-name]
+   bool Go();
+        ^~
+t.iface:2:8: note: previous definition of 'Go' was here
+   void Go();
+        ^~
+)--");
+}
+
+TEST_CASE("validate: a name clashing with an imported one is reported in the importing file", "[validate]") {
+  Run r({{"t.sfc", R"--(import "bot.iface";
+const int Go = 1;
+)--"}, {"bot.iface", kBot}});
+  CHECK(r.text() == R"--(t.sfc:2:11: error: constant 'Go' has the same name as a function [duplicate-name]
+ const int Go = 1;
+           ^~
+bot.iface:4:8: note: function 'Go' declared here
+   void Go();
+        ^~
+)--");
+}
+
+TEST_CASE("validate: a chart may not have the name of a function", "[validate]") {
+  Run r({{"t.sfc", R"--(import "bot.iface";
+sfc Stop { initial place A; }
+)--"}, {"bot.iface", kBot}});
+  CHECK(r.text() == R"--(t.sfc:2:5: error: chart 'Stop' has the same name as a function [duplicate-name]
+ sfc Stop { initial place A; }
+     ^~~~
+bot.iface:5:8: note: function 'Stop' declared here
+   void Stop();
+        ^~~~
+)--");
+}
+
+TEST_CASE("validate: a chart constant may not have the name of a global constant", "[validate]") {
+  Run r({{"t.sfc", R"--(const float CRUISE = 0.5;
+sfc S {
+  const float CRUISE = 0.6;
+  initial place A;
+}
+)--"}, {"bot.iface", kBot}});
+  CHECK(r.text() == R"--(t.sfc:3:15: error: redefinition of constant 'CRUISE' [duplicate-name]
+   const float CRUISE = 0.6;
+               ^~~~~~
+t.sfc:1:13: note: previous definition of 'CRUISE' was here
+ const float CRUISE = 0.5;
+             ^~~~~~
+)--");
+}
+
+TEST_CASE("validate: two charts with one name", "[validate]") {
+  Run r({{"t.sfc", R"--(sfc S { initial place A; }
+fsm S { initial state A; }
+)--"}});
+  CHECK(r.text() == R"--(t.sfc:2:5: error: redefinition of chart 'S' [duplicate-name]
+ fsm S { initial state A; }
+     ^
+t.sfc:1:5: note: previous definition of 'S' was here
+ sfc S { initial place A; }
+     ^
+)--");
+}
+
+TEST_CASE("validate: an unknown function gets a did-you-mean at the declaration", "[validate]") {
+  Run r({{"t.sfc", R"--(interface LineBot {
+  bool Left_IR_Black();
+  void Left_FW();
+}
+sfc S {
+  initial place A { Left_FW(); }
+  place B;
+  transition A -> B when Left_IR_Blak();
+}
+)--"}});
+  CHECK(r.text() == R"--(t.sfc:8:26: error: unknown function 'Left_IR_Blak' [unknown-name]
+   transition A -> B when Left_IR_Blak();
+                          ^~~~~~~~~~~~
+t.sfc:2:8: note: did you mean 'Left_IR_Black'?
+   bool Left_IR_Black();
+        ^~~~~~~~~~~~~
+)--");
+}
+
+TEST_CASE("validate: an unknown name far from every declared one gets no suggestion", "[validate]") {
+  Run r({{"t.sfc", R"--(import "bot.iface";
+sfc S {
+  var int laps = 0;
+  initial place A;
+  A -> A when zzzzzz > 1;
+}
+)--"}, {"bot.iface", kBot}});
+  CHECK(r.text() == R"--(t.sfc:5:15: error: unknown name 'zzzzzz' [unknown-name]
+   A -> A when zzzzzz > 1;
+               ^~~~~~
+)--");
+}
+
+TEST_CASE("validate: an unknown name is reported once per chart", "[validate]") {
+  Run r({{"t.sfc", R"--(import "bot.iface";
+sfc S {
+  var int laps = 0;
+  initial place A { lap += 1; }
+  place B { lap += 2; }
+  transition A -> B when lap > 1;
+  transition B -> A when lap > 2 && Whte() && Whte();
+}
+)--"}, {"bot.iface", kBot}});
+  CHECK(r.text() == R"--(t.sfc:4:21: error: unknown variable 'lap' [unknown-name]
+   initial place A { lap += 1; }
+                     ^~~
+t.sfc:3:11: note: did you mean 'laps'?
+   var int laps = 0;
+           ^~~~
+t.sfc:6:26: error: unknown name 'lap' [unknown-name]
+   transition A -> B when lap > 1;
+                          ^~~
+t.sfc:3:11: note: did you mean 'laps'?
+   var int laps = 0;
+           ^~~~
+t.sfc:7:37: error: unknown function 'Whte' [unknown-name]
+   transition B -> A when lap > 2 && Whte() && Whte();
+                                     ^~~~
+bot.iface:3:8: note: did you mean 'White'?
+   bool White();
+        ^~~~~
+)--");
+}
+
+TEST_CASE("validate: names that are C or C++ keywords are rejected", "[validate]") {
+  Run r({{"t.sfc", R"--(interface Robot {
+  void register();
+  void Motor(int new, float speed);
+}
+sfc switch {
+  var int class = 0;
+  initial place int;
+  place this;
+}
+toolbox Tools { actor Wait(in float for) -> DONE | default; }
+plan namespace {
+  config { float double; }
+  start private;
+  actor private: Wait(1) { DONE -> terminate; default -> terminate; }
+}
+)--"}});
+  CHECK(r.text() == R"--(t.sfc:3:18: error: 'new' is a keyword of C++ and cannot name a parameter [reserved-name]
+   void Motor(int new, float speed);
+                  ^~~
+t.sfc:10:37: error: 'for' is a keyword of C and cannot name a parameter [reserved-name]
+ toolbox Tools { actor Wait(in float for) -> DONE | default; }
+                                     ^~~
+t.sfc:10:52: error: 'default' is a keyword of C and cannot name a result state [reserved-name]
+ toolbox Tools { actor Wait(in float for) -> DONE | default; }
+                                                    ^~~~~~~
+t.sfc:2:8: error: 'register' is a keyword of C and cannot name a function [reserved-name]
+   void register();
+        ^~~~~~~~
+t.sfc:5:5: error: 'switch' is a keyword of C and cannot name a chart [reserved-name]
+ sfc switch {
+     ^~~~~~
+t.sfc:11:6: error: 'namespace' is a keyword of C++ and cannot name a plan [reserved-name]
+ plan namespace {
+      ^~~~~~~~~
+t.sfc:6:11: error: 'class' is a keyword of C++ and cannot name a variable [reserved-name]
+   var int class = 0;
+           ^~~~~
+t.sfc:7:17: error: 'int' is a keyword of C and cannot name a place [reserved-name]
+   initial place int;
+                 ^~~
+t.sfc:8:9: error: 'this' is a keyword of C++ and cannot name a place [reserved-name]
+   place this;
+         ^~~~
+t.sfc:12:18: error: 'double' is a keyword of C and cannot name a config entry [reserved-name]
+   config { float double; }
+                  ^~~~~~
+t.sfc:14:9: error: 'private' is a keyword of C++ and cannot name an actor [reserved-name]
+   actor private: Wait(1) { DONE -> terminate; default -> terminate; }
+         ^~~~~~~
+)--");
+}
+
+TEST_CASE("validate: elapsed cannot name a function", "[validate]") {
+  Run r({{"t.sfc", R"--(interface Clock {
+  int elapsed(int p);
+}
+)--"}});
+  CHECK(r.text() == R"--(t.sfc:2:7: error: 'elapsed' is built into the chart language and cannot name a function [reserved-name]
+   int elapsed(int p);
+       ^~~~~~~
+)--");
+}
+
+TEST_CASE("validate: a place may not generate a name the engine or the interface already uses", "[validate]") {
+  Run r({{"t.sfc", R"--(interface LineBot {
+  void Left_FW();
+}
+sfc Left {
+  initial place FW;
+  place init;
+  place run;
+  place PLACE_COUNT;
+  place Stopped;
+}
+)--"}});
+  CHECK(r.text() == R"--(t.sfc:5:17: error: place 'FW' would generate 'Left_FW', the name of a function [reserved-name]
+   initial place FW;
+                 ^~
+t.sfc:2:8: note: 'Left_FW' declared here
+   void Left_FW();
+        ^~~~~~~
+t.sfc:6:9: error: place 'init' would generate 'Left_init', which the engine already defines [reserved-name]
+   place init;
+         ^~~~
+t.sfc:7:9: error: place 'run' would generate 'Left_run', which the engine already defines [reserved-name]
+   place run;
+         ^~~
+t.sfc:8:9: error: place 'PLACE_COUNT' would generate 'Left_PLACE_COUNT', which the engine already defines [reserved-name]
+   place PLACE_COUNT;
+         ^~~~~~~~~~~
+)--");
+}
+
+TEST_CASE("validate: an unnamed transition's T<n> name may not be taken", "[validate]") {
+  Run r({{"t.sfc", R"--(sfc S {
+  initial place A;
+  place T1;
+  transition A -> T1;
+  transition T1 -> A;
+  T0: A -> A;
+}
+)--"}});
+  CHECK(r.text() == R"--(t.sfc:4:3: error: this unnamed transition is named 'T0' by its position, which is already the name of a transition [duplicate-name]
+   transition A -> T1;
+   ^~~~~~~~~~~~~~~~~~~
+t.sfc:6:3: note: 'T0' declared here; name the transition ('name: A -> B') or rename it
+   T0: A -> A;
+   ^~
+t.sfc:5:3: error: this unnamed transition is named 'T1' by its position, which is already the name of a place [duplicate-name]
+   transition T1 -> A;
+   ^~~~~~~~~~~~~~~~~~~
+t.sfc:3:9: note: 'T1' declared here; name the transition ('name: A -> B') or rename it
+   place T1;
+         ^~
+)--");
+}
+
+TEST_CASE("validate: templates and plans share one namespace", "[validate]") {
+  Run r({{"t.plan", R"--(import "carbot.toolbox";
+plan Turn { start t; actor t: Forward(1) { FORWARD_OK -> terminate; } }
+toolbox Other { actor Forward(in float d) -> DONE; }
+)--"}, {"carbot.toolbox", kToolbox}});
+  CHECK(r.text() == R"--(t.plan:2:6: error: plan 'Turn' has the same name as a template [duplicate-name]
+ plan Turn { start t; actor t: Forward(1) { FORWARD_OK -> terminate; } }
+      ^~~~
+carbot.toolbox:3:9: note: template 'Turn' declared here
+   actor Turn(in float angle) -> TURN_OK;
+         ^~~~
+t.plan:3:23: error: redefinition of template 'Forward' [duplicate-name]
+ toolbox Other { actor Forward(in float d) -> DONE; }
+                       ^~~~~~~
+carbot.toolbox:2:9: note: previous definition of 'Forward' was here
+   actor Forward(in float distance) -> FORWARD_OK;
+         ^~~~~~~
+)--");
+}
+
+TEST_CASE("validate: duplicate interfaces and toolboxes", "[validate]") {
+  Run r({{"t.iface", R"--(interface Bot { void A(); }
+interface Bot { void B(); }
+toolbox Box { actor X() -> OK; }
+toolbox Box { actor Y() -> OK; }
+)--"}});
+  CHECK(r.text() == R"--(t.iface:2:11: error: redefinition of interface 'Bot' [duplicate-name]
+ interface Bot { void B(); }
+           ^~~
+t.iface:1:11: note: previous definition of 'Bot' was here
+ interface Bot { void A(); }
+           ^~~
+t.iface:4:9: error: redefinition of toolbox 'Box' [duplicate-name]
+ toolbox Box { actor Y() -> OK; }
+         ^~~
+t.iface:3:9: note: previous definition of 'Box' was here
+ toolbox Box { actor X() -> OK; }
+         ^~~
+)--");
+}
+

@@ -1,0 +1,292 @@
+// The validator: the rules and warnings of an sfc (LANGUAGE.md section 5).
+// Each test validates chart text and compares every diagnostic as gfec prints it.
+#include "support.h"
+#include "validate.h"
+
+#include <catch2/catch.hpp>
+
+#include <string>
+
+using namespace gfec;
+
+namespace {
+
+const char *const kBot = R"--(interface Bot {
+  bool Black();
+  bool White();
+  void Go();
+  void Stop();
+  void Motor(int side, float speed);
+  void Lamp(bool on);
+  float Distance();
+  int Count();
+}
+)--";
+
+const char *const kToolbox = R"--(toolbox Carbot {
+  actor Forward(in float distance) -> FORWARD_OK;
+  actor Turn(in float angle) -> TURN_OK;
+  actor SearchWall(out float angle) -> WALL_FOUND | NO_WALL_FOUND;
+  actor Say(in string text, in bool loud) -> SAID;
+  computation CountDown(in int n, out int rest) -> AGAIN | DONE;
+  supervisor CheckTouch() events TOUCHED;
+  supervisor CheckLane(in float dist) events LANE_NOT_FREE period 10ms;
+}
+)--";
+
+/// Loads in-memory files (the first is the main file) and validates them.
+struct Run {
+  test::FrontEnd fe;
+  model::Model model;
+
+  Run(std::initializer_list<std::pair<std::string, std::string>> files, WarningOptions w = {}) : fe(files, w) {
+    model = validate(fe.loaded.program, fe.sources, fe.diag);
+  }
+  std::string text() const { return fe.text(); }
+};
+
+[[maybe_unused]] WarningOptions all_warnings() {
+  WarningOptions w;
+  for (int i = 0; i < static_cast<int>(Warning::Count_); ++i) w.set(static_cast<Warning>(i), true);
+  return w;
+}
+
+} // namespace
+
+TEST_CASE("validate: an sfc needs an initial place", "[validate]") {
+  Run r({{"t.sfc", R"--(sfc S {
+  place A;
+  place B;
+  transition A -> B;
+}
+)--"}});
+  CHECK(r.text() == R"--(t.sfc:1:5: error: sfc 'S' has no initial place [initial-state]
+ sfc S {
+     ^
+t.sfc:1:5: note: mark the places active at start with 'initial place'
+)--");
+}
+
+TEST_CASE("validate: fsm syntax in an sfc", "[validate]") {
+  Run r({{"t.sfc", R"--(import "bot.iface";
+sfc S {
+  initial place A;
+  state B;
+  success state Done;
+  place C post Black();
+}
+)--"}, {"bot.iface", kBot}});
+  CHECK(r.text() == R"--(t.sfc:4:3: error: 'state' in an sfc: an sfc has places (write 'place B') [wrong-keyword]
+   state B;
+   ^~~~~~~~
+t.sfc:5:3: error: success and failure states belong to an fsm; an sfc has places [wrong-keyword]
+   success state Done;
+   ^~~~~~~~~~~~~~~~~~~
+t.sfc:6:16: error: 'post' belongs to a terminal state of an fsm [wrong-keyword]
+   place C post Black();
+                ^~~~~~~
+)--");
+}
+
+TEST_CASE("validate: transitions connect places of this chart", "[validate]") {
+  Run r({{"t.sfc", R"--(import "bot.iface";
+sfc S {
+  var int n = 0;
+  initial place Wait;
+  place Run;
+  transition Wiat -> Run;
+  transition Wait -> (Run, n);
+  transition Wait -> Other;
+}
+sfc Other { initial place X; }
+)--"}, {"bot.iface", kBot}});
+  CHECK(r.text() == R"--(t.sfc:6:14: error: unknown place 'Wiat' [unknown-name]
+   transition Wiat -> Run;
+              ^~~~
+t.sfc:4:17: note: did you mean 'Wait'?
+   initial place Wait;
+                 ^~~~
+t.sfc:7:28: error: 'n' is a variable, not a place [type-mismatch]
+   transition Wait -> (Run, n);
+                            ^
+t.sfc:3:11: note: 'n' declared here
+   var int n = 0;
+           ^
+t.sfc:8:22: error: unknown place 'Other' [unknown-name]
+   transition Wait -> Other;
+                      ^~~~~
+)--");
+}
+
+TEST_CASE("validate: a place listed twice in a transition's inputs or outputs", "[validate]") {
+  Run r({{"t.sfc", R"--(sfc S {
+  initial place A;
+  place B;
+  transition (A, B, A) -> B;
+  go: A -> (B, B);
+}
+)--"}});
+  CHECK(r.text() == R"--(t.sfc:4:21: error: place 'A' is listed twice in the inputs of transition 'T0' [duplicate-place]
+   transition (A, B, A) -> B;
+                     ^
+t.sfc:4:15: note: first listed here
+   transition (A, B, A) -> B;
+               ^
+t.sfc:5:16: error: place 'B' is listed twice in the outputs of transition 'go' [duplicate-place]
+   go: A -> (B, B);
+                ^
+t.sfc:5:13: note: first listed here
+   go: A -> (B, B);
+             ^
+)--");
+}
+
+TEST_CASE("validate: the period is given at most once and is positive", "[validate]") {
+  Run r({{"t.sfc", R"--(sfc S {
+  period 10ms;
+  period 20ms;
+  initial place A;
+}
+sfc R {
+  period 0ms;
+  initial place A;
+  transition A -> A when elapsed(A) > 1s;
+}
+)--"}});
+  CHECK(r.text() == R"--(t.sfc:3:3: error: second 'period' in sfc 'S' [period]
+   period 20ms;
+   ^~~~~~~~~~~~
+t.sfc:2:3: note: the first one is here
+   period 10ms;
+   ^~~~~~~~~~~~
+t.sfc:7:3: error: the period must be positive [period]
+   period 0ms;
+   ^~~~~~~~~~~
+)--");
+}
+
+TEST_CASE("validate: unreachable places and dead transitions are warned about", "[validate]") {
+  Run r({{"t.sfc", R"--(import "bot.iface";
+const bool DEBUG = false;
+sfc S {
+  initial place A;
+  place B;
+  place C;
+  place D;
+  place E;
+  transition A -> B when Black();
+  transition B -> A when DEBUG && White();
+  transition C -> D;
+  transition (B, D) -> E;
+  never: B -> A when false;
+}
+)--"}, {"bot.iface", kBot}});
+  CHECK(r.text() == R"--(t.sfc:6:9: warning: place 'C' can never become active [-Wunreachable-place]
+   place C;
+         ^
+t.sfc:7:9: warning: place 'D' can never become active [-Wunreachable-place]
+   place D;
+         ^
+t.sfc:8:9: warning: place 'E' can never become active [-Wunreachable-place]
+   place E;
+         ^
+t.sfc:10:3: warning: transition 'T1' can never fire: its condition is always false [-Wdead-transition]
+   transition B -> A when DEBUG && White();
+   ^~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~
+t.sfc:11:3: warning: transition 'T2' can never fire: its input place 'C' never becomes active [-Wdead-transition]
+   transition C -> D;
+   ^~~~~~~~~~~~~~~~~~
+t.sfc:12:3: warning: transition 'T3' can never fire: its input place 'D' never becomes active [-Wdead-transition]
+   transition (B, D) -> E;
+   ^~~~~~~~~~~~~~~~~~~~~~~
+t.sfc:13:3: warning: transition 'never' can never fire: its condition is always false [-Wdead-transition]
+   never: B -> A when false;
+   ^~~~~
+)--");
+}
+
+TEST_CASE("validate: reachability follows forks and joins", "[validate]") {
+  Run r({{"t.sfc", R"--(sfc S {
+  initial place A;
+  place B;
+  place C;
+  place D;
+  transition A -> (B, C);
+  transition (B, C) -> D;
+  transition D -> A;
+}
+)--"}}, all_warnings());
+  CHECK(r.text() == R"--()--");
+}
+
+TEST_CASE("validate: no reachability warnings for a chart with errors", "[validate]") {
+  Run r({{"t.sfc", R"--(sfc S {
+  initial place A;
+  place B;
+  place C;
+  transition A -> Bee;
+}
+)--"}});
+  CHECK(r.text() == R"--(t.sfc:5:19: error: unknown place 'Bee' [unknown-name]
+   transition A -> Bee;
+                   ^~~
+)--");
+}
+
+TEST_CASE("validate: conflicts are off by default", "[validate]") {
+  Run r({{"t.sfc", R"--(import "bot.iface";
+sfc S {
+  initial place A;
+  place B;
+  place C;
+  transition A -> B when Black();
+  transition A -> C when White();
+}
+)--"}, {"bot.iface", kBot}});
+  CHECK(r.text() == R"--()--");
+}
+
+TEST_CASE("validate: conflicts: transitions sharing an input place, settled by declaration order", "[validate]") {
+  Run r({{"t.sfc", R"--(import "bot.iface";
+sfc S {
+  initial place A;
+  place B;
+  place C;
+  left: A -> B when Black();
+  right: A -> C when White();
+  transition B -> A;
+  transition (C, A) -> A when true;
+  transition C -> B;
+}
+)--"}, {"bot.iface", kBot}}, all_warnings());
+  CHECK(r.text() == R"--(t.sfc:7:3: warning: transition 'right' competes with 'left' for place 'A' [-Wconflict]
+   right: A -> C when White();
+   ^~~~~
+t.sfc:6:3: note: 'left' is declared first: when both can fire, it takes the activation
+   left: A -> B when Black();
+   ^~~~
+t.sfc:9:3: warning: transition 'T3' competes with 'left' for place 'A' [-Wconflict]
+   transition (C, A) -> A when true;
+   ^~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~
+t.sfc:6:3: note: 'left' is declared first: when both can fire, it takes the activation
+   left: A -> B when Black();
+   ^~~~
+)--");
+}
+
+TEST_CASE("validate: verbatim code is noted only under -Wverbatim", "[validate]") {
+  Run r({{"t.sfc", R"--(%{ #include <stdio.h> %}
+sfc S {
+  initial place A { %{ puts("A"); %} }
+}
+)--"}}, all_warnings());
+  CHECK(r.text() == R"--(t.sfc:1:1: warning: verbatim code is copied unchecked: gfec cannot check it [-Wverbatim]
+ %{ #include <stdio.h> %}
+ ^~~~~~~~~~~~~~~~~~~~~~~~
+t.sfc:3:21: warning: verbatim code is copied unchecked: gfec cannot check it [-Wverbatim]
+   initial place A { %{ puts("A"); %} }
+                     ^~~~~~~~~~~~~~~~
+)--");
+  CHECK(Run({{"t.sfc", "%{ x %}\nsfc S { initial place A { %{ y; %} } }\n"}}).text() == "");
+}
+
