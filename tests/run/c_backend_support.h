@@ -263,6 +263,9 @@ struct Compiled {
   model::Model model;
   std::vector<OutputFile> files;
   std::string errors;  ///< rendered diagnostics when the chart did not compile
+  int chart = -1;      ///< the chart compiled: the first of the main file
+
+  const model::Chart &the_chart() const { return model.charts.at(static_cast<std::size_t>(chart)); }
 };
 
 inline std::unique_ptr<Compiled> compile_chart(const std::map<std::string, std::string> &files,
@@ -274,7 +277,7 @@ inline std::unique_ptr<Compiled> compile_chart(const std::map<std::string, std::
   LoadResult loaded = load_program(main, {}, mem, c->sources, c->diag);
   if (!c->diag.has_errors()) c->model = validate(loaded.program, c->sources, c->diag);
   for (const auto &d : c->diag.all()) c->errors += render_text(d, c->sources);
-  if (c->diag.has_errors()) return c;
+  if (c->diag.has_errors() || c->model.charts.empty()) return c;
   c->model.sources = &c->sources;
   EmitOptions o;
   o.output_path = output;
@@ -282,6 +285,7 @@ inline std::unique_ptr<Compiled> compile_chart(const std::map<std::string, std::
   o.line_directives = line_directives;
   for (std::size_t i = 0; i < c->model.charts.size(); ++i)
     if (c->model.charts[i].in_main_file && o.chart < 0) o.chart = static_cast<int>(i);
+  c->chart = o.chart;
   c->files = make_c_backend()->emit(c->model, o);
   return c;
 }

@@ -1,0 +1,113 @@
+// Golden tests of the C back end: every chart under tests/golden/c (*.sfc, *.fsm, with the files
+// it imports beside it) goes through the real front end and the back end in memory, and the
+// engine must equal <case>.c and <case>.h byte for byte. <case>.flags holds gfec options for a
+// case (only --no-line-directives matters here). tools/regen-golden.sh c rewrites the expected
+// files with the real gfec; a reviewer reads the diff (tests/README.md).
+#include "../run/c_backend_support.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cstdlib>
+
+using namespace cbt;
+
+namespace {
+
+const fs::path kGoldenDir = fs::path(GFEC_SOURCE_DIR) / "tests" / "golden" / "c";
+
+/// Every file of the golden folder that a chart may import or be: name -> text.
+std::map<std::string, std::string> chart_files() {
+  std::map<std::string, std::string> files;
+  for (const auto &entry : fs::directory_iterator(kGoldenDir)) {
+    auto ext = entry.path().extension();
+    if (ext == ".sfc" || ext == ".fsm" || ext == ".iface") files[entry.path().filename().string()] = read_file(entry.path());
+  }
+  return files;
+}
+
+std::vector<std::string> cases(const std::map<std::string, std::string> &files) {
+  std::vector<std::string> names;
+  for (const auto &[name, text] : files) {
+    auto ext = fs::path(name).extension();
+    if (ext == ".sfc" || ext == ".fsm") names.push_back(name);
+  }
+  return names;  // std::map keeps them sorted
+}
+
+/// The one line where two texts first differ (1-based), for a readable failure.
+std::string first_difference(const std::string &expected, const std::string &actual) {
+  std::istringstream e(expected), a(actual);
+  std::string el, al;
+  for (int line = 1;; ++line) {
+    bool more_e = static_cast<bool>(std::getline(e, el)), more_a = static_cast<bool>(std::getline(a, al));
+    if (!more_e && !more_a) return "the texts differ only in their last newline";
+    if (!more_e || !more_a || el != al)
+      return fmt::format("first difference at line {}:\n  expected: {}\n  actual:   {}", line,
+                         more_e ? el : "<end of file>", more_a ? al : "<end of file>");
+  }
+}
+
+/// Compares `actual` with the golden file; GFEC_UPDATE_GOLDEN=1 writes it instead.
+void check_golden(const std::string &name, const std::string &actual) {
+  fs::path golden = kGoldenDir / name;
+  if (const char *update = std::getenv("GFEC_UPDATE_GOLDEN"); update && std::string(update) == "1") {
+    write_file(golden, actual);
+    WARN("updated " << golden.string());
+    return;
+  }
+  REQUIRE(fs::exists(golden));
+  std::string expected = read_file(golden);
+  if (expected == actual) return;
+  fs::path out = fs::path(GFEC_BINARY_DIR) / "test-scratch" / "golden" / "c" / name;
+  write_file(out, actual);
+  FAIL_CHECK("tests/golden/c/" << name << " differs from what the back end writes now; "
+                                << first_difference(expected, actual) << "\nsee: diff -u " << golden.string() << " "
+                                << out.string() << "\naccept (after reading the diff): tools/regen-golden.sh c");
+}
+
+/// The case's gfec options from <case>.flags: whether it wants #line directives.
+bool line_directives_for(const std::string &stem) {
+  fs::path flags = kGoldenDir / (stem + ".flags");
+  if (!fs::exists(flags)) return true;
+  std::istringstream in(read_file(flags));
+  bool lines = true;
+  for (std::string flag; in >> flag;) {
+    INFO(flags.string() << ": only --no-line-directives is understood here");
+    REQUIRE(flag == "--no-line-directives");
+    lines = false;
+  }
+  return lines;
+}
+
+} // namespace
+
+TEST_CASE("c golden: engines equal tests/golden/c byte for byte", "[c_backend][golden]") {
+  auto files = chart_files();
+  auto names = cases(files);
+  REQUIRE(names.size() >= 4);
+  for (const auto &name : names) {
+    DYNAMIC_SECTION(name) {
+      std::string stem = fs::path(name).stem().string();
+      auto compiled = compile_chart(files, name, stem + ".c", line_directives_for(stem));
+      INFO(compiled->errors);
+      REQUIRE(!compiled->diag.has_errors());
+      REQUIRE(compiled->files.size() == 2);
+      CHECK(compiled->files[0].path == stem + ".c");
+      CHECK(compiled->files[1].path == stem + ".h");
+      for (const auto &f : compiled->files) check_golden(f.path, f.contents);
+    }
+  }
+}
+
+TEST_CASE("c golden: the same chart gives byte-identical engines", "[c_backend][golden]") {
+  auto files = chart_files();
+  for (const auto &name : cases(files)) {
+    auto one = compile_chart(files, name, "engine.c");
+    auto two = compile_chart(files, name, "engine.c");
+    INFO(name << one->errors);
+    REQUIRE(!one->diag.has_errors());
+    REQUIRE(one->files.size() == two->files.size());
+    for (std::size_t i = 0; i < one->files.size(); ++i) CHECK(one->files[i].contents == two->files[i].contents);
+  }
+}
