@@ -104,7 +104,9 @@ void Simulation::step_control() {
   const Pose p = pose();
   if (s.bumper_pressed && !was_pressed) {
     ++s.bumps;
-    s.bump_log.push_back({s.time(), {p.x, p.y}});
+    // Logged where the bumper is (its front centre): that is what touched.
+    const double reach = model::kLength / 2 + model::kBumperDepth;
+    s.bump_log.push_back({s.time(), {p.x + reach * std::cos(p.heading), p.y + reach * std::sin(p.heading)}});
   }
   if (!s.left_floor && (std::fabs(p.x) > s.world.size.x / 2 || std::fabs(p.y) > s.world.size.y / 2)) {
     s.left_floor = true;

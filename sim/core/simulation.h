@@ -37,7 +37,7 @@ struct ItemState {
   bool held = false;
 };
 
-/// A bumper press: when and where (robot centre).
+/// A bumper press: when, and where the front of the bumper was.
 struct Bump {
   double t = 0;
   Vec2 at;

@@ -88,11 +88,14 @@ void draw_line(Svg& s, const Frame& f, const Line& line) {
         line.closed ? "polygon" : "polyline", pts, kLineInk, f.len(line.width));
 }
 
+/// A box lower than the sonar is invisible to it: drawn paler, with a dashed edge.
+bool low(const Box& b) { return b.height < model::kSonarZ; }
+
 void draw_solids(Svg& s, const Frame& f, const World& w) {
   for (const Box& b : w.boxes)
-    s.add(R"(<rect x="{:.1f}" y="{:.1f}" width="{:.1f}" height="{:.1f}" rx="2" fill="{}" stroke="{}" stroke-width="1.5"/>)",
+    s.add(R"(<rect x="{:.1f}" y="{:.1f}" width="{:.1f}" height="{:.1f}" rx="2" fill="{}" fill-opacity="{}" stroke="{}" stroke-width="1.5"{}/>)",
           f.x(b.center.x - b.size.x / 2), f.y(b.center.y + b.size.y / 2), f.len(b.size.x), f.len(b.size.y),
-          kBoxFill, kBoxEdge);
+          kBoxFill, low(b) ? "0.45" : "1", kBoxEdge, low(b) ? R"( stroke-dasharray="5 3")" : "");
   for (const Wall& wl : w.walls)
     s.add(R"(<line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}" stroke="{}" stroke-width="{:.1f}" stroke-linecap="square"/>)",
           f.x(wl.from.x), f.y(wl.from.y), f.x(wl.to.x), f.y(wl.to.y), kWallInk, f.len(wl.thickness));
@@ -196,10 +199,15 @@ void draw_legend(Svg& s, double x, double y, const RunReport& r) {
   if (!w.walls.empty())
     entries.push_back(
         {fmt::format(R"(<line x1="0" y1="0" x2="22" y2="0" stroke="{}" stroke-width="6"/>)", kWallInk), "wall"});
-  if (!w.boxes.empty())
+  if (std::any_of(w.boxes.begin(), w.boxes.end(), [](const Box& b) { return !low(b); }))
     entries.push_back({fmt::format(R"(<rect x="2" y="-7" width="18" height="14" fill="{}" stroke="{}"/>)", kBoxFill,
                                    kBoxEdge),
                        "box"});
+  if (std::any_of(w.boxes.begin(), w.boxes.end(), low))
+    entries.push_back(
+        {fmt::format(R"(<rect x="2" y="-7" width="18" height="14" fill="{}" fill-opacity="0.45" stroke="{}" stroke-dasharray="5 3"/>)",
+                     kBoxFill, kBoxEdge),
+         "low box (under the sonar)"});
   if (!w.items.empty()) {
     entries.push_back({fmt::format(R"(<circle cx="11" cy="0" r="6" fill="{}"/>)", kItem), "item"});
     entries.push_back(

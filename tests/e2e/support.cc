@@ -3,6 +3,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -74,6 +75,12 @@ SimRun run_sim(const std::string& chart, const std::string& world, double second
   if (fs::exists(json)) run.result = nlohmann::json::parse(slurp(json));
   run.svg_written = fs::exists(svg) && fs::file_size(svg) > 0;
   return run;
+}
+
+bool skipped_for_missing_backend(const SimRun& run) {
+  if (run.exit_code == 0 || run.output.find("unknown back end") == std::string::npos) return false;
+  std::printf("E2E-SKIP: gfec cannot generate this engine yet:\n%s\n", run.output.c_str());
+  return true;
 }
 
 carbot::World world(const std::string& relative) { return carbot::load_world(source(relative)); }
