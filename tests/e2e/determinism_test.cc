@@ -24,3 +24,14 @@ TEST_CASE("determinism: two runs of the line follower give identical traces", "[
   REQUIRE(b.exit_code == 0);
   CHECK(a.trace_text == b.trace_text);
 }
+
+TEST_CASE("determinism: two runs of the wall-follow plan give identical traces", "[e2e][determinism][plan]") {
+  const e2e::SimRun a = e2e::run_sim("samples/wall_follow.plan", "sim/worlds/room.json", 40);
+  const e2e::SimRun b = e2e::run_sim("samples/wall_follow.plan", "sim/worlds/room.json", 40);
+  INFO(a.output << b.output);
+  if (e2e::skipped_for_missing_backend(a)) return;
+  REQUIRE(a.exit_code == 0);
+  REQUIRE(b.exit_code == 0);
+  CHECK(a.trace_text == b.trace_text);
+  CHECK(a.result == b.result);
+}
