@@ -233,6 +233,8 @@ Token Lexer::string(std::uint32_t begin) {
       value += c;
       continue;
     }
+    // A backslash that ends the file escapes nothing: the string is unterminated.
+    if (pos_ >= text_.size()) return error(begin, pos_, "missing terminating '\"' character");
     char e = peek();
     ++pos_;
     switch (e) {
