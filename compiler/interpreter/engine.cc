@@ -72,10 +72,11 @@ std::string Engine::label(const model::Transition &t) const {
 bool Engine::condition(int t, Frame &f) {
   const model::Transition &tr = chart_.transitions[static_cast<std::size_t>(t)];
   if (!tr.condition) return true;
+  const std::size_t mark = f.log ? f.log->size() : 0;
   f.depth = 2;
   bool holds = convert(evaluate(*tr.condition, f), model::Type::Bool, tr.condition->range).b;
   f.depth = 1;
-  if (f.log) f.log->add(EventKind::Condition, 1, fmt::format("cond {} = {}", tr.name, holds ? "true" : "false"));
+  if (f.log) f.log->insert(mark, EventKind::Condition, 1, fmt::format("cond {} = {}", tr.name, holds ? "true" : "false"));
   return holds;
 }
 
@@ -169,10 +170,11 @@ void Engine::run_fsm(Frame &f) {
         if (!tr.inputs.empty() && tr.inputs[0] == state_) f.log->add(EventKind::Enabled, 1, "enabled " + tr.name);
     }
     if (options_.check_post && neu.terminal != model::Terminal::None && neu.post) {
+      const std::size_t mark = f.log ? f.log->size() : 0;
       f.depth = 2;
       bool holds = convert(evaluate(*neu.post, f), model::Type::Bool, neu.post->range).b;
       f.depth = 1;
-      if (f.log) f.log->add(EventKind::Post, 1, fmt::format("post {} = {}", neu.name, holds ? "true" : "false"));
+      if (f.log) f.log->insert(mark, EventKind::Post, 1, fmt::format("post {} = {}", neu.name, holds ? "true" : "false"));
     }
   }
   const model::Place &p = chart_.places[now];

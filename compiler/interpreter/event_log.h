@@ -42,6 +42,12 @@ struct RenderOptions {
 class EventLog {
 public:
   void add(EventKind kind, int depth, std::string text) { events_.push_back({kind, depth, std::move(text)}); }
+  /// Inserts an event before the one at `position`: a condition's verdict goes before the
+  /// calls that decided it, so that the indented log reads top-down.
+  void insert(std::size_t position, EventKind kind, int depth, std::string text) {
+    events_.insert(events_.begin() + static_cast<std::ptrdiff_t>(position), Event{kind, depth, std::move(text)});
+  }
+  std::size_t size() const { return events_.size(); }
   const std::vector<Event> &events() const { return events_; }
   void clear() { events_.clear(); }
   /// The selected layers, one event a line.

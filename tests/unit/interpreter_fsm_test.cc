@@ -81,7 +81,7 @@ TEST_CASE("interpreter fsm: failure, hooks and the postcondition check") {
   checks.check_post = true;
   interp::RunResult r = interp::run_chart(c->model, 0, done, 3, checks, diag);
   std::string log = r.log.render({false, true});
-  CHECK(log.find("fire T5: Z3 -> Done\nexit Z3\nentry Done\ncall ItemAtDestination() = false\npost Done = false\n") !=
+  CHECK(log.find("fire T5: Z3 -> Done\nexit Z3\nentry Done\npost Done = false\ncall ItemAtDestination() = false\n") !=
         std::string::npos);
 }
 
