@@ -97,14 +97,21 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
   bool no_line = false;
   app.add_option("files", o.inputs, "Chart files to compile (several only with --check)")->required();
   app.add_option("-o,--output", o.output, "Output file; a C engine's header is written beside it");
-  app.add_option("-I", o.include_dirs, "Add DIR to the folders searched for imports")->type_name("DIR");
+  // One value per occurrence (-I a -I b, -Wall -Werror): CLI11 would otherwise let a vector
+  // option swallow the file names that follow it ("-Wall x.sfc").
+  app.add_option("-I", o.include_dirs, "Add DIR to the folders searched for imports")
+      ->type_name("DIR")
+      ->allow_extra_args(false);
   app.add_flag("--check", o.check_only, "Validate only: report every diagnostic and write nothing");
   app.add_option("--emit", o.emit, "Back end: c, cpp, json, dot, svg or toolbox-skeleton (default: from the file)");
   app.add_option("--chart", o.chart, "The chart or plan to compile when a file declares several")->type_name("NAME");
   app.add_flag("--no-line-directives", no_line, "Do not write #line directives pointing back to the chart");
-  app.add_option("-W", warning_flags, "Warning control: -W<name>, -Wno-<name>, -Wall, -Werror")->type_name("NAME");
+  app.add_option("-W", warning_flags, "Warning control: -W<name>, -Wno-<name>, -Wall, -Werror")
+      ->type_name("NAME")
+      ->allow_extra_args(false);
   app.add_option("-f", f_flags, "-fdiagnostics-format=text|json|sarif-stderr|sarif-file, -fmax-errors=N")
-      ->type_name("OPTION");
+      ->type_name("OPTION")
+      ->allow_extra_args(false);
   app.set_version_flag("--version", fmt::format("gfec {}", GFEC_VERSION));
   app.footer(app.get_footer() + "\nDependency files (as gcc): -MD writes OUTPUT.d (or -MF FILE) for make, listing\n"
                                 "every imported file; -MP adds an empty rule per import; -MT TARGET names the target.\n");

@@ -1,0 +1,80 @@
+#!/usr/bin/env bash
+# gfec --check as CI runs it: every file validated, every diagnostic reported, nothing written;
+# exit 1 on any error, 0 on warnings alone unless -Werror, 2 for an unreadable file.
+# Usage: check.sh GFEC
+set -euo pipefail
+gfec=$1
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+mkdir "$work/charts"
+cd "$work/charts"
+# What gfec prints goes outside the folder being checked, whose listing must not change.
+out="$work/out" err="$work/err"
+
+cat > robot.iface <<'CHART'
+interface Robot { bool Ready(); void Go(); }
+CHART
+cat > good.sfc <<'CHART'
+import "robot.iface";
+sfc Good { initial place A { Go(); } place B; A -> B when Ready(); B -> A when !Ready(); }
+CHART
+cat > warn.sfc <<'CHART'
+import "robot.iface";
+sfc Warn { initial place A { Go(); } place B; place Island; A -> B when Ready(); B -> A; }
+CHART
+cat > bad1.sfc <<'CHART'
+import "robot.iface";
+sfc Bad1 { initial place A { Go(); } A -> Nowhere when Ready(); }
+CHART
+cat > bad2.sfc <<'CHART'
+sfc Bad2 { initial place A
+CHART
+listing() { ls -lA --time-style=full-iso "$work/charts"; stat -c %y "$work/charts"; }
+before=$(listing)
+
+set +e
+"$gfec" --check good.sfc >"$out" 2>"$err"; code=$?
+set -e
+[ $code -eq 0 ] || fail "a good file: exit $code"
+[ ! -s "$err" ] && [ ! -s "$out" ] || fail "a good file printed something"
+
+set +e
+"$gfec" --check warn.sfc 2>"$err"; code=$?
+set -e
+[ $code -eq 0 ] || fail "warnings alone must exit 0, not $code"
+grep -q "warn.sfc:2:.*warning: .*Island.*\[-Wunreachable-place\]" "$err" || fail "no warning: $(cat "$err")"
+set +e
+"$gfec" --check -Werror warn.sfc 2>"$err"; code=$?
+set -e
+[ $code -eq 1 ] || fail "-Werror: exit $code"
+grep -q "error: .*Island.*\[-Wunreachable-place\]" "$err" || fail "-Werror: $(cat "$err")"
+
+# Every file is checked and every diagnostic reported, the bad ones around a good one.
+set +e
+"$gfec" --check bad1.sfc good.sfc warn.sfc bad2.sfc 2>"$err"; code=$?
+set -e
+[ $code -eq 1 ] || fail "errors: exit $code"
+grep -q "^bad1.sfc:2:.*error: .*Nowhere" "$err" || fail "bad1 not reported: $(cat "$err")"
+grep -q "^warn.sfc:2:.*warning:" "$err" || fail "warn not reported: $(cat "$err")"
+grep -q "^bad2.sfc:.*error:" "$err" || fail "bad2 not reported: $(cat "$err")"
+grep -q "good.sfc" "$err" && fail "good.sfc reported: $(cat "$err")"
+
+# An unreadable file is an I/O error (2), and the others are still checked.
+set +e
+"$gfec" --check missing.sfc bad1.sfc 2>"$err"; code=$?
+set -e
+[ $code -eq 2 ] || fail "missing file: exit $code"
+grep -q "cannot read 'missing.sfc'" "$err" || fail "$(cat "$err")"
+grep -q "^bad1.sfc:2:" "$err" || fail "bad1 not checked after a missing file"
+
+# --check writes nothing, whatever the format; -o and -MD are refused.
+"$gfec" --check -fdiagnostics-format=json good.sfc 2>/dev/null
+"$gfec" --check -fdiagnostics-format=sarif-stderr good.sfc 2>/dev/null
+[ "$(listing)" = "$before" ] || fail "--check wrote something: $(listing)"
+set +e
+"$gfec" --check -o x.c good.sfc 2>/dev/null; c1=$?
+"$gfec" --check -MD good.sfc 2>/dev/null; c2=$?
+set -e
+[ $c1 -eq 2 ] && [ $c2 -eq 2 ] || fail "--check with -o/-MD: exit $c1 $c2"
+echo "gfec --check: all checks passed"

@@ -1,0 +1,53 @@
+// -fdiagnostics-format=json: gcc's JSON diagnostics, saying the same as the text format.
+'use strict';
+const { test } = require('node:test');
+const assert = require('node:assert/strict');
+const { gfec, scratch, parseText, CHARTS } = require('./helpers');
+
+test('json: an array of diagnostics with kind, message, caret/finish locations, notes and option', () => {
+  const dir = scratch(CHARTS);
+  const files = ['typo.sfc', 'syntax.sfc', 'lonely.sfc'];
+  const r = gfec(['--check', '-fdiagnostics-format=json', ...files], dir);
+  const text = gfec(['--check', ...files], dir);
+  assert.equal(r.code, 1);
+  const all = JSON.parse(r.stderr);
+  assert.ok(Array.isArray(all));
+  const expected = parseText(text.stderr);
+  assert.equal(all.length, expected.length);
+  all.forEach((d, i) => {
+    const want = expected[i];
+    assert.equal(d.kind, want.severity);
+    assert.equal(d.message, want.message);
+    assert.equal(d.locations.length, 1);
+    const caret = d.locations[0].caret;
+    assert.equal(caret.file, want.file);
+    assert.equal(caret.line, want.line);
+    assert.equal(caret['byte-column'], want.column);
+    if (d.locations[0].finish) {
+      assert.equal(d.locations[0].finish.line, caret.line);
+      assert.ok(d.locations[0].finish.column > caret.column);
+    }
+    assert.ok(Array.isArray(d.children));
+    if (d.kind === 'warning') assert.equal(d.option, want.check);
+    else assert.equal(d.option, undefined);
+  });
+  const typo = all.find((d) => d.locations[0].caret.file === 'typo.sfc');
+  // "Stoped" is 6 characters: finish is its last one (inclusive, as gcc).
+  assert.equal(typo.locations[0].finish.column - typo.locations[0].caret.column, 5);
+  assert.equal(typo.children[0].kind, 'note');
+  assert.match(typo.children[0].message, /did you mean 'Stopped'/);
+  assert.equal(typo.children[0].locations[0].caret.line, 4);
+});
+
+test('json: a clean check prints an empty array and exits 0', () => {
+  const dir = scratch(CHARTS);
+  const r = gfec(['--check', '-fdiagnostics-format=json', 'good.sfc'], dir);
+  assert.equal(r.code, 0);
+  assert.deepEqual(JSON.parse(r.stderr), []);
+});
+
+test('an unknown diagnostics format is a usage error', () => {
+  const r = gfec(['--check', '-fdiagnostics-format=xml', 'x.sfc'], scratch());
+  assert.equal(r.code, 2);
+  assert.match(r.stderr, /unknown diagnostics format 'xml'/);
+});

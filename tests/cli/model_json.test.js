@@ -1,0 +1,107 @@
+// --emit=json: the validated model, checked against what the sample charts themselves say.
+'use strict';
+const { test } = require('node:test');
+const assert = require('node:assert/strict');
+const fs = require('node:fs');
+const path = require('node:path');
+const Ajv = require('ajv');
+const { gfec, scratch, SAMPLES, SOURCE_DIR } = require('./helpers');
+
+const ajv = new Ajv({ allErrors: true, strict: false });
+const validateModel = ajv.compile(JSON.parse(fs.readFileSync(path.join(SOURCE_DIR, 'docs', 'model-json.schema.json'), 'utf8')));
+
+function emit(file, extra = []) {
+  const out = path.join(scratch(), 'model.json');
+  const r = gfec([file, '--emit=json', '-o', out, ...extra], path.dirname(file));
+  assert.equal(r.code, 0, r.stderr);
+  const doc = JSON.parse(fs.readFileSync(out, 'utf8'));
+  assert.ok(validateModel(doc), JSON.stringify(validateModel.errors, null, 2));
+  return doc;
+}
+
+const fold = (s) => s.replace(/\s+/g, ' ').trim();
+const chartFiles = fs.readdirSync(SAMPLES).filter((f) => /\.(sfc|fsm)$/.test(f));
+
+for (const file of chartFiles) {
+  test(`json: ${file} as the chart says`, () => {
+    const text = fs.readFileSync(path.join(SAMPLES, file), 'utf8').replace(/\/\/.*$/gm, '');
+    const doc = emit(path.join(SAMPLES, file));
+    const [, kind, name] = /\b(sfc|fsm)\s+(\w+)/.exec(text);
+    assert.equal(doc.kind, kind);
+    assert.equal(doc.name, name);
+    assert.equal(doc.source, path.join(SAMPLES, file));
+
+    const period = /\bperiod\s+(\d+)ms/.exec(text);
+    assert.equal(doc.period_ms, period ? +period[1] : null);
+
+    const places = [...text.matchAll(/^\s*((?:initial|success|failure)\s+)?(?:place|state)\s+(\w+)/gm)];
+    const list = kind === 'sfc' ? doc.places : doc.states;
+    assert.deepEqual(list.map((p) => p.name), places.map((m) => m[2]));
+    assert.deepEqual(list.map((p) => p.initial), places.map((m) => (m[1] || '').trim() === 'initial'));
+    if (kind === 'fsm') {
+      assert.deepEqual(list.map((p) => p.terminal), places.map((m) => {
+        const k = (m[1] || '').trim();
+        return k === 'success' || k === 'failure' ? k : null;
+      }));
+    }
+
+    const arrows = [...text.matchAll(/^\s*(?:transition\s+)?(?:\w+\s*:\s*)?([\w(), ]+?)\s*->\s*([\w(), ]+?)(?:\s+when\s+([^;]+))?;/gm)];
+    assert.equal(doc.transitions.length, arrows.length);
+    const names = (s) => s.replace(/[()]/g, '').split(',').map((x) => x.trim());
+    doc.transitions.forEach((t, i) => {
+      assert.deepEqual(t.inputs, names(arrows[i][1]));
+      assert.deepEqual(t.outputs, names(arrows[i][2]));
+      assert.equal(t.when, arrows[i][3] ? fold(arrows[i][3]) : 'true');
+      if (t.condition) assert.equal(t.condition.type, 'bool');
+    });
+
+    // Every function a chart calls is declared by the interface it imports.
+    const called = new Set([...text.matchAll(/(\w+)\s*\(/g)].map((m) => m[1]));
+    for (const f of doc.functions) assert.ok(called.has(f.name), f.name);
+    for (const f of called) if (f !== 'elapsed') assert.ok(doc.functions.some((g) => g.name === f), f);
+  });
+}
+
+test('json: the wall-following plan: config, start, actors, supervisors and rules', () => {
+  const file = path.join(SAMPLES, 'wall_follow.plan');
+  const text = fs.readFileSync(file, 'utf8').replace(/\/\/.*$/gm, '');
+  const doc = emit(file);
+  assert.equal(doc.kind, 'plan');
+  assert.equal(doc.name, /\bplan\s+(\w+)/.exec(text)[1]);
+  assert.equal(doc.start, /\bstart\s+(\w+)/.exec(text)[1]);
+  const config = /config\s*\{([^}]*)\}/.exec(text)[1];
+  assert.deepEqual(doc.config.map((c) => c.name), [...config.matchAll(/\b\w+\s+(\w+)\s*(?:=|;)/g)].map((m) => m[1]));
+  assert.deepEqual(doc.actors.map((a) => a.name), [...text.matchAll(/\bactor\s+(\w+)\s*:/g)].map((m) => m[1]));
+  assert.deepEqual(doc.actors.map((a) => a.template), [...text.matchAll(/\bactor\s+\w+\s*:\s*(\w+)/g)].map((m) => m[1]));
+  const supervisors = [...text.matchAll(/\bsupervise\s+(\w+)\s*:\s*(\w+)/g)].map((m) => m[1]);
+  const found = [...doc.supervisors, ...doc.actors.flatMap((a) => a.supervisors)].map((s) => s.name);
+  assert.deepEqual(found.sort(), supervisors.sort());
+  // Every `OUTCOME -> target;` of the text is one rule.
+  const rules = [...text.matchAll(/\b([A-Z_]+)\s*->\s*(\w+)\s*;/g)].map((m) => `${m[1]}->${m[2]}`);
+  assert.deepEqual(doc.rules.map((r) => `${r.outcome}->${r.target}`).sort(), rules.sort());
+  // Data flow: each config entry an argument mentions is listed with it.
+  for (const a of doc.actors)
+    for (const arg of a.args)
+      for (const c of doc.config)
+        assert.equal(arg.config.includes(c.name), new RegExp(`\\b${c.name}\\b`).test(arg.formula.text), `${a.name} ${c.name}`);
+  const search = doc.actors.find((a) => a.template === 'SearchWall');
+  assert.equal(search.args[0].dir, 'out');
+  assert.ok(doc.templates.some((t) => t.name === 'SearchWall' && t.results.includes('WALL_FOUND')));
+});
+
+test('json: --chart picks one of several charts; the output is deterministic', () => {
+  const dir = scratch({
+    'two.sfc': 'interface R { bool Ready(); void Go(); }\nsfc One { initial place A { Go(); } place B; A -> B when Ready(); }\n' +
+      'sfc Two { var int n = 0; initial place X { n += 1; } place Y; transition Go: X -> Y when n >= 3 && Ready(); }\n',
+  });
+  const two = emit(path.join(dir, 'two.sfc'), ['--chart', 'Two']);
+  assert.equal(two.name, 'Two');
+  assert.deepEqual(two.vars.map((v) => [v.name, v.type]), [['n', 'int']]);
+  assert.equal(two.transitions[0].name, 'Go');
+  assert.equal(two.transitions[0].named, true);
+  assert.equal(two.transitions[0].when, 'n >= 3 && Ready()');
+  assert.equal(two.transitions[0].condition.tree.op, '&&');
+  assert.equal(two.places[0].action[0].kind, 'assign');
+  const again = emit(path.join(dir, 'two.sfc'), ['--chart', 'Two']);
+  assert.deepEqual(again, two);
+});

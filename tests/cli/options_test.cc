@@ -1,0 +1,70 @@
+// The command line as make and CMake pass it: gcc's -M flags before CLI11, diagnostics formats.
+#include "options.h"
+
+#include <catch2/catch.hpp>
+
+#include <vector>
+
+using namespace gfec;
+
+namespace {
+
+ParsedCommandLine parse(std::vector<const char *> args) {
+  args.insert(args.begin(), "gfec");
+  return parse_command_line(static_cast<int>(args.size()), args.data());
+}
+
+} // namespace
+
+TEST_CASE("options: -MD -MF -MP -MT as gcc spells them") {
+  auto cl = parse({"-MD", "-MF", "deps/x.d", "-MP", "-MT", "fw/engine.c", "x.sfc", "-o", "engine.c"});
+  REQUIRE_FALSE(cl.exit_now);
+  CHECK(cl.options.deps.write);
+  CHECK(cl.options.deps.file == "deps/x.d");
+  CHECK(cl.options.deps.phony);
+  CHECK(cl.options.deps.targets == std::vector<std::string>{"fw/engine.c"});
+  CHECK(cl.options.inputs == std::vector<std::string>{"x.sfc"});
+  CHECK(cl.options.output == "engine.c");
+
+  auto attached = parse({"x.sfc", "-MMD", "-MFx.d", "-MTa", "-MTb"});
+  REQUIRE_FALSE(attached.exit_now);
+  CHECK(attached.options.deps.write);
+  CHECK(attached.options.deps.file == "x.d");
+  CHECK(attached.options.deps.targets == std::vector<std::string>{"a", "b"});
+  CHECK_FALSE(attached.options.deps.phony);
+
+  auto none = parse({"x.sfc"});
+  CHECK_FALSE(none.options.deps.write);
+}
+
+TEST_CASE("options: bad -M flags are usage errors") {
+  auto missing = parse({"x.sfc", "-MF"});
+  CHECK(missing.exit_now);
+  CHECK(missing.exit_code == 2);
+  CHECK(missing.message.find("missing file after '-MF'") != std::string::npos);
+  auto unknown = parse({"-MX", "x.sfc"});
+  CHECK(unknown.exit_code == 2);
+  CHECK(unknown.message.find("unknown option '-MX'") != std::string::npos);
+  auto check = parse({"--check", "-MD", "x.sfc"});
+  CHECK(check.exit_code == 2);
+  // After "--" everything is a file name, even one that starts like a flag.
+  auto files = parse({"--check", "--", "-MD.sfc"});
+  REQUIRE_FALSE(files.exit_now);
+  CHECK(files.options.inputs == std::vector<std::string>{"-MD.sfc"});
+  CHECK_FALSE(files.options.deps.write);
+}
+
+TEST_CASE("options: -fdiagnostics-format and -W take one value each, not the files after them") {
+  auto cl = parse({"--check", "-fdiagnostics-format=sarif-file", "a.sfc", "-Wall", "b.sfc", "-Werror", "c.sfc"});
+  REQUIRE_FALSE(cl.exit_now);
+  CHECK(cl.options.diagnostics_format == DiagnosticsFormat::SarifFile);
+  CHECK(cl.options.inputs == std::vector<std::string>{"a.sfc", "b.sfc", "c.sfc"});
+  CHECK(cl.options.warnings.as_errors);
+  CHECK(parse({"--check", "-fdiagnostics-format=json", "a.sfc"}).options.diagnostics_format == DiagnosticsFormat::Json);
+  CHECK(parse({"--check", "-fdiagnostics-format=sarif-stderr", "a.sfc"}).options.diagnostics_format ==
+        DiagnosticsFormat::SarifStderr);
+  CHECK(parse({"--check", "-fdiagnostics-format=text", "a.sfc"}).options.diagnostics_format == DiagnosticsFormat::Text);
+  auto bad = parse({"--check", "-fdiagnostics-format=xml", "a.sfc"});
+  CHECK(bad.exit_code == 2);
+  CHECK(bad.message == "gfec: error: unknown diagnostics format 'xml' (text, json, sarif-stderr, sarif-file)\n");
+}
