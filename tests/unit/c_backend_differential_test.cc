@@ -1,0 +1,182 @@
+// The C engine against the reference interpreter (compiler/interpreter): engines and the
+// interpreter must agree tick for tick (LANGUAGE.md). Each chart runs on random scripts (fixed
+// seeds) once as a compiled engine with the run harness (-DX_HOOKS) and once in the interpreter,
+// whose calls, hooks and activation are printed in the harness's log format; the logs must match.
+#include "../run/c_backend_support.h"
+
+#include "interpreter/engine.h"
+#include "interpreter/event_log.h"
+
+#include <catch2/catch.hpp>
+
+#include <cstdio>
+#include <random>
+
+using namespace cbt;
+
+namespace {
+
+/// One tick's inputs: function name -> value (absent: 0).
+using Tick = std::map<std::string, double>;
+
+std::string script_text(const std::vector<Tick> &ticks) {
+  std::string s;
+  for (const auto &tick : ticks) {
+    std::string line;
+    for (const auto &[name, value] : tick) line += fmt::format("{}{}={}", line.empty() ? "" : " ", name, value);
+    s += line + "\n";
+  }
+  return s;
+}
+
+/// Random inputs for every sensing function of the chart: bools true with a probability that
+/// differs per function, numbers from a few exactly representable values.
+std::vector<Tick> random_script(const model::Model &m, const model::Chart &chart, unsigned seed, int length) {
+  std::mt19937 rng(seed);
+  std::vector<Tick> ticks(static_cast<std::size_t>(length));
+  for (int f : chart.functions) {
+    const auto &fn = m.functions[static_cast<std::size_t>(f)];
+    if (fn.result == Type::Void) continue;
+    unsigned percent = 10 + rng() % 80;
+    for (auto &tick : ticks) {
+      if (fn.result == Type::Bool) {
+        if (rng() % 100 < percent) tick[fn.name] = 1;
+      } else {
+        tick[fn.name] = fn.result == Type::Int ? static_cast<double>(rng() % 5) : static_cast<double>(rng() % 8) * 0.25 - 0.5;
+      }
+    }
+  }
+  return ticks;
+}
+
+std::string printf_g(double v) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%g", v);
+  return buffer;
+}
+
+/// What the harness prints for a value of type `t`: %d for bool and int, %g for floats.
+std::string harness_value(const interp::Value &v) {
+  switch (v.type) {
+  case Type::Bool: return v.b ? "1" : "0";
+  case Type::Float:
+  case Type::Double: return printf_g(v.f);
+  default: return std::to_string(v.i);
+  }
+}
+
+/// The interpreter's side: answers calls from the script and writes them as the harness does.
+class ScriptEnvironment : public interp::Environment {
+public:
+  ScriptEnvironment(const model::Model &m, const std::vector<Tick> &ticks) : model_(m), ticks_(ticks) {}
+
+  interp::Value call(int function, const std::vector<interp::Value> &args, std::uint64_t tick) override {
+    const auto &fn = model_.functions.at(static_cast<std::size_t>(function));
+    std::string list;
+    for (const auto &a : args) list += (list.empty() ? "" : ", ") + harness_value(a);
+    if (fn.result == Type::Void) {
+      lines.push_back("act " + fn.name + (args.empty() ? "" : "(" + list + ")"));
+      return interp::Value::zero(Type::Int);
+    }
+    std::string call = args.empty() ? "" : "call " + fn.name + "(" + list + ")\n";
+    const Tick &row = ticks_.at(static_cast<std::size_t>(tick - 1));
+    auto it = row.find(fn.name);
+    double raw = it == row.end() ? 0 : it->second;
+    interp::Value v = fn.result == Type::Bool    ? interp::Value::of_bool(raw != 0)
+                      : fn.result == Type::Int   ? interp::Value::of_int(static_cast<std::int32_t>(raw))
+                      : fn.result == Type::Float ? interp::Value::of_float(static_cast<float>(raw))
+                                                 : interp::Value::of_double(raw);
+    lines.push_back(call + "cond " + fn.name + " -> " + harness_value(v));
+    return v;
+  }
+
+  std::vector<std::string> lines;  ///< each call's lines, in call order, as the harness prints them
+
+private:
+  const model::Model &model_;
+  const std::vector<Tick> &ticks_;
+};
+
+/// The interpreter's run in the harness's format: its event log gives the order of calls, hooks
+/// and the end of each tick; the calls' text comes from the environment.
+std::string interpreter_log(const model::Model &m, int chart_index, const std::vector<Tick> &ticks) {
+  const auto &chart = m.charts.at(static_cast<std::size_t>(chart_index));
+  interp::Engine engine(m, chart_index);
+  ScriptEnvironment env(m, ticks);
+  interp::EventLog log;
+  for (std::size_t i = 0; i < ticks.size(); ++i) engine.run(env, &log);
+  std::string out;
+  std::size_t next_call = 0;
+  auto name = [&](const std::string &text) { return text.substr(text.find(' ') + 1); };
+  for (const auto &e : log.events()) {
+    switch (e.kind) {
+    case interp::EventKind::Tick: out += e.text + "\n"; break;
+    case interp::EventKind::Call: out += env.lines.at(next_call++) + "\n"; break;
+    case interp::EventKind::Lost: out += "hook lost " + name(e.text) + "\n"; break;
+    case interp::EventKind::Gained: out += "hook gained " + name(e.text) + "\n"; break;
+    case interp::EventKind::Enabled: out += "hook enabled " + name(e.text) + "\n"; break;
+    case interp::EventKind::Av:
+      if (chart.kind == model::Chart::Kind::Sfc) {
+        std::istringstream counts(e.text.substr(2));
+        std::string line = "av";
+        unsigned n = 0;
+        for (std::size_t p = 0; counts >> n; ++p)
+          if (n == 1) line += " " + chart.places[p].name;
+          else if (n > 1) line += fmt::format(" {}:{}", chart.places[p].name, n);
+        out += line + "\n";
+      }
+      break;
+    case interp::EventKind::State: {  // "state Z1 running"
+      std::istringstream words(e.text);
+      std::string word, state, status;
+      words >> word >> state >> status;
+      out += fmt::format("state {} status {}\n", state, status == "running" ? 0 : status == "succeeded" ? 1 : -1);
+      break;
+    }
+    default: break;
+    }
+  }
+  return out;
+}
+
+/// The charts: every golden case and the extra charts under tests/run (*.sfc, *.fsm).
+std::vector<std::pair<std::string, std::map<std::string, std::string>>> charts() {
+  std::vector<std::pair<std::string, std::map<std::string, std::string>>> all;
+  for (const char *folder : {"tests/golden/c", "tests/run"}) {
+    std::map<std::string, std::string> files;
+    fs::path dir = fs::path(GFEC_SOURCE_DIR) / folder;
+    for (const auto &entry : fs::directory_iterator(dir)) {
+      auto ext = entry.path().extension();
+      if (ext == ".sfc" || ext == ".fsm" || ext == ".iface") files[entry.path().filename().string()] = read_file(entry.path());
+    }
+    for (const auto &[name, text] : files) {
+      auto ext = fs::path(name).extension();
+      if (ext == ".sfc" || ext == ".fsm") all.emplace_back(name, files);
+    }
+  }
+  return all;
+}
+
+} // namespace
+
+TEST_CASE("c engine agrees with the reference interpreter tick for tick", "[c_backend][run][differential]") {
+  auto all = charts();
+  REQUIRE(all.size() >= 6);
+  for (const auto &[name, files] : all) {
+    DYNAMIC_SECTION(name) {
+      auto compiled = compile_chart(files, name, "engine.c");
+      INFO(compiled->errors);
+      REQUIRE(!compiled->diag.has_errors());
+      const auto &chart = compiled->the_chart();
+      for (unsigned seed = 1; seed <= 3; ++seed) {
+        auto ticks = random_script(compiled->model, chart, seed * 7919u + static_cast<unsigned>(name.size()), 60);
+        std::string expected = interpreter_log(compiled->model, compiled->chart, ticks);
+        std::string actual =
+            compile_and_run(fmt::format("differential_{}_{}", fs::path(name).stem().string(), seed), compiled->files,
+                            compiled->model, chart, script_text(ticks), "-D" + chart.name + "_HOOKS");
+        INFO("seed " << seed << ", script:\n" << script_text(ticks));
+        CHECK(actual == expected);
+      }
+    }
+  }
+}
