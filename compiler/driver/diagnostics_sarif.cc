@@ -80,6 +80,7 @@ int SarifLog::artifact_index(const std::string &path) {
   int index = static_cast<int>(artifacts_.size());
   artifact_ids_[path] = index;
   artifacts_.push_back(path);
+  analysis_targets_.push_back(false);
   return index;
 }
 
@@ -99,6 +100,10 @@ Json SarifLog::physical_location(const SourceManager &sources, const SourceRange
 }
 
 void SarifLog::add(const Diagnostics &diag, const SourceManager &sources) {
+  for (FileId id = 0; id < sources.size(); ++id) {
+    int index = artifact_index(sources.file(id).path());
+    if (id == 0) analysis_targets_[static_cast<std::size_t>(index)] = true;
+  }
   for (const Diagnostic &d : diag.all()) {
     int rule = rule_index(d.check, d.severity);
     Json related = Json::array();
@@ -127,7 +132,11 @@ void SarifLog::notification(const std::string &lvl, const std::string &input, co
 
 Json SarifLog::to_json(int exit_code, const std::string &cwd) const {
   Json artifacts = Json::array();
-  for (const auto &path : artifacts_) artifacts.push_back({{"location", artifact_location(path)}});
+  for (std::size_t i = 0; i < artifacts_.size(); ++i) {
+    Json a = {{"location", artifact_location(artifacts_[i])}};
+    if (analysis_targets_[i]) a["roles"] = Json::array({"analysisTarget"});
+    artifacts.push_back(std::move(a));
+  }
   Json invocation = {{"executionSuccessful", exit_code != 2}, {"exitCode", exit_code}};
   if (!notifications_.empty()) invocation["toolExecutionNotifications"] = notifications_;
   std::string root = "file://" + uri_encode(cwd);

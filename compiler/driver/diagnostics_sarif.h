@@ -15,6 +15,8 @@ namespace gfec {
 class SarifLog {
 public:
   SarifLog();
+  /// The diagnostics of one input; every file it read is listed as an artifact, the input
+  /// itself (the first file) as an analysis target.
   void add(const Diagnostics &diag, const SourceManager &sources);
   /// A message about the run (e.g. "cannot read 'x.sfc'"), not a result about a chart.
   void notification(const std::string &level, const std::string &input, const std::string &message);
@@ -29,6 +31,7 @@ private:
   nlohmann::ordered_json rules_ = nlohmann::ordered_json::array();
   std::map<std::string, int> rule_ids_;
   std::vector<std::string> artifacts_;
+  std::vector<bool> analysis_targets_;  ///< per artifact: an input gfec was asked to check
   std::map<std::string, int> artifact_ids_;
   nlohmann::ordered_json results_ = nlohmann::ordered_json::array();
   nlohmann::ordered_json notifications_ = nlohmann::ordered_json::array();

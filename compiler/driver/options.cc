@@ -90,8 +90,11 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
   ParsedCommandLine result;
   Options &o = result.options;
   CLI::App app{"gfec - compiles chart files (sfc, fsm, plan) into C and C++ engines for robots", "gfec"};
-  app.footer(warning_help() + "\nExit status: 0 success, 1 errors in the input, 2 usage or I/O error.\n"
-                              "Documentation: docs/cli.md");
+  app.footer(warning_help() +
+             "\nDependency files, as gcc writes them: -MD writes OUTPUT.d (or -MF FILE) for make, naming\n"
+             "every file imported; -MP adds an empty rule per import; -MT TARGET names the target.\n"
+             "\nExit status: 0 success, 1 errors in the input, 2 usage or I/O error.\n"
+             "Documentation: docs/cli.md");
   std::vector<std::string> warning_flags;
   std::vector<std::string> f_flags;
   bool no_line = false;
@@ -113,8 +116,6 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
       ->type_name("OPTION")
       ->allow_extra_args(false);
   app.set_version_flag("--version", fmt::format("gfec {}", GFEC_VERSION));
-  app.footer(app.get_footer() + "\nDependency files (as gcc): -MD writes OUTPUT.d (or -MF FILE) for make, listing\n"
-                                "every imported file; -MP adds an empty rule per import; -MT TARGET names the target.\n");
 
   std::string dep_error;
   std::vector<const char *> args = take_dependency_flags(argc, argv, o.deps, dep_error);

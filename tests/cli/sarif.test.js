@@ -7,7 +7,8 @@ const fs = require('node:fs');
 const path = require('node:path');
 const Ajv = require('ajv-draft-04');
 const addFormats = require('ajv-formats');
-const { gfec, scratch, parseText, CHARTS, SAMPLES } = require('./helpers');
+const { spawnSync } = require('node:child_process');
+const { gfec, scratch, parseText, CHARTS, SAMPLES, SOURCE_DIR, GFEC } = require('./helpers');
 
 const schema = JSON.parse(fs.readFileSync(path.join(__dirname, 'schemas', 'sarif-schema-2.1.0.json'), 'utf8'));
 const ajv = new Ajv({ allErrors: true, strict: false });
@@ -147,4 +148,24 @@ test('sarif: the samples check clean', () => {
   const r = gfec(['--check', '-fdiagnostics-format=sarif-stderr', ...files], SAMPLES);
   assert.equal(r.code, 0, r.stderr);
   assertValid(JSON.parse(r.stderr));
+});
+
+test('docs/examples/gfec-lint.yml: its check command writes a valid log for this repository', (t) => {
+  const yml = fs.readFileSync(path.join(SOURCE_DIR, 'docs', 'examples', 'gfec-lint.yml'), 'utf8');
+  const step = /- name: Check the charts\n([\s\S]*?)\n\s*continue-on-error/.exec(yml);
+  assert.ok(step, 'the workflow has a "Check the charts" step');
+  const run = /run: \|\n((?:\s{10}.*\n?)+)/.exec(step[1]);
+  assert.ok(run, 'the step has a run block');
+  const git = spawnSync('git', ['rev-parse', '--is-inside-work-tree'], { cwd: SOURCE_DIR, encoding: 'utf8' });
+  if (git.status !== 0) return t.skip('not a git checkout');
+  const out = path.join(scratch(), 'gfec.sarif');
+  const script = run[1].replace(/^ {10}/gm, '').replace(/build\/gfec/g, JSON.stringify(GFEC)).replace('2> gfec.sarif', `2> ${JSON.stringify(out)}`);
+  const chartsVar = /CHARTS: (\S+)/.exec(yml)[1];
+  const r = spawnSync('bash', ['-c', script], { cwd: SOURCE_DIR, encoding: 'utf8', env: { ...process.env, CHARTS: chartsVar } });
+  assert.equal(r.status, 0, r.stderr);
+  const log = JSON.parse(fs.readFileSync(out, 'utf8'));
+  assertValid(log);
+  const files = new Set(log.runs[0].artifacts.map((a) => a.location.uri));
+  assert.ok(files.has('samples/line_follower.sfc'), [...files].join(' '));
+  assert.ok(files.has('samples/linebot.iface'));
 });
