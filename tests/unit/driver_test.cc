@@ -9,7 +9,7 @@ using namespace gfec::test;
 
 namespace {
 
-const std::string gfec = std::string(GFEC_BINARY_DIR) + "/gfec";
+const std::string gfec_exe = std::string(GFEC_BINARY_DIR) + "/gfec";
 const std::string samples = std::string(GFEC_SOURCE_DIR) + "/samples";
 
 const char *kGood = R"(interface R { bool Ready(); void Go(); }
@@ -23,22 +23,22 @@ sfc Tiny {
 } // namespace
 
 TEST_CASE("gfec: --version and --help exit 0") {
-  auto v = run_command(gfec + " --version");
+  auto v = run_command(gfec_exe + " --version");
   CHECK(v.exit_code == 0);
   CHECK(v.out.rfind("gfec ", 0) == 0);
-  auto h = run_command(gfec + " --help");
+  auto h = run_command(gfec_exe + " --help");
   CHECK(h.exit_code == 0);
   CHECK(h.out.find("--check") != std::string::npos);
   CHECK(h.out.find("-Wunreachable-place") != std::string::npos);
 }
 
 TEST_CASE("gfec: usage errors exit 2") {
-  CHECK(run_command(gfec).exit_code == 2);
-  CHECK(run_command(gfec + " --no-such-option x.sfc").exit_code == 2);
-  auto w = run_command(gfec + " -Wno-such-warning x.sfc");
+  CHECK(run_command(gfec_exe).exit_code == 2);
+  CHECK(run_command(gfec_exe + " --no-such-option x.sfc").exit_code == 2);
+  auto w = run_command(gfec_exe + " -Wno-such-warning x.sfc");
   CHECK(w.exit_code == 2);
   CHECK(w.out == "gfec: error: unknown warning option '-Wno-such-warning'\n");
-  auto missing = run_command(gfec + " does-not-exist.sfc");
+  auto missing = run_command(gfec_exe + " does-not-exist.sfc");
   CHECK(missing.exit_code == 2);
   CHECK(missing.out == "gfec: error: cannot read 'does-not-exist.sfc'\n");
 }
@@ -46,7 +46,7 @@ TEST_CASE("gfec: usage errors exit 2") {
 TEST_CASE("gfec: compiles a chart into engine.c and engine.h") {
   std::string dir = scratch_dir("driver-good");
   write_file(dir + "/tiny.sfc", kGood);
-  auto r = run_command("cd " + dir + " && " + gfec + " tiny.sfc -o engine.c");
+  auto r = run_command("cd " + dir + " && " + gfec_exe + " tiny.sfc -o engine.c");
   CHECK(r.out == "");
   CHECK(r.exit_code == 0);
   CHECK(read_file(dir + "/engine.c").find("Tiny_run") != std::string::npos);
@@ -62,14 +62,14 @@ TEST_CASE("gfec: an input error exits 1 and leaves existing outputs untouched") 
   write_file(dir + "/bad.sfc", "sfc Bad { initial place A; A -> Nowhere; }\n");
   write_file(dir + "/engine.c", "old engine\n");
   write_file(dir + "/engine.h", "old header\n");
-  auto r = run_command("cd " + dir + " && " + gfec + " bad.sfc -o engine.c");
+  auto r = run_command("cd " + dir + " && " + gfec_exe + " bad.sfc -o engine.c");
   CHECK(r.exit_code == 1);
   CHECK(r.out.find("bad.sfc:1:33: error: ") == 0);
   CHECK(read_file(dir + "/engine.c") == "old engine\n");
   CHECK(read_file(dir + "/engine.h") == "old header\n");
 
   write_file(dir + "/syntax.sfc", "sfc Bad { initial place A }\n");
-  auto s = run_command("cd " + dir + " && " + gfec + " syntax.sfc -o new.c");
+  auto s = run_command("cd " + dir + " && " + gfec_exe + " syntax.sfc -o new.c");
   CHECK(s.exit_code == 1);
   CHECK_FALSE(std::filesystem::exists(dir + "/new.c"));
   CHECK_FALSE(std::filesystem::exists(dir + "/new.h"));
@@ -78,7 +78,7 @@ TEST_CASE("gfec: an input error exits 1 and leaves existing outputs untouched") 
 TEST_CASE("gfec: an unwritable output is an I/O error, exit 2") {
   std::string dir = scratch_dir("driver-io");
   write_file(dir + "/tiny.sfc", kGood);
-  auto r = run_command("cd " + dir + " && " + gfec + " tiny.sfc -o no/such/dir/engine.c");
+  auto r = run_command("cd " + dir + " && " + gfec_exe + " tiny.sfc -o no/such/dir/engine.c");
   CHECK(r.exit_code == 2);
   CHECK(r.out.find("gfec: error: cannot write 'no/such/dir/engine.c'") == 0);
 }
@@ -86,11 +86,11 @@ TEST_CASE("gfec: an unwritable output is an I/O error, exit 2") {
 TEST_CASE("gfec: several charts need --chart, and the error lists them") {
   std::string dir = scratch_dir("driver-select");
   write_file(dir + "/two.sfc", std::string(kGood) + "sfc Other { initial place X; }\n");
-  auto r = run_command("cd " + dir + " && " + gfec + " two.sfc -o e.c");
+  auto r = run_command("cd " + dir + " && " + gfec_exe + " two.sfc -o e.c");
   CHECK(r.exit_code == 2);
   CHECK(r.out == "two.sfc: error: the file declares several things to compile (sfc 'Tiny', sfc 'Other'); "
                  "choose one with --chart NAME\n");
-  auto ok = run_command("cd " + dir + " && " + gfec + " two.sfc --chart Other -o e.c");
+  auto ok = run_command("cd " + dir + " && " + gfec_exe + " two.sfc --chart Other -o e.c");
   CHECK(ok.exit_code == 0);
   CHECK(read_file(dir + "/e.h").find("Other_init") != std::string::npos);
 }
@@ -99,10 +99,10 @@ TEST_CASE("gfec --check: every file, nothing written, exit 1 on any error") {
   std::string dir = scratch_dir("driver-check");
   write_file(dir + "/good.sfc", kGood);
   write_file(dir + "/bad.sfc", "sfc Bad { place A; }\n");
-  auto good = run_command("cd " + dir + " && " + gfec + " --check good.sfc");
+  auto good = run_command("cd " + dir + " && " + gfec_exe + " --check good.sfc");
   CHECK(good.exit_code == 0);
   CHECK(good.out == "");
-  auto both = run_command("cd " + dir + " && " + gfec + " --check bad.sfc good.sfc " + samples +
+  auto both = run_command("cd " + dir + " && " + gfec_exe + " --check bad.sfc good.sfc " + samples +
                           "/line_follower.sfc");
   CHECK(both.exit_code == 1);
   CHECK(both.out.find("bad.sfc:1:") == 0);
@@ -114,7 +114,7 @@ TEST_CASE("gfec --check: every file, nothing written, exit 1 on any error") {
 TEST_CASE("gfec: the samples compile") {
   std::string dir = scratch_dir("driver-samples");
   for (const char *chart : {"line_follower.sfc", "cleanup.fsm"}) {
-    auto r = run_command(gfec + " " + samples + "/" + chart + " -o " + dir + "/" + chart + ".c");
+    auto r = run_command(gfec_exe + " " + samples + "/" + chart + " -o " + dir + "/" + chart + ".c");
     INFO(chart << ": " << r.out);
     CHECK(r.exit_code == 0);
     CHECK(r.out == "");
