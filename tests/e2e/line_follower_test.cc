@@ -44,7 +44,12 @@ void check_follows(const char* world_file, double seconds, double min_laps) {
   CHECK(run.result["status"] == "running");
   CHECK(run.result["bumps"] == 0);
   CHECK(run.result["left_floor"] == false);
-  CHECK(run.svg_written);
+  // The picture: a titled SVG with the line (a closed polygon) and the robot's path.
+  CHECK(run.svg.rfind("<svg", 0) == 0);
+  CHECK(run.svg.find("LineFollower (sfc) on ") != std::string::npos);
+  CHECK(run.svg.find("<polygon points=") != std::string::npos);
+  CHECK(run.svg.find("<polyline points=") != std::string::npos);
+  CHECK(run.svg.find("robot path") != std::string::npos);
   REQUIRE(run.trace.size() == static_cast<size_t>(std::lround(seconds / 0.01)) + 1);
 
   const LineStats s = line_stats(e2e::world(world_file), run.trace);

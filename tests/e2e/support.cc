@@ -73,7 +73,7 @@ SimRun run_sim(const std::string& chart, const std::string& world, double second
     run.trace = parse_trace(run.trace_text);
   }
   if (fs::exists(json)) run.result = nlohmann::json::parse(slurp(json));
-  run.svg_written = fs::exists(svg) && fs::file_size(svg) > 0;
+  if (fs::exists(svg)) run.svg = slurp(svg);
   return run;
 }
 

@@ -38,7 +38,7 @@ struct SimRun {
   std::string trace_text;         ///< trace.csv as written
   std::vector<TraceRow> trace;
   nlohmann::json result;          ///< result.json (null if not written)
-  bool svg_written = false;
+  std::string svg;                ///< path.svg as written ("" if not)
 };
 
 /// Runs `carbot-sim CHART --world WORLD --seconds S` (paths relative to the source tree, or
