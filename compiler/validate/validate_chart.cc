@@ -84,9 +84,9 @@ void declare_value(Context &cx, ChartScope &s, const ast::ValueDecl &v) {
   c.range = v.range;
   cx.model.consts.push_back(std::move(c));
   cx.consts.push_back({&v, type ? ConstSource::State::Pending : ConstSource::State::Failed});
-  if (!s.names.declare(v.name, Sym::Const, index, cx.diag)) return;
-  // Generated C may define a chart's constants beside the global ones and the functions.
-  if (const Symbol *clash = cx.c_names.find(v.name.text)) report_clash(v.name, Sym::Const, *clash, cx.diag);
+  // Like a C block scope, the chart's constant hides a global one of the same name; back ends
+  // write constants as their folded values, so no generated name can clash.
+  s.names.declare(v.name, Sym::Const, index, cx.diag);
 }
 
 /// Declares places, vars, constants and named transitions in textual order, so a duplicate's

@@ -11,7 +11,7 @@ using namespace gfec;
 
 namespace {
 
-const char *const kBot = R"--(interface Bot {
+[[maybe_unused]] const char *const kBot = R"--(interface Bot {
   bool Black();
   bool White();
   void Go();
@@ -23,7 +23,7 @@ const char *const kBot = R"--(interface Bot {
 }
 )--";
 
-const char *const kToolbox = R"--(toolbox Carbot {
+[[maybe_unused]] const char *const kToolbox = R"--(toolbox Carbot {
   actor Forward(in float distance) -> FORWARD_OK;
   actor Turn(in float angle) -> TURN_OK;
   actor SearchWall(out float angle) -> WALL_FOUND | NO_WALL_FOUND;
