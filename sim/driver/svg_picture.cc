@@ -6,6 +6,7 @@
 
 #include "core/carbot_model.h"
 #include "core/geometry.h"
+#include "driver/plan_log.h"
 #include "driver/reports.h"
 
 namespace carbot::driver {
@@ -134,21 +135,63 @@ void draw_items(Svg& s, const Frame& f, const RunReport& r) {
   }
 }
 
-/// The path, thinned to points at least 5 mm apart (the picture cannot show finer), and the
-/// robot drawn to scale where it ended.
+/// Which actor of a plan drove each stretch of the path: (start time, actor) in time order,
+/// from the plan log's "start PLAN.actor" lines. Empty for sfc and fsm runs.
+std::vector<std::pair<double, std::string>> actor_spans() {
+  std::vector<std::pair<double, std::string>> spans;
+  for (const PlanEvent& e : plan_log()) {
+    if (e.text.rfind("start ", 0) != 0) continue;
+    const std::string name = e.text.substr(e.text.find('.') == std::string::npos ? 6 : e.text.find('.') + 1);
+    spans.emplace_back(e.t, name);
+  }
+  return spans;
+}
+
+/// A colour per actor, in order of first appearance (no red: red marks bumps).
+std::vector<std::string> actor_names() {
+  std::vector<std::string> names;
+  for (const auto& [t, name] : actor_spans())
+    if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  return names;
+}
+
+const char* actor_colour(const std::string& name) {
+  static const char* const kPalette[] = {"#1f6fd1", "#2e9e5b", "#7b4fc9", "#e8772e", "#16a3a3", "#a0522d", "#d6409f", "#6b6b6b"};
+  const auto names = actor_names();
+  const size_t i = std::find(names.begin(), names.end(), name) - names.begin();
+  return kPalette[i % (sizeof kPalette / sizeof kPalette[0])];
+}
+
+/// The path, thinned to points at least 5 mm apart (the picture cannot show finer), one
+/// polyline per stretch driven by one actor (a single one for charts), and the robot drawn to
+/// scale where it ended.
 void draw_path(Svg& s, const Frame& f, const RunReport& r) {
   const auto& trace = r.run.trace;
   if (trace.empty()) return;
-  std::string pts;
+  const auto spans = actor_spans();
+  size_t span = 0;
+  std::string pts, colour = spans.empty() ? kPath : actor_colour(spans.front().second);
   Vec2 last{1e9, 1e9};
+  auto flush = [&] {
+    if (!pts.empty())
+      s.add(R"(<polyline points="{}" fill="none" stroke="{}" stroke-width="2.2" stroke-opacity="0.85" stroke-linejoin="round"/>)",
+            pts, colour);
+  };
   for (size_t i = 0; i < trace.size(); ++i) {
     const Vec2 p{trace[i].x, trace[i].y};
+    if (span + 1 < spans.size() && trace[i].t >= spans[span + 1].first - 1e-9) {
+      while (span + 1 < spans.size() && trace[i].t >= spans[span + 1].first - 1e-9) ++span;
+      pts += fmt::format("{:.1f},{:.1f} ", f.x(p.x), f.y(p.y));  // the new stretch starts where this ends
+      flush();
+      pts.clear();
+      colour = actor_colour(spans[span].second);
+      last = {1e9, 1e9};
+    }
     if (i + 1 < trace.size() && distance(p, last) < 0.005) continue;
     pts += fmt::format("{:.1f},{:.1f} ", f.x(p.x), f.y(p.y));
     last = p;
   }
-  s.add(R"(<polyline points="{}" fill="none" stroke="{}" stroke-width="2.2" stroke-opacity="0.85" stroke-linejoin="round"/>)",
-        pts, kPath);
+  flush();
   for (const Bump& b : r.sim.bump_log()) {
     const double x = f.x(b.at.x), y = f.y(b.at.y);
     s.add(R"(<path d="M{:.1f},{:.1f} l10,10 m0,-10 l-10,10" stroke="{}" stroke-width="3" stroke-linecap="round"/>)",
@@ -178,15 +221,20 @@ void draw_scale_bar(Svg& s, const Frame& f, double x, double y) {
         y - 8, kText);
 }
 
-void draw_legend(Svg& s, double x, double y, const RunReport& r) {
+void draw_legend(Svg& s, double x, double y, double right, const RunReport& r) {
   const World& w = r.sim.world();
   struct Entry {
     std::string swatch;
     std::string label;
   };
   std::vector<Entry> entries;
-  entries.push_back({fmt::format(R"(<line x1="0" y1="0" x2="22" y2="0" stroke="{}" stroke-width="3"/>)", kPath),
-                     "robot path"});
+  if (actor_names().empty())
+    entries.push_back({fmt::format(R"(<line x1="0" y1="0" x2="22" y2="0" stroke="{}" stroke-width="3"/>)", kPath),
+                       "robot path"});
+  for (const std::string& actor : actor_names())
+    entries.push_back(
+        {fmt::format(R"(<line x1="0" y1="0" x2="22" y2="0" stroke="{}" stroke-width="3"/>)", actor_colour(actor)),
+         actor});
   entries.push_back({fmt::format(R"(<circle cx="11" cy="0" r="5" fill="#fff" stroke="{}" stroke-width="3"/>)", kPath),
                      "start"});
   entries.push_back(
@@ -222,9 +270,11 @@ void draw_legend(Svg& s, double x, double y, const RunReport& r) {
                        "bump"});
   double cx = x;
   for (const Entry& e : entries) {
+    const double w = 40 + 7.2 * e.label.size();
+    if (cx > x && cx + w > right) cx = x, y += 24;  // wrap to a second row
     s.add(R"~(<g transform="translate({:.1f},{:.1f})">{}<text x="28" y="4" font-size="13" fill="{}">{}</text></g>)~", cx,
           y, e.swatch, kText, escape_xml(e.label));
-    cx += 40 + 7.2 * e.label.size();
+    cx += w;
   }
 }
 
@@ -232,7 +282,7 @@ void draw_legend(Svg& s, double x, double y, const RunReport& r) {
 
 std::string svg_picture(const RunReport& r) {
   const World& w = r.sim.world();
-  constexpr double kMargin = 28, kTitle = 64, kLegend = 56;
+  constexpr double kMargin = 28, kTitle = 64, kLegend = 80;
   Frame f;
   f.scale = std::min(900.0 / w.size.x, 640.0 / w.size.y);
   const double width = std::max(f.len(w.size.x) + 2 * kMargin, 760.0);
@@ -262,7 +312,7 @@ std::string svg_picture(const RunReport& r) {
   draw_items(s, f, r);
   draw_path(s, f, r);
   const double legend_y = kTitle + f.len(w.size.y) + 30;
-  draw_legend(s, kMargin, legend_y, r);
+  draw_legend(s, kMargin, legend_y, width - kMargin, r);
   draw_scale_bar(s, f, width - kMargin - f.len(1), 46);
   s.add("</svg>");
   return s.text();
