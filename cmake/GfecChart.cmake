@@ -34,6 +34,11 @@ function(gfec_add_chart target chart)
   # The compiler: the installed package's gfec::gfec, or the gfec target of gfec's own build.
   if(TARGET gfec::gfec)
     set(compiler gfec::gfec)
+    # In gfec's own build gfec::gfec is an alias: name the real target in the command.
+    get_target_property(aliased gfec::gfec ALIASED_TARGET)
+    if(aliased)
+      set(compiler ${aliased})
+    endif()
   elseif(TARGET gfec)
     set(compiler gfec)
   else()

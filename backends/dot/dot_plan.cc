@@ -86,7 +86,9 @@ private:
     if (plan_.start == static_cast<int>(i)) attrs += ", peripheries=2";
     out_ += fmt::format("  a{} [{}, label={}];\n", i, attrs, quote(label));
     for (const auto &r : a.rules) {
-      std::string state = sub ? model::kSubPlanStates[r.outcome] : m_.templates.at(at(a.templ)).outcomes.at(at(r.outcome));
+      std::string state = !sub               ? m_.templates.at(at(a.templ)).outcomes.at(at(r.outcome))
+                          : r.outcome >= 0 && r.outcome < 3 ? model::kSubPlanStates[r.outcome]
+                                                            : "?";
       out_ += fmt::format("  a{} -> {} [label={}];\n", i, target(r.target), quote(state));
     }
     data_flow(fmt::format("a{}", i), a.args);

@@ -111,7 +111,7 @@ void add_dependency_file(const Options &o, const LoadResult &loaded, std::vector
 }
 
 /// Compiles (or with --check, validates) the one input of `o`; returns its exit code.
-int compile(const Options &o, DiagnosticReport &report) {
+int compile(const Options &o, DiagnosticReport &report, std::ostream &out) {
   const std::string &input = o.inputs.front();
   Compilation c(o);
   bool ok = front_end(input, o, c);
@@ -147,6 +147,16 @@ int compile(const Options &o, DiagnosticReport &report) {
     report.tool_error(input, e.what(), false);
     return kExitUsageOrIo;
   }
+  if (o.output == "-") {
+    // "-o -": the one output on stdout, for pipes (gfec --emit=dot x.sfc -o - | dot -Tpng).
+    if (outputs.size() != 1) {
+      report.tool_error(input, fmt::format("-o - needs a back end that writes one file; '{}' writes {}", s.backend,
+                                           outputs.size()), false);
+      return kExitUsageOrIo;
+    }
+    out << outputs.front().contents << std::flush;
+    return kExitOk;
+  }
   if (o.deps.write && !outputs.empty()) add_dependency_file(o, c.loaded, outputs);
   std::string failure = write_atomically(outputs);
   if (!failure.empty()) {
@@ -157,21 +167,21 @@ int compile(const Options &o, DiagnosticReport &report) {
 }
 
 /// --check: every file is validated and every diagnostic reported; the worst exit code wins.
-int check_all(const Options &o, DiagnosticReport &report) {
+int check_all(const Options &o, DiagnosticReport &report, std::ostream &out) {
   int worst = kExitOk;
   for (const auto &input : o.inputs) {
     Options one = o;
     one.inputs = {input};
-    worst = std::max(worst, compile(one, report));
+    worst = std::max(worst, compile(one, report, out));
   }
   return worst;
 }
 
 } // namespace
 
-int run(const Options &o, std::ostream &, std::ostream &err) {
+int run(const Options &o, std::ostream &out, std::ostream &err) {
   auto report = make_report(o.diagnostics_format, err);
-  int code = o.check_only ? check_all(o, *report) : compile(o, *report);
+  int code = o.check_only ? check_all(o, *report, out) : compile(o, *report, out);
   std::string failure = report->finish(code);
   if (!failure.empty()) {
     err << "gfec: error: " << failure << "\n";

@@ -99,7 +99,8 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
   std::vector<std::string> f_flags;
   bool no_line = false;
   app.add_option("files", o.inputs, "Chart files to compile (several only with --check)")->required();
-  app.add_option("-o,--output", o.output, "Output file; a C engine's header is written beside it");
+  app.add_option("-o,--output", o.output,
+                 "Output file; a C engine's header is written beside it; '-' for stdout (one-file back ends)");
   // One value per occurrence (-I a -I b, -Wall -Werror): CLI11 would otherwise let a vector
   // option swallow the file names that follow it ("-Wall x.sfc").
   app.add_option("-I", o.include_dirs, "Add DIR to the folders searched for imports")
@@ -169,6 +170,7 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
     return usage_error("several input files are only allowed with --check");
   if (o.check_only && !o.output.empty()) return usage_error("--check writes nothing; drop -o");
   if (o.check_only && o.deps.write) return usage_error("--check writes nothing; drop -MD");
+  if (o.output == "-" && o.deps.write) return usage_error("-MD needs an output file, not '-o -'");
   return result;
 }
 

@@ -29,7 +29,14 @@ for generator in "${generators[@]}"; do
   out="$project-build"
   cp -r "$source_dir/tests/cli/package_project" "$project"
   # The installed gfec is the only one: no source tree, no build tree of gfec on the paths.
-  cmake -S "$project" -B "$out" -G "$generator" -DCMAKE_PREFIX_PATH="$prefix" >/dev/null || fail "configure ($generator)"
+  # A sanitizer build of gfec installs a sanitized runtime: link the project the same way.
+  flags=()
+  if [ -n "${GFEC_SANITIZE:-}" ]; then
+    flags=(-DCMAKE_C_FLAGS="-fsanitize=$GFEC_SANITIZE" -DCMAKE_CXX_FLAGS="-fsanitize=$GFEC_SANITIZE"
+           -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=$GFEC_SANITIZE")
+  fi
+  cmake -S "$project" -B "$out" -G "$generator" -DCMAKE_PREFIX_PATH="$prefix" "${flags[@]}" >/dev/null ||
+    fail "configure ($generator)"
   cmake --build "$out" >/dev/null || fail "build ($generator)"
   blink=$("$out/firmware")
   # LANGUAGE.md 5.1 by hand: ticks counts the actions run; On -> Off once ticks >= 3 (tick 4),

@@ -120,3 +120,15 @@ test('dot: every sample renders', (t) => {
   if (!haveDot) return t.skip('Graphviz dot is not installed');
   for (const f of fs.readdirSync(SAMPLES).filter((x) => /\.(sfc|fsm|plan)$/.test(x))) render(emit(path.join(SAMPLES, f), 'dot'));
 });
+
+test('-o - writes a one-file output to stdout, for pipes into dot', () => {
+  const dir = scratch({ 'split.sfc': FORK_JOIN });
+  const piped = gfec(['split.sfc', '--emit=dot', '-o', '-'], dir);
+  assert.equal(piped.code, 0, piped.stderr);
+  assert.equal(piped.stdout, emit(path.join(dir, 'split.sfc'), 'dot'));
+  assert.deepEqual(fs.readdirSync(dir), ['split.sfc'], 'no file written');
+  const c = gfec(['split.sfc', '-o', '-'], dir);
+  assert.equal(c.code, 2);
+  assert.match(c.stderr, /-o - needs a back end that writes one file/);
+  assert.equal(gfec(['split.sfc', '--emit=dot', '-o', '-', '-MD'], dir).code, 2);
+});

@@ -105,3 +105,36 @@ test('json: --chart picks one of several charts; the output is deterministic', (
   const again = emit(path.join(dir, 'two.sfc'), ['--chart', 'Two']);
   assert.deepEqual(again, two);
 });
+
+test('json: a sub-plan as an actor, an ignored event, data flow through an out parameter', () => {
+  const dir = scratch({
+    'nav.plan': `toolbox T {
+  actor Go(in float d) -> DONE;
+  actor Measure(out float d) -> MEASURED;
+  supervisor Watch() events HIT;
+}
+plan Inner { start go; actor go: Go(1) { DONE -> terminate; } }
+plan Outer {
+  config { float dist = 2; }
+  supervise w: Watch() { HIT -> ignore; }
+  start measure;
+  actor measure: Measure(dist) { MEASURED -> nav; }
+  actor nav: Inner() { OK -> again; INTERRUPTED -> terminate; ERROR -> terminate; }
+  actor again: Go(dist * 2) { DONE -> terminate; }
+}
+`,
+  });
+  const doc = emit(path.join(dir, 'nav.plan'), ['--chart', 'Outer']);
+  assert.equal(doc.name, 'Outer');
+  const nav = doc.actors.find((a) => a.name === 'nav');
+  assert.equal(nav.kind, 'plan');
+  assert.equal(nav.template, 'Inner');
+  assert.deepEqual(nav.rules.map((r) => r.outcome), ['OK', 'INTERRUPTED', 'ERROR']);
+  assert.deepEqual(doc.supervisors[0].rules[0], { ...doc.supervisors[0].rules[0], outcome: 'HIT', target: 'ignore', target_kind: 'ignore' });
+  const measure = doc.actors.find((a) => a.name === 'measure');
+  assert.deepEqual([measure.args[0].dir, measure.args[0].config], ['out', ['dist']]);
+  const again = doc.actors.find((a) => a.name === 'again');
+  assert.equal(again.args[0].formula.text, 'dist * 2');
+  assert.deepEqual(again.args[0].config, ['dist']);
+  assert.deepEqual(doc.templates.map((t) => t.name).sort(), ['Go', 'Measure', 'Watch']);
+});
