@@ -6,6 +6,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "driver/options.h"
 
@@ -15,6 +16,9 @@ namespace carbot::driver {
 struct ChartInfo {
   std::string name;
   std::string kind;  ///< "sfc", "fsm" or "plan"
+  double period = 0; ///< s, the chart's `period` (0: it gives none)
+  /// fsm: a label per state index, "Z1 PickUp()" (the name and the first action's text).
+  std::vector<std::string> states;
 };
 
 struct BuiltEngine {

@@ -27,6 +27,7 @@ Engine::Engine(const std::string& library) {
   run_ = reinterpret_cast<void (*)(void*)>(symbol(handle_, kEngineRun, library));
   status_ = reinterpret_cast<int (*)(const void*)>(symbol(handle_, kEngineStatus, library));
   fini_ = reinterpret_cast<void (*)(void*)>(dlsym(handle_, kEngineFini));
+  state_ = reinterpret_cast<int (*)(const void*)>(dlsym(handle_, kEngineState));
   // max_align_t alignment: vector storage comes from operator new, which guarantees it.
   memory_.assign(size() + 1, 0);
 }

@@ -34,6 +34,8 @@ class Engine {
   }
   /// 0 running, 1 succeeded, -1 failed, 2 terminated (a plan ended by a supervisor or stopped).
   int status() const { return status_(state()); }
+  /// An fsm's current state index; -1 for engines without states.
+  int current_state() const { return state_ ? state_(state()) : -1; }
 
  private:
   void* state() const { return const_cast<unsigned char*>(memory_.data()); }
@@ -42,7 +44,8 @@ class Engine {
   void (*init_)(void*) = nullptr;
   void (*run_)(void*) = nullptr;
   int (*status_)(const void*) = nullptr;
-  void (*fini_)(void*) = nullptr;  // optional
+  void (*fini_)(void*) = nullptr;         // optional
+  int (*state_)(const void*) = nullptr;   // optional
   bool initialised_ = false;
 };
 

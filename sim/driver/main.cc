@@ -79,7 +79,8 @@ int main(int argc, char** argv) {
   app.add_option("--json", o.json, "write the result (JSON)");
   app.add_option("--svg", o.svg, "write a picture of the world and the path (SVG)");
   app.add_option("--physics-step", o.physics_step, "physics step in seconds")->capture_default_str()->check(CLI::PositiveNumber);
-  app.add_option("--period", o.period, "control period in seconds (the chart's tick)")->capture_default_str()->check(CLI::PositiveNumber);
+  auto* period_option = app.add_option("--period", o.period, "control period in seconds (default: the chart's period, else 0.01)")
+                           ->check(CLI::PositiveNumber);
   app.add_option("--gfec", o.gfec, "the chart compiler (env CARBOT_SIM_GFEC)")->capture_default_str();
   app.add_option("--cc", o.cc, "C compiler for sfc/fsm engines (env CC)")->capture_default_str();
   app.add_option("--cxx", o.cxx, "C++ compiler for plan engines (env CXX)")->capture_default_str();
@@ -93,6 +94,8 @@ int main(int argc, char** argv) {
     const int rc = app.exit(e);
     return rc == 0 ? kOk : kUsage;
   }
+
+  const bool period_given = period_option->count() > 0;
 
   // 1. The world: checked before anything is built, so a typo costs no compile.
   if (!fs::exists(o.world)) return fail(kUsage, fmt::format("{}: no such world file", o.world));
@@ -111,7 +114,9 @@ int main(int argc, char** argv) {
     Engine engine(built.library);
 
     // 3. The run.
-    Simulation sim(world, SimConfig{o.physics_step, o.period});
+    // The chart's own period, unless the command line gives one.
+    const double period = period_given || built.chart.period <= 0 ? o.period : built.chart.period;
+    Simulation sim(world, SimConfig{o.physics_step, period});
     const RunResult result = run_engine(sim, engine, built.chart, o.seconds, o.quiet);
 
     // 4. What it leaves behind.

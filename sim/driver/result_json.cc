@@ -3,7 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/geometry.h"
-#include "driver/plan_log.h"
+#include "driver/engine_log.h"
 #include "driver/reports.h"
 
 namespace carbot::driver {
@@ -31,7 +31,7 @@ std::string result_json(const RunReport& r) {
   json bumps = json::array();
   for (const Bump& b : sim.bump_log()) bumps.push_back({{"t", r4(b.t)}, {"at", point(b.at)}});
   json plan = json::array();
-  for (const PlanEvent& e : plan_log()) plan.push_back({{"t", r4(e.t)}, {"event", e.text}});
+  for (const EngineEvent& e : engine_log()) plan.push_back({{"t", r4(e.t)}, {"event", e.text}});
   json notes = json::array();
   for (const SimNote& n : sim.notes()) notes.push_back({{"t", r4(n.t)}, {"text", n.text}});
   json doc = {
@@ -47,7 +47,7 @@ std::string result_json(const RunReport& r) {
       {"left_floor", sim.left_floor()},
       {"items", items},
       {"notes", notes},
-      {"plan_log", plan},
+      {r.chart.kind == "fsm" ? "state_log" : "plan_log", plan},
       {"physics_step_s", sim.config().physics_step},
       {"control_period_s", sim.config().control_period},
   };

@@ -8,7 +8,7 @@
 
 #include "core/geometry.h"
 #include "hal/hal_binding.h"
-#include "driver/plan_log.h"
+#include "driver/engine_log.h"
 #include "robots/robots.h"
 
 namespace carbot::driver {
@@ -47,6 +47,16 @@ TraceRow row(const Simulation& sim) {
   return {sim.time(), p.x, p.y, deg(p.heading)};
 }
 
+/// An fsm's state changes go to the engine log as "state Z1 PickUp()", as a plan's actor
+/// changes do, for result.json and the picture.
+void log_state_change(const Engine& engine, const ChartInfo& chart, double t, int& last) {
+  const int now = engine.current_state();
+  if (now < 0 || now == last) return;
+  last = now;
+  const std::string label = now < static_cast<int>(chart.states.size()) ? chart.states[now] : std::to_string(now);
+  engine_log().push_back({t, "state " + label});
+}
+
 }  // namespace
 
 RunResult run_engine(Simulation& sim, Engine& engine, const ChartInfo& chart, double seconds, bool quiet) {
@@ -55,10 +65,11 @@ RunResult run_engine(Simulation& sim, Engine& engine, const ChartInfo& chart, do
   hal::bind(&sim);
   linebot_reset();
   cleanbot_reset();
-  plan_log().clear();
+  engine_log().clear();
   engine.init();
   Progress progress(!quiet, seconds);
   const long ticks = std::lround(seconds / sim.config().control_period);
+  int last_state = -1;
   for (long tick = 0;; ++tick) {
     result.trace.push_back(row(sim));
     // The escape button is the robot's stop button: an sfc or fsm engine does not read it,
@@ -69,6 +80,7 @@ RunResult run_engine(Simulation& sim, Engine& engine, const ChartInfo& chart, do
     }
     if (tick >= ticks) break;
     engine.run();
+    log_state_change(engine, chart, sim.time(), last_state);
     if (const int status = engine.status(); status != 0) {
       result.status = status == 2 ? "terminated" : status > 0 ? "succeeded" : "failed";
       break;

@@ -6,7 +6,7 @@
 
 #include "core/carbot_model.h"
 #include "core/geometry.h"
-#include "driver/plan_log.h"
+#include "driver/engine_log.h"
 #include "driver/reports.h"
 
 namespace carbot::driver {
@@ -135,14 +135,17 @@ void draw_items(Svg& s, const Frame& f, const RunReport& r) {
   }
 }
 
-/// Which actor of a plan drove each stretch of the path: (start time, actor) in time order,
-/// from the plan log's "start PLAN.actor" lines. Empty for sfc and fsm runs.
+/// Which actor of a plan (or state of an fsm) drove each stretch of the path: (start time,
+/// name) in time order, from the engine log. Empty for sfc runs.
 std::vector<std::pair<double, std::string>> actor_spans() {
   std::vector<std::pair<double, std::string>> spans;
-  for (const PlanEvent& e : plan_log()) {
-    if (e.text.rfind("start ", 0) != 0) continue;
-    const std::string name = e.text.substr(e.text.find('.') == std::string::npos ? 6 : e.text.find('.') + 1);
-    spans.emplace_back(e.t, name);
+  for (const EngineEvent& e : engine_log()) {
+    if (e.text.rfind("state ", 0) == 0) {  // an fsm's "state Z1 PickUp()"
+      spans.emplace_back(e.t, e.text.substr(6));
+    } else if (e.text.rfind("start ", 0) == 0) {  // a plan's "start WallFollow.followWall"
+      const size_t dot = e.text.find('.');
+      spans.emplace_back(e.t, e.text.substr(dot == std::string::npos ? 6 : dot + 1));
+    }
   }
   return spans;
 }

@@ -2,6 +2,8 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "support.h"
 
@@ -48,6 +50,14 @@ TEST_CASE("clean-up: recovers when the cup is dropped on the way", "[e2e][cleanu
   for (const auto& r : run.trace)
     went_back = went_back || (r.t > 15 && std::hypot(r.x - 0.2, r.y - 0.6) < 0.45);
   CHECK(went_back);
+  // And the machine took the chart's recovery path: Z2 (Transport) -> Z1 (PickUp) at the drop,
+  // then Z2 again, Z3 (PlaceItem), Done.
+  std::vector<std::string> states;
+  for (const auto& e : run.result["state_log"]) states.push_back(e["event"]);
+  const std::vector<std::string> expected = {"state Z0 DriveToItem()", "state Z1 PickUp()", "state Z2 Transport()",
+                                             "state Z1 PickUp()",      "state Z2 Transport()", "state Z3 PlaceItem()",
+                                             "state Done"};
+  CHECK(states == expected);
 }
 
 // Without a reachable goal the machine must end in its failure state, not run forever.
