@@ -13,12 +13,21 @@
 namespace carbot::driver {
 namespace {
 
-void run_tool(const std::vector<std::string>& argv, const char* what, Exit on_failure) {
+void run_tool(const std::vector<std::string>& argv, const std::string& what, Exit on_failure) {
   std::string error;
   const int rc = run_process(argv, error);
   if (rc < 0) throw BuildError(fmt::format("{}: {}", what, error), kUsage);
   if (rc != 0)
     throw BuildError(fmt::format("{} failed (exit {}): {}", what, rc, show_command(argv)), on_failure);
+}
+
+/// gfec prints its own diagnostics; ours only says what that means for the run.
+void run_gfec(const std::vector<std::string>& argv, const std::string& chart) {
+  std::string error;
+  const int rc = run_process(argv, error);
+  if (rc < 0) throw BuildError(fmt::format("cannot run gfec: {}", error), kUsage);
+  if (rc == 1) throw BuildError(fmt::format("{}: gfec rejected the chart (its messages are above)", chart), kBadInput);
+  if (rc != 0) throw BuildError(fmt::format("gfec failed (exit {}): {}", rc, show_command(argv)), kBadInput);
 }
 
 ChartInfo read_chart_info(const std::string& model_path) {
@@ -175,7 +184,7 @@ extern "C" int {status}(const void* m) {{
 BuiltEngine build_engine(const Options& o, const std::string& dir) {
   BuiltEngine built;
   const std::string model = dir + "/model.json";
-  run_tool({o.gfec, "--emit=json", o.chart, "-o", model}, "gfec --emit=json", kBadInput);
+  run_gfec({o.gfec, "--emit=json", o.chart, "-o", model}, o.chart);
   built.chart = read_chart_info(model);
   built.library = dir + "/engine.so";
 
@@ -185,7 +194,7 @@ BuiltEngine build_engine(const Options& o, const std::string& dir) {
                                    "cannot run plans",
                                    o.chart, built.chart.name),
                        kUsage);
-    run_tool({o.gfec, o.chart, "-o", dir + "/engine.cc"}, "gfec", kBadInput);
+    run_gfec({o.gfec, o.chart, "-o", dir + "/engine.cc"}, o.chart);
     write_file(dir + "/shim.cc", cpp_shim(built.chart));
     compile({o.cxx, "-std=c++17", "-O1", "-fPIC", "-shared", "-I", dir, "-I", o.runtime_include, "-I",
              o.toolbox_include, "-o", built.library, dir + "/engine.cc", dir + "/shim.cc"},
@@ -193,7 +202,7 @@ BuiltEngine build_engine(const Options& o, const std::string& dir) {
             "compiling the plan engine");
     return built;
   }
-  run_tool({o.gfec, o.chart, "-o", dir + "/engine.c"}, "gfec", kBadInput);
+  run_gfec({o.gfec, o.chart, "-o", dir + "/engine.c"}, o.chart);
   write_file(dir + "/shim.c", c_shim(built.chart));
   compile({o.cc, "-std=c99", "-O2", "-fPIC", "-shared", "-I", dir, "-o", built.library, dir + "/engine.c",
            dir + "/shim.c"},
