@@ -1,9 +1,16 @@
 #!/usr/bin/env bash
-# The main job: compile the sample charts with gfec (and, with the simulator, run them).
+# The main job: compile the sample charts with gfec, then run the line follower on the
+# simulated Carbot around the oval track and draw its path.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=build/demo
 mkdir -p "$out"
 build/gfec samples/line_follower.sfc -o "$out/line_follower.c"
 build/gfec samples/cleanup.fsm -o "$out/cleanup.c"
-echo "Compiled the samples into $out/: $(cd "$out" && ls | tr '\n' ' ')"
+build/gfec samples/wall_follow.plan -o "$out/wall_follow.cpp"
+echo "gfec compiled the samples into $out/: $(cd "$out" && ls | tr '\n' ' ')"
+if [ -x build/carbot-sim ]; then
+  build/carbot-sim samples/line_follower.sfc --world sim/worlds/oval.json --seconds 60 \
+    --trace "$out/line_follower.csv" --json "$out/line_follower.json" --svg "$out/line_follower.svg"
+  echo "The line follower's run: $out/line_follower.json; its path: $out/line_follower.svg"
+fi
