@@ -285,10 +285,13 @@ void draw_legend(Svg& s, double x, double y, double right, const RunReport& r) {
 
 std::string svg_picture(const RunReport& r) {
   const World& w = r.sim.world();
-  constexpr double kMargin = 28, kTitle = 64, kLegend = 80;
+  constexpr double kMargin = 28, kTitle = 84, kLegend = 80;
   Frame f;
   f.scale = std::min(900.0 / w.size.x, 640.0 / w.size.y);
-  const double width = std::max(f.len(w.size.x) + 2 * kMargin, 760.0);
+  const std::string title = fmt::format("{} ({}) on {}", r.chart.name, r.chart.kind, w.name);
+  const std::string heading = fmt::format("{} — {}", title, status_phrase(r));
+  // Wide enough for the floor and for the heading (bold 20 px: ~11.5 px a character).
+  const double width = std::max({f.len(w.size.x) + 2 * kMargin, 760.0, 2 * kMargin + 11.5 * heading.size()});
   const double height = kTitle + f.len(w.size.y) + kLegend + kMargin;
   f.ox = width / 2;
   f.oy = kTitle + f.len(w.size.y) / 2;
@@ -296,11 +299,10 @@ std::string svg_picture(const RunReport& r) {
   Svg s;
   s.add(R"(<svg xmlns="http://www.w3.org/2000/svg" width="{:.0f}" height="{:.0f}" viewBox="0 0 {:.0f} {:.0f}" font-family="DejaVu Sans, Helvetica, Arial, sans-serif">)",
         width, height, width, height);
-  const std::string title = fmt::format("{} ({}) on {}", r.chart.name, r.chart.kind, w.name);
   s.add("<title>{}</title>", escape_xml(title));
   s.add(R"(<rect width="100%" height="100%" fill="{}"/>)", kPage);
-  s.add(R"(<text x="{:.0f}" y="28" font-size="20" font-weight="bold" fill="{}">{} — {}</text>)", kMargin, kText,
-        escape_xml(title), escape_xml(status_phrase(r)));
+  s.add(R"(<text x="{:.0f}" y="28" font-size="20" font-weight="bold" fill="{}">{}</text>)", kMargin, kText,
+        escape_xml(heading));
   std::string facts = fmt::format("{:.2f} m driven · {} bump{}", r.sim.odometer(), r.sim.bumps(),
                                   r.sim.bumps() == 1 ? "" : "s");
   for (const ItemState& it : r.sim.items())
@@ -316,7 +318,7 @@ std::string svg_picture(const RunReport& r) {
   draw_path(s, f, r);
   const double legend_y = kTitle + f.len(w.size.y) + 30;
   draw_legend(s, kMargin, legend_y, width - kMargin, r);
-  draw_scale_bar(s, f, width - kMargin - f.len(1), 46);
+  draw_scale_bar(s, f, f.x(w.size.x / 2) - f.len(1), kTitle - 12);  // its own row, over the floor's right edge
   s.add("</svg>");
   return s.text();
 }
