@@ -1,0 +1,177 @@
+// gfec_differential: random charts and traces, each run by the reference interpreter and by
+// the C engine that gfec generates (gcc and clang, -O0 and -O2, C99 and C11, with and without
+// hooks, once under ASan+UBSan); every engine must print exactly the interpreter's log. A
+// failing case is shrunk to a minimal chart and trace and printed with both logs.
+//
+//   gfec_differential [--seed N] [--cases N]     (ctest runs a few hundred; long runs:
+//                                                 docs/verification.md)
+#include "harness.h"
+#include "shrink.h"
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+#include <unistd.h>
+
+using namespace gfec::diff;
+
+namespace {
+
+struct Failure {
+  Case c;
+  Config config;
+  Outcome outcome;
+};
+
+bool have(const std::string &tool) {
+  return std::system(("command -v " + tool + " > /dev/null 2>&1").c_str()) == 0;
+}
+
+/// The two logs, line by line, the first difference marked.
+std::string compare(const std::string &expected, const std::string &actual) {
+  std::istringstream e(expected), a(actual);
+  std::string out, le, la;
+  bool marked = false;
+  for (int n = 1;; ++n) {
+    bool ge = static_cast<bool>(std::getline(e, le)), ga = static_cast<bool>(std::getline(a, la));
+    if (!ge && !ga) break;
+    if (!ge) le = "<end>";
+    if (!ga) la = "<end>";
+    bool differ = le != la;
+    out += fmt::format("{} {:4}  {:<40} {}\n", differ && !marked ? ">>" : "  ", n, le, differ ? "| " + la : "");
+    marked = marked || differ;
+  }
+  return out;
+}
+
+void report(const Failure &f, int steps) {
+  std::cout << fmt::format("\n==== case {} fails under '{}': {} (shrunk in {} tries)\n", f.c.id, f.config.name,
+                           verdict_name(f.outcome.verdict), steps);
+  std::cout << "---- chart\n" << f.c.text << "---- trace\n" << f.c.csv;
+  if (f.outcome.verdict == Verdict::Mismatch || f.outcome.verdict == Verdict::Crash)
+    std::cout << "---- interpreter (left) | engine (right)\n" << compare(f.outcome.expected, f.outcome.detail);
+  else
+    std::cout << "---- " << f.outcome.detail;
+}
+
+} // namespace
+
+int main(int argc, char **argv) {
+  std::uint64_t seed = 1;
+  int cases = 300, batch = 60, shrink_max = 3, only = -1;
+  std::string work, compilers, avoid;
+  bool verbose = false, keep = false;
+  CLI::App app{"gfec_differential - random charts: the reference interpreter against the generated C engines"};
+  app.add_option("--seed", seed, "Seed of the random charts and traces (same seed, same cases)");
+  app.add_option("--cases", cases, "How many random charts (a third of them fsm)");
+  app.add_option("--batch", batch, "Engines compiled into one program");
+  app.add_option("--compilers", compilers, "Comma-separated (default: gcc,clang, those installed)");
+  app.add_option("--work", work, "Scratch folder (default: a fresh one under the temp folder)");
+  app.add_option("--shrink", shrink_max, "Failures to shrink and print (the rest are only counted)");
+  app.add_option("--avoid", avoid, "Do not generate what a known bug breaks: octal, float-into-int, call-order (comma-separated)");
+  app.add_option("--case", only, "Run only this case (of the same seed), e.g. to shrink it again");
+  app.add_flag("--keep", keep, "Keep the scratch folder");
+  app.add_flag("-v,--verbose", verbose, "Say what happens to every case");
+  CLI11_PARSE(app, argc, argv);
+
+  std::vector<std::string> list;
+  if (compilers.empty()) {
+    for (const char *cc : {"gcc", "clang"})
+      if (have(cc)) list.push_back(cc);
+  } else {
+    std::istringstream in(compilers);
+    for (std::string cc; std::getline(in, cc, ',');) list.push_back(cc);
+  }
+  if (list.empty()) {
+    std::cerr << "gfec_differential: no C compiler found\n";
+    return 2;
+  }
+  if (work.empty())
+    work = (std::filesystem::temp_directory_path() / fmt::format("gfec-differential-{}", ::getpid())).string();
+  const auto configs = default_configs(list);
+  Harness harness(work, verbose);
+  const auto start = std::chrono::steady_clock::now();
+
+  std::vector<Case> all(static_cast<std::size_t>(cases));
+  std::vector<Case *> ready;
+  std::vector<Failure> failures;
+  int undefined = 0, invalid = 0, fsm = 0, generated = 0;
+  GenOptions base;
+  for (std::istringstream in(avoid); std::getline(in, avoid, ',');) {
+    if (avoid == "octal") base.octal = false;
+    else if (avoid == "float-into-int") base.float_into_int = false;
+    else if (avoid == "call-order") base.call_order = false;
+    else return std::cerr << "gfec_differential: unknown --avoid '" << avoid << "'\n", 2;
+  }
+  for (int k = 0; k < cases; ++k) {
+    if (only >= 0 && k != only) continue;
+    std::seed_seq s{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32), static_cast<std::uint32_t>(k)};
+    std::mt19937_64 rng(s);
+    Case &c = all[static_cast<std::size_t>(k)];  // each case depends only on (seed, k)
+    c.id = k;
+    GenOptions options = base;
+    options.fsm = k % 3 == 2;
+    fsm += options.fsm;
+    ++generated;
+    c.chart = random_chart(rng, k, options);
+    c.trace = random_trace(rng, c.chart);
+    Outcome o = harness.prepare(c);
+    if (verbose && o.verdict != Verdict::Pass) std::cout << fmt::format("case {}: {}\n{}", k, verdict_name(o.verdict), o.detail);
+    if (o.verdict == Verdict::Undefined) {
+      ++undefined;
+    } else if (o.verdict == Verdict::Invalid) {
+      ++invalid;
+      failures.push_back({c, {"gfec (front end)", "", false}, o});
+    } else if (o.verdict != Verdict::Pass) {
+      failures.push_back({c, {"gfec (back end)", "", false}, o});
+    } else {
+      ready.push_back(&c);
+    }
+  }
+
+  std::vector<std::pair<Case *, const Config *>> failed;
+  for (std::size_t b = 0; b < ready.size(); b += static_cast<std::size_t>(batch)) {
+    std::vector<Case *> group(ready.begin() + static_cast<std::ptrdiff_t>(b),
+                              ready.begin() + static_cast<std::ptrdiff_t>(std::min(ready.size(), b + static_cast<std::size_t>(batch))));
+    for (std::size_t k = 0; k < configs.size(); ++k) {
+      auto outcomes = harness.run_batch(group, configs[k], fmt::format("b{}c{}", b, k));
+      for (std::size_t i = 0; i < group.size(); ++i) {
+        if (outcomes[i].verdict == Verdict::Pass) continue;
+        failures.push_back({*group[i], configs[k], outcomes[i]});
+        if (verbose) std::cout << fmt::format("case {} under '{}': {}\n", group[i]->id, configs[k].name, verdict_name(outcomes[i].verdict));
+      }
+    }
+    if (verbose) std::cout << fmt::format("{} of {} cases run\n", std::min(ready.size(), b + static_cast<std::size_t>(batch)), ready.size());
+  }
+
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::cout << fmt::format("gfec_differential: seed {}: {} random charts ({} sfc, {} fsm); {} compared under {} builds "
+                           "({} engine runs), {} skipped for undefined behaviour, {} rejected by gfec; {} failures; {:.0f} s\n",
+                           seed, generated, generated - fsm, fsm, ready.size(), configs.size(), ready.size() * configs.size(),
+                           undefined, invalid, failures.size(), seconds);
+  // Shrink the first failures (one per case: the same bug tends to fail every build).
+  std::vector<int> shown;
+  for (auto &f : failures) {
+    if (static_cast<int>(shown.size()) >= shrink_max) break;
+    if (std::find(shown.begin(), shown.end(), f.c.id) != shown.end()) continue;
+    shown.push_back(f.c.id);
+    int steps = 0;
+    if (f.outcome.verdict == Verdict::Mismatch || f.outcome.verdict == Verdict::Crash ||
+        f.outcome.verdict == Verdict::CompileError) {
+      Outcome o = shrink(harness, f.c, f.config, f.outcome.verdict, &steps);
+      if (o.verdict == f.outcome.verdict) f.outcome = o;
+    }
+    report(f, steps);
+    std::string dir = fmt::format("{}/failure-{}", work, f.c.id);
+    harness.save(f.c, f.outcome, f.config, dir);
+    std::cout << "---- saved in " << dir << "\n";
+    keep = true;
+  }
+  if (!keep) std::filesystem::remove_all(work);
+  return failures.empty() ? 0 : 1;
+}

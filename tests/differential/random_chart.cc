@@ -1,0 +1,531 @@
+#include "random_chart.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <set>
+
+namespace gfec::diff {
+
+namespace {
+
+const char *type_word(Type t) { return model::type_name(t); }
+
+Type promote(Type a, Type b) {
+  if (a == Type::Double || b == Type::Double) return Type::Double;
+  if (a == Type::Float || b == Type::Float) return Type::Float;
+  return Type::Int;
+}
+
+// Names that are valid in the language but are also names the generated C uses for itself
+// (engine fields and locals, API functions, macros of the headers it includes): the back end
+// must keep them apart.
+// (The validator rejects the engine's own names for places, e.g. `init` or `HOOKS`.)
+const std::vector<std::string> kTrickyPlaces = {"m", "add", "before", "from", "p", "av", "started", "timer_P0",
+                                                "UINT_MAX", "NULL", "assert", "memcpy", "bool_", "R0"};
+const std::vector<std::string> kTrickyVars = {"m", "add", "before", "from", "p", "av", "status", "started",
+                                              "timer_P0", "timer_P1", "UINT_MAX", "NULL", "assert", "memcpy"};
+
+const std::vector<std::string> kFloatLiterals = {"0.5", "0.25", "1.5", "2.0", "0.1", "3.75", "1e-1",
+                                                 "2.5e0", "0.3", "2.", ".5", "10.0", "0.0"};
+const std::vector<std::string> kFloatInputs = {"0", "0.5", "0.25", "-1.5", "0.1", "3", "2.75", "-0.3"};
+
+class Gen {
+public:
+  Gen(std::mt19937_64 &rng, GChart &c, const GenOptions &o) : rng_(rng), c_(c), o_(o) {}
+
+  int uniform(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
+  bool chance(double p) { return std::bernoulli_distribution(p)(rng_); }
+  template <typename T> const T &pick(const std::vector<T> &v) { return v[static_cast<std::size_t>(uniform(0, static_cast<int>(v.size()) - 1))]; }
+
+  Type any_numeric() {
+    int r = uniform(0, 9);
+    return r < 5 ? Type::Int : r < 7 ? Type::Float : Type::Double;
+  }
+  Type any_type() { return chance(0.3) ? Type::Bool : any_numeric(); }
+
+  /// A name not used yet in the chart: `base<i>` or, now and then, a tricky one.
+  std::string fresh(const std::string &base, int i, const std::vector<std::string> &tricky) {
+    if (!tricky.empty() && chance(0.12)) {
+      const std::string &t = pick(tricky);
+      if (used_.insert(t).second) return t;
+    }
+    std::string n = fmt::format("{}{}", base, i);
+    while (!used_.insert(n).second) n += "_";
+    return n;
+  }
+
+  GExpr literal(Type t) {
+    GExpr e;
+    e.kind = GExpr::Kind::Lit;
+    e.type = t;
+    if (t == Type::Bool) e.text = chance(0.5) ? "true" : "false";
+    else if (t == Type::Int) e.text = o_.octal && chance(0.04) ? "010" : std::to_string(uniform(0, 12));
+    else e.text = pick(kFloatLiterals);
+    return e;
+  }
+
+  GExpr nonzero_literal(Type t) {
+    GExpr e = literal(t);
+    if (t == Type::Int) e.text = std::to_string(uniform(1, 9));
+    else e.text = pick(std::vector<std::string>{"0.5", "2.0", "4.", "0.1", "3.0", "1e1"});
+    return e;
+  }
+
+  /// A variable, constant or call of exactly type t, if the chart has one. Calls nest only
+  /// while `depth` lasts; below it their arguments are literals.
+  std::optional<GExpr> named_leaf(Type t, int depth) {
+    std::vector<GExpr> options;
+    std::vector<const GFunction *> calls;
+    for (const auto &v : c_.vars)
+      if (v.type == t) options.push_back({GExpr::Kind::Var, t, v.name, {}});
+    for (const auto &k : c_.consts)
+      if (k.type == t) options.push_back({GExpr::Kind::Const, t, k.name, {}});
+    for (const auto &f : c_.functions)
+      if (f.result == t && calls_allowed_) calls.push_back(&f);
+    const int n = static_cast<int>(options.size() + calls.size());
+    if (n == 0) return std::nullopt;
+    int i = uniform(0, n - 1);
+    if (i < static_cast<int>(options.size())) return options[static_cast<std::size_t>(i)];
+    return call(*calls[static_cast<std::size_t>(i) - options.size()], depth);
+  }
+
+  GExpr call(const GFunction &f, int depth) {
+    GExpr e{GExpr::Kind::Call, f.result, f.name, {}};
+    Ordered ordered(*this);
+    for (Type p : f.params) {
+      bool ints = p == Type::Int && !o_.float_into_int;
+      if (depth <= 0) e.args.push_back(literal(p == Type::Bool ? Type::Bool : ints ? Type::Int : any_numeric()));
+      else e.args.push_back(p == Type::Bool ? boolean(std::min(depth, 1)) : number(std::min(depth, 1), ints));
+      ordered.after(e.args.back());
+    }
+    return e;
+  }
+
+  /// With --avoid call-order: once one operand (or argument) calls a function, the ones after
+  /// it call none, so that C's open evaluation order cannot matter.
+  class Ordered {
+  public:
+    explicit Ordered(Gen &g) : g_(g), saved_(g.calls_allowed_) {}
+    ~Ordered() { g_.calls_allowed_ = saved_; }
+    void after(const GExpr &operand) {
+      if (!g_.o_.call_order && has_call(operand)) g_.calls_allowed_ = false;
+    }
+
+  private:
+    Gen &g_;
+    bool saved_;
+  };
+
+  static bool has_call(const GExpr &e) {
+    if (e.kind == GExpr::Kind::Call) return true;
+    for (const auto &a : e.args)
+      if (has_call(a)) return true;
+    return false;
+  }
+
+  /// Two operands whose evaluation order C leaves open (not && or ||).
+  template <typename Make> std::pair<GExpr, GExpr> operands(Make make) {
+    Ordered ordered(*this);
+    GExpr a = make();
+    ordered.after(a);
+    GExpr b = make();
+    return {a, b};
+  }
+
+  /// A numeric expression (only ints when `ints`); its type follows C's conversions.
+  GExpr number(int depth, bool ints) {
+    if (depth <= 0 || chance(0.35)) {
+      Type t = ints ? Type::Int : any_numeric();
+      if (!chance(0.35))
+        if (auto leaf = named_leaf(t, depth - 1)) return *leaf;
+      return literal(t);
+    }
+    int r = uniform(0, 11);
+    if (r < 6) {
+      auto [a, b] = operands([&] { return number(depth - 1, ints); });
+      Type t = promote(a.type, b.type);
+      const char *op = r < 3 ? "+" : r < 5 ? "-" : "*";
+      return {GExpr::Kind::Binary, t, op, {a, b}};
+    }
+    if (r < 8) {
+      GExpr a = number(depth - 1, ints);
+      GExpr b = nonzero_literal(ints ? Type::Int : any_numeric());
+      return {GExpr::Kind::Binary, promote(a.type, b.type), "/", {a, b}};
+    }
+    if (r < 9) {
+      GExpr a = number(depth - 1, true);
+      return {GExpr::Kind::Binary, Type::Int, "%", {a, nonzero_literal(Type::Int)}};
+    }
+    if (r < 10) {
+      GExpr a = number(depth - 1, ints);
+      return {GExpr::Kind::Unary, a.type, "-", {a}};
+    }
+    GExpr a = number(depth - 1, ints);
+    return {GExpr::Kind::Paren, a.type, "", {a}};
+  }
+
+  GExpr duration() {
+    static const std::vector<std::string> d = {"0ms", "5ms", "10ms", "15ms", "25ms", "30ms", "50ms", "100ms",
+                                               "0.05s", "1s", "200ms", "1.5s"};
+    return {GExpr::Kind::Lit, Type::Duration, pick(d), {}};
+  }
+
+  GExpr comparison(int depth) {
+    static const std::vector<std::string> ops = {"<", "<=", ">", ">=", "==", "!="};
+    if (c_.period_ms > 0 && !c_.places.empty() && chance(0.25)) {
+      GExpr timer{GExpr::Kind::Elapsed, Type::Duration, pick(c_.places).name, {}};
+      bool flip = chance(0.2);
+      GExpr lhs = flip ? duration() : timer, rhs = flip ? timer : duration();
+      return {GExpr::Kind::Binary, Type::Bool, chance(0.6) ? ">=" : pick(ops), {lhs, rhs}};
+    }
+    auto [a, b] = operands([&] { return number(depth, false); });
+    Ordered ordered(*this);
+    ordered.after(a);
+    return {GExpr::Kind::Binary, Type::Bool, pick(ops), {a, distinct(a, b, [&] { return number(depth, false); })}};
+  }
+
+  /// `b`, or another from `make` if it reads exactly as `a`: gcc and clang reject `x != x`
+  /// under -Werror (-Wtautological-compare), which the back end cannot help.
+  template <typename Make> GExpr distinct(const GExpr &a, GExpr b, Make make) {
+    for (int i = 0; i < 8 && expr_text(a) == expr_text(b); ++i) b = make();
+    while (expr_text(a) == expr_text(b)) b = literal(b.type);
+    return b;
+  }
+
+  GExpr boolean(int depth) {
+    if (depth <= 0 || chance(0.3)) {
+      int r = uniform(0, 9);
+      if (r < 1) return literal(Type::Bool);
+      if (r < 6)
+        if (auto leaf = named_leaf(Type::Bool, depth - 1)) return *leaf;
+      return comparison(0);
+    }
+    int r = uniform(0, 9);
+    if (r < 2) {
+      GExpr a = boolean(depth - 1);
+      return {GExpr::Kind::Unary, Type::Bool, "!", {a}};
+    }
+    if (r < 4) return {GExpr::Kind::Binary, Type::Bool, "&&", {boolean(depth - 1), boolean(depth - 1)}};
+    if (r < 6) return {GExpr::Kind::Binary, Type::Bool, "||", {boolean(depth - 1), boolean(depth - 1)}};
+    if (r < 7) {
+      auto [a, b] = operands([&] { return boolean(depth - 1); });
+      Ordered ordered(*this);
+      ordered.after(a);
+      return {GExpr::Kind::Binary, Type::Bool, chance(0.5) ? "==" : "!=", {a, distinct(a, b, [&] { return boolean(depth - 1); })}};
+    }
+    if (r < 8) return {GExpr::Kind::Paren, Type::Bool, "", {boolean(depth - 1)}};
+    return comparison(depth - 1);
+  }
+
+  GStmt statement() {
+    if (!c_.vars.empty() && chance(0.4)) {
+      const GValue &v = pick(c_.vars);
+      GStmt s;
+      s.assign = true;
+      s.target = v.name;
+      if (v.type == Type::Bool) {
+        s.op = "=";
+        s.expr = boolean(2);
+      } else {
+        int r = uniform(0, 9);
+        s.op = r < 4 ? "=" : r < 7 ? "+=" : "-=";
+        s.expr = number(2, v.type == Type::Int && !o_.float_into_int);
+      }
+      return s;
+    }
+    std::vector<const GFunction *> actions, any;
+    for (const auto &f : c_.functions) {
+      any.push_back(&f);
+      if (f.result == Type::Void) actions.push_back(&f);
+    }
+    const GFunction &f = chance(0.85) && !actions.empty() ? *pick(actions) : *pick(any);
+    GStmt s;
+    s.expr = call(f, 2);
+    return s;
+  }
+
+  std::vector<GStmt> block(int lo, int hi) {
+    std::vector<GStmt> b;
+    for (int i = uniform(lo, hi); i > 0; --i) b.push_back(statement());
+    return b;
+  }
+
+  void interface() {
+    for (int i = uniform(1, 4), k = 0; k < i; ++k) {
+      GFunction f;
+      f.name = fmt::format("{}_s{}", c_.prefix, k);
+      int r = uniform(0, 9);
+      f.result = r < 5 ? Type::Bool : r < 7 ? Type::Int : r < 8 ? Type::Float : Type::Double;
+      if (chance(0.3)) f.params.push_back(chance(0.6) ? Type::Int : Type::Float);
+      c_.functions.push_back(f);
+    }
+    for (int i = uniform(1, 3), k = 0; k < i; ++k) {
+      GFunction f;
+      f.name = fmt::format("{}_a{}", c_.prefix, k);
+      for (int p = uniform(0, 2); p > 0; --p) f.params.push_back(any_type());
+      c_.functions.push_back(f);
+    }
+  }
+
+  void values() {
+    for (int i = uniform(0, 1), k = 0; k < i; ++k) {
+      Type t = any_type();
+      c_.consts.push_back({t, fmt::format("{}_F{}", c_.prefix, k), literal(t).text, true});
+    }
+    for (int i = uniform(0, 2), k = 0; k < i; ++k) {
+      Type t = any_type();
+      c_.consts.push_back({t, fresh("K", k, {}), literal(t).text, false});
+    }
+    for (int i = uniform(0, 3), k = 0; k < i; ++k) {
+      Type t = any_type();
+      c_.vars.push_back({t, fresh("v", k, kTrickyVars), chance(0.6) ? literal(t).text : "", false});
+    }
+  }
+
+  void sfc() {
+    int n = uniform(2, 7);
+    for (int i = 0; i < n; ++i) {
+      GPlace p;
+      p.name = fresh("P", i, kTrickyPlaces);
+      p.initial = chance(0.35);
+      c_.places.push_back(p);
+    }
+    if (std::none_of(c_.places.begin(), c_.places.end(), [](const GPlace &p) { return p.initial; }))
+      c_.places[static_cast<std::size_t>(uniform(0, n - 1))].initial = true;
+    // Bodies after all places exist: elapsed() may name any of them.
+    for (auto &p : c_.places) {
+      p.body = chance(0.8);
+      if (!p.body) continue;
+      p.action = block(0, 2);
+      if (chance(0.25)) p.entry = block(1, 2);
+      if (chance(0.25)) p.exit = block(1, 2);
+    }
+    for (int i = 0, count = uniform(1, 2 * n); i < count; ++i) {
+      GTransition t;
+      if (chance(0.25)) t.name = fresh("t", i, kTrickyPlaces);
+      t.inputs = some_places(n);
+      t.outputs = some_places(n);
+      if (chance(0.8)) t.condition = boolean(2);
+      c_.transitions.push_back(t);
+    }
+  }
+
+  std::vector<int> some_places(int n) {
+    int r = uniform(0, 99);
+    int k = std::min(n, r < 70 ? 1 : r < 92 ? 2 : 3);
+    std::vector<int> all(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) all[static_cast<std::size_t>(i)] = i;
+    std::shuffle(all.begin(), all.end(), rng_);
+    all.resize(static_cast<std::size_t>(k));
+    return all;
+  }
+
+  void fsm() {
+    int n = uniform(2, 6);
+    for (int i = 0; i < n; ++i) {
+      GPlace s;
+      s.name = fresh("S", i, kTrickyPlaces);
+      s.initial = i == 0;
+      if (i >= 2 && chance(0.3)) s.terminal = chance(0.6) ? model::Terminal::Success : model::Terminal::Failure;
+      c_.places.push_back(s);
+    }
+    auto terminal = [&](int i) { return c_.places[static_cast<std::size_t>(i)].terminal != model::Terminal::None; };
+    for (int i = 0; i < n; ++i) {
+      GPlace &s = c_.places[static_cast<std::size_t>(i)];
+      if (terminal(i)) {
+        s.body = false;
+        if (chance(0.4)) s.post = boolean(1);
+        continue;
+      }
+      s.body = chance(0.85);
+      if (s.body) s.action = block(0, 2);
+    }
+    // A spanning tree first (every state weakly connected), then extra transitions; never from
+    // a terminal state, never to itself, at most one per ordered pair.
+    std::set<std::pair<int, int>> pairs;
+    for (int i = 1; i < n; ++i) {
+      std::vector<int> sources;
+      for (int j = 0; j < i; ++j)
+        if (!terminal(j)) sources.push_back(j);
+      int j = pick(sources);
+      if (!terminal(i) && chance(0.4)) pairs.insert({i, j});
+      else pairs.insert({j, i});
+    }
+    for (int extra = uniform(0, n); extra > 0; --extra) {
+      int a = uniform(0, n - 1), b = uniform(0, n - 1);
+      if (a != b && !terminal(a)) pairs.insert({a, b});
+    }
+    std::vector<std::pair<int, int>> order(pairs.begin(), pairs.end());
+    std::shuffle(order.begin(), order.end(), rng_);
+    int i = 0;
+    for (auto [a, b] : order) {
+      GTransition t;
+      if (chance(0.15)) t.name = fresh("t", i, {});
+      t.inputs = {a};
+      t.outputs = {b};
+      if (chance(0.85)) t.condition = boolean(2);
+      c_.transitions.push_back(t);
+      ++i;
+    }
+  }
+
+private:
+  std::mt19937_64 &rng_;
+  GChart &c_;
+  const GenOptions &o_;
+  std::set<std::string> used_;
+  bool calls_allowed_ = true;
+};
+
+int precedence(const std::string &op) {
+  if (op == "||") return 1;
+  if (op == "&&") return 2;
+  if (op == "==" || op == "!=") return 3;
+  if (op == "<" || op == "<=" || op == ">" || op == ">=") return 4;
+  if (op == "+" || op == "-") return 5;
+  return 6;
+}
+
+std::string block_text(const std::vector<GStmt> &b) {
+  std::string s;
+  for (const auto &st : b)
+    s += st.assign ? fmt::format("{} {} {}; ", st.target, st.op, expr_text(st.expr)) : expr_text(st.expr) + "; ";
+  return s;
+}
+
+std::string side(const GChart &c, const std::vector<int> &places) {
+  std::string s;
+  for (int p : places) s += (s.empty() ? "" : ", ") + c.places[static_cast<std::size_t>(p)].name;
+  return places.size() == 1 ? s : "(" + s + ")";
+}
+
+} // namespace
+
+std::string expr_text(const GExpr &e) {
+  switch (e.kind) {
+  case GExpr::Kind::Lit:
+  case GExpr::Kind::Var:
+  case GExpr::Kind::Const: return e.text;
+  case GExpr::Kind::Elapsed: return "elapsed(" + e.text + ")";
+  case GExpr::Kind::Call: {
+    std::string args;
+    for (const auto &a : e.args) args += (args.empty() ? "" : ", ") + expr_text(a);
+    return e.text + "(" + args + ")";
+  }
+  case GExpr::Kind::Paren: return "(" + expr_text(e.args.at(0)) + ")";
+  case GExpr::Kind::Unary: {
+    const GExpr &a = e.args.at(0);
+    std::string inner = expr_text(a);
+    bool wrap = a.kind == GExpr::Kind::Binary || inner[0] == '-';
+    return e.text + (wrap ? "(" + inner + ")" : inner);
+  }
+  case GExpr::Kind::Binary: {
+    // Brackets only where the tree needs them (operators are left-associative).
+    const int p = precedence(e.text);
+    const GExpr &l = e.args.at(0), &r = e.args.at(1);
+    std::string a = expr_text(l), b = expr_text(r);
+    if (l.kind == GExpr::Kind::Binary && precedence(l.text) < p) a = "(" + a + ")";
+    if (r.kind == GExpr::Kind::Binary && precedence(r.text) <= p) b = "(" + b + ")";
+    return a + " " + e.text + " " + b;
+  }
+  }
+  return "";
+}
+
+GChart random_chart(std::mt19937_64 &rng, int id, const GenOptions &options) {
+  GChart c;
+  c.fsm = options.fsm;
+  c.name = fmt::format("R{}", id);
+  c.prefix = fmt::format("c{}", id);
+  Gen g(rng, c, options);
+  c.period_ms = g.chance(0.7) ? g.pick(std::vector<int>{1, 10, 20, 100}) : 0;
+  g.interface();
+  g.values();
+  if (c.fsm) g.fsm();
+  else g.sfc();
+  return c;
+}
+
+GTrace random_trace(std::mt19937_64 &rng, const GChart &chart) {
+  GTrace t;
+  std::uniform_int_distribution<int> ticks(3, 25), small(-3, 9), coin(0, 99);
+  std::uniform_int_distribution<std::size_t> floats(0, kFloatInputs.size() - 1);
+  t.ticks = ticks(rng);
+  for (const auto &f : chart.functions) {
+    std::vector<std::string> v;
+    bool level = coin(rng) < 50;
+    for (int k = 0; k < t.ticks && f.result != Type::Void; ++k) {
+      if (f.result == Type::Bool) {
+        if (coin(rng) < 35) level = !level;  // runs, so that places stay active a while
+        v.push_back(level ? "1" : "0");
+      } else if (f.result == Type::Int) {
+        v.push_back(std::to_string(small(rng)));
+      } else {
+        v.push_back(kFloatInputs[floats(rng)]);
+      }
+    }
+    t.values.push_back(v);
+  }
+  return t;
+}
+
+std::string chart_text(const GChart &c) {
+  std::string s = fmt::format("interface I{} {{\n", c.name.substr(1));
+  for (const auto &f : c.functions) {
+    std::string params;
+    for (std::size_t i = 0; i < f.params.size(); ++i) params += fmt::format("{}{} p{}", i ? ", " : "", type_word(f.params[i]), i);
+    s += fmt::format("  {} {}({});\n", type_word(f.result), f.name, params);
+  }
+  s += "}\n";
+  for (const auto &k : c.consts)
+    if (k.file_level) s += fmt::format("const {} {} = {};\n", type_word(k.type), k.name, k.init);
+  s += fmt::format("{} {} {{\n", c.fsm ? "fsm" : "sfc", c.name);
+  if (c.period_ms) s += fmt::format("  period {}ms;\n", c.period_ms);
+  for (const auto &k : c.consts)
+    if (!k.file_level) s += fmt::format("  const {} {} = {};\n", type_word(k.type), k.name, k.init);
+  for (const auto &v : c.vars)
+    s += fmt::format("  var {} {}{};\n", type_word(v.type), v.name, v.init.empty() ? "" : " = " + v.init);
+  for (const auto &p : c.places) {
+    std::string head = c.fsm ? (p.terminal == model::Terminal::Success   ? "success state"
+                                : p.terminal == model::Terminal::Failure ? "failure state"
+                                : p.initial                               ? "initial state"
+                                                                          : "state")
+                             : (p.initial ? "initial place" : "place");
+    s += "  " + head + " " + p.name;
+    if (p.post) s += " post " + expr_text(*p.post);
+    if (!p.body) {
+      s += ";\n";
+      continue;
+    }
+    s += " { ";
+    if (p.entry) s += "entry { " + block_text(*p.entry) + "} ";
+    s += block_text(p.action);
+    if (p.exit) s += "exit { " + block_text(*p.exit) + "} ";
+    s += "}\n";
+  }
+  for (const auto &t : c.transitions) {
+    s += "  ";
+    if (!t.name.empty()) s += "transition " + t.name + ": ";
+    else if (!c.fsm) s += "transition ";
+    s += side(c, t.inputs) + " -> " + side(c, t.outputs);
+    if (t.condition) s += " when " + expr_text(*t.condition);
+    s += ";\n";
+  }
+  return s + "}\n";
+}
+
+std::string trace_csv(const GChart &c, const GTrace &t) {
+  std::string header = "tick", rows;
+  for (const auto &f : c.functions)
+    if (f.result != Type::Void) header += ", " + f.name;
+  for (int k = 0; k < t.ticks; ++k) {
+    rows += std::to_string(k + 1);
+    for (std::size_t f = 0; f < c.functions.size(); ++f)
+      if (c.functions[f].result != Type::Void) rows += ", " + t.values[f][static_cast<std::size_t>(k)];
+    rows += "\n";
+  }
+  return header + "\n" + rows;
+}
+
+} // namespace gfec::diff

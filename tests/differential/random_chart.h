@@ -1,0 +1,97 @@
+// Random charts for differential testing: a small structured form of an sfc or fsm (so the
+// shrinker can take it apart), printed as chart text that goes through the whole pipeline.
+// Every chart is valid by construction; what it does at run time is the point.
+#pragma once
+
+#include "model.h"
+
+#include <optional>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace gfec::diff {
+
+using model::Type;
+
+struct GExpr {
+  enum class Kind { Lit, Var, Const, Call, Elapsed, Unary, Binary, Paren };
+  Kind kind = Kind::Lit;
+  Type type = Type::Int;  ///< for an Elapsed comparison's operands: Duration
+  std::string text;       ///< literal spelling, name, or operator
+  std::vector<GExpr> args;
+};
+
+struct GStmt {
+  bool assign = false;
+  std::string target;  ///< assignments: the var
+  std::string op;      ///< "=", "+=", "-="
+  GExpr expr;          ///< the value, or the call
+};
+
+struct GFunction {
+  std::string name;
+  Type result = Type::Void;
+  std::vector<Type> params;
+};
+
+struct GValue {  ///< a var, or a constant (chart or file level)
+  Type type = Type::Int;
+  std::string name;
+  std::string init;  ///< literal; empty: none (vars only)
+  bool file_level = false;
+};
+
+struct GPlace {
+  std::string name;
+  bool initial = false;
+  model::Terminal terminal = model::Terminal::None;
+  bool body = true;  ///< false: `place X;`
+  std::vector<GStmt> action;
+  std::optional<std::vector<GStmt>> entry, exit;
+  std::optional<GExpr> post;
+};
+
+struct GTransition {
+  std::string name;  ///< empty: unnamed
+  std::vector<int> inputs, outputs;
+  std::optional<GExpr> condition;
+};
+
+struct GChart {
+  bool fsm = false;
+  std::string name;       ///< R<id>
+  std::string prefix;     ///< c<id>: the interface functions' prefix
+  int period_ms = 0;
+  std::vector<GFunction> functions;
+  std::vector<GValue> consts;
+  std::vector<GValue> vars;
+  std::vector<GPlace> places;
+  std::vector<GTransition> transitions;
+};
+
+/// What each function with a result returns, tick by tick, as literal text.
+struct GTrace {
+  int ticks = 0;
+  std::vector<std::vector<std::string>> values;  ///< [function][tick]; empty for void functions
+};
+
+struct GenOptions {
+  bool fsm = false;
+  // Constructs that a known, reported bug makes fail, so that a run can look past it
+  // (gfec_differential --avoid); by default every construct is generated.
+  bool octal = true;             ///< int literals with a leading zero (`010`)
+  bool float_into_int = true;    ///< float-typed values passed or assigned to ints
+  bool call_order = true;        ///< calls in two operands of one operator or call (C leaves their order open)
+};
+
+GChart random_chart(std::mt19937_64 &rng, int id, const GenOptions &options);
+GTrace random_trace(std::mt19937_64 &rng, const GChart &chart);
+
+/// The chart as one file: its interface, its file-level constants, the chart.
+std::string chart_text(const GChart &chart);
+/// The trace as gfec run's CSV (docs/verification.md).
+std::string trace_csv(const GChart &chart, const GTrace &trace);
+std::string expr_text(const GExpr &e);
+
+} // namespace gfec::diff
