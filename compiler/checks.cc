@@ -10,6 +10,16 @@ const WarningInfo kWarnings[] = {
     {Warning::Conflict, "conflict", false, "transitions sharing an input place, settled by declaration order"},
     {Warning::UnreachableActor, "unreachable-actor", true, "a plan actor no path reaches"},
     {Warning::Verbatim, "verbatim", false, "verbatim code that the validator cannot check"},
+    {Warning::UnsafePlace, "unsafe-place", false, "an sfc place can hold more than one activation"},
+    {Warning::UnboundedPlace, "unbounded-place", true, "an sfc place's activation can grow without bound"},
+    {Warning::Deadlock, "deadlock", true, "a reachable sfc state where active places wait and nothing can fire"},
+    {Warning::DeadJoin, "dead-join", true, "a join whose input places are never active together"},
+    {Warning::UnjoinedFork, "unjoined-fork", false, "a fork whose branches never meet again in a join"},
+    {Warning::AnalysisLimit, "analysis-limit", true, "an analysis stopped at its bound; its findings are incomplete"},
+    {Warning::TrapState, "trap-state", true, "an fsm state from which no success or failure state is reachable"},
+    {Warning::ShadowedTransition, "shadowed-transition", true, "an fsm transition that an earlier one always pre-empts"},
+    {Warning::UninitializedConfig, "uninitialized-config", true, "a plan may read a config entry before anything writes it"},
+    {Warning::SupervisorRace, "supervisor-race", false, "two supervisors of one actor can fire in the same step"},
 };
 static_assert(sizeof(kWarnings) / sizeof(kWarnings[0]) == static_cast<int>(Warning::Count_));
 } // namespace

@@ -13,6 +13,17 @@ enum class Warning {
   Conflict,           ///< transitions sharing an input place, settled by declaration order
   UnreachableActor,   ///< a plan actor no path reaches
   Verbatim,           ///< verbatim code the validator cannot check
+  // The static analyses (compiler/analysis/, docs/verification.md).
+  UnsafePlace,        ///< an sfc place can hold more than one activation
+  UnboundedPlace,     ///< an sfc place's activation can grow without bound
+  Deadlock,           ///< a reachable sfc state in which active places wait and nothing can fire
+  DeadJoin,           ///< a join whose input places are never active together
+  UnjoinedFork,       ///< a fork whose branches never meet again in a join
+  AnalysisLimit,      ///< an analysis stopped at its bound: its findings are incomplete
+  TrapState,          ///< an fsm state from which no terminal state can be reached
+  ShadowedTransition, ///< an fsm transition an earlier one always pre-empts
+  UninitializedConfig,///< a plan reads a config entry that nothing has written
+  SupervisorRace,     ///< two supervisors of one actor can fire in the same step
   Count_
 };
 

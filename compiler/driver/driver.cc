@@ -1,5 +1,8 @@
 #include "driver.h"
 
+#include "analysis/analysis.h"
+#include "analyze_command.h"
+
 #include "backend_registry.h"
 #include "dependency_file.h"
 #include "diagnostic_report.h"
@@ -35,6 +38,8 @@ bool front_end(const std::string &path, const Options &o, Compilation &c) {
   // Validating a tree the parser had to patch up would mostly report the patches.
   if (c.diag.has_errors()) return false;
   c.model = validate(c.loaded.program, c.sources, c.diag);
+  // The static analyses whose warnings are on (compiler/analysis/, docs/verification.md).
+  if (!c.diag.has_errors()) analysis::analyze(c.model, c.diag);
   return !c.diag.has_errors();
 }
 
@@ -180,6 +185,7 @@ int check_all(const Options &o, DiagnosticReport &report, std::ostream &out) {
 } // namespace
 
 int run(const Options &o, std::ostream &out, std::ostream &err) {
+  if (o.analyze) return analyze_command(o, out, err);
   auto report = make_report(o.diagnostics_format, err);
   int code = o.check_only ? check_all(o, *report, out) : compile(o, *report, out);
   std::string failure = report->finish(code);

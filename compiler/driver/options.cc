@@ -107,6 +107,7 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
       ->type_name("DIR")
       ->allow_extra_args(false);
   app.add_flag("--check", o.check_only, "Validate only: report every diagnostic and write nothing");
+  app.add_flag("--analyze", o.analyze, "Run every static analysis and print a report per chart and plan; write nothing");
   app.add_option("--emit", o.emit, "Back end: c, cpp, json, dot, svg or toolbox-skeleton (default: from the file)");
   app.add_option("--chart", o.chart, "The chart or plan to compile when a file declares several")->type_name("NAME");
   app.add_flag("--no-line-directives", no_line, "Do not write #line directives pointing back to the chart");
@@ -166,6 +167,8 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
     }
   }
   o.line_directives = !no_line;
+  if (o.analyze && (!o.output.empty() || o.deps.write)) return usage_error("--analyze writes nothing; drop -o and -MD");
+  if (o.analyze) return result;  // several files are fine, as with --check
   if (!o.check_only && o.inputs.size() > 1)
     return usage_error("several input files are only allowed with --check");
   if (o.check_only && !o.output.empty()) return usage_error("--check writes nothing; drop -o");

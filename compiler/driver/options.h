@@ -23,6 +23,7 @@ struct Options {
   std::string output;                     ///< -o; empty: derived from the input's name
   std::vector<std::string> include_dirs;  ///< -I
   bool check_only = false;                ///< --check: validate, write nothing
+  bool analyze = false;                   ///< --analyze: every static analysis, a report (analyze_command.h)
   std::string emit;                       ///< --emit=c|cpp|json|dot|svg|toolbox-skeleton; empty: from the file
   std::string chart;                      ///< --chart NAME
   bool line_directives = true;            ///< --no-line-directives turns them off

@@ -1,0 +1,85 @@
+#include "analysis/condition_logic.h"
+
+#include <fmt/format.h>
+
+#include <map>
+#include <string>
+
+namespace gfec::analysis {
+
+namespace {
+
+constexpr std::size_t kMaxAtoms = 14;  // 2^14 rows of the truth table at most
+
+using model::Expr;
+
+bool is_logic(const Expr &e) {
+  switch (e.kind) {
+  case Expr::Kind::Bool:
+  case Expr::Kind::Paren: return true;
+  case Expr::Kind::Unary: return e.unary_op == UnaryOp::Not;
+  case Expr::Kind::Binary:
+    if (e.binary_op == BinaryOp::And || e.binary_op == BinaryOp::Or) return true;
+    return (e.binary_op == BinaryOp::Eq || e.binary_op == BinaryOp::Ne) && e.args.size() == 2 &&
+           e.args[0].type == model::Type::Bool && e.args[1].type == model::Type::Bool;
+  default: return false;
+  }
+}
+
+/// A spelling of an atom that is equal for equal expressions (brackets ignored).
+std::string key(const Expr &e) {
+  if (e.kind == Expr::Kind::Paren && !e.args.empty()) return key(e.args[0]);
+  std::string k = fmt::format("{}:{}:{}:{}:{}:{}:{}", static_cast<int>(e.kind), e.index, e.text, e.bool_value, e.ticks,
+                              static_cast<int>(e.unary_op), static_cast<int>(e.binary_op));
+  for (const auto &a : e.args) k += "(" + key(a) + ")";
+  return k;
+}
+
+class Atoms {
+public:
+  bool collect(const Expr &e) {
+    if (!is_logic(e)) {
+      if (!index_.count(key(e))) index_.emplace(key(e), index_.size());
+      return index_.size() <= kMaxAtoms;
+    }
+    for (const auto &a : e.args)
+      if (!collect(a)) return false;
+    return true;
+  }
+  std::size_t size() const { return index_.size(); }
+
+  bool eval(const Expr &e, unsigned row) const {
+    switch (e.kind) {
+    case Expr::Kind::Bool: return e.bool_value;
+    case Expr::Kind::Paren: return eval(e.args.at(0), row);
+    case Expr::Kind::Unary:
+      if (e.unary_op == UnaryOp::Not) return !eval(e.args.at(0), row);
+      break;
+    case Expr::Kind::Binary:
+      if (e.binary_op == BinaryOp::And) return eval(e.args[0], row) && eval(e.args[1], row);
+      if (e.binary_op == BinaryOp::Or) return eval(e.args[0], row) || eval(e.args[1], row);
+      if (is_logic(e)) return (eval(e.args[0], row) == eval(e.args[1], row)) == (e.binary_op == BinaryOp::Eq);
+      break;
+    default: break;
+    }
+    return (row >> index_.at(key(e))) & 1u;
+  }
+
+private:
+  std::map<std::string, std::size_t> index_;
+};
+
+} // namespace
+
+std::optional<bool> implies(const Expr *a, const Expr *b) {
+  if (!b) return true;  // anything implies `true`
+  Atoms atoms;
+  if ((a && !atoms.collect(*a)) || !atoms.collect(*b)) return std::nullopt;
+  for (unsigned row = 0; row < (1u << atoms.size()); ++row) {
+    bool ha = a ? atoms.eval(*a, row) : true;
+    if (ha && !atoms.eval(*b, row)) return false;
+  }
+  return true;
+}
+
+} // namespace gfec::analysis

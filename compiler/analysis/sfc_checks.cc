@@ -1,0 +1,198 @@
+// What the reachable activation states of an sfc say about it (sfc_states.h), and the forks
+// whose branches never meet (from the chart's structure alone).
+#include "analysis/passes.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <set>
+
+namespace gfec::analysis {
+
+namespace {
+
+using model::Chart;
+
+const std::string &place_name(const Chart &c, int p) { return c.places.at(static_cast<std::size_t>(p)).name; }
+
+std::string names(const Chart &c, const std::vector<int> &places) {
+  std::string out;
+  for (std::size_t i = 0; i < places.size(); ++i)
+    out += fmt::format("{}'{}'", i == 0 ? "" : i + 1 == places.size() ? " and " : ", ", place_name(c, places[i]));
+  return out;
+}
+
+/// What the validator already reports: places no chain of live transitions reaches (it warns
+/// about those; this pass speaks only of the rest).
+std::vector<bool> structurally_reachable(const Chart &c) {
+  std::vector<bool> reach(c.places.size());
+  for (std::size_t p = 0; p < c.places.size(); ++p) reach[p] = c.places[p].initial;
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (const auto &t : c.transitions) {
+      bool open = firing_of(t) != Firing::Never;
+      for (int p : t.inputs) open = open && reach[static_cast<std::size_t>(p)];
+      if (!open) continue;
+      for (int q : t.outputs)
+        if (!reach[static_cast<std::size_t>(q)]) reach[static_cast<std::size_t>(q)] = changed = true;
+    }
+  }
+  return reach;
+}
+
+/// Places reachable from `start` along transitions (a place leads to the outputs of every
+/// transition it is an input of).
+std::set<int> downstream(const Chart &c, int start) {
+  std::set<int> seen{start};
+  std::vector<int> todo{start};
+  while (!todo.empty()) {
+    int p = todo.back();
+    todo.pop_back();
+    for (const auto &t : c.transitions)
+      if (std::find(t.inputs.begin(), t.inputs.end(), p) != t.inputs.end())
+        for (int q : t.outputs)
+          if (seen.insert(q).second) todo.push_back(q);
+  }
+  return seen;
+}
+
+/// A fork's branches meet when some join takes inputs from two different branches.
+void check_forks(const model::Model &m, const Chart &c, Diagnostics &diag) {
+  for (const auto &fork : c.transitions) {
+    if (fork.outputs.size() < 2) continue;
+    std::vector<std::set<int>> branch;
+    for (int o : fork.outputs) branch.push_back(downstream(c, o));
+    bool meet = false;
+    for (const auto &join : c.transitions) {
+      if (join.inputs.size() < 2) continue;
+      for (std::size_t i = 0; i < branch.size() && !meet; ++i)
+        for (std::size_t j = 0; j < branch.size() && !meet; ++j) {
+          if (i == j) continue;
+          for (int a : join.inputs)
+            for (int b : join.inputs)
+              if (a != b && branch[i].count(a) && branch[j].count(b)) meet = true;
+        }
+      if (meet) break;
+    }
+    if (!meet)
+      diag.warning(Warning::UnjoinedFork, name_in(m, fork.range, fork.name),
+                   fmt::format("the branches that fork '{}' starts ({}) never meet again in a join", fork.name,
+                               names(c, fork.outputs)))
+          .note("each branch runs on its own; a join (A, B) -> C synchronises them");
+  }
+}
+
+} // namespace
+
+void check_sfc(const model::Model &m, const Chart &c, Diagnostics &diag, const Limits &limits, std::string &summary) {
+  const std::size_t np = c.places.size(), nt = c.transitions.size();
+  StateSpace space = explore(c, limits);
+  const SourceRange chart_at = name_in(m, c.range, c.name);
+  if (space.limit_hit)
+    diag.warning(Warning::AnalysisLimit, chart_at,
+                 fmt::format("the analysis of sfc '{}' stopped after {} activation states and {} tick outcomes; what it "
+                             "says about unreachable places, dead transitions and joins is left out",
+                             c.name, space.states.size(), space.outcomes));
+
+  // Per place: the largest count seen, and the first state that shows it above one.
+  std::vector<std::uint32_t> most(np, 0);
+  std::vector<int> unsafe_at(np, -1), unbounded_at(np, -1);
+  std::vector<bool> join_ready(nt, false);
+  const std::vector<bool> &fired = space.ever_fired;
+  std::vector<int> deadlocks;
+  for (std::size_t s = 0; s < space.states.size(); ++s) {
+    const Marking &mk = space.states[s];
+    for (std::size_t p = 0; p < np; ++p) {
+      most[p] = std::max(most[p], mk[p]);
+      if (mk[p] >= 2 && unsafe_at[p] < 0) unsafe_at[p] = static_cast<int>(s);
+      if (mk[p] == kOmega && unbounded_at[p] < 0) unbounded_at[p] = static_cast<int>(s);
+    }
+    bool can_fire = false, waiting = false;
+    for (std::size_t t = 0; t < nt; ++t) {
+      const auto &tr = c.transitions[t];
+      bool open = is_open(tr, mk);
+      join_ready[t] = join_ready[t] || open;
+      if (firing_of(tr) == Firing::Never) continue;
+      can_fire = can_fire || open;
+      for (int p : tr.inputs) waiting = waiting || mk[static_cast<std::size_t>(p)] > 0;
+    }
+    if (!can_fire && waiting) deadlocks.push_back(static_cast<int>(s));
+  }
+
+  for (std::size_t p = 0; p < np; ++p) {
+    const auto &place = c.places[p];
+    SourceRange at = name_in(m, place.range, place.name);
+    if (unbounded_at[p] >= 0)
+      diag.warning(Warning::UnboundedPlace, at,
+                   fmt::format("place '{}' can gain activation without bound", place.name))
+          .note(fmt::format("a cycle adds to it every time round: {}", witness(c, space, unbounded_at[p])));
+    else if (unsafe_at[p] >= 0)
+      diag.warning(Warning::UnsafePlace, at,
+                   fmt::format("place '{}' can hold {} activations at once", place.name, most[p]))
+          .note(fmt::format("for example after {}", witness(c, space, unsafe_at[p])));
+  }
+  if (!deadlocks.empty()) {
+    int s = deadlocks.front();
+    const Marking &mk = space.states[static_cast<std::size_t>(s)];
+    auto &d = diag.warning(Warning::Deadlock, chart_at,
+                           fmt::format("sfc '{}' can reach a state in which nothing can fire any more: {}", c.name,
+                                       marking_text(c, mk)));
+    d.note(fmt::format("it gets there after {}", witness(c, space, s)));
+    for (const auto &tr : c.transitions) {
+      if (firing_of(tr) == Firing::Never) continue;
+      std::vector<int> active, missing;
+      for (int p : tr.inputs) (mk[static_cast<std::size_t>(p)] > 0 ? active : missing).push_back(p);
+      if (!active.empty() && !missing.empty())
+        d.note(name_in(m, tr.range, tr.name), fmt::format("'{}' waits for {}", tr.name, names(c, missing)));
+    }
+  }
+
+  // What never happens, claimed only when every reachable state is known exactly.
+  std::size_t unreachable = 0, dead = 0;
+  if (space.exact()) {
+    std::vector<bool> structural = structurally_reachable(c);
+    for (std::size_t p = 0; p < np; ++p) {
+      if (most[p] > 0 || !structural[p]) continue;  // the validator speaks of the latter
+      ++unreachable;
+      diag.warning(Warning::UnreachablePlace, name_in(m, c.places[p].range, c.places[p].name),
+                   fmt::format("place '{}' can never become active: no reachable activation state holds it",
+                               c.places[p].name));
+    }
+    for (std::size_t t = 0; t < nt; ++t) {
+      const auto &tr = c.transitions[t];
+      bool inputs_reach = firing_of(tr) != Firing::Never;
+      for (int p : tr.inputs) inputs_reach = inputs_reach && most[static_cast<std::size_t>(p)] > 0;
+      if (fired[t] || !inputs_reach) continue;  // never-active inputs are reported as places
+      ++dead;
+      SourceRange at = name_in(m, tr.range, tr.name);
+      if (!join_ready[t])
+        diag.warning(Warning::DeadJoin, at,
+                     fmt::format("join '{}' can never fire: its input places {} are never active at the same time",
+                                 tr.name, names(c, tr.inputs)));
+      else
+        diag.warning(Warning::DeadTransition, at,
+                     fmt::format("transition '{}' can never fire: whenever it is open, a transition declared before it "
+                                 "without a condition takes the activation first",
+                                 tr.name));
+    }
+  }
+  check_forks(m, c, diag);
+
+  // The summary for --analyze.
+  bool safe = std::all_of(most.begin(), most.end(), [](std::uint32_t k) { return k <= 1; });
+  std::uint32_t bound = 0;
+  for (auto k : most) bound = std::max(bound, k);
+  summary += fmt::format("sfc {}: {} places, {} transitions\n", c.name, np, nt);
+  summary += fmt::format("  activation states: {}{}\n", space.states.size(),
+                         space.limit_hit     ? fmt::format(" (stopped at the limit of {} states; incomplete)", limits.max_states)
+                         : space.accelerated ? " (some counts unbounded: an over-approximation)"
+                                             : " (all of them)");
+  summary += fmt::format("  {}\n", safe                ? "safe: no place ever holds more than one activation"
+                                   : bound == kOmega    ? "unbounded: some place can gain activation without end"
+                                                        : fmt::format("bounded: no place holds more than {} activations", bound));
+  summary += fmt::format("  deadlocks: {}\n", deadlocks.empty() ? "none" : fmt::format("{} state(s)", deadlocks.size()));
+  if (space.exact())
+    summary += fmt::format("  never active: {} place(s); never firing: {} transition(s)\n", unreachable, dead);
+}
+
+} // namespace gfec::analysis

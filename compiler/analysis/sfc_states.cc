@@ -1,0 +1,169 @@
+#include "sfc_states.h"
+
+#include <fmt/format.h>
+
+#include <deque>
+#include <map>
+#include <set>
+
+namespace gfec::analysis {
+
+namespace {
+
+std::uint32_t take(std::uint32_t n) { return n == kOmega ? kOmega : n - 1; }
+std::uint32_t give(std::uint32_t n, std::uint32_t k) {
+  if (n == kOmega || k == kOmega) return kOmega;
+  return n + k >= kOmega ? kOmega : n + k;
+}
+
+/// `a` has at least as much activation as `b` in every place.
+bool covers(const Marking &a, const Marking &b) {
+  for (std::size_t p = 0; p < a.size(); ++p)
+    if (a[p] < b[p]) return false;
+  return true;
+}
+
+/// Every outcome of one tick from a marking: each open free transition fires or not.
+class Tick {
+public:
+  Tick(const model::Chart &c, const std::vector<Firing> &firing, std::size_t budget)
+      : c_(c), firing_(firing), budget_(budget) {}
+
+  /// The distinct outcomes, each with the transitions that fired; false if the budget ran out.
+  bool outcomes(const Marking &m, std::map<Marking, std::vector<int>> &out) {
+    Marking add(m.size(), 0);
+    std::vector<int> fired;
+    Marking avail = m;
+    visit(0, avail, add, fired, out);
+    return used_ <= budget_;
+  }
+  std::size_t used() const { return used_; }
+
+private:
+  void visit(std::size_t t, Marking &avail, Marking &add, std::vector<int> &fired,
+             std::map<Marking, std::vector<int>> &out) {
+    if (used_ > budget_) return;
+    if (t == c_.transitions.size()) {
+      ++used_;
+      Marking next(avail.size());
+      for (std::size_t p = 0; p < avail.size(); ++p) next[p] = give(avail[p], add[p]);
+      out.emplace(std::move(next), fired);
+      return;
+    }
+    const model::Transition &tr = c_.transitions[t];
+    const Firing f = firing_[t];
+    const bool open = f != Firing::Never && is_open(tr, avail);
+    if (!open || f == Firing::Free) visit(t + 1, avail, add, fired, out);
+    if (!open) return;
+    Marking avail2 = avail, add2 = add;
+    for (int p : tr.inputs) avail2[static_cast<std::size_t>(p)] = take(avail2[static_cast<std::size_t>(p)]);
+    for (int p : tr.outputs) add2[static_cast<std::size_t>(p)] = give(add2[static_cast<std::size_t>(p)], 1);
+    fired.push_back(static_cast<int>(t));
+    visit(t + 1, avail2, add2, fired, out);
+    fired.pop_back();
+  }
+
+  const model::Chart &c_;
+  const std::vector<Firing> &firing_;
+  std::size_t budget_;
+  std::size_t used_ = 0;
+};
+
+} // namespace
+
+Firing firing_of(const model::Transition &t) {
+  if (!t.condition) return Firing::Always;
+  const model::Expr *e = &*t.condition;
+  while (e->kind == model::Expr::Kind::Paren && !e->args.empty()) e = &e->args[0];
+  if (e->kind == model::Expr::Kind::Bool) return e->bool_value ? Firing::Always : Firing::Never;
+  return Firing::Free;
+}
+
+bool is_open(const model::Transition &t, const Marking &m) {
+  for (int p : t.inputs)
+    if (m[static_cast<std::size_t>(p)] == 0) return false;
+  return true;
+}
+
+StateSpace explore(const model::Chart &chart, const Limits &limits) {
+  StateSpace s;
+  s.ever_fired.assign(chart.transitions.size(), false);
+  std::vector<Firing> firing;
+  for (const auto &t : chart.transitions) firing.push_back(firing_of(t));
+  Marking initial;
+  for (const auto &p : chart.places) initial.push_back(p.initial ? 1 : 0);
+  std::map<Marking, int> index;
+  auto add_state = [&](Marking m, int parent, std::vector<int> fired) {
+    auto found = index.find(m);
+    if (found != index.end()) return found->second;
+    int i = static_cast<int>(s.states.size());
+    index.emplace(m, i);
+    s.states.push_back(std::move(m));
+    s.parent.push_back(parent);
+    s.fired.push_back(std::move(fired));
+    s.successors.emplace_back();
+    return i;
+  };
+  add_state(initial, -1, {});
+  for (std::size_t i = 0; i < s.states.size(); ++i) {
+    std::map<Marking, std::vector<int>> outcomes;
+    Tick tick(chart, firing, limits.max_outcomes - std::min(limits.max_outcomes, s.outcomes));
+    bool all = tick.outcomes(s.states[i], outcomes);
+    s.outcomes += tick.used();
+    if (!all) {
+      s.limit_hit = true;
+      break;
+    }
+    std::set<int> seen;
+    for (auto &[next, fired] : outcomes) {
+      for (int t : fired) s.ever_fired[static_cast<std::size_t>(t)] = true;
+      Marking m = next;
+      // Karp-Miller: growth over an ancestor can repeat, so it is unbounded.
+      for (int a = static_cast<int>(i); a >= 0; a = s.parent[static_cast<std::size_t>(a)]) {
+        const Marking &old = s.states[static_cast<std::size_t>(a)];
+        if (m == old || !covers(m, old)) continue;
+        for (std::size_t p = 0; p < m.size(); ++p)
+          if (m[p] > old[p] && m[p] != kOmega) {
+            m[p] = kOmega;
+            s.accelerated = true;
+          }
+      }
+      if (index.count(m) == 0 && s.states.size() >= limits.max_states) {
+        s.limit_hit = true;
+        continue;
+      }
+      int j = add_state(std::move(m), static_cast<int>(i), fired);
+      if (seen.insert(j).second) s.successors[i].push_back(j);
+    }
+    if (s.limit_hit) break;
+  }
+  return s;
+}
+
+std::string marking_text(const model::Chart &chart, const Marking &m) {
+  std::string out;
+  for (std::size_t p = 0; p < m.size(); ++p) {
+    if (m[p] == 0) continue;
+    out += out.empty() ? "" : ", ";
+    out += chart.places[p].name;
+    if (m[p] == kOmega) out += "=ω";
+    else if (m[p] > 1) out += fmt::format("={}", m[p]);
+  }
+  return out.empty() ? "nothing active" : out;
+}
+
+std::string witness(const model::Chart &chart, const StateSpace &space, int state) {
+  std::vector<int> path;
+  for (int s = state; s > 0; s = space.parent[static_cast<std::size_t>(s)]) path.push_back(s);
+  std::string out;
+  int tick = 1;
+  for (auto it = path.rbegin(); it != path.rend(); ++it, ++tick) {
+    std::string fired;
+    for (int t : space.fired[static_cast<std::size_t>(*it)])
+      fired += (fired.empty() ? "" : ", ") + chart.transitions[static_cast<std::size_t>(t)].name;
+    out += fmt::format("{}tick {}: {}", out.empty() ? "" : "; ", tick, fired.empty() ? "nothing fires" : fired);
+  }
+  return out.empty() ? "at the start" : out;
+}
+
+} // namespace gfec::analysis

@@ -1,0 +1,61 @@
+// `gfec --analyze` and the analyses inside an ordinary compile, as users see them.
+#include "support.h"
+
+#include <catch2/catch.hpp>
+
+using namespace gfec::test;
+
+namespace {
+
+const std::string gfec_exe = std::string(GFEC_BINARY_DIR) + "/gfec";
+const std::string samples = std::string(GFEC_SOURCE_DIR) + "/samples";
+
+const char *kChoice = R"(interface Bot { bool Left(); }
+sfc Choice {
+  initial place S;
+  place L;
+  place R;
+  place J;
+  transition GoLeft: S -> L when Left();
+  transition GoRight: S -> R when !Left();
+  transition Both: (L, R) -> J;
+}
+)";
+
+} // namespace
+
+TEST_CASE("gfec --analyze: a report per chart and plan, every analysis on") {
+  auto r = run_command(gfec_exe + " --analyze " + samples + "/line_follower.sfc " + samples + "/cleanup.fsm");
+  CHECK(r.exit_code == 0);
+  CHECK(r.out == samples + "/line_follower.sfc:\n"
+                           "  sfc LineFollower: 4 places, 4 transitions\n"
+                           "    activation states: 4 (all of them)\n"
+                           "    safe: no place ever holds more than one activation\n"
+                           "    deadlocks: none\n"
+                           "    never active: 0 place(s); never firing: 0 transition(s)\n" +
+                    samples + "/cleanup.fsm:\n"
+                              "  fsm CleanUp: 6 states (2 terminal), 8 transitions\n"
+                              "    reachable states: 6 of 6\n"
+                              "    states that can never finish: 0\n"
+                              "    shadowed transitions: 0\n");
+  auto plan = run_command(gfec_exe + " --analyze " + samples + "/wall_follow.plan");
+  CHECK(plan.exit_code == 0);
+  // -Wsupervisor-race is off by default, on under --analyze.
+  CHECK(plan.out.find("wall_follow.plan:13:9: warning: 3 supervisors watch actor 'searchFirstWall' and can raise "
+                      "events in the same step; 'escape' (global) wins [-Wsupervisor-race]") != std::string::npos);
+  CHECK(run_command(gfec_exe + " --analyze " + samples + "/line_follower.sfc -o x.c").exit_code == 2);
+}
+
+TEST_CASE("gfec: the analyses run in every compile, as named warnings that -Werror and -Wno- control") {
+  std::string dir = scratch_dir("analysis_command");
+  write_file(dir + "/choice.sfc", kChoice);
+  auto r = run_command(gfec_exe + " --check " + dir + "/choice.sfc");
+  CHECK(r.exit_code == 0);
+  CHECK(r.out.find("choice.sfc:2:5: warning: sfc 'Choice' can reach a state in which nothing can fire any more: R "
+                   "[-Wdeadlock]") != std::string::npos);
+  CHECK(r.out.find("[-Wdead-join]") != std::string::npos);
+  CHECK(run_command(gfec_exe + " --check -Werror " + dir + "/choice.sfc").exit_code == 1);
+  auto quiet = run_command(gfec_exe + " --check -Wno-deadlock -Wno-dead-join -Wno-unreachable-place " + dir + "/choice.sfc");
+  CHECK(quiet.exit_code == 0);
+  CHECK(quiet.out == "");
+}
