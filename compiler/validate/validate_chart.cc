@@ -14,9 +14,10 @@ namespace gfec::validation {
 
 namespace {
 
-/// Functions every engine defines as `<Chart>_<suffix>`, and its place-count constant: a place
-/// with one of these names would give its enum constant the same name.
-const char *const kEngineNames[] = {"init", "run", "activation", "state", "status", "PLACE_COUNT"};
+/// Names every C engine defines as `<Chart>_<suffix>` (its API, counts, hooks and macros): a
+/// place or transition with one of these names would give its enum constant the same name.
+const char *const kEngineNames[] = {"init",    "run",       "activation", "state",       "status",          "PLACE_COUNT",
+                                    "HOOKS",   "CHECKS",    "activated",  "enabled",     "TRANSITION_COUNT"};
 
 void set_period(Context &cx, ChartScope &s) {
   const auto &periods = s.ast.periods;
@@ -35,18 +36,18 @@ void set_period(Context &cx, ChartScope &s) {
   if (!periods.empty() && s.out.period_ms <= 0) s.period_reported = true;
 }
 
-/// Places become enum constants `<Chart>_<Place>`: they must not clash with the engine's own
-/// names or with a global C name.
-void check_generated_name(Context &cx, ChartScope &s, const ast::Name &name) {
+/// Places and transitions become enum constants `<Chart>_<Name>` (§5.2): they must not clash
+/// with the engine's own names or with a global C name.
+void check_generated_name(Context &cx, ChartScope &s, const ast::Name &name, const char *what) {
   std::string generated = s.out.name + "_" + name.text;
   for (const char *reserved : kEngineNames) {
     if (name.text != reserved) continue;
-    cx.diag.error(name.range, "reserved-name", fmt::format("{} '{}' would generate '{}', which the engine already defines",
-                                                           s.place_word(), name.text, generated));
+    cx.diag.error(name.range, "reserved-name",
+                  fmt::format("{} '{}' would generate '{}', which the engine already defines", what, name.text, generated));
     return;
   }
   if (const Symbol *clash = cx.c_names.find(generated)) {
-    cx.diag.error(name.range, "reserved-name", fmt::format("{} '{}' would generate '{}', the name of {}", s.place_word(),
+    cx.diag.error(name.range, "reserved-name", fmt::format("{} '{}' would generate '{}', the name of {}", what,
                                                            name.text, generated, with_article(clash->kind)))
         .note(clash->range, fmt::format("'{}' declared here", generated));
   }
@@ -61,7 +62,8 @@ void declare_place(Context &cx, ChartScope &s, const ast::Place &p, int index) {
                                                          : model::Terminal::None;
   out.range = p.range;
   s.out.places.push_back(std::move(out));
-  if (s.names.declare(p.name, s.is_fsm() ? Sym::State : Sym::Place, index, cx.diag)) check_generated_name(cx, s, p.name);
+  if (s.names.declare(p.name, s.is_fsm() ? Sym::State : Sym::Place, index, cx.diag))
+    check_generated_name(cx, s, p.name, s.place_word());
 }
 
 void declare_value(Context &cx, ChartScope &s, const ast::ValueDecl &v) {
@@ -99,8 +101,11 @@ void declare_names(Context &cx, ChartScope &s) {
   for (const auto &v : a.values) decls.push_back({v.range.begin, [&cx, &s, &v] { declare_value(cx, s, v); }});
   for (std::size_t i = 0; i < a.transitions.size(); ++i) {
     if (!a.transitions[i].name) continue;
-    decls.push_back({a.transitions[i].range.begin,
-                     [&, i] { s.names.declare(*a.transitions[i].name, Sym::Transition, static_cast<int>(i), cx.diag); }});
+    decls.push_back({a.transitions[i].range.begin, [&, i] {
+                       const ast::Name &name = *a.transitions[i].name;
+                       if (s.names.declare(name, Sym::Transition, static_cast<int>(i), cx.diag))
+                         check_generated_name(cx, s, name, "transition");
+                     }});
   }
   std::stable_sort(decls.begin(), decls.end(), [](const auto &x, const auto &y) { return x.first < y.first; });
   for (auto &d : decls) d.second();

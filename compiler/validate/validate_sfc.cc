@@ -57,18 +57,29 @@ void resolve_transitions(Context &cx, ChartScope &s) {
 
 /// The places some activation can reach, treating every condition as free except a constant
 /// `false`: a place is reachable if a live transition outputs it from reachable inputs.
+/// A worklist, so the cost is linear in the chart whatever the order of its declarations.
 std::vector<bool> reachable_places(const model::Chart &c, const std::vector<bool> &live) {
   std::vector<bool> reach(c.places.size());
-  for (std::size_t p = 0; p < c.places.size(); ++p) reach[p] = c.places[p].initial;
-  for (bool changed = true; changed;) {
-    changed = false;
-    for (std::size_t t = 0; t < c.transitions.size(); ++t) {
-      bool open = live[t];
-      for (int p : c.transitions[t].inputs) open = open && reach[p];
-      if (!open) continue;
-      for (int q : c.transitions[t].outputs)
-        if (!reach[q]) reach[q] = changed = true;
-    }
+  std::vector<std::vector<std::size_t>> consumers(c.places.size());
+  std::vector<std::size_t> missing(c.transitions.size());  // inputs not reached yet
+  for (std::size_t t = 0; t < c.transitions.size(); ++t) {
+    missing[t] = c.transitions[t].inputs.size();
+    for (int p : c.transitions[t].inputs) consumers[static_cast<std::size_t>(p)].push_back(t);
+  }
+  std::vector<std::size_t> work;
+  auto reached = [&](std::size_t p) {
+    if (reach[p]) return;
+    reach[p] = true;
+    work.push_back(p);
+  };
+  for (std::size_t p = 0; p < c.places.size(); ++p)
+    if (c.places[p].initial) reached(p);
+  while (!work.empty()) {
+    std::size_t p = work.back();
+    work.pop_back();
+    for (std::size_t t : consumers[p])
+      if (--missing[t] == 0 && live[t])
+        for (int q : c.transitions[t].outputs) reached(static_cast<std::size_t>(q));
   }
   return reach;
 }
@@ -103,19 +114,31 @@ void warn_unreachable(Context &cx, ChartScope &s) {
       break;
     }
   }
-  // Conflicts (§5.1): declaration order decides; worth a look when a condition can vary.
+  // Conflicts (§5.1): declaration order decides; worth a look when a condition can vary. A
+  // transition is reported once, against the first earlier live transition that shares an input
+  // (and is not, like it, constant). Per place, the first such transition of either kind is kept,
+  // so the check is linear in the chart rather than quadratic in its transitions.
+  const std::size_t none = c.transitions.size();
+  std::vector<std::size_t> first_any(c.places.size(), none), first_varying(c.places.size(), none);
   for (std::size_t j = 0; j < c.transitions.size(); ++j) {
-    for (std::size_t i = 0; i < j && !dead[j]; ++i) {
-      if (dead[i] || (constant[i] && constant[j])) continue;
-      const auto &first = c.transitions[i], &second = c.transitions[j];
+    if (dead[j]) continue;
+    const auto &second = c.transitions[j];
+    std::size_t i = none;
+    for (int p : second.inputs)
+      i = std::min(i, constant[j] ? first_varying[static_cast<std::size_t>(p)] : first_any[static_cast<std::size_t>(p)]);
+    if (i != none) {
+      const auto &first = c.transitions[i];
       auto shared = std::find_first_of(second.inputs.begin(), second.inputs.end(), first.inputs.begin(), first.inputs.end());
-      if (shared == second.inputs.end()) continue;
       cx.diag.warning(Warning::Conflict, where(s.ast.transitions[j]),
                       fmt::format("transition '{}' competes with '{}' for place '{}'", second.name, first.name,
                                   c.places[*shared].name))
           .note(where(s.ast.transitions[i]),
                 fmt::format("'{}' is declared first: when both can fire, it takes the activation", first.name));
-      break;
+    }
+    for (int p : second.inputs) {
+      auto q = static_cast<std::size_t>(p);
+      if (first_any[q] == none) first_any[q] = j;
+      if (!constant[j] && first_varying[q] == none) first_varying[q] = j;
     }
   }
 }

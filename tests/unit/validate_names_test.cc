@@ -308,6 +308,7 @@ sfc Left {
   place run;
   place PLACE_COUNT;
   place Stopped;
+  enabled: FW -> Stopped;
 }
 )--"}});
   CHECK(r.text() == R"--(t.sfc:5:17: error: place 'FW' would generate 'Left_FW', the name of a function [reserved-name]
@@ -325,6 +326,9 @@ t.sfc:7:9: error: place 'run' would generate 'Left_run', which the engine alread
 t.sfc:8:9: error: place 'PLACE_COUNT' would generate 'Left_PLACE_COUNT', which the engine already defines [reserved-name]
    place PLACE_COUNT;
          ^~~~~~~~~~~
+t.sfc:10:3: error: transition 'enabled' would generate 'Left_enabled', which the engine already defines [reserved-name]
+   enabled: FW -> Stopped;
+   ^~~~~~~
 )--");
 }
 
