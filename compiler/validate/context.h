@@ -64,6 +64,8 @@ struct Context {
 
   /// The chart being validated: its constants fold in its scope.
   ChartScope *chart = nullptr;
+  /// Constants being folded, one inside the other's initialiser.
+  int const_depth = 0;
   /// Unknown names at file level, each reported once.
   std::set<std::string> file_unknown;
 

@@ -212,6 +212,14 @@ const model::Expr *fold_const(Context &cx, int index) {
   // A chart's constants are only visible inside that chart, so it is the one being validated.
   ChartScope *chart = c.chart >= 0 ? cx.chart : nullptr;
   if (c.chart >= 0 && (!chart || chart->index != c.chart)) return nullptr;
+  // Folding recurses through the constants an initialiser reads: bound it, never the stack.
+  if (cx.const_depth >= kMaxConstDepth) {
+    cx.diag.error(src.decl->name.range, "not-constant",
+                  fmt::format("constant '{}' is defined through more than {} other constants", c.name, kMaxConstDepth));
+    src.state = State::Failed;
+    return nullptr;
+  }
+  ++cx.const_depth;
   src.state = State::Busy;
   std::size_t errors = cx.diag.error_count();
   ExprScope scope{cx, chart, true};
@@ -221,6 +229,7 @@ const model::Expr *fold_const(Context &cx, int index) {
     if (!literal && cx.diag.error_count() == errors)
       cx.diag.error(e->range, "not-constant", fmt::format("initializer of '{}' is not a constant expression", c.name));
   }
+  --cx.const_depth;
   if (src.state == State::Failed) return nullptr;  // a cycle through it was reported meanwhile
   src.state = literal ? State::Done : State::Failed;
   if (!literal) return nullptr;

@@ -30,6 +30,9 @@ std::optional<Value> evaluate(const model::Expr &e, const model::Model &model, D
 std::optional<model::Expr> to_literal(const Value &v, model::Type to, SourceRange range, Diagnostics &diag,
                                       const model::Expr *spelling = nullptr);
 
+/// How many constants deep an initialiser may read before folding gives up.
+constexpr int kMaxConstDepth = 1000;
+
 /// Folds constant `index` of the model (on first use, in its own scope) and returns its
 /// literal, or null if its declaration has an error (reported once, where it is).
 const model::Expr *fold_const(Context &cx, int index);

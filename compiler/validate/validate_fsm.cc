@@ -112,13 +112,21 @@ void check_connected(Context &cx, ChartScope &s, int initial) {
 void warn_unreachable(Context &cx, ChartScope &s, int initial) {
   const model::Chart &c = s.out;
   std::vector<bool> live, reach(c.places.size());
-  for (const auto &t : c.transitions) live.push_back(constant_condition(t.condition, cx.model) != false);
+  std::vector<std::vector<int>> next(c.places.size());  // a search, linear in the machine
+  for (const auto &t : c.transitions) {
+    live.push_back(constant_condition(t.condition, cx.model) != false);
+    if (live.back()) next[static_cast<std::size_t>(t.inputs[0])].push_back(t.outputs[0]);
+  }
+  std::vector<int> work{initial};
   reach[initial] = true;
-  for (bool changed = true; changed;) {
-    changed = false;
-    for (std::size_t t = 0; t < c.transitions.size(); ++t)
-      if (live[t] && reach[c.transitions[t].inputs[0]] && !reach[c.transitions[t].outputs[0]])
-        reach[c.transitions[t].outputs[0]] = changed = true;
+  while (!work.empty()) {
+    int p = work.back();
+    work.pop_back();
+    for (int q : next[static_cast<std::size_t>(p)])
+      if (!reach[q]) {
+        reach[q] = true;
+        work.push_back(q);
+      }
   }
   for (std::size_t p = 0; p < c.places.size(); ++p)
     if (!reach[p])

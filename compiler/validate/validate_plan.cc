@@ -219,29 +219,38 @@ void warn_unreachable(Context &cx, PlanScope &s) {
 
 struct PlanGraph {
   Context &cx;
-  std::vector<int> color;  ///< 0 unvisited, 1 on the stack, 2 done
-  std::vector<std::pair<int, int>> stack;  ///< (plan, actor through which the next plan is used)
+  std::vector<int> color;  ///< 0 unvisited, 1 on the path, 2 done
+  /// The path being explored: (plan, its next actor to look at). An explicit stack, so a long
+  /// chain of sub-plans cannot overflow the real one.
+  std::vector<std::pair<int, int>> stack;
 
-  void visit(int plan) {
-    color[plan] = 1;
-    const auto &actors = cx.model.plans[plan].actors;
-    for (std::size_t a = 0; a < actors.size(); ++a) {
-      int sub = actors[a].subplan;
+  void visit(int root) {
+    color[root] = 1;
+    stack.push_back({root, 0});
+    while (!stack.empty()) {
+      auto &[plan, next] = stack.back();
+      const auto &actors = cx.model.plans[plan].actors;
+      if (next == static_cast<int>(actors.size())) {
+        color[plan] = 2;
+        stack.pop_back();
+        continue;
+      }
+      int sub = actors[next++].subplan;
       if (sub < 0) continue;
-      stack.push_back({plan, static_cast<int>(a)});
       if (color[sub] == 1) report(sub);
-      else if (color[sub] == 0) visit(sub);
-      stack.pop_back();
+      if (color[sub] != 0) continue;
+      color[sub] = 1;
+      stack.push_back({sub, 0});
     }
-    color[plan] = 2;
   }
 
-  /// `plan` is on the stack: the stack from it to the top is the chain that contains it.
+  /// `plan` is on the path: the path from it to the top is the chain that contains it (each
+  /// entry's actor just before `next` is the one that uses the following plan).
   void report(int plan) {
     auto &d = cx.diag.error(cx.plans[plan]->name.range, "recursive-plan", fmt::format("plan '{}' contains itself", cx.model.plans[plan].name));
     auto first = std::find_if(stack.begin(), stack.end(), [&](const auto &e) { return e.first == plan; });
     for (auto it = first; it != stack.end(); ++it) {
-      const ast::ActorUse &a = cx.plans[it->first]->actors[it->second];
+      const ast::ActorUse &a = cx.plans[it->first]->actors[it->second - 1];
       d.note(a.name.range, fmt::format("'{}' uses '{}' as actor '{}'", cx.model.plans[it->first].name,
                                        a.template_name.text, a.name.text));
     }
