@@ -7,6 +7,7 @@ out=build/demo
 mkdir -p "$out"
 build/gfec samples/line_follower.sfc -o "$out/line_follower.c"
 build/gfec samples/cleanup.fsm -o "$out/cleanup.c"
+build/gfec samples/work_cell.sfc -o "$out/work_cell.c"
 build/gfec samples/wall_follow.plan -o "$out/wall_follow.cpp"
 echo "gfec compiled the samples into $out/: $(cd "$out" && ls | tr '\n' ' ')"
 if [ -x build/carbot-sim ]; then

@@ -113,7 +113,7 @@ TEST_CASE("gfec --check: every file, nothing written, exit 1 on any error") {
 
 TEST_CASE("gfec: the samples compile") {
   std::string dir = scratch_dir("driver-samples");
-  for (const char *chart : {"line_follower.sfc", "cleanup.fsm"}) {
+  for (const char *chart : {"line_follower.sfc", "cleanup.fsm", "work_cell.sfc"}) {
     auto r = run_command(gfec_exe + " " + samples + "/" + chart + " -o " + dir + "/" + chart + ".c");
     INFO(chart << ": " << r.out);
     CHECK(r.exit_code == 0);
