@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# Runs every benchmark of docs/performance.md and prints its tables. Measures; never fails on time.
+#
+#   scripts/bench.sh [--quick] [SECTION...]     sections: compiler engine size sim plan (default: all)
+#
+# Builds a Release tree in build-bench/ (or $GFEC_BENCH_BUILD_DIR) with the targets the
+# benchmarks need: gfec, gfec_bench_gen, afp_step_bench, sim_rtf. --quick uses smaller sizes
+# (compiler up to 100000 places, fewer ticks) for a run of about a minute.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=${GFEC_BENCH_BUILD_DIR:-$root/build-bench}
+quick=0
+sections=()
+for arg in "$@"; do
+  case $arg in
+    --quick) quick=1 ;;
+    compiler | engine | size | sim | plan) sections+=("$arg") ;;
+    *) echo "usage: scripts/bench.sh [--quick] [compiler|engine|size|sim|plan]..." >&2; exit 2 ;;
+  esac
+done
+[[ ${#sections[@]} -gt 0 ]] || sections=(compiler engine size sim plan)
+
+if [[ ! -f $build/build.ninja ]]; then
+  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release > /dev/null
+fi
+cmake --build "$build" -j 2 --target bench_tools > /dev/null
+gfec=$build/gfec
+gen=$build/tests/bench/gfec_bench_gen
+
+echo "== machine: $(uname -srm); $(nproc) cores; $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
+echo "== gfec $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo '?'), $(date -u +%Y-%m-%d)"
+for section in "${sections[@]}"; do
+  echo
+  case $section in
+    compiler)
+      echo "== (a) compiler: time, lines per second, peak memory"
+      if ((quick)); then
+        "$root/tests/bench/bench_compiler.sh" "$gfec" "$gen" 1000 10000 100000
+      else
+        "$root/tests/bench/bench_compiler.sh" "$gfec" "$gen"
+      fi ;;
+    engine)
+      echo "== (b) engine: instructions and nanoseconds per tick"
+      if ((quick)); then export BENCH_TICKS=200000; fi
+      "$root/tests/bench/bench_engine.sh" "$gfec" "$gen" ;;
+    size)
+      echo "== (c) engine size"
+      "$root/tests/bench/bench_size.sh" "$gfec" "$gen" ;;
+    sim)
+      echo "== (d) simulator real-time factor"
+      if [[ -x $build/sim_rtf ]]; then
+        "$build/sim_rtf" --seconds $((quick ? 10 : 60))
+      else
+        echo "sim_rtf not built (GFEC_BUILD_SIM=OFF?)"
+      fi ;;
+    plan)
+      echo "== (e) plan runtime: overhead per executor step"
+      "$build/tests/bench/afp_step_bench" $((quick ? 200000 : 2000000)) ;;
+  esac
+done

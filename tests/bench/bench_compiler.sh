@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# The compiler on generated charts: a ring of N places (gfec_bench_gen chart ring N), each place
+# and transition calling an interface function. For each size: `gfec --check` and a full compile
+# to C, wall time, chart lines per second and peak memory (GNU time's maximum RSS), and how the
+# time grew against the size ten times smaller (linear: 10x; the target is at most 12x).
+#
+#   tests/bench/bench_compiler.sh GFEC GEN [SIZES...]     (default sizes: 1000 10000 100000 1000000)
+#
+# A last row compiles the 100000 ring declared backwards: no pass may rely on declaration
+# order to stay linear. Measures; never fails on time.
+set -euo pipefail
+gfec=$1 gen=$2
+shift 2
+sizes=("$@")
+[[ ${#sizes[@]} -gt 0 ]] || sizes=(1000 10000 100000 1000000)
+work=$(mktemp -d "${TMPDIR:-/tmp}/gfec-bench-compiler.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+
+# measure OUT_VAR RUNS command...: runs the command RUNS times, sets "<seconds> <peak KB>" of
+# the fastest run (the cores are shared: the fastest run is the least disturbed one).
+measure() {
+  local var=$1 runs=$2 best="" i
+  shift 2
+  for ((i = 0; i < runs; ++i)); do
+    /usr/bin/time -f "%e %M" -o "$work/time" "$@" > /dev/null 2> "$work/err" || {
+      echo "bench_compiler: failed: $*" >&2
+      cat "$work/err" >&2
+      exit 1
+    }
+    local this
+    this=$(tail -1 "$work/time")
+    if [[ -z $best ]] || awk -v a="${this% *}" -v b="${best% *}" 'BEGIN { exit !(a < b) }'; then best=$this; fi
+  done
+  printf -v "$var" '%s' "$best"
+}
+
+row() {  # label file lines
+  local label=$1 chart=$2 lines=$3 check compile runs=1
+  ((lines > 300000)) || runs=3
+  measure check $runs "$gfec" --check "$chart"
+  measure compile $runs "$gfec" "$chart" -o "$work/engine.c"
+  read -r ct cm <<< "$check"
+  read -r ft fm <<< "$compile"
+  local out_mb
+  out_mb=$(du -cm "$work/engine.c" "$work/engine.h" | tail -1 | cut -f1)
+  local growth="-"
+  if [[ -n ${prev_time:-} ]]; then growth=$(awk -v a="$ft" -v b="$prev_time" 'BEGIN { printf((b > 0) ? "%.1fx" : "-", a / b) }'); fi
+  printf "%-18s %10s %9ss %8s MB %9ss %8s MB %12s %8s MB %8s\n" "$label" "$lines" "$ct" "$((cm / 1024))" "$ft" \
+    "$((fm / 1024))" "$(awk -v l="$lines" -v t="$ft" 'BEGIN { printf("%.0f", (t > 0) ? l / t : 0) }')" "$out_mb" "$growth"
+  prev_time=$ft
+}
+
+echo "compiler: $("$gfec" --version | head -1); charts from gfec_bench_gen (ring of N places)"
+printf "%-18s %10s %10s %11s %10s %11s %12s %11s %8s\n" "chart" "lines" "check" "check RSS" "compile" "compile RSS" \
+  "lines/s" "C output" "time x"
+for n in "${sizes[@]}"; do
+  "$gen" chart ring "$n" > "$work/ring.sfc"
+  row "ring $n" "$work/ring.sfc" "$(wc -l < "$work/ring.sfc")"
+done
+if [[ " ${sizes[*]} " == *" 100000 "* ]]; then
+  prev_time=
+  "$gen" chart ring 100000 --backwards > "$work/ring.sfc"
+  row "ring 100000 bwd" "$work/ring.sfc" "$(wc -l < "$work/ring.sfc")"
+fi
+echo "(time x: compile time over that of the size ten times smaller; linear is 10x, the target at most 12x)"
