@@ -74,6 +74,26 @@ struct Context {
   }
 };
 
+/// Watches for errors from a point on: a chart or plan with errors of its own gets no warnings,
+/// which an error (an unknown place, say) would turn into guesses. Warnings that -Werror made
+/// errors do not count, and neither does anything once the error limit dropped errors.
+class ErrorWatch {
+public:
+  explicit ErrorWatch(const Diagnostics &diag) : diag_(diag), first_(diag.all().size()) {}
+  bool clean() const {
+    if (diag_.limit_reached()) return false;
+    for (std::size_t i = first_; i < diag_.all().size(); ++i) {
+      const Diagnostic &d = diag_.all()[i];
+      if (d.severity == Severity::Error && d.check.rfind("-W", 0) != 0) return false;
+    }
+    return true;
+  }
+
+private:
+  const Diagnostics &diag_;
+  std::size_t first_;
+};
+
 /// "'int'": a type as messages quote it.
 std::string quoted(model::Type t);
 

@@ -23,11 +23,10 @@ void declare_chart(Context &cx, const ast::Chart &chart);
 void validate_chart(Context &cx, int index);
 
 /// validate_sfc.cc and validate_fsm.cc: the rules of each kind, run by validate_chart once the
-/// chart's names, bodies and conditions are lowered. `errors_before` is the error count when
-/// the chart's validation began: warnings are given only for charts without errors, since an
-/// error (an unknown place, say) would make them guesses.
-void check_sfc(Context &cx, ChartScope &chart, std::size_t errors_before);
-void check_fsm(Context &cx, ChartScope &chart, std::size_t errors_before);
+/// chart's names, bodies and conditions are lowered. `watch` began with the chart: its
+/// warnings are given only if it has no errors.
+void check_sfc(Context &cx, ChartScope &chart, const ErrorWatch &watch);
+void check_fsm(Context &cx, ChartScope &chart, const ErrorWatch &watch);
 
 /// validate_toolbox.cc: a toolbox and its templates, checked and lowered at once (they use no
 /// other name).

@@ -187,7 +187,7 @@ void declare_chart(Context &cx, const ast::Chart &chart) {
 }
 
 void validate_chart(Context &cx, int index) {
-  std::size_t errors_before = cx.diag.error_count();
+  ErrorWatch watch(cx.diag);
   ChartScope scope(*cx.charts[index], cx.model.charts[index], index);
   cx.chart = &scope;
   set_period(cx, scope);
@@ -195,8 +195,8 @@ void validate_chart(Context &cx, int index) {
   name_transitions(cx, scope);
   lower_values(cx, scope);
   lower_bodies(cx, scope);
-  if (scope.is_fsm()) check_fsm(cx, scope, errors_before);
-  else check_sfc(cx, scope, errors_before);
+  if (scope.is_fsm()) check_fsm(cx, scope, watch);
+  else check_sfc(cx, scope, watch);
   scope.out.functions.assign(scope.functions.begin(), scope.functions.end());
   scope.out.consts.assign(scope.consts.begin(), scope.consts.end());
   cx.chart = nullptr;

@@ -146,7 +146,7 @@ void warn_unreachable(Context &cx, ChartScope &s, int initial) {
 
 } // namespace
 
-void check_fsm(Context &cx, ChartScope &s, std::size_t errors_before) {
+void check_fsm(Context &cx, ChartScope &s, const ErrorWatch &watch) {
   int initial = -1;
   for (std::size_t i = 0; i < s.ast.places.size(); ++i) {
     check_state(cx, s, s.ast.places[i], s.out.places[i]);
@@ -157,7 +157,7 @@ void check_fsm(Context &cx, ChartScope &s, std::size_t errors_before) {
         .note("mark the state it starts in with 'initial state'");
   bool resolved = resolve_transitions(cx, s);
   if (initial >= 0 && resolved) check_connected(cx, s, initial);
-  if (initial >= 0 && cx.diag.error_count() == errors_before) warn_unreachable(cx, s, initial);
+  if (initial >= 0 && watch.clean()) warn_unreachable(cx, s, initial);
 }
 
 } // namespace gfec::validation

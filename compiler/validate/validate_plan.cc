@@ -271,7 +271,7 @@ void declare_plan(Context &cx, const ast::Plan &plan) {
 }
 
 void validate_plan(Context &cx, int index) {
-  std::size_t errors_before = cx.diag.error_count();
+  ErrorWatch watch(cx.diag);
   PlanScope s(*cx.plans[index], cx.model.plans[index]);
   std::vector<int> config_index = lower_config_types(cx, s);
   declare_members(cx, s, config_index);
@@ -279,7 +279,7 @@ void validate_plan(Context &cx, int index) {
   set_start(cx, s);
   lower_members(cx, s);
   s.out.toolboxes.assign(s.toolboxes.begin(), s.toolboxes.end());
-  if (cx.diag.error_count() == errors_before) warn_unreachable(cx, s);
+  if (watch.clean()) warn_unreachable(cx, s);
 }
 
 void check_plan_recursion(Context &cx) {

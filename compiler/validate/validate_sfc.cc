@@ -145,7 +145,7 @@ void warn_unreachable(Context &cx, ChartScope &s) {
 
 } // namespace
 
-void check_sfc(Context &cx, ChartScope &s, std::size_t errors_before) {
+void check_sfc(Context &cx, ChartScope &s, const ErrorWatch &watch) {
   bool initial = false;
   for (const ast::Place &p : s.ast.places) {
     check_keywords(cx, p);
@@ -155,7 +155,7 @@ void check_sfc(Context &cx, ChartScope &s, std::size_t errors_before) {
     cx.diag.error(s.ast.name.range, "initial-state", fmt::format("sfc '{}' has no initial place", s.out.name))
         .note("mark the places active at start with 'initial place'");
   resolve_transitions(cx, s);
-  if (cx.diag.error_count() == errors_before) warn_unreachable(cx, s);
+  if (watch.clean()) warn_unreachable(cx, s);
 }
 
 } // namespace gfec::validation

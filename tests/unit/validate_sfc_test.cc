@@ -290,3 +290,15 @@ t.sfc:3:21: warning: verbatim code is copied unchecked: gfec cannot check it [-W
   CHECK(Run({{"t.sfc", "%{ x %}\nsfc S { initial place A { %{ y; %} } }\n"}}).text() == "");
 }
 
+TEST_CASE("validate: -Werror on verbatim code does not hide a chart's other warnings", "[validate]") {
+  WarningOptions w = all_warnings();
+  w.as_errors = true;
+  Run r({{"t.sfc", "sfc S { initial place A { %{ x(); %} } place B; }\n"}}, w);
+  CHECK(r.text() == R"--(t.sfc:1:27: error: verbatim code is copied unchecked: gfec cannot check it [-Wverbatim]
+ sfc S { initial place A { %{ x(); %} } place B; }
+                           ^~~~~~~~~~
+t.sfc:1:46: error: place 'B' can never become active [-Wunreachable-place]
+ sfc S { initial place A { %{ x(); %} } place B; }
+                                              ^
+)--");
+}
