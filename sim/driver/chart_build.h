@@ -37,7 +37,8 @@ BuiltEngine build_engine(const Options& options, const std::string& dir);
 
 /// The shim's C source for a C engine of `chart` (exposed for tests).
 std::string c_shim(const ChartInfo& chart);
-/// The shim's C++ source for a plan engine: the stepped executor around make_NAME(ee).
-std::string cpp_shim(const ChartInfo& chart);
+/// The shim's C++ source for a plan engine: the stepped executor around make_NAME(ee), declared
+/// by gfec's engine.hpp when `has_header`.
+std::string cpp_shim(const ChartInfo& chart, bool has_header);
 
 }  // namespace carbot::driver

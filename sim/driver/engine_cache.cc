@@ -43,7 +43,7 @@ std::string EngineCache::key(const std::vector<std::string>& command, const std:
     std::error_code ec;
     for (auto it = fs::recursive_directory_iterator(dir, ec); !ec && it != fs::recursive_directory_iterator();
          it.increment(ec))
-      if (it->path().extension() == ".h") headers.push_back(it->path().string());
+      if (it->path().extension() == ".h" || it->path().extension() == ".hpp") headers.push_back(it->path().string());
     std::sort(headers.begin(), headers.end());  // directory order is not stable
     for (const std::string& f : headers) {
       h.add(f);
