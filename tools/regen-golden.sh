@@ -10,7 +10,10 @@
 #   gfec <case>.<ext> --emit=<backend> -o <case>.<backend> $(cat <case>.flags)
 #
 # which writes <case>.<backend> and whatever the back end puts beside it (the C back end also
-# writes <case>.h). <case>.flags, if present, holds extra gfec options for that case. Without
+# writes <case>.h, the cpp back end <case>.hpp). In tests/golden/cpp every toolbox <case>.toolbox
+# also gets its skeleton: gfec <case>.toolbox --emit=toolbox-skeleton -o <case>_toolbox.h (and
+# <case>_toolbox.cpp beside it), which is the header the plans there include.
+# <case>.flags, if present, holds extra gfec options for that case. Without
 # arguments every folder under tests/golden is regenerated; folders whose name is not a back end
 # are skipped. Then read the diff (git diff tests/golden) before committing: that review is
 # the point of golden tests.
@@ -43,14 +46,21 @@ for backend in "${backends[@]}"; do
   fi
   shopt -s nullglob
   inputs=("$dir"/*.sfc "$dir"/*.fsm "$dir"/*.plan)
+  if [[ $backend == cpp ]]; then inputs+=("$dir"/*.toolbox); fi
   shopt -u nullglob
   for input in "${inputs[@]}"; do
     name=$(basename "$input")
     case=${name%.*}
+    emit=$backend
+    output=$case.$backend
+    if [[ $name == *.toolbox ]]; then
+      emit=toolbox-skeleton
+      output=${case}_toolbox.h
+    fi
     flags=()
     if [[ -f $dir/$case.flags ]]; then read -r -a flags < "$dir/$case.flags"; fi
     set +e
-    message=$(cd "$dir" && "$gfec" "$name" --emit="$backend" -o "$case.$backend" ${flags[@]+"${flags[@]}"} 2>&1)
+    message=$(cd "$dir" && "$gfec" "$name" --emit="$emit" -o "$output" ${flags[@]+"${flags[@]}"} 2>&1)
     rc=$?
     set -e
     if [[ $rc -ne 0 ]] && grep -q "unknown back end" <<<"$message"; then
@@ -63,7 +73,7 @@ for backend in "${backends[@]}"; do
       status=1
       continue
     fi
-    echo "regenerated tests/golden/$backend/$case.$backend"
+    echo "regenerated tests/golden/$backend/$output"
   done
 done
 exit $status

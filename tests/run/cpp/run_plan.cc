@@ -1,0 +1,80 @@
+// Runs a generated plan on the stepped executor over a script and logs what happens: the
+// compile-and-run tests of the cpp back end (tests/unit/cpp_backend_run_test.cc). Built with
+//   -DPLAN_HEADER='"wall_follow.hpp"' -DPLAN_FACTORY=make_WallFollow -DPLAN_ENV=Carbot
+// and a scripted toolbox from this folder. The script comes on stdin (scripted_env.h): the
+// first line is read before the start (its `set:` writes configure the plan), each further
+// line is one step of 10 ms. The log: what the trace observer hears, with the plan time in ms,
+// what the toolbox's components print (indented), then the status and every config entry.
+#include PLAN_HEADER
+
+#include <afp/afp.h>
+
+#include <chrono>
+#include <iostream>
+#include <map>
+#include <string>
+
+using namespace std::chrono_literals;
+
+namespace {
+
+long ms(afp::Duration d) { return static_cast<long>(std::chrono::duration_cast<std::chrono::milliseconds>(d).count()); }
+
+struct Log : afp::TraceObserver {
+    void actor_started(const afp::Plan& plan, std::string_view actor, afp::Duration now) override {
+        std::cout << ms(now) << " start " << plan.name() << "." << actor << "\n";
+    }
+    void actor_finished(const afp::Plan& plan, std::string_view actor, int state, afp::Duration now) override {
+        std::cout << ms(now) << " finish " << plan.name() << "." << actor << " state " << state << "\n";
+    }
+    void actor_interrupted(const afp::Plan& plan, std::string_view actor, std::string_view supervisor, int event,
+                           afp::Duration now) override {
+        std::cout << ms(now) << " interrupt " << plan.name() << "." << actor << " by " << supervisor << " event " << event
+                  << "\n";
+    }
+    void component_failed(const afp::Plan& plan, std::string_view component, std::string_view what,
+                          afp::Duration now) override {
+        std::cout << ms(now) << " fail " << plan.name() << "." << component << ": " << what << "\n";
+    }
+    void plan_finished(const afp::Plan& plan, afp::Status status, afp::Duration now) override {
+        std::cout << ms(now) << " end " << plan.name() << " " << afp::to_string(status) << "\n";
+    }
+};
+
+std::string shown(const afp::Value& v) {
+    if (const auto* object = v.get_if<afp::Object>()) {
+        const int* i = object->get<int>();
+        return i ? "object " + std::to_string(*i) : "null";
+    }
+    if (const auto* s = v.get_if<std::string>()) return "\"" + *s + "\"";
+    return afp::convert<std::string>(v);
+}
+
+void apply_writes(afp::Configuration& config, const std::map<std::string, std::string>& writes) {
+    for (const auto& [name, value] : writes) {
+        config.set(name, afp::Value(value));
+        std::cout << "set " << name << "=" << shown(config.value(name)) << "\n";
+    }
+}
+
+}  // namespace
+
+int main() {
+    PLAN_ENV ee;
+    afp::Configuration config;
+    Log log;
+    auto plan = PLAN_FACTORY(ee);
+    afp::SteppedExecutor exec(*plan, config, &log);
+    std::string line;
+    if (std::getline(std::cin, line)) apply_writes(config, ee.next(line));
+    exec.start();
+    while (exec.status() == afp::Status::Running && std::getline(std::cin, line)) {
+        apply_writes(config, ee.next(line));
+        exec.step(10ms);
+    }
+    std::cout << "status " << afp::to_string(exec.status());
+    if (!exec.error().empty()) std::cout << ": " << exec.error();
+    std::cout << "\n";
+    for (const auto& name : config.names()) std::cout << "config " << name << "=" << shown(config.value(name)) << "\n";
+    return 0;
+}
