@@ -73,7 +73,7 @@ void actor_or_supervisor(CodeWriter &w, const model::Template &t, const MemberNa
   std::vector<std::string> todo;
   if (supervisor) {
     w.line("afp::CheckResult {}::check(afp::Context& ctx) {{", cls);
-    todo.push_back(fmt::format("// TODO: look at the robot through {}; return afp::no_event, or {}.", n.env_member,
+    todo.push_back(fmt::format("// TODO: look at the robot through {}; return afp::no_event, or the event: {}.", n.env_member,
                                outcome_list(t)));
   } else {
     w.line("afp::StepResult {}::step(afp::Context& ctx) {{", cls);
