@@ -14,6 +14,11 @@ struct OutputFile {
   std::string contents;
 };
 
+/// The layout of a C engine (docs/c-engine.md, docs/performance.md): GFE's readable form visits
+/// every transition and place each tick; the scalable form visits only what is active. Auto
+/// picks the readable form for small charts and the scalable one above a size.
+enum class EngineForm { Auto, Readable, Scalable };
+
 struct EmitOptions {
   std::string output_path;      ///< the primary output as the user named it (e.g. "engine.c")
   std::string source_name;      ///< the chart file as the user named it, for the header comment
@@ -21,6 +26,7 @@ struct EmitOptions {
   int chart = -1;               ///< index into Model::charts to compile, or -1
   int plan = -1;                ///< index into Model::plans to compile, or -1
   int toolbox = -1;             ///< index into Model::toolboxes (toolbox skeleton), or -1
+  EngineForm engine = EngineForm::Auto;  ///< C back end: `--engine=auto|readable|scalable`
 };
 
 class Backend {

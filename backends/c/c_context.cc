@@ -21,6 +21,7 @@ bool is_reserved(const std::string &word) {
       "_Generic", "_Noreturn", "_Static_assert", "_Thread_local",
       // <stdbool.h>, <assert.h>, <limits.h>, <string.h> as the engine uses them
       "bool", "true", "false", "assert", "uint32_t", "UINT32_MAX", "memcpy", "NULL",
+      "uint8_t", "uint16_t", "UINT8_MAX", "UINT16_MAX",
       // C++
       "alignas", "alignof", "and", "and_eq", "asm", "bitand", "bitor", "catch", "char16_t", "char32_t",
       "char8_t", "class", "compl", "concept", "consteval", "constexpr", "constinit", "const_cast",
@@ -73,6 +74,14 @@ void name_globals(Context &c) {
     globals.claim(*n);
   for (const auto &p : c.chart.places) c.place_const.push_back(globals.take(t + "_" + p.name));
   for (const auto &tr : c.chart.transitions) c.transition_const.push_back(globals.take(t + "_" + tr.name));
+  c.lowest_fn = globals.take(t + "_lowest");
+  c.next_fn = globals.take(t + "_next");
+  c.insert_fn = globals.take(t + "_insert");
+  c.erase_fn = globals.take(t + "_erase");
+  c.sort_fn = globals.take(t + "_sort");
+  c.watched_fn = globals.take(t + "_watched");
+  c.active_levels = globals.take(t + "_ACTIVE_LEVELS");
+  c.candidate_levels = globals.take(t + "_CANDIDATE_LEVELS");
 }
 
 void name_fields(Context &c) {
@@ -82,6 +91,9 @@ void name_fields(Context &c) {
   c.state = fields.take("state");
   c.status = fields.take("status");
   c.started = fields.take("started");
+  c.current = fields.take("current");
+  c.active = fields.take("active");
+  c.candidates = fields.take("candidates");
   for (const auto &p : c.chart.places) c.timer_field.push_back(p.timed ? fields.take("timer_" + p.name) : "");
 }
 
@@ -94,6 +106,10 @@ void name_locals(Context &c) {
   c.before = locals.take("before");
   c.from = locals.take("from");
   c.index = locals.take("p");
+  const std::pair<const char *, std::string *> scalable[] = {
+      {"add_n", &c.add_n}, {"lost", &c.lost}, {"lost_n", &c.lost_n}, {"gained", &c.gained}, {"gained_n", &c.gained_n},
+      {"w", &c.word},      {"bits", &c.bits}, {"i", &c.i},           {"t", &c.t}};
+  for (auto [name, field] : scalable) *field = locals.take(name);
 }
 
 void collect_facts(Context &c) {
@@ -132,6 +148,12 @@ bool Context::needs_snapshot() const {
   return false;
 }
 
+bool Context::any_watched() const {
+  for (int p = 0; p < static_cast<int>(chart.places.size()); ++p)
+    if (watched(p)) return true;
+  return false;
+}
+
 Context make_context(const model::Model &model, const model::Chart &chart, const EmitOptions &options) {
   Context c(model, chart, options);
   c.fsm = chart.kind == model::Chart::Kind::Fsm;
@@ -143,6 +165,9 @@ Context make_context(const model::Model &model, const model::Chart &chart, const
   name_fields(c);
   name_locals(c);
   collect_facts(c);
+  std::vector<bool> watched;
+  for (int p = 0; p < static_cast<int>(chart.places.size()); ++p) watched.push_back(c.watched(p));
+  c.layout = plan_layout(chart, options.engine, std::move(watched));
   return c;
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "backend.h"
+#include "c_layout.h"
 #include "model.h"
 
 #include <string>
@@ -18,6 +19,10 @@ struct Context {
   const model::Chart &chart;
   const EmitOptions &options;
   bool fsm = false;
+  Layout layout;  ///< readable, sequential or sparse (c_layout.h)
+  bool readable() const { return layout.form == Layout::Form::Readable; }
+  bool sequential() const { return layout.form == Layout::Form::Sequential; }
+  bool sparse() const { return layout.form == Layout::Form::Sparse; }
 
   // ------------------------------------------------------------ names in the generated code
   std::string type;         ///< the struct and the prefix of every global name: the chart's name
@@ -32,6 +37,16 @@ struct Context {
   std::string transition_count;             ///< X_TRANSITION_COUNT
   std::vector<std::string> place_const;     ///< X_<place>, by place index
   std::vector<std::string> transition_const;///< X_<transition>, by transition index
+  // The scalable form's file-local helpers (named after the enumerations, so that a place
+  // called `lowest` keeps its constant X_lowest and the helper gives way).
+  std::string lowest_fn;       ///< the number of the lowest bit of a word
+  std::string next_fn;         ///< the next member of a set with summary levels
+  std::string insert_fn;       ///< adds a member
+  std::string erase_fn;        ///< removes a member
+  std::string sort_fn;         ///< sorts a short list of place numbers
+  std::string watched_fn;      ///< whether a place runs exit/entry code or resets a timer
+  std::string active_levels;   ///< where the levels of the active set begin
+  std::string candidate_levels;///< where the levels of the candidate set begin
 
   // Struct fields: chart variables keep their own names; the engine's own fields give way
   // (take a trailing `_`) if a variable already has their name.
@@ -41,6 +56,9 @@ struct Context {
   std::string state;    ///< fsm: the current state
   std::string status;   ///< fsm: 0 running, 1 succeeded, -1 failed
   std::string started;  ///< set by the first tick, when an initial place has an entry block
+  std::string current;  ///< sequential form: the number of the one active place
+  std::string active;   ///< sparse form: the active places as bits with summary levels
+  std::string candidates;  ///< sparse form, not place-driven: the transitions to try this tick
 
   // Locals of the run function. They must not hide an interface function that chart code calls.
   std::string self;    ///< the engine parameter, `m`
@@ -48,6 +66,8 @@ struct Context {
   std::string before;  ///< sfc: the activation vector at the start of the tick
   std::string from;    ///< fsm: the state at the start of the tick
   std::string index;   ///< a loop index
+  // Locals of the scalable form's run function.
+  std::string add_n, lost, lost_n, gained, gained_n, word, bits, i, t;
 
   // ------------------------------------------------------------ what the chart uses
   std::vector<bool> is_input;   ///< by place: some transition consumes its activation
@@ -72,6 +92,10 @@ struct Context {
   /// Some place runs an exit or entry block or resets its timer: the run function compares the
   /// start of the tick with its end (a snapshot of the activation vector, or of the state).
   bool needs_snapshot() const;
+  /// The place's exit or entry code runs, or its timer is reset, when its activation changes.
+  bool watched(int place) const { return runs_exit(place) || runs_entry(place) || resets_timer(place); }
+  /// Some place is watched.
+  bool any_watched() const;
 };
 
 /// Decides every name and fact for compiling `chart`.

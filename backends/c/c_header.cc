@@ -50,6 +50,19 @@ void state_struct(CodeWriter &w, const Context &c) {
   if (c.fsm) {
     rows.emplace_back(fmt::format("int {};", c.state), fmt::format("the current state, a {}_<state>", c.type));
     rows.emplace_back(fmt::format("int {};", c.status), "0 running, 1 succeeded, -1 failed");
+  } else if (c.sequential()) {
+    rows.emplace_back(fmt::format("{} {};", uint_type(c.layout.index_bits), c.current),
+                      fmt::format("the one active place, a {}_<place>", c.type));
+  } else if (c.sparse()) {
+    const Layout &l = c.layout;
+    rows.emplace_back(fmt::format("{} {}[{}];", uint_type(l.counter_bits), c.av, c.place_count),
+                      l.bounded ? fmt::format("activation counter of each place (never above {})", l.bound)
+                                : "activation counter of each place (saturates)");
+    rows.emplace_back(fmt::format("uint32_t {}[{}];", c.active, l.active.words()),
+                      "the active places: bits, and summary levels of them");
+    if (!l.place_driven)
+      rows.emplace_back(fmt::format("uint32_t {}[{}];", c.candidates, l.candidates.words()),
+                        "the transitions to try in a tick (empty between ticks)");
   } else {
     rows.emplace_back(fmt::format("unsigned {}[{}];", c.av, c.place_count), "activation counter of each place");
   }

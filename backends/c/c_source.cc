@@ -13,6 +13,7 @@ namespace {
 
 void includes(CodeWriter &w, const Context &c) {
   directive(w, "#include " + c_string_literal(c.header_file));
+  if (!c.fsm && !c.readable()) return;  // the scalable forms need nothing beyond engine.h's
   // Standard headers only for what this engine uses.
   bool sfc_hooks_snapshot = !c.fsm && !c.needs_snapshot();
   if (c.needs_snapshot() || sfc_hooks_snapshot || c.has_post) w.blank();
@@ -60,6 +61,28 @@ void init(CodeWriter &w, const Context &c) {
         w.line("{} = {};", c.field(c.status),
                terminal == model::Terminal::Success ? 1 : terminal == model::Terminal::Failure ? -1 : 0);
       }
+  } else if (c.sequential()) {
+    for (std::size_t p = 0; p < c.chart.places.size(); ++p)
+      if (c.chart.places[p].initial) w.line("{} = {};", c.field(c.current), c.place_const[p]);
+  } else if (c.sparse()) {
+    // Loops rather than a line per place: a large chart has few initial places.
+    w.line("uint32_t {};", c.index);
+    w.line("for ({0} = 0; {0} < {1}; ++{0}) {{", c.index, c.place_count);
+    w.line("    {}[{}] = 0;", c.field(c.av), c.index);
+    w.line("}");
+    auto clear = [&](const std::string &field, std::uint32_t words) {
+      w.line("for ({0} = 0; {0} < {1}u; ++{0}) {{", c.index, words);
+      w.line("    {}[{}] = 0u;", c.field(field), c.index);
+      w.line("}");
+    };
+    clear(c.active, c.layout.active.words());
+    if (!c.layout.place_driven) clear(c.candidates, c.layout.candidates.words());
+    for (std::size_t p = 0; p < c.chart.places.size(); ++p)
+      if (c.chart.places[p].initial) {
+        w.line("{} = 1;", c.av_of(static_cast<int>(p)));
+        w.line("{}({}, {}, {}u, {});", c.insert_fn, c.field(c.active), c.active_levels, c.layout.active.levels(),
+               c.place_const[p]);
+      }
   } else {
     for (std::size_t p = 0; p < c.chart.places.size(); ++p)
       w.line("{} = {};", c.av_of(static_cast<int>(p)), c.chart.places[p].initial ? 1 : 0);
@@ -82,6 +105,8 @@ void accessors(CodeWriter &w, const Context &c) {
   w.line("{");
   if (c.fsm)
     w.line("    return {} == place ? 1u : 0u;", c.field(c.state));
+  else if (c.sequential())
+    w.line("    return place >= 0 && place < {} && (int){} == place ? 1u : 0u;", c.place_count, c.field(c.current));
   else
     w.line("    return place >= 0 && place < {} ? {}[place] : 0u;", c.place_count, c.field(c.av));
   w.line("}");
@@ -122,12 +147,18 @@ std::string emit_source(const Context &c) {
   includes(w, c);
   verbatims(w, c);
   w.blank();
+  if (c.sparse()) {
+    emit_scalable_helpers(w, c);
+    w.blank();
+  }
   init(w, c);
   w.blank();
   if (c.fsm)
     emit_fsm_run(w, c);
-  else
+  else if (c.readable())
     emit_sfc_run(w, c);
+  else
+    emit_scalable_sfc_run(w, c);
   w.blank();
   accessors(w, c);
   return w.take();

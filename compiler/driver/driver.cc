@@ -143,6 +143,9 @@ int compile(const Options &o, DiagnosticReport &report, std::ostream &out) {
   s.emit.output_path = o.output.empty() ? default_output(input, s.backend) : o.output;
   s.emit.source_name = input;
   s.emit.line_directives = o.line_directives;
+  s.emit.engine = o.engine == "readable"   ? EngineForm::Readable
+                  : o.engine == "scalable" ? EngineForm::Scalable
+                                           : EngineForm::Auto;
   std::vector<OutputFile> outputs;
   try {
     outputs = backend->emit(c.model, s.emit);

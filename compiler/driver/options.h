@@ -27,6 +27,7 @@ struct Options {
   std::string emit;                       ///< --emit=c|cpp|json|dot|svg|toolbox-skeleton; empty: from the file
   std::string chart;                      ///< --chart NAME
   bool line_directives = true;            ///< --no-line-directives turns them off
+  std::string engine = "auto";            ///< --engine=auto|readable|scalable: the C engine's form
   WarningOptions warnings;                ///< -W<name>, -Wno-<name>, -Wall, -Werror
   DiagnosticsFormat diagnostics_format = DiagnosticsFormat::Text;
   std::size_t error_limit = 50;           ///< -fmax-errors=N

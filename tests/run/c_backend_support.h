@@ -244,11 +244,13 @@ private:
 
 /// Runs the C back end on a model: {engine.c, engine.h} for output `output`.
 inline std::vector<OutputFile> emit_c(const model::Model &m, const std::string &output = "engine.c",
-                                      bool line_directives = true, const std::string &source = "hand.sfc") {
+                                      bool line_directives = true, const std::string &source = "hand.sfc",
+                                      EngineForm engine = EngineForm::Auto) {
   EmitOptions o;
   o.output_path = output;
   o.source_name = source;
   o.line_directives = line_directives;
+  o.engine = engine;
   o.chart = 0;
   return make_c_backend()->emit(m, o);
 }
@@ -270,7 +272,7 @@ struct Compiled {
 
 inline std::unique_ptr<Compiled> compile_chart(const std::map<std::string, std::string> &files,
                                                const std::string &main, const std::string &output,
-                                               bool line_directives = true) {
+                                               bool line_directives = true, EngineForm engine = EngineForm::Auto) {
   auto c = std::make_unique<Compiled>();
   MemoryFileSystem mem;
   for (const auto &[path, text] : files) mem.add(path, text);
@@ -283,6 +285,7 @@ inline std::unique_ptr<Compiled> compile_chart(const std::map<std::string, std::
   o.output_path = output;
   o.source_name = main;
   o.line_directives = line_directives;
+  o.engine = engine;
   for (std::size_t i = 0; i < c->model.charts.size(); ++i)
     if (c->model.charts[i].in_main_file && o.chart < 0) o.chart = static_cast<int>(i);
   c->chart = o.chart;

@@ -10,6 +10,7 @@
 #include <catch2/catch.hpp>
 
 #include <cstdio>
+#include <algorithm>
 #include <random>
 
 using namespace cbt;
@@ -157,26 +158,84 @@ std::vector<std::pair<std::string, std::map<std::string, std::string>>> charts()
   return all;
 }
 
+/// A random sfc as chart text: a few places (some initial, some with actions, entry or exit
+/// blocks), transitions with joins, forks, self-loops and conditions over sensing functions,
+/// timers and a variable. Every fourth chart is sequential (one initial place, one place to
+/// one place), which the scalable form compiles to a switch.
+std::string random_sfc(unsigned seed) {
+  std::mt19937 rng(seed);
+  auto pick = [&](int n) { return static_cast<int>(rng() % static_cast<unsigned>(n)); };
+  const bool sequential = seed % 4 == 0;
+  const int places = 2 + pick(8), transitions = 1 + pick(12);
+  std::string s = "interface RandomBot {\n  bool B0();\n  bool B1();\n  bool B2();\n  int Level();\n"
+                  "  void Act(int n);\n  void Beep();\n}\n\nsfc Random {\n  period 10ms;\n  var int n = 0;\n";
+  for (int p = 0; p < places; ++p) {
+    bool initial = sequential ? p == 0 : (p == 0 || pick(4) == 0);
+    std::string body;
+    if (pick(3) == 0) body += " entry { Beep(); }";
+    if (pick(3) == 0) body += " exit { n += 1; }";
+    if (pick(2) == 0) body += fmt::format(" Act({});", p);
+    if (pick(5) == 0) body += " Act(n);";
+    s += fmt::format("  {}place P{} {{{} }}\n", initial ? "initial " : "", p, body);
+  }
+  const char *conditions[] = {"", "B0()", "B1() && !B2()", "Level() > 1", "B2() || Level() == 0", "B0() && B1()"};
+  for (int t = 0; t < transitions; ++t) {
+    auto some = [&](int most) {
+      std::vector<int> list;
+      int n = sequential ? 1 : 1 + pick(most);
+      while (static_cast<int>(list.size()) < n && static_cast<int>(list.size()) < places) {
+        int p = pick(places);
+        if (std::find(list.begin(), list.end(), p) == list.end()) list.push_back(p);
+      }
+      std::string text;
+      for (int p : list) text += (text.empty() ? "P" : ", P") + std::to_string(p);
+      return list.size() == 1 ? text : "(" + text + ")";
+    };
+    std::string in = some(2), out = some(3);
+    std::string when = pick(4) == 0 ? fmt::format("elapsed(P{}) >= {}ms", pick(places), 10 * pick(5))
+                                    : conditions[pick(6)];
+    s += fmt::format("  transition {} -> {}{};\n", in, out, when.empty() ? "" : " when " + when);
+  }
+  return s + "}\n";
+}
+
+/// One chart in every engine form against the interpreter, on `scripts` random scripts.
+void check_forms(const std::string &name, const std::map<std::string, std::string> &files, int scripts) {
+  for (auto form : {EngineForm::Readable, EngineForm::Scalable}) {
+    const char *form_name = form == EngineForm::Readable ? "readable" : "scalable";
+    auto compiled = compile_chart(files, name, "engine.c", true, form);
+    INFO(form_name << " engine of " << name << "\n" << compiled->errors);
+    REQUIRE(!compiled->diag.has_errors());
+    const auto &chart = compiled->the_chart();
+    for (unsigned seed = 1; seed <= static_cast<unsigned>(scripts); ++seed) {
+      auto ticks = random_script(compiled->model, chart, seed * 7919u + static_cast<unsigned>(name.size()), 60);
+      std::string expected = interpreter_log(compiled->model, compiled->chart, ticks);
+      std::string actual = compile_and_run(
+          fmt::format("differential_{}_{}_{}", fs::path(name).stem().string(), form_name, seed), compiled->files,
+          compiled->model, chart, script_text(ticks), "-D" + chart.name + "_HOOKS");
+      INFO("seed " << seed << ", script:\n" << script_text(ticks));
+      CHECK(actual == expected);
+    }
+  }
+}
+
 } // namespace
 
 TEST_CASE("c engine agrees with the reference interpreter tick for tick", "[c_backend][run][differential]") {
   auto all = charts();
   REQUIRE(all.size() >= 6);
   for (const auto &[name, files] : all) {
-    DYNAMIC_SECTION(name) {
-      auto compiled = compile_chart(files, name, "engine.c");
-      INFO(compiled->errors);
-      REQUIRE(!compiled->diag.has_errors());
-      const auto &chart = compiled->the_chart();
-      for (unsigned seed = 1; seed <= 3; ++seed) {
-        auto ticks = random_script(compiled->model, chart, seed * 7919u + static_cast<unsigned>(name.size()), 60);
-        std::string expected = interpreter_log(compiled->model, compiled->chart, ticks);
-        std::string actual =
-            compile_and_run(fmt::format("differential_{}_{}", fs::path(name).stem().string(), seed), compiled->files,
-                            compiled->model, chart, script_text(ticks), "-D" + chart.name + "_HOOKS");
-        INFO("seed " << seed << ", script:\n" << script_text(ticks));
-        CHECK(actual == expected);
-      }
+    DYNAMIC_SECTION(name) { check_forms(name, files, 3); }
+  }
+}
+
+TEST_CASE("c engine: both forms agree with the interpreter on random charts", "[c_backend][run][differential]") {
+  // Fixed seeds; each chart in the readable and the scalable form, against the interpreter.
+  for (unsigned seed = 1; seed <= 24; ++seed) {
+    std::string text = random_sfc(seed);
+    DYNAMIC_SECTION("random chart " << seed) {
+      INFO(text);
+      check_forms(fmt::format("random{}.sfc", seed), {{fmt::format("random{}.sfc", seed), text}}, 1);
     }
   }
 }

@@ -1,7 +1,7 @@
 // Golden tests of the C back end: every chart under tests/golden/c (*.sfc, *.fsm, with the files
 // it imports beside it) goes through the real front end and the back end in memory, and the
 // engine must equal <case>.c and <case>.h byte for byte. <case>.flags holds gfec options for a
-// case (only --no-line-directives matters here). tools/regen-golden.sh c rewrites the expected
+// case (--no-line-directives and --engine= matter here). tools/regen-golden.sh c rewrites the expected
 // files with the real gfec; a reviewer reads the diff (tests/README.md).
 #include "../run/c_backend_support.h"
 
@@ -66,18 +66,28 @@ void check_golden(const std::string &name, const std::string &actual) {
                                 << out.string() << "\naccept (after reading the diff): tools/regen-golden.sh c");
 }
 
-/// The case's gfec options from <case>.flags: whether it wants #line directives.
-bool line_directives_for(const std::string &stem) {
+/// The case's gfec options from <case>.flags: whether it wants #line directives, which form.
+struct CaseFlags {
+  bool line_directives = true;
+  EngineForm engine = EngineForm::Auto;
+};
+CaseFlags flags_for(const std::string &stem) {
+  CaseFlags f;
   fs::path flags = kGoldenDir / (stem + ".flags");
-  if (!fs::exists(flags)) return true;
+  if (!fs::exists(flags)) return f;
   std::istringstream in(read_file(flags));
-  bool lines = true;
   for (std::string flag; in >> flag;) {
-    INFO(flags.string() << ": only --no-line-directives is understood here");
-    REQUIRE(flag == "--no-line-directives");
-    lines = false;
+    INFO(flags.string() << ": only --no-line-directives and --engine=readable|scalable are understood here");
+    if (flag == "--engine=scalable") {
+      f.engine = EngineForm::Scalable;
+    } else if (flag == "--engine=readable") {
+      f.engine = EngineForm::Readable;
+    } else {
+      REQUIRE(flag == "--no-line-directives");
+      f.line_directives = false;
+    }
   }
-  return lines;
+  return f;
 }
 
 } // namespace
@@ -89,7 +99,8 @@ TEST_CASE("c golden: engines equal tests/golden/c byte for byte", "[c_backend][g
   for (const auto &name : names) {
     DYNAMIC_SECTION(name) {
       std::string stem = fs::path(name).stem().string();
-      auto compiled = compile_chart(files, name, stem + ".c", line_directives_for(stem));
+      CaseFlags flags = flags_for(stem);
+      auto compiled = compile_chart(files, name, stem + ".c", flags.line_directives, flags.engine);
       INFO(compiled->errors);
       REQUIRE(!compiled->diag.has_errors());
       REQUIRE(compiled->files.size() == 2);
@@ -103,8 +114,9 @@ TEST_CASE("c golden: engines equal tests/golden/c byte for byte", "[c_backend][g
 TEST_CASE("c golden: the same chart gives byte-identical engines", "[c_backend][golden]") {
   auto files = chart_files();
   for (const auto &name : cases(files)) {
-    auto one = compile_chart(files, name, "engine.c");
-    auto two = compile_chart(files, name, "engine.c");
+    CaseFlags flags = flags_for(fs::path(name).stem().string());
+    auto one = compile_chart(files, name, "engine.c", true, flags.engine);
+    auto two = compile_chart(files, name, "engine.c", true, flags.engine);
     INFO(name << one->errors);
     REQUIRE(!one->diag.has_errors());
     REQUIRE(one->files.size() == two->files.size());

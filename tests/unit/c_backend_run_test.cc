@@ -11,13 +11,22 @@ using namespace cbt;
 namespace {
 
 /// Compiles chart text (with every file it imports) through the real front end and the C back
-/// end, then compiles and runs the engine on `script`: the log (see harness_source()).
+/// end, then compiles and runs the engine on `script`: the log (see harness_source()). Every
+/// chart runs in both engine forms (c_layout.h), which must write the same log.
 std::string run_files(const std::string &test, const std::map<std::string, std::string> &files,
                       const std::string &main, const std::string &script, const std::string &defines = "") {
-  auto compiled = compile_chart(files, main, "engine.c");
-  INFO(compiled->errors);
-  REQUIRE(!compiled->diag.has_errors());
-  return compile_and_run(test, compiled->files, compiled->model, compiled->the_chart(), script, defines);
+  std::string logs[2];
+  const EngineForm forms[2] = {EngineForm::Readable, EngineForm::Scalable};
+  for (int f = 0; f < 2; ++f) {
+    auto compiled = compile_chart(files, main, "engine.c", true, forms[f]);
+    INFO(compiled->errors);
+    REQUIRE(!compiled->diag.has_errors());
+    logs[f] = compile_and_run(test + (f == 0 ? "" : "_scalable"), compiled->files, compiled->model,
+                              compiled->the_chart(), script, defines);
+  }
+  INFO("the scalable engine's log differs from the readable one's");
+  CHECK(logs[1] == logs[0]);
+  return logs[0];
 }
 
 std::string run(const std::string &test, const std::string &chart, const std::string &script,
@@ -409,13 +418,14 @@ TEST_CASE("c engine run: fsm hooks", "[c_backend][run]") {
 
 TEST_CASE("c engine run: several engines side by side share nothing", "[c_backend][run]") {
   fs::path samples = fs::path(GFEC_SOURCE_DIR) / "samples";
-  auto compiled = compile_chart({{"line_follower.sfc", read_file(samples / "line_follower.sfc")},
-                                 {"linebot.iface", read_file(samples / "linebot.iface")}},
-                                "line_follower.sfc", "engine.c");
-  REQUIRE(!compiled->diag.has_errors());
-  fs::path dir = scratch_dir("side_by_side");
-  for (const auto &f : compiled->files) write_file(dir / f.path, f.contents);
-  write_file(dir / "main.c", R"(#include "engine.h"
+  for (auto form : {EngineForm::Readable, EngineForm::Scalable}) {
+    auto compiled = compile_chart({{"line_follower.sfc", read_file(samples / "line_follower.sfc")},
+                                   {"linebot.iface", read_file(samples / "linebot.iface")}},
+                                  "line_follower.sfc", "engine.c", true, form);
+    REQUIRE(!compiled->diag.has_errors());
+    fs::path dir = scratch_dir(form == EngineForm::Readable ? "side_by_side" : "side_by_side_scalable");
+    for (const auto &f : compiled->files) write_file(dir / f.path, f.contents);
+    write_file(dir / "main.c", R"(#include "engine.h"
 #include <stdio.h>
 static bool black = false;
 bool Left_IR_Black(void) { return black; }
@@ -440,12 +450,13 @@ int main(void)
     return 0;
 }
 )");
-  for (const auto &cc : c_compilers()) {
-    auto build = run_command(fmt::format("cd '{}' && {} {} main.c engine.c -o run-{}", dir.string(), cc, kStrictFlags, cc),
-                             dir / "build.log");
-    INFO(build.output);
-    REQUIRE(build.status == 0);
-    auto out = run_command(fmt::format("'{}/run-{}'", dir.string(), cc), dir / "run.log");
-    CHECK(out.output == "a 0 1 b 1 0\nout of range 0 0\n");
+    for (const auto &cc : c_compilers()) {
+      auto build = run_command(fmt::format("cd '{}' && {} {} main.c engine.c -o run-{}", dir.string(), cc, kStrictFlags, cc),
+                               dir / "build.log");
+      INFO(build.output);
+      REQUIRE(build.status == 0);
+      auto out = run_command(fmt::format("'{}/run-{}'", dir.string(), cc), dir / "run.log");
+      CHECK(out.output == "a 0 1 b 1 0\nout of range 0 0\n");
+    }
   }
 }

@@ -1,0 +1,162 @@
+#include "c_layout.h"
+
+#include <algorithm>
+#include <functional>
+
+namespace gfec::c_backend {
+
+namespace {
+
+/// Looks for weights w(p) >= 1 with sum(w of inputs) >= sum(w of outputs) for every transition
+/// (a transition never creates weight, so sum(w * AV) never grows). Starting from w = 1, a
+/// transition short of weight raises its first input by the shortfall, and the transitions
+/// producing into that place are looked at again. A chart that pumps activation (P -> (P, Q))
+/// keeps raising a weight: past a cap, or after a number of raises proportional to the chart,
+/// the search gives up and the chart counts as unbounded. Sound whatever it answers: when it
+/// returns weights, they prove the bound.
+bool find_weights(const model::Chart &c, std::vector<std::uint64_t> &w) {
+  const std::size_t np = c.places.size(), nt = c.transitions.size();
+  constexpr std::uint64_t kCap = std::uint64_t(1) << 32;
+  w.assign(np, 1);
+  std::vector<std::vector<std::size_t>> producers(np);
+  std::size_t arcs = 0;
+  for (std::size_t t = 0; t < nt; ++t) {
+    arcs += c.transitions[t].inputs.size() + c.transitions[t].outputs.size();
+    for (int q : c.transitions[t].outputs) producers[static_cast<std::size_t>(q)].push_back(t);
+  }
+  std::vector<std::size_t> work(nt);
+  std::vector<bool> queued(nt, true);
+  for (std::size_t t = 0; t < nt; ++t) work[t] = nt - 1 - t;  // popped from the back: in order
+  std::size_t budget = 16 * (arcs + nt) + 1000;
+  auto sum = [&](const std::vector<int> &places) {
+    std::uint64_t s = 0;
+    for (int p : places) s += w[static_cast<std::size_t>(p)];
+    return s;
+  };
+  while (!work.empty()) {
+    std::size_t t = work.back();
+    work.pop_back();
+    queued[t] = false;
+    const auto &tr = c.transitions[t];
+    std::uint64_t in = sum(tr.inputs), out = sum(tr.outputs);
+    if (in >= out) continue;
+    if (tr.inputs.empty() || budget-- == 0) return false;
+    auto p = static_cast<std::size_t>(tr.inputs.front());
+    w[p] += out - in;
+    if (w[p] > kCap) return false;
+    for (std::size_t u : producers[p])
+      if (!queued[u]) {
+        queued[u] = true;
+        work.push_back(u);
+      }
+    if (!queued[t]) {  // raising its own input may not be enough (a place both in and out)
+      queued[t] = true;
+      work.push_back(t);
+    }
+  }
+  return true;
+}
+
+void bound_activation(const model::Chart &c, Layout &l) {
+  std::vector<std::uint64_t> w;
+  l.bounded = find_weights(c, w);
+  if (!l.bounded) return;
+  std::uint64_t initial = 0;
+  for (std::size_t p = 0; p < c.places.size(); ++p)
+    if (c.places[p].initial) initial += w[p];
+  l.tokens = initial;  // every weight is at least 1
+  for (std::size_t p = 0; p < c.places.size(); ++p) l.bound = std::max(l.bound, initial / w[p]);
+  if (l.bound > UINT32_MAX) l.bounded = false;
+}
+
+int bits_for(std::uint64_t max) { return max <= UINT8_MAX ? 8 : max <= UINT16_MAX ? 16 : 32; }
+
+/// Owners such that visiting the active places in increasing order, and at each its transitions
+/// in declaration order, tries the transitions in declaration order: the owner of each
+/// transition is one of its inputs, never before the previous transition's owner. A transition
+/// whose owner is not active is not open, so nothing is missed. Greedy: the smallest input that
+/// is not before the last owner leaves the most room for the transitions after it.
+bool choose_owners(const model::Chart &c, std::vector<int> &owner) {
+  owner.clear();
+  int last = 0;
+  bool in_order = true;
+  for (const auto &t : c.transitions) {
+    int best = -1;
+    for (int p : t.inputs)
+      if (p >= last && (best < 0 || p < best)) best = p;
+    if (best < 0) {
+      in_order = false;
+      best = *std::min_element(t.inputs.begin(), t.inputs.end());
+    }
+    owner.push_back(best);
+    last = std::max(last, best);
+  }
+  return in_order;
+}
+
+bool is_sequential(const model::Chart &c) {
+  int initial = 0;
+  for (const auto &p : c.places) initial += p.initial ? 1 : 0;
+  if (initial != 1) return false;
+  for (const auto &t : c.transitions)
+    if (t.inputs.size() != 1 || t.outputs.size() != 1) return false;
+  return true;
+}
+
+void plan_lists(const model::Chart &c, Layout &l) {
+  std::vector<std::size_t> outputs;
+  std::size_t all = 0;
+  for (const auto &t : c.transitions) {
+    outputs.push_back(t.outputs.size());
+    all += t.outputs.size();
+  }
+  l.add_capacity = all;
+  if (l.bounded && l.tokens < outputs.size()) {
+    // Each transition fires at most once a tick and consumes activation present at its start,
+    // so at most `tokens` fire: the most outputs they can have is the `tokens` largest counts.
+    std::sort(outputs.begin(), outputs.end(), std::greater<>());
+    std::size_t most = 0;
+    for (std::size_t i = 0; i < l.tokens; ++i) most += outputs[i];
+    l.add_capacity = most;
+  }
+  std::size_t watched = static_cast<std::size_t>(std::count(l.watched.begin(), l.watched.end(), true));
+  l.watch_capacity = l.bounded ? std::min<std::uint64_t>(watched, l.tokens) : watched;
+}
+
+} // namespace
+
+BitLevels bit_levels(std::size_t n) {
+  // At least two levels, so that the top (one word) always summarises a level below it.
+  BitLevels b;
+  b.from.push_back(0);
+  std::size_t words = std::max<std::size_t>(1, (n + 31) / 32);
+  for (;;) {
+    b.from.push_back(b.from.back() + static_cast<std::uint32_t>(words));
+    if (words == 1 && b.from.size() >= 3) break;
+    words = (words + 31) / 32;
+  }
+  return b;
+}
+
+const char *uint_type(int bits) { return bits == 8 ? "uint8_t" : bits == 16 ? "uint16_t" : "uint32_t"; }
+
+Layout plan_layout(const model::Chart &chart, EngineForm requested, std::vector<bool> watched) {
+  Layout l;
+  l.watched = std::move(watched);
+  bound_activation(chart, l);
+  bool scalable = requested == EngineForm::Scalable ||
+                  (requested == EngineForm::Auto && chart.places.size() > kReadableMaxPlaces);
+  if (!scalable || chart.kind != model::Chart::Kind::Sfc) return l;
+  l.form = is_sequential(chart) ? Layout::Form::Sequential : Layout::Form::Sparse;
+  l.index_bits = bits_for(chart.places.size());
+  if (l.form == Layout::Form::Sequential) return l;
+  l.counter_bits = l.bounded ? bits_for(l.bound) : 32;
+  l.saturate = !l.bounded;
+  l.place_driven = choose_owners(chart, l.owner);
+  l.active = bit_levels(chart.places.size());
+  if (!l.place_driven) l.candidates = bit_levels(chart.transitions.size());
+  plan_lists(chart, l);
+  return l;
+}
+
+} // namespace gfec::c_backend

@@ -1,0 +1,626 @@
+// The scalable form of an sfc's engine (c_layout.h): a tick visits only the active part of the
+// chart, and does exactly what LANGUAGE.md §5.1 says, in the same order as the readable form:
+// transitions in declaration order (conditions only of open ones), produced activation held
+// back until the next tick, exits then entries in declaration order, then the actions of the
+// active places in declaration order. The chart's code is the same readable C; only the
+// bookkeeping around it differs.
+#include "c_emit.h"
+#include "c_expr.h"
+
+#include <fmt/format.h>
+
+namespace gfec::c_backend {
+
+namespace {
+
+/// What both scalable run functions share: sections, blocks, the first tick.
+class ScalableRun {
+public:
+  ScalableRun(CodeWriter &w, const Context &c) : w_(w), c_(c), owned_(c.chart.places.size()) {
+    // Each transition under its owner (the sequential layout: its one input), in declaration
+    // order, so that the writers stay linear in the chart.
+    for (std::size_t t = 0; t < c.chart.transitions.size(); ++t) {
+      int owner = c.sequential() ? c.chart.transitions[t].inputs.front() : c.layout.owner.at(t);
+      owned_.at(static_cast<std::size_t>(owner)).push_back(t);
+    }
+  }
+
+protected:
+  const std::vector<std::size_t> &owned(int place) const { return owned_.at(static_cast<std::size_t>(place)); }
+
+  void section(const std::string &comment) {
+    if (started_) w_.blank();
+    started_ = true;
+    if (!comment.empty()) w_.line(std::string_view(comment));
+  }
+
+  const std::string &constant(int place) const { return c_.place_const.at(static_cast<std::size_t>(place)); }
+  int places() const { return static_cast<int>(c_.chart.places.size()); }
+  bool any_actions() const {
+    for (const auto &p : c_.chart.places)
+      if (!p.action.empty()) return true;
+    return false;
+  }
+
+  /// Step 0: the entry blocks of the initial places, once.
+  void first_tick() {
+    if (!c_.needs_started) return;
+    section("/* First tick: the initial places enter */");
+    w_.line("if (!{}) {{", c_.field(c_.started));
+    w_.indent();
+    w_.line("{} = true;", c_.field(c_.started));
+    for (const auto &p : c_.chart.places)
+      if (p.initial && has_code(p.entry)) {
+        w_.line("/* entry {} */", p.name);
+        emit_statements(w_, c_, *p.entry);
+        w_.line_back();
+      }
+    w_.dedent();
+    w_.line("}");
+  }
+
+  /// `case X_P:` with the chart's statements (and engine code `first` before them), then `break;`.
+  void case_block(int place, const std::vector<model::Stmt> &stmts, const std::string &first = "") {
+    w_.line("case {}:", constant(place));
+    w_.indent();
+    if (!first.empty()) w_.line(std::string_view(first));
+    emit_statements(w_, c_, stmts);
+    w_.line_back();
+    w_.line("break;");
+    w_.dedent();
+  }
+
+  void switch_end() {
+    w_.line("default:");
+    w_.line("    break;");
+    w_.line("}");
+  }
+
+  /// `if (<inputs> && (<condition>)) {` for transition `t`; `inputs`: the counter tests.
+  void transition_test(const model::Transition &t, const std::string &inputs) {
+    std::string test = inputs;
+    if (t.condition) {
+      test += (test.empty() ? "" : " && ") + c_condition(c_, *t.condition);
+      if (c_.model.sources) w_.line_from(*c_.model.sources, t.condition->range);
+    }
+    w_.line("if ({}) {{", test.empty() ? "true" : test);
+    w_.line_back();
+  }
+
+  CodeWriter &w_;
+  const Context &c_;
+  bool started_ = false;
+
+private:
+  std::vector<std::vector<std::size_t>> owned_;
+};
+
+// ------------------------------------------------------------------------------ sequential
+
+/// One place is ever active: the state is its number, and a tick is a switch on it.
+class SequentialRun : public ScalableRun {
+public:
+  using ScalableRun::ScalableRun;
+
+  void emit() {
+    w_.line("void {}_run({} *{})", c_.type, c_.type, c_.self);
+    w_.line("{");
+    w_.indent();
+    declarations();
+    first_tick();
+    count_time();
+    transitions();
+    exits_and_entries();
+    hooks();
+    actions();
+    w_.dedent();
+    w_.line("}");
+  }
+
+private:
+  std::string current() const { return c_.field(c_.current); }
+
+  void declarations() {
+    if (c_.chart.transitions.empty()) {
+      if (!any_actions() && !c_.needs_started && !c_.has_timers) {
+        section("");
+        w_.line("(void){}; /* the chart has neither transitions nor actions */", c_.self);
+      }
+      return;
+    }
+    section("");
+    if (!c_.needs_snapshot()) directive(w_, "#ifdef " + c_.hooks_macro);
+    w_.line("{} {} = {}; /* the active place at the start of the tick */", uint_type(c_.layout.index_bits), c_.from,
+            current());
+    if (!c_.needs_snapshot()) directive(w_, "#endif");
+  }
+
+  void count_time() {
+    if (!c_.has_timers) return;
+    section("/* Count the ticks of the active place, if it has a timer */");
+    w_.line("switch ({}) {{", current());
+    for (int p = 0; p < places(); ++p)
+      if (c_.place(p).timed)
+        w_.line("case {0}: if ({1} < UINT32_MAX) {{ {1}++; }} break;", constant(p), c_.timer_of(p));
+    switch_end();
+  }
+
+  /// The transitions leaving the active place, in declaration order; the first whose condition
+  /// holds fires and the place's activation is gone: no later one is open.
+  void transitions() {
+    if (c_.chart.transitions.empty()) return;
+    section("/* Perform state update: the transitions leaving the active place, in declaration order;");
+    w_.line("   the first whose condition holds takes the activation */");
+    w_.line("switch ({}) {{", current());
+    for (int p = 0; p < places(); ++p) {
+      bool any = false;
+      for (std::size_t i : owned(p)) {
+        const auto &t = c_.chart.transitions[i];
+        if (!any) w_.line("case {}:", constant(p));
+        any = true;
+        w_.indent();
+        w_.line("/* {}: {} */", t.name, transition_label(c_, t));
+        transition_test(t, "");
+        w_.line("    {} = {};", current(), constant(t.outputs.front()));
+        w_.line("    break;");
+        w_.line("}");
+        w_.dedent();
+        if (!t.condition) break;  // it always fires: the transitions after it are never open
+      }
+      if (any) w_.line("    break;");
+    }
+    switch_end();
+  }
+
+  void exits_and_entries() {
+    if (!c_.needs_snapshot()) return;
+    section("/* Leave the place left, then enter the place entered */");
+    w_.line("if ({} != {}) {{", current(), c_.from);
+    w_.indent();
+    bool exits = false;
+    for (int p = 0; p < places(); ++p) exits = exits || c_.runs_exit(p);
+    if (exits) {
+      w_.line("switch ({}) {{", c_.from);
+      for (int p = 0; p < places(); ++p)
+        if (c_.runs_exit(p)) case_block(p, *c_.place(p).exit);
+      switch_end();
+    }
+    bool entries = false;
+    for (int p = 0; p < places(); ++p) entries = entries || c_.runs_entry(p) || c_.resets_timer(p);
+    if (entries) {
+      w_.line("switch ({}) {{", current());
+      for (int p = 0; p < places(); ++p)
+        if (c_.runs_entry(p) || c_.resets_timer(p))
+          case_block(p, c_.runs_entry(p) ? *c_.place(p).entry : std::vector<model::Stmt>{},
+                     c_.resets_timer(p) ? fmt::format("{} = 0;", c_.timer_of(p)) : "");
+      switch_end();
+    }
+    w_.dedent();
+    w_.line("}");
+  }
+
+  void hooks() {
+    if (c_.chart.transitions.empty()) return;
+    section("");
+    directive(w_, "#ifdef " + c_.hooks_macro);
+    w_.line("/* Observation hooks: the place left and the place entered; the transitions leaving it */");
+    w_.line("if ({} != {}) {{", current(), c_.from);
+    w_.indent();
+    w_.line("{}({}, (int){}, false);", c_.activated_fn, c_.self, c_.from);
+    w_.line("{}({}, (int){}, true);", c_.activated_fn, c_.self, current());
+    w_.line("switch ({}) {{", current());
+    for (int p = 0; p < places(); ++p) {
+      std::string calls;
+      for (std::size_t t : owned(p)) calls += fmt::format(" {}({}, {});", c_.enabled_fn, c_.self, c_.transition_const[t]);
+      if (!calls.empty()) w_.line("case {}:{} break;", constant(p), calls);
+    }
+    switch_end();
+    w_.dedent();
+    w_.line("}");
+    directive(w_, "#endif");
+  }
+
+  void actions() {
+    if (!any_actions()) return;
+    section("/* Perform the action of the active place */");
+    w_.line("switch ({}) {{", current());
+    for (int p = 0; p < places(); ++p)
+      if (!c_.place(p).action.empty()) case_block(p, c_.place(p).action);
+    switch_end();
+  }
+};
+
+// ------------------------------------------------------------------------------ sparse
+
+/// Counters, the active places as bits with summary levels, lists of what changed.
+class SparseRun : public ScalableRun {
+public:
+  using ScalableRun::ScalableRun;
+
+  void emit() {
+    w_.line("void {}_run({} *{})", c_.type, c_.type, c_.self);
+    w_.line("{");
+    w_.indent();
+    declarations();
+    first_tick();
+    count_time();
+    if (!l().place_driven) candidates();
+    transitions();
+    commit();
+    exits_and_entries();
+    hooks();
+    actions();
+    w_.dedent();
+    w_.line("}");
+  }
+
+private:
+  const Layout &l() const { return c_.layout; }
+  const char *place_type() const { return uint_type(l().index_bits); }
+  std::string active_set() const {
+    return fmt::format("{}, {}, {}u", c_.field(c_.active), c_.active_levels, l().active.levels());
+  }
+  std::string candidate_set() const {
+    return fmt::format("{}, {}, {}u", c_.field(c_.candidates), c_.candidate_levels, l().candidates.levels());
+  }
+  bool has_transitions() const { return !c_.chart.transitions.empty(); }
+
+  void declarations() {
+    section("");
+    const std::string &i = c_.i;
+    if (has_transitions()) {
+      w_.line("{} {}[{}]; /* the places that activation produced in this tick goes to */", place_type(), c_.add,
+              l().add_capacity);
+      w_.line("uint32_t {} = 0;", c_.add_n);
+      // Only entries below add_n are read; code analysers cannot tell, and one store costs nothing.
+      w_.line("{}[0] = 0; /* only the entries written are read (this says so to code analysers) */", c_.add);
+    }
+    if (has_transitions() && l().watch_capacity > 0) {
+      w_.line("{} {}[{}]; /* watched places whose activation fell to 0 in this tick */", place_type(), c_.lost,
+              l().watch_capacity);
+      w_.line("uint32_t {} = 0;", c_.lost_n);
+      w_.line("{} {}[{}]; /* watched places whose activation rose from 0 */", place_type(), c_.gained,
+              l().watch_capacity);
+      w_.line("uint32_t {} = 0;", c_.gained_n);
+    }
+    if (has_transitions() || any_actions()) w_.line("uint32_t {}, {}; /* a word of a set, its bits */", c_.word, c_.bits);
+    if (has_transitions()) w_.line("uint32_t {}, {};", c_.index, i);
+    directive(w_, "#ifdef " + c_.hooks_macro);
+    w_.line("uint32_t {}[{}]; /* the active places at the start of the tick */", c_.before, l().active.words_at(0));
+    if (!has_transitions()) w_.line("uint32_t {}, {};", c_.index, i);
+    w_.line("for ({0} = 0; {0} < {1}u; ++{0}) {{", i, l().active.words_at(0));
+    w_.line("    {}[{}] = {}[{}];", c_.before, i, c_.field(c_.active), i);
+    w_.line("}");
+    directive(w_, "#endif");
+    if (!has_transitions() && !any_actions() && !c_.needs_started && !c_.has_timers)
+      w_.line("(void){}; /* the chart has neither transitions nor actions */", c_.self);
+  }
+
+  void count_time() {
+    if (!c_.has_timers) return;
+    section("/* Count the ticks of the active places that have a timer */");
+    for (int p = 0; p < places(); ++p)
+      if (c_.place(p).timed) w_.line("if ({0} && {1} < UINT32_MAX) {{ {1}++; }}", c_.av_of(p), c_.timer_of(p));
+  }
+
+  /// `for` over the members of a set, word by word: `bits` holds the members left in word `w`,
+  /// and the switch is on the member's number. The caller writes the cases and closes with
+  /// members_end().
+  void members_begin(const std::string &set, const std::string &words) {
+    const std::string &w = c_.word, &b = c_.bits;
+    w_.line("for ({0} = {1}({2}, 1u, 0u); {0} != UINT32_MAX; {0} = {1}({2}, 1u, {0} + 1u)) {{", w, c_.next_fn, set);
+    w_.indent();
+    w_.line("for ({0} = {1}[{2}]; {0} != 0u; {0} &= {0} - 1u) {{", b, words, w);
+    w_.indent();
+    w_.line("switch (({} << 5) | {}({})) {{", w, c_.lowest_fn, b);
+  }
+  void members_end() {
+    switch_end();
+    w_.dedent();
+    w_.line("}");
+    w_.dedent();
+    w_.line("}");
+  }
+
+  /// Not place-driven: the transitions owned by the active places become candidates, which are
+  /// then tried in declaration order.
+  void candidates() {
+    if (!has_transitions()) return;
+    section("/* The transitions that may be open: those of the active places */");
+    members_begin(active_set(), c_.field(c_.active));
+    for (int p = 0; p < places(); ++p) {
+      std::string marks;
+      for (std::size_t t : owned(p))
+        marks += fmt::format(" {}({}, {});", c_.insert_fn, candidate_set(), c_.transition_const[t]);
+      if (!marks.empty()) w_.line("case {}:{} break;", constant(p), marks);
+    }
+    members_end();
+  }
+
+  /// Step 2, one block per transition as in the readable form. A counter that falls to 0 leaves
+  /// the active set at once: the place has no open transition left this tick.
+  void transition_block(std::size_t index) {
+    const auto &t = c_.chart.transitions[index];
+    w_.line("/* {}: {} */", t.name, transition_label(c_, t));
+    std::string inputs;
+    for (int p : t.inputs) inputs += (inputs.empty() ? "" : " && ") + c_.av_of(p);
+    transition_test(t, inputs);
+    w_.indent();
+    for (int p : t.inputs) {
+      std::string lost = c_.watched(p) ? fmt::format(" {}[{}++] = {};", c_.lost, c_.lost_n, constant(p)) : "";
+      w_.line("if (--{} == 0u) {{ {}({}, 0u, {});{} }}", c_.av_of(p), c_.erase_fn, active_set_args(), constant(p), lost);
+    }
+    for (int q : t.outputs) w_.line("{}[{}++] = {};", c_.add, c_.add_n, constant(q));
+    w_.dedent();
+    w_.line("}");
+  }
+  std::string active_set_args() const {
+    return fmt::format("{}, {}, {}u", c_.field(c_.active), c_.active_levels, l().active.levels());
+  }
+
+  void transitions() {
+    if (!has_transitions()) return;
+    if (l().place_driven) {
+      section("/* Perform state update: the active places in declaration order, at each the transitions it");
+      w_.line("   owns; owners follow the transitions' declaration order, so the transitions are tried in it.");
+      w_.line("   The activation they produce waits in {}[] and cannot be consumed before the next tick */", c_.add);
+      members_begin(active_set(), c_.field(c_.active));
+      for (int p = 0; p < places(); ++p) {
+        bool any = false;
+        for (std::size_t t : owned(p)) {
+          if (!any) w_.line("case {}:", constant(p));
+          any = true;
+          w_.indent();
+          transition_block(t);
+          w_.dedent();
+        }
+        if (any) w_.line("    break;");
+      }
+      members_end();
+      return;
+    }
+    section("/* Perform state update: the candidates in declaration order, each set emptied as it is read.");
+    w_.line("   The activation they produce waits in {}[] and cannot be consumed before the next tick */", c_.add);
+    const std::string &w = c_.word, &b = c_.bits;
+    w_.line("for ({0} = {1}({2}, 1u, 0u); {0} != UINT32_MAX; {0} = {1}({2}, 1u, {0} + 1u)) {{", w, c_.next_fn,
+            candidate_set());
+    w_.indent();
+    w_.line("{} = {}[{}];", b, c_.field(c_.candidates), w);
+    w_.line("{}[{}] = 0u;", c_.field(c_.candidates), w);
+    w_.line("{}({}, 1u, {});", c_.erase_fn, candidate_set(), w);
+    w_.line("for (; {0} != 0u; {0} &= {0} - 1u) {{", b);
+    w_.indent();
+    w_.line("switch (({} << 5) | {}({})) {{", w, c_.lowest_fn, b);
+    for (std::size_t t = 0; t < c_.chart.transitions.size(); ++t) {
+      w_.line("case {}:", c_.transition_const[t]);
+      w_.indent();
+      transition_block(t);
+      w_.line("break;");
+      w_.dedent();
+    }
+    members_end();
+  }
+
+  /// Step 3a: AV := avail + add. A place whose counter rises from 0 joins the active set.
+  void commit() {
+    if (!has_transitions()) return;
+    section("/* Commit the activation produced in this tick */");
+    const std::string &i = c_.i, &p = c_.index;
+    w_.line("for ({0} = 0; {0} < {1}; ++{0}) {{", i, c_.add_n);
+    w_.indent();
+    w_.line("{} = {}[{}];", p, c_.add, i);
+    std::string av = fmt::format("{}[{}]", c_.field(c_.av), p);
+    if (l().saturate) w_.line("if ({} == UINT32_MAX) {{ continue; }} /* saturated: see docs/c-engine.md */", av);
+    w_.line("if ({}++ == 0u) {{", av);
+    w_.line("    {}({}, {});", c_.insert_fn, active_set(), p);
+    if (l().watch_capacity > 0)
+      w_.line("    if ({}({})) {{ {}[{}++] = ({}){}; }}", c_.watched_fn, p, c_.gained, c_.gained_n, place_type(), p);
+    w_.line("}");
+    w_.dedent();
+    w_.line("}");
+  }
+
+  /// Step 3b: all exits, then all entries, each in declaration order. A watched place that was
+  /// active at the start and is gained again must have fallen to 0 on the way: it is in both
+  /// lists, and neither its exit nor its entry runs.
+  void exits_and_entries() {
+    if (!has_transitions() || l().watch_capacity == 0) return;
+    section("/* Places that lost their activation exit, then places that gained it enter */");
+    const std::string &i = c_.i, &j = c_.word;
+    w_.line("{}({}, {});", c_.sort_fn, c_.lost, c_.lost_n);
+    w_.line("{}({}, {});", c_.sort_fn, c_.gained, c_.gained_n);
+    bool exits = false;
+    for (int p = 0; p < places(); ++p) exits = exits || c_.runs_exit(p);
+    if (exits) {
+      w_.line("for ({0} = 0; {0} < {1}; ++{0}) {{", i, c_.lost_n);
+      w_.indent();
+      w_.line("if ({}[{}[{}]] != 0u) {{ continue; }} /* lost and regained: still active */", c_.field(c_.av), c_.lost, i);
+      w_.line("switch ({}[{}]) {{", c_.lost, i);
+      for (int p = 0; p < places(); ++p)
+        if (c_.runs_exit(p)) case_block(p, *c_.place(p).exit);
+      switch_end();
+      w_.dedent();
+      w_.line("}");
+    }
+    w_.line("for ({0} = 0, {1} = 0; {0} < {2}; ++{0}) {{", i, j, c_.gained_n);
+    w_.indent();
+    w_.line("while ({0} < {1} && {2}[{0}] < {3}[{4}]) {{ ++{0}; }}", j, c_.lost_n, c_.lost, c_.gained, i);
+    w_.line("if ({0} < {1} && {2}[{0}] == {3}[{4}]) {{ continue; }} /* lost and regained: no entry, the timer goes on */",
+            j, c_.lost_n, c_.lost, c_.gained, i);
+    w_.line("switch ({}[{}]) {{", c_.gained, i);
+    for (int p = 0; p < places(); ++p)
+      if (c_.runs_entry(p) || c_.resets_timer(p))
+        case_block(p, c_.runs_entry(p) ? *c_.place(p).entry : std::vector<model::Stmt>{},
+                   c_.resets_timer(p) ? fmt::format("{} = 0;", c_.timer_of(p)) : "");
+    switch_end();
+    w_.dedent();
+    w_.line("}");
+  }
+
+  /// The observation hooks, compiled only with -DX_HOOKS: the start of the tick against its
+  /// end, place by place and transition by transition (a hooks build pays for the whole chart).
+  void hooks() {
+    section("");
+    directive(w_, "#ifdef " + c_.hooks_macro);
+    w_.line("/* Observation hooks: places that lost, then gained activation; transitions open from now on */");
+    const std::string &p = c_.index, &b = c_.before;
+    auto was = [&](const std::string &place) { return fmt::format("(({}[{} >> 5] >> ({} & 31u)) & 1u)", b, place, place); };
+    for (bool gained : {false, true}) {
+      w_.line("for ({0} = 0; {0} < {1}; ++{0}) {{", p, c_.place_count);
+      w_.line("    if ({} {} 0u && {}[{}] {} 0u) {{ {}({}, (int){}, {}); }}", was(p), gained ? "==" : "!=",
+              c_.field(c_.av), p, gained ? "!=" : "==", c_.activated_fn, c_.self, p, gained ? "true" : "false");
+      w_.line("}");
+    }
+    for (std::size_t t = 0; t < c_.chart.transitions.size(); ++t) {
+      std::string before, now;
+      for (int q : c_.chart.transitions[t].inputs) {
+        before += (before.empty() ? "" : " && ") + was(constant(q));
+        now += " && " + c_.av_of(q);
+      }
+      w_.line("if (!({}){}) {{ {}({}, {}); }}", before, now, c_.enabled_fn, c_.self, c_.transition_const[t]);
+    }
+    directive(w_, "#endif");
+  }
+
+  /// Step 4: the active places in declaration order, each with actions running them once.
+  void actions() {
+    if (!any_actions()) return;
+    section("/* Perform place actions: the active places in declaration order */");
+    members_begin(active_set(), c_.field(c_.active));
+    for (int p = 0; p < places(); ++p)
+      if (!c_.place(p).action.empty()) case_block(p, c_.place(p).action);
+    members_end();
+  }
+};
+
+/// The file-local functions of the sparse form's sets, before _init.
+void sparse_helpers(CodeWriter &w, const Context &c) {
+  const Layout &l = c.layout;
+  auto table = [](const BitLevels &b) {
+    std::string s;
+    for (auto f : b.from) s += (s.empty() ? "" : ", ") + fmt::format("{}u", f);
+    return s;
+  };
+  w.line("/* Sets of numbers ({}) as bits with summary levels:", l.place_driven ? "the active places" : "the active places, the candidate transitions");
+  w.line("   bit j of a word of level k+1 says that word j of level k has members, so looking for the next");
+  w.line("   member skips empty words. The tables say where each level's words begin; the last entry is");
+  w.line("   the total. */");
+  w.line("static const uint32_t {}[{}] = {{{}}};", c.active_levels, l.active.from.size(), table(l.active));
+  if (!l.place_driven)
+    w.line("static const uint32_t {}[{}] = {{{}}};", c.candidate_levels, l.candidates.from.size(), table(l.candidates));
+  w.blank();
+  w.line("/* The number of the lowest bit set in a word that is not 0. */");
+  w.line("static uint32_t {}(uint32_t word)", c.lowest_fn);
+  w.line("{");
+  directive(w, "#if defined(__GNUC__) || defined(__clang__)");
+  w.line("    return (uint32_t)__builtin_ctz(word);");
+  directive(w, "#else");
+  w.line("    uint32_t n = 0;");
+  w.line("    while ((word & 1u) == 0u) {");
+  w.line("        word >>= 1;");
+  w.line("        ++n;");
+  w.line("    }");
+  w.line("    return n;");
+  directive(w, "#endif");
+  w.line("}");
+  w.blank();
+  w.line("/* The first member >= i of a set of `count` levels, looking from level `low` (0: members;");
+  w.line("   1: words of level 0 that have members), or UINT32_MAX when there is none. */");
+  w.line("static uint32_t {}(const uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t low, uint32_t i)",
+         c.next_fn);
+  w.line("{");
+  w.line("    uint32_t level = low, word;");
+  w.line("    for (;;) {");
+  w.line("        if ((i >> 5) >= levels[level + 1] - levels[level]) {");
+  w.line("            return UINT32_MAX;");
+  w.line("        }");
+  w.line("        word = set[levels[level] + (i >> 5)] & (0xFFFFFFFFu << (i & 31u));");
+  w.line("        if (word != 0u) {");
+  w.line("            break;");
+  w.line("        }");
+  w.line("        if (level + 1u == count) {");
+  w.line("            return UINT32_MAX;");
+  w.line("        }");
+  w.line("        i = (i >> 5) + 1u; /* the next word of this level: its bit one level up */");
+  w.line("        ++level;");
+  w.line("    }");
+  w.line("    i = (i & ~31u) | {}(word);", c.lowest_fn);
+  w.line("    while (level > low) {");
+  w.line("        --level;");
+  w.line("        i = (i << 5) | {}(set[levels[level] + i]);", c.lowest_fn);
+  w.line("    }");
+  w.line("    return i;");
+  w.line("}");
+  w.blank();
+  w.line("/* Adds member i, telling the levels above when its word stops being empty. */");
+  w.line("static void {}(uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t i)", c.insert_fn);
+  w.line("{");
+  w.line("    uint32_t level;");
+  w.line("    for (level = 0; level < count; ++level) {");
+  w.line("        uint32_t *word = &set[levels[level] + (i >> 5)];");
+  w.line("        uint32_t was = *word;");
+  w.line("        *word = was | (1u << (i & 31u));");
+  w.line("        if (was != 0u) {");
+  w.line("            return;");
+  w.line("        }");
+  w.line("        i >>= 5;");
+  w.line("    }");
+  w.line("}");
+  w.blank();
+  w.line("/* Removes member i of level `low` (1: a word of level 0 that became empty), telling the levels");
+  w.line("   above when a word becomes empty. */");
+  w.line("static void {}(uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t low, uint32_t i)", c.erase_fn);
+  w.line("{");
+  w.line("    uint32_t level;");
+  w.line("    for (level = low; level < count; ++level) {");
+  w.line("        uint32_t *word = &set[levels[level] + (i >> 5)];");
+  w.line("        *word &= ~(1u << (i & 31u));");
+  w.line("        if (*word != 0u) {");
+  w.line("            return;");
+  w.line("        }");
+  w.line("        i >>= 5;");
+  w.line("    }");
+  w.line("}");
+  if (c.chart.transitions.empty() || l.watch_capacity == 0) return;
+  const char *type = uint_type(l.index_bits);
+  w.blank();
+  w.line("/* Sorts a short list of place numbers (the places that lost or gained activation in a tick). */");
+  w.line("static void {}({} *list, uint32_t n)", c.sort_fn, type);
+  w.line("{");
+  w.line("    uint32_t i, j;");
+  w.line("    for (i = 1; i < n; ++i) {");
+  w.line("        {} key = list[i];", type);
+  w.line("        for (j = i; j > 0u && list[j - 1u] > key; --j) {");
+  w.line("            list[j] = list[j - 1u];");
+  w.line("        }");
+  w.line("        list[j] = key;");
+  w.line("    }");
+  w.line("}");
+  w.blank();
+  w.line("/* Whether a place runs exit or entry code, or resets its timer, when its activation changes. */");
+  w.line("static bool {}(uint32_t place)", c.watched_fn);
+  w.line("{");
+  w.line("    switch (place) {");
+  for (int p = 0; p < static_cast<int>(c.chart.places.size()); ++p)
+    if (c.watched(p)) w.line("    case {}:", c.place_const[static_cast<std::size_t>(p)]);
+  w.line("        return true;");
+  w.line("    default:");
+  w.line("        return false;");
+  w.line("    }");
+  w.line("}");
+}
+
+} // namespace
+
+void emit_scalable_helpers(CodeWriter &w, const Context &c) {
+  if (c.sparse()) sparse_helpers(w, c);
+}
+
+void emit_scalable_sfc_run(CodeWriter &w, const Context &c) {
+  if (c.sequential())
+    SequentialRun(w, c).emit();
+  else
+    SparseRun(w, c).emit();
+}
+
+} // namespace gfec::c_backend
