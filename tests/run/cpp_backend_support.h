@@ -130,11 +130,12 @@ inline std::string build_harness(const std::string &cxx, const std::string &dir,
   return exe;
 }
 
-/// Runs a harness on a script (one line per step; the first before the start).
-inline std::string run_script(const std::string &exe, const std::string &script) {
+/// Runs a harness on a script (one line per step; the first before the start); `args`:
+/// "threaded" runs the threaded executor instead.
+inline std::string run_script(const std::string &exe, const std::string &script, const std::string &args = "") {
   std::string path = exe + ".script";
   test::write_file(path, script);
-  auto r = test::run_command(fmt::format("'{}' < '{}'", exe, path));
+  auto r = test::run_command(fmt::format("'{}' {} < '{}'", exe, args, path));
   INFO(r.out);
   REQUIRE(r.exit_code == 0);
   return r.out;

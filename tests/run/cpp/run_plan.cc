@@ -5,6 +5,9 @@
 // first line is read before the start (its `set:` writes configure the plan), each further
 // line is one step of 10 ms. The log: what the trace observer hears, with the plan time in ms,
 // what the toolbox's components print (indented), then the status and every config entry.
+// With the argument `threaded` the plan runs on the threaded executor instead, to its end:
+// the script's first line is applied, the others are not read, and plan times are left out
+// of the log (they are real time there).
 #include PLAN_HEADER
 
 #include <afp/afp.h>
@@ -21,23 +24,28 @@ namespace {
 long ms(afp::Duration d) { return static_cast<long>(std::chrono::duration_cast<std::chrono::milliseconds>(d).count()); }
 
 struct Log : afp::TraceObserver {
+    bool timed = true;
+
+    /// The plan time, or nothing when it is real time.
+    std::string at(afp::Duration now) const { return timed ? std::to_string(ms(now)) + " " : ""; }
+
     void actor_started(const afp::Plan& plan, std::string_view actor, afp::Duration now) override {
-        std::cout << ms(now) << " start " << plan.name() << "." << actor << "\n";
+        std::cout << at(now) << "start " << plan.name() << "." << actor << "\n";
     }
     void actor_finished(const afp::Plan& plan, std::string_view actor, int state, afp::Duration now) override {
-        std::cout << ms(now) << " finish " << plan.name() << "." << actor << " state " << state << "\n";
+        std::cout << at(now) << "finish " << plan.name() << "." << actor << " state " << state << "\n";
     }
     void actor_interrupted(const afp::Plan& plan, std::string_view actor, std::string_view supervisor, int event,
                            afp::Duration now) override {
-        std::cout << ms(now) << " interrupt " << plan.name() << "." << actor << " by " << supervisor << " event " << event
+        std::cout << at(now) << "interrupt " << plan.name() << "." << actor << " by " << supervisor << " event " << event
                   << "\n";
     }
     void component_failed(const afp::Plan& plan, std::string_view component, std::string_view what,
                           afp::Duration now) override {
-        std::cout << ms(now) << " fail " << plan.name() << "." << component << ": " << what << "\n";
+        std::cout << at(now) << "fail " << plan.name() << "." << component << ": " << what << "\n";
     }
     void plan_finished(const afp::Plan& plan, afp::Status status, afp::Duration now) override {
-        std::cout << ms(now) << " end " << plan.name() << " " << afp::to_string(status) << "\n";
+        std::cout << at(now) << "end " << plan.name() << " " << afp::to_string(status) << "\n";
     }
 };
 
@@ -59,22 +67,35 @@ void apply_writes(afp::Configuration& config, const std::map<std::string, std::s
 
 }  // namespace
 
-int main() {
+template <class Executor>
+void report(const Executor& exec) {
+    std::cout << "status " << afp::to_string(exec.status());
+    if (!exec.error().empty()) std::cout << ": " << exec.error();
+    std::cout << "\n";
+}
+
+int main(int argc, char** argv) {
     PLAN_ENV ee;
     afp::Configuration config;
     Log log;
     auto plan = PLAN_FACTORY(ee);
-    afp::SteppedExecutor exec(*plan, config, &log);
     std::string line;
-    if (std::getline(std::cin, line)) apply_writes(config, ee.next(line));
-    exec.start();
-    while (exec.status() == afp::Status::Running && std::getline(std::cin, line)) {
-        apply_writes(config, ee.next(line));
-        exec.step(10ms);
+    if (argc > 1 && std::string(argv[1]) == "threaded") {
+        log.timed = false;
+        afp::ThreadedExecutor exec(*plan, config, &log);
+        if (std::getline(std::cin, line)) apply_writes(config, ee.next(line));
+        exec.run();
+        report(exec);
+    } else {
+        afp::SteppedExecutor exec(*plan, config, &log);
+        if (std::getline(std::cin, line)) apply_writes(config, ee.next(line));
+        exec.start();
+        while (exec.status() == afp::Status::Running && std::getline(std::cin, line)) {
+            apply_writes(config, ee.next(line));
+            exec.step(10ms);
+        }
+        report(exec);
     }
-    std::cout << "status " << afp::to_string(exec.status());
-    if (!exec.error().empty()) std::cout << ": " << exec.error();
-    std::cout << "\n";
     for (const auto& name : config.names()) std::cout << "config " << name << "=" << shown(config.value(name)) << "\n";
     return 0;
 }
