@@ -71,9 +71,10 @@ void convert_arguments(PlanContext &c) {
 }
 
 /// What a handle may not be called in any factory of the file: the names the factory body
-/// refers to besides its handles (classes, factories, environments, helpers, `plan`).
+/// refers to besides its handles (classes, factories, environments, helpers, `plan`), and `c`,
+/// the formula lambdas' parameter, which would hide a handle of that name (-Wshadow).
 std::set<std::string> file_names(const PlanContext &c) {
-  std::set<std::string> names{"plan", "afp", "std"};
+  std::set<std::string> names{"plan", "afp", "std", "c"};
   for (const auto &w : c.plans) {
     names.insert(w.factory);
     const model::Plan &p = c.plan_of(w);

@@ -105,11 +105,11 @@ inline std::string write_all(const std::string &test, const std::vector<OutputFi
   return dir;
 }
 
-/// `cxx kStrictFlags -I runtime -I includes... -c source`: what the compiler said, empty if
-/// it compiled. `source` relative to `dir`.
+/// `cxx kStrictFlags extra -I runtime -I includes... -c source`: what the compiler said,
+/// empty if it compiled. `source` relative to `dir`.
 inline test::CommandResult compile_object(const std::string &cxx, const std::string &dir, const std::string &source,
-                                          const std::vector<std::string> &includes) {
-  std::string flags;
+                                          const std::vector<std::string> &includes, const std::string &extra = "") {
+  std::string flags = extra.empty() ? "" : " " + extra;
   for (const auto &i : includes) flags += " -I '" + i + "'";
   return test::run_command(fmt::format("cd '{}' && {} {} -I '{}'{} -c '{}' -o /dev/null", dir, cxx, kStrictFlags,
                                        kRuntimeInclude.string(), flags, source));

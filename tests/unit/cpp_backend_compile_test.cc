@@ -30,14 +30,15 @@ std::vector<std::string> lines_of(const std::string &text) {
 
 } // namespace
 
-TEST_CASE("cpp compile: every golden file compiles warning-free with g++ and clang++", "[cpp_backend][compile]") {
+TEST_CASE("cpp compile: every golden file compiles warning-free with g++ and clang++, -Wshadow too", "[cpp_backend][compile]") {
   auto names = golden_sources();
   REQUIRE(names.size() >= 7);  // five plans, two skeletons
   if (cxx_compilers().size() < 2) WARN("clang++ is not installed: the generated C++ is tested with g++ only");
   for (const auto &cxx : cxx_compilers())
     for (const auto &name : names) {
       // The plans include the skeleton headers beside them: the wiring and the skeleton agree.
-      auto r = compile_object(cxx, kGoldenDir.string(), name, {});
+      // No handle hides another name either (-Wshadow).
+      auto r = compile_object(cxx, kGoldenDir.string(), name, {}, "-Wshadow");
       INFO(cxx << " " << name << ":\n" << r.out);
       CHECK(r.exit_code == 0);
       CHECK(r.out.empty());

@@ -27,7 +27,7 @@ std::string wiring(const std::string &plan, bool line_directives = false) {
 }
 
 /// Compiles generated wiring (files named as given) with the skeletons of the toolboxes it
-/// uses, written beside it; returns what g++ said.
+/// uses, written beside it (g++, kStrictFlags and -Wshadow); returns what g++ said.
 std::string compiles(const std::string &test, const std::map<std::string, std::string> &files, const std::string &main) {
   auto c = compile(files, main, "p.cpp");
   INFO(c->errors);
@@ -39,7 +39,7 @@ std::string compiles(const std::string &test, const std::map<std::string, std::s
     out.insert(out.end(), skeleton->files.begin(), skeleton->files.end());
   }
   std::string dir = write_all(test, out);
-  auto r = compile_object("g++", dir, "p.cpp", {});
+  auto r = compile_object("g++", dir, "p.cpp", {}, "-Wshadow");
   return r.exit_code == 0 ? "" : r.out;
 }
 
@@ -108,7 +108,8 @@ plan P {
   actor text: Say("n=" + (n + 1)) { SAID -> divide; }
   actor divide: Count(n / 2) { COUNTED -> ee; }
   actor ee: Count(1) { COUNTED -> make_P; }
-  actor make_P: Count(2) { COUNTED -> Bot; }
+  actor make_P: Count(2) { COUNTED -> c; }
+  actor c: Count(n + 1) { COUNTED -> Bot; }
   actor Bot: Count(3) { COUNTED -> terminate; }
 }
 )"}};
@@ -124,6 +125,7 @@ plan P {
   CHECK(w.find("auto* ee_ = plan->add_actor(\"ee\"") != std::string::npos);
   CHECK(w.find("auto* make_P_ = plan->add_actor(\"make_P\"") != std::string::npos);
   CHECK(w.find("auto* Bot_ = plan->add_actor(\"Bot\"") != std::string::npos);
+  CHECK(w.find("auto* c_ = plan->add_actor(\"c\", std::make_unique<Count>(ee,") != std::string::npos);
   CHECK(w.find("plan->define_subsequent(Go_, Go::STUCK, Bot_);") != std::string::npos);
   CHECK(compiles("model-handles", files, "p.plan") == "");
 }
