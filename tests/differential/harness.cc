@@ -89,6 +89,7 @@ const char *verdict_name(Verdict v) {
   case Verdict::Undefined: return "undefined behaviour";
   case Verdict::Mismatch: return "mismatch";
   case Verdict::CompileError: return "compile error";
+  case Verdict::Lint: return "cppcheck finding";
   case Verdict::Crash: return "crash";
   }
   return "?";
@@ -228,6 +229,35 @@ std::vector<Outcome> Harness::run_batch(const std::vector<Case *> &batch, const 
     auto again = run_batch(unrun, config, tag + "r");
     for (std::size_t k = 0; k < unrun.size(); ++k) outcomes[unrun_at[k]] = again[k];
   }
+  if (!verbose_) fs::remove_all(dir);
+  return outcomes;
+}
+
+std::vector<Outcome> Harness::lint_batch(const std::vector<Case *> &batch, const std::string &tag) const {
+  std::vector<Outcome> outcomes(batch.size());
+  const std::string dir = work_ + "/" + tag;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::string files;
+  for (Case *c : batch) {
+    for (const auto &f : c->prepared->engine) write(dir + "/" + f.path, f.contents);
+    files += " " + engine_name(*c);
+  }
+  // One finding a line, starting with the file it is in.
+  int status = shell(fmt::format("cd {} && cppcheck --enable=warning,style,performance,portability --quiet "
+                                 "--std=c99 --template='{{file}}:{{line}}: {{severity}}: {{message}} [{{id}}]'{} "
+                                 "> lint.txt 2>&1",
+                                 dir, files));
+  std::string found = read(dir + "/lint.txt");
+  for (std::size_t i = 0; i < batch.size(); ++i) {
+    std::string name = engine_name(*batch[i]), mine;
+    std::istringstream in(found);
+    for (std::string line; std::getline(in, line);)
+      if (line.rfind(name + ":", 0) == 0 || line.rfind(fmt::format("case_{}.h:", batch[i]->id), 0) == 0) mine += line + "\n";
+    if (!mine.empty()) outcomes[i] = {Verdict::Lint, mine, ""};
+  }
+  if (status != 0 && found.empty())
+    for (auto &o : outcomes) o = {Verdict::Lint, fmt::format("cppcheck failed (exit status {})", status), ""};
   if (!verbose_) fs::remove_all(dir);
   return outcomes;
 }

@@ -39,6 +39,7 @@ enum class Verdict {
   Undefined,     ///< the interpreter found undefined behaviour: not a test, skipped
   Mismatch,      ///< the engine's log differs from the interpreter's
   CompileError,  ///< the engine did not compile warning-free
+  Lint,          ///< cppcheck reports something in the engine
   Crash,         ///< the engine's program failed or timed out
 };
 const char *verdict_name(Verdict v);
@@ -60,6 +61,9 @@ public:
   /// Builds every prepared case of `batch` with `config`, runs them and compares.
   std::vector<Outcome> run_batch(const std::vector<Case *> &batch, const Config &config, const std::string &tag) const;
   Outcome run_one(Case &c, const Config &config, const std::string &tag) const;
+  /// cppcheck over the engines of every prepared case of `batch` (warning, style, performance,
+  /// portability): a finding fails its case.
+  std::vector<Outcome> lint_batch(const std::vector<Case *> &batch, const std::string &tag) const;
 
   /// Writes a case's chart, trace, logs and engine to `dir` for a person to look at.
   void save(const Case &c, const Outcome &o, const Config &config, const std::string &dir) const;

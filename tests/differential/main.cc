@@ -65,7 +65,7 @@ int main(int argc, char **argv) {
   std::uint64_t seed = 1;
   int cases = 300, batch = 60, shrink_max = 3, only = -1;
   std::string work, compilers, avoid;
-  bool verbose = false, keep = false;
+  bool verbose = false, keep = false, no_lint = false;
   CLI::App app{"gfec_differential - random charts: the reference interpreter against the generated C engines"};
   app.add_option("--seed", seed, "Seed of the random charts and traces (same seed, same cases)");
   app.add_option("--cases", cases, "How many random charts (a third of them fsm)");
@@ -73,8 +73,9 @@ int main(int argc, char **argv) {
   app.add_option("--compilers", compilers, "Comma-separated (default: gcc,clang, those installed)");
   app.add_option("--work", work, "Scratch folder (default: a fresh one under the temp folder)");
   app.add_option("--shrink", shrink_max, "Failures to shrink and print (the rest are only counted)");
-  app.add_option("--avoid", avoid, "Do not generate what a known bug breaks: octal, float-into-int, call-order (comma-separated)");
+  app.add_option("--avoid", avoid, "Do not generate what a known bug breaks: octal, float-into-int, call-order, dead-code (comma-separated)");
   app.add_option("--case", only, "Run only this case (of the same seed), e.g. to shrink it again");
+  app.add_flag("--no-cppcheck", no_lint, "Do not run cppcheck on the engines");
   app.add_flag("--keep", keep, "Keep the scratch folder");
   app.add_flag("-v,--verbose", verbose, "Say what happens to every case");
   CLI11_PARSE(app, argc, argv);
@@ -94,6 +95,7 @@ int main(int argc, char **argv) {
   if (work.empty())
     work = (std::filesystem::temp_directory_path() / fmt::format("gfec-differential-{}", ::getpid())).string();
   const auto configs = default_configs(list);
+  const bool lint = !no_lint && have("cppcheck");
   Harness harness(work, verbose);
   const auto start = std::chrono::steady_clock::now();
 
@@ -106,6 +108,7 @@ int main(int argc, char **argv) {
     if (avoid == "octal") base.octal = false;
     else if (avoid == "float-into-int") base.float_into_int = false;
     else if (avoid == "call-order") base.call_order = false;
+    else if (avoid == "dead-code") base.dead_code = false;
     else return std::cerr << "gfec_differential: unknown --avoid '" << avoid << "'\n", 2;
   }
   for (int k = 0; k < cases; ++k) {
@@ -138,6 +141,11 @@ int main(int argc, char **argv) {
   for (std::size_t b = 0; b < ready.size(); b += static_cast<std::size_t>(batch)) {
     std::vector<Case *> group(ready.begin() + static_cast<std::ptrdiff_t>(b),
                               ready.begin() + static_cast<std::ptrdiff_t>(std::min(ready.size(), b + static_cast<std::size_t>(batch))));
+    if (lint) {
+      auto outcomes = harness.lint_batch(group, fmt::format("b{}lint", b));
+      for (std::size_t i = 0; i < group.size(); ++i)
+        if (outcomes[i].verdict != Verdict::Pass) failures.push_back({*group[i], {"cppcheck", "cppcheck --enable=warning,style,performance,portability --std=c99", false}, outcomes[i]});
+    }
     for (std::size_t k = 0; k < configs.size(); ++k) {
       auto outcomes = harness.run_batch(group, configs[k], fmt::format("b{}c{}", b, k));
       for (std::size_t i = 0; i < group.size(); ++i) {
@@ -151,8 +159,9 @@ int main(int argc, char **argv) {
 
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::cout << fmt::format("gfec_differential: seed {}: {} random charts ({} sfc, {} fsm); {} compared under {} builds "
-                           "({} engine runs), {} skipped for undefined behaviour, {} rejected by gfec; {} failures; {:.0f} s\n",
+                           "({} engine runs){}, {} skipped for undefined behaviour, {} rejected by gfec; {} failures; {:.0f} s\n",
                            seed, generated, generated - fsm, fsm, ready.size(), configs.size(), ready.size() * configs.size(),
+                           lint ? " and cppcheck" : "",
                            undefined, invalid, failures.size(), seconds);
   // Shrink the first failures (one per case: the same bug tends to fail every build).
   std::vector<int> shown;
@@ -162,7 +171,7 @@ int main(int argc, char **argv) {
     shown.push_back(f.c.id);
     int steps = 0;
     if (f.outcome.verdict == Verdict::Mismatch || f.outcome.verdict == Verdict::Crash ||
-        f.outcome.verdict == Verdict::CompileError) {
+        f.outcome.verdict == Verdict::CompileError || f.outcome.verdict == Verdict::Lint) {
       Outcome o = shrink(harness, f.c, f.config, f.outcome.verdict, &steps);
       if (o.verdict == f.outcome.verdict) f.outcome = o;
     }

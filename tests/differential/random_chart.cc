@@ -218,6 +218,21 @@ public:
     return comparison(depth - 1);
   }
 
+  /// A transition's condition; with dead code avoided, never a constant one.
+  GExpr condition() {
+    GExpr c = boolean(2);
+    while (!o_.dead_code && !varies(c)) c = boolean(2);
+    return c;
+  }
+
+  /// Reads something that can change: a var, a call, a timer.
+  static bool varies(const GExpr &e) {
+    if (e.kind == GExpr::Kind::Var || e.kind == GExpr::Kind::Call || e.kind == GExpr::Kind::Elapsed) return true;
+    for (const auto &a : e.args)
+      if (varies(a)) return true;
+    return false;
+  }
+
   GStmt statement() {
     if (!c_.vars.empty() && chance(0.4)) {
       const GValue &v = pick(c_.vars);
@@ -306,7 +321,7 @@ public:
       if (chance(0.25)) t.name = fresh("t", i, kTrickyPlaces);
       t.inputs = some_places(n);
       t.outputs = some_places(n);
-      if (chance(0.8)) t.condition = boolean(2);
+      if (chance(0.8)) t.condition = condition();
       c_.transitions.push_back(t);
     }
   }
@@ -349,7 +364,7 @@ public:
       for (int j = 0; j < i; ++j)
         if (!terminal(j)) sources.push_back(j);
       int j = pick(sources);
-      if (!terminal(i) && chance(0.4)) pairs.insert({i, j});
+      if (!terminal(i) && o_.dead_code && chance(0.4)) pairs.insert({i, j});
       else pairs.insert({j, i});
     }
     for (int extra = uniform(0, n); extra > 0; --extra) {
@@ -364,7 +379,7 @@ public:
       if (chance(0.15)) t.name = fresh("t", i, {});
       t.inputs = {a};
       t.outputs = {b};
-      if (chance(0.85)) t.condition = boolean(2);
+      if (chance(0.85) || !o_.dead_code) t.condition = condition();
       c_.transitions.push_back(t);
       ++i;
     }

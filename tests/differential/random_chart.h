@@ -83,6 +83,10 @@ struct GenOptions {
   bool octal = true;             ///< int literals with a leading zero (`010`)
   bool float_into_int = true;    ///< float-typed values passed or assigned to ints
   bool call_order = true;        ///< calls in two operands of one operator or call (C leaves their order open)
+  /// Chart elements gfec already warns are dead (fsm states the initial state cannot reach,
+  /// fsm transitions shadowed by an unconditional one, `when false`): their engine code is
+  /// dead too, which cppcheck reports.
+  bool dead_code = true;
 };
 
 GChart random_chart(std::mt19937_64 &rng, int id, const GenOptions &options);

@@ -207,7 +207,8 @@ Outcome shrink(const Harness &h, Case &c, const Config &config, Verdict verdict,
   auto still_fails = [&](Case &candidate) {
     ++tries;
     if (h.prepare(candidate).verdict != Verdict::Pass) return false;
-    Outcome o = h.run_one(candidate, config, "shrink");
+    Outcome o = verdict == Verdict::Lint ? h.lint_batch({&candidate}, "shrink").at(0)
+                                         : h.run_one(candidate, config, "shrink");
     if (o.verdict != verdict) return false;
     if (verdict == Verdict::CompileError) {
       if (tries == 1) warning = warning_of(o.detail);
