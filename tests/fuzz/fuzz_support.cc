@@ -1,5 +1,6 @@
 #include "fuzz_support.h"
 
+#include "analysis/analysis.h"
 #include "diagnostic_printer.h"
 #include "interpreter/engine.h"
 #include "loader.h"
@@ -12,6 +13,9 @@
 #endif
 #ifdef GFEC_FUZZ_DOT_BACKEND
 #include "dot_backend.h"
+#endif
+#ifdef GFEC_FUZZ_CPP_BACKEND
+#include "cpp_backend.h"
 #endif
 
 #include <cstdio>
@@ -168,12 +172,23 @@ void run_back_ends(const model::Model &m) {
   charts.push_back(make_dot_backend());
   plans.push_back(make_dot_backend());
 #endif
+#ifdef GFEC_FUZZ_CPP_BACKEND
+  plans.push_back(make_cpp_backend());
+#endif
   for (std::size_t c = 0; c < m.charts.size(); ++c) {
     if (!m.charts[c].in_main_file) continue;
     EmitOptions o;
     o.chart = static_cast<int>(c);
     for (const auto &b : charts) emit_twice(*b, m, o);
   }
+#ifdef GFEC_FUZZ_CPP_BACKEND
+  for (std::size_t t = 0; t < m.toolboxes.size(); ++t) {
+    if (m.toolboxes[t].range.file != m.main_file) continue;
+    EmitOptions o;
+    o.toolbox = static_cast<int>(t);
+    emit_twice(*make_toolbox_skeleton_backend(), m, o);
+  }
+#endif
   for (std::size_t p = 0; p < m.plans.size(); ++p) {
     if (!m.plans[p].in_main_file) continue;
     EmitOptions o;
@@ -216,6 +231,18 @@ std::string check_one(const std::string &input) {
   for (const auto &c : m.charts) check.chart(c);
   for (const auto &p : m.plans) check.plan(p);
   for (std::size_t c = 0; c < m.charts.size(); ++c) run_interpreter(m, static_cast<int>(c));
+  // Every analysis, with small limits so that one input stays fast; its warnings are located.
+  analysis::Limits limits;
+  limits.max_states = 2000;
+  limits.max_outcomes = 20000;
+  Diagnostics analysis_diag(all, 1000);
+  analysis::analysis_report(m, analysis_diag, limits);
+  for (const Diagnostic &d : analysis_diag.all()) {
+    check_range(sources, d.range, "an analysis warning lies in its file");
+    for (const auto &n : d.notes)
+      if (n.has_range) check_range(sources, n.range, "an analysis note lies in its file");
+    render_text(d, sources);
+  }
   run_back_ends(m);
   return printed;
 }
