@@ -9,7 +9,7 @@
 # A last row compiles the 100000 ring declared backwards: no pass may rely on declaration
 # order to stay linear. Measures; never fails on time.
 set -euo pipefail
-gfec=$1 gen=$2
+gfec=$(realpath "$1") gen=$(realpath "$2")
 shift 2
 sizes=("$@")
 [[ ${#sizes[@]} -gt 0 ]] || sizes=(1000 10000 100000 1000000)

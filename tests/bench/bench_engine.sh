@@ -11,7 +11,7 @@
 # on one tick in four. Measures; never fails on time.
 set -euo pipefail
 shopt -s inherit_errexit
-gfec=$1 gen=$2 cc=${3:-gcc}
+gfec=$(realpath "$1") gen=$(realpath "$2") cc=${3:-gcc}
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
 work=$(mktemp -d "${TMPDIR:-/tmp}/gfec-bench-engine.XXXXXX")

@@ -10,7 +10,7 @@
 # Interface functions stay external (they are the robot library's), so text is the engine only.
 set -euo pipefail
 shopt -s inherit_errexit
-gfec=$1 gen=$2 cc=${3:-gcc}
+gfec=$(realpath "$1") gen=$(realpath "$2") cc=${3:-gcc}
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
 work=$(mktemp -d "${TMPDIR:-/tmp}/gfec-bench-size.XXXXXX")
