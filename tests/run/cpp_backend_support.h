@@ -34,6 +34,8 @@ inline const fs::path kGoldenDir = kSourceDir / "tests" / "golden" / "cpp";
 inline const fs::path kRunDir = kSourceDir / "tests" / "run" / "cpp";
 inline const fs::path kRuntimeInclude = kSourceDir / "runtime" / "include";
 inline const fs::path kRuntimeLibrary = fs::path(GFEC_BINARY_DIR) / "runtime" / "libafp_runtime.a";
+/// What a program linking kRuntimeLibrary needs besides it: the sanitizers the build uses.
+inline const std::string kRuntimeLinkFlags = GFEC_RUNTIME_LINK_FLAGS;
 
 /// What generated C++ must compile warning-free with (LANGUAGE.md §8 asks -Wall -Wextra -Werror;
 /// the project holds generated code to -Wpedantic too).
@@ -98,6 +100,13 @@ inline std::vector<std::string> cxx_compilers() {
   return cxx;
 }
 
+/// The compilers that can link kRuntimeLibrary: both, unless the build is sanitized, when only
+/// the one that built it (its sanitizer runtime is the one the library needs).
+inline std::vector<std::string> runtime_linking_compilers() {
+  if (kRuntimeLinkFlags.empty()) return cxx_compilers();
+  return {GFEC_CXX_IS_CLANG ? "clang++" : "g++"};
+}
+
 /// Writes files into a fresh scratch folder; returns the folder.
 inline std::string write_all(const std::string &test, const std::vector<OutputFile> &files) {
   std::string dir = test::scratch_dir("cpp_backend/" + test);
@@ -122,9 +131,9 @@ inline std::string build_harness(const std::string &cxx, const std::string &dir,
   std::string exe = dir + "/run-" + cxx;
   auto r = test::run_command(fmt::format(
       "cd '{}' && {} {} -I . -I '{}' -I '{}' '-DPLAN_HEADER=\"{}.hpp\"' -DPLAN_FACTORY=make_{} -DPLAN_ENV={} '{}' {}.cpp "
-      "'{}' -pthread -o '{}'",
+      "'{}' {} -pthread -o '{}'",
       dir, cxx, kStrictFlags, kRunDir.string(), kRuntimeInclude.string(), plan_base, plan_name, env,
-      (kRunDir / "run_plan.cc").string(), plan_base, kRuntimeLibrary.string(), exe));
+      (kRunDir / "run_plan.cc").string(), plan_base, kRuntimeLibrary.string(), kRuntimeLinkFlags, exe));
   INFO(cxx << " in " << dir << ":\n" << r.out);
   REQUIRE(r.exit_code == 0);
   return exe;

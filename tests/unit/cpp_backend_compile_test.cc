@@ -85,11 +85,11 @@ TEST_CASE("cpp compile: a fresh skeleton links with the wiring and fails where n
                              "    std::cout << afp::to_string(exec.status()) << \": \" << exec.error() << \"\\n\";\n"
                              "}\n"});
   std::string dir = write_all("skeleton-links", all);
-  for (const auto &cxx : cxx_compilers()) {
+  for (const auto &cxx : runtime_linking_compilers()) {
     auto build = test::run_command(fmt::format("cd '{}' && {} {} -I . -I '{}' main.cpp wall_follow.cpp carbot_toolbox.cpp "
-                                               "'{}' -pthread -o run-{}",
+                                               "'{}' {} -pthread -o run-{}",
                                                dir, cxx, kStrictFlags, kRuntimeInclude.string(),
-                                               kRuntimeLibrary.string(), cxx));
+                                               kRuntimeLibrary.string(), kRuntimeLinkFlags, cxx));
     INFO(cxx << ":\n" << build.out);
     REQUIRE(build.exit_code == 0);
     auto run = test::run_command(fmt::format("'{}/run-{}'", dir, cxx));

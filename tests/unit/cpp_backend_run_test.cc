@@ -30,7 +30,7 @@ const Harnesses &harness(const std::map<std::string, std::string> &files, const 
   std::string dir = write_all("run-" + stem, compiled->files);
   if (cxx_compilers().size() < 2) WARN("clang++ is not installed: the generated C++ is tested with g++ only");
   Harnesses h;
-  for (const auto &cxx : cxx_compilers()) h.executables.push_back(build_harness(cxx, dir, stem, plan_name, env));
+  for (const auto &cxx : runtime_linking_compilers()) h.executables.push_back(build_harness(cxx, dir, stem, plan_name, env));
   return built.emplace(main, std::move(h)).first->second;
 }
 
