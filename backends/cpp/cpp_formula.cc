@@ -5,6 +5,10 @@
 
 #include <fmt/format.h>
 
+#include <cerrno>
+#include <climits>
+#include <cstdlib>
+
 namespace gfec::cpp_backend {
 
 namespace {
@@ -50,9 +54,14 @@ public:
 
 private:
   static Rendered int_literal(const std::string &text) {
+    // Literals are decimal (`010` is 10; C++ would read 8): written by their value.
+    errno = 0;
+    char *end = nullptr;
+    long long v = std::strtoll(text.c_str(), &end, 10);
+    if (errno != 0 || end == text.c_str() || *end != '\0') return {text};
     // -2147483648 is `-(2147483648)` in C++, a long: spell INT_MIN so that it stays an int.
-    if (text == "-2147483648") return {"(-2147483647 - 1)"};
-    return {text, text.rfind('-', 0) == 0 ? kUnary : kPrimary};
+    if (v == INT_MIN) return {"(-2147483647 - 1)"};
+    return {std::to_string(v), v < 0 ? kUnary : kPrimary};
   }
 
   std::string entry(const Expr &e, const char *type) {

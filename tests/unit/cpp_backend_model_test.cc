@@ -83,6 +83,25 @@ plan P {
   CHECK(w.find("int divide(int a, int b) {") != std::string::npos);
 }
 
+TEST_CASE("cpp model: int literals are decimal, a leading zero is not octal", "[cpp_backend]") {
+  std::string w = wiring(R"(
+import "bot.toolbox";
+plan P {
+  config { int n = 010; }
+  start a;
+  actor a: Count(010) { COUNTED -> b; }
+  actor b: Count(n + 010) { COUNTED -> c; }
+  actor c: Say("n=" + 0010) { SAID -> terminate; }
+}
+)");
+  // LANGUAGE.md: 010 is ten; C++ would read the spelling as octal 8.
+  CHECK(w.find("afp::in<int>(10)") != std::string::npos);
+  CHECK(w.find("return c.get<int>(\"n\") + 10; }") != std::string::npos);
+  CHECK(w.find("return \"n=\" + text(10); }") != std::string::npos);
+  CHECK(w.find("afp::Value(10)") != std::string::npos);
+  CHECK(w.find("010") == std::string::npos);
+}
+
 TEST_CASE("cpp model: a plan without computed text or int division defines no helpers", "[cpp_backend]") {
   std::string w = wiring(R"(
 import "bot.toolbox";
