@@ -110,6 +110,26 @@ void name_locals(Context &c) {
       {"add_n", &c.add_n}, {"lost", &c.lost}, {"lost_n", &c.lost_n}, {"gained", &c.gained}, {"gained_n", &c.gained_n},
       {"w", &c.word},      {"bits", &c.bits}, {"i", &c.i},           {"t", &c.t}};
   for (auto [name, field] : scalable) *field = locals.take(name);
+  // The temporaries: a prefix no name the engine's code sees continues with digits only.
+  std::vector<const std::string *> seen = {&c.type,       &c.self,        &c.add,          &c.before,
+                                           &c.from,       &c.index,       &c.hooks_macro,  &c.checks_macro,
+                                           &c.activated_fn, &c.enabled_fn, &c.place_count, &c.transition_count,
+                                           &c.lowest_fn,  &c.next_fn,     &c.insert_fn,    &c.erase_fn,
+                                           &c.sort_fn,    &c.watched_fn,  &c.active_levels, &c.candidate_levels};
+  for (const auto &f : c.model.functions) seen.push_back(&f.name);
+  for (const auto &n : c.place_const) seen.push_back(&n);
+  for (const auto &n : c.transition_const) seen.push_back(&n);
+  for (auto [name, field] : scalable) seen.push_back(field);
+  auto numbered = [](const std::string &name, const std::string &prefix) {
+    return name.size() > prefix.size() && name.compare(0, prefix.size(), prefix) == 0 &&
+           name.find_first_not_of("0123456789", prefix.size()) == std::string::npos;
+  };
+  c.temp_prefix = "gfec_t";
+  for (bool clash = true; clash;) {
+    clash = false;
+    for (const std::string *name : seen) clash = clash || numbered(*name, c.temp_prefix);
+    if (clash) c.temp_prefix += '_';
+  }
 }
 
 void collect_facts(Context &c) {

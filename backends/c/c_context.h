@@ -68,6 +68,8 @@ struct Context {
   std::string index;   ///< a loop index
   // Locals of the scalable form's run function.
   std::string add_n, lost, lost_n, gained, gained_n, word, bits, i, t;
+  /// The temporaries that keep calls in order are this and a number: `gfec_t0` (c_expr.h).
+  std::string temp_prefix;
 
   // ------------------------------------------------------------ what the chart uses
   std::vector<bool> is_input;   ///< by place: some transition consumes its activation

@@ -2,6 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cerrno>
+#include <climits>
+#include <cstdlib>
+#include <cstring>
 #include <optional>
 #include <utility>
 
@@ -10,19 +15,35 @@ namespace gfec::c_backend {
 namespace {
 
 using model::Expr;
+using model::Type;
 
 // Binding strength of what an expression renders to: binary operators use precedence() (1-7).
 constexpr int kUnary = 90;
 constexpr int kPrimary = 100;
 
 struct Rendered {
+  Rendered() = default;
+  // Not explicit: `return {"true"};` reads well.
+  Rendered(std::string t, int p = kPrimary, std::vector<std::string> b = {})
+      : text(std::move(t)), prec(p), before(std::move(b)) {}
+
   std::string text;
   int prec = kPrimary;
+  /// Assignments to temporaries that must be evaluated before `text`, in this order (c_expr.h).
+  std::vector<std::string> before;
 };
 
-Rendered render(const Context &c, const Expr &e);
-
 std::string bracket(const std::string &s) { return "(" + s + ")"; }
+
+/// `r` as one expression: its assignments first, by the comma operator.
+Rendered closed(Rendered r) {
+  if (r.before.empty()) return r;
+  std::string s = "(";
+  for (const auto &b : r.before) s += b + ", ";
+  return {s + r.text + ")"};
+}
+
+bool is_floating(Type t) { return t == Type::Float || t == Type::Double; }
 
 bool is_comparison(BinaryOp op) {
   switch (op) {
@@ -43,39 +64,91 @@ bool wanted_by_compilers(BinaryOp op, const Expr &operand, bool left) {
   return left && is_comparison(op) && operand.kind == Expr::Kind::Unary && operand.unary_op == UnaryOp::Not;
 }
 
+const Expr &unbracketed(const Expr &e) { return e.kind == Expr::Kind::Paren ? unbracketed(e.args.at(0)) : e; }
+
+bool has_call(const Expr &e) {
+  if (e.kind == Expr::Kind::Call) return true;
+  for (const auto &a : e.args)
+    if (has_call(a)) return true;
+  return false;
+}
+
+/// An int literal's value ("010" is 10: chart literals are decimal), if it is an int.
+std::optional<long long> int_value(const std::string &text) {
+  errno = 0;
+  char *end = nullptr;
+  long long v = std::strtoll(text.c_str(), &end, 10);
+  if (errno != 0 || end == text.c_str() || *end != '\0') return std::nullopt;
+  return v;
+}
+
+/// The value of an int expression made of literals and constants only, if it has one in `int`.
+std::optional<long long> int_constant(const Context &c, const Expr &e) {
+  if (e.type != Type::Int) return std::nullopt;
+  std::optional<long long> v;
+  switch (e.kind) {
+  case Expr::Kind::Int: v = int_value(e.text); break;
+  case Expr::Kind::Const: {
+    const Expr &value = c.model.consts.at(static_cast<std::size_t>(e.index)).value;
+    if (value.kind == Expr::Kind::Int) v = int_value(value.text);
+    break;
+  }
+  case Expr::Kind::Paren: return int_constant(c, e.args.at(0));
+  case Expr::Kind::Unary: {
+    auto a = int_constant(c, e.args.at(0));
+    if (a && e.unary_op == UnaryOp::Neg) v = -*a;
+    break;
+  }
+  case Expr::Kind::Binary: {
+    auto a = int_constant(c, e.args.at(0)), b = int_constant(c, e.args.at(1));
+    if (!a || !b) return std::nullopt;
+    switch (e.binary_op) {
+    case BinaryOp::Add: v = *a + *b; break;
+    case BinaryOp::Sub: v = *a - *b; break;
+    case BinaryOp::Mul: v = *a * *b; break;
+    case BinaryOp::Div: if (*b != 0) v = *a / *b; break;
+    case BinaryOp::Mod: if (*b != 0) v = *a % *b; break;
+    default: break;
+    }
+    break;
+  }
+  default: break;
+  }
+  if (v && (*v < INT_MIN || *v > INT_MAX)) return std::nullopt;
+  return v;
+}
+
+/// An int literal as C reads it: its value in decimal. INT_MIN (a folded constant) is written
+/// so that it stays an int: `-2147483648` is the long `-(2147483648)` in C.
+Rendered int_literal(const std::string &text) {
+  auto v = int_value(text);
+  if (!v) return {text};  // beyond long long: the validator and the interpreter say it is not an int
+  if (*v == INT_MIN) return {"(-2147483647 - 1)"};
+  return {std::to_string(*v), *v < 0 ? kUnary : kPrimary};
+}
+
+/// A floating literal of type float (a folded float constant): C would read the spelling as a
+/// double. `0.1f` where that is the same float as the double 0.1 converted, else `(float)0.1`.
+Rendered float_literal(const std::string &text) {
+  const char *s = text.c_str();
+  const bool negative = !text.empty() && text[0] == '-';
+  float direct = std::strtof(s, nullptr);
+  float converted = static_cast<float>(std::strtod(s, nullptr));
+  if (std::memcmp(&direct, &converted, sizeof direct) == 0) return {text + "f", negative ? kUnary : kPrimary};
+  return {"(float)" + (negative ? bracket(text) : text), kUnary};
+}
+
 /// A literal; a folded constant may be negative, and then binds like a unary minus.
 Rendered literal(const Expr &e) {
   switch (e.kind) {
   case Expr::Kind::Bool: return {e.bool_value ? "true" : "false"};
   case Expr::Kind::String: return {c_string_literal(e.text)};
-  default: return {e.text, !e.text.empty() && e.text[0] == '-' ? kUnary : kPrimary};
+  case Expr::Kind::Int: return int_literal(e.text);
+  default:
+    if (e.type == Type::Float) return float_literal(e.text);
+    return {e.text, !e.text.empty() && e.text[0] == '-' ? kUnary : kPrimary};
   }
 }
-
-/// A constant is written as its folded value, named in a comment: no C name of the chart's can
-/// collide with it (a constant called `m` would otherwise hide the engine parameter).
-Rendered constant(const Context &c, const Expr &e) {
-  const auto &k = c.model.consts.at(static_cast<std::size_t>(e.index));
-  Rendered v = literal(k.value);
-  v.text += fmt::format(" /* {} */", k.name);
-  return v;
-}
-
-Rendered call(const Context &c, const Expr &e) {
-  std::string args;
-  for (const auto &a : e.args) args += (args.empty() ? "" : ", ") + render(c, a).text;
-  return {fmt::format("{}({})", c.model.functions.at(static_cast<std::size_t>(e.index)).name, args)};
-}
-
-Rendered unary(const Context &c, const Expr &e) {
-  Rendered operand = render(c, e.args.at(0));
-  // `- -x` must not become the decrement `--x`.
-  bool minus_minus = e.unary_op == UnaryOp::Neg && !operand.text.empty() && operand.text[0] == '-';
-  if (operand.prec < kUnary || minus_minus) operand.text = bracket(operand.text);
-  return {spelling(e.unary_op) + operand.text, kUnary};
-}
-
-const Expr &unbracketed(const Expr &e) { return e.kind == Expr::Kind::Paren ? unbracketed(e.args.at(0)) : e; }
 
 BinaryOp mirrored(BinaryOp op) {
   switch (op) {
@@ -106,44 +179,245 @@ std::optional<bool> settled(const Expr &e) {
   return std::nullopt;
 }
 
-Rendered binary(const Context &c, const Expr &e) {
-  if (auto value = settled(e))
-    return {*value ? "true /* always: timers count from 0 to UINT32_MAX */"
-                   : "false /* never: timers count from 0 to UINT32_MAX */"};
-  const int prec = precedence(e.binary_op);
-  Rendered l = render(c, e.args.at(0));
-  Rendered r = render(c, e.args.at(1));
-  // The model keeps the user's brackets as Paren nodes; these only restore what the tree says
-  // (operators are left-associative) and quiet the compilers.
-  if (l.prec < prec || wanted_by_compilers(e.binary_op, e.args[0], true)) l.text = bracket(l.text);
-  if (r.prec <= prec || wanted_by_compilers(e.binary_op, e.args[1], false)) r.text = bracket(r.text);
-  return {fmt::format("{} {} {}", l.text, spelling(e.binary_op), r.text), prec};
-}
+/// A timer or an int var compared with a constant, the constant on the right: `elapsed(P) >= 2`
+/// (in ticks), `v < 4`.
+struct ConstantTest {
+  Expr::Kind kind = Expr::Kind::Var;  ///< Elapsed or Var
+  int index = -1;
+  BinaryOp op = BinaryOp::Eq;
+  long long k = 0;
 
-Rendered render(const Context &c, const Expr &e) {
-  switch (e.kind) {
-  case Expr::Kind::Bool:
-  case Expr::Kind::Int:
-  case Expr::Kind::Float:
-  case Expr::Kind::String: return literal(e);
-  case Expr::Kind::Ticks: return {fmt::format("{}u /* {}ms */", e.ticks, e.ms)};
-  case Expr::Kind::Var: return {c.field(c.var_field.at(static_cast<std::size_t>(e.index)))};
-  case Expr::Kind::Const: return constant(c, e);
-  case Expr::Kind::Call: return call(c, e);
-  case Expr::Kind::Elapsed: return {c.timer_of(e.index)};
-  case Expr::Kind::Unary: return unary(c, e);
-  case Expr::Kind::Binary: return binary(c, e);
-  case Expr::Kind::Paren: return {bracket(render(c, e.args.at(0)).text)};
-  case Expr::Kind::Config: break;  // plans only: the validator keeps it out of charts
+  bool holds(long long x) const {
+    switch (op) {
+    case BinaryOp::Lt: return x < k;
+    case BinaryOp::Le: return x <= k;
+    case BinaryOp::Gt: return x > k;
+    case BinaryOp::Ge: return x >= k;
+    case BinaryOp::Eq: return x == k;
+    default: return x != k;
+    }
   }
-  return {"0"};
+};
+
+std::optional<ConstantTest> constant_test(const Context &c, const Expr &e) {
+  const Expr &u = unbracketed(e);
+  if (u.kind != Expr::Kind::Binary || !is_comparison(u.binary_op)) return std::nullopt;
+  for (int side = 0; side < 2; ++side) {
+    const Expr &x = unbracketed(u.args.at(static_cast<std::size_t>(side)));
+    const Expr &k = unbracketed(u.args.at(static_cast<std::size_t>(1 - side)));
+    BinaryOp op = side == 0 ? u.binary_op : mirrored(u.binary_op);
+    if (x.kind == Expr::Kind::Elapsed && k.kind == Expr::Kind::Ticks)  // timers stop at UINT32_MAX
+      return ConstantTest{x.kind, x.index, op, static_cast<long long>(std::min(k.ticks, 0x100000000ul))};
+    if (x.kind == Expr::Kind::Var && x.type == Type::Int)
+      if (auto v = int_constant(c, k)) return ConstantTest{x.kind, x.index, op, *v};
+  }
+  return std::nullopt;
 }
 
-std::string statement(const Context &c, const model::Stmt &s) {
-  if (s.kind == model::Stmt::Kind::Call) return render(c, s.call).text + ";";
-  return fmt::format("{} {} {};", c.field(c.var_field.at(static_cast<std::size_t>(s.var))), spelling(s.op),
-                     render(c, s.value).text);
+/// Two tests of one timer or int var against constants, joined by `&&` or `||`, that decide the
+/// same for every value: `v >= 0 || v < 4` is always true, and so is `elapsed(P) >= 15ms ||
+/// elapsed(P) <= 5ms` at period 20ms (`t >= 1 || t <= 1` in ticks). clang says so
+/// (-Wtautological-overlap-compare); such a condition is written as its value, the tests in a
+/// comment. Timers and vars are read without side effects, so nothing is lost.
+std::optional<std::string> settled_pair(const Context &c, const Expr &e) {
+  if (e.binary_op != BinaryOp::And && e.binary_op != BinaryOp::Or) return std::nullopt;
+  auto a = constant_test(c, e.args.at(0)), b = constant_test(c, e.args.at(1));
+  if (!a || !b || a->kind != b->kind || a->index != b->index) return std::nullopt;
+  const bool timer = a->kind == Expr::Kind::Elapsed;
+  const long long lowest = timer ? 0 : INT_MIN, highest = timer ? 0xFFFFFFFFll : INT_MAX;
+  const bool both = e.binary_op == BinaryOp::And;
+  auto value = [&](long long x) { return both ? a->holds(x) && b->holds(x) : a->holds(x) || b->holds(x); };
+  // The result can only change at a constant: trying each, its neighbours and the ends decides.
+  const bool first = value(lowest);
+  for (long long k : {a->k, b->k})
+    for (long long x : {k - 1, k, k + 1, highest})
+      if (x >= lowest && x <= highest && value(x) != first) return std::nullopt;
+  std::string name = timer ? fmt::format("elapsed({})", c.place(a->index).name)
+                           : c.chart.vars.at(static_cast<std::size_t>(a->index)).name;
+  return fmt::format("{} /* {}: {} {} {} {} {} {} {}{} */", first ? "true" : "false", first ? "always" : "never", name,
+                     spelling(a->op), a->k, spelling(e.binary_op), name, spelling(b->op), b->k,
+                     timer ? ", in ticks" : "");
 }
+
+/// Renders one expression or statement of a chart, adding the temporaries it needs to `temps`.
+class Renderer {
+public:
+  Renderer(const Context &c, Temporaries &temps) : c_(c), temps_(temps) {}
+
+  Rendered render(const Expr &e) {
+    switch (e.kind) {
+    case Expr::Kind::Bool:
+    case Expr::Kind::Int:
+    case Expr::Kind::Float:
+    case Expr::Kind::String: return literal(e);
+    case Expr::Kind::Ticks: return {fmt::format("{}u /* {}ms */", e.ticks, e.ms)};
+    case Expr::Kind::Var: return {c_.field(c_.var_field.at(static_cast<std::size_t>(e.index)))};
+    case Expr::Kind::Const: return constant(e);
+    case Expr::Kind::Call: return call(e);
+    case Expr::Kind::Elapsed: return {c_.timer_of(e.index)};
+    case Expr::Kind::Unary: return unary(e);
+    case Expr::Kind::Binary: return binary(e);
+    case Expr::Kind::Paren: {
+      Rendered inner = render(e.args.at(0));
+      return {bracket(inner.text), kPrimary, std::move(inner.before)};
+    }
+    case Expr::Kind::Config: break;  // plans only: the validator keeps it out of charts
+    }
+    return {"0"};
+  }
+
+  /// `r`, the rendering of `e`, as a value of type `to` where C converts implicitly: explicitly
+  /// when a floating value becomes an int (clang -Wliteral-conversion), and when an int constant
+  /// becomes a float that cannot hold it exactly (-Wimplicit-const-int-float-conversion). The
+  /// conversion is the one C (and the language) makes anyway.
+  Rendered converted(Rendered r, const Expr &e, Type to) const {
+    const char *cast = nullptr;
+    if (to == Type::Int && is_floating(e.type)) {
+      cast = "(int)";
+    } else if (to == Type::Float && e.type == Type::Int) {
+      auto v = int_constant(c_, e);
+      if (v && static_cast<long long>(static_cast<float>(*v)) != *v) cast = "(float)";
+    }
+    if (!cast) return r;
+    if (r.prec < kPrimary) r.text = bracket(r.text);
+    r.text = cast + r.text;
+    r.prec = kUnary;
+    return r;
+  }
+
+  /// A statement: the assignments to temporaries that must come first are statements of their
+  /// own, on the same line (`gfec_t0 = S2(); A(gfec_t0, S0() < 2);`).
+  std::string statement(const model::Stmt &s) {
+    Rendered r;
+    if (s.kind == model::Stmt::Kind::Call) {
+      r = render(s.call);
+      r.text += ";";
+    } else {
+      const Type to = c_.chart.vars.at(static_cast<std::size_t>(s.var)).type;
+      const std::string target = c_.field(c_.var_field.at(static_cast<std::size_t>(s.var)));
+      r = render(s.value);
+      if (s.op != AssignOp::Set && to == Type::Int && is_floating(s.value.type)) {
+        // `v += f` is `v = v + f` computed in f's type, then converted: written out, so that
+        // the conversion is explicit.
+        BinaryOp op = s.op == AssignOp::Add ? BinaryOp::Add : BinaryOp::Sub;
+        if (r.prec <= precedence(op)) r.text = bracket(r.text);
+        r.text = fmt::format("{} = (int)({} {} {});", target, target, spelling(op), r.text);
+      } else {
+        r = converted(std::move(r), s.value, to);
+        r.text = fmt::format("{} {} {};", target, spelling(s.op), r.text);
+      }
+    }
+    std::string text;
+    for (const auto &b : r.before) text += b + "; ";
+    return text + r.text;
+  }
+
+private:
+  /// A constant is written as its folded value, named in a comment: no C name of the chart's can
+  /// collide with it (a constant called `m` would otherwise hide the engine parameter).
+  Rendered constant(const Expr &e) const {
+    const auto &k = c_.model.consts.at(static_cast<std::size_t>(e.index));
+    Rendered v = literal(k.value);
+    v.text += fmt::format(" /* {} */", k.name);
+    return v;
+  }
+
+  /// The operands of one operator or call, rendered left to right. When two or more of them
+  /// call functions, all but the last of those go into temporaries (`in_temporary`), assigned
+  /// in order in `before`, which also collects the operands' own assignments.
+  struct Operands {
+    std::vector<Rendered> items;
+    std::vector<bool> in_temporary;
+    std::vector<std::string> before;
+  };
+  Operands operands(const std::vector<Expr> &args) {
+    std::size_t calling = 0, last = 0;
+    for (std::size_t i = 0; i < args.size(); ++i)
+      if (has_call(args[i])) {
+        ++calling;
+        last = i;
+      }
+    Operands o;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+      bool temporary = calling >= 2 && i != last && has_call(args[i]);
+      // A temporary takes the value without the user's outer brackets.
+      Rendered r = render(temporary ? unbracketed(args[i]) : args[i]);
+      for (auto &b : r.before) o.before.push_back(std::move(b));
+      r.before.clear();
+      if (temporary) {
+        std::string name = temps_.add(args[i].type);
+        o.before.push_back(fmt::format("{} = {}", name, r.text));
+        r = {name};
+      }
+      o.items.push_back(std::move(r));
+      o.in_temporary.push_back(temporary);
+    }
+    return o;
+  }
+
+  Rendered call(const Expr &e) {
+    const model::Function &f = c_.model.functions.at(static_cast<std::size_t>(e.index));
+    Operands o = operands(e.args);
+    std::string args;
+    for (std::size_t i = 0; i < o.items.size(); ++i) {
+      Rendered a = i < f.params.size() ? converted(std::move(o.items[i]), e.args[i], f.params[i].type)
+                                       : std::move(o.items[i]);
+      args += (i ? ", " : "") + a.text;
+    }
+    return {fmt::format("{}({})", f.name, args), kPrimary, std::move(o.before)};
+  }
+
+  Rendered unary(const Expr &e) {
+    Rendered operand = render(e.args.at(0));
+    // `- -x` must not become the decrement `--x`.
+    bool minus_minus = e.unary_op == UnaryOp::Neg && !operand.text.empty() && operand.text[0] == '-';
+    if (operand.prec < kUnary || minus_minus) operand.text = bracket(operand.text);
+    return {spelling(e.unary_op) + operand.text, kUnary, std::move(operand.before)};
+  }
+
+  Rendered binary(const Expr &e) {
+    if (auto value = settled_pair(c_, e)) return {*value};
+    if (auto value = settled(e))
+      return {*value ? "true /* always: timers count from 0 to UINT32_MAX */"
+                     : "false /* never: timers count from 0 to UINT32_MAX */"};
+    const BinaryOp op = e.binary_op;
+    const int prec = precedence(op);
+    Rendered l, r;
+    bool l_plain = false, r_plain = false;  // a temporary's name, or already bracketed
+    std::vector<std::string> before;
+    if (op == BinaryOp::And || op == BinaryOp::Or) {
+      // C evaluates the left operand first, and the right one only if the left does not decide:
+      // the right operand's assignments stay inside it.
+      l = render(e.args.at(0));
+      before = std::move(l.before);
+      l.before.clear();
+      r = render(e.args.at(1));
+      r_plain = !r.before.empty();  // closed: one bracketed expression
+      r = closed(std::move(r));
+    } else {
+      Operands o = operands(e.args);
+      l = std::move(o.items.at(0));
+      r = std::move(o.items.at(1));
+      l_plain = o.in_temporary[0];
+      r_plain = o.in_temporary[1];
+      before = std::move(o.before);
+      // An int constant meeting a float is converted to float, as C converts it.
+      const Type a = e.args[0].type, b = e.args[1].type;
+      if (model::is_numeric(a) && model::is_numeric(b) && a != Type::Double && b != Type::Double) {
+        l = converted(std::move(l), e.args[0], b == Type::Float ? Type::Float : a);
+        r = converted(std::move(r), e.args[1], a == Type::Float ? Type::Float : b);
+      }
+    }
+    // The model keeps the user's brackets as Paren nodes; these only restore what the tree says
+    // (operators are left-associative) and quiet the compilers.
+    if (!l_plain && (l.prec < prec || wanted_by_compilers(op, e.args[0], true))) l.text = bracket(l.text);
+    if (!r_plain && (r.prec <= prec || wanted_by_compilers(op, e.args[1], false))) r.text = bracket(r.text);
+    return {fmt::format("{} {} {}", l.text, spelling(op), r.text), prec, std::move(before)};
+  }
+
+  const Context &c_;
+  Temporaries &temps_;
+};
 
 bool blank(std::string_view s) { return s.find_first_not_of(" \t\r\f\v") == std::string_view::npos; }
 
@@ -160,11 +434,57 @@ const char *c_type(model::Type type) {
   }
 }
 
-std::string c_expr(const Context &c, const Expr &e) { return render(c, e).text; }
+std::string Temporaries::add(model::Type type) {
+  std::string name = prefix_ + std::to_string(count_++);
+  pending_.emplace_back(type, name);
+  return name;
+}
 
-std::string c_condition(const Context &c, const Expr &e) {
-  std::string text = render(c, e).text;
-  return e.kind == Expr::Kind::Paren ? text : bracket(text);
+void Temporaries::declare(CodeWriter &w) {
+  std::vector<bool> done(pending_.size(), false);
+  for (std::size_t i = 0; i < pending_.size(); ++i) {
+    if (done[i]) continue;
+    std::string names;
+    for (std::size_t j = i; j < pending_.size(); ++j)
+      if (!done[j] && pending_[j].first == pending_[i].first) {
+        names += (names.empty() ? "" : ", ") + pending_[j].second;
+        done[j] = true;
+      }
+    w.line("{} {}; /* temporaries: the chart calls left to right */", c_type(pending_[i].first), names);
+  }
+  pending_.clear();
+}
+
+std::string c_expr(const Context &c, const Expr &e, Temporaries &temps) {
+  return closed(Renderer(c, temps).render(e)).text;
+}
+
+std::string c_condition(const Context &c, const Expr &e, Temporaries &temps) {
+  Rendered r = Renderer(c, temps).render(e);
+  if (!r.before.empty()) return closed(std::move(r)).text;  // a bracketed comma expression
+  return e.kind == Expr::Kind::Paren ? r.text : bracket(r.text);
+}
+
+std::string c_test(const Context &c, const Expr &e, Temporaries &temps) {
+  const Expr &u = unbracketed(e);
+  if (u.kind != Expr::Kind::Binary || u.binary_op != BinaryOp::Eq || settled(u)) return c_condition(c, e, temps);
+  return closed(Renderer(c, temps).render(u)).text;
+}
+
+std::string c_assertion(const Context &c, const Expr &e, Temporaries &temps) {
+  const int before = temps.count();
+  Rendered r = Renderer(c, temps).render(e);
+  if (temps.count() == before) return fmt::format("assert({});", r.text);
+  std::string text;
+  for (const auto &b : r.before) text += b + "; ";
+  std::string holds = temps.add(Type::Bool);
+  return text + fmt::format("{} = {}; assert({});", holds, r.text, holds);
+}
+
+std::string c_value(const Context &c, const Expr &e, model::Type to) {
+  Temporaries none(c.temp_prefix);  // a constant expression calls nothing: it needs none
+  Renderer r(c, none);
+  return closed(r.converted(r.render(e), e, to)).text;
 }
 
 std::string c_prototype(const model::Function &f) {
@@ -176,13 +496,22 @@ std::string c_prototype(const model::Function &f) {
   return fmt::format("{} {}({})", c_type(f.result), f.name, params.empty() ? "void" : params);
 }
 
-void emit_statements(CodeWriter &w, const Context &c, const std::vector<model::Stmt> &stmts) {
+std::vector<std::string> c_statements(const Context &c, const std::vector<model::Stmt> &stmts, Temporaries &temps) {
+  Renderer r(c, temps);
+  std::vector<std::string> text;
+  for (const auto &s : stmts) text.push_back(s.kind == model::Stmt::Kind::Verbatim ? "" : r.statement(s));
+  return text;
+}
+
+void emit_statements(CodeWriter &w, const Context &c, const std::vector<model::Stmt> &stmts,
+                     const std::vector<std::string> &text) {
   const SourceManager *sources = c.model.sources;
   // The chart line the next output line stands for; a #line is needed only when it is not
   // the statement's own line (0: unknown).
   FileId file = 0;
   std::uint32_t next = 0;
-  for (const auto &s : stmts) {
+  for (std::size_t i = 0; i < stmts.size(); ++i) {
+    const auto &s = stmts[i];
     if (s.kind == model::Stmt::Kind::Verbatim) {
       emit_verbatim(w, sources, s.range, s.verbatim);
       next = 0;
@@ -194,7 +523,7 @@ void emit_statements(CodeWriter &w, const Context &c, const std::vector<model::S
       file = s.range.file;
       next = line + 1;
     }
-    w.line(statement(c, s));
+    w.line(text.at(i));
   }
 }
 

@@ -12,12 +12,13 @@ namespace {
 
 class FsmRun {
 public:
-  FsmRun(CodeWriter &w, const Context &c) : w_(w), c_(c) {}
+  FsmRun(CodeWriter &w, const Context &c) : w_(w), c_(c), temps_(c.temp_prefix) {}
 
   void emit() {
     w_.line("void {}_run({} *{})", c_.type, c_.type, c_.self);
     w_.line("{");
     w_.indent();
+    declarations();
     if (!uses_self()) {
       section("");
       w_.line("(void){}; /* the machine has neither transitions nor actions */", c_.self);
@@ -42,6 +43,16 @@ private:
     if (!comment.empty()) w_.line(std::string_view(comment));
   }
 
+  /// The conditions are rendered first: the temporaries they need belong to the whole function
+  /// (the transitions are one if/else-if chain), declared at its top.
+  void declarations() {
+    for (const auto &t : c_.chart.transitions)
+      conditions_.push_back(t.condition ? c_condition(c_, *t.condition, temps_) : "");
+    if (!temps_.pending()) return;
+    section("");
+    temps_.declare(w_);
+  }
+
   bool uses_self() const {
     if (!c_.chart.transitions.empty() || c_.needs_started || c_.has_timers || c_.has_terminal) return true;
     for (const auto &p : c_.chart.places)
@@ -58,13 +69,19 @@ private:
     section("/* First tick: the initial state enters */");
     w_.line("if (!{}) {{", c_.field(c_.started));
     w_.indent();
-    w_.line("{} = true;", c_.field(c_.started));
+    std::vector<std::vector<std::string>> text;
     for (const auto &p : c_.chart.places)
+      text.push_back(p.initial && has_code(p.entry) ? c_statements(c_, *p.entry, temps_) : std::vector<std::string>{});
+    temps_.declare(w_);
+    w_.line("{} = true;", c_.field(c_.started));
+    for (std::size_t i = 0; i < c_.chart.places.size(); ++i) {
+      const auto &p = c_.chart.places[i];
       if (p.initial && has_code(p.entry)) {
         w_.line("/* entry {} */", p.name);
-        emit_statements(w_, c_, *p.entry);
+        emit_statements(w_, c_, *p.entry, text[i]);
         w_.line_back();
       }
+    }
     w_.dedent();
     w_.line("}");
   }
@@ -102,7 +119,7 @@ private:
       w_.line("/* {}: {} */", t.name, transition_label(c_, t));
       std::string test = in_state(t.inputs.at(0));
       if (t.condition) {
-        test += " && " + c_condition(c_, *t.condition);
+        test += " && " + conditions_.at(i);
         if (c_.model.sources) w_.line_from(*c_.model.sources, t.condition->range);
       }
       w_.line("{}if ({}) {{", i == 0 ? "" : "else ", test);
@@ -173,11 +190,19 @@ private:
     for (int p = 0; p < static_cast<int>(c_.chart.places.size()); ++p) {
       const auto &place = c_.place(p);
       if (place.terminal == model::Terminal::None || !place.post) continue;
+      std::string check = c_assertion(c_, *place.post, temps_);
       w_.line("if ({}) {{", in_state(p));
       w_.indent();
+      // With temporaries the check is more than assert(): with NDEBUG none of it is compiled.
+      const bool temporaries = temps_.pending();
+      if (temporaries) {
+        directive(w_, "#ifndef NDEBUG");
+        temps_.declare(w_);
+      }
       if (c_.model.sources) w_.line_from(*c_.model.sources, place.post->range);
-      w_.line("assert({});", c_expr(c_, *place.post));
+      w_.line(std::string_view(check));
       w_.line_back();
+      if (temporaries) directive(w_, "#endif");
       w_.dedent();
       w_.line("}");
     }
@@ -197,8 +222,10 @@ private:
 
   void block(const std::vector<model::Stmt> &stmts, const std::string &first = "") {
     w_.indent();
+    std::vector<std::string> text = c_statements(c_, stmts, temps_);
+    temps_.declare(w_);
     if (!first.empty()) w_.line(std::string_view(first));
-    emit_statements(w_, c_, stmts);
+    emit_statements(w_, c_, stmts, text);
     w_.line_back();
     w_.dedent();
     w_.line("}");
@@ -207,6 +234,8 @@ private:
   CodeWriter &w_;
   const Context &c_;
   bool started_ = false;
+  Temporaries temps_;
+  std::vector<std::string> conditions_;  ///< by transition, rendered by declarations()
 };
 
 } // namespace

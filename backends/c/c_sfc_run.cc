@@ -12,7 +12,7 @@ namespace {
 
 class SfcRun {
 public:
-  SfcRun(CodeWriter &w, const Context &c) : w_(w), c_(c) {}
+  SfcRun(CodeWriter &w, const Context &c) : w_(w), c_(c), temps_(c.temp_prefix) {}
 
   void emit() {
     w_.line("void {}_run({} *{})", c_.type, c_.type, c_.self);
@@ -56,6 +56,10 @@ private:
   void declarations() {
     section("");
     if (produces()) w_.line("unsigned {}[{}] = {{0}}; /* activation produced in this tick */", c_.add, c_.place_count);
+    // The conditions are rendered first: the temporaries they need belong to the whole function.
+    for (const auto &t : c_.chart.transitions)
+      conditions_.push_back(t.condition ? c_condition(c_, *t.condition, temps_) : "");
+    temps_.declare(w_);
     if (!c_.needs_snapshot()) directive(w_, "#ifdef " + c_.hooks_macro);
     w_.line("unsigned {}[{}]; /* the activation at the start of the tick */", c_.before, c_.place_count);
     w_.line("memcpy({0}, {1}, sizeof {0});", c_.before, c_.field(c_.av));
@@ -69,13 +73,19 @@ private:
     section("/* First tick: the initial places enter */");
     w_.line("if (!{}) {{", c_.field(c_.started));
     w_.indent();
-    w_.line("{} = true;", c_.field(c_.started));
+    std::vector<std::vector<std::string>> text;
     for (const auto &p : c_.chart.places)
+      text.push_back(p.initial && has_code(p.entry) ? c_statements(c_, *p.entry, temps_) : std::vector<std::string>{});
+    temps_.declare(w_);
+    w_.line("{} = true;", c_.field(c_.started));
+    for (std::size_t i = 0; i < c_.chart.places.size(); ++i) {
+      const auto &p = c_.chart.places[i];
       if (p.initial && has_code(p.entry)) {
         w_.line("/* entry {} */", p.name);
-        emit_statements(w_, c_, *p.entry);
+        emit_statements(w_, c_, *p.entry, text[i]);
         w_.line_back();
       }
+    }
     w_.dedent();
     w_.line("}");
   }
@@ -102,7 +112,7 @@ private:
       std::string test;
       for (int p : t.inputs) test += (test.empty() ? "" : " && ") + c_.av_of(p);
       if (t.condition) {
-        test += (test.empty() ? "" : " && ") + c_condition(c_, *t.condition);
+        test += (test.empty() ? "" : " && ") + conditions_.at(i);
         if (c_.model.sources) w_.line_from(*c_.model.sources, t.condition->range);
       }
       w_.line("if ({}) {{", test.empty() ? "true" : test);
@@ -187,8 +197,10 @@ private:
   /// `first`, if any, is engine code that goes before them.
   void block(const std::vector<model::Stmt> &stmts, const std::string &first = "") {
     w_.indent();
+    std::vector<std::string> text = c_statements(c_, stmts, temps_);
+    temps_.declare(w_);
     if (!first.empty()) w_.line(std::string_view(first));
-    emit_statements(w_, c_, stmts);
+    emit_statements(w_, c_, stmts, text);
     w_.line_back();
     w_.dedent();
     w_.line("}");
@@ -197,6 +209,8 @@ private:
   CodeWriter &w_;
   const Context &c_;
   bool started_ = false;
+  Temporaries temps_;
+  std::vector<std::string> conditions_;  ///< by transition, rendered by declarations()
 };
 
 } // namespace

@@ -16,7 +16,7 @@ namespace {
 /// What both scalable run functions share: sections, blocks, the first tick.
 class ScalableRun {
 public:
-  ScalableRun(CodeWriter &w, const Context &c) : w_(w), c_(c), owned_(c.chart.places.size()) {
+  ScalableRun(CodeWriter &w, const Context &c) : w_(w), c_(c), temps_(c.temp_prefix), owned_(c.chart.places.size()) {
     // Each transition under its owner (the sequential layout: its one input), in declaration
     // order, so that the writers stay linear in the chart.
     for (std::size_t t = 0; t < c.chart.transitions.size(); ++t) {
@@ -48,26 +48,58 @@ protected:
     section("/* First tick: the initial places enter */");
     w_.line("if (!{}) {{", c_.field(c_.started));
     w_.indent();
-    w_.line("{} = true;", c_.field(c_.started));
+    std::vector<std::vector<std::string>> text;
     for (const auto &p : c_.chart.places)
+      text.push_back(p.initial && has_code(p.entry) ? c_statements(c_, *p.entry, temps_) : std::vector<std::string>{});
+    temps_.declare(w_);
+    w_.line("{} = true;", c_.field(c_.started));
+    for (std::size_t i = 0; i < c_.chart.places.size(); ++i) {
+      const auto &p = c_.chart.places[i];
       if (p.initial && has_code(p.entry)) {
         w_.line("/* entry {} */", p.name);
-        emit_statements(w_, c_, *p.entry);
+        emit_statements(w_, c_, *p.entry, text[i]);
         w_.line_back();
       }
+    }
     w_.dedent();
     w_.line("}");
   }
 
   /// `case X_P:` with the chart's statements (and engine code `first` before them), then `break;`.
   void case_block(int place, const std::vector<model::Stmt> &stmts, const std::string &first = "") {
-    w_.line("case {}:", constant(place));
-    w_.indent();
+    std::vector<std::string> text = c_statements(c_, stmts, temps_);
+    case_begin(constant(place));
     if (!first.empty()) w_.line(std::string_view(first));
-    emit_statements(w_, c_, stmts);
+    emit_statements(w_, c_, stmts, text);
     w_.line_back();
     w_.line("break;");
+    case_end();
+  }
+
+  /// `case X:`, and what it runs indented. A case whose chart code needs temporaries (c_expr.h)
+  /// is a block, `case X: {`, that declares them: a declaration cannot follow a label.
+  void case_begin(const std::string &label) {
+    braced_ = temps_.pending();
+    w_.line("case {}:{}", label, braced_ ? " {" : "");
+    w_.indent();
+    temps_.declare(w_);
+  }
+  void case_end() {
     w_.dedent();
+    if (braced_) w_.line("}");
+    braced_ = false;
+  }
+
+  /// The conditions of `transitions`, rendered before the code around them is written.
+  /// `alone`: each is the whole test of its `if` (no input counters to test first).
+  std::vector<std::string> conditions(const std::vector<std::size_t> &transitions, bool alone = false) {
+    std::vector<std::string> text;
+    for (std::size_t i : transitions) {
+      const auto &t = c_.chart.transitions[i];
+      if (!t.condition) text.emplace_back();
+      else text.push_back(alone ? c_test(c_, *t.condition, temps_) : c_condition(c_, *t.condition, temps_));
+    }
+    return text;
   }
 
   void switch_end() {
@@ -76,11 +108,12 @@ protected:
     w_.line("}");
   }
 
-  /// `if (<inputs> && (<condition>)) {` for transition `t`; `inputs`: the counter tests.
-  void transition_test(const model::Transition &t, const std::string &inputs) {
+  /// `if (<inputs> && (<condition>)) {` for transition `t`; `inputs`: the counter tests;
+  /// `condition`: the condition as conditions() rendered it.
+  void transition_test(const model::Transition &t, const std::string &inputs, const std::string &condition) {
     std::string test = inputs;
     if (t.condition) {
-      test += (test.empty() ? "" : " && ") + c_condition(c_, *t.condition);
+      test += (test.empty() ? "" : " && ") + condition;
       if (c_.model.sources) w_.line_from(*c_.model.sources, t.condition->range);
     }
     w_.line("if ({}) {{", test.empty() ? "true" : test);
@@ -90,9 +123,11 @@ protected:
   CodeWriter &w_;
   const Context &c_;
   bool started_ = false;
+  Temporaries temps_;
 
 private:
   std::vector<std::vector<std::size_t>> owned_;
+  bool braced_ = false;  ///< the open case is a block
 };
 
 // ------------------------------------------------------------------------------ sequential
@@ -153,21 +188,25 @@ private:
     w_.line("   the first whose condition holds takes the activation */");
     w_.line("switch ({}) {{", current());
     for (int p = 0; p < places(); ++p) {
-      bool any = false;
+      // The transitions tried: up to the first that always fires (the ones after it are never open).
+      std::vector<std::size_t> tried;
       for (std::size_t i : owned(p)) {
-        const auto &t = c_.chart.transitions[i];
-        if (!any) w_.line("case {}:", constant(p));
-        any = true;
-        w_.indent();
+        tried.push_back(i);
+        if (!c_.chart.transitions[i].condition) break;
+      }
+      if (tried.empty()) continue;
+      std::vector<std::string> test = conditions(tried, true);
+      case_begin(constant(p));
+      for (std::size_t k = 0; k < tried.size(); ++k) {
+        const auto &t = c_.chart.transitions[tried[k]];
         w_.line("/* {}: {} */", t.name, transition_label(c_, t));
-        transition_test(t, "");
+        transition_test(t, "", test[k]);
         w_.line("    {} = {};", current(), constant(t.outputs.front()));
         w_.line("    break;");
         w_.line("}");
-        w_.dedent();
-        if (!t.condition) break;  // it always fires: the transitions after it are never open
       }
-      if (any) w_.line("    break;");
+      w_.line("break;");
+      case_end();
     }
     switch_end();
   }
@@ -339,12 +378,12 @@ private:
 
   /// Step 2, one block per transition as in the readable form. A counter that falls to 0 leaves
   /// the active set at once: the place has no open transition left this tick.
-  void transition_block(std::size_t index) {
+  void transition_block(std::size_t index, const std::string &condition) {
     const auto &t = c_.chart.transitions[index];
     w_.line("/* {}: {} */", t.name, transition_label(c_, t));
     std::string inputs;
     for (int p : t.inputs) inputs += (inputs.empty() ? "" : " && ") + c_.av_of(p);
-    transition_test(t, inputs);
+    transition_test(t, inputs, condition);
     w_.indent();
     for (int p : t.inputs) {
       std::string lost = c_.watched(p) ? fmt::format(" {}[{}++] = {};", c_.lost, c_.lost_n, constant(p)) : "";
@@ -366,15 +405,12 @@ private:
       w_.line("   The activation they produce waits in {}[] and cannot be consumed before the next tick */", c_.add);
       members_begin(active_set(), c_.field(c_.active));
       for (int p = 0; p < places(); ++p) {
-        bool any = false;
-        for (std::size_t t : owned(p)) {
-          if (!any) w_.line("case {}:", constant(p));
-          any = true;
-          w_.indent();
-          transition_block(t);
-          w_.dedent();
-        }
-        if (any) w_.line("    break;");
+        if (owned(p).empty()) continue;
+        std::vector<std::string> test = conditions(owned(p));
+        case_begin(constant(p));
+        for (std::size_t k = 0; k < owned(p).size(); ++k) transition_block(owned(p)[k], test[k]);
+        w_.line("break;");
+        case_end();
       }
       members_end();
       return;
@@ -392,11 +428,11 @@ private:
     w_.indent();
     w_.line("switch (({} << 5) | {}({})) {{", w, c_.lowest_fn, b);
     for (std::size_t t = 0; t < c_.chart.transitions.size(); ++t) {
-      w_.line("case {}:", c_.transition_const[t]);
-      w_.indent();
-      transition_block(t);
+      std::vector<std::string> test = conditions({t});
+      case_begin(c_.transition_const[t]);
+      transition_block(t, test[0]);
       w_.line("break;");
-      w_.dedent();
+      case_end();
     }
     members_end();
   }

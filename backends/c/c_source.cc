@@ -92,7 +92,7 @@ void init(CodeWriter &w, const Context &c) {
   if (c.needs_started) w.line("{} = false;", c.field(c.started));
   for (std::size_t v = 0; v < c.chart.vars.size(); ++v) {
     const auto &var = c.chart.vars[v];
-    std::string value = var.init ? c_expr(c, *var.init) : var.type == model::Type::Bool ? "false" : "0";
+    std::string value = var.init ? c_value(c, *var.init, var.type) : var.type == model::Type::Bool ? "false" : "0";
     w.line("{} = {};", c.field(c.var_field[v]), value);
   }
   w.dedent();

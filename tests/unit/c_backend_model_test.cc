@@ -112,26 +112,30 @@ TEST_CASE("c backend: expressions keep C's meaning and satisfy -Wall", "[c_backe
   b.fn("A", Type::Bool).fn("Bb", Type::Bool).fn("C", Type::Bool).fn("N", Type::Int).fn("Go", Type::Void, {{Type::Int, ""}});
   int half = b.constant("HALF", B::float_lit("-0.5"));
   b.var("x", Type::Double);
+  b.var("a", Type::Bool);
+  b.var("bb", Type::Bool);
   b.place("P", true, {b.assign("x", AssignOp::Set, B::un(UnaryOp::Neg, b.const_ref(half))),
                       b.act("Go", {B::un(UnaryOp::Neg, B::un(UnaryOp::Neg, b.call("N")))}),
                       b.act("Go", {B::bin(BinaryOp::Sub, b.call("N"), B::bin(BinaryOp::Sub, b.call("N"), b.call("N")))})});
   b.place("Q");
   auto a = b.call("A"), bb = b.call("Bb"), c = b.call("C");
   b.transition({"P"}, {"Q"}, B::bin(BinaryOp::Or, a, B::bin(BinaryOp::And, bb, c)));
-  b.transition({"P"}, {"Q"}, B::bin(BinaryOp::Eq, B::bin(BinaryOp::Eq, a, bb), c));
-  b.transition({"P"}, {"Q"}, B::bin(BinaryOp::Ne, B::un(UnaryOp::Not, a), bb));
+  b.transition({"P"}, {"Q"}, B::bin(BinaryOp::Eq, B::bin(BinaryOp::Eq, b.var_ref("a"), b.var_ref("bb")), c));
+  b.transition({"P"}, {"Q"}, B::bin(BinaryOp::Ne, B::un(UnaryOp::Not, a), b.var_ref("bb")));
   b.transition({"P"}, {"Q"}, B::bin(BinaryOp::Ge, b.elapsed("P"), B::ticks(0, 0)));
   b.transition({"P"}, {"Q"}, B::bin(BinaryOp::Gt, B::ticks(0, 0), b.elapsed("P")));
   b.transition({"P"}, {"Q"}, B::bin(BinaryOp::Lt, b.elapsed("P"), B::ticks(5000000000ul, 5e10)));
   b.transition({"P"}, {"Q"}, B::paren(B::bin(BinaryOp::And, b.call("A"), b.call("C"))));
   auto files = emit_c(b.model(), "expr.c", false);
   const std::string &src = files[0].contents;
-  CHECK(contains(src, "m->x = -(-0.5 /* HALF */);"));
+  CHECK(contains(src, "m->x = -(-0.5f /* HALF */);"));  // a float constant is a float
   CHECK(contains(src, "Go(-(-N()));"));
-  CHECK(contains(src, "Go(N() - (N() - N()));"));
+  // Calls left to right: C would leave the order of the three N() open.
+  CHECK(contains(src, "int gfec_t0, gfec_t1; /* temporaries: the chart calls left to right */\n"));
+  CHECK(contains(src, "gfec_t0 = N(); gfec_t1 = N(); Go(gfec_t0 - (gfec_t1 - N()));"));
   CHECK(contains(src, "(A() || (Bb() && C()))"));
-  CHECK(contains(src, "((A() == Bb()) == C())"));
-  CHECK(contains(src, "((!A()) != Bb())"));
+  CHECK(contains(src, "((m->a == m->bb) == C())"));
+  CHECK(contains(src, "((!A()) != m->bb)"));
   CHECK(contains(src, "(true /* always: timers count from 0 to UINT32_MAX */)"));
   CHECK(contains(src, "(false /* never: timers count from 0 to UINT32_MAX */)"));
   CHECK(contains(src, "&& (A() && C())) {"));  // the user's brackets, not doubled
@@ -140,6 +144,36 @@ TEST_CASE("c backend: expressions keep C's meaning and satisfy -Wall", "[c_backe
   for (const auto &f : files) write_file(dir / f.path, f.contents);
   for (const auto &cc : c_compilers()) {
     auto r = run_command(fmt::format("cd '{}' && {} {} -c expr.c -o /dev/null", dir.string(), cc, kStrictFlags),
+                         dir / "build.log");
+    INFO(cc << "\n" << r.output);
+    CHECK(r.status == 0);
+  }
+}
+
+TEST_CASE("c backend: a float constant is a float, rounded as the chart rounds it", "[c_backend]") {
+  ChartBuilder b("Round", Kind::Sfc);
+  b.fn("D", Type::Void, {{Type::Double, ""}});
+  // Just above halfway between 1 and the next float: read directly as a float it rounds up, but
+  // the chart reads a double (exactly halfway) and converts it, which rounds to even: 1.
+  int odd = b.constant("ODD", B::float_lit("1.000000059604644775390625000001"));
+  int tenth = b.constant("TENTH", B::float_lit("0.1"));
+  b.place("P", true, {b.act("D", {b.const_ref(odd)}), b.act("D", {b.const_ref(tenth)})});
+  const std::string src = emit_c(b.model(), "round.c", false)[0].contents;
+  CHECK(contains(src, "D((float)1.000000059604644775390625000001 /* ODD */);"));
+  CHECK(contains(src, "D(0.1f /* TENTH */);"));  // C would pass the double 0.1
+}
+
+TEST_CASE("c backend: temporaries give way to interface functions named like them", "[c_backend]") {
+  ChartBuilder b("Clash", Kind::Sfc);
+  b.fn("gfec_t0", Type::Int).fn("A", Type::Void, {{Type::Int, "a"}, {Type::Int, "b"}});
+  b.place("P", true, {b.act("A", {b.call("gfec_t0"), b.call("gfec_t0")})});
+  auto files = emit_c(b.model(), "clash.c", false);
+  CHECK(contains(files[0].contents, "int gfec_t_0; /* temporaries: the chart calls left to right */\n"
+                                    "        gfec_t_0 = gfec_t0(); A(gfec_t_0, gfec_t0());\n"));
+  fs::path dir = scratch_dir("temporaries_clash");
+  for (const auto &f : files) write_file(dir / f.path, f.contents);
+  for (const auto &cc : c_compilers()) {
+    auto r = run_command(fmt::format("cd '{}' && {} {} -c clash.c -o /dev/null", dir.string(), cc, kStrictFlags),
                          dir / "build.log");
     INFO(cc << "\n" << r.output);
     CHECK(r.status == 0);

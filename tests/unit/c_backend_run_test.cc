@@ -460,3 +460,261 @@ int main(void)
     }
   }
 }
+
+// ------------------------------------------------------------------ where C reads a chart differently
+// Found by the differential tests (docs/verification.md): each chart below failed there before
+// the back end wrote what the chart means rather than what C would make of its spelling.
+
+TEST_CASE("c engine run: int literals are decimal, a leading zero is not octal", "[c_backend][run]") {
+  // C reads 010 as 8; LANGUAGE.md (and docs/language.md) says 10. Floats with leading zeros are
+  // decimal in C too.
+  std::string log = run("octal", R"(
+interface Bot { void A(int n); void B(double x); }
+const int K = 010 + 1;
+sfc Octal {
+  var int v = 010;
+  initial place P { A(010); A(00); A(v + 007); A(K); v += 010; A(v); A(-010 * 2); B(010.5); B(0010e-1); }
+  place Q;
+  transition P -> Q when v == 030;
+})",
+                        "\n\n\n");
+  const std::string actions = "act A(10)\nact A(0)\nact A({})\nact A(11)\nact A({})\nact A(-20)\nact B(10.5)\nact B(1)\n";
+  CHECK(log == "tick 1\n" + fmt::format(actions, 17, 20) + "av P\n"  // v: 10, then 20
+               "tick 2\n" + fmt::format(actions, 27, 30) + "av P\n"  // v: 20, then 30
+               "tick 3\n"                                           // v == 30 (octal 030 would be 24)
+               "av Q\n");
+}
+
+TEST_CASE("c engine run: a floating value becomes an int by truncation, written as a cast", "[c_backend][run]") {
+  // Without the casts clang rejects the engine (-Wliteral-conversion, and
+  // -Wimplicit-const-int-float-conversion for 16777217, which a float cannot hold).
+  std::string log = run("float_into_int", R"(
+interface Bot { void I(int n); void J(int a, float b); void E(bool b); float F(); double D(); int H(int n); }
+sfc Trunc {
+  var int v = 2.75;
+  var int w = -1.5 * 3;
+  var float g = 16777217;
+  var float f = 0.5;
+  initial place P {
+    I(v); I(w);
+    I(0.25); I(-1.75); I(F());
+    J(D() * 2, 1);
+    v = 0.5; I(v);
+    v += 2.5; I(v);
+    v -= f; I(v);
+    v = -3; v += f; I(v);
+    E(g == 16777216);
+  }
+  place Q;
+  transition P -> Q when H(2.5) == 3;
+})",
+                        "F=3.9 D=1.3\n"
+                        "F=-2.5 D=-0.7\n");
+  CHECK(log == "tick 1\n"
+               "call H(2)\n"       // 2.5 -> 2
+               "cond H -> 0\n"
+               "act I(2)\n"        // v = 2.75 -> 2
+               "act I(-4)\n"       // w = -4.5 -> -4: toward zero
+               "act I(0)\n"
+               "act I(-1)\n"
+               "cond F -> 3.9\n"
+               "act I(3)\n"
+               "cond D -> 1.3\n"
+               "act J(2, 1)\n"     // 2.6 -> 2
+               "act I(0)\n"        // v = 0.5
+               "act I(2)\n"        // v = (int)(0 + 2.5)
+               "act I(1)\n"        // v = (int)(2 - 0.5f)
+               "act I(-2)\n"       // v = (int)(-3 + 0.5f): -2.5 -> -2, not -3 + (int)0.5
+               "act E(1)\n"        // g holds 16777216
+               "av P\n"
+               "tick 2\n"
+               "call H(2)\n"
+               "cond H -> 0\n"
+               "act I(-2)\n"
+               "act I(-4)\n"
+               "act I(0)\n"
+               "act I(-1)\n"
+               "cond F -> -2.5\n"
+               "act I(-2)\n"
+               "cond D -> -0.7\n"
+               "act J(-1, 1)\n"    // -1.4 -> -1
+               "act I(0)\n"
+               "act I(2)\n"
+               "act I(1)\n"
+               "act I(-2)\n"
+               "act E(1)\n"
+               "av P\n");
+}
+
+namespace {
+
+const char *kOrder = R"(
+interface Bot {
+  int S0(); int S1(); int S2(); bool B(); bool C();
+  int Twice(int a, int b);
+  void A(int x, bool y); void Three(int a, int b, int c); void Stop();
+}
+sfc Order {
+  period 10ms;
+  var int v = 0;
+  initial place P {
+    entry { Three(S0(), S1(), S2()); }
+    A(S2(), S0() < 2);
+    Three(S0(), S1() + S2(), -S0());
+    v = S1() - S2() * S0();
+    A(v, B() && C() == B());
+    A(Twice(S1(), S2()), B() || C() != (S0() > S1()));
+  }
+  place Q { entry { A(S1(), S0() > 0); } Stop(); }
+  transition P -> Q when S0() + S1() > S2() && (B() || S2() < S1() - S0());
+  transition Q -> P when elapsed(Q) >= 1s && B();
+})";
+
+} // namespace
+
+TEST_CASE("c engine run: calls are made left to right, in arguments and operands alike", "[c_backend][run]") {
+  // gcc evaluates arguments right to left; C leaves the order open. LANGUAGE.md §4, §5.1: left
+  // to right, && and || short-circuiting. Both engine forms (the scalable one is a switch).
+  std::string log = run("call_order", kOrder,
+                        "S0=1 S1=2 S2=3 Twice=7\n"
+                        "S0=2 S1=2 S2=3 C Twice=5\n"
+                        "S0=1 S1=1 S2=3 B C Twice=4\n"
+                        "S0=1 S1=3 S2=3 B\n"
+                        "\n");
+  CHECK(log == "tick 1\n"
+               "cond S0 -> 1\n"  // entry P: Three(S0(), S1(), S2())
+               "cond S1 -> 2\n"
+               "cond S2 -> 3\n"
+               "act Three(1, 2, 3)\n"
+               "cond S0 -> 1\n"  // T0: S0() + S1() > S2() is false; && stops there
+               "cond S1 -> 2\n"
+               "cond S2 -> 3\n"
+               "cond S2 -> 3\n"  // A(S2(), S0() < 2)
+               "cond S0 -> 1\n"
+               "act A(3, 1)\n"
+               "cond S0 -> 1\n"  // Three(S0(), S1() + S2(), -S0())
+               "cond S1 -> 2\n"
+               "cond S2 -> 3\n"
+               "cond S0 -> 1\n"
+               "act Three(1, 5, -1)\n"
+               "cond S1 -> 2\n"  // v = S1() - S2() * S0() = -1
+               "cond S2 -> 3\n"
+               "cond S0 -> 1\n"
+               "cond B -> 0\n"   // B() && ...: false, C() == B() is not evaluated
+               "act A(-1, 0)\n"
+               "cond S1 -> 2\n"  // Twice(S1(), S2()) before B() || ...
+               "cond S2 -> 3\n"
+               "call Twice(2, 3)\n"
+               "cond Twice -> 7\n"
+               "cond B -> 0\n"
+               "cond C -> 0\n"   // C() != (S0() > S1())
+               "cond S0 -> 1\n"
+               "cond S1 -> 2\n"
+               "act A(7, 0)\n"
+               "av P\n"
+               "tick 2\n"
+               "cond S0 -> 2\n"  // T0: 4 > 3, then B() || S2() < S1() - S0()
+               "cond S1 -> 2\n"
+               "cond S2 -> 3\n"
+               "cond B -> 0\n"
+               "cond S2 -> 3\n"
+               "cond S1 -> 2\n"
+               "cond S0 -> 2\n"  // 3 < 0: T0 does not fire
+               "cond S2 -> 3\n"
+               "cond S0 -> 2\n"
+               "act A(3, 0)\n"
+               "cond S0 -> 2\n"
+               "cond S1 -> 2\n"
+               "cond S2 -> 3\n"
+               "cond S0 -> 2\n"
+               "act Three(2, 5, -2)\n"
+               "cond S1 -> 2\n"  // v = 2 - 3 * 2
+               "cond S2 -> 3\n"
+               "cond S0 -> 2\n"
+               "cond B -> 0\n"
+               "act A(-4, 0)\n"
+               "cond S1 -> 2\n"
+               "cond S2 -> 3\n"
+               "call Twice(2, 3)\n"
+               "cond Twice -> 5\n"
+               "cond B -> 0\n"
+               "cond C -> 1\n"   // 1 != (2 > 2)
+               "cond S0 -> 2\n"
+               "cond S1 -> 2\n"
+               "act A(5, 1)\n"
+               "av P\n"
+               "tick 3\n"
+               "cond S0 -> 1\n"  // T0: 2 > 3 is false
+               "cond S1 -> 1\n"
+               "cond S2 -> 3\n"
+               "cond S2 -> 3\n"
+               "cond S0 -> 1\n"
+               "act A(3, 1)\n"
+               "cond S0 -> 1\n"
+               "cond S1 -> 1\n"
+               "cond S2 -> 3\n"
+               "cond S0 -> 1\n"
+               "act Three(1, 4, -1)\n"
+               "cond S1 -> 1\n"  // v = 1 - 3 * 1
+               "cond S2 -> 3\n"
+               "cond S0 -> 1\n"
+               "cond B -> 1\n"   // B() && C() == B(): C() before the second B()
+               "cond C -> 1\n"
+               "cond B -> 1\n"
+               "act A(-2, 1)\n"
+               "cond S1 -> 1\n"
+               "cond S2 -> 3\n"
+               "call Twice(1, 3)\n"
+               "cond Twice -> 4\n"
+               "cond B -> 1\n"   // || decided: nothing more
+               "act A(4, 1)\n"
+               "av P\n"
+               "tick 4\n"
+               "cond S0 -> 1\n"  // T0: 4 > 3 and B(): P -> Q
+               "cond S1 -> 3\n"
+               "cond S2 -> 3\n"
+               "cond B -> 1\n"
+               "cond S1 -> 3\n"  // entry Q: A(S1(), S0() > 0)
+               "cond S0 -> 1\n"
+               "act A(3, 1)\n"
+               "act Stop\n"
+               "av Q\n"
+               "tick 5\n"        // T1: elapsed(Q) is 1 tick of 100: && stops before B()
+               "act Stop\n"
+               "av Q\n");
+}
+
+namespace {
+
+const char *kOrderFsm = R"(
+interface Bot { int S0(); int S1(); void Log(int a, int b); }
+fsm Machine {
+  initial state Z0 { Log(S0(), S1()); }
+  success state Done post S0() < S1();
+  Z0 -> Done when S1() > S0();
+})";
+
+std::string order_fsm_log(bool checks) {
+  return std::string("tick 1\n"
+                     "cond S1 -> 1\n"  // S1() > S0(): 1 > 2 is false
+                     "cond S0 -> 2\n"
+                     "cond S0 -> 2\n"  // Log(S0(), S1())
+                     "cond S1 -> 1\n"
+                     "act Log(2, 1)\n"
+                     "state Z0 status 0\n"
+                     "tick 2\n"
+                     "cond S1 -> 2\n"  // 2 > 1: to Done
+                     "cond S0 -> 1\n") +
+         (checks ? "cond S0 -> 1\ncond S1 -> 2\n" : "") +  // the postcondition, left to right
+         "state Done status 1\n";
+}
+
+} // namespace
+
+TEST_CASE("c engine run: fsm calls left to right in conditions, actions and postconditions", "[c_backend][run]") {
+  const char *script = "S0=2 S1=1\nS0=1 S1=2\n";
+  CHECK(run("call_order_fsm", kOrderFsm, script) == order_fsm_log(false));
+  CHECK(run("call_order_fsm_checks", kOrderFsm, script, "-DMachine_CHECKS") == order_fsm_log(true));
+  // With NDEBUG assert() reads nothing: the temporaries it would use are left out too (else unused).
+  CHECK(run("call_order_fsm_ndebug", kOrderFsm, script, "-DMachine_CHECKS -DNDEBUG") == order_fsm_log(false));
+}

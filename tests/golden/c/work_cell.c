@@ -20,7 +20,7 @@ void WorkCell_init(WorkCell *m)
     m->timer_RightArm = 0;
     m->started = false;
     m->parts = 0;
-    m->speed = 0.25 /* SLOW */;
+    m->speed = 0.25f /* SLOW */;
 }
 
 void WorkCell_run(WorkCell *m)
