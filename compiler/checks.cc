@@ -15,7 +15,7 @@ const WarningInfo kWarnings[] = {
     {Warning::Deadlock, "deadlock", true, "a reachable sfc state where active places wait and nothing can fire"},
     {Warning::DeadJoin, "dead-join", true, "a join whose input places are never active together"},
     {Warning::UnjoinedFork, "unjoined-fork", false, "a fork whose branches never meet again in a join"},
-    {Warning::AnalysisLimit, "analysis-limit", true, "an analysis stopped at its bound; its findings are incomplete"},
+    {Warning::AnalysisLimit, "analysis-limit", false, "an analysis stopped at its bound; its findings are incomplete"},
     {Warning::TrapState, "trap-state", true, "an fsm state from which no success or failure state is reachable"},
     {Warning::ShadowedTransition, "shadowed-transition", true, "an fsm transition that an earlier one always pre-empts"},
     {Warning::UninitializedConfig, "uninitialized-config", true, "a plan may read a config entry before anything writes it"},

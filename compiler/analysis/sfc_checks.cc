@@ -23,45 +23,64 @@ std::string names(const Chart &c, const std::vector<int> &places) {
 }
 
 /// What the validator already reports: places no chain of live transitions reaches (it warns
-/// about those; this pass speaks only of the rest).
+/// about those; this pass speaks only of the rest). A worklist: linear in the chart.
 std::vector<bool> structurally_reachable(const Chart &c) {
+  std::vector<std::vector<int>> consumers(c.places.size());
+  std::vector<std::size_t> waiting(c.transitions.size());  // inputs not yet reached
+  std::vector<int> todo;
+  for (std::size_t t = 0; t < c.transitions.size(); ++t) {
+    const auto &tr = c.transitions[t];
+    waiting[t] = tr.inputs.size();
+    for (int p : tr.inputs) consumers[static_cast<std::size_t>(p)].push_back(static_cast<int>(t));
+  }
   std::vector<bool> reach(c.places.size());
-  for (std::size_t p = 0; p < c.places.size(); ++p) reach[p] = c.places[p].initial;
-  for (bool changed = true; changed;) {
-    changed = false;
-    for (const auto &t : c.transitions) {
-      bool open = firing_of(t) != Firing::Never;
-      for (int p : t.inputs) open = open && reach[static_cast<std::size_t>(p)];
-      if (!open) continue;
-      for (int q : t.outputs)
-        if (!reach[static_cast<std::size_t>(q)]) reach[static_cast<std::size_t>(q)] = changed = true;
-    }
+  auto reached = [&](int p) {
+    if (reach[static_cast<std::size_t>(p)]) return;
+    reach[static_cast<std::size_t>(p)] = true;
+    todo.push_back(p);
+  };
+  auto fire = [&](const model::Transition &tr) {
+    if (firing_of(tr) == Firing::Never) return;
+    for (int q : tr.outputs) reached(q);
+  };
+  for (const auto &tr : c.transitions)
+    if (tr.inputs.empty()) fire(tr);
+  for (std::size_t p = 0; p < c.places.size(); ++p)
+    if (c.places[p].initial) reached(static_cast<int>(p));
+  while (!todo.empty()) {
+    int p = todo.back();
+    todo.pop_back();
+    for (int t : consumers[static_cast<std::size_t>(p)])
+      if (--waiting[static_cast<std::size_t>(t)] == 0) fire(c.transitions[static_cast<std::size_t>(t)]);
   }
   return reach;
 }
 
 /// Places reachable from `start` along transitions (a place leads to the outputs of every
 /// transition it is an input of).
-std::set<int> downstream(const Chart &c, int start) {
+std::set<int> downstream(const Chart &c, const std::vector<std::vector<int>> &consumers, int start) {
   std::set<int> seen{start};
   std::vector<int> todo{start};
   while (!todo.empty()) {
     int p = todo.back();
     todo.pop_back();
-    for (const auto &t : c.transitions)
-      if (std::find(t.inputs.begin(), t.inputs.end(), p) != t.inputs.end())
-        for (int q : t.outputs)
-          if (seen.insert(q).second) todo.push_back(q);
+    for (int t : consumers[static_cast<std::size_t>(p)])
+      for (int q : c.transitions[static_cast<std::size_t>(t)].outputs)
+        if (seen.insert(q).second) todo.push_back(q);
   }
   return seen;
 }
 
 /// A fork's branches meet when some join takes inputs from two different branches.
 void check_forks(const model::Model &m, const Chart &c, Diagnostics &diag) {
+  if (!diag.warning_options().is_on(Warning::UnjoinedFork)) return;  // off by default; not cheap
+  std::vector<std::vector<int>> consumers(c.places.size());
+  for (std::size_t t = 0; t < c.transitions.size(); ++t)
+    for (int p : c.transitions[t].inputs) consumers[static_cast<std::size_t>(p)].push_back(static_cast<int>(t));
   for (const auto &fork : c.transitions) {
     if (fork.outputs.size() < 2) continue;
     std::vector<std::set<int>> branch;
-    for (int o : fork.outputs) branch.push_back(downstream(c, o));
+    for (int o : fork.outputs) branch.push_back(downstream(c, consumers, o));
     bool meet = false;
     for (const auto &join : c.transitions) {
       if (join.inputs.size() < 2) continue;

@@ -23,7 +23,10 @@ bool covers(const Marking &a, const Marking &b) {
   return true;
 }
 
-/// Every outcome of one tick from a marking: each open free transition fires or not.
+/// Every outcome of one tick from a marking: each open free transition fires or not. The
+/// transitions are walked in a loop; only a free transition that is open branches (the outcome
+/// without it is explored first), so the recursion is as deep as the branches taken, which the
+/// budget bounds, never as deep as the chart is long.
 class Tick {
 public:
   Tick(const model::Chart &c, const std::vector<Firing> &firing, std::size_t budget)
@@ -31,36 +34,35 @@ public:
 
   /// The distinct outcomes, each with the transitions that fired; false if the budget ran out.
   bool outcomes(const Marking &m, std::map<Marking, std::vector<int>> &out) {
-    Marking add(m.size(), 0);
-    std::vector<int> fired;
-    Marking avail = m;
-    visit(0, avail, add, fired, out);
+    visit(0, m, Marking(m.size(), 0), {}, 0, out);
     return used_ <= budget_;
   }
   std::size_t used() const { return used_; }
 
 private:
-  void visit(std::size_t t, Marking &avail, Marking &add, std::vector<int> &fired,
+  static constexpr int kMaxBranches = 64;
+
+  void visit(std::size_t t, Marking avail, Marking add, std::vector<int> fired, int branches,
              std::map<Marking, std::vector<int>> &out) {
-    if (used_ > budget_) return;
-    if (t == c_.transitions.size()) {
-      ++used_;
-      Marking next(avail.size());
-      for (std::size_t p = 0; p < avail.size(); ++p) next[p] = give(avail[p], add[p]);
-      out.emplace(std::move(next), fired);
-      return;
+    for (; t < c_.transitions.size(); ++t) {
+      if (used_ > budget_) return;
+      const model::Transition &tr = c_.transitions[t];
+      const Firing f = firing_[t];
+      if (f == Firing::Never || !is_open(tr, avail)) continue;
+      if (f == Firing::Free) {
+        if (branches >= kMaxBranches) {
+          used_ = budget_ + 1;
+          return;
+        }
+        visit(t + 1, avail, add, fired, branches + 1, out);  // it does not fire
+      }
+      for (int p : tr.inputs) avail[static_cast<std::size_t>(p)] = take(avail[static_cast<std::size_t>(p)]);
+      for (int p : tr.outputs) add[static_cast<std::size_t>(p)] = give(add[static_cast<std::size_t>(p)], 1);
+      fired.push_back(static_cast<int>(t));
     }
-    const model::Transition &tr = c_.transitions[t];
-    const Firing f = firing_[t];
-    const bool open = f != Firing::Never && is_open(tr, avail);
-    if (!open || f == Firing::Free) visit(t + 1, avail, add, fired, out);
-    if (!open) return;
-    Marking avail2 = avail, add2 = add;
-    for (int p : tr.inputs) avail2[static_cast<std::size_t>(p)] = take(avail2[static_cast<std::size_t>(p)]);
-    for (int p : tr.outputs) add2[static_cast<std::size_t>(p)] = give(add2[static_cast<std::size_t>(p)], 1);
-    fired.push_back(static_cast<int>(t));
-    visit(t + 1, avail2, add2, fired, out);
-    fired.pop_back();
+    ++used_;
+    for (std::size_t p = 0; p < avail.size(); ++p) avail[p] = give(avail[p], add[p]);
+    out.emplace(std::move(avail), std::move(fired));
   }
 
   const model::Chart &c_;
@@ -68,6 +70,21 @@ private:
   std::size_t budget_;
   std::size_t used_ = 0;
 };
+
+/// A quick necessary condition for `a` to cover `b` strictly: more unbounded places, or as many
+/// and more activation in the rest. It spares most comparisons of whole markings.
+struct Size {
+  std::size_t omegas = 0;
+  std::uint64_t finite = 0;
+};
+Size size_of(const Marking &m) {
+  Size s;
+  for (auto k : m) k == kOmega ? ++s.omegas : s.finite += k;
+  return s;
+}
+bool may_cover_strictly(const Size &a, const Size &b) {
+  return a.omegas > b.omegas || (a.omegas == b.omegas && a.finite > b.finite);
+}
 
 } // namespace
 
@@ -93,11 +110,13 @@ StateSpace explore(const model::Chart &chart, const Limits &limits) {
   Marking initial;
   for (const auto &p : chart.places) initial.push_back(p.initial ? 1 : 0);
   std::map<Marking, int> index;
+  std::vector<Size> sizes;
   auto add_state = [&](Marking m, int parent, std::vector<int> fired) {
     auto found = index.find(m);
     if (found != index.end()) return found->second;
     int i = static_cast<int>(s.states.size());
     index.emplace(m, i);
+    sizes.push_back(size_of(m));
     s.states.push_back(std::move(m));
     s.parent.push_back(parent);
     s.fired.push_back(std::move(fired));
@@ -105,12 +124,14 @@ StateSpace explore(const model::Chart &chart, const Limits &limits) {
     return i;
   };
   add_state(initial, -1, {});
+  const std::size_t size = chart.places.size() + chart.transitions.size() + 1;
   for (std::size_t i = 0; i < s.states.size(); ++i) {
     std::map<Marking, std::vector<int>> outcomes;
     Tick tick(chart, firing, limits.max_outcomes - std::min(limits.max_outcomes, s.outcomes));
     bool all = tick.outcomes(s.states[i], outcomes);
     s.outcomes += tick.used();
-    if (!all) {
+    s.work += size * (1 + tick.used());
+    if (!all || s.work > limits.max_work) {
       s.limit_hit = true;
       break;
     }
@@ -118,15 +139,20 @@ StateSpace explore(const model::Chart &chart, const Limits &limits) {
     for (auto &[next, fired] : outcomes) {
       for (int t : fired) s.ever_fired[static_cast<std::size_t>(t)] = true;
       Marking m = next;
+      Size m_size = size_of(m);
       // Karp-Miller: growth over an ancestor can repeat, so it is unbounded.
       for (int a = static_cast<int>(i); a >= 0; a = s.parent[static_cast<std::size_t>(a)]) {
+        ++s.work;
+        if (!may_cover_strictly(m_size, sizes[static_cast<std::size_t>(a)])) continue;
         const Marking &old = s.states[static_cast<std::size_t>(a)];
+        s.work += size;
         if (m == old || !covers(m, old)) continue;
         for (std::size_t p = 0; p < m.size(); ++p)
           if (m[p] > old[p] && m[p] != kOmega) {
             m[p] = kOmega;
             s.accelerated = true;
           }
+        m_size = size_of(m);
       }
       if (index.count(m) == 0 && s.states.size() >= limits.max_states) {
         s.limit_hit = true;

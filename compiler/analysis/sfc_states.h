@@ -24,6 +24,10 @@ using Marking = std::vector<std::uint32_t>;
 struct Limits {
   std::size_t max_states = 20000;      ///< activation states explored
   std::size_t max_outcomes = 400000;   ///< tick outcomes enumerated (2^open free transitions each)
+  /// Work, counted in places and transitions visited (a state costs the chart's size, each of
+  /// its outcomes as much again): it keeps the analysis of a chart of any size to a fixed cost,
+  /// so the compiler stays linear; a large chart gets fewer states.
+  std::size_t max_work = 10000000;
 };
 
 enum class Firing { Free, Always, Never };
@@ -38,6 +42,7 @@ struct StateSpace {
   std::vector<std::vector<int>> successors;
   std::vector<bool> ever_fired;            ///< by transition: fires in some explored tick
   bool limit_hit = false;    ///< stopped at a limit: some reachable states are missing
+  std::size_t work = 0;      ///< work done, as Limits::max_work counts it
   bool accelerated = false;  ///< some count became ω: the states are an approximation
   std::size_t outcomes = 0;  ///< tick outcomes enumerated
 

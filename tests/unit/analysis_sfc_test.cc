@@ -154,9 +154,42 @@ sfc Many {
   analysis::Limits small;
   small.max_states = 5;
   std::string report;
-  CHECK(headlines(analyze_text(*c, false, small, &report)) ==
+  // -Wanalysis-limit is off by default: a large chart is not a mistake; --analyze turns it on.
+  CHECK(analyze_text(*c, false, small) == "");
+  CHECK(headlines(analyze_text(*c, true, small, &report)) ==
         "t.sfc:3:5: warning: the analysis of sfc 'Many' stopped after 5 activation states and 16 tick outcomes; what "
         "it says about unreachable places, dead transitions and joins is left out [-Wanalysis-limit]\n");
   CHECK(report.find("activation states: 5 (stopped at the limit of 5 states; incomplete)") != std::string::npos);
   CHECK(analyze_text(*c) == "");  // 16 states: within the default limit
+}
+
+TEST_CASE("analysis sfc: a chart of any size costs a bounded amount of work") {
+  // A ring of 200000 places with one token: as many states as places, each as large as the
+  // chart. The work budget stops the exploration after a few states, without a deep recursion.
+  const int n = 200000;
+  std::string text = "sfc Ring {\n  initial place P0;\n";
+  for (int i = 1; i < n; ++i) text += "  place P" + std::to_string(i) + ";\n";
+  for (int i = 0; i < n; ++i) text += "  P" + std::to_string(i) + " -> P" + std::to_string((i + 1) % n) + " when Go();\n";
+  text += "}\n";
+  auto c = compile(text, kBot);
+  analysis::Limits limits;
+  auto space = analysis::explore(c->model.charts.at(0), limits);
+  CHECK(space.limit_hit);
+  CHECK(space.states.size() < 100);
+  CHECK(space.work <= limits.max_work + 3 * (2 * n + 1));
+  std::string report;
+  CHECK(headlines(analyze_text(*c, true, limits, &report)).find("[-Wanalysis-limit]") != std::string::npos);
+  CHECK(report.find("incomplete") != std::string::npos);
+
+  // A small ring is explored whole, and a long chain of unconditional transitions (no branch at
+  // all) neither recurses nor stops early.
+  auto small = compile("sfc Ring { initial place A; place B; place C; A -> B when Go(); B -> C when Go(); C -> A; }", kBot);
+  CHECK(analysis::explore(small->model.charts.at(0)).exact());
+  std::string chain = "sfc Chain {\n  initial place Q0;\n";
+  for (int i = 1; i < 20000; ++i) chain += "  place Q" + std::to_string(i) + ";\n";
+  for (int i = 0; i + 1 < 20000; ++i) chain += "  Q" + std::to_string(i) + " -> Q" + std::to_string(i + 1) + ";\n";
+  chain += "}\n";
+  auto long_chain = compile(chain, kBot);
+  auto chain_space = analysis::explore(long_chain->model.charts.at(0), limits);
+  CHECK(chain_space.outcomes >= 1);
 }
