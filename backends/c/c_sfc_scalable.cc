@@ -321,6 +321,8 @@ private:
       w_.line("{} {}[{}]; /* watched places whose activation rose from 0 */", place_type(), c_.gained,
               l().watch_capacity);
       w_.line("uint32_t {} = 0;", c_.gained_n);
+      if (l().watch_capacity == 1)  // no sort reads them: say to code analysers that they are set
+        w_.line("{0}[0] = 0; {1}[0] = 0; /* only the entries written are read */", c_.lost, c_.gained);
     }
     if (has_transitions() || any_actions()) w_.line("uint32_t {}, {}; /* a word of a set, its bits */", c_.word, c_.bits);
     if (has_transitions()) w_.line("uint32_t {}, {};", c_.index, i);
@@ -463,8 +465,10 @@ private:
     if (!has_transitions() || l().watch_capacity == 0) return;
     section("/* Places that lost their activation exit, then places that gained it enter */");
     const std::string &i = c_.i, &j = c_.word;
-    w_.line("{}({}, {});", c_.sort_fn, c_.lost, c_.lost_n);
-    w_.line("{}({}, {});", c_.sort_fn, c_.gained, c_.gained_n);
+    if (l().watch_capacity > 1) {  // a list of one is sorted
+      w_.line("{}({}, {});", c_.sort_fn, c_.lost, c_.lost_n);
+      w_.line("{}({}, {});", c_.sort_fn, c_.gained, c_.gained_n);
+    }
     bool exits = false;
     for (int p = 0; p < places(); ++p) exits = exits || c_.runs_exit(p);
     if (exits) {
@@ -528,6 +532,22 @@ private:
     members_end();
   }
 };
+
+void sort_helper(CodeWriter &w, const Context &c, const char *type) {
+  w.blank();
+  w.line("/* Sorts a short list of place numbers (the places that lost or gained activation in a tick). */");
+  w.line("static void {}({} *list, uint32_t n)", c.sort_fn, type);
+  w.line("{");
+  w.line("    uint32_t i, j;");
+  w.line("    for (i = 1; i < n; ++i) {");
+  w.line("        {} key = list[i];", type);
+  w.line("        for (j = i; j > 0u && list[j - 1u] > key; --j) {");
+  w.line("            list[j] = list[j - 1u];");
+  w.line("        }");
+  w.line("        list[j] = key;");
+  w.line("    }");
+  w.line("}");
+}
 
 /// The file-local functions of the sparse form's sets, before _init.
 void sparse_helpers(CodeWriter &w, const Context &c) {
@@ -619,19 +639,9 @@ void sparse_helpers(CodeWriter &w, const Context &c) {
   w.line("}");
   if (c.chart.transitions.empty() || l.watch_capacity == 0) return;
   const char *type = uint_type(l.index_bits);
-  w.blank();
-  w.line("/* Sorts a short list of place numbers (the places that lost or gained activation in a tick). */");
-  w.line("static void {}({} *list, uint32_t n)", c.sort_fn, type);
-  w.line("{");
-  w.line("    uint32_t i, j;");
-  w.line("    for (i = 1; i < n; ++i) {");
-  w.line("        {} key = list[i];", type);
-  w.line("        for (j = i; j > 0u && list[j - 1u] > key; --j) {");
-  w.line("            list[j] = list[j - 1u];");
-  w.line("        }");
-  w.line("        list[j] = key;");
-  w.line("    }");
-  w.line("}");
+  // One watched place needs no sorting (and gcc -O2 would warn about the inlined loop over a
+  // one-entry array, -Warray-bounds).
+  if (l.watch_capacity > 1) sort_helper(w, c, type);
   w.blank();
   w.line("/* Whether a place runs exit or entry code, or resets its timer, when its activation changes. */");
   w.line("static bool {}(uint32_t place)", c.watched_fn);

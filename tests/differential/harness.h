@@ -33,6 +33,10 @@ struct Case {
   std::shared_ptr<Prepared> prepared;
 };
 
+/// Whether the case's engine is written in the scalable form (docs/c-engine.md) rather than the
+/// readable one; an fsm has one form whatever this says.
+bool scalable_form(const Case &c);
+
 enum class Verdict {
   Pass,
   Invalid,       ///< gfec rejected the generated chart: a bug of the generator (or of gfec)

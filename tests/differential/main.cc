@@ -102,7 +102,7 @@ int main(int argc, char **argv) {
   std::vector<Case> all(static_cast<std::size_t>(cases));
   std::vector<Case *> ready;
   std::vector<Failure> failures;
-  int undefined = 0, invalid = 0, fsm = 0, generated = 0;
+  int undefined = 0, invalid = 0, fsm = 0, generated = 0, scalable = 0;
   GenOptions base;
   for (std::istringstream in(avoid); std::getline(in, avoid, ',');) {
     if (avoid == "octal") base.octal = false;
@@ -121,6 +121,8 @@ int main(int argc, char **argv) {
     options.fsm = k % 3 == 2;
     fsm += options.fsm;
     ++generated;
+    c.id = k;
+    scalable += !options.fsm && scalable_form(c);
     c.chart = random_chart(rng, k, options);
     c.trace = random_trace(rng, c.chart);
     Outcome o = harness.prepare(c);
@@ -158,9 +160,9 @@ int main(int argc, char **argv) {
   }
 
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::cout << fmt::format("gfec_differential: seed {}: {} random charts ({} sfc, {} fsm); {} compared under {} builds "
+  std::cout << fmt::format("gfec_differential: seed {}: {} random charts ({} sfc, {} of them in the scalable form, {} fsm); {} compared under {} builds "
                            "({} engine runs){}, {} skipped for undefined behaviour, {} rejected by gfec; {} failures; {:.0f} s\n",
-                           seed, generated, generated - fsm, fsm, ready.size(), configs.size(), ready.size() * configs.size(),
+                           seed, generated, generated - fsm, scalable, fsm, ready.size(), configs.size(), ready.size() * configs.size(),
                            lint ? " and cppcheck" : "",
                            undefined, invalid, failures.size(), seconds);
   // Shrink the first failures (one per case: the same bug tends to fail every build).
