@@ -23,6 +23,8 @@ struct Context {
   bool readable() const { return layout.form == Layout::Form::Readable; }
   bool sequential() const { return layout.form == Layout::Form::Sequential; }
   bool sparse() const { return layout.form == Layout::Form::Sparse; }
+  /// The readable form's counter type: as narrow as the proven bound allows, else GFE's unsigned.
+  const char *readable_counter() const { return layout.bounded ? uint_type(layout.counter_bits) : "unsigned"; }
 
   // ------------------------------------------------------------ names in the generated code
   std::string type;         ///< the struct and the prefix of every global name: the chart's name

@@ -64,7 +64,9 @@ void state_struct(CodeWriter &w, const Context &c) {
       rows.emplace_back(fmt::format("uint32_t {}[{}];", c.candidates, l.candidates.words()),
                         "the transitions to try in a tick (empty between ticks)");
   } else {
-    rows.emplace_back(fmt::format("unsigned {}[{}];", c.av, c.place_count), "activation counter of each place");
+    rows.emplace_back(fmt::format("{} {}[{}];", c.readable_counter(), c.av, c.place_count),
+                      c.layout.bounded ? fmt::format("activation counter of each place (never above {})", c.layout.bound)
+                                       : "activation counter of each place");
   }
   for (std::size_t p = 0; p < c.chart.places.size(); ++p)
     if (c.chart.places[p].timed)

@@ -144,13 +144,19 @@ Layout plan_layout(const model::Chart &chart, EngineForm requested, std::vector<
   Layout l;
   l.watched = std::move(watched);
   bound_activation(chart, l);
+  l.counter_bits = l.bounded ? bits_for(l.bound) : 32;
+  const bool sequential = is_sequential(chart);
+  // `auto`: the scalable form pays per active place for its bookkeeping, so it wins only where
+  // little of a large chart is active at once; a chart that keeps a quarter of its places or more
+  // active (as many parallel branches do) runs faster in the readable form.
+  const bool concurrent = l.bounded && l.tokens * 4 > chart.places.size();
   bool scalable = requested == EngineForm::Scalable ||
-                  (requested == EngineForm::Auto && chart.places.size() > kReadableMaxPlaces);
+                  (requested == EngineForm::Auto && chart.places.size() > kReadableMaxPlaces &&
+                   (sequential || !concurrent));
   if (!scalable || chart.kind != model::Chart::Kind::Sfc) return l;
-  l.form = is_sequential(chart) ? Layout::Form::Sequential : Layout::Form::Sparse;
+  l.form = sequential ? Layout::Form::Sequential : Layout::Form::Sparse;
   l.index_bits = bits_for(chart.places.size());
   if (l.form == Layout::Form::Sequential) return l;
-  l.counter_bits = l.bounded ? bits_for(l.bound) : 32;
   l.saturate = !l.bounded;
   l.place_driven = choose_owners(chart, l.owner);
   l.active = bit_levels(chart.places.size());

@@ -55,13 +55,14 @@ private:
   /// only when something compares it with the end; for the hooks only in a hooks build).
   void declarations() {
     section("");
-    if (produces()) w_.line("unsigned {}[{}] = {{0}}; /* activation produced in this tick */", c_.add, c_.place_count);
+    if (produces())
+      w_.line("{} {}[{}] = {{0}}; /* activation produced in this tick */", c_.readable_counter(), c_.add, c_.place_count);
     // The conditions are rendered first: the temporaries they need belong to the whole function.
     for (const auto &t : c_.chart.transitions)
       conditions_.push_back(t.condition ? c_condition(c_, *t.condition, temps_) : "");
     temps_.declare(w_);
     if (!c_.needs_snapshot()) directive(w_, "#ifdef " + c_.hooks_macro);
-    w_.line("unsigned {}[{}]; /* the activation at the start of the tick */", c_.before, c_.place_count);
+    w_.line("{} {}[{}]; /* the activation at the start of the tick */", c_.readable_counter(), c_.before, c_.place_count);
     w_.line("memcpy({0}, {1}, sizeof {0});", c_.before, c_.field(c_.av));
     if (!c_.needs_snapshot()) directive(w_, "#endif");
     if (!uses_self()) w_.line("(void){}; /* the chart has neither transitions nor actions */", c_.self);

@@ -61,7 +61,12 @@ TEST_CASE("c layout: a fork is bounded by its weights; counters are a byte", "[c
     b.transition({fmt::format("A{}", i)}, {fmt::format("B{}", i)});
     b.transition({fmt::format("B{}", i)}, {fmt::format("A{}", i)});
   }
-  Layout l = layout_of(b);
+  // Up to 100 of its 201 places are active at once: `auto` keeps it readable (the scalable
+  // form's bookkeeping costs more than it saves when so much is active), with byte counters.
+  Layout readable = layout_of(b);
+  CHECK(readable.form == Layout::Form::Readable);
+  CHECK(readable.counter_bits == 8);
+  Layout l = layout_of(b, EngineForm::Scalable);
   CHECK(l.form == Layout::Form::Sparse);
   CHECK(l.bounded);
   CHECK(l.bound == 100);
@@ -71,6 +76,23 @@ TEST_CASE("c layout: a fork is bounded by its weights; counters are a byte", "[c
   CHECK(l.place_driven);
   // At most 100 transitions fire in a tick: the fork's 100 outputs and 99 more.
   CHECK(l.add_capacity == 199);
+}
+
+TEST_CASE("c layout: auto takes the scalable form for a large chart little of which is active", "[c_backend][layout]") {
+  // 30 branches of 4 places forked from Start: at most 30 of 121 places active, under a quarter.
+  ChartBuilder b("Sparse", model::Chart::Kind::Sfc);
+  b.place("Start", true);
+  std::vector<std::string> heads;
+  for (int i = 0; i < 30; ++i) {
+    for (int k = 0; k < 4; ++k) b.place(fmt::format("P{}_{}", i, k));
+    heads.push_back(fmt::format("P{}_0", i));
+  }
+  b.transition({"Start"}, heads);
+  for (int i = 0; i < 30; ++i)
+    for (int k = 0; k < 4; ++k) b.transition({fmt::format("P{}_{}", i, k)}, {fmt::format("P{}_{}", i, (k + 1) % 4)});
+  Layout l = layout_of(b);
+  CHECK(l.tokens == 30);
+  CHECK(l.form == Layout::Form::Sparse);
 }
 
 TEST_CASE("c layout: a chart that pumps activation is unbounded; counters saturate", "[c_backend][layout]") {

@@ -72,10 +72,10 @@ TEST_CASE("c backend: engine fields and locals give way to the chart's names", "
   const std::string &c = files[0].contents, &h = files[1].contents;
   CHECK(contains(h, "    Clash_init_,\n    Clash_PLACE_COUNT_,\n    Clash_PLACE_COUNT\n"));
   CHECK(contains(h, "    Clash_run_, /* init -> PLACE_COUNT */\n"));
-  CHECK(contains(h, "unsigned av_[Clash_PLACE_COUNT];"));
+  CHECK(contains(h, "uint8_t av_[Clash_PLACE_COUNT]; /* activation counter of each place (never above 1) */"));
   CHECK(contains(h, "int av;"));
   CHECK(contains(h, "bool started;"));
-  CHECK(contains(c, "unsigned add_[Clash_PLACE_COUNT] = {0};"));
+  CHECK(contains(c, "uint8_t add_[Clash_PLACE_COUNT] = {0};"));
   CHECK(contains(c, "m->av -= (-2 /* m */);") == false);  // a negative literal needs no brackets after -=
   CHECK(contains(c, "m->av -= -2 /* m */;"));
   CHECK(contains(c, "m->started = true;"));
@@ -229,4 +229,23 @@ TEST_CASE("c backend: fsm entry and exit blocks, should the model have them", "[
                "tick 2\nact LedOff\nact Dark\nstate Off status 0\n"  // exit On, enter Off
                "tick 3\nact LedOn\nact Shine\nstate On status 0\n"
                "tick 4\nact Shine\nstate On status 0\n");
+}
+
+TEST_CASE("c backend: readable counters are a byte when bounded, GFE's unsigned when not", "[c_backend]") {
+  ChartBuilder pump("Pump", model::Chart::Kind::Sfc);
+  pump.place("P", true);
+  pump.place("Q");
+  pump.transition({"P"}, {"P", "Q"});  // Q gains activation on every tick: no bound
+  auto unbounded = emit_c(pump.model(), "pump.c", false);
+  CHECK(contains(unbounded[1].contents, "unsigned av[Pump_PLACE_COUNT]; /* activation counter of each place */"));
+  CHECK(contains(unbounded[0].contents, "unsigned add[Pump_PLACE_COUNT] = {0};"));
+
+  ChartBuilder join("Join", model::Chart::Kind::Sfc);
+  join.place("A", true);
+  join.place("B", true);
+  join.place("C");
+  join.transition({"A", "B"}, {"C"});
+  join.transition({"C"}, {"A", "B"});
+  auto bounded = emit_c(join.model(), "join.c", false);
+  CHECK(contains(bounded[1].contents, "uint8_t av[Join_PLACE_COUNT]; /* activation counter of each place (never above 2) */"));
 }

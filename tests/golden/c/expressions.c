@@ -18,9 +18,9 @@ void Expressions_init(Expressions *m)
 
 void Expressions_run(Expressions *m)
 {
-    unsigned add[Expressions_PLACE_COUNT] = {0}; /* activation produced in this tick */
+    uint8_t add[Expressions_PLACE_COUNT] = {0}; /* activation produced in this tick */
     int gfec_t0, gfec_t1; /* temporaries: the chart calls left to right */
-    unsigned before[Expressions_PLACE_COUNT]; /* the activation at the start of the tick */
+    uint8_t before[Expressions_PLACE_COUNT]; /* the activation at the start of the tick */
     memcpy(before, m->av, sizeof before);
 
     /* First tick: the initial places enter */

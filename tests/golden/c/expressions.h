@@ -28,12 +28,12 @@ enum {
    engines may run side by side); only the functions below use its fields. */
 typedef struct Expressions Expressions;
 struct Expressions {
-    unsigned av[Expressions_PLACE_COUNT]; /* activation counter of each place */
-    uint32_t timer_Run;                   /* ticks Run has been active: elapsed(Run) */
-    bool started;                         /* the first tick has run */
-    int n;                                /* var n */
-    int half;                             /* var half */
-    float level;                          /* var level */
+    uint8_t av[Expressions_PLACE_COUNT]; /* activation counter of each place (never above 2) */
+    uint32_t timer_Run;                  /* ticks Run has been active: elapsed(Run) */
+    bool started;                        /* the first tick has run */
+    int n;                               /* var n */
+    int half;                            /* var half */
+    float level;                         /* var level */
 };
 
 /* Sets the initial marking; calls no code of the chart. */

@@ -16,9 +16,9 @@ void LineFollower_init(LineFollower *m)
 
 void LineFollower_run(LineFollower *m)
 {
-    unsigned add[LineFollower_PLACE_COUNT] = {0}; /* activation produced in this tick */
+    uint8_t add[LineFollower_PLACE_COUNT] = {0}; /* activation produced in this tick */
 #ifdef LineFollower_HOOKS
-    unsigned before[LineFollower_PLACE_COUNT]; /* the activation at the start of the tick */
+    uint8_t before[LineFollower_PLACE_COUNT]; /* the activation at the start of the tick */
     memcpy(before, m->av, sizeof before);
 #endif
 

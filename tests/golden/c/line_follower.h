@@ -31,7 +31,7 @@ enum {
    engines may run side by side); only the functions below use its fields. */
 typedef struct LineFollower LineFollower;
 struct LineFollower {
-    unsigned av[LineFollower_PLACE_COUNT]; /* activation counter of each place */
+    uint8_t av[LineFollower_PLACE_COUNT]; /* activation counter of each place (never above 2) */
 };
 
 /* Sets the initial marking; calls no code of the chart. */

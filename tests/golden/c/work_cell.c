@@ -25,8 +25,8 @@ void WorkCell_init(WorkCell *m)
 
 void WorkCell_run(WorkCell *m)
 {
-    unsigned add[WorkCell_PLACE_COUNT] = {0}; /* activation produced in this tick */
-    unsigned before[WorkCell_PLACE_COUNT]; /* the activation at the start of the tick */
+    uint8_t add[WorkCell_PLACE_COUNT] = {0}; /* activation produced in this tick */
+    uint8_t before[WorkCell_PLACE_COUNT]; /* the activation at the start of the tick */
     memcpy(before, m->av, sizeof before);
 
     /* First tick: the initial places enter */

@@ -34,12 +34,12 @@ enum {
    engines may run side by side); only the functions below use its fields. */
 typedef struct WorkCell WorkCell;
 struct WorkCell {
-    unsigned av[WorkCell_PLACE_COUNT]; /* activation counter of each place */
-    uint32_t timer_LeftArm;            /* ticks LeftArm has been active: elapsed(LeftArm) */
-    uint32_t timer_RightArm;           /* ticks RightArm has been active: elapsed(RightArm) */
-    bool started;                      /* the first tick has run */
-    int parts;                         /* var parts */
-    float speed;                       /* var speed */
+    uint8_t av[WorkCell_PLACE_COUNT]; /* activation counter of each place (never above 2) */
+    uint32_t timer_LeftArm;           /* ticks LeftArm has been active: elapsed(LeftArm) */
+    uint32_t timer_RightArm;          /* ticks RightArm has been active: elapsed(RightArm) */
+    bool started;                     /* the first tick has run */
+    int parts;                        /* var parts */
+    float speed;                      /* var speed */
 };
 
 /* Sets the initial marking; calls no code of the chart. */
