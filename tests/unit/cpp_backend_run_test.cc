@@ -27,7 +27,10 @@ const Harnesses &harness(const std::map<std::string, std::string> &files, const 
   auto compiled = compile(files, main, stem + ".cpp");
   INFO(compiled->errors);
   REQUIRE(!compiled->diag.has_errors());
-  std::string dir = write_all("run-" + stem, compiled->files);
+  // ctest runs each test case in its own process, side by side: each builds in its own folder.
+  std::string dir = write_all(fmt::format("run-{}-{:x}", stem,
+                                          std::hash<std::string>{}(Catch::getResultCapture().getCurrentTestName())),
+                              compiled->files);
   if (cxx_compilers().size() < 2) WARN("clang++ is not installed: the generated C++ is tested with g++ only");
   Harnesses h;
   for (const auto &cxx : runtime_linking_compilers()) h.executables.push_back(build_harness(cxx, dir, stem, plan_name, env));
