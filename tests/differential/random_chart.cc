@@ -187,10 +187,16 @@ public:
 
   /// `b`, or another from `make` if it reads exactly as `a`: gcc and clang reject `x != x`
   /// under -Werror (-Wtautological-compare), which the back end cannot help.
+  /// (Brackets do not make a different operand: `(v) != v` is `v != v` to the compilers.)
   template <typename Make> GExpr distinct(const GExpr &a, GExpr b, Make make) {
-    for (int i = 0; i < 8 && expr_text(a) == expr_text(b); ++i) b = make();
-    while (expr_text(a) == expr_text(b)) b = literal(b.type);
+    auto same = [&] { return expr_text(unbracketed(a)) == expr_text(unbracketed(b)); };
+    for (int i = 0; i < 8 && same(); ++i) b = make();
+    while (same()) b = literal(b.type);
     return b;
+  }
+
+  static const GExpr &unbracketed(const GExpr &e) {
+    return e.kind == GExpr::Kind::Paren && !e.args.empty() ? unbracketed(e.args[0]) : e;
   }
 
   GExpr boolean(int depth) {
@@ -221,8 +227,19 @@ public:
   /// A transition's condition; with dead code avoided, never a constant one.
   GExpr condition() {
     GExpr c = boolean(2);
-    while (!o_.dead_code && !varies(c)) c = boolean(2);
+    while (!o_.dead_code && (!varies(c) || constant_operand(c))) c = boolean(2);
     return c;
+  }
+
+  /// An operand of && or || that reads nothing that can change (`X && false`): cppcheck says
+  /// the condition is known (knownConditionTrueFalse), as it should.
+  static bool constant_operand(const GExpr &e) {
+    if (e.kind == GExpr::Kind::Binary && (e.text == "&&" || e.text == "||"))
+      for (const auto &a : e.args)
+        if (!varies(a)) return true;
+    for (const auto &a : e.args)
+      if (constant_operand(a)) return true;
+    return false;
   }
 
   /// Reads something that can change: a var, a call, a timer.
