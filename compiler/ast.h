@@ -34,6 +34,7 @@ struct Expr {
     Unary,    ///< unary_op + args[0]
     Binary,   ///< binary_op + args[0], args[1]
     Paren,    ///< `( e )`: args[0]; kept so formulas and generated code keep the user's brackets
+    Path,     ///< `P.Q.R` (only as the argument of `active(...)`, docs/language.md "Sub-charts"): path
   };
   Kind kind;
   SourceRange range;
@@ -45,19 +46,24 @@ struct Expr {
   UnaryOp unary_op = UnaryOp::Not;
   BinaryOp binary_op = BinaryOp::Add;
   std::vector<ExprPtr> args;
+  std::vector<Name> path;  ///< Kind::Path: the names between the dots, outermost first
 };
 
 // ---------------------------------------------------------------- statements
 
 struct Stmt {
-  enum class Kind { Call, Assign, Verbatim };
+  enum class Kind { Call, Assign, Verbatim, If };
   Kind kind;
   SourceRange range;
   ExprPtr call;            ///< Kind::Call: an Expr of Kind::Call
   Name target;             ///< Kind::Assign
   AssignOp assign_op = AssignOp::Set;
-  ExprPtr value;           ///< Kind::Assign
+  ExprPtr value;           ///< Kind::Assign; Kind::If: the condition
   std::string verbatim;    ///< Kind::Verbatim: the text between %{ and %}
+  std::vector<Stmt> then_block;  ///< Kind::If
+  std::vector<Stmt> else_block;  ///< Kind::If: empty without `else`; `else if` is one If in it
+  bool has_else = false;         ///< Kind::If: `else` was written
+  bool else_if = false;          ///< Kind::If: else_block is exactly the `if` of an `else if`
 };
 
 using Block = std::vector<Stmt>;
@@ -113,6 +119,7 @@ struct Place {
   std::optional<Block> exit;
   SourceRange entry_range, exit_range;
   ExprPtr post;                            ///< `post EXPR` of a terminal state
+  std::optional<Name> runs;                ///< `place P runs C`: the chart C (sub-charts)
   SourceRange range;
 };
 
@@ -137,6 +144,8 @@ struct Chart {
   Kind kind;
   Name name;
   std::vector<Period> periods;  ///< more than one is an error the validator reports
+  /// `team N;` of an fsm (team machines): the value and range of every one written
+  std::vector<std::pair<long long, SourceRange>> teams;
   std::vector<ValueDecl> values;
   std::vector<Place> places;
   std::vector<Transition> transitions;
@@ -228,6 +237,27 @@ struct Verbatim {
   SourceRange range;
 };
 
+// ---------------------------------------------------------------- scenario tests
+
+/// One step of a `test` block (docs/language.md "Scenario tests").
+struct TestStep {
+  enum class Kind { Tick, Set, Expect };
+  Kind kind = Kind::Tick;
+  SourceRange range;
+  long long count = 1;  ///< Tick: `tick N;` (1 for `tick;`)
+  Name function;        ///< Set: the sensing function
+  ExprPtr value;        ///< Set: the constant; Expect: the expectation
+};
+
+/// `test "NAME" of CHART { STEPS }`
+struct Test {
+  std::string name;
+  SourceRange name_range;
+  Name chart;
+  std::vector<TestStep> steps;
+  SourceRange range;
+};
+
 struct File {
   FileId id = 0;
   std::vector<Import> imports;
@@ -237,6 +267,7 @@ struct File {
   std::vector<Chart> charts;
   std::vector<Toolbox> toolboxes;
   std::vector<Plan> plans;
+  std::vector<Test> tests;
 };
 
 /// Every file of a compilation: the main file first, then imports in the order first reached.

@@ -35,6 +35,15 @@ struct Expr {
     Unary,    ///< unary_op, args[0]
     Binary,   ///< binary_op, args[0], args[1]
     Paren,    ///< args[0], brackets the user wrote
+    // Sub-charts (docs/language.md "Sub-charts"): `index` is a place/state of the chart the
+    // expression belongs to (always read at the moment of evaluation, see the docs).
+    Active,     ///< `active(P)` / `active(P.Q.R)`: path = place indices, path[0] in this chart,
+                ///< path[k+1] in the chart that path[k] runs. Type Bool.
+    Succeeded,  ///< `succeeded(P)`: index = P (which runs an fsm). Type Bool.
+    Failed,     ///< `failed(P)`: index = P (which runs an fsm). Type Bool.
+    // Team machines (docs/language.md "Teams").
+    TeamCount,  ///< `team(S)`: index = state S of this chart. Type Int.
+    Agent,      ///< `agent()`. Type Int.
   };
   Kind kind = Kind::Bool;
   Type type = Type::Bool;
@@ -47,17 +56,21 @@ struct Expr {
   UnaryOp unary_op = UnaryOp::Not;
   BinaryOp binary_op = BinaryOp::Add;
   std::vector<Expr> args;
+  std::vector<int> path;  ///< Kind::Active
 };
 
 struct Stmt {
-  enum class Kind { Call, Assign, Verbatim };
+  enum class Kind { Call, Assign, Verbatim, If };
   Kind kind = Kind::Call;
   SourceRange range;
   Expr call;             ///< Kind::Call: an Expr of Kind::Call (its result, if any, is discarded)
   int var = -1;          ///< Kind::Assign: index into Chart::vars
   AssignOp op = AssignOp::Set;
-  Expr value;            ///< Kind::Assign
+  Expr value;            ///< Kind::Assign; Kind::If: the condition (Bool)
   std::string verbatim;  ///< Kind::Verbatim
+  std::vector<Stmt> then_block;  ///< Kind::If
+  std::vector<Stmt> else_block;  ///< Kind::If: empty when there is no `else`
+  bool else_if = false;          ///< Kind::If: else_block is one If written as `else if`
 };
 
 // ---------------------------------------------------------------- interface
@@ -106,6 +119,7 @@ struct Place {
   std::optional<std::vector<Stmt>> exit;
   std::optional<Expr> post;  ///< a terminal state's postcondition
   bool timed = false;        ///< some `elapsed()` reads this place's timer
+  int runs = -1;             ///< the sub-chart it runs: an index into Model::charts, or -1
   SourceRange range;
 };
 
@@ -128,6 +142,7 @@ struct Chart {
   std::vector<Var> vars;
   std::vector<int> functions;  ///< interface functions the chart calls, in declaration order
   std::vector<int> consts;     ///< constants the chart reads, in declaration order
+  int team = 0;                ///< fsm `team N;`: N (>= 2); 0 for a machine that is no team
   bool in_main_file = false;   ///< declared in the file being compiled, not an import
   SourceRange range;
 };
