@@ -54,6 +54,11 @@ private:
   }
 
   void follow(const std::string &from, const ast::Import &import) {
+    // A NUL would cut the path short: the file opened would not be the one named.
+    if (import.path.find('\0') != std::string::npos) {
+      diag_.error(import.range, "import", "an import path cannot contain a NUL character");
+      return;
+    }
     std::vector<std::string> tried;
     fsys::path dir = fsys::path(from).parent_path();
     std::vector<fsys::path> candidates;

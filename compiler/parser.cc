@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <optional>
 
 namespace gfec {
@@ -178,6 +179,17 @@ private:
     ~DepthGuard() { --p.depth_; }
   };
 
+  /// One level more than `height`, refused past kMaxNesting: a flat chain `x + x + ...` is a
+  /// left spine as deep as it is long, and every later walk of the tree recurses along it.
+  int grow(int height, SourceRange at) {
+    if (height + 1 > kMaxNesting) {
+      diag_.error(at, "nesting", fmt::format("expression nested too deeply (more than {} levels; each operator of a "
+                                             "chain counts as one)", kMaxNesting));
+      throw SyntaxError{};
+    }
+    return height + 1;
+  }
+
   FileId file_;
   Diagnostics &diag_;
   Lexer lexer_;
@@ -185,6 +197,7 @@ private:
   std::optional<Token> lookahead_;
   std::uint32_t prev_end_ = 0;
   int depth_ = 0;
+  int height_ = 0;  ///< height of the expression the last binary/unary/primary returned
   bool eof_reported_ = false;
 };
 
@@ -585,11 +598,15 @@ Rule Parser::rule() {
 std::vector<ExprPtr> Parser::arguments() {
   std::vector<ExprPtr> args;
   expect(Tok::LParen, "(the argument list)");
+  int highest = 0;
   if (!at(Tok::RParen)) {
-    do args.push_back(expr());
-    while (accept(Tok::Comma));
+    do {
+      args.push_back(expr());
+      highest = std::max(highest, height_);
+    } while (accept(Tok::Comma));
   }
   expect(Tok::RParen, "to close the argument list");
+  height_ = highest;
   return args;
 }
 
@@ -634,6 +651,7 @@ ExprPtr Parser::binary(int min_precedence) {
   DepthGuard guard(*this);
   std::uint32_t begin = here();
   ExprPtr left = unary();
+  int left_height = height_;
   for (;;) {
     BinaryOp op;
     switch (tok_.kind) {
@@ -650,12 +668,17 @@ ExprPtr Parser::binary(int min_precedence) {
     case Tok::Star: op = BinaryOp::Mul; break;
     case Tok::Slash: op = BinaryOp::Div; break;
     case Tok::Percent: op = BinaryOp::Mod; break;
-    default: return left;
+    default: height_ = left_height; return left;
     }
     int prec = precedence(op);
-    if (prec < min_precedence) return left;
+    if (prec < min_precedence) {
+      height_ = left_height;
+      return left;
+    }
+    SourceRange op_range = tok_.range;
     advance();
     ExprPtr right = binary(prec + 1);  // left-associative
+    left_height = grow(std::max(left_height, height_), op_range);
     auto e = make(Expr::Kind::Binary, from(begin));
     e->binary_op = op;
     e->args.push_back(std::move(left));
@@ -671,6 +694,7 @@ ExprPtr Parser::unary() {
     std::uint32_t begin = here();
     UnaryOp op = take().kind == Tok::Not ? UnaryOp::Not : UnaryOp::Neg;
     ExprPtr operand = unary();
+    height_ = grow(height_, from(begin));
     auto e = make(Expr::Kind::Unary, from(begin));
     e->unary_op = op;
     e->args.push_back(std::move(operand));
@@ -682,6 +706,7 @@ ExprPtr Parser::unary() {
 //G primary: INT | FLOAT | STRING | DURATION | 'true' | 'false' | IDENT [ arguments ] | '(' expr ')'
 ExprPtr Parser::primary() {
   std::uint32_t begin = here();
+  height_ = 1;  // a leaf; calls and brackets add theirs below
   switch (tok_.kind) {
   case Tok::Int:
   case Tok::Float: {
@@ -723,6 +748,7 @@ ExprPtr Parser::primary() {
     e->name = std::move(n);
     e->args = arguments();
     e->range = from(begin);
+    height_ = grow(height_, e->range);
     return e;
   }
   case Tok::LParen: {
@@ -730,6 +756,7 @@ ExprPtr Parser::primary() {
     advance();
     ExprPtr inner = expr();
     expect(Tok::RParen, "to close the bracket");
+    height_ = grow(height_, from(begin));
     auto e = make(Expr::Kind::Paren, from(begin));
     e->args.push_back(std::move(inner));
     return e;

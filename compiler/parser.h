@@ -9,7 +9,9 @@
 
 namespace gfec {
 
-/// How deep expressions may nest before the parser refuses (no stack overflow on any input).
+/// How deep expressions may nest before the parser refuses (no stack overflow on any input):
+/// brackets, unary operators, calls and each binary operator of a chain count one level, so
+/// every later recursive walk of an expression (validator, back ends, interpreter) is bounded.
 constexpr int kMaxNesting = 256;
 
 /// Parses one file. Syntax errors are reported to `diag`; the parser recovers at the next

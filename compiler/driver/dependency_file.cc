@@ -2,6 +2,8 @@
 
 #include "backend.h"
 
+#include <fmt/format.h>
+
 namespace gfec {
 
 namespace {
@@ -24,11 +26,22 @@ void append_wrapped(std::string &out, std::size_t &column, const std::string &wo
 std::string make_escape(const std::string &path) {
   std::string out;
   for (char c : path) {
-    if (c == ' ' || c == '#' || c == '\t') out += '\\';
+    if (c == ' ' || c == '#' || c == '\t' || c == ':') out += '\\';
     if (c == '$') out += '$';
     out += c;
   }
   return out;
+}
+
+std::string make_unreadable(const std::string &path) {
+  for (char c : path) {
+    auto u = static_cast<unsigned char>(c);
+    if (c == '\n') return "a newline";
+    if (c == '\0') return "a NUL character";
+    if ((u < 0x20 && c != '\t') || u == 0x7f) return fmt::format("the control character 0x{:02x}", u);
+    if (c == ';' || c == '=' || c == '|' || c == '\\') return fmt::format("'{}'", c);
+  }
+  return {};
 }
 
 std::string dependency_rule(const std::vector<std::string> &targets, const std::vector<std::string> &deps,

@@ -19,7 +19,13 @@ std::string dependency_rule(const std::vector<std::string> &targets, const std::
 /// The dependency file's name: -MF, else the primary output with ".d" (gcc's default with -o).
 std::string dependency_file_name(const DependencyOptions &deps, const std::string &primary_output);
 
-/// A path as make reads it: spaces and '#' escaped with '\', '$' doubled.
+/// A path as make reads it: spaces, tabs, '#' and ':' escaped with '\\', '$' doubled.
 std::string make_escape(const std::string &path);
+
+/// Why make cannot read `path` in a rule whatever the escaping, or "" if it can: control
+/// characters (a newline would end the rule and start another, a NUL ends the text), ';' (starts
+/// a recipe), '=' (makes the rule a variable assignment), '|' (order-only prerequisites) and
+/// '\\' (escapes the separator after it). gfec refuses to write such a dependency file.
+std::string make_unreadable(const std::string &path);
 
 } // namespace gfec

@@ -179,8 +179,12 @@ public:
       return {};
     }
     std::vector<OutputFile> files;
-    for (const auto &[input, log] : logs_) files.push_back({base_name(input.empty() ? "gfec" : input) + ".sarif", text(log)});
-    return write_atomically(files);
+    std::vector<std::string> inputs;
+    for (const auto &[input, log] : logs_) {
+      files.push_back({base_name(input.empty() ? "gfec" : input) + ".sarif", text(log)});
+      if (!input.empty()) inputs.push_back(input);
+    }
+    return write_atomically(files, inputs);
   }
 
 private:

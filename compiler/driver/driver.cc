@@ -106,13 +106,36 @@ std::string default_output(const std::string &input, const std::string &backend)
   return replace_extension(base_name(input), ext);
 }
 
+/// `path` with control characters spelled as C escapes, for a message on one line.
+std::string printable(const std::string &path) {
+  std::string out;
+  for (char c : path) {
+    auto u = static_cast<unsigned char>(c);
+    if (c == '\n') out += "\\n";
+    else if (u < 0x20 || u == 0x7f) out += fmt::format("\\x{:02x}", u);
+    else out += c;
+  }
+  return out;
+}
+
 /// Adds the -MD dependency file to the outputs: the files written depend on every file read.
-void add_dependency_file(const Options &o, const LoadResult &loaded, std::vector<OutputFile> &outputs) {
+/// Returns why it cannot be written (a name make cannot read), or "".
+std::string add_dependency_file(const Options &o, const LoadResult &loaded, std::vector<OutputFile> &outputs) {
   std::vector<std::string> targets = o.deps.targets;
   if (targets.empty())
     for (const auto &f : outputs) targets.push_back(f.path);
   std::string name = dependency_file_name(o.deps, outputs.front().path);
+  std::vector<std::string> names = targets;
+  names.insert(names.end(), loaded.paths.begin(), loaded.paths.end());
+  for (const auto &path : names) {
+    std::string why = make_unreadable(path);
+    if (!why.empty())
+      return fmt::format("cannot write the dependency file '{}': the name '{}' contains {}, which make cannot read "
+                         "in a rule (docs/build-integration.md)",
+                         name, printable(path), why);
+  }
   outputs.push_back({name, dependency_rule(targets, loaded.paths, o.deps.phony)});
+  return {};
 }
 
 /// Compiles (or with --check, validates) the one input of `o`; returns its exit code.
@@ -165,8 +188,14 @@ int compile(const Options &o, DiagnosticReport &report, std::ostream &out) {
     out << outputs.front().contents << std::flush;
     return kExitOk;
   }
-  if (o.deps.write && !outputs.empty()) add_dependency_file(o, c.loaded, outputs);
-  std::string failure = write_atomically(outputs);
+  if (o.deps.write && !outputs.empty()) {
+    std::string why = add_dependency_file(o, c.loaded, outputs);
+    if (!why.empty()) {
+      report.tool_error(input, why, false);
+      return kExitUsageOrIo;
+    }
+  }
+  std::string failure = write_atomically(outputs, c.loaded.paths);
   if (!failure.empty()) {
     report.tool_error(input, failure, false);
     return kExitUsageOrIo;

@@ -1,5 +1,5 @@
-// Writing outputs so that a failed or interrupted compile never leaves a half-written file:
-// each output goes to a temporary file beside it, renamed into place only when all are written.
+// Writing outputs so that a failed or interrupted compile never leaves a half-written file, and
+// never writes over an input, a special file or one file twice (safe_output.h says how).
 #pragma once
 
 #include "backend.h"
@@ -10,6 +10,7 @@
 namespace gfec {
 
 /// Writes every file or none; on failure returns a message naming the file and the reason.
-std::string write_atomically(const std::vector<OutputFile> &files);
+/// `inputs`: the files this run read, which no output may replace.
+std::string write_atomically(const std::vector<OutputFile> &files, const std::vector<std::string> &inputs);
 
 } // namespace gfec

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include <cfloat>
 #include <cmath>
 
 namespace gfec::validation {
@@ -189,6 +190,25 @@ std::optional<model::Expr> lower_binary(const ast::Expr &e, ExprScope &s) {
   return x;
 }
 
+/// A constant converted to `to` (an assignment, an argument) as C converts it: a double past
+/// int's range, or past float's, would be undefined behaviour or -Woverflow in the C; an error
+/// at the value instead, as for a constant's initialiser.
+bool constant_fits(const model::Expr &x, Type to, ExprScope &s) {
+  if (x.type == to || !model::is_numeric(x.type) || !model::is_numeric(to) || x.type == Type::Int) return true;
+  auto v = evaluate(x, s.cx.model, nullptr);
+  if (!v || v->type == Type::Int) return true;
+  double d = v->f;
+  if (to == Type::Int && !(d > -2147483649.0 && d < 2147483648.0)) {
+    s.cx.diag.error(x.range, "not-constant", fmt::format("value {} does not fit in 'int'", d));
+    return false;
+  }
+  if (to == Type::Float && std::isfinite(d) && std::fabs(d) > static_cast<double>(FLT_MAX)) {
+    s.cx.diag.error(x.range, "not-constant", fmt::format("value {} is too large for 'float'", d));
+    return false;
+  }
+  return true;
+}
+
 std::optional<model::Stmt> lower_assign(const ast::Stmt &st, ExprScope &s) {
   Diagnostics &diag = s.cx.diag;
   auto value = lower_expr(st.value.get(), s);  // first: its errors are independent of the target's
@@ -220,6 +240,7 @@ std::optional<model::Stmt> lower_assign(const ast::Stmt &st, ExprScope &s) {
     duration_note(d, value->type, value->type);
     return std::nullopt;
   }
+  if (!constant_fits(*value, type, s)) return std::nullopt;
   model::Stmt out;
   out.kind = model::Stmt::Kind::Assign;
   out.range = st.range;
@@ -235,7 +256,11 @@ unsigned long to_ticks(double ms, double period_ms) {
   if (period_ms <= 0 || ms <= 0) return 0;
   // Durations are read as decimals (0.1s is 100.00000000000001 ms): a hair under a whole tick
   // is that tick, not the next one.
-  return static_cast<unsigned long>(std::ceil(ms / period_ms - 1e-9));
+  double ticks = std::ceil(ms / period_ms - 1e-9);
+  // Timers saturate at UINT32_MAX: any duration beyond is "never reached", and converting a
+  // double past the integer's range would be undefined (1e18s once became 0 ticks).
+  if (!(ticks < kBeyondTimers)) return kBeyondTimers;
+  return static_cast<unsigned long>(ticks);
 }
 
 void report_unknown(Diagnostics &diag, std::set<std::string> &seen, const ast::Name &name, const char *what,
@@ -278,13 +303,14 @@ std::optional<model::Expr> lower_expr(const ast::Expr *e, ExprScope &s) {
     model::Expr x = make(is_int ? K::Int : is_float ? K::Float : K::String,
                          is_int ? Type::Int : is_float ? Type::Double : Type::String, e->range);
     x.text = e->text;
-    return x;
+    if (!is_int && !is_float) return x;
+    return check_constant(std::move(x), s.cx.model, s.cx.diag);
   }
   case ast::Expr::Kind::Duration: return lower_duration(*e, s);
   case ast::Expr::Kind::Name: return lower_name(*e, s);
   case ast::Expr::Kind::Call: return lower_call(*e, s, false);
-  case ast::Expr::Kind::Unary: return lower_unary(*e, s);
-  case ast::Expr::Kind::Binary: return lower_binary(*e, s);
+  case ast::Expr::Kind::Unary: return check_constant(lower_unary(*e, s), s.cx.model, s.cx.diag);
+  case ast::Expr::Kind::Binary: return check_constant(lower_binary(*e, s), s.cx.model, s.cx.diag);
   case ast::Expr::Kind::Paren: {
     if (e->args.size() != 1) return std::nullopt;
     auto inner = lower_expr(e->args[0].get(), s);
@@ -321,6 +347,8 @@ std::optional<model::Expr> lower_call(const ast::Expr &e, ExprScope &s, bool sta
   if (!s.cx.function_ok[sym->index]) return std::nullopt;
   const model::Function &f = s.cx.model.functions[sym->index];
   if (!check_arguments(e, f, args, s.cx.diag)) return std::nullopt;
+  for (std::size_t i = 0; i < args.size(); ++i)
+    if (!constant_fits(*args[i], f.params[i].type, s)) return std::nullopt;
   if (!statement && f.result == Type::Void) {
     s.cx.diag.error(e.range, "type-mismatch", fmt::format("'{}' returns void; it cannot be used as a value", f.name))
         .note(f.range, fmt::format("'{}' declared here", f.name));

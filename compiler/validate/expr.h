@@ -61,7 +61,11 @@ int resolve_place(ChartScope &chart, Context &cx, const ast::Name &name);
 void report_unknown(Diagnostics &diag, std::set<std::string> &seen, const ast::Name &name, const char *what,
                     const std::vector<const Symbol *> &candidates);
 
-/// `ms` in whole ticks of `period_ms`, rounded up (§5.3).
+/// One more than timers can count (they saturate at UINT32_MAX): every duration that long or
+/// longer is this many ticks, never reached.
+constexpr unsigned long kBeyondTimers = 0x100000000ul;
+
+/// `ms` in whole ticks of `period_ms`, rounded up (§5.3), at most kBeyondTimers.
 unsigned long to_ticks(double ms, double period_ms);
 
 } // namespace gfec::validation

@@ -166,6 +166,20 @@ std::optional<Value> evaluate(const model::Expr &e, const model::Model &m, Diagn
   }
 }
 
+std::optional<model::Expr> check_constant(std::optional<model::Expr> x, const model::Model &m, Diagnostics &diag) {
+  if (!x) return x;
+  for (const auto &a : x->args)
+    if (!evaluate(a, m, nullptr)) return x;  // not constant: evaluated on the robot
+  std::size_t errors = diag.error_count();
+  auto v = evaluate(*x, m, &diag);
+  if (diag.error_count() != errors) return std::nullopt;
+  if (v && x->kind == model::Expr::Kind::Float && !std::isfinite(v->f)) {
+    diag.error(x->range, "not-constant", fmt::format("floating constant '{}' is too large for 'double'", x->text));
+    return std::nullopt;
+  }
+  return x;
+}
+
 std::optional<model::Expr> to_literal(const Value &v, model::Type to, SourceRange range, Diagnostics &diag,
                                       const model::Expr *spelling) {
   using K = model::Expr::Kind;

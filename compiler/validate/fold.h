@@ -24,6 +24,13 @@ struct Value {
 /// reported when `diag` is given, silently give nothing otherwise.
 std::optional<Value> evaluate(const model::Expr &e, const model::Model &model, Diagnostics *diag);
 
+/// One rule for numbers wherever they stand (docs/language.md, "Numbers"): `x` (a literal, or
+/// an operator just lowered) is evaluated as C would at compile time if its operands are
+/// constant; an int literal past INT_MAX, a float literal past DBL_MAX, int overflow, float
+/// overflow and division by zero are errors at the expression, and give nothing. Each is
+/// reported once: an operand that failed is no longer constant above it.
+std::optional<model::Expr> check_constant(std::optional<model::Expr> x, const model::Model &model, Diagnostics &diag);
+
 /// The literal for `v` as a value of type `to` (numbers convert as C converts them; a number
 /// becomes a string as it would be printed). `spelling`, when given, is kept for a literal the
 /// user wrote, so generated code shows `0.6` rather than `0.59999999999999998`.

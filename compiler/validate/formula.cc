@@ -122,12 +122,12 @@ std::optional<model::Expr> lower_formula(const ast::Expr *e, Context &cx, PlanSc
   case ast::Expr::Kind::Int: {
     model::Expr x = make(K::Int, Type::Int, e->range);
     x.text = e->text;
-    return x;
+    return check_constant(std::move(x), cx.model, cx.diag);
   }
   case ast::Expr::Kind::Float: {
     model::Expr x = make(K::Float, Type::Double, e->range);
     x.text = e->text;
-    return x;
+    return check_constant(std::move(x), cx.model, cx.diag);
   }
   case ast::Expr::Kind::String: {
     model::Expr x = make(K::String, Type::String, e->range);
@@ -137,8 +137,8 @@ std::optional<model::Expr> lower_formula(const ast::Expr *e, Context &cx, PlanSc
   case ast::Expr::Kind::Duration: return not_allowed(cx, e->range, "a duration");
   case ast::Expr::Kind::Call: return not_allowed(cx, e->range, "a function call");
   case ast::Expr::Kind::Name: return lower_name(*e, cx, s, constant);
-  case ast::Expr::Kind::Unary: return lower_unary(*e, cx, s, constant);
-  case ast::Expr::Kind::Binary: return lower_binary(*e, cx, s, constant);
+  case ast::Expr::Kind::Unary: return check_constant(lower_unary(*e, cx, s, constant), cx.model, cx.diag);
+  case ast::Expr::Kind::Binary: return check_constant(lower_binary(*e, cx, s, constant), cx.model, cx.diag);
   case ast::Expr::Kind::Paren: {
     if (e->args.size() != 1) return std::nullopt;
     auto inner = lower_formula(e->args[0].get(), cx, s, constant);

@@ -24,6 +24,9 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
 }
 
 const Symbol *closest(std::string_view name, const std::vector<const Symbol *> &candidates) {
+  // The table costs the product of the lengths: a hostile 40k-character name against every
+  // candidate took seconds. Longer names are not typed by hand, so they get no suggestion.
+  if (name.size() > kMaxSuggestedLength) return nullptr;
   // About a third of the name may be wrong (at least one letter): close enough to be a typo,
   // far enough apart that short unrelated names are not offered.
   std::size_t limit = std::max<std::size_t>(1, (name.size() + 1) / 3);
@@ -31,6 +34,9 @@ const Symbol *closest(std::string_view name, const std::vector<const Symbol *> &
   std::size_t best_distance = limit + 1;
   for (const Symbol *c : candidates) {
     if (c->name == name) continue;
+    // Each letter of difference in length costs at least one edit.
+    std::size_t gap = c->name.size() > name.size() ? c->name.size() - name.size() : name.size() - c->name.size();
+    if (gap > limit) continue;
     std::size_t d = edit_distance(name, c->name);
     if (d < best_distance && d < c->name.size()) {
       best = c;

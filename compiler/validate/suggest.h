@@ -12,6 +12,10 @@ namespace gfec::validation {
 /// Edit distance: insert, delete, substitute, or swap two neighbours; each costs 1.
 std::size_t edit_distance(std::string_view a, std::string_view b);
 
+/// Names longer than this get no did-you-mean (nobody mistypes a name that long by hand, and the
+/// edit distance costs the product of the lengths).
+constexpr std::size_t kMaxSuggestedLength = 64;
+
 /// The candidate a typo most likely meant, or null when none is close enough. Ties go to the
 /// earlier declaration, so the note is deterministic.
 const Symbol *closest(std::string_view name, const std::vector<const Symbol *> &candidates);

@@ -16,6 +16,7 @@
 #include "driver/options.h"
 #include "driver/reports.h"
 #include "driver/run.h"
+#include "safe_output.h"
 
 namespace fs = std::filesystem;
 using namespace carbot;
@@ -121,10 +122,12 @@ int main(int argc, char** argv) {
 
     // 4. What it leaves behind.
     const RunReport report{built.chart, o.chart, sim, result};
-    std::string error;
-    if (!o.trace.empty() && !write_atomically(o.trace, trace_csv(report), error)) return fail(kUsage, error);
-    if (!o.json.empty() && !write_atomically(o.json, result_json(report), error)) return fail(kUsage, error);
-    if (!o.svg.empty() && !write_atomically(o.svg, svg_picture(report), error)) return fail(kUsage, error);
+    std::vector<gfec::safe_output::File> outputs;
+    if (!o.trace.empty()) outputs.push_back({o.trace, trace_csv(report)});
+    if (!o.json.empty()) outputs.push_back({o.json, result_json(report)});
+    if (!o.svg.empty()) outputs.push_back({o.svg, svg_picture(report)});
+    const std::string error = gfec::safe_output::write_all(outputs, {o.chart, o.world});
+    if (!error.empty()) return fail(kUsage, error);
     if (!o.quiet) {
       std::printf("carbot-sim: %s (%s) on %s: %s at %.2f s, %.2f m driven, %d bump%s (%.2f s, %.0fx real time)\n",
                   built.chart.name.c_str(), built.chart.kind.c_str(), world.name.c_str(), result.status.c_str(),

@@ -1,5 +1,6 @@
 // What a run leaves behind: the trace (CSV), the result (JSON) and a picture (SVG).
-// Each is written to a temporary file and renamed, so a failed write leaves no half file.
+// main.cc writes them as one set with safe_output::write_all (compiler/driver/safe_output.h):
+// never over the chart or the world, a special file or one file twice, never half a file.
 #pragma once
 
 #include <string>
@@ -24,8 +25,5 @@ std::string trace_csv(const RunReport& r);
 std::string result_json(const RunReport& r);
 /// The world and the robot's path, with a title and a legend.
 std::string svg_picture(const RunReport& r);
-
-/// Writes `text` to `path` through a temporary file; false (and `error`) on failure.
-bool write_atomically(const std::string& path, const std::string& text, std::string& error);
 
 }  // namespace carbot::driver

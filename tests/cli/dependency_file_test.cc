@@ -42,6 +42,18 @@ TEST_CASE("dependency file: make's special characters are escaped") {
   CHECK(dependency_rule({"out dir/e.c"}, {"a b.sfc"}, false) == "out\\ dir/e.c: a\\ b.sfc\n");
 }
 
+TEST_CASE("dependency file: ':' is escaped; what make cannot read in a rule is named") {
+  CHECK(make_escape("c:/a b.iface") == "c\\:/a\\ b.iface");
+  CHECK(make_unreadable("charts/a#b$c d:e%f.iface") == "");
+  CHECK(make_unreadable("e1\nall:touch${IFS}PWNED") == "a newline");
+  CHECK(make_unreadable(std::string("a\0b", 3)) == "a NUL character");
+  CHECK(make_unreadable("a\rb") == "the control character 0x0d");
+  CHECK(make_unreadable("x;touch PWNED") == "';'");
+  CHECK(make_unreadable("GFEC=evil") == "'='");
+  CHECK(make_unreadable("a|b") == "'|'");
+  CHECK(make_unreadable("a\\ b") == "'\\'");
+}
+
 TEST_CASE("dependency file: the name is -MF, else the primary output with .d") {
   DependencyOptions o;
   CHECK(dependency_file_name(o, "build/engine.c") == "build/engine.d");

@@ -81,4 +81,32 @@ if build >/dev/null; then fail "a broken chart built"; fi
 [ "$(stamp line_follower.c)" = "$before_lf" ] || fail "a failed compile touched line_follower.c"
 [ "$(cat "$work/out/line_follower.d")" = "$before_d" ] || fail "a failed compile changed line_follower.d"
 
+# make injection: an import whose name holds a newline, ';' or '=' must not become a rule, a
+# recipe or a variable of the next make. gfec refuses to write such a dependency file (exit 2).
+for evil in $'e=1\nall:;touch${IFS}PWNED' 'x;touch PWNED' 'GFEC=touch PWNED'; do
+  cp "$source_dir/samples/line_follower.sfc" "$work/src/line_follower.sfc"
+  cp "$work/src/linebot.iface" "$work/src/$evil"
+  printf 'import "%s";\n' "$(printf '%s' "$evil" | sed 's/\\/\\\\/g' | sed ':a;N;$!ba;s/\n/\\n/g')" \
+    | cat - "$work/src/line_follower.sfc" | sed 's/^import "linebot.iface";$//' > "$work/src/lf.new"
+  mv "$work/src/lf.new" "$work/src/line_follower.sfc"
+  tick
+  out=$(build) && fail "a dependency file naming '$evil' was written: $out"
+  echo "$out" | grep -q "cannot write the dependency file" || fail "no message for '$evil': $out"
+  build >/dev/null || true
+  [ ! -e "$work/out/PWNED" ] && [ ! -e "$work/src/PWNED" ] || fail "make ran a command injected by '$evil'"
+  grep -q "touch" "$work/out/line_follower.d" && fail "line_follower.d names '$evil': $(cat "$work/out/line_follower.d")"
+  rm "$work/src/$evil"
+done
+# A ':' in a name is escaped and the rule still works.
+cp "$source_dir/samples/line_follower.sfc" "$work/src/line_follower.sfc"
+cp "$work/src/linebot.iface" "$work/src/a:b.iface"
+sed -i 's/^import "linebot.iface";$/import "a:b.iface";/' "$work/src/line_follower.sfc"
+tick
+build >/dev/null || fail "a build importing a:b.iface"
+grep -q 'a\\:b.iface' "$work/out/line_follower.d" || fail "':' not escaped: $(cat "$work/out/line_follower.d")"
+tick
+touch "$work/src/a:b.iface"
+out=$(build)
+echo "$out" | grep -q "line_follower.sfc" || fail "touching a:b.iface did not recompile: $out"
+
 echo "make dependency files: all checks passed"

@@ -1,7 +1,13 @@
 // carbot-sim as a command: how runs end, and what it says when a chart cannot run.
 #include <catch2/catch.hpp>
 
+#include <sys/stat.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include "support.h"
 
@@ -63,4 +69,59 @@ sfc Broken {
   CHECK(run.exit_code == 1);
   CHECK(run.output.find("Left_FWD") != std::string::npos);  // gfec's own message
   CHECK(run.output.find("broken.sfc: gfec rejected the chart") != std::string::npos);
+}
+
+namespace {
+
+/// Runs carbot-sim with `args` (already quoted), returns the exit code and what it printed.
+int run_cli(const std::string& args, std::string& output, const e2e::TempDir& dir) {
+  const std::string log = dir.file("cli_output.txt");
+  const int status = std::system((std::string(CARBOT_SIM) + " " + args + " >'" + log + "' 2>&1").c_str());
+  std::ifstream in(log);
+  output.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::string q(const std::string& s) { return "'" + s + "'"; }
+
+}  // namespace
+
+// docs/security.md: the outputs are written as gfec writes its own, as one set.
+TEST_CASE("carbot-sim: never writes over the world, the chart, a FIFO or one file twice", "[e2e][cli]") {
+  e2e::TempDir dir;
+  const std::string world = dir.file("w.json"), chart = dir.file("lf.sfc");
+  {
+    std::ifstream w(e2e::source("sim/worlds/oval.json")), c(e2e::source("samples/line_follower.sfc")),
+        i(e2e::source("samples/linebot.iface"));
+    std::ofstream(world) << w.rdbuf();
+    std::ofstream(chart) << c.rdbuf();
+    std::ofstream(dir.file("linebot.iface")) << i.rdbuf();
+  }
+  const std::string fifo = dir.file("fifo");
+  REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
+  const std::string base = q(chart) + " --world " + q(world) + " --seconds 0.05 -q";
+  std::string out;
+  const std::string trace = dir.file("t.csv");
+  const auto world_size = std::filesystem::file_size(world);
+
+  CHECK(run_cli(base + " --trace " + q(trace) + " --json " + q(world), out, dir) == 2);
+  CHECK(out.find("refusing to write") != std::string::npos);
+  CHECK(std::filesystem::file_size(world) == world_size);
+  CHECK_FALSE(std::filesystem::exists(trace));  // the set is refused whole, before anything is written
+
+  CHECK(run_cli(base + " --trace " + q(trace) + " --svg " + q(fifo), out, dir) == 2);
+  CHECK(out.find("not a regular file") != std::string::npos);
+  CHECK(std::filesystem::is_fifo(fifo));
+  CHECK_FALSE(std::filesystem::exists(trace));
+
+  CHECK(run_cli(base + " --json " + q(trace) + " --svg " + q(trace), out, dir) == 2);
+  CHECK(out.find("twice") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(trace));
+
+  CHECK(run_cli(base + " --trace " + q(chart), out, dir) == 2);
+  INFO(out);
+  CHECK(run_cli(base + " --trace " + q(trace) + " --json " + q(dir.file("r.json")), out, dir) == 0);
+  CHECK(std::filesystem::exists(trace));
+  for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(trace).parent_path()))
+    CHECK(entry.path().filename().string().find("tmp") == std::string::npos);
 }

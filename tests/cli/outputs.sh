@@ -1,0 +1,133 @@
+#!/usr/bin/env bash
+# gfec's outputs as a careless CI script or a hostile pull request would aim them
+# (docs/security.md): never over an input or an import, never over a special file, never one
+# file twice, nothing written when refused (exit 2), no temporary left behind.
+# Special files are a FIFO and a symlink to it in a scratch folder, never the real /dev/null:
+# CI runs as root, and a regression must not damage the machine.
+# Usage: outputs.sh GFEC SOURCE_DIR
+set -euo pipefail
+gfec=$1 source_dir=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+mkdir "$work/c"
+cd "$work/c"
+err="$work/err"
+cp "$source_dir"/samples/{line_follower.sfc,linebot.iface,square.plan,square_side.plan,carbot.toolbox} .
+cp line_follower.sfc lf.sfc
+sum() { sha256sum "$@" | cut -c1-64; }
+before_inputs=$(sum line_follower.sfc linebot.iface lf.sfc)
+
+# expect_refused "what" ARGS...: exit 2, a "refusing" message, no file changed or added.
+expect_refused() {
+  local what=$1; shift
+  local listing_before; listing_before=$(ls -lA --time-style=full-iso)
+  set +e
+  "$gfec" "$@" 2>"$err" >/dev/null; local code=$?
+  set -e
+  [ $code -eq 2 ] || fail "$what: exit $code, not 2 ($(cat "$err"))"
+  grep -q "refusing to write" "$err" || fail "$what: message: $(cat "$err")"
+  [ "$(ls -lA --time-style=full-iso)" = "$listing_before" ] || fail "$what: the folder changed: $(ls -lA)"
+  [ "$(sum line_follower.sfc linebot.iface lf.sfc)" = "$before_inputs" ] || fail "$what: an input changed"
+}
+
+# 5. The source, an import, the -MF file, an input named like the default output.
+expect_refused "-o the input" lf.sfc -o lf.sfc
+expect_refused "-o an import" lf.sfc -o linebot.iface
+expect_refused "-MF the input" lf.sfc -o x.c -MD -MF lf.sfc
+expect_refused "-MF an import" lf.sfc -o x.c -MD -MF linebot.iface
+cp lf.sfc x.c
+cp lf.sfc x.sfc
+expect_refused "an input named like its default output" x.c
+rm x.c x.sfc
+# The same through a symlink, a hard link and another spelling of the path.
+ln -s lf.sfc link.c
+ln lf.sfc hard.c
+mkdir sub
+expect_refused "-o a symlink to the input" lf.sfc -o link.c
+expect_refused "-o a hard link to the input" lf.sfc -o hard.c
+expect_refused "-o the input by another path" lf.sfc -o sub/../lf.sfc
+expect_refused "-o the input by its absolute path" lf.sfc -o "$work/c/lf.sfc"
+# The header is an output too: -MF may not name it.
+expect_refused "-MF named like the header" lf.sfc -o lf.c -MD -MF lf.h
+rm link.c hard.c
+
+# 1. Special files: a FIFO, a symlink to it (what /dev/null is to a symlinked /dev), a folder.
+mkfifo fifo
+ln -s fifo null
+expect_refused "-o a FIFO" lf.sfc -o fifo
+expect_refused "-o a symlink to a FIFO" lf.sfc -o null
+expect_refused "-MF a FIFO" lf.sfc -o y.c -MD -MF fifo
+expect_refused "-o a folder" lf.sfc -o sub
+[ -p fifo ] || fail "the FIFO was replaced"
+[ -L null ] && [ -p null ] || fail "the symlink to the FIFO was replaced"
+[ ! -e fifo.h ] && [ ! -e null.h ] || fail "a header was written beside the FIFO"
+
+# 6. Two outputs to one path: nothing is written, not even the first.
+printf 'old\n' > e.c
+expect_refused "-o and -MF the same file" lf.sfc -o e.c -MD -MF e.c
+[ "$(cat e.c)" = old ] || fail "e.c was replaced"
+expect_refused "-o and -MF the same file by two spellings" lf.sfc -o e.c -MD -MF ./sub/../e.c
+rm e.c
+expect_refused "a plan's header named as its -o" square.plan -o X.hpp
+[ ! -e X.hpp ] || fail "X.hpp written"
+
+# 4. A symlink or a file planted under a temporary's old, predictable name is never used.
+printf 'victim\n' > victim
+for pid in $(seq $$ $(( $$ + 50 ))); do ln -sf victim "good.c.gfec-tmp-$pid"; done
+"$gfec" lf.sfc -o good.c || fail "a normal compile failed"
+[ "$(cat victim)" = victim ] || fail "a planted symlink was followed"
+[ -f good.c ] && [ -f good.h ] || fail "outputs missing"
+grep -q "LineFollower" good.c || fail "good.c is not the engine"
+rm -f good.c.gfec-tmp-*
+
+# Writing over an existing regular output is normal; no temporary is left behind.
+"$gfec" lf.sfc -o good.c -MD
+"$gfec" lf.sfc -o good.c -MD
+ls -A | grep -q 'gfec-tmp' && fail "temporaries left: $(ls -A)"
+# A symlinked output (not to an input) is replaced by the file, the target is untouched.
+ln -s victim out.c
+"$gfec" lf.sfc -o out.c
+[ "$(cat victim)" = victim ] && [ -f out.c ] && [ ! -L out.c ] || fail "symlinked output"
+
+# An output folder that does not exist: an I/O error, exit 2.
+set +e
+"$gfec" lf.sfc -o nowhere/x.c 2>"$err"; code=$?
+set -e
+[ $code -eq 2 ] && grep -q "cannot write 'nowhere/x.c'" "$err" || fail "missing folder: $code $(cat "$err")"
+
+# 11. SIGTERM while the outputs are being written: no temporary, no output. The chart is big
+# enough that writing takes a while; the signal is sent as soon as a temporary appears.
+{
+  echo 'import "linebot.iface";'
+  echo 'sfc Big {'
+  echo '  initial place P0 { Left_FW(); }'
+  for i in $(seq 1 4000); do echo "  place P$i { Left_FW(); Right_FW(); Left_Stop(); }"; done
+  for i in $(seq 0 3999); do echo "  P$i -> P$((i + 1)) when Left_IR_Black();"; done
+  echo '}'
+} > big.sfc
+mkdir sig
+killed=0
+for attempt in 1 2 3 4 5; do
+  "$gfec" big.sfc -o sig/big.c -MD &
+  pid=$!
+  for _ in $(seq 1 20000); do
+    if compgen -G 'sig/*gfec-tmp*' >/dev/null; then kill -TERM $pid 2>/dev/null || true; killed=1; break; fi
+    kill -0 $pid 2>/dev/null || break
+  done
+  set +e; wait $pid; code=$?; set -e
+  if [ $killed -eq 1 ] && [ $code -eq 143 ]; then break; fi
+  killed=0
+  rm -f sig/*
+done
+if [ $killed -eq 1 ]; then
+  echo "SIGTERM sent on attempt $attempt"
+  ls -A sig | grep -q 'gfec-tmp' && fail "SIGTERM left temporaries: $(ls -A sig)"
+  # Either nothing (killed while writing) or the whole set (killed during the renames, which
+  # hold the signal back until they are done): never a part.
+  n=$(ls -A sig | wc -l)
+  [ "$n" -eq 0 ] || [ "$n" -eq 3 ] || fail "SIGTERM left part of the set: $(ls -A sig)"
+else
+  echo "note: the compile was too fast to interrupt; the SIGTERM check did not run"
+fi
+echo "gfec outputs: all checks passed"

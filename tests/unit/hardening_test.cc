@@ -1,0 +1,199 @@
+// Hostile inputs to the real gfec (docs/security.md): long flat operator chains in every place an
+// expression goes, NUL in import paths, numbers out of range. Never a crash: a located error
+// (exit 1), or a compile.
+#include "support.h"
+
+#include <catch2/catch.hpp>
+
+#include <chrono>
+#include <string>
+#include <vector>
+
+using namespace gfec;
+using namespace gfec::test;
+
+namespace {
+
+const std::string gfec_exe = std::string(GFEC_BINARY_DIR) + "/gfec";
+
+/// `term op term op ...`, `n` terms.
+std::string chain(const std::string &term, const std::string &op, int n) {
+  std::string out;
+  out.reserve(static_cast<std::size_t>(n) * (term.size() + op.size() + 2));
+  for (int i = 0; i < n; ++i) out += (i ? " " + op + " " : "") + term;
+  return out;
+}
+
+struct Place {
+  std::string name, file;
+};
+
+/// Every place an expression goes, with a chain of `n` terms of `op` in it. Arithmetic chains
+/// are ints, the others bools, so short chains type-check.
+std::vector<Place> places(const std::string &op, int n) {
+  bool logical = op == "||" || op == "&&" || op == "==";
+  std::string term = logical ? "b" : "x";
+  std::string c = chain(term, op, n);
+  std::string iface = "interface I { bool B(); void Act(int v); void Flag(bool v); }\n";
+  std::string call = logical ? "Flag(" + c + ");" : "Act(" + c + ");";
+  std::string cond = logical ? c : "(" + c + ") > 0";
+  std::string vars = "  var int x = 1;\n  var bool b = true;\n";
+  std::vector<Place> p = {
+      {"condition", iface + "sfc X {\n" + vars + "  initial place A;\n  place B;\n  A -> B when " + cond +
+                        ";\n  B -> A;\n}\n"},
+      {"action", iface + "sfc X {\n" + vars + "  initial place A { " + term + " = " + c + "; }\n}\n"},
+      {"call argument", iface + "fsm X {\n" + vars + "  initial state A { " + call + " }\n}\n"},
+      {"constant", iface + "const " + (logical ? "bool K = " + chain("true", op, n) : "int K = " + chain("1", op, n)) +
+                       ";\nsfc X {\n  initial place A { Act(0); }\n}\n"},
+  };
+  if (!logical)
+    p.push_back({"plan formula", "import \"" + std::string(GFEC_SOURCE_DIR) + "/samples/carbot.toolbox\";\n"
+                                 "plan P {\n  config { float length = 50; }\n  start f;\n"
+                                 "  actor f: Forward(" + chain("length", op, n) + ") { FORWARD_OK -> terminate; }\n}\n"});
+  return p;
+}
+
+} // namespace
+
+TEST_CASE("hardening: a flat chain of thousands of operators is a located error, never a crash", "[hardening]") {
+  std::string dir = scratch_dir("hardening_chains");
+  for (std::string op : {"+", "-", "*", "||", "&&", "=="}) {
+    for (int n : {15000, 100000}) {
+      for (const auto &place : places(op, n)) {
+        INFO(op << " x " << n << " in a " << place.name);
+        std::string file = dir + "/chain.sfc";
+        if (place.name == "plan formula") file = dir + "/chain.plan";
+        else if (place.name == "call argument") file = dir + "/chain.fsm";
+        write_file(file, place.file);
+        CommandResult r = run_command(gfec_exe + " --check " + file);
+        CHECK(r.exit_code == 1);
+        // The error points at the operator that went past the limit, in the chain's line.
+        CHECK(r.out.find("error: expression nested too deeply (more than 256 levels") != std::string::npos);
+        CHECK(r.out.find("[nesting]") != std::string::npos);
+        CHECK(r.out.find(file + ":") != std::string::npos);
+      }
+    }
+  }
+}
+
+TEST_CASE("hardening: chains of 200 terms still compile with every back end", "[hardening]") {
+  std::string dir = scratch_dir("hardening_short_chains");
+  for (std::string op : {"+", "-", "*", "||", "&&", "=="}) {
+    for (const auto &place : places(op, 200)) {
+      INFO(op << " in a " << place.name);
+      bool plan = place.name == "plan formula";
+      std::string file = dir + (plan ? "/c.plan" : place.name == "call argument" ? "/c.fsm" : "/c.sfc");
+      write_file(file, place.file);
+      for (std::string emit : {plan ? "cpp" : "c", "json", "dot"}) {
+        INFO("--emit=" << emit);
+        CommandResult r = run_command(gfec_exe + " --emit=" + emit + " " + file + " -o " + dir + "/out." + emit);
+        CHECK(r.exit_code == 0);
+        CHECK(r.out == "");
+      }
+      // The static analyses and the reference interpreter walk the expressions too.
+      CommandResult a = run_command(gfec_exe + " --analyze " + file);
+      CHECK(a.exit_code == 0);
+      if (!plan) {
+        CommandResult run = run_command(gfec_exe + " run " + file + " --ticks 3");
+        CHECK(run.exit_code == 0);
+      }
+    }
+  }
+}
+
+TEST_CASE("hardening: a NUL in an import path is an error at the string", "[hardening]") {
+  FrontEnd fe({{"m.sfc", "import \"a.iface\\0.sfc\";\n"}, {"a.iface", "interface A { void Go(); }\n"}});
+  CHECK(fe.text() ==
+        "m.sfc:1:8: error: an import path cannot contain a NUL character [import]\n"
+        " import \"a.iface\\0.sfc\";\n"
+        "        ^~~~~~~~~~~~~~~\n");
+  CHECK(fe.loaded.paths == std::vector<std::string>{"m.sfc"});
+}
+
+TEST_CASE("hardening: one rule for numbers, in actions, arguments and plan formulas as in constants", "[hardening]") {
+  std::string dir = scratch_dir("hardening_numbers");
+  struct Case {
+    std::string action, message;
+  };
+  // Each would be undefined behaviour or a -Woverflow error in the generated C.
+  std::vector<Case> cases = {
+      {"x = 2147483647 + 1;", ":4:29: error: integer overflow in constant expression [not-constant]"},
+      {"x = 2147483648;", ":4:29: error: integer constant '2147483648' is too large for 'int' [not-constant]"},
+      {"g(3000000000);", ":4:27: error: integer constant '3000000000' is too large for 'int' [not-constant]"},
+      {"f = 1e999;", ":4:29: error: floating constant '1e999' is too large for 'double' [not-constant]"},
+      {"f = 1e308 * 10;", ":4:29: error: floating-point overflow in constant expression [not-constant]"},
+      {"x = 3e9;", ":4:29: error: value 3000000000 does not fit in 'int' [not-constant]"},
+      {"h(1e39);", ":4:27: error: value 1e+39 is too large for 'float' [not-constant]"},
+      {"g(-2147483647 - 2);", ":4:27: error: integer overflow in constant expression [not-constant]"},
+      {"x = 7 % 0;", ":4:29: error: division by zero in constant expression [not-constant]"},
+  };
+  for (const auto &c : cases) {
+    INFO(c.action);
+    // The action on line 4: its value at column 29, an argument at 27.
+    write_file(dir + "/n.sfc", "interface I { void g(int v); void h(float v); }\n"
+                               "sfc N {\n  var int x = 1; var float f = 1;\n"
+                               "  initial place Place { " + c.action + " }\n}\n");
+    CommandResult r = run_command(gfec_exe + " --check " + dir + "/n.sfc");
+    CHECK(r.exit_code == 1);
+    CHECK(r.out.find("n.sfc" + c.message) != std::string::npos);
+  }
+  // What stays legal: the extremes themselves, and arithmetic the robot does at run time.
+  write_file(dir + "/ok.sfc", "interface I { void g(int v); void h(float v); int Count(); }\n"
+                              "sfc N {\n  var int x = 1; var float f = 1;\n"
+                              "  initial place A { x = -2147483647 - 1; x = 2147483647; g(x + 2147483647); "
+                              "h(3.4e38); f = 1e308 / 1e300; g(Count() * 3); }\n}\n");
+  CommandResult ok = run_command(gfec_exe + " --check " + dir + "/ok.sfc");
+  CHECK(ok.exit_code == 0);
+  CHECK(ok.out == "");
+
+  // Plan formulas follow the same rule.
+  for (std::string arg : {"1e999", "2147483647 + 1", "3000000000", "length * 2 + 1e308 * 10"}) {
+    INFO(arg);
+    write_file(dir + "/p.plan", "import \"" + std::string(GFEC_SOURCE_DIR) + "/samples/carbot.toolbox\";\n"
+                                "plan P {\n  config { float length = 50; }\n  start f;\n"
+                                "  actor f: Forward(" + arg + ") { FORWARD_OK -> terminate; }\n}\n");
+    CommandResult r = run_command(gfec_exe + " --check " + dir + "/p.plan");
+    CHECK(r.exit_code == 1);
+    CHECK(r.out.find("p.plan:5:") != std::string::npos);
+    CHECK(r.out.find("[not-constant]") != std::string::npos);
+  }
+}
+
+TEST_CASE("hardening: a duration beyond what timers count is never reached, however long", "[hardening]") {
+  std::string dir = scratch_dir("hardening_durations");
+  // 1e18s once became 0 ticks (a double past 2^64 converted to an integer): "always".
+  for (std::string d : {"1e17s", "1e18s", "1e300s", "4294967296s"}) {
+    INFO(d);
+    write_file(dir + "/d.sfc", "sfc D {\n  period 1ms;\n  initial place A;\n  place B;\n"
+                               "  A -> B when elapsed(A) >= " + d + ";\n  B -> A when elapsed(B) < " + d + ";\n}\n");
+    CommandResult r = run_command(gfec_exe + " " + dir + "/d.sfc -o " + dir + "/d.c");
+    REQUIRE(r.exit_code == 0);
+    std::string c = read_file(dir + "/d.c");
+    CHECK(c.find("(false /* never") != std::string::npos);  // A -> B
+    CHECK(c.find("(true /* always") != std::string::npos);  // B -> A
+    CHECK(c.find("(true /* always") > c.find("(false /* never"));
+  }
+}
+
+TEST_CASE("hardening: did-you-mean stays fast on hostile names, and still helps on real typos", "[hardening]") {
+  std::string dir = scratch_dir("hardening_suggest");
+  // A 40,000-character name and its typo: the edit distance once took seconds per candidate.
+  std::string name(40000, 'a');
+  write_file(dir + "/long.sfc", "interface I { void " + name + "(); }\nsfc X { initial place A { " +
+                                    name.substr(1) + "b(); } }\n");
+  auto start = std::chrono::steady_clock::now();
+  CommandResult r = run_command(gfec_exe + " --check " + dir + "/long.sfc");
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  CHECK(r.exit_code == 1);
+  CHECK(r.out.find("unknown function") != std::string::npos);
+  CHECK(r.out.find("did you mean") == std::string::npos);  // past 64 characters: no suggestion
+  CHECK(seconds < 5);
+  // Names up to 64 characters still get one, and a name far longer than the typo is skipped.
+  std::string n64 = "Drive_" + std::string(58, 'x');
+  write_file(dir + "/typo.sfc", "interface I { void " + n64 + "(); void Forwards_and_then_some_more(); }\n"
+                                "sfc X { initial place A { " + n64.substr(0, 63) + "y(); Forwrd(); } }\n");
+  CommandResult t = run_command(gfec_exe + " --check " + dir + "/typo.sfc");
+  CHECK(t.exit_code == 1);
+  CHECK(t.out.find("note: did you mean '" + n64 + "'?") != std::string::npos);
+  CHECK(t.out.find("did you mean 'Forwards_and_then_some_more'") == std::string::npos);
+}
