@@ -32,6 +32,8 @@ std::string key(const Expr &e) {
   std::string k = fmt::format("{}:{}:{}:{}:{}:{}:{}", static_cast<int>(e.kind), e.index, e.text, e.bool_value, e.ticks,
                               static_cast<int>(e.unary_op), static_cast<int>(e.binary_op));
   for (const auto &a : e.args) k += "(" + key(a) + ")";
+  // active(P.Q) and active(P.R) are different atoms: the path is part of the spelling.
+  for (int p : e.path) k += fmt::format(".{}", p);
   return k;
 }
 

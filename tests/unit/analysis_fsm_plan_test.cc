@@ -154,3 +154,47 @@ TEST_CASE("analysis: the samples are clean with the default warnings") {
     CHECK(diag.all().size() == before);
   }
 }
+
+TEST_CASE("analysis: sub-charts' states are free inputs: different paths are different conditions", "[subcharts]") {
+  // active(Work.Slow) and active(Work.Fast) are two facts about the sub-chart; the analyses
+  // cannot follow it, so neither transition may be called shadowed or dead.
+  auto c = compile(R"(
+sfc Job { initial place Slow; place Fast; Slow -> Fast when x(); }
+fsm Boss {
+  initial state Work runs Job;
+  state Quick;
+  state Calm;
+  success state Done;
+  Work -> Quick when active(Work.Fast);
+  Work -> Calm when active(Work.Slow);
+  state Sub runs Fetch;
+  Work -> Sub when y();
+  Quick -> Done;
+  Calm -> Done;
+  Sub -> Done when succeeded(Sub);
+  Sub -> Work when failed(Sub);
+}
+fsm Fetch { initial state F; success state Ok; failure state No; F -> Ok when x(); F -> No when y(); }
+)",
+                   kBot);
+  CHECK(analyze_text(*c) == "");
+  // The same path twice is the same fact: the second transition is shadowed.
+  auto same = compile(R"(
+sfc Job { initial place Slow; place Fast; Slow -> Fast when x(); }
+fsm Boss {
+  initial state Work runs Job;
+  state Quick;
+  state Calm;
+  success state Done;
+  Work -> Quick when active(Work.Fast);
+  Work -> Calm when active(Work.Fast) && y();
+  Quick -> Done;
+  Calm -> Done;
+}
+)",
+                      kBot);
+  CHECK(headlines(analyze_text(*same, false)) ==
+        "t.sfc:10:3: warning: transition 'T1' (Work -> Calm) can never fire: 'T0' (Work -> Quick) is tried first and "
+        "holds whenever it does [-Wshadowed-transition]\n"
+        "t.sfc:9:3: note: 'T0' has the same or a weaker precondition\n");
+}
