@@ -80,7 +80,7 @@ struct Context {
   /// The temporaries that keep calls in order are this and a number: `gfec_t0` (c_expr.h).
   std::string temp_prefix;
 
-  // ------------------------------------------------------------ sub-charts (LANGUAGE.md §9)
+  // ------------------------------------------------------------ sub-charts (docs/language.md, "Sub-charts")
   bool root = true;          ///< the compiled chart; false for an instance embedded in a parent
   std::string owner;         ///< an instance: "place Search of Patrol", for comments
   /// By place: the context of the instance the place runs (null if it runs nothing), and the
@@ -106,7 +106,7 @@ struct Context {
   std::string member(const std::string &obj, const std::string &name) const;
   /// A C test (unbracketed, not a bool operand yet) that place `p` of the state `obj` (see
   /// member()) is active now; `at_start`: in a transition condition of this chart, where the
-  /// start of the tick counts (LANGUAGE.md §9).
+  /// start of the tick counts (docs/language.md, "Sub-charts").
   std::string active_test(const std::string &obj, int p, bool at_start = false) const;
   /// The engine code that starts, ticks or stops the instance place `p` runs (`Patrol_Search_run(
   /// &m->Search);`), as lines; none where the place runs nothing (or stopping runs no code).

@@ -248,7 +248,7 @@ std::optional<std::string> settled_pair(const Context &c, const Expr &e) {
 class Renderer {
 public:
   /// `at_start`: the expression is a transition's condition, where active()/succeeded()/
-  /// failed() read this chart's activation at the start of the tick (LANGUAGE.md §9).
+  /// failed() read this chart's activation at the start of the tick (docs/language.md, "Sub-charts").
   Renderer(const Context &c, Temporaries &temps, bool at_start = false) : c_(c), temps_(temps), at_start_(at_start) {}
 
   Rendered render(const Expr &e) {

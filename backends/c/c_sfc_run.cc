@@ -52,7 +52,7 @@ private:
   }
 
   /// The start of the tick is kept: for exits and entries, for conditions that read activation
-  /// (LANGUAGE.md §9), or in a hooks build for the hooks.
+  /// (docs/language.md, "Sub-charts"), or in a hooks build for the hooks.
   bool snapshot() const { return c_.needs_snapshot() || c_.reads_start; }
 
   /// The locals, and the snapshot of the activation vector at the start of the tick (taken

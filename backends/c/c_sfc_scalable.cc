@@ -339,7 +339,7 @@ private:
     }
     if (has_transitions() || any_actions()) w_.line("uint32_t {}, {}; /* a word of a set, its bits */", c_.word, c_.bits);
     if (has_transitions()) w_.line("uint32_t {}, {};", c_.index, i);
-    // The start of the tick: for conditions that read activation (LANGUAGE.md §9), and for hooks.
+    // The start of the tick: for conditions that read activation (docs/language.md, "Sub-charts"), and for hooks.
     const bool keep = c_.reads_start;
     if (keep || c_.hooks()) {
       if (!keep) directive(w_, "#ifdef " + c_.hooks_macro);

@@ -121,7 +121,7 @@ void init(CodeWriter &w, const Context &c) {
   w.line("}");
 }
 
-/// An instance's stop (LANGUAGE.md §9): for each active place in declaration order, the stop of
+/// An instance's stop (docs/language.md, "Sub-charts"): for each active place in declaration order, the stop of
 /// the place's own instance, then the place's exit block; innermost first.
 void stop(CodeWriter &w, const Context &c) {
   w.line("/* Stops the instance of {} run by {}: each active {} in declaration order stops its own", c.chart.name,

@@ -225,3 +225,108 @@ TEST_CASE("c engine sub-charts: instances are static, named after their path, em
       CHECK(h.find(f) != std::string::npos);
   }
 }
+
+namespace {
+
+/// fsm Mission { S1 runs sfc Par { A, B runs fsm Tiny { t1, t2 }, C: (A, B) -> C }, S2 }: an fsm
+/// at the root, parallel places stopped in declaration order, a path three levels deep.
+void mission(ChartBuilder &b) {
+  b.fn("Leave", Type::Bool).fn("Back", Type::Bool).fn("E1").fn("S1a").fn("X1").fn("S2a");
+  auto &s1 = b.place("S1", true, {b.act("S1a")});
+  s1.entry = std::vector<Stmt>{b.act("E1")};
+  s1.exit = std::vector<Stmt>{b.act("X1")};
+  b.place("S2", false, {b.act("S2a")});
+  int par = b.begin_chart("Par", Kind::Sfc);
+  b.fn("Join", Type::Bool).fn("InA").fn("Aa").fn("OutA").fn("OutB").fn("Ca");
+  auto &a = b.place("A", true, {b.act("Aa")});
+  a.entry = std::vector<Stmt>{b.act("InA")};
+  a.exit = std::vector<Stmt>{b.act("OutA")};
+  b.place("B", true).exit = std::vector<Stmt>{b.act("OutB")};
+  b.place("C", false, {b.act("Ca")});
+  b.transition({"A", "B"}, {"C"}, b.call("Join"));
+  int tiny = b.begin_chart("Tiny", Kind::Fsm);
+  b.fn("TinyGo", Type::Bool).fn("Ta").fn("OutT");
+  b.place("t1", true, {b.act("Ta")}).exit = std::vector<Stmt>{b.act("OutT")};
+  b.place("t2");
+  b.transition({"t1"}, {"t2"}, b.call("TinyGo"));
+  b.select(par);
+  b.runs("B", tiny);
+  b.select(0);
+  b.runs("S1", par);
+  b.transition({"S1"}, {"S2"}, ChartBuilder::bin(BinaryOp::And, b.active({"S1", "B", "t2"}), b.call("Leave")));
+  b.transition({"S2"}, {"S1"}, ChartBuilder::bin(BinaryOp::Or, b.active({"S1", "B"}), b.call("Back")));
+}
+
+/// The log without the hooks' lines.
+std::string without_hooks(const std::string &log) {
+  std::istringstream in(log);
+  std::string out;
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("hook ", 0) != 0) out += line + "\n";
+  return out;
+}
+
+} // namespace
+
+TEST_CASE("c engine sub-charts: an fsm runs an sfc whose parallel places stop in declaration order",
+          "[c_backend][subchart]") {
+  ChartBuilder b("Mission", Kind::Fsm);
+  mission(b);
+  const std::string script = "\n"
+                             "TinyGo\n"
+                             "Leave\n"
+                             "Back\n"
+                             "Join\n"
+                             "Leave\n";
+  std::string log = run_both("sub_mission", b.model(), script);
+  CHECK(log == "tick 1\n"
+               "act E1\n"               // Mission's first tick: S1 enters
+               // S1 -> S2: active(S1.B.t2) is false (Tiny is in t1): Leave is not called
+               "act S1a\n"
+               "act InA\n"              // Par's first tick: A enters; B has no entry
+               "cond Join -> 0\n"
+               "act Aa\n"               // A's action; B has none, but its Tiny ticks
+               "cond TinyGo -> 0\n"
+               "act Ta\n"
+               "state S1 status 0\n"
+               "tick 2\n"
+               "act S1a\n"
+               "cond Join -> 0\n"
+               "act Aa\n"
+               "cond TinyGo -> 1\n"     // t1 -> t2: t1's exit; t2 has no action
+               "act OutT\n"
+               "state S1 status 0\n"
+               "tick 3\n"
+               "cond Leave -> 1\n"      // active(S1.B.t2) holds: S1 -> S2. Stop Par: A exits,
+               "act OutA\n"             // then B stops its Tiny (t2: no exit) and exits;
+               "act OutB\n"
+               "act X1\n"               // then S1's own exit
+               "act S2a\n"
+               "state S2 status 0\n"
+               "tick 4\n"
+               "cond Back -> 1\n"       // active(S1.B) is false while S1 is not current
+               "act E1\n"               // S1 entered: Par reset, then S1's entry
+               "act S1a\n"
+               "act InA\n"              // Par's first tick again, Tiny's too
+               "cond Join -> 0\n"
+               "act Aa\n"
+               "cond TinyGo -> 0\n"
+               "act Ta\n"
+               "state S1 status 0\n"
+               "tick 5\n"
+               "act S1a\n"              // (Tiny in t1: no Leave)
+               "cond Join -> 1\n"       // (A, B) -> C: A exits, then B: Tiny stopped (t1's
+               "act OutA\n"             // exit), then B's exit
+               "act OutT\n"
+               "act OutB\n"
+               "act Ca\n"
+               "state S1 status 0\n"
+               "tick 6\n"
+               "act S1a\n"              // B is inactive: active(S1.B.t2) is false
+               "act Ca\n"
+               "state S1 status 0\n");
+  // The hooks are the root's: a hooks build logs Mission's changes and otherwise the same.
+  std::string hooked = run_both("sub_mission_hooks", b.model(), script, "-DMission_HOOKS");
+  CHECK(hooked.find("hook gained S2") != std::string::npos);
+  CHECK(without_hooks(hooked) == log);
+}
