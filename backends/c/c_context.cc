@@ -121,6 +121,7 @@ void name_locals(Context &c) {
   c.add = locals.take("add");
   c.before = locals.take("before");
   c.from = locals.take("from");
+  c.to = locals.take("to");
   c.index = locals.take("p");
   const std::pair<const char *, std::string *> scalable[] = {
       {"add_n", &c.add_n}, {"lost", &c.lost}, {"lost_n", &c.lost_n}, {"gained", &c.gained}, {"gained_n", &c.gained_n},
@@ -150,6 +151,22 @@ void name_locals(Context &c) {
 
 bool reads_input_activity(const Context &c, const model::Expr &e);
 
+bool reads_activity(const model::Expr &e) {
+  using K = model::Expr::Kind;
+  if (e.kind == K::Active || e.kind == K::Succeeded || e.kind == K::Failed) return true;
+  for (const auto &a : e.args)
+    if (reads_activity(a)) return true;
+  return false;
+}
+
+bool reads_activity(const model::Stmt &s) {
+  if (reads_activity(s.call) || reads_activity(s.value)) return true;
+  for (const auto *block : {&s.then_block, &s.else_block})
+    for (const auto &t : *block)
+      if (reads_activity(t)) return true;
+  return false;
+}
+
 void collect_facts(Context &c) {
   const auto n = c.chart.places.size();
   c.is_input.assign(n, false);
@@ -166,6 +183,9 @@ void collect_facts(Context &c) {
   }
   for (const auto &t : c.chart.transitions)
     if (t.condition) c.reads_start = c.reads_start || reads_input_activity(c, *t.condition);
+  for (const auto &p : c.chart.places)
+    if (c.fsm && p.exit)
+      for (const auto &s : *p.exit) c.exits_read_activity = c.exits_read_activity || reads_activity(s);
 }
 
 /// The expression reads, by active()/succeeded()/failed(), a place some transition consumes.

@@ -74,6 +74,7 @@ struct Context {
   std::string add;     ///< sfc: activation produced in this tick
   std::string before;  ///< sfc: the activation vector at the start of the tick
   std::string from;    ///< fsm: the state at the start of the tick
+  std::string to;      ///< fsm: the state entered, while the old one's exit blocks run
   std::string index;   ///< a loop index
   // Locals of the scalable form's run function.
   std::string add_n, lost, lost_n, gained, gained_n, word, bits, i, t;
@@ -94,6 +95,9 @@ struct Context {
   /// Some transition condition reads, through active()/succeeded()/failed(), a place whose
   /// counter the transitions decrease: the sfc forms keep the start of the tick for them.
   bool reads_start = false;
+  /// An fsm whose exit blocks read activation: the state left is current while they run
+  /// (docs/language.md: the new state becomes current after the old one's exit).
+  bool exits_read_activity = false;
   /// The root: every interface function any instance calls, for the header.
   std::vector<int> functions;
   const Context *sub_of(int place) const { return sub.at(static_cast<std::size_t>(place)).get(); }

@@ -142,12 +142,22 @@ private:
     w_.line("if ({} != {}) {{", c_.field(c_.state), c_.from);
     w_.indent();
     const int n = static_cast<int>(c_.chart.places.size());
+    bool exits = false;
+    for (int p = 0; p < n; ++p) exits = exits || c_.runs_exit(p);
+    // Exit blocks that read activation see the state left as the current one.
+    const bool swap = exits && c_.exits_read_activity;
+    if (swap) {
+      w_.line("int {} = {}; /* the state entered: current once the state left has exited */", c_.to,
+              c_.field(c_.state));
+      w_.line("{} = {};", c_.field(c_.state), c_.from);
+    }
     for (int p = 0; p < n; ++p)
       if (c_.runs_exit(p)) {
         w_.line("/* exit {} */", c_.place(p).name);
         w_.line("if ({} == {}) {{", c_.from, c_.place_const[static_cast<std::size_t>(p)]);
         block(has_code(c_.place(p).exit) ? *c_.place(p).exit : std::vector<model::Stmt>{}, c_.stop_call(p));
       }
+    if (swap) w_.line("{} = {};", c_.field(c_.state), c_.to);
     for (int p = 0; p < n; ++p)
       if (c_.runs_entry(p) || c_.resets_timer(p)) {
         w_.line("/* {} {} */", c_.runs_entry(p) ? "entry" : "timer of", c_.place(p).name);

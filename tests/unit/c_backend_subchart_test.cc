@@ -330,3 +330,25 @@ TEST_CASE("c engine sub-charts: an fsm runs an sfc whose parallel places stop in
   CHECK(hooked.find("hook gained S2") != std::string::npos);
   CHECK(without_hooks(hooked) == log);
 }
+
+TEST_CASE("c engine sub-charts: an fsm's exit block sees the state left as current, its entry the new one",
+          "[c_backend][subchart]") {
+  ChartBuilder b("Door", Kind::Fsm);
+  b.fn("Close", Type::Bool).fn("Saw", Type::Void, {{Type::Bool, "open"}, {Type::Bool, "shut"}});
+  b.place("Open", true);
+  b.place("Shut");
+  b.chart().places[0].exit = std::vector<Stmt>{b.act("Saw", {b.active({"Open"}), b.active({"Shut"})})};
+  b.chart().places[1].entry = std::vector<Stmt>{b.act("Saw", {b.active({"Open"}), b.active({"Shut"})})};
+  b.transition({"Open"}, {"Shut"}, b.call("Close"));
+  std::string log = run_both("sub_fsm_exit", b.model(), "\nClose\n\n");
+  CHECK(log == "tick 1\n"
+               "cond Close -> 0\n"
+               "state Open status 0\n"
+               "tick 2\n"
+               "cond Close -> 1\n"
+               "act Saw(1, 0)\n"  // Open's exit: Shut becomes current only after it
+               "act Saw(0, 1)\n"  // Shut's entry
+               "state Shut status 0\n"
+               "tick 3\n"
+               "state Shut status 0\n");
+}
