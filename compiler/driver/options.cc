@@ -84,6 +84,14 @@ std::vector<const char *> take_dependency_flags(int argc, const char *const *arg
   return rest;
 }
 
+/// The four ways gfec is run, for --help and for a command line without files.
+std::string usage_forms() {
+  return "Usage: gfec CHART [-o OUT] [OPTIONS]      compile an sfc or fsm to a C engine, a plan to C++\n"
+         "       gfec --check FILE... [OPTIONS]     validate, report every diagnostic, write nothing\n"
+         "       gfec --analyze FILE... [OPTIONS]   every static analysis, a report per chart and plan\n"
+         "       gfec run CHART --inputs TRACE.csv  run a chart in the reference interpreter, tick by tick\n";
+}
+
 std::string warning_help() {
   std::string s =
       "Warnings (-W<name> turns one on, -Wno-<name> off; -Wall all; -w none; -Werror makes them errors,\n"
@@ -100,7 +108,8 @@ std::string warning_help() {
 ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
   ParsedCommandLine result;
   Options &o = result.options;
-  CLI::App app{"gfec - compiles chart files (sfc, fsm, plan) into C and C++ engines for robots", "gfec"};
+  CLI::App app{"gfec - compiles chart files (sfc, fsm, plan) into C and C++ engines for robots\n\n" + usage_forms(),
+               "gfec"};
   app.footer(warning_help() +
              "\nDependency files, as gcc writes them: -MD writes OUTPUT.d (or -MF FILE) for make, naming\n"
              "every file imported; -MP adds an empty rule per import; -MT TARGET names the target.\n"
@@ -112,7 +121,7 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
   std::vector<std::string> warning_flags;
   std::vector<std::string> f_flags;
   bool no_line = false;
-  app.add_option("files", o.inputs, "Chart files to compile (several only with --check)")->required();
+  app.add_option("files", o.inputs, "Chart files to compile (several only with --check or --analyze)");
   app.add_option("-o,--output", o.output,
                  "Output file; a C engine's header is written beside it; '-' for stdout (one-file back ends)");
   // One value per occurrence (-I a -I b, -Wall -Werror): CLI11 would otherwise let a vector
@@ -165,6 +174,13 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
     result.message = "gfec: error: " + message + "\n";
     return result;
   };
+  if (o.inputs.empty()) {
+    // gcc's words, then what a first-time user can type next.
+    result.exit_now = true;
+    result.exit_code = 2;
+    result.message = "gfec: fatal error: no input files\n" + usage_forms() + "Run 'gfec --help' for the options, 'gfec run --help' for the interpreter's.\n";
+    return result;
+  }
   for (const auto &w : warning_flags)
     if (!apply_warning_flag(w, o.warnings)) return usage_error(fmt::format("unknown warning option '-W{}'", w));
   for (const auto &f : f_flags) {

@@ -197,3 +197,60 @@ TEST_CASE("the error limit in gcc's words, singular or plural alike") {
   CHECK(one.limit_reached());
   CHECK(limit_message(one) == "compilation terminated due to -fmax-errors=1.");
 }
+
+namespace {
+
+/// The first diagnostic of a chart, rendered with its fix-its as gcc's parseable lines.
+std::string first_error(const std::string &text, MemoryFileSystem fs = {}) {
+  SourceManager sources;
+  Diagnostics diag;
+  fs.add("t.sfc", text);
+  LoadResult loaded = load_program("t.sfc", {}, fs, sources, diag);
+  if (!diag.has_errors()) validate(loaded.program, sources, diag);
+  if (diag.all().empty()) return "(no diagnostic)";
+  TextStyle style;
+  style.parseable_fixits = true;
+  return render_text(diag.all().front(), sources, style);
+}
+
+} // namespace
+
+TEST_CASE("beginner hints: a fork or join without brackets says to write (B, C)") {
+  std::string fork = first_error("sfc T {\n  initial place A;\n  place B;\n  place C;\n  A -> B, C;\n}\n");
+  CHECK(fork.rfind("t.sfc:5:9: error: expected ';' after the transition, found ',' [syntax]\n", 0) == 0);
+  CHECK(fork.find("note: a transition to several places is a fork: write them in brackets, 'A -> (B, ...)'") !=
+        std::string::npos);
+  std::string join = first_error("sfc T {\n  initial place A;\n  place B;\n  place C;\n  transition A, B -> C;\n}\n");
+  CHECK(join.rfind("t.sfc:5:15: error: expected '->' between a transition's inputs and outputs, found ','", 0) == 0);
+  CHECK(join.find("is a join: write them in brackets, '(A, ...) -> ...'") != std::string::npos);
+}
+
+TEST_CASE("beginner hints: '2 s' is written '2s', with the fix") {
+  std::string e = first_error("interface R { void Go(); }\nsfc T {\n  initial place A { Go(); }\n  place B;\n"
+                              "  A -> B when elapsed(A) >= 2 s;\n  B -> A;\n}\n");
+  CHECK(e.rfind("t.sfc:5:31: error: expected an operator after the number, found 's' [syntax]\n", 0) == 0);
+  CHECK(e.find("fix-it:\"t.sfc\":{5:29-5:32}:\"2s\"\n") != std::string::npos);
+  CHECK(e.find("note: durations are written without a space: '2s'") != std::string::npos);
+  CHECK(first_error("sfc T {\n  initial place A;\n  A -> A when elapsed(A) >= 1.5 ms;\n}\n").find("'1.5ms'") !=
+        std::string::npos);
+}
+
+TEST_CASE("beginner hints: '=' in a condition means '=='") {
+  std::string e = first_error("interface R { bool Button(); }\nsfc T {\n  initial place A;\n  place B;\n"
+                              "  A -> B when Button() = true;\n  B -> A;\n}\n");
+  CHECK(e.rfind("t.sfc:5:24: error: expected an operator, found '=' [syntax]\n", 0) == 0);
+  CHECK(e.find("fix-it:\"t.sfc\":{5:24-5:25}:\"==\"\n") != std::string::npos);
+  CHECK(e.find("note: '=' assigns; to compare, write '=='") != std::string::npos);
+}
+
+TEST_CASE("did-you-mean for imports: the nearest file name in the folders searched") {
+  MemoryFileSystem fs;
+  fs.add("crossing.iface", "interface C { void Go(); }\n");
+  fs.add("other.fsm", "");
+  std::string e = first_error("import \"crosing.iface\";\nsfc T { initial place A; }\n", fs);
+  CHECK(e.find("cannot find imported file 'crosing.iface'") != std::string::npos);
+  CHECK(e.find("note: did you mean 'crossing.iface'?") != std::string::npos);
+  CHECK(e.find("fix-it:\"t.sfc\":{1:8-1:23}:\"\\\"crossing.iface\\\"\"") != std::string::npos);
+  // Nothing near: no suggestion.
+  CHECK(first_error("import \"zzz.iface\";\nsfc T { initial place A; }\n", fs).find("did you mean") == std::string::npos);
+}

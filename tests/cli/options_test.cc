@@ -101,3 +101,18 @@ TEST_CASE("options: gcc's warning and colour flags: -w, -Werror=NAME, -Wno-error
   CHECK_FALSE(parse({"x.sfc", "-fno-diagnostics-show-line-numbers"}).options.line_numbers);
   CHECK(parse({"x.sfc", "-fdiagnostics-parseable-fixits"}).options.parseable_fixits);
 }
+
+TEST_CASE("options: no file is gcc's 'no input files' and the ways to run gfec, not a CLI11 message") {
+  for (auto cl : {parse({}), parse({"--check"}), parse({"-Wall"})}) {
+    CHECK(cl.exit_now);
+    CHECK(cl.exit_code == 2);
+    CHECK(cl.message.rfind("gfec: fatal error: no input files\n", 0) == 0);
+    CHECK(cl.message.find("gfec run CHART --inputs") != std::string::npos);
+    CHECK(cl.message.find("--analyze") != std::string::npos);
+    CHECK(cl.message.find("is required") == std::string::npos);
+  }
+  auto help = parse({"--help"});
+  CHECK(help.exit_code == 0);
+  CHECK(help.message.find("gfec run CHART") != std::string::npos);
+  CHECK(help.message.find("--analyze") != std::string::npos);
+}
