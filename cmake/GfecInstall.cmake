@@ -37,3 +37,14 @@ install(FILES
   "${PROJECT_BINARY_DIR}/gfecConfigVersion.cmake"
   "${CMAKE_CURRENT_LIST_DIR}/GfecChart.cmake"
   DESTINATION "${GFEC_INSTALL_CMAKEDIR}")
+
+# Manual pages (written by hand in roff: docs/man/) and bash completion, one script for both
+# commands, installed under each name because bash-completion loads a file by command name.
+install(FILES "${PROJECT_SOURCE_DIR}/docs/man/gfec.1" DESTINATION "${CMAKE_INSTALL_MANDIR}/man1")
+install(FILES "${PROJECT_SOURCE_DIR}/tools/completion/gfec.bash"
+  DESTINATION "${CMAKE_INSTALL_DATADIR}/bash-completion/completions" RENAME gfec)
+if(GFEC_BUILD_SIM)
+  install(FILES "${PROJECT_SOURCE_DIR}/docs/man/carbot-sim.1" DESTINATION "${CMAKE_INSTALL_MANDIR}/man1")
+  install(FILES "${PROJECT_SOURCE_DIR}/tools/completion/gfec.bash"
+    DESTINATION "${CMAKE_INSTALL_DATADIR}/bash-completion/completions" RENAME carbot-sim)
+endif()
