@@ -65,11 +65,13 @@ void name_globals(Context &c) {
   for (const char *api : {"init", "run", "activation", "state", "status"}) globals.claim(t + "_" + api);
   c.hooks_macro = t + "_HOOKS";
   c.checks_macro = t + "_CHECKS";
+  c.assert_macro = t + "_ASSERT";
+  c.assert_off_macro = t + "_ASSERT_OFF";
   c.activated_fn = t + "_activated";
   c.enabled_fn = t + "_enabled";
   c.place_count = t + "_PLACE_COUNT";
   c.transition_count = t + "_TRANSITION_COUNT";
-  for (const auto *n : {&c.hooks_macro, &c.checks_macro, &c.activated_fn, &c.enabled_fn, &c.place_count,
+  for (const auto *n : {&c.hooks_macro, &c.checks_macro, &c.assert_macro, &c.assert_off_macro, &c.activated_fn, &c.enabled_fn, &c.place_count,
                         &c.transition_count})
     globals.claim(*n);
   for (const auto &p : c.chart.places) c.place_const.push_back(globals.take(t + "_" + p.name));

@@ -14,18 +14,19 @@ namespace {
 void includes(CodeWriter &w, const Context &c) {
   directive(w, "#include " + c_string_literal(c.header_file));
   if (!c.fsm && !c.readable()) return;  // the scalable forms need nothing beyond engine.h's
-  // Standard headers only for what this engine uses.
-  bool sfc_hooks_snapshot = !c.fsm && !c.needs_snapshot();
-  if (c.needs_snapshot() || sfc_hooks_snapshot || c.has_post) w.blank();
-  if (!c.fsm && c.needs_snapshot()) directive(w, "#include <string.h>");
-  if (sfc_hooks_snapshot) {
-    directive(w, "#ifdef " + c.hooks_macro);
-    directive(w, "#include <string.h>");
-    directive(w, "#endif");
-  }
+  // No hosted header in any mode (a freestanding C99 engine). The postconditions' checks use
+  // X_ASSERT, which the user may define (before this point: on the command line or in a
+  // verbatim block) to the firmware's own handler; by default it is <assert.h>'s assert.
   if (c.has_post) {
+    w.blank();
     directive(w, "#ifdef " + c.checks_macro);
+    directive(w, "#ifndef " + c.assert_macro);
     directive(w, "#include <assert.h>");
+    directive(w, "#define " + c.assert_macro + "(cond) assert(cond)");
+    directive(w, "#ifdef NDEBUG");
+    directive(w, "#define " + c.assert_off_macro + " /* assert is off: skip the checks' temporaries too */");
+    directive(w, "#endif");
+    directive(w, "#endif");
     directive(w, "#endif");
   }
 }
