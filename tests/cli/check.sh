@@ -111,4 +111,9 @@ grep -q "^compilation terminated due to -fmax-errors=1\.$" "$err" || fail "limit
 printf 'sfc Fix { initial place Ready; place Done; Ready -> Dnoe; Done -> Ready; }\n' > fix.sfc
 "$gfec" --check -fdiagnostics-parseable-fixits fix.sfc 2>"$err" && fail "fix.sfc passed"
 grep -q '^fix-it:"fix.sfc":{1:53-1:57}:"Done"$' "$err" || fail "no parseable fix-it: $(cat "$err")"
+# Counts in the --analyze summaries are singular or plural as they should be.
+printf 'sfc One { initial place A; place B; A -> B; }\n' > one.sfc
+"$gfec" --analyze one.sfc >"$out" 2>"$err" || fail "--analyze one.sfc: $(cat "$err")"
+grep -q "sfc One: 2 places, 1 transition$" "$out" || fail "plural: $(cat "$out")"
+grep -q "never active: 0 places; never firing: 0 transitions$" "$out" || fail "plural: $(cat "$out")"
 echo "gfec --check: all checks passed"

@@ -68,6 +68,12 @@ for generator in "${generators[@]}"; do
     grep -q -e "$project" -e "$out" -e "$work" "$out/$f" && fail "$f holds an absolute path: $(grep -e "$work" "$out/$f" | head -3)"
   done
   grep -q '#line [0-9]* "\.\./project-[^"]*/charts/blink.sfc"' "$out/blink.c" || fail "blink.c's #line is not relative"
+  # A plan through CMake: CountTo counts one per step up to limit = 3, writes reached, DONE ends it.
+  [ "$("$out/plan_user")" = "reached=3 succeeded=1" ] || fail "plan_user: $("$out/plan_user")"
+  for f in count.cpp count.hpp count.cpp.d; do
+    grep -q -e "$project" -e "$out" -e "$work" "$out/$f" && fail "$f holds an absolute path: $(grep -e "$work" "$out/$f" | head -3)"
+  done
+  grep -q '#line [0-9]* "\.\./project-[^"]*/charts/count.plan"' "$out/count.cpp" || fail "count.cpp's #line is not relative"
 
   # Nothing changed: nothing is regenerated.
   before=$(stat -c %y "$out/blink.c")
