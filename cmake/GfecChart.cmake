@@ -85,13 +85,23 @@ function(gfec_add_chart target chart)
   endif()
   foreach(dir IN LISTS ARG_INCLUDE_DIRECTORIES)
     get_filename_component(dir "${dir}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_SOURCE_DIR}")
+    file(RELATIVE_PATH dir "${CMAKE_CURRENT_BINARY_DIR}" "${dir}")
+    if(dir STREQUAL "")
+      set(dir .)
+    endif()
     list(APPEND flags -I "${dir}")
   endforeach()
 
   set(depfile "${output}.d")
+  # gfec runs in the binary folder with paths relative to it, so the #line directives and the
+  # dependency file hold no absolute path: the generated files are the same in every checkout
+  # and build folder (reproducible builds, shareable caches).
+  file(RELATIVE_PATH rel_chart "${CMAKE_CURRENT_BINARY_DIR}" "${chart_path}")
+  file(RELATIVE_PATH rel_output "${CMAKE_CURRENT_BINARY_DIR}" "${output}")
+  file(RELATIVE_PATH rel_depfile "${CMAKE_CURRENT_BINARY_DIR}" "${depfile}")
   add_custom_command(
     OUTPUT ${outputs}
-    COMMAND ${compiler} ${flags} ${ARG_OPTIONS} -MD -MF "${depfile}" -o "${output}" "${chart_path}"
+    COMMAND ${compiler} ${flags} ${ARG_OPTIONS} -MD -MF "${rel_depfile}" -o "${rel_output}" "${rel_chart}"
     MAIN_DEPENDENCY "${chart_path}"
     DEPENDS ${compiler}
     DEPFILE "${depfile}"

@@ -13,8 +13,11 @@ if(NOT TARGET gfec::gfec)
 endif()
 set_target_properties(afp_runtime PROPERTIES EXPORT_NAME runtime)
 
+# Two export sets: the compiler (a host tool, needed by every user, also in a cross build) and
+# the plan runtime (a host library that needs Threads), so that a project using only the
+# compiler never has to find Threads (gfecConfig.cmake.in loads the runtime as a component).
 install(TARGETS gfec EXPORT gfecTargets RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}")
-install(TARGETS afp_runtime EXPORT gfecTargets
+install(TARGETS afp_runtime EXPORT gfecRuntimeTargets
   ARCHIVE DESTINATION "${CMAKE_INSTALL_LIBDIR}"
   LIBRARY DESTINATION "${CMAKE_INSTALL_LIBDIR}"
   RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}"
@@ -22,12 +25,26 @@ install(TARGETS afp_runtime EXPORT gfecTargets
 install(DIRECTORY "${PROJECT_SOURCE_DIR}/runtime/include/afp" DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}")
 
 install(EXPORT gfecTargets NAMESPACE gfec:: DESTINATION "${GFEC_INSTALL_CMAKEDIR}")
+install(EXPORT gfecRuntimeTargets NAMESPACE gfec:: DESTINATION "${GFEC_INSTALL_CMAKEDIR}")
 configure_package_config_file("${CMAKE_CURRENT_LIST_DIR}/gfecConfig.cmake.in"
   "${PROJECT_BINARY_DIR}/gfecConfig.cmake" INSTALL_DESTINATION "${GFEC_INSTALL_CMAKEDIR}")
+# ARCH_INDEPENDENT: gfec is a host tool. Without it the version file compares pointer sizes and
+# rejects every 32-bit consumer -- which is what a Cortex-M cross build is.
 write_basic_package_version_file("${PROJECT_BINARY_DIR}/gfecConfigVersion.cmake"
-  VERSION "${PROJECT_VERSION}" COMPATIBILITY SameMinorVersion)
+  VERSION "${PROJECT_VERSION}" COMPATIBILITY SameMinorVersion ARCH_INDEPENDENT)
 install(FILES
   "${PROJECT_BINARY_DIR}/gfecConfig.cmake"
   "${PROJECT_BINARY_DIR}/gfecConfigVersion.cmake"
   "${CMAKE_CURRENT_LIST_DIR}/GfecChart.cmake"
   DESTINATION "${GFEC_INSTALL_CMAKEDIR}")
+
+# Manual pages (written by hand in roff: docs/man/) and bash completion, one script for both
+# commands, installed under each name because bash-completion loads a file by command name.
+install(FILES "${PROJECT_SOURCE_DIR}/docs/man/gfec.1" DESTINATION "${CMAKE_INSTALL_MANDIR}/man1")
+install(FILES "${PROJECT_SOURCE_DIR}/tools/completion/gfec.bash"
+  DESTINATION "${CMAKE_INSTALL_DATADIR}/bash-completion/completions" RENAME gfec)
+if(GFEC_BUILD_SIM)
+  install(FILES "${PROJECT_SOURCE_DIR}/docs/man/carbot-sim.1" DESTINATION "${CMAKE_INSTALL_MANDIR}/man1")
+  install(FILES "${PROJECT_SOURCE_DIR}/tools/completion/gfec.bash"
+    DESTINATION "${CMAKE_INSTALL_DATADIR}/bash-completion/completions" RENAME carbot-sim)
+endif()

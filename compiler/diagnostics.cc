@@ -12,6 +12,11 @@ Diagnostic &Diagnostic::note(SourceRange r, std::string message) {
   return *this;
 }
 
+Diagnostic &Diagnostic::fix(SourceRange r, std::string replacement) {
+  fixits.push_back({r, std::move(replacement)});
+  return *this;
+}
+
 WarningOptions::WarningOptions() {
   for (int i = 0; i < static_cast<int>(Warning::Count_); ++i)
     enabled[i] = warning_table()[i].on_by_default;
@@ -28,7 +33,7 @@ Diagnostic &Diagnostics::error(SourceRange range, std::string check, std::string
     return discarded_;
   }
   ++errors_;
-  list_.push_back({Severity::Error, range, std::move(message), std::move(check), {}});
+  list_.push_back({Severity::Error, range, std::move(message), std::move(check), {}, {}});
   return list_.back();
 }
 
@@ -38,9 +43,9 @@ Diagnostic &Diagnostics::warning(Warning w, SourceRange range, std::string messa
     discarded_ = {};
     return discarded_;
   }
-  if (options_.as_errors) return error(range, "-W" + name, std::move(message));
+  if (options_.is_error(w)) return error(range, "-W" + name, std::move(message));
   ++warnings_;
-  list_.push_back({Severity::Warning, range, std::move(message), "-W" + name, {}});
+  list_.push_back({Severity::Warning, range, std::move(message), "-W" + name, {}, {}});
   return list_.back();
 }
 

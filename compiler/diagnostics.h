@@ -19,6 +19,14 @@ struct DiagnosticNote {
   bool has_range = false;
 };
 
+/// A fix-it hint: replace `range` (empty: insert at its start) with `replacement`. Printed under
+/// the caret as gcc does, as gcc's "fix-it:" lines (-fdiagnostics-parseable-fixits), in JSON
+/// ("fixits") and in SARIF ("fixes").
+struct FixIt {
+  SourceRange range;
+  std::string replacement;
+};
+
 struct Diagnostic {
   Severity severity = Severity::Error;
   SourceRange range;
@@ -26,19 +34,29 @@ struct Diagnostic {
   /// Stable check name: "unknown-name", "syntax", ...; for warnings the -W name.
   std::string check;
   std::vector<DiagnosticNote> notes;
+  std::vector<FixIt> fixits;
 
   Diagnostic &note(std::string message);
   Diagnostic &note(SourceRange range, std::string message);
+  Diagnostic &fix(SourceRange range, std::string replacement);
 };
 
-/// Which warnings are on, and whether they count as errors (-W, -Wno-, -Werror, -Wall).
+/// Which warnings are on, and whether they count as errors (-W, -Wno-, -Werror, -Wall,
+/// -Werror=NAME, -Wno-error=NAME).
 struct WarningOptions {
   std::array<bool, static_cast<int>(Warning::Count_)> enabled{};
   bool as_errors = false;
+  /// Per warning, as gcc: +1 after -Werror=NAME (an error even without -Werror), -1 after
+  /// -Wno-error=NAME (a warning even with -Werror), 0: as -Werror says.
+  std::array<signed char, static_cast<int>(Warning::Count_)> error_override{};
 
   WarningOptions();
   bool is_on(Warning w) const { return enabled[static_cast<int>(w)]; }
   void set(Warning w, bool on) { enabled[static_cast<int>(w)] = on; }
+  bool is_error(Warning w) const {
+    signed char o = error_override[static_cast<int>(w)];
+    return o != 0 ? o > 0 : as_errors;
+  }
 };
 
 class Diagnostics {

@@ -1,5 +1,6 @@
 #include "file_system.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -15,6 +16,25 @@ std::optional<std::string> RealFileSystem::read(const std::string &path) const {
   text << in.rdbuf();
   if (in.bad()) return std::nullopt;
   return text.str();
+}
+
+std::vector<std::string> RealFileSystem::list(const std::string &dir) const {
+  std::vector<std::string> names;
+  std::error_code ec;
+  for (std::filesystem::directory_iterator it(dir.empty() ? "." : dir, ec), end; !ec && it != end; it.increment(ec))
+    if (it->is_regular_file(ec)) names.push_back(it->path().filename().string());
+  std::sort(names.begin(), names.end());  // directory order is the file system's: sort for stable notes
+  return names;
+}
+
+std::vector<std::string> MemoryFileSystem::list(const std::string &dir) const {
+  std::vector<std::string> names;
+  for (const auto &entry : files_) {
+    std::filesystem::path p(entry.first);
+    std::string parent = p.parent_path().generic_string();
+    if (parent == dir || (parent.empty() && dir == ".")) names.push_back(p.filename().string());
+  }
+  return names;
 }
 
 std::optional<std::string> MemoryFileSystem::read(const std::string &path) const {

@@ -161,7 +161,9 @@ Token Lexer::next() {
       return make(Tok::AndAnd, begin);
     }
     ++pos_;
-    return error(begin, pos_, "'&' is not an operator here; did you mean '&&'?");
+    diag_.error({file_, begin, pos_}, "syntax", "'&' is not an operator here; did you mean '&&'?")
+        .fix({file_, begin, pos_}, "&&");
+    return make(Tok::Error, begin);
   case '|': return two('|', Tok::OrOr, Tok::Pipe);
   default: break;
   }

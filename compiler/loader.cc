@@ -1,9 +1,11 @@
 #include "loader.h"
 
 #include "parser.h"
+#include "validate/suggest.h"
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <map>
 
@@ -88,6 +90,30 @@ private:
     }
     auto &d = diag_.error(import.range, "import", fmt::format("cannot find imported file '{}'", import.path));
     for (const auto &t : tried) d.note(fmt::format("looked for '{}'", t));
+    suggest_file(d, import, candidates);
+  }
+
+  /// Did-you-mean for an import: the file name nearest the one asked for in the folders
+  /// searched ("crosing.iface" -> "crossing.iface"), a typo's distance apart (a third of it).
+  void suggest_file(Diagnostic &d, const ast::Import &import, const std::vector<fsys::path> &searched) {
+    fsys::path wanted(import.path);
+    std::string name = wanted.filename().string();
+    std::size_t limit = std::max<std::size_t>(1, (name.size() + 1) / 3);
+    std::string best;
+    std::size_t best_distance = limit + 1;
+    for (const auto &candidate : searched) {
+      for (const std::string &file : fs_.list(normal(candidate.parent_path()))) {
+        std::size_t distance = validation::edit_distance(name, file);
+        if (distance > 0 && distance < best_distance) {
+          best = file;
+          best_distance = distance;
+        }
+      }
+    }
+    if (best.empty()) return;
+    std::string path = (wanted.parent_path() / best).generic_string();
+    if (path.find_first_of("\\\"") == std::string::npos) d.fix(import.range, fmt::format("\"{}\"", path));
+    d.note(fmt::format("did you mean '{}'?", path));
   }
 
   void report_cycle(const ast::Import &import, const std::string &target) {

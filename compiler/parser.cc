@@ -76,6 +76,18 @@ private:
     }
     throw SyntaxError{};
   }
+  /// fail() for a beginner's mistake the parser recognises: the error, a note saying what to
+  /// write instead, and a fix-it when the fix is certain (`fix_text` non-empty).
+  [[noreturn]] void fail_hint(const std::string &what, const std::string &hint, SourceRange fix_range = {},
+                              const std::string &fix_text = {}) {
+    if (!tok_.follows_error) {
+      std::string found = at(Tok::End) ? "end of file" : fmt::format("'{}'", tok_.text);
+      auto &d = diag_.error(tok_.range, "syntax", fmt::format("{}, found {}", what, found));
+      if (!fix_text.empty()) d.fix(fix_range, fix_text);
+      d.note(hint);
+    }
+    throw SyntaxError{};
+  }
   SourceRange from(std::uint32_t begin) const { return {file_, begin, prev_end_}; }
   std::uint32_t here() const { return tok_.range.begin; }
 
@@ -424,8 +436,16 @@ Transition Parser::transition() {
     fail(keyword ? "expected the transition's input place" : "expected a declaration");
   }
   t.inputs = std::move(inputs);
+  if (at(Tok::Comma) && !t.parenthesised_inputs)
+    fail_hint("expected '->' between a transition's inputs and outputs",
+              fmt::format("a transition from several places is a join: write them in brackets, '({}, ...) -> ...'",
+                          t.inputs.front().text));
   expect(Tok::Arrow, "between a transition's inputs and outputs");
   t.outputs = place_list(t.parenthesised_outputs);
+  if (at(Tok::Comma) && !t.parenthesised_outputs)
+    fail_hint("expected ';' after the transition",
+              fmt::format("a transition to several places is a fork: write them in brackets, '{} -> ({}, ...)'",
+                          t.inputs.front().text, t.outputs.front().text));
   if (accept(Tok::KwWhen)) t.condition = expr();
   expect(Tok::Semi, "after the transition");
   t.range = from(begin);
@@ -702,6 +722,9 @@ ExprPtr Parser::binary(int min_precedence) {
     case Tok::Star: op = BinaryOp::Mul; break;
     case Tok::Slash: op = BinaryOp::Div; break;
     case Tok::Percent: op = BinaryOp::Mod; break;
+    case Tok::Assign:
+      // No expression is followed by '=': "Button() = true" meant a comparison.
+      fail_hint("expected an operator", "'=' assigns; to compare, write '=='", tok_.range, "==");
     default: height_ = left_height; return left;
     }
     int prec = precedence(op);
@@ -746,6 +769,13 @@ ExprPtr Parser::primary() {
   case Tok::Int:
   case Tok::Float: {
     Token t = take();
+    // "2 s": the unit came apart from its number, which the lexer only joins when they touch.
+    if (at(Tok::Ident) && (tok_.text == "s" || tok_.text == "ms")) {
+      std::string joined = fmt::format("{}{}", t.text, tok_.text);
+      fail_hint("expected an operator after the number",
+                fmt::format("durations are written without a space: '{}'", joined),
+                {file_, t.range.begin, tok_.range.end}, joined);
+    }
     auto e = make(t.kind == Tok::Int ? Expr::Kind::Int : Expr::Kind::Float, t.range);
     e->text = std::string(t.text);
     e->spelling = e->text;

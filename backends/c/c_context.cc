@@ -69,18 +69,22 @@ void name_globals(Context &c, NameSpace &globals, const Context *root) {
     for (const char *api : {"init", "run", "activation", "state", "status"}) globals.claim(t + "_" + api);
     c.hooks_macro = t + "_HOOKS";
     c.checks_macro = t + "_CHECKS";
+    c.assert_macro = t + "_ASSERT";
+    c.assert_off_macro = t + "_ASSERT_OFF";
   } else {
     // No hooks in an instance; X_CHECKS of the root checks every instance's postconditions.
     c.hooks_macro = root->hooks_macro;
     c.checks_macro = root->checks_macro;
+    c.assert_macro = root->assert_macro;
+    c.assert_off_macro = root->assert_off_macro;
   }
   c.activated_fn = t + "_activated";
   c.enabled_fn = t + "_enabled";
   c.place_count = t + "_PLACE_COUNT";
   c.transition_count = t + "_TRANSITION_COUNT";
   if (c.root) {
-    for (const auto *n : {&c.hooks_macro, &c.checks_macro, &c.activated_fn, &c.enabled_fn, &c.place_count,
-                          &c.transition_count})
+    for (const auto *n : {&c.hooks_macro, &c.checks_macro, &c.assert_macro, &c.assert_off_macro, &c.activated_fn,
+                          &c.enabled_fn, &c.place_count, &c.transition_count})
       globals.claim(*n);
   } else {
     c.place_count = globals.take(c.place_count);

@@ -40,6 +40,8 @@ struct Context {
   std::string guard;        ///< the header's include guard
   std::string hooks_macro;  ///< X_HOOKS: define it to get the observation hooks
   std::string checks_macro; ///< X_CHECKS: define it to assert the postconditions of an fsm
+  std::string assert_macro; ///< X_ASSERT(cond): the checks' handler; the user's, else assert
+  std::string assert_off_macro; ///< X_ASSERT_OFF: set when X_ASSERT is assert under NDEBUG
   std::string activated_fn; ///< X_activated
   std::string enabled_fn;   ///< X_enabled
   std::string place_count;  ///< X_PLACE_COUNT

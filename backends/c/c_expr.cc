@@ -514,11 +514,11 @@ std::string c_test(const Context &c, const Expr &e, Temporaries &temps, bool at_
 std::string c_assertion(const Context &c, const Expr &e, Temporaries &temps) {
   const int before = temps.count();
   Rendered r = Renderer(c, temps).render(e);
-  if (temps.count() == before) return fmt::format("assert({});", r.text);
+  if (temps.count() == before) return fmt::format("{}({});", c.assert_macro, r.text);
   std::string text;
   for (const auto &b : r.before) text += b + "; ";
   std::string holds = temps.add(Type::Bool);
-  return text + fmt::format("{} = {}; assert({});", holds, r.text, holds);
+  return text + fmt::format("{} = {}; {}({});", holds, r.text, c.assert_macro, holds);
 }
 
 std::string c_value(const Context &c, const Expr &e, model::Type to) {

@@ -204,10 +204,11 @@ private:
       std::string check = c_assertion(c_, *place.post, temps_);
       w_.line("if ({}) {{", in_state(p));
       w_.indent();
-      // With temporaries the check is more than assert(): with NDEBUG none of it is compiled.
+      // With temporaries the check is more than X_ASSERT(): when X_ASSERT is assert under
+      // NDEBUG none of it is compiled; a user's X_ASSERT always gets it.
       const bool temporaries = temps_.pending();
       if (temporaries) {
-        directive(w_, "#ifndef NDEBUG");
+        directive(w_, "#ifndef " + c_.assert_off_macro);
         temps_.declare(w_);
       }
       if (c_.model.sources) w_.line_from(*c_.model.sources, place.post->range);

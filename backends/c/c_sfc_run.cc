@@ -69,7 +69,9 @@ private:
       if (!snapshot()) directive(w_, "#ifdef " + c_.hooks_macro);
       w_.line("{} {}[{}]; /* the activation at the start of the tick */", c_.readable_counter(), c_.before,
               c_.place_count);
-      w_.line("memcpy({0}, {1}, sizeof {0});", c_.before, c_.field(c_.av));
+      // A loop, not memcpy: the engine stays freestanding (no <string.h>) in every mode.
+      w_.line("for (int {0} = 0; {0} < {1}; ++{0}) {{ {2}[{0}] = {3}[{0}]; }}", c_.index, c_.place_count, c_.before,
+              c_.field(c_.av));
       if (!snapshot()) directive(w_, "#endif");
     }
     if (!uses_self()) w_.line("(void){}; /* the chart has neither transitions nor actions */", c_.self);

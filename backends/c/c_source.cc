@@ -21,27 +21,20 @@ template <typename Test> bool any_context(const Context &c, const Test &test) {
 
 void includes(CodeWriter &w, const Context &c) {
   directive(w, "#include " + c_string_literal(c.header_file));
-  // Standard headers only for what this engine (with its instances) uses: memcpy for a readable
-  // sfc's snapshot of the start of the tick (the root's, in a hooks build, for the hooks only),
-  // assert for postconditions.
-  const bool memcpy_always = any_context(c, [](const Context &x) {
-    return !x.fsm && x.readable() && (x.needs_snapshot() || x.reads_start);
-  });
-  const bool sfc_hooks_snapshot = !c.fsm && c.readable() && !c.needs_snapshot() && !c.reads_start;
-  const bool post = any_context(c, [](const Context &x) { return x.has_post; });
-  const bool scalable_root = !c.fsm && !c.readable();
-  if (scalable_root && !memcpy_always && !post) return;  // the scalable forms need nothing beyond engine.h's
-  if ((!scalable_root && c.needs_snapshot()) || sfc_hooks_snapshot || post || memcpy_always) w.blank();
-  if (memcpy_always) {
-    directive(w, "#include <string.h>");
-  } else if (sfc_hooks_snapshot) {
-    directive(w, "#ifdef " + c.hooks_macro);
-    directive(w, "#include <string.h>");
-    directive(w, "#endif");
-  }
-  if (post) {
+  // No hosted header in any mode (a freestanding C99 engine). The postconditions' checks (of the
+  // root and of every instance) use X_ASSERT, which the user may define (before this point: on
+  // the command line or in a verbatim block) to the firmware's own handler; by default it is
+  // <assert.h>'s assert.
+  if (any_context(c, [](const Context &x) { return x.has_post; })) {
+    w.blank();
     directive(w, "#ifdef " + c.checks_macro);
+    directive(w, "#ifndef " + c.assert_macro);
     directive(w, "#include <assert.h>");
+    directive(w, "#define " + c.assert_macro + "(cond) assert(cond)");
+    directive(w, "#ifdef NDEBUG");
+    directive(w, "#define " + c.assert_off_macro + " /* assert is off: skip the checks' temporaries too */");
+    directive(w, "#endif");
+    directive(w, "#endif");
     directive(w, "#endif");
   }
 }

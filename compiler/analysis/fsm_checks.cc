@@ -81,8 +81,8 @@ void check_fsm(const model::Model &m, const Chart &c, Diagnostics &diag, std::st
   }
   std::size_t reachable = 0;
   for (bool r : reach) reachable += r;
-  summary += fmt::format("fsm {}: {} states ({} terminal), {} transitions\n", c.name, c.places.size(), terminals.size(),
-                         c.transitions.size());
+  summary += fmt::format("fsm {}: {} ({} terminal), {}\n", c.name, counted(c.places.size(), "state", "states"),
+                         terminals.size(), counted(c.transitions.size(), "transition", "transitions"));
   summary += fmt::format("  reachable states: {} of {}\n", reachable, c.places.size());
   summary += terminals.empty() ? "  no terminal state: the machine runs for ever\n"
                                : fmt::format("  states that can never finish: {}\n", traps);

@@ -18,4 +18,9 @@ void check_plan(const model::Model &m, const model::Plan &p, Diagnostics &diag, 
 /// a warning underlines the name rather than the whole declaration.
 SourceRange name_in(const model::Model &m, SourceRange decl, const std::string &name);
 
+/// "1 place", "2 places": a count with its noun in the right number, for the summaries.
+inline std::string counted(std::size_t n, const char *one, const char *many) {
+  return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
 } // namespace gfec::analysis

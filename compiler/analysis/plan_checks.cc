@@ -143,8 +143,9 @@ void check_plan(const model::Model &m, const model::Plan &p, Diagnostics &diag, 
   }
   std::size_t reachable = 0;
   for (std::size_t a = 0; a < p.actors.size(); ++a) reachable += flow.reached(a);
-  summary += fmt::format("plan {}: {} actors, {} config entries, {} global supervisor(s)\n", p.name, p.actors.size(),
-                         p.config.size(), p.globals.size());
+  summary += fmt::format("plan {}: {}, {}, {}\n", p.name, counted(p.actors.size(), "actor", "actors"),
+                         counted(p.config.size(), "config entry", "config entries"),
+                         counted(p.globals.size(), "global supervisor", "global supervisors"));
   summary += fmt::format("  reachable actors: {} of {}\n", reachable, p.actors.size());
   summary += fmt::format("  config reads before any write: {}\n", unwritten);
   summary += fmt::format("  actors that several supervisors can interrupt at once: {}\n", races);

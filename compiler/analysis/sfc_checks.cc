@@ -201,7 +201,7 @@ void check_sfc(const model::Model &m, const Chart &c, Diagnostics &diag, const L
   bool safe = std::all_of(most.begin(), most.end(), [](std::uint32_t k) { return k <= 1; });
   std::uint32_t bound = 0;
   for (auto k : most) bound = std::max(bound, k);
-  summary += fmt::format("sfc {}: {} places, {} transitions\n", c.name, np, nt);
+  summary += fmt::format("sfc {}: {}, {}\n", c.name, counted(np, "place", "places"), counted(nt, "transition", "transitions"));
   summary += fmt::format("  activation states: {}{}\n", space.states.size(),
                          space.limit_hit     ? fmt::format(" (stopped at the limit of {} states; incomplete)", limits.max_states)
                          : space.accelerated ? " (some counts unbounded: an over-approximation)"
@@ -209,9 +209,10 @@ void check_sfc(const model::Model &m, const Chart &c, Diagnostics &diag, const L
   summary += fmt::format("  {}\n", safe                ? "safe: no place ever holds more than one activation"
                                    : bound == kOmega    ? "unbounded: some place can gain activation without end"
                                                         : fmt::format("bounded: no place holds more than {} activations", bound));
-  summary += fmt::format("  deadlocks: {}\n", deadlocks.empty() ? "none" : fmt::format("{} state(s)", deadlocks.size()));
+  summary += fmt::format("  deadlocks: {}\n", deadlocks.empty() ? "none" : counted(deadlocks.size(), "state", "states"));
   if (space.exact())
-    summary += fmt::format("  never active: {} place(s); never firing: {} transition(s)\n", unreachable, dead);
+    summary += fmt::format("  never active: {}; never firing: {}\n", counted(unreachable, "place", "places"),
+                           counted(dead, "transition", "transitions"));
 }
 
 } // namespace gfec::analysis

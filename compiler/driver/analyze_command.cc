@@ -55,7 +55,7 @@ int analyze_one(const std::string &input, const Options &o, DiagnosticReport &re
 } // namespace
 
 int analyze_command(const Options &o, std::ostream &out, std::ostream &err) {
-  auto report = make_report(o.diagnostics_format, err);
+  auto report = make_report(o, err);
   int worst = kExitOk;
   for (const auto &input : o.inputs) worst = std::max(worst, analyze_one(input, o, *report, out));
   std::string failure = report->finish(worst);

@@ -6,7 +6,11 @@
 
 #include <fmt/format.h>
 
+#include <cstdlib>
 #include <ostream>
+#include <string_view>
+
+#include <unistd.h>
 
 namespace gfec {
 
@@ -15,32 +19,60 @@ namespace {
 /// gcc's text: printed as it comes, so a long --check run shows progress.
 class TextReport : public DiagnosticReport {
 public:
-  explicit TextReport(std::ostream &err) : err_(err) {}
+  TextReport(std::ostream &err, TextStyle style, bool all_errors)
+      : err_(err), style_(style), all_errors_(all_errors) {}
 
   void add(const std::string &, const Diagnostics &diag, const SourceManager &sources) override {
-    for (const auto &d : diag.all()) err_ << render_text(d, sources);
-    if (diag.limit_reached())
-      err_ << fmt::format("gfec: compilation stopped after {} errors (-fmax-errors)\n", diag.error_count());
+    for (const auto &d : diag.all()) {
+      err_ << render_text(d, sources, style_);
+      if (d.severity == Severity::Error && d.check.rfind("-W", 0) == 0) werror_ = true;
+    }
+    if (diag.limit_reached()) err_ << limit_message(diag) << "\n";
   }
   void tool_error(const std::string &input, const std::string &message, bool text_names_input) override {
     err_ << fmt::format("{}: error: {}\n", text_names_input && !input.empty() ? input : "gfec", message);
   }
-  std::string finish(int) override { return {}; }
+  std::string finish(int) override {
+    // gcc's closing line when -Werror (not -Werror=NAME) turned a warning into the failure.
+    if (werror_ && all_errors_) err_ << "gfec: some warnings being treated as errors\n";
+    return {};
+  }
 
 private:
   std::ostream &err_;
+  TextStyle style_;
+  bool all_errors_;
+  bool werror_ = false;
 };
 
 } // namespace
 
-std::unique_ptr<DiagnosticReport> make_report(DiagnosticsFormat format, std::ostream &err) {
-  switch (format) {
+std::string limit_message(const Diagnostics &diag) {
+  // gcc's wording; the limit is the count reached.
+  return fmt::format("compilation terminated due to -fmax-errors={}.", diag.error_count());
+}
+
+TextStyle text_style(const Options &o) {
+  TextStyle s;
+  s.line_numbers = o.line_numbers;
+  s.parseable_fixits = o.parseable_fixits;
+  if (o.color == ColorMode::Always) s.color = true;
+  else if (o.color == ColorMode::Auto) {
+    const char *no_color = std::getenv("NO_COLOR");
+    const char *term = std::getenv("TERM");
+    s.color = isatty(STDERR_FILENO) && !(no_color && *no_color) && !(term && std::string_view(term) == "dumb");
+  }
+  return s;
+}
+
+std::unique_ptr<DiagnosticReport> make_report(const Options &o, std::ostream &err) {
+  switch (o.diagnostics_format) {
   case DiagnosticsFormat::Json: return make_json_report(err);
   case DiagnosticsFormat::SarifStderr: return make_sarif_report(&err);
   case DiagnosticsFormat::SarifFile: return make_sarif_report(nullptr);
   case DiagnosticsFormat::Text: break;
   }
-  return std::make_unique<TextReport>(err);
+  return std::make_unique<TextReport>(err, text_style(o), o.warnings.as_errors);
 }
 
 Columns columns_at(const SourceFile &file, std::uint32_t offset) {

@@ -4,6 +4,7 @@
 // over several files.
 #pragma once
 
+#include "diagnostic_printer.h"
 #include "diagnostics.h"
 #include "options.h"
 
@@ -27,7 +28,16 @@ public:
   virtual std::string finish(int exit_code) = 0;
 };
 
-std::unique_ptr<DiagnosticReport> make_report(DiagnosticsFormat format, std::ostream &err);
+/// The report -fdiagnostics-format= asks for; the text one in the style the -fdiagnostics-*
+/// flags, the terminal and NO_COLOR ask for (text_style).
+/// "compilation terminated due to -fmax-errors=N.", as gcc says it.
+std::string limit_message(const Diagnostics &diag);
+
+std::unique_ptr<DiagnosticReport> make_report(const Options &o, std::ostream &err);
+
+/// gcc's rule for colour: always, never, or (auto) when stderr is a terminal, TERM is not
+/// "dumb" and NO_COLOR is unset or empty (https://no-color.org).
+TextStyle text_style(const Options &o);
 
 /// The columns a structured format reports for a 0-based byte offset: code points (SARIF's
 /// "unicodeCodePoints") and display columns with tabs at every 8th column (gcc's

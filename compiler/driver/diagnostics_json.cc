@@ -37,7 +37,7 @@ public:
   void add(const std::string &, const Diagnostics &diag, const SourceManager &sources) override {
     for (const auto &d : diag.all()) all_.push_back(diagnostic_to_json(d, sources));
     if (diag.limit_reached())
-      tool_message("note", "", fmt::format("compilation stopped after {} errors (-fmax-errors)", diag.error_count()));
+      tool_message("note", "", limit_message(diag));
   }
   void tool_error(const std::string &input, const std::string &message, bool) override {
     tool_message("error", input, message);
@@ -79,8 +79,18 @@ Json diagnostic_to_json(const Diagnostic &d, const SourceManager &sources) {
             {"column-origin", 1},
             {"locations", Json::array({location(sources, d.range)})},
             {"escape-source", false}};
-  if (d.check.rfind("-W", 0) == 0) j["option"] = d.check;
+  // gcc: "-Wname" for a warning, "-Werror=name" for one -Werror made an error.
+  if (d.check.rfind("-W", 0) == 0) j["option"] = check_label(d);
   j["check"] = d.check;
+  if (!d.fixits.empty()) {
+    // gcc's fix-its: "start" at the first byte replaced, "next" just past the last one.
+    Json fixits = Json::array();
+    for (const FixIt &f : d.fixits)
+      fixits.push_back({{"start", position(sources, f.range, f.range.begin)},
+                        {"next", position(sources, f.range, f.range.end)},
+                        {"string", f.replacement}});
+    j["fixits"] = std::move(fixits);
+  }
   return j;
 }
 

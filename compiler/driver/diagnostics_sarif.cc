@@ -100,6 +100,19 @@ Json SarifLog::physical_location(const SourceManager &sources, const SourceRange
             {"endColumn", end.code_point}}}};
 }
 
+Json SarifLog::fixes(const SourceManager &sources, const Diagnostic &d) {
+  // One fix holding every replacement: a diagnostic's fix-its are meant to be applied together.
+  Json changes = Json::array();
+  for (const FixIt &f : d.fixits) {
+    Json where = physical_location(sources, f.range);
+    changes.push_back({{"artifactLocation", where["artifactLocation"]},
+                       {"replacements",
+                        Json::array({{{"deletedRegion", where["region"]}, {"insertedContent", {{"text", f.replacement}}}}})}});
+  }
+  return Json::array({{{"description", {{"text", d.notes.empty() ? d.message : d.notes.front().message}}},
+                       {"artifactChanges", std::move(changes)}}});
+}
+
 void SarifLog::add(const Diagnostics &diag, const SourceManager &sources) {
   for (FileId id = 0; id < sources.size(); ++id) {
     int index = artifact_index(sources.file(id).path());
@@ -119,10 +132,11 @@ void SarifLog::add(const Diagnostics &diag, const SourceManager &sources) {
                    {"message", {{"text", d.message}}},
                    {"locations", Json::array({{{"physicalLocation", physical_location(sources, d.range)}}})}};
     if (!related.empty()) result["relatedLocations"] = std::move(related);
+    if (!d.fixits.empty()) result["fixes"] = fixes(sources, d);
     results_.push_back(std::move(result));
   }
   if (diag.limit_reached())
-    notification("note", "", fmt::format("compilation stopped after {} errors (-fmax-errors)", diag.error_count()));
+    notification("note", "", limit_message(diag));
 }
 
 void SarifLog::notification(const std::string &lvl, const std::string &input, const std::string &message) {

@@ -27,6 +27,8 @@ private:
   int rule_index(const std::string &check, Severity severity);
   int artifact_index(const std::string &path);
   nlohmann::ordered_json physical_location(const SourceManager &sources, const SourceRange &range);
+  /// SARIF "fixes": the diagnostic's fix-its as replacements of regions.
+  nlohmann::ordered_json fixes(const SourceManager &sources, const Diagnostic &d);
 
   nlohmann::ordered_json rules_ = nlohmann::ordered_json::array();
   std::map<std::string, int> rule_ids_;

@@ -232,7 +232,7 @@ int check_all(const Options &o, DiagnosticReport &report, std::ostream &out) {
 
 int run(const Options &o, std::ostream &out, std::ostream &err) {
   if (o.analyze) return analyze_command(o, out, err);
-  auto report = make_report(o.diagnostics_format, err);
+  auto report = make_report(o, err);
   int code = o.check_only ? check_all(o, *report, out) : compile(o, *report, out);
   std::string failure = report->finish(code);
   if (!failure.empty()) {

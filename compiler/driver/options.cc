@@ -17,6 +17,15 @@ bool apply_warning_flag(const std::string &flag, WarningOptions &w) {
     w.as_errors = false;
     return true;
   }
+  // gcc: -Werror=NAME turns NAME on and makes it an error; -Wno-error=NAME keeps it a warning.
+  if (flag.rfind("error=", 0) == 0 || flag.rfind("no-error=", 0) == 0) {
+    bool error = flag[0] == 'e';
+    auto found = find_warning(flag.substr(error ? 6 : 9));
+    if (!found) return false;
+    w.error_override[static_cast<int>(*found)] = error ? 1 : -1;
+    if (error) w.set(*found, true);
+    return true;
+  }
   if (flag == "all" || flag == "extra") {
     for (int i = 0; i < static_cast<int>(Warning::Count_); ++i) w.enabled[i] = true;
     return true;
@@ -75,8 +84,18 @@ std::vector<const char *> take_dependency_flags(int argc, const char *const *arg
   return rest;
 }
 
+/// The four ways gfec is run, for --help and for a command line without files.
+std::string usage_forms() {
+  return "Usage: gfec CHART [-o OUT] [OPTIONS]      compile an sfc or fsm to a C engine, a plan to C++\n"
+         "       gfec --check FILE... [OPTIONS]     validate, report every diagnostic, write nothing\n"
+         "       gfec --analyze FILE... [OPTIONS]   every static analysis, a report per chart and plan\n"
+         "       gfec run CHART --inputs TRACE.csv  run a chart in the reference interpreter, tick by tick\n";
+}
+
 std::string warning_help() {
-  std::string s = "Warnings (-W<name> turns one on, -Wno-<name> off; -Wall all; -Werror makes them errors):\n";
+  std::string s =
+      "Warnings (-W<name> turns one on, -Wno-<name> off; -Wall all; -w none; -Werror makes them errors,\n"
+      "-Werror=<name> one of them, -Wno-error=<name> keeps one a warning):\n";
   for (int i = 0; i < static_cast<int>(Warning::Count_); ++i) {
     const WarningInfo &w = warning_table()[i];
     s += fmt::format("  -W{:<20} {}{}\n", w.name, w.summary, w.on_by_default ? " (on by default)" : "");
@@ -89,16 +108,20 @@ std::string warning_help() {
 ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
   ParsedCommandLine result;
   Options &o = result.options;
-  CLI::App app{"gfec - compiles chart files (sfc, fsm, plan) into C and C++ engines for robots", "gfec"};
+  CLI::App app{"gfec - compiles chart files (sfc, fsm, plan) into C and C++ engines for robots\n\n" + usage_forms(),
+               "gfec"};
   app.footer(warning_help() +
              "\nDependency files, as gcc writes them: -MD writes OUTPUT.d (or -MF FILE) for make, naming\n"
              "every file imported; -MP adds an empty rule per import; -MT TARGET names the target.\n"
+             "\nDiagnostics, as gcc 12 prints them: -fdiagnostics-color=auto|always|never (auto: colour on a\n"
+             "terminal unless NO_COLOR is set; -fno-diagnostics-color = never), -fno-diagnostics-show-line-numbers,\n"
+             "-fdiagnostics-parseable-fixits (fix-it:\"FILE\":{L:C-L:C}:\"TEXT\" lines for editors).\n"
              "\nExit status: 0 success, 1 errors in the input, 2 usage or I/O error.\n"
              "Documentation: docs/cli.md");
   std::vector<std::string> warning_flags;
   std::vector<std::string> f_flags;
   bool no_line = false;
-  app.add_option("files", o.inputs, "Chart files to compile (several only with --check)")->required();
+  app.add_option("files", o.inputs, "Chart files to compile (several only with --check or --analyze)");
   app.add_option("-o,--output", o.output,
                  "Output file; a C engine's header is written beside it; '-' for stdout (one-file back ends)");
   // One value per occurrence (-I a -I b, -Wall -Werror): CLI11 would otherwise let a vector
@@ -116,7 +139,11 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
   app.add_option("-W", warning_flags, "Warning control: -W<name>, -Wno-<name>, -Wall, -Werror")
       ->type_name("NAME")
       ->allow_extra_args(false);
-  app.add_option("-f", f_flags, "-fdiagnostics-format=text|json|sarif-stderr|sarif-file, -fmax-errors=N")
+  bool no_warnings = false;
+  app.add_flag("-w", no_warnings, "Inhibit every warning (as gcc)");
+  app.add_option("-f", f_flags,
+                 "-fdiagnostics-format=text|json|sarif-stderr|sarif-file, -fmax-errors=N, -fdiagnostics-color=WHEN, "
+                 "-fdiagnostics-parseable-fixits, -fno-diagnostics-show-line-numbers")
       ->type_name("OPTION")
       ->allow_extra_args(false);
   app.set_version_flag("--version", fmt::format("gfec {}", GFEC_VERSION));
@@ -147,6 +174,13 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
     result.message = "gfec: error: " + message + "\n";
     return result;
   };
+  if (o.inputs.empty()) {
+    // gcc's words, then what a first-time user can type next.
+    result.exit_now = true;
+    result.exit_code = 2;
+    result.message = "gfec: fatal error: no input files\n" + usage_forms() + "Run 'gfec --help' for the options, 'gfec run --help' for the interpreter's.\n";
+    return result;
+  }
   for (const auto &w : warning_flags)
     if (!apply_warning_flag(w, o.warnings)) return usage_error(fmt::format("unknown warning option '-W{}'", w));
   for (const auto &f : f_flags) {
@@ -157,6 +191,18 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
       else if (v == "sarif-stderr") o.diagnostics_format = DiagnosticsFormat::SarifStderr;
       else if (v == "sarif-file") o.diagnostics_format = DiagnosticsFormat::SarifFile;
       else return usage_error(fmt::format("unknown diagnostics format '{}' (text, json, sarif-stderr, sarif-file)", v));
+    } else if (f == "diagnostics-color" || f == "diagnostics-color=always") {
+      o.color = ColorMode::Always;  // gcc: the flag alone means always
+    } else if (f == "diagnostics-color=never" || f == "no-diagnostics-color") {
+      o.color = ColorMode::Never;
+    } else if (f == "diagnostics-color=auto") {
+      o.color = ColorMode::Auto;
+    } else if (f.rfind("diagnostics-color=", 0) == 0) {
+      return usage_error(fmt::format("unknown colour mode '{}' in '-f{}' (auto, always, never)", f.substr(18), f));
+    } else if (f == "diagnostics-show-line-numbers" || f == "no-diagnostics-show-line-numbers") {
+      o.line_numbers = f[0] != 'n';
+    } else if (f == "diagnostics-parseable-fixits") {
+      o.parseable_fixits = true;
     } else if (f.rfind("max-errors=", 0) == 0) {
       try {
         o.error_limit = std::stoul(f.substr(11));
@@ -168,6 +214,8 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
       return usage_error(fmt::format("unknown option '-f{}'", f));
     }
   }
+  // gcc: -w inhibits every warning, whatever -W flags came with it.
+  if (no_warnings) o.warnings.enabled.fill(false);
   o.line_directives = !no_line;
   if (o.analyze && (!o.output.empty() || o.deps.write)) return usage_error("--analyze writes nothing; drop -o and -MD");
   if (o.analyze) return result;  // several files are fine, as with --check

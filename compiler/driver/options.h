@@ -9,6 +9,8 @@
 namespace gfec {
 
 enum class DiagnosticsFormat { Text, Json, SarifStderr, SarifFile };
+/// -fdiagnostics-color=: auto colours only a terminal, and not when NO_COLOR is set.
+enum class ColorMode { Auto, Always, Never };
 
 /// gcc's -MD, -MF, -MP, -MT: a make rule saying which files the outputs were made from.
 struct DependencyOptions {
@@ -28,9 +30,12 @@ struct Options {
   std::string chart;                      ///< --chart NAME
   bool line_directives = true;            ///< --no-line-directives turns them off
   std::string engine = "auto";            ///< --engine=auto|readable|scalable: the C engine's form
-  WarningOptions warnings;                ///< -W<name>, -Wno-<name>, -Wall, -Werror
+  WarningOptions warnings;                ///< -W<name>, -Wno-<name>, -Wall, -Werror[=NAME], -Wno-error=NAME, -w
   DiagnosticsFormat diagnostics_format = DiagnosticsFormat::Text;
   std::size_t error_limit = 50;           ///< -fmax-errors=N
+  ColorMode color = ColorMode::Auto;      ///< -fdiagnostics-color[=WHEN], -fno-diagnostics-color
+  bool line_numbers = true;               ///< -fno-diagnostics-show-line-numbers drops gcc 12's gutter
+  bool parseable_fixits = false;          ///< -fdiagnostics-parseable-fixits
   DependencyOptions deps;                 ///< -MD, -MF, -MP, -MT
 };
 

@@ -22,7 +22,7 @@ void Plan::declare(std::string entry, Value initial) {
 void Plan::declare_into(Configuration& config) const {
   for (const auto& [entry, initial] : entries_) config.declare(entry, initial);
   for (const auto& slot : actors_)
-    if (const auto* sub = dynamic_cast<const SubPlan*>(slot.actor.get())) sub->plan().declare_into(config);
+    if (const Plan* inner = slot.actor->nested_plan()) inner->declare_into(config);
 }
 
 void Plan::adopt_actor(std::string name, std::unique_ptr<Actor> actor) {
@@ -54,7 +54,7 @@ void Plan::define_subsequent(const Actor* actor, int state, Next next) {
 void Plan::define_supervision(const Actor* actor, const Supervisor* supervisor, int event, Reaction reaction) {
   ActorSlot& slot = actors_[index_of(actor)];
   std::size_t watcher = index_of(supervisor);
-  if (dynamic_cast<const Computation*>(slot.actor.get()))
+  if (slot.actor->is_computation())
     throw PlanError("computation '" + slot.name + "' cannot have supervisors");
   auto is_watcher = [&](const detail::Supervision& s) { return s.supervisor == watcher; };
   if (std::any_of(global_.begin(), global_.end(), is_watcher))

@@ -48,7 +48,7 @@ set +e
 "$gfec" --check -Werror warn.sfc 2>"$err"; code=$?
 set -e
 [ $code -eq 1 ] || fail "-Werror: exit $code"
-grep -q "error: .*Island.*\[-Wunreachable-place\]" "$err" || fail "-Werror: $(cat "$err")"
+grep -q "error: .*Island.*\[-Werror=unreachable-place\]" "$err" || fail "-Werror: $(cat "$err")"
 
 # Every file is checked and every diagnostic reported, the bad ones around a good one.
 set +e
@@ -77,4 +77,43 @@ set +e
 "$gfec" --check -MD good.sfc 2>/dev/null; c2=$?
 set -e
 [ $c1 -eq 2 ] && [ $c2 -eq 2 ] || fail "--check with -o/-MD: exit $c1 $c2"
+# gcc's flags as CI passes them: the gutter, -Werror's closing line, -w, -Werror=NAME,
+# -Wno-error=NAME, colour only when asked (a file is not a terminal), the error limit's wording.
+"$gfec" --check -Werror warn.sfc 2>"$err" && fail "-Werror passed"
+grep -q "^    2 | sfc Warn" "$err" || fail "no line-number gutter: $(cat "$err")"
+grep -q "^      | .*\^~~~~~" "$err" || fail "no caret under the gutter: $(cat "$err")"
+grep -q "^gfec: some warnings being treated as errors$" "$err" || fail "no -Werror summary: $(cat "$err")"
+"$gfec" --check -w -Werror warn.sfc 2>"$err" || fail "-w -Werror failed"
+[ ! -s "$err" ] || fail "-w printed: $(cat "$err")"
+"$gfec" --check -Werror=unreachable-place warn.sfc 2>"$err" && fail "-Werror=NAME passed"
+grep -q "\[-Werror=unreachable-place\]" "$err" || fail "-Werror=NAME: $(cat "$err")"
+"$gfec" --check -Werror -Wno-error=unreachable-place warn.sfc 2>"$err" || fail "-Wno-error=NAME failed"
+grep -q "warning: .*\[-Wunreachable-place\]" "$err" || fail "-Wno-error=NAME: $(cat "$err")"
+"$gfec" --check warn.sfc 2>"$err"
+grep -q $'\33' "$err" && fail "colour in a file"
+"$gfec" --check -fdiagnostics-color=always warn.sfc 2>"$err"
+grep -q $'\33\\[01;35m\33\\[Kwarning:' "$err" || fail "no colour with always: $(cat -v "$err")"
+NO_COLOR=1 "$gfec" --check -fdiagnostics-color=auto warn.sfc 2>"$err"
+grep -q $'\33' "$err" && fail "colour despite NO_COLOR"
+if command -v script >/dev/null; then
+  # A terminal: auto colours it, unless NO_COLOR says not to.
+  script -qec "'$gfec' --check warn.sfc" /dev/null >"$out" 2>&1 || true
+  grep -q $'\33\\[01;35m' "$out" || fail "no colour on a terminal: $(cat -v "$out")"
+  NO_COLOR=1 script -qec "'$gfec' --check warn.sfc" /dev/null >"$out" 2>&1 || true
+  grep -q $'\33' "$out" && fail "colour on a terminal despite NO_COLOR: $(cat -v "$out")"
+fi
+"$gfec" --check -fno-diagnostics-show-line-numbers warn.sfc 2>"$err"
+grep -q " | " "$err" && fail "gutter despite -fno-diagnostics-show-line-numbers"
+"$gfec" --check -fdiagnostics-parseable-fixits bad1.sfc 2>"$err" && fail "bad1 passed"
+printf 'sfc Two { initial place A; A -> X; A -> Y; }\n' > two.sfc
+"$gfec" --check -fmax-errors=1 two.sfc 2>"$err" && fail "two errors passed"
+grep -q "^compilation terminated due to -fmax-errors=1\.$" "$err" || fail "limit: $(cat "$err")"
+printf 'sfc Fix { initial place Ready; place Done; Ready -> Dnoe; Done -> Ready; }\n' > fix.sfc
+"$gfec" --check -fdiagnostics-parseable-fixits fix.sfc 2>"$err" && fail "fix.sfc passed"
+grep -q '^fix-it:"fix.sfc":{1:53-1:57}:"Done"$' "$err" || fail "no parseable fix-it: $(cat "$err")"
+# Counts in the --analyze summaries are singular or plural as they should be.
+printf 'sfc One { initial place A; place B; A -> B; }\n' > one.sfc
+"$gfec" --analyze one.sfc >"$out" 2>"$err" || fail "--analyze one.sfc: $(cat "$err")"
+grep -q "sfc One: 2 places, 1 transition$" "$out" || fail "plural: $(cat "$out")"
+grep -q "never active: 0 places; never firing: 0 transitions$" "$out" || fail "plural: $(cat "$out")"
 echo "gfec --check: all checks passed"

@@ -16,7 +16,24 @@ cmake --install "$build_dir" --prefix "$prefix" >/dev/null || fail "cmake --inst
 [ -f "$prefix/include/afp/afp.h" ] || fail "no runtime headers installed"
 config=$(find "$prefix" -name gfecConfig.cmake)
 [ -n "$config" ] || fail "no gfecConfig.cmake installed"
-ls "$(dirname "$config")"/GfecChart.cmake "$(dirname "$config")"/gfecTargets.cmake >/dev/null || fail "package files"
+pkgdir=$(dirname "$config")
+ls "$pkgdir"/GfecChart.cmake "$pkgdir"/gfecTargets.cmake "$pkgdir"/gfecRuntimeTargets.cmake >/dev/null || fail "package files"
+# A host tool's version file must not compare pointer sizes: a 32-bit (cross) consumer is fine.
+cat > "$work/version32.cmake" <<CMAKE
+cmake_minimum_required(VERSION 3.20)
+set(CMAKE_SIZEOF_VOID_P 4)
+set(PACKAGE_FIND_NAME gfec)
+set(PACKAGE_FIND_VERSION 0.1)
+set(PACKAGE_FIND_VERSION_MAJOR 0)
+set(PACKAGE_FIND_VERSION_MINOR 1)
+set(PACKAGE_FIND_VERSION_COUNT 2)
+include("$pkgdir/gfecConfigVersion.cmake")
+message("compatible=\${PACKAGE_VERSION_COMPATIBLE} unsuitable=\${PACKAGE_VERSION_UNSUITABLE}")
+CMAKE
+verdict=$(cmake -P "$work/version32.cmake" 2>&1)
+[ "$verdict" = "compatible=TRUE unsuitable=" ] || fail "a 32-bit consumer of gfec 0.1: $verdict"
+# The compiler's targets need no Threads; only the runtime's do.
+grep -q "Threads" "$pkgdir/gfecTargets.cmake" && fail "gfecTargets.cmake needs Threads"
 
 generators=()
 command -v ninja >/dev/null && generators+=("Ninja")
@@ -46,6 +63,17 @@ for generator in "${generators[@]}"; do
   [ -f "$out/blink.json" ] && [ -f "$out/blink.dot" ] || fail "json/dot side products missing"
   grep -q '"kind": "sfc"' "$out/blink.json" || fail "blink.json"
   grep -q 'board.iface' "$out/blink.c.d" || fail "the dependency file lists no import"
+  # No absolute path in what gfec generated: the same files from any checkout and build folder.
+  for f in blink.c blink.h blink.c.d; do
+    grep -q -e "$project" -e "$out" -e "$work" "$out/$f" && fail "$f holds an absolute path: $(grep -e "$work" "$out/$f" | head -3)"
+  done
+  grep -q '#line [0-9]* "\.\./project-[^"]*/charts/blink.sfc"' "$out/blink.c" || fail "blink.c's #line is not relative"
+  # A plan through CMake: CountTo counts one per step up to limit = 3, writes reached, DONE ends it.
+  [ "$("$out/plan_user")" = "reached=3 succeeded=1" ] || fail "plan_user: $("$out/plan_user")"
+  for f in count.cpp count.hpp count.cpp.d; do
+    grep -q -e "$project" -e "$out" -e "$work" "$out/$f" && fail "$f holds an absolute path: $(grep -e "$work" "$out/$f" | head -3)"
+  done
+  grep -q '#line [0-9]* "\.\./project-[^"]*/charts/count.plan"' "$out/count.cpp" || fail "count.cpp's #line is not relative"
 
   # Nothing changed: nothing is regenerated.
   before=$(stat -c %y "$out/blink.c")
@@ -70,4 +98,29 @@ for generator in "${generators[@]}"; do
   cmake --build "$out" >/dev/null || fail "rebuild"
   [ "$(stat -c %y "$out/blink.c")" != "$before" ] || fail "touching board.iface did not regenerate blink.c"
 done
+# A Cortex-M4 cross build (tests/cli/cross_project): the toolchain file hides host packages
+# (CMAKE_FIND_ROOT_PATH_MODE_PACKAGE ONLY), the one documented line -Dgfec_DIR=... finds gfec,
+# the 32-bit consumer passes the version check, Threads is never looked for, and the engine is
+# compiled for ARM.
+if command -v arm-none-eabi-gcc >/dev/null && command -v ninja >/dev/null; then
+  echo "== cross build (arm-none-eabi)"
+  cross="$work/cross"
+  cp -r "$source_dir/tests/cli/cross_project" "$cross"
+  cp -r "$source_dir/tests/cli/package_project/charts" "$cross/charts"
+  toolchain="$cross/arm-none-eabi.cmake"
+  cmake -S "$cross" -B "$work/cross-hidden" -G Ninja -DCMAKE_TOOLCHAIN_FILE="$toolchain" \
+      -DCMAKE_PREFIX_PATH="$prefix" >/dev/null 2>&1 &&
+    fail "the toolchain file was expected to hide the package without gfec_DIR"
+  cmake -S "$cross" -B "$work/cross-build" -G Ninja -DCMAKE_TOOLCHAIN_FILE="$toolchain" \
+      -Dgfec_DIR="$pkgdir" >"$work/cross.log" 2>&1 || fail "cross configure: $(cat "$work/cross.log")"
+  grep -qi "threads" "$work/cross.log" && fail "a cross build looked for Threads"
+  cmake --build "$work/cross-build" >"$work/cross.log" 2>&1 || fail "cross build: $(cat "$work/cross.log")"
+  lib="$work/cross-build/libblink_engine.a"
+  arm-none-eabi-readelf -h "$lib" | grep -q "Machine: *ARM" || fail "the engine is not ARM code"
+  text=$(arm-none-eabi-size "$lib" | awk 'NR == 2 { print $1 }')
+  [ "$text" -gt 0 ] || fail "empty engine"
+  echo "Cortex-M4 engine: $text bytes of .text at -Os"
+else
+  echo "SKIP: cross build (no arm-none-eabi-gcc or ninja; Debian package gcc-arm-none-eabi)"
+fi
 echo "cmake package: all checks passed"

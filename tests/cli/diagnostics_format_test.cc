@@ -2,7 +2,9 @@
 // prints are checked against the SARIF schema by sarif.test.js.)
 #include "diagnostics_json.h"
 #include "diagnostics_sarif.h"
+#include "diagnostic_printer.h"
 #include "loader.h"
+#include "validate.h"
 
 #include <catch2/catch.hpp>
 
@@ -85,4 +87,170 @@ TEST_CASE("sarif: a result per diagnostic, notes as related locations, rules for
 TEST_CASE("sarif: paths become URIs") {
   CHECK(artifact_location("charts/a b.sfc")["uri"] == "charts/a%20b.sfc");
   CHECK(artifact_location("/abs/x.sfc") == Json{{"uri", "file:///abs/x.sfc"}});
+}
+
+namespace {
+
+/// Loaded and validated: the validator's diagnostics too.
+struct Validated {
+  SourceManager sources;
+  Diagnostics diag;
+  Validated(const std::string &name, const std::string &text, WarningOptions w = {}) : diag(w) {
+    MemoryFileSystem fs;
+    fs.add(name, text);
+    LoadResult loaded = load_program(name, {}, fs, sources, diag);
+    if (!diag.has_errors()) validate(loaded.program, sources, diag);
+  }
+};
+
+// A misspelt place: did-you-mean knows the fix, so the error carries a fix-it.
+const char *kTypo = "sfc T {\n  initial place Start;\n  place Stopped;\n"
+                    "  transition Start -> Stoped when true;\n  transition Stopped -> Start when true;\n}\n";
+
+} // namespace
+
+TEST_CASE("text diagnostics: gcc 12's gutter, the fix-it under the caret, parseable fix-its") {
+  Validated r("t.sfc", kTypo);
+  REQUIRE(r.diag.all().size() == 1);
+  const Diagnostic &d = r.diag.all().front();
+  REQUIRE(d.fixits.size() == 1);
+  CHECK(d.fixits[0].replacement == "Stopped");
+
+  TextStyle gcc12;
+  gcc12.line_numbers = true;
+  gcc12.parseable_fixits = true;
+  CHECK(render_text(d, r.sources, gcc12) ==
+        "t.sfc:4:23: error: unknown place 'Stoped' [unknown-name]\n"
+        "    4 |   transition Start -> Stoped when true;\n"
+        "      |                       ^~~~~~\n"
+        "      |                       Stopped\n"
+        "fix-it:\"t.sfc\":{4:23-4:29}:\"Stopped\"\n"
+        "t.sfc:3:9: note: did you mean 'Stopped'?\n"
+        "    3 |   place Stopped;\n"
+        "      |         ^~~~~~~\n");
+  // The default (what the unit tests compare) has no gutter and no fix-it lines.
+  CHECK(render_text(d, r.sources).rfind("t.sfc:4:23: error: unknown place 'Stoped' [unknown-name]\n"
+                                        "   transition Start -> Stoped when true;\n",
+                                        0) == 0);
+}
+
+TEST_CASE("text diagnostics: colours as gcc's defaults, only when asked") {
+  Validated r("t.sfc", kTypo);
+  TextStyle colour;
+  colour.color = true;
+  std::string text = render_text(r.diag.all().front(), r.sources, colour);
+  CHECK(text.find("\33[01m\33[Kt.sfc:4:23:\33[m\33[K \33[01;31m\33[Kerror:\33[m\33[K unknown place") == 0);
+  CHECK(text.find("\33[32m\33[K^~~~~~\33[m\33[K") != std::string::npos);
+  CHECK(text.find("\33[01;36m\33[Knote:\33[m\33[K") != std::string::npos);
+  CHECK(render_text(r.diag.all().front(), r.sources).find('\33') == std::string::npos);
+}
+
+TEST_CASE("text diagnostics: -Werror's label is gcc's [-Werror=NAME]; the check stays the rule") {
+  WarningOptions w;
+  w.error_override[static_cast<int>(Warning::UnreachablePlace)] = 1;
+  Validated r("t.sfc", "sfc T {\n  initial place A;\n  place B;\n}\n", w);
+  REQUIRE(r.diag.all().size() == 1);
+  CHECK(r.diag.all()[0].severity == Severity::Error);
+  CHECK(render_text(r.diag.all()[0], r.sources).find("never become active [-Werror=unreachable-place]\n") !=
+        std::string::npos);
+  Diagnostic d;
+  d.severity = Severity::Error;
+  d.check = "-Wunreachable-place";
+  CHECK(check_label(d) == "-Werror=unreachable-place");
+  d.severity = Severity::Warning;
+  CHECK(check_label(d) == "-Wunreachable-place");
+  Diagnostics strict(w);
+  strict.warning(Warning::UnreachablePlace, {}, "x");
+  strict.warning(Warning::DeadTransition, {}, "y");
+  REQUIRE(strict.all().size() == 2);
+  CHECK(strict.all()[0].severity == Severity::Error);
+  CHECK(strict.all()[1].severity == Severity::Warning);
+}
+
+TEST_CASE("json and sarif diagnostics: the fix-it as gcc's fixits and SARIF's fixes") {
+  Validated r("t.sfc", kTypo);
+  const Diagnostic &d = r.diag.all().front();
+  Json j = diagnostic_to_json(d, r.sources);
+  REQUIRE(j["fixits"].size() == 1);
+  CHECK(j["fixits"][0]["string"] == "Stopped");
+  CHECK(j["fixits"][0]["start"]["line"] == 4);
+  CHECK(j["fixits"][0]["start"]["byte-column"] == 23);
+  CHECK(j["fixits"][0]["next"]["byte-column"] == 29);
+
+  SarifLog log;
+  log.add(r.diag, r.sources);
+  Json result = log.to_json(1, "/w")["runs"][0]["results"][0];
+  REQUIRE(result["fixes"].size() == 1);
+  const Json &change = result["fixes"][0]["artifactChanges"][0];
+  CHECK(change["artifactLocation"]["uri"] == "t.sfc");
+  const Json &rep = change["replacements"][0];
+  CHECK(rep["insertedContent"]["text"] == "Stopped");
+  CHECK(rep["deletedRegion"]["startLine"] == 4);
+  CHECK(rep["deletedRegion"]["startColumn"] == 23);
+  CHECK(rep["deletedRegion"]["endColumn"] == 29);
+}
+
+TEST_CASE("the error limit in gcc's words, singular or plural alike") {
+  Diagnostics one(WarningOptions{}, 1);
+  one.error({}, "x", "a");
+  one.error({}, "x", "b");
+  CHECK(one.limit_reached());
+  CHECK(limit_message(one) == "compilation terminated due to -fmax-errors=1.");
+}
+
+namespace {
+
+/// The first diagnostic of a chart, rendered with its fix-its as gcc's parseable lines.
+std::string first_error(const std::string &text, MemoryFileSystem fs = {}) {
+  SourceManager sources;
+  Diagnostics diag;
+  fs.add("t.sfc", text);
+  LoadResult loaded = load_program("t.sfc", {}, fs, sources, diag);
+  if (!diag.has_errors()) validate(loaded.program, sources, diag);
+  if (diag.all().empty()) return "(no diagnostic)";
+  TextStyle style;
+  style.parseable_fixits = true;
+  return render_text(diag.all().front(), sources, style);
+}
+
+} // namespace
+
+TEST_CASE("beginner hints: a fork or join without brackets says to write (B, C)") {
+  std::string fork = first_error("sfc T {\n  initial place A;\n  place B;\n  place C;\n  A -> B, C;\n}\n");
+  CHECK(fork.rfind("t.sfc:5:9: error: expected ';' after the transition, found ',' [syntax]\n", 0) == 0);
+  CHECK(fork.find("note: a transition to several places is a fork: write them in brackets, 'A -> (B, ...)'") !=
+        std::string::npos);
+  std::string join = first_error("sfc T {\n  initial place A;\n  place B;\n  place C;\n  transition A, B -> C;\n}\n");
+  CHECK(join.rfind("t.sfc:5:15: error: expected '->' between a transition's inputs and outputs, found ','", 0) == 0);
+  CHECK(join.find("is a join: write them in brackets, '(A, ...) -> ...'") != std::string::npos);
+}
+
+TEST_CASE("beginner hints: '2 s' is written '2s', with the fix") {
+  std::string e = first_error("interface R { void Go(); }\nsfc T {\n  initial place A { Go(); }\n  place B;\n"
+                              "  A -> B when elapsed(A) >= 2 s;\n  B -> A;\n}\n");
+  CHECK(e.rfind("t.sfc:5:31: error: expected an operator after the number, found 's' [syntax]\n", 0) == 0);
+  CHECK(e.find("fix-it:\"t.sfc\":{5:29-5:32}:\"2s\"\n") != std::string::npos);
+  CHECK(e.find("note: durations are written without a space: '2s'") != std::string::npos);
+  CHECK(first_error("sfc T {\n  initial place A;\n  A -> A when elapsed(A) >= 1.5 ms;\n}\n").find("'1.5ms'") !=
+        std::string::npos);
+}
+
+TEST_CASE("beginner hints: '=' in a condition means '=='") {
+  std::string e = first_error("interface R { bool Button(); }\nsfc T {\n  initial place A;\n  place B;\n"
+                              "  A -> B when Button() = true;\n  B -> A;\n}\n");
+  CHECK(e.rfind("t.sfc:5:24: error: expected an operator, found '=' [syntax]\n", 0) == 0);
+  CHECK(e.find("fix-it:\"t.sfc\":{5:24-5:25}:\"==\"\n") != std::string::npos);
+  CHECK(e.find("note: '=' assigns; to compare, write '=='") != std::string::npos);
+}
+
+TEST_CASE("did-you-mean for imports: the nearest file name in the folders searched") {
+  MemoryFileSystem fs;
+  fs.add("crossing.iface", "interface C { void Go(); }\n");
+  fs.add("other.fsm", "");
+  std::string e = first_error("import \"crosing.iface\";\nsfc T { initial place A; }\n", fs);
+  CHECK(e.find("cannot find imported file 'crosing.iface'") != std::string::npos);
+  CHECK(e.find("note: did you mean 'crossing.iface'?") != std::string::npos);
+  CHECK(e.find("fix-it:\"t.sfc\":{1:8-1:23}:\"\\\"crossing.iface\\\"\"") != std::string::npos);
+  // Nothing near: no suggestion.
+  CHECK(first_error("import \"zzz.iface\";\nsfc T { initial place A; }\n", fs).find("did you mean") == std::string::npos);
 }

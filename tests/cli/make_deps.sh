@@ -64,6 +64,21 @@ out=$(build)
 echo "$out" | grep -q "line_follower.sfc" || fail "touching a nested import did not recompile: $out"
 [ "$(stamp line_follower.c)" != "$before_lf" ] || fail "line_follower.c not rewritten after a nested import changed"
 
+# A deleted generated header (or engine) is regenerated, and only its chart is recompiled.
+tick
+before_cu=$(stamp cleanup.c)
+rm "$work/out/line_follower.h"
+out=$(build)
+[ -f "$work/out/line_follower.h" ] || fail "rm line_follower.h; make did not regenerate it: $out"
+echo "$out" | grep -q "line_follower.sfc" || fail "the header came back without gfec: $out"
+if echo "$out" | grep -q "cleanup.fsm"; then fail "deleting line_follower.h recompiled cleanup: $out"; fi
+[ "$(echo "$out" | grep -c 'line_follower.sfc')" -eq 1 ] || fail "gfec ran more than once for one chart: $out"
+rm "$work/out/cleanup.c"
+out=$(build)
+[ -f "$work/out/cleanup.c" ] || fail "rm cleanup.c; make did not regenerate it: $out"
+out=$(build)
+echo "$out" | grep -q "Nothing to be done" || fail "after regenerating, a second build did work: $out"
+
 # -MP: deleting an import (and the line importing it) must not stop make.
 tick
 tail -n +2 "$work/src/linebot.iface" > "$work/src/linebot.new"

@@ -68,3 +68,51 @@ TEST_CASE("options: -fdiagnostics-format and -W take one value each, not the fil
   CHECK(bad.exit_code == 2);
   CHECK(bad.message == "gfec: error: unknown diagnostics format 'xml' (text, json, sarif-stderr, sarif-file)\n");
 }
+
+TEST_CASE("options: gcc's warning and colour flags: -w, -Werror=NAME, -Wno-error=NAME, -fdiagnostics-color") {
+  auto one = parse({"x.sfc", "-Wno-unreachable-place", "-Werror=unreachable-place", "-Wno-error=conflict", "-Werror"});
+  REQUIRE_FALSE(one.exit_now);
+  const WarningOptions &w = one.options.warnings;
+  CHECK(w.is_on(Warning::UnreachablePlace));  // -Werror=NAME turns it back on, as gcc
+  CHECK(w.is_error(Warning::UnreachablePlace));
+  CHECK_FALSE(w.is_error(Warning::Conflict));  // -Wno-error=NAME wins over -Werror
+  CHECK(w.is_error(Warning::DeadTransition));
+
+  auto only = parse({"x.sfc", "-Werror=dead-transition"});
+  CHECK(only.options.warnings.is_error(Warning::DeadTransition));
+  CHECK_FALSE(only.options.warnings.is_error(Warning::UnreachablePlace));
+
+  auto quiet = parse({"x.sfc", "-Wall", "-w"});
+  REQUIRE_FALSE(quiet.exit_now);
+  for (int i = 0; i < static_cast<int>(Warning::Count_); ++i) CHECK_FALSE(quiet.options.warnings.enabled[i]);
+
+  CHECK(parse({"x.sfc"}).options.color == ColorMode::Auto);
+  CHECK(parse({"x.sfc", "-fdiagnostics-color"}).options.color == ColorMode::Always);
+  CHECK(parse({"x.sfc", "-fdiagnostics-color=always"}).options.color == ColorMode::Always);
+  CHECK(parse({"x.sfc", "-fdiagnostics-color=never"}).options.color == ColorMode::Never);
+  CHECK(parse({"x.sfc", "-fdiagnostics-color=always", "-fno-diagnostics-color"}).options.color == ColorMode::Never);
+  CHECK(parse({"x.sfc", "-fdiagnostics-color=never", "-fdiagnostics-color=auto"}).options.color == ColorMode::Auto);
+  auto bad = parse({"x.sfc", "-fdiagnostics-color=sometimes"});
+  CHECK(bad.exit_code == 2);
+  CHECK(bad.message.find("unknown colour mode 'sometimes'") != std::string::npos);
+  CHECK(parse({"x.sfc", "-Werror=no-such-warning"}).exit_code == 2);
+
+  CHECK(parse({"x.sfc"}).options.line_numbers);
+  CHECK_FALSE(parse({"x.sfc", "-fno-diagnostics-show-line-numbers"}).options.line_numbers);
+  CHECK(parse({"x.sfc", "-fdiagnostics-parseable-fixits"}).options.parseable_fixits);
+}
+
+TEST_CASE("options: no file is gcc's 'no input files' and the ways to run gfec, not a CLI11 message") {
+  for (auto cl : {parse({}), parse({"--check"}), parse({"-Wall"})}) {
+    CHECK(cl.exit_now);
+    CHECK(cl.exit_code == 2);
+    CHECK(cl.message.rfind("gfec: fatal error: no input files\n", 0) == 0);
+    CHECK(cl.message.find("gfec run CHART --inputs") != std::string::npos);
+    CHECK(cl.message.find("--analyze") != std::string::npos);
+    CHECK(cl.message.find("is required") == std::string::npos);
+  }
+  auto help = parse({"--help"});
+  CHECK(help.exit_code == 0);
+  CHECK(help.message.find("gfec run CHART") != std::string::npos);
+  CHECK(help.message.find("--analyze") != std::string::npos);
+}

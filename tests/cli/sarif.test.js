@@ -78,6 +78,12 @@ test('sarif-stderr: one valid log for a --check over several files, agreeing wit
   const note = typo.relatedLocations[0];
   assert.match(note.message.text, /did you mean 'Stopped'/);
   assert.equal(note.physicalLocation.region.startLine, 4);
+  // The fix did-you-mean knows, as SARIF "fixes": replace "Stoped" with "Stopped" (schema-checked above).
+  assert.equal(typo.fixes.length, 1);
+  const [change] = typo.fixes[0].artifactChanges;
+  assert.equal(change.artifactLocation.uri, 'typo.sfc');
+  assert.equal(change.replacements[0].insertedContent.text, 'Stopped');
+  assert.deepEqual(change.replacements[0].deletedRegion, typo.locations[0].physicalLocation.region);
   // The erroneous name is highlighted exactly: "Stoped" starts at column 23 and is 6 long.
   const region = typo.locations[0].physicalLocation.region;
   assert.deepEqual([region.startLine, region.startColumn, region.endLine, region.endColumn],

@@ -32,7 +32,7 @@ TEST_CASE("gfec --analyze: a report per chart and plan, every analysis on") {
                            "    activation states: 4 (all of them)\n"
                            "    safe: no place ever holds more than one activation\n"
                            "    deadlocks: none\n"
-                           "    never active: 0 place(s); never firing: 0 transition(s)\n" +
+                           "    never active: 0 places; never firing: 0 transitions\n" +
                     samples + "/cleanup.fsm:\n"
                               "  fsm CleanUp: 6 states (2 terminal), 8 transitions\n"
                               "    reachable states: 6 of 6\n"

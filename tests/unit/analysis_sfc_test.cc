@@ -28,7 +28,7 @@ sfc LineFollower {
         "  activation states: 4 (all of them)\n"
         "  safe: no place ever holds more than one activation\n"
         "  deadlocks: none\n"
-        "  never active: 0 place(s); never firing: 0 transition(s)\n");
+        "  never active: 0 places; never firing: 0 transitions\n");
 }
 
 TEST_CASE("analysis sfc: a place that gains activation every tick is unbounded") {

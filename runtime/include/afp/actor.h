@@ -6,6 +6,8 @@
 
 namespace afp {
 
+class Plan;
+
 /// What Actor::step() returns: still running, or finished in a result state.
 /// Converts from a state, so step() can `return FORWARD_OK;` or `return afp::running;`.
 class StepResult {
@@ -47,6 +49,12 @@ public:
   /// Called exactly once after start(), whatever ended the actor (finished,
   /// interrupted, failed, plan stopped): halt motion, release resources.
   virtual void stop() {}
+
+  /// What a plan asks of its actors without RTTI (the runtime builds with
+  /// -fno-rtti): the plan a sub-plan wraps (else null), whether the actor is a
+  /// computation. Only SubPlan and Computation override them.
+  virtual Plan* nested_plan() const { return nullptr; }
+  virtual bool is_computation() const { return false; }
 };
 
 /// An actor that only reads and writes the configuration and has no
@@ -62,6 +70,8 @@ public:
 
   /// Returns the state compute() returned.
   StepResult step(Context&) final { return state_; }
+
+  bool is_computation() const final { return true; }
 
 private:
   int state_ = 0;

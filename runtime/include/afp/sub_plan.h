@@ -30,6 +30,7 @@ public:
 
   /// The wrapped plan.
   Plan& plan() const { return *plan_; }
+  Plan* nested_plan() const override { return plan_.get(); }
 
   /// Starts the inner plan: its global supervisors and first actor.
   void start(Context& ctx) override;

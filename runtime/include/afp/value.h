@@ -6,7 +6,6 @@
 #include <stdexcept>
 #include <string>
 #include <type_traits>
-#include <typeinfo>
 #include <variant>
 
 namespace afp {
@@ -38,12 +37,12 @@ public:
 
   /// Wraps a shared pointer; the pointee's type is remembered for get().
   template <class T>
-  Object(std::shared_ptr<T> ptr) : ptr_(std::move(ptr)), type_(&typeid(T)) {}
+  Object(std::shared_ptr<T> ptr) : ptr_(std::move(ptr)), type_(type_tag<std::remove_cv_t<T>>()) {}
 
   /// The object as a T, or nullptr when it is null or holds another type.
   template <class T>
   T* get() const {
-    return ptr_ && *type_ == typeid(T) ? static_cast<T*>(ptr_.get()) : nullptr;
+    return ptr_ && type_ == type_tag<std::remove_cv_t<T>>() ? static_cast<T*>(ptr_.get()) : nullptr;
   }
 
   /// True unless null.
@@ -54,8 +53,16 @@ public:
   friend bool operator!=(const Object& a, const Object& b) { return !(a == b); }
 
 private:
+  /// One address per type, standing in for typeid so that the runtime builds with -fno-rtti
+  /// (an inline function's static is one object in the whole program).
+  template <class T>
+  static const void* type_tag() {
+    static const char tag = 0;
+    return &tag;
+  }
+
   std::shared_ptr<void> ptr_;
-  const std::type_info* type_ = nullptr;
+  const void* type_ = nullptr;
 };
 
 /// Makes an Object holding a new T (like std::make_shared).

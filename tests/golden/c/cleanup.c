@@ -2,7 +2,13 @@
 #include "cleanup.h"
 
 #ifdef CleanUp_CHECKS
+#ifndef CleanUp_ASSERT
 #include <assert.h>
+#define CleanUp_ASSERT(cond) assert(cond)
+#ifdef NDEBUG
+#define CleanUp_ASSERT_OFF /* assert is off: skip the checks' temporaries too */
+#endif
+#endif
 #endif
 
 /* Initial state: Z0. Calls no code of the chart. */
@@ -28,50 +34,50 @@ void CleanUp_run(CleanUp *m)
     /* T0: Z0 -> Z1 */
 #line 15 "cleanup.fsm"
     if (m->state == CleanUp_Z0 && (Arrived())) {
-#line 32 "cleanup.c"
+#line 38 "cleanup.c"
         m->state = CleanUp_Z1;
     }
     /* T1: Z1 -> Z2 */
 #line 16 "cleanup.fsm"
     else if (m->state == CleanUp_Z1 && (Holding() && FarFromDestination())) {
-#line 38 "cleanup.c"
+#line 44 "cleanup.c"
         m->state = CleanUp_Z2;
     }
     /* T2: Z1 -> Z3 */
 #line 17 "cleanup.fsm"
     else if (m->state == CleanUp_Z1 && (Holding() && !FarFromDestination())) {
-#line 44 "cleanup.c"
+#line 50 "cleanup.c"
         m->state = CleanUp_Z3;
     }
     /* T3: Z2 -> Z3 */
 #line 18 "cleanup.fsm"
     else if (m->state == CleanUp_Z2 && (Arrived())) {
-#line 50 "cleanup.c"
+#line 56 "cleanup.c"
         m->state = CleanUp_Z3;
     }
     /* T4: Z2 -> Z1 */
 #line 19 "cleanup.fsm"
     else if (m->state == CleanUp_Z2 && (!Holding())) {
-#line 56 "cleanup.c"
+#line 62 "cleanup.c"
         m->state = CleanUp_Z1;
     }
     /* T5: Z3 -> Done */
 #line 20 "cleanup.fsm"
     else if (m->state == CleanUp_Z3 && (ItemPlaced())) {
-#line 62 "cleanup.c"
+#line 68 "cleanup.c"
         m->state = CleanUp_Done;
         m->status = 1;
     }
     /* T6: Z3 -> Z1 */
 #line 21 "cleanup.fsm"
     else if (m->state == CleanUp_Z3 && (!Holding() && !ItemPlaced())) {
-#line 69 "cleanup.c"
+#line 75 "cleanup.c"
         m->state = CleanUp_Z1;
     }
     /* T7: Z0 -> Failed */
 #line 22 "cleanup.fsm"
     else if (m->state == CleanUp_Z0 && (Stuck())) {
-#line 75 "cleanup.c"
+#line 81 "cleanup.c"
         m->state = CleanUp_Failed;
         m->status = -1;
     }
@@ -92,8 +98,8 @@ void CleanUp_run(CleanUp *m)
     /* Postconditions of the terminal states, checked on entering them */
     if (m->state == CleanUp_Done) {
 #line 12 "cleanup.fsm"
-        assert(ItemAtDestination());
-#line 97 "cleanup.c"
+        CleanUp_ASSERT(ItemAtDestination());
+#line 103 "cleanup.c"
     }
 #endif
 
@@ -101,22 +107,22 @@ void CleanUp_run(CleanUp *m)
     if (m->state == CleanUp_Z0) {
 #line 8 "cleanup.fsm"
         DriveToItem();
-#line 105 "cleanup.c"
+#line 111 "cleanup.c"
     }
     if (m->state == CleanUp_Z1) {
 #line 9 "cleanup.fsm"
         PickUp();
-#line 110 "cleanup.c"
+#line 116 "cleanup.c"
     }
     if (m->state == CleanUp_Z2) {
 #line 10 "cleanup.fsm"
         Transport();
-#line 115 "cleanup.c"
+#line 121 "cleanup.c"
     }
     if (m->state == CleanUp_Z3) {
 #line 11 "cleanup.fsm"
         PlaceItem();
-#line 120 "cleanup.c"
+#line 126 "cleanup.c"
     }
 }
 

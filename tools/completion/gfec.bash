@@ -1,0 +1,83 @@
+# bash completion for gfec and carbot-sim. Installed by cmake --install into
+# share/bash-completion/completions/ (cmake/GfecInstall.cmake); bash-completion loads it on the
+# first <Tab> after "gfec" or "carbot-sim". tests/cli/install_files.sh checks what it offers.
+
+_gfec_warnings() {
+  # The warning names from gfec itself, so the list never goes stale.
+  "${1:-gfec}" --help 2>/dev/null | sed -n 's/^  -W\([a-z-]*\) .*/\1/p'
+}
+
+_gfec() {
+  local cur prev
+  cur=${COMP_WORDS[COMP_CWORD]}
+  prev=${COMP_WORDS[COMP_CWORD-1]}
+  local gfec=${COMP_WORDS[0]}
+
+  if [[ ${COMP_WORDS[1]} == run && $COMP_CWORD -gt 1 ]]; then
+    case $prev in
+      --inputs) COMPREPLY=($(compgen -f -X '!*.csv' -- "$cur")); compopt -o plusdirs 2>/dev/null; return ;;
+      --ticks|--chart) return ;;
+      -I) COMPREPLY=($(compgen -d -- "$cur")); return ;;
+    esac
+    if [[ $cur == -* ]]; then
+      COMPREPLY=($(compgen -W '--inputs --ticks --chart -I --observable --hooks --check-post --help' -- "$cur"))
+    else
+      COMPREPLY=($(compgen -f -X '!*.@(sfc|fsm)' -- "$cur")); compopt -o plusdirs 2>/dev/null
+    fi
+    return
+  fi
+
+  case $prev in
+    -o|--output|-MF) COMPREPLY=($(compgen -f -- "$cur")); return ;;
+    -I) COMPREPLY=($(compgen -d -- "$cur")); return ;;
+    --chart|-MT) return ;;
+  esac
+  case $cur in
+    --emit=*) COMPREPLY=($(compgen -P --emit= -W 'c cpp json dot svg toolbox-skeleton' -- "${cur#--emit=}")); return ;;
+    --engine=*) COMPREPLY=($(compgen -P --engine= -W 'auto readable scalable' -- "${cur#--engine=}")); return ;;
+    -fdiagnostics-format=*)
+      COMPREPLY=($(compgen -P -fdiagnostics-format= -W 'text json sarif-stderr sarif-file' -- "${cur#*=}")); return ;;
+    -fdiagnostics-color=*)
+      COMPREPLY=($(compgen -P -fdiagnostics-color= -W 'auto always never' -- "${cur#*=}")); return ;;
+    -Werror=*|-Wno-error=*)
+      local flag=${cur%%=*}=
+      COMPREPLY=($(compgen -P "$flag" -W "$(_gfec_warnings "$gfec")" -- "${cur#*=}")); return ;;
+    -Wno-*) COMPREPLY=($(compgen -P -Wno- -W "$(_gfec_warnings "$gfec") error=" -- "${cur#-Wno-}")); compopt -o nospace 2>/dev/null; return ;;
+    -W*) COMPREPLY=($(compgen -P -W -W "all error error= no- $(_gfec_warnings "$gfec")" -- "${cur#-W}")); compopt -o nospace 2>/dev/null; return ;;
+    -f*)
+      COMPREPLY=($(compgen -W '-fdiagnostics-format= -fdiagnostics-color= -fdiagnostics-color -fno-diagnostics-color
+        -fdiagnostics-parseable-fixits -fno-diagnostics-show-line-numbers -fmax-errors=' -- "$cur"))
+      compopt -o nospace 2>/dev/null; return ;;
+    -*)
+      COMPREPLY=($(compgen -W '-o -I --check --analyze --emit= --chart --engine= --no-line-directives
+        -W -w -Wall -Werror -f -MD -MMD -MF -MP -MT --help --version' -- "$cur"))
+      [[ ${COMPREPLY[0]} == *= ]] && compopt -o nospace 2>/dev/null
+      return ;;
+  esac
+  if [[ $COMP_CWORD -eq 1 ]]; then
+    COMPREPLY=($(compgen -W run -- "$cur"))
+  fi
+  COMPREPLY+=($(compgen -f -X '!*.@(sfc|fsm|plan|iface|toolbox)' -- "$cur"))
+  compopt -o plusdirs 2>/dev/null
+}
+
+_carbot_sim() {
+  local cur prev
+  cur=${COMP_WORDS[COMP_CWORD]}
+  prev=${COMP_WORDS[COMP_CWORD-1]}
+  case $prev in
+    --world) COMPREPLY=($(compgen -f -X '!*.json' -- "$cur")); compopt -o plusdirs 2>/dev/null; return ;;
+    --trace|--json|--svg|--gfec|--cc|--cxx) COMPREPLY=($(compgen -f -- "$cur")); return ;;
+    --cache|--work-dir) COMPREPLY=($(compgen -d -- "$cur")); return ;;
+    --seconds|--physics-step|--period) return ;;
+  esac
+  if [[ $cur == -* ]]; then
+    COMPREPLY=($(compgen -W '--world --seconds --trace --json --svg --physics-step --period --gfec --cc --cxx
+      --cache --work-dir -q --quiet --help' -- "$cur"))
+  else
+    COMPREPLY=($(compgen -f -X '!*.@(sfc|fsm|plan)' -- "$cur")); compopt -o plusdirs 2>/dev/null
+  fi
+}
+
+complete -F _gfec gfec
+complete -F _carbot_sim carbot-sim
