@@ -14,10 +14,10 @@ class CBackend : public Backend {
 public:
   std::vector<OutputFile> emit(const model::Model &model, const EmitOptions &options) const override {
     const model::Chart &chart = pick_chart(model, options);
-    c_backend::Context c = c_backend::make_context(model, chart, options);
+    auto c = c_backend::make_context(model, chart, options);
     // engine.c first (the primary output), then engine.h beside it.
-    return {{options.output_path, c_backend::emit_source(c)},
-            {replace_extension(options.output_path, ".h"), c_backend::emit_header(c)}};
+    return {{options.output_path, c_backend::emit_source(*c)},
+            {replace_extension(options.output_path, ".h"), c_backend::emit_header(*c)}};
   }
 
 private:

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
 #include <set>
 
@@ -38,6 +39,7 @@ bool is_reserved(const std::string &word) {
 class NameSpace {
 public:
   void claim(const std::string &name) { taken_.insert(name); }
+  bool free(const std::string &name) const { return !taken_.count(name) && !is_reserved(name); }
   std::string take(std::string name) {
     while (taken_.count(name) || is_reserved(name)) name += '_';
     taken_.insert(name);
@@ -55,23 +57,35 @@ std::string guard_of(const std::string &header_base) {
   return g;
 }
 
-void name_globals(Context &c) {
+void name_globals(Context &c, NameSpace &globals, const Context *root) {
   // Global names: every interface function the model knows, the engine's fixed API, then the
   // enumerations. The API names are the contract and never move; an enum constant that would
-  // clash with one of them (a place called `init`) gets the trailing `_`.
-  NameSpace globals;
-  for (const auto &f : c.model.functions) globals.claim(f.name);
+  // clash with one of them (a place called `init`) gets the trailing `_`. Sub-chart instances
+  // come after the root (their names, chosen by the caller, give way to the root's).
   const std::string &t = c.type;
-  for (const char *api : {"init", "run", "activation", "state", "status"}) globals.claim(t + "_" + api);
-  c.hooks_macro = t + "_HOOKS";
-  c.checks_macro = t + "_CHECKS";
+  if (c.root) {
+    for (const auto &f : c.model.functions) globals.claim(f.name);
+    globals.claim(t);
+    for (const char *api : {"init", "run", "activation", "state", "status"}) globals.claim(t + "_" + api);
+    c.hooks_macro = t + "_HOOKS";
+    c.checks_macro = t + "_CHECKS";
+  } else {
+    // No hooks in an instance; X_CHECKS of the root checks every instance's postconditions.
+    c.hooks_macro = root->hooks_macro;
+    c.checks_macro = root->checks_macro;
+  }
   c.activated_fn = t + "_activated";
   c.enabled_fn = t + "_enabled";
   c.place_count = t + "_PLACE_COUNT";
   c.transition_count = t + "_TRANSITION_COUNT";
-  for (const auto *n : {&c.hooks_macro, &c.checks_macro, &c.activated_fn, &c.enabled_fn, &c.place_count,
-                        &c.transition_count})
-    globals.claim(*n);
+  if (c.root) {
+    for (const auto *n : {&c.hooks_macro, &c.checks_macro, &c.activated_fn, &c.enabled_fn, &c.place_count,
+                          &c.transition_count})
+      globals.claim(*n);
+  } else {
+    c.place_count = globals.take(c.place_count);
+    c.transition_count = globals.take(c.transition_count);
+  }
   for (const auto &p : c.chart.places) c.place_const.push_back(globals.take(t + "_" + p.name));
   for (const auto &tr : c.chart.transitions) c.transition_const.push_back(globals.take(t + "_" + tr.name));
   c.lowest_fn = globals.take(t + "_lowest");
@@ -95,6 +109,8 @@ void name_fields(Context &c) {
   c.active = fields.take("active");
   c.candidates = fields.take("candidates");
   for (const auto &p : c.chart.places) c.timer_field.push_back(p.timed ? fields.take("timer_" + p.name) : "");
+  // The instances the places run: a field named after the place (`m->Search`), for debuggers.
+  for (const auto &p : c.chart.places) c.sub_field.push_back(p.runs >= 0 ? fields.take(p.name) : "");
 }
 
 void name_locals(Context &c) {
@@ -105,6 +121,7 @@ void name_locals(Context &c) {
   c.add = locals.take("add");
   c.before = locals.take("before");
   c.from = locals.take("from");
+  c.to = locals.take("to");
   c.index = locals.take("p");
   const std::pair<const char *, std::string *> scalable[] = {
       {"add_n", &c.add_n}, {"lost", &c.lost}, {"lost_n", &c.lost_n}, {"gained", &c.gained}, {"gained_n", &c.gained_n},
@@ -132,6 +149,24 @@ void name_locals(Context &c) {
   }
 }
 
+bool reads_input_activity(const Context &c, const model::Expr &e);
+
+bool reads_activity(const model::Expr &e) {
+  using K = model::Expr::Kind;
+  if (e.kind == K::Active || e.kind == K::Succeeded || e.kind == K::Failed) return true;
+  for (const auto &a : e.args)
+    if (reads_activity(a)) return true;
+  return false;
+}
+
+bool reads_activity(const model::Stmt &s) {
+  if (reads_activity(s.call) || reads_activity(s.value)) return true;
+  for (const auto *block : {&s.then_block, &s.else_block})
+    for (const auto &t : *block)
+      if (reads_activity(t)) return true;
+  return false;
+}
+
 void collect_facts(Context &c) {
   const auto n = c.chart.places.size();
   c.is_input.assign(n, false);
@@ -146,6 +181,89 @@ void collect_facts(Context &c) {
     c.has_terminal = c.has_terminal || p.terminal != model::Terminal::None;
     c.needs_started = c.needs_started || (p.initial && has_code(p.entry));
   }
+  for (const auto &t : c.chart.transitions)
+    if (t.condition) c.reads_start = c.reads_start || reads_input_activity(c, *t.condition);
+  for (const auto &p : c.chart.places)
+    if (c.fsm && p.exit)
+      for (const auto &s : *p.exit) c.exits_read_activity = c.exits_read_activity || reads_activity(s);
+}
+
+/// The expression reads, by active()/succeeded()/failed(), a place some transition consumes.
+bool reads_input_activity(const Context &c, const model::Expr &e) {
+  using K = model::Expr::Kind;
+  int p = e.kind == K::Active ? (e.path.empty() ? -1 : e.path.front())
+          : e.kind == K::Succeeded || e.kind == K::Failed ? e.index : -1;
+  if (p >= 0 && c.is_input.at(static_cast<std::size_t>(p))) return true;
+  for (const auto &a : e.args)
+    if (reads_input_activity(c, a)) return true;
+  return false;
+}
+
+/// Stopping the chart's instance runs code: a place with an exit block, or one whose own
+/// instance's stop runs code.
+bool stop_runs_code(const Context &c) {
+  for (std::size_t p = 0; p < c.chart.places.size(); ++p)
+    if (has_code(c.chart.places[p].exit) || (c.sub[p] && c.sub[p]->stop_code)) return true;
+  return false;
+}
+
+void build(Context &c, NameSpace &globals, const Context *root);
+
+/// The instance that place `p` of `c` runs: its names follow the path (`Patrol_Search`), and
+/// move aside (a trailing `_`) if any of them is taken, so that the whole file stays unique.
+std::unique_ptr<Context> make_instance(const Context &c, int p, NameSpace &globals, const Context *root) {
+  const model::Place &place = c.place(p);
+  const model::Chart &chart = c.model.charts.at(static_cast<std::size_t>(place.runs));
+  auto s = std::make_unique<Context>(c.model, chart, c.options);
+  s->root = false;
+  std::string prefix = c.type + "_" + place.name;
+  // The prefix itself is only a struct tag (tags have a name space of their own, so `struct
+  // Patrol_Search` and the enum constant Patrol_Search coexist); two instances with one prefix
+  // would share their function names, which are checked.
+  auto is_free = [&](const std::string &x) {
+    return globals.free(x + "_init") && globals.free(x + "_run") && globals.free(x + "_stop") &&
+           globals.free(x + "_PLACE_COUNT") && globals.free(x + "_TRANSITION_COUNT");
+  };
+  while (!is_free(prefix)) prefix += '_';
+  s->type = prefix;
+  for (const char *api : {"_init", "_run", "_stop"}) globals.claim(prefix + api);
+  s->struct_type = "struct " + prefix;
+  s->linkage = "static ";
+  s->init_fn = prefix + "_init";
+  s->run_fn = prefix + "_run";
+  s->stop_fn = prefix + "_stop";
+  s->place_count = prefix + "_PLACE_COUNT";
+  s->transition_count = prefix + "_TRANSITION_COUNT";
+  s->owner = fmt::format("{} {} of {}", c.fsm ? "state" : "place", place.name, c.root ? c.type : c.owner);
+  s->stoppable = c.stoppable || c.is_input.at(static_cast<std::size_t>(p));
+  s->source_file = c.source_file;
+  s->header_file = c.header_file;
+  s->guard = c.guard;
+  build(*s, globals, root);
+  return s;
+}
+
+void build(Context &c, NameSpace &globals, const Context *root) {
+  c.fsm = c.chart.kind == model::Chart::Kind::Fsm;
+  name_globals(c, globals, root ? root : &c);
+  name_fields(c);
+  name_locals(c);
+  collect_facts(c);
+  for (int p = 0; p < static_cast<int>(c.chart.places.size()); ++p)
+    c.sub.push_back(c.place(p).runs >= 0 ? make_instance(c, p, globals, root ? root : &c) : nullptr);
+  c.stop_code = stop_runs_code(c);
+  std::vector<bool> watched;
+  for (int p = 0; p < static_cast<int>(c.chart.places.size()); ++p) watched.push_back(c.watched(p));
+  c.layout = plan_layout(c.chart, c.options.engine, std::move(watched));
+}
+
+/// The interface functions of the chart and of every instance below it, each once, the chart's
+/// own first.
+void collect_functions(const Context &c, std::vector<int> &out) {
+  for (int f : c.chart.functions)
+    if (std::find(out.begin(), out.end(), f) == out.end()) out.push_back(f);
+  for (const auto &s : c.sub)
+    if (s) collect_functions(*s, out);
 }
 
 } // namespace
@@ -156,9 +274,56 @@ std::string Context::av_of(int p) const {
 
 std::string Context::timer_of(int p) const { return field(timer_field.at(static_cast<std::size_t>(p))); }
 
-bool Context::runs_exit(int p) const { return is_input.at(static_cast<std::size_t>(p)) && has_code(place(p).exit); }
+bool Context::runs_exit(int p) const {
+  const Context *s = sub_of(p);
+  return is_input.at(static_cast<std::size_t>(p)) && (has_code(place(p).exit) || (s && s->has_stop()));
+}
 
-bool Context::runs_entry(int p) const { return is_output.at(static_cast<std::size_t>(p)) && has_code(place(p).entry); }
+bool Context::runs_entry(int p) const {
+  // An instance is started (reset) whenever its place gains activation.
+  return is_output.at(static_cast<std::size_t>(p)) && (has_code(place(p).entry) || sub_of(p));
+}
+
+std::vector<std::string> Context::start_call(int p) const {
+  const Context *s = sub_of(p);
+  if (!s) return {};
+  return {fmt::format("{}(&{}); /* start the instance of {} */", s->init_fn, field(sub_field[static_cast<std::size_t>(p)]),
+                      s->chart.name)};
+}
+
+std::vector<std::string> Context::tick_call(int p) const {
+  const Context *s = sub_of(p);
+  if (!s) return {};
+  return {fmt::format("{}(&{}); /* one tick of the instance of {} */", s->run_fn,
+                      field(sub_field[static_cast<std::size_t>(p)]), s->chart.name)};
+}
+
+std::vector<std::string> Context::stop_call(int p) const {
+  const Context *s = sub_of(p);
+  if (!s || !s->has_stop()) return {};
+  return {fmt::format("{}(&{}); /* stop the instance of {} first */", s->stop_fn,
+                      field(sub_field[static_cast<std::size_t>(p)]), s->chart.name)};
+}
+
+std::string Context::count_text() const {
+  return root ? place_count : std::to_string(chart.places.size());
+}
+
+std::string Context::member(const std::string &obj, const std::string &name) const {
+  return obj.empty() ? field(name) : obj + "." + name;
+}
+
+std::string Context::active_test(const std::string &obj, int p, bool at_start) const {
+  const std::string &k = place_const.at(static_cast<std::size_t>(p));
+  if (fsm) return fmt::format("{} == {}", member(obj, state), k);
+  if (sequential()) return fmt::format("{} == {}", member(obj, current), k);
+  // In a condition the counters serve as `avail` and decrease: a place some transition consumes
+  // is read from the snapshot of the start of the tick.
+  const bool snapshot = at_start && obj.empty() && is_input.at(static_cast<std::size_t>(p));
+  if (snapshot && sparse()) return fmt::format("(({0}[{1} >> 5] >> ({1} & 31u)) & 1u) != 0u", before, k);
+  if (snapshot) return fmt::format("{}[{}] != 0u", before, k);
+  return fmt::format("{}[{}] != 0u", member(obj, av), k);
+}
 
 bool Context::resets_timer(int p) const { return is_output.at(static_cast<std::size_t>(p)) && place(p).timed; }
 
@@ -174,20 +339,19 @@ bool Context::any_watched() const {
   return false;
 }
 
-Context make_context(const model::Model &model, const model::Chart &chart, const EmitOptions &options) {
-  Context c(model, chart, options);
-  c.fsm = chart.kind == model::Chart::Kind::Fsm;
-  c.type = chart.name;
-  c.source_file = options.output_path;
-  c.header_file = base_name(replace_extension(options.output_path, ".h"));
-  c.guard = guard_of(c.header_file);
-  name_globals(c);
-  name_fields(c);
-  name_locals(c);
-  collect_facts(c);
-  std::vector<bool> watched;
-  for (int p = 0; p < static_cast<int>(chart.places.size()); ++p) watched.push_back(c.watched(p));
-  c.layout = plan_layout(chart, options.engine, std::move(watched));
+std::unique_ptr<Context> make_context(const model::Model &model, const model::Chart &chart,
+                                      const EmitOptions &options) {
+  auto c = std::make_unique<Context>(model, chart, options);
+  c->type = chart.name;
+  c->struct_type = chart.name;
+  c->init_fn = c->type + "_init";
+  c->run_fn = c->type + "_run";
+  c->source_file = options.output_path;
+  c->header_file = base_name(replace_extension(options.output_path, ".h"));
+  c->guard = guard_of(c->header_file);
+  NameSpace globals;
+  build(*c, globals, nullptr);
+  collect_functions(*c, c->functions);
   return c;
 }
 

@@ -7,6 +7,7 @@
 #include "c_layout.h"
 #include "model.h"
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -27,7 +28,13 @@ struct Context {
   const char *readable_counter() const { return layout.bounded ? uint_type(layout.counter_bits) : "unsigned"; }
 
   // ------------------------------------------------------------ names in the generated code
-  std::string type;         ///< the struct and the prefix of every global name: the chart's name
+  std::string type;         ///< the prefix of every global name: the chart's name, or for a
+                            ///< sub-chart instance its path (`Patrol_Search`, docs/c-engine.md)
+  std::string struct_type;  ///< the state's C type: `Patrol`, or an instance's `struct Patrol_Search`
+  std::string linkage;      ///< "" for the root's API, "static " for an instance's functions
+  std::string init_fn;      ///< X_init
+  std::string run_fn;       ///< X_run
+  std::string stop_fn;      ///< an instance's X_stop (exits of its active places, innermost first)
   std::string source_file;  ///< engine.c as #line names it (the output path as the user gave it)
   std::string header_file;  ///< engine.h, as engine.c includes it (base name)
   std::string guard;        ///< the header's include guard
@@ -67,11 +74,56 @@ struct Context {
   std::string add;     ///< sfc: activation produced in this tick
   std::string before;  ///< sfc: the activation vector at the start of the tick
   std::string from;    ///< fsm: the state at the start of the tick
+  std::string to;      ///< fsm: the state entered, while the old one's exit blocks run
   std::string index;   ///< a loop index
   // Locals of the scalable form's run function.
   std::string add_n, lost, lost_n, gained, gained_n, word, bits, i, t;
   /// The temporaries that keep calls in order are this and a number: `gfec_t0` (c_expr.h).
   std::string temp_prefix;
+
+  // ------------------------------------------------------------ sub-charts (docs/language.md, "Sub-charts")
+  bool root = true;          ///< the compiled chart; false for an instance embedded in a parent
+  std::string owner;         ///< an instance: "place Search of Patrol", for comments
+  /// By place: the context of the instance the place runs (null if it runs nothing), and the
+  /// parent struct's field that holds it.
+  std::vector<std::unique_ptr<Context>> sub;
+  std::vector<std::string> sub_field;
+  bool stoppable = false;    ///< an instance whose place (or an enclosing one) can lose activation
+  bool stop_code = false;    ///< stopping the instance runs code: some exit block, at any depth
+  /// The stop function exists (and is called): it can be stopped and stopping runs code.
+  bool has_stop() const { return stoppable && stop_code; }
+  /// Some transition condition reads, through active()/succeeded()/failed(), a place whose
+  /// counter the transitions decrease: the sfc forms keep the start of the tick for them.
+  bool reads_start = false;
+  /// An fsm whose exit blocks read activation: the state left is current while they run
+  /// (docs/language.md: the new state becomes current after the old one's exit).
+  bool exits_read_activity = false;
+  /// The root: every interface function any instance calls, for the header.
+  std::vector<int> functions;
+  const Context *sub_of(int place) const { return sub.at(static_cast<std::size_t>(place)).get(); }
+  /// The observation hooks are the root's only (docs/c-engine.md).
+  bool hooks() const { return root; }
+  /// The size of the per-place arrays as the header writes it: X_PLACE_COUNT for the root, the
+  /// number for an instance (its enumerations are in engine.c).
+  std::string count_text() const;
+  /// `obj.name`, or `m->name` for obj "" (the engine's own state).
+  std::string member(const std::string &obj, const std::string &name) const;
+  /// A C test (unbracketed, not a bool operand yet) that place `p` of the state `obj` (see
+  /// member()) is active now; `at_start`: in a transition condition of this chart, where the
+  /// start of the tick counts (docs/language.md, "Sub-charts").
+  std::string active_test(const std::string &obj, int p, bool at_start = false) const;
+  /// The engine code that starts, ticks or stops the instance place `p` runs (`Patrol_Search_run(
+  /// &m->Search);`), as lines; none where the place runs nothing (or stopping runs no code).
+  std::vector<std::string> start_call(int p) const;
+  std::vector<std::string> tick_call(int p) const;
+  std::vector<std::string> stop_call(int p) const;
+  /// Place `p` has something to do in the actions step: an action block or an instance to tick.
+  bool has_sub() const {
+    for (const auto &s : sub)
+      if (s) return true;
+    return false;
+  }
+  bool acts(int p) const { return !place(p).action.empty() || sub_of(p); }
 
   // ------------------------------------------------------------ what the chart uses
   std::vector<bool> is_input;   ///< by place: some transition consumes its activation
@@ -102,8 +154,9 @@ struct Context {
   bool any_watched() const;
 };
 
-/// Decides every name and fact for compiling `chart`.
-Context make_context(const model::Model &model, const model::Chart &chart, const EmitOptions &options);
+/// Decides every name and fact for compiling `chart`, and for every sub-chart instance below it.
+std::unique_ptr<Context> make_context(const model::Model &model, const model::Chart &chart,
+                                      const EmitOptions &options);
 
 /// The block holds code (an empty `entry { }` is as good as none).
 inline bool has_code(const std::optional<std::vector<model::Stmt>> &block) { return block && !block->empty(); }

@@ -14,6 +14,11 @@ std::string emit_header(const Context &c);
 /// engine.c: includes, file-level verbatim code, _init, _run and the accessors.
 std::string emit_source(const Context &c);
 
+/// The enumerations of a chart's places and transitions (the root's in engine.h, an instance's
+/// in engine.c).
+void places_enum(CodeWriter &w, const Context &c);
+void transitions_enum(CodeWriter &w, const Context &c);
+
 /// `void X_run(X *m) { ... }`: one tick, LANGUAGE.md §5.1.
 void emit_sfc_run(CodeWriter &w, const Context &c);
 /// The scalable form of an sfc (c_layout.h): its file-local helpers (before _init), and its

@@ -66,6 +66,11 @@ bool wanted_by_compilers(BinaryOp op, const Expr &operand, bool left) {
 
 const Expr &unbracketed(const Expr &e) { return e.kind == Expr::Kind::Paren ? unbracketed(e.args.at(0)) : e; }
 
+/// active()/succeeded()/failed(): rendered already bracketed.
+bool is_activity(const Expr &e) {
+  return e.kind == Expr::Kind::Active || e.kind == Expr::Kind::Succeeded || e.kind == Expr::Kind::Failed;
+}
+
 bool has_call(const Expr &e) {
   if (e.kind == Expr::Kind::Call) return true;
   for (const auto &a : e.args)
@@ -242,7 +247,9 @@ std::optional<std::string> settled_pair(const Context &c, const Expr &e) {
 /// Renders one expression or statement of a chart, adding the temporaries it needs to `temps`.
 class Renderer {
 public:
-  Renderer(const Context &c, Temporaries &temps) : c_(c), temps_(temps) {}
+  /// `at_start`: the expression is a transition's condition, where active()/succeeded()/
+  /// failed() read this chart's activation at the start of the tick (docs/language.md, "Sub-charts").
+  Renderer(const Context &c, Temporaries &temps, bool at_start = false) : c_(c), temps_(temps), at_start_(at_start) {}
 
   Rendered render(const Expr &e) {
     switch (e.kind) {
@@ -257,11 +264,16 @@ public:
     case Expr::Kind::Elapsed: return {c_.timer_of(e.index)};
     case Expr::Kind::Unary: return unary(e);
     case Expr::Kind::Binary: return binary(e);
+    case Expr::Kind::Active:
+    case Expr::Kind::Succeeded:
+    case Expr::Kind::Failed: return activity(e);
     case Expr::Kind::Paren: {
+      if (is_activity(e.args.at(0))) return render(e.args.at(0));  // already bracketed
       Rendered inner = render(e.args.at(0));
       return {bracket(inner.text), kPrimary, std::move(inner.before)};
     }
     case Expr::Kind::Config: break;  // plans only: the validator keeps it out of charts
+    default: break;                  // team machines: not in this back end's charts
     }
     return {"0"};
   }
@@ -313,6 +325,28 @@ public:
   }
 
 private:
+  /// `active(P.Q.R)`, `succeeded(P)`, `failed(P)`: each level of the path active (this chart's
+  /// at the start of the tick in a condition; the instances as they are, they are never in the
+  /// middle of a tick when the parent's code runs), then the fsm instance's status. Bracketed.
+  Rendered activity(const Expr &e) const {
+    std::vector<int> path = e.kind == Expr::Kind::Active ? e.path : std::vector<int>{e.index};
+    const Context *c = &c_;
+    std::string obj, text;
+    for (std::size_t k = 0; k < path.size(); ++k) {
+      if (!c) return {"false"};  // a path the validator let through into nothing: never active
+      text += (k ? " && " : "") + c->active_test(obj, path[k], k == 0 && at_start_);
+      if (k + 1 < path.size() || e.kind != Expr::Kind::Active) {
+        obj = c->member(obj, c->sub_field.at(static_cast<std::size_t>(path[k])));
+        c = c->sub_of(path[k]);
+      }
+    }
+    if (e.kind != Expr::Kind::Active) {
+      if (!c || !c->fsm) return {"false"};
+      text += fmt::format(" && {} == {}", c->member(obj, c->status), e.kind == Expr::Kind::Succeeded ? "1" : "-1");
+    }
+    return {bracket(text)};
+  }
+
   /// A constant is written as its folded value, named in a comment: no C name of the chart's can
   /// collide with it (a constant called `m` would otherwise hide the engine parameter).
   Rendered constant(const Expr &e) const {
@@ -417,6 +451,7 @@ private:
 
   const Context &c_;
   Temporaries &temps_;
+  bool at_start_ = false;
 };
 
 bool blank(std::string_view s) { return s.find_first_not_of(" \t\r\f\v") == std::string_view::npos; }
@@ -459,16 +494,21 @@ std::string c_expr(const Context &c, const Expr &e, Temporaries &temps) {
   return closed(Renderer(c, temps).render(e)).text;
 }
 
-std::string c_condition(const Context &c, const Expr &e, Temporaries &temps) {
-  Rendered r = Renderer(c, temps).render(e);
+std::string c_condition(const Context &c, const Expr &e, Temporaries &temps, bool at_start) {
+  Rendered r = Renderer(c, temps, at_start).render(e);
   if (!r.before.empty()) return closed(std::move(r)).text;  // a bracketed comma expression
-  return e.kind == Expr::Kind::Paren ? r.text : bracket(r.text);
+  return e.kind == Expr::Kind::Paren || is_activity(e) ? r.text : bracket(r.text);
 }
 
-std::string c_test(const Context &c, const Expr &e, Temporaries &temps) {
+std::string c_test(const Context &c, const Expr &e, Temporaries &temps, bool at_start) {
   const Expr &u = unbracketed(e);
-  if (u.kind != Expr::Kind::Binary || u.binary_op != BinaryOp::Eq || settled(u)) return c_condition(c, e, temps);
-  return closed(Renderer(c, temps).render(u)).text;
+  if (is_activity(u)) {  // the whole test: without the brackets (clang -Wparentheses-equality)
+    std::string text = Renderer(c, temps, at_start).render(u).text;
+    return text.size() > 2 && text.front() == '(' ? text.substr(1, text.size() - 2) : text;
+  }
+  if (u.kind != Expr::Kind::Binary || u.binary_op != BinaryOp::Eq || settled(u))
+    return c_condition(c, e, temps, at_start);
+  return closed(Renderer(c, temps, at_start).render(u)).text;
 }
 
 std::string c_assertion(const Context &c, const Expr &e, Temporaries &temps) {

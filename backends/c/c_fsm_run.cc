@@ -15,7 +15,7 @@ public:
   FsmRun(CodeWriter &w, const Context &c) : w_(w), c_(c), temps_(c.temp_prefix) {}
 
   void emit() {
-    w_.line("void {}_run({} *{})", c_.type, c_.type, c_.self);
+    w_.line("{}void {}({} *{})", c_.linkage, c_.run_fn, c_.struct_type, c_.self);
     w_.line("{");
     w_.indent();
     declarations();
@@ -47,7 +47,7 @@ private:
   /// (the transitions are one if/else-if chain), declared at its top.
   void declarations() {
     for (const auto &t : c_.chart.transitions)
-      conditions_.push_back(t.condition ? c_condition(c_, *t.condition, temps_) : "");
+      conditions_.push_back(t.condition ? c_condition(c_, *t.condition, temps_, true) : "");
     if (!temps_.pending()) return;
     section("");
     temps_.declare(w_);
@@ -55,8 +55,8 @@ private:
 
   bool uses_self() const {
     if (!c_.chart.transitions.empty() || c_.needs_started || c_.has_timers || c_.has_terminal) return true;
-    for (const auto &p : c_.chart.places)
-      if (!p.action.empty()) return true;
+    for (int p = 0; p < static_cast<int>(c_.chart.places.size()); ++p)
+      if (c_.acts(p)) return true;
     return false;
   }
 
@@ -103,7 +103,7 @@ private:
 
   /// The state at the start of the tick, for exits, entries and hooks (hooks only in a hooks build).
   void remember_state() {
-    if (c_.chart.transitions.empty()) return;
+    if (c_.chart.transitions.empty() || (!c_.needs_snapshot() && !c_.hooks())) return;
     section("");
     if (!c_.needs_snapshot()) directive(w_, "#ifdef " + c_.hooks_macro);
     w_.line("int {} = {}; /* the state at the start of the tick */", c_.from, c_.field(c_.state));
@@ -142,25 +142,36 @@ private:
     w_.line("if ({} != {}) {{", c_.field(c_.state), c_.from);
     w_.indent();
     const int n = static_cast<int>(c_.chart.places.size());
+    bool exits = false;
+    for (int p = 0; p < n; ++p) exits = exits || c_.runs_exit(p);
+    // Exit blocks that read activation see the state left as the current one.
+    const bool swap = exits && c_.exits_read_activity;
+    if (swap) {
+      w_.line("int {} = {}; /* the state entered: current once the state left has exited */", c_.to,
+              c_.field(c_.state));
+      w_.line("{} = {};", c_.field(c_.state), c_.from);
+    }
     for (int p = 0; p < n; ++p)
       if (c_.runs_exit(p)) {
         w_.line("/* exit {} */", c_.place(p).name);
         w_.line("if ({} == {}) {{", c_.from, c_.place_const[static_cast<std::size_t>(p)]);
-        block(*c_.place(p).exit);
+        block(has_code(c_.place(p).exit) ? *c_.place(p).exit : std::vector<model::Stmt>{}, c_.stop_call(p));
       }
+    if (swap) w_.line("{} = {};", c_.field(c_.state), c_.to);
     for (int p = 0; p < n; ++p)
       if (c_.runs_entry(p) || c_.resets_timer(p)) {
         w_.line("/* {} {} */", c_.runs_entry(p) ? "entry" : "timer of", c_.place(p).name);
         w_.line("if ({}) {{", in_state(p));
-        std::string reset = c_.resets_timer(p) ? fmt::format("{} = 0;", c_.timer_of(p)) : "";
-        block(c_.runs_entry(p) ? *c_.place(p).entry : std::vector<model::Stmt>{}, reset);
+        std::vector<std::string> first = c_.start_call(p);
+        if (c_.resets_timer(p)) first.insert(first.begin(), fmt::format("{} = 0;", c_.timer_of(p)));
+        block(has_code(c_.place(p).entry) ? *c_.place(p).entry : std::vector<model::Stmt>{}, first);
       }
     w_.dedent();
     w_.line("}");
   }
 
   void hooks() {
-    if (c_.chart.transitions.empty()) return;
+    if (c_.chart.transitions.empty() || !c_.hooks()) return;
     section("");
     directive(w_, "#ifdef " + c_.hooks_macro);
     w_.line("/* Observation hooks: the state left and the state entered; the transitions leaving it */");
@@ -212,21 +223,25 @@ private:
   void actions() {
     bool any = false;
     for (int p = 0; p < static_cast<int>(c_.chart.places.size()); ++p) {
-      if (c_.place(p).action.empty()) continue;
-      if (!any) section("/* Perform the action of the current state */");
+      if (!c_.acts(p)) continue;
+      if (!any)
+        section(c_.has_sub() ? "/* Perform the action of the current state, then one tick of the instance it runs */"
+                             : "/* Perform the action of the current state */");
       any = true;
       w_.line("if ({}) {{", in_state(p));
-      block(c_.place(p).action);
+      block(c_.place(p).action, {}, c_.tick_call(p));
     }
   }
 
-  void block(const std::vector<model::Stmt> &stmts, const std::string &first = "") {
+  void block(const std::vector<model::Stmt> &stmts, const std::vector<std::string> &first = {},
+             const std::vector<std::string> &last = {}) {
     w_.indent();
     std::vector<std::string> text = c_statements(c_, stmts, temps_);
     temps_.declare(w_);
-    if (!first.empty()) w_.line(std::string_view(first));
+    for (const auto &l : first) w_.line(std::string_view(l));
     emit_statements(w_, c_, stmts, text);
     w_.line_back();
+    for (const auto &l : last) w_.line(std::string_view(l));
     w_.dedent();
     w_.line("}");
   }

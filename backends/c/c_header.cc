@@ -17,8 +17,14 @@ void aligned(CodeWriter &w, const std::vector<std::pair<std::string, std::string
   for (const auto &r : rows) w.line("{:<{}} /* {} */", r.first, width, r.second);
 }
 
+} // namespace
+
 void places_enum(CodeWriter &w, const Context &c) {
-  w.line("/* The {} of {} {}, in declaration order. */", c.fsm ? "states" : "places", c.fsm ? "fsm" : "sfc", c.type);
+  if (c.root)
+    w.line("/* The {} of {} {}, in declaration order. */", c.fsm ? "states" : "places", c.fsm ? "fsm" : "sfc", c.type);
+  else
+    w.line("/* The {} of {} {}, in declaration order: the instance run by {}. */", c.fsm ? "states" : "places",
+           c.fsm ? "fsm" : "sfc", c.chart.name, c.owner);
   w.line("enum {");
   w.indent();
   for (const auto &name : c.place_const) w.line("{},", name);
@@ -28,7 +34,8 @@ void places_enum(CodeWriter &w, const Context &c) {
 }
 
 void transitions_enum(CodeWriter &w, const Context &c) {
-  w.line("/* Its transitions, in declaration order: the numbers the observation hooks pass. */");
+  w.line(c.root ? "/* Its transitions, in declaration order: the numbers the observation hooks pass. */"
+                : "/* Its transitions, in declaration order. */");
   w.line("enum {");
   w.indent();
   std::vector<std::pair<std::string, std::string>> rows;
@@ -40,11 +47,20 @@ void transitions_enum(CodeWriter &w, const Context &c) {
   w.line("};");
 }
 
+namespace {
+
 void state_struct(CodeWriter &w, const Context &c) {
-  w.line("/* The state of one engine. The type is complete so that the caller can allocate it (several");
-  w.line("   engines may run side by side); only the functions below use its fields. */");
-  w.line("typedef struct {0} {0};", c.type);
-  w.line("struct {} {{", c.type);
+  // The instances' types first: the root's struct embeds them.
+  for (const auto &s : c.sub)
+    if (s) state_struct(w, *s);
+  if (c.root) {
+    w.line("/* The state of one engine. The type is complete so that the caller can allocate it (several");
+    w.line("   engines may run side by side); only the functions below use its fields. */");
+    w.line("typedef struct {0} {0};", c.type);
+  } else {
+    w.line("/* The state of the instance of {} run by {} (engine.c only uses it). */", c.chart.name, c.owner);
+  }
+  w.line("{} {{", c.root ? "struct " + c.type : c.struct_type);
   w.indent();
   std::vector<std::pair<std::string, std::string>> rows;
   if (c.fsm) {
@@ -55,7 +71,7 @@ void state_struct(CodeWriter &w, const Context &c) {
                       fmt::format("the one active place, a {}_<place>", c.type));
   } else if (c.sparse()) {
     const Layout &l = c.layout;
-    rows.emplace_back(fmt::format("{} {}[{}];", uint_type(l.counter_bits), c.av, c.place_count),
+    rows.emplace_back(fmt::format("{} {}[{}];", uint_type(l.counter_bits), c.av, c.count_text()),
                       l.bounded ? fmt::format("activation counter of each place (never above {})", l.bound)
                                 : "activation counter of each place (saturates)");
     rows.emplace_back(fmt::format("uint32_t {}[{}];", c.active, l.active.words()),
@@ -64,7 +80,7 @@ void state_struct(CodeWriter &w, const Context &c) {
       rows.emplace_back(fmt::format("uint32_t {}[{}];", c.candidates, l.candidates.words()),
                         "the transitions to try in a tick (empty between ticks)");
   } else {
-    rows.emplace_back(fmt::format("{} {}[{}];", c.readable_counter(), c.av, c.place_count),
+    rows.emplace_back(fmt::format("{} {}[{}];", c.readable_counter(), c.av, c.count_text()),
                       c.layout.bounded ? fmt::format("activation counter of each place (never above {})", c.layout.bound)
                                        : "activation counter of each place");
   }
@@ -77,9 +93,14 @@ void state_struct(CodeWriter &w, const Context &c) {
   for (std::size_t v = 0; v < c.chart.vars.size(); ++v)
     rows.emplace_back(fmt::format("{} {};", c_type(c.chart.vars[v].type), c.var_field[v]),
                       fmt::format("var {}", c.chart.vars[v].name));
+  for (std::size_t p = 0; p < c.chart.places.size(); ++p)
+    if (c.sub[p])
+      rows.emplace_back(fmt::format("{} {};", c.sub[p]->struct_type, c.sub_field[p]),
+                        fmt::format("the instance of {} that {} runs", c.sub[p]->chart.name, c.chart.places[p].name));
   aligned(w, rows);
   w.dedent();
   w.line("};");
+  if (!c.root) w.blank();
 }
 
 void api(CodeWriter &w, const Context &c) {
@@ -118,17 +139,18 @@ void hooks(CodeWriter &w, const Context &c) {
 void interface_functions(CodeWriter &w, const Context &c) {
   // Grouped by interface, each group in the order the chart's function list gives.
   std::vector<std::string> interfaces;
-  for (int f : c.chart.functions) {
+  for (int f : c.functions) {
     const auto &name = c.model.functions.at(static_cast<std::size_t>(f)).interface_name;
     if (std::find(interfaces.begin(), interfaces.end(), name) == interfaces.end()) interfaces.push_back(name);
   }
   for (const auto &iface : interfaces) {
     w.blank();
     if (iface.empty())
-      w.line("/* Functions the chart calls: the robot library defines them. */");
+      w.line("/* Functions the chart{} calls: the robot library defines them. */", c.has_sub() ? " and its sub-charts" : "");
     else
-      w.line("/* Functions of interface {} that the chart calls: the robot library defines them. */", iface);
-    for (int f : c.chart.functions) {
+      w.line("/* Functions of interface {} that the chart{} calls: the robot library defines them. */", iface,
+             c.has_sub() ? " and its sub-charts" : "");
+    for (int f : c.functions) {
       const auto &fn = c.model.functions.at(static_cast<std::size_t>(f));
       if (fn.interface_name == iface) w.line("{};", c_prototype(fn));
     }

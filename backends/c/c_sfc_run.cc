@@ -15,7 +15,7 @@ public:
   SfcRun(CodeWriter &w, const Context &c) : w_(w), c_(c), temps_(c.temp_prefix) {}
 
   void emit() {
-    w_.line("void {}_run({} *{})", c_.type, c_.type, c_.self);
+    w_.line("{}void {}({} *{})", c_.linkage, c_.run_fn, c_.struct_type, c_.self);
     w_.line("{");
     w_.indent();
     declarations();
@@ -46,10 +46,14 @@ private:
 
   bool uses_self() const {
     if (!c_.chart.transitions.empty() || c_.needs_started || c_.has_timers) return true;
-    for (const auto &p : c_.chart.places)
-      if (!p.action.empty()) return true;
+    for (int p = 0; p < static_cast<int>(c_.chart.places.size()); ++p)
+      if (c_.acts(p)) return true;
     return false;
   }
+
+  /// The start of the tick is kept: for exits and entries, for conditions that read activation
+  /// (docs/language.md, "Sub-charts"), or in a hooks build for the hooks.
+  bool snapshot() const { return c_.needs_snapshot() || c_.reads_start; }
 
   /// The locals, and the snapshot of the activation vector at the start of the tick (taken
   /// only when something compares it with the end; for the hooks only in a hooks build).
@@ -59,12 +63,15 @@ private:
       w_.line("{} {}[{}] = {{0}}; /* activation produced in this tick */", c_.readable_counter(), c_.add, c_.place_count);
     // The conditions are rendered first: the temporaries they need belong to the whole function.
     for (const auto &t : c_.chart.transitions)
-      conditions_.push_back(t.condition ? c_condition(c_, *t.condition, temps_) : "");
+      conditions_.push_back(t.condition ? c_condition(c_, *t.condition, temps_, true) : "");
     temps_.declare(w_);
-    if (!c_.needs_snapshot()) directive(w_, "#ifdef " + c_.hooks_macro);
-    w_.line("{} {}[{}]; /* the activation at the start of the tick */", c_.readable_counter(), c_.before, c_.place_count);
-    w_.line("memcpy({0}, {1}, sizeof {0});", c_.before, c_.field(c_.av));
-    if (!c_.needs_snapshot()) directive(w_, "#endif");
+    if (snapshot() || c_.hooks()) {
+      if (!snapshot()) directive(w_, "#ifdef " + c_.hooks_macro);
+      w_.line("{} {}[{}]; /* the activation at the start of the tick */", c_.readable_counter(), c_.before,
+              c_.place_count);
+      w_.line("memcpy({0}, {1}, sizeof {0});", c_.before, c_.field(c_.av));
+      if (!snapshot()) directive(w_, "#endif");
+    }
     if (!uses_self()) w_.line("(void){}; /* the chart has neither transitions nor actions */", c_.self);
   }
 
@@ -145,19 +152,21 @@ private:
       if (c_.runs_exit(p)) {
         w_.line("/* exit {} */", c_.place(p).name);
         w_.line("if ({}[{}] && !{}) {{", c_.before, c_.place_const[static_cast<std::size_t>(p)], c_.av_of(p));
-        block(*c_.place(p).exit);
+        block(exit_of(p), c_.stop_call(p));
       }
     for (int p = 0; p < n; ++p)
       if (c_.runs_entry(p) || c_.resets_timer(p)) {
         w_.line("/* {} {} */", c_.runs_entry(p) ? "entry" : "timer of", c_.place(p).name);
         w_.line("if (!{}[{}] && {}) {{", c_.before, c_.place_const[static_cast<std::size_t>(p)], c_.av_of(p));
-        std::string reset = c_.resets_timer(p) ? fmt::format("{} = 0;", c_.timer_of(p)) : "";
-        block(c_.runs_entry(p) ? *c_.place(p).entry : std::vector<model::Stmt>{}, reset);
+        std::vector<std::string> first = c_.start_call(p);
+        if (c_.resets_timer(p)) first.insert(first.begin(), fmt::format("{} = 0;", c_.timer_of(p)));
+        block(entry_of(p), first);
       }
   }
 
   /// The observation hooks, compiled only with -DX_HOOKS.
   void hooks() {
+    if (!c_.hooks()) return;
     section("");
     directive(w_, "#ifdef " + c_.hooks_macro);
     w_.line("/* Observation hooks: places that lost, then gained activation; transitions open from now on */");
@@ -186,23 +195,34 @@ private:
   void actions() {
     bool any = false;
     for (int p = 0; p < static_cast<int>(c_.chart.places.size()); ++p) {
-      if (c_.place(p).action.empty()) continue;
-      if (!any) section("/* Perform place actions */");
+      if (!c_.acts(p)) continue;
+      if (!any)
+        section(c_.has_sub() ? "/* Perform place actions, each followed by one tick of the instance the place runs */"
+                             : "/* Perform place actions */");
       any = true;
       w_.line("if ({}) {{", c_.av_of(p));
-      block(c_.place(p).action);
+      block(c_.place(p).action, {}, c_.tick_call(p));
     }
   }
 
+  std::vector<model::Stmt> exit_of(int p) const {
+    return has_code(c_.place(p).exit) ? *c_.place(p).exit : std::vector<model::Stmt>{};
+  }
+  std::vector<model::Stmt> entry_of(int p) const {
+    return has_code(c_.place(p).entry) ? *c_.place(p).entry : std::vector<model::Stmt>{};
+  }
+
   /// The chart's statements as the body of the block just opened, and its closing brace.
-  /// `first`, if any, is engine code that goes before them.
-  void block(const std::vector<model::Stmt> &stmts, const std::string &first = "") {
+  /// `first` and `last` are lines of engine code that go before and after them.
+  void block(const std::vector<model::Stmt> &stmts, const std::vector<std::string> &first = {},
+             const std::vector<std::string> &last = {}) {
     w_.indent();
     std::vector<std::string> text = c_statements(c_, stmts, temps_);
     temps_.declare(w_);
-    if (!first.empty()) w_.line(std::string_view(first));
+    for (const auto &l : first) w_.line(std::string_view(l));
     emit_statements(w_, c_, stmts, text);
     w_.line_back();
+    for (const auto &l : last) w_.line(std::string_view(l));
     w_.dedent();
     w_.line("}");
   }

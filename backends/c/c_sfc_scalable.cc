@@ -36,10 +36,20 @@ protected:
 
   const std::string &constant(int place) const { return c_.place_const.at(static_cast<std::size_t>(place)); }
   int places() const { return static_cast<int>(c_.chart.places.size()); }
+  /// Some place acts: runs an action block or ticks an instance.
   bool any_actions() const {
-    for (const auto &p : c_.chart.places)
-      if (!p.action.empty()) return true;
+    for (int p = 0; p < places(); ++p)
+      if (c_.acts(p)) return true;
     return false;
+  }
+  std::vector<model::Stmt> exit_of(int p) const {
+    return has_code(c_.place(p).exit) ? *c_.place(p).exit : std::vector<model::Stmt>{};
+  }
+  /// A gained place's entry: the timer reset, the instance started, then the entry block.
+  void entry_case(int p) {
+    std::vector<std::string> first = c_.start_call(p);
+    if (c_.resets_timer(p)) first.insert(first.begin(), fmt::format("{} = 0;", c_.timer_of(p)));
+    case_block(p, has_code(c_.place(p).entry) ? *c_.place(p).entry : std::vector<model::Stmt>{}, first);
   }
 
   /// Step 0: the entry blocks of the initial places, once.
@@ -65,13 +75,16 @@ protected:
     w_.line("}");
   }
 
-  /// `case X_P:` with the chart's statements (and engine code `first` before them), then `break;`.
-  void case_block(int place, const std::vector<model::Stmt> &stmts, const std::string &first = "") {
+  /// `case X_P:` with the chart's statements (and lines of engine code `first` before them and
+  /// `last` after them), then `break;`.
+  void case_block(int place, const std::vector<model::Stmt> &stmts, const std::vector<std::string> &first = {},
+                  const std::vector<std::string> &last = {}) {
     std::vector<std::string> text = c_statements(c_, stmts, temps_);
     case_begin(constant(place));
-    if (!first.empty()) w_.line(std::string_view(first));
+    for (const auto &l : first) w_.line(std::string_view(l));
     emit_statements(w_, c_, stmts, text);
     w_.line_back();
+    for (const auto &l : last) w_.line(std::string_view(l));
     w_.line("break;");
     case_end();
   }
@@ -97,7 +110,7 @@ protected:
     for (std::size_t i : transitions) {
       const auto &t = c_.chart.transitions[i];
       if (!t.condition) text.emplace_back();
-      else text.push_back(alone ? c_test(c_, *t.condition, temps_) : c_condition(c_, *t.condition, temps_));
+      else text.push_back(alone ? c_test(c_, *t.condition, temps_, true) : c_condition(c_, *t.condition, temps_, true));
     }
     return text;
   }
@@ -138,7 +151,7 @@ public:
   using ScalableRun::ScalableRun;
 
   void emit() {
-    w_.line("void {}_run({} *{})", c_.type, c_.type, c_.self);
+    w_.line("{}void {}({} *{})", c_.linkage, c_.run_fn, c_.struct_type, c_.self);
     w_.line("{");
     w_.indent();
     declarations();
@@ -163,6 +176,7 @@ private:
       }
       return;
     }
+    if (!c_.needs_snapshot() && !c_.hooks()) return;
     section("");
     if (!c_.needs_snapshot()) directive(w_, "#ifdef " + c_.hooks_macro);
     w_.line("{} {} = {}; /* the active place at the start of the tick */", uint_type(c_.layout.index_bits), c_.from,
@@ -221,7 +235,7 @@ private:
     if (exits) {
       w_.line("switch ({}) {{", c_.from);
       for (int p = 0; p < places(); ++p)
-        if (c_.runs_exit(p)) case_block(p, *c_.place(p).exit);
+        if (c_.runs_exit(p)) case_block(p, exit_of(p), c_.stop_call(p));
       switch_end();
     }
     bool entries = false;
@@ -229,9 +243,7 @@ private:
     if (entries) {
       w_.line("switch ({}) {{", current());
       for (int p = 0; p < places(); ++p)
-        if (c_.runs_entry(p) || c_.resets_timer(p))
-          case_block(p, c_.runs_entry(p) ? *c_.place(p).entry : std::vector<model::Stmt>{},
-                     c_.resets_timer(p) ? fmt::format("{} = 0;", c_.timer_of(p)) : "");
+        if (c_.runs_entry(p) || c_.resets_timer(p)) entry_case(p);
       switch_end();
     }
     w_.dedent();
@@ -239,7 +251,7 @@ private:
   }
 
   void hooks() {
-    if (c_.chart.transitions.empty()) return;
+    if (c_.chart.transitions.empty() || !c_.hooks()) return;
     section("");
     directive(w_, "#ifdef " + c_.hooks_macro);
     w_.line("/* Observation hooks: the place left and the place entered; the transitions leaving it */");
@@ -261,10 +273,11 @@ private:
 
   void actions() {
     if (!any_actions()) return;
-    section("/* Perform the action of the active place */");
+    section(c_.has_sub() ? "/* Perform the action of the active place, then one tick of the instance it runs */"
+                         : "/* Perform the action of the active place */");
     w_.line("switch ({}) {{", current());
     for (int p = 0; p < places(); ++p)
-      if (!c_.place(p).action.empty()) case_block(p, c_.place(p).action);
+      if (c_.acts(p)) case_block(p, c_.place(p).action, {}, c_.tick_call(p));
     switch_end();
   }
 };
@@ -277,7 +290,7 @@ public:
   using ScalableRun::ScalableRun;
 
   void emit() {
-    w_.line("void {}_run({} *{})", c_.type, c_.type, c_.self);
+    w_.line("{}void {}({} *{})", c_.linkage, c_.run_fn, c_.struct_type, c_.self);
     w_.line("{");
     w_.indent();
     declarations();
@@ -326,13 +339,17 @@ private:
     }
     if (has_transitions() || any_actions()) w_.line("uint32_t {}, {}; /* a word of a set, its bits */", c_.word, c_.bits);
     if (has_transitions()) w_.line("uint32_t {}, {};", c_.index, i);
-    directive(w_, "#ifdef " + c_.hooks_macro);
-    w_.line("uint32_t {}[{}]; /* the active places at the start of the tick */", c_.before, l().active.words_at(0));
-    if (!has_transitions()) w_.line("uint32_t {}, {};", c_.index, i);
-    w_.line("for ({0} = 0; {0} < {1}u; ++{0}) {{", i, l().active.words_at(0));
-    w_.line("    {}[{}] = {}[{}];", c_.before, i, c_.field(c_.active), i);
-    w_.line("}");
-    directive(w_, "#endif");
+    // The start of the tick: for conditions that read activation (docs/language.md, "Sub-charts"), and for hooks.
+    const bool keep = c_.reads_start;
+    if (keep || c_.hooks()) {
+      if (!keep) directive(w_, "#ifdef " + c_.hooks_macro);
+      w_.line("uint32_t {}[{}]; /* the active places at the start of the tick */", c_.before, l().active.words_at(0));
+      if (!has_transitions()) w_.line("uint32_t {}, {};", c_.index, i);
+      w_.line("for ({0} = 0; {0} < {1}u; ++{0}) {{", i, l().active.words_at(0));
+      w_.line("    {}[{}] = {}[{}];", c_.before, i, c_.field(c_.active), i);
+      w_.line("}");
+      if (!keep) directive(w_, "#endif");
+    }
     if (!has_transitions() && !any_actions() && !c_.needs_started && !c_.has_timers)
       w_.line("(void){}; /* the chart has neither transitions nor actions */", c_.self);
   }
@@ -477,7 +494,7 @@ private:
       w_.line("if ({}[{}[{}]] != 0u) {{ continue; }} /* lost and regained: still active */", c_.field(c_.av), c_.lost, i);
       w_.line("switch ({}[{}]) {{", c_.lost, i);
       for (int p = 0; p < places(); ++p)
-        if (c_.runs_exit(p)) case_block(p, *c_.place(p).exit);
+        if (c_.runs_exit(p)) case_block(p, exit_of(p), c_.stop_call(p));
       switch_end();
       w_.dedent();
       w_.line("}");
@@ -489,9 +506,7 @@ private:
             j, c_.lost_n, c_.lost, c_.gained, i);
     w_.line("switch ({}[{}]) {{", c_.gained, i);
     for (int p = 0; p < places(); ++p)
-      if (c_.runs_entry(p) || c_.resets_timer(p))
-        case_block(p, c_.runs_entry(p) ? *c_.place(p).entry : std::vector<model::Stmt>{},
-                   c_.resets_timer(p) ? fmt::format("{} = 0;", c_.timer_of(p)) : "");
+      if (c_.runs_entry(p) || c_.resets_timer(p)) entry_case(p);
     switch_end();
     w_.dedent();
     w_.line("}");
@@ -500,6 +515,7 @@ private:
   /// The observation hooks, compiled only with -DX_HOOKS: the start of the tick against its
   /// end, place by place and transition by transition (a hooks build pays for the whole chart).
   void hooks() {
+    if (!c_.hooks()) return;
     section("");
     directive(w_, "#ifdef " + c_.hooks_macro);
     w_.line("/* Observation hooks: places that lost, then gained activation; transitions open from now on */");
@@ -525,10 +541,11 @@ private:
   /// Step 4: the active places in declaration order, each with actions running them once.
   void actions() {
     if (!any_actions()) return;
-    section("/* Perform place actions: the active places in declaration order */");
+    section(c_.has_sub() ? "/* Perform place actions: the active places in declaration order, then their instances */"
+                         : "/* Perform place actions: the active places in declaration order */");
     members_begin(active_set(), c_.field(c_.active));
     for (int p = 0; p < places(); ++p)
-      if (!c_.place(p).action.empty()) case_block(p, c_.place(p).action);
+      if (c_.acts(p)) case_block(p, c_.place(p).action, {}, c_.tick_call(p));
     members_end();
   }
 };

@@ -11,19 +11,35 @@ namespace gfec::c_backend {
 
 namespace {
 
+/// Some context of the tree (the root or an instance at any depth) satisfies `test`.
+template <typename Test> bool any_context(const Context &c, const Test &test) {
+  if (test(c)) return true;
+  for (const auto &s : c.sub)
+    if (s && any_context(*s, test)) return true;
+  return false;
+}
+
 void includes(CodeWriter &w, const Context &c) {
   directive(w, "#include " + c_string_literal(c.header_file));
-  if (!c.fsm && !c.readable()) return;  // the scalable forms need nothing beyond engine.h's
-  // Standard headers only for what this engine uses.
-  bool sfc_hooks_snapshot = !c.fsm && !c.needs_snapshot();
-  if (c.needs_snapshot() || sfc_hooks_snapshot || c.has_post) w.blank();
-  if (!c.fsm && c.needs_snapshot()) directive(w, "#include <string.h>");
-  if (sfc_hooks_snapshot) {
+  // Standard headers only for what this engine (with its instances) uses: memcpy for a readable
+  // sfc's snapshot of the start of the tick (the root's, in a hooks build, for the hooks only),
+  // assert for postconditions.
+  const bool memcpy_always = any_context(c, [](const Context &x) {
+    return !x.fsm && x.readable() && (x.needs_snapshot() || x.reads_start);
+  });
+  const bool sfc_hooks_snapshot = !c.fsm && c.readable() && !c.needs_snapshot() && !c.reads_start;
+  const bool post = any_context(c, [](const Context &x) { return x.has_post; });
+  const bool scalable_root = !c.fsm && !c.readable();
+  if (scalable_root && !memcpy_always && !post) return;  // the scalable forms need nothing beyond engine.h's
+  if ((!scalable_root && c.needs_snapshot()) || sfc_hooks_snapshot || post || memcpy_always) w.blank();
+  if (memcpy_always) {
+    directive(w, "#include <string.h>");
+  } else if (sfc_hooks_snapshot) {
     directive(w, "#ifdef " + c.hooks_macro);
     directive(w, "#include <string.h>");
     directive(w, "#endif");
   }
-  if (c.has_post) {
+  if (post) {
     directive(w, "#ifdef " + c.checks_macro);
     directive(w, "#include <assert.h>");
     directive(w, "#endif");
@@ -50,7 +66,7 @@ void init(CodeWriter &w, const Context &c) {
     w.line("/* Initial state: {}. Calls no code of the chart. */", list);
   else
     w.line("/* Initial marking: {} {} active. Calls no code of the chart. */", list, initial.size() == 1 ? "is" : "are");
-  w.line("void {}_init({} *{})", c.type, c.type, c.self);
+  w.line("{}void {}({} *{})", c.linkage, c.init_fn, c.struct_type, c.self);
   w.line("{");
   w.indent();
   if (c.fsm) {
@@ -95,8 +111,74 @@ void init(CodeWriter &w, const Context &c) {
     std::string value = var.init ? c_value(c, *var.init, var.type) : var.type == model::Type::Bool ? "false" : "0";
     w.line("{} = {};", c.field(c.var_field[v]), value);
   }
+  // Every instance is reset, not only the initial places': none runs before its place gains
+  // activation (which resets it again), and the whole state is defined from here on.
+  for (std::size_t p = 0; p < c.chart.places.size(); ++p)
+    if (c.sub[p])
+      w.line("{}(&{}); /* the instance of {} run by {} */", c.sub[p]->init_fn, c.field(c.sub_field[p]),
+             c.sub[p]->chart.name, c.chart.places[p].name);
   w.dedent();
   w.line("}");
+}
+
+/// An instance's stop (docs/language.md, "Sub-charts"): for each active place in declaration order, the stop of
+/// the place's own instance, then the place's exit block; innermost first.
+void stop(CodeWriter &w, const Context &c) {
+  w.line("/* Stops the instance of {} run by {}: each active {} in declaration order stops its own", c.chart.name,
+         c.owner, c.fsm ? "state" : "place");
+  w.line("   instance, then runs its exit block (innermost first). Leaves the state as it is. */");
+  w.line("{}void {}({} *{})", c.linkage, c.stop_fn, c.struct_type, c.self);
+  w.line("{");
+  w.indent();
+  Temporaries temps(c.temp_prefix);
+  for (int p = 0; p < static_cast<int>(c.chart.places.size()); ++p) {
+    const auto &place = c.place(p);
+    std::vector<std::string> first = c.stop_call(p);
+    if (first.empty() && !has_code(place.exit)) continue;
+    w.line("if ({}) {{", c.active_test("", p));
+    w.indent();
+    std::vector<model::Stmt> stmts = has_code(place.exit) ? *place.exit : std::vector<model::Stmt>{};
+    std::vector<std::string> text = c_statements(c, stmts, temps);
+    temps.declare(w);
+    for (const auto &l : first) w.line(std::string_view(l));
+    if (!stmts.empty()) w.line("/* exit {} */", place.name);
+    emit_statements(w, c, stmts, text);
+    w.line_back();
+    w.dedent();
+    w.line("}");
+  }
+  w.dedent();
+  w.line("}");
+}
+
+/// An instance's code, its own instances' first (a static function is defined before its use):
+/// enumerations, the sparse form's helpers, _init, _stop and _run.
+void instance(CodeWriter &w, const Context &c) {
+  for (const auto &s : c.sub)
+    if (s) instance(w, *s);
+  w.line("/* ---- The instance of {} run by {} */", c.chart.name, c.owner);
+  w.blank();
+  places_enum(w, c);
+  w.blank();
+  transitions_enum(w, c);
+  w.blank();
+  if (c.sparse()) {
+    emit_scalable_helpers(w, c);
+    w.blank();
+  }
+  init(w, c);
+  w.blank();
+  if (c.has_stop()) {
+    stop(w, c);
+    w.blank();
+  }
+  if (c.fsm)
+    emit_fsm_run(w, c);
+  else if (c.readable())
+    emit_sfc_run(w, c);
+  else
+    emit_scalable_sfc_run(w, c);
+  w.blank();
 }
 
 void accessors(CodeWriter &w, const Context &c) {
@@ -147,6 +229,12 @@ std::string emit_source(const Context &c) {
   includes(w, c);
   verbatims(w, c);
   w.blank();
+  for (const auto &s : c.sub)
+    if (s) instance(w, *s);
+  if (c.has_sub()) {
+    w.line("/* ---- The compiled chart, {} */", c.chart.name);
+    w.blank();
+  }
   if (c.sparse()) {
     emit_scalable_helpers(w, c);
     w.blank();

@@ -14,6 +14,7 @@
 #include <catch2/catch.hpp>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -49,11 +50,56 @@ public:
     model_.charts.push_back(std::move(c));
   }
 
-  model::Chart &chart() { return model_.charts.front(); }
+  model::Chart &chart() { return model_.charts.at(current_); }
   const model::Model &model() const { return model_; }
+
+  /// Sub-charts: adds a chart (index 1, 2, ...) and makes it the one the other calls build, until
+  /// select() goes back (chart 0 is the one compiled).
+  int begin_chart(std::string name, model::Chart::Kind kind) {
+    model::Chart c;
+    c.name = std::move(name);
+    c.kind = kind;
+    c.in_main_file = true;
+    model_.charts.push_back(std::move(c));
+    current_ = model_.charts.size() - 1;
+    return static_cast<int>(current_);
+  }
+  void select(int chart) { current_ = static_cast<std::size_t>(chart); }
+  /// Place `place` of the current chart runs chart `sub`.
+  void runs(const std::string &place, int sub) {
+    chart().places.at(static_cast<std::size_t>(place_index(place))).runs = sub;
+  }
+  /// `active(P.Q.R)`: the names resolved chart by chart from the current one.
+  Expr active(const std::vector<std::string> &path) const {
+    Expr e;
+    e.kind = Expr::Kind::Active;
+    std::size_t c = current_;
+    for (const auto &name : path) {
+      const auto &places = model_.charts.at(c).places;
+      int found = -1;
+      for (std::size_t i = 0; i < places.size(); ++i)
+        if (places[i].name == name) found = static_cast<int>(i);
+      if (found < 0) throw std::invalid_argument("no place " + name);
+      e.path.push_back(found);
+      c = static_cast<std::size_t>(std::max(0, places[static_cast<std::size_t>(found)].runs));
+    }
+    return e;
+  }
+  /// `succeeded(P)` / `failed(P)`.
+  Expr status(const std::string &place, bool succeeded) const {
+    Expr e;
+    e.kind = succeeded ? Expr::Kind::Succeeded : Expr::Kind::Failed;
+    e.index = place_index(place);
+    return e;
+  }
 
   /// Declares an interface function (once) and marks it used by the chart.
   ChartBuilder &fn(const std::string &name, Type result = Type::Void, std::vector<model::Param> params = {}) {
+    for (std::size_t i = 0; i < model_.functions.size(); ++i)
+      if (model_.functions[i].name == name) {  // declared for another chart: used by this one too
+        chart().functions.push_back(static_cast<int>(i));
+        return *this;
+      }
     model::Function f;
     f.name = name;
     f.result = result;
@@ -221,7 +267,7 @@ public:
   }
 
 private:
-  const model::Chart &chart_const() const { return model_.charts.front(); }
+  const model::Chart &chart_const() const { return model_.charts.at(current_); }
   int function_index(const std::string &name) const {
     for (std::size_t i = 0; i < model_.functions.size(); ++i)
       if (model_.functions[i].name == name) return static_cast<int>(i);
@@ -240,6 +286,7 @@ private:
   std::unique_ptr<SourceManager> sources_;
   model::Model model_;
   std::uint32_t line_ = 0;
+  std::size_t current_ = 0;
 };
 
 /// Runs the C back end on a model: {engine.c, engine.h} for output `output`.
@@ -350,14 +397,28 @@ inline const char *kStrictFlags = "-std=c99 -Wall -Wextra -Wpedantic -Werror";
 /// runs one tick per line and prints the activation after it (`av A B:2` lists the active
 /// places, counts above one after a colon; an fsm prints `state S status 0`). With -DX_HOOKS it
 /// logs the hooks too (`hook lost A`, `hook gained B`, `hook enabled T0`).
+/// The interface functions `chart` and every chart it runs (at any depth) call, each once.
+inline std::vector<int> called_functions(const model::Model &m, const model::Chart &chart) {
+  std::vector<int> out;
+  std::vector<const model::Chart *> todo{&chart};
+  for (std::size_t k = 0; k < todo.size() && k < 64; ++k) {
+    for (int f : todo[k]->functions)
+      if (std::find(out.begin(), out.end(), f) == out.end()) out.push_back(f);
+    for (const auto &p : todo[k]->places)
+      if (p.runs >= 0) todo.push_back(&m.charts.at(static_cast<std::size_t>(p.runs)));
+  }
+  return out;
+}
+
 inline std::string harness_source(const model::Model &m, const model::Chart &chart, const std::string &header) {
   const std::string &X = chart.name;
+  const std::vector<int> functions = called_functions(m, chart);
   const bool fsm = chart.kind == model::Chart::Kind::Fsm;
   std::string s;
   s += fmt::format("#include \"{}\"\n\n#include <stdio.h>\n#include <stdlib.h>\n#include <string.h>\n\n", header);
   s += "static char script[1024]; /* this tick's line */\n\n";
   bool senses = false;
-  for (int fi : chart.functions) senses = senses || m.functions[static_cast<std::size_t>(fi)].result != Type::Void;
+  for (int fi : functions) senses = senses || m.functions[static_cast<std::size_t>(fi)].result != Type::Void;
   if (senses)
     s += "static double value_of(const char *name)\n{\n"
        "    size_t n = strlen(name);\n"
@@ -373,7 +434,7 @@ inline std::string harness_source(const model::Model &m, const model::Chart &cha
   for (const auto &p : chart.places) s += fmt::format("\"{}\", ", p.name);
   s += "NULL};\n";
   s += "\n";
-  for (int fi : chart.functions) {
+  for (int fi : functions) {
     const auto &f = m.functions[static_cast<std::size_t>(fi)];
     std::string params, format, args;
     for (std::size_t i = 0; i < f.params.size(); ++i) {
