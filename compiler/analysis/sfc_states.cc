@@ -38,6 +38,10 @@ public:
     return used_ <= budget_;
   }
   std::size_t used() const { return used_; }
+  /// Every transition that fired in some outcome. `outcomes` keeps one firing set per resulting
+  /// marking, so a transition whose firing changes nothing (a self-loop `A -> A`) may be missing
+  /// from it; it is never missing here.
+  const std::vector<bool> &fired_any() const { return fired_any_; }
 
 private:
   static constexpr int kMaxBranches = 64;
@@ -62,6 +66,7 @@ private:
     }
     ++used_;
     for (std::size_t p = 0; p < avail.size(); ++p) avail[p] = give(avail[p], add[p]);
+    for (int f : fired) fired_any_[static_cast<std::size_t>(f)] = true;
     out.emplace(std::move(avail), std::move(fired));
   }
 
@@ -69,6 +74,7 @@ private:
   const std::vector<Firing> &firing_;
   std::size_t budget_;
   std::size_t used_ = 0;
+  std::vector<bool> fired_any_ = std::vector<bool>(c_.transitions.size(), false);
 };
 
 /// A quick necessary condition for `a` to cover `b` strictly: more unbounded places, or as many
@@ -135,9 +141,10 @@ StateSpace explore(const model::Chart &chart, const Limits &limits) {
       s.limit_hit = true;
       break;
     }
+    for (std::size_t t = 0; t < tick.fired_any().size(); ++t)
+      if (tick.fired_any()[t]) s.ever_fired[t] = true;
     std::set<int> seen;
     for (auto &[next, fired] : outcomes) {
-      for (int t : fired) s.ever_fired[static_cast<std::size_t>(t)] = true;
       Marking m = next;
       Size m_size = size_of(m);
       // Karp-Miller: growth over an ancestor can repeat, so it is unbounded.

@@ -53,6 +53,15 @@ std::vector<Edge> resolve_runs(Context &cx) {
             .note(sym->range, fmt::format("'{}' declared here", name.text));
         continue;
       }
+      const ast::Chart &run = *cx.charts[static_cast<std::size_t>(sym->index)];
+      if (!run.teams.empty()) {
+        // A team machine talks to other agents through its root's API (docs/language.md "Teams").
+        cx.diag.error(name.range, "team-subchart",
+                      fmt::format("fsm '{}' is a team machine; it can only be compiled as the root, not run as a sub-chart",
+                                  name.text))
+            .note(run.teams.front().second, "it is made a team machine here");
+        continue;
+      }
       cx.runs[c][p] = sym->index;
       edges.push_back({static_cast<int>(c), static_cast<int>(p), sym->index});
     }

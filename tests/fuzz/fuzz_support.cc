@@ -55,6 +55,30 @@ public:
         expect(n == m_.functions[static_cast<std::size_t>(e.index)].params.size(), "as many arguments as parameters");
       break;
     case K::Elapsed: expect(chart && in(e.index, chart->places.size()), "an elapsed() place in range"); break;
+    case K::Succeeded:
+    case K::Failed: {
+      bool ok = chart && in(e.index, chart->places.size());
+      expect(ok, "a succeeded()/failed() place in range");
+      if (!ok) break;
+      int runs = chart->places[static_cast<std::size_t>(e.index)].runs;
+      expect(in(runs, m_.charts.size()) && m_.charts[static_cast<std::size_t>(runs)].kind == model::Chart::Kind::Fsm,
+             "succeeded()/failed() read a place that runs an fsm");
+      break;
+    }
+    case K::Active: {
+      // Each step names a place of the chart the previous one runs.
+      expect(!e.path.empty(), "active() has a path");
+      const model::Chart *at = chart;
+      for (std::size_t k = 0; k < e.path.size() && at; ++k) {
+        bool ok = in(e.path[k], at->places.size());
+        expect(ok, "an active() path step in range");
+        if (!ok) break;
+        int runs = at->places[static_cast<std::size_t>(e.path[k])].runs;
+        if (k + 1 < e.path.size()) expect(in(runs, m_.charts.size()), "an active() path goes through a place that runs a chart");
+        at = in(runs, m_.charts.size()) ? &m_.charts[static_cast<std::size_t>(runs)] : nullptr;
+      }
+      break;
+    }
     case K::Unary:
     case K::Paren: expect(n == 1, "one operand"); break;
     case K::Binary: expect(n == 2, "two operands"); break;
@@ -80,6 +104,8 @@ public:
     int initial = 0;
     for (const auto &p : c.places) {
       initial += p.initial;
+      expect(p.runs == -1 || in(p.runs, m_.charts.size()), "a place runs a chart in range, or none");
+      expect(p.runs == -1 || p.terminal == model::Terminal::None, "a terminal state runs nothing");
       block(p.action, c);
       if (p.entry) block(*p.entry, c);
       if (p.exit) block(*p.exit, c);

@@ -193,3 +193,20 @@ TEST_CASE("analysis sfc: a chart of any size costs a bounded amount of work") {
   auto chain_space = analysis::explore(long_chain->model.charts.at(0), limits);
   CHECK(chain_space.outcomes >= 1);
 }
+
+TEST_CASE("analysis sfc: a self-loop that changes no marking still fires, so it is not dead") {
+  // Firing L -> L leaves the marking as it was: the exploration keeps one firing set per
+  // resulting marking, and must still count L -> L as fired (it once called it dead).
+  auto c = compile(R"(
+sfc Pair {
+  initial place L { Go(); }
+  initial place R;
+  place J;
+  (L, R) -> J when x();
+  J -> (L, R) when y();
+  L -> L when x() && y();
+}
+)",
+                   "interface Bot { bool x(); bool y(); void Go(); }");
+  CHECK(analyze_text(*c) == "");
+}

@@ -6,6 +6,7 @@
 
 #include "interpreter/engine.h"
 #include "interpreter/event_log.h"
+#include "roots.h"
 
 #include <catch2/catch.hpp>
 
@@ -35,7 +36,15 @@ std::string script_text(const std::vector<Tick> &ticks) {
 std::vector<Tick> random_script(const model::Model &m, const model::Chart &chart, unsigned seed, int length) {
   std::mt19937 rng(seed);
   std::vector<Tick> ticks(static_cast<std::size_t>(length));
-  for (int f : chart.functions) {
+  // The chart's own functions first, then those only its sub-charts call (docs/language.md
+  // "Sub-charts"), each once.
+  std::vector<int> functions = chart.functions;
+  std::vector<bool> tree = charts_in_tree(m, static_cast<int>(&chart - m.charts.data()));
+  for (std::size_t c = 0; c < m.charts.size(); ++c)
+    if (tree[c])
+      for (int f : m.charts[c].functions)
+        if (std::find(functions.begin(), functions.end(), f) == functions.end()) functions.push_back(f);
+  for (int f : functions) {
     const auto &fn = m.functions[static_cast<std::size_t>(f)];
     if (fn.result == Type::Void) continue;
     unsigned percent = 10 + rng() % 80;

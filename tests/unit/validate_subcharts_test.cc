@@ -310,3 +310,19 @@ t.sfc:4:8: error: 'failed' is built into the chart language and cannot name a fu
         ^~~~~~
 )--");
 }
+
+TEST_CASE("validate: sub-charts: a team machine is never run as a sub-chart", "[validate][subcharts]") {
+  // `team N;` is parsed by the team machines' front end; the AST field is set by hand here so
+  // that this check is tested on its own.
+  test::FrontEnd fe({{"t.sfc", R"--(fsm Crew { initial state Go; success state Done; Go -> Done; }
+sfc Top { initial place A runs Crew; }
+)--"}});
+  REQUIRE(fe.text() == "");
+  ast::Chart &crew = fe.loaded.program.files.at(0)->charts.at(0);
+  crew.teams.push_back({4, crew.name.range});
+  model::Model m = validate(fe.loaded.program, fe.sources, fe.diag);
+  std::string text = fe.text();
+  CHECK(text.find("t.sfc:2:32: error: fsm 'Crew' is a team machine; it can only be compiled as the root, not run as a "
+                  "sub-chart [team-subchart]\n") == 0);
+  CHECK(text.find("t.sfc:1:5: note: it is made a team machine here\n") != std::string::npos);
+}
