@@ -1,0 +1,14 @@
+// The validator's pass over `test` blocks (docs/testing-charts.md), run after every chart is
+// validated: it needs their scopes' names and their lowered variables.
+#pragma once
+
+#include "scenario/scenario.h"
+#include "validate/context.h"
+#include "validate/expr.h"
+
+namespace gfec::validation {
+
+/// Checks the tests of the main file and appends those without errors to `out`.
+void validate_tests(Context &cx, scenario::Suite &out);
+
+} // namespace gfec::validation
