@@ -46,6 +46,9 @@ for generator in "${generators[@]}"; do
   [ -f "$out/blink.json" ] && [ -f "$out/blink.dot" ] || fail "json/dot side products missing"
   grep -q '"kind": "sfc"' "$out/blink.json" || fail "blink.json"
   grep -q 'board.iface' "$out/blink.c.d" || fail "the dependency file lists no import"
+  # gfec_add_chart_tests() registered charts/blink.test as one CTest test, and it passes.
+  ctest --test-dir "$out" -N | grep -q "gfec_test.blink" || fail "gfec_add_chart_tests registered no test"
+  ctest --test-dir "$out" --output-on-failure >/dev/null || fail "the chart's scenario tests failed"
 
   # Nothing changed: nothing is regenerated.
   before=$(stat -c %y "$out/blink.c")
