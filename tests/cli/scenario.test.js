@@ -210,3 +210,26 @@ test('-fdiagnostics-format=json and sarif-stderr carry the failed expectations',
   assert.equal(results[0].ruleId, 'expectation');
   assert.equal(results[0].locations[0].physicalLocation.region.startLine, 26);
 });
+
+test('docs/examples/gfec-lint.yml: its test step runs the samples\' tests and writes JUnit', (t) => {
+  const { spawnSync } = require('node:child_process');
+  const { SOURCE_DIR, GFEC } = require('./helpers');
+  const yml = fs.readFileSync(path.join(SOURCE_DIR, 'docs', 'examples', 'gfec-lint.yml'), 'utf8');
+  const step = /- name: Run the scenario tests\n([\s\S]*?)\n\s*continue-on-error/.exec(yml);
+  assert.ok(step, 'the workflow has a "Run the scenario tests" step');
+  const run = /run: \|\n((?:\s{10}.*\n?)+)/.exec(step[1]);
+  assert.ok(run, 'the step has a run block');
+  const git = spawnSync('git', ['rev-parse', '--is-inside-work-tree'], { cwd: SOURCE_DIR, encoding: 'utf8' });
+  if (git.status !== 0) return t.skip('not a git checkout');
+  const out = path.join(scratch(), 'gfec-tests.xml');
+  const script = run[1].replace(/^ {10}/gm, '').replace(/build\/gfec/g, JSON.stringify(GFEC))
+    .replace('--junit gfec-tests.xml', `--junit ${JSON.stringify(out)}`);
+  const chartsVar = /CHARTS: (\S+)/.exec(yml)[1];
+  const r = spawnSync('bash', ['-c', script], { cwd: SOURCE_DIR, encoding: 'utf8', env: { ...process.env, CHARTS: chartsVar } });
+  assert.equal(r.status, 0, r.stderr);
+  assert.match(r.stdout, /^\d+ passed, 0 failed\n$/);
+  const suites = parseXml(fs.readFileSync(out, 'utf8'));
+  const names = suites.children.map((s) => s.attrs.name);
+  assert.ok(names.includes('samples/line_follower.test'), names.join(' '));
+  assert.equal(suites.attrs.failures, '0');
+});
