@@ -93,6 +93,8 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
   app.footer(warning_help() +
              "\nDependency files, as gcc writes them: -MD writes OUTPUT.d (or -MF FILE) for make, naming\n"
              "every file imported; -MP adds an empty rule per import; -MT TARGET names the target.\n"
+             "\nSubcommands: 'gfec run CHART' runs a chart in the reference interpreter; 'gfec test FILE...'\n"
+             "runs scenario tests (see 'gfec run --help', 'gfec test --help').\n"
              "\nExit status: 0 success, 1 errors in the input, 2 usage or I/O error.\n"
              "Documentation: docs/cli.md");
   std::vector<std::string> warning_flags;
