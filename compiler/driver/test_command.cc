@@ -76,6 +76,14 @@ std::string text_of(const SourceManager &sources, SourceRange r) {
   return out;
 }
 
+/// Whether an expectation asks about calls (its failure then lists the tick's calls).
+bool reads_calls(const scenario::Expect &e) {
+  if (e.kind == scenario::Expect::Kind::Called || e.kind == scenario::Expect::Kind::Calls) return true;
+  for (const auto &a : e.args)
+    if (reads_calls(a)) return true;
+  return false;
+}
+
 /// The range of the `tick` step that ran tick `tick` (counted from 1).
 SourceRange tick_step(const scenario::Test &test, std::uint64_t tick) {
   std::uint64_t seen = 0;
@@ -165,11 +173,18 @@ private:
       auto failed = [](const Side &x) { return x.verdict && (!x.verdict->holds || !x.verdict->error.empty()); };
       if (!failed(sides[0]) && !failed(sides[1])) continue;
       const Side &bad = failed(sides[0]) ? sides[0] : sides[1];
+      const scenario::Run &bad_run = *runs[&bad == &sides[0] ? 0 : 1];
       auto &d = out.diag.error(s.range, "expectation",
                                fmt::format("expectation failed: {}", text_of(file.sources, s.expect.range)));
       if (!bad.verdict->error.empty()) d.note(fmt::format("it has no defined value: {}", bad.verdict->error));
       for (const scenario::Operand &op : bad.verdict->operands)
         d.note(fmt::format("'{}' is {}", text_of(file.sources, op.range), op.value));
+      if (reads_calls(s.expect)) {
+        std::string calls;
+        for (const scenario::Call &c : bad_run.ticks[tick].calls) calls += (calls.empty() ? "" : ", ") + c.text;
+        d.note(calls.empty() ? std::string("no function was called in the last tick")
+                             : fmt::format("the calls of the last tick: {}", calls));
+      }
       if (sides[0].verdict && sides[1].verdict && failed(sides[0]) != failed(sides[1]))
         d.note(fmt::format("it fails on {} only; it holds on {}", bad.who, (&bad == &sides[0] ? sides[1] : sides[0]).who));
       d.note(fmt::format("in test \"{}\", after tick {}", test.name, tick));

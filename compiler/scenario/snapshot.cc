@@ -79,7 +79,6 @@ public:
       }
       std::string value = e.kind == Expect::Kind::Calls ? std::to_string(n) : n > 0 ? "true" : "false";
       if (n == 0 && !seen.empty()) value += fmt::format(" (called as {})", seen);
-      if (e.kind == Expect::Kind::Called && s_.calls.empty()) value += " (no function was called in the last tick)";
       operands.push_back({e.range, value});
       return e.kind == Expect::Kind::Calls ? literal_int(n, e.range) : literal_bool(n > 0, e.range);
     }
