@@ -47,7 +47,8 @@ for generator in "${generators[@]}"; do
   grep -q '"kind": "sfc"' "$out/blink.json" || fail "blink.json"
   grep -q 'board.iface' "$out/blink.c.d" || fail "the dependency file lists no import"
   # gfec_add_chart_tests() registered charts/blink.test as one CTest test, and it passes.
-  ctest --test-dir "$out" -N | grep -q "gfec_test.blink" || fail "gfec_add_chart_tests registered no test"
+  listed=$(ctest --test-dir "$out" -N)
+  grep -q "gfec_test.blink" <<<"$listed" || fail "gfec_add_chart_tests registered no test: $listed"
   ctest --test-dir "$out" --output-on-failure >/dev/null || fail "the chart's scenario tests failed"
 
   # Nothing changed: nothing is regenerated.
