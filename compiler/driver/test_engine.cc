@@ -164,6 +164,26 @@ std::vector<scenario::Snapshot> parse_output(const std::string &out, const model
   return snaps;
 }
 
+/// The interface functions the engine's header declares: those of the chart and of every chart
+/// its places run (sub-charts), in model order.
+std::vector<int> engine_functions(const model::Model &model, int root) {
+  std::vector<bool> chart_seen(model.charts.size()), used(model.functions.size());
+  std::vector<int> todo{root};
+  while (!todo.empty()) {
+    int c = todo.back();
+    todo.pop_back();
+    if (c < 0 || c >= static_cast<int>(model.charts.size()) || chart_seen[static_cast<std::size_t>(c)]) continue;
+    chart_seen[static_cast<std::size_t>(c)] = true;
+    const model::Chart &chart = model.charts[static_cast<std::size_t>(c)];
+    for (int f : chart.functions) used[static_cast<std::size_t>(f)] = true;
+    for (const auto &p : chart.places) todo.push_back(p.runs);
+  }
+  std::vector<int> out;
+  for (std::size_t f = 0; f < used.size(); ++f)
+    if (used[f]) out.push_back(static_cast<int>(f));
+  return out;
+}
+
 } // namespace
 
 std::string harness_source(const model::Model &model, int chart, const std::string &header) {
@@ -176,7 +196,7 @@ std::string harness_source(const model::Model &model, int chart, const std::stri
       "/* By function (its index in the model): what `set` gave it; \"\" is false/0. */\n"
       "static char h_value[{2}][64];\n\n",
       t, header, model.functions.size() + 1);
-  for (int f : c.functions) function(s, model.functions[static_cast<std::size_t>(f)], f);
+  for (int f : engine_functions(model, chart)) function(s, model.functions[static_cast<std::size_t>(f)], f);
   s += fmt::format("static void h_dump(const {} *m)\n{{\n    int p;\n    printf(\"av\");\n", t);
   s += fmt::format("    for (p = 0; p < {0}_PLACE_COUNT; ++p) {{\n        printf(\" %u\", {0}_activation(m, p));\n    }}\n"
                    "    printf(\"\\n\");\n",
