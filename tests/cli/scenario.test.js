@@ -233,3 +233,23 @@ test('docs/examples/gfec-lint.yml: its test step runs the samples\' tests and wr
   assert.ok(names.includes('samples/line_follower.test'), names.join(' '));
   assert.equal(suites.attrs.failures, '0');
 });
+
+test('the engine and its harness compile warning-free with gcc and clang (-Werror), $CC honoured', (t) => {
+  const { spawnSync } = require('node:child_process');
+  const files = ['line_follower.test', 'cleanup.test', 'work_cell.test'].map((f) => path.join(SAMPLES, f));
+  let ran = 0;
+  for (const cc of ['gcc', 'clang']) {
+    if (spawnSync(cc, ['--version']).status !== 0) continue;
+    const r = gfec(['test', '--engine-only', ...files], SAMPLES,
+      { ...process.env, CC: `${cc} -Wall -Wextra -Wpedantic -Werror` });
+    assert.equal(r.code, 0, `${cc}: ${r.stderr}`);
+    assert.equal(r.stdout, '6 passed, 0 failed\n');
+    ++ran;
+  }
+  if (ran === 0) t.skip('neither gcc nor clang');
+  // A compiler that does not exist: each test fails and says why.
+  const r = gfec(['test', path.join(SAMPLES, 'line_follower.test')], SAMPLES, { ...process.env, CC: 'no-such-cc' });
+  assert.equal(r.code, 1);
+  assert.match(r.stderr, /error: cannot build the C engine for 'LineFollower' \[test-engine\]/);
+  assert.match(r.stderr, /note: the C compiler 'no-such-cc' exited with status 127/);
+});
