@@ -320,10 +320,10 @@ void validate_tests(Context &cx, scenario::Suite &out) {
       switch (in.kind) {
       case ast::TestStep::Kind::Tick:
         step.kind = scenario::Step::Kind::Tick;
-        if (in.count < 1) {
+        if (in.count < 1 || in.count > kMaxTicksPerStep) {
           cx.diag.error(in.value ? in.value->range : in.range, "test",
-                        in.count == 0 ? "'tick 0' runs no tick: the count must be at least 1"
-                                      : "the number of ticks is too large");
+                        in.count == 0 ? std::string("'tick 0' runs no tick: the count must be at least 1")
+                                      : fmt::format("'tick N' runs at most {} ticks at a time", kMaxTicksPerStep));
           ok = false;
         }
         step.count = static_cast<unsigned long>(std::max(in.count, 1LL));

@@ -8,6 +8,10 @@
 
 namespace gfec::validation {
 
+/// The most ticks one `tick N;` may run: a typo such as `tick 1000000000;` is an error rather
+/// than a run that seems to hang.
+constexpr long long kMaxTicksPerStep = 1000000;
+
 /// Checks the tests of the main file and appends those without errors to `out`.
 void validate_tests(Context &cx, scenario::Suite &out);
 

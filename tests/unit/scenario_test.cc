@@ -185,6 +185,13 @@ TEST_CASE("tick N needs N >= 1, an expectation must be bool and calls no code", 
         "t.test:2:25: error: 'tick 0' runs no tick: the count must be at least 1 [test]\n"
         " test \"t\" of Line { tick 0; }\n"
         "                         ^\n");
+  CHECK(Checked("test \"t\" of Line { tick 1000001; }\n").test_errors() ==
+        "t.test:2:25: error: 'tick N' runs at most 1000000 ticks at a time [test]\n"
+        " test \"t\" of Line { tick 1000001; }\n"
+        "                         ^~~~~~~\n");
+  // Beyond any integer: the lexer's error, once.
+  CHECK(Checked("test \"t\" of Line { tick 99999999999999999999999; }\n").test_errors().rfind(
+            "t.test:2:25: error: integer literal is too large [syntax]\n", 0) == 0);
   CHECK(Checked("test \"t\" of Line { expect calls Go; }\n").test_errors() ==
         "t.test:2:27: error: an expectation must be bool, not 'int' [type-mismatch]\n"
         " test \"t\" of Line { expect calls Go; }\n"
