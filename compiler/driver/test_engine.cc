@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <set>
 #include <sstream>
 #include <sys/wait.h>
 
@@ -206,9 +207,18 @@ std::string harness_source(const model::Model &model, int chart, const std::stri
     auto [f, a] = printf_of(c.vars[i].type, "m->" + c.vars[i].name);
     s += fmt::format("    printf(\"var {} {}\\n\", {});\n", i, f, a);
   }
-  for (std::size_t p = 0; p < c.places.size(); ++p)
-    if (c.places[p].timed)
-      s += fmt::format("    printf(\"timer {} %lu\\n\", (unsigned long)m->timer_{});\n", p, c.places[p].name);
+  // The engine's field names, as the C back end gives them (backends/c/c_context.cc): the
+  // variables keep their names, then its own fields, then a timer per timed place, each made
+  // unique by appending '_'.
+  std::set<std::string> fields;
+  for (const auto &v : c.vars) fields.insert(v.name);
+  for (const char *own : {"av", "state", "status", "started", "current", "active", "candidates"}) fields.insert(own);
+  for (std::size_t p = 0; p < c.places.size(); ++p) {
+    if (!c.places[p].timed) continue;
+    std::string field = "timer_" + c.places[p].name;
+    while (!fields.insert(field).second) field += '_';
+    s += fmt::format("    printf(\"timer {} %lu\\n\", (unsigned long)m->{});\n", p, field);
+  }
   s += "    printf(\"end\\n\");\n}\n\n";
   s += fmt::format("int main(void)\n{{\n    static {0} m;\n    char word[16];\n    {0}_init(&m);\n    h_dump(&m);\n"
                    "    while (scanf(\"%15s\", word) == 1) {{\n"

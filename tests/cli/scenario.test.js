@@ -253,3 +253,26 @@ test('the engine and its harness compile warning-free with gcc and clang (-Werro
   assert.match(r.stderr, /error: cannot build the C engine for 'LineFollower' \[test-engine\]/);
   assert.match(r.stderr, /note: the C compiler 'no-such-cc' exited with status 127/);
 });
+
+test('a variable named like a timer field: the harness reads the field the engine renamed', () => {
+  // A is initial: active from _init, so its timer grows from the first tick (1 tick after it).
+  const dir = scratch({ 'coll.test': `interface I { bool Go(); void Beep(); }
+sfc Coll {
+  period 10ms;
+  var int timer_A = 7;
+  initial place A { Beep(); timer_A += 1; }
+  place B;
+  A -> B when Go() && elapsed(A) >= 30ms;
+}
+test "timer_A is a variable" of Coll {
+  set Go = true;
+  tick 2;
+  expect active(A) && elapsed(A) == 20ms && timer_A == 9;
+  tick;
+  expect active(B) && !called Beep && timer_A == 9;
+}
+` });
+  const r = gfec(['test', 'coll.test'], dir);
+  assert.equal(r.code, 0, r.stderr);
+  assert.equal(r.stdout, '1 passed, 0 failed\n');
+});
