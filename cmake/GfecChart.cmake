@@ -124,4 +124,51 @@ function(gfec_add_chart target chart)
   set_property(TARGET ${target} PROPERTY GFEC_OUTPUTS ${outputs})
 endfunction()
 
+# gfec_add_chart_tests(): register scenario test files with CTest (docs/testing-charts.md).
+#
+#   gfec_add_chart_tests(FILES <file.test>...
+#                        [PREFIX <name>]                 # test names: <prefix><file name>; default gfec_test.
+#                        [INCLUDE_DIRECTORIES <dir>...]  # -I: where imports are looked for
+#                        [OPTIONS <gfec test flag>...])  # e.g. --reference-only, -j 4
+#
+# Each file becomes one CTest test running `gfec test <file>`: it passes when every test in the
+# file passes on the reference interpreter and on the generated C engine (built with the C
+# compiler in $CC, else `cc`). Call enable_testing() (or include(CTest)) first.
+function(gfec_add_chart_tests)
+  cmake_parse_arguments(PARSE_ARGV 0 ARG "" "PREFIX" "FILES;INCLUDE_DIRECTORIES;OPTIONS")
+  if(ARG_UNPARSED_ARGUMENTS)
+    message(FATAL_ERROR "gfec_add_chart_tests: unknown arguments: ${ARG_UNPARSED_ARGUMENTS}")
+  endif()
+  if(NOT ARG_FILES)
+    message(FATAL_ERROR "gfec_add_chart_tests: no FILES given")
+  endif()
+  if(TARGET gfec::gfec)
+    set(compiler gfec::gfec)
+    get_target_property(aliased gfec::gfec ALIASED_TARGET)
+    if(aliased)
+      set(compiler ${aliased})
+    endif()
+  elseif(TARGET gfec)
+    set(compiler gfec)
+  else()
+    message(FATAL_ERROR "gfec_add_chart_tests: no gfec compiler; call find_package(gfec) first")
+  endif()
+  set(prefix "gfec_test.")
+  if(DEFINED ARG_PREFIX)
+    set(prefix "${ARG_PREFIX}")
+  endif()
+  set(flags "")
+  foreach(dir IN LISTS ARG_INCLUDE_DIRECTORIES)
+    get_filename_component(dir "${dir}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_SOURCE_DIR}")
+    list(APPEND flags -I "${dir}")
+  endforeach()
+  foreach(file IN LISTS ARG_FILES)
+    get_filename_component(path "${file}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_SOURCE_DIR}")
+    get_filename_component(name "${file}" NAME_WE)
+    add_test(NAME "${prefix}${name}"
+             COMMAND ${compiler} test ${flags} ${ARG_OPTIONS} "${path}"
+             WORKING_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}")
+  endforeach()
+endfunction()
+
 cmake_policy(POP)

@@ -5,6 +5,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdlib>
 #include <optional>
 
 namespace gfec {
@@ -167,6 +169,12 @@ private:
   std::vector<ExprPtr> arguments();
   std::vector<ExprPtr> active_arguments();
   ExprPtr path(Name first);
+  Test test_decl();
+  void test_step(Test &test);
+  ExprPtr test_operand();
+  /// The contextual keywords of a test block (`tick set expect called calls status`): plain
+  /// identifiers everywhere else.
+  bool at_word(std::string_view word) const { return at(Tok::Ident) && tok_.text == word; }
 
   // ------------------------------------------------------------ statements and expressions
   Stmt statement();
@@ -213,9 +221,10 @@ private:
   int depth_ = 0;
   int height_ = 0;  ///< height of the expression the last binary/unary/primary returned
   bool eof_reported_ = false;
+  bool in_test_ = false;  ///< inside a test block: the test-only operands parse
 };
 
-//G file: { import | interface | sfc | fsm | toolbox | plan | const_decl | VERBATIM }
+//G file: { import | interface | sfc | fsm | toolbox | plan | const_decl | test | VERBATIM }
 std::unique_ptr<File> Parser::parse() {
   auto file = std::make_unique<File>();
   file->id = file_;
@@ -242,6 +251,7 @@ void Parser::top_level(File &file) {
   case Tok::KwToolbox: file.toolboxes.push_back(toolbox()); return;
   case Tok::KwPlan: file.plans.push_back(plan()); return;
   case Tok::KwConst: file.consts.push_back(value_decl()); return;
+  case Tok::KwTest: file.tests.push_back(test_decl()); return;
   case Tok::Verbatim: {
     Token t = take();
     file.verbatims.push_back({t.value, t.range});
@@ -251,7 +261,7 @@ void Parser::top_level(File &file) {
     diag_.error(tok_.range, "syntax", "'var' declares chart state and belongs inside an sfc or fsm");
     throw SyntaxError{};
   default:
-    fail("expected a declaration (import, interface, sfc, fsm, toolbox, plan or const)");
+    fail("expected a declaration (import, interface, sfc, fsm, toolbox, plan, const or test)");
   }
 }
 
@@ -765,6 +775,8 @@ ExprPtr Parser::unary() {
 ExprPtr Parser::primary() {
   std::uint32_t begin = here();
   height_ = 1;  // a leaf; calls and brackets add theirs below
+  if (in_test_)
+    if (ExprPtr e = test_operand()) return e;
   switch (tok_.kind) {
   case Tok::Int:
   case Tok::Float: {
@@ -834,6 +846,107 @@ ExprPtr Parser::primary() {
   }
   default: fail("expected an expression");
   }
+}
+
+// ------------------------------------------------------------ scenario tests
+
+//G test: 'test' STRING 'of' IDENT '{' { test_step } '}'
+Test Parser::test_decl() {
+  std::uint32_t begin = here();
+  advance();
+  Test t;
+  Token name = expect(Tok::String, "(the test's name) after 'test'");
+  t.name = name.value;
+  t.name_range = name.range;
+  if (!at_word("of")) fail("expected 'of' and the chart after the test's name");
+  advance();
+  t.chart = this->name("(the chart to test) after 'of'");
+  in_test_ = true;
+  try {
+    braced("to begin the test's steps", [&] { test_step(t); });
+  } catch (const SyntaxError &) {
+    in_test_ = false;
+    throw;
+  }
+  in_test_ = false;
+  t.range = from(begin);
+  return t;
+}
+
+//G test_step: 'tick' [ INT ] ';' | 'set' IDENT '=' expr ';' | 'expect' expr ';'
+void Parser::test_step(Test &test) {
+  std::uint32_t begin = here();
+  TestStep step;
+  if (at_word("tick")) {
+    advance();
+    step.kind = TestStep::Kind::Tick;
+    if (at(Tok::Int)) {
+      Token n = take();
+      // Too large for a count is as wrong as 0; the validator says so at the number.
+      errno = 0;
+      char *end = nullptr;
+      long long v = std::strtoll(std::string(n.text).c_str(), &end, 0);
+      step.count = errno == ERANGE || *end ? -1 : v;
+      step.value = make(Expr::Kind::Int, n.range);
+      step.value->text = std::string(n.text);
+      step.value->spelling = step.value->text;
+    } else if (!at(Tok::Semi)) {
+      fail("expected a number of ticks or ';' after 'tick'");
+    }
+  } else if (at_word("set")) {
+    advance();
+    step.kind = TestStep::Kind::Set;
+    step.function = name("(a sensing function) after 'set'");
+    expect(Tok::Assign, "after the function's name");
+    step.value = expr();
+  } else if (at_word("expect")) {
+    advance();
+    step.kind = TestStep::Kind::Expect;
+    step.value = expr();
+  } else {
+    fail("expected a test step ('tick', 'set' or 'expect')");
+  }
+  expect(Tok::Semi, "after the step");
+  step.range = from(begin);
+  test.steps.push_back(std::move(step));
+}
+
+//G test_operand: 'called' IDENT [ arguments ] | 'calls' IDENT | 'state' '(' IDENT ')' | 'status'
+// (inside a test block only). They parse as calls of the keyword, which no chart can declare:
+// `called F(1)` is Call "called" with args [Call F(1)], `status` is Name "status".
+ExprPtr Parser::test_operand() {
+  std::uint32_t begin = here();
+  if (at_word("called") || at_word("calls")) {
+    Token word = take();
+    auto e = make(Expr::Kind::Call, word.range);
+    e->name = {std::string(word.text), word.range};
+    Name f = name(word.text == "called" ? "(the function) after 'called'" : "(the function) after 'calls'");
+    auto target = make(Expr::Kind::Name, f.range);
+    if (word.text == "called" && at(Tok::LParen)) {
+      target->kind = Expr::Kind::Call;
+      target->args = arguments();
+      target->range = from(f.range.begin);
+    }
+    target->name = std::move(f);
+    e->args.push_back(std::move(target));
+    e->range = from(begin);
+    return e;
+  }
+  if (at(Tok::KwState) && peek().kind == Tok::LParen) {
+    Token word = take();
+    auto e = make(Expr::Kind::Call, word.range);
+    e->name = {"state", word.range};
+    e->args = arguments();
+    e->range = from(begin);
+    return e;
+  }
+  if (at_word("status")) {
+    Token word = take();
+    auto e = make(Expr::Kind::Name, word.range);
+    e->name = {"status", word.range};
+    return e;
+  }
+  return nullptr;
 }
 
 } // namespace

@@ -8,7 +8,15 @@
 
 namespace gfec {
 
+namespace scenario {
+struct Suite;
+}
+
 /// Checks `program` and builds its model. The model is complete only when no error was reported.
 model::Model validate(const ast::Program &program, const SourceManager &sources, Diagnostics &diag);
+/// The same, keeping the checked `test` blocks of the main file in `tests` (gfec test). Both
+/// check them; this one keeps them. A test's `elapsed(P)` marks P timed in the model.
+model::Model validate(const ast::Program &program, const SourceManager &sources, Diagnostics &diag,
+                      scenario::Suite &tests);
 
 } // namespace gfec

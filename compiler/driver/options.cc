@@ -116,6 +116,8 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
              "\nDiagnostics, as gcc 12 prints them: -fdiagnostics-color=auto|always|never (auto: colour on a\n"
              "terminal unless NO_COLOR is set; -fno-diagnostics-color = never), -fno-diagnostics-show-line-numbers,\n"
              "-fdiagnostics-parseable-fixits (fix-it:\"FILE\":{L:C-L:C}:\"TEXT\" lines for editors).\n"
+             "\nSubcommands: 'gfec run CHART' runs a chart in the reference interpreter; 'gfec test FILE...'\n"
+             "runs scenario tests (see 'gfec run --help', 'gfec test --help').\n"
              "\nExit status: 0 success, 1 errors in the input, 2 usage or I/O error.\n"
              "Documentation: docs/cli.md");
   std::vector<std::string> warning_flags;

@@ -2,6 +2,8 @@
 // chart and plan against them, then what needs every plan lowered.
 #include "validate.h"
 
+#include "scenario/scenario.h"
+#include "scenario/validate_tests.h"
 #include "validate/families.h"
 
 namespace gfec {
@@ -24,6 +26,12 @@ void collect_verbatims(validation::Context &cx) {
 } // namespace
 
 model::Model validate(const ast::Program &program, const SourceManager &sources, Diagnostics &diag) {
+  scenario::Suite tests;
+  return validate(program, sources, diag, tests);
+}
+
+model::Model validate(const ast::Program &program, const SourceManager &sources, Diagnostics &diag,
+                      scenario::Suite &tests) {
   model::Model model;
   model.sources = &sources;
   if (!program.files.empty() && program.files.front()) model.main_file = program.files.front()->id;
@@ -36,6 +44,7 @@ model::Model validate(const ast::Program &program, const SourceManager &sources,
   for (std::size_t i = 0; i < model.charts.size(); ++i) validation::validate_chart(cx, static_cast<int>(i));
   for (std::size_t i = 0; i < model.plans.size(); ++i) validation::validate_plan(cx, static_cast<int>(i));
   validation::check_plan_recursion(cx);
+  validation::validate_tests(cx, tests);
   return model;
 }
 

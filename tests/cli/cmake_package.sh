@@ -74,6 +74,10 @@ for generator in "${generators[@]}"; do
     grep -q -e "$project" -e "$out" -e "$work" "$out/$f" && fail "$f holds an absolute path: $(grep -e "$work" "$out/$f" | head -3)"
   done
   grep -q '#line [0-9]* "\.\./project-[^"]*/charts/count.plan"' "$out/count.cpp" || fail "count.cpp's #line is not relative"
+  # gfec_add_chart_tests() registered charts/blink.test as one CTest test, and it passes.
+  listed=$(ctest --test-dir "$out" -N)
+  grep -q "gfec_test.blink" <<<"$listed" || fail "gfec_add_chart_tests registered no test: $listed"
+  ctest --test-dir "$out" --output-on-failure >/dev/null || fail "the chart's scenario tests failed"
 
   # Nothing changed: nothing is regenerated.
   before=$(stat -c %y "$out/blink.c")

@@ -151,4 +151,23 @@ test('sub-charts: runs, the built-ins that read them and paths', () => {
   for (const f of ['succeeded', 'failed', 'active']) assert.equal(scopeOf(tokens, f, 4), 'support.function.builtin.gfec');
   assert.equal(scopeOf(tokens, '.', 4), 'punctuation.accessor.dot.gfec');
   assert.equal(scopeOf(tokens, 'Hand', 4), 'variable.other.gfec');
+test('a test block: its steps and operands are keywords there, plain names elsewhere', () => {
+  const text = fs.readFileSync(path.join(SAMPLES, 'cleanup.test'), 'utf8');
+  const tokens = tokenize(text);
+  const line = text.split('\n').findIndex((l) => l.startsWith('test ')) + 1;
+  assert.equal(scopeOf(tokens, 'test', line), 'storage.type.test.gfec');
+  assert.equal(scopeOf(tokens, 'of', line), 'keyword.other.of.gfec');
+  assert.equal(scopeOf(tokens, 'CleanUp', line), 'entity.name.type.gfec');
+  assert.equal(scopeOf(tokens, 'tick'), 'keyword.control.test.gfec');
+  assert.equal(scopeOf(tokens, 'expect'), 'keyword.control.test.gfec');
+  assert.equal(scopeOf(tokens, 'set'), 'keyword.control.test.gfec');
+  assert.equal(scopeOf(tokens, 'called'), 'keyword.operator.test.gfec');
+  assert.equal(scopeOf(tokens, 'status'), 'keyword.operator.test.gfec');
+  assert.equal(scopeOf(tokens, '=='), 'keyword.operator.comparison.gfec');
+  // Outside a test block the same words are names: a function may be called `tick`.
+  const outside = tokenize('interface I { void tick(); }\nsfc C { initial place A { tick(); } }\n');
+  assert.ok(!scopeOf(outside, 'tick').startsWith('keyword'), 'tick outside a test');
+  // The block ends at its brace: what follows is ordinary code again.
+  const after = tokenize('test "t" of C { tick; }\nsfc D { initial place expect; }\n');
+  assert.equal(scopeOf(after, 'expect', 2), 'entity.name.section.place.gfec');
 });

@@ -167,7 +167,7 @@ TEST_CASE("parser: declarations in the wrong place") {
         " var int x = 1;\n"
         " ^~~\n");
   CHECK(parse_errors("place A;") ==
-        "t.sfc:1:1: error: expected a declaration (import, interface, sfc, fsm, toolbox, plan or const), found 'place' [syntax]\n"
+        "t.sfc:1:1: error: expected a declaration (import, interface, sfc, fsm, toolbox, plan, const or test), found 'place' [syntax]\n"
         " place A;\n"
         " ^~~~~\n");
 }

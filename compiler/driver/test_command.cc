@@ -1,0 +1,401 @@
+#include "test_command.h"
+
+#include "diagnostic_printer.h"
+#include "diagnostic_report.h"
+#include "driver.h"
+#include "loader.h"
+#include "output_files.h"
+#include "scenario/reference_run.h"
+#include "scenario/scenario.h"
+#include "scenario/snapshot.h"
+#include "test_engine.h"
+#include "validate.h"
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <atomic>
+#include <chrono>
+#include <memory>
+#include <ostream>
+#include <thread>
+
+namespace gfec {
+
+namespace {
+
+struct TestOptions {
+  std::vector<std::string> files;
+  std::vector<std::string> include_dirs;
+  std::vector<std::string> f_flags;
+  std::string junit;
+  std::string filter;
+  bool engine_only = false;
+  bool reference_only = false;
+  bool verbose = false;
+  unsigned jobs = 1;
+  DiagnosticsFormat format = DiagnosticsFormat::Text;
+};
+
+/// One test file through the front end.
+struct TestFile {
+  std::string path;
+  SourceManager sources;
+  Diagnostics diag{WarningOptions{}, static_cast<std::size_t>(-1)};
+  LoadResult loaded;
+  model::Model model;
+  scenario::Suite suite;
+  bool unreadable = false;
+  std::size_t written_tests = 0;  ///< `test` blocks in the file, checked or not
+};
+
+/// What one test gave.
+struct Outcome {
+  TestFile *file = nullptr;
+  const scenario::Test *test = nullptr;
+  Diagnostics diag{WarningOptions{}, static_cast<std::size_t>(-1)};
+  double seconds = 0;
+  bool passed() const { return !diag.has_errors(); }
+};
+
+/// The text a range covers, on one line: an expectation as the user wrote it.
+std::string text_of(const SourceManager &sources, SourceRange r) {
+  const std::string &text = sources.file(r.file).text();
+  std::string out;
+  bool space = false;
+  for (std::uint32_t i = r.begin; i < r.end && i < text.size(); ++i) {
+    char c = text[i];
+    if (c == '\n' || c == '\r' || c == '\t' || c == ' ') {
+      space = !out.empty();
+      continue;
+    }
+    if (space) out += ' ';
+    space = false;
+    out += c;
+  }
+  return out;
+}
+
+/// Whether an expectation asks about calls (its failure then lists the tick's calls).
+bool reads_calls(const scenario::Expect &e) {
+  if (e.kind == scenario::Expect::Kind::Called || e.kind == scenario::Expect::Kind::Calls) return true;
+  for (const auto &a : e.args)
+    if (reads_calls(a)) return true;
+  return false;
+}
+
+/// The range of the `tick` step that ran tick `tick` (counted from 1).
+SourceRange tick_step(const scenario::Test &test, std::uint64_t tick) {
+  std::uint64_t seen = 0;
+  for (const scenario::Step &s : test.steps) {
+    if (s.kind != scenario::Step::Kind::Tick) continue;
+    seen += s.count;
+    if (seen >= tick) return s.range;
+  }
+  return test.range;
+}
+
+class TestRunner {
+public:
+  TestRunner(const TestOptions &o, EngineBuilds &builds) : o_(o), builds_(builds) {}
+
+  void run(Outcome &out, int id) {
+    auto start = std::chrono::steady_clock::now();
+    const scenario::Test &test = *out.test;
+    TestFile &file = *out.file;
+    const model::Model &m = file.model;
+    std::optional<scenario::Run> ref, eng;
+    if (!o_.engine_only) ref = scenario::run_reference(m, test);
+    if (!o_.reference_only) {
+      EngineBuilds::Build b = builds_.get(m, test.chart, chart_file(file, test.chart));
+      if (b.program.empty()) {
+        out.diag.error(test.range, "test-engine", fmt::format("cannot build the C engine for '{}'",
+                                                              m.charts[static_cast<std::size_t>(test.chart)].name))
+            .note(b.error);
+      } else {
+        eng = builds_.run(b, m, test, id);
+      }
+    }
+    stopped(out, ref, "the reference interpreter");
+    stopped(out, eng, "the C engine");
+    if (ref && eng) disagreement(out, *ref, *eng);
+    expectations(out, ref ? &*ref : nullptr, eng ? &*eng : nullptr);
+    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+
+private:
+  static std::string chart_file(const TestFile &file, int chart) {
+    SourceRange r = file.model.charts[static_cast<std::size_t>(chart)].range;
+    return file.sources.file(r.file).path();
+  }
+
+  void stopped(Outcome &out, const std::optional<scenario::Run> &run, const char *who) {
+    if (!run || run->error.empty()) return;
+    SourceRange at = run->error_located ? run->error_range : out.test->range;
+    out.diag.error(at, "test-run", fmt::format("{} stopped: {}", who, run->error))
+        .note(fmt::format("in test \"{}\"", out.test->name));
+  }
+
+  /// The first tick at which the two runs differ, and the first difference in it.
+  void disagreement(Outcome &out, const scenario::Run &ref, const scenario::Run &eng) {
+    const model::Model &m = out.file->model;
+    std::size_t n = std::min(ref.ticks.size(), eng.ticks.size());
+    for (std::size_t k = 0; k < n; ++k) {
+      std::string diff = scenario::compare(ref.ticks[k], eng.ticks[k], m, out.test->chart, "reference", "engine");
+      if (diff.empty()) continue;
+      SourceRange at = k == 0 ? out.test->range : tick_step(*out.test, k);
+      std::string what = k == 0 ? "after _init" : fmt::format("at tick {}", k);
+      bool call = diff.rfind("call ", 0) == 0;
+      out.diag.error(at, "test-disagreement",
+                     fmt::format("the reference interpreter and the C engine disagree {}: {}", what,
+                                 call ? "first differing " + diff : diff))
+          .note("a verbatim %{ %} block runs only in the C engine; otherwise this is a bug in gfec")
+          .note(fmt::format("in test \"{}\"", out.test->name));
+      return;
+    }
+  }
+
+  void expectations(Outcome &out, const scenario::Run *ref, const scenario::Run *eng) {
+    const scenario::Test &test = *out.test;
+    const TestFile &file = *out.file;
+    std::uint64_t tick = 0;
+    for (const scenario::Step &s : test.steps) {
+      if (s.kind == scenario::Step::Kind::Tick) tick += s.count;
+      if (s.kind != scenario::Step::Kind::Expect) continue;
+      struct Side {
+        const char *who;
+        std::optional<scenario::Verdict> verdict;
+      } sides[2] = {{"the reference interpreter", std::nullopt}, {"the C engine", std::nullopt}};
+      const scenario::Run *runs[2] = {ref, eng};
+      for (int i = 0; i < 2; ++i)
+        if (runs[i] && tick < runs[i]->ticks.size())
+          sides[i].verdict = scenario::evaluate(s.expect, runs[i]->ticks[tick], file.model, test.chart);
+      auto failed = [](const Side &x) { return x.verdict && (!x.verdict->holds || !x.verdict->error.empty()); };
+      if (!failed(sides[0]) && !failed(sides[1])) continue;
+      const Side &bad = failed(sides[0]) ? sides[0] : sides[1];
+      const scenario::Run &bad_run = *runs[&bad == &sides[0] ? 0 : 1];
+      auto &d = out.diag.error(s.range, "expectation",
+                               fmt::format("expectation failed: {}", text_of(file.sources, s.expect.range)));
+      if (!bad.verdict->error.empty()) d.note(fmt::format("it has no defined value: {}", bad.verdict->error));
+      for (const scenario::Operand &op : bad.verdict->operands)
+        d.note(fmt::format("'{}' is {}", text_of(file.sources, op.range), op.value));
+      if (reads_calls(s.expect)) {
+        std::string calls;
+        for (const scenario::Call &c : bad_run.ticks[tick].calls) calls += (calls.empty() ? "" : ", ") + c.text;
+        d.note(calls.empty() ? std::string("no function was called in the last tick")
+                             : fmt::format("the calls of the last tick: {}", calls));
+      }
+      if (sides[0].verdict && sides[1].verdict && failed(sides[0]) != failed(sides[1]))
+        d.note(fmt::format("it fails on {} only; it holds on {}", bad.who, (&bad == &sides[0] ? sides[1] : sides[0]).who));
+      d.note(fmt::format("in test \"{}\", after tick {}", test.name, tick));
+    }
+  }
+
+  const TestOptions &o_;
+  EngineBuilds &builds_;
+};
+
+void load(TestFile &f, const TestOptions &o) {
+  RealFileSystem fs;
+  f.loaded = load_program(f.path, {o.include_dirs}, fs, f.sources, f.diag);
+  if (f.loaded.main_unreadable) {
+    f.unreadable = true;
+    return;
+  }
+  if (!f.loaded.program.files.empty() && f.loaded.program.files.front())
+    f.written_tests = f.loaded.program.files.front()->tests.size();
+  if (f.diag.has_errors()) return;
+  f.model = validate(f.loaded.program, f.sources, f.diag, f.suite);
+}
+
+std::string xml(const std::string &s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+    case '&': out += "&amp;"; break;
+    case '<': out += "&lt;"; break;
+    case '>': out += "&gt;"; break;
+    case '"': out += "&quot;"; break;
+    case '\'': out += "&apos;"; break;
+    default:
+      if (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t') out += ' ';
+      else out += c;
+    }
+  }
+  return out;
+}
+
+/// JUnit XML: a testsuite per file, a testcase per test; a file that does not compile is one
+/// failed testcase named after the file.
+std::string junit(const std::vector<std::unique_ptr<TestFile>> &files, const std::vector<std::unique_ptr<Outcome>> &outcomes) {
+  std::size_t total = 0, failures = 0;
+  std::string suites;
+  for (const auto &f : files) {
+    std::string cases;
+    std::size_t n = 0, failed = 0;
+    double time = 0;
+    auto failure = [&](const std::string &name, const Diagnostics &diag, const SourceManager &sources, double seconds) {
+      std::string first, all;
+      for (const auto &d : diag.all()) {
+        if (d.severity != Severity::Error) continue;
+        std::string text = render_text(d, sources);
+        if (first.empty()) first = text.substr(0, text.find('\n'));
+        all += text;
+      }
+      ++n;
+      time += seconds;
+      cases += fmt::format("    <testcase name=\"{}\" classname=\"{}\" time=\"{:.3f}\"", xml(name), xml(f->path), seconds);
+      if (first.empty()) {
+        cases += "/>\n";
+        return;
+      }
+      ++failed;
+      cases += fmt::format(">\n      <failure message=\"{}\" type=\"expectation\">{}</failure>\n    </testcase>\n",
+                           xml(first), xml(all));
+    };
+    if (f->unreadable || f->diag.has_errors()) {
+      failure(f->path, f->diag, f->sources, 0);
+      if (f->unreadable && failed == 0) {
+        ++failed;
+        cases = fmt::format("    <testcase name=\"{0}\" classname=\"{0}\" time=\"0.000\">\n      <failure "
+                            "message=\"cannot read '{0}'\" type=\"io\"/>\n    </testcase>\n",
+                            xml(f->path));
+      }
+    }
+    for (const auto &o : outcomes)
+      if (o->file == f.get()) failure(o->test->name, o->diag, f->sources, o->seconds);
+    suites += fmt::format("  <testsuite name=\"{}\" tests=\"{}\" failures=\"{}\" errors=\"0\" time=\"{:.3f}\">\n{}  </testsuite>\n",
+                          xml(f->path), n, failed, time, cases);
+    total += n;
+    failures += failed;
+  }
+  return fmt::format("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"gfec test\" tests=\"{}\" "
+                     "failures=\"{}\" errors=\"0\">\n{}</testsuites>\n",
+                     total, failures, suites);
+}
+
+int test_with(const TestOptions &o, std::ostream &out, std::ostream &err) {
+  auto report = make_report(o.format, err);
+  std::vector<std::unique_ptr<TestFile>> files;
+  std::vector<std::unique_ptr<Outcome>> outcomes;
+  bool io_error = false;
+  std::size_t broken = 0;  ///< tests in files that do not compile: each counts as failed
+  for (const auto &path : o.files) {
+    auto f = std::make_unique<TestFile>();
+    f->path = path;
+    load(*f, o);
+    if (f->unreadable) {
+      io_error = true;
+    } else if (f->diag.has_errors()) {
+      broken += std::max<std::size_t>(f->written_tests, 1);
+    } else {
+      for (const auto &t : f->suite.tests) {
+        if (!o.filter.empty() && t.name.find(o.filter) == std::string::npos) continue;
+        auto oc = std::make_unique<Outcome>();
+        oc->file = f.get();
+        oc->test = &t;
+        outcomes.push_back(std::move(oc));
+      }
+    }
+    files.push_back(std::move(f));
+  }
+
+  EngineBuilds builds;
+  if (!o.reference_only && !builds.ok()) {
+    report->tool_error("", "cannot create a temporary folder for the C engines", false);
+    report->finish(kExitUsageOrIo);
+    return kExitUsageOrIo;
+  }
+  TestRunner runner(o, builds);
+  std::atomic<std::size_t> next{0};
+  auto worker = [&] {
+    for (std::size_t i; (i = next++) < outcomes.size();) runner.run(*outcomes[i], static_cast<int>(i));
+  };
+  unsigned jobs = std::max(1u, std::min<unsigned>(o.jobs, static_cast<unsigned>(outcomes.size())));
+  std::vector<std::thread> threads;
+  for (unsigned j = 1; j < jobs; ++j) threads.emplace_back(worker);
+  worker();
+  for (auto &t : threads) t.join();
+
+  std::size_t passed = 0, failed = broken;
+  for (const auto &f : files) {
+    if (f->unreadable) {
+      report->tool_error(f->path, fmt::format("cannot read '{}'", f->path), false);
+      continue;
+    }
+    report->add(f->path, f->diag, f->sources);
+    for (const auto &oc : outcomes) {
+      if (oc->file != f.get()) continue;
+      report->add(f->path, oc->diag, f->sources);
+      if (oc->passed()) ++passed;
+      else ++failed;
+      if (o.verbose) out << fmt::format("{} {}: {}\n", oc->passed() ? "PASS" : "FAIL", f->path, oc->test->name);
+    }
+  }
+  if (!o.junit.empty()) {
+    std::string failure = write_atomically({{o.junit, junit(files, outcomes)}});
+    if (!failure.empty()) {
+      report->tool_error(o.junit, failure, false);
+      io_error = true;
+    }
+  }
+  int code = io_error ? kExitUsageOrIo : failed > 0 ? kExitInputError : kExitOk;
+  std::string failure = report->finish(code);
+  if (!failure.empty()) {
+    err << "gfec: error: " << failure << "\n";
+    code = kExitUsageOrIo;
+  }
+  err << std::flush;
+  out << fmt::format("{} passed, {} failed\n", passed, failed) << std::flush;
+  return code;
+}
+
+} // namespace
+
+int test_command(int argc, const char *const *argv, std::ostream &out, std::ostream &err) {
+  TestOptions o;
+  CLI::App app{"gfec test - runs the scenario tests of test files on the reference interpreter and on the "
+               "generated C engine",
+               "gfec test"};
+  app.footer("Each test runs on both; it passes when every expectation holds on both and both saw the same\n"
+             "calls. The last line is 'N passed, M failed'. The C engine is built with $CC (else cc).\n"
+             "Exit status: 0 all passed, 1 a test failed or a file has errors, 2 usage or I/O error.\n"
+             "Documentation: docs/testing-charts.md");
+  app.add_option("files", o.files, "Test files")->required();
+  app.add_option("-I", o.include_dirs, "Add DIR to the folders searched for imports")
+      ->type_name("DIR")
+      ->allow_extra_args(false);
+  app.add_option("--junit", o.junit, "Also write the results as JUnit XML to FILE")->type_name("FILE");
+  app.add_option("--filter", o.filter, "Run only the tests whose name contains TEXT")->type_name("TEXT");
+  app.add_flag("--engine-only", o.engine_only, "Run the generated C engine only");
+  app.add_flag("--reference-only", o.reference_only, "Run the reference interpreter only (no C compiler needed)");
+  app.add_option("-j,--jobs", o.jobs, "Run N tests at once")->type_name("N")->check(CLI::Range(1u, 256u));
+  app.add_flag("-v,--verbose", o.verbose, "Print PASS or FAIL and the name of every test");
+  app.add_option("-f", o.f_flags, "-fdiagnostics-format=text|json|sarif-stderr|sarif-file")
+      ->type_name("OPTION")
+      ->allow_extra_args(false);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError &e) {
+    int code = app.exit(e, out, err);
+    if (code != 0) err << "Run 'gfec test --help' for the options.\n";
+    return code == 0 ? kExitOk : kExitUsageOrIo;
+  }
+  auto usage = [&](const std::string &message) {
+    err << "gfec: error: " << message << "\nRun 'gfec test --help' for the options.\n";
+    return kExitUsageOrIo;
+  };
+  if (o.engine_only && o.reference_only) return usage("--engine-only and --reference-only exclude each other");
+  for (const auto &f : o.f_flags) {
+    std::string v = f.rfind("diagnostics-format=", 0) == 0 ? f.substr(19) : "";
+    if (v == "text") o.format = DiagnosticsFormat::Text;
+    else if (v == "json") o.format = DiagnosticsFormat::Json;
+    else if (v == "sarif-stderr") o.format = DiagnosticsFormat::SarifStderr;
+    else if (v == "sarif-file") o.format = DiagnosticsFormat::SarifFile;
+    else if (v.empty()) return usage(fmt::format("unknown option '-f{}'", f));
+    else return usage(fmt::format("unknown diagnostics format '{}' (text, json, sarif-stderr, sarif-file)", v));
+  }
+  return test_with(o, out, err);
+}
+
+} // namespace gfec

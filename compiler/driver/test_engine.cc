@@ -1,0 +1,322 @@
+#include "test_engine.h"
+
+#include "backend_registry.h"
+#include "interpreter/value.h"
+#include "scenario/snapshot.h"
+
+#include <fmt/format.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <set>
+#include <sstream>
+#include <sys/wait.h>
+
+namespace gfec {
+
+namespace {
+
+namespace fs = std::filesystem;
+using model::Type;
+
+const char *c_type(Type t) {
+  switch (t) {
+  case Type::Bool: return "bool";
+  case Type::Int: return "int";
+  case Type::Float: return "float";
+  case Type::Double: return "double";
+  default: return "void";
+  }
+}
+
+/// printf format and argument printing `name` of type `t` as interp::format_value does.
+std::pair<std::string, std::string> printf_of(Type t, const std::string &name) {
+  switch (t) {
+  case Type::Bool: return {"%s", fmt::format("{} ? \"true\" : \"false\"", name)};
+  case Type::Int: return {"%d", name};
+  case Type::Float: return {"%.9g", "(double)" + name};
+  default: return {"%.17g", name};
+  }
+}
+
+/// The value a `set` line stored, as the function's type; 0 (false) until set.
+std::string result_of(Type t, int f) {
+  std::string v = fmt::format("h_value[{}]", f);
+  switch (t) {
+  case Type::Bool: return fmt::format("strcmp({}, \"true\") == 0", v);
+  case Type::Int: return fmt::format("(int)strtol({}, NULL, 10)", v);
+  case Type::Float: return fmt::format("strtof({}, NULL)", v);
+  default: return fmt::format("strtod({}, NULL)", v);
+  }
+}
+
+void function(std::string &s, const model::Function &f, int index) {
+  std::string params, format, args;
+  for (std::size_t i = 0; i < f.params.size(); ++i) {
+    params += fmt::format("{}{} a{}", i ? ", " : "", c_type(f.params[i].type), i);
+    auto [fmt_, arg] = printf_of(f.params[i].type, fmt::format("a{}", i));
+    format += (i ? ", " : "") + fmt_;
+    args += ", " + arg;
+  }
+  s += fmt::format("{} {}({})\n{{\n", c_type(f.result), f.name, params.empty() ? "void" : params);
+  s += fmt::format("    printf(\"call {}({})\\n\"{});\n", f.name, format, args);
+  if (f.result != Type::Void) s += fmt::format("    return {};\n", result_of(f.result, index));
+  s += "}\n\n";
+}
+
+std::string quote(const std::string &path) {
+  std::string out = "'";
+  for (char c : path) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+std::string read_file(const fs::path &p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+bool write_file(const fs::path &p, const std::string &text) {
+  std::ofstream out(p, std::ios::binary);
+  out << text;
+  return static_cast<bool>(out);
+}
+
+/// The first lines of a compiler's or program's output, for a message.
+std::string head(const std::string &text, int lines = 8) {
+  std::string out;
+  std::istringstream in(text);
+  std::string line;
+  for (int i = 0; i < lines && std::getline(in, line); ++i) out += (out.empty() ? "" : "\n") + line;
+  return out;
+}
+
+std::string exit_status(int status) {
+  if (status == -1) return "could not be started";
+  if (WIFSIGNALED(status)) return fmt::format("was killed by signal {}", WTERMSIG(status));
+  return fmt::format("exited with status {}", WIFEXITED(status) ? WEXITSTATUS(status) : status);
+}
+
+/// One harness output line `call F(a, b)` as a Call.
+scenario::Call parse_call(const std::string &text, const model::Model &m) {
+  scenario::Call c;
+  c.text = text;
+  std::size_t open = text.find('(');
+  std::string name = text.substr(0, open);
+  for (std::size_t i = 0; i < m.functions.size(); ++i)
+    if (m.functions[i].name == name) c.function = static_cast<int>(i);
+  if (open == std::string::npos || text.size() < open + 2) return c;
+  std::string list = text.substr(open + 1, text.size() - open - 2);
+  std::size_t from = 0;
+  while (!list.empty() && from <= list.size()) {
+    std::size_t comma = list.find(", ", from);
+    c.args.push_back(list.substr(from, comma == std::string::npos ? std::string::npos : comma - from));
+    if (comma == std::string::npos) break;
+    from = comma + 2;
+  }
+  return c;
+}
+
+/// The snapshots in a harness's output.
+std::vector<scenario::Snapshot> parse_output(const std::string &out, const model::Model &m, int chart) {
+  const model::Chart &c = m.charts[static_cast<std::size_t>(chart)];
+  std::vector<scenario::Snapshot> snaps;
+  scenario::Snapshot cur;
+  auto reset = [&] {
+    cur = scenario::Snapshot{};
+    cur.tick = snaps.size();
+    cur.activation.assign(c.places.size(), 0);
+    cur.timers.assign(c.places.size(), 0);
+    for (const auto &v : c.vars) cur.vars.push_back(interp::Value::zero(v.type));
+  };
+  reset();
+  std::istringstream in(out);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream words(line);
+    std::string word;
+    words >> word;
+    if (word == "tick") {
+      reset();
+    } else if (word == "call") {
+      cur.calls.push_back(parse_call(line.substr(5), m));
+    } else if (word == "av") {
+      for (std::size_t p = 0; p < c.places.size(); ++p) words >> cur.activation[p];
+    } else if (word == "state") {
+      words >> cur.state >> cur.status;
+    } else if (word == "var") {
+      std::size_t i = 0;
+      std::string v;
+      words >> i >> v;
+      if (i < c.vars.size()) cur.vars[i] = scenario::parse_value(v, c.vars[i].type);
+    } else if (word == "timer") {
+      std::size_t p = 0;
+      std::uint32_t t = 0;
+      words >> p >> t;
+      if (p < c.places.size()) cur.timers[p] = t;
+    } else if (word == "end") {
+      snaps.push_back(std::move(cur));
+      reset();
+    }
+  }
+  return snaps;
+}
+
+/// The interface functions the engine's header declares: those of the chart and of every chart
+/// its places run (sub-charts), in model order.
+std::vector<int> engine_functions(const model::Model &model, int root) {
+  std::vector<bool> chart_seen(model.charts.size()), used(model.functions.size());
+  std::vector<int> todo{root};
+  while (!todo.empty()) {
+    int c = todo.back();
+    todo.pop_back();
+    if (c < 0 || c >= static_cast<int>(model.charts.size()) || chart_seen[static_cast<std::size_t>(c)]) continue;
+    chart_seen[static_cast<std::size_t>(c)] = true;
+    const model::Chart &chart = model.charts[static_cast<std::size_t>(c)];
+    for (int f : chart.functions) used[static_cast<std::size_t>(f)] = true;
+    for (const auto &p : chart.places) todo.push_back(p.runs);
+  }
+  std::vector<int> out;
+  for (std::size_t f = 0; f < used.size(); ++f)
+    if (used[f]) out.push_back(static_cast<int>(f));
+  return out;
+}
+
+} // namespace
+
+std::string harness_source(const model::Model &model, int chart, const std::string &header) {
+  const model::Chart &c = model.charts[static_cast<std::size_t>(chart)];
+  const std::string &t = c.name;
+  std::string s = fmt::format(
+      "/* Generated by gfec test: the interface of {0} as a test sets it, and a loop that runs\n"
+      "   the engine by the steps on stdin (docs/testing-charts.md). */\n"
+      "#include \"{1}\"\n\n#include <stdio.h>\n#include <stdlib.h>\n#include <string.h>\n\n"
+      "/* By function (its index in the model): what `set` gave it; \"\" is false/0. */\n"
+      "static char h_value[{2}][64];\n\n",
+      t, header, model.functions.size() + 1);
+  for (int f : engine_functions(model, chart)) function(s, model.functions[static_cast<std::size_t>(f)], f);
+  s += fmt::format("static void h_dump(const {} *m)\n{{\n    int p;\n    printf(\"av\");\n", t);
+  s += fmt::format("    for (p = 0; p < {0}_PLACE_COUNT; ++p) {{\n        printf(\" %u\", {0}_activation(m, p));\n    }}\n"
+                   "    printf(\"\\n\");\n",
+                   t);
+  if (c.kind == model::Chart::Kind::Fsm) s += fmt::format("    printf(\"state %d %d\\n\", {0}_state(m), {0}_status(m));\n", t);
+  for (std::size_t i = 0; i < c.vars.size(); ++i) {
+    auto [f, a] = printf_of(c.vars[i].type, "m->" + c.vars[i].name);
+    s += fmt::format("    printf(\"var {} {}\\n\", {});\n", i, f, a);
+  }
+  // The engine's field names, as the C back end gives them (backends/c/c_context.cc): the
+  // variables keep their names, then its own fields, then a timer per timed place, each made
+  // unique by appending '_'.
+  std::set<std::string> fields;
+  for (const auto &v : c.vars) fields.insert(v.name);
+  for (const char *own : {"av", "state", "status", "started", "current", "active", "candidates"}) fields.insert(own);
+  for (std::size_t p = 0; p < c.places.size(); ++p) {
+    if (!c.places[p].timed) continue;
+    std::string field = "timer_" + c.places[p].name;
+    while (!fields.insert(field).second) field += '_';
+    s += fmt::format("    printf(\"timer {} %lu\\n\", (unsigned long)m->{});\n", p, field);
+  }
+  s += "    printf(\"end\\n\");\n}\n\n";
+  s += fmt::format("int main(void)\n{{\n    static {0} m;\n    char word[16];\n    {0}_init(&m);\n    h_dump(&m);\n"
+                   "    while (scanf(\"%15s\", word) == 1) {{\n"
+                   "        if (strcmp(word, \"tick\") == 0) {{\n"
+                   "            printf(\"tick\\n\");\n            {0}_run(&m);\n            h_dump(&m);\n"
+                   "        }} else if (strcmp(word, \"set\") == 0) {{\n"
+                   "            int f;\n            char v[64];\n"
+                   "            if (scanf(\"%d %63s\", &f, v) != 2 || f < 0 || f >= {1}) {{\n"
+                   "                return 2;\n            }}\n"
+                   "            strcpy(h_value[f], v);\n"
+                   "        }}\n    }}\n    return 0;\n}}\n",
+                   t, model.functions.size() + 1);
+  return s;
+}
+
+EngineBuilds::EngineBuilds() {
+  const char *tmp = std::getenv("TMPDIR");
+  std::string pattern = std::string(tmp && *tmp ? tmp : "/tmp") + "/gfec-test-XXXXXX";
+  std::vector<char> buf(pattern.begin(), pattern.end());
+  buf.push_back('\0');
+  if (mkdtemp(buf.data())) folder_ = buf.data();
+}
+
+EngineBuilds::~EngineBuilds() {
+  if (folder_.empty()) return;
+  std::error_code ec;
+  fs::remove_all(folder_, ec);
+}
+
+EngineBuilds::Build EngineBuilds::get(const model::Model &model, int chart, const std::string &source_name) {
+  auto backend = make_backend("c");
+  if (!backend) return {"", "gfec was built without its C back end"};
+  EmitOptions o;
+  o.output_path = "engine.c";
+  o.source_name = source_name;
+  o.chart = chart;
+  std::vector<OutputFile> files;
+  try {
+    files = backend->emit(model, o);
+  } catch (const std::exception &e) {
+    return {"", e.what()};
+  }
+  std::string harness = harness_source(model, chart, "engine.h");
+  const char *cc_env = std::getenv("CC");
+  std::string cc = cc_env && *cc_env ? cc_env : "cc";
+  std::string all = cc + '\0' + harness;
+  for (const auto &f : files) all += '\0' + f.path + '\0' + f.contents;
+  std::size_t hash = std::hash<std::string>{}(all);
+
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (auto it = builds_.find(hash); it != builds_.end()) return it->second;
+  Build b;
+  fs::path dir = fs::path(folder_) / fmt::format("{:016x}", hash);
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  bool written = !ec && write_file(dir / "harness.c", harness);
+  for (const auto &f : files) written = written && write_file(dir / f.path, f.contents);
+  if (!written) {
+    b.error = fmt::format("cannot write the engine into '{}'", dir.string());
+  } else {
+    std::string log = (dir / "build.log").string();
+    std::string cmd = fmt::format("{} -std=c99 -o {} {} {} > {} 2>&1", cc, quote((dir / "harness").string()),
+                                  quote((dir / "engine.c").string()), quote((dir / "harness.c").string()), quote(log));
+    int status = std::system(cmd.c_str());
+    if (status == 0) b.program = (dir / "harness").string();
+    else b.error = fmt::format("the C compiler '{}' {} on the generated engine:\n{}", cc, exit_status(status),
+                               head(read_file(log)));
+  }
+  builds_[hash] = b;
+  return b;
+}
+
+scenario::Run EngineBuilds::run(const Build &build, const model::Model &model, const scenario::Test &test, int id) {
+  scenario::Run run;
+  std::string steps;
+  for (const scenario::Step &s : test.steps) {
+    if (s.kind == scenario::Step::Kind::Set) steps += fmt::format("set {} {}\n", s.function, s.value);
+    if (s.kind == scenario::Step::Kind::Tick)
+      for (unsigned long i = 0; i < s.count; ++i) steps += "tick\n";
+  }
+  fs::path in = fs::path(folder_) / fmt::format("steps-{}.txt", id);
+  fs::path out = fs::path(folder_) / fmt::format("out-{}.txt", id);
+  if (!write_file(in, steps)) {
+    run.error = fmt::format("cannot write '{}'", in.string());
+    return run;
+  }
+  std::string cmd = fmt::format("{} < {} > {} 2>&1", quote(build.program), quote(in.string()), quote(out.string()));
+  int status = std::system(cmd.c_str());
+  std::string text = read_file(out);
+  run.ticks = parse_output(text, model, test.chart);
+  std::uint64_t expected = scenario::total_ticks(test) + 1;
+  if (status != 0 || run.ticks.size() != expected)
+    run.error = fmt::format("the C engine's harness {} after tick {}", status != 0 ? exit_status(status) : "stopped",
+                            run.ticks.empty() ? 0 : run.ticks.size() - 1);
+  std::error_code ec;
+  fs::remove(in, ec);
+  fs::remove(out, ec);
+  return run;
+}
+
+} // namespace gfec

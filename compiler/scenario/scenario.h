@@ -1,0 +1,65 @@
+// Scenario tests (docs/testing-charts.md): the checked form of the `test` blocks of a file.
+// The validator lowers each `test "NAME" of CHART { ... }` to a Test here; `gfec test` runs it
+// on the reference interpreter and on the generated C engine and evaluates its expectations on
+// what each run left behind (a Snapshot, snapshot.h). Kept apart from the model: back ends never
+// see tests.
+#pragma once
+
+#include "model.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gfec::scenario {
+
+/// An expectation's expression. Chart expressions (vars, constants, `elapsed`, and what the
+/// chart's own expressions may read) are lowered by the validator's expression lowering and kept
+/// as model expressions; the operands only tests have wrap them.
+struct Expect {
+  enum class Kind {
+    Chart,   ///< chart: a chart expression that calls no function
+    Active,  ///< `active(P)`: place = P
+    Called,  ///< `called F` / `called F(ARGS)`: function; args (formatted as the engine prints them) if given
+    Calls,   ///< `calls F`: function; type Int
+    State,   ///< `state(S)`: place = S (fsm root)
+    Status,  ///< `status`: type Int (fsm root)
+    Unary,   ///< unary_op, args[0]
+    Binary,  ///< binary_op, args[0], args[1]
+    Paren,   ///< args[0]
+  };
+  Kind kind = Kind::Chart;
+  model::Type type = model::Type::Bool;
+  SourceRange range;
+  model::Expr chart;
+  int place = -1;
+  int function = -1;
+  std::optional<std::vector<std::string>> call_args;
+  UnaryOp unary_op = UnaryOp::Not;
+  BinaryOp binary_op = BinaryOp::Add;
+  std::vector<Expect> args;
+};
+
+struct Step {
+  enum class Kind { Tick, Set, Expect };
+  Kind kind = Kind::Tick;
+  SourceRange range;
+  unsigned long count = 1;  ///< Tick
+  int function = -1;        ///< Set: index into Model::functions
+  std::string value;        ///< Set: the constant converted to the function's type, formatted
+  Expect expect;            ///< Expect
+};
+
+struct Test {
+  std::string name;
+  int chart = -1;  ///< index into Model::charts
+  std::vector<Step> steps;
+  SourceRange range;
+};
+
+/// The tests of one file (its own, not those of the files it imports).
+struct Suite {
+  std::vector<Test> tests;
+};
+
+} // namespace gfec::scenario

@@ -1,0 +1,349 @@
+// Checks the `test` blocks of the main file and lowers them to scenario::Test
+// (docs/testing-charts.md). Chart expressions in `expect` go through the validator's own
+// expression lowering (validate/expr.cc) in the chart's scope, so whatever a chart's
+// conditions may read, an expectation may read too; only the test-only operands are handled
+// here.
+#include "scenario/validate_tests.h"
+
+#include "interpreter/value.h"
+#include "validate/fold.h"
+#include "validate/suggest.h"
+#include "validate/types.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace gfec::validation {
+
+namespace {
+
+using scenario::Expect;
+using model::Type;
+
+/// The chart's names as its own validation saw them (rebuilt from the model: the scope of
+/// validate_chart is gone by now). Clashes were reported then; they are not repeated.
+void declare_chart_names(Context &cx, ChartScope &s) {
+  Diagnostics quiet;
+  const ast::Chart &a = s.ast;
+  for (std::size_t i = 0; i < a.places.size(); ++i)
+    s.names.declare(a.places[i].name, s.is_fsm() ? Sym::State : Sym::Place, static_cast<int>(i), quiet);
+  for (const ast::ValueDecl &v : a.values) {
+    int index = -1;
+    if (v.is_const) {
+      for (std::size_t c = 0; c < cx.model.consts.size(); ++c)
+        if (cx.model.consts[c].chart == s.index && cx.model.consts[c].name == v.name.text) index = static_cast<int>(c);
+      if (index >= 0) s.names.declare(v.name, Sym::Const, index, quiet);
+      continue;
+    }
+    for (std::size_t k = 0; k < s.out.vars.size(); ++k)
+      if (s.out.vars[k].name == v.name.text) index = static_cast<int>(k);
+    s.names.declare(v.name, Sym::Var, index, quiet);
+  }
+  for (std::size_t i = 0; i < a.transitions.size(); ++i)
+    if (a.transitions[i].name) s.names.declare(*a.transitions[i].name, Sym::Transition, static_cast<int>(i), quiet);
+}
+
+/// Whether a lowered chart expression calls an interface function (which would run chart code).
+const model::Expr *find_call(const model::Expr &e) {
+  if (e.kind == model::Expr::Kind::Call) return &e;
+  for (const auto &a : e.args)
+    if (const model::Expr *c = find_call(a)) return c;
+  return nullptr;
+}
+
+class TestLowering {
+public:
+  TestLowering(Context &cx, ChartScope &chart) : cx_(cx), chart_(chart), scope_{cx, &chart, false} {}
+
+  std::optional<Expect> expect(const ast::Expr *e) {
+    auto x = lower(e);
+    if (!x || x->type == Type::Bool) return x;
+    cx_.diag.error(x->range, "type-mismatch", fmt::format("an expectation must be bool, not {}", quoted(x->type)));
+    return std::nullopt;
+  }
+
+  /// The function `name` names, or -1 after reporting why not.
+  int function(const ast::Name &name) {
+    if (name.text.empty()) return -1;
+    const Symbol *sym = cx_.c_names.find(name.text);
+    if (sym && sym->kind == Sym::Function) return cx_.function_ok[sym->index] ? sym->index : -1;
+    if (sym) {
+      cx_.diag.error(name.range, "type-mismatch", fmt::format("'{}' is {}, not a function", name.text,
+                                                              with_article(sym->kind)))
+          .note(sym->range, fmt::format("'{}' declared here", name.text));
+      return -1;
+    }
+    report_unknown(cx_.diag, chart_.unknown, name, "function", cx_.c_names.of({Sym::Function}));
+    return -1;
+  }
+
+  /// `e`, a constant, as a value of type `to` formatted as engines print it (§12: "converted as
+  /// C converts").
+  std::optional<std::string> constant(const ast::Expr *e, Type to, const std::string &what) {
+    ExprScope constant_scope{cx_, &chart_, true};
+    auto x = lower_expr(e, constant_scope);
+    if (!x) return std::nullopt;
+    if (!assignable(to, x->type)) {
+      cx_.diag.error(x->range, "type-mismatch", fmt::format("{} must be {}, not {}", what, quoted(to), quoted(x->type)));
+      return std::nullopt;
+    }
+    auto v = evaluate(*x, cx_.model, &cx_.diag);
+    if (!v) return std::nullopt;
+    interp::Value value;
+    switch (v->type) {
+    case Type::Bool: value = interp::Value::of_bool(v->b); break;
+    case Type::Int: value = interp::Value::of_int(static_cast<std::int32_t>(v->i)); break;
+    case Type::Float: value = interp::Value::of_float(static_cast<float>(v->f)); break;
+    case Type::Double: value = interp::Value::of_double(v->f); break;
+    default: return std::nullopt;
+    }
+    try {
+      return interp::format_value(interp::convert(value, to, x->range));
+    } catch (const interp::RuntimeError &err) {
+      cx_.diag.error(x->range, "type-mismatch", fmt::format("{}: {}", what, err.what()));
+      return std::nullopt;
+    }
+  }
+
+private:
+  static Expect make(Expect::Kind kind, Type type, SourceRange range) {
+    Expect x;
+    x.kind = kind;
+    x.type = type;
+    x.range = range;
+    return x;
+  }
+
+  bool fsm_only(const ast::Expr &e, const char *what) {
+    if (chart_.is_fsm()) return true;
+    cx_.diag.error(e.range, "test", fmt::format("'{}' needs an fsm, but '{}' is an sfc", what, chart_.out.name));
+    return false;
+  }
+
+  std::optional<Expect> lower(const ast::Expr *e) {
+    if (!e) return std::nullopt;
+    using AK = ast::Expr::Kind;
+    switch (e->kind) {
+    case AK::Name:
+      if (e->name.text == "status") {  // a keyword inside a test: never a chart name
+        if (!fsm_only(*e, "status")) return std::nullopt;
+        return make(Expect::Kind::Status, Type::Int, e->range);
+      }
+      break;
+    case AK::Call:
+      if (e->name.text == "called" || e->name.text == "calls") return called(*e);
+      if (e->name.text == "state") return place_operand(*e, Expect::Kind::State);
+      // `active(P)` of a place of this chart; deeper paths are the sub-charts' lowering.
+      if (e->name.text == "active" && e->args.size() == 1 && e->args[0] && e->args[0]->kind == AK::Name)
+        return place_operand(*e, Expect::Kind::Active);
+      break;
+    case AK::Unary: {
+      if (e->args.size() != 1) return std::nullopt;
+      auto operand = lower(e->args[0].get());
+      if (!operand) return std::nullopt;
+      if (operand->kind == Expect::Kind::Chart) break;  // all chart: the chart's lowering types it
+      auto type = unary_type(e->unary_op, operand->type);
+      if (!type) {
+        cx_.diag.error(e->range, "type-mismatch",
+                       fmt::format("invalid operand to unary '{}' (have {})", spelling(e->unary_op), quoted(operand->type)));
+        return std::nullopt;
+      }
+      Expect x = make(Expect::Kind::Unary, *type, e->range);
+      x.unary_op = e->unary_op;
+      x.args.push_back(std::move(*operand));
+      return x;
+    }
+    case AK::Binary: {
+      if (e->args.size() != 2) return std::nullopt;
+      auto a = lower(e->args[0].get());
+      auto b = lower(e->args[1].get());
+      if (!a || !b) return std::nullopt;
+      if (a->kind == Expect::Kind::Chart && b->kind == Expect::Kind::Chart) break;
+      auto type = binary_type(e->binary_op, a->type, b->type);
+      if (!type) {
+        cx_.diag.error(e->range, "type-mismatch",
+                       fmt::format("invalid operands to binary '{}' (have {} and {})", spelling(e->binary_op),
+                                   quoted(a->type), quoted(b->type)));
+        return std::nullopt;
+      }
+      Expect x = make(Expect::Kind::Binary, *type, e->range);
+      x.binary_op = e->binary_op;
+      x.args.push_back(std::move(*a));
+      x.args.push_back(std::move(*b));
+      return x;
+    }
+    case AK::Paren: {
+      if (e->args.size() != 1) return std::nullopt;
+      auto inner = lower(e->args[0].get());
+      if (!inner) return std::nullopt;
+      if (inner->kind == Expect::Kind::Chart) break;
+      Expect x = make(Expect::Kind::Paren, inner->type, e->range);
+      x.args.push_back(std::move(*inner));
+      return x;
+    }
+    default: break;
+    }
+    return chart_expression(*e);
+  }
+
+  /// A part that uses no test-only operand: the chart's own expression lowering.
+  std::optional<Expect> chart_expression(const ast::Expr &e) {
+    auto x = lower_expr(&e, scope_);
+    if (!x) return std::nullopt;
+    if (const model::Expr *call = find_call(*x)) {
+      const std::string &f = cx_.model.functions[call->index].name;
+      cx_.diag.error(call->range, "test", fmt::format("an expectation calls no chart code: '{}' cannot be called here", f))
+          .note(fmt::format("'called {0}' says whether the chart called it in the last tick, 'calls {0}' how often", f));
+      return std::nullopt;
+    }
+    Expect out = make(Expect::Kind::Chart, x->type, e.range);
+    out.chart = std::move(*x);
+    return out;
+  }
+
+  std::optional<Expect> place_operand(const ast::Expr &e, Expect::Kind kind) {
+    const char *word = kind == Expect::Kind::State ? "state" : "active";
+    if (kind == Expect::Kind::State && !fsm_only(e, "state()")) return std::nullopt;
+    if (e.args.size() != 1 || !e.args[0] || e.args[0]->kind != ast::Expr::Kind::Name) {
+      cx_.diag.error(e.range, "test", fmt::format("'{}' takes one argument: the name of a {}", word, chart_.place_word()));
+      return std::nullopt;
+    }
+    int place = resolve_place(chart_, cx_, e.args[0]->name);
+    if (place < 0) return std::nullopt;
+    Expect x = make(kind, Type::Bool, e.range);
+    x.place = place;
+    return x;
+  }
+
+  std::optional<Expect> called(const ast::Expr &e) {
+    bool count = e.name.text == "calls";
+    if (e.args.size() != 1 || !e.args[0]) return std::nullopt;
+    const ast::Expr &target = *e.args[0];
+    int f = function(target.name);
+    if (f < 0) return std::nullopt;
+    Expect x = make(count ? Expect::Kind::Calls : Expect::Kind::Called, count ? Type::Int : Type::Bool, e.range);
+    x.function = f;
+    if (target.kind != ast::Expr::Kind::Call) return x;
+    const model::Function &fn = cx_.model.functions[f];
+    if (target.args.size() != fn.params.size()) {
+      cx_.diag.error(target.range, "argument-count",
+                     fmt::format("too {} arguments to function '{}' (expected {}, have {})",
+                                 target.args.size() > fn.params.size() ? "many" : "few", fn.name, fn.params.size(),
+                                 target.args.size()))
+          .note(fn.range, fmt::format("'{}' declared here", fn.name));
+      return std::nullopt;
+    }
+    std::vector<std::string> args;
+    bool ok = true;
+    for (std::size_t i = 0; i < target.args.size(); ++i) {
+      auto v = constant(target.args[i].get(), fn.params[i].type, fmt::format("argument {} of '{}'", i + 1, fn.name));
+      if (v) args.push_back(*v);
+      else ok = false;
+    }
+    if (!ok) return std::nullopt;
+    x.call_args = std::move(args);
+    return x;
+  }
+
+  Context &cx_;
+  ChartScope &chart_;
+  ExprScope scope_;
+};
+
+/// The chart `name` names, or -1 after reporting why not.
+int resolve_chart(Context &cx, const ast::Name &name, std::set<std::string> &seen) {
+  if (name.text.empty()) return -1;
+  const Symbol *sym = cx.c_names.find(name.text);
+  if (sym && sym->kind == Sym::Chart) return sym->index;
+  if (const Symbol *plan = cx.plan_names.find(name.text); plan && plan->kind == Sym::Plan) {
+    cx.diag.error(name.range, "test", fmt::format("'{}' is a plan; tests run an sfc or fsm", name.text))
+        .note(plan->range, fmt::format("'{}' declared here", name.text));
+    return -1;
+  }
+  if (sym) {
+    cx.diag.error(name.range, "type-mismatch", fmt::format("'{}' is {}, not an sfc or fsm", name.text,
+                                                           with_article(sym->kind)))
+        .note(sym->range, fmt::format("'{}' declared here", name.text));
+    return -1;
+  }
+  report_unknown(cx.diag, seen, name, "chart", cx.c_names.of({Sym::Chart}));
+  return -1;
+}
+
+/// `set F = CONST;`: F is a parameterless sensing function of the chart's interface.
+bool lower_set(Context &cx, TestLowering &lowering, const model::Chart &chart, const ast::TestStep &in,
+               scenario::Step &out) {
+  int f = lowering.function(in.function);
+  if (f < 0) return false;
+  const model::Function &fn = cx.model.functions[f];
+  if (fn.result == Type::Void || !fn.params.empty()) {
+    cx.diag.error(in.function.range, "test",
+                  fmt::format("'set' needs a sensing function without parameters; '{}' {}", fn.name,
+                              fn.result == Type::Void ? "returns void" : "takes parameters"))
+        .note(fn.range, fmt::format("'{}' declared here", fn.name));
+    return false;
+  }
+  bool ours = false;
+  for (int used : chart.functions) ours = ours || cx.model.functions[used].interface_name == fn.interface_name;
+  if (!ours) {
+    cx.diag.error(in.function.range, "test", fmt::format("'{}' belongs to interface '{}', which chart '{}' does not use",
+                                                         fn.name, fn.interface_name, chart.name))
+        .note(fn.range, fmt::format("'{}' declared here", fn.name));
+    return false;
+  }
+  auto v = lowering.constant(in.value.get(), fn.result, fmt::format("the value of '{}'", fn.name));
+  if (!v) return false;
+  out.function = f;
+  out.value = *v;
+  return true;
+}
+
+} // namespace
+
+void validate_tests(Context &cx, scenario::Suite &out) {
+  if (cx.program.files.empty() || !cx.program.files.front()) return;
+  for (const ast::Test &t : cx.program.files.front()->tests) {
+    int chart = resolve_chart(cx, t.chart, cx.file_unknown);
+    if (chart < 0) continue;
+    ChartScope scope(*cx.charts[chart], cx.model.charts[chart], chart);
+    declare_chart_names(cx, scope);
+    TestLowering lowering(cx, scope);
+    scenario::Test test;
+    test.name = t.name;
+    test.chart = chart;
+    test.range = t.range;
+    bool ok = true;
+    for (const ast::TestStep &in : t.steps) {
+      scenario::Step step;
+      step.range = in.range;
+      switch (in.kind) {
+      case ast::TestStep::Kind::Tick:
+        step.kind = scenario::Step::Kind::Tick;
+        if (in.count < 1 || in.count > kMaxTicksPerStep) {
+          cx.diag.error(in.value ? in.value->range : in.range, "test",
+                        in.count == 0 ? std::string("'tick 0' runs no tick: the count must be at least 1")
+                                      : fmt::format("'tick N' runs at most {} ticks at a time", kMaxTicksPerStep));
+          ok = false;
+        }
+        step.count = static_cast<unsigned long>(std::max(in.count, 1LL));
+        break;
+      case ast::TestStep::Kind::Set:
+        step.kind = scenario::Step::Kind::Set;
+        ok = lower_set(cx, lowering, scope.out, in, step) && ok;
+        break;
+      case ast::TestStep::Kind::Expect: {
+        step.kind = scenario::Step::Kind::Expect;
+        auto x = lowering.expect(in.value.get());
+        if (x) step.expect = std::move(*x);
+        else ok = false;
+        break;
+      }
+      }
+      test.steps.push_back(std::move(step));
+    }
+    if (ok) out.tests.push_back(std::move(test));
+  }
+}
+
+} // namespace gfec::validation

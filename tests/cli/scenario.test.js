@@ -1,0 +1,278 @@
+// gfec test (docs/testing-charts.md): the samples' tests pass; a broken chart, a wrong
+// expectation and an engine that disagrees with the reference interpreter fail with located
+// messages; the summary line, exit codes, --filter, -j, the engine switches, JUnit XML and the
+// structured diagnostic formats.
+'use strict';
+const { test } = require('node:test');
+const assert = require('node:assert/strict');
+const fs = require('node:fs');
+const path = require('node:path');
+const { gfec, scratch, parseText, SAMPLES } = require('./helpers');
+
+const lastLine = (s) => s.trimEnd().split('\n').pop();
+
+// The §12 example of docs/language.md, against the line follower as the samples have it.
+const EXAMPLE = fs.readFileSync(path.join(SAMPLES, 'line_follower.test'), 'utf8');
+
+function lineFollower(dir, edit = (s) => s) {
+  for (const f of ['line_follower.sfc', 'linebot.iface'])
+    fs.writeFileSync(path.join(dir, f), edit(fs.readFileSync(path.join(SAMPLES, f), 'utf8')));
+}
+
+/** A tiny XML reader: elements with attributes and text, or an exception if not well formed. */
+function parseXml(text) {
+  const root = { name: '#root', attrs: {}, children: [], text: '' };
+  const stack = [root];
+  const re = /<\?[^>]*\?>|<(\/?)([\w:-]+)((?:\s+[\w:-]+="[^"]*")*)\s*(\/?)>|([^<]+)/g;
+  let m;
+  let consumed = 0;
+  const unescape = (s) =>
+    s.replace(/&lt;/g, '<').replace(/&gt;/g, '>').replace(/&quot;/g, '"').replace(/&apos;/g, "'").replace(/&amp;/g, '&');
+  while ((m = re.exec(text))) {
+    if (m.index !== consumed) throw new Error(`not XML at ${consumed}`);
+    consumed = re.lastIndex;
+    if (m[5] !== undefined) {
+      stack[stack.length - 1].text += unescape(m[5]);
+      continue;
+    }
+    if (!m[2]) continue;
+    if (m[1]) {
+      const open = stack.pop();
+      if (open.name !== m[2]) throw new Error(`</${m[2]}> closes <${open.name}>`);
+      continue;
+    }
+    const attrs = {};
+    for (const a of m[3].matchAll(/([\w:-]+)="([^"]*)"/g)) attrs[a[1]] = unescape(a[2]);
+    const el = { name: m[2], attrs, children: [], text: '' };
+    stack[stack.length - 1].children.push(el);
+    if (!m[4]) stack.push(el);
+  }
+  if (consumed !== text.length || stack.length !== 1) throw new Error('unclosed element');
+  return root.children.find((c) => c.name);
+}
+
+test('the samples pass on both engines; the summary line is last', () => {
+  const files = ['line_follower.test', 'cleanup.test', 'work_cell.test'].map((f) => path.join(SAMPLES, f));
+  const r = gfec(['test', ...files], SAMPLES);
+  assert.equal(r.code, 0, r.stderr);
+  assert.equal(r.stderr, '');
+  assert.equal(r.stdout, '6 passed, 0 failed\n');
+});
+
+test('a broken chart fails at the expectation, with the values in notes', () => {
+  const dir = scratch({ 'line_follower.test': EXAMPLE });
+  // The left sensor's transitions swapped: black no longer stops the wheel.
+  lineFollower(dir, (s) => s.replace('LeftStop  when Left_IR_Black()', 'LeftStop  when Left_IR_White()')
+                            .replace('LeftFw    when Left_IR_White()', 'LeftFw    when Left_IR_Black()'));
+  const r = gfec(['test', 'line_follower.test'], dir);
+  assert.equal(r.code, 1);
+  assert.equal(lastLine(r.stdout), '0 passed, 1 failed');
+  const errors = parseText(r.stderr);
+  assert.deepEqual(errors.map((e) => [e.line, e.column, e.message]), [
+    [11, 3, 'expectation failed: active(LeftStop)'],
+    [12, 3, 'expectation failed: called Left_Stop && !called Left_FW'],
+    // White now stops the wheel (tick 3) and black, never seen again, would restart it.
+    [15, 3, 'expectation failed: active(LeftFw)'],
+  ]);
+  assert.match(r.stderr, /^line_follower\.test:11:3: note: 'active\(LeftStop\)' is false$/m);
+  assert.match(r.stderr, /^line_follower\.test:12:3: note: 'called Left_Stop' is false$/m);
+  assert.match(r.stderr, /^line_follower\.test:12:3: note: 'called Left_FW' is true$/m);
+  assert.match(r.stderr, /note: in test "a black left sensor stops the left wheel", after tick 2$/m);
+});
+
+test('a test file with errors is a failed run with located errors (exit 1)', () => {
+  const dir = scratch({ 'bad.test': 'import "line_follower.sfc";\ntest "t" of LineFolower { tick 0; }\n' });
+  lineFollower(dir);
+  const r = gfec(['test', 'bad.test'], dir);
+  assert.equal(r.code, 1);
+  assert.equal(lastLine(r.stdout), '0 passed, 1 failed');
+  assert.match(r.stderr, /^bad\.test:2:13: error: unknown chart 'LineFolower' \[unknown-name\]$/m);
+  assert.match(r.stderr, /note: did you mean 'LineFollower'\?/);
+});
+
+test('usage and I/O errors exit 2', () => {
+  const dir = scratch();
+  let r = gfec(['test', 'missing.test'], dir);
+  assert.equal(r.code, 2);
+  assert.match(r.stderr, /cannot read 'missing\.test'/);
+  r = gfec(['test', '--engine-only', '--reference-only', 'x.test'], dir);
+  assert.equal(r.code, 2);
+  r = gfec(['test', '--no-such-option', 'x.test'], dir);
+  assert.equal(r.code, 2);
+  r = gfec(['test'], dir);
+  assert.equal(r.code, 2);
+});
+
+// The C engine runs verbatim code; the reference interpreter cannot. A verbatim call makes
+// the two disagree, which gfec test must notice even though every expectation holds.
+const DIVERGE = `interface Bot { bool Ready(); void Go(); }
+sfc Diverge {
+  initial place A { Go(); %{ Go(); %} }
+  place B;
+  A -> B when Ready();
+}
+test "the engine calls Go twice" of Diverge {
+  tick;
+  expect called Go;
+}
+`;
+
+test('a disagreement between the engine and the reference names the tick and the first differing call', () => {
+  const dir = scratch({ 'diverge.test': DIVERGE });
+  let r = gfec(['test', 'diverge.test'], dir);
+  assert.equal(r.code, 1);
+  assert.equal(lastLine(r.stdout), '0 passed, 1 failed');
+  const errors = parseText(r.stderr);
+  assert.equal(errors.length, 1);
+  assert.equal(errors[0].line, 8);
+  assert.equal(errors[0].message,
+    "the reference interpreter and the C engine disagree at tick 1: first differing call 3: reference no call, engine 'Go()'");
+  // Each engine alone agrees with itself: --reference-only and --engine-only pass.
+  r = gfec(['test', '--reference-only', 'diverge.test'], dir);
+  assert.equal(r.code, 0, r.stderr);
+  r = gfec(['test', '--engine-only', 'diverge.test'], dir);
+  assert.equal(r.code, 0, r.stderr);
+  // ... and an expectation that only one engine meets says which.
+  fs.writeFileSync(path.join(dir, 'count.test'), DIVERGE.replace('expect called Go;', 'expect calls Go == 1;'));
+  r = gfec(['test', 'count.test'], dir);
+  assert.equal(r.code, 1);
+  assert.match(r.stderr, /^count\.test:9:3: error: expectation failed: calls Go == 1 \[expectation\]$/m);
+  assert.match(r.stderr, /note: 'calls Go' is 2$/m);
+  assert.match(r.stderr, /note: it fails on the C engine only; it holds on the reference interpreter$/m);
+});
+
+const TWO = `${EXAMPLE}
+test "the right wheel stops too" of LineFollower {
+  set Right_IR_Black = true;
+  tick 2;
+  expect active(RightStop) && calls Right_Stop == 1;
+}
+
+test "a wrong expectation" of LineFollower {
+  tick;
+  expect active(LeftStop);
+}
+`;
+
+test('--filter runs the tests whose name contains TEXT; -j gives the same results', () => {
+  const dir = scratch({ 'two.test': TWO });
+  lineFollower(dir);
+  let r = gfec(['test', '--filter', 'wheel', 'two.test'], dir);
+  assert.equal(r.code, 0, r.stderr);
+  assert.equal(r.stdout, '2 passed, 0 failed\n');
+  r = gfec(['test', '--filter', 'nothing matches', 'two.test'], dir);
+  assert.equal(r.stdout, '0 passed, 0 failed\n');
+  const one = gfec(['test', 'two.test'], dir);
+  const four = gfec(['test', '-j', '4', 'two.test'], dir);
+  assert.equal(one.code, 1);
+  assert.equal(four.code, 1);
+  assert.equal(one.stdout, '2 passed, 1 failed\n');
+  assert.equal(four.stdout, one.stdout);
+  assert.equal(four.stderr, one.stderr);
+});
+
+test('--junit writes one testcase per test, failures with their message', () => {
+  const dir = scratch({ 'two.test': TWO });
+  lineFollower(dir);
+  const r = gfec(['test', '--junit', 'results.xml', 'two.test'], dir);
+  assert.equal(r.code, 1);
+  const suites = parseXml(fs.readFileSync(path.join(dir, 'results.xml'), 'utf8'));
+  assert.equal(suites.name, 'testsuites');
+  assert.equal(suites.attrs.tests, '3');
+  assert.equal(suites.attrs.failures, '1');
+  const suite = suites.children[0];
+  assert.equal(suite.attrs.name, 'two.test');
+  const cases = suite.children.filter((c) => c.name === 'testcase');
+  assert.deepEqual(cases.map((c) => c.attrs.name),
+    ['a black left sensor stops the left wheel', 'the right wheel stops too', 'a wrong expectation']);
+  assert.equal(cases[0].children.length, 0);
+  assert.equal(cases[1].children.length, 0);
+  const failure = cases[2].children[0];
+  assert.equal(failure.name, 'failure');
+  assert.equal(failure.attrs.message, 'two.test:26:3: error: expectation failed: active(LeftStop) [expectation]');
+  assert.match(failure.text, /note: 'active\(LeftStop\)' is false/);
+});
+
+test('-fdiagnostics-format=json and sarif-stderr carry the failed expectations', () => {
+  const dir = scratch({ 'two.test': TWO });
+  lineFollower(dir);
+  let r = gfec(['test', '-fdiagnostics-format=json', 'two.test'], dir);
+  assert.equal(r.code, 1);
+  assert.equal(r.stdout, '2 passed, 1 failed\n');
+  const json = JSON.parse(r.stderr);
+  assert.equal(json.length, 1);
+  assert.equal(json[0].kind, 'error');
+  assert.equal(json[0].message, 'expectation failed: active(LeftStop)');
+  r = gfec(['test', '-fdiagnostics-format=sarif-stderr', 'two.test'], dir);
+  const sarif = JSON.parse(r.stderr);
+  const results = sarif.runs[0].results;
+  assert.equal(results.length, 1);
+  assert.equal(results[0].ruleId, 'expectation');
+  assert.equal(results[0].locations[0].physicalLocation.region.startLine, 26);
+});
+
+test('docs/examples/gfec-lint.yml: its test step runs the samples\' tests and writes JUnit', (t) => {
+  const { spawnSync } = require('node:child_process');
+  const { SOURCE_DIR, GFEC } = require('./helpers');
+  const yml = fs.readFileSync(path.join(SOURCE_DIR, 'docs', 'examples', 'gfec-lint.yml'), 'utf8');
+  const step = /- name: Run the scenario tests\n([\s\S]*?)\n\s*continue-on-error/.exec(yml);
+  assert.ok(step, 'the workflow has a "Run the scenario tests" step');
+  const run = /run: \|\n((?:\s{10}.*\n?)+)/.exec(step[1]);
+  assert.ok(run, 'the step has a run block');
+  const git = spawnSync('git', ['rev-parse', '--is-inside-work-tree'], { cwd: SOURCE_DIR, encoding: 'utf8' });
+  if (git.status !== 0) return t.skip('not a git checkout');
+  const out = path.join(scratch(), 'gfec-tests.xml');
+  const script = run[1].replace(/^ {10}/gm, '').replace(/build\/gfec/g, JSON.stringify(GFEC))
+    .replace('--junit gfec-tests.xml', `--junit ${JSON.stringify(out)}`);
+  const chartsVar = /CHARTS: (\S+)/.exec(yml)[1];
+  const r = spawnSync('bash', ['-c', script], { cwd: SOURCE_DIR, encoding: 'utf8', env: { ...process.env, CHARTS: chartsVar } });
+  assert.equal(r.status, 0, r.stderr);
+  assert.match(r.stdout, /^\d+ passed, 0 failed\n$/);
+  const suites = parseXml(fs.readFileSync(out, 'utf8'));
+  const names = suites.children.map((s) => s.attrs.name);
+  assert.ok(names.includes('samples/line_follower.test'), names.join(' '));
+  assert.equal(suites.attrs.failures, '0');
+});
+
+test('the engine and its harness compile warning-free with gcc and clang (-Werror), $CC honoured', (t) => {
+  const { spawnSync } = require('node:child_process');
+  const files = ['line_follower.test', 'cleanup.test', 'work_cell.test'].map((f) => path.join(SAMPLES, f));
+  let ran = 0;
+  for (const cc of ['gcc', 'clang']) {
+    if (spawnSync(cc, ['--version']).status !== 0) continue;
+    const r = gfec(['test', '--engine-only', ...files], SAMPLES,
+      { ...process.env, CC: `${cc} -Wall -Wextra -Wpedantic -Werror` });
+    assert.equal(r.code, 0, `${cc}: ${r.stderr}`);
+    assert.equal(r.stdout, '6 passed, 0 failed\n');
+    ++ran;
+  }
+  if (ran === 0) t.skip('neither gcc nor clang');
+  // A compiler that does not exist: each test fails and says why.
+  const r = gfec(['test', path.join(SAMPLES, 'line_follower.test')], SAMPLES, { ...process.env, CC: 'no-such-cc' });
+  assert.equal(r.code, 1);
+  assert.match(r.stderr, /error: cannot build the C engine for 'LineFollower' \[test-engine\]/);
+  assert.match(r.stderr, /note: the C compiler 'no-such-cc' exited with status 127/);
+});
+
+test('a variable named like a timer field: the harness reads the field the engine renamed', () => {
+  // A is initial: active from _init, so its timer grows from the first tick (1 tick after it).
+  const dir = scratch({ 'coll.test': `interface I { bool Go(); void Beep(); }
+sfc Coll {
+  period 10ms;
+  var int timer_A = 7;
+  initial place A { Beep(); timer_A += 1; }
+  place B;
+  A -> B when Go() && elapsed(A) >= 30ms;
+}
+test "timer_A is a variable" of Coll {
+  set Go = true;
+  tick 2;
+  expect active(A) && elapsed(A) == 20ms && timer_A == 9;
+  tick;
+  expect active(B) && !called Beep && timer_A == 9;
+}
+` });
+  const r = gfec(['test', 'coll.test'], dir);
+  assert.equal(r.code, 0, r.stderr);
+  assert.equal(r.stdout, '1 passed, 0 failed\n');
+});

@@ -1,0 +1,258 @@
+// Scenario tests (docs/testing-charts.md): the `test` block's syntax, its checks with their
+// located messages, and a test run on the reference interpreter evaluated step by step.
+#include "scenario/reference_run.h"
+#include "scenario/scenario.h"
+#include "scenario/snapshot.h"
+#include "support.h"
+#include "validate.h"
+
+#include <catch2/catch.hpp>
+
+#include <string>
+
+using namespace gfec;
+
+namespace {
+
+const char *const kChart = R"--(interface Bot {
+  bool Black();
+  int Count();
+  float Level();
+  void Go();
+  void Motor(int side, float speed);
+  int Sense(int k);
+}
+interface Other { bool Door(); }
+sfc Line {
+  period 10ms;
+  var int laps = 0;
+  initial place A { Go(); }
+  place B { Motor(1, 0.5); laps += 1; }
+  A -> B when Black();
+  B -> A when Count() > 2;
+}
+fsm Machine {
+  initial state S0 { Go(); }
+  success state Done;
+  S0 -> Done when Black();
+}
+plan P { start a; actor a: Nothing() { X -> terminate; } }
+)--";
+
+struct Checked {
+  test::FrontEnd fe;
+  model::Model model;
+  scenario::Suite suite;
+
+  explicit Checked(const std::string &tests) : fe({{"t.test", "import \"bot.sfc\";\n" + tests}, {"bot.sfc", kChart}}) {
+    model = validate(fe.loaded.program, fe.sources, fe.diag, suite);
+  }
+  std::string text() const { return fe.text(); }
+  /// The diagnostics about the test file only (the plan in bot.sfc has its own errors).
+  std::string test_errors() const {
+    std::string out;
+    for (const auto &d : fe.diag.all())
+      if (d.range.file == fe.loaded.program.files.front()->id) out += render_text(d, fe.sources);
+    return out;
+  }
+};
+
+} // namespace
+
+TEST_CASE("a test block parses into its steps", "[scenario]") {
+  test::FrontEnd fe({{"t.test", "test \"x\" of Line { tick; tick 3; set Black = true; expect called Go(1) && calls Go == 2 && status == 0 && state(S); }\n"}});
+  REQUIRE(fe.text() == "");
+  const auto &t = fe.loaded.program.files.front()->tests.at(0);
+  CHECK(t.name == "x");
+  CHECK(t.chart.text == "Line");
+  REQUIRE(t.steps.size() == 4);
+  CHECK(t.steps[0].count == 1);
+  CHECK(t.steps[1].count == 3);
+  CHECK(t.steps[2].kind == ast::TestStep::Kind::Set);
+  CHECK(t.steps[2].function.text == "Black");
+  CHECK(t.steps[3].kind == ast::TestStep::Kind::Expect);
+}
+
+TEST_CASE("tick, set, expect, called, calls and status are keywords only inside a test", "[scenario]") {
+  // Elsewhere they stay names: an interface may declare a function `tick`, a chart a var `status`.
+  test::FrontEnd fe({{"t.sfc", "interface I { void tick(); bool expect(); }\n"
+                               "sfc C { var int status = 0; var int calls = 1; initial place A { tick(); status = calls; }\n"
+                               "  A -> A when expect(); }\n"}});
+  CHECK(fe.text() == "");
+}
+
+TEST_CASE("test blocks report syntax errors where they are", "[scenario]") {
+  CHECK(test::parse_errors("test \"x\" Line { tick; }\n") ==
+        "t.sfc:1:10: error: expected 'of' and the chart after the test's name, found 'Line' [syntax]\n"
+        " test \"x\" Line { tick; }\n"
+        "          ^~~~\n");
+  CHECK(test::parse_errors("test \"x\" of Line { wait; }\n") ==
+        "t.sfc:1:20: error: expected a test step ('tick', 'set' or 'expect'), found 'wait' [syntax]\n"
+        " test \"x\" of Line { wait; }\n"
+        "                    ^~~~\n");
+  CHECK(test::parse_errors("test \"x\" of Line { tick x; }\n") ==
+        "t.sfc:1:25: error: expected a number of ticks or ';' after 'tick', found 'x' [syntax]\n"
+        " test \"x\" of Line { tick x; }\n"
+        "                         ^\n");
+}
+
+TEST_CASE("a valid test is lowered to its checked form", "[scenario]") {
+  Checked c("test \"t\" of Line { set Black = true; set Count = 2.9; set Level = 1; tick 2;\n"
+            "  expect active(B) && laps == 1 && called Motor(1, 0.5) && calls Go == 0 && elapsed(B) >= 10ms; }\n");
+  CHECK(c.test_errors() == "");
+  REQUIRE(c.suite.tests.size() == 1);
+  const auto &t = c.suite.tests[0];
+  REQUIRE(t.steps.size() == 5);
+  CHECK(t.steps[0].value == "true");
+  CHECK(t.steps[1].value == "2");  // converted as C converts: 2.9 to int is 2
+  CHECK(t.steps[2].value == "1");
+  CHECK(t.steps[3].count == 2);
+  const auto &e = t.steps[4].expect;
+  CHECK(e.type == model::Type::Bool);
+  // elapsed(B) in a test keeps B's timer in the engine, so that both engines can report it
+  CHECK(c.model.charts[t.chart].places[1].timed);
+}
+
+TEST_CASE("an unknown chart is reported with a did-you-mean", "[scenario]") {
+  CHECK(Checked("test \"t\" of Lien { tick; }\n").test_errors() ==
+        "t.test:2:13: error: unknown chart 'Lien' [unknown-name]\n"
+        " test \"t\" of Lien { tick; }\n"
+        "             ^~~~\n"
+        "bot.sfc:10:5: note: did you mean 'Line'?\n"
+        " sfc Line {\n"
+        "     ^~~~\n");
+  CHECK(Checked("test \"t\" of P { tick; }\n").test_errors().rfind(
+            "t.test:2:13: error: 'P' is a plan; tests run an sfc or fsm [test]\n", 0) == 0);
+}
+
+TEST_CASE("unknown functions and places in a test are reported with a did-you-mean", "[scenario]") {
+  CHECK(Checked("test \"t\" of Line { set Blak = true; }\n").test_errors() ==
+        "t.test:2:24: error: unknown function 'Blak' [unknown-name]\n"
+        " test \"t\" of Line { set Blak = true; }\n"
+        "                        ^~~~\n"
+        "bot.sfc:2:8: note: did you mean 'Black'?\n"
+        "   bool Black();\n"
+        "        ^~~~~\n");
+  CHECK(Checked("test \"t\" of Machine { expect state(Dnoe); }\n").test_errors() ==
+        "t.test:2:36: error: unknown state 'Dnoe' [unknown-name]\n"
+        " test \"t\" of Machine { expect state(Dnoe); }\n"
+        "                                    ^~~~\n"
+        "bot.sfc:20:17: note: did you mean 'Done'?\n"
+        "   success state Done;\n"
+        "                 ^~~~\n");
+  CHECK(Checked("test \"t\" of Line { expect called Goo; }\n").test_errors() ==
+        "t.test:2:34: error: unknown function 'Goo' [unknown-name]\n"
+        " test \"t\" of Line { expect called Goo; }\n"
+        "                                  ^~~\n"
+        "bot.sfc:5:8: note: did you mean 'Go'?\n"
+        "   void Go();\n"
+        "        ^~\n");
+}
+
+TEST_CASE("set needs a parameterless sensing function of the chart's interface", "[scenario]") {
+  CHECK(Checked("test \"t\" of Line { set Go = true; }\n").test_errors() ==
+        "t.test:2:24: error: 'set' needs a sensing function without parameters; 'Go' returns void [test]\n"
+        " test \"t\" of Line { set Go = true; }\n"
+        "                        ^~\n"
+        "bot.sfc:5:3: note: 'Go' declared here\n"
+        "   void Go();\n"
+        "   ^~~~~~~~~~\n");
+  CHECK(Checked("test \"t\" of Line { set Sense = 1; }\n").test_errors().rfind(
+            "t.test:2:24: error: 'set' needs a sensing function without parameters; 'Sense' takes parameters [test]\n", 0) == 0);
+  CHECK(Checked("test \"t\" of Line { set Door = true; }\n").test_errors().rfind(
+            "t.test:2:24: error: 'Door' belongs to interface 'Other', which chart 'Line' does not use [test]\n", 0) == 0);
+  CHECK(Checked("test \"t\" of Line { set Black = 1; }\n").test_errors() ==
+        "t.test:2:32: error: the value of 'Black' must be 'bool', not 'int' [type-mismatch]\n"
+        " test \"t\" of Line { set Black = 1; }\n"
+        "                                ^\n");
+  CHECK(Checked("test \"t\" of Line { set Count = laps; }\n").test_errors() ==
+        "t.test:2:32: error: a constant expression cannot read variable 'laps' [not-constant]\n"
+        " test \"t\" of Line { set Count = laps; }\n"
+        "                                ^~~~\n");
+}
+
+TEST_CASE("called F(ARGS) is checked against F's prototype with constant arguments", "[scenario]") {
+  CHECK(Checked("test \"t\" of Line { expect called Motor(1); }\n").test_errors().rfind(
+            "t.test:2:34: error: too few arguments to function 'Motor' (expected 2, have 1) [argument-count]\n", 0) == 0);
+  CHECK(Checked("test \"t\" of Line { expect called Motor(1, true); }\n").test_errors().rfind(
+            "t.test:2:43: error: argument 2 of 'Motor' must be 'float', not 'bool' [type-mismatch]\n", 0) == 0);
+  CHECK(Checked("test \"t\" of Line { expect called Motor(laps, 1); }\n").test_errors().rfind(
+            "t.test:2:40: error: a constant expression cannot read variable 'laps' [not-constant]\n", 0) == 0);
+}
+
+TEST_CASE("tick N needs N >= 1, an expectation must be bool and calls no code", "[scenario]") {
+  CHECK(Checked("test \"t\" of Line { tick 0; }\n").test_errors() ==
+        "t.test:2:25: error: 'tick 0' runs no tick: the count must be at least 1 [test]\n"
+        " test \"t\" of Line { tick 0; }\n"
+        "                         ^\n");
+  CHECK(Checked("test \"t\" of Line { tick 1000001; }\n").test_errors() ==
+        "t.test:2:25: error: 'tick N' runs at most 1000000 ticks at a time [test]\n"
+        " test \"t\" of Line { tick 1000001; }\n"
+        "                         ^~~~~~~\n");
+  // Beyond any integer: the lexer's error, once.
+  CHECK(Checked("test \"t\" of Line { tick 99999999999999999999999; }\n").test_errors().rfind(
+            "t.test:2:25: error: integer literal is too large [syntax]\n", 0) == 0);
+  CHECK(Checked("test \"t\" of Line { expect calls Go; }\n").test_errors() ==
+        "t.test:2:27: error: an expectation must be bool, not 'int' [type-mismatch]\n"
+        " test \"t\" of Line { expect calls Go; }\n"
+        "                           ^~~~~~~~\n");
+  CHECK(Checked("test \"t\" of Line { expect Black(); }\n").test_errors() ==
+        "t.test:2:27: error: an expectation calls no chart code: 'Black' cannot be called here [test]\n"
+        " test \"t\" of Line { expect Black(); }\n"
+        "                           ^~~~~~~\n"
+        "t.test:2:27: note: 'called Black' says whether the chart called it in the last tick, 'calls Black' how often\n");
+  CHECK(Checked("test \"t\" of Line { expect calls Go == true; }\n").test_errors().rfind(
+            "t.test:2:27: error: invalid operands to binary '==' (have 'int' and 'bool') [type-mismatch]\n", 0) == 0);
+}
+
+TEST_CASE("state(S) and status need an fsm", "[scenario]") {
+  CHECK(Checked("test \"t\" of Line { expect state(A); }\n").test_errors() ==
+        "t.test:2:27: error: 'state()' needs an fsm, but 'Line' is an sfc [test]\n"
+        " test \"t\" of Line { expect state(A); }\n"
+        "                           ^~~~~~~~\n");
+  CHECK(Checked("test \"t\" of Line { expect status == 0; }\n").test_errors() ==
+        "t.test:2:27: error: 'status' needs an fsm, but 'Line' is an sfc [test]\n"
+        " test \"t\" of Line { expect status == 0; }\n"
+        "                           ^~~~~~\n");
+  CHECK(Checked("test \"t\" of Machine { expect state(S1) && status == 1; }\n").test_errors().rfind(
+            "t.test:2:36: error: unknown state 'S1' [unknown-name]\n", 0) == 0);
+  CHECK(Checked("test \"t\" of Machine { tick; expect state(S0) && status == 0; }\n").test_errors() == "");
+}
+
+TEST_CASE("a test runs on the reference interpreter and its expectations are evaluated", "[scenario]") {
+  Checked c("test \"t\" of Line { tick; expect active(A) && called Go; set Black = true; tick;\n"
+            "  expect active(B) && called Motor(1, 0.5) && !called Motor(0, 0.5) && calls Go == 1 && laps == 1;\n"
+            "  expect active(A); }\n");
+  REQUIRE(c.test_errors() == "");
+  const scenario::Test &t = c.suite.tests.at(0);
+  scenario::Run run = scenario::run_reference(c.model, t);
+  REQUIRE(run.error == "");
+  REQUIRE(run.ticks.size() == 3);
+  // Tick 2: the transition fires (the sensing call), then B's action runs; B -> A was not open.
+  CHECK(run.ticks[2].calls.size() == 2);
+  CHECK(run.ticks[2].calls[0].text == "Black()");
+  CHECK(run.ticks[2].calls[1].text == "Motor(1, 0.5)");
+  auto first = scenario::evaluate(t.steps[1].expect, run.ticks[1], c.model, t.chart);
+  CHECK(first.holds);
+  auto second = scenario::evaluate(t.steps[4].expect, run.ticks[2], c.model, t.chart);
+  CHECK(!second.holds);  // calls Go == 1 fails: A's action no longer runs
+  auto third = scenario::evaluate(t.steps[5].expect, run.ticks[2], c.model, t.chart);
+  CHECK(!third.holds);
+  REQUIRE(third.operands.size() == 1);
+  CHECK(third.operands[0].value == "false");
+}
+
+TEST_CASE("two runs that differ are told apart by their first differing call", "[scenario]") {
+  Checked c("test \"t\" of Line { tick; }\n");
+  REQUIRE(c.test_errors() == "");
+  scenario::Run run = scenario::run_reference(c.model, c.suite.tests.at(0));
+  scenario::Snapshot other = run.ticks[1];
+  CHECK(scenario::compare(run.ticks[1], other, c.model, 0, "reference", "engine") == "");
+  other.calls.push_back(other.calls.back());
+  CHECK(scenario::compare(run.ticks[1], other, c.model, 0, "reference", "engine") ==
+        "call 3: reference no call, engine 'Go()'");
+  other = run.ticks[1];
+  other.activation[1] = 1;
+  CHECK(scenario::compare(run.ticks[1], other, c.model, 0, "reference", "engine") ==
+        "activation of 'B': reference 0, engine 1");
+}
