@@ -5,6 +5,7 @@ packages=(
   cmake ninja-build gcc g++ clang lld llvm pkg-config make
   libfmt-dev nlohmann-json3-dev libcli11-dev catch2 libode-dev
   graphviz valgrind cppcheck time
+  chromium   # the run viewer's browser test (tests/viewer)
 )
 # Node (for the SARIF schema and TextMate grammar tests) may come from another repo already.
 command -v npm >/dev/null 2>&1 || packages+=(nodejs npm)

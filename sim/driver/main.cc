@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -14,8 +16,10 @@
 #include "driver/chart_build.h"
 #include "driver/engine_loader.h"
 #include "driver/options.h"
+#include "driver/process.h"
 #include "driver/reports.h"
 #include "driver/run.h"
+#include "viewer_page.h"
 
 namespace fs = std::filesystem;
 using namespace carbot;
@@ -59,6 +63,22 @@ class WorkDir {
   bool owned_ = false;
 };
 
+/// gfec's SVG of the chart for the viewer page, or "" and `note` saying why there is none (the
+/// run goes on without a diagram: Graphviz is optional).
+std::string chart_svg(const Options& o, const std::string& dir, std::string& note) {
+  const std::string path = dir + "/chart.svg";
+  std::string error;
+  const int rc = run_process({o.gfec, "--emit=svg", o.chart, "-o", path}, error);
+  if (rc != 0) {
+    note = rc < 0 ? error : "no diagram: 'gfec --emit=svg' failed (it needs Graphviz's dot)";
+    return "";
+  }
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -78,6 +98,8 @@ int main(int argc, char** argv) {
   app.add_option("--trace", o.trace, "write t,x,y,heading per control tick (CSV)");
   app.add_option("--json", o.json, "write the result (JSON)");
   app.add_option("--svg", o.svg, "write a picture of the world and the path (SVG)");
+  app.add_option("--html", o.html, "write the run viewer: one self-contained HTML page (docs/viewer.md)");
+  app.add_option("--record", o.record, "write the run viewer's recording (JSON, docs/viewer.md)");
   app.add_option("--physics-step", o.physics_step, "physics step in seconds")->capture_default_str()->check(CLI::PositiveNumber);
   auto* period_option = app.add_option("--period", o.period, "control period in seconds (default: the chart's period, else 0.01)")
                            ->check(CLI::PositiveNumber);
@@ -125,6 +147,13 @@ int main(int argc, char** argv) {
     if (!o.trace.empty() && !write_atomically(o.trace, trace_csv(report), error)) return fail(kUsage, error);
     if (!o.json.empty() && !write_atomically(o.json, result_json(report), error)) return fail(kUsage, error);
     if (!o.svg.empty() && !write_atomically(o.svg, svg_picture(report), error)) return fail(kUsage, error);
+    if (o.recording()) {
+      std::string note;
+      const std::string svg = chart_svg(o, dir.path(), note);
+      const nlohmann::json data = viewer_data(report, svg, note);
+      if (!o.html.empty() && !write_atomically(o.html, gfec::viewer::page(data), error)) return fail(kUsage, error);
+      if (!o.record.empty() && !write_atomically(o.record, data.dump() + "\n", error)) return fail(kUsage, error);
+    }
     if (!o.quiet) {
       std::printf("carbot-sim: %s (%s) on %s: %s at %.2f s, %.2f m driven, %d bump%s (%.2f s, %.0fx real time)\n",
                   built.chart.name.c_str(), built.chart.kind.c_str(), world.name.c_str(), result.status.c_str(),

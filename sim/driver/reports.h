@@ -4,6 +4,8 @@
 
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "core/simulation.h"
 #include "driver/chart_build.h"
 #include "driver/run.h"
@@ -24,6 +26,10 @@ std::string trace_csv(const RunReport& r);
 std::string result_json(const RunReport& r);
 /// The world and the robot's path, with a title and a legend.
 std::string svg_picture(const RunReport& r);
+
+/// The run viewer's recording (docs/viewer.md), which its page embeds: `chart_svg` is gfec's SVG
+/// of the chart ("" with `svg_note` saying why there is none).
+nlohmann::json viewer_data(const RunReport& r, const std::string& chart_svg, const std::string& svg_note);
 
 /// Writes `text` to `path` through a temporary file; false (and `error`) on failure.
 bool write_atomically(const std::string& path, const std::string& text, std::string& error);
