@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The main job: compile the sample charts with gfec, then run the line follower on the
-# simulated Carbot around the oval track and draw its path.
+# simulated Carbot around the oval track, draw its path and write its replay page.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=build/demo
@@ -12,6 +12,8 @@ build/gfec samples/wall_follow.plan -o "$out/wall_follow.cpp"
 echo "gfec compiled the samples into $out/: $(cd "$out" && ls | tr '\n' ' ')"
 if [ -x build/carbot-sim ]; then
   build/carbot-sim samples/line_follower.sfc --world sim/worlds/oval.json --seconds 60 \
-    --trace "$out/line_follower.csv" --json "$out/line_follower.json" --svg "$out/line_follower.svg"
+    --trace "$out/line_follower.csv" --json "$out/line_follower.json" --svg "$out/line_follower.svg" \
+    --html "$out/line_follower.html"
   echo "The line follower's run: $out/line_follower.json; its path: $out/line_follower.svg"
+  echo "Its replay (open in a browser, docs/viewer.md): $out/line_follower.html"
 fi

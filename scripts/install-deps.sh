@@ -6,6 +6,7 @@ packages=(
   libfmt-dev nlohmann-json3-dev libcli11-dev catch2 libode-dev
   graphviz valgrind cppcheck time
   gcc-arm-none-eabi  # the cross build and freestanding engine tests (Cortex-M4)
+  chromium   # the run viewer's browser test (tests/viewer)
 )
 # Node (for the SARIF schema and TextMate grammar tests) may come from another repo already.
 command -v npm >/dev/null 2>&1 || packages+=(nodejs npm)

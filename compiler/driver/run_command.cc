@@ -1,18 +1,23 @@
 #include "run_command.h"
 
+#include "backend_registry.h"
 #include "diagnostic_printer.h"
 #include "driver.h"
 #include "interpreter/input_trace.h"
 #include "interpreter/run_chart.h"
 #include "loader.h"
 #include "roots.h"
+#include "output_files.h"
 #include "validate.h"
+#include "viewer_page.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <memory>
 #include <ostream>
+#include <sstream>
 
 namespace gfec {
 
@@ -27,6 +32,7 @@ struct RunOptions {
   bool observable = false;  ///< only the observable layer, unindented: what engines print
   bool hooks = false;
   bool check_post = false;
+  std::string html;  ///< the run viewer page ("" = none)
 };
 
 void print(const Diagnostics &diag, const SourceManager &sources, std::ostream &err) {
@@ -53,6 +59,93 @@ int choose_chart(const model::Model &m, const RunOptions &o, std::ostream &err) 
     err << fmt::format("{}: error: the file declares several charts ({}); choose one with --chart NAME\n", o.input,
                        names);
   return -1;
+}
+
+/// The run viewer's recording of an interpreter run (docs/viewer.md): the chart's picture, the
+/// activation after each tick and what each tick did, taken from the run's log. Frame k is
+/// tick k + 1; there is no world and no robot.
+nlohmann::json viewer_data(const model::Model &model, int chart, const interp::RunResult &r, const RunOptions &o) {
+  using nlohmann::json;
+  const model::Chart &c = model.charts.at(static_cast<std::size_t>(chart));
+  const bool fsm = c.kind == model::Chart::Kind::Fsm;
+  json rows = json::array();
+  for (std::size_t i = 0; i < c.places.size(); ++i)
+    rows.push_back({{"name", c.places[i].name}, {"node", fmt::format("p{}", i)},
+                    {"terminal", c.places[i].terminal != model::Terminal::None}});
+  std::string svg, note;
+  try {
+    EmitOptions emit;
+    emit.chart = chart;
+    emit.output_path = "chart.svg";
+    emit.source_name = o.input;
+    if (auto backend = make_backend("svg")) svg = backend->emit(model, emit).at(0).contents;
+  } catch (const std::exception &e) {
+    note = fmt::format("no diagram: {}", e.what());
+  }
+  viewer::ChangeList active, status_list;
+  viewer::CallRecorder calls;
+  json events = json::array();
+  long frame = -1;
+  std::vector<std::string> tick_calls;
+  std::string status = "running";
+  auto finish_tick = [&] {
+    if (frame >= 0) calls.record(frame, tick_calls);
+    tick_calls.clear();
+  };
+  for (const interp::Event &e : r.log.events()) {
+    switch (e.kind) {
+    case interp::EventKind::Tick:
+      finish_tick();
+      ++frame;
+      break;
+    case interp::EventKind::Av: {
+      // "av 1 0 2": the activation of each place after the tick.
+      json on = json::array();
+      std::istringstream counts(e.text.substr(2));
+      unsigned long n = 0;
+      for (int p = 0; counts >> n; ++p)
+        if (n > 0) on.push_back(p);
+      active.record(frame, on);
+      break;
+    }
+    case interp::EventKind::State: {
+      // "state Z3 succeeded": the status is the last word.
+      std::string now = e.text.substr(e.text.rfind(' ') + 1);
+      if (now != status) events.push_back({frame, "status", now});
+      status = now;
+      break;
+    }
+    case interp::EventKind::Fire:
+      events.push_back({frame, fsm ? "state" : "fire", e.text});
+      [[fallthrough]];
+    default:
+      if (interp::layer_of(e.kind) != interp::Layer::Hooks)
+        tick_calls.push_back(std::string(static_cast<std::size_t>(2 * std::max(0, e.depth - 1)), ' ') + e.text);
+    }
+    if (frame >= 0) status_list.record(frame, status);
+  }
+  finish_tick();
+  const long frames = frame + 1;
+  return {
+      {"format", 1},
+      {"tool", "gfec run"},
+      {"title", fmt::format("{} ({}): {} after {} tick{}", c.name, fsm ? "fsm" : "sfc", status, frames,
+                            frames == 1 ? "" : "s")},
+      {"subtitle", fmt::format("gfec run {}{}{} \u00b7 reference interpreter \u00b7 period {:g} ms", o.input,
+                               o.inputs_csv.empty() ? "" : " --inputs ", o.inputs_csv, c.period_ms > 0 ? c.period_ms : 10.0)},
+      {"chart", {{"name", c.name}, {"kind", fsm ? "fsm" : "sfc"}, {"file", o.input}}},
+      {"period", (c.period_ms > 0 ? c.period_ms : 10.0) / 1000},
+      {"frames", frames},
+      {"svg", svg},
+      {"svg_note", note},
+      {"rows", rows},
+      {"active", active.json()},
+      {"calls", calls.json()},
+      {"events", events},
+      {"fired", json::array()},
+      {"status", status_list.json()},
+      {"world", nullptr},
+  };
 }
 
 int run_with(const RunOptions &o, std::ostream &out, std::ostream &err) {
@@ -100,6 +193,13 @@ int run_with(const RunOptions &o, std::ostream &out, std::ostream &err) {
   render.indent = !o.observable;
   out << r.log.render(render);
   print(run_diag, sources, err);
+  if (!o.html.empty()) {
+    std::string failed = write_atomically({{o.html, viewer::page(viewer_data(model, chart, r, o))}}, {o.input, o.inputs_csv});
+    if (!failed.empty()) {
+      err << fmt::format("gfec: error: {}\n", failed);
+      return kExitUsageOrIo;
+    }
+  }
   return r.completed ? kExitOk : kExitInputError;
 }
 
@@ -124,6 +224,8 @@ int run_command(int argc, const char *const *argv, std::ostream &out, std::ostre
   app.add_flag("--observable", o.observable,
                "Print only what an engine's caller can see (calls, activation, state), unindented");
   app.add_flag("--hooks", o.hooks, "Also print what the observation hooks report (lost, gained, enabled)");
+  app.add_option("--html", o.html, "Also write the run viewer: a self-contained HTML page of the run (docs/viewer.md)")
+      ->type_name("FILE");
   app.add_flag("--check-post", o.check_post, "Evaluate a terminal state's postcondition on entering it");
   try {
     app.parse(argc, argv);

@@ -333,7 +333,7 @@ int test_with(const TestOptions &o, std::ostream &out, std::ostream &err) {
     }
   }
   if (!o.junit.empty()) {
-    std::string failure = write_atomically({{o.junit, junit(files, outcomes)}});
+    std::string failure = write_atomically({{o.junit, junit(files, outcomes)}}, o.files);
     if (!failure.empty()) {
       report->tool_error(o.junit, failure, false);
       io_error = true;

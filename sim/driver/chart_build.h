@@ -4,6 +4,7 @@
 // carbot-sim itself, which exports its robot libraries (docs/sim.md, "How a chart is run").
 #pragma once
 
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -19,6 +20,23 @@ struct ChartInfo {
   double period = 0; ///< s, the chart's `period` (0: it gives none)
   /// fsm: a label per state index, "Z1 PickUp()" (the name and the first action's text).
   std::vector<std::string> states;
+  /// The rows of the run viewer's timeline: the places (sfc), states (fsm) or actors (plan) in
+  /// declaration order, each with the id of its node in gfec's DOT/SVG picture ("p3", "a1").
+  struct Row {
+    std::string name;
+    std::string node;
+    bool terminal = false;  ///< an fsm's success or failure state
+  };
+  std::vector<Row> rows;
+  /// A plan's supervisors: "actor/name" (or "name" for a global one) -> node id ("s0_1", "g0").
+  std::map<std::string, std::string> supervisor_nodes;
+  /// An interface function the chart calls: its C result and parameter types (for recording).
+  struct Function {
+    std::string name;
+    std::string result;
+    std::vector<std::string> params;
+  };
+  std::vector<Function> functions;
 };
 
 struct BuiltEngine {
@@ -37,6 +55,11 @@ BuiltEngine build_engine(const Options& options, const std::string& dir);
 
 /// The shim's C source for a C engine of `chart` (exposed for tests).
 std::string c_shim(const ChartInfo& chart);
+/// For a recording build (docs/viewer.md): a header renaming each interface function F the
+/// engine calls to carbot_rec_F, and the C source of those wrappers, which call F and report
+/// the call and its result to carbot-sim. The engine makes the same calls in the same order.
+std::string record_renames(const ChartInfo& chart);
+std::string record_wrappers(const ChartInfo& chart);
 /// The shim's C++ source for a plan engine: the stepped executor around make_NAME(ee), declared
 /// by gfec's engine.hpp when `has_header`.
 std::string cpp_shim(const ChartInfo& chart, bool has_header);

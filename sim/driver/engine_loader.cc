@@ -28,6 +28,8 @@ Engine::Engine(const std::string& library) {
   status_ = reinterpret_cast<int (*)(const void*)>(symbol(handle_, kEngineStatus, library));
   fini_ = reinterpret_cast<void (*)(void*)>(dlsym(handle_, kEngineFini));
   state_ = reinterpret_cast<int (*)(const void*)>(dlsym(handle_, kEngineState));
+  places_ = reinterpret_cast<int (*)()>(dlsym(handle_, kEnginePlaces));
+  activation_ = reinterpret_cast<unsigned (*)(const void*, int)>(dlsym(handle_, kEngineActivation));
   // max_align_t alignment: vector storage comes from operator new, which guarantees it.
   memory_.assign(size() + 1, 0);
 }

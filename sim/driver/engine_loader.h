@@ -36,6 +36,10 @@ class Engine {
   int status() const { return status_(state()); }
   /// An fsm's current state index; -1 for engines without states.
   int current_state() const { return state_ ? state_(state()) : -1; }
+  /// A C engine's places (states), for reading activation; 0 for a plan.
+  int places() const { return places_ ? places_() : 0; }
+  /// X_activation of a C engine's place (read only: the run is not changed by looking).
+  unsigned activation(int place) const { return activation_ ? activation_(state(), place) : 0; }
 
  private:
   void* state() const { return const_cast<unsigned char*>(memory_.data()); }
@@ -46,6 +50,8 @@ class Engine {
   int (*status_)(const void*) = nullptr;
   void (*fini_)(void*) = nullptr;         // optional
   int (*state_)(const void*) = nullptr;   // optional
+  int (*places_)() = nullptr;             // optional (C engines)
+  unsigned (*activation_)(const void*, int) = nullptr;  // optional (C engines)
   bool initialised_ = false;
 };
 

@@ -15,7 +15,14 @@ struct EngineEvent {
 /// The log of the current run (cleared before each run).
 std::vector<EngineEvent>& engine_log();
 
+/// The interface calls of the current tick, as "Left_IR_Black() = true" (a recording build's
+/// wrappers report them; the run loop takes them after each tick).
+std::vector<std::string>& call_log();
+
 }  // namespace carbot::driver
+
+/// Called by a recording build's call wrappers (exported from carbot-sim).
+extern "C" void carbot_sim_call(const char* text);
 
 /// Called by a plan engine's shim (exported from carbot-sim).
 extern "C" void carbot_sim_plan_event(double t, const char* text);

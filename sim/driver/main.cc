@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -14,9 +16,11 @@
 #include "driver/chart_build.h"
 #include "driver/engine_loader.h"
 #include "driver/options.h"
+#include "driver/process.h"
 #include "driver/reports.h"
 #include "driver/run.h"
 #include "safe_output.h"
+#include "viewer_page.h"
 
 namespace fs = std::filesystem;
 using namespace carbot;
@@ -60,6 +64,22 @@ class WorkDir {
   bool owned_ = false;
 };
 
+/// gfec's SVG of the chart for the viewer page, or "" and `note` saying why there is none (the
+/// run goes on without a diagram: Graphviz is optional).
+std::string chart_svg(const Options& o, const std::string& dir, std::string& note) {
+  const std::string path = dir + "/chart.svg";
+  std::string error;
+  const int rc = run_process({o.gfec, "--emit=svg", o.chart, "-o", path}, error);
+  if (rc != 0) {
+    note = rc < 0 ? error : "no diagram: 'gfec --emit=svg' failed (it needs Graphviz's dot)";
+    return "";
+  }
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -79,6 +99,8 @@ int main(int argc, char** argv) {
   app.add_option("--trace", o.trace, "write t,x,y,heading per control tick (CSV)");
   app.add_option("--json", o.json, "write the result (JSON)");
   app.add_option("--svg", o.svg, "write a picture of the world and the path (SVG)");
+  app.add_option("--html", o.html, "write the run viewer: one self-contained HTML page (docs/viewer.md)");
+  app.add_option("--record", o.record, "write the run viewer's recording (JSON, docs/viewer.md)");
   app.add_option("--physics-step", o.physics_step, "physics step in seconds")->capture_default_str()->check(CLI::PositiveNumber);
   auto* period_option = app.add_option("--period", o.period, "control period in seconds (default: the chart's period, else 0.01)")
                            ->check(CLI::PositiveNumber);
@@ -126,6 +148,13 @@ int main(int argc, char** argv) {
     if (!o.trace.empty()) outputs.push_back({o.trace, trace_csv(report)});
     if (!o.json.empty()) outputs.push_back({o.json, result_json(report)});
     if (!o.svg.empty()) outputs.push_back({o.svg, svg_picture(report)});
+    if (o.recording()) {
+      std::string note;
+      const std::string svg = chart_svg(o, dir.path(), note);
+      const nlohmann::json data = viewer_data(report, svg, note);
+      if (!o.html.empty()) outputs.push_back({o.html, gfec::viewer::page(data)});
+      if (!o.record.empty()) outputs.push_back({o.record, data.dump() + "\n"});
+    }
     const std::string error = gfec::safe_output::write_all(outputs, {o.chart, o.world});
     if (!error.empty()) return fail(kUsage, error);
     if (!o.quiet) {

@@ -12,6 +12,8 @@ struct Options {
   std::string trace;          ///< t,x,y,heading per control tick ("" = none)
   std::string json;           ///< result summary ("" = none)
   std::string svg;            ///< picture of the world and the path ("" = none)
+  std::string html;           ///< the run viewer page ("" = none)
+  std::string record;         ///< the run viewer's recording as JSON ("" = none)
   double physics_step = 0.002;///< s
   double period = 0.010;      ///< s, control period
   std::string gfec;           ///< the chart compiler
@@ -23,6 +25,8 @@ struct Options {
   std::string cache_dir;      ///< compiled engines kept here for reuse ("" = no cache)
   std::string work_dir;       ///< keep the generated engine here ("" = a temporary folder, removed)
   bool quiet = false;         ///< no progress, no summary
+  /// Record calls for the viewer: the engine is built with call wrappers (docs/viewer.md).
+  bool recording() const { return !html.empty() || !record.empty(); }
 };
 
 /// Exit codes, as for gfec: 0 the run happened, 1 bad input (chart, world), 2 usage or I/O.

@@ -5,6 +5,8 @@
 
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "core/simulation.h"
 #include "driver/chart_build.h"
 #include "driver/run.h"
@@ -25,5 +27,9 @@ std::string trace_csv(const RunReport& r);
 std::string result_json(const RunReport& r);
 /// The world and the robot's path, with a title and a legend.
 std::string svg_picture(const RunReport& r);
+
+/// The run viewer's recording (docs/viewer.md), which its page embeds: `chart_svg` is gfec's SVG
+/// of the chart ("" with `svg_note` saying why there is none).
+nlohmann::json viewer_data(const RunReport& r, const std::string& chart_svg, const std::string& svg_note);
 
 }  // namespace carbot::driver

@@ -18,9 +18,31 @@ struct TraceRow {
   double heading_deg = 0;
 };
 
+/// What the run viewer needs beyond the path (docs/viewer.md), one entry per trace row ("frame"):
+/// row k holds the pose before tick k's engine call and what that call did.
+struct Recording {
+  /// The timeline rows (ChartInfo::rows) active after the frame's engine call: the places
+  /// with activation > 0 (sfc), the current state (fsm), the running actor (plan).
+  std::vector<std::vector<int>> active;
+  /// The frame's interface calls with their results (a recording build only; else empty).
+  std::vector<std::vector<std::string>> calls;
+  /// The frame of each engine_log() entry (same order).
+  std::vector<long> log_frames;
+  /// A plan's supervisor firings: frame, node id in the picture, "touch (searchFirstWall)".
+  struct Fired {
+    long frame;
+    std::string node;
+    std::string text;
+  };
+  std::vector<Fired> fired;
+  /// Per item, per frame: held, and where it lies when not held.
+  std::vector<std::vector<ItemState>> items;
+};
+
 struct RunResult {
   std::string status = "running";  ///< running | succeeded | failed | terminated
   std::vector<TraceRow> trace;
+  Recording recording;
   double wall_seconds = 0;         ///< real time the run took (not in any output file)
 };
 

@@ -1,0 +1,146 @@
+// The run viewer's recording of a carbot-sim run (docs/viewer.md): the world, the path, the
+// chart's picture, activation and calls per tick (as change lists) and the events, as JSON.
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "core/carbot_model.h"
+#include "core/geometry.h"
+#include "driver/engine_log.h"
+#include "driver/reports.h"
+#include "viewer_page.h"
+
+namespace carbot::driver {
+namespace {
+
+using nlohmann::json;
+
+double r4(double v) { return std::round(v * 1e4) / 1e4; }
+json point(Vec2 p) { return json::array({r4(p.x), r4(p.y)}); }
+
+/// The world with every default filled in, in the world file's shape.
+json world_json(const World& w) {
+  json line = nullptr;
+  if (!w.line.points.empty()) {
+    json pts = json::array();
+    for (const Vec2& p : w.line.points) pts.push_back(point(p));
+    line = {{"width", w.line.width}, {"closed", w.line.closed}, {"points", pts}};
+  }
+  json walls = json::array(), boxes = json::array();
+  for (const Wall& wl : w.walls)
+    walls.push_back({{"from", point(wl.from)}, {"to", point(wl.to)}, {"thickness", wl.thickness}, {"height", wl.height}});
+  for (const Box& b : w.boxes) boxes.push_back({{"center", point(b.center)}, {"size", point(b.size)}, {"height", b.height}});
+  return {{"name", w.name}, {"file", w.path}, {"size", point(w.size)}, {"line", line}, {"walls", walls}, {"boxes", boxes}};
+}
+
+/// The path as delta-coded integers (mm and 0.01 degree): a 120 s run at 10 ms is 12,001 poses.
+json pose_json(const std::vector<TraceRow>& trace) {
+  json xs = json::array(), ys = json::array(), hs = json::array();
+  long px = 0, py = 0, ph = 0;
+  for (const TraceRow& t : trace) {
+    const long x = std::lround(t.x * 1000), y = std::lround(t.y * 1000), h = std::lround(t.heading_deg * 100);
+    xs.push_back(x - px);
+    ys.push_back(y - py);
+    hs.push_back(h - ph);
+    px = x, py = y, ph = h;
+  }
+  return {{"scale", 1000}, {"heading_scale", 100}, {"x", xs}, {"y", ys}, {"h", hs}};
+}
+
+}  // namespace
+
+json viewer_data(const RunReport& r, const std::string& chart_svg, const std::string& svg_note) {
+  const Simulation& sim = r.sim;
+  const Recording& rec = r.run.recording;
+  const double period = sim.config().control_period;
+  const long frames = static_cast<long>(r.run.trace.size());
+  auto frame_of = [&](double t) { return std::clamp(std::lround(t / period), 0L, std::max(0L, frames - 1)); };
+
+  json rows = json::array();
+  for (const ChartInfo::Row& row : r.chart.rows)
+    rows.push_back({{"name", row.name}, {"node", row.node}, {"terminal", row.terminal}});
+
+  gfec::viewer::ChangeList active;
+  gfec::viewer::CallRecorder calls;
+  for (long k = 0; k < frames; ++k) {
+    active.record(k, k < static_cast<long>(rec.active.size()) ? json(rec.active[k]) : json::array());
+    calls.record(k, k < static_cast<long>(rec.calls.size()) ? rec.calls[k] : std::vector<std::string>());
+  }
+
+  // Events: [frame, kind, text], in frame order.
+  std::vector<std::tuple<long, std::string, std::string>> events;
+  json bumps = json::array();
+  for (const Bump& b : sim.bump_log()) {
+    events.emplace_back(frame_of(b.t), "bump", fmt::format("bump at ({:.2f}, {:.2f})", b.at.x, b.at.y));
+    bumps.push_back({frame_of(b.t), r4(b.at.x), r4(b.at.y)});
+  }
+  for (const SimNote& n : sim.notes()) events.emplace_back(frame_of(n.t), "note", n.text);
+  for (std::size_t i = 0; i < engine_log().size() && i < rec.log_frames.size(); ++i) {
+    const std::string& text = engine_log()[i].text;
+    const std::string kind = text.rfind("state ", 0) == 0                    ? "state"
+                             : text.rfind("start ", 0) == 0                  ? "actor"
+                             : text.find(" interrupted by ") != std::string::npos ? "supervisor"
+                                                                                  : "note";
+    events.emplace_back(rec.log_frames[i], kind, text);
+  }
+  json items = json::array();
+  const std::vector<ItemState>& first = rec.items.empty() ? sim.items() : rec.items.front();
+  for (std::size_t i = 0; i < first.size(); ++i) {
+    gfec::viewer::ChangeList track;
+    bool held = false;
+    for (long k = 0; k < static_cast<long>(rec.items.size()); ++k) {
+      const ItemState& it = rec.items[k][i];
+      if (it.held != held)
+        events.emplace_back(k, "item", fmt::format("{} {}", it.name, it.held ? "picked up" : "released"));
+      held = it.held;
+      // While held the item is drawn at the gripper, from the pose: no entry per tick.
+      track.record(k, it.held ? json::array({1}) : json::array({0, r4(it.at.x), r4(it.at.y)}));
+    }
+    items.push_back({{"name", first[i].name}, {"at", point(first[i].at)}, {"destination", point(first[i].destination)},
+                     {"track", track.json()}});
+  }
+  json status = json::array({json::array({0, "running"})});
+  if (r.run.status != "running") {
+    status.push_back({frames - 1, r.run.status});
+    events.emplace_back(frames - 1, "status", r.run.status);
+  }
+  std::stable_sort(events.begin(), events.end(),
+                   [](const auto& a, const auto& b) { return std::get<0>(a) < std::get<0>(b); });
+  json event_list = json::array();
+  for (const auto& [k, kind, text] : events) event_list.push_back({k, kind, text});
+  json fired = json::array();
+  for (const Recording::Fired& f : rec.fired) fired.push_back({f.frame, f.node, f.text});
+
+  return {
+      {"format", 1},
+      {"tool", "carbot-sim"},
+      {"title", fmt::format("{} ({}) on {}: {} at {:.2f} s", r.chart.name, r.chart.kind, sim.world().name,
+                            r.run.status, sim.time())},
+      {"subtitle", fmt::format("carbot-sim {} --world {} \u00b7 {} ticks of {:g} ms \u00b7 {:.2f} m driven \u00b7 {} bump{}",
+                               r.chart_file, sim.world().path, frames, period * 1000, sim.odometer(), sim.bumps(),
+                               sim.bumps() == 1 ? "" : "s")},
+      {"chart", {{"name", r.chart.name}, {"kind", r.chart.kind}, {"file", r.chart_file}}},
+      {"period", period},
+      {"frames", frames},
+      {"svg", chart_svg},
+      {"svg_note", svg_note},
+      {"rows", rows},
+      {"active", active.json()},
+      {"calls", calls.json()},
+      {"calls_note", r.chart.kind == "plan" ? "A plan's actors and supervisors are C++ classes of the toolbox: their "
+                                              "calls are not recorded; the events list their starts and interruptions."
+                                            : ""},
+      {"events", event_list},
+      {"fired", fired},
+      {"status", status},
+      {"world", world_json(sim.world())},
+      {"pose", pose_json(r.run.trace)},
+      {"items", items},
+      {"bumps", bumps},
+      {"robot", {{"length", model::kLength}, {"width", model::kWidth}, {"gripper", model::kGripX}}},
+  };
+}
+
+}  // namespace carbot::driver

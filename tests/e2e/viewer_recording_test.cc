@@ -1,0 +1,185 @@
+// The run viewer's recording (docs/viewer.md): carbot-sim --record / --html on the samples.
+// A recording build must drive the robot exactly as the plain build; what it records must
+// agree with the chart's semantics (an active place's action runs in its tick) and with the
+// trace's `active` column; the page must be one self-contained file.
+#include <algorithm>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <catch2/catch.hpp>
+
+#include "support.h"
+
+namespace {
+
+using nlohmann::json;
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// The value of a change list ([[tick, value], ...]) at `tick`.
+json value_at(const json& list, long tick, const json& fallback) {
+  json v = fallback;
+  for (const json& entry : list) {
+    if (entry[0].get<long>() > tick) break;
+    v = entry[1];
+  }
+  return v;
+}
+
+/// The trace's `active` column, row by row.
+std::vector<std::string> active_column(const std::string& trace_text) {
+  std::vector<std::string> out;
+  std::istringstream in(trace_text);
+  std::string line;
+  std::getline(in, line);
+  REQUIRE(line == "t,x,y,heading,active");
+  while (std::getline(in, line)) out.push_back(line.substr(line.rfind(',') + 1));
+  return out;
+}
+
+struct Recorded {
+  e2e::SimRun run;
+  json rec;
+  std::string page;
+};
+
+Recorded record(const std::string& chart, const std::string& world, double seconds) {
+  e2e::TempDir dir;
+  Recorded r;
+  r.run = e2e::run_sim(chart, world, seconds,
+                       "--record '" + dir.file("rec.json") + "' --html '" + dir.file("run.html") + "'");
+  if (r.run.exit_code == 0) {
+    r.rec = json::parse(slurp(dir.file("rec.json")));
+    r.page = slurp(dir.file("run.html"));
+  }
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("viewer: a recording build drives the robot exactly as the plain build", "[e2e][viewer]") {
+  for (const auto& [chart, world] : {std::pair{"samples/line_follower.sfc", "sim/worlds/oval.json"},
+                                     std::pair{"samples/cleanup.fsm", "sim/worlds/cleanup_drop.json"}}) {
+    const e2e::SimRun plain = e2e::run_sim(chart, world, 30);
+    const Recorded recorded = record(chart, world, 30);
+    REQUIRE(plain.exit_code == 0);
+    REQUIRE(recorded.run.exit_code == 0);
+    CHECK(recorded.run.trace_text == plain.trace_text);
+    CHECK(recorded.run.result["status"] == plain.result["status"]);
+  }
+}
+
+TEST_CASE("viewer: the line follower's recording: places, calls, actions of active places", "[e2e][viewer]") {
+  const Recorded r = record("samples/line_follower.sfc", "sim/worlds/oval.json", 20);
+  REQUIRE(r.run.exit_code == 0);
+  const json& rec = r.rec;
+  CHECK(rec["chart"]["kind"] == "sfc");
+  std::vector<std::string> rows;
+  for (const json& row : rec["rows"]) rows.push_back(row["name"]);
+  CHECK(rows == std::vector<std::string>{"LeftFw", "LeftStop", "RightFw", "RightStop"});
+  CHECK(rec["rows"][1]["node"] == "p1");
+  const long frames = rec["frames"];
+  REQUIRE(frames == static_cast<long>(r.run.trace.size()));
+  CHECK(frames == 2001);
+
+  const std::vector<std::string> column = active_column(r.run.trace_text);
+  REQUIRE(static_cast<long>(column.size()) == frames);
+  // Started astride the line: both sides run.
+  CHECK(column[0] == "LeftFw RightFw");
+  const json& texts = rec["calls"]["texts"];
+  std::set<std::string> changes;
+  long stops = 0;
+  for (long k = 0; k + 1 < frames; ++k) {
+    // The recording's activation is the trace's column.
+    std::string names;
+    for (const json& i : value_at(rec["active"], k, json::array())) names += (names.empty() ? "" : " ") + rows[i.get<std::size_t>()];
+    REQUIRE(names == column[static_cast<std::size_t>(k)]);
+    // Each tick the action of every active place runs (after the conditions): LeftFw calls
+    // Left_FW(), LeftStop calls Left_Stop(), and so on; and only those actions.
+    std::set<std::string> actions, sensed;
+    for (const json& i : value_at(rec["calls"]["ticks"], k, json::array())) {
+      const std::string text = texts[i.get<std::size_t>()];
+      if (text.find(" = ") == std::string::npos)
+        actions.insert(text);
+      else
+        sensed.insert(text.substr(0, text.find(" = ")));
+    }
+    std::set<std::string> expected;
+    for (const json& i : value_at(rec["active"], k, json::array())) {
+      const std::string& p = rows[i.get<std::size_t>()];
+      expected.insert(p == "LeftFw" ? "Left_FW()" : p == "LeftStop" ? "Left_Stop()" : p == "RightFw" ? "Right_FW()" : "Right_Stop()");
+      if (p == "LeftStop") ++stops;
+    }
+    REQUIRE(actions == expected);
+    REQUIRE(!sensed.empty());  // the conditions of the transitions leaving active places
+  }
+  CHECK(stops > 0);  // it did steer within 20 s
+  // Stored as changes: far fewer entries than ticks.
+  CHECK(rec["calls"]["ticks"].size() < static_cast<std::size_t>(frames / 4));
+}
+
+TEST_CASE("viewer: the clean-up's recording follows its states and the cup", "[e2e][viewer]") {
+  const Recorded r = record("samples/cleanup.fsm", "sim/worlds/cleanup_drop.json", 60);
+  REQUIRE(r.run.exit_code == 0);
+  REQUIRE(r.run.result["status"] == "succeeded");
+  const std::vector<std::string> column = active_column(r.run.trace_text);
+  std::vector<std::string> visited;
+  for (const std::string& s : column)
+    if (visited.empty() || visited.back() != s) visited.push_back(s);
+  CHECK(visited == std::vector<std::string>{"Z0", "Z1", "Z2", "Z1", "Z2", "Z3", "Done"});
+  std::vector<std::string> item_events;
+  bool succeeded_last = false;
+  for (const json& e : r.rec["events"]) {
+    if (e[1] == "item") item_events.push_back(e[2]);
+    if (e[1] == "status" && e[2] == "succeeded") succeeded_last = e[0] == r.rec["frames"].get<long>() - 1;
+  }
+  CHECK(item_events == std::vector<std::string>{"cup picked up", "cup released", "cup picked up", "cup released"});
+  CHECK(succeeded_last);
+  CHECK(r.rec["rows"][4]["name"] == "Done");
+  CHECK(r.rec["rows"][4]["terminal"] == true);
+  CHECK(r.rec["rows"][0]["terminal"] == false);
+}
+
+TEST_CASE("viewer: the wall-follow plan's recording names actors and the supervisor that fired",
+          "[e2e][viewer][plan]") {
+  const Recorded r = record("samples/wall_follow.plan", "sim/worlds/room.json", 20);
+  if (e2e::skipped_for_missing_backend(r.run)) return;
+  REQUIRE(r.run.exit_code == 0);
+  const std::vector<std::string> column = active_column(r.run.trace_text);
+  CHECK(column[0] == "searchFirstWall");
+  REQUIRE(!r.rec["fired"].empty());
+  const json& first = r.rec["fired"][0];
+  CHECK(first[1] == "s0_0");  // the first supervisor of the first actor in gfec's picture
+  CHECK(first[2] == "touch (searchFirstWall)");
+  // The robot bumps the crate after about 1.6 s, then backs up.
+  const long at = first[0];
+  CHECK(at > 100);
+  CHECK(at < 250);
+  CHECK(column[static_cast<std::size_t>(at + 1)] == "backupCollision");
+}
+
+TEST_CASE("viewer: the page is one self-contained file", "[e2e][viewer]") {
+  const Recorded r = record("samples/cleanup.fsm", "sim/worlds/cleanup.json", 5);
+  REQUIRE(r.run.exit_code == 0);
+  const std::string& page = r.page;
+  CHECK(page.rfind("<!DOCTYPE html>", 0) == 0);
+  // Nothing is loaded from anywhere: no src or href attributes, no stylesheet links.
+  CHECK(page.find(" src=") == std::string::npos);
+  CHECK(page.find(" href=") == std::string::npos);
+  CHECK(page.find("<link") == std::string::npos);
+  // The data sits in one JSON script element that nothing in the run can close early.
+  const std::string open = "<script type=\"application/json\" id=\"gfec-data\">";
+  const std::size_t from = page.find(open);
+  REQUIRE(from != std::string::npos);
+  const std::size_t to = page.find("</script>", from);
+  const json data = json::parse(page.substr(from + open.size(), to - from - open.size()));
+  CHECK(data["chart"]["name"] == "CleanUp");
+  CHECK(data["svg"].get<std::string>().find("<svg") != std::string::npos);
+  CHECK(data == r.rec);
+}

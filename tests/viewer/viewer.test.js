@@ -1,0 +1,236 @@
+// The run viewer in a real browser (docs/viewer.md): Debian's Chromium, headless, driven by
+// puppeteer-core. For each sample run the page is loaded from disk, moved to chosen ticks with
+// its own controls (scrubber, keyboard, buttons), and what it lights is compared with what the
+// run recorded *outside the page*: carbot-sim's trace CSV (its `active` column) or the `av`
+// lines of `gfec run --observable`. Play must advance time; the page must log no console error.
+// A screenshot of each page is kept in $VIEWER_OUT as a test artifact.
+//
+// Environment: GFEC, CARBOT_SIM (may be empty: no simulator runs), VIEWER_PLANS (1: carbot-sim
+// runs plans), GFEC_SOURCE_DIR, VIEWER_OUT, CHROMIUM (the browser executable).
+'use strict';
+
+const { test, before, after } = require('node:test');
+const assert = require('node:assert/strict');
+const { execFileSync } = require('node:child_process');
+const fs = require('node:fs');
+const os = require('node:os');
+const path = require('node:path');
+const puppeteer = require('puppeteer-core');
+
+const src = process.env.GFEC_SOURCE_DIR;
+const out = process.env.VIEWER_OUT;
+const gfec = process.env.GFEC;
+const sim = process.env.CARBOT_SIM || '';
+fs.mkdirSync(out, { recursive: true });
+
+let browser;
+let profile;
+
+before(async () => {
+  profile = fs.mkdtempSync(path.join(os.tmpdir(), 'gfec-viewer-chromium-'));
+  browser = await puppeteer.launch({
+    executablePath: process.env.CHROMIUM,
+    headless: true,
+    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+           '--disable-background-networking', '--disable-component-update', '--disable-sync',
+           `--user-data-dir=${profile}`],
+    defaultViewport: { width: 1400, height: 900 },
+  });
+});
+
+after(async () => {
+  if (browser) await browser.close();
+  fs.rmSync(profile, { recursive: true, force: true });
+});
+
+/// carbot-sim's trace: the `active` column per row, as sorted name lists.
+function traceActivation(csvFile) {
+  const lines = fs.readFileSync(csvFile, 'utf8').trim().split('\n');
+  assert.equal(lines[0], 't,x,y,heading,active');
+  return lines.slice(1).map((l) => {
+    const active = l.split(',')[4];
+    return active ? active.split(' ').sort() : [];
+  });
+}
+
+/// `gfec run --observable`: one `av` line per tick, named by the model's place order.
+function interpreterActivation(chart, inputs) {
+  const model = JSON.parse(execFileSync(gfec, ['--emit=json', chart, '-o', '-'], { encoding: 'utf8' }));
+  const names = (model.places || model.states).map((p) => p.name);
+  const log = execFileSync(gfec, ['run', chart, '--inputs', inputs, '--observable'], { encoding: 'utf8' });
+  return log.split('\n').filter((l) => l.startsWith('av ')).map((l) =>
+    l.slice(3).split(' ').map(Number).flatMap((n, i) => (n > 0 ? [names[i]] : [])).sort());
+}
+
+/// The ticks to check: the first and last, and around every change of the activation (at most
+/// 40 of them, spread over the run).
+function chosenTicks(expected) {
+  const changes = [];
+  for (let k = 1; k < expected.length; ++k)
+    if (expected[k].join() !== expected[k - 1].join()) changes.push(k);
+  const pick = [];
+  const stride = Math.max(1, Math.ceil(changes.length / 40));
+  for (let i = 0; i < changes.length; i += stride) pick.push(changes[i] - 1, changes[i]);
+  pick.push(0, Math.floor(expected.length / 2), expected.length - 1);
+  return [...new Set(pick)].filter((k) => k >= 0 && k < expected.length).sort((a, b) => a - b);
+}
+
+async function openPage(file) {
+  const page = await browser.newPage();
+  const errors = [];
+  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+  page.on('pageerror', (e) => errors.push(String(e)));
+  page.on('requestfailed', (r) => errors.push(`request failed: ${r.url()}`));
+  const requests = [];
+  page.on('request', (r) => requests.push(r.url()));
+  await page.goto('file://' + file, { waitUntil: 'load' });
+  return { page, errors, requests };
+}
+
+/// What the page shows: the names of the lit nodes of the chart (each node's first text line)
+/// and the tick in its readout.
+async function shown(page) {
+  return page.evaluate(() => ({
+    lit: [...document.querySelectorAll('#chart g.node.lit')].map((g) => g.querySelector('text').textContent.trim()).sort(),
+    tick: parseInt(document.getElementById('r-tick').textContent, 10),
+  }));
+}
+
+/// Moves with the scrubber, as a person dragging it would.
+async function scrubTo(page, k) {
+  await page.evaluate((k) => {
+    const s = document.getElementById('scrubber');
+    s.value = String(k);
+    s.dispatchEvent(new Event('input', { bubbles: true }));
+  }, k);
+}
+
+async function checkPage(name, file, expected) {
+  const { page, errors, requests } = await openPage(file);
+  try {
+    const frames = await page.$eval('#scrubber', (s) => Number(s.max) + 1);
+    assert.equal(frames, expected.length, 'the page has one tick per recorded row');
+
+    // Chosen ticks through the scrubber.
+    const ticks = chosenTicks(expected);
+    for (const k of ticks) {
+      await scrubTo(page, k);
+      const s = await shown(page);
+      assert.equal(s.tick, k);
+      assert.deepEqual(s.lit, expected[k], `${name}: lit places at tick ${k}`);
+    }
+    // One tick at a time with the keyboard, forward and back, across the first change.
+    const firstChange = ticks.find((k) => k > 0 && expected[k].join() !== expected[k - 1].join()) || 1;
+    await scrubTo(page, firstChange - 2 >= 0 ? firstChange - 2 : 0);
+    let k = (await shown(page)).tick;
+    for (let i = 0; i < 4 && k + 1 < frames; ++i) {
+      await page.keyboard.press('ArrowRight');
+      k += 1;
+      const s = await shown(page);
+      assert.equal(s.tick, k, 'ArrowRight steps one tick');
+      assert.deepEqual(s.lit, expected[k], `${name}: lit places at tick ${k} (keyboard)`);
+    }
+    await page.keyboard.press('ArrowLeft');
+    assert.equal((await shown(page)).tick, k - 1, 'ArrowLeft steps one tick back');
+    await page.click('#b-fwd');
+    assert.equal((await shown(page)).tick, k, 'the step button steps one tick');
+
+    // Play advances time (at 1x, half a second is ~50 ticks of 10 ms), then pause holds it.
+    // (a short run plays at 0.25x so that it is still playing when paused)
+    await scrubTo(page, 0);
+    await page.select('#speed', frames < 500 ? '0.25' : '1');
+    await page.click('#b-play');
+    await new Promise((r) => setTimeout(r, 700));
+    const during = (await shown(page)).tick;
+    await page.keyboard.press(' ');
+    const paused = (await shown(page)).tick;
+    await new Promise((r) => setTimeout(r, 300));
+    assert.ok(during > 0, `${name}: play advanced time (tick ${during})`);
+    assert.equal((await shown(page)).tick, paused, 'pause holds the tick');
+    assert.deepEqual((await shown(page)).lit, expected[paused], `${name}: lit places after playing to ${paused}`);
+
+    // Clicking the timeline jumps there.
+    const box = await page.$eval('#timeline', (c) => {
+      c.scrollIntoView();
+      const r = c.getBoundingClientRect();
+      return [r.x, r.y, r.width];
+    });
+    await page.mouse.click(box[0] + 150 + (box[2] - 158) / 2, box[1] + 30);
+    const mid = (await shown(page)).tick;
+    assert.ok(Math.abs(mid - (frames - 1) / 2) <= frames / 100 + 1, `${name}: timeline click at the middle went to ${mid}`);
+
+    // The screenshot: at a tick 60% through the run.
+    await scrubTo(page, Math.floor((frames - 1) * 0.6));
+    await page.screenshot({ path: path.join(out, `viewer-${name}.png`) });
+    assert.deepEqual(errors, [], `${name}: console errors`);
+    assert.deepEqual(requests.filter((u) => !u.startsWith('file://') && !u.startsWith('data:')), [],
+                     `${name}: the page loads nothing from elsewhere`);
+    const size = fs.statSync(file).size;
+    console.log(`${name}: ${frames} ticks, ${ticks.length} chosen ticks checked, page ${(size / 1024).toFixed(0)} KiB, ` +
+                `screenshot ${path.join(out, `viewer-${name}.png`)}`);
+    return size;
+  } finally {
+    await page.close();
+  }
+}
+
+function simulate(name, chart, world, seconds) {
+  const html = path.join(out, `${name}.html`), csv = path.join(out, `${name}.csv`);
+  execFileSync(sim, [path.join(src, chart), '--world', path.join(src, world), '--seconds', String(seconds),
+                     '--html', html, '--trace', csv, '-q'], { stdio: 'inherit' });
+  return { html, expected: traceActivation(csv) };
+}
+
+const skipSim = sim ? false : 'carbot-sim is not built';
+
+test('line follower page (120 s on the oval)', { skip: skipSim }, async () => {
+  const { html, expected } = simulate('line_follower', 'samples/line_follower.sfc', 'sim/worlds/oval.json', 120);
+  const size = await checkPage('line_follower', html, expected);
+  assert.ok(size < 3 * 1024 * 1024, `a 120 s run at 10 ms stays under 3 MiB (${size} bytes)`);
+});
+
+test('clean-up machine page (the cup drops and is fetched again)', { skip: skipSim }, async () => {
+  const { html, expected } = simulate('cleanup', 'samples/cleanup.fsm', 'sim/worlds/cleanup_drop.json', 60);
+  await checkPage('cleanup', html, expected);
+});
+
+const skipPlan = skipSim || (process.env.VIEWER_PLANS === '1' ? false : 'carbot-sim was built without plans');
+
+test('wall-follow plan page (120 s in the room)', { skip: skipPlan }, async () => {
+  const { html, expected } = simulate('wall_follow', 'samples/wall_follow.plan', 'sim/worlds/room.json', 120);
+  await checkPage('wall_follow', html, expected);
+  // The plan's page names the supervisor that fired: the bump into the crate.
+  const { page } = await openPage(html);
+  try {
+    const fired = await page.evaluate(() => {
+      const ev = [...document.querySelectorAll('#events li')].find((li) => li.textContent.includes('interrupted by touch'));
+      ev.click();
+      return { text: document.getElementById('r-fired').textContent,
+               lit: [...document.querySelectorAll('#chart g.node.fired')].map((g) => g.querySelector('text').textContent) };
+    });
+    assert.match(fired.text, /^touch \(searchFirstWall\) at /);
+    assert.deepEqual(fired.lit, ['touch']);
+  } finally {
+    await page.close();
+  }
+});
+
+test('interpreter run page (gfec run --html)', async () => {
+  const chart = path.join(src, 'samples/line_follower.sfc');
+  const inputs = path.join(src, 'tests/viewer/line_follower_inputs.csv');
+  const html = path.join(out, 'gfec_run.html');
+  execFileSync(gfec, ['run', chart, '--inputs', inputs, '--html', html], { stdio: ['ignore', 'ignore', 'inherit'] });
+  const expected = interpreterActivation(chart, inputs);
+  assert.equal(expected.length, 60);
+  await checkPage('gfec_run', html, expected);
+  // The calls of a tick: tick 11 (frame 10) sees the line under the left sensor and fires T0.
+  const { page } = await openPage(html);
+  try {
+    await scrubTo(page, 10);
+    const calls = await page.$$eval('#calls li', (l) => l.map((li) => li.textContent.trim()));
+    assert.ok(calls.includes('call Left_IR_Black() = true'), calls.join('\n'));
+    assert.ok(calls.some((c) => c.startsWith('fire T0')), calls.join('\n'));
+  } finally {
+    await page.close();
+  }
+});

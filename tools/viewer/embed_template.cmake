@@ -1,0 +1,20 @@
+# Writes OUTPUT, a C++ file defining gfec::viewer::page_template(), from the text of INPUT.
+# The text is split into raw-string pieces of at most 8000 bytes (compilers cap one literal's
+# length) with a delimiter that the template never contains.
+file(READ ${INPUT} text)
+string(FIND "${text}" ")gfecviewer\"" clash)
+if(NOT clash EQUAL -1)
+  message(FATAL_ERROR "${INPUT} contains the raw-string delimiter )gfecviewer\"")
+endif()
+string(LENGTH "${text}" length)
+set(out "// Generated from ${INPUT} by embed_template.cmake. Do not edit.\n#include \"viewer_page.h\"\n\nnamespace gfec::viewer {\n\nconst std::string &page_template() {\n  static const std::string text = std::string()")
+set(pos 0)
+while(pos LESS length)
+  string(SUBSTRING "${text}" ${pos} 8000 piece)
+  string(APPEND out "\n    + R\"gfecviewer(${piece})gfecviewer\"")
+  math(EXPR pos "${pos} + 8000")
+endwhile()
+string(APPEND out ";\n  return text;\n}\n\n} // namespace gfec::viewer\n")
+file(WRITE ${OUTPUT}.tmp "${out}")
+file(COPY_FILE ${OUTPUT}.tmp ${OUTPUT} ONLY_IF_DIFFERENT)
+file(REMOVE ${OUTPUT}.tmp)
