@@ -275,7 +275,9 @@ std::string junit(const std::vector<std::unique_ptr<TestFile>> &files, const std
 }
 
 int test_with(const TestOptions &o, std::ostream &out, std::ostream &err) {
-  auto report = make_report(o.format, err);
+  Options report_options;  // the text style (colour, gutter) as gfec's own defaults give it
+  report_options.diagnostics_format = o.format;
+  auto report = make_report(report_options, err);
   std::vector<std::unique_ptr<TestFile>> files;
   std::vector<std::unique_ptr<Outcome>> outcomes;
   bool io_error = false;
