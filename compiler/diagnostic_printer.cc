@@ -98,7 +98,7 @@ std::string render_text(const Diagnostic &d, const SourceManager &sources, const
                                 paint(style, color, std::string(severity_name(d.severity)) + ":"), d.message);
   if (!d.check.empty()) out += fmt::format(" [{}]", paint(style, color, check_label(d)));
   out += '\n';
-  quote(out, d.range, d.fixits, sources, style);
+  quote(out, d.range, style.fixits ? d.fixits : std::vector<FixIt>{}, sources, style);
   if (style.parseable_fixits) {
     for (const FixIt &f : d.fixits) {
       const SourceFile &file = sources.file(f.range.file);

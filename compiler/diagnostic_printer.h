@@ -13,6 +13,7 @@ namespace gfec {
 struct TextStyle {
   bool color = false;            ///< SGR colours as gcc's defaults (error red, warning magenta, ...)
   bool line_numbers = false;     ///< gcc 12's gutter: "    3 |   A -> B;" and "      |   ^"
+  bool fixits = false;           ///< the fix-it's text under the caret, as gcc prints it
   bool parseable_fixits = false; ///< -fdiagnostics-parseable-fixits: fix-it:"file":{l:c-l:c}:"text"
 };
 

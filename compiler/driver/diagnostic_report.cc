@@ -55,6 +55,7 @@ std::string limit_message(const Diagnostics &diag) {
 TextStyle text_style(const Options &o) {
   TextStyle s;
   s.line_numbers = o.line_numbers;
+  s.fixits = true;
   s.parseable_fixits = o.parseable_fixits;
   if (o.color == ColorMode::Always) s.color = true;
   else if (o.color == ColorMode::Auto) {

@@ -118,6 +118,7 @@ TEST_CASE("text diagnostics: gcc 12's gutter, the fix-it under the caret, parsea
 
   TextStyle gcc12;
   gcc12.line_numbers = true;
+  gcc12.fixits = true;
   gcc12.parseable_fixits = true;
   CHECK(render_text(d, r.sources, gcc12) ==
         "t.sfc:4:23: error: unknown place 'Stoped' [unknown-name]\n"
@@ -209,6 +210,7 @@ std::string first_error(const std::string &text, MemoryFileSystem fs = {}) {
   if (!diag.has_errors()) validate(loaded.program, sources, diag);
   if (diag.all().empty()) return "(no diagnostic)";
   TextStyle style;
+  style.fixits = true;
   style.parseable_fixits = true;
   return render_text(diag.all().front(), sources, style);
 }

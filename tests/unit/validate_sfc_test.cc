@@ -294,10 +294,10 @@ TEST_CASE("validate: -Werror on verbatim code does not hide a chart's other warn
   WarningOptions w = all_warnings();
   w.as_errors = true;
   Run r({{"t.sfc", "sfc S { initial place A { %{ x(); %} } place B; }\n"}}, w);
-  CHECK(r.text() == R"--(t.sfc:1:27: error: verbatim code is copied unchecked: gfec cannot check it [-Wverbatim]
+  CHECK(r.text() == R"--(t.sfc:1:27: error: verbatim code is copied unchecked: gfec cannot check it [-Werror=verbatim]
  sfc S { initial place A { %{ x(); %} } place B; }
                            ^~~~~~~~~~
-t.sfc:1:46: error: place 'B' can never become active [-Wunreachable-place]
+t.sfc:1:46: error: place 'B' can never become active [-Werror=unreachable-place]
  sfc S { initial place A { %{ x(); %} } place B; }
                                               ^
 )--");
