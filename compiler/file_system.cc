@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <sys/stat.h>
 
 namespace gfec {
 
@@ -15,6 +16,12 @@ std::optional<std::string> RealFileSystem::read(const std::string &path) const {
   text << in.rdbuf();
   if (in.bad()) return std::nullopt;
   return text.str();
+}
+
+std::optional<std::string> RealFileSystem::identity(const std::string &path) const {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) return std::nullopt;
+  return std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino);
 }
 
 std::optional<std::string> MemoryFileSystem::read(const std::string &path) const {

@@ -12,11 +12,18 @@ public:
   virtual ~FileSystem() = default;
   /// The whole file, or nothing if it cannot be read.
   virtual std::optional<std::string> read(const std::string &path) const = 0;
+  /// What makes two paths the same file (device and inode), or nothing if it cannot tell:
+  /// "/src/a.iface" and "link/a.iface" through a symlinked folder are one file, read once.
+  virtual std::optional<std::string> identity(const std::string &path) const {
+    (void)path;
+    return std::nullopt;
+  }
 };
 
 class RealFileSystem : public FileSystem {
 public:
   std::optional<std::string> read(const std::string &path) const override;
+  std::optional<std::string> identity(const std::string &path) const override;
 };
 
 class MemoryFileSystem : public FileSystem {
