@@ -44,7 +44,14 @@ void CodeWriter::line_back() {
 
 std::string c_string_literal(std::string_view text) {
   std::string s = "\"";
+  unsigned char previous = 0;
   for (unsigned char c : text) {
+    // "??/" is a trigraph for '\' in C99 (gcc -std=c99 reads them): "?\?" keeps it two '?'.
+    if (c == '?' && previous == '?') {
+      s += "\\?";  // ends in '?' too: the next '?' is escaped as well
+      continue;
+    }
+    previous = c;
     switch (c) {
     case '"': s += "\\\""; break;
     case '\\': s += "\\\\"; break;

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <sys/stat.h>
 
 namespace gfec {
 
@@ -35,6 +36,12 @@ std::vector<std::string> MemoryFileSystem::list(const std::string &dir) const {
     if (parent == dir || (parent.empty() && dir == ".")) names.push_back(p.filename().string());
   }
   return names;
+}
+
+std::optional<std::string> RealFileSystem::identity(const std::string &path) const {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) return std::nullopt;
+  return std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino);
 }
 
 std::optional<std::string> MemoryFileSystem::read(const std::string &path) const {

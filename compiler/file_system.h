@@ -15,12 +15,19 @@ public:
   virtual std::optional<std::string> read(const std::string &path) const = 0;
   /// The names of the files in a folder (for did-you-mean on imports); none if unreadable.
   virtual std::vector<std::string> list(const std::string &dir) const = 0;
+  /// What makes two paths the same file (device and inode), or nothing if it cannot tell:
+  /// "/src/a.iface" and "link/a.iface" through a symlinked folder are one file, read once.
+  virtual std::optional<std::string> identity(const std::string &path) const {
+    (void)path;
+    return std::nullopt;
+  }
 };
 
 class RealFileSystem : public FileSystem {
 public:
   std::optional<std::string> read(const std::string &path) const override;
   std::vector<std::string> list(const std::string &dir) const override;
+  std::optional<std::string> identity(const std::string &path) const override;
 };
 
 class MemoryFileSystem : public FileSystem {

@@ -77,7 +77,10 @@ std::string describe(Tok kind) {
 }
 
 Lexer::Lexer(const SourceManager &sources, FileId file, Diagnostics &diag)
-    : file_(file), text_(sources.file(file).text()), diag_(diag) {}
+    : file_(file), text_(sources.file(file).text()), diag_(diag) {
+  // A UTF-8 byte-order mark, as some Windows editors write, is not part of the text.
+  if (text_.substr(0, 3) == "\xEF\xBB\xBF") pos_ = 3;
+}
 
 Token Lexer::make(Tok kind, std::uint32_t begin) {
   Token t;
@@ -99,7 +102,7 @@ void Lexer::skip_space_and_comments() {
     if (c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v') {
       ++pos_;
     } else if (c == '/' && peek(1) == '/') {
-      while (pos_ < text_.size() && text_[pos_] != '\n') ++pos_;
+      while (pos_ < text_.size() && text_[pos_] != '\n' && text_[pos_] != '\r') ++pos_;
     } else if (c == '/' && peek(1) == '*') {
       std::uint32_t begin = pos_;
       auto close = text_.find("*/", pos_ + 2);
@@ -229,7 +232,7 @@ Token Lexer::string(std::uint32_t begin) {
   std::string value;
   for (;;) {
     char c = peek();
-    if (pos_ >= text_.size() || c == '\n') {
+    if (pos_ >= text_.size() || c == '\n' || c == '\r') {
       return error(begin, pos_, "missing terminating '\"' character");
     }
     ++pos_;

@@ -43,6 +43,7 @@ private:
   enum class State { Loading, Done };
 
   void load(const std::string &path, std::string text) {
+    if (auto id = fs_.identity(path)) by_identity_.emplace(*id, path);
     state_[path] = State::Loading;
     stack_.push_back(path);
     FileId id = sources_.add(path, std::move(text));
@@ -81,6 +82,14 @@ private:
       tried.push_back(path);
       auto text = fs_.read(path);
       if (!text) continue;
+      // The same file by another path (absolute, or through a symlinked folder): read once.
+      if (auto id = fs_.identity(path)) {
+        auto same = by_identity_.find(*id);
+        if (same != by_identity_.end()) {
+          if (state_[same->second] == State::Loading) report_cycle(import, same->second);
+          return;
+        }
+      }
       if (stack_.size() >= kMaxImportDepth) {
         diag_.error(import.range, "import", fmt::format("imports nested more than {} deep", kMaxImportDepth));
         return;
@@ -133,6 +142,7 @@ private:
   Diagnostics &diag_;
   LoadResult &result_;
   std::map<std::string, State> state_;
+  std::map<std::string, std::string> by_identity_;  ///< device:inode -> the path it was read by
   std::vector<std::string> stack_;
 };
 

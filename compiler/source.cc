@@ -7,8 +7,10 @@ namespace gfec {
 SourceFile::SourceFile(std::string path, std::string text)
     : path_(std::move(path)), text_(std::move(text)) {
   line_starts_.push_back(0);
+  // Lines end with LF, CRLF or a lone CR (old Mac files): each is one line end.
   for (std::uint32_t i = 0; i < text_.size(); ++i)
-    if (text_[i] == '\n') line_starts_.push_back(i + 1);
+    if (text_[i] == '\n' || (text_[i] == '\r' && (i + 1 == text_.size() || text_[i + 1] != '\n')))
+      line_starts_.push_back(i + 1);
 }
 
 LineCol SourceFile::line_col(std::uint32_t offset) const {

@@ -48,6 +48,7 @@ struct Selection {
   std::string backend;
   EmitOptions emit;
   std::string error;
+  bool in_input = false;  ///< the error is the input's (nothing to compile in it): exit 1, located
 };
 
 /// Which chart, plan or toolbox of the main file to compile, and with which back end (§5.4).
@@ -97,6 +98,7 @@ Selection select(const model::Model &m, const Options &o) {
     chosen = &candidates.front();
   } else if (candidates.empty()) {
     s.error = skeleton ? "the file declares no toolbox" : "nothing to compile: the file declares no sfc, fsm or plan";
+    s.in_input = true;
     return s;
   } else {
     s.error = fmt::format("the file declares several things to compile ({}); choose one with --chart NAME", list());
@@ -166,6 +168,12 @@ int compile(const Options &o, DiagnosticReport &report, std::ostream &out) {
   if (!ok) return kExitInputError;
   if (o.check_only) return kExitOk;
 
+  if (!s.error.empty() && s.in_input) {
+    Diagnostics located(o.warnings, o.error_limit);
+    located.error({c.model.main_file, 0, 0}, "nothing-to-compile", s.error);
+    report.add(input, located, c.sources);
+    return kExitInputError;
+  }
   if (!s.error.empty()) {
     report.tool_error(input, s.error, true);
     return kExitUsageOrIo;

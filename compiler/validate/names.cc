@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <regex>
 #include <set>
 
 namespace gfec::validation {
@@ -27,6 +28,24 @@ const std::set<std::string> kCppKeywords = {
     "reinterpret_cast", "static_assert", "static_cast", "template", "this", "thread_local", "throw",
     "true", "try", "typeid", "typename", "using", "virtual", "wchar_t", "xor", "xor_eq",
 };
+
+/// Macros and typedefs of the headers a C engine includes (<stdbool.h>, <stdint.h>, <string.h>,
+/// <assert.h>, and <stddef.h>, <limits.h>, <float.h> through them on common targets): an
+/// interface function or a var named `NULL` or `uint8_t` would be replaced or clash there.
+bool is_c_library_name(const std::string &name) {
+  static const std::set<std::string> names = {
+      "NULL", "EOF", "offsetof", "assert", "errno", "static_assert", "size_t", "ptrdiff_t", "max_align_t",
+      "intptr_t", "uintptr_t", "intmax_t", "uintmax_t", "memcpy", "memset", "memcmp", "memmove", "strlen",
+      "__bool_true_false_are_defined", "CHAR_BIT", "MB_LEN_MAX", "SIZE_MAX", "PTRDIFF_MIN", "PTRDIFF_MAX",
+      "SIG_ATOMIC_MIN", "SIG_ATOMIC_MAX", "WCHAR_MIN", "WCHAR_MAX", "WINT_MIN", "WINT_MAX", "NDEBUG"};
+  if (names.count(name)) return true;
+  // intN_t, uintN_t, int_leastN_t, int_fastN_t and their INTn_MAX/_MIN/_C macros; <limits.h>'s
+  // INT_MAX, UCHAR_MAX, LLONG_MIN...; <float.h>'s FLT_*, DBL_*, LDBL_*.
+  static const std::regex patterns(
+      "u?int(_least|_fast)?[0-9]+_t|U?INT(_LEAST|_FAST)?[0-9]+_(MAX|MIN|C)|U?INT(PTR|MAX)_(MAX|MIN|C)|"
+      "(S|U)?CHAR_(MAX|MIN)|U?(SHRT|INT|LONG|LLONG)_(MAX|MIN)|(FLT|DBL|LDBL)_[A-Z0-9_]+");
+  return std::regex_match(name, patterns);
+}
 
 } // namespace
 
@@ -62,6 +81,12 @@ const char *describe(Sym kind) {
 
 bool check_reserved(const ast::Name &name, Sym kind, Diagnostics &diag) {
   const char *language = kCKeywords.count(name.text) ? "C" : kCppKeywords.count(name.text) ? "C++" : nullptr;
+  if (!language && is_c_library_name(name.text)) {
+    diag.error(name.range, "reserved-name",
+               fmt::format("'{}' is a macro or type of the C headers the engine includes and cannot name {}", name.text,
+                           with_article(kind)));
+    return false;
+  }
   if (!language) return true;
   diag.error(name.range, "reserved-name",
              fmt::format("'{}' is a keyword of {} and cannot name {}", name.text, language, with_article(kind)));

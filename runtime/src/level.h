@@ -50,10 +50,15 @@ private:
   std::vector<Watch> watches(const std::vector<Supervision>& list) const;
   const std::string& actor_name() const;
 
-  // Calls the trace hook if there is one: the only cost when there is none.
+  // Calls the trace hook if there is one: the only cost when there is none. A hook that
+  // throws is not called again and its message is kept for the executor (Services::
+  // trace_error), which fails the run: an exception must not unwind through the level, whose
+  // destructor calls the hook again (std::terminate).
   template <class F>
   void trace(F&& call) {
-    if (TraceObserver* observer = services_.trace()) call(*observer);
+    TraceObserver* observer = services_.trace();
+    if (!observer || services_.trace_error()) return;
+    if (auto what = capture([&] { call(*observer); })) services_.set_trace_error(*what);
   }
 
   Plan& plan_;

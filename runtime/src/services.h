@@ -66,6 +66,9 @@ public:
   Configuration& config() const { return config_; }
   /// The trace hook, or nullptr.
   TraceObserver* trace() const { return trace_; }
+  /// What the trace hook threw, if it did (it is not called again); executor thread only.
+  const std::optional<std::string>& trace_error() const { return trace_error_; }
+  void set_trace_error(std::string what) { trace_error_ = std::move(what); }
   /// The plan time now.
   virtual Duration now() const = 0;
   /// The watchers for one plan level.
@@ -74,6 +77,7 @@ public:
 private:
   Configuration& config_;
   TraceObserver* trace_;
+  std::optional<std::string> trace_error_;
 };
 
 /// Runs `f`; returns the message of what it threw, if it threw.

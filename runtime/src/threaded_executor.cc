@@ -32,24 +32,35 @@ struct ThreadedExecutor::Impl final : detail::Services {
   }
 
   // The paper's main loop, one actor step per period or per wake-up.
+  // Nothing escapes it: under start() an exception would reach std::terminate, under run()
+  // it would leave the status NotStarted. A trace hook that throws fails the run.
   Status execute() {
     origin = Clock::now();  // before any supervisor thread exists, so they read it race-free
-    detail::Level level(plan, *this);
-    level.begin();
-    if (level.status() == Status::Running) status.store(Status::Running);
-    while (level.status() == Status::Running) {
-      waker.wait_for(options.actor_period);
-      if (stop_requested.load())
-        level.abort();
-      else
-        level.advance();
-    }
+    Status result = Status::Failed;
+    std::string message;
+    auto failure = detail::capture([&] {
+      detail::Level level(plan, *this);
+      level.begin();
+      if (level.status() == Status::Running && !trace_error()) status.store(Status::Running);
+      while (level.status() == Status::Running && !trace_error()) {
+        waker.wait_for(options.actor_period);
+        if (stop_requested.load())
+          level.abort();
+        else
+          level.advance();
+      }
+      if (level.status() == Status::Running) level.abort();  // the trace hook failed
+      result = level.status();
+      message = level.error();
+    });
+    if (failure) message = *failure, result = Status::Failed;
+    if (trace_error()) message = "trace observer: " + *trace_error(), result = Status::Failed;
     {
       std::lock_guard lock(error_mutex);
-      error = level.error();
+      error = message;
     }
-    status.store(level.status());  // after the error, so that a Failed status has its message
-    return level.status();
+    status.store(result);  // after the error, so that a Failed status has its message
+    return result;
   }
 
   Plan& plan;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fstream>
 #include <initializer_list>
+#include <set>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -35,8 +36,13 @@ class Reader {
     if (!v.is_number()) fail(field, "expected a number");
     double d = v.get<double>();
     if (!std::isfinite(d)) fail(field, "expected a finite number");
+    // Metres, degrees and seconds: past a million of any, a world is a mistake or an attack,
+    // and the physics (ODE asserts on a heading of 1e308) would not survive it.
+    if (std::fabs(d) > kMaxMagnitude) fail(field, fmt::format("expected a number between -{0:g} and {0:g}, got {1:g}", kMaxMagnitude, d));
     return d;
   }
+
+  static constexpr double kMaxMagnitude = 1e6;
 
   double positive(const json& v, const std::string& field) const {
     double d = number(v, field);
@@ -191,14 +197,33 @@ std::string stem(const std::string& path) {
 
 World parse_world(const std::string& text, const std::string& path) {
   json doc;
+  // A key given twice in one object would silently keep the last: refused, naming the key.
+  std::vector<std::set<std::string>> keys;  // the keys seen, per open object
+  std::string duplicate;
+  auto callback = [&](int, json::parse_event_t event, json& parsed) {
+    if (event == json::parse_event_t::object_start) keys.emplace_back();
+    else if (event == json::parse_event_t::object_end && !keys.empty()) keys.pop_back();
+    else if (event == json::parse_event_t::key && !keys.empty() && duplicate.empty()) {
+      std::string key = parsed.get<std::string>();
+      if (!keys.back().insert(key).second) duplicate = std::move(key);
+    }
+    return true;
+  };
   try {
-    doc = json::parse(text);
+    doc = json::parse(text, callback);
   } catch (const json::parse_error& e) {
     std::string msg = e.what();
     size_t cut = msg.find("syntax error");  // drop nlohmann's "[json.exception...] parse error at..." prefix
     throw WorldError(fmt::format("{}:{}: not valid JSON: {}", path, where(text, e.byte ? e.byte - 1 : 0),
                                  cut == std::string::npos ? msg : msg.substr(cut)));
+  } catch (const json::exception& e) {
+    // e.g. a number too large for a double (1e309): nlohmann reports it as out_of_range.
+    std::string msg = e.what();
+    size_t cut = msg.find("] ");
+    throw WorldError(fmt::format("{}: not a usable JSON document: {}", path,
+                                 cut == std::string::npos ? msg : msg.substr(cut + 2)));
   }
+  if (!duplicate.empty()) throw WorldError(fmt::format("{}: {}: the key is given twice in one object", path, duplicate));
   Reader r(path);
   r.object(doc, "", {"description", "size", "line", "walls", "boxes", "items", "start", "events"});
 

@@ -10,6 +10,8 @@
 
 #include <fmt/format.h>
 
+#include "safe_output.h"
+
 namespace fs = std::filesystem;
 
 namespace carbot::driver {
@@ -65,11 +67,13 @@ void EngineCache::store(const std::string& key, const std::string& output) const
   if (dir_.empty()) return;
   std::error_code ec;
   fs::create_directories(dir_, ec);
-  // Copy then rename, so a parallel run never loads a half-copied file.
-  const fs::path tmp = fs::path(dir_) / fmt::format("{}.{}.tmp", key, static_cast<long>(getpid()));
-  if (fs::copy_file(output, tmp, fs::copy_options::overwrite_existing, ec))
-    fs::rename(tmp, fs::path(dir_) / (key + ".so"), ec);
-  if (ec) fs::remove(tmp, ec);
+  // Through a temporary with an unpredictable name, then renamed (safe_output.h), so a parallel
+  // run never loads a half-copied file and nothing planted in the cache folder is followed.
+  std::ifstream in(output, std::ios::binary);
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  if (!in) return;
+  gfec::safe_output::write_all({{(fs::path(dir_) / (key + ".so")).string(), bytes.str()}}, {});  // a cache: failure is no error
 }
 
 }  // namespace carbot::driver

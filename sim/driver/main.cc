@@ -2,11 +2,18 @@
 //   carbot-sim CHART --world W.json [--seconds S] [--trace t.csv] [--json r.json] [--svg p.svg]
 #include <unistd.h>
 
+#include <pthread.h>
+#include <signal.h>
+
+#include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <mutex>
+#include <thread>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -58,6 +65,7 @@ class WorkDir {
     if (owned_) fs::remove_all(path_, ignored);
   }
   const std::string& path() const { return path_; }
+  bool owned() const { return owned_; }
 
  private:
   std::string path_;
@@ -80,6 +88,81 @@ std::string chart_svg(const Options& o, const std::string& dir, std::string& not
   return text.str();
 }
 
+/// A number option that must be finite and within [low, high]: CLI11's checks let "nan" and
+/// "1e300" through, which ran zero ticks or overflowed the tick count.
+CLI::Validator finite_in(double low, double high) {
+  return CLI::Validator(
+      [low, high](std::string& text) -> std::string {
+        double v = 0;
+        try {
+          std::size_t used = 0;
+          v = std::stod(text, &used);
+          if (used != text.size()) return "not a number: " + text;
+        } catch (const std::exception&) {
+          return "not a number: " + text;
+        }
+        if (!std::isfinite(v) || v < low || v > high)
+          return fmt::format("expected a number from {:g} to {:g}, got {}", low, high, text);
+        return {};
+      },
+      fmt::format("NUMBER in [{:g}, {:g}]", low, high));
+}
+
+/// The work folder to remove if the run is stopped from outside (owned temporaries only).
+std::string g_work_dir;
+std::mutex g_work_dir_mutex;
+
+/// SIGINT, SIGTERM and SIGHUP are blocked in every thread and taken by this one, which also
+/// ends a run that outlives --timeout (a chart action looping forever cannot be interrupted
+/// in its own thread): it removes the temporary work folder, then lets the signal act (or
+/// exits with kTimeout), so no exit path leaves /tmp/carbot-sim-* behind.
+void start_watchdog(double timeout_seconds) {
+  sigset_t set;
+  sigemptyset(&set);
+  for (int s : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&set, s);
+  pthread_sigmask(SIG_BLOCK, &set, nullptr);
+  std::thread([set, timeout_seconds] {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_seconds);
+    for (;;) {
+      timespec wait{1, 0};
+      if (timeout_seconds > 0) {
+        const double left = std::chrono::duration<double>(deadline - std::chrono::steady_clock::now()).count();
+        if (left <= 0) break;
+        wait.tv_sec = static_cast<time_t>(std::min(left, 3600.0));
+        wait.tv_nsec = static_cast<long>((std::min(left, 3600.0) - static_cast<double>(wait.tv_sec)) * 1e9);
+      } else {
+        wait.tv_sec = 3600;
+      }
+      const int sig = sigtimedwait(&set, nullptr, &wait);
+      if (sig > 0) {
+        {
+          std::lock_guard<std::mutex> lock(g_work_dir_mutex);
+          std::error_code ignored;
+          if (!g_work_dir.empty()) fs::remove_all(g_work_dir, ignored);
+        }
+        // The signal's own action now: safe_output's handler if outputs are being written
+        // (it removes their temporaries), else the default, which ends the process.
+        signal(sig, SIG_DFL);
+        sigset_t one;
+        sigemptyset(&one);
+        sigaddset(&one, sig);
+        pthread_sigmask(SIG_UNBLOCK, &one, nullptr);
+        raise(sig);
+        _exit(128 + sig);
+      }
+    }
+    {
+      std::lock_guard<std::mutex> lock(g_work_dir_mutex);
+      std::error_code ignored;
+      if (!g_work_dir.empty()) fs::remove_all(g_work_dir, ignored);
+    }
+    std::fprintf(stderr, "carbot-sim: error: the run took longer than --timeout %g s of wall-clock time; stopped\n",
+                 timeout_seconds);
+    std::fflush(stderr);
+    _exit(kTimeout);
+  }).detach();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -95,15 +178,17 @@ int main(int argc, char** argv) {
   CLI::App app{"Runs a chart (.sfc, .fsm or .plan) on the ODE-simulated Carbot in a world, headless and deterministic."};
   app.add_option("chart", o.chart, "the chart file")->required();
   app.add_option("--world", o.world, "the world file (JSON, see docs/sim.md)")->required();
-  app.add_option("--seconds", o.seconds, "simulated time limit")->capture_default_str()->check(CLI::PositiveNumber);
+  app.add_option("--seconds", o.seconds, "simulated time limit")->capture_default_str()->check(finite_in(1e-3, 1e6));
   app.add_option("--trace", o.trace, "write t,x,y,heading per control tick (CSV)");
   app.add_option("--json", o.json, "write the result (JSON)");
   app.add_option("--svg", o.svg, "write a picture of the world and the path (SVG)");
   app.add_option("--html", o.html, "write the run viewer: one self-contained HTML page (docs/viewer.md)");
   app.add_option("--record", o.record, "write the run viewer's recording (JSON, docs/viewer.md)");
-  app.add_option("--physics-step", o.physics_step, "physics step in seconds")->capture_default_str()->check(CLI::PositiveNumber);
+  app.add_option("--physics-step", o.physics_step, "physics step in seconds")->capture_default_str()->check(finite_in(1e-5, 0.1));
   auto* period_option = app.add_option("--period", o.period, "control period in seconds (default: the chart's period, else 0.01)")
-                           ->check(CLI::PositiveNumber);
+                           ->check(finite_in(1e-4, 10));
+  app.add_option("--timeout", o.timeout, "stop the run after this many seconds of wall-clock time (0: no limit)")
+      ->capture_default_str()->check(finite_in(0, 1e7));
   app.add_option("--gfec", o.gfec, "the chart compiler (env CARBOT_SIM_GFEC)")->capture_default_str();
   app.add_option("--cc", o.cc, "C compiler for sfc/fsm engines (env CC)")->capture_default_str();
   app.add_option("--cxx", o.cxx, "C++ compiler for plan engines (env CXX)")->capture_default_str();
@@ -119,6 +204,7 @@ int main(int argc, char** argv) {
   }
 
   const bool period_given = period_option->count() > 0;
+  start_watchdog(o.timeout);
 
   // 1. The world: checked before anything is built, so a typo costs no compile.
   if (!fs::exists(o.world)) return fail(kUsage, fmt::format("{}: no such world file", o.world));
@@ -133,12 +219,22 @@ int main(int argc, char** argv) {
   try {
     // 2. The engine: gfec generates it, the C compiler makes it loadable, we load it.
     WorkDir dir(o.work_dir);
+    if (dir.owned()) {
+      std::lock_guard<std::mutex> lock(g_work_dir_mutex);
+      g_work_dir = dir.path();
+    }
     const BuiltEngine built = build_engine(o, dir.path());
     Engine engine(built.library);
 
     // 3. The run.
     // The chart's own period, unless the command line gives one.
     const double period = period_given || built.chart.period <= 0 ? o.period : built.chart.period;
+    // The tick budget: the trace keeps a row per control tick, and physics steps cost time.
+    const double control_ticks = o.seconds / period, physics_steps = o.seconds / o.physics_step;
+    if (control_ticks > kMaxControlTicks || physics_steps > kMaxPhysicsSteps)
+      return fail(kUsage, fmt::format("--seconds {:g} is {:.3g} control ticks and {:.3g} physics steps; the budget is "
+                                      "{:g} and {:g} (a shorter run, a longer --period or --physics-step)",
+                                      o.seconds, control_ticks, physics_steps, kMaxControlTicks, kMaxPhysicsSteps));
     Simulation sim(world, SimConfig{o.physics_step, period});
     const RunResult result = run_engine(sim, engine, built.chart, o.seconds, o.quiet);
 

@@ -27,9 +27,15 @@ struct Options {
   bool quiet = false;         ///< no progress, no summary
   /// Record calls for the viewer: the engine is built with call wrappers (docs/viewer.md).
   bool recording() const { return !html.empty() || !record.empty(); }
+  double timeout = 0;         ///< wall-clock budget in seconds (0 = none)
 };
 
-/// Exit codes, as for gfec: 0 the run happened, 1 bad input (chart, world), 2 usage or I/O.
-enum Exit { kOk = 0, kBadInput = 1, kUsage = 2 };
+/// The tick budget: at most this many control ticks (a trace row each) and physics steps.
+constexpr double kMaxControlTicks = 1e7;
+constexpr double kMaxPhysicsSteps = 1e9;
+
+/// Exit codes, as for gfec: 0 the run happened, 1 bad input (chart, world), 2 usage or I/O;
+/// kTimeout: the run outlived --timeout.
+enum Exit { kOk = 0, kBadInput = 1, kUsage = 2, kTimeout = 3 };
 
 }  // namespace carbot::driver

@@ -1,5 +1,6 @@
 #include "driver/process.h"
 
+#include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
 
@@ -15,7 +16,16 @@ int run_process(const std::vector<std::string>& argv, std::string& error) {
   for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
   pid_t pid = 0;
-  const int rc = posix_spawnp(&pid, args[0], nullptr, nullptr, args.data(), environ);
+  // carbot-sim blocks SIGINT/SIGTERM/SIGHUP in its threads (main.cc's watchdog takes them); the
+  // compilers it runs get the default mask, so they stop (and clean up) on a signal themselves.
+  posix_spawnattr_t attr;
+  posix_spawnattr_init(&attr);
+  sigset_t none;
+  sigemptyset(&none);
+  posix_spawnattr_setsigmask(&attr, &none);
+  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGMASK);
+  const int rc = posix_spawnp(&pid, args[0], nullptr, &attr, args.data(), environ);
+  posix_spawnattr_destroy(&attr);
   if (rc != 0) {
     error = std::string("cannot run ") + argv[0] + ": " + std::strerror(rc);
     return -1;

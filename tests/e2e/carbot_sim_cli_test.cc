@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <sys/wait.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -124,4 +125,53 @@ TEST_CASE("carbot-sim: never writes over the world, the chart, a FIFO or one fil
   CHECK(std::filesystem::exists(trace));
   for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(trace).parent_path()))
     CHECK(entry.path().filename().string().find("tmp") == std::string::npos);
+}
+
+TEST_CASE("carbot-sim: command-line numbers are finite and in range; the run has budgets", "[e2e][cli]") {
+  e2e::TempDir dir;
+  const std::string base = q(e2e::source("samples/line_follower.sfc")) + " --world " +
+                           q(e2e::source("sim/worlds/oval.json")) + " -q";
+  std::string out;
+  // nan and 1e17 once ran zero ticks and exited 0; 1e300 overflowed the tick count.
+  for (const std::string& bad : {"--seconds nan", "--seconds 1e17", "--seconds -1", "--period 1e300", "--period inf",
+                                 "--physics-step 0", "--physics-step nan", "--timeout -1", "--seconds 5x"}) {
+    INFO(bad);
+    CHECK(run_cli(base + " " + bad, out, dir) == 2);
+    CHECK(out.find(bad.substr(0, bad.find(' '))) != std::string::npos);  // names the option
+  }
+  // The tick budget: 1e5 s at a 10 us physics step is 1e10 steps.
+  CHECK(run_cli(base + " --seconds 100000 --physics-step 0.00001", out, dir) == 2);
+  CHECK(out.find("physics steps; the budget is") != std::string::npos);
+}
+
+TEST_CASE("carbot-sim: --timeout stops a chart that loops forever; no temporary folder is left", "[e2e][cli]") {
+  e2e::TempDir dir;
+  const std::string tmp = dir.file("tmp");
+  std::filesystem::create_directories(tmp);
+  {
+    std::ifstream i(e2e::source("samples/linebot.iface"));
+    std::ofstream(dir.file("linebot.iface")) << i.rdbuf();
+    std::ofstream(dir.file("loop.sfc")) << "import \"linebot.iface\";\n"
+                                           "sfc Loop {\n  period 10ms;\n  initial place A { Left_FW(); %{ for (;;) {} %} }\n}\n";
+  }
+  const std::string env = "TMPDIR=" + q(tmp) + " CARBOT_SIM_CACHE= ";
+  const std::string sim = std::string(CARBOT_SIM) + " " + q(dir.file("loop.sfc")) + " --world " +
+                          q(e2e::source("sim/worlds/oval.json")) + " -q";
+  const std::string cmd = env + sim;
+  std::string out;
+  const auto start = std::chrono::steady_clock::now();
+  const int status = std::system((cmd + " --timeout 2 >" + q(dir.file("out.txt")) + " 2>&1").c_str());
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  REQUIRE(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 3);
+  CHECK(seconds < 30);
+  std::ifstream log(dir.file("out.txt"));
+  out.assign(std::istreambuf_iterator<char>(log), std::istreambuf_iterator<char>());
+  CHECK(out.find("longer than --timeout 2 s") != std::string::npos);
+  CHECK(std::filesystem::is_empty(tmp));
+
+  // SIGTERM while the engine loops: the temporary work folder goes too.
+  const int term = std::system((env + "timeout -s TERM 3 " + sim + " >/dev/null 2>&1").c_str());
+  CHECK(WEXITSTATUS(term) == 124);  // timeout(1): the command was killed
+  CHECK(std::filesystem::is_empty(tmp));
 }

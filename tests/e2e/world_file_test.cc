@@ -78,3 +78,20 @@ TEST_CASE("world files: carbot-sim refuses a bad world before building anything"
   CHECK(missing.exit_code == 2);
   CHECK(missing.output.find("no such world file") != std::string::npos);
 }
+
+// docs/security.md: every number of a world is finite and in range, every key given once.
+TEST_CASE("world files: absurd numbers and duplicate keys are refused, naming the field", "[e2e][world]") {
+  // 1e309 is past a double: nlohmann reports it as out_of_range, which once escaped (abort).
+  CHECK(error_of(R"({"size": [2, 2], "start": {"pose": [1e309, 0, 0]}})") ==
+        "w.json: not a usable JSON document: number overflow parsing '1e309'");
+  // A heading of 1e308 degrees tripped an ODE assertion.
+  CHECK(error_of(R"({"size": [2, 2], "start": {"pose": [0, 0, 1e308]}})") ==
+        "w.json: start.pose[2]: expected a number between -1e+06 and 1e+06, got 1e+308");
+  CHECK(error_of(std::string(R"({"size": [2, 2], "walls": [{"from": [0, 0], "to": [1, 0], "height": 1e7}], )") +
+                 kStart + "}") == "w.json: walls[0].height: expected a number between -1e+06 and 1e+06, got 1e+07");
+  CHECK(error_of(std::string(R"({"size": [2, 2], "size": [3, 3], )") + kStart + "}") ==
+        "w.json: size: the key is given twice in one object");
+  CHECK(error_of(R"({"size": [2, 2], "start": {"pose": [0, 0, 0], "pose": [1, 1, 0]}})") ==
+        "w.json: pose: the key is given twice in one object");
+  CHECK(error_of(std::string(R"({"size": [1e6, 2], )") + kStart + "}") == "(accepted)");
+}

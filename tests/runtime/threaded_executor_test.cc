@@ -263,3 +263,85 @@ TEST_CASE("threaded: a supervisor that throws fails the plan", "[threaded]") {
   CHECK(a->stops == 1);
   CHECK(s->stops == 1);
 }
+
+namespace {
+
+// A trace hook that throws on the n-th call of actor_started.
+struct ThrowingTrace : afp::TraceObserver {
+  explicit ThrowingTrace(int at) : throw_at(at) {}
+  void actor_started(const afp::Plan&, std::string_view, afp::Duration) override {
+    if (++calls == throw_at) throw std::runtime_error("trace disk full");
+  }
+  int throw_at;
+  int calls = 0;
+};
+
+}  // namespace
+
+TEST_CASE("threaded: a trace hook that throws fails the run, under start() and run() alike", "[threaded]") {
+  for (int at : {1, 2}) {
+    for (bool background : {true, false}) {
+      INFO("throws at call " << at << (background ? " under start()" : " under run()"));
+      afp::Plan plan("P");
+      auto* a = plan.add_actor("a", std::make_unique<FakeActor>(2));
+      auto* b = plan.add_actor("b", std::make_unique<FakeActor>(1000000));
+      plan.define_first_actor(a);
+      plan.define_subsequent(a, FakeActor::DONE, b);
+      plan.define_subsequent(b, FakeActor::DONE, afp::terminate);
+      afp::Configuration config;
+      ThrowingTrace trace(at);
+      afp::ThreadedExecutor exec(plan, config, &trace, fast);
+      Status end;
+      if (background) {
+        exec.start();  // once called std::terminate
+        end = await(exec);
+      } else {
+        end = exec.run();  // once let the exception escape, leaving the status NotStarted
+      }
+      CHECK(end == Status::Failed);
+      CHECK(exec.status() == Status::Failed);
+      CHECK(exec.error() == "trace observer: trace disk full");
+      CHECK(trace.calls == at);  // not called again after it threw
+      CHECK(a->stops == 1);       // the actor it interrupted was stopped
+    }
+  }
+}
+
+TEST_CASE("threaded: an actor that throws in its step fails the run in the executor's thread", "[threaded]") {
+  afp::Plan plan("P");
+  auto* a = plan.add_actor("a", std::make_unique<FakeActor>(5));
+  a->on_step = [](afp::Context&) { throw std::runtime_error("motor stalled"); };
+  plan.define_first_actor(a);
+  plan.define_subsequent(a, FakeActor::DONE, afp::terminate);
+  afp::Configuration config;
+  fakes::Recorder trace;
+  afp::ThreadedExecutor exec(plan, config, &trace, fast);
+  exec.start();
+  CHECK(await(exec) == Status::Failed);
+  CHECK(exec.error() == "a: motor stalled");
+  CHECK(a->stops == 1);
+  REQUIRE(!trace.lines.empty());
+  CHECK(trace.lines.back() == "P: end failed");
+}
+
+TEST_CASE("threaded: start, stop and destroy in quick succession, many times, end cleanly", "[threaded]") {
+  const auto begin = std::chrono::steady_clock::now();
+  for (int i = 0; i < 300; ++i) {
+    afp::Plan plan("P");
+    auto* a = plan.add_actor("a", std::make_unique<FakeActor>(1000000));
+    plan.define_first_actor(a);
+    plan.define_subsequent(a, FakeActor::DONE, afp::terminate);
+    afp::Configuration config;
+    auto exec = std::make_unique<afp::ThreadedExecutor>(plan, config, nullptr, fast);
+    exec->start();
+    if (i % 3 == 1) exec->request_stop();
+    if (i % 3 == 2) std::this_thread::sleep_for(std::chrono::microseconds(200 * (i % 7)));
+    if (i % 5 == 0) {
+      exec->request_stop();
+      CHECK(exec->wait() == Status::Stopped);
+    }
+    exec.reset();  // the destructor stops a run still going and joins every thread
+    CHECK(a->starts == a->stops);
+  }
+  CHECK(std::chrono::steady_clock::now() - begin < 60s);
+}

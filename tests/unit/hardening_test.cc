@@ -197,3 +197,47 @@ TEST_CASE("hardening: did-you-mean stays fast on hostile names, and still helps 
   CHECK(t.out.find("note: did you mean '" + n64 + "'?") != std::string::npos);
   CHECK(t.out.find("did you mean 'Forwards_and_then_some_more'") == std::string::npos);
 }
+
+TEST_CASE("hardening: the smaller input cases of the probe", "[hardening]") {
+  std::string dir = scratch_dir("hardening_small");
+  // A file that declares no chart is an error in the input (1), located, not a usage error (2).
+  write_file(dir + "/only.iface", "interface I { void Go(); }\n");
+  CommandResult none = run_command("cd " + dir + " && " + gfec_exe + " only.iface");
+  CHECK(none.exit_code == 1);
+  CHECK(none.out.find("only.iface:1:1: error: nothing to compile: the file declares no sfc, fsm or plan") !=
+        std::string::npos);
+
+  // A UTF-8 byte-order mark is not part of the text; CR-only line ends are line ends.
+  write_file(dir + "/bom.sfc", "\xEF\xBB\xBFinterface I { void Go(); }\nsfc S { initial place A { Go(); } }\n");
+  CHECK(run_command(gfec_exe + " --check " + dir + "/bom.sfc").exit_code == 0);
+  write_file(dir + "/cr.sfc", "// a comment\rinterface I { void Go(); }\rsfc S { initial place A { Go(); } "
+                              "place B; A -> B when x; }\r");
+  CommandResult cr = run_command("cd " + dir + " && " + gfec_exe + " --check cr.sfc");
+  CHECK(cr.exit_code == 1);
+  CHECK(cr.out.find("cr.sfc:3:56: error: unknown name 'x'") != std::string::npos);
+
+  // Names the C headers of an engine define would be replaced there: the C would not compile.
+  write_file(dir + "/m.iface", "interface I { void NULL(); int UINT32_MAX(); void uint8_t(); void interval_t(); }\n");
+  CommandResult m = run_command("cd " + dir + " && " + gfec_exe + " --check m.iface");
+  CHECK(m.exit_code == 1);
+  CHECK(m.out.find("m.iface:1:20: error: 'NULL' is a macro or type of the C headers") != std::string::npos);
+  CHECK(m.out.find("'UINT32_MAX' is a macro") != std::string::npos);
+  CHECK(m.out.find("'uint8_t' is a macro") != std::string::npos);
+  CHECK(m.out.find("'interval_t' is a macro") == std::string::npos);  // only the headers' own names
+
+  // One file by an absolute path and through a symlinked folder is read once.
+  run_command("mkdir -p " + dir + "/real && ln -sfn real " + dir + "/link");
+  write_file(dir + "/real/a.iface", "interface I { void Go(); }\n");
+  write_file(dir + "/two.sfc", "import \"" + dir + "/real/a.iface\";\nimport \"link/a.iface\";\n"
+                               "sfc S { initial place A { Go(); } }\n");
+  CommandResult two = run_command(gfec_exe + " --check " + dir + "/two.sfc");
+  CHECK(two.exit_code == 0);
+  CHECK(two.out == "");
+
+  // Trigraphs in a file name reach #line escaped: "??-" would be '~' (and -Wtrigraphs) in C99.
+  write_file(dir + "/tri?\?-.sfc", "interface I { void Go(); }\nsfc S { initial place A { Go(); } }\n");
+  CommandResult tri = run_command("cd " + dir + " && " + gfec_exe + " 'tri?\?-.sfc' -o tri.c && "
+                                  "cc -std=c99 -Wall -Wextra -Wpedantic -Werror -c tri.c -o tri.o");
+  CHECK(tri.exit_code == 0);
+  CHECK(read_file(dir + "/tri.c").find("#line 2 \"tri?\\?-.sfc\"") != std::string::npos);
+}
