@@ -24,6 +24,7 @@ enum class Warning {
   ShadowedTransition, ///< an fsm transition an earlier one always pre-empts
   UninitializedConfig,///< a plan reads a config entry that nothing has written
   SupervisorRace,     ///< two supervisors of one actor can fire in the same step
+  AlicaIgnored,       ///< an ALICA plan element gfec has no counterpart for (docs/alica.md)
   Count_
 };
 
