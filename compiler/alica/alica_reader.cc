@@ -85,6 +85,21 @@ public:
       : options_(options), fs_(fs), sources_(sources), diag_(diag), result_(result) {}
 
   void read_main(const std::string &path, std::string text) {
+    std::size_t first_diagnostic = diag_.all().size();
+    read_plan(path, std::move(text));
+    // Messages quote names as "state 'X' (id N)"; an element without a name is "state (id N)".
+    auto unquote = [](std::string &s) {
+      for (auto at = s.find("'' (id "); at != std::string::npos; at = s.find("'' (id ", at)) s.erase(at, 3);
+    };
+    for (std::size_t i = first_diagnostic; i < diag_.all().size(); ++i) {
+      unquote(diag_.all()[i].message);
+      for (auto &n : diag_.all()[i].notes) unquote(n.message);
+    }
+    for (auto &e : result_.elements) unquote(e.description);
+  }
+
+private:
+  void read_plan(const std::string &path, std::string text) {
     Doc *doc = open(normal(path), std::move(text));
     main_ = result_.program.files.front().get();
     if (!doc->root) return;
@@ -103,7 +118,6 @@ public:
     if (main_->interfaces.back().functions.empty()) main_->interfaces.clear();
   }
 
-private:
   SourceRange range(const Doc &d, const JsonValue &v) const { return {d.file, v.begin, v.end}; }
 
   void element(const Doc &d, const JsonValue &v, std::string description) {

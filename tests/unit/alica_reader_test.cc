@@ -347,3 +347,17 @@ TEST_CASE("alica: every fixture, truncated or damaged anywhere, is read without 
       read(damaged);
     }
 }
+
+TEST_CASE("alica: ids above 2^53 are quoted exactly, never rounded", "[alica]") {
+  // 2^63 - 1 and 2^62 + 1: as doubles both would round (to 2^63 and 2^62).
+  std::string plan = R"({ "id" : 9223372036854775807, "name" : "Huge",
+    "entryPoints" : [ { "id" : 4611686018427387905, "name" : "", "state" : 4611686018427387907 } ],
+    "states" : [ { "type" : "State", "id" : 4611686018427387907, "name" : "Spin", "confAbstractPlanWrappers" : [ ] } ],
+    "transitions" : [ { "id" : 4611686018427387909, "name" : "Again", "inState" : 4611686018427387907,
+                        "outState" : 4611686018427387907, "preCondition" : null } ] })";
+  Run r("huge.pml", {{"huge.pml", plan}});
+  INFO(r.text);
+  CHECK(r.text.find("huge.pml:4:23: error: transition from state 'Spin' to itself [self-transition]") != std::string::npos);
+  CHECK(r.text.find("note: this is ALICA transition 'Again' (id 4611686018427387909) of plan 'Huge' (id "
+                    "9223372036854775807)") != std::string::npos);
+}
