@@ -24,7 +24,7 @@ const Keyword kKeywords[] = {
     {"supervisor", Tok::KwSupervisor}, {"supervise", Tok::KwSupervise}, {"events", Tok::KwEvents},
     {"start", Tok::KwStart}, {"terminate", Tok::KwTerminate}, {"ignore", Tok::KwIgnore},
     {"config", Tok::KwConfig}, {"in", Tok::KwIn}, {"out", Tok::KwOut}, {"entry", Tok::KwEntry},
-    {"exit", Tok::KwExit}, {"true", Tok::KwTrue}, {"false", Tok::KwFalse},
+    {"exit", Tok::KwExit}, {"true", Tok::KwTrue}, {"false", Tok::KwFalse}, {"runs", Tok::KwRuns},
 };
 
 bool is_ident_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
@@ -70,6 +70,7 @@ std::string describe(Tok kind) {
   case Tok::OrOr: return "'||'";
   case Tok::Not: return "'!'";
   case Tok::Pipe: return "'|'";
+  case Tok::Dot: return "'.'";
   default: return "token";
   }
 }
@@ -139,6 +140,7 @@ Token Lexer::next() {
   case ';': ++pos_; return make(Tok::Semi, begin);
   case ',': ++pos_; return make(Tok::Comma, begin);
   case ':': ++pos_; return make(Tok::Colon, begin);
+  case '.': ++pos_; return make(Tok::Dot, begin);  // `active(P.Q)`; `.5` is a number (above)
   case '*': ++pos_; return make(Tok::Star, begin);
   case '/': ++pos_; return make(Tok::Slash, begin);
   case '%': ++pos_; return make(Tok::Percent, begin);

@@ -152,6 +152,8 @@ private:
   ActorUse actor_use();
   Rule rule();
   std::vector<ExprPtr> arguments();
+  std::vector<ExprPtr> active_arguments();
+  ExprPtr path(Name first);
 
   // ------------------------------------------------------------ statements and expressions
   Stmt statement();
@@ -335,8 +337,8 @@ Period Parser::period() {
   return {d.duration_ms, from(begin)};
 }
 
-//G place: [ 'initial' ] 'place' IDENT ( ';' | place_body )
-//G state: [ 'initial' | 'success' | 'failure' ] 'state' IDENT [ 'post' expr ] ( ';' | place_body )
+//G place: [ 'initial' ] 'place' IDENT [ 'runs' IDENT ] ( ';' | place_body )
+//G state: [ 'initial' | 'success' | 'failure' ] 'state' IDENT [ 'runs' IDENT ] [ 'post' expr ] ( ';' | place_body )
 Place Parser::place(Chart::Kind) {
   std::uint32_t begin = here();
   Place p;
@@ -349,6 +351,7 @@ Place Parser::place(Chart::Kind) {
     fail(p.terminal != StateKind::Normal ? "expected 'state'" : "expected 'place' or 'state'");
   }
   p.name = name(p.is_state ? "after 'state'" : "after 'place'");
+  if (accept(Tok::KwRuns)) p.runs = name("after 'runs' (the sfc or fsm to run)");
   if (accept(Tok::KwPost)) p.post = expr();
   if (!accept(Tok::Semi)) {
     if (!at(Tok::LBrace)) fail("expected ';' or '{'");
@@ -593,6 +596,37 @@ std::vector<ExprPtr> Parser::arguments() {
   return args;
 }
 
+//G active_arguments: '(' path ')' | arguments
+//G path: IDENT '.' IDENT { '.' IDENT }
+std::vector<ExprPtr> Parser::active_arguments() {
+  if (!(at(Tok::LParen) && peek().kind == Tok::Ident)) return arguments();
+  advance();
+  Name first = name();
+  std::vector<ExprPtr> args;
+  if (at(Tok::Dot)) {
+    args.push_back(path(std::move(first)));
+  } else {
+    // `active(P)`, or an expression that starts with a name: the validator says what is wrong.
+    auto e = make(Expr::Kind::Name, first.range);
+    e->name = std::move(first);
+    args.push_back(std::move(e));
+    if (!at(Tok::RParen) && !at(Tok::Comma)) fail("expected ')' after the place or state");
+    while (accept(Tok::Comma)) args.push_back(expr());
+  }
+  expect(Tok::RParen, "to close the argument list");
+  return args;
+}
+
+/// The rest of `P.Q.R` after its first name.
+ExprPtr Parser::path(Name first) {
+  std::uint32_t begin = first.range.begin;
+  auto e = make(Expr::Kind::Path, first.range);
+  e->path.push_back(std::move(first));
+  while (accept(Tok::Dot)) e->path.push_back(name("after '.' (a place or state of the sub-chart)"));
+  e->range = from(begin);
+  return e;
+}
+
 //G statement: call ';' | IDENT ( '=' | '+=' | '-=' ) expr ';' | VERBATIM
 Stmt Parser::statement() {
   std::uint32_t begin = here();
@@ -680,6 +714,7 @@ ExprPtr Parser::unary() {
 }
 
 //G primary: INT | FLOAT | STRING | DURATION | 'true' | 'false' | IDENT [ arguments ] | '(' expr ')'
+//G         | 'active' active_arguments
 ExprPtr Parser::primary() {
   std::uint32_t begin = here();
   switch (tok_.kind) {
@@ -714,14 +749,20 @@ ExprPtr Parser::primary() {
   }
   case Tok::Ident: {
     Name n = name();
+    if (at(Tok::Dot)) {
+      diag_.error(path(std::move(n))->range, "syntax",
+                  "a path to a sub-chart's place is only read through 'active(...)'");
+      throw SyntaxError{};
+    }
     if (!at(Tok::LParen)) {
       auto e = make(Expr::Kind::Name, n.range);
       e->name = std::move(n);
       return e;
     }
     auto e = make(Expr::Kind::Call, n.range);
+    bool active = n.text == "active";
     e->name = std::move(n);
-    e->args = arguments();
+    e->args = active ? active_arguments() : arguments();
     e->range = from(begin);
     return e;
   }

@@ -14,10 +14,10 @@ enum class Tok {
   KwSfc, KwFsm, KwPlan, KwToolbox, KwInterface, KwImport, KwVar, KwConst, KwInitial, KwPlace,
   KwState, KwTransition, KwWhen, KwSuccess, KwFailure, KwPost, KwPeriod, KwActor, KwComputation,
   KwSupervisor, KwSupervise, KwEvents, KwStart, KwTerminate, KwIgnore, KwConfig, KwIn, KwOut,
-  KwEntry, KwExit, KwTrue, KwFalse,
+  KwEntry, KwExit, KwTrue, KwFalse, KwRuns,
   // punctuation
   LBrace, RBrace, LParen, RParen, Semi, Comma, Colon, Arrow, Assign, PlusAssign, MinusAssign,
-  Plus, Minus, Star, Slash, Percent, Lt, Le, Gt, Ge, EqEq, NotEq, AndAnd, OrOr, Not, Pipe,
+  Plus, Minus, Star, Slash, Percent, Lt, Le, Gt, Ge, EqEq, NotEq, AndAnd, OrOr, Not, Pipe, Dot,
   Error,  ///< a lexical error, already reported
 };
 

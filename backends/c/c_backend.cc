@@ -2,6 +2,7 @@
 
 #include "c_context.h"
 #include "c_emit.h"
+#include "roots.h"
 
 #include <stdexcept>
 
@@ -26,8 +27,8 @@ private:
     if (options.chart >= 0 && static_cast<std::size_t>(options.chart) < model.charts.size())
       return model.charts[static_cast<std::size_t>(options.chart)];
     const model::Chart *found = nullptr;
-    for (const auto &chart : model.charts)
-      if (chart.in_main_file && !found) found = &chart;
+    int root = default_root(model);
+    if (root >= 0) found = &model.charts[static_cast<std::size_t>(root)];
     if (!found && !model.charts.empty()) found = &model.charts.front();
     if (!found) throw std::invalid_argument("c back end: the model has no chart to compile");
     return *found;

@@ -11,9 +11,11 @@ namespace {
 /// A place or state: a box (Grafcet's step, ALICA's state) with its actions under the name.
 /// Initial ones are double-bordered as in Grafcet; terminal fsm states are filled, green for
 /// success and red for failure, and say which they are.
-std::string place_node(const model::Model &m, const model::Chart &c, std::size_t i) {
+std::string place_node(const model::Model &m, const model::Chart &c, std::size_t i, const std::string &id) {
   const model::Place &p = c.places[i];
   std::string label = p.name;
+  // Grafcet's enclosing step: the chart it runs is drawn beside it, in a frame (below).
+  if (p.runs >= 0) label += "\nruns " + m.charts.at(static_cast<std::size_t>(p.runs)).name;
   std::string attrs = "shape=box";
   if (p.initial) attrs += ", peripheries=2";
   if (p.terminal != model::Terminal::None) {
@@ -26,7 +28,7 @@ std::string place_node(const model::Model &m, const model::Chart &c, std::size_t
   if (p.entry) actions = "entry: " + block_text(m, *p.entry) + (actions.empty() ? "" : "\n" + actions);
   if (p.exit) actions += (actions.empty() ? "" : "\n") + std::string("exit: ") + block_text(m, *p.exit);
   if (!actions.empty()) label += "\n" + std::string(12, '-') + "\n" + actions;
-  return fmt::format("  p{} [{}, label={}];\n", i, attrs, quote(label));
+  return fmt::format("  {}p{} [{}, label={}];\n", id, i, attrs, quote(label));
 }
 
 /// Grafcet's double line where a transition forks into several places or several places join
@@ -34,6 +36,54 @@ std::string place_node(const model::Model &m, const model::Chart &c, std::size_t
 std::string sync_bar(const std::string &id, std::size_t width) {
   return fmt::format("  {} [shape=box, label=\"\", peripheries=2, height=0.02, width={:.1f}, fixedsize=true];\n", id,
                      0.6 + 0.6 * static_cast<double>(width));
+}
+
+/// The places and transitions of `c`, every node id prefixed with `id` (empty for the compiled
+/// chart); then, for each place that runs a chart, that instance in a dashed frame named after
+/// the place, linked to it by a dashed line, as Grafcet draws an enclosing step's chart.
+std::string chart_body(const model::Model &m, const model::Chart &c, const std::string &id) {
+  bool fsm = c.kind == model::Chart::Kind::Fsm;
+  std::string out;
+  out += "  // places and states, in declaration order\n";
+  for (std::size_t i = 0; i < c.places.size(); ++i) out += place_node(m, c, i, id);
+
+  out += "  // transitions: a bar each, labelled with its name and condition\n";
+  for (std::size_t i = 0; i < c.transitions.size(); ++i) {
+    const model::Transition &t = c.transitions[i];
+    std::string cond = t.condition ? source_text(m, t.condition->range) : "true";
+    std::string label = t.named || !fsm ? fmt::format("{}: {}", t.name, cond) : cond;
+    std::string bar = fmt::format("{}t{}", id, i), into = bar, from = bar;
+    out += fmt::format("  {} [shape=box, style=filled, fillcolor=black, label=\"\", height=0.05, width=0.5, "
+                       "fixedsize=true, xlabel={}];\n",
+                       bar, quote(label));
+    if (t.inputs.size() > 1) {
+      into = fmt::format("{}join{}", id, i);
+      out += sync_bar(into, t.inputs.size());
+      out += fmt::format("  {} -> {} [arrowhead=none];\n", into, bar);
+    }
+    if (t.outputs.size() > 1) {
+      from = fmt::format("{}fork{}", id, i);
+      out += sync_bar(from, t.outputs.size());
+      out += fmt::format("  {} -> {} [arrowhead=none];\n", bar, from);
+    }
+    for (int p : t.inputs) out += fmt::format("  {}p{} -> {} [arrowhead=none];\n", id, p, into);
+    for (int p : t.outputs) out += fmt::format("  {} -> {}p{};\n", from, id, p);
+  }
+  for (std::size_t i = 0; i < c.places.size(); ++i) {
+    const model::Place &p = c.places[i];
+    if (p.runs < 0) continue;
+    const model::Chart &sub = m.charts.at(static_cast<std::size_t>(p.runs));
+    std::string inner = fmt::format("{}s{}_", id, i);
+    out += fmt::format("  subgraph cluster_{}s{} {{\n", id, i);
+    out += fmt::format("  graph [label={}, style=\"dashed,rounded\", labeljust=l];\n",
+                       quote(fmt::format("{}: {} {}", p.name, sub.kind == model::Chart::Kind::Fsm ? "fsm" : "sfc", sub.name)));
+    out += chart_body(m, sub, inner);
+    out += "  }\n";
+    // To the sub-chart's first place, clipped at the frame: the line reads "this step encloses that".
+    if (!sub.places.empty())
+      out += fmt::format("  {}p{} -> {}p0 [style=dashed, arrowhead=none, lhead=cluster_{}s{}];\n", id, i, inner, id, i);
+  }
+  return out;
 }
 
 } // namespace
@@ -44,31 +94,10 @@ std::string chart_picture(const model::Model &m, const model::Chart &c) {
   if (c.period_ms > 0) title += fmt::format(" (period {})", duration(c.period_ms));
   std::string out = fmt::format("digraph {} {{\n", quote(c.name));
   out += preamble(title);
-  out += "  // places and states, in declaration order\n";
-  for (std::size_t i = 0; i < c.places.size(); ++i) out += place_node(m, c, i);
-
-  out += "  // transitions: a bar each, labelled with its name and condition\n";
-  for (std::size_t i = 0; i < c.transitions.size(); ++i) {
-    const model::Transition &t = c.transitions[i];
-    std::string cond = t.condition ? source_text(m, t.condition->range) : "true";
-    std::string label = t.named || !fsm ? fmt::format("{}: {}", t.name, cond) : cond;
-    out += fmt::format("  t{} [shape=box, style=filled, fillcolor=black, label=\"\", height=0.05, width=0.5, "
-                       "fixedsize=true, xlabel={}];\n",
-                       i, quote(label));
-    std::string into = fmt::format("t{}", i), from = into;
-    if (t.inputs.size() > 1) {
-      into = fmt::format("join{}", i);
-      out += sync_bar(into, t.inputs.size());
-      out += fmt::format("  {} -> t{} [arrowhead=none];\n", into, i);
-    }
-    if (t.outputs.size() > 1) {
-      from = fmt::format("fork{}", i);
-      out += sync_bar(from, t.outputs.size());
-      out += fmt::format("  t{} -> {} [arrowhead=none];\n", i, from);
-    }
-    for (int p : t.inputs) out += fmt::format("  p{} -> {} [arrowhead=none];\n", p, into);
-    for (int p : t.outputs) out += fmt::format("  {} -> p{};\n", from, p);
-  }
+  bool nested = false;
+  for (const auto &p : c.places) nested = nested || p.runs >= 0;
+  if (nested) out += "  compound=true;\n";  // edges may end at a sub-chart's frame
+  out += chart_body(m, c, "");
   out += "}\n";
   return out;
 }

@@ -1,6 +1,7 @@
 #include "json_backend.h"
 
 #include "json_expr.h"
+#include "roots.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -46,10 +47,10 @@ const char *terminal_name(model::Terminal t) {
   return nullptr;
 }
 
-Json chart_document(const model::Model &m, const EmitOptions &o, const model::Chart &c) {
+/// Everything about one chart but the document header: the root's fields, and each sub-chart's.
+void chart_fields(const model::Model &m, const model::Chart &c, Json &doc) {
   bool fsm = c.kind == model::Chart::Kind::Fsm;
   Scope scope{&c, nullptr};
-  Json doc = header(m, o, fsm ? "fsm" : "sfc", c.name, c.range);
   doc["period_ms"] = c.period_ms > 0 ? Json(c.period_ms) : Json(nullptr);
 
   Json places = Json::array();
@@ -68,6 +69,7 @@ Json chart_document(const model::Model &m, const EmitOptions &o, const model::Ch
                       {"exit", block(p.exit)},
                       {"post", p.post ? expression(m, scope, *p.post) : Json(nullptr)},
                       {"timed", p.timed},
+                      {"runs", p.runs >= 0 ? Json(m.charts.at(at(p.runs)).name) : Json(nullptr)},
                       {"location", location(m, p.range)}});
   }
   doc[fsm ? "states" : "places"] = std::move(places);
@@ -114,6 +116,24 @@ Json chart_document(const model::Model &m, const EmitOptions &o, const model::Ch
   Json functions = Json::array();
   for (int f : c.functions) functions.push_back(function(m.functions.at(at(f))));
   doc["functions"] = std::move(functions);
+}
+
+Json chart_document(const model::Model &m, const EmitOptions &o, const model::Chart &c) {
+  Json doc = header(m, o, c.kind == model::Chart::Kind::Fsm ? "fsm" : "sfc", c.name, c.range);
+  chart_fields(m, c, doc);
+  // Every chart the compiled one runs, directly or through others, once, in declaration order
+  // (docs/language.md "Sub-charts"); places name them in `runs`.
+  Json subcharts = Json::array();
+  std::vector<bool> in = charts_in_tree(m, static_cast<int>(&c - m.charts.data()));
+  for (std::size_t i = 0; i < m.charts.size(); ++i) {
+    const model::Chart &sub = m.charts[i];
+    if (!in[i] || &sub == &c) continue;
+    Json j = {{"kind", sub.kind == model::Chart::Kind::Fsm ? "fsm" : "sfc"}, {"name", sub.name}};
+    chart_fields(m, sub, j);
+    j["location"] = location(m, sub.range);
+    subcharts.push_back(std::move(j));
+  }
+  doc["subcharts"] = std::move(subcharts);
   return doc;
 }
 

@@ -25,6 +25,10 @@ const char *kind_name(Expr::Kind k) {
   case Expr::Kind::Unary: return "unary";
   case Expr::Kind::Binary: return "binary";
   case Expr::Kind::Paren: return "paren";
+  case Expr::Kind::Active: return "active";
+  case Expr::Kind::Succeeded: return "succeeded";
+  case Expr::Kind::Failed: return "failed";
+  default: break;
   }
   return "?";
 }
@@ -109,6 +113,22 @@ Json expression_tree(const model::Model &m, const Scope &scope, const Expr &e) {
     j["args"] = args();
     break;
   case Expr::Kind::Paren: j["args"] = args(); break;
+  case Expr::Kind::Active: {
+    // The names along the path, each a place or state of the chart the previous one runs.
+    Json path = Json::array();
+    const model::Chart *chart = scope.chart;
+    for (int p : e.path) {
+      path.push_back(chart ? name_at(chart->places, p) : "?");
+      int runs = chart && p >= 0 && static_cast<std::size_t>(p) < chart->places.size()
+                     ? chart->places[static_cast<std::size_t>(p)].runs : -1;
+      chart = runs >= 0 ? &m.charts.at(static_cast<std::size_t>(runs)) : nullptr;
+    }
+    j["path"] = std::move(path);
+    break;
+  }
+  case Expr::Kind::Succeeded:
+  case Expr::Kind::Failed: j["place"] = scope.chart ? name_at(scope.chart->places, e.index) : "?"; break;
+  default: break;
   }
   return j;
 }

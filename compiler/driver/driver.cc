@@ -8,6 +8,7 @@
 #include "diagnostic_report.h"
 #include "loader.h"
 #include "output_files.h"
+#include "roots.h"
 #include "validate.h"
 
 #include <fmt/format.h>
@@ -63,16 +64,23 @@ Selection select(const model::Model &m, const Options &o) {
     int chart = -1, plan = -1, toolbox = -1;
   };
   std::vector<Candidate> candidates;
+  std::vector<Candidate> named_only;  ///< sub-charts of the main file: compiled alone by name only
   bool skeleton = o.emit == "toolbox-skeleton";
   if (skeleton) {
     for (std::size_t i = 0; i < m.toolboxes.size(); ++i)
       if (m.toolboxes[i].range.file == m.main_file)
         candidates.push_back({"toolbox", m.toolboxes[i].name, -1, -1, static_cast<int>(i)});
   } else {
-    for (std::size_t i = 0; i < m.charts.size(); ++i)
-      if (m.charts[i].in_main_file)
-        candidates.push_back({m.charts[i].kind == model::Chart::Kind::Sfc ? "sfc" : "fsm", m.charts[i].name,
-                              static_cast<int>(i), -1, -1});
+    // The default root rule (docs/language.md "Sub-charts"): a chart another chart runs is
+    // compiled only when --chart names it.
+    std::vector<int> roots = root_charts(m);
+    for (std::size_t i = 0; i < m.charts.size(); ++i) {
+      if (!m.charts[i].in_main_file) continue;
+      bool root = std::find(roots.begin(), roots.end(), static_cast<int>(i)) != roots.end();
+      (root ? candidates : named_only)
+          .push_back({m.charts[i].kind == model::Chart::Kind::Sfc ? "sfc" : "fsm", m.charts[i].name,
+                      static_cast<int>(i), -1, -1});
+    }
     for (std::size_t i = 0; i < m.plans.size(); ++i)
       if (m.plans[i].in_main_file) candidates.push_back({"plan", m.plans[i].name, -1, static_cast<int>(i), -1});
   }
@@ -83,8 +91,9 @@ Selection select(const model::Model &m, const Options &o) {
   };
   const Candidate *chosen = nullptr;
   if (!o.chart.empty()) {
-    for (const auto &c : candidates)
-      if (c.name == o.chart) chosen = &c;
+    for (const auto *from : {&candidates, &named_only})
+      for (const auto &c : *from)
+        if (c.name == o.chart && !chosen) chosen = &c;
     if (!chosen) {
       s.error = candidates.empty() ? fmt::format("no chart, plan or toolbox named '{}' in the file", o.chart)
                                    : fmt::format("no '{}' to compile; the file declares {}", o.chart, list());
@@ -127,6 +136,12 @@ int compile(const Options &o, DiagnosticReport &report, std::ostream &out) {
   const std::string &input = o.inputs.front();
   Compilation c(o);
   bool ok = front_end(input, o, c);
+  Selection s;
+  if (ok && !o.check_only) {
+    s = select(c.model, o);
+    if (s.error.empty() && s.emit.chart >= 0) warn_unused_charts(c.model, s.emit.chart, c.diag);
+    ok = !c.diag.has_errors();  // -Werror
+  }
   report.add(input, c.diag, c.sources);
   if (c.loaded.main_unreadable) {
     report.tool_error(input, fmt::format("cannot read '{}'", input), false);
@@ -135,7 +150,6 @@ int compile(const Options &o, DiagnosticReport &report, std::ostream &out) {
   if (!ok) return kExitInputError;
   if (o.check_only) return kExitOk;
 
-  Selection s = select(c.model, o);
   if (!s.error.empty()) {
     report.tool_error(input, s.error, true);
     return kExitUsageOrIo;

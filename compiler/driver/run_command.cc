@@ -5,6 +5,7 @@
 #include "interpreter/input_trace.h"
 #include "interpreter/run_chart.h"
 #include "loader.h"
+#include "roots.h"
 #include "validate.h"
 
 #include <CLI/CLI.hpp>
@@ -32,18 +33,15 @@ void print(const Diagnostics &diag, const SourceManager &sources, std::ostream &
   for (const auto &d : diag.all()) err << render_text(d, sources);
 }
 
-/// The sfc or fsm of the main file to run: the only one, or the one --chart names.
+/// The sfc or fsm of the main file to run: the one no chart runs (docs/language.md
+/// "Sub-charts"), or the one --chart names.
 int choose_chart(const model::Model &m, const RunOptions &o, std::ostream &err) {
-  std::vector<int> candidates;
+  std::vector<int> candidates = root_charts(m);
   std::string names;
-  for (std::size_t i = 0; i < m.charts.size(); ++i)
-    if (m.charts[i].in_main_file) {
-      candidates.push_back(static_cast<int>(i));
-      names += fmt::format("{}'{}'", names.empty() ? "" : ", ", m.charts[i].name);
-    }
+  for (int c : candidates) names += fmt::format("{}'{}'", names.empty() ? "" : ", ", m.charts[static_cast<std::size_t>(c)].name);
   if (!o.chart.empty()) {
-    for (int c : candidates)
-      if (m.charts[static_cast<std::size_t>(c)].name == o.chart) return c;
+    for (std::size_t c = 0; c < m.charts.size(); ++c)
+      if (m.charts[c].in_main_file && m.charts[c].name == o.chart) return static_cast<int>(c);
     err << fmt::format("{}: error: no sfc or fsm named '{}' to run{}\n", o.input, o.chart,
                        names.empty() ? "" : " (the file declares " + names + ")");
     return -1;

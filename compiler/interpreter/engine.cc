@@ -11,12 +11,51 @@ namespace {
 constexpr std::uint32_t kTimerMax = std::numeric_limits<std::uint32_t>::max();
 } // namespace
 
-Engine::Engine(const model::Model &model, int chart, EngineOptions options)
-    : model_(model), chart_(model.charts.at(static_cast<std::size_t>(chart))), options_(options) {
+Engine::Engine(const model::Model &model, int chart, EngineOptions options) : Engine(model, chart, options, "", 1) {}
+
+Engine::Engine(const model::Model &model, int chart, EngineOptions options, std::string path, int depth)
+    : model_(model), chart_(model.charts.at(static_cast<std::size_t>(chart))), options_(options),
+      path_(std::move(path)), prefix_(path_.empty() ? "" : path_ + "."), depth_(depth) {
+  // The validator rejects charts that run themselves, so this recursion ends.
+  instances_.resize(chart_.places.size());
+  for (std::size_t p = 0; p < chart_.places.size(); ++p) {
+    const model::Place &place = chart_.places[p];
+    if (place.runs >= 0)
+      instances_[p].reset(new Engine(model, place.runs, options, prefix_ + place.name, depth + 1));
+  }
   init();
 }
 
+const Engine *Engine::instance(int place) const {
+  if (place < 0 || static_cast<std::size_t>(place) >= instances_.size()) return nullptr;
+  return instances_[static_cast<std::size_t>(place)].get();
+}
+
+bool Engine::active(const std::vector<int> &path) const {
+  const Engine *e = this;
+  for (std::size_t k = 0; k < path.size(); ++k) {
+    if (!e || e->activation(path[k]) == 0) return false;
+    if (k + 1 < path.size()) e = e->instance(path[k]);
+  }
+  return !path.empty();
+}
+
+bool Engine::outcome(int place, int status) const {
+  const Engine *sub = instance(place);
+  return activation(place) > 0 && sub && sub->is_fsm() && sub->status() == status;
+}
+
+Frame Engine::frame(Environment *env, EventLog *log, std::uint64_t tick) {
+  Frame f{model_, chart_, vars_, timers_, env, log, tick, depth_ + 1};
+  f.engine = this;
+  return f;
+}
+
 void Engine::init() {
+  // Every instance is reset too: an initial place's instance is started by _init (§9); the
+  // others are reset again when their place becomes active.
+  for (auto &sub : instances_)
+    if (sub) sub->init();
   const std::size_t n = chart_.places.size();
   av_.assign(n, 0);
   timers_.assign(n, 0);
@@ -32,7 +71,7 @@ void Engine::init() {
   vars_.clear();
   for (const model::Var &v : chart_.vars) vars_.push_back(Value::zero(v.type));
   // Initialisers are constant: no calls, no vars, no timers (the validator sees to it).
-  Frame f{model_, chart_, vars_, timers_, nullptr, nullptr, 0, 1};
+  Frame f = frame(nullptr, nullptr, 0);
   for (std::size_t i = 0; i < chart_.vars.size(); ++i)
     if (chart_.vars[i].init) vars_[i] = convert(evaluate(*chart_.vars[i].init, f), chart_.vars[i].type, chart_.vars[i].range);
 }
@@ -46,7 +85,14 @@ unsigned Engine::activation(int place) const {
 void Engine::run(Environment &env, EventLog *log) {
   ++tick_;
   if (log) log->add(EventKind::Tick, 0, fmt::format("tick {}", tick_));
-  Frame f{model_, chart_, vars_, timers_, &env, log, tick_, 1};
+  step(env, log, tick_);
+  Frame f = frame(&env, log, tick_);
+  end_of_tick(f);
+  if (log) log_instances(*log);
+}
+
+void Engine::step(Environment &env, EventLog *log, std::uint64_t tick) {
+  Frame f = frame(&env, log, tick);
   if (!started_) {
     // §5.1: the first tick begins with the entry blocks of the initial places.
     started_ = true;
@@ -57,7 +103,58 @@ void Engine::run(Environment &env, EventLog *log) {
     run_fsm(f);
   else
     run_sfc(f);
-  end_of_tick(f);
+}
+
+void Engine::start(int place, Frame &f) {
+  Engine *sub = instances_[static_cast<std::size_t>(place)].get();
+  if (!sub) return;
+  if (f.log) f.log->add(EventKind::Start, depth_, fmt::format("start {}: {}", sub->path_, sub->chart_.name));
+  sub->init();
+}
+
+void Engine::stop(int place, Frame &f) {
+  Engine *sub = instances_[static_cast<std::size_t>(place)].get();
+  if (!sub) return;
+  if (f.log) f.log->add(EventKind::Stop, depth_, fmt::format("stop {}: {}", sub->path_, sub->chart_.name));
+  sub->stop_all(f.env, f.log, f.tick);
+}
+
+void Engine::stop_all(Environment *env, EventLog *log, std::uint64_t tick) {
+  Frame f = frame(env, log, tick);
+  auto leave = [&](int p) {
+    const model::Place &place = chart_.places[static_cast<std::size_t>(p)];
+    stop(p, f);
+    block(EventKind::Exit, "exit", p, place.exit ? &*place.exit : nullptr, f);
+  };
+  if (is_fsm()) {
+    if (status_ == 0) leave(state_);  // a terminal state runs nothing and has no exit
+    return;
+  }
+  for (std::size_t p = 0; p < chart_.places.size(); ++p)
+    if (av_[p] > 0) leave(static_cast<int>(p));
+}
+
+void Engine::tick_instance(int place, Frame &f) {
+  Engine *sub = instances_[static_cast<std::size_t>(place)].get();
+  if (!sub) return;
+  if (f.log) f.log->add(EventKind::RunInstance, depth_, fmt::format("run {}: {}", sub->path_, sub->chart_.name));
+  sub->step(*f.env, f.log, f.tick);
+}
+
+void Engine::log_instances(EventLog &log) const {
+  for (std::size_t p = 0; p < instances_.size(); ++p) {
+    const Engine *sub = instances_[p].get();
+    if (!sub || activation(static_cast<int>(p)) == 0) continue;
+    std::string av = "av " + sub->path_ + ":";
+    for (std::size_t q = 0; q < sub->chart_.places.size(); ++q) av += fmt::format(" {}", sub->activation(static_cast<int>(q)));
+    log.add(EventKind::InstanceAv, 1, std::move(av));
+    if (sub->is_fsm()) {
+      const char *status = sub->status_ == 0 ? "running" : sub->status_ > 0 ? "succeeded" : "failed";
+      log.add(EventKind::InstanceState, 1,
+              fmt::format("state {}: {} {}", sub->path_, sub->chart_.places.at(static_cast<std::size_t>(sub->state_)).name, status));
+    }
+    sub->log_instances(log);
+  }
 }
 
 std::string Engine::label(const model::Transition &t) const {
@@ -73,19 +170,19 @@ bool Engine::condition(int t, Frame &f) {
   const model::Transition &tr = chart_.transitions[static_cast<std::size_t>(t)];
   if (!tr.condition) return true;
   const std::size_t mark = f.log ? f.log->size() : 0;
-  f.depth = 2;
+  f.depth = depth_ + 1;
   bool holds = convert(evaluate(*tr.condition, f), model::Type::Bool, tr.condition->range).b;
-  f.depth = 1;
-  if (f.log) f.log->insert(mark, EventKind::Condition, 1, fmt::format("cond {} = {}", tr.name, holds ? "true" : "false"));
+  if (f.log)
+    f.log->insert(mark, EventKind::Condition, depth_, fmt::format("cond {}{} = {}", prefix_, tr.name, holds ? "true" : "false"));
   return holds;
 }
 
 void Engine::block(EventKind kind, const char *word, int place, const std::vector<model::Stmt> *stmts, Frame &f) {
-  if (f.log) f.log->add(kind, 1, fmt::format("{} {}", word, chart_.places.at(static_cast<std::size_t>(place)).name));
+  if (f.log)
+    f.log->add(kind, depth_, fmt::format("{} {}{}", word, prefix_, chart_.places.at(static_cast<std::size_t>(place)).name));
   if (!stmts) return;
-  f.depth = 2;
+  f.depth = depth_ + 1;
   execute(*stmts, f);
-  f.depth = 1;
 }
 
 void Engine::run_sfc(Frame &f) {
@@ -106,20 +203,26 @@ void Engine::run_sfc(Frame &f) {
     if (!open || !condition(static_cast<int>(t), f)) continue;
     for (int p : tr.inputs) --avail[static_cast<std::size_t>(p)];
     for (int p : tr.outputs) ++add[static_cast<std::size_t>(p)];
-    if (f.log) f.log->add(EventKind::Fire, 1, fmt::format("fire {}: {}", tr.name, label(tr)));
+    if (f.log) f.log->add(EventKind::Fire, depth_, fmt::format("fire {}{}: {}", prefix_, tr.name, label(tr)));
   }
-  // 3. Commit; compare the start of the tick with its end: all exits, then all entries.
+  // 3. Commit; compare the start of the tick with its end: all exits, then all entries. A
+  // place's instance stops before its exit block and starts before its entry block (§9).
   for (std::size_t p = 0; p < n; ++p) av_[p] = avail[p] + add[p];
   for (std::size_t p = 0; p < n; ++p)
-    if (before[p] > 0 && av_[p] == 0) block(EventKind::Exit, "exit", static_cast<int>(p), chart_.places[p].exit ? &*chart_.places[p].exit : nullptr, f);
+    if (before[p] > 0 && av_[p] == 0) {
+      stop(static_cast<int>(p), f);
+      block(EventKind::Exit, "exit", static_cast<int>(p), chart_.places[p].exit ? &*chart_.places[p].exit : nullptr, f);
+    }
   for (std::size_t p = 0; p < n; ++p)
     if (before[p] == 0 && av_[p] > 0) {
       timers_[p] = 0;
+      start(static_cast<int>(p), f);
       block(EventKind::Entry, "entry", static_cast<int>(p), chart_.places[p].entry ? &*chart_.places[p].entry : nullptr, f);
     }
   // The observation hooks: places that lost, then gained activation; transitions whose inputs
-  // are all active now but were not all active at the start of the tick.
-  if (f.log) {
+  // are all active now but were not all active at the start of the tick. Only the root's: the
+  // engine's hooks report the compiled chart.
+  if (f.log && path_.empty()) {
     for (std::size_t p = 0; p < n; ++p)
       if (before[p] > 0 && av_[p] == 0) f.log->add(EventKind::Lost, 1, "lost " + chart_.places[p].name);
     for (std::size_t p = 0; p < n; ++p)
@@ -134,10 +237,13 @@ void Engine::run_sfc(Frame &f) {
       if (!was && is) f.log->add(EventKind::Enabled, 1, "enabled " + tr.name);
     }
   }
-  // 4. Actions of the active places, in declaration order.
-  for (std::size_t p = 0; p < n; ++p)
-    if (av_[p] > 0 && !chart_.places[p].action.empty())
+  // 4. Actions of the active places, in declaration order; each then ticks its instance (§9).
+  for (std::size_t p = 0; p < n; ++p) {
+    if (av_[p] == 0) continue;
+    if (!chart_.places[p].action.empty())
       block(EventKind::Action, "action", static_cast<int>(p), &chart_.places[p].action, f);
+    tick_instance(static_cast<int>(p), f);
+  }
 }
 
 void Engine::run_fsm(Frame &f) {
@@ -146,24 +252,29 @@ void Engine::run_fsm(Frame &f) {
   const std::size_t cur = static_cast<std::size_t>(state_);
   if (timers_[cur] < kTimerMax) ++timers_[cur];
   const int from = state_;
+  int to = from;
   // The first transition leaving the current state whose precondition holds fires (one a tick).
   for (std::size_t t = 0; t < chart_.transitions.size(); ++t) {
     const model::Transition &tr = chart_.transitions[t];
     if (tr.inputs.empty() || tr.outputs.empty() || tr.inputs[0] != from) continue;
     if (!condition(static_cast<int>(t), f)) continue;
-    state_ = tr.outputs[0];
-    model::Terminal terminal = chart_.places[static_cast<std::size_t>(state_)].terminal;
-    if (terminal != model::Terminal::None) status_ = terminal == model::Terminal::Success ? 1 : -1;
-    if (f.log) f.log->add(EventKind::Fire, 1, fmt::format("fire {}: {}", tr.name, label(tr)));
+    to = tr.outputs[0];
+    if (f.log) f.log->add(EventKind::Fire, depth_, fmt::format("fire {}{}: {}", prefix_, tr.name, label(tr)));
     break;
   }
-  const std::size_t now = static_cast<std::size_t>(state_);
-  if (state_ != from) {
+  const std::size_t now = static_cast<std::size_t>(to);
+  if (to != from) {
     const model::Place &old = chart_.places[static_cast<std::size_t>(from)], &neu = chart_.places[now];
+    // The old state's instance stops, then its exit block runs while it is still current; then
+    // the new state becomes current, its instance starts and its entry block runs (§9, §10).
+    stop(from, f);
     block(EventKind::Exit, "exit", from, old.exit ? &*old.exit : nullptr, f);
+    state_ = to;
+    if (neu.terminal != model::Terminal::None) status_ = neu.terminal == model::Terminal::Success ? 1 : -1;
     timers_[now] = 0;
+    start(state_, f);
     block(EventKind::Entry, "entry", state_, neu.entry ? &*neu.entry : nullptr, f);
-    if (f.log) {
+    if (f.log && path_.empty()) {
       f.log->add(EventKind::Lost, 1, "lost " + old.name);
       f.log->add(EventKind::Gained, 1, "gained " + neu.name);
       for (const model::Transition &tr : chart_.transitions)
@@ -171,14 +282,18 @@ void Engine::run_fsm(Frame &f) {
     }
     if (options_.check_post && neu.terminal != model::Terminal::None && neu.post) {
       const std::size_t mark = f.log ? f.log->size() : 0;
-      f.depth = 2;
+      f.depth = depth_ + 1;
       bool holds = convert(evaluate(*neu.post, f), model::Type::Bool, neu.post->range).b;
-      f.depth = 1;
-      if (f.log) f.log->insert(mark, EventKind::Post, 1, fmt::format("post {} = {}", neu.name, holds ? "true" : "false"));
+      if (f.log)
+        f.log->insert(mark, EventKind::Post, depth_, fmt::format("post {}{} = {}", prefix_, neu.name, holds ? "true" : "false"));
     }
   }
+  // The action of the (new) current state, then one tick of its instance; a terminal state has
+  // neither.
   const model::Place &p = chart_.places[now];
+  if (p.terminal != model::Terminal::None) return;
   if (!p.action.empty()) block(EventKind::Action, "action", state_, &p.action, f);
+  tick_instance(state_, f);
 }
 
 void Engine::end_of_tick(Frame &f) {

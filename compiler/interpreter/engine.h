@@ -6,6 +6,8 @@
 #include "evaluator.h"
 
 #include <cstdint>
+#include <memory>
+#include <string>
 #include <vector>
 
 namespace gfec::interp {
@@ -16,16 +18,28 @@ struct EngineOptions {
   bool check_post = false;
 };
 
+/// A sub-chart (docs/language.md "Sub-charts") is an Engine too: each place or state that runs
+/// a chart owns one instance, built with its parent and named by its path from the root
+/// ("Search", "Search.Grab"). Instances are started, ticked and stopped by their parent.
 class Engine {
 public:
   Engine(const model::Model &model, int chart, EngineOptions options = {});
 
-  /// `_init`: the initial marking (or state), timers 0, vars set to their initialisers. Calls
-  /// no code of the chart. Throws RuntimeError if an initialiser has no defined value.
+  /// `_init`: the initial marking (or state), timers 0, vars set to their initialisers, and the
+  /// same for every sub-chart instance. Calls no code of the chart. Throws RuntimeError if an
+  /// initialiser has no defined value.
   void init();
   /// `_run`: one tick. Every event goes to `log` (if given). Throws RuntimeError where C would
   /// have undefined behaviour; the engine is then unusable until init().
   void run(Environment &env, EventLog *log);
+
+  /// The instance that place `place` runs, or null if it runs no chart.
+  const Engine *instance(int place) const;
+  /// `active(P.Q.R)`: every place along `path` is active, each in the instance the previous
+  /// one runs.
+  bool active(const std::vector<int> &path) const;
+  /// `succeeded(P)` (1) / `failed(P)` (-1): P is active and its fsm instance has that status.
+  bool outcome(int place, int status) const;
 
   unsigned activation(int place) const;
   int state() const { return state_; }    ///< fsm: the current state's index
@@ -37,6 +51,20 @@ public:
   bool is_fsm() const { return chart_.kind == model::Chart::Kind::Fsm; }
 
 private:
+  Engine(const model::Model &model, int chart, EngineOptions options, std::string path, int depth);
+  /// One tick of this chart (§5.1 or §7), its events logged from depth `depth_`.
+  void step(Environment &env, EventLog *log, std::uint64_t tick);
+  /// §9: reset place `place`'s instance as `_init` would (no code runs), before its entry block.
+  void start(int place, Frame &f);
+  /// §9: stop place `place`'s instance: the active places of the instance, in declaration
+  /// order, each stopping its own instance and then running its exit block (innermost first).
+  void stop(int place, Frame &f);
+  void stop_all(Environment *env, EventLog *log, std::uint64_t tick);
+  /// §9: one tick of place `place`'s instance, right after the place's action block.
+  void tick_instance(int place, Frame &f);
+  /// The activation (and state) of every running instance, for people: `av Search: 0 1`.
+  void log_instances(EventLog &log) const;
+  Frame frame(Environment *env, EventLog *log, std::uint64_t tick);
   void run_sfc(Frame &f);
   void run_fsm(Frame &f);
   /// Evaluates transition `t`'s condition (absent: true) and logs it.
@@ -49,6 +77,10 @@ private:
   const model::Model &model_;
   const model::Chart &chart_;
   EngineOptions options_;
+  std::string path_;    ///< "" for the root; "Search", "Search.Grab" for instances
+  std::string prefix_;  ///< path_ + "." (or ""): names in the log are prefixed with it
+  int depth_ = 1;       ///< the indentation of this chart's own events
+  std::vector<std::unique_ptr<Engine>> instances_;  ///< by place: the instance it runs, or null
   std::vector<std::uint32_t> av_;      ///< sfc: activation counters (C's unsigned)
   int state_ = -1;                     ///< fsm
   int status_ = 0;                     ///< fsm

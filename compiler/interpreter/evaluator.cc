@@ -1,5 +1,7 @@
 #include "evaluator.h"
 
+#include "engine.h"
+
 #include <fmt/format.h>
 
 #include <cerrno>
@@ -198,7 +200,16 @@ Value evaluate(const Expr &e, Frame &f) {
   case Expr::Kind::Unary: return unary(e, f);
   case Expr::Kind::Binary: return binary(e, f);
   case Expr::Kind::Paren: return evaluate(e.args.at(0), f);
+  case Expr::Kind::Active:
+  case Expr::Kind::Succeeded:
+  case Expr::Kind::Failed: {
+    // Sub-charts (docs/language.md "Sub-charts"): the state as it is now.
+    if (!f.engine) throw RuntimeError(e.range, "a sub-chart's state cannot be read here");
+    if (e.kind == Expr::Kind::Active) return Value::of_bool(f.engine->active(e.path));
+    return Value::of_bool(f.engine->outcome(e.index, e.kind == Expr::Kind::Succeeded ? 1 : -1));
+  }
   case Expr::Kind::Config: break;
+  default: break;
   }
   throw RuntimeError(e.range, "a config entry has no value in a chart");
 }

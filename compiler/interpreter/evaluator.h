@@ -12,6 +12,8 @@
 
 namespace gfec::interp {
 
+class Engine;
+
 /// What the interpreter calls for the interface functions: an input trace in `gfec run`,
 /// anything a test likes.
 class Environment {
@@ -33,6 +35,7 @@ struct Frame {
   EventLog *log = nullptr;                    ///< null: log nothing
   std::uint64_t tick = 0;
   int depth = 1;                              ///< indentation of the events logged
+  const Engine *engine = nullptr;             ///< the chart's engine: active(), succeeded(), failed()
 };
 
 Value evaluate(const model::Expr &e, Frame &f);

@@ -7,7 +7,9 @@
 //   hooks        what the observation hooks (-DX_HOOKS) report: `lost P`, `gained P`,
 //                `enabled T`
 //   explanation  why it happened, for people: `cond T0 = true`, `fire T0`, `exit P`,
-//                `entry P`, `action P`, `set laps = 3`, `post Done = true`, `note ...`
+//                `entry P`, `action P`, `set laps = 3`, `post Done = true`, `note ...`;
+//                sub-charts: `start P: C`, `run P: C`, `stop P: C`, and after the root's
+//                activation each running instance's: `av P: 0 1`, `state P: Grab running`
 //
 // A generated engine's test driver prints the observable (and, with hooks, the hooks) lines
 // exactly as written here, unindented; docs/verification.md is the reference for people.
@@ -22,6 +24,7 @@ enum class EventKind {
   Tick, Call, Av, State,            // observable
   Lost, Gained, Enabled,            // hooks
   Condition, Fire, Exit, Entry, Action, Assign, Post, Note,  // explanation
+  Start, RunInstance, Stop, InstanceAv, InstanceState,       // explanation: sub-charts
 };
 
 enum class Layer { Observable, Hooks, Explanation };

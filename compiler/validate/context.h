@@ -62,6 +62,11 @@ struct Context {
     global_names.push_back({&ns, &name, kind, index, current_file});
   }
 
+  /// Sub-charts (subcharts.cc), per chart: for each place the chart it runs (or -1), and the
+  /// period it takes from the charts that run it when it declares none (0: none to take).
+  std::vector<std::vector<int>> runs;
+  std::vector<double> inherited_period;
+
   /// The chart being validated: its constants fold in its scope.
   ChartScope *chart = nullptr;
   /// Constants being folded, one inside the other's initialiser.

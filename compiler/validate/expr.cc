@@ -28,9 +28,15 @@ void require_period(ExprScope &s, SourceRange at, const std::string &what) {
   ChartScope &c = *s.chart;
   if (c.out.period_ms > 0 || c.period_reported) return;
   c.period_reported = true;
-  s.cx.diag.error(at, "missing-period", fmt::format("{} needs a period, but {} '{}' declares none", what,
-                                                    c.kind_word(), c.out.name))
-      .note(c.ast.name.range, "declare one in the chart, e.g. 'period 10ms;'");
+  auto &d = s.cx.diag.error(at, "missing-period", fmt::format("{} needs a period, but {} '{}' declares none", what,
+                                                              c.kind_word(), c.out.name));
+  bool sub_chart = false;
+  for (const auto &runs : s.cx.runs)
+    for (int r : runs) sub_chart = sub_chart || r == c.index;
+  if (sub_chart)
+    d.note(c.ast.name.range, "a sub-chart takes the period of the chart that runs it; declare one there, e.g. 'period 10ms;'");
+  else
+    d.note(c.ast.name.range, "declare one in the chart, e.g. 'period 10ms;'");
 }
 
 /// The unknown names already reported where `s` stands.
@@ -115,6 +121,116 @@ std::optional<model::Expr> lower_elapsed(const ast::Expr &e, ExprScope &s, bool 
     return std::nullopt;
   }
   model::Expr x = make(K::Elapsed, Type::Duration, e.range);
+  x.index = place;
+  return x;
+}
+
+/// The checks every built-in that reads a chart's state shares (`elapsed` has its own wording):
+/// inside a chart, not in a constant, not as a statement, one argument.
+bool builtin_allowed(const ast::Expr &e, ExprScope &s, bool statement, const char *argument) {
+  Diagnostics &diag = s.cx.diag;
+  const std::string &f = e.name.text;
+  if (!s.chart) {
+    diag.error(e.range, f, fmt::format("'{}' can only be used inside an sfc or fsm", f));
+    return false;
+  }
+  if (s.constant) {
+    diag.error(e.range, "not-constant", fmt::format("a constant expression cannot read '{}()'", f));
+    return false;
+  }
+  if (statement) {
+    diag.error(e.range, "type-mismatch", fmt::format("'{}()' as a statement has no effect", f));
+    return false;
+  }
+  if (e.args.size() != 1 || !e.args[0]) {
+    diag.error(e.range, f, fmt::format("'{}' takes one argument: {}", f, argument));
+    return false;
+  }
+  return true;
+}
+
+/// `active(P)`, `active(P.Q.R)`: each name after the first is a place or state of the chart
+/// the previous one runs.
+std::optional<model::Expr> lower_active(const ast::Expr &e, ExprScope &s, bool statement) {
+  if (!builtin_allowed(e, s, statement, "a place or state, or a path 'P.Q' into its sub-chart")) return std::nullopt;
+  const ast::Expr &arg = *e.args[0];
+  std::vector<ast::Name> names;
+  if (arg.kind == ast::Expr::Kind::Name) names.push_back(arg.name);
+  else if (arg.kind == ast::Expr::Kind::Path) names = arg.path;
+  else {
+    s.cx.diag.error(arg.range, "active", "'active' takes one argument: a place or state, or a path 'P.Q' into its sub-chart");
+    return std::nullopt;
+  }
+  model::Expr x = make(K::Active, Type::Bool, e.range);
+  int place = resolve_place(*s.chart, s.cx, names[0]);
+  if (place < 0) return std::nullopt;
+  x.path.push_back(place);
+  int chart = s.chart->index;
+  for (std::size_t k = 1; k < names.size(); ++k) {
+    const ast::Chart &holder = *s.cx.charts[static_cast<std::size_t>(chart)];
+    const ast::Place &via = holder.places[static_cast<std::size_t>(place)];
+    int sub = s.cx.runs[static_cast<std::size_t>(chart)][static_cast<std::size_t>(place)];
+    if (sub < 0) {
+      if (via.runs) return std::nullopt;  // its `runs` has an error of its own
+      s.cx.diag.error(names[k].range, "unknown-name",
+                      fmt::format("'{}' runs no sub-chart, so '{}' names nothing in it", via.name.text, names[k].text))
+          .note(via.name.range, fmt::format("'{}' declared here", via.name.text));
+      return std::nullopt;
+    }
+    const ast::Chart &inner = *s.cx.charts[static_cast<std::size_t>(sub)];
+    const char *word = inner.kind == ast::Chart::Kind::Fsm ? "state" : "place";
+    place = -1;
+    std::vector<Symbol> symbols;
+    for (std::size_t i = 0; i < inner.places.size(); ++i) {
+      const ast::Place &p = inner.places[i];
+      if (p.name.text == names[k].text && place < 0) place = static_cast<int>(i);
+      symbols.push_back({inner.kind == ast::Chart::Kind::Fsm ? Sym::State : Sym::Place, static_cast<int>(i),
+                         p.name.text, p.name.range});
+    }
+    if (place < 0) {
+      auto &d = s.cx.diag.error(names[k].range, "unknown-name",
+                                fmt::format("unknown {} '{}' in {} '{}', which '{}' runs", word, names[k].text,
+                                            inner.kind == ast::Chart::Kind::Fsm ? "fsm" : "sfc", inner.name.text,
+                                            via.name.text));
+      std::vector<const Symbol *> candidates;
+      for (const Symbol &sym : symbols) candidates.push_back(&sym);
+      suggest(d, names[k].text, candidates);
+      return std::nullopt;
+    }
+    x.path.push_back(place);
+    chart = sub;
+  }
+  return x;
+}
+
+/// `succeeded(P)` / `failed(P)`: P runs an fsm, which ends in a success or failure state.
+std::optional<model::Expr> lower_outcome(const ast::Expr &e, ExprScope &s, bool statement) {
+  const std::string &f = e.name.text;
+  if (!builtin_allowed(e, s, statement, "a place or state that runs an fsm")) return std::nullopt;
+  const ast::Expr &arg = *e.args[0];
+  if (arg.kind != ast::Expr::Kind::Name) {
+    s.cx.diag.error(arg.range, f, fmt::format("'{}' takes one argument: a place or state that runs an fsm", f));
+    return std::nullopt;
+  }
+  int place = resolve_place(*s.chart, s.cx, arg.name);
+  if (place < 0) return std::nullopt;
+  const ast::Place &p = s.chart->ast.places[static_cast<std::size_t>(place)];
+  int sub = s.cx.runs[static_cast<std::size_t>(s.chart->index)][static_cast<std::size_t>(place)];
+  if (p.runs && sub < 0) return std::nullopt;  // its `runs` has an error of its own
+  if (sub < 0 || s.cx.model.charts[static_cast<std::size_t>(sub)].kind != model::Chart::Kind::Fsm) {
+    auto &d = s.cx.diag.error(e.range, "subchart", sub < 0 ? fmt::format("'{}({})': {} '{}' runs no sub-chart", f, arg.name.text,
+                                                                s.chart->place_word(), arg.name.text)
+                                                  : fmt::format("'{}({})': {} '{}' runs sfc '{}', which never {}", f,
+                                                                arg.name.text, s.chart->place_word(), arg.name.text,
+                                                                p.runs->text, f == "succeeded" ? "succeeds" : "fails"));
+    d.note(sub < 0 ? p.name.range : p.runs->range,
+           sub < 0 ? fmt::format("only a place or state that runs an fsm succeeds or fails ('{} {} runs FSM')",
+                                 s.chart->place_word(), arg.name.text)
+                   : fmt::format("only an fsm succeeds or fails; 'active({}.P)' reads the places of an sfc",
+                                 arg.name.text));
+    return std::nullopt;
+  }
+  model::Expr x = make(f == "succeeded" ? K::Succeeded : K::Failed, Type::Bool, e.range);
   x.index = place;
   return x;
 }
@@ -285,6 +401,10 @@ std::optional<model::Expr> lower_expr(const ast::Expr *e, ExprScope &s) {
   case ast::Expr::Kind::Call: return lower_call(*e, s, false);
   case ast::Expr::Kind::Unary: return lower_unary(*e, s);
   case ast::Expr::Kind::Binary: return lower_binary(*e, s);
+  case ast::Expr::Kind::Path:
+    // Only `active(...)` reads a path, and it reads its argument itself.
+    s.cx.diag.error(e->range, "syntax", "a path to a sub-chart's place is only read through 'active(...)'");
+    return std::nullopt;
   case ast::Expr::Kind::Paren: {
     if (e->args.size() != 1) return std::nullopt;
     auto inner = lower_expr(e->args[0].get(), s);
@@ -300,6 +420,8 @@ std::optional<model::Expr> lower_expr(const ast::Expr *e, ExprScope &s) {
 std::optional<model::Expr> lower_call(const ast::Expr &e, ExprScope &s, bool statement) {
   const ast::Name &name = e.name;
   if (name.text == "elapsed") return lower_elapsed(e, s, statement);
+  if (name.text == "active") return lower_active(e, s, statement);
+  if (name.text == "succeeded" || name.text == "failed") return lower_outcome(e, s, statement);
   std::vector<std::optional<model::Expr>> args;
   for (const auto &a : e.args) args.push_back(lower_expr(a.get(), s));
   if (name.text.empty()) return std::nullopt;

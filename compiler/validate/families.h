@@ -22,6 +22,10 @@ void fold_file_consts(Context &cx);
 void declare_chart(Context &cx, const ast::Chart &chart);
 void validate_chart(Context &cx, int index);
 
+/// subcharts.cc: resolves every `runs`, reports charts that run themselves and sub-chart
+/// periods that disagree with their parents', and fills Context::runs and inherited_period.
+void resolve_subcharts(Context &cx);
+
 /// validate_sfc.cc and validate_fsm.cc: the rules of each kind, run by validate_chart once the
 /// chart's names, bodies and conditions are lowered. `watch` began with the chart: its
 /// warnings are given only if it has no errors.

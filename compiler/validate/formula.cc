@@ -136,6 +136,7 @@ std::optional<model::Expr> lower_formula(const ast::Expr *e, Context &cx, PlanSc
   }
   case ast::Expr::Kind::Duration: return not_allowed(cx, e->range, "a duration");
   case ast::Expr::Kind::Call: return not_allowed(cx, e->range, "a function call");
+  case ast::Expr::Kind::Path: return not_allowed(cx, e->range, "a path to a sub-chart's place");
   case ast::Expr::Kind::Name: return lower_name(*e, cx, s, constant);
   case ast::Expr::Kind::Unary: return lower_unary(*e, cx, s, constant);
   case ast::Expr::Kind::Binary: return lower_binary(*e, cx, s, constant);

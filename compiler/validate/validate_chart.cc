@@ -32,6 +32,8 @@ void set_period(Context &cx, ChartScope &s) {
       s.out.period_ms = p.ms;
     }
   }
+  // A sub-chart that declares none runs at the period of the chart that runs it (§9).
+  if (periods.empty()) s.out.period_ms = cx.inherited_period[static_cast<std::size_t>(s.index)];
   // A bad period was reported: "needs a period" would only repeat it.
   if (!periods.empty() && s.out.period_ms <= 0) s.period_reported = true;
 }
@@ -60,6 +62,7 @@ void declare_place(Context &cx, ChartScope &s, const ast::Place &p, int index) {
   out.terminal = p.terminal == ast::StateKind::Success   ? model::Terminal::Success
                  : p.terminal == ast::StateKind::Failure ? model::Terminal::Failure
                                                          : model::Terminal::None;
+  out.runs = cx.runs[static_cast<std::size_t>(s.index)][static_cast<std::size_t>(index)];
   out.range = p.range;
   s.out.places.push_back(std::move(out));
   if (s.names.declare(p.name, s.is_fsm() ? Sym::State : Sym::Place, index, cx.diag))

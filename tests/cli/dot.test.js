@@ -132,3 +132,28 @@ test('-o - writes a one-file output to stdout, for pipes into dot', () => {
   assert.match(c.stderr, /-o - needs a back end that writes one file/);
   assert.equal(gfec(['split.sfc', '--emit=dot', '-o', '-', '-MD'], dir).code, 2);
 });
+
+test('dot: sub-charts are drawn in a frame beside the place that runs them, one frame per instance', () => {
+  const dir = scratch({
+    'nest.sfc': `interface R { bool Ready(); bool Done(); void Go(); }
+sfc Leaf { initial place L1; place L2; L1 -> L2 when Done(); }
+fsm Mid { initial state M1 runs Leaf; success state Ok; M1 -> Ok when active(M1.L2); }
+sfc Top { initial place A runs Mid { Go(); } place B runs Leaf; A -> B when succeeded(A); }
+`,
+  });
+  const dot = emit(path.join(dir, 'nest.sfc'), 'dot', ['--chart', 'Top']);
+  assert.match(dot, /compound=true;/);
+  const n = nodes(dot);
+  assert.equal(label(n.p0).split('\n').slice(0, 2).join('|'), 'A|runs Mid');
+  assert.equal(label(n.p1).split('\n').slice(0, 2).join('|'), 'B|runs Leaf');
+  // A's Mid, its M1's Leaf, and B's own Leaf: three frames, named after the place that runs each.
+  const frames = [...dot.matchAll(/subgraph (cluster_\w+) \{\n\s*graph \[label=("(?:[^"\\]|\\.)*")/g)].map((m) => [m[1], JSON.parse(m[2])]);
+  assert.deepEqual(frames, [['cluster_s0', 'A: fsm Mid'], ['cluster_s0_s0', 'M1: sfc Leaf'], ['cluster_s1', 'B: sfc Leaf']]);
+  assert.equal(label(n.s0_p0).split('\n')[0], 'M1');
+  assert.equal(label(n.s0_s0_p1), 'L2');
+  assert.equal(label(n.s1_p0), 'L1');
+  // Each place is linked to the first place of its frame, and the transitions stay inside.
+  const e = edges(dot).map((x) => x.join('->'));
+  for (const link of ['p0->s0_p0', 's0_p0->s0_s0_p0', 'p1->s1_p0', 's0_s0_p0->s0_s0_t0', 's1_t0->s1_p1']) assert.ok(e.includes(link), link);
+  if (haveDot) render(dot);
+});

@@ -134,3 +134,21 @@ test('verbatim code, block comments, strings with escapes, floats and exponents'
   assert.ok(on(7).some((t) => t.text === ' raw(); ' || t.scopes.some((s) => s.startsWith('meta.embedded'))));
   assert.equal(scopeOf(tokens, 's', 7), 'keyword.other.unit.gfec');
 });
+
+test('sub-charts: runs, the built-ins that read them and paths', () => {
+  const tokens = tokenize([
+    'sfc Patrol {',
+    '  initial place Search runs Fetch { Beep(); }',
+    '  state Retry runs Fetch;',
+    '  transition Search -> Home when succeeded(Search) || failed(Retry) || active(Retry.Grab.Hand);',
+    '}',
+  ].join('\n'));
+  assert.equal(scopeOf(tokens, 'runs', 2), 'keyword.control.runs.gfec');
+  assert.equal(scopeOf(tokens, 'Search', 2), 'entity.name.section.place.gfec');
+  assert.equal(scopeOf(tokens, 'Fetch', 2), 'entity.name.type.gfec');
+  assert.equal(scopeOf(tokens, 'Retry', 3), 'entity.name.section.state.gfec');
+  assert.equal(scopeOf(tokens, 'Fetch', 3), 'entity.name.type.gfec');
+  for (const f of ['succeeded', 'failed', 'active']) assert.equal(scopeOf(tokens, f, 4), 'support.function.builtin.gfec');
+  assert.equal(scopeOf(tokens, '.', 4), 'punctuation.accessor.dot.gfec');
+  assert.equal(scopeOf(tokens, 'Hand', 4), 'variable.other.gfec');
+});

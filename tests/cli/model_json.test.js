@@ -138,3 +138,40 @@ plan Outer {
   assert.deepEqual(again.args[0].config, ['dist']);
   assert.deepEqual(doc.templates.map((t) => t.name).sort(), ['Go', 'Measure', 'Watch']);
 });
+
+test('json: sub-charts: places name the chart they run, the tree lists each sub-chart once', () => {
+  const dir = scratch({
+    'patrol.sfc': `interface Bot { bool Arrived(); bool Holding(); bool Late(); void Beep(); void PickUp(); void Park(); }
+sfc Hand { initial place Open; place Closed; Open -> Closed when Holding(); }
+fsm Fetch {
+  initial state Go { Beep(); }
+  state Grab runs Hand { PickUp(); }
+  success state Got;
+  Go -> Grab when Arrived();
+  Grab -> Got when active(Grab.Closed);
+}
+sfc Spare { initial place S; }
+sfc Patrol {
+  period 10ms;
+  initial place Search runs Fetch;
+  place Home { Park(); }
+  place Retry runs Fetch;
+  Search -> Home when succeeded(Search);
+  Search -> Retry when failed(Search) || elapsed(Search) >= 30s;
+  Retry -> Home when active(Retry.Grab.Closed) && Late();
+}
+`,
+  });
+  const doc = emit(path.join(dir, 'patrol.sfc'), ['--chart', 'Patrol']);
+  assert.deepEqual(doc.places.map((p) => p.runs), ['Fetch', null, 'Fetch']);
+  // Hand and Fetch (declaration order), each once; Spare is not run.
+  assert.deepEqual(doc.subcharts.map((c) => [c.kind, c.name]), [['sfc', 'Hand'], ['fsm', 'Fetch']]);
+  const fetch = doc.subcharts[1];
+  assert.equal(fetch.period_ms, 10);  // inherited from Patrol
+  assert.deepEqual(fetch.states.map((s) => s.runs), [null, 'Hand', null]);
+  assert.deepEqual(fetch.transitions[1].condition.tree, { kind: 'active', type: 'bool', path: ['Grab', 'Closed'] });
+  assert.deepEqual(doc.transitions[0].condition.tree, { kind: 'succeeded', type: 'bool', place: 'Search' });
+  assert.deepEqual(doc.transitions[1].condition.tree.args[0], { kind: 'failed', type: 'bool', place: 'Search' });
+  assert.deepEqual(doc.transitions[2].condition.tree.args[0].path, ['Retry', 'Grab', 'Closed']);
+  assert.deepEqual(emit(path.join(dir, 'patrol.sfc'), ['--chart', 'Hand']).subcharts, []);
+});

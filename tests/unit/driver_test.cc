@@ -121,3 +121,42 @@ TEST_CASE("gfec: the samples compile without a diagnostic") {
     CHECK(r.out.empty());
   }
 }
+
+// The default root (docs/language.md "Sub-charts"): the one chart of the file that no chart runs.
+TEST_CASE("gfec: a file with sub-charts compiles the chart no other chart runs") {
+  std::string dir = scratch_dir("driver-root");
+  write_file(dir + "/h.sfc", R"(interface R { bool Ready(); void Go(); }
+sfc Leaf { initial place L { Go(); } }
+fsm Mid { initial state M runs Leaf; success state Done; M -> Done when Ready(); }
+sfc Top { initial place A runs Mid; place B; A -> B when succeeded(A); }
+sfc Spare { initial place S; }
+)");
+  // Two charts run by none: Top and Spare; the error lists only those.
+  auto r = run_command("cd " + dir + " && " + gfec_exe + " --emit=dot h.sfc -o -");
+  CHECK(r.exit_code == 2);
+  CHECK(r.out == "h.sfc: error: the file declares several things to compile (sfc 'Top', sfc 'Spare'); "
+                 "choose one with --chart NAME\n");
+  // --chart may still name a sub-chart, to compile it alone; Top is then neither run nor compiled,
+  // but Leaf runs nothing, so nothing is said.
+  auto leaf = run_command("cd " + dir + " && " + gfec_exe + " --emit=dot --chart Leaf h.sfc -o -");
+  CHECK(leaf.exit_code == 0);
+  CHECK(leaf.out.rfind("digraph \"Leaf\"", 0) == 0);
+  // Compiling the hierarchy: Spare is neither compiled nor run by it, which is worth a warning.
+  auto top = run_command("cd " + dir + " && " + gfec_exe + " --emit=dot --chart Top h.sfc -o out.dot");
+  CHECK(top.exit_code == 0);
+  CHECK(top.out == "h.sfc:5:1: warning: sfc 'Spare' is neither compiled nor run by 'Top', the chart being compiled "
+                   "[-Wunused-chart]\n"
+                   " sfc Spare { initial place S; }\n"
+                   " ^~~~~~~~~~~~~~~~~~~~~~~~~~~~~~\n"
+                   "h.sfc:4:1: note: to use it, let a place or state of 'Top' run it ('runs Spare')\n"
+                   " sfc Top { initial place A runs Mid; place B; A -> B when succeeded(A); }\n"
+                   " ^~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~\n");
+  // Without Spare, Top is the only root and needs no --chart.
+  write_file(dir + "/h2.sfc", R"(interface R { bool Ready(); void Go(); }
+sfc Leaf { initial place L { Go(); } }
+sfc Top { initial place A runs Leaf; }
+)");
+  auto one = run_command("cd " + dir + " && " + gfec_exe + " --emit=dot h2.sfc -o -");
+  CHECK(one.exit_code == 0);
+  CHECK(one.out.rfind("digraph \"Top\"", 0) == 0);
+}

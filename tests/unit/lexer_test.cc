@@ -89,3 +89,15 @@ TEST_CASE("lexer: malformed tokens are located errors") {
         " sfc X { place A \xc3\xa9; }\n"
         "                 ^~\n");
 }
+
+TEST_CASE("lexer: 'runs' is a keyword and '.' a token between names, still part of a number") {
+  SourceManager sm;
+  Diagnostics diag;
+  auto toks = lex_all("place P runs Sub; active(P.Q.R) .5 1.", diag, sm);
+  std::vector<Tok> kinds;
+  for (auto &t : toks) kinds.push_back(t.kind);
+  CHECK(diag.all().empty());
+  CHECK(kinds == std::vector<Tok>{Tok::KwPlace, Tok::Ident, Tok::KwRuns, Tok::Ident, Tok::Semi, Tok::Ident,
+                                  Tok::LParen, Tok::Ident, Tok::Dot, Tok::Ident, Tok::Dot, Tok::Ident,
+                                  Tok::RParen, Tok::Float, Tok::Float});
+}

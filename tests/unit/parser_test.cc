@@ -206,3 +206,55 @@ TEST_CASE("loader: imports are found beside the importer, read once, and cycles 
   CHECK(diamond.text() == "");
   CHECK(diamond.loaded.paths.size() == 3);
 }
+
+TEST_CASE("parser: sub-charts: 'runs' after the name, paths only inside active()") {
+  FrontEnd fe({{"t.sfc", R"(
+sfc Top {
+  initial place Search runs Fetch { Beep(); }
+  place Retry runs Fetch;
+  success state Done runs X post Ok();
+  transition Search -> Retry when active(Search.Grab.Hand) || active(Retry) && !succeeded(Search);
+}
+)"}});
+  CHECK(fe.text() == "");
+  const ast::Chart &c = only_file(fe).charts.at(0);
+  REQUIRE(c.places.size() == 3);
+  REQUIRE(c.places[0].runs);
+  CHECK(c.places[0].runs->text == "Fetch");
+  CHECK(c.places[0].has_body);
+  REQUIRE(c.places[1].runs);
+  CHECK(c.places[1].runs->text == "Fetch");
+  CHECK(!c.places[1].has_body);
+  REQUIRE(c.places[2].runs);  // parsed; the validator rejects `runs` on a terminal state
+  CHECK(c.places[2].post);
+  const ast::Expr &cond = *c.transitions.at(0).condition;
+  REQUIRE(cond.kind == ast::Expr::Kind::Binary);
+  const ast::Expr &active_path = *cond.args[0];
+  REQUIRE(active_path.kind == ast::Expr::Kind::Call);
+  CHECK(active_path.name.text == "active");
+  REQUIRE(active_path.args.size() == 1);
+  const ast::Expr &path = *active_path.args[0];
+  REQUIRE(path.kind == ast::Expr::Kind::Path);
+  REQUIRE(path.path.size() == 3);
+  CHECK(path.path[0].text == "Search");
+  CHECK(path.path[1].text == "Grab");
+  CHECK(path.path[2].text == "Hand");
+  const ast::Expr &active_one = *cond.args[1]->args[0];
+  REQUIRE(active_one.args.size() == 1);
+  CHECK(active_one.args[0]->kind == ast::Expr::Kind::Name);
+}
+
+TEST_CASE("parser: a path outside active() and a path cut short are syntax errors") {
+  CHECK(parse_errors("sfc S { initial place A; A -> A when elapsed(A.B) > 1s; }") ==
+        "t.sfc:1:46: error: a path to a sub-chart's place is only read through 'active(...)' [syntax]\n"
+        " sfc S { initial place A; A -> A when elapsed(A.B) > 1s; }\n"
+        "                                              ^~~\n");
+  CHECK(parse_errors("sfc S { initial place A; A -> A when active(A.); }") ==
+        "t.sfc:1:47: error: expected identifier after '.' (a place or state of the sub-chart), found ')' [syntax]\n"
+        " sfc S { initial place A; A -> A when active(A.); }\n"
+        "                                               ^\n");
+  CHECK(parse_errors("sfc S { initial place A runs; }") ==
+        "t.sfc:1:29: error: expected identifier after 'runs' (the sfc or fsm to run), found ';' [syntax]\n"
+        " sfc S { initial place A runs; }\n"
+        "                             ^\n");
+}

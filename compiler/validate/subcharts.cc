@@ -1,0 +1,180 @@
+// Sub-charts (docs/language.md "Sub-charts"): which chart each `runs` names, charts that run
+// themselves, and the period a sub-chart takes from the charts that run it. Runs before any
+// chart body is lowered, because durations in a sub-chart are counted in its (inherited) period.
+#include "validate/families.h"
+#include "validate/suggest.h"
+
+#include <fmt/format.h>
+
+#include <functional>
+
+namespace gfec::validation {
+
+namespace {
+
+/// One `runs`: place `place` of chart `parent` runs chart `child`.
+struct Edge {
+  int parent, place, child;
+};
+
+std::string period_text(double ms) { return ms > 0 ? fmt::format("period {:g}ms", ms) : std::string("no period"); }
+
+const ast::Name &runs_name(const Context &cx, const Edge &e) {
+  return *cx.charts[static_cast<std::size_t>(e.parent)]->places[static_cast<std::size_t>(e.place)].runs;
+}
+
+/// Resolves the chart after each `runs`; reports unknown names, plans and terminal states.
+std::vector<Edge> resolve_runs(Context &cx) {
+  std::vector<Edge> edges;
+  for (std::size_t c = 0; c < cx.charts.size(); ++c) {
+    const ast::Chart &chart = *cx.charts[c];
+    cx.runs[c].assign(chart.places.size(), -1);
+    for (std::size_t p = 0; p < chart.places.size(); ++p) {
+      const ast::Place &place = chart.places[p];
+      if (!place.runs || place.runs->text.empty()) continue;
+      const ast::Name &name = *place.runs;
+      if (place.terminal != ast::StateKind::Normal) {
+        cx.diag.error(name.range, "terminal-runs",
+                      fmt::format("terminal state '{}' cannot run a sub-chart: the machine has stopped there",
+                                  place.name.text));
+        continue;
+      }
+      const Symbol *sym = cx.c_names.find(name.text);
+      if (!sym) sym = cx.plan_names.find(name.text);
+      if (!sym) {
+        auto &d = cx.diag.error(name.range, "unknown-name", fmt::format("unknown chart '{}'", name.text));
+        suggest(d, name.text, cx.c_names.of({Sym::Chart}));
+        continue;
+      }
+      if (sym->kind != Sym::Chart) {
+        cx.diag.error(name.range, "type-mismatch",
+                      fmt::format("'{}' is {}; a place or state runs an sfc or an fsm", name.text,
+                                  with_article(sym->kind)))
+            .note(sym->range, fmt::format("'{}' declared here", name.text));
+        continue;
+      }
+      cx.runs[c][p] = sym->index;
+      edges.push_back({static_cast<int>(c), static_cast<int>(p), sym->index});
+    }
+  }
+  return edges;
+}
+
+/// Reports every cycle of `runs` once (one per back edge of a depth-first search), at its
+/// first step, with a note at each step. Returns whether there was one.
+bool report_cycles(Context &cx, const std::vector<Edge> &edges) {
+  std::size_t n = cx.charts.size();
+  std::vector<std::vector<const Edge *>> out(n);
+  for (const Edge &e : edges) out[static_cast<std::size_t>(e.parent)].push_back(&e);
+  enum Color { White, Grey, Black };
+  std::vector<Color> color(n, White);
+  std::vector<const Edge *> stack;  // the edges from the search's root to the current chart
+  bool found = false;
+  std::function<void(int)> visit = [&](int c) {
+    color[static_cast<std::size_t>(c)] = Grey;
+    for (const Edge *e : out[static_cast<std::size_t>(c)]) {
+      if (color[static_cast<std::size_t>(e->child)] == Grey) {
+        std::vector<const Edge *> cycle;
+        // The cycle starts with the edge on the path that leaves e->child (none for a self-loop).
+        std::size_t first = stack.size();
+        while (e->parent != e->child && first > 0) {
+          --first;
+          if (stack[first]->parent == e->child) break;
+        }
+        cycle.assign(stack.begin() + static_cast<std::ptrdiff_t>(first), stack.end());
+        cycle.push_back(e);
+        std::string steps = cx.model.charts[static_cast<std::size_t>(cycle.front()->parent)].name;
+        for (const Edge *s : cycle) steps += " -> " + cx.model.charts[static_cast<std::size_t>(s->child)].name;
+        const model::Chart &head = cx.model.charts[static_cast<std::size_t>(cycle.front()->parent)];
+        auto &d = cx.diag.error(runs_name(cx, *cycle.front()).range, "subchart-cycle",
+                                cycle.size() == 1
+                                    ? fmt::format("chart '{}' runs itself", head.name)
+                                    : fmt::format("chart '{}' runs itself through other charts: {}", head.name, steps));
+        for (const Edge *s : cycle) {
+          const ast::Place &place = cx.charts[static_cast<std::size_t>(s->parent)]->places[static_cast<std::size_t>(s->place)];
+          d.note(runs_name(cx, *s).range,
+                 fmt::format("{} '{}' of '{}' runs '{}'", place.is_state ? "state" : "place", place.name.text,
+                             cx.model.charts[static_cast<std::size_t>(s->parent)].name,
+                             cx.model.charts[static_cast<std::size_t>(s->child)].name));
+        }
+        found = true;
+        continue;
+      }
+      if (color[static_cast<std::size_t>(e->child)] == Black) continue;
+      stack.push_back(e);
+      visit(e->child);
+      stack.pop_back();
+    }
+    color[static_cast<std::size_t>(c)] = Black;
+  };
+  for (std::size_t c = 0; c < n; ++c)
+    if (color[c] == White) visit(static_cast<int>(c));
+  return found;
+}
+
+/// The period a chart declares (the first one, if valid), or 0.
+double declared_period(const ast::Chart &c) { return !c.periods.empty() && c.periods[0].ms > 0 ? c.periods[0].ms : 0; }
+
+/// A sub-chart runs at its parent's rate: one that declares a period must declare the parent's;
+/// one that declares none takes it. Runs parents first (the graph has no cycle here).
+void inherit_periods(Context &cx, const std::vector<Edge> &edges) {
+  std::size_t n = cx.charts.size();
+  std::vector<std::vector<const Edge *>> runners(n);
+  for (const Edge &e : edges) runners[static_cast<std::size_t>(e.child)].push_back(&e);
+  std::vector<int> state(n, 0);  // 0 not yet, 1 in progress, 2 done
+  std::vector<double> effective(n, 0);
+  std::vector<const Edge *> inherited_from(n, nullptr);
+  std::function<double(int)> period = [&](int c) -> double {
+    std::size_t i = static_cast<std::size_t>(c);
+    if (state[i] == 2) return effective[i];
+    if (state[i] == 1) return 0;  // unreachable without cycles; keeps a bug from recursing forever
+    state[i] = 1;
+    const ast::Chart &chart = *cx.charts[i];
+    double own = declared_period(chart);
+    effective[i] = own;
+    for (const Edge *e : runners[i]) {
+      double parent = period(e->parent);
+      const std::string &parent_name = cx.model.charts[static_cast<std::size_t>(e->parent)].name;
+      const ast::Name &at = runs_name(cx, *e);
+      if (own > 0) {
+        if (parent == own) continue;
+        cx.diag.error(at.range, "period", fmt::format("sub-chart '{}' declares {} but '{}', which runs it, has {}",
+                                                      chart.name.text, period_text(own), parent_name, period_text(parent)))
+            .note(chart.periods[0].range, "a sub-chart runs at the period of the chart that runs it; "
+                                          "remove this period or make the two equal");
+        continue;
+      }
+      if (!inherited_from[i]) {
+        inherited_from[i] = e;
+        effective[i] = parent;
+        continue;
+      }
+      if (parent == effective[i]) continue;
+      const Edge &first = *inherited_from[i];
+      cx.diag.error(at.range, "period",
+                    fmt::format("sub-chart '{}' would run at {} here but at {} in '{}'; it declares no period of its own",
+                                chart.name.text, period_text(parent), period_text(effective[i]),
+                                cx.model.charts[static_cast<std::size_t>(first.parent)].name))
+        .note(runs_name(cx, first).range, fmt::format("'{}' is also run here", chart.name.text));
+    }
+    state[i] = 2;
+    return effective[i];
+  };
+  for (std::size_t c = 0; c < n; ++c) {
+    period(static_cast<int>(c));
+    if (declared_period(*cx.charts[c]) <= 0 && cx.charts[c]->periods.empty()) cx.inherited_period[c] = effective[c];
+  }
+}
+
+} // namespace
+
+void resolve_subcharts(Context &cx) {
+  cx.runs.assign(cx.charts.size(), {});
+  cx.inherited_period.assign(cx.charts.size(), 0);
+  std::vector<Edge> edges = resolve_runs(cx);
+  if (edges.empty()) return;
+  if (report_cycles(cx, edges)) return;
+  inherit_periods(cx, edges);
+}
+
+} // namespace gfec::validation
