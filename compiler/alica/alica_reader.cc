@@ -321,6 +321,8 @@ private:
     if (it != plan_charts_.end()) return it->second;
     std::string name = global_name(plan.string_of("name"), id, "Plan");
     plan_charts_[key] = name;  // before the states: a plan that runs itself stops here
+    const JsonValue *entries = plan.find("entryPoints");
+    fsm_charts_[name] = !entries || !entries->is_array() || entries->items.size() <= 1;
     convert_plan(doc, plan, name);
     return name;
   }
@@ -635,6 +637,22 @@ private:
     return p;
   }
 
+  /// ALICA's standard conditions on the plan a state runs: `succeeded(S)` / `failed(S)` when
+  /// state S runs an fsm (a state runs one plan in gfec, so "any" and "all" children agree).
+  ast::ExprPtr child_outcome(const JsonValue &cond, const ast::Place *source, const SourceRange &at) {
+    std::string name = cond.string_of("name");
+    bool success = name == "AnyChildSuccess" || name == "AllChildSuccess";
+    bool failure = name == "AnyChildFailure" || name == "AllChildFailure";
+    if ((!success && !failure) || !source || !source->runs || !fsm_charts_[source->runs->text]) return nullptr;
+    auto e = call(success ? "succeeded" : "failed", at);
+    auto arg = std::make_unique<ast::Expr>();
+    arg->kind = ast::Expr::Kind::Name;
+    arg->range = at;
+    arg->name = {source->name.text, at};
+    e->args.push_back(std::move(arg));
+    return e;
+  }
+
   template <typename StateOf>
   void convert_transition(Doc &doc, const JsonValue &t, std::vector<Machine> &machines, const std::vector<int> &owner,
                           const std::vector<std::string> &state_names, StateOf state_of, const std::string &plan_what) {
@@ -664,13 +682,18 @@ private:
     out.outputs = {ast::Name{state_names[*to], out.range}};
     const JsonValue *cond = t.find("condition");
     const JsonValue *pre = t.find("preCondition");
+    const ast::Place *source = nullptr;
+    for (const auto &p : m.chart.places)
+      if (p.name.text == state_names[*from]) source = &p;
     if (cond && cond->is_string() && !cond->text.empty()) {
       Target c = resolve(cond->text, doc, range(doc, *cond));
-      if (c.object) out.condition = call(condition(*c.doc, *c.object, label), range(doc, *cond));
+      if (c.object) out.condition = child_outcome(*c.object, source, range(doc, *cond));
+      if (c.object && !out.condition) out.condition = call(condition(*c.doc, *c.object, label), range(doc, *cond));
       if (non_empty(pre) && pre->is_object() && (non_empty(pre->find("quantifiers")) || non_empty(pre->find("variables"))))
         condition(doc, *pre, label);  // only for its warnings
     } else if (pre && pre->is_object()) {
-      out.condition = call(condition(doc, *pre, label), range(doc, *pre));
+      out.condition = child_outcome(*pre, source, range(doc, *pre));
+      if (!out.condition) out.condition = call(condition(doc, *pre, label), range(doc, *pre));
     }
     if (const JsonValue *sync = t.find("synchronisation"); non_empty(sync))
       ignored(doc, *sync, fmt::format("{} is synchronised with others; the synchronisation is ignored", what));
@@ -688,6 +711,7 @@ private:
   ast::File *main_ = nullptr;
   std::map<std::string, std::unique_ptr<Doc>> docs_;
   std::map<std::string, std::string> plan_charts_;  ///< "path#id" -> chart name
+  std::map<std::string, bool> fsm_charts_;          ///< chart name -> it is an fsm (one entry point)
   std::map<std::string, std::string> functions_;    ///< "path#id" of a behaviour or condition -> function
   NameScope globals_;                                ///< charts and functions share C's namespace
 };

@@ -145,9 +145,15 @@ TEST_CASE("alica: a plan with one entry point becomes an fsm with its states and
   for (int f : m->functions)
     functions.push_back(fmt::format("{} {}", model::type_name(r.model.functions[static_cast<std::size_t>(f)].result),
                                     r.model.functions[static_cast<std::size_t>(f)].name));
-  CHECK(functions == std::vector<std::string>{"void SearchItem", "void Park", "bool ItemSeen", "bool FetchSucceeded",
-                                              "bool FetchLost", "bool Parked"});
+  CHECK(functions == std::vector<std::string>{"void SearchItem", "void Park", "bool ItemSeen", "bool Parked"});
+  // ALICA's standard conditions on the child plan read the sub-chart's outcome.
+  REQUIRE(m->transitions[1].condition);
+  CHECK(m->transitions[1].condition->kind == model::Expr::Kind::Succeeded);
+  CHECK(m->transitions[1].condition->index == 1);
+  REQUIRE(m->transitions[2].condition);
+  CHECK(m->transitions[2].condition->kind == model::Expr::Kind::Failed);
   // The state holding Fetch.pml runs Fetch's machine (a sub-chart), read from its own file.
+  CHECK(m->places[1].runs >= 0);
   const ast::Place &fetch_item = r.loaded.program.files[0]->charts[0].places[1];
   REQUIRE(fetch_item.runs);
   CHECK(fetch_item.runs->text == "Fetch");

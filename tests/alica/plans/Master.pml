@@ -138,7 +138,7 @@
       "outState" : 1542881176283,
       "preCondition" : {
         "id" : 1542881176309,
-        "name" : "FetchSucceeded",
+        "name" : "AnyChildSuccess",
         "comment" : "",
         "enabled" : true,
         "conditionString" : "",
@@ -156,7 +156,7 @@
       "outState" : 1542881176282,
       "preCondition" : {
         "id" : 1542881176310,
-        "name" : "MISSING_NAME",
+        "name" : "AnyChildFailure",
         "comment" : "",
         "enabled" : true,
         "conditionString" : "",
