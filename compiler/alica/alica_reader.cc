@@ -90,6 +90,7 @@ public:
     // Messages quote names as "state 'X' (id N)"; an element without a name is "state (id N)".
     auto unquote = [](std::string &s) {
       for (auto at = s.find("'' (id "); at != std::string::npos; at = s.find("'' (id ", at)) s.erase(at, 3);
+      for (auto at = s.find(" (id )"); at != std::string::npos; at = s.find(" (id )", at)) s.erase(at, 6);
     };
     for (std::size_t i = first_diagnostic; i < diag_.all().size(); ++i) {
       unquote(diag_.all()[i].message);
@@ -603,7 +604,12 @@ private:
     std::vector<std::string> extra_plans;
     for (const auto &[text, at] : references(doc, state, what)) {
       auto ref = split_ref(text);
-      std::string ext = ref ? extension_of(ref->file) : "";
+      if (!ref) {
+        diag_.error(at, "alica-reference",
+                    fmt::format("{} holds '{}', which is no reference: ALICA writes them as \"File.ext#id\"", what, text));
+        continue;
+      }
+      std::string ext = extension_of(ref->file.empty() ? doc.path : ref->file);
       if (ext != ".beh" && ext != ".pml" && ext != ".pty") {
         diag_.error(at, "alica-reference",
                     fmt::format("{} holds '{}': gfec knows behaviours (.beh), plans (.pml) and plan types (.pty)", what,
