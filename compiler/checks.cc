@@ -21,6 +21,7 @@ const WarningInfo kWarnings[] = {
     {Warning::UninitializedConfig, "uninitialized-config", true, "a plan may read a config entry before anything writes it"},
     {Warning::SupervisorRace, "supervisor-race", false, "two supervisors of one actor can fire in the same step"},
     {Warning::UnusedChart, "unused-chart", true, "a chart of the main file that the compiled chart neither is nor runs"},
+    {Warning::AlicaIgnored, "alica-ignored", true, "an ALICA plan element with no gfec counterpart, ignored"},
 };
 static_assert(sizeof(kWarnings) / sizeof(kWarnings[0]) == static_cast<int>(Warning::Count_));
 } // namespace

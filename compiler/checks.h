@@ -25,6 +25,7 @@ enum class Warning {
   UninitializedConfig,///< a plan reads a config entry that nothing has written
   SupervisorRace,     ///< two supervisors of one actor can fire in the same step
   UnusedChart,        ///< a chart of the main file that the compiled hierarchy leaves out
+  AlicaIgnored,       ///< an ALICA plan element gfec has no counterpart for (docs/alica.md)
   Count_
 };
 

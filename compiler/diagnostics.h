@@ -74,6 +74,8 @@ public:
   /// True once the error limit was hit: later errors were dropped.
   bool limit_reached() const { return limit_reached_; }
   const std::deque<Diagnostic> &all() const { return list_; }
+  /// For a front end that adds notes once the validator has reported (compiler/alica/).
+  std::deque<Diagnostic> &all() { return list_; }
   const WarningOptions &warning_options() const { return options_; }
 
 private:

@@ -1,5 +1,6 @@
 #include "loader.h"
 
+#include "alica/alica_reader.h"
 #include "parser.h"
 #include "validate/suggest.h"
 
@@ -36,7 +37,10 @@ public:
       result_.main_unreadable = true;
       return;
     }
-    load(normal(path), std::move(*text));
+    bool alica = options_.language == InputLanguage::Alica ||
+                 (options_.language == InputLanguage::Auto && alica::is_alica_path(path));
+    if (alica) alica::read_alica_program(path, std::move(*text), options_, fs_, sources_, diag_, result_);
+    else load(normal(path), std::move(*text));
   }
 
 private:

@@ -1,6 +1,7 @@
 #include "backend_registry.h"
 
 #include "c_backend.h"
+#include "chart_backend.h"
 #include "cpp_backend.h"
 #include "dot_backend.h"
 #include "json_backend.h"
@@ -22,6 +23,7 @@ const Entry kBackends[] = {
     {"json", make_json_backend},  // the validated model for tools (docs/model-json.md)
     {"dot", make_dot_backend},    // a picture in Graphviz DOT
     {"svg", make_svg_backend},    // the same picture rendered by Graphviz's dot
+    {"chart", make_chart_backend},  // chart text, e.g. a converted ALICA plan (docs/alica.md)
 };
 
 } // namespace

@@ -34,13 +34,19 @@ struct Compilation {
 /// Runs lexer, parser and validator. False if the input has errors (already reported).
 bool front_end(const std::string &path, const Options &o, Compilation &c) {
   RealFileSystem fs;
-  c.loaded = load_program(path, {o.include_dirs}, fs, c.sources, c.diag);
+  LoadOptions load{o.include_dirs};
+  load.language = o.language == "alica"  ? InputLanguage::Alica
+                  : o.language == "gfec" ? InputLanguage::Gfec
+                                         : InputLanguage::Auto;
+  c.loaded = load_program(path, load, fs, c.sources, c.diag);
   if (c.loaded.main_unreadable) return false;
   // Validating a tree the parser had to patch up would mostly report the patches.
   if (c.diag.has_errors()) return false;
   c.model = validate(c.loaded.program, c.sources, c.diag);
   // The static analyses whose warnings are on (compiler/analysis/, docs/verification.md).
   if (!c.diag.has_errors()) analysis::analyze(c.model, c.diag);
+  // ALICA input: say which plan element (name and id) each diagnostic is about.
+  annotate_elements(c.diag, c.loaded);
   return !c.diag.has_errors();
 }
 
@@ -113,6 +119,7 @@ Selection select(const model::Model &m, const Options &o) {
 
 std::string default_output(const std::string &input, const std::string &backend) {
   std::string ext = backend == "c" ? ".c" : backend == "cpp" ? ".cpp" : backend == "toolbox-skeleton" ? ".hpp"
+                  : backend == "chart"                                                              ? ".sfc"
                                                                                                      : "." + backend;
   return replace_extension(base_name(input), ext);
 }

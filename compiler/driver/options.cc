@@ -131,9 +131,13 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
   app.add_option("-I", o.include_dirs, "Add DIR to the folders searched for imports")
       ->type_name("DIR")
       ->allow_extra_args(false);
+  app.add_option("-x", o.language, "Input language, as gcc's -x: alica (ALICA JSON plans) or gfec (chart text); "
+                                   "default: .pml files are ALICA, others chart text")
+      ->type_name("LANG")
+      ->check(CLI::IsMember({"alica", "gfec"}));
   app.add_flag("--check", o.check_only, "Validate only: report every diagnostic and write nothing");
   app.add_flag("--analyze", o.analyze, "Run every static analysis and print a report per chart and plan; write nothing");
-  app.add_option("--emit", o.emit, "Back end: c, cpp, json, dot, svg or toolbox-skeleton (default: from the file)");
+  app.add_option("--emit", o.emit, "Back end: c, cpp, json, dot, svg, chart or toolbox-skeleton (default: from the file)");
   app.add_option("--chart", o.chart, "The chart or plan to compile when a file declares several")->type_name("NAME");
   app.add_flag("--no-line-directives", no_line, "Do not write #line directives pointing back to the chart");
   app.add_option("--engine", o.engine, "C engine form: auto (readable up to 64 places, or when a quarter of the places can be active at once), readable or scalable")

@@ -1,0 +1,102 @@
+#include "chart_expr.h"
+
+#include <fmt/format.h>
+
+namespace gfec::chart_text {
+
+namespace {
+
+/// A duration as the language writes it: whole milliseconds as "500ms", others as "1.5ms".
+std::string duration(double ms) { return fmt::format("{}ms", ms); }
+
+std::string args_of(const model::Model &m, int chart, const std::vector<model::Expr> &args) {
+  std::string out;
+  for (const auto &a : args) out += (out.empty() ? "" : ", ") + expr(m, chart, a);
+  return out;
+}
+
+const std::string &place_name(const model::Model &m, int chart, int place) {
+  return m.charts[static_cast<std::size_t>(chart)].places[static_cast<std::size_t>(place)].name;
+}
+
+} // namespace
+
+std::string expr(const model::Model &m, int chart, const model::Expr &e) {
+  using K = model::Expr::Kind;
+  const model::Chart &c = m.charts[static_cast<std::size_t>(chart)];
+  switch (e.kind) {
+  case K::Bool: return e.bool_value ? "true" : "false";
+  case K::Int:
+  case K::Float: return e.text;
+  case K::String: return c_string_literal(e.text);
+  case K::Ticks: return duration(e.ms);
+  case K::Var: return c.vars[static_cast<std::size_t>(e.index)].name;
+  case K::Const: return m.consts[static_cast<std::size_t>(e.index)].name;
+  case K::Config: return m.plans.empty() ? "?" : "?";  // plans are not converted (see chart_backend.cc)
+  case K::Call: return fmt::format("{}({})", m.functions[static_cast<std::size_t>(e.index)].name, args_of(m, chart, e.args));
+  case K::Elapsed: return fmt::format("elapsed({})", place_name(m, chart, e.index));
+  case K::Unary: {
+    std::string operand = expr(m, chart, e.args[0]);
+    // "- -x" must not become "--x".
+    std::string gap = !operand.empty() && operand[0] == '-' ? " " : "";
+    return fmt::format("{}{}{}", spelling(e.unary_op), gap, operand);
+  }
+  case K::Binary:
+    return fmt::format("{} {} {}", expr(m, chart, e.args[0]), spelling(e.binary_op), expr(m, chart, e.args[1]));
+  case K::Paren: return fmt::format("({})", expr(m, chart, e.args[0]));
+  case K::Active: {
+    std::string path;
+    int in = chart;
+    for (int place : e.path) {
+      if (in < 0) break;
+      path += (path.empty() ? "" : ".") + place_name(m, in, place);
+      in = m.charts[static_cast<std::size_t>(in)].places[static_cast<std::size_t>(place)].runs;
+    }
+    return fmt::format("active({})", path);
+  }
+  case K::Succeeded: return fmt::format("succeeded({})", place_name(m, chart, e.index));
+  case K::Failed: return fmt::format("failed({})", place_name(m, chart, e.index));
+  case K::TeamCount: return fmt::format("team({})", place_name(m, chart, e.index));
+  case K::Agent: return "agent()";
+  }
+  return "";
+}
+
+void statements(CodeWriter &w, const model::Model &m, int chart, const std::vector<model::Stmt> &block) {
+  const model::Chart &c = m.charts[static_cast<std::size_t>(chart)];
+  for (const auto &s : block) {
+    switch (s.kind) {
+    case model::Stmt::Kind::Call: w.line("{};", expr(m, chart, s.call)); break;
+    case model::Stmt::Kind::Assign:
+      w.line("{} {} {};", c.vars[static_cast<std::size_t>(s.var)].name, spelling(s.op), expr(m, chart, s.value));
+      break;
+    case model::Stmt::Kind::Verbatim: w.line("%{{{}%}}", s.verbatim); break;
+    case model::Stmt::Kind::If: {
+      const model::Stmt *at = &s;
+      std::string lead = "if";
+      for (;;) {
+        w.line("{} ({}) {{", lead, expr(m, chart, at->value));
+        w.indent();
+        statements(w, m, chart, at->then_block);
+        w.dedent();
+        if (at->else_if && at->else_block.size() == 1) {
+          at = &at->else_block.front();
+          lead = "} else if";
+          continue;
+        }
+        if (!at->else_block.empty()) {
+          w.line("} else {");
+          w.indent();
+          statements(w, m, chart, at->else_block);
+          w.dedent();
+        }
+        w.line("}");
+        break;
+      }
+      break;
+    }
+    }
+  }
+}
+
+} // namespace gfec::chart_text

@@ -1,0 +1,17 @@
+// Expressions and statements of the model, spelled as chart text (docs/language.md).
+#pragma once
+
+#include "code_writer.h"
+#include "model.h"
+
+#include <string>
+#include <vector>
+
+namespace gfec::chart_text {
+
+/// `e`, read in chart `chart` (its places, variables and the charts its places run).
+std::string expr(const model::Model &m, int chart, const model::Expr &e);
+/// The statements of a block, one per line, at the writer's indentation.
+void statements(CodeWriter &w, const model::Model &m, int chart, const std::vector<model::Stmt> &block);
+
+} // namespace gfec::chart_text

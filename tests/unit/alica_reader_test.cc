@@ -1,0 +1,369 @@
+// The ALICA front end (docs/alica.md): the JSON reader keeps positions and exact ids; plans
+// become the same syntax tree chart text would; every diagnostic points into the .pml file at
+// the element it is about, with its name and id. Fixtures: tests/alica/ (written for gfec in
+// ALICA's format).
+#include "support.h"
+
+#include "alica/json_tree.h"
+#include "validate.h"
+
+#include <catch2/catch.hpp>
+#include <fmt/format.h>
+
+#include <chrono>
+#include <filesystem>
+#include <map>
+
+using namespace gfec;
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kFixtures = fs::path(GFEC_SOURCE_DIR) / "tests" / "alica";
+
+/// Every fixture file, by its path relative to tests/alica (as the in-memory loader sees it).
+std::map<std::string, std::string> fixture_files() {
+  std::map<std::string, std::string> files;
+  for (const auto &e : fs::recursive_directory_iterator(kFixtures))
+    if (e.is_regular_file())
+      files[fs::relative(e.path(), kFixtures).generic_string()] = test::read_file(e.path().string());
+  return files;
+}
+
+/// The front end and the validator over the fixtures (plus `extra`), from `main`.
+struct Run {
+  SourceManager sources;
+  Diagnostics diag;
+  LoadResult loaded;
+  model::Model model;
+  std::string text;
+
+  explicit Run(const std::string &main, const std::map<std::string, std::string> &extra = {}) {
+    MemoryFileSystem mem;
+    for (const auto &[path, t] : fixture_files()) mem.add(path, t);
+    for (const auto &[path, t] : extra) mem.add(path, t);
+    loaded = load_program(main, {}, mem, sources, diag);
+    if (!diag.has_errors()) model = validate(loaded.program, sources, diag);
+    annotate_elements(diag, loaded);
+    for (const auto &d : diag.all()) text += render_text(d, sources);
+  }
+  const model::Chart *chart(const std::string &name) const {
+    for (const auto &c : model.charts)
+      if (c.name == name) return &c;
+    return nullptr;
+  }
+};
+
+/// "LINE:COL" of the '{' that opens the JSON object whose "id" is `id`, in fixture `file`.
+std::string object_at(const std::string &file, const std::string &id) {
+  std::string text = test::read_file((kFixtures / file).string());
+  std::size_t at = text.find("\"id\" : " + id + ",");
+  REQUIRE(at != std::string::npos);
+  std::size_t brace = text.rfind('{', at);
+  std::size_t line = 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<long>(brace), '\n'));
+  std::size_t col = brace - (text.rfind('\n', brace) + 1) + 1;
+  return fmt::format("{}:{}", line, col);
+}
+
+std::vector<std::string> place_names(const model::Chart &c) {
+  std::vector<std::string> names;
+  for (const auto &p : c.places) names.push_back(p.name);
+  return names;
+}
+
+} // namespace
+
+TEST_CASE("alica json: values keep their positions and ids their exact digits", "[alica]") {
+  std::string text = "{\n  \"id\" : 4611686018427387905,\n  \"name\" : \"A\\u00e9\\n\",\n  \"x\" : [ 1.5e3, true, null ]\n}";
+  alica::JsonError error;
+  auto v = alica::parse_json(text, error);
+  REQUIRE(v);
+  REQUIRE(v->is_object());
+  const alica::JsonValue *id = v->find("id");
+  REQUIRE(id);
+  // 4611686018427387905 is 2^62 + 1: a double would have rounded it to 2^62.
+  CHECK(id->as_id() == std::optional<std::string>("4611686018427387905"));
+  CHECK(text.substr(id->begin, id->end - id->begin) == "4611686018427387905");
+  CHECK(v->string_of("name") == "A\xc3\xa9\n");
+  const alica::JsonValue *x = v->find("x");
+  REQUIRE(x);
+  REQUIRE(x->items.size() == 3);
+  CHECK(x->items[0].text == "1.5e3");
+  CHECK(!x->items[0].as_id());
+  CHECK(x->items[1].boolean);
+  CHECK(x->items[2].is_null());
+  CHECK(v->begin == 0);
+  CHECK(v->end == text.size());
+}
+
+TEST_CASE("alica json: malformed text is refused with the offset of the first fault", "[alica]") {
+  struct Case {
+    std::string text;
+    std::uint32_t offset;
+    std::string message;
+  } cases[] = {
+      {"{ \"a\" : 1 \"b\" : 2 }", 10, "expected ',' or '}' in an object, found '\"'"},
+      {"[ 1, 2", 6, "expected ',' or ']' in an array, found the end of the file"},
+      {"{ \"a\" : tru }", 8, "expected a JSON value, found 't'"},
+      {"\"abc", 4, "unterminated string: the file ends inside it"},
+      {"{ \"a\" : 1 } x", 12, "unexpected text after the JSON document"},
+      {"{ a : 1 }", 2, "expected a member name in quotes, found 'a'"},
+      {"", 0, "expected a JSON value, found the end of the file"},
+  };
+  for (const auto &c : cases) {
+    INFO(c.text);
+    alica::JsonError error;
+    CHECK(!alica::parse_json(c.text, error));
+    CHECK(error.offset == c.offset);
+    CHECK(error.message == c.message);
+  }
+  // Deep nesting is refused, not a stack overflow.
+  alica::JsonError error;
+  CHECK(!alica::parse_json(std::string(100000, '['), error));
+  CHECK(error.message == "JSON nested more than 256 deep");
+}
+
+TEST_CASE("alica: a plan with one entry point becomes an fsm with its states and transitions", "[alica]") {
+  Run r("plans/Master.pml");
+  INFO(r.text);
+  REQUIRE(!r.diag.has_errors());
+  const model::Chart *m = r.chart("Master");
+  REQUIRE(m);
+  CHECK(m->kind == model::Chart::Kind::Fsm);
+  CHECK(m->in_main_file);
+  // "Fetch Item" is no identifier: the space becomes '_'.
+  CHECK(place_names(*m) == std::vector<std::string>{"Search", "Fetch_Item", "Retry", "Done"});
+  CHECK(m->places[0].initial);
+  CHECK(m->places[3].terminal == model::Terminal::Success);
+  REQUIRE(m->transitions.size() == 4);
+  CHECK(m->transitions[0].name == "Found");
+  CHECK(m->transitions[0].inputs == std::vector<int>{0});
+  CHECK(m->transitions[0].outputs == std::vector<int>{1});
+  // Behaviours are action functions, preconditions sensing functions; an unnamed precondition
+  // is named after its transition.
+  std::vector<std::string> functions;
+  for (int f : m->functions)
+    functions.push_back(fmt::format("{} {}", model::type_name(r.model.functions[static_cast<std::size_t>(f)].result),
+                                    r.model.functions[static_cast<std::size_t>(f)].name));
+  CHECK(functions == std::vector<std::string>{"void SearchItem", "void Park", "bool ItemSeen", "bool Parked"});
+  // ALICA's standard conditions on the child plan read the sub-chart's outcome.
+  REQUIRE(m->transitions[1].condition);
+  CHECK(m->transitions[1].condition->kind == model::Expr::Kind::Succeeded);
+  CHECK(m->transitions[1].condition->index == 1);
+  REQUIRE(m->transitions[2].condition);
+  CHECK(m->transitions[2].condition->kind == model::Expr::Kind::Failed);
+  // The state holding Fetch.pml runs Fetch's machine (a sub-chart), read from its own file.
+  CHECK(m->places[1].runs >= 0);
+  const ast::Place &fetch_item = r.loaded.program.files[0]->charts[0].places[1];
+  REQUIRE(fetch_item.runs);
+  CHECK(fetch_item.runs->text == "Fetch");
+  const model::Chart *fetch = r.chart("Fetch");
+  REQUIRE(fetch);
+  CHECK(!fetch->in_main_file);
+  CHECK(place_names(*fetch) == std::vector<std::string>{"Go", "Grab", "Got", "Lost"});
+  CHECK(fetch->places[3].terminal == model::Terminal::Failure);
+  // -MD lists every file read: the plans, behaviours and the task repository.
+  CHECK(std::find(r.loaded.paths.begin(), r.loaded.paths.end(), "tasks/TaskRepository.tsk") != r.loaded.paths.end());
+  CHECK(std::find(r.loaded.paths.begin(), r.loaded.paths.end(), "plans/Fetch.pml") != r.loaded.paths.end());
+  CHECK(std::find(r.loaded.paths.begin(), r.loaded.paths.end(), "plans/Behaviours/DriveToItem.beh") !=
+        r.loaded.paths.end());
+}
+
+TEST_CASE("alica: a plan with several entry points becomes an sfc whose initial places run one machine each",
+          "[alica]") {
+  Run r("plans/Team.pml");
+  INFO(r.text);
+  REQUIRE(!r.diag.has_errors());
+  const model::Chart *team = r.chart("Team");
+  REQUIRE(team);
+  CHECK(team->kind == model::Chart::Kind::Sfc);
+  // Entry points are named after their task when they have no name of their own.
+  CHECK(place_names(*team) == std::vector<std::string>{"Leader", "Helper"});
+  CHECK(team->places[0].initial);
+  CHECK(team->places[1].initial);
+  const auto &places = r.loaded.program.files[0]->charts[0].places;
+  REQUIRE(places[0].runs);
+  CHECK(places[0].runs->text == "TeamLeader");
+  REQUIRE(places[1].runs);
+  CHECK(places[1].runs->text == "TeamHelper");
+  const model::Chart *leader = r.chart("TeamLeader");
+  const model::Chart *helper = r.chart("TeamHelper");
+  REQUIRE(leader);
+  REQUIRE(helper);
+  CHECK(place_names(*leader) == std::vector<std::string>{"Lead", "Arrive"});
+  CHECK(place_names(*helper) == std::vector<std::string>{"Guard", "Relieved"});
+  // Behaviours in state order, then conditions in transition order; a precondition with no
+  // name on a transition with none is named after its id.
+  std::vector<std::string> functions;
+  for (const auto &f : r.model.functions) functions.push_back(f.name);
+  CHECK(functions == std::vector<std::string>{"DriveToItem", "Park", "Watch", "Arrived", "Condition1600000000031"});
+}
+
+TEST_CASE("alica: each fsm rule broken in a plan is reported at the JSON object, with names and ids", "[alica]") {
+  struct Case {
+    const char *plan;
+    const char *id;  ///< the offending object
+    const char *message;
+    const char *element;
+  } cases[] = {
+      {"SelfLoop", "1800000000020", "error: transition from state 'Spin' to itself [self-transition]",
+       "note: this is ALICA transition 'Again' (id 1800000000020) of plan 'SelfLoop' (id 1800000000000)"},
+      {"SecondPair", "1800000000021", "error: second transition from 'A' to 'B' [duplicate-transition]",
+       "note: this is ALICA transition 'Second' (id 1800000000021) of plan 'SecondPair' (id 1800000000000)"},
+      {"LeavesTerminal", "1800000000021", "error: transition leaves terminal state 'Finished' [terminal-state]",
+       "note: this is ALICA transition 'Restart' (id 1800000000021) of plan 'LeavesTerminal' (id 1800000000000)"},
+      {"Disconnected", "1800000000004",
+       "error: state 'Island' is not connected to the initial state 'Start' [not-connected]",
+       "note: this is ALICA state 'Island' (id 1800000000004) of plan 'Disconnected' (id 1800000000000)"},
+  };
+  for (const auto &c : cases) {
+    std::string file = fmt::format("plans/broken/{}.pml", c.plan);
+    Run r(file);
+    INFO(r.text);
+    std::string at = fmt::format("{}:{}: ", file, object_at(file, c.id));
+    CHECK(r.diag.error_count() == 1);
+    CHECK(r.text.find(at + c.message) != std::string::npos);
+    CHECK(r.text.find(at + c.element) != std::string::npos);
+  }
+}
+
+TEST_CASE("alica: dangling references are errors at the reference, with did-you-mean", "[alica]") {
+  SECTION("a file that is not there") {
+    Run r("plans/broken/MissingFile.pml");
+    CHECK(r.diag.error_count() == 1);
+    CHECK(r.text.find("plans/broken/MissingFile.pml:37:28: error: cannot find 'Behaviours/SerchItem.beh', referenced "
+                      "here [alica-reference]") != std::string::npos);
+    CHECK(r.text.find("note: did you mean 'Behaviours/SearchItem.beh'?") != std::string::npos);
+    CHECK(r.text.find("note: looked for 'plans/broken/Behaviours/SerchItem.beh'") != std::string::npos);
+  }
+  SECTION("an id the file does not hold") {
+    Run r("plans/broken/MissingId.pml");
+    CHECK(r.diag.error_count() == 1);
+    CHECK(r.text.find("plans/broken/MissingId.pml:37:28: error: 'plans/Behaviours/Park.beh' has no element with id "
+                      "1700000000099 [alica-reference]") != std::string::npos);
+    CHECK(r.text.find("plans/Behaviours/Park.beh:1:1: note: did you mean 'Park' (id 1700000000003), which the file "
+                      "holds?") != std::string::npos);
+  }
+  SECTION("a transition to a state the plan does not have") {
+    Run r("plans/broken/MissingState.pml");
+    CHECK(r.diag.error_count() == 1);
+    std::string file = "plans/broken/MissingState.pml";
+    CHECK(r.text.find(fmt::format("{}:{}: error: transition 'Nowhere' (id 1800000000020) of plan 'MissingState' "
+                                  "(id 1800000000000) names outState 1800000000009, which the plan has no state for",
+                                  file, object_at(file, "1800000000020"))) != std::string::npos);
+  }
+}
+
+TEST_CASE("alica: malformed JSON and XML plans are located errors", "[alica]") {
+  Run r("plans/broken/Malformed.pml");
+  CHECK(r.diag.error_count() == 1);
+  CHECK(r.text.find("plans/broken/Malformed.pml:8:3: error: malformed JSON: expected ',' or ']' in an array, found "
+                    "'\"' [json]") != std::string::npos);
+  Run xml("old.pml", {{"old.pml", "<?xml version=\"1.0\" encoding=\"ASCII\"?>\n<alica:Plan id=\"1\"/>\n"}});
+  CHECK(xml.diag.error_count() == 1);
+  CHECK(xml.text.find("old.pml:1:1: error: this is an XML file of ALICA's older Eclipse designer") != std::string::npos);
+  // -x alica on a file that is JSON but no plan.
+  SourceManager sources;
+  Diagnostics diag;
+  MemoryFileSystem mem;
+  mem.add("tasks.json", test::read_file((kFixtures / "tasks/TaskRepository.tsk").string()));
+  LoadOptions options;
+  options.language = InputLanguage::Alica;
+  load_program("tasks.json", options, mem, sources, diag);
+  REQUIRE(diag.error_count() == 1);
+  CHECK(render_text(diag.all().front(), sources).rfind(
+            "tasks.json:1:1: error: 'tasks.json' is not an ALICA plan: a plan is a JSON object with \"entryPoints\" "
+            "and \"states\" [alica-format]", 0) == 0);
+}
+
+TEST_CASE("alica: what has no gfec counterpart is a located warning naming it", "[alica]") {
+  Run r("plans/broken/Ignored.pml");
+  INFO(r.text);
+  CHECK(!r.diag.has_errors());
+  CHECK(r.diag.warning_count() == 4);
+  for (const char *what : {
+           "warning: the runtimeCondition of plan 'Ignored' (id 1800000000000) is ignored",
+           "warning: synchronisation 'Together' (id 1800000000040) of plan 'Ignored' (id 1800000000000) is ignored",
+           "warning: the cardinalities [2..4] of entry point 'DefaultTask' (id 1800000000001) are ignored",
+           "warning: transition 'Sync' (id 1800000000020) of plan 'Ignored' (id 1800000000000) is synchronised with "
+           "others; the synchronisation is ignored",
+       })
+    CHECK(r.text.find(what) != std::string::npos);
+  CHECK(r.text.find("[-Walica-ignored]") != std::string::npos);
+}
+
+TEST_CASE("alica: names that are no identifiers become unique identifiers", "[alica]") {
+  std::string plan = R"({ "id" : 9, "name" : "my plan", "entryPoints" : [ { "id" : 10, "name" : "", "state" : 1 } ],
+    "states" : [ { "type" : "State", "id" : 1, "name" : "go on", "confAbstractPlanWrappers" : [ ] },
+                 { "type" : "State", "id" : 2, "name" : "go-on", "confAbstractPlanWrappers" : [ ] },
+                 { "type" : "State", "id" : 3, "name" : "MISSING_NAME", "confAbstractPlanWrappers" : [ ] },
+                 { "type" : "TerminalState", "success" : true, "id" : 4, "name" : "state", "confAbstractPlanWrappers" : [ ] },
+                 { "type" : "State", "id" : 5, "name" : "2nd", "confAbstractPlanWrappers" : [ ] } ],
+    "transitions" : [
+      { "id" : 20, "name" : "", "inState" : 1, "outState" : 2, "preCondition" : { "id" : 30, "name" : "" } },
+      { "id" : 21, "name" : "", "inState" : 2, "outState" : 3, "preCondition" : { "id" : 31, "name" : "ok?" } },
+      { "id" : 22, "name" : "", "inState" : 3, "outState" : 4, "preCondition" : null },
+      { "id" : 23, "name" : "", "inState" : 1, "outState" : 5, "preCondition" : { "id" : 33, "name" : "ok!" } } ] })";
+  Run r("my.pml", {{"my.pml", plan}});
+  INFO(r.text);
+  REQUIRE(!r.diag.has_errors());
+  const model::Chart *c = r.chart("my_plan");
+  REQUIRE(c);
+  CHECK(place_names(*c) == std::vector<std::string>{"go_on", "go_on_2", "State3", "state_", "N2nd"});
+  std::vector<std::string> functions;
+  for (const auto &f : r.model.functions) functions.push_back(f.name);
+  CHECK(functions == std::vector<std::string>{"Condition30", "ok_", "ok__33"});
+  CHECK(!c->transitions[2].condition);  // no precondition: `when true`
+}
+
+TEST_CASE("alica: every fixture, truncated or damaged anywhere, is read without a crash", "[alica]") {
+  auto files = fixture_files();
+  // Every plan of the folder, read from disk as gfec reads it, well under a second each.
+  for (const auto &[path, text] : files) {
+    if (fs::path(path).extension() != ".pml") continue;
+    auto start = std::chrono::steady_clock::now();
+    SourceManager sources;
+    Diagnostics diag;
+    RealFileSystem real;
+    LoadResult loaded = load_program((kFixtures / path).string(), {}, real, sources, diag);
+    if (!diag.has_errors()) validate(loaded.program, sources, diag);
+    double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    INFO(path);
+    CHECK(ms < 250);
+    for (const auto &d : diag.all()) CHECK(d.range.end <= sources.file(d.range.file).text().size());
+  }
+  // Master.pml cut at every 7th byte, and with one byte changed at every 13th: each a located
+  // diagnostic or a clean read, never a crash.
+  const std::string &master = files.at("plans/Master.pml");
+  auto read = [&](const std::string &text) {
+    MemoryFileSystem mem;
+    for (const auto &[path, t] : files) mem.add(path, t);
+    mem.add("plans/Master.pml", text);
+    SourceManager sources;
+    Diagnostics diag;
+    LoadResult loaded = load_program("plans/Master.pml", {}, mem, sources, diag);
+    if (!diag.has_errors()) validate(loaded.program, sources, diag);
+    for (const auto &d : diag.all()) REQUIRE(d.range.end <= sources.file(d.range.file).text().size());
+  };
+  for (std::size_t n = 0; n < master.size(); n += 7) read(master.substr(0, n));
+  for (std::size_t n = 0; n < master.size(); n += 13)
+    for (char c : {'"', '{', '[', '1', ','}) {
+      std::string damaged = master;
+      damaged[n] = c;
+      read(damaged);
+    }
+}
+
+TEST_CASE("alica: ids above 2^53 are quoted exactly, never rounded", "[alica]") {
+  // 2^63 - 1 and 2^62 + 1: as doubles both would round (to 2^63 and 2^62).
+  std::string plan = R"({ "id" : 9223372036854775807, "name" : "Huge",
+    "entryPoints" : [ { "id" : 4611686018427387905, "name" : "", "state" : 4611686018427387907 } ],
+    "states" : [ { "type" : "State", "id" : 4611686018427387907, "name" : "Spin", "confAbstractPlanWrappers" : [ ] } ],
+    "transitions" : [ { "id" : 4611686018427387909, "name" : "Again", "inState" : 4611686018427387907,
+                        "outState" : 4611686018427387907, "preCondition" : null } ] })";
+  Run r("huge.pml", {{"huge.pml", plan}});
+  INFO(r.text);
+  CHECK(r.text.find("huge.pml:4:23: error: transition from state 'Spin' to itself [self-transition]") != std::string::npos);
+  CHECK(r.text.find("note: this is ALICA transition 'Again' (id 4611686018427387909) of plan 'Huge' (id "
+                    "9223372036854775807)") != std::string::npos);
+}
