@@ -25,6 +25,7 @@ const Keyword kKeywords[] = {
     {"start", Tok::KwStart}, {"terminate", Tok::KwTerminate}, {"ignore", Tok::KwIgnore},
     {"config", Tok::KwConfig}, {"in", Tok::KwIn}, {"out", Tok::KwOut}, {"entry", Tok::KwEntry},
     {"exit", Tok::KwExit}, {"true", Tok::KwTrue}, {"false", Tok::KwFalse},
+    {"if", Tok::KwIf}, {"else", Tok::KwElse}, {"team", Tok::KwTeam},
 };
 
 bool is_ident_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }

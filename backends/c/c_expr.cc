@@ -261,7 +261,11 @@ public:
       Rendered inner = render(e.args.at(0));
       return {bracket(inner.text), kPrimary, std::move(inner.before)};
     }
+    case Expr::Kind::TeamCount:  // no side effect: the order of calls is not its concern
+      return {fmt::format("{}({}, {})", c_.team_fn, c_.self, c_.place_const.at(static_cast<std::size_t>(e.index)))};
+    case Expr::Kind::Agent: return {c_.field(c_.agent)};
     case Expr::Kind::Config: break;  // plans only: the validator keeps it out of charts
+    default: break;
     }
     return {"0"};
   }
@@ -471,6 +475,13 @@ std::string c_test(const Context &c, const Expr &e, Temporaries &temps) {
   return closed(Renderer(c, temps).render(u)).text;
 }
 
+std::string c_if_test(const Context &c, const Expr &e, Temporaries &temps) {
+  // `if ((a == b))` is what clang -Wparentheses-equality takes for a mistyped `=`.
+  const Expr &u = unbracketed(e);
+  const bool equality = u.kind == Expr::Kind::Binary && u.binary_op == BinaryOp::Eq && !settled(u);
+  return closed(Renderer(c, temps).render(equality ? u : e)).text;
+}
+
 std::string c_assertion(const Context &c, const Expr &e, Temporaries &temps) {
   const int before = temps.count();
   Rendered r = Renderer(c, temps).render(e);
@@ -496,35 +507,105 @@ std::string c_prototype(const model::Function &f) {
   return fmt::format("{} {}({})", c_type(f.result), f.name, params.empty() ? "void" : params);
 }
 
+namespace {
+
+void render_statements(const Context &c, const std::vector<model::Stmt> &stmts, Temporaries &temps, Renderer &r,
+                       std::vector<std::string> &text) {
+  for (const auto &s : stmts) {
+    switch (s.kind) {
+    case model::Stmt::Kind::Verbatim: text.emplace_back(); break;
+    case model::Stmt::Kind::If:
+      // The test, then the branches' statements (an `else if` is the one If of its else block).
+      text.push_back(c_if_test(c, s.value, temps));
+      render_statements(c, s.then_block, temps, r, text);
+      render_statements(c, s.else_block, temps, r, text);
+      break;
+    default: text.push_back(r.statement(s)); break;
+    }
+  }
+}
+
+/// Writes statements from `text`, consuming it from `at` in the order render_statements() filled it.
+class StatementWriter {
+public:
+  StatementWriter(CodeWriter &w, const Context &c, const std::vector<std::string> &text)
+      : w_(w), sources_(c.model.sources), text_(text) {}
+
+  void list(const std::vector<model::Stmt> &stmts) {
+    for (const auto &s : stmts) {
+      if (s.kind == model::Stmt::Kind::Verbatim) {
+        emit_verbatim(w_, sources_, s.range, s.verbatim);
+        next_ = 0;
+        ++at_;
+        continue;
+      }
+      point_at(s.range);
+      if (s.kind == model::Stmt::Kind::If) {
+        branches(s, "");
+        continue;
+      }
+      line(text_.at(at_++));
+    }
+  }
+
+private:
+  /// `if (test) {`, the branches, and the closing brace; `prefix` is `} else ` in an else-if chain.
+  void branches(const model::Stmt &s, const char *prefix) {
+    line(fmt::format("{}if ({}) {{", prefix, text_.at(at_++)));
+    w_.indent();
+    list(s.then_block);
+    w_.dedent();
+    if (s.else_if) {
+      const model::Stmt &next = s.else_block.front();
+      point_at(next.range);
+      branches(next, "} else ");
+      return;
+    }
+    if (!s.else_block.empty()) {
+      line("} else {");
+      w_.indent();
+      list(s.else_block);
+      w_.dedent();
+    }
+    line("}");
+  }
+
+  /// A `#line` to the statement's line unless the next output line stands for it already.
+  void point_at(const SourceRange &range) {
+    if (!sources_) return;
+    std::uint32_t chart_line = sources_->begin_of(range).line;
+    if (next_ == 0 || range.file != file_ || chart_line != next_) w_.line_from(*sources_, range);
+    file_ = range.file;
+    next_ = chart_line;
+  }
+
+  void line(const std::string &text) {
+    w_.line(std::string_view(text));
+    if (next_ != 0) ++next_;
+  }
+
+  CodeWriter &w_;
+  const SourceManager *sources_;
+  const std::vector<std::string> &text_;
+  std::size_t at_ = 0;
+  // The chart line the next output line stands for (0: unknown); a #line is needed only when it
+  // is not the statement's own line.
+  FileId file_ = 0;
+  std::uint32_t next_ = 0;
+};
+
+} // namespace
+
 std::vector<std::string> c_statements(const Context &c, const std::vector<model::Stmt> &stmts, Temporaries &temps) {
   Renderer r(c, temps);
   std::vector<std::string> text;
-  for (const auto &s : stmts) text.push_back(s.kind == model::Stmt::Kind::Verbatim ? "" : r.statement(s));
+  render_statements(c, stmts, temps, r, text);
   return text;
 }
 
 void emit_statements(CodeWriter &w, const Context &c, const std::vector<model::Stmt> &stmts,
                      const std::vector<std::string> &text) {
-  const SourceManager *sources = c.model.sources;
-  // The chart line the next output line stands for; a #line is needed only when it is not
-  // the statement's own line (0: unknown).
-  FileId file = 0;
-  std::uint32_t next = 0;
-  for (std::size_t i = 0; i < stmts.size(); ++i) {
-    const auto &s = stmts[i];
-    if (s.kind == model::Stmt::Kind::Verbatim) {
-      emit_verbatim(w, sources, s.range, s.verbatim);
-      next = 0;
-      continue;
-    }
-    if (sources) {
-      std::uint32_t line = sources->begin_of(s.range).line;
-      if (next == 0 || s.range.file != file || line != next) w.line_from(*sources, s.range);
-      file = s.range.file;
-      next = line + 1;
-    }
-    w.line(text.at(i));
-  }
+  StatementWriter(w, c, text).list(stmts);
 }
 
 void emit_verbatim(CodeWriter &w, const SourceManager *sources, const SourceRange &range, std::string_view text) {

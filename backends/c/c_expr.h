@@ -58,6 +58,10 @@ std::string c_condition(const Context &c, const model::Expr &e, Temporaries &tem
 /// not bracketed (clang -Wparentheses-equality takes `if ((a == b))` for a mistyped `=`).
 std::string c_test(const Context &c, const model::Expr &e, Temporaries &temps);
 
+/// `e` as the condition of an `if` statement, written inside its brackets: `X()`, `n > 2`, or
+/// where calls need temporaries, the bracketed comma expression `(gfec_t0 = N(), gfec_t0 + M() > 2)`.
+std::string c_if_test(const Context &c, const model::Expr &e, Temporaries &temps);
+
 /// A postcondition as the statement that asserts it: `assert(e);`, or where keeping the calls
 /// in order needs temporaries, `gfec_t0 = S0(); gfec_t1 = gfec_t0 < S1(); assert(gfec_t1);`
 /// (code checkers flag an assertion that assigns).
@@ -72,6 +76,9 @@ std::string c_prototype(const model::Function &f);
 
 /// The statements as C, one line each (empty for verbatim code), rendered before they are
 /// written so that the temporaries they need can be declared first, at the top of the block.
+/// An `if` is its test (what goes between the brackets of `if ( )`) followed by the statements
+/// of its branches, then and else, the same way: one entry per statement, in textual order.
+/// The temporaries of the branches are declared with the rest, at the top of the block.
 std::vector<std::string> c_statements(const Context &c, const std::vector<model::Stmt> &stmts, Temporaries &temps);
 
 /// The statements, one per line at the current indentation, each preceded by `#line` to the

@@ -51,6 +51,7 @@ Json chart_document(const model::Model &m, const EmitOptions &o, const model::Ch
   Scope scope{&c, nullptr};
   Json doc = header(m, o, fsm ? "fsm" : "sfc", c.name, c.range);
   doc["period_ms"] = c.period_ms > 0 ? Json(c.period_ms) : Json(nullptr);
+  doc["team"] = c.team > 0 ? Json(c.team) : Json(nullptr);
 
   Json places = Json::array();
   for (std::size_t i = 0; i < c.places.size(); ++i) {

@@ -25,6 +25,9 @@ const char *kind_name(Expr::Kind k) {
   case Expr::Kind::Unary: return "unary";
   case Expr::Kind::Binary: return "binary";
   case Expr::Kind::Paren: return "paren";
+  case Expr::Kind::TeamCount: return "team";
+  case Expr::Kind::Agent: return "agent";
+  default: break;
   }
   return "?";
 }
@@ -109,6 +112,8 @@ Json expression_tree(const model::Model &m, const Scope &scope, const Expr &e) {
     j["args"] = args();
     break;
   case Expr::Kind::Paren: j["args"] = args(); break;
+  case Expr::Kind::TeamCount: j["place"] = scope.chart ? name_at(scope.chart->places, e.index) : "?"; break;
+  default: break;
   }
   return j;
 }
@@ -135,6 +140,13 @@ Json statements(const model::Model &m, const Scope &scope, const std::vector<mod
     case model::Stmt::Kind::Verbatim:
       j["kind"] = "verbatim";
       j["code"] = s.verbatim;
+      break;
+    case model::Stmt::Kind::If:
+      j["kind"] = "if";
+      j["condition"] = expression_tree(m, scope, s.value);
+      j["then"] = statements(m, scope, s.then_block);
+      j["else"] = statements(m, scope, s.else_block);
+      j["else_if"] = s.else_if;
       break;
     }
     j["location"] = location(m, s.range);

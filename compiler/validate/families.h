@@ -21,6 +21,8 @@ void fold_file_consts(Context &cx);
 /// validate_chart.cc: a chart's name now; its body later, once every global name is known.
 void declare_chart(Context &cx, const ast::Chart &chart);
 void validate_chart(Context &cx, int index);
+/// Once every chart is validated: a team machine run as a sub-chart (`P runs X`) is an error.
+void check_team_roots(Context &cx);
 
 /// validate_sfc.cc and validate_fsm.cc: the rules of each kind, run by validate_chart once the
 /// chart's names, bodies and conditions are lowered. `watch` began with the chart: its

@@ -33,6 +33,7 @@ model::Model validate(const ast::Program &program, const SourceManager &sources,
   collect_verbatims(cx);
   validation::fold_file_consts(cx);
   for (std::size_t i = 0; i < model.charts.size(); ++i) validation::validate_chart(cx, static_cast<int>(i));
+  validation::check_team_roots(cx);
   for (std::size_t i = 0; i < model.plans.size(); ++i) validation::validate_plan(cx, static_cast<int>(i));
   validation::check_plan_recursion(cx);
   return model;

@@ -38,8 +38,10 @@ void declare_interface(Context &cx, const ast::Interface &iface) {
     out.interface_name = iface.name.text;
     out.range = f.range;
     bool ok = lower_prototype(f, out, cx.diag);
-    if (f.name.text == "elapsed")
-      cx.diag.error(f.name.range, "reserved-name", "'elapsed' is built into the chart language and cannot name a function");
+    for (const char *builtin : {"elapsed", "agent"})
+      if (f.name.text == builtin)
+        cx.diag.error(f.name.range, "reserved-name",
+                      fmt::format("'{}' is built into the chart language and cannot name a function", builtin));
     int index = static_cast<int>(cx.model.functions.size());
     cx.model.functions.push_back(std::move(out));
     cx.function_ok.push_back(ok);

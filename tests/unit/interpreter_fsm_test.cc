@@ -108,3 +108,48 @@ fsm Blink {
         "tick 5\nav 0 0 1\nstate Enough succeeded\n"            // count >= 3 is tried first
         "tick 6\nav 0 0 1\nstate Enough succeeded\n");
 }
+
+TEST_CASE("interpreter fsm: entry and exit blocks") {
+  // The machine of c_backend_run_test.cc "fsm entry and exit".
+  auto c = compile(R"(
+fsm Doors {
+  period 10ms;
+  initial state A { entry { EnterA(); } DoA(); exit { ExitA(); } }
+  state B {
+    entry { EnterB(); if (elapsed(B) >= 10ms) { Late(); } }
+    DoB();
+    if (elapsed(B) >= 10ms) { Late(); }
+    exit { ExitB(); }
+  }
+  success state Done;
+  A -> B when Go();
+  B -> A when Back();
+  B -> Done when Fin();
+})",
+                   R"(interface Bot {
+  bool Go(); bool Back(); bool Fin();
+  void EnterA(); void ExitA(); void DoA(); void EnterB(); void ExitB(); void DoB(); void Late();
+})");
+  ScriptedEnv env(*c);
+  env.script("Go", {0, 1, 0, 0, 1, 0, 1}).script("Back", {0, 0, 0, 1, 0, 0, 1}).script("Fin", {0, 0, 0, 0, 0, 1, 1});
+  CHECK(run_log(*c, env, 7) ==
+        "tick 1\ncall EnterA()\ncall Go() = false\ncall DoA()\nav 1 0 0\nstate A running\n"
+        "tick 2\ncall Go() = true\ncall ExitA()\ncall EnterB()\ncall DoB()\nav 0 1 0\nstate B running\n"
+        "tick 3\ncall Back() = false\ncall Fin() = false\ncall DoB()\ncall Late()\nav 0 1 0\nstate B running\n"
+        "tick 4\ncall Back() = true\ncall ExitB()\ncall EnterA()\ncall DoA()\nav 1 0 0\nstate A running\n"
+        "tick 5\ncall Go() = true\ncall ExitA()\ncall EnterB()\ncall DoB()\nav 0 1 0\nstate B running\n"
+        "tick 6\ncall Back() = false\ncall Fin() = true\ncall ExitB()\nav 0 0 1\nstate Done succeeded\n"
+        "tick 7\nav 0 0 1\nstate Done succeeded\n");
+  // Explained: the exit, then the entry, then the action.
+  ScriptedEnv go(*c);
+  go.script("Go", {0, 1});
+  std::string explained = run_log(*c, go, 2, {false, true, true});
+  CHECK(explained.find("tick 2\n"
+                       "  cond T0 = true\n"
+                       "    call Go() = true\n"
+                       "  fire T0: A -> B\n"
+                       "  exit A\n"
+                       "    call ExitA()\n"
+                       "  entry B\n"
+                       "    call EnterB()\n") != std::string::npos);
+}
