@@ -1,6 +1,8 @@
 // The reference interpreter on fsm machines: LANGUAGE.md §7.
 #include "interpreter_support.h"
 
+#include <fmt/format.h>
+
 using namespace gfec;
 using test::compile;
 using test::run_log;
@@ -152,4 +154,72 @@ fsm Doors {
                        "    call ExitA()\n"
                        "  entry B\n"
                        "    call EnterB()\n") != std::string::npos);
+}
+
+TEST_CASE("interpreter fsm: a team of four under the reference exchange") {
+  // The census of c_backend_team_test.cc: the same calls, in the interpreter's words.
+  auto c = compile(R"(
+fsm Census {
+  team 4;
+  initial state Go { Count(agent(), team(Go), team(Wait)); }
+  state Wait { Count(agent(), team(Go), team(Wait)); }
+  Go -> Wait when Move();
+  Wait -> Go when Move();
+})",
+                   "interface Bot { bool Move(); void Count(int me, int go, int wait); }");
+  std::vector<std::unique_ptr<ScriptedEnv>> envs;
+  std::vector<interp::Environment *> agents;
+  const std::vector<std::vector<double>> moves = {{0, 0, 1, 0}, {1, 0, 0, 0}, {0}, {1, 0}};
+  for (const auto &m : moves) {
+    envs.push_back(std::make_unique<ScriptedEnv>(*c));
+    envs.back()->script("Move", m);
+    agents.push_back(envs.back().get());
+  }
+  Diagnostics diag;
+  interp::RunResult r = interp::run_team(c->model, 0, agents, 4, {}, diag);
+  REQUIRE(r.completed);
+  auto agent = [](int k, bool move, const char *count, const char *state) {
+    return fmt::format("agent {}\ncall Move() = {}\ncall Count({})\nav {}\nstate {} running\n", k, move ? "true" : "false",
+                       count, std::string(state) == "Go" ? "1 0" : "0 1", state);
+  };
+  CHECK(r.log.render({}) == "tick 1\n" + agent(0, false, "0, 0, 0", "Go") + agent(1, true, "1, 0, 0", "Wait") +
+                                agent(2, false, "2, 0, 0", "Go") + agent(3, true, "3, 0, 0", "Wait") +
+                                "tick 2\n" + agent(0, false, "0, 1, 2", "Go") + agent(1, false, "1, 2, 1", "Wait") +
+                                agent(2, false, "2, 1, 2", "Go") + agent(3, false, "3, 2, 1", "Wait") +
+                                "tick 3\n" + agent(0, true, "0, 1, 2", "Wait") + agent(1, false, "1, 2, 1", "Wait") +
+                                agent(2, false, "2, 1, 2", "Go") + agent(3, false, "3, 2, 1", "Wait") +
+                                "tick 4\n" + agent(0, false, "0, 1, 2", "Wait") + agent(1, false, "1, 1, 2", "Wait") +
+                                agent(2, false, "2, 0, 3", "Go") + agent(3, false, "3, 1, 2", "Wait"));
+  // Explained: each agent's part one level deeper, and the exchange after the tick.
+  std::string explained = r.log.render({false, true, true});
+  CHECK(explained.find("tick 3\n  agent 0\n    cond T0 = true\n      call Move() = true\n") != std::string::npos);
+  CHECK(explained.find("  team Wait Wait Go Wait\ntick 4\n") != std::string::npos);
+}
+
+TEST_CASE("interpreter fsm: the engine's team API") {
+  auto c = compile(R"(
+fsm Census {
+  team 4;
+  initial state Go;
+  state Wait;
+  Go -> Wait when team(Wait) > 1;
+})");
+  interp::Engine e(c->model, 0);
+  CHECK(e.team_size() == 4);
+  e.set_agent(2);
+  e.report(2, 1);   // its own number
+  e.report(4, 1);   // no such agent
+  e.report(-1, 1);
+  e.report(0, 2);   // no such state
+  CHECK(e.reports() == std::vector<int>{-1, -1, -1, -1});
+  e.report(0, 1);
+  e.report(3, 1);
+  e.set_agent(9);   // ignored
+  CHECK(e.agent() == 2);
+  ScriptedEnv env(*c);
+  e.run(env, nullptr);
+  CHECK(e.state() == 1);  // two others in Wait
+  e.init();
+  CHECK(e.agent() == 0);
+  CHECK(e.reports() == std::vector<int>{-1, -1, -1, -1});
 }
