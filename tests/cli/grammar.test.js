@@ -134,3 +134,18 @@ test('verbatim code, block comments, strings with escapes, floats and exponents'
   assert.ok(on(7).some((t) => t.text === ' raw(); ' || t.scopes.some((s) => s.startsWith('meta.embedded'))));
   assert.equal(scopeOf(tokens, 's', 7), 'keyword.other.unit.gfec');
 });
+
+test('if and else, team machines: team N, team(S) and agent()', () => {
+  const tokens = tokenize([
+    'fsm Fetch {',
+    '  team 4;',
+    '  initial state Go { if (team(Grab) == 0) { Go(); } else if (agent() > 1) { } else { Stop(); } }',
+    '}',
+  ].join('\n'));
+  assert.equal(scopeOf(tokens, 'if'), 'keyword.control.conditional.gfec');
+  assert.equal(scopeOf(tokens, 'else'), 'keyword.control.conditional.gfec');
+  assert.equal(scopeOf(tokens, 'team', 2), 'storage.type.team.gfec');
+  assert.equal(scopeOf(tokens, 'team', 3), 'support.function.builtin.gfec');
+  assert.equal(scopeOf(tokens, 'agent'), 'support.function.builtin.gfec');
+  assert.equal(scopeOf(tokens, '4'), 'constant.numeric.integer.gfec');
+});
