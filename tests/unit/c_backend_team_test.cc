@@ -4,7 +4,12 @@
 // X_report. The expected logs are written by hand from the language's rules.
 #include "../run/c_backend_support.h"
 
+#include "interpreter/run_chart.h"
+
 #include <catch2/catch.hpp>
+
+#include <random>
+#include <sstream>
 
 using namespace cbt;
 
@@ -223,5 +228,116 @@ int main(void)
     auto run = run_command(fmt::format("cd '{}' && ./api-{}", dir.string(), cc), dir / ("run-" + cc + ".log"));
     REQUIRE(run.status == 0);
     CHECK(run.output == "0 0\n0 0\n1 2\n2 1\nact Count(2, 2, 1)\n2 0\n0 0\nact Count(0, 0, 0)\n");
+  }
+}
+
+namespace {
+
+/// The harness's script read by the interpreter: `F@k` / `F@k=v` for agent k, else `F` / `F=v`.
+class ScriptInputs : public interp::Environment {
+public:
+  ScriptInputs(const model::Model &m, const std::vector<std::string> &lines, int agent)
+      : m_(m), lines_(lines), agent_(agent) {}
+  interp::Value call(int function, const std::vector<interp::Value> &, std::uint64_t tick) override {
+    const model::Function &f = m_.functions.at(static_cast<std::size_t>(function));
+    std::istringstream line(lines_.at(static_cast<std::size_t>(tick - 1)));
+    double own = -1, shared = -1;
+    for (std::string token; line >> token;) {
+      auto eq = token.find('=');
+      std::string key = token.substr(0, eq);
+      double v = eq == std::string::npos ? 1 : std::stod(token.substr(eq + 1));
+      if (key == f.name + "@" + std::to_string(agent_)) own = v;
+      if (key == f.name) shared = v;
+    }
+    double v = own >= 0 ? own : shared >= 0 ? shared : 0;
+    if (f.result == Type::Bool) return interp::Value::of_bool(v != 0);
+    return interp::Value::of_int(static_cast<std::int32_t>(v));
+  }
+
+private:
+  const model::Model &m_;
+  const std::vector<std::string> &lines_;
+  int agent_;
+};
+
+/// The interpreter's observable log in the team harness's words (`cond F -> 1`, `act F(1)`,
+/// `state S status 0`; no `av`).
+std::string in_harness_words(const std::string &log) {
+  std::istringstream in(log);
+  std::string out;
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("av ", 0) == 0) continue;
+    if (line.rfind("state ", 0) == 0) {
+      std::string name = line.substr(6, line.find(' ', 6) - 6);
+      const char *status = line.find("succeeded") != std::string::npos ? "1" : line.find("failed") != std::string::npos ? "-1" : "0";
+      out += "state " + name + " status " + status + "\n";
+      continue;
+    }
+    if (line.rfind("call ", 0) == 0) {
+      std::string call = line.substr(5);
+      auto eq = call.find(" = ");
+      if (eq != std::string::npos) {  // a sensing function without arguments
+        std::string v = call.substr(eq + 3);
+        if (v == "true") v = "1";
+        if (v == "false") v = "0";
+        out += "cond " + call.substr(0, call.find('(')) + " -> " + v + "\n";
+        continue;
+      }
+      for (auto [from, to] : {std::pair<std::string, std::string>{"true", "1"}, {"false", "0"}})
+        for (std::size_t at; (at = call.find(from)) != std::string::npos;) call.replace(at, from.size(), to);
+      if (call.size() > 2 && call.compare(call.size() - 2, 2, "()") == 0) call.resize(call.size() - 2);
+      out += "act " + call + "\n";
+      continue;
+    }
+    out += line + "\n";
+  }
+  return out;
+}
+
+} // namespace
+
+TEST_CASE("c engine team: the engines and the interpreter agree on random inputs", "[c_backend][run][team]") {
+  const std::string golden = read_file(fs::path(GFEC_SOURCE_DIR) / "tests" / "golden" / "c" / "team_fetch.fsm");
+  struct Case {
+    const char *name;
+    std::string chart;
+    int agents;
+  };
+  const Case cases[] = {{"fetch", kFetch, 4}, {"census", kCensus, 3}, {"golden", golden, 2}};
+  for (const Case &k : cases) {
+    auto compiled = compile_chart({{"chart.fsm", k.chart}}, "chart.fsm", "engine.c");
+    REQUIRE(!compiled->diag.has_errors());
+    const model::Chart &chart = compiled->the_chart();
+    for (unsigned seed = 1; seed <= 3; ++seed) {
+      std::mt19937 rng(seed * 7919u + static_cast<unsigned>(k.agents));
+      std::vector<std::string> lines;
+      std::string script;
+      for (int tick = 0; tick < 40; ++tick) {
+        std::string line;
+        for (int fi : chart.functions) {
+          const auto &f = compiled->model.functions[static_cast<std::size_t>(fi)];
+          if (f.result == Type::Void) continue;
+          for (int a = 0; a < k.agents; ++a) {
+            unsigned r = rng() % 4;
+            if (f.result == Type::Bool && r == 0) line += fmt::format("{}@{} ", f.name, a);
+            if (f.result == Type::Int) line += fmt::format("{}@{}={} ", f.name, a, r);
+          }
+        }
+        lines.push_back(line);
+        script += line + "\n";
+      }
+      std::string c_log = run_team(fmt::format("random_{}_{}", k.name, seed), k.chart, k.agents, script);
+      std::vector<std::unique_ptr<ScriptInputs>> inputs;
+      std::vector<interp::Environment *> envs;
+      for (int a = 0; a < k.agents; ++a) {
+        inputs.push_back(std::make_unique<ScriptInputs>(compiled->model, lines, a));
+        envs.push_back(inputs.back().get());
+      }
+      Diagnostics diag;
+      interp::RunResult r = interp::run_team(compiled->model, compiled->chart, envs, lines.size(), {}, diag);
+      REQUIRE(r.completed);
+      INFO(k.name << " seed " << seed << ", script:\n" << script);
+      CHECK(in_harness_words(r.log.render({})) == c_log);
+    }
   }
 }
