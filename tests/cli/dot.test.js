@@ -132,3 +132,11 @@ test('-o - writes a one-file output to stdout, for pipes into dot', () => {
   assert.match(c.stderr, /-o - needs a back end that writes one file/);
   assert.equal(gfec(['split.sfc', '--emit=dot', '-o', '-', '-MD'], dir).code, 2);
 });
+
+test('dot: a team machine says its team size; an if keeps its braces', () => {
+  const dot = emit(path.join(SAMPLES, 'fetch_team.fsm'), 'dot');
+  assert.match(dot, /label="fsm Fetch \(period 10ms, team of 4 agents\)"/);
+  const yieldNode = Object.values(nodes(dot)).filter((a) => /\blabel=/.test(a)).map(label).find((l) => l.startsWith('Yield'));
+  assert.ok(yieldNode.includes('entry: if (agent() == 0) { Beep(2); } else { Beep(1); }\n'), yieldNode);
+  if (haveDot) render(dot);
+});
