@@ -445,6 +445,11 @@ std::string Temporaries::add(model::Type type) {
 }
 
 void Temporaries::declare(CodeWriter &w) {
+  for (const auto &line : declarations()) w.line(std::string_view(line));
+}
+
+std::vector<std::string> Temporaries::declarations() {
+  std::vector<std::string> lines;
   std::vector<bool> done(pending_.size(), false);
   for (std::size_t i = 0; i < pending_.size(); ++i) {
     if (done[i]) continue;
@@ -454,9 +459,10 @@ void Temporaries::declare(CodeWriter &w) {
         names += (names.empty() ? "" : ", ") + pending_[j].second;
         done[j] = true;
       }
-    w.line("{} {}; /* temporaries: the chart calls left to right */", c_type(pending_[i].first), names);
+    lines.push_back(fmt::format("{} {}; /* temporaries: the chart calls left to right */", c_type(pending_[i].first), names));
   }
   pending_.clear();
+  return lines;
 }
 
 std::string c_expr(const Context &c, const Expr &e, Temporaries &temps) {
@@ -514,12 +520,28 @@ void render_statements(const Context &c, const std::vector<model::Stmt> &stmts, 
   for (const auto &s : stmts) {
     switch (s.kind) {
     case model::Stmt::Kind::Verbatim: text.emplace_back(); break;
-    case model::Stmt::Kind::If:
-      // The test, then the branches' statements (an `else if` is the one If of its else block).
+    case model::Stmt::Kind::If: {
+      // The test (its temporaries belong to the enclosing block), then each branch: the
+      // declarations of its own temporaries, then its statements. An `else if` is the one If
+      // of its else block, and declares in the enclosing block like any other test there.
       text.push_back(c_if_test(c, s.value, temps));
-      render_statements(c, s.then_block, temps, r, text);
-      render_statements(c, s.else_block, temps, r, text);
+      for (const auto *branch : {&s.then_block, &s.else_block}) {
+        if (branch == &s.else_block && s.else_if) {  // `} else if (test) {`: no block of its own
+          text.emplace_back();
+          render_statements(c, *branch, temps, r, text);
+          continue;
+        }
+        auto outer = temps.take();
+        std::size_t at = text.size();
+        text.emplace_back();
+        render_statements(c, *branch, temps, r, text);
+        std::string declared;
+        for (const auto &line : temps.declarations()) declared += (declared.empty() ? "" : "\n") + line;
+        text[at] = declared;
+        temps.restore(std::move(outer));
+      }
       break;
+    }
     default: text.push_back(r.statement(s)); break;
     }
   }
@@ -553,9 +575,10 @@ private:
   void branches(const model::Stmt &s, const char *prefix) {
     line(fmt::format("{}if ({}) {{", prefix, text_.at(at_++)));
     w_.indent();
-    list(s.then_block);
+    branch(s.then_block);
     w_.dedent();
     if (s.else_if) {
+      ++at_;  // the else block declares nothing: its one `if` declares where it stands
       const model::Stmt &next = s.else_block.front();
       point_at(next.range);
       branches(next, "} else ");
@@ -564,10 +587,24 @@ private:
     if (!s.else_block.empty()) {
       line("} else {");
       w_.indent();
-      list(s.else_block);
+      branch(s.else_block);
       w_.dedent();
+    } else {
+      ++at_;
     }
     line("}");
+  }
+
+  /// A branch: its temporaries' declarations, then its statements.
+  void branch(const std::vector<model::Stmt> &stmts) {
+    const std::string &declared = text_.at(at_++);
+    if (!declared.empty()) {
+      std::size_t start = 0;
+      for (std::size_t nl; (nl = declared.find('\n', start)) != std::string::npos; start = nl + 1)
+        line(declared.substr(start, nl - start));
+      line(declared.substr(start));
+    }
+    list(stmts);
   }
 
   /// A `#line` to the statement's line unless the next output line stands for it already.

@@ -254,7 +254,11 @@ public:
     if (depth > 0 && chance(0.15)) {  // if / else if / else (docs/language.md "if and else")
       GStmt s;
       s.is_if = true;
+      // A condition that reads something that changes: cppcheck rightly flags `if (false)` and
+      // an inner `if` on the outer one's constant condition.
       s.expr = boolean(2);
+      for (int tries = 0; tries < 5 && !varies(s.expr); ++tries) s.expr = boolean(2);
+      if (!varies(s.expr)) return statement(0);
       s.then_block = block(0, 2, depth - 1);
       s.has_else = chance(0.5);
       if (s.has_else) {

@@ -113,25 +113,22 @@ void Fetch_run(Fetch *m)
             }
 #line 115 "team_fetch.c"
         }
-    }
-
 #ifdef Fetch_HOOKS
-    /* Observation hooks: the state left and the state entered; the transitions leaving it */
-    if (m->state != from) {
+        /* Observation hooks: the state left and the state entered; the transitions leaving it */
         Fetch_activated(m, from, false);
         Fetch_activated(m, m->state, true);
         if (m->state == Fetch_Go) { Fetch_enabled(m, Fetch_T0); Fetch_enabled(m, Fetch_T1); }
         if (m->state == Fetch_Grab) { Fetch_enabled(m, Fetch_T2); }
         if (m->state == Fetch_Yield) { Fetch_enabled(m, Fetch_T3); }
-    }
 #endif
+    }
 
 #ifdef Fetch_CHECKS
     /* Postconditions of the terminal states, checked on entering them */
     if (m->state == Fetch_Left) {
 #line 33 "team_fetch.fsm"
         assert(Parked());
-#line 135 "team_fetch.c"
+#line 132 "team_fetch.c"
     }
 #endif
 
@@ -139,12 +136,12 @@ void Fetch_run(Fetch *m)
     if (m->state == Fetch_Go) {
 #line 13 "team_fetch.fsm"
         DriveToItem();
-#line 143 "team_fetch.c"
+#line 140 "team_fetch.c"
     }
     if (m->state == Fetch_Grab) {
 #line 16 "team_fetch.fsm"
         PickUp();
-#line 148 "team_fetch.c"
+#line 145 "team_fetch.c"
     }
     if (m->state == Fetch_Yield) {
 #line 29 "team_fetch.fsm"
@@ -153,7 +150,7 @@ void Fetch_run(Fetch *m)
 #line 30 "team_fetch.fsm"
             m->waited += 1;
         }
-#line 157 "team_fetch.c"
+#line 154 "team_fetch.c"
     }
 }
 
