@@ -26,6 +26,7 @@ const Keyword kKeywords[] = {
     {"config", Tok::KwConfig}, {"in", Tok::KwIn}, {"out", Tok::KwOut}, {"entry", Tok::KwEntry},
     {"exit", Tok::KwExit}, {"true", Tok::KwTrue}, {"false", Tok::KwFalse}, {"runs", Tok::KwRuns},
     {"test", Tok::KwTest},
+    {"if", Tok::KwIf}, {"else", Tok::KwElse}, {"team", Tok::KwTeam},
 };
 
 bool is_ident_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }

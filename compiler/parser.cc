@@ -154,6 +154,7 @@ private:
   Chart chart(Chart::Kind kind);
   void chart_item(Chart &chart);
   Period period();
+  void team_decl(Chart &chart);
   Place place(Chart::Kind kind);
   Block block();
   void place_body(Place &p);
@@ -178,6 +179,7 @@ private:
 
   // ------------------------------------------------------------ statements and expressions
   Stmt statement();
+  Stmt if_statement();
   ExprPtr expr() { return binary(1); }
   ExprPtr binary(int min_precedence);
   ExprPtr unary();
@@ -343,10 +345,11 @@ Chart Parser::chart(Chart::Kind kind) {
   return c;
 }
 
-//G chart_item: period | var_decl | const_decl | place | state | transition
+//G chart_item: period | team | var_decl | const_decl | place | state | transition
 void Parser::chart_item(Chart &c) {
   switch (tok_.kind) {
   case Tok::KwPeriod: c.periods.push_back(period()); return;
+  case Tok::KwTeam: team_decl(c); return;
   case Tok::KwVar:
   case Tok::KwConst: c.values.push_back(value_decl()); return;
   case Tok::KwInitial:
@@ -370,6 +373,21 @@ Period Parser::period() {
   Token d = expect(Tok::Duration, "after 'period' (e.g. 'period 10ms;')");
   expect(Tok::Semi, "after the period");
   return {d.duration_ms, from(begin)};
+}
+
+//G team: 'team' INT ';'
+void Parser::team_decl(Chart &c) {
+  std::uint32_t begin = here();
+  advance();
+  Token n = expect(Tok::Int, "after 'team' (the number of agents, e.g. 'team 4;')");
+  expect(Tok::Semi, "after the team size");
+  // The validator checks the size; a number beyond long long is as wrong as 0.
+  errno = 0;
+  char *end = nullptr;
+  std::string digits(n.text);
+  long long value = std::strtoll(digits.c_str(), &end, 10);
+  if (errno != 0 || *end != '\0') value = -1;
+  c.teams.emplace_back(value, from(begin));
 }
 
 //G place: [ 'initial' ] 'place' IDENT [ 'runs' IDENT ] ( ';' | place_body )
@@ -674,10 +692,12 @@ ExprPtr Parser::path(Name first) {
   return e;
 }
 
-//G statement: call ';' | IDENT ( '=' | '+=' | '-=' ) expr ';' | VERBATIM
+//G statement: call ';' | IDENT ( '=' | '+=' | '-=' ) expr ';' | VERBATIM | if_statement
 Stmt Parser::statement() {
   std::uint32_t begin = here();
   Stmt s;
+  if (at(Tok::KwIf)) return if_statement();
+  if (at(Tok::KwElse)) fail("expected a statement ('else' must follow the block of an 'if')");
   if (at(Tok::Verbatim)) {
     Token t = take();
     s.kind = Stmt::Kind::Verbatim;
@@ -685,7 +705,7 @@ Stmt Parser::statement() {
     s.range = t.range;
     return s;
   }
-  if (!at(Tok::Ident)) fail("expected a statement (a call, an assignment or %{ ... %})");
+  if (!at(Tok::Ident)) fail("expected a statement (a call, an assignment, 'if' or %{ ... %})");
   Name target = name();
   if (at(Tok::Assign) || at(Tok::PlusAssign) || at(Tok::MinusAssign)) {
     Tok op = take().kind;
@@ -704,6 +724,32 @@ Stmt Parser::statement() {
     fail("expected '(' or an assignment after the name");
   }
   expect(Tok::Semi, "after the statement");
+  s.range = from(begin);
+  return s;
+}
+
+//G if_statement: 'if' '(' expr ')' block [ 'else' ( if_statement | block ) ]
+Stmt Parser::if_statement() {
+  DepthGuard guard(*this);  // `else if` chains and nested blocks recurse
+  std::uint32_t begin = here();
+  advance();
+  Stmt s;
+  s.kind = Stmt::Kind::If;
+  expect(Tok::LParen, "after 'if'");
+  s.value = expr();
+  expect(Tok::RParen, "to close the condition of 'if'");
+  if (!at(Tok::LBrace)) fail("expected '{' after the condition of 'if' (the branches of an 'if' are blocks)");
+  s.then_block = block();
+  if (accept(Tok::KwElse)) {
+    s.has_else = true;
+    if (at(Tok::KwIf)) {
+      s.else_if = true;
+      s.else_block.push_back(if_statement());
+    } else {
+      if (!at(Tok::LBrace)) fail("expected '{' or 'if' after 'else'");
+      s.else_block = block();
+    }
+  }
   s.range = from(begin);
   return s;
 }
@@ -770,14 +816,24 @@ ExprPtr Parser::unary() {
   return primary();
 }
 
-//G primary: INT | FLOAT | STRING | DURATION | 'true' | 'false' | IDENT [ arguments ] | '(' expr ')'
-//G         | 'active' active_arguments
+//G primary: INT | FLOAT | STRING | DURATION | 'true' | 'false' | IDENT [ arguments ] | 'team' arguments
+//G         | '(' expr ')' | 'active' active_arguments
 ExprPtr Parser::primary() {
   std::uint32_t begin = here();
   height_ = 1;  // a leaf; calls and brackets add theirs below
   if (in_test_)
     if (ExprPtr e = test_operand()) return e;
   switch (tok_.kind) {
+  case Tok::KwTeam: {
+    // `team(S)`: a built-in like `elapsed(P)`, though its name is a keyword (`team N;`).
+    Token t = take();
+    auto e = make(Expr::Kind::Call, t.range);
+    e->name = {std::string(t.text), t.range};
+    if (!at(Tok::LParen)) fail("expected '(' after 'team' (team(S) counts the other agents in state S)");
+    e->args = arguments();
+    e->range = from(begin);
+    return e;
+  }
   case Tok::Int:
   case Tok::Float: {
     Token t = take();

@@ -22,7 +22,7 @@ bool is_reserved(const std::string &word) {
       "_Generic", "_Noreturn", "_Static_assert", "_Thread_local",
       // <stdbool.h>, <assert.h>, <limits.h>, <string.h> as the engine uses them
       "bool", "true", "false", "assert", "uint32_t", "UINT32_MAX", "memcpy", "NULL",
-      "uint8_t", "uint16_t", "UINT8_MAX", "UINT16_MAX",
+      "uint8_t", "uint16_t", "UINT8_MAX", "UINT16_MAX", "int8_t", "int16_t",
       // C++
       "alignas", "alignof", "and", "and_eq", "asm", "bitand", "bitor", "catch", "char16_t", "char32_t",
       "char8_t", "class", "compl", "concept", "consteval", "constexpr", "constinit", "const_cast",
@@ -90,6 +90,14 @@ void name_globals(Context &c, NameSpace &globals, const Context *root) {
     c.place_count = globals.take(c.place_count);
     c.transition_count = globals.take(c.transition_count);
   }
+  if (c.team()) {
+    // The API names are the contract, like _init's; the validator keeps states off them.
+    c.set_agent_fn = t + "_set_agent";
+    c.report_fn = t + "_report";
+    c.team_size = t + "_TEAM_SIZE";
+    c.team_fn = t + "_team";
+    for (const auto *n : {&c.set_agent_fn, &c.report_fn, &c.team_size, &c.team_fn}) globals.claim(*n);
+  }
   for (const auto &p : c.chart.places) c.place_const.push_back(globals.take(t + "_" + p.name));
   for (const auto &tr : c.chart.transitions) c.transition_const.push_back(globals.take(t + "_" + tr.name));
   c.lowest_fn = globals.take(t + "_lowest");
@@ -112,6 +120,10 @@ void name_fields(Context &c) {
   c.current = fields.take("current");
   c.active = fields.take("active");
   c.candidates = fields.take("candidates");
+  if (c.team()) {
+    c.agent = fields.take("agent");
+    c.reports = fields.take("reports");
+  }
   for (const auto &p : c.chart.places) c.timer_field.push_back(p.timed ? fields.take("timer_" + p.name) : "");
   // The instances the places run: a field named after the place (`m->Search`), for debuggers.
   for (const auto &p : c.chart.places) c.sub_field.push_back(p.runs >= 0 ? fields.take(p.name) : "");
@@ -136,7 +148,8 @@ void name_locals(Context &c) {
                                            &c.from,       &c.index,       &c.hooks_macro,  &c.checks_macro,
                                            &c.activated_fn, &c.enabled_fn, &c.place_count, &c.transition_count,
                                            &c.lowest_fn,  &c.next_fn,     &c.insert_fn,    &c.erase_fn,
-                                           &c.sort_fn,    &c.watched_fn,  &c.active_levels, &c.candidate_levels};
+                                           &c.sort_fn,    &c.watched_fn,  &c.active_levels, &c.candidate_levels,
+                                           &c.set_agent_fn, &c.report_fn, &c.team_size,     &c.team_fn};
   for (const auto &f : c.model.functions) seen.push_back(&f.name);
   for (const auto &n : c.place_const) seen.push_back(&n);
   for (const auto &n : c.transition_const) seen.push_back(&n);
@@ -277,6 +290,12 @@ std::string Context::av_of(int p) const {
 }
 
 std::string Context::timer_of(int p) const { return field(timer_field.at(static_cast<std::size_t>(p))); }
+
+const char *Context::report_type() const {
+  // C's int8_t and int16_t hold -1 and up to 127 and 32767 states.
+  const std::size_t n = chart.places.size();
+  return n <= 127 ? "int8_t" : n <= 32767 ? "int16_t" : "int";
+}
 
 bool Context::runs_exit(int p) const {
   const Context *s = sub_of(p);

@@ -70,6 +70,13 @@ struct Context {
   std::string current;  ///< sequential form: the number of the one active place
   std::string active;   ///< sparse form: the active places as bits with summary levels
   std::string candidates;  ///< sparse form, not place-driven: the transitions to try this tick
+  // A team machine's (docs/c-engine.md "Team machines"); empty for a machine that is no team.
+  std::string agent;       ///< this engine's agent number
+  std::string reports;     ///< by agent, the state it last reported (-1: none)
+  std::string set_agent_fn;  ///< X_set_agent
+  std::string report_fn;     ///< X_report
+  std::string team_size;     ///< X_TEAM_SIZE, the number of agents
+  std::string team_fn;       ///< X_team: how many other agents last reported a state
 
   // Locals of the run function. They must not hide an interface function that chart code calls.
   std::string self;    ///< the engine parameter, `m`
@@ -134,6 +141,9 @@ struct Context {
   bool has_post = false;        ///< some terminal state has a postcondition
   bool has_terminal = false;    ///< some state is terminal
   bool needs_started = false;   ///< an initial place has a non-empty entry block
+  bool team() const { return chart.team > 0; }
+  /// The type of a report: the narrowest signed type that holds every state and -1.
+  const char *report_type() const;
 
   const model::Place &place(int i) const { return chart.places.at(static_cast<std::size_t>(i)); }
   /// `m->field`.

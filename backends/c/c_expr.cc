@@ -272,6 +272,9 @@ public:
       Rendered inner = render(e.args.at(0));
       return {bracket(inner.text), kPrimary, std::move(inner.before)};
     }
+    case Expr::Kind::TeamCount:  // no side effect: the order of calls is not its concern
+      return {fmt::format("{}({}, {})", c_.team_fn, c_.self, c_.place_const.at(static_cast<std::size_t>(e.index)))};
+    case Expr::Kind::Agent: return {c_.field(c_.agent)};
     case Expr::Kind::Config: break;  // plans only: the validator keeps it out of charts
     default: break;                  // team machines: not in this back end's charts
     }
@@ -476,6 +479,11 @@ std::string Temporaries::add(model::Type type) {
 }
 
 void Temporaries::declare(CodeWriter &w) {
+  for (const auto &line : declarations()) w.line(std::string_view(line));
+}
+
+std::vector<std::string> Temporaries::declarations() {
+  std::vector<std::string> lines;
   std::vector<bool> done(pending_.size(), false);
   for (std::size_t i = 0; i < pending_.size(); ++i) {
     if (done[i]) continue;
@@ -485,9 +493,10 @@ void Temporaries::declare(CodeWriter &w) {
         names += (names.empty() ? "" : ", ") + pending_[j].second;
         done[j] = true;
       }
-    w.line("{} {}; /* temporaries: the chart calls left to right */", c_type(pending_[i].first), names);
+    lines.push_back(fmt::format("{} {}; /* temporaries: the chart calls left to right */", c_type(pending_[i].first), names));
   }
   pending_.clear();
+  return lines;
 }
 
 std::string c_expr(const Context &c, const Expr &e, Temporaries &temps) {
@@ -509,6 +518,13 @@ std::string c_test(const Context &c, const Expr &e, Temporaries &temps, bool at_
   if (u.kind != Expr::Kind::Binary || u.binary_op != BinaryOp::Eq || settled(u))
     return c_condition(c, e, temps, at_start);
   return closed(Renderer(c, temps, at_start).render(u)).text;
+}
+
+std::string c_if_test(const Context &c, const Expr &e, Temporaries &temps) {
+  // `if ((a == b))` is what clang -Wparentheses-equality takes for a mistyped `=`.
+  const Expr &u = unbracketed(e);
+  const bool equality = u.kind == Expr::Kind::Binary && u.binary_op == BinaryOp::Eq && !settled(u);
+  return closed(Renderer(c, temps).render(equality ? u : e)).text;
 }
 
 std::string c_assertion(const Context &c, const Expr &e, Temporaries &temps) {
@@ -536,35 +552,136 @@ std::string c_prototype(const model::Function &f) {
   return fmt::format("{} {}({})", c_type(f.result), f.name, params.empty() ? "void" : params);
 }
 
+namespace {
+
+void render_statements(const Context &c, const std::vector<model::Stmt> &stmts, Temporaries &temps, Renderer &r,
+                       std::vector<std::string> &text) {
+  for (const auto &s : stmts) {
+    switch (s.kind) {
+    case model::Stmt::Kind::Verbatim: text.emplace_back(); break;
+    case model::Stmt::Kind::If: {
+      // The test (its temporaries belong to the enclosing block), then each branch: the
+      // declarations of its own temporaries, then its statements. An `else if` is the one If
+      // of its else block, and declares in the enclosing block like any other test there.
+      text.push_back(c_if_test(c, s.value, temps));
+      for (const auto *branch : {&s.then_block, &s.else_block}) {
+        if (branch == &s.else_block && s.else_if) {  // `} else if (test) {`: no block of its own
+          text.emplace_back();
+          render_statements(c, *branch, temps, r, text);
+          continue;
+        }
+        auto outer = temps.take();
+        std::size_t at = text.size();
+        text.emplace_back();
+        render_statements(c, *branch, temps, r, text);
+        std::string declared;
+        for (const auto &line : temps.declarations()) declared += (declared.empty() ? "" : "\n") + line;
+        text[at] = declared;
+        temps.restore(std::move(outer));
+      }
+      break;
+    }
+    default: text.push_back(r.statement(s)); break;
+    }
+  }
+}
+
+/// Writes statements from `text`, consuming it from `at` in the order render_statements() filled it.
+class StatementWriter {
+public:
+  StatementWriter(CodeWriter &w, const Context &c, const std::vector<std::string> &text)
+      : w_(w), sources_(c.model.sources), text_(text) {}
+
+  void list(const std::vector<model::Stmt> &stmts) {
+    for (const auto &s : stmts) {
+      if (s.kind == model::Stmt::Kind::Verbatim) {
+        emit_verbatim(w_, sources_, s.range, s.verbatim);
+        next_ = 0;
+        ++at_;
+        continue;
+      }
+      point_at(s.range);
+      if (s.kind == model::Stmt::Kind::If) {
+        branches(s, "");
+        continue;
+      }
+      line(text_.at(at_++));
+    }
+  }
+
+private:
+  /// `if (test) {`, the branches, and the closing brace; `prefix` is `} else ` in an else-if chain.
+  void branches(const model::Stmt &s, const char *prefix) {
+    line(fmt::format("{}if ({}) {{", prefix, text_.at(at_++)));
+    w_.indent();
+    branch(s.then_block);
+    w_.dedent();
+    if (s.else_if) {
+      ++at_;  // the else block declares nothing: its one `if` declares where it stands
+      const model::Stmt &next = s.else_block.front();
+      point_at(next.range);
+      branches(next, "} else ");
+      return;
+    }
+    if (!s.else_block.empty()) {
+      line("} else {");
+      w_.indent();
+      branch(s.else_block);
+      w_.dedent();
+    } else {
+      ++at_;
+    }
+    line("}");
+  }
+
+  /// A branch: its temporaries' declarations, then its statements.
+  void branch(const std::vector<model::Stmt> &stmts) {
+    const std::string &declared = text_.at(at_++);
+    if (!declared.empty()) {
+      std::size_t start = 0;
+      for (std::size_t nl; (nl = declared.find('\n', start)) != std::string::npos; start = nl + 1)
+        line(declared.substr(start, nl - start));
+      line(declared.substr(start));
+    }
+    list(stmts);
+  }
+
+  /// A `#line` to the statement's line unless the next output line stands for it already.
+  void point_at(const SourceRange &range) {
+    if (!sources_) return;
+    std::uint32_t chart_line = sources_->begin_of(range).line;
+    if (next_ == 0 || range.file != file_ || chart_line != next_) w_.line_from(*sources_, range);
+    file_ = range.file;
+    next_ = chart_line;
+  }
+
+  void line(const std::string &text) {
+    w_.line(std::string_view(text));
+    if (next_ != 0) ++next_;
+  }
+
+  CodeWriter &w_;
+  const SourceManager *sources_;
+  const std::vector<std::string> &text_;
+  std::size_t at_ = 0;
+  // The chart line the next output line stands for (0: unknown); a #line is needed only when it
+  // is not the statement's own line.
+  FileId file_ = 0;
+  std::uint32_t next_ = 0;
+};
+
+} // namespace
+
 std::vector<std::string> c_statements(const Context &c, const std::vector<model::Stmt> &stmts, Temporaries &temps) {
   Renderer r(c, temps);
   std::vector<std::string> text;
-  for (const auto &s : stmts) text.push_back(s.kind == model::Stmt::Kind::Verbatim ? "" : r.statement(s));
+  render_statements(c, stmts, temps, r, text);
   return text;
 }
 
 void emit_statements(CodeWriter &w, const Context &c, const std::vector<model::Stmt> &stmts,
                      const std::vector<std::string> &text) {
-  const SourceManager *sources = c.model.sources;
-  // The chart line the next output line stands for; a #line is needed only when it is not
-  // the statement's own line (0: unknown).
-  FileId file = 0;
-  std::uint32_t next = 0;
-  for (std::size_t i = 0; i < stmts.size(); ++i) {
-    const auto &s = stmts[i];
-    if (s.kind == model::Stmt::Kind::Verbatim) {
-      emit_verbatim(w, sources, s.range, s.verbatim);
-      next = 0;
-      continue;
-    }
-    if (sources) {
-      std::uint32_t line = sources->begin_of(s.range).line;
-      if (next == 0 || s.range.file != file || line != next) w.line_from(*sources, s.range);
-      file = s.range.file;
-      next = line + 1;
-    }
-    w.line(text.at(i));
-  }
+  StatementWriter(w, c, text).list(stmts);
 }
 
 void emit_verbatim(CodeWriter &w, const SourceManager *sources, const SourceRange &range, std::string_view text) {

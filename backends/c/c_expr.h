@@ -41,6 +41,12 @@ public:
   /// Declares the pending temporaries at the current line, one line per type
   /// (`int gfec_t0, gfec_t2;`), and forgets them.
   void declare(CodeWriter &w);
+  /// The same declarations as lines of text, forgetting them.
+  std::vector<std::string> declarations();
+  /// Sets the pending temporaries aside (`take`) and back (`restore`): an `if` branch declares
+  /// its own at its top, in the smallest scope that uses them.
+  std::vector<std::pair<model::Type, std::string>> take() { return std::move(pending_); }
+  void restore(std::vector<std::pair<model::Type, std::string>> pending) { pending_ = std::move(pending); }
 
 private:
   std::string prefix_;
@@ -59,6 +65,10 @@ std::string c_condition(const Context &c, const model::Expr &e, Temporaries &tem
 /// not bracketed (clang -Wparentheses-equality takes `if ((a == b))` for a mistyped `=`).
 std::string c_test(const Context &c, const model::Expr &e, Temporaries &temps, bool at_start = false);
 
+/// `e` as the condition of an `if` statement, written inside its brackets: `X()`, `n > 2`, or
+/// where calls need temporaries, the bracketed comma expression `(gfec_t0 = N(), gfec_t0 + M() > 2)`.
+std::string c_if_test(const Context &c, const model::Expr &e, Temporaries &temps);
+
 /// A postcondition as the statement that asserts it: `assert(e);`, or where keeping the calls
 /// in order needs temporaries, `gfec_t0 = S0(); gfec_t1 = gfec_t0 < S1(); assert(gfec_t1);`
 /// (code checkers flag an assertion that assigns).
@@ -73,6 +83,9 @@ std::string c_prototype(const model::Function &f);
 
 /// The statements as C, one line each (empty for verbatim code), rendered before they are
 /// written so that the temporaries they need can be declared first, at the top of the block.
+/// An `if` is its test (what goes between the brackets of `if ( )`) followed by each branch,
+/// then and else: one entry with the declarations of the branch's own temporaries (empty if
+/// none), then the branch's statements the same way, in textual order.
 std::vector<std::string> c_statements(const Context &c, const std::vector<model::Stmt> &stmts, Temporaries &temps);
 
 /// The statements, one per line at the current indentation, each preceded by `#line` to the

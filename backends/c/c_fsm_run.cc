@@ -166,17 +166,33 @@ private:
         if (c_.resets_timer(p)) first.insert(first.begin(), fmt::format("{} = 0;", c_.timer_of(p)));
         block(has_code(c_.place(p).entry) ? *c_.place(p).entry : std::vector<model::Stmt>{}, first);
       }
+    // The hooks go inside the same test: a second `if` on the same condition right after it is
+    // what cppcheck calls a duplicate condition when the exit and entry code leave it alone.
+    // Instances have no hooks (docs/c-engine.md).
+    if (!c_.chart.transitions.empty() && c_.hooks()) {
+      directive(w_, "#ifdef " + c_.hooks_macro);
+      w_.line("/* Observation hooks: the state left and the state entered; the transitions leaving it */");
+      hook_calls();
+      directive(w_, "#endif");
+    }
     w_.dedent();
     w_.line("}");
   }
 
   void hooks() {
-    if (c_.chart.transitions.empty() || !c_.hooks()) return;
+    if (c_.chart.transitions.empty() || !c_.hooks() || c_.needs_snapshot()) return;
     section("");
     directive(w_, "#ifdef " + c_.hooks_macro);
     w_.line("/* Observation hooks: the state left and the state entered; the transitions leaving it */");
     w_.line("if ({} != {}) {{", c_.field(c_.state), c_.from);
     w_.indent();
+    hook_calls();
+    w_.dedent();
+    w_.line("}");
+    directive(w_, "#endif");
+  }
+
+  void hook_calls() {
     w_.line("{}({}, {}, false);", c_.activated_fn, c_.self, c_.from);
     w_.line("{}({}, {}, true);", c_.activated_fn, c_.self, c_.field(c_.state));
     for (int p = 0; p < static_cast<int>(c_.chart.places.size()); ++p) {
@@ -186,9 +202,6 @@ private:
           calls += fmt::format(" {}({}, {});", c_.enabled_fn, c_.self, c_.transition_const[t]);
       if (!calls.empty()) w_.line("if ({}) {{{} }}", in_state(p), calls);
     }
-    w_.dedent();
-    w_.line("}");
-    directive(w_, "#endif");
   }
 
   /// A terminal state's postcondition, in a checks build. The run returns at its top once the

@@ -47,6 +47,11 @@ void transitions_enum(CodeWriter &w, const Context &c) {
   w.line("};");
 }
 
+void team_enum(CodeWriter &w, const Context &c) {
+  w.line("/* A team machine: up to {} agents run it side by side, one engine each. */", c.chart.team);
+  w.line("enum {{ {} = {} }};", c.team_size, c.chart.team);
+}
+
 namespace {
 
 void state_struct(CodeWriter &w, const Context &c) {
@@ -90,6 +95,11 @@ void state_struct(CodeWriter &w, const Context &c) {
                         fmt::format("ticks {} has been active: elapsed({})", c.chart.places[p].name,
                                     c.chart.places[p].name));
   if (c.needs_started) rows.emplace_back(fmt::format("bool {};", c.started), "the first tick has run");
+  if (c.team()) {
+    rows.emplace_back(fmt::format("int {};", c.agent), fmt::format("this engine's agent number (set by {})", c.set_agent_fn));
+    rows.emplace_back(fmt::format("{} {}[{}];", c.report_type(), c.reports, c.team_size),
+                      "by agent, the state it last reported; -1: none yet");
+  }
   for (std::size_t v = 0; v < c.chart.vars.size(); ++v)
     rows.emplace_back(fmt::format("{} {};", c_type(c.chart.vars[v].type), c.var_field[v]),
                       fmt::format("var {}", c.chart.vars[v].name));
@@ -101,6 +111,19 @@ void state_struct(CodeWriter &w, const Context &c) {
   w.dedent();
   w.line("};");
   if (!c.root) w.blank();
+}
+
+/// docs/c-engine.md "Team machines": the engine never sends or receives; its caller does.
+void team_api(CodeWriter &w, const Context &c) {
+  const std::string &t = c.type;
+  w.line("/* Team machine: {0}_init makes the engine agent 0 and forgets every report. Call", t);
+  w.line("   {0}_set_agent after {0}_init; a number outside 0 ... {1} - 1 is ignored. */", t, c.team_size);
+  w.line("void {0}({1} *m, int agent);", c.set_agent_fn, t);
+  w.line("/* Agent `agent` is in state `state` (a {}_<state>): call it between ticks, when its state", t);
+  w.line("   arrives. Ignored for the engine's own number, a number out of range and an invalid state. */");
+  w.line("void {0}({1} *m, int agent, int state);", c.report_fn, t);
+  w.line("/* team(S) of the chart: how many other agents last reported `state`. */");
+  w.line("int {0}(const {1} *m, int state);", c.team_fn, t);
 }
 
 void api(CodeWriter &w, const Context &c) {
@@ -119,6 +142,7 @@ void api(CodeWriter &w, const Context &c) {
     w.line("int {0}_state(const {0} *m);", t);
     w.line("/* 0 while running, 1 once in a success state, -1 once in a failure state. */");
     w.line("int {0}_status(const {0} *m);", t);
+    if (c.team()) team_api(w, c);
   } else {
     w.line("/* The activation counter of a place (a {}_<place>); 0 for a number out of range. */", t);
     w.line("unsigned {0}_activation(const {0} *m, int place);", t);
@@ -176,6 +200,10 @@ std::string emit_header(const Context &c) {
   w.blank();
   transitions_enum(w, c);
   w.blank();
+  if (c.team()) {
+    team_enum(w, c);
+    w.blank();
+  }
   state_struct(w, c);
   w.blank();
   api(w, c);

@@ -246,17 +246,33 @@ private:
         if (c_.runs_entry(p) || c_.resets_timer(p)) entry_case(p);
       switch_end();
     }
+    // The hooks go inside the same test: a second `if` on the same condition right after it is
+    // what cppcheck calls a duplicate condition when the exit and entry code leave it alone.
+    // Instances have no hooks (docs/c-engine.md).
+    if (!c_.chart.transitions.empty() && c_.hooks()) {
+      directive(w_, "#ifdef " + c_.hooks_macro);
+      w_.line("/* Observation hooks: the place left and the place entered; the transitions leaving it */");
+      hook_calls();
+      directive(w_, "#endif");
+    }
     w_.dedent();
     w_.line("}");
   }
 
   void hooks() {
-    if (c_.chart.transitions.empty() || !c_.hooks()) return;
+    if (c_.chart.transitions.empty() || !c_.hooks() || c_.needs_snapshot()) return;
     section("");
     directive(w_, "#ifdef " + c_.hooks_macro);
     w_.line("/* Observation hooks: the place left and the place entered; the transitions leaving it */");
     w_.line("if ({} != {}) {{", current(), c_.from);
     w_.indent();
+    hook_calls();
+    w_.dedent();
+    w_.line("}");
+    directive(w_, "#endif");
+  }
+
+  void hook_calls() {
     w_.line("{}({}, (int){}, false);", c_.activated_fn, c_.self, c_.from);
     w_.line("{}({}, (int){}, true);", c_.activated_fn, c_.self, current());
     w_.line("switch ({}) {{", current());
@@ -266,9 +282,6 @@ private:
       if (!calls.empty()) w_.line("case {}:{} break;", constant(p), calls);
     }
     switch_end();
-    w_.dedent();
-    w_.line("}");
-    directive(w_, "#endif");
   }
 
   void actions() {

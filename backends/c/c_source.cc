@@ -62,6 +62,7 @@ void init(CodeWriter &w, const Context &c) {
   w.line("{}void {}({} *{})", c.linkage, c.init_fn, c.struct_type, c.self);
   w.line("{");
   w.indent();
+  if (c.team()) w.line("int {};", c.index);
   if (c.fsm) {
     for (std::size_t p = 0; p < c.chart.places.size(); ++p)
       if (c.chart.places[p].initial) {
@@ -99,6 +100,12 @@ void init(CodeWriter &w, const Context &c) {
   for (std::size_t p = 0; p < c.chart.places.size(); ++p)
     if (c.chart.places[p].timed) w.line("{} = 0;", c.timer_of(static_cast<int>(p)));
   if (c.needs_started) w.line("{} = false;", c.field(c.started));
+  if (c.team()) {
+    w.line("{} = 0;", c.field(c.agent));
+    w.line("for ({0} = 0; {0} < {1}; ++{0}) {{", c.index, c.team_size);
+    w.line("    {}[{}] = -1;", c.field(c.reports), c.index);
+    w.line("}");
+  }
   for (std::size_t v = 0; v < c.chart.vars.size(); ++v) {
     const auto &var = c.chart.vars[v];
     std::string value = var.init ? c_value(c, *var.init, var.type) : var.type == model::Type::Bool ? "false" : "0";
@@ -174,6 +181,36 @@ void instance(CodeWriter &w, const Context &c) {
   w.blank();
 }
 
+/// X_set_agent, X_report and X_team (docs/c-engine.md "Team machines").
+void team_functions(CodeWriter &w, const Context &c) {
+  const std::string &t = c.type, &m = c.self;
+  w.line("void {}({} *{}, int agent)", c.set_agent_fn, t, m);
+  w.line("{");
+  w.line("    if (agent >= 0 && agent < {}) {{", c.team_size);
+  w.line("        {} = agent;", c.field(c.agent));
+  w.line("    }");
+  w.line("}");
+  w.blank();
+  w.line("void {}({} *{}, int agent, int state)", c.report_fn, t, m);
+  w.line("{");
+  w.line("    if (agent >= 0 && agent < {} && agent != {} && state >= 0 && state < {}) {{", c.team_size,
+         c.field(c.agent), c.place_count);
+  w.line("        {}[agent] = ({})state;", c.field(c.reports), c.report_type());
+  w.line("    }");
+  w.line("}");
+  w.blank();
+  w.line("int {}(const {} *{}, int state)", c.team_fn, t, m);
+  w.line("{");
+  w.line("    int agent, n = 0;");
+  w.line("    for (agent = 0; agent < {}; ++agent) {{", c.team_size);
+  w.line("        if (agent != {} && {}[agent] == state) {{", c.field(c.agent), c.field(c.reports));
+  w.line("            ++n;");
+  w.line("        }");
+  w.line("    }");
+  w.line("    return n;");
+  w.line("}");
+}
+
 void accessors(CodeWriter &w, const Context &c) {
   const std::string &t = c.type, &m = c.self;
   w.line("unsigned {0}_activation(const {0} *{1}, int place)", t, m);
@@ -234,6 +271,10 @@ std::string emit_source(const Context &c) {
   }
   init(w, c);
   w.blank();
+  if (c.team()) {
+    team_functions(w, c);
+    w.blank();
+  }
   if (c.fsm)
     emit_fsm_run(w, c);
   else if (c.readable())

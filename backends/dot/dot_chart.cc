@@ -91,7 +91,10 @@ std::string chart_body(const model::Model &m, const model::Chart &c, const std::
 std::string chart_picture(const model::Model &m, const model::Chart &c) {
   bool fsm = c.kind == model::Chart::Kind::Fsm;
   std::string title = fmt::format("{} {}", fsm ? "fsm" : "sfc", c.name);
-  if (c.period_ms > 0) title += fmt::format(" (period {})", duration(c.period_ms));
+  std::string details;
+  if (c.period_ms > 0) details = fmt::format("period {}", duration(c.period_ms));
+  if (c.team > 0) details += fmt::format("{}team of {} agents", details.empty() ? "" : ", ", c.team);
+  if (!details.empty()) title += " (" + details + ")";
   std::string out = fmt::format("digraph {} {{\n", quote(c.name));
   out += preamble(title);
   bool nested = false;

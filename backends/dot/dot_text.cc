@@ -42,7 +42,9 @@ std::string block_text(const model::Model &m, const std::vector<model::Stmt> &bl
   for (const auto &s : block) {
     std::string line = s.kind == model::Stmt::Kind::Verbatim ? "%{ ... %}" : source_text(m, s.range);
     // A statement's range may or may not take in its ';': show it once either way.
-    if (!line.empty() && line.back() != ';' && s.kind != model::Stmt::Kind::Verbatim) line += ';';
+    // An `if` ends with its block's brace.
+    if (!line.empty() && line.back() != ';' && s.kind != model::Stmt::Kind::Verbatim && s.kind != model::Stmt::Kind::If)
+      line += ';';
     out += (out.empty() ? "" : "\n") + line;
   }
   return out;

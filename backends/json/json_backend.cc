@@ -52,6 +52,7 @@ void chart_fields(const model::Model &m, const model::Chart &c, Json &doc) {
   bool fsm = c.kind == model::Chart::Kind::Fsm;
   Scope scope{&c, nullptr};
   doc["period_ms"] = c.period_ms > 0 ? Json(c.period_ms) : Json(nullptr);
+  doc["team"] = c.team > 0 ? Json(c.team) : Json(nullptr);
 
   Json places = Json::array();
   for (std::size_t i = 0; i < c.places.size(); ++i) {

@@ -28,6 +28,8 @@ const char *kind_name(Expr::Kind k) {
   case Expr::Kind::Active: return "active";
   case Expr::Kind::Succeeded: return "succeeded";
   case Expr::Kind::Failed: return "failed";
+  case Expr::Kind::TeamCount: return "team";
+  case Expr::Kind::Agent: return "agent";
   default: break;
   }
   return "?";
@@ -128,6 +130,7 @@ Json expression_tree(const model::Model &m, const Scope &scope, const Expr &e) {
   }
   case Expr::Kind::Succeeded:
   case Expr::Kind::Failed: j["place"] = scope.chart ? name_at(scope.chart->places, e.index) : "?"; break;
+  case Expr::Kind::TeamCount: j["place"] = scope.chart ? name_at(scope.chart->places, e.index) : "?"; break;
   default: break;
   }
   return j;
@@ -155,6 +158,13 @@ Json statements(const model::Model &m, const Scope &scope, const std::vector<mod
     case model::Stmt::Kind::Verbatim:
       j["kind"] = "verbatim";
       j["code"] = s.verbatim;
+      break;
+    case model::Stmt::Kind::If:
+      j["kind"] = "if";
+      j["condition"] = expression_tree(m, scope, s.value);
+      j["then"] = statements(m, scope, s.then_block);
+      j["else"] = statements(m, scope, s.else_block);
+      j["else_if"] = s.else_if;
       break;
     }
     j["location"] = location(m, s.range);

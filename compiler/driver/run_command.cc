@@ -18,6 +18,7 @@
 #include <memory>
 #include <ostream>
 #include <sstream>
+#include <vector>
 
 namespace gfec {
 
@@ -27,6 +28,8 @@ struct RunOptions {
   std::string input;
   std::string inputs_csv;
   std::uint64_t ticks = 0;
+  int agents = 0;            ///< a team machine's agents (with agents_given)
+  bool agents_given = false; ///< --agents was given; else a team machine runs all its agents
   std::string chart;
   std::vector<std::string> include_dirs;
   bool observable = false;  ///< only the observable layer, unindented: what engines print
@@ -164,6 +167,17 @@ int run_with(const RunOptions &o, std::ostream &out, std::ostream &err) {
 
   int chart = choose_chart(model, o, err);
   if (chart < 0) return kExitUsageOrIo;
+  // A team machine runs as a team (docs/cli.md): every agent by default, or --agents of them.
+  const int team = model.charts[static_cast<std::size_t>(chart)].team;
+  int agents = 1;
+  if (team > 0) agents = o.agents_given ? o.agents : team;
+  if (o.agents_given && (o.agents < 1 || o.agents > std::max(team, 1))) {
+    err << (team > 0 ? fmt::format("gfec: error: --agents {}: '{}' is a team of 1 to {} agents\n", o.agents,
+                                   model.charts[static_cast<std::size_t>(chart)].name, team)
+                     : fmt::format("gfec: error: --agents {}: '{}' is no team machine; it runs as one agent\n",
+                                   o.agents, model.charts[static_cast<std::size_t>(chart)].name));
+    return kExitUsageOrIo;
+  }
 
   Diagnostics trace_diag;
   std::unique_ptr<interp::InputTrace> trace;
@@ -174,7 +188,7 @@ int run_with(const RunOptions &o, std::ostream &out, std::ostream &err) {
       return kExitUsageOrIo;
     }
     FileId id = sources.add(o.inputs_csv, *text);
-    trace = std::make_unique<interp::InputTrace>(model, sources, id, trace_diag);
+    trace = std::make_unique<interp::InputTrace>(model, sources, id, trace_diag, agents);
     print(trace_diag, sources, err);
     if (trace_diag.has_errors()) return kExitInputError;
   } else {
@@ -186,7 +200,16 @@ int run_with(const RunOptions &o, std::ostream &out, std::ostream &err) {
   interp::EngineOptions engine;
   engine.check_post = o.check_post;
   Diagnostics run_diag;
-  interp::RunResult r = interp::run_chart(model, chart, *trace, ticks, engine, run_diag);
+  interp::RunResult r;
+  if (team > 0) {
+    std::vector<interp::InputTrace::Agent> inputs;
+    for (int k = 0; k < agents; ++k) inputs.emplace_back(*trace, k);
+    std::vector<interp::Environment *> envs;
+    for (auto &i : inputs) envs.push_back(&i);
+    r = interp::run_team(model, chart, envs, ticks, engine, run_diag);
+  } else {
+    r = interp::run_chart(model, chart, *trace, ticks, engine, run_diag);
+  }
   interp::RenderOptions render;
   render.hooks = o.hooks;
   render.explain = !o.observable;
@@ -211,12 +234,16 @@ int run_command(int argc, const char *const *argv, std::ostream &out, std::ostre
                "gfec run"};
   app.footer("The trace is CSV: a header naming interface functions, then one row per tick with what\n"
              "each returns. A function without a column returns 0 (false); past the last row the last\n"
-             "row holds. Exit status: 0 ran, 1 errors in the chart or the trace, or undefined behaviour\n"
+             "row holds. A team machine runs every agent: a column `F@k` is what F returns to agent k.\n"
+             "Exit status: 0 ran, 1 errors in the chart or the trace, or undefined behaviour\n"
              "while running, 2 usage or I/O error. Documentation: docs/verification.md");
   app.add_option("chart", o.input, "The chart file")->required();
   app.add_option("--inputs", o.inputs_csv, "CSV input trace: a column per sensing function, a row per tick")
       ->type_name("FILE");
   app.add_option("--ticks", o.ticks, "Ticks to run (default: one per row of the trace, or 10)")->type_name("N");
+  CLI::Option *agents = app.add_option("--agents", o.agents,
+                 "A team machine: how many of its agents run, in lockstep (default: all of them)")
+      ->type_name("N");
   app.add_option("--chart", o.chart, "The chart to run when the file declares several")->type_name("NAME");
   app.add_option("-I", o.include_dirs, "Add DIR to the folders searched for imports")
       ->type_name("DIR")
@@ -234,6 +261,7 @@ int run_command(int argc, const char *const *argv, std::ostream &out, std::ostre
     if (code != 0) err << "Run 'gfec run --help' for the options.\n";
     return code == 0 ? kExitOk : kExitUsageOrIo;
   }
+  o.agents_given = agents->count() > 0;
   return run_with(o, out, err);
 }
 

@@ -48,6 +48,8 @@ bool Engine::outcome(int place, int status) const {
 Frame Engine::frame(Environment *env, EventLog *log, std::uint64_t tick) {
   Frame f{model_, chart_, vars_, timers_, env, log, tick, depth_ + 1};
   f.engine = this;
+  f.agent = agent_;
+  f.reports = chart_.team > 0 ? &reports_ : nullptr;
   return f;
 }
 
@@ -68,12 +70,24 @@ void Engine::init() {
   }
   started_ = false;
   tick_ = 0;
+  agent_ = 0;
+  reports_.assign(static_cast<std::size_t>(chart_.team), -1);
   vars_.clear();
   for (const model::Var &v : chart_.vars) vars_.push_back(Value::zero(v.type));
   // Initialisers are constant: no calls, no vars, no timers (the validator sees to it).
   Frame f = frame(nullptr, nullptr, 0);
   for (std::size_t i = 0; i < chart_.vars.size(); ++i)
     if (chart_.vars[i].init) vars_[i] = convert(evaluate(*chart_.vars[i].init, f), chart_.vars[i].type, chart_.vars[i].range);
+}
+
+void Engine::set_agent(int agent) {
+  if (agent >= 0 && agent < chart_.team) agent_ = agent;  // agent() stays within 0 ... N-1
+}
+
+void Engine::report(int agent, int state) {
+  if (agent < 0 || agent >= chart_.team || agent == agent_) return;
+  if (state < 0 || static_cast<std::size_t>(state) >= chart_.places.size()) return;
+  reports_[static_cast<std::size_t>(agent)] = state;
 }
 
 unsigned Engine::activation(int place) const {

@@ -40,6 +40,16 @@ public:
   bool active(const std::vector<int> &path) const;
   /// `succeeded(P)` (1) / `failed(P)` (-1): P is active and its fsm instance has that status.
   bool outcome(int place, int status) const;
+  /// A team machine (docs/language.md "Teams"), as the C engine's X_set_agent and X_report:
+  /// this engine's agent number (init() makes it 0), and agent `agent`'s state as it arrives
+  /// (ignored for the own number, a number out of range or an invalid state). init() forgets
+  /// every report. A number out of range is ignored by set_agent too, and both do nothing for
+  /// a machine that is no team.
+  void set_agent(int agent);
+  void report(int agent, int state);
+  int agent() const { return agent_; }
+  int team_size() const { return chart_.team; }
+  const std::vector<int> &reports() const { return reports_; }
 
   unsigned activation(int place) const;
   int state() const { return state_; }    ///< fsm: the current state's index
@@ -87,6 +97,8 @@ private:
   std::vector<std::uint32_t> timers_;  ///< ticks active, by place (saturating, as in C)
   std::vector<Value> vars_;
   bool started_ = false;               ///< the first tick has run the initial entries
+  int agent_ = 0;                      ///< team machine: this engine's agent number
+  std::vector<int> reports_;           ///< team machine: by agent, its last state (-1: none)
   std::uint64_t tick_ = 0;
 };
 

@@ -208,8 +208,17 @@ Value evaluate(const Expr &e, Frame &f) {
     if (e.kind == Expr::Kind::Active) return Value::of_bool(f.engine->active(e.path));
     return Value::of_bool(f.engine->outcome(e.index, e.kind == Expr::Kind::Succeeded ? 1 : -1));
   }
+  case Expr::Kind::TeamCount: {
+    // The other agents whose last report is the state, as the reports stand now.
+    if (!f.reports) throw RuntimeError(e.range, "'team()' is read outside a team machine");
+    int n = 0;
+    for (std::size_t a = 0; a < f.reports->size(); ++a)
+      if (static_cast<int>(a) != f.agent && (*f.reports)[a] == e.index) ++n;
+    return Value::of_int(n);
+  }
+  case Expr::Kind::Agent: return Value::of_int(f.agent);
   case Expr::Kind::Config: break;
-  default: break;
+  default: throw RuntimeError(e.range, "this expression is not supported by the interpreter yet");
   }
   throw RuntimeError(e.range, "a config entry has no value in a chart");
 }
@@ -230,6 +239,9 @@ void execute(const std::vector<model::Stmt> &block, Frame &f) {
     }
     case model::Stmt::Kind::Verbatim:
       if (f.log) f.log->add(EventKind::Note, f.depth, "note verbatim code is not run by the interpreter");
+      break;
+    case model::Stmt::Kind::If:
+      execute(convert(evaluate(s.value, f), Type::Bool, s.value.range).b ? s.then_block : s.else_block, f);
       break;
     }
   }

@@ -36,10 +36,15 @@ struct Frame {
   std::uint64_t tick = 0;
   int depth = 1;                              ///< indentation of the events logged
   const Engine *engine = nullptr;             ///< the chart's engine: active(), succeeded(), failed()
+  /// A team machine (docs/language.md "Teams"): this engine's agent number, and by agent the
+  /// state each one last reported (-1: none). Null for a machine that is no team.
+  int agent = 0;
+  const std::vector<int> *reports = nullptr;
 };
 
 Value evaluate(const model::Expr &e, Frame &f);
-/// Runs the statements in order. Verbatim code cannot be run: it is skipped with a note.
+/// Runs the statements in order; an `if` evaluates its condition, then runs one branch.
+/// Verbatim code cannot be run: it is skipped with a note.
 void execute(const std::vector<model::Stmt> &block, Frame &f);
 
 } // namespace gfec::interp

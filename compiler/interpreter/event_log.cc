@@ -7,7 +7,8 @@ Layer layer_of(EventKind kind) {
   case EventKind::Tick:
   case EventKind::Call:
   case EventKind::Av:
-  case EventKind::State: return Layer::Observable;
+  case EventKind::State:
+  case EventKind::Agent: return Layer::Observable;
   case EventKind::Lost:
   case EventKind::Gained:
   case EventKind::Enabled: return Layer::Hooks;

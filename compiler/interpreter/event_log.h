@@ -3,13 +3,15 @@
 //
 //   observable   what code linked with an engine can see through its API and the interface
 //                functions:  `tick 3`, `call Left_IR_Black() = true`, `call Motor(1, 0.5)`,
-//                `av 1 0 1 0` (sfc and fsm), `state Z1 running` (fsm)
+//                `av 1 0 1 0` (sfc and fsm), `state Z1 running` (fsm); in a team run,
+//                `agent 1` before each agent's part of the tick
 //   hooks        what the observation hooks (-DX_HOOKS) report: `lost P`, `gained P`,
 //                `enabled T`
 //   explanation  why it happened, for people: `cond T0 = true`, `fire T0`, `exit P`,
 //                `entry P`, `action P`, `set laps = 3`, `post Done = true`, `note ...`;
 //                sub-charts: `start P: C`, `run P: C`, `stop P: C`, and after the root's
 //                activation each running instance's: `av P: 0 1`, `state P: Grab running`
+//                in a team run the exchange after the tick, `team Go Grab Go` (each agent's state)
 //
 // A generated engine's test driver prints the observable (and, with hooks, the hooks) lines
 // exactly as written here, unindented; docs/verification.md is the reference for people.
@@ -21,10 +23,10 @@
 namespace gfec::interp {
 
 enum class EventKind {
-  Tick, Call, Av, State,            // observable
+  Tick, Call, Av, State, Agent,     // observable
   Lost, Gained, Enabled,            // hooks
-  Condition, Fire, Exit, Entry, Action, Assign, Post, Note,  // explanation
-  Start, RunInstance, Stop, InstanceAv, InstanceState,       // explanation: sub-charts
+  Condition, Fire, Exit, Entry, Action, Assign, Post, Note, Exchange,  // explanation
+  Start, RunInstance, Stop, InstanceAv, InstanceState,                 // explanation: sub-charts
 };
 
 enum class Layer { Observable, Hooks, Explanation };

@@ -81,7 +81,8 @@ int find_function(const model::Model &m, std::string_view name) {
 
 InputTrace::InputTrace(const model::Model &model) : model_(model) {}
 
-InputTrace::InputTrace(const model::Model &model, const SourceManager &sources, FileId file, Diagnostics &diag)
+InputTrace::InputTrace(const model::Model &model, const SourceManager &sources, FileId file, Diagnostics &diag,
+                       int agents)
     : model_(model) {
   const std::string &text = sources.file(file).text();
   bool header = true;
@@ -97,22 +98,44 @@ InputTrace::InputTrace(const model::Model &model, const SourceManager &sources, 
     if (header) {
       header = false;
       for (const Field &f : fields) {
-        int fn = find_function(model, f.text);
         if (f.text == "tick") {
           columns_.push_back(kTickColumn);
+          column_agent_.push_back(-1);
           continue;
         }
+        // `F@k`: function F, agent k only.
+        std::string_view name = f.text;
+        int agent = -1;
+        if (auto at_sign = name.find('@'); at_sign != std::string_view::npos) {
+          std::string digits(name.substr(at_sign + 1));
+          char *end = nullptr;
+          errno = 0;
+          long k = digits.empty() ? -1 : std::strtol(digits.c_str(), &end, 10);
+          name = name.substr(0, at_sign);
+          if (digits.empty() || errno || *end || k < 0 || k >= agents) {
+            diag.error(f.range, "trace",
+                       agents > 1 ? fmt::format("'{}' names no agent of this run (agents 0 to {})", f.text, agents - 1)
+                                  : fmt::format("'{}' names an agent, but this run has only one", f.text));
+            columns_.push_back(kBadColumn);
+            column_agent_.push_back(-1);
+            continue;
+          }
+          agent = static_cast<int>(k);
+        }
+        int fn = find_function(model, name);
         if (fn < 0) {
-          diag.error(f.range, "trace", fmt::format("no interface function '{}' for this column", f.text));
+          diag.error(f.range, "trace", fmt::format("no interface function '{}' for this column", name));
           fn = kBadColumn;
         } else if (model.functions[static_cast<std::size_t>(fn)].result == model::Type::Void) {
-          diag.error(f.range, "trace", fmt::format("'{}' returns nothing, so it takes no input", f.text));
+          diag.error(f.range, "trace", fmt::format("'{}' returns nothing, so it takes no input", name));
           fn = kBadColumn;
         } else {
           for (std::size_t c = 0; c < columns_.size(); ++c)
-            if (columns_[c] == fn) diag.error(f.range, "trace", fmt::format("a second column for '{}'", f.text));
+            if (columns_[c] == fn && column_agent_[c] == agent)
+              diag.error(f.range, "trace", fmt::format("a second column for '{}'", f.text));
         }
         columns_.push_back(fn);
+        column_agent_.push_back(agent);
       }
       continue;
     }
@@ -143,12 +166,18 @@ InputTrace::InputTrace(const model::Model &model, const SourceManager &sources, 
   }
 }
 
-Value InputTrace::value(int function, std::uint64_t tick) const {
+Value InputTrace::value(int function, std::uint64_t tick, int agent) const {
   const model::Function &fn = model_.functions.at(static_cast<std::size_t>(function));
   if (rows_.empty() || tick == 0) return Value::zero(fn.result);
   std::size_t row = static_cast<std::size_t>(std::min<std::uint64_t>(tick, rows_.size()) - 1);
-  for (std::size_t c = 0; c < columns_.size(); ++c)
-    if (columns_[c] == function) return rows_[row][c];
+  // The agent's own column, else the column every agent shares.
+  std::optional<std::size_t> shared;
+  for (std::size_t c = 0; c < columns_.size(); ++c) {
+    if (columns_[c] != function) continue;
+    if (column_agent_[c] == agent) return rows_[row][c];
+    if (column_agent_[c] < 0) shared = c;
+  }
+  if (shared) return rows_[row][*shared];
   return Value::zero(fn.result);
 }
 

@@ -8,6 +8,9 @@
 //
 // A `tick` column is allowed and ignored (it is for people). A function without a column
 // returns 0 (false). Past the last row, the last row holds (sensors keep their value).
+//
+// A team run (several agents, docs/cli.md) gives each agent its own columns: `F@2` is what F
+// returns to agent 2; a plain `F` column serves every agent that has no `F@k` of its own.
 #pragma once
 
 #include "diagnostics.h"
@@ -23,18 +26,33 @@ public:
   /// Reads the CSV file `file` of `sources` against the model's interface functions. Malformed
   /// lines, unknown or void functions and values of the wrong type are reported to `diag`,
   /// located in the CSV file.
-  InputTrace(const model::Model &model, const SourceManager &sources, FileId file, Diagnostics &diag);
+  InputTrace(const model::Model &model, const SourceManager &sources, FileId file, Diagnostics &diag,
+             int agents = 1);
   /// No inputs: every function returns 0 (false).
   explicit InputTrace(const model::Model &model);
 
   std::size_t rows() const { return rows_.size(); }
-  /// What `function` returns during `tick` (counted from 1).
-  Value value(int function, std::uint64_t tick) const;
+  /// What `function` returns to agent `agent` during `tick` (counted from 1).
+  Value value(int function, std::uint64_t tick, int agent = 0) const;
   Value call(int function, const std::vector<Value> &args, std::uint64_t tick) override;
+
+  /// The inputs of one agent of a team run: what its engine calls.
+  class Agent : public Environment {
+  public:
+    Agent(const InputTrace &trace, int agent) : trace_(trace), agent_(agent) {}
+    Value call(int function, const std::vector<Value> &, std::uint64_t tick) override {
+      return trace_.value(function, tick, agent_);
+    }
+
+  private:
+    const InputTrace &trace_;
+    int agent_;
+  };
 
 private:
   const model::Model &model_;
   std::vector<int> columns_;              ///< column -> function index; -1 the tick column, -2 a bad one
+  std::vector<int> column_agent_;         ///< column -> the agent of `F@k`, or -1 for every agent
   std::vector<std::vector<Value>> rows_;  ///< by row, by column
 };
 

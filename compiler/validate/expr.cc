@@ -150,6 +150,26 @@ bool builtin_allowed(const ast::Expr &e, ExprScope &s, bool statement, const cha
   return true;
 }
 
+/// Where a team built-in (`team(S)`, `agent()`) may stand: in a team machine's expressions, not
+/// in an initialiser. False after reporting why not; silently false when the chart's own
+/// `team` declaration has an error (reported already).
+bool team_context(const ast::Expr &e, ExprScope &s, const std::string &what) {
+  Diagnostics &diag = s.cx.diag;
+  if (s.chart && s.chart->out.team == 0 && !s.chart->ast.teams.empty()) return false;
+  if (!s.chart || s.chart->out.team == 0) {
+    auto &d = diag.error(e.range, "team", fmt::format("'{}' can only be used in a team machine", what));
+    if (s.chart && s.chart->is_fsm())
+      d.note(s.chart->ast.name.range, fmt::format("make fsm '{}' one by declaring its team size in it, e.g. 'team 2;'",
+                                                  s.chart->out.name));
+    return false;
+  }
+  if (s.constant) {
+    diag.error(e.range, "not-constant", fmt::format("a constant expression cannot read '{}'", what));
+    return false;
+  }
+  return true;
+}
+
 /// `active(P)`, `active(P.Q.R)`: each name after the first is a place or state of the chart
 /// the previous one runs.
 std::optional<model::Expr> lower_active(const ast::Expr &e, ExprScope &s, bool statement) {
@@ -234,6 +254,39 @@ std::optional<model::Expr> lower_outcome(const ast::Expr &e, ExprScope &s, bool 
   model::Expr x = make(f == "succeeded" ? K::Succeeded : K::Failed, Type::Bool, e.range);
   x.index = place;
   return x;
+}
+
+/// `team(S)`: how many other agents last reported state S (docs/language.md "Teams").
+std::optional<model::Expr> lower_team(const ast::Expr &e, ExprScope &s, bool statement) {
+  if (!team_context(e, s, "team()")) return std::nullopt;
+  Diagnostics &diag = s.cx.diag;
+  if (e.args.size() != 1 || !e.args[0] || e.args[0]->kind != ast::Expr::Kind::Name) {
+    diag.error(e.range, "team", "'team' takes one argument: the name of a state");
+    return std::nullopt;
+  }
+  int state = resolve_place(*s.chart, s.cx, e.args[0]->name);
+  if (state < 0) return std::nullopt;
+  if (statement) {
+    diag.error(e.range, "type-mismatch", "'team()' as a statement has no effect");
+    return std::nullopt;
+  }
+  model::Expr x = make(K::TeamCount, Type::Int, e.range);
+  x.index = state;
+  return x;
+}
+
+/// `agent()`: this engine's agent number.
+std::optional<model::Expr> lower_agent(const ast::Expr &e, ExprScope &s, bool statement) {
+  if (!team_context(e, s, "agent()")) return std::nullopt;
+  if (!e.args.empty()) {
+    s.cx.diag.error(e.range, "argument-count", fmt::format("'agent' takes no arguments (have {})", e.args.size()));
+    return std::nullopt;
+  }
+  if (statement) {
+    s.cx.diag.error(e.range, "type-mismatch", "'agent()' as a statement has no effect");
+    return std::nullopt;
+  }
+  return make(K::Agent, Type::Int, e.range);
 }
 
 /// Checks the lowered arguments of a call of `f` against its prototype.
@@ -448,6 +501,8 @@ std::optional<model::Expr> lower_call(const ast::Expr &e, ExprScope &s, bool sta
   if (name.text == "elapsed") return lower_elapsed(e, s, statement);
   if (name.text == "active") return lower_active(e, s, statement);
   if (name.text == "succeeded" || name.text == "failed") return lower_outcome(e, s, statement);
+  if (name.text == "team") return lower_team(e, s, statement);
+  if (name.text == "agent") return lower_agent(e, s, statement);
   std::vector<std::optional<model::Expr>> args;
   for (const auto &a : e.args) args.push_back(lower_expr(a.get(), s));
   if (name.text.empty()) return std::nullopt;
@@ -500,10 +555,35 @@ std::optional<model::Expr> lower_initializer(const ast::Expr *e, ExprScope &s, T
   return std::nullopt;
 }
 
+namespace {
+
+/// `if (c) { } else if (d) { } else { }`: the condition must be bool; both branches are checked
+/// whatever the condition, so every mistake in them is reported.
+std::optional<model::Stmt> lower_if(const ast::Stmt &st, ExprScope &s) {
+  auto condition = lower_condition(st.value.get(), s, "the condition of 'if'");
+  std::vector<model::Stmt> then_block = lower_block(st.then_block, s);
+  std::vector<model::Stmt> else_block = lower_block(st.else_block, s);
+  if (!condition) return std::nullopt;
+  model::Stmt m;
+  m.kind = model::Stmt::Kind::If;
+  m.range = st.range;
+  m.value = std::move(*condition);
+  m.then_block = std::move(then_block);
+  m.else_block = std::move(else_block);
+  // An `else if` whose own condition failed lowers to nothing: then this is a plain else.
+  m.else_if = st.else_if && m.else_block.size() == 1 && m.else_block[0].kind == model::Stmt::Kind::If;
+  return m;
+}
+
+} // namespace
+
 std::vector<model::Stmt> lower_block(const ast::Block &b, ExprScope &s) {
   std::vector<model::Stmt> out;
   for (const ast::Stmt &st : b) {
     switch (st.kind) {
+    case ast::Stmt::Kind::If:
+      if (auto m = lower_if(st, s)) out.push_back(std::move(*m));
+      break;
     case ast::Stmt::Kind::Call:
       if (!st.call || st.call->kind != ast::Expr::Kind::Call) break;
       if (auto call = lower_call(*st.call, s, true)) {

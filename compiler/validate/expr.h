@@ -12,6 +12,9 @@
 
 namespace gfec::validation {
 
+/// The most agents a team machine may have (`team N;`): each engine keeps a report per agent.
+constexpr long long kMaxTeam = 1024;
+
 /// A chart's own names, and what its expressions use, while the chart is validated.
 struct ChartScope {
   ChartScope(const ast::Chart &a, model::Chart &o, int i) : ast(a), out(o), index(i) {}

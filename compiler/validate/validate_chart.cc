@@ -18,6 +18,8 @@ namespace {
 /// place or transition with one of these names would give its enum constant the same name.
 const char *const kEngineNames[] = {"init",    "run",       "activation", "state",       "status",          "PLACE_COUNT",
                                     "HOOKS",   "CHECKS",    "activated",  "enabled",     "TRANSITION_COUNT"};
+/// And those a team machine's engine adds.
+const char *const kTeamEngineNames[] = {"set_agent", "report", "TEAM_SIZE"};
 
 void set_period(Context &cx, ChartScope &s) {
   const auto &periods = s.ast.periods;
@@ -38,6 +40,27 @@ void set_period(Context &cx, ChartScope &s) {
   if (!periods.empty() && s.out.period_ms <= 0) s.period_reported = true;
 }
 
+/// `team N;` (docs/language.md "Teams"): only in an fsm, once, N from 2 to kMaxTeam.
+void set_team(Context &cx, ChartScope &s) {
+  const auto &teams = s.ast.teams;
+  for (std::size_t i = 0; i < teams.size(); ++i) {
+    const auto &[n, range] = teams[i];
+    if (i > 0) {
+      cx.diag.error(range, "team", fmt::format("second 'team' declaration in {} '{}'", s.kind_word(), s.out.name))
+          .note(teams[0].second, "the first one is here");
+    } else if (!s.is_fsm()) {
+      cx.diag.error(range, "team", fmt::format("'team' in sfc '{}': only an fsm can be a team machine", s.out.name));
+    } else if (n < 2 || n > kMaxTeam) {
+      auto &d = cx.diag.error(range, "team",
+                              n < 2 ? fmt::format("a team has at least 2 agents, not {}", n < 0 ? std::string("that many") : std::to_string(n))
+                                    : fmt::format("a team has at most {} agents", kMaxTeam));
+      if (n >= 0 && n < 2) d.note("an fsm without 'team' is run by one agent");
+    } else {
+      s.out.team = static_cast<int>(n);
+    }
+  }
+}
+
 /// Places and transitions become enum constants `<Chart>_<Name>` (§5.2): they must not clash
 /// with the engine's own names or with a global C name.
 void check_generated_name(Context &cx, ChartScope &s, const ast::Name &name, const char *what) {
@@ -46,6 +69,13 @@ void check_generated_name(Context &cx, ChartScope &s, const ast::Name &name, con
     if (name.text != reserved) continue;
     cx.diag.error(name.range, "reserved-name",
                   fmt::format("{} '{}' would generate '{}', which the engine already defines", what, name.text, generated));
+    return;
+  }
+  // A team machine's engine has an API of its own (docs/c-engine.md "Team machines").
+  for (const char *reserved : kTeamEngineNames) {
+    if (s.ast.teams.empty() || name.text != reserved) continue;
+    cx.diag.error(name.range, "reserved-name", fmt::format("{} '{}' would generate '{}', which the engine of a team "
+                                                           "machine already defines", what, name.text, generated));
     return;
   }
   if (const Symbol *clash = cx.c_names.find(generated)) {
@@ -194,6 +224,7 @@ void validate_chart(Context &cx, int index) {
   ChartScope scope(*cx.charts[index], cx.model.charts[index], index);
   cx.chart = &scope;
   set_period(cx, scope);
+  set_team(cx, scope);
   declare_names(cx, scope);
   name_transitions(cx, scope);
   lower_values(cx, scope);
@@ -203,6 +234,21 @@ void validate_chart(Context &cx, int index) {
   scope.out.functions.assign(scope.functions.begin(), scope.functions.end());
   scope.out.consts.assign(scope.consts.begin(), scope.consts.end());
   cx.chart = nullptr;
+}
+
+void check_team_roots(Context &cx) {
+  for (const ast::Chart *chart : cx.charts) {
+    for (const ast::Place &p : chart->places) {
+      if (!p.runs) continue;
+      const Symbol *sym = cx.c_names.find(p.runs->text);
+      if (!sym || sym->kind != Sym::Chart || sym->index < 0) continue;  // the sub-chart checks say why
+      const model::Chart &sub = cx.model.charts.at(static_cast<std::size_t>(sym->index));
+      if (sub.team == 0) continue;
+      const ast::Chart &team = *cx.charts.at(static_cast<std::size_t>(sym->index));
+      cx.diag.error(p.runs->range, "team", fmt::format("fsm '{}' is a team machine and cannot run as a sub-chart", sub.name))
+          .note(team.teams.front().second, "a team machine is always the compiled root; its agents run it side by side");
+    }
+  }
 }
 
 } // namespace gfec::validation

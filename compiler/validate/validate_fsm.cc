@@ -19,9 +19,8 @@ bool terminal(const ast::Place &p) { return p.terminal != ast::StateKind::Normal
 void check_state(Context &cx, ChartScope &s, const ast::Place &p, model::Place &out) {
   if (!p.is_state && !terminal(p))
     cx.diag.error(p.range, "wrong-keyword", fmt::format("'place' in an fsm: an fsm has states (write 'state {}')", p.name.text));
-  // §7 gives a state one action, run on every tick; entering and leaving have no meaning here.
-  if (p.entry) cx.diag.error(p.entry_range, "wrong-keyword", "'entry' blocks belong to sfc places; an fsm state has only its action");
-  if (p.exit) cx.diag.error(p.exit_range, "wrong-keyword", "'exit' blocks belong to sfc places; an fsm state has only its action");
+  // `entry` and `exit` blocks run when the state is entered and left (docs/language.md "fsm
+  // entry and exit"); a terminal state has no body at all, so neither.
   if (terminal(p) && p.has_body)
     cx.diag.error(p.range, "terminal-state", fmt::format("terminal state '{}' cannot have a body", p.name.text));
   if (p.initial && terminal(p))

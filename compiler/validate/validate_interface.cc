@@ -38,7 +38,7 @@ void declare_interface(Context &cx, const ast::Interface &iface) {
     out.interface_name = iface.name.text;
     out.range = f.range;
     bool ok = lower_prototype(f, out, cx.diag);
-    for (const char *builtin : {"elapsed", "active", "succeeded", "failed"})
+    for (const char *builtin : {"elapsed", "active", "succeeded", "failed", "agent"})
       if (f.name.text == builtin)
         cx.diag.error(f.name.range, "reserved-name",
                       fmt::format("'{}' is built into the chart language and cannot name a function", builtin));

@@ -155,5 +155,12 @@ sfc Top { initial place A runs Mid { Go(); } place B runs Leaf; A -> B when succ
   // Each place is linked to the first place of its frame, and the transitions stay inside.
   const e = edges(dot).map((x) => x.join('->'));
   for (const link of ['p0->s0_p0', 's0_p0->s0_s0_p0', 'p1->s1_p0', 's0_s0_p0->s0_s0_t0', 's1_t0->s1_p1']) assert.ok(e.includes(link), link);
+});
+
+test('dot: a team machine says its team size; an if keeps its braces', () => {
+  const dot = emit(path.join(SAMPLES, 'fetch_team.fsm'), 'dot');
+  assert.match(dot, /label="fsm Fetch \(period 10ms, team of 4 agents\)"/);
+  const yieldNode = Object.values(nodes(dot)).filter((a) => /\blabel=/.test(a)).map(label).find((l) => l.startsWith('Yield'));
+  assert.ok(yieldNode.includes('entry: if (agent() == 0) { Beep(2); } else { Beep(1); }\n'), yieldNode);
   if (haveDot) render(dot);
 });

@@ -151,6 +151,8 @@ test('sub-charts: runs, the built-ins that read them and paths', () => {
   for (const f of ['succeeded', 'failed', 'active']) assert.equal(scopeOf(tokens, f, 4), 'support.function.builtin.gfec');
   assert.equal(scopeOf(tokens, '.', 4), 'punctuation.accessor.dot.gfec');
   assert.equal(scopeOf(tokens, 'Hand', 4), 'variable.other.gfec');
+});
+
 test('a test block: its steps and operands are keywords there, plain names elsewhere', () => {
   const text = fs.readFileSync(path.join(SAMPLES, 'cleanup.test'), 'utf8');
   const tokens = tokenize(text);
@@ -170,4 +172,19 @@ test('a test block: its steps and operands are keywords there, plain names elsew
   // The block ends at its brace: what follows is ordinary code again.
   const after = tokenize('test "t" of C { tick; }\nsfc D { initial place expect; }\n');
   assert.equal(scopeOf(after, 'expect', 2), 'entity.name.section.place.gfec');
+});
+
+test('if and else, team machines: team N, team(S) and agent()', () => {
+  const tokens = tokenize([
+    'fsm Fetch {',
+    '  team 4;',
+    '  initial state Go { if (team(Grab) == 0) { Go(); } else if (agent() > 1) { } else { Stop(); } }',
+    '}',
+  ].join('\n'));
+  assert.equal(scopeOf(tokens, 'if'), 'keyword.control.conditional.gfec');
+  assert.equal(scopeOf(tokens, 'else'), 'keyword.control.conditional.gfec');
+  assert.equal(scopeOf(tokens, 'team', 2), 'storage.type.team.gfec');
+  assert.equal(scopeOf(tokens, 'team', 3), 'support.function.builtin.gfec');
+  assert.equal(scopeOf(tokens, 'agent'), 'support.function.builtin.gfec');
+  assert.equal(scopeOf(tokens, '4'), 'constant.numeric.integer.gfec');
 });

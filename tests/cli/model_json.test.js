@@ -33,6 +33,8 @@ for (const file of chartFiles) {
 
     const period = /\bperiod\s+(\d+)ms/.exec(text);
     assert.equal(doc.period_ms, period ? +period[1] : null);
+    const team = /\bteam\s+(\d+)\s*;/.exec(text);
+    assert.equal(doc.team, team ? +team[1] : null);
 
     const places = [...text.matchAll(/^\s*((?:initial|success|failure)\s+)?(?:place|state)\s+(\w+)/gm)];
     const list = kind === 'sfc' ? doc.places : doc.states;
@@ -58,7 +60,7 @@ for (const file of chartFiles) {
     // Every function a chart calls is declared by the interface it imports.
     const called = new Set([...text.matchAll(/(\w+)\s*\(/g)].map((m) => m[1]));
     for (const f of doc.functions) assert.ok(called.has(f.name), f.name);
-    const builtins = ['elapsed', 'active', 'succeeded', 'failed'];
+    const builtins = ['elapsed', 'active', 'succeeded', 'failed', 'team', 'agent', 'if'];
     for (const f of called) if (!builtins.includes(f)) assert.ok(doc.functions.some((g) => g.name === f), f);
   });
 }

@@ -250,7 +250,28 @@ public:
     return false;
   }
 
-  GStmt statement() {
+  GStmt statement(int depth = 2) {
+    if (depth > 0 && chance(0.15)) {  // if / else if / else (docs/language.md "if and else")
+      GStmt s;
+      s.is_if = true;
+      // A condition that reads something that changes: cppcheck rightly flags `if (false)` and
+      // an inner `if` on the outer one's constant condition.
+      s.expr = boolean(2);
+      for (int tries = 0; tries < 5 && !varies(s.expr); ++tries) s.expr = boolean(2);
+      if (!varies(s.expr)) return statement(0);
+      s.then_block = block(0, 2, depth - 1);
+      s.has_else = chance(0.5);
+      if (s.has_else) {
+        if (chance(0.4)) {
+          GStmt inner = statement(depth - 1);
+          if (inner.is_if) s.else_block.push_back(inner);
+          else s.else_block = block(0, 2, depth - 1);
+        } else {
+          s.else_block = block(0, 2, depth - 1);
+        }
+      }
+      return s;
+    }
     if (!c_.vars.empty() && chance(0.4)) {
       const GValue &v = pick(c_.vars);
       GStmt s;
@@ -277,9 +298,9 @@ public:
     return s;
   }
 
-  std::vector<GStmt> block(int lo, int hi) {
+  std::vector<GStmt> block(int lo, int hi, int depth = 2) {
     std::vector<GStmt> b;
-    for (int i = uniform(lo, hi); i > 0; --i) b.push_back(statement());
+    for (int i = uniform(lo, hi); i > 0; --i) b.push_back(statement(depth));
     return b;
   }
 
@@ -371,7 +392,10 @@ public:
         continue;
       }
       s.body = chance(0.85);
-      if (s.body) s.action = block(0, 2);
+      if (!s.body) continue;
+      s.action = block(0, 2);
+      if (chance(0.25)) s.entry = block(1, 2);  // docs/language.md "fsm entry and exit"
+      if (chance(0.25)) s.exit = block(1, 2);
     }
     // A spanning tree first (every state weakly connected), then extra transitions; never from
     // a terminal state, never to itself, at most one per ordered pair.
@@ -421,8 +445,16 @@ int precedence(const std::string &op) {
 
 std::string block_text(const std::vector<GStmt> &b) {
   std::string s;
-  for (const auto &st : b)
+  for (const auto &st : b) {
+    if (st.is_if) {
+      s += fmt::format("if ({}) {{ {}}} ", expr_text(st.expr), block_text(st.then_block));
+      if (!st.has_else) continue;
+      const bool chain = st.else_block.size() == 1 && st.else_block[0].is_if;
+      s += chain ? "else " + block_text(st.else_block) : fmt::format("else {{ {}}} ", block_text(st.else_block));
+      continue;
+    }
     s += st.assign ? fmt::format("{} {} {}; ", st.target, st.op, expr_text(st.expr)) : expr_text(st.expr) + "; ";
+  }
   return s;
 }
 

@@ -26,7 +26,10 @@ struct GStmt {
   bool assign = false;
   std::string target;  ///< assignments: the var
   std::string op;      ///< "=", "+=", "-="
-  GExpr expr;          ///< the value, or the call
+  GExpr expr;          ///< the value, or the call; an `if`: its condition
+  bool is_if = false;  ///< `if (expr) { then_block } else { else_block }`
+  bool has_else = false;
+  std::vector<GStmt> then_block, else_block;  ///< an `else if` is one `if` in else_block
 };
 
 struct GFunction {

@@ -14,8 +14,12 @@ void for_each_expr(GChart &c, const std::function<void(GExpr &)> &f) {
     f(e);
     for (auto &a : e.args) walk(a);
   };
-  auto block = [&](std::vector<GStmt> &b) {
-    for (auto &s : b) walk(s.expr);
+  std::function<void(std::vector<GStmt> &)> block = [&](std::vector<GStmt> &b) {
+    for (auto &s : b) {
+      walk(s.expr);
+      block(s.then_block);
+      block(s.else_block);
+    }
   };
   for (auto &p : c.places) {
     block(p.action);
@@ -30,10 +34,19 @@ void for_each_expr(GChart &c, const std::function<void(GExpr &)> &f) {
 /// The statement blocks of the chart, in a fixed order.
 std::vector<std::vector<GStmt> *> blocks(GChart &c) {
   std::vector<std::vector<GStmt> *> out;
+  // A block, then the branches of its ifs.
+  std::function<void(std::vector<GStmt> &)> add = [&](std::vector<GStmt> &b) {
+    out.push_back(&b);
+    for (auto &s : b) {
+      if (!s.is_if) continue;
+      add(s.then_block);
+      add(s.else_block);
+    }
+  };
   for (auto &p : c.places) {
-    out.push_back(&p.action);
-    if (p.entry) out.push_back(&*p.entry);
-    if (p.exit) out.push_back(&*p.exit);
+    add(p.action);
+    if (p.entry) add(*p.entry);
+    if (p.exit) add(*p.exit);
   }
   return out;
 }

@@ -211,8 +211,8 @@ TEST_CASE("c backend: a chart without transitions or actions still compiles clea
   }
 }
 
-TEST_CASE("c backend: fsm entry and exit blocks, should the model have them", "[c_backend][run]") {
-  // The validator keeps entry/exit out of fsm states today; the engine still honours the model.
+TEST_CASE("c backend: fsm entry and exit blocks in a hand-built model", "[c_backend][run]") {
+  // The same from chart text: c_backend_run_test.cc "fsm entry and exit".
   ChartBuilder b("Blink", Kind::Fsm);
   b.fn("LedOn").fn("LedOff").fn("Shine").fn("Dark");
   auto led_on = b.act("LedOn"), led_off = b.act("LedOff"), shine = b.act("Shine");

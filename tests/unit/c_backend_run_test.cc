@@ -718,3 +718,183 @@ TEST_CASE("c engine run: fsm calls left to right in conditions, actions and post
   // With NDEBUG assert() reads nothing: the temporaries it would use are left out too (else unused).
   CHECK(run("call_order_fsm_ndebug", kOrderFsm, script, "-DMachine_CHECKS -DNDEBUG") == order_fsm_log(false));
 }
+
+namespace {
+
+// if / else if / else in actions and entry and exit blocks (docs/language.md "if and else"),
+// with calls in the conditions (one needs a temporary to keep them in order) and a timer.
+const char *kIfElse = R"(
+interface Bot { bool X(); bool Y(); int N(); int M(); void A(); void B(int v); void C(); void D(); }
+sfc Branches {
+  period 10ms;
+  var int k = 0;
+  initial place P {
+    entry { if (X()) { A(); } else { C(); } }
+    if (N() + M() > 2) { B(N()); } else if (Y()) { if (X()) { C(); } k += 1; } else { D(); }
+    if (elapsed(P) >= 20ms) { B(k); }
+  }
+  place Q { exit { if (Y()) { B(k); } } D(); }
+  transition P -> Q when k >= 2;
+  transition Q -> P when X();
+})";
+
+} // namespace
+
+TEST_CASE("c engine run: if, else if and else", "[c_backend][run]") {
+  std::string log = run("if_else", kIfElse,
+                        "X N=2 M=1\n"
+                        "\n"
+                        "Y\n"
+                        "Y X\n"
+                        "\n"
+                        "X Y\n");
+  CHECK(log == "tick 1\n"
+               "cond X -> 1\n"   // the first tick: P's entry, the then-branch
+               "act A\n"
+               "cond N -> 2\n"   // k < 2: the transition asks nothing; N() before M()
+               "cond M -> 1\n"
+               "cond N -> 2\n"   // 3 > 2: the first branch
+               "act B(2)\n"
+               "av P\n"          // elapsed(P) is 1 tick, below 2: no B(k)
+               "tick 2\n"
+               "cond N -> 0\n"
+               "cond M -> 0\n"
+               "cond Y -> 0\n"   // else if fails: else
+               "act D\n"
+               "act B(0)\n"      // 2 ticks: 20ms
+               "av P\n"
+               "tick 3\n"
+               "cond N -> 0\n"
+               "cond M -> 0\n"
+               "cond Y -> 1\n"
+               "cond X -> 0\n"   // the nested if without else does nothing; k becomes 1
+               "act B(1)\n"
+               "av P\n"
+               "tick 4\n"
+               "cond N -> 0\n"
+               "cond M -> 0\n"
+               "cond Y -> 1\n"
+               "cond X -> 1\n"
+               "act C\n"         // k becomes 2
+               "act B(2)\n"
+               "av P\n"
+               "tick 5\n"        // k >= 2: P -> Q
+               "act D\n"
+               "av Q\n"
+               "tick 6\n"
+               "cond X -> 1\n"   // Q -> P
+               "cond Y -> 1\n"   // Q's exit
+               "act B(2)\n"
+               "cond X -> 1\n"   // P's entry
+               "act A\n"
+               "cond N -> 0\n"
+               "cond M -> 0\n"
+               "cond Y -> 1\n"
+               "cond X -> 1\n"
+               "act C\n"         // k becomes 3; P's timer was reset: no B(k)
+               "av P\n");
+}
+
+TEST_CASE("c engine run: if in an fsm, and the if/else chain in the generated C", "[c_backend][run]") {
+  const char *chart = R"(
+interface Bot { bool X(); bool Y(); void A(); void B(); void C(); }
+fsm Choice {
+  var int n = 0;
+  initial state S {
+    if (X()) { A(); } else if (Y()) { B(); } else { C(); }
+    n += 1;
+  }
+  success state Done;
+  S -> Done when n >= 3;
+})";
+  std::string log = run("if_fsm", chart, "X\nY\n\nX Y\n");
+  CHECK(log == "tick 1\ncond X -> 1\nact A\nstate S status 0\n"
+               "tick 2\ncond X -> 0\ncond Y -> 1\nact B\nstate S status 0\n"
+               "tick 3\ncond X -> 0\ncond Y -> 0\nact C\nstate S status 0\n"
+               "tick 4\nstate Done status 1\n");  // n is 3: the machine ends, no action
+  auto compiled = compile_chart({{"chart.sfc", chart}}, "chart.sfc", "engine.c", false);
+  REQUIRE(!compiled->diag.has_errors());
+  const std::string &c = compiled->files.at(0).contents;
+  CHECK(c.find("        if (X()) {\n"
+               "            A();\n"
+               "        } else if (Y()) {\n"
+               "            B();\n"
+               "        } else {\n"
+               "            C();\n"
+               "        }\n"
+               "        m->n += 1;\n") != std::string::npos);
+}
+
+namespace {
+
+// fsm entry and exit (docs/language.md "fsm entry and exit"): the first tick runs the initial
+// state's entry; a transition runs the old state's exit, then the new state's entry with its
+// timer at 0, then (unless terminal) its action.
+const char *kFsmEntryExit = R"(
+interface Bot {
+  bool Go(); bool Back(); bool Fin();
+  void EnterA(); void ExitA(); void DoA(); void EnterB(); void ExitB(); void DoB(); void Late();
+}
+fsm Doors {
+  period 10ms;
+  initial state A { entry { EnterA(); } DoA(); exit { ExitA(); } }
+  state B {
+    entry { EnterB(); if (elapsed(B) >= 10ms) { Late(); } }
+    DoB();
+    if (elapsed(B) >= 10ms) { Late(); }
+    exit { ExitB(); }
+  }
+  success state Done;
+  A -> B when Go();
+  B -> A when Back();
+  B -> Done when Fin();
+})";
+
+const char *kFsmEntryExitScript = "\nGo\n\nBack\nGo\nFin\nGo Back Fin\n";
+
+} // namespace
+
+TEST_CASE("c engine run: fsm entry and exit", "[c_backend][run]") {
+  std::string log = run("fsm_entry_exit_text", kFsmEntryExit, kFsmEntryExitScript);
+  CHECK(log == "tick 1\n"
+               "act EnterA\n"      // the first tick begins with the initial state's entry
+               "cond Go -> 0\n"
+               "act DoA\n"
+               "state A status 0\n"
+               "tick 2\n"
+               "cond Go -> 1\n"
+               "act ExitA\n"       // the old state's exit, then the new state's entry: its
+               "act EnterB\n"      // timer is 0, so no Late()
+               "act DoB\n"
+               "state B status 0\n"
+               "tick 3\n"
+               "cond Back -> 0\n"
+               "cond Fin -> 0\n"
+               "act DoB\n"
+               "act Late\n"        // one tick in B
+               "state B status 0\n"
+               "tick 4\n"
+               "cond Back -> 1\n"
+               "act ExitB\n"
+               "act EnterA\n"
+               "act DoA\n"
+               "state A status 0\n"
+               "tick 5\n"
+               "cond Go -> 1\n"
+               "act ExitA\n"
+               "act EnterB\n"      // B's timer starts again from 0
+               "act DoB\n"
+               "state B status 0\n"
+               "tick 6\n"
+               "cond Back -> 0\n"
+               "cond Fin -> 1\n"
+               "act ExitB\n"       // a terminal state has no entry and no action
+               "state Done status 1\n"
+               "tick 7\n"          // nothing happens any more
+               "state Done status 1\n");
+  std::string hooks = run("fsm_entry_exit_hooks", kFsmEntryExit, "\nGo\n", "-DDoors_HOOKS");
+  CHECK(hooks == "tick 1\nact EnterA\ncond Go -> 0\nact DoA\nstate A status 0\n"
+                 "tick 2\ncond Go -> 1\nact ExitA\nact EnterB\n"
+                 "hook lost A\nhook gained B\nhook enabled T1\nhook enabled T2\n"  // after exit and entry
+                 "act DoB\nstate B status 0\n");
+}

@@ -1,6 +1,8 @@
 // The reference interpreter on fsm machines: LANGUAGE.md §7.
 #include "interpreter_support.h"
 
+#include <fmt/format.h>
+
 using namespace gfec;
 using test::compile;
 using test::run_log;
@@ -107,4 +109,117 @@ fsm Blink {
         "tick 4\ncall Show(3)\nav 1 0 0\nstate Off running\n"  // elapsed 1
         "tick 5\nav 0 0 1\nstate Enough succeeded\n"            // count >= 3 is tried first
         "tick 6\nav 0 0 1\nstate Enough succeeded\n");
+}
+
+TEST_CASE("interpreter fsm: entry and exit blocks") {
+  // The machine of c_backend_run_test.cc "fsm entry and exit".
+  auto c = compile(R"(
+fsm Doors {
+  period 10ms;
+  initial state A { entry { EnterA(); } DoA(); exit { ExitA(); } }
+  state B {
+    entry { EnterB(); if (elapsed(B) >= 10ms) { Late(); } }
+    DoB();
+    if (elapsed(B) >= 10ms) { Late(); }
+    exit { ExitB(); }
+  }
+  success state Done;
+  A -> B when Go();
+  B -> A when Back();
+  B -> Done when Fin();
+})",
+                   R"(interface Bot {
+  bool Go(); bool Back(); bool Fin();
+  void EnterA(); void ExitA(); void DoA(); void EnterB(); void ExitB(); void DoB(); void Late();
+})");
+  ScriptedEnv env(*c);
+  env.script("Go", {0, 1, 0, 0, 1, 0, 1}).script("Back", {0, 0, 0, 1, 0, 0, 1}).script("Fin", {0, 0, 0, 0, 0, 1, 1});
+  CHECK(run_log(*c, env, 7) ==
+        "tick 1\ncall EnterA()\ncall Go() = false\ncall DoA()\nav 1 0 0\nstate A running\n"
+        "tick 2\ncall Go() = true\ncall ExitA()\ncall EnterB()\ncall DoB()\nav 0 1 0\nstate B running\n"
+        "tick 3\ncall Back() = false\ncall Fin() = false\ncall DoB()\ncall Late()\nav 0 1 0\nstate B running\n"
+        "tick 4\ncall Back() = true\ncall ExitB()\ncall EnterA()\ncall DoA()\nav 1 0 0\nstate A running\n"
+        "tick 5\ncall Go() = true\ncall ExitA()\ncall EnterB()\ncall DoB()\nav 0 1 0\nstate B running\n"
+        "tick 6\ncall Back() = false\ncall Fin() = true\ncall ExitB()\nav 0 0 1\nstate Done succeeded\n"
+        "tick 7\nav 0 0 1\nstate Done succeeded\n");
+  // Explained: the exit, then the entry, then the action.
+  ScriptedEnv go(*c);
+  go.script("Go", {0, 1});
+  std::string explained = run_log(*c, go, 2, {false, true, true});
+  CHECK(explained.find("tick 2\n"
+                       "  cond T0 = true\n"
+                       "    call Go() = true\n"
+                       "  fire T0: A -> B\n"
+                       "  exit A\n"
+                       "    call ExitA()\n"
+                       "  entry B\n"
+                       "    call EnterB()\n") != std::string::npos);
+}
+
+TEST_CASE("interpreter fsm: a team of four under the reference exchange") {
+  // The census of c_backend_team_test.cc: the same calls, in the interpreter's words.
+  auto c = compile(R"(
+fsm Census {
+  team 4;
+  initial state Go { Count(agent(), team(Go), team(Wait)); }
+  state Wait { Count(agent(), team(Go), team(Wait)); }
+  Go -> Wait when Move();
+  Wait -> Go when Move();
+})",
+                   "interface Bot { bool Move(); void Count(int me, int go, int wait); }");
+  std::vector<std::unique_ptr<ScriptedEnv>> envs;
+  std::vector<interp::Environment *> agents;
+  const std::vector<std::vector<double>> moves = {{0, 0, 1, 0}, {1, 0, 0, 0}, {0}, {1, 0}};
+  for (const auto &m : moves) {
+    envs.push_back(std::make_unique<ScriptedEnv>(*c));
+    envs.back()->script("Move", m);
+    agents.push_back(envs.back().get());
+  }
+  Diagnostics diag;
+  interp::RunResult r = interp::run_team(c->model, 0, agents, 4, {}, diag);
+  REQUIRE(r.completed);
+  auto agent = [](int k, bool move, const char *count, const char *state) {
+    return fmt::format("agent {}\ncall Move() = {}\ncall Count({})\nav {}\nstate {} running\n", k, move ? "true" : "false",
+                       count, std::string(state) == "Go" ? "1 0" : "0 1", state);
+  };
+  CHECK(r.log.render({}) == "tick 1\n" + agent(0, false, "0, 0, 0", "Go") + agent(1, true, "1, 0, 0", "Wait") +
+                                agent(2, false, "2, 0, 0", "Go") + agent(3, true, "3, 0, 0", "Wait") +
+                                "tick 2\n" + agent(0, false, "0, 1, 2", "Go") + agent(1, false, "1, 2, 1", "Wait") +
+                                agent(2, false, "2, 1, 2", "Go") + agent(3, false, "3, 2, 1", "Wait") +
+                                "tick 3\n" + agent(0, true, "0, 1, 2", "Wait") + agent(1, false, "1, 2, 1", "Wait") +
+                                agent(2, false, "2, 1, 2", "Go") + agent(3, false, "3, 2, 1", "Wait") +
+                                "tick 4\n" + agent(0, false, "0, 1, 2", "Wait") + agent(1, false, "1, 1, 2", "Wait") +
+                                agent(2, false, "2, 0, 3", "Go") + agent(3, false, "3, 1, 2", "Wait"));
+  // Explained: each agent's part one level deeper, and the exchange after the tick.
+  std::string explained = r.log.render({false, true, true});
+  CHECK(explained.find("tick 3\n  agent 0\n    cond T0 = true\n      call Move() = true\n") != std::string::npos);
+  CHECK(explained.find("  team Wait Wait Go Wait\ntick 4\n") != std::string::npos);
+}
+
+TEST_CASE("interpreter fsm: the engine's team API") {
+  auto c = compile(R"(
+fsm Census {
+  team 4;
+  initial state Go;
+  state Wait;
+  Go -> Wait when team(Wait) > 1;
+})");
+  interp::Engine e(c->model, 0);
+  CHECK(e.team_size() == 4);
+  e.set_agent(2);
+  e.report(2, 1);   // its own number
+  e.report(4, 1);   // no such agent
+  e.report(-1, 1);
+  e.report(0, 2);   // no such state
+  CHECK(e.reports() == std::vector<int>{-1, -1, -1, -1});
+  e.report(0, 1);
+  e.report(3, 1);
+  e.set_agent(9);   // ignored
+  CHECK(e.agent() == 2);
+  ScriptedEnv env(*c);
+  e.run(env, nullptr);
+  CHECK(e.state() == 1);  // two others in Wait
+  e.init();
+  CHECK(e.agent() == 0);
+  CHECK(e.reports() == std::vector<int>{-1, -1, -1, -1});
 }

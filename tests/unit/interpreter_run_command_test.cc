@@ -80,3 +80,45 @@ TEST_CASE("gfec run: errors in the trace, undefined behaviour and usage") {
   CHECK(run_command(gfec_exe + " run " + dir + "/missing.sfc").exit_code == 2);
   CHECK(run_command(gfec_exe + " run " + samples + "/wall_follow.plan").exit_code == 2);
 }
+
+TEST_CASE("gfec run: a team machine runs every agent, with columns per agent") {
+  std::string dir = scratch_dir("gfec_run_team");
+  write_file(dir + "/fetch.fsm", R"(interface Bot { bool Arrived(); bool Holding(); void PickUp(); }
+fsm Fetch {
+  team 3;
+  initial state Go;
+  state Grab { PickUp(); }
+  success state Got;
+  Go -> Grab when Arrived() && team(Grab) == 0;
+  Grab -> Got when Holding();
+}
+)");
+  write_file(dir + "/in.csv",
+             "tick, Arrived, Arrived@0, Holding@2\n"
+             "1, 0, 1, 0\n"
+             "2, 1, 1, 1\n");
+  auto r = run_command(gfec_exe + " run " + dir + "/fetch.fsm --inputs " + dir + "/in.csv --observable");
+  CHECK(r.exit_code == 0);
+  CHECK(r.out == "tick 1\n"
+                 "agent 0\ncall Arrived() = true\ncall PickUp()\nav 0 1 0\nstate Grab running\n"  // its own column
+                 "agent 1\ncall Arrived() = false\nav 1 0 0\nstate Go running\n"                    // the shared one
+                 "agent 2\ncall Arrived() = false\nav 1 0 0\nstate Go running\n"
+                 "tick 2\n"
+                 "agent 0\ncall Holding() = false\ncall PickUp()\nav 0 1 0\nstate Grab running\n"   // no Holding@0: 0
+                 "agent 1\ncall Arrived() = true\nav 1 0 0\nstate Go running\n"                     // team(Grab) is 1
+                 "agent 2\ncall Arrived() = true\nav 1 0 0\nstate Go running\n");
+
+  auto two = run_command(gfec_exe + " run " + dir + "/fetch.fsm --agents 2 --ticks 1 --observable");
+  CHECK(two.exit_code == 0);
+  CHECK(two.out == "tick 1\nagent 0\ncall Arrived() = false\nav 1 0 0\nstate Go running\n"
+                   "agent 1\ncall Arrived() = false\nav 1 0 0\nstate Go running\n");
+
+  auto too_many = run_command(gfec_exe + " run " + dir + "/fetch.fsm --agents 4");
+  CHECK(too_many.exit_code == 2);
+  CHECK(too_many.out == "gfec: error: --agents 4: 'Fetch' is a team of 1 to 3 agents\n");
+
+  auto bad_column = run_command(gfec_exe + " run " + dir + "/fetch.fsm --agents 2 --inputs " + dir + "/in.csv");
+  CHECK(bad_column.exit_code == 1);
+  CHECK(bad_column.out.find("in.csv:1:27: error: 'Holding@2' names no agent of this run (agents 0 to 1) [trace]") !=
+        std::string::npos);
+}

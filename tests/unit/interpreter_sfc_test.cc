@@ -218,3 +218,50 @@ sfc Api {
   CHECK(e.vars().at(0).i == 2);
   CHECK(e.ticks() == 0);
 }
+
+TEST_CASE("interpreter sfc: if, else if and else in actions, entry and exit") {
+  // The chart of c_backend_run_test.cc "if, else if and else": the same calls, in the
+  // interpreter's words.
+  auto c = compile(R"(
+sfc Branches {
+  period 10ms;
+  var int k = 0;
+  initial place P {
+    entry { if (X()) { A(); } else { C(); } }
+    if (N() + M() > 2) { B(N()); } else if (Y()) { if (X()) { C(); } k += 1; } else { D(); }
+    if (elapsed(P) >= 20ms) { B(k); }
+  }
+  place Q { exit { if (Y()) { B(k); } } D(); }
+  transition P -> Q when k >= 2;
+  transition Q -> P when X();
+})",
+                   "interface Bot { bool X(); bool Y(); int N(); int M(); void A(); void B(int v); void C(); void D(); }");
+  ScriptedEnv env(*c);
+  env.script("X", {1, 0, 0, 1, 0, 1}).script("Y", {0, 0, 1, 1, 0, 1}).script("N", {2, 0}).script("M", {1, 0});
+  CHECK(run_log(*c, env, 6) ==
+        "tick 1\n"
+        "call X() = true\ncall A()\n"                       // P's entry on the first tick
+        "call N() = 2\ncall M() = 1\ncall N() = 2\ncall B(2)\n"
+        "av 1 0\n"
+        "tick 2\n"
+        "call N() = 0\ncall M() = 0\ncall Y() = false\ncall D()\n"
+        "call B(0)\n"                                       // elapsed(P) is 20ms
+        "av 1 0\n"
+        "tick 3\n"
+        "call N() = 0\ncall M() = 0\ncall Y() = true\ncall X() = false\n"
+        "call B(1)\n"
+        "av 1 0\n"
+        "tick 4\n"
+        "call N() = 0\ncall M() = 0\ncall Y() = true\ncall X() = true\ncall C()\n"
+        "call B(2)\n"
+        "av 1 0\n"
+        "tick 5\n"                                          // k is 2: P -> Q
+        "call D()\n"
+        "av 0 1\n"
+        "tick 6\n"
+        "call X() = true\n"                                 // Q -> P
+        "call Y() = true\ncall B(2)\n"                      // Q's exit
+        "call X() = true\ncall A()\n"                       // P's entry
+        "call N() = 0\ncall M() = 0\ncall Y() = true\ncall X() = true\ncall C()\n"
+        "av 1 0\n");
+}

@@ -181,6 +181,101 @@ TEST_CASE("parser: deep nesting is refused cleanly, not by a stack overflow") {
   CHECK(parse_errors(bangs).find("[nesting]") != std::string::npos);
 }
 
+TEST_CASE("parser: if, else if and else are statements in every block") {
+  FrontEnd fe({{"t.sfc", R"(
+fsm M {
+  initial state A {
+    entry { if (Ready()) { Go(); } }
+    if (x > 1) { Go(); n = 2; } else if (Late()) { Stop(); } else { if (y) { } }
+    exit { if (z) { Stop(); } else { Go(); } }
+  }
+}
+)"}});
+  CHECK(fe.text() == "");
+  const ast::Place &a = only_file(fe).charts.at(0).places.at(0);
+  REQUIRE(a.action.size() == 1);
+  const ast::Stmt &s = a.action[0];
+  CHECK(s.kind == ast::Stmt::Kind::If);
+  CHECK(s.value->kind == ast::Expr::Kind::Binary);
+  CHECK(s.then_block.size() == 2);
+  CHECK(s.has_else);
+  CHECK(s.else_if);
+  REQUIRE(s.else_block.size() == 1);
+  const ast::Stmt &inner = s.else_block[0];
+  CHECK(inner.kind == ast::Stmt::Kind::If);
+  CHECK(inner.value->kind == ast::Expr::Kind::Call);
+  CHECK(inner.has_else);
+  CHECK_FALSE(inner.else_if);
+  REQUIRE(inner.else_block.size() == 1);
+  CHECK(inner.else_block[0].kind == ast::Stmt::Kind::If);
+  CHECK(inner.else_block[0].then_block.empty());
+  CHECK_FALSE(inner.else_block[0].has_else);
+  // The statement's range runs from `if` to the last closing brace.
+  CHECK(fe.sources.file(s.range.file).text().substr(s.range.begin, s.range.end - s.range.begin) ==
+        "if (x > 1) { Go(); n = 2; } else if (Late()) { Stop(); } else { if (y) { } }");
+  REQUIRE(a.entry);
+  CHECK(a.entry->at(0).kind == ast::Stmt::Kind::If);
+  CHECK_FALSE(a.entry->at(0).has_else);
+  REQUIRE(a.exit);
+  CHECK(a.exit->at(0).has_else);
+  CHECK_FALSE(a.exit->at(0).else_if);
+}
+
+TEST_CASE("parser: if and else mistakes") {
+  CHECK(parse_errors("sfc X {\n  initial place A { if Ready() { Go(); } }\n}\n") ==
+        "t.sfc:2:24: error: expected '(' after 'if', found 'Ready' [syntax]\n"
+        "   initial place A { if Ready() { Go(); } }\n"
+        "                        ^~~~~\n");
+  CHECK(parse_errors("sfc X {\n  initial place A { if (Ready()) Go(); }\n}\n") ==
+        "t.sfc:2:34: error: expected '{' after the condition of 'if' (the branches of an 'if' are blocks), "
+        "found 'Go' [syntax]\n"
+        "   initial place A { if (Ready()) Go(); }\n"
+        "                                  ^~\n");
+  CHECK(parse_errors("sfc X {\n  initial place A { Go(); else { Stop(); } }\n}\n") ==
+        "t.sfc:2:27: error: expected a statement ('else' must follow the block of an 'if'), found 'else' [syntax]\n"
+        "   initial place A { Go(); else { Stop(); } }\n"
+        "                           ^~~~\n");
+  CHECK(parse_errors("sfc X {\n  initial place A { if (a) { } else Stop(); }\n}\n") ==
+        "t.sfc:2:37: error: expected '{' or 'if' after 'else', found 'Stop' [syntax]\n"
+        "   initial place A { if (a) { } else Stop(); }\n"
+        "                                     ^~~~\n");
+  // Deeply nested blocks are refused like deep expressions.
+  std::string deep = "sfc X { initial place A { ";
+  for (int i = 0; i < 3000; ++i) deep += "if (a) { ";
+  deep += std::string(3000, '}') + " } }";
+  CHECK(parse_errors(deep).find("[nesting]") != std::string::npos);
+}
+
+TEST_CASE("parser: team declarations and team(S)") {
+  FrontEnd fe({{"t.sfc", R"(
+fsm M {
+  team 4;
+  team 1;
+  initial state A { if (team(A) > agent()) { Go(); } }
+}
+)"}});
+  CHECK(fe.text() == "");
+  const ast::Chart &c = only_file(fe).charts.at(0);
+  REQUIRE(c.teams.size() == 2);
+  CHECK(c.teams[0].first == 4);
+  CHECK(c.teams[1].first == 1);  // the validator checks the sizes
+  const ast::Expr &cond = *c.places.at(0).action.at(0).value;
+  const ast::Expr &team = *cond.args.at(0);
+  CHECK(team.kind == ast::Expr::Kind::Call);
+  CHECK(team.name.text == "team");
+  REQUIRE(team.args.size() == 1);
+  CHECK(team.args[0]->name.text == "A");
+  CHECK(cond.args.at(1)->name.text == "agent");
+  CHECK(parse_errors("fsm X {\n  team four;\n}\n") ==
+        "t.sfc:2:8: error: expected integer after 'team' (the number of agents, e.g. 'team 4;'), found 'four' [syntax]\n"
+        "   team four;\n"
+        "        ^~~~\n");
+  CHECK(parse_errors("fsm X {\n  initial state A { n = team; }\n}\n") ==
+        "t.sfc:2:29: error: expected '(' after 'team' (team(S) counts the other agents in state S), found ';' [syntax]\n"
+        "   initial state A { n = team; }\n"
+        "                             ^\n");
+}
+
 TEST_CASE("loader: imports are found beside the importer, read once, and cycles are errors") {
   FrontEnd ok({{"dir/main.sfc", "import \"a.iface\"; import \"b.iface\";"},
                {"dir/a.iface", "import \"b.iface\";"},

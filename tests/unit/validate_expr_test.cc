@@ -641,3 +641,64 @@ sfc S {
 )--");
 }
 
+
+TEST_CASE("validate: if conditions must be bool; both branches are checked", "[validate]") {
+  Run r({{"t.sfc", R"--(import "bot.iface";
+sfc S {
+  period 10ms;
+  var int n = 0;
+  initial place A {
+    if (n) { Go(); }
+    if (Count() > 1) { Stop(); } else if (Distance()) { Go(); } else { n = true; }
+    entry { if (elapsed(A)) { Nope(); } }
+  }
+}
+)--"}, {"bot.iface", kBot}});
+  CHECK(r.text() == R"--(t.sfc:6:9: error: the condition of 'if' must be bool, not 'int' [type-mismatch]
+     if (n) { Go(); }
+         ^
+t.sfc:7:43: error: the condition of 'if' must be bool, not 'float' [type-mismatch]
+     if (Count() > 1) { Stop(); } else if (Distance()) { Go(); } else { n = true; }
+                                           ^~~~~~~~~~
+t.sfc:7:76: error: incompatible types when assigning to 'n' of type 'int' from type 'bool' [type-mismatch]
+     if (Count() > 1) { Stop(); } else if (Distance()) { Go(); } else { n = true; }
+                                                                            ^~~~
+t.sfc:8:17: error: the condition of 'if' must be bool, not 'duration' [type-mismatch]
+     entry { if (elapsed(A)) { Nope(); } }
+                 ^~~~~~~~~~
+t.sfc:8:17: note: a duration can only be compared with another duration, as in 'elapsed(P) >= 500ms'
+t.sfc:8:31: error: unknown function 'Nope' [unknown-name]
+     entry { if (elapsed(A)) { Nope(); } }
+                               ^~~~
+)--");
+}
+
+TEST_CASE("validate: if statements in the model", "[validate]") {
+  Run r({{"t.fsm", R"--(import "bot.iface";
+fsm M {
+  period 10ms;
+  var int n = 0;
+  initial state A {
+    if (Black() && elapsed(A) >= 20ms) { Go(); n += 1; } else if (White()) { Stop(); } else { }
+    if (n > 2) { Lamp(true); }
+  }
+}
+)--"}, {"bot.iface", kBot}});
+  CHECK(r.text().empty());
+  REQUIRE(r.model.charts.size() == 1);
+  const auto &action = r.model.charts[0].places[0].action;
+  REQUIRE(action.size() == 2);
+  const model::Stmt &first = action[0];
+  CHECK(first.kind == model::Stmt::Kind::If);
+  CHECK(first.value.type == model::Type::Bool);
+  CHECK(first.then_block.size() == 2);
+  CHECK(first.else_if);
+  REQUIRE(first.else_block.size() == 1);
+  const model::Stmt &second = first.else_block[0];
+  CHECK(second.kind == model::Stmt::Kind::If);
+  CHECK(second.then_block.size() == 1);
+  CHECK(second.else_block.empty());  // `else { }`
+  CHECK_FALSE(second.else_if);
+  CHECK(action[1].else_block.empty());
+  CHECK(r.model.charts[0].places[0].timed);  // elapsed() in an if marks the timer
+}

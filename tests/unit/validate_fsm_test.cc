@@ -203,16 +203,50 @@ fsm M {
   A -> B;
 }
 )--"}, {"bot.iface", kBot}});
-  CHECK(r.text() == R"--(t.fsm:3:21: error: 'entry' blocks belong to sfc places; an fsm state has only its action [wrong-keyword]
-   initial state A { entry { Go(); } Go(); exit { Stop(); } }
-                     ^~~~~~~~~~~~~~~
-t.fsm:3:43: error: 'exit' blocks belong to sfc places; an fsm state has only its action [wrong-keyword]
-   initial state A { entry { Go(); } Go(); exit { Stop(); } }
-                                           ^~~~~~~~~~~~~~~~
-t.fsm:4:3: error: 'place' in an fsm: an fsm has states (write 'state B') [wrong-keyword]
+  CHECK(r.text() == R"--(t.fsm:4:3: error: 'place' in an fsm: an fsm has states (write 'state B') [wrong-keyword]
    place B;
    ^~~~~~~~
 )--");
+}
+
+TEST_CASE("validate: fsm states may have entry and exit blocks, terminal states still no body", "[validate]") {
+  Run r({{"t.fsm", R"--(import "bot.iface";
+fsm M {
+  initial state A { entry { Go(); } Go(); exit { Stop(); } }
+  state B { exit { Stop(); } }
+  success state Done { entry { Go(); } }
+  failure state Lost { exit { Stop(); } }
+  A -> B;
+  B -> Done when Black();
+  B -> Lost when White();
+}
+)--"}, {"bot.iface", kBot}});
+  CHECK(r.text() == R"--(t.fsm:5:3: error: terminal state 'Done' cannot have a body [terminal-state]
+   success state Done { entry { Go(); } }
+   ^~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~
+t.fsm:6:3: error: terminal state 'Lost' cannot have a body [terminal-state]
+   failure state Lost { exit { Stop(); } }
+   ^~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~
+)--");
+  Run ok({{"t.fsm", R"--(import "bot.iface";
+fsm M {
+  initial state A { entry { Go(); } Go(); exit { Stop(); } }
+  state B { exit { Stop(); } }
+  success state Done;
+  A -> B;
+  B -> Done when Black();
+}
+)--"}, {"bot.iface", kBot}});
+  CHECK(ok.text().empty());
+  REQUIRE(ok.model.charts.size() == 1);
+  const auto &a = ok.model.charts[0].places[0];
+  REQUIRE(a.entry);
+  REQUIRE(a.exit);
+  CHECK(a.entry->size() == 1);
+  CHECK(a.exit->size() == 1);
+  CHECK(a.action.size() == 1);
+  CHECK(!ok.model.charts[0].places[1].entry);
+  CHECK(ok.model.charts[0].places[1].exit);
 }
 
 TEST_CASE("validate: states no transition reaches and the transitions leaving them", "[validate]") {
@@ -278,3 +312,204 @@ fsm M {
   CHECK(c.transitions[3].condition->args[1].ticks == 500);
 }
 
+
+TEST_CASE("validate: team machines: the declaration", "[validate][team]") {
+  Run r({{"t.fsm", R"--(import "bot.iface";
+fsm M {
+  team 1;
+  initial state A;
+}
+fsm N {
+  team 3;
+  team 4;
+  initial state A;
+}
+sfc S {
+  team 2;
+  initial place A;
+}
+fsm Big {
+  team 5000;
+  initial state A;
+}
+)--"}, {"bot.iface", kBot}});
+  CHECK(r.text() == R"--(t.fsm:3:3: error: a team has at least 2 agents, not 1 [team]
+   team 1;
+   ^~~~~~~
+t.fsm:3:3: note: an fsm without 'team' is run by one agent
+t.fsm:8:3: error: second 'team' declaration in fsm 'N' [team]
+   team 4;
+   ^~~~~~~
+t.fsm:7:3: note: the first one is here
+   team 3;
+   ^~~~~~~
+t.fsm:12:3: error: 'team' in sfc 'S': only an fsm can be a team machine [team]
+   team 2;
+   ^~~~~~~
+t.fsm:16:3: error: a team has at most 1024 agents [team]
+   team 5000;
+   ^~~~~~~~~~
+)--");
+  REQUIRE(r.model.charts.size() == 4);
+  CHECK(r.model.charts[0].team == 0);
+  CHECK(r.model.charts[1].team == 3);
+  CHECK(r.model.charts[2].team == 0);
+}
+
+TEST_CASE("validate: team machines: team(S) and agent()", "[validate][team]") {
+  Run r({{"t.fsm", R"--(import "bot.iface";
+fsm Fetch {
+  team 4;
+  var int me = 0;
+  initial state Go { me = agent(); if (team(Grab) == 0) { Stop(); } }
+  state Grab;
+  success state Got;
+  Go -> Grab when Black() && team(Grab) == 0 && agent() >= 0;
+  Grab -> Got when team(Got) + team(Go) > 1;
+}
+)--"}, {"bot.iface", kBot}});
+  CHECK(r.text().empty());
+  REQUIRE(r.model.charts.size() == 1);
+  const model::Chart &c = r.model.charts[0];
+  CHECK(c.team == 4);
+  const model::Expr &cond = *c.transitions[0].condition;  // (Black() && team(Grab) == 0) && agent() >= 0
+  const model::Expr &team = cond.args.at(0).args.at(1).args.at(0);
+  CHECK(team.kind == model::Expr::Kind::TeamCount);
+  CHECK(team.type == model::Type::Int);
+  CHECK(team.index == 1);
+  const model::Expr &agent = cond.args.at(1).args.at(0);
+  CHECK(agent.kind == model::Expr::Kind::Agent);
+  CHECK(agent.type == model::Type::Int);
+}
+
+TEST_CASE("validate: team machines: team and agent where they cannot be", "[validate][team]") {
+  Run r({{"t.fsm", R"--(import "bot.iface";
+const int K = agent();
+fsm Solo {
+  var int n = 0;
+  initial state A { n = agent(); }
+  state B;
+  A -> B when team(B) > 0;
+}
+sfc S {
+  initial place P { if (team(P) > 1) { Go(); } }
+}
+fsm T {
+  team 2;
+  var int n = agent();
+  initial state Go { agent(); n = agent(1); }
+  state Grab;
+  Go -> Grab when team(Grap) == 0 || team(n) > 0;
+}
+)--"}, {"bot.iface", kBot}});
+  CHECK(r.text() == R"--(t.fsm:2:15: error: 'agent()' can only be used in a team machine [team]
+ const int K = agent();
+               ^~~~~~~
+t.fsm:5:25: error: 'agent()' can only be used in a team machine [team]
+   initial state A { n = agent(); }
+                         ^~~~~~~
+t.fsm:3:5: note: make fsm 'Solo' one by declaring its team size in it, e.g. 'team 2;'
+ fsm Solo {
+     ^~~~
+t.fsm:7:15: error: 'team()' can only be used in a team machine [team]
+   A -> B when team(B) > 0;
+               ^~~~~~~
+t.fsm:3:5: note: make fsm 'Solo' one by declaring its team size in it, e.g. 'team 2;'
+ fsm Solo {
+     ^~~~
+t.fsm:10:25: error: 'team()' can only be used in a team machine [team]
+   initial place P { if (team(P) > 1) { Go(); } }
+                         ^~~~~~~
+t.fsm:14:15: error: a constant expression cannot read 'agent()' [not-constant]
+   var int n = agent();
+               ^~~~~~~
+t.fsm:15:22: error: 'agent()' as a statement has no effect [type-mismatch]
+   initial state Go { agent(); n = agent(1); }
+                      ^~~~~~~
+t.fsm:15:35: error: 'agent' takes no arguments (have 1) [argument-count]
+   initial state Go { agent(); n = agent(1); }
+                                   ^~~~~~~~
+t.fsm:17:24: error: unknown state 'Grap' [unknown-name]
+   Go -> Grab when team(Grap) == 0 || team(n) > 0;
+                        ^~~~
+t.fsm:16:9: note: did you mean 'Grab'?
+   state Grab;
+         ^~~~
+t.fsm:17:43: error: 'n' is a variable, not a state [type-mismatch]
+   Go -> Grab when team(Grap) == 0 || team(n) > 0;
+                                           ^
+t.fsm:14:11: note: 'n' declared here
+   var int n = agent();
+           ^
+)--");
+}
+
+TEST_CASE("validate: team machines: built-in and engine names", "[validate][team]") {
+  Run r({{"t.fsm", R"--(interface Bot { int agent(); bool elapsed(); }
+fsm T {
+  team 2;
+  initial state report;
+  state set_agent;
+  state TEAM_SIZE;
+  report -> set_agent;
+  set_agent -> TEAM_SIZE;
+}
+fsm Solo {
+  initial state report;
+}
+)--"}});
+  CHECK(r.text() == R"--(t.fsm:1:21: error: 'agent' is built into the chart language and cannot name a function [reserved-name]
+ interface Bot { int agent(); bool elapsed(); }
+                     ^~~~~
+t.fsm:1:35: error: 'elapsed' is built into the chart language and cannot name a function [reserved-name]
+ interface Bot { int agent(); bool elapsed(); }
+                                   ^~~~~~~
+t.fsm:4:17: error: state 'report' would generate 'T_report', which the engine of a team machine already defines [reserved-name]
+   initial state report;
+                 ^~~~~~
+t.fsm:5:9: error: state 'set_agent' would generate 'T_set_agent', which the engine of a team machine already defines [reserved-name]
+   state set_agent;
+         ^~~~~~~~~
+t.fsm:6:9: error: state 'TEAM_SIZE' would generate 'T_TEAM_SIZE', which the engine of a team machine already defines [reserved-name]
+   state TEAM_SIZE;
+         ^~~~~~~~~
+)--");
+}
+
+TEST_CASE("validate: a team machine cannot run as a sub-chart", "[validate][team]") {
+  // `runs` belongs to the sub-chart front end; the check reads the syntax tree's Place::runs,
+  // which is set here by hand so that the check is tested on its own.
+  test::FrontEnd fe({{"t.fsm", R"--(fsm Fetch {
+  team 3;
+  initial state Go;
+}
+fsm Solo {
+  initial state Go;
+}
+sfc Patrol {
+  initial place Search;
+  place Other;
+  place Third;
+}
+)--"}});
+  REQUIRE(fe.text().empty());
+  ast::Chart &patrol = fe.loaded.program.files[0]->charts[2];
+  auto runs = [&](std::size_t place, const char *chart) {
+    ast::Place &p = patrol.places[place];
+    p.runs = ast::Name{chart, p.name.range};  // located at the place's name
+  };
+  runs(0, "Fetch");
+  runs(1, "Solo");
+  runs(2, "Nowhere");  // unknown: the sub-chart checks report it, not this one
+  model::Model m = validate(fe.loaded.program, fe.sources, fe.diag);
+  std::string text = fe.text();
+  CHECK(text.find(R"--(t.fsm:9:17: error: fsm 'Fetch' is a team machine and cannot run as a sub-chart [team]
+   initial place Search;
+                 ^~~~~~
+t.fsm:2:3: note: a team machine is always the compiled root; its agents run it side by side
+   team 3;
+   ^~~~~~~
+)--") != std::string::npos);
+  CHECK(text.find("'Solo'") == std::string::npos);
+  CHECK(text.find("cannot run as a sub-chart") == text.rfind("cannot run as a sub-chart"));  // once: Fetch
+}

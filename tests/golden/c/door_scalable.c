@@ -130,11 +130,8 @@ void Door_run(Door *m)
         default:
             break;
         }
-    }
-
 #ifdef Door_HOOKS
-    /* Observation hooks: the place left and the place entered; the transitions leaving it */
-    if (m->current != from) {
+        /* Observation hooks: the place left and the place entered; the transitions leaving it */
         Door_activated(m, (int)from, false);
         Door_activated(m, (int)m->current, true);
         switch (m->current) {
@@ -146,20 +143,20 @@ void Door_run(Door *m)
         default:
             break;
         }
-    }
 #endif
+    }
 
     /* Perform the action of the active place */
     switch (m->current) {
     case Door_Opening:
 #line 18 "door_scalable.sfc"
         Motor(1);
-#line 158 "door_scalable.c"
+#line 155 "door_scalable.c"
         break;
     case Door_Closing:
 #line 20 "door_scalable.sfc"
         Motor(-1);
-#line 163 "door_scalable.c"
+#line 160 "door_scalable.c"
         break;
     default:
         break;
