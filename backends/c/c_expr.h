@@ -53,11 +53,14 @@ std::string c_expr(const Context &c, const model::Expr &e, Temporaries &temps);
 
 /// `e` as the operand of `&&`: parenthesised unless it already is a bracket or a primary.
 /// `at_start`: `e` is a transition's condition (active() and the like read the start of the tick).
-std::string c_condition(const Context &c, const model::Expr &e, Temporaries &temps, bool at_start = false);
+/// `from`: the state an fsm's (or a sequential sfc's) transition leaves, -1 otherwise.
+std::string c_condition(const Context &c, const model::Expr &e, Temporaries &temps, bool at_start = false,
+                        int from = -1);
 
 /// `e` as the whole test of an `if`: as c_condition(), except that an equality comparison is
 /// not bracketed (clang -Wparentheses-equality takes `if ((a == b))` for a mistyped `=`).
-std::string c_test(const Context &c, const model::Expr &e, Temporaries &temps, bool at_start = false);
+std::string c_test(const Context &c, const model::Expr &e, Temporaries &temps, bool at_start = false,
+                   int from = -1);
 
 /// A postcondition as the statement that asserts it: `assert(e);`, or where keeping the calls
 /// in order needs temporaries, `gfec_t0 = S0(); gfec_t1 = gfec_t0 < S1(); assert(gfec_t1);`

@@ -50,6 +50,19 @@ public:
   std::optional<GExpr> activity() {
     if (c_.places.empty()) return std::nullopt;
     const GPlace *p = &pick(c_.places);
+    if (!o_.dead_code && (c_.fsm || from_ >= 0)) {
+      // Where the engine knows the state (an fsm's transition, a transition of what may be a
+      // sequential sfc, an fsm's blocks), active(S) of this chart is a constant: dead code.
+      // Read into the sub-chart of the state the transition leaves instead.
+      if (from_ < 0) return std::nullopt;
+      p = &c_.places[static_cast<std::size_t>(from_)];
+      if (p->runs < 0) return std::nullopt;
+      if (runs_chart(*p).fsm && chance(0.35))
+        return GExpr{chance(0.6) ? GExpr::Kind::Succeeded : GExpr::Kind::Failed, Type::Bool, p->name, {}};
+      const GChart &sub = runs_chart(*p);
+      const GPlace &q = sub.places[static_cast<std::size_t>(uniform(0, static_cast<int>(sub.places.size()) - 1))];
+      return GExpr{GExpr::Kind::Active, Type::Bool, p->name + "." + q.name, {}};
+    }
     if (p->runs >= 0 && runs_chart(*p).fsm && chance(0.35))
       return GExpr{chance(0.6) ? GExpr::Kind::Succeeded : GExpr::Kind::Failed, Type::Bool, p->name, {}};
     std::string path = p->name;
@@ -370,7 +383,9 @@ public:
       if (chance(0.25)) t.name = fresh("t", i, kTrickyPlaces);
       t.inputs = some_places(n);
       t.outputs = some_places(n);
+      from_ = t.inputs.size() == 1 ? t.inputs.front() : -1;
       if (chance(0.8)) t.condition = condition();
+      from_ = -1;
       c_.transitions.push_back(t);
     }
   }
@@ -429,7 +444,9 @@ public:
       if (chance(0.15)) t.name = fresh("t", i, {});
       t.inputs = {a};
       t.outputs = {b};
+      from_ = a;
       if (chance(0.85) || !o_.dead_code) t.condition = condition();
+      from_ = -1;
       c_.transitions.push_back(t);
       ++i;
     }
@@ -443,6 +460,9 @@ private:
   bool calls_allowed_ = true;
   const std::vector<GChart> *pool_ = nullptr;
   int first_runnable_ = 0;
+
+public:
+  int from_ = -1;  ///< while a transition's condition is made: its one input, else -1
 };
 
 int precedence(const std::string &op) {
