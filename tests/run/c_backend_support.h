@@ -9,6 +9,7 @@
 #include "file_system.h"
 #include "loader.h"
 #include "model.h"
+#include "roots.h"
 #include "validate.h"
 
 #include <catch2/catch.hpp>
@@ -312,7 +313,7 @@ struct Compiled {
   model::Model model;
   std::vector<OutputFile> files;
   std::string errors;  ///< rendered diagnostics when the chart did not compile
-  int chart = -1;      ///< the chart compiled: the first of the main file
+  int chart = -1;      ///< the chart compiled: the default root of the main file
 
   const model::Chart &the_chart() const { return model.charts.at(static_cast<std::size_t>(chart)); }
 };
@@ -333,6 +334,8 @@ inline std::unique_ptr<Compiled> compile_chart(const std::map<std::string, std::
   o.source_name = main;
   o.line_directives = line_directives;
   o.engine = engine;
+  // The chart gfec compiles by default: the one no other chart of the file runs (sub-charts).
+  o.chart = default_root(c->model);
   for (std::size_t i = 0; i < c->model.charts.size(); ++i)
     if (c->model.charts[i].in_main_file && o.chart < 0) o.chart = static_cast<int>(i);
   c->chart = o.chart;
