@@ -36,6 +36,8 @@ public:
       int first_runnable = 0)
       : rng_(rng), c_(c), o_(o), pool_(pool), first_runnable_(first_runnable) {}
 
+  void use_pool(const std::vector<GChart> *pool) { pool_ = pool; }
+
   /// Places (not terminal states) that run a chart of the pool, now and then.
   void assign_runs() {
     if (!pool_ || first_runnable_ >= static_cast<int>(pool_->size())) return;
@@ -548,9 +550,9 @@ GChart random_chart(std::mt19937_64 &rng, int id, const GenOptions &options) {
       if (s.fsm) gs.fsm();
       else gs.sfc();
     }
-    Gen root(rng, c, options, &c.pool, 0);
-    if (c.fsm) root.fsm();
-    else root.sfc();
+    g.use_pool(&c.pool);  // the same generator: its names already taken (vars) stay taken
+    if (c.fsm) g.fsm();
+    else g.sfc();
     return c;
   }
   if (c.fsm) g.fsm();
