@@ -42,7 +42,10 @@ for section in "${sections[@]}"; do
     engine)
       echo "== (b) engine: instructions and nanoseconds per tick"
       if ((quick)); then export BENCH_TICKS=200000; fi
-      "$root/tests/bench/bench_engine.sh" "$gfec" "$gen" ;;
+      "$root/tests/bench/bench_engine.sh" "$gfec" "$gen"
+      echo
+      echo "== (b') engine: what a sub-chart instance costs per tick"
+      "$root/tests/bench/bench_subchart.sh" "$gfec" ;;
     size)
       echo "== (c) engine size"
       "$root/tests/bench/bench_size.sh" "$gfec" "$gen" ;;

@@ -249,7 +249,10 @@ class Renderer {
 public:
   /// `at_start`: the expression is a transition's condition, where active()/succeeded()/
   /// failed() read this chart's activation at the start of the tick (docs/language.md, "Sub-charts").
-  Renderer(const Context &c, Temporaries &temps, bool at_start = false) : c_(c), temps_(temps), at_start_(at_start) {}
+  /// `from`: in an fsm or a sequential sfc, the one state the condition can be tried in (or -1),
+  /// which decides active(S) of this chart at the start of the tick.
+  Renderer(const Context &c, Temporaries &temps, bool at_start = false, int from = -1)
+      : c_(c), temps_(temps), at_start_(at_start), from_(from) {}
 
   Rendered render(const Expr &e) {
     switch (e.kind) {
@@ -337,7 +340,13 @@ private:
     std::string obj, text;
     for (std::size_t k = 0; k < path.size(); ++k) {
       if (!c) return {"false"};  // a path the validator let through into nothing: never active
-      text += (k ? " && " : "") + c->active_test(obj, path[k], k == 0 && at_start_);
+      if (k == 0 && at_start_ && from_ >= 0 && (c_.fsm || c_.sequential())) {
+        // The transition is tried only in state `from`: the first level is known (and testing
+        // the state twice would be an overlapping comparison to clang).
+        if (path[0] != from_) return {fmt::format("false /* {}: not in {} */", what(e), c_.place(path[0]).name)};
+      } else {
+        text += (text.empty() ? "" : " && ") + c->active_test(obj, path[k], k == 0 && at_start_);
+      }
       if (k + 1 < path.size() || e.kind != Expr::Kind::Active) {
         obj = c->member(obj, c->sub_field.at(static_cast<std::size_t>(path[k])));
         c = c->sub_of(path[k]);
@@ -345,9 +354,24 @@ private:
     }
     if (e.kind != Expr::Kind::Active) {
       if (!c || !c->fsm) return {"false"};
-      text += fmt::format(" && {} == {}", c->member(obj, c->status), e.kind == Expr::Kind::Succeeded ? "1" : "-1");
+      text += fmt::format("{}{} == {}", text.empty() ? "" : " && ", c->member(obj, c->status),
+                          e.kind == Expr::Kind::Succeeded ? "1" : "-1");
     }
+    if (text.empty()) return {fmt::format("true /* {}: in {} */", what(e), c_.place(path[0]).name)};
     return {bracket(text)};
+  }
+
+  /// `active(P.Q)`, as the chart says it, for comments.
+  std::string what(const Expr &e) const {
+    if (e.kind != Expr::Kind::Active) return fmt::format("{}({})", e.kind == Expr::Kind::Succeeded ? "succeeded" : "failed", c_.place(e.index).name);
+    std::string s;
+    const Context *c = &c_;
+    for (int p : e.path) {
+      if (!c) break;
+      s += (s.empty() ? "" : ".") + c->place(p).name;
+      c = c->sub_of(p);
+    }
+    return "active(" + s + ")";
   }
 
   /// A constant is written as its folded value, named in a comment: no C name of the chart's can
@@ -455,6 +479,7 @@ private:
   const Context &c_;
   Temporaries &temps_;
   bool at_start_ = false;
+  int from_ = -1;
 };
 
 bool blank(std::string_view s) { return s.find_first_not_of(" \t\r\f\v") == std::string_view::npos; }
@@ -503,21 +528,21 @@ std::string c_expr(const Context &c, const Expr &e, Temporaries &temps) {
   return closed(Renderer(c, temps).render(e)).text;
 }
 
-std::string c_condition(const Context &c, const Expr &e, Temporaries &temps, bool at_start) {
-  Rendered r = Renderer(c, temps, at_start).render(e);
+std::string c_condition(const Context &c, const Expr &e, Temporaries &temps, bool at_start, int from) {
+  Rendered r = Renderer(c, temps, at_start, from).render(e);
   if (!r.before.empty()) return closed(std::move(r)).text;  // a bracketed comma expression
   return e.kind == Expr::Kind::Paren || is_activity(e) ? r.text : bracket(r.text);
 }
 
-std::string c_test(const Context &c, const Expr &e, Temporaries &temps, bool at_start) {
+std::string c_test(const Context &c, const Expr &e, Temporaries &temps, bool at_start, int from) {
   const Expr &u = unbracketed(e);
   if (is_activity(u)) {  // the whole test: without the brackets (clang -Wparentheses-equality)
-    std::string text = Renderer(c, temps, at_start).render(u).text;
+    std::string text = Renderer(c, temps, at_start, from).render(u).text;
     return text.size() > 2 && text.front() == '(' ? text.substr(1, text.size() - 2) : text;
   }
   if (u.kind != Expr::Kind::Binary || u.binary_op != BinaryOp::Eq || settled(u))
-    return c_condition(c, e, temps, at_start);
-  return closed(Renderer(c, temps, at_start).render(u)).text;
+    return c_condition(c, e, temps, at_start, from);
+  return closed(Renderer(c, temps, at_start, from).render(u)).text;
 }
 
 std::string c_if_test(const Context &c, const Expr &e, Temporaries &temps) {

@@ -59,11 +59,14 @@ std::string c_expr(const Context &c, const model::Expr &e, Temporaries &temps);
 
 /// `e` as the operand of `&&`: parenthesised unless it already is a bracket or a primary.
 /// `at_start`: `e` is a transition's condition (active() and the like read the start of the tick).
-std::string c_condition(const Context &c, const model::Expr &e, Temporaries &temps, bool at_start = false);
+/// `from`: the state an fsm's (or a sequential sfc's) transition leaves, -1 otherwise.
+std::string c_condition(const Context &c, const model::Expr &e, Temporaries &temps, bool at_start = false,
+                        int from = -1);
 
 /// `e` as the whole test of an `if`: as c_condition(), except that an equality comparison is
 /// not bracketed (clang -Wparentheses-equality takes `if ((a == b))` for a mistyped `=`).
-std::string c_test(const Context &c, const model::Expr &e, Temporaries &temps, bool at_start = false);
+std::string c_test(const Context &c, const model::Expr &e, Temporaries &temps, bool at_start = false,
+                   int from = -1);
 
 /// `e` as the condition of an `if` statement, written inside its brackets: `X()`, `n > 2`, or
 /// where calls need temporaries, the bracketed comma expression `(gfec_t0 = N(), gfec_t0 + M() > 2)`.

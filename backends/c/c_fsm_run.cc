@@ -47,7 +47,7 @@ private:
   /// (the transitions are one if/else-if chain), declared at its top.
   void declarations() {
     for (const auto &t : c_.chart.transitions)
-      conditions_.push_back(t.condition ? c_condition(c_, *t.condition, temps_, true) : "");
+      conditions_.push_back(t.condition ? c_condition(c_, *t.condition, temps_, true, t.inputs.at(0)) : "");
     if (!temps_.pending()) return;
     section("");
     temps_.declare(w_);

@@ -110,10 +110,14 @@ protected:
     for (std::size_t i : transitions) {
       const auto &t = c_.chart.transitions[i];
       if (!t.condition) text.emplace_back();
-      else text.push_back(alone ? c_test(c_, *t.condition, temps_, true) : c_condition(c_, *t.condition, temps_, true));
+      else text.push_back(alone ? c_test(c_, *t.condition, temps_, true, from(t))
+                         : c_condition(c_, *t.condition, temps_, true, from(t)));
     }
     return text;
   }
+
+  /// The place a transition of the sequential form is tried in; -1 in the sparse form.
+  int from(const model::Transition &t) const { return c_.sequential() ? t.inputs.front() : -1; }
 
   void switch_end() {
     w_.line("default:");
@@ -351,7 +355,11 @@ private:
         w_.line("{0}[0] = 0; {1}[0] = 0; /* only the entries written are read */", c_.lost, c_.gained);
     }
     if (has_transitions() || any_actions()) w_.line("uint32_t {}, {}; /* a word of a set, its bits */", c_.word, c_.bits);
-    if (has_transitions()) w_.line("uint32_t {}, {};", c_.index, i);
+    // An instance has no hooks: its place number is local to the commit loop (cppcheck).
+    if (has_transitions()) {
+      if (c_.hooks()) w_.line("uint32_t {}, {};", c_.index, i);
+      else w_.line("uint32_t {};", i);
+    }
     // The start of the tick: for conditions that read activation (docs/language.md, "Sub-charts"), and for hooks.
     const bool keep = c_.reads_start;
     if (keep || c_.hooks()) {
@@ -476,7 +484,7 @@ private:
     const std::string &i = c_.i, &p = c_.index;
     w_.line("for ({0} = 0; {0} < {1}; ++{0}) {{", i, c_.add_n);
     w_.indent();
-    w_.line("{} = {}[{}];", p, c_.add, i);
+    w_.line("{}{} = {}[{}];", c_.hooks() ? "" : "uint32_t ", p, c_.add, i);
     std::string av = fmt::format("{}[{}]", c_.field(c_.av), p);
     if (l().saturate) w_.line("if ({} == UINT32_MAX) {{ continue; }} /* saturated: see docs/c-engine.md */", av);
     w_.line("if ({}++ == 0u) {{", av);

@@ -124,9 +124,9 @@ void init(CodeWriter &w, const Context &c) {
 /// An instance's stop (docs/language.md, "Sub-charts"): for each active place in declaration order, the stop of
 /// the place's own instance, then the place's exit block; innermost first.
 void stop(CodeWriter &w, const Context &c) {
-  w.line("/* Stops the instance of {} run by {}: each active {} in declaration order stops its own", c.chart.name,
-         c.owner, c.fsm ? "state" : "place");
-  w.line("   instance, then runs its exit block (innermost first). Leaves the state as it is. */");
+  w.line("/* Stops the instance of {} run by {}:", c.chart.name, c.owner);
+  w.line("   each active {} in declaration order stops its own instance, then runs its exit block", c.fsm ? "state" : "place");
+  w.line("   (innermost first). Leaves the state as it is. */");
   w.line("{}void {}({} *{})", c.linkage, c.stop_fn, c.struct_type, c.self);
   w.line("{");
   w.indent();

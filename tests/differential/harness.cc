@@ -129,14 +129,20 @@ Outcome Harness::prepare(Case &c) const {
   files.add(chart_file, c.text);
   p->loaded = load_program(chart_file, {}, files, p->sources, p->diag);
   if (!p->diag.has_errors()) p->model = validate(p->loaded.program, p->sources, p->diag);
-  if (p->diag.has_errors() || p->model.charts.size() != 1) return {Verdict::Invalid, printed(p->diag, p->sources), ""};
+  if (p->diag.has_errors()) return {Verdict::Invalid, printed(p->diag, p->sources), ""};
+  // The compiled chart: the root (a hierarchical program also declares its sub-charts).
+  int root = -1;
+  for (std::size_t i = 0; i < p->model.charts.size(); ++i)
+    if (p->model.charts[i].name == c.chart.name) root = static_cast<int>(i);
+  if (root < 0 || p->model.charts.size() != 1 + c.chart.pool.size())
+    return {Verdict::Invalid, "the model does not hold the generated charts\n" + printed(p->diag, p->sources), ""};
 
   Diagnostics trace_diag;
   FileId csv = p->sources.add(fmt::format("r{}.csv", c.id), c.csv);
   interp::InputTrace trace(p->model, p->sources, csv, trace_diag);
   if (trace_diag.has_errors()) return {Verdict::Invalid, printed(trace_diag, p->sources), ""};
   Diagnostics run_diag;
-  interp::RunResult r = interp::run_chart(p->model, 0, trace, static_cast<std::uint64_t>(c.trace.ticks), {}, run_diag);
+  interp::RunResult r = interp::run_chart(p->model, root, trace, static_cast<std::uint64_t>(c.trace.ticks), {}, run_diag);
   if (!r.completed) return {Verdict::Undefined, printed(run_diag, p->sources), ""};
   p->expected_plain = r.log.render({false, false, false});
   p->expected_hooks = r.log.render({true, false, false});
@@ -144,7 +150,7 @@ Outcome Harness::prepare(Case &c) const {
   EmitOptions o;
   o.output_path = engine_name(c);
   o.source_name = chart_file;
-  o.chart = 0;
+  o.chart = root;
   // Random charts are small, so `auto` would always pick the readable form: every other case
   // takes the scalable one, so both forms answer to the interpreter (an fsm has one form).
   o.engine = scalable_form(c) ? EngineForm::Scalable : EngineForm::Readable;
@@ -153,8 +159,9 @@ Outcome Harness::prepare(Case &c) const {
   } catch (const std::exception &e) {
     return {Verdict::Crash, fmt::format("the C back end threw: {}", e.what()), ""};
   }
-  for (const auto &pl : p->model.charts[0].places) p->places.push_back(pl.name);
-  for (const auto &t : p->model.charts[0].transitions) p->transitions.push_back(t.name);
+  const model::Chart &compiled = p->model.charts[static_cast<std::size_t>(root)];
+  for (const auto &pl : compiled.places) p->places.push_back(pl.name);
+  for (const auto &t : compiled.transitions) p->transitions.push_back(t.name);
   c.prepared = p;
   return {};
 }

@@ -63,7 +63,7 @@ void report(const Failure &f, int steps) {
 
 int main(int argc, char **argv) {
   std::uint64_t seed = 1;
-  int cases = 300, batch = 60, shrink_max = 3, only = -1;
+  int cases = 300, batch = 60, shrink_max = 3, only = -1, subcharts = 0;
   std::string work, compilers, avoid;
   bool verbose = false, keep = false, no_lint = false;
   CLI::App app{"gfec_differential - random charts: the reference interpreter against the generated C engines"};
@@ -74,6 +74,7 @@ int main(int argc, char **argv) {
   app.add_option("--work", work, "Scratch folder (default: a fresh one under the temp folder)");
   app.add_option("--shrink", shrink_max, "Failures to shrink and print (the rest are only counted)");
   app.add_option("--avoid", avoid, "Do not generate what a known bug breaks: octal, float-into-int, call-order, dead-code (comma-separated)");
+  app.add_option("--subcharts", subcharts, "Hierarchical programs: up to N sub-charts each (sfc and fsm, nested, the same one run by several places)");
   app.add_option("--case", only, "Run only this case (of the same seed), e.g. to shrink it again");
   app.add_flag("--no-cppcheck", no_lint, "Do not run cppcheck on the engines");
   app.add_flag("--keep", keep, "Keep the scratch folder");
@@ -104,6 +105,7 @@ int main(int argc, char **argv) {
   std::vector<Failure> failures;
   int undefined = 0, invalid = 0, fsm = 0, generated = 0, scalable = 0;
   GenOptions base;
+  base.subcharts = subcharts;
   for (std::istringstream in(avoid); std::getline(in, avoid, ',');) {
     if (avoid == "octal") base.octal = false;
     else if (avoid == "float-into-int") base.float_into_int = false;

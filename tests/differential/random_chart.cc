@@ -32,7 +32,49 @@ const std::vector<std::string> kFloatInputs = {"0", "0.5", "0.25", "-1.5", "0.1"
 
 class Gen {
 public:
-  Gen(std::mt19937_64 &rng, GChart &c, const GenOptions &o) : rng_(rng), c_(c), o_(o) {}
+  Gen(std::mt19937_64 &rng, GChart &c, const GenOptions &o, const std::vector<GChart> *pool = nullptr,
+      int first_runnable = 0)
+      : rng_(rng), c_(c), o_(o), pool_(pool), first_runnable_(first_runnable) {}
+
+  void use_pool(const std::vector<GChart> *pool) { pool_ = pool; }
+
+  /// Places (not terminal states) that run a chart of the pool, now and then.
+  void assign_runs() {
+    if (!pool_ || first_runnable_ >= static_cast<int>(pool_->size())) return;
+    for (auto &p : c_.places)
+      if (p.terminal == model::Terminal::None && chance(0.45))
+        p.runs = uniform(first_runnable_, static_cast<int>(pool_->size()) - 1);
+  }
+
+  const GChart &runs_chart(const GPlace &p) const { return pool_->at(static_cast<std::size_t>(p.runs)); }
+
+  /// active(P), active(P.Q.R), succeeded(P), failed(P), if the chart has places.
+  std::optional<GExpr> activity() {
+    if (c_.places.empty()) return std::nullopt;
+    const GPlace *p = &pick(c_.places);
+    if (!o_.dead_code && (c_.fsm || from_ >= 0)) {
+      // Where the engine knows the state (an fsm's transition, a transition of what may be a
+      // sequential sfc, an fsm's blocks), active(S) of this chart is a constant: dead code.
+      // Read into the sub-chart of the state the transition leaves instead.
+      if (from_ < 0) return std::nullopt;
+      p = &c_.places[static_cast<std::size_t>(from_)];
+      if (p->runs < 0) return std::nullopt;
+      if (runs_chart(*p).fsm && chance(0.35))
+        return GExpr{chance(0.6) ? GExpr::Kind::Succeeded : GExpr::Kind::Failed, Type::Bool, p->name, {}};
+      const GChart &sub = runs_chart(*p);
+      const GPlace &q = sub.places[static_cast<std::size_t>(uniform(0, static_cast<int>(sub.places.size()) - 1))];
+      return GExpr{GExpr::Kind::Active, Type::Bool, p->name + "." + q.name, {}};
+    }
+    if (p->runs >= 0 && runs_chart(*p).fsm && chance(0.35))
+      return GExpr{chance(0.6) ? GExpr::Kind::Succeeded : GExpr::Kind::Failed, Type::Bool, p->name, {}};
+    std::string path = p->name;
+    while (p->runs >= 0 && chance(0.6)) {
+      const GChart &sub = runs_chart(*p);
+      p = &sub.places[static_cast<std::size_t>(uniform(0, static_cast<int>(sub.places.size()) - 1))];
+      path += "." + p->name;
+    }
+    return GExpr{GExpr::Kind::Active, Type::Bool, path, {}};
+  }
 
   int uniform(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
   bool chance(double p) { return std::bernoulli_distribution(p)(rng_); }
@@ -203,6 +245,8 @@ public:
     if (depth <= 0 || chance(0.3)) {
       int r = uniform(0, 9);
       if (r < 1) return literal(Type::Bool);
+      if (pool_ && chance(0.3))
+        if (auto a = activity()) return *a;
       if (r < 6)
         if (auto leaf = named_leaf(Type::Bool, depth - 1)) return *leaf;
       return comparison(0);
@@ -244,7 +288,9 @@ public:
 
   /// Reads something that can change: a var, a call, a timer.
   static bool varies(const GExpr &e) {
-    if (e.kind == GExpr::Kind::Var || e.kind == GExpr::Kind::Call || e.kind == GExpr::Kind::Elapsed) return true;
+    if (e.kind == GExpr::Kind::Var || e.kind == GExpr::Kind::Call || e.kind == GExpr::Kind::Elapsed ||
+        e.kind == GExpr::Kind::Active || e.kind == GExpr::Kind::Succeeded || e.kind == GExpr::Kind::Failed)
+      return true;
     for (const auto &a : e.args)
       if (varies(a)) return true;
     return false;
@@ -346,6 +392,7 @@ public:
     }
     if (std::none_of(c_.places.begin(), c_.places.end(), [](const GPlace &p) { return p.initial; }))
       c_.places[static_cast<std::size_t>(uniform(0, n - 1))].initial = true;
+    assign_runs();
     // Bodies after all places exist: elapsed() may name any of them.
     for (auto &p : c_.places) {
       p.body = chance(0.8);
@@ -359,7 +406,9 @@ public:
       if (chance(0.25)) t.name = fresh("t", i, kTrickyPlaces);
       t.inputs = some_places(n);
       t.outputs = some_places(n);
+      from_ = t.inputs.size() == 1 ? t.inputs.front() : -1;
       if (chance(0.8)) t.condition = condition();
+      from_ = -1;
       c_.transitions.push_back(t);
     }
   }
@@ -384,6 +433,7 @@ public:
       c_.places.push_back(s);
     }
     auto terminal = [&](int i) { return c_.places[static_cast<std::size_t>(i)].terminal != model::Terminal::None; };
+    assign_runs();
     for (int i = 0; i < n; ++i) {
       GPlace &s = c_.places[static_cast<std::size_t>(i)];
       if (terminal(i)) {
@@ -420,7 +470,9 @@ public:
       if (chance(0.15)) t.name = fresh("t", i, {});
       t.inputs = {a};
       t.outputs = {b};
+      from_ = a;
       if (chance(0.85) || !o_.dead_code) t.condition = condition();
+      from_ = -1;
       c_.transitions.push_back(t);
       ++i;
     }
@@ -432,6 +484,11 @@ private:
   const GenOptions &o_;
   std::set<std::string> used_;
   bool calls_allowed_ = true;
+  const std::vector<GChart> *pool_ = nullptr;
+  int first_runnable_ = 0;
+
+public:
+  int from_ = -1;  ///< while a transition's condition is made: its one input, else -1
 };
 
 int precedence(const std::string &op) {
@@ -472,6 +529,9 @@ std::string expr_text(const GExpr &e) {
   case GExpr::Kind::Var:
   case GExpr::Kind::Const: return e.text;
   case GExpr::Kind::Elapsed: return "elapsed(" + e.text + ")";
+  case GExpr::Kind::Active: return "active(" + e.text + ")";
+  case GExpr::Kind::Succeeded: return "succeeded(" + e.text + ")";
+  case GExpr::Kind::Failed: return "failed(" + e.text + ")";
   case GExpr::Kind::Call: {
     std::string args;
     for (const auto &a : e.args) args += (args.empty() ? "" : ", ") + expr_text(a);
@@ -506,6 +566,27 @@ GChart random_chart(std::mt19937_64 &rng, int id, const GenOptions &options) {
   c.period_ms = g.chance(0.7) ? g.pick(std::vector<int>{1, 10, 20, 100}) : 0;
   g.interface();
   g.values();
+  if (options.subcharts > 0) {
+    // The sub-charts, deepest first: pool[j] may run pool[j+1..]. They share the root's
+    // interface and period (a sub-chart has its parent's period).
+    c.pool.resize(static_cast<std::size_t>(g.uniform(1, options.subcharts)));
+    for (int j = static_cast<int>(c.pool.size()) - 1; j >= 0; --j) {
+      GChart &s = c.pool[static_cast<std::size_t>(j)];
+      s.fsm = g.chance(0.5);
+      s.name = fmt::format("R{}s{}", id, j);
+      s.prefix = fmt::format("c{}s{}", id, j);
+      s.period_ms = c.period_ms;
+      s.functions = c.functions;
+      Gen gs(rng, s, options, &c.pool, j + 1);
+      gs.values();
+      if (s.fsm) gs.fsm();
+      else gs.sfc();
+    }
+    g.use_pool(&c.pool);  // the same generator: its names already taken (vars) stay taken
+    if (c.fsm) g.fsm();
+    else g.sfc();
+    return c;
+  }
   if (c.fsm) g.fsm();
   else g.sfc();
   return c;
@@ -534,17 +615,10 @@ GTrace random_trace(std::mt19937_64 &rng, const GChart &chart) {
   return t;
 }
 
-std::string chart_text(const GChart &c) {
-  std::string s = fmt::format("interface I{} {{\n", c.name.substr(1));
-  for (const auto &f : c.functions) {
-    std::string params;
-    for (std::size_t i = 0; i < f.params.size(); ++i) params += fmt::format("{}{} p{}", i ? ", " : "", type_word(f.params[i]), i);
-    s += fmt::format("  {} {}({});\n", type_word(f.result), f.name, params);
-  }
-  s += "}\n";
-  for (const auto &k : c.consts)
-    if (k.file_level) s += fmt::format("const {} {} = {};\n", type_word(k.type), k.name, k.init);
-  s += fmt::format("{} {} {{\n", c.fsm ? "fsm" : "sfc", c.name);
+namespace {
+
+std::string chart_body(const GChart &c, const std::vector<GChart> &pool) {
+  std::string s = fmt::format("{} {} {{\n", c.fsm ? "fsm" : "sfc", c.name);
   if (c.period_ms) s += fmt::format("  period {}ms;\n", c.period_ms);
   for (const auto &k : c.consts)
     if (!k.file_level) s += fmt::format("  const {} {} = {};\n", type_word(k.type), k.name, k.init);
@@ -557,6 +631,7 @@ std::string chart_text(const GChart &c) {
                                                                           : "state")
                              : (p.initial ? "initial place" : "place");
     s += "  " + head + " " + p.name;
+    if (p.runs >= 0) s += " runs " + pool.at(static_cast<std::size_t>(p.runs)).name;
     if (p.post) s += " post " + expr_text(*p.post);
     if (!p.body) {
       s += ";\n";
@@ -577,6 +652,25 @@ std::string chart_text(const GChart &c) {
     s += ";\n";
   }
   return s + "}\n";
+}
+
+} // namespace
+
+std::string chart_text(const GChart &c) {
+  std::string s = fmt::format("interface I{} {{\n", c.name.substr(1));
+  for (const auto &f : c.functions) {
+    std::string params;
+    for (std::size_t i = 0; i < f.params.size(); ++i) params += fmt::format("{}{} p{}", i ? ", " : "", type_word(f.params[i]), i);
+    s += fmt::format("  {} {}({});\n", type_word(f.result), f.name, params);
+  }
+  s += "}\n";
+  for (const auto &k : c.consts)
+    if (k.file_level) s += fmt::format("const {} {} = {};\n", type_word(k.type), k.name, k.init);
+  for (const auto &sub : c.pool)
+    for (const auto &k : sub.consts)
+      if (k.file_level) s += fmt::format("const {} {} = {};\n", type_word(k.type), k.name, k.init);
+  for (const auto &sub : c.pool) s += chart_body(sub, c.pool);
+  return s + chart_body(c, c.pool);
 }
 
 std::string trace_csv(const GChart &c, const GTrace &t) {

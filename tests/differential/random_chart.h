@@ -15,7 +15,8 @@ namespace gfec::diff {
 using model::Type;
 
 struct GExpr {
-  enum class Kind { Lit, Var, Const, Call, Elapsed, Unary, Binary, Paren };
+  /// Active: text `P` or `P.Q.R`; Succeeded, Failed: text `P` (a place that runs an fsm).
+  enum class Kind { Lit, Var, Const, Call, Elapsed, Unary, Binary, Paren, Active, Succeeded, Failed };
   Kind kind = Kind::Lit;
   Type type = Type::Int;  ///< for an Elapsed comparison's operands: Duration
   std::string text;       ///< literal spelling, name, or operator
@@ -53,6 +54,7 @@ struct GPlace {
   std::vector<GStmt> action;
   std::optional<std::vector<GStmt>> entry, exit;
   std::optional<GExpr> post;
+  int runs = -1;  ///< the sub-chart it runs: an index into the root's GChart::pool
 };
 
 struct GTransition {
@@ -71,6 +73,10 @@ struct GChart {
   std::vector<GValue> vars;
   std::vector<GPlace> places;
   std::vector<GTransition> transitions;
+  /// The root only: the sub-charts, each with the root's interface and period. pool[j] runs
+  /// only pool[k] with k > j, and the root any of them, so there is no cycle; the same chart
+  /// may be run by several places.
+  std::vector<GChart> pool;
 };
 
 /// What each function with a result returns, tick by tick, as literal text.
@@ -90,6 +96,8 @@ struct GenOptions {
   /// fsm transitions shadowed by an unconditional one, `when false`): their engine code is
   /// dead too, which cppcheck reports.
   bool dead_code = true;
+  /// Hierarchical programs: up to this many sub-charts (0: a flat chart).
+  int subcharts = 0;
 };
 
 GChart random_chart(std::mt19937_64 &rng, int id, const GenOptions &options);

@@ -186,6 +186,29 @@ std::vector<std::function<bool(Case &, int)>> mutations() {
         if (i == static_cast<int>(c.chart.vars.size()) && c.chart.period_ms) return c.chart.period_ms = 0, true;
         return false;
       },
+      // Hierarchical programs: a place of the root or of a sub-chart that runs nothing any more
+      // (expressions that read into it make the candidate invalid, and it is not taken).
+      [](Case &c, int i) {
+        std::vector<GChart *> charts{&c.chart};
+        for (auto &s : c.chart.pool) charts.push_back(&s);
+        for (GChart *g : charts)
+          for (auto &p : g->places)
+            if (p.runs >= 0 && i-- == 0) return p.runs = -1, true;
+        return false;
+      },
+      // A sub-chart's own places and blocks, as the root's above.
+      [](Case &c, int i) {
+        for (auto &s : c.chart.pool) {
+          auto b = blocks(s);
+          for (auto *block : b)
+            if (!block->empty() && i-- == 0) return block->clear(), true;
+          for (int p = 0; p < static_cast<int>(s.places.size()); ++p)
+            if (i-- == 0) return remove_place(s, p);
+          for (std::size_t t = 0; t < s.transitions.size(); ++t)
+            if (i-- == 0) return s.transitions.erase(s.transitions.begin() + static_cast<std::ptrdiff_t>(t)), true;
+        }
+        return false;
+      },
   };
 }
 
@@ -196,6 +219,10 @@ int size_hint(Case &c) {
   for (auto *b : blocks(c.chart)) n += static_cast<int>(b->size());
   for_each_expr(c.chart, [&](GExpr &e) { n += 1 + static_cast<int>(e.args.size()); });
   for (const auto &v : c.trace.values) n += static_cast<int>(v.size());
+  for (auto &sub : c.chart.pool) {
+    n += static_cast<int>(sub.places.size() * 2 + sub.transitions.size());
+    n += static_cast<int>(blocks(sub).size());
+  }
   return n;
 }
 

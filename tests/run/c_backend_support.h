@@ -313,7 +313,7 @@ struct Compiled {
   model::Model model;
   std::vector<OutputFile> files;
   std::string errors;  ///< rendered diagnostics when the chart did not compile
-  int chart = -1;      ///< the chart compiled: the first of the main file
+  int chart = -1;      ///< the chart compiled: the default root of the main file
 
   const model::Chart &the_chart() const { return model.charts.at(static_cast<std::size_t>(chart)); }
 };
