@@ -1,4 +1,4 @@
-// The lexer: turns one file's text into tokens, reporting malformed ones (LANGUAGE.md §1).
+// The lexer: turns one file's text into tokens, reporting malformed ones (docs/language.md §1).
 #pragma once
 
 #include "diagnostics.h"

@@ -1,4 +1,4 @@
-// The loader: reads the main file and, transitively, every file it imports (LANGUAGE.md §2),
+// The loader: reads the main file and, transitively, every file it imports (docs/language.md §2),
 // parsing each once. Missing files and import cycles are reported at the import.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Tokens of the chart language (LANGUAGE.md §1).
+// Tokens of the chart language (docs/language.md §1).
 #pragma once
 
 #include "source.h"

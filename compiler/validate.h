@@ -1,4 +1,4 @@
-// The validator: resolves names across files, type-checks, applies the rules of LANGUAGE.md and
+// The validator: resolves names across files, type-checks, applies the rules of docs/language.md and
 // lowers the syntax tree to the model. Every user error is reported here, never in a back end.
 #pragma once
 

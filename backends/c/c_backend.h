@@ -1,5 +1,5 @@
 // The C back end: an sfc or fsm chart as a GFE-style C99 engine, engine.c plus engine.h
-// (LANGUAGE.md §5.2 and §7; the engine's shape is described in docs/c-engine.md).
+// (docs/language.md §5.2 and §7; the engine's shape is described in docs/c-engine.md).
 #pragma once
 
 #include "backend.h"

@@ -19,13 +19,13 @@ std::string emit_source(const Context &c);
 void places_enum(CodeWriter &w, const Context &c);
 void transitions_enum(CodeWriter &w, const Context &c);
 
-/// `void X_run(X *m) { ... }`: one tick, LANGUAGE.md §5.1.
+/// `void X_run(X *m) { ... }`: one tick, docs/language.md §5.1.
 void emit_sfc_run(CodeWriter &w, const Context &c);
 /// The scalable form of an sfc (c_layout.h): its file-local helpers (before _init), and its
-/// run function, one tick exactly as LANGUAGE.md §5.1 says.
+/// run function, one tick exactly as docs/language.md §5.1 says.
 void emit_scalable_helpers(CodeWriter &w, const Context &c);
 void emit_scalable_sfc_run(CodeWriter &w, const Context &c);
-/// `void X_run(X *m) { ... }`: one tick, LANGUAGE.md §7.
+/// `void X_run(X *m) { ... }`: one tick, docs/language.md §7.
 void emit_fsm_run(CodeWriter &w, const Context &c);
 
 /// "LeftFw -> LeftStop", "(A, B) -> C": a transition as the chart would write it.

@@ -1,4 +1,4 @@
-// Chart expressions and statements as C (LANGUAGE.md §4): the chart's own text, made readable
+// Chart expressions and statements as C (docs/language.md §4): the chart's own text, made readable
 // and warning-free, with `#line` back to the chart around every statement.
 //
 // Where C would read the chart differently, the C says what the chart means:

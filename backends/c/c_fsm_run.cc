@@ -1,4 +1,4 @@
-// The run function of an fsm: one tick exactly as LANGUAGE.md §7 says. The state is one
+// The run function of an fsm: one tick exactly as docs/language.md §7 says. The state is one
 // number; the transitions form one if/else-if chain in declaration order, so at most one fires
 // and only those leaving the current state evaluate their condition.
 #include "c_emit.h"

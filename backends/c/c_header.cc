@@ -131,9 +131,9 @@ void api(CodeWriter &w, const Context &c) {
   w.line("/* Sets the initial {}; calls no code of the chart. */", c.fsm ? "state" : "marking");
   w.line("void {0}_init({0} *m);", t);
   if (c.chart.period_ms > 0)
-    w.line("/* One tick ({}): call it every {} ms. */", c.fsm ? "LANGUAGE.md 7" : "LANGUAGE.md 5.1", c.chart.period_ms);
+    w.line("/* One tick ({}): call it every {} ms. */", c.fsm ? "docs/language.md 7" : "docs/language.md 5.1", c.chart.period_ms);
   else
-    w.line("/* One tick ({}). */", c.fsm ? "LANGUAGE.md 7" : "LANGUAGE.md 5.1");
+    w.line("/* One tick ({}). */", c.fsm ? "docs/language.md 7" : "docs/language.md 5.1");
   w.line("void {0}_run({0} *m);", t);
   if (c.fsm) {
     w.line("/* 1 if `place` is the current state, else 0. */");

@@ -1,5 +1,5 @@
 // The scalable form of an sfc's engine (c_layout.h): a tick visits only the active part of the
-// chart, and does exactly what LANGUAGE.md §5.1 says, in the same order as the readable form:
+// chart, and does exactly what docs/language.md §5.1 says, in the same order as the readable form:
 // transitions in declaration order (conditions only of open ones), produced activation held
 // back until the next tick, exits then entries in declaration order, then the actions of the
 // active places in declaration order. The chart's code is the same readable C; only the

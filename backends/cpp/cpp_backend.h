@@ -1,4 +1,4 @@
-// The C++ back ends of Action Flow Plans (LANGUAGE.md §8): the wiring of a plan (`cpp`: plan.cpp
+// The C++ back ends of Action Flow Plans (docs/language.md §8): the wiring of a plan (`cpp`: plan.cpp
 // and plan.hpp, docs/plans.md) and the skeleton of a toolbox's C++ classes (`toolbox-skeleton`:
 // the header the wiring includes and a source file to fill in, docs/toolbox.md).
 #pragma once

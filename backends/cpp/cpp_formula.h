@@ -1,4 +1,4 @@
-// Plan argument formulas (LANGUAGE.md §8) as C++: an `in` argument becomes an afp::In<T> made
+// Plan argument formulas (docs/language.md §8) as C++: an `in` argument becomes an afp::In<T> made
 // from a constant, an entry, or a lambda over afp::ConfigView that computes the formula as C
 // would (int arithmetic stays int); an `out` argument becomes an afp::Out<T> naming its entry.
 // Nothing is parsed at run time: the runtime only converts the result to the parameter's type.

@@ -1,4 +1,4 @@
-// The reference engine: one chart of a model, run tick by tick exactly as LANGUAGE.md says —
+// The reference engine: one chart of a model, run tick by tick exactly as docs/language.md says —
 // §5.1 for an sfc, §7 for an fsm. Its API mirrors the generated C engine's (§5.2): init, run,
 // activation, state, status. It reads only the model.
 #pragma once

@@ -1,4 +1,4 @@
-// Expressions and statements of a chart (LANGUAGE.md §4) with C's semantics: the usual
+// Expressions and statements of a chart (docs/language.md §4) with C's semantics: the usual
 // arithmetic conversions, 32-bit ints, float arithmetic in float, `&&` and `||` short-circuit,
 // and everything else evaluated left to right (the language fixes the order C leaves open).
 #pragma once

@@ -21,8 +21,6 @@ void fold_file_consts(Context &cx);
 /// validate_chart.cc: a chart's name now; its body later, once every global name is known.
 void declare_chart(Context &cx, const ast::Chart &chart);
 void validate_chart(Context &cx, int index);
-/// Once every chart is validated: a team machine run as a sub-chart (`P runs X`) is an error.
-void check_team_roots(Context &cx);
 
 /// subcharts.cc: resolves every `runs`, reports charts that run themselves and sub-chart
 /// periods that disagree with their parents', and fills Context::runs and inherited_period.

@@ -42,7 +42,6 @@ model::Model validate(const ast::Program &program, const SourceManager &sources,
   validation::fold_file_consts(cx);
   validation::resolve_subcharts(cx);
   for (std::size_t i = 0; i < model.charts.size(); ++i) validation::validate_chart(cx, static_cast<int>(i));
-  validation::check_team_roots(cx);
   for (std::size_t i = 0; i < model.plans.size(); ++i) validation::validate_plan(cx, static_cast<int>(i));
   validation::check_plan_recursion(cx);
   validation::validate_tests(cx, tests);

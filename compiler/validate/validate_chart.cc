@@ -236,19 +236,4 @@ void validate_chart(Context &cx, int index) {
   cx.chart = nullptr;
 }
 
-void check_team_roots(Context &cx) {
-  for (const ast::Chart *chart : cx.charts) {
-    for (const ast::Place &p : chart->places) {
-      if (!p.runs) continue;
-      const Symbol *sym = cx.c_names.find(p.runs->text);
-      if (!sym || sym->kind != Sym::Chart || sym->index < 0) continue;  // the sub-chart checks say why
-      const model::Chart &sub = cx.model.charts.at(static_cast<std::size_t>(sym->index));
-      if (sub.team == 0) continue;
-      const ast::Chart &team = *cx.charts.at(static_cast<std::size_t>(sym->index));
-      cx.diag.error(p.runs->range, "team", fmt::format("fsm '{}' is a team machine and cannot run as a sub-chart", sub.name))
-          .note(team.teams.front().second, "a team machine is always the compiled root; its agents run it side by side");
-    }
-  }
-}
-
 } // namespace gfec::validation

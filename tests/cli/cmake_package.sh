@@ -56,7 +56,7 @@ for generator in "${generators[@]}"; do
     fail "configure ($generator)"
   cmake --build "$out" >/dev/null || fail "build ($generator)"
   blink=$("$out/firmware")
-  # LANGUAGE.md 5.1 by hand: ticks counts the actions run; On -> Off once ticks >= 3 (tick 4),
+  # docs/language.md §5.1 by hand: ticks counts the actions run; On -> Off once ticks >= 3 (tick 4),
   # Off -> On once ticks >= 5 (tick 6); from then on each transition fires on the next tick.
   [ "$blink" = "###..#.#.#" ] || fail "firmware printed '$blink'"
   [ "$("$out/runtime_user")" = "walldist=42" ] || fail "runtime_user: $("$out/runtime_user")"

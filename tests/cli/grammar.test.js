@@ -71,7 +71,7 @@ for (const file of samples) {
 }
 
 test('every keyword of the language is highlighted as one, in and out of context', () => {
-  // The lexer's keyword table is the authority (LANGUAGE.md section 1).
+  // The lexer's keyword table is the authority (docs/language.md §1).
   const lexer = fs.readFileSync(path.join(SOURCE_DIR, 'compiler', 'lexer.cc'), 'utf8');
   const keywords = [...lexer.matchAll(/\{"(\w+)", Tok::Kw\w+\}/g)].map((m) => m[1]);
   assert.ok(keywords.length >= 30, 'keywords found in compiler/lexer.cc');

@@ -37,7 +37,7 @@ inline const fs::path kRuntimeLibrary = fs::path(GFEC_BINARY_DIR) / "runtime" / 
 /// What a program linking kRuntimeLibrary needs besides it: the sanitizers the build uses.
 inline const std::string kRuntimeLinkFlags = GFEC_RUNTIME_LINK_FLAGS;
 
-/// What generated C++ must compile warning-free with (LANGUAGE.md §8 asks -Wall -Wextra -Werror;
+/// What generated C++ must compile warning-free with (docs/language.md §8 asks -Wall -Wextra -Werror;
 /// the project holds generated code to -Wpedantic too).
 inline const char *kStrictFlags = "-std=c++17 -Wall -Wextra -Wpedantic -Werror";
 

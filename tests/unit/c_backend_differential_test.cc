@@ -1,5 +1,5 @@
 // The C engine against the reference interpreter (compiler/interpreter): engines and the
-// interpreter must agree tick for tick (LANGUAGE.md). Each chart runs on random scripts (fixed
+// interpreter must agree tick for tick (docs/language.md). Each chart runs on random scripts (fixed
 // seeds) once as a compiled engine with the run harness (-DX_HOOKS) and once in the interpreter,
 // whose calls, hooks and activation are printed in the harness's log format; the logs must match.
 #include "../run/c_backend_support.h"

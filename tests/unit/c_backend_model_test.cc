@@ -9,7 +9,7 @@ using B = ChartBuilder;
 
 namespace {
 
-/// GFE's line follower (LANGUAGE.md §5).
+/// GFE's line follower (docs/language.md §5).
 ChartBuilder line_follower() {
   ChartBuilder b("LineFollower", Kind::Sfc);
   for (const char *f : {"Left_IR_Black", "Left_IR_White", "Right_IR_Black", "Right_IR_White"}) b.fn(f, Type::Bool);

@@ -1,7 +1,7 @@
 // Compile-and-run tests of the C engine: each chart's engine is compiled with gcc and clang at
 // -std=c99 -Wall -Wextra -Wpedantic -Werror, linked with a harness that scripts the sensing
 // functions tick by tick and logs every call, and run. The expected logs are written by hand
-// from LANGUAGE.md §5.1 and §7, never produced by the engine.
+// from docs/language.md §5.1 and §7, never produced by the engine.
 #include "../run/c_backend_support.h"
 
 #include <catch2/catch.hpp>
@@ -466,7 +466,7 @@ int main(void)
 // the back end wrote what the chart means rather than what C would make of its spelling.
 
 TEST_CASE("c engine run: int literals are decimal, a leading zero is not octal", "[c_backend][run]") {
-  // C reads 010 as 8; LANGUAGE.md (and docs/language.md) says 10. Floats with leading zeros are
+  // C reads 010 as 8; docs/language.md says 10. Floats with leading zeros are
   // decimal in C too.
   std::string log = run("octal", R"(
 interface Bot { void A(int n); void B(double x); }
@@ -573,7 +573,7 @@ sfc Order {
 } // namespace
 
 TEST_CASE("c engine run: calls are made left to right, in arguments and operands alike", "[c_backend][run]") {
-  // gcc evaluates arguments right to left; C leaves the order open. LANGUAGE.md §4, §5.1: left
+  // gcc evaluates arguments right to left; C leaves the order open. docs/language.md §4, §5.1: left
   // to right, && and || short-circuiting. Both engine forms (the scalable one is a switch).
   std::string log = run("call_order", kOrder,
                         "S0=1 S1=2 S2=3 Twice=7\n"

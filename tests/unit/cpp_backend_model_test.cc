@@ -94,7 +94,7 @@ plan P {
   actor c: Say("n=" + 0010) { SAID -> terminate; }
 }
 )");
-  // LANGUAGE.md: 010 is ten; C++ would read the spelling as octal 8.
+  // docs/language.md: 010 is ten; C++ would read the spelling as octal 8.
   CHECK(w.find("afp::in<int>(10)") != std::string::npos);
   CHECK(w.find("return c.get<int>(\"n\") + 10; }") != std::string::npos);
   CHECK(w.find("return \"n=\" + text(10); }") != std::string::npos);

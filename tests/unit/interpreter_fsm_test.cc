@@ -1,4 +1,4 @@
-// The reference interpreter on fsm machines: LANGUAGE.md §7.
+// The reference interpreter on fsm machines: docs/language.md §7.
 #include "interpreter_support.h"
 
 #include <fmt/format.h>

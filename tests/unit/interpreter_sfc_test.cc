@@ -1,4 +1,4 @@
-// The reference interpreter on sfc charts: each test pins one rule of LANGUAGE.md §5.1.
+// The reference interpreter on sfc charts: each test pins one rule of docs/language.md §5.1.
 #include "interpreter_support.h"
 
 using namespace gfec;

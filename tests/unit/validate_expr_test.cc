@@ -1,4 +1,4 @@
-// The validator: expressions, statements, constants and types (LANGUAGE.md sections 3 and 4).
+// The validator: expressions, statements, constants and types (docs/language.md §3 and 4).
 // Each test validates chart text and compares every diagnostic as gfec prints it.
 #include "support.h"
 #include "validate.h"

@@ -1,4 +1,4 @@
-// The validator: the rules and warnings of an fsm (LANGUAGE.md section 7).
+// The validator: the rules and warnings of an fsm (docs/language.md §7).
 // Each test validates chart text and compares every diagnostic as gfec prints it.
 #include "support.h"
 #include "validate.h"
@@ -477,8 +477,6 @@ t.fsm:6:9: error: state 'TEAM_SIZE' would generate 'T_TEAM_SIZE', which the engi
 }
 
 TEST_CASE("validate: a team machine cannot run as a sub-chart", "[validate][team]") {
-  // `runs` belongs to the sub-chart front end; the check reads the syntax tree's Place::runs,
-  // which is set here by hand so that the check is tested on its own.
   test::FrontEnd fe({{"t.fsm", R"--(fsm Fetch {
   team 3;
   initial state Go;
@@ -487,29 +485,20 @@ fsm Solo {
   initial state Go;
 }
 sfc Patrol {
-  initial place Search;
-  place Other;
-  place Third;
+  initial place Search runs Fetch;
+  place Other runs Solo;
 }
 )--"}});
   REQUIRE(fe.text().empty());
-  ast::Chart &patrol = fe.loaded.program.files[0]->charts[2];
-  auto runs = [&](std::size_t place, const char *chart) {
-    ast::Place &p = patrol.places[place];
-    p.runs = ast::Name{chart, p.name.range};  // located at the place's name
-  };
-  runs(0, "Fetch");
-  runs(1, "Solo");
-  runs(2, "Nowhere");  // unknown: the sub-chart checks report it, not this one
   model::Model m = validate(fe.loaded.program, fe.sources, fe.diag);
   std::string text = fe.text();
-  CHECK(text.find(R"--(t.fsm:9:17: error: fsm 'Fetch' is a team machine and cannot run as a sub-chart [team]
-   initial place Search;
-                 ^~~~~~
-t.fsm:2:3: note: a team machine is always the compiled root; its agents run it side by side
+  CHECK(text.find(R"--(t.fsm:9:29: error: fsm 'Fetch' is a team machine; it can only be compiled as the root, not run as a sub-chart [team-subchart]
+   initial place Search runs Fetch;
+                             ^~~~~
+t.fsm:2:3: note: it is made a team machine here
    team 3;
    ^~~~~~~
 )--") != std::string::npos);
   CHECK(text.find("'Solo'") == std::string::npos);
-  CHECK(text.find("cannot run as a sub-chart") == text.rfind("cannot run as a sub-chart"));  // once: Fetch
+  CHECK(text.find("not run as a sub-chart") == text.rfind("not run as a sub-chart"));  // once: Fetch
 }

@@ -1,4 +1,4 @@
-// The validator's output: the model back ends read (LANGUAGE.md sections 3-8, compiler/model.h).
+// The validator's output: the model back ends read (docs/language.md §3-8, compiler/model.h).
 #include "support.h"
 #include "validate.h"
 

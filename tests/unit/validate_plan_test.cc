@@ -1,4 +1,4 @@
-// The validator: toolboxes and plans (LANGUAGE.md section 8).
+// The validator: toolboxes and plans (docs/language.md §8).
 // Each test validates chart text and compares every diagnostic as gfec prints it.
 #include "support.h"
 #include "validate.h"

@@ -1,4 +1,4 @@
-// The validator: the rules and warnings of an sfc (LANGUAGE.md section 5).
+// The validator: the rules and warnings of an sfc (docs/language.md §5).
 // Each test validates chart text and compares every diagnostic as gfec prints it.
 #include "support.h"
 #include "validate.h"

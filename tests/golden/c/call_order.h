@@ -37,7 +37,7 @@ struct Weigh {
 
 /* Sets the initial state; calls no code of the chart. */
 void Weigh_init(Weigh *m);
-/* One tick (LANGUAGE.md 7). */
+/* One tick (docs/language.md 7). */
 void Weigh_run(Weigh *m);
 /* 1 if `place` is the current state, else 0. */
 unsigned Weigh_activation(const Weigh *m, int place);

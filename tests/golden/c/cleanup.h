@@ -43,7 +43,7 @@ struct CleanUp {
 
 /* Sets the initial state; calls no code of the chart. */
 void CleanUp_init(CleanUp *m);
-/* One tick (LANGUAGE.md 7): call it every 10 ms. */
+/* One tick (docs/language.md 7): call it every 10 ms. */
 void CleanUp_run(CleanUp *m);
 /* 1 if `place` is the current state, else 0. */
 unsigned CleanUp_activation(const CleanUp *m, int place);

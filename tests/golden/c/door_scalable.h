@@ -45,7 +45,7 @@ struct Door {
 
 /* Sets the initial marking; calls no code of the chart. */
 void Door_init(Door *m);
-/* One tick (LANGUAGE.md 5.1): call it every 10 ms. */
+/* One tick (docs/language.md 5.1): call it every 10 ms. */
 void Door_run(Door *m);
 /* The activation counter of a place (a Door_<place>); 0 for a number out of range. */
 unsigned Door_activation(const Door *m, int place);

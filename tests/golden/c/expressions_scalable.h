@@ -39,7 +39,7 @@ struct Expressions {
 
 /* Sets the initial marking; calls no code of the chart. */
 void Expressions_init(Expressions *m);
-/* One tick (LANGUAGE.md 5.1): call it every 10 ms. */
+/* One tick (docs/language.md 5.1): call it every 10 ms. */
 void Expressions_run(Expressions *m);
 /* The activation counter of a place (a Expressions_<place>); 0 for a number out of range. */
 unsigned Expressions_activation(const Expressions *m, int place);

@@ -36,7 +36,7 @@ struct LineFollower {
 
 /* Sets the initial marking; calls no code of the chart. */
 void LineFollower_init(LineFollower *m);
-/* One tick (LANGUAGE.md 5.1): call it every 10 ms. */
+/* One tick (docs/language.md 5.1): call it every 10 ms. */
 void LineFollower_run(LineFollower *m);
 /* The activation counter of a place (a LineFollower_<place>); 0 for a number out of range. */
 unsigned LineFollower_activation(const LineFollower *m, int place);

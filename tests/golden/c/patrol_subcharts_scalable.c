@@ -420,11 +420,8 @@ void Patrol_run(Patrol *m)
         default:
             break;
         }
-    }
-
 #ifdef Patrol_HOOKS
-    /* Observation hooks: the place left and the place entered; the transitions leaving it */
-    if (m->current != from) {
+        /* Observation hooks: the place left and the place entered; the transitions leaving it */
         Patrol_activated(m, (int)from, false);
         Patrol_activated(m, (int)m->current, true);
         switch (m->current) {
@@ -433,21 +430,21 @@ void Patrol_run(Patrol *m)
         default:
             break;
         }
-    }
 #endif
+    }
 
     /* Perform the action of the active place, then one tick of the instance it runs */
     switch (m->current) {
     case Patrol_Search:
 #line 32 "patrol_subcharts_scalable.sfc"
         Beep();
-#line 445 "patrol_subcharts_scalable.c"
+#line 442 "patrol_subcharts_scalable.c"
         Patrol_Search_run(&m->Search); /* one tick of the instance of Fetch */
         break;
     case Patrol_Home:
 #line 33 "patrol_subcharts_scalable.sfc"
         Park();
-#line 451 "patrol_subcharts_scalable.c"
+#line 448 "patrol_subcharts_scalable.c"
         break;
     case Patrol_Retry:
         Patrol_Retry_run(&m->Retry); /* one tick of the instance of Fetch */

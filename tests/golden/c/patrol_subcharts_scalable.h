@@ -63,7 +63,7 @@ struct Patrol {
 
 /* Sets the initial marking; calls no code of the chart. */
 void Patrol_init(Patrol *m);
-/* One tick (LANGUAGE.md 5.1): call it every 10 ms. */
+/* One tick (docs/language.md 5.1): call it every 10 ms. */
 void Patrol_run(Patrol *m);
 /* The activation counter of a place (a Patrol_<place>); 0 for a number out of range. */
 unsigned Patrol_activation(const Patrol *m, int place);

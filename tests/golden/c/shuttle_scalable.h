@@ -48,7 +48,7 @@ struct Shuttle {
 
 /* Sets the initial marking; calls no code of the chart. */
 void Shuttle_init(Shuttle *m);
-/* One tick (LANGUAGE.md 5.1): call it every 10 ms. */
+/* One tick (docs/language.md 5.1): call it every 10 ms. */
 void Shuttle_run(Shuttle *m);
 /* The activation counter of a place (a Shuttle_<place>); 0 for a number out of range. */
 unsigned Shuttle_activation(const Shuttle *m, int place);

@@ -2,7 +2,13 @@
 #include "team_fetch.h"
 
 #ifdef Fetch_CHECKS
+#ifndef Fetch_ASSERT
 #include <assert.h>
+#define Fetch_ASSERT(cond) assert(cond)
+#ifdef NDEBUG
+#define Fetch_ASSERT_OFF /* assert is off: skip the checks' temporaries too */
+#endif
+#endif
 #endif
 
 /* Initial state: Go. Calls no code of the chart. */
@@ -61,26 +67,26 @@ void Fetch_run(Fetch *m)
     /* T0: Go -> Grab */
 #line 34 "team_fetch.fsm"
     if (m->state == Fetch_Go && (Arrived() && Fetch_team(m, Fetch_Grab) == 0)) {
-#line 65 "team_fetch.c"
+#line 71 "team_fetch.c"
         m->state = Fetch_Grab;
     }
     /* T1: Go -> Yield */
 #line 35 "team_fetch.fsm"
     else if (m->state == Fetch_Go && (Fetch_team(m, Fetch_Grab) > 0)) {
-#line 71 "team_fetch.c"
+#line 77 "team_fetch.c"
         m->state = Fetch_Yield;
     }
     /* T2: Grab -> Got */
 #line 36 "team_fetch.fsm"
     else if (m->state == Fetch_Grab && (Holding())) {
-#line 77 "team_fetch.c"
+#line 83 "team_fetch.c"
         m->state = Fetch_Got;
         m->status = 1;
     }
     /* T3: Yield -> Left */
 #line 37 "team_fetch.fsm"
     else if (m->state == Fetch_Yield && (Parked() || m->waited > 3)) {
-#line 84 "team_fetch.c"
+#line 90 "team_fetch.c"
         m->state = Fetch_Left;
         m->status = 1;
     }
@@ -91,13 +97,13 @@ void Fetch_run(Fetch *m)
         if (from == Fetch_Grab) {
 #line 17 "team_fetch.fsm"
             Lights(false);
-#line 95 "team_fetch.c"
+#line 101 "team_fetch.c"
         }
         /* entry Grab */
         if (m->state == Fetch_Grab) {
 #line 15 "team_fetch.fsm"
             Lights(true);
-#line 101 "team_fetch.c"
+#line 107 "team_fetch.c"
         }
         /* entry Yield */
         if (m->state == Fetch_Yield) {
@@ -111,7 +117,7 @@ void Fetch_run(Fetch *m)
             } else {
                 Beep(1);
             }
-#line 115 "team_fetch.c"
+#line 121 "team_fetch.c"
         }
 #ifdef Fetch_HOOKS
         /* Observation hooks: the state left and the state entered; the transitions leaving it */
@@ -127,8 +133,8 @@ void Fetch_run(Fetch *m)
     /* Postconditions of the terminal states, checked on entering them */
     if (m->state == Fetch_Left) {
 #line 33 "team_fetch.fsm"
-        assert(Parked());
-#line 132 "team_fetch.c"
+        Fetch_ASSERT(Parked());
+#line 138 "team_fetch.c"
     }
 #endif
 
@@ -136,12 +142,12 @@ void Fetch_run(Fetch *m)
     if (m->state == Fetch_Go) {
 #line 13 "team_fetch.fsm"
         DriveToItem();
-#line 140 "team_fetch.c"
+#line 146 "team_fetch.c"
     }
     if (m->state == Fetch_Grab) {
 #line 16 "team_fetch.fsm"
         PickUp();
-#line 145 "team_fetch.c"
+#line 151 "team_fetch.c"
     }
     if (m->state == Fetch_Yield) {
 #line 29 "team_fetch.fsm"
@@ -150,7 +156,7 @@ void Fetch_run(Fetch *m)
 #line 30 "team_fetch.fsm"
             m->waited += 1;
         }
-#line 154 "team_fetch.c"
+#line 160 "team_fetch.c"
     }
 }
 

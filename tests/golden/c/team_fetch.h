@@ -45,7 +45,7 @@ struct Fetch {
 
 /* Sets the initial state; calls no code of the chart. */
 void Fetch_init(Fetch *m);
-/* One tick (LANGUAGE.md 7): call it every 10 ms. */
+/* One tick (docs/language.md 7): call it every 10 ms. */
 void Fetch_run(Fetch *m);
 /* 1 if `place` is the current state, else 0. */
 unsigned Fetch_activation(const Fetch *m, int place);

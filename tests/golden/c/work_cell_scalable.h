@@ -46,7 +46,7 @@ struct WorkCell {
 
 /* Sets the initial marking; calls no code of the chart. */
 void WorkCell_init(WorkCell *m);
-/* One tick (LANGUAGE.md 5.1): call it every 20 ms. */
+/* One tick (docs/language.md 5.1): call it every 20 ms. */
 void WorkCell_run(WorkCell *m);
 /* The activation counter of a place (a WorkCell_<place>); 0 for a number out of range. */
 unsigned WorkCell_activation(const WorkCell *m, int place);
