@@ -20,11 +20,12 @@ Type promote(Type a, Type b) {
 // Names that are valid in the language but are also names the generated C uses for itself
 // (engine fields and locals, API functions, macros of the headers it includes): the back end
 // must keep them apart.
-// (The validator rejects the engine's own names for places, e.g. `init` or `HOOKS`.)
+// (The validator rejects the engine's own names for places, e.g. `init` or `HOOKS`, and the
+// macros and typedefs of the C headers, e.g. `NULL`, `UINT_MAX`, `assert`: docs/language.md §3.)
 const std::vector<std::string> kTrickyPlaces = {"m", "add", "before", "from", "p", "av", "started", "timer_P0",
-                                                "UINT_MAX", "NULL", "assert", "memcpy", "bool_", "R0"};
+                                                "bool_", "R0"};
 const std::vector<std::string> kTrickyVars = {"m", "add", "before", "from", "p", "av", "status", "started",
-                                              "timer_P0", "timer_P1", "UINT_MAX", "NULL", "assert", "memcpy"};
+                                              "timer_P0", "timer_P1"};
 
 const std::vector<std::string> kFloatLiterals = {"0.5", "0.25", "1.5", "2.0", "0.1", "3.75", "1e-1",
                                                  "2.5e0", "0.3", "2.", ".5", "10.0", "0.0"};

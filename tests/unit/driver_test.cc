@@ -146,11 +146,11 @@ sfc Spare { initial place S; }
   CHECK(top.exit_code == 0);
   CHECK(top.out == "h.sfc:5:1: warning: sfc 'Spare' is neither compiled nor run by 'Top', the chart being compiled "
                    "[-Wunused-chart]\n"
-                   " sfc Spare { initial place S; }\n"
-                   " ^~~~~~~~~~~~~~~~~~~~~~~~~~~~~~\n"
+                   "    5 | sfc Spare { initial place S; }\n"
+                   "      | ^~~~~~~~~~~~~~~~~~~~~~~~~~~~~~\n"
                    "h.sfc:4:1: note: to use it, let a place or state of 'Top' run it ('runs Spare')\n"
-                   " sfc Top { initial place A runs Mid; place B; A -> B when succeeded(A); }\n"
-                   " ^~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~\n");
+                   "    4 | sfc Top { initial place A runs Mid; place B; A -> B when succeeded(A); }\n"
+                   "      | ^~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~\n");
   // Without Spare, Top is the only root and needs no --chart.
   write_file(dir + "/h2.sfc", R"(interface R { bool Ready(); void Go(); }
 sfc Leaf { initial place L { Go(); } }
