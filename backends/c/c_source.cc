@@ -121,6 +121,16 @@ void init(CodeWriter &w, const Context &c) {
   w.line("}");
 }
 
+/// The run function in the engine form the layout chose for this chart (or instance).
+void run_function(CodeWriter &w, const Context &c) {
+  if (c.fsm)
+    emit_fsm_run(w, c);
+  else if (c.readable())
+    emit_sfc_run(w, c);
+  else
+    emit_scalable_sfc_run(w, c);
+}
+
 /// An instance's stop (docs/language.md, "Sub-charts"): for each active place in declaration order, the stop of
 /// the place's own instance, then the place's exit block; innermost first.
 void stop(CodeWriter &w, const Context &c) {
@@ -172,12 +182,7 @@ void instance(CodeWriter &w, const Context &c) {
     stop(w, c);
     w.blank();
   }
-  if (c.fsm)
-    emit_fsm_run(w, c);
-  else if (c.readable())
-    emit_sfc_run(w, c);
-  else
-    emit_scalable_sfc_run(w, c);
+  run_function(w, c);
   w.blank();
 }
 
@@ -275,12 +280,7 @@ std::string emit_source(const Context &c) {
     team_functions(w, c);
     w.blank();
   }
-  if (c.fsm)
-    emit_fsm_run(w, c);
-  else if (c.readable())
-    emit_sfc_run(w, c);
-  else
-    emit_scalable_sfc_run(w, c);
+  run_function(w, c);
   w.blank();
   accessors(w, c);
   return w.take();

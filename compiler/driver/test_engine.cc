@@ -21,25 +21,6 @@ namespace {
 namespace fs = std::filesystem;
 using model::Type;
 
-const char *c_type(Type t) {
-  switch (t) {
-  case Type::Bool: return "bool";
-  case Type::Int: return "int";
-  case Type::Float: return "float";
-  case Type::Double: return "double";
-  default: return "void";
-  }
-}
-
-/// printf format and argument printing `name` of type `t` as interp::format_value does.
-std::pair<std::string, std::string> printf_of(Type t, const std::string &name) {
-  switch (t) {
-  case Type::Bool: return {"%s", fmt::format("{} ? \"true\" : \"false\"", name)};
-  case Type::Int: return {"%d", name};
-  case Type::Float: return {"%.9g", "(double)" + name};
-  default: return {"%.17g", name};
-  }
-}
 
 /// The value a `set` line stored, as the function's type; 0 (false) until set.
 std::string result_of(Type t, int f) {
@@ -55,12 +36,12 @@ std::string result_of(Type t, int f) {
 void function(std::string &s, const model::Function &f, int index) {
   std::string params, format, args;
   for (std::size_t i = 0; i < f.params.size(); ++i) {
-    params += fmt::format("{}{} a{}", i ? ", " : "", c_type(f.params[i].type), i);
-    auto [fmt_, arg] = printf_of(f.params[i].type, fmt::format("a{}", i));
+    params += fmt::format("{}{} a{}", i ? ", " : "", model::type_name(f.params[i].type), i);
+    auto [fmt_, arg] = interp::c_printf_of(f.params[i].type, fmt::format("a{}", i));
     format += (i ? ", " : "") + fmt_;
     args += ", " + arg;
   }
-  s += fmt::format("{} {}({})\n{{\n", c_type(f.result), f.name, params.empty() ? "void" : params);
+  s += fmt::format("{} {}({})\n{{\n", model::type_name(f.result), f.name, params.empty() ? "void" : params);
   s += fmt::format("    printf(\"call {}({})\\n\"{});\n", f.name, format, args);
   if (f.result != Type::Void) s += fmt::format("    return {};\n", result_of(f.result, index));
   s += "}\n\n";
@@ -204,7 +185,7 @@ std::string harness_source(const model::Model &model, int chart, const std::stri
                    t);
   if (c.kind == model::Chart::Kind::Fsm) s += fmt::format("    printf(\"state %d %d\\n\", {0}_state(m), {0}_status(m));\n", t);
   for (std::size_t i = 0; i < c.vars.size(); ++i) {
-    auto [f, a] = printf_of(c.vars[i].type, "m->" + c.vars[i].name);
+    auto [f, a] = interp::c_printf_of(c.vars[i].type, "m->" + c.vars[i].name);
     s += fmt::format("    printf(\"var {} {}\\n\", {});\n", i, f, a);
   }
   // The engine's field names, as the C back end gives them (backends/c/c_context.cc): the

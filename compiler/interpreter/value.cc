@@ -113,4 +113,13 @@ std::string format_value(const Value &v) {
   }
 }
 
+std::pair<std::string, std::string> c_printf_of(model::Type t, const std::string &expr) {
+  switch (t) {
+  case model::Type::Bool: return {"%s", fmt::format("{} ? \"true\" : \"false\"", expr)};
+  case model::Type::Int: return {"%d", expr};
+  case model::Type::Float: return {"%.9g", "(double)" + expr};
+  default: return {"%.17g", expr};
+  }
+}
+
 } // namespace gfec::interp

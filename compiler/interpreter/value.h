@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace gfec::interp {
 
@@ -42,5 +43,9 @@ Value convert(const Value &v, model::Type to, SourceRange where);
 /// The value as the log prints it: `true`/`false`, `42`, floats with 9 and doubles with 17
 /// significant digits (printf's `%.9g` / `%.17g`, so that an engine prints the same).
 std::string format_value(const Value &v);
+
+/// The printf format and argument with which generated C (a test harness) prints `expr`, a value
+/// of type `t`, exactly as format_value prints it; the C type itself is model::type_name(t).
+std::pair<std::string, std::string> c_printf_of(model::Type t, const std::string &expr);
 
 } // namespace gfec::interp

@@ -1,30 +1,12 @@
 #include "c_driver.h"
 
+#include "interpreter/value.h"
+
 #include <fmt/format.h>
 
 namespace gfec::diff {
 
 namespace {
-
-const char *c_type(Type t) {
-  switch (t) {
-  case Type::Bool: return "bool";
-  case Type::Int: return "int";
-  case Type::Float: return "float";
-  case Type::Double: return "double";
-  default: return "void";
-  }
-}
-
-/// printf format and argument for a value of type t held in `name`, as format_value prints it.
-std::pair<std::string, std::string> printf_of(Type t, const std::string &name) {
-  switch (t) {
-  case Type::Bool: return {"%s", fmt::format("{} ? \"true\" : \"false\"", name)};
-  case Type::Int: return {"%d", name};
-  case Type::Float: return {"%.9g", "(double)" + name};
-  default: return {"%.17g", name};
-  }
-}
 
 std::string c_string(const std::string &s) {
   std::string out = "\"";
@@ -36,8 +18,8 @@ void function(std::string &s, const DriverCase &c, std::size_t index) {
   const GFunction &f = c.chart->functions[index];
   std::string params, format, args;
   for (std::size_t i = 0; i < f.params.size(); ++i) {
-    params += fmt::format("{}{} a{}", i ? ", " : "", c_type(f.params[i]), i);
-    auto [fmt_, arg] = printf_of(f.params[i], fmt::format("a{}", i));
+    params += fmt::format("{}{} a{}", i ? ", " : "", model::type_name(f.params[i]), i);
+    auto [fmt_, arg] = interp::c_printf_of(f.params[i], fmt::format("a{}", i));
     format += (i ? ", " : "") + fmt_;
     args += ", " + arg;
   }
@@ -48,10 +30,10 @@ void function(std::string &s, const DriverCase &c, std::size_t index) {
   }
   std::string values;
   for (const auto &v : c.trace->values[index]) values += (values.empty() ? "" : ", ") + v;
-  s += fmt::format("const {} d{}_{}[{}] = {{{}}};\n", c_type(f.result), c.id, f.name, c.trace->ticks, values);
-  auto [rfmt, rarg] = printf_of(f.result, "v");
+  s += fmt::format("const {} d{}_{}[{}] = {{{}}};\n", model::type_name(f.result), c.id, f.name, c.trace->ticks, values);
+  auto [rfmt, rarg] = interp::c_printf_of(f.result, "v");
   s += fmt::format("{} {}({})\n{{\n    {} v = d{}_{}[d_tick];\n    printf(\"call {}({}) = {}\\n\"{}, {});\n    return v;\n}}\n\n",
-                   c_type(f.result), f.name, params, c_type(f.result), c.id, f.name, f.name, format, rfmt, args, rarg);
+                   model::type_name(f.result), f.name, params, model::type_name(f.result), c.id, f.name, f.name, format, rfmt, args, rarg);
 }
 
 void names(std::string &s, const std::string &array, const std::vector<std::string> &list) {
