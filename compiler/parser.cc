@@ -939,9 +939,12 @@ void Parser::test_step(Test &test) {
     if (at(Tok::Int)) {
       Token n = take();
       // Too large for a count is as wrong as 0; the validator says so at the number.
+      // The digits live in a named string: `end` points into them. Base 10, as every integer
+      // literal of the language (a leading zero is not octal).
       errno = 0;
+      const std::string digits(n.text);
       char *end = nullptr;
-      long long v = std::strtoll(std::string(n.text).c_str(), &end, 0);
+      long long v = std::strtoll(digits.c_str(), &end, 10);
       step.count = errno == ERANGE || *end ? -1 : v;
       step.value = make(Expr::Kind::Int, n.range);
       step.value->text = std::string(n.text);

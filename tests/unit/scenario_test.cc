@@ -60,17 +60,19 @@ struct Checked {
 } // namespace
 
 TEST_CASE("a test block parses into its steps", "[scenario]") {
-  test::FrontEnd fe({{"t.test", "test \"x\" of Line { tick; tick 3; set Black = true; expect called Go(1) && calls Go == 2 && status == 0 && state(S); }\n"}});
+  // `tick 010` is ten ticks: integer literals are decimal (docs/language.md §1), never octal.
+  test::FrontEnd fe({{"t.test", "test \"x\" of Line { tick; tick 3; set Black = true; expect called Go(1) && calls Go == 2 && status == 0 && state(S); tick 010; }\n"}});
   REQUIRE(fe.text() == "");
   const auto &t = fe.loaded.program.files.front()->tests.at(0);
   CHECK(t.name == "x");
   CHECK(t.chart.text == "Line");
-  REQUIRE(t.steps.size() == 4);
+  REQUIRE(t.steps.size() == 5);
   CHECK(t.steps[0].count == 1);
   CHECK(t.steps[1].count == 3);
   CHECK(t.steps[2].kind == ast::TestStep::Kind::Set);
   CHECK(t.steps[2].function.text == "Black");
   CHECK(t.steps[3].kind == ast::TestStep::Kind::Expect);
+  CHECK(t.steps[4].count == 10);
 }
 
 TEST_CASE("tick, set, expect, called, calls and status are keywords only inside a test", "[scenario]") {
