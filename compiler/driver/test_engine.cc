@@ -1,6 +1,7 @@
 #include "test_engine.h"
 
 #include "backend_registry.h"
+#include "c_context.h"
 #include "interpreter/value.h"
 #include "scenario/snapshot.h"
 
@@ -10,7 +11,6 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
-#include <set>
 #include <sstream>
 #include <sys/wait.h>
 
@@ -168,7 +168,10 @@ std::vector<int> engine_functions(const model::Model &model, int root) {
 
 } // namespace
 
-std::string harness_source(const model::Model &model, int chart, const std::string &header) {
+std::string harness_source(const model::Model &model, int chart, const EmitOptions &options,
+                           const std::string &header) {
+  // The engine's field names as the C back end chose them for this chart (vars, timers).
+  const auto fields = c_backend::make_context(model, model.charts.at(static_cast<std::size_t>(chart)), options);
   const model::Chart &c = model.charts[static_cast<std::size_t>(chart)];
   const std::string &t = c.name;
   std::string s = fmt::format(
@@ -185,21 +188,12 @@ std::string harness_source(const model::Model &model, int chart, const std::stri
                    t);
   if (c.kind == model::Chart::Kind::Fsm) s += fmt::format("    printf(\"state %d %d\\n\", {0}_state(m), {0}_status(m));\n", t);
   for (std::size_t i = 0; i < c.vars.size(); ++i) {
-    auto [f, a] = interp::c_printf_of(c.vars[i].type, "m->" + c.vars[i].name);
+    auto [f, a] = interp::c_printf_of(c.vars[i].type, "m->" + fields->var_field[i]);
     s += fmt::format("    printf(\"var {} {}\\n\", {});\n", i, f, a);
   }
-  // The engine's field names, as the C back end gives them (backends/c/c_context.cc): the
-  // variables keep their names, then its own fields, then a timer per timed place, each made
-  // unique by appending '_'.
-  std::set<std::string> fields;
-  for (const auto &v : c.vars) fields.insert(v.name);
-  for (const char *own : {"av", "state", "status", "started", "current", "active", "candidates"}) fields.insert(own);
-  for (std::size_t p = 0; p < c.places.size(); ++p) {
-    if (!c.places[p].timed) continue;
-    std::string field = "timer_" + c.places[p].name;
-    while (!fields.insert(field).second) field += '_';
-    s += fmt::format("    printf(\"timer {} %lu\\n\", (unsigned long)m->{});\n", p, field);
-  }
+  for (std::size_t p = 0; p < c.places.size(); ++p)
+    if (c.places[p].timed)
+      s += fmt::format("    printf(\"timer {} %lu\\n\", (unsigned long)m->{});\n", p, fields->timer_field[p]);
   s += "    printf(\"end\\n\");\n}\n\n";
   s += fmt::format("int main(void)\n{{\n    static {0} m;\n    char word[16];\n    {0}_init(&m);\n    h_dump(&m);\n"
                    "    while (scanf(\"%15s\", word) == 1) {{\n"
@@ -242,7 +236,7 @@ EngineBuilds::Build EngineBuilds::get(const model::Model &model, int chart, cons
   } catch (const std::exception &e) {
     return {"", e.what()};
   }
-  std::string harness = harness_source(model, chart, "engine.h");
+  std::string harness = harness_source(model, chart, o, "engine.h");
   const char *cc_env = std::getenv("CC");
   std::string cc = cc_env && *cc_env ? cc_env : "cc";
   std::string all = cc + '\0' + harness;

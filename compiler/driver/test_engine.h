@@ -18,6 +18,7 @@
 // Lines it does not know (a verbatim block's printf, say) are ignored.
 #pragma once
 
+#include "backend.h"
 #include "model.h"
 #include "scenario/reference_run.h"
 #include "scenario/scenario.h"
@@ -57,7 +58,8 @@ private:
   std::map<std::size_t, Build> builds_;  ///< by hash of the generated engine and harness
 };
 
-/// harness.c for chart `chart`, whose engine's header is `header`.
-std::string harness_source(const model::Model &model, int chart, const std::string &header);
+/// harness.c for chart `chart`, whose engine (emitted with `options`) has the header `header`.
+std::string harness_source(const model::Model &model, int chart, const EmitOptions &options,
+                           const std::string &header);
 
 } // namespace gfec
