@@ -375,6 +375,16 @@ Period Parser::period() {
   return {d.duration_ms, from(begin)};
 }
 
+/// The value of an INT token used as a count (`team N`, `tick N`): decimal, as every integer
+/// literal of the language (a leading zero is not octal); -1 if it does not fit a long long.
+long long count_of(const Token &n) {
+  const std::string digits(n.text);  // strtoll's end pointer points into it
+  errno = 0;
+  char *end = nullptr;
+  long long value = std::strtoll(digits.c_str(), &end, 10);
+  return errno != 0 || *end != '\0' ? -1 : value;
+}
+
 //G team: 'team' INT ';'
 void Parser::team_decl(Chart &c) {
   std::uint32_t begin = here();
@@ -382,12 +392,7 @@ void Parser::team_decl(Chart &c) {
   Token n = expect(Tok::Int, "after 'team' (the number of agents, e.g. 'team 4;')");
   expect(Tok::Semi, "after the team size");
   // The validator checks the size; a number beyond long long is as wrong as 0.
-  errno = 0;
-  char *end = nullptr;
-  std::string digits(n.text);
-  long long value = std::strtoll(digits.c_str(), &end, 10);
-  if (errno != 0 || *end != '\0') value = -1;
-  c.teams.emplace_back(value, from(begin));
+  c.teams.emplace_back(count_of(n), from(begin));
 }
 
 //G place: [ 'initial' ] 'place' IDENT [ 'runs' IDENT ] ( ';' | place_body )
@@ -939,13 +944,7 @@ void Parser::test_step(Test &test) {
     if (at(Tok::Int)) {
       Token n = take();
       // Too large for a count is as wrong as 0; the validator says so at the number.
-      // The digits live in a named string: `end` points into them. Base 10, as every integer
-      // literal of the language (a leading zero is not octal).
-      errno = 0;
-      const std::string digits(n.text);
-      char *end = nullptr;
-      long long v = std::strtoll(digits.c_str(), &end, 10);
-      step.count = errno == ERANGE || *end ? -1 : v;
+      step.count = count_of(n);
       step.value = make(Expr::Kind::Int, n.range);
       step.value->text = std::string(n.text);
       step.value->spelling = step.value->text;

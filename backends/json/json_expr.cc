@@ -129,7 +129,7 @@ Json expression_tree(const model::Model &m, const Scope &scope, const Expr &e) {
     break;
   }
   case Expr::Kind::Succeeded:
-  case Expr::Kind::Failed: j["place"] = scope.chart ? name_at(scope.chart->places, e.index) : "?"; break;
+  case Expr::Kind::Failed:
   case Expr::Kind::TeamCount: j["place"] = scope.chart ? name_at(scope.chart->places, e.index) : "?"; break;
   default: break;
   }
