@@ -11,6 +11,7 @@
 #include <map>
 #include <memory>
 #include <numeric>
+#include <set>
 
 namespace gfec::alica {
 
@@ -70,6 +71,35 @@ void index_ids(const JsonValue &v, std::map<std::string, const JsonValue *> &out
   }
 }
 
+/// The ALICA files that are not plans, by extension: read as ALICA so that `gfec --check etc/*/*`
+/// says what each one is instead of reporting JSON as chart syntax.
+const char *file_kind(const std::string &path) {
+  static const std::pair<const char *, const char *> kinds[] = {
+      {".beh", "an ALICA behaviour"},
+      {".pty", "an ALICA plan type"},
+      {".tsk", "an ALICA task repository"},
+      {".cnd", "an ALICA condition repository"},
+      {".plc", "an ALICA placeholder"},
+      {".pmlex", "the ALICA designer's layout of a plan"},
+      {".rset", "an ALICA role set"},
+      {".rst", "an ALICA role set"},
+      {".rdefset", "an ALICA role definition set"},
+      {".cdefset", "an ALICA capability definition set"},
+      {".cfg", "an ALICA configuration"},
+      {".pp", "an ALICA planning problem"},
+  };
+  std::string ext = extension_of(path);
+  for (const auto &[e, kind] : kinds)
+    if (ext == e) return kind;
+  return nullptr;
+}
+
+/// An element's name for messages: "" when the designer wrote none (MISSING_NAME, the id).
+std::string label_of(const JsonValue &v) {
+  std::string name = v.string_of("name");
+  return meaningful(name) ? name : "";
+}
+
 bool non_empty(const JsonValue *v) {
   if (!v || v->is_null()) return false;
   if (v->is_array()) return !v->items.empty();
@@ -106,13 +136,16 @@ private:
     if (!doc->root) return;
     const JsonValue &root = *doc->root;
     if (!root.is_object() || (!root.find("states") && !root.find("entryPoints"))) {
-      diag_.error(range(*doc, root), "alica-format",
-                  fmt::format("'{}' is not an ALICA plan: a plan is a JSON object with \"entryPoints\" and \"states\"",
-                              doc->path));
+      auto &d = diag_.error(range(*doc, root), "alica-format",
+                            fmt::format("'{}' is not an ALICA plan: a plan is a JSON object with \"entryPoints\" and "
+                                        "\"states\"", doc->path));
+      if (const char *kind = file_kind(doc->path))
+        d.note(fmt::format("this is {}; gfec compiles plans (.pml): give it the plans that use this file, which it "
+                           "then reads too", kind));
       return;
     }
     main_->interfaces.emplace_back();
-    main_->interfaces.back().name = {identifier(root.string_of("name"), "Plan") + "Functions", range(*doc, root)};
+    main_->interfaces.back().name = {identifier(label_of(root), "Plan") + "Functions", range(*doc, root)};
     main_->interfaces.back().range = range(*doc, root);
     plan_chart(*doc, root);
     // An interface with no function would only add an empty block to the converted text.
@@ -125,8 +158,9 @@ private:
     result_.elements.push_back({range(d, v), std::move(description)});
   }
 
-  void ignored(const Doc &d, const JsonValue &v, std::string message) {
-    diag_.warning(Warning::AlicaIgnored, range(d, v), std::move(message));
+  void ignored(const Doc &d, const JsonValue &v, std::string message) { ignored(range(d, v), std::move(message)); }
+  void ignored(const SourceRange &at, std::string message) {
+    diag_.warning(Warning::AlicaIgnored, at, std::move(message));
   }
 
   // ------------------------------------------------------------ files and references
@@ -188,9 +222,62 @@ private:
       add(up / file);
       if (ext == ".tsk") add(up / "tasks" / file);
       if (ext == ".cnd") add(up / "conditions" / file);
+      if (ext == ".beh") add(up / "behaviours" / file);
       add(up / "plans" / file);
+      // The folders of ALICA's layouts over the years (etc/behaviours, etc/plans/Behaviours,
+      // etc/Misc for the task repository of the XML era, ...), for any kind of file.
+      for (const char *folder : {"behaviours", "Behaviours", "conditions", "tasks", "placeholders", "Misc"})
+        add(up / folder / file);
     }
     return out;
+  }
+
+  /// ALICA's engine finds a referenced file anywhere below its configuration folder, and the
+  /// designer leaves stale paths behind when files move: the last resort is the file of that
+  /// name (and trailing folders) below the folder above the plans' root, nearest first.
+  std::optional<std::string> search_below(const std::string &file, const Doc &from) {
+    fsys::path dir = fsys::path(from.path).parent_path();
+    std::string rel = from.root && from.root->is_object() ? from.root->string_of("relativeDirectory") : "";
+    for (const auto &part : fsys::path(rel).lexically_normal())
+      if (!part.empty() && part != ".") dir /= "..";
+    std::string root = normal(dir / "..");
+    auto &files = trees_[root];
+    if (!trees_listed_.count(root)) {
+      trees_listed_.insert(root);
+      // Bounded, so that a plan next to a huge folder tree stays fast: ALICA's folders are a few
+      // levels deep and hold hundreds of files.
+      std::error_code ec;
+      constexpr int kMaxDepth = 5;
+      constexpr std::size_t kMaxEntries = 20000;
+      std::size_t seen = 0;
+      fsys::recursive_directory_iterator it(root.empty() ? "." : root, fsys::directory_options::skip_permission_denied, ec);
+      for (fsys::recursive_directory_iterator end; !ec && it != end && seen < kMaxEntries; it.increment(ec), ++seen) {
+        std::string name = it->path().filename().string();
+        if (it->is_directory(ec)) {
+          if (it.depth() >= kMaxDepth || (!name.empty() && name[0] == '.')) it.disable_recursion_pending();
+          continue;
+        }
+        if (it->is_regular_file(ec)) files.push_back(normal(it->path()));
+      }
+      std::sort(files.begin(), files.end(), [](const std::string &a, const std::string &b) {
+        auto depth = [](const std::string &p) { return std::count(p.begin(), p.end(), '/'); };
+        return depth(a) != depth(b) ? depth(a) < depth(b) : a < b;
+      });
+    }
+    // "../Misc/x.tsk" and "Behaviours/y.beh": match the trailing folders that name something.
+    std::string want;
+    for (const auto &part : fsys::path(file).lexically_normal())
+      if (part != ".." && part != "." && !part.empty()) want += (want.empty() ? "" : "/") + part.generic_string();
+    if (want.empty()) return std::nullopt;
+    for (const auto &f : files)
+      if (f == want || (f.size() > want.size() && f.compare(f.size() - want.size(), want.size(), want) == 0 &&
+                        f[f.size() - want.size() - 1] == '/'))
+        return f;
+    std::string base = fsys::path(want).filename().string();
+    if (base == want) return std::nullopt;
+    for (const auto &f : files)
+      if (fsys::path(f).filename().string() == base) return f;
+    return std::nullopt;
   }
 
   Doc *find_doc(const std::string &file, const Doc &from, const SourceRange &at) {
@@ -199,6 +286,11 @@ private:
       auto seen = docs_.find(path);
       if (seen != docs_.end()) return seen->second.get();
       if (auto text = fs_.read(path)) return open(path, std::move(*text));
+    }
+    if (auto found = search_below(file, from)) {
+      auto seen = docs_.find(*found);
+      if (seen != docs_.end()) return seen->second.get();
+      if (auto text = fs_.read(*found)) return open(*found, std::move(*text));
     }
     auto &d = diag_.error(at, "alica-reference", fmt::format("cannot find '{}', referenced here", file));
     suggest_file(d, file, tried);
@@ -244,7 +336,7 @@ private:
       const JsonValue &root = *doc->root;
       if (auto rid = id_of(root.find("id")))
         d.note(range(*doc, root), fmt::format("did you mean '{}' (id {}), which the file holds?",
-                                              root.string_of("name"), *rid));
+                                              label_of(root), *rid));
       return {};
     }
     return {doc, it->second};
@@ -270,7 +362,7 @@ private:
     std::string key = t.doc->path + "#" + id;
     auto it = functions_.find(key);
     if (it != functions_.end()) return it->second;
-    std::string label = t.object->string_of("name");
+    std::string label = label_of(*t.object);
     std::string name = global_name(label, id, "Behaviour");
     functions_[key] = name;
     declare(name, "void", range(*t.doc, *t.object));
@@ -282,6 +374,9 @@ private:
     if (const JsonValue *v = t.object->find("variables"); non_empty(v))
       ignored(*t.doc, *v, fmt::format("the variables of behaviour '{}' (id {}) are ignored: a gfec action function "
                                       "takes no arguments", label, id));
+    if (const JsonValue *v = t.object->find("blackboard"); non_empty(v))
+      ignored(*t.doc, *v, fmt::format("the blackboard of behaviour '{}' (id {}) is ignored: gfec has no blackboard, "
+                                      "'{}()' takes no arguments", label, id, name));
     return name;
   }
 
@@ -291,7 +386,7 @@ private:
     std::string key = doc.path + "#" + id;
     auto it = functions_.find(key);
     if (it != functions_.end()) return it->second;
-    std::string label = cond.string_of("name");
+    std::string label = label_of(cond);
     std::string name = globals_.take(identifier(meaningful(label) ? label : fallback, "Condition" + id), id);
     functions_[key] = name;
     declare(name, "bool", range(doc, cond));
@@ -301,6 +396,9 @@ private:
                                    "arguments", label, id, name));
     if (const JsonValue *v = cond.find("variables"); non_empty(v))
       ignored(doc, *v, fmt::format("the variables of condition '{}' (id {}) are ignored", label, id));
+    if (const JsonValue *v = cond.find("blackboard"); non_empty(v))
+      ignored(doc, *v, fmt::format("the blackboard inputs of condition '{}' (id {}) are ignored: gfec has no "
+                                   "blackboard, '{}()' takes no arguments", label, id, name));
     return name;
   }
 
@@ -320,7 +418,7 @@ private:
     std::string key = doc.path + "#" + id;
     auto it = plan_charts_.find(key);
     if (it != plan_charts_.end()) return it->second;
-    std::string name = global_name(plan.string_of("name"), id, "Plan");
+    std::string name = global_name(label_of(plan), id, "Plan");
     plan_charts_[key] = name;  // before the states: a plan that runs itself stops here
     const JsonValue *entries = plan.find("entryPoints");
     fsm_charts_[name] = !entries || !entries->is_array() || entries->items.size() <= 1;
@@ -330,7 +428,7 @@ private:
 
   /// The chart a plan type runs: its first activated plan.
   std::string plan_type_chart(const Target &t, const SourceRange &at) {
-    std::string label = t.object->string_of("name");
+    std::string label = label_of(*t.object);
     std::string id = id_of(t.object->find("id")).value_or("");
     const JsonValue *list = t.object->find("annotatedPlans");
     if (!list) list = t.object->find("plans");
@@ -380,24 +478,24 @@ private:
       for (const auto &s : syncs->items)
         if (s.is_object())
           ignored(doc, s, fmt::format("synchronisation '{}' (id {}) of {} is ignored: gfec fires each transition "
-                                      "on its own condition", s.string_of("name"), id_of(s.find("id")).value_or("?"),
+                                      "on its own condition", label_of(s), id_of(s.find("id")).value_or("?"),
                                       what));
   }
 
   /// The entry point's label: its name, else its task's name, else "EntryPoint<id>".
   std::string entry_label(Doc &doc, const JsonValue &ep) {
-    std::string name = ep.string_of("name");
+    std::string name = label_of(ep);
     const JsonValue *task = ep.find("task");
     if (task && task->is_string() && !task->text.empty()) {
       Target t = resolve(task->text, doc, range(doc, *task));
-      if (t.object && !meaningful(name)) name = t.object->string_of("name");
+      if (t.object && !meaningful(name)) name = label_of(*t.object);
     }
     return name;
   }
 
   void convert_plan(Doc &doc, const JsonValue &plan, const std::string &name) {
     std::string plan_id = id_of(plan.find("id")).value_or("");
-    std::string what = fmt::format("plan '{}' (id {})", plan.string_of("name"), plan_id);
+    std::string what = fmt::format("plan '{}' (id {})", label_of(plan), plan_id);
     element(doc, plan, "ALICA " + what);
     plan_warnings(doc, plan, what);
 
@@ -473,7 +571,7 @@ private:
         diag_.error(range(doc, ep), "alica-format",
                     fmt::format("entry point '{}' (id {}) starts in state '{}', which entry point '{}' already "
                                 "reaches: gfec gives each entry point a machine of its own states",
-                                label, ep_id, states[*start]->string_of("name"),
+                                label, ep_id, label_of(*states[*start]),
                                 machines[owner[*start]].chart.name.text))
             .note(range(doc, *states[*start]), "the state is here");
         continue;
@@ -563,8 +661,9 @@ private:
         if (!w.is_object()) continue;
         if (const JsonValue *ap = w.find("abstractPlan"); ap && ap->is_string()) add_string(*ap);
         if (const JsonValue *c = w.find("configuration"); non_empty(c))
-          ignored(doc, *c, fmt::format("the configuration of a plan in {} is ignored: gfec sub-charts take no "
-                                       "parameters", what));
+          ignored(doc, *c, fmt::format("the configuration {}of '{}' in {} is ignored: gfec sub-charts and action "
+                                       "functions take no parameters", c->is_string() ? "'" + c->text + "' " : "",
+                                       w.string_of("abstractPlan"), what));
       }
     for (const char *key : {"abstractPlans", "plans"}) {
       const JsonValue *list = state.find(key);
@@ -583,7 +682,7 @@ private:
     p.is_state = true;
     p.range = range(doc, state);
     std::string id = id_of(state.find("id")).value_or("");
-    std::string label = state.string_of("name");
+    std::string label = label_of(state);
     gfec_name = m.states.take(identifier(label, "State" + id), id);
     p.name = {gfec_name, p.range};
     p.initial = id == m.entry_state;
@@ -610,6 +709,12 @@ private:
         continue;
       }
       std::string ext = extension_of(ref->file.empty() ? doc.path : ref->file);
+      if (ext == ".plc") {
+        ignored(at, fmt::format("{} holds the placeholder '{}', which is ignored: ALICA picks the "
+                                           "plan or behaviour behind a placeholder at run time, gfec has nothing to run "
+                                           "for it", what, text));
+        continue;
+      }
       if (ext != ".beh" && ext != ".pml" && ext != ".pty") {
         diag_.error(at, "alica-reference",
                     fmt::format("{} holds '{}': gfec knows behaviours (.beh), plans (.pml) and plan types (.pty)", what,
@@ -643,10 +748,21 @@ private:
     return p;
   }
 
-  /// ALICA's standard conditions on the plan a state runs: `succeeded(S)` / `failed(S)` when
-  /// state S runs an fsm (a state runs one plan in gfec, so "any" and "all" children agree).
+  /// ALICA's standard conditions: `true` / `false` for AlwaysTrueCondition / AlwaysFalseCondition;
+  /// on the plan a state runs, `succeeded(S)` / `failed(S)` when state S runs an fsm (a state runs
+  /// one plan in gfec, so "any" and "all" children agree).
   ast::ExprPtr child_outcome(const JsonValue &cond, const ast::Place *source, const SourceRange &at) {
-    std::string name = cond.string_of("name");
+    std::string name = label_of(cond);
+    std::string library = cond.string_of("libraryName");
+    if ((name == "AlwaysTrueCondition" || name == "AlwaysFalseCondition") &&
+        (library.empty() || library == "alica_standard_library")) {
+      // The standard library's constants need no function of the robot library.
+      auto e = std::make_unique<ast::Expr>();
+      e->kind = ast::Expr::Kind::Bool;
+      e->range = at;
+      e->bool_value = name == "AlwaysTrueCondition";
+      return e;
+    }
     bool success = name == "AnyChildSuccess" || name == "AllChildSuccess";
     bool failure = name == "AnyChildFailure" || name == "AllChildFailure";
     if ((!success && !failure) || !source || !source->runs || !fsm_charts_[source->runs->text]) return nullptr;
@@ -663,7 +779,7 @@ private:
   void convert_transition(Doc &doc, const JsonValue &t, std::vector<Machine> &machines, const std::vector<int> &owner,
                           const std::vector<std::string> &state_names, StateOf state_of, const std::string &plan_what) {
     std::string id = id_of(t.find("id")).value_or("");
-    std::string label = t.string_of("name");
+    std::string label = label_of(t);
     std::string what = fmt::format("transition '{}' (id {}) of {}", label, id, plan_what);
     element(doc, t, "ALICA " + what);
     auto from = state_of(t.find("inState")), to = state_of(t.find("outState"));
@@ -716,6 +832,8 @@ private:
   LoadResult &result_;
   ast::File *main_ = nullptr;
   std::map<std::string, std::unique_ptr<Doc>> docs_;
+  std::map<std::string, std::vector<std::string>> trees_;  ///< search_below: root -> files below it
+  std::set<std::string> trees_listed_;
   std::map<std::string, std::string> plan_charts_;  ///< "path#id" -> chart name
   std::map<std::string, bool> fsm_charts_;          ///< chart name -> it is an fsm (one entry point)
   std::map<std::string, std::string> functions_;    ///< "path#id" of a behaviour or condition -> function
@@ -724,7 +842,7 @@ private:
 
 } // namespace
 
-bool is_alica_path(const std::string &path) { return extension_of(path) == ".pml"; }
+bool is_alica_path(const std::string &path) { return extension_of(path) == ".pml" || file_kind(path); }
 
 void read_alica_program(const std::string &main_path, std::string text, const LoadOptions &options,
                         const FileSystem &fs, SourceManager &sources, Diagnostics &diag, LoadResult &result) {

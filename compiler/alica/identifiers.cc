@@ -6,8 +6,10 @@ namespace gfec::alica {
 
 namespace {
 
-// gfec's keywords and built-ins (docs/language.md), then C's: a name from either would not
-// parse, or would not compile once it reaches the generated C.
+// gfec's keywords and built-ins (docs/language.md), then C's and C++'s, the names the C engine
+// defines itself and a few of the C headers it includes: a name from any of them would not
+// parse, or the validator would refuse it, or it would not compile once it reaches the
+// generated code. ALICA allows them all ("init" is a common state name).
 const char *const kReserved[] = {
     "sfc", "fsm", "plan", "toolbox", "interface", "import", "var", "const", "initial", "place", "state",
     "transition", "when", "success", "failure", "post", "period", "actor", "computation", "supervisor",
@@ -17,6 +19,18 @@ const char *const kReserved[] = {
     "object", "auto", "break", "case", "char", "continue", "default", "do", "enum", "extern", "for", "goto",
     "inline", "long", "register", "restrict", "return", "short", "signed", "sizeof", "static", "struct",
     "switch", "typedef", "union", "unsigned", "volatile", "while", "main",
+    // C++ (the C++ back end) and C11
+    "alignas", "alignof", "and", "and_eq", "asm", "bitand", "bitor", "catch", "char16_t", "char32_t", "class",
+    "compl", "constexpr", "const_cast", "decltype", "delete", "dynamic_cast", "explicit", "export", "friend",
+    "mutable", "namespace", "new", "noexcept", "not", "not_eq", "nullptr", "operator", "or", "or_eq", "private",
+    "protected", "public", "reinterpret_cast", "static_assert", "static_cast", "template", "this",
+    "thread_local", "throw", "try", "typeid", "typename", "using", "virtual", "wchar_t", "xor", "xor_eq",
+    // the engine's own members and constants
+    "run", "activation", "PLACE_COUNT", "HOOKS", "CHECKS", "activated", "enabled", "TRANSITION_COUNT",
+    "set_agent", "report", "TEAM_SIZE",
+    // the C headers' macros and types most likely to be a plan's word
+    "NULL", "EOF", "assert", "errno", "offsetof", "size_t", "ptrdiff_t", "memcpy", "memset", "memcmp",
+    "memmove", "strlen", "NDEBUG",
 };
 
 bool reserved(const std::string &s) {
@@ -31,7 +45,10 @@ bool ident_char(char c) {
 
 } // namespace
 
-bool meaningful(const std::string &name) { return !name.empty() && name != "MISSING_NAME"; }
+bool meaningful(const std::string &name) {
+  // The designers write MISSING_NAME, or the element's id as its name, when the user gave none.
+  return !name.empty() && name != "MISSING_NAME" && name.find_first_not_of("0123456789") != std::string::npos;
+}
 
 std::string identifier(const std::string &text, const std::string &fallback) {
   std::string out;
@@ -47,7 +64,10 @@ std::string identifier(const std::string &text, const std::string &fallback) {
   }
   if (!meaningful(text) || out.empty() || out == "_") return fallback;
   if (out[0] >= '0' && out[0] <= '9') out = "N" + out;
-  if (reserved(out)) out += '_';
+  // <stdint.h>'s intN_t / uintN_t family is reserved as well.
+  bool int_type = out.size() > 5 && out.compare(out.size() - 2, 2, "_t") == 0 &&
+                  (out.rfind("int", 0) == 0 || out.rfind("uint", 0) == 0);
+  if (reserved(out) || int_type) out += '_';
   return out;
 }
 
