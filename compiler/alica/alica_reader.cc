@@ -2,6 +2,7 @@
 
 #include "alica/identifiers.h"
 #include "alica/json_tree.h"
+#include "file_system.h"
 #include "validate/suggest.h"
 
 #include <fmt/format.h>
@@ -236,6 +237,8 @@ private:
   /// designer leaves stale paths behind when files move: the last resort is the file of that
   /// name (and trailing folders) below the folder above the plans' root, nearest first.
   std::optional<std::string> search_below(const std::string &file, const Doc &from) {
+    // Only on disk: an in-memory file system (the loader's tests) has no folders to walk.
+    if (!dynamic_cast<const RealFileSystem *>(&fs_)) return std::nullopt;
     fsys::path dir = fsys::path(from.path).parent_path();
     std::string rel = from.root && from.root->is_object() ? from.root->string_of("relativeDirectory") : "";
     for (const auto &part : fsys::path(rel).lexically_normal())
@@ -294,7 +297,10 @@ private:
     }
     auto &d = diag_.error(at, "alica-reference", fmt::format("cannot find '{}', referenced here", file));
     suggest_file(d, file, tried);
-    for (const auto &t : tried) d.note(fmt::format("looked for '{}'", t));
+    // The folders that exist (hold files), not every folder of every layout gfec knows.
+    for (const auto &t : tried)
+      if (&t == &tried.front() || !fs_.list(normal(fsys::path(t).parent_path())).empty())
+        d.note(fmt::format("looked for '{}'", t));
     return nullptr;
   }
 
@@ -333,10 +339,24 @@ private:
     auto it = doc->by_id.find(ref->id);
     if (it == doc->by_id.end()) {
       auto &d = diag_.error(at, "alica-reference", fmt::format("'{}' has no element with id {}", doc->path, ref->id));
+      // A mistyped id: the element whose id is closest (a digit or two off); else, for a file
+      // that holds one element (a behaviour, a plan), that element.
+      const JsonValue *best = nullptr;
+      std::size_t best_distance = 3;
+      for (const auto &[id, object] : doc->by_id) {
+        if (!object->find("name")) continue;  // blackboard keys, mappings: not what references name
+        std::size_t dist = validation::edit_distance(ref->id, id);
+        if (dist < best_distance) {
+          best = object;
+          best_distance = dist;
+        }
+      }
       const JsonValue &root = *doc->root;
-      if (auto rid = id_of(root.find("id")))
-        d.note(range(*doc, root), fmt::format("did you mean '{}' (id {}), which the file holds?",
-                                              label_of(root), *rid));
+      bool repository = root.find("conditions") || root.find("tasks") || root.find("roles");
+      if (!best && !repository && id_of(root.find("id"))) best = &root;
+      if (best)
+        d.note(range(*doc, *best), fmt::format("did you mean '{}' (id {}), which the file holds?", label_of(*best),
+                                               *id_of(best->find("id"))));
       return {};
     }
     return {doc, it->second};
@@ -441,6 +461,11 @@ private:
         const JsonValue *plan = item.find("plan");
         if (plan && plan->is_string()) activated.emplace_back(plan->text, plan);
       }
+    bool first_use = plan_type_warned_.insert(t.object).second;
+    for (const char *key : {"variables", "variableBindings"})
+      if (const JsonValue *v = t.object->find(key); non_empty(v) && first_use)
+        ignored(*t.doc, *v, fmt::format("the {} of plan type '{}' (id {}) are ignored: gfec sub-charts share no "
+                                        "variables", key, label, id));
     if (activated.empty()) {
       diag_.error(at, "alica-reference", fmt::format("plan type '{}' (id {}) has no activated plan to run", label, id))
           .note(range(*t.doc, *t.object), "the plan type is here");
@@ -449,7 +474,7 @@ private:
     Target first = resolve(activated.front().first, *t.doc, range(*t.doc, *activated.front().second));
     if (!first.object) return "";
     std::string chart = plan_chart(*first.doc, *first.object);
-    if (activated.size() > 1) {
+    if (activated.size() > 1 && first_use) {
       std::string others;
       for (std::size_t i = 1; i < activated.size(); ++i)
         others += fmt::format("{}'{}'", i > 1 ? ", " : "", activated[i].first);
@@ -834,6 +859,7 @@ private:
   std::map<std::string, std::unique_ptr<Doc>> docs_;
   std::map<std::string, std::vector<std::string>> trees_;  ///< search_below: root -> files below it
   std::set<std::string> trees_listed_;
+  std::set<const JsonValue *> plan_type_warned_;  ///< a plan type used by several states warns once
   std::map<std::string, std::string> plan_charts_;  ///< "path#id" -> chart name
   std::map<std::string, bool> fsm_charts_;          ///< chart name -> it is an fsm (one entry point)
   std::map<std::string, std::string> functions_;    ///< "path#id" of a behaviour or condition -> function

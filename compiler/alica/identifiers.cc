@@ -26,7 +26,7 @@ const char *const kReserved[] = {
     "protected", "public", "reinterpret_cast", "static_assert", "static_cast", "template", "this",
     "thread_local", "throw", "try", "typeid", "typename", "using", "virtual", "wchar_t", "xor", "xor_eq",
     // the engine's own members and constants
-    "run", "activation", "PLACE_COUNT", "HOOKS", "CHECKS", "activated", "enabled", "TRANSITION_COUNT",
+    "init", "run", "activation", "PLACE_COUNT", "HOOKS", "CHECKS", "activated", "enabled", "TRANSITION_COUNT",
     "set_agent", "report", "TEAM_SIZE",
     // the C headers' macros and types most likely to be a plan's word
     "NULL", "EOF", "assert", "errno", "offsetof", "size_t", "ptrdiff_t", "memcpy", "memset", "memcmp",

@@ -66,6 +66,27 @@ set -e
 grep -q '"uri": *"plans/broken/SelfLoop.pml"' err || fail "sarif: $(cat err)"
 grep -q '"ruleId": *"self-transition"' err || fail "sarif rule: $(cat err)"
 
+# ALICA's current folder layout (etc/plans, etc/behaviours, etc/conditions, etc/placeholders,
+# etc/tasks) is found with no -I, a stale path by the search below etc/, and the engine compiles
+# with gcc and clang without a warning.
+"$gfec" --check -Wno-alica-ignored layout/etc/plans/Patrol.pml
+"$gfec" layout/etc/plans/Patrol.pml -o build/patrol.c -MD
+grep -q "layout/etc/behaviours/Turn.beh" build/patrol.d || fail "-MD misses the file found below etc/: $(cat build/patrol.d)"
+for cc in gcc clang; do
+  command -v $cc >/dev/null || continue
+  $cc -std=c99 -Wall -Wextra -Wpedantic -Werror -c build/patrol.c -o build/patrol.o || fail "$cc on patrol.c"
+done
+# ALICA's other files say what they are, located, exit 1; never read as chart text.
+for f in layout/etc/behaviours/Look.beh layout/etc/plans/sub/Sweeps.pty layout/etc/tasks/taskrepository.tsk \
+         layout/etc/conditions/ConditionRepository.cnd layout/etc/placeholders/Anything.plc; do
+  set +e
+  "$gfec" --check "$f" 2>err; code=$?
+  set -e
+  [ $code -eq 1 ] || fail "$f: exit $code"
+  grep -q "^$f:1:1: error: '$f' is not an ALICA plan" err || fail "$f: $(cat err)"
+  grep -q "note: this is an ALICA" err || fail "$f: $(cat err)"
+done
+
 # Converted to chart text, the plan compiles again.
 "$gfec" --emit=chart plans/Master.pml -o build/master.sfc
 "$gfec" build/master.sfc -o build/master.c

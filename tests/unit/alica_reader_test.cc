@@ -367,3 +367,131 @@ TEST_CASE("alica: ids above 2^53 are quoted exactly, never rounded", "[alica]") 
   CHECK(r.text.find("note: this is ALICA transition 'Again' (id 4611686018427387909) of plan 'Huge' (id "
                     "9223372036854775807)") != std::string::npos);
 }
+
+TEST_CASE("alica: the folder layouts of ALICA's own repositories are found, as ALICA's engine finds them",
+          "[alica]") {
+  // tests/alica/layout/etc: plans/, behaviours/, conditions/, placeholders/, tasks/, with a plan
+  // type and a plan in plans/sub/ whose paths are stale. Read from disk, as gfec reads it.
+  fs::path etc = kFixtures / "layout" / "etc";
+  SourceManager sources;
+  Diagnostics diag;
+  RealFileSystem real;
+  LoadResult loaded = load_program((etc / "plans" / "Patrol.pml").string(), {}, real, sources, diag);
+  model::Model model;
+  if (!diag.has_errors()) model = validate(loaded.program, sources, diag);
+  std::string text;
+  for (const auto &d : diag.all()) text += render_text(d, sources);
+  INFO(text);
+  REQUIRE(!diag.has_errors());
+  auto read = [&](const std::string &suffix) {
+    for (const auto &p : loaded.paths)
+      if (p.size() >= suffix.size() && p.compare(p.size() - suffix.size(), suffix.size(), suffix) == 0) return true;
+    return false;
+  };
+  // "Look.beh" beside etc/plans/Patrol.pml is etc/behaviours/Look.beh; "ConditionRepository.cnd"
+  // is etc/conditions/; SweepLeft.pml says it lives in "old" and names "Behaviour/Turn.beh", which
+  // only the search below etc/ finds (as etc/behaviours/Turn.beh).
+  CHECK(read("layout/etc/behaviours/Look.beh"));
+  CHECK(read("layout/etc/conditions/ConditionRepository.cnd"));
+  CHECK(read("layout/etc/plans/sub/Sweeps.pty"));
+  CHECK(read("layout/etc/plans/sub/SweepLeft.pml"));
+  CHECK(read("layout/etc/behaviours/Turn.beh"));
+  const model::Chart *patrol = nullptr;
+  for (const auto &c : model.charts)
+    if (c.name == "Patrol") patrol = &c;
+  REQUIRE(patrol);
+  // "init" is the name of the engine's init function: renamed. A placeholder runs nothing.
+  CHECK(place_names(*patrol) == std::vector<std::string>{"init_", "Wait", "Sweep", "Done"});
+  CHECK(patrol->places[2].runs >= 0);
+  REQUIRE(patrol->transitions.size() == 3);
+  // The designer names transitions by their ids: no name of the user's. AlwaysTrueCondition is
+  // `true`, AnyChildSuccess on a state running an fsm `succeeded(Sweep)`; others are functions.
+  CHECK(!patrol->transitions[0].named);
+  REQUIRE(patrol->transitions[0].condition);
+  CHECK(patrol->transitions[0].condition->kind == model::Expr::Kind::Bool);
+  CHECK(patrol->transitions[0].condition->bool_value);
+  REQUIRE(patrol->transitions[2].condition);
+  CHECK(patrol->transitions[2].condition->kind == model::Expr::Kind::Succeeded);
+  std::vector<std::string> functions;
+  for (const auto &f : model.functions) functions.push_back(f.name);
+  CHECK(functions == std::vector<std::string>{"Look", "Turn", "Turned", "Ready"});
+  // What gfec ignores is a located warning, each once, in the file that holds it.
+  CHECK(diag.warning_count() == 5);
+  for (const char *what : {
+           "layout/etc/plans/Patrol.pml:54:28: warning: state 'Wait' (id 1900000000011) of plan 'Patrol' (id "
+           "1900000000000) holds the placeholder 'Anything.plc#1900000003000', which is ignored",
+           "layout/etc/behaviours/Look.beh:2:18: warning: the blackboard of behaviour 'Look' (id 1900000001000) is "
+           "ignored",
+           "layout/etc/conditions/ConditionRepository.cnd:23:22: warning: the blackboard inputs of condition 'Ready' "
+           "(id 1900000002002) are ignored",
+           "layout/etc/plans/sub/Sweeps.pty:6:17: warning: the variables of plan type 'Sweeps' (id 1900000004000) "
+           "are ignored",
+           "layout/etc/plans/sub/Sweeps.pty:14:24: warning: the variableBindings of plan type 'Sweeps' (id "
+           "1900000004000) are ignored",
+       })
+    CHECK(text.find(what) != std::string::npos);
+}
+
+TEST_CASE("alica: the loader's in-memory file system is never searched on disk", "[alica]") {
+  // The same plan in memory: everything but the stale path is found; that one is a located error.
+  Run r("layout/etc/plans/Patrol.pml");
+  INFO(r.text);
+  CHECK(r.diag.error_count() == 1);
+  CHECK(r.text.find("layout/etc/plans/sub/SweepLeft.pml:33:28: error: cannot find 'Behaviour/Turn.beh', "
+                    "referenced here [alica-reference]") != std::string::npos);
+}
+
+TEST_CASE("alica: a mistyped id in a repository suggests the element with the closest id", "[alica]") {
+  std::string patrol = test::read_file((kFixtures / "layout/etc/plans/Patrol.pml").string());
+  std::size_t at = patrol.find("ConditionRepository.cnd#1900000002002");
+  REQUIRE(at != std::string::npos);
+  patrol.replace(at, std::string("ConditionRepository.cnd#1900000002002").size(), "ConditionRepository.cnd#1900000002012");
+  Run r("layout/etc/plans/Typo.pml", {{"layout/etc/plans/Typo.pml", patrol}});
+  INFO(r.text);
+  CHECK(r.diag.error_count() == 2);  // and the stale path, as above
+  CHECK(r.text.find("layout/etc/plans/Typo.pml:125:21: error: 'layout/etc/conditions/ConditionRepository.cnd' has "
+                    "no element with id 1900000002012 [alica-reference]") != std::string::npos);
+  CHECK(r.text.find("layout/etc/conditions/ConditionRepository.cnd:22:5: note: did you mean 'Ready' (id "
+                    "1900000002002), which the file holds?") != std::string::npos);
+}
+
+TEST_CASE("alica: ALICA's other files given to gfec say what they are, at their first character", "[alica]") {
+  for (auto [file, kind] : {std::pair{"layout/etc/behaviours/Look.beh", "an ALICA behaviour"},
+                            std::pair{"layout/etc/plans/sub/Sweeps.pty", "an ALICA plan type"},
+                            std::pair{"layout/etc/conditions/ConditionRepository.cnd", "an ALICA condition repository"},
+                            std::pair{"layout/etc/placeholders/Anything.plc", "an ALICA placeholder"},
+                            std::pair{"layout/etc/tasks/taskrepository.tsk", "an ALICA task repository"}}) {
+    Run r(file);
+    INFO(r.text);
+    CHECK(r.diag.error_count() == 1);
+    CHECK(r.text.rfind(fmt::format("{}:1:1: error: '{}' is not an ALICA plan", file, file), 0) == 0);
+    CHECK(r.text.find(fmt::format("note: this is {}; gfec compiles plans (.pml)", kind)) != std::string::npos);
+  }
+  // An XML file of the older designer, whatever its kind.
+  Run xml("old.pty", {{"old.pty", "<?xml version=\"1.0\" encoding=\"ASCII\"?>\n<alica:PlanType id=\"1\"/>\n"}});
+  CHECK(xml.diag.error_count() == 1);
+  CHECK(xml.text.find("old.pty:1:1: error: this is an XML file of ALICA's older Eclipse designer") != std::string::npos);
+}
+
+TEST_CASE("alica: names the engine, C or C++ reserve, and names that are ids, become other identifiers", "[alica]") {
+  std::string plan = R"({ "id" : 9, "name" : "new", "entryPoints" : [ { "id" : 10, "name" : "10", "state" : 1 } ],
+    "states" : [ { "type" : "State", "id" : 1, "name" : "init", "confAbstractPlanWrappers" : [ ] },
+                 { "type" : "State", "id" : 2, "name" : "run", "confAbstractPlanWrappers" : [ ] },
+                 { "type" : "State", "id" : 3, "name" : "2", "confAbstractPlanWrappers" : [ ] },
+                 { "type" : "State", "id" : 4, "name" : "uint8_t", "confAbstractPlanWrappers" : [ ] } ],
+    "transitions" : [
+      { "id" : 20, "name" : "20", "inState" : 1, "outState" : 2, "preCondition" : { "id" : 30, "name" : "30" } },
+      { "id" : 21, "name" : "class", "inState" : 2, "outState" : 3, "preCondition" : { "id" : 31, "name" : "NULL" } },
+      { "id" : 22, "name" : "", "inState" : 3, "outState" : 4, "preCondition" : null } ] })";
+  Run r("new.pml", {{"new.pml", plan}});
+  INFO(r.text);
+  REQUIRE(!r.diag.has_errors());
+  const model::Chart *c = r.chart("new_");
+  REQUIRE(c);
+  CHECK(place_names(*c) == std::vector<std::string>{"init_", "run_", "State3", "uint8_t_"});
+  CHECK(!c->transitions[0].named);
+  CHECK(c->transitions[1].name == "class_");
+  std::vector<std::string> functions;
+  for (const auto &f : r.model.functions) functions.push_back(f.name);
+  CHECK(functions == std::vector<std::string>{"Condition30", "NULL_"});
+}

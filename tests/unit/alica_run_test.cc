@@ -78,12 +78,14 @@ TEST_CASE("alica run: the stuck path ends in the failure state", "[alica][c-run]
 
 TEST_CASE("alica run: --emit=chart writes text that compiles to the same engine", "[alica][c-run]") {
   const std::string gfec = fs::path(GFEC_BINARY_DIR) / "gfec";
-  for (const char *plan : {"Fetch", "Master"}) {
-    INFO(plan);
+  // Patrol: ALICA's current layout, a plan type, standard conditions, a renamed state.
+  for (const char *path : {"plans/Fetch.pml", "plans/Master.pml", "layout/etc/plans/Patrol.pml"}) {
+    INFO(path);
+    std::string plan = fs::path(path).stem().string();
     fs::path dir = scratch_dir(std::string("alica_round_trip_") + plan);
     fs::create_directories(dir / "from_plan");
     fs::create_directories(dir / "from_text");
-    fs::path pml = kFixtures / "plans" / (std::string(plan) + ".pml");
+    fs::path pml = kFixtures / path;
     auto convert = run_command(fmt::format("'{}' --emit=chart '{}' -o '{}'", gfec, pml.string(),
                                            (dir / "converted.sfc").string()), dir / "convert.log");
     INFO(convert.output);
