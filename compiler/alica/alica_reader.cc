@@ -800,6 +800,24 @@ private:
     return e;
   }
 
+  /// A standard child condition gfec cannot read from a sub-chart (the state runs behaviours,
+  /// whose outcome gfec does not model, or a plan with several entry points, whose sfc never
+  /// ends): it stays a sensing function, and the user is told so where it is used.
+  void child_outcome_unobserved(const JsonValue &cond, const ast::Place *source, const SourceRange &at,
+                                const std::string &what) {
+    std::string name = label_of(cond);
+    if (name != "AnyChildSuccess" && name != "AllChildSuccess" && name != "AnyChildFailure" &&
+        name != "AllChildFailure")
+      return;
+    std::string state = source ? source->name.text : "?";
+    std::string why = source && source->runs
+                          ? fmt::format("the plan it runs, '{}', has several entry points and its sfc never ends",
+                                        source->runs->text)
+                          : "it runs no plan, and gfec does not model the success or failure of behaviours";
+    ignored(at, fmt::format("{} tests {} of state '{}', but {}: the condition becomes the sensing function '{}()' "
+                            "of the robot library", what, name, state, why, name));
+  }
+
   template <typename StateOf>
   void convert_transition(Doc &doc, const JsonValue &t, std::vector<Machine> &machines, const std::vector<int> &owner,
                           const std::vector<std::string> &state_names, StateOf state_of, const std::string &plan_what) {
@@ -835,12 +853,18 @@ private:
     if (cond && cond->is_string() && !cond->text.empty()) {
       Target c = resolve(cond->text, doc, range(doc, *cond));
       if (c.object) out.condition = child_outcome(*c.object, source, range(doc, *cond));
-      if (c.object && !out.condition) out.condition = call(condition(*c.doc, *c.object, label), range(doc, *cond));
+      if (c.object && !out.condition) {
+        out.condition = call(condition(*c.doc, *c.object, label), range(doc, *cond));
+        child_outcome_unobserved(*c.object, source, range(doc, *cond), what);
+      }
       if (non_empty(pre) && pre->is_object() && (non_empty(pre->find("quantifiers")) || non_empty(pre->find("variables"))))
         condition(doc, *pre, label);  // only for its warnings
     } else if (pre && pre->is_object()) {
       out.condition = child_outcome(*pre, source, range(doc, *pre));
-      if (!out.condition) out.condition = call(condition(doc, *pre, label), range(doc, *pre));
+      if (!out.condition) {
+        out.condition = call(condition(doc, *pre, label), range(doc, *pre));
+        child_outcome_unobserved(*pre, source, range(doc, *pre), what);
+      }
     }
     if (const JsonValue *sync = t.find("synchronisation"); non_empty(sync))
       ignored(doc, *sync, fmt::format("{} is synchronised with others; the synchronisation is ignored", what));

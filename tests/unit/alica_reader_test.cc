@@ -495,3 +495,25 @@ TEST_CASE("alica: names the engine, C or C++ reserve, and names that are ids, be
   for (const auto &f : r.model.functions) functions.push_back(f.name);
   CHECK(functions == std::vector<std::string>{"Condition30", "NULL_"});
 }
+
+TEST_CASE("alica: a child condition gfec cannot read from a sub-chart is a function, with a warning", "[alica]") {
+  // State 'Drive' runs only a behaviour: ALICA's AllChildSuccess there asks whether the behaviour
+  // succeeded, which gfec does not model.
+  std::string plan = R"({ "id" : 9, "name" : "Go", "entryPoints" : [ { "id" : 10, "name" : "", "state" : 1 } ],
+    "states" : [ { "type" : "State", "id" : 1, "name" : "Drive", "abstractPlans" : [ "Drive.beh#5" ] },
+                 { "type" : "TerminalState", "success" : true, "id" : 2, "name" : "There" } ],
+    "transitions" : [ { "id" : 20, "name" : "Arrived", "inState" : 1, "outState" : 2,
+                        "preCondition" : { "id" : 30, "name" : "AllChildSuccess" } } ] })";
+  Run r("go.pml", {{"go.pml", plan}, {"Drive.beh", R"({ "id" : 5, "name" : "Drive" })"}});
+  INFO(r.text);
+  REQUIRE(!r.diag.has_errors());
+  CHECK(r.diag.warning_count() == 1);
+  CHECK(r.text.find("go.pml:5:42: warning: transition 'Arrived' (id 20) of plan 'Go' (id 9) tests AllChildSuccess of "
+                    "state 'Drive', but it runs no plan, and gfec does not model the success or failure of behaviours: "
+                    "the condition becomes the sensing function 'AllChildSuccess()' of the robot library "
+                    "[-Walica-ignored]") != std::string::npos);
+  const model::Chart *c = r.chart("Go");
+  REQUIRE(c);
+  REQUIRE(c->transitions[0].condition);
+  CHECK(c->transitions[0].condition->kind == model::Expr::Kind::Call);
+}
