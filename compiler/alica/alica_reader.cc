@@ -685,6 +685,10 @@ private:
       for (const auto &w : wrappers->items) {
         if (!w.is_object()) continue;
         if (const JsonValue *ap = w.find("abstractPlan"); ap && ap->is_string()) add_string(*ap);
+        if (const JsonValue *km = w.find("keyMapping");
+            km && km->is_object() && (non_empty(km->find("input")) || non_empty(km->find("output"))))
+          ignored(doc, *km, fmt::format("the blackboard key mapping of '{}' in {} is ignored: gfec has no blackboard",
+                                        w.string_of("abstractPlan"), what));
         if (const JsonValue *c = w.find("configuration"); non_empty(c))
           ignored(doc, *c, fmt::format("the configuration {}of '{}' in {} is ignored: gfec sub-charts and action "
                                        "functions take no parameters", c->is_string() ? "'" + c->text + "' " : "",

@@ -517,3 +517,17 @@ TEST_CASE("alica: a child condition gfec cannot read from a sub-chart is a funct
   REQUIRE(c->transitions[0].condition);
   CHECK(c->transitions[0].condition->kind == model::Expr::Kind::Call);
 }
+
+TEST_CASE("alica: a wrapper's blackboard key mapping is a located warning", "[alica]") {
+  std::string plan = R"({ "id" : 9, "name" : "Go", "entryPoints" : [ { "id" : 10, "name" : "", "state" : 1 } ],
+    "states" : [ { "type" : "State", "id" : 1, "name" : "Drive", "confAbstractPlanWrappers" : [
+      { "id" : 11, "name" : "", "abstractPlan" : "Drive.beh#5",
+        "keyMapping" : { "input" : [ { "childKey" : "goal", "parentKey" : "target" } ], "output" : [ ] } } ] } ],
+    "transitions" : [ ] })";
+  Run r("go.pml", {{"go.pml", plan}, {"Drive.beh", R"({ "id" : 5, "name" : "Drive" })"}});
+  INFO(r.text);
+  REQUIRE(!r.diag.has_errors());
+  CHECK(r.diag.warning_count() == 1);
+  CHECK(r.text.find("go.pml:4:24: warning: the blackboard key mapping of 'Drive.beh#5' in state 'Drive' (id 1) of "
+                    "plan 'Go' (id 9) is ignored: gfec has no blackboard [-Walica-ignored]") != std::string::npos);
+}
