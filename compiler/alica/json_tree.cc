@@ -35,6 +35,8 @@ public:
   Parser(std::string_view text, JsonError &error) : s_(text), error_(error) {}
 
   std::optional<JsonValue> document() {
+    // Editors on Windows save UTF-8 with a byte order mark: not JSON, but harmless.
+    if (s_.substr(0, 3) == "\xef\xbb\xbf") pos_ = 3;
     skip_space();
     JsonValue v;
     if (!value(v, 0)) return std::nullopt;

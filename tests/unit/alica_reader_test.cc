@@ -531,3 +531,12 @@ TEST_CASE("alica: a wrapper's blackboard key mapping is a located warning", "[al
   CHECK(r.text.find("go.pml:4:24: warning: the blackboard key mapping of 'Drive.beh#5' in state 'Drive' (id 1) of "
                     "plan 'Go' (id 9) is ignored: gfec has no blackboard [-Walica-ignored]") != std::string::npos);
 }
+
+TEST_CASE("alica json: a UTF-8 byte order mark before the document is skipped", "[alica]") {
+  alica::JsonError error;
+  auto v = alica::parse_json("\xef\xbb\xbf{ \"id\" : 1 }", error);
+  REQUIRE(v);
+  CHECK(v->begin == 3);
+  CHECK(v->find("id")->text == "1");
+  CHECK(!alica::parse_json("\xef\xbb{ }", error));
+}
