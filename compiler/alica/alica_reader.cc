@@ -817,7 +817,9 @@ private:
     std::string why = source && source->runs
                           ? fmt::format("the plan it runs, '{}', has several entry points and its sfc never ends",
                                         source->runs->text)
-                          : "it runs no plan, and gfec does not model the success or failure of behaviours";
+                          : source && !source->action.empty()
+                                ? "it runs no plan, and gfec does not model the success or failure of behaviours"
+                                : "it runs neither a plan nor a behaviour";
     ignored(at, fmt::format("{} tests {} of state '{}', but {}: the condition becomes the sensing function '{}()' "
                             "of the robot library", what, name, state, why, name));
   }
