@@ -283,17 +283,32 @@ private:
     return std::nullopt;
   }
 
-  Doc *find_doc(const std::string &file, const Doc &from, const SourceRange &at) {
+  Doc *find_doc(const std::string &file, const Doc &from, const SourceRange &at, const std::string &id) {
     std::vector<std::string> tried = candidates(file, from);
-    for (const auto &path : tried) {
-      auto seen = docs_.find(path);
-      if (seen != docs_.end()) return seen->second.get();
-      if (auto text = fs_.read(path)) return open(path, std::move(*text));
-    }
-    if (auto found = search_below(file, from)) {
-      auto seen = docs_.find(*found);
-      if (seen != docs_.end()) return seen->second.get();
-      if (auto text = fs_.read(*found)) return open(*found, std::move(*text));
+    // The search below etc/ only when the usual places fail: it is the slow path.
+    bool searched = false;
+    auto search = [&] {
+      searched = true;
+      if (auto found = search_below(file, from))
+        if (std::find(tried.begin(), tried.end(), *found) == tried.end()) tried.push_back(*found);
+    };
+    for (std::size_t i = 0;; ++i) {
+      if (i == tried.size() && !searched) search();
+      if (i >= tried.size()) break;
+      Doc *doc = nullptr;
+      auto seen = docs_.find(tried[i]);
+      if (seen != docs_.end()) doc = seen->second.get();
+      else if (auto text = fs_.read(tried[i])) doc = open(tried[i], std::move(*text));
+      if (!doc) continue;
+      // ALICA resolves by id: when the nearest file of that name lacks the id (a behaviour and
+      // its interface share a name, an old repository lies beside the new one), a farther one of
+      // the same name that holds it is the one meant.
+      if (doc->root && !doc->by_id.count(id)) {
+        if (!searched) search();
+        for (std::size_t j = i + 1; j < tried.size(); ++j)
+          if (Doc *other = holding(tried[j], id)) return other;
+      }
+      return doc;
     }
     auto &d = diag_.error(at, "alica-reference", fmt::format("cannot find '{}', referenced here", file));
     suggest_file(d, file, tried);
@@ -302,6 +317,20 @@ private:
       if (&t == &tried.front() || !fs_.list(normal(fsys::path(t).parent_path())).empty())
         d.note(fmt::format("looked for '{}'", t));
     return nullptr;
+  }
+
+  /// The file at `path` if it holds an element with `id`, read without a diagnostic otherwise.
+  Doc *holding(const std::string &path, const std::string &id) {
+    auto seen = docs_.find(path);
+    if (seen != docs_.end()) return seen->second->by_id.count(id) ? seen->second.get() : nullptr;
+    auto text = fs_.read(path);
+    if (!text) return nullptr;
+    JsonError error;
+    auto root = parse_json(*text, error);
+    if (!root) return nullptr;
+    std::map<std::string, const JsonValue *> ids;
+    index_ids(*root, ids);
+    return ids.count(id) ? open(path, std::move(*text)) : nullptr;
   }
 
   /// "did you mean 'Behaviours/GoTo.beh'?" from the files in the folders the reference was
@@ -334,7 +363,7 @@ private:
       diag_.error(at, "alica-reference", fmt::format("'{}' is no reference: ALICA writes them as \"File.ext#id\"", text));
       return {};
     }
-    Doc *doc = ref->file.empty() ? &from : find_doc(ref->file, from, at);
+    Doc *doc = ref->file.empty() ? &from : find_doc(ref->file, from, at, ref->id);
     if (!doc || !doc->root) return {};
     auto it = doc->by_id.find(ref->id);
     if (it == doc->by_id.end()) {

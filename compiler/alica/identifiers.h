@@ -7,7 +7,8 @@
 
 namespace gfec::alica {
 
-/// True for a name the ALICA designer writes when the user gave none.
+/// False for a name the ALICA designers write when the user gave none: empty, MISSING_NAME, or
+/// digits only (the element's id).
 bool meaningful(const std::string &name);
 
 /// `text` as an identifier: every byte that is not a letter, digit or '_' becomes '_' (a run of

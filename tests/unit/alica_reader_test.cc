@@ -388,7 +388,8 @@ TEST_CASE("alica: the folder layouts of ALICA's own repositories are found, as A
       if (p.size() >= suffix.size() && p.compare(p.size() - suffix.size(), suffix.size(), suffix) == 0) return true;
     return false;
   };
-  // "Look.beh" beside etc/plans/Patrol.pml is etc/behaviours/Look.beh; "ConditionRepository.cnd"
+  // "Look.beh#1900000001000" beside etc/plans/Patrol.pml is etc/behaviours/Look.beh: the nearer
+  // etc/plans/Look.beh (the behaviour's interface) lacks that id; "ConditionRepository.cnd"
   // is etc/conditions/; SweepLeft.pml says it lives in "old" and names "Behaviour/Turn.beh", which
   // only the search below etc/ finds (as etc/behaviours/Turn.beh).
   CHECK(read("layout/etc/behaviours/Look.beh"));
