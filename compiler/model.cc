@@ -1,5 +1,7 @@
 #include "model.h"
 
+#include <cctype>
+
 namespace gfec::model {
 
 const char *type_name(Type t) {
@@ -14,6 +16,24 @@ const char *type_name(Type t) {
   case Type::Duration: return "duration";
   }
   return "?";
+}
+
+std::string source_text(const Model &m, const SourceRange &range) {
+  if (!m.sources || range.file >= m.sources->size() || range.end <= range.begin) return {};
+  const std::string &text = m.sources->file(range.file).text();
+  if (range.end > text.size()) return {};
+  std::string out;
+  bool space = false;
+  for (std::uint32_t i = range.begin; i < range.end; ++i) {
+    if (std::isspace(static_cast<unsigned char>(text[i]))) {
+      space = !out.empty();
+      continue;
+    }
+    if (space) out += ' ';
+    space = false;
+    out += text[i];
+  }
+  return out;
 }
 
 } // namespace gfec::model

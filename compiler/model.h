@@ -6,6 +6,7 @@
 #include "operators.h"
 #include "source.h"
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,8 +24,8 @@ inline bool is_numeric(Type t) { return t == Type::Int || t == Type::Float || t 
 struct Expr {
   enum class Kind {
     Bool,     ///< bool_value
-    Int,      ///< text: the spelling, e.g. "42"
-    Float,    ///< text: the spelling, e.g. "0.5", "1e-3"
+    Int,      ///< text: the spelling, e.g. "42"; int_value: its value
+    Float,    ///< text: the spelling, e.g. "0.5", "1e-3"; float_value: its value as a double
     String,   ///< text: the decoded value
     Ticks,    ///< a duration in an sfc/fsm, converted to whole ticks (rounded up): ticks; ms kept
     Var,      ///< index into Chart::vars
@@ -57,6 +58,13 @@ struct Expr {
   BinaryOp binary_op = BinaryOp::Add;
   std::vector<Expr> args;
   std::vector<int> path;  ///< Kind::Active
+  // Values computed once by the validator with the one evaluator (compiler/constant.h), so that
+  // no later stage parses a spelling or folds again. A literal (Int, Float) always has its value
+  // here; any other expression whose value is known at compile time has `folded` set and its
+  // value in bool_value (Bool), int_value (Int) or float_value (Float, Double).
+  bool folded = false;
+  std::int32_t int_value = 0;
+  double float_value = 0;  ///< the value as a double; converted to `type` it is the expression's value
 };
 
 struct Stmt {
@@ -68,6 +76,7 @@ struct Stmt {
   AssignOp op = AssignOp::Set;
   Expr value;            ///< Kind::Assign; Kind::If: the condition (Bool)
   std::string verbatim;  ///< Kind::Verbatim
+  std::uint32_t code_begin = 0;  ///< Kind::Verbatim: where `verbatim` starts in range.file (after `%{`); 0: unknown
   std::vector<Stmt> then_block;  ///< Kind::If
   std::vector<Stmt> else_block;  ///< Kind::If: empty when there is no `else`
   bool else_if = false;          ///< Kind::If: else_block is one If written as `else if`
@@ -121,6 +130,7 @@ struct Place {
   bool timed = false;        ///< some `elapsed()` reads this place's timer
   int runs = -1;             ///< the sub-chart it runs: an index into Model::charts, or -1
   SourceRange range;
+  SourceRange name_range;  ///< the name where it is declared
 };
 
 struct Transition {
@@ -130,6 +140,7 @@ struct Transition {
   std::vector<int> outputs;
   std::optional<Expr> condition;  ///< absent: `when true`
   SourceRange range;
+  SourceRange name_range;  ///< the user's name, or the whole transition when it has none
 };
 
 struct Chart {
@@ -145,6 +156,7 @@ struct Chart {
   int team = 0;                ///< fsm `team N;`: N (>= 2); 0 for a machine that is no team
   bool in_main_file = false;   ///< declared in the file being compiled, not an import
   SourceRange range;
+  SourceRange name_range;  ///< the chart's name where it is declared
 };
 
 // ---------------------------------------------------------------- toolbox and plan
@@ -180,6 +192,7 @@ struct ConfigEntry {
   Type type = Type::Float;
   std::optional<Expr> init;  ///< folded to a literal
   SourceRange range;
+  SourceRange name_range;  ///< the entry's name where it is declared
 };
 
 struct Target {
@@ -217,6 +230,7 @@ struct ActorUse {
   std::vector<Rule> rules;  ///< one per result state, in declaration order
   std::vector<SupervisorUse> supervisors;
   SourceRange range;
+  SourceRange name_range;  ///< the actor's name where it is declared
 };
 
 /// A sub-plan's fixed result states, in this order.
@@ -238,6 +252,7 @@ struct Plan {
 struct Verbatim {
   std::string text;
   SourceRange range;
+  std::uint32_t code_begin = 0;  ///< where `text` starts in range.file (after `%{`); 0: unknown
 };
 
 struct Model {
@@ -251,5 +266,9 @@ struct Model {
   std::vector<Plan> plans;
   std::vector<Verbatim> verbatims;  ///< file-level %{ %}: imported files first, then the main file
 };
+
+/// The source text of `range` with every run of whitespace folded to one space, for pictures
+/// and exports that show a condition or a statement as written ("" if the text is unknown).
+std::string source_text(const Model &m, const SourceRange &range);
 
 } // namespace gfec::model

@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <climits>
 #include <cstdlib>
 #include <cstring>
@@ -78,67 +77,34 @@ bool has_call(const Expr &e) {
   return false;
 }
 
-/// An int literal's value ("010" is 10: chart literals are decimal), if it is an int.
-std::optional<long long> int_value(const std::string &text) {
-  errno = 0;
-  char *end = nullptr;
-  long long v = std::strtoll(text.c_str(), &end, 10);
-  if (errno != 0 || end == text.c_str() || *end != '\0') return std::nullopt;
-  return v;
-}
-
-/// The value of an int expression made of literals and constants only, if it has one in `int`.
+/// The value of an int expression the validator folded (a literal, a constant, arithmetic on
+/// them), if it is one: the model's value, computed once with C's semantics (compiler/constant.h).
 std::optional<long long> int_constant(const Context &c, const Expr &e) {
   if (e.type != Type::Int) return std::nullopt;
-  std::optional<long long> v;
-  switch (e.kind) {
-  case Expr::Kind::Int: v = int_value(e.text); break;
-  case Expr::Kind::Const: {
+  if (e.kind == Expr::Kind::Int || e.folded) return e.int_value;
+  if (e.kind == Expr::Kind::Const) {
     const Expr &value = c.model.consts.at(static_cast<std::size_t>(e.index)).value;
-    if (value.kind == Expr::Kind::Int) v = int_value(value.text);
-    break;
+    if (value.kind == Expr::Kind::Int) return value.int_value;
   }
-  case Expr::Kind::Paren: return int_constant(c, e.args.at(0));
-  case Expr::Kind::Unary: {
-    auto a = int_constant(c, e.args.at(0));
-    if (a && e.unary_op == UnaryOp::Neg) v = -*a;
-    break;
-  }
-  case Expr::Kind::Binary: {
-    auto a = int_constant(c, e.args.at(0)), b = int_constant(c, e.args.at(1));
-    if (!a || !b) return std::nullopt;
-    switch (e.binary_op) {
-    case BinaryOp::Add: v = *a + *b; break;
-    case BinaryOp::Sub: v = *a - *b; break;
-    case BinaryOp::Mul: v = *a * *b; break;
-    case BinaryOp::Div: if (*b != 0) v = *a / *b; break;
-    case BinaryOp::Mod: if (*b != 0) v = *a % *b; break;
-    default: break;
-    }
-    break;
-  }
-  default: break;
-  }
-  if (v && (*v < INT_MIN || *v > INT_MAX)) return std::nullopt;
-  return v;
+  return std::nullopt;
 }
 
-/// An int literal as C reads it: its value in decimal. INT_MIN (a folded constant) is written
-/// so that it stays an int: `-2147483648` is the long `-(2147483648)` in C.
-Rendered int_literal(const std::string &text) {
-  auto v = int_value(text);
-  if (!v) return {text};  // beyond long long: the validator and the interpreter say it is not an int
-  if (*v == INT_MIN) return {"(-2147483647 - 1)"};
-  return {std::to_string(*v), *v < 0 ? kUnary : kPrimary};
+/// An int literal as C reads it: its value in decimal (the validator parsed the spelling, so
+/// `010` is 10). INT_MIN (a folded constant) is written so that it stays an int: `-2147483648`
+/// is the long `-(2147483648)` in C.
+Rendered int_literal(std::int32_t v) {
+  if (v == INT_MIN) return {"(-2147483647 - 1)"};
+  return {std::to_string(v), v < 0 ? kUnary : kPrimary};
 }
 
 /// A floating literal of type float (a folded float constant): C would read the spelling as a
-/// double. `0.1f` where that is the same float as the double 0.1 converted, else `(float)0.1`.
-Rendered float_literal(const std::string &text) {
-  const char *s = text.c_str();
+/// double. `0.1f` where C reads that as the same float as the double 0.1 converted (the model's
+/// value), else `(float)0.1`.
+Rendered float_literal(const Expr &e) {
+  const std::string &text = e.text;
   const bool negative = !text.empty() && text[0] == '-';
-  float direct = std::strtof(s, nullptr);
-  float converted = static_cast<float>(std::strtod(s, nullptr));
+  float direct = std::strtof(text.c_str(), nullptr);  // how C reads the spelling with an `f`
+  float converted = static_cast<float>(e.float_value);
   if (std::memcmp(&direct, &converted, sizeof direct) == 0) return {text + "f", negative ? kUnary : kPrimary};
   return {"(float)" + (negative ? bracket(text) : text), kUnary};
 }
@@ -148,9 +114,9 @@ Rendered literal(const Expr &e) {
   switch (e.kind) {
   case Expr::Kind::Bool: return {e.bool_value ? "true" : "false"};
   case Expr::Kind::String: return {c_string_literal(e.text)};
-  case Expr::Kind::Int: return int_literal(e.text);
+  case Expr::Kind::Int: return int_literal(e.int_value);
   default:
-    if (e.type == Type::Float) return float_literal(e.text);
+    if (e.type == Type::Float) return float_literal(e);
     return {e.text, !e.text.empty() && e.text[0] == '-' ? kUnary : kPrimary};
   }
 }
@@ -620,7 +586,7 @@ public:
   void list(const std::vector<model::Stmt> &stmts) {
     for (const auto &s : stmts) {
       if (s.kind == model::Stmt::Kind::Verbatim) {
-        emit_verbatim(w_, sources_, s.range, s.verbatim);
+        emit_verbatim(w_, sources_, s.range, s.verbatim, s.code_begin);
         next_ = 0;
         ++at_;
         continue;
@@ -709,15 +675,10 @@ void emit_statements(CodeWriter &w, const Context &c, const std::vector<model::S
   StatementWriter(w, c, text).list(stmts);
 }
 
-void emit_verbatim(CodeWriter &w, const SourceManager *sources, const SourceRange &range, std::string_view text) {
-  // Find where the text starts in the chart, so #line names the right line: just after `%{`.
-  std::uint32_t start = range.begin;
-  if (sources) {
-    const std::string &chart = sources->file(range.file).text();
-    auto open = chart.find("%{", range.begin);
-    if (open != std::string::npos && chart.compare(open + 2, text.size(), text) == 0)
-      start = static_cast<std::uint32_t>(open + 2);
-  }
+void emit_verbatim(CodeWriter &w, const SourceManager *sources, const SourceRange &range, std::string_view text,
+                   std::uint32_t code_begin) {
+  // #line names the line where the code starts (just after `%{`), which the model keeps.
+  std::uint32_t start = code_begin ? code_begin : range.begin;
   // Drop the rest of the `%{` line and the indentation before `%}` when they are blank.
   auto first_nl = text.find('\n');
   if (first_nl != std::string_view::npos && blank(text.substr(0, first_nl))) {

@@ -43,7 +43,7 @@ void includes(CodeWriter &w, const Context &c) {
 void verbatims(CodeWriter &w, const Context &c) {
   for (const auto &v : c.model.verbatims) {
     w.blank();
-    emit_verbatim(w, c.model.sources, v.range, v.text);
+    emit_verbatim(w, c.model.sources, v.range, v.text, v.code_begin);
     w.line_back();
   }
 }

@@ -34,7 +34,7 @@ public:
   Rendered render(const Expr &e) {
     switch (e.kind) {
     case Expr::Kind::Bool: return {e.bool_value ? "true" : "false"};
-    case Expr::Kind::Int: return int_literal(e.text);
+    case Expr::Kind::Int: return int_literal(e.int_value);
     case Expr::Kind::Float: return {e.text, e.text.rfind('-', 0) == 0 ? kUnary : kPrimary};
     case Expr::Kind::String: return {c_string_literal(e.text), kPrimary, true};
     case Expr::Kind::Config: return {entry(e, cpp_type(e.type))};
@@ -53,13 +53,10 @@ public:
   bool reads_config() const { return reads_config_; }
 
 private:
-  static Rendered int_literal(const std::string &text) {
-    // Literals are decimal (`010` is 10; C++ would read 8): written by their value.
-    errno = 0;
-    char *end = nullptr;
-    long long v = std::strtoll(text.c_str(), &end, 10);
-    if (errno != 0 || end == text.c_str() || *end != '\0') return {text};
-    // -2147483648 is `-(2147483648)` in C++, a long: spell INT_MIN so that it stays an int.
+  static Rendered int_literal(std::int32_t v) {
+    // Literals are decimal (`010` is 10; C++ would read 8): written by their value, which the
+    // validator parsed. -2147483648 is `-(2147483648)` in C++, a long: spell INT_MIN so that it
+    // stays an int.
     if (v == INT_MIN) return {"(-2147483647 - 1)"};
     return {std::to_string(v), v < 0 ? kUnary : kPrimary};
   }

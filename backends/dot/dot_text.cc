@@ -2,8 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <cctype>
-
 namespace gfec::dot {
 
 std::string quote(const std::string &text) {
@@ -17,24 +15,6 @@ std::string quote(const std::string &text) {
     out += c;
   }
   return out + "\"";
-}
-
-std::string source_text(const model::Model &m, const SourceRange &range) {
-  if (!m.sources || range.file >= m.sources->size() || range.end <= range.begin) return {};
-  const std::string &text = m.sources->file(range.file).text();
-  if (range.end > text.size()) return {};
-  std::string out;
-  bool space = false;
-  for (std::uint32_t i = range.begin; i < range.end; ++i) {
-    if (std::isspace(static_cast<unsigned char>(text[i]))) {
-      space = !out.empty();
-      continue;
-    }
-    if (space) out += ' ';
-    space = false;
-    out += text[i];
-  }
-  return out;
 }
 
 std::string block_text(const model::Model &m, const std::vector<model::Stmt> &block) {

@@ -9,8 +9,7 @@ namespace gfec::dot {
 
 /// `text` as a DOT double-quoted string, quotes included. "\n" inside stays a line break.
 std::string quote(const std::string &text);
-/// The chart text of `range` with whitespace runs folded to one space ("" if unknown).
-std::string source_text(const model::Model &m, const SourceRange &range);
+using model::source_text;  ///< the chart text of a range, whitespace runs folded (model.h)
 /// The text of a statement block, one statement per line.
 std::string block_text(const model::Model &m, const std::vector<model::Stmt> &block);
 /// The common graph, node and edge attributes, after `digraph NAME {`.

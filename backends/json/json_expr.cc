@@ -2,8 +2,6 @@
 
 #include "operators.h"
 
-#include <cctype>
-
 namespace gfec::json_backend {
 
 namespace {
@@ -35,16 +33,6 @@ const char *kind_name(Expr::Kind k) {
   return "?";
 }
 
-/// A literal's spelling as a JSON number; the spelling itself if it does not fit.
-Json number(const std::string &text, bool integer) {
-  try {
-    if (integer) return std::stoll(text);
-    return std::stod(text);
-  } catch (const std::exception &) {
-    return text;
-  }
-}
-
 template <typename T> const std::string &name_at(const std::vector<T> &table, int index) {
   static const std::string unknown = "?";
   return index >= 0 && static_cast<std::size_t>(index) < table.size() ? table[static_cast<std::size_t>(index)].name
@@ -64,24 +52,6 @@ Json location(const model::Model &m, const SourceRange &range) {
           {"end_column", end.col}};
 }
 
-std::string source_text(const model::Model &m, const SourceRange &range) {
-  if (!m.sources || range.file >= m.sources->size() || range.end <= range.begin) return {};
-  const std::string &text = m.sources->file(range.file).text();
-  if (range.end > text.size()) return {};
-  std::string out;
-  bool space = false;
-  for (std::uint32_t i = range.begin; i < range.end; ++i) {
-    if (std::isspace(static_cast<unsigned char>(text[i]))) {
-      space = !out.empty();
-      continue;
-    }
-    if (space) out += ' ';
-    space = false;
-    out += text[i];
-  }
-  return out;
-}
-
 Json expression_tree(const model::Model &m, const Scope &scope, const Expr &e) {
   Json j = {{"kind", kind_name(e.kind)}, {"type", model::type_name(e.type)}};
   auto args = [&] {
@@ -91,8 +61,9 @@ Json expression_tree(const model::Model &m, const Scope &scope, const Expr &e) {
   };
   switch (e.kind) {
   case Expr::Kind::Bool: j["value"] = e.bool_value; break;
-  case Expr::Kind::Int: j["value"] = number(e.text, true); break;
-  case Expr::Kind::Float: j["value"] = number(e.text, false); break;
+  // The values the validator parsed from the spellings (a literal's value as C reads it).
+  case Expr::Kind::Int: j["value"] = e.int_value; break;
+  case Expr::Kind::Float: j["value"] = e.float_value; break;
   case Expr::Kind::String: j["value"] = e.text; break;
   case Expr::Kind::Ticks:
     j["ms"] = e.ms;

@@ -13,8 +13,7 @@ using Json = nlohmann::ordered_json;
 /// {"file", "line", "column", "end_line", "end_column"}: 1-based, end exclusive.
 Json location(const model::Model &m, const SourceRange &range);
 
-/// The text the user wrote for `range`, whitespace runs folded to one space.
-std::string source_text(const model::Model &m, const SourceRange &range);
+using model::source_text;  ///< the text the user wrote for a range, whitespace runs folded (model.h)
 
 /// What names in expressions refer to: the chart's vars and places, the plan's config.
 struct Scope {

@@ -2,8 +2,6 @@
 
 #include "analysis/passes.h"
 
-#include <cctype>
-
 namespace gfec::analysis {
 
 namespace {
@@ -13,8 +11,6 @@ bool any_on(const Diagnostics &diag, std::initializer_list<Warning> ws) {
     if (diag.warning_options().is_on(w)) return true;
   return false;
 }
-
-bool is_word(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
 void run(const model::Model &m, Diagnostics &diag, const Limits &limits, std::string &summary, bool everything) {
   const bool sfc = everything || any_on(diag, {Warning::UnsafePlace, Warning::UnboundedPlace, Warning::Deadlock,
@@ -32,19 +28,6 @@ void run(const model::Model &m, Diagnostics &diag, const Limits &limits, std::st
 }
 
 } // namespace
-
-SourceRange name_in(const model::Model &m, SourceRange decl, const std::string &name) {
-  if (!m.sources || decl.file >= m.sources->size() || name.empty()) return decl;
-  const std::string &text = m.sources->file(decl.file).text();
-  std::size_t end = std::min<std::size_t>(decl.end, text.size());
-  for (std::size_t at = text.find(name, decl.begin); at != std::string::npos && at + name.size() <= end;
-       at = text.find(name, at + 1)) {
-    bool starts = at == 0 || !is_word(text[at - 1]);
-    bool ends = at + name.size() >= text.size() || !is_word(text[at + name.size()]);
-    if (starts && ends) return {decl.file, static_cast<std::uint32_t>(at), static_cast<std::uint32_t>(at + name.size())};
-  }
-  return decl;
-}
 
 void analyze(const model::Model &model, Diagnostics &diag, const Limits &limits) {
   std::string ignored;

@@ -38,7 +38,7 @@ std::string label(const Chart &c, const model::Transition &t) {
 
 } // namespace
 
-void check_fsm(const model::Model &m, const Chart &c, Diagnostics &diag, std::string &summary) {
+void check_fsm(const model::Model & /*m*/, const Chart &c, Diagnostics &diag, std::string &summary) {
   std::vector<int> initial, terminals;
   for (std::size_t s = 0; s < c.places.size(); ++s) {
     if (c.places[s].initial) initial.push_back(static_cast<int>(s));
@@ -52,7 +52,7 @@ void check_fsm(const model::Model &m, const Chart &c, Diagnostics &diag, std::st
     for (std::size_t s = 0; s < c.places.size(); ++s) {
       if (!reach[s] || finish[s]) continue;
       ++traps;
-      diag.warning(Warning::TrapState, name_in(m, c.places[s].range, c.places[s].name),
+      diag.warning(Warning::TrapState, name_at(c.places[s]),
                    fmt::format("state '{}' can never reach a success or failure state: once there, fsm '{}' runs for "
                                "ever",
                                c.places[s].name, c.name));
@@ -70,11 +70,11 @@ void check_fsm(const model::Model &m, const Chart &c, Diagnostics &diag, std::st
       const model::Expr *b = first.condition ? &*first.condition : nullptr;
       if (implies(a, b) != true) continue;
       ++shadowed;
-      diag.warning(Warning::ShadowedTransition, name_in(m, later.range, later.name),
+      diag.warning(Warning::ShadowedTransition, name_at(later),
                    fmt::format("transition '{}' ({}) can never fire: '{}' ({}) is tried first and holds whenever it "
                                "does",
                                later.name, label(c, later), first.name, label(c, first)))
-          .note(name_in(m, first.range, first.name),
+          .note(name_at(first),
                 fmt::format("'{}' has {} precondition", first.name, b ? "the same or a weaker" : "no"));
       break;
     }

@@ -14,9 +14,11 @@ void check_sfc(const model::Model &m, const model::Chart &c, Diagnostics &diag, 
 void check_fsm(const model::Model &m, const model::Chart &c, Diagnostics &diag, std::string &summary);
 void check_plan(const model::Model &m, const model::Plan &p, Diagnostics &diag, std::string &summary);
 
-/// The range of `name` inside the declaration `decl` (its first whole-word occurrence), so that
-/// a warning underlines the name rather than the whole declaration.
-SourceRange name_in(const model::Model &m, SourceRange decl, const std::string &name);
+/// Where a place, transition or chart is named (the model keeps it), so that a warning
+/// underlines the name rather than the whole declaration; the declaration if the name has no range.
+template <typename T> SourceRange name_at(const T &x) {
+  return x.name_range.end > x.name_range.begin ? x.name_range : x.range;
+}
 
 /// "1 place", "2 places": a count with its noun in the right number, for the summaries.
 inline std::string counted(std::size_t n, const char *one, const char *many) {

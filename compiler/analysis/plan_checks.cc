@@ -100,7 +100,7 @@ private:
 
 } // namespace
 
-void check_plan(const model::Model &m, const model::Plan &p, Diagnostics &diag, std::string &summary) {
+void check_plan(const model::Model & /*m*/, const model::Plan &p, Diagnostics &diag, std::string &summary) {
   ConfigFlow flow(p);
   flow.run();
   std::size_t unwritten = 0, races = 0;
@@ -111,7 +111,7 @@ void check_plan(const model::Model &m, const model::Plan &p, Diagnostics &diag, 
       const model::ConfigEntry &entry = p.config[static_cast<std::size_t>(e->index)];
       diag.warning(Warning::UninitializedConfig, e->range,
                    fmt::format("{} may read config entry '{}' before anything has written it", who, entry.name))
-          .note(name_in(m, entry.range, entry.name),
+          .note(name_at(entry),
                 fmt::format("'{}' has no initial value, and not every way to {} passes an actor or supervisor that "
                             "writes it; give it a value here, or set it from the application before the plan starts",
                             entry.name, who));
@@ -136,7 +136,7 @@ void check_plan(const model::Model &m, const model::Plan &p, Diagnostics &diag, 
     ++races;
     std::string list;
     for (std::size_t i = 0; i < order.size(); ++i) list += (i ? ", then " : "") + order[i];
-    diag.warning(Warning::SupervisorRace, name_in(m, actor.range, actor.name),
+    diag.warning(Warning::SupervisorRace, name_at(actor),
                  fmt::format("{} supervisors watch actor '{}' and can raise events in the same step; {} wins", order.size(),
                              actor.name, order.front()))
         .note(fmt::format("they are checked in this order, and the first to raise an event interrupts: {}", list));

@@ -72,7 +72,7 @@ std::set<int> downstream(const Chart &c, const std::vector<std::vector<int>> &co
 }
 
 /// A fork's branches meet when some join takes inputs from two different branches.
-void check_forks(const model::Model &m, const Chart &c, Diagnostics &diag) {
+void check_forks(const Chart &c, Diagnostics &diag) {
   if (!diag.warning_options().is_on(Warning::UnjoinedFork)) return;  // off by default; not cheap
   std::vector<std::vector<int>> consumers(c.places.size());
   for (std::size_t t = 0; t < c.transitions.size(); ++t)
@@ -94,7 +94,7 @@ void check_forks(const model::Model &m, const Chart &c, Diagnostics &diag) {
       if (meet) break;
     }
     if (!meet)
-      diag.warning(Warning::UnjoinedFork, name_in(m, fork.range, fork.name),
+      diag.warning(Warning::UnjoinedFork, name_at(fork),
                    fmt::format("the branches that fork '{}' starts ({}) never meet again in a join", fork.name,
                                names(c, fork.outputs)))
           .note("each branch runs on its own; a join (A, B) -> C synchronises them");
@@ -103,10 +103,10 @@ void check_forks(const model::Model &m, const Chart &c, Diagnostics &diag) {
 
 } // namespace
 
-void check_sfc(const model::Model &m, const Chart &c, Diagnostics &diag, const Limits &limits, std::string &summary) {
+void check_sfc(const model::Model & /*m*/, const Chart &c, Diagnostics &diag, const Limits &limits, std::string &summary) {
   const std::size_t np = c.places.size(), nt = c.transitions.size();
   StateSpace space = explore(c, limits);
-  const SourceRange chart_at = name_in(m, c.range, c.name);
+  const SourceRange chart_at = name_at(c);
   if (space.limit_hit)
     diag.warning(Warning::AnalysisLimit, chart_at,
                  fmt::format("the analysis of sfc '{}' stopped after {} activation states and {} tick outcomes; what it "
@@ -140,7 +140,7 @@ void check_sfc(const model::Model &m, const Chart &c, Diagnostics &diag, const L
 
   for (std::size_t p = 0; p < np; ++p) {
     const auto &place = c.places[p];
-    SourceRange at = name_in(m, place.range, place.name);
+    SourceRange at = name_at(place);
     if (unbounded_at[p] >= 0)
       diag.warning(Warning::UnboundedPlace, at,
                    fmt::format("place '{}' can gain activation without bound", place.name))
@@ -162,7 +162,7 @@ void check_sfc(const model::Model &m, const Chart &c, Diagnostics &diag, const L
       std::vector<int> active, missing;
       for (int p : tr.inputs) (mk[static_cast<std::size_t>(p)] > 0 ? active : missing).push_back(p);
       if (!active.empty() && !missing.empty())
-        d.note(name_in(m, tr.range, tr.name), fmt::format("'{}' waits for {}", tr.name, names(c, missing)));
+        d.note(name_at(tr), fmt::format("'{}' waits for {}", tr.name, names(c, missing)));
     }
   }
 
@@ -173,7 +173,7 @@ void check_sfc(const model::Model &m, const Chart &c, Diagnostics &diag, const L
     for (std::size_t p = 0; p < np; ++p) {
       if (most[p] > 0 || !structural[p]) continue;  // the validator speaks of the latter
       ++unreachable;
-      diag.warning(Warning::UnreachablePlace, name_in(m, c.places[p].range, c.places[p].name),
+      diag.warning(Warning::UnreachablePlace, name_at(c.places[p]),
                    fmt::format("place '{}' can never become active: no reachable activation state holds it",
                                c.places[p].name));
     }
@@ -183,7 +183,7 @@ void check_sfc(const model::Model &m, const Chart &c, Diagnostics &diag, const L
       for (int p : tr.inputs) inputs_reach = inputs_reach && most[static_cast<std::size_t>(p)] > 0;
       if (fired[t] || !inputs_reach) continue;  // never-active inputs are reported as places
       ++dead;
-      SourceRange at = name_in(m, tr.range, tr.name);
+      SourceRange at = name_at(tr);
       if (!join_ready[t])
         diag.warning(Warning::DeadJoin, at,
                      fmt::format("join '{}' can never fire: its input places {} are never active at the same time",
@@ -195,7 +195,7 @@ void check_sfc(const model::Model &m, const Chart &c, Diagnostics &diag, const L
                                  tr.name));
     }
   }
-  check_forks(m, c, diag);
+  check_forks(c, diag);
 
   // The summary for --analyze.
   bool safe = std::all_of(most.begin(), most.end(), [](std::uint32_t k) { return k <= 1; });

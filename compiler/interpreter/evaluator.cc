@@ -2,12 +2,10 @@
 
 #include "engine.h"
 
+#include "constant.h"
+
 #include <fmt/format.h>
 
-#include <cerrno>
-#include <climits>
-#include <cmath>
-#include <cstdlib>
 
 namespace gfec::interp {
 
@@ -16,62 +14,54 @@ namespace {
 using model::Expr;
 using model::Type;
 
-/// C's usual arithmetic conversions over int, float and double.
-Type common_type(Type a, Type b) {
-  if (a == Type::Double || b == Type::Double) return Type::Double;
-  if (a == Type::Float || b == Type::Float) return Type::Float;
-  return Type::Int;
-}
-
 bool is_arithmetic(BinaryOp op) {
   return op == BinaryOp::Mul || op == BinaryOp::Div || op == BinaryOp::Mod || op == BinaryOp::Add ||
          op == BinaryOp::Sub;
 }
 
-Value int_arith(BinaryOp op, std::int64_t a, std::int64_t b, SourceRange r) {
-  if ((op == BinaryOp::Div || op == BinaryOp::Mod) && b == 0)
-    throw RuntimeError(r, "division by zero (undefined behaviour in C)");
-  std::int64_t v = 0;
-  switch (op) {
-  case BinaryOp::Mul: v = a * b; break;
-  case BinaryOp::Div: v = a / b; break;  // truncates toward zero, as C99 does
-  case BinaryOp::Mod: v = a % b; break;  // takes the dividend's sign, as C99 does
-  case BinaryOp::Add: v = a + b; break;
-  case BinaryOp::Sub: v = a - b; break;
-  default: break;
-  }
-  // INT_MIN / -1 and INT_MIN % -1 overflow in C even though the 64-bit result looks harmless.
-  bool min_by_minus_one = (op == BinaryOp::Div || op == BinaryOp::Mod) && a == INT_MIN && b == -1;
-  if (v < INT_MIN || v > INT_MAX || min_by_minus_one)
-    throw RuntimeError(r, fmt::format("int overflow: {} {} {} (undefined behaviour in C)", a, spelling(op), b));
-  return Value::of_int(static_cast<std::int32_t>(v));
+constant::Value to_constant(const Value &v) {
+  constant::Value c;
+  c.type = v.type;
+  c.b = v.b;
+  c.i = v.i;
+  c.f = v.f;
+  return c;
 }
 
-/// Float arithmetic in `T` (float or double). Results C would print or compare differently
-/// across platforms (infinities, NaNs) stop the run, as division by zero does.
-template <typename T> T float_arith(BinaryOp op, T a, T b, SourceRange r) {
-  if (op == BinaryOp::Div && b == 0) throw RuntimeError(r, "division by zero (undefined behaviour in C)");
-  T v = 0;
-  switch (op) {
-  case BinaryOp::Mul: v = a * b; break;
-  case BinaryOp::Div: v = a / b; break;
-  case BinaryOp::Add: v = a + b; break;
-  case BinaryOp::Sub: v = a - b; break;
-  default: break;
-  }
-  if (!std::isfinite(v))
-    throw RuntimeError(r, fmt::format("the result of {} {} {} is not a finite number", a, spelling(op), b));
+Value from_constant(const constant::Value &c) {
+  Value v;
+  v.type = c.type;
+  v.b = c.b;
+  v.i = c.i;
+  v.f = c.f;
   return v;
 }
 
+/// An operand as the message shows it: in the type the operation computes in.
+std::string operand_text(const Value &v, Type t) {
+  if (t == Type::Float) return fmt::format("{}", static_cast<float>(v.type == Type::Int ? static_cast<double>(v.i) : v.f));
+  if (t == Type::Double) return fmt::format("{}", v.type == Type::Int ? static_cast<double>(v.i) : v.f);
+  return fmt::format("{}", v.i);
+}
+
+/// `a op b` computed by the one evaluator (compiler/constant.h), as the validator folds it and
+/// as the generated C computes it. What C leaves undefined stops the run, at `r`.
 Value arith(BinaryOp op, const Value &a, const Value &b, SourceRange r) {
-  Type t = common_type(a.type, b.type);
-  Value x = convert(a, t, r), y = convert(b, t, r);
-  switch (t) {
-  case Type::Float:
-    return Value::of_float(float_arith<float>(op, static_cast<float>(x.f), static_cast<float>(y.f), r));
-  case Type::Double: return Value::of_double(float_arith<double>(op, x.f, y.f, r));
-  default: return int_arith(op, x.i, y.i, r);
+  constant::Outcome v = constant::binary(op, to_constant(a), to_constant(b));
+  if (v) return from_constant(v.value);
+  const Type t = constant::common_type(a.type, b.type);
+  switch (v.fault) {
+  case constant::Fault::DivisionByZero: throw RuntimeError(r, "division by zero (undefined behaviour in C)");
+  case constant::Fault::IntOverflow:
+    // INT_MIN / -1 and INT_MIN % -1 overflow in C even though the 64-bit result looks harmless.
+    throw RuntimeError(r, fmt::format("int overflow: {} {} {} (undefined behaviour in C)", a.i, spelling(op), b.i));
+  case constant::Fault::NotFinite:
+    // Results C would print or compare differently across platforms (infinities, NaNs).
+    throw RuntimeError(r, fmt::format("the result of {} {} {} is not a finite number", operand_text(a, t), spelling(op),
+                                      operand_text(b, t)));
+  default:
+    throw RuntimeError(r, fmt::format("invalid operands to '{}' (types '{}' and '{}')", spelling(op),
+                                      model::type_name(a.type), model::type_name(b.type)));
   }
 }
 
@@ -94,34 +84,19 @@ Value comparison(BinaryOp op, const Value &a, const Value &b, SourceRange r) {
   }
   if (a.type == Type::Duration && b.type == Type::Duration)  // both unsigned tick counts
     return Value::of_bool(compare(op, static_cast<std::uint64_t>(a.i), static_cast<std::uint64_t>(b.i)));
-  Type t = common_type(a.type, b.type);
-  Value x = convert(a, t, r), y = convert(b, t, r);
-  if (t == Type::Int) return Value::of_bool(compare(op, x.i, y.i));
-  return Value::of_bool(compare(op, x.f, y.f));  // a float's value is exact in a double
+  return arith(op, a, b, r);  // numbers: compared in their common type
 }
 
-Value literal_int(const Expr &e) {
-  errno = 0;
-  char *end = nullptr;
-  long long v = std::strtoll(e.text.c_str(), &end, 10);
-  if (errno != 0 || end == e.text.c_str() || *end != '\0' || v < INT_MIN || v > INT_MAX)
-    throw RuntimeError(e.range, fmt::format("the literal '{}' is not an int", e.text));
-  return Value::of_int(static_cast<std::int32_t>(v));
-}
-
+/// A literal's value: the validator parsed its spelling once (model.h). A floating literal is
+/// a double, as in C, unless the model types it otherwise (a folded float constant).
 Value literal_float(const Expr &e) {
-  char *end = nullptr;
-  double v = std::strtod(e.text.c_str(), &end);
-  if (end == e.text.c_str() || *end != '\0')
-    throw RuntimeError(e.range, fmt::format("the literal '{}' is not a number", e.text));
-  // A literal is a double, as in C, unless the model types it otherwise.
-  return convert(Value::of_double(v), e.type == Type::Float ? Type::Float : Type::Double, e.range);
+  return convert(Value::of_double(e.float_value), e.type == Type::Float ? Type::Float : Type::Double, e.range);
 }
 
 Value literal(const Expr &e) {
   switch (e.kind) {
   case Expr::Kind::Bool: return Value::of_bool(e.bool_value);
-  case Expr::Kind::Int: return literal_int(e);
+  case Expr::Kind::Int: return Value::of_int(e.int_value);
   case Expr::Kind::Float: return literal_float(e);
   case Expr::Kind::Ticks: return Value::of_ticks(e.ticks);
   default: throw RuntimeError(e.range, "a string has no value in a chart");
@@ -158,14 +133,11 @@ Value call(const Expr &e, Frame &f) {
 Value unary(const Expr &e, Frame &f) {
   Value v = evaluate(e.args.at(0), f);
   if (e.unary_op == UnaryOp::Not) return Value::of_bool(!convert(v, Type::Bool, e.range).b);
-  switch (v.type) {
-  case Type::Int:
-    if (v.i == INT_MIN) throw RuntimeError(e.range, "int overflow: -(-2147483648) (undefined behaviour in C)");
-    return Value::of_int(static_cast<std::int32_t>(-v.i));
-  case Type::Float: return Value::of_float(-static_cast<float>(v.f));
-  case Type::Double: return Value::of_double(-v.f);
-  default: throw RuntimeError(e.range, "'-' needs a number");
-  }
+  constant::Outcome r = constant::unary(e.unary_op, to_constant(v));
+  if (r) return from_constant(r.value);
+  if (r.fault == constant::Fault::IntOverflow)
+    throw RuntimeError(e.range, "int overflow: -(-2147483648) (undefined behaviour in C)");
+  throw RuntimeError(e.range, "'-' needs a number");
 }
 
 Value binary(const Expr &e, Frame &f) {

@@ -1,5 +1,7 @@
 #include "value.h"
 
+#include "constant.h"
+
 #include <fmt/format.h>
 
 #include <cfloat>
@@ -58,20 +60,16 @@ namespace {
 
 /// A floating value as an int, as C truncates it; beyond int's range C leaves it undefined.
 Value to_int(double d, SourceRange where) {
-  // Truncation first: -0.9 becomes 0, which fits.
-  double t = std::trunc(d);
-  if (!(t >= static_cast<double>(INT_MIN) && t <= static_cast<double>(INT_MAX)))
-    throw RuntimeError(where, fmt::format("{} does not fit in an int (undefined behaviour in C)", d));
-  return Value::of_int(static_cast<std::int32_t>(t));
+  auto r = constant::convert(constant::Value::of_double(d), model::Type::Int);
+  if (!r) throw RuntimeError(where, fmt::format("{} does not fit in an int (undefined behaviour in C)", d));
+  return Value::of_int(static_cast<std::int32_t>(r.value.i));
 }
 
+/// A double as a float: a finite double beyond float's range does not convert (C11 6.3.1.5).
 Value to_float(double d, SourceRange where) {
-  // A finite double beyond float's range does not convert (C11 6.3.1.5); one that rounds to the
-  // largest float does.
-  if (std::isfinite(d) && std::fabs(d) > static_cast<double>(FLT_MAX) &&
-      !std::isfinite(static_cast<float>(d)))
-    throw RuntimeError(where, fmt::format("{} does not fit in a float (undefined behaviour in C)", d));
-  return Value::of_float(static_cast<float>(d));
+  auto r = constant::convert(constant::Value::of_double(d), model::Type::Float);
+  if (!r) throw RuntimeError(where, fmt::format("{} does not fit in a float (undefined behaviour in C)", d));
+  return Value::of_float(static_cast<float>(r.value.f));
 }
 
 } // namespace

@@ -58,7 +58,7 @@ std::optional<model::Expr> const_ref(int index, SourceRange at, ExprScope &s) {
   if (s.chart) s.chart->consts.insert(index);
   model::Expr e = make(K::Const, s.cx.model.consts[index].type, at);
   e.index = index;
-  return e;
+  return check_constant(std::move(e), s.cx.model, s.cx.diag);  // folded: the constant's value
 }
 
 /// A name that denotes something other than a value, used as one.
@@ -465,15 +465,11 @@ std::optional<model::Expr> lower_expr(const ast::Expr *e, ExprScope &s) {
     return x;
   }
   case ast::Expr::Kind::Int:
-  case ast::Expr::Kind::Float:
+  case ast::Expr::Kind::Float: return number_literal(*e, s.cx.diag);
   case ast::Expr::Kind::String: {
-    // A floating literal is a double, as in C.
-    bool is_int = e->kind == ast::Expr::Kind::Int, is_float = e->kind == ast::Expr::Kind::Float;
-    model::Expr x = make(is_int ? K::Int : is_float ? K::Float : K::String,
-                         is_int ? Type::Int : is_float ? Type::Double : Type::String, e->range);
+    model::Expr x = make(K::String, Type::String, e->range);
     x.text = e->text;
-    if (!is_int && !is_float) return x;
-    return check_constant(std::move(x), s.cx.model, s.cx.diag);
+    return x;
   }
   case ast::Expr::Kind::Duration: return lower_duration(*e, s);
   case ast::Expr::Kind::Name: return lower_name(*e, s);
@@ -490,7 +486,7 @@ std::optional<model::Expr> lower_expr(const ast::Expr *e, ExprScope &s) {
     if (!inner) return std::nullopt;
     model::Expr x = make(K::Paren, inner->type, e->range);
     x.args.push_back(std::move(*inner));
-    return x;
+    return check_constant(std::move(x), s.cx.model, s.cx.diag);  // folded with its operand
   }
   }
   return std::nullopt;
@@ -603,6 +599,7 @@ std::vector<model::Stmt> lower_block(const ast::Block &b, ExprScope &s) {
       m.kind = model::Stmt::Kind::Verbatim;
       m.range = st.range;
       m.verbatim = st.verbatim;
+      m.code_begin = st.range.begin + 2;  // the lexer's range starts at `%{`
       out.push_back(std::move(m));
       break;
     }

@@ -4,108 +4,64 @@
 
 #include <fmt/format.h>
 
-#include <cmath>
 #include <cstdint>
-#include <cstdlib>
 
 namespace gfec::validation {
 
 namespace {
 
 using model::Type;
+using K = model::Expr::Kind;
 
-// Generated code computes in C's `int`, which is 32 bits on every target gfec supports.
-constexpr long long kIntMin = INT32_MIN;
-constexpr long long kIntMax = INT32_MAX;
-
-std::optional<Value> fail(Diagnostics *diag, SourceRange at, const char *message) {
-  if (diag) diag->error(at, "not-constant", message);
-  return std::nullopt;
+/// The value the model stores in `e`: a literal's, or the one check_constant() folded.
+Value stored(const model::Expr &e) {
+  switch (e.type) {
+  case Type::Bool: return Value::of_bool(e.bool_value);
+  case Type::Int: return Value::of_int(e.int_value);
+  case Type::Float: return Value::of_float(static_cast<float>(e.float_value));
+  case Type::Double: return Value::of_double(e.float_value);
+  default: return Value::of_string(e.text);
+  }
 }
 
-std::optional<Value> int_value(long long x, SourceRange at, Diagnostics *diag) {
-  if (x < kIntMin || x > kIntMax) return fail(diag, at, "integer overflow in constant expression");
-  Value v;
-  v.type = Type::Int;
-  v.i = x;
-  return v;
-}
-
-Value bool_value(bool b) {
-  Value v;
-  v.type = Type::Bool;
-  v.b = b;
-  return v;
-}
-
-double as_double(const Value &v) { return v.type == Type::Int ? static_cast<double>(v.i) : v.f; }
-
-/// A double as a C floating literal: shortest round-trip digits, always with '.' or an exponent.
-std::string float_text(double f) {
-  std::string s = fmt::format("{}", f);
-  if (s.find_first_of(".e") == std::string::npos) s += ".0";
-  return s;
-}
-
-/// A value as text, for string concatenation and number-to-string conversion.
-std::string as_text(const Value &v) {
+/// Stores `v` in `e` (model.h, Expr::folded).
+void store(model::Expr &e, const Value &v) {
+  e.folded = true;
   switch (v.type) {
-  case Type::String: return v.s;
-  case Type::Int: return std::to_string(v.i);
-  case Type::Bool: return v.b ? "true" : "false";
-  default: return fmt::format("{}", v.f);
+  case Type::Bool: e.bool_value = v.b; break;
+  case Type::Int: e.int_value = static_cast<std::int32_t>(v.i); break;
+  case Type::Float:
+  case Type::Double: e.float_value = v.f; break;
+  default: e.text = v.s; break;
   }
 }
 
-std::optional<Value> compare(BinaryOp op, const Value &a, const Value &b) {
-  int order;
-  if (a.type == Type::Bool) order = static_cast<int>(a.b) - static_cast<int>(b.b);
-  else if (a.type == Type::Int && b.type == Type::Int) order = (a.i > b.i) - (a.i < b.i);
-  else order = (as_double(a) > as_double(b)) - (as_double(a) < as_double(b));
-  switch (op) {
-  case BinaryOp::Lt: return bool_value(order < 0);
-  case BinaryOp::Le: return bool_value(order <= 0);
-  case BinaryOp::Gt: return bool_value(order > 0);
-  case BinaryOp::Ge: return bool_value(order >= 0);
-  case BinaryOp::Eq: return bool_value(order == 0);
-  case BinaryOp::Ne: return bool_value(order != 0);
-  default: return std::nullopt;
+/// A literal, or an expression already folded: known without evaluating its operands again.
+bool known(const model::Expr &e) {
+  switch (e.kind) {
+  case K::Bool:
+  case K::Int:
+  case K::Float:
+  case K::String:
+  case K::Const: return true;
+  case K::Paren: return !e.args.empty() && known(e.args[0]);
+  default: return e.folded;
   }
 }
 
-std::optional<Value> arithmetic(const model::Expr &e, const Value &a, const Value &b, Diagnostics *diag) {
-  BinaryOp op = e.binary_op;
-  if (op == BinaryOp::Add && (a.type == Type::String || b.type == Type::String)) {
-    Value v;
-    v.type = Type::String;
-    v.s = as_text(a) + as_text(b);
-    return v;
+/// A value, or the fault reported at `at` as the validator words it.
+std::optional<Value> checked(const constant::Outcome &r, SourceRange at, Diagnostics *diag) {
+  if (r) return r.value;
+  if (!diag) return std::nullopt;
+  switch (r.fault) {
+  case constant::Fault::IntOverflow: diag->error(at, "not-constant", "integer overflow in constant expression"); break;
+  case constant::Fault::DivisionByZero: diag->error(at, "not-constant", "division by zero in constant expression"); break;
+  case constant::Fault::NotFinite:
+    diag->error(at, "not-constant", "floating-point overflow in constant expression");
+    break;
+  default: break;  // operands the type checks reported already
   }
-  bool zero = b.type == Type::Int ? b.i == 0 : b.f == 0;
-  if ((op == BinaryOp::Div || op == BinaryOp::Mod) && zero)
-    return fail(diag, e.range, "division by zero in constant expression");
-  if (a.type == Type::Int && b.type == Type::Int) {
-    switch (op) {
-    case BinaryOp::Add: return int_value(a.i + b.i, e.range, diag);
-    case BinaryOp::Sub: return int_value(a.i - b.i, e.range, diag);
-    case BinaryOp::Mul: return int_value(a.i * b.i, e.range, diag);
-    case BinaryOp::Div: return int_value(a.i / b.i, e.range, diag);
-    case BinaryOp::Mod: return int_value(a.i % b.i, e.range, diag);
-    default: return std::nullopt;
-    }
-  }
-  Value v;
-  v.type = e.type;
-  double x = as_double(a), y = as_double(b);
-  switch (op) {
-  case BinaryOp::Add: v.f = x + y; break;
-  case BinaryOp::Sub: v.f = x - y; break;
-  case BinaryOp::Mul: v.f = x * y; break;
-  case BinaryOp::Div: v.f = x / y; break;
-  default: return std::nullopt;
-  }
-  if (!std::isfinite(v.f)) return fail(diag, e.range, "floating-point overflow in constant expression");
-  return v;
+  return std::nullopt;
 }
 
 std::optional<Value> binary(const model::Expr &e, const model::Model &m, Diagnostics *diag) {
@@ -115,96 +71,112 @@ std::optional<Value> binary(const model::Expr &e, const model::Model &m, Diagnos
     return a;
   auto b = evaluate(e.args[1], m, diag);
   if (!a || !b) return std::nullopt;
-  switch (e.binary_op) {
-  case BinaryOp::And:
-  case BinaryOp::Or: return b;  // `a` did not decide, so `b` does
-  case BinaryOp::Lt:
-  case BinaryOp::Le:
-  case BinaryOp::Gt:
-  case BinaryOp::Ge:
-  case BinaryOp::Eq:
-  case BinaryOp::Ne: return compare(e.binary_op, *a, *b);
-  default: return arithmetic(e, *a, *b, diag);
-  }
-}
-
-std::optional<Value> unary(const model::Expr &e, const model::Model &m, Diagnostics *diag) {
-  auto a = evaluate(e.args[0], m, diag);
-  if (!a) return std::nullopt;
-  if (e.unary_op == UnaryOp::Not) return bool_value(!a->b);
-  if (a->type == Type::Int) return int_value(-a->i, e.range, diag);
-  a->f = -a->f;
-  return a;
+  return checked(constant::binary(e.binary_op, *a, *b), e.range, diag);
 }
 
 } // namespace
 
 std::optional<Value> evaluate(const model::Expr &e, const model::Model &m, Diagnostics *diag) {
-  using K = model::Expr::Kind;
-  Value v;
-  v.type = e.type;
+  if (e.folded) return stored(e);
   switch (e.kind) {
-  case K::Bool: return bool_value(e.bool_value);
-  case K::Int: {
-    long long x = std::strtoll(e.text.c_str(), nullptr, 10);
-    if (x > kIntMax) {
-      if (diag) diag->error(e.range, "not-constant", fmt::format("integer constant '{}' is too large for 'int'", e.text));
-      return std::nullopt;
-    }
-    v.i = x;
-    return v;
-  }
-  case K::Float: v.f = std::strtod(e.text.c_str(), nullptr); return v;
-  case K::String: v.s = e.text; return v;
+  case K::Bool: return Value::of_bool(e.bool_value);
+  case K::Int:
+  case K::Float: return stored(e);  // the value number_literal() parsed
+  case K::String: return Value::of_string(e.text);
   case K::Const:
     if (e.index < 0 || e.index >= static_cast<int>(m.consts.size())) return std::nullopt;
     return evaluate(m.consts[e.index].value, m, diag);
   case K::Paren: return e.args.empty() ? std::nullopt : evaluate(e.args[0], m, diag);
-  case K::Unary: return e.args.size() == 1 ? unary(e, m, diag) : std::nullopt;
+  case K::Unary: {
+    if (e.args.size() != 1) return std::nullopt;
+    auto a = evaluate(e.args[0], m, diag);
+    if (!a) return std::nullopt;
+    return checked(constant::unary(e.unary_op, *a), e.range, diag);
+  }
   case K::Binary: return e.args.size() == 2 ? binary(e, m, diag) : std::nullopt;
   default: return std::nullopt;  // runs on the robot: a var, a call, a timer, a config entry
   }
 }
 
+std::optional<model::Expr> number_literal(const ast::Expr &e, Diagnostics &diag) {
+  model::Expr x;
+  x.range = e.range;
+  x.text = e.text;
+  if (e.kind == ast::Expr::Kind::Int) {
+    auto v = constant::int_literal(e.text);
+    if (!v) {
+      diag.error(e.range, "not-constant", fmt::format("integer constant '{}' is too large for 'int'", e.text));
+      return std::nullopt;
+    }
+    x.kind = K::Int;
+    x.type = Type::Int;
+    x.int_value = *v;
+    return x;
+  }
+  auto v = constant::float_literal(e.text);
+  if (!v) {
+    diag.error(e.range, "not-constant", fmt::format("floating constant '{}' is too large for 'double'", e.text));
+    return std::nullopt;
+  }
+  x.kind = K::Float;
+  x.type = Type::Double;  // a floating literal is a double, as in C
+  x.float_value = *v;
+  return x;
+}
+
 std::optional<model::Expr> check_constant(std::optional<model::Expr> x, const model::Model &m, Diagnostics &diag) {
-  if (!x) return x;
+  if (!x || x->kind == K::Int || x->kind == K::Float) return x;
   for (const auto &a : x->args)
-    if (!evaluate(a, m, nullptr)) return x;  // not constant: evaluated on the robot
+    if (!known(a)) return x;  // not constant: evaluated on the robot
   std::size_t errors = diag.error_count();
   auto v = evaluate(*x, m, &diag);
   if (diag.error_count() != errors) return std::nullopt;
-  if (v && x->kind == model::Expr::Kind::Float && !std::isfinite(v->f)) {
-    diag.error(x->range, "not-constant", fmt::format("floating constant '{}' is too large for 'double'", x->text));
-    return std::nullopt;
-  }
+  if (v) store(*x, *v);
   return x;
 }
 
 std::optional<model::Expr> to_literal(const Value &v, model::Type to, SourceRange range, Diagnostics &diag,
                                       const model::Expr *spelling) {
-  using K = model::Expr::Kind;
   model::Expr e;
   e.type = to;
   e.range = range;
   if (to == Type::Bool && v.type == Type::Bool) {
     e.kind = K::Bool;
     e.bool_value = v.b;
-  } else if (to == Type::Int && model::is_numeric(v.type)) {
-    double x = as_double(v);  // C converts by truncation toward zero
-    if (v.type != Type::Int && (x < kIntMin || x > kIntMax)) {
-      diag.error(range, "not-constant", fmt::format("value {} does not fit in 'int'", x));
-      return std::nullopt;
-    }
-    e.kind = K::Int;
-    e.text = std::to_string(v.type == Type::Int ? v.i : static_cast<long long>(x));
-  } else if ((to == Type::Float || to == Type::Double) && model::is_numeric(v.type)) {
-    e.kind = K::Float;
-    e.text = spelling && spelling->kind == K::Float ? spelling->text : float_text(as_double(v));
-  } else if (to == Type::String) {
-    e.kind = K::String;
-    e.text = as_text(v);
-  } else {
+    return e;
+  }
+  if (!(model::is_numeric(to) && model::is_numeric(v.type)) && to != Type::String)
     return std::nullopt;  // the caller reported the type mismatch
+  auto c = constant::convert(v, to);
+  if (!c) {
+    if (c.fault == constant::Fault::DoesNotFit)
+      diag.error(range, "not-constant", fmt::format(to == Type::Int ? "value {} does not fit in 'int'" : "value {} is too large for 'float'", v.f));
+    return std::nullopt;
+  }
+  const Value &w = c.value;
+  switch (to) {
+  case Type::Int:
+    e.kind = K::Int;
+    e.int_value = static_cast<std::int32_t>(w.i);
+    e.text = std::to_string(w.i);
+    break;
+  case Type::Float:
+  case Type::Double:
+    e.kind = K::Float;
+    // A literal the user wrote keeps its spelling, so generated code shows `0.6` rather than
+    // `0.59999999999999998`; its value is the spelling's (converted to `to` where it is read).
+    if (spelling && spelling->kind == K::Float && !spelling->folded) {
+      e.text = spelling->text;
+      e.float_value = spelling->float_value;
+    } else {
+      e.text = constant::float_spelling(w.f, to);
+      e.float_value = w.f;
+    }
+    break;
+  default:
+    e.kind = K::String;
+    e.text = w.s;
+    break;
   }
   return e;
 }

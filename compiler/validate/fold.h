@@ -2,6 +2,7 @@
 // checks which conditions are constant (a transition `when false` is dead).
 #pragma once
 
+#include "constant.h"
 #include "model.h"
 #include "validate/context.h"
 
@@ -10,26 +11,26 @@
 
 namespace gfec::validation {
 
-/// A compile-time value; `type` says which member holds it (Int in `i`, Float/Double in `f`).
-struct Value {
-  model::Type type = model::Type::Int;
-  bool b = false;
-  long long i = 0;
-  double f = 0;
-  std::string s;
-};
+/// A compile-time value: the one evaluator's (compiler/constant.h).
+using Value = constant::Value;
 
-/// Evaluates `e` with C's semantics (int arithmetic in 32 bits, && and || short-circuit). Not
-/// constant (a call, a var, a timer...) gives nothing. Division by zero and int overflow are
-/// reported when `diag` is given, silently give nothing otherwise.
+/// Evaluates `e` with C's semantics (compiler/constant.h: int arithmetic in 32 bits, float in
+/// float, && and || short-circuit); a literal or an expression check_constant() folded gives the
+/// value the model stores. Not constant (a call, a var, a timer...) gives nothing. Division by
+/// zero and overflow are reported when `diag` is given, silently give nothing otherwise.
 std::optional<Value> evaluate(const model::Expr &e, const model::Model &model, Diagnostics *diag);
 
 /// One rule for numbers wherever they stand (docs/language.md, "Numbers"): `x` (a literal, or
 /// an operator just lowered) is evaluated as C would at compile time if its operands are
 /// constant; an int literal past INT_MAX, a float literal past DBL_MAX, int overflow, float
 /// overflow and division by zero are errors at the expression, and give nothing. Each is
-/// reported once: an operand that failed is no longer constant above it.
+/// reported once: an operand that failed is no longer constant above it. A constant `x` comes
+/// back folded: its value stored in it for every later stage (model.h, Expr::folded).
 std::optional<model::Expr> check_constant(std::optional<model::Expr> x, const model::Model &model, Diagnostics &diag);
+
+/// An int or floating literal of the syntax tree with its value, parsed here once for every
+/// later stage; an int above INT_MAX or a floating literal beyond double's range is an error.
+std::optional<model::Expr> number_literal(const ast::Expr &e, Diagnostics &diag);
 
 /// The literal for `v` as a value of type `to` (numbers convert as C converts them; a number
 /// becomes a string as it would be printed). `spelling`, when given, is kept for a literal the

@@ -119,16 +119,8 @@ std::optional<model::Expr> lower_formula(const ast::Expr *e, Context &cx, PlanSc
     x.bool_value = e->bool_value;
     return x;
   }
-  case ast::Expr::Kind::Int: {
-    model::Expr x = make(K::Int, Type::Int, e->range);
-    x.text = e->text;
-    return check_constant(std::move(x), cx.model, cx.diag);
-  }
-  case ast::Expr::Kind::Float: {
-    model::Expr x = make(K::Float, Type::Double, e->range);
-    x.text = e->text;
-    return check_constant(std::move(x), cx.model, cx.diag);
-  }
+  case ast::Expr::Kind::Int:
+  case ast::Expr::Kind::Float: return number_literal(*e, cx.diag);
   case ast::Expr::Kind::String: {
     model::Expr x = make(K::String, Type::String, e->range);
     x.text = e->text;
@@ -146,7 +138,7 @@ std::optional<model::Expr> lower_formula(const ast::Expr *e, Context &cx, PlanSc
     if (!inner) return std::nullopt;
     model::Expr x = make(K::Paren, inner->type, e->range);
     x.args.push_back(std::move(*inner));
-    return x;
+    return check_constant(std::move(x), cx.model, cx.diag);  // folded with its operand
   }
   }
   return std::nullopt;

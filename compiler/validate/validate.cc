@@ -18,7 +18,7 @@ void collect_verbatims(validation::Context &cx) {
     if (!*it) continue;
     for (const ast::Verbatim &v : (*it)->verbatims) {
       cx.diag.warning(Warning::Verbatim, v.range, "verbatim code is copied unchecked: gfec cannot check it");
-      cx.model.verbatims.push_back({v.text, v.range});
+      cx.model.verbatims.push_back({v.text, v.range, v.range.begin + 2});  // the lexer's range starts at `%{`
     }
   }
 }

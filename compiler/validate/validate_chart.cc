@@ -94,6 +94,7 @@ void declare_place(Context &cx, ChartScope &s, const ast::Place &p, int index) {
                                                          : model::Terminal::None;
   out.runs = cx.runs[static_cast<std::size_t>(s.index)][static_cast<std::size_t>(index)];
   out.range = p.range;
+  out.name_range = p.name.range;
   s.out.places.push_back(std::move(out));
   if (s.names.declare(p.name, s.is_fsm() ? Sym::State : Sym::Place, index, cx.diag))
     check_generated_name(cx, s, p.name, s.place_word());
@@ -152,6 +153,7 @@ void name_transitions(Context &cx, ChartScope &s) {
     out.named = t.name.has_value();
     out.name = out.named ? t.name->text : fmt::format("T{}", i);
     out.range = t.range;
+    out.name_range = out.named ? t.name->range : t.range;
     if (!out.named) {
       if (const Symbol *clash = s.names.find(out.name)) {
         cx.diag.error(t.range, "duplicate-name", fmt::format("this unnamed transition is named '{}' by its position, "
@@ -213,6 +215,7 @@ void declare_chart(Context &cx, const ast::Chart &chart) {
   out.name = chart.name.text;
   out.in_main_file = cx.in_main_file(chart.range);
   out.range = chart.range;
+  out.name_range = chart.name.range;
   int index = static_cast<int>(cx.model.charts.size());
   cx.model.charts.push_back(std::move(out));
   cx.charts.push_back(&chart);

@@ -26,7 +26,7 @@ std::vector<int> lower_config_types(Context &cx, PlanScope &s) {
     for (const ast::ConfigEntry &e : block) {
       auto type = lower_type(e.type, kScalar | kString | kObject, "a config entry", cx.diag);
       index.push_back(type ? static_cast<int>(s.out.config.size()) : -1);
-      if (type) s.out.config.push_back({e.name.text, *type, std::nullopt, e.range});
+      if (type) s.out.config.push_back({e.name.text, *type, std::nullopt, e.range, e.name.range});
     }
   }
   return index;
@@ -144,6 +144,7 @@ model::ActorUse lower_actor(Context &cx, PlanScope &s, const ast::ActorUse &a) {
   model::ActorUse out;
   out.name = a.name.text;
   out.range = a.range;
+  out.name_range = a.name.range;
   auto c = resolve_callee(cx, s, a.template_name, false);
   bool computation = c && c->templ >= 0 && cx.model.templates[c->templ].kind == model::Template::Kind::Computation;
   if (c && a.written_as_computation && !computation)

@@ -1,0 +1,87 @@
+// The one evaluator of the language's values with C's semantics (docs/language.md, "Constants";
+// docs/internals.md, "Constants"). The validator folds constant expressions with it, the
+// interpreter computes with it at run time, and the literals' values the model stores come from
+// its parsers: compiler, interpreter and generated C can only disagree where C itself would.
+//
+// Arithmetic happens in the type C's usual arithmetic conversions give: `int` (32 bits), `float`
+// (every result rounded to float, as C computes float operands with FLT_EVAL_METHOD 0) or
+// `double`. What C leaves undefined — int overflow, INT_MIN / -1 and INT_MIN % -1, division by
+// zero — and a floating result that is not a finite number are faults, never values.
+#pragma once
+
+#include "model.h"
+#include "operators.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace gfec::constant {
+
+/// A value of the language; `type` says which member holds it.
+struct Value {
+  model::Type type = model::Type::Int;
+  bool b = false;      ///< Bool
+  std::int64_t i = 0;  ///< Int: always within int's 32 bits
+  double f = 0;        ///< Float: always a value a float holds; Double
+  std::string s;       ///< String (plan formulas only)
+
+  static Value of_bool(bool v);
+  static Value of_int(std::int32_t v);
+  static Value of_float(float v);
+  static Value of_double(double v);
+  static Value of_string(std::string v);
+};
+
+/// Why an operation has no value.
+enum class Fault {
+  None,
+  IntOverflow,     ///< the int result does not fit 32 bits (INT_MIN / -1 and INT_MIN % -1 too)
+  DivisionByZero,  ///< `/` or `%` by zero, int or floating
+  NotFinite,       ///< a floating result that is an infinity or a NaN
+  DoesNotFit,      ///< a conversion to a type that cannot hold the value (3e9 to int, 1e39 to float)
+  BadOperands,     ///< operands the validator never lets through (a bool in arithmetic...)
+};
+
+struct Outcome {
+  Value value;
+  Fault fault = Fault::None;
+  explicit operator bool() const { return fault == Fault::None; }
+};
+
+/// A decimal int literal's value ("010" is 10: chart literals are decimal); nothing if it has
+/// characters other than digits or is above INT_MAX.
+std::optional<std::int32_t> int_literal(std::string_view spelling);
+
+/// A floating literal's value as C reads it (a double); nothing if it is malformed or beyond
+/// double's range (`1e999`).
+std::optional<double> float_literal(std::string_view spelling);
+
+/// `v` converted to `to` as C converts on assignment: int to floating rounds, floating to int
+/// truncates (DoesNotFit beyond int's range), double to float rounds (DoesNotFit beyond float's
+/// range), a number to a string as it would be printed (plan formulas).
+Outcome convert(const Value &v, model::Type to);
+
+/// C's usual arithmetic conversions: the type `a op b` computes in.
+model::Type common_type(model::Type a, model::Type b);
+
+/// `op a`: `!` on a bool, `-` on a number.
+Outcome unary(UnaryOp op, const Value &a);
+
+/// `a op b` for arithmetic and comparisons, in the common type; `&&` and `||` on two bools (the
+/// caller short-circuits); `+` with a string operand joins text (plan formulas).
+Outcome binary(BinaryOp op, const Value &a, const Value &b);
+
+/// A value as text: strings as they are, ints in decimal, floats with the shortest digits that
+/// read back as the same float (or double), bools as `true`/`false`.
+std::string text(const Value &v);
+
+/// A floating value as a C floating literal without suffix: the shortest digits that read back
+/// as the same value of type `t` (float or double), always with a '.' or an exponent.
+std::string float_spelling(double f, model::Type t);
+
+/// A short description of a fault, for messages: "integer overflow", "division by zero", ...
+const char *describe(Fault f);
+
+} // namespace gfec::constant
