@@ -3,6 +3,8 @@
 // twice or nested, and what a plan without formulas leaves out. Where the point is that the
 // output compiles, it is compiled (g++, against the skeletons of its toolboxes).
 #include "../run/cpp_backend_support.h"
+#include "loader.h"
+#include "validate.h"
 
 using namespace cppt;
 
