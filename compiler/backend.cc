@@ -1,5 +1,8 @@
 #include "backend.h"
 
+#include <memory>
+#include <sstream>
+
 namespace gfec {
 
 std::string replace_extension(const std::string &path, const std::string &ext) {
@@ -7,6 +10,40 @@ std::string replace_extension(const std::string &path, const std::string &ext) {
   auto dot = path.find_last_of('.');
   if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return path + ext;
   return path.substr(0, dot) + ext;
+}
+
+namespace {
+
+class MemorySink : public OutputSink {
+public:
+  std::ostream &open(const std::string &path) override {
+    finish();
+    paths_.push_back(path);
+    current_ = std::make_unique<std::ostringstream>();
+    return *current_;
+  }
+  std::vector<OutputFile> take() {
+    finish();
+    return std::move(files_);
+  }
+
+private:
+  void finish() {
+    if (!current_) return;
+    files_.push_back({paths_.back(), current_->str()});
+    current_.reset();
+  }
+  std::vector<std::string> paths_;
+  std::unique_ptr<std::ostringstream> current_;
+  std::vector<OutputFile> files_;
+};
+
+} // namespace
+
+std::vector<OutputFile> emit_to_memory(const Backend &backend, const model::Model &model, const EmitOptions &options) {
+  MemorySink sink;
+  backend.emit(model, options, sink);
+  return sink.take();
 }
 
 std::string base_name(const std::string &path) {

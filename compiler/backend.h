@@ -1,9 +1,11 @@
-// The one interface every back end implements. Back ends read the model and return text;
-// the driver owns the file system (temporary files, renames, dependency files).
+// The one interface every back end implements. Back ends read the model and write text to the
+// streams an OutputSink gives them; the driver owns the file system (temporary files, renames,
+// dependency files) and decides what is compiled (pipeline/compilation.h).
 #pragma once
 
 #include "model.h"
 
+#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -23,18 +25,35 @@ struct EmitOptions {
   std::string output_path;      ///< the primary output as the user named it (e.g. "engine.c")
   std::string source_name;      ///< the chart file as the user named it, for the header comment
   bool line_directives = true;  ///< `#line` back to the chart
+  // What to compile, as pipeline::select_target chose it; exactly the one the back end accepts
+  // is set (a back end given none is a bug of its caller and throws std::invalid_argument).
   int chart = -1;               ///< index into Model::charts to compile, or -1
   int plan = -1;                ///< index into Model::plans to compile, or -1
   int toolbox = -1;             ///< index into Model::toolboxes (toolbox skeleton), or -1
   EngineForm engine = EngineForm::Auto;  ///< C back end: `--engine=auto|readable|scalable`
 };
 
+/// Where a back end writes: one stream per output file, opened in order, the primary output
+/// first (e.g. engine.c, then engine.h beside it). The driver's sink writes each to its safe
+/// temporary file (compiler/driver/safe_output.h) and renames them into place only when the
+/// whole compile succeeded; a name it refuses gives a stream that discards (the driver reports).
+class OutputSink {
+public:
+  virtual ~OutputSink() = default;
+  /// The stream for the output `path`; valid until the next open() or the end of emit().
+  virtual std::ostream &open(const std::string &path) = 0;
+};
+
 class Backend {
 public:
   virtual ~Backend() = default;
-  /// The files to write: the primary output first (e.g. engine.c, then engine.h beside it).
-  virtual std::vector<OutputFile> emit(const model::Model &model, const EmitOptions &options) const = 0;
+  /// Writes the outputs for the chart, plan or toolbox `options` names.
+  virtual void emit(const model::Model &model, const EmitOptions &options, OutputSink &sink) const = 0;
 };
+
+/// The outputs in memory, in the order the back end opened them: for tests and for uses inside
+/// the process (the run viewer's picture).
+std::vector<OutputFile> emit_to_memory(const Backend &backend, const model::Model &model, const EmitOptions &options);
 
 /// "dir/engine.c" with extension ".h" -> "dir/engine.h"; a name without extension gets it added.
 std::string replace_extension(const std::string &path, const std::string &ext);

@@ -1,17 +1,32 @@
 #include "code_writer.h"
 
 #include <algorithm>
+#include <ostream>
 
 namespace gfec {
 
 CodeWriter::CodeWriter(std::string output_name, bool line_directives)
     : output_name_(std::move(output_name)), line_directives_(line_directives) {}
 
+CodeWriter::CodeWriter(std::ostream &out, std::string output_name, bool line_directives)
+    : stream_(&out), output_name_(std::move(output_name)), line_directives_(line_directives) {
+  out_.reserve(kBlock + 4096);
+}
+
+CodeWriter::~CodeWriter() { flush(); }
+
+void CodeWriter::flush() {
+  if (!stream_ || out_.empty()) return;
+  stream_->write(out_.data(), static_cast<std::streamsize>(out_.size()));
+  out_.clear();
+}
+
 void CodeWriter::put_line(std::string_view text) {
   if (!text.empty()) out_.append(static_cast<std::size_t>(depth_) * 4, ' ');
   out_.append(text);
   out_.push_back('\n');
   lines_ += 1 + static_cast<unsigned>(std::count(text.begin(), text.end(), '\n'));
+  maybe_flush();
 }
 
 void CodeWriter::blank() { put_line({}); }
@@ -23,6 +38,7 @@ void CodeWriter::raw(std::string_view text) {
     out_.push_back('\n');
     ++lines_;
   }
+  maybe_flush();
 }
 
 void CodeWriter::line_from(const SourceManager &sources, const SourceRange &range) {

@@ -1,11 +1,14 @@
 // The printer generated code goes through: it owns indentation, counts output lines and writes
-// `#line` directives, so every back end gets them right the same way.
+// `#line` directives, so every back end gets them right the same way. It writes either into a
+// string (take()) or through to a stream the driver opened on the output's temporary file, in
+// blocks, so a large engine is never held in memory whole (docs/architecture.md).
 #pragma once
 
 #include "source.h"
 
 #include <fmt/format.h>
 
+#include <iosfwd>
 #include <string>
 #include <string_view>
 
@@ -15,6 +18,15 @@ class CodeWriter {
 public:
   /// `output_name` is the generated file's name as `#line` should spell it when pointing back.
   CodeWriter(std::string output_name, bool line_directives);
+  /// The same, writing through to `out` (flushed in blocks and when the writer is destroyed);
+  /// text() and take() then hold only what has not reached `out` yet.
+  CodeWriter(std::ostream &out, std::string output_name, bool line_directives);
+  ~CodeWriter();
+  CodeWriter(const CodeWriter &) = delete;
+  CodeWriter &operator=(const CodeWriter &) = delete;
+
+  /// Hands what is buffered to the stream (nothing without one).
+  void flush();
 
   /// One line of code at the current indentation.
   template <typename... Args> void line(fmt::format_string<Args...> format, Args &&...args) {
@@ -39,6 +51,13 @@ public:
 
 private:
   void put_line(std::string_view text);
+  /// After each line: past a block's worth, the buffer goes to the stream.
+  void maybe_flush() {
+    if (stream_ && out_.size() >= kBlock) flush();
+  }
+  static constexpr std::size_t kBlock = 1 << 16;
+
+  std::ostream *stream_ = nullptr;
 
   std::string output_name_;
   bool line_directives_;

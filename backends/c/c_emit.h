@@ -5,14 +5,15 @@
 #include "c_context.h"
 #include "code_writer.h"
 
+#include <iosfwd>
 #include <string>
 
 namespace gfec::c_backend {
 
 /// engine.h: the types, the API, the hooks and the interface prototypes.
-std::string emit_header(const Context &c);
+void emit_header(const Context &c, std::ostream &out);
 /// engine.c: includes, file-level verbatim code, _init, _run and the accessors.
-std::string emit_source(const Context &c);
+void emit_source(const Context &c, std::ostream &out);
 
 /// The enumerations of a chart's places and transitions (the root's in engine.h, an instance's
 /// in engine.c).

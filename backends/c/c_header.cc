@@ -183,8 +183,8 @@ void interface_functions(CodeWriter &w, const Context &c) {
 
 } // namespace
 
-std::string emit_header(const Context &c) {
-  CodeWriter w(c.header_file, false);
+void emit_header(const Context &c, std::ostream &out) {
+  CodeWriter w(out, c.header_file, false);
   w.line(std::string_view(banner(c)));
   directive(w, "#ifndef " + c.guard);
   directive(w, "#define " + c.guard);
@@ -216,7 +216,6 @@ std::string emit_header(const Context &c) {
   directive(w, "#endif");
   w.blank();
   directive(w, fmt::format("#endif /* {} */", c.guard));
-  return w.take();
 }
 
 } // namespace gfec::c_backend

@@ -258,8 +258,8 @@ std::string banner(const Context &c) {
 
 void directive(CodeWriter &w, const std::string &text) { w.raw(text + "\n"); }
 
-std::string emit_source(const Context &c) {
-  CodeWriter w(c.source_file, c.options.line_directives);
+void emit_source(const Context &c, std::ostream &out) {
+  CodeWriter w(out, c.source_file, c.options.line_directives);
   w.line(std::string_view(banner(c)));
   includes(w, c);
   verbatims(w, c);
@@ -283,7 +283,6 @@ std::string emit_source(const Context &c) {
   run_function(w, c);
   w.blank();
   accessors(w, c);
-  return w.take();
 }
 
 } // namespace gfec::c_backend

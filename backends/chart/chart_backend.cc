@@ -3,6 +3,7 @@
 #include "chart_expr.h"
 #include "code_writer.h"
 
+#include <ostream>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -120,10 +121,10 @@ void chart(CodeWriter &w, const model::Model &m, int index) {
 
 class ChartBackend : public Backend {
 public:
-  std::vector<OutputFile> emit(const model::Model &m, const EmitOptions &o) const override {
+  void emit(const model::Model &m, const EmitOptions &o, OutputSink &sink) const override {
     // Plans and toolboxes are chart text already; this back end exists to convert other inputs.
     if (o.chart < 0) throw std::runtime_error("--emit=chart writes sfc and fsm charts; choose one with --chart");
-    CodeWriter w(o.output_path, false);
+    CodeWriter w(sink.open(o.output_path), o.output_path, false);
     std::set<int> charts = charts_to_write(m, o.chart);
     w.line("// Converted by gfec {} from {}: compiling this file gives the same engine.", GFEC_VERSION, o.source_name);
     w.blank();
@@ -146,7 +147,6 @@ public:
       first = false;
       chart(w, m, c);
     }
-    return {{o.output_path, w.take()}};
   }
 };
 

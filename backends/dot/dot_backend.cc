@@ -3,6 +3,7 @@
 #include "dot_chart.h"
 #include "dot_plan.h"
 
+#include <ostream>
 #include <stdexcept>
 
 namespace gfec {
@@ -11,8 +12,8 @@ namespace {
 
 class DotBackend : public Backend {
 public:
-  std::vector<OutputFile> emit(const model::Model &m, const EmitOptions &o) const override {
-    return {{o.output_path, dot_picture(m, o)}};
+  void emit(const model::Model &m, const EmitOptions &o, OutputSink &sink) const override {
+    sink.open(o.output_path) << dot_picture(m, o);
   }
 };
 

@@ -2,6 +2,7 @@
 // libgvc: Graphviz stays an optional tool, found on PATH when a user asks for SVG.
 #include "dot_backend.h"
 
+#include <ostream>
 #include <fmt/format.h>
 
 #include <cerrno>
@@ -84,8 +85,8 @@ std::string render_svg(const std::string &dot_text) {
 
 class SvgBackend : public Backend {
 public:
-  std::vector<OutputFile> emit(const model::Model &m, const EmitOptions &o) const override {
-    return {{o.output_path, render_svg(dot_picture(m, o))}};
+  void emit(const model::Model &m, const EmitOptions &o, OutputSink &sink) const override {
+    sink.open(o.output_path) << render_svg(dot_picture(m, o));
   }
 };
 

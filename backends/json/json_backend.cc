@@ -3,6 +3,7 @@
 #include "json_expr.h"
 #include "roots.h"
 
+#include <ostream>
 #include <algorithm>
 #include <stdexcept>
 
@@ -285,12 +286,12 @@ struct PlanWriter {
 
 class JsonBackend : public Backend {
 public:
-  std::vector<OutputFile> emit(const model::Model &m, const EmitOptions &o) const override {
+  void emit(const model::Model &m, const EmitOptions &o, OutputSink &sink) const override {
     Json doc;
     if (o.chart >= 0) doc = chart_document(m, o, m.charts.at(at(o.chart)));
     else if (o.plan >= 0) doc = PlanWriter{m, m.plans.at(at(o.plan))}.document(o);
     else throw std::invalid_argument("json back end: no chart or plan chosen");
-    return {{o.output_path, doc.dump(2, ' ', false, Json::error_handler_t::replace) + "\n"}};
+    sink.open(o.output_path) << doc.dump(2, ' ', false, Json::error_handler_t::replace) << "\n";
   }
 };
 

@@ -3,8 +3,7 @@
 #include "analysis/analysis.h"
 #include "diagnostic_report.h"
 #include "driver.h"
-#include "loader.h"
-#include "validate.h"
+#include "pipeline/compilation.h"
 
 #include <fmt/format.h>
 
@@ -29,22 +28,18 @@ WarningOptions analysis_warnings(const Options &o) {
 }
 
 int analyze_one(const std::string &input, const Options &o, DiagnosticReport &report, std::ostream &out) {
-  SourceManager sources;
-  Diagnostics diag(analysis_warnings(o), o.error_limit);
-  RealFileSystem fs;
-  LoadResult loaded = load_program(input, {o.include_dirs}, fs, sources, diag);
-  model::Model model;
+  pipeline::FrontEndOptions f = front_end_options(o);
+  f.warnings = analysis_warnings(o);
+  f.analyze = false;  // analysis_report runs them all, once, and says what they found
+  pipeline::Compilation c(f);
   std::string summary;
-  if (!loaded.main_unreadable && !diag.has_errors()) {
-    model = validate(loaded.program, sources, diag);
-    if (!diag.has_errors()) summary = analysis::analysis_report(model, diag);
-  }
-  report.add(input, diag, sources);
-  if (loaded.main_unreadable) {
+  if (c.front_end(input)) summary = analysis::analysis_report(c.model, c.diag);
+  report.add(input, c.diag, c.sources);
+  if (c.unreadable()) {
     report.tool_error(input, fmt::format("cannot read '{}'", input), false);
     return kExitUsageOrIo;
   }
-  if (diag.has_errors()) return kExitInputError;
+  if (c.diag.has_errors()) return kExitInputError;
   out << fmt::format("{}:\n", input);
   if (summary.empty()) summary = "  no sfc, fsm or plan to analyse\n";
   for (std::size_t at = 0, nl; (nl = summary.find('\n', at)) != std::string::npos; at = nl + 1)

@@ -6,39 +6,76 @@
 #include "dot_backend.h"
 #include "json_backend.h"
 
+#include <fmt/format.h>
+
 namespace gfec {
 
 namespace {
 
-struct Entry {
-  const char *name;
-  std::unique_ptr<Backend> (*make)();
-};
+constexpr unsigned kCharts = kAcceptsSfc | kAcceptsFsm;
 
-// Back ends register here as they land; the driver reports an unknown --emit with this list.
-const Entry kBackends[] = {
-    {"c", make_c_backend},        // the GFE-style C engine of an sfc or fsm (docs/c-engine.md)
-    {"cpp", make_cpp_backend},    // a plan's wiring against the afp runtime (docs/plans.md)
-    {"toolbox-skeleton", make_toolbox_skeleton_backend},  // a toolbox's C++ classes to fill in (docs/toolbox.md)
-    {"json", make_json_backend},  // the validated model for tools (docs/model-json.md)
-    {"dot", make_dot_backend},    // a picture in Graphviz DOT
-    {"svg", make_svg_backend},    // the same picture rendered by Graphviz's dot
-    {"chart", make_chart_backend},  // chart text, e.g. a converted ALICA plan (docs/alica.md)
+// Back ends register here as they land, with what they accept and write.
+const std::vector<BackendInfo> kBackends = {
+    {"c", kCharts, ".c", ".h", "a C99 engine: the default for an sfc or fsm", "docs/c-engine.md",
+     make_c_backend},
+    {"cpp", kAcceptsPlan, ".cpp", ".hpp", "a plan's wiring against the afp runtime: the default for a plan",
+     "docs/plans.md", make_cpp_backend},
+    {"toolbox-skeleton", kAcceptsToolbox, ".hpp", ".cpp", "a toolbox's C++ classes to fill in",
+     "docs/toolbox.md", make_toolbox_skeleton_backend},
+    {"json", kCharts | kAcceptsPlan, ".json", "", "the validated model, for tools", "docs/model-json.md",
+     make_json_backend},
+    {"dot", kCharts | kAcceptsPlan, ".dot", "", "a picture in Graphviz DOT", "docs/cli.md", make_dot_backend},
+    {"svg", kCharts | kAcceptsPlan, ".svg", "", "the same picture rendered by Graphviz's dot (needs dot on PATH)",
+     "docs/cli.md", make_svg_backend},
+    {"chart", kCharts, ".sfc", "", "chart text, e.g. a converted ALICA plan", "docs/alica.md", make_chart_backend},
 };
 
 } // namespace
 
-std::unique_ptr<Backend> make_backend(std::string_view name) {
-  for (const auto &e : kBackends)
-    if (e.name && name == e.name) return e.make();
+const std::vector<BackendInfo> &backends() { return kBackends; }
+
+const BackendInfo *find_backend(std::string_view name) {
+  for (const auto &b : kBackends)
+    if (name == b.name) return &b;
   return nullptr;
 }
 
-std::vector<std::string> backend_names() {
-  std::vector<std::string> names;
-  for (const auto &e : kBackends)
-    if (e.name) names.emplace_back(e.name);
+const BackendInfo &default_backend(unsigned kind) {
+  // The first back end that accepts the kind: the table lists each kind's usual one first.
+  for (const auto &b : kBackends)
+    if (b.accepts_kind(kind)) return b;
+  return kBackends.front();
+}
+
+std::string backend_names_list() {
+  std::string names;
+  for (const auto &b : kBackends) names += fmt::format("{}{}", names.empty() ? "" : ", ", b.name);
   return names;
+}
+
+std::string accepted_kinds(const BackendInfo &b) {
+  std::vector<const char *> kinds;
+  if (b.accepts & kAcceptsSfc) kinds.push_back("sfc");
+  if (b.accepts & kAcceptsFsm) kinds.push_back("fsm");
+  if (b.accepts & kAcceptsPlan) kinds.push_back("plan");
+  if (b.accepts & kAcceptsToolbox) kinds.push_back("toolbox");
+  std::string s;
+  for (std::size_t i = 0; i < kinds.size(); ++i)
+    s += fmt::format("{}{}", i == 0 ? "" : i + 1 == kinds.size() ? " and " : ", ", kinds[i]);
+  return s;
+}
+
+std::string backends_help() {
+  std::string s = "Back ends (--emit=NAME; without it an sfc or fsm gives a C engine, a plan C++ wiring):\n";
+  for (const auto &b : kBackends)
+    s += fmt::format("  {:<18} {}\n  {:<18} compiles {}; writes {}{}{}; {}\n", b.name, b.summary, "", accepted_kinds(b),
+                     b.extension, b.single_file() ? "" : " and ", b.companions, b.help);
+  return s;
+}
+
+std::unique_ptr<Backend> make_backend(std::string_view name) {
+  const BackendInfo *b = find_backend(name);
+  return b ? b->make() : nullptr;
 }
 
 } // namespace gfec

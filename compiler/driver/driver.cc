@@ -1,15 +1,12 @@
 #include "driver.h"
 
-#include "analysis/analysis.h"
 #include "analyze_command.h"
 
 #include "backend_registry.h"
 #include "dependency_file.h"
 #include "diagnostic_report.h"
-#include "loader.h"
-#include "output_files.h"
-#include "roots.h"
-#include "validate.h"
+#include "pipeline/compilation.h"
+#include "safe_output.h"
 
 #include <fmt/format.h>
 
@@ -19,110 +16,35 @@
 
 namespace gfec {
 
+pipeline::FrontEndOptions front_end_options(const Options &o) {
+  pipeline::FrontEndOptions f;
+  f.include_dirs = o.include_dirs;
+  f.language = o.language == "alica"  ? InputLanguage::Alica
+               : o.language == "gfec" ? InputLanguage::Gfec
+                                      : InputLanguage::Auto;
+  f.warnings = o.warnings;
+  f.error_limit = o.error_limit;
+  return f;
+}
+
 namespace {
 
-/// One input file carried through the pipeline.
-struct Compilation {
-  SourceManager sources;
-  Diagnostics diag;
-  LoadResult loaded;
-  model::Model model;
-
-  explicit Compilation(const Options &o) : diag(o.warnings, o.error_limit) {}
-};
-
-/// Runs lexer, parser and validator. False if the input has errors (already reported).
-bool front_end(const std::string &path, const Options &o, Compilation &c) {
-  RealFileSystem fs;
-  LoadOptions load{o.include_dirs};
-  load.language = o.language == "alica"  ? InputLanguage::Alica
-                  : o.language == "gfec" ? InputLanguage::Gfec
-                                         : InputLanguage::Auto;
-  c.loaded = load_program(path, load, fs, c.sources, c.diag);
-  if (c.loaded.main_unreadable) return false;
-  // Validating a tree the parser had to patch up would mostly report the patches.
-  if (c.diag.has_errors()) return false;
-  c.model = validate(c.loaded.program, c.sources, c.diag);
-  // The static analyses whose warnings are on (compiler/analysis/, docs/verification.md).
-  if (!c.diag.has_errors()) analysis::analyze(c.model, c.diag);
-  // ALICA input: say which plan element (name and id) each diagnostic is about.
-  annotate_elements(c.diag, c.loaded);
-  return !c.diag.has_errors();
-}
-
-struct Selection {
-  std::string backend;
-  EmitOptions emit;
-  std::string error;
-  bool in_input = false;  ///< the error is the input's (nothing to compile in it): exit 1, located
-};
-
-/// Which chart, plan or toolbox of the main file to compile, and with which back end (§5.4).
-Selection select(const model::Model &m, const Options &o) {
-  Selection s;
-  struct Candidate {
-    std::string kind, name;
-    int chart = -1, plan = -1, toolbox = -1;
-  };
-  std::vector<Candidate> candidates;
-  std::vector<Candidate> named_only;  ///< sub-charts of the main file: compiled alone by name only
-  bool skeleton = o.emit == "toolbox-skeleton";
-  if (skeleton) {
-    for (std::size_t i = 0; i < m.toolboxes.size(); ++i)
-      if (m.toolboxes[i].range.file == m.main_file)
-        candidates.push_back({"toolbox", m.toolboxes[i].name, -1, -1, static_cast<int>(i)});
-  } else {
-    // The default root rule (docs/language.md "Sub-charts"): a chart another chart runs is
-    // compiled only when --chart names it.
-    std::vector<int> roots = root_charts(m);
-    for (std::size_t i = 0; i < m.charts.size(); ++i) {
-      if (!m.charts[i].in_main_file) continue;
-      bool root = std::find(roots.begin(), roots.end(), static_cast<int>(i)) != roots.end();
-      (root ? candidates : named_only)
-          .push_back({m.charts[i].kind == model::Chart::Kind::Sfc ? "sfc" : "fsm", m.charts[i].name,
-                      static_cast<int>(i), -1, -1});
-    }
-    for (std::size_t i = 0; i < m.plans.size(); ++i)
-      if (m.plans[i].in_main_file) candidates.push_back({"plan", m.plans[i].name, -1, static_cast<int>(i), -1});
+/// The back end's outputs go straight to their safe temporaries (safe_output.h); the paths are
+/// kept for the dependency file.
+class TemporarySink : public OutputSink {
+public:
+  explicit TemporarySink(safe_output::Transaction &t) : t_(t) {}
+  std::ostream &open(const std::string &path) override {
+    paths.push_back(path);
+    std::ostream *out = t_.open(path);
+    return out ? *out : discard_;  // refused: the transaction keeps why, the driver reports it
   }
-  auto list = [&] {
-    std::string names;
-    for (const auto &c : candidates) names += fmt::format("{}{} '{}'", names.empty() ? "" : ", ", c.kind, c.name);
-    return names;
-  };
-  const Candidate *chosen = nullptr;
-  if (!o.chart.empty()) {
-    for (const auto *from : {&candidates, &named_only})
-      for (const auto &c : *from)
-        if (c.name == o.chart && !chosen) chosen = &c;
-    if (!chosen) {
-      s.error = candidates.empty() ? fmt::format("no chart, plan or toolbox named '{}' in the file", o.chart)
-                                   : fmt::format("no '{}' to compile; the file declares {}", o.chart, list());
-      return s;
-    }
-  } else if (candidates.size() == 1) {
-    chosen = &candidates.front();
-  } else if (candidates.empty()) {
-    s.error = skeleton ? "the file declares no toolbox" : "nothing to compile: the file declares no sfc, fsm or plan";
-    s.in_input = true;
-    return s;
-  } else {
-    s.error = fmt::format("the file declares several things to compile ({}); choose one with --chart NAME", list());
-    return s;
-  }
-  s.emit.chart = chosen->chart;
-  s.emit.plan = chosen->plan;
-  s.emit.toolbox = chosen->toolbox;
-  s.backend = !o.emit.empty() ? o.emit : chosen->plan >= 0 ? "cpp" : "c";
-  return s;
-}
+  std::vector<std::string> paths;
 
-std::string default_output(const std::string &input, const std::string &backend) {
-  std::string ext = backend == "c" ? ".c" : backend == "cpp" ? ".cpp" : backend == "toolbox-skeleton" ? ".hpp"
-                  : backend == "chart"                                                              ? ".sfc"
-                                                                                                     : "." + backend;
-  return replace_extension(base_name(input), ext);
-}
+private:
+  safe_output::Transaction &t_;
+  std::ostream discard_{nullptr};  // no buffer: badbit, writes ignored
+};
 
 /// `path` with control characters spelled as C escapes, for a message on one line.
 std::string printable(const std::string &path) {
@@ -138,11 +60,11 @@ std::string printable(const std::string &path) {
 
 /// Adds the -MD dependency file to the outputs: the files written depend on every file read.
 /// Returns why it cannot be written (a name make cannot read), or "".
-std::string add_dependency_file(const Options &o, const LoadResult &loaded, std::vector<OutputFile> &outputs) {
+std::string add_dependency_file(const Options &o, const LoadResult &loaded, const std::vector<std::string> &outputs,
+                                safe_output::Transaction &t) {
   std::vector<std::string> targets = o.deps.targets;
-  if (targets.empty())
-    for (const auto &f : outputs) targets.push_back(f.path);
-  std::string name = dependency_file_name(o.deps, outputs.front().path);
+  if (targets.empty()) targets = outputs;
+  std::string name = dependency_file_name(o.deps, outputs.front());
   std::vector<std::string> names = targets;
   names.insert(names.end(), loaded.paths.begin(), loaded.paths.end());
   for (const auto &path : names) {
@@ -152,79 +74,106 @@ std::string add_dependency_file(const Options &o, const LoadResult &loaded, std:
                          "in a rule (docs/build-integration.md)",
                          name, printable(path), why);
   }
-  outputs.push_back({name, dependency_rule(targets, loaded.paths, o.deps.phony)});
-  return {};
+  if (std::ostream *out = t.open(name)) *out << dependency_rule(targets, loaded.paths, o.deps.phony);
+  return t.error();
 }
 
 /// Compiles (or with --check, validates) the one input of `o`; returns its exit code.
 int compile(const Options &o, DiagnosticReport &report, std::ostream &out) {
   const std::string &input = o.inputs.front();
-  Compilation c(o);
-  bool ok = front_end(input, o, c);
-  Selection s;
+  pipeline::Compilation c(front_end_options(o));
+  const BackendInfo *chosen_backend = o.emit.empty() ? nullptr : find_backend(o.emit);
+  bool ok = c.front_end(input);
   if (ok && !o.check_only) {
-    s = select(c.model, o);
-    if (s.error.empty() && s.emit.chart >= 0) warn_unused_charts(c.model, s.emit.chart, c.diag);
+    pipeline::TargetRequest request;
+    request.name = o.chart;
+    // A back end that compiles toolboxes only chooses among the toolboxes (§5.4).
+    request.among = chosen_backend && chosen_backend->accepts == pipeline::kToolbox
+                        ? static_cast<unsigned>(pipeline::kToolbox)
+                        : pipeline::kSfc | pipeline::kFsm | pipeline::kPlan;
+    c.select(request);
     ok = !c.diag.has_errors();  // -Werror
   }
   report.add(input, c.diag, c.sources);
-  if (c.loaded.main_unreadable) {
+  if (c.unreadable()) {
     report.tool_error(input, fmt::format("cannot read '{}'", input), false);
     return kExitUsageOrIo;
   }
   if (!ok) return kExitInputError;
   if (o.check_only) return kExitOk;
 
-  if (!s.error.empty() && s.in_input) {
+  const pipeline::Target &target = c.target;
+  if (!target.chosen() && target.in_input) {
     Diagnostics located(o.warnings, o.error_limit);
-    located.error({c.model.main_file, 0, 0}, "nothing-to-compile", s.error);
+    located.error({c.model.main_file, 0, 0}, "nothing-to-compile", target.error);
     report.add(input, located, c.sources);
     return kExitInputError;
   }
-  if (!s.error.empty()) {
-    report.tool_error(input, s.error, true);
+  if (!target.chosen()) {
+    report.tool_error(input, target.error, true);
     return kExitUsageOrIo;
   }
-  auto backend = make_backend(s.backend);
-  if (!backend) {
-    std::string known;
-    for (const auto &n : backend_names()) known += (known.empty() ? "" : ", ") + n;
-    report.tool_error(input, fmt::format("unknown back end '{}' (known: {})", s.backend, known), false);
+  if (!o.emit.empty() && !chosen_backend) {
+    report.tool_error(input, fmt::format("unknown back end '{}' (known: {})", o.emit, backend_names_list()), false);
     return kExitUsageOrIo;
   }
-  s.emit.output_path = o.output.empty() ? default_output(input, s.backend) : o.output;
-  s.emit.source_name = input;
-  s.emit.line_directives = o.line_directives;
-  s.emit.engine = o.engine == "readable"   ? EngineForm::Readable
-                  : o.engine == "scalable" ? EngineForm::Scalable
-                                           : EngineForm::Auto;
-  std::vector<OutputFile> outputs;
+  const BackendInfo &info = chosen_backend ? *chosen_backend : default_backend(target.kind);
+  if (!info.accepts_kind(target.kind)) {
+    report.tool_error(input, fmt::format("--emit={} compiles {} only; '{}' is {}", info.name, accepted_kinds(info), target.name,
+                                         target.kind == pipeline::kSfc ? "sfc" : target.kind == pipeline::kFsm ? "fsm"
+                                         : target.kind == pipeline::kPlan ? "plan" : "toolbox", target.name),
+                      true);
+    return kExitUsageOrIo;
+  }
+  EmitOptions emit;
+  emit.chart = target.chart;
+  emit.plan = target.plan;
+  emit.toolbox = target.toolbox;
+  emit.output_path = o.output.empty() ? replace_extension(base_name(input), info.extension) : o.output;
+  emit.source_name = input;
+  emit.line_directives = o.line_directives;
+  emit.engine = o.engine == "readable"   ? EngineForm::Readable
+                : o.engine == "scalable" ? EngineForm::Scalable
+                                         : EngineForm::Auto;
+  auto backend = info.make();
+  if (o.output == "-") {
+    // "-o -": the one output on stdout, for pipes (gfec --emit=dot x.sfc -o - | dot -Tpng).
+    if (!info.single_file()) {
+      report.tool_error(input, fmt::format("-o - needs a back end that writes one file; '{}' writes {} and {}",
+                                           info.name, info.extension, info.companions), false);
+      return kExitUsageOrIo;
+    }
+    try {
+      // In memory first, so that a failing back end leaves nothing half-written on stdout.
+      std::vector<OutputFile> outputs = emit_to_memory(*backend, c.model, emit);
+      for (const auto &f : outputs) out << f.contents;
+      out << std::flush;
+    } catch (const std::exception &e) {
+      report.tool_error(input, e.what(), false);
+      return kExitUsageOrIo;
+    }
+    return kExitOk;
+  }
+  // Every output is streamed to its temporary as the back end writes it, and renamed into place
+  // only when everything succeeded (docs/security.md); any failure removes the temporaries.
+  safe_output::Transaction files(c.loaded.paths);
+  TemporarySink sink(files);
   try {
-    outputs = backend->emit(c.model, s.emit);
+    backend->emit(c.model, emit, sink);
   } catch (const std::exception &e) {
     // Back ends report no user errors; what reaches here is the environment (e.g. --emit=svg
     // without Graphviz installed).
     report.tool_error(input, e.what(), false);
     return kExitUsageOrIo;
   }
-  if (o.output == "-") {
-    // "-o -": the one output on stdout, for pipes (gfec --emit=dot x.sfc -o - | dot -Tpng).
-    if (outputs.size() != 1) {
-      report.tool_error(input, fmt::format("-o - needs a back end that writes one file; '{}' writes {}", s.backend,
-                                           outputs.size()), false);
-      return kExitUsageOrIo;
-    }
-    out << outputs.front().contents << std::flush;
-    return kExitOk;
-  }
-  if (o.deps.write && !outputs.empty()) {
-    std::string why = add_dependency_file(o, c.loaded, outputs);
+  if (o.deps.write && files.error().empty() && !sink.paths.empty()) {
+    std::string why = add_dependency_file(o, c.loaded, sink.paths, files);
     if (!why.empty()) {
       report.tool_error(input, why, false);
       return kExitUsageOrIo;
     }
   }
-  std::string failure = write_atomically(outputs, c.loaded.paths);
+  std::string failure = files.commit();
   if (!failure.empty()) {
     report.tool_error(input, failure, false);
     return kExitUsageOrIo;

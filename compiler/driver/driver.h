@@ -3,6 +3,7 @@
 #pragma once
 
 #include "options.h"
+#include "pipeline/compilation.h"
 
 #include <iosfwd>
 
@@ -12,5 +13,8 @@ namespace gfec {
 enum ExitCode { kExitOk = 0, kExitInputError = 1, kExitUsageOrIo = 2 };
 
 int run(const Options &options, std::ostream &out, std::ostream &err);
+
+/// What the front end takes from the command line (-I, -x, -W..., -fmax-errors).
+pipeline::FrontEndOptions front_end_options(const Options &o);
 
 } // namespace gfec

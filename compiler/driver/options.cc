@@ -1,5 +1,7 @@
 #include "options.h"
 
+#include "backend_registry.h"
+
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
@@ -105,12 +107,45 @@ std::string warning_help() {
 
 } // namespace
 
+std::string apply_f_flag(const std::string &f, Options &o) {
+  if (f.rfind("diagnostics-format=", 0) == 0) {
+    std::string v = f.substr(19);
+    if (v == "text") o.diagnostics_format = DiagnosticsFormat::Text;
+    else if (v == "json") o.diagnostics_format = DiagnosticsFormat::Json;
+    else if (v == "sarif-stderr") o.diagnostics_format = DiagnosticsFormat::SarifStderr;
+    else if (v == "sarif-file") o.diagnostics_format = DiagnosticsFormat::SarifFile;
+    else return fmt::format("unknown diagnostics format '{}' (text, json, sarif-stderr, sarif-file)", v);
+  } else if (f == "diagnostics-color" || f == "diagnostics-color=always") {
+    o.color = ColorMode::Always;  // gcc: the flag alone means always
+  } else if (f == "diagnostics-color=never" || f == "no-diagnostics-color") {
+    o.color = ColorMode::Never;
+  } else if (f == "diagnostics-color=auto") {
+    o.color = ColorMode::Auto;
+  } else if (f.rfind("diagnostics-color=", 0) == 0) {
+    return fmt::format("unknown colour mode '{}' in '-f{}' (auto, always, never)", f.substr(18), f);
+  } else if (f == "diagnostics-show-line-numbers" || f == "no-diagnostics-show-line-numbers") {
+    o.line_numbers = f[0] != 'n';
+  } else if (f == "diagnostics-parseable-fixits") {
+    o.parseable_fixits = true;
+  } else if (f.rfind("max-errors=", 0) == 0) {
+    try {
+      o.error_limit = std::stoul(f.substr(11));
+    } catch (const std::exception &) {
+      return fmt::format("'-f{}' needs a number", f);
+    }
+    if (o.error_limit == 0) o.error_limit = static_cast<std::size_t>(-1);  // as gcc: 0 = no limit
+  } else {
+    return fmt::format("unknown option '-f{}'", f);
+  }
+  return {};
+}
+
 ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
   ParsedCommandLine result;
   Options &o = result.options;
   CLI::App app{"gfec - compiles chart files (sfc, fsm, plan) into C and C++ engines for robots\n\n" + usage_forms(),
                "gfec"};
-  app.footer(warning_help() +
+  app.footer(backends_help() + "\n" + warning_help() +
              "\nDependency files, as gcc writes them: -MD writes OUTPUT.d (or -MF FILE) for make, naming\n"
              "every file imported; -MP adds an empty rule per import; -MT TARGET names the target.\n"
              "\nDiagnostics, as gcc 12 prints them: -fdiagnostics-color=auto|always|never (auto: colour on a\n"
@@ -137,7 +172,8 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
       ->check(CLI::IsMember({"alica", "gfec"}));
   app.add_flag("--check", o.check_only, "Validate only: report every diagnostic and write nothing");
   app.add_flag("--analyze", o.analyze, "Run every static analysis and print a report per chart and plan; write nothing");
-  app.add_option("--emit", o.emit, "Back end: c, cpp, json, dot, svg, chart or toolbox-skeleton (default: from the file)");
+  app.add_option("--emit", o.emit, fmt::format("Back end: {} (default: from the file; the list below)", backend_names_list()))
+      ->type_name("NAME");
   app.add_option("--chart", o.chart, "The chart or plan to compile when a file declares several")->type_name("NAME");
   app.add_flag("--no-line-directives", no_line, "Do not write #line directives pointing back to the chart");
   app.add_option("--engine", o.engine, "C engine form: auto (readable up to 64 places, or when a quarter of the places can be active at once), readable or scalable")
@@ -190,35 +226,8 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
   for (const auto &w : warning_flags)
     if (!apply_warning_flag(w, o.warnings)) return usage_error(fmt::format("unknown warning option '-W{}'", w));
   for (const auto &f : f_flags) {
-    if (f.rfind("diagnostics-format=", 0) == 0) {
-      std::string v = f.substr(19);
-      if (v == "text") o.diagnostics_format = DiagnosticsFormat::Text;
-      else if (v == "json") o.diagnostics_format = DiagnosticsFormat::Json;
-      else if (v == "sarif-stderr") o.diagnostics_format = DiagnosticsFormat::SarifStderr;
-      else if (v == "sarif-file") o.diagnostics_format = DiagnosticsFormat::SarifFile;
-      else return usage_error(fmt::format("unknown diagnostics format '{}' (text, json, sarif-stderr, sarif-file)", v));
-    } else if (f == "diagnostics-color" || f == "diagnostics-color=always") {
-      o.color = ColorMode::Always;  // gcc: the flag alone means always
-    } else if (f == "diagnostics-color=never" || f == "no-diagnostics-color") {
-      o.color = ColorMode::Never;
-    } else if (f == "diagnostics-color=auto") {
-      o.color = ColorMode::Auto;
-    } else if (f.rfind("diagnostics-color=", 0) == 0) {
-      return usage_error(fmt::format("unknown colour mode '{}' in '-f{}' (auto, always, never)", f.substr(18), f));
-    } else if (f == "diagnostics-show-line-numbers" || f == "no-diagnostics-show-line-numbers") {
-      o.line_numbers = f[0] != 'n';
-    } else if (f == "diagnostics-parseable-fixits") {
-      o.parseable_fixits = true;
-    } else if (f.rfind("max-errors=", 0) == 0) {
-      try {
-        o.error_limit = std::stoul(f.substr(11));
-      } catch (const std::exception &) {
-        return usage_error(fmt::format("'-f{}' needs a number", f));
-      }
-      if (o.error_limit == 0) o.error_limit = static_cast<std::size_t>(-1);  // as gcc: 0 = no limit
-    } else {
-      return usage_error(fmt::format("unknown option '-f{}'", f));
-    }
+    std::string why = apply_f_flag(f, o);
+    if (!why.empty()) return usage_error(why);
   }
   // gcc: -w inhibits every warning, whatever -W flags came with it.
   if (no_warnings) o.warnings.enabled.fill(false);

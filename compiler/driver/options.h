@@ -27,7 +27,7 @@ struct Options {
   std::string language;                   ///< -x alica|gfec: the input language; empty: from the extension
   bool check_only = false;                ///< --check: validate, write nothing
   bool analyze = false;                   ///< --analyze: every static analysis, a report (analyze_command.h)
-  std::string emit;                       ///< --emit=c|cpp|json|dot|svg|toolbox-skeleton; empty: from the file
+  std::string emit;                       ///< --emit=NAME (backend_registry.h); empty: from what is compiled
   std::string chart;                      ///< --chart NAME
   bool line_directives = true;            ///< --no-line-directives turns them off
   std::string engine = "auto";            ///< --engine=auto|readable|scalable: the C engine's form
@@ -50,5 +50,9 @@ struct ParsedCommandLine {
 };
 
 ParsedCommandLine parse_command_line(int argc, const char *const *argv);
+
+/// Applies one -f option without its "-f" ("diagnostics-format=json", "max-errors=5"): gfec,
+/// `gfec run` and `gfec test` read them alike. Returns "" or the usage error.
+std::string apply_f_flag(const std::string &flag, Options &o);
 
 } // namespace gfec

@@ -1,14 +1,12 @@
 #include "run_command.h"
 
 #include "backend_registry.h"
-#include "diagnostic_printer.h"
+#include "diagnostic_report.h"
 #include "driver.h"
 #include "interpreter/input_trace.h"
 #include "interpreter/run_chart.h"
-#include "loader.h"
-#include "roots.h"
 #include "output_files.h"
-#include "validate.h"
+#include "pipeline/compilation.h"
 #include "viewer_page.h"
 
 #include <CLI/CLI.hpp>
@@ -36,33 +34,8 @@ struct RunOptions {
   bool hooks = false;
   bool check_post = false;
   std::string html;  ///< the run viewer page ("" = none)
+  Options report;    ///< -f...: the diagnostics' format and style, as gfec's
 };
-
-void print(const Diagnostics &diag, const SourceManager &sources, std::ostream &err) {
-  for (const auto &d : diag.all()) err << render_text(d, sources);
-}
-
-/// The sfc or fsm of the main file to run: the one no chart runs (docs/language.md
-/// "Sub-charts"), or the one --chart names.
-int choose_chart(const model::Model &m, const RunOptions &o, std::ostream &err) {
-  std::vector<int> candidates = root_charts(m);
-  std::string names;
-  for (int c : candidates) names += fmt::format("{}'{}'", names.empty() ? "" : ", ", m.charts[static_cast<std::size_t>(c)].name);
-  if (!o.chart.empty()) {
-    for (std::size_t c = 0; c < m.charts.size(); ++c)
-      if (m.charts[c].in_main_file && m.charts[c].name == o.chart) return static_cast<int>(c);
-    err << fmt::format("{}: error: no sfc or fsm named '{}' to run{}\n", o.input, o.chart,
-                       names.empty() ? "" : " (the file declares " + names + ")");
-    return -1;
-  }
-  if (candidates.size() == 1) return candidates.front();
-  if (candidates.empty())
-    err << fmt::format("{}: error: nothing to run: the file declares no sfc or fsm\n", o.input);
-  else
-    err << fmt::format("{}: error: the file declares several charts ({}); choose one with --chart NAME\n", o.input,
-                       names);
-  return -1;
-}
 
 /// The run viewer's recording of an interpreter run (docs/viewer.md): the chart's picture, the
 /// activation after each tick and what each tick did, taken from the run's log. Frame k is
@@ -81,7 +54,7 @@ nlohmann::json viewer_data(const model::Model &model, int chart, const interp::R
     emit.chart = chart;
     emit.output_path = "chart.svg";
     emit.source_name = o.input;
-    if (auto backend = make_backend("svg")) svg = backend->emit(model, emit).at(0).contents;
+    if (auto backend = make_backend("svg")) svg = emit_to_memory(*backend, model, emit).at(0).contents;
   } catch (const std::exception &e) {
     note = fmt::format("no diagram: {}", e.what());
   }
@@ -151,45 +124,58 @@ nlohmann::json viewer_data(const model::Model &model, int chart, const interp::R
   };
 }
 
-int run_with(const RunOptions &o, std::ostream &out, std::ostream &err) {
-  SourceManager sources;
-  Diagnostics diag;
-  RealFileSystem fs;
-  LoadResult loaded = load_program(o.input, {o.include_dirs}, fs, sources, diag);
-  if (loaded.main_unreadable) {
-    err << fmt::format("gfec: error: cannot read '{}'\n", o.input);
+int run_with(const RunOptions &o, DiagnosticReport &report, std::ostream &out) {
+  pipeline::FrontEndOptions f = front_end_options(o.report);
+  f.include_dirs = o.include_dirs;
+  f.analyze = false;  // a run reports what happens, not what the analyses would find
+  pipeline::Compilation c(f);
+  c.front_end(o.input);
+  if (c.unreadable()) {
+    report.tool_error(o.input, fmt::format("cannot read '{}'", o.input), false);
     return kExitUsageOrIo;
   }
-  model::Model model;
-  if (!diag.has_errors()) model = validate(loaded.program, sources, diag);
-  print(diag, sources, err);
-  if (diag.has_errors()) return kExitInputError;
+  report.add(o.input, c.diag, c.sources);
+  if (c.diag.has_errors()) return kExitInputError;
+  const model::Model &model = c.model;
 
-  int chart = choose_chart(model, o, err);
-  if (chart < 0) return kExitUsageOrIo;
+  // The sfc or fsm of the main file to run: the one no chart runs (docs/language.md
+  // "Sub-charts"), or the one --chart names.
+  pipeline::TargetRequest request;
+  request.name = o.chart;
+  request.among = pipeline::kSfc | pipeline::kFsm;
+  request.verb = "run";
+  pipeline::Target target = pipeline::select_target(model, request);
+  if (!target.chosen()) {
+    report.tool_error(o.input, target.error, true);
+    return kExitUsageOrIo;
+  }
+  const int chart = target.chart;
   // A team machine runs as a team (docs/cli.md): every agent by default, or --agents of them.
   const int team = model.charts[static_cast<std::size_t>(chart)].team;
   int agents = 1;
   if (team > 0) agents = o.agents_given ? o.agents : team;
   if (o.agents_given && (o.agents < 1 || o.agents > std::max(team, 1))) {
-    err << (team > 0 ? fmt::format("gfec: error: --agents {}: '{}' is a team of 1 to {} agents\n", o.agents,
-                                   model.charts[static_cast<std::size_t>(chart)].name, team)
-                     : fmt::format("gfec: error: --agents {}: '{}' is no team machine; it runs as one agent\n",
-                                   o.agents, model.charts[static_cast<std::size_t>(chart)].name));
+    report.tool_error(o.input,
+                      team > 0 ? fmt::format("--agents {}: '{}' is a team of 1 to {} agents", o.agents,
+                                             model.charts[static_cast<std::size_t>(chart)].name, team)
+                               : fmt::format("--agents {}: '{}' is no team machine; it runs as one agent", o.agents,
+                                             model.charts[static_cast<std::size_t>(chart)].name),
+                      false);
     return kExitUsageOrIo;
   }
 
+  RealFileSystem fs;
   Diagnostics trace_diag;
   std::unique_ptr<interp::InputTrace> trace;
   if (!o.inputs_csv.empty()) {
     auto text = fs.read(o.inputs_csv);
     if (!text) {
-      err << fmt::format("gfec: error: cannot read '{}'\n", o.inputs_csv);
+      report.tool_error(o.inputs_csv, fmt::format("cannot read '{}'", o.inputs_csv), false);
       return kExitUsageOrIo;
     }
-    FileId id = sources.add(o.inputs_csv, *text);
-    trace = std::make_unique<interp::InputTrace>(model, sources, id, trace_diag, agents);
-    print(trace_diag, sources, err);
+    FileId id = c.sources.add(o.inputs_csv, *text);
+    trace = std::make_unique<interp::InputTrace>(model, c.sources, id, trace_diag, agents);
+    report.add(o.inputs_csv, trace_diag, c.sources);
     if (trace_diag.has_errors()) return kExitInputError;
   } else {
     trace = std::make_unique<interp::InputTrace>(model);
@@ -214,12 +200,12 @@ int run_with(const RunOptions &o, std::ostream &out, std::ostream &err) {
   render.hooks = o.hooks;
   render.explain = !o.observable;
   render.indent = !o.observable;
-  out << r.log.render(render);
-  print(run_diag, sources, err);
+  out << r.log.render(render) << std::flush;
+  report.add(o.input, run_diag, c.sources);
   if (!o.html.empty()) {
     std::string failed = write_atomically({{o.html, viewer::page(viewer_data(model, chart, r, o))}}, {o.input, o.inputs_csv});
     if (!failed.empty()) {
-      err << fmt::format("gfec: error: {}\n", failed);
+      report.tool_error(o.html, failed, false);
       return kExitUsageOrIo;
     }
   }
@@ -254,6 +240,12 @@ int run_command(int argc, const char *const *argv, std::ostream &out, std::ostre
   app.add_option("--html", o.html, "Also write the run viewer: a self-contained HTML page of the run (docs/viewer.md)")
       ->type_name("FILE");
   app.add_flag("--check-post", o.check_post, "Evaluate a terminal state's postcondition on entering it");
+  std::vector<std::string> f_flags;
+  app.add_option("-f", f_flags,
+                 "-fdiagnostics-format=text|json|sarif-stderr|sarif-file, -fdiagnostics-color=WHEN, "
+                 "-fdiagnostics-show-line-numbers, -fmax-errors=N, as for gfec")
+      ->type_name("OPTION")
+      ->allow_extra_args(false);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError &e) {
@@ -262,7 +254,23 @@ int run_command(int argc, const char *const *argv, std::ostream &out, std::ostre
     return code == 0 ? kExitOk : kExitUsageOrIo;
   }
   o.agents_given = agents->count() > 0;
-  return run_with(o, out, err);
+  // The text style gfec run has always printed: no line-number gutter unless asked for.
+  o.report.line_numbers = false;
+  for (const auto &f : f_flags) {
+    std::string why = apply_f_flag(f, o.report);
+    if (!why.empty()) {
+      err << "gfec: error: " << why << "\nRun 'gfec run --help' for the options.\n";
+      return kExitUsageOrIo;
+    }
+  }
+  auto report = make_report(o.report, err);
+  int code = run_with(o, *report, out);
+  std::string failure = report->finish(code);
+  if (!failure.empty()) {
+    err << "gfec: error: " << failure << "\n";
+    return kExitUsageOrIo;
+  }
+  return code;
 }
 
 } // namespace gfec

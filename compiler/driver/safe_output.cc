@@ -1,6 +1,9 @@
 #include "safe_output.h"
 
 #include <cerrno>
+#include <memory>
+#include <ostream>
+#include <streambuf>
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
@@ -205,73 +208,171 @@ std::string refusal(const std::vector<File> &files, std::size_t i, const std::ve
   return {};
 }
 
-bool write_fully(int fd, const std::string &text) {
-  const char *p = text.data();
-  std::size_t left = text.size();
-  while (left > 0) {
-    ssize_t n = ::write(fd, p, left);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      return false;
-    }
-    p += n;
-    left -= static_cast<std::size_t>(n);
-  }
-  return true;
-}
-
 mode_t creation_mode() {
   mode_t mask = ::umask(0);
   ::umask(mask);
   return 0666 & ~mask;
 }
 
+/// A stream buffer over a temporary's descriptor: text goes to the file in blocks of 64 KiB, so
+/// an output of any size costs a fixed amount of memory. The first failed write is kept (errno)
+/// and every later write refused, which the owning stream sees as badbit.
+class FdBuf : public std::streambuf {
+public:
+  explicit FdBuf(int fd) : fd_(fd), buffer_(1 << 16) { setp(buffer_.data(), buffer_.data() + buffer_.size()); }
+  FdBuf(const FdBuf &) = delete;
+  FdBuf &operator=(const FdBuf &) = delete;
+
+  int fd() const { return fd_; }
+  int failure() const { return error_; }
+
+protected:
+  int_type overflow(int_type c) override {
+    if (!drain()) return traits_type::eof();
+    if (!traits_type::eq_int_type(c, traits_type::eof())) {
+      *pptr() = traits_type::to_char_type(c);
+      pbump(1);
+    }
+    return traits_type::not_eof(c);
+  }
+  int sync() override { return drain() ? 0 : -1; }
+  std::streamsize xsputn(const char *s, std::streamsize n) override {
+    // Large pieces bypass the buffer once it is drained.
+    if (n >= static_cast<std::streamsize>(buffer_.size())) {
+      if (!drain() || !write_fully(s, static_cast<std::size_t>(n))) return 0;
+      return n;
+    }
+    return std::streambuf::xsputn(s, n);
+  }
+
+private:
+  bool drain() {
+    std::size_t n = static_cast<std::size_t>(pptr() - pbase());
+    setp(buffer_.data(), buffer_.data() + buffer_.size());
+    return write_fully(buffer_.data(), n);
+  }
+  bool write_fully(const char *p, std::size_t left) {
+    if (error_) return false;
+    while (left > 0) {
+      ssize_t n = ::write(fd_, p, left);
+      if (n < 0) {
+        if (errno == EINTR) continue;
+        error_ = errno;
+        return false;
+      }
+      p += n;
+      left -= static_cast<std::size_t>(n);
+    }
+    return true;
+  }
+
+  int fd_;
+  std::vector<char> buffer_;
+  int error_ = 0;
+};
+
 } // namespace
 
-std::string write_all(const std::vector<File> &files, const std::vector<std::string> &never_overwrite) {
-  // 1. Every check first: a refused set writes nothing.
+/// One output being written: its checked name, its temporary and the stream on it.
+struct Transaction::Output {
+  std::string path;
+  std::string temp;
+  std::unique_ptr<FdBuf> buf;
+  std::unique_ptr<std::ostream> stream;
+  bool closed = false;
+};
+
+/// The signal handler and the names of the temporaries live as long as the transaction.
+struct Transaction::State {
+  TempRegistry registry;
+  std::vector<File> checked;  ///< the outputs opened so far (names only), for the "twice" check
   std::vector<std::string> names;
   std::vector<std::pair<bool, Identity>> ids;
-  for (std::size_t i = 0; i < files.size(); ++i) {
-    std::string why = refusal(files, i, never_overwrite, names, ids);
-    if (!why.empty()) return why;
-  }
-  if (files.size() > kMaxTemps) return "too many outputs";
+};
 
-  // 2. Every temporary, written and closed.
-  TempRegistry registry;
-  std::vector<std::string> temps;
+Transaction::Transaction(std::vector<std::string> never_overwrite)
+    : never_overwrite_(std::move(never_overwrite)), state_(std::make_unique<State>()) {}
+
+Transaction::~Transaction() {
+  if (committed_) return;
+  for (auto &o : outputs_)
+    if (!o->closed) ::close(o->buf->fd());
+  TempRegistry::remove_all();
+}
+
+std::ostream *Transaction::open(const std::string &path) {
+  if (!error_.empty() || committed_) return nullptr;
+  state_->checked.push_back({path, {}});
+  std::string why = refusal(state_->checked, state_->checked.size() - 1, never_overwrite_, state_->names, state_->ids);
+  if (why.empty() && outputs_.size() >= kMaxTemps) why = "too many outputs";
+  if (!why.empty()) {
+    fail(why);
+    return nullptr;
+  }
+  auto o = std::make_unique<Output>();
+  o->path = path;
+  o->temp = path + ".gfec-tmp-XXXXXX";
+  int fd = state_->registry.create(o->temp);
+  if (fd < 0) {
+    fail("cannot write " + quote(path) + ": " + std::strerror(errno));
+    return nullptr;
+  }
+  o->buf = std::make_unique<FdBuf>(fd);
+  o->stream = std::make_unique<std::ostream>(o->buf.get());
+  outputs_.push_back(std::move(o));
+  return outputs_.back()->stream.get();
+}
+
+void Transaction::fail(const std::string &why) {
+  if (error_.empty()) error_ = why;
+}
+
+std::string Transaction::commit() {
+  if (committed_) return {};
+  if (!error_.empty()) return error_;
+  // 1. Every temporary complete and closed: a failed write anywhere commits nothing.
   mode_t mode = creation_mode();
-  for (const auto &f : files) {
-    std::string temp = f.path + ".gfec-tmp-XXXXXX";
-    int fd = registry.create(temp);
-    if (fd < 0) {
-      std::string why = std::strerror(errno);
-      TempRegistry::remove_all();
-      return "cannot write " + quote(f.path) + ": " + why;
-    }
-    temps.push_back(temp);
-    bool ok = write_fully(fd, f.contents) && ::fchmod(fd, mode) == 0;
-    int e = errno;
-    ok = ::close(fd) == 0 && ok;
-    if (!ok) {
-      std::string why = std::strerror(e ? e : errno);
-      TempRegistry::remove_all();
-      return "cannot write " + quote(f.path) + ": " + why;
+  for (auto &o : outputs_) {
+    o->stream->flush();
+    int e = o->buf->failure();
+    if (!e && o->stream->bad()) e = EIO;
+    if (!e && ::fchmod(o->buf->fd(), mode) != 0) e = errno;
+    o->closed = true;
+    if (::close(o->buf->fd()) != 0 && !e) e = errno;
+    if (e) {
+      fail("cannot write " + quote(o->path) + ": " + std::strerror(e));
+      return error_;
     }
   }
-
-  // 3. The renames, with the signals held back so a set is never half committed by them.
+  // 2. The renames, with the signals held back so a set is never half committed by them.
   BlockSignals hold;
-  for (std::size_t i = 0; i < files.size(); ++i) {
-    if (::rename(temps[i].c_str(), files[i].path.c_str()) != 0) {
-      std::string why = std::strerror(errno);
+  for (auto &o : outputs_) {
+    if (::rename(o->temp.c_str(), o->path.c_str()) != 0) {
+      fail("cannot write " + quote(o->path) + ": " + std::strerror(errno));
       TempRegistry::remove_all();
-      return "cannot write " + quote(files[i].path) + ": " + why;
+      return error_;
     }
-    TempRegistry::forget(temps[i]);
+    TempRegistry::forget(o->temp);
   }
+  committed_ = true;
   return {};
+}
+
+std::string write_all(const std::vector<File> &files, const std::vector<std::string> &never_overwrite) {
+  // Every check first: a refused set creates no temporary at all.
+  {
+    std::vector<std::string> names;
+    std::vector<std::pair<bool, Identity>> ids;
+    for (std::size_t i = 0; i < files.size(); ++i) {
+      std::string why = refusal(files, i, never_overwrite, names, ids);
+      if (!why.empty()) return why;
+    }
+    if (files.size() > kMaxTemps) return "too many outputs";
+  }
+  Transaction t(never_overwrite);
+  for (const auto &f : files)
+    if (std::ostream *out = t.open(f.path)) out->write(f.contents.data(), static_cast<std::streamsize>(f.contents.size()));
+  return t.commit();
 }
 
 } // namespace gfec::safe_output

@@ -14,6 +14,8 @@
 // Self-contained (POSIX and the standard library only) so carbot-sim builds it on its own.
 #pragma once
 
+#include <iosfwd>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -22,6 +24,38 @@ namespace gfec::safe_output {
 struct File {
   std::string path;
   std::string contents;
+};
+
+/// A set of outputs written as they are produced, without holding them in memory: each open()
+/// checks its name as write_all does and creates the temporary; commit() closes them all and
+/// renames them into place. A refused name, a failed write or a transaction destroyed without
+/// commit() removes every temporary, and no output has changed.
+class Transaction {
+public:
+  /// `never_overwrite`: as for write_all.
+  explicit Transaction(std::vector<std::string> never_overwrite);
+  ~Transaction();
+  Transaction(const Transaction &) = delete;
+  Transaction &operator=(const Transaction &) = delete;
+
+  /// The stream writing the temporary of `path`, valid until commit() or destruction; null when
+  /// `path` is refused or an earlier step failed (error() says why).
+  std::ostream *open(const std::string &path);
+  /// Renames every output into place, or none: "" on success, else the first failure.
+  std::string commit();
+  /// The first failure so far ("" if none).
+  const std::string &error() const { return error_; }
+
+private:
+  struct Output;
+  struct State;
+  void fail(const std::string &why);
+
+  std::vector<std::string> never_overwrite_;
+  std::unique_ptr<State> state_;
+  std::vector<std::unique_ptr<Output>> outputs_;
+  std::string error_;
+  bool committed_ = false;
 };
 
 /// Writes every file or none. `never_overwrite` are files read by this run (the inputs and

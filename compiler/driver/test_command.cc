@@ -3,13 +3,12 @@
 #include "diagnostic_printer.h"
 #include "diagnostic_report.h"
 #include "driver.h"
-#include "loader.h"
 #include "output_files.h"
+#include "pipeline/compilation.h"
 #include "scenario/reference_run.h"
 #include "scenario/scenario.h"
 #include "scenario/snapshot.h"
 #include "test_engine.h"
-#include "validate.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -34,16 +33,26 @@ struct TestOptions {
   bool reference_only = false;
   bool verbose = false;
   unsigned jobs = 1;
-  DiagnosticsFormat format = DiagnosticsFormat::Text;
+  Options report;  ///< -f...: the diagnostics' format and style, as gfec's
 };
 
-/// One test file through the front end.
+pipeline::FrontEndOptions test_front_end(const TestOptions &o) {
+  pipeline::FrontEndOptions f;
+  f.include_dirs = o.include_dirs;
+  f.error_limit = static_cast<std::size_t>(-1);
+  f.analyze = false;  // the tests say what the chart must do; the analyses are gfec's business
+  return f;
+}
+
+/// One test file through the front end (pipeline/compilation.h).
 struct TestFile {
+  explicit TestFile(const TestOptions &o) : c(test_front_end(o)) {}
   std::string path;
-  SourceManager sources;
-  Diagnostics diag{WarningOptions{}, static_cast<std::size_t>(-1)};
-  LoadResult loaded;
-  model::Model model;
+  pipeline::Compilation c;
+  SourceManager &sources = c.sources;
+  Diagnostics &diag = c.diag;
+  LoadResult &loaded = c.loaded;
+  model::Model &model = c.model;
   scenario::Suite suite;
   bool unreadable = false;
   std::size_t written_tests = 0;  ///< `test` blocks in the file, checked or not
@@ -195,17 +204,15 @@ private:
   EngineBuilds &builds_;
 };
 
-void load(TestFile &f, const TestOptions &o) {
+void load(TestFile &f) {
   RealFileSystem fs;
-  f.loaded = load_program(f.path, {o.include_dirs}, fs, f.sources, f.diag);
-  if (f.loaded.main_unreadable) {
+  f.c.front_end(f.path, fs, &f.suite);
+  if (f.c.unreadable()) {
     f.unreadable = true;
     return;
   }
   if (!f.loaded.program.files.empty() && f.loaded.program.files.front())
     f.written_tests = f.loaded.program.files.front()->tests.size();
-  if (f.diag.has_errors()) return;
-  f.model = validate(f.loaded.program, f.sources, f.diag, f.suite);
 }
 
 std::string xml(const std::string &s) {
@@ -275,17 +282,15 @@ std::string junit(const std::vector<std::unique_ptr<TestFile>> &files, const std
 }
 
 int test_with(const TestOptions &o, std::ostream &out, std::ostream &err) {
-  Options report_options;  // the text style (colour, gutter) as gfec's own defaults give it
-  report_options.diagnostics_format = o.format;
-  auto report = make_report(report_options, err);
+  auto report = make_report(o.report, err);
   std::vector<std::unique_ptr<TestFile>> files;
   std::vector<std::unique_ptr<Outcome>> outcomes;
   bool io_error = false;
   std::size_t broken = 0;  ///< tests in files that do not compile: each counts as failed
   for (const auto &path : o.files) {
-    auto f = std::make_unique<TestFile>();
+    auto f = std::make_unique<TestFile>(o);
     f->path = path;
-    load(*f, o);
+    load(*f);
     if (f->unreadable) {
       io_error = true;
     } else if (f->diag.has_errors()) {
@@ -373,7 +378,9 @@ int test_command(int argc, const char *const *argv, std::ostream &out, std::ostr
   app.add_flag("--reference-only", o.reference_only, "Run the reference interpreter only (no C compiler needed)");
   app.add_option("-j,--jobs", o.jobs, "Run N tests at once")->type_name("N")->check(CLI::Range(1u, 256u));
   app.add_flag("-v,--verbose", o.verbose, "Print PASS or FAIL and the name of every test");
-  app.add_option("-f", o.f_flags, "-fdiagnostics-format=text|json|sarif-stderr|sarif-file")
+  app.add_option("-f", o.f_flags,
+                 "-fdiagnostics-format=text|json|sarif-stderr|sarif-file, -fdiagnostics-color=WHEN, "
+                 "-fno-diagnostics-show-line-numbers, as for gfec")
       ->type_name("OPTION")
       ->allow_extra_args(false);
   try {
@@ -389,13 +396,8 @@ int test_command(int argc, const char *const *argv, std::ostream &out, std::ostr
   };
   if (o.engine_only && o.reference_only) return usage("--engine-only and --reference-only exclude each other");
   for (const auto &f : o.f_flags) {
-    std::string v = f.rfind("diagnostics-format=", 0) == 0 ? f.substr(19) : "";
-    if (v == "text") o.format = DiagnosticsFormat::Text;
-    else if (v == "json") o.format = DiagnosticsFormat::Json;
-    else if (v == "sarif-stderr") o.format = DiagnosticsFormat::SarifStderr;
-    else if (v == "sarif-file") o.format = DiagnosticsFormat::SarifFile;
-    else if (v.empty()) return usage(fmt::format("unknown option '-f{}'", f));
-    else return usage(fmt::format("unknown diagnostics format '{}' (text, json, sarif-stderr, sarif-file)", v));
+    std::string why = apply_f_flag(f, o.report);
+    if (!why.empty()) return usage(why);
   }
   return test_with(o, out, err);
 }

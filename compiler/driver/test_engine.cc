@@ -232,7 +232,7 @@ EngineBuilds::Build EngineBuilds::get(const model::Model &model, int chart, cons
   o.chart = chart;
   std::vector<OutputFile> files;
   try {
-    files = backend->emit(model, o);
+    files = emit_to_memory(*backend, model, o);
   } catch (const std::exception &e) {
     return {"", e.what()};
   }

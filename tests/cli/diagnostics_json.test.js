@@ -2,6 +2,8 @@
 'use strict';
 const { test } = require('node:test');
 const assert = require('node:assert/strict');
+const fs = require('node:fs');
+const path = require('node:path');
 const { gfec, scratch, parseText, CHARTS } = require('./helpers');
 
 test('json: an array of diagnostics with kind, message, caret/finish locations, notes and option', () => {
@@ -48,6 +50,44 @@ test('json: a clean check prints an empty array and exits 0', () => {
 
 test('an unknown diagnostics format is a usage error', () => {
   const r = gfec(['--check', '-fdiagnostics-format=xml', 'x.sfc'], scratch());
+  assert.equal(r.code, 2);
+  assert.match(r.stderr, /unknown diagnostics format 'xml'/);
+});
+
+test('json: gfec run and gfec test report in the format asked for, as gfec does', () => {
+  const dir = scratch(CHARTS);
+  // A chart with an error: the same diagnostics as the text format, as one JSON array on stderr.
+  for (const command of ['run', 'test']) {
+    const r = gfec([command, '-fdiagnostics-format=json', 'typo.sfc'], dir);
+    const text = gfec([command, 'typo.sfc'], dir);
+    assert.equal(r.code, 1, r.stderr);
+    assert.equal(text.code, 1);
+    const all = JSON.parse(r.stderr);
+    const expected = parseText(text.stderr);
+    assert.equal(all.length, expected.length, command);
+    assert.ok(all.length > 0);
+    all.forEach((d, i) => {
+      assert.equal(d.kind, expected[i].severity);
+      assert.equal(d.message, expected[i].message);
+      assert.equal(d.locations[0].caret.line, expected[i].line);
+    });
+  }
+  // A clean run: the ticks on stdout, an empty array on stderr.
+  const ok = gfec(['run', '-fdiagnostics-format=json', 'good.sfc', '--ticks', '2'], dir);
+  assert.equal(ok.code, 0, ok.stderr);
+  assert.deepEqual(JSON.parse(ok.stderr), []);
+  assert.match(ok.stdout, /tick 1/);
+  // A trace with an error is located in the trace file.
+  fs.writeFileSync(path.join(dir, 'bad.csv'), 'Nope\n1\n');
+  const trace = gfec(['run', '-fdiagnostics-format=json', 'good.sfc', '--inputs', 'bad.csv'], dir);
+  assert.equal(trace.code, 1, trace.stderr);
+  const traced = JSON.parse(trace.stderr);
+  assert.equal(traced[0].kind, 'error');
+  assert.equal(traced[0].locations[0].caret.file, 'bad.csv');
+});
+
+test('gfec run: an unknown -f option is a usage error', () => {
+  const r = gfec(['run', '-fdiagnostics-format=xml', 'x.sfc'], scratch());
   assert.equal(r.code, 2);
   assert.match(r.stderr, /unknown diagnostics format 'xml'/);
 });

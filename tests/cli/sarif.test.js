@@ -130,6 +130,23 @@ test('sarif: an unreadable input is a tool notification and exit 2', () => {
   assert.equal(log.runs[0].results.length, 1, 'the readable file is still checked');
 });
 
+test('sarif: gfec run and gfec test write a valid log of the chart\'s diagnostics', () => {
+  const dir = scratch(CHARTS);
+  for (const command of ['run', 'test']) {
+    const r = gfec([command, '-fdiagnostics-format=sarif-stderr', 'typo.sfc'], dir);
+    assert.equal(r.code, 1, r.stderr);
+    const log = JSON.parse(r.stderr);
+    assertValid(log);
+    const results = log.runs[0].results;
+    assert.equal(results.length, parseText(gfec([command, 'typo.sfc'], dir).stderr).length, command);
+    assert.equal(results[0].level, 'error');
+    for (const result of results) assertResultShape(log.runs[0], result);
+  }
+  const ok = gfec(['run', '-fdiagnostics-format=sarif-stderr', 'good.sfc', '--ticks', '1'], dir);
+  assert.equal(ok.code, 0, ok.stderr);
+  assertValid(JSON.parse(ok.stderr));
+});
+
 test('sarif-file: <input basename>.sarif in the current folder, nothing on stderr', () => {
   const dir = scratch(CHARTS);
   const out = scratch();

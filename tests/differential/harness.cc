@@ -6,8 +6,7 @@
 #include "file_system.h"
 #include "interpreter/input_trace.h"
 #include "interpreter/run_chart.h"
-#include "loader.h"
-#include "validate.h"
+#include "pipeline/compilation.h"
 
 #include <fmt/format.h>
 
@@ -23,13 +22,19 @@ namespace gfec::diff {
 namespace fs = std::filesystem;
 
 struct Prepared {
-  SourceManager sources;
-  Diagnostics diag;
-  LoadResult loaded;
-  model::Model model;
+  pipeline::Compilation c{options()};
+  SourceManager &sources = c.sources;
+  Diagnostics &diag = c.diag;
+  model::Model &model = c.model;
   std::string expected_plain, expected_hooks;
   std::vector<OutputFile> engine;
   std::vector<std::string> places, transitions;
+
+  static pipeline::FrontEndOptions options() {
+    pipeline::FrontEndOptions f;
+    f.analyze = false;  // the case is judged by its runs, not by the analyses
+    return f;
+  }
 };
 
 namespace {
@@ -127,8 +132,7 @@ Outcome Harness::prepare(Case &c) const {
   MemoryFileSystem files;
   const std::string chart_file = fmt::format("r{}.sfc", c.id);
   files.add(chart_file, c.text);
-  p->loaded = load_program(chart_file, {}, files, p->sources, p->diag);
-  if (!p->diag.has_errors()) p->model = validate(p->loaded.program, p->sources, p->diag);
+  p->c.front_end(chart_file, files);
   if (p->diag.has_errors()) return {Verdict::Invalid, printed(p->diag, p->sources), ""};
   // The compiled chart: the root (a hierarchical program also declares its sub-charts).
   int root = -1;
@@ -155,7 +159,7 @@ Outcome Harness::prepare(Case &c) const {
   // takes the scalable one, so both forms answer to the interpreter (an fsm has one form).
   o.engine = scalable_form(c) ? EngineForm::Scalable : EngineForm::Readable;
   try {
-    p->engine = make_c_backend()->emit(p->model, o);
+    p->engine = emit_to_memory(*make_c_backend(), p->model, o);
   } catch (const std::exception &e) {
     return {Verdict::Crash, fmt::format("the C back end threw: {}", e.what()), ""};
   }

@@ -9,8 +9,7 @@
 #include "file_system.h"
 #include "loader.h"
 #include "model.h"
-#include "roots.h"
-#include "validate.h"
+#include "pipeline/compilation.h"
 
 #include <catch2/catch.hpp>
 #include <fmt/format.h>
@@ -300,7 +299,7 @@ inline std::vector<OutputFile> emit_c(const model::Model &m, const std::string &
   o.line_directives = line_directives;
   o.engine = engine;
   o.chart = 0;
-  return make_c_backend()->emit(m, o);
+  return emit_to_memory(*make_c_backend(), m, o);
 }
 
 // ------------------------------------------------------------------ the real pipeline
@@ -308,14 +307,22 @@ inline std::vector<OutputFile> emit_c(const model::Model &m, const std::string &
 /// Chart text through loader, validator and back end, all in memory. Files are named as given
 /// (relative names keep #line paths short and the output byte-stable).
 struct Compiled {
-  SourceManager sources;
-  Diagnostics diag;
-  model::Model model;
+  pipeline::Compilation c{no_analyses()};
+  SourceManager &sources = c.sources;
+  Diagnostics &diag = c.diag;
+  model::Model &model = c.model;
   std::vector<OutputFile> files;
   std::string errors;  ///< rendered diagnostics when the chart did not compile
   int chart = -1;      ///< the chart compiled: the default root of the main file
 
   const model::Chart &the_chart() const { return model.charts.at(static_cast<std::size_t>(chart)); }
+
+  /// The tests compare exact diagnostics: the static analyses' warnings are tested apart.
+  static pipeline::FrontEndOptions no_analyses() {
+    pipeline::FrontEndOptions f;
+    f.analyze = false;
+    return f;
+  }
 };
 
 inline std::unique_ptr<Compiled> compile_chart(const std::map<std::string, std::string> &files,
@@ -324,22 +331,25 @@ inline std::unique_ptr<Compiled> compile_chart(const std::map<std::string, std::
   auto c = std::make_unique<Compiled>();
   MemoryFileSystem mem;
   for (const auto &[path, text] : files) mem.add(path, text);
-  LoadResult loaded = load_program(main, {}, mem, c->sources, c->diag);
-  if (!c->diag.has_errors()) c->model = validate(loaded.program, c->sources, c->diag);
+  c->c.front_end(main, mem);
+  // The chart gfec compiles by default: the one no other chart runs (docs/language.md "Sub-charts").
+  pipeline::TargetRequest request;
+  request.among = pipeline::kSfc | pipeline::kFsm;
+  const pipeline::Target &target = c->c.diag.has_errors() ? c->c.target : c->c.select(request);
   for (const auto &d : c->diag.all()) c->errors += render_text(d, c->sources);
   if (c->diag.has_errors() || c->model.charts.empty()) return c;
-  c->model.sources = &c->sources;
+  if (!target.chosen()) {
+    c->errors += target.error + "\n";
+    return c;
+  }
   EmitOptions o;
   o.output_path = output;
   o.source_name = main;
   o.line_directives = line_directives;
   o.engine = engine;
-  // The chart gfec compiles by default: the one no other chart runs (docs/language.md "Sub-charts").
-  o.chart = default_root(c->model);
-  for (std::size_t i = 0; i < c->model.charts.size(); ++i)
-    if (c->model.charts[i].in_main_file && o.chart < 0) o.chart = static_cast<int>(i);
+  o.chart = target.chart;
   c->chart = o.chart;
-  c->files = make_c_backend()->emit(c->model, o);
+  c->files = emit_to_memory(*make_c_backend(), c->model, o);
   return c;
 }
 

@@ -10,7 +10,7 @@
 #include "file_system.h"
 #include "loader.h"
 #include "model.h"
-#include "validate.h"
+#include "pipeline/compilation.h"
 
 #include "../unit/support.h"
 
@@ -44,11 +44,18 @@ inline const char *kStrictFlags = "-std=c++17 -Wall -Wextra -Wpedantic -Werror";
 /// The files of one compilation, through the front end and one back end, all in memory. Files
 /// are named as given, so #line paths stay short and the output byte-stable.
 struct Compiled {
-  SourceManager sources;
-  Diagnostics diag;
-  model::Model model;
+  pipeline::Compilation c{options()};
+  SourceManager &sources = c.sources;
+  Diagnostics &diag = c.diag;
+  model::Model &model = c.model;
   std::vector<OutputFile> files;
   std::string errors;  ///< rendered diagnostics when the input did not compile
+
+  static pipeline::FrontEndOptions options() {
+    pipeline::FrontEndOptions f;
+    f.analyze = false;  // the tests compare exact diagnostics
+    return f;
+  }
 };
 
 /// Compiles `main` (a plan, or with `skeleton` a toolbox) of `files` to `output`.
@@ -58,24 +65,23 @@ inline std::unique_ptr<Compiled> compile(const std::map<std::string, std::string
   auto c = std::make_unique<Compiled>();
   MemoryFileSystem mem;
   for (const auto &[path, text] : files) mem.add(path, text);
-  LoadResult loaded = load_program(main, {}, mem, c->sources, c->diag);
-  if (!c->diag.has_errors()) c->model = validate(loaded.program, c->sources, c->diag);
+  c->c.front_end(main, mem);
   for (const auto &d : c->diag.all()) c->errors += render_text(d, c->sources);
   if (c->diag.has_errors()) return c;
-  c->model.sources = &c->sources;
+  pipeline::TargetRequest request;
+  request.among = skeleton ? pipeline::kToolbox : pipeline::kPlan;
+  const pipeline::Target &target = c->c.select(request);
+  if (!target.chosen()) {
+    c->errors += target.error + "\n";
+    return c;
+  }
   EmitOptions o;
   o.output_path = output;
   o.source_name = main;
   o.line_directives = line_directives;
-  if (skeleton) {
-    for (std::size_t i = 0; i < c->model.toolboxes.size(); ++i)
-      if (c->model.toolboxes[i].range.file == c->model.main_file && o.toolbox < 0) o.toolbox = static_cast<int>(i);
-    c->files = make_toolbox_skeleton_backend()->emit(c->model, o);
-  } else {
-    for (std::size_t i = 0; i < c->model.plans.size(); ++i)
-      if (c->model.plans[i].in_main_file && o.plan < 0) o.plan = static_cast<int>(i);
-    c->files = make_cpp_backend()->emit(c->model, o);
-  }
+  o.toolbox = target.toolbox;
+  o.plan = target.plan;
+  c->files = emit_to_memory(skeleton ? *make_toolbox_skeleton_backend() : *make_cpp_backend(), c->model, o);
   return c;
 }
 

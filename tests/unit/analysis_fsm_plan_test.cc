@@ -1,6 +1,8 @@
 // The fsm and plan analyses: states that never finish, shadowed transitions, config read before
 // written, supervisors that can fire together.
 #include "analysis_support.h"
+#include "loader.h"
+#include "validate.h"
 
 using namespace gfec;
 using test::analyze_text;

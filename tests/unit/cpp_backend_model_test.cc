@@ -3,6 +3,8 @@
 // twice or nested, and what a plan without formulas leaves out. Where the point is that the
 // output compiles, it is compiled (g++, against the skeletons of its toolboxes).
 #include "../run/cpp_backend_support.h"
+#include "loader.h"
+#include "validate.h"
 
 using namespace cppt;
 
@@ -207,7 +209,7 @@ plan P {
   o.line_directives = false;
   for (std::size_t i = 0; i < m.plans.size(); ++i)
     if (m.plans[i].name == "P") o.plan = static_cast<int>(i);
-  auto out = make_cpp_backend()->emit(m, o);
+  auto out = emit_to_memory(*make_cpp_backend(), m, o);
   const std::string &w = out[0].contents;
   auto inner = w.find("std::unique_ptr<afp::Plan> make_Inner(Bot& ee) {");
   auto middle = w.find("std::unique_ptr<afp::Plan> make_Middle(Bot& ee) {");

@@ -5,8 +5,7 @@
 #include "diagnostic_printer.h"
 #include "interpreter/engine.h"
 #include "interpreter/run_chart.h"
-#include "loader.h"
-#include "validate.h"
+#include "pipeline/compilation.h"
 
 #include <catch2/catch.hpp>
 
@@ -20,17 +19,24 @@ namespace gfec::test {
 
 /// A program compiled to its model; the model points into `sources`, so this never moves.
 struct Compiled {
-  SourceManager sources;
-  Diagnostics diag;
-  LoadResult loaded;
-  model::Model model;
+  pipeline::Compilation c;
+  SourceManager &sources = c.sources;
+  Diagnostics &diag = c.diag;
+  LoadResult &loaded = c.loaded;
+  model::Model &model = c.model;
 
-  explicit Compiled(const std::string &text, const std::string &iface = "", WarningOptions w = {}) : diag(w) {
+  explicit Compiled(const std::string &text, const std::string &iface = "", WarningOptions w = {})
+      : c(options(w)) {
     MemoryFileSystem fs;
     fs.add("t.sfc", iface.empty() ? text : "import \"bot.iface\";\n" + text);
     fs.add("bot.iface", iface);
-    loaded = load_program("t.sfc", {}, fs, sources, diag);
-    if (!diag.has_errors()) model = validate(loaded.program, sources, diag);
+    c.front_end("t.sfc", fs);
+  }
+  static pipeline::FrontEndOptions options(WarningOptions w) {
+    pipeline::FrontEndOptions f;
+    f.warnings = w;
+    f.analyze = false;  // the interpreter's tests compare exact diagnostics
+    return f;
   }
   Compiled(const Compiled &) = delete;
 

@@ -1,0 +1,128 @@
+#include "pipeline/compilation.h"
+
+#include "analysis/analysis.h"
+#include "roots.h"
+#include "validate.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace gfec::pipeline {
+
+namespace {
+
+struct Candidate {
+  unsigned kind;
+  std::string name;
+  int index;
+};
+
+const char *kind_name(unsigned kind) {
+  switch (kind) {
+  case kSfc: return "sfc";
+  case kFsm: return "fsm";
+  case kPlan: return "plan";
+  default: return "toolbox";
+  }
+}
+
+/// "sfc, fsm or plan": the kinds of `among`, for "the file declares no ...".
+std::string kinds_text(unsigned among) {
+  std::vector<const char *> names;
+  for (unsigned k : {kSfc, kFsm, kPlan, kToolbox})
+    if (among & k) names.push_back(kind_name(k));
+  std::string s;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    s += fmt::format("{}{}", i == 0 ? "" : i + 1 == names.size() ? " or " : ", ", names[i]);
+  return s;
+}
+
+} // namespace
+
+Target select_target(const model::Model &m, const TargetRequest &request) {
+  std::vector<Candidate> candidates;
+  std::vector<Candidate> named_only;  ///< sub-charts of the main file: compiled alone by name only
+  if (request.among & kToolbox)
+    for (std::size_t i = 0; i < m.toolboxes.size(); ++i)
+      if (m.toolboxes[i].range.file == m.main_file)
+        candidates.push_back({kToolbox, m.toolboxes[i].name, static_cast<int>(i)});
+  if (request.among & (kSfc | kFsm)) {
+    // The default root rule (docs/language.md "Sub-charts"): a chart another chart runs is
+    // compiled only when --chart names it.
+    std::vector<int> roots = root_charts(m);
+    for (std::size_t i = 0; i < m.charts.size(); ++i) {
+      const model::Chart &c = m.charts[i];
+      unsigned kind = c.kind == model::Chart::Kind::Sfc ? kSfc : kFsm;
+      if (!c.in_main_file || !(request.among & kind)) continue;
+      bool root = std::find(roots.begin(), roots.end(), static_cast<int>(i)) != roots.end();
+      (root ? candidates : named_only).push_back({kind, c.name, static_cast<int>(i)});
+    }
+  }
+  if (request.among & kPlan)
+    for (std::size_t i = 0; i < m.plans.size(); ++i)
+      if (m.plans[i].in_main_file) candidates.push_back({kPlan, m.plans[i].name, static_cast<int>(i)});
+
+  auto list = [&] {
+    std::string names;
+    for (const auto &c : candidates) names += fmt::format("{}{} '{}'", names.empty() ? "" : ", ", kind_name(c.kind), c.name);
+    return names;
+  };
+  Target t;
+  const Candidate *chosen = nullptr;
+  if (!request.name.empty()) {
+    for (const auto *from : {&candidates, &named_only})
+      for (const auto &c : *from)
+        if (c.name == request.name && !chosen) chosen = &c;
+    if (!chosen) {
+      t.error = candidates.empty()
+                    ? fmt::format("no chart, plan or toolbox named '{}' in the file", request.name)
+                    : fmt::format("no '{}' to {}; the file declares {}", request.name, request.verb, list());
+      return t;
+    }
+  } else if (candidates.size() == 1) {
+    chosen = &candidates.front();
+  } else if (candidates.empty()) {
+    t.error = request.among == kToolbox ? std::string("the file declares no toolbox")
+                                        : fmt::format("nothing to {}: the file declares no {}", request.verb,
+                                                      kinds_text(request.among));
+    t.in_input = true;
+    return t;
+  } else {
+    t.error = fmt::format("the file declares several things to {} ({}); choose one with --chart NAME", request.verb,
+                          list());
+    return t;
+  }
+  t.kind = chosen->kind;
+  t.name = chosen->name;
+  (chosen->kind == kPlan ? t.plan : chosen->kind == kToolbox ? t.toolbox : t.chart) = chosen->index;
+  return t;
+}
+
+Compilation::Compilation(const FrontEndOptions &o) : options(o), diag(o.warnings, o.error_limit) {}
+
+bool Compilation::front_end(const std::string &path, const FileSystem &fs, scenario::Suite *tests) {
+  LoadOptions load{options.include_dirs};
+  load.language = options.language;
+  loaded = load_program(path, load, fs, sources, diag);
+  if (loaded.main_unreadable || diag.has_errors()) return false;
+  model = tests ? validate(loaded.program, sources, diag, *tests) : validate(loaded.program, sources, diag);
+  // The static analyses whose warnings are on (compiler/analysis/, docs/verification.md).
+  if (options.analyze && !diag.has_errors()) analysis::analyze(model, diag);
+  // ALICA input: say which plan element (name and id) each diagnostic is about.
+  annotate_elements(diag, loaded);
+  return !diag.has_errors();
+}
+
+bool Compilation::front_end(const std::string &path) {
+  RealFileSystem fs;
+  return front_end(path, fs);
+}
+
+const Target &Compilation::select(const TargetRequest &request) {
+  target = select_target(model, request);
+  if (target.chart >= 0) warn_unused_charts(model, target.chart, diag);
+  return target;
+}
+
+} // namespace gfec::pipeline

@@ -1,0 +1,87 @@
+// The compilation pipeline as a library (docs/architecture.md): one input file carried through
+// load -> validate -> analyse, and the one function that picks what of it is compiled. `gfec
+// FILE`, --check, --analyze, `gfec run`, `gfec test` and the tests' helpers all go through here,
+// so the stages run in one order with one set of rules; only the driver prints and exits.
+#pragma once
+
+#include "diagnostics.h"
+#include "file_system.h"
+#include "loader.h"
+#include "model.h"
+#include "source.h"
+
+#include <string>
+
+namespace gfec {
+
+namespace scenario {
+struct Suite;
+}
+
+namespace pipeline {
+
+/// What can be compiled, as bits (a back end's "accepts" in compiler/driver/backend_registry.h).
+enum TargetKind : unsigned { kSfc = 1, kFsm = 2, kPlan = 4, kToolbox = 8 };
+
+/// What the front end needs from the command line.
+struct FrontEndOptions {
+  std::vector<std::string> include_dirs;           ///< -I
+  InputLanguage language = InputLanguage::Auto;    ///< -x
+  WarningOptions warnings;                         ///< -W...
+  std::size_t error_limit = 50;                    ///< -fmax-errors=N
+  bool analyze = true;  ///< run the static analyses whose warnings are on (docs/verification.md)
+};
+
+/// What to compile, the one function select_target answers it with.
+struct TargetRequest {
+  std::string name;           ///< --chart NAME; empty: the default (docs/language.md "Sub-charts")
+  unsigned among = kSfc | kFsm | kPlan;  ///< the kinds to choose from (kToolbox alone: a toolbox skeleton)
+  const char *verb = "compile";          ///< for messages: "compile", "run"
+};
+
+/// The chosen chart, plan or toolbox of the main file, or why there is none.
+struct Target {
+  unsigned kind = 0;  ///< one TargetKind bit; 0 when nothing was chosen
+  int chart = -1, plan = -1, toolbox = -1;
+  std::string name;
+  std::string error;      ///< why nothing was chosen ("" when something was)
+  bool in_input = false;  ///< the error is the file's (it declares nothing to compile): located, exit 1
+  bool chosen() const { return kind != 0; }
+};
+
+/// Which chart, plan or toolbox of `m`'s main file `request` names, or by default the only
+/// candidate: the charts no chart runs (compiler/roots.h) and the plans, or the toolboxes.
+Target select_target(const model::Model &m, const TargetRequest &request);
+
+/// One input file through the pipeline: the sources read, their diagnostics, the model.
+class Compilation {
+public:
+  explicit Compilation(const FrontEndOptions &options);
+  Compilation(const Compilation &) = delete;
+  Compilation &operator=(const Compilation &) = delete;
+
+  /// Loads `path` and what it imports, validates (keeping the main file's `test` blocks in
+  /// `tests` when given) and runs the analyses. False when the input has errors (in diag) or
+  /// the main file is unreadable (unreadable()). Stops at the first stage with errors:
+  /// validating a tree the parser had to patch up would mostly report the patches.
+  bool front_end(const std::string &path, const FileSystem &fs, scenario::Suite *tests = nullptr);
+  /// The same on the real file system.
+  bool front_end(const std::string &path);
+
+  /// Picks what to compile (select_target) and, for a chart that runs sub-charts, warns about
+  /// the charts of the main file it leaves out (-Wunused-chart). Keeps the choice in target.
+  const Target &select(const TargetRequest &request);
+
+  bool unreadable() const { return loaded.main_unreadable; }
+  bool ok() const { return !loaded.main_unreadable && !diag.has_errors(); }
+
+  FrontEndOptions options;
+  SourceManager sources;
+  Diagnostics diag;
+  LoadResult loaded;
+  model::Model model;
+  Target target;
+};
+
+} // namespace pipeline
+} // namespace gfec
