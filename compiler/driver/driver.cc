@@ -43,6 +43,9 @@ bool front_end(const std::string &path, const Options &o, Compilation &c) {
   // Validating a tree the parser had to patch up would mostly report the patches.
   if (c.diag.has_errors()) return false;
   c.model = validate(c.loaded.program, c.sources, c.diag);
+  // The model holds all the back ends need: the syntax tree goes before they run, so a large
+  // chart does not keep both in memory (docs/performance.md).
+  c.loaded.program = {};
   // The static analyses whose warnings are on (compiler/analysis/, docs/verification.md).
   if (!c.diag.has_errors()) analysis::analyze(c.model, c.diag);
   // ALICA input: say which plan element (name and id) each diagnostic is about.
