@@ -1,5 +1,7 @@
 // The syntax tree: mirrors the text, one struct per construct, every node with its SourceRange.
 // Nothing here is resolved or checked; the validator turns it into the model (model.h).
+// A chart may have a million places: members are ordered and enums sized so that nodes stay
+// small, and spellings point into the source text, which outlives the tree (docs/performance.md).
 #pragma once
 
 #include "operators.h"
@@ -8,6 +10,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace gfec::ast {
@@ -23,7 +26,7 @@ struct Expr;
 using ExprPtr = std::unique_ptr<Expr>;
 
 struct Expr {
-  enum class Kind {
+  enum class Kind : std::uint8_t {
     Bool,     ///< `true` / `false`: bool_value
     Int,      ///< `42`: text is the spelling
     Float,    ///< `0.5`, `1e-3`: text is the spelling
@@ -37,14 +40,14 @@ struct Expr {
     Path,     ///< `P.Q.R` (only as the argument of `active(...)`, docs/language.md "Sub-charts"): path
   };
   Kind kind;
-  SourceRange range;
-  std::string text;
-  std::string spelling;
-  bool bool_value = false;
-  double duration_ms = 0;
-  Name name;
   UnaryOp unary_op = UnaryOp::Not;
   BinaryOp binary_op = BinaryOp::Add;
+  bool bool_value = false;
+  SourceRange range;
+  double duration_ms = 0;
+  std::string text;
+  std::string_view spelling;  ///< the literal as written: points into the source text
+  Name name;
   std::vector<ExprPtr> args;
   std::vector<Name> path;  ///< Kind::Path: the names between the dots, outermost first
 };
@@ -52,18 +55,18 @@ struct Expr {
 // ---------------------------------------------------------------- statements
 
 struct Stmt {
-  enum class Kind { Call, Assign, Verbatim, If };
+  enum class Kind : std::uint8_t { Call, Assign, Verbatim, If };
   Kind kind;
+  AssignOp assign_op = AssignOp::Set;
+  bool has_else = false;         ///< Kind::If: `else` was written
+  bool else_if = false;          ///< Kind::If: else_block is exactly the `if` of an `else if`
   SourceRange range;
   ExprPtr call;            ///< Kind::Call: an Expr of Kind::Call
   Name target;             ///< Kind::Assign
-  AssignOp assign_op = AssignOp::Set;
   ExprPtr value;           ///< Kind::Assign; Kind::If: the condition
   std::string verbatim;    ///< Kind::Verbatim: the text between %{ and %}
   std::vector<Stmt> then_block;  ///< Kind::If
   std::vector<Stmt> else_block;  ///< Kind::If: empty without `else`; `else if` is one If in it
-  bool has_else = false;         ///< Kind::If: `else` was written
-  bool else_if = false;          ///< Kind::If: else_block is exactly the `if` of an `else if`
 };
 
 using Block = std::vector<Stmt>;
@@ -105,15 +108,15 @@ struct ValueDecl {
   SourceRange range;
 };
 
-enum class StateKind { Normal, Success, Failure };
+enum class StateKind : std::uint8_t { Normal, Success, Failure };
 
 /// A place of an sfc or a state of an fsm.
 struct Place {
   bool initial = false;
   StateKind terminal = StateKind::Normal;  ///< fsm only
   bool is_state = false;                   ///< written with `state` rather than `place`
-  Name name;
   bool has_body = false;
+  Name name;
   Block action;
   std::optional<Block> entry;
   std::optional<Block> exit;

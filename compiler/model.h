@@ -1,8 +1,11 @@
 // The model: the checked, resolved form of a program. Back ends and the interpreter read only
 // this. Everything refers by index into the tables here; every element keeps its SourceRange
 // (for #line and for tools), and `sources` resolves ranges to file names and lines.
+// A chart may have a million places: members are ordered and enums sized so that the elements
+// stay small (docs/performance.md, "(a) The compiler").
 #pragma once
 
+#include "heap_optional.h"
 #include "operators.h"
 #include "source.h"
 
@@ -13,7 +16,7 @@
 
 namespace gfec::model {
 
-enum class Type { Void, Bool, Int, Float, Double, String, Object, Duration };
+enum class Type : std::uint8_t { Void, Bool, Int, Float, Double, String, Object, Duration };
 
 /// The type as the language (and C, for the numeric ones) spells it: "bool", "float", ...
 const char *type_name(Type t);
@@ -22,7 +25,7 @@ inline bool is_numeric(Type t) { return t == Type::Int || t == Type::Float || t 
 // ---------------------------------------------------------------- expressions and statements
 
 struct Expr {
-  enum class Kind {
+  enum class Kind : std::uint8_t {
     Bool,     ///< bool_value
     Int,      ///< text: the spelling, e.g. "42"; int_value: its value
     Float,    ///< text: the spelling, e.g. "0.5", "1e-3"; float_value: its value as a double
@@ -48,38 +51,38 @@ struct Expr {
   };
   Kind kind = Kind::Bool;
   Type type = Type::Bool;
-  SourceRange range;
-  bool bool_value = false;
-  std::string text;
-  unsigned long ticks = 0;
-  double ms = 0;
-  int index = -1;
   UnaryOp unary_op = UnaryOp::Not;
   BinaryOp binary_op = BinaryOp::Add;
-  std::vector<Expr> args;
-  std::vector<int> path;  ///< Kind::Active
+  bool bool_value = false;
   // Values computed once by the validator with the one evaluator (compiler/constant.h), so that
   // no later stage parses a spelling or folds again. A literal (Int, Float) always has its value
   // here; any other expression whose value is known at compile time has `folded` set and its
   // value in bool_value (Bool), int_value (Int) or float_value (Float, Double).
   bool folded = false;
+  SourceRange range;
+  int index = -1;
   std::int32_t int_value = 0;
+  unsigned long ticks = 0;
+  double ms = 0;
   double float_value = 0;  ///< the value as a double; converted to `type` it is the expression's value
+  std::string text;
+  std::vector<Expr> args;
+  std::vector<int> path;  ///< Kind::Active
 };
 
 struct Stmt {
-  enum class Kind { Call, Assign, Verbatim, If };
+  enum class Kind : std::uint8_t { Call, Assign, Verbatim, If };
   Kind kind = Kind::Call;
-  SourceRange range;
-  Expr call;             ///< Kind::Call: an Expr of Kind::Call (its result, if any, is discarded)
-  int var = -1;          ///< Kind::Assign: index into Chart::vars
   AssignOp op = AssignOp::Set;
+  bool else_if = false;  ///< Kind::If: else_block is one If written as `else if`
+  SourceRange range;
+  int var = -1;          ///< Kind::Assign: index into Chart::vars
+  Expr call;             ///< Kind::Call: an Expr of Kind::Call (its result, if any, is discarded)
   Expr value;            ///< Kind::Assign; Kind::If: the condition (Bool)
   std::string verbatim;  ///< Kind::Verbatim
   std::uint32_t code_begin = 0;  ///< Kind::Verbatim: where `verbatim` starts in range.file (after `%{`); 0: unknown
   std::vector<Stmt> then_block;  ///< Kind::If
   std::vector<Stmt> else_block;  ///< Kind::If: empty when there is no `else`
-  bool else_if = false;          ///< Kind::If: else_block is one If written as `else if`
 };
 
 // ---------------------------------------------------------------- interface
@@ -116,31 +119,31 @@ struct Var {
   SourceRange range;
 };
 
-enum class Terminal { None, Success, Failure };
+enum class Terminal : std::uint8_t { None, Success, Failure };
 
 /// A place of an sfc or a state of an fsm.
 struct Place {
   std::string name;
-  bool initial = false;
-  Terminal terminal = Terminal::None;  ///< fsm only
   std::vector<Stmt> action;
   std::optional<std::vector<Stmt>> entry;
   std::optional<std::vector<Stmt>> exit;
-  std::optional<Expr> post;  ///< a terminal state's postcondition
-  bool timed = false;        ///< some `elapsed()` reads this place's timer
-  int runs = -1;             ///< the sub-chart it runs: an index into Model::charts, or -1
+  HeapOptional<Expr> post;  ///< a terminal state's postcondition (on the heap: most places have none)
   SourceRange range;
   SourceRange name_range;  ///< the name where it is declared
+  int runs = -1;             ///< the sub-chart it runs: an index into Model::charts, or -1
+  bool initial = false;
+  Terminal terminal = Terminal::None;  ///< fsm only
+  bool timed = false;        ///< some `elapsed()` reads this place's timer
 };
 
 struct Transition {
   std::string name;      ///< the user's name, or T<position> among all transitions
-  bool named = false;    ///< the user gave the name
   std::vector<int> inputs;
   std::vector<int> outputs;
   std::optional<Expr> condition;  ///< absent: `when true`
   SourceRange range;
   SourceRange name_range;  ///< the user's name, or the whole transition when it has none
+  bool named = false;    ///< the user gave the name
 };
 
 struct Chart {

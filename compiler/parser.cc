@@ -342,6 +342,9 @@ Chart Parser::chart(Chart::Kind kind) {
   c.name = name(kind == Chart::Kind::Sfc ? "after 'sfc'" : "after 'fsm'");
   braced("to open the chart", [&] { chart_item(c); });
   c.range = from(begin);
+  // Growing by doubling leaves up to half of these unused until the tree is dropped.
+  c.places.shrink_to_fit();
+  c.transitions.shrink_to_fit();
   return c;
 }
 
@@ -851,21 +854,21 @@ ExprPtr Parser::primary() {
     }
     auto e = make(t.kind == Tok::Int ? Expr::Kind::Int : Expr::Kind::Float, t.range);
     e->text = std::string(t.text);
-    e->spelling = e->text;
+    e->spelling = t.text;
     return e;
   }
   case Tok::String: {
     Token t = take();
     auto e = make(Expr::Kind::String, t.range);
     e->text = t.value;
-    e->spelling = std::string(t.text);
+    e->spelling = t.text;
     return e;
   }
   case Tok::Duration: {
     Token t = take();
     auto e = make(Expr::Kind::Duration, t.range);
     e->duration_ms = t.duration_ms;
-    e->spelling = std::string(t.text);
+    e->spelling = t.text;
     return e;
   }
   case Tok::KwTrue:
@@ -947,7 +950,7 @@ void Parser::test_step(Test &test) {
       step.count = count_of(n);
       step.value = make(Expr::Kind::Int, n.range);
       step.value->text = std::string(n.text);
-      step.value->spelling = step.value->text;
+      step.value->spelling = n.text;
     } else if (!at(Tok::Semi)) {
       fail("expected a number of ticks or ';' after 'tick'");
     }

@@ -106,7 +106,15 @@ bool Compilation::front_end(const std::string &path, const FileSystem &fs, scena
   load.language = options.language;
   loaded = load_program(path, load, fs, sources, diag);
   if (loaded.main_unreadable || diag.has_errors()) return false;
-  model = tests ? validate(loaded.program, sources, diag, *tests) : validate(loaded.program, sources, diag);
+  if (tests) {
+    model = validate(loaded.program, sources, diag, *tests);
+  } else {
+    model = validate(loaded.program, sources, diag);
+    // The model holds all the back ends need: the syntax tree goes before they run, so a large
+    // chart does not keep both in memory (docs/performance.md). `gfec test` keeps it: it counts
+    // the tests written in the file.
+    loaded.program = {};
+  }
   // The static analyses whose warnings are on (compiler/analysis/, docs/verification.md).
   if (options.analyze && !diag.has_errors()) analysis::analyze(model, diag);
   // ALICA input: say which plan element (name and id) each diagnostic is about.

@@ -130,6 +130,7 @@ void declare_value(Context &cx, ChartScope &s, const ast::ValueDecl &v) {
 void declare_names(Context &cx, ChartScope &s) {
   std::vector<std::pair<std::uint32_t, std::function<void()>>> decls;
   const ast::Chart &a = s.ast;
+  s.out.places.reserve(a.places.size());
   for (std::size_t i = 0; i < a.places.size(); ++i)
     decls.push_back({a.places[i].range.begin, [&, i] { declare_place(cx, s, a.places[i], static_cast<int>(i)); }});
   for (const auto &v : a.values) decls.push_back({v.range.begin, [&cx, &s, &v] { declare_value(cx, s, v); }});
@@ -147,6 +148,7 @@ void declare_names(Context &cx, ChartScope &s) {
 
 /// Names the transitions: the user's name, or T<position> (§5) unless that name is taken.
 void name_transitions(Context &cx, ChartScope &s) {
+  s.out.transitions.reserve(s.ast.transitions.size());
   for (std::size_t i = 0; i < s.ast.transitions.size(); ++i) {
     const ast::Transition &t = s.ast.transitions[i];
     model::Transition out;
