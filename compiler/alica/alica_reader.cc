@@ -106,7 +106,7 @@ private:
     if (!doc->root) return;
     const JsonValue &root = *doc->root;
     if (!root.is_object() || (!root.find("states") && !root.find("entryPoints"))) {
-      diag_.error(range(*doc, root), "alica-format",
+      diag_.error(range(*doc, root), ErrorKind::AlicaFormat,
                   fmt::format("'{}' is not an ALICA plan: a plan is a JSON object with \"entryPoints\" and \"states\"",
                               doc->path));
       return;
@@ -142,7 +142,7 @@ private:
     const std::string &t = sources_.file(doc->file).text();
     std::size_t first = t.find_first_not_of(" \t\r\n\xef\xbb\xbf");
     if (first != std::string::npos && t[first] == '<') {
-      diag_.error({doc->file, static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(first + 1)}, "alica-format",
+      diag_.error({doc->file, static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(first + 1)}, ErrorKind::AlicaFormat,
                   "this is an XML file of ALICA's older Eclipse designer; gfec reads the JSON files of the "
                   "current designer")
           .note("open the plans in the current ALICA plan designer and save them again to convert them");
@@ -151,7 +151,7 @@ private:
       doc->root = parse_json(t, error);
       if (!doc->root)
         diag_.error({doc->file, error.offset, std::min<std::uint32_t>(error.offset + 1, static_cast<std::uint32_t>(t.size()))},
-                    "json", "malformed JSON: " + error.message);
+                    ErrorKind::Json, "malformed JSON: " + error.message);
       else index_ids(*doc->root, doc->by_id);
     }
     Doc *raw = doc.get();
@@ -200,7 +200,7 @@ private:
       if (seen != docs_.end()) return seen->second.get();
       if (auto text = fs_.read(path)) return open(path, std::move(*text));
     }
-    auto &d = diag_.error(at, "alica-reference", fmt::format("cannot find '{}', referenced here", file));
+    auto &d = diag_.error(at, ErrorKind::AlicaReference, fmt::format("cannot find '{}', referenced here", file));
     suggest_file(d, file, tried);
     for (const auto &t : tried) d.note(fmt::format("looked for '{}'", t));
     return nullptr;
@@ -233,14 +233,14 @@ private:
   Target resolve(const std::string &text, Doc &from, const SourceRange &at) {
     auto ref = split_ref(text);
     if (!ref) {
-      diag_.error(at, "alica-reference", fmt::format("'{}' is no reference: ALICA writes them as \"File.ext#id\"", text));
+      diag_.error(at, ErrorKind::AlicaReference, fmt::format("'{}' is no reference: ALICA writes them as \"File.ext#id\"", text));
       return {};
     }
     Doc *doc = ref->file.empty() ? &from : find_doc(ref->file, from, at);
     if (!doc || !doc->root) return {};
     auto it = doc->by_id.find(ref->id);
     if (it == doc->by_id.end()) {
-      auto &d = diag_.error(at, "alica-reference", fmt::format("'{}' has no element with id {}", doc->path, ref->id));
+      auto &d = diag_.error(at, ErrorKind::AlicaReference, fmt::format("'{}' has no element with id {}", doc->path, ref->id));
       const JsonValue &root = *doc->root;
       if (auto rid = id_of(root.find("id")))
         d.note(range(*doc, root), fmt::format("did you mean '{}' (id {}), which the file holds?",
@@ -344,7 +344,7 @@ private:
         if (plan && plan->is_string()) activated.emplace_back(plan->text, plan);
       }
     if (activated.empty()) {
-      diag_.error(at, "alica-reference", fmt::format("plan type '{}' (id {}) has no activated plan to run", label, id))
+      diag_.error(at, ErrorKind::AlicaReference, fmt::format("plan type '{}' (id {}) has no activated plan to run", label, id))
           .note(range(*t.doc, *t.object), "the plan type is here");
       return "";
     }
@@ -415,15 +415,15 @@ private:
     for (std::size_t i = 0; i < states.size(); ++i) {
       auto id = id_of(states[i]->find("id"));
       if (!id) {
-        diag_.error(range(doc, *states[i]), "alica-format", fmt::format("a state of {} has no id", what));
+        diag_.error(range(doc, *states[i]), ErrorKind::AlicaFormat, fmt::format("a state of {} has no id", what));
         continue;
       }
       if (!state_index.emplace(*id, i).second)
-        diag_.error(range(doc, *states[i]), "alica-format", fmt::format("second state with id {} in {}", *id, what))
+        diag_.error(range(doc, *states[i]), ErrorKind::AlicaFormat, fmt::format("second state with id {} in {}", *id, what))
             .note(range(doc, *states[state_index[*id]]), "the first one is here");
     }
     if (entries.empty()) {
-      diag_.error(range(doc, plan), "alica-format",
+      diag_.error(range(doc, plan), ErrorKind::AlicaFormat,
                   fmt::format("{} has no entry point: gfec needs one to know where its machine starts", what));
       return;
     }
@@ -464,13 +464,13 @@ private:
       m.chart.name = {chart_name, m.chart.range};
       auto start = state_of(ep.find("state"));
       if (!start) {
-        diag_.error(range(doc, ep), "alica-reference",
+        diag_.error(range(doc, ep), ErrorKind::AlicaReference,
                     fmt::format("entry point '{}' (id {}) starts in state {}, which {} does not have", label, ep_id,
                                 id_of(ep.find("state")).value_or("(none)"), what));
         continue;
       }
       if (owner[*start] >= 0) {
-        diag_.error(range(doc, ep), "alica-format",
+        diag_.error(range(doc, ep), ErrorKind::AlicaFormat,
                     fmt::format("entry point '{}' (id {}) starts in state '{}', which entry point '{}' already "
                                 "reaches: gfec gives each entry point a machine of its own states",
                                 label, ep_id, states[*start]->string_of("name"),
@@ -594,7 +594,7 @@ private:
     if (type == "SuccessState" || (type == "TerminalState" && success && success->boolean)) p.terminal = ast::StateKind::Success;
     else if (type == "FailureState" || type == "TerminalState") p.terminal = ast::StateKind::Failure;
     else if (!type.empty() && type != "State")
-      diag_.error(range(doc, *state.find("type")), "alica-format",
+      diag_.error(range(doc, *state.find("type")), ErrorKind::AlicaFormat,
                   fmt::format("unknown state type '{}' of {}: ALICA writes \"State\" or \"TerminalState\"", type, what));
 
     for (const char *key : {"variableBindings", "parametrisations"})
@@ -605,13 +605,13 @@ private:
     for (const auto &[text, at] : references(doc, state, what)) {
       auto ref = split_ref(text);
       if (!ref) {
-        diag_.error(at, "alica-reference",
+        diag_.error(at, ErrorKind::AlicaReference,
                     fmt::format("{} holds '{}', which is no reference: ALICA writes them as \"File.ext#id\"", what, text));
         continue;
       }
       std::string ext = extension_of(ref->file.empty() ? doc.path : ref->file);
       if (ext != ".beh" && ext != ".pml" && ext != ".pty") {
-        diag_.error(at, "alica-reference",
+        diag_.error(at, ErrorKind::AlicaReference,
                     fmt::format("{} holds '{}': gfec knows behaviours (.beh), plans (.pml) and plan types (.pty)", what,
                                 text));
         continue;
@@ -669,14 +669,14 @@ private:
     auto from = state_of(t.find("inState")), to = state_of(t.find("outState"));
     for (auto [end, key] : {std::pair{from, "inState"}, std::pair{to, "outState"}})
       if (!end) {
-        diag_.error(range(doc, t), "alica-reference",
+        diag_.error(range(doc, t), ErrorKind::AlicaReference,
                     fmt::format("{} names {} {}, which the plan has no state for", what, key,
                                 id_of(t.find(key)).value_or("(none)")));
       }
     if (!from || !to) return;
     Machine &m = machines[owner[*from]];
     if (owner[*from] != owner[*to]) {
-      diag_.error(range(doc, t), "alica-format",
+      diag_.error(range(doc, t), ErrorKind::AlicaFormat,
                   fmt::format("{} leads from entry point machine '{}' to machine '{}': gfec machines do not share "
                               "states", what, m.chart.name.text, machines[owner[*to]].chart.name.text));
       return;
@@ -748,7 +748,9 @@ void annotate_elements(Diagnostics &diag, const LoadResult &loaded) {
   };
   for (Diagnostic &d : diag.all()) {
     // The ALICA reader's own messages name their element already.
-    if (d.check == "json" || d.check.rfind("alica", 0) == 0 || d.check == "-Walica-ignored") continue;
+    if (d.kind == &kind_info(ErrorKind::Json) || d.kind == &kind_info(ErrorKind::AlicaFormat) ||
+        d.kind == &kind_info(ErrorKind::AlicaReference) || d.kind == &kind_info(Warning::AlicaIgnored))
+      continue;
     for (auto &n : d.notes)
       if (n.has_range)
         if (const SourceElement *e = describe(n.range)) n.message += fmt::format(" ({})", e->description);

@@ -25,7 +25,7 @@ public:
   void add(const std::string &, const Diagnostics &diag, const SourceManager &sources) override {
     for (const auto &d : diag.all()) {
       err_ << render_text(d, sources, style_);
-      if (d.severity == Severity::Error && d.check.rfind("-W", 0) == 0) werror_ = true;
+      if (d.severity == Severity::Error && d.from_warning()) werror_ = true;
     }
     if (diag.limit_reached()) err_ << limit_message(diag) << "\n";
   }

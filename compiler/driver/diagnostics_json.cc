@@ -80,8 +80,8 @@ Json diagnostic_to_json(const Diagnostic &d, const SourceManager &sources) {
             {"locations", Json::array({location(sources, d.range)})},
             {"escape-source", false}};
   // gcc: "-Wname" for a warning, "-Werror=name" for one -Werror made an error.
-  if (d.check.rfind("-W", 0) == 0) j["option"] = check_label(d);
-  j["check"] = d.check;
+  if (d.from_warning()) j["option"] = check_label(d);
+  j["check"] = d.check();
   if (!d.fixits.empty()) {
     // gcc's fix-its: "start" at the first byte replaced, "next" just past the last one.
     Json fixits = Json::array();

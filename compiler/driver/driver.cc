@@ -177,7 +177,7 @@ int compile(const Options &o, DiagnosticReport &report, std::ostream &out) {
 
   if (!s.error.empty() && s.in_input) {
     Diagnostics located(o.warnings, o.error_limit);
-    located.error({c.model.main_file, 0, 0}, "nothing-to-compile", s.error);
+    located.error({c.model.main_file, 0, 0}, ErrorKind::NothingToCompile, s.error);
     report.add(input, located, c.sources);
     return kExitInputError;
   }

@@ -1,5 +1,7 @@
 #include "options.h"
 
+#include "validate/suggest.h"
+
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
@@ -7,28 +9,47 @@ namespace gfec {
 
 namespace {
 
-/// Applies one -W value ("error", "all", "no-conflict", "conflict"); false if unknown.
-bool apply_warning_flag(const std::string &flag, WarningOptions &w) {
+/// Why `name` is no warning gfec has: an error (errors cannot be turned off), a near miss, or
+/// simply unknown. The names come from the table of kinds (compiler/diagnostic_kinds.def).
+std::string unknown_warning(const std::string &flag, const std::string &name) {
+  if (const DiagnosticKind *k = find_kind(name); k && !k->warning)
+    return fmt::format("'-W{}': '{}' is an error, not a warning; errors cannot be turned off or made warnings", flag,
+                       name);
+  std::string best;
+  std::size_t best_distance = name.size() / 3 + 1;
+  for (std::size_t i = 0; i < static_cast<std::size_t>(Warning::Count_); ++i) {
+    std::string_view candidate = kind_info(static_cast<Warning>(i)).name;
+    std::size_t d = validation::edit_distance(name, candidate);
+    if (d < best_distance) best_distance = d, best = std::string(candidate);
+  }
+  std::string message = fmt::format("unknown warning option '-W{}'", flag);
+  if (!best.empty()) message += fmt::format("; did you mean '-W{}{}'?", flag.substr(0, flag.size() - name.size()), best);
+  return message + " ('gfec --help' lists the warnings)";
+}
+
+/// Applies one -W value ("error", "all", "no-conflict", "conflict"); returns why it cannot, or "".
+std::string apply_warning_flag(const std::string &flag, WarningOptions &w) {
   if (flag == "error") {
     w.as_errors = true;
-    return true;
+    return {};
   }
   if (flag == "no-error") {
     w.as_errors = false;
-    return true;
+    return {};
   }
   // gcc: -Werror=NAME turns NAME on and makes it an error; -Wno-error=NAME keeps it a warning.
   if (flag.rfind("error=", 0) == 0 || flag.rfind("no-error=", 0) == 0) {
     bool error = flag[0] == 'e';
-    auto found = find_warning(flag.substr(error ? 6 : 9));
-    if (!found) return false;
+    std::string name = flag.substr(error ? 6 : 9);
+    auto found = find_warning(name);
+    if (!found) return unknown_warning(flag, name);
     w.error_override[static_cast<int>(*found)] = error ? 1 : -1;
     if (error) w.set(*found, true);
-    return true;
+    return {};
   }
   if (flag == "all" || flag == "extra") {
     for (int i = 0; i < static_cast<int>(Warning::Count_); ++i) w.enabled[i] = true;
-    return true;
+    return {};
   }
   bool on = true;
   std::string name = flag;
@@ -37,9 +58,9 @@ bool apply_warning_flag(const std::string &flag, WarningOptions &w) {
     name = name.substr(3);
   }
   auto found = find_warning(name);
-  if (!found) return false;
+  if (!found) return unknown_warning(flag, name);
   w.set(*found, on);
-  return true;
+  return {};
 }
 
 /// Takes gcc's dependency flags out of argv and returns the rest for CLI11.
@@ -97,7 +118,7 @@ std::string warning_help() {
       "Warnings (-W<name> turns one on, -Wno-<name> off; -Wall all; -w none; -Werror makes them errors,\n"
       "-Werror=<name> one of them, -Wno-error=<name> keeps one a warning):\n";
   for (int i = 0; i < static_cast<int>(Warning::Count_); ++i) {
-    const WarningInfo &w = warning_table()[i];
+    const DiagnosticKind &w = kind_info(static_cast<Warning>(i));
     s += fmt::format("  -W{:<20} {}{}\n", w.name, w.summary, w.on_by_default ? " (on by default)" : "");
   }
   return s;
@@ -188,7 +209,7 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
     return result;
   }
   for (const auto &w : warning_flags)
-    if (!apply_warning_flag(w, o.warnings)) return usage_error(fmt::format("unknown warning option '-W{}'", w));
+    if (std::string why = apply_warning_flag(w, o.warnings); !why.empty()) return usage_error(why);
   for (const auto &f : f_flags) {
     if (f.rfind("diagnostics-format=", 0) == 0) {
       std::string v = f.substr(19);

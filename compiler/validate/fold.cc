@@ -19,7 +19,7 @@ constexpr long long kIntMin = INT32_MIN;
 constexpr long long kIntMax = INT32_MAX;
 
 std::optional<Value> fail(Diagnostics *diag, SourceRange at, const char *message) {
-  if (diag) diag->error(at, "not-constant", message);
+  if (diag) diag->error(at, ErrorKind::NotConstant, message);
   return std::nullopt;
 }
 
@@ -148,7 +148,7 @@ std::optional<Value> evaluate(const model::Expr &e, const model::Model &m, Diagn
   case K::Int: {
     long long x = std::strtoll(e.text.c_str(), nullptr, 10);
     if (x > kIntMax) {
-      if (diag) diag->error(e.range, "not-constant", fmt::format("integer constant '{}' is too large for 'int'", e.text));
+      if (diag) diag->error(e.range, ErrorKind::NotConstant, fmt::format("integer constant '{}' is too large for 'int'", e.text));
       return std::nullopt;
     }
     v.i = x;
@@ -174,7 +174,7 @@ std::optional<model::Expr> check_constant(std::optional<model::Expr> x, const mo
   auto v = evaluate(*x, m, &diag);
   if (diag.error_count() != errors) return std::nullopt;
   if (v && x->kind == model::Expr::Kind::Float && !std::isfinite(v->f)) {
-    diag.error(x->range, "not-constant", fmt::format("floating constant '{}' is too large for 'double'", x->text));
+    diag.error(x->range, ErrorKind::NotConstant, fmt::format("floating constant '{}' is too large for 'double'", x->text));
     return std::nullopt;
   }
   return x;
@@ -192,7 +192,7 @@ std::optional<model::Expr> to_literal(const Value &v, model::Type to, SourceRang
   } else if (to == Type::Int && model::is_numeric(v.type)) {
     double x = as_double(v);  // C converts by truncation toward zero
     if (v.type != Type::Int && (x < kIntMin || x > kIntMax)) {
-      diag.error(range, "not-constant", fmt::format("value {} does not fit in 'int'", x));
+      diag.error(range, ErrorKind::NotConstant, fmt::format("value {} does not fit in 'int'", x));
       return std::nullopt;
     }
     e.kind = K::Int;
@@ -218,7 +218,7 @@ const model::Expr *fold_const(Context &cx, int index) {
   case State::Done: return &c.value;
   case State::Failed: return nullptr;
   case State::Busy:
-    cx.diag.error(src.decl->name.range, "not-constant", fmt::format("constant '{}' is defined in terms of itself", c.name));
+    cx.diag.error(src.decl->name.range, ErrorKind::NotConstant, fmt::format("constant '{}' is defined in terms of itself", c.name));
     src.state = State::Failed;
     return nullptr;
   case State::Pending: break;
@@ -228,7 +228,7 @@ const model::Expr *fold_const(Context &cx, int index) {
   if (c.chart >= 0 && (!chart || chart->index != c.chart)) return nullptr;
   // Folding recurses through the constants an initialiser reads: bound it, never the stack.
   if (cx.const_depth >= kMaxConstDepth) {
-    cx.diag.error(src.decl->name.range, "not-constant",
+    cx.diag.error(src.decl->name.range, ErrorKind::NotConstant,
                   fmt::format("constant '{}' is defined through more than {} other constants", c.name, kMaxConstDepth));
     src.state = State::Failed;
     return nullptr;
@@ -241,7 +241,7 @@ const model::Expr *fold_const(Context &cx, int index) {
   if (auto e = lower_initializer(src.decl->init.get(), scope, c.type, c.name)) {
     if (auto v = evaluate(*e, cx.model, &cx.diag)) literal = to_literal(*v, c.type, e->range, cx.diag, &*e);
     if (!literal && cx.diag.error_count() == errors)
-      cx.diag.error(e->range, "not-constant", fmt::format("initializer of '{}' is not a constant expression", c.name));
+      cx.diag.error(e->range, ErrorKind::NotConstant, fmt::format("initializer of '{}' is not a constant expression", c.name));
   }
   --cx.const_depth;
   if (src.state == State::Failed) return nullptr;  // a cycle through it was reported meanwhile

@@ -82,23 +82,23 @@ const char *describe(Sym kind) {
 bool check_reserved(const ast::Name &name, Sym kind, Diagnostics &diag) {
   const char *language = kCKeywords.count(name.text) ? "C" : kCppKeywords.count(name.text) ? "C++" : nullptr;
   if (!language && is_c_library_name(name.text)) {
-    diag.error(name.range, "reserved-name",
+    diag.error(name.range, ErrorKind::ReservedName,
                fmt::format("'{}' is a macro or type of the C headers the engine includes and cannot name {}", name.text,
                            with_article(kind)));
     return false;
   }
   if (!language) return true;
-  diag.error(name.range, "reserved-name",
+  diag.error(name.range, ErrorKind::ReservedName,
              fmt::format("'{}' is a keyword of {} and cannot name {}", name.text, language, with_article(kind)));
   return false;
 }
 
 void report_clash(const ast::Name &name, Sym kind, const Symbol &previous, Diagnostics &diag) {
   if (previous.kind == kind) {
-    diag.error(name.range, "duplicate-name", fmt::format("redefinition of {} '{}'", describe(kind), name.text))
+    diag.error(name.range, ErrorKind::DuplicateName, fmt::format("redefinition of {} '{}'", describe(kind), name.text))
         .note(previous.range, fmt::format("previous definition of '{}' was here", name.text));
   } else {
-    diag.error(name.range, "duplicate-name",
+    diag.error(name.range, ErrorKind::DuplicateName,
                fmt::format("{} '{}' has the same name as {}", describe(kind), name.text, with_article(previous.kind)))
         .note(previous.range, fmt::format("{} '{}' declared here", describe(previous.kind), name.text));
   }

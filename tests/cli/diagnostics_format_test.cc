@@ -47,7 +47,7 @@ TEST_CASE("json diagnostics: a syntax error as gcc writes it") {
   Json j = diagnostic_to_json(d, r.sources);
   CHECK(j["kind"] == "error");
   CHECK(j["message"] == d.message);
-  CHECK(j["check"] == d.check);
+  CHECK(j["check"] == d.check());
   CHECK_FALSE(j.contains("option"));
   const Json &caret = j["locations"][0]["caret"];
   CHECK(caret["file"] == "t.sfc");
@@ -68,11 +68,13 @@ TEST_CASE("sarif: a result per diagnostic, notes as related locations, rules for
   const Json &run = j["runs"][0];
   CHECK(run["originalUriBaseIds"]["%SRCROOT%"]["uri"] == "file:///work/my%20project/");
   const Json &rules = run["tool"]["driver"]["rules"];
-  // Every warning of the table is a rule, and so is each error check that occurred.
-  CHECK(rules[0]["id"] == "-Wunreachable-place");
+  // Every row of the table of kinds is a rule, in the table's order, fired or not.
+  REQUIRE(rules.size() == diagnostic_kind_count());
+  CHECK(rules[static_cast<std::size_t>(ErrorKind::Syntax)]["id"] == "syntax");
+  CHECK(rules[static_cast<std::size_t>(ErrorKind::Count_)]["id"] == "-Wunreachable-place");
   const Json &result = run["results"][0];
-  CHECK(result["ruleId"] == d.check);
-  CHECK(rules[result["ruleIndex"].get<std::size_t>()]["id"] == d.check);
+  CHECK(result["ruleId"] == d.check());
+  CHECK(rules[result["ruleIndex"].get<std::size_t>()]["id"] == d.check());
   CHECK(result["level"] == "error");
   const Json &loc = result["locations"][0]["physicalLocation"];
   CHECK(loc["artifactLocation"]["uri"] == "dir/t.sfc");
@@ -156,7 +158,7 @@ TEST_CASE("text diagnostics: -Werror's label is gcc's [-Werror=NAME]; the check 
         std::string::npos);
   Diagnostic d;
   d.severity = Severity::Error;
-  d.check = "-Wunreachable-place";
+  d.kind = &kind_info(Warning::UnreachablePlace);
   CHECK(check_label(d) == "-Werror=unreachable-place");
   d.severity = Severity::Warning;
   CHECK(check_label(d) == "-Wunreachable-place");
@@ -193,8 +195,8 @@ TEST_CASE("json and sarif diagnostics: the fix-it as gcc's fixits and SARIF's fi
 
 TEST_CASE("the error limit in gcc's words, singular or plural alike") {
   Diagnostics one(WarningOptions{}, 1);
-  one.error({}, "x", "a");
-  one.error({}, "x", "b");
+  one.error({}, ErrorKind::Syntax, "a");
+  one.error({}, ErrorKind::Syntax, "b");
   CHECK(one.limit_reached());
   CHECK(limit_message(one) == "compilation terminated due to -fmax-errors=1.");
 }
