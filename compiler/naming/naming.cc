@@ -68,13 +68,16 @@ bool NameSpace::numbered(const std::string &name) const {
          name.find_first_not_of("0123456789", prefix_.size()) == std::string::npos;
 }
 
+bool NameSpace::has_numbered(const std::string &prefix) const {
+  // The names that start with `prefix` are neighbours in the ordered set.
+  for (auto it = taken_.upper_bound(prefix); it != taken_.end() && it->compare(0, prefix.size(), prefix) == 0; ++it)
+    if (it->find_first_not_of("0123456789", prefix.size()) == std::string::npos) return true;
+  return outer_ && outer_->has_numbered(prefix);
+}
+
 const std::string &NameSpace::reserve_numbered_prefix(std::string base) {
+  while (has_numbered(base)) base += '_';
   prefix_ = std::move(base);
-  for (bool clash = true; clash;) {
-    clash = false;
-    for (const auto &name : taken_) clash = clash || numbered(name);
-    if (clash) prefix_ += '_';
-  }
   return prefix_;
 }
 

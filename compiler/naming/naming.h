@@ -26,18 +26,27 @@ inline bool is_reserved(std::string_view word) { return reserved(word) != Reserv
 /// a name that is taken or reserved gets a trailing `_` until it is free.
 class NameSpace {
 public:
+  NameSpace() = default;
+  /// A scope inside `outer` (a function's locals inside the file's names): its names avoid the
+  /// outer ones too, so that no local hides a global the code refers to. `outer` must outlive it.
+  explicit NameSpace(const NameSpace *outer) : outer_(outer) {}
+
   /// A name that cannot move (a user's function, an API name): later take()s avoid it.
   void claim(const std::string &name) { taken_.insert(name); }
-  bool free(const std::string &name) const { return !taken_.count(name) && !is_reserved(name) && !numbered(name); }
+  bool free(const std::string &name) const { return !taken(name) && !is_reserved(name) && !numbered(name); }
   std::string take(std::string name);
   /// Reserves the prefix of numbered temporaries (`gfec_t1`, `gfec_t2`, ...): `base`, with `_`
-  /// appended while a name claimed or taken here is the prefix followed by digits only. Names
-  /// taken afterwards never have that form either. Call it once, before the temporaries are named.
+  /// appended while a name claimed or taken here (or outside) is the prefix followed by digits
+  /// only. Names taken here afterwards never have that form either.
   const std::string &reserve_numbered_prefix(std::string base);
 
 private:
+  bool taken(const std::string &name) const { return taken_.count(name) || (outer_ && outer_->taken(name)); }
   bool numbered(const std::string &name) const;
+  /// Some name here or outside is `prefix` followed by digits only.
+  bool has_numbered(const std::string &prefix) const;
 
+  const NameSpace *outer_ = nullptr;
   std::set<std::string> taken_;
   std::string prefix_;  ///< the reserved temporaries' prefix; empty: none yet
 };
