@@ -35,7 +35,7 @@ public:
   explicit JsonReport(std::ostream &err) : err_(err) {}
 
   void add(const std::string &, const Diagnostics &diag, const SourceManager &sources) override {
-    for (const auto &d : diag.all()) all_.push_back(diagnostic_to_json(d, sources));
+    for (const Diagnostic *d : in_source_order(diag)) all_.push_back(diagnostic_to_json(*d, sources));
     if (diag.limit_reached())
       tool_message("note", "", limit_message(diag));
   }

@@ -120,7 +120,8 @@ void SarifLog::add(const Diagnostics &diag, const SourceManager &sources) {
     int index = artifact_index(sources.file(id).path());
     if (id == 0) analysis_targets_[static_cast<std::size_t>(index)] = true;
   }
-  for (const Diagnostic &d : diag.all()) {
+  for (const Diagnostic *in_order : in_source_order(diag)) {
+    const Diagnostic &d = *in_order;
     int rule = rule_index(d);
     Json related = Json::array();
     for (const auto &n : d.notes) {

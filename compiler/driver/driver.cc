@@ -139,11 +139,12 @@ std::string printable(const std::string &path) {
 /// Adds the -MD dependency file to the outputs: the files written depend on every file read.
 /// Returns why it cannot be written (a name make cannot read), or "".
 std::string add_dependency_file(const Options &o, const LoadResult &loaded, std::vector<OutputFile> &outputs) {
-  std::vector<std::string> targets = o.deps.targets;
+  std::vector<DependencyTarget> targets = o.deps.targets;
   if (targets.empty())
-    for (const auto &f : outputs) targets.push_back(f.path);
+    for (const auto &f : outputs) targets.push_back({f.path, true});
   std::string name = dependency_file_name(o.deps, outputs.front().path);
-  std::vector<std::string> names = targets;
+  std::vector<std::string> names;
+  for (const auto &t : targets) names.push_back(t.name);
   names.insert(names.end(), loaded.paths.begin(), loaded.paths.end());
   for (const auto &path : names) {
     std::string why = make_unreadable(path);

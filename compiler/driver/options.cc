@@ -69,7 +69,7 @@ std::string apply_warning_flag(const std::string &flag, WarningOptions &w) {
 /// ("--check"), but not gcc's multi-letter single-dash flags: it would read "-MD" as an option
 /// "-M" with the value "D". Makefiles and CMake pass them exactly as they pass them to gcc, so we
 /// accept gcc's spelling: -MD, -MMD (the same here: charts have no system files), -MP, and -MF /
-/// -MT with the value attached ("-MFdeps.d") or as the next argument. "--" ends the scan, as it
+/// -MT / -MQ with the value attached ("-MFdeps.d") or as the next argument. "--" ends the scan, as it
 /// ends CLI11's options.
 std::vector<const char *> take_dependency_flags(int argc, const char *const *argv, DependencyOptions &deps,
                                                 std::string &error) {
@@ -86,7 +86,7 @@ std::vector<const char *> take_dependency_flags(int argc, const char *const *arg
       deps.write = true;
     } else if (a == "-MP") {
       deps.phony = true;
-    } else if (a.rfind("-MF", 0) == 0 || a.rfind("-MT", 0) == 0) {
+    } else if (a.rfind("-MF", 0) == 0 || a.rfind("-MT", 0) == 0 || a.rfind("-MQ", 0) == 0) {
       std::string value = a.substr(3);
       if (value.empty()) {
         if (i + 1 >= argc) {
@@ -96,9 +96,9 @@ std::vector<const char *> take_dependency_flags(int argc, const char *const *arg
         value = argv[++i];
       }
       if (a[2] == 'F') deps.file = value;
-      else deps.targets.push_back(value);
+      else deps.targets.push_back({value, a[2] == 'Q'});
     } else {
-      error = fmt::format("unknown option '{}' (dependency files: -MD, -MF FILE, -MP, -MT TARGET)", a);
+      error = fmt::format("unknown option '{}' (dependency files: -MD, -MF FILE, -MP, -MT TARGET, -MQ TARGET)", a);
       return rest;
     }
   }
@@ -133,7 +133,8 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
                "gfec"};
   app.footer(warning_help() +
              "\nDependency files, as gcc writes them: -MD writes OUTPUT.d (or -MF FILE) for make, naming\n"
-             "every file imported; -MP adds an empty rule per import; -MT TARGET names the target.\n"
+             "every file imported; -MP adds an empty rule per import; -MT TARGET names the target (-MQ TARGET\n"
+             "quoted for make).\n"
              "\nDiagnostics, as gcc 12 prints them: -fdiagnostics-color=auto|always|never (auto: colour on a\n"
              "terminal unless NO_COLOR is set; -fno-diagnostics-color = never), -fno-diagnostics-show-line-numbers,\n"
              "-fdiagnostics-parseable-fixits (fix-it:\"FILE\":{L:C-L:C}:\"TEXT\" lines for editors).\n"

@@ -8,6 +8,11 @@
 
 #include <catch2/catch.hpp>
 
+#include <fstream>
+#include <iterator>
+#include <regex>
+#include <set>
+
 using namespace gfec;
 using Json = nlohmann::ordered_json;
 
@@ -257,4 +262,58 @@ TEST_CASE("did-you-mean for imports: the nearest file name in the folders search
   CHECK(e.find("fix-it:\"t.sfc\":{1:8-1:23}:\"\\\"crossing.iface\\\"\"") != std::string::npos);
   // Nothing near: no suggestion.
   CHECK(first_error("import \"zzz.iface\";\nsfc T { initial place A; }\n", fs).find("did you mean") == std::string::npos);
+}
+
+TEST_CASE("the table of diagnostic kinds: every kind named once, described, with help, and documented") {
+  REQUIRE(diagnostic_kind_count() == static_cast<std::size_t>(ErrorKind::Count_) + static_cast<std::size_t>(Warning::Count_));
+  std::ifstream doc_file(std::string(GFEC_SOURCE_DIR) + "/docs/diagnostics.md");
+  REQUIRE(doc_file);
+  std::string doc((std::istreambuf_iterator<char>(doc_file)), std::istreambuf_iterator<char>());
+  std::set<std::string_view> names;
+  for (std::size_t i = 0; i < diagnostic_kind_count(); ++i) {
+    const DiagnosticKind &k = diagnostic_kinds()[i];
+    INFO(k.name);
+    CHECK(names.insert(k.name).second);  // one name, one kind: no spelling twice
+    // Stable names are lower-case words joined by '-', as gcc's warnings.
+    CHECK(std::regex_match(std::string(k.name), std::regex("[a-z]+(-[a-z]+)*")));
+    CHECK(k.summary.size() > 10);
+    CHECK(k.help.size() > 10);
+    CHECK(k.warning == (i >= static_cast<std::size_t>(ErrorKind::Count_)));
+    CHECK(doc.find("| `" + k.check() + "` |") != std::string::npos);
+  }
+  // The spelling kept where two existed for one concept.
+  CHECK(find_kind("not-connected") != nullptr);
+  CHECK(find_kind("unconnected") == nullptr);
+  CHECK(kind_info(ErrorKind::NotConnected).check() == "not-connected");
+  CHECK(kind_info(Warning::DeadJoin).check() == "-Wdead-join");
+  CHECK(find_warning("dead-join") == Warning::DeadJoin);
+  CHECK_FALSE(find_warning("syntax"));
+}
+
+TEST_CASE("sarif rules: every kind is a rule with its summary, help and default level") {
+  const Json log = SarifLog().to_json(0, "/w");
+  const Json &rules = log["runs"][0]["tool"]["driver"]["rules"];
+  REQUIRE(rules.size() == diagnostic_kind_count());
+  const Json &syntax = rules[static_cast<std::size_t>(ErrorKind::Syntax)];
+  CHECK(syntax["id"] == "syntax");
+  CHECK(syntax["shortDescription"]["text"] == std::string(kind_info(ErrorKind::Syntax).summary));
+  CHECK(syntax["help"]["text"] == std::string(kind_info(ErrorKind::Syntax).help));
+  CHECK(syntax["defaultConfiguration"]["level"] == "error");
+  const Json &conflict = rules[static_cast<std::size_t>(ErrorKind::Count_) + static_cast<std::size_t>(Warning::Conflict)];
+  CHECK(conflict["id"] == "-Wconflict");
+  CHECK(conflict["defaultConfiguration"]["level"] == "warning");
+  CHECK(conflict["defaultConfiguration"]["enabled"] == false);
+}
+
+TEST_CASE("diagnostics are reported in source order: by file as loaded, then by position") {
+  Diagnostics diag;
+  diag.error({0, 40, 41}, ErrorKind::Syntax, "third");
+  diag.error({1, 0, 1}, ErrorKind::Import, "fifth: another file");
+  diag.error({0, 5, 6}, ErrorKind::UnknownName, "first");
+  diag.warning(Warning::UnreachablePlace, {0, 20, 21}, "second");
+  diag.error({0, 40, 42}, ErrorKind::TypeMismatch, "fourth: same place, found later");
+  std::vector<std::string> order;
+  for (const Diagnostic *d : in_source_order(diag)) order.push_back(d->message);
+  CHECK(order == std::vector<std::string>{"first", "second", "third", "fourth: same place, found later",
+                                          "fifth: another file"});
 }
