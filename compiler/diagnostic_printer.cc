@@ -88,15 +88,15 @@ const char *severity_name(Severity s) {
 }
 
 std::string check_label(const Diagnostic &d) {
-  if (d.severity == Severity::Error && d.check.rfind("-W", 0) == 0) return "-Werror=" + d.check.substr(2);
-  return d.check;
+  if (d.severity == Severity::Error && d.from_warning()) return "-Werror=" + std::string(d.kind->name);
+  return d.check();
 }
 
 std::string render_text(const Diagnostic &d, const SourceManager &sources, const TextStyle &style) {
   const char *color = severity_color(d.severity);
   std::string out = fmt::format("{} {} {}", paint(style, kBold, location(d.range, sources) + ":"),
                                 paint(style, color, std::string(severity_name(d.severity)) + ":"), d.message);
-  if (!d.check.empty()) out += fmt::format(" [{}]", paint(style, color, check_label(d)));
+  if (d.kind) out += fmt::format(" [{}]", paint(style, color, check_label(d)));
   out += '\n';
   quote(out, d.range, style.fixits ? d.fixits : std::vector<FixIt>{}, sources, style);
   if (style.parseable_fixits) {

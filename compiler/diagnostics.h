@@ -1,7 +1,7 @@
 // The diagnostics sink: every stage reports here; only the driver prints and picks the exit code.
 #pragma once
 
-#include "checks.h"
+#include "diagnostic_kinds.h"
 #include "source.h"
 
 #include <array>
@@ -31,14 +31,20 @@ struct Diagnostic {
   Severity severity = Severity::Error;
   SourceRange range;
   std::string message;
-  /// Stable check name: "unknown-name", "syntax", ...; for warnings the -W name.
-  std::string check;
+  /// Its row of compiler/diagnostic_kinds.def (a warning's row even when -Werror made it an
+  /// error); null only in a Diagnostic made by hand.
+  const DiagnosticKind *kind = nullptr;
   std::vector<DiagnosticNote> notes;
   std::vector<FixIt> fixits;
 
   Diagnostic &note(std::string message);
   Diagnostic &note(SourceRange range, std::string message);
   Diagnostic &fix(SourceRange range, std::string replacement);
+
+  /// The stable check name: "unknown-name", "syntax", ...; for a warning "-Wname".
+  std::string check() const { return kind ? kind->check() : std::string(); }
+  /// A warning, whatever its severity now (-Werror may have made it an error).
+  bool from_warning() const { return kind && kind->warning; }
 };
 
 /// Which warnings are on, and whether they count as errors (-W, -Wno-, -Werror, -Wall,
@@ -63,8 +69,8 @@ class Diagnostics {
 public:
   explicit Diagnostics(WarningOptions warnings = {}, std::size_t error_limit = 50);
 
-  /// Reports an error; the returned reference takes notes.
-  Diagnostic &error(SourceRange range, std::string check, std::string message);
+  /// Reports an error of the kind given; the returned reference takes notes.
+  Diagnostic &error(SourceRange range, ErrorKind kind, std::string message);
   /// Reports a warning if it is on (as an error under -Werror); returns a sink for notes either way.
   Diagnostic &warning(Warning w, SourceRange range, std::string message);
 
@@ -79,6 +85,8 @@ public:
   const WarningOptions &warning_options() const { return options_; }
 
 private:
+  Diagnostic &add_error(SourceRange range, const DiagnosticKind &kind, std::string message);
+
   WarningOptions options_;
   std::size_t error_limit_;
   std::deque<Diagnostic> list_; // a deque: references handed out stay valid

@@ -92,7 +92,7 @@ Token Lexer::make(Tok kind, std::uint32_t begin) {
 }
 
 Token Lexer::error(std::uint32_t begin, std::uint32_t end, std::string message) {
-  diag_.error({file_, begin, end}, "syntax", std::move(message));
+  diag_.error({file_, begin, end}, ErrorKind::Syntax, std::move(message));
   Token t = make(Tok::Error, begin);
   return t;
 }
@@ -109,7 +109,7 @@ void Lexer::skip_space_and_comments() {
       auto close = text_.find("*/", pos_ + 2);
       if (close == std::string_view::npos) {
         pos_ = static_cast<std::uint32_t>(text_.size());
-        diag_.error({file_, begin, begin + 2}, "syntax", "unterminated comment");
+        diag_.error({file_, begin, begin + 2}, ErrorKind::Syntax, "unterminated comment");
         return;
       }
       pos_ = static_cast<std::uint32_t>(close + 2);
@@ -166,7 +166,7 @@ Token Lexer::next() {
       return make(Tok::AndAnd, begin);
     }
     ++pos_;
-    diag_.error({file_, begin, pos_}, "syntax", "'&' is not an operator here; did you mean '&&'?")
+    diag_.error({file_, begin, pos_}, ErrorKind::Syntax, "'&' is not an operator here; did you mean '&&'?")
         .fix({file_, begin, pos_}, "&&");
     return make(Tok::Error, begin);
   case '|': return two('|', Tok::OrOr, Tok::Pipe);
@@ -261,7 +261,7 @@ Token Lexer::string(std::uint32_t begin) {
     default: {
       // Keep scanning to the closing quote so one bad escape is one error.
       std::uint32_t at = pos_ - 2;
-      diag_.error({file_, at, pos_}, "syntax", fmt::format("unknown escape sequence '\\{}'", e == '\0' ? ' ' : e));
+      diag_.error({file_, at, pos_}, ErrorKind::Syntax, fmt::format("unknown escape sequence '\\{}'", e == '\0' ? ' ' : e));
     }
     }
   }
@@ -274,7 +274,7 @@ Token Lexer::verbatim(std::uint32_t begin) {
   auto close = text_.find("%}", pos_ + 2);
   if (close == std::string_view::npos) {
     pos_ = static_cast<std::uint32_t>(text_.size());
-    diag_.error({file_, begin, begin + 2}, "syntax", "unterminated verbatim block: missing '%}'");
+    diag_.error({file_, begin, begin + 2}, ErrorKind::Syntax, "unterminated verbatim block: missing '%}'");
     return make(Tok::Error, begin);
   }
   Token t;

@@ -63,7 +63,7 @@ private:
   void follow(const std::string &from, const ast::Import &import) {
     // A NUL would cut the path short: the file opened would not be the one named.
     if (import.path.find('\0') != std::string::npos) {
-      diag_.error(import.range, "import", "an import path cannot contain a NUL character");
+      diag_.error(import.range, ErrorKind::Import, "an import path cannot contain a NUL character");
       return;
     }
     std::vector<std::string> tried;
@@ -95,13 +95,13 @@ private:
         }
       }
       if (stack_.size() >= kMaxImportDepth) {
-        diag_.error(import.range, "import", fmt::format("imports nested more than {} deep", kMaxImportDepth));
+        diag_.error(import.range, ErrorKind::Import, fmt::format("imports nested more than {} deep", kMaxImportDepth));
         return;
       }
       load(path, std::move(*text));
       return;
     }
-    auto &d = diag_.error(import.range, "import", fmt::format("cannot find imported file '{}'", import.path));
+    auto &d = diag_.error(import.range, ErrorKind::Import, fmt::format("cannot find imported file '{}'", import.path));
     for (const auto &t : tried) d.note(fmt::format("looked for '{}'", t));
     suggest_file(d, import, candidates);
   }
@@ -130,7 +130,7 @@ private:
   }
 
   void report_cycle(const ast::Import &import, const std::string &target) {
-    auto &d = diag_.error(import.range, "import-cycle", fmt::format("import cycle: '{}' imports itself", target));
+    auto &d = diag_.error(import.range, ErrorKind::ImportCycle, fmt::format("import cycle: '{}' imports itself", target));
     bool in_cycle = false;
     for (std::size_t i = 0; i < stack_.size(); ++i) {
       if (stack_[i] == target) in_cycle = true;

@@ -74,7 +74,7 @@ private:
     // Right after a lexical error the parser's complaint is only its echo: stay quiet.
     if (!tok_.follows_error) {
       std::string found = at(Tok::End) ? "end of file" : fmt::format("'{}'", tok_.text);
-      diag_.error(tok_.range, "syntax", fmt::format("{}, found {}", what, found));
+      diag_.error(tok_.range, ErrorKind::Syntax, fmt::format("{}, found {}", what, found));
     }
     throw SyntaxError{};
   }
@@ -84,7 +84,7 @@ private:
                               const std::string &fix_text = {}) {
     if (!tok_.follows_error) {
       std::string found = at(Tok::End) ? "end of file" : fmt::format("'{}'", tok_.text);
-      auto &d = diag_.error(tok_.range, "syntax", fmt::format("{}, found {}", what, found));
+      auto &d = diag_.error(tok_.range, ErrorKind::Syntax, fmt::format("{}, found {}", what, found));
       if (!fix_text.empty()) d.fix(fix_range, fix_text);
       d.note(hint);
     }
@@ -121,7 +121,7 @@ private:
       if (at(Tok::End)) {
         // Only the innermost unclosed brace: the outer ones are the same mistake.
         if (!eof_reported_)
-          diag_.error(tok_.range, "syntax", "expected '}' at end of input").note(open.range, "to match this '{'");
+          diag_.error(tok_.range, ErrorKind::Syntax, "expected '}' at end of input").note(open.range, "to match this '{'");
         eof_reported_ = true;
         throw SyntaxError{};
       }
@@ -195,7 +195,7 @@ private:
     Parser &p;
     explicit DepthGuard(Parser &parser) : p(parser) {
       if (++p.depth_ > kMaxNesting) {
-        p.diag_.error(p.tok_.range, "nesting", fmt::format("expression nested too deeply (more than {} levels)", kMaxNesting));
+        p.diag_.error(p.tok_.range, ErrorKind::Nesting, fmt::format("expression nested too deeply (more than {} levels)", kMaxNesting));
         --p.depth_;
         throw SyntaxError{};
       }
@@ -207,7 +207,7 @@ private:
   /// left spine as deep as it is long, and every later walk of the tree recurses along it.
   int grow(int height, SourceRange at) {
     if (height + 1 > kMaxNesting) {
-      diag_.error(at, "nesting", fmt::format("expression nested too deeply (more than {} levels; each operator of a "
+      diag_.error(at, ErrorKind::Nesting, fmt::format("expression nested too deeply (more than {} levels; each operator of a "
                                              "chain counts as one)", kMaxNesting));
       throw SyntaxError{};
     }
@@ -260,7 +260,7 @@ void Parser::top_level(File &file) {
     return;
   }
   case Tok::KwVar:
-    diag_.error(tok_.range, "syntax", "'var' declares chart state and belongs inside an sfc or fsm");
+    diag_.error(tok_.range, ErrorKind::Syntax, "'var' declares chart state and belongs inside an sfc or fsm");
     throw SyntaxError{};
   default:
     fail("expected a declaration (import, interface, sfc, fsm, toolbox, plan, const or test)");
@@ -433,7 +433,7 @@ void Parser::place_body(Place &p) {
       bool entry = kw.kind == Tok::KwEntry;
       std::optional<Block> &slot = entry ? p.entry : p.exit;
       if (slot) {
-        diag_.error(kw.range, "duplicate", fmt::format("second '{}' block in '{}'", kw.text, p.name.text))
+        diag_.error(kw.range, ErrorKind::DuplicateBlock, fmt::format("second '{}' block in '{}'", kw.text, p.name.text))
             .note(entry ? p.entry_range : p.exit_range, "the first one is here");
         return;
       }
@@ -881,7 +881,7 @@ ExprPtr Parser::primary() {
   case Tok::Ident: {
     Name n = name();
     if (at(Tok::Dot)) {
-      diag_.error(path(std::move(n))->range, "syntax",
+      diag_.error(path(std::move(n))->range, ErrorKind::Syntax,
                   "a path to a sub-chart's place is only read through 'active(...)'");
       throw SyntaxError{};
     }

@@ -1,54 +1,19 @@
 #include "c_context.h"
 
+#include "naming/naming.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cctype>
-#include <set>
 
 namespace gfec::c_backend {
 
 namespace {
 
-/// Words a field or local of the engine cannot be called: C's keywords, the macros of the
-/// headers the engine includes, and C++'s keywords (the header is read by C++ code too).
-bool is_reserved(const std::string &word) {
-  static const std::set<std::string> words = {
-      // C99 and C11
-      "auto", "break", "case", "char", "const", "continue", "default", "do", "double", "else", "enum",
-      "extern", "float", "for", "goto", "if", "inline", "int", "long", "register", "restrict", "return",
-      "short", "signed", "sizeof", "static", "struct", "switch", "typedef", "union", "unsigned", "void",
-      "volatile", "while", "_Bool", "_Complex", "_Imaginary", "_Alignas", "_Alignof", "_Atomic",
-      "_Generic", "_Noreturn", "_Static_assert", "_Thread_local",
-      // <stdbool.h>, <assert.h>, <limits.h>, <string.h> as the engine uses them
-      "bool", "true", "false", "assert", "uint32_t", "UINT32_MAX", "memcpy", "NULL",
-      "uint8_t", "uint16_t", "UINT8_MAX", "UINT16_MAX", "int8_t", "int16_t",
-      // C++
-      "alignas", "alignof", "and", "and_eq", "asm", "bitand", "bitor", "catch", "char16_t", "char32_t",
-      "char8_t", "class", "compl", "concept", "consteval", "constexpr", "constinit", "const_cast",
-      "co_await", "co_return", "co_yield", "decltype", "delete", "dynamic_cast", "explicit", "export",
-      "friend", "mutable", "namespace", "new", "noexcept", "not", "not_eq", "nullptr", "operator", "or",
-      "or_eq", "private", "protected", "public", "reinterpret_cast", "requires", "static_assert",
-      "static_cast", "template", "this", "thread_local", "throw", "try", "typeid", "typename", "using",
-      "virtual", "wchar_t", "xor", "xor_eq"};
-  return words.count(word) > 0;
-}
-
-/// Hands out names that are unique within one C name space, deterministically: a name that is
-/// taken (or reserved) gets a trailing `_` until it is free.
-class NameSpace {
-public:
-  void claim(const std::string &name) { taken_.insert(name); }
-  bool free(const std::string &name) const { return !taken_.count(name) && !is_reserved(name); }
-  std::string take(std::string name) {
-    while (taken_.count(name) || is_reserved(name)) name += '_';
-    taken_.insert(name);
-    return name;
-  }
-
-private:
-  std::set<std::string> taken_;
-};
+/// Names unique within one C name space (the file's, a struct's, a function's), from the naming
+/// policy (compiler/naming/): reserved words of C and C++ and the C headers' names never handed out.
+using naming::NameSpace;
 
 std::string guard_of(const std::string &header_base) {
   std::string g;
@@ -129,9 +94,10 @@ void name_fields(Context &c) {
   for (const auto &p : c.chart.places) c.sub_field.push_back(p.runs >= 0 ? fields.take(p.name) : "");
 }
 
-void name_locals(Context &c) {
-  NameSpace locals;
-  for (const auto &f : c.model.functions) locals.claim(f.name);
+void name_locals(Context &c, const NameSpace &globals) {
+  // Inside the file's names: a local never hides an interface function, an enum constant or a
+  // helper of the engine that the function's code refers to.
+  NameSpace locals(&globals);
   locals.claim(c.type);
   c.self = locals.take("m");
   c.add = locals.take("add");
@@ -143,27 +109,9 @@ void name_locals(Context &c) {
       {"add_n", &c.add_n}, {"lost", &c.lost}, {"lost_n", &c.lost_n}, {"gained", &c.gained}, {"gained_n", &c.gained_n},
       {"w", &c.word},      {"bits", &c.bits}, {"i", &c.i},           {"t", &c.t}};
   for (auto [name, field] : scalable) *field = locals.take(name);
-  // The temporaries: a prefix no name the engine's code sees continues with digits only.
-  std::vector<const std::string *> seen = {&c.type,       &c.self,        &c.add,          &c.before,
-                                           &c.from,       &c.index,       &c.hooks_macro,  &c.checks_macro,
-                                           &c.activated_fn, &c.enabled_fn, &c.place_count, &c.transition_count,
-                                           &c.lowest_fn,  &c.next_fn,     &c.insert_fn,    &c.erase_fn,
-                                           &c.sort_fn,    &c.watched_fn,  &c.active_levels, &c.candidate_levels,
-                                           &c.set_agent_fn, &c.report_fn, &c.team_size,     &c.team_fn};
-  for (const auto &f : c.model.functions) seen.push_back(&f.name);
-  for (const auto &n : c.place_const) seen.push_back(&n);
-  for (const auto &n : c.transition_const) seen.push_back(&n);
-  for (auto [name, field] : scalable) seen.push_back(field);
-  auto numbered = [](const std::string &name, const std::string &prefix) {
-    return name.size() > prefix.size() && name.compare(0, prefix.size(), prefix) == 0 &&
-           name.find_first_not_of("0123456789", prefix.size()) == std::string::npos;
-  };
-  c.temp_prefix = "gfec_t";
-  for (bool clash = true; clash;) {
-    clash = false;
-    for (const std::string *name : seen) clash = clash || numbered(*name, c.temp_prefix);
-    if (clash) c.temp_prefix += '_';
-  }
+  // The temporaries (gfec_t1, gfec_t2, ...): a prefix that no name the engine's code sees
+  // continues with digits only, reserved in the same name space as the locals.
+  c.temp_prefix = locals.reserve_numbered_prefix("gfec_t");
 }
 
 bool reads_input_activity(const Context &c, const model::Expr &e);
@@ -264,7 +212,7 @@ void build(Context &c, NameSpace &globals, const Context *root) {
   c.fsm = c.chart.kind == model::Chart::Kind::Fsm;
   name_globals(c, globals, root ? root : &c);
   name_fields(c);
-  name_locals(c);
+  name_locals(c, globals);
   collect_facts(c);
   for (int p = 0; p < static_cast<int>(c.chart.places.size()); ++p)
     c.sub.push_back(c.place(p).runs >= 0 ? make_instance(c, p, globals, root ? root : &c) : nullptr);

@@ -35,24 +35,6 @@ std::string afp_type(model::Type type) {
   return "afp::Type::Int";
 }
 
-bool is_reserved(const std::string &word) {
-  static const std::set<std::string> words = {
-      // C++20's keywords and alternative tokens (a name good for C++17 should stay good later)
-      "alignas", "alignof", "and", "and_eq", "asm", "auto", "bitand", "bitor", "bool", "break", "case",
-      "catch", "char", "char8_t", "char16_t", "char32_t", "class", "compl", "concept", "const", "consteval",
-      "constexpr", "constinit", "const_cast", "continue", "co_await", "co_return", "co_yield", "decltype",
-      "default", "delete", "do", "double", "dynamic_cast", "else", "enum", "explicit", "export", "extern",
-      "false", "float", "for", "friend", "goto", "if", "inline", "int", "long", "mutable", "namespace", "new",
-      "noexcept", "not", "not_eq", "nullptr", "operator", "or", "or_eq", "private", "protected", "public",
-      "register", "reinterpret_cast", "requires", "return", "short", "signed", "sizeof", "static",
-      "static_assert", "static_cast", "struct", "switch", "template", "this", "thread_local", "throw", "true",
-      "try", "typedef", "typeid", "typename", "union", "unsigned", "using", "virtual", "void", "volatile",
-      "wchar_t", "while", "xor", "xor_eq",
-      // macros of the standard library that the runtime's headers pull in
-      "NULL", "EOF", "errno", "assert", "stdin", "stdout", "stderr", "offsetof", "EDOM", "ERANGE", "EILSEQ"};
-  return words.count(word) > 0;
-}
-
 std::string identifier(const std::string &name) {
   std::string id = name;
   while (is_reserved(id)) id += '_';
@@ -79,12 +61,6 @@ std::string chrono_period(double ms) {
   if (whole(ms)) return fmt::format("std::chrono::milliseconds({})", std::llround(ms));
   if (whole(ms * 1000)) return fmt::format("std::chrono::microseconds({})", std::llround(ms * 1000));
   return fmt::format("std::chrono::nanoseconds({})", std::llround(ms * 1e6));
-}
-
-std::string NameSpace::take(std::string name) {
-  while (taken_.count(name) || is_reserved(name)) name += '_';
-  taken_.insert(name);
-  return name;
 }
 
 MemberNames member_names(const model::Template &t) {

@@ -3,6 +3,7 @@
 // The wiring and the skeleton both use these, so that what one refers to the other declares.
 #pragma once
 
+#include "naming/naming.h"
 #include "code_writer.h"
 #include "model.h"
 
@@ -18,8 +19,9 @@ const char *cpp_type(model::Type type);
 /// `afp::Type::Float`: the runtime's name of a type.
 std::string afp_type(model::Type type);
 
-/// A C++ keyword, or a macro of the standard headers that generated code may see (NULL, EOF).
-bool is_reserved(const std::string &word);
+/// A word generated C++ cannot use as a name (compiler/naming/: C and C++ keywords, the names of
+/// the standard headers the runtime and the engines include).
+inline bool is_reserved(const std::string &word) { return naming::is_reserved(word); }
 
 /// A chart name as a C++ identifier: reserved words take a trailing `_` (`delete` -> `delete_`).
 /// Template classes, their states and events, and toolbox environments are all spelled so.
@@ -43,17 +45,8 @@ std::string toolbox_header(const model::Toolbox &box);
 /// nanosecond.
 std::string chrono_period(double ms);
 
-/// Hands out identifiers unique within one C++ scope, deterministically: a name that is taken
-/// or reserved gets a trailing `_` until it is free.
-class NameSpace {
-public:
-  void claim(const std::string &name) { taken_.insert(name); }
-  bool taken(const std::string &name) const { return taken_.count(name) > 0; }
-  std::string take(std::string name);
-
-private:
-  std::set<std::string> taken_;
-};
+/// Identifiers unique within one C++ scope: the naming policy's name space.
+using naming::NameSpace;
 
 /// The names inside a template's class in the skeleton: constructor parameters and the members
 /// that keep them. Usually `ee`/`ee_` and `distance`/`distance_`; a parameter called like

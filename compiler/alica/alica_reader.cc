@@ -137,7 +137,7 @@ private:
     if (!doc->root) return;
     const JsonValue &root = *doc->root;
     if (!root.is_object() || (!root.find("states") && !root.find("entryPoints"))) {
-      auto &d = diag_.error(range(*doc, root), "alica-format",
+      auto &d = diag_.error(range(*doc, root), ErrorKind::AlicaFormat,
                             fmt::format("'{}' is not an ALICA plan: a plan is a JSON object with \"entryPoints\" and "
                                         "\"states\"", doc->path));
       if (const char *kind = file_kind(doc->path))
@@ -177,7 +177,7 @@ private:
     const std::string &t = sources_.file(doc->file).text();
     std::size_t first = t.find_first_not_of(" \t\r\n\xef\xbb\xbf");
     if (first != std::string::npos && t[first] == '<') {
-      diag_.error({doc->file, static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(first + 1)}, "alica-format",
+      diag_.error({doc->file, static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(first + 1)}, ErrorKind::AlicaFormat,
                   "this is an XML file of ALICA's older Eclipse designer; gfec reads the JSON files of the "
                   "current designer")
           .note("open the plans in the current ALICA plan designer and save them again to convert them");
@@ -186,7 +186,7 @@ private:
       doc->root = parse_json(t, error);
       if (!doc->root)
         diag_.error({doc->file, error.offset, std::min<std::uint32_t>(error.offset + 1, static_cast<std::uint32_t>(t.size()))},
-                    "json", "malformed JSON: " + error.message);
+                    ErrorKind::Json, "malformed JSON: " + error.message);
       else index_ids(*doc->root, doc->by_id);
     }
     Doc *raw = doc.get();
@@ -310,7 +310,7 @@ private:
       }
       return doc;
     }
-    auto &d = diag_.error(at, "alica-reference", fmt::format("cannot find '{}', referenced here", file));
+    auto &d = diag_.error(at, ErrorKind::AlicaReference, fmt::format("cannot find '{}', referenced here", file));
     suggest_file(d, file, tried);
     // The folders that exist (hold files), not every folder of every layout gfec knows.
     for (const auto &t : tried)
@@ -360,14 +360,14 @@ private:
   Target resolve(const std::string &text, Doc &from, const SourceRange &at) {
     auto ref = split_ref(text);
     if (!ref) {
-      diag_.error(at, "alica-reference", fmt::format("'{}' is no reference: ALICA writes them as \"File.ext#id\"", text));
+      diag_.error(at, ErrorKind::AlicaReference, fmt::format("'{}' is no reference: ALICA writes them as \"File.ext#id\"", text));
       return {};
     }
     Doc *doc = ref->file.empty() ? &from : find_doc(ref->file, from, at, ref->id);
     if (!doc || !doc->root) return {};
     auto it = doc->by_id.find(ref->id);
     if (it == doc->by_id.end()) {
-      auto &d = diag_.error(at, "alica-reference", fmt::format("'{}' has no element with id {}", doc->path, ref->id));
+      auto &d = diag_.error(at, ErrorKind::AlicaReference, fmt::format("'{}' has no element with id {}", doc->path, ref->id));
       // A mistyped id: the element whose id is closest (a digit or two off); else, for a file
       // that holds one element (a behaviour, a plan), that element.
       const JsonValue *best = nullptr;
@@ -496,7 +496,7 @@ private:
         ignored(*t.doc, *v, fmt::format("the {} of plan type '{}' (id {}) are ignored: gfec sub-charts share no "
                                         "variables", key, label, id));
     if (activated.empty()) {
-      diag_.error(at, "alica-reference", fmt::format("plan type '{}' (id {}) has no activated plan to run", label, id))
+      diag_.error(at, ErrorKind::AlicaReference, fmt::format("plan type '{}' (id {}) has no activated plan to run", label, id))
           .note(range(*t.doc, *t.object), "the plan type is here");
       return "";
     }
@@ -567,15 +567,15 @@ private:
     for (std::size_t i = 0; i < states.size(); ++i) {
       auto id = id_of(states[i]->find("id"));
       if (!id) {
-        diag_.error(range(doc, *states[i]), "alica-format", fmt::format("a state of {} has no id", what));
+        diag_.error(range(doc, *states[i]), ErrorKind::AlicaFormat, fmt::format("a state of {} has no id", what));
         continue;
       }
       if (!state_index.emplace(*id, i).second)
-        diag_.error(range(doc, *states[i]), "alica-format", fmt::format("second state with id {} in {}", *id, what))
+        diag_.error(range(doc, *states[i]), ErrorKind::AlicaFormat, fmt::format("second state with id {} in {}", *id, what))
             .note(range(doc, *states[state_index[*id]]), "the first one is here");
     }
     if (entries.empty()) {
-      diag_.error(range(doc, plan), "alica-format",
+      diag_.error(range(doc, plan), ErrorKind::AlicaFormat,
                   fmt::format("{} has no entry point: gfec needs one to know where its machine starts", what));
       return;
     }
@@ -616,13 +616,13 @@ private:
       m.chart.name = {chart_name, m.chart.range};
       auto start = state_of(ep.find("state"));
       if (!start) {
-        diag_.error(range(doc, ep), "alica-reference",
+        diag_.error(range(doc, ep), ErrorKind::AlicaReference,
                     fmt::format("entry point '{}' (id {}) starts in state {}, which {} does not have", label, ep_id,
                                 id_of(ep.find("state")).value_or("(none)"), what));
         continue;
       }
       if (owner[*start] >= 0) {
-        diag_.error(range(doc, ep), "alica-format",
+        diag_.error(range(doc, ep), ErrorKind::AlicaFormat,
                     fmt::format("entry point '{}' (id {}) starts in state '{}', which entry point '{}' already "
                                 "reaches: gfec gives each entry point a machine of its own states",
                                 label, ep_id, label_of(*states[*start]),
@@ -751,7 +751,7 @@ private:
     if (type == "SuccessState" || (type == "TerminalState" && success && success->boolean)) p.terminal = ast::StateKind::Success;
     else if (type == "FailureState" || type == "TerminalState") p.terminal = ast::StateKind::Failure;
     else if (!type.empty() && type != "State")
-      diag_.error(range(doc, *state.find("type")), "alica-format",
+      diag_.error(range(doc, *state.find("type")), ErrorKind::AlicaFormat,
                   fmt::format("unknown state type '{}' of {}: ALICA writes \"State\" or \"TerminalState\"", type, what));
 
     for (const char *key : {"variableBindings", "parametrisations"})
@@ -762,7 +762,7 @@ private:
     for (const auto &[text, at] : references(doc, state, what)) {
       auto ref = split_ref(text);
       if (!ref) {
-        diag_.error(at, "alica-reference",
+        diag_.error(at, ErrorKind::AlicaReference,
                     fmt::format("{} holds '{}', which is no reference: ALICA writes them as \"File.ext#id\"", what, text));
         continue;
       }
@@ -774,7 +774,7 @@ private:
         continue;
       }
       if (ext != ".beh" && ext != ".pml" && ext != ".pty") {
-        diag_.error(at, "alica-reference",
+        diag_.error(at, ErrorKind::AlicaReference,
                     fmt::format("{} holds '{}': gfec knows behaviours (.beh), plans (.pml) and plan types (.pty)", what,
                                 text));
         continue;
@@ -863,14 +863,14 @@ private:
     auto from = state_of(t.find("inState")), to = state_of(t.find("outState"));
     for (auto [end, key] : {std::pair{from, "inState"}, std::pair{to, "outState"}})
       if (!end) {
-        diag_.error(range(doc, t), "alica-reference",
+        diag_.error(range(doc, t), ErrorKind::AlicaReference,
                     fmt::format("{} names {} {}, which the plan has no state for", what, key,
                                 id_of(t.find(key)).value_or("(none)")));
       }
     if (!from || !to) return;
     Machine &m = machines[owner[*from]];
     if (owner[*from] != owner[*to]) {
-      diag_.error(range(doc, t), "alica-format",
+      diag_.error(range(doc, t), ErrorKind::AlicaFormat,
                   fmt::format("{} leads from entry point machine '{}' to machine '{}': gfec machines do not share "
                               "states", what, m.chart.name.text, machines[owner[*to]].chart.name.text));
       return;

@@ -1,5 +1,5 @@
 // The static analyses (docs/verification.md): what a chart or plan can do whatever its
-// conditions say. Each finding is a named warning (checks.h); `gfec --analyze` prints them all
+// conditions say. Each finding is a named warning (compiler/diagnostic_kinds.def); `gfec --analyze` prints them all
 // with a summary per chart and plan.
 //
 //   sfc   unsafe and unbounded places, deadlocks, places and transitions no reachable state

@@ -44,10 +44,11 @@ std::string make_unreadable(const std::string &path) {
   return {};
 }
 
-std::string dependency_rule(const std::vector<std::string> &targets, const std::vector<std::string> &deps,
+std::string dependency_rule(const std::vector<DependencyTarget> &targets, const std::vector<std::string> &deps,
                             bool phony) {
   std::string out;
-  for (std::size_t i = 0; i < targets.size(); ++i) out += (i ? " " : "") + make_escape(targets[i]);
+  for (std::size_t i = 0; i < targets.size(); ++i)
+    out += (i ? " " : "") + (targets[i].quoted ? make_escape(targets[i].name) : targets[i].name);
   out += ':';
   std::size_t column = out.size();
   for (const auto &d : deps) append_wrapped(out, column, make_escape(d));

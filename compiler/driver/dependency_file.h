@@ -1,4 +1,4 @@
-// Make dependency files, as gcc's -MD/-MF/-MP/-MT write them: the outputs depend on the chart
+// Make dependency files, as gcc's -MD/-MF/-MP/-MT/-MQ write them: the outputs depend on the chart
 // and on every file it imports, transitively, so make or ninja recompiles a chart when an
 // imported interface or toolbox changes.
 #pragma once
@@ -12,8 +12,9 @@ namespace gfec {
 
 /// The text of the dependency file: "targets: deps" (lines wrapped with " \" as gcc does),
 /// then with -MP an empty rule for every dependency but the first (the main file).
-/// `targets` are the -MT names, or else every output written; `deps` the main file first.
-std::string dependency_rule(const std::vector<std::string> &targets, const std::vector<std::string> &deps,
+/// `targets` are the -MT/-MQ names, or else every output written (quoted); `deps` the main file
+/// first, quoted for make.
+std::string dependency_rule(const std::vector<DependencyTarget> &targets, const std::vector<std::string> &deps,
                             bool phony);
 
 /// The dependency file's name: -MF, else the primary output with ".d" (gcc's default with -o).

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <ostream>
 #include <string_view>
@@ -23,9 +24,9 @@ public:
       : err_(err), style_(style), all_errors_(all_errors) {}
 
   void add(const std::string &, const Diagnostics &diag, const SourceManager &sources) override {
-    for (const auto &d : diag.all()) {
-      err_ << render_text(d, sources, style_);
-      if (d.severity == Severity::Error && d.check.rfind("-W", 0) == 0) werror_ = true;
+    for (const Diagnostic *d : in_source_order(diag)) {
+      err_ << render_text(*d, sources, style_);
+      if (d->severity == Severity::Error && d->from_warning()) werror_ = true;
     }
     if (diag.limit_reached()) err_ << limit_message(diag) << "\n";
   }
@@ -46,6 +47,16 @@ private:
 };
 
 } // namespace
+
+std::vector<const Diagnostic *> in_source_order(const Diagnostics &diag) {
+  std::vector<const Diagnostic *> out;
+  out.reserve(diag.all().size());
+  for (const Diagnostic &d : diag.all()) out.push_back(&d);
+  std::stable_sort(out.begin(), out.end(), [](const Diagnostic *a, const Diagnostic *b) {
+    return a->range.file != b->range.file ? a->range.file < b->range.file : a->range.begin < b->range.begin;
+  });
+  return out;
+}
 
 std::string limit_message(const Diagnostics &diag) {
   // gcc's wording; the limit is the count reached.

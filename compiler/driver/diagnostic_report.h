@@ -11,6 +11,7 @@
 #include <iosfwd>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace gfec {
 
@@ -27,6 +28,11 @@ public:
   /// write (sarif-file), which the driver reports as an I/O error.
   virtual std::string finish(int exit_code) = 0;
 };
+
+/// The diagnostics of one input in source order, as every format prints them: by file (in the
+/// order the files were loaded, the input first), then by position in the file; diagnostics at
+/// one position keep the order the stages found them in.
+std::vector<const Diagnostic *> in_source_order(const Diagnostics &diag);
 
 /// The report -fdiagnostics-format= asks for; the text one in the style the -fdiagnostics-*
 /// flags, the terminal and NO_COLOR ask for (text_style).

@@ -35,7 +35,7 @@ public:
   explicit JsonReport(std::ostream &err) : err_(err) {}
 
   void add(const std::string &, const Diagnostics &diag, const SourceManager &sources) override {
-    for (const auto &d : diag.all()) all_.push_back(diagnostic_to_json(d, sources));
+    for (const Diagnostic *d : in_source_order(diag)) all_.push_back(diagnostic_to_json(*d, sources));
     if (diag.limit_reached())
       tool_message("note", "", limit_message(diag));
   }
@@ -80,8 +80,8 @@ Json diagnostic_to_json(const Diagnostic &d, const SourceManager &sources) {
             {"locations", Json::array({location(sources, d.range)})},
             {"escape-source", false}};
   // gcc: "-Wname" for a warning, "-Werror=name" for one -Werror made an error.
-  if (d.check.rfind("-W", 0) == 0) j["option"] = check_label(d);
-  j["check"] = d.check;
+  if (d.from_warning()) j["option"] = check_label(d);
+  j["check"] = d.check();
   if (!d.fixits.empty()) {
     // gcc's fix-its: "start" at the first byte replaced, "next" just past the last one.
     Json fixits = Json::array();

@@ -45,34 +45,36 @@ Json artifact_location(const std::string &path) {
   return {{"uri", uri_encode(path)}, {"uriBaseId", kRoot}};
 }
 
-SarifLog::SarifLog() {
-  // Every warning is a rule even when it did not fire, so a dashboard can list and explain them.
-  for (int i = 0; i < static_cast<int>(Warning::Count_); ++i) {
-    const WarningInfo &w = warning_table()[i];
-    std::string id = fmt::format("-W{}", w.name);
-    rule_ids_[id] = static_cast<int>(rules_.size());
-    rules_.push_back({{"id", id},
-                      {"name", w.name},
-                      {"shortDescription", {{"text", w.summary}}},
-                      {"fullDescription",
-                       {{"text", fmt::format("Warning: {}. {} by default; -W{} turns it on, -Wno-{} off.", w.summary,
-                                             w.on_by_default ? "On" : "Off", w.name, w.name)}}},
-                      {"defaultConfiguration", {{"enabled", w.on_by_default}, {"level", "warning"}}}});
-  }
+namespace {
+
+/// A row of the table as a SARIF reportingDescriptor.
+Json rule(const DiagnosticKind &k) {
+  std::string full = k.warning ? fmt::format("Warning: {}. {} by default; -W{} turns it on, -Wno-{} off.", k.summary,
+                                             k.on_by_default ? "On" : "Off", k.name, k.name)
+                               : fmt::format("Error: {}.", k.summary);
+  return {{"id", k.check()},
+          {"name", k.name},
+          {"shortDescription", {{"text", k.summary}}},
+          {"fullDescription", {{"text", std::move(full)}}},
+          {"help", {{"text", k.help}}},
+          {"defaultConfiguration", {{"enabled", k.on_by_default}, {"level", k.warning ? "warning" : "error"}}}};
 }
 
-int SarifLog::rule_index(const std::string &check, Severity severity) {
-  std::string id = check.empty() ? "error" : check;
-  auto found = rule_ids_.find(id);
-  if (found != rule_ids_.end()) return found->second;
-  // Error checks have no table: they become rules as they occur.
-  int index = static_cast<int>(rules_.size());
-  rule_ids_[id] = index;
-  rules_.push_back({{"id", id},
-                    {"name", id},
-                    {"shortDescription", {{"text", fmt::format("gfec reports this {} as [{}]", level(severity), id)}}},
-                    {"defaultConfiguration", {{"level", level(severity)}}}});
-  return index;
+} // namespace
+
+SarifLog::SarifLog() {
+  // Every kind is a rule even when it did not fire, so a dashboard can list and explain them;
+  // rule i is row i of the table.
+  for (std::size_t i = 0; i < diagnostic_kind_count(); ++i) rules_.push_back(rule(diagnostic_kinds()[i]));
+}
+
+int SarifLog::rule_index(const Diagnostic &d) {
+  if (d.kind) return static_cast<int>(d.kind - diagnostic_kinds());
+  if (unnamed_rule_ < 0) {
+    unnamed_rule_ = static_cast<int>(rules_.size());
+    rules_.push_back({{"id", "gfec"}, {"shortDescription", {{"text", "a diagnostic of gfec"}}}});
+  }
+  return unnamed_rule_;
 }
 
 int SarifLog::artifact_index(const std::string &path) {
@@ -118,8 +120,9 @@ void SarifLog::add(const Diagnostics &diag, const SourceManager &sources) {
     int index = artifact_index(sources.file(id).path());
     if (id == 0) analysis_targets_[static_cast<std::size_t>(index)] = true;
   }
-  for (const Diagnostic &d : diag.all()) {
-    int rule = rule_index(d.check, d.severity);
+  for (const Diagnostic *in_order : in_source_order(diag)) {
+    const Diagnostic &d = *in_order;
+    int rule = rule_index(d);
     Json related = Json::array();
     for (const auto &n : d.notes) {
       related.push_back({{"id", related.size()},

@@ -1,6 +1,6 @@
 // SARIF 2.1.0 diagnostics (-fdiagnostics-format=sarif-stderr|sarif-file), the format GitHub
-// code scanning and other CI dashboards read. One log has one run of gfec; every check name is
-// a rule (the warnings of checks.h, and each error check that occurs), every diagnostic a
+// code scanning and other CI dashboards read. One log has one run of gfec; every row of the
+// table of diagnostic kinds (compiler/diagnostic_kinds.def) is a rule, every diagnostic a
 // result with its rule, level, message and region; notes become related locations.
 #pragma once
 
@@ -24,14 +24,14 @@ public:
   nlohmann::ordered_json to_json(int exit_code, const std::string &cwd) const;
 
 private:
-  int rule_index(const std::string &check, Severity severity);
+  int rule_index(const Diagnostic &d);
   int artifact_index(const std::string &path);
   nlohmann::ordered_json physical_location(const SourceManager &sources, const SourceRange &range);
   /// SARIF "fixes": the diagnostic's fix-its as replacements of regions.
   nlohmann::ordered_json fixes(const SourceManager &sources, const Diagnostic &d);
 
   nlohmann::ordered_json rules_ = nlohmann::ordered_json::array();
-  std::map<std::string, int> rule_ids_;
+  int unnamed_rule_ = -1;  ///< the rule of a diagnostic without a kind (made by hand), once needed
   std::vector<std::string> artifacts_;
   std::vector<bool> analysis_targets_;  ///< per artifact: an input gfec was asked to check
   std::map<std::string, int> artifact_ids_;

@@ -62,10 +62,12 @@ std::string printable(const std::string &path) {
 /// Returns why it cannot be written (a name make cannot read), or "".
 std::string add_dependency_file(const Options &o, const LoadResult &loaded, const std::vector<std::string> &outputs,
                                 safe_output::Transaction &t) {
-  std::vector<std::string> targets = o.deps.targets;
-  if (targets.empty()) targets = outputs;
+  std::vector<DependencyTarget> targets = o.deps.targets;
+  if (targets.empty())
+    for (const auto &f : outputs) targets.push_back({f, true});
   std::string name = dependency_file_name(o.deps, outputs.front());
-  std::vector<std::string> names = targets;
+  std::vector<std::string> names;
+  for (const auto &target : targets) names.push_back(target.name);
   names.insert(names.end(), loaded.paths.begin(), loaded.paths.end());
   for (const auto &path : names) {
     std::string why = make_unreadable(path);
@@ -105,7 +107,7 @@ int compile(const Options &o, DiagnosticReport &report, std::ostream &out) {
   const pipeline::Target &target = c.target;
   if (!target.chosen() && target.in_input) {
     Diagnostics located(o.warnings, o.error_limit);
-    located.error({c.model.main_file, 0, 0}, "nothing-to-compile", target.error);
+    located.error({c.model.main_file, 0, 0}, ErrorKind::NothingToCompile, target.error);
     report.add(input, located, c.sources);
     return kExitInputError;
   }

@@ -1,6 +1,7 @@
 #include "options.h"
 
 #include "backend_registry.h"
+#include "validate/suggest.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -9,28 +10,47 @@ namespace gfec {
 
 namespace {
 
-/// Applies one -W value ("error", "all", "no-conflict", "conflict"); false if unknown.
-bool apply_warning_flag(const std::string &flag, WarningOptions &w) {
+/// Why `name` is no warning gfec has: an error (errors cannot be turned off), a near miss, or
+/// simply unknown. The names come from the table of kinds (compiler/diagnostic_kinds.def).
+std::string unknown_warning(const std::string &flag, const std::string &name) {
+  if (const DiagnosticKind *k = find_kind(name); k && !k->warning)
+    return fmt::format("'-W{}': '{}' is an error, not a warning; errors cannot be turned off or made warnings", flag,
+                       name);
+  std::string best;
+  std::size_t best_distance = name.size() / 3 + 1;
+  for (std::size_t i = 0; i < static_cast<std::size_t>(Warning::Count_); ++i) {
+    std::string_view candidate = kind_info(static_cast<Warning>(i)).name;
+    std::size_t d = validation::edit_distance(name, candidate);
+    if (d < best_distance) best_distance = d, best = std::string(candidate);
+  }
+  std::string message = fmt::format("unknown warning option '-W{}'", flag);
+  if (!best.empty()) message += fmt::format("; did you mean '-W{}{}'?", flag.substr(0, flag.size() - name.size()), best);
+  return message + " ('gfec --help' lists the warnings)";
+}
+
+/// Applies one -W value ("error", "all", "no-conflict", "conflict"); returns why it cannot, or "".
+std::string apply_warning_flag(const std::string &flag, WarningOptions &w) {
   if (flag == "error") {
     w.as_errors = true;
-    return true;
+    return {};
   }
   if (flag == "no-error") {
     w.as_errors = false;
-    return true;
+    return {};
   }
   // gcc: -Werror=NAME turns NAME on and makes it an error; -Wno-error=NAME keeps it a warning.
   if (flag.rfind("error=", 0) == 0 || flag.rfind("no-error=", 0) == 0) {
     bool error = flag[0] == 'e';
-    auto found = find_warning(flag.substr(error ? 6 : 9));
-    if (!found) return false;
+    std::string name = flag.substr(error ? 6 : 9);
+    auto found = find_warning(name);
+    if (!found) return unknown_warning(flag, name);
     w.error_override[static_cast<int>(*found)] = error ? 1 : -1;
     if (error) w.set(*found, true);
-    return true;
+    return {};
   }
   if (flag == "all" || flag == "extra") {
     for (int i = 0; i < static_cast<int>(Warning::Count_); ++i) w.enabled[i] = true;
-    return true;
+    return {};
   }
   bool on = true;
   std::string name = flag;
@@ -39,9 +59,9 @@ bool apply_warning_flag(const std::string &flag, WarningOptions &w) {
     name = name.substr(3);
   }
   auto found = find_warning(name);
-  if (!found) return false;
+  if (!found) return unknown_warning(flag, name);
   w.set(*found, on);
-  return true;
+  return {};
 }
 
 /// Takes gcc's dependency flags out of argv and returns the rest for CLI11.
@@ -50,7 +70,7 @@ bool apply_warning_flag(const std::string &flag, WarningOptions &w) {
 /// ("--check"), but not gcc's multi-letter single-dash flags: it would read "-MD" as an option
 /// "-M" with the value "D". Makefiles and CMake pass them exactly as they pass them to gcc, so we
 /// accept gcc's spelling: -MD, -MMD (the same here: charts have no system files), -MP, and -MF /
-/// -MT with the value attached ("-MFdeps.d") or as the next argument. "--" ends the scan, as it
+/// -MT / -MQ with the value attached ("-MFdeps.d") or as the next argument. "--" ends the scan, as it
 /// ends CLI11's options.
 std::vector<const char *> take_dependency_flags(int argc, const char *const *argv, DependencyOptions &deps,
                                                 std::string &error) {
@@ -67,7 +87,7 @@ std::vector<const char *> take_dependency_flags(int argc, const char *const *arg
       deps.write = true;
     } else if (a == "-MP") {
       deps.phony = true;
-    } else if (a.rfind("-MF", 0) == 0 || a.rfind("-MT", 0) == 0) {
+    } else if (a.rfind("-MF", 0) == 0 || a.rfind("-MT", 0) == 0 || a.rfind("-MQ", 0) == 0) {
       std::string value = a.substr(3);
       if (value.empty()) {
         if (i + 1 >= argc) {
@@ -77,9 +97,9 @@ std::vector<const char *> take_dependency_flags(int argc, const char *const *arg
         value = argv[++i];
       }
       if (a[2] == 'F') deps.file = value;
-      else deps.targets.push_back(value);
+      else deps.targets.push_back({value, a[2] == 'Q'});
     } else {
-      error = fmt::format("unknown option '{}' (dependency files: -MD, -MF FILE, -MP, -MT TARGET)", a);
+      error = fmt::format("unknown option '{}' (dependency files: -MD, -MF FILE, -MP, -MT TARGET, -MQ TARGET)", a);
       return rest;
     }
   }
@@ -99,7 +119,7 @@ std::string warning_help() {
       "Warnings (-W<name> turns one on, -Wno-<name> off; -Wall all; -w none; -Werror makes them errors,\n"
       "-Werror=<name> one of them, -Wno-error=<name> keeps one a warning):\n";
   for (int i = 0; i < static_cast<int>(Warning::Count_); ++i) {
-    const WarningInfo &w = warning_table()[i];
+    const DiagnosticKind &w = kind_info(static_cast<Warning>(i));
     s += fmt::format("  -W{:<20} {}{}\n", w.name, w.summary, w.on_by_default ? " (on by default)" : "");
   }
   return s;
@@ -147,7 +167,8 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
                "gfec"};
   app.footer(backends_help() + "\n" + warning_help() +
              "\nDependency files, as gcc writes them: -MD writes OUTPUT.d (or -MF FILE) for make, naming\n"
-             "every file imported; -MP adds an empty rule per import; -MT TARGET names the target.\n"
+             "every file imported; -MP adds an empty rule per import; -MT TARGET names the target (-MQ TARGET\n"
+             "quoted for make).\n"
              "\nDiagnostics, as gcc 12 prints them: -fdiagnostics-color=auto|always|never (auto: colour on a\n"
              "terminal unless NO_COLOR is set; -fno-diagnostics-color = never), -fno-diagnostics-show-line-numbers,\n"
              "-fdiagnostics-parseable-fixits (fix-it:\"FILE\":{L:C-L:C}:\"TEXT\" lines for editors).\n"
@@ -224,7 +245,7 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
     return result;
   }
   for (const auto &w : warning_flags)
-    if (!apply_warning_flag(w, o.warnings)) return usage_error(fmt::format("unknown warning option '-W{}'", w));
+    if (std::string why = apply_warning_flag(w, o.warnings); !why.empty()) return usage_error(why);
   for (const auto &f : f_flags) {
     std::string why = apply_f_flag(f, o);
     if (!why.empty()) return usage_error(why);

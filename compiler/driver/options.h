@@ -12,12 +12,20 @@ enum class DiagnosticsFormat { Text, Json, SarifStderr, SarifFile };
 /// -fdiagnostics-color=: auto colours only a terminal, and not when NO_COLOR is set.
 enum class ColorMode { Auto, Always, Never };
 
-/// gcc's -MD, -MF, -MP, -MT: a make rule saying which files the outputs were made from.
+/// A target of the dependency rule, as gcc's -MT (written as given, so `$(OBJDIR)/x.o` stays a
+/// make variable) or -MQ (quoted for make: spaces escaped, `$` doubled).
+struct DependencyTarget {
+  std::string name;
+  bool quoted = true;
+  bool operator==(const DependencyTarget &o) const { return name == o.name && quoted == o.quoted; }
+};
+
+/// gcc's -MD, -MF, -MP, -MT, -MQ: a make rule saying which files the outputs were made from.
 struct DependencyOptions {
   bool write = false;                ///< -MD (or -MMD): write a dependency file beside the outputs
   std::string file;                  ///< -MF FILE; empty: the primary output with ".d"
   bool phony = false;                ///< -MP: an empty rule per import, so deleting one breaks no build
-  std::vector<std::string> targets;  ///< -MT TARGET...; empty: every file written
+  std::vector<DependencyTarget> targets;  ///< -MT/-MQ TARGET..., in order; empty: every file written (quoted)
 };
 
 struct Options {

@@ -118,7 +118,7 @@ public:
     if (!o_.reference_only) {
       EngineBuilds::Build b = builds_.get(m, test.chart, chart_file(file, test.chart));
       if (b.program.empty()) {
-        out.diag.error(test.range, "test-engine", fmt::format("cannot build the C engine for '{}'",
+        out.diag.error(test.range, ErrorKind::TestEngine, fmt::format("cannot build the C engine for '{}'",
                                                               m.charts[static_cast<std::size_t>(test.chart)].name))
             .note(b.error);
       } else {
@@ -141,7 +141,7 @@ private:
   void stopped(Outcome &out, const std::optional<scenario::Run> &run, const char *who) {
     if (!run || run->error.empty()) return;
     SourceRange at = run->error_located ? run->error_range : out.test->range;
-    out.diag.error(at, "test-run", fmt::format("{} stopped: {}", who, run->error))
+    out.diag.error(at, ErrorKind::TestRun, fmt::format("{} stopped: {}", who, run->error))
         .note(fmt::format("in test \"{}\"", out.test->name));
   }
 
@@ -155,7 +155,7 @@ private:
       SourceRange at = k == 0 ? out.test->range : tick_step(*out.test, k);
       std::string what = k == 0 ? "after _init" : fmt::format("at tick {}", k);
       bool call = diff.rfind("call ", 0) == 0;
-      out.diag.error(at, "test-disagreement",
+      out.diag.error(at, ErrorKind::TestDisagreement,
                      fmt::format("the reference interpreter and the C engine disagree {}: {}", what,
                                  call ? "first differing " + diff : diff))
           .note("a verbatim %{ %} block runs only in the C engine; otherwise this is a bug in gfec")
@@ -183,7 +183,7 @@ private:
       if (!failed(sides[0]) && !failed(sides[1])) continue;
       const Side &bad = failed(sides[0]) ? sides[0] : sides[1];
       const scenario::Run &bad_run = *runs[&bad == &sides[0] ? 0 : 1];
-      auto &d = out.diag.error(s.range, "expectation",
+      auto &d = out.diag.error(s.range, ErrorKind::Expectation,
                                fmt::format("expectation failed: {}", text_of(file.sources, s.expect.range)));
       if (!bad.verdict->error.empty()) d.note(fmt::format("it has no defined value: {}", bad.verdict->error));
       for (const scenario::Operand &op : bad.verdict->operands)

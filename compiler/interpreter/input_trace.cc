@@ -113,7 +113,7 @@ InputTrace::InputTrace(const model::Model &model, const SourceManager &sources, 
           long k = digits.empty() ? -1 : std::strtol(digits.c_str(), &end, 10);
           name = name.substr(0, at_sign);
           if (digits.empty() || errno || *end || k < 0 || k >= agents) {
-            diag.error(f.range, "trace",
+            diag.error(f.range, ErrorKind::Trace,
                        agents > 1 ? fmt::format("'{}' names no agent of this run (agents 0 to {})", f.text, agents - 1)
                                   : fmt::format("'{}' names an agent, but this run has only one", f.text));
             columns_.push_back(kBadColumn);
@@ -124,15 +124,15 @@ InputTrace::InputTrace(const model::Model &model, const SourceManager &sources, 
         }
         int fn = find_function(model, name);
         if (fn < 0) {
-          diag.error(f.range, "trace", fmt::format("no interface function '{}' for this column", name));
+          diag.error(f.range, ErrorKind::Trace, fmt::format("no interface function '{}' for this column", name));
           fn = kBadColumn;
         } else if (model.functions[static_cast<std::size_t>(fn)].result == model::Type::Void) {
-          diag.error(f.range, "trace", fmt::format("'{}' returns nothing, so it takes no input", name));
+          diag.error(f.range, ErrorKind::Trace, fmt::format("'{}' returns nothing, so it takes no input", name));
           fn = kBadColumn;
         } else {
           for (std::size_t c = 0; c < columns_.size(); ++c)
             if (columns_[c] == fn && column_agent_[c] == agent)
-              diag.error(f.range, "trace", fmt::format("a second column for '{}'", f.text));
+              diag.error(f.range, ErrorKind::Trace, fmt::format("a second column for '{}'", f.text));
         }
         columns_.push_back(fn);
         column_agent_.push_back(agent);
@@ -140,7 +140,7 @@ InputTrace::InputTrace(const model::Model &model, const SourceManager &sources, 
       continue;
     }
     if (fields.size() != columns_.size()) {
-      diag.error({file, offset, offset + static_cast<std::uint32_t>(line.size())}, "trace",
+      diag.error({file, offset, offset + static_cast<std::uint32_t>(line.size())}, ErrorKind::Trace,
                  fmt::format("{} values where the header names {} columns", fields.size(), columns_.size()));
       continue;
     }
@@ -154,7 +154,7 @@ InputTrace::InputTrace(const model::Model &model, const SourceManager &sources, 
       model::Type t = fn < 0 ? model::Type::Int : model.functions[static_cast<std::size_t>(fn)].result;
       std::optional<Value> v = parse_value(fields[c].text, t);
       if (!v) {
-        diag.error(fields[c].range, "trace",
+        diag.error(fields[c].range, ErrorKind::Trace,
                    fmt::format("'{}' is not a value of type '{}'{}", fields[c].text, model::type_name(t),
                                fn < 0 ? " (the tick column)"
                                       : fmt::format(" for '{}'", model.functions[static_cast<std::size_t>(fn)].name)));

@@ -17,7 +17,7 @@ RunResult run_chart(const model::Model &model, int chart, Environment &env, std:
   } catch (const RuntimeError &e) {
     std::string when = result.ticks < ticks ? fmt::format("during tick {}", result.ticks + 1) : "";
     if (result.log.events().empty()) when = "in init";
-    diag.error(e.range, "runtime", fmt::format("{} {}", e.what(), when));
+    diag.error(e.range, ErrorKind::Runtime, fmt::format("{} {}", e.what(), when));
   }
   return result;
 }
@@ -56,7 +56,7 @@ RunResult run_team(const model::Model &model, int chart, const std::vector<Envir
     result.completed = true;
   } catch (const RuntimeError &e) {
     std::string when = tick == 0 ? "in init" : fmt::format("during tick {} (agent {})", tick, agent);
-    diag.error(e.range, "runtime", fmt::format("{} {}", e.what(), when));
+    diag.error(e.range, ErrorKind::Runtime, fmt::format("{} {}", e.what(), when));
   }
   return result;
 }

@@ -59,7 +59,7 @@ public:
   std::optional<Expect> expect(const ast::Expr *e) {
     auto x = lower(e);
     if (!x || x->type == Type::Bool) return x;
-    cx_.diag.error(x->range, "type-mismatch", fmt::format("an expectation must be bool, not {}", quoted(x->type)));
+    cx_.diag.error(x->range, ErrorKind::TypeMismatch, fmt::format("an expectation must be bool, not {}", quoted(x->type)));
     return std::nullopt;
   }
 
@@ -69,7 +69,7 @@ public:
     const Symbol *sym = cx_.c_names.find(name.text);
     if (sym && sym->kind == Sym::Function) return cx_.function_ok[sym->index] ? sym->index : -1;
     if (sym) {
-      cx_.diag.error(name.range, "type-mismatch", fmt::format("'{}' is {}, not a function", name.text,
+      cx_.diag.error(name.range, ErrorKind::TypeMismatch, fmt::format("'{}' is {}, not a function", name.text,
                                                               with_article(sym->kind)))
           .note(sym->range, fmt::format("'{}' declared here", name.text));
       return -1;
@@ -85,7 +85,7 @@ public:
     auto x = lower_expr(e, constant_scope);
     if (!x) return std::nullopt;
     if (!assignable(to, x->type)) {
-      cx_.diag.error(x->range, "type-mismatch", fmt::format("{} must be {}, not {}", what, quoted(to), quoted(x->type)));
+      cx_.diag.error(x->range, ErrorKind::TypeMismatch, fmt::format("{} must be {}, not {}", what, quoted(to), quoted(x->type)));
       return std::nullopt;
     }
     auto v = evaluate(*x, cx_.model, &cx_.diag);
@@ -101,7 +101,7 @@ public:
     try {
       return interp::format_value(interp::convert(value, to, x->range));
     } catch (const interp::RuntimeError &err) {
-      cx_.diag.error(x->range, "type-mismatch", fmt::format("{}: {}", what, err.what()));
+      cx_.diag.error(x->range, ErrorKind::TypeMismatch, fmt::format("{}: {}", what, err.what()));
       return std::nullopt;
     }
   }
@@ -117,7 +117,7 @@ private:
 
   bool fsm_only(const ast::Expr &e, const char *what) {
     if (chart_.is_fsm()) return true;
-    cx_.diag.error(e.range, "test", fmt::format("'{}' needs an fsm, but '{}' is an sfc", what, chart_.out.name));
+    cx_.diag.error(e.range, ErrorKind::Test, fmt::format("'{}' needs an fsm, but '{}' is an sfc", what, chart_.out.name));
     return false;
   }
 
@@ -145,7 +145,7 @@ private:
       if (operand->kind == Expect::Kind::Chart) break;  // all chart: the chart's lowering types it
       auto type = unary_type(e->unary_op, operand->type);
       if (!type) {
-        cx_.diag.error(e->range, "type-mismatch",
+        cx_.diag.error(e->range, ErrorKind::TypeMismatch,
                        fmt::format("invalid operand to unary '{}' (have {})", spelling(e->unary_op), quoted(operand->type)));
         return std::nullopt;
       }
@@ -162,7 +162,7 @@ private:
       if (a->kind == Expect::Kind::Chart && b->kind == Expect::Kind::Chart) break;
       auto type = binary_type(e->binary_op, a->type, b->type);
       if (!type) {
-        cx_.diag.error(e->range, "type-mismatch",
+        cx_.diag.error(e->range, ErrorKind::TypeMismatch,
                        fmt::format("invalid operands to binary '{}' (have {} and {})", spelling(e->binary_op),
                                    quoted(a->type), quoted(b->type)));
         return std::nullopt;
@@ -193,7 +193,7 @@ private:
     if (!x) return std::nullopt;
     if (const model::Expr *call = find_call(*x)) {
       const std::string &f = cx_.model.functions[call->index].name;
-      cx_.diag.error(call->range, "test", fmt::format("an expectation calls no chart code: '{}' cannot be called here", f))
+      cx_.diag.error(call->range, ErrorKind::Test, fmt::format("an expectation calls no chart code: '{}' cannot be called here", f))
           .note(fmt::format("'called {0}' says whether the chart called it in the last tick, 'calls {0}' how often", f));
       return std::nullopt;
     }
@@ -206,7 +206,7 @@ private:
     const char *word = kind == Expect::Kind::State ? "state" : "active";
     if (kind == Expect::Kind::State && !fsm_only(e, "state()")) return std::nullopt;
     if (e.args.size() != 1 || !e.args[0] || e.args[0]->kind != ast::Expr::Kind::Name) {
-      cx_.diag.error(e.range, "test", fmt::format("'{}' takes one argument: the name of a {}", word, chart_.place_word()));
+      cx_.diag.error(e.range, ErrorKind::Test, fmt::format("'{}' takes one argument: the name of a {}", word, chart_.place_word()));
       return std::nullopt;
     }
     int place = resolve_place(chart_, cx_, e.args[0]->name);
@@ -227,7 +227,7 @@ private:
     if (target.kind != ast::Expr::Kind::Call) return x;
     const model::Function &fn = cx_.model.functions[f];
     if (target.args.size() != fn.params.size()) {
-      cx_.diag.error(target.range, "argument-count",
+      cx_.diag.error(target.range, ErrorKind::ArgumentCount,
                      fmt::format("too {} arguments to function '{}' (expected {}, have {})",
                                  target.args.size() > fn.params.size() ? "many" : "few", fn.name, fn.params.size(),
                                  target.args.size()))
@@ -257,12 +257,12 @@ int resolve_chart(Context &cx, const ast::Name &name, std::set<std::string> &see
   const Symbol *sym = cx.c_names.find(name.text);
   if (sym && sym->kind == Sym::Chart) return sym->index;
   if (const Symbol *plan = cx.plan_names.find(name.text); plan && plan->kind == Sym::Plan) {
-    cx.diag.error(name.range, "test", fmt::format("'{}' is a plan; tests run an sfc or fsm", name.text))
+    cx.diag.error(name.range, ErrorKind::Test, fmt::format("'{}' is a plan; tests run an sfc or fsm", name.text))
         .note(plan->range, fmt::format("'{}' declared here", name.text));
     return -1;
   }
   if (sym) {
-    cx.diag.error(name.range, "type-mismatch", fmt::format("'{}' is {}, not an sfc or fsm", name.text,
+    cx.diag.error(name.range, ErrorKind::TypeMismatch, fmt::format("'{}' is {}, not an sfc or fsm", name.text,
                                                            with_article(sym->kind)))
         .note(sym->range, fmt::format("'{}' declared here", name.text));
     return -1;
@@ -278,7 +278,7 @@ bool lower_set(Context &cx, TestLowering &lowering, const model::Chart &chart, c
   if (f < 0) return false;
   const model::Function &fn = cx.model.functions[f];
   if (fn.result == Type::Void || !fn.params.empty()) {
-    cx.diag.error(in.function.range, "test",
+    cx.diag.error(in.function.range, ErrorKind::Test,
                   fmt::format("'set' needs a sensing function without parameters; '{}' {}", fn.name,
                               fn.result == Type::Void ? "returns void" : "takes parameters"))
         .note(fn.range, fmt::format("'{}' declared here", fn.name));
@@ -287,7 +287,7 @@ bool lower_set(Context &cx, TestLowering &lowering, const model::Chart &chart, c
   bool ours = false;
   for (int used : chart.functions) ours = ours || cx.model.functions[used].interface_name == fn.interface_name;
   if (!ours) {
-    cx.diag.error(in.function.range, "test", fmt::format("'{}' belongs to interface '{}', which chart '{}' does not use",
+    cx.diag.error(in.function.range, ErrorKind::Test, fmt::format("'{}' belongs to interface '{}', which chart '{}' does not use",
                                                          fn.name, fn.interface_name, chart.name))
         .note(fn.range, fmt::format("'{}' declared here", fn.name));
     return false;
@@ -321,7 +321,7 @@ void validate_tests(Context &cx, scenario::Suite &out) {
       case ast::TestStep::Kind::Tick:
         step.kind = scenario::Step::Kind::Tick;
         if (in.count < 1 || in.count > kMaxTicksPerStep) {
-          cx.diag.error(in.value ? in.value->range : in.range, "test",
+          cx.diag.error(in.value ? in.value->range : in.range, ErrorKind::Test,
                         in.count == 0 ? std::string("'tick 0' runs no tick: the count must be at least 1")
                                       : fmt::format("'tick N' runs at most {} ticks at a time", kMaxTicksPerStep));
           ok = false;

@@ -89,7 +89,7 @@ public:
     if (diag_.limit_reached()) return false;
     for (std::size_t i = first_; i < diag_.all().size(); ++i) {
       const Diagnostic &d = diag_.all()[i];
-      if (d.severity == Severity::Error && d.check.rfind("-W", 0) != 0) return false;
+      if (d.severity == Severity::Error && !d.from_warning()) return false;
     }
     return true;
   }

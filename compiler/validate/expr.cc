@@ -29,7 +29,7 @@ void require_period(ExprScope &s, SourceRange at, const std::string &what) {
   ChartScope &c = *s.chart;
   if (c.out.period_ms > 0 || c.period_reported) return;
   c.period_reported = true;
-  auto &d = s.cx.diag.error(at, "missing-period", fmt::format("{} needs a period, but {} '{}' declares none", what,
+  auto &d = s.cx.diag.error(at, ErrorKind::MissingPeriod, fmt::format("{} needs a period, but {} '{}' declares none", what,
                                                               c.kind_word(), c.out.name));
   bool sub_chart = false;
   for (const auto &runs : s.cx.runs)
@@ -63,7 +63,7 @@ std::optional<model::Expr> const_ref(int index, SourceRange at, ExprScope &s) {
 
 /// A name that denotes something other than a value, used as one.
 std::nullopt_t not_a_value(ExprScope &s, const ast::Name &name, const Symbol &sym) {
-  auto &d = s.cx.diag.error(name.range, "type-mismatch", fmt::format("'{}' is {}, not a value", name.text, with_article(sym.kind)));
+  auto &d = s.cx.diag.error(name.range, ErrorKind::TypeMismatch, fmt::format("'{}' is {}, not a value", name.text, with_article(sym.kind)));
   if (sym.kind == Sym::Function) d.note(sym.range, fmt::format("to call it, write '{}()'", name.text));
   if (sym.kind == Sym::Place || sym.kind == Sym::State)
     d.note(fmt::format("'elapsed({})' is the time it has been active", name.text));
@@ -78,7 +78,7 @@ std::optional<model::Expr> lower_name(const ast::Expr &e, ExprScope &s) {
       if (sym->kind == Sym::Const) return const_ref(sym->index, e.range, s);
       if (sym->kind != Sym::Var) return not_a_value(s, name, *sym);
       if (s.constant) {
-        s.cx.diag.error(name.range, "not-constant",
+        s.cx.diag.error(name.range, ErrorKind::NotConstant,
                         fmt::format("a constant expression cannot read variable '{}'", name.text));
         return std::nullopt;
       }
@@ -102,15 +102,15 @@ std::optional<model::Expr> lower_name(const ast::Expr &e, ExprScope &s) {
 std::optional<model::Expr> lower_elapsed(const ast::Expr &e, ExprScope &s, bool statement) {
   Diagnostics &diag = s.cx.diag;
   if (!s.chart) {
-    diag.error(e.range, "elapsed", "'elapsed' can only be used inside an sfc or fsm");
+    diag.error(e.range, ErrorKind::Elapsed, "'elapsed' can only be used inside an sfc or fsm");
     return std::nullopt;
   }
   if (s.constant) {
-    diag.error(e.range, "not-constant", "a constant expression cannot read 'elapsed()'");
+    diag.error(e.range, ErrorKind::NotConstant, "a constant expression cannot read 'elapsed()'");
     return std::nullopt;
   }
   if (e.args.size() != 1 || !e.args[0] || e.args[0]->kind != ast::Expr::Kind::Name) {
-    diag.error(e.range, "elapsed", fmt::format("'elapsed' takes one argument: the name of a {}", s.chart->place_word()));
+    diag.error(e.range, ErrorKind::Elapsed, fmt::format("'elapsed' takes one argument: the name of a {}", s.chart->place_word()));
     return std::nullopt;
   }
   int place = resolve_place(*s.chart, s.cx, e.args[0]->name);
@@ -118,12 +118,17 @@ std::optional<model::Expr> lower_elapsed(const ast::Expr &e, ExprScope &s, bool 
   require_period(s, e.range, fmt::format("'elapsed({})'", e.args[0]->name.text));
   s.chart->out.places[place].timed = true;
   if (statement) {
-    diag.error(e.range, "type-mismatch", "'elapsed()' as a statement has no effect");
+    diag.error(e.range, ErrorKind::TypeMismatch, "'elapsed()' as a statement has no effect");
     return std::nullopt;
   }
   model::Expr x = make(K::Elapsed, Type::Duration, e.range);
   x.index = place;
   return x;
+}
+
+/// The kind of a misused built-in that reads a chart's state: each has its own.
+ErrorKind builtin_kind(const std::string &f) {
+  return f == "active" ? ErrorKind::Active : f == "succeeded" ? ErrorKind::Succeeded : ErrorKind::Failed;
 }
 
 /// The checks every built-in that reads a chart's state shares (`elapsed` has its own wording):
@@ -132,19 +137,19 @@ bool builtin_allowed(const ast::Expr &e, ExprScope &s, bool statement, const cha
   Diagnostics &diag = s.cx.diag;
   const std::string &f = e.name.text;
   if (!s.chart) {
-    diag.error(e.range, f, fmt::format("'{}' can only be used inside an sfc or fsm", f));
+    diag.error(e.range, builtin_kind(f), fmt::format("'{}' can only be used inside an sfc or fsm", f));
     return false;
   }
   if (s.constant) {
-    diag.error(e.range, "not-constant", fmt::format("a constant expression cannot read '{}()'", f));
+    diag.error(e.range, ErrorKind::NotConstant, fmt::format("a constant expression cannot read '{}()'", f));
     return false;
   }
   if (statement) {
-    diag.error(e.range, "type-mismatch", fmt::format("'{}()' as a statement has no effect", f));
+    diag.error(e.range, ErrorKind::TypeMismatch, fmt::format("'{}()' as a statement has no effect", f));
     return false;
   }
   if (e.args.size() != 1 || !e.args[0]) {
-    diag.error(e.range, f, fmt::format("'{}' takes one argument: {}", f, argument));
+    diag.error(e.range, builtin_kind(f), fmt::format("'{}' takes one argument: {}", f, argument));
     return false;
   }
   return true;
@@ -157,14 +162,14 @@ bool team_context(const ast::Expr &e, ExprScope &s, const std::string &what) {
   Diagnostics &diag = s.cx.diag;
   if (s.chart && s.chart->out.team == 0 && !s.chart->ast.teams.empty()) return false;
   if (!s.chart || s.chart->out.team == 0) {
-    auto &d = diag.error(e.range, "team", fmt::format("'{}' can only be used in a team machine", what));
+    auto &d = diag.error(e.range, ErrorKind::Team, fmt::format("'{}' can only be used in a team machine", what));
     if (s.chart && s.chart->is_fsm())
       d.note(s.chart->ast.name.range, fmt::format("make fsm '{}' one by declaring its team size in it, e.g. 'team 2;'",
                                                   s.chart->out.name));
     return false;
   }
   if (s.constant) {
-    diag.error(e.range, "not-constant", fmt::format("a constant expression cannot read '{}'", what));
+    diag.error(e.range, ErrorKind::NotConstant, fmt::format("a constant expression cannot read '{}'", what));
     return false;
   }
   return true;
@@ -179,7 +184,7 @@ std::optional<model::Expr> lower_active(const ast::Expr &e, ExprScope &s, bool s
   if (arg.kind == ast::Expr::Kind::Name) names.push_back(arg.name);
   else if (arg.kind == ast::Expr::Kind::Path) names = arg.path;
   else {
-    s.cx.diag.error(arg.range, "active", "'active' takes one argument: a place or state, or a path 'P.Q' into its sub-chart");
+    s.cx.diag.error(arg.range, ErrorKind::Active, "'active' takes one argument: a place or state, or a path 'P.Q' into its sub-chart");
     return std::nullopt;
   }
   model::Expr x = make(K::Active, Type::Bool, e.range);
@@ -193,7 +198,7 @@ std::optional<model::Expr> lower_active(const ast::Expr &e, ExprScope &s, bool s
     int sub = s.cx.runs[static_cast<std::size_t>(chart)][static_cast<std::size_t>(place)];
     if (sub < 0) {
       if (via.runs) return std::nullopt;  // its `runs` has an error of its own
-      s.cx.diag.error(names[k].range, "unknown-name",
+      s.cx.diag.error(names[k].range, ErrorKind::UnknownName,
                       fmt::format("'{}' runs no sub-chart, so '{}' names nothing in it", via.name.text, names[k].text))
           .note(via.name.range, fmt::format("'{}' declared here", via.name.text));
       return std::nullopt;
@@ -209,7 +214,7 @@ std::optional<model::Expr> lower_active(const ast::Expr &e, ExprScope &s, bool s
                          p.name.text, p.name.range});
     }
     if (place < 0) {
-      auto &d = s.cx.diag.error(names[k].range, "unknown-name",
+      auto &d = s.cx.diag.error(names[k].range, ErrorKind::UnknownName,
                                 fmt::format("unknown {} '{}' in {} '{}', which '{}' runs", word, names[k].text,
                                             inner.kind == ast::Chart::Kind::Fsm ? "fsm" : "sfc", inner.name.text,
                                             via.name.text));
@@ -230,7 +235,8 @@ std::optional<model::Expr> lower_outcome(const ast::Expr &e, ExprScope &s, bool 
   if (!builtin_allowed(e, s, statement, "a place or state that runs an fsm")) return std::nullopt;
   const ast::Expr &arg = *e.args[0];
   if (arg.kind != ast::Expr::Kind::Name) {
-    s.cx.diag.error(arg.range, f, fmt::format("'{}' takes one argument: a place or state that runs an fsm", f));
+    s.cx.diag.error(arg.range, builtin_kind(f),
+                    fmt::format("'{}' takes one argument: a place or state that runs an fsm", f));
     return std::nullopt;
   }
   int place = resolve_place(*s.chart, s.cx, arg.name);
@@ -239,7 +245,7 @@ std::optional<model::Expr> lower_outcome(const ast::Expr &e, ExprScope &s, bool 
   int sub = s.cx.runs[static_cast<std::size_t>(s.chart->index)][static_cast<std::size_t>(place)];
   if (p.runs && sub < 0) return std::nullopt;  // its `runs` has an error of its own
   if (sub < 0 || s.cx.model.charts[static_cast<std::size_t>(sub)].kind != model::Chart::Kind::Fsm) {
-    auto &d = s.cx.diag.error(e.range, "subchart", sub < 0 ? fmt::format("'{}({})': {} '{}' runs no sub-chart", f, arg.name.text,
+    auto &d = s.cx.diag.error(e.range, ErrorKind::Subchart, sub < 0 ? fmt::format("'{}({})': {} '{}' runs no sub-chart", f, arg.name.text,
                                                                 s.chart->place_word(), arg.name.text)
                                                   : fmt::format("'{}({})': {} '{}' runs sfc '{}', which never {}", f,
                                                                 arg.name.text, s.chart->place_word(), arg.name.text,
@@ -261,13 +267,13 @@ std::optional<model::Expr> lower_team(const ast::Expr &e, ExprScope &s, bool sta
   if (!team_context(e, s, "team()")) return std::nullopt;
   Diagnostics &diag = s.cx.diag;
   if (e.args.size() != 1 || !e.args[0] || e.args[0]->kind != ast::Expr::Kind::Name) {
-    diag.error(e.range, "team", "'team' takes one argument: the name of a state");
+    diag.error(e.range, ErrorKind::Team, "'team' takes one argument: the name of a state");
     return std::nullopt;
   }
   int state = resolve_place(*s.chart, s.cx, e.args[0]->name);
   if (state < 0) return std::nullopt;
   if (statement) {
-    diag.error(e.range, "type-mismatch", "'team()' as a statement has no effect");
+    diag.error(e.range, ErrorKind::TypeMismatch, "'team()' as a statement has no effect");
     return std::nullopt;
   }
   model::Expr x = make(K::TeamCount, Type::Int, e.range);
@@ -279,11 +285,11 @@ std::optional<model::Expr> lower_team(const ast::Expr &e, ExprScope &s, bool sta
 std::optional<model::Expr> lower_agent(const ast::Expr &e, ExprScope &s, bool statement) {
   if (!team_context(e, s, "agent()")) return std::nullopt;
   if (!e.args.empty()) {
-    s.cx.diag.error(e.range, "argument-count", fmt::format("'agent' takes no arguments (have {})", e.args.size()));
+    s.cx.diag.error(e.range, ErrorKind::ArgumentCount, fmt::format("'agent' takes no arguments (have {})", e.args.size()));
     return std::nullopt;
   }
   if (statement) {
-    s.cx.diag.error(e.range, "type-mismatch", "'agent()' as a statement has no effect");
+    s.cx.diag.error(e.range, ErrorKind::TypeMismatch, "'agent()' as a statement has no effect");
     return std::nullopt;
   }
   return make(K::Agent, Type::Int, e.range);
@@ -293,7 +299,7 @@ std::optional<model::Expr> lower_agent(const ast::Expr &e, ExprScope &s, bool st
 bool check_arguments(const ast::Expr &call, const model::Function &f, const std::vector<std::optional<model::Expr>> &args,
                      Diagnostics &diag) {
   if (args.size() != f.params.size()) {
-    diag.error(call.range, "argument-count",
+    diag.error(call.range, ErrorKind::ArgumentCount,
                fmt::format("too {} arguments to function '{}' (expected {}, have {})",
                            args.size() > f.params.size() ? "many" : "few", f.name, f.params.size(), args.size()))
         .note(f.range, fmt::format("'{}' declared here", f.name));
@@ -307,7 +313,7 @@ bool check_arguments(const ast::Expr &call, const model::Function &f, const std:
     }
     Type want = f.params[i].type;
     if (assignable(want, args[i]->type)) continue;
-    diag.error(args[i]->range, "type-mismatch",
+    diag.error(args[i]->range, ErrorKind::TypeMismatch,
                fmt::format("incompatible type for argument {} of '{}': expected {}, have {}", i + 1, f.name,
                            quoted(want), quoted(args[i]->type)))
         .note(f.range, fmt::format("'{}' declared here", f.name));
@@ -328,7 +334,7 @@ std::optional<model::Expr> lower_unary(const ast::Expr &e, ExprScope &s) {
   if (!operand) return std::nullopt;
   auto type = unary_type(e.unary_op, operand->type);
   if (!type) {
-    auto &d = s.cx.diag.error(e.range, "type-mismatch", fmt::format("invalid operand to unary '{}' (have {})",
+    auto &d = s.cx.diag.error(e.range, ErrorKind::TypeMismatch, fmt::format("invalid operand to unary '{}' (have {})",
                                                                      spelling(e.unary_op), quoted(operand->type)));
     duration_note(d, operand->type, operand->type);
     return std::nullopt;
@@ -346,7 +352,7 @@ std::optional<model::Expr> lower_binary(const ast::Expr &e, ExprScope &s) {
   if (!a || !b) return std::nullopt;
   auto type = binary_type(e.binary_op, a->type, b->type);
   if (!type) {
-    auto &d = s.cx.diag.error(e.range, "type-mismatch",
+    auto &d = s.cx.diag.error(e.range, ErrorKind::TypeMismatch,
                               fmt::format("invalid operands to binary '{}' (have {} and {})", spelling(e.binary_op),
                                           quoted(a->type), quoted(b->type)));
     duration_note(d, a->type, b->type);
@@ -368,11 +374,11 @@ bool constant_fits(const model::Expr &x, Type to, ExprScope &s) {
   if (!v || v->type == Type::Int) return true;
   double d = v->f;
   if (to == Type::Int && !(d > -2147483649.0 && d < 2147483648.0)) {
-    s.cx.diag.error(x.range, "not-constant", fmt::format("value {} does not fit in 'int'", d));
+    s.cx.diag.error(x.range, ErrorKind::NotConstant, fmt::format("value {} does not fit in 'int'", d));
     return false;
   }
   if (to == Type::Float && std::isfinite(d) && std::fabs(d) > static_cast<double>(FLT_MAX)) {
-    s.cx.diag.error(x.range, "not-constant", fmt::format("value {} is too large for 'float'", d));
+    s.cx.diag.error(x.range, ErrorKind::NotConstant, fmt::format("value {} is too large for 'float'", d));
     return false;
   }
   return true;
@@ -390,20 +396,20 @@ std::optional<model::Stmt> lower_assign(const ast::Stmt &st, ExprScope &s) {
     return std::nullopt;
   }
   if (sym->kind != Sym::Var) {
-    diag.error(target.range, "not-assignable", fmt::format("cannot assign to {} '{}'", describe(sym->kind), target.text))
+    diag.error(target.range, ErrorKind::NotAssignable, fmt::format("cannot assign to {} '{}'", describe(sym->kind), target.text))
         .note(sym->range, fmt::format("'{}' declared here; only a 'var' can be assigned", target.text));
     return std::nullopt;
   }
   if (sym->index < 0) return std::nullopt;
   Type type = s.chart->out.vars[sym->index].type;
   if (st.assign_op != AssignOp::Set && !model::is_numeric(type)) {
-    diag.error(target.range, "type-mismatch", fmt::format("operator '{}' needs a numeric variable; '{}' has type {}",
+    diag.error(target.range, ErrorKind::TypeMismatch, fmt::format("operator '{}' needs a numeric variable; '{}' has type {}",
                                                           spelling(st.assign_op), target.text, quoted(type)));
     return std::nullopt;
   }
   if (!value) return std::nullopt;
   if (!assignable(type, value->type)) {
-    auto &d = diag.error(value->range, "type-mismatch",
+    auto &d = diag.error(value->range, ErrorKind::TypeMismatch,
                          fmt::format("incompatible types when assigning to '{}' of type {} from type {}", target.text,
                                      quoted(type), quoted(value->type)));
     duration_note(d, value->type, value->type);
@@ -435,7 +441,7 @@ unsigned long to_ticks(double ms, double period_ms) {
 void report_unknown(Diagnostics &diag, std::set<std::string> &seen, const ast::Name &name, const char *what,
                     const std::vector<const Symbol *> &candidates) {
   if (!seen.insert(std::string(what) + " " + name.text).second) return;
-  auto &d = diag.error(name.range, "unknown-name", fmt::format("unknown {} '{}'", what, name.text));
+  auto &d = diag.error(name.range, ErrorKind::UnknownName, fmt::format("unknown {} '{}'", what, name.text));
   suggest(d, name.text, candidates);
 }
 
@@ -447,7 +453,7 @@ int resolve_place(ChartScope &chart, Context &cx, const ast::Name &name) {
   for (std::size_t i = 0; sym && i < chart.ast.places.size(); ++i)
     if (chart.ast.places[i].name.text == name.text) return static_cast<int>(i);
   if (sym) {
-    cx.diag.error(name.range, "type-mismatch",
+    cx.diag.error(name.range, ErrorKind::TypeMismatch,
                   fmt::format("'{}' is {}, not a {}", name.text, with_article(sym->kind), chart.place_word()))
         .note(sym->range, fmt::format("'{}' declared here", name.text));
     return -1;
@@ -478,7 +484,7 @@ std::optional<model::Expr> lower_expr(const ast::Expr *e, ExprScope &s) {
   case ast::Expr::Kind::Binary: return check_constant(lower_binary(*e, s), s.cx.model, s.cx.diag);
   case ast::Expr::Kind::Path:
     // Only `active(...)` reads a path, and it reads its argument itself.
-    s.cx.diag.error(e->range, "syntax", "a path to a sub-chart's place is only read through 'active(...)'");
+    s.cx.diag.error(e->range, ErrorKind::Syntax, "a path to a sub-chart's place is only read through 'active(...)'");
     return std::nullopt;
   case ast::Expr::Kind::Paren: {
     if (e->args.size() != 1) return std::nullopt;
@@ -503,7 +509,7 @@ std::optional<model::Expr> lower_call(const ast::Expr &e, ExprScope &s, bool sta
   for (const auto &a : e.args) args.push_back(lower_expr(a.get(), s));
   if (name.text.empty()) return std::nullopt;
   if (s.constant) {
-    s.cx.diag.error(e.range, "not-constant", fmt::format("a constant expression cannot call '{}'", name.text));
+    s.cx.diag.error(e.range, ErrorKind::NotConstant, fmt::format("a constant expression cannot call '{}'", name.text));
     return std::nullopt;
   }
   const Symbol *sym = s.cx.c_names.find(name.text);
@@ -512,7 +518,7 @@ std::optional<model::Expr> lower_call(const ast::Expr &e, ExprScope &s, bool sta
     return std::nullopt;
   }
   if (sym->kind != Sym::Function) {
-    s.cx.diag.error(name.range, "type-mismatch", fmt::format("called object '{}' is {}, not a function", name.text,
+    s.cx.diag.error(name.range, ErrorKind::TypeMismatch, fmt::format("called object '{}' is {}, not a function", name.text,
                                                              with_article(sym->kind)))
         .note(sym->range, fmt::format("'{}' declared here", name.text));
     return std::nullopt;
@@ -523,7 +529,7 @@ std::optional<model::Expr> lower_call(const ast::Expr &e, ExprScope &s, bool sta
   for (std::size_t i = 0; i < args.size(); ++i)
     if (!constant_fits(*args[i], f.params[i].type, s)) return std::nullopt;
   if (!statement && f.result == Type::Void) {
-    s.cx.diag.error(e.range, "type-mismatch", fmt::format("'{}' returns void; it cannot be used as a value", f.name))
+    s.cx.diag.error(e.range, ErrorKind::TypeMismatch, fmt::format("'{}' returns void; it cannot be used as a value", f.name))
         .note(f.range, fmt::format("'{}' declared here", f.name));
     return std::nullopt;
   }
@@ -537,7 +543,7 @@ std::optional<model::Expr> lower_call(const ast::Expr &e, ExprScope &s, bool sta
 std::optional<model::Expr> lower_condition(const ast::Expr *e, ExprScope &s, const char *what) {
   auto x = lower_expr(e, s);
   if (!x || x->type == Type::Bool) return x;
-  auto &d = s.cx.diag.error(x->range, "type-mismatch", fmt::format("{} must be bool, not {}", what, quoted(x->type)));
+  auto &d = s.cx.diag.error(x->range, ErrorKind::TypeMismatch, fmt::format("{} must be bool, not {}", what, quoted(x->type)));
   duration_note(d, x->type, x->type);
   return std::nullopt;
 }
@@ -545,7 +551,7 @@ std::optional<model::Expr> lower_condition(const ast::Expr *e, ExprScope &s, con
 std::optional<model::Expr> lower_initializer(const ast::Expr *e, ExprScope &s, Type type, const std::string &name) {
   auto x = lower_expr(e, s);
   if (!x || assignable(type, x->type)) return x;
-  auto &d = s.cx.diag.error(x->range, "type-mismatch", fmt::format("cannot initialize '{}' of type {} with a value of type {}",
+  auto &d = s.cx.diag.error(x->range, ErrorKind::TypeMismatch, fmt::format("cannot initialize '{}' of type {} with a value of type {}",
                                                                     name, quoted(type), quoted(x->type)));
   duration_note(d, x->type, x->type);
   return std::nullopt;

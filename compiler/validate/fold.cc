@@ -54,10 +54,10 @@ std::optional<Value> checked(const constant::Outcome &r, SourceRange at, Diagnos
   if (r) return r.value;
   if (!diag) return std::nullopt;
   switch (r.fault) {
-  case constant::Fault::IntOverflow: diag->error(at, "not-constant", "integer overflow in constant expression"); break;
-  case constant::Fault::DivisionByZero: diag->error(at, "not-constant", "division by zero in constant expression"); break;
+  case constant::Fault::IntOverflow: diag->error(at, ErrorKind::NotConstant, "integer overflow in constant expression"); break;
+  case constant::Fault::DivisionByZero: diag->error(at, ErrorKind::NotConstant, "division by zero in constant expression"); break;
   case constant::Fault::NotFinite:
-    diag->error(at, "not-constant", "floating-point overflow in constant expression");
+    diag->error(at, ErrorKind::NotConstant, "floating-point overflow in constant expression");
     break;
   default: break;  // operands the type checks reported already
   }
@@ -105,7 +105,7 @@ std::optional<model::Expr> number_literal(const ast::Expr &e, Diagnostics &diag)
   if (e.kind == ast::Expr::Kind::Int) {
     auto v = constant::int_literal(e.text);
     if (!v) {
-      diag.error(e.range, "not-constant", fmt::format("integer constant '{}' is too large for 'int'", e.text));
+      diag.error(e.range, ErrorKind::NotConstant, fmt::format("integer constant '{}' is too large for 'int'", e.text));
       return std::nullopt;
     }
     x.kind = K::Int;
@@ -115,7 +115,7 @@ std::optional<model::Expr> number_literal(const ast::Expr &e, Diagnostics &diag)
   }
   auto v = constant::float_literal(e.text);
   if (!v) {
-    diag.error(e.range, "not-constant", fmt::format("floating constant '{}' is too large for 'double'", e.text));
+    diag.error(e.range, ErrorKind::NotConstant, fmt::format("floating constant '{}' is too large for 'double'", e.text));
     return std::nullopt;
   }
   x.kind = K::Float;
@@ -150,7 +150,7 @@ std::optional<model::Expr> to_literal(const Value &v, model::Type to, SourceRang
   auto c = constant::convert(v, to);
   if (!c) {
     if (c.fault == constant::Fault::DoesNotFit)
-      diag.error(range, "not-constant", fmt::format(to == Type::Int ? "value {} does not fit in 'int'" : "value {} is too large for 'float'", v.f));
+      diag.error(range, ErrorKind::NotConstant, fmt::format(to == Type::Int ? "value {} does not fit in 'int'" : "value {} is too large for 'float'", v.f));
     return std::nullopt;
   }
   const Value &w = c.value;
@@ -190,7 +190,7 @@ const model::Expr *fold_const(Context &cx, int index) {
   case State::Done: return &c.value;
   case State::Failed: return nullptr;
   case State::Busy:
-    cx.diag.error(src.decl->name.range, "not-constant", fmt::format("constant '{}' is defined in terms of itself", c.name));
+    cx.diag.error(src.decl->name.range, ErrorKind::NotConstant, fmt::format("constant '{}' is defined in terms of itself", c.name));
     src.state = State::Failed;
     return nullptr;
   case State::Pending: break;
@@ -200,7 +200,7 @@ const model::Expr *fold_const(Context &cx, int index) {
   if (c.chart >= 0 && (!chart || chart->index != c.chart)) return nullptr;
   // Folding recurses through the constants an initialiser reads: bound it, never the stack.
   if (cx.const_depth >= kMaxConstDepth) {
-    cx.diag.error(src.decl->name.range, "not-constant",
+    cx.diag.error(src.decl->name.range, ErrorKind::NotConstant,
                   fmt::format("constant '{}' is defined through more than {} other constants", c.name, kMaxConstDepth));
     src.state = State::Failed;
     return nullptr;
@@ -213,7 +213,7 @@ const model::Expr *fold_const(Context &cx, int index) {
   if (auto e = lower_initializer(src.decl->init.get(), scope, c.type, c.name)) {
     if (auto v = evaluate(*e, cx.model, &cx.diag)) literal = to_literal(*v, c.type, e->range, cx.diag, &*e);
     if (!literal && cx.diag.error_count() == errors)
-      cx.diag.error(e->range, "not-constant", fmt::format("initializer of '{}' is not a constant expression", c.name));
+      cx.diag.error(e->range, ErrorKind::NotConstant, fmt::format("initializer of '{}' is not a constant expression", c.name));
   }
   --cx.const_depth;
   if (src.state == State::Failed) return nullptr;  // a cycle through it was reported meanwhile

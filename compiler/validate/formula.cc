@@ -22,7 +22,7 @@ model::Expr make(K kind, Type type, SourceRange range) {
 }
 
 std::nullopt_t not_allowed(Context &cx, SourceRange at, const std::string &what) {
-  cx.diag.error(at, "formula", fmt::format("{} cannot be used in a plan argument", what))
+  cx.diag.error(at, ErrorKind::Formula, fmt::format("{} cannot be used in a plan argument", what))
       .note("a plan argument is a formula over config entries and constants: + - * / and brackets");
   return std::nullopt;
 }
@@ -32,12 +32,12 @@ std::optional<model::Expr> lower_name(const ast::Expr &e, Context &cx, PlanScope
   if (name.text.empty()) return std::nullopt;
   if (const Symbol *sym = s.names.find(name.text)) {
     if (sym->kind != Sym::ConfigEntry) {
-      cx.diag.error(name.range, "type-mismatch", fmt::format("'{}' is {}, not a config entry", name.text, with_article(sym->kind)))
+      cx.diag.error(name.range, ErrorKind::TypeMismatch, fmt::format("'{}' is {}, not a config entry", name.text, with_article(sym->kind)))
           .note(sym->range, fmt::format("'{}' declared here", name.text));
       return std::nullopt;
     }
     if (constant) {
-      cx.diag.error(name.range, "not-constant", fmt::format("a config initializer cannot read config entry '{}'", name.text));
+      cx.diag.error(name.range, ErrorKind::NotConstant, fmt::format("a config initializer cannot read config entry '{}'", name.text));
       return std::nullopt;
     }
     if (sym->index < 0) return std::nullopt;  // its declaration has an error
@@ -76,7 +76,7 @@ std::optional<model::Expr> lower_binary(const ast::Expr &e, Context &cx, PlanSco
   if (!a || !b) return std::nullopt;
   auto type = formula_type(op, a->type, b->type);
   if (!type) {
-    cx.diag.error(e.range, "type-mismatch", fmt::format("invalid operands to binary '{}' (have {} and {})", spelling(op),
+    cx.diag.error(e.range, ErrorKind::TypeMismatch, fmt::format("invalid operands to binary '{}' (have {} and {})", spelling(op),
                                                         quoted(a->type), quoted(b->type)));
     return std::nullopt;
   }
@@ -93,7 +93,7 @@ std::optional<model::Expr> lower_unary(const ast::Expr &e, Context &cx, PlanScop
   auto operand = lower_formula(e.args[0].get(), cx, s, constant);
   if (!operand) return std::nullopt;
   if (!model::is_numeric(operand->type)) {
-    cx.diag.error(e.range, "type-mismatch", fmt::format("invalid operand to unary '-' (have {})", quoted(operand->type)));
+    cx.diag.error(e.range, ErrorKind::TypeMismatch, fmt::format("invalid operand to unary '-' (have {})", quoted(operand->type)));
     return std::nullopt;
   }
   model::Expr x = make(K::Unary, operand->type, e.range);

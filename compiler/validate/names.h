@@ -45,8 +45,9 @@ private:
   std::vector<Symbol> symbols_;
 };
 
-/// Reports (check `reserved-name`) a name that is a keyword of C99/C11 or C++17 and returns
-/// false; generated code names things after the user's names.
+/// Reports (check `reserved-name`) a name that generated C or C++ reserves (compiler/naming/:
+/// a keyword of C99/C11 or C++17/C++20, a name of the standard headers the engines include) and
+/// returns false; generated code names things after the user's names.
 bool check_reserved(const ast::Name &name, Sym kind, Diagnostics &diag);
 
 /// Reports a clash with `previous` as `duplicate-name`: the same message `declare` gives.

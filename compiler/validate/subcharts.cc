@@ -34,7 +34,7 @@ std::vector<Edge> resolve_runs(Context &cx) {
       if (!place.runs || place.runs->text.empty()) continue;
       const ast::Name &name = *place.runs;
       if (place.terminal != ast::StateKind::Normal) {
-        cx.diag.error(name.range, "terminal-runs",
+        cx.diag.error(name.range, ErrorKind::TerminalRuns,
                       fmt::format("terminal state '{}' cannot run a sub-chart: the machine has stopped there",
                                   place.name.text));
         continue;
@@ -42,12 +42,12 @@ std::vector<Edge> resolve_runs(Context &cx) {
       const Symbol *sym = cx.c_names.find(name.text);
       if (!sym) sym = cx.plan_names.find(name.text);
       if (!sym) {
-        auto &d = cx.diag.error(name.range, "unknown-name", fmt::format("unknown chart '{}'", name.text));
+        auto &d = cx.diag.error(name.range, ErrorKind::UnknownName, fmt::format("unknown chart '{}'", name.text));
         suggest(d, name.text, cx.c_names.of({Sym::Chart}));
         continue;
       }
       if (sym->kind != Sym::Chart) {
-        cx.diag.error(name.range, "type-mismatch",
+        cx.diag.error(name.range, ErrorKind::TypeMismatch,
                       fmt::format("'{}' is {}; a place or state runs an sfc or an fsm", name.text,
                                   with_article(sym->kind)))
             .note(sym->range, fmt::format("'{}' declared here", name.text));
@@ -56,7 +56,7 @@ std::vector<Edge> resolve_runs(Context &cx) {
       const ast::Chart &run = *cx.charts[static_cast<std::size_t>(sym->index)];
       if (!run.teams.empty()) {
         // A team machine talks to other agents through its root's API (docs/language.md "Teams").
-        cx.diag.error(name.range, "team-subchart",
+        cx.diag.error(name.range, ErrorKind::TeamSubchart,
                       fmt::format("fsm '{}' is a team machine; it can only be compiled as the root, not run as a sub-chart",
                                   name.text))
             .note(run.teams.front().second, "it is made a team machine here");
@@ -95,7 +95,7 @@ bool report_cycles(Context &cx, const std::vector<Edge> &edges) {
         std::string steps = cx.model.charts[static_cast<std::size_t>(cycle.front()->parent)].name;
         for (const Edge *s : cycle) steps += " -> " + cx.model.charts[static_cast<std::size_t>(s->child)].name;
         const model::Chart &head = cx.model.charts[static_cast<std::size_t>(cycle.front()->parent)];
-        auto &d = cx.diag.error(runs_name(cx, *cycle.front()).range, "subchart-cycle",
+        auto &d = cx.diag.error(runs_name(cx, *cycle.front()).range, ErrorKind::SubchartCycle,
                                 cycle.size() == 1
                                     ? fmt::format("chart '{}' runs itself", head.name)
                                     : fmt::format("chart '{}' runs itself through other charts: {}", head.name, steps));
@@ -147,7 +147,7 @@ void inherit_periods(Context &cx, const std::vector<Edge> &edges) {
       const ast::Name &at = runs_name(cx, *e);
       if (own > 0) {
         if (parent == own) continue;
-        cx.diag.error(at.range, "period", fmt::format("sub-chart '{}' declares {} but '{}', which runs it, has {}",
+        cx.diag.error(at.range, ErrorKind::Period, fmt::format("sub-chart '{}' declares {} but '{}', which runs it, has {}",
                                                       chart.name.text, period_text(own), parent_name, period_text(parent)))
             .note(chart.periods[0].range, "a sub-chart runs at the period of the chart that runs it; "
                                           "remove this period or make the two equal");
@@ -160,7 +160,7 @@ void inherit_periods(Context &cx, const std::vector<Edge> &edges) {
       }
       if (parent == effective[i]) continue;
       const Edge &first = *inherited_from[i];
-      cx.diag.error(at.range, "period",
+      cx.diag.error(at.range, ErrorKind::Period,
                     fmt::format("sub-chart '{}' would run at {} here but at {} in '{}'; it declares no period of its own",
                                 chart.name.text, period_text(parent), period_text(effective[i]),
                                 cx.model.charts[static_cast<std::size_t>(first.parent)].name))

@@ -31,7 +31,7 @@ std::optional<model::Type> lower_type(const ast::TypeName &t, unsigned allowed, 
   for (const TypeEntry &e : kTypes) {
     if (t.text != e.name) continue;
     if (allowed & e.bit) return e.type;
-    diag.error(t.range, "bad-type", fmt::format("type '{}' is not allowed for {}", t.text, use));
+    diag.error(t.range, ErrorKind::BadType, fmt::format("type '{}' is not allowed for {}", t.text, use));
     return std::nullopt;
   }
   // Offer only the types this declaration could have used.
@@ -40,7 +40,7 @@ std::optional<model::Type> lower_type(const ast::TypeName &t, unsigned allowed, 
     if (allowed & e.bit) names.push_back({Sym::Param, -1, e.name, {}});
   std::vector<const Symbol *> candidates;
   for (const Symbol &s : names) candidates.push_back(&s);
-  auto &d = diag.error(t.range, "unknown-type", fmt::format("unknown type name '{}'", t.text));
+  auto &d = diag.error(t.range, ErrorKind::UnknownType, fmt::format("unknown type name '{}'", t.text));
   if (const Symbol *s = closest(t.text, candidates)) d.fix(t.range, s->name).note(fmt::format("did you mean '{}'?", s->name));
   return std::nullopt;
 }

@@ -26,10 +26,10 @@ void set_period(Context &cx, ChartScope &s) {
   for (std::size_t i = 0; i < periods.size(); ++i) {
     const ast::Period &p = periods[i];
     if (i > 0) {
-      cx.diag.error(p.range, "period", fmt::format("second 'period' in {} '{}'", s.kind_word(), s.out.name))
+      cx.diag.error(p.range, ErrorKind::Period, fmt::format("second 'period' in {} '{}'", s.kind_word(), s.out.name))
           .note(periods[0].range, "the first one is here");
     } else if (p.ms <= 0) {
-      cx.diag.error(p.range, "period", "the period must be positive");
+      cx.diag.error(p.range, ErrorKind::Period, "the period must be positive");
     } else {
       s.out.period_ms = p.ms;
     }
@@ -46,12 +46,12 @@ void set_team(Context &cx, ChartScope &s) {
   for (std::size_t i = 0; i < teams.size(); ++i) {
     const auto &[n, range] = teams[i];
     if (i > 0) {
-      cx.diag.error(range, "team", fmt::format("second 'team' declaration in {} '{}'", s.kind_word(), s.out.name))
+      cx.diag.error(range, ErrorKind::Team, fmt::format("second 'team' declaration in {} '{}'", s.kind_word(), s.out.name))
           .note(teams[0].second, "the first one is here");
     } else if (!s.is_fsm()) {
-      cx.diag.error(range, "team", fmt::format("'team' in sfc '{}': only an fsm can be a team machine", s.out.name));
+      cx.diag.error(range, ErrorKind::Team, fmt::format("'team' in sfc '{}': only an fsm can be a team machine", s.out.name));
     } else if (n < 2 || n > kMaxTeam) {
-      auto &d = cx.diag.error(range, "team",
+      auto &d = cx.diag.error(range, ErrorKind::Team,
                               n < 2 ? fmt::format("a team has at least 2 agents, not {}", n < 0 ? std::string("that many") : std::to_string(n))
                                     : fmt::format("a team has at most {} agents", kMaxTeam));
       if (n >= 0 && n < 2) d.note("an fsm without 'team' is run by one agent");
@@ -67,19 +67,19 @@ void check_generated_name(Context &cx, ChartScope &s, const ast::Name &name, con
   std::string generated = s.out.name + "_" + name.text;
   for (const char *reserved : kEngineNames) {
     if (name.text != reserved) continue;
-    cx.diag.error(name.range, "reserved-name",
+    cx.diag.error(name.range, ErrorKind::ReservedName,
                   fmt::format("{} '{}' would generate '{}', which the engine already defines", what, name.text, generated));
     return;
   }
   // A team machine's engine has an API of its own (docs/c-engine.md "Team machines").
   for (const char *reserved : kTeamEngineNames) {
     if (s.ast.teams.empty() || name.text != reserved) continue;
-    cx.diag.error(name.range, "reserved-name", fmt::format("{} '{}' would generate '{}', which the engine of a team "
+    cx.diag.error(name.range, ErrorKind::ReservedName, fmt::format("{} '{}' would generate '{}', which the engine of a team "
                                                            "machine already defines", what, name.text, generated));
     return;
   }
   if (const Symbol *clash = cx.c_names.find(generated)) {
-    cx.diag.error(name.range, "reserved-name", fmt::format("{} '{}' would generate '{}', the name of {}", what,
+    cx.diag.error(name.range, ErrorKind::ReservedName, fmt::format("{} '{}' would generate '{}', the name of {}", what,
                                                            name.text, generated, with_article(clash->kind)))
         .note(clash->range, fmt::format("'{}' declared here", generated));
   }
@@ -158,7 +158,7 @@ void name_transitions(Context &cx, ChartScope &s) {
     out.name_range = out.named ? t.name->range : t.range;
     if (!out.named) {
       if (const Symbol *clash = s.names.find(out.name)) {
-        cx.diag.error(t.range, "duplicate-name", fmt::format("this unnamed transition is named '{}' by its position, "
+        cx.diag.error(t.range, ErrorKind::DuplicateName, fmt::format("this unnamed transition is named '{}' by its position, "
                                                              "which is already the name of {}", out.name, with_article(clash->kind)))
             .note(clash->range, fmt::format("'{}' declared here; name the transition ('name: A -> B') or rename it",
                                             out.name));

@@ -18,16 +18,16 @@ bool terminal(const ast::Place &p) { return p.terminal != ast::StateKind::Normal
 /// sfc-only syntax in an fsm, and the rules of terminal states.
 void check_state(Context &cx, ChartScope &s, const ast::Place &p, model::Place &out) {
   if (!p.is_state && !terminal(p))
-    cx.diag.error(p.range, "wrong-keyword", fmt::format("'place' in an fsm: an fsm has states (write 'state {}')", p.name.text));
+    cx.diag.error(p.range, ErrorKind::WrongKeyword, fmt::format("'place' in an fsm: an fsm has states (write 'state {}')", p.name.text));
   // `entry` and `exit` blocks run when the state is entered and left (docs/language.md "fsm
   // entry and exit"); a terminal state has no body at all, so neither.
   if (terminal(p) && p.has_body)
-    cx.diag.error(p.range, "terminal-state", fmt::format("terminal state '{}' cannot have a body", p.name.text));
+    cx.diag.error(p.range, ErrorKind::TerminalState, fmt::format("terminal state '{}' cannot have a body", p.name.text));
   if (p.initial && terminal(p))
-    cx.diag.error(p.name.range, "initial-state", fmt::format("initial state '{}' cannot be a success or failure state", p.name.text));
+    cx.diag.error(p.name.range, ErrorKind::InitialState, fmt::format("initial state '{}' cannot be a success or failure state", p.name.text));
   if (!p.post) return;
   if (!terminal(p)) {
-    cx.diag.error(p.post->range, "terminal-state", "only a success or failure state can have a 'post' condition");
+    cx.diag.error(p.post->range, ErrorKind::TerminalState, "only a success or failure state can have a 'post' condition");
     return;
   }
   ExprScope scope{cx, &s, false};
@@ -40,14 +40,14 @@ void note_initial(Context &cx, ChartScope &s, int index, int &initial) {
     initial = index;
     return;
   }
-  cx.diag.error(s.ast.places[index].name.range, "initial-state", fmt::format("fsm '{}' has more than one initial state", s.out.name))
+  cx.diag.error(s.ast.places[index].name.range, ErrorKind::InitialState, fmt::format("fsm '{}' has more than one initial state", s.out.name))
       .note(s.ast.places[initial].name.range, fmt::format("'{}' is already its initial state", s.ast.places[initial].name.text));
 }
 
 /// One side of an fsm transition: exactly one state.
 int one_state(Context &cx, ChartScope &s, const ast::Transition &t, const std::vector<ast::Name> &names, const char *side) {
   if (names.size() != 1) {
-    cx.diag.error(t.range, "fsm-transition", fmt::format("an fsm transition has exactly one {} state", side));
+    cx.diag.error(t.range, ErrorKind::FsmTransition, fmt::format("an fsm transition has exactly one {} state", side));
     return -1;
   }
   return resolve_place(s, cx, names[0]);
@@ -59,13 +59,13 @@ void check_transition(Context &cx, ChartScope &s, std::size_t i, int from, int t
   const ast::Transition &t = s.ast.transitions[i];
   const ast::Place &source = s.ast.places[from];
   if (terminal(source))
-    cx.diag.error(where(t), "terminal-state", fmt::format("transition leaves terminal state '{}'", source.name.text))
+    cx.diag.error(where(t), ErrorKind::TerminalState, fmt::format("transition leaves terminal state '{}'", source.name.text))
         .note(source.name.range, fmt::format("'{}' ends the machine", source.name.text));
   if (from == to)
-    cx.diag.error(where(t), "self-transition", fmt::format("transition from state '{}' to itself", source.name.text));
+    cx.diag.error(where(t), ErrorKind::SelfTransition, fmt::format("transition from state '{}' to itself", source.name.text));
   auto [it, fresh] = pairs.emplace(std::make_pair(from, to), i);
   if (!fresh)
-    cx.diag.error(where(t), "duplicate-transition", fmt::format("second transition from '{}' to '{}'", source.name.text,
+    cx.diag.error(where(t), ErrorKind::DuplicateTransition, fmt::format("second transition from '{}' to '{}'", source.name.text,
                                                                 s.ast.places[to].name.text))
         .note(where(s.ast.transitions[it->second]), "the first one is here");
   s.out.transitions[i].inputs = {from};
@@ -100,7 +100,7 @@ void check_connected(Context &cx, ChartScope &s, int initial) {
     if (!t.inputs.empty() && !t.outputs.empty()) parent[root(t.inputs[0])] = root(t.outputs[0]);
   for (std::size_t p = 0; p < s.out.places.size(); ++p) {
     if (root(static_cast<int>(p)) == root(initial)) continue;
-    cx.diag.error(s.ast.places[p].name.range, "not-connected",
+    cx.diag.error(s.ast.places[p].name.range, ErrorKind::NotConnected,
                   fmt::format("state '{}' is not connected to the initial state '{}'", s.out.places[p].name,
                               s.out.places[initial].name));
   }
@@ -152,7 +152,7 @@ void check_fsm(Context &cx, ChartScope &s, const ErrorWatch &watch) {
     if (s.ast.places[i].initial) note_initial(cx, s, static_cast<int>(i), initial);
   }
   if (initial < 0)
-    cx.diag.error(s.ast.name.range, "initial-state", fmt::format("fsm '{}' has no initial state", s.out.name))
+    cx.diag.error(s.ast.name.range, ErrorKind::InitialState, fmt::format("fsm '{}' has no initial state", s.out.name))
         .note("mark the state it starts in with 'initial state'");
   bool resolved = resolve_transitions(cx, s);
   if (initial >= 0 && resolved) check_connected(cx, s, initial);

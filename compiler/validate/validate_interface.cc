@@ -40,7 +40,7 @@ void declare_interface(Context &cx, const ast::Interface &iface) {
     bool ok = lower_prototype(f, out, cx.diag);
     for (const char *builtin : {"elapsed", "active", "succeeded", "failed", "agent"})
       if (f.name.text == builtin)
-        cx.diag.error(f.name.range, "reserved-name",
+        cx.diag.error(f.name.range, ErrorKind::ReservedName,
                       fmt::format("'{}' is built into the chart language and cannot name a function", builtin));
     int index = static_cast<int>(cx.model.functions.size());
     cx.model.functions.push_back(std::move(out));

@@ -60,7 +60,7 @@ std::optional<model::Expr> lower_config_init(Context &cx, PlanScope &s, const as
   if (!init) return std::nullopt;
   bool fits = type != Type::Object && (assignable(type, init->type) || (type == Type::String && model::is_numeric(init->type)));
   if (!fits) {
-    cx.diag.error(init->range, "type-mismatch", fmt::format("cannot initialize '{}' of type {} with a value of type {}",
+    cx.diag.error(init->range, ErrorKind::TypeMismatch, fmt::format("cannot initialize '{}' of type {} with a value of type {}",
                                                             e.name.text, quoted(type), quoted(init->type)));
     return std::nullopt;
   }
@@ -83,12 +83,12 @@ void lower_config_inits(Context &cx, PlanScope &s, const std::vector<int> &confi
 void set_start(Context &cx, PlanScope &s) {
   const auto &starts = s.ast.starts;
   if (starts.empty()) {
-    cx.diag.error(s.ast.name.range, "start", fmt::format("plan '{}' has no start actor", s.out.name))
+    cx.diag.error(s.ast.name.range, ErrorKind::Start, fmt::format("plan '{}' has no start actor", s.out.name))
         .note("name the actor that runs first with 'start NAME;'");
     return;
   }
   for (std::size_t i = 1; i < starts.size(); ++i)
-    cx.diag.error(starts[i].range, "start", fmt::format("plan '{}' has more than one start actor", s.out.name))
+    cx.diag.error(starts[i].range, ErrorKind::Start, fmt::format("plan '{}' has more than one start actor", s.out.name))
         .note(starts[0].range, "the first 'start' is here");
   s.out.start = resolve_actor(cx, s, starts[0]);
 }
@@ -112,13 +112,13 @@ std::optional<Callee> resolve_callee(Context &cx, PlanScope &s, const ast::Name 
   }
   if (sym->kind == Sym::Plan) {
     if (!supervisor) return plan_callee(cx, sym->index);
-    cx.diag.error(name.range, "template-kind", fmt::format("'{}' is a plan; 'supervise' needs a supervisor template", name.text))
+    cx.diag.error(name.range, ErrorKind::TemplateKind, fmt::format("'{}' is a plan; 'supervise' needs a supervisor template", name.text))
         .note(cx.model.plans[sym->index].range, fmt::format("'{}' declared here", name.text));
     return std::nullopt;
   }
   const model::Template &t = cx.model.templates[sym->index];
   if ((t.kind == model::Template::Kind::Supervisor) != supervisor) {
-    cx.diag.error(name.range, "template-kind",
+    cx.diag.error(name.range, ErrorKind::TemplateKind,
                   supervisor ? fmt::format("'{}' is an actor template; 'supervise' needs a supervisor template", name.text)
                              : fmt::format("'{}' is a supervisor template; an actor needs an actor or computation", name.text))
         .note(t.range, fmt::format("'{}' declared here", name.text));
@@ -148,7 +148,7 @@ model::ActorUse lower_actor(Context &cx, PlanScope &s, const ast::ActorUse &a) {
   auto c = resolve_callee(cx, s, a.template_name, false);
   bool computation = c && c->templ >= 0 && cx.model.templates[c->templ].kind == model::Template::Kind::Computation;
   if (c && a.written_as_computation && !computation)
-    cx.diag.error(a.template_name.range, "template-kind", fmt::format("'{}' is not a computation", c->name))
+    cx.diag.error(a.template_name.range, ErrorKind::TemplateKind, fmt::format("'{}' is not a computation", c->name))
         .note(c->range, fmt::format("'{}' declared here", c->name));
   if (c) {
     out.templ = c->templ;
@@ -158,7 +158,7 @@ model::ActorUse lower_actor(Context &cx, PlanScope &s, const ast::ActorUse &a) {
   }
   for (const ast::Supervise &sup : a.supervisors) {
     if (computation)
-      cx.diag.error(sup.name.range, "computation-supervisor",
+      cx.diag.error(sup.name.range, ErrorKind::ComputationSupervisor,
                     fmt::format("computation '{}' cannot be supervised", a.name.text))
           .note("a computation runs to its result without interruption");
     out.supervisors.push_back(lower_supervise(cx, s, sup));
@@ -248,7 +248,7 @@ struct PlanGraph {
   /// `plan` is on the path: the path from it to the top is the chain that contains it (each
   /// entry's actor just before `next` is the one that uses the following plan).
   void report(int plan) {
-    auto &d = cx.diag.error(cx.plans[plan]->name.range, "recursive-plan", fmt::format("plan '{}' contains itself", cx.model.plans[plan].name));
+    auto &d = cx.diag.error(cx.plans[plan]->name.range, ErrorKind::RecursivePlan, fmt::format("plan '{}' contains itself", cx.model.plans[plan].name));
     auto first = std::find_if(stack.begin(), stack.end(), [&](const auto &e) { return e.first == plan; });
     for (auto it = first; it != stack.end(); ++it) {
       const ast::ActorUse &a = cx.plans[it->first]->actors[it->second - 1];

@@ -17,10 +17,10 @@ SourceRange where(const ast::Transition &t) { return t.name ? t.name->range : t.
 /// fsm-only syntax in an sfc.
 void check_keywords(Context &cx, const ast::Place &p) {
   if (p.terminal != ast::StateKind::Normal)
-    cx.diag.error(p.range, "wrong-keyword", "success and failure states belong to an fsm; an sfc has places");
+    cx.diag.error(p.range, ErrorKind::WrongKeyword, "success and failure states belong to an fsm; an sfc has places");
   else if (p.is_state)
-    cx.diag.error(p.range, "wrong-keyword", fmt::format("'state' in an sfc: an sfc has places (write 'place {}')", p.name.text));
-  if (p.post) cx.diag.error(p.post->range, "wrong-keyword", "'post' belongs to a terminal state of an fsm");
+    cx.diag.error(p.range, ErrorKind::WrongKeyword, fmt::format("'state' in an sfc: an sfc has places (write 'place {}')", p.name.text));
+  if (p.post) cx.diag.error(p.post->range, ErrorKind::WrongKeyword, "'post' belongs to a terminal state of an fsm");
 }
 
 /// Resolves a transition's inputs or outputs (`side`), reporting a place listed twice.
@@ -33,7 +33,7 @@ std::vector<int> resolve_places(Context &cx, ChartScope &s, const std::vector<as
     bool twice = false;
     for (std::size_t j = 0; j < i && !twice; ++j) {
       if (names[j].text != names[i].text) continue;
-      cx.diag.error(names[i].range, "duplicate-place", fmt::format("place '{}' is listed twice in the {} of transition '{}'",
+      cx.diag.error(names[i].range, ErrorKind::DuplicatePlace, fmt::format("place '{}' is listed twice in the {} of transition '{}'",
                                                                    names[i].text, side, transition))
           .note(names[j].range, "first listed here");
       twice = true;
@@ -48,7 +48,7 @@ void resolve_transitions(Context &cx, ChartScope &s) {
     const ast::Transition &t = s.ast.transitions[i];
     model::Transition &out = s.out.transitions[i];
     if (t.inputs.empty())
-      cx.diag.error(t.range, "no-input", fmt::format("transition '{}' has no input place", out.name));
+      cx.diag.error(t.range, ErrorKind::NoInput, fmt::format("transition '{}' has no input place", out.name));
     out.inputs = resolve_places(cx, s, t.inputs, "inputs", out.name);
     out.outputs = resolve_places(cx, s, t.outputs, "outputs", out.name);
     lower_transition_condition(cx, s, i);
@@ -152,7 +152,7 @@ void check_sfc(Context &cx, ChartScope &s, const ErrorWatch &watch) {
     initial = initial || p.initial;
   }
   if (!initial)
-    cx.diag.error(s.ast.name.range, "initial-state", fmt::format("sfc '{}' has no initial place", s.out.name))
+    cx.diag.error(s.ast.name.range, ErrorKind::InitialState, fmt::format("sfc '{}' has no initial place", s.out.name))
         .note("mark the places active at start with 'initial place'");
   resolve_transitions(cx, s);
   if (watch.clean()) warn_unreachable(cx, s);

@@ -45,7 +45,7 @@ bool lower_params(Context &cx, const ast::Template &t, model::Template &out) {
 void lower_outcomes(Context &cx, const ast::Template &t, model::Template &out) {
   bool supervisor = t.kind == ast::Template::Kind::Supervisor;
   if (t.outcomes.empty())
-    cx.diag.error(t.name.range, "no-outcome", fmt::format("{} '{}' has no {}", kind_word(t.kind), t.name.text,
+    cx.diag.error(t.name.range, ErrorKind::NoOutcome, fmt::format("{} '{}' has no {}", kind_word(t.kind), t.name.text,
                                                          supervisor ? "event" : "result state"));
   Namespace outcomes;
   for (const ast::Name &o : t.outcomes) {
@@ -57,9 +57,9 @@ void lower_outcomes(Context &cx, const ast::Template &t, model::Template &out) {
 void lower_period(Context &cx, const ast::Template &t, model::Template &out) {
   if (!t.period) return;
   if (t.kind != ast::Template::Kind::Supervisor)
-    cx.diag.error(t.period->range, "period", "only a supervisor has a period");
+    cx.diag.error(t.period->range, ErrorKind::Period, "only a supervisor has a period");
   else if (t.period->ms <= 0)
-    cx.diag.error(t.period->range, "period", "the period must be positive");
+    cx.diag.error(t.period->range, ErrorKind::Period, "the period must be positive");
   else
     out.period_ms = t.period->ms;
 }

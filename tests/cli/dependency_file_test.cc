@@ -6,18 +6,18 @@
 using namespace gfec;
 
 TEST_CASE("dependency file: outputs depend on the chart and its imports; -MP adds empty rules") {
-  CHECK(dependency_rule({"engine.c", "engine.h"}, {"lf.sfc", "linebot.iface"}, false) ==
+  CHECK(dependency_rule({{"engine.c"}, {"engine.h"}}, {"lf.sfc", "linebot.iface"}, false) ==
         "engine.c engine.h: lf.sfc linebot.iface\n");
-  CHECK(dependency_rule({"engine.c"}, {"lf.sfc", "a.iface", "b.iface"}, true) ==
+  CHECK(dependency_rule({{"engine.c"}}, {"lf.sfc", "a.iface", "b.iface"}, true) ==
         "engine.c: lf.sfc a.iface b.iface\n\na.iface:\n\nb.iface:\n");
   // The main file never gets an empty rule: make must not think it can be made from nothing.
-  CHECK(dependency_rule({"x.c"}, {"x.sfc"}, true) == "x.c: x.sfc\n");
+  CHECK(dependency_rule({{"x.c"}}, {"x.sfc"}, true) == "x.c: x.sfc\n");
 }
 
 TEST_CASE("dependency file: long lists wrap with backslashes, as gcc's do") {
   std::vector<std::string> deps;
   for (int i = 0; i < 12; ++i) deps.push_back("charts/interface_" + std::to_string(i) + ".iface");
-  std::string rule = dependency_rule({"engine.c"}, deps, false);
+  std::string rule = dependency_rule({{"engine.c"}}, deps, false);
   std::size_t start = 0;
   int lines = 0;
   while (start < rule.size()) {
@@ -39,7 +39,10 @@ TEST_CASE("dependency file: long lists wrap with backslashes, as gcc's do") {
 
 TEST_CASE("dependency file: make's special characters are escaped") {
   CHECK(make_escape("my charts/a#1$.sfc") == "my\\ charts/a\\#1$$.sfc");
-  CHECK(dependency_rule({"out dir/e.c"}, {"a b.sfc"}, false) == "out\\ dir/e.c: a\\ b.sfc\n");
+  CHECK(dependency_rule({{"out dir/e.c"}}, {"a b.sfc"}, false) == "out\\ dir/e.c: a\\ b.sfc\n");
+  // gcc's -MT writes the target as given (a make variable stays one), -MQ quotes it.
+  CHECK(dependency_rule({{"$(OBJ)/e.c", false}, {"$(OBJ)/e.h", true}}, {"x.sfc"}, false) ==
+        "$(OBJ)/e.c $$(OBJ)/e.h: x.sfc\n");
 }
 
 TEST_CASE("dependency file: ':' is escaped; what make cannot read in a rule is named") {

@@ -8,6 +8,11 @@
 
 #include <catch2/catch.hpp>
 
+#include <fstream>
+#include <iterator>
+#include <regex>
+#include <set>
+
 using namespace gfec;
 using Json = nlohmann::ordered_json;
 
@@ -47,7 +52,7 @@ TEST_CASE("json diagnostics: a syntax error as gcc writes it") {
   Json j = diagnostic_to_json(d, r.sources);
   CHECK(j["kind"] == "error");
   CHECK(j["message"] == d.message);
-  CHECK(j["check"] == d.check);
+  CHECK(j["check"] == d.check());
   CHECK_FALSE(j.contains("option"));
   const Json &caret = j["locations"][0]["caret"];
   CHECK(caret["file"] == "t.sfc");
@@ -68,11 +73,13 @@ TEST_CASE("sarif: a result per diagnostic, notes as related locations, rules for
   const Json &run = j["runs"][0];
   CHECK(run["originalUriBaseIds"]["%SRCROOT%"]["uri"] == "file:///work/my%20project/");
   const Json &rules = run["tool"]["driver"]["rules"];
-  // Every warning of the table is a rule, and so is each error check that occurred.
-  CHECK(rules[0]["id"] == "-Wunreachable-place");
+  // Every row of the table of kinds is a rule, in the table's order, fired or not.
+  REQUIRE(rules.size() == diagnostic_kind_count());
+  CHECK(rules[static_cast<std::size_t>(ErrorKind::Syntax)]["id"] == "syntax");
+  CHECK(rules[static_cast<std::size_t>(ErrorKind::Count_)]["id"] == "-Wunreachable-place");
   const Json &result = run["results"][0];
-  CHECK(result["ruleId"] == d.check);
-  CHECK(rules[result["ruleIndex"].get<std::size_t>()]["id"] == d.check);
+  CHECK(result["ruleId"] == d.check());
+  CHECK(rules[result["ruleIndex"].get<std::size_t>()]["id"] == d.check());
   CHECK(result["level"] == "error");
   const Json &loc = result["locations"][0]["physicalLocation"];
   CHECK(loc["artifactLocation"]["uri"] == "dir/t.sfc");
@@ -156,7 +163,7 @@ TEST_CASE("text diagnostics: -Werror's label is gcc's [-Werror=NAME]; the check 
         std::string::npos);
   Diagnostic d;
   d.severity = Severity::Error;
-  d.check = "-Wunreachable-place";
+  d.kind = &kind_info(Warning::UnreachablePlace);
   CHECK(check_label(d) == "-Werror=unreachable-place");
   d.severity = Severity::Warning;
   CHECK(check_label(d) == "-Wunreachable-place");
@@ -193,8 +200,8 @@ TEST_CASE("json and sarif diagnostics: the fix-it as gcc's fixits and SARIF's fi
 
 TEST_CASE("the error limit in gcc's words, singular or plural alike") {
   Diagnostics one(WarningOptions{}, 1);
-  one.error({}, "x", "a");
-  one.error({}, "x", "b");
+  one.error({}, ErrorKind::Syntax, "a");
+  one.error({}, ErrorKind::Syntax, "b");
   CHECK(one.limit_reached());
   CHECK(limit_message(one) == "compilation terminated due to -fmax-errors=1.");
 }
@@ -255,4 +262,58 @@ TEST_CASE("did-you-mean for imports: the nearest file name in the folders search
   CHECK(e.find("fix-it:\"t.sfc\":{1:8-1:23}:\"\\\"crossing.iface\\\"\"") != std::string::npos);
   // Nothing near: no suggestion.
   CHECK(first_error("import \"zzz.iface\";\nsfc T { initial place A; }\n", fs).find("did you mean") == std::string::npos);
+}
+
+TEST_CASE("the table of diagnostic kinds: every kind named once, described, with help, and documented") {
+  REQUIRE(diagnostic_kind_count() == static_cast<std::size_t>(ErrorKind::Count_) + static_cast<std::size_t>(Warning::Count_));
+  std::ifstream doc_file(std::string(GFEC_SOURCE_DIR) + "/docs/diagnostics.md");
+  REQUIRE(doc_file);
+  std::string doc((std::istreambuf_iterator<char>(doc_file)), std::istreambuf_iterator<char>());
+  std::set<std::string_view> names;
+  for (std::size_t i = 0; i < diagnostic_kind_count(); ++i) {
+    const DiagnosticKind &k = diagnostic_kinds()[i];
+    INFO(k.name);
+    CHECK(names.insert(k.name).second);  // one name, one kind: no spelling twice
+    // Stable names are lower-case words joined by '-', as gcc's warnings.
+    CHECK(std::regex_match(std::string(k.name), std::regex("[a-z]+(-[a-z]+)*")));
+    CHECK(k.summary.size() > 10);
+    CHECK(k.help.size() > 10);
+    CHECK(k.warning == (i >= static_cast<std::size_t>(ErrorKind::Count_)));
+    CHECK(doc.find("| `" + k.check() + "` |") != std::string::npos);
+  }
+  // The spelling kept where two existed for one concept.
+  CHECK(find_kind("not-connected") != nullptr);
+  CHECK(find_kind("unconnected") == nullptr);
+  CHECK(kind_info(ErrorKind::NotConnected).check() == "not-connected");
+  CHECK(kind_info(Warning::DeadJoin).check() == "-Wdead-join");
+  CHECK(find_warning("dead-join") == Warning::DeadJoin);
+  CHECK_FALSE(find_warning("syntax"));
+}
+
+TEST_CASE("sarif rules: every kind is a rule with its summary, help and default level") {
+  const Json log = SarifLog().to_json(0, "/w");
+  const Json &rules = log["runs"][0]["tool"]["driver"]["rules"];
+  REQUIRE(rules.size() == diagnostic_kind_count());
+  const Json &syntax = rules[static_cast<std::size_t>(ErrorKind::Syntax)];
+  CHECK(syntax["id"] == "syntax");
+  CHECK(syntax["shortDescription"]["text"] == std::string(kind_info(ErrorKind::Syntax).summary));
+  CHECK(syntax["help"]["text"] == std::string(kind_info(ErrorKind::Syntax).help));
+  CHECK(syntax["defaultConfiguration"]["level"] == "error");
+  const Json &conflict = rules[static_cast<std::size_t>(ErrorKind::Count_) + static_cast<std::size_t>(Warning::Conflict)];
+  CHECK(conflict["id"] == "-Wconflict");
+  CHECK(conflict["defaultConfiguration"]["level"] == "warning");
+  CHECK(conflict["defaultConfiguration"]["enabled"] == false);
+}
+
+TEST_CASE("diagnostics are reported in source order: by file as loaded, then by position") {
+  Diagnostics diag;
+  diag.error({0, 40, 41}, ErrorKind::Syntax, "third");
+  diag.error({1, 0, 1}, ErrorKind::Import, "fifth: another file");
+  diag.error({0, 5, 6}, ErrorKind::UnknownName, "first");
+  diag.warning(Warning::UnreachablePlace, {0, 20, 21}, "second");
+  diag.error({0, 40, 42}, ErrorKind::TypeMismatch, "fourth: same place, found later");
+  std::vector<std::string> order;
+  for (const Diagnostic *d : in_source_order(diag)) order.push_back(d->message);
+  CHECK(order == std::vector<std::string>{"first", "second", "third", "fourth: same place, found later",
+                                          "fifth: another file"});
 }

@@ -22,7 +22,7 @@ TEST_CASE("options: -MD -MF -MP -MT as gcc spells them") {
   CHECK(cl.options.deps.write);
   CHECK(cl.options.deps.file == "deps/x.d");
   CHECK(cl.options.deps.phony);
-  CHECK(cl.options.deps.targets == std::vector<std::string>{"fw/engine.c"});
+  CHECK(cl.options.deps.targets == std::vector<DependencyTarget>{{"fw/engine.c", false}});
   CHECK(cl.options.inputs == std::vector<std::string>{"x.sfc"});
   CHECK(cl.options.output == "engine.c");
 
@@ -30,7 +30,13 @@ TEST_CASE("options: -MD -MF -MP -MT as gcc spells them") {
   REQUIRE_FALSE(attached.exit_now);
   CHECK(attached.options.deps.write);
   CHECK(attached.options.deps.file == "x.d");
-  CHECK(attached.options.deps.targets == std::vector<std::string>{"a", "b"});
+  CHECK(attached.options.deps.targets == std::vector<DependencyTarget>{{"a", false}, {"b", false}});
+
+  // -MQ, as gcc's: a target quoted for make, in order with the -MT ones.
+  auto quoted = parse({"x.sfc", "-MD", "-MQ", "$(OBJ)/a b.c", "-MT$(OBJ)/c.c", "-MQd.c"});
+  REQUIRE_FALSE(quoted.exit_now);
+  CHECK(quoted.options.deps.targets ==
+        std::vector<DependencyTarget>{{"$(OBJ)/a b.c", true}, {"$(OBJ)/c.c", false}, {"d.c", true}});
   CHECK_FALSE(attached.options.deps.phony);
 
   auto none = parse({"x.sfc"});

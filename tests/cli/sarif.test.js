@@ -54,7 +54,16 @@ test('sarif-stderr: one valid log for a --check over several files, agreeing wit
   // One rule per check name, each id once.
   const ids = run.tool.driver.rules.map((r) => r.id);
   assert.equal(new Set(ids).size, ids.length);
-  for (const r of run.tool.driver.rules) assert.ok(r.shortDescription.text.length > 0);
+  for (const r of run.tool.driver.rules) {
+    assert.ok(r.shortDescription.text.length > 0);
+    assert.ok(r.fullDescription.text.length > 0, `rule ${r.id} has a full description`);
+    assert.ok(r.help.text.length > 0, `rule ${r.id} has help`);
+    assert.equal(r.defaultConfiguration.level, r.id.startsWith('-W') ? 'warning' : 'error');
+  }
+  // The rules are the table of kinds, fired or not: exactly the names docs/diagnostics.md lists.
+  const doc = fs.readFileSync(path.join(SOURCE_DIR, 'docs', 'diagnostics.md'), 'utf8');
+  const documented = [...doc.matchAll(/^\| `(-?W?[a-z-]+)` \|/gm)].map((m) => m[1]);
+  assert.deepEqual([...ids].sort(), documented.sort());
 
   const expected = parseText(text.stderr);
   assert.ok(expected.length >= 3, text.stderr);

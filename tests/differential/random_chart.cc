@@ -103,7 +103,7 @@ public:
     e.kind = GExpr::Kind::Lit;
     e.type = t;
     if (t == Type::Bool) e.text = chance(0.5) ? "true" : "false";
-    else if (t == Type::Int) e.text = o_.octal && chance(0.04) ? "010" : std::to_string(uniform(0, 12));
+    else if (t == Type::Int) e.text = chance(0.04) ? "010" : std::to_string(uniform(0, 12));
     else e.text = pick(kFloatLiterals);
     return e;
   }
@@ -125,7 +125,7 @@ public:
     for (const auto &k : c_.consts)
       if (k.type == t) options.push_back({GExpr::Kind::Const, t, k.name, {}});
     for (const auto &f : c_.functions)
-      if (f.result == t && calls_allowed_) calls.push_back(&f);
+      if (f.result == t) calls.push_back(&f);
     const int n = static_cast<int>(options.size() + calls.size());
     if (n == 0) return std::nullopt;
     int i = uniform(0, n - 1);
@@ -135,43 +135,17 @@ public:
 
   GExpr call(const GFunction &f, int depth) {
     GExpr e{GExpr::Kind::Call, f.result, f.name, {}};
-    Ordered ordered(*this);
     for (Type p : f.params) {
-      bool ints = p == Type::Int && !o_.float_into_int;
+      bool ints = p == Type::Int;
       if (depth <= 0) e.args.push_back(literal(p == Type::Bool ? Type::Bool : ints ? Type::Int : any_numeric()));
       else e.args.push_back(p == Type::Bool ? boolean(std::min(depth, 1)) : number(std::min(depth, 1), ints));
-      ordered.after(e.args.back());
     }
     return e;
   }
 
-  /// With --avoid call-order: once one operand (or argument) calls a function, the ones after
-  /// it call none, so that C's open evaluation order cannot matter.
-  class Ordered {
-  public:
-    explicit Ordered(Gen &g) : g_(g), saved_(g.calls_allowed_) {}
-    ~Ordered() { g_.calls_allowed_ = saved_; }
-    void after(const GExpr &operand) {
-      if (!g_.o_.call_order && has_call(operand)) g_.calls_allowed_ = false;
-    }
-
-  private:
-    Gen &g_;
-    bool saved_;
-  };
-
-  static bool has_call(const GExpr &e) {
-    if (e.kind == GExpr::Kind::Call) return true;
-    for (const auto &a : e.args)
-      if (has_call(a)) return true;
-    return false;
-  }
-
   /// Two operands whose evaluation order C leaves open (not && or ||).
   template <typename Make> std::pair<GExpr, GExpr> operands(Make make) {
-    Ordered ordered(*this);
     GExpr a = make();
-    ordered.after(a);
     GExpr b = make();
     return {a, b};
   }
@@ -223,8 +197,6 @@ public:
       return {GExpr::Kind::Binary, Type::Bool, chance(0.6) ? ">=" : pick(ops), {lhs, rhs}};
     }
     auto [a, b] = operands([&] { return number(depth, false); });
-    Ordered ordered(*this);
-    ordered.after(a);
     return {GExpr::Kind::Binary, Type::Bool, pick(ops), {a, distinct(a, b, [&] { return number(depth, false); })}};
   }
 
@@ -261,8 +233,6 @@ public:
     if (r < 6) return {GExpr::Kind::Binary, Type::Bool, "||", {boolean(depth - 1), boolean(depth - 1)}};
     if (r < 7) {
       auto [a, b] = operands([&] { return boolean(depth - 1); });
-      Ordered ordered(*this);
-      ordered.after(a);
       return {GExpr::Kind::Binary, Type::Bool, chance(0.5) ? "==" : "!=", {a, distinct(a, b, [&] { return boolean(depth - 1); })}};
     }
     if (r < 8) return {GExpr::Kind::Paren, Type::Bool, "", {boolean(depth - 1)}};
@@ -330,7 +300,7 @@ public:
       } else {
         int r = uniform(0, 9);
         s.op = r < 4 ? "=" : r < 7 ? "+=" : "-=";
-        s.expr = number(2, v.type == Type::Int && !o_.float_into_int);
+        s.expr = number(2, v.type == Type::Int);
       }
       return s;
     }
@@ -484,7 +454,6 @@ private:
   GChart &c_;
   const GenOptions &o_;
   std::set<std::string> used_;
-  bool calls_allowed_ = true;
   const std::vector<GChart> *pool_ = nullptr;
   int first_runnable_ = 0;
 

@@ -89,9 +89,6 @@ struct GenOptions {
   bool fsm = false;
   // Constructs that a known, reported bug makes fail, so that a run can look past it
   // (gfec_differential --avoid); by default every construct is generated.
-  bool octal = true;             ///< int literals with a leading zero (`010`)
-  bool float_into_int = true;    ///< float-typed values passed or assigned to ints
-  bool call_order = true;        ///< calls in two operands of one operator or call (C leaves their order open)
   /// Chart elements gfec already warns are dead (fsm states the initial state cannot reach,
   /// fsm transitions shadowed by an unconditional one, `when false`): their engine code is
   /// dead too, which cppcheck reports.

@@ -248,7 +248,7 @@ std::string check_one(const std::string &input) {
     check_range(sources, d.range, "a diagnostic's range lies in its file");
     for (const auto &n : d.notes)
       if (n.has_range) check_range(sources, n.range, "a note's range lies in its file");
-    expect(!d.message.empty() && !d.check.empty(), "a diagnostic has a message and a check name");
+    expect(!d.message.empty() && !d.check().empty(), "a diagnostic has a message and a check name");
     printed += render_text(d, sources);
   }
   if (!validated) return printed;

@@ -104,6 +104,24 @@ plan P {
   CHECK(w.find("010") == std::string::npos);
 }
 
+TEST_CASE("cpp model: a float config value is the double literal rounded to float, as C++ converts it",
+          "[cpp_backend]") {
+  std::string w = wiring(R"(
+import "bot.toolbox";
+plan P {
+  config { float a = 1.00000005960464477550; float b = 0.1; float c = 30; double d = 0.1; }
+  start go;
+  actor go: Go(a + b + c) { ARRIVED -> terminate; STUCK -> terminate; }
+}
+)");
+  // Through a double, 1 + 2^-24 (+ a little less than half a double's step) ties to even: 1.0f;
+  // rounded to float directly it would be 1.00000012f.
+  CHECK(w.find("plan->declare(\"a\", afp::Value(1.0f));") != std::string::npos);
+  CHECK(w.find("plan->declare(\"b\", afp::Value(0.1f));") != std::string::npos);
+  CHECK(w.find("plan->declare(\"c\", afp::Value(30.0f));") != std::string::npos);
+  CHECK(w.find("plan->declare(\"d\", afp::Value(0.1));") != std::string::npos);
+}
+
 TEST_CASE("cpp model: a plan without computed text or int division defines no helpers", "[cpp_backend]") {
   std::string w = wiring(R"(
 import "bot.toolbox";

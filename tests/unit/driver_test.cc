@@ -37,7 +37,7 @@ TEST_CASE("gfec: usage errors exit 2") {
   CHECK(run_command(gfec_exe + " --no-such-option x.sfc").exit_code == 2);
   auto w = run_command(gfec_exe + " -Wno-such-warning x.sfc");
   CHECK(w.exit_code == 2);
-  CHECK(w.out == "gfec: error: unknown warning option '-Wno-such-warning'\n");
+  CHECK(w.out == "gfec: error: unknown warning option '-Wno-such-warning' ('gfec --help' lists the warnings)\n");
   auto missing = run_command(gfec_exe + " does-not-exist.sfc");
   CHECK(missing.exit_code == 2);
   CHECK(missing.out == "gfec: error: cannot read 'does-not-exist.sfc'\n");

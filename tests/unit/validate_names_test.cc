@@ -287,6 +287,29 @@ t.sfc:14:9: error: 'private' is a keyword of C++ and cannot name an actor [reser
 )--");
 }
 
+TEST_CASE("validate: C++20's keywords and the C++ runtime's macros are reserved too (one list, compiler/naming/)",
+          "[validate]") {
+  Run r({{"t.sfc", R"--(interface Robot { void requires(); }
+sfc concept {
+  var int co_await = 0;
+  initial place stdout;
+}
+)--"}});
+  CHECK(r.text() == R"--(t.sfc:1:23: error: 'requires' is a keyword of C++ and cannot name a function [reserved-name]
+ interface Robot { void requires(); }
+                       ^~~~~~~~
+t.sfc:2:5: error: 'concept' is a keyword of C++ and cannot name a chart [reserved-name]
+ sfc concept {
+     ^~~~~~~
+t.sfc:3:11: error: 'co_await' is a keyword of C++ and cannot name a variable [reserved-name]
+   var int co_await = 0;
+           ^~~~~~~~
+t.sfc:4:17: error: 'stdout' is a macro of the C++ standard headers a plan includes and cannot name a place [reserved-name]
+   initial place stdout;
+                 ^~~~~~
+)--");
+}
+
 TEST_CASE("validate: elapsed cannot name a function", "[validate]") {
   Run r({{"t.sfc", R"--(interface Clock {
   int elapsed(int p);

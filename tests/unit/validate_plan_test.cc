@@ -220,7 +220,7 @@ carbot.toolbox:7:34: note: did you mean 'TOUCHED'?
 t.plan:11:42: error: unknown actor 'bb' [unknown-name]
    actor c: Forward(dist) { FORWARD_OK -> bb; supervise lane: CheckLane(dist) { } }
                                           ^~
-t.plan:11:56: error: event 'LANE_NOT_FREE' of 'CheckLane' is not connected [unconnected]
+t.plan:11:56: error: event 'LANE_NOT_FREE' of 'CheckLane' is not connected [not-connected]
    actor c: Forward(dist) { FORWARD_OK -> bb; supervise lane: CheckLane(dist) { } }
                                                         ^~~~
 carbot.toolbox:8:3: note: 'CheckLane' has the events LANE_NOT_FREE
@@ -486,7 +486,7 @@ t.plan:4:39: error: unknown result state 'INTERUPTED' of 'Navigate' [unknown-nam
    actor nav: Navigate(1) { OK -> nav; INTERUPTED -> terminate; }
                                        ^~~~~~~~~~
 t.plan:4:39: note: did you mean 'INTERRUPTED'?
-t.plan:4:9: error: result state 'ERROR' of 'Navigate' is not connected [unconnected]
+t.plan:4:9: error: result state 'ERROR' of 'Navigate' is not connected [not-connected]
    actor nav: Navigate(1) { OK -> nav; INTERUPTED -> terminate; }
          ^~~
 t.plan:4:9: note: a sub-plan's result states are OK, INTERRUPTED, ERROR

@@ -120,7 +120,7 @@ TEST_CASE("validate: hand-made trees with holes do not crash", "[validate]") {
   CHECK(diag.has_errors());
   CHECK(m.charts.size() == 2);
   bool no_input = false;
-  for (const auto &d : diag.all()) no_input = no_input || d.check == "no-input" || d.check == "fsm-transition";
+  for (const auto &d : diag.all()) no_input = no_input || d.check() == "no-input" || d.check() == "fsm-transition";
   CHECK(no_input);
 }
 
