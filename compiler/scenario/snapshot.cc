@@ -28,6 +28,7 @@ model::Expr literal_int(long long v, SourceRange range) {
   e.kind = K::Int;
   e.type = Type::Int;
   e.text = std::to_string(v < 0 ? -v : v);
+  e.int_value = static_cast<std::int32_t>(v < 0 ? -v : v);  // a count or a status: within int
   e.range = range;
   if (v >= 0) return e;
   model::Expr neg;

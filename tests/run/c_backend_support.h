@@ -227,6 +227,9 @@ public:
     e.kind = kind;
     e.text = text;
     e.type = type;
+    // The values the validator would have parsed from the spelling (model.h).
+    if (kind == Expr::Kind::Int) e.int_value = static_cast<std::int32_t>(std::stoll(text));
+    if (kind == Expr::Kind::Float) e.float_value = std::stod(text);
     return e;
   }
   static Expr int_lit(const std::string &text) { return lit(Expr::Kind::Int, text, Type::Int); }
