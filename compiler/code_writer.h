@@ -11,6 +11,7 @@
 #include <iosfwd>
 #include <string>
 #include <string_view>
+#include <utility>
 
 namespace gfec {
 
@@ -39,6 +40,30 @@ public:
 
   void indent() { ++depth_; }
   void dedent() { if (depth_ > 0) --depth_; }
+
+  /// One more level of indentation for as long as it lives; with `close`, the line written at
+  /// the end, one level out (`}`). Neither copied nor moved: the end happens once.
+  class Scope {
+  public:
+    explicit Scope(CodeWriter &w, std::string close = {}) : w_(w), close_(std::move(close)) { w_.indent(); }
+    Scope(const Scope &) = delete;
+    Scope &operator=(const Scope &) = delete;
+    ~Scope() {
+      w_.dedent();
+      if (!close_.empty()) w_.line(std::string_view(close_));
+    }
+
+  private:
+    CodeWriter &w_;
+    std::string close_;
+  };
+  /// `auto scope = w.indented();`: what follows, to the end of the C++ scope, one level in.
+  [[nodiscard]] Scope indented() { return Scope(*this); }
+  /// `auto scope = w.block("if (x) {");`: the line, then what follows one level in, then `}`.
+  [[nodiscard]] Scope block(std::string_view open, std::string close = "}") {
+    line(open);
+    return Scope(*this, std::move(close));
+  }
 
   /// `#line N "chart.sfc"`: what follows comes from `range`. Does nothing when directives are off.
   void line_from(const SourceManager &sources, const SourceRange &range);

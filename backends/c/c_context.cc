@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <functional>
+#include <set>
 
 namespace gfec::c_backend {
 
@@ -174,6 +176,22 @@ bool stop_runs_code(const Context &c) {
 
 void build(Context &c, NameSpace &globals, const Context *root);
 
+/// The names of the split sequential form's parts (Context::part_base): every one free, or the
+/// base takes a trailing `_`, as an instance's prefix does.
+void name_parts(Context &c, NameSpace &globals) {
+  auto each = [&](const std::function<bool(const std::string &)> &f) {
+    bool all = true;
+    for (const char *kind : Context::kPartKinds) {
+      all = all && f(c.part_table(kind));
+      for (std::size_t k = 0; all && k < c.part_count(); ++k) all = f(c.part_fn(kind, k));
+    }
+    return all;
+  };
+  c.part_base = c.type;
+  while (!each([&](const std::string &n) { return globals.free(n); })) c.part_base += '_';
+  each([&](const std::string &n) { globals.claim(n); return true; });
+}
+
 /// The instance that place `p` of `c` runs: its names follow the path (`Patrol_Search`), and
 /// move aside (a trailing `_`) if any of them is taken, so that the whole file stays unique.
 std::unique_ptr<Context> make_instance(const Context &c, int p, NameSpace &globals, const Context *root) {
@@ -220,6 +238,7 @@ void build(Context &c, NameSpace &globals, const Context *root) {
   std::vector<bool> watched;
   for (int p = 0; p < static_cast<int>(c.chart.places.size()); ++p) watched.push_back(c.watched(p));
   c.layout = plan_layout(c.chart, c.options.engine, std::move(watched));
+  if (c.layout.part_places > 0) name_parts(c, globals);
 }
 
 /// The interface functions of the chart and of every instance below it, each once, the chart's

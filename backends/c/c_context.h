@@ -58,6 +58,14 @@ struct Context {
   std::string watched_fn;      ///< whether a place runs exit/entry code or resets a timer
   std::string active_levels;   ///< where the levels of the active set begin
   std::string candidate_levels;///< where the levels of the candidate set begin
+  /// The split sequential form (Layout::part_places): part `k` of the switch `kind` (one of
+  /// kPartKinds) is the function `<part_base>_<kind>_<k>`, and the table of a switch's parts is
+  /// `<part_base>_<kind>_parts`; part_base is the type, moved aside if a name is taken.
+  std::string part_base;
+  static constexpr const char *kPartKinds[] = {"time", "update", "exit", "enter", "hook", "act"};
+  std::size_t part_count() const { return (chart.places.size() + layout.part_places - 1) / layout.part_places; }
+  std::string part_fn(const char *kind, std::size_t k) const { return part_base + "_" + kind + "_" + std::to_string(k); }
+  std::string part_table(const char *kind) const { return part_base + "_" + kind + "_parts"; }
 
   // Struct fields: chart variables keep their own names; the engine's own fields give way
   // (take a trailing `_`) if a variable already has their name.

@@ -156,7 +156,10 @@ Layout plan_layout(const model::Chart &chart, EngineForm requested, std::vector<
   if (!scalable || chart.kind != model::Chart::Kind::Sfc) return l;
   l.form = sequential ? Layout::Form::Sequential : Layout::Form::Sparse;
   l.index_bits = bits_for(chart.places.size());
-  if (l.form == Layout::Form::Sequential) return l;
+  if (l.form == Layout::Form::Sequential) {
+    if (chart.places.size() > kSplitAbovePlaces) l.part_places = kPartPlaces;
+    return l;
+  }
   l.saturate = !l.bounded;
   l.place_driven = choose_owners(chart, l.owner);
   l.active = bit_levels(chart.places.size());

@@ -26,6 +26,13 @@ namespace gfec::c_backend {
 /// Charts with more places than this get the scalable form unless told otherwise.
 constexpr std::size_t kReadableMaxPlaces = 64;
 
+/// The sequential form of a chart with more places than this is split (docs/c-engine.md, "Large
+/// charts"): each switch on the active place becomes file-local part functions of kPartPlaces
+/// places each, called through a table. One function with a case per place costs gcc -O2 time and
+/// memory that grow faster than the chart (docs/performance.md); the parts keep each function small.
+constexpr std::size_t kSplitAbovePlaces = 1024;
+constexpr std::size_t kPartPlaces = 256;
+
 /// A set of numbers 0..n-1 as 32-bit words (level 0) with summary levels above it: bit j of
 /// level k+1 says that word j of level k is not empty. The top level is one word.
 struct BitLevels {
@@ -46,6 +53,9 @@ struct Layout {
   std::uint64_t tokens = 0; ///< bounded: the total activation never exceeds this
   int counter_bits = 32;    ///< 8, 16 or 32: the narrowest type that holds `bound`
   bool saturate = true;     ///< not bounded: counters stop at UINT32_MAX instead of wrapping
+
+  // ---- the sequential form
+  std::size_t part_places = 0;  ///< 0: one run function; else the switches' parts of this many places
 
   // ---- the sparse form
   int index_bits = 32;          ///< 8, 16 or 32: a type for place numbers (lists of places)

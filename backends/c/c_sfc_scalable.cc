@@ -9,6 +9,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <functional>
+
 namespace gfec::c_backend {
 
 namespace {
@@ -56,8 +59,7 @@ protected:
   void first_tick() {
     if (!c_.needs_started) return;
     section("/* First tick: the initial places enter */");
-    w_.line("if (!{}) {{", c_.field(c_.started));
-    w_.indent();
+    auto scope = w_.block(fmt::format("if (!{}) {{", c_.field(c_.started)));
     std::vector<std::vector<std::string>> text;
     for (const auto &p : c_.chart.places)
       text.push_back(p.initial && has_code(p.entry) ? c_statements(c_, *p.entry, temps_) : std::vector<std::string>{});
@@ -71,8 +73,6 @@ protected:
         w_.line_back();
       }
     }
-    w_.dedent();
-    w_.line("}");
   }
 
   /// `case X_P:` with the chart's statements (and lines of engine code `first` before them and
@@ -149,15 +149,19 @@ private:
 
 // ------------------------------------------------------------------------------ sequential
 
-/// One place is ever active: the state is its number, and a tick is a switch on it.
+/// One place is ever active: the state is its number, and a tick is a switch on it. Above
+/// kSplitAbovePlaces places each switch is split into parts (c_layout.h): file-local functions
+/// of kPartPlaces places each, written before the run function, which calls the part that holds
+/// the place through a table (a table, not a direct call: gcc would inline a function called
+/// once back into one large function).
 class SequentialRun : public ScalableRun {
 public:
   using ScalableRun::ScalableRun;
 
   void emit() {
+    if (split()) parts();
     w_.line("{}void {}({} *{})", c_.linkage, c_.run_fn, c_.struct_type, c_.self);
-    w_.line("{");
-    w_.indent();
+    auto body = w_.block("{");
     declarations();
     first_tick();
     count_time();
@@ -165,12 +169,136 @@ public:
     exits_and_entries();
     hooks();
     actions();
-    w_.dedent();
-    w_.line("}");
   }
 
 private:
+  /// A switch on a place number: `kind` names its parts (Context::kPartKinds); `has(p)`: place
+  /// `p` has a case, which `write(p)` writes.
+  struct PlaceSwitch {
+    const char *kind;
+    std::function<bool(int)> has;
+    std::function<void(int)> write;
+  };
+
   std::string current() const { return c_.field(c_.current); }
+  bool split() const { return c_.layout.part_places > 0; }
+  const char *place_type() const { return uint_type(c_.layout.index_bits); }
+  bool any(const PlaceSwitch &s) const {
+    for (int p = 0; p < places(); ++p)
+      if (s.has(p)) return true;
+    return false;
+  }
+
+  // The switches, and whether the run function uses them (their parts exist only then: an unused
+  // static function is a warning).
+  PlaceSwitch time_switch() {
+    return {"time", [this](int p) { return c_.place(p).timed; },
+            [this](int p) { w_.line("case {0}: if ({1} < UINT32_MAX) {{ {1}++; }} break;", constant(p), c_.timer_of(p)); }};
+  }
+  bool counts_time() const { return c_.has_timers; }
+  /// The transitions leaving a place, in declaration order, up to the first that always fires
+  /// (the ones after it are never open).
+  std::vector<std::size_t> tried(int p) const {
+    std::vector<std::size_t> t;
+    for (std::size_t i : owned(p)) {
+      t.push_back(i);
+      if (!c_.chart.transitions[i].condition) break;
+    }
+    return t;
+  }
+  PlaceSwitch update_switch() {
+    return {"update", [this](int p) { return !owned(p).empty(); }, [this](int p) { update_case(p); }};
+  }
+  void update_case(int p) {
+    std::vector<std::size_t> ts = tried(p);
+    std::vector<std::string> test = conditions(ts, true);
+    case_begin(constant(p));
+    for (std::size_t k = 0; k < ts.size(); ++k) {
+      const auto &t = c_.chart.transitions[ts[k]];
+      w_.line("/* {}: {} */", t.name, transition_label(c_, t));
+      transition_test(t, "", test[k]);
+      w_.line("    {} = {};", current(), constant(t.outputs.front()));
+      w_.line("    break;");
+      w_.line("}");
+    }
+    w_.line("break;");
+    case_end();
+  }
+  PlaceSwitch exit_switch() {
+    return {"exit", [this](int p) { return c_.runs_exit(p); }, [this](int p) { case_block(p, exit_of(p), c_.stop_call(p)); }};
+  }
+  PlaceSwitch entry_switch() {
+    return {"enter", [this](int p) { return c_.runs_entry(p) || c_.resets_timer(p); }, [this](int p) { entry_case(p); }};
+  }
+  PlaceSwitch hook_switch() {
+    return {"hook", [this](int p) { return !owned(p).empty(); },
+            [this](int p) {
+              std::string calls;
+              for (std::size_t t : owned(p)) calls += fmt::format(" {}({}, {});", c_.enabled_fn, c_.self, c_.transition_const[t]);
+              w_.line("case {}:{} break;", constant(p), calls);
+            }};
+  }
+  bool hooks_transitions() const { return !c_.chart.transitions.empty() && c_.hooks(); }
+  PlaceSwitch action_switch() {
+    return {"act", [this](int p) { return c_.acts(p); }, [this](int p) { case_block(p, c_.place(p).action, {}, c_.tick_call(p)); }};
+  }
+
+  /// `switch (value) { <the cases> }`, or in the split form the call of the part holding `value`.
+  void place_switch(const PlaceSwitch &s, const std::string &value) {
+    if (split()) {
+      w_.line("{}[{} / {}u]({}, {});", c_.part_table(s.kind), value, c_.layout.part_places, c_.self, value);
+      return;
+    }
+    w_.line("switch ({}) {{", value);
+    for (int p = 0; p < places(); ++p)
+      if (s.has(p)) s.write(p);
+    switch_end();
+  }
+
+  /// The split form: each switch the run function uses, as parts and their table.
+  void parts() {
+    if (counts_time()) switch_parts(time_switch());
+    if (!c_.chart.transitions.empty()) switch_parts(update_switch());
+    if (c_.needs_snapshot()) {
+      PlaceSwitch exits = exit_switch(), entries = entry_switch();
+      if (any(exits)) switch_parts(exits);
+      if (any(entries)) switch_parts(entries);
+    }
+    if (hooks_transitions()) {
+      directive(w_, "#ifdef " + c_.hooks_macro);
+      switch_parts(hook_switch());
+      directive(w_, "#endif");
+    }
+    if (any_actions()) switch_parts(action_switch());
+  }
+
+  void switch_parts(const PlaceSwitch &s) {
+    const std::size_t n = c_.part_count(), size = c_.layout.part_places;
+    w_.line("/* The {} switch, in parts of {} places (docs/c-engine.md, \"Large charts\") */", s.kind, size);
+    for (std::size_t k = 0; k < n; ++k) {
+      w_.line("static void {}({} *{}, {} {})", c_.part_fn(s.kind, k), c_.struct_type, c_.self, place_type(), c_.index);
+      {
+        auto body = w_.block("{");
+        w_.line("(void){}; /* not every part reads the engine */", c_.self);
+        w_.line("switch ({}) {{", c_.index);
+        for (std::size_t p = k * size; p < std::min((k + 1) * size, c_.chart.places.size()); ++p)
+          if (s.has(static_cast<int>(p))) s.write(static_cast<int>(p));
+        switch_end();
+      }
+      w_.blank();
+    }
+    w_.line("static void (*const {}[{}])({} *, {}) = {{", c_.part_table(s.kind), n, c_.struct_type, place_type());
+    std::string row;
+    for (std::size_t k = 0; k < n; ++k) {
+      row += (row.empty() ? "" : " ") + c_.part_fn(s.kind, k) + (k + 1 < n ? "," : "");
+      if (row.size() > 80 || k + 1 == n) {
+        w_.line("    {}", row);
+        row.clear();
+      }
+    }
+    w_.line("};");
+    w_.blank();
+  }
 
   void declarations() {
     if (c_.chart.transitions.empty()) {
@@ -183,19 +311,14 @@ private:
     if (!c_.needs_snapshot() && !c_.hooks()) return;
     section("");
     if (!c_.needs_snapshot()) directive(w_, "#ifdef " + c_.hooks_macro);
-    w_.line("{} {} = {}; /* the active place at the start of the tick */", uint_type(c_.layout.index_bits), c_.from,
-            current());
+    w_.line("{} {} = {}; /* the active place at the start of the tick */", place_type(), c_.from, current());
     if (!c_.needs_snapshot()) directive(w_, "#endif");
   }
 
   void count_time() {
-    if (!c_.has_timers) return;
+    if (!counts_time()) return;
     section("/* Count the ticks of the active place, if it has a timer */");
-    w_.line("switch ({}) {{", current());
-    for (int p = 0; p < places(); ++p)
-      if (c_.place(p).timed)
-        w_.line("case {0}: if ({1} < UINT32_MAX) {{ {1}++; }} break;", constant(p), c_.timer_of(p));
-    switch_end();
+    place_switch(time_switch(), current());
   }
 
   /// The transitions leaving the active place, in declaration order; the first whose condition
@@ -204,98 +327,50 @@ private:
     if (c_.chart.transitions.empty()) return;
     section("/* Perform state update: the transitions leaving the active place, in declaration order;");
     w_.line("   the first whose condition holds takes the activation */");
-    w_.line("switch ({}) {{", current());
-    for (int p = 0; p < places(); ++p) {
-      // The transitions tried: up to the first that always fires (the ones after it are never open).
-      std::vector<std::size_t> tried;
-      for (std::size_t i : owned(p)) {
-        tried.push_back(i);
-        if (!c_.chart.transitions[i].condition) break;
-      }
-      if (tried.empty()) continue;
-      std::vector<std::string> test = conditions(tried, true);
-      case_begin(constant(p));
-      for (std::size_t k = 0; k < tried.size(); ++k) {
-        const auto &t = c_.chart.transitions[tried[k]];
-        w_.line("/* {}: {} */", t.name, transition_label(c_, t));
-        transition_test(t, "", test[k]);
-        w_.line("    {} = {};", current(), constant(t.outputs.front()));
-        w_.line("    break;");
-        w_.line("}");
-      }
-      w_.line("break;");
-      case_end();
-    }
-    switch_end();
+    place_switch(update_switch(), current());
   }
 
   void exits_and_entries() {
     if (!c_.needs_snapshot()) return;
     section("/* Leave the place left, then enter the place entered */");
-    w_.line("if ({} != {}) {{", current(), c_.from);
-    w_.indent();
-    bool exits = false;
-    for (int p = 0; p < places(); ++p) exits = exits || c_.runs_exit(p);
-    if (exits) {
-      w_.line("switch ({}) {{", c_.from);
-      for (int p = 0; p < places(); ++p)
-        if (c_.runs_exit(p)) case_block(p, exit_of(p), c_.stop_call(p));
-      switch_end();
-    }
-    bool entries = false;
-    for (int p = 0; p < places(); ++p) entries = entries || c_.runs_entry(p) || c_.resets_timer(p);
-    if (entries) {
-      w_.line("switch ({}) {{", current());
-      for (int p = 0; p < places(); ++p)
-        if (c_.runs_entry(p) || c_.resets_timer(p)) entry_case(p);
-      switch_end();
-    }
+    auto scope = w_.block(fmt::format("if ({} != {}) {{", current(), c_.from));
+    PlaceSwitch exits = exit_switch(), entries = entry_switch();
+    if (any(exits)) place_switch(exits, c_.from);
+    if (any(entries)) place_switch(entries, current());
     // The hooks go inside the same test: a second `if` on the same condition right after it is
     // what cppcheck calls a duplicate condition when the exit and entry code leave it alone.
     // Instances have no hooks (docs/c-engine.md).
-    if (!c_.chart.transitions.empty() && c_.hooks()) {
+    if (hooks_transitions()) {
       directive(w_, "#ifdef " + c_.hooks_macro);
       w_.line("/* Observation hooks: the place left and the place entered; the transitions leaving it */");
       hook_calls();
       directive(w_, "#endif");
     }
-    w_.dedent();
-    w_.line("}");
   }
 
   void hooks() {
-    if (c_.chart.transitions.empty() || !c_.hooks() || c_.needs_snapshot()) return;
+    if (!hooks_transitions() || c_.needs_snapshot()) return;
     section("");
     directive(w_, "#ifdef " + c_.hooks_macro);
     w_.line("/* Observation hooks: the place left and the place entered; the transitions leaving it */");
-    w_.line("if ({} != {}) {{", current(), c_.from);
-    w_.indent();
-    hook_calls();
-    w_.dedent();
-    w_.line("}");
+    {
+      auto scope = w_.block(fmt::format("if ({} != {}) {{", current(), c_.from));
+      hook_calls();
+    }
     directive(w_, "#endif");
   }
 
   void hook_calls() {
     w_.line("{}({}, (int){}, false);", c_.activated_fn, c_.self, c_.from);
     w_.line("{}({}, (int){}, true);", c_.activated_fn, c_.self, current());
-    w_.line("switch ({}) {{", current());
-    for (int p = 0; p < places(); ++p) {
-      std::string calls;
-      for (std::size_t t : owned(p)) calls += fmt::format(" {}({}, {});", c_.enabled_fn, c_.self, c_.transition_const[t]);
-      if (!calls.empty()) w_.line("case {}:{} break;", constant(p), calls);
-    }
-    switch_end();
+    place_switch(hook_switch(), current());
   }
 
   void actions() {
     if (!any_actions()) return;
     section(c_.has_sub() ? "/* Perform the action of the active place, then one tick of the instance it runs */"
                          : "/* Perform the action of the active place */");
-    w_.line("switch ({}) {{", current());
-    for (int p = 0; p < places(); ++p)
-      if (c_.acts(p)) case_block(p, c_.place(p).action, {}, c_.tick_call(p));
-    switch_end();
+    place_switch(action_switch(), current());
   }
 };
 
@@ -308,8 +383,7 @@ public:
 
   void emit() {
     w_.line("{}void {}({} *{})", c_.linkage, c_.run_fn, c_.struct_type, c_.self);
-    w_.line("{");
-    w_.indent();
+    auto body = w_.block("{");
     declarations();
     first_tick();
     count_time();
@@ -319,8 +393,6 @@ public:
     exits_and_entries();
     hooks();
     actions();
-    w_.dedent();
-    w_.line("}");
   }
 
 private:
@@ -424,14 +496,12 @@ private:
     std::string inputs;
     for (int p : t.inputs) inputs += (inputs.empty() ? "" : " && ") + c_.av_of(p);
     transition_test(t, inputs, condition);
-    w_.indent();
+    CodeWriter::Scope scope(w_, "}");  // the block transition_test opened
     for (int p : t.inputs) {
       std::string lost = c_.watched(p) ? fmt::format(" {}[{}++] = {};", c_.lost, c_.lost_n, constant(p)) : "";
       w_.line("if (--{} == 0u) {{ {}({}, 0u, {});{} }}", c_.av_of(p), c_.erase_fn, active_set_args(), constant(p), lost);
     }
     for (int q : t.outputs) w_.line("{}[{}++] = {};", c_.add, c_.add_n, constant(q));
-    w_.dedent();
-    w_.line("}");
   }
   std::string active_set_args() const {
     return fmt::format("{}, {}, {}u", c_.field(c_.active), c_.active_levels, l().active.levels());
@@ -482,8 +552,7 @@ private:
     if (!has_transitions()) return;
     section("/* Commit the activation produced in this tick */");
     const std::string &i = c_.i, &p = c_.index;
-    w_.line("for ({0} = 0; {0} < {1}; ++{0}) {{", i, c_.add_n);
-    w_.indent();
+    auto scope = w_.block(fmt::format("for ({0} = 0; {0} < {1}; ++{0}) {{", i, c_.add_n));
     w_.line("{}{} = {}[{}];", c_.hooks() ? "" : "uint32_t ", p, c_.add, i);
     std::string av = fmt::format("{}[{}]", c_.field(c_.av), p);
     if (l().saturate) w_.line("if ({} == UINT32_MAX) {{ continue; }} /* saturated: see docs/c-engine.md */", av);
@@ -491,8 +560,6 @@ private:
     w_.line("    {}({}, {});", c_.insert_fn, active_set(), p);
     if (l().watch_capacity > 0)
       w_.line("    if ({}({})) {{ {}[{}++] = ({}){}; }}", c_.watched_fn, p, c_.gained, c_.gained_n, place_type(), p);
-    w_.line("}");
-    w_.dedent();
     w_.line("}");
   }
 
@@ -510,18 +577,14 @@ private:
     bool exits = false;
     for (int p = 0; p < places(); ++p) exits = exits || c_.runs_exit(p);
     if (exits) {
-      w_.line("for ({0} = 0; {0} < {1}; ++{0}) {{", i, c_.lost_n);
-      w_.indent();
+      auto scope = w_.block(fmt::format("for ({0} = 0; {0} < {1}; ++{0}) {{", i, c_.lost_n));
       w_.line("if ({}[{}[{}]] != 0u) {{ continue; }} /* lost and regained: still active */", c_.field(c_.av), c_.lost, i);
       w_.line("switch ({}[{}]) {{", c_.lost, i);
       for (int p = 0; p < places(); ++p)
         if (c_.runs_exit(p)) case_block(p, exit_of(p), c_.stop_call(p));
       switch_end();
-      w_.dedent();
-      w_.line("}");
     }
-    w_.line("for ({0} = 0, {1} = 0; {0} < {2}; ++{0}) {{", i, j, c_.gained_n);
-    w_.indent();
+    auto scope = w_.block(fmt::format("for ({0} = 0, {1} = 0; {0} < {2}; ++{0}) {{", i, j, c_.gained_n));
     w_.line("while ({0} < {1} && {2}[{0}] < {3}[{4}]) {{ ++{0}; }}", j, c_.lost_n, c_.lost, c_.gained, i);
     w_.line("if ({0} < {1} && {2}[{0}] == {3}[{4}]) {{ continue; }} /* lost and regained: no entry, the timer goes on */",
             j, c_.lost_n, c_.lost, c_.gained, i);
@@ -529,8 +592,6 @@ private:
     for (int p = 0; p < places(); ++p)
       if (c_.runs_entry(p) || c_.resets_timer(p)) entry_case(p);
     switch_end();
-    w_.dedent();
-    w_.line("}");
   }
 
   /// The observation hooks, compiled only with -DX_HOOKS: the start of the tick against its

@@ -951,7 +951,9 @@ void annotate_elements(Diagnostics &diag, const LoadResult &loaded) {
   };
   for (Diagnostic &d : diag.all()) {
     // The ALICA reader's own messages name their element already.
-    if (d.check == "json" || d.check.rfind("alica", 0) == 0 || d.check == "-Walica-ignored") continue;
+    if (d.kind == &kind_info(ErrorKind::Json) || d.kind == &kind_info(ErrorKind::AlicaFormat) ||
+        d.kind == &kind_info(ErrorKind::AlicaReference) || d.kind == &kind_info(Warning::AlicaIgnored))
+      continue;
     for (auto &n : d.notes)
       if (n.has_range)
         if (const SourceElement *e = describe(n.range)) n.message += fmt::format(" ({})", e->description);

@@ -4,6 +4,7 @@
 // whose calls, hooks and activation are printed in the harness's log format; the logs must match.
 #include "../run/c_backend_support.h"
 
+#include "c_layout.h"
 #include "interpreter/engine.h"
 #include "interpreter/event_log.h"
 #include "roots.h"
@@ -208,9 +209,32 @@ std::string random_sfc(unsigned seed) {
   return s + "}\n";
 }
 
+/// A sequential chart of `places` places, large enough for the split form (c_layout.h): each place
+/// goes on to the next, some jump far (to other parts), some have timers, entry, exit and action
+/// blocks, so every switch of the form has cases in many parts.
+std::string large_sequential_sfc(int places) {
+  std::string s = "interface RandomBot {\n  bool B0();\n  bool B1();\n  bool B2();\n  int Level();\n"
+                  "  void Act(int n);\n  void Beep();\n}\n\nsfc Large {\n  period 10ms;\n  var int n = 0;\n";
+  for (int p = 0; p < places; ++p) {
+    std::string body;
+    if (p % 5 == 1) body += " entry { Beep(); }";
+    if (p % 7 == 2) body += " exit { n += 1; }";
+    if (p % 2 == 0) body += fmt::format(" Act({});", p);
+    if (p % 11 == 3) body += " Act(n);";
+    s += fmt::format("  {}place P{} {{{} }}\n", p == 0 ? "initial " : "", p, body);
+  }
+  for (int p = 0; p < places; ++p) {
+    if (p % 3 == 0) s += fmt::format("  transition P{} -> P{} when B1() && !B2();\n", p, (p * 397 + 131) % places);
+    if (p % 13 == 4) s += fmt::format("  transition P{} -> P{} when elapsed(P{}) >= 20ms;\n", p, (p + 1) % places, p);
+    else s += fmt::format("  transition P{} -> P{} when B0();\n", p, (p + 1) % places);
+  }
+  return s + "}\n";
+}
+
 /// One chart in every engine form against the interpreter, on `scripts` random scripts.
-void check_forms(const std::string &name, const std::map<std::string, std::string> &files, int scripts) {
-  for (auto form : {EngineForm::Readable, EngineForm::Scalable}) {
+void check_forms(const std::string &name, const std::map<std::string, std::string> &files, int scripts,
+                 const std::vector<EngineForm> &forms = {EngineForm::Readable, EngineForm::Scalable}) {
+  for (auto form : forms) {
     const char *form_name = form == EngineForm::Readable ? "readable" : "scalable";
     auto compiled = compile_chart(files, name, "engine.c", true, form);
     INFO(form_name << " engine of " << name << "\n" << compiled->errors);
@@ -247,4 +271,17 @@ TEST_CASE("c engine: both forms agree with the interpreter on random charts", "[
       check_forms(fmt::format("random{}.sfc", seed), {{fmt::format("random{}.sfc", seed), text}}, 1);
     }
   }
+}
+
+TEST_CASE("c engine: the split sequential form of a large chart agrees with the interpreter",
+          "[c_backend][run][differential]") {
+  // Above kSplitAbovePlaces places each switch of the sequential form is written in parts
+  // called through tables (docs/c-engine.md, "Large charts"); hooks on (the harness's -DX_HOOKS).
+  const int places = static_cast<int>(gfec::c_backend::kSplitAbovePlaces) + 100;
+  std::string text = large_sequential_sfc(places);
+  auto compiled = compile_chart({{"large.sfc", text}}, "large.sfc", "engine.c", true, EngineForm::Scalable);
+  REQUIRE(!compiled->diag.has_errors());
+  REQUIRE(!compiled->files.empty());
+  CHECK(compiled->files.front().contents.find("Large_update_parts[m->current / ") != std::string::npos);
+  check_forms("large.sfc", {{"large.sfc", text}}, 3, {EngineForm::Scalable});
 }

@@ -37,6 +37,16 @@ TEST_CASE("c layout: small charts stay readable, large ones become scalable", "[
   CHECK(layout_of(large, EngineForm::Readable).form == Layout::Form::Readable);
 }
 
+TEST_CASE("c layout: the sequential form is split in parts only above a size", "[c_backend][layout]") {
+  auto at = ring(static_cast<int>(gfec::c_backend::kSplitAbovePlaces));
+  CHECK(layout_of(at).part_places == 0);
+  auto above = ring(static_cast<int>(gfec::c_backend::kSplitAbovePlaces) + 1);
+  Layout l = layout_of(above);
+  CHECK(l.form == Layout::Form::Sequential);
+  CHECK(l.part_places == gfec::c_backend::kPartPlaces);
+  CHECK(layout_of(above, EngineForm::Readable).part_places == 0);
+}
+
 TEST_CASE("c layout: a ring with one token is sequential and 1-bounded", "[c_backend][layout]") {
   auto b = ring(300);
   Layout l = layout_of(b);
