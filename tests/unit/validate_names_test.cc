@@ -295,9 +295,9 @@ sfc concept {
   initial place stdout;
 }
 )--"}});
-  CHECK(r.text() == R"--(t.sfc:1:23: error: 'requires' is a keyword of C++ and cannot name a function [reserved-name]
+  CHECK(r.text() == R"--(t.sfc:1:24: error: 'requires' is a keyword of C++ and cannot name a function [reserved-name]
  interface Robot { void requires(); }
-                       ^~~~~~~~
+                        ^~~~~~~~
 t.sfc:2:5: error: 'concept' is a keyword of C++ and cannot name a chart [reserved-name]
  sfc concept {
      ^~~~~~~
