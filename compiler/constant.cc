@@ -94,23 +94,12 @@ template <typename T> Outcome float_arithmetic(BinaryOp op, T a, T b, Type t) {
   }
 }
 
-template <typename T> bool compare(BinaryOp op, T a, T b) {
-  switch (op) {
-  case BinaryOp::Lt: return a < b;
-  case BinaryOp::Le: return a <= b;
-  case BinaryOp::Gt: return a > b;
-  case BinaryOp::Ge: return a >= b;
-  case BinaryOp::Eq: return a == b;
-  default: return a != b;
-  }
-}
-
 bool is_comparison(BinaryOp op) {
-  return op == BinaryOp::Lt || op == BinaryOp::Le || op == BinaryOp::Gt || op == BinaryOp::Ge ||
-         op == BinaryOp::Eq || op == BinaryOp::Ne;
+  return op == BinaryOp::Lt || op == BinaryOp::Le || op == BinaryOp::Gt || op == BinaryOp::Ge || op == BinaryOp::Eq ||
+         op == BinaryOp::Ne;
 }
 
-} // namespace
+}  // namespace
 
 std::optional<std::int32_t> int_literal(std::string_view spelling) {
   if (spelling.empty()) return std::nullopt;
@@ -195,7 +184,8 @@ Outcome binary(BinaryOp op, const Value &a, const Value &b) {
     if (!x || !y) return fault(Fault::BadOperands);
     return ok(Value::of_string(x.value.s + y.value.s));
   }
-  if (is_comparison(op) && a.type == Type::Bool && b.type == Type::Bool) return ok(Value::of_bool(compare(op, a.b, b.b)));
+  if (is_comparison(op) && a.type == Type::Bool && b.type == Type::Bool)
+    return ok(Value::of_bool(compare(op, a.b, b.b)));
   if (!model::is_numeric(a.type) || !model::is_numeric(b.type)) return fault(Fault::BadOperands);
   const Type t = common_type(a.type, b.type);
   const Value x = convert(a, t).value, y = convert(b, t).value;  // int to floating always converts
@@ -238,4 +228,4 @@ const char *describe(Fault f) {
   return "?";
 }
 
-} // namespace gfec::constant
+}  // namespace gfec::constant

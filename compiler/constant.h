@@ -1,5 +1,5 @@
 // The one evaluator of the language's values with C's semantics (docs/language.md, "Constants";
-// docs/internals.md, "Constants"). The validator folds constant expressions with it, the
+// docs/architecture.md, "Constants and literal values"). The validator folds constant expressions with it, the
 // interpreter computes with it at run time, and the literals' values the model stores come from
 // its parsers: compiler, interpreter and generated C can only disagree where C itself would.
 //
@@ -73,6 +73,20 @@ Outcome unary(UnaryOp op, const Value &a);
 /// caller short-circuits); `+` with a string operand joins text (plan formulas).
 Outcome binary(BinaryOp op, const Value &a, const Value &b);
 
+/// `a OP b` for a comparison operator (<, <=, >, >=, ==, !=), both sides of type T: the one
+/// comparison of the evaluator and the interpreter.
+template <typename T> bool compare(BinaryOp op, T a, T b) {
+  switch (op) {
+  case BinaryOp::Lt: return a < b;
+  case BinaryOp::Le: return a <= b;
+  case BinaryOp::Gt: return a > b;
+  case BinaryOp::Ge: return a >= b;
+  case BinaryOp::Eq: return a == b;
+  case BinaryOp::Ne: return a != b;
+  default: return false;  // not a comparison
+  }
+}
+
 /// A value as text: strings as they are, ints in decimal, floats with the shortest digits that
 /// read back as the same float (or double), bools as `true`/`false`.
 std::string text(const Value &v);
@@ -84,4 +98,4 @@ std::string float_spelling(double f, model::Type t);
 /// A short description of a fault, for messages: "integer overflow", "division by zero", ...
 const char *describe(Fault f);
 
-} // namespace gfec::constant
+}  // namespace gfec::constant

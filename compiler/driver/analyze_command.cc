@@ -17,10 +17,10 @@ namespace {
 /// The warnings the analyses give: all on for --analyze, unless the command line turned one off.
 WarningOptions analysis_warnings(const Options &o) {
   WarningOptions w = o.warnings;
-  const Warning analyses[] = {Warning::UnreachablePlace, Warning::DeadTransition, Warning::UnsafePlace,
-                              Warning::UnboundedPlace,   Warning::Deadlock,       Warning::DeadJoin,
-                              Warning::UnjoinedFork,     Warning::AnalysisLimit,  Warning::TrapState,
-                              Warning::ShadowedTransition, Warning::UninitializedConfig, Warning::SupervisorRace};
+  const Warning analyses[] = {
+      Warning::UnreachablePlace, Warning::DeadTransition,     Warning::UnsafePlace,         Warning::UnboundedPlace,
+      Warning::Deadlock,         Warning::DeadJoin,           Warning::UnjoinedFork,        Warning::AnalysisLimit,
+      Warning::TrapState,        Warning::ShadowedTransition, Warning::UninitializedConfig, Warning::SupervisorRace};
   WarningOptions defaults;
   for (Warning a : analyses)
     if (w.is_on(a) || w.is_on(a) == defaults.is_on(a)) w.set(a, true);
@@ -47,18 +47,13 @@ int analyze_one(const std::string &input, const Options &o, DiagnosticReport &re
   return kExitOk;
 }
 
-} // namespace
+}  // namespace
 
 int analyze_command(const Options &o, std::ostream &out, std::ostream &err) {
   auto report = make_report(o, err);
   int worst = kExitOk;
   for (const auto &input : o.inputs) worst = std::max(worst, analyze_one(input, o, *report, out));
-  std::string failure = report->finish(worst);
-  if (!failure.empty()) {
-    err << "gfec: error: " << failure << "\n";
-    return kExitUsageOrIo;
-  }
-  return worst;
+  return finish_report(*report, worst, err);
 }
 
-} // namespace gfec
+}  // namespace gfec

@@ -121,9 +121,14 @@ int compile(const Options &o, DiagnosticReport &report, std::ostream &out) {
   }
   const BackendInfo &info = chosen_backend ? *chosen_backend : default_backend(target.kind);
   if (!info.accepts_kind(target.kind)) {
-    report.tool_error(input, fmt::format("--emit={} compiles {} only; '{}' is {}", info.name, accepted_kinds(info), target.name,
-                                         target.kind == pipeline::kSfc ? "sfc" : target.kind == pipeline::kFsm ? "fsm"
-                                         : target.kind == pipeline::kPlan ? "plan" : "toolbox", target.name),
+    report.tool_error(input,
+                      fmt::format("--emit={} compiles {} only; '{}' is {}", info.name, accepted_kinds(info),
+                                  target.name,
+                                  target.kind == pipeline::kSfc    ? "sfc"
+                                  : target.kind == pipeline::kFsm  ? "fsm"
+                                  : target.kind == pipeline::kPlan ? "plan"
+                                                                   : "toolbox",
+                                  target.name),
                       true);
     return kExitUsageOrIo;
   }
@@ -141,8 +146,10 @@ int compile(const Options &o, DiagnosticReport &report, std::ostream &out) {
   if (o.output == "-") {
     // "-o -": the one output on stdout, for pipes (gfec --emit=dot x.sfc -o - | dot -Tpng).
     if (!info.single_file()) {
-      report.tool_error(input, fmt::format("-o - needs a back end that writes one file; '{}' writes {} and {}",
-                                           info.name, info.extension, info.companions), false);
+      report.tool_error(input,
+                        fmt::format("-o - needs a back end that writes one file; '{}' writes {} and {}", info.name,
+                                    info.extension, info.companions),
+                        false);
       return kExitUsageOrIo;
     }
     try {
@@ -194,18 +201,19 @@ int check_all(const Options &o, DiagnosticReport &report, std::ostream &out) {
   return worst;
 }
 
-} // namespace
+}  // namespace
+
+int finish_report(DiagnosticReport &report, int code, std::ostream &err) {
+  std::string failure = report.finish(code);
+  if (failure.empty()) return code;
+  err << "gfec: error: " << failure << "\n";
+  return kExitUsageOrIo;
+}
 
 int run(const Options &o, std::ostream &out, std::ostream &err) {
   if (o.analyze) return analyze_command(o, out, err);
   auto report = make_report(o, err);
-  int code = o.check_only ? check_all(o, *report, out) : compile(o, *report, out);
-  std::string failure = report->finish(code);
-  if (!failure.empty()) {
-    err << "gfec: error: " << failure << "\n";
-    return kExitUsageOrIo;
-  }
-  return code;
+  return finish_report(*report, o.check_only ? check_all(o, *report, out) : compile(o, *report, out), err);
 }
 
-} // namespace gfec
+}  // namespace gfec

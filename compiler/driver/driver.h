@@ -14,7 +14,13 @@ enum ExitCode { kExitOk = 0, kExitInputError = 1, kExitUsageOrIo = 2 };
 
 int run(const Options &options, std::ostream &out, std::ostream &err);
 
+class DiagnosticReport;
+
+/// Ends `report` (a SARIF file is written then) and gives the command's exit code: `code`, or
+/// kExitUsageOrIo, said on `err`, when the report cannot be finished.
+int finish_report(DiagnosticReport &report, int code, std::ostream &err);
+
 /// What the front end takes from the command line (-I, -x, -W..., -fmax-errors).
 pipeline::FrontEndOptions front_end_options(const Options &o);
 
-} // namespace gfec
+}  // namespace gfec

@@ -26,8 +26,8 @@ struct RunOptions {
   std::string input;
   std::string inputs_csv;
   std::uint64_t ticks = 0;
-  int agents = 0;            ///< a team machine's agents (with agents_given)
-  bool agents_given = false; ///< --agents was given; else a team machine runs all its agents
+  int agents = 0;             ///< a team machine's agents (with agents_given)
+  bool agents_given = false;  ///< --agents was given; else a team machine runs all its agents
   std::string chart;
   std::vector<std::string> include_dirs;
   bool observable = false;  ///< only the observable layer, unindented: what engines print
@@ -46,7 +46,8 @@ nlohmann::json viewer_data(const model::Model &model, int chart, const interp::R
   const bool fsm = c.kind == model::Chart::Kind::Fsm;
   json rows = json::array();
   for (std::size_t i = 0; i < c.places.size(); ++i)
-    rows.push_back({{"name", c.places[i].name}, {"node", fmt::format("p{}", i)},
+    rows.push_back({{"name", c.places[i].name},
+                    {"node", fmt::format("p{}", i)},
                     {"terminal", c.places[i].terminal != model::Terminal::None}});
   std::string svg, note;
   try {
@@ -55,9 +56,7 @@ nlohmann::json viewer_data(const model::Model &model, int chart, const interp::R
     emit.output_path = "chart.svg";
     emit.source_name = o.input;
     if (auto backend = make_backend("svg")) svg = emit_to_memory(*backend, model, emit).at(0).contents;
-  } catch (const std::exception &e) {
-    note = fmt::format("no diagram: {}", e.what());
-  }
+  } catch (const std::exception &e) { note = fmt::format("no diagram: {}", e.what()); }
   viewer::ChangeList active, status_list;
   viewer::CallRecorder calls;
   json events = json::array();
@@ -91,9 +90,7 @@ nlohmann::json viewer_data(const model::Model &model, int chart, const interp::R
       status = now;
       break;
     }
-    case interp::EventKind::Fire:
-      events.push_back({frame, fsm ? "state" : "fire", e.text});
-      [[fallthrough]];
+    case interp::EventKind::Fire: events.push_back({frame, fsm ? "state" : "fire", e.text}); [[fallthrough]];
     default:
       if (interp::layer_of(e.kind) != interp::Layer::Hooks)
         tick_calls.push_back(std::string(static_cast<std::size_t>(2 * std::max(0, e.depth - 1)), ' ') + e.text);
@@ -105,10 +102,11 @@ nlohmann::json viewer_data(const model::Model &model, int chart, const interp::R
   return {
       {"format", 1},
       {"tool", "gfec run"},
-      {"title", fmt::format("{} ({}): {} after {} tick{}", c.name, fsm ? "fsm" : "sfc", status, frames,
-                            frames == 1 ? "" : "s")},
-      {"subtitle", fmt::format("gfec run {}{}{} \u00b7 reference interpreter \u00b7 period {:g} ms", o.input,
-                               o.inputs_csv.empty() ? "" : " --inputs ", o.inputs_csv, c.period_ms > 0 ? c.period_ms : 10.0)},
+      {"title",
+       fmt::format("{} ({}): {} after {} tick{}", c.name, fsm ? "fsm" : "sfc", status, frames, frames == 1 ? "" : "s")},
+      {"subtitle",
+       fmt::format("gfec run {}{}{} \u00b7 reference interpreter \u00b7 period {:g} ms", o.input,
+                   o.inputs_csv.empty() ? "" : " --inputs ", o.inputs_csv, c.period_ms > 0 ? c.period_ms : 10.0)},
       {"chart", {{"name", c.name}, {"kind", fsm ? "fsm" : "sfc"}, {"file", o.input}}},
       {"period", (c.period_ms > 0 ? c.period_ms : 10.0) / 1000},
       {"frames", frames},
@@ -203,7 +201,8 @@ int run_with(const RunOptions &o, DiagnosticReport &report, std::ostream &out) {
   out << r.log.render(render) << std::flush;
   report.add(o.input, run_diag, c.sources);
   if (!o.html.empty()) {
-    std::string failed = write_atomically({{o.html, viewer::page(viewer_data(model, chart, r, o))}}, {o.input, o.inputs_csv});
+    std::string failed =
+        write_atomically({{o.html, viewer::page(viewer_data(model, chart, r, o))}}, {o.input, o.inputs_csv});
     if (!failed.empty()) {
       report.tool_error(o.html, failed, false);
       return kExitUsageOrIo;
@@ -212,7 +211,7 @@ int run_with(const RunOptions &o, DiagnosticReport &report, std::ostream &out) {
   return r.completed ? kExitOk : kExitInputError;
 }
 
-} // namespace
+}  // namespace
 
 int run_command(int argc, const char *const *argv, std::ostream &out, std::ostream &err) {
   RunOptions o;
@@ -228,8 +227,8 @@ int run_command(int argc, const char *const *argv, std::ostream &out, std::ostre
       ->type_name("FILE");
   app.add_option("--ticks", o.ticks, "Ticks to run (default: one per row of the trace, or 10)")->type_name("N");
   CLI::Option *agents = app.add_option("--agents", o.agents,
-                 "A team machine: how many of its agents run, in lockstep (default: all of them)")
-      ->type_name("N");
+                                       "A team machine: how many of its agents run, in lockstep (default: all of them)")
+                            ->type_name("N");
   app.add_option("--chart", o.chart, "The chart to run when the file declares several")->type_name("NAME");
   app.add_option("-I", o.include_dirs, "Add DIR to the folders searched for imports")
       ->type_name("DIR")
@@ -264,13 +263,7 @@ int run_command(int argc, const char *const *argv, std::ostream &out, std::ostre
     }
   }
   auto report = make_report(o.report, err);
-  int code = run_with(o, *report, out);
-  std::string failure = report->finish(code);
-  if (!failure.empty()) {
-    err << "gfec: error: " << failure << "\n";
-    return kExitUsageOrIo;
-  }
-  return code;
+  return finish_report(*report, run_with(o, *report, out), err);
 }
 
-} // namespace gfec
+}  // namespace gfec

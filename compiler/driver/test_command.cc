@@ -118,8 +118,10 @@ public:
     if (!o_.reference_only) {
       EngineBuilds::Build b = builds_.get(m, test.chart, chart_file(file, test.chart));
       if (b.program.empty()) {
-        out.diag.error(test.range, ErrorKind::TestEngine, fmt::format("cannot build the C engine for '{}'",
-                                                              m.charts[static_cast<std::size_t>(test.chart)].name))
+        out.diag
+            .error(
+                test.range, ErrorKind::TestEngine,
+                fmt::format("cannot build the C engine for '{}'", m.charts[static_cast<std::size_t>(test.chart)].name))
             .note(b.error);
       } else {
         eng = builds_.run(b, m, test, id);
@@ -155,9 +157,10 @@ private:
       SourceRange at = k == 0 ? out.test->range : tick_step(*out.test, k);
       std::string what = k == 0 ? "after _init" : fmt::format("at tick {}", k);
       bool call = diff.rfind("call ", 0) == 0;
-      out.diag.error(at, ErrorKind::TestDisagreement,
-                     fmt::format("the reference interpreter and the C engine disagree {}: {}", what,
-                                 call ? "first differing " + diff : diff))
+      out.diag
+          .error(at, ErrorKind::TestDisagreement,
+                 fmt::format("the reference interpreter and the C engine disagree {}: {}", what,
+                             call ? "first differing " + diff : diff))
           .note("a verbatim %{ %} block runs only in the C engine; otherwise this is a bug in gfec")
           .note(fmt::format("in test \"{}\"", out.test->name));
       return;
@@ -195,7 +198,8 @@ private:
                              : fmt::format("the calls of the last tick: {}", calls));
       }
       if (sides[0].verdict && sides[1].verdict && failed(sides[0]) != failed(sides[1]))
-        d.note(fmt::format("it fails on {} only; it holds on {}", bad.who, (&bad == &sides[0] ? sides[1] : sides[0]).who));
+        d.note(
+            fmt::format("it fails on {} only; it holds on {}", bad.who, (&bad == &sides[0] ? sides[1] : sides[0]).who));
       d.note(fmt::format("in test \"{}\", after tick {}", test.name, tick));
     }
   }
@@ -234,7 +238,8 @@ std::string xml(const std::string &s) {
 
 /// JUnit XML: a testsuite per file, a testcase per test; a file that does not compile is one
 /// failed testcase named after the file.
-std::string junit(const std::vector<std::unique_ptr<TestFile>> &files, const std::vector<std::unique_ptr<Outcome>> &outcomes) {
+std::string junit(const std::vector<std::unique_ptr<TestFile>> &files,
+                  const std::vector<std::unique_ptr<Outcome>> &outcomes) {
   std::size_t total = 0, failures = 0;
   std::string suites;
   for (const auto &f : files) {
@@ -251,7 +256,8 @@ std::string junit(const std::vector<std::unique_ptr<TestFile>> &files, const std
       }
       ++n;
       time += seconds;
-      cases += fmt::format("    <testcase name=\"{}\" classname=\"{}\" time=\"{:.3f}\"", xml(name), xml(f->path), seconds);
+      cases +=
+          fmt::format("    <testcase name=\"{}\" classname=\"{}\" time=\"{:.3f}\"", xml(name), xml(f->path), seconds);
       if (first.empty()) {
         cases += "/>\n";
         return;
@@ -271,8 +277,9 @@ std::string junit(const std::vector<std::unique_ptr<TestFile>> &files, const std
     }
     for (const auto &o : outcomes)
       if (o->file == f.get()) failure(o->test->name, o->diag, f->sources, o->seconds);
-    suites += fmt::format("  <testsuite name=\"{}\" tests=\"{}\" failures=\"{}\" errors=\"0\" time=\"{:.3f}\">\n{}  </testsuite>\n",
-                          xml(f->path), n, failed, time, cases);
+    suites += fmt::format(
+        "  <testsuite name=\"{}\" tests=\"{}\" failures=\"{}\" errors=\"0\" time=\"{:.3f}\">\n{}  </testsuite>\n",
+        xml(f->path), n, failed, time, cases);
     total += n;
     failures += failed;
   }
@@ -347,17 +354,13 @@ int test_with(const TestOptions &o, std::ostream &out, std::ostream &err) {
     }
   }
   int code = io_error ? kExitUsageOrIo : failed > 0 ? kExitInputError : kExitOk;
-  std::string failure = report->finish(code);
-  if (!failure.empty()) {
-    err << "gfec: error: " << failure << "\n";
-    code = kExitUsageOrIo;
-  }
+  code = finish_report(*report, code, err);
   err << std::flush;
   out << fmt::format("{} passed, {} failed\n", passed, failed) << std::flush;
   return code;
 }
 
-} // namespace
+}  // namespace
 
 int test_command(int argc, const char *const *argv, std::ostream &out, std::ostream &err) {
   TestOptions o;
@@ -402,4 +405,4 @@ int test_command(int argc, const char *const *argv, std::ostream &out, std::ostr
   return test_with(o, out, err);
 }
 
-} // namespace gfec
+}  // namespace gfec

@@ -6,7 +6,6 @@
 
 #include <fmt/format.h>
 
-
 namespace gfec::interp {
 
 namespace {
@@ -39,7 +38,8 @@ Value from_constant(const constant::Value &c) {
 
 /// An operand as the message shows it: in the type the operation computes in.
 std::string operand_text(const Value &v, Type t) {
-  if (t == Type::Float) return fmt::format("{}", static_cast<float>(v.type == Type::Int ? static_cast<double>(v.i) : v.f));
+  if (t == Type::Float)
+    return fmt::format("{}", static_cast<float>(v.type == Type::Int ? static_cast<double>(v.i) : v.f));
   if (t == Type::Double) return fmt::format("{}", v.type == Type::Int ? static_cast<double>(v.i) : v.f);
   return fmt::format("{}", v.i);
 }
@@ -65,25 +65,13 @@ Value arith(BinaryOp op, const Value &a, const Value &b, SourceRange r) {
   }
 }
 
-template <typename T> bool compare(BinaryOp op, T a, T b) {
-  switch (op) {
-  case BinaryOp::Lt: return a < b;
-  case BinaryOp::Le: return a <= b;
-  case BinaryOp::Gt: return a > b;
-  case BinaryOp::Ge: return a >= b;
-  case BinaryOp::Eq: return a == b;
-  case BinaryOp::Ne: return a != b;
-  default: return false;
-  }
-}
-
 Value comparison(BinaryOp op, const Value &a, const Value &b, SourceRange r) {
   if (a.type == Type::Bool || b.type == Type::Bool) {
     Value x = convert(a, Type::Bool, r), y = convert(b, Type::Bool, r);
-    return Value::of_bool(compare(op, x.b, y.b));
+    return Value::of_bool(constant::compare(op, x.b, y.b));
   }
   if (a.type == Type::Duration && b.type == Type::Duration)  // both unsigned tick counts
-    return Value::of_bool(compare(op, static_cast<std::uint64_t>(a.i), static_cast<std::uint64_t>(b.i)));
+    return Value::of_bool(constant::compare(op, static_cast<std::uint64_t>(a.i), static_cast<std::uint64_t>(b.i)));
   return arith(op, a, b, r);  // numbers: compared in their common type
 }
 
@@ -153,7 +141,7 @@ Value binary(const Expr &e, Frame &f) {
   return comparison(op, a, b, e.range);
 }
 
-} // namespace
+}  // namespace
 
 Value evaluate(const Expr &e, Frame &f) {
   switch (e.kind) {
@@ -205,8 +193,9 @@ void execute(const std::vector<model::Stmt> &block, Frame &f) {
       if (s.op != AssignOp::Set) v = arith(s.op == AssignOp::Add ? BinaryOp::Add : BinaryOp::Sub, slot, v, s.range);
       slot = convert(v, slot.type, s.range);
       if (f.log)
-        f.log->add(EventKind::Assign, f.depth,
-                   fmt::format("set {} = {}", f.chart.vars.at(static_cast<std::size_t>(s.var)).name, format_value(slot)));
+        f.log->add(
+            EventKind::Assign, f.depth,
+            fmt::format("set {} = {}", f.chart.vars.at(static_cast<std::size_t>(s.var)).name, format_value(slot)));
       break;
     }
     case model::Stmt::Kind::Verbatim:
@@ -219,4 +208,4 @@ void execute(const std::vector<model::Stmt> &block, Frame &f) {
   }
 }
 
-} // namespace gfec::interp
+}  // namespace gfec::interp
