@@ -27,17 +27,17 @@ using ExprPtr = std::unique_ptr<Expr>;
 
 struct Expr {
   enum class Kind : std::uint8_t {
-    Bool,     ///< `true` / `false`: bool_value
-    Int,      ///< `42`: text is the spelling
-    Float,    ///< `0.5`, `1e-3`: text is the spelling
-    String,   ///< `"..."`: text is the decoded value, spelling the literal as written
-    Duration, ///< `10ms`, `1.5s`: milliseconds in duration_ms
-    Name,     ///< a variable, constant or config entry: name
-    Call,     ///< `f(a, b)` (also `elapsed(P)`): name + args
-    Unary,    ///< unary_op + args[0]
-    Binary,   ///< binary_op + args[0], args[1]
-    Paren,    ///< `( e )`: args[0]; kept so formulas and generated code keep the user's brackets
-    Path,     ///< `P.Q.R` (only as the argument of `active(...)`, docs/language.md "Sub-charts"): path
+    Bool,      ///< `true` / `false`: bool_value
+    Int,       ///< `42`: text is the spelling
+    Float,     ///< `0.5`, `1e-3`: text is the spelling
+    String,    ///< `"..."`: text is the decoded value, spelling the literal as written
+    Duration,  ///< `10ms`, `1.5s`: milliseconds in duration_ms
+    Name,      ///< a variable, constant or config entry: name
+    Call,      ///< `f(a, b)` (also `elapsed(P)`): name + args
+    Unary,     ///< unary_op + args[0]
+    Binary,    ///< binary_op + args[0], args[1]
+    Paren,     ///< `( e )`: args[0]; kept so formulas and generated code keep the user's brackets
+    Path,      ///< `P.Q.R` (only as the argument of `active(...)`, docs/language.md "Sub-charts"): path
   };
   Kind kind;
   UnaryOp unary_op = UnaryOp::Not;
@@ -58,13 +58,13 @@ struct Stmt {
   enum class Kind : std::uint8_t { Call, Assign, Verbatim, If };
   Kind kind;
   AssignOp assign_op = AssignOp::Set;
-  bool has_else = false;         ///< Kind::If: `else` was written
-  bool else_if = false;          ///< Kind::If: else_block is exactly the `if` of an `else if`
+  bool has_else = false;  ///< Kind::If: `else` was written
+  bool else_if = false;   ///< Kind::If: else_block is exactly the `if` of an `else if`
   SourceRange range;
-  ExprPtr call;            ///< Kind::Call: an Expr of Kind::Call
-  Name target;             ///< Kind::Assign
-  ExprPtr value;           ///< Kind::Assign; Kind::If: the condition
-  std::string verbatim;    ///< Kind::Verbatim: the text between %{ and %}
+  ExprPtr call;                  ///< Kind::Call: an Expr of Kind::Call
+  Name target;                   ///< Kind::Assign
+  ExprPtr value;                 ///< Kind::Assign; Kind::If: the condition
+  std::string verbatim;          ///< Kind::Verbatim: the text between %{ and %}
   std::vector<Stmt> then_block;  ///< Kind::If
   std::vector<Stmt> else_block;  ///< Kind::If: empty without `else`; `else if` is one If in it
 };
@@ -121,8 +121,8 @@ struct Place {
   std::optional<Block> entry;
   std::optional<Block> exit;
   SourceRange entry_range, exit_range;
-  ExprPtr post;                            ///< `post EXPR` of a terminal state
-  std::optional<Name> runs;                ///< `place P runs C`: the chart C (sub-charts)
+  ExprPtr post;              ///< `post EXPR` of a terminal state
+  std::optional<Name> runs;  ///< `place P runs C`: the chart C (sub-charts)
   SourceRange range;
 };
 
@@ -172,8 +172,8 @@ struct Template {
   Kind kind;
   Name name;
   std::vector<TemplateParam> params;
-  std::vector<Name> outcomes;     ///< result states, or a supervisor's events
-  std::optional<Period> period;   ///< supervisors only
+  std::vector<Name> outcomes;    ///< result states, or a supervisor's events
+  std::optional<Period> period;  ///< supervisors only
   SourceRange range;
 };
 
@@ -278,4 +278,4 @@ struct Program {
   std::vector<std::unique_ptr<File>> files;
 };
 
-} // namespace gfec::ast
+}  // namespace gfec::ast

@@ -38,7 +38,7 @@ private:
   std::vector<OutputFile> files_;
 };
 
-} // namespace
+}  // namespace
 
 std::vector<OutputFile> emit_to_memory(const Backend &backend, const model::Model &model, const EmitOptions &options) {
   MemorySink sink;
@@ -51,4 +51,4 @@ std::string base_name(const std::string &path) {
   return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
-} // namespace gfec
+}  // namespace gfec

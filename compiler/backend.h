@@ -27,9 +27,9 @@ struct EmitOptions {
   bool line_directives = true;  ///< `#line` back to the chart
   // What to compile, as pipeline::select_target chose it; exactly the one the back end accepts
   // is set (a back end given none is a bug of its caller and throws std::invalid_argument).
-  int chart = -1;               ///< index into Model::charts to compile, or -1
-  int plan = -1;                ///< index into Model::plans to compile, or -1
-  int toolbox = -1;             ///< index into Model::toolboxes (toolbox skeleton), or -1
+  int chart = -1;                        ///< index into Model::charts to compile, or -1
+  int plan = -1;                         ///< index into Model::plans to compile, or -1
+  int toolbox = -1;                      ///< index into Model::toolboxes (toolbox skeleton), or -1
   EngineForm engine = EngineForm::Auto;  ///< C back end: `--engine=auto|readable|scalable`
 };
 
@@ -60,4 +60,4 @@ std::string replace_extension(const std::string &path, const std::string &ext);
 /// The last path component: "dir/engine.h" -> "engine.h".
 std::string base_name(const std::string &path);
 
-} // namespace gfec
+}  // namespace gfec

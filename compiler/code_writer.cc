@@ -82,4 +82,4 @@ std::string c_string_literal(std::string_view text) {
   return s + "\"";
 }
 
-} // namespace gfec
+}  // namespace gfec

@@ -39,7 +39,9 @@ public:
   void raw(std::string_view text);
 
   void indent() { ++depth_; }
-  void dedent() { if (depth_ > 0) --depth_; }
+  void dedent() {
+    if (depth_ > 0) --depth_;
+  }
 
   /// One more level of indentation for as long as it lives; with `close`, the line written at
   /// the end, one level out (`}`). Neither copied nor moved: the end happens once.
@@ -95,4 +97,4 @@ private:
 /// `text` as a C string literal, quotes included.
 std::string c_string_literal(std::string_view text);
 
-} // namespace gfec
+}  // namespace gfec

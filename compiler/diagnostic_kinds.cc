@@ -22,7 +22,7 @@ constexpr DiagnosticKind kKinds[] = {
 constexpr std::size_t kErrors = static_cast<std::size_t>(ErrorKind::Count_);
 static_assert(sizeof(kKinds) / sizeof(kKinds[0]) == kErrors + static_cast<std::size_t>(Warning::Count_));
 
-} // namespace
+}  // namespace
 
 std::string DiagnosticKind::check() const { return warning ? "-W" + std::string(name) : std::string(name); }
 
@@ -44,4 +44,4 @@ const DiagnosticKind *find_kind(std::string_view name) {
   return nullptr;
 }
 
-} // namespace gfec
+}  // namespace gfec

@@ -51,4 +51,4 @@ std::optional<Warning> find_warning(std::string_view name);
 /// Any row by name (a warning's without "-W"); nullptr if none.
 const DiagnosticKind *find_kind(std::string_view name);
 
-} // namespace gfec
+}  // namespace gfec

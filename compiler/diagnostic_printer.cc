@@ -30,8 +30,8 @@ std::string paint(const TextStyle &style, const char *sgr, std::string_view text
 /// The quoted source line and a caret line: '^' at the start of the range, '~' under the rest
 /// of it on that line, then the fix-it's text under it when the fix stays on that line. Tabs are
 /// copied so the caret lines up in any terminal.
-void quote(std::string &out, const SourceRange &range, const std::vector<FixIt> &fixits,
-           const SourceManager &sources, const TextStyle &style) {
+void quote(std::string &out, const SourceRange &range, const std::vector<FixIt> &fixits, const SourceManager &sources,
+           const TextStyle &style) {
   const SourceFile &file = sources.file(range.file);
   LineCol begin = file.line_col(range.begin);
   std::string_view line = file.line_text(begin.line);
@@ -76,7 +76,7 @@ std::string escape(std::string_view s) {
   return out;
 }
 
-} // namespace
+}  // namespace
 
 const char *severity_name(Severity s) {
   switch (s) {
@@ -116,4 +116,4 @@ std::string render_text(const Diagnostic &d, const SourceManager &sources, const
   return out;
 }
 
-} // namespace gfec
+}  // namespace gfec

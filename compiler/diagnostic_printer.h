@@ -11,10 +11,10 @@ namespace gfec {
 /// How the text looks; the default is the plain form the tests compare against, the command
 /// line asks for gcc 12's form (docs/cli.md).
 struct TextStyle {
-  bool color = false;            ///< SGR colours as gcc's defaults (error red, warning magenta, ...)
-  bool line_numbers = false;     ///< gcc 12's gutter: "    3 |   A -> B;" and "      |   ^"
-  bool fixits = false;           ///< the fix-it's text under the caret, as gcc prints it
-  bool parseable_fixits = false; ///< -fdiagnostics-parseable-fixits: fix-it:"file":{l:c-l:c}:"text"
+  bool color = false;             ///< SGR colours as gcc's defaults (error red, warning magenta, ...)
+  bool line_numbers = false;      ///< gcc 12's gutter: "    3 |   A -> B;" and "      |   ^"
+  bool fixits = false;            ///< the fix-it's text under the caret, as gcc prints it
+  bool parseable_fixits = false;  ///< -fdiagnostics-parseable-fixits: fix-it:"file":{l:c-l:c}:"text"
 };
 
 /// One diagnostic with its notes, each line ending in '\n'.
@@ -27,4 +27,4 @@ const char *severity_name(Severity s);
 /// -Werror / -Werror=NAME gcc's "-Werror=NAME".
 std::string check_label(const Diagnostic &d);
 
-} // namespace gfec
+}  // namespace gfec

@@ -53,4 +53,4 @@ Diagnostic &Diagnostics::warning(Warning w, SourceRange range, std::string messa
   return list_.back();
 }
 
-} // namespace gfec
+}  // namespace gfec

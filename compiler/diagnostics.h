@@ -89,11 +89,11 @@ private:
 
   WarningOptions options_;
   std::size_t error_limit_;
-  std::deque<Diagnostic> list_; // a deque: references handed out stay valid
+  std::deque<Diagnostic> list_;  // a deque: references handed out stay valid
   std::size_t errors_ = 0;
   std::size_t warnings_ = 0;
   bool limit_reached_ = false;
   Diagnostic discarded_;
 };
 
-} // namespace gfec
+}  // namespace gfec

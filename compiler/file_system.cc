@@ -50,4 +50,4 @@ std::optional<std::string> MemoryFileSystem::read(const std::string &path) const
   return it->second;
 }
 
-} // namespace gfec
+}  // namespace gfec

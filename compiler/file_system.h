@@ -40,4 +40,4 @@ private:
   std::map<std::string, std::string> files_;
 };
 
-} // namespace gfec
+}  // namespace gfec

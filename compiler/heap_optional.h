@@ -49,4 +49,4 @@ private:
   std::unique_ptr<T> value_;
 };
 
-} // namespace gfec
+}  // namespace gfec

@@ -15,25 +15,50 @@ struct Keyword {
 };
 
 const Keyword kKeywords[] = {
-    {"sfc", Tok::KwSfc}, {"fsm", Tok::KwFsm}, {"plan", Tok::KwPlan}, {"toolbox", Tok::KwToolbox},
-    {"interface", Tok::KwInterface}, {"import", Tok::KwImport}, {"var", Tok::KwVar},
-    {"const", Tok::KwConst}, {"initial", Tok::KwInitial}, {"place", Tok::KwPlace},
-    {"state", Tok::KwState}, {"transition", Tok::KwTransition}, {"when", Tok::KwWhen},
-    {"success", Tok::KwSuccess}, {"failure", Tok::KwFailure}, {"post", Tok::KwPost},
-    {"period", Tok::KwPeriod}, {"actor", Tok::KwActor}, {"computation", Tok::KwComputation},
-    {"supervisor", Tok::KwSupervisor}, {"supervise", Tok::KwSupervise}, {"events", Tok::KwEvents},
-    {"start", Tok::KwStart}, {"terminate", Tok::KwTerminate}, {"ignore", Tok::KwIgnore},
-    {"config", Tok::KwConfig}, {"in", Tok::KwIn}, {"out", Tok::KwOut}, {"entry", Tok::KwEntry},
-    {"exit", Tok::KwExit}, {"true", Tok::KwTrue}, {"false", Tok::KwFalse}, {"runs", Tok::KwRuns},
+    {"sfc", Tok::KwSfc},
+    {"fsm", Tok::KwFsm},
+    {"plan", Tok::KwPlan},
+    {"toolbox", Tok::KwToolbox},
+    {"interface", Tok::KwInterface},
+    {"import", Tok::KwImport},
+    {"var", Tok::KwVar},
+    {"const", Tok::KwConst},
+    {"initial", Tok::KwInitial},
+    {"place", Tok::KwPlace},
+    {"state", Tok::KwState},
+    {"transition", Tok::KwTransition},
+    {"when", Tok::KwWhen},
+    {"success", Tok::KwSuccess},
+    {"failure", Tok::KwFailure},
+    {"post", Tok::KwPost},
+    {"period", Tok::KwPeriod},
+    {"actor", Tok::KwActor},
+    {"computation", Tok::KwComputation},
+    {"supervisor", Tok::KwSupervisor},
+    {"supervise", Tok::KwSupervise},
+    {"events", Tok::KwEvents},
+    {"start", Tok::KwStart},
+    {"terminate", Tok::KwTerminate},
+    {"ignore", Tok::KwIgnore},
+    {"config", Tok::KwConfig},
+    {"in", Tok::KwIn},
+    {"out", Tok::KwOut},
+    {"entry", Tok::KwEntry},
+    {"exit", Tok::KwExit},
+    {"true", Tok::KwTrue},
+    {"false", Tok::KwFalse},
+    {"runs", Tok::KwRuns},
     {"test", Tok::KwTest},
-    {"if", Tok::KwIf}, {"else", Tok::KwElse}, {"team", Tok::KwTeam},
+    {"if", Tok::KwIf},
+    {"else", Tok::KwElse},
+    {"team", Tok::KwTeam},
 };
 
 bool is_ident_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
 bool is_ident_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 
-} // namespace
+}  // namespace
 
 std::string describe(Tok kind) {
   for (const auto &k : kKeywords)
@@ -223,8 +248,7 @@ Token Lexer::number(std::uint32_t begin) {
                  fmt::format("invalid suffix '{}' on number; durations are written like 10ms or 1.5s", suffix));
   }
   Token t = make(is_float ? Tok::Float : Tok::Int, begin);
-  if (!is_float && t.text.size() > 18)
-    return error(begin, pos_, "integer literal is too large");
+  if (!is_float && t.text.size() > 18) return error(begin, pos_, "integer literal is too large");
   return t;
 }
 
@@ -261,7 +285,8 @@ Token Lexer::string(std::uint32_t begin) {
     default: {
       // Keep scanning to the closing quote so one bad escape is one error.
       std::uint32_t at = pos_ - 2;
-      diag_.error({file_, at, pos_}, ErrorKind::Syntax, fmt::format("unknown escape sequence '\\{}'", e == '\0' ? ' ' : e));
+      diag_.error({file_, at, pos_}, ErrorKind::Syntax,
+                  fmt::format("unknown escape sequence '\\{}'", e == '\0' ? ' ' : e));
     }
     }
   }
@@ -286,4 +311,4 @@ Token Lexer::verbatim(std::uint32_t begin) {
   return t;
 }
 
-} // namespace gfec
+}  // namespace gfec

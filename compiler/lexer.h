@@ -22,9 +22,7 @@ private:
   Token verbatim(std::uint32_t begin);
   Token word(std::uint32_t begin);
 
-  char peek(std::uint32_t ahead = 0) const {
-    return pos_ + ahead < text_.size() ? text_[pos_ + ahead] : '\0';
-  }
+  char peek(std::uint32_t ahead = 0) const { return pos_ + ahead < text_.size() ? text_[pos_ + ahead] : '\0'; }
 
   FileId file_;
   std::string_view text_;
@@ -32,4 +30,4 @@ private:
   std::uint32_t pos_ = 0;
 };
 
-} // namespace gfec
+}  // namespace gfec

@@ -130,7 +130,8 @@ private:
   }
 
   void report_cycle(const ast::Import &import, const std::string &target) {
-    auto &d = diag_.error(import.range, ErrorKind::ImportCycle, fmt::format("import cycle: '{}' imports itself", target));
+    auto &d =
+        diag_.error(import.range, ErrorKind::ImportCycle, fmt::format("import cycle: '{}' imports itself", target));
     bool in_cycle = false;
     for (std::size_t i = 0; i < stack_.size(); ++i) {
       if (stack_[i] == target) in_cycle = true;
@@ -150,7 +151,7 @@ private:
   std::vector<std::string> stack_;
 };
 
-} // namespace
+}  // namespace
 
 LoadResult load_program(const std::string &main_path, const LoadOptions &options, const FileSystem &fs,
                         SourceManager &sources, Diagnostics &diag) {
@@ -159,4 +160,4 @@ LoadResult load_program(const std::string &main_path, const LoadOptions &options
   return result;
 }
 
-} // namespace gfec
+}  // namespace gfec

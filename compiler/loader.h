@@ -27,9 +27,9 @@ struct SourceElement {
 };
 
 struct LoadResult {
-  ast::Program program;            ///< main file first, then imports in the order first reached
-  std::vector<std::string> paths;  ///< the path of every file read, in the same order
-  bool main_unreadable = false;    ///< the main file itself could not be read (an I/O error)
+  ast::Program program;                 ///< main file first, then imports in the order first reached
+  std::vector<std::string> paths;       ///< the path of every file read, in the same order
+  bool main_unreadable = false;         ///< the main file itself could not be read (an I/O error)
   std::vector<SourceElement> elements;  ///< ALICA input: every plan, state, transition... read
 };
 
@@ -40,4 +40,4 @@ void annotate_elements(Diagnostics &diag, const LoadResult &loaded);
 LoadResult load_program(const std::string &main_path, const LoadOptions &options, const FileSystem &fs,
                         SourceManager &sources, Diagnostics &diag);
 
-} // namespace gfec
+}  // namespace gfec

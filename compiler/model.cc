@@ -36,4 +36,4 @@ std::string source_text(const Model &m, const SourceRange &range) {
   return out;
 }
 
-} // namespace gfec::model
+}  // namespace gfec::model

@@ -76,10 +76,10 @@ struct Stmt {
   AssignOp op = AssignOp::Set;
   bool else_if = false;  ///< Kind::If: else_block is one If written as `else if`
   SourceRange range;
-  int var = -1;          ///< Kind::Assign: index into Chart::vars
-  Expr call;             ///< Kind::Call: an Expr of Kind::Call (its result, if any, is discarded)
-  Expr value;            ///< Kind::Assign; Kind::If: the condition (Bool)
-  std::string verbatim;  ///< Kind::Verbatim
+  int var = -1;                  ///< Kind::Assign: index into Chart::vars
+  Expr call;                     ///< Kind::Call: an Expr of Kind::Call (its result, if any, is discarded)
+  Expr value;                    ///< Kind::Assign; Kind::If: the condition (Bool)
+  std::string verbatim;          ///< Kind::Verbatim
   std::uint32_t code_begin = 0;  ///< Kind::Verbatim: where `verbatim` starts in range.file (after `%{`); 0: unknown
   std::vector<Stmt> then_block;  ///< Kind::If
   std::vector<Stmt> else_block;  ///< Kind::If: empty when there is no `else`
@@ -130,20 +130,20 @@ struct Place {
   HeapOptional<Expr> post;  ///< a terminal state's postcondition (on the heap: most places have none)
   SourceRange range;
   SourceRange name_range;  ///< the name where it is declared
-  int runs = -1;             ///< the sub-chart it runs: an index into Model::charts, or -1
+  int runs = -1;           ///< the sub-chart it runs: an index into Model::charts, or -1
   bool initial = false;
   Terminal terminal = Terminal::None;  ///< fsm only
-  bool timed = false;        ///< some `elapsed()` reads this place's timer
+  bool timed = false;                  ///< some `elapsed()` reads this place's timer
 };
 
 struct Transition {
-  std::string name;      ///< the user's name, or T<position> among all transitions
+  std::string name;  ///< the user's name, or T<position> among all transitions
   std::vector<int> inputs;
   std::vector<int> outputs;
   std::optional<Expr> condition;  ///< absent: `when true`
   SourceRange range;
   SourceRange name_range;  ///< the user's name, or the whole transition when it has none
-  bool named = false;    ///< the user gave the name
+  bool named = false;      ///< the user gave the name
 };
 
 struct Chart {
@@ -213,7 +213,7 @@ struct Rule {
 
 /// An argument: an `in` formula over config entries, or for an `out` parameter a plain entry.
 struct Arg {
-  Expr formula;       ///< for out parameters an Expr of Kind::Config
+  Expr formula;  ///< for out parameters an Expr of Kind::Config
   ParamDir dir = ParamDir::In;
 };
 
@@ -274,4 +274,4 @@ struct Model {
 /// and exports that show a condition or a statement as written ("" if the text is unknown).
 std::string source_text(const Model &m, const SourceRange &range);
 
-} // namespace gfec::model
+}  // namespace gfec::model

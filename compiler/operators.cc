@@ -36,12 +36,19 @@ int precedence(BinaryOp op) {
   switch (op) {
   case BinaryOp::Or: return 1;
   case BinaryOp::And: return 2;
-  case BinaryOp::Eq: case BinaryOp::Ne: return 4;
-  case BinaryOp::Lt: case BinaryOp::Le: case BinaryOp::Gt: case BinaryOp::Ge: return 5;
-  case BinaryOp::Add: case BinaryOp::Sub: return 6;
-  case BinaryOp::Mul: case BinaryOp::Div: case BinaryOp::Mod: return 7;
+  case BinaryOp::Eq:
+  case BinaryOp::Ne: return 4;
+  case BinaryOp::Lt:
+  case BinaryOp::Le:
+  case BinaryOp::Gt:
+  case BinaryOp::Ge: return 5;
+  case BinaryOp::Add:
+  case BinaryOp::Sub: return 6;
+  case BinaryOp::Mul:
+  case BinaryOp::Div:
+  case BinaryOp::Mod: return 7;
   }
   return 0;
 }
 
-} // namespace gfec
+}  // namespace gfec

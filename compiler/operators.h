@@ -17,4 +17,4 @@ const char *spelling(AssignOp op);
 /// C precedence, higher binds tighter (|| is 1, * / % are 7).
 int precedence(BinaryOp op);
 
-} // namespace gfec
+}  // namespace gfec

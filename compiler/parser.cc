@@ -121,7 +121,8 @@ private:
       if (at(Tok::End)) {
         // Only the innermost unclosed brace: the outer ones are the same mistake.
         if (!eof_reported_)
-          diag_.error(tok_.range, ErrorKind::Syntax, "expected '}' at end of input").note(open.range, "to match this '{'");
+          diag_.error(tok_.range, ErrorKind::Syntax, "expected '}' at end of input")
+              .note(open.range, "to match this '{'");
         eof_reported_ = true;
         throw SyntaxError{};
       }
@@ -195,7 +196,8 @@ private:
     Parser &p;
     explicit DepthGuard(Parser &parser) : p(parser) {
       if (++p.depth_ > kMaxNesting) {
-        p.diag_.error(p.tok_.range, ErrorKind::Nesting, fmt::format("expression nested too deeply (more than {} levels)", kMaxNesting));
+        p.diag_.error(p.tok_.range, ErrorKind::Nesting,
+                      fmt::format("expression nested too deeply (more than {} levels)", kMaxNesting));
         --p.depth_;
         throw SyntaxError{};
       }
@@ -207,8 +209,10 @@ private:
   /// left spine as deep as it is long, and every later walk of the tree recurses along it.
   int grow(int height, SourceRange at) {
     if (height + 1 > kMaxNesting) {
-      diag_.error(at, ErrorKind::Nesting, fmt::format("expression nested too deeply (more than {} levels; each operator of a "
-                                             "chain counts as one)", kMaxNesting));
+      diag_.error(at, ErrorKind::Nesting,
+                  fmt::format("expression nested too deeply (more than {} levels; each operator of a "
+                              "chain counts as one)",
+                              kMaxNesting));
       throw SyntaxError{};
     }
     return height + 1;
@@ -262,8 +266,7 @@ void Parser::top_level(File &file) {
   case Tok::KwVar:
     diag_.error(tok_.range, ErrorKind::Syntax, "'var' declares chart state and belongs inside an sfc or fsm");
     throw SyntaxError{};
-  default:
-    fail("expected a declaration (import, interface, sfc, fsm, toolbox, plan, const or test)");
+  default: fail("expected a declaration (import, interface, sfc, fsm, toolbox, plan, const or test)");
   }
 }
 
@@ -1010,10 +1013,10 @@ ExprPtr Parser::test_operand() {
   return nullptr;
 }
 
-} // namespace
+}  // namespace
 
 std::unique_ptr<ast::File> parse_file(const SourceManager &sources, FileId file, Diagnostics &diag) {
   return Parser(sources, file, diag).parse();
 }
 
-} // namespace gfec
+}  // namespace gfec

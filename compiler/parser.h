@@ -18,4 +18,4 @@ constexpr int kMaxNesting = 256;
 /// declaration or statement, so one run reports every independent error.
 std::unique_ptr<ast::File> parse_file(const SourceManager &sources, FileId file, Diagnostics &diag);
 
-} // namespace gfec
+}  // namespace gfec

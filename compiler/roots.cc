@@ -52,4 +52,4 @@ void warn_unused_charts(const model::Model &m, int root, Diagnostics &diag) {
   }
 }
 
-} // namespace gfec
+}  // namespace gfec

@@ -27,4 +27,4 @@ std::vector<bool> charts_in_tree(const model::Model &m, int root);
 /// most likely forgot a `runs`.
 void warn_unused_charts(const model::Model &m, int root, Diagnostics &diag);
 
-} // namespace gfec
+}  // namespace gfec

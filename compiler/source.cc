@@ -4,8 +4,7 @@
 
 namespace gfec {
 
-SourceFile::SourceFile(std::string path, std::string text)
-    : path_(std::move(path)), text_(std::move(text)) {
+SourceFile::SourceFile(std::string path, std::string text) : path_(std::move(path)), text_(std::move(text)) {
   line_starts_.push_back(0);
   // Lines end with LF, CRLF or a lone CR (old Mac files): each is one line end.
   for (std::uint32_t i = 0; i < text_.size(); ++i)
@@ -34,4 +33,4 @@ FileId SourceManager::add(std::string path, std::string text) {
   return static_cast<FileId>(files_.size() - 1);
 }
 
-} // namespace gfec
+}  // namespace gfec

@@ -59,4 +59,4 @@ private:
   std::vector<std::unique_ptr<SourceFile>> files_;
 };
 
-} // namespace gfec
+}  // namespace gfec

@@ -8,6 +8,7 @@
 
 namespace gfec {
 
+// clang-format off
 enum class Tok {
   End, Ident, Int, Float, String, Duration, Verbatim,
   // keywords
@@ -21,17 +22,18 @@ enum class Tok {
   Plus, Minus, Star, Slash, Percent, Lt, Le, Gt, Ge, EqEq, NotEq, AndAnd, OrOr, Not, Pipe, Dot,
   Error,  ///< a lexical error, already reported
 };
+// clang-format on
 
 struct Token {
   Tok kind = Tok::End;
   SourceRange range;
-  std::string_view text;  ///< the token as written (points into the SourceFile)
-  std::string value;      ///< String: the decoded text; Verbatim: the code between %{ and %}
-  double duration_ms = 0; ///< Duration
-  bool follows_error = false; ///< a lexical error was reported just before this token
+  std::string_view text;       ///< the token as written (points into the SourceFile)
+  std::string value;           ///< String: the decoded text; Verbatim: the code between %{ and %}
+  double duration_ms = 0;      ///< Duration
+  bool follows_error = false;  ///< a lexical error was reported just before this token
 };
 
 /// How a token kind reads in a message: "identifier", "'{'", "keyword 'sfc'".
 std::string describe(Tok kind);
 
-} // namespace gfec
+}  // namespace gfec

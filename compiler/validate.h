@@ -19,4 +19,4 @@ model::Model validate(const ast::Program &program, const SourceManager &sources,
 model::Model validate(const ast::Program &program, const SourceManager &sources, Diagnostics &diag,
                       scenario::Suite &tests);
 
-} // namespace gfec
+}  // namespace gfec

@@ -22,8 +22,8 @@ public:
   }
 };
 
-} // namespace
+}  // namespace
 
 std::unique_ptr<Backend> make_c_backend() { return std::make_unique<CBackend>(); }
 
-} // namespace gfec
+}  // namespace gfec

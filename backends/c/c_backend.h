@@ -11,4 +11,4 @@ namespace gfec {
 /// The back end registered as `c`.
 std::unique_ptr<Backend> make_c_backend();
 
-} // namespace gfec
+}  // namespace gfec

@@ -107,9 +107,15 @@ void name_locals(Context &c, const NameSpace &globals) {
   c.from = locals.take("from");
   c.to = locals.take("to");
   c.index = locals.take("p");
-  const std::pair<const char *, std::string *> scalable[] = {
-      {"add_n", &c.add_n}, {"lost", &c.lost}, {"lost_n", &c.lost_n}, {"gained", &c.gained}, {"gained_n", &c.gained_n},
-      {"w", &c.word},      {"bits", &c.bits}, {"i", &c.i},           {"t", &c.t}};
+  const std::pair<const char *, std::string *> scalable[] = {{"add_n", &c.add_n},
+                                                             {"lost", &c.lost},
+                                                             {"lost_n", &c.lost_n},
+                                                             {"gained", &c.gained},
+                                                             {"gained_n", &c.gained_n},
+                                                             {"w", &c.word},
+                                                             {"bits", &c.bits},
+                                                             {"i", &c.i},
+                                                             {"t", &c.t}};
   for (auto [name, field] : scalable) *field = locals.take(name);
   // The temporaries (gfec_t1, gfec_t2, ...): a prefix that no name the engine's code sees
   // continues with digits only, reserved in the same name space as the locals.
@@ -158,8 +164,9 @@ void collect_facts(Context &c) {
 /// The expression reads, by active()/succeeded()/failed(), a place some transition consumes.
 bool reads_input_activity(const Context &c, const model::Expr &e) {
   using K = model::Expr::Kind;
-  int p = e.kind == K::Active ? (e.path.empty() ? -1 : e.path.front())
-          : e.kind == K::Succeeded || e.kind == K::Failed ? e.index : -1;
+  int p = e.kind == K::Active                             ? (e.path.empty() ? -1 : e.path.front())
+          : e.kind == K::Succeeded || e.kind == K::Failed ? e.index
+                                                          : -1;
   if (p >= 0 && c.is_input.at(static_cast<std::size_t>(p))) return true;
   for (const auto &a : e.args)
     if (reads_input_activity(c, a)) return true;
@@ -189,7 +196,10 @@ void name_parts(Context &c, NameSpace &globals) {
   };
   c.part_base = c.type;
   while (!each([&](const std::string &n) { return globals.free(n); })) c.part_base += '_';
-  each([&](const std::string &n) { globals.claim(n); return true; });
+  each([&](const std::string &n) {
+    globals.claim(n);
+    return true;
+  });
 }
 
 /// The instance that place `p` of `c` runs: its names follow the path (`Patrol_Search`), and
@@ -250,7 +260,7 @@ void collect_functions(const Context &c, std::vector<int> &out) {
     if (s) collect_functions(*s, out);
 }
 
-} // namespace
+}  // namespace
 
 std::string Context::av_of(int p) const {
   return fmt::format("{}[{}]", field(av), place_const.at(static_cast<std::size_t>(p)));
@@ -277,8 +287,8 @@ bool Context::runs_entry(int p) const {
 std::vector<std::string> Context::start_call(int p) const {
   const Context *s = sub_of(p);
   if (!s) return {};
-  return {fmt::format("{}(&{}); /* start the instance of {} */", s->init_fn, field(sub_field[static_cast<std::size_t>(p)]),
-                      s->chart.name)};
+  return {fmt::format("{}(&{}); /* start the instance of {} */", s->init_fn,
+                      field(sub_field[static_cast<std::size_t>(p)]), s->chart.name)};
 }
 
 std::vector<std::string> Context::tick_call(int p) const {
@@ -295,9 +305,7 @@ std::vector<std::string> Context::stop_call(int p) const {
                       field(sub_field[static_cast<std::size_t>(p)]), s->chart.name)};
 }
 
-std::string Context::count_text() const {
-  return root ? place_count : std::to_string(chart.places.size());
-}
+std::string Context::count_text() const { return root ? place_count : std::to_string(chart.places.size()); }
 
 std::string Context::member(const std::string &obj, const std::string &name) const {
   return obj.empty() ? field(name) : obj + "." + name;
@@ -345,4 +353,4 @@ std::unique_ptr<Context> make_context(const model::Model &model, const model::Ch
   return c;
 }
 
-} // namespace gfec::c_backend
+}  // namespace gfec::c_backend

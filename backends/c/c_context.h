@@ -28,59 +28,61 @@ struct Context {
   const char *readable_counter() const { return layout.bounded ? uint_type(layout.counter_bits) : "unsigned"; }
 
   // ------------------------------------------------------------ names in the generated code
-  std::string type;         ///< the prefix of every global name: the chart's name, or for a
-                            ///< sub-chart instance its path (`Patrol_Search`, docs/c-engine.md)
-  std::string struct_type;  ///< the state's C type: `Patrol`, or an instance's `struct Patrol_Search`
-  std::string linkage;      ///< "" for the root's API, "static " for an instance's functions
-  std::string init_fn;      ///< X_init
-  std::string run_fn;       ///< X_run
-  std::string stop_fn;      ///< an instance's X_stop (exits of its active places, innermost first)
-  std::string source_file;  ///< engine.c as #line names it (the output path as the user gave it)
-  std::string header_file;  ///< engine.h, as engine.c includes it (base name)
-  std::string guard;        ///< the header's include guard
-  std::string hooks_macro;  ///< X_HOOKS: define it to get the observation hooks
-  std::string checks_macro; ///< X_CHECKS: define it to assert the postconditions of an fsm
-  std::string assert_macro; ///< X_ASSERT(cond): the checks' handler; the user's, else assert
-  std::string assert_off_macro; ///< X_ASSERT_OFF: set when X_ASSERT is assert under NDEBUG
-  std::string activated_fn; ///< X_activated
-  std::string enabled_fn;   ///< X_enabled
-  std::string place_count;  ///< X_PLACE_COUNT
-  std::string transition_count;             ///< X_TRANSITION_COUNT
-  std::vector<std::string> place_const;     ///< X_<place>, by place index
-  std::vector<std::string> transition_const;///< X_<transition>, by transition index
+  std::string type;                           ///< the prefix of every global name: the chart's name, or for a
+                                              ///< sub-chart instance its path (`Patrol_Search`, docs/c-engine.md)
+  std::string struct_type;                    ///< the state's C type: `Patrol`, or an instance's `struct Patrol_Search`
+  std::string linkage;                        ///< "" for the root's API, "static " for an instance's functions
+  std::string init_fn;                        ///< X_init
+  std::string run_fn;                         ///< X_run
+  std::string stop_fn;                        ///< an instance's X_stop (exits of its active places, innermost first)
+  std::string source_file;                    ///< engine.c as #line names it (the output path as the user gave it)
+  std::string header_file;                    ///< engine.h, as engine.c includes it (base name)
+  std::string guard;                          ///< the header's include guard
+  std::string hooks_macro;                    ///< X_HOOKS: define it to get the observation hooks
+  std::string checks_macro;                   ///< X_CHECKS: define it to assert the postconditions of an fsm
+  std::string assert_macro;                   ///< X_ASSERT(cond): the checks' handler; the user's, else assert
+  std::string assert_off_macro;               ///< X_ASSERT_OFF: set when X_ASSERT is assert under NDEBUG
+  std::string activated_fn;                   ///< X_activated
+  std::string enabled_fn;                     ///< X_enabled
+  std::string place_count;                    ///< X_PLACE_COUNT
+  std::string transition_count;               ///< X_TRANSITION_COUNT
+  std::vector<std::string> place_const;       ///< X_<place>, by place index
+  std::vector<std::string> transition_const;  ///< X_<transition>, by transition index
   // The scalable form's file-local helpers (named after the enumerations, so that a place
   // called `lowest` keeps its constant X_lowest and the helper gives way).
-  std::string lowest_fn;       ///< the number of the lowest bit of a word
-  std::string next_fn;         ///< the next member of a set with summary levels
-  std::string insert_fn;       ///< adds a member
-  std::string erase_fn;        ///< removes a member
-  std::string sort_fn;         ///< sorts a short list of place numbers
-  std::string watched_fn;      ///< whether a place runs exit/entry code or resets a timer
-  std::string active_levels;   ///< where the levels of the active set begin
-  std::string candidate_levels;///< where the levels of the candidate set begin
+  std::string lowest_fn;         ///< the number of the lowest bit of a word
+  std::string next_fn;           ///< the next member of a set with summary levels
+  std::string insert_fn;         ///< adds a member
+  std::string erase_fn;          ///< removes a member
+  std::string sort_fn;           ///< sorts a short list of place numbers
+  std::string watched_fn;        ///< whether a place runs exit/entry code or resets a timer
+  std::string active_levels;     ///< where the levels of the active set begin
+  std::string candidate_levels;  ///< where the levels of the candidate set begin
   /// The split sequential form (Layout::part_places): part `k` of the switch `kind` (one of
   /// kPartKinds) is the function `<part_base>_<kind>_<k>`, and the table of a switch's parts is
   /// `<part_base>_<kind>_parts`; part_base is the type, moved aside if a name is taken.
   std::string part_base;
   static constexpr const char *kPartKinds[] = {"time", "update", "exit", "enter", "hook", "act"};
   std::size_t part_count() const { return (chart.places.size() + layout.part_places - 1) / layout.part_places; }
-  std::string part_fn(const char *kind, std::size_t k) const { return part_base + "_" + kind + "_" + std::to_string(k); }
+  std::string part_fn(const char *kind, std::size_t k) const {
+    return part_base + "_" + kind + "_" + std::to_string(k);
+  }
   std::string part_table(const char *kind) const { return part_base + "_" + kind + "_parts"; }
 
   // Struct fields: chart variables keep their own names; the engine's own fields give way
   // (take a trailing `_`) if a variable already has their name.
   std::vector<std::string> var_field;    ///< by var index
   std::vector<std::string> timer_field;  ///< by place index; empty for places without a timer
-  std::string av;       ///< sfc: activation counters
-  std::string state;    ///< fsm: the current state
-  std::string status;   ///< fsm: 0 running, 1 succeeded, -1 failed
-  std::string started;  ///< set by the first tick, when an initial place has an entry block
-  std::string current;  ///< sequential form: the number of the one active place
-  std::string active;   ///< sparse form: the active places as bits with summary levels
-  std::string candidates;  ///< sparse form, not place-driven: the transitions to try this tick
+  std::string av;                        ///< sfc: activation counters
+  std::string state;                     ///< fsm: the current state
+  std::string status;                    ///< fsm: 0 running, 1 succeeded, -1 failed
+  std::string started;                   ///< set by the first tick, when an initial place has an entry block
+  std::string current;                   ///< sequential form: the number of the one active place
+  std::string active;                    ///< sparse form: the active places as bits with summary levels
+  std::string candidates;                ///< sparse form, not place-driven: the transitions to try this tick
   // A team machine's (docs/c-engine.md "Team machines"); empty for a machine that is no team.
-  std::string agent;       ///< this engine's agent number
-  std::string reports;     ///< by agent, the state it last reported (-1: none)
+  std::string agent;         ///< this engine's agent number
+  std::string reports;       ///< by agent, the state it last reported (-1: none)
   std::string set_agent_fn;  ///< X_set_agent
   std::string report_fn;     ///< X_report
   std::string team_size;     ///< X_TEAM_SIZE, the number of agents
@@ -99,14 +101,14 @@ struct Context {
   std::string temp_prefix;
 
   // ------------------------------------------------------------ sub-charts (docs/language.md, "Sub-charts")
-  bool root = true;          ///< the compiled chart; false for an instance embedded in a parent
-  std::string owner;         ///< an instance: "place Search of Patrol", for comments
+  bool root = true;   ///< the compiled chart; false for an instance embedded in a parent
+  std::string owner;  ///< an instance: "place Search of Patrol", for comments
   /// By place: the context of the instance the place runs (null if it runs nothing), and the
   /// parent struct's field that holds it.
   std::vector<std::unique_ptr<Context>> sub;
   std::vector<std::string> sub_field;
-  bool stoppable = false;    ///< an instance whose place (or an enclosing one) can lose activation
-  bool stop_code = false;    ///< stopping the instance runs code: some exit block, at any depth
+  bool stoppable = false;  ///< an instance whose place (or an enclosing one) can lose activation
+  bool stop_code = false;  ///< stopping the instance runs code: some exit block, at any depth
   /// The stop function exists (and is called): it can be stopped and stopping runs code.
   bool has_stop() const { return stoppable && stop_code; }
   /// Some transition condition reads, through active()/succeeded()/failed(), a place whose
@@ -175,10 +177,9 @@ struct Context {
 };
 
 /// Decides every name and fact for compiling `chart`, and for every sub-chart instance below it.
-std::unique_ptr<Context> make_context(const model::Model &model, const model::Chart &chart,
-                                      const EmitOptions &options);
+std::unique_ptr<Context> make_context(const model::Model &model, const model::Chart &chart, const EmitOptions &options);
 
 /// The block holds code (an empty `entry { }` is as good as none).
 inline bool has_code(const std::optional<std::vector<model::Stmt>> &block) { return block && !block->empty(); }
 
-} // namespace gfec::c_backend
+}  // namespace gfec::c_backend

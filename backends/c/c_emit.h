@@ -36,4 +36,4 @@ std::string banner(const Context &c);
 /// A preprocessor line, at column 0 whatever the indentation.
 void directive(CodeWriter &w, const std::string &text);
 
-} // namespace gfec::c_backend
+}  // namespace gfec::c_backend

@@ -46,10 +46,13 @@ bool is_floating(Type t) { return t == Type::Float || t == Type::Double; }
 
 bool is_comparison(BinaryOp op) {
   switch (op) {
-  case BinaryOp::Lt: case BinaryOp::Le: case BinaryOp::Gt: case BinaryOp::Ge: case BinaryOp::Eq: case BinaryOp::Ne:
-    return true;
-  default:
-    return false;
+  case BinaryOp::Lt:
+  case BinaryOp::Le:
+  case BinaryOp::Gt:
+  case BinaryOp::Ge:
+  case BinaryOp::Eq:
+  case BinaryOp::Ne: return true;
+  default: return false;
   }
 }
 
@@ -329,7 +332,8 @@ private:
 
   /// `active(P.Q)`, as the chart says it, for comments.
   std::string what(const Expr &e) const {
-    if (e.kind != Expr::Kind::Active) return fmt::format("{}({})", e.kind == Expr::Kind::Succeeded ? "succeeded" : "failed", c_.place(e.index).name);
+    if (e.kind != Expr::Kind::Active)
+      return fmt::format("{}({})", e.kind == Expr::Kind::Succeeded ? "succeeded" : "failed", c_.place(e.index).name);
     std::string s;
     const Context *c = &c_;
     for (int p : e.path) {
@@ -387,8 +391,8 @@ private:
     Operands o = operands(e.args);
     std::string args;
     for (std::size_t i = 0; i < o.items.size(); ++i) {
-      Rendered a = i < f.params.size() ? converted(std::move(o.items[i]), e.args[i], f.params[i].type)
-                                       : std::move(o.items[i]);
+      Rendered a =
+          i < f.params.size() ? converted(std::move(o.items[i]), e.args[i], f.params[i].type) : std::move(o.items[i]);
       args += (i ? ", " : "") + a.text;
     }
     return {fmt::format("{}({})", f.name, args), kPrimary, std::move(o.before)};
@@ -450,7 +454,7 @@ private:
 
 bool blank(std::string_view s) { return s.find_first_not_of(" \t\r\f\v") == std::string_view::npos; }
 
-} // namespace
+}  // namespace
 
 const char *c_type(model::Type type) {
   switch (type) {
@@ -484,7 +488,8 @@ std::vector<std::string> Temporaries::declarations() {
         names += (names.empty() ? "" : ", ") + pending_[j].second;
         done[j] = true;
       }
-    lines.push_back(fmt::format("{} {}; /* temporaries: the chart calls left to right */", c_type(pending_[i].first), names));
+    lines.push_back(
+        fmt::format("{} {}; /* temporaries: the chart calls left to right */", c_type(pending_[i].first), names));
   }
   pending_.clear();
   return lines;
@@ -661,7 +666,7 @@ private:
   std::uint32_t next_ = 0;
 };
 
-} // namespace
+}  // namespace
 
 std::vector<std::string> c_statements(const Context &c, const std::vector<model::Stmt> &stmts, Temporaries &temps) {
   Renderer r(c, temps);
@@ -701,4 +706,4 @@ void emit_verbatim(CodeWriter &w, const SourceManager *sources, const SourceRang
   }
 }
 
-} // namespace gfec::c_backend
+}  // namespace gfec::c_backend

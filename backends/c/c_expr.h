@@ -65,8 +65,7 @@ std::string c_condition(const Context &c, const model::Expr &e, Temporaries &tem
 
 /// `e` as the whole test of an `if`: as c_condition(), except that an equality comparison is
 /// not bracketed (clang -Wparentheses-equality takes `if ((a == b))` for a mistyped `=`).
-std::string c_test(const Context &c, const model::Expr &e, Temporaries &temps, bool at_start = false,
-                   int from = -1);
+std::string c_test(const Context &c, const model::Expr &e, Temporaries &temps, bool at_start = false, int from = -1);
 
 /// `e` as the condition of an `if` statement, written inside its brackets: `X()`, `n > 2`, or
 /// where calls need temporaries, the bracketed comma expression `(gfec_t0 = N(), gfec_t0 + M() > 2)`.
@@ -102,4 +101,4 @@ void emit_statements(CodeWriter &w, const Context &c, const std::vector<model::S
 void emit_verbatim(CodeWriter &w, const SourceManager *sources, const SourceRange &range, std::string_view text,
                    std::uint32_t code_begin);
 
-} // namespace gfec::c_backend
+}  // namespace gfec::c_backend

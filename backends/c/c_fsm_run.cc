@@ -267,8 +267,8 @@ private:
   std::vector<std::string> conditions_;  ///< by transition, rendered by declarations()
 };
 
-} // namespace
+}  // namespace
 
 void emit_fsm_run(CodeWriter &w, const Context &c) { FsmRun(w, c).emit(); }
 
-} // namespace gfec::c_backend
+}  // namespace gfec::c_backend

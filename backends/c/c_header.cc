@@ -17,7 +17,7 @@ void aligned(CodeWriter &w, const std::vector<std::pair<std::string, std::string
   for (const auto &r : rows) w.line("{:<{}} /* {} */", r.first, width, r.second);
 }
 
-} // namespace
+}  // namespace
 
 void places_enum(CodeWriter &w, const Context &c) {
   if (c.root)
@@ -86,17 +86,19 @@ void state_struct(CodeWriter &w, const Context &c) {
                         "the transitions to try in a tick (empty between ticks)");
   } else {
     rows.emplace_back(fmt::format("{} {}[{}];", c.readable_counter(), c.av, c.count_text()),
-                      c.layout.bounded ? fmt::format("activation counter of each place (never above {})", c.layout.bound)
-                                       : "activation counter of each place");
+                      c.layout.bounded
+                          ? fmt::format("activation counter of each place (never above {})", c.layout.bound)
+                          : "activation counter of each place");
   }
   for (std::size_t p = 0; p < c.chart.places.size(); ++p)
     if (c.chart.places[p].timed)
-      rows.emplace_back(fmt::format("uint32_t {};", c.timer_field[p]),
-                        fmt::format("ticks {} has been active: elapsed({})", c.chart.places[p].name,
-                                    c.chart.places[p].name));
+      rows.emplace_back(
+          fmt::format("uint32_t {};", c.timer_field[p]),
+          fmt::format("ticks {} has been active: elapsed({})", c.chart.places[p].name, c.chart.places[p].name));
   if (c.needs_started) rows.emplace_back(fmt::format("bool {};", c.started), "the first tick has run");
   if (c.team()) {
-    rows.emplace_back(fmt::format("int {};", c.agent), fmt::format("this engine's agent number (set by {})", c.set_agent_fn));
+    rows.emplace_back(fmt::format("int {};", c.agent),
+                      fmt::format("this engine's agent number (set by {})", c.set_agent_fn));
     rows.emplace_back(fmt::format("{} {}[{}];", c.report_type(), c.reports, c.team_size),
                       "by agent, the state it last reported; -1: none yet");
   }
@@ -131,9 +133,9 @@ void api(CodeWriter &w, const Context &c) {
   w.line("/* Sets the initial {}; calls no code of the chart. */", c.fsm ? "state" : "marking");
   w.line("void {0}_init({0} *m);", t);
   if (c.chart.period_ms > 0)
-    w.line("/* One tick ({}): call it every {} ms. */", c.fsm ? "docs/language.md 7" : "docs/language.md 5.1", c.chart.period_ms);
-  else
-    w.line("/* One tick ({}). */", c.fsm ? "docs/language.md 7" : "docs/language.md 5.1");
+    w.line("/* One tick ({}): call it every {} ms. */", c.fsm ? "docs/language.md 7" : "docs/language.md 5.1",
+           c.chart.period_ms);
+  else w.line("/* One tick ({}). */", c.fsm ? "docs/language.md 7" : "docs/language.md 5.1");
   w.line("void {0}_run({0} *m);", t);
   if (c.fsm) {
     w.line("/* 1 if `place` is the current state, else 0. */");
@@ -153,7 +155,8 @@ void hooks(CodeWriter &w, const Context &c) {
   directive(w, "#ifdef " + c.hooks_macro);
   w.line("/* Observation hooks (GFE_Activated, GFE_Enabled): an engine built with -D{} calls them and", c.hooks_macro);
   w.line("   the encapsulating code defines them. At the end of each tick's update, in declaration order:");
-  w.line("   every {} that lost (active false), then gained (active true) its activation; then every", c.fsm ? "state" : "place");
+  w.line("   every {} that lost (active false), then gained (active true) its activation; then every",
+         c.fsm ? "state" : "place");
   w.line("   transition whose inputs are all active now but were not at the start of the tick. */");
   w.line("void {0}({1} *m, int place, bool active);", c.activated_fn, c.type);
   w.line("void {0}({1} *m, int transition);", c.enabled_fn, c.type);
@@ -170,7 +173,8 @@ void interface_functions(CodeWriter &w, const Context &c) {
   for (const auto &iface : interfaces) {
     w.blank();
     if (iface.empty())
-      w.line("/* Functions the chart{} calls: the robot library defines them. */", c.has_sub() ? " and its sub-charts" : "");
+      w.line("/* Functions the chart{} calls: the robot library defines them. */",
+             c.has_sub() ? " and its sub-charts" : "");
     else
       w.line("/* Functions of interface {} that the chart{} calls: the robot library defines them. */", iface,
              c.has_sub() ? " and its sub-charts" : "");
@@ -181,7 +185,7 @@ void interface_functions(CodeWriter &w, const Context &c) {
   }
 }
 
-} // namespace
+}  // namespace
 
 void emit_header(const Context &c, std::ostream &out) {
   CodeWriter w(out, c.header_file, false);
@@ -218,4 +222,4 @@ void emit_header(const Context &c, std::ostream &out) {
   directive(w, fmt::format("#endif /* {} */", c.guard));
 }
 
-} // namespace gfec::c_backend
+}  // namespace gfec::c_backend

@@ -123,7 +123,7 @@ void plan_lists(const model::Chart &c, Layout &l) {
   l.watch_capacity = l.bounded ? std::min<std::uint64_t>(watched, l.tokens) : watched;
 }
 
-} // namespace
+}  // namespace
 
 BitLevels bit_levels(std::size_t n) {
   // At least two levels, so that the top (one word) always summarises a level below it.
@@ -150,9 +150,9 @@ Layout plan_layout(const model::Chart &chart, EngineForm requested, std::vector<
   // little of a large chart is active at once; a chart that keeps a quarter of its places or more
   // active (as many parallel branches do) runs faster in the readable form.
   const bool concurrent = l.bounded && l.tokens * 4 > chart.places.size();
-  bool scalable = requested == EngineForm::Scalable ||
-                  (requested == EngineForm::Auto && chart.places.size() > kReadableMaxPlaces &&
-                   (sequential || !concurrent));
+  bool scalable =
+      requested == EngineForm::Scalable ||
+      (requested == EngineForm::Auto && chart.places.size() > kReadableMaxPlaces && (sequential || !concurrent));
   if (!scalable || chart.kind != model::Chart::Kind::Sfc) return l;
   l.form = sequential ? Layout::Form::Sequential : Layout::Form::Sparse;
   l.index_bits = bits_for(chart.places.size());
@@ -168,4 +168,4 @@ Layout plan_layout(const model::Chart &chart, EngineForm requested, std::vector<
   return l;
 }
 
-} // namespace gfec::c_backend
+}  // namespace gfec::c_backend

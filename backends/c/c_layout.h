@@ -48,24 +48,24 @@ struct Layout {
   Form form = Form::Readable;
 
   // ---- bounds (every form computes them; the sparse form sizes its counters by them)
-  bool bounded = false;     ///< the weights exist: activation is bounded
-  std::uint64_t bound = 0;  ///< bounded: no place's counter ever exceeds this
-  std::uint64_t tokens = 0; ///< bounded: the total activation never exceeds this
-  int counter_bits = 32;    ///< 8, 16 or 32: the narrowest type that holds `bound`
-  bool saturate = true;     ///< not bounded: counters stop at UINT32_MAX instead of wrapping
+  bool bounded = false;      ///< the weights exist: activation is bounded
+  std::uint64_t bound = 0;   ///< bounded: no place's counter ever exceeds this
+  std::uint64_t tokens = 0;  ///< bounded: the total activation never exceeds this
+  int counter_bits = 32;     ///< 8, 16 or 32: the narrowest type that holds `bound`
+  bool saturate = true;      ///< not bounded: counters stop at UINT32_MAX instead of wrapping
 
   // ---- the sequential form
   std::size_t part_places = 0;  ///< 0: one run function; else the switches' parts of this many places
 
   // ---- the sparse form
-  int index_bits = 32;          ///< 8, 16 or 32: a type for place numbers (lists of places)
-  std::vector<int> owner;       ///< by transition: the input place whose visit tries it
-  bool place_driven = false;    ///< owners never decrease in declaration order (see c_layout.cc)
-  BitLevels active;             ///< the active places
-  BitLevels candidates;         ///< !place_driven: the transitions to try this tick
-  std::size_t add_capacity = 0;     ///< places that fired transitions produce into, per tick
-  std::size_t watch_capacity = 0;   ///< watched places that lose (or gain) activation per tick
-  std::vector<bool> watched;    ///< by place: runs exit or entry code, or resets a timer
+  int index_bits = 32;             ///< 8, 16 or 32: a type for place numbers (lists of places)
+  std::vector<int> owner;          ///< by transition: the input place whose visit tries it
+  bool place_driven = false;       ///< owners never decrease in declaration order (see c_layout.cc)
+  BitLevels active;                ///< the active places
+  BitLevels candidates;            ///< !place_driven: the transitions to try this tick
+  std::size_t add_capacity = 0;    ///< places that fired transitions produce into, per tick
+  std::size_t watch_capacity = 0;  ///< watched places that lose (or gain) activation per tick
+  std::vector<bool> watched;       ///< by place: runs exit or entry code, or resets a timer
 };
 
 /// Decides the form for `chart` as `requested`, and everything that form needs. `watched`, by
@@ -75,4 +75,4 @@ Layout plan_layout(const model::Chart &chart, EngineForm requested, std::vector<
 /// "uint8_t", "uint16_t" or "uint32_t".
 const char *uint_type(int bits);
 
-} // namespace gfec::c_backend
+}  // namespace gfec::c_backend

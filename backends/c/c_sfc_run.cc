@@ -60,7 +60,8 @@ private:
   void declarations() {
     section("");
     if (produces())
-      w_.line("{} {}[{}] = {{0}}; /* activation produced in this tick */", c_.readable_counter(), c_.add, c_.place_count);
+      w_.line("{} {}[{}] = {{0}}; /* activation produced in this tick */", c_.readable_counter(), c_.add,
+              c_.place_count);
     // The conditions are rendered first: the temporaries they need belong to the whole function.
     for (const auto &t : c_.chart.transitions)
       conditions_.push_back(t.condition ? c_condition(c_, *t.condition, temps_, true) : "");
@@ -105,8 +106,7 @@ private:
     if (!c_.has_timers) return;
     section("/* Count the ticks of the active places that have a timer */");
     for (int p = 0; p < static_cast<int>(c_.chart.places.size()); ++p)
-      if (c_.place(p).timed)
-        w_.line("if ({0} && {1} < UINT32_MAX) {{ {1}++; }}", c_.av_of(p), c_.timer_of(p));
+      if (c_.place(p).timed) w_.line("if ({0} && {1} < UINT32_MAX) {{ {1}++; }}", c_.av_of(p), c_.timer_of(p));
   }
 
   /// Step 2: one block per transition, in declaration order. `&&` short-circuits, so the
@@ -236,8 +236,8 @@ private:
   std::vector<std::string> conditions_;  ///< by transition, rendered by declarations()
 };
 
-} // namespace
+}  // namespace
 
 void emit_sfc_run(CodeWriter &w, const Context &c) { SfcRun(w, c).emit(); }
 
-} // namespace gfec::c_backend
+}  // namespace gfec::c_backend

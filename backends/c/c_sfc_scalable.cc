@@ -110,8 +110,9 @@ protected:
     for (std::size_t i : transitions) {
       const auto &t = c_.chart.transitions[i];
       if (!t.condition) text.emplace_back();
-      else text.push_back(alone ? c_test(c_, *t.condition, temps_, true, from(t))
-                         : c_condition(c_, *t.condition, temps_, true, from(t)));
+      else
+        text.push_back(alone ? c_test(c_, *t.condition, temps_, true, from(t))
+                             : c_condition(c_, *t.condition, temps_, true, from(t)));
     }
     return text;
   }
@@ -192,8 +193,9 @@ private:
   // The switches, and whether the run function uses them (their parts exist only then: an unused
   // static function is a warning).
   PlaceSwitch time_switch() {
-    return {"time", [this](int p) { return c_.place(p).timed; },
-            [this](int p) { w_.line("case {0}: if ({1} < UINT32_MAX) {{ {1}++; }} break;", constant(p), c_.timer_of(p)); }};
+    return {
+        "time", [this](int p) { return c_.place(p).timed; },
+        [this](int p) { w_.line("case {0}: if ({1} < UINT32_MAX) {{ {1}++; }} break;", constant(p), c_.timer_of(p)); }};
   }
   bool counts_time() const { return c_.has_timers; }
   /// The transitions leaving a place, in declaration order, up to the first that always fires
@@ -225,22 +227,26 @@ private:
     case_end();
   }
   PlaceSwitch exit_switch() {
-    return {"exit", [this](int p) { return c_.runs_exit(p); }, [this](int p) { case_block(p, exit_of(p), c_.stop_call(p)); }};
+    return {"exit", [this](int p) { return c_.runs_exit(p); },
+            [this](int p) { case_block(p, exit_of(p), c_.stop_call(p)); }};
   }
   PlaceSwitch entry_switch() {
-    return {"enter", [this](int p) { return c_.runs_entry(p) || c_.resets_timer(p); }, [this](int p) { entry_case(p); }};
+    return {"enter", [this](int p) { return c_.runs_entry(p) || c_.resets_timer(p); },
+            [this](int p) { entry_case(p); }};
   }
   PlaceSwitch hook_switch() {
     return {"hook", [this](int p) { return !owned(p).empty(); },
             [this](int p) {
               std::string calls;
-              for (std::size_t t : owned(p)) calls += fmt::format(" {}({}, {});", c_.enabled_fn, c_.self, c_.transition_const[t]);
+              for (std::size_t t : owned(p))
+                calls += fmt::format(" {}({}, {});", c_.enabled_fn, c_.self, c_.transition_const[t]);
               w_.line("case {}:{} break;", constant(p), calls);
             }};
   }
   bool hooks_transitions() const { return !c_.chart.transitions.empty() && c_.hooks(); }
   PlaceSwitch action_switch() {
-    return {"act", [this](int p) { return c_.acts(p); }, [this](int p) { case_block(p, c_.place(p).action, {}, c_.tick_call(p)); }};
+    return {"act", [this](int p) { return c_.acts(p); },
+            [this](int p) { case_block(p, c_.place(p).action, {}, c_.tick_call(p)); }};
   }
 
   /// `switch (value) { <the cases> }`, or in the split form the call of the part holding `value`.
@@ -426,7 +432,8 @@ private:
       if (l().watch_capacity == 1)  // no sort reads them: say to code analysers that they are set
         w_.line("{0}[0] = 0; {1}[0] = 0; /* only the entries written are read */", c_.lost, c_.gained);
     }
-    if (has_transitions() || any_actions()) w_.line("uint32_t {}, {}; /* a word of a set, its bits */", c_.word, c_.bits);
+    if (has_transitions() || any_actions())
+      w_.line("uint32_t {}, {}; /* a word of a set, its bits */", c_.word, c_.bits);
     // An instance has no hooks: its place number is local to the commit loop (cppcheck).
     if (has_transitions()) {
       if (c_.hooks()) w_.line("uint32_t {}, {};", c_.index, i);
@@ -499,7 +506,8 @@ private:
     CodeWriter::Scope scope(w_, "}");  // the block transition_test opened
     for (int p : t.inputs) {
       std::string lost = c_.watched(p) ? fmt::format(" {}[{}++] = {};", c_.lost, c_.lost_n, constant(p)) : "";
-      w_.line("if (--{} == 0u) {{ {}({}, 0u, {});{} }}", c_.av_of(p), c_.erase_fn, active_set_args(), constant(p), lost);
+      w_.line("if (--{} == 0u) {{ {}({}, 0u, {});{} }}", c_.av_of(p), c_.erase_fn, active_set_args(), constant(p),
+              lost);
     }
     for (int q : t.outputs) w_.line("{}[{}++] = {};", c_.add, c_.add_n, constant(q));
   }
@@ -578,7 +586,8 @@ private:
     for (int p = 0; p < places(); ++p) exits = exits || c_.runs_exit(p);
     if (exits) {
       auto scope = w_.block(fmt::format("for ({0} = 0; {0} < {1}; ++{0}) {{", i, c_.lost_n));
-      w_.line("if ({}[{}[{}]] != 0u) {{ continue; }} /* lost and regained: still active */", c_.field(c_.av), c_.lost, i);
+      w_.line("if ({}[{}[{}]] != 0u) {{ continue; }} /* lost and regained: still active */", c_.field(c_.av), c_.lost,
+              i);
       w_.line("switch ({}[{}]) {{", c_.lost, i);
       for (int p = 0; p < places(); ++p)
         if (c_.runs_exit(p)) case_block(p, exit_of(p), c_.stop_call(p));
@@ -586,8 +595,9 @@ private:
     }
     auto scope = w_.block(fmt::format("for ({0} = 0, {1} = 0; {0} < {2}; ++{0}) {{", i, j, c_.gained_n));
     w_.line("while ({0} < {1} && {2}[{0}] < {3}[{4}]) {{ ++{0}; }}", j, c_.lost_n, c_.lost, c_.gained, i);
-    w_.line("if ({0} < {1} && {2}[{0}] == {3}[{4}]) {{ continue; }} /* lost and regained: no entry, the timer goes on */",
-            j, c_.lost_n, c_.lost, c_.gained, i);
+    w_.line(
+        "if ({0} < {1} && {2}[{0}] == {3}[{4}]) {{ continue; }} /* lost and regained: no entry, the timer goes on */",
+        j, c_.lost_n, c_.lost, c_.gained, i);
     w_.line("switch ({}[{}]) {{", c_.gained, i);
     for (int p = 0; p < places(); ++p)
       if (c_.runs_entry(p) || c_.resets_timer(p)) entry_case(p);
@@ -602,11 +612,14 @@ private:
     directive(w_, "#ifdef " + c_.hooks_macro);
     w_.line("/* Observation hooks: places that lost, then gained activation; transitions open from now on */");
     const std::string &p = c_.index, &b = c_.before;
-    auto was = [&](const std::string &place) { return fmt::format("(({}[{} >> 5] >> ({} & 31u)) & 1u)", b, place, place); };
+    auto was = [&](const std::string &place) {
+      return fmt::format("(({}[{} >> 5] >> ({} & 31u)) & 1u)", b, place, place);
+    };
     for (bool gained : {false, true}) {
       w_.line("for ({0} = 0; {0} < {1}; ++{0}) {{", p, c_.place_count);
-      w_.line("    if ({} {} 0u && {}[{}] {} 0u) {{ {}({}, (int){}, {}); }}", was(p), gained ? "==" : "!=",
-              c_.field(c_.av), p, gained ? "!=" : "==", c_.activated_fn, c_.self, p, gained ? "true" : "false");
+      w_.line("    if ({} {} 0u && {}[{}] {} 0u) {{ {}({}, (int){}, {}); }}", was(p),
+              gained ? "==" : "!=", c_.field(c_.av), p, gained ? "!=" : "==", c_.activated_fn, c_.self, p,
+              gained ? "true" : "false");
       w_.line("}");
     }
     for (std::size_t t = 0; t < c_.chart.transitions.size(); ++t) {
@@ -656,7 +669,8 @@ void sparse_helpers(CodeWriter &w, const Context &c) {
     for (auto f : b.from) s += (s.empty() ? "" : ", ") + fmt::format("{}u", f);
     return s;
   };
-  w.line("/* Sets of numbers ({}) as bits with summary levels:", l.place_driven ? "the active places" : "the active places, the candidate transitions");
+  w.line("/* Sets of numbers ({}) as bits with summary levels:",
+         l.place_driven ? "the active places" : "the active places, the candidate transitions");
   w.line("   bit j of a word of level k+1 says that word j of level k has members, so looking for the next");
   w.line("   member skips empty words. The tables say where each level's words begin; the last entry is");
   w.line("   the total. */");
@@ -755,17 +769,15 @@ void sparse_helpers(CodeWriter &w, const Context &c) {
   w.line("}");
 }
 
-} // namespace
+}  // namespace
 
 void emit_scalable_helpers(CodeWriter &w, const Context &c) {
   if (c.sparse()) sparse_helpers(w, c);
 }
 
 void emit_scalable_sfc_run(CodeWriter &w, const Context &c) {
-  if (c.sequential())
-    SequentialRun(w, c).emit();
-  else
-    SparseRun(w, c).emit();
+  if (c.sequential()) SequentialRun(w, c).emit();
+  else SparseRun(w, c).emit();
 }
 
-} // namespace gfec::c_backend
+}  // namespace gfec::c_backend

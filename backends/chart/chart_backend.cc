@@ -30,7 +30,8 @@ std::set<int> charts_to_write(const model::Model &m, int root) {
 std::string prototype(const model::Function &f) {
   std::string params;
   for (const auto &p : f.params)
-    params += fmt::format("{}{}{}{}", params.empty() ? "" : ", ", model::type_name(p.type), p.name.empty() ? "" : " ", p.name);
+    params += fmt::format("{}{}{}{}", params.empty() ? "" : ", ", model::type_name(p.type), p.name.empty() ? "" : " ",
+                          p.name);
   return fmt::format("{} {}({});", model::type_name(f.result), f.name, params);
 }
 
@@ -56,13 +57,14 @@ void interfaces(CodeWriter &w, const model::Model &m, const std::set<int> &chart
   }
 }
 
-void value(CodeWriter &w, const model::Model &m, int chart, const char *keyword, model::Type type, const std::string &name,
-           const model::Expr *init) {
+void value(CodeWriter &w, const model::Model &m, int chart, const char *keyword, model::Type type,
+           const std::string &name, const model::Expr *init) {
   if (init) w.line("{} {} {} = {};", keyword, model::type_name(type), name, chart_text::expr(m, chart, *init));
   else w.line("{} {} {};", keyword, model::type_name(type), name);
 }
 
-void block(CodeWriter &w, const model::Model &m, int chart, const char *keyword, const std::vector<model::Stmt> &stmts) {
+void block(CodeWriter &w, const model::Model &m, int chart, const char *keyword,
+           const std::vector<model::Stmt> &stmts) {
   w.line("{} {{", keyword);
   w.indent();
   chart_text::statements(w, m, chart, stmts);
@@ -150,8 +152,8 @@ public:
   }
 };
 
-} // namespace
+}  // namespace
 
 std::unique_ptr<Backend> make_chart_backend() { return std::make_unique<ChartBackend>(); }
 
-} // namespace gfec
+}  // namespace gfec

@@ -12,4 +12,4 @@ namespace gfec {
 /// The back end registered as `chart`.
 std::unique_ptr<Backend> make_chart_backend();
 
-} // namespace gfec
+}  // namespace gfec

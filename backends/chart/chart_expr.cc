@@ -19,7 +19,7 @@ const std::string &place_name(const model::Model &m, int chart, int place) {
   return m.charts[static_cast<std::size_t>(chart)].places[static_cast<std::size_t>(place)].name;
 }
 
-} // namespace
+}  // namespace
 
 std::string expr(const model::Model &m, int chart, const model::Expr &e) {
   using K = model::Expr::Kind;
@@ -33,7 +33,8 @@ std::string expr(const model::Model &m, int chart, const model::Expr &e) {
   case K::Var: return c.vars[static_cast<std::size_t>(e.index)].name;
   case K::Const: return m.consts[static_cast<std::size_t>(e.index)].name;
   case K::Config: return m.plans.empty() ? "?" : "?";  // plans are not converted (see chart_backend.cc)
-  case K::Call: return fmt::format("{}({})", m.functions[static_cast<std::size_t>(e.index)].name, args_of(m, chart, e.args));
+  case K::Call:
+    return fmt::format("{}({})", m.functions[static_cast<std::size_t>(e.index)].name, args_of(m, chart, e.args));
   case K::Elapsed: return fmt::format("elapsed({})", place_name(m, chart, e.index));
   case K::Unary: {
     std::string operand = expr(m, chart, e.args[0]);
@@ -99,4 +100,4 @@ void statements(CodeWriter &w, const model::Model &m, int chart, const std::vect
   }
 }
 
-} // namespace gfec::chart_text
+}  // namespace gfec::chart_text

@@ -14,4 +14,4 @@ std::string expr(const model::Model &m, int chart, const model::Expr &e);
 /// The statements of a block, one per line, at the writer's indentation.
 void statements(CodeWriter &w, const model::Model &m, int chart, const std::vector<model::Stmt> &block);
 
-} // namespace gfec::chart_text
+}  // namespace gfec::chart_text

@@ -46,10 +46,10 @@ public:
   }
 };
 
-} // namespace
+}  // namespace
 
 std::unique_ptr<Backend> make_cpp_backend() { return std::make_unique<CppBackend>(); }
 
 std::unique_ptr<Backend> make_toolbox_skeleton_backend() { return std::make_unique<ToolboxSkeletonBackend>(); }
 
-} // namespace gfec
+}  // namespace gfec

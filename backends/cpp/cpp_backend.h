@@ -15,4 +15,4 @@ std::unique_ptr<Backend> make_cpp_backend();
 /// The back end registered as `toolbox-skeleton`.
 std::unique_ptr<Backend> make_toolbox_skeleton_backend();
 
-} // namespace gfec
+}  // namespace gfec

@@ -25,4 +25,4 @@ std::string emit_skeleton_header(const model::Model &model, const model::Toolbox
 std::string emit_skeleton_source(const model::Model &model, const model::Toolbox &box, const EmitOptions &options,
                                  const std::string &source_name);
 
-} // namespace gfec::cpp_backend
+}  // namespace gfec::cpp_backend

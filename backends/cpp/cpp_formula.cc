@@ -113,9 +113,7 @@ private:
     return {fmt::format("{}({})", FormulaHelpers::kText, render(number).text)};
   }
 
-  static const Expr &unbracketed(const Expr &e) {
-    return e.kind == Expr::Kind::Paren ? unbracketed(e.args.at(0)) : e;
-  }
+  static const Expr &unbracketed(const Expr &e) { return e.kind == Expr::Kind::Paren ? unbracketed(e.args.at(0)) : e; }
 
   const model::Plan &plan_;
   FormulaHelpers &helpers_;
@@ -154,7 +152,7 @@ std::string float_value(const std::string &text) {
   return float_spelling(fmt::format("{}", value)) + "f";
 }
 
-} // namespace
+}  // namespace
 
 std::string in_argument(const model::Plan &plan, const model::Expr &formula, model::Type param,
                         FormulaHelpers &helpers) {
@@ -179,7 +177,8 @@ std::string out_argument(const model::Plan &plan, const model::Expr &entry, mode
 std::string initial_value(const model::Expr &literal, model::Type type) {
   switch (type) {
   case Type::Bool: return literal.bool_value ? "afp::Value(true)" : "afp::Value(false)";
-  case Type::Int: return fmt::format("afp::Value({})", literal.text == "-2147483648" ? "-2147483647 - 1" : literal.text);
+  case Type::Int:
+    return fmt::format("afp::Value({})", literal.text == "-2147483648" ? "-2147483647 - 1" : literal.text);
   case Type::Float: return fmt::format("afp::Value({})", float_value(literal.text));
   case Type::Double: return fmt::format("afp::Value({})", float_spelling(literal.text));
   case Type::String: return fmt::format("afp::Value({})", c_string_literal(literal.text));
@@ -188,4 +187,4 @@ std::string initial_value(const model::Expr &literal, model::Type type) {
   return afp_type(type);  // objects have no literal: declared by type
 }
 
-} // namespace gfec::cpp_backend
+}  // namespace gfec::cpp_backend

@@ -14,8 +14,8 @@ namespace gfec::cpp_backend {
 struct FormulaHelpers {
   static constexpr const char *kText = "text";      ///< a number as text (the runtime's format)
   static constexpr const char *kDivide = "divide";  ///< int / int; throws on division by zero
-  bool text = false;    ///< some formula joins a computed number to a string
-  bool divide = false;  ///< some formula divides an int by an int
+  bool text = false;                                ///< some formula joins a computed number to a string
+  bool divide = false;                              ///< some formula divides an int by an int
 };
 
 /// `afp::in<float>(afp::entry("walldist"))`, `afp::in<float>(-60)`, or
@@ -33,4 +33,4 @@ std::string out_argument(const model::Plan &plan, const model::Expr &entry, mode
 /// (the runtime takes the entry's type from it).
 std::string initial_value(const model::Expr &literal, model::Type type);
 
-} // namespace gfec::cpp_backend
+}  // namespace gfec::cpp_backend

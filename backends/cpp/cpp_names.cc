@@ -106,4 +106,4 @@ std::string include_guard(const std::string &header_base) {
 
 void directive(CodeWriter &w, const std::string &text) { w.raw(text + "\n"); }
 
-} // namespace gfec::cpp_backend
+}  // namespace gfec::cpp_backend

@@ -70,4 +70,4 @@ std::string include_guard(const std::string &header_base);
 /// A preprocessor line at column 0, whatever the indentation.
 void directive(CodeWriter &w, const std::string &text);
 
-} // namespace gfec::cpp_backend
+}  // namespace gfec::cpp_backend

@@ -43,10 +43,12 @@ void collect_toolboxes(PlanContext &c) {
   c.env_param.assign(c.model.toolboxes.size(), "ee");
   if (c.toolboxes.size() > 1)
     for (int box : c.toolboxes)
-      c.env_param[static_cast<std::size_t>(box)] = "ee_" + environment_type(c.model.toolboxes[static_cast<std::size_t>(box)]);
+      c.env_param[static_cast<std::size_t>(box)] =
+          "ee_" + environment_type(c.model.toolboxes[static_cast<std::size_t>(box)]);
 }
 
-std::vector<std::string> arguments(PlanContext &c, const model::Plan &p, int templ, const std::vector<model::Arg> &args) {
+std::vector<std::string> arguments(PlanContext &c, const model::Plan &p, int templ,
+                                   const std::vector<model::Arg> &args) {
   std::vector<std::string> out;
   if (templ < 0) return out;  // a sub-plan takes no arguments
   const auto &params = c.templ(templ).params;
@@ -122,7 +124,7 @@ void name_handles(PlanContext &c) {
   }
 }
 
-} // namespace
+}  // namespace
 
 const PlanWiring &PlanContext::wiring_of(int plan) const {
   for (const auto &w : plans)
@@ -159,4 +161,4 @@ PlanContext make_plan_context(const model::Model &model, const model::Plan &plan
   return c;
 }
 
-} // namespace gfec::cpp_backend
+}  // namespace gfec::cpp_backend

@@ -25,7 +25,7 @@ std::string entries(const model::Plan &p) {
   return list;
 }
 
-} // namespace
+}  // namespace
 
 std::string emit_plan_header(const PlanContext &c) {
   CodeWriter w(c.header_file, false);
@@ -42,18 +42,18 @@ std::string emit_plan_header(const PlanContext &c) {
     directive(w, "#include " + c_string_literal(toolbox_header(c.model.toolboxes[static_cast<std::size_t>(box)])));
   if (!c.toolboxes.empty()) w.blank();
   const PlanWiring &top = c.plans.back();
-  w.line("/// A new instance of plan {}, for one run by an afp::SteppedExecutor or afp::ThreadedExecutor,", c.plan.name);
+  w.line("/// A new instance of plan {}, for one run by an afp::SteppedExecutor or afp::ThreadedExecutor,",
+         c.plan.name);
   std::string list = entries(c.plan);
-  if (list.empty())
-    w.line("/// which declare its config entries (it has none of its own).");
-  else
-    w.line("/// which declare its config entries in the afp::Configuration: {}.", list);
+  if (list.empty()) w.line("/// which declare its config entries (it has none of its own).");
+  else w.line("/// which declare its config entries in the afp::Configuration: {}.", list);
   for (const auto &sub : c.plans)
-    if (sub.internal) w.line("/// Its sub-plan {} is defined inside it and declares its own entries too.", c.plan_of(sub).name);
+    if (sub.internal)
+      w.line("/// Its sub-plan {} is defined inside it and declares its own entries too.", c.plan_of(sub).name);
   w.line("std::unique_ptr<afp::Plan> {}({});", top.factory, c.factory_params(top));
   w.blank();
   directive(w, "#endif  // " + c.guard);
   return w.take();
 }
 
-} // namespace gfec::cpp_backend
+}  // namespace gfec::cpp_backend

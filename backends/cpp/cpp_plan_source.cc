@@ -92,8 +92,9 @@ public:
   }
 
   void factory() {
-    out_.put(w_.internal ? fmt::format("// Sub-plan {}: used as an actor, it ends in OK, INTERRUPTED or ERROR.", p_.name)
-                         : fmt::format("// Plan {}: a new instance for an executor; it declares its config entries.", p_.name));
+    out_.put(w_.internal
+                 ? fmt::format("// Sub-plan {}: used as an actor, it ends in OK, INTERRUPTED or ERROR.", p_.name)
+                 : fmt::format("// Plan {}: a new instance for an executor; it declares its config entries.", p_.name));
     out_.put(fmt::format("std::unique_ptr<afp::Plan> {}({}) {{", w_.factory, c_.factory_params(w_)));
     out_.indent();
     create_plan();
@@ -130,8 +131,8 @@ private:
       std::string head = fmt::format("{}plan->add_actor({}, ", lhs, c_string_literal(a.name));
       if (a.subplan >= 0) {
         const PlanWiring &sub = c_.wiring_of(a.subplan);
-        out_.from(a.range, fmt::format("{}std::make_unique<afp::SubPlan>({}({})));", head, sub.factory,
-                                       c_.factory_args(sub)));
+        out_.from(a.range,
+                  fmt::format("{}std::make_unique<afp::SubPlan>({}({})));", head, sub.factory, c_.factory_args(sub)));
       } else {
         out_.from(a.range, instance(head, a.templ, w_.actor_args[i]));
       }
@@ -139,12 +140,12 @@ private:
   }
 
   void create_supervisors() {
-    if (p_.globals.empty() && std::all_of(p_.actors.begin(), p_.actors.end(), [](const auto &a) { return a.supervisors.empty(); }))
+    if (p_.globals.empty() &&
+        std::all_of(p_.actors.begin(), p_.actors.end(), [](const auto &a) { return a.supervisors.empty(); }))
       return;
     out_.blank();
     out_.put("// **** Create Supervisor instances ****");
-    for (std::size_t g = 0; g < p_.globals.size(); ++g)
-      supervisor(p_.globals[g], w_.global[g], w_.global_args[g]);
+    for (std::size_t g = 0; g < p_.globals.size(); ++g) supervisor(p_.globals[g], w_.global[g], w_.global_args[g]);
     for (std::size_t a = 0; a < p_.actors.size(); ++a)
       for (std::size_t s = 0; s < p_.actors[a].supervisors.size(); ++s)
         supervisor(p_.actors[a].supervisors[s], w_.local[a][s], w_.local_args[a][s]);
@@ -152,7 +153,8 @@ private:
 
   void supervisor(const model::SupervisorUse &s, const std::string &handle, const std::vector<std::string> &args) {
     std::string lhs = s.rules.empty() ? "" : "auto* " + handle + " = ";
-    out_.from(s.range, instance(fmt::format("{}plan->add_supervisor({}, ", lhs, c_string_literal(s.name)), s.templ, args));
+    out_.from(s.range,
+              instance(fmt::format("{}plan->add_supervisor({}, ", lhs, c_string_literal(s.name)), s.templ, args));
   }
 
   /// `head std::make_unique<Class>(ee, args...));`
@@ -233,7 +235,7 @@ void helpers(Writer &out, const FormulaHelpers &h) {
   }
 }
 
-} // namespace
+}  // namespace
 
 std::string emit_plan_source(const PlanContext &c) {
   Writer out(c);
@@ -264,4 +266,4 @@ std::string emit_plan_source(const PlanContext &c) {
   return out.take();
 }
 
-} // namespace gfec::cpp_backend
+}  // namespace gfec::cpp_backend

@@ -29,12 +29,14 @@ std::string param_type(const model::TemplateParam &p) {
 
 void constructor(CodeWriter &w, const model::Template &t, const std::string &env, const MemberNames &n) {
   std::string params = fmt::format("{}& {}", env, n.env_param);
-  for (std::size_t i = 0; i < t.params.size(); ++i) params += fmt::format(", {} {}", param_type(t.params[i]), n.param[i]);
+  for (std::size_t i = 0; i < t.params.size(); ++i)
+    params += fmt::format(", {} {}", param_type(t.params[i]), n.param[i]);
   std::string head = fmt::format("{}{}({})", t.params.empty() ? "explicit " : "", class_name(t), params);
   std::string inits;
   if (t.period_ms > 0) inits = fmt::format("afp::Supervisor({}), ", chrono_period(t.period_ms));
   inits += fmt::format("{}({})", n.env_member, n.env_param);
-  for (std::size_t i = 0; i < t.params.size(); ++i) inits += fmt::format(", {}(std::move({}))", n.member[i], n.param[i]);
+  for (std::size_t i = 0; i < t.params.size(); ++i)
+    inits += fmt::format(", {}(std::move({}))", n.member[i], n.param[i]);
   if (head.size() + inits.size() + 12 <= 100) {
     w.line("{} : {} {{}}", head, inits);
   } else {
@@ -92,7 +94,7 @@ void template_class(CodeWriter &w, const model::Template &t, const std::string &
   w.line("};");
 }
 
-} // namespace
+}  // namespace
 
 std::string emit_skeleton_header(const model::Model &model, const model::Toolbox &box, const EmitOptions &options) {
   const std::string header = base_name(options.output_path);
@@ -130,4 +132,4 @@ std::string emit_skeleton_header(const model::Model &model, const model::Toolbox
   return w.take();
 }
 
-} // namespace gfec::cpp_backend
+}  // namespace gfec::cpp_backend

@@ -28,7 +28,8 @@ bool read_inputs(CodeWriter &w, const model::Template &t, const MemberNames &n, 
 std::string outputs(const model::Template &t, const MemberNames &n) {
   std::string list;
   for (std::size_t i = 0; i < t.params.size(); ++i)
-    if (t.params[i].dir == model::ParamDir::Out) list += fmt::format("{}{}.write(ctx, value)", list.empty() ? "" : ", ", n.member[i]);
+    if (t.params[i].dir == model::ParamDir::Out)
+      list += fmt::format("{}{}.write(ctx, value)", list.empty() ? "" : ", ", n.member[i]);
   return list;
 }
 
@@ -73,12 +74,12 @@ void actor_or_supervisor(CodeWriter &w, const model::Template &t, const MemberNa
   std::vector<std::string> todo;
   if (supervisor) {
     w.line("afp::CheckResult {}::check(afp::Context& ctx) {{", cls);
-    todo.push_back(fmt::format("// TODO: look at the robot through {}; return afp::no_event, or the event: {}.", n.env_member,
-                               outcome_list(t)));
+    todo.push_back(fmt::format("// TODO: look at the robot through {}; return afp::no_event, or the event: {}.",
+                               n.env_member, outcome_list(t)));
   } else {
     w.line("afp::StepResult {}::step(afp::Context& ctx) {{", cls);
-    todo.push_back(fmt::format("// TODO: advance the action on {}; return afp::running until it ends in {}.", n.env_member,
-                               outcome_list(t)));
+    todo.push_back(fmt::format("// TODO: advance the action on {}; return afp::running until it ends in {}.",
+                               n.env_member, outcome_list(t)));
   }
   if (!out.empty()) todo.push_back("//       Write the outputs first: " + out + ";");
   w.indent();
@@ -97,13 +98,11 @@ void template_bodies(CodeWriter &w, const model::Template &t) {
   const std::string cls = class_name(t);
   w.line("// {}", template_signature(t));
   w.blank();
-  if (t.kind == model::Template::Kind::Computation)
-    computation(w, t, n, cls);
-  else
-    actor_or_supervisor(w, t, n, cls);
+  if (t.kind == model::Template::Kind::Computation) computation(w, t, n, cls);
+  else actor_or_supervisor(w, t, n, cls);
 }
 
-} // namespace
+}  // namespace
 
 std::string emit_skeleton_source(const model::Model &model, const model::Toolbox &box, const EmitOptions &options,
                                  const std::string &source_name) {
@@ -119,4 +118,4 @@ std::string emit_skeleton_source(const model::Model &model, const model::Toolbox
   return w.take();
 }
 
-} // namespace gfec::cpp_backend
+}  // namespace gfec::cpp_backend

@@ -17,7 +17,7 @@ public:
   }
 };
 
-} // namespace
+}  // namespace
 
 std::string dot_picture(const model::Model &m, const EmitOptions &o) {
   if (o.chart >= 0) return dot::chart_picture(m, m.charts.at(static_cast<std::size_t>(o.chart)));
@@ -27,4 +27,4 @@ std::string dot_picture(const model::Model &m, const EmitOptions &o) {
 
 std::unique_ptr<Backend> make_dot_backend() { return std::make_unique<DotBackend>(); }
 
-} // namespace gfec
+}  // namespace gfec

@@ -18,4 +18,4 @@ std::unique_ptr<Backend> make_svg_backend();
 /// The DOT text for the chart or plan `options` selects.
 std::string dot_picture(const model::Model &model, const EmitOptions &options);
 
-} // namespace gfec
+}  // namespace gfec

@@ -75,8 +75,9 @@ std::string chart_body(const model::Model &m, const model::Chart &c, const std::
     const model::Chart &sub = m.charts.at(static_cast<std::size_t>(p.runs));
     std::string inner = fmt::format("{}s{}_", id, i);
     out += fmt::format("  subgraph cluster_{}s{} {{\n", id, i);
-    out += fmt::format("  graph [label={}, style=\"dashed,rounded\", labeljust=l];\n",
-                       quote(fmt::format("{}: {} {}", p.name, sub.kind == model::Chart::Kind::Fsm ? "fsm" : "sfc", sub.name)));
+    out += fmt::format(
+        "  graph [label={}, style=\"dashed,rounded\", labeljust=l];\n",
+        quote(fmt::format("{}: {} {}", p.name, sub.kind == model::Chart::Kind::Fsm ? "fsm" : "sfc", sub.name)));
     out += chart_body(m, sub, inner);
     out += "  }\n";
     // To the sub-chart's first place, clipped at the frame: the line reads "this step encloses that".
@@ -86,7 +87,7 @@ std::string chart_body(const model::Model &m, const model::Chart &c, const std::
   return out;
 }
 
-} // namespace
+}  // namespace
 
 std::string chart_picture(const model::Model &m, const model::Chart &c) {
   bool fsm = c.kind == model::Chart::Kind::Fsm;
@@ -105,4 +106,4 @@ std::string chart_picture(const model::Model &m, const model::Chart &c) {
   return out;
 }
 
-} // namespace gfec::dot
+}  // namespace gfec::dot

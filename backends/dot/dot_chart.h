@@ -9,4 +9,4 @@ namespace gfec::dot {
 
 std::string chart_picture(const model::Model &m, const model::Chart &chart);
 
-} // namespace gfec::dot
+}  // namespace gfec::dot

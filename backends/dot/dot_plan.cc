@@ -20,7 +20,8 @@ public:
     out_ = fmt::format("digraph {} {{\n", quote(plan_.name));
     out_ += preamble("plan " + plan_.name);
     config();
-    out_ += "  terminate [shape=doublecircle, style=filled, fillcolor=black, label=\"\", width=0.15, xlabel=\"terminate\"];\n";
+    out_ += "  terminate [shape=doublecircle, style=filled, fillcolor=black, label=\"\", width=0.15, "
+            "xlabel=\"terminate\"];\n";
     out_ += "  // actors: the start actor double-bordered; result states lead to the next actor\n";
     for (std::size_t i = 0; i < plan_.actors.size(); ++i) actor(i);
     out_ += "  // global supervisors: may interrupt any actor\n";
@@ -78,15 +79,15 @@ private:
     const model::ActorUse &a = plan_.actors[i];
     bool sub = a.subplan >= 0;
     std::string templ = sub ? m_.plans.at(at(a.subplan)).name : m_.templates.at(at(a.templ)).name;
-    std::string kind = sub ? "plan" : m_.templates.at(at(a.templ)).kind == model::Template::Kind::Computation
-                                          ? "computation"
-                                          : "";
+    std::string kind = sub                                                                       ? "plan"
+                       : m_.templates.at(at(a.templ)).kind == model::Template::Kind::Computation ? "computation"
+                                                                                                 : "";
     std::string label = a.name + "\n" + call_text(templ, a.args) + (kind.empty() ? "" : "\n<<" + kind + ">>");
     std::string attrs = sub ? "shape=box, style=\"rounded,bold\"" : "shape=box, style=rounded";
     if (plan_.start == static_cast<int>(i)) attrs += ", peripheries=2";
     out_ += fmt::format("  a{} [{}, label={}];\n", i, attrs, quote(label));
     for (const auto &r : a.rules) {
-      std::string state = !sub               ? m_.templates.at(at(a.templ)).outcomes.at(at(r.outcome))
+      std::string state = !sub                              ? m_.templates.at(at(a.templ)).outcomes.at(at(r.outcome))
                           : r.outcome >= 0 && r.outcome < 3 ? model::kSubPlanStates[r.outcome]
                                                             : "?";
       out_ += fmt::format("  a{} -> {} [label={}];\n", i, target(r.target), quote(state));
@@ -105,7 +106,8 @@ private:
     if (t.period_ms > 0) label += "\nevery " + duration(t.period_ms);
     std::string ignored;
     for (const auto &r : s.rules)
-      if (r.target.kind == model::Target::Kind::Ignore) ignored += (ignored.empty() ? "" : ", ") + t.outcomes.at(at(r.outcome));
+      if (r.target.kind == model::Target::Kind::Ignore)
+        ignored += (ignored.empty() ? "" : ", ") + t.outcomes.at(at(r.outcome));
     if (!ignored.empty()) label += "\nignores " + ignored;
     out_ += fmt::format("  {} [shape=hexagon, style=filled, fillcolor=\"#e8eefc\", label={}];\n", id, quote(label));
     if (!watched.empty()) out_ += fmt::format("  {} -> {} [style=dotted, arrowhead=none];\n", watched, id);
@@ -122,8 +124,8 @@ private:
   std::string out_;
 };
 
-} // namespace
+}  // namespace
 
 std::string plan_picture(const model::Model &m, const model::Plan &plan) { return PlanPicture(m, plan).draw(); }
 
-} // namespace gfec::dot
+}  // namespace gfec::dot

@@ -10,4 +10,4 @@ namespace gfec::dot {
 
 std::string plan_picture(const model::Model &m, const model::Plan &plan);
 
-} // namespace gfec::dot
+}  // namespace gfec::dot

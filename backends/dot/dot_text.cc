@@ -42,4 +42,4 @@ std::string duration(double ms) {
   return fmt::format("{}ms", ms);
 }
 
-} // namespace gfec::dot
+}  // namespace gfec::dot

@@ -17,4 +17,4 @@ std::string preamble(const std::string &title);
 /// A duration for a label: "10ms", "1.5s".
 std::string duration(double ms);
 
-} // namespace gfec::dot
+}  // namespace gfec::dot

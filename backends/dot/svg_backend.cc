@@ -73,8 +73,7 @@ std::string render_svg(const std::string &dot_text) {
                                          "install Graphviz (Debian: apt-get install graphviz) or use --emit=dot",
                                          std::strerror(rc)));
   int status = 0;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
     std::string why = err.read();
     while (!why.empty() && (why.back() == '\n' || why.back() == '\r')) why.pop_back();
@@ -90,8 +89,8 @@ public:
   }
 };
 
-} // namespace
+}  // namespace
 
 std::unique_ptr<Backend> make_svg_backend() { return std::make_unique<SvgBackend>(); }
 
-} // namespace gfec
+}  // namespace gfec

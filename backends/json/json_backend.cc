@@ -11,10 +11,10 @@ namespace gfec {
 
 namespace {
 
-using json_backend::Json;
-using json_backend::Scope;
 using json_backend::expression;
+using json_backend::Json;
 using json_backend::location;
+using json_backend::Scope;
 using json_backend::statements;
 
 /// Bumped when a field changes meaning or disappears; new fields do not bump it.
@@ -28,14 +28,21 @@ Json header(const model::Model &m, const EmitOptions &o, const char *kind, const
   Json files = Json::array();
   if (m.sources)
     for (FileId i = 0; i < m.sources->size(); ++i) files.push_back(m.sources->file(i).path());
-  return {{"format", "gfec-model"}, {"version", kFormatVersion}, {"kind", kind},       {"name", name},
-          {"source", o.source_name}, {"files", std::move(files)}, {"location", location(m, range)}};
+  return {{"format", "gfec-model"},
+          {"version", kFormatVersion},
+          {"kind", kind},
+          {"name", name},
+          {"source", o.source_name},
+          {"files", std::move(files)},
+          {"location", location(m, range)}};
 }
 
 Json function(const model::Function &f) {
   Json params = Json::array();
   for (const auto &p : f.params) params.push_back({{"type", model::type_name(p.type)}, {"name", p.name}});
-  return {{"name", f.name}, {"result", model::type_name(f.result)}, {"params", std::move(params)},
+  return {{"name", f.name},
+          {"result", model::type_name(f.result)},
+          {"params", std::move(params)},
           {"interface", f.interface_name}};
 }
 
@@ -84,8 +91,8 @@ void chart_fields(const model::Model &m, const model::Chart &c, Json &doc) {
       for (int p : list) a.push_back(c.places.at(at(p)).name);
       return a;
     };
-    Json j = {{"index", i}, {"name", t.name}, {"named", t.named}, {"inputs", names(t.inputs)},
-              {"outputs", names(t.outputs)}};
+    Json j = {
+        {"index", i}, {"name", t.name}, {"named", t.named}, {"inputs", names(t.inputs)}, {"outputs", names(t.outputs)}};
     if (fsm && t.inputs.size() == 1 && t.outputs.size() == 1) {
       j["from"] = c.places.at(at(t.inputs[0])).name;
       j["to"] = c.places.at(at(t.outputs[0])).name;
@@ -195,13 +202,15 @@ struct PlanWriter {
              const std::string &supervisor) {
     Json out = Json::array();
     for (const auto &r : list) {
-      Json target = r.target.kind == model::Target::Kind::Actor ? Json(plan.actors.at(at(r.target.actor)).name)
+      Json target = r.target.kind == model::Target::Kind::Actor       ? Json(plan.actors.at(at(r.target.actor)).name)
                     : r.target.kind == model::Target::Kind::Terminate ? Json("terminate")
                                                                       : Json("ignore");
       const char *kind = r.target.kind == model::Target::Kind::Actor       ? "actor"
                          : r.target.kind == model::Target::Kind::Terminate ? "terminate"
                                                                            : "ignore";
-      Json j = {{"outcome", outcome(templ, subplan, r.outcome)}, {"target", target}, {"target_kind", kind},
+      Json j = {{"outcome", outcome(templ, subplan, r.outcome)},
+                {"target", target},
+                {"target_kind", kind},
                 {"location", location(m, r.range)}};
       out.push_back(j);
       Json flat = {{"actor", actor.empty() ? Json(nullptr) : Json(actor)},
@@ -232,9 +241,10 @@ struct PlanWriter {
     Json doc = header(m, o, "plan", plan.name, plan.range);
     Json config = Json::array();
     for (const auto &c : plan.config) {
-      Json init = c.init ? json_backend::expression_tree(m, scope, *c.init).value("value", Json(nullptr)) : Json(nullptr);
-      config.push_back({{"name", c.name}, {"type", model::type_name(c.type)}, {"init", init},
-                        {"location", location(m, c.range)}});
+      Json init =
+          c.init ? json_backend::expression_tree(m, scope, *c.init).value("value", Json(nullptr)) : Json(nullptr);
+      config.push_back(
+          {{"name", c.name}, {"type", model::type_name(c.type)}, {"init", init}, {"location", location(m, c.range)}});
     }
     doc["config"] = std::move(config);
     doc["start"] = plan.start >= 0 ? Json(plan.actors.at(at(plan.start)).name) : Json(nullptr);
@@ -271,7 +281,8 @@ struct PlanWriter {
       const model::Template &t = m.templates[i];
       Json params = Json::array();
       for (const auto &p : t.params)
-        params.push_back({{"dir", p.dir == model::ParamDir::Out ? "out" : "in"}, {"type", model::type_name(p.type)},
+        params.push_back({{"dir", p.dir == model::ParamDir::Out ? "out" : "in"},
+                          {"type", model::type_name(p.type)},
                           {"name", p.name}});
       out.push_back({{"name", t.name},
                      {"kind", template_kind(t.kind)},
@@ -295,8 +306,8 @@ public:
   }
 };
 
-} // namespace
+}  // namespace
 
 std::unique_ptr<Backend> make_json_backend() { return std::make_unique<JsonBackend>(); }
 
-} // namespace gfec
+}  // namespace gfec

@@ -11,4 +11,4 @@ namespace gfec {
 /// The back end registered as `json`.
 std::unique_ptr<Backend> make_json_backend();
 
-} // namespace gfec
+}  // namespace gfec

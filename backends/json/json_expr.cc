@@ -36,10 +36,10 @@ const char *kind_name(Expr::Kind k) {
 template <typename T> const std::string &name_at(const std::vector<T> &table, int index) {
   static const std::string unknown = "?";
   return index >= 0 && static_cast<std::size_t>(index) < table.size() ? table[static_cast<std::size_t>(index)].name
-                                                                         : unknown;
+                                                                      : unknown;
 }
 
-} // namespace
+}  // namespace
 
 Json location(const model::Model &m, const SourceRange &range) {
   if (!m.sources || range.file >= m.sources->size()) return nullptr;
@@ -93,7 +93,8 @@ Json expression_tree(const model::Model &m, const Scope &scope, const Expr &e) {
     for (int p : e.path) {
       path.push_back(chart ? name_at(chart->places, p) : "?");
       int runs = chart && p >= 0 && static_cast<std::size_t>(p) < chart->places.size()
-                     ? chart->places[static_cast<std::size_t>(p)].runs : -1;
+                     ? chart->places[static_cast<std::size_t>(p)].runs
+                     : -1;
       chart = runs >= 0 ? &m.charts.at(static_cast<std::size_t>(runs)) : nullptr;
     }
     j["path"] = std::move(path);
@@ -108,7 +109,8 @@ Json expression_tree(const model::Model &m, const Scope &scope, const Expr &e) {
 }
 
 Json expression(const model::Model &m, const Scope &scope, const Expr &e) {
-  return {{"text", source_text(m, e.range)}, {"type", model::type_name(e.type)}, {"tree", expression_tree(m, scope, e)}};
+  return {
+      {"text", source_text(m, e.range)}, {"type", model::type_name(e.type)}, {"tree", expression_tree(m, scope, e)}};
 }
 
 Json statements(const model::Model &m, const Scope &scope, const std::vector<model::Stmt> &block) {
@@ -144,4 +146,4 @@ Json statements(const model::Model &m, const Scope &scope, const std::vector<mod
   return out;
 }
 
-} // namespace gfec::json_backend
+}  // namespace gfec::json_backend

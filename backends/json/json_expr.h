@@ -27,4 +27,4 @@ Json expression(const model::Model &m, const Scope &scope, const model::Expr &e)
 Json expression_tree(const model::Model &m, const Scope &scope, const model::Expr &e);
 Json statements(const model::Model &m, const Scope &scope, const std::vector<model::Stmt> &block);
 
-} // namespace gfec::json_backend
+}  // namespace gfec::json_backend

@@ -139,10 +139,12 @@ private:
     if (!root.is_object() || (!root.find("states") && !root.find("entryPoints"))) {
       auto &d = diag_.error(range(*doc, root), ErrorKind::AlicaFormat,
                             fmt::format("'{}' is not an ALICA plan: a plan is a JSON object with \"entryPoints\" and "
-                                        "\"states\"", doc->path));
+                                        "\"states\"",
+                                        doc->path));
       if (const char *kind = file_kind(doc->path))
         d.note(fmt::format("this is {}; gfec compiles plans (.pml): give it the plans that use this file, which it "
-                           "then reads too", kind));
+                           "then reads too",
+                           kind));
       return;
     }
     main_->interfaces.emplace_back();
@@ -177,16 +179,19 @@ private:
     const std::string &t = sources_.file(doc->file).text();
     std::size_t first = t.find_first_not_of(" \t\r\n\xef\xbb\xbf");
     if (first != std::string::npos && t[first] == '<') {
-      diag_.error({doc->file, static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(first + 1)}, ErrorKind::AlicaFormat,
-                  "this is an XML file of ALICA's older Eclipse designer; gfec reads the JSON files of the "
-                  "current designer")
+      diag_
+          .error({doc->file, static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(first + 1)},
+                 ErrorKind::AlicaFormat,
+                 "this is an XML file of ALICA's older Eclipse designer; gfec reads the JSON files of the "
+                 "current designer")
           .note("open the plans in the current ALICA plan designer and save them again to convert them");
     } else {
       JsonError error;
       doc->root = parse_json(t, error);
       if (!doc->root)
-        diag_.error({doc->file, error.offset, std::min<std::uint32_t>(error.offset + 1, static_cast<std::uint32_t>(t.size()))},
-                    ErrorKind::Json, "malformed JSON: " + error.message);
+        diag_.error(
+            {doc->file, error.offset, std::min<std::uint32_t>(error.offset + 1, static_cast<std::uint32_t>(t.size()))},
+            ErrorKind::Json, "malformed JSON: " + error.message);
       else index_ids(*doc->root, doc->by_id);
     }
     Doc *raw = doc.get();
@@ -253,7 +258,8 @@ private:
       constexpr int kMaxDepth = 5;
       constexpr std::size_t kMaxEntries = 20000;
       std::size_t seen = 0;
-      fsys::recursive_directory_iterator it(root.empty() ? "." : root, fsys::directory_options::skip_permission_denied, ec);
+      fsys::recursive_directory_iterator it(root.empty() ? "." : root, fsys::directory_options::skip_permission_denied,
+                                            ec);
       for (fsys::recursive_directory_iterator end; !ec && it != end && seen < kMaxEntries; it.increment(ec), ++seen) {
         std::string name = it->path().filename().string();
         if (it->is_directory(ec)) {
@@ -360,14 +366,16 @@ private:
   Target resolve(const std::string &text, Doc &from, const SourceRange &at) {
     auto ref = split_ref(text);
     if (!ref) {
-      diag_.error(at, ErrorKind::AlicaReference, fmt::format("'{}' is no reference: ALICA writes them as \"File.ext#id\"", text));
+      diag_.error(at, ErrorKind::AlicaReference,
+                  fmt::format("'{}' is no reference: ALICA writes them as \"File.ext#id\"", text));
       return {};
     }
     Doc *doc = ref->file.empty() ? &from : find_doc(ref->file, from, at, ref->id);
     if (!doc || !doc->root) return {};
     auto it = doc->by_id.find(ref->id);
     if (it == doc->by_id.end()) {
-      auto &d = diag_.error(at, ErrorKind::AlicaReference, fmt::format("'{}' has no element with id {}", doc->path, ref->id));
+      auto &d =
+          diag_.error(at, ErrorKind::AlicaReference, fmt::format("'{}' has no element with id {}", doc->path, ref->id));
       // A mistyped id: the element whose id is closest (a digit or two off); else, for a file
       // that holds one element (a behaviour, a plan), that element.
       const JsonValue *best = nullptr;
@@ -418,14 +426,20 @@ private:
     element(*t.doc, *t.object, fmt::format("ALICA behaviour '{}' (id {})", label, id));
     for (const char *c : {"preCondition", "runtimeCondition", "postCondition"})
       if (const JsonValue *v = t.object->find(c); non_empty(v))
-        ignored(*t.doc, *v, fmt::format("the {} of behaviour '{}' (id {}) is ignored: gfec calls '{}' on every tick "
-                                        "of the states that hold it", c, label, id, name));
+        ignored(*t.doc, *v,
+                fmt::format("the {} of behaviour '{}' (id {}) is ignored: gfec calls '{}' on every tick "
+                            "of the states that hold it",
+                            c, label, id, name));
     if (const JsonValue *v = t.object->find("variables"); non_empty(v))
-      ignored(*t.doc, *v, fmt::format("the variables of behaviour '{}' (id {}) are ignored: a gfec action function "
-                                      "takes no arguments", label, id));
+      ignored(*t.doc, *v,
+              fmt::format("the variables of behaviour '{}' (id {}) are ignored: a gfec action function "
+                          "takes no arguments",
+                          label, id));
     if (const JsonValue *v = t.object->find("blackboard"); non_empty(v))
-      ignored(*t.doc, *v, fmt::format("the blackboard of behaviour '{}' (id {}) is ignored: gfec has no blackboard, "
-                                      "'{}()' takes no arguments", label, id, name));
+      ignored(*t.doc, *v,
+              fmt::format("the blackboard of behaviour '{}' (id {}) is ignored: gfec has no blackboard, "
+                          "'{}()' takes no arguments",
+                          label, id, name));
     return name;
   }
 
@@ -441,13 +455,17 @@ private:
     declare(name, "bool", range(doc, cond));
     element(doc, cond, fmt::format("ALICA condition '{}' (id {})", label, id));
     if (const JsonValue *q = cond.find("quantifiers"); non_empty(q))
-      ignored(doc, *q, fmt::format("the quantifiers of condition '{}' (id {}) are ignored: gfec's '{}()' takes no "
-                                   "arguments", label, id, name));
+      ignored(doc, *q,
+              fmt::format("the quantifiers of condition '{}' (id {}) are ignored: gfec's '{}()' takes no "
+                          "arguments",
+                          label, id, name));
     if (const JsonValue *v = cond.find("variables"); non_empty(v))
       ignored(doc, *v, fmt::format("the variables of condition '{}' (id {}) are ignored", label, id));
     if (const JsonValue *v = cond.find("blackboard"); non_empty(v))
-      ignored(doc, *v, fmt::format("the blackboard inputs of condition '{}' (id {}) are ignored: gfec has no "
-                                   "blackboard, '{}()' takes no arguments", label, id, name));
+      ignored(doc, *v,
+              fmt::format("the blackboard inputs of condition '{}' (id {}) are ignored: gfec has no "
+                          "blackboard, '{}()' takes no arguments",
+                          label, id, name));
     return name;
   }
 
@@ -493,10 +511,14 @@ private:
     bool first_use = plan_type_warned_.insert(t.object).second;
     for (const char *key : {"variables", "variableBindings"})
       if (const JsonValue *v = t.object->find(key); non_empty(v) && first_use)
-        ignored(*t.doc, *v, fmt::format("the {} of plan type '{}' (id {}) are ignored: gfec sub-charts share no "
-                                        "variables", key, label, id));
+        ignored(*t.doc, *v,
+                fmt::format("the {} of plan type '{}' (id {}) are ignored: gfec sub-charts share no "
+                            "variables",
+                            key, label, id));
     if (activated.empty()) {
-      diag_.error(at, ErrorKind::AlicaReference, fmt::format("plan type '{}' (id {}) has no activated plan to run", label, id))
+      diag_
+          .error(at, ErrorKind::AlicaReference,
+                 fmt::format("plan type '{}' (id {}) has no activated plan to run", label, id))
           .note(range(*t.doc, *t.object), "the plan type is here");
       return "";
     }
@@ -507,8 +529,10 @@ private:
       std::string others;
       for (std::size_t i = 1; i < activated.size(); ++i)
         others += fmt::format("{}'{}'", i > 1 ? ", " : "", activated[i].first);
-      ignored(*t.doc, *t.object, fmt::format("plan type '{}' (id {}) runs its first activated plan, '{}'; ignored: {} "
-                                             "(ALICA chooses by utility at run time)", label, id, chart, others));
+      ignored(*t.doc, *t.object,
+              fmt::format("plan type '{}' (id {}) runs its first activated plan, '{}'; ignored: {} "
+                          "(ALICA chooses by utility at run time)",
+                          label, id, chart, others));
     }
     return chart;
   }
@@ -522,8 +546,10 @@ private:
   void plan_warnings(Doc &doc, const JsonValue &plan, const std::string &what) {
     for (const char *c : {"preCondition", "runtimeCondition"})
       if (const JsonValue *v = plan.find(c); non_empty(v))
-        ignored(doc, *v, fmt::format("the {} of {} is ignored: gfec starts a sub-chart whenever its state is "
-                                     "entered and never aborts it", c, what));
+        ignored(doc, *v,
+                fmt::format("the {} of {} is ignored: gfec starts a sub-chart whenever its state is "
+                            "entered and never aborts it",
+                            c, what));
     if (const JsonValue *v = plan.find("variables"); non_empty(v))
       ignored(doc, *v, fmt::format("the variables of {} are ignored: gfec has no plan variables", what));
     if (const JsonValue *v = plan.find("blackboard"); non_empty(v))
@@ -531,9 +557,10 @@ private:
     if (const JsonValue *syncs = plan.find("synchronisations"); syncs && syncs->is_array())
       for (const auto &s : syncs->items)
         if (s.is_object())
-          ignored(doc, s, fmt::format("synchronisation '{}' (id {}) of {} is ignored: gfec fires each transition "
-                                      "on its own condition", label_of(s), id_of(s.find("id")).value_or("?"),
-                                      what));
+          ignored(doc, s,
+                  fmt::format("synchronisation '{}' (id {}) of {} is ignored: gfec fires each transition "
+                              "on its own condition",
+                              label_of(s), id_of(s.find("id")).value_or("?"), what));
   }
 
   /// The entry point's label: its name, else its task's name, else "EntryPoint<id>".
@@ -571,7 +598,9 @@ private:
         continue;
       }
       if (!state_index.emplace(*id, i).second)
-        diag_.error(range(doc, *states[i]), ErrorKind::AlicaFormat, fmt::format("second state with id {} in {}", *id, what))
+        diag_
+            .error(range(doc, *states[i]), ErrorKind::AlicaFormat,
+                   fmt::format("second state with id {} in {}", *id, what))
             .note(range(doc, *states[state_index[*id]]), "the first one is here");
     }
     if (entries.empty()) {
@@ -611,8 +640,7 @@ private:
       Machine &m = machines[e];
       m.chart.kind = ast::Chart::Kind::Fsm;
       m.chart.range = several ? range(doc, ep) : range(doc, plan);
-      std::string chart_name = several ? global_name(name + identifier(label, "EntryPoint" + ep_id), ep_id, "")
-                                       : name;
+      std::string chart_name = several ? global_name(name + identifier(label, "EntryPoint" + ep_id), ep_id, "") : name;
       m.chart.name = {chart_name, m.chart.range};
       auto start = state_of(ep.find("state"));
       if (!start) {
@@ -622,11 +650,11 @@ private:
         continue;
       }
       if (owner[*start] >= 0) {
-        diag_.error(range(doc, ep), ErrorKind::AlicaFormat,
-                    fmt::format("entry point '{}' (id {}) starts in state '{}', which entry point '{}' already "
-                                "reaches: gfec gives each entry point a machine of its own states",
-                                label, ep_id, label_of(*states[*start]),
-                                machines[owner[*start]].chart.name.text))
+        diag_
+            .error(range(doc, ep), ErrorKind::AlicaFormat,
+                   fmt::format("entry point '{}' (id {}) starts in state '{}', which entry point '{}' already "
+                               "reaches: gfec gives each entry point a machine of its own states",
+                               label, ep_id, label_of(*states[*start]), machines[owner[*start]].chart.name.text))
             .note(range(doc, *states[*start]), "the state is here");
         continue;
       }
@@ -678,12 +706,16 @@ private:
     const JsonValue *min = ep.find("minCardinality"), *max = ep.find("maxCardinality");
     bool free = (!min || min->text == "0") && (!max || max->text == "2147483647");
     if (!free)
-      ignored(doc, ep, fmt::format("the cardinalities [{}..{}] of entry point '{}' (id {}) are ignored: one agent "
-                                   "runs a gfec engine", min ? min->text : "0", max ? max->text : "*", label, id));
+      ignored(doc, ep,
+              fmt::format("the cardinalities [{}..{}] of entry point '{}' (id {}) are ignored: one agent "
+                          "runs a gfec engine",
+                          min ? min->text : "0", max ? max->text : "*", label, id));
     const JsonValue *required = ep.find("successRequired");
     if (several && required && required->kind == JsonValue::Kind::Bool && required->boolean)
-      ignored(doc, ep, fmt::format("'successRequired' of entry point '{}' (id {}) is ignored: the sfc of a plan with "
-                                   "several entry points never ends by itself", label, id));
+      ignored(doc, ep,
+              fmt::format("'successRequired' of entry point '{}' (id {}) is ignored: the sfc of a plan with "
+                          "several entry points never ends by itself",
+                          label, id));
   }
 
   std::size_t file_index(const Doc &doc) const {
@@ -716,12 +748,14 @@ private:
         if (const JsonValue *ap = w.find("abstractPlan"); ap && ap->is_string()) add_string(*ap);
         if (const JsonValue *km = w.find("keyMapping");
             km && km->is_object() && (non_empty(km->find("input")) || non_empty(km->find("output"))))
-          ignored(doc, *km, fmt::format("the blackboard key mapping of '{}' in {} is ignored: gfec has no blackboard",
-                                        w.string_of("abstractPlan"), what));
+          ignored(doc, *km,
+                  fmt::format("the blackboard key mapping of '{}' in {} is ignored: gfec has no blackboard",
+                              w.string_of("abstractPlan"), what));
         if (const JsonValue *c = w.find("configuration"); non_empty(c))
-          ignored(doc, *c, fmt::format("the configuration {}of '{}' in {} is ignored: gfec sub-charts and action "
-                                       "functions take no parameters", c->is_string() ? "'" + c->text + "' " : "",
-                                       w.string_of("abstractPlan"), what));
+          ignored(doc, *c,
+                  fmt::format("the configuration {}of '{}' in {} is ignored: gfec sub-charts and action "
+                              "functions take no parameters",
+                              c->is_string() ? "'" + c->text + "' " : "", w.string_of("abstractPlan"), what));
       }
     for (const char *key : {"abstractPlans", "plans"}) {
       const JsonValue *list = state.find(key);
@@ -748,11 +782,13 @@ private:
     element(doc, state, "ALICA " + what);
     std::string type = state.string_of("type");
     const JsonValue *success = state.find("success");
-    if (type == "SuccessState" || (type == "TerminalState" && success && success->boolean)) p.terminal = ast::StateKind::Success;
+    if (type == "SuccessState" || (type == "TerminalState" && success && success->boolean))
+      p.terminal = ast::StateKind::Success;
     else if (type == "FailureState" || type == "TerminalState") p.terminal = ast::StateKind::Failure;
     else if (!type.empty() && type != "State")
-      diag_.error(range(doc, *state.find("type")), ErrorKind::AlicaFormat,
-                  fmt::format("unknown state type '{}' of {}: ALICA writes \"State\" or \"TerminalState\"", type, what));
+      diag_.error(
+          range(doc, *state.find("type")), ErrorKind::AlicaFormat,
+          fmt::format("unknown state type '{}' of {}: ALICA writes \"State\" or \"TerminalState\"", type, what));
 
     for (const char *key : {"variableBindings", "parametrisations"})
       if (const JsonValue *v = state.find(key); non_empty(v))
@@ -762,21 +798,23 @@ private:
     for (const auto &[text, at] : references(doc, state, what)) {
       auto ref = split_ref(text);
       if (!ref) {
-        diag_.error(at, ErrorKind::AlicaReference,
-                    fmt::format("{} holds '{}', which is no reference: ALICA writes them as \"File.ext#id\"", what, text));
+        diag_.error(
+            at, ErrorKind::AlicaReference,
+            fmt::format("{} holds '{}', which is no reference: ALICA writes them as \"File.ext#id\"", what, text));
         continue;
       }
       std::string ext = extension_of(ref->file.empty() ? doc.path : ref->file);
       if (ext == ".plc") {
         ignored(at, fmt::format("{} holds the placeholder '{}', which is ignored: ALICA picks the "
-                                           "plan or behaviour behind a placeholder at run time, gfec has nothing to run "
-                                           "for it", what, text));
+                                "plan or behaviour behind a placeholder at run time, gfec has nothing to run "
+                                "for it",
+                                what, text));
         continue;
       }
       if (ext != ".beh" && ext != ".pml" && ext != ".pty") {
-        diag_.error(at, ErrorKind::AlicaReference,
-                    fmt::format("{} holds '{}': gfec knows behaviours (.beh), plans (.pml) and plan types (.pty)", what,
-                                text));
+        diag_.error(
+            at, ErrorKind::AlicaReference,
+            fmt::format("{} holds '{}': gfec knows behaviours (.beh), plans (.pml) and plan types (.pty)", what, text));
         continue;
       }
       Target t = resolve(text, doc, at);
@@ -798,10 +836,12 @@ private:
     if (!extra_plans.empty()) {
       std::string others;
       for (const auto &c : extra_plans) others += (others.empty() ? "'" : ", '") + c + "'";
-      ignored(doc, state, fmt::format("{} holds several plans; gfec runs only the first, '{}'; ignored: {}", what,
-                                      p.runs->text, others));
+      ignored(doc, state,
+              fmt::format("{} holds several plans; gfec runs only the first, '{}'; ignored: {}", what, p.runs->text,
+                          others));
     }
-    if (const JsonValue *post = state.find("postCondition"); post && post->is_object() && p.terminal != ast::StateKind::Normal)
+    if (const JsonValue *post = state.find("postCondition");
+        post && post->is_object() && p.terminal != ast::StateKind::Normal)
       p.post = call(condition(doc, *post, label + "_post"), range(doc, *post));
     return p;
   }
@@ -843,14 +883,15 @@ private:
         name != "AllChildFailure")
       return;
     std::string state = source ? source->name.text : "?";
-    std::string why = source && source->runs
-                          ? fmt::format("the plan it runs, '{}', has several entry points and its sfc never ends",
-                                        source->runs->text)
-                          : source && !source->action.empty()
-                                ? "it runs no plan, and gfec does not model the success or failure of behaviours"
-                                : "it runs neither a plan nor a behaviour";
+    std::string why =
+        source && source->runs
+            ? fmt::format("the plan it runs, '{}', has several entry points and its sfc never ends", source->runs->text)
+        : source && !source->action.empty()
+            ? "it runs no plan, and gfec does not model the success or failure of behaviours"
+            : "it runs neither a plan nor a behaviour";
     ignored(at, fmt::format("{} tests {} of state '{}', but {}: the condition becomes the sensing function '{}()' "
-                            "of the robot library", what, name, state, why, name));
+                            "of the robot library",
+                            what, name, state, why, name));
   }
 
   template <typename StateOf>
@@ -872,7 +913,8 @@ private:
     if (owner[*from] != owner[*to]) {
       diag_.error(range(doc, t), ErrorKind::AlicaFormat,
                   fmt::format("{} leads from entry point machine '{}' to machine '{}': gfec machines do not share "
-                              "states", what, m.chart.name.text, machines[owner[*to]].chart.name.text));
+                              "states",
+                              what, m.chart.name.text, machines[owner[*to]].chart.name.text));
       return;
     }
     ast::Transition out;
@@ -892,7 +934,8 @@ private:
         out.condition = call(condition(*c.doc, *c.object, label), range(doc, *cond));
         child_outcome_unobserved(*c.object, source, range(doc, *cond), what);
       }
-      if (non_empty(pre) && pre->is_object() && (non_empty(pre->find("quantifiers")) || non_empty(pre->find("variables"))))
+      if (non_empty(pre) && pre->is_object() &&
+          (non_empty(pre->find("quantifiers")) || non_empty(pre->find("variables"))))
         condition(doc, *pre, label);  // only for its warnings
     } else if (pre && pre->is_object()) {
       out.condition = child_outcome(*pre, source, range(doc, *pre));
@@ -903,8 +946,8 @@ private:
     }
     if (const JsonValue *sync = t.find("synchronisation"); non_empty(sync))
       ignored(doc, *sync, fmt::format("{} is synchronised with others; the synchronisation is ignored", what));
-    if (const JsonValue *km = t.find("keyMapping"); km && km->is_object() &&
-                                                    (non_empty(km->find("input")) || non_empty(km->find("output"))))
+    if (const JsonValue *km = t.find("keyMapping");
+        km && km->is_object() && (non_empty(km->find("input")) || non_empty(km->find("output"))))
       ignored(doc, *km, fmt::format("the blackboard key mapping of {} is ignored: gfec has no blackboard", what));
     m.chart.transitions.push_back(std::move(out));
   }
@@ -918,14 +961,14 @@ private:
   std::map<std::string, std::unique_ptr<Doc>> docs_;
   std::map<std::string, std::vector<std::string>> trees_;  ///< search_below: root -> files below it
   std::set<std::string> trees_listed_;
-  std::set<const JsonValue *> plan_type_warned_;  ///< a plan type used by several states warns once
+  std::set<const JsonValue *> plan_type_warned_;    ///< a plan type used by several states warns once
   std::map<std::string, std::string> plan_charts_;  ///< "path#id" -> chart name
   std::map<std::string, bool> fsm_charts_;          ///< chart name -> it is an fsm (one entry point)
   std::map<std::string, std::string> functions_;    ///< "path#id" of a behaviour or condition -> function
-  NameScope globals_;                                ///< charts and functions share C's namespace
+  NameScope globals_;                               ///< charts and functions share C's namespace
 };
 
-} // namespace
+}  // namespace
 
 bool is_alica_path(const std::string &path) { return extension_of(path) == ".pml" || file_kind(path); }
 
@@ -934,7 +977,7 @@ void read_alica_program(const std::string &main_path, std::string text, const Lo
   Reader(options, fs, sources, diag, result).read_main(main_path, std::move(text));
 }
 
-} // namespace gfec::alica
+}  // namespace gfec::alica
 
 namespace gfec {
 
@@ -961,4 +1004,4 @@ void annotate_elements(Diagnostics &diag, const LoadResult &loaded) {
   }
 }
 
-} // namespace gfec
+}  // namespace gfec

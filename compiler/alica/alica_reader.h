@@ -17,4 +17,4 @@ bool is_alica_path(const std::string &path);
 void read_alica_program(const std::string &main_path, std::string text, const LoadOptions &options,
                         const FileSystem &fs, SourceManager &sources, Diagnostics &diag, LoadResult &result);
 
-} // namespace gfec::alica
+}  // namespace gfec::alica

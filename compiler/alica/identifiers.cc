@@ -10,6 +10,7 @@ namespace {
 // defines itself and a few of the C headers it includes: a name from any of them would not
 // parse, or the validator would refuse it, or it would not compile once it reaches the
 // generated code. ALICA allows them all ("init" is a common state name).
+// clang-format off
 const char *const kReserved[] = {
     "sfc", "fsm", "plan", "toolbox", "interface", "import", "var", "const", "initial", "place", "state",
     "transition", "when", "success", "failure", "post", "period", "actor", "computation", "supervisor",
@@ -32,6 +33,7 @@ const char *const kReserved[] = {
     "NULL", "EOF", "assert", "errno", "offsetof", "size_t", "ptrdiff_t", "memcpy", "memset", "memcmp",
     "memmove", "strlen", "NDEBUG",
 };
+// clang-format on
 
 bool reserved(const std::string &s) {
   for (const char *r : kReserved)
@@ -43,7 +45,7 @@ bool ident_char(char c) {
   return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
 }
 
-} // namespace
+}  // namespace
 
 bool meaningful(const std::string &name) {
   // The designers write MISSING_NAME, or the element's id as its name, when the user gave none.
@@ -82,4 +84,4 @@ std::string NameScope::take(const std::string &name, const std::string &id) {
   return chosen;
 }
 
-} // namespace gfec::alica
+}  // namespace gfec::alica

@@ -27,4 +27,4 @@ private:
   std::set<std::string> used_;
 };
 
-} // namespace gfec::alica
+}  // namespace gfec::alica

@@ -227,7 +227,8 @@ private:
         ++pos_;
         return true;
       }
-      if (static_cast<unsigned char>(c) < 0x20) return error("control character inside a string (write it as an escape)");
+      if (static_cast<unsigned char>(c) < 0x20)
+        return error("control character inside a string (write it as an escape)");
       if (c != '\\') {
         out += c;
         ++pos_;
@@ -257,9 +258,7 @@ private:
         put_utf8(out, cp);
         break;
       }
-      default:
-        --pos_;
-        return error(fmt::format("unknown escape '\\{}' in a string", e));
+      default: --pos_; return error(fmt::format("unknown escape '\\{}' in a string", e));
       }
     }
   }
@@ -270,10 +269,8 @@ private:
   bool failed_ = false;
 };
 
-} // namespace
+}  // namespace
 
-std::optional<JsonValue> parse_json(std::string_view text, JsonError &error) {
-  return Parser(text, error).document();
-}
+std::optional<JsonValue> parse_json(std::string_view text, JsonError &error) { return Parser(text, error).document(); }
 
-} // namespace gfec::alica
+}  // namespace gfec::alica

@@ -18,7 +18,7 @@ struct JsonValue {
   std::uint32_t begin = 0;  ///< byte offset of the value's first character
   std::uint32_t end = 0;    ///< one past its last character
   bool boolean = false;
-  std::string text;         ///< String: the decoded value; Number: the spelling
+  std::string text;                                        ///< String: the decoded value; Number: the spelling
   std::vector<JsonValue> items;                            ///< Array
   std::vector<std::pair<std::string, JsonValue>> members;  ///< Object, in file order
 
@@ -42,4 +42,4 @@ struct JsonError {
 /// Parses one JSON document (RFC 8259). On malformed text, returns nothing and says where.
 std::optional<JsonValue> parse_json(std::string_view text, JsonError &error);
 
-} // namespace gfec::alica
+}  // namespace gfec::alica

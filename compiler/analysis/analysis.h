@@ -25,4 +25,4 @@ void analyze(const model::Model &model, Diagnostics &diag, const Limits &limits 
 /// its options allow) and returns a summary, one block per chart and plan.
 std::string analysis_report(const model::Model &model, Diagnostics &diag, const Limits &limits = {});
 
-} // namespace gfec::analysis
+}  // namespace gfec::analysis

@@ -13,9 +13,9 @@ bool any_on(const Diagnostics &diag, std::initializer_list<Warning> ws) {
 }
 
 void run(const model::Model &m, Diagnostics &diag, const Limits &limits, std::string &summary, bool everything) {
-  const bool sfc = everything || any_on(diag, {Warning::UnsafePlace, Warning::UnboundedPlace, Warning::Deadlock,
-                                               Warning::DeadJoin, Warning::UnjoinedFork, Warning::UnreachablePlace,
-                                               Warning::DeadTransition});
+  const bool sfc =
+      everything || any_on(diag, {Warning::UnsafePlace, Warning::UnboundedPlace, Warning::Deadlock, Warning::DeadJoin,
+                                  Warning::UnjoinedFork, Warning::UnreachablePlace, Warning::DeadTransition});
   const bool fsm = everything || any_on(diag, {Warning::TrapState, Warning::ShadowedTransition});
   const bool plan = everything || any_on(diag, {Warning::UninitializedConfig, Warning::SupervisorRace});
   for (const auto &c : m.charts) {
@@ -27,7 +27,7 @@ void run(const model::Model &m, Diagnostics &diag, const Limits &limits, std::st
     if (p.in_main_file && plan) check_plan(m, p, diag, summary);
 }
 
-} // namespace
+}  // namespace
 
 void analyze(const model::Model &model, Diagnostics &diag, const Limits &limits) {
   std::string ignored;
@@ -40,4 +40,4 @@ std::string analysis_report(const model::Model &model, Diagnostics &diag, const 
   return summary;
 }
 
-} // namespace gfec::analysis
+}  // namespace gfec::analysis

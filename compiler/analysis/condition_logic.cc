@@ -71,7 +71,7 @@ private:
   std::map<std::string, std::size_t> index_;
 };
 
-} // namespace
+}  // namespace
 
 std::optional<bool> implies(const Expr *a, const Expr *b) {
   if (!b) return true;  // anything implies `true`
@@ -84,4 +84,4 @@ std::optional<bool> implies(const Expr *a, const Expr *b) {
   return true;
 }
 
-} // namespace gfec::analysis
+}  // namespace gfec::analysis

@@ -13,4 +13,4 @@ namespace gfec::analysis {
 /// Whether `a` implies `b` (a null condition is `true`); nothing when there are too many atoms.
 std::optional<bool> implies(const model::Expr *a, const model::Expr *b);
 
-} // namespace gfec::analysis
+}  // namespace gfec::analysis

@@ -10,7 +10,9 @@ namespace {
 
 using model::Chart;
 
-bool terminal(const Chart &c, int s) { return c.places.at(static_cast<std::size_t>(s)).terminal != model::Terminal::None; }
+bool terminal(const Chart &c, int s) {
+  return c.places.at(static_cast<std::size_t>(s)).terminal != model::Terminal::None;
+}
 
 /// States reachable from `from` (forward) or reaching it (backward), over transitions that can fire.
 std::vector<bool> closure(const Chart &c, std::vector<int> from, bool forward) {
@@ -36,7 +38,7 @@ std::string label(const Chart &c, const model::Transition &t) {
                      c.places.at(static_cast<std::size_t>(t.outputs.at(0))).name);
 }
 
-} // namespace
+}  // namespace
 
 void check_fsm(const model::Model & /*m*/, const Chart &c, Diagnostics &diag, std::string &summary) {
   std::vector<int> initial, terminals;
@@ -74,8 +76,7 @@ void check_fsm(const model::Model & /*m*/, const Chart &c, Diagnostics &diag, st
                    fmt::format("transition '{}' ({}) can never fire: '{}' ({}) is tried first and holds whenever it "
                                "does",
                                later.name, label(c, later), first.name, label(c, first)))
-          .note(name_at(first),
-                fmt::format("'{}' has {} precondition", first.name, b ? "the same or a weaker" : "no"));
+          .note(name_at(first), fmt::format("'{}' has {} precondition", first.name, b ? "the same or a weaker" : "no"));
       break;
     }
   }
@@ -89,4 +90,4 @@ void check_fsm(const model::Model & /*m*/, const Chart &c, Diagnostics &diag, st
   summary += fmt::format("  shadowed transitions: {}\n", shadowed);
 }
 
-} // namespace gfec::analysis
+}  // namespace gfec::analysis

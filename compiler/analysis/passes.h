@@ -25,4 +25,4 @@ inline std::string counted(std::size_t n, const char *one, const char *many) {
   return std::to_string(n) + " " + (n == 1 ? one : many);
 }
 
-} // namespace gfec::analysis
+}  // namespace gfec::analysis

@@ -98,7 +98,7 @@ private:
   Written initial_;
 };
 
-} // namespace
+}  // namespace
 
 void check_plan(const model::Model & /*m*/, const model::Plan &p, Diagnostics &diag, std::string &summary) {
   ConfigFlow flow(p);
@@ -137,8 +137,8 @@ void check_plan(const model::Model & /*m*/, const model::Plan &p, Diagnostics &d
     std::string list;
     for (std::size_t i = 0; i < order.size(); ++i) list += (i ? ", then " : "") + order[i];
     diag.warning(Warning::SupervisorRace, name_at(actor),
-                 fmt::format("{} supervisors watch actor '{}' and can raise events in the same step; {} wins", order.size(),
-                             actor.name, order.front()))
+                 fmt::format("{} supervisors watch actor '{}' and can raise events in the same step; {} wins",
+                             order.size(), actor.name, order.front()))
         .note(fmt::format("they are checked in this order, and the first to raise an event interrupts: {}", list));
   }
   std::size_t reachable = 0;
@@ -151,4 +151,4 @@ void check_plan(const model::Model & /*m*/, const model::Plan &p, Diagnostics &d
   summary += fmt::format("  actors that several supervisors can interrupt at once: {}\n", races);
 }
 
-} // namespace gfec::analysis
+}  // namespace gfec::analysis

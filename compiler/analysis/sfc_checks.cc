@@ -101,17 +101,19 @@ void check_forks(const Chart &c, Diagnostics &diag) {
   }
 }
 
-} // namespace
+}  // namespace
 
-void check_sfc(const model::Model & /*m*/, const Chart &c, Diagnostics &diag, const Limits &limits, std::string &summary) {
+void check_sfc(const model::Model & /*m*/, const Chart &c, Diagnostics &diag, const Limits &limits,
+               std::string &summary) {
   const std::size_t np = c.places.size(), nt = c.transitions.size();
   StateSpace space = explore(c, limits);
   const SourceRange chart_at = name_at(c);
   if (space.limit_hit)
-    diag.warning(Warning::AnalysisLimit, chart_at,
-                 fmt::format("the analysis of sfc '{}' stopped after {} activation states and {} tick outcomes; what it "
-                             "says about unreachable places, dead transitions and joins is left out",
-                             c.name, space.states.size(), space.outcomes));
+    diag.warning(
+        Warning::AnalysisLimit, chart_at,
+        fmt::format("the analysis of sfc '{}' stopped after {} activation states and {} tick outcomes; what it "
+                    "says about unreachable places, dead transitions and joins is left out",
+                    c.name, space.states.size(), space.outcomes));
 
   // Per place: the largest count seen, and the first state that shows it above one.
   std::vector<std::uint32_t> most(np, 0);
@@ -142,8 +144,7 @@ void check_sfc(const model::Model & /*m*/, const Chart &c, Diagnostics &diag, co
     const auto &place = c.places[p];
     SourceRange at = name_at(place);
     if (unbounded_at[p] >= 0)
-      diag.warning(Warning::UnboundedPlace, at,
-                   fmt::format("place '{}' can gain activation without bound", place.name))
+      diag.warning(Warning::UnboundedPlace, at, fmt::format("place '{}' can gain activation without bound", place.name))
           .note(fmt::format("a cycle adds to it every time round: {}", witness(c, space, unbounded_at[p])));
     else if (unsafe_at[p] >= 0)
       diag.warning(Warning::UnsafePlace, at,
@@ -153,9 +154,9 @@ void check_sfc(const model::Model & /*m*/, const Chart &c, Diagnostics &diag, co
   if (!deadlocks.empty()) {
     int s = deadlocks.front();
     const Marking &mk = space.states[static_cast<std::size_t>(s)];
-    auto &d = diag.warning(Warning::Deadlock, chart_at,
-                           fmt::format("sfc '{}' can reach a state in which nothing can fire any more: {}", c.name,
-                                       marking_text(c, mk)));
+    auto &d = diag.warning(
+        Warning::Deadlock, chart_at,
+        fmt::format("sfc '{}' can reach a state in which nothing can fire any more: {}", c.name, marking_text(c, mk)));
     d.note(fmt::format("it gets there after {}", witness(c, space, s)));
     for (const auto &tr : c.transitions) {
       if (firing_of(tr) == Firing::Never) continue;
@@ -173,9 +174,9 @@ void check_sfc(const model::Model & /*m*/, const Chart &c, Diagnostics &diag, co
     for (std::size_t p = 0; p < np; ++p) {
       if (most[p] > 0 || !structural[p]) continue;  // the validator speaks of the latter
       ++unreachable;
-      diag.warning(Warning::UnreachablePlace, name_at(c.places[p]),
-                   fmt::format("place '{}' can never become active: no reachable activation state holds it",
-                               c.places[p].name));
+      diag.warning(
+          Warning::UnreachablePlace, name_at(c.places[p]),
+          fmt::format("place '{}' can never become active: no reachable activation state holds it", c.places[p].name));
     }
     for (std::size_t t = 0; t < nt; ++t) {
       const auto &tr = c.transitions[t];
@@ -201,18 +202,22 @@ void check_sfc(const model::Model & /*m*/, const Chart &c, Diagnostics &diag, co
   bool safe = std::all_of(most.begin(), most.end(), [](std::uint32_t k) { return k <= 1; });
   std::uint32_t bound = 0;
   for (auto k : most) bound = std::max(bound, k);
-  summary += fmt::format("sfc {}: {}, {}\n", c.name, counted(np, "place", "places"), counted(nt, "transition", "transitions"));
-  summary += fmt::format("  activation states: {}{}\n", space.states.size(),
-                         space.limit_hit     ? fmt::format(" (stopped at the limit of {} states; incomplete)", limits.max_states)
-                         : space.accelerated ? " (some counts unbounded: an over-approximation)"
-                                             : " (all of them)");
-  summary += fmt::format("  {}\n", safe                ? "safe: no place ever holds more than one activation"
-                                   : bound == kOmega    ? "unbounded: some place can gain activation without end"
-                                                        : fmt::format("bounded: no place holds more than {} activations", bound));
-  summary += fmt::format("  deadlocks: {}\n", deadlocks.empty() ? "none" : counted(deadlocks.size(), "state", "states"));
+  summary +=
+      fmt::format("sfc {}: {}, {}\n", c.name, counted(np, "place", "places"), counted(nt, "transition", "transitions"));
+  summary +=
+      fmt::format("  activation states: {}{}\n", space.states.size(),
+                  space.limit_hit ? fmt::format(" (stopped at the limit of {} states; incomplete)", limits.max_states)
+                  : space.accelerated ? " (some counts unbounded: an over-approximation)"
+                                      : " (all of them)");
+  summary +=
+      fmt::format("  {}\n", safe              ? "safe: no place ever holds more than one activation"
+                            : bound == kOmega ? "unbounded: some place can gain activation without end"
+                                              : fmt::format("bounded: no place holds more than {} activations", bound));
+  summary +=
+      fmt::format("  deadlocks: {}\n", deadlocks.empty() ? "none" : counted(deadlocks.size(), "state", "states"));
   if (space.exact())
     summary += fmt::format("  never active: {}; never firing: {}\n", counted(unreachable, "place", "places"),
                            counted(dead, "transition", "transitions"));
 }
 
-} // namespace gfec::analysis
+}  // namespace gfec::analysis

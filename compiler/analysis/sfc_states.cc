@@ -92,7 +92,7 @@ bool may_cover_strictly(const Size &a, const Size &b) {
   return a.omegas > b.omegas || (a.omegas == b.omegas && a.finite > b.finite);
 }
 
-} // namespace
+}  // namespace
 
 Firing firing_of(const model::Transition &t) {
   if (!t.condition) return Firing::Always;
@@ -199,4 +199,4 @@ std::string witness(const model::Chart &chart, const StateSpace &space, int stat
   return out.empty() ? "at the start" : out;
 }
 
-} // namespace gfec::analysis
+}  // namespace gfec::analysis

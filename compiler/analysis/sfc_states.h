@@ -22,8 +22,8 @@ constexpr std::uint32_t kOmega = UINT32_MAX;  ///< an activation count that can 
 using Marking = std::vector<std::uint32_t>;
 
 struct Limits {
-  std::size_t max_states = 20000;      ///< activation states explored
-  std::size_t max_outcomes = 400000;   ///< tick outcomes enumerated (2^open free transitions each)
+  std::size_t max_states = 20000;     ///< activation states explored
+  std::size_t max_outcomes = 400000;  ///< tick outcomes enumerated (2^open free transitions each)
   /// Work, counted in places and transitions visited (a state costs the chart's size, each of
   /// its outcomes as much again): it keeps the analysis of a chart of any size to a fixed cost,
   /// so the compiler stays linear; a large chart gets fewer states.
@@ -36,15 +36,15 @@ Firing firing_of(const model::Transition &t);
 bool is_open(const model::Transition &t, const Marking &m);
 
 struct StateSpace {
-  std::vector<Marking> states;             ///< states[0] is the initial marking
-  std::vector<int> parent;                 ///< the state first reached from; -1 for the initial
-  std::vector<std::vector<int>> fired;     ///< the transitions that fired in that tick
+  std::vector<Marking> states;          ///< states[0] is the initial marking
+  std::vector<int> parent;              ///< the state first reached from; -1 for the initial
+  std::vector<std::vector<int>> fired;  ///< the transitions that fired in that tick
   std::vector<std::vector<int>> successors;
-  std::vector<bool> ever_fired;            ///< by transition: fires in some explored tick
-  bool limit_hit = false;    ///< stopped at a limit: some reachable states are missing
-  std::size_t work = 0;      ///< work done, as Limits::max_work counts it
-  bool accelerated = false;  ///< some count became ω: the states are an approximation
-  std::size_t outcomes = 0;  ///< tick outcomes enumerated
+  std::vector<bool> ever_fired;  ///< by transition: fires in some explored tick
+  bool limit_hit = false;        ///< stopped at a limit: some reachable states are missing
+  std::size_t work = 0;          ///< work done, as Limits::max_work counts it
+  bool accelerated = false;      ///< some count became ω: the states are an approximation
+  std::size_t outcomes = 0;      ///< tick outcomes enumerated
 
   /// Every reachable state is here, exactly: what is absent cannot happen.
   bool exact() const { return !limit_hit && !accelerated; }
@@ -57,4 +57,4 @@ std::string witness(const model::Chart &chart, const StateSpace &space, int stat
 /// "A, B=2, C=ω": the active places of a marking.
 std::string marking_text(const model::Chart &chart, const Marking &m);
 
-} // namespace gfec::analysis
+}  // namespace gfec::analysis

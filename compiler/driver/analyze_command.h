@@ -12,4 +12,4 @@ namespace gfec {
 /// --check: 0 (even with warnings, unless -Werror), 1 errors in the input, 2 I/O.
 int analyze_command(const Options &options, std::ostream &out, std::ostream &err);
 
-} // namespace gfec
+}  // namespace gfec

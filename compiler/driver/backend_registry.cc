@@ -16,12 +16,11 @@ constexpr unsigned kCharts = kAcceptsSfc | kAcceptsFsm;
 
 // Back ends register here as they land, with what they accept and write.
 const std::vector<BackendInfo> kBackends = {
-    {"c", kCharts, ".c", ".h", "a C99 engine: the default for an sfc or fsm", "docs/c-engine.md",
-     make_c_backend},
+    {"c", kCharts, ".c", ".h", "a C99 engine: the default for an sfc or fsm", "docs/c-engine.md", make_c_backend},
     {"cpp", kAcceptsPlan, ".cpp", ".hpp", "a plan's wiring against the afp runtime: the default for a plan",
      "docs/plans.md", make_cpp_backend},
-    {"toolbox-skeleton", kAcceptsToolbox, ".hpp", ".cpp", "a toolbox's C++ classes to fill in",
-     "docs/toolbox.md", make_toolbox_skeleton_backend},
+    {"toolbox-skeleton", kAcceptsToolbox, ".hpp", ".cpp", "a toolbox's C++ classes to fill in", "docs/toolbox.md",
+     make_toolbox_skeleton_backend},
     {"json", kCharts | kAcceptsPlan, ".json", "", "the validated model, for tools", "docs/model-json.md",
      make_json_backend},
     {"dot", kCharts | kAcceptsPlan, ".dot", "", "a picture in Graphviz DOT", "docs/cli.md", make_dot_backend},
@@ -30,7 +29,7 @@ const std::vector<BackendInfo> kBackends = {
     {"chart", kCharts, ".sfc", "", "chart text, e.g. a converted ALICA plan", "docs/alica.md", make_chart_backend},
 };
 
-} // namespace
+}  // namespace
 
 const std::vector<BackendInfo> &backends() { return kBackends; }
 
@@ -78,4 +77,4 @@ std::unique_ptr<Backend> make_backend(std::string_view name) {
   return b ? b->make() : nullptr;
 }
 
-} // namespace gfec
+}  // namespace gfec

@@ -16,12 +16,12 @@ namespace gfec {
 enum Accepts : unsigned { kAcceptsSfc = 1, kAcceptsFsm = 2, kAcceptsPlan = 4, kAcceptsToolbox = 8 };
 
 struct BackendInfo {
-  const char *name;       ///< as --emit spells it
-  unsigned accepts;       ///< Accepts bits
-  const char *extension;  ///< the primary output's, for the name derived from the input (".c")
-  const char *companions; ///< outputs written beside the primary one ("" when none), for --help
-  const char *summary;    ///< one line for --help
-  const char *help;       ///< where to read more: the docs page
+  const char *name;        ///< as --emit spells it
+  unsigned accepts;        ///< Accepts bits
+  const char *extension;   ///< the primary output's, for the name derived from the input (".c")
+  const char *companions;  ///< outputs written beside the primary one ("" when none), for --help
+  const char *summary;     ///< one line for --help
+  const char *help;        ///< where to read more: the docs page
   std::unique_ptr<Backend> (*make)();
 
   bool accepts_kind(unsigned kind) const { return (accepts & kind) != 0; }
@@ -46,4 +46,4 @@ std::string accepted_kinds(const BackendInfo &b);
 /// The back end called `name`, or null (a new instance).
 std::unique_ptr<Backend> make_backend(std::string_view name);
 
-} // namespace gfec
+}  // namespace gfec

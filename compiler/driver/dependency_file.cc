@@ -21,7 +21,7 @@ void append_wrapped(std::string &out, std::size_t &column, const std::string &wo
   column += word.size() + 1;
 }
 
-} // namespace
+}  // namespace
 
 std::string make_escape(const std::string &path) {
   std::string out;
@@ -64,4 +64,4 @@ std::string dependency_file_name(const DependencyOptions &deps, const std::strin
   return deps.file.empty() ? replace_extension(primary_output, ".d") : deps.file;
 }
 
-} // namespace gfec
+}  // namespace gfec

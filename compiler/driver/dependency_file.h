@@ -29,4 +29,4 @@ std::string make_escape(const std::string &path);
 /// '\\' (escapes the separator after it). gfec refuses to write such a dependency file.
 std::string make_unreadable(const std::string &path);
 
-} // namespace gfec
+}  // namespace gfec

@@ -20,8 +20,7 @@ namespace {
 /// gcc's text: printed as it comes, so a long --check run shows progress.
 class TextReport : public DiagnosticReport {
 public:
-  TextReport(std::ostream &err, TextStyle style, bool all_errors)
-      : err_(err), style_(style), all_errors_(all_errors) {}
+  TextReport(std::ostream &err, TextStyle style, bool all_errors) : err_(err), style_(style), all_errors_(all_errors) {}
 
   void add(const std::string &, const Diagnostics &diag, const SourceManager &sources) override {
     for (const Diagnostic *d : in_source_order(diag)) {
@@ -46,7 +45,7 @@ private:
   bool werror_ = false;
 };
 
-} // namespace
+}  // namespace
 
 std::vector<const Diagnostic *> in_source_order(const Diagnostics &diag) {
   std::vector<const Diagnostic *> out;
@@ -107,4 +106,4 @@ Columns columns_at(const SourceFile &file, std::uint32_t offset) {
   return c;
 }
 
-} // namespace gfec
+}  // namespace gfec

@@ -56,4 +56,4 @@ struct Columns {
 };
 Columns columns_at(const SourceFile &file, std::uint32_t offset);
 
-} // namespace gfec
+}  // namespace gfec

@@ -36,8 +36,7 @@ public:
 
   void add(const std::string &, const Diagnostics &diag, const SourceManager &sources) override {
     for (const Diagnostic *d : in_source_order(diag)) all_.push_back(diagnostic_to_json(*d, sources));
-    if (diag.limit_reached())
-      tool_message("note", "", limit_message(diag));
+    if (diag.limit_reached()) tool_message("note", "", limit_message(diag));
   }
   void tool_error(const std::string &input, const std::string &message, bool) override {
     tool_message("error", input, message);
@@ -63,7 +62,7 @@ private:
   Json all_ = Json::array();
 };
 
-} // namespace
+}  // namespace
 
 Json diagnostic_to_json(const Diagnostic &d, const SourceManager &sources) {
   Json children = Json::array();
@@ -96,4 +95,4 @@ Json diagnostic_to_json(const Diagnostic &d, const SourceManager &sources) {
 
 std::unique_ptr<DiagnosticReport> make_json_report(std::ostream &err) { return std::make_unique<JsonReport>(err); }
 
-} // namespace gfec
+}  // namespace gfec

@@ -13,4 +13,4 @@ nlohmann::ordered_json diagnostic_to_json(const Diagnostic &d, const SourceManag
 
 std::unique_ptr<DiagnosticReport> make_json_report(std::ostream &err);
 
-} // namespace gfec
+}  // namespace gfec

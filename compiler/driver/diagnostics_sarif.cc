@@ -16,7 +16,8 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-constexpr const char *kSchema = "https://docs.oasis-open.org/sarif/sarif/v2.1.0/errata01/os/schemas/sarif-schema-2.1.0.json";
+constexpr const char *kSchema =
+    "https://docs.oasis-open.org/sarif/sarif/v2.1.0/errata01/os/schemas/sarif-schema-2.1.0.json";
 constexpr const char *kRoot = "%SRCROOT%";
 
 /// RFC 3986: keep unreserved characters and '/', percent-encode every other byte.
@@ -38,7 +39,7 @@ const char *level(Severity s) {
   return "none";
 }
 
-} // namespace
+}  // namespace
 
 Json artifact_location(const std::string &path) {
   if (!path.empty() && path.front() == '/') return {{"uri", "file://" + uri_encode(path)}};
@@ -60,7 +61,7 @@ Json rule(const DiagnosticKind &k) {
           {"defaultConfiguration", {{"enabled", k.on_by_default}, {"level", k.warning ? "warning" : "error"}}}};
 }
 
-} // namespace
+}  // namespace
 
 SarifLog::SarifLog() {
   // Every kind is a rule even when it did not fire, so a dashboard can list and explain them;
@@ -108,8 +109,8 @@ Json SarifLog::fixes(const SourceManager &sources, const Diagnostic &d) {
   for (const FixIt &f : d.fixits) {
     Json where = physical_location(sources, f.range);
     changes.push_back({{"artifactLocation", where["artifactLocation"]},
-                       {"replacements",
-                        Json::array({{{"deletedRegion", where["region"]}, {"insertedContent", {{"text", f.replacement}}}}})}});
+                       {"replacements", Json::array({{{"deletedRegion", where["region"]},
+                                                      {"insertedContent", {{"text", f.replacement}}}}})}});
   }
   return Json::array({{{"description", {{"text", d.notes.empty() ? d.message : d.notes.front().message}}},
                        {"artifactChanges", std::move(changes)}}});
@@ -138,13 +139,13 @@ void SarifLog::add(const Diagnostics &diag, const SourceManager &sources) {
     if (!d.fixits.empty()) result["fixes"] = fixes(sources, d);
     results_.push_back(std::move(result));
   }
-  if (diag.limit_reached())
-    notification("note", "", limit_message(diag));
+  if (diag.limit_reached()) notification("note", "", limit_message(diag));
 }
 
 void SarifLog::notification(const std::string &lvl, const std::string &input, const std::string &message) {
   Json n = {{"level", lvl}, {"message", {{"text", message}}}};
-  if (!input.empty()) n["locations"] = Json::array({{{"physicalLocation", {{"artifactLocation", artifact_location(input)}}}}});
+  if (!input.empty())
+    n["locations"] = Json::array({{{"physicalLocation", {{"artifactLocation", artifact_location(input)}}}}});
   notifications_.push_back(std::move(n));
 }
 
@@ -161,10 +162,7 @@ Json SarifLog::to_json(int exit_code, const std::string &cwd) const {
   if (root.back() != '/') root += '/';
   Json run = {{"tool",
                {{"driver",
-                 {{"name", "gfec"},
-                  {"version", GFEC_VERSION},
-                  {"semanticVersion", GFEC_VERSION},
-                  {"rules", rules_}}}}},
+                 {{"name", "gfec"}, {"version", GFEC_VERSION}, {"semanticVersion", GFEC_VERSION}, {"rules", rules_}}}}},
               {"invocations", Json::array({std::move(invocation)})},
               {"originalUriBaseIds", {{kRoot, {{"uri", root}}}}},
               {"artifacts", std::move(artifacts)},
@@ -218,8 +216,8 @@ private:
   std::vector<std::pair<std::string, SarifLog>> logs_;  ///< in input order
 };
 
-} // namespace
+}  // namespace
 
 std::unique_ptr<DiagnosticReport> make_sarif_report(std::ostream *err) { return std::make_unique<SarifReport>(err); }
 
-} // namespace gfec
+}  // namespace gfec

@@ -46,4 +46,4 @@ nlohmann::ordered_json artifact_location(const std::string &path);
 /// `err` null: sarif-file, one "<input basename>.sarif" per input in the current folder, as gcc.
 std::unique_ptr<DiagnosticReport> make_sarif_report(std::ostream *err);
 
-} // namespace gfec
+}  // namespace gfec

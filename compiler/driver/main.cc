@@ -9,9 +9,11 @@
 
 int main(int argc, char **argv) {
   // `gfec run CHART ...`: the reference interpreter (run_command.h).
-  if (argc > 1 && std::string_view(argv[1]) == "run") return gfec::run_command(argc - 1, argv + 1, std::cout, std::cerr);
+  if (argc > 1 && std::string_view(argv[1]) == "run")
+    return gfec::run_command(argc - 1, argv + 1, std::cout, std::cerr);
   // `gfec test FILE...`: scenario tests on the interpreter and the C engine (test_command.h).
-  if (argc > 1 && std::string_view(argv[1]) == "test") return gfec::test_command(argc - 1, argv + 1, std::cout, std::cerr);
+  if (argc > 1 && std::string_view(argv[1]) == "test")
+    return gfec::test_command(argc - 1, argv + 1, std::cout, std::cerr);
   gfec::ParsedCommandLine cl = gfec::parse_command_line(argc, argv);
   if (cl.exit_now) {
     (cl.exit_code == 0 ? std::cout : std::cerr) << cl.message;

@@ -24,7 +24,8 @@ std::string unknown_warning(const std::string &flag, const std::string &name) {
     if (d < best_distance) best_distance = d, best = std::string(candidate);
   }
   std::string message = fmt::format("unknown warning option '-W{}'", flag);
-  if (!best.empty()) message += fmt::format("; did you mean '-W{}{}'?", flag.substr(0, flag.size() - name.size()), best);
+  if (!best.empty())
+    message += fmt::format("; did you mean '-W{}{}'?", flag.substr(0, flag.size() - name.size()), best);
   return message + " ('gfec --help' lists the warnings)";
 }
 
@@ -115,9 +116,8 @@ std::string usage_forms() {
 }
 
 std::string warning_help() {
-  std::string s =
-      "Warnings (-W<name> turns one on, -Wno-<name> off; -Wall all; -w none; -Werror makes them errors,\n"
-      "-Werror=<name> one of them, -Wno-error=<name> keeps one a warning):\n";
+  std::string s = "Warnings (-W<name> turns one on, -Wno-<name> off; -Wall all; -w none; -Werror makes them errors,\n"
+                  "-Werror=<name> one of them, -Wno-error=<name> keeps one a warning):\n";
   for (int i = 0; i < static_cast<int>(Warning::Count_); ++i) {
     const DiagnosticKind &w = kind_info(static_cast<Warning>(i));
     s += fmt::format("  -W{:<20} {}{}\n", w.name, w.summary, w.on_by_default ? " (on by default)" : "");
@@ -125,7 +125,7 @@ std::string warning_help() {
   return s;
 }
 
-} // namespace
+}  // namespace
 
 std::string apply_f_flag(const std::string &f, Options &o) {
   if (f.rfind("diagnostics-format=", 0) == 0) {
@@ -150,9 +150,7 @@ std::string apply_f_flag(const std::string &f, Options &o) {
   } else if (f.rfind("max-errors=", 0) == 0) {
     try {
       o.error_limit = std::stoul(f.substr(11));
-    } catch (const std::exception &) {
-      return fmt::format("'-f{}' needs a number", f);
-    }
+    } catch (const std::exception &) { return fmt::format("'-f{}' needs a number", f); }
     if (o.error_limit == 0) o.error_limit = static_cast<std::size_t>(-1);  // as gcc: 0 = no limit
   } else {
     return fmt::format("unknown option '-f{}'", f);
@@ -187,17 +185,22 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
   app.add_option("-I", o.include_dirs, "Add DIR to the folders searched for imports")
       ->type_name("DIR")
       ->allow_extra_args(false);
-  app.add_option("-x", o.language, "Input language, as gcc's -x: alica (ALICA JSON plans) or gfec (chart text); "
-                                   "default: .pml files are ALICA, others chart text")
+  app.add_option("-x", o.language,
+                 "Input language, as gcc's -x: alica (ALICA JSON plans) or gfec (chart text); "
+                 "default: .pml files are ALICA, others chart text")
       ->type_name("LANG")
       ->check(CLI::IsMember({"alica", "gfec"}));
   app.add_flag("--check", o.check_only, "Validate only: report every diagnostic and write nothing");
-  app.add_flag("--analyze", o.analyze, "Run every static analysis and print a report per chart and plan; write nothing");
-  app.add_option("--emit", o.emit, fmt::format("Back end: {} (default: from the file; the list below)", backend_names_list()))
+  app.add_flag("--analyze", o.analyze,
+               "Run every static analysis and print a report per chart and plan; write nothing");
+  app.add_option("--emit", o.emit,
+                 fmt::format("Back end: {} (default: from the file; the list below)", backend_names_list()))
       ->type_name("NAME");
   app.add_option("--chart", o.chart, "The chart or plan to compile when a file declares several")->type_name("NAME");
   app.add_flag("--no-line-directives", no_line, "Do not write #line directives pointing back to the chart");
-  app.add_option("--engine", o.engine, "C engine form: auto (readable up to 64 places, or when a quarter of the places can be active at once), readable or scalable")
+  app.add_option("--engine", o.engine,
+                 "C engine form: auto (readable up to 64 places, or when a quarter of the places can be active at "
+                 "once), readable or scalable")
       ->check(CLI::IsMember({"auto", "readable", "scalable"}));
   app.add_option("-W", warning_flags, "Warning control: -W<name>, -Wno-<name>, -Wall, -Werror")
       ->type_name("NAME")
@@ -241,7 +244,8 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
     // gcc's words, then what a first-time user can type next.
     result.exit_now = true;
     result.exit_code = 2;
-    result.message = "gfec: fatal error: no input files\n" + usage_forms() + "Run 'gfec --help' for the options, 'gfec run --help' for the interpreter's.\n";
+    result.message = "gfec: fatal error: no input files\n" + usage_forms() +
+                     "Run 'gfec --help' for the options, 'gfec run --help' for the interpreter's.\n";
     return result;
   }
   for (const auto &w : warning_flags)
@@ -255,12 +259,11 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
   o.line_directives = !no_line;
   if (o.analyze && (!o.output.empty() || o.deps.write)) return usage_error("--analyze writes nothing; drop -o and -MD");
   if (o.analyze) return result;  // several files are fine, as with --check
-  if (!o.check_only && o.inputs.size() > 1)
-    return usage_error("several input files are only allowed with --check");
+  if (!o.check_only && o.inputs.size() > 1) return usage_error("several input files are only allowed with --check");
   if (o.check_only && !o.output.empty()) return usage_error("--check writes nothing; drop -o");
   if (o.check_only && o.deps.write) return usage_error("--check writes nothing; drop -MD");
   if (o.output == "-" && o.deps.write) return usage_error("-MD needs an output file, not '-o -'");
   return result;
 }
 
-} // namespace gfec
+}  // namespace gfec

@@ -22,9 +22,9 @@ struct DependencyTarget {
 
 /// gcc's -MD, -MF, -MP, -MT, -MQ: a make rule saying which files the outputs were made from.
 struct DependencyOptions {
-  bool write = false;                ///< -MD (or -MMD): write a dependency file beside the outputs
-  std::string file;                  ///< -MF FILE; empty: the primary output with ".d"
-  bool phony = false;                ///< -MP: an empty rule per import, so deleting one breaks no build
+  bool write = false;                     ///< -MD (or -MMD): write a dependency file beside the outputs
+  std::string file;                       ///< -MF FILE; empty: the primary output with ".d"
+  bool phony = false;                     ///< -MP: an empty rule per import, so deleting one breaks no build
   std::vector<DependencyTarget> targets;  ///< -MT/-MQ TARGET..., in order; empty: every file written (quoted)
 };
 
@@ -41,11 +41,11 @@ struct Options {
   std::string engine = "auto";            ///< --engine=auto|readable|scalable: the C engine's form
   WarningOptions warnings;                ///< -W<name>, -Wno-<name>, -Wall, -Werror[=NAME], -Wno-error=NAME, -w
   DiagnosticsFormat diagnostics_format = DiagnosticsFormat::Text;
-  std::size_t error_limit = 50;           ///< -fmax-errors=N
-  ColorMode color = ColorMode::Auto;      ///< -fdiagnostics-color[=WHEN], -fno-diagnostics-color
-  bool line_numbers = true;               ///< -fno-diagnostics-show-line-numbers drops gcc 12's gutter
-  bool parseable_fixits = false;          ///< -fdiagnostics-parseable-fixits
-  DependencyOptions deps;                 ///< -MD, -MF, -MP, -MT
+  std::size_t error_limit = 50;       ///< -fmax-errors=N
+  ColorMode color = ColorMode::Auto;  ///< -fdiagnostics-color[=WHEN], -fno-diagnostics-color
+  bool line_numbers = true;           ///< -fno-diagnostics-show-line-numbers drops gcc 12's gutter
+  bool parseable_fixits = false;      ///< -fdiagnostics-parseable-fixits
+  DependencyOptions deps;             ///< -MD, -MF, -MP, -MT
 };
 
 /// The result of reading argv: options to run with, or an exit code and text to print now
@@ -63,4 +63,4 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv);
 /// `gfec run` and `gfec test` read them alike. Returns "" or the usage error.
 std::string apply_f_flag(const std::string &flag, Options &o);
 
-} // namespace gfec
+}  // namespace gfec

@@ -11,4 +11,4 @@ std::string write_atomically(const std::vector<OutputFile> &files, const std::ve
   return safe_output::write_all(set, inputs);
 }
 
-} // namespace gfec
+}  // namespace gfec

@@ -13,4 +13,4 @@ namespace gfec {
 /// `inputs`: the files this run read, which no output may replace.
 std::string write_atomically(const std::vector<OutputFile> &files, const std::vector<std::string> &inputs);
 
-} // namespace gfec
+}  // namespace gfec

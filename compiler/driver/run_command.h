@@ -11,4 +11,4 @@ namespace gfec {
 /// (0 ok, 1 errors in the chart or the trace or undefined behaviour while running, 2 usage or I/O).
 int run_command(int argc, const char *const *argv, std::ostream &out, std::ostream &err);
 
-} // namespace gfec
+}  // namespace gfec

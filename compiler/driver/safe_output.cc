@@ -172,8 +172,7 @@ std::string refusal(const std::vector<File> &files, std::size_t i, const std::ve
   const std::string &path = files[i].path;
   std::string name = file_name_of(path);
   if (path.empty()) return "cannot write an output with an empty name";
-  if (name.empty() || name == "." || name == "..")
-    return "cannot write " + quote(path) + ": not a file name";
+  if (name.empty() || name == "." || name == "..") return "cannot write " + quote(path) + ": not a file name";
   struct stat st {};
   bool exists = false;
   if (::lstat(path.c_str(), &st) == 0) {
@@ -271,7 +270,7 @@ private:
   int error_ = 0;
 };
 
-} // namespace
+}  // namespace
 
 /// One output being written: its checked name, its temporary and the stream on it.
 struct Transaction::Output {
@@ -371,8 +370,9 @@ std::string write_all(const std::vector<File> &files, const std::vector<std::str
   }
   Transaction t(never_overwrite);
   for (const auto &f : files)
-    if (std::ostream *out = t.open(f.path)) out->write(f.contents.data(), static_cast<std::streamsize>(f.contents.size()));
+    if (std::ostream *out = t.open(f.path))
+      out->write(f.contents.data(), static_cast<std::streamsize>(f.contents.size()));
   return t.commit();
 }
 
-} // namespace gfec::safe_output
+}  // namespace gfec::safe_output

@@ -64,4 +64,4 @@ private:
 /// nothing has been written; otherwise an empty string.
 std::string write_all(const std::vector<File> &files, const std::vector<std::string> &never_overwrite);
 
-} // namespace gfec::safe_output
+}  // namespace gfec::safe_output

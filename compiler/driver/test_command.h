@@ -11,4 +11,4 @@ namespace gfec {
 /// or I/O errors.
 int test_command(int argc, const char *const *argv, std::ostream &out, std::ostream &err);
 
-} // namespace gfec
+}  // namespace gfec

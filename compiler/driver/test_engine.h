@@ -59,7 +59,6 @@ private:
 };
 
 /// harness.c for chart `chart`, whose engine (emitted with `options`) has the header `header`.
-std::string harness_source(const model::Model &model, int chart, const EmitOptions &options,
-                           const std::string &header);
+std::string harness_source(const model::Model &model, int chart, const EmitOptions &options, const std::string &header);
 
-} // namespace gfec
+}  // namespace gfec

@@ -9,7 +9,7 @@ namespace gfec::interp {
 
 namespace {
 constexpr std::uint32_t kTimerMax = std::numeric_limits<std::uint32_t>::max();
-} // namespace
+}  // namespace
 
 Engine::Engine(const model::Model &model, int chart, EngineOptions options) : Engine(model, chart, options, "", 1) {}
 
@@ -20,8 +20,7 @@ Engine::Engine(const model::Model &model, int chart, EngineOptions options, std:
   instances_.resize(chart_.places.size());
   for (std::size_t p = 0; p < chart_.places.size(); ++p) {
     const model::Place &place = chart_.places[p];
-    if (place.runs >= 0)
-      instances_[p].reset(new Engine(model, place.runs, options, prefix_ + place.name, depth + 1));
+    if (place.runs >= 0) instances_[p].reset(new Engine(model, place.runs, options, prefix_ + place.name, depth + 1));
   }
   init();
 }
@@ -77,7 +76,8 @@ void Engine::init() {
   // Initialisers are constant: no calls, no vars, no timers (the validator sees to it).
   Frame f = frame(nullptr, nullptr, 0);
   for (std::size_t i = 0; i < chart_.vars.size(); ++i)
-    if (chart_.vars[i].init) vars_[i] = convert(evaluate(*chart_.vars[i].init, f), chart_.vars[i].type, chart_.vars[i].range);
+    if (chart_.vars[i].init)
+      vars_[i] = convert(evaluate(*chart_.vars[i].init, f), chart_.vars[i].type, chart_.vars[i].range);
 }
 
 void Engine::set_agent(int agent) {
@@ -111,12 +111,12 @@ void Engine::step(Environment &env, EventLog *log, std::uint64_t tick) {
     // §5.1: the first tick begins with the entry blocks of the initial places.
     started_ = true;
     for (std::size_t p = 0; p < chart_.places.size(); ++p)
-      if (chart_.places[p].initial) block(EventKind::Entry, "entry", static_cast<int>(p), chart_.places[p].entry ? &*chart_.places[p].entry : nullptr, f);
+      if (chart_.places[p].initial)
+        block(EventKind::Entry, "entry", static_cast<int>(p),
+              chart_.places[p].entry ? &*chart_.places[p].entry : nullptr, f);
   }
-  if (is_fsm())
-    run_fsm(f);
-  else
-    run_sfc(f);
+  if (is_fsm()) run_fsm(f);
+  else run_sfc(f);
 }
 
 void Engine::start(int place, Frame &f) {
@@ -160,12 +160,14 @@ void Engine::log_instances(EventLog &log) const {
     const Engine *sub = instances_[p].get();
     if (!sub || activation(static_cast<int>(p)) == 0) continue;
     std::string av = "av " + sub->path_ + ":";
-    for (std::size_t q = 0; q < sub->chart_.places.size(); ++q) av += fmt::format(" {}", sub->activation(static_cast<int>(q)));
+    for (std::size_t q = 0; q < sub->chart_.places.size(); ++q)
+      av += fmt::format(" {}", sub->activation(static_cast<int>(q)));
     log.add(EventKind::InstanceAv, 1, std::move(av));
     if (sub->is_fsm()) {
       const char *status = sub->status_ == 0 ? "running" : sub->status_ > 0 ? "succeeded" : "failed";
       log.add(EventKind::InstanceState, 1,
-              fmt::format("state {}: {} {}", sub->path_, sub->chart_.places.at(static_cast<std::size_t>(sub->state_)).name, status));
+              fmt::format("state {}: {} {}", sub->path_,
+                          sub->chart_.places.at(static_cast<std::size_t>(sub->state_)).name, status));
     }
     sub->log_instances(log);
   }
@@ -187,13 +189,15 @@ bool Engine::condition(int t, Frame &f) {
   f.depth = depth_ + 1;
   bool holds = convert(evaluate(*tr.condition, f), model::Type::Bool, tr.condition->range).b;
   if (f.log)
-    f.log->insert(mark, EventKind::Condition, depth_, fmt::format("cond {}{} = {}", prefix_, tr.name, holds ? "true" : "false"));
+    f.log->insert(mark, EventKind::Condition, depth_,
+                  fmt::format("cond {}{} = {}", prefix_, tr.name, holds ? "true" : "false"));
   return holds;
 }
 
 void Engine::block(EventKind kind, const char *word, int place, const std::vector<model::Stmt> *stmts, Frame &f) {
   if (f.log)
-    f.log->add(kind, depth_, fmt::format("{} {}{}", word, prefix_, chart_.places.at(static_cast<std::size_t>(place)).name));
+    f.log->add(kind, depth_,
+               fmt::format("{} {}{}", word, prefix_, chart_.places.at(static_cast<std::size_t>(place)).name));
   if (!stmts) return;
   f.depth = depth_ + 1;
   execute(*stmts, f);
@@ -231,7 +235,8 @@ void Engine::run_sfc(Frame &f) {
     if (before[p] == 0 && av_[p] > 0) {
       timers_[p] = 0;
       start(static_cast<int>(p), f);
-      block(EventKind::Entry, "entry", static_cast<int>(p), chart_.places[p].entry ? &*chart_.places[p].entry : nullptr, f);
+      block(EventKind::Entry, "entry", static_cast<int>(p), chart_.places[p].entry ? &*chart_.places[p].entry : nullptr,
+            f);
     }
   // The observation hooks: places that lost, then gained activation; transitions whose inputs
   // are all active now but were not all active at the start of the tick. Only the root's: the
@@ -299,7 +304,8 @@ void Engine::run_fsm(Frame &f) {
       f.depth = depth_ + 1;
       bool holds = convert(evaluate(*neu.post, f), model::Type::Bool, neu.post->range).b;
       if (f.log)
-        f.log->insert(mark, EventKind::Post, depth_, fmt::format("post {}{} = {}", prefix_, neu.name, holds ? "true" : "false"));
+        f.log->insert(mark, EventKind::Post, depth_,
+                      fmt::format("post {}{} = {}", prefix_, neu.name, holds ? "true" : "false"));
     }
   }
   // The action of the (new) current state, then one tick of its instance; a terminal state has
@@ -322,4 +328,4 @@ void Engine::end_of_tick(Frame &f) {
   }
 }
 
-} // namespace gfec::interp
+}  // namespace gfec::interp

@@ -87,19 +87,19 @@ private:
   const model::Model &model_;
   const model::Chart &chart_;
   EngineOptions options_;
-  std::string path_;    ///< "" for the root; "Search", "Search.Grab" for instances
-  std::string prefix_;  ///< path_ + "." (or ""): names in the log are prefixed with it
-  int depth_ = 1;       ///< the indentation of this chart's own events
+  std::string path_;                                ///< "" for the root; "Search", "Search.Grab" for instances
+  std::string prefix_;                              ///< path_ + "." (or ""): names in the log are prefixed with it
+  int depth_ = 1;                                   ///< the indentation of this chart's own events
   std::vector<std::unique_ptr<Engine>> instances_;  ///< by place: the instance it runs, or null
-  std::vector<std::uint32_t> av_;      ///< sfc: activation counters (C's unsigned)
-  int state_ = -1;                     ///< fsm
-  int status_ = 0;                     ///< fsm
-  std::vector<std::uint32_t> timers_;  ///< ticks active, by place (saturating, as in C)
+  std::vector<std::uint32_t> av_;                   ///< sfc: activation counters (C's unsigned)
+  int state_ = -1;                                  ///< fsm
+  int status_ = 0;                                  ///< fsm
+  std::vector<std::uint32_t> timers_;               ///< ticks active, by place (saturating, as in C)
   std::vector<Value> vars_;
-  bool started_ = false;               ///< the first tick has run the initial entries
-  int agent_ = 0;                      ///< team machine: this engine's agent number
-  std::vector<int> reports_;           ///< team machine: by agent, its last state (-1: none)
+  bool started_ = false;      ///< the first tick has run the initial entries
+  int agent_ = 0;             ///< team machine: this engine's agent number
+  std::vector<int> reports_;  ///< team machine: by agent, its last state (-1: none)
   std::uint64_t tick_ = 0;
 };
 
-} // namespace gfec::interp
+}  // namespace gfec::interp

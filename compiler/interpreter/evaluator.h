@@ -29,13 +29,13 @@ public:
 struct Frame {
   const model::Model &model;
   const model::Chart &chart;
-  std::vector<Value> &vars;                   ///< by Chart::vars index
-  const std::vector<std::uint32_t> &timers;   ///< ticks, by place index
-  Environment *env = nullptr;                 ///< null: a constant expression, where calls are errors
-  EventLog *log = nullptr;                    ///< null: log nothing
+  std::vector<Value> &vars;                  ///< by Chart::vars index
+  const std::vector<std::uint32_t> &timers;  ///< ticks, by place index
+  Environment *env = nullptr;                ///< null: a constant expression, where calls are errors
+  EventLog *log = nullptr;                   ///< null: log nothing
   std::uint64_t tick = 0;
-  int depth = 1;                              ///< indentation of the events logged
-  const Engine *engine = nullptr;             ///< the chart's engine: active(), succeeded(), failed()
+  int depth = 1;                   ///< indentation of the events logged
+  const Engine *engine = nullptr;  ///< the chart's engine: active(), succeeded(), failed()
   /// A team machine (docs/language.md "Teams"): this engine's agent number, and by agent the
   /// state each one last reported (-1: none). Null for a machine that is no team.
   int agent = 0;
@@ -47,4 +47,4 @@ Value evaluate(const model::Expr &e, Frame &f);
 /// Verbatim code cannot be run: it is skipped with a note.
 void execute(const std::vector<model::Stmt> &block, Frame &f);
 
-} // namespace gfec::interp
+}  // namespace gfec::interp

@@ -29,4 +29,4 @@ std::string EventLog::render(const RenderOptions &options) const {
   return out;
 }
 
-} // namespace gfec::interp
+}  // namespace gfec::interp

@@ -23,10 +23,28 @@
 namespace gfec::interp {
 
 enum class EventKind {
-  Tick, Call, Av, State, Agent,     // observable
-  Lost, Gained, Enabled,            // hooks
-  Condition, Fire, Exit, Entry, Action, Assign, Post, Note, Exchange,  // explanation
-  Start, RunInstance, Stop, InstanceAv, InstanceState,                 // explanation: sub-charts
+  Tick,
+  Call,
+  Av,
+  State,
+  Agent,  // observable
+  Lost,
+  Gained,
+  Enabled,  // hooks
+  Condition,
+  Fire,
+  Exit,
+  Entry,
+  Action,
+  Assign,
+  Post,
+  Note,
+  Exchange,  // explanation
+  Start,
+  RunInstance,
+  Stop,
+  InstanceAv,
+  InstanceState,  // explanation: sub-charts
 };
 
 enum class Layer { Observable, Hooks, Explanation };
@@ -62,4 +80,4 @@ private:
   std::vector<Event> events_;
 };
 
-} // namespace gfec::interp
+}  // namespace gfec::interp

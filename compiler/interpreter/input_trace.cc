@@ -77,7 +77,7 @@ int find_function(const model::Model &m, std::string_view name) {
   return -1;
 }
 
-} // namespace
+}  // namespace
 
 InputTrace::InputTrace(const model::Model &model) : model_(model) {}
 
@@ -183,4 +183,4 @@ Value InputTrace::value(int function, std::uint64_t tick, int agent) const {
 
 Value InputTrace::call(int function, const std::vector<Value> &, std::uint64_t tick) { return value(function, tick); }
 
-} // namespace gfec::interp
+}  // namespace gfec::interp

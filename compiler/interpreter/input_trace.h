@@ -26,8 +26,7 @@ public:
   /// Reads the CSV file `file` of `sources` against the model's interface functions. Malformed
   /// lines, unknown or void functions and values of the wrong type are reported to `diag`,
   /// located in the CSV file.
-  InputTrace(const model::Model &model, const SourceManager &sources, FileId file, Diagnostics &diag,
-             int agents = 1);
+  InputTrace(const model::Model &model, const SourceManager &sources, FileId file, Diagnostics &diag, int agents = 1);
   /// No inputs: every function returns 0 (false).
   explicit InputTrace(const model::Model &model);
 
@@ -56,4 +55,4 @@ private:
   std::vector<std::vector<Value>> rows_;  ///< by row, by column
 };
 
-} // namespace gfec::interp
+}  // namespace gfec::interp

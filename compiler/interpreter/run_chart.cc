@@ -4,8 +4,8 @@
 
 namespace gfec::interp {
 
-RunResult run_chart(const model::Model &model, int chart, Environment &env, std::uint64_t ticks,
-                    EngineOptions options, Diagnostics &diag) {
+RunResult run_chart(const model::Model &model, int chart, Environment &env, std::uint64_t ticks, EngineOptions options,
+                    Diagnostics &diag) {
   RunResult result;
   try {
     Engine engine(model, chart, options);
@@ -22,8 +22,8 @@ RunResult run_chart(const model::Model &model, int chart, Environment &env, std:
   return result;
 }
 
-RunResult run_team(const model::Model &model, int chart, const std::vector<Environment *> &envs,
-                   std::uint64_t ticks, EngineOptions options, Diagnostics &diag) {
+RunResult run_team(const model::Model &model, int chart, const std::vector<Environment *> &envs, std::uint64_t ticks,
+                   EngineOptions options, Diagnostics &diag) {
   RunResult result;
   std::size_t agent = 0;
   std::uint64_t tick = 0;
@@ -61,4 +61,4 @@ RunResult run_team(const model::Model &model, int chart, const std::vector<Envir
   return result;
 }
 
-} // namespace gfec::interp
+}  // namespace gfec::interp

@@ -72,7 +72,7 @@ Value to_float(double d, SourceRange where) {
   return Value::of_float(static_cast<float>(r.value.f));
 }
 
-} // namespace
+}  // namespace
 
 Value convert(const Value &v, model::Type to, SourceRange where) {
   if (v.type == to) return v;
@@ -94,8 +94,7 @@ Value convert(const Value &v, model::Type to, SourceRange where) {
     if (v.type == model::Type::Int || v.type == model::Type::Duration) return Value::of_bool(v.i != 0);
     if (v.type == model::Type::Float || v.type == model::Type::Double) return Value::of_bool(v.f != 0);
     break;
-  default:
-    break;
+  default: break;
   }
   throw RuntimeError(where, fmt::format("cannot convert a value of type '{}' to '{}'", model::type_name(v.type),
                                         model::type_name(to)));
@@ -120,4 +119,4 @@ std::pair<std::string, std::string> c_printf_of(model::Type t, const std::string
   }
 }
 
-} // namespace gfec::interp
+}  // namespace gfec::interp

@@ -48,4 +48,4 @@ std::string format_value(const Value &v);
 /// of type `t`, exactly as format_value prints it; the C type itself is model::type_name(t).
 std::pair<std::string, std::string> c_printf_of(model::Type t, const std::string &expr);
 
-} // namespace gfec::interp
+}  // namespace gfec::interp

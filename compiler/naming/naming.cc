@@ -6,6 +6,7 @@ namespace gfec::naming {
 
 namespace {
 
+// clang-format off
 const std::set<std::string_view> kCKeywords = {
     "auto", "break", "case", "char", "const", "continue", "default", "do", "double", "else", "enum",
     "extern", "float", "for", "goto", "if", "inline", "int", "long", "register", "restrict", "return",
@@ -13,9 +14,11 @@ const std::set<std::string_view> kCKeywords = {
     "volatile", "while", "_Alignas", "_Alignof", "_Atomic", "_Bool", "_Complex", "_Generic",
     "_Imaginary", "_Noreturn", "_Static_assert", "_Thread_local",
 };
+// clang-format on
 
 /// C++20's keywords and alternative tokens beyond C's: a C engine's header is read by C++ code
 /// too, and a name good for C++17 should stay good under C++20.
+// clang-format off
 const std::set<std::string_view> kCppKeywords = {
     "alignas", "alignof", "and", "and_eq", "asm", "bitand", "bitor", "bool", "catch", "char8_t", "char16_t",
     "char32_t", "class", "compl", "concept", "consteval", "constexpr", "constinit", "const_cast", "co_await",
@@ -25,16 +28,43 @@ const std::set<std::string_view> kCppKeywords = {
     "template", "this", "thread_local", "throw", "true", "try", "typeid", "typename", "using", "virtual",
     "wchar_t", "xor", "xor_eq",
 };
+// clang-format on
 
 /// Macros and typedefs of the headers a C engine includes (<stdbool.h>, <stdint.h>, <string.h>,
 /// <assert.h>, and <stddef.h>, <limits.h>, <float.h> through them on common targets): a name
 /// `NULL` or `uint8_t` would be replaced or clash there.
 bool is_c_library_name(std::string_view name) {
-  static const std::set<std::string_view> names = {
-      "NULL", "EOF", "offsetof", "assert", "errno", "static_assert", "size_t", "ptrdiff_t", "max_align_t",
-      "intptr_t", "uintptr_t", "intmax_t", "uintmax_t", "memcpy", "memset", "memcmp", "memmove", "strlen",
-      "__bool_true_false_are_defined", "CHAR_BIT", "MB_LEN_MAX", "SIZE_MAX", "PTRDIFF_MIN", "PTRDIFF_MAX",
-      "SIG_ATOMIC_MIN", "SIG_ATOMIC_MAX", "WCHAR_MIN", "WCHAR_MAX", "WINT_MIN", "WINT_MAX", "NDEBUG"};
+  static const std::set<std::string_view> names = {"NULL",
+                                                   "EOF",
+                                                   "offsetof",
+                                                   "assert",
+                                                   "errno",
+                                                   "static_assert",
+                                                   "size_t",
+                                                   "ptrdiff_t",
+                                                   "max_align_t",
+                                                   "intptr_t",
+                                                   "uintptr_t",
+                                                   "intmax_t",
+                                                   "uintmax_t",
+                                                   "memcpy",
+                                                   "memset",
+                                                   "memcmp",
+                                                   "memmove",
+                                                   "strlen",
+                                                   "__bool_true_false_are_defined",
+                                                   "CHAR_BIT",
+                                                   "MB_LEN_MAX",
+                                                   "SIZE_MAX",
+                                                   "PTRDIFF_MIN",
+                                                   "PTRDIFF_MAX",
+                                                   "SIG_ATOMIC_MIN",
+                                                   "SIG_ATOMIC_MAX",
+                                                   "WCHAR_MIN",
+                                                   "WCHAR_MAX",
+                                                   "WINT_MIN",
+                                                   "WINT_MAX",
+                                                   "NDEBUG"};
   if (names.count(name)) return true;
   // intN_t, uintN_t, int_leastN_t, int_fastN_t and their INTn_MAX/_MIN/_C macros; <limits.h>'s
   // INT_MAX, UCHAR_MAX, LLONG_MIN...; <float.h>'s FLT_*, DBL_*, LDBL_*.
@@ -47,7 +77,7 @@ bool is_c_library_name(std::string_view name) {
 /// Macros of the standard headers the C++ plan runtime pulls in (<cstdio>, <cerrno>).
 const std::set<std::string_view> kCppLibrary = {"stdin", "stdout", "stderr", "EDOM", "ERANGE", "EILSEQ"};
 
-} // namespace
+}  // namespace
 
 Reserved reserved(std::string_view word) {
   if (kCKeywords.count(word)) return Reserved::CKeyword;
@@ -81,4 +111,4 @@ const std::string &NameSpace::reserve_numbered_prefix(std::string base) {
   return prefix_;
 }
 
-} // namespace gfec::naming
+}  // namespace gfec::naming

@@ -51,4 +51,4 @@ private:
   std::string prefix_;  ///< the reserved temporaries' prefix; empty: none yet
 };
 
-} // namespace gfec::naming
+}  // namespace gfec::naming

@@ -38,7 +38,7 @@ std::string kinds_text(unsigned among) {
   return s;
 }
 
-} // namespace
+}  // namespace
 
 Target select_target(const model::Model &m, const TargetRequest &request) {
   std::vector<Candidate> candidates;
@@ -65,7 +65,8 @@ Target select_target(const model::Model &m, const TargetRequest &request) {
 
   auto list = [&] {
     std::string names;
-    for (const auto &c : candidates) names += fmt::format("{}{} '{}'", names.empty() ? "" : ", ", kind_name(c.kind), c.name);
+    for (const auto &c : candidates)
+      names += fmt::format("{}{} '{}'", names.empty() ? "" : ", ", kind_name(c.kind), c.name);
     return names;
   };
   Target t;
@@ -83,14 +84,14 @@ Target select_target(const model::Model &m, const TargetRequest &request) {
   } else if (candidates.size() == 1) {
     chosen = &candidates.front();
   } else if (candidates.empty()) {
-    t.error = request.among == kToolbox ? std::string("the file declares no toolbox")
-                                        : fmt::format("nothing to {}: the file declares no {}", request.verb,
-                                                      kinds_text(request.among));
+    t.error = request.among == kToolbox
+                  ? std::string("the file declares no toolbox")
+                  : fmt::format("nothing to {}: the file declares no {}", request.verb, kinds_text(request.among));
     t.in_input = true;
     return t;
   } else {
-    t.error = fmt::format("the file declares several things to {} ({}); choose one with --chart NAME", request.verb,
-                          list());
+    t.error =
+        fmt::format("the file declares several things to {} ({}); choose one with --chart NAME", request.verb, list());
     return t;
   }
   t.kind = chosen->kind;
@@ -133,4 +134,4 @@ const Target &Compilation::select(const TargetRequest &request) {
   return target;
 }
 
-} // namespace gfec::pipeline
+}  // namespace gfec::pipeline

@@ -25,16 +25,16 @@ enum TargetKind : unsigned { kSfc = 1, kFsm = 2, kPlan = 4, kToolbox = 8 };
 
 /// What the front end needs from the command line.
 struct FrontEndOptions {
-  std::vector<std::string> include_dirs;           ///< -I
-  InputLanguage language = InputLanguage::Auto;    ///< -x
-  WarningOptions warnings;                         ///< -W...
-  std::size_t error_limit = 50;                    ///< -fmax-errors=N
+  std::vector<std::string> include_dirs;         ///< -I
+  InputLanguage language = InputLanguage::Auto;  ///< -x
+  WarningOptions warnings;                       ///< -W...
+  std::size_t error_limit = 50;                  ///< -fmax-errors=N
   bool analyze = true;  ///< run the static analyses whose warnings are on (docs/verification.md)
 };
 
 /// What to compile, the one function select_target answers it with.
 struct TargetRequest {
-  std::string name;           ///< --chart NAME; empty: the default (docs/language.md "Sub-charts")
+  std::string name;                      ///< --chart NAME; empty: the default (docs/language.md "Sub-charts")
   unsigned among = kSfc | kFsm | kPlan;  ///< the kinds to choose from (kToolbox alone: a toolbox skeleton)
   const char *verb = "compile";          ///< for messages: "compile", "run"
 };
@@ -83,5 +83,5 @@ public:
   Target target;
 };
 
-} // namespace pipeline
-} // namespace gfec
+}  // namespace pipeline
+}  // namespace gfec

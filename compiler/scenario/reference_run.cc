@@ -14,9 +14,7 @@ class TestEnvironment : public interp::Environment {
 public:
   explicit TestEnvironment(const model::Model &model) : model_(model), values_(model.functions.size()) {}
 
-  void set(int function, const std::string &value) {
-    values_[static_cast<std::size_t>(function)] = value;
-  }
+  void set(int function, const std::string &value) { values_[static_cast<std::size_t>(function)] = value; }
   std::vector<Call> take_calls() { return std::move(calls_); }
 
   interp::Value call(int function, const std::vector<interp::Value> &args, std::uint64_t) override {
@@ -55,7 +53,7 @@ Snapshot snapshot(const interp::Engine &e, std::vector<Call> calls) {
   return s;
 }
 
-} // namespace
+}  // namespace
 
 std::uint64_t total_ticks(const Test &test) {
   std::uint64_t n = 0;
@@ -87,4 +85,4 @@ Run run_reference(const model::Model &model, const Test &test) {
   return run;
 }
 
-} // namespace gfec::scenario
+}  // namespace gfec::scenario

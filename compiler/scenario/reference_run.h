@@ -23,4 +23,4 @@ std::uint64_t total_ticks(const Test &test);
 
 Run run_reference(const model::Model &model, const Test &test);
 
-} // namespace gfec::scenario
+}  // namespace gfec::scenario

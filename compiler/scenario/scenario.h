@@ -62,4 +62,4 @@ struct Suite {
   std::vector<Test> tests;
 };
 
-} // namespace gfec::scenario
+}  // namespace gfec::scenario

@@ -40,7 +40,9 @@ model::Expr literal_int(long long v, SourceRange range) {
   return neg;
 }
 
-const char *status_word(int status) { return status > 0 ? "1 (succeeded)" : status < 0 ? "-1 (failed)" : "0 (running)"; }
+const char *status_word(int status) {
+  return status > 0 ? "1 (succeeded)" : status < 0 ? "-1 (failed)" : "0 (running)";
+}
 
 /// Replaces the test-only operands by their values, so that the interpreter's evaluator (C's
 /// semantics, once, in one place) computes the rest; records every operand's value.
@@ -59,7 +61,8 @@ public:
     case Expect::Kind::State: {
       bool v = s_.state == e.place;
       std::string current = s_.state >= 0 && s_.state < static_cast<int>(c_.places.size())
-                                ? c_.places[static_cast<std::size_t>(s_.state)].name : "?";
+                                ? c_.places[static_cast<std::size_t>(s_.state)].name
+                                : "?";
       operands.push_back({e.range, fmt::format("{} (the current state is '{}')", v ? "true" : "false", current)});
       return literal_bool(v, e.range);
     }
@@ -117,7 +120,7 @@ private:
   const model::Chart &c_;
 };
 
-} // namespace
+}  // namespace
 
 Verdict evaluate(const Expect &e, const Snapshot &s, const model::Model &model, int chart) {
   const model::Chart &c = model.charts.at(static_cast<std::size_t>(chart));
@@ -137,9 +140,7 @@ Verdict evaluate(const Expect &e, const Snapshot &s, const model::Model &model, 
   try {
     interp::Value result = interp::evaluate(expr, frame);
     v.holds = result.type == Type::Bool && result.b;
-  } catch (const interp::RuntimeError &err) {
-    v.error = err.what();
-  }
+  } catch (const interp::RuntimeError &err) { v.error = err.what(); }
   return v;
 }
 
@@ -177,4 +178,4 @@ interp::Value parse_value(const std::string &text, model::Type t) {
   }
 }
 
-} // namespace gfec::scenario
+}  // namespace gfec::scenario

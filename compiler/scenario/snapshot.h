@@ -21,13 +21,13 @@ struct Call {
 };
 
 struct Snapshot {
-  std::uint64_t tick = 0;                ///< ticks run so far (0: just after _init)
-  std::vector<unsigned> activation;      ///< by place
-  std::vector<std::uint32_t> timers;     ///< by place; meaningful for timed places only
-  std::vector<interp::Value> vars;       ///< by Chart::vars index
-  int state = -1;                        ///< fsm
-  int status = 0;                        ///< fsm
-  std::vector<Call> calls;               ///< during the last tick, in order
+  std::uint64_t tick = 0;             ///< ticks run so far (0: just after _init)
+  std::vector<unsigned> activation;   ///< by place
+  std::vector<std::uint32_t> timers;  ///< by place; meaningful for timed places only
+  std::vector<interp::Value> vars;    ///< by Chart::vars index
+  int state = -1;                     ///< fsm
+  int status = 0;                     ///< fsm
+  std::vector<Call> calls;            ///< during the last tick, in order
 };
 
 /// An operand's value, for the notes of a failed expectation.
@@ -52,4 +52,4 @@ std::string compare(const Snapshot &x, const Snapshot &y, const model::Model &mo
 /// A constant as `set` formats it (validate_tests.cc), back to a value of type `t`.
 interp::Value parse_value(const std::string &text, model::Type t);
 
-} // namespace gfec::scenario
+}  // namespace gfec::scenario

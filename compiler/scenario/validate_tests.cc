@@ -18,8 +18,8 @@ namespace gfec::validation {
 
 namespace {
 
-using scenario::Expect;
 using model::Type;
+using scenario::Expect;
 
 /// The chart's names as its own validation saw them (rebuilt from the model: the scope of
 /// validate_chart is gone by now). Clashes were reported then; they are not repeated.
@@ -59,7 +59,8 @@ public:
   std::optional<Expect> expect(const ast::Expr *e) {
     auto x = lower(e);
     if (!x || x->type == Type::Bool) return x;
-    cx_.diag.error(x->range, ErrorKind::TypeMismatch, fmt::format("an expectation must be bool, not {}", quoted(x->type)));
+    cx_.diag.error(x->range, ErrorKind::TypeMismatch,
+                   fmt::format("an expectation must be bool, not {}", quoted(x->type)));
     return std::nullopt;
   }
 
@@ -69,8 +70,9 @@ public:
     const Symbol *sym = cx_.c_names.find(name.text);
     if (sym && sym->kind == Sym::Function) return cx_.function_ok[sym->index] ? sym->index : -1;
     if (sym) {
-      cx_.diag.error(name.range, ErrorKind::TypeMismatch, fmt::format("'{}' is {}, not a function", name.text,
-                                                              with_article(sym->kind)))
+      cx_.diag
+          .error(name.range, ErrorKind::TypeMismatch,
+                 fmt::format("'{}' is {}, not a function", name.text, with_article(sym->kind)))
           .note(sym->range, fmt::format("'{}' declared here", name.text));
       return -1;
     }
@@ -85,7 +87,8 @@ public:
     auto x = lower_expr(e, constant_scope);
     if (!x) return std::nullopt;
     if (!assignable(to, x->type)) {
-      cx_.diag.error(x->range, ErrorKind::TypeMismatch, fmt::format("{} must be {}, not {}", what, quoted(to), quoted(x->type)));
+      cx_.diag.error(x->range, ErrorKind::TypeMismatch,
+                     fmt::format("{} must be {}, not {}", what, quoted(to), quoted(x->type)));
       return std::nullopt;
     }
     auto v = evaluate(*x, cx_.model, &cx_.diag);
@@ -117,7 +120,8 @@ private:
 
   bool fsm_only(const ast::Expr &e, const char *what) {
     if (chart_.is_fsm()) return true;
-    cx_.diag.error(e.range, ErrorKind::Test, fmt::format("'{}' needs an fsm, but '{}' is an sfc", what, chart_.out.name));
+    cx_.diag.error(e.range, ErrorKind::Test,
+                   fmt::format("'{}' needs an fsm, but '{}' is an sfc", what, chart_.out.name));
     return false;
   }
 
@@ -145,8 +149,9 @@ private:
       if (operand->kind == Expect::Kind::Chart) break;  // all chart: the chart's lowering types it
       auto type = unary_type(e->unary_op, operand->type);
       if (!type) {
-        cx_.diag.error(e->range, ErrorKind::TypeMismatch,
-                       fmt::format("invalid operand to unary '{}' (have {})", spelling(e->unary_op), quoted(operand->type)));
+        cx_.diag.error(
+            e->range, ErrorKind::TypeMismatch,
+            fmt::format("invalid operand to unary '{}' (have {})", spelling(e->unary_op), quoted(operand->type)));
         return std::nullopt;
       }
       Expect x = make(Expect::Kind::Unary, *type, e->range);
@@ -193,8 +198,11 @@ private:
     if (!x) return std::nullopt;
     if (const model::Expr *call = find_call(*x)) {
       const std::string &f = cx_.model.functions[call->index].name;
-      cx_.diag.error(call->range, ErrorKind::Test, fmt::format("an expectation calls no chart code: '{}' cannot be called here", f))
-          .note(fmt::format("'called {0}' says whether the chart called it in the last tick, 'calls {0}' how often", f));
+      cx_.diag
+          .error(call->range, ErrorKind::Test,
+                 fmt::format("an expectation calls no chart code: '{}' cannot be called here", f))
+          .note(
+              fmt::format("'called {0}' says whether the chart called it in the last tick, 'calls {0}' how often", f));
       return std::nullopt;
     }
     Expect out = make(Expect::Kind::Chart, x->type, e.range);
@@ -206,7 +214,8 @@ private:
     const char *word = kind == Expect::Kind::State ? "state" : "active";
     if (kind == Expect::Kind::State && !fsm_only(e, "state()")) return std::nullopt;
     if (e.args.size() != 1 || !e.args[0] || e.args[0]->kind != ast::Expr::Kind::Name) {
-      cx_.diag.error(e.range, ErrorKind::Test, fmt::format("'{}' takes one argument: the name of a {}", word, chart_.place_word()));
+      cx_.diag.error(e.range, ErrorKind::Test,
+                     fmt::format("'{}' takes one argument: the name of a {}", word, chart_.place_word()));
       return std::nullopt;
     }
     int place = resolve_place(chart_, cx_, e.args[0]->name);
@@ -227,10 +236,11 @@ private:
     if (target.kind != ast::Expr::Kind::Call) return x;
     const model::Function &fn = cx_.model.functions[f];
     if (target.args.size() != fn.params.size()) {
-      cx_.diag.error(target.range, ErrorKind::ArgumentCount,
-                     fmt::format("too {} arguments to function '{}' (expected {}, have {})",
-                                 target.args.size() > fn.params.size() ? "many" : "few", fn.name, fn.params.size(),
-                                 target.args.size()))
+      cx_.diag
+          .error(target.range, ErrorKind::ArgumentCount,
+                 fmt::format("too {} arguments to function '{}' (expected {}, have {})",
+                             target.args.size() > fn.params.size() ? "many" : "few", fn.name, fn.params.size(),
+                             target.args.size()))
           .note(fn.range, fmt::format("'{}' declared here", fn.name));
       return std::nullopt;
     }
@@ -262,8 +272,9 @@ int resolve_chart(Context &cx, const ast::Name &name, std::set<std::string> &see
     return -1;
   }
   if (sym) {
-    cx.diag.error(name.range, ErrorKind::TypeMismatch, fmt::format("'{}' is {}, not an sfc or fsm", name.text,
-                                                           with_article(sym->kind)))
+    cx.diag
+        .error(name.range, ErrorKind::TypeMismatch,
+               fmt::format("'{}' is {}, not an sfc or fsm", name.text, with_article(sym->kind)))
         .note(sym->range, fmt::format("'{}' declared here", name.text));
     return -1;
   }
@@ -278,17 +289,20 @@ bool lower_set(Context &cx, TestLowering &lowering, const model::Chart &chart, c
   if (f < 0) return false;
   const model::Function &fn = cx.model.functions[f];
   if (fn.result == Type::Void || !fn.params.empty()) {
-    cx.diag.error(in.function.range, ErrorKind::Test,
-                  fmt::format("'set' needs a sensing function without parameters; '{}' {}", fn.name,
-                              fn.result == Type::Void ? "returns void" : "takes parameters"))
+    cx.diag
+        .error(in.function.range, ErrorKind::Test,
+               fmt::format("'set' needs a sensing function without parameters; '{}' {}", fn.name,
+                           fn.result == Type::Void ? "returns void" : "takes parameters"))
         .note(fn.range, fmt::format("'{}' declared here", fn.name));
     return false;
   }
   bool ours = false;
   for (int used : chart.functions) ours = ours || cx.model.functions[used].interface_name == fn.interface_name;
   if (!ours) {
-    cx.diag.error(in.function.range, ErrorKind::Test, fmt::format("'{}' belongs to interface '{}', which chart '{}' does not use",
-                                                         fn.name, fn.interface_name, chart.name))
+    cx.diag
+        .error(in.function.range, ErrorKind::Test,
+               fmt::format("'{}' belongs to interface '{}', which chart '{}' does not use", fn.name, fn.interface_name,
+                           chart.name))
         .note(fn.range, fmt::format("'{}' declared here", fn.name));
     return false;
   }
@@ -299,7 +313,7 @@ bool lower_set(Context &cx, TestLowering &lowering, const model::Chart &chart, c
   return true;
 }
 
-} // namespace
+}  // namespace
 
 void validate_tests(Context &cx, scenario::Suite &out) {
   if (cx.program.files.empty() || !cx.program.files.front()) return;
@@ -346,4 +360,4 @@ void validate_tests(Context &cx, scenario::Suite &out) {
   }
 }
 
-} // namespace gfec::validation
+}  // namespace gfec::validation

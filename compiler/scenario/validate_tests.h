@@ -15,4 +15,4 @@ constexpr long long kMaxTicksPerStep = 1000000;
 /// Checks the tests of the main file and appends those without errors to `out`.
 void validate_tests(Context &cx, scenario::Suite &out);
 
-} // namespace gfec::validation
+}  // namespace gfec::validation

@@ -102,4 +102,4 @@ private:
 /// "'int'": a type as messages quote it.
 std::string quoted(model::Type t);
 
-} // namespace gfec::validation
+}  // namespace gfec::validation

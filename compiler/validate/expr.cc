@@ -29,15 +29,16 @@ void require_period(ExprScope &s, SourceRange at, const std::string &what) {
   ChartScope &c = *s.chart;
   if (c.out.period_ms > 0 || c.period_reported) return;
   c.period_reported = true;
-  auto &d = s.cx.diag.error(at, ErrorKind::MissingPeriod, fmt::format("{} needs a period, but {} '{}' declares none", what,
-                                                              c.kind_word(), c.out.name));
+  auto &d =
+      s.cx.diag.error(at, ErrorKind::MissingPeriod,
+                      fmt::format("{} needs a period, but {} '{}' declares none", what, c.kind_word(), c.out.name));
   bool sub_chart = false;
   for (const auto &runs : s.cx.runs)
     for (int r : runs) sub_chart = sub_chart || r == c.index;
   if (sub_chart)
-    d.note(c.ast.name.range, "a sub-chart takes the period of the chart that runs it; declare one there, e.g. 'period 10ms;'");
-  else
-    d.note(c.ast.name.range, "declare one in the chart, e.g. 'period 10ms;'");
+    d.note(c.ast.name.range,
+           "a sub-chart takes the period of the chart that runs it; declare one there, e.g. 'period 10ms;'");
+  else d.note(c.ast.name.range, "declare one in the chart, e.g. 'period 10ms;'");
 }
 
 /// The unknown names already reported where `s` stands.
@@ -63,7 +64,8 @@ std::optional<model::Expr> const_ref(int index, SourceRange at, ExprScope &s) {
 
 /// A name that denotes something other than a value, used as one.
 std::nullopt_t not_a_value(ExprScope &s, const ast::Name &name, const Symbol &sym) {
-  auto &d = s.cx.diag.error(name.range, ErrorKind::TypeMismatch, fmt::format("'{}' is {}, not a value", name.text, with_article(sym.kind)));
+  auto &d = s.cx.diag.error(name.range, ErrorKind::TypeMismatch,
+                            fmt::format("'{}' is {}, not a value", name.text, with_article(sym.kind)));
   if (sym.kind == Sym::Function) d.note(sym.range, fmt::format("to call it, write '{}()'", name.text));
   if (sym.kind == Sym::Place || sym.kind == Sym::State)
     d.note(fmt::format("'elapsed({})' is the time it has been active", name.text));
@@ -110,7 +112,8 @@ std::optional<model::Expr> lower_elapsed(const ast::Expr &e, ExprScope &s, bool 
     return std::nullopt;
   }
   if (e.args.size() != 1 || !e.args[0] || e.args[0]->kind != ast::Expr::Kind::Name) {
-    diag.error(e.range, ErrorKind::Elapsed, fmt::format("'elapsed' takes one argument: the name of a {}", s.chart->place_word()));
+    diag.error(e.range, ErrorKind::Elapsed,
+               fmt::format("'elapsed' takes one argument: the name of a {}", s.chart->place_word()));
     return std::nullopt;
   }
   int place = resolve_place(*s.chart, s.cx, e.args[0]->name);
@@ -164,8 +167,8 @@ bool team_context(const ast::Expr &e, ExprScope &s, const std::string &what) {
   if (!s.chart || s.chart->out.team == 0) {
     auto &d = diag.error(e.range, ErrorKind::Team, fmt::format("'{}' can only be used in a team machine", what));
     if (s.chart && s.chart->is_fsm())
-      d.note(s.chart->ast.name.range, fmt::format("make fsm '{}' one by declaring its team size in it, e.g. 'team 2;'",
-                                                  s.chart->out.name));
+      d.note(s.chart->ast.name.range,
+             fmt::format("make fsm '{}' one by declaring its team size in it, e.g. 'team 2;'", s.chart->out.name));
     return false;
   }
   if (s.constant) {
@@ -184,7 +187,8 @@ std::optional<model::Expr> lower_active(const ast::Expr &e, ExprScope &s, bool s
   if (arg.kind == ast::Expr::Kind::Name) names.push_back(arg.name);
   else if (arg.kind == ast::Expr::Kind::Path) names = arg.path;
   else {
-    s.cx.diag.error(arg.range, ErrorKind::Active, "'active' takes one argument: a place or state, or a path 'P.Q' into its sub-chart");
+    s.cx.diag.error(arg.range, ErrorKind::Active,
+                    "'active' takes one argument: a place or state, or a path 'P.Q' into its sub-chart");
     return std::nullopt;
   }
   model::Expr x = make(K::Active, Type::Bool, e.range);
@@ -198,8 +202,9 @@ std::optional<model::Expr> lower_active(const ast::Expr &e, ExprScope &s, bool s
     int sub = s.cx.runs[static_cast<std::size_t>(chart)][static_cast<std::size_t>(place)];
     if (sub < 0) {
       if (via.runs) return std::nullopt;  // its `runs` has an error of its own
-      s.cx.diag.error(names[k].range, ErrorKind::UnknownName,
-                      fmt::format("'{}' runs no sub-chart, so '{}' names nothing in it", via.name.text, names[k].text))
+      s.cx.diag
+          .error(names[k].range, ErrorKind::UnknownName,
+                 fmt::format("'{}' runs no sub-chart, so '{}' names nothing in it", via.name.text, names[k].text))
           .note(via.name.range, fmt::format("'{}' declared here", via.name.text));
       return std::nullopt;
     }
@@ -245,11 +250,12 @@ std::optional<model::Expr> lower_outcome(const ast::Expr &e, ExprScope &s, bool 
   int sub = s.cx.runs[static_cast<std::size_t>(s.chart->index)][static_cast<std::size_t>(place)];
   if (p.runs && sub < 0) return std::nullopt;  // its `runs` has an error of its own
   if (sub < 0 || s.cx.model.charts[static_cast<std::size_t>(sub)].kind != model::Chart::Kind::Fsm) {
-    auto &d = s.cx.diag.error(e.range, ErrorKind::Subchart, sub < 0 ? fmt::format("'{}({})': {} '{}' runs no sub-chart", f, arg.name.text,
-                                                                s.chart->place_word(), arg.name.text)
-                                                  : fmt::format("'{}({})': {} '{}' runs sfc '{}', which never {}", f,
-                                                                arg.name.text, s.chart->place_word(), arg.name.text,
-                                                                p.runs->text, f == "succeeded" ? "succeeds" : "fails"));
+    auto &d = s.cx.diag.error(
+        e.range, ErrorKind::Subchart,
+        sub < 0
+            ? fmt::format("'{}({})': {} '{}' runs no sub-chart", f, arg.name.text, s.chart->place_word(), arg.name.text)
+            : fmt::format("'{}({})': {} '{}' runs sfc '{}', which never {}", f, arg.name.text, s.chart->place_word(),
+                          arg.name.text, p.runs->text, f == "succeeded" ? "succeeds" : "fails"));
     d.note(sub < 0 ? p.name.range : p.runs->range,
            sub < 0 ? fmt::format("only a place or state that runs an fsm succeeds or fails ('{} {} runs FSM')",
                                  s.chart->place_word(), arg.name.text)
@@ -285,7 +291,8 @@ std::optional<model::Expr> lower_team(const ast::Expr &e, ExprScope &s, bool sta
 std::optional<model::Expr> lower_agent(const ast::Expr &e, ExprScope &s, bool statement) {
   if (!team_context(e, s, "agent()")) return std::nullopt;
   if (!e.args.empty()) {
-    s.cx.diag.error(e.range, ErrorKind::ArgumentCount, fmt::format("'agent' takes no arguments (have {})", e.args.size()));
+    s.cx.diag.error(e.range, ErrorKind::ArgumentCount,
+                    fmt::format("'agent' takes no arguments (have {})", e.args.size()));
     return std::nullopt;
   }
   if (statement) {
@@ -296,8 +303,8 @@ std::optional<model::Expr> lower_agent(const ast::Expr &e, ExprScope &s, bool st
 }
 
 /// Checks the lowered arguments of a call of `f` against its prototype.
-bool check_arguments(const ast::Expr &call, const model::Function &f, const std::vector<std::optional<model::Expr>> &args,
-                     Diagnostics &diag) {
+bool check_arguments(const ast::Expr &call, const model::Function &f,
+                     const std::vector<std::optional<model::Expr>> &args, Diagnostics &diag) {
   if (args.size() != f.params.size()) {
     diag.error(call.range, ErrorKind::ArgumentCount,
                fmt::format("too {} arguments to function '{}' (expected {}, have {})",
@@ -334,8 +341,9 @@ std::optional<model::Expr> lower_unary(const ast::Expr &e, ExprScope &s) {
   if (!operand) return std::nullopt;
   auto type = unary_type(e.unary_op, operand->type);
   if (!type) {
-    auto &d = s.cx.diag.error(e.range, ErrorKind::TypeMismatch, fmt::format("invalid operand to unary '{}' (have {})",
-                                                                     spelling(e.unary_op), quoted(operand->type)));
+    auto &d = s.cx.diag.error(
+        e.range, ErrorKind::TypeMismatch,
+        fmt::format("invalid operand to unary '{}' (have {})", spelling(e.unary_op), quoted(operand->type)));
     duration_note(d, operand->type, operand->type);
     return std::nullopt;
   }
@@ -396,15 +404,17 @@ std::optional<model::Stmt> lower_assign(const ast::Stmt &st, ExprScope &s) {
     return std::nullopt;
   }
   if (sym->kind != Sym::Var) {
-    diag.error(target.range, ErrorKind::NotAssignable, fmt::format("cannot assign to {} '{}'", describe(sym->kind), target.text))
+    diag.error(target.range, ErrorKind::NotAssignable,
+               fmt::format("cannot assign to {} '{}'", describe(sym->kind), target.text))
         .note(sym->range, fmt::format("'{}' declared here; only a 'var' can be assigned", target.text));
     return std::nullopt;
   }
   if (sym->index < 0) return std::nullopt;
   Type type = s.chart->out.vars[sym->index].type;
   if (st.assign_op != AssignOp::Set && !model::is_numeric(type)) {
-    diag.error(target.range, ErrorKind::TypeMismatch, fmt::format("operator '{}' needs a numeric variable; '{}' has type {}",
-                                                          spelling(st.assign_op), target.text, quoted(type)));
+    diag.error(target.range, ErrorKind::TypeMismatch,
+               fmt::format("operator '{}' needs a numeric variable; '{}' has type {}", spelling(st.assign_op),
+                           target.text, quoted(type)));
     return std::nullopt;
   }
   if (!value) return std::nullopt;
@@ -425,7 +435,7 @@ std::optional<model::Stmt> lower_assign(const ast::Stmt &st, ExprScope &s) {
   return out;
 }
 
-} // namespace
+}  // namespace
 
 unsigned long to_ticks(double ms, double period_ms) {
   if (period_ms <= 0 || ms <= 0) return 0;
@@ -453,8 +463,9 @@ int resolve_place(ChartScope &chart, Context &cx, const ast::Name &name) {
   for (std::size_t i = 0; sym && i < chart.ast.places.size(); ++i)
     if (chart.ast.places[i].name.text == name.text) return static_cast<int>(i);
   if (sym) {
-    cx.diag.error(name.range, ErrorKind::TypeMismatch,
-                  fmt::format("'{}' is {}, not a {}", name.text, with_article(sym->kind), chart.place_word()))
+    cx.diag
+        .error(name.range, ErrorKind::TypeMismatch,
+               fmt::format("'{}' is {}, not a {}", name.text, with_article(sym->kind), chart.place_word()))
         .note(sym->range, fmt::format("'{}' declared here", name.text));
     return -1;
   }
@@ -518,8 +529,9 @@ std::optional<model::Expr> lower_call(const ast::Expr &e, ExprScope &s, bool sta
     return std::nullopt;
   }
   if (sym->kind != Sym::Function) {
-    s.cx.diag.error(name.range, ErrorKind::TypeMismatch, fmt::format("called object '{}' is {}, not a function", name.text,
-                                                             with_article(sym->kind)))
+    s.cx.diag
+        .error(name.range, ErrorKind::TypeMismatch,
+               fmt::format("called object '{}' is {}, not a function", name.text, with_article(sym->kind)))
         .note(sym->range, fmt::format("'{}' declared here", name.text));
     return std::nullopt;
   }
@@ -529,7 +541,8 @@ std::optional<model::Expr> lower_call(const ast::Expr &e, ExprScope &s, bool sta
   for (std::size_t i = 0; i < args.size(); ++i)
     if (!constant_fits(*args[i], f.params[i].type, s)) return std::nullopt;
   if (!statement && f.result == Type::Void) {
-    s.cx.diag.error(e.range, ErrorKind::TypeMismatch, fmt::format("'{}' returns void; it cannot be used as a value", f.name))
+    s.cx.diag
+        .error(e.range, ErrorKind::TypeMismatch, fmt::format("'{}' returns void; it cannot be used as a value", f.name))
         .note(f.range, fmt::format("'{}' declared here", f.name));
     return std::nullopt;
   }
@@ -543,7 +556,8 @@ std::optional<model::Expr> lower_call(const ast::Expr &e, ExprScope &s, bool sta
 std::optional<model::Expr> lower_condition(const ast::Expr *e, ExprScope &s, const char *what) {
   auto x = lower_expr(e, s);
   if (!x || x->type == Type::Bool) return x;
-  auto &d = s.cx.diag.error(x->range, ErrorKind::TypeMismatch, fmt::format("{} must be bool, not {}", what, quoted(x->type)));
+  auto &d =
+      s.cx.diag.error(x->range, ErrorKind::TypeMismatch, fmt::format("{} must be bool, not {}", what, quoted(x->type)));
   duration_note(d, x->type, x->type);
   return std::nullopt;
 }
@@ -551,8 +565,9 @@ std::optional<model::Expr> lower_condition(const ast::Expr *e, ExprScope &s, con
 std::optional<model::Expr> lower_initializer(const ast::Expr *e, ExprScope &s, Type type, const std::string &name) {
   auto x = lower_expr(e, s);
   if (!x || assignable(type, x->type)) return x;
-  auto &d = s.cx.diag.error(x->range, ErrorKind::TypeMismatch, fmt::format("cannot initialize '{}' of type {} with a value of type {}",
-                                                                    name, quoted(type), quoted(x->type)));
+  auto &d = s.cx.diag.error(
+      x->range, ErrorKind::TypeMismatch,
+      fmt::format("cannot initialize '{}' of type {} with a value of type {}", name, quoted(type), quoted(x->type)));
   duration_note(d, x->type, x->type);
   return std::nullopt;
 }
@@ -577,7 +592,7 @@ std::optional<model::Stmt> lower_if(const ast::Stmt &st, ExprScope &s) {
   return m;
 }
 
-} // namespace
+}  // namespace
 
 std::vector<model::Stmt> lower_block(const ast::Block &b, ExprScope &s) {
   std::vector<model::Stmt> out;
@@ -614,4 +629,4 @@ std::vector<model::Stmt> lower_block(const ast::Block &b, ExprScope &s) {
   return out;
 }
 
-} // namespace gfec::validation
+}  // namespace gfec::validation

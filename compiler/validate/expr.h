@@ -24,7 +24,7 @@ struct ChartScope {
   int index;
   /// Places (or states), named transitions, vars and the chart's constants.
   Namespace names;
-  bool period_reported = false;  ///< "needs a period" is said once per chart
+  bool period_reported = false;   ///< "needs a period" is said once per chart
   std::set<std::string> unknown;  ///< unknown names already reported, each once per chart
   std::set<int> functions;        ///< interface functions called
   std::set<int> consts;           ///< constants read
@@ -71,4 +71,4 @@ constexpr unsigned long kBeyondTimers = 0x100000000ul;
 /// `ms` in whole ticks of `period_ms`, rounded up (§5.3), at most kBeyondTimers.
 unsigned long to_ticks(double ms, double period_ms);
 
-} // namespace gfec::validation
+}  // namespace gfec::validation

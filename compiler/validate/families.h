@@ -49,4 +49,4 @@ void lower_transition_condition(Context &cx, ChartScope &chart, std::size_t inde
 /// Whether a condition is constant, and its value (no condition is `when true`).
 std::optional<bool> constant_condition(const std::optional<model::Expr> &condition, const model::Model &model);
 
-} // namespace gfec::validation
+}  // namespace gfec::validation

@@ -54,8 +54,12 @@ std::optional<Value> checked(const constant::Outcome &r, SourceRange at, Diagnos
   if (r) return r.value;
   if (!diag) return std::nullopt;
   switch (r.fault) {
-  case constant::Fault::IntOverflow: diag->error(at, ErrorKind::NotConstant, "integer overflow in constant expression"); break;
-  case constant::Fault::DivisionByZero: diag->error(at, ErrorKind::NotConstant, "division by zero in constant expression"); break;
+  case constant::Fault::IntOverflow:
+    diag->error(at, ErrorKind::NotConstant, "integer overflow in constant expression");
+    break;
+  case constant::Fault::DivisionByZero:
+    diag->error(at, ErrorKind::NotConstant, "division by zero in constant expression");
+    break;
   case constant::Fault::NotFinite:
     diag->error(at, ErrorKind::NotConstant, "floating-point overflow in constant expression");
     break;
@@ -74,7 +78,7 @@ std::optional<Value> binary(const model::Expr &e, const model::Model &m, Diagnos
   return checked(constant::binary(e.binary_op, *a, *b), e.range, diag);
 }
 
-} // namespace
+}  // namespace
 
 std::optional<Value> evaluate(const model::Expr &e, const model::Model &m, Diagnostics *diag) {
   if (e.folded) return stored(e);
@@ -115,7 +119,8 @@ std::optional<model::Expr> number_literal(const ast::Expr &e, Diagnostics &diag)
   }
   auto v = constant::float_literal(e.text);
   if (!v) {
-    diag.error(e.range, ErrorKind::NotConstant, fmt::format("floating constant '{}' is too large for 'double'", e.text));
+    diag.error(e.range, ErrorKind::NotConstant,
+               fmt::format("floating constant '{}' is too large for 'double'", e.text));
     return std::nullopt;
   }
   x.kind = K::Float;
@@ -150,7 +155,9 @@ std::optional<model::Expr> to_literal(const Value &v, model::Type to, SourceRang
   auto c = constant::convert(v, to);
   if (!c) {
     if (c.fault == constant::Fault::DoesNotFit)
-      diag.error(range, ErrorKind::NotConstant, fmt::format(to == Type::Int ? "value {} does not fit in 'int'" : "value {} is too large for 'float'", v.f));
+      diag.error(
+          range, ErrorKind::NotConstant,
+          fmt::format(to == Type::Int ? "value {} does not fit in 'int'" : "value {} is too large for 'float'", v.f));
     return std::nullopt;
   }
   const Value &w = c.value;
@@ -190,7 +197,8 @@ const model::Expr *fold_const(Context &cx, int index) {
   case State::Done: return &c.value;
   case State::Failed: return nullptr;
   case State::Busy:
-    cx.diag.error(src.decl->name.range, ErrorKind::NotConstant, fmt::format("constant '{}' is defined in terms of itself", c.name));
+    cx.diag.error(src.decl->name.range, ErrorKind::NotConstant,
+                  fmt::format("constant '{}' is defined in terms of itself", c.name));
     src.state = State::Failed;
     return nullptr;
   case State::Pending: break;
@@ -213,7 +221,8 @@ const model::Expr *fold_const(Context &cx, int index) {
   if (auto e = lower_initializer(src.decl->init.get(), scope, c.type, c.name)) {
     if (auto v = evaluate(*e, cx.model, &cx.diag)) literal = to_literal(*v, c.type, e->range, cx.diag, &*e);
     if (!literal && cx.diag.error_count() == errors)
-      cx.diag.error(e->range, ErrorKind::NotConstant, fmt::format("initializer of '{}' is not a constant expression", c.name));
+      cx.diag.error(e->range, ErrorKind::NotConstant,
+                    fmt::format("initializer of '{}' is not a constant expression", c.name));
   }
   --cx.const_depth;
   if (src.state == State::Failed) return nullptr;  // a cycle through it was reported meanwhile
@@ -223,4 +232,4 @@ const model::Expr *fold_const(Context &cx, int index) {
   return &c.value;
 }
 
-} // namespace gfec::validation
+}  // namespace gfec::validation

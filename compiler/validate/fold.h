@@ -45,4 +45,4 @@ constexpr int kMaxConstDepth = 1000;
 /// literal, or null if its declaration has an error (reported once, where it is).
 const model::Expr *fold_const(Context &cx, int index);
 
-} // namespace gfec::validation
+}  // namespace gfec::validation

@@ -32,12 +32,15 @@ std::optional<model::Expr> lower_name(const ast::Expr &e, Context &cx, PlanScope
   if (name.text.empty()) return std::nullopt;
   if (const Symbol *sym = s.names.find(name.text)) {
     if (sym->kind != Sym::ConfigEntry) {
-      cx.diag.error(name.range, ErrorKind::TypeMismatch, fmt::format("'{}' is {}, not a config entry", name.text, with_article(sym->kind)))
+      cx.diag
+          .error(name.range, ErrorKind::TypeMismatch,
+                 fmt::format("'{}' is {}, not a config entry", name.text, with_article(sym->kind)))
           .note(sym->range, fmt::format("'{}' declared here", name.text));
       return std::nullopt;
     }
     if (constant) {
-      cx.diag.error(name.range, ErrorKind::NotConstant, fmt::format("a config initializer cannot read config entry '{}'", name.text));
+      cx.diag.error(name.range, ErrorKind::NotConstant,
+                    fmt::format("a config initializer cannot read config entry '{}'", name.text));
       return std::nullopt;
     }
     if (sym->index < 0) return std::nullopt;  // its declaration has an error
@@ -60,8 +63,8 @@ std::optional<Type> formula_type(BinaryOp op, Type a, Type b) {
   bool numbers = model::is_numeric(a) && model::is_numeric(b);
   if (numbers) return promote(a, b);
   // `+` joins strings, converting a number on either side to text.
-  bool text = (a == Type::String && (b == Type::String || model::is_numeric(b))) ||
-              (b == Type::String && model::is_numeric(a));
+  bool text =
+      (a == Type::String && (b == Type::String || model::is_numeric(b))) || (b == Type::String && model::is_numeric(a));
   if (op == BinaryOp::Add && text) return Type::String;
   return std::nullopt;
 }
@@ -76,8 +79,9 @@ std::optional<model::Expr> lower_binary(const ast::Expr &e, Context &cx, PlanSco
   if (!a || !b) return std::nullopt;
   auto type = formula_type(op, a->type, b->type);
   if (!type) {
-    cx.diag.error(e.range, ErrorKind::TypeMismatch, fmt::format("invalid operands to binary '{}' (have {} and {})", spelling(op),
-                                                        quoted(a->type), quoted(b->type)));
+    cx.diag.error(e.range, ErrorKind::TypeMismatch,
+                  fmt::format("invalid operands to binary '{}' (have {} and {})", spelling(op), quoted(a->type),
+                              quoted(b->type)));
     return std::nullopt;
   }
   model::Expr x = make(K::Binary, *type, e.range);
@@ -93,7 +97,8 @@ std::optional<model::Expr> lower_unary(const ast::Expr &e, Context &cx, PlanScop
   auto operand = lower_formula(e.args[0].get(), cx, s, constant);
   if (!operand) return std::nullopt;
   if (!model::is_numeric(operand->type)) {
-    cx.diag.error(e.range, ErrorKind::TypeMismatch, fmt::format("invalid operand to unary '-' (have {})", quoted(operand->type)));
+    cx.diag.error(e.range, ErrorKind::TypeMismatch,
+                  fmt::format("invalid operand to unary '-' (have {})", quoted(operand->type)));
     return std::nullopt;
   }
   model::Expr x = make(K::Unary, operand->type, e.range);
@@ -102,7 +107,7 @@ std::optional<model::Expr> lower_unary(const ast::Expr &e, Context &cx, PlanScop
   return x;
 }
 
-} // namespace
+}  // namespace
 
 bool convertible(Type to, Type from) {
   bool number_or_text_to = model::is_numeric(to) || to == Type::String;
@@ -144,4 +149,4 @@ std::optional<model::Expr> lower_formula(const ast::Expr *e, Context &cx, PlanSc
   return std::nullopt;
 }
 
-} // namespace gfec::validation
+}  // namespace gfec::validation

@@ -31,4 +31,4 @@ std::optional<model::Expr> lower_formula(const ast::Expr *e, Context &cx, PlanSc
 /// bool and object only to themselves.
 bool convertible(model::Type to, model::Type from);
 
-} // namespace gfec::validation
+}  // namespace gfec::validation

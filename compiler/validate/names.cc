@@ -90,4 +90,4 @@ std::vector<const Symbol *> Namespace::of(std::initializer_list<Sym> kinds) cons
   return out;
 }
 
-} // namespace gfec::validation
+}  // namespace gfec::validation

@@ -14,8 +14,24 @@ namespace gfec::validation {
 
 /// What a name denotes; one enum for every namespace so messages can describe any clash.
 enum class Sym {
-  Interface, Function, Param, Const, Chart, Place, State, Transition, Var,
-  Toolbox, Template, TemplateParam, ResultState, Event, Plan, ConfigEntry, Actor, Supervisor,
+  Interface,
+  Function,
+  Param,
+  Const,
+  Chart,
+  Place,
+  State,
+  Transition,
+  Var,
+  Toolbox,
+  Template,
+  TemplateParam,
+  ResultState,
+  Event,
+  Plan,
+  ConfigEntry,
+  Actor,
+  Supervisor,
 };
 
 /// "function", "place", "config entry", ... as a message says it.
@@ -53,4 +69,4 @@ bool check_reserved(const ast::Name &name, Sym kind, Diagnostics &diag);
 /// Reports a clash with `previous` as `duplicate-name`: the same message `declare` gives.
 void report_clash(const ast::Name &name, Sym kind, const Symbol &previous, Diagnostics &diag);
 
-} // namespace gfec::validation
+}  // namespace gfec::validation

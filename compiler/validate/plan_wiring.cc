@@ -20,8 +20,9 @@ std::optional<model::Target> lower_target(Context &cx, PlanScope &s, const ast::
   case ast::Rule::Target::Terminate: t.kind = model::Target::Kind::Terminate; return t;
   case ast::Rule::Target::Ignore:
     if (!c.events) {
-      cx.diag.error(r.target_name.range, ErrorKind::IgnoreState,
-                    fmt::format("result state '{}' cannot be ignored: only supervisor events can", r.outcome.text))
+      cx.diag
+          .error(r.target_name.range, ErrorKind::IgnoreState,
+                 fmt::format("result state '{}' cannot be ignored: only supervisor events can", r.outcome.text))
           .note("a result state leads to an actor or to 'terminate'");
       return std::nullopt;
     }
@@ -52,7 +53,8 @@ int find_outcome(Context &cx, PlanScope &s, const ast::Name &name, const Callee 
   if (best) guess = best->index;
   const char *what = c.events ? "event" : "result state";
   if (!s.unknown.insert(fmt::format("{} {} {}", what, c.name, name.text)).second) return -1;
-  auto &d = cx.diag.error(name.range, ErrorKind::UnknownName, fmt::format("unknown {} '{}' of '{}'", what, name.text, c.name));
+  auto &d = cx.diag.error(name.range, ErrorKind::UnknownName,
+                          fmt::format("unknown {} '{}' of '{}'", what, name.text, c.name));
   if (best) d.fix(name.range, best->name);
   if (best && c.outcome_decls.empty()) d.note(fmt::format("did you mean '{}'?", best->name));
   else if (best) d.note(best->range, fmt::format("did you mean '{}'?", best->name));
@@ -73,16 +75,19 @@ std::optional<model::Expr> lower_out_arg(Context &cx, PlanScope &s, const ast::E
   if (arg->kind == ast::Expr::Kind::Name && !sym && !cx.c_names.find(arg->name.text))
     return lower_formula(arg, cx, s, false);  // reports the unknown name
   if (!sym || sym->kind != Sym::ConfigEntry) {
-    cx.diag.error(arg->range, ErrorKind::OutArgument, fmt::format("out parameter '{}' of '{}' must be bound to a config entry",
-                                                          p.name, c.name))
+    cx.diag
+        .error(arg->range, ErrorKind::OutArgument,
+               fmt::format("out parameter '{}' of '{}' must be bound to a config entry", p.name, c.name))
         .note(c.range, fmt::format("'{}' declared here", c.name));
     return std::nullopt;
   }
   auto x = lower_formula(arg, cx, s, false);
   if (x && !convertible(x->type, p.type)) {
-    cx.diag.error(arg->range, ErrorKind::TypeMismatch, fmt::format("out parameter '{}' of '{}' has type {}, which config entry "
-                                                           "'{}' of type {} cannot hold", p.name, c.name, quoted(p.type),
-                                                           arg->name.text, quoted(x->type)))
+    cx.diag
+        .error(arg->range, ErrorKind::TypeMismatch,
+               fmt::format("out parameter '{}' of '{}' has type {}, which config entry "
+                           "'{}' of type {} cannot hold",
+                           p.name, c.name, quoted(p.type), arg->name.text, quoted(x->type)))
         .note(c.range, fmt::format("'{}' declared here", c.name));
     return std::nullopt;
   }
@@ -93,15 +98,17 @@ std::optional<model::Expr> lower_in_arg(Context &cx, PlanScope &s, const ast::Ex
                                         const Callee &c, std::size_t position) {
   auto x = lower_formula(arg, cx, s, false);
   if (x && !convertible(p.type, x->type)) {
-    cx.diag.error(x->range, ErrorKind::TypeMismatch, fmt::format("incompatible type for argument {} ('{}') of '{}': expected {}, have {}",
-                                                         position, p.name, c.name, quoted(p.type), quoted(x->type)))
+    cx.diag
+        .error(x->range, ErrorKind::TypeMismatch,
+               fmt::format("incompatible type for argument {} ('{}') of '{}': expected {}, have {}", position, p.name,
+                           c.name, quoted(p.type), quoted(x->type)))
         .note(c.range, fmt::format("'{}' declared here", c.name));
     return std::nullopt;
   }
   return x;
 }
 
-} // namespace
+}  // namespace
 
 Callee template_callee(Context &cx, int index) {
   const model::Template &t = cx.model.templates[index];
@@ -123,7 +130,9 @@ int resolve_actor(Context &cx, PlanScope &s, const ast::Name &name) {
   for (std::size_t i = 0; sym && i < s.ast.actors.size(); ++i)
     if (s.ast.actors[i].name.text == name.text) return static_cast<int>(i);
   if (sym) {
-    cx.diag.error(name.range, ErrorKind::TypeMismatch, fmt::format("'{}' is {}, not an actor", name.text, with_article(sym->kind)))
+    cx.diag
+        .error(name.range, ErrorKind::TypeMismatch,
+               fmt::format("'{}' is {}, not an actor", name.text, with_article(sym->kind)))
         .note(sym->range, fmt::format("'{}' declared here", name.text));
     return -1;
   }
@@ -143,7 +152,9 @@ std::vector<model::Rule> lower_rules(Context &cx, PlanScope &s, const std::vecto
     if (k < 0 && guess >= 0 && !connected[guess]) connected[guess] = &r;
     if (k < 0) continue;
     if (connected[k]) {
-      cx.diag.error(r.outcome.range, ErrorKind::DuplicateRule, fmt::format("{} '{}' is connected twice", what, r.outcome.text))
+      cx.diag
+          .error(r.outcome.range, ErrorKind::DuplicateRule,
+                 fmt::format("{} '{}' is connected twice", what, r.outcome.text))
           .note(connected[k]->range, "first connected here");
       continue;
     }
@@ -152,8 +163,8 @@ std::vector<model::Rule> lower_rules(Context &cx, PlanScope &s, const std::vecto
   }
   for (std::size_t k = 0; k < c.outcomes.size(); ++k) {
     if (connected[k]) continue;
-    auto &d = cx.diag.error(owner.range, ErrorKind::NotConnected, fmt::format("{} '{}' of '{}' is not connected", what,
-                                                                    c.outcomes[k], c.name));
+    auto &d = cx.diag.error(owner.range, ErrorKind::NotConnected,
+                            fmt::format("{} '{}' of '{}' is not connected", what, c.outcomes[k], c.name));
     if (c.subplan >= 0) d.note(fmt::format("a sub-plan's result states are {}", outcome_list(c)));
     else d.note(c.range, fmt::format("'{}' has the {}s {}", c.name, what, outcome_list(c)));
   }
@@ -165,14 +176,16 @@ std::vector<model::Arg> lower_args(Context &cx, PlanScope &s, const std::vector<
                                    SourceRange call) {
   std::vector<model::Arg> out;
   if (c.subplan >= 0) {
-    if (!args.empty()) cx.diag.error(call, ErrorKind::ArgumentCount, fmt::format("sub-plan '{}' takes no arguments", c.name));
+    if (!args.empty())
+      cx.diag.error(call, ErrorKind::ArgumentCount, fmt::format("sub-plan '{}' takes no arguments", c.name));
     return out;
   }
   const auto &params = cx.model.templates[c.templ].params;
   if (args.size() != params.size()) {
-    cx.diag.error(call, ErrorKind::ArgumentCount, fmt::format("too {} arguments to '{}' (expected {}, have {})",
-                                                      args.size() > params.size() ? "many" : "few", c.name,
-                                                      params.size(), args.size()))
+    cx.diag
+        .error(call, ErrorKind::ArgumentCount,
+               fmt::format("too {} arguments to '{}' (expected {}, have {})",
+                           args.size() > params.size() ? "many" : "few", c.name, params.size(), args.size()))
         .note(c.range, fmt::format("'{}' declared here", c.name));
     return out;
   }
@@ -186,4 +199,4 @@ std::vector<model::Arg> lower_args(Context &cx, PlanScope &s, const std::vector<
   return out;
 }
 
-} // namespace gfec::validation
+}  // namespace gfec::validation

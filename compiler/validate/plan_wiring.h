@@ -37,4 +37,4 @@ std::vector<model::Rule> lower_rules(Context &cx, PlanScope &s, const std::vecto
 std::vector<model::Arg> lower_args(Context &cx, PlanScope &s, const std::vector<ast::ExprPtr> &args, const Callee &c,
                                    SourceRange call);
 
-} // namespace gfec::validation
+}  // namespace gfec::validation

@@ -34,9 +34,9 @@ std::vector<Edge> resolve_runs(Context &cx) {
       if (!place.runs || place.runs->text.empty()) continue;
       const ast::Name &name = *place.runs;
       if (place.terminal != ast::StateKind::Normal) {
-        cx.diag.error(name.range, ErrorKind::TerminalRuns,
-                      fmt::format("terminal state '{}' cannot run a sub-chart: the machine has stopped there",
-                                  place.name.text));
+        cx.diag.error(
+            name.range, ErrorKind::TerminalRuns,
+            fmt::format("terminal state '{}' cannot run a sub-chart: the machine has stopped there", place.name.text));
         continue;
       }
       const Symbol *sym = cx.c_names.find(name.text);
@@ -47,18 +47,21 @@ std::vector<Edge> resolve_runs(Context &cx) {
         continue;
       }
       if (sym->kind != Sym::Chart) {
-        cx.diag.error(name.range, ErrorKind::TypeMismatch,
-                      fmt::format("'{}' is {}; a place or state runs an sfc or an fsm", name.text,
-                                  with_article(sym->kind)))
+        cx.diag
+            .error(
+                name.range, ErrorKind::TypeMismatch,
+                fmt::format("'{}' is {}; a place or state runs an sfc or an fsm", name.text, with_article(sym->kind)))
             .note(sym->range, fmt::format("'{}' declared here", name.text));
         continue;
       }
       const ast::Chart &run = *cx.charts[static_cast<std::size_t>(sym->index)];
       if (!run.teams.empty()) {
         // A team machine talks to other agents through its root's API (docs/language.md "Teams").
-        cx.diag.error(name.range, ErrorKind::TeamSubchart,
-                      fmt::format("fsm '{}' is a team machine; it can only be compiled as the root, not run as a sub-chart",
-                                  name.text))
+        cx.diag
+            .error(
+                name.range, ErrorKind::TeamSubchart,
+                fmt::format("fsm '{}' is a team machine; it can only be compiled as the root, not run as a sub-chart",
+                            name.text))
             .note(run.teams.front().second, "it is made a team machine here");
         continue;
       }
@@ -100,7 +103,8 @@ bool report_cycles(Context &cx, const std::vector<Edge> &edges) {
                                     ? fmt::format("chart '{}' runs itself", head.name)
                                     : fmt::format("chart '{}' runs itself through other charts: {}", head.name, steps));
         for (const Edge *s : cycle) {
-          const ast::Place &place = cx.charts[static_cast<std::size_t>(s->parent)]->places[static_cast<std::size_t>(s->place)];
+          const ast::Place &place =
+              cx.charts[static_cast<std::size_t>(s->parent)]->places[static_cast<std::size_t>(s->place)];
           d.note(runs_name(cx, *s).range,
                  fmt::format("{} '{}' of '{}' runs '{}'", place.is_state ? "state" : "place", place.name.text,
                              cx.model.charts[static_cast<std::size_t>(s->parent)].name,
@@ -147,8 +151,10 @@ void inherit_periods(Context &cx, const std::vector<Edge> &edges) {
       const ast::Name &at = runs_name(cx, *e);
       if (own > 0) {
         if (parent == own) continue;
-        cx.diag.error(at.range, ErrorKind::Period, fmt::format("sub-chart '{}' declares {} but '{}', which runs it, has {}",
-                                                      chart.name.text, period_text(own), parent_name, period_text(parent)))
+        cx.diag
+            .error(at.range, ErrorKind::Period,
+                   fmt::format("sub-chart '{}' declares {} but '{}', which runs it, has {}", chart.name.text,
+                               period_text(own), parent_name, period_text(parent)))
             .note(chart.periods[0].range, "a sub-chart runs at the period of the chart that runs it; "
                                           "remove this period or make the two equal");
         continue;
@@ -160,11 +166,12 @@ void inherit_periods(Context &cx, const std::vector<Edge> &edges) {
       }
       if (parent == effective[i]) continue;
       const Edge &first = *inherited_from[i];
-      cx.diag.error(at.range, ErrorKind::Period,
-                    fmt::format("sub-chart '{}' would run at {} here but at {} in '{}'; it declares no period of its own",
-                                chart.name.text, period_text(parent), period_text(effective[i]),
-                                cx.model.charts[static_cast<std::size_t>(first.parent)].name))
-        .note(runs_name(cx, first).range, fmt::format("'{}' is also run here", chart.name.text));
+      cx.diag
+          .error(at.range, ErrorKind::Period,
+                 fmt::format("sub-chart '{}' would run at {} here but at {} in '{}'; it declares no period of its own",
+                             chart.name.text, period_text(parent), period_text(effective[i]),
+                             cx.model.charts[static_cast<std::size_t>(first.parent)].name))
+          .note(runs_name(cx, first).range, fmt::format("'{}' is also run here", chart.name.text));
     }
     state[i] = 2;
     return effective[i];
@@ -175,7 +182,7 @@ void inherit_periods(Context &cx, const std::vector<Edge> &edges) {
   }
 }
 
-} // namespace
+}  // namespace
 
 void resolve_subcharts(Context &cx) {
   cx.runs.assign(cx.charts.size(), {});
@@ -186,4 +193,4 @@ void resolve_subcharts(Context &cx) {
   inherit_periods(cx, edges);
 }
 
-} // namespace gfec::validation
+}  // namespace gfec::validation

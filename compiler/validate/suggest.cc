@@ -52,4 +52,4 @@ void suggest(Diagnostic &d, std::string_view name, const std::vector<const Symbo
     d.fix(d.range, s->name).note(s->range, fmt::format("did you mean '{}'?", s->name));
 }
 
-} // namespace gfec::validation
+}  // namespace gfec::validation

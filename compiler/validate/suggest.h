@@ -23,4 +23,4 @@ const Symbol *closest(std::string_view name, const std::vector<const Symbol *> &
 /// Adds the note "did you mean 'X'?" (at X's declaration) when a close candidate exists.
 void suggest(Diagnostic &d, std::string_view name, const std::vector<const Symbol *> &candidates);
 
-} // namespace gfec::validation
+}  // namespace gfec::validation

@@ -27,7 +27,7 @@ std::vector<TopDecl> top_level_of(Context &cx, const ast::File &file) {
   return decls;
 }
 
-} // namespace
+}  // namespace
 
 void collect_symbols(Context &cx) {
   // Model tables in program order (main file first): the order back ends emit.
@@ -43,4 +43,4 @@ void collect_symbols(Context &cx) {
   for (const auto &g : cx.global_names) g.ns->declare(*g.name, g.kind, g.index, cx.diag);
 }
 
-} // namespace gfec::validation
+}  // namespace gfec::validation

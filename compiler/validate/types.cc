@@ -22,7 +22,7 @@ const TypeEntry kTypes[] = {
     {"object", model::Type::Object, kObject},
 };
 
-} // namespace
+}  // namespace
 
 std::string quoted(model::Type t) { return fmt::format("'{}'", model::type_name(t)); }
 
@@ -41,7 +41,8 @@ std::optional<model::Type> lower_type(const ast::TypeName &t, unsigned allowed, 
   std::vector<const Symbol *> candidates;
   for (const Symbol &s : names) candidates.push_back(&s);
   auto &d = diag.error(t.range, ErrorKind::UnknownType, fmt::format("unknown type name '{}'", t.text));
-  if (const Symbol *s = closest(t.text, candidates)) d.fix(t.range, s->name).note(fmt::format("did you mean '{}'?", s->name));
+  if (const Symbol *s = closest(t.text, candidates))
+    d.fix(t.range, s->name).note(fmt::format("did you mean '{}'?", s->name));
   return std::nullopt;
 }
 
@@ -95,4 +96,4 @@ bool assignable(model::Type to, model::Type from) {
   return to == from;
 }
 
-} // namespace gfec::validation
+}  // namespace gfec::validation

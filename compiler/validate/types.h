@@ -11,8 +11,13 @@ namespace gfec::validation {
 
 /// Sets of types, for "which types may this declaration use".
 enum TypeSet : unsigned {
-  kBool = 1u << 0, kInt = 1u << 1, kFloat = 1u << 2, kDouble = 1u << 3,
-  kVoid = 1u << 4, kString = 1u << 5, kObject = 1u << 6,
+  kBool = 1u << 0,
+  kInt = 1u << 1,
+  kFloat = 1u << 2,
+  kDouble = 1u << 3,
+  kVoid = 1u << 4,
+  kString = 1u << 5,
+  kObject = 1u << 6,
   kScalar = kBool | kInt | kFloat | kDouble,
 };
 
@@ -33,4 +38,4 @@ std::optional<model::Type> binary_type(BinaryOp op, model::Type a, model::Type b
 /// C, bool only to bool, strings only to strings.
 bool assignable(model::Type to, model::Type from);
 
-} // namespace gfec::validation
+}  // namespace gfec::validation

@@ -23,7 +23,7 @@ void collect_verbatims(validation::Context &cx) {
   }
 }
 
-} // namespace
+}  // namespace
 
 model::Model validate(const ast::Program &program, const SourceManager &sources, Diagnostics &diag) {
   scenario::Suite tests;
@@ -48,4 +48,4 @@ model::Model validate(const ast::Program &program, const SourceManager &sources,
   return model;
 }
 
-} // namespace gfec
+}  // namespace gfec

@@ -16,8 +16,8 @@ namespace {
 
 /// Names every C engine defines as `<Chart>_<suffix>` (its API, counts, hooks and macros): a
 /// place or transition with one of these names would give its enum constant the same name.
-const char *const kEngineNames[] = {"init",    "run",       "activation", "state",       "status",          "PLACE_COUNT",
-                                    "HOOKS",   "CHECKS",    "activated",  "enabled",     "TRANSITION_COUNT"};
+const char *const kEngineNames[] = {"init",  "run",    "activation", "state",   "status",          "PLACE_COUNT",
+                                    "HOOKS", "CHECKS", "activated",  "enabled", "TRANSITION_COUNT"};
 /// And those a team machine's engine adds.
 const char *const kTeamEngineNames[] = {"set_agent", "report", "TEAM_SIZE"};
 
@@ -46,13 +46,16 @@ void set_team(Context &cx, ChartScope &s) {
   for (std::size_t i = 0; i < teams.size(); ++i) {
     const auto &[n, range] = teams[i];
     if (i > 0) {
-      cx.diag.error(range, ErrorKind::Team, fmt::format("second 'team' declaration in {} '{}'", s.kind_word(), s.out.name))
+      cx.diag
+          .error(range, ErrorKind::Team, fmt::format("second 'team' declaration in {} '{}'", s.kind_word(), s.out.name))
           .note(teams[0].second, "the first one is here");
     } else if (!s.is_fsm()) {
-      cx.diag.error(range, ErrorKind::Team, fmt::format("'team' in sfc '{}': only an fsm can be a team machine", s.out.name));
+      cx.diag.error(range, ErrorKind::Team,
+                    fmt::format("'team' in sfc '{}': only an fsm can be a team machine", s.out.name));
     } else if (n < 2 || n > kMaxTeam) {
       auto &d = cx.diag.error(range, ErrorKind::Team,
-                              n < 2 ? fmt::format("a team has at least 2 agents, not {}", n < 0 ? std::string("that many") : std::to_string(n))
+                              n < 2 ? fmt::format("a team has at least 2 agents, not {}",
+                                                  n < 0 ? std::string("that many") : std::to_string(n))
                                     : fmt::format("a team has at most {} agents", kMaxTeam));
       if (n >= 0 && n < 2) d.note("an fsm without 'team' is run by one agent");
     } else {
@@ -67,20 +70,25 @@ void check_generated_name(Context &cx, ChartScope &s, const ast::Name &name, con
   std::string generated = s.out.name + "_" + name.text;
   for (const char *reserved : kEngineNames) {
     if (name.text != reserved) continue;
-    cx.diag.error(name.range, ErrorKind::ReservedName,
-                  fmt::format("{} '{}' would generate '{}', which the engine already defines", what, name.text, generated));
+    cx.diag.error(
+        name.range, ErrorKind::ReservedName,
+        fmt::format("{} '{}' would generate '{}', which the engine already defines", what, name.text, generated));
     return;
   }
   // A team machine's engine has an API of its own (docs/c-engine.md "Team machines").
   for (const char *reserved : kTeamEngineNames) {
     if (s.ast.teams.empty() || name.text != reserved) continue;
-    cx.diag.error(name.range, ErrorKind::ReservedName, fmt::format("{} '{}' would generate '{}', which the engine of a team "
-                                                           "machine already defines", what, name.text, generated));
+    cx.diag.error(name.range, ErrorKind::ReservedName,
+                  fmt::format("{} '{}' would generate '{}', which the engine of a team "
+                              "machine already defines",
+                              what, name.text, generated));
     return;
   }
   if (const Symbol *clash = cx.c_names.find(generated)) {
-    cx.diag.error(name.range, ErrorKind::ReservedName, fmt::format("{} '{}' would generate '{}', the name of {}", what,
-                                                           name.text, generated, with_article(clash->kind)))
+    cx.diag
+        .error(name.range, ErrorKind::ReservedName,
+               fmt::format("{} '{}' would generate '{}', the name of {}", what, name.text, generated,
+                           with_article(clash->kind)))
         .note(clash->range, fmt::format("'{}' declared here", generated));
   }
 }
@@ -158,10 +166,13 @@ void name_transitions(Context &cx, ChartScope &s) {
     out.name_range = out.named ? t.name->range : t.range;
     if (!out.named) {
       if (const Symbol *clash = s.names.find(out.name)) {
-        cx.diag.error(t.range, ErrorKind::DuplicateName, fmt::format("this unnamed transition is named '{}' by its position, "
-                                                             "which is already the name of {}", out.name, with_article(clash->kind)))
-            .note(clash->range, fmt::format("'{}' declared here; name the transition ('name: A -> B') or rename it",
-                                            out.name));
+        cx.diag
+            .error(t.range, ErrorKind::DuplicateName,
+                   fmt::format("this unnamed transition is named '{}' by its position, "
+                               "which is already the name of {}",
+                               out.name, with_article(clash->kind)))
+            .note(clash->range,
+                  fmt::format("'{}' declared here; name the transition ('name: A -> B') or rename it", out.name));
       }
     }
     s.out.transitions.push_back(std::move(out));
@@ -195,7 +206,7 @@ void lower_bodies(Context &cx, ChartScope &s) {
   }
 }
 
-} // namespace
+}  // namespace
 
 void lower_transition_condition(Context &cx, ChartScope &s, std::size_t index) {
   const ast::Transition &t = s.ast.transitions[index];
@@ -241,4 +252,4 @@ void validate_chart(Context &cx, int index) {
   cx.chart = nullptr;
 }
 
-} // namespace gfec::validation
+}  // namespace gfec::validation

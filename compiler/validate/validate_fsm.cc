@@ -18,16 +18,20 @@ bool terminal(const ast::Place &p) { return p.terminal != ast::StateKind::Normal
 /// sfc-only syntax in an fsm, and the rules of terminal states.
 void check_state(Context &cx, ChartScope &s, const ast::Place &p, model::Place &out) {
   if (!p.is_state && !terminal(p))
-    cx.diag.error(p.range, ErrorKind::WrongKeyword, fmt::format("'place' in an fsm: an fsm has states (write 'state {}')", p.name.text));
+    cx.diag.error(p.range, ErrorKind::WrongKeyword,
+                  fmt::format("'place' in an fsm: an fsm has states (write 'state {}')", p.name.text));
   // `entry` and `exit` blocks run when the state is entered and left (docs/language.md "fsm
   // entry and exit"); a terminal state has no body at all, so neither.
   if (terminal(p) && p.has_body)
-    cx.diag.error(p.range, ErrorKind::TerminalState, fmt::format("terminal state '{}' cannot have a body", p.name.text));
+    cx.diag.error(p.range, ErrorKind::TerminalState,
+                  fmt::format("terminal state '{}' cannot have a body", p.name.text));
   if (p.initial && terminal(p))
-    cx.diag.error(p.name.range, ErrorKind::InitialState, fmt::format("initial state '{}' cannot be a success or failure state", p.name.text));
+    cx.diag.error(p.name.range, ErrorKind::InitialState,
+                  fmt::format("initial state '{}' cannot be a success or failure state", p.name.text));
   if (!p.post) return;
   if (!terminal(p)) {
-    cx.diag.error(p.post->range, ErrorKind::TerminalState, "only a success or failure state can have a 'post' condition");
+    cx.diag.error(p.post->range, ErrorKind::TerminalState,
+                  "only a success or failure state can have a 'post' condition");
     return;
   }
   ExprScope scope{cx, &s, false};
@@ -40,12 +44,16 @@ void note_initial(Context &cx, ChartScope &s, int index, int &initial) {
     initial = index;
     return;
   }
-  cx.diag.error(s.ast.places[index].name.range, ErrorKind::InitialState, fmt::format("fsm '{}' has more than one initial state", s.out.name))
-      .note(s.ast.places[initial].name.range, fmt::format("'{}' is already its initial state", s.ast.places[initial].name.text));
+  cx.diag
+      .error(s.ast.places[index].name.range, ErrorKind::InitialState,
+             fmt::format("fsm '{}' has more than one initial state", s.out.name))
+      .note(s.ast.places[initial].name.range,
+            fmt::format("'{}' is already its initial state", s.ast.places[initial].name.text));
 }
 
 /// One side of an fsm transition: exactly one state.
-int one_state(Context &cx, ChartScope &s, const ast::Transition &t, const std::vector<ast::Name> &names, const char *side) {
+int one_state(Context &cx, ChartScope &s, const ast::Transition &t, const std::vector<ast::Name> &names,
+              const char *side) {
   if (names.size() != 1) {
     cx.diag.error(t.range, ErrorKind::FsmTransition, fmt::format("an fsm transition has exactly one {} state", side));
     return -1;
@@ -59,14 +67,18 @@ void check_transition(Context &cx, ChartScope &s, std::size_t i, int from, int t
   const ast::Transition &t = s.ast.transitions[i];
   const ast::Place &source = s.ast.places[from];
   if (terminal(source))
-    cx.diag.error(where(t), ErrorKind::TerminalState, fmt::format("transition leaves terminal state '{}'", source.name.text))
+    cx.diag
+        .error(where(t), ErrorKind::TerminalState,
+               fmt::format("transition leaves terminal state '{}'", source.name.text))
         .note(source.name.range, fmt::format("'{}' ends the machine", source.name.text));
   if (from == to)
-    cx.diag.error(where(t), ErrorKind::SelfTransition, fmt::format("transition from state '{}' to itself", source.name.text));
+    cx.diag.error(where(t), ErrorKind::SelfTransition,
+                  fmt::format("transition from state '{}' to itself", source.name.text));
   auto [it, fresh] = pairs.emplace(std::make_pair(from, to), i);
   if (!fresh)
-    cx.diag.error(where(t), ErrorKind::DuplicateTransition, fmt::format("second transition from '{}' to '{}'", source.name.text,
-                                                                s.ast.places[to].name.text))
+    cx.diag
+        .error(where(t), ErrorKind::DuplicateTransition,
+               fmt::format("second transition from '{}' to '{}'", source.name.text, s.ast.places[to].name.text))
         .note(where(s.ast.transitions[it->second]), "the first one is here");
   s.out.transitions[i].inputs = {from};
   s.out.transitions[i].outputs = {to};
@@ -143,7 +155,7 @@ void warn_unreachable(Context &cx, ChartScope &s, int initial) {
   }
 }
 
-} // namespace
+}  // namespace
 
 void check_fsm(Context &cx, ChartScope &s, const ErrorWatch &watch) {
   int initial = -1;
@@ -159,4 +171,4 @@ void check_fsm(Context &cx, ChartScope &s, const ErrorWatch &watch) {
   if (initial >= 0 && watch.clean()) warn_unreachable(cx, s, initial);
 }
 
-} // namespace gfec::validation
+}  // namespace gfec::validation

@@ -28,7 +28,7 @@ bool lower_prototype(const ast::FunctionDecl &f, model::Function &out, Diagnosti
   return ok;
 }
 
-} // namespace
+}  // namespace
 
 void declare_interface(Context &cx, const ast::Interface &iface) {
   cx.declare_global(cx.interfaces, iface.name, Sym::Interface, -1);
@@ -66,4 +66,4 @@ void fold_file_consts(Context &cx) {
   for (std::size_t i = 0; i < cx.consts.size(); ++i) fold_const(cx, static_cast<int>(i));
 }
 
-} // namespace gfec::validation
+}  // namespace gfec::validation

@@ -58,10 +58,12 @@ void declare_members(Context &cx, PlanScope &s, const std::vector<int> &config_i
 std::optional<model::Expr> lower_config_init(Context &cx, PlanScope &s, const ast::ConfigEntry &e, Type type) {
   auto init = lower_formula(e.init.get(), cx, s, true);
   if (!init) return std::nullopt;
-  bool fits = type != Type::Object && (assignable(type, init->type) || (type == Type::String && model::is_numeric(init->type)));
+  bool fits =
+      type != Type::Object && (assignable(type, init->type) || (type == Type::String && model::is_numeric(init->type)));
   if (!fits) {
-    cx.diag.error(init->range, ErrorKind::TypeMismatch, fmt::format("cannot initialize '{}' of type {} with a value of type {}",
-                                                            e.name.text, quoted(type), quoted(init->type)));
+    cx.diag.error(init->range, ErrorKind::TypeMismatch,
+                  fmt::format("cannot initialize '{}' of type {} with a value of type {}", e.name.text, quoted(type),
+                              quoted(init->type)));
     return std::nullopt;
   }
   auto v = evaluate(*init, cx.model, &cx.diag);
@@ -103,8 +105,8 @@ std::optional<Callee> resolve_callee(Context &cx, PlanScope &s, const ast::Name 
   if (!sym) {
     std::vector<const Symbol *> candidates;
     for (const Symbol *c : cx.plan_names.of({Sym::Template, Sym::Plan})) {
-      bool is_supervisor = c->kind == Sym::Template &&
-                           cx.model.templates[c->index].kind == model::Template::Kind::Supervisor;
+      bool is_supervisor =
+          c->kind == Sym::Template && cx.model.templates[c->index].kind == model::Template::Kind::Supervisor;
       if (is_supervisor == supervisor) candidates.push_back(c);
     }
     report_unknown(cx.diag, s.unknown, name, supervisor ? "supervisor template" : "template", candidates);
@@ -112,15 +114,19 @@ std::optional<Callee> resolve_callee(Context &cx, PlanScope &s, const ast::Name 
   }
   if (sym->kind == Sym::Plan) {
     if (!supervisor) return plan_callee(cx, sym->index);
-    cx.diag.error(name.range, ErrorKind::TemplateKind, fmt::format("'{}' is a plan; 'supervise' needs a supervisor template", name.text))
+    cx.diag
+        .error(name.range, ErrorKind::TemplateKind,
+               fmt::format("'{}' is a plan; 'supervise' needs a supervisor template", name.text))
         .note(cx.model.plans[sym->index].range, fmt::format("'{}' declared here", name.text));
     return std::nullopt;
   }
   const model::Template &t = cx.model.templates[sym->index];
   if ((t.kind == model::Template::Kind::Supervisor) != supervisor) {
-    cx.diag.error(name.range, ErrorKind::TemplateKind,
-                  supervisor ? fmt::format("'{}' is an actor template; 'supervise' needs a supervisor template", name.text)
-                             : fmt::format("'{}' is a supervisor template; an actor needs an actor or computation", name.text))
+    cx.diag
+        .error(name.range, ErrorKind::TemplateKind,
+               supervisor
+                   ? fmt::format("'{}' is an actor template; 'supervise' needs a supervisor template", name.text)
+                   : fmt::format("'{}' is a supervisor template; an actor needs an actor or computation", name.text))
         .note(t.range, fmt::format("'{}' declared here", name.text));
     return std::nullopt;
   }
@@ -158,8 +164,9 @@ model::ActorUse lower_actor(Context &cx, PlanScope &s, const ast::ActorUse &a) {
   }
   for (const ast::Supervise &sup : a.supervisors) {
     if (computation)
-      cx.diag.error(sup.name.range, ErrorKind::ComputationSupervisor,
-                    fmt::format("computation '{}' cannot be supervised", a.name.text))
+      cx.diag
+          .error(sup.name.range, ErrorKind::ComputationSupervisor,
+                 fmt::format("computation '{}' cannot be supervised", a.name.text))
           .note("a computation runs to its result without interruption");
     out.supervisors.push_back(lower_supervise(cx, s, sup));
   }
@@ -248,7 +255,8 @@ struct PlanGraph {
   /// `plan` is on the path: the path from it to the top is the chain that contains it (each
   /// entry's actor just before `next` is the one that uses the following plan).
   void report(int plan) {
-    auto &d = cx.diag.error(cx.plans[plan]->name.range, ErrorKind::RecursivePlan, fmt::format("plan '{}' contains itself", cx.model.plans[plan].name));
+    auto &d = cx.diag.error(cx.plans[plan]->name.range, ErrorKind::RecursivePlan,
+                            fmt::format("plan '{}' contains itself", cx.model.plans[plan].name));
     auto first = std::find_if(stack.begin(), stack.end(), [&](const auto &e) { return e.first == plan; });
     for (auto it = first; it != stack.end(); ++it) {
       const ast::ActorUse &a = cx.plans[it->first]->actors[it->second - 1];
@@ -258,7 +266,7 @@ struct PlanGraph {
   }
 };
 
-} // namespace
+}  // namespace
 
 void declare_plan(Context &cx, const ast::Plan &plan) {
   model::Plan out;
@@ -289,4 +297,4 @@ void check_plan_recursion(Context &cx) {
     if (g.color[p] == 0) g.visit(static_cast<int>(p));
 }
 
-} // namespace gfec::validation
+}  // namespace gfec::validation

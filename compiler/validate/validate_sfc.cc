@@ -19,7 +19,8 @@ void check_keywords(Context &cx, const ast::Place &p) {
   if (p.terminal != ast::StateKind::Normal)
     cx.diag.error(p.range, ErrorKind::WrongKeyword, "success and failure states belong to an fsm; an sfc has places");
   else if (p.is_state)
-    cx.diag.error(p.range, ErrorKind::WrongKeyword, fmt::format("'state' in an sfc: an sfc has places (write 'place {}')", p.name.text));
+    cx.diag.error(p.range, ErrorKind::WrongKeyword,
+                  fmt::format("'state' in an sfc: an sfc has places (write 'place {}')", p.name.text));
   if (p.post) cx.diag.error(p.post->range, ErrorKind::WrongKeyword, "'post' belongs to a terminal state of an fsm");
 }
 
@@ -33,8 +34,10 @@ std::vector<int> resolve_places(Context &cx, ChartScope &s, const std::vector<as
     bool twice = false;
     for (std::size_t j = 0; j < i && !twice; ++j) {
       if (names[j].text != names[i].text) continue;
-      cx.diag.error(names[i].range, ErrorKind::DuplicatePlace, fmt::format("place '{}' is listed twice in the {} of transition '{}'",
-                                                                   names[i].text, side, transition))
+      cx.diag
+          .error(
+              names[i].range, ErrorKind::DuplicatePlace,
+              fmt::format("place '{}' is listed twice in the {} of transition '{}'", names[i].text, side, transition))
           .note(names[j].range, "first listed here");
       twice = true;
     }
@@ -102,14 +105,17 @@ void warn_unreachable(Context &cx, ChartScope &s) {
     const auto &tr = c.transitions[t];
     SourceRange at = where(s.ast.transitions[t]);
     if (!live[t]) {
-      cx.diag.warning(Warning::DeadTransition, at, fmt::format("transition '{}' can never fire: its condition is always false", tr.name));
+      cx.diag.warning(Warning::DeadTransition, at,
+                      fmt::format("transition '{}' can never fire: its condition is always false", tr.name));
       dead[t] = true;
       continue;
     }
     for (int p : tr.inputs) {
       if (reach[p]) continue;
-      cx.diag.warning(Warning::DeadTransition, at, fmt::format("transition '{}' can never fire: its input place '{}' never "
-                                                               "becomes active", tr.name, c.places[p].name));
+      cx.diag.warning(Warning::DeadTransition, at,
+                      fmt::format("transition '{}' can never fire: its input place '{}' never "
+                                  "becomes active",
+                                  tr.name, c.places[p].name));
       dead[t] = true;
       break;
     }
@@ -125,13 +131,16 @@ void warn_unreachable(Context &cx, ChartScope &s) {
     const auto &second = c.transitions[j];
     std::size_t i = none;
     for (int p : second.inputs)
-      i = std::min(i, constant[j] ? first_varying[static_cast<std::size_t>(p)] : first_any[static_cast<std::size_t>(p)]);
+      i = std::min(i,
+                   constant[j] ? first_varying[static_cast<std::size_t>(p)] : first_any[static_cast<std::size_t>(p)]);
     if (i != none) {
       const auto &first = c.transitions[i];
-      auto shared = std::find_first_of(second.inputs.begin(), second.inputs.end(), first.inputs.begin(), first.inputs.end());
-      cx.diag.warning(Warning::Conflict, where(s.ast.transitions[j]),
-                      fmt::format("transition '{}' competes with '{}' for place '{}'", second.name, first.name,
-                                  c.places[*shared].name))
+      auto shared =
+          std::find_first_of(second.inputs.begin(), second.inputs.end(), first.inputs.begin(), first.inputs.end());
+      cx.diag
+          .warning(Warning::Conflict, where(s.ast.transitions[j]),
+                   fmt::format("transition '{}' competes with '{}' for place '{}'", second.name, first.name,
+                               c.places[*shared].name))
           .note(where(s.ast.transitions[i]),
                 fmt::format("'{}' is declared first: when both can fire, it takes the activation", first.name));
     }
@@ -143,7 +152,7 @@ void warn_unreachable(Context &cx, ChartScope &s) {
   }
 }
 
-} // namespace
+}  // namespace
 
 void check_sfc(Context &cx, ChartScope &s, const ErrorWatch &watch) {
   bool initial = false;
@@ -158,4 +167,4 @@ void check_sfc(Context &cx, ChartScope &s, const ErrorWatch &watch) {
   if (watch.clean()) warn_unreachable(cx, s);
 }
 
-} // namespace gfec::validation
+}  // namespace gfec::validation

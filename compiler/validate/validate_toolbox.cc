@@ -45,8 +45,9 @@ bool lower_params(Context &cx, const ast::Template &t, model::Template &out) {
 void lower_outcomes(Context &cx, const ast::Template &t, model::Template &out) {
   bool supervisor = t.kind == ast::Template::Kind::Supervisor;
   if (t.outcomes.empty())
-    cx.diag.error(t.name.range, ErrorKind::NoOutcome, fmt::format("{} '{}' has no {}", kind_word(t.kind), t.name.text,
-                                                         supervisor ? "event" : "result state"));
+    cx.diag.error(
+        t.name.range, ErrorKind::NoOutcome,
+        fmt::format("{} '{}' has no {}", kind_word(t.kind), t.name.text, supervisor ? "event" : "result state"));
   Namespace outcomes;
   for (const ast::Name &o : t.outcomes) {
     outcomes.declare(o, supervisor ? Sym::Event : Sym::ResultState, -1, cx.diag);
@@ -58,13 +59,11 @@ void lower_period(Context &cx, const ast::Template &t, model::Template &out) {
   if (!t.period) return;
   if (t.kind != ast::Template::Kind::Supervisor)
     cx.diag.error(t.period->range, ErrorKind::Period, "only a supervisor has a period");
-  else if (t.period->ms <= 0)
-    cx.diag.error(t.period->range, ErrorKind::Period, "the period must be positive");
-  else
-    out.period_ms = t.period->ms;
+  else if (t.period->ms <= 0) cx.diag.error(t.period->range, ErrorKind::Period, "the period must be positive");
+  else out.period_ms = t.period->ms;
 }
 
-} // namespace
+}  // namespace
 
 void declare_toolbox(Context &cx, const ast::Toolbox &toolbox) {
   model::Toolbox box;
@@ -91,4 +90,4 @@ void declare_toolbox(Context &cx, const ast::Toolbox &toolbox) {
   cx.model.toolboxes.push_back(std::move(box));
 }
 
-} // namespace gfec::validation
+}  // namespace gfec::validation

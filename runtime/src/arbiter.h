@@ -15,7 +15,7 @@ namespace afp::detail {
 /// current epoch wins and closes it, as does the actor finishing first.
 /// Failures are kept whatever the epoch: they end the level.
 class Arbiter {
-public:
+ public:
   explicit Arbiter(Waker& waker) : waker_(waker) {}
 
   /// A new actor runs: opens a new epoch with no claim; returns it.
@@ -37,7 +37,7 @@ public:
   /// came first, if any.
   std::optional<Claim> close();
 
-private:
+ private:
   std::optional<Claim> take_locked();
 
   Waker& waker_;

@@ -18,10 +18,8 @@ auto& find(Map& entries, std::string_view name) {
 void Shadow::write(std::string_view entry, Value value) {
   auto same = [&](const auto& w) { return w.first == entry; };
   auto it = std::find_if(writes_.begin(), writes_.end(), same);
-  if (it != writes_.end())
-    it->second = std::move(value);
-  else
-    writes_.emplace_back(std::string(entry), std::move(value));
+  if (it != writes_.end()) it->second = std::move(value);
+  else writes_.emplace_back(std::string(entry), std::move(value));
 }
 
 void Configuration::declare(const std::string& name, Type type) { declare(name, default_value(type)); }
@@ -30,8 +28,8 @@ void Configuration::declare(const std::string& name, const Value& initial) {
   std::lock_guard lock(mutex_);
   auto [it, inserted] = entries_.emplace(name, initial);
   if (!inserted && it->second.type() != initial.type())
-    throw ConfigError("configuration entry '" + name + "' declared as " + to_string(initial.type()) +
-                      " but it is " + to_string(it->second.type()));
+    throw ConfigError("configuration entry '" + name + "' declared as " + to_string(initial.type()) + " but it is " +
+                      to_string(it->second.type()));
 }
 
 bool Configuration::contains(std::string_view name) const {

@@ -63,9 +63,7 @@ void Level::interrupt(Claim claim) {
   if (claim.failed) return fail(supervisor, claim.error);
   if (auto error = stop_actor()) return fail(actor_name(), *error);
   services_.config().commit(claim.outputs);  // the actor's shadow is dropped by the next start
-  trace([&](TraceObserver& t) {
-    t.actor_interrupted(plan_, actor_name(), supervisor, claim.event, services_.now());
-  });
+  trace([&](TraceObserver& t) { t.actor_interrupted(plan_, actor_name(), supervisor, claim.event, services_.now()); });
   if (claim.target.kind == Target::Kind::Terminate) return end(Status::Interrupted);
   start_actor(claim.target.actor);
 }

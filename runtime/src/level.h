@@ -17,7 +17,7 @@ namespace afp::detail {
 /// ones watching it, outputs through shadow copies. Single-threaded: only the
 /// executor's thread calls it (supervisor threads talk to its Watchers).
 class Level {
-public:
+ public:
   /// A level running `plan` on the executor's `services`.
   Level(Plan& plan, Services& services);
   /// Stops a plan still running.
@@ -40,7 +40,7 @@ public:
   /// Why the level failed ("component: message"), empty otherwise.
   const std::string& error() const { return error_; }
 
-private:
+ private:
   void start_actor(std::size_t index);
   void finish_actor(int state);
   void interrupt(Claim claim);

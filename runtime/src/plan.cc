@@ -54,8 +54,7 @@ void Plan::define_subsequent(const Actor* actor, int state, Next next) {
 void Plan::define_supervision(const Actor* actor, const Supervisor* supervisor, int event, Reaction reaction) {
   ActorSlot& slot = actors_[index_of(actor)];
   std::size_t watcher = index_of(supervisor);
-  if (slot.actor->is_computation())
-    throw PlanError("computation '" + slot.name + "' cannot have supervisors");
+  if (slot.actor->is_computation()) throw PlanError("computation '" + slot.name + "' cannot have supervisors");
   auto is_watcher = [&](const detail::Supervision& s) { return s.supervisor == watcher; };
   if (std::any_of(global_.begin(), global_.end(), is_watcher))
     throw PlanError("supervisor '" + supervisors_[watcher].name + "' is already global");
@@ -77,9 +76,7 @@ void Plan::validate() const {
 
 const std::string& Plan::name_of(const Actor* actor) const { return actors_[index_of(actor)].name; }
 
-const std::string& Plan::name_of(const Supervisor* supervisor) const {
-  return supervisors_[index_of(supervisor)].name;
-}
+const std::string& Plan::name_of(const Supervisor* supervisor) const { return supervisors_[index_of(supervisor)].name; }
 
 std::size_t Plan::index_of(const Actor* actor) const {
   for (std::size_t i = 0; i < actors_.size(); ++i)
@@ -99,15 +96,14 @@ detail::Target Plan::target_of(const Actor* actor, detail::Target::Kind kind) co
 
 void Plan::check_name_free(const std::string& name) const {
   auto same = [&](const auto& slot) { return slot.name == name; };
-  if (std::any_of(actors_.begin(), actors_.end(), same) ||
-      std::any_of(supervisors_.begin(), supervisors_.end(), same))
+  if (std::any_of(actors_.begin(), actors_.end(), same) || std::any_of(supervisors_.begin(), supervisors_.end(), same))
     throw PlanError("two instances named '" + name + "' in plan '" + name_ + "'");
 }
 
 void Plan::add_reaction(std::vector<detail::Supervision>& list, std::size_t supervisor, int event,
                         detail::Target target) {
-  auto it = std::find_if(list.begin(), list.end(),
-                         [&](const detail::Supervision& s) { return s.supervisor == supervisor; });
+  auto it =
+      std::find_if(list.begin(), list.end(), [&](const detail::Supervision& s) { return s.supervisor == supervisor; });
   if (it == list.end()) it = list.insert(list.end(), detail::Supervision{supervisor, {}});
   const std::string& name = supervisors_[supervisor].name;
   if (event < 0) throw PlanError("negative event of supervisor '" + name + "'");

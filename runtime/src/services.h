@@ -22,9 +22,9 @@ struct Claim {
   std::size_t supervisor = 0;  // index in the plan
   int event = 0;
   Target target{Target::Kind::Terminate, 0};
-  Shadow outputs;      // the check's writes, committed if the claim wins
+  Shadow outputs;  // the check's writes, committed if the claim wins
   bool failed = false;
-  std::string error;   // when failed
+  std::string error;  // when failed
 };
 
 /// One supervisor to watch, with its rules for the watched actor (or global).
@@ -36,7 +36,7 @@ struct Watch {
 /// How one plan level's supervisors are watched: checked inside the level's
 /// step (stepped executor) or polled by threads (threaded executor).
 class Watchers {
-public:
+ public:
   virtual ~Watchers() = default;
   /// Starts the global supervisors, for the whole run.
   virtual void start_global(const std::vector<Watch>& watches) = 0;
@@ -58,7 +58,7 @@ public:
 /// What an executor provides to every plan level it runs (the top plan and
 /// its sub-plans).
 class Services {
-public:
+ public:
   Services(Configuration& config, TraceObserver* trace) : config_(config), trace_(trace) {}
   virtual ~Services() = default;
 
@@ -74,7 +74,7 @@ public:
   /// The watchers for one plan level.
   virtual std::unique_ptr<Watchers> make_watchers() = 0;
 
-private:
+ private:
   Configuration& config_;
   TraceObserver* trace_;
   std::optional<std::string> trace_error_;
@@ -86,9 +86,7 @@ std::optional<std::string> capture(F&& f) {
   try {
     f();
     return std::nullopt;
-  } catch (const std::exception& e) {
-    return std::string(*e.what() ? e.what() : "exception");
-  } catch (...) {
+  } catch (const std::exception& e) { return std::string(*e.what() ? e.what() : "exception"); } catch (...) {
     return std::string("unknown exception");
   }
 }

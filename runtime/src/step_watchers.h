@@ -12,7 +12,7 @@ namespace afp::detail {
 /// Checks due supervisors on poll(): global ones, then the actor's own, each
 /// in declaration order; the first claim wins and the rest are not checked.
 class StepWatchers final : public Watchers {
-public:
+ public:
   explicit StepWatchers(Services& services) : services_(services) {}
 
   void start_global(const std::vector<Watch>& watches) override { start(global_, watches); }
@@ -23,10 +23,10 @@ public:
   void stop_local() override { stop(local_); }
   void stop_global() override { stop(global_); }
 
-private:
+ private:
   struct Entry {
     Watch watch;
-    Duration next_check;             // unused when the period is zero (every step)
+    Duration next_check;  // unused when the period is zero (every step)
     std::optional<Claim> start_failure;
   };
 

@@ -12,9 +12,7 @@ struct SteppedExecutor::Impl final : detail::Services {
   Impl(Plan& to_run, Configuration& config, TraceObserver* trace) : Services(config, trace), plan(to_run) {}
 
   Duration now() const override { return time; }
-  std::unique_ptr<detail::Watchers> make_watchers() override {
-    return std::make_unique<detail::StepWatchers>(*this);
-  }
+  std::unique_ptr<detail::Watchers> make_watchers() override { return std::make_unique<detail::StepWatchers>(*this); }
 
   Plan& plan;
   Duration time{0};

@@ -6,12 +6,9 @@ using Clock = std::chrono::steady_clock;
 
 WatchThread::WatchThread(Watch watch, Services& services, Arbiter& arbiter, std::optional<std::uint64_t> epoch,
                          Duration period)
-    : watch_(watch),
-      services_(services),
-      arbiter_(arbiter),
-      epoch_(epoch),
-      period_(period),
-      thread_([this] { run(); }) {}
+    : watch_(watch), services_(services), arbiter_(arbiter), epoch_(epoch), period_(period), thread_([this] {
+        run();
+      }) {}
 
 WatchThread::~WatchThread() {
   request_stop();

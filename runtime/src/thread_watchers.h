@@ -19,11 +19,10 @@ namespace afp::detail {
 /// One supervisor's thread: start(), check() every period, stop(), all in
 /// that thread, so a supervisor object is never used by two threads at once.
 class WatchThread {
-public:
+ public:
   /// Starts the thread. A local watch claims for `epoch` (its actor's run);
   /// a global one (no epoch) for whichever actor runs when it checks.
-  WatchThread(Watch watch, Services& services, Arbiter& arbiter, std::optional<std::uint64_t> epoch,
-              Duration period);
+  WatchThread(Watch watch, Services& services, Arbiter& arbiter, std::optional<std::uint64_t> epoch, Duration period);
   /// Stops and joins.
   ~WatchThread();
   WatchThread(const WatchThread&) = delete;
@@ -32,10 +31,10 @@ public:
   /// Asks the thread to end (returns at once).
   void request_stop();
 
-private:
+ private:
   void run();
   bool sleep_until(std::chrono::steady_clock::time_point time);  // false when asked to stop
-  bool check();                                                 // false when the watch is over
+  bool check();                                                  // false when the watch is over
 
   Watch watch_;
   Services& services_;
@@ -50,7 +49,7 @@ private:
 
 /// The threaded Watchers: one WatchThread per active supervisor, one Arbiter.
 class ThreadWatchers final : public Watchers {
-public:
+ public:
   /// Watchers whose claims wake `waker`; `default_period` replaces a zero period.
   ThreadWatchers(Services& services, Waker& waker, Duration default_period)
       : services_(services), arbiter_(waker), default_period_(default_period) {}
@@ -63,7 +62,7 @@ public:
   void stop_local() override { stop(local_); }
   void stop_global() override { stop(global_); }
 
-private:
+ private:
   void start(std::vector<std::unique_ptr<WatchThread>>& list, const std::vector<Watch>& watches,
              std::optional<std::uint64_t> epoch);
   static void stop(std::vector<std::unique_ptr<WatchThread>>& list);

@@ -44,10 +44,8 @@ struct ThreadedExecutor::Impl final : detail::Services {
       if (level.status() == Status::Running && !trace_error()) status.store(Status::Running);
       while (level.status() == Status::Running && !trace_error()) {
         waker.wait_for(options.actor_period);
-        if (stop_requested.load())
-          level.abort();
-        else
-          level.advance();
+        if (stop_requested.load()) level.abort();
+        else level.advance();
       }
       if (level.status() == Status::Running) level.abort();  // the trace hook failed
       result = level.status();
@@ -75,8 +73,7 @@ struct ThreadedExecutor::Impl final : detail::Services {
   std::thread thread;
 };
 
-ThreadedExecutor::ThreadedExecutor(Plan& plan, Configuration& config, TraceObserver* trace,
-                                   ThreadedOptions options)
+ThreadedExecutor::ThreadedExecutor(Plan& plan, Configuration& config, TraceObserver* trace, ThreadedOptions options)
     : impl_(std::make_unique<Impl>(plan, config, trace, options)) {
   plan.declare_into(config);
 }

@@ -51,8 +51,7 @@ std::string_view number_body(std::string_view s) {
   s = s.substr(first, s.find_last_not_of(blanks) - first + 1);
   std::string_view digits = s;
   if (!digits.empty() && (digits[0] == '+' || digits[0] == '-')) digits.remove_prefix(1);
-  if (digits.empty() || !(std::isdigit(static_cast<unsigned char>(digits[0])) || digits[0] == '.'))
-    return {};
+  if (digits.empty() || !(std::isdigit(static_cast<unsigned char>(digits[0])) || digits[0] == '.')) return {};
   return s[0] == '+' ? digits : s;
 }
 

@@ -11,7 +11,7 @@ namespace afp::detail {
 /// A signal the executor's thread sleeps on between actor steps; a winning
 /// claim or a stop request raises it, so reactions do not wait a whole period.
 class Waker {
-public:
+ public:
   /// Raises the signal (any thread).
   void notify() {
     {
@@ -28,7 +28,7 @@ public:
     signaled_ = false;
   }
 
-private:
+ private:
   std::mutex mutex_;
   std::condition_variable cv_;
   bool signaled_ = false;

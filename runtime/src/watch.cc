@@ -38,6 +38,8 @@ std::optional<Claim> check_watch(const Watch& watch, Services& services) {
   return claim;
 }
 
-void stop_watch(const Watch& watch) { (void)capture([&] { watch.supervisor->stop(); }); }
+void stop_watch(const Watch& watch) {
+  (void)capture([&] { watch.supervisor->stop(); });
+}
 
 }  // namespace afp::detail

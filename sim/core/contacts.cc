@@ -49,8 +49,7 @@ void near_callback(void* data, dGeomID a, dGeomID b) {
 }  // namespace
 
 void Simulation::Impl::collide() {
-  dSpaceCollide2(reinterpret_cast<dGeomID>(robot_space), reinterpret_cast<dGeomID>(env_space), this,
-                 &near_callback);
+  dSpaceCollide2(reinterpret_cast<dGeomID>(robot_space), reinterpret_cast<dGeomID>(env_space), this, &near_callback);
 }
 
 }  // namespace carbot

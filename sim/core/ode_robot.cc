@@ -10,15 +10,11 @@
 namespace carbot {
 namespace {
 
-void tag(dGeomID g, Part p) {
-  dGeomSetData(g, reinterpret_cast<void*>(static_cast<std::intptr_t>(p) + 1));
-}
+void tag(dGeomID g, Part p) { dGeomSetData(g, reinterpret_cast<void*>(static_cast<std::intptr_t>(p) + 1)); }
 
 }  // namespace
 
-Part part_of(dGeomID g) {
-  return static_cast<Part>(reinterpret_cast<std::intptr_t>(dGeomGetData(g)) - 1);
-}
+Part part_of(dGeomID g) { return static_cast<Part>(reinterpret_cast<std::intptr_t>(dGeomGetData(g)) - 1); }
 
 void Simulation::Impl::build_robot() {
   using namespace model;

@@ -32,7 +32,7 @@ enum class Side { Left, Right };
 /// An item as it is now.
 struct ItemState {
   std::string name;
-  Vec2 at;            ///< on the floor, or in the gripper while held
+  Vec2 at;  ///< on the floor, or in the gripper while held
   Vec2 destination;
   bool held = false;
 };
@@ -93,8 +93,8 @@ class Simulation {
   /// Turns the sonar mount towards `angle` (rad, relative to the heading, CCW); the servo
   /// moves at model::kSonarMountRate.
   void aim_sonar(double angle);
-  double sonar_angle() const;    ///< where the mount points now
-  double sonar_target() const;   ///< where it was told to point
+  double sonar_angle() const;   ///< where the mount points now
+  double sonar_target() const;  ///< where it was told to point
   /// Front bumper: touched during the last control period.
   bool bumper() const;
   /// Bumper presses so far (a press is a control period touched after one not touched).

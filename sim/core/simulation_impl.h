@@ -12,12 +12,12 @@ namespace carbot {
 
 /// One steerable driven wheel: body, hinge2 joint, and what it was told to do.
 struct Wheel {
-  double x = 0;               ///< position along the chassis centre line
+  double x = 0;  ///< position along the chassis centre line
   dBodyID body = nullptr;
   dGeomID geom = nullptr;
   dJointID joint = nullptr;
-  double steer_target = 0;    ///< rad, CCW relative to the chassis
-  double speed_target = 0;    ///< m/s ground speed along the wheel's rolling direction
+  double steer_target = 0;  ///< rad, CCW relative to the chassis
+  double speed_target = 0;  ///< m/s ground speed along the wheel's rolling direction
 };
 
 /// Which surface a robot geom has; the contact callback picks friction from it.
@@ -27,29 +27,29 @@ struct Simulation::Impl {
   World world;
   SimConfig config;
   long steps_per_control = 10;
-  long steps = 0;             ///< physics steps done; time = steps * physics_step
+  long steps = 0;  ///< physics steps done; time = steps * physics_step
 
   dWorldID ode_world = nullptr;
   dSpaceID robot_space = nullptr;  ///< the robot's geoms (never collided with each other)
   dSpaceID env_space = nullptr;    ///< floor, walls, boxes
   dJointGroupID contacts = nullptr;
   dGeomID floor = nullptr;
-  dGeomID sonar_ray = nullptr;     ///< in no space: queried with dCollide, never pushes anything
+  dGeomID sonar_ray = nullptr;  ///< in no space: queried with dCollide, never pushes anything
 
   dBodyID chassis = nullptr;
   dGeomID chassis_geom = nullptr;
   dGeomID bumper_geom = nullptr;
   std::array<dGeomID, 2> casters{};
-  std::array<Wheel, 2> wheels{};   ///< [0] front, [1] rear
+  std::array<Wheel, 2> wheels{};  ///< [0] front, [1] rear
 
   double cmd_forward = 0, cmd_turn = 0;
   double sonar_angle = 0, sonar_target = 0;
   double odometer = 0;
   bool left_floor = false;
 
-  bool bumper_touch_step = false;  ///< set by the contact callback in the current physics step
-  bool bumper_touch_period = false;///< any touch during the running control period
-  bool bumper_pressed = false;     ///< the last full control period had a touch
+  bool bumper_touch_step = false;    ///< set by the contact callback in the current physics step
+  bool bumper_touch_period = false;  ///< any touch during the running control period
+  bool bumper_pressed = false;       ///< the last full control period had a touch
   int bumps = 0;
   std::vector<Bump> bump_log;
 

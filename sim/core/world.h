@@ -46,23 +46,23 @@ struct Item {
 struct Event {
   enum class Kind { PressEscape, DropItem };
   Kind kind = Kind::PressEscape;
-  double at = 0;            ///< seconds of simulated time
-  std::string item;         ///< DropItem: the item's name
-  bool has_to = false;      ///< DropItem: lands at `to` instead of under the gripper
+  double at = 0;        ///< seconds of simulated time
+  std::string item;     ///< DropItem: the item's name
+  bool has_to = false;  ///< DropItem: lands at `to` instead of under the gripper
   Vec2 to;
 };
 
 /// The robot's pose at the start.
 struct Start {
   Vec2 position;
-  double heading_deg = 0;   ///< counter-clockwise from +x
+  double heading_deg = 0;  ///< counter-clockwise from +x
 };
 
 /// A whole world file.
 struct World {
-  std::string name;         ///< the file's stem, for titles ("oval")
-  std::string path;         ///< as given, for messages
-  Vec2 size{4, 3};          ///< floor [w, h], centred at the origin
+  std::string name;  ///< the file's stem, for titles ("oval")
+  std::string path;  ///< as given, for messages
+  Vec2 size{4, 3};   ///< floor [w, h], centred at the origin
   Line line;
   std::vector<Wall> walls;
   std::vector<Box> boxes;

@@ -28,9 +28,7 @@ class Reader {
   static std::string member(const std::string& field, const char* key) {
     return field.empty() ? key : field + "." + key;
   }
-  static std::string index(const std::string& field, size_t i) {
-    return fmt::format("{}[{}]", field, i);
-  }
+  static std::string index(const std::string& field, size_t i) { return fmt::format("{}[{}]", field, i); }
 
   double number(const json& v, const std::string& field) const {
     if (!v.is_number()) fail(field, "expected a number");
@@ -38,7 +36,8 @@ class Reader {
     if (!std::isfinite(d)) fail(field, "expected a finite number");
     // Metres, degrees and seconds: past a million of any, a world is a mistake or an attack,
     // and the physics (ODE asserts on a heading of 1e308) would not survive it.
-    if (std::fabs(d) > kMaxMagnitude) fail(field, fmt::format("expected a number between -{0:g} and {0:g}, got {1:g}", kMaxMagnitude, d));
+    if (std::fabs(d) > kMaxMagnitude)
+      fail(field, fmt::format("expected a number between -{0:g} and {0:g}, got {1:g}", kMaxMagnitude, d));
     return d;
   }
 
@@ -67,8 +66,7 @@ class Reader {
   }
 
   /// Requires an object whose keys are all in `known`; a typo gets named, not ignored.
-  const json& object(const json& v, const std::string& field,
-                     std::initializer_list<const char*> known) const {
+  const json& object(const json& v, const std::string& field, std::initializer_list<const char*> known) const {
     if (!v.is_object()) fail(field.empty() ? "(top level)" : field, "expected an object");
     for (auto it = v.begin(); it != v.end(); ++it) {
       bool ok = false;
@@ -107,13 +105,11 @@ Line read_line(const Reader& r, const json& v) {
     line.closed = c->get<bool>();
   }
   const json& pts = r.array(r.require(v, f, "points"), f + ".points");
-  for (size_t i = 0; i < pts.size(); ++i)
-    line.points.push_back(r.pair(pts[i], Reader::index(f + ".points", i)));
+  for (size_t i = 0; i < pts.size(); ++i) line.points.push_back(r.pair(pts[i], Reader::index(f + ".points", i)));
   if (line.points.size() < 2) r.fail(f + ".points", "expected at least 2 points");
   for (size_t i = 1; i < line.points.size(); ++i) {
     const Vec2 a = line.points[i - 1], b = line.points[i];
-    if (a.x == b.x && a.y == b.y)
-      r.fail(Reader::index(f + ".points", i), "repeats the previous point");
+    if (a.x == b.x && a.y == b.y) r.fail(Reader::index(f + ".points", i), "repeats the previous point");
   }
   return line;
 }
@@ -155,11 +151,9 @@ Event read_event(const Reader& r, const json& v, const std::string& f, const Wor
   if (e.at < 0) r.fail(f + ".at", "expected a time >= 0 (seconds)");
   const json* press = r.find(v, "press");
   const json* drop = r.find(v, "drop");
-  if ((press != nullptr) == (drop != nullptr))
-    r.fail(f, "expected exactly one of \"press\" or \"drop\"");
+  if ((press != nullptr) == (drop != nullptr)) r.fail(f, "expected exactly one of \"press\" or \"drop\"");
   if (press) {
-    if (r.text(*press, f + ".press") != "escape")
-      r.fail(f + ".press", "expected \"escape\" (the only button)");
+    if (r.text(*press, f + ".press") != "escape") r.fail(f + ".press", "expected \"escape\" (the only button)");
     if (r.find(v, "to")) r.fail(f + ".to", "only a \"drop\" event has a landing point");
     e.kind = Event::Kind::PressEscape;
     return e;
@@ -220,10 +214,11 @@ World parse_world(const std::string& text, const std::string& path) {
     // e.g. a number too large for a double (1e309): nlohmann reports it as out_of_range.
     std::string msg = e.what();
     size_t cut = msg.find("] ");
-    throw WorldError(fmt::format("{}: not a usable JSON document: {}", path,
-                                 cut == std::string::npos ? msg : msg.substr(cut + 2)));
+    throw WorldError(
+        fmt::format("{}: not a usable JSON document: {}", path, cut == std::string::npos ? msg : msg.substr(cut + 2)));
   }
-  if (!duplicate.empty()) throw WorldError(fmt::format("{}: {}: the key is given twice in one object", path, duplicate));
+  if (!duplicate.empty())
+    throw WorldError(fmt::format("{}: {}: the key is given twice in one object", path, duplicate));
   Reader r(path);
   r.object(doc, "", {"description", "size", "line", "walls", "boxes", "items", "start", "events"});
 
@@ -248,7 +243,8 @@ World parse_world(const std::string& text, const std::string& path) {
       w.items.push_back(read_item(r, (*v)[i], Reader::index("items", i)));
       for (size_t j = 0; j < i; ++j)
         if (w.items[j].name == w.items[i].name)
-          r.fail(Reader::index("items", i) + ".name", fmt::format("'{}' is already used by items[{}]", w.items[i].name, j));
+          r.fail(Reader::index("items", i) + ".name",
+                 fmt::format("'{}' is already used by items[{}]", w.items[i].name, j));
     }
   }
   const json& start = r.object(r.require(doc, "", "start"), "start", {"pose"});

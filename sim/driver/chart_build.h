@@ -16,8 +16,8 @@ namespace carbot::driver {
 /// What gfec says about a chart (`gfec --emit=json`: top-level "kind" and "name").
 struct ChartInfo {
   std::string name;
-  std::string kind;  ///< "sfc", "fsm" or "plan"
-  double period = 0; ///< s, the chart's `period` (0: it gives none)
+  std::string kind;   ///< "sfc", "fsm" or "plan"
+  double period = 0;  ///< s, the chart's `period` (0: it gives none)
   /// fsm: a label per state index, "Z1 PickUp()" (the name and the first action's text).
   std::vector<std::string> states;
   /// The rows of the run viewer's timeline: the places (sfc), states (fsm) or actors (plan) in

@@ -3,13 +3,15 @@
 
 namespace carbot::driver {
 
-constexpr const char* kEngineSize = "carbot_engine_size";      ///< size_t (void): bytes of engine state
-constexpr const char* kEngineInit = "carbot_engine_init";      ///< void (void*)
-constexpr const char* kEngineRun = "carbot_engine_run";        ///< void (void*): one tick
-constexpr const char* kEngineStatus = "carbot_engine_status";  ///< int (const void*): 0 running, 1 ok, -1 failed, 2 terminated
+constexpr const char* kEngineSize = "carbot_engine_size";  ///< size_t (void): bytes of engine state
+constexpr const char* kEngineInit = "carbot_engine_init";  ///< void (void*)
+constexpr const char* kEngineRun = "carbot_engine_run";    ///< void (void*): one tick
+constexpr const char* kEngineStatus =
+    "carbot_engine_status";  ///< int (const void*): 0 running, 1 ok, -1 failed, 2 terminated
 constexpr const char* kEngineState = "carbot_engine_state";    ///< int (const void*), optional (fsm): the state index
-constexpr const char* kEnginePlaces = "carbot_engine_places";    ///< int (void), optional: places (states) of a C engine
-constexpr const char* kEngineActivation = "carbot_engine_activation";  ///< unsigned (const void*, int), optional: X_activation
-constexpr const char* kEngineFini = "carbot_engine_fini";      ///< void (void*), optional: destroys the state
+constexpr const char* kEnginePlaces = "carbot_engine_places";  ///< int (void), optional: places (states) of a C engine
+constexpr const char* kEngineActivation =
+    "carbot_engine_activation";                            ///< unsigned (const void*, int), optional: X_activation
+constexpr const char* kEngineFini = "carbot_engine_fini";  ///< void (void*), optional: destroys the state
 
 }  // namespace carbot::driver

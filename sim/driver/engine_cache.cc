@@ -73,7 +73,8 @@ void EngineCache::store(const std::string& key, const std::string& output) const
   std::ostringstream bytes;
   bytes << in.rdbuf();
   if (!in) return;
-  gfec::safe_output::write_all({{(fs::path(dir_) / (key + ".so")).string(), bytes.str()}}, {});  // a cache: failure is no error
+  gfec::safe_output::write_all({{(fs::path(dir_) / (key + ".so")).string(), bytes.str()}},
+                               {});  // a cache: failure is no error
 }
 
 }  // namespace carbot::driver

@@ -48,9 +48,9 @@ class Engine {
   void (*init_)(void*) = nullptr;
   void (*run_)(void*) = nullptr;
   int (*status_)(const void*) = nullptr;
-  void (*fini_)(void*) = nullptr;         // optional
-  int (*state_)(const void*) = nullptr;   // optional
-  int (*places_)() = nullptr;             // optional (C engines)
+  void (*fini_)(void*) = nullptr;                       // optional
+  int (*state_)(const void*) = nullptr;                 // optional
+  int (*places_)() = nullptr;                           // optional (C engines)
   unsigned (*activation_)(const void*, int) = nullptr;  // optional (C engines)
   bool initialised_ = false;
 };

@@ -9,7 +9,8 @@ namespace carbot::driver {
 
 struct EngineEvent {
   double t = 0;
-  std::string text;  ///< "start WallFollow.followWall", "WallFollow.searchFirstWall interrupted by touch", "state Z1 PickUp()"
+  std::string
+      text;  ///< "start WallFollow.followWall", "WallFollow.searchFirstWall interrupted by touch", "state Z1 PickUp()"
 };
 
 /// The log of the current run (cleared before each run).

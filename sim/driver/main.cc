@@ -98,9 +98,7 @@ CLI::Validator finite_in(double low, double high) {
           std::size_t used = 0;
           v = std::stod(text, &used);
           if (used != text.size()) return "not a number: " + text;
-        } catch (const std::exception&) {
-          return "not a number: " + text;
-        }
+        } catch (const std::exception&) { return "not a number: " + text; }
         if (!std::isfinite(v) || v < low || v > high)
           return fmt::format("expected a number from {:g} to {:g}, got {}", low, high, text);
         return {};
@@ -175,7 +173,8 @@ int main(int argc, char** argv) {
   o.toolbox_include = kToolboxInclude;
   o.cache_dir = env_or("CARBOT_SIM_CACHE", kCacheDir);
 
-  CLI::App app{"Runs a chart (.sfc, .fsm or .plan) on the ODE-simulated Carbot in a world, headless and deterministic."};
+  CLI::App app{
+      "Runs a chart (.sfc, .fsm or .plan) on the ODE-simulated Carbot in a world, headless and deterministic."};
   app.add_option("chart", o.chart, "the chart file")->required();
   app.add_option("--world", o.world, "the world file (JSON, see docs/sim.md)")->required();
   app.add_option("--seconds", o.seconds, "simulated time limit")->capture_default_str()->check(finite_in(1e-3, 1e6));
@@ -184,11 +183,15 @@ int main(int argc, char** argv) {
   app.add_option("--svg", o.svg, "write a picture of the world and the path (SVG)");
   app.add_option("--html", o.html, "write the run viewer: one self-contained HTML page (docs/viewer.md)");
   app.add_option("--record", o.record, "write the run viewer's recording (JSON, docs/viewer.md)");
-  app.add_option("--physics-step", o.physics_step, "physics step in seconds")->capture_default_str()->check(finite_in(1e-5, 0.1));
-  auto* period_option = app.add_option("--period", o.period, "control period in seconds (default: the chart's period, else 0.01)")
-                           ->check(finite_in(1e-4, 10));
+  app.add_option("--physics-step", o.physics_step, "physics step in seconds")
+      ->capture_default_str()
+      ->check(finite_in(1e-5, 0.1));
+  auto* period_option =
+      app.add_option("--period", o.period, "control period in seconds (default: the chart's period, else 0.01)")
+          ->check(finite_in(1e-4, 10));
   app.add_option("--timeout", o.timeout, "stop the run after this many seconds of wall-clock time (0: no limit)")
-      ->capture_default_str()->check(finite_in(0, 1e7));
+      ->capture_default_str()
+      ->check(finite_in(0, 1e7));
   app.add_option("--gfec", o.gfec, "the chart compiler (env CARBOT_SIM_GFEC)")->capture_default_str();
   app.add_option("--cc", o.cc, "C compiler for sfc/fsm engines (env CC)")->capture_default_str();
   app.add_option("--cxx", o.cxx, "C++ compiler for plan engines (env CXX)")->capture_default_str();
@@ -212,9 +215,7 @@ int main(int argc, char** argv) {
   World world;
   try {
     world = load_world(o.world);
-  } catch (const WorldError& e) {
-    return fail(kBadInput, e.what());
-  }
+  } catch (const WorldError& e) { return fail(kBadInput, e.what()); }
 
   try {
     // 2. The engine: gfec generates it, the C compiler makes it loadable, we load it.
@@ -261,11 +262,7 @@ int main(int argc, char** argv) {
       for (const SimNote& n : sim.notes()) std::printf("  t=%.2f s: %s\n", n.t, n.text.c_str());
     }
     return kOk;
-  } catch (const BuildError& e) {
-    return fail(e.code, e.what());
-  } catch (const LoadError& e) {
+  } catch (const BuildError& e) { return fail(e.code, e.what()); } catch (const LoadError& e) {
     return fail(kBadInput, e.what());
-  } catch (const std::exception& e) {
-    return fail(kUsage, e.what());
-  }
+  } catch (const std::exception& e) { return fail(kUsage, e.what()); }
 }

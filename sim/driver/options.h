@@ -6,28 +6,28 @@
 namespace carbot::driver {
 
 struct Options {
-  std::string chart;          ///< the chart file (.sfc, .fsm or .plan)
-  std::string world;          ///< the world file (JSON)
-  double seconds = 60;        ///< simulated time limit
-  std::string trace;          ///< t,x,y,heading per control tick ("" = none)
-  std::string json;           ///< result summary ("" = none)
-  std::string svg;            ///< picture of the world and the path ("" = none)
-  std::string html;           ///< the run viewer page ("" = none)
-  std::string record;         ///< the run viewer's recording as JSON ("" = none)
-  double physics_step = 0.002;///< s
-  double period = 0.010;      ///< s, control period
-  std::string gfec;           ///< the chart compiler
-  std::string cc;             ///< C compiler for engines
-  std::string cxx;            ///< C++ compiler for plan engines
+  std::string chart;             ///< the chart file (.sfc, .fsm or .plan)
+  std::string world;             ///< the world file (JSON)
+  double seconds = 60;           ///< simulated time limit
+  std::string trace;             ///< t,x,y,heading per control tick ("" = none)
+  std::string json;              ///< result summary ("" = none)
+  std::string svg;               ///< picture of the world and the path ("" = none)
+  std::string html;              ///< the run viewer page ("" = none)
+  std::string record;            ///< the run viewer's recording as JSON ("" = none)
+  double physics_step = 0.002;   ///< s
+  double period = 0.010;         ///< s, control period
+  std::string gfec;              ///< the chart compiler
+  std::string cc;                ///< C compiler for engines
+  std::string cxx;               ///< C++ compiler for plan engines
   bool plans_supported = false;  ///< carbot-sim has the toolbox and the afp runtime
   std::string runtime_include;   ///< afp headers, for plan engines
   std::string toolbox_include;   ///< carbot_toolbox.h, for plan engines
-  std::string cache_dir;      ///< compiled engines kept here for reuse ("" = no cache)
-  std::string work_dir;       ///< keep the generated engine here ("" = a temporary folder, removed)
-  bool quiet = false;         ///< no progress, no summary
+  std::string cache_dir;         ///< compiled engines kept here for reuse ("" = no cache)
+  std::string work_dir;          ///< keep the generated engine here ("" = a temporary folder, removed)
+  bool quiet = false;            ///< no progress, no summary
   /// Record calls for the viewer: the engine is built with call wrappers (docs/viewer.md).
   bool recording() const { return !html.empty() || !record.empty(); }
-  double timeout = 0;         ///< wall-clock budget in seconds (0 = none)
+  double timeout = 0;  ///< wall-clock budget in seconds (0 = none)
 };
 
 /// The tick budget: at most this many control ticks (a trace row each) and physics steps.

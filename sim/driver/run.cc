@@ -74,8 +74,8 @@ class PlanFollower {
     const std::string supervisor = text.substr(at + kInterrupted.size());
     auto node = chart_.supervisor_nodes.find(actor + "/" + supervisor);
     if (node == chart_.supervisor_nodes.end()) node = chart_.supervisor_nodes.find(supervisor);
-    rec.fired.push_back({frame, node == chart_.supervisor_nodes.end() ? std::string() : node->second,
-                         supervisor + " (" + actor + ")"});
+    rec.fired.push_back(
+        {frame, node == chart_.supervisor_nodes.end() ? std::string() : node->second, supervisor + " (" + actor + ")"});
     current_ = -1;
   }
   int current() const { return current_; }
@@ -101,7 +101,8 @@ class PlanFollower {
 void record_tick(const Engine& engine, const ChartInfo& chart, long frame, PlanFollower& plan, Recording& rec) {
   std::vector<int> active;
   if (chart.kind == "plan") {
-    for (std::size_t i = rec.log_frames.size(); i < engine_log().size(); ++i) plan.take(engine_log()[i].text, frame, rec);
+    for (std::size_t i = rec.log_frames.size(); i < engine_log().size(); ++i)
+      plan.take(engine_log()[i].text, frame, rec);
     if (plan.current() >= 0) active.push_back(plan.current());
   } else {
     for (int p = 0; p < engine.places(); ++p)
@@ -160,7 +161,8 @@ RunResult run_engine(Simulation& sim, Engine& engine, const ChartInfo& chart, do
   }
   engine.finish();
   // What stopping the engine logged belongs to the last frame.
-  while (rec.log_frames.size() < engine_log().size()) rec.log_frames.push_back(static_cast<long>(result.trace.size()) - 1);
+  while (rec.log_frames.size() < engine_log().size())
+    rec.log_frames.push_back(static_cast<long>(result.trace.size()) - 1);
   sim.stop();
   hal::bind(nullptr);
   result.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();

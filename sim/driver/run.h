@@ -43,7 +43,7 @@ struct RunResult {
   std::string status = "running";  ///< running | succeeded | failed | terminated
   std::vector<TraceRow> trace;
   Recording recording;
-  double wall_seconds = 0;         ///< real time the run took (not in any output file)
+  double wall_seconds = 0;  ///< real time the run took (not in any output file)
 };
 
 /// Runs `engine` on `sim` for at most `seconds` (progress on stderr when it is a terminal).

@@ -71,8 +71,8 @@ std::string status_phrase(const RunReport& r) {
 
 void draw_floor(Svg& s, const Frame& f, const World& w) {
   const double hw = w.size.x / 2, hh = w.size.y / 2;
-  s.add(R"(<rect x="{:.1f}" y="{:.1f}" width="{:.1f}" height="{:.1f}" rx="4" fill="{}" stroke="{}"/>)",
-        f.x(-hw), f.y(hh), f.len(w.size.x), f.len(w.size.y), kFloor, kGrid);
+  s.add(R"(<rect x="{:.1f}" y="{:.1f}" width="{:.1f}" height="{:.1f}" rx="4" fill="{}" stroke="{}"/>)", f.x(-hw),
+        f.y(hh), f.len(w.size.x), f.len(w.size.y), kFloor, kGrid);
   s.add(R"(<g stroke="{}" stroke-width="0.8">)", kGrid);
   for (double gx = std::ceil(-hw / 0.5) * 0.5; gx < hw; gx += 0.5)
     s.add(R"(<line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}"/>)", f.x(gx), f.y(hh), f.x(gx), f.y(-hh));
@@ -85,8 +85,9 @@ void draw_line(Svg& s, const Frame& f, const Line& line) {
   if (line.points.empty()) return;
   std::string pts;
   for (const Vec2& p : line.points) pts += fmt::format("{:.1f},{:.1f} ", f.x(p.x), f.y(p.y));
-  s.add(R"(<{} points="{}" fill="none" stroke="{}" stroke-width="{:.1f}" stroke-linejoin="round" stroke-linecap="round"/>)",
-        line.closed ? "polygon" : "polyline", pts, kLineInk, f.len(line.width));
+  s.add(
+      R"(<{} points="{}" fill="none" stroke="{}" stroke-width="{:.1f}" stroke-linejoin="round" stroke-linecap="round"/>)",
+      line.closed ? "polygon" : "polyline", pts, kLineInk, f.len(line.width));
 }
 
 /// A box lower than the sonar is invisible to it: drawn paler, with a dashed edge.
@@ -94,27 +95,31 @@ bool low(const Box& b) { return b.height < model::kSonarZ; }
 
 void draw_solids(Svg& s, const Frame& f, const World& w) {
   for (const Box& b : w.boxes)
-    s.add(R"(<rect x="{:.1f}" y="{:.1f}" width="{:.1f}" height="{:.1f}" rx="2" fill="{}" fill-opacity="{}" stroke="{}" stroke-width="1.5"{}/>)",
-          f.x(b.center.x - b.size.x / 2), f.y(b.center.y + b.size.y / 2), f.len(b.size.x), f.len(b.size.y),
-          kBoxFill, low(b) ? "0.45" : "1", kBoxEdge, low(b) ? R"( stroke-dasharray="5 3")" : "");
+    s.add(
+        R"(<rect x="{:.1f}" y="{:.1f}" width="{:.1f}" height="{:.1f}" rx="2" fill="{}" fill-opacity="{}" stroke="{}" stroke-width="1.5"{}/>)",
+        f.x(b.center.x - b.size.x / 2), f.y(b.center.y + b.size.y / 2), f.len(b.size.x), f.len(b.size.y), kBoxFill,
+        low(b) ? "0.45" : "1", kBoxEdge, low(b) ? R"( stroke-dasharray="5 3")" : "");
   for (const Wall& wl : w.walls)
-    s.add(R"(<line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}" stroke="{}" stroke-width="{:.1f}" stroke-linecap="square"/>)",
-          f.x(wl.from.x), f.y(wl.from.y), f.x(wl.to.x), f.y(wl.to.y), kWallInk, f.len(wl.thickness));
+    s.add(
+        R"(<line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}" stroke="{}" stroke-width="{:.1f}" stroke-linecap="square"/>)",
+        f.x(wl.from.x), f.y(wl.from.y), f.x(wl.to.x), f.y(wl.to.y), kWallInk, f.len(wl.thickness));
 }
 
 void draw_destination(Svg& s, const Frame& f, Vec2 d) {
   const double x = f.x(d.x), y = f.y(d.y), r = std::max(6.0, f.len(0.10));
-  s.add(R"(<g stroke="{}" fill="none" stroke-width="2"><circle cx="{:.1f}" cy="{:.1f}" r="{:.1f}"/>)"
-        R"(<circle cx="{:.1f}" cy="{:.1f}" r="{:.1f}" stroke-dasharray="4 3"/>)"
-        R"(<line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}"/><line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}"/></g>)",
-        kDest, x, y, r * 0.45, x, y, r, x - r * 0.7, y, x + r * 0.7, y, x, y - r * 0.7, x, y + r * 0.7);
+  s.add(
+      R"(<g stroke="{}" fill="none" stroke-width="2"><circle cx="{:.1f}" cy="{:.1f}" r="{:.1f}"/>)"
+      R"(<circle cx="{:.1f}" cy="{:.1f}" r="{:.1f}" stroke-dasharray="4 3"/>)"
+      R"(<line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}"/><line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}"/></g>)",
+      kDest, x, y, r * 0.45, x, y, r, x - r * 0.7, y, x + r * 0.7, y, x, y - r * 0.7, x, y + r * 0.7);
 }
 
 void draw_item(Svg& s, const Frame& f, Vec2 at, bool ghost) {
   const double r = std::max(5.0, f.len(0.045));
   if (ghost)
-    s.add(R"(<circle cx="{:.1f}" cy="{:.1f}" r="{:.1f}" fill="none" stroke="{}" stroke-width="1.5" stroke-dasharray="3 2"/>)",
-          f.x(at.x), f.y(at.y), r, kItem);
+    s.add(
+        R"(<circle cx="{:.1f}" cy="{:.1f}" r="{:.1f}" fill="none" stroke="{}" stroke-width="1.5" stroke-dasharray="3 2"/>)",
+        f.x(at.x), f.y(at.y), r, kItem);
   else
     s.add(R"(<circle cx="{:.1f}" cy="{:.1f}" r="{:.1f}" fill="{}" stroke="#8a3f10" stroke-width="1.2"/>)", f.x(at.x),
           f.y(at.y), r, kItem);
@@ -126,8 +131,9 @@ void draw_items(Svg& s, const Frame& f, const RunReport& r) {
     const Item& spec = w.items[i];
     const ItemState& now = r.sim.items()[i];
     draw_destination(s, f, spec.destination);
-    s.add(R"(<line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}" stroke="{}" stroke-width="1" stroke-dasharray="2 4"/>)",
-          f.x(spec.at.x), f.y(spec.at.y), f.x(spec.destination.x), f.y(spec.destination.y), kMuted);
+    s.add(
+        R"(<line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}" stroke="{}" stroke-width="1" stroke-dasharray="2 4"/>)",
+        f.x(spec.at.x), f.y(spec.at.y), f.x(spec.destination.x), f.y(spec.destination.y), kMuted);
     draw_item(s, f, spec.at, true);
     draw_item(s, f, now.at, false);
     s.add(R"(<text x="{:.1f}" y="{:.1f}" font-size="13" fill="{}">{}</text>)", f.x(now.at.x) + 9, f.y(now.at.y) - 9,
@@ -159,7 +165,8 @@ std::vector<std::string> actor_names() {
 }
 
 const char* actor_colour(const std::string& name) {
-  static const char* const kPalette[] = {"#1f6fd1", "#2e9e5b", "#7b4fc9", "#e8772e", "#16a3a3", "#a0522d", "#d6409f", "#6b6b6b"};
+  static const char* const kPalette[] = {"#1f6fd1", "#2e9e5b", "#7b4fc9", "#e8772e",
+                                         "#16a3a3", "#a0522d", "#d6409f", "#6b6b6b"};
   const auto names = actor_names();
   const size_t i = std::find(names.begin(), names.end(), name) - names.begin();
   return kPalette[i % (sizeof kPalette / sizeof kPalette[0])];
@@ -177,8 +184,9 @@ void draw_path(Svg& s, const Frame& f, const RunReport& r) {
   Vec2 last{1e9, 1e9};
   auto flush = [&] {
     if (!pts.empty())
-      s.add(R"(<polyline points="{}" fill="none" stroke="{}" stroke-width="2.2" stroke-opacity="0.85" stroke-linejoin="round"/>)",
-            pts, colour);
+      s.add(
+          R"(<polyline points="{}" fill="none" stroke="{}" stroke-width="2.2" stroke-opacity="0.85" stroke-linejoin="round"/>)",
+          pts, colour);
   };
   for (size_t i = 0; i < trace.size(); ++i) {
     const Vec2 p{trace[i].x, trace[i].y};
@@ -217,9 +225,10 @@ void draw_path(Svg& s, const Frame& f, const RunReport& r) {
 }
 
 void draw_scale_bar(Svg& s, const Frame& f, double x, double y) {
-  s.add(R"(<g stroke="{}" stroke-width="2"><line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}"/>)"
-        R"(<line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}"/><line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}"/></g>)",
-        kText, x, y, x + f.len(1), y, x, y - 5, x, y + 5, x + f.len(1), y - 5, x + f.len(1), y + 5);
+  s.add(
+      R"(<g stroke="{}" stroke-width="2"><line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}"/>)"
+      R"(<line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}"/><line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}"/></g>)",
+      kText, x, y, x + f.len(1), y, x, y - 5, x, y + 5, x + f.len(1), y - 5, x + f.len(1), y + 5);
   s.add(R"(<text x="{:.1f}" y="{:.1f}" font-size="12" fill="{}" text-anchor="middle">1 m</text>)", x + f.len(0.5),
         y - 8, kText);
 }
@@ -232,17 +241,18 @@ void draw_legend(Svg& s, double x, double y, double right, const RunReport& r) {
   };
   std::vector<Entry> entries;
   if (actor_names().empty())
-    entries.push_back({fmt::format(R"(<line x1="0" y1="0" x2="22" y2="0" stroke="{}" stroke-width="3"/>)", kPath),
-                       "robot path"});
+    entries.push_back(
+        {fmt::format(R"(<line x1="0" y1="0" x2="22" y2="0" stroke="{}" stroke-width="3"/>)", kPath), "robot path"});
   for (const std::string& actor : actor_names())
     entries.push_back(
         {fmt::format(R"(<line x1="0" y1="0" x2="22" y2="0" stroke="{}" stroke-width="3"/>)", actor_colour(actor)),
          actor});
-  entries.push_back({fmt::format(R"(<circle cx="11" cy="0" r="5" fill="#fff" stroke="{}" stroke-width="3"/>)", kPath),
-                     "start"});
   entries.push_back(
-      {fmt::format(R"(<rect x="3" y="-6" width="16" height="12" fill="{}" fill-opacity="0.18" stroke="{}" stroke-width="2"/>)",
-                   kPath, kPath),
+      {fmt::format(R"(<circle cx="11" cy="0" r="5" fill="#fff" stroke="{}" stroke-width="3"/>)", kPath), "start"});
+  entries.push_back(
+      {fmt::format(
+           R"(<rect x="3" y="-6" width="16" height="12" fill="{}" fill-opacity="0.18" stroke="{}" stroke-width="2"/>)",
+           kPath, kPath),
        "robot at the end"});
   if (!w.line.points.empty())
     entries.push_back(
@@ -251,32 +261,32 @@ void draw_legend(Svg& s, double x, double y, double right, const RunReport& r) {
     entries.push_back(
         {fmt::format(R"(<line x1="0" y1="0" x2="22" y2="0" stroke="{}" stroke-width="6"/>)", kWallInk), "wall"});
   if (std::any_of(w.boxes.begin(), w.boxes.end(), [](const Box& b) { return !low(b); }))
-    entries.push_back({fmt::format(R"(<rect x="2" y="-7" width="18" height="14" fill="{}" stroke="{}"/>)", kBoxFill,
-                                   kBoxEdge),
-                       "box"});
+    entries.push_back(
+        {fmt::format(R"(<rect x="2" y="-7" width="18" height="14" fill="{}" stroke="{}"/>)", kBoxFill, kBoxEdge),
+         "box"});
   if (std::any_of(w.boxes.begin(), w.boxes.end(), low))
     entries.push_back(
-        {fmt::format(R"(<rect x="2" y="-7" width="18" height="14" fill="{}" fill-opacity="0.45" stroke="{}" stroke-dasharray="5 3"/>)",
-                     kBoxFill, kBoxEdge),
+        {fmt::format(
+             R"(<rect x="2" y="-7" width="18" height="14" fill="{}" fill-opacity="0.45" stroke="{}" stroke-dasharray="5 3"/>)",
+             kBoxFill, kBoxEdge),
          "low box (under the sonar)"});
   if (!w.items.empty()) {
     entries.push_back({fmt::format(R"(<circle cx="11" cy="0" r="6" fill="{}"/>)", kItem), "item"});
     entries.push_back(
         {fmt::format(R"(<circle cx="11" cy="0" r="6" fill="none" stroke="{}" stroke-dasharray="3 2"/>)", kItem),
          "item at the start"});
-    entries.push_back(
-        {fmt::format(R"(<circle cx="11" cy="0" r="7" fill="none" stroke="{}" stroke-width="2"/>)", kDest),
-         "destination"});
+    entries.push_back({fmt::format(R"(<circle cx="11" cy="0" r="7" fill="none" stroke="{}" stroke-width="2"/>)", kDest),
+                       "destination"});
   }
   if (r.sim.bumps() > 0)
-    entries.push_back({fmt::format(R"(<path d="M6,-5 l10,10 m0,-10 l-10,10" stroke="{}" stroke-width="3"/>)", kBump),
-                       "bump"});
+    entries.push_back(
+        {fmt::format(R"(<path d="M6,-5 l10,10 m0,-10 l-10,10" stroke="{}" stroke-width="3"/>)", kBump), "bump"});
   double cx = x;
   for (const Entry& e : entries) {
     const double w = 40 + 7.2 * e.label.size();
     if (cx > x && cx + w > right) cx = x, y += 24;  // wrap to a second row
-    s.add(R"~(<g transform="translate({:.1f},{:.1f})">{}<text x="28" y="4" font-size="13" fill="{}">{}</text></g>)~", cx,
-          y, e.swatch, kText, escape_xml(e.label));
+    s.add(R"~(<g transform="translate({:.1f},{:.1f})">{}<text x="28" y="4" font-size="13" fill="{}">{}</text></g>)~",
+          cx, y, e.swatch, kText, escape_xml(e.label));
     cx += w;
   }
 }
@@ -297,14 +307,15 @@ std::string svg_picture(const RunReport& r) {
   f.oy = kTitle + f.len(w.size.y) / 2;
 
   Svg s;
-  s.add(R"(<svg xmlns="http://www.w3.org/2000/svg" width="{:.0f}" height="{:.0f}" viewBox="0 0 {:.0f} {:.0f}" font-family="DejaVu Sans, Helvetica, Arial, sans-serif">)",
-        width, height, width, height);
+  s.add(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="{:.0f}" height="{:.0f}" viewBox="0 0 {:.0f} {:.0f}" font-family="DejaVu Sans, Helvetica, Arial, sans-serif">)",
+      width, height, width, height);
   s.add("<title>{}</title>", escape_xml(title));
   s.add(R"(<rect width="100%" height="100%" fill="{}"/>)", kPage);
   s.add(R"(<text x="{:.0f}" y="28" font-size="20" font-weight="bold" fill="{}">{}</text>)", kMargin, kText,
         escape_xml(heading));
-  std::string facts = fmt::format("{:.2f} m driven · {} bump{}", r.sim.odometer(), r.sim.bumps(),
-                                  r.sim.bumps() == 1 ? "" : "s");
+  std::string facts =
+      fmt::format("{:.2f} m driven · {} bump{}", r.sim.odometer(), r.sim.bumps(), r.sim.bumps() == 1 ? "" : "s");
   for (const ItemState& it : r.sim.items())
     facts += fmt::format(" · {} {:.2f} m from its destination{}", it.name, distance(it.at, it.destination),
                          it.held ? " (held)" : "");

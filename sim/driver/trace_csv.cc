@@ -19,7 +19,7 @@ std::string trace_csv(const RunReport& r) {
         const int a = active[k][i];
         out += (i ? " " : "");
         out += a >= 0 && a < static_cast<int>(r.chart.rows.size()) ? r.chart.rows[static_cast<std::size_t>(a)].name
-                                                                    : std::to_string(a);
+                                                                   : std::to_string(a);
       }
     out += '\n';
   }

@@ -30,9 +30,12 @@ json world_json(const World& w) {
   }
   json walls = json::array(), boxes = json::array();
   for (const Wall& wl : w.walls)
-    walls.push_back({{"from", point(wl.from)}, {"to", point(wl.to)}, {"thickness", wl.thickness}, {"height", wl.height}});
-  for (const Box& b : w.boxes) boxes.push_back({{"center", point(b.center)}, {"size", point(b.size)}, {"height", b.height}});
-  return {{"name", w.name}, {"file", w.path}, {"size", point(w.size)}, {"line", line}, {"walls", walls}, {"boxes", boxes}};
+    walls.push_back(
+        {{"from", point(wl.from)}, {"to", point(wl.to)}, {"thickness", wl.thickness}, {"height", wl.height}});
+  for (const Box& b : w.boxes)
+    boxes.push_back({{"center", point(b.center)}, {"size", point(b.size)}, {"height", b.height}});
+  return {{"name", w.name}, {"file", w.path}, {"size", point(w.size)},
+          {"line", line},   {"walls", walls}, {"boxes", boxes}};
 }
 
 /// The path as delta-coded integers (mm and 0.01 degree): a 120 s run at 10 ms is 12,001 poses.
@@ -79,8 +82,8 @@ json viewer_data(const RunReport& r, const std::string& chart_svg, const std::st
   for (const SimNote& n : sim.notes()) events.emplace_back(frame_of(n.t), "note", n.text);
   for (std::size_t i = 0; i < engine_log().size() && i < rec.log_frames.size(); ++i) {
     const std::string& text = engine_log()[i].text;
-    const std::string kind = text.rfind("state ", 0) == 0                    ? "state"
-                             : text.rfind("start ", 0) == 0                  ? "actor"
+    const std::string kind = text.rfind("state ", 0) == 0                         ? "state"
+                             : text.rfind("start ", 0) == 0                       ? "actor"
                              : text.find(" interrupted by ") != std::string::npos ? "supervisor"
                                                                                   : "note";
     events.emplace_back(rec.log_frames[i], kind, text);
@@ -98,7 +101,9 @@ json viewer_data(const RunReport& r, const std::string& chart_svg, const std::st
       // While held the item is drawn at the gripper, from the pose: no entry per tick.
       track.record(k, it.held ? json::array({1}) : json::array({0, r4(it.at.x), r4(it.at.y)}));
     }
-    items.push_back({{"name", first[i].name}, {"at", point(first[i].at)}, {"destination", point(first[i].destination)},
+    items.push_back({{"name", first[i].name},
+                     {"at", point(first[i].at)},
+                     {"destination", point(first[i].destination)},
                      {"track", track.json()}});
   }
   json status = json::array({json::array({0, "running"})});
@@ -116,11 +121,12 @@ json viewer_data(const RunReport& r, const std::string& chart_svg, const std::st
   return {
       {"format", 1},
       {"tool", "carbot-sim"},
-      {"title", fmt::format("{} ({}) on {}: {} at {:.2f} s", r.chart.name, r.chart.kind, sim.world().name,
-                            r.run.status, sim.time())},
-      {"subtitle", fmt::format("carbot-sim {} --world {} \u00b7 {} ticks of {:g} ms \u00b7 {:.2f} m driven \u00b7 {} bump{}",
-                               r.chart_file, sim.world().path, frames, period * 1000, sim.odometer(), sim.bumps(),
-                               sim.bumps() == 1 ? "" : "s")},
+      {"title", fmt::format("{} ({}) on {}: {} at {:.2f} s", r.chart.name, r.chart.kind, sim.world().name, r.run.status,
+                            sim.time())},
+      {"subtitle",
+       fmt::format("carbot-sim {} --world {} \u00b7 {} ticks of {:g} ms \u00b7 {:.2f} m driven \u00b7 {} bump{}",
+                   r.chart_file, sim.world().path, frames, period * 1000, sim.odometer(), sim.bumps(),
+                   sim.bumps() == 1 ? "" : "s")},
       {"chart", {{"name", r.chart.name}, {"kind", r.chart.kind}, {"file", r.chart_file}}},
       {"period", period},
       {"frames", frames},

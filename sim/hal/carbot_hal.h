@@ -19,8 +19,8 @@ extern "C" {
 enum { CARBOT_LEFT = 0, CARBOT_RIGHT = 1 };
 
 /* --- time ------------------------------------------------------------------------------- */
-double carbot_time(void);            /* simulated seconds since the start */
-double carbot_control_period(void);  /* seconds between two calls of the engine */
+double carbot_time(void);           /* simulated seconds since the start */
+double carbot_control_period(void); /* seconds between two calls of the engine */
 
 /* --- motion ----------------------------------------------------------------------------- */
 /* Chassis motion: forward speed (m/s) and turn rate (rad/s, + = left). The wheels steer and
@@ -30,16 +30,16 @@ double carbot_top_speed(void);
 
 /* --- localisation (an overhead tracker: the true pose) ----------------------------------- */
 typedef struct CarbotPose {
-  double x, y;      /* chassis centre, m */
-  double heading;   /* rad, CCW from +x */
+  double x, y;    /* chassis centre, m */
+  double heading; /* rad, CCW from +x */
 } CarbotPose;
 CarbotPose carbot_pose(void);
-double carbot_speed(void);           /* measured forward speed, m/s */
-double carbot_odometer(void);        /* metres driven so far */
+double carbot_speed(void);    /* measured forward speed, m/s */
+double carbot_odometer(void); /* metres driven so far */
 
 /* --- sensors ---------------------------------------------------------------------------- */
-bool carbot_ir_black(int side);      /* infrared line sensor CARBOT_LEFT / CARBOT_RIGHT */
-double carbot_sonar_range(void);     /* ultrasonic range, m; carbot_sonar_max() when no echo */
+bool carbot_ir_black(int side);  /* infrared line sensor CARBOT_LEFT / CARBOT_RIGHT */
+double carbot_sonar_range(void); /* ultrasonic range, m; carbot_sonar_max() when no echo */
 double carbot_sonar_max(void);
 void carbot_sonar_aim(double angle); /* turn the mount (rad, relative to the heading) */
 double carbot_sonar_angle(void);     /* where the mount points now */
@@ -49,18 +49,18 @@ bool carbot_escape(void);            /* escape button held down */
 
 /* --- items and gripper (the world's items, seen by an overhead camera) --------------------- */
 typedef struct CarbotItem {
-  const char *name;
-  double x, y;          /* where it is (in the gripper while held) */
-  double dest_x, dest_y;/* where it belongs */
+  const char* name;
+  double x, y;           /* where it is (in the gripper while held) */
+  double dest_x, dest_y; /* where it belongs */
   bool held;
 } CarbotItem;
 int carbot_item_count(void);
 CarbotItem carbot_item(int index);
-void carbot_gripper_point(double *x, double *y);
-double carbot_grip_reach(void);      /* an item this close to the gripper point can be gripped */
-bool carbot_grip(int index);         /* true if now holding it */
-void carbot_release(void);           /* put the held item down under the gripper */
-int carbot_held_item(void);          /* index, or -1 */
+void carbot_gripper_point(double* x, double* y);
+double carbot_grip_reach(void); /* an item this close to the gripper point can be gripped */
+bool carbot_grip(int index);    /* true if now holding it */
+void carbot_release(void);      /* put the held item down under the gripper */
+int carbot_held_item(void);     /* index, or -1 */
 
 #ifdef __cplusplus
 }

@@ -14,21 +14,21 @@
 
 #include "hal/carbot_hal.h"
 
-#define CLEANBOT_CRUISE 0.25        /* m/s when far from the goal */
-#define CLEANBOT_SLOW 0.05          /* m/s creeping in on the goal */
-#define CLEANBOT_TURN_GAIN 2.0      /* turn rate per radian of heading error */
-#define CLEANBOT_MAX_TURN 1.5       /* rad/s */
-#define CLEANBOT_TURN_IN_PLACE 0.6  /* rad: a larger heading error turns on the spot */
-#define CLEANBOT_ARRIVED 0.05       /* m: gripper point this close to the goal */
-#define CLEANBOT_AT_DESTINATION 0.10/* m: an item this close to its destination is there */
-#define CLEANBOT_FAR 0.25           /* m: FarFromDestination beyond this */
-#define CLEANBOT_HANDLE_TIME 0.5    /* s to close or open the gripper */
-#define CLEANBOT_STUCK_TIME 8.0     /* s without 2 cm of progress towards the goal */
-#define CLEANBOT_PROGRESS 0.02      /* m */
+#define CLEANBOT_CRUISE 0.25         /* m/s when far from the goal */
+#define CLEANBOT_SLOW 0.05           /* m/s creeping in on the goal */
+#define CLEANBOT_TURN_GAIN 2.0       /* turn rate per radian of heading error */
+#define CLEANBOT_MAX_TURN 1.5        /* rad/s */
+#define CLEANBOT_TURN_IN_PLACE 0.6   /* rad: a larger heading error turns on the spot */
+#define CLEANBOT_ARRIVED 0.05        /* m: gripper point this close to the goal */
+#define CLEANBOT_AT_DESTINATION 0.10 /* m: an item this close to its destination is there */
+#define CLEANBOT_FAR 0.25            /* m: FarFromDestination beyond this */
+#define CLEANBOT_HANDLE_TIME 0.5     /* s to close or open the gripper */
+#define CLEANBOT_STUCK_TIME 8.0      /* s without 2 cm of progress towards the goal */
+#define CLEANBOT_PROGRESS 0.02       /* m */
 
 enum Goal { GOAL_NONE, GOAL_ITEM, GOAL_DESTINATION };
 
-static int item = -1;            /* the item being cleaned up, -1 none chosen */
+static int item = -1; /* the item being cleaned up, -1 none chosen */
 static enum Goal goal = GOAL_NONE;
 static double handle_since = -1; /* when the gripper started closing/opening, -1 idle */
 static bool placed = false;      /* the last PlaceItem put the item down */
@@ -60,7 +60,7 @@ static int current_item(void) {
 }
 
 /* Where the active goal is; false if there is none. */
-static bool goal_point(double *x, double *y) {
+static bool goal_point(double* x, double* y) {
   const int i = current_item();
   if (i < 0 || goal == GOAL_NONE) return false;
   const CarbotItem it = carbot_item(i);
@@ -103,7 +103,7 @@ static void go_to(double x, double y) {
   error = atan2(sin(error), cos(error));
   watch_progress(dist(gx, gy, x, y));
 
-  if (centre_distance < reach * 0.9) {  /* too close to turn onto it: back off */
+  if (centre_distance < reach * 0.9) { /* too close to turn onto it: back off */
     carbot_drive(-0.10, 0);
     return;
   }
@@ -151,7 +151,7 @@ void PickUp(void) {
     carbot_drive(0, 0);
     return;
   }
-  if (!Arrived()) {  /* the item is not (or no longer) in reach: fetch it first */
+  if (!Arrived()) { /* the item is not (or no longer) in reach: fetch it first */
     handle_since = -1;
     go_to(x, y);
     return;

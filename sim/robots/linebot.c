@@ -30,9 +30,7 @@ void linebot_reset(void) {
   right_speed = 0;
 }
 
-static void apply(void) {
-  carbot_drive((left_speed + right_speed) / 2, (right_speed - left_speed) / LINEBOT_TRACK);
-}
+static void apply(void) { carbot_drive((left_speed + right_speed) / 2, (right_speed - left_speed) / LINEBOT_TRACK); }
 
 bool Left_IR_Black(void) { return carbot_ir_black(CARBOT_LEFT); }
 bool Left_IR_White(void) { return !carbot_ir_black(CARBOT_LEFT); }

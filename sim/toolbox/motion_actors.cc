@@ -7,16 +7,16 @@
 namespace carbot::toolbox {
 namespace {
 
-constexpr double kCruise = 0.25;        ///< m/s
-constexpr double kCreep = 0.04;         ///< m/s, the slowest approach
-constexpr double kDone = 0.005;         ///< m: Forward is done this close
-constexpr double kStall = 2.0;          ///< s without 1 cm of progress: blocked, give up
-constexpr double kProgress = 0.01;      ///< m
-constexpr double kHeadingGain = 2.0;    ///< rad/s per rad of heading error
-constexpr double kTurnGain = 2.5;       ///< rad/s per rad still to turn
-constexpr double kTurnMax = 1.2;        ///< rad/s
-constexpr double kTurnMin = 0.12;       ///< rad/s, so the last degrees do not take forever
-constexpr double kTurnDone = 0.012;     ///< rad (~0.7 deg)
+constexpr double kCruise = 0.25;      ///< m/s
+constexpr double kCreep = 0.04;       ///< m/s, the slowest approach
+constexpr double kDone = 0.005;       ///< m: Forward is done this close
+constexpr double kStall = 2.0;        ///< s without 1 cm of progress: blocked, give up
+constexpr double kProgress = 0.01;    ///< m
+constexpr double kHeadingGain = 2.0;  ///< rad/s per rad of heading error
+constexpr double kTurnGain = 2.5;     ///< rad/s per rad still to turn
+constexpr double kTurnMax = 1.2;      ///< rad/s
+constexpr double kTurnMin = 0.12;     ///< rad/s, so the last degrees do not take forever
+constexpr double kTurnDone = 0.012;   ///< rad (~0.7 deg)
 
 double wrap(double a) { return std::atan2(std::sin(a), std::cos(a)); }
 

@@ -16,9 +16,10 @@ static void phase(Simulation& sim, const char* what, double v, double w, double 
   sim.drive(v, w);
   while (sim.time() < t0 + seconds - 1e-9) sim.step_control();
   const Pose b = sim.pose();
-  std::printf("%-22s cmd v=%5.2f w=%5.2f | moved %6.3f m, turned %7.2f deg, v=%5.3f w=%6.3f, pose (%.3f, %.3f, %.1f deg)\n",
-              what, v, w, distance({a.x, a.y}, {b.x, b.y}), deg(wrap_angle(b.heading - a.heading)),
-              sim.forward_speed(), sim.turn_rate(), b.x, b.y, deg(b.heading));
+  std::printf(
+      "%-22s cmd v=%5.2f w=%5.2f | moved %6.3f m, turned %7.2f deg, v=%5.3f w=%6.3f, pose (%.3f, %.3f, %.1f deg)\n",
+      what, v, w, distance({a.x, a.y}, {b.x, b.y}), deg(wrap_angle(b.heading - a.heading)), sim.forward_speed(),
+      sim.turn_rate(), b.x, b.y, deg(b.heading));
 }
 
 int main(int argc, char** argv) {

@@ -19,27 +19,26 @@ extern unsigned long bench_tick, bench_sum;
 
 /* Room for the engine's state, aligned for anything it holds. */
 static union {
-    long double d;
-    void *p;
-    unsigned long long u;
-    unsigned char bytes[1 << 22];
+  long double d;
+  void *p;
+  unsigned long long u;
+  unsigned char bytes[1 << 22];
 } state;
 
-int main(int argc, char **argv)
-{
-    long ticks = argc > 1 ? atol(argv[1]) : 1000000;
-    struct timespec start, end;
-    double ns;
-    long i;
-    CHART *m = (CHART *)(void *)&state;
-    NAME(CHART, _init)(m);
-    clock_gettime(CLOCK_MONOTONIC, &start);
-    for (i = 0; i < ticks; ++i) {
-        ++bench_tick;
-        NAME(CHART, _run)(m);
-    }
-    clock_gettime(CLOCK_MONOTONIC, &end);
-    ns = (double)(end.tv_sec - start.tv_sec) * 1e9 + (double)(end.tv_nsec - start.tv_nsec);
-    printf("%.2f %lu\n", ns / (double)ticks, bench_sum);
-    return 0;
+int main(int argc, char **argv) {
+  long ticks = argc > 1 ? atol(argv[1]) : 1000000;
+  struct timespec start, end;
+  double ns;
+  long i;
+  CHART *m = (CHART *)(void *)&state;
+  NAME(CHART, _init)(m);
+  clock_gettime(CLOCK_MONOTONIC, &start);
+  for (i = 0; i < ticks; ++i) {
+    ++bench_tick;
+    NAME(CHART, _run)(m);
+  }
+  clock_gettime(CLOCK_MONOTONIC, &end);
+  ns = (double)(end.tv_sec - start.tv_sec) * 1e9 + (double)(end.tv_nsec - start.tv_nsec);
+  printf("%.2f %lu\n", ns / (double)ticks, bench_sum);
+  return 0;
 }

@@ -31,11 +31,10 @@ void put(const std::string &s) {
 void flush() { std::fwrite(out.data(), 1, out.size(), stdout); }
 std::string num(long v) { return std::to_string(v); }
 
-const char *kInterface =
-    "interface Bench {\n"
-    "  bool Go(int i);   // a sensing function: the condition of a transition\n"
-    "  void Act(int i);  // an action function: the action of a place\n"
-    "}\n\n";
+const char *kInterface = "interface Bench {\n"
+                         "  bool Go(int i);   // a sensing function: the condition of a transition\n"
+                         "  void Act(int i);  // an action function: the action of a place\n"
+                         "}\n\n";
 
 /// Ring: P0 (initial) -> P1 -> ... -> P(N-1) -> P0, transition Ti leaves Pi when Go(i), and
 /// each place calls Act(i). One token circulates: the active part is one place.
@@ -123,7 +122,7 @@ int usage() {
   return 2;
 }
 
-} // namespace
+}  // namespace
 
 int main(int argc, char **argv) {
   if (argc < 4) return usage();
@@ -131,12 +130,9 @@ int main(int argc, char **argv) {
   long n = std::atol(argv[3]);
   bool backwards = argc > 4 && std::strcmp(argv[4], "--backwards") == 0;
   if (n < 2 || (what != "chart" && what != "hand")) return usage();
-  if (shape == "ring")
-    what == "chart" ? ring_chart(n, backwards) : ring_hand(n);
-  else if (shape == "branches")
-    what == "chart" ? branches_chart(n) : branches_hand(n);
-  else
-    return usage();
+  if (shape == "ring") what == "chart" ? ring_chart(n, backwards) : ring_hand(n);
+  else if (shape == "branches") what == "chart" ? branches_chart(n) : branches_hand(n);
+  else return usage();
   flush();
   return 0;
 }

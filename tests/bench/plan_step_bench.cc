@@ -69,7 +69,7 @@ double executor_ns(long steps, int supervisors, bool handover) {
   return s * 1e9 / static_cast<double>(steps);
 }
 
-} // namespace
+}  // namespace
 
 int main(int argc, char **argv) {
   long steps = argc > 1 ? std::atol(argv[1]) : 2000000;

@@ -29,7 +29,7 @@ struct Run {
   }
 };
 
-} // namespace
+}  // namespace
 
 TEST_CASE("columns: bytes for gcc's byte-column, code points for SARIF, tabs to 8 for display") {
   SourceFile f("t.sfc", "\tplace A;\n// \xC3\xA9t\xC3\xA9 X\n");
@@ -114,7 +114,7 @@ struct Validated {
 const char *kTypo = "sfc T {\n  initial place Start;\n  place Stopped;\n"
                     "  transition Start -> Stoped when true;\n  transition Stopped -> Start when true;\n}\n";
 
-} // namespace
+}  // namespace
 
 TEST_CASE("text diagnostics: gcc 12's gutter, the fix-it under the caret, parseable fix-its") {
   Validated r("t.sfc", kTypo);
@@ -127,19 +127,19 @@ TEST_CASE("text diagnostics: gcc 12's gutter, the fix-it under the caret, parsea
   gcc12.line_numbers = true;
   gcc12.fixits = true;
   gcc12.parseable_fixits = true;
-  CHECK(render_text(d, r.sources, gcc12) ==
-        "t.sfc:4:23: error: unknown place 'Stoped' [unknown-name]\n"
-        "    4 |   transition Start -> Stoped when true;\n"
-        "      |                       ^~~~~~\n"
-        "      |                       Stopped\n"
-        "fix-it:\"t.sfc\":{4:23-4:29}:\"Stopped\"\n"
-        "t.sfc:3:9: note: did you mean 'Stopped'?\n"
-        "    3 |   place Stopped;\n"
-        "      |         ^~~~~~~\n");
+  CHECK(render_text(d, r.sources, gcc12) == "t.sfc:4:23: error: unknown place 'Stoped' [unknown-name]\n"
+                                            "    4 |   transition Start -> Stoped when true;\n"
+                                            "      |                       ^~~~~~\n"
+                                            "      |                       Stopped\n"
+                                            "fix-it:\"t.sfc\":{4:23-4:29}:\"Stopped\"\n"
+                                            "t.sfc:3:9: note: did you mean 'Stopped'?\n"
+                                            "    3 |   place Stopped;\n"
+                                            "      |         ^~~~~~~\n");
   // The default (what the unit tests compare) has no gutter and no fix-it lines.
-  CHECK(render_text(d, r.sources).rfind("t.sfc:4:23: error: unknown place 'Stoped' [unknown-name]\n"
-                                        "   transition Start -> Stoped when true;\n",
-                                        0) == 0);
+  CHECK(render_text(d, r.sources)
+            .rfind("t.sfc:4:23: error: unknown place 'Stoped' [unknown-name]\n"
+                   "   transition Start -> Stoped when true;\n",
+                   0) == 0);
 }
 
 TEST_CASE("text diagnostics: colours as gcc's defaults, only when asked") {
@@ -222,7 +222,7 @@ std::string first_error(const std::string &text, MemoryFileSystem fs = {}) {
   return render_text(diag.all().front(), sources, style);
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("beginner hints: a fork or join without brackets says to write (B, C)") {
   std::string fork = first_error("sfc T {\n  initial place A;\n  place B;\n  place C;\n  A -> B, C;\n}\n");
@@ -261,11 +261,13 @@ TEST_CASE("did-you-mean for imports: the nearest file name in the folders search
   CHECK(e.find("note: did you mean 'crossing.iface'?") != std::string::npos);
   CHECK(e.find("fix-it:\"t.sfc\":{1:8-1:23}:\"\\\"crossing.iface\\\"\"") != std::string::npos);
   // Nothing near: no suggestion.
-  CHECK(first_error("import \"zzz.iface\";\nsfc T { initial place A; }\n", fs).find("did you mean") == std::string::npos);
+  CHECK(first_error("import \"zzz.iface\";\nsfc T { initial place A; }\n", fs).find("did you mean") ==
+        std::string::npos);
 }
 
 TEST_CASE("the table of diagnostic kinds: every kind named once, described, with help, and documented") {
-  REQUIRE(diagnostic_kind_count() == static_cast<std::size_t>(ErrorKind::Count_) + static_cast<std::size_t>(Warning::Count_));
+  REQUIRE(diagnostic_kind_count() ==
+          static_cast<std::size_t>(ErrorKind::Count_) + static_cast<std::size_t>(Warning::Count_));
   std::ifstream doc_file(std::string(GFEC_SOURCE_DIR) + "/docs/diagnostics.md");
   REQUIRE(doc_file);
   std::string doc((std::istreambuf_iterator<char>(doc_file)), std::istreambuf_iterator<char>());
@@ -299,7 +301,8 @@ TEST_CASE("sarif rules: every kind is a rule with its summary, help and default 
   CHECK(syntax["shortDescription"]["text"] == std::string(kind_info(ErrorKind::Syntax).summary));
   CHECK(syntax["help"]["text"] == std::string(kind_info(ErrorKind::Syntax).help));
   CHECK(syntax["defaultConfiguration"]["level"] == "error");
-  const Json &conflict = rules[static_cast<std::size_t>(ErrorKind::Count_) + static_cast<std::size_t>(Warning::Conflict)];
+  const Json &conflict =
+      rules[static_cast<std::size_t>(ErrorKind::Count_) + static_cast<std::size_t>(Warning::Conflict)];
   CHECK(conflict["id"] == "-Wconflict");
   CHECK(conflict["defaultConfiguration"]["level"] == "warning");
   CHECK(conflict["defaultConfiguration"]["enabled"] == false);
@@ -314,6 +317,6 @@ TEST_CASE("diagnostics are reported in source order: by file as loaded, then by 
   diag.error({0, 40, 42}, ErrorKind::TypeMismatch, "fourth: same place, found later");
   std::vector<std::string> order;
   for (const Diagnostic *d : in_source_order(diag)) order.push_back(d->message);
-  CHECK(order == std::vector<std::string>{"first", "second", "third", "fourth: same place, found later",
-                                          "fifth: another file"});
+  CHECK(order ==
+        std::vector<std::string>{"first", "second", "third", "fourth: same place, found later", "fifth: another file"});
 }

@@ -14,7 +14,7 @@ ParsedCommandLine parse(std::vector<const char *> args) {
   return parse_command_line(static_cast<int>(args.size()), args.data());
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("options: -MD -MF -MP -MT as gcc spells them") {
   auto cl = parse({"-MD", "-MF", "deps/x.d", "-MP", "-MT", "fw/engine.c", "x.sfc", "-o", "engine.c"});

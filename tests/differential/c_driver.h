@@ -23,4 +23,4 @@ struct DriverCase {
 /// driver.c for the batch; each case prints `case <id>` before its log.
 std::string driver_source(const std::vector<DriverCase> &cases);
 
-} // namespace gfec::diff
+}  // namespace gfec::diff

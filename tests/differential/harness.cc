@@ -85,7 +85,7 @@ std::map<int, std::string> sections(const std::string &out) {
   return by_case;
 }
 
-} // namespace
+}  // namespace
 
 const char *verdict_name(Verdict v) {
   switch (v) {
@@ -146,7 +146,8 @@ Outcome Harness::prepare(Case &c) const {
   interp::InputTrace trace(p->model, p->sources, csv, trace_diag);
   if (trace_diag.has_errors()) return {Verdict::Invalid, printed(trace_diag, p->sources), ""};
   Diagnostics run_diag;
-  interp::RunResult r = interp::run_chart(p->model, root, trace, static_cast<std::uint64_t>(c.trace.ticks), {}, run_diag);
+  interp::RunResult r =
+      interp::run_chart(p->model, root, trace, static_cast<std::uint64_t>(c.trace.ticks), {}, run_diag);
   if (!r.completed) return {Verdict::Undefined, printed(run_diag, p->sources), ""};
   p->expected_plain = r.log.render({false, false, false});
   p->expected_hooks = r.log.render({true, false, false});
@@ -160,9 +161,7 @@ Outcome Harness::prepare(Case &c) const {
   o.engine = scalable_form(c) ? EngineForm::Scalable : EngineForm::Readable;
   try {
     p->engine = emit_to_memory(*make_c_backend(), p->model, o);
-  } catch (const std::exception &e) {
-    return {Verdict::Crash, fmt::format("the C back end threw: {}", e.what()), ""};
-  }
+  } catch (const std::exception &e) { return {Verdict::Crash, fmt::format("the C back end threw: {}", e.what()), ""}; }
   const model::Chart &compiled = p->model.charts[static_cast<std::size_t>(root)];
   for (const auto &pl : compiled.places) p->places.push_back(pl.name);
   for (const auto &t : compiled.transitions) p->transitions.push_back(t.name);
@@ -218,7 +217,8 @@ std::vector<Outcome> Harness::run_batch(const std::vector<Case *> &batch, const 
   bool crashed_seen = false;
   for (std::size_t i = 0; i < batch.size(); ++i) {
     const Case &c = *batch[i];
-    std::string expected = fmt::format("case {}\n", c.id) + (config.hooks ? c.prepared->expected_hooks : c.prepared->expected_plain);
+    std::string expected =
+        fmt::format("case {}\n", c.id) + (config.hooks ? c.prepared->expected_hooks : c.prepared->expected_plain);
     auto it = by_case.find(c.id);
     if (it == by_case.end()) {
       if (status != 0 && crashed_seen) {  // never reached: the program died before it
@@ -269,7 +269,8 @@ std::vector<Outcome> Harness::lint_batch(const std::vector<Case *> &batch, const
     std::string name = engine_name(*batch[i]), mine;
     std::istringstream in(found);
     for (std::string line; std::getline(in, line);)
-      if (line.rfind(name + ":", 0) == 0 || line.rfind(fmt::format("case_{}.h:", batch[i]->id), 0) == 0) mine += line + "\n";
+      if (line.rfind(name + ":", 0) == 0 || line.rfind(fmt::format("case_{}.h:", batch[i]->id), 0) == 0)
+        mine += line + "\n";
     if (!mine.empty()) outcomes[i] = {Verdict::Lint, mine, ""};
   }
   if (status != 0 && found.empty())
@@ -290,15 +291,19 @@ void Harness::save(const Case &c, const Outcome &o, const Config &config, const 
   write(dir + "/actual.log", o.detail);
   if (c.prepared) {
     for (const auto &f : c.prepared->engine) write(dir + "/" + f.path, f.contents);
-    DriverCase d{c.id, &c.chart, &c.trace, base_name(c.prepared->engine.at(1).path), c.prepared->places,
+    DriverCase d{c.id,
+                 &c.chart,
+                 &c.trace,
+                 base_name(c.prepared->engine.at(1).path),
+                 c.prepared->places,
                  c.prepared->transitions};
     write(dir + "/driver.c", driver_source({d}));
   }
-  write(dir + "/README",
-        fmt::format("verdict: {}\nbuild: {}{} -I. -o prog {} driver.c && ./prog\n"
-                    "reference: gfec run r{}.sfc --inputs trace.csv --observable{}\n",
-                    verdict_name(o.verdict), config.command, config.hooks ? fmt::format(" -D{}_HOOKS", c.chart.name) : "",
-                    engine_name(c), c.id, config.hooks ? " --hooks" : ""));
+  write(dir + "/README", fmt::format("verdict: {}\nbuild: {}{} -I. -o prog {} driver.c && ./prog\n"
+                                     "reference: gfec run r{}.sfc --inputs trace.csv --observable{}\n",
+                                     verdict_name(o.verdict), config.command,
+                                     config.hooks ? fmt::format(" -D{}_HOOKS", c.chart.name) : "", engine_name(c), c.id,
+                                     config.hooks ? " --hooks" : ""));
 }
 
-} // namespace gfec::diff
+}  // namespace gfec::diff

@@ -77,4 +77,4 @@ private:
   bool verbose_;
 };
 
-} // namespace gfec::diff
+}  // namespace gfec::diff

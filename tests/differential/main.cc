@@ -28,9 +28,7 @@ struct Failure {
   Outcome outcome;
 };
 
-bool have(const std::string &tool) {
-  return std::system(("command -v " + tool + " > /dev/null 2>&1").c_str()) == 0;
-}
+bool have(const std::string &tool) { return std::system(("command -v " + tool + " > /dev/null 2>&1").c_str()) == 0; }
 
 /// The two logs, line by line, the first difference marked.
 std::string compare(const std::string &expected, const std::string &actual) {
@@ -55,11 +53,10 @@ void report(const Failure &f, int steps) {
   std::cout << "---- chart\n" << f.c.text << "---- trace\n" << f.c.csv;
   if (f.outcome.verdict == Verdict::Mismatch || f.outcome.verdict == Verdict::Crash)
     std::cout << "---- interpreter (left) | engine (right)\n" << compare(f.outcome.expected, f.outcome.detail);
-  else
-    std::cout << "---- " << f.outcome.detail;
+  else std::cout << "---- " << f.outcome.detail;
 }
 
-} // namespace
+}  // namespace
 
 int main(int argc, char **argv) {
   std::uint64_t seed = 1;
@@ -74,7 +71,9 @@ int main(int argc, char **argv) {
   app.add_option("--work", work, "Scratch folder (default: a fresh one under the temp folder)");
   app.add_option("--shrink", shrink_max, "Failures to shrink and print (the rest are only counted)");
   app.add_option("--avoid", avoid, "Do not generate what a known bug breaks: dead-code (comma-separated)");
-  app.add_option("--subcharts", subcharts, "Hierarchical programs: up to N sub-charts each (sfc and fsm, nested, the same one run by several places)");
+  app.add_option(
+      "--subcharts", subcharts,
+      "Hierarchical programs: up to N sub-charts each (sfc and fsm, nested, the same one run by several places)");
   app.add_option("--case", only, "Run only this case (of the same seed), e.g. to shrink it again");
   app.add_flag("--no-cppcheck", no_lint, "Do not run cppcheck on the engines");
   app.add_flag("--keep", keep, "Keep the scratch folder");
@@ -119,7 +118,8 @@ int main(int argc, char **argv) {
   }
   for (int k = 0; k < cases; ++k) {
     if (only >= 0 && k != only) continue;
-    std::seed_seq s{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32), static_cast<std::uint32_t>(k)};
+    std::seed_seq s{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32),
+                    static_cast<std::uint32_t>(k)};
     std::mt19937_64 rng(s);
     Case &c = all[static_cast<std::size_t>(k)];  // each case depends only on (seed, k)
     c.id = k;
@@ -132,7 +132,8 @@ int main(int argc, char **argv) {
     c.chart = random_chart(rng, k, options);
     c.trace = random_trace(rng, c.chart);
     Outcome o = harness.prepare(c);
-    if (verbose && o.verdict != Verdict::Pass) std::cout << fmt::format("case {}: {}\n{}", k, verdict_name(o.verdict), o.detail);
+    if (verbose && o.verdict != Verdict::Pass)
+      std::cout << fmt::format("case {}: {}\n{}", k, verdict_name(o.verdict), o.detail);
     if (o.verdict == Verdict::Undefined) {
       ++undefined;
     } else if (o.verdict == Verdict::Invalid) {
@@ -147,30 +148,39 @@ int main(int argc, char **argv) {
 
   std::vector<std::pair<Case *, const Config *>> failed;
   for (std::size_t b = 0; b < ready.size(); b += static_cast<std::size_t>(batch)) {
-    std::vector<Case *> group(ready.begin() + static_cast<std::ptrdiff_t>(b),
-                              ready.begin() + static_cast<std::ptrdiff_t>(std::min(ready.size(), b + static_cast<std::size_t>(batch))));
+    std::vector<Case *> group(
+        ready.begin() + static_cast<std::ptrdiff_t>(b),
+        ready.begin() + static_cast<std::ptrdiff_t>(std::min(ready.size(), b + static_cast<std::size_t>(batch))));
     if (lint) {
       auto outcomes = harness.lint_batch(group, fmt::format("b{}lint", b));
       for (std::size_t i = 0; i < group.size(); ++i)
-        if (outcomes[i].verdict != Verdict::Pass) failures.push_back({*group[i], {"cppcheck", "cppcheck --enable=warning,style,performance,portability --std=c99", false}, outcomes[i]});
+        if (outcomes[i].verdict != Verdict::Pass)
+          failures.push_back({*group[i],
+                              {"cppcheck", "cppcheck --enable=warning,style,performance,portability --std=c99", false},
+                              outcomes[i]});
     }
     for (std::size_t k = 0; k < configs.size(); ++k) {
       auto outcomes = harness.run_batch(group, configs[k], fmt::format("b{}c{}", b, k));
       for (std::size_t i = 0; i < group.size(); ++i) {
         if (outcomes[i].verdict == Verdict::Pass) continue;
         failures.push_back({*group[i], configs[k], outcomes[i]});
-        if (verbose) std::cout << fmt::format("case {} under '{}': {}\n", group[i]->id, configs[k].name, verdict_name(outcomes[i].verdict));
+        if (verbose)
+          std::cout << fmt::format("case {} under '{}': {}\n", group[i]->id, configs[k].name,
+                                   verdict_name(outcomes[i].verdict));
       }
     }
-    if (verbose) std::cout << fmt::format("{} of {} cases run\n", std::min(ready.size(), b + static_cast<std::size_t>(batch)), ready.size());
+    if (verbose)
+      std::cout << fmt::format("{} of {} cases run\n", std::min(ready.size(), b + static_cast<std::size_t>(batch)),
+                               ready.size());
   }
 
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::cout << fmt::format("gfec_differential: seed {}: {} random charts ({} sfc, {} of them in the scalable form, {} fsm); {} compared under {} builds "
-                           "({} engine runs){}, {} skipped for undefined behaviour, {} rejected by gfec; {} failures; {:.0f} s\n",
-                           seed, generated, generated - fsm, scalable, fsm, ready.size(), configs.size(), ready.size() * configs.size(),
-                           lint ? " and cppcheck" : "",
-                           undefined, invalid, failures.size(), seconds);
+  std::cout << fmt::format(
+      "gfec_differential: seed {}: {} random charts ({} sfc, {} of them in the scalable form, {} fsm); {} compared "
+      "under {} builds "
+      "({} engine runs){}, {} skipped for undefined behaviour, {} rejected by gfec; {} failures; {:.0f} s\n",
+      seed, generated, generated - fsm, scalable, fsm, ready.size(), configs.size(), ready.size() * configs.size(),
+      lint ? " and cppcheck" : "", undefined, invalid, failures.size(), seconds);
   // Shrink the first failures (one per case: the same bug tends to fail every build).
   std::vector<int> shown;
   for (auto &f : failures) {

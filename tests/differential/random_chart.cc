@@ -22,13 +22,13 @@ Type promote(Type a, Type b) {
 // must keep them apart.
 // (The validator rejects the engine's own names for places, e.g. `init` or `HOOKS`, and the
 // macros and typedefs of the C headers, e.g. `NULL`, `UINT_MAX`, `assert`: docs/language.md §3.)
-const std::vector<std::string> kTrickyPlaces = {"m", "add", "before", "from", "p", "av", "started", "timer_P0",
-                                                "bool_", "R0"};
-const std::vector<std::string> kTrickyVars = {"m", "add", "before", "from", "p", "av", "status", "started",
-                                              "timer_P0", "timer_P1"};
+const std::vector<std::string> kTrickyPlaces = {"m",  "add",     "before",   "from",  "p",
+                                                "av", "started", "timer_P0", "bool_", "R0"};
+const std::vector<std::string> kTrickyVars = {"m",  "add",    "before",  "from",     "p",
+                                              "av", "status", "started", "timer_P0", "timer_P1"};
 
-const std::vector<std::string> kFloatLiterals = {"0.5", "0.25", "1.5", "2.0", "0.1", "3.75", "1e-1",
-                                                 "2.5e0", "0.3", "2.", ".5", "10.0", "0.0"};
+const std::vector<std::string> kFloatLiterals = {"0.5",   "0.25", "1.5", "2.0", "0.1",  "3.75", "1e-1",
+                                                 "2.5e0", "0.3",  "2.",  ".5",  "10.0", "0.0"};
 const std::vector<std::string> kFloatInputs = {"0", "0.5", "0.25", "-1.5", "0.1", "3", "2.75", "-0.3"};
 
 class Gen {
@@ -79,7 +79,9 @@ public:
 
   int uniform(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
   bool chance(double p) { return std::bernoulli_distribution(p)(rng_); }
-  template <typename T> const T &pick(const std::vector<T> &v) { return v[static_cast<std::size_t>(uniform(0, static_cast<int>(v.size()) - 1))]; }
+  template <typename T> const T &pick(const std::vector<T> &v) {
+    return v[static_cast<std::size_t>(uniform(0, static_cast<int>(v.size()) - 1))];
+  }
 
   Type any_numeric() {
     int r = uniform(0, 9);
@@ -183,8 +185,8 @@ public:
   }
 
   GExpr duration() {
-    static const std::vector<std::string> d = {"0ms", "5ms", "10ms", "15ms", "25ms", "30ms", "50ms", "100ms",
-                                               "0.05s", "1s", "200ms", "1.5s"};
+    static const std::vector<std::string> d = {"0ms",  "5ms",   "10ms",  "15ms", "25ms",  "30ms",
+                                               "50ms", "100ms", "0.05s", "1s",   "200ms", "1.5s"};
     return {GExpr::Kind::Lit, Type::Duration, pick(d), {}};
   }
 
@@ -233,7 +235,9 @@ public:
     if (r < 6) return {GExpr::Kind::Binary, Type::Bool, "||", {boolean(depth - 1), boolean(depth - 1)}};
     if (r < 7) {
       auto [a, b] = operands([&] { return boolean(depth - 1); });
-      return {GExpr::Kind::Binary, Type::Bool, chance(0.5) ? "==" : "!=", {a, distinct(a, b, [&] { return boolean(depth - 1); })}};
+      return {GExpr::Kind::Binary, Type::Bool, chance(0.5) ? "==" : "!=", {a, distinct(a, b, [&] {
+                                                                             return boolean(depth - 1);
+                                                                           })}};
     }
     if (r < 8) return {GExpr::Kind::Paren, Type::Bool, "", {boolean(depth - 1)}};
     return comparison(depth - 1);
@@ -491,7 +495,7 @@ std::string side(const GChart &c, const std::vector<int> &places) {
   return places.size() == 1 ? s : "(" + s + ")";
 }
 
-} // namespace
+}  // namespace
 
 std::string expr_text(const GExpr &e) {
   switch (e.kind) {
@@ -597,8 +601,8 @@ std::string chart_body(const GChart &c, const std::vector<GChart> &pool) {
   for (const auto &p : c.places) {
     std::string head = c.fsm ? (p.terminal == model::Terminal::Success   ? "success state"
                                 : p.terminal == model::Terminal::Failure ? "failure state"
-                                : p.initial                               ? "initial state"
-                                                                          : "state")
+                                : p.initial                              ? "initial state"
+                                                                         : "state")
                              : (p.initial ? "initial place" : "place");
     s += "  " + head + " " + p.name;
     if (p.runs >= 0) s += " runs " + pool.at(static_cast<std::size_t>(p.runs)).name;
@@ -624,13 +628,14 @@ std::string chart_body(const GChart &c, const std::vector<GChart> &pool) {
   return s + "}\n";
 }
 
-} // namespace
+}  // namespace
 
 std::string chart_text(const GChart &c) {
   std::string s = fmt::format("interface I{} {{\n", c.name.substr(1));
   for (const auto &f : c.functions) {
     std::string params;
-    for (std::size_t i = 0; i < f.params.size(); ++i) params += fmt::format("{}{} p{}", i ? ", " : "", type_word(f.params[i]), i);
+    for (std::size_t i = 0; i < f.params.size(); ++i)
+      params += fmt::format("{}{} p{}", i ? ", " : "", type_word(f.params[i]), i);
     s += fmt::format("  {} {}({});\n", type_word(f.result), f.name, params);
   }
   s += "}\n";
@@ -656,4 +661,4 @@ std::string trace_csv(const GChart &c, const GTrace &t) {
   return header + "\n" + rows;
 }
 
-} // namespace gfec::diff
+}  // namespace gfec::diff

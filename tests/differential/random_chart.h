@@ -65,8 +65,8 @@ struct GTransition {
 
 struct GChart {
   bool fsm = false;
-  std::string name;       ///< R<id>
-  std::string prefix;     ///< c<id>: the interface functions' prefix
+  std::string name;    ///< R<id>
+  std::string prefix;  ///< c<id>: the interface functions' prefix
   int period_ms = 0;
   std::vector<GFunction> functions;
   std::vector<GValue> consts;
@@ -106,4 +106,4 @@ std::string chart_text(const GChart &chart);
 std::string trace_csv(const GChart &chart, const GTrace &trace);
 std::string expr_text(const GExpr &e);
 
-} // namespace gfec::diff
+}  // namespace gfec::diff

@@ -226,7 +226,7 @@ int size_hint(Case &c) {
   return n;
 }
 
-} // namespace
+}  // namespace
 
 /// The warning a compile error is about ("-Wliteral-conversion"), to stay with one bug.
 std::string warning_of(const std::string &compiler_output) {
@@ -247,8 +247,8 @@ Outcome shrink(const Harness &h, Case &c, const Config &config, Verdict verdict,
   auto still_fails = [&](Case &candidate) {
     ++tries;
     if (h.prepare(candidate).verdict != Verdict::Pass) return false;
-    Outcome o = verdict == Verdict::Lint ? h.lint_batch({&candidate}, "shrink").at(0)
-                                         : h.run_one(candidate, config, "shrink");
+    Outcome o =
+        verdict == Verdict::Lint ? h.lint_batch({&candidate}, "shrink").at(0) : h.run_one(candidate, config, "shrink");
     if (o.verdict != verdict) return false;
     if (verdict == Verdict::CompileError) {
       if (tries == 1) warning = warning_of(o.detail);
@@ -281,4 +281,4 @@ Outcome shrink(const Harness &h, Case &c, const Config &config, Verdict verdict,
   return last;
 }
 
-} // namespace gfec::diff
+}  // namespace gfec::diff

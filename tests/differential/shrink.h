@@ -10,4 +10,4 @@ namespace gfec::diff {
 /// Shrinks `c` (which fails with `verdict` under `config`) in place; returns its last outcome.
 Outcome shrink(const Harness &h, Case &c, const Config &config, Verdict verdict, int *steps = nullptr);
 
-} // namespace gfec::diff
+}  // namespace gfec::diff

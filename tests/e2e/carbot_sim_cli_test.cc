@@ -15,10 +15,11 @@
 namespace {
 
 /// The oval, plus whatever else a test needs, written into `dir`.
-std::string oval_with(const e2e::TempDir& dir, const std::string& extra_fields) {
+std::string oval_with(const e2e::TempDir &dir, const std::string &extra_fields) {
   const carbot::World oval = e2e::world("sim/worlds/oval.json");
   std::string points;
-  for (const auto& p : oval.line.points) points += (points.empty() ? "" : ", ") + ("[" + std::to_string(p.x) + ", " + std::to_string(p.y) + "]");
+  for (const auto &p : oval.line.points)
+    points += (points.empty() ? "" : ", ") + ("[" + std::to_string(p.x) + ", " + std::to_string(p.y) + "]");
   const std::string path = dir.file("oval_plus.json");
   std::ofstream(path) << R"({"size": [4, 2.6], "line": {"width": 0.05, "closed": true, "points": [)" << points
                       << R"(]}, "start": {"pose": [-0.4, -0.7, 0]})" << extra_fields << "}";
@@ -75,7 +76,7 @@ sfc Broken {
 namespace {
 
 /// Runs carbot-sim with `args` (already quoted), returns the exit code and what it printed.
-int run_cli(const std::string& args, std::string& output, const e2e::TempDir& dir) {
+int run_cli(const std::string &args, std::string &output, const e2e::TempDir &dir) {
   const std::string log = dir.file("cli_output.txt");
   const int status = std::system((std::string(CARBOT_SIM) + " " + args + " >'" + log + "' 2>&1").c_str());
   std::ifstream in(log);
@@ -83,7 +84,7 @@ int run_cli(const std::string& args, std::string& output, const e2e::TempDir& di
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-std::string q(const std::string& s) { return "'" + s + "'"; }
+std::string q(const std::string &s) { return "'" + s + "'"; }
 
 }  // namespace
 
@@ -123,17 +124,17 @@ TEST_CASE("carbot-sim: never writes over the world, the chart, a FIFO or one fil
   INFO(out);
   CHECK(run_cli(base + " --trace " + q(trace) + " --json " + q(dir.file("r.json")), out, dir) == 0);
   CHECK(std::filesystem::exists(trace));
-  for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(trace).parent_path()))
+  for (const auto &entry : std::filesystem::directory_iterator(std::filesystem::path(trace).parent_path()))
     CHECK(entry.path().filename().string().find("tmp") == std::string::npos);
 }
 
 TEST_CASE("carbot-sim: command-line numbers are finite and in range; the run has budgets", "[e2e][cli]") {
   e2e::TempDir dir;
-  const std::string base = q(e2e::source("samples/line_follower.sfc")) + " --world " +
-                           q(e2e::source("sim/worlds/oval.json")) + " -q";
+  const std::string base =
+      q(e2e::source("samples/line_follower.sfc")) + " --world " + q(e2e::source("sim/worlds/oval.json")) + " -q";
   std::string out;
   // nan and 1e17 once ran zero ticks and exited 0; 1e300 overflowed the tick count.
-  for (const std::string& bad : {"--seconds nan", "--seconds 1e17", "--seconds -1", "--period 1e300", "--period inf",
+  for (const std::string &bad : {"--seconds nan", "--seconds 1e17", "--seconds -1", "--period 1e300", "--period inf",
                                  "--physics-step 0", "--physics-step nan", "--timeout -1", "--seconds 5x"}) {
     INFO(bad);
     CHECK(run_cli(base + " " + bad, out, dir) == 2);
@@ -151,8 +152,9 @@ TEST_CASE("carbot-sim: --timeout stops a chart that loops forever; no temporary 
   {
     std::ifstream i(e2e::source("samples/linebot.iface"));
     std::ofstream(dir.file("linebot.iface")) << i.rdbuf();
-    std::ofstream(dir.file("loop.sfc")) << "import \"linebot.iface\";\n"
-                                           "sfc Loop {\n  period 10ms;\n  initial place A { Left_FW(); %{ for (;;) {} %} }\n}\n";
+    std::ofstream(dir.file("loop.sfc"))
+        << "import \"linebot.iface\";\n"
+           "sfc Loop {\n  period 10ms;\n  initial place A { Left_FW(); %{ for (;;) {} %} }\n}\n";
   }
   const std::string env = "TMPDIR=" + q(tmp) + " CARBOT_SIM_CACHE= ";
   const std::string sim = std::string(CARBOT_SIM) + " " + q(dir.file("loop.sfc")) + " --world " +

@@ -12,10 +12,10 @@ namespace {
 struct LineStats {
   double max_error = 0;  ///< largest distance of the robot centre from the line, m
   double rms_error = 0;
-  double laps = 0;       ///< signed progress along the line / its length (+ = drawing order)
+  double laps = 0;  ///< signed progress along the line / its length (+ = drawing order)
 };
 
-LineStats line_stats(const carbot::World& w, const std::vector<e2e::TraceRow>& trace) {
+LineStats line_stats(const carbot::World &w, const std::vector<e2e::TraceRow> &trace) {
   LineStats s;
   const double length = carbot::line_length(w.line);
   double sum2 = 0, progress = 0, last = 0;
@@ -36,7 +36,7 @@ LineStats line_stats(const carbot::World& w, const std::vector<e2e::TraceRow>& t
   return s;
 }
 
-void check_follows(const char* world_file, double seconds, double min_laps) {
+void check_follows(const char *world_file, double seconds, double min_laps) {
   const e2e::SimRun run = e2e::run_sim("samples/line_follower.sfc", world_file, seconds);
   INFO(run.output);
   if (e2e::skipped_for_missing_backend(run)) return;
@@ -55,7 +55,7 @@ void check_follows(const char* world_file, double seconds, double min_laps) {
   const LineStats s = line_stats(e2e::world(world_file), run.trace);
   INFO("laps " << s.laps << ", max lateral error " << s.max_error << " m, rms " << s.rms_error << " m");
   CHECK(s.laps >= min_laps);
-  CHECK(s.max_error < 0.04);   // the IR sensors are 7 cm apart: the line never got away
+  CHECK(s.max_error < 0.04);  // the IR sensors are 7 cm apart: the line never got away
   CHECK(s.rms_error < 0.02);
 }
 

@@ -22,7 +22,7 @@ TEST_CASE("mission: patrols the line, leaves it on a straight after 20 s, tidies
   // Mission's own states, in order: the sub-charts' states are not Mission's.
   std::vector<std::string> states;
   double tidy_at = -1;
-  for (const auto& e : run.result["state_log"]) {
+  for (const auto &e : run.result["state_log"]) {
     states.push_back(e["event"]);
     if (e["event"] == "state Tidy") tidy_at = e["t"].get<double>();
   }
@@ -38,7 +38,7 @@ TEST_CASE("mission: patrols the line, leaves it on a straight after 20 s, tidies
   // does (tests/e2e/line_follower_test.cc), and went round some of the oval.
   const carbot::World w = e2e::world("sim/worlds/mission.json");
   double max_error = 0, first_along = -1, last_along = 0;
-  for (const auto& r : run.trace) {
+  for (const auto &r : run.trace) {
     if (r.t >= tidy_at) break;
     const auto at = carbot::locate_on_line(w.line, {r.x, r.y});
     max_error = std::max(max_error, at.distance);
@@ -51,7 +51,7 @@ TEST_CASE("mission: patrols the line, leaves it on a straight after 20 s, tidies
 
   // Then Tidy's CleanUp carried the cup from the middle of the oval to its corner.
   REQUIRE(run.result["items"].size() == 1);
-  const auto& item = run.result["items"][0];
+  const auto &item = run.result["items"][0];
   CHECK(item["held"] == false);
   CHECK(std::hypot(item["at"][0].get<double>() - item["destination"][0].get<double>(),
                    item["at"][1].get<double>() - item["destination"][1].get<double>()) < 0.10);

@@ -18,7 +18,7 @@ World open_floor() {
   return w;
 }
 
-void run_for(Simulation& sim, double seconds) {
+void run_for(Simulation &sim, double seconds) {
   const double end = sim.time() + seconds - 1e-9;
   while (sim.time() < end) sim.step_control();
 }

@@ -15,20 +15,20 @@ namespace fs = std::filesystem;
 namespace e2e {
 namespace {
 
-std::string slurp(const std::string& path) {
+std::string slurp(const std::string &path) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream s;
   s << in.rdbuf();
   return s.str();
 }
 
-std::string quote(const std::string& s) {
+std::string quote(const std::string &s) {
   std::string q = "'";
   for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return q + "'";
 }
 
-std::vector<TraceRow> parse_trace(const std::string& text) {
+std::vector<TraceRow> parse_trace(const std::string &text) {
   std::vector<TraceRow> rows;
   std::istringstream in(text);
   std::string line;
@@ -42,7 +42,7 @@ std::vector<TraceRow> parse_trace(const std::string& text) {
 
 }  // namespace
 
-std::string source(const std::string& relative) {
+std::string source(const std::string &relative) {
   return relative.empty() || relative[0] == '/' ? relative : std::string(GFEC_SOURCE_DIR) + "/" + relative;
 }
 
@@ -57,7 +57,7 @@ TempDir::~TempDir() {
   fs::remove_all(path_, ignored);
 }
 
-SimRun run_sim(const std::string& chart, const std::string& world, double seconds, const std::string& extra) {
+SimRun run_sim(const std::string &chart, const std::string &world, double seconds, const std::string &extra) {
   TempDir dir;
   const std::string trace = dir.file("trace.csv"), json = dir.file("result.json"), svg = dir.file("path.svg");
   const std::string log = dir.file("output.txt");
@@ -77,12 +77,12 @@ SimRun run_sim(const std::string& chart, const std::string& world, double second
   return run;
 }
 
-bool skipped_for_missing_backend(const SimRun& run) {
+bool skipped_for_missing_backend(const SimRun &run) {
   if (run.exit_code == 0 || run.output.find("unknown back end") == std::string::npos) return false;
   std::printf("E2E-SKIP: gfec cannot generate this engine yet:\n%s\n", run.output.c_str());
   return true;
 }
 
-carbot::World world(const std::string& relative) { return carbot::load_world(source(relative)); }
+carbot::World world(const std::string &relative) { return carbot::load_world(source(relative)); }
 
 }  // namespace e2e

@@ -18,13 +18,13 @@ constexpr double kSonarX = 0.10;
 
 /// A sweep from -100 to +100 degrees against straight walls given as n.p = d (unit n, robot
 /// frame), with the simulator's incidence cut-off of 50 degrees.
-std::vector<SonarSample> sweep(const std::vector<std::pair<carbot::Vec2, double>>& walls) {
+std::vector<SonarSample> sweep(const std::vector<std::pair<carbot::Vec2, double>> &walls) {
   std::vector<SonarSample> out;
   for (int deg = -100; deg <= 100; deg += 10) {
     const double a = carbot::rad(deg);
     const double dx = std::cos(a), dy = std::sin(a);
     double best = 4.0;
-    for (const auto& [n, d] : walls) {
+    for (const auto &[n, d] : walls) {
       const double along = n.x * dx + n.y * dy;
       if (along < std::cos(carbot::rad(50))) continue;  // glancing or facing away
       best = std::min(best, (d - n.x * kSonarX) / along);
@@ -36,8 +36,7 @@ std::vector<SonarSample> sweep(const std::vector<std::pair<carbot::Vec2, double>
 
 }  // namespace
 
-TEST_CASE("toolbox: a wall straight ahead means a left turn of 90 degrees (wall on the right)",
-          "[e2e][toolbox]") {
+TEST_CASE("toolbox: a wall straight ahead means a left turn of 90 degrees (wall on the right)", "[e2e][toolbox]") {
   const auto fit = fit_wall(sweep({{{1, 0}, 0.5}}), kSonarX, 4.0);
   REQUIRE(fit.found);
   CHECK(carbot::deg(fit.turn) == Approx(90).margin(1));
@@ -59,9 +58,7 @@ TEST_CASE("toolbox: in a corner the wall ahead wins over the one alongside", "[e
   CHECK(carbot::deg(fit.turn) == Approx(90).margin(2));
 }
 
-TEST_CASE("toolbox: no echo, no wall", "[e2e][toolbox]") {
-  CHECK_FALSE(fit_wall(sweep({}), kSonarX, 4.0).found);
-}
+TEST_CASE("toolbox: no echo, no wall", "[e2e][toolbox]") { CHECK_FALSE(fit_wall(sweep({}), kSonarX, 4.0).found); }
 
 TEST_CASE("toolbox: Forward and Turn move the simulated robot as asked", "[e2e][toolbox]") {
   using namespace std::chrono_literals;
@@ -71,9 +68,9 @@ TEST_CASE("toolbox: Forward and Turn move the simulated robot as asked", "[e2e][
   carbot::hal::bind(&sim);
   Env ee;
   afp::Plan plan("Moves");
-  auto* fwd = plan.add_actor("fwd", std::make_unique<Forward>(ee, afp::in<float>(50)));
-  auto* turn = plan.add_actor("turn", std::make_unique<Turn>(ee, afp::in<float>(-90)));
-  auto* back = plan.add_actor("back", std::make_unique<Forward>(ee, afp::in<float>(-20)));
+  auto *fwd = plan.add_actor("fwd", std::make_unique<Forward>(ee, afp::in<float>(50)));
+  auto *turn = plan.add_actor("turn", std::make_unique<Turn>(ee, afp::in<float>(-90)));
+  auto *back = plan.add_actor("back", std::make_unique<Forward>(ee, afp::in<float>(-20)));
   plan.define_first_actor(fwd);
   plan.define_subsequent(fwd, Forward::FORWARD_OK, turn);
   plan.define_subsequent(turn, Turn::TURN_OK, back);

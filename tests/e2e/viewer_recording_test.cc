@@ -15,7 +15,7 @@ namespace {
 
 using nlohmann::json;
 
-std::string slurp(const std::string& path) {
+std::string slurp(const std::string &path) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream s;
   s << in.rdbuf();
@@ -23,9 +23,9 @@ std::string slurp(const std::string& path) {
 }
 
 /// The value of a change list ([[tick, value], ...]) at `tick`.
-json value_at(const json& list, long tick, const json& fallback) {
+json value_at(const json &list, long tick, const json &fallback) {
   json v = fallback;
-  for (const json& entry : list) {
+  for (const json &entry : list) {
     if (entry[0].get<long>() > tick) break;
     v = entry[1];
   }
@@ -33,7 +33,7 @@ json value_at(const json& list, long tick, const json& fallback) {
 }
 
 /// The trace's `active` column, row by row.
-std::vector<std::string> active_column(const std::string& trace_text) {
+std::vector<std::string> active_column(const std::string &trace_text) {
   std::vector<std::string> out;
   std::istringstream in(trace_text);
   std::string line;
@@ -49,7 +49,7 @@ struct Recorded {
   std::string page;
 };
 
-Recorded record(const std::string& chart, const std::string& world, double seconds) {
+Recorded record(const std::string &chart, const std::string &world, double seconds) {
   e2e::TempDir dir;
   Recorded r;
   r.run = e2e::run_sim(chart, world, seconds,
@@ -64,7 +64,7 @@ Recorded record(const std::string& chart, const std::string& world, double secon
 }  // namespace
 
 TEST_CASE("viewer: a recording build drives the robot exactly as the plain build", "[e2e][viewer]") {
-  for (const auto& [chart, world] : {std::pair{"samples/line_follower.sfc", "sim/worlds/oval.json"},
+  for (const auto &[chart, world] : {std::pair{"samples/line_follower.sfc", "sim/worlds/oval.json"},
                                      std::pair{"samples/cleanup.fsm", "sim/worlds/cleanup_drop.json"}}) {
     const e2e::SimRun plain = e2e::run_sim(chart, world, 30);
     const Recorded recorded = record(chart, world, 30);
@@ -78,10 +78,10 @@ TEST_CASE("viewer: a recording build drives the robot exactly as the plain build
 TEST_CASE("viewer: the line follower's recording: places, calls, actions of active places", "[e2e][viewer]") {
   const Recorded r = record("samples/line_follower.sfc", "sim/worlds/oval.json", 20);
   REQUIRE(r.run.exit_code == 0);
-  const json& rec = r.rec;
+  const json &rec = r.rec;
   CHECK(rec["chart"]["kind"] == "sfc");
   std::vector<std::string> rows;
-  for (const json& row : rec["rows"]) rows.push_back(row["name"]);
+  for (const json &row : rec["rows"]) rows.push_back(row["name"]);
   CHECK(rows == std::vector<std::string>{"LeftFw", "LeftStop", "RightFw", "RightStop"});
   CHECK(rec["rows"][1]["node"] == "p1");
   const long frames = rec["frames"];
@@ -92,28 +92,30 @@ TEST_CASE("viewer: the line follower's recording: places, calls, actions of acti
   REQUIRE(static_cast<long>(column.size()) == frames);
   // Started astride the line: both sides run.
   CHECK(column[0] == "LeftFw RightFw");
-  const json& texts = rec["calls"]["texts"];
+  const json &texts = rec["calls"]["texts"];
   std::set<std::string> changes;
   long stops = 0;
   for (long k = 0; k + 1 < frames; ++k) {
     // The recording's activation is the trace's column.
     std::string names;
-    for (const json& i : value_at(rec["active"], k, json::array())) names += (names.empty() ? "" : " ") + rows[i.get<std::size_t>()];
+    for (const json &i : value_at(rec["active"], k, json::array()))
+      names += (names.empty() ? "" : " ") + rows[i.get<std::size_t>()];
     REQUIRE(names == column[static_cast<std::size_t>(k)]);
     // Each tick the action of every active place runs (after the conditions): LeftFw calls
     // Left_FW(), LeftStop calls Left_Stop(), and so on; and only those actions.
     std::set<std::string> actions, sensed;
-    for (const json& i : value_at(rec["calls"]["ticks"], k, json::array())) {
+    for (const json &i : value_at(rec["calls"]["ticks"], k, json::array())) {
       const std::string text = texts[i.get<std::size_t>()];
-      if (text.find(" = ") == std::string::npos)
-        actions.insert(text);
-      else
-        sensed.insert(text.substr(0, text.find(" = ")));
+      if (text.find(" = ") == std::string::npos) actions.insert(text);
+      else sensed.insert(text.substr(0, text.find(" = ")));
     }
     std::set<std::string> expected;
-    for (const json& i : value_at(rec["active"], k, json::array())) {
-      const std::string& p = rows[i.get<std::size_t>()];
-      expected.insert(p == "LeftFw" ? "Left_FW()" : p == "LeftStop" ? "Left_Stop()" : p == "RightFw" ? "Right_FW()" : "Right_Stop()");
+    for (const json &i : value_at(rec["active"], k, json::array())) {
+      const std::string &p = rows[i.get<std::size_t>()];
+      expected.insert(p == "LeftFw"     ? "Left_FW()"
+                      : p == "LeftStop" ? "Left_Stop()"
+                      : p == "RightFw"  ? "Right_FW()"
+                                        : "Right_Stop()");
       if (p == "LeftStop") ++stops;
     }
     REQUIRE(actions == expected);
@@ -130,12 +132,12 @@ TEST_CASE("viewer: the clean-up's recording follows its states and the cup", "[e
   REQUIRE(r.run.result["status"] == "succeeded");
   const std::vector<std::string> column = active_column(r.run.trace_text);
   std::vector<std::string> visited;
-  for (const std::string& s : column)
+  for (const std::string &s : column)
     if (visited.empty() || visited.back() != s) visited.push_back(s);
   CHECK(visited == std::vector<std::string>{"Z0", "Z1", "Z2", "Z1", "Z2", "Z3", "Done"});
   std::vector<std::string> item_events;
   bool succeeded_last = false;
-  for (const json& e : r.rec["events"]) {
+  for (const json &e : r.rec["events"]) {
     if (e[1] == "item") item_events.push_back(e[2]);
     if (e[1] == "status" && e[2] == "succeeded") succeeded_last = e[0] == r.rec["frames"].get<long>() - 1;
   }
@@ -154,7 +156,7 @@ TEST_CASE("viewer: the wall-follow plan's recording names actors and the supervi
   const std::vector<std::string> column = active_column(r.run.trace_text);
   CHECK(column[0] == "searchFirstWall");
   REQUIRE(!r.rec["fired"].empty());
-  const json& first = r.rec["fired"][0];
+  const json &first = r.rec["fired"][0];
   CHECK(first[1] == "s0_0");  // the first supervisor of the first actor in gfec's picture
   CHECK(first[2] == "touch (searchFirstWall)");
   // The robot bumps the crate after about 1.6 s, then backs up.
@@ -167,7 +169,7 @@ TEST_CASE("viewer: the wall-follow plan's recording names actors and the supervi
 TEST_CASE("viewer: the page is one self-contained file", "[e2e][viewer]") {
   const Recorded r = record("samples/cleanup.fsm", "sim/worlds/cleanup.json", 5);
   REQUIRE(r.run.exit_code == 0);
-  const std::string& page = r.page;
+  const std::string &page = r.page;
   CHECK(page.rfind("<!DOCTYPE html>", 0) == 0);
   // Nothing is loaded from anywhere: no src or href attributes, no stylesheet links.
   CHECK(page.find(" src=") == std::string::npos);

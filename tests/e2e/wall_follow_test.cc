@@ -11,14 +11,14 @@
 namespace {
 
 /// Distance from a point to the nearest wall face or box side, metres.
-double clearance(const carbot::World& w, double x, double y) {
+double clearance(const carbot::World &w, double x, double y) {
   double best = 1e9;
-  for (const carbot::Wall& wall : w.walls) {
+  for (const carbot::Wall &wall : w.walls) {
     const double dx = wall.to.x - wall.from.x, dy = wall.to.y - wall.from.y;
     const double t = std::clamp(((x - wall.from.x) * dx + (y - wall.from.y) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
     best = std::min(best, std::hypot(x - wall.from.x - t * dx, y - wall.from.y - t * dy) - wall.thickness / 2);
   }
-  for (const carbot::Box& b : w.boxes) {
+  for (const carbot::Box &b : w.boxes) {
     const double dx = std::max(std::fabs(x - b.center.x) - b.size.x / 2, 0.0);
     const double dy = std::max(std::fabs(y - b.center.y) - b.size.y / 2, 0.0);
     best = std::min(best, std::hypot(dx, dy));
@@ -31,10 +31,10 @@ struct Interval {
 };
 
 /// When the plan's actor `actor` ran (from result.json's plan_log).
-std::vector<Interval> intervals(const nlohmann::json& result, const std::string& actor) {
+std::vector<Interval> intervals(const nlohmann::json &result, const std::string &actor) {
   std::vector<Interval> out;
   double since = -1;
-  for (const auto& e : result["plan_log"]) {
+  for (const auto &e : result["plan_log"]) {
     const std::string text = e["event"];
     const double t = e["t"];
     if (since >= 0) out.push_back({since, t}), since = -1;
@@ -44,15 +44,15 @@ std::vector<Interval> intervals(const nlohmann::json& result, const std::string&
   return out;
 }
 
-bool logged(const nlohmann::json& result, const std::string& text) {
-  for (const auto& e : result["plan_log"])
+bool logged(const nlohmann::json &result, const std::string &text) {
+  for (const auto &e : result["plan_log"])
     if (e["event"] == text) return true;
   return false;
 }
 
 /// Runs the plan in `world_file` (whose escape event comes at 110 s) and checks what every
 /// room must show: it followed walls inside the band, and escape ended it.
-e2e::SimRun check_follows_walls(const char* world_file, double min_following_s) {
+e2e::SimRun check_follows_walls(const char *world_file, double min_following_s) {
   e2e::SimRun run = e2e::run_sim("samples/wall_follow.plan", world_file, 120);
   INFO(run.output);
   if (e2e::skipped_for_missing_backend(run)) return run;
@@ -68,8 +68,8 @@ e2e::SimRun check_follows_walls(const char* world_file, double min_following_s) 
   const carbot::World w = e2e::world(world_file);
   double following = 0;
   double lo = 1e9, hi = 0;
-  for (const Interval& iv : intervals(run.result, "followWall")) {
-    for (const auto& r : run.trace) {
+  for (const Interval &iv : intervals(run.result, "followWall")) {
+    for (const auto &r : run.trace) {
       if (r.t < iv.from + 3 || r.t > iv.to) continue;
       const double d = clearance(w, r.x, r.y);
       lo = std::min(lo, d), hi = std::max(hi, d);
@@ -85,8 +85,7 @@ e2e::SimRun check_follows_walls(const char* world_file, double min_following_s) 
 
 }  // namespace
 
-TEST_CASE("wall follow: finds a wall, follows it in the band, backs off a bump, stops on escape",
-          "[e2e][plan]") {
+TEST_CASE("wall follow: finds a wall, follows it in the band, backs off a bump, stops on escape", "[e2e][plan]") {
   const e2e::SimRun run = check_follows_walls("sim/worlds/room.json", 40);
   if (run.exit_code != 0) return;
   INFO(run.output);
@@ -99,7 +98,7 @@ TEST_CASE("wall follow: finds a wall, follows it in the band, backs off a bump, 
   CHECK(logged(run.result, "start WallFollow.backupCollision"));
   CHECK(logged(run.result, "start WallFollow.findWallAngle"));
   const auto at = [&](double t) {
-    return *std::find_if(run.trace.begin(), run.trace.end(), [&](const auto& r) { return r.t >= t - 1e-6; });
+    return *std::find_if(run.trace.begin(), run.trace.end(), [&](const auto &r) { return r.t >= t - 1e-6; });
   };
   const auto before = at(bump_t), after = at(bump_t + 2.5);
   const double h = carbot::rad(before.heading);

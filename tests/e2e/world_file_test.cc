@@ -10,22 +10,20 @@
 
 namespace {
 
-std::string error_of(const std::string& text) {
+std::string error_of(const std::string &text) {
   try {
     carbot::parse_world(text, "w.json");
-  } catch (const carbot::WorldError& e) {
-    return e.what();
-  }
+  } catch (const carbot::WorldError &e) { return e.what(); }
   return "(accepted)";
 }
 
-const char* kStart = R"("start": {"pose": [0, 0, 0]})";
+const char *kStart = R"("start": {"pose": [0, 0, 0]})";
 
 }  // namespace
 
 TEST_CASE("world files: every shipped world loads", "[e2e][world]") {
   int count = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(e2e::source("sim/worlds"))) {
+  for (const auto &entry : std::filesystem::directory_iterator(e2e::source("sim/worlds"))) {
     if (entry.path().extension() != ".json") continue;
     INFO(entry.path());
     CHECK_NOTHROW(carbot::load_world(entry.path().string()));
@@ -55,20 +53,22 @@ TEST_CASE("world files: errors name the field", "[e2e][world]") {
         "w.json: wals: unknown field (expected one of: description, size, line, walls, boxes, items, start, events)");
   CHECK(error_of(std::string(R"({"size": [2, 2], "walls": [{"from": [0, 0], "to": "east"}], )") + kStart + "}") ==
         "w.json: walls[0].to: expected [x, y]");
-  CHECK(error_of(std::string(R"({"size": [2, 2], "boxes": [{"center": [0, 0], "size": [0.5, 0]}], )") + kStart +
-                 "}") == "w.json: boxes[0].size: expected positive [w, d]");
+  CHECK(error_of(std::string(R"({"size": [2, 2], "boxes": [{"center": [0, 0], "size": [0.5, 0]}], )") + kStart + "}") ==
+        "w.json: boxes[0].size: expected positive [w, d]");
   CHECK(error_of(std::string(R"({"size": [2, 2], "events": [{"at": 3, "drop": "mug"}], )") + kStart + "}") ==
         "w.json: events[0].drop: no item named 'mug' in \"items\"");
   CHECK(error_of(std::string(R"({"size": [2, 2], "events": [{"at": 3, "press": "reset"}], )") + kStart + "}") ==
         "w.json: events[0].press: expected \"escape\" (the only button)");
-  CHECK(error_of(R"({"size": [2, 2], "start": {"pose": [0, 0]}})") == "w.json: start.pose: expected [x, y, heading_deg]");
+  CHECK(error_of(R"({"size": [2, 2], "start": {"pose": [0, 0]}})") ==
+        "w.json: start.pose: expected [x, y, heading_deg]");
   CHECK(error_of("{\n  \"size\": [2, 2],\n  oops\n}").rfind("w.json:3:3: not valid JSON: syntax error", 0) == 0);
 }
 
 TEST_CASE("world files: carbot-sim refuses a bad world before building anything", "[e2e][world]") {
   e2e::TempDir dir;
   const std::string bad = dir.file("bad.json");
-  std::ofstream(bad) << R"({"size": [2, 2], "line": {"points": [[0,0], [1,0], [1,1], [2]]}, "start": {"pose": [0,0,0]}})";
+  std::ofstream(bad)
+      << R"({"size": [2, 2], "line": {"points": [[0,0], [1,0], [1,1], [2]]}, "start": {"pose": [0,0,0]}})";
   const e2e::SimRun run = e2e::run_sim("samples/line_follower.sfc", bad, 1);
   CHECK(run.exit_code == 1);
   CHECK(run.output.find("bad.json: line.points[3]: expected [x, y]") != std::string::npos);

@@ -74,7 +74,8 @@ public:
         expect(ok, "an active() path step in range");
         if (!ok) break;
         int runs = at->places[static_cast<std::size_t>(e.path[k])].runs;
-        if (k + 1 < e.path.size()) expect(in(runs, m_.charts.size()), "an active() path goes through a place that runs a chart");
+        if (k + 1 < e.path.size())
+          expect(in(runs, m_.charts.size()), "an active() path goes through a place that runs a chart");
         at = in(runs, m_.charts.size()) ? &m_.charts[static_cast<std::size_t>(runs)] : nullptr;
       }
       break;
@@ -127,10 +128,12 @@ public:
     expect(in(p.start, p.actors.size()), "a plan's start in range");
     auto rules = [&](const std::vector<model::Rule> &rs) {
       for (const auto &r : rs)
-        if (r.target.kind == model::Target::Kind::Actor) expect(in(r.target.actor, p.actors.size()), "a rule target in range");
+        if (r.target.kind == model::Target::Kind::Actor)
+          expect(in(r.target.actor, p.actors.size()), "a rule target in range");
     };
     for (const auto &a : p.actors) {
-      expect(a.templ >= 0 ? in(a.templ, m_.templates.size()) : in(a.subplan, m_.plans.size()), "an actor's template in range");
+      expect(a.templ >= 0 ? in(a.templ, m_.templates.size()) : in(a.subplan, m_.plans.size()),
+             "an actor's template in range");
       rules(a.rules);
       for (const auto &s : a.supervisors) rules(s.rules);
     }
@@ -223,7 +226,7 @@ void run_back_ends(const model::Model &m) {
   }
 }
 
-} // namespace
+}  // namespace
 
 std::string check_one(const std::string &input) {
   MemoryFileSystem fs;
@@ -273,4 +276,4 @@ std::string check_one(const std::string &input) {
   return printed;
 }
 
-} // namespace gfec::fuzz
+}  // namespace gfec::fuzz

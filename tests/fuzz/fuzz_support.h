@@ -9,4 +9,4 @@ namespace gfec::fuzz {
 /// the diagnostics as gfec prints them (empty: the input validated without a word).
 std::string check_one(const std::string &input);
 
-} // namespace gfec::fuzz
+}  // namespace gfec::fuzz

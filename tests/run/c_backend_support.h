@@ -328,9 +328,9 @@ struct Compiled {
   }
 };
 
-inline std::unique_ptr<Compiled> compile_chart(const std::map<std::string, std::string> &files,
-                                               const std::string &main, const std::string &output,
-                                               bool line_directives = true, EngineForm engine = EngineForm::Auto) {
+inline std::unique_ptr<Compiled> compile_chart(const std::map<std::string, std::string> &files, const std::string &main,
+                                               const std::string &output, bool line_directives = true,
+                                               EngineForm engine = EngineForm::Auto) {
   auto c = std::make_unique<Compiled>();
   MemoryFileSystem mem;
   for (const auto &[path, text] : files) mem.add(path, text);
@@ -437,15 +437,15 @@ inline std::string harness_source(const model::Model &m, const model::Chart &cha
   for (int fi : functions) senses = senses || m.functions[static_cast<std::size_t>(fi)].result != Type::Void;
   if (senses)
     s += "static double value_of(const char *name)\n{\n"
-       "    size_t n = strlen(name);\n"
-       "    const char *p = script;\n"
-       "    while ((p = strstr(p, name)) != NULL) {\n"
-       "        int starts = p == script || p[-1] == ' ';\n"
-       "        if (starts && (p[n] == '=')) return atof(p + n + 1);\n"
-       "        if (starts && (p[n] == ' ' || p[n] == '\\n' || p[n] == '\\0')) return 1;\n"
-       "        p += n;\n"
-       "    }\n"
-       "    return 0;\n}\n\n";
+         "    size_t n = strlen(name);\n"
+         "    const char *p = script;\n"
+         "    while ((p = strstr(p, name)) != NULL) {\n"
+         "        int starts = p == script || p[-1] == ' ';\n"
+         "        if (starts && (p[n] == '=')) return atof(p + n + 1);\n"
+         "        if (starts && (p[n] == ' ' || p[n] == '\\n' || p[n] == '\\0')) return 1;\n"
+         "        p += n;\n"
+         "    }\n"
+         "    return 0;\n}\n\n";
   s += "static const char *const place_names[] = {";
   for (const auto &p : chart.places) s += fmt::format("\"{}\", ", p.name);
   s += "NULL};\n";
@@ -479,9 +479,11 @@ inline std::string harness_source(const model::Model &m, const model::Chart &cha
   for (const auto &t : chart.transitions) s += fmt::format("\"{}\", ", t.name);
   s += "NULL};\n\n";
   s += fmt::format("void {0}_activated({0} *m, int place, bool active)\n{{\n    (void)m;\n"
-                   "    printf(\"hook %s %s\\n\", active ? \"gained\" : \"lost\", place_names[place]);\n}}\n\n", X);
+                   "    printf(\"hook %s %s\\n\", active ? \"gained\" : \"lost\", place_names[place]);\n}}\n\n",
+                   X);
   s += fmt::format("void {0}_enabled({0} *m, int transition)\n{{\n    (void)m;\n"
-                   "    printf(\"hook enabled %s\\n\", transition_names[transition]);\n}}\n", X);
+                   "    printf(\"hook enabled %s\\n\", transition_names[transition]);\n}}\n",
+                   X);
   s += "#endif\n\n";
   s += "static void print_state(const " + X + " *m)\n{\n";
   if (fsm) {
@@ -490,7 +492,8 @@ inline std::string harness_source(const model::Model &m, const model::Chart &cha
     s += fmt::format("    int p;\n    printf(\"av\");\n    for (p = 0; p < {0}_PLACE_COUNT; ++p) {{\n"
                      "        unsigned n = {0}_activation(m, p);\n"
                      "        if (n == 1) printf(\" %s\", place_names[p]);\n"
-                     "        if (n > 1) printf(\" %s:%u\", place_names[p], n);\n    }}\n    printf(\"\\n\");\n", X);
+                     "        if (n > 1) printf(\" %s:%u\", place_names[p], n);\n    }}\n    printf(\"\\n\");\n",
+                     X);
   }
   s += "}\n\n";
   s += fmt::format("int main(void)\n{{\n    {0} m;\n    int tick = 0;\n"
@@ -499,15 +502,16 @@ inline std::string harness_source(const model::Model &m, const model::Chart &cha
                    "    while (fgets(script, sizeof script, stdin) != NULL) {{\n"
                    "        printf(\"tick %d\\n\", ++tick);\n"
                    "        {0}_run(&m);\n"
-                   "        print_state(&m);\n    }}\n    return 0;\n}}\n", X);
+                   "        print_state(&m);\n    }}\n    return 0;\n}}\n",
+                   X);
   return s;
 }
 
 /// Writes the engine and the harness into a scratch directory, compiles them with every C
 /// compiler at kStrictFlags (plus `defines`), runs each on `script` and returns the log, which
 /// must be the same for every compiler. `exit_ok`: the run must exit with status 0.
-inline std::string compile_and_run(const std::string &test, const std::vector<OutputFile> &files,
-                                   const model::Model &m, const model::Chart &chart, const std::string &script,
+inline std::string compile_and_run(const std::string &test, const std::vector<OutputFile> &files, const model::Model &m,
+                                   const model::Chart &chart, const std::string &script,
                                    const std::string &defines = "", bool exit_ok = true) {
   REQUIRE(files.size() == 2);
   fs::path dir = scratch_dir(test);
@@ -538,4 +542,4 @@ inline std::string compile_and_run(const std::string &test, const std::vector<Ou
   return first;
 }
 
-} // namespace cbt
+}  // namespace cbt

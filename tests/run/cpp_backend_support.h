@@ -90,7 +90,8 @@ inline std::map<std::string, std::string> chart_files(const fs::path &dir) {
   std::map<std::string, std::string> files;
   for (const auto &entry : fs::directory_iterator(dir)) {
     auto ext = entry.path().extension();
-    if (ext == ".plan" || ext == ".toolbox") files[entry.path().filename().string()] = test::read_file(entry.path().string());
+    if (ext == ".plan" || ext == ".toolbox")
+      files[entry.path().filename().string()] = test::read_file(entry.path().string());
   }
   return files;
 }
@@ -135,11 +136,12 @@ inline test::CommandResult compile_object(const std::string &cxx, const std::str
 inline std::string build_harness(const std::string &cxx, const std::string &dir, const std::string &plan_base,
                                  const std::string &plan_name, const std::string &env) {
   std::string exe = dir + "/run-" + cxx;
-  auto r = test::run_command(fmt::format(
-      "cd '{}' && {} {} -I . -I '{}' -I '{}' '-DPLAN_HEADER=\"{}.hpp\"' -DPLAN_FACTORY=make_{} -DPLAN_ENV={} '{}' {}.cpp "
-      "'{}' {} -pthread -o '{}'",
-      dir, cxx, kStrictFlags, kRunDir.string(), kRuntimeInclude.string(), plan_base, plan_name, env,
-      (kRunDir / "run_plan.cc").string(), plan_base, kRuntimeLibrary.string(), kRuntimeLinkFlags, exe));
+  auto r = test::run_command(fmt::format("cd '{}' && {} {} -I . -I '{}' -I '{}' '-DPLAN_HEADER=\"{}.hpp\"' "
+                                         "-DPLAN_FACTORY=make_{} -DPLAN_ENV={} '{}' {}.cpp "
+                                         "'{}' {} -pthread -o '{}'",
+                                         dir, cxx, kStrictFlags, kRunDir.string(), kRuntimeInclude.string(), plan_base,
+                                         plan_name, env, (kRunDir / "run_plan.cc").string(), plan_base,
+                                         kRuntimeLibrary.string(), kRuntimeLinkFlags, exe));
   INFO(cxx << " in " << dir << ":\n" << r.out);
   REQUIRE(r.exit_code == 0);
   return exe;
@@ -169,4 +171,4 @@ inline std::string first_difference(const std::string &expected, const std::stri
   }
 }
 
-} // namespace cppt
+}  // namespace cppt

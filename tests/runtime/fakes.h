@@ -18,7 +18,7 @@ using namespace std::chrono_literals;
 /// Finishes in `state` at its `steps`-th step of each run (never if steps <= 0).
 /// Optional hooks run at start, at each step and at stop (read inputs, write outputs, throw).
 class FakeActor : public afp::Actor {
-public:
+ public:
   enum State { DONE, OTHER, THIRD };
 
   explicit FakeActor(int steps = 1, int state = DONE) : steps_(steps), state_(state) {}
@@ -47,7 +47,7 @@ public:
   std::atomic<int> steps_total{0};
   std::atomic<int> stops{0};
 
-private:
+ private:
   int steps_;
   int state_;
   int taken_ = 0;
@@ -56,7 +56,7 @@ private:
 /// Calls `rule` at each check (and `on_start`, if set, at start); counts its
 /// life and records check times.
 class FakeSupervisor : public afp::Supervisor {
-public:
+ public:
   enum Event { FIRED, OTHER_EVENT };
   using Rule = std::function<afp::CheckResult(afp::Context&)>;
 
@@ -90,7 +90,7 @@ public:
   std::atomic<int> checks{0};
   std::atomic<int> stops{0};
 
-private:
+ private:
   Rule rule_;
   mutable std::mutex mutex_;
   std::vector<afp::Duration> check_times_;
@@ -108,7 +108,7 @@ inline FakeSupervisor::Rule never() {
 
 /// The example computation of the toolbox: rest = n - 1; AGAIN while rest > 0.
 class CountDown : public afp::Computation {
-public:
+ public:
   enum State { AGAIN, DONE };
 
   CountDown(afp::In<int> n, afp::Out<int> rest) : n_(std::move(n)), rest_(std::move(rest)) {}
@@ -119,14 +119,14 @@ public:
     return rest > 0 ? AGAIN : DONE;
   }
 
-private:
+ private:
   afp::In<int> n_;
   afp::Out<int> rest_;
 };
 
 /// Records the trace as lines "Plan: what", with the plan time of each.
 class Recorder : public afp::TraceObserver {
-public:
+ public:
   void actor_started(const afp::Plan& plan, std::string_view actor, afp::Duration now) override {
     add(plan, "start " + std::string(actor), now);
   }
@@ -148,7 +148,7 @@ public:
   std::vector<std::string> lines;
   std::vector<afp::Duration> times;
 
-private:
+ private:
   void add(const afp::Plan& plan, std::string what, afp::Duration now) {
     lines.push_back(plan.name() + ": " + what);
     times.push_back(now);

@@ -47,18 +47,15 @@ TEST_CASE("wiring mistakes are reported when the rule is defined", "[plan]") {
 
   plan.define_subsequent(a, FakeActor::DONE, afp::terminate);
   CHECK_THROWS_WITH(plan.define_subsequent(a, FakeActor::DONE, a), "two rules for state 0 of actor 'a'");
-  CHECK_THROWS_WITH(plan.define_supervision(c, s, FakeSupervisor::FIRED, a),
-                    "computation 'c' cannot have supervisors");
+  CHECK_THROWS_WITH(plan.define_supervision(c, s, FakeSupervisor::FIRED, a), "computation 'c' cannot have supervisors");
 
   plan.define_supervision(a, s, FakeSupervisor::FIRED, afp::ignore);
-  CHECK_THROWS_WITH(plan.define_supervision(a, s, FakeSupervisor::FIRED, a),
-                    "two rules for event 0 of supervisor 's'");
+  CHECK_THROWS_WITH(plan.define_supervision(a, s, FakeSupervisor::FIRED, a), "two rules for event 0 of supervisor 's'");
   CHECK_THROWS_WITH(plan.define_global_supervision(s, FakeSupervisor::OTHER_EVENT, afp::terminate),
                     "supervisor 's' already watches actor 'a'");
 
   plan.define_global_supervision(g, FakeSupervisor::FIRED, afp::terminate);
-  CHECK_THROWS_WITH(plan.define_supervision(a, g, FakeSupervisor::OTHER_EVENT, a),
-                    "supervisor 'g' is already global");
+  CHECK_THROWS_WITH(plan.define_supervision(a, g, FakeSupervisor::OTHER_EVENT, a), "supervisor 'g' is already global");
 
   plan.define_first_actor(a);
   CHECK_THROWS_WITH(plan.define_first_actor(c), "plan 'P' has two first actors");

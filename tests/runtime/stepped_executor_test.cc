@@ -98,7 +98,7 @@ TEST_CASE("an actor's supervisor interrupts it and its event selects the next ac
   CHECK(trace.lines == Lines{"P: start a", "P: a interrupted by s.0", "P: start b", "P: b -> 0", "P: end succeeded"});
   CHECK(trace.times == Times{0ms, 30ms, 30ms, 40ms, 40ms});
   CHECK(s->check_times() == Times{10ms, 20ms, 30ms});  // not while b runs
-  CHECK(a->steps_total == 2);  // the step at 30ms was preempted
+  CHECK(a->steps_total == 2);                          // the step at 30ms was preempted
   CHECK(a->stops == 1);
   CHECK(s->starts == 1);
   CHECK(s->stops == 1);
@@ -370,9 +370,7 @@ TEST_CASE("an actor that throws or whose parameter does not convert ends the pla
     a->on_stop = [] { throw std::runtime_error("motor jammed"); };
     what = "motor jammed";
   }
-  SECTION("a result state without a rule") {
-    what = "no rule for result state 0";
-  }
+  SECTION("a result state without a rule") { what = "no rule for result state 0"; }
   plan.define_first_actor(a);
   afp::Configuration config;
   fakes::Recorder trace;
@@ -393,7 +391,8 @@ TEST_CASE("a supervisor that throws, or raises an event without a rule, fails th
   plan.define_first_actor(a);
   std::string expected;
   SECTION("throws in check") {
-    auto* s = add_supervisor(plan, "s", 0ms, [](afp::Context&) -> afp::CheckResult { throw std::runtime_error("bad"); });
+    auto* s =
+        add_supervisor(plan, "s", 0ms, [](afp::Context&) -> afp::CheckResult { throw std::runtime_error("bad"); });
     plan.define_supervision(a, s, FakeSupervisor::FIRED, afp::terminate);
     expected = "s: bad";
   }

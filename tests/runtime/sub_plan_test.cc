@@ -95,9 +95,8 @@ TEST_CASE("a sub-plan whose actor fails ends in ERROR - the plan above goes on",
   CHECK(outer.z->starts == 1);
   CHECK(exec.error().empty());
   CHECK(trace.lines == Lines{"Outer: start nav", "Inner: start a",
-                             "Inner: a failed: cannot convert string \"abc\" to int: not a number",
-                             "Inner: end failed", "Outer: nav -> 2", "Outer: start z", "Outer: z -> 0",
-                             "Outer: end succeeded"});
+                             "Inner: a failed: cannot convert string \"abc\" to int: not a number", "Inner: end failed",
+                             "Outer: nav -> 2", "Outer: start z", "Outer: z -> 0", "Outer: end succeeded"});
 }
 
 TEST_CASE("a sub-plan's global supervisor acts only inside the sub-plan", "[subplan]") {
@@ -158,8 +157,8 @@ TEST_CASE("a supervisor of the plan above interrupts the whole sub-plan, before 
 
   CHECK(run(exec) == Status::Succeeded);
   CHECK(trace.lines == Lines{"Outer: start nav", "Inner: start a", "Inner: a -> 0", "Inner: start b",
-                             "Inner: end stopped", "Outer: nav interrupted by s.0", "Outer: start p2",
-                             "Outer: p2 -> 0", "Outer: end succeeded"});
+                             "Inner: end stopped", "Outer: nav interrupted by s.0", "Outer: start p2", "Outer: p2 -> 0",
+                             "Outer: end succeeded"});
   CHECK(ig->check_times() == Times{10ms, 20ms});  // at 30ms the outer supervisor came first
   CHECK(b->stops == 1);
   CHECK(ig->stops == 1);

@@ -68,10 +68,10 @@ TEST_CASE("threaded: an external write makes a supervisor interrupt - its output
   auto* a = plan.add_actor("a", std::make_unique<FakeActor>(0));
   auto* b = plan.add_actor("b", std::make_unique<FakeActor>(1));
   auto* s = plan.add_supervisor("s", std::make_unique<FakeSupervisor>(2ms, [](afp::Context& ctx) {
-    if (!ctx.config().get<bool>("go")) return afp::no_event;
-    afp::out<std::string>("reason").write(ctx, "go seen");
-    return afp::CheckResult(FakeSupervisor::FIRED);
-  }));
+                                  if (!ctx.config().get<bool>("go")) return afp::no_event;
+                                  afp::out<std::string>("reason").write(ctx, "go seen");
+                                  return afp::CheckResult(FakeSupervisor::FIRED);
+                                }));
   plan.define_first_actor(a);
   plan.define_subsequent(a, FakeActor::DONE, afp::terminate);
   plan.define_supervision(a, s, FakeSupervisor::FIRED, b);
@@ -101,10 +101,11 @@ TEST_CASE("threaded: of many supervisors firing together exactly one interrupts"
     std::vector<FakeActor*> targets;
     for (int i = 0; i < watchers; ++i) {
       auto* target = plan.add_actor("t" + std::to_string(i), std::make_unique<FakeActor>(1));
-      auto* s = plan.add_supervisor("s" + std::to_string(i), std::make_unique<FakeSupervisor>(1ms, [i](afp::Context& ctx) {
-        afp::out<int>("who").write(ctx, i);
-        return afp::CheckResult(FakeSupervisor::FIRED);
-      }));
+      auto* s =
+          plan.add_supervisor("s" + std::to_string(i), std::make_unique<FakeSupervisor>(1ms, [i](afp::Context& ctx) {
+                                afp::out<int>("who").write(ctx, i);
+                                return afp::CheckResult(FakeSupervisor::FIRED);
+                              }));
       plan.define_supervision(a, s, FakeSupervisor::FIRED, target);
       plan.define_subsequent(target, FakeActor::DONE, afp::terminate);
       targets.push_back(target);
@@ -120,8 +121,9 @@ TEST_CASE("threaded: of many supervisors firing together exactly one interrupts"
     int who = config.get<int>("who");
     REQUIRE(who >= 0);
     CHECK(targets[who]->starts == 1);  // the winner's output and the winner's target
-    auto interruptions = std::count_if(trace.lines.begin(), trace.lines.end(),
-                                       [](const std::string& l) { return l.find("interrupted by") != std::string::npos; });
+    auto interruptions = std::count_if(trace.lines.begin(), trace.lines.end(), [](const std::string& l) {
+      return l.find("interrupted by") != std::string::npos;
+    });
     CHECK(interruptions == 1);
     CHECK(trace.lines[1] == "P: a interrupted by s" + std::to_string(who) + ".0");
   }
@@ -136,9 +138,9 @@ TEST_CASE("threaded: an actor finishing and a supervisor firing never both end t
     auto* by_event = plan.add_actor("by_event", std::make_unique<FakeActor>(1));
     a->on_start = [](afp::Context& ctx) { afp::out<int>("x").write(ctx, 1); };
     auto* s = plan.add_supervisor("s", std::make_unique<FakeSupervisor>(1ms, [](afp::Context& ctx) {
-      afp::out<int>("x").write(ctx, 2);
-      return afp::CheckResult(FakeSupervisor::FIRED);
-    }));
+                                    afp::out<int>("x").write(ctx, 2);
+                                    return afp::CheckResult(FakeSupervisor::FIRED);
+                                  }));
     plan.define_first_actor(a);
     plan.define_subsequent(a, FakeActor::DONE, by_state);
     plan.define_supervision(a, s, FakeSupervisor::FIRED, by_event);
@@ -251,8 +253,8 @@ TEST_CASE("threaded: a supervisor that throws fails the plan", "[threaded]") {
   afp::Plan plan("P");
   auto* a = plan.add_actor("a", std::make_unique<FakeActor>(0));
   auto* s = plan.add_supervisor("s", std::make_unique<FakeSupervisor>(1ms, [](afp::Context&) -> afp::CheckResult {
-    throw std::runtime_error("sensor lost");
-  }));
+                                  throw std::runtime_error("sensor lost");
+                                }));
   plan.define_first_actor(a);
   plan.define_supervision(a, s, FakeSupervisor::FIRED, afp::terminate);
   afp::Configuration config;
@@ -302,7 +304,7 @@ TEST_CASE("threaded: a trace hook that throws fails the run, under start() and r
       CHECK(exec.status() == Status::Failed);
       CHECK(exec.error() == "trace observer: trace disk full");
       CHECK(trace.calls == at);  // not called again after it threw
-      CHECK(a->stops == 1);       // the actor it interrupted was stopped
+      CHECK(a->stops == 1);      // the actor it interrupted was stopped
     }
   }
 }

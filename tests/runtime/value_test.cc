@@ -7,8 +7,8 @@
 #include <limits>
 #include <string>
 
-using afp::convert;
 using afp::ConversionError;
+using afp::convert;
 using afp::Type;
 using afp::Value;
 

@@ -29,7 +29,7 @@ struct Env {
 // ---- The Carbot toolbox, as a toolbox developer would write it ----
 
 class Forward : public afp::Actor {
-public:
+ public:
   enum State { FORWARD_OK };
   Forward(Env& ee, afp::In<float> distance) : ee_(ee), distance_(std::move(distance)) {}
   void start(afp::Context& ctx) override { remaining_ = distance_.read(ctx); }
@@ -40,14 +40,14 @@ public:
     return remaining_ == 0 ? afp::StepResult(FORWARD_OK) : afp::running;
   }
 
-private:
+ private:
   Env& ee_;
   afp::In<float> distance_;
   float remaining_ = 0;
 };
 
 class Turn : public afp::Actor {
-public:
+ public:
   enum State { TURN_OK };
   Turn(Env& ee, afp::In<float> angle) : ee_(ee), angle_(std::move(angle)) {}
   void start(afp::Context& ctx) override { angle_now_ = angle_.read(ctx); }
@@ -56,14 +56,14 @@ public:
     return TURN_OK;
   }
 
-private:
+ private:
   Env& ee_;
   afp::In<float> angle_;
   float angle_now_ = 0;
 };
 
 class SearchWall : public afp::Actor {
-public:
+ public:
   enum State { WALL_FOUND, NO_WALL_FOUND };
   SearchWall(Env& ee, afp::Out<float> angle) : ee_(ee), angle_(std::move(angle)) {}
   afp::StepResult step(afp::Context& ctx) override {
@@ -72,43 +72,41 @@ public:
     return WALL_FOUND;
   }
 
-private:
+ private:
   Env& ee_;
   afp::Out<float> angle_;
 };
 
 class WallForward : public afp::Actor {
-public:
+ public:
   enum State { FORWARD_OK, LANE_NOT_FREE, WALL_LOST };
   WallForward(Env& ee, afp::In<float> dist, afp::In<float> min_dist, afp::In<float> max_dist)
       : ee_(ee), dist_(std::move(dist)), min_dist_(std::move(min_dist)), max_dist_(std::move(max_dist)) {}
-  void start(afp::Context& ctx) override {
-    band_ = {dist_.read(ctx), min_dist_.read(ctx), max_dist_.read(ctx)};
-  }
+  void start(afp::Context& ctx) override { band_ = {dist_.read(ctx), min_dist_.read(ctx), max_dist_.read(ctx)}; }
   afp::StepResult step(afp::Context&) override {
     if (ee_.obstacle_distance < band_[0]) return LANE_NOT_FREE;
     if (!ee_.wall_visible) return WALL_LOST;
     return afp::running;
   }
 
-private:
+ private:
   Env& ee_;
   afp::In<float> dist_, min_dist_, max_dist_;
   std::vector<float> band_;  // dist, minDist, maxDist as read at start
 };
 
 class CheckTouch : public afp::Supervisor {
-public:
+ public:
   enum Event { TOUCHED };
   explicit CheckTouch(Env& ee) : ee_(ee) {}
   afp::CheckResult check(afp::Context&) override { return ee_.touching ? afp::CheckResult(TOUCHED) : afp::no_event; }
 
-private:
+ private:
   Env& ee_;
 };
 
 class CheckLane : public afp::Supervisor {
-public:
+ public:
   enum Event { LANE_NOT_FREE };
   CheckLane(Env& ee, afp::In<float> dist) : afp::Supervisor(10ms), ee_(ee), dist_(std::move(dist)) {}
   void start(afp::Context& ctx) override { limit_ = dist_.read(ctx); }
@@ -116,19 +114,19 @@ public:
     return ee_.obstacle_distance < limit_ ? afp::CheckResult(LANE_NOT_FREE) : afp::no_event;
   }
 
-private:
+ private:
   Env& ee_;
   afp::In<float> dist_;
   float limit_ = 0;
 };
 
 class CheckEscape : public afp::Supervisor {
-public:
+ public:
   enum Event { ESCAPE };
   explicit CheckEscape(Env& ee) : ee_(ee) {}
   afp::CheckResult check(afp::Context&) override { return ee_.escape ? afp::CheckResult(ESCAPE) : afp::no_event; }
 
-private:
+ private:
   Env& ee_;
 };
 
@@ -141,14 +139,18 @@ std::unique_ptr<afp::Plan> make_WallFollow(Env& ee) {
 
   // Actors
   auto* searchFirstWall = plan->add_actor("searchFirstWall", std::make_unique<Forward>(ee, afp::in<float>(100000)));
-  auto* backupCollision = plan->add_actor("backupCollision", std::make_unique<Forward>(ee,
-      afp::in<float>([](const afp::ConfigView& c) { return -c.get<float>("walldist"); })));
-  auto* findWallAngle = plan->add_actor("findWallAngle", std::make_unique<SearchWall>(ee, afp::out<float>("wallangle")));
-  auto* parallelToWall = plan->add_actor("parallelToWall", std::make_unique<Turn>(ee, afp::in<float>(afp::entry("wallangle"))));
-  auto* followWall = plan->add_actor("followWall", std::make_unique<WallForward>(ee,
-      afp::in<float>(afp::entry("walldist")),
-      afp::in<float>([](const afp::ConfigView& c) { return c.get<float>("walldist") - 5; }),
-      afp::in<float>([](const afp::ConfigView& c) { return c.get<float>("walldist") + 5; })));
+  auto* backupCollision = plan->add_actor(
+      "backupCollision", std::make_unique<Forward>(
+                             ee, afp::in<float>([](const afp::ConfigView& c) { return -c.get<float>("walldist"); })));
+  auto* findWallAngle =
+      plan->add_actor("findWallAngle", std::make_unique<SearchWall>(ee, afp::out<float>("wallangle")));
+  auto* parallelToWall =
+      plan->add_actor("parallelToWall", std::make_unique<Turn>(ee, afp::in<float>(afp::entry("wallangle"))));
+  auto* followWall = plan->add_actor(
+      "followWall", std::make_unique<WallForward>(
+                        ee, afp::in<float>(afp::entry("walldist")),
+                        afp::in<float>([](const afp::ConfigView& c) { return c.get<float>("walldist") - 5; }),
+                        afp::in<float>([](const afp::ConfigView& c) { return c.get<float>("walldist") + 5; })));
   auto* turnAfterWallLost = plan->add_actor("turnAfterWallLost", std::make_unique<Turn>(ee, afp::in<float>(-60)));
 
   // Supervisors
@@ -198,29 +200,29 @@ TEST_CASE("the wall-following plan of the paper runs as drawn", "[wallfollow]") 
     for (int i = 0; i < steps; ++i) exec.step(10ms);
   };
 
-  run_for(3);                    // driving towards a wall
-  ee.obstacle_distance = 20;     // the lane supervisor sees it
+  run_for(3);                 // driving towards a wall
+  ee.obstacle_distance = 20;  // the lane supervisor sees it
   ee.wall_visible = true;
   ee.wall_angle = 12;
-  run_for(1);                    // lane: LANE_NOT_FREE -> findWallAngle
+  run_for(1);  // lane: LANE_NOT_FREE -> findWallAngle
   ee.obstacle_distance = 1000;
-  run_for(3);                    // WALL_FOUND -> parallelToWall -> followWall
+  run_for(3);  // WALL_FOUND -> parallelToWall -> followWall
   CHECK(config.get<float>("wallangle") == 12.0f);
   CHECK(ee.heading == 12.0f);
   ee.touching = true;
-  run_for(1);                    // wallTouch: TOUCHED -> backupCollision
+  run_for(1);  // wallTouch: TOUCHED -> backupCollision
   ee.touching = false;
   float before_backup = ee.position;
-  run_for(3);                    // backs up 25 in 3 steps, then findWallAngle
+  run_for(3);  // backs up 25 in 3 steps, then findWallAngle
   CHECK(ee.position == before_backup - 25);
   ee.wall_visible = false;
-  run_for(3);                    // NO_WALL_FOUND -> turnAfterWallLost -> searchFirstWall
+  run_for(3);  // NO_WALL_FOUND -> turnAfterWallLost -> searchFirstWall
   CHECK(ee.heading == 12.0f - 60.0f);
   ee.escape = true;
   CHECK(exec.step(10ms) == afp::Status::Interrupted);
 
-  CHECK(started(trace) == std::vector<std::string>{"searchFirstWall", "findWallAngle", "parallelToWall",
-                                                   "followWall", "backupCollision", "findWallAngle",
-                                                   "turnAfterWallLost", "searchFirstWall"});
+  CHECK(started(trace) == std::vector<std::string>{"searchFirstWall", "findWallAngle", "parallelToWall", "followWall",
+                                                   "backupCollision", "findWallAngle", "turnAfterWallLost",
+                                                   "searchFirstWall"});
   CHECK(trace.lines.back() == "WallFollow: end interrupted");
 }

@@ -60,7 +60,8 @@ std::string object_at(const std::string &file, const std::string &id) {
   std::size_t at = text.find("\"id\" : " + id + ",");
   REQUIRE(at != std::string::npos);
   std::size_t brace = text.rfind('{', at);
-  std::size_t line = 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<long>(brace), '\n'));
+  std::size_t line =
+      1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<long>(brace), '\n'));
   std::size_t col = brace - (text.rfind('\n', brace) + 1) + 1;
   return fmt::format("{}:{}", line, col);
 }
@@ -71,10 +72,11 @@ std::vector<std::string> place_names(const model::Chart &c) {
   return names;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("alica json: values keep their positions and ids their exact digits", "[alica]") {
-  std::string text = "{\n  \"id\" : 4611686018427387905,\n  \"name\" : \"A\\u00e9\\n\",\n  \"x\" : [ 1.5e3, true, null ]\n}";
+  std::string text =
+      "{\n  \"id\" : 4611686018427387905,\n  \"name\" : \"A\\u00e9\\n\",\n  \"x\" : [ 1.5e3, true, null ]\n}";
   alica::JsonError error;
   auto v = alica::parse_json(text, error);
   REQUIRE(v);
@@ -261,7 +263,8 @@ TEST_CASE("alica: malformed JSON and XML plans are located errors", "[alica]") {
                     "'\"' [json]") != std::string::npos);
   Run xml("old.pml", {{"old.pml", "<?xml version=\"1.0\" encoding=\"ASCII\"?>\n<alica:Plan id=\"1\"/>\n"}});
   CHECK(xml.diag.error_count() == 1);
-  CHECK(xml.text.find("old.pml:1:1: error: this is an XML file of ALICA's older Eclipse designer") != std::string::npos);
+  CHECK(xml.text.find("old.pml:1:1: error: this is an XML file of ALICA's older Eclipse designer") !=
+        std::string::npos);
   // -x alica on a file that is JSON but no plan.
   SourceManager sources;
   Diagnostics diag;
@@ -271,9 +274,12 @@ TEST_CASE("alica: malformed JSON and XML plans are located errors", "[alica]") {
   options.language = InputLanguage::Alica;
   load_program("tasks.json", options, mem, sources, diag);
   REQUIRE(diag.error_count() == 1);
-  CHECK(render_text(diag.all().front(), sources).rfind(
-            "tasks.json:1:1: error: 'tasks.json' is not an ALICA plan: a plan is a JSON object with \"entryPoints\" "
-            "and \"states\" [alica-format]", 0) == 0);
+  CHECK(
+      render_text(diag.all().front(), sources)
+          .rfind(
+              "tasks.json:1:1: error: 'tasks.json' is not an ALICA plan: a plan is a JSON object with \"entryPoints\" "
+              "and \"states\" [alica-format]",
+              0) == 0);
 }
 
 TEST_CASE("alica: what has no gfec counterpart is a located warning naming it", "[alica]") {
@@ -363,13 +369,13 @@ TEST_CASE("alica: ids above 2^53 are quoted exactly, never rounded", "[alica]") 
                         "outState" : 4611686018427387907, "preCondition" : null } ] })";
   Run r("huge.pml", {{"huge.pml", plan}});
   INFO(r.text);
-  CHECK(r.text.find("huge.pml:4:23: error: transition from state 'Spin' to itself [self-transition]") != std::string::npos);
+  CHECK(r.text.find("huge.pml:4:23: error: transition from state 'Spin' to itself [self-transition]") !=
+        std::string::npos);
   CHECK(r.text.find("note: this is ALICA transition 'Again' (id 4611686018427387909) of plan 'Huge' (id "
                     "9223372036854775807)") != std::string::npos);
 }
 
-TEST_CASE("alica: the folder layouts of ALICA's own repositories are found, as ALICA's engine finds them",
-          "[alica]") {
+TEST_CASE("alica: the folder layouts of ALICA's own repositories are found, as ALICA's engine finds them", "[alica]") {
   // tests/alica/layout/etc: plans/, behaviours/, conditions/, placeholders/, tasks/, with a plan
   // type and a plan in plans/sub/ whose paths are stale. Read from disk, as gfec reads it.
   fs::path etc = kFixtures / "layout" / "etc";
@@ -446,7 +452,8 @@ TEST_CASE("alica: a mistyped id in a repository suggests the element with the cl
   std::string patrol = test::read_file((kFixtures / "layout/etc/plans/Patrol.pml").string());
   std::size_t at = patrol.find("ConditionRepository.cnd#1900000002002");
   REQUIRE(at != std::string::npos);
-  patrol.replace(at, std::string("ConditionRepository.cnd#1900000002002").size(), "ConditionRepository.cnd#1900000002012");
+  patrol.replace(at, std::string("ConditionRepository.cnd#1900000002002").size(),
+                 "ConditionRepository.cnd#1900000002012");
   Run r("layout/etc/plans/Typo.pml", {{"layout/etc/plans/Typo.pml", patrol}});
   INFO(r.text);
   CHECK(r.diag.error_count() == 2);  // and the stale path, as above
@@ -471,7 +478,8 @@ TEST_CASE("alica: ALICA's other files given to gfec say what they are, at their 
   // An XML file of the older designer, whatever its kind.
   Run xml("old.pty", {{"old.pty", "<?xml version=\"1.0\" encoding=\"ASCII\"?>\n<alica:PlanType id=\"1\"/>\n"}});
   CHECK(xml.diag.error_count() == 1);
-  CHECK(xml.text.find("old.pty:1:1: error: this is an XML file of ALICA's older Eclipse designer") != std::string::npos);
+  CHECK(xml.text.find("old.pty:1:1: error: this is an XML file of ALICA's older Eclipse designer") !=
+        std::string::npos);
 }
 
 TEST_CASE("alica: names the engine, C or C++ reserve, and names that are ids, become other identifiers", "[alica]") {

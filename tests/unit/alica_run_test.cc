@@ -27,7 +27,7 @@ std::string engine_body(const std::string &text) {
   return out;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("alica run: an imported plan's engine runs its machine as the plan says", "[alica][c-run]") {
   auto compiled = compile_chart(fixture_files(), "plans/Fetch.pml", "engine.c");
@@ -66,8 +66,8 @@ TEST_CASE("alica run: an imported plan's engine runs its machine as the plan say
 TEST_CASE("alica run: the stuck path ends in the failure state", "[alica][c-run]") {
   auto compiled = compile_chart(fixture_files(), "plans/Fetch.pml", "engine.c");
   REQUIRE(!compiled->diag.has_errors());
-  std::string log = compile_and_run("alica_fetch_stuck", compiled->files, compiled->model, compiled->the_chart(),
-                                    "Stuck\n\n");
+  std::string log =
+      compile_and_run("alica_fetch_stuck", compiled->files, compiled->model, compiled->the_chart(), "Stuck\n\n");
   CHECK(log == "tick 1\n"
                "cond Arrived -> 0\n"
                "cond Stuck -> 1\n"
@@ -86,14 +86,16 @@ TEST_CASE("alica run: --emit=chart writes text that compiles to the same engine"
     fs::create_directories(dir / "from_plan");
     fs::create_directories(dir / "from_text");
     fs::path pml = kFixtures / path;
-    auto convert = run_command(fmt::format("'{}' --emit=chart '{}' -o '{}'", gfec, pml.string(),
-                                           (dir / "converted.sfc").string()), dir / "convert.log");
+    auto convert =
+        run_command(fmt::format("'{}' --emit=chart '{}' -o '{}'", gfec, pml.string(), (dir / "converted.sfc").string()),
+                    dir / "convert.log");
     INFO(convert.output);
     REQUIRE(convert.status == 0);
-    auto a = run_command(fmt::format("'{}' '{}' -o '{}'", gfec, pml.string(), (dir / "from_plan" / "engine.c").string()),
-                         dir / "a.log");
+    auto a = run_command(
+        fmt::format("'{}' '{}' -o '{}'", gfec, pml.string(), (dir / "from_plan" / "engine.c").string()), dir / "a.log");
     auto b = run_command(fmt::format("'{}' '{}' -o '{}'", gfec, (dir / "converted.sfc").string(),
-                                     (dir / "from_text" / "engine.c").string()), dir / "b.log");
+                                     (dir / "from_text" / "engine.c").string()),
+                         dir / "b.log");
     INFO(a.output << b.output << read_file(dir / "converted.sfc"));
     REQUIRE(a.status == 0);
     REQUIRE(b.status == 0);

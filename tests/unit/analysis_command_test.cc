@@ -22,22 +22,24 @@ sfc Choice {
 }
 )";
 
-} // namespace
+}  // namespace
 
 TEST_CASE("gfec --analyze: a report per chart and plan, every analysis on") {
   auto r = run_command(gfec_exe + " --analyze " + samples + "/line_follower.sfc " + samples + "/cleanup.fsm");
   CHECK(r.exit_code == 0);
-  CHECK(r.out == samples + "/line_follower.sfc:\n"
-                           "  sfc LineFollower: 4 places, 4 transitions\n"
-                           "    activation states: 4 (all of them)\n"
-                           "    safe: no place ever holds more than one activation\n"
-                           "    deadlocks: none\n"
-                           "    never active: 0 places; never firing: 0 transitions\n" +
-                    samples + "/cleanup.fsm:\n"
-                              "  fsm CleanUp: 6 states (2 terminal), 8 transitions\n"
-                              "    reachable states: 6 of 6\n"
-                              "    states that can never finish: 0\n"
-                              "    shadowed transitions: 0\n");
+  CHECK(r.out == samples +
+                     "/line_follower.sfc:\n"
+                     "  sfc LineFollower: 4 places, 4 transitions\n"
+                     "    activation states: 4 (all of them)\n"
+                     "    safe: no place ever holds more than one activation\n"
+                     "    deadlocks: none\n"
+                     "    never active: 0 places; never firing: 0 transitions\n" +
+                     samples +
+                     "/cleanup.fsm:\n"
+                     "  fsm CleanUp: 6 states (2 terminal), 8 transitions\n"
+                     "    reachable states: 6 of 6\n"
+                     "    states that can never finish: 0\n"
+                     "    shadowed transitions: 0\n");
   auto plan = run_command(gfec_exe + " --analyze " + samples + "/wall_follow.plan");
   CHECK(plan.exit_code == 0);
   // -Wsupervisor-race is off by default, on under --analyze.
@@ -55,7 +57,8 @@ TEST_CASE("gfec: the analyses run in every compile, as named warnings that -Werr
                    "[-Wdeadlock]") != std::string::npos);
   CHECK(r.out.find("[-Wdead-join]") != std::string::npos);
   CHECK(run_command(gfec_exe + " --check -Werror " + dir + "/choice.sfc").exit_code == 1);
-  auto quiet = run_command(gfec_exe + " --check -Wno-deadlock -Wno-dead-join -Wno-unreachable-place " + dir + "/choice.sfc");
+  auto quiet =
+      run_command(gfec_exe + " --check -Wno-deadlock -Wno-dead-join -Wno-unreachable-place " + dir + "/choice.sfc");
   CHECK(quiet.exit_code == 0);
   CHECK(quiet.out == "");
 }

@@ -11,7 +11,7 @@ using test::headlines;
 
 namespace {
 const char *kBot = "interface Bot { bool x(); bool y(); void Go(); }";
-} // namespace
+}  // namespace
 
 TEST_CASE("analysis fsm: states that can never reach a terminal state") {
   auto c = compile(R"(
@@ -79,7 +79,7 @@ toolbox Bot {
   supervisor CheckEscape() events ESCAPE;
 }
 )";
-} // namespace
+}  // namespace
 
 TEST_CASE("analysis plan: a config entry read before anything writes it") {
   auto c = compile(R"(

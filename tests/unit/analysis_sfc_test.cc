@@ -8,7 +8,7 @@ using test::headlines;
 
 namespace {
 const char *kBot = "interface Bot { bool Go(); bool Left(); bool Right(); void Log(int n); }";
-} // namespace
+}  // namespace
 
 TEST_CASE("analysis sfc: the line follower is safe, live and quiet") {
   auto c = compile(R"(
@@ -23,12 +23,11 @@ sfc LineFollower {
                    kBot);
   std::string report;
   CHECK(analyze_text(*c, true, {}, &report) == "");
-  CHECK(report ==
-        "sfc LineFollower: 4 places, 4 transitions\n"
-        "  activation states: 4 (all of them)\n"
-        "  safe: no place ever holds more than one activation\n"
-        "  deadlocks: none\n"
-        "  never active: 0 places; never firing: 0 transitions\n");
+  CHECK(report == "sfc LineFollower: 4 places, 4 transitions\n"
+                  "  activation states: 4 (all of them)\n"
+                  "  safe: no place ever holds more than one activation\n"
+                  "  deadlocks: none\n"
+                  "  never active: 0 places; never firing: 0 transitions\n");
 }
 
 TEST_CASE("analysis sfc: a place that gains activation every tick is unbounded") {
@@ -169,7 +168,8 @@ TEST_CASE("analysis sfc: a chart of any size costs a bounded amount of work") {
   const int n = 200000;
   std::string text = "sfc Ring {\n  initial place P0;\n";
   for (int i = 1; i < n; ++i) text += "  place P" + std::to_string(i) + ";\n";
-  for (int i = 0; i < n; ++i) text += "  P" + std::to_string(i) + " -> P" + std::to_string((i + 1) % n) + " when Go();\n";
+  for (int i = 0; i < n; ++i)
+    text += "  P" + std::to_string(i) + " -> P" + std::to_string((i + 1) % n) + " when Go();\n";
   text += "}\n";
   auto c = compile(text, kBot);
   analysis::Limits limits;
@@ -183,7 +183,8 @@ TEST_CASE("analysis sfc: a chart of any size costs a bounded amount of work") {
 
   // A small ring is explored whole, and a long chain of unconditional transitions (no branch at
   // all) neither recurses nor stops early.
-  auto small = compile("sfc Ring { initial place A; place B; place C; A -> B when Go(); B -> C when Go(); C -> A; }", kBot);
+  auto small =
+      compile("sfc Ring { initial place A; place B; place C; A -> B when Go(); B -> C when Go(); C -> A; }", kBot);
   CHECK(analysis::explore(small->model.charts.at(0)).exact());
   std::string chain = "sfc Chain {\n  initial place Q0;\n";
   for (int i = 1; i < 20000; ++i) chain += "  place Q" + std::to_string(i) + ";\n";

@@ -13,10 +13,8 @@ inline std::string analyze_text(const Compiled &c, bool all_on = true, analysis:
   if (all_on)
     for (int i = 0; i < static_cast<int>(Warning::Count_); ++i) w.set(static_cast<Warning>(i), true);
   Diagnostics diag(w);
-  if (report)
-    *report = analysis::analysis_report(c.model, diag, limits);
-  else
-    analysis::analyze(c.model, diag, limits);
+  if (report) *report = analysis::analysis_report(c.model, diag, limits);
+  else analysis::analyze(c.model, diag, limits);
   std::string out;
   for (const auto &d : diag.all()) out += render_text(d, c.sources);
   return out;
@@ -26,8 +24,9 @@ inline std::string analyze_text(const Compiled &c, bool all_on = true, analysis:
 inline std::string headlines(const std::string &printed) {
   std::string out;
   for (std::size_t at = 0, nl; (nl = printed.find('\n', at)) != std::string::npos; at = nl + 1)
-    if (printed.compare(at, 2, "t.") == 0 || printed.compare(at, 4, "bot.") == 0) out += printed.substr(at, nl - at + 1);
+    if (printed.compare(at, 2, "t.") == 0 || printed.compare(at, 4, "bot.") == 0)
+      out += printed.substr(at, nl - at + 1);
   return out;
 }
 
-} // namespace gfec::test
+}  // namespace gfec::test

@@ -40,7 +40,7 @@ fs::path copy_engine(const GoldenEngine &e, const std::string &test) {
   return dir;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("c engine compile: golden engines are warning-free in every configuration", "[c_backend][compile]") {
   auto engines = golden_engines();
@@ -52,9 +52,10 @@ TEST_CASE("c engine compile: golden engines are warning-free in every configurat
       for (const char *std : {"c99", "c11"})
         for (const auto &defines : std::vector<std::string>{"", "-D" + e.chart + "_HOOKS", "-D" + e.chart + "_CHECKS",
                                                             "-D" + e.chart + "_HOOKS -D" + e.chart + "_CHECKS"}) {
-          auto r = run_command(fmt::format("cd '{}' && {} -std={} -Wall -Wextra -Wpedantic -Werror {} -c {}.c -o /dev/null",
-                                           dir.string(), cc, std, defines, e.stem),
-                               dir / "build.log");
+          auto r =
+              run_command(fmt::format("cd '{}' && {} -std={} -Wall -Wextra -Wpedantic -Werror {} -c {}.c -o /dev/null",
+                                      dir.string(), cc, std, defines, e.stem),
+                          dir / "build.log");
           INFO(e.stem << ": " << cc << " -std=" << std << " " << defines << "\n" << r.output);
           CHECK(r.status == 0);
         }
@@ -64,12 +65,13 @@ TEST_CASE("c engine compile: golden engines are warning-free in every configurat
 TEST_CASE("c engine compile: the header is valid C++", "[c_backend][compile]") {
   for (const auto &e : golden_engines()) {
     fs::path dir = copy_engine(e, "cplusplus");
-    write_file(dir / "user.cpp", fmt::format("#include \"{}.h\"\nint main() {{ {} m; {}_init(&m); return 0; }}\n", e.stem,
-                                             e.chart, e.chart));
-    auto r = run_command(fmt::format("cd '{}' && g++ -std=c++17 -Wall -Wextra -Wpedantic -Werror -D{}_HOOKS -c user.cpp "
-                                     "-o /dev/null",
-                                     dir.string(), e.chart),
-                         dir / "build.log");
+    write_file(dir / "user.cpp", fmt::format("#include \"{}.h\"\nint main() {{ {} m; {}_init(&m); return 0; }}\n",
+                                             e.stem, e.chart, e.chart));
+    auto r =
+        run_command(fmt::format("cd '{}' && g++ -std=c++17 -Wall -Wextra -Wpedantic -Werror -D{}_HOOKS -c user.cpp "
+                                "-o /dev/null",
+                                dir.string(), e.chart),
+                    dir / "build.log");
     INFO(e.stem << "\n" << r.output);
     CHECK(r.status == 0);
   }
@@ -83,10 +85,11 @@ TEST_CASE("c engine compile: cppcheck finds nothing", "[c_backend][compile]") {
   for (const auto &e : golden_engines()) {
     fs::path dir = copy_engine(e, "cppcheck");
     for (const auto &defines : std::vector<std::string>{"", "-D" + e.chart + "_HOOKS -D" + e.chart + "_CHECKS"}) {
-      auto r = run_command(fmt::format("cd '{}' && cppcheck -q --std=c99 --enable=warning,style,performance,portability "
-                                       "--suppress=missingIncludeSystem --error-exitcode=1 {} {}.c",
-                                       dir.string(), defines, e.stem),
-                           dir / "cppcheck.log");
+      auto r =
+          run_command(fmt::format("cd '{}' && cppcheck -q --std=c99 --enable=warning,style,performance,portability "
+                                  "--suppress=missingIncludeSystem --error-exitcode=1 {} {}.c",
+                                  dir.string(), defines, e.stem),
+                      dir / "cppcheck.log");
       INFO(e.stem << " " << defines << "\n" << r.output);
       CHECK(r.status == 0);
       CHECK(r.output.empty());

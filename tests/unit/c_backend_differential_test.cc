@@ -53,7 +53,8 @@ std::vector<Tick> random_script(const model::Model &m, const model::Chart &chart
       if (fn.result == Type::Bool) {
         if (rng() % 100 < percent) tick[fn.name] = 1;
       } else {
-        tick[fn.name] = fn.result == Type::Int ? static_cast<double>(rng() % 5) : static_cast<double>(rng() % 8) * 0.25 - 0.5;
+        tick[fn.name] =
+            fn.result == Type::Int ? static_cast<double>(rng() % 5) : static_cast<double>(rng() % 8) * 0.25 - 0.5;
       }
     }
   }
@@ -158,7 +159,8 @@ std::vector<std::pair<std::string, std::map<std::string, std::string>>> charts()
     fs::path dir = fs::path(GFEC_SOURCE_DIR) / folder;
     for (const auto &entry : fs::directory_iterator(dir)) {
       auto ext = entry.path().extension();
-      if (ext == ".sfc" || ext == ".fsm" || ext == ".iface") files[entry.path().filename().string()] = read_file(entry.path());
+      if (ext == ".sfc" || ext == ".fsm" || ext == ".iface")
+        files[entry.path().filename().string()] = read_file(entry.path());
     }
     for (const auto &[name, text] : files) {
       auto ext = fs::path(name).extension();
@@ -202,8 +204,8 @@ std::string random_sfc(unsigned seed) {
       return list.size() == 1 ? text : "(" + text + ")";
     };
     std::string in = some(2), out = some(3);
-    std::string when = pick(4) == 0 ? fmt::format("elapsed(P{}) >= {}ms", pick(places), 10 * pick(5))
-                                    : conditions[pick(6)];
+    std::string when =
+        pick(4) == 0 ? fmt::format("elapsed(P{}) >= {}ms", pick(places), 10 * pick(5)) : conditions[pick(6)];
     s += fmt::format("  transition {} -> {}{};\n", in, out, when.empty() ? "" : " when " + when);
   }
   return s + "}\n";
@@ -243,16 +245,16 @@ void check_forms(const std::string &name, const std::map<std::string, std::strin
     for (unsigned seed = 1; seed <= static_cast<unsigned>(scripts); ++seed) {
       auto ticks = random_script(compiled->model, chart, seed * 7919u + static_cast<unsigned>(name.size()), 60);
       std::string expected = interpreter_log(compiled->model, compiled->chart, ticks);
-      std::string actual = compile_and_run(
-          fmt::format("differential_{}_{}_{}", fs::path(name).stem().string(), form_name, seed), compiled->files,
-          compiled->model, chart, script_text(ticks), "-D" + chart.name + "_HOOKS");
+      std::string actual =
+          compile_and_run(fmt::format("differential_{}_{}_{}", fs::path(name).stem().string(), form_name, seed),
+                          compiled->files, compiled->model, chart, script_text(ticks), "-D" + chart.name + "_HOOKS");
       INFO("seed " << seed << ", script:\n" << script_text(ticks));
       CHECK(actual == expected);
     }
   }
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("c engine agrees with the reference interpreter tick for tick", "[c_backend][run][differential]") {
   auto all = charts();

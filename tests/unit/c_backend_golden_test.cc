@@ -21,7 +21,8 @@ std::map<std::string, std::string> chart_files() {
   std::map<std::string, std::string> files;
   for (const auto &entry : fs::directory_iterator(kGoldenDir)) {
     auto ext = entry.path().extension();
-    if (ext == ".sfc" || ext == ".fsm" || ext == ".iface") files[entry.path().filename().string()] = read_file(entry.path());
+    if (ext == ".sfc" || ext == ".fsm" || ext == ".iface")
+      files[entry.path().filename().string()] = read_file(entry.path());
   }
   return files;
 }
@@ -62,8 +63,8 @@ void check_golden(const std::string &name, const std::string &actual) {
   fs::path out = fs::path(GFEC_BINARY_DIR) / "test-scratch" / "golden" / "c" / name;
   write_file(out, actual);
   FAIL_CHECK("tests/golden/c/" << name << " differs from what the back end writes now; "
-                                << first_difference(expected, actual) << "\nsee: diff -u " << golden.string() << " "
-                                << out.string() << "\naccept (after reading the diff): tools/regen-golden.sh c");
+                               << first_difference(expected, actual) << "\nsee: diff -u " << golden.string() << " "
+                               << out.string() << "\naccept (after reading the diff): tools/regen-golden.sh c");
 }
 
 /// The case's gfec options from <case>.flags: whether it wants #line directives, which form.
@@ -90,7 +91,7 @@ CaseFlags flags_for(const std::string &stem) {
   return f;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("c golden: engines equal tests/golden/c byte for byte", "[c_backend][golden]") {
   auto files = chart_files();

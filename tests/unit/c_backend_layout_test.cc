@@ -26,7 +26,7 @@ Layout layout_of(ChartBuilder &b, EngineForm form = EngineForm::Auto) {
   return plan_layout(b.chart(), form, std::vector<bool>(b.chart().places.size(), false));
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("c layout: small charts stay readable, large ones become scalable", "[c_backend][layout]") {
   auto small = ring(static_cast<int>(gfec::c_backend::kReadableMaxPlaces));

@@ -28,7 +28,7 @@ ChartBuilder line_follower() {
 
 bool contains(const std::string &text, const std::string &part) { return text.find(part) != std::string::npos; }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("c backend: the line follower as GFE's engine", "[c_backend]") {
   ChartBuilder b = line_follower();
@@ -109,14 +109,19 @@ int main(void)
 
 TEST_CASE("c backend: expressions keep C's meaning and satisfy -Wall", "[c_backend]") {
   ChartBuilder b("Expr", Kind::Sfc);
-  b.fn("A", Type::Bool).fn("Bb", Type::Bool).fn("C", Type::Bool).fn("N", Type::Int).fn("Go", Type::Void, {{Type::Int, ""}});
+  b.fn("A", Type::Bool)
+      .fn("Bb", Type::Bool)
+      .fn("C", Type::Bool)
+      .fn("N", Type::Int)
+      .fn("Go", Type::Void, {{Type::Int, ""}});
   int half = b.constant("HALF", B::float_lit("-0.5"));
   b.var("x", Type::Double);
   b.var("a", Type::Bool);
   b.var("bb", Type::Bool);
-  b.place("P", true, {b.assign("x", AssignOp::Set, B::un(UnaryOp::Neg, b.const_ref(half))),
-                      b.act("Go", {B::un(UnaryOp::Neg, B::un(UnaryOp::Neg, b.call("N")))}),
-                      b.act("Go", {B::bin(BinaryOp::Sub, b.call("N"), B::bin(BinaryOp::Sub, b.call("N"), b.call("N")))})});
+  b.place("P", true,
+          {b.assign("x", AssignOp::Set, B::un(UnaryOp::Neg, b.const_ref(half))),
+           b.act("Go", {B::un(UnaryOp::Neg, B::un(UnaryOp::Neg, b.call("N")))}),
+           b.act("Go", {B::bin(BinaryOp::Sub, b.call("N"), B::bin(BinaryOp::Sub, b.call("N"), b.call("N")))})});
   b.place("Q");
   auto a = b.call("A"), bb = b.call("Bb"), c = b.call("C");
   b.transition({"P"}, {"Q"}, B::bin(BinaryOp::Or, a, B::bin(BinaryOp::And, bb, c)));
@@ -183,7 +188,9 @@ TEST_CASE("c backend: temporaries give way to interface functions named like the
 TEST_CASE("c backend: verbatim code is copied as written, #line pointing at it", "[c_backend]") {
   ChartBuilder b("Verb", Kind::Sfc);
   b.verbatim("\n#include <stdio.h>\n#define TWICE(x) { (x); (x); }\n");
-  b.place("P", true, {b.verbatim_stmt(" puts(\"{}\"); "), b.verbatim_stmt("\n  int i;\n  for (i = 0; i < 2; ++i) puts(\"{{\");\n  ")});
+  b.place(
+      "P", true,
+      {b.verbatim_stmt(" puts(\"{}\"); "), b.verbatim_stmt("\n  int i;\n  for (i = 0; i < 2; ++i) puts(\"{{\");\n  ")});
   auto files = emit_c(b.model(), "verb.c", true, "verb.sfc");
   const std::string &c = files[0].contents;
   // hand.sfc: every element on its own line; the file-level block is on line 1 and its text
@@ -203,8 +210,9 @@ TEST_CASE("c backend: a chart without transitions or actions still compiles clea
     for (const auto &f : files) write_file(dir / f.path, f.contents);
     for (const auto &cc : c_compilers())
       for (const char *defines : {"", "-DStill_HOOKS -DStill_CHECKS"}) {
-        auto r = run_command(fmt::format("cd '{}' && {} {} {} -c still.c -o /dev/null", dir.string(), cc, kStrictFlags, defines),
-                             dir / "build.log");
+        auto r = run_command(
+            fmt::format("cd '{}' && {} {} {} -c still.c -o /dev/null", dir.string(), cc, kStrictFlags, defines),
+            dir / "build.log");
         INFO(cc << " " << defines << "\n" << r.output);
         CHECK(r.status == 0);
       }
@@ -225,7 +233,7 @@ TEST_CASE("c backend: fsm entry and exit blocks in a hand-built model", "[c_back
   b.transition({"Off"}, {"On"}, B::bin(BinaryOp::Ge, b.elapsed("Off"), B::ticks(1, 10)));
   auto files = emit_c(b.model());
   std::string log = compile_and_run("fsm_entry_exit", files, b.model(), b.model().charts.front(), "\n\n\n\n");
-  CHECK(log == "tick 1\nact LedOn\nact Shine\nstate On status 0\n"  // the initial state's entry, first tick
+  CHECK(log == "tick 1\nact LedOn\nact Shine\nstate On status 0\n"   // the initial state's entry, first tick
                "tick 2\nact LedOff\nact Dark\nstate Off status 0\n"  // exit On, enter Off
                "tick 3\nact LedOn\nact Shine\nstate On status 0\n"
                "tick 4\nact Shine\nstate On status 0\n");
@@ -247,5 +255,6 @@ TEST_CASE("c backend: readable counters are a byte when bounded, GFE's unsigned 
   join.transition({"A", "B"}, {"C"});
   join.transition({"C"}, {"A", "B"});
   auto bounded = emit_c(join.model(), "join.c", false);
-  CHECK(contains(bounded[1].contents, "uint8_t av[Join_PLACE_COUNT]; /* activation counter of each place (never above 2) */"));
+  CHECK(contains(bounded[1].contents,
+                 "uint8_t av[Join_PLACE_COUNT]; /* activation counter of each place (never above 2) */"));
 }

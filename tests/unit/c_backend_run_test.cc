@@ -13,8 +13,8 @@ namespace {
 /// Compiles chart text (with every file it imports) through the real front end and the C back
 /// end, then compiles and runs the engine on `script`: the log (see harness_source()). Every
 /// chart runs in both engine forms (c_layout.h), which must write the same log.
-std::string run_files(const std::string &test, const std::map<std::string, std::string> &files,
-                      const std::string &main, const std::string &script, const std::string &defines = "") {
+std::string run_files(const std::string &test, const std::map<std::string, std::string> &files, const std::string &main,
+                      const std::string &script, const std::string &defines = "") {
   std::string logs[2];
   const EngineForm forms[2] = {EngineForm::Readable, EngineForm::Scalable};
   for (int f = 0; f < 2; ++f) {
@@ -42,7 +42,7 @@ std::string run_sample(const std::string &test, const std::string &chart, const 
                    defines);
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("c engine run: line follower, activation produced in a tick waits for the next", "[c_backend][run]") {
   std::string log = run_sample("line_follower", "line_follower.sfc", "linebot.iface",
@@ -51,7 +51,7 @@ TEST_CASE("c engine run: line follower, activation produced in a tick waits for 
                                "Left_IR_Black Right_IR_Black Left_IR_White\n"
                                "Left_IR_White\n");
   CHECK(log == "tick 1\n"
-               "cond Left_IR_Black -> 0\n"   // T0 open; T1 not (LeftStop empty), so no call
+               "cond Left_IR_Black -> 0\n"  // T0 open; T1 not (LeftStop empty), so no call
                "cond Right_IR_Black -> 0\n"
                "act Left_FW\n"
                "act Right_FW\n"
@@ -63,7 +63,7 @@ TEST_CASE("c engine run: line follower, activation produced in a tick waits for 
                "act Right_FW\n"
                "av LeftStop RightFw\n"
                "tick 3\n"
-               "cond Left_IR_White -> 1\n"   // T0 closed: no Left_IR_Black
+               "cond Left_IR_White -> 1\n"  // T0 closed: no Left_IR_Black
                "cond Right_IR_Black -> 1\n"
                "act Left_FW\n"
                "act Right_Stop\n"
@@ -97,7 +97,7 @@ sfc Conflict {
                "cond Z -> 1\n"  // the second transition takes A
                "act DoC\n"
                "av C\n"
-               "tick 2\n"       // A is empty at the start: neither condition is asked; C -> A fires
+               "tick 2\n"  // A is empty at the start: neither condition is asked; C -> A fires
                "act DoA\n"
                "av A\n"
                "tick 3\n"
@@ -135,7 +135,7 @@ sfc Count {
                "cond More -> 1\n"
                "cond Take -> 0\n"
                "act DoA\n"
-               "act DoB\n"         // once, whatever the count
+               "act DoB\n"  // once, whatever the count
                "av A B:2\n"
                "tick 3\n"
                "cond More -> 0\n"
@@ -172,12 +172,12 @@ const char *kJoinScript = "\n"
                           "Go\n"
                           "BackAgain\n";
 
-} // namespace
+}  // namespace
 
 TEST_CASE("c engine run: join, entry and exit, lost and regained in one tick", "[c_backend][run]") {
   std::string log = run("join", kJoin, kJoinScript);
   CHECK(log == "tick 1\n"
-               "act EnterA\n"       // the first tick: entries of the initial places
+               "act EnterA\n"  // the first tick: entries of the initial places
                "cond Again -> 0\n"
                "cond Go -> 0\n"
                "act DoA\n"
@@ -189,7 +189,7 @@ TEST_CASE("c engine run: join, entry and exit, lost and regained in one tick", "
                "tick 3\n"
                "cond Again -> 0\n"
                "cond Go -> 1\n"
-               "act ExitA\n"        // all exits in declaration order, then the entries
+               "act ExitA\n"  // all exits in declaration order, then the entries
                "act ExitB\n"
                "act EnterC\n"
                "act DoC\n"
@@ -220,7 +220,7 @@ TEST_CASE("c engine run: observation hooks with -DX_HOOKS", "[c_backend][run]") 
                "act ExitA\n"
                "act ExitB\n"
                "act EnterC\n"
-               "hook lost A\n"      // after exits and entries, before the actions
+               "hook lost A\n"  // after exits and entries, before the actions
                "hook lost B\n"
                "hook gained C\n"
                "hook enabled Back\n"
@@ -253,14 +253,14 @@ sfc Timer {
 })",
                         "Start\n\n\n\n\nStart\n\n\n\n\n");
   std::string wait = "act Waiting\nav Wait\n";
-  CHECK(log == "tick 1\ncond Start -> 1\n" + wait +  // Wait's timer is 0 at the end of tick 1
-                   "tick 2\n" + wait +               // 1
-                   "tick 3\n" + wait +               // 2
-                   "tick 4\n" + wait +               // 3
-                   "tick 5\nact Finished\nav Done\n" // 4 >= 4
-                   "tick 6\ncond Start -> 1\n" + wait +  // back to Wait: the timer starts again at 0
-                   "tick 7\n" + wait + "tick 8\n" + wait + "tick 9\n" + wait +
-                   "tick 10\nact Finished\nav Done\n");
+  CHECK(log == "tick 1\ncond Start -> 1\n" + wait +   // Wait's timer is 0 at the end of tick 1
+                   "tick 2\n" + wait +                // 1
+                   "tick 3\n" + wait +                // 2
+                   "tick 4\n" + wait +                // 3
+                   "tick 5\nact Finished\nav Done\n"  // 4 >= 4
+                   "tick 6\ncond Start -> 1\n" +
+                   wait +  // back to Wait: the timer starts again at 0
+                   "tick 7\n" + wait + "tick 8\n" + wait + "tick 9\n" + wait + "tick 10\nact Finished\nav Done\n");
 }
 
 TEST_CASE("c engine run: an initial place's timer counts from the first tick", "[c_backend][run]") {
@@ -347,7 +347,7 @@ std::string run_cleanup(const std::string &test, const std::string &script, cons
   return run_sample(test, "cleanup.fsm", "cleanbot.iface", script, defines);
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("c engine run: fsm clean-up, one transition per tick, terminal state stops", "[c_backend][run]") {
   CHECK(run_cleanup("cleanup", kCleanUpScript) == cleanup_log(false));
@@ -357,9 +357,9 @@ TEST_CASE("c engine run: fsm postconditions are asserted with -DX_CHECKS", "[c_b
   CHECK(run_cleanup("cleanup_checks", kCleanUpScript, "-DCleanUp_CHECKS") == cleanup_log(true));
   // ItemAtDestination() false on entering Done: the assertion stops the program.
   fs::path samples = fs::path(GFEC_SOURCE_DIR) / "samples";
-  auto compiled = compile_chart({{"cleanup.fsm", read_file(samples / "cleanup.fsm")},
-                                 {"cleanbot.iface", read_file(samples / "cleanbot.iface")}},
-                                "cleanup.fsm", "engine.c");
+  auto compiled = compile_chart(
+      {{"cleanup.fsm", read_file(samples / "cleanup.fsm")}, {"cleanbot.iface", read_file(samples / "cleanbot.iface")}},
+      "cleanup.fsm", "engine.c");
   REQUIRE(!compiled->diag.has_errors());
   std::string log = compile_and_run("cleanup_checks_fail", compiled->files, compiled->model, compiled->the_chart(),
                                     "\nArrived\nHolding\nItemPlaced\n", "-DCleanUp_CHECKS", false);
@@ -370,11 +370,11 @@ TEST_CASE("c engine run: fsm postconditions are asserted with -DX_CHECKS", "[c_b
 
 TEST_CASE("c engine run: fsm failure state", "[c_backend][run]") {
   CHECK(run_cleanup("cleanup_failed", "Stuck\nArrived\n") == "tick 1\n"
-                                                            "cond Arrived -> 0\n"
-                                                            "cond Stuck -> 1\n"
-                                                            "state Failed status -1\n"
-                                                            "tick 2\n"
-                                                            "state Failed status -1\n");
+                                                             "cond Arrived -> 0\n"
+                                                             "cond Stuck -> 1\n"
+                                                             "state Failed status -1\n"
+                                                             "tick 2\n"
+                                                             "state Failed status -1\n");
 }
 
 namespace {
@@ -391,12 +391,12 @@ fsm Blink {
   Off -> On when elapsed(Off) >= 10ms;
 })";
 
-} // namespace
+}  // namespace
 
 TEST_CASE("c engine run: fsm timers", "[c_backend][run]") {
   std::string log = run("blink", kBlink, "\n\n\n\n\nStop\n\n");
-  CHECK(log == "tick 1\nact LedOn\nstate On status 0\n"   // On's timer: 1
-               "tick 2\nact LedOff\nstate Off status 0\n"  // 2 >= 2: to Off, whose timer starts at 0
+  CHECK(log == "tick 1\nact LedOn\nstate On status 0\n"                  // On's timer: 1
+               "tick 2\nact LedOff\nstate Off status 0\n"                // 2 >= 2: to Off, whose timer starts at 0
                "tick 3\ncond Stop -> 0\nact LedOn\nstate On status 0\n"  // Off's timer 1 >= 1
                "tick 4\nact LedOn\nstate On status 0\n"
                "tick 5\nact LedOff\nstate Off status 0\n"
@@ -451,8 +451,9 @@ int main(void)
 }
 )");
     for (const auto &cc : c_compilers()) {
-      auto build = run_command(fmt::format("cd '{}' && {} {} main.c engine.c -o run-{}", dir.string(), cc, kStrictFlags, cc),
-                               dir / "build.log");
+      auto build =
+          run_command(fmt::format("cd '{}' && {} {} main.c engine.c -o run-{}", dir.string(), cc, kStrictFlags, cc),
+                      dir / "build.log");
       INFO(build.output);
       REQUIRE(build.status == 0);
       auto out = run_command(fmt::format("'{}/run-{}'", dir.string(), cc), dir / "run.log");
@@ -478,11 +479,15 @@ sfc Octal {
   transition P -> Q when v == 030;
 })",
                         "\n\n\n");
-  const std::string actions = "act A(10)\nact A(0)\nact A({})\nact A(11)\nact A({})\nact A(-20)\nact B(10.5)\nact B(1)\n";
-  CHECK(log == "tick 1\n" + fmt::format(actions, 17, 20) + "av P\n"  // v: 10, then 20
-               "tick 2\n" + fmt::format(actions, 27, 30) + "av P\n"  // v: 20, then 30
-               "tick 3\n"                                           // v == 30 (octal 030 would be 24)
-               "av Q\n");
+  const std::string actions =
+      "act A(10)\nact A(0)\nact A({})\nact A(11)\nact A({})\nact A(-20)\nact B(10.5)\nact B(1)\n";
+  CHECK(log == "tick 1\n" + fmt::format(actions, 17, 20) +
+                   "av P\n"  // v: 10, then 20
+                   "tick 2\n" +
+                   fmt::format(actions, 27, 30) +
+                   "av P\n"    // v: 20, then 30
+                   "tick 3\n"  // v == 30 (octal 030 would be 24)
+                   "av Q\n");
 }
 
 TEST_CASE("c engine run: a floating value becomes an int by truncation, written as a cast", "[c_backend][run]") {
@@ -511,21 +516,21 @@ sfc Trunc {
                         "F=3.9 D=1.3\n"
                         "F=-2.5 D=-0.7\n");
   CHECK(log == "tick 1\n"
-               "call H(2)\n"       // 2.5 -> 2
+               "call H(2)\n"  // 2.5 -> 2
                "cond H -> 0\n"
-               "act I(2)\n"        // v = 2.75 -> 2
-               "act I(-4)\n"       // w = -4.5 -> -4: toward zero
+               "act I(2)\n"   // v = 2.75 -> 2
+               "act I(-4)\n"  // w = -4.5 -> -4: toward zero
                "act I(0)\n"
                "act I(-1)\n"
                "cond F -> 3.9\n"
                "act I(3)\n"
                "cond D -> 1.3\n"
-               "act J(2, 1)\n"     // 2.6 -> 2
-               "act I(0)\n"        // v = 0.5
-               "act I(2)\n"        // v = (int)(0 + 2.5)
-               "act I(1)\n"        // v = (int)(2 - 0.5f)
-               "act I(-2)\n"       // v = (int)(-3 + 0.5f): -2.5 -> -2, not -3 + (int)0.5
-               "act E(1)\n"        // g holds 16777216
+               "act J(2, 1)\n"  // 2.6 -> 2
+               "act I(0)\n"     // v = 0.5
+               "act I(2)\n"     // v = (int)(0 + 2.5)
+               "act I(1)\n"     // v = (int)(2 - 0.5f)
+               "act I(-2)\n"    // v = (int)(-3 + 0.5f): -2.5 -> -2, not -3 + (int)0.5
+               "act E(1)\n"     // g holds 16777216
                "av P\n"
                "tick 2\n"
                "call H(2)\n"
@@ -537,7 +542,7 @@ sfc Trunc {
                "cond F -> -2.5\n"
                "act I(-2)\n"
                "cond D -> -0.7\n"
-               "act J(-1, 1)\n"    // -1.4 -> -1
+               "act J(-1, 1)\n"  // -1.4 -> -1
                "act I(0)\n"
                "act I(2)\n"
                "act I(1)\n"
@@ -570,7 +575,7 @@ sfc Order {
   transition Q -> P when elapsed(Q) >= 1s && B();
 })";
 
-} // namespace
+}  // namespace
 
 TEST_CASE("c engine run: calls are made left to right, in arguments and operands alike", "[c_backend][run]") {
   // gcc evaluates arguments right to left; C leaves the order open. docs/language.md §4, §5.1: left
@@ -600,14 +605,14 @@ TEST_CASE("c engine run: calls are made left to right, in arguments and operands
                "cond S1 -> 2\n"  // v = S1() - S2() * S0() = -1
                "cond S2 -> 3\n"
                "cond S0 -> 1\n"
-               "cond B -> 0\n"   // B() && ...: false, C() == B() is not evaluated
+               "cond B -> 0\n"  // B() && ...: false, C() == B() is not evaluated
                "act A(-1, 0)\n"
                "cond S1 -> 2\n"  // Twice(S1(), S2()) before B() || ...
                "cond S2 -> 3\n"
                "call Twice(2, 3)\n"
                "cond Twice -> 7\n"
                "cond B -> 0\n"
-               "cond C -> 0\n"   // C() != (S0() > S1())
+               "cond C -> 0\n"  // C() != (S0() > S1())
                "cond S0 -> 1\n"
                "cond S1 -> 2\n"
                "act A(7, 0)\n"
@@ -638,7 +643,7 @@ TEST_CASE("c engine run: calls are made left to right, in arguments and operands
                "call Twice(2, 3)\n"
                "cond Twice -> 5\n"
                "cond B -> 0\n"
-               "cond C -> 1\n"   // 1 != (2 > 2)
+               "cond C -> 1\n"  // 1 != (2 > 2)
                "cond S0 -> 2\n"
                "cond S1 -> 2\n"
                "act A(5, 1)\n"
@@ -658,7 +663,7 @@ TEST_CASE("c engine run: calls are made left to right, in arguments and operands
                "cond S1 -> 1\n"  // v = 1 - 3 * 1
                "cond S2 -> 3\n"
                "cond S0 -> 1\n"
-               "cond B -> 1\n"   // B() && C() == B(): C() before the second B()
+               "cond B -> 1\n"  // B() && C() == B(): C() before the second B()
                "cond C -> 1\n"
                "cond B -> 1\n"
                "act A(-2, 1)\n"
@@ -666,7 +671,7 @@ TEST_CASE("c engine run: calls are made left to right, in arguments and operands
                "cond S2 -> 3\n"
                "call Twice(1, 3)\n"
                "cond Twice -> 4\n"
-               "cond B -> 1\n"   // || decided: nothing more
+               "cond B -> 1\n"  // || decided: nothing more
                "act A(4, 1)\n"
                "av P\n"
                "tick 4\n"
@@ -679,7 +684,7 @@ TEST_CASE("c engine run: calls are made left to right, in arguments and operands
                "act A(3, 1)\n"
                "act Stop\n"
                "av Q\n"
-               "tick 5\n"        // T1: elapsed(Q) is 1 tick of 100: && stops before B()
+               "tick 5\n"  // T1: elapsed(Q) is 1 tick of 100: && stops before B()
                "act Stop\n"
                "av Q\n");
 }
@@ -709,7 +714,7 @@ std::string order_fsm_log(bool checks) {
          "state Done status 1\n";
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("c engine run: fsm calls left to right in conditions, actions and postconditions", "[c_backend][run]") {
   const char *script = "S0=2 S1=1\nS0=1 S1=2\n";
@@ -738,7 +743,7 @@ sfc Branches {
   transition Q -> P when X();
 })";
 
-} // namespace
+}  // namespace
 
 TEST_CASE("c engine run: if, else if and else", "[c_backend][run]") {
   std::string log = run("if_else", kIfElse,
@@ -749,25 +754,25 @@ TEST_CASE("c engine run: if, else if and else", "[c_backend][run]") {
                         "\n"
                         "X Y\n");
   CHECK(log == "tick 1\n"
-               "cond X -> 1\n"   // the first tick: P's entry, the then-branch
+               "cond X -> 1\n"  // the first tick: P's entry, the then-branch
                "act A\n"
-               "cond N -> 2\n"   // k < 2: the transition asks nothing; N() before M()
+               "cond N -> 2\n"  // k < 2: the transition asks nothing; N() before M()
                "cond M -> 1\n"
-               "cond N -> 2\n"   // 3 > 2: the first branch
+               "cond N -> 2\n"  // 3 > 2: the first branch
                "act B(2)\n"
-               "av P\n"          // elapsed(P) is 1 tick, below 2: no B(k)
+               "av P\n"  // elapsed(P) is 1 tick, below 2: no B(k)
                "tick 2\n"
                "cond N -> 0\n"
                "cond M -> 0\n"
-               "cond Y -> 0\n"   // else if fails: else
+               "cond Y -> 0\n"  // else if fails: else
                "act D\n"
-               "act B(0)\n"      // 2 ticks: 20ms
+               "act B(0)\n"  // 2 ticks: 20ms
                "av P\n"
                "tick 3\n"
                "cond N -> 0\n"
                "cond M -> 0\n"
                "cond Y -> 1\n"
-               "cond X -> 0\n"   // the nested if without else does nothing; k becomes 1
+               "cond X -> 0\n"  // the nested if without else does nothing; k becomes 1
                "act B(1)\n"
                "av P\n"
                "tick 4\n"
@@ -775,23 +780,23 @@ TEST_CASE("c engine run: if, else if and else", "[c_backend][run]") {
                "cond M -> 0\n"
                "cond Y -> 1\n"
                "cond X -> 1\n"
-               "act C\n"         // k becomes 2
+               "act C\n"  // k becomes 2
                "act B(2)\n"
                "av P\n"
-               "tick 5\n"        // k >= 2: P -> Q
+               "tick 5\n"  // k >= 2: P -> Q
                "act D\n"
                "av Q\n"
                "tick 6\n"
-               "cond X -> 1\n"   // Q -> P
-               "cond Y -> 1\n"   // Q's exit
+               "cond X -> 1\n"  // Q -> P
+               "cond Y -> 1\n"  // Q's exit
                "act B(2)\n"
-               "cond X -> 1\n"   // P's entry
+               "cond X -> 1\n"  // P's entry
                "act A\n"
                "cond N -> 0\n"
                "cond M -> 0\n"
                "cond Y -> 1\n"
                "cond X -> 1\n"
-               "act C\n"         // k becomes 3; P's timer was reset: no B(k)
+               "act C\n"  // k becomes 3; P's timer was reset: no B(k)
                "av P\n");
 }
 
@@ -852,26 +857,26 @@ fsm Doors {
 
 const char *kFsmEntryExitScript = "\nGo\n\nBack\nGo\nFin\nGo Back Fin\n";
 
-} // namespace
+}  // namespace
 
 TEST_CASE("c engine run: fsm entry and exit", "[c_backend][run]") {
   std::string log = run("fsm_entry_exit_text", kFsmEntryExit, kFsmEntryExitScript);
   CHECK(log == "tick 1\n"
-               "act EnterA\n"      // the first tick begins with the initial state's entry
+               "act EnterA\n"  // the first tick begins with the initial state's entry
                "cond Go -> 0\n"
                "act DoA\n"
                "state A status 0\n"
                "tick 2\n"
                "cond Go -> 1\n"
-               "act ExitA\n"       // the old state's exit, then the new state's entry: its
-               "act EnterB\n"      // timer is 0, so no Late()
+               "act ExitA\n"   // the old state's exit, then the new state's entry: its
+               "act EnterB\n"  // timer is 0, so no Late()
                "act DoB\n"
                "state B status 0\n"
                "tick 3\n"
                "cond Back -> 0\n"
                "cond Fin -> 0\n"
                "act DoB\n"
-               "act Late\n"        // one tick in B
+               "act Late\n"  // one tick in B
                "state B status 0\n"
                "tick 4\n"
                "cond Back -> 1\n"
@@ -882,15 +887,15 @@ TEST_CASE("c engine run: fsm entry and exit", "[c_backend][run]") {
                "tick 5\n"
                "cond Go -> 1\n"
                "act ExitA\n"
-               "act EnterB\n"      // B's timer starts again from 0
+               "act EnterB\n"  // B's timer starts again from 0
                "act DoB\n"
                "state B status 0\n"
                "tick 6\n"
                "cond Back -> 0\n"
                "cond Fin -> 1\n"
-               "act ExitB\n"       // a terminal state has no entry and no action
+               "act ExitB\n"  // a terminal state has no entry and no action
                "state Done status 1\n"
-               "tick 7\n"          // nothing happens any more
+               "tick 7\n"  // nothing happens any more
                "state Done status 1\n");
   std::string hooks = run("fsm_entry_exit_hooks", kFsmEntryExit, "\nGo\n", "-DDoors_HOOKS");
   CHECK(hooks == "tick 1\nact EnterA\ncond Go -> 0\nact DoA\nstate A status 0\n"

@@ -63,7 +63,7 @@ void three_levels(ChartBuilder &b) {
   b.runs("A", mid);
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("c engine sub-charts: sfc in fsm in sfc, start, tick and stop innermost first", "[c_backend][subchart]") {
   ChartBuilder b("Top", Kind::Sfc);
@@ -76,28 +76,28 @@ TEST_CASE("c engine sub-charts: sfc in fsm in sfc, start, tick and stop innermos
                              "MidDone\n"
                              "TopGo\n");
   CHECK(log == "tick 1\n"
-               "act TopIn\n"            // Top's first tick: A enters (Mid was started by _init)
+               "act TopIn\n"  // Top's first tick: A enters (Mid was started by _init)
                "cond TopGo -> 0\n"
-               "act TopAct\n"           // actions: A's block, then one tick of its Mid
-               "act MidIn\n"            //   Mid's first tick: M1 enters (its Leaf started by Mid's init)
+               "act TopAct\n"  // actions: A's block, then one tick of its Mid
+               "act MidIn\n"   //   Mid's first tick: M1 enters (its Leaf started by Mid's init)
                "cond MidGo -> 0\n"
-               "act MidAct\n"           //   M1's action, then one tick of its Leaf
-               "act LeafIn\n"           //     Leaf's first tick: L1 enters
+               "act MidAct\n"  //   M1's action, then one tick of its Leaf
+               "act LeafIn\n"  //     Leaf's first tick: L1 enters
                "cond LeafGo -> 0\n"
                "act LeafAct\n"
                "av A\n"
                "tick 2\n"
-               "cond TopGo -> 1\n"      // A -> B: A loses its activation
-               "act LeafOut\n"          // stop Mid: stop M1's Leaf (L1's exit), then M1's exit,
+               "cond TopGo -> 1\n"  // A -> B: A loses its activation
+               "act LeafOut\n"      // stop Mid: stop M1's Leaf (L1's exit), then M1's exit,
                "act MidOut\n"
-               "act TopOut\n"           // then A's own exit: innermost first
+               "act TopOut\n"  // then A's own exit: innermost first
                "act TopB\n"
                "av B\n"
                "tick 3\n"
-               "cond TopBack -> 1\n"    // T0 is not open: no TopGo
-               "act TopIn\n"            // A gains activation: Mid reset (no code), then A's entry
+               "cond TopBack -> 1\n"  // T0 is not open: no TopGo
+               "act TopIn\n"          // A gains activation: Mid reset (no code), then A's entry
                "act TopAct\n"
-               "act MidIn\n"            // Mid's first tick again, and Leaf's
+               "act MidIn\n"  // Mid's first tick again, and Leaf's
                "cond MidGo -> 0\n"
                "act MidAct\n"
                "act LeafIn\n"
@@ -107,18 +107,18 @@ TEST_CASE("c engine sub-charts: sfc in fsm in sfc, start, tick and stop innermos
                "tick 4\n"
                "cond TopGo -> 0\n"
                "act TopAct\n"
-               "cond MidGo -> 1\n"      // M1 -> M2: M1's Leaf stopped (L1 exits), M1 exits;
-               "act LeafOut\n"          // Leaf does not tick (M1 is no longer current)
+               "cond MidGo -> 1\n"  // M1 -> M2: M1's Leaf stopped (L1 exits), M1 exits;
+               "act LeafOut\n"      // Leaf does not tick (M1 is no longer current)
                "act MidOut\n"
                "act Mid2\n"
                "av A\n"
                "tick 5\n"
                "cond TopGo -> 0\n"
                "act TopAct\n"
-               "cond MidDone -> 1\n"    // M2 -> Ok: terminal, no action
+               "cond MidDone -> 1\n"  // M2 -> Ok: terminal, no action
                "av A\n"
                "tick 6\n"
-               "cond TopGo -> 1\n"      // stopping Mid in a terminal state runs nothing
+               "cond TopGo -> 1\n"  // stopping Mid in a terminal state runs nothing
                "act TopOut\n"
                "act TopB\n"
                "av B\n");
@@ -141,7 +141,8 @@ void two_places(ChartBuilder &b) {
   b.place("Run", true, {b.assign("n", AssignOp::Add, ChartBuilder::int_lit("1")), b.act("Count", {b.var_ref("n")})});
   b.place("Done").terminal = model::Terminal::Success;
   b.transition({"Run"}, {"Done"},
-               ChartBuilder::bin(BinaryOp::And, ChartBuilder::bin(BinaryOp::Ge, b.var_ref("n"), ChartBuilder::int_lit("2")),
+               ChartBuilder::bin(BinaryOp::And,
+                                 ChartBuilder::bin(BinaryOp::Ge, b.var_ref("n"), ChartBuilder::int_lit("2")),
                                  b.call("JobOk")));
   b.select(0);
   b.runs("P", job);
@@ -152,7 +153,7 @@ void two_places(ChartBuilder &b) {
   b.transition({"R"}, {"P"}, b.call("Back"));
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("c engine sub-charts: one chart in two places, lose and regain, conditions read the start of the tick",
           "[c_backend][subchart]") {
@@ -168,9 +169,9 @@ TEST_CASE("c engine sub-charts: one chart in two places, lose and regain, condit
                // T0: succeeded(P) is false (P's Job runs): Go is not called. T1: active(P) holds.
                "cond Again -> 0\n"
                "act Pa\n"
-               "act Count(1)\n"         // P's Job: n >= 2 is false, JobOk is not called
+               "act Count(1)\n"  // P's Job: n >= 2 is false, JobOk is not called
                "act Qa\n"
-               "act Count(1)\n"         // Q's Job: an instance of its own
+               "act Count(1)\n"  // Q's Job: an instance of its own
                "act Look(0, 1)\n"
                "av P Q W\n"
                "tick 2\n"
@@ -182,22 +183,22 @@ TEST_CASE("c engine sub-charts: one chart in two places, lose and regain, condit
                "act Look(0, 1)\n"
                "av P Q W\n"
                "tick 3\n"
-               "cond Again -> 0\n"      // the conditions see P's Job as its last tick left it
+               "cond Again -> 0\n"  // the conditions see P's Job as its last tick left it
                "act Pa\n"
-               "cond JobOk -> 1\n"      // P's Job succeeds in the actions step...
+               "cond JobOk -> 1\n"  // P's Job succeeds in the actions step...
                "act Qa\n"
-               "cond JobOk -> 1\n"      // ...and Q's
-               "act Look(1, 0)\n"       // ...which W's action, later in the step, already sees
+               "cond JobOk -> 1\n"  // ...and Q's
+               "act Look(1, 0)\n"   // ...which W's action, later in the step, already sees
                "av P Q W\n"
                "tick 4\n"
-               "cond Go -> 1\n"         // T0: succeeded(P) now holds; P's activation is consumed
-               "cond Again -> 1\n"      // T1: active(P) reads the start of the tick: still true
-               "act Qa\n"               // Q lost and regained its activation: its Job goes on
-               "act Look(0, 0)\n"       // (succeeded, not restarted); P is inactive: false
+               "cond Go -> 1\n"     // T0: succeeded(P) now holds; P's activation is consumed
+               "cond Again -> 1\n"  // T1: active(P) reads the start of the tick: still true
+               "act Qa\n"           // Q lost and regained its activation: its Job goes on
+               "act Look(0, 0)\n"   // (succeeded, not restarted); P is inactive: false
                "av Q W R\n"
                "tick 5\n"
-               "cond Back -> 1\n"       // T1 not tried further: active(P) is false at the start
-               "act Pa\n"               // P regained activation: its Job restarted from n = 0
+               "cond Back -> 1\n"  // T1 not tried further: active(P) is false at the start
+               "act Pa\n"          // P regained activation: its Job restarted from n = 0
                "act Count(1)\n"
                "act Qa\n"
                "act Look(0, 0)\n"
@@ -266,7 +267,7 @@ std::string without_hooks(const std::string &log) {
   return out;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("c engine sub-charts: an fsm runs an sfc whose parallel places stop in declaration order",
           "[c_backend][subchart]") {
@@ -280,12 +281,12 @@ TEST_CASE("c engine sub-charts: an fsm runs an sfc whose parallel places stop in
                              "Leave\n";
   std::string log = run_both("sub_mission", b.model(), script);
   CHECK(log == "tick 1\n"
-               "act E1\n"               // Mission's first tick: S1 enters
+               "act E1\n"  // Mission's first tick: S1 enters
                // S1 -> S2: active(S1.B.t2) is false (Tiny is in t1): Leave is not called
                "act S1a\n"
-               "act InA\n"              // Par's first tick: A enters; B has no entry
+               "act InA\n"  // Par's first tick: A enters; B has no entry
                "cond Join -> 0\n"
-               "act Aa\n"               // A's action; B has none, but its Tiny ticks
+               "act Aa\n"  // A's action; B has none, but its Tiny ticks
                "cond TinyGo -> 0\n"
                "act Ta\n"
                "state S1 status 0\n"
@@ -293,36 +294,36 @@ TEST_CASE("c engine sub-charts: an fsm runs an sfc whose parallel places stop in
                "act S1a\n"
                "cond Join -> 0\n"
                "act Aa\n"
-               "cond TinyGo -> 1\n"     // t1 -> t2: t1's exit; t2 has no action
+               "cond TinyGo -> 1\n"  // t1 -> t2: t1's exit; t2 has no action
                "act OutT\n"
                "state S1 status 0\n"
                "tick 3\n"
-               "cond Leave -> 1\n"      // active(S1.B.t2) holds: S1 -> S2. Stop Par: A exits,
-               "act OutA\n"             // then B stops its Tiny (t2: no exit) and exits;
+               "cond Leave -> 1\n"  // active(S1.B.t2) holds: S1 -> S2. Stop Par: A exits,
+               "act OutA\n"         // then B stops its Tiny (t2: no exit) and exits;
                "act OutB\n"
-               "act X1\n"               // then S1's own exit
+               "act X1\n"  // then S1's own exit
                "act S2a\n"
                "state S2 status 0\n"
                "tick 4\n"
-               "cond Back -> 1\n"       // active(S1.B) is false while S1 is not current
-               "act E1\n"               // S1 entered: Par reset, then S1's entry
+               "cond Back -> 1\n"  // active(S1.B) is false while S1 is not current
+               "act E1\n"          // S1 entered: Par reset, then S1's entry
                "act S1a\n"
-               "act InA\n"              // Par's first tick again, Tiny's too
+               "act InA\n"  // Par's first tick again, Tiny's too
                "cond Join -> 0\n"
                "act Aa\n"
                "cond TinyGo -> 0\n"
                "act Ta\n"
                "state S1 status 0\n"
                "tick 5\n"
-               "act S1a\n"              // (Tiny in t1: no Leave)
-               "cond Join -> 1\n"       // (A, B) -> C: A exits, then B: Tiny stopped (t1's
-               "act OutA\n"             // exit), then B's exit
+               "act S1a\n"         // (Tiny in t1: no Leave)
+               "cond Join -> 1\n"  // (A, B) -> C: A exits, then B: Tiny stopped (t1's
+               "act OutA\n"        // exit), then B's exit
                "act OutT\n"
                "act OutB\n"
                "act Ca\n"
                "state S1 status 0\n"
                "tick 6\n"
-               "act S1a\n"              // B is inactive: active(S1.B.t2) is false
+               "act S1a\n"  // B is inactive: active(S1.B.t2) is false
                "act Ca\n"
                "state S1 status 0\n");
   // The hooks are the root's: a hooks build logs Mission's changes and otherwise the same.

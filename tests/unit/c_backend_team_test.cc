@@ -20,7 +20,8 @@ namespace {
 /// call is logged as in harness_source(), each agent's part of the tick after `agent k`.
 std::string team_harness(const model::Model &m, const model::Chart &chart, const std::string &header, int agents) {
   const std::string &X = chart.name;
-  std::string s = fmt::format("#include \"{}\"\n\n#include <stdio.h>\n#include <stdlib.h>\n#include <string.h>\n\n", header);
+  std::string s =
+      fmt::format("#include \"{}\"\n\n#include <stdio.h>\n#include <stdlib.h>\n#include <string.h>\n\n", header);
   s += "static char script[1024]; /* this tick's line */\nstatic int agent_now; /* whose engine runs */\n\n";
   s += "static const char *const state_names[] = {";
   for (const auto &p : chart.places) s += fmt::format("\"{}\", ", p.name);
@@ -64,25 +65,26 @@ std::string team_harness(const model::Model &m, const model::Chart &chart, const
                        t, f.name, params);
     }
   }
-  s += fmt::format("int main(void)\n{{\n    {0} m[{1}];\n    int tick = 0, k, j;\n"
-                   "    setvbuf(stdout, NULL, _IONBF, 0);\n"
-                   "    for (k = 0; k < {1}; ++k) {{\n        {0}_init(&m[k]);\n        {0}_set_agent(&m[k], k);\n    }}\n"
-                   "    while (fgets(script, sizeof script, stdin) != NULL) {{\n"
-                   "        printf(\"tick %d\\n\", ++tick);\n"
-                   "        for (k = 0; k < {1}; ++k) {{\n"
-                   "            agent_now = k;\n"
-                   "            printf(\"agent %d\\n\", k);\n"
-                   "            {0}_run(&m[k]);\n"
-                   "            printf(\"state %s status %d\\n\", state_names[{0}_state(&m[k])], {0}_status(&m[k]));\n"
-                   "        }}\n"
-                   "        /* the reference exchange */\n"
-                   "        for (k = 0; k < {1}; ++k) {{\n"
-                   "            for (j = 0; j < {1}; ++j) {{\n"
-                   "                {0}_report(&m[j], k, {0}_state(&m[k]));\n"
-                   "            }}\n"
-                   "        }}\n"
-                   "    }}\n    return 0;\n}}\n",
-                   X, agents);
+  s += fmt::format(
+      "int main(void)\n{{\n    {0} m[{1}];\n    int tick = 0, k, j;\n"
+      "    setvbuf(stdout, NULL, _IONBF, 0);\n"
+      "    for (k = 0; k < {1}; ++k) {{\n        {0}_init(&m[k]);\n        {0}_set_agent(&m[k], k);\n    }}\n"
+      "    while (fgets(script, sizeof script, stdin) != NULL) {{\n"
+      "        printf(\"tick %d\\n\", ++tick);\n"
+      "        for (k = 0; k < {1}; ++k) {{\n"
+      "            agent_now = k;\n"
+      "            printf(\"agent %d\\n\", k);\n"
+      "            {0}_run(&m[k]);\n"
+      "            printf(\"state %s status %d\\n\", state_names[{0}_state(&m[k])], {0}_status(&m[k]));\n"
+      "        }}\n"
+      "        /* the reference exchange */\n"
+      "        for (k = 0; k < {1}; ++k) {{\n"
+      "            for (j = 0; j < {1}; ++j) {{\n"
+      "                {0}_report(&m[j], k, {0}_state(&m[k]));\n"
+      "            }}\n"
+      "        }}\n"
+      "    }}\n    return 0;\n}}\n",
+      X, agents);
   return s;
 }
 
@@ -97,11 +99,13 @@ std::string run_team(const std::string &test, const std::string &chart, int agen
   write_file(dir / "script.txt", script);
   std::string first;
   for (const auto &cc : c_compilers()) {
-    auto build = run_command(fmt::format("cd '{}' && {} {} harness.c engine.c -o run-{}", dir.string(), cc, kStrictFlags, cc),
-                             dir / ("build-" + cc + ".log"));
+    auto build =
+        run_command(fmt::format("cd '{}' && {} {} harness.c engine.c -o run-{}", dir.string(), cc, kStrictFlags, cc),
+                    dir / ("build-" + cc + ".log"));
     INFO(cc << " in " << dir.string() << ":\n" << build.output);
     REQUIRE(build.status == 0);
-    auto run = run_command(fmt::format("cd '{}' && ./run-{} < script.txt", dir.string(), cc), dir / ("run-" + cc + ".log"));
+    auto run =
+        run_command(fmt::format("cd '{}' && ./run-{} < script.txt", dir.string(), cc), dir / ("run-" + cc + ".log"));
     REQUIRE(run.status == 0);
     if (first.empty()) first = run.output;
     else CHECK(run.output == first);
@@ -134,25 +138,27 @@ fsm Census {
   Wait -> Go when Move();
 })";
 
-} // namespace
+}  // namespace
 
 TEST_CASE("c engine team: the fetch example, three agents under the reference exchange", "[c_backend][run][team]") {
   std::string log = run_team("fetch", kFetch, 3, "Arrived@1 Arrived@2\nArrived Holding@1\nParked Holding\n");
-  CHECK(log == "tick 1\n"
-               "agent 0\ncond Arrived -> 0\nact DriveToItem\nstate Go status 0\n"  // team(Grab) is 0: no reports yet
-               "agent 1\ncond Arrived -> 1\nact PickUp\nstate Grab status 0\n"
-               "agent 2\ncond Arrived -> 1\nact PickUp\nstate Grab status 0\n"     // agent 1's Grab arrives only after the tick
-               "tick 2\n"
-               "agent 0\ncond Arrived -> 1\nact Park\nstate Yield status 0\n"      // team(Grab) is 2
-               "agent 1\ncond Holding -> 1\nstate Got status 1\n"
-               "agent 2\ncond Holding -> 0\nact PickUp\nstate Grab status 0\n"
-               "tick 3\n"
-               "agent 0\ncond Parked -> 1\nstate Left status 1\n"
-               "agent 1\nstate Got status 1\n"
-               "agent 2\ncond Holding -> 1\nstate Got status 1\n");
+  CHECK(log ==
+        "tick 1\n"
+        "agent 0\ncond Arrived -> 0\nact DriveToItem\nstate Go status 0\n"  // team(Grab) is 0: no reports yet
+        "agent 1\ncond Arrived -> 1\nact PickUp\nstate Grab status 0\n"
+        "agent 2\ncond Arrived -> 1\nact PickUp\nstate Grab status 0\n"  // agent 1's Grab arrives only after the tick
+        "tick 2\n"
+        "agent 0\ncond Arrived -> 1\nact Park\nstate Yield status 0\n"  // team(Grab) is 2
+        "agent 1\ncond Holding -> 1\nstate Got status 1\n"
+        "agent 2\ncond Holding -> 0\nact PickUp\nstate Grab status 0\n"
+        "tick 3\n"
+        "agent 0\ncond Parked -> 1\nstate Left status 1\n"
+        "agent 1\nstate Got status 1\n"
+        "agent 2\ncond Holding -> 1\nstate Got status 1\n");
 }
 
-TEST_CASE("c engine team: team(S) counts the other agents' last reports, agent() is the own number", "[c_backend][run][team]") {
+TEST_CASE("c engine team: team(S) counts the other agents' last reports, agent() is the own number",
+          "[c_backend][run][team]") {
   std::string log = run_team("census", kCensus, 4, "Move@1 Move@3\n\nMove@0\n\n");
   CHECK(log == "tick 1\n"
                "agent 0\ncond Move -> 0\nact Count(0, 0, 0)\nstate Go status 0\n"
@@ -176,7 +182,8 @@ TEST_CASE("c engine team: team(S) counts the other agents' last reports, agent()
                "agent 3\ncond Move -> 0\nact Count(3, 1, 2)\nstate Wait status 0\n");
 }
 
-TEST_CASE("c engine team: X_report and X_set_agent ignore what is out of range; X_init forgets", "[c_backend][run][team]") {
+TEST_CASE("c engine team: X_report and X_set_agent ignore what is out of range; X_init forgets",
+          "[c_backend][run][team]") {
   auto compiled = compile_chart({{"chart.fsm", kCensus}}, "chart.fsm", "engine.c");
   REQUIRE(!compiled->diag.has_errors());
   const std::string &h = compiled->files.at(1).contents;
@@ -221,8 +228,9 @@ int main(void)
 }
 )");
   for (const auto &cc : c_compilers()) {
-    auto build = run_command(fmt::format("cd '{}' && {} {} main.c engine.c -o api-{}", dir.string(), cc, kStrictFlags, cc),
-                             dir / ("build-" + cc + ".log"));
+    auto build =
+        run_command(fmt::format("cd '{}' && {} {} main.c engine.c -o api-{}", dir.string(), cc, kStrictFlags, cc),
+                    dir / ("build-" + cc + ".log"));
     INFO(build.output);
     REQUIRE(build.status == 0);
     auto run = run_command(fmt::format("cd '{}' && ./api-{}", dir.string(), cc), dir / ("run-" + cc + ".log"));
@@ -269,7 +277,9 @@ std::string in_harness_words(const std::string &log) {
     if (line.rfind("av ", 0) == 0) continue;
     if (line.rfind("state ", 0) == 0) {
       std::string name = line.substr(6, line.find(' ', 6) - 6);
-      const char *status = line.find("succeeded") != std::string::npos ? "1" : line.find("failed") != std::string::npos ? "-1" : "0";
+      const char *status = line.find("succeeded") != std::string::npos ? "1"
+                           : line.find("failed") != std::string::npos  ? "-1"
+                                                                       : "0";
       out += "state " + name + " status " + status + "\n";
       continue;
     }
@@ -294,7 +304,7 @@ std::string in_harness_words(const std::string &log) {
   return out;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("c engine team: the engines and the interpreter agree on random inputs", "[c_backend][run][team]") {
   const std::string golden = read_file(fs::path(GFEC_SOURCE_DIR) / "tests" / "golden" / "c" / "team_fetch.fsm");

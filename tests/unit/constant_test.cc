@@ -30,7 +30,7 @@ bool same_float(double a, float b) {
   return std::memcmp(&x, &b, sizeof x) == 0;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("int arithmetic is C's: truncating division, remainder with the dividend's sign", "[constant]") {
   CHECK(bin(BinaryOp::Add, i(2), i(3)).value.i == 5);
@@ -176,10 +176,11 @@ struct Checked {
 
 const char *const kIface = "interface Bot { void Motor(int side, float speed); void Put(double v); }\n";
 
-} // namespace
+}  // namespace
 
 TEST_CASE("the model keeps each literal's value next to its spelling", "[constant]") {
-  Checked r(std::string(kIface) + "sfc S {\n  var int n = 010;\n  initial place P { Put(0.1); Motor(n + 7, 2.5); }\n}\n");
+  Checked r(std::string(kIface) +
+            "sfc S {\n  var int n = 010;\n  initial place P { Put(0.1); Motor(n + 7, 2.5); }\n}\n");
   REQUIRE(r.fe.text() == "");
   const auto &chart = r.model.charts.at(0);
   CHECK(chart.vars.at(0).init->int_value == 10);
@@ -193,14 +194,13 @@ TEST_CASE("the model keeps each literal's value next to its spelling", "[constan
 }
 
 TEST_CASE("constant expressions are folded once, with C's float rounding", "[constant]") {
-  Checked r(std::string(kIface) +
-            "const float A = 0.1;\n"
-            "const double D = A * 3;\n"          // float arithmetic, then widened
-            "const float BIG = 16777216;\n"
-            "const float ZERO = BIG + 1 - BIG;\n"  // 0 in float, 1 in double
-            "const double E = A;\n"                // the float 0.1f, not the double 0.1
-            "const int K = (2 + 3) * 4;\n"
-            "sfc S {\n  var int n = 0;\n  initial place P { Motor(n, (K - 1) / 2); }\n}\n");
+  Checked r(std::string(kIface) + "const float A = 0.1;\n"
+                                  "const double D = A * 3;\n"  // float arithmetic, then widened
+                                  "const float BIG = 16777216;\n"
+                                  "const float ZERO = BIG + 1 - BIG;\n"  // 0 in float, 1 in double
+                                  "const double E = A;\n"                // the float 0.1f, not the double 0.1
+                                  "const int K = (2 + 3) * 4;\n"
+                                  "sfc S {\n  var int n = 0;\n  initial place P { Motor(n, (K - 1) / 2); }\n}\n");
   REQUIRE(r.fe.text() == "");
   const float tenth = static_cast<float>(0.1);
   volatile float three = 3.0f;
@@ -218,15 +218,15 @@ TEST_CASE("constant expressions are folded once, with C's float rounding", "[con
 }
 
 TEST_CASE("the C engine writes the folded values C would compute", "[constant]") {
-  auto c = cbt::compile_chart({{"t.sfc", std::string(kIface) +
-                                       "const float A = 0.1;\n"
-                        "const double D = A * 3;\n"
-                        "const float BIG = 16777216;\n"
-                        "const float ZERO = BIG + 1 - BIG;\n"
-                        "sfc S {\n  var int n = 0;\n"
-                        "  initial place P { Motor(0, D); Motor(1, ZERO); }\n"
-                        "  place Q;\n  transition T: P -> Q when n >= 0 || n < (2 + 2);\n}\n"}},
-                         "t.sfc", "fold.c", false);
+  auto c = cbt::compile_chart(
+      {{"t.sfc", std::string(kIface) + "const float A = 0.1;\n"
+                                       "const double D = A * 3;\n"
+                                       "const float BIG = 16777216;\n"
+                                       "const float ZERO = BIG + 1 - BIG;\n"
+                                       "sfc S {\n  var int n = 0;\n"
+                                       "  initial place P { Motor(0, D); Motor(1, ZERO); }\n"
+                                       "  place Q;\n  transition T: P -> Q when n >= 0 || n < (2 + 2);\n}\n"}},
+      "t.sfc", "fold.c", false);
   REQUIRE(c->errors == "");
   REQUIRE_FALSE(c->files.empty());
   const std::string src = c->files.at(0).contents;

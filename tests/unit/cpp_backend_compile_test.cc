@@ -28,9 +28,10 @@ std::vector<std::string> lines_of(const std::string &text) {
   return lines;
 }
 
-} // namespace
+}  // namespace
 
-TEST_CASE("cpp compile: every golden file compiles warning-free with g++ and clang++, -Wshadow too", "[cpp_backend][compile]") {
+TEST_CASE("cpp compile: every golden file compiles warning-free with g++ and clang++, -Wshadow too",
+          "[cpp_backend][compile]") {
   auto names = golden_sources();
   REQUIRE(names.size() >= 7);  // five plans, two skeletons
   if (cxx_compilers().size() < 2) WARN("clang++ is not installed: the generated C++ is tested with g++ only");
@@ -86,10 +87,10 @@ TEST_CASE("cpp compile: a fresh skeleton links with the wiring and fails where n
                              "}\n"});
   std::string dir = write_all("skeleton-links", all);
   for (const auto &cxx : runtime_linking_compilers()) {
-    auto build = test::run_command(fmt::format("cd '{}' && {} {} -I . -I '{}' main.cpp wall_follow.cpp carbot_toolbox.cpp "
-                                               "'{}' {} -pthread -o run-{}",
-                                               dir, cxx, kStrictFlags, kRuntimeInclude.string(),
-                                               kRuntimeLibrary.string(), kRuntimeLinkFlags, cxx));
+    auto build = test::run_command(fmt::format(
+        "cd '{}' && {} {} -I . -I '{}' main.cpp wall_follow.cpp carbot_toolbox.cpp "
+        "'{}' {} -pthread -o run-{}",
+        dir, cxx, kStrictFlags, kRuntimeInclude.string(), kRuntimeLibrary.string(), kRuntimeLinkFlags, cxx));
     INFO(cxx << ":\n" << build.out);
     REQUIRE(build.exit_code == 0);
     auto run = test::run_command(fmt::format("'{}/run-{}'", dir, cxx));
@@ -142,23 +143,26 @@ TEST_CASE("cpp compile: gfec writes plan.cpp with plan.hpp, and the skeleton's h
           "[cpp_backend][compile]") {
   std::string dir = test::scratch_dir("cpp_backend/driver");
   std::string samples = (kSourceDir / "samples").string();
-  auto plan = test::run_command(fmt::format("cd '{}' && '{}' wall_follow.plan -o '{}/wall_follow.cpp'", samples, gfec_exe, dir));
+  auto plan = test::run_command(
+      fmt::format("cd '{}' && '{}' wall_follow.plan -o '{}/wall_follow.cpp'", samples, gfec_exe, dir));
   INFO(plan.out);
   REQUIRE(plan.exit_code == 0);
   auto compiled = compile(sample_files(), "wall_follow.plan", dir + "/wall_follow.cpp");
   CHECK(test::read_file(dir + "/wall_follow.cpp") == compiled->files[0].contents);
   CHECK(test::read_file(dir + "/wall_follow.hpp") == compiled->files[1].contents);
 
-  auto skeleton = test::run_command(
-      fmt::format("cd '{}' && '{}' --emit=toolbox-skeleton carbot.toolbox -o '{}/carbot_toolbox.h'", samples, gfec_exe, dir));
+  auto skeleton = test::run_command(fmt::format(
+      "cd '{}' && '{}' --emit=toolbox-skeleton carbot.toolbox -o '{}/carbot_toolbox.h'", samples, gfec_exe, dir));
   INFO(skeleton.out);
   REQUIRE(skeleton.exit_code == 0);
-  CHECK(test::read_file(dir + "/carbot_toolbox.h").find("class WallForward : public afp::Actor {") != std::string::npos);
+  CHECK(test::read_file(dir + "/carbot_toolbox.h").find("class WallForward : public afp::Actor {") !=
+        std::string::npos);
   CHECK(test::read_file(dir + "/carbot_toolbox.cpp").find("afp::StepResult WallForward::step(afp::Context& ctx) {") !=
         std::string::npos);
 
   // A plan is compiled by the cpp back end without --emit; the wiring includes carbot_toolbox.h.
-  auto square = test::run_command(fmt::format("cd '{}' && '{}' square.plan -o '{}/square.cpp'", samples, gfec_exe, dir));
+  auto square =
+      test::run_command(fmt::format("cd '{}' && '{}' square.plan -o '{}/square.cpp'", samples, gfec_exe, dir));
   INFO(square.out);
   REQUIRE(square.exit_code == 0);
   CHECK(test::read_file(dir + "/square.cpp").find("#include \"carbot_toolbox.h\"") != std::string::npos);

@@ -27,8 +27,8 @@ void check_golden(const std::string &name, const std::string &actual) {
   fs::create_directories(out.parent_path());
   test::write_file(out.string(), actual);
   FAIL_CHECK("tests/golden/cpp/" << name << " differs from what the back end writes now; "
-                                  << first_difference(expected, actual) << "\nsee: diff -u " << golden.string() << " "
-                                  << out.string() << "\naccept (after reading the diff): tools/regen-golden.sh cpp");
+                                 << first_difference(expected, actual) << "\nsee: diff -u " << golden.string() << " "
+                                 << out.string() << "\naccept (after reading the diff): tools/regen-golden.sh cpp");
 }
 
 bool line_directives_for(const std::string &stem) {
@@ -51,7 +51,7 @@ std::vector<std::string> cases(const std::map<std::string, std::string> &files, 
   return names;  // std::map keeps them sorted
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("cpp golden: plan wiring equals tests/golden/cpp byte for byte", "[cpp_backend][golden]") {
   auto files = chart_files(kGoldenDir);

@@ -30,7 +30,8 @@ std::string wiring(const std::string &plan, bool line_directives = false) {
 
 /// Compiles generated wiring (files named as given) with the skeletons of the toolboxes it
 /// uses, written beside it (g++, kStrictFlags and -Wshadow); returns what g++ said.
-std::string compiles(const std::string &test, const std::map<std::string, std::string> &files, const std::string &main) {
+std::string compiles(const std::string &test, const std::map<std::string, std::string> &files,
+                     const std::string &main) {
   auto c = compile(files, main, "p.cpp");
   INFO(c->errors);
   REQUIRE(!c->diag.has_errors());
@@ -45,7 +46,7 @@ std::string compiles(const std::string &test, const std::map<std::string, std::s
   return r.exit_code == 0 ? "" : r.out;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("cpp model: each kind of formula", "[cpp_backend]") {
   std::string w = wiring(R"(
@@ -158,7 +159,8 @@ plan P {
   const std::string &w = c->files[0].contents;
   // Instance names (what traces show) stay; the C++ handles take a trailing `_`.
   CHECK(w.find("auto* Bump_ = plan->add_supervisor(\"Bump\", std::make_unique<Bump>(ee));") != std::string::npos);
-  CHECK(w.find("auto* Go_ = plan->add_actor(\"Go\", std::make_unique<Go>(ee, afp::in<float>(1)));") != std::string::npos);
+  CHECK(w.find("auto* Go_ = plan->add_actor(\"Go\", std::make_unique<Go>(ee, afp::in<float>(1)));") !=
+        std::string::npos);
   CHECK(w.find("auto* text_ = plan->add_actor(\"text\"") != std::string::npos);
   CHECK(w.find("auto* divide_ = plan->add_actor(\"divide\"") != std::string::npos);
   CHECK(w.find("auto* ee_ = plan->add_actor(\"ee\"") != std::string::npos);
@@ -170,12 +172,12 @@ plan P {
 }
 
 TEST_CASE("cpp model: a plan over two toolboxes takes both environments", "[cpp_backend]") {
-  std::map<std::string, std::string> files{
-      {"bot.toolbox", kToolbox},
-      {"arm.toolbox", "toolbox Arm { actor Grip(in float force) -> HELD; }"},
-      {"hold.plan", "import \"arm.toolbox\";\n"
-                    "plan Hold { start grip; actor grip: Grip(2) { HELD -> terminate; } }\n"},
-      {"p.plan", R"(
+  std::map<std::string, std::string> files{{"bot.toolbox", kToolbox},
+                                           {"arm.toolbox", "toolbox Arm { actor Grip(in float force) -> HELD; }"},
+                                           {"hold.plan",
+                                            "import \"arm.toolbox\";\n"
+                                            "plan Hold { start grip; actor grip: Grip(2) { HELD -> terminate; } }\n"},
+                                           {"p.plan", R"(
 import "bot.toolbox";
 import "hold.plan";
 plan P {
@@ -238,6 +240,6 @@ plan P {
   CHECK(inner < middle);
   CHECK(middle < top);
   CHECK(w.find("std::unique_ptr<afp::Plan> make_Inner(", inner + 1) == std::string::npos);  // defined once
-  CHECK(w.rfind("}  // namespace", top) != std::string::npos);           // the sub-plans are internal
-  CHECK(out[1].contents.find("make_Middle") == std::string::npos);       // the header declares only P
+  CHECK(w.rfind("}  // namespace", top) != std::string::npos);      // the sub-plans are internal
+  CHECK(out[1].contents.find("make_Middle") == std::string::npos);  // the header declares only P
 }

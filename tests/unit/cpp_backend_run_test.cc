@@ -28,12 +28,13 @@ const Harnesses &harness(const std::map<std::string, std::string> &files, const 
   INFO(compiled->errors);
   REQUIRE(!compiled->diag.has_errors());
   // ctest runs each test case in its own process, side by side: each builds in its own folder.
-  std::string dir = write_all(fmt::format("run-{}-{:x}", stem,
-                                          std::hash<std::string>{}(Catch::getResultCapture().getCurrentTestName())),
-                              compiled->files);
+  std::string dir = write_all(
+      fmt::format("run-{}-{:x}", stem, std::hash<std::string>{}(Catch::getResultCapture().getCurrentTestName())),
+      compiled->files);
   if (cxx_compilers().size() < 2) WARN("clang++ is not installed: the generated C++ is tested with g++ only");
   Harnesses h;
-  for (const auto &cxx : runtime_linking_compilers()) h.executables.push_back(build_harness(cxx, dir, stem, plan_name, env));
+  for (const auto &cxx : runtime_linking_compilers())
+    h.executables.push_back(build_harness(cxx, dir, stem, plan_name, env));
   return built.emplace(main, std::move(h)).first->second;
 }
 
@@ -62,7 +63,7 @@ std::string untimed(const std::string &log) {
   return out;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("cpp run: wall_follow, lane not free, touch, formulas over a changed entry, escape", "[cpp_backend][run]") {
   const auto &h = harness(sample_files(), "wall_follow.plan", "WallFollow", "Carbot");
@@ -71,20 +72,20 @@ TEST_CASE("cpp run: wall_follow, lane not free, touch, formulas over a changed e
   // 40 while followWall runs: the next actors read it (-walldist, walldist -+ 5, CheckLane).
   // A touch interrupts searchFirstWall -> backupCollision drives back 40 cm (4 steps). Escape,
   // a global supervisor, ends the plan from followWall.
-  const std::string script = "\n"       // before the start
-                             "\n"       // 10 ms: searchFirstWall drives
+  const std::string script = "\n"         // before the start
+                             "\n"         // 10 ms: searchFirstWall drives
                              "lane=25\n"  // 20: 25 < walldist 30
                              "wall=15\n"  // 30
                              "\n"         // 40: the turn ends
                              "set:walldist=40\n"
-                             "blocked\n"  // 60: WallForward's own LANE_NOT_FREE
-                             "\n"         // 70: no wall -> turnAfterWallLost
-                             "\n"         // 80
-                             "touch\n"    // 90: touch is checked before lane
-                             "\n\n\n\n"   // 100-130: backing up 40 cm
-                             "wall=-20\n" // 140
-                             "\n"         // 150
-                             "escape\n";  // 160
+                             "blocked\n"   // 60: WallForward's own LANE_NOT_FREE
+                             "\n"          // 70: no wall -> turnAfterWallLost
+                             "\n"          // 80
+                             "touch\n"     // 90: touch is checked before lane
+                             "\n\n\n\n"    // 100-130: backing up 40 cm
+                             "wall=-20\n"  // 140
+                             "\n"          // 150
+                             "escape\n";   // 160
   check_run(h, script,
             "0 start WallFollow.searchFirstWall\n"
             "  Forward distance=100000\n"
@@ -190,38 +191,37 @@ TEST_CASE("cpp run: square, the sub-plan Side counted by the computation CountDo
   const auto &h = harness(sample_files(), "square.plan", "Square", "Carbot");
   // A side: Forward 50 cm (5 steps), Turn (1 step), then Side ends OK and CountDown computes
   // at its start and reports at its first step.
-  const std::string two_sides =
-      "set sides=2\n"
-      "0 start Square.side\n"
-      "0 start Side.forward\n"
-      "  Forward distance=50\n"
-      "  Forward stop\n"
-      "50 finish Side.forward state 0\n"
-      "50 start Side.turn\n"
-      "  Turn angle=90\n"
-      "60 finish Side.turn state 0\n"
-      "60 end Side succeeded\n"
-      "60 finish Square.side state 0\n"
-      "60 start Square.count\n"
-      "  CountDown n=2\n"
-      "70 finish Square.count state 0\n"
-      "70 start Square.side\n"
-      "70 start Side.forward\n"
-      "  Forward distance=50\n"
-      "  Forward stop\n"
-      "120 finish Side.forward state 0\n"
-      "120 start Side.turn\n"
-      "  Turn angle=90\n"
-      "130 finish Side.turn state 0\n"
-      "130 end Side succeeded\n"
-      "130 finish Square.side state 0\n"
-      "130 start Square.count\n"
-      "  CountDown n=1\n"
-      "140 finish Square.count state 1\n"
-      "140 end Square succeeded\n"
-      "status succeeded\n"
-      "config length=50\n"
-      "config sides=0\n";
+  const std::string two_sides = "set sides=2\n"
+                                "0 start Square.side\n"
+                                "0 start Side.forward\n"
+                                "  Forward distance=50\n"
+                                "  Forward stop\n"
+                                "50 finish Side.forward state 0\n"
+                                "50 start Side.turn\n"
+                                "  Turn angle=90\n"
+                                "60 finish Side.turn state 0\n"
+                                "60 end Side succeeded\n"
+                                "60 finish Square.side state 0\n"
+                                "60 start Square.count\n"
+                                "  CountDown n=2\n"
+                                "70 finish Square.count state 0\n"
+                                "70 start Square.side\n"
+                                "70 start Side.forward\n"
+                                "  Forward distance=50\n"
+                                "  Forward stop\n"
+                                "120 finish Side.forward state 0\n"
+                                "120 start Side.turn\n"
+                                "  Turn angle=90\n"
+                                "130 finish Side.turn state 0\n"
+                                "130 end Side succeeded\n"
+                                "130 finish Square.side state 0\n"
+                                "130 start Square.count\n"
+                                "  CountDown n=1\n"
+                                "140 finish Square.count state 1\n"
+                                "140 end Square succeeded\n"
+                                "status succeeded\n"
+                                "config length=50\n"
+                                "config sides=0\n";
   SECTION("two sides set by the application, then DONE") {
     check_run(h, "set:sides=2\n" + std::string(14, '\n'), two_sides);
   }

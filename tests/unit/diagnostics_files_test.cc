@@ -73,7 +73,7 @@ std::vector<fs::path> cases() {
   return out;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("diagnostics files: every case prints exactly its expected block", "[diagnostics_files]") {
   const bool update = std::getenv("GFEC_UPDATE_DIAGNOSTICS") != nullptr;
@@ -97,7 +97,8 @@ TEST_CASE("diagnostics files: every case prints exactly its expected block", "[d
       INFO("regenerate with tools/regen-diagnostics.sh and review the diff");
       CHECK(got == c.expected);
       // Every case makes gfec say something located, or it tests nothing.
-      const bool says_something = got.find(": error: ") != std::string::npos || got.find(": warning: ") != std::string::npos;
+      const bool says_something =
+          got.find(": error: ") != std::string::npos || got.find(": warning: ") != std::string::npos;
       CHECK(says_something);
     }
   }

@@ -20,7 +20,7 @@ sfc Tiny {
 }
 )";
 
-} // namespace
+}  // namespace
 
 TEST_CASE("gfec: --version and --help exit 0") {
   auto v = run_command(gfec_exe + " --version");
@@ -102,8 +102,8 @@ TEST_CASE("gfec --check: every file, nothing written, exit 1 on any error") {
   auto good = run_command("cd " + dir + " && " + gfec_exe + " --check good.sfc");
   CHECK(good.exit_code == 0);
   CHECK(good.out == "");
-  auto both = run_command("cd " + dir + " && " + gfec_exe + " --check bad.sfc good.sfc " + samples +
-                          "/line_follower.sfc");
+  auto both =
+      run_command("cd " + dir + " && " + gfec_exe + " --check bad.sfc good.sfc " + samples + "/line_follower.sfc");
   CHECK(both.exit_code == 1);
   CHECK(both.out.find("bad.sfc:1:") == 0);
   int files = 0;

@@ -39,21 +39,23 @@ std::vector<Place> places(const std::string &op, int n) {
   std::string cond = logical ? c : "(" + c + ") > 0";
   std::string vars = "  var int x = 1;\n  var bool b = true;\n";
   std::vector<Place> p = {
-      {"condition", iface + "sfc X {\n" + vars + "  initial place A;\n  place B;\n  A -> B when " + cond +
-                        ";\n  B -> A;\n}\n"},
+      {"condition",
+       iface + "sfc X {\n" + vars + "  initial place A;\n  place B;\n  A -> B when " + cond + ";\n  B -> A;\n}\n"},
       {"action", iface + "sfc X {\n" + vars + "  initial place A { " + term + " = " + c + "; }\n}\n"},
       {"call argument", iface + "fsm X {\n" + vars + "  initial state A { " + call + " }\n}\n"},
       {"constant", iface + "const " + (logical ? "bool K = " + chain("true", op, n) : "int K = " + chain("1", op, n)) +
                        ";\nsfc X {\n  initial place A { Act(0); }\n}\n"},
   };
   if (!logical)
-    p.push_back({"plan formula", "import \"" + std::string(GFEC_SOURCE_DIR) + "/samples/carbot.toolbox\";\n"
-                                 "plan P {\n  config { float length = 50; }\n  start f;\n"
-                                 "  actor f: Forward(" + chain("length", op, n) + ") { FORWARD_OK -> terminate; }\n}\n"});
+    p.push_back({"plan formula", "import \"" + std::string(GFEC_SOURCE_DIR) +
+                                     "/samples/carbot.toolbox\";\n"
+                                     "plan P {\n  config { float length = 50; }\n  start f;\n"
+                                     "  actor f: Forward(" +
+                                     chain("length", op, n) + ") { FORWARD_OK -> terminate; }\n}\n"});
   return p;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("hardening: a flat chain of thousands of operators is a located error, never a crash", "[hardening]") {
   std::string dir = scratch_dir("hardening_chains");
@@ -103,10 +105,9 @@ TEST_CASE("hardening: chains of 200 terms still compile with every back end", "[
 
 TEST_CASE("hardening: a NUL in an import path is an error at the string", "[hardening]") {
   FrontEnd fe({{"m.sfc", "import \"a.iface\\0.sfc\";\n"}, {"a.iface", "interface A { void Go(); }\n"}});
-  CHECK(fe.text() ==
-        "m.sfc:1:8: error: an import path cannot contain a NUL character [import]\n"
-        " import \"a.iface\\0.sfc\";\n"
-        "        ^~~~~~~~~~~~~~~\n");
+  CHECK(fe.text() == "m.sfc:1:8: error: an import path cannot contain a NUL character [import]\n"
+                     " import \"a.iface\\0.sfc\";\n"
+                     "        ^~~~~~~~~~~~~~~\n");
   CHECK(fe.loaded.paths == std::vector<std::string>{"m.sfc"});
 }
 
@@ -132,7 +133,8 @@ TEST_CASE("hardening: one rule for numbers, in actions, arguments and plan formu
     // The action on line 4: its value at column 29, an argument at 27.
     write_file(dir + "/n.sfc", "interface I { void g(int v); void h(float v); }\n"
                                "sfc N {\n  var int x = 1; var float f = 1;\n"
-                               "  initial place Place { " + c.action + " }\n}\n");
+                               "  initial place Place { " +
+                                   c.action + " }\n}\n");
     CommandResult r = run_command(gfec_exe + " --check " + dir + "/n.sfc");
     CHECK(r.exit_code == 1);
     CHECK(r.out.find("n.sfc" + c.message) != std::string::npos);
@@ -149,9 +151,11 @@ TEST_CASE("hardening: one rule for numbers, in actions, arguments and plan formu
   // Plan formulas follow the same rule.
   for (std::string arg : {"1e999", "2147483647 + 1", "3000000000", "length * 2 + 1e308 * 10"}) {
     INFO(arg);
-    write_file(dir + "/p.plan", "import \"" + std::string(GFEC_SOURCE_DIR) + "/samples/carbot.toolbox\";\n"
-                                "plan P {\n  config { float length = 50; }\n  start f;\n"
-                                "  actor f: Forward(" + arg + ") { FORWARD_OK -> terminate; }\n}\n");
+    write_file(dir + "/p.plan", "import \"" + std::string(GFEC_SOURCE_DIR) +
+                                    "/samples/carbot.toolbox\";\n"
+                                    "plan P {\n  config { float length = 50; }\n  start f;\n"
+                                    "  actor f: Forward(" +
+                                    arg + ") { FORWARD_OK -> terminate; }\n}\n");
     CommandResult r = run_command(gfec_exe + " --check " + dir + "/p.plan");
     CHECK(r.exit_code == 1);
     CHECK(r.out.find("p.plan:5:") != std::string::npos);
@@ -165,7 +169,8 @@ TEST_CASE("hardening: a duration beyond what timers count is never reached, howe
   for (std::string d : {"1e17s", "1e18s", "1e300s", "4294967296s"}) {
     INFO(d);
     write_file(dir + "/d.sfc", "sfc D {\n  period 1ms;\n  initial place A;\n  place B;\n"
-                               "  A -> B when elapsed(A) >= " + d + ";\n  B -> A when elapsed(B) < " + d + ";\n}\n");
+                               "  A -> B when elapsed(A) >= " +
+                                   d + ";\n  B -> A when elapsed(B) < " + d + ";\n}\n");
     CommandResult r = run_command(gfec_exe + " " + dir + "/d.sfc -o " + dir + "/d.c");
     REQUIRE(r.exit_code == 0);
     std::string c = read_file(dir + "/d.c");
@@ -179,8 +184,8 @@ TEST_CASE("hardening: did-you-mean stays fast on hostile names, and still helps 
   std::string dir = scratch_dir("hardening_suggest");
   // A 40,000-character name and its typo: the edit distance once took seconds per candidate.
   std::string name(40000, 'a');
-  write_file(dir + "/long.sfc", "interface I { void " + name + "(); }\nsfc X { initial place A { " +
-                                    name.substr(1) + "b(); } }\n");
+  write_file(dir + "/long.sfc",
+             "interface I { void " + name + "(); }\nsfc X { initial place A { " + name.substr(1) + "b(); } }\n");
   auto start = std::chrono::steady_clock::now();
   CommandResult r = run_command(gfec_exe + " --check " + dir + "/long.sfc");
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -190,8 +195,10 @@ TEST_CASE("hardening: did-you-mean stays fast on hostile names, and still helps 
   CHECK(seconds < 5);
   // Names up to 64 characters still get one, and a name far longer than the typo is skipped.
   std::string n64 = "Drive_" + std::string(58, 'x');
-  write_file(dir + "/typo.sfc", "interface I { void " + n64 + "(); void Forwards_and_then_some_more(); }\n"
-                                "sfc X { initial place A { " + n64.substr(0, 63) + "y(); Forwrd(); } }\n");
+  write_file(dir + "/typo.sfc", "interface I { void " + n64 +
+                                    "(); void Forwards_and_then_some_more(); }\n"
+                                    "sfc X { initial place A { " +
+                                    n64.substr(0, 63) + "y(); Forwrd(); } }\n");
   CommandResult t = run_command(gfec_exe + " --check " + dir + "/typo.sfc");
   CHECK(t.exit_code == 1);
   CHECK(t.out.find("note: did you mean '" + n64 + "'?") != std::string::npos);
@@ -228,15 +235,17 @@ TEST_CASE("hardening: the smaller input cases of the probe", "[hardening]") {
   // One file by an absolute path and through a symlinked folder is read once.
   run_command("mkdir -p " + dir + "/real && ln -sfn real " + dir + "/link");
   write_file(dir + "/real/a.iface", "interface I { void Go(); }\n");
-  write_file(dir + "/two.sfc", "import \"" + dir + "/real/a.iface\";\nimport \"link/a.iface\";\n"
-                               "sfc S { initial place A { Go(); } }\n");
+  write_file(dir + "/two.sfc", "import \"" + dir +
+                                   "/real/a.iface\";\nimport \"link/a.iface\";\n"
+                                   "sfc S { initial place A { Go(); } }\n");
   CommandResult two = run_command(gfec_exe + " --check " + dir + "/two.sfc");
   CHECK(two.exit_code == 0);
   CHECK(two.out == "");
 
   // Trigraphs in a file name reach #line escaped: "??-" would be '~' (and -Wtrigraphs) in C99.
   write_file(dir + "/tri?\?-.sfc", "interface I { void Go(); }\nsfc S { initial place A { Go(); } }\n");
-  CommandResult tri = run_command("cd " + dir + " && " + gfec_exe + " 'tri?\?-.sfc' -o tri.c && "
+  CommandResult tri = run_command("cd " + dir + " && " + gfec_exe +
+                                  " 'tri?\?-.sfc' -o tri.c && "
                                   "cc -std=c99 -Wall -Wextra -Wpedantic -Werror -c tri.c -o tri.o");
   CHECK(tri.exit_code == 0);
   CHECK(read_file(dir + "/tri.c").find("#line 2 \"tri?\\?-.sfc\"") != std::string::npos);

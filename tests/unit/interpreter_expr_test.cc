@@ -24,7 +24,7 @@ std::string first_tick_calls(const std::string &action, const std::string &vars 
   return calls;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("interpreter expressions: ints are C's 32-bit ints, truncating") {
   CHECK(first_tick_calls("I(7 / 2); I(-7 / 2); I(-7 % 3); I(7 % -3); I(2 + 3 * 4);") ==
@@ -62,9 +62,8 @@ sfc E {
                    "interface Bot { bool P(int n); int Q(int n); }");
   ScriptedEnv env(*c);
   env.script("P", {0, 1}).script("Q", {1});
-  CHECK(run_log(*c, env, 2) ==
-        "tick 1\ncall P(1) = false\ncall Q(3) = 1\ncall Q(4) = 1\ncall Q(5) = 1\nav 0 1\n"
-        "tick 2\nav 0 1\n");
+  CHECK(run_log(*c, env, 2) == "tick 1\ncall P(1) = false\ncall Q(3) = 1\ncall Q(4) = 1\ncall Q(5) = 1\nav 0 1\n"
+                               "tick 2\nav 0 1\n");
   ScriptedEnv yes(*c);
   yes.script("P", {1});
   CHECK(run_log(*c, yes, 1) == "tick 1\ncall P(1) = true\ncall P(2) = true\nav 0 1\n");

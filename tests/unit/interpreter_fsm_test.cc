@@ -38,43 +38,42 @@ fsm CleanUp {
 }
 )";
 
-} // namespace
+}  // namespace
 
 TEST_CASE("interpreter fsm: one transition a tick, the first that holds, then the new state's action") {
   auto c = compile(kCleanUp, kCleanBot);
   ScriptedEnv env(*c);
   env.script("Arrived", {0, 1, 1, 1}).script("Holding", {0, 0, 1, 1}).script("FarFromDestination", {0, 0, 0, 0});
   env.script("ItemPlaced", {0, 0, 0, 1});
-  CHECK(run_log(*c, env, 5) ==
-        "tick 1\n"
-        "call Arrived() = false\n"
-        "call Stuck() = false\n"
-        "call DriveToItem()\n"
-        "av 1 0 0 0 0 0\nstate Z0 running\n"
-        "tick 2\n"
-        "call Arrived() = true\n"  // Z0 -> Z1 fires; Z0 -> Failed is not tried
-        "call PickUp()\n"
-        "av 0 1 0 0 0 0\nstate Z1 running\n"
-        "tick 3\n"
-        "call Holding() = true\n"
-        "call FarFromDestination() = false\n"
-        "call Holding() = true\n"
-        "call FarFromDestination() = false\n"
-        "call PlaceItem()\n"
-        "av 0 0 0 1 0 0\nstate Z3 running\n"
-        "tick 4\n"
-        "call ItemPlaced() = true\n"
-        "av 0 0 0 0 1 0\nstate Done succeeded\n"
-        "tick 5\n"  // in a terminal state nothing happens
-        "av 0 0 0 0 1 0\nstate Done succeeded\n");
+  CHECK(run_log(*c, env, 5) == "tick 1\n"
+                               "call Arrived() = false\n"
+                               "call Stuck() = false\n"
+                               "call DriveToItem()\n"
+                               "av 1 0 0 0 0 0\nstate Z0 running\n"
+                               "tick 2\n"
+                               "call Arrived() = true\n"  // Z0 -> Z1 fires; Z0 -> Failed is not tried
+                               "call PickUp()\n"
+                               "av 0 1 0 0 0 0\nstate Z1 running\n"
+                               "tick 3\n"
+                               "call Holding() = true\n"
+                               "call FarFromDestination() = false\n"
+                               "call Holding() = true\n"
+                               "call FarFromDestination() = false\n"
+                               "call PlaceItem()\n"
+                               "av 0 0 0 1 0 0\nstate Z3 running\n"
+                               "tick 4\n"
+                               "call ItemPlaced() = true\n"
+                               "av 0 0 0 0 1 0\nstate Done succeeded\n"
+                               "tick 5\n"  // in a terminal state nothing happens
+                               "av 0 0 0 0 1 0\nstate Done succeeded\n");
 }
 
 TEST_CASE("interpreter fsm: failure, hooks and the postcondition check") {
   auto c = compile(kCleanUp, kCleanBot);
   ScriptedEnv env(*c);
   env.script("Stuck", {1});
-  CHECK(run_log(*c, env, 1, {true, false}) ==
-        "tick 1\ncall Arrived() = false\ncall Stuck() = true\nlost Z0\ngained Failed\nav 0 0 0 0 0 1\nstate Failed failed\n");
+  CHECK(run_log(*c, env, 1, {true, false}) == "tick 1\ncall Arrived() = false\ncall Stuck() = true\nlost Z0\ngained "
+                                              "Failed\nav 0 0 0 0 0 1\nstate Failed failed\n");
 
   ScriptedEnv done(*c);
   done.script("Arrived", {1}).script("Holding", {1}).script("ItemPlaced", {1});
@@ -102,13 +101,12 @@ fsm Blink {
 )",
                    "interface Bot { void Show(int n); }");
   ScriptedEnv env(*c);
-  CHECK(run_log(*c, env, 6) ==
-        "tick 1\ncall Show(1)\nav 1 0 0\nstate Off running\n"  // elapsed(Off) = 1 < 2
-        "tick 2\ncall Show(100)\nav 0 1 0\nstate On running\n"
-        "tick 3\ncall Show(2)\nav 1 0 0\nstate Off running\n"  // entered: its timer restarts
-        "tick 4\ncall Show(3)\nav 1 0 0\nstate Off running\n"  // elapsed 1
-        "tick 5\nav 0 0 1\nstate Enough succeeded\n"            // count >= 3 is tried first
-        "tick 6\nav 0 0 1\nstate Enough succeeded\n");
+  CHECK(run_log(*c, env, 6) == "tick 1\ncall Show(1)\nav 1 0 0\nstate Off running\n"  // elapsed(Off) = 1 < 2
+                               "tick 2\ncall Show(100)\nav 0 1 0\nstate On running\n"
+                               "tick 3\ncall Show(2)\nav 1 0 0\nstate Off running\n"  // entered: its timer restarts
+                               "tick 4\ncall Show(3)\nav 1 0 0\nstate Off running\n"  // elapsed 1
+                               "tick 5\nav 0 0 1\nstate Enough succeeded\n"           // count >= 3 is tried first
+                               "tick 6\nav 0 0 1\nstate Enough succeeded\n");
 }
 
 TEST_CASE("interpreter fsm: entry and exit blocks") {
@@ -179,16 +177,16 @@ fsm Census {
   interp::RunResult r = interp::run_team(c->model, 0, agents, 4, {}, diag);
   REQUIRE(r.completed);
   auto agent = [](int k, bool move, const char *count, const char *state) {
-    return fmt::format("agent {}\ncall Move() = {}\ncall Count({})\nav {}\nstate {} running\n", k, move ? "true" : "false",
-                       count, std::string(state) == "Go" ? "1 0" : "0 1", state);
+    return fmt::format("agent {}\ncall Move() = {}\ncall Count({})\nav {}\nstate {} running\n", k,
+                       move ? "true" : "false", count, std::string(state) == "Go" ? "1 0" : "0 1", state);
   };
   CHECK(r.log.render({}) == "tick 1\n" + agent(0, false, "0, 0, 0", "Go") + agent(1, true, "1, 0, 0", "Wait") +
-                                agent(2, false, "2, 0, 0", "Go") + agent(3, true, "3, 0, 0", "Wait") +
-                                "tick 2\n" + agent(0, false, "0, 1, 2", "Go") + agent(1, false, "1, 2, 1", "Wait") +
-                                agent(2, false, "2, 1, 2", "Go") + agent(3, false, "3, 2, 1", "Wait") +
-                                "tick 3\n" + agent(0, true, "0, 1, 2", "Wait") + agent(1, false, "1, 2, 1", "Wait") +
-                                agent(2, false, "2, 1, 2", "Go") + agent(3, false, "3, 2, 1", "Wait") +
-                                "tick 4\n" + agent(0, false, "0, 1, 2", "Wait") + agent(1, false, "1, 1, 2", "Wait") +
+                                agent(2, false, "2, 0, 0", "Go") + agent(3, true, "3, 0, 0", "Wait") + "tick 2\n" +
+                                agent(0, false, "0, 1, 2", "Go") + agent(1, false, "1, 2, 1", "Wait") +
+                                agent(2, false, "2, 1, 2", "Go") + agent(3, false, "3, 2, 1", "Wait") + "tick 3\n" +
+                                agent(0, true, "0, 1, 2", "Wait") + agent(1, false, "1, 2, 1", "Wait") +
+                                agent(2, false, "2, 1, 2", "Go") + agent(3, false, "3, 2, 1", "Wait") + "tick 4\n" +
+                                agent(0, false, "0, 1, 2", "Wait") + agent(1, false, "1, 1, 2", "Wait") +
                                 agent(2, false, "2, 0, 3", "Go") + agent(3, false, "3, 1, 2", "Wait"));
   // Explained: each agent's part one level deeper, and the exchange after the tick.
   std::string explained = r.log.render({false, true, true});
@@ -207,14 +205,14 @@ fsm Census {
   interp::Engine e(c->model, 0);
   CHECK(e.team_size() == 4);
   e.set_agent(2);
-  e.report(2, 1);   // its own number
-  e.report(4, 1);   // no such agent
+  e.report(2, 1);  // its own number
+  e.report(4, 1);  // no such agent
   e.report(-1, 1);
-  e.report(0, 2);   // no such state
+  e.report(0, 2);  // no such state
   CHECK(e.reports() == std::vector<int>{-1, -1, -1, -1});
   e.report(0, 1);
   e.report(3, 1);
-  e.set_agent(9);   // ignored
+  e.set_agent(9);  // ignored
   CHECK(e.agent() == 2);
   ScriptedEnv env(*c);
   e.run(env, nullptr);

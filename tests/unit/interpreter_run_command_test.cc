@@ -10,46 +10,44 @@ namespace {
 const std::string gfec_exe = std::string(GFEC_BINARY_DIR) + "/gfec";
 const std::string samples = std::string(GFEC_SOURCE_DIR) + "/samples";
 
-} // namespace
+}  // namespace
 
 TEST_CASE("gfec run: the line follower over a CSV trace, every layer") {
   std::string dir = scratch_dir("gfec_run_trace");
-  write_file(dir + "/lf.csv",
-             "# the left sensor sees the line at tick 2\n"
-             "tick, Left_IR_Black, Left_IR_White\n"
-             "1, 0, 1\n"
-             "2, 1, 0\n");
+  write_file(dir + "/lf.csv", "# the left sensor sees the line at tick 2\n"
+                              "tick, Left_IR_Black, Left_IR_White\n"
+                              "1, 0, 1\n"
+                              "2, 1, 0\n");
   auto r = run_command(gfec_exe + " run " + samples + "/line_follower.sfc --inputs " + dir + "/lf.csv --hooks");
   CHECK(r.exit_code == 0);
-  CHECK(r.out ==
-        "tick 1\n"
-        "  entry LeftFw\n"
-        "  entry RightFw\n"
-        "  cond T0 = false\n"
-        "    call Left_IR_Black() = false\n"
-        "  cond T2 = false\n"
-        "    call Right_IR_Black() = false\n"
-        "  action LeftFw\n"
-        "    call Left_FW()\n"
-        "  action RightFw\n"
-        "    call Right_FW()\n"
-        "  av 1 0 1 0\n"
-        "tick 2\n"
-        "  cond T0 = true\n"
-        "    call Left_IR_Black() = true\n"
-        "  fire T0: LeftFw -> LeftStop\n"
-        "  cond T2 = false\n"
-        "    call Right_IR_Black() = false\n"
-        "  exit LeftFw\n"
-        "  entry LeftStop\n"
-        "  lost LeftFw\n"
-        "  gained LeftStop\n"
-        "  enabled T1\n"
-        "  action LeftStop\n"
-        "    call Left_Stop()\n"
-        "  action RightFw\n"
-        "    call Right_FW()\n"
-        "  av 0 1 1 0\n");
+  CHECK(r.out == "tick 1\n"
+                 "  entry LeftFw\n"
+                 "  entry RightFw\n"
+                 "  cond T0 = false\n"
+                 "    call Left_IR_Black() = false\n"
+                 "  cond T2 = false\n"
+                 "    call Right_IR_Black() = false\n"
+                 "  action LeftFw\n"
+                 "    call Left_FW()\n"
+                 "  action RightFw\n"
+                 "    call Right_FW()\n"
+                 "  av 1 0 1 0\n"
+                 "tick 2\n"
+                 "  cond T0 = true\n"
+                 "    call Left_IR_Black() = true\n"
+                 "  fire T0: LeftFw -> LeftStop\n"
+                 "  cond T2 = false\n"
+                 "    call Right_IR_Black() = false\n"
+                 "  exit LeftFw\n"
+                 "  entry LeftStop\n"
+                 "  lost LeftFw\n"
+                 "  gained LeftStop\n"
+                 "  enabled T1\n"
+                 "  action LeftStop\n"
+                 "    call Left_Stop()\n"
+                 "  action RightFw\n"
+                 "    call Right_FW()\n"
+                 "  av 0 1 1 0\n");
 }
 
 TEST_CASE("gfec run: --observable prints what an engine's caller sees; --ticks") {
@@ -93,19 +91,18 @@ fsm Fetch {
   Grab -> Got when Holding();
 }
 )");
-  write_file(dir + "/in.csv",
-             "tick, Arrived, Arrived@0, Holding@2\n"
-             "1, 0, 1, 0\n"
-             "2, 1, 1, 1\n");
+  write_file(dir + "/in.csv", "tick, Arrived, Arrived@0, Holding@2\n"
+                              "1, 0, 1, 0\n"
+                              "2, 1, 1, 1\n");
   auto r = run_command(gfec_exe + " run " + dir + "/fetch.fsm --inputs " + dir + "/in.csv --observable");
   CHECK(r.exit_code == 0);
   CHECK(r.out == "tick 1\n"
                  "agent 0\ncall Arrived() = true\ncall PickUp()\nav 0 1 0\nstate Grab running\n"  // its own column
-                 "agent 1\ncall Arrived() = false\nav 1 0 0\nstate Go running\n"                    // the shared one
+                 "agent 1\ncall Arrived() = false\nav 1 0 0\nstate Go running\n"                  // the shared one
                  "agent 2\ncall Arrived() = false\nav 1 0 0\nstate Go running\n"
                  "tick 2\n"
-                 "agent 0\ncall Holding() = false\ncall PickUp()\nav 0 1 0\nstate Grab running\n"   // no Holding@0: 0
-                 "agent 1\ncall Arrived() = true\nav 1 0 0\nstate Go running\n"                     // team(Grab) is 1
+                 "agent 0\ncall Holding() = false\ncall PickUp()\nav 0 1 0\nstate Grab running\n"  // no Holding@0: 0
+                 "agent 1\ncall Arrived() = true\nav 1 0 0\nstate Go running\n"                    // team(Grab) is 1
                  "agent 2\ncall Arrived() = true\nav 1 0 0\nstate Go running\n");
 
   auto two = run_command(gfec_exe + " run " + dir + "/fetch.fsm --agents 2 --ticks 1 --observable");

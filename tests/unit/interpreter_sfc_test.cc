@@ -28,56 +28,54 @@ sfc LineFollower {
 }
 )";
 
-} // namespace
+}  // namespace
 
 TEST_CASE("interpreter sfc: the line follower, observable log") {
   auto c = compile(kLineFollower, kLineBot);
   ScriptedEnv env(*c);
   env.script("Left_IR_Black", {0, 1, 0}).script("Left_IR_White", {0, 0, 1});
-  CHECK(run_log(*c, env, 3) ==
-        "tick 1\n"
-        "call Left_IR_Black() = false\n"
-        "call Right_IR_Black() = false\n"
-        "call Left_FW()\n"
-        "call Right_FW()\n"
-        "av 1 0 1 0\n"
-        "tick 2\n"
-        "call Left_IR_Black() = true\n"
-        "call Right_IR_Black() = false\n"
-        "call Left_Stop()\n"
-        "call Right_FW()\n"
-        "av 0 1 1 0\n"
-        "tick 3\n"
-        "call Left_IR_White() = true\n"  // LeftFw -> LeftStop is closed: its sensor is not read
-        "call Right_IR_Black() = false\n"
-        "call Left_FW()\n"
-        "call Right_FW()\n"
-        "av 1 0 1 0\n");
+  CHECK(run_log(*c, env, 3) == "tick 1\n"
+                               "call Left_IR_Black() = false\n"
+                               "call Right_IR_Black() = false\n"
+                               "call Left_FW()\n"
+                               "call Right_FW()\n"
+                               "av 1 0 1 0\n"
+                               "tick 2\n"
+                               "call Left_IR_Black() = true\n"
+                               "call Right_IR_Black() = false\n"
+                               "call Left_Stop()\n"
+                               "call Right_FW()\n"
+                               "av 0 1 1 0\n"
+                               "tick 3\n"
+                               "call Left_IR_White() = true\n"  // LeftFw -> LeftStop is closed: its sensor is not read
+                               "call Right_IR_Black() = false\n"
+                               "call Left_FW()\n"
+                               "call Right_FW()\n"
+                               "av 1 0 1 0\n");
 }
 
 TEST_CASE("interpreter sfc: every layer, indented, as gfec run prints it") {
   auto c = compile(kLineFollower, kLineBot);
   ScriptedEnv env(*c);
   env.script("Left_IR_Black", {1});
-  CHECK(run_log(*c, env, 1, {true, true, true}) ==
-        "tick 1\n"
-        "  entry LeftFw\n"
-        "  entry RightFw\n"
-        "  cond T0 = true\n"
-        "    call Left_IR_Black() = true\n"
-        "  fire T0: LeftFw -> LeftStop\n"
-        "  cond T2 = false\n"
-        "    call Right_IR_Black() = false\n"
-        "  exit LeftFw\n"
-        "  entry LeftStop\n"
-        "  lost LeftFw\n"
-        "  gained LeftStop\n"
-        "  enabled T1\n"
-        "  action LeftStop\n"
-        "    call Left_Stop()\n"
-        "  action RightFw\n"
-        "    call Right_FW()\n"
-        "  av 0 1 1 0\n");
+  CHECK(run_log(*c, env, 1, {true, true, true}) == "tick 1\n"
+                                                   "  entry LeftFw\n"
+                                                   "  entry RightFw\n"
+                                                   "  cond T0 = true\n"
+                                                   "    call Left_IR_Black() = true\n"
+                                                   "  fire T0: LeftFw -> LeftStop\n"
+                                                   "  cond T2 = false\n"
+                                                   "    call Right_IR_Black() = false\n"
+                                                   "  exit LeftFw\n"
+                                                   "  entry LeftStop\n"
+                                                   "  lost LeftFw\n"
+                                                   "  gained LeftStop\n"
+                                                   "  enabled T1\n"
+                                                   "  action LeftStop\n"
+                                                   "    call Left_Stop()\n"
+                                                   "  action RightFw\n"
+                                                   "    call Right_FW()\n"
+                                                   "  av 0 1 1 0\n");
 }
 
 TEST_CASE("interpreter sfc: activation produced in a tick is consumed only in the next") {
@@ -141,10 +139,9 @@ sfc Pump {
 )");
   ScriptedEnv none(*u);
   // S loses and regains its activation each tick (no exit, no entry); P counts up.
-  CHECK(run_log(*u, none, 3, {true, true}) ==
-        "tick 1\nentry S\nfire T0: S -> (S, P)\nentry P\ngained P\nav 1 1\n"
-        "tick 2\nfire T0: S -> (S, P)\nav 1 2\n"
-        "tick 3\nfire T0: S -> (S, P)\nav 1 3\n");
+  CHECK(run_log(*u, none, 3, {true, true}) == "tick 1\nentry S\nfire T0: S -> (S, P)\nentry P\ngained P\nav 1 1\n"
+                                              "tick 2\nfire T0: S -> (S, P)\nav 1 2\n"
+                                              "tick 3\nfire T0: S -> (S, P)\nav 1 3\n");
 }
 
 TEST_CASE("interpreter sfc: all exits before all entries; a place that loses and regains stays") {
@@ -159,16 +156,15 @@ sfc Blocks {
 )",
                    "interface Bot { void Log(int what); }");
   ScriptedEnv env(*c);
-  CHECK(run_log(*c, env, 2) ==
-        "tick 1\n"
-        "call Log(1)\n"  // the first tick begins with the initial places' entry blocks
-        "call Log(4)\n"  // B exits, then C enters; A lost and regained: nothing
-        "call Log(5)\n"
-        "call Log(2)\n"
-        "av 1 0 1\n"
-        "tick 2\n"
-        "call Log(2)\n"
-        "av 1 0 1\n");
+  CHECK(run_log(*c, env, 2) == "tick 1\n"
+                               "call Log(1)\n"  // the first tick begins with the initial places' entry blocks
+                               "call Log(4)\n"  // B exits, then C enters; A lost and regained: nothing
+                               "call Log(5)\n"
+                               "call Log(2)\n"
+                               "av 1 0 1\n"
+                               "tick 2\n"
+                               "call Log(2)\n"
+                               "av 1 0 1\n");
 }
 
 TEST_CASE("interpreter sfc: timers count whole ticks and restart on entry") {
@@ -185,10 +181,9 @@ sfc Timed {
   ScriptedEnv env(*c);
   // 25ms is 3 ticks (rounded up). elapsed(A) is 1 in tick 1 (step 1 counts before the
   // transitions), so A -> B fires in tick 3; A is back in tick 4 with its timer at 0.
-  CHECK(run_log(*c, env, 8) ==
-        "tick 1\ncall Tick()\nav 1 0\ntick 2\ncall Tick()\nav 1 0\ntick 3\nav 0 1\n"
-        "tick 4\ncall Tick()\nav 1 0\ntick 5\ncall Tick()\nav 1 0\ntick 6\ncall Tick()\nav 1 0\n"
-        "tick 7\nav 0 1\ntick 8\ncall Tick()\nav 1 0\n");
+  CHECK(run_log(*c, env, 8) == "tick 1\ncall Tick()\nav 1 0\ntick 2\ncall Tick()\nav 1 0\ntick 3\nav 0 1\n"
+                               "tick 4\ncall Tick()\nav 1 0\ntick 5\ncall Tick()\nav 1 0\ntick 6\ncall Tick()\nav 1 0\n"
+                               "tick 7\nav 0 1\ntick 8\ncall Tick()\nav 1 0\n");
 }
 
 TEST_CASE("interpreter sfc: the engine API mirrors the C engine's") {
@@ -222,7 +217,8 @@ sfc Api {
 TEST_CASE("interpreter sfc: if, else if and else in actions, entry and exit") {
   // The chart of c_backend_run_test.cc "if, else if and else": the same calls, in the
   // interpreter's words.
-  auto c = compile(R"(
+  auto c =
+      compile(R"(
 sfc Branches {
   period 10ms;
   var int k = 0;
@@ -235,33 +231,32 @@ sfc Branches {
   transition P -> Q when k >= 2;
   transition Q -> P when X();
 })",
-                   "interface Bot { bool X(); bool Y(); int N(); int M(); void A(); void B(int v); void C(); void D(); }");
+              "interface Bot { bool X(); bool Y(); int N(); int M(); void A(); void B(int v); void C(); void D(); }");
   ScriptedEnv env(*c);
   env.script("X", {1, 0, 0, 1, 0, 1}).script("Y", {0, 0, 1, 1, 0, 1}).script("N", {2, 0}).script("M", {1, 0});
-  CHECK(run_log(*c, env, 6) ==
-        "tick 1\n"
-        "call X() = true\ncall A()\n"                       // P's entry on the first tick
-        "call N() = 2\ncall M() = 1\ncall N() = 2\ncall B(2)\n"
-        "av 1 0\n"
-        "tick 2\n"
-        "call N() = 0\ncall M() = 0\ncall Y() = false\ncall D()\n"
-        "call B(0)\n"                                       // elapsed(P) is 20ms
-        "av 1 0\n"
-        "tick 3\n"
-        "call N() = 0\ncall M() = 0\ncall Y() = true\ncall X() = false\n"
-        "call B(1)\n"
-        "av 1 0\n"
-        "tick 4\n"
-        "call N() = 0\ncall M() = 0\ncall Y() = true\ncall X() = true\ncall C()\n"
-        "call B(2)\n"
-        "av 1 0\n"
-        "tick 5\n"                                          // k is 2: P -> Q
-        "call D()\n"
-        "av 0 1\n"
-        "tick 6\n"
-        "call X() = true\n"                                 // Q -> P
-        "call Y() = true\ncall B(2)\n"                      // Q's exit
-        "call X() = true\ncall A()\n"                       // P's entry
-        "call N() = 0\ncall M() = 0\ncall Y() = true\ncall X() = true\ncall C()\n"
-        "av 1 0\n");
+  CHECK(run_log(*c, env, 6) == "tick 1\n"
+                               "call X() = true\ncall A()\n"  // P's entry on the first tick
+                               "call N() = 2\ncall M() = 1\ncall N() = 2\ncall B(2)\n"
+                               "av 1 0\n"
+                               "tick 2\n"
+                               "call N() = 0\ncall M() = 0\ncall Y() = false\ncall D()\n"
+                               "call B(0)\n"  // elapsed(P) is 20ms
+                               "av 1 0\n"
+                               "tick 3\n"
+                               "call N() = 0\ncall M() = 0\ncall Y() = true\ncall X() = false\n"
+                               "call B(1)\n"
+                               "av 1 0\n"
+                               "tick 4\n"
+                               "call N() = 0\ncall M() = 0\ncall Y() = true\ncall X() = true\ncall C()\n"
+                               "call B(2)\n"
+                               "av 1 0\n"
+                               "tick 5\n"  // k is 2: P -> Q
+                               "call D()\n"
+                               "av 0 1\n"
+                               "tick 6\n"
+                               "call X() = true\n"             // Q -> P
+                               "call Y() = true\ncall B(2)\n"  // Q's exit
+                               "call X() = true\ncall A()\n"   // P's entry
+                               "call N() = 0\ncall M() = 0\ncall Y() = true\ncall X() = true\ncall C()\n"
+                               "av 1 0\n");
 }

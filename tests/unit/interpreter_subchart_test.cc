@@ -42,9 +42,10 @@ sfc Top {
 }
 )";
 
-} // namespace
+}  // namespace
 
-TEST_CASE("interpreter sub-charts: an sfc in an fsm in an sfc, started, ticked and stopped", "[interpreter][subcharts]") {
+TEST_CASE("interpreter sub-charts: an sfc in an fsm in an sfc, started, ticked and stopped",
+          "[interpreter][subcharts]") {
   auto c = compile(kThreeLevels, kThreeLevelsBot);
   ScriptedEnv env(*c);
   env.script("LeafGo", {0, 1, 0})
@@ -114,7 +115,8 @@ TEST_CASE("interpreter sub-charts: an sfc in an fsm in an sfc, started, ticked a
 }
 
 TEST_CASE("interpreter sub-charts: one chart run by two places, and a place that loses and regains "
-          "activation in one tick", "[interpreter][subcharts]") {
+          "activation in one tick",
+          "[interpreter][subcharts]") {
   auto c = compile(R"(
 sfc Counter { var int n = 0; initial place C { n += 1; Count(n); } }
 sfc Two {
@@ -128,54 +130,52 @@ sfc Two {
   env.script("Start", {0, 1, 0});
   // P's instance counts on through tick 2 (P lost and regained its activation: no stop, no
   // start); Q's is a separate instance that starts from n = 0.
-  CHECK(run_log(*c, env, 3, {}, "Two") ==
-        "tick 1\n"
-        "call Start() = false\n"
-        "call Mark(1)\n"
-        "call Count(1)\n"
-        "av 1 0\n"
-        "tick 2\n"
-        "call Start() = true\n"
-        "call Mark(1)\n"
-        "call Count(2)\n"
-        "call Mark(2)\n"
-        "call Count(1)\n"
-        "av 1 1\n"
-        "tick 3\n"
-        "call Start() = false\n"
-        "call Mark(1)\n"
-        "call Count(3)\n"
-        "call Mark(2)\n"
-        "call Count(2)\n"
-        "av 1 1\n");
+  CHECK(run_log(*c, env, 3, {}, "Two") == "tick 1\n"
+                                          "call Start() = false\n"
+                                          "call Mark(1)\n"
+                                          "call Count(1)\n"
+                                          "av 1 0\n"
+                                          "tick 2\n"
+                                          "call Start() = true\n"
+                                          "call Mark(1)\n"
+                                          "call Count(2)\n"
+                                          "call Mark(2)\n"
+                                          "call Count(1)\n"
+                                          "av 1 1\n"
+                                          "tick 3\n"
+                                          "call Start() = false\n"
+                                          "call Mark(1)\n"
+                                          "call Count(3)\n"
+                                          "call Mark(2)\n"
+                                          "call Count(2)\n"
+                                          "av 1 1\n");
   // What gfec run prints: starts, runs and stops by instance path, then each running instance's
   // activation after the root's.
   ScriptedEnv again(*c);
   again.script("Start", {0, 1, 0});
   std::string log = run_log(*c, again, 2, {false, true, true}, "Two");
-  CHECK(log.substr(log.find("tick 2")) ==
-        "tick 2\n"
-        "  cond Go = true\n"
-        "    call Start() = true\n"
-        "  fire Go: P -> (P, Q)\n"
-        "  start Q: Counter\n"
-        "  entry Q\n"
-        "  action P\n"
-        "    call Mark(1)\n"
-        "  run P: Counter\n"
-        "    action P.C\n"
-        "      set n = 2\n"
-        "      call Count(2)\n"
-        "  action Q\n"
-        "    call Mark(2)\n"
-        "  run Q: Counter\n"
-        "    entry Q.C\n"
-        "    action Q.C\n"
-        "      set n = 1\n"
-        "      call Count(1)\n"
-        "  av 1 1\n"
-        "  av P: 1\n"
-        "  av Q: 1\n");
+  CHECK(log.substr(log.find("tick 2")) == "tick 2\n"
+                                          "  cond Go = true\n"
+                                          "    call Start() = true\n"
+                                          "  fire Go: P -> (P, Q)\n"
+                                          "  start Q: Counter\n"
+                                          "  entry Q\n"
+                                          "  action P\n"
+                                          "    call Mark(1)\n"
+                                          "  run P: Counter\n"
+                                          "    action P.C\n"
+                                          "      set n = 2\n"
+                                          "      call Count(2)\n"
+                                          "  action Q\n"
+                                          "    call Mark(2)\n"
+                                          "  run Q: Counter\n"
+                                          "    entry Q.C\n"
+                                          "    action Q.C\n"
+                                          "      set n = 1\n"
+                                          "      call Count(1)\n"
+                                          "  av 1 1\n"
+                                          "  av P: 1\n"
+                                          "  av Q: 1\n");
 }
 
 namespace {
@@ -207,9 +207,10 @@ const char *kBossBot = R"(interface Bot {
   void Seen(bool check, bool ok);
 })";
 
-} // namespace
+}  // namespace
 
-TEST_CASE("interpreter sub-charts: succeeded, failed and active(P.Q) in conditions and actions", "[interpreter][subcharts]") {
+TEST_CASE("interpreter sub-charts: succeeded, failed and active(P.Q) in conditions and actions",
+          "[interpreter][subcharts]") {
   auto c = compile(kBoss, kBossBot);
   SECTION("success") {
     ScriptedEnv env(*c);
@@ -241,31 +242,31 @@ TEST_CASE("interpreter sub-charts: succeeded, failed and active(P.Q) in conditio
   SECTION("failure") {
     ScriptedEnv env(*c);
     env.script("Finish", {0, 1, 0}).script("Good", {0});
-    CHECK(run_log(*c, env, 4, {}, "Boss") ==
-          "tick 1\n"
-          "call Report(true, false, false, false)\n"
-          "call Finish() = false\n"
-          "call Working()\n"
-          "call Seen(false, false)\n"
-          "av 1 1 0 0\n"
-          "tick 2\n"
-          "call Report(true, false, false, false)\n"
-          "call Finish() = true\n"
-          "call Seen(true, false)\n"
-          "av 1 1 0 0\n"
-          "tick 3\n"
-          "call Report(false, true, false, false)\n"
-          "call Good() = false\n"
-          "call Good() = false\n"
-          "call Seen(false, false)\n"
-          "av 1 1 0 0\n"
-          "tick 4\n"
-          "call Seen(false, false)\n"
-          "av 0 1 0 1\n");
+    CHECK(run_log(*c, env, 4, {}, "Boss") == "tick 1\n"
+                                             "call Report(true, false, false, false)\n"
+                                             "call Finish() = false\n"
+                                             "call Working()\n"
+                                             "call Seen(false, false)\n"
+                                             "av 1 1 0 0\n"
+                                             "tick 2\n"
+                                             "call Report(true, false, false, false)\n"
+                                             "call Finish() = true\n"
+                                             "call Seen(true, false)\n"
+                                             "av 1 1 0 0\n"
+                                             "tick 3\n"
+                                             "call Report(false, true, false, false)\n"
+                                             "call Good() = false\n"
+                                             "call Good() = false\n"
+                                             "call Seen(false, false)\n"
+                                             "av 1 1 0 0\n"
+                                             "tick 4\n"
+                                             "call Seen(false, false)\n"
+                                             "av 0 1 0 1\n");
   }
 }
 
-TEST_CASE("interpreter sub-charts: stopping runs the exits innermost first, in declaration order", "[interpreter][subcharts]") {
+TEST_CASE("interpreter sub-charts: stopping runs the exits innermost first, in declaration order",
+          "[interpreter][subcharts]") {
   auto c = compile(R"(
 sfc Inner {
   initial place I1 { exit { Out(11); } }
@@ -299,14 +300,15 @@ sfc Outer {
         "call Out(11)\n"  // M3's Inner, then M3
         "call Out(12)\n"
         "call Out(23)\n"
-        "call Out(1)\n"  // then A's own exit
+        "call Out(1)\n"   // then A's own exit
         "call Out(11)\n"  // B: its Inner, then B
         "call Out(12)\n"
         "call Out(2)\n"
         "av 0 0 1\n");
 }
 
-TEST_CASE("interpreter sub-charts: a sub-chart's timers count its own ticks at its parent's period", "[interpreter][subcharts]") {
+TEST_CASE("interpreter sub-charts: a sub-chart's timers count its own ticks at its parent's period",
+          "[interpreter][subcharts]") {
   auto c = compile(R"(
 sfc Blink { initial place On { Lamp(1); } place Off { Lamp(0); } On -> Off when elapsed(On) >= 20ms; }
 sfc Top { period 10ms; initial place Idle; place Busy runs Blink; Idle -> Busy when Go(); }
@@ -317,21 +319,20 @@ sfc Top { period 10ms; initial place Idle; place Busy runs Blink; Idle -> Busy w
   // Blink is started in tick 2 and ticks in that same tick, its first: as for a compiled chart's
   // first tick after _init, step 1 counts it, so On's timer is 1 then and 2 (20ms) at Blink's
   // second tick, tick 3, when it moves to Off.
-  CHECK(run_log(*c, env, 5, {}, "Top") ==
-        "tick 1\n"
-        "call Go() = false\n"
-        "av 1 0\n"
-        "tick 2\n"
-        "call Go() = true\n"
-        "call Lamp(1)\n"
-        "av 0 1\n"
-        "tick 3\n"
-        "call Lamp(0)\n"
-        "av 0 1\n"
-        "tick 4\n"
-        "call Lamp(0)\n"
-        "av 0 1\n"
-        "tick 5\n"
-        "call Lamp(0)\n"
-        "av 0 1\n");
+  CHECK(run_log(*c, env, 5, {}, "Top") == "tick 1\n"
+                                          "call Go() = false\n"
+                                          "av 1 0\n"
+                                          "tick 2\n"
+                                          "call Go() = true\n"
+                                          "call Lamp(1)\n"
+                                          "av 0 1\n"
+                                          "tick 3\n"
+                                          "call Lamp(0)\n"
+                                          "av 0 1\n"
+                                          "tick 4\n"
+                                          "call Lamp(0)\n"
+                                          "av 0 1\n"
+                                          "tick 5\n"
+                                          "call Lamp(0)\n"
+                                          "av 0 1\n");
 }

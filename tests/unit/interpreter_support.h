@@ -25,8 +25,7 @@ struct Compiled {
   LoadResult &loaded = c.loaded;
   model::Model &model = c.model;
 
-  explicit Compiled(const std::string &text, const std::string &iface = "", WarningOptions w = {})
-      : c(options(w)) {
+  explicit Compiled(const std::string &text, const std::string &iface = "", WarningOptions w = {}) : c(options(w)) {
     MemoryFileSystem fs;
     fs.add("t.sfc", iface.empty() ? text : "import \"bot.iface\";\n" + text);
     fs.add("bot.iface", iface);
@@ -106,4 +105,4 @@ inline std::string run_log(const Compiled &c, interp::Environment &env, std::uin
   return out;
 }
 
-} // namespace gfec::test
+}  // namespace gfec::test

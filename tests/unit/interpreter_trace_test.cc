@@ -30,7 +30,7 @@ struct Trace {
   }
 };
 
-} // namespace
+}  // namespace
 
 TEST_CASE("input trace: a column per function, a row per tick") {
   Trace t("# a comment\n\ntick, Black, Dist ,Exact, Count\n1, 1, 0.25, 0.1, -3\n2,false,1e-1,2,4\n");
@@ -51,17 +51,16 @@ TEST_CASE("input trace: a column per function, a row per tick") {
 
 TEST_CASE("input trace: errors are located in the CSV file") {
   Trace t("Black, Nope, Go\n1, 2, 3\nyes, 1, 1\n1, 2\n");
-  CHECK(t.errors() ==
-        "trace.csv:1:8: error: no interface function 'Nope' for this column [trace]\n"
-        " Black, Nope, Go\n"
-        "        ^~~~\n"
-        "trace.csv:1:14: error: 'Go' returns nothing, so it takes no input [trace]\n"
-        " Black, Nope, Go\n"
-        "              ^~\n"
-        "trace.csv:3:1: error: 'yes' is not a value of type 'bool' for 'Black' [trace]\n"
-        " yes, 1, 1\n"
-        " ^~~\n"
-        "trace.csv:4:1: error: 2 values where the header names 3 columns [trace]\n"
-        " 1, 2\n"
-        " ^~~~\n");
+  CHECK(t.errors() == "trace.csv:1:8: error: no interface function 'Nope' for this column [trace]\n"
+                      " Black, Nope, Go\n"
+                      "        ^~~~\n"
+                      "trace.csv:1:14: error: 'Go' returns nothing, so it takes no input [trace]\n"
+                      " Black, Nope, Go\n"
+                      "              ^~\n"
+                      "trace.csv:3:1: error: 'yes' is not a value of type 'bool' for 'Black' [trace]\n"
+                      " yes, 1, 1\n"
+                      " ^~~\n"
+                      "trace.csv:4:1: error: 2 values where the header names 3 columns [trace]\n"
+                      " 1, 2\n"
+                      " ^~~~\n");
 }

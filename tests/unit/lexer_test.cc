@@ -16,7 +16,7 @@ std::vector<Token> lex_all(const std::string &text, Diagnostics &diag, SourceMan
   return tokens;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("lexer: keywords, identifiers, punctuation and comments") {
   SourceManager sm;
@@ -24,9 +24,9 @@ TEST_CASE("lexer: keywords, identifiers, punctuation and comments") {
   auto toks = lex_all("initial place A_1 { } // c\n/* x */ -> += -= && || != == <= >= ! | %", diag, sm);
   std::vector<Tok> kinds;
   for (auto &t : toks) kinds.push_back(t.kind);
-  CHECK(kinds == std::vector<Tok>{Tok::KwInitial, Tok::KwPlace, Tok::Ident, Tok::LBrace, Tok::RBrace,
-                                  Tok::Arrow, Tok::PlusAssign, Tok::MinusAssign, Tok::AndAnd, Tok::OrOr,
-                                  Tok::NotEq, Tok::EqEq, Tok::Le, Tok::Ge, Tok::Not, Tok::Pipe, Tok::Percent});
+  CHECK(kinds == std::vector<Tok>{Tok::KwInitial, Tok::KwPlace, Tok::Ident, Tok::LBrace, Tok::RBrace, Tok::Arrow,
+                                  Tok::PlusAssign, Tok::MinusAssign, Tok::AndAnd, Tok::OrOr, Tok::NotEq, Tok::EqEq,
+                                  Tok::Le, Tok::Ge, Tok::Not, Tok::Pipe, Tok::Percent});
   CHECK(toks[2].text == "A_1");
   CHECK_FALSE(diag.has_errors());
 }
@@ -72,14 +72,12 @@ TEST_CASE("lexer: malformed tokens are located errors") {
         "t.sfc:1:17: note: to match this '{'\n"
         " sfc X { place A { f(\"abc); } }\n"
         "                 ^\n");
-  CHECK(test::parse_errors("/* never closed") ==
-        "t.sfc:1:1: error: unterminated comment [syntax]\n"
-        " /* never closed\n"
-        " ^~\n");
-  CHECK(test::parse_errors("%{ int x;") ==
-        "t.sfc:1:1: error: unterminated verbatim block: missing '%}' [syntax]\n"
-        " %{ int x;\n"
-        " ^~\n");
+  CHECK(test::parse_errors("/* never closed") == "t.sfc:1:1: error: unterminated comment [syntax]\n"
+                                                 " /* never closed\n"
+                                                 " ^~\n");
+  CHECK(test::parse_errors("%{ int x;") == "t.sfc:1:1: error: unterminated verbatim block: missing '%}' [syntax]\n"
+                                           " %{ int x;\n"
+                                           " ^~\n");
   CHECK(test::parse_errors("sfc X { place A { f(a & b); } }") ==
         "t.sfc:1:23: error: '&' is not an operator here; did you mean '&&'? [syntax]\n"
         " sfc X { place A { f(a & b); } }\n"
@@ -97,7 +95,7 @@ TEST_CASE("lexer: 'runs' is a keyword and '.' a token between names, still part 
   std::vector<Tok> kinds;
   for (auto &t : toks) kinds.push_back(t.kind);
   CHECK(diag.all().empty());
-  CHECK(kinds == std::vector<Tok>{Tok::KwPlace, Tok::Ident, Tok::KwRuns, Tok::Ident, Tok::Semi, Tok::Ident,
-                                  Tok::LParen, Tok::Ident, Tok::Dot, Tok::Ident, Tok::Dot, Tok::Ident,
-                                  Tok::RParen, Tok::Float, Tok::Float});
+  CHECK(kinds == std::vector<Tok>{Tok::KwPlace, Tok::Ident, Tok::KwRuns, Tok::Ident, Tok::Semi, Tok::Ident, Tok::LParen,
+                                  Tok::Ident, Tok::Dot, Tok::Ident, Tok::Dot, Tok::Ident, Tok::RParen, Tok::Float,
+                                  Tok::Float});
 }

@@ -41,7 +41,7 @@ TEST_CASE("naming: the temporaries' prefix is reserved where names are handed ou
   NameSpace globals;
   globals.claim("gfec_t1");  // e.g. an interface function of that name
   NameSpace locals(&globals);
-  locals.take("gfec_t_");    // not followed by digits: no clash
+  locals.take("gfec_t_");  // not followed by digits: no clash
   CHECK(locals.reserve_numbered_prefix("gfec_t") == "gfec_t_");
   // A name handed out after the prefix was reserved moves aside instead of clashing.
   CHECK(locals.take("gfec_t_7") == "gfec_t_7_");

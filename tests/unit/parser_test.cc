@@ -15,7 +15,7 @@ const ast::File &only_file(const FrontEnd &fe) {
   return *fe.loaded.program.files[0];
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("parser: an sfc with places, fork/join transitions, vars and entry/exit") {
   FrontEnd fe({{"t.sfc", R"(
@@ -166,15 +166,15 @@ TEST_CASE("parser: declarations in the wrong place") {
         "t.sfc:1:1: error: 'var' declares chart state and belongs inside an sfc or fsm [syntax]\n"
         " var int x = 1;\n"
         " ^~~\n");
-  CHECK(parse_errors("place A;") ==
-        "t.sfc:1:1: error: expected a declaration (import, interface, sfc, fsm, toolbox, plan, const or test), found 'place' [syntax]\n"
-        " place A;\n"
-        " ^~~~~\n");
+  CHECK(parse_errors("place A;") == "t.sfc:1:1: error: expected a declaration (import, interface, sfc, fsm, toolbox, "
+                                    "plan, const or test), found 'place' [syntax]\n"
+                                    " place A;\n"
+                                    " ^~~~~\n");
 }
 
 TEST_CASE("parser: deep nesting is refused cleanly, not by a stack overflow") {
-  std::string deep = "sfc X { initial place A; A -> A when " + std::string(100000, '(') + "x" +
-                     std::string(100000, ')') + "; }";
+  std::string deep =
+      "sfc X { initial place A; A -> A when " + std::string(100000, '(') + "x" + std::string(100000, ')') + "; }";
   std::string text = parse_errors(deep);
   CHECK(text.find("error: expression nested too deeply (more than 256 levels) [nesting]") != std::string::npos);
   std::string bangs = "sfc X { initial place A; A -> A when " + std::string(100000, '!') + "x; }";
@@ -266,14 +266,16 @@ fsm M {
   REQUIRE(team.args.size() == 1);
   CHECK(team.args[0]->name.text == "A");
   CHECK(cond.args.at(1)->name.text == "agent");
-  CHECK(parse_errors("fsm X {\n  team four;\n}\n") ==
-        "t.sfc:2:8: error: expected integer after 'team' (the number of agents, e.g. 'team 4;'), found 'four' [syntax]\n"
-        "   team four;\n"
-        "        ^~~~\n");
-  CHECK(parse_errors("fsm X {\n  initial state A { n = team; }\n}\n") ==
-        "t.sfc:2:29: error: expected '(' after 'team' (team(S) counts the other agents in state S), found ';' [syntax]\n"
-        "   initial state A { n = team; }\n"
-        "                             ^\n");
+  CHECK(
+      parse_errors("fsm X {\n  team four;\n}\n") ==
+      "t.sfc:2:8: error: expected integer after 'team' (the number of agents, e.g. 'team 4;'), found 'four' [syntax]\n"
+      "   team four;\n"
+      "        ^~~~\n");
+  CHECK(
+      parse_errors("fsm X {\n  initial state A { n = team; }\n}\n") ==
+      "t.sfc:2:29: error: expected '(' after 'team' (team(S) counts the other agents in state S), found ';' [syntax]\n"
+      "   initial state A { n = team; }\n"
+      "                             ^\n");
 }
 
 TEST_CASE("loader: imports are found beside the importer, read once, and cycles are errors") {
@@ -281,19 +283,17 @@ TEST_CASE("loader: imports are found beside the importer, read once, and cycles 
                {"dir/a.iface", "import \"b.iface\";"},
                {"dir/b.iface", "import \"a.iface\";"}});
   CHECK(ok.loaded.paths == std::vector<std::string>{"dir/main.sfc", "dir/a.iface", "dir/b.iface"});
-  CHECK(ok.text() ==
-        "dir/b.iface:1:8: error: import cycle: 'dir/a.iface' imports itself [import-cycle]\n"
-        " import \"a.iface\";\n"
-        "        ^~~~~~~~~\n"
-        "dir/b.iface:1:8: note: 'dir/a.iface' imports 'dir/b.iface'\n"
-        "dir/b.iface:1:8: note: 'dir/b.iface' imports 'dir/a.iface'\n");
+  CHECK(ok.text() == "dir/b.iface:1:8: error: import cycle: 'dir/a.iface' imports itself [import-cycle]\n"
+                     " import \"a.iface\";\n"
+                     "        ^~~~~~~~~\n"
+                     "dir/b.iface:1:8: note: 'dir/a.iface' imports 'dir/b.iface'\n"
+                     "dir/b.iface:1:8: note: 'dir/b.iface' imports 'dir/a.iface'\n");
 
   FrontEnd missing({{"m.sfc", "\nimport \"nothere.iface\";"}});
-  CHECK(missing.text() ==
-        "m.sfc:2:8: error: cannot find imported file 'nothere.iface' [import]\n"
-        " import \"nothere.iface\";\n"
-        "        ^~~~~~~~~~~~~~~\n"
-        "m.sfc:2:8: note: looked for 'nothere.iface'\n");
+  CHECK(missing.text() == "m.sfc:2:8: error: cannot find imported file 'nothere.iface' [import]\n"
+                          " import \"nothere.iface\";\n"
+                          "        ^~~~~~~~~~~~~~~\n"
+                          "m.sfc:2:8: note: looked for 'nothere.iface'\n");
 
   FrontEnd diamond({{"m.sfc", "import \"a.iface\"; import \"c.iface\";"},
                     {"a.iface", "import \"c.iface\";"},

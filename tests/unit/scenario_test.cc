@@ -57,11 +57,12 @@ struct Checked {
   }
 };
 
-} // namespace
+}  // namespace
 
 TEST_CASE("a test block parses into its steps", "[scenario]") {
   // `tick 010` is ten ticks: integer literals are decimal (docs/language.md §1), never octal.
-  test::FrontEnd fe({{"t.test", "test \"x\" of Line { tick; tick 3; set Black = true; expect called Go(1) && calls Go == 2 && status == 0 && state(S); tick 010; }\n"}});
+  test::FrontEnd fe({{"t.test", "test \"x\" of Line { tick; tick 3; set Black = true; expect called Go(1) && calls Go "
+                                "== 2 && status == 0 && state(S); tick 010; }\n"}});
   REQUIRE(fe.text() == "");
   const auto &t = fe.loaded.program.files.front()->tests.at(0);
   CHECK(t.name == "x");
@@ -77,9 +78,10 @@ TEST_CASE("a test block parses into its steps", "[scenario]") {
 
 TEST_CASE("tick, set, expect, called, calls and status are keywords only inside a test", "[scenario]") {
   // Elsewhere they stay names: an interface may declare a function `tick`, a chart a var `status`.
-  test::FrontEnd fe({{"t.sfc", "interface I { void tick(); bool expect(); }\n"
-                               "sfc C { var int status = 0; var int calls = 1; initial place A { tick(); status = calls; }\n"
-                               "  A -> A when expect(); }\n"}});
+  test::FrontEnd fe(
+      {{"t.sfc", "interface I { void tick(); bool expect(); }\n"
+                 "sfc C { var int status = 0; var int calls = 1; initial place A { tick(); status = calls; }\n"
+                 "  A -> A when expect(); }\n"}});
   CHECK(fe.text() == "");
 }
 
@@ -123,8 +125,9 @@ TEST_CASE("an unknown chart is reported with a did-you-mean", "[scenario]") {
         "bot.sfc:10:5: note: did you mean 'Line'?\n"
         " sfc Line {\n"
         "     ^~~~\n");
-  CHECK(Checked("test \"t\" of P { tick; }\n").test_errors().rfind(
-            "t.test:2:13: error: 'P' is a plan; tests run an sfc or fsm [test]\n", 0) == 0);
+  CHECK(Checked("test \"t\" of P { tick; }\n")
+            .test_errors()
+            .rfind("t.test:2:13: error: 'P' is a plan; tests run an sfc or fsm [test]\n", 0) == 0);
 }
 
 TEST_CASE("unknown functions and places in a test are reported with a did-you-mean", "[scenario]") {
@@ -159,10 +162,15 @@ TEST_CASE("set needs a parameterless sensing function of the chart's interface",
         "bot.sfc:5:3: note: 'Go' declared here\n"
         "   void Go();\n"
         "   ^~~~~~~~~~\n");
-  CHECK(Checked("test \"t\" of Line { set Sense = 1; }\n").test_errors().rfind(
-            "t.test:2:24: error: 'set' needs a sensing function without parameters; 'Sense' takes parameters [test]\n", 0) == 0);
-  CHECK(Checked("test \"t\" of Line { set Door = true; }\n").test_errors().rfind(
-            "t.test:2:24: error: 'Door' belongs to interface 'Other', which chart 'Line' does not use [test]\n", 0) == 0);
+  CHECK(Checked("test \"t\" of Line { set Sense = 1; }\n")
+            .test_errors()
+            .rfind("t.test:2:24: error: 'set' needs a sensing function without parameters; 'Sense' takes parameters "
+                   "[test]\n",
+                   0) == 0);
+  CHECK(Checked("test \"t\" of Line { set Door = true; }\n")
+            .test_errors()
+            .rfind("t.test:2:24: error: 'Door' belongs to interface 'Other', which chart 'Line' does not use [test]\n",
+                   0) == 0);
   CHECK(Checked("test \"t\" of Line { set Black = 1; }\n").test_errors() ==
         "t.test:2:32: error: the value of 'Black' must be 'bool', not 'int' [type-mismatch]\n"
         " test \"t\" of Line { set Black = 1; }\n"
@@ -174,12 +182,16 @@ TEST_CASE("set needs a parameterless sensing function of the chart's interface",
 }
 
 TEST_CASE("called F(ARGS) is checked against F's prototype with constant arguments", "[scenario]") {
-  CHECK(Checked("test \"t\" of Line { expect called Motor(1); }\n").test_errors().rfind(
-            "t.test:2:34: error: too few arguments to function 'Motor' (expected 2, have 1) [argument-count]\n", 0) == 0);
-  CHECK(Checked("test \"t\" of Line { expect called Motor(1, true); }\n").test_errors().rfind(
-            "t.test:2:43: error: argument 2 of 'Motor' must be 'float', not 'bool' [type-mismatch]\n", 0) == 0);
-  CHECK(Checked("test \"t\" of Line { expect called Motor(laps, 1); }\n").test_errors().rfind(
-            "t.test:2:40: error: a constant expression cannot read variable 'laps' [not-constant]\n", 0) == 0);
+  CHECK(Checked("test \"t\" of Line { expect called Motor(1); }\n")
+            .test_errors()
+            .rfind("t.test:2:34: error: too few arguments to function 'Motor' (expected 2, have 1) [argument-count]\n",
+                   0) == 0);
+  CHECK(Checked("test \"t\" of Line { expect called Motor(1, true); }\n")
+            .test_errors()
+            .rfind("t.test:2:43: error: argument 2 of 'Motor' must be 'float', not 'bool' [type-mismatch]\n", 0) == 0);
+  CHECK(Checked("test \"t\" of Line { expect called Motor(laps, 1); }\n")
+            .test_errors()
+            .rfind("t.test:2:40: error: a constant expression cannot read variable 'laps' [not-constant]\n", 0) == 0);
 }
 
 TEST_CASE("tick N needs N >= 1, an expectation must be bool and calls no code", "[scenario]") {
@@ -192,19 +204,23 @@ TEST_CASE("tick N needs N >= 1, an expectation must be bool and calls no code", 
         " test \"t\" of Line { tick 1000001; }\n"
         "                         ^~~~~~~\n");
   // Beyond any integer: the lexer's error, once.
-  CHECK(Checked("test \"t\" of Line { tick 99999999999999999999999; }\n").test_errors().rfind(
-            "t.test:2:25: error: integer literal is too large [syntax]\n", 0) == 0);
+  CHECK(Checked("test \"t\" of Line { tick 99999999999999999999999; }\n")
+            .test_errors()
+            .rfind("t.test:2:25: error: integer literal is too large [syntax]\n", 0) == 0);
   CHECK(Checked("test \"t\" of Line { expect calls Go; }\n").test_errors() ==
         "t.test:2:27: error: an expectation must be bool, not 'int' [type-mismatch]\n"
         " test \"t\" of Line { expect calls Go; }\n"
         "                           ^~~~~~~~\n");
-  CHECK(Checked("test \"t\" of Line { expect Black(); }\n").test_errors() ==
-        "t.test:2:27: error: an expectation calls no chart code: 'Black' cannot be called here [test]\n"
-        " test \"t\" of Line { expect Black(); }\n"
-        "                           ^~~~~~~\n"
-        "t.test:2:27: note: 'called Black' says whether the chart called it in the last tick, 'calls Black' how often\n");
-  CHECK(Checked("test \"t\" of Line { expect calls Go == true; }\n").test_errors().rfind(
-            "t.test:2:27: error: invalid operands to binary '==' (have 'int' and 'bool') [type-mismatch]\n", 0) == 0);
+  CHECK(
+      Checked("test \"t\" of Line { expect Black(); }\n").test_errors() ==
+      "t.test:2:27: error: an expectation calls no chart code: 'Black' cannot be called here [test]\n"
+      " test \"t\" of Line { expect Black(); }\n"
+      "                           ^~~~~~~\n"
+      "t.test:2:27: note: 'called Black' says whether the chart called it in the last tick, 'calls Black' how often\n");
+  CHECK(Checked("test \"t\" of Line { expect calls Go == true; }\n")
+            .test_errors()
+            .rfind("t.test:2:27: error: invalid operands to binary '==' (have 'int' and 'bool') [type-mismatch]\n",
+                   0) == 0);
 }
 
 TEST_CASE("state(S) and status need an fsm", "[scenario]") {
@@ -216,8 +232,9 @@ TEST_CASE("state(S) and status need an fsm", "[scenario]") {
         "t.test:2:27: error: 'status' needs an fsm, but 'Line' is an sfc [test]\n"
         " test \"t\" of Line { expect status == 0; }\n"
         "                           ^~~~~~\n");
-  CHECK(Checked("test \"t\" of Machine { expect state(S1) && status == 1; }\n").test_errors().rfind(
-            "t.test:2:36: error: unknown state 'S1' [unknown-name]\n", 0) == 0);
+  CHECK(Checked("test \"t\" of Machine { expect state(S1) && status == 1; }\n")
+            .test_errors()
+            .rfind("t.test:2:36: error: unknown state 'S1' [unknown-name]\n", 0) == 0);
   CHECK(Checked("test \"t\" of Machine { tick; expect state(S0) && status == 0; }\n").test_errors() == "");
 }
 

@@ -35,8 +35,6 @@ std::string read_file(const std::string &path) {
   return s.str();
 }
 
-void write_file(const std::string &path, const std::string &text) {
-  std::ofstream(path, std::ios::binary) << text;
-}
+void write_file(const std::string &path, const std::string &text) { std::ofstream(path, std::ios::binary) << text; }
 
-} // namespace gfec::test
+}  // namespace gfec::test

@@ -17,8 +17,7 @@ struct FrontEnd {
   Diagnostics diag;
   LoadResult loaded;
 
-  FrontEnd(std::initializer_list<std::pair<std::string, std::string>> files, WarningOptions w = {})
-      : diag(w) {
+  FrontEnd(std::initializer_list<std::pair<std::string, std::string>> files, WarningOptions w = {}) : diag(w) {
     MemoryFileSystem fs;
     for (auto &f : files) fs.add(f.first, f.second);
     loaded = load_program(files.begin()->first, {}, fs, sources, diag);
@@ -49,8 +48,6 @@ std::string read_file(const std::string &path);
 void write_file(const std::string &path, const std::string &text);
 
 /// Parses one file called "t.sfc" and returns the printed diagnostics.
-inline std::string parse_errors(const std::string &source) {
-  return FrontEnd({{"t.sfc", source}}).text();
-}
+inline std::string parse_errors(const std::string &source) { return FrontEnd({{"t.sfc", source}}).text(); }
 
-} // namespace gfec::test
+}  // namespace gfec::test

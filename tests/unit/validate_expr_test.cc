@@ -51,7 +51,7 @@ struct Run {
   return w;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("validate: conditions must be bool", "[validate]") {
   Run r({{"t.sfc", R"--(import "bot.iface";
@@ -64,7 +64,8 @@ sfc S {
   transition A -> A when n;
   transition A -> A when Distance();
 }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:8:26: error: condition must be bool, not 'int' [type-mismatch]
    transition A -> A when n;
                           ^
@@ -88,7 +89,8 @@ sfc S {
   transition A -> A when !n;
   transition A -> A when -b > 0;
 }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:8:26: error: invalid operands to binary '&&' (have 'int' and 'bool') [type-mismatch]
    transition A -> A when 1 && b;
                           ^~~~~~
@@ -118,7 +120,8 @@ sfc S {
   transition A -> A when b == (n > 1) && b != White();
   transition A -> A when n * 2.5 + f / 3 >= Distance() - Count();
 }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--()--");
   REQUIRE(r.model.charts[0].transitions[1].condition);
   CHECK(r.model.charts[0].transitions[1].condition->args[0].type == model::Type::Double);
@@ -134,7 +137,8 @@ sfc S {
   initial place A;
   transition A -> A when n % 2 == 0 && f % 2 == 0;
 }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:8:40: error: invalid operands to binary '%' (have 'float' and 'int') [type-mismatch]
    transition A -> A when n % 2 == 0 && f % 2 == 0;
                                         ^~~~~
@@ -151,7 +155,8 @@ sfc S {
   initial place A;
   place B { Motor(1); Motor(1, 2, 3); Motor(true, 0.5); Lamp(1); Lamp(n > 0); Motor(n, n); }
 }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:8:13: error: too few arguments to function 'Motor' (expected 2, have 1) [argument-count]
    place B { Motor(1); Motor(1, 2, 3); Motor(true, 0.5); Lamp(1); Lamp(n > 0); Motor(n, n); }
              ^~~~~~~~
@@ -191,7 +196,8 @@ sfc S {
   transition A -> B when Go();
   transition B -> A when Go() == Stop();
 }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:9:26: error: 'Go' returns void; it cannot be used as a value [type-mismatch]
    transition A -> B when Go();
                           ^~~~
@@ -224,7 +230,8 @@ sfc S {
   place B { n = Count; f = S; }
   transition A -> B when A;
 }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:8:17: error: 'Count' is a function, not a value [type-mismatch]
    place B { n = Count; f = S; }
                  ^~~~~
@@ -252,7 +259,8 @@ sfc S {
   initial place A;
   transition A -> A when S() && N();
 }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:9:26: error: called object 'S' is a chart, not a function [type-mismatch]
    transition A -> A when S() && N();
                           ^
@@ -280,7 +288,8 @@ sfc S {
   const int LIMIT = 3;
   place B { LIMIT = 4; A = 1; GLOBAL = 2; Go = 3; nope = 4; }
 }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:10:13: error: cannot assign to constant 'LIMIT' [not-assignable]
    place B { LIMIT = 4; A = 1; GLOBAL = 2; Go = 3; nope = 4; }
              ^~~~~
@@ -321,7 +330,8 @@ sfc S {
   initial place A;
   place B { b += 1; n -= 1; f += n; n = 2.5; b = 1; n = b; b = White(); }
 }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:8:13: error: operator '+=' needs a numeric variable; 'b' has type 'bool' [type-mismatch]
    place B { b += 1; n -= 1; f += n; n = 2.5; b = 1; n = b; b = White(); }
              ^
@@ -348,7 +358,8 @@ sfc S {
   transition A -> B when elapsed(A, B) > 1s;
   transition A -> B when elapsed(1) > 1s;
 }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:9:34: error: 'n' is a variable, not a place [type-mismatch]
    transition A -> B when elapsed(n) > 1s;
                                   ^
@@ -375,7 +386,8 @@ sfc S {
   transition A -> B when elapsed(A) >= 500ms;
   transition B -> A when elapsed(B) >= 500ms;
 }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:5:26: error: 'elapsed(A)' needs a period, but sfc 'S' declares none [missing-period]
    transition A -> B when elapsed(A) >= 500ms;
                           ^~~~~~~~~~
@@ -391,7 +403,8 @@ sfc S {
   initial place A;
   transition A -> A when 2s > 1s;
 }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:4:26: error: duration '2s' needs a period, but sfc 'S' declares none [missing-period]
    transition A -> A when 2s > 1s;
                           ^~
@@ -416,7 +429,8 @@ sfc S {
   transition A -> B when Motor(1, 500ms) == 1;
   transition A -> B when elapsed(A) >= 1s && elapsed(A) != elapsed(B) && 2s > 1s;
 }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:9:26: error: invalid operands to binary '>' (have 'duration' and 'int') [type-mismatch]
    transition A -> B when elapsed(A) > 3;
                           ^~~~~~~~~~~~~~
@@ -448,7 +462,8 @@ sfc S {
   initial place A;
   place B { elapsed(A); }
 }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:8:13: error: 'elapsed()' as a statement has no effect [type-mismatch]
    place B { elapsed(A); }
              ^~~~~~~~~~
@@ -464,7 +479,8 @@ sfc S {
   var bool late = elapsed(A) > 2s;
   initial place A;
 }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:2:19: error: 'elapsed' can only be used inside an sfc or fsm [elapsed]
  const bool LATE = elapsed(A) > 1s;
                    ^~~~~~~~~~
@@ -487,7 +503,8 @@ sfc S {
   var int k = Count();
   initial place A;
 }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:2:17: error: a constant expression cannot call 'Distance' [not-constant]
  const float F = Distance();
                  ^~~~~~~~~~
@@ -556,7 +573,8 @@ const int I = true;
 const float D = 2s;
 const string S = 1;
 )--"}});
-  CHECK(r.text() == R"--(t.iface:1:16: error: cannot initialize 'B' of type 'bool' with a value of type 'int' [type-mismatch]
+  CHECK(r.text() ==
+        R"--(t.iface:1:16: error: cannot initialize 'B' of type 'bool' with a value of type 'int' [type-mismatch]
  const bool B = 1;
                 ^
 t.iface:2:15: error: cannot initialize 'I' of type 'int' with a value of type 'bool' [type-mismatch]
@@ -620,7 +638,8 @@ sfc S {
   initial place A { n = BAD + 1; }
   transition A -> A when BAD > 1;
 }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:2:17: error: a constant expression cannot call 'Count' [not-constant]
  const int BAD = Count();
                  ^~~~~~~
@@ -641,7 +660,6 @@ sfc S {
 )--");
 }
 
-
 TEST_CASE("validate: if conditions must be bool; both branches are checked", "[validate]") {
   Run r({{"t.sfc", R"--(import "bot.iface";
 sfc S {
@@ -653,7 +671,8 @@ sfc S {
     entry { if (elapsed(A)) { Nope(); } }
   }
 }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:6:9: error: the condition of 'if' must be bool, not 'int' [type-mismatch]
      if (n) { Go(); }
          ^
@@ -683,7 +702,8 @@ fsm M {
     if (n > 2) { Lamp(true); }
   }
 }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text().empty());
   REQUIRE(r.model.charts.size() == 1);
   const auto &action = r.model.charts[0].places[0].action;

@@ -51,7 +51,7 @@ struct Run {
   return w;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("validate: an fsm has exactly one initial state", "[validate]") {
   Run r({{"t.fsm", R"--(fsm M {
@@ -88,7 +88,8 @@ fsm M {
   A -> Failed when White();
   Done -> A;
 }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.fsm:4:3: error: terminal state 'Done' cannot have a body [terminal-state]
    success state Done { Stop(); }
    ^~~~~~~~~~~~~~~~~~~~~~~~~~~~~~
@@ -110,7 +111,8 @@ fsm M {
   A -> Done;
   A -> Failed;
 }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.fsm:3:24: error: only a success or failure state can have a 'post' condition [terminal-state]
    initial state A post Black();
                         ^~~~~~~
@@ -131,7 +133,8 @@ fsm M {
   A -> B when White();
   again: B -> A;
 }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.fsm:5:3: error: transition from state 'A' to itself [self-transition]
    A -> A when Black();
    ^~~~~~~~~~~~~~~~~~~~
@@ -202,7 +205,8 @@ fsm M {
   place B;
   A -> B;
 }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.fsm:4:3: error: 'place' in an fsm: an fsm has states (write 'state B') [wrong-keyword]
    place B;
    ^~~~~~~~
@@ -220,7 +224,8 @@ fsm M {
   B -> Done when Black();
   B -> Lost when White();
 }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.fsm:5:3: error: terminal state 'Done' cannot have a body [terminal-state]
    success state Done { entry { Go(); } }
    ^~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~
@@ -236,7 +241,8 @@ fsm M {
   A -> B;
   B -> Done when Black();
 }
-)--"}, {"bot.iface", kBot}});
+)--"},
+          {"bot.iface", kBot}});
   CHECK(ok.text().empty());
   REQUIRE(ok.model.charts.size() == 1);
   const auto &a = ok.model.charts[0].places[0];
@@ -261,7 +267,8 @@ fsm M {
   C -> A when Black();
   A -> Done;
 }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.fsm:4:9: warning: state 'B' can never become active [-Wunreachable-place]
    state B;
          ^
@@ -293,7 +300,9 @@ fsm M {
   B -> Done when Black();
   A -> Failed when elapsed(A) > 10s;
 }
-)--"}, {"bot.iface", kBot}}, all_warnings());
+)--"},
+         {"bot.iface", kBot}},
+        all_warnings());
   CHECK(r.text() == R"--()--");
   const auto &c = r.model.charts.at(0);
   CHECK(c.kind == model::Chart::Kind::Fsm);
@@ -311,7 +320,6 @@ fsm M {
   CHECK(c.transitions[0].condition->args[1].ms == 50);
   CHECK(c.transitions[3].condition->args[1].ticks == 500);
 }
-
 
 TEST_CASE("validate: team machines: the declaration", "[validate][team]") {
   Run r({{"t.fsm", R"--(import "bot.iface";
@@ -332,7 +340,8 @@ fsm Big {
   team 5000;
   initial state A;
 }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.fsm:3:3: error: a team has at least 2 agents, not 1 [team]
    team 1;
    ^~~~~~~
@@ -367,7 +376,8 @@ fsm Fetch {
   Go -> Grab when Black() && team(Grab) == 0 && agent() >= 0;
   Grab -> Got when team(Got) + team(Go) > 1;
 }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text().empty());
   REQUIRE(r.model.charts.size() == 1);
   const model::Chart &c = r.model.charts[0];
@@ -401,7 +411,8 @@ fsm T {
   state Grab;
   Go -> Grab when team(Grap) == 0 || team(n) > 0;
 }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.fsm:2:15: error: 'agent()' can only be used in a team machine [team]
  const int K = agent();
                ^~~~~~~
@@ -458,7 +469,8 @@ fsm Solo {
   initial state report;
 }
 )--"}});
-  CHECK(r.text() == R"--(t.fsm:1:21: error: 'agent' is built into the chart language and cannot name a function [reserved-name]
+  CHECK(r.text() ==
+        R"--(t.fsm:1:21: error: 'agent' is built into the chart language and cannot name a function [reserved-name]
  interface Bot { int agent(); bool elapsed(); }
                      ^~~~~
 t.fsm:1:35: error: 'elapsed' is built into the chart language and cannot name a function [reserved-name]
@@ -492,7 +504,9 @@ sfc Patrol {
   REQUIRE(fe.text().empty());
   model::Model m = validate(fe.loaded.program, fe.sources, fe.diag);
   std::string text = fe.text();
-  CHECK(text.find(R"--(t.fsm:9:29: error: fsm 'Fetch' is a team machine; it can only be compiled as the root, not run as a sub-chart [team-subchart]
+  CHECK(
+      text.find(
+          R"--(t.fsm:9:29: error: fsm 'Fetch' is a team machine; it can only be compiled as the root, not run as a sub-chart [team-subchart]
    initial place Search runs Fetch;
                              ^~~~~
 t.fsm:2:3: note: it is made a team machine here

@@ -34,7 +34,7 @@ const model::Const &constant(const model::Model &m, const std::string &name) {
   return m.consts.front();
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("validate model: functions in file order, a chart's functions by index", "[validate]") {
   Run r({{"main.sfc", "import \"b.iface\";\nimport \"c.iface\";\n"

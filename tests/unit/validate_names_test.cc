@@ -51,7 +51,7 @@ struct Run {
   return w;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("validate: a duplicate place is reported with a note at the first", "[validate]") {
   Run r({{"t.sfc", R"--(import "bot.iface";
@@ -60,7 +60,8 @@ sfc S {
   place B;
   place A;
 }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:5:9: error: redefinition of place 'A' [duplicate-name]
    place A;
          ^
@@ -78,7 +79,8 @@ sfc S {
   const int t = 1;
   t: A -> A;
 }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:4:17: error: place 'A' has the same name as a variable [duplicate-name]
    initial place A;
                  ^
@@ -119,7 +121,8 @@ t.iface:2:8: note: previous definition of 'Go' was here
 TEST_CASE("validate: a name clashing with an imported one is reported in the importing file", "[validate]") {
   Run r({{"t.sfc", R"--(import "bot.iface";
 const int Go = 1;
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:2:11: error: constant 'Go' has the same name as a function [duplicate-name]
  const int Go = 1;
            ^~
@@ -132,7 +135,8 @@ bot.iface:4:8: note: function 'Go' declared here
 TEST_CASE("validate: a chart may not have the name of a function", "[validate]") {
   Run r({{"t.sfc", R"--(import "bot.iface";
 sfc Stop { initial place A; }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:2:5: error: chart 'Stop' has the same name as a function [duplicate-name]
  sfc Stop { initial place A; }
      ^~~~
@@ -196,7 +200,8 @@ sfc S {
   initial place A;
   A -> A when zzzzzz > 1;
 }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:5:15: error: unknown name 'zzzzzz' [unknown-name]
    A -> A when zzzzzz > 1;
                ^~~~~~
@@ -212,7 +217,8 @@ sfc S {
   transition A -> B when lap > 1;
   transition B -> A when lap > 2 && Whte() && Whte();
 }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:4:21: error: unknown variable 'lap' [unknown-name]
    initial place A { lap += 1; }
                      ^~~
@@ -315,7 +321,8 @@ TEST_CASE("validate: elapsed cannot name a function", "[validate]") {
   int elapsed(int p);
 }
 )--"}});
-  CHECK(r.text() == R"--(t.sfc:2:7: error: 'elapsed' is built into the chart language and cannot name a function [reserved-name]
+  CHECK(r.text() ==
+        R"--(t.sfc:2:7: error: 'elapsed' is built into the chart language and cannot name a function [reserved-name]
    int elapsed(int p);
        ^~~~~~~
 )--");
@@ -364,7 +371,9 @@ TEST_CASE("validate: an unnamed transition's T<n> name may not be taken", "[vali
   T0: A -> A;
 }
 )--"}});
-  CHECK(r.text() == R"--(t.sfc:4:3: error: this unnamed transition is named 'T0' by its position, which is already the name of a transition [duplicate-name]
+  CHECK(
+      r.text() ==
+      R"--(t.sfc:4:3: error: this unnamed transition is named 'T0' by its position, which is already the name of a transition [duplicate-name]
    transition A -> T1;
    ^~~~~~~~~~~~~~~~~~~
 t.sfc:6:3: note: 'T0' declared here; name the transition ('name: A -> B') or rename it
@@ -383,7 +392,8 @@ TEST_CASE("validate: templates and plans share one namespace", "[validate]") {
   Run r({{"t.plan", R"--(import "carbot.toolbox";
 plan Turn { start t; actor t: Forward(1) { FORWARD_OK -> terminate; } }
 toolbox Other { actor Forward(in float d) -> DONE; }
-)--"}, {"carbot.toolbox", kToolbox}});
+)--"},
+         {"carbot.toolbox", kToolbox}});
   CHECK(r.text() == R"--(t.plan:2:6: error: plan 'Turn' has the same name as a template [duplicate-name]
  plan Turn { start t; actor t: Forward(1) { FORWARD_OK -> terminate; } }
       ^~~~
@@ -419,4 +429,3 @@ t.iface:3:9: note: previous definition of 'Box' was here
          ^~~
 )--");
 }
-

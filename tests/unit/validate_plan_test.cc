@@ -51,7 +51,7 @@ struct Run {
   return w;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("validate: toolbox templates: parameter types, duplicates, outcomes, periods", "[validate]") {
   Run r({{"t.toolbox", R"--(toolbox Box {
@@ -101,7 +101,8 @@ plan R {
   start xx;
   actor x: Forward(1) { FORWARD_OK -> terminate; }
 }
-)--"}, {"carbot.toolbox", kToolbox}});
+)--"},
+         {"carbot.toolbox", kToolbox}});
   CHECK(r.text() == R"--(t.plan:5:9: error: plan 'P' has more than one start actor [start]
    start go2;
          ^~~
@@ -127,7 +128,8 @@ plan P {
   actor b: CheckTuch() { TOUCHED -> terminate; }
   supervise s: CheckTuch() { TOUCHED -> terminate; }
 }
-)--"}, {"carbot.toolbox", kToolbox}});
+)--"},
+         {"carbot.toolbox", kToolbox}});
   CHECK(r.text() == R"--(t.plan:5:12: error: unknown template 'Foward' [unknown-name]
    actor a: Foward(1) { FORWARD_OK -> terminate; }
             ^~~~~~
@@ -157,8 +159,11 @@ plan P {
   computation c: Turn(1) { TURN_OK -> terminate; }
 }
 plan Q { start q; actor q: Turn(1) { TURN_OK -> terminate; } }
-)--"}, {"carbot.toolbox", kToolbox}});
-  CHECK(r.text() == R"--(t.plan:5:12: error: 'CheckTouch' is a supervisor template; an actor needs an actor or computation [template-kind]
+)--"},
+         {"carbot.toolbox", kToolbox}});
+  CHECK(
+      r.text() ==
+      R"--(t.plan:5:12: error: 'CheckTouch' is a supervisor template; an actor needs an actor or computation [template-kind]
    actor a: CheckTouch() { TOUCHED -> terminate; }
             ^~~~~~~~~~
 carbot.toolbox:7:3: note: 'CheckTouch' declared here
@@ -198,7 +203,9 @@ plan P {
   }
   actor c: Forward(dist) { FORWARD_OK -> bb; supervise lane: CheckLane(dist) { } }
 }
-)--"}, {"carbot.toolbox", kToolbox}}, all_warnings());
+)--"},
+         {"carbot.toolbox", kToolbox}},
+        all_warnings());
   CHECK(r.text() == R"--(t.plan:5:49: error: unknown result state 'NO_WALL_FUND' of 'SearchWall' [unknown-name]
    actor a: SearchWall(angle) { WALL_FOUND -> b; NO_WALL_FUND -> b; }
                                                  ^~~~~~~~~~~~
@@ -237,8 +244,10 @@ plan P {
   supervise s: CheckTouch() { TOUCHED -> ignore; }
   actor a: Forward(1) { FORWARD_OK -> ignore; }
 }
-)--"}, {"carbot.toolbox", kToolbox}});
-  CHECK(r.text() == R"--(t.plan:6:39: error: result state 'FORWARD_OK' cannot be ignored: only supervisor events can [ignore-state]
+)--"},
+         {"carbot.toolbox", kToolbox}});
+  CHECK(r.text() ==
+        R"--(t.plan:6:39: error: result state 'FORWARD_OK' cannot be ignored: only supervisor events can [ignore-state]
    actor a: Forward(1) { FORWARD_OK -> ignore; }
                                        ^~~~~~
 t.plan:6:39: note: a result state leads to an actor or to 'terminate'
@@ -257,7 +266,8 @@ plan P {
   actor e: Say(label + " " + dist, loud) { SAID -> f; }
   actor f: Forward(label) { FORWARD_OK -> terminate; }
 }
-)--"}, {"carbot.toolbox", kToolbox}});
+)--"},
+         {"carbot.toolbox", kToolbox}});
   CHECK(r.text() == R"--(t.plan:5:3: error: too few arguments to 'Forward' (expected 1, have 0) [argument-count]
    actor a: Forward() { FORWARD_OK -> b; }
    ^~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~
@@ -299,8 +309,10 @@ plan P {
   actor f: SearchWall(loud) { WALL_FOUND -> g; NO_WALL_FOUND -> g; }
   computation g: CountDown(count, label) { AGAIN -> g; DONE -> terminate; }
 }
-)--"}, {"carbot.toolbox", kToolbox}});
-  CHECK(r.text() == R"--(t.plan:6:23: error: out parameter 'angle' of 'SearchWall' must be bound to a config entry [out-argument]
+)--"},
+         {"carbot.toolbox", kToolbox}});
+  CHECK(r.text() ==
+        R"--(t.plan:6:23: error: out parameter 'angle' of 'SearchWall' must be bound to a config entry [out-argument]
    actor a: SearchWall(angle + 1) { WALL_FOUND -> b; NO_WALL_FOUND -> b; }
                        ^~~~~~~~~
 carbot.toolbox:4:3: note: 'SearchWall' declared here
@@ -350,7 +362,8 @@ plan P {
     supervise touch: CheckTouch() { TOUCHED -> terminate; }
   }
 }
-)--"}, {"carbot.toolbox", kToolbox}});
+)--"},
+         {"carbot.toolbox", kToolbox}});
   CHECK(r.text() == R"--(t.plan:8:15: error: computation 'c' cannot be supervised [computation-supervisor]
      supervise touch: CheckTouch() { TOUCHED -> terminate; }
                ^~~~~
@@ -372,7 +385,8 @@ plan P {
   actor g: Forward(-label) { FORWARD_OK -> h; }
   actor h: Forward(nope * 2) { FORWARD_OK -> terminate; }
 }
-)--"}, {"carbot.toolbox", kToolbox}});
+)--"},
+         {"carbot.toolbox", kToolbox}});
   CHECK(r.text() == R"--(t.plan:5:20: error: operator '%' cannot be used in a plan argument [formula]
    actor a: Forward(dist % 2) { FORWARD_OK -> b; }
                     ^~~~~~~~
@@ -421,7 +435,8 @@ plan P {
   start a;
   actor a: Forward(dist) { FORWARD_OK -> terminate; }
 }
-)--"}, {"carbot.toolbox", kToolbox}});
+)--"},
+         {"carbot.toolbox", kToolbox}});
   CHECK(r.text() == R"--(t.plan:6:5: error: unknown type name 'flaot' [unknown-type]
      flaot speed;
      ^~~~~
@@ -452,7 +467,8 @@ plan P {
   actor dist: Forward(1) { FORWARD_OK -> a; supervise a: CheckTouch() { TOUCHED -> terminate; } }
   actor a: Forward(1) { FORWARD_OK -> terminate; }
 }
-)--"}, {"carbot.toolbox", kToolbox}});
+)--"},
+         {"carbot.toolbox", kToolbox}});
   CHECK(r.text() == R"--(t.plan:5:9: error: actor 'dist' has the same name as a config entry [duplicate-name]
    actor dist: Forward(1) { FORWARD_OK -> a; supervise a: CheckTouch() { TOUCHED -> terminate; } }
          ^~~~
@@ -478,7 +494,8 @@ plan Navigate {
   start f;
   actor f: Forward(1) { FORWARD_OK -> terminate; }
 }
-)--"}, {"carbot.toolbox", kToolbox}});
+)--"},
+         {"carbot.toolbox", kToolbox}});
   CHECK(r.text() == R"--(t.plan:4:3: error: sub-plan 'Navigate' takes no arguments [argument-count]
    actor nav: Navigate(1) { OK -> nav; INTERUPTED -> terminate; }
    ^~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~
@@ -511,7 +528,8 @@ plan Self {
   start s;
   actor s: Self() { OK -> terminate; INTERRUPTED -> terminate; ERROR -> terminate; }
 }
-)--"}, {"carbot.toolbox", kToolbox}});
+)--"},
+         {"carbot.toolbox", kToolbox}});
   CHECK(r.text() == R"--(t.plan:2:6: error: plan 'A' contains itself [recursive-plan]
  plan A {
       ^
@@ -546,8 +564,10 @@ plan P {
   actor lost: Forward(1) { FORWARD_OK -> lost2; }
   actor lost2: Forward(1) { FORWARD_OK -> lost; }
 }
-)--"}, {"carbot.toolbox", kToolbox}});
-  CHECK(r.text() == R"--(t.plan:10:9: warning: actor 'lost' is never reached from the start actor 'a' [-Wunreachable-actor]
+)--"},
+         {"carbot.toolbox", kToolbox}});
+  CHECK(r.text() ==
+        R"--(t.plan:10:9: warning: actor 'lost' is never reached from the start actor 'a' [-Wunreachable-actor]
    actor lost: Forward(1) { FORWARD_OK -> lost2; }
          ^~~~
 t.plan:11:9: warning: actor 'lost2' is never reached from the start actor 'a' [-Wunreachable-actor]
@@ -555,4 +575,3 @@ t.plan:11:9: warning: actor 'lost2' is never reached from the start actor 'a' [-
          ^~~~~
 )--");
 }
-

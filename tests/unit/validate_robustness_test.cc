@@ -31,12 +31,12 @@ ast::ExprPtr hollow(ast::Expr::Kind kind) {
   return e;
 }
 
-const ast::Expr::Kind kKinds[] = {ast::Expr::Kind::Bool,  ast::Expr::Kind::Int,   ast::Expr::Kind::Float,
+const ast::Expr::Kind kKinds[] = {ast::Expr::Kind::Bool,   ast::Expr::Kind::Int,      ast::Expr::Kind::Float,
                                   ast::Expr::Kind::String, ast::Expr::Kind::Duration, ast::Expr::Kind::Name,
-                                  ast::Expr::Kind::Call,  ast::Expr::Kind::Unary, ast::Expr::Kind::Binary,
+                                  ast::Expr::Kind::Call,   ast::Expr::Kind::Unary,    ast::Expr::Kind::Binary,
                                   ast::Expr::Kind::Paren};
 
-} // namespace
+}  // namespace
 
 TEST_CASE("validate: hand-made trees with holes do not crash", "[validate]") {
   SourceManager sources;

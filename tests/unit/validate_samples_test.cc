@@ -38,7 +38,7 @@ struct Sample {
   }
 };
 
-} // namespace
+}  // namespace
 
 TEST_CASE("validate: the line follower sample", "[validate]") {
   Sample s("line_follower.sfc");

@@ -51,7 +51,7 @@ struct Run {
   return w;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("validate: an sfc needs an initial place", "[validate]") {
   Run r({{"t.sfc", R"--(sfc S {
@@ -75,7 +75,8 @@ sfc S {
   success state Done;
   place C post Black();
 }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:4:3: error: 'state' in an sfc: an sfc has places (write 'place B') [wrong-keyword]
    state B;
    ^~~~~~~~
@@ -99,7 +100,8 @@ sfc S {
   transition Wait -> Other;
 }
 sfc Other { initial place X; }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:6:14: error: unknown place 'Wiat' [unknown-name]
    transition Wiat -> Run;
               ^~~~
@@ -180,7 +182,8 @@ sfc S {
   transition (B, D) -> E;
   never: B -> A when false;
 }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:6:9: warning: place 'C' can never become active [-Wunreachable-place]
    place C;
          ^
@@ -215,7 +218,8 @@ TEST_CASE("validate: reachability follows forks and joins", "[validate]") {
   transition (B, C) -> D;
   transition D -> A;
 }
-)--"}}, all_warnings());
+)--"}},
+        all_warnings());
   CHECK(r.text() == R"--()--");
 }
 
@@ -242,7 +246,8 @@ sfc S {
   transition A -> B when Black();
   transition A -> C when White();
 }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--()--");
 }
 
@@ -258,7 +263,9 @@ sfc S {
   transition (C, A) -> A when true;
   transition C -> B;
 }
-)--"}, {"bot.iface", kBot}}, all_warnings());
+)--"},
+         {"bot.iface", kBot}},
+        all_warnings());
   CHECK(r.text() == R"--(t.sfc:7:3: warning: transition 'right' competes with 'left' for place 'A' [-Wconflict]
    right: A -> C when White();
    ^~~~~
@@ -279,7 +286,8 @@ TEST_CASE("validate: verbatim code is noted only under -Wverbatim", "[validate]"
 sfc S {
   initial place A { %{ puts("A"); %} }
 }
-)--"}}, all_warnings());
+)--"}},
+        all_warnings());
   CHECK(r.text() == R"--(t.sfc:1:1: warning: verbatim code is copied unchecked: gfec cannot check it [-Wverbatim]
  %{ #include <stdio.h> %}
  ^~~~~~~~~~~~~~~~~~~~~~~~

@@ -33,7 +33,7 @@ struct Run {
   std::string text() const { return fe.text(); }
 };
 
-} // namespace
+}  // namespace
 
 TEST_CASE("validate: sub-charts lower to place indices, paths and outcomes", "[validate][subcharts]") {
   Run r({{"t.sfc", R"--(import "bot.iface";
@@ -56,7 +56,8 @@ sfc Patrol {
   transition Retry -> Home   when succeeded(Retry) || active(Retry.Grab) && Late();
   transition Home -> Search  when active(Home);
 }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == "");
   REQUIRE(r.model.charts.size() == 2);
   const model::Chart &fetch = r.model.charts[0];
@@ -84,12 +85,14 @@ sfc Patrol {
   CHECK(one.path == std::vector<int>{1});
 }
 
-TEST_CASE("validate: sub-charts: three levels, the same chart under two parents of one period", "[validate][subcharts]") {
+TEST_CASE("validate: sub-charts: three levels, the same chart under two parents of one period",
+          "[validate][subcharts]") {
   Run r({{"t.sfc", R"--(import "bot.iface";
 sfc Leaf { initial place L { Beep(); } }
 fsm Mid { initial state M runs Leaf; success state Done; M -> Done when elapsed(M) >= 20ms; }
 sfc Top { period 5ms; initial place A runs Mid; initial place B runs Leaf; A -> A2 when active(A.M.L); place A2; }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == "");
   REQUIRE(r.model.charts.size() == 3);
   CHECK(r.model.charts[0].period_ms == 5);
@@ -98,7 +101,8 @@ sfc Top { period 5ms; initial place A runs Mid; initial place B runs Leaf; A -> 
   CHECK(r.model.charts[2].transitions[0].condition->path == std::vector<int>{0, 0, 0});
 }
 
-TEST_CASE("validate: sub-charts: an unknown chart after 'runs' gets a did-you-mean; a function is no chart", "[validate][subcharts]") {
+TEST_CASE("validate: sub-charts: an unknown chart after 'runs' gets a did-you-mean; a function is no chart",
+          "[validate][subcharts]") {
   Run r({{"t.sfc", R"--(import "bot.iface";
 fsm Fetch { initial state Go; success state Got; Go -> Got when Arrived(); }
 sfc Top {
@@ -108,7 +112,8 @@ sfc Top {
   transition A -> B;
 }
 sfc Top2 { initial place X; }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:4:24: error: unknown chart 'Fech' [unknown-name]
    initial place A runs Fech;
                         ^~~~
@@ -127,12 +132,14 @@ t.sfc:6:9: warning: place 'C' can never become active [-Wunreachable-place]
 )--");
 }
 
-TEST_CASE("validate: sub-charts: a chart that runs itself, directly or through others, names the whole cycle", "[validate][subcharts]") {
+TEST_CASE("validate: sub-charts: a chart that runs itself, directly or through others, names the whole cycle",
+          "[validate][subcharts]") {
   Run r({{"t.sfc", R"--(sfc A { initial place P runs A; }
 sfc B { initial place Q; place R runs C; Q -> R; }
 fsm C { initial state S runs D; success state T; S -> T; }
 sfc D { initial place U runs B; }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:1:30: error: chart 'A' runs itself [subchart-cycle]
  sfc A { initial place P runs A; }
                               ^
@@ -154,7 +161,9 @@ t.sfc:4:30: note: place 'U' of 'D' runs 'B'
 )--");
 }
 
-TEST_CASE("validate: sub-charts: succeeded/failed need a place that runs an fsm; active paths resolve in the right chart", "[validate][subcharts]") {
+TEST_CASE(
+    "validate: sub-charts: succeeded/failed need a place that runs an fsm; active paths resolve in the right chart",
+    "[validate][subcharts]") {
   Run r({{"t.sfc", R"--(import "bot.iface";
 fsm Fetch { initial state Go; state Grab; success state Got; failure state Lost; Go -> Grab; Grab -> Got; Go -> Lost; }
 sfc Line { initial place Left; place Right; Left -> Right; }
@@ -166,8 +175,10 @@ sfc Top {
   Follow -> Idle when active(Follow.Rigth) || active(Search.Grab.Hand) || active(Serch.Go);
   Idle -> Search when active(Search.Gone) || active(Search, Idle) || active();
 }
-)--"}, {"bot.iface", kBot}});
-  CHECK(r.text() == R"--(t.sfc:8:25: error: 'succeeded(Follow)': place 'Follow' runs sfc 'Line', which never succeeds [subchart]
+)--"},
+         {"bot.iface", kBot}});
+  CHECK(r.text() ==
+        R"--(t.sfc:8:25: error: 'succeeded(Follow)': place 'Follow' runs sfc 'Line', which never succeeds [subchart]
    Search -> Follow when succeeded(Follow) || failed(Idle) || succeeded(Search);
                          ^~~~~~~~~~~~~~~~~
 t.sfc:6:21: note: only an fsm succeeds or fails; 'active(Follow.P)' reads the places of an sfc
@@ -217,18 +228,23 @@ fsm Fetch {
   Go -> Got when Arrived();
 }
 sfc Line { initial place Left; }
-)--"}, {"bot.iface", kBot}});
-  CHECK(r.text() == R"--(t.sfc:4:26: error: terminal state 'Got' cannot run a sub-chart: the machine has stopped there [terminal-runs]
+)--"},
+         {"bot.iface", kBot}});
+  CHECK(
+      r.text() ==
+      R"--(t.sfc:4:26: error: terminal state 'Got' cannot run a sub-chart: the machine has stopped there [terminal-runs]
    success state Got runs Line;
                           ^~~~
 )--");
 }
 
-TEST_CASE("validate: sub-charts: a sub-chart without a period of its own takes its parent's, and says so", "[validate][subcharts]") {
+TEST_CASE("validate: sub-charts: a sub-chart without a period of its own takes its parent's, and says so",
+          "[validate][subcharts]") {
   Run r({{"t.sfc", R"--(import "bot.iface";
 sfc Sub { initial place A { Beep(); } place B; transition A -> B when elapsed(A) >= 1s; }
 sfc Top { initial place P runs Sub; }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:2:71: error: 'elapsed(A)' needs a period, but sfc 'Sub' declares none [missing-period]
  sfc Sub { initial place A { Beep(); } place B; transition A -> B when elapsed(A) >= 1s; }
                                                                        ^~~~~~~~~~
@@ -238,10 +254,12 @@ t.sfc:2:5: note: a sub-chart takes the period of the chart that runs it; declare
 )--");
 }
 
-TEST_CASE("validate: sub-charts: active() only inside a chart, never constant, never a statement", "[validate][subcharts]") {
+TEST_CASE("validate: sub-charts: active() only inside a chart, never constant, never a statement",
+          "[validate][subcharts]") {
   Run r({{"t.sfc", R"--(const bool K = active(X);
 sfc S { var bool v = active(A); initial place A { active(A); } }
-)--"}, {"bot.iface", kBot}});
+)--"},
+         {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:1:16: error: 'active' can only be used inside an sfc or fsm [active]
  const bool K = active(X);
                 ^~~~~~~~~
@@ -254,7 +272,8 @@ t.sfc:2:51: error: 'active()' as a statement has no effect [type-mismatch]
 )--");
 }
 
-TEST_CASE("validate: sub-charts: a sub-chart's period must be its parent's; two parents must agree", "[validate][subcharts]") {
+TEST_CASE("validate: sub-charts: a sub-chart's period must be its parent's; two parents must agree",
+          "[validate][subcharts]") {
   Run r({{"t.sfc", R"--(import "bot.iface";
 fsm Fast { period 20ms; initial state Go { DriveToItem(); } success state Got; Go -> Got when elapsed(Go) >= 100ms; }
 sfc Sub { initial place A { Beep(); } place B; transition A -> B when elapsed(A) >= 1s; }
@@ -270,8 +289,10 @@ sfc Other {
 sfc NoPeriod {
   initial place S runs Fast;
 }
-)--"}, {"bot.iface", kBot}});
-  CHECK(r.text() == R"--(t.sfc:6:24: error: sub-chart 'Fast' declares period 20ms but 'Top', which runs it, has period 10ms [period]
+)--"},
+         {"bot.iface", kBot}});
+  CHECK(r.text() ==
+        R"--(t.sfc:6:24: error: sub-chart 'Fast' declares period 20ms but 'Top', which runs it, has period 10ms [period]
    initial place P runs Fast;
                         ^~~~
 t.sfc:2:12: note: a sub-chart runs at the period of the chart that runs it; remove this period or make the two equal
@@ -299,7 +320,8 @@ TEST_CASE("validate: sub-charts: the built-ins that read sub-charts cannot name 
   void failed();
 }
 )--"}});
-  CHECK(r.text() == R"--(t.sfc:2:8: error: 'active' is built into the chart language and cannot name a function [reserved-name]
+  CHECK(r.text() ==
+        R"--(t.sfc:2:8: error: 'active' is built into the chart language and cannot name a function [reserved-name]
    bool active();
         ^~~~~~
 t.sfc:3:8: error: 'succeeded' is built into the chart language and cannot name a function [reserved-name]

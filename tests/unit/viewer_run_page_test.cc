@@ -23,7 +23,7 @@ nlohmann::json page_data(const std::string &page) {
   return nlohmann::json::parse(page.substr(from + open.size(), to - from - open.size()));
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("gfec run --html: the page holds each tick's activation and what the tick did", "[viewer]") {
   std::string dir = scratch_dir("gfec_run_html");
@@ -52,11 +52,10 @@ TEST_CASE("gfec run --html: the page holds each tick's activation and what the t
   REQUIRE(ticks.size() == 3);
   std::vector<std::string> tick2;
   for (const auto &i : ticks[1][1]) tick2.push_back(texts[i.get<std::size_t>()]);
-  CHECK(tick2 == std::vector<std::string>{"cond T0 = true", "  call Left_IR_Black() = true",
-                                          "fire T0: LeftFw -> LeftStop", "cond T2 = false",
-                                          "  call Right_IR_Black() = false", "exit LeftFw", "entry LeftStop",
-                                          "action LeftStop", "  call Left_Stop()", "action RightFw",
-                                          "  call Right_FW()"});
+  CHECK(tick2 ==
+        std::vector<std::string>{"cond T0 = true", "  call Left_IR_Black() = true", "fire T0: LeftFw -> LeftStop",
+                                 "cond T2 = false", "  call Right_IR_Black() = false", "exit LeftFw", "entry LeftStop",
+                                 "action LeftStop", "  call Left_Stop()", "action RightFw", "  call Right_FW()"});
   // With Graphviz the chart's picture, whose nodes the page lights by their dot names.
   if (d["svg"] != "") {
     CHECK(d["svg"].get<std::string>().find("<title>p1</title>") != std::string::npos);

@@ -14,10 +14,8 @@ std::string page(const nlohmann::json &data) {
   safe.reserve(json.size() + json.size() / 50);
   // '<' occurs only inside JSON strings, where \u003c means the same character.
   for (char c : json) {
-    if (c == '<')
-      safe += "\\u003c";
-    else
-      safe += c;
+    if (c == '<') safe += "\\u003c";
+    else safe += c;
   }
   const std::string &t = page_template();
   const std::size_t at = t.find(kPlaceholder);
@@ -35,4 +33,4 @@ void CallRecorder::record(long tick, const std::vector<std::string> &calls) {
   changes_.record(tick, ids);
 }
 
-} // namespace gfec::viewer
+}  // namespace gfec::viewer

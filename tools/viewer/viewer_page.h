@@ -49,4 +49,4 @@ private:
   ChangeList changes_;
 };
 
-} // namespace gfec::viewer
+}  // namespace gfec::viewer

@@ -11,7 +11,7 @@ class Plan;
 /// What Actor::step() returns: still running, or finished in a result state.
 /// Converts from a state, so step() can `return FORWARD_OK;` or `return afp::running;`.
 class StepResult {
-public:
+ public:
   /// Finished in `state` (a value of the actor's state enum, >= 0).
   constexpr StepResult(int state) : state_(state), running_(false) {}
 
@@ -24,7 +24,7 @@ public:
   /// The result state (meaningful once !is_running()).
   constexpr int state() const { return state_; }
 
-private:
+ private:
   constexpr StepResult() : state_(0), running_(true) {}
   int state_;
   bool running_;
@@ -36,7 +36,7 @@ inline constexpr StepResult running = StepResult::still_running();
 /// An actor: started once, stepped until it returns a result state, stopped
 /// once. Exceptions thrown from start/step/stop make the actor end in error.
 class Actor {
-public:
+ public:
   virtual ~Actor() = default;
 
   /// Begins the action; read the In parameters here.
@@ -61,7 +61,7 @@ public:
 /// supervisors (a plan rejects them). It computes when it starts (so inputs
 /// are read at start) and reports its state at its first step.
 class Computation : public Actor {
-public:
+ public:
   /// Reads inputs, writes outputs, returns the result state.
   virtual int compute(Context& ctx) = 0;
 
@@ -73,7 +73,7 @@ public:
 
   bool is_computation() const final { return true; }
 
-private:
+ private:
   int state_ = 0;
 };
 

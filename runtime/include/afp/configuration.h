@@ -17,7 +17,7 @@ namespace afp {
 
 /// An entry is unknown, or is declared twice with different types.
 class ConfigError : public Error {
-public:
+ public:
   using Error::Error;
 };
 
@@ -25,7 +25,7 @@ public:
 /// paper's "shadow copy", kept as the entries written rather than a full copy.
 /// Values are already converted to their entries' types.
 class Shadow {
-public:
+ public:
   /// Records a write; a later write to the same entry replaces it.
   void write(std::string_view entry, Value value);
 
@@ -35,14 +35,14 @@ public:
   /// Forgets every write (the component did not end the actor).
   void clear() { writes_.clear(); }
 
-private:
+ private:
   std::vector<std::pair<std::string, Value>> writes_;
 };
 
 /// The entries by name. Every member is thread-safe: the application may read
 /// and write entries from any thread while a plan runs.
 class Configuration {
-public:
+ public:
   Configuration() = default;
   Configuration(const Configuration&) = delete;
   Configuration& operator=(const Configuration&) = delete;
@@ -67,7 +67,9 @@ public:
 
   /// The entry's value converted to T; ConfigError or ConversionError.
   template <class T>
-  T get(std::string_view name) const { return convert<T>(value(name)); }
+  T get(std::string_view name) const {
+    return convert<T>(value(name));
+  }
 
   /// Sets the entry, converting the value to the entry's type; ConfigError if
   /// unknown, ConversionError if the value does not convert (entry unchanged).
@@ -79,14 +81,14 @@ public:
   /// The declared names, sorted.
   std::vector<std::string> names() const;
 
-private:
+ private:
   mutable std::mutex mutex_;
   std::map<std::string, Value, std::less<>> entries_;
 };
 
 /// Read access to the configuration, as formulas and In parameters see it.
 class ConfigView {
-public:
+ public:
   /// Views a configuration (which must outlive the view).
   explicit ConfigView(const Configuration& config) : config_(&config) {}
 
@@ -95,9 +97,11 @@ public:
 
   /// The entry's value converted to T (e.g. get<float>("walldist")).
   template <class T>
-  T get(std::string_view name) const { return config_->get<T>(name); }
+  T get(std::string_view name) const {
+    return config_->get<T>(name);
+  }
 
-private:
+ private:
   const Configuration* config_;
 };
 

@@ -20,7 +20,7 @@ class Services;
 /// configuration, writes outputs to the component's shadow copy, tells the time.
 /// Only the runtime makes contexts.
 class Context {
-public:
+ public:
   /// The live configuration (In parameters read it).
   ConfigView config() const;
 
@@ -38,7 +38,7 @@ public:
   /// For the runtime only (sub-plans run on their parent's services).
   detail::Services& services() const { return *services_; }
 
-private:
+ private:
   detail::Services* services_;
   Shadow* shadow_;
 };

@@ -30,7 +30,7 @@ template <class T>
 class In {
   static_assert(is_value_type_v<T>, "afp values are int, float, double, bool, std::string or afp::Object");
 
-public:
+ public:
   /// An input computed by a formula.
   explicit In(Formula formula) : formula_(std::move(formula)) {}
 
@@ -42,7 +42,7 @@ public:
   /// The input's value over a configuration view.
   T evaluate(const ConfigView& config) const { return convert<T>(formula_(config)); }
 
-private:
+ private:
   Formula formula_;
 };
 
@@ -63,7 +63,7 @@ template <class T>
 class Out {
   static_assert(is_value_type_v<T>, "afp values are int, float, double, bool, std::string or afp::Object");
 
-public:
+ public:
   /// An output written to the named entry.
   explicit Out(std::string entry) : entry_(std::move(entry)) {}
 
@@ -74,7 +74,7 @@ public:
   /// ends the actor (the actor finishes, or the supervisor interrupts it).
   void write(Context& ctx, T value) const { ctx.write(entry_, Value(std::move(value))); }
 
-private:
+ private:
   std::string entry_;
 };
 

@@ -27,7 +27,7 @@ namespace afp {
 
 /// The plan is wired wrongly (unknown instance, rule defined twice, ...).
 class PlanError : public Error {
-public:
+ public:
   using Error::Error;
 };
 
@@ -58,20 +58,20 @@ struct Supervision {
 
 /// Where an actor's result state leads: the next actor or afp::terminate.
 class Next {
-public:
+ public:
   /// Leads to `actor` (an instance of the same plan).
   Next(const Actor* actor) : actor_(actor) {}
   /// Leads to the end of the plan.
   Next(Terminate) {}
 
-private:
+ private:
   friend class Plan;
   const Actor* actor_ = nullptr;  // nullptr = terminate
 };
 
 /// Where a supervisor's event leads: the next actor, afp::terminate or afp::ignore.
 class Reaction {
-public:
+ public:
   /// Interrupts and continues with `actor` (an instance of the same plan).
   Reaction(const Actor* actor) : kind_(detail::Target::Kind::Actor), actor_(actor) {}
   /// Interrupts and ends the plan.
@@ -79,7 +79,7 @@ public:
   /// Does not interrupt: the event is dropped.
   Reaction(Ignore) : kind_(detail::Target::Kind::Ignore) {}
 
-private:
+ private:
   friend class Plan;
   detail::Target::Kind kind_;
   const Actor* actor_ = nullptr;
@@ -88,7 +88,7 @@ private:
 /// A plan: owns its actors and supervisors, declares its configuration
 /// entries, and holds the rules. Wiring errors throw PlanError.
 class Plan {
-public:
+ public:
   /// An empty plan named `name` (the chart's name, used in traces).
   explicit Plan(std::string name);
   ~Plan();
@@ -147,13 +147,13 @@ public:
   const std::string& name_of(const Actor* actor) const;
   const std::string& name_of(const Supervisor* supervisor) const;
 
-private:
+ private:
   friend class detail::Level;
 
   struct ActorSlot {
     std::string name;
     std::unique_ptr<Actor> actor;
-    std::map<int, detail::Target> next;          // by result state
+    std::map<int, detail::Target> next;           // by result state
     std::vector<detail::Supervision> supervised;  // in declaration order
   };
   struct SupervisorSlot {
@@ -167,8 +167,7 @@ private:
   std::size_t index_of(const Supervisor* supervisor) const;
   detail::Target target_of(const Actor* actor, detail::Target::Kind kind) const;
   void check_name_free(const std::string& name) const;
-  void add_reaction(std::vector<detail::Supervision>& list, std::size_t supervisor, int event,
-                    detail::Target target);
+  void add_reaction(std::vector<detail::Supervision>& list, std::size_t supervisor, int event, detail::Target target);
 
   std::string name_;
   std::vector<std::pair<std::string, Value>> entries_;

@@ -19,8 +19,6 @@ enum class Status {
 const char* to_string(Status status);
 
 /// True once the run is over (any status but NotStarted and Running).
-constexpr bool is_finished(Status status) {
-  return status != Status::NotStarted && status != Status::Running;
-}
+constexpr bool is_finished(Status status) { return status != Status::NotStarted && status != Status::Running; }
 
 }  // namespace afp

@@ -19,7 +19,7 @@ namespace afp {
 /// non-ignored event interrupts; otherwise the actor steps once. See
 /// docs/runtime.md for the exact rules.
 class SteppedExecutor {
-public:
+ public:
   /// Prepares a run of `plan` on `config`, declaring the plan's entries there
   /// (existing entries keep their values). `trace` may be nullptr. Both
   /// `plan` and `config` must outlive the executor.
@@ -50,7 +50,7 @@ public:
   /// Why the run failed (empty unless status() is Failed).
   const std::string& error() const;
 
-private:
+ private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

@@ -16,7 +16,7 @@ class Level;
 /// the same configuration. Its result states are fixed by the language. The
 /// sub-plan's global supervisors watch only the sub-plan's own actors.
 class SubPlan final : public Actor {
-public:
+ public:
   /// The states of every sub-plan.
   enum State {
     OK,           ///< reached terminate from an actor's result state (Status::Succeeded)
@@ -41,7 +41,7 @@ public:
   /// Stops the inner plan if it still runs (the sub-plan was interrupted).
   void stop() override;
 
-private:
+ private:
   std::unique_ptr<Plan> plan_;
   std::unique_ptr<detail::Level> level_;
 };

@@ -8,7 +8,7 @@ namespace afp {
 /// What Supervisor::check() returns: no event, or an event of the supervisor's
 /// event enum. Converts from an event, so check() can `return TOUCHED;`.
 class CheckResult {
-public:
+ public:
   /// The event `event` (a value of the supervisor's event enum, >= 0).
   constexpr CheckResult(int event) : event_(event), raised_(true) {}
 
@@ -21,7 +21,7 @@ public:
   /// The event (meaningful when raised()).
   constexpr int event() const { return event_; }
 
-private:
+ private:
   constexpr CheckResult() : event_(0), raised_(false) {}
   int event_;
   bool raised_;
@@ -35,7 +35,7 @@ inline constexpr CheckResult no_event = CheckResult::nothing();
 /// Outputs written during a check are committed only if that check's event
 /// interrupts the actor. Exceptions from start/check make the plan level fail.
 class Supervisor {
-public:
+ public:
   /// A supervisor checked every `period` of plan time; zero means every
   /// executor step (stepped) or the executor's default period (threaded).
   explicit Supervisor(Duration period = Duration::zero()) : period_(period) {}
@@ -54,7 +54,7 @@ public:
   /// Ends the watch. Should not throw: an exception from it is ignored.
   virtual void stop() {}
 
-private:
+ private:
   Duration period_;
 };
 

@@ -28,11 +28,10 @@ struct ThreadedOptions {
 /// Toolbox classes used with it must tolerate a supervisor's check() running
 /// concurrently with the actor's step().
 class ThreadedExecutor {
-public:
+ public:
   /// Prepares a run of `plan` on `config`, declaring the plan's entries there.
   /// `trace` (may be nullptr) is called from the executor's thread only.
-  ThreadedExecutor(Plan& plan, Configuration& config, TraceObserver* trace = nullptr,
-                   ThreadedOptions options = {});
+  ThreadedExecutor(Plan& plan, Configuration& config, TraceObserver* trace = nullptr, ThreadedOptions options = {});
   /// Stops a run still going and joins every thread.
   ~ThreadedExecutor();
   ThreadedExecutor(const ThreadedExecutor&) = delete;
@@ -57,7 +56,7 @@ public:
   /// Why the run failed (empty unless Failed); thread-safe.
   std::string error() const;
 
-private:
+ private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

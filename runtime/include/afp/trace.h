@@ -16,7 +16,7 @@ class Plan;
 /// from a supervisor thread), for the top plan and every sub-plan; `plan`
 /// tells which. Override what you need; the defaults do nothing.
 class TraceObserver {
-public:
+ public:
   virtual ~TraceObserver() = default;
 
   /// `actor` (instance name) started.
@@ -31,21 +31,18 @@ public:
 
   /// `supervisor` raised `event` and interrupted `actor`; the supervisor's
   /// outputs were committed, the actor's discarded.
-  virtual void actor_interrupted(const Plan& plan, std::string_view actor, std::string_view supervisor,
-                                 int event, Duration now) {
+  virtual void actor_interrupted(const Plan& plan, std::string_view actor, std::string_view supervisor, int event,
+                                 Duration now) {
     (void)plan, (void)actor, (void)supervisor, (void)event, (void)now;
   }
 
   /// `component` (an actor or supervisor name) failed with message `what`.
-  virtual void component_failed(const Plan& plan, std::string_view component, std::string_view what,
-                                Duration now) {
+  virtual void component_failed(const Plan& plan, std::string_view component, std::string_view what, Duration now) {
     (void)plan, (void)component, (void)what, (void)now;
   }
 
   /// The plan ended with `status`.
-  virtual void plan_finished(const Plan& plan, Status status, Duration now) {
-    (void)plan, (void)status, (void)now;
-  }
+  virtual void plan_finished(const Plan& plan, Status status, Duration now) { (void)plan, (void)status, (void)now; }
 };
 
 }  // namespace afp

@@ -12,13 +12,13 @@ namespace afp {
 
 /// Base of every error the runtime reports by exception.
 class Error : public std::runtime_error {
-public:
+ public:
   using std::runtime_error::runtime_error;
 };
 
 /// A value cannot be converted to the requested type (e.g. "abc" to float).
 class ConversionError : public Error {
-public:
+ public:
   using Error::Error;
 };
 
@@ -31,7 +31,7 @@ const char* to_string(Type type);
 /// An opaque object shared through the configuration ("Object" in the paper):
 /// only the actors that made it know its structure; the type is checked on access.
 class Object {
-public:
+ public:
   /// The null object (the default value of an Object entry).
   Object() = default;
 
@@ -52,7 +52,7 @@ public:
   friend bool operator==(const Object& a, const Object& b) { return a.ptr_ == b.ptr_; }
   friend bool operator!=(const Object& a, const Object& b) { return !(a == b); }
 
-private:
+ private:
   /// One address per type, standing in for typeid so that the runtime builds with -fno-rtti
   /// (an inline function's static is one object in the whole program).
   template <class T>
@@ -74,7 +74,7 @@ Object make_object(Args&&... args) {
 /// One typed value. Constructors are implicit so that formulas can return
 /// plain C++ values; `const char*` is accepted so that "text" is a string, not a bool.
 class Value {
-public:
+ public:
   /// The int 0.
   Value() = default;
   Value(int v) : v_(v) {}
@@ -90,13 +90,15 @@ public:
 
   /// The value if it holds exactly a T, else nullptr (no conversion).
   template <class T>
-  const T* get_if() const { return std::get_if<T>(&v_); }
+  const T* get_if() const {
+    return std::get_if<T>(&v_);
+  }
 
   /// Same type and same value.
   friend bool operator==(const Value& a, const Value& b) { return a.v_ == b.v_; }
   friend bool operator!=(const Value& a, const Value& b) { return !(a == b); }
 
-private:
+ private:
   // Order matches enum Type, so type() is the variant's index.
   std::variant<int, float, double, bool, std::string, Object> v_;
 };
@@ -104,8 +106,8 @@ private:
 /// True for the C++ types a Value can hold (the T of In<T>, Out<T>, get<T>).
 template <class T>
 inline constexpr bool is_value_type_v =
-    std::is_same_v<T, int> || std::is_same_v<T, float> || std::is_same_v<T, double> ||
-    std::is_same_v<T, bool> || std::is_same_v<T, std::string> || std::is_same_v<T, Object>;
+    std::is_same_v<T, int> || std::is_same_v<T, float> || std::is_same_v<T, double> || std::is_same_v<T, bool> ||
+    std::is_same_v<T, std::string> || std::is_same_v<T, Object>;
 
 /// The default value of a type: 0, 0.0, false, "" or the null object.
 Value default_value(Type type);

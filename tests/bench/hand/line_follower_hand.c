@@ -13,24 +13,34 @@ void Right_FW(void);
 void Right_Stop(void);
 
 enum Side { FW, STOP };
-typedef struct LineFollower { enum Side left, right; } LineFollower;
+typedef struct LineFollower {
+  enum Side left, right;
+} LineFollower;
 
-void LineFollower_init(LineFollower *m)
-{
-    m->left = FW;
-    m->right = FW;
+void LineFollower_init(LineFollower *m) {
+  m->left = FW;
+  m->right = FW;
 }
 
-void LineFollower_run(LineFollower *m)
-{
-    switch (m->left) {
-    case FW: if (Left_IR_Black()) m->left = STOP; break;
-    case STOP: if (Left_IR_White()) m->left = FW; break;
-    }
-    switch (m->right) {
-    case FW: if (Right_IR_Black()) m->right = STOP; break;
-    case STOP: if (Right_IR_White()) m->right = FW; break;
-    }
-    if (m->left == FW) Left_FW(); else Left_Stop();
-    if (m->right == FW) Right_FW(); else Right_Stop();
+void LineFollower_run(LineFollower *m) {
+  switch (m->left) {
+  case FW:
+    if (Left_IR_Black()) m->left = STOP;
+    break;
+  case STOP:
+    if (Left_IR_White()) m->left = FW;
+    break;
+  }
+  switch (m->right) {
+  case FW:
+    if (Right_IR_Black()) m->right = STOP;
+    break;
+  case STOP:
+    if (Right_IR_White()) m->right = FW;
+    break;
+  }
+  if (m->left == FW) Left_FW();
+  else Left_Stop();
+  if (m->right == FW) Right_FW();
+  else Right_Stop();
 }

@@ -13,21 +13,21 @@ using namespace std::chrono_literals;
 namespace {
 
 struct Done : afp::Actor {
-  afp::StepResult step(afp::Context&) override { return 0; }
+  afp::StepResult step(afp::Context &) override { return 0; }
 };
 struct Sum : afp::Computation {
-  int compute(afp::Context&) override { return 0; }
+  int compute(afp::Context &) override { return 0; }
 };
 struct Never : afp::Supervisor {
   Never() : afp::Supervisor(10ms) {}
-  afp::CheckResult check(afp::Context&) override { return afp::no_event; }
+  afp::CheckResult check(afp::Context &) override { return afp::no_event; }
 };
 struct Box {
   int n;
 };
 
 int failures = 0;
-void expect(bool ok, const char* what) {
+void expect(bool ok, const char *what) {
   if (!ok) {
     std::printf("FAIL: %s\n", what);
     ++failures;
@@ -39,23 +39,21 @@ void expect(bool ok, const char* what) {
 int main() {
   auto inner = std::make_unique<afp::Plan>("Inner");
   inner->declare("speed", afp::Value(3));
-  auto* a = inner->add_actor("a", std::make_unique<Done>());
+  auto *a = inner->add_actor("a", std::make_unique<Done>());
   inner->define_first_actor(a);
   inner->define_subsequent(a, 0, afp::terminate);
 
   afp::Plan outer("Outer");
-  auto* nav = outer.add_actor("nav", std::make_unique<afp::SubPlan>(std::move(inner)));
-  auto* sum = outer.add_actor("sum", std::make_unique<Sum>());
-  auto* never = outer.add_supervisor("never", std::make_unique<Never>());
+  auto *nav = outer.add_actor("nav", std::make_unique<afp::SubPlan>(std::move(inner)));
+  auto *sum = outer.add_actor("sum", std::make_unique<Sum>());
+  auto *never = outer.add_supervisor("never", std::make_unique<Never>());
   outer.define_first_actor(nav);
   outer.define_subsequent(nav, afp::SubPlan::OK, sum);
   outer.define_subsequent(sum, 0, afp::terminate);
   bool refused = false;
   try {
     outer.define_supervision(sum, never, 0, afp::terminate);
-  } catch (const afp::PlanError&) {
-    refused = true;
-  }
+  } catch (const afp::PlanError &) { refused = true; }
   expect(refused, "a computation took a supervisor");
 
   afp::Configuration config;

@@ -24,78 +24,77 @@ namespace {
 long ms(afp::Duration d) { return static_cast<long>(std::chrono::duration_cast<std::chrono::milliseconds>(d).count()); }
 
 struct Log : afp::TraceObserver {
-    bool timed = true;
+  bool timed = true;
 
-    /// The plan time, or nothing when it is real time.
-    std::string at(afp::Duration now) const { return timed ? std::to_string(ms(now)) + " " : ""; }
+  /// The plan time, or nothing when it is real time.
+  std::string at(afp::Duration now) const { return timed ? std::to_string(ms(now)) + " " : ""; }
 
-    void actor_started(const afp::Plan& plan, std::string_view actor, afp::Duration now) override {
-        std::cout << at(now) << "start " << plan.name() << "." << actor << "\n";
-    }
-    void actor_finished(const afp::Plan& plan, std::string_view actor, int state, afp::Duration now) override {
-        std::cout << at(now) << "finish " << plan.name() << "." << actor << " state " << state << "\n";
-    }
-    void actor_interrupted(const afp::Plan& plan, std::string_view actor, std::string_view supervisor, int event,
-                           afp::Duration now) override {
-        std::cout << at(now) << "interrupt " << plan.name() << "." << actor << " by " << supervisor << " event " << event
-                  << "\n";
-    }
-    void component_failed(const afp::Plan& plan, std::string_view component, std::string_view what,
-                          afp::Duration now) override {
-        std::cout << at(now) << "fail " << plan.name() << "." << component << ": " << what << "\n";
-    }
-    void plan_finished(const afp::Plan& plan, afp::Status status, afp::Duration now) override {
-        std::cout << at(now) << "end " << plan.name() << " " << afp::to_string(status) << "\n";
-    }
+  void actor_started(const afp::Plan &plan, std::string_view actor, afp::Duration now) override {
+    std::cout << at(now) << "start " << plan.name() << "." << actor << "\n";
+  }
+  void actor_finished(const afp::Plan &plan, std::string_view actor, int state, afp::Duration now) override {
+    std::cout << at(now) << "finish " << plan.name() << "." << actor << " state " << state << "\n";
+  }
+  void actor_interrupted(const afp::Plan &plan, std::string_view actor, std::string_view supervisor, int event,
+                         afp::Duration now) override {
+    std::cout << at(now) << "interrupt " << plan.name() << "." << actor << " by " << supervisor << " event " << event
+              << "\n";
+  }
+  void component_failed(const afp::Plan &plan, std::string_view component, std::string_view what,
+                        afp::Duration now) override {
+    std::cout << at(now) << "fail " << plan.name() << "." << component << ": " << what << "\n";
+  }
+  void plan_finished(const afp::Plan &plan, afp::Status status, afp::Duration now) override {
+    std::cout << at(now) << "end " << plan.name() << " " << afp::to_string(status) << "\n";
+  }
 };
 
-std::string shown(const afp::Value& v) {
-    if (const auto* object = v.get_if<afp::Object>()) {
-        const int* i = object->get<int>();
-        return i ? "object " + std::to_string(*i) : "null";
-    }
-    if (const auto* s = v.get_if<std::string>()) return "\"" + *s + "\"";
-    return afp::convert<std::string>(v);
+std::string shown(const afp::Value &v) {
+  if (const auto *object = v.get_if<afp::Object>()) {
+    const int *i = object->get<int>();
+    return i ? "object " + std::to_string(*i) : "null";
+  }
+  if (const auto *s = v.get_if<std::string>()) return "\"" + *s + "\"";
+  return afp::convert<std::string>(v);
 }
 
-void apply_writes(afp::Configuration& config, const std::map<std::string, std::string>& writes) {
-    for (const auto& [name, value] : writes) {
-        config.set(name, afp::Value(value));
-        std::cout << "set " << name << "=" << shown(config.value(name)) << "\n";
-    }
+void apply_writes(afp::Configuration &config, const std::map<std::string, std::string> &writes) {
+  for (const auto &[name, value] : writes) {
+    config.set(name, afp::Value(value));
+    std::cout << "set " << name << "=" << shown(config.value(name)) << "\n";
+  }
 }
 
 }  // namespace
 
-template <class Executor>
-void report(const Executor& exec) {
-    std::cout << "status " << afp::to_string(exec.status());
-    if (!exec.error().empty()) std::cout << ": " << exec.error();
-    std::cout << "\n";
+template <class Executor> void report(const Executor &exec) {
+  std::cout << "status " << afp::to_string(exec.status());
+  if (!exec.error().empty()) std::cout << ": " << exec.error();
+  std::cout << "\n";
 }
 
-int main(int argc, char** argv) {
-    PLAN_ENV ee;
-    afp::Configuration config;
-    Log log;
-    auto plan = PLAN_FACTORY(ee);
-    std::string line;
-    if (argc > 1 && std::string(argv[1]) == "threaded") {
-        log.timed = false;
-        afp::ThreadedExecutor exec(*plan, config, &log);
-        if (std::getline(std::cin, line)) apply_writes(config, ee.next(line));
-        exec.run();
-        report(exec);
-    } else {
-        afp::SteppedExecutor exec(*plan, config, &log);
-        if (std::getline(std::cin, line)) apply_writes(config, ee.next(line));
-        exec.start();
-        while (exec.status() == afp::Status::Running && std::getline(std::cin, line)) {
-            apply_writes(config, ee.next(line));
-            exec.step(10ms);
-        }
-        report(exec);
+int main(int argc, char **argv) {
+  PLAN_ENV ee;
+  afp::Configuration config;
+  Log log;
+  auto plan = PLAN_FACTORY(ee);
+  std::string line;
+  if (argc > 1 && std::string(argv[1]) == "threaded") {
+    log.timed = false;
+    afp::ThreadedExecutor exec(*plan, config, &log);
+    if (std::getline(std::cin, line)) apply_writes(config, ee.next(line));
+    exec.run();
+    report(exec);
+  } else {
+    afp::SteppedExecutor exec(*plan, config, &log);
+    if (std::getline(std::cin, line)) apply_writes(config, ee.next(line));
+    exec.start();
+    while (exec.status() == afp::Status::Running && std::getline(std::cin, line)) {
+      apply_writes(config, ee.next(line));
+      exec.step(10ms);
     }
-    for (const auto& name : config.names()) std::cout << "config " << name << "=" << shown(config.value(name)) << "\n";
-    return 0;
+    report(exec);
+  }
+  for (const auto &name : config.names()) std::cout << "config " << name << "=" << shown(config.value(name)) << "\n";
+  return 0;
 }
