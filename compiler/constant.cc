@@ -46,6 +46,23 @@ Value Value::of_string(std::string v) {
   return r;
 }
 
+Value Value::of_ticks(std::uint64_t v) {
+  Value r;
+  r.type = Type::Duration;
+  r.i = static_cast<std::int64_t>(v);
+  return r;
+}
+
+Value Value::zero(Type t) {
+  switch (t) {
+  case Type::Bool: return of_bool(false);
+  case Type::Float: return of_float(0);
+  case Type::Double: return of_double(0);
+  case Type::Duration: return of_ticks(0);
+  default: return of_int(0);
+  }
+}
+
 namespace {
 
 Outcome ok(Value v) { return {std::move(v), Fault::None}; }

@@ -23,7 +23,7 @@ namespace gfec::constant {
 struct Value {
   model::Type type = model::Type::Int;
   bool b = false;      ///< Bool
-  std::int64_t i = 0;  ///< Int: always within int's 32 bits
+  std::int64_t i = 0;  ///< Int: always within int's 32 bits; Duration (the interpreter): ticks
   double f = 0;        ///< Float: always a value a float holds; Double
   std::string s;       ///< String (plan formulas only)
 
@@ -32,6 +32,9 @@ struct Value {
   static Value of_float(float v);
   static Value of_double(double v);
   static Value of_string(std::string v);
+  static Value of_ticks(std::uint64_t v);
+  /// Zero (false) of type `t`: an unset var, a missing input column.
+  static Value zero(model::Type t);
 };
 
 /// Why an operation has no value.

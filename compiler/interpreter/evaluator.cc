@@ -18,24 +18,6 @@ bool is_arithmetic(BinaryOp op) {
          op == BinaryOp::Sub;
 }
 
-constant::Value to_constant(const Value &v) {
-  constant::Value c;
-  c.type = v.type;
-  c.b = v.b;
-  c.i = v.i;
-  c.f = v.f;
-  return c;
-}
-
-Value from_constant(const constant::Value &c) {
-  Value v;
-  v.type = c.type;
-  v.b = c.b;
-  v.i = c.i;
-  v.f = c.f;
-  return v;
-}
-
 /// An operand as the message shows it: in the type the operation computes in.
 std::string operand_text(const Value &v, Type t) {
   if (t == Type::Float)
@@ -47,8 +29,8 @@ std::string operand_text(const Value &v, Type t) {
 /// `a op b` computed by the one evaluator (compiler/constant.h), as the validator folds it and
 /// as the generated C computes it. What C leaves undefined stops the run, at `r`.
 Value arith(BinaryOp op, const Value &a, const Value &b, SourceRange r) {
-  constant::Outcome v = constant::binary(op, to_constant(a), to_constant(b));
-  if (v) return from_constant(v.value);
+  constant::Outcome v = constant::binary(op, a, b);
+  if (v) return v.value;
   const Type t = constant::common_type(a.type, b.type);
   switch (v.fault) {
   case constant::Fault::DivisionByZero: throw RuntimeError(r, "division by zero (undefined behaviour in C)");
@@ -121,8 +103,8 @@ Value call(const Expr &e, Frame &f) {
 Value unary(const Expr &e, Frame &f) {
   Value v = evaluate(e.args.at(0), f);
   if (e.unary_op == UnaryOp::Not) return Value::of_bool(!convert(v, Type::Bool, e.range).b);
-  constant::Outcome r = constant::unary(e.unary_op, to_constant(v));
-  if (r) return from_constant(r.value);
+  constant::Outcome r = constant::unary(e.unary_op, v);
+  if (r) return r.value;
   if (r.fault == constant::Fault::IntOverflow)
     throw RuntimeError(e.range, "int overflow: -(-2147483648) (undefined behaviour in C)");
   throw RuntimeError(e.range, "'-' needs a number");

@@ -11,51 +11,6 @@
 
 namespace gfec::interp {
 
-Value Value::of_bool(bool v) {
-  Value r;
-  r.type = model::Type::Bool;
-  r.b = v;
-  return r;
-}
-
-Value Value::of_int(std::int32_t v) {
-  Value r;
-  r.type = model::Type::Int;
-  r.i = v;
-  return r;
-}
-
-Value Value::of_float(float v) {
-  Value r;
-  r.type = model::Type::Float;
-  r.f = v;
-  return r;
-}
-
-Value Value::of_double(double v) {
-  Value r;
-  r.type = model::Type::Double;
-  r.f = v;
-  return r;
-}
-
-Value Value::of_ticks(std::uint64_t v) {
-  Value r;
-  r.type = model::Type::Duration;
-  r.i = static_cast<std::int64_t>(v);
-  return r;
-}
-
-Value Value::zero(model::Type t) {
-  switch (t) {
-  case model::Type::Bool: return of_bool(false);
-  case model::Type::Float: return of_float(0);
-  case model::Type::Double: return of_double(0);
-  case model::Type::Duration: return of_ticks(0);
-  default: return of_int(0);
-  }
-}
-
 namespace {
 
 /// A floating value as an int, as C truncates it; beyond int's range C leaves it undefined.

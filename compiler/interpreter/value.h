@@ -4,6 +4,7 @@
 // agrees with an engine by accident.
 #pragma once
 
+#include "constant.h"
 #include "model.h"
 #include "source.h"
 
@@ -14,20 +15,8 @@
 
 namespace gfec::interp {
 
-struct Value {
-  model::Type type = model::Type::Int;
-  bool b = false;      ///< Bool
-  std::int64_t i = 0;  ///< Int (always within int's 32 bits), Duration (ticks)
-  double f = 0;        ///< Float (always a value a float holds) and Double
-
-  static Value of_bool(bool v);
-  static Value of_int(std::int32_t v);
-  static Value of_float(float v);
-  static Value of_double(double v);
-  static Value of_ticks(std::uint64_t v);
-  /// Zero (false) of type `t`: an unset var, a missing input column.
-  static Value zero(model::Type t);
-};
+/// The interpreter computes with the constant evaluator's values (compiler/constant.h).
+using Value = constant::Value;
 
 /// Behaviour C leaves undefined or unportable, at the expression that would cause it.
 class RuntimeError : public std::runtime_error {
