@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -143,11 +144,22 @@ Outcome Harness::prepare(Case &c) const {
 
   Diagnostics trace_diag;
   FileId csv = p->sources.add(fmt::format("r{}.csv", c.id), c.csv);
-  interp::InputTrace trace(p->model, p->sources, csv, trace_diag);
+  const int agents = std::max(1, c.chart.agents);
+  interp::InputTrace trace(p->model, p->sources, csv, trace_diag, agents);
   if (trace_diag.has_errors()) return {Verdict::Invalid, printed(trace_diag, p->sources), ""};
   Diagnostics run_diag;
-  interp::RunResult r =
-      interp::run_chart(p->model, root, trace, static_cast<std::uint64_t>(c.trace.ticks), {}, run_diag);
+  const auto ticks = static_cast<std::uint64_t>(c.trace.ticks);
+  interp::RunResult r;
+  if (c.chart.agents > 0) {
+    // A team machine: every agent's engine in lockstep under the reference exchange.
+    std::vector<interp::InputTrace::Agent> inputs;
+    for (int k = 0; k < agents; ++k) inputs.emplace_back(trace, k);
+    std::vector<interp::Environment *> envs;
+    for (auto &in : inputs) envs.push_back(&in);
+    r = interp::run_team(p->model, root, envs, ticks, {}, run_diag);
+  } else {
+    r = interp::run_chart(p->model, root, trace, ticks, {}, run_diag);
+  }
   if (!r.completed) return {Verdict::Undefined, printed(run_diag, p->sources), ""};
   p->expected_plain = r.log.render({false, false, false});
   p->expected_hooks = r.log.render({true, false, false});
@@ -300,10 +312,11 @@ void Harness::save(const Case &c, const Outcome &o, const Config &config, const 
     write(dir + "/driver.c", driver_source({d}));
   }
   write(dir + "/README", fmt::format("verdict: {}\nbuild: {}{} -I. -o prog {} driver.c && ./prog\n"
-                                     "reference: gfec run r{}.sfc --inputs trace.csv --observable{}\n",
+                                     "reference: gfec run r{}.sfc --inputs trace.csv --observable{}{}\n",
                                      verdict_name(o.verdict), config.command,
                                      config.hooks ? fmt::format(" -D{}_HOOKS", c.chart.name) : "", engine_name(c), c.id,
-                                     config.hooks ? " --hooks" : ""));
+                                     config.hooks ? " --hooks" : "",
+                                     c.chart.agents > 0 ? fmt::format(" --agents {}", c.chart.agents) : ""));
 }
 
 }  // namespace gfec::diff

@@ -1,7 +1,8 @@
 // gfec_differential: random charts and traces, each run by the reference interpreter and by
 // the C engine that gfec generates (gcc and clang, -O0 and -O2, C99 and C11, with and without
-// hooks, once under ASan+UBSan); every engine must print exactly the interpreter's log. A
-// failing case is shrunk to a minimal chart and trace and printed with both logs.
+// hooks, once under ASan+UBSan); every engine must print exactly the interpreter's log. A team
+// machine runs as 2 to 4 engines in lockstep under the reference exchange. A failing case is
+// shrunk to a minimal chart and trace and printed with both logs.
 //
 //   gfec_differential [--seed N] [--cases N]     (ctest runs a few hundred; long runs:
 //                                                 docs/verification.md)
@@ -102,7 +103,7 @@ int main(int argc, char **argv) {
   std::vector<Case> all(static_cast<std::size_t>(cases));
   std::vector<Case *> ready;
   std::vector<Failure> failures;
-  int undefined = 0, invalid = 0, fsm = 0, generated = 0, scalable = 0;
+  int undefined = 0, invalid = 0, fsm = 0, teams = 0, generated = 0, scalable = 0;
   GenOptions base;
   base.subcharts = subcharts;
   for (std::istringstream in(avoid); std::getline(in, avoid, ',');) {
@@ -125,7 +126,10 @@ int main(int argc, char **argv) {
     c.id = k;
     GenOptions options = base;
     options.fsm = k % 3 == 2;
+    // Every other fsm is a team machine of 2 to 4 agents (docs/language.md "Teams").
+    if (options.fsm && k % 6 == 5) options.agents = 2 + (k / 6) % 3;
     fsm += options.fsm;
+    teams += options.agents > 0;
     ++generated;
     c.id = k;
     scalable += !options.fsm && scalable_form(c);
@@ -176,11 +180,11 @@ int main(int argc, char **argv) {
 
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::cout << fmt::format(
-      "gfec_differential: seed {}: {} random charts ({} sfc, {} of them in the scalable form, {} fsm); {} compared "
-      "under {} builds "
+      "gfec_differential: seed {}: {} random charts ({} sfc, {} of them in the scalable form, {} fsm, {} of them team "
+      "machines); {} compared under {} builds "
       "({} engine runs){}, {} skipped for undefined behaviour, {} rejected by gfec; {} failures; {:.0f} s\n",
-      seed, generated, generated - fsm, scalable, fsm, ready.size(), configs.size(), ready.size() * configs.size(),
-      lint ? " and cppcheck" : "", undefined, invalid, failures.size(), seconds);
+      seed, generated, generated - fsm, scalable, fsm, teams, ready.size(), configs.size(),
+      ready.size() * configs.size(), lint ? " and cppcheck" : "", undefined, invalid, failures.size(), seconds);
   // Shrink the first failures (one per case: the same bug tends to fail every build).
   std::vector<int> shown;
   for (auto &f : failures) {

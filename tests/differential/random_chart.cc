@@ -128,6 +128,12 @@ public:
       if (k.type == t) options.push_back({GExpr::Kind::Const, t, k.name, {}});
     for (const auto &f : c_.functions)
       if (f.result == t) calls.push_back(&f);
+    if (c_.team > 0 && t == Type::Int && !c_.places.empty() && chance(0.6)) {
+      // team(S) and agent() (docs/language.md "Teams"): the count changes with the exchange,
+      // the number differs from agent to agent.
+      if (chance(0.7)) return GExpr{GExpr::Kind::Team, Type::Int, pick(c_.places).name, {}};
+      return GExpr{GExpr::Kind::Agent, Type::Int, "", {}};
+    }
     const int n = static_cast<int>(options.size() + calls.size());
     if (n == 0) return std::nullopt;
     int i = uniform(0, n - 1);
@@ -264,7 +270,8 @@ public:
   /// Reads something that can change: a var, a call, a timer.
   static bool varies(const GExpr &e) {
     if (e.kind == GExpr::Kind::Var || e.kind == GExpr::Kind::Call || e.kind == GExpr::Kind::Elapsed ||
-        e.kind == GExpr::Kind::Active || e.kind == GExpr::Kind::Succeeded || e.kind == GExpr::Kind::Failed)
+        e.kind == GExpr::Kind::Active || e.kind == GExpr::Kind::Succeeded || e.kind == GExpr::Kind::Failed ||
+        e.kind == GExpr::Kind::Team || e.kind == GExpr::Kind::Agent)
       return true;
     for (const auto &a : e.args)
       if (varies(a)) return true;
@@ -506,6 +513,8 @@ std::string expr_text(const GExpr &e) {
   case GExpr::Kind::Active: return "active(" + e.text + ")";
   case GExpr::Kind::Succeeded: return "succeeded(" + e.text + ")";
   case GExpr::Kind::Failed: return "failed(" + e.text + ")";
+  case GExpr::Kind::Team: return "team(" + e.text + ")";
+  case GExpr::Kind::Agent: return "agent()";
   case GExpr::Kind::Call: {
     std::string args;
     for (const auto &a : e.args) args += (args.empty() ? "" : ", ") + expr_text(a);
@@ -540,6 +549,11 @@ GChart random_chart(std::mt19937_64 &rng, int id, const GenOptions &options) {
   c.period_ms = g.chance(0.7) ? g.pick(std::vector<int>{1, 10, 20, 100}) : 0;
   g.interface();
   g.values();
+  if (options.fsm && options.agents >= 2) {
+    // A team machine: declared for as many agents as run it, or more.
+    c.agents = options.agents;
+    c.team = options.agents + (g.chance(0.3) ? g.uniform(1, 2) : 0);
+  }
   if (options.subcharts > 0) {
     // The sub-charts, deepest first: pool[j] may run pool[j+1..]. They share the root's
     // interface and period (a sub-chart has its parent's period).
@@ -586,6 +600,29 @@ GTrace random_trace(std::mt19937_64 &rng, const GChart &chart) {
     }
     t.values.push_back(v);
   }
+  // A team run: each other agent has its own values of some functions, and shares the rest
+  // (agents told the same thing tend to reach the same states: team(S) then counts them).
+  for (int k = 1; k < chart.agents; ++k) {
+    std::vector<std::vector<std::string>> own;
+    for (const auto &f : chart.functions) {
+      std::vector<std::string> v;
+      if (f.result != Type::Void && coin(rng) < 60) {
+        bool level = coin(rng) < 50;
+        for (int i = 0; i < t.ticks; ++i) {
+          if (f.result == Type::Bool) {
+            if (coin(rng) < 35) level = !level;
+            v.push_back(level ? "1" : "0");
+          } else if (f.result == Type::Int) {
+            v.push_back(std::to_string(small(rng)));
+          } else {
+            v.push_back(kFloatInputs[floats(rng)]);
+          }
+        }
+      }
+      own.push_back(v);
+    }
+    t.agents.push_back(own);
+  }
   return t;
 }
 
@@ -593,6 +630,7 @@ namespace {
 
 std::string chart_body(const GChart &c, const std::vector<GChart> &pool) {
   std::string s = fmt::format("{} {} {{\n", c.fsm ? "fsm" : "sfc", c.name);
+  if (c.team) s += fmt::format("  team {};\n", c.team);
   if (c.period_ms) s += fmt::format("  period {}ms;\n", c.period_ms);
   for (const auto &k : c.consts)
     if (!k.file_level) s += fmt::format("  const {} {} = {};\n", type_word(k.type), k.name, k.init);
@@ -652,10 +690,17 @@ std::string trace_csv(const GChart &c, const GTrace &t) {
   std::string header = "tick", rows;
   for (const auto &f : c.functions)
     if (f.result != Type::Void) header += ", " + f.name;
+  for (std::size_t a = 0; a < t.agents.size(); ++a)
+    for (std::size_t f = 0; f < c.functions.size(); ++f)
+      if (!t.agents[a][f].empty()) header += fmt::format(", {}@{}", c.functions[f].name, a + 1);
   for (int k = 0; k < t.ticks; ++k) {
+    const auto tick = static_cast<std::size_t>(k);
     rows += std::to_string(k + 1);
     for (std::size_t f = 0; f < c.functions.size(); ++f)
-      if (c.functions[f].result != Type::Void) rows += ", " + t.values[f][static_cast<std::size_t>(k)];
+      if (c.functions[f].result != Type::Void) rows += ", " + t.values[f][tick];
+    for (const auto &own : t.agents)
+      for (const auto &v : own)
+        if (!v.empty()) rows += ", " + v[tick];
     rows += "\n";
   }
   return header + "\n" + rows;

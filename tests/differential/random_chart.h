@@ -15,8 +15,9 @@ namespace gfec::diff {
 using model::Type;
 
 struct GExpr {
-  /// Active: text `P` or `P.Q.R`; Succeeded, Failed: text `P` (a place that runs an fsm).
-  enum class Kind { Lit, Var, Const, Call, Elapsed, Unary, Binary, Paren, Active, Succeeded, Failed };
+  /// Active: text `P` or `P.Q.R`; Succeeded, Failed: text `P` (a place that runs an fsm);
+  /// Team: text `S`, `team(S)`; Agent: `agent()` (team machines, docs/language.md "Teams").
+  enum class Kind { Lit, Var, Const, Call, Elapsed, Unary, Binary, Paren, Active, Succeeded, Failed, Team, Agent };
   Kind kind = Kind::Lit;
   Type type = Type::Int;  ///< for an Elapsed comparison's operands: Duration
   std::string text;       ///< literal spelling, name, or operator
@@ -77,12 +78,19 @@ struct GChart {
   /// only pool[k] with k > j, and the root any of them, so there is no cycle; the same chart
   /// may be run by several places.
   std::vector<GChart> pool;
+  /// A team machine (the root fsm only): `team <team>;`, run by `agents` engines (2..team) in
+  /// lockstep under the reference exchange; 0 for an ordinary chart.
+  int team = 0;
+  int agents = 0;
 };
 
 /// What each function with a result returns, tick by tick, as literal text.
 struct GTrace {
   int ticks = 0;
   std::vector<std::vector<std::string>> values;  ///< [function][tick]; empty for void functions
+  /// A team run: what agent k (from 1) is told apart from the others, [k - 1][function][tick]
+  /// (its `F@k` columns); an empty list: agent k shares `values` for that function.
+  std::vector<std::vector<std::vector<std::string>>> agents;
 };
 
 struct GenOptions {
@@ -95,6 +103,8 @@ struct GenOptions {
   bool dead_code = true;
   /// Hierarchical programs: up to this many sub-charts (0: a flat chart).
   int subcharts = 0;
+  /// A team machine (an fsm only) run by this many agents (2 to 4; 0: not a team).
+  int agents = 0;
 };
 
 GChart random_chart(std::mt19937_64 &rng, int id, const GenOptions &options);

@@ -166,6 +166,7 @@ std::vector<std::function<bool(Case &, int)>> mutations() {
         if (i < static_cast<int>(c.chart.functions.size())) {
           c.chart.functions.erase(c.chart.functions.begin() + i);
           c.trace.values.erase(c.trace.values.begin() + i);
+          for (auto &own : c.trace.agents) own.erase(own.begin() + i);
           return true;
         }
         return false;
