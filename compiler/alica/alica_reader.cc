@@ -289,8 +289,16 @@ private:
     return std::nullopt;
   }
 
-  Doc *find_doc(const std::string &file, const Doc &from, const SourceRange &at, const std::string &id) {
+  /// How much a reference matters: a task names only an entry point's label, so a task file
+  /// that cannot be found is a warning, not an error.
+  enum class Need { Element, LabelOnly };
+
+  Doc *find_doc(const std::string &file, const Doc &from, const SourceRange &at, const std::string &id,
+                Need need = Need::Element) {
     std::vector<std::string> tried = candidates(file, from);
+    // A file that cannot be found is reported at its first reference only: ten states that
+    // run the same missing behaviour are one problem, not ten.
+    if (missing_.count(tried.front())) return nullptr;
     // The search below etc/ only when the usual places fail: it is the slow path.
     bool searched = false;
     auto search = [&] {
@@ -316,7 +324,13 @@ private:
       }
       return doc;
     }
-    auto &d = diag_.error(at, ErrorKind::AlicaReference, fmt::format("cannot find '{}', referenced here", file));
+    missing_.insert(tried.front());
+    auto &d = need == Need::LabelOnly
+                  ? diag_.warning(Warning::AlicaIgnored, at,
+                                  fmt::format("cannot find '{}', referenced here: the entry point is labelled "
+                                              "without its task's name",
+                                              file))
+                  : diag_.error(at, ErrorKind::AlicaReference, fmt::format("cannot find '{}', referenced here", file));
     suggest_file(d, file, tried);
     // The folders that exist (hold files), not every folder of every layout gfec knows.
     for (const auto &t : tried)
@@ -363,19 +377,22 @@ private:
   };
 
   /// The element a reference "File.ext#id" names, or nothing (reported at `at`).
-  Target resolve(const std::string &text, Doc &from, const SourceRange &at) {
+  Target resolve(const std::string &text, Doc &from, const SourceRange &at, Need need = Need::Element) {
     auto ref = split_ref(text);
     if (!ref) {
       diag_.error(at, ErrorKind::AlicaReference,
                   fmt::format("'{}' is no reference: ALICA writes them as \"File.ext#id\"", text));
       return {};
     }
-    Doc *doc = ref->file.empty() ? &from : find_doc(ref->file, from, at, ref->id);
+    Doc *doc = ref->file.empty() ? &from : find_doc(ref->file, from, at, ref->id, need);
     if (!doc || !doc->root) return {};
     auto it = doc->by_id.find(ref->id);
     if (it == doc->by_id.end()) {
-      auto &d =
-          diag_.error(at, ErrorKind::AlicaReference, fmt::format("'{}' has no element with id {}", doc->path, ref->id));
+      std::string message = fmt::format("'{}' has no element with id {}", doc->path, ref->id);
+      auto &d = need == Need::LabelOnly
+                    ? diag_.warning(Warning::AlicaIgnored, at,
+                                    message + ": the entry point is labelled without its task's name")
+                    : diag_.error(at, ErrorKind::AlicaReference, message);
       // A mistyped id: the element whose id is closest (a digit or two off); else, for a file
       // that holds one element (a behaviour, a plan), that element.
       const JsonValue *best = nullptr;
@@ -568,7 +585,7 @@ private:
     std::string name = label_of(ep);
     const JsonValue *task = ep.find("task");
     if (task && task->is_string() && !task->text.empty()) {
-      Target t = resolve(task->text, doc, range(doc, *task));
+      Target t = resolve(task->text, doc, range(doc, *task), Need::LabelOnly);
       if (t.object && !meaningful(name)) name = label_of(*t.object);
     }
     return name;
@@ -959,6 +976,7 @@ private:
   LoadResult &result_;
   ast::File *main_ = nullptr;
   std::map<std::string, std::unique_ptr<Doc>> docs_;
+  std::set<std::string> missing_;                          ///< files reported as not found (by the first path tried)
   std::map<std::string, std::vector<std::string>> trees_;  ///< search_below: root -> files below it
   std::set<std::string> trees_listed_;
   std::set<const JsonValue *> plan_type_warned_;    ///< a plan type used by several states warns once

@@ -238,6 +238,37 @@ TEST_CASE("alica: dangling references are errors at the reference, with did-you-
     CHECK(r.text.find("note: did you mean 'Behaviours/SearchItem.beh'?") != std::string::npos);
     CHECK(r.text.find("note: looked for 'plans/broken/Behaviours/SerchItem.beh'") != std::string::npos);
   }
+  SECTION("a file referenced twice is reported once") {
+    // A second state running the same missing behaviour: one problem, one error.
+    std::string text = test::read_file((kFixtures / "plans/broken/MissingFile.pml").string());
+    const std::string state_start = "    {\n      \"type\" : \"State\"";
+    std::size_t from = text.find(state_start), to = text.find("\n  ],\n  \"transitions\"");
+    REQUIRE(from != std::string::npos);
+    REQUIRE(to != std::string::npos);
+    std::string second = text.substr(from, to - from);
+    for (auto [a, b] : {std::pair<std::string, std::string>{"1800000000002", "1800000000003"},
+                        {"1800000001002", "1800000001003"},
+                        {"\"Start\"", "\"Again\""}})
+      for (std::size_t at; (at = second.find(a)) != std::string::npos;) second.replace(at, a.size(), b);
+    text.insert(to, ",\n" + second);
+    Run r("plans/broken/Twice.pml", {{"plans/broken/Twice.pml", text}});
+    CHECK(r.diag.error_count() == 1);
+    CHECK(r.text.find("cannot find 'Behaviours/SerchItem.beh'") != std::string::npos);
+    CHECK(r.text.find("cannot find 'Behaviours/SerchItem.beh'") ==
+          r.text.rfind("cannot find 'Behaviours/SerchItem.beh'"));
+  }
+  SECTION("a task that cannot be found is a warning: it names only the entry point") {
+    std::string text = test::read_file((kFixtures / "plans/broken/MissingFile.pml").string());
+    for (auto [a, b] : {std::pair<std::string, std::string>{"TaskRepository.tsk#9007199254740995", "Nowhere.tsk#5"},
+                        {"Behaviours/SerchItem.beh", "Behaviours/SearchItem.beh"}})
+      text.replace(text.find(a), a.size(), b);
+    Run r("plans/broken/NoTask.pml", {{"plans/broken/NoTask.pml", text}});
+    CHECK(r.diag.error_count() == 0);
+    CHECK(r.diag.warning_count() >= 1);
+    CHECK(r.text.find("warning: cannot find 'Nowhere.tsk', referenced here: the entry point is labelled without its "
+                      "task's name [-Walica-ignored]") != std::string::npos);
+    CHECK(r.chart("MissingFile") != nullptr);
+  }
   SECTION("an id the file does not hold") {
     Run r("plans/broken/MissingId.pml");
     CHECK(r.diag.error_count() == 1);
