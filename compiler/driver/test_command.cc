@@ -215,8 +215,7 @@ void load(TestFile &f) {
     f.unreadable = true;
     return;
   }
-  if (!f.loaded.program.files.empty() && f.loaded.program.files.front())
-    f.written_tests = f.loaded.program.files.front()->tests.size();
+  f.written_tests = f.suite.written;
 }
 
 std::string xml(const std::string &s) {

@@ -2,6 +2,7 @@
 
 #include "analysis/analysis.h"
 #include "roots.h"
+#include "scenario/scenario.h"
 #include "validate.h"
 
 #include <fmt/format.h>
@@ -106,16 +107,14 @@ bool Compilation::front_end(const std::string &path, const FileSystem &fs, scena
   LoadOptions load{options.include_dirs};
   load.language = options.language;
   loaded = load_program(path, load, fs, sources, diag);
+  if (tests && !loaded.program.files.empty() && loaded.program.files.front())
+    tests->written = loaded.program.files.front()->tests.size();
   if (loaded.main_unreadable || diag.has_errors()) return false;
-  if (tests) {
-    model = validate(loaded.program, sources, diag, *tests);
-  } else {
-    model = validate(loaded.program, sources, diag);
-    // The model holds all the back ends need: the syntax tree goes before they run, so a large
-    // chart does not keep both in memory (docs/performance.md). `gfec test` keeps it: it counts
-    // the tests written in the file.
-    loaded.program = {};
-  }
+  if (tests) model = validate(loaded.program, sources, diag, *tests);
+  else model = validate(loaded.program, sources, diag);
+  // The model holds all the back ends need: the syntax tree goes before they run, so a large
+  // chart does not keep both in memory (docs/performance.md).
+  loaded.program = {};
   // The static analyses whose warnings are on (compiler/analysis/, docs/verification.md).
   if (options.analyze && !diag.has_errors()) analysis::analyze(model, diag);
   // ALICA input: say which plan element (name and id) each diagnostic is about.

@@ -60,6 +60,9 @@ struct Test {
 /// The tests of one file (its own, not those of the files it imports).
 struct Suite {
   std::vector<Test> tests;
+  /// `test` blocks written in the main file, checked or not (a file that does not compile
+  /// counts them all as failed).
+  std::size_t written = 0;
 };
 
 }  // namespace gfec::scenario

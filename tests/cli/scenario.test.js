@@ -90,6 +90,22 @@ test('a test file with errors is a failed run with located errors (exit 1)', () 
   assert.match(r.stderr, /note: did you mean 'LineFollower'\?/);
 });
 
+test('every test written in a file that does not compile counts as failed', () => {
+  const dir = scratch({
+    'two.test': 'import "line_follower.sfc";\ntest "a" of LineFollower { tick; }\ntest "b" of LineFolower { tick; }\n',
+    'three.test': 'import "line_follower.sfc";\ntest "a" of LineFollower { tick; }\n' +
+      'test "b" of LineFollower { tick; }\ntest "c" of LineFollower { tick }\n',
+  });
+  lineFollower(dir);
+  const checked = gfec(['test', 'two.test'], dir);  // validation fails
+  assert.equal(checked.code, 1);
+  assert.equal(lastLine(checked.stdout), '0 passed, 2 failed');
+  const parsed = gfec(['test', 'three.test'], dir);  // the parser fails on the last one
+  assert.equal(parsed.code, 1);
+  assert.equal(lastLine(parsed.stdout), '0 passed, 3 failed');
+  assert.match(parsed.stderr, /^three\.test:4:/m);
+});
+
 test('usage and I/O errors exit 2', () => {
   const dir = scratch();
   let r = gfec(['test', 'missing.test'], dir);
