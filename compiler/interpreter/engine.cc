@@ -99,14 +99,13 @@ unsigned Engine::activation(int place) const {
 void Engine::run(Environment &env, EventLog *log) {
   ++tick_;
   if (log) log->add(EventKind::Tick, 0, fmt::format("tick {}", tick_));
-  step(env, log, tick_);
   Frame f = frame(&env, log, tick_);
+  step(f);
   end_of_tick(f);
   if (log) log_instances(*log);
 }
 
-void Engine::step(Environment &env, EventLog *log, std::uint64_t tick) {
-  Frame f = frame(&env, log, tick);
+void Engine::step(Frame &f) {
   if (!started_) {
     // §5.1: the first tick begins with the entry blocks of the initial places.
     started_ = true;
@@ -152,7 +151,8 @@ void Engine::tick_instance(int place, Frame &f) {
   Engine *sub = instances_[static_cast<std::size_t>(place)].get();
   if (!sub) return;
   if (f.log) f.log->add(EventKind::RunInstance, depth_, fmt::format("run {}: {}", sub->path_, sub->chart_.name));
-  sub->step(*f.env, f.log, f.tick);
+  Frame own = sub->frame(f.env, f.log, f.tick);
+  sub->step(own);
 }
 
 void Engine::log_instances(EventLog &log) const {

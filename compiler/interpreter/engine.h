@@ -62,8 +62,9 @@ public:
 
 private:
   Engine(const model::Model &model, int chart, EngineOptions options, std::string path, int depth);
-  /// One tick of this chart (§5.1 or §7), its events logged from depth `depth_`.
-  void step(Environment &env, EventLog *log, std::uint64_t tick);
+  /// One tick of this chart (§5.1 or §7) in `f`, a frame of this engine (frame()): its events
+  /// are logged from depth `depth_`.
+  void step(Frame &f);
   /// §9: reset place `place`'s instance as `_init` would (no code runs), before its entry block.
   void start(int place, Frame &f);
   /// §9: stop place `place`'s instance: the active places of the instance, in declaration
