@@ -298,3 +298,63 @@ int main(void)
                       "    printf(\"%s %d\\n\", Idle_place_name(Idle_Only), Idle_transition_name(0) == NULL);\n"
                       "    return 0;\n}\n") == "Only 1\n");
 }
+
+TEST_CASE("c engine context: the context's names give way to the chart's", "[c_backend][context]") {
+  // A var `ctx`, parameters `ctx` and `ctx_`, a place `context` (X_context is the API's) and an
+  // interface function whose name begins with ctx: all compile, nothing hides anything.
+  const char *chart = R"C(
+interface I { void Put(int ctx, int ctx_); bool ctx_ok(); }
+sfc Clash {
+  var int ctx = 1;
+  initial place context { Put(ctx, 2); }
+  place names;
+  transition context -> names when ctx_ok();
+}
+)C";
+  auto compiled = compile_chart({{"clash.sfc", chart}}, "clash.sfc", "engine.c", true, EngineForm::Auto, "void *", true);
+  INFO(compiled->errors);
+  REQUIRE(!compiled->diag.has_errors());
+  const std::string &h = compiled->files[1].contents;
+  CHECK(h.find("    int ctx; ") != std::string::npos);    // the var keeps its name
+  CHECK(h.find("    void *ctx_; ") != std::string::npos);  // the context's member gives way
+  CHECK(h.find("void Put(void *ctx__, int ctx, int ctx_);") != std::string::npos);
+  CHECK(h.find("bool ctx_ok(void *ctx);") != std::string::npos);
+  CHECK(h.find("Clash_context_,") != std::string::npos);  // the place's constant gives way to the API
+  const char *harness = R"C(#include "engine.h"
+
+#include <stdio.h>
+
+static int device;
+static int steps;
+
+void Put(void *ctx__, int ctx, int ctx_)
+{
+    if (ctx__ == &device) {
+        ++steps;
+    }
+    (void)ctx;
+    (void)ctx_;
+}
+
+bool ctx_ok(void *ctx)
+{
+    return ctx == &device && steps >= 2;
+}
+
+int main(void)
+{
+    Clash m;
+    int tick;
+    Clash_init(&m);
+    Clash_set_context(&m, &device);
+    for (tick = 0; tick < 3; ++tick) {
+        Clash_run(&m);
+    }
+    printf("%d %s %s\n", steps, Clash_place_name(Clash_context_), Clash_place_name(Clash_names));
+    return 0;
+}
+)C";
+  // Ticks 1 and 2: ctx_ok() sees 0, then 1 step (false), and context's action steps; tick 3:
+  // it sees 2 (true), names is active and does nothing.
+  CHECK(build_and_run("clash", compiled->files, harness) == "2 context names\n");
+}
