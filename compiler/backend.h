@@ -31,6 +31,10 @@ struct EmitOptions {
   int plan = -1;                         ///< index into Model::plans to compile, or -1
   int toolbox = -1;                      ///< index into Model::toolboxes (toolbox skeleton), or -1
   EngineForm engine = EngineForm::Auto;  ///< C back end: `--engine=auto|readable|scalable`
+  /// C back end, `--context[-type]`: the C type of the instance context every interface call
+  /// receives first (docs/c-engine.md "Instance context"); empty: no context, GFE's calls.
+  std::string context_type;
+  bool names = false;  ///< C back end, `--names`: X_place_name and X_transition_name
 };
 
 /// Where a back end writes: one stream per output file, opened in order, the primary output

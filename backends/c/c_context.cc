@@ -44,6 +44,7 @@ void name_globals(Context &c, NameSpace &globals, const Context *root) {
     c.checks_macro = root->checks_macro;
     c.assert_macro = root->assert_macro;
     c.assert_off_macro = root->assert_off_macro;
+    c.set_context_fn = root->set_context_fn;
   }
   c.activated_fn = t + "_activated";
   c.enabled_fn = t + "_enabled";
@@ -64,6 +65,18 @@ void name_globals(Context &c, NameSpace &globals, const Context *root) {
     c.team_size = t + "_TEAM_SIZE";
     c.team_fn = t + "_team";
     for (const auto *n : {&c.set_agent_fn, &c.report_fn, &c.team_size, &c.team_fn}) globals.claim(*n);
+  }
+  if (c.root && c.has_context()) {
+    c.set_context_fn = t + "_set_context";
+    c.context_fn = t + "_context";
+    globals.claim(c.set_context_fn);
+    globals.claim(c.context_fn);
+  }
+  if (c.root && c.options.names) {
+    c.place_name_fn = t + "_place_name";
+    c.transition_name_fn = t + "_transition_name";
+    globals.claim(c.place_name_fn);
+    globals.claim(c.transition_name_fn);
   }
   for (const auto &p : c.chart.places) c.place_const.push_back(globals.take(t + "_" + p.name));
   for (const auto &tr : c.chart.transitions) c.transition_const.push_back(globals.take(t + "_" + tr.name));
@@ -92,6 +105,7 @@ void name_fields(Context &c) {
     c.reports = fields.take("reports");
   }
   for (const auto &p : c.chart.places) c.timer_field.push_back(p.timed ? fields.take("timer_" + p.name) : "");
+  if (c.has_context()) c.ctx_field = fields.take("ctx");
   // The instances the places run: a field named after the place (`m->Search`), for debuggers.
   for (const auto &p : c.chart.places) c.sub_field.push_back(p.runs >= 0 ? fields.take(p.name) : "");
 }
@@ -107,6 +121,8 @@ void name_locals(Context &c, const NameSpace &globals) {
   c.from = locals.take("from");
   c.to = locals.take("to");
   c.index = locals.take("p");
+  if (c.has_context()) c.ctx_param = locals.take("ctx");
+  if (c.options.names) c.names = locals.take("names");
   const std::pair<const char *, std::string *> scalable[] = {{"add_n", &c.add_n},
                                                              {"lost", &c.lost},
                                                              {"lost_n", &c.lost_n},
@@ -264,6 +280,11 @@ void collect_functions(const Context &c, std::vector<int> &out) {
 
 std::string Context::av_of(int p) const {
   return fmt::format("{}[{}]", field(av), place_const.at(static_cast<std::size_t>(p)));
+}
+
+std::string Context::context_param(const std::string &name) const {
+  const std::string &t = options.context_type;
+  return t.back() == '*' ? t + name : t + " " + name;
 }
 
 std::string Context::timer_of(int p) const { return field(timer_field.at(static_cast<std::size_t>(p))); }

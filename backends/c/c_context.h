@@ -87,6 +87,17 @@ struct Context {
   std::string report_fn;     ///< X_report
   std::string team_size;     ///< X_TEAM_SIZE, the number of agents
   std::string team_fn;       ///< X_team: how many other agents last reported a state
+  // The instance context (--context, docs/c-engine.md "Instance context"); empty without it.
+  std::string ctx_field;           ///< the struct member holding it, in the root and every instance
+  std::string ctx_param;           ///< X_set_context's parameter, and the prototypes' first one
+  std::string set_context_fn;      ///< X_set_context
+  std::string context_fn;          ///< X_context
+  std::string place_name_fn;       ///< X_place_name (--names)
+  std::string transition_name_fn;  ///< X_transition_name (--names)
+  /// Every interface call passes the context first.
+  bool has_context() const { return !options.context_type.empty(); }
+  /// `void *ctx`, `struct motor *ctx`: the context as a parameter called `name`.
+  std::string context_param(const std::string &name) const;
 
   // Locals of the run function. They must not hide an interface function that chart code calls.
   std::string self;    ///< the engine parameter, `m`
@@ -95,6 +106,7 @@ struct Context {
   std::string from;    ///< fsm: the state at the start of the tick
   std::string to;      ///< fsm: the state entered, while the old one's exit blocks run
   std::string index;   ///< a loop index
+  std::string names;   ///< --names: the table in X_place_name and X_transition_name
   // Locals of the scalable form's run function.
   std::string add_n, lost, lost_n, gained, gained_n, word, bits, i, t;
   /// The temporaries that keep calls in order are this and a number: `gfec_t0` (c_expr.h).

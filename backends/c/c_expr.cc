@@ -389,11 +389,13 @@ private:
   Rendered call(const Expr &e) {
     const model::Function &f = c_.model.functions.at(static_cast<std::size_t>(e.index));
     Operands o = operands(e.args);
-    std::string args;
+    // --context: the instance's context first (docs/c-engine.md "Instance context"); reading a
+    // field calls nothing, so the order of the calls is untouched.
+    std::string args = c_.has_context() ? c_.field(c_.ctx_field) : "";
     for (std::size_t i = 0; i < o.items.size(); ++i) {
       Rendered a =
           i < f.params.size() ? converted(std::move(o.items[i]), e.args[i], f.params[i].type) : std::move(o.items[i]);
-      args += (i ? ", " : "") + a.text;
+      args += (args.empty() ? "" : ", ") + a.text;
     }
     return {fmt::format("{}({})", f.name, args), kPrimary, std::move(o.before)};
   }
@@ -539,8 +541,8 @@ std::string c_value(const Context &c, const Expr &e, model::Type to) {
   return closed(r.converted(r.render(e), e, to)).text;
 }
 
-std::string c_prototype(const model::Function &f) {
-  std::string params;
+std::string c_prototype(const model::Function &f, const std::string &first) {
+  std::string params = first;
   for (const auto &p : f.params) {
     params += params.empty() ? "" : ", ";
     params += p.name.empty() ? c_type(p.type) : fmt::format("{} {}", c_type(p.type), p.name);

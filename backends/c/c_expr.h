@@ -80,8 +80,9 @@ std::string c_assertion(const Context &c, const model::Expr &e, Temporaries &tem
 /// converted as the model converts it.
 std::string c_value(const Context &c, const model::Expr &e, model::Type to);
 
-/// `bool f(void)`, `void Motor(int side, float speed)`: an interface function's prototype.
-std::string c_prototype(const model::Function &f);
+/// `bool f(void)`, `void Motor(int side, float speed)`: an interface function's prototype;
+/// `first`, if not empty, is a parameter before the function's own (`void *ctx`, --context).
+std::string c_prototype(const model::Function &f, const std::string &first = "");
 
 /// The statements as C, one line each (empty for verbatim code), rendered before they are
 /// written so that the temporaries they need can be declared first, at the top of the block.

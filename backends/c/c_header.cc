@@ -109,6 +109,10 @@ void state_struct(CodeWriter &w, const Context &c) {
     if (c.sub[p])
       rows.emplace_back(fmt::format("{} {};", c.sub[p]->struct_type, c.sub_field[p]),
                         fmt::format("the instance of {} that {} runs", c.sub[p]->chart.name, c.chart.places[p].name));
+  if (c.has_context())
+    rows.emplace_back(c.context_param(c.ctx_field) + ";",
+                      c.root ? fmt::format("the context every interface call receives first ({})", c.set_context_fn)
+                             : fmt::format("a copy of the root's context ({})", c.set_context_fn));
   aligned(w, rows);
   w.dedent();
   w.line("};");
@@ -126,6 +130,27 @@ void team_api(CodeWriter &w, const Context &c) {
   w.line("void {0}({1} *m, int agent, int state);", c.report_fn, t);
   w.line("/* team(S) of the chart: how many other agents last reported `state`. */");
   w.line("int {0}(const {1} *m, int state);", c.team_fn, t);
+}
+
+/// --context: the setter and the getter (docs/c-engine.md "Instance context").
+void context_api(CodeWriter &w, const Context &c) {
+  const std::string &t = c.type;
+  w.line("/* The instance context: every interface function the engine calls (and its sub-charts'");
+  w.line("   instances) receives it as its first argument. Set it before the first {}_run; {}_init", t, t);
+  w.line("   leaves it as it is, so either may come first. */");
+  w.line("void {}({} *m, {});", c.set_context_fn, t, c.context_param(c.ctx_param));
+  w.line("/* The context last set: for the observation hooks and the caller. */");
+  w.line("{}({});", c.context_param(c.context_fn), fmt::format("const {} *m", t));
+}
+
+/// --names: the declared names, for logging and tracing.
+void names_api(CodeWriter &w, const Context &c) {
+  const std::string &t = c.type;
+  const char *what = c.fsm ? "state" : "place";
+  w.line("/* The declared name of a {0} (a {1}_<{0}>), or a null pointer for a number out of range. */", what, t);
+  w.line("const char *{}(int place);", c.place_name_fn);
+  w.line("/* The declared name of a transition (a {}_<transition>), or a null pointer out of range. */", t);
+  w.line("const char *{}(int transition);", c.transition_name_fn);
 }
 
 void api(CodeWriter &w, const Context &c) {
@@ -149,6 +174,8 @@ void api(CodeWriter &w, const Context &c) {
     w.line("/* The activation counter of a place (a {}_<place>); 0 for a number out of range. */", t);
     w.line("unsigned {0}_activation(const {0} *m, int place);", t);
   }
+  if (c.has_context()) context_api(w, c);
+  if (c.options.names) names_api(w, c);
 }
 
 void hooks(CodeWriter &w, const Context &c) {
@@ -161,6 +188,35 @@ void hooks(CodeWriter &w, const Context &c) {
   w.line("void {0}({1} *m, int place, bool active);", c.activated_fn, c.type);
   w.line("void {0}({1} *m, int transition);", c.enabled_fn, c.type);
   directive(w, "#endif");
+}
+
+/// --context: the prototypes' first parameter, named apart from the function's own.
+std::string context_first(const Context &c, const model::Function &f) {
+  if (!c.has_context()) return "";
+  std::string name = c.ctx_param;
+  for (bool clash = true; clash;) {
+    clash = false;
+    for (const auto &p : f.params) clash = clash || p.name == name;
+    if (clash) name += '_';
+  }
+  return c.context_param(name);
+}
+
+/// `struct motor *` names a tag: declared before the struct and the prototypes use it, so that
+/// a prototype does not declare it in its own scope (gcc, clang: "will not be visible outside").
+void context_tag(CodeWriter &w, const Context &c) {
+  const std::string &t = c.options.context_type;
+  for (const char *kind : {"struct ", "union ", "const struct ", "const union ", "volatile struct ",
+                           "volatile union "}) {
+    if (t.rfind(kind, 0) != 0) continue;
+    std::string rest = t.substr(std::string(kind).size());
+    std::string tag = rest.substr(0, rest.find_first_of(" *"));
+    if (tag.empty()) return;
+    std::string keyword = std::string(kind).find("union") != std::string::npos ? "union" : "struct";
+    w.line("{} {}; /* the instance context's type (--context-type) */", keyword, tag);
+    w.blank();
+    return;
+  }
 }
 
 void interface_functions(CodeWriter &w, const Context &c) {
@@ -180,7 +236,7 @@ void interface_functions(CodeWriter &w, const Context &c) {
              c.has_sub() ? " and its sub-charts" : "");
     for (int f : c.functions) {
       const auto &fn = c.model.functions.at(static_cast<std::size_t>(f));
-      if (fn.interface_name == iface) w.line("{};", c_prototype(fn));
+      if (fn.interface_name == iface) w.line("{};", c_prototype(fn, context_first(c, fn)));
     }
   }
 }
@@ -208,6 +264,7 @@ void emit_header(const Context &c, std::ostream &out) {
     team_enum(w, c);
     w.blank();
   }
+  if (c.has_context()) context_tag(w, c);
   state_struct(w, c);
   w.blank();
   api(w, c);

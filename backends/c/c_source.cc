@@ -235,6 +235,60 @@ void accessors(CodeWriter &w, const Context &c) {
   }
 }
 
+/// `m->Search.ctx`, `m->Search.Inner.ctx`: the context members of every instance below `c`
+/// (`prefix`: how its own fields are reached, `m->` for the root), parents first.
+void instance_contexts(const Context &c, const std::string &prefix, std::vector<std::string> &out) {
+  for (std::size_t p = 0; p < c.sub.size(); ++p) {
+    if (!c.sub[p]) continue;
+    const std::string member = prefix + c.sub_field[p];
+    out.push_back(member + "." + c.sub[p]->ctx_field);
+    instance_contexts(*c.sub[p], member + ".", out);
+  }
+}
+
+/// --context: X_set_context and X_context (docs/c-engine.md "Instance context"). Each instance
+/// keeps a copy, so that its functions pass it as the root's do; the setter writes every copy.
+void context_functions(CodeWriter &w, const Context &c) {
+  const std::string &t = c.type, &m = c.self;
+  w.line("void {}({} *{}, {})", c.set_context_fn, t, m, c.context_param(c.ctx_param));
+  w.line("{");
+  w.line("    {} = {};", c.field(c.ctx_field), c.ctx_param);
+  std::vector<std::string> copies;
+  instance_contexts(c, m + "->", copies);
+  for (const auto &copy : copies) w.line("    {} = {};", copy, c.ctx_param);
+  w.line("}");
+  w.blank();
+  w.line("{}(const {} *{})", c.context_param(c.context_fn), t, m);
+  w.line("{");
+  w.line("    return {};", c.field(c.ctx_field));
+  w.line("}");
+}
+
+/// --names: the declared names of the root's places and transitions (docs/c-engine.md).
+void name_functions(CodeWriter &w, const Context &c) {
+  auto table = [&](const std::string &fn, const char *param, const std::string &count,
+                   const std::vector<std::string> &names) {
+    w.line("const char *{}(int {})", fn, param);
+    w.line("{");
+    if (names.empty()) {  // C has no empty array
+      w.line("    (void){};", param);
+      w.line("    return 0;");
+    } else {
+      w.line("    static const char *const {}[{}] = {{", c.names, count);
+      for (const auto &n : names) w.line("        {},", c_string_literal(n));
+      w.line("    };");
+      w.line("    return {0} >= 0 && {0} < {1} ? {2}[{0}] : 0;", param, count, c.names);
+    }
+    w.line("}");
+  };
+  std::vector<std::string> places, transitions;
+  for (const auto &p : c.chart.places) places.push_back(p.name);
+  for (const auto &tr : c.chart.transitions) transitions.push_back(tr.name);
+  table(c.place_name_fn, "place", c.place_count, places);
+  w.blank();
+  table(c.transition_name_fn, "transition", c.transition_count, transitions);
+}
+
 }  // namespace
 
 std::string transition_label(const Context &c, const model::Transition &t) {
@@ -281,6 +335,14 @@ void emit_source(const Context &c, std::ostream &out) {
   run_function(w, c);
   w.blank();
   accessors(w, c);
+  if (c.has_context()) {
+    w.blank();
+    context_functions(w, c);
+  }
+  if (c.options.names) {
+    w.blank();
+    name_functions(w, c);
+  }
 }
 
 }  // namespace gfec::c_backend

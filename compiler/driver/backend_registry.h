@@ -23,6 +23,8 @@ struct BackendInfo {
   const char *summary;     ///< one line for --help
   const char *help;        ///< where to read more: the docs page
   std::unique_ptr<Backend> (*make)();
+  /// Takes the C engine's options (--context, --context-type, --names); others reject them.
+  bool c_engine_options = false;
 
   bool accepts_kind(unsigned kind) const { return (accepts & kind) != 0; }
   /// Writes only its primary output (so `-o -` can send it to stdout).

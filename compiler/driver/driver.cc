@@ -132,6 +132,13 @@ int compile(const Options &o, DiagnosticReport &report, std::ostream &out) {
                       true);
     return kExitUsageOrIo;
   }
+  if ((!o.context_type.empty() || o.names) && !info.c_engine_options) {
+    report.tool_error(input,
+                      fmt::format("{} applies only to the C engine; --emit={} does not take it",
+                                  o.context_type.empty() ? "--names" : "--context", info.name),
+                      false);
+    return kExitUsageOrIo;
+  }
   EmitOptions emit;
   emit.chart = target.chart;
   emit.plan = target.plan;
@@ -142,6 +149,8 @@ int compile(const Options &o, DiagnosticReport &report, std::ostream &out) {
   emit.engine = o.engine == "readable"   ? EngineForm::Readable
                 : o.engine == "scalable" ? EngineForm::Scalable
                                          : EngineForm::Auto;
+  emit.context_type = o.context_type;
+  emit.names = o.names;
   auto backend = info.make();
   if (o.output == "-") {
     // "-o -": the one output on stdout, for pipes (gfec --emit=dot x.sfc -o - | dot -Tpng).

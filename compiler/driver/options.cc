@@ -6,6 +6,8 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <cctype>
+
 namespace gfec {
 
 namespace {
@@ -107,6 +109,42 @@ std::vector<const char *> take_dependency_flags(int argc, const char *const *arg
   return rest;
 }
 
+/// Why `type` cannot be the C engine's context type (--context-type), or "": it is written into
+/// engine.h as it stands, so only the words and `*` of a C type name are taken (a typedef from
+/// <stdint.h>, `void *`, `struct motor *`, `const struct bus *`), never code.
+std::string check_context_type(const std::string &type) {
+  bool word = false;
+  for (char ch : type) {
+    const bool letter = std::isalnum(static_cast<unsigned char>(ch)) || ch == '_';
+    if (!letter && ch != '*' && ch != ' ') {
+      return fmt::format("--context-type '{}': a C type name is words and '*' only (e.g. 'void *', 'struct motor *')",
+                         type);
+    }
+    word = word || letter;
+  }
+  if (!word) return "--context-type needs a C type, e.g. 'struct motor *'";
+  const char first = type[type.find_first_not_of(" *")];
+  if (std::isdigit(static_cast<unsigned char>(first)))
+    return fmt::format("--context-type '{}': a C type name begins with a letter", type);
+  return {};
+}
+
+/// `struct  motor*` -> `struct motor *`: words one space apart, each `*` after a space.
+std::string normal_type(const std::string &type) {
+  std::string out;
+  bool space = false;
+  for (char ch : type) {
+    if (ch == ' ') {
+      space = true;
+      continue;
+    }
+    if (!out.empty() && (space || (ch == '*' && out.back() != '*'))) out += ' ';
+    out += ch;
+    space = false;
+  }
+  return out;
+}
+
 /// The four ways gfec is run, for --help and for a command line without files.
 std::string usage_forms() {
   return "Usage: gfec CHART [-o OUT] [OPTIONS]      compile an sfc or fsm to a C engine, a plan to C++\n"
@@ -202,6 +240,16 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
                  "C engine form: auto (readable up to 64 places, or when a quarter of the places can be active at "
                  "once), readable or scalable")
       ->check(CLI::IsMember({"auto", "readable", "scalable"}));
+  bool context = false;
+  std::string context_type;
+  app.add_flag("--context", context,
+               "C engine: every interface function takes the instance's context (void *) as its first argument, "
+               "set by X_set_context (docs/c-engine.md \"Instance context\")");
+  app.add_option("--context-type", context_type,
+                 "C engine: the context's C type, e.g. 'struct motor *' (implies --context; default void *)")
+      ->type_name("TYPE");
+  app.add_flag("--names", o.names,
+               "C engine: X_place_name() and X_transition_name(), the declared names for logging and tracing");
   app.add_option("-W", warning_flags, "Warning control: -W<name>, -Wno-<name>, -Wall, -Werror")
       ->type_name("NAME")
       ->allow_extra_args(false);
@@ -257,6 +305,11 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
   // gcc: -w inhibits every warning, whatever -W flags came with it.
   if (no_warnings) o.warnings.enabled.fill(false);
   o.line_directives = !no_line;
+  if (!context_type.empty() || context) {
+    if (context_type.empty()) context_type = "void *";
+    if (std::string why = check_context_type(context_type); !why.empty()) return usage_error(why);
+    o.context_type = normal_type(context_type);
+  }
   if (o.analyze && (!o.output.empty() || o.deps.write)) return usage_error("--analyze writes nothing; drop -o and -MD");
   if (o.analyze) return result;  // several files are fine, as with --check
   if (!o.check_only && o.inputs.size() > 1) return usage_error("several input files are only allowed with --check");

@@ -39,6 +39,8 @@ struct Options {
   std::string chart;                      ///< --chart NAME
   bool line_directives = true;            ///< --no-line-directives turns them off
   std::string engine = "auto";            ///< --engine=auto|readable|scalable: the C engine's form
+  std::string context_type;               ///< --context (void *) or --context-type=TYPE; empty: no context
+  bool names = false;                     ///< --names: the C engine's place and transition name table
   WarningOptions warnings;                ///< -W<name>, -Wno-<name>, -Wall, -Werror[=NAME], -Wno-error=NAME, -w
   DiagnosticsFormat diagnostics_format = DiagnosticsFormat::Text;
   std::size_t error_limit = 50;       ///< -fmax-errors=N

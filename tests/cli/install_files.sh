@@ -64,6 +64,8 @@ expect() {
   for w in "${words[@]}"; do [[ $got == *" $w "* ]] || fail "'$*' offers$got, not $w"; done
 }
 expect --check --chart -- gfec --ch
+expect --context --context-type= -- gfec --cont
+expect --names -- gfec --na
 expect --emit=c --emit=cpp --emit=svg -- gfec --emit=
 expect -Wunreachable-actor -Wunreachable-place -- gfec -Wunre
 expect -Werror=dead-transition -- gfec -Werror=dead

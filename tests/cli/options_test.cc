@@ -122,3 +122,28 @@ TEST_CASE("options: no file is gcc's 'no input files' and the ways to run gfec, 
   CHECK(help.message.find("gfec run CHART") != std::string::npos);
   CHECK(help.message.find("--analyze") != std::string::npos);
 }
+
+TEST_CASE("options: --context, --context-type and --names, the C engine's options") {
+  auto plain = parse({"x.sfc"});
+  CHECK(plain.options.context_type.empty());
+  CHECK_FALSE(plain.options.names);
+  auto context = parse({"--context", "x.sfc", "--names"});
+  REQUIRE_FALSE(context.exit_now);
+  CHECK(context.options.context_type == "void *");
+  CHECK(context.options.names);
+  CHECK(context.options.inputs == std::vector<std::string>{"x.sfc"});  // --context takes no value
+  // A type implies --context; spacing is normalised as engine.h writes it.
+  CHECK(parse({"--context-type=struct  motor*", "x.sfc"}).options.context_type == "struct motor *");
+  CHECK(parse({"--context-type", "uint8_t", "x.sfc"}).options.context_type == "uint8_t");
+  CHECK(parse({"--context", "--context-type=const struct bus *", "x.sfc"}).options.context_type ==
+        "const struct bus *");
+  // Only a type's words and stars: nothing that would put code into engine.h.
+  for (const char *bad : {"--context-type=int; int x", "--context-type=void (*)(void)", "--context-type=* *",
+                          "--context-type=9lives *"}) {
+    INFO(bad);
+    auto r = parse({bad, "x.sfc"});
+    CHECK(r.exit_now);
+    CHECK(r.exit_code == 2);
+    CHECK(r.message.rfind("gfec: error: --context-type", 0) == 0);
+  }
+}

@@ -295,12 +295,13 @@ private:
 /// Runs the C back end on a model: {engine.c, engine.h} for output `output`.
 inline std::vector<OutputFile> emit_c(const model::Model &m, const std::string &output = "engine.c",
                                       bool line_directives = true, const std::string &source = "hand.sfc",
-                                      EngineForm engine = EngineForm::Auto) {
+                                      EngineForm engine = EngineForm::Auto, const std::string &context_type = "") {
   EmitOptions o;
   o.output_path = output;
   o.source_name = source;
   o.line_directives = line_directives;
   o.engine = engine;
+  o.context_type = context_type;
   o.chart = 0;
   return emit_to_memory(*make_c_backend(), m, o);
 }
@@ -330,7 +331,8 @@ struct Compiled {
 
 inline std::unique_ptr<Compiled> compile_chart(const std::map<std::string, std::string> &files, const std::string &main,
                                                const std::string &output, bool line_directives = true,
-                                               EngineForm engine = EngineForm::Auto) {
+                                               EngineForm engine = EngineForm::Auto,
+                                               const std::string &context_type = "", bool names = false) {
   auto c = std::make_unique<Compiled>();
   MemoryFileSystem mem;
   for (const auto &[path, text] : files) mem.add(path, text);
@@ -350,6 +352,8 @@ inline std::unique_ptr<Compiled> compile_chart(const std::map<std::string, std::
   o.source_name = main;
   o.line_directives = line_directives;
   o.engine = engine;
+  o.context_type = context_type;
+  o.names = names;
   o.chart = target.chart;
   c->chart = o.chart;
   c->files = emit_to_memory(*make_c_backend(), c->model, o);
@@ -412,7 +416,10 @@ inline const char *kStrictFlags = "-std=c99 -Wall -Wextra -Wpedantic -Werror";
 /// functions return 1 or the value, others 0), logs each call (`cond F -> 1`, `act G(0, 0.6)`),
 /// runs one tick per line and prints the activation after it (`av A B:2` lists the active
 /// places, counts above one after a colon; an fsm prints `state S status 0`). With -DX_HOOKS it
-/// logs the hooks too (`hook lost A`, `hook gained B`, `hook enabled T0`).
+/// logs the hooks too (`hook lost A`, `hook gained B`, `hook enabled T0`). `context`: the engine
+/// was made with --context (void *); main sets it to a device of its own, and every interface
+/// function first checks that it received exactly that (else it prints `wrong context` and
+/// exits with 3), so the log is the same as without the context.
 /// The interface functions `chart` and every chart it runs (at any depth) call, each once.
 inline std::vector<int> called_functions(const model::Model &m, const model::Chart &chart) {
   std::vector<int> out;
@@ -426,13 +433,21 @@ inline std::vector<int> called_functions(const model::Model &m, const model::Cha
   return out;
 }
 
-inline std::string harness_source(const model::Model &m, const model::Chart &chart, const std::string &header) {
+inline std::string harness_source(const model::Model &m, const model::Chart &chart, const std::string &header,
+                                  bool context = false) {
   const std::string &X = chart.name;
   const std::vector<int> functions = called_functions(m, chart);
   const bool fsm = chart.kind == model::Chart::Kind::Fsm;
   std::string s;
   s += fmt::format("#include \"{}\"\n\n#include <stdio.h>\n#include <stdlib.h>\n#include <string.h>\n\n", header);
   s += "static char script[1024]; /* this tick's line */\n\n";
+  if (context)
+    s += "static int device; /* the engine's context */\n\n"
+         "static void expect_device(const void *ctx)\n{\n"
+         "    if (ctx != (const void *)&device) {\n"
+         "        printf(\"wrong context\\n\");\n"
+         "        exit(3);\n"
+         "    }\n}\n\n";
   bool senses = false;
   for (int fi : functions) senses = senses || m.functions[static_cast<std::size_t>(fi)].result != Type::Void;
   if (senses)
@@ -460,14 +475,16 @@ inline std::string harness_source(const model::Model &m, const model::Chart &cha
       format += fmt::format("{}{}", i ? ", " : "", real ? "%g" : "%d");
       args += fmt::format(", {}a{}", real ? "(double)" : "(int)", i);
     }
+    if (context) params = "void *ctx" + (params.empty() ? "" : ", " + params);
     if (params.empty()) params = "void";
+    const std::string check = context ? "    expect_device(ctx);\n" : "";
     if (f.result == Type::Void) {
-      s += fmt::format("void {}({})\n{{\n    printf(\"act {}{}\\n\"{});\n}}\n\n", f.name, params, f.name,
+      s += fmt::format("void {}({})\n{{\n{}    printf(\"act {}{}\\n\"{});\n}}\n\n", f.name, params, check, f.name,
                        f.params.empty() ? "" : "(" + format + ")", args);
     } else {
       bool real = f.result == Type::Float || f.result == Type::Double;
       std::string t = model::type_name(f.result);
-      s += fmt::format("{} {}({})\n{{\n", t, f.name, params);
+      s += fmt::format("{} {}({})\n{{\n{}", t, f.name, params, check);
       if (!f.params.empty()) s += fmt::format("    printf(\"call {}({})\\n\"{});\n", f.name, format, args);
       s += fmt::format("    {} v = ({})value_of(\"{}\");\n", t, t, f.name);
       s += fmt::format("    printf(\"cond {} -> {}\\n\", {}v);\n    return v;\n}}\n\n", f.name, real ? "%g" : "%d",
@@ -498,12 +515,12 @@ inline std::string harness_source(const model::Model &m, const model::Chart &cha
   s += "}\n\n";
   s += fmt::format("int main(void)\n{{\n    {0} m;\n    int tick = 0;\n"
                    "    setvbuf(stdout, NULL, _IONBF, 0); /* the log survives a failed assert */\n"
-                   "    {0}_init(&m);\n"
+                   "    {0}_init(&m);\n{1}"
                    "    while (fgets(script, sizeof script, stdin) != NULL) {{\n"
                    "        printf(\"tick %d\\n\", ++tick);\n"
                    "        {0}_run(&m);\n"
                    "        print_state(&m);\n    }}\n    return 0;\n}}\n",
-                   X);
+                   X, context ? fmt::format("    {}_set_context(&m, &device);\n", X) : "");
   return s;
 }
 
@@ -512,11 +529,11 @@ inline std::string harness_source(const model::Model &m, const model::Chart &cha
 /// must be the same for every compiler. `exit_ok`: the run must exit with status 0.
 inline std::string compile_and_run(const std::string &test, const std::vector<OutputFile> &files, const model::Model &m,
                                    const model::Chart &chart, const std::string &script,
-                                   const std::string &defines = "", bool exit_ok = true) {
+                                   const std::string &defines = "", bool exit_ok = true, bool context = false) {
   REQUIRE(files.size() == 2);
   fs::path dir = scratch_dir(test);
   for (const auto &f : files) write_file(dir / base_name(f.path), f.contents);
-  write_file(dir / "harness.c", harness_source(m, chart, base_name(files[1].path)));
+  write_file(dir / "harness.c", harness_source(m, chart, base_name(files[1].path), context));
   write_file(dir / "script.txt", script);
   if (!have_tool("clang")) WARN("clang is not installed: the generated code is tested with gcc only");
   std::string first;

@@ -71,6 +71,8 @@ void check_golden(const std::string &name, const std::string &actual) {
 struct CaseFlags {
   bool line_directives = true;
   EngineForm engine = EngineForm::Auto;
+  std::string context_type;  ///< --context: void *
+  bool names = false;        ///< --names
 };
 CaseFlags flags_for(const std::string &stem) {
   CaseFlags f;
@@ -78,8 +80,13 @@ CaseFlags flags_for(const std::string &stem) {
   if (!fs::exists(flags)) return f;
   std::istringstream in(read_file(flags));
   for (std::string flag; in >> flag;) {
-    INFO(flags.string() << ": only --no-line-directives and --engine=readable|scalable are understood here");
-    if (flag == "--engine=scalable") {
+    INFO(flags.string() << ": only --no-line-directives, --engine=readable|scalable, --context and --names are "
+                           "understood here");
+    if (flag == "--context") {
+      f.context_type = "void *";
+    } else if (flag == "--names") {
+      f.names = true;
+    } else if (flag == "--engine=scalable") {
       f.engine = EngineForm::Scalable;
     } else if (flag == "--engine=readable") {
       f.engine = EngineForm::Readable;
@@ -101,7 +108,8 @@ TEST_CASE("c golden: engines equal tests/golden/c byte for byte", "[c_backend][g
     DYNAMIC_SECTION(name) {
       std::string stem = fs::path(name).stem().string();
       CaseFlags flags = flags_for(stem);
-      auto compiled = compile_chart(files, name, stem + ".c", flags.line_directives, flags.engine);
+      auto compiled =
+          compile_chart(files, name, stem + ".c", flags.line_directives, flags.engine, flags.context_type, flags.names);
       INFO(compiled->errors);
       REQUIRE(!compiled->diag.has_errors());
       REQUIRE(compiled->files.size() == 2);
@@ -116,8 +124,8 @@ TEST_CASE("c golden: the same chart gives byte-identical engines", "[c_backend][
   auto files = chart_files();
   for (const auto &name : cases(files)) {
     CaseFlags flags = flags_for(fs::path(name).stem().string());
-    auto one = compile_chart(files, name, "engine.c", true, flags.engine);
-    auto two = compile_chart(files, name, "engine.c", true, flags.engine);
+    auto one = compile_chart(files, name, "engine.c", true, flags.engine, flags.context_type, flags.names);
+    auto two = compile_chart(files, name, "engine.c", true, flags.engine, flags.context_type, flags.names);
     INFO(name << one->errors);
     REQUIRE(!one->diag.has_errors());
     REQUIRE(one->files.size() == two->files.size());

@@ -14,17 +14,25 @@ namespace {
 
 using Kind = model::Chart::Kind;
 
-/// Runs the model's chart 0 in both engine forms; both must write the same log.
+/// Runs the model's chart 0 in both engine forms; both must write the same log. `context`: also
+/// both forms made with --context, whose every interface call (in instances at every depth too)
+/// must receive the harness's device (c_backend_support.h), with the same log.
 std::string run_both(const std::string &test, const model::Model &m, const std::string &script,
-                     const std::string &defines = "") {
-  std::string logs[2];
+                     const std::string &defines = "", bool context = false) {
+  std::string logs[4];
   const EngineForm forms[2] = {EngineForm::Readable, EngineForm::Scalable};
-  for (int f = 0; f < 2; ++f) {
-    auto files = emit_c(m, "engine.c", true, "hand.sfc", forms[f]);
-    logs[f] = compile_and_run(test + (f == 0 ? "" : "_scalable"), files, m, m.charts[0], script, defines);
+  for (int f = 0; f < (context ? 4 : 2); ++f) {
+    auto files = emit_c(m, "engine.c", true, "hand.sfc", forms[f % 2], f < 2 ? "" : "void *");
+    logs[f] = compile_and_run(test + (f % 2 == 0 ? "" : "_scalable") + (f < 2 ? "" : "_context"), files, m,
+                              m.charts[0], script, defines, true, f >= 2);
   }
   INFO("the scalable engine's log differs from the readable one's");
   CHECK(logs[1] == logs[0]);
+  if (context) {
+    INFO("an engine with --context logs differently");
+    CHECK(logs[2] == logs[0]);
+    CHECK(logs[3] == logs[0]);
+  }
   return logs[0];
 }
 
@@ -74,7 +82,8 @@ TEST_CASE("c engine sub-charts: sfc in fsm in sfc, start, tick and stop innermos
                              "TopBack\n"
                              "LeafGo MidGo\n"
                              "MidDone\n"
-                             "TopGo\n");
+                             "TopGo\n",
+                             "", true);
   CHECK(log == "tick 1\n"
                "act TopIn\n"  // Top's first tick: A enters (Mid was started by _init)
                "cond TopGo -> 0\n"
@@ -164,7 +173,8 @@ TEST_CASE("c engine sub-charts: one chart in two places, lose and regain, condit
                              "JobOk\n"
                              "JobOk\n"
                              "Go Again\n"
-                             "Back\n");
+                             "Back\n",
+                             "", true);
   CHECK(log == "tick 1\n"
                // T0: succeeded(P) is false (P's Job runs): Go is not called. T1: active(P) holds.
                "cond Again -> 0\n"

@@ -18,11 +18,22 @@ namespace {
 /// A C main() for `agents` engines of a team machine. The script has one line per tick:
 /// `F` or `F=v` answers every agent, `F@k` or `F@k=v` agent k only (and wins over `F`). Each
 /// call is logged as in harness_source(), each agent's part of the tick after `agent k`.
-std::string team_harness(const model::Model &m, const model::Chart &chart, const std::string &header, int agents) {
+/// `context`: the engine was made with --context; agent k's context is its number's slot in
+/// `agent_ids`, and every call checks that it is the agent running now.
+std::string team_harness(const model::Model &m, const model::Chart &chart, const std::string &header, int agents,
+                         bool context = false) {
   const std::string &X = chart.name;
   std::string s =
       fmt::format("#include \"{}\"\n\n#include <stdio.h>\n#include <stdlib.h>\n#include <string.h>\n\n", header);
   s += "static char script[1024]; /* this tick's line */\nstatic int agent_now; /* whose engine runs */\n\n";
+  if (context)
+    s += fmt::format("static int agent_ids[{}]; /* the engines' contexts */\n\n"
+                     "static void expect_agent(const void *ctx)\n{{\n"
+                     "    if (ctx != (const void *)&agent_ids[agent_now]) {{\n"
+                     "        printf(\"wrong context\\n\");\n"
+                     "        exit(3);\n"
+                     "    }}\n}}\n\n",
+                     agents);
   s += "static const char *const state_names[] = {";
   for (const auto &p : chart.places) s += fmt::format("\"{}\", ", p.name);
   s += "NULL};\n\n";
@@ -54,21 +65,23 @@ std::string team_harness(const model::Model &m, const model::Chart &chart, const
       format += fmt::format("{}%d", i ? ", " : "");
       args += fmt::format(", (int)a{}", i);
     }
+    if (context) params = "void *ctx" + (params.empty() ? "" : ", " + params);
     if (params.empty()) params = "void";
+    const std::string check = context ? "    expect_agent(ctx);\n" : "";
     if (f.result == Type::Void) {
-      s += fmt::format("void {}({})\n{{\n    printf(\"act {}{}\\n\"{});\n}}\n\n", f.name, params, f.name,
+      s += fmt::format("void {}({})\n{{\n{}    printf(\"act {}{}\\n\"{});\n}}\n\n", f.name, params, check, f.name,
                        f.params.empty() ? "" : "(" + format + ")", args);
     } else {
       std::string t = model::type_name(f.result);
-      s += fmt::format("{0} {1}({2})\n{{\n    {0} v = ({0})value_of(\"{1}\");\n"
+      s += fmt::format("{0} {1}({2})\n{{\n{3}    {0} v = ({0})value_of(\"{1}\");\n"
                        "    printf(\"cond {1} -> %d\\n\", (int)v);\n    return v;\n}}\n\n",
-                       t, f.name, params);
+                       t, f.name, params, check);
     }
   }
   s += fmt::format(
       "int main(void)\n{{\n    {0} m[{1}];\n    int tick = 0, k, j;\n"
       "    setvbuf(stdout, NULL, _IONBF, 0);\n"
-      "    for (k = 0; k < {1}; ++k) {{\n        {0}_init(&m[k]);\n        {0}_set_agent(&m[k], k);\n    }}\n"
+      "    for (k = 0; k < {1}; ++k) {{\n        {0}_init(&m[k]);\n        {0}_set_agent(&m[k], k);\n{2}    }}\n"
       "    while (fgets(script, sizeof script, stdin) != NULL) {{\n"
       "        printf(\"tick %d\\n\", ++tick);\n"
       "        for (k = 0; k < {1}; ++k) {{\n"
@@ -84,18 +97,21 @@ std::string team_harness(const model::Model &m, const model::Chart &chart, const
       "            }}\n"
       "        }}\n"
       "    }}\n    return 0;\n}}\n",
-      X, agents);
+      X, agents, context ? fmt::format("        {}_set_context(&m[k], &agent_ids[k]);\n", X) : "");
   return s;
 }
 
 /// Compiles the chart and runs `agents` engines of it on `script` with gcc and clang; the log.
-std::string run_team(const std::string &test, const std::string &chart, int agents, const std::string &script) {
-  auto compiled = compile_chart({{"chart.fsm", chart}}, "chart.fsm", "engine.c");
+/// `context`: the engines are made with --context, each given its own (team_harness()).
+std::string run_team(const std::string &test, const std::string &chart, int agents, const std::string &script,
+                     bool context = false) {
+  auto compiled =
+      compile_chart({{"chart.fsm", chart}}, "chart.fsm", "engine.c", true, EngineForm::Auto, context ? "void *" : "");
   INFO(compiled->errors);
   REQUIRE(!compiled->diag.has_errors());
   fs::path dir = scratch_dir("team_" + test);
   for (const auto &f : compiled->files) write_file(dir / base_name(f.path), f.contents);
-  write_file(dir / "harness.c", team_harness(compiled->model, compiled->the_chart(), "engine.h", agents));
+  write_file(dir / "harness.c", team_harness(compiled->model, compiled->the_chart(), "engine.h", agents, context));
   write_file(dir / "script.txt", script);
   std::string first;
   for (const auto &cc : c_compilers()) {
@@ -141,7 +157,10 @@ fsm Census {
 }  // namespace
 
 TEST_CASE("c engine team: the fetch example, three agents under the reference exchange", "[c_backend][run][team]") {
-  std::string log = run_team("fetch", kFetch, 3, "Arrived@1 Arrived@2\nArrived Holding@1\nParked Holding\n");
+  const char *script = "Arrived@1 Arrived@2\nArrived Holding@1\nParked Holding\n";
+  std::string log = run_team("fetch", kFetch, 3, script);
+  // --context: each agent's engine gets its own context, and every call receives exactly it.
+  CHECK(run_team("fetch_context", kFetch, 3, script, true) == log);
   CHECK(log ==
         "tick 1\n"
         "agent 0\ncond Arrived -> 0\nact DriveToItem\nstate Go status 0\n"  // team(Grab) is 0: no reports yet

@@ -160,3 +160,26 @@ sfc Top { initial place A runs Leaf; }
   CHECK(one.exit_code == 0);
   CHECK(one.out.rfind("digraph \"Top\"", 0) == 0);
 }
+
+TEST_CASE("gfec: --context and --names are the C engine's: other back ends reject them (exit 2)") {
+  std::string dir = scratch_dir("driver-context");
+  write_file(dir + "/tiny.sfc", kGood);
+  auto c = run_command("cd " + dir + " && " + gfec_exe + " --context-type='struct bot *' --names tiny.sfc -o e.c");
+  CHECK(c.out == "");
+  REQUIRE(c.exit_code == 0);
+  const std::string header = read_file(dir + "/e.h");
+  CHECK(header.find("void Go(struct bot *ctx);") != std::string::npos);
+  CHECK(header.find("bool Ready(struct bot *ctx);") != std::string::npos);
+  CHECK(header.find("void Tiny_set_context(Tiny *m, struct bot *ctx);") != std::string::npos);
+  CHECK(header.find("const char *Tiny_place_name(int place);") != std::string::npos);
+  auto dot = run_command("cd " + dir + " && " + gfec_exe + " --emit=dot --context tiny.sfc -o t.dot");
+  CHECK(dot.exit_code == 2);
+  CHECK(dot.out == "gfec: error: --context applies only to the C engine; --emit=dot does not take it\n");
+  CHECK_FALSE(std::filesystem::exists(dir + "/t.dot"));
+  auto json = run_command("cd " + dir + " && " + gfec_exe + " --emit=json --names tiny.sfc -o t.json");
+  CHECK(json.exit_code == 2);
+  CHECK(json.out == "gfec: error: --names applies only to the C engine; --emit=json does not take it\n");
+  auto help = run_command(gfec_exe + " --help");
+  CHECK(help.out.find("--context-type") != std::string::npos);
+  CHECK(help.out.find("--names") != std::string::npos);
+}

@@ -30,7 +30,7 @@ _gfec() {
   case $prev in
     -o|--output|-MF) COMPREPLY=($(compgen -f -- "$cur")); return ;;
     -I) COMPREPLY=($(compgen -d -- "$cur")); return ;;
-    --chart|-MT) return ;;
+    --chart|-MT|--context-type) return ;;
   esac
   case $cur in
     --emit=*) COMPREPLY=($(compgen -P --emit= -W 'c cpp json dot svg toolbox-skeleton' -- "${cur#--emit=}")); return ;;
@@ -50,7 +50,7 @@ _gfec() {
       compopt -o nospace 2>/dev/null; return ;;
     -*)
       COMPREPLY=($(compgen -W '-o -I --check --analyze --emit= --chart --engine= --no-line-directives
-        -W -w -Wall -Werror -f -MD -MMD -MF -MP -MT --help --version' -- "$cur"))
+        --context --context-type= --names -W -w -Wall -Werror -f -MD -MMD -MF -MP -MT --help --version' -- "$cur"))
       [[ ${COMPREPLY[0]} == *= ]] && compopt -o nospace 2>/dev/null
       return ;;
   esac
