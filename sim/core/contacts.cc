@@ -1,4 +1,5 @@
-// Collision handling: robot geoms against the environment, never robot against robot.
+// Collision handling: each robot's geoms against the environment, and each pair of robots
+// against each other; a robot's own geoms never collide with each other.
 #include <algorithm>
 
 #include "core/simulation_impl.h"
@@ -20,21 +21,15 @@ double friction(Part p) {
   return 0.0;
 }
 
-void near_callback(void* data, dGeomID a, dGeomID b) {
-  auto* sim = static_cast<Simulation::Impl*>(data);
-  // dSpaceCollide2 hands us (robot geom, environment geom); keep that order.
-  if (dGeomGetSpace(a) != sim->robot_space) std::swap(a, b);
-  const Part part = part_of(a);
+/// What a near callback collides: robot `a` against the environment (b == nullptr) or
+/// against robot `b`.
+struct Pair {
+  Simulation::Impl* sim;
+  Robot* a;
+  Robot* b;
+};
 
-  dContact contact[kMaxContacts];
-  const int n = dCollide(a, b, kMaxContacts, &contact[0].geom, sizeof(dContact));
-  if (n == 0) return;
-
-  if (part == Part::Bumper) {  // a sensor: it notices, it never pushes
-    if (b != sim->floor) sim->bumper_touch_step = true;
-    return;
-  }
-  const double mu = friction(part);
+void make_contacts(Simulation::Impl* sim, dContact* contact, int n, double mu) {
   for (int i = 0; i < n; ++i) {
     dSurfaceParameters& s = contact[i].surface;
     s.mode = dContactApprox1 | dContactSoftERP | dContactSoftCFM;
@@ -46,10 +41,48 @@ void near_callback(void* data, dGeomID a, dGeomID b) {
   }
 }
 
+void near_callback(void* data, dGeomID a, dGeomID b) {
+  const Pair& pair = *static_cast<Pair*>(data);
+  Simulation::Impl* sim = pair.sim;
+  // dSpaceCollide2 hands us one geom of each space; keep the order (robot a's first).
+  if (dGeomGetSpace(a) != pair.a->space) std::swap(a, b);
+  const Part part = part_of(a);
+
+  dContact contact[kMaxContacts];
+  const int n = dCollide(a, b, kMaxContacts, &contact[0].geom, sizeof(dContact));
+  if (n == 0) return;
+
+  if (!pair.b) {                 // against the environment
+    if (part == Part::Bumper) {  // a sensor: it notices, it never pushes
+      if (b != sim->floor) pair.a->bumper_touch_step = true;
+      return;
+    }
+    make_contacts(sim, contact, n, friction(part));
+    return;
+  }
+  // Robot against robot: a bumper feels the other robot (and pushes nothing); other parts
+  // push each other with the lower of their two frictions.
+  sim->touch_pair(pair.a->index, pair.b->index);
+  const Part other = part_of(b);
+  if (part == Part::Bumper) pair.a->bumper_touch_step = true;
+  if (other == Part::Bumper) pair.b->bumper_touch_step = true;
+  if (part == Part::Bumper || other == Part::Bumper) return;
+  make_contacts(sim, contact, n, std::min(friction(part), friction(other)));
+}
+
 }  // namespace
 
 void Simulation::Impl::collide() {
-  dSpaceCollide2(reinterpret_cast<dGeomID>(robot_space), reinterpret_cast<dGeomID>(env_space), this, &near_callback);
+  for (Robot& r : robots) {
+    Pair pair{this, &r, nullptr};
+    dSpaceCollide2(reinterpret_cast<dGeomID>(r.space), reinterpret_cast<dGeomID>(env_space), &pair, &near_callback);
+  }
+  for (std::size_t i = 0; i < robots.size(); ++i)
+    for (std::size_t j = i + 1; j < robots.size(); ++j) {
+      Pair pair{this, &robots[i], &robots[j]};
+      dSpaceCollide2(reinterpret_cast<dGeomID>(robots[i].space), reinterpret_cast<dGeomID>(robots[j].space), &pair,
+                     &near_callback);
+    }
 }
 
 }  // namespace carbot

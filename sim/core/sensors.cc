@@ -10,25 +10,28 @@ namespace carbot {
 
 // Analytic: the sensor's spot is straight below it on the floor; it sees black while the
 // spot lies within half the line width of the painted polyline.
-Vec2 Simulation::Impl::ir_spot(Side side) const {
+Vec2 Robot::ir_spot(Side side) const {
   dVector3 p;
   const double y = side == Side::Left ? model::kIrY : -model::kIrY;
   dBodyGetRelPointPos(chassis, model::kIrX, y, -model::kChassisHeight / 2, p);
   return {p[0], p[1]};
 }
 
-bool Simulation::Impl::line_black(Side side) const {
+bool Simulation::Impl::line_black(const Robot& r, Side side) const {
   if (world.line.points.empty()) return false;
-  return locate_on_line(world.line, ir_spot(side)).distance < world.line.width / 2;
+  return locate_on_line(world.line, r.ir_spot(side)).distance < world.line.width / 2;
 }
 
 // A fan of rays across the beam, each placed from the chassis pose and the mount angle and
 // collided against the environment only. A ray that meets a surface more obliquely than
 // kSonarMaxIncidence returns no echo, as real ultrasound glances off; the reading is the
 // nearest echo of the fan.
-double Simulation::Impl::sonar_range() const {
-  const dReal* pos = dBodyGetPosition(chassis);
-  const dReal* R = dBodyGetRotation(chassis);
+//
+// Other robots are not queried: the beam is 20 cm above the floor and a Carbot's chassis ends
+// at 17 cm (only its thin sonar mast is higher), so the beam passes over them, as over a low crate.
+double Simulation::Impl::sonar_range(const Robot& r) const {
+  const dReal* pos = dBodyGetPosition(r.chassis);
+  const dReal* R = dBodyGetRotation(r.chassis);
   const double heading = std::atan2(R[4], R[0]);
   const double c = std::cos(heading), s = std::sin(heading);
   const double ox = pos[0] + c * model::kSonarX, oy = pos[1] + s * model::kSonarX;
@@ -36,7 +39,7 @@ double Simulation::Impl::sonar_range() const {
   double best = model::kSonarRange;
   for (int i = 0; i < model::kSonarRays; ++i) {
     const double spread = model::kSonarRays == 1 ? 0 : -1.0 + 2.0 * i / (model::kSonarRays - 1);
-    const double a = heading + sonar_angle + spread * model::kSonarHalfBeam;
+    const double a = heading + r.sonar_angle + spread * model::kSonarHalfBeam;
     const double dx = std::cos(a), dy = std::sin(a);
     dGeomRaySet(sonar_ray, ox, oy, model::kSonarZ, dx, dy, 0);
     for (int g = 0; g < dSpaceGetNumGeoms(env_space); ++g) {
@@ -52,8 +55,8 @@ double Simulation::Impl::sonar_range() const {
   return best;
 }
 
-void Simulation::Impl::move_sonar_mount() {
-  const double max_move = model::kSonarMountRate * config.physics_step;
+void Robot::move_sonar_mount(double physics_step) {
+  const double max_move = model::kSonarMountRate * physics_step;
   sonar_angle += std::clamp(sonar_target - sonar_angle, -max_move, max_move);
 }
 
