@@ -8,6 +8,12 @@ namespace carbot {
 namespace {
 
 constexpr int kMaxContacts = 4;
+constexpr double kSoftCfm = 1e-4;  ///< robot against the environment
+/// Robot against robot: two robots pushing each other with stalled motors make ODE's LCP
+/// degenerate ("LCP internal error, s <= 0") at the world's stiffness; a softer contact
+/// (a spring of ~33 kN/m at a 2 ms step: about a millimetre of give under the 40 N two
+/// Carbot drives push with) keeps it well posed.
+constexpr double kRobotSoftCfm = 3e-3;
 
 /// Friction coefficient by robot part. dContactApprox1 makes mu a coefficient (a fraction
 /// of the normal force); without it ODE reads mu as a force in newtons.
@@ -29,13 +35,13 @@ struct Pair {
   Robot* b;
 };
 
-void make_contacts(Simulation::Impl* sim, dContact* contact, int n, double mu) {
+void make_contacts(Simulation::Impl* sim, dContact* contact, int n, double mu, double cfm) {
   for (int i = 0; i < n; ++i) {
     dSurfaceParameters& s = contact[i].surface;
     s.mode = dContactApprox1 | dContactSoftERP | dContactSoftCFM;
     s.mu = mu;
     s.soft_erp = 0.2;
-    s.soft_cfm = 1e-4;
+    s.soft_cfm = cfm;
     dJointID j = dJointCreateContact(sim->ode_world, sim->contacts, &contact[i]);
     dJointAttach(j, dGeomGetBody(contact[i].geom.g1), dGeomGetBody(contact[i].geom.g2));
   }
@@ -57,7 +63,7 @@ void near_callback(void* data, dGeomID a, dGeomID b) {
       if (b != sim->floor) pair.a->bumper_touch_step = true;
       return;
     }
-    make_contacts(sim, contact, n, friction(part));
+    make_contacts(sim, contact, n, friction(part), kSoftCfm);
     return;
   }
   // Robot against robot: a bumper feels the other robot (and pushes nothing); other parts
@@ -67,7 +73,7 @@ void near_callback(void* data, dGeomID a, dGeomID b) {
   if (part == Part::Bumper) pair.a->bumper_touch_step = true;
   if (other == Part::Bumper) pair.b->bumper_touch_step = true;
   if (part == Part::Bumper || other == Part::Bumper) return;
-  make_contacts(sim, contact, n, std::min(friction(part), friction(other)));
+  make_contacts(sim, contact, n, std::min(friction(part), friction(other)), kRobotSoftCfm);
 }
 
 }  // namespace

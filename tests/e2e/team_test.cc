@@ -1,0 +1,260 @@
+// Several Carbots in one world (docs/sim.md, "Several robots"): in process, robots collide with
+// each other and each is driven on its own; through carbot-sim, the team sample
+// (samples/fetch_team.fsm) with the reference exchange, without any exchange (the contrast
+// run), with a late and a lossy one.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/geometry.h"
+#include "core/simulation.h"
+#include "core/world.h"
+#include "support.h"
+
+using namespace carbot;
+
+namespace {
+
+void run_for(Simulation &sim, double seconds) {
+  const double end = sim.time() + seconds - 1e-9;
+  while (sim.time() < end) sim.step_control();
+}
+
+/// An open floor with robots at the given poses.
+World floor_with(std::vector<Start> robots) {
+  World w;
+  w.size = {20, 20};
+  w.robots = std::move(robots);
+  w.start = w.robots.front();
+  return w;
+}
+
+std::string world_error(const std::string &text) {
+  try {
+    carbot::parse_world(text, "w.json");
+  } catch (const carbot::WorldError &e) { return e.what(); }
+  return "(accepted)";
+}
+
+/// The robots of a result.json by their final state: how many are in `state`.
+int robots_in(const nlohmann::json &result, const std::string &state) {
+  int n = 0;
+  for (const auto &r : result["robots"]) n += r["state"] == state ? 1 : 0;
+  return n;
+}
+
+/// The time the state log of robot `robot` first shows `event` ("state Grab PickUp()"), or -1.
+double first(const nlohmann::json &result, int robot, const std::string &event) {
+  for (const auto &e : result["robots"][robot]["state_log"])
+    if (e["event"] == event) return e["t"].get<double>();
+  return -1;
+}
+
+const char *kGrab = "state Grab PickUp()";
+const char *kYield = "state Yield Park()";
+
+/// The team sample with the reference exchange: exactly one robot picks the item up and holds
+/// it (state Got); every other one yields and parks (state Left) without touching anyone, and
+/// it yields one tick after the grabber started (the reports of tick t are read in tick t+1).
+void check_team_fetches(const char *world_file, int robots) {
+  const e2e::SimRun run = e2e::run_sim("samples/fetch_team.fsm", world_file, 15);
+  INFO(run.output);
+  REQUIRE(run.exit_code == 0);
+  const nlohmann::json &r = run.result;
+  CHECK(r["status"] == "succeeded");
+  CHECK(r["sim_time_s"].get<double>() < 12);
+  REQUIRE(r["robots"].size() == static_cast<std::size_t>(robots));
+  CHECK(robots_in(r, "Got") == 1);
+  CHECK(robots_in(r, "Left") == robots - 1);
+  CHECK(r["robot_contacts"] == 0);
+  CHECK(r["bumps"] == 0);
+  int grabber = -1;
+  for (const auto &robot : r["robots"])
+    if (robot["state"] == "Got") grabber = robot["robot"];
+  REQUIRE(grabber >= 0);
+  CHECK(r["robots"][grabber]["holding"] == r["items"][0]["name"]);
+  CHECK(r["items"][0]["held_by"] == grabber);
+  const double grabbed = first(r, grabber, kGrab);
+  for (int i = 0; i < robots; ++i) {
+    if (i == grabber) continue;
+    CHECK(r["robots"][i]["holding"].is_null());
+    CHECK(first(r, i, kGrab) < 0);  // never tried to pick it up
+    CHECK(first(r, i, kYield) == Approx(grabbed + r["control_period_s"].get<double>()).margin(1e-6));
+    // Parked: it backed away from the item and stands clear of it.
+    const auto &p = r["robots"][i]["final_pose"];
+    const auto &at = r["items"][0]["at"];
+    CHECK(std::hypot(p["x"].get<double>() - at[0].get<double>(), p["y"].get<double>() - at[1].get<double>()) > 0.8);
+  }
+  const auto &x = r["exchange"];
+  CHECK(x["enabled"] == true);
+  CHECK(x["reports_lost"] == 0);
+  CHECK(x["reports_sent"].get<long>() > 0);
+}
+
+/// The contrast run: the same robots and chart with no exchange, so team(Grab) stays 0 for all.
+/// Nobody yields; more than one robot ends up trying to pick up the one item.
+nlohmann::json check_alone_contends(const char *world_file) {
+  const e2e::SimRun run = e2e::run_sim("samples/fetch_team.fsm", world_file, 15, "--no-exchange");
+  INFO(run.output);
+  REQUIRE(run.exit_code == 0);
+  const nlohmann::json &r = run.result;
+  CHECK(r["status"] == "running");  // some robot never finishes
+  CHECK(robots_in(r, "Left") == 0);
+  CHECK(robots_in(r, "Got") == 1);  // the gripper holds one robot's item...
+  CHECK(robots_in(r, "Grab") >= 1);  // ... and another robot is still trying to pick it up
+  CHECK(r["exchange"]["enabled"] == false);
+  CHECK(r["exchange"]["reports_sent"] == 0);
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("team model: robots collide with each other and the bumper feels another robot", "[e2e][team]") {
+  // Robot 0 drives at robot 1, which stands 1.2 m ahead facing it.
+  Simulation sim(floor_with({{{0, 0}, 0}, {{1.2, 0}, 180}}));
+  REQUIRE(sim.robot_count() == 2);
+  sim.select(0);
+  sim.drive(0.25, 0);
+  run_for(sim, 6);
+  sim.select(0);
+  CHECK(sim.bumps() == 1);  // felt robot 1
+  REQUIRE(sim.robot_contacts().size() == 1);
+  CHECK(sim.robot_contacts().front().a == 0);
+  CHECK(sim.robot_contacts().front().b == 1);
+  // Where: between the two centres (robot 0 stopped with its bumper at robot 1's).
+  CHECK(sim.robot_contacts().front().at.x == Approx((1.2 - 0.46 + 1.2) / 2).margin(0.05));
+  // Robot 0 did not drive through robot 1: their centres stay a body apart. Robot 1's motors
+  // hold its wheels as strongly as robot 0's drive them, so it is hardly pushed.
+  const Pose p0 = sim.pose();
+  sim.select(1);
+  const Pose p1 = sim.pose();
+  CHECK(p0.x > 0.7);                // it drove up to robot 1
+  CHECK(p1.x > 1.2 - 0.005);        // robot 1 was not pulled, nor passed
+  CHECK(p1.x - p0.x > 0.40 - 0.01);  // two half lengths (soft contacts)
+  CHECK(sim.bumps() == 1);                 // bumper to bumper: robot 1 felt it too
+}
+
+TEST_CASE("team model: each robot is driven on its own and grips only a free item", "[e2e][team]") {
+  World w = floor_with({{{0, 0}, 0}, {{0, 2}, 180}});
+  w.items.push_back({"cup", {0.29, 0}, {1, 1}});
+  Simulation sim(w);
+  sim.select(1);
+  sim.drive(0.2, 0);
+  sim.select(0);
+  CHECK(sim.grip(0));  // the cup lies at robot 0's gripper point
+  run_for(sim, 2);
+  CHECK(sim.pose().x == Approx(0).margin(0.01));  // robot 0 was told nothing
+  CHECK(sim.holder(0) == 0);
+  sim.select(1);
+  CHECK(sim.pose().x < -0.3);  // robot 1 drove (heading 180: towards -x)
+  CHECK(sim.held_item() == -1);
+  CHECK_FALSE(sim.grip(0));  // robot 0 holds it
+}
+
+TEST_CASE("team world files: start lists one pose per robot", "[e2e][team][world]") {
+  const World w = e2e::world("sim/worlds/fetch_room.json");
+  REQUIRE(w.robots.size() == 3);
+  CHECK(w.start.position.x == w.robots[0].position.x);
+  CHECK(e2e::world("sim/worlds/cleanup.json").robots.size() == 1);  // the one-robot form
+  CHECK(world_error(R"({"size": [2, 2], "start": []})") == "w.json: start: expected at least one robot");
+  CHECK(world_error(R"({"size": [2, 2], "start": [{"pose": [0, 0, 0]}, {"pose": [1, 0]}]})") ==
+        "w.json: start[1].pose: expected [x, y, heading_deg]");
+  CHECK(world_error(R"({"size": [2, 2], "start": [{"pose": [0, 0, 0]}, {"pos": [1, 0, 0]}]})") ==
+        "w.json: start[1].pos: unknown field (expected one of: pose)");
+  std::string nine = R"({"size": [9, 9], "start": [)";
+  for (int i = 0; i < 9; ++i) nine += std::string(i ? ", " : "") + "{\"pose\": [" + std::to_string(i) + ", 0, 0]}";
+  CHECK(world_error(nine + "]}") == "w.json: start: expected at most 8 robots, got 9");
+}
+
+TEST_CASE("team: with the exchange one of three robots fetches the cup, the others park", "[e2e][team]") {
+  check_team_fetches("sim/worlds/fetch_room.json", 3);
+}
+
+TEST_CASE("team: with the exchange one of two robots fetches the book in the hall, the other parks", "[e2e][team]") {
+  check_team_fetches("sim/worlds/fetch_hall.json", 2);
+}
+
+TEST_CASE("team: without the exchange three robots contend for the cup and run into each other", "[e2e][team]") {
+  const nlohmann::json r = check_alone_contends("sim/worlds/fetch_room.json");
+  CHECK(robots_in(r, "Grab") == 2);  // both latecomers try to pick up a cup another robot holds
+  CHECK(r["robot_contacts"].get<int>() >= 1);
+  CHECK(r["bumps"].get<int>() >= 1);
+}
+
+TEST_CASE("team: without the exchange the second robot in the hall tries to take the held book", "[e2e][team]") {
+  const nlohmann::json r = check_alone_contends("sim/worlds/fetch_hall.json");
+  // Face to face, grippers on the same book: it stands in Grab, gripping in vain, never parking.
+  CHECK(robots_in(r, "Grab") == 1);
+  int grabber = r["items"][0]["held_by"];
+  CHECK(first(r, 1 - grabber, kGrab) > first(r, grabber, kGrab));
+}
+
+TEST_CASE("team: reports two seconds late let a second robot start picking up", "[e2e][team]") {
+  const e2e::SimRun run = e2e::run_sim("samples/fetch_team.fsm", "sim/worlds/fetch_room.json", 15,
+                                       "--exchange-delay 200");
+  INFO(run.output);
+  REQUIRE(run.exit_code == 0);
+  const nlohmann::json &r = run.result;
+  CHECK(r["exchange"]["delay_ticks"] == 200);
+  CHECK(robots_in(r, "Got") == 1);
+  // The grabber started at ~4.7 s; the robot that arrives within 2 s of it has not heard yet.
+  CHECK(robots_in(r, "Grab") == 1);
+  CHECK(robots_in(r, "Left") == 1);
+}
+
+TEST_CASE("team: a lossy exchange is repeatable with its seed; trace and picture carry every robot", "[e2e][team]") {
+  const std::string lossy = "--exchange-loss 0.9 --seed 7";
+  const e2e::SimRun a = e2e::run_sim("samples/fetch_team.fsm", "sim/worlds/fetch_room.json", 12, lossy);
+  const e2e::SimRun b = e2e::run_sim("samples/fetch_team.fsm", "sim/worlds/fetch_room.json", 12, lossy);
+  INFO(a.output);
+  REQUIRE(a.exit_code == 0);
+  CHECK(a.trace_text == b.trace_text);
+  CHECK(a.result == b.result);
+  const auto &x = a.result["exchange"];
+  CHECK(x["loss"] == 0.9);
+  CHECK(x["seed"] == 7);
+  // About 90% of the reports were lost.
+  const double lost = x["reports_lost"].get<double>() / x["reports_sent"].get<double>();
+  CHECK(lost == Approx(0.9).margin(0.03));
+
+  // The trace: a robot column, every robot once per tick, in robot order.
+  std::istringstream in(a.trace_text);
+  std::string line;
+  std::getline(in, line);
+  CHECK(line == "t,robot,x,y,heading,active");
+  int rows = 0, expected_robot = 0;
+  bool in_order = true;
+  while (std::getline(in, line)) {
+    int robot = -1;
+    double t = 0;
+    if (std::sscanf(line.c_str(), "%lf,%d,", &t, &robot) != 2) continue;
+    in_order = in_order && robot == expected_robot;
+    expected_robot = (expected_robot + 1) % 3;
+    ++rows;
+  }
+  CHECK(in_order);
+  CHECK(rows % 3 == 0);
+  CHECK(rows / 3 == static_cast<int>(std::lround(a.result["sim_time_s"].get<double>() / 0.01)) + 1);
+  // The picture names each robot.
+  for (const char *label : {"robot 0", "robot 1", "robot 2"}) CHECK(a.svg.find(label) != std::string::npos);
+}
+
+TEST_CASE("team: more robots than the team's size, or the viewer with several robots, are refused", "[e2e][team]") {
+  e2e::TempDir dir;
+  const std::string five = dir.file("five.json");
+  std::ofstream(five) << R"({"size": [6, 6], "items": [{"name": "cup", "at": [0, 0], "destination": [1, 1]}],
+    "start": [{"pose": [-2, 0, 0]}, {"pose": [2, 0, 180]}, {"pose": [0, 2, -90]}, {"pose": [0, -2, 90]},
+              {"pose": [-2, -2, 45]}]})";
+  const e2e::SimRun run = e2e::run_sim("samples/fetch_team.fsm", five, 1);
+  CHECK(run.exit_code == 1);
+  CHECK(run.output.find("5 robots, but Fetch is a team of at most 4 agents") != std::string::npos);
+  const e2e::SimRun viewer =
+      e2e::run_sim("samples/fetch_team.fsm", "sim/worlds/fetch_hall.json", 1, "--html " + dir.file("v.html"));
+  CHECK(viewer.exit_code == 2);
+  CHECK(viewer.output.find("the run viewer (--html, --record) shows one robot") != std::string::npos);
+}
