@@ -29,10 +29,11 @@
 #define FETCHBOT_PARK_DISTANCE 0.9 /* m: a parked robot's centre is this far from the item */
 #define FETCHBOT_BACK_SPEED 0.20   /* m/s backing away to park */
 #define FETCHBOT_STILL 0.02        /* m/s: slower than this is standing */
+#define FETCHBOT_DELIVERED 0.10    /* m: an item this close to its destination is there */
 
 /* One robot's memory. */
 struct FetchBot {
-  double handle_since; /* when the gripper started closing, -1 idle */
+  double handle_since; /* when the gripper started closing or opening, -1 idle */
 };
 static struct FetchBot robots[CARBOT_MAX_ROBOTS];
 
@@ -120,6 +121,29 @@ void FetchBot_PickUp(void) {
   (void)carbot_grip(0); /* fails if another robot holds it: PickUp goes on trying */
 }
 
+/* Drives the held item to its destination, then stands still while the gripper opens and
+ * puts it down. */
+void FetchBot_Carry(void) {
+  CarbotItem it;
+  double gx, gy;
+  if (!FetchBot_Holding()) {
+    carbot_drive(0, 0);
+    return;
+  }
+  it = carbot_item(0);
+  carbot_gripper_point(&gx, &gy);
+  if (dist(gx, gy, it.dest_x, it.dest_y) >= FETCHBOT_ARRIVED) {
+    me()->handle_since = -1;
+    go_to(it.dest_x, it.dest_y);
+    return;
+  }
+  carbot_drive(0, 0);
+  if (me()->handle_since < 0) me()->handle_since = carbot_time();
+  if (carbot_time() - me()->handle_since < FETCHBOT_HANDLE_TIME) return;
+  me()->handle_since = -1;
+  carbot_release();
+}
+
 /* Backs away from the item, still facing it, until FETCHBOT_PARK_DISTANCE from it; then stands. */
 void FetchBot_Park(void) {
   double x, y;
@@ -150,6 +174,13 @@ bool FetchBot_Arrived(void) {
 }
 
 bool FetchBot_Holding(void) { return carbot_item_count() > 0 && carbot_held_item() == 0; }
+
+bool FetchBot_Delivered(void) {
+  CarbotItem it;
+  if (carbot_item_count() < 1) return false;
+  it = carbot_item(0);
+  return !it.held && dist(it.x, it.y, it.dest_x, it.dest_y) < FETCHBOT_DELIVERED;
+}
 
 bool FetchBot_Parked(void) {
   double x, y;

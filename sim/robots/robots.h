@@ -37,12 +37,14 @@ bool Stuck(void);
  * compiled with its calls renamed to these (sim/driver/chart_build.cc) */
 void FetchBot_DriveToItem(void);
 void FetchBot_PickUp(void);
+void FetchBot_Carry(void);
 void FetchBot_Park(void);
 void FetchBot_Beep(int times);
 void FetchBot_Lights(bool on);
 bool FetchBot_Arrived(void);
 bool FetchBot_Holding(void);
 bool FetchBot_Parked(void);
+bool FetchBot_Delivered(void);
 
 /* Forget all state of a library (every robot's); carbot-sim calls these before a run. */
 void linebot_reset(void);
