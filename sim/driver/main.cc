@@ -305,9 +305,10 @@ int main(int argc, char** argv) {
                     result.wall_seconds > 0 ? sim.time() / result.wall_seconds : 0.0);
         for (int i = 0; i < robots; ++i) {
           const RobotRun& r = result.robots[static_cast<std::size_t>(i)];
-          const std::string state =
-              r.state >= 0 && r.state < static_cast<int>(built.chart.rows.size()) ? built.chart.rows[r.state].name : "-";
-          std::printf("  robot %d: %s in %s, %.2f m driven, %d bump%s%s\n", i, r.status.c_str(), state.c_str(),
+          const std::string state = r.state >= 0 && r.state < static_cast<int>(built.chart.rows.size())
+                                        ? " in " + built.chart.rows[static_cast<std::size_t>(r.state)].name
+                                        : "";
+          std::printf("  robot %d: %s%s, %.2f m driven, %d bump%s%s\n", i, r.status.c_str(), state.c_str(),
                       r.distance_m, r.bumps, r.bumps == 1 ? "" : "s",
                       r.held >= 0 ? (", holding " + sim.items()[static_cast<std::size_t>(r.held)].name).c_str() : "");
         }

@@ -4,6 +4,7 @@
 // run), with a late and a lossy one.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -250,6 +251,50 @@ TEST_CASE("team: a lossy exchange is repeatable with its seed; trace and picture
   CHECK(rows / 3 == static_cast<int>(std::lround(a.result["sim_time_s"].get<double>() / 0.01)) + 1);
   // The picture names each robot.
   for (const char *label : {"robot 0", "robot 1", "robot 2"}) CHECK(a.svg.find(label) != std::string::npos);
+}
+
+// Not a team machine: each robot runs its own engine, with the HAL bound to it while it ticks,
+// and its own copy of the LineBot library's state (its side speeds); no exchange. Two line
+// followers on opposite straights of the oval both follow the line: each robot's sensor reads
+// and motor commands are its own.
+TEST_CASE("team: two line followers share the oval, each on its own engine and library state", "[e2e][team]") {
+  e2e::TempDir dir;
+  nlohmann::json oval;
+  std::ifstream(e2e::source("sim/worlds/oval.json")) >> oval;
+  oval["start"] = nlohmann::json::parse(R"([{"pose": [-0.4, -0.7, 0]}, {"pose": [0.4, 0.7, 180]}])");
+  const std::string world_file = dir.file("two_on_the_oval.json");
+  std::ofstream(world_file) << oval.dump();
+  const e2e::SimRun run = e2e::run_sim("samples/line_follower.sfc", world_file, 30);
+  INFO(run.output);
+  REQUIRE(run.exit_code == 0);
+  CHECK(run.result["status"] == "running");
+  CHECK(run.result["robot_contacts"] == 0);
+  CHECK(run.result.count("exchange") == 0);  // not a team machine
+  const World w = carbot::load_world(world_file);
+  for (int robot = 0; robot < 2; ++robot) {
+    std::istringstream in(run.trace_text);
+    std::string line;
+    std::getline(in, line);
+    double worst = 0, travelled = 0, last_along = -1;
+    const double length = line_length(w.line);
+    while (std::getline(in, line)) {
+      double t = 0, x = 0, y = 0;
+      int r = -1;
+      if (std::sscanf(line.c_str(), "%lf,%d,%lf,%lf", &t, &r, &x, &y) != 4 || r != robot) continue;
+      const LinePosition at = locate_on_line(w.line, {x, y});
+      worst = std::max(worst, at.distance);
+      if (last_along >= 0) {
+        double step = at.along - last_along;
+        if (step > length / 2) step -= length;
+        if (step < -length / 2) step += length;
+        travelled += step;
+      }
+      last_along = at.along;
+    }
+    INFO("robot " << robot << ": worst " << worst << " m, travelled " << travelled << " m");
+    CHECK(worst < 0.04);
+    CHECK(travelled > 4.0);  // ~0.2 m/s for 30 s, counter-clockwise (the line's order)
+  }
 }
 
 TEST_CASE("team: more robots than the team's size, or the viewer with several robots, are refused", "[e2e][team]") {
