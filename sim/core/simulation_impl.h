@@ -27,8 +27,8 @@ enum class Part { Chassis, Wheel, Caster, Bumper };
 
 /// One Carbot: its ODE bodies, joints and geoms, and its state between steps.
 struct Robot {
-  int index = 0;                   ///< robot number in the world (its agent number in a team)
-  dSpaceID space = nullptr;        ///< the robot's geoms (never collided with each other)
+  int index = 0;             ///< robot number in the world (its agent number in a team)
+  dSpaceID space = nullptr;  ///< the robot's geoms (never collided with each other)
   dBodyID chassis = nullptr;
   dGeomID chassis_geom = nullptr;
   dGeomID bumper_geom = nullptr;
@@ -46,9 +46,9 @@ struct Robot {
   int bumps = 0;
   std::vector<Bump> bump_log;
 
-  int held = -1;                    ///< the item in its gripper, -1 none
-  bool lights = false;              ///< its signal lights (a robot library may switch them)
-  int beeps = 0;                    ///< how many times it beeped
+  int held = -1;        ///< the item in its gripper, -1 none
+  bool lights = false;  ///< its signal lights (a robot library may switch them)
+  int beeps = 0;        ///< how many times it beeped
 
   Vec2 gripper_point() const;
 
@@ -83,7 +83,9 @@ struct Simulation::Impl {
   /// without it, per pair.
   std::vector<RobotContact> robot_contacts;
   std::vector<char> pair_touch_period, pair_touch_was;  ///< [a * robots + b], a < b
-  void touch_pair(int a, int b) { pair_touch_period[static_cast<size_t>(std::min(a, b)) * robots.size() + static_cast<size_t>(std::max(a, b))] = 1; }
+  void touch_pair(int a, int b) {
+    pair_touch_period[static_cast<size_t>(std::min(a, b)) * robots.size() + static_cast<size_t>(std::max(a, b))] = 1;
+  }
 
   double escape_until = -1;
   int escape_presses = 0;

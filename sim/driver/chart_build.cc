@@ -360,7 +360,8 @@ BuiltEngine build_engine(const Options& o, const std::string& dir) {
   write_file(dir + "/robot_names.h", renames);
   compile({o.cc, "-std=c99", "-O2", "-fPIC", "-shared", "-I", dir, "-include", dir + "/robot_names.h", "-o",
            built.library, dir + "/engine.c", dir + "/shim.c"},
-          {dir + "/engine.c", dir + "/shim.c", dir + "/robot_names.h"}, {dir}, o, built.library, "compiling the engine");
+          {dir + "/engine.c", dir + "/shim.c", dir + "/robot_names.h"}, {dir}, o, built.library,
+          "compiling the engine");
   return built;
 }
 

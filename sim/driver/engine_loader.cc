@@ -19,8 +19,9 @@ Engine::Engine(const std::string& library) {
   handle_ = dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (!handle_) {
     const char* why = dlerror();
-    throw LoadError(std::string("cannot load the engine: ") + (why ? why : library) +
-                    "\n  (carbot-sim's robot libraries implement samples/linebot.iface, cleanbot.iface and fetchbot.iface)");
+    throw LoadError(
+        std::string("cannot load the engine: ") + (why ? why : library) +
+        "\n  (carbot-sim's robot libraries implement samples/linebot.iface, cleanbot.iface and fetchbot.iface)");
   }
   auto size = reinterpret_cast<size_t (*)()>(symbol(handle_, kEngineSize, library));
   init_ = reinterpret_cast<void (*)(void*)>(symbol(handle_, kEngineInit, library));

@@ -298,11 +298,11 @@ int main(int argc, char** argv) {
                     sim.time(), sim.odometer(), sim.bumps(), sim.bumps() == 1 ? "" : "s", result.wall_seconds,
                     result.wall_seconds > 0 ? sim.time() / result.wall_seconds : 0.0);
       } else {
-        std::printf("carbot-sim: %s (%s) on %s, %d robots: %s at %.2f s, %zu robot contact%s (%.2f s, %.0fx real time)\n",
-                    built.chart.name.c_str(), built.chart.kind.c_str(), world.name.c_str(), robots,
-                    result.status.c_str(), sim.time(), sim.robot_contacts().size(),
-                    sim.robot_contacts().size() == 1 ? "" : "s", result.wall_seconds,
-                    result.wall_seconds > 0 ? sim.time() / result.wall_seconds : 0.0);
+        std::printf(
+            "carbot-sim: %s (%s) on %s, %d robots: %s at %.2f s, %zu robot contact%s (%.2f s, %.0fx real time)\n",
+            built.chart.name.c_str(), built.chart.kind.c_str(), world.name.c_str(), robots, result.status.c_str(),
+            sim.time(), sim.robot_contacts().size(), sim.robot_contacts().size() == 1 ? "" : "s", result.wall_seconds,
+            result.wall_seconds > 0 ? sim.time() / result.wall_seconds : 0.0);
         for (int i = 0; i < robots; ++i) {
           const RobotRun& r = result.robots[static_cast<std::size_t>(i)];
           const std::string state = r.state >= 0 && r.state < static_cast<int>(built.chart.rows.size())

@@ -43,8 +43,8 @@ struct Recording {
 /// One robot of a run with several (docs/sim.md, "Several robots"): its path, what its engine
 /// did, and how the robot ended.
 struct RobotRun {
-  std::string status = "running";  ///< of its engine: running | succeeded | failed | terminated
-  std::vector<TraceRow> trace;      ///< as RunResult::trace, every robot in every tick
+  std::string status = "running";        ///< of its engine: running | succeeded | failed | terminated
+  std::vector<TraceRow> trace;           ///< as RunResult::trace, every robot in every tick
   std::vector<std::vector<int>> active;  ///< per trace row, as Recording::active
   std::vector<EngineEvent> state_log;    ///< an fsm's "state Grab PickUp()" changes
   int state = -1;                        ///< an fsm's state at the end

@@ -228,7 +228,8 @@ void draw_path(Svg& s, const Frame& f, const RunReport& r) {
 
 /// A colour per robot (no red: red marks bumps; no orange or green: items and destinations).
 const char* robot_colour(std::size_t i) {
-  static const char* const kRobots[] = {"#1f6fd1", "#7b4fc9", "#16a3a3", "#a0522d", "#d6409f", "#6b6b6b", "#26262b", "#3a7d1a"};
+  static const char* const kRobots[] = {"#1f6fd1", "#7b4fc9", "#16a3a3", "#a0522d",
+                                        "#d6409f", "#6b6b6b", "#26262b", "#3a7d1a"};
   return kRobots[i % (sizeof kRobots / sizeof kRobots[0])];
 }
 constexpr const char* kContact = "#b8860b";
@@ -298,8 +299,9 @@ void draw_legend(Svg& s, double x, double y, double right, const RunReport& r) {
   std::vector<Entry> entries;
   const bool team = !r.run.robots.empty();
   for (std::size_t i = 0; i < r.run.robots.size(); ++i)
-    entries.push_back({fmt::format(R"(<line x1="0" y1="0" x2="22" y2="0" stroke="{}" stroke-width="3"/>)", robot_colour(i)),
-                       fmt::format("robot {}", i)});
+    entries.push_back(
+        {fmt::format(R"(<line x1="0" y1="0" x2="22" y2="0" stroke="{}" stroke-width="3"/>)", robot_colour(i)),
+         fmt::format("robot {}", i)});
   if (team && !r.sim.robot_contacts().empty())
     entries.push_back({fmt::format(R"(<path d="M4,0 l7,-7 l7,7 l-7,7 z" fill="{}"/>)", kContact), "robots touched"});
   if (!team && actor_names().empty())
@@ -388,9 +390,10 @@ std::string svg_picture(const RunReport& r) {
     facts = fmt::format("{} robots · {} bump{} · {} robot contact{}", r.run.robots.size(), bumps, bumps == 1 ? "" : "s",
                         touches, touches == 1 ? "" : "s");
     if (r.run.team_machine)
-      facts += r.run.exchange.enabled ? fmt::format(" · exchange: {} tick{} late, {:g}% lost", r.run.exchange.delay_ticks,
-                                                    r.run.exchange.delay_ticks == 1 ? "" : "s", r.run.exchange.loss * 100)
-                                      : std::string(" · no exchange");
+      facts += r.run.exchange.enabled
+                   ? fmt::format(" · exchange: {} tick{} late, {:g}% lost", r.run.exchange.delay_ticks,
+                                 r.run.exchange.delay_ticks == 1 ? "" : "s", r.run.exchange.loss * 100)
+                   : std::string(" · no exchange");
   }
   for (const ItemState& it : r.sim.items())
     facts += fmt::format(" · {} {:.2f} m from its destination{}", it.name, distance(it.at, it.destination),

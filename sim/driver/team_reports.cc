@@ -107,8 +107,8 @@ std::string team_result_json(const RunReport& r) {
       {"control_period_s", sim.config().control_period},
   };
   if (r.run.team_machine)
-    doc["exchange"] = {{"team", r.chart.team},   {"enabled", x.enabled}, {"delay_ticks", x.delay_ticks},
-                       {"loss", x.loss},         {"seed", x.seed},       {"reports_sent", x.sent},
+    doc["exchange"] = {{"team", r.chart.team},  {"enabled", x.enabled}, {"delay_ticks", x.delay_ticks},
+                       {"loss", x.loss},        {"seed", x.seed},       {"reports_sent", x.sent},
                        {"reports_lost", x.lost}};
   return doc.dump(2) + "\n";
 }

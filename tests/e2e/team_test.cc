@@ -111,9 +111,9 @@ nlohmann::json check_alone_contends(const char *world_file) {
   CHECK(r["status"] == "running");
   CHECK(robots_in(r, "Left") == 0);
   CHECK(robots_in(r, "Done") == 0);
-  CHECK(robots_in(r, "Carry") == 1);  // one robot got the item ...
+  CHECK(robots_in(r, "Carry") == 1);           // one robot got the item ...
   CHECK(r["robot_contacts"].get<int>() >= 1);  // ... and the others ran into it
-  CHECK(r["items"][0]["held"] == true);  // never put down where it belongs
+  CHECK(r["items"][0]["held"] == true);        // never put down where it belongs
   CHECK(item_to_destination(r) > 0.10);
   for (const auto &robot : r["robots"]) CHECK(first(r, robot["robot"], kYield) < 0);
   CHECK(r["exchange"]["enabled"] == false);
@@ -142,10 +142,10 @@ TEST_CASE("team model: robots collide with each other and the bumper feels anoth
   const Pose p0 = sim.pose();
   sim.select(1);
   const Pose p1 = sim.pose();
-  CHECK(p0.x > 0.7);                // it drove up to robot 1
-  CHECK(p1.x > 1.2 - 0.005);        // robot 1 was not pulled, nor passed
+  CHECK(p0.x > 0.7);                 // it drove up to robot 1
+  CHECK(p1.x > 1.2 - 0.005);         // robot 1 was not pulled, nor passed
   CHECK(p1.x - p0.x > 0.40 - 0.01);  // two half lengths (soft contacts)
-  CHECK(sim.bumps() == 1);                 // bumper to bumper: robot 1 felt it too
+  CHECK(sim.bumps() == 1);           // bumper to bumper: robot 1 felt it too
 }
 
 TEST_CASE("team model: each robot is driven on its own and grips only a free item", "[e2e][team]") {
@@ -198,8 +198,8 @@ TEST_CASE("team: without the exchange the second robot in the hall runs into the
 }
 
 TEST_CASE("team: with reports two seconds late the others run into the carrier before yielding", "[e2e][team]") {
-  const e2e::SimRun run = e2e::run_sim("samples/fetch_team.fsm", "sim/worlds/fetch_room.json", 20,
-                                       "--exchange-delay 200");
+  const e2e::SimRun run =
+      e2e::run_sim("samples/fetch_team.fsm", "sim/worlds/fetch_room.json", 20, "--exchange-delay 200");
   INFO(run.output);
   REQUIRE(run.exit_code == 0);
   const nlohmann::json &r = run.result;
@@ -211,8 +211,7 @@ TEST_CASE("team: with reports two seconds late the others run into the carrier b
   REQUIRE(carrier >= 0);
   // Each other robot yields 2 s and one tick after the carrier started picking up.
   for (int i = 0; i < 3; ++i)
-    if (i != carrier)
-      CHECK(first(r, i, kYield) == Approx(first(r, carrier, kGrab) + 2.01).margin(1e-6));
+    if (i != carrier) CHECK(first(r, i, kYield) == Approx(first(r, carrier, kGrab) + 2.01).margin(1e-6));
   CHECK(robots_in(r, "Left") == 2);
 }
 
