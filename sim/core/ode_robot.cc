@@ -140,6 +140,7 @@ void Robot::actuate() {
 
 void Simulation::Impl::destroy() {
   if (sonar_ray) dGeomDestroy(sonar_ray);
+  if (mast_probe) dGeomDestroy(mast_probe);
   if (contacts) dJointGroupDestroy(contacts);
   // Destroying a space destroys the geoms in it (cleanup mode is on by default).
   for (Robot& r : robots)

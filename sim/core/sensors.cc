@@ -27,8 +27,8 @@ bool Simulation::Impl::line_black(const Robot& r, Side side) const {
 // kSonarMaxIncidence returns no echo, as real ultrasound glances off; the reading is the
 // nearest echo of the fan.
 //
-// Other robots are not queried: the beam is 20 cm above the floor and a Carbot's chassis ends
-// at 17 cm (only its thin sonar mast is higher), so the beam passes over them, as over a low crate.
+// Of another robot the beam (20 cm above the floor) meets only the sonar mast: its chassis ends
+// at 17 cm, and the beam passes over it as over a low crate.
 double Simulation::Impl::sonar_range(const Robot& r) const {
   const dReal* pos = dBodyGetPosition(r.chassis);
   const dReal* R = dBodyGetRotation(r.chassis);
@@ -37,6 +37,13 @@ double Simulation::Impl::sonar_range(const Robot& r) const {
   const double ox = pos[0] + c * model::kSonarX, oy = pos[1] + s * model::kSonarX;
 
   double best = model::kSonarRange;
+  auto echo = [&](dGeomID geom, double dx, double dy) {
+    dContactGeom hit;
+    if (dCollide(sonar_ray, geom, 1, &hit, sizeof(hit)) == 0) return;
+    const double cos_incidence = std::fabs(hit.normal[0] * dx + hit.normal[1] * dy);
+    if (cos_incidence < std::cos(model::kSonarMaxIncidence)) return;
+    best = std::min(best, std::max(static_cast<double>(hit.depth), model::kSonarMinRange));
+  };
   for (int i = 0; i < model::kSonarRays; ++i) {
     const double spread = model::kSonarRays == 1 ? 0 : -1.0 + 2.0 * i / (model::kSonarRays - 1);
     const double a = heading + r.sonar_angle + spread * model::kSonarHalfBeam;
@@ -44,12 +51,16 @@ double Simulation::Impl::sonar_range(const Robot& r) const {
     dGeomRaySet(sonar_ray, ox, oy, model::kSonarZ, dx, dy, 0);
     for (int g = 0; g < dSpaceGetNumGeoms(env_space); ++g) {
       dGeomID geom = dSpaceGetGeom(env_space, g);
-      if (geom == floor) continue;
-      dContactGeom hit;
-      if (dCollide(sonar_ray, geom, 1, &hit, sizeof(hit)) == 0) continue;
-      const double cos_incidence = std::fabs(hit.normal[0] * dx + hit.normal[1] * dy);
-      if (cos_incidence < std::cos(model::kSonarMaxIncidence)) continue;
-      best = std::min(best, std::max(static_cast<double>(hit.depth), model::kSonarMinRange));
+      if (geom != floor) echo(geom, dx, dy);
+    }
+    for (const Robot& other : robots) {
+      if (&other == &r) continue;
+      dVector3 m;
+      const double top = model::kChassisZ + model::kChassisHeight / 2;
+      dBodyGetRelPointPos(other.chassis, model::kSonarX, 0, 0, m);
+      dGeomSetPosition(mast_probe, m[0], m[1], (top + model::kTotalHeight) / 2);
+      dGeomSetRotation(mast_probe, dBodyGetRotation(other.chassis));
+      echo(mast_probe, dx, dy);
     }
   }
   return best;

@@ -73,6 +73,9 @@ struct Simulation::Impl {
   dJointGroupID contacts = nullptr;
   dGeomID floor = nullptr;
   dGeomID sonar_ray = nullptr;  ///< in no space: queried with dCollide, never pushes anything
+  /// Several robots: a box in no space, moved onto another robot's sonar mast when a sonar
+  /// ray is tested against that robot (no body, never collides with anything).
+  dGeomID mast_probe = nullptr;
 
   std::vector<Robot> robots;  ///< in the world's order
   int selected = 0;           ///< the robot the public per-robot calls act on

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "core/carbot_model.h"
 #include "core/geometry.h"
 #include "core/simulation.h"
 #include "core/world.h"
@@ -146,6 +147,19 @@ TEST_CASE("team model: robots collide with each other and the bumper feels anoth
   CHECK(p1.x > 1.2 - 0.005);         // robot 1 was not pulled, nor passed
   CHECK(p1.x - p0.x > 0.40 - 0.01);  // two half lengths (soft contacts)
   CHECK(sim.bumps() == 1);           // bumper to bumper: robot 1 felt it too
+}
+
+TEST_CASE("team model: the sonar sees another robot's mast, not past it", "[e2e][team]") {
+  // Robot 1 stands 1.5 m ahead of robot 0, facing away: its mast (6 cm square, 10 cm ahead of
+  // its centre) is 1.6 - 0.03 m from robot 0's centre, whose sonar sits 10 cm ahead.
+  Simulation sim(floor_with({{{0, 0}, 0}, {{1.5, 0}, 0}}));
+  sim.select(0);
+  CHECK(sim.sonar_range() == Approx(1.6 - 0.03 - 0.10).margin(0.005));
+  sim.select(1);
+  CHECK(sim.sonar_range() == Approx(model::kSonarRange));  // nothing ahead of robot 1
+  // Half a metre to the side, robot 1 is outside the beam.
+  Simulation aside(floor_with({{{0, 0}, 0}, {{1.5, 0.5}, 0}}));
+  CHECK(aside.sonar_range() == Approx(model::kSonarRange));
 }
 
 TEST_CASE("team model: each robot is driven on its own and grips only a free item", "[e2e][team]") {
