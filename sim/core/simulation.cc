@@ -75,8 +75,8 @@ Simulation::Simulation(const World& world, SimConfig config) : impl_(std::make_u
   s.contacts = dJointGroupCreate(0);
   s.sonar_ray = dCreateRay(nullptr, model::kSonarRange);
   if (starts.size() > 1)
-    s.mast_probe = dCreateBox(nullptr, model::kMastSize, model::kMastSize, model::kTotalHeight - model::kChassisZ -
-                                                                               model::kChassisHeight / 2);
+    s.mast_probe = dCreateBox(nullptr, model::kMastSize, model::kMastSize,
+                              model::kTotalHeight - model::kChassisZ - model::kChassisHeight / 2);
   s.build_environment();
   for (std::size_t i = 0; i < starts.size(); ++i) s.robots[i].build(s.ode_world, starts[i]);
   s.pair_touch_period.assign(starts.size() * starts.size(), 0);
