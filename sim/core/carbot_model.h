@@ -48,6 +48,9 @@ constexpr int kSonarRays = 5;
 constexpr double kSonarMaxIncidence = 0.87;                 ///< rad (~50 deg): beyond this no echo returns
 constexpr double kSonarMountStop = 3.14159265358979323846;  ///< the mount turns +-180 deg
 constexpr double kSonarMountRate = 6.0;                     ///< rad/s, mount servo
+/// The mast the sonar sits on: a 6 cm square post from the chassis top to the robot's full
+/// height, above the sonar's position. Another robot's sonar sees it (the chassis is below the beam).
+constexpr double kMastSize = 0.06;
 
 // Two downward infrared line sensors just behind the bumper.
 constexpr double kIrX = 0.17;

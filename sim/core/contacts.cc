@@ -1,4 +1,5 @@
-// Collision handling: robot geoms against the environment, never robot against robot.
+// Collision handling: each robot's geoms against the environment, and each pair of robots
+// against each other; a robot's own geoms never collide with each other.
 #include <algorithm>
 
 #include "core/simulation_impl.h"
@@ -7,6 +8,12 @@ namespace carbot {
 namespace {
 
 constexpr int kMaxContacts = 4;
+constexpr double kSoftCfm = 1e-4;  ///< robot against the environment
+/// Robot against robot: two robots pushing each other with stalled motors make ODE's LCP
+/// degenerate ("LCP internal error, s <= 0") at the world's stiffness; a softer contact
+/// (a spring of ~33 kN/m at a 2 ms step: about a millimetre of give under the 40 N two
+/// Carbot drives push with) keeps it well posed.
+constexpr double kRobotSoftCfm = 3e-3;
 
 /// Friction coefficient by robot part. dContactApprox1 makes mu a coefficient (a fraction
 /// of the normal force); without it ODE reads mu as a force in newtons.
@@ -20,36 +27,68 @@ double friction(Part p) {
   return 0.0;
 }
 
+/// What a near callback collides: robot `a` against the environment (b == nullptr) or
+/// against robot `b`.
+struct Pair {
+  Simulation::Impl* sim;
+  Robot* a;
+  Robot* b;
+};
+
+void make_contacts(Simulation::Impl* sim, dContact* contact, int n, double mu, double cfm) {
+  for (int i = 0; i < n; ++i) {
+    dSurfaceParameters& s = contact[i].surface;
+    s.mode = dContactApprox1 | dContactSoftERP | dContactSoftCFM;
+    s.mu = mu;
+    s.soft_erp = 0.2;
+    s.soft_cfm = cfm;
+    dJointID j = dJointCreateContact(sim->ode_world, sim->contacts, &contact[i]);
+    dJointAttach(j, dGeomGetBody(contact[i].geom.g1), dGeomGetBody(contact[i].geom.g2));
+  }
+}
+
 void near_callback(void* data, dGeomID a, dGeomID b) {
-  auto* sim = static_cast<Simulation::Impl*>(data);
-  // dSpaceCollide2 hands us (robot geom, environment geom); keep that order.
-  if (dGeomGetSpace(a) != sim->robot_space) std::swap(a, b);
+  const Pair& pair = *static_cast<Pair*>(data);
+  Simulation::Impl* sim = pair.sim;
+  // dSpaceCollide2 hands us one geom of each space; keep the order (robot a's first).
+  if (dGeomGetSpace(a) != pair.a->space) std::swap(a, b);
   const Part part = part_of(a);
 
   dContact contact[kMaxContacts];
   const int n = dCollide(a, b, kMaxContacts, &contact[0].geom, sizeof(dContact));
   if (n == 0) return;
 
-  if (part == Part::Bumper) {  // a sensor: it notices, it never pushes
-    if (b != sim->floor) sim->bumper_touch_step = true;
+  if (!pair.b) {                 // against the environment
+    if (part == Part::Bumper) {  // a sensor: it notices, it never pushes
+      if (b != sim->floor) pair.a->bumper_touch_step = true;
+      return;
+    }
+    make_contacts(sim, contact, n, friction(part), kSoftCfm);
     return;
   }
-  const double mu = friction(part);
-  for (int i = 0; i < n; ++i) {
-    dSurfaceParameters& s = contact[i].surface;
-    s.mode = dContactApprox1 | dContactSoftERP | dContactSoftCFM;
-    s.mu = mu;
-    s.soft_erp = 0.2;
-    s.soft_cfm = 1e-4;
-    dJointID j = dJointCreateContact(sim->ode_world, sim->contacts, &contact[i]);
-    dJointAttach(j, dGeomGetBody(contact[i].geom.g1), dGeomGetBody(contact[i].geom.g2));
-  }
+  // Robot against robot: a bumper feels the other robot (and pushes nothing); other parts
+  // push each other with the lower of their two frictions.
+  sim->touch_pair(pair.a->index, pair.b->index);
+  const Part other = part_of(b);
+  if (part == Part::Bumper) pair.a->bumper_touch_step = true;
+  if (other == Part::Bumper) pair.b->bumper_touch_step = true;
+  if (part == Part::Bumper || other == Part::Bumper) return;
+  make_contacts(sim, contact, n, std::min(friction(part), friction(other)), kRobotSoftCfm);
 }
 
 }  // namespace
 
 void Simulation::Impl::collide() {
-  dSpaceCollide2(reinterpret_cast<dGeomID>(robot_space), reinterpret_cast<dGeomID>(env_space), this, &near_callback);
+  for (Robot& r : robots) {
+    Pair pair{this, &r, nullptr};
+    dSpaceCollide2(reinterpret_cast<dGeomID>(r.space), reinterpret_cast<dGeomID>(env_space), &pair, &near_callback);
+  }
+  for (std::size_t i = 0; i < robots.size(); ++i)
+    for (std::size_t j = i + 1; j < robots.size(); ++j) {
+      Pair pair{this, &robots[i], &robots[j]};
+      dSpaceCollide2(reinterpret_cast<dGeomID>(robots[i].space), reinterpret_cast<dGeomID>(robots[j].space), &pair,
+                     &near_callback);
+    }
 }
 
 }  // namespace carbot

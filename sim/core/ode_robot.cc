@@ -16,10 +16,10 @@ void tag(dGeomID g, Part p) { dGeomSetData(g, reinterpret_cast<void*>(static_cas
 
 Part part_of(dGeomID g) { return static_cast<Part>(reinterpret_cast<std::intptr_t>(dGeomGetData(g)) - 1); }
 
-void Simulation::Impl::build_robot() {
+void Robot::build(dWorldID ode_world, const Start& start) {
   using namespace model;
-  const double x0 = world.start.position.x, y0 = world.start.position.y;
-  const double h = rad(world.start.heading_deg);
+  const double x0 = start.position.x, y0 = start.position.y;
+  const double h = rad(start.heading_deg);
   dMatrix3 R;
   dRFromAxisAndAngle(R, 0, 0, 1, h);
   const double c = std::cos(h), s = std::sin(h);
@@ -37,12 +37,12 @@ void Simulation::Impl::build_robot() {
   dBodySetMass(chassis, &m);
   dBodySetPosition(chassis, x0, y0, kChassisZ);
   dBodySetRotation(chassis, R);
-  chassis_geom = dCreateBox(robot_space, kLength, kWidth, kChassisHeight);
+  chassis_geom = dCreateBox(space, kLength, kWidth, kChassisHeight);
   dGeomSetBody(chassis_geom, chassis);
   tag(chassis_geom, Part::Chassis);
 
   // Bumper: sensor only (the contact callback makes no joint for it), across the whole front.
-  bumper_geom = dCreateBox(robot_space, kBumperDepth, kBumperWidth, kBumperHeight);
+  bumper_geom = dCreateBox(space, kBumperDepth, kBumperWidth, kBumperHeight);
   dGeomSetBody(bumper_geom, chassis);
   dGeomSetOffsetPosition(bumper_geom, kLength / 2 + kBumperDepth / 2, 0,
                          kClearance + 0.01 + kBumperHeight / 2 - kChassisZ);
@@ -50,7 +50,7 @@ void Simulation::Impl::build_robot() {
 
   // Frictionless caster balls, left and right, touching the floor.
   for (int i = 0; i < 2; ++i) {
-    casters[i] = dCreateSphere(robot_space, kCasterRadius);
+    casters[i] = dCreateSphere(space, kCasterRadius);
     dGeomSetBody(casters[i], chassis);
     dGeomSetOffsetPosition(casters[i], 0, i == 0 ? kCasterY : -kCasterY, kCasterRadius - kChassisZ);
     tag(casters[i], Part::Caster);
@@ -68,7 +68,7 @@ void Simulation::Impl::build_robot() {
     at(w.x, 0, kWheelRadius, p);
     dBodySetPosition(w.body, p[0], p[1], p[2]);
     dBodySetRotation(w.body, R);
-    w.geom = dCreateSphere(robot_space, kWheelRadius);
+    w.geom = dCreateSphere(space, kWheelRadius);
     dGeomSetBody(w.geom, w.body);
     tag(w.geom, Part::Wheel);
 
@@ -94,7 +94,7 @@ void Simulation::Impl::build_robot() {
 // when the chassis moves at v and turns at w about its centre. Each wheel is steered along
 // that velocity; of the two ways to point a wheel along a line (forwards or reversed), the
 // one nearer its present angle is taken, so reversing never swings a wheel round by 180 deg.
-void Simulation::Impl::set_wheel_targets() {
+void Robot::set_wheel_targets() {
   double v = cmd_forward, w = cmd_turn;
   const double fastest = std::hypot(v, w * model::kWheelOffset);
   if (fastest > model::kTopSpeed) {
@@ -127,7 +127,7 @@ void Simulation::Impl::set_wheel_targets() {
 // motor, whose speed is scaled by cos(steering error) so a wheel still turning does not
 // push the robot sideways. hinge2 angles and rates are chassis relative to wheel: a positive
 // joint angle is a right (clockwise) steer and a positive spin rate rolls backwards.
-void Simulation::Impl::actuate() {
+void Robot::actuate() {
   for (Wheel& wh : wheels) {
     const double now = -dJointGetHinge2Angle1(wh.joint);
     const double err = wh.steer_target - now;
@@ -140,9 +140,11 @@ void Simulation::Impl::actuate() {
 
 void Simulation::Impl::destroy() {
   if (sonar_ray) dGeomDestroy(sonar_ray);
+  if (mast_probe) dGeomDestroy(mast_probe);
   if (contacts) dJointGroupDestroy(contacts);
   // Destroying a space destroys the geoms in it (cleanup mode is on by default).
-  if (robot_space) dSpaceDestroy(robot_space);
+  for (Robot& r : robots)
+    if (r.space) dSpaceDestroy(r.space);
   if (env_space) dSpaceDestroy(env_space);
   if (ode_world) dWorldDestroy(ode_world);  // and its bodies and joints
 }

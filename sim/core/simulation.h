@@ -1,7 +1,8 @@
 // The Carbot in its world, on ODE: headless, fixed step, bit-deterministic.
 //
-// One Simulation holds one world and one robot. A controller calls the motion and sensor
-// functions, then step_control() to let one control period of physics pass. Nothing here
+// One Simulation holds one world and its robots (one, or several that collide with each
+// other). A controller selects a robot, calls its motion and sensor functions, then
+// step_control() lets one control period of physics pass for all of them. Nothing here
 // reads a clock or a random generator: the same world and the same calls give the same
 // trajectory, bit for bit.
 #pragma once
@@ -43,6 +44,14 @@ struct Bump {
   Vec2 at;
 };
 
+/// Two robots touched (a contact that began after a control period without one), and where:
+/// the midpoint of their centres.
+struct RobotContact {
+  double t = 0;
+  int a = 0, b = 0;  ///< robot numbers, a < b
+  Vec2 at;
+};
+
 /// Something worth telling the person who watches a run (an event fired, the robot left the floor).
 struct SimNote {
   double t = 0;
@@ -51,7 +60,8 @@ struct SimNote {
 
 class Simulation {
  public:
-  /// Builds the world and puts the robot at world.start. Throws std::invalid_argument on a bad config.
+  /// Builds the world and puts each robot at its start (world.robots). Throws
+  /// std::invalid_argument on a bad config.
   explicit Simulation(const World& world, SimConfig config = {});
   ~Simulation();
   Simulation(const Simulation&) = delete;
@@ -59,6 +69,16 @@ class Simulation {
 
   const World& world() const;
   const SimConfig& config() const;
+
+  // --- Robots ------------------------------------------------------------------------------
+  // The motion, pose, sensor and gripper calls below act on the *selected* robot: robot 0
+  // unless select() chose another. A world with one robot never needs to select.
+  int robot_count() const;
+  /// Makes `robot` (0 .. robot_count() - 1) the one the per-robot calls act on.
+  void select(int robot);
+  int selected() const;
+  /// Robot-against-robot contacts so far, in time order.
+  const std::vector<RobotContact>& robot_contacts() const;
 
   // --- Time -------------------------------------------------------------------------------
   /// Simulated seconds since the start (a multiple of the control period).
@@ -116,6 +136,16 @@ class Simulation {
   bool grip(int index);
   /// Puts the held item down under the gripper (no effect when holding nothing).
   void release();
+
+  /// Which robot holds item `index`, or -1.
+  int holder(int index) const;
+
+  // --- Signals (seen by people, not by other robots) ------------------------------------------
+  void set_lights(bool on);
+  bool lights() const;
+  /// Beeps `times` times (a note says so); the count is kept.
+  void beep(int times);
+  int beeps() const;
 
   /// What happened that a person would want to know (events that fired, leaving the floor).
   const std::vector<SimNote>& notes() const;

@@ -52,7 +52,7 @@ struct Event {
   Vec2 to;
 };
 
-/// The robot's pose at the start.
+/// A robot's pose at the start.
 struct Start {
   Vec2 position;
   double heading_deg = 0;  ///< counter-clockwise from +x
@@ -67,9 +67,13 @@ struct World {
   std::vector<Wall> walls;
   std::vector<Box> boxes;
   std::vector<Item> items;
-  Start start;
+  Start start;                ///< the first robot's start (= robots[0])
+  std::vector<Start> robots;  ///< every robot's start, in robot (agent) order; at least one
   std::vector<Event> events;
 };
+
+/// The most robots a world may hold (the robot libraries keep per-robot state for this many).
+constexpr int kMaxRobots = 8;
 
 /// A world file that cannot be used; what() is "FILE: FIELD: what is wrong".
 struct WorldError : std::runtime_error {

@@ -170,6 +170,16 @@ Event read_event(const Reader& r, const json& v, const std::string& f, const Wor
   return e;
 }
 
+Start read_start(const Reader& r, const json& v, const std::string& f) {
+  r.object(v, f, {"pose"});
+  const json& pose = r.require(v, f, "pose");
+  if (!pose.is_array() || pose.size() != 3) r.fail(f + ".pose", "expected [x, y, heading_deg]");
+  Start s;
+  s.position = {r.number(pose[0], f + ".pose[0]"), r.number(pose[1], f + ".pose[1]")};
+  s.heading_deg = r.number(pose[2], f + ".pose[2]");
+  return s;
+}
+
 /// Turns a parse error's byte offset into "line L, column C" of the text.
 std::string where(const std::string& text, size_t byte) {
   size_t line = 1, col = 1;
@@ -247,11 +257,17 @@ World parse_world(const std::string& text, const std::string& path) {
                  fmt::format("'{}' is already used by items[{}]", w.items[i].name, j));
     }
   }
-  const json& start = r.object(r.require(doc, "", "start"), "start", {"pose"});
-  const json& pose = r.require(start, "start", "pose");
-  if (!pose.is_array() || pose.size() != 3) r.fail("start.pose", "expected [x, y, heading_deg]");
-  w.start.position = {r.number(pose[0], "start.pose[0]"), r.number(pose[1], "start.pose[1]")};
-  w.start.heading_deg = r.number(pose[2], "start.pose[2]");
+  // "start" is one robot's {pose} or, for several robots in one world, an array of them.
+  const json& start = r.require(doc, "", "start");
+  if (start.is_array()) {
+    if (start.empty()) r.fail("start", "expected at least one robot");
+    if (start.size() > static_cast<size_t>(kMaxRobots))
+      r.fail("start", fmt::format("expected at most {} robots, got {}", kMaxRobots, start.size()));
+    for (size_t i = 0; i < start.size(); ++i) w.robots.push_back(read_start(r, start[i], Reader::index("start", i)));
+  } else {
+    w.robots.push_back(read_start(r, start, "start"));
+  }
+  w.start = w.robots.front();
   if (const json* v = r.find(doc, "events")) {
     r.array(*v, "events");
     for (size_t i = 0; i < v->size(); ++i) w.events.push_back(read_event(r, (*v)[i], Reader::index("events", i), w));

@@ -18,6 +18,7 @@ struct ChartInfo {
   std::string name;
   std::string kind;   ///< "sfc", "fsm" or "plan"
   double period = 0;  ///< s, the chart's `period` (0: it gives none)
+  int team = 0;       ///< a team machine's `team N` (0: not a team machine)
   /// fsm: a label per state index, "Z1 PickUp()" (the name and the first action's text).
   std::vector<std::string> states;
   /// The rows of the run viewer's timeline: the places (sfc), states (fsm) or actors (plan) in
@@ -35,6 +36,7 @@ struct ChartInfo {
     std::string name;
     std::string result;
     std::vector<std::string> params;
+    std::string interface;  ///< the interface that declares it ("FetchBot")
   };
   std::vector<Function> functions;
 };
@@ -55,6 +57,9 @@ BuiltEngine build_engine(const Options& options, const std::string& dir);
 
 /// The shim's C source for a C engine of `chart` (exposed for tests).
 std::string c_shim(const ChartInfo& chart);
+/// A header renaming the calls of interfaces whose robot library carries a prefix (FetchBot's
+/// `PickUp` is `FetchBot_PickUp` in carbot-sim: CleanBot has a `PickUp` too); "" when none does.
+std::string robot_renames(const ChartInfo& chart);
 /// For a recording build (docs/viewer.md): a header renaming each interface function F the
 /// engine calls to carbot_rec_F, and the C source of those wrappers, which call F and report
 /// the call and its result to carbot-sim. The engine makes the same calls in the same order.

@@ -11,7 +11,11 @@ constexpr const char* kEngineStatus =
 constexpr const char* kEngineState = "carbot_engine_state";    ///< int (const void*), optional (fsm): the state index
 constexpr const char* kEnginePlaces = "carbot_engine_places";  ///< int (void), optional: places (states) of a C engine
 constexpr const char* kEngineActivation =
-    "carbot_engine_activation";                            ///< unsigned (const void*, int), optional: X_activation
+    "carbot_engine_activation";  ///< unsigned (const void*, int), optional: X_activation
+constexpr const char* kEngineSetAgent =
+    "carbot_engine_set_agent";  ///< void (void*, int), a team machine only: X_set_agent
+constexpr const char* kEngineReport =
+    "carbot_engine_report";  ///< void (void*, int agent, int state), a team machine only: X_report
 constexpr const char* kEngineFini = "carbot_engine_fini";  ///< void (void*), optional: destroys the state
 
 }  // namespace carbot::driver

@@ -19,8 +19,9 @@ Engine::Engine(const std::string& library) {
   handle_ = dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (!handle_) {
     const char* why = dlerror();
-    throw LoadError(std::string("cannot load the engine: ") + (why ? why : library) +
-                    "\n  (carbot-sim's robot libraries implement samples/linebot.iface and samples/cleanbot.iface)");
+    throw LoadError(
+        std::string("cannot load the engine: ") + (why ? why : library) +
+        "\n  (carbot-sim's robot libraries implement samples/linebot.iface, cleanbot.iface and fetchbot.iface)");
   }
   auto size = reinterpret_cast<size_t (*)()>(symbol(handle_, kEngineSize, library));
   init_ = reinterpret_cast<void (*)(void*)>(symbol(handle_, kEngineInit, library));
@@ -30,6 +31,8 @@ Engine::Engine(const std::string& library) {
   state_ = reinterpret_cast<int (*)(const void*)>(dlsym(handle_, kEngineState));
   places_ = reinterpret_cast<int (*)()>(dlsym(handle_, kEnginePlaces));
   activation_ = reinterpret_cast<unsigned (*)(const void*, int)>(dlsym(handle_, kEngineActivation));
+  set_agent_ = reinterpret_cast<void (*)(void*, int)>(dlsym(handle_, kEngineSetAgent));
+  report_ = reinterpret_cast<void (*)(void*, int, int)>(dlsym(handle_, kEngineReport));
   // max_align_t alignment: vector storage comes from operator new, which guarantees it.
   memory_.assign(size() + 1, 0);
 }

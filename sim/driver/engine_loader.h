@@ -36,6 +36,16 @@ class Engine {
   int status() const { return status_(state()); }
   /// An fsm's current state index; -1 for engines without states.
   int current_state() const { return state_ ? state_(state()) : -1; }
+  /// A team machine's engine (docs/language.md "Teams") has set_agent and report.
+  bool team() const { return set_agent_ && report_; }
+  /// X_set_agent: this engine is agent `agent` (after init()).
+  void set_agent(int agent) {
+    if (set_agent_) set_agent_(state(), agent);
+  }
+  /// X_report: agent `agent` said it is in `state` (between ticks).
+  void report(int agent, int state_index) {
+    if (report_) report_(state(), agent, state_index);
+  }
   /// A C engine's places (states), for reading activation; 0 for a plan.
   int places() const { return places_ ? places_() : 0; }
   /// X_activation of a C engine's place (read only: the run is not changed by looking).
@@ -52,6 +62,8 @@ class Engine {
   int (*state_)(const void*) = nullptr;                 // optional
   int (*places_)() = nullptr;                           // optional (C engines)
   unsigned (*activation_)(const void*, int) = nullptr;  // optional (C engines)
+  void (*set_agent_)(void*, int) = nullptr;             // optional (team machines)
+  void (*report_)(void*, int, int) = nullptr;           // optional (team machines)
   bool initialised_ = false;
 };
 

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <memory>
 #include <fstream>
 #include <sstream>
 #include <mutex>
@@ -199,6 +200,15 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--work-dir", o.work_dir, "build the engine here and keep it (default: a temporary folder)");
   app.add_flag("-q,--quiet", o.quiet, "no progress display and no summary");
+  // Several robots running a team machine (docs/sim.md, "Several robots").
+  app.add_flag("--no-exchange", o.no_exchange, "team machines: exchange no states (each robot runs alone)");
+  app.add_option("--exchange-delay", o.exchange_delay, "team machines: reports arrive this many ticks late")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 100000));
+  app.add_option("--exchange-loss", o.exchange_loss, "team machines: each report is lost with this probability")
+      ->capture_default_str()
+      ->check(finite_in(0, 1));
+  app.add_option("--seed", o.seed, "team machines: seed of the lost reports")->capture_default_str();
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -225,7 +235,22 @@ int main(int argc, char** argv) {
       g_work_dir = dir.path();
     }
     const BuiltEngine built = build_engine(o, dir.path());
-    Engine engine(built.library);
+    const int robots = static_cast<int>(world.robots.size());
+    if (robots > 1) {
+      if (built.chart.kind == "plan")
+        return fail(kUsage, fmt::format("{}: {} robots: carbot-sim runs several robots with sfc and fsm charts only",
+                                        o.world, robots));
+      if (o.recording())
+        return fail(kUsage, fmt::format("{}: {} robots: the run viewer (--html, --record) shows one robot; use "
+                                        "--trace, --json and --svg",
+                                        o.world, robots));
+      if (built.chart.team > 0 && robots > built.chart.team)
+        return fail(kBadInput, fmt::format("{}: {} robots, but {} is a team of at most {} agents", o.world, robots,
+                                           built.chart.name, built.chart.team));
+    }
+    std::vector<std::unique_ptr<Engine>> engines;
+    for (int i = 0; i < robots; ++i) engines.push_back(std::make_unique<Engine>(built.library));
+    Engine& engine = *engines.front();
 
     // 3. The run.
     // The chart's own period, unless the command line gives one.
@@ -237,7 +262,19 @@ int main(int argc, char** argv) {
                                       "{:g} and {:g} (a shorter run, a longer --period or --physics-step)",
                                       o.seconds, control_ticks, physics_steps, kMaxControlTicks, kMaxPhysicsSteps));
     Simulation sim(world, SimConfig{o.physics_step, period});
-    const RunResult result = run_engine(sim, engine, built.chart, o.seconds, o.quiet);
+    RunResult result;
+    if (robots == 1) {
+      result = run_engine(sim, engine, built.chart, o.seconds, o.quiet);
+    } else {
+      std::vector<Engine*> each;
+      for (auto& e : engines) each.push_back(e.get());
+      Exchange exchange;
+      exchange.enabled = !o.no_exchange;
+      exchange.delay_ticks = o.exchange_delay;
+      exchange.loss = o.exchange_loss;
+      exchange.seed = o.seed;
+      result = run_team(sim, each, built.chart, o.seconds, exchange);
+    }
 
     // 4. What it leaves behind.
     const RunReport report{built.chart, o.chart, sim, result};
@@ -255,10 +292,27 @@ int main(int argc, char** argv) {
     const std::string error = gfec::safe_output::write_all(outputs, {o.chart, o.world});
     if (!error.empty()) return fail(kUsage, error);
     if (!o.quiet) {
-      std::printf("carbot-sim: %s (%s) on %s: %s at %.2f s, %.2f m driven, %d bump%s (%.2f s, %.0fx real time)\n",
-                  built.chart.name.c_str(), built.chart.kind.c_str(), world.name.c_str(), result.status.c_str(),
-                  sim.time(), sim.odometer(), sim.bumps(), sim.bumps() == 1 ? "" : "s", result.wall_seconds,
-                  result.wall_seconds > 0 ? sim.time() / result.wall_seconds : 0.0);
+      if (robots == 1) {
+        std::printf("carbot-sim: %s (%s) on %s: %s at %.2f s, %.2f m driven, %d bump%s (%.2f s, %.0fx real time)\n",
+                    built.chart.name.c_str(), built.chart.kind.c_str(), world.name.c_str(), result.status.c_str(),
+                    sim.time(), sim.odometer(), sim.bumps(), sim.bumps() == 1 ? "" : "s", result.wall_seconds,
+                    result.wall_seconds > 0 ? sim.time() / result.wall_seconds : 0.0);
+      } else {
+        std::printf(
+            "carbot-sim: %s (%s) on %s, %d robots: %s at %.2f s, %zu robot contact%s (%.2f s, %.0fx real time)\n",
+            built.chart.name.c_str(), built.chart.kind.c_str(), world.name.c_str(), robots, result.status.c_str(),
+            sim.time(), sim.robot_contacts().size(), sim.robot_contacts().size() == 1 ? "" : "s", result.wall_seconds,
+            result.wall_seconds > 0 ? sim.time() / result.wall_seconds : 0.0);
+        for (int i = 0; i < robots; ++i) {
+          const RobotRun& r = result.robots[static_cast<std::size_t>(i)];
+          const std::string state = r.state >= 0 && r.state < static_cast<int>(built.chart.rows.size())
+                                        ? " in " + built.chart.rows[static_cast<std::size_t>(r.state)].name
+                                        : "";
+          std::printf("  robot %d: %s%s, %.2f m driven, %d bump%s%s\n", i, r.status.c_str(), state.c_str(),
+                      r.distance_m, r.bumps, r.bumps == 1 ? "" : "s",
+                      r.held >= 0 ? (", holding " + sim.items()[static_cast<std::size_t>(r.held)].name).c_str() : "");
+        }
+      }
       for (const SimNote& n : sim.notes()) std::printf("  t=%.2f s: %s\n", n.t, n.text.c_str());
     }
     return kOk;

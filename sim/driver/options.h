@@ -28,6 +28,11 @@ struct Options {
   /// Record calls for the viewer: the engine is built with call wrappers (docs/viewer.md).
   bool recording() const { return !html.empty() || !record.empty(); }
   double timeout = 0;  ///< wall-clock budget in seconds (0 = none)
+  // Several robots running a team machine: how their states travel (docs/sim.md, "Several robots").
+  bool no_exchange = false;     ///< no reports at all: each robot runs alone (team(S) stays 0)
+  int exchange_delay = 0;       ///< ticks a report is late (0: the reference exchange)
+  double exchange_loss = 0;     ///< probability that one report is lost
+  unsigned long long seed = 1;  ///< of the losses
 };
 
 /// The tick budget: at most this many control ticks (a trace row each) and physics steps.

@@ -28,6 +28,11 @@ std::string result_json(const RunReport& r);
 /// The world and the robot's path, with a title and a legend.
 std::string svg_picture(const RunReport& r);
 
+/// Several robots (RunResult::robots): the trace with a robot column, the result with a
+/// "robots" array (docs/sim.md, "Several robots"). trace_csv and result_json call these.
+std::string team_trace_csv(const RunReport& r);
+std::string team_result_json(const RunReport& r);
+
 /// The run viewer's recording (docs/viewer.md), which its page embeds: `chart_svg` is gfec's SVG
 /// of the chart ("" with `svg_note` saying why there is none).
 nlohmann::json viewer_data(const RunReport& r, const std::string& chart_svg, const std::string& svg_note);

@@ -17,6 +17,7 @@ nlohmann::json point(Vec2 p) { return nlohmann::json::array({r4(p.x), r4(p.y)});
 }  // namespace
 
 std::string result_json(const RunReport& r) {
+  if (!r.run.robots.empty()) return team_result_json(r);
   using nlohmann::json;
   const Simulation& sim = r.sim;
   const Pose p = sim.pose();

@@ -122,6 +122,7 @@ RunResult run_engine(Simulation& sim, Engine& engine, const ChartInfo& chart, do
   hal::bind(&sim);
   linebot_reset();
   cleanbot_reset();
+  fetchbot_reset();
   engine_log().clear();
   engine.init();
   Progress progress(!quiet, seconds);

@@ -8,6 +8,7 @@
 #include "core/simulation.h"
 #include "driver/chart_build.h"
 #include "driver/engine_loader.h"
+#include "driver/engine_log.h"
 
 namespace carbot::driver {
 
@@ -39,14 +40,53 @@ struct Recording {
   std::vector<std::vector<ItemState>> items;
 };
 
+/// One robot of a run with several (docs/sim.md, "Several robots"): its path, what its engine
+/// did, and how the robot ended.
+struct RobotRun {
+  std::string status = "running";        ///< of its engine: running | succeeded | failed | terminated
+  std::vector<TraceRow> trace;           ///< as RunResult::trace, every robot in every tick
+  std::vector<std::vector<int>> active;  ///< per trace row, as Recording::active
+  std::vector<EngineEvent> state_log;    ///< an fsm's "state Grab PickUp()" changes
+  int state = -1;                        ///< an fsm's state at the end
+  // The robot at the end.
+  Pose final_pose;
+  double distance_m = 0;
+  int bumps = 0;
+  std::vector<Bump> bump_log;
+  bool left_floor = false;
+  int held = -1;
+  bool lights = false;
+  int beeps = 0;
+};
+
+/// How a team machine's states travel between the robots' engines.
+struct Exchange {
+  bool enabled = true;          ///< false: no reports at all
+  int delay_ticks = 0;          ///< a report sent after tick t arrives after tick t + delay_ticks
+  double loss = 0;              ///< each report is lost with this probability ...
+  unsigned long long seed = 1;  ///< ... drawn from a generator seeded with this
+  long sent = 0, lost = 0;      ///< counted by the run
+};
+
 struct RunResult {
   std::string status = "running";  ///< running | succeeded | failed | terminated
   std::vector<TraceRow> trace;
   Recording recording;
   double wall_seconds = 0;  ///< real time the run took (not in any output file)
+  /// A run with several robots: one entry per robot (then `trace` and `recording` are unused).
+  std::vector<RobotRun> robots;
+  bool team_machine = false;  ///< the engines exchanged states
+  Exchange exchange;
 };
 
 /// Runs `engine` on `sim` for at most `seconds` (progress on stderr when it is a terminal).
 RunResult run_engine(Simulation& sim, Engine& engine, const ChartInfo& chart, double seconds, bool quiet);
+
+/// Runs one engine per robot of `sim` (engines[i] drives robot i, which is agent i of a team
+/// machine) for at most `seconds`: every tick all engines run in robot order, each with the
+/// HAL bound to its robot; then a team machine's states are exchanged as `exchange` says.
+/// The run ends at the time limit, on escape, or when every engine has ended.
+RunResult run_team(Simulation& sim, std::vector<Engine*> engines, const ChartInfo& chart, double seconds,
+                   Exchange exchange);
 
 }  // namespace carbot::driver

@@ -224,6 +224,63 @@ void draw_path(Svg& s, const Frame& f, const RunReport& r) {
         corner(l - 0.14, -0.07), kPath);
 }
 
+// --- Several robots (docs/sim.md, "Several robots") ------------------------------------------
+
+/// A colour per robot (no red: red marks bumps; no orange or green: items and destinations).
+const char* robot_colour(std::size_t i) {
+  static const char* const kRobots[] = {"#1f6fd1", "#7b4fc9", "#16a3a3", "#a0522d",
+                                        "#d6409f", "#6b6b6b", "#26262b", "#3a7d1a"};
+  return kRobots[i % (sizeof kRobots / sizeof kRobots[0])];
+}
+constexpr const char* kContact = "#b8860b";
+
+void draw_robot_at(Svg& s, const Frame& f, const Pose& p, const char* colour) {
+  const double hx = std::cos(p.heading), hy = std::sin(p.heading);
+  auto corner = [&](double bx, double by) {
+    return fmt::format("{:.1f},{:.1f}", f.x(p.x + hx * bx - hy * by), f.y(p.y + hy * bx + hx * by));
+  };
+  const double l = model::kLength / 2, w = model::kWidth / 2;
+  s.add(R"(<polygon points="{} {} {} {}" fill="{}" fill-opacity="0.18" stroke="{}" stroke-width="2"/>)", corner(l, w),
+        corner(l, -w), corner(-l, -w), corner(-l, w), colour, colour);
+  s.add(R"(<polygon points="{} {} {}" fill="{}"/>)", corner(l - 0.02, 0), corner(l - 0.14, 0.07),
+        corner(l - 0.14, -0.07), colour);
+}
+
+/// Every robot's path in its own colour, its start, the robot where it ended with its number
+/// and final state, its bumps; and a diamond where two robots touched.
+void draw_team(Svg& s, const Frame& f, const RunReport& r) {
+  for (std::size_t i = 0; i < r.run.robots.size(); ++i) {
+    const RobotRun& robot = r.run.robots[i];
+    if (robot.trace.empty()) continue;
+    std::string pts;
+    Vec2 last{1e9, 1e9};
+    for (std::size_t k = 0; k < robot.trace.size(); ++k) {
+      const Vec2 p{robot.trace[k].x, robot.trace[k].y};
+      if (k + 1 < robot.trace.size() && distance(p, last) < 0.005) continue;
+      pts += fmt::format("{:.1f},{:.1f} ", f.x(p.x), f.y(p.y));
+      last = p;
+    }
+    s.add(
+        R"(<polyline points="{}" fill="none" stroke="{}" stroke-width="2.2" stroke-opacity="0.85" stroke-linejoin="round"/>)",
+        pts, robot_colour(i));
+    const TraceRow& a = robot.trace.front();
+    s.add(R"(<circle cx="{:.1f}" cy="{:.1f}" r="6" fill="#ffffff" stroke="{}" stroke-width="3"/>)", f.x(a.x), f.y(a.y),
+          robot_colour(i));
+    draw_robot_at(s, f, robot.final_pose, robot_colour(i));
+    for (const Bump& b : robot.bump_log)
+      s.add(R"(<path d="M{:.1f},{:.1f} l10,10 m0,-10 l-10,10" stroke="{}" stroke-width="3" stroke-linecap="round"/>)",
+            f.x(b.at.x) - 5, f.y(b.at.y) - 5, kBump);
+    const std::string state =
+        robot.state >= 0 && robot.state < static_cast<int>(r.chart.rows.size()) ? r.chart.rows[robot.state].name : "";
+    s.add(R"(<text x="{:.1f}" y="{:.1f}" font-size="13" font-weight="bold" fill="{}">{}{}</text>)",
+          f.x(robot.final_pose.x) + 14, f.y(robot.final_pose.y) + 26, robot_colour(i), i,
+          escape_xml(state.empty() ? "" : " " + state));
+  }
+  for (const RobotContact& c : r.sim.robot_contacts())
+    s.add(R"(<path d="M{:.1f},{:.1f} l7,-7 l7,7 l-7,7 z" fill="{}" stroke="#5c4305" stroke-width="1"/>)",
+          f.x(c.at.x) - 7, f.y(c.at.y), kContact);
+}
+
 void draw_scale_bar(Svg& s, const Frame& f, double x, double y) {
   s.add(
       R"(<g stroke="{}" stroke-width="2"><line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}"/>)"
@@ -240,10 +297,17 @@ void draw_legend(Svg& s, double x, double y, double right, const RunReport& r) {
     std::string label;
   };
   std::vector<Entry> entries;
-  if (actor_names().empty())
+  const bool team = !r.run.robots.empty();
+  for (std::size_t i = 0; i < r.run.robots.size(); ++i)
+    entries.push_back(
+        {fmt::format(R"(<line x1="0" y1="0" x2="22" y2="0" stroke="{}" stroke-width="3"/>)", robot_colour(i)),
+         fmt::format("robot {}", i)});
+  if (team && !r.sim.robot_contacts().empty())
+    entries.push_back({fmt::format(R"(<path d="M4,0 l7,-7 l7,7 l-7,7 z" fill="{}"/>)", kContact), "robots touched"});
+  if (!team && actor_names().empty())
     entries.push_back(
         {fmt::format(R"(<line x1="0" y1="0" x2="22" y2="0" stroke="{}" stroke-width="3"/>)", kPath), "robot path"});
-  for (const std::string& actor : actor_names())
+  for (const std::string& actor : team ? std::vector<std::string>() : actor_names())
     entries.push_back(
         {fmt::format(R"(<line x1="0" y1="0" x2="22" y2="0" stroke="{}" stroke-width="3"/>)", actor_colour(actor)),
          actor});
@@ -278,7 +342,9 @@ void draw_legend(Svg& s, double x, double y, double right, const RunReport& r) {
     entries.push_back({fmt::format(R"(<circle cx="11" cy="0" r="7" fill="none" stroke="{}" stroke-width="2"/>)", kDest),
                        "destination"});
   }
-  if (r.sim.bumps() > 0)
+  bool bumped = r.sim.bumps() > 0;
+  for (const RobotRun& robot : r.run.robots) bumped = bumped || robot.bumps > 0;
+  if (bumped)
     entries.push_back(
         {fmt::format(R"(<path d="M6,-5 l10,10 m0,-10 l-10,10" stroke="{}" stroke-width="3"/>)", kBump), "bump"});
   double cx = x;
@@ -298,7 +364,8 @@ std::string svg_picture(const RunReport& r) {
   constexpr double kMargin = 28, kTitle = 84, kLegend = 80;
   Frame f;
   f.scale = std::min(900.0 / w.size.x, 640.0 / w.size.y);
-  const std::string title = fmt::format("{} ({}) on {}", r.chart.name, r.chart.kind, w.name);
+  const std::string title = fmt::format("{} ({}) on {}{}", r.chart.name, r.chart.kind, w.name,
+                                        r.run.robots.empty() ? "" : fmt::format(", {} robots", r.run.robots.size()));
   const std::string heading = fmt::format("{} — {}", title, status_phrase(r));
   // Wide enough for the floor and for the heading (bold 20 px: ~11.5 px a character).
   const double width = std::max({f.len(w.size.x) + 2 * kMargin, 760.0, 2 * kMargin + 11.5 * heading.size()});
@@ -316,6 +383,18 @@ std::string svg_picture(const RunReport& r) {
         escape_xml(heading));
   std::string facts =
       fmt::format("{:.2f} m driven · {} bump{}", r.sim.odometer(), r.sim.bumps(), r.sim.bumps() == 1 ? "" : "s");
+  if (!r.run.robots.empty()) {
+    int bumps = 0;
+    for (const RobotRun& robot : r.run.robots) bumps += robot.bumps;
+    const std::size_t touches = r.sim.robot_contacts().size();
+    facts = fmt::format("{} robots · {} bump{} · {} robot contact{}", r.run.robots.size(), bumps, bumps == 1 ? "" : "s",
+                        touches, touches == 1 ? "" : "s");
+    if (r.run.team_machine)
+      facts += r.run.exchange.enabled
+                   ? fmt::format(" · exchange: {} tick{} late, {:g}% lost", r.run.exchange.delay_ticks,
+                                 r.run.exchange.delay_ticks == 1 ? "" : "s", r.run.exchange.loss * 100)
+                   : std::string(" · no exchange");
+  }
   for (const ItemState& it : r.sim.items())
     facts += fmt::format(" · {} {:.2f} m from its destination{}", it.name, distance(it.at, it.destination),
                          it.held ? " (held)" : "");
@@ -326,7 +405,8 @@ std::string svg_picture(const RunReport& r) {
   draw_line(s, f, w.line);
   draw_solids(s, f, w);
   draw_items(s, f, r);
-  draw_path(s, f, r);
+  if (r.run.robots.empty()) draw_path(s, f, r);
+  else draw_team(s, f, r);
   const double legend_y = kTitle + f.len(w.size.y) + 30;
   draw_legend(s, kMargin, legend_y, width - kMargin, r);
   draw_scale_bar(s, f, f.x(w.size.x / 2) - f.len(1), kTitle - 12);  // its own row, over the floor's right edge

@@ -5,6 +5,7 @@
 namespace carbot::driver {
 
 std::string trace_csv(const RunReport& r) {
+  if (!r.run.robots.empty()) return team_trace_csv(r);
   std::string out = "t,x,y,heading,active\n";
   out.reserve(out.size() + r.run.trace.size() * 48);
   const std::vector<std::vector<int>>& active = r.run.recording.active;

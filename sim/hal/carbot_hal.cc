@@ -6,20 +6,32 @@
 
 #include "core/carbot_model.h"
 #include "core/simulation.h"
+#include "core/world.h"
 #include "hal/hal_binding.h"
+
+static_assert(CARBOT_MAX_ROBOTS == carbot::kMaxRobots, "the libraries keep state for every robot a world may hold");
 
 namespace carbot::hal {
 namespace {
 Simulation* g_sim = nullptr;
+int g_robot = 0;
+}  // namespace
+
+void bind(Simulation* sim, int robot) {
+  g_sim = sim;
+  g_robot = robot;
+  if (sim) sim->select(robot);
 }
 
-void bind(Simulation* sim) { g_sim = sim; }
+int bound_robot() { return g_robot; }
 
 Simulation& bound() {
   if (!g_sim) {
     std::fputs("carbot HAL: a robot function was called with no simulation bound\n", stderr);
     std::abort();
   }
+  // Whoever else selected a robot meanwhile (a report reading every robot), the HAL acts on its own.
+  if (g_sim->selected() != g_robot) g_sim->select(g_robot);
   return *g_sim;
 }
 
@@ -32,6 +44,12 @@ carbot::Side side_of(int side) { return side == CARBOT_LEFT ? carbot::Side::Left
 }  // namespace
 
 extern "C" {
+
+int carbot_robot(void) {
+  (void)bound();
+  return carbot::hal::bound_robot();
+}
+int carbot_robot_count(void) { return bound().robot_count(); }
 
 double carbot_time(void) { return bound().time(); }
 double carbot_control_period(void) { return bound().config().control_period; }
@@ -73,5 +91,9 @@ double carbot_grip_reach(void) { return carbot::model::kGripReach; }
 bool carbot_grip(int index) { return bound().grip(index); }
 void carbot_release(void) { bound().release(); }
 int carbot_held_item(void) { return bound().held_item(); }
+int carbot_item_holder(int index) { return bound().holder(index); }
+
+void carbot_lights(bool on) { bound().set_lights(on); }
+void carbot_beep(int times) { bound().beep(times); }
 
 }  // extern "C"

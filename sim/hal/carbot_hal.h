@@ -18,6 +18,11 @@ extern "C" {
 
 enum { CARBOT_LEFT = 0, CARBOT_RIGHT = 1 };
 
+/* --- which robot (several Carbots may share a world; each has its own number) ----------- */
+enum { CARBOT_MAX_ROBOTS = 8 }; /* a library keeping per-robot state keeps this many */
+int carbot_robot(void);         /* this robot's number, 0 .. carbot_robot_count() - 1 */
+int carbot_robot_count(void);   /* robots in the world */
+
 /* --- time ------------------------------------------------------------------------------- */
 double carbot_time(void);           /* simulated seconds since the start */
 double carbot_control_period(void); /* seconds between two calls of the engine */
@@ -57,10 +62,15 @@ typedef struct CarbotItem {
 int carbot_item_count(void);
 CarbotItem carbot_item(int index);
 void carbot_gripper_point(double* x, double* y);
-double carbot_grip_reach(void); /* an item this close to the gripper point can be gripped */
-bool carbot_grip(int index);    /* true if now holding it */
-void carbot_release(void);      /* put the held item down under the gripper */
-int carbot_held_item(void);     /* index, or -1 */
+double carbot_grip_reach(void);    /* an item this close to the gripper point can be gripped */
+bool carbot_grip(int index);       /* true if now holding it */
+void carbot_release(void);         /* put the held item down under the gripper */
+int carbot_held_item(void);        /* index, or -1 */
+int carbot_item_holder(int index); /* the robot holding item `index`, or -1 */
+
+/* --- signals for people around (not seen by other robots) -------------------------------- */
+void carbot_lights(bool on); /* the signal lights */
+void carbot_beep(int times); /* beeps `times` times */
 
 #ifdef __cplusplus
 }

@@ -28,21 +28,36 @@
 
 enum Goal { GOAL_NONE, GOAL_ITEM, GOAL_DESTINATION };
 
-static int item = -1; /* the item being cleaned up, -1 none chosen */
-static enum Goal goal = GOAL_NONE;
-static double handle_since = -1; /* when the gripper started closing/opening, -1 idle */
-static bool placed = false;      /* the last PlaceItem put the item down */
-static double best_distance;     /* progress watch: nearest the goal so far ... */
-static double best_since;        /* ... and since when */
-
+/* One robot's memory; each robot in the world has its own (carbot_robot() picks it). */
+struct CleanBot {
+  int item;             /* the item being cleaned up, -1 none chosen */
+  enum Goal goal;       /* what it drives to */
+  double handle_since;  /* when the gripper started closing/opening, -1 idle */
+  bool placed;          /* the last PlaceItem put the item down */
+  double best_distance; /* progress watch: nearest the goal so far ... */
+  double best_since;    /* ... and since when */
+};
+static struct CleanBot robots[CARBOT_MAX_ROBOTS];
 void cleanbot_reset(void) {
-  item = -1;
-  goal = GOAL_NONE;
-  handle_since = -1;
-  placed = false;
-  best_distance = INFINITY;
-  best_since = 0;
+  int i;
+  for (i = 0; i < CARBOT_MAX_ROBOTS; ++i) {
+    robots[i].item = -1;
+    robots[i].goal = GOAL_NONE;
+    robots[i].handle_since = -1;
+    robots[i].placed = false;
+    robots[i].best_distance = INFINITY;
+    robots[i].best_since = 0;
+  }
 }
+
+/* Below, the fields of the robot whose engine is running go by their plain names, so the
+ * behaviours read as they would in one robot's firmware. */
+#define item robots[carbot_robot()].item
+#define goal robots[carbot_robot()].goal
+#define handle_since robots[carbot_robot()].handle_since
+#define placed robots[carbot_robot()].placed
+#define best_distance robots[carbot_robot()].best_distance
+#define best_since robots[carbot_robot()].best_since
 
 static double dist(double ax, double ay, double bx, double by) { return hypot(ax - bx, ay - by); }
 

@@ -22,12 +22,18 @@
 /* Virtual track width, m: turn rate = (right - left) / track. */
 #define LINEBOT_TRACK 0.30
 
-static double left_speed;
-static double right_speed;
+/* Each robot's side speeds (several line followers may share a world). */
+static double left_speeds[CARBOT_MAX_ROBOTS];
+static double right_speeds[CARBOT_MAX_ROBOTS];
+#define left_speed left_speeds[carbot_robot()]
+#define right_speed right_speeds[carbot_robot()]
 
 void linebot_reset(void) {
-  left_speed = 0;
-  right_speed = 0;
+  int i;
+  for (i = 0; i < CARBOT_MAX_ROBOTS; ++i) {
+    left_speeds[i] = 0;
+    right_speeds[i] = 0;
+  }
 }
 
 static void apply(void) { carbot_drive((left_speed + right_speed) / 2, (right_speed - left_speed) / LINEBOT_TRACK); }

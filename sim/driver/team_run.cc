@@ -1,0 +1,178 @@
+// The run loop for several robots in one world: one engine per robot, ticked in robot order
+// with the HAL bound to that robot, and for a team machine the exchange of states after every
+// tick (docs/sim.md, "Several robots"; docs/language.md "Teams").
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <deque>
+
+#include "core/geometry.h"
+#include "driver/run.h"
+#include "hal/hal_binding.h"
+#include "robots/robots.h"
+
+namespace carbot::driver {
+namespace {
+
+/// splitmix64: a tiny generator whose sequence is fixed by its seed on every platform (the
+/// standard library's distributions are not), so a lossy run repeats exactly.
+class Random {
+ public:
+  explicit Random(std::uint64_t seed) : state_(seed) {}
+  double uniform() {  // [0, 1)
+    std::uint64_t z = (state_ += 0x9e3779b97f4a7c15ULL);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    z ^= z >> 31;
+    return static_cast<double>(z >> 11) * 0x1.0p-53;
+  }
+
+ private:
+  std::uint64_t state_;
+};
+
+/// A report on its way: agent `from` is in `state`, for agent `to`, arriving after tick `due`.
+struct Message {
+  long due;
+  int from, to, state;
+};
+
+TraceRow row(const Simulation& sim) {
+  const Pose p = sim.pose();
+  return {sim.time(), p.x, p.y, deg(p.heading)};
+}
+
+std::vector<int> active_of(const Engine& engine) {
+  std::vector<int> active;
+  for (int p = 0; p < engine.places(); ++p)
+    if (engine.activation(p) > 0) active.push_back(p);
+  return active;
+}
+
+std::string status_of(int status) { return status == 2 ? "terminated" : status > 0 ? "succeeded" : "failed"; }
+
+}  // namespace
+
+RunResult run_team(Simulation& sim, std::vector<Engine*> engines, const ChartInfo& chart, double seconds,
+                   Exchange exchange) {
+  RunResult result;
+  const auto start = std::chrono::steady_clock::now();
+  const int n = sim.robot_count();
+  result.robots.resize(static_cast<std::size_t>(n));
+  result.team_machine = chart.team > 0;
+  linebot_reset();
+  cleanbot_reset();
+  fetchbot_reset();
+  for (int i = 0; i < n; ++i) {
+    hal::bind(&sim, i);
+    engines[static_cast<std::size_t>(i)]->init();
+    engines[static_cast<std::size_t>(i)]->set_agent(i);
+  }
+  Random random(exchange.seed);
+  std::deque<Message> on_the_way;  // in order of arrival: the delay is the same for all
+  std::vector<bool> running(static_cast<std::size_t>(n), true);
+  std::vector<int> last_state(static_cast<std::size_t>(n), -1);
+  const long ticks = std::lround(seconds / sim.config().control_period);
+
+  auto robot = [&](int i) -> RobotRun& { return result.robots[static_cast<std::size_t>(i)]; };
+  auto engine = [&](int i) -> Engine& { return *engines[static_cast<std::size_t>(i)]; };
+  auto keep_activation = [&](int i) {
+    RobotRun& r = robot(i);
+    r.active.push_back(r.active.empty() ? std::vector<int>() : r.active.back());
+  };
+
+  for (long tick = 0;; ++tick) {
+    for (int i = 0; i < n; ++i) {
+      sim.select(i);
+      robot(i).trace.push_back(row(sim));
+    }
+    // The escape button stops every robot still running (see run_engine).
+    if (sim.escape() || tick >= ticks) {
+      for (int i = 0; i < n; ++i) {
+        if (sim.escape() && running[static_cast<std::size_t>(i)]) robot(i).status = "terminated";
+        keep_activation(i);
+      }
+      break;
+    }
+    bool any_running = false;
+    for (int i = 0; i < n; ++i) {
+      if (!running[static_cast<std::size_t>(i)]) {
+        keep_activation(i);
+        continue;
+      }
+      hal::bind(&sim, i);
+      engine(i).run();
+      RobotRun& r = robot(i);
+      const int state = engine(i).current_state();
+      if (state >= 0 && state != last_state[static_cast<std::size_t>(i)]) {
+        last_state[static_cast<std::size_t>(i)] = state;
+        r.state_log.push_back({sim.time(), "state " + (state < static_cast<int>(chart.states.size())
+                                                           ? chart.states[static_cast<std::size_t>(state)]
+                                                           : std::to_string(state))});
+      }
+      r.active.push_back(active_of(engine(i)));
+      if (const int status = engine(i).status(); status != 0) {
+        r.status = status_of(status);
+        running[static_cast<std::size_t>(i)] = false;
+        sim.stop();  // an engine that ended drives its robot no more
+      } else {
+        any_running = true;
+      }
+    }
+    if (!any_running) break;
+    // The exchange: every agent's state to every other (an ended engine still reports its
+    // final state, as a robot standing in "Got" would), possibly late or lost.
+    if (result.team_machine && exchange.enabled) {
+      for (int from = 0; from < n; ++from) {
+        const int state = engine(from).current_state();
+        for (int to = 0; to < n; ++to) {
+          if (to == from) continue;
+          ++exchange.sent;
+          if (exchange.loss > 0 && random.uniform() < exchange.loss) {
+            ++exchange.lost;
+            continue;
+          }
+          on_the_way.push_back({tick + exchange.delay_ticks, from, to, state});
+        }
+      }
+      while (!on_the_way.empty() && on_the_way.front().due <= tick) {
+        const Message& m = on_the_way.front();
+        engine(m.to).report(m.from, m.state);
+        on_the_way.pop_front();
+      }
+    }
+    sim.step_control();
+  }
+  for (int i = 0; i < n; ++i) {
+    hal::bind(&sim, i);
+    engine(i).finish();
+    sim.stop();
+    RobotRun& r = robot(i);
+    r.state = engine(i).current_state();
+    r.final_pose = sim.pose();
+    r.distance_m = sim.odometer();
+    r.bumps = sim.bumps();
+    r.bump_log = sim.bump_log();
+    r.left_floor = sim.left_floor();
+    r.held = sim.held_item();
+    r.lights = sim.lights();
+    r.beeps = sim.beeps();
+  }
+  hal::bind(nullptr);
+  sim.select(0);
+  // The run's status: running while any robot runs, else the worst of theirs.
+  auto any = [&](const char* s) {
+    for (const RobotRun& r : result.robots)
+      if (r.status == s) return true;
+    return false;
+  };
+  result.status = any("running")      ? "running"
+                  : any("terminated") ? "terminated"
+                  : any("failed")     ? "failed"
+                                      : "succeeded";
+  result.exchange = exchange;
+  result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace carbot::driver

@@ -1,0 +1,191 @@
+/* FetchBot (samples/fetchbot.iface) on the Carbot: a team of robots fetching one item.
+ *
+ * Every robot of the team links this library; each keeps its own memory (carbot_robot()
+ * picks it), as each real robot would in its own firmware. The item to fetch is the first
+ * one in the world file. Nothing here knows about the team: whether a robot picks the item
+ * up or stands back is the chart's decision (samples/fetch_team.fsm). Obstacles and other
+ * robots are not avoided: a robot that drives at an item another robot is holding runs into
+ * that robot, which is what the contrast run shows.
+ *
+ * FetchBot and CleanBot share function names (DriveToItem, PickUp, Arrived, Holding), so
+ * this library's functions carry the interface's name as a prefix (FetchBot_PickUp); carbot-sim
+ * compiles a FetchBot engine with a header that renames its calls (docs/sim.md, "FetchBot").
+ *
+ * Units: metres, seconds, radians. Details and numbers: docs/sim.md, "FetchBot".
+ */
+#include "robots/robots.h"
+
+#include <math.h>
+
+#include "hal/carbot_hal.h"
+
+#define FETCHBOT_CRUISE 0.25       /* m/s when far from the item */
+#define FETCHBOT_SLOW 0.05         /* m/s creeping in on it */
+#define FETCHBOT_TURN_GAIN 2.0     /* turn rate per radian of heading error */
+#define FETCHBOT_MAX_TURN 1.5      /* rad/s */
+#define FETCHBOT_TURN_IN_PLACE 0.6 /* rad: a larger heading error turns on the spot */
+#define FETCHBOT_ARRIVED 0.05      /* m: gripper point this close to the item */
+#define FETCHBOT_HANDLE_TIME 0.5   /* s to close the gripper */
+#define FETCHBOT_PARK_DISTANCE 0.9 /* m: a parked robot's centre is this far from the item */
+#define FETCHBOT_BACK_SPEED 0.20   /* m/s backing away to park */
+#define FETCHBOT_STILL 0.02        /* m/s: slower than this is standing */
+#define FETCHBOT_DELIVERED 0.10    /* m: an item this close to its destination is there */
+
+/* One robot's memory. */
+struct FetchBot {
+  double handle_since; /* when the gripper started closing or opening, -1 idle */
+};
+static struct FetchBot robots[CARBOT_MAX_ROBOTS];
+
+void fetchbot_reset(void) {
+  int i;
+  for (i = 0; i < CARBOT_MAX_ROBOTS; ++i) robots[i].handle_since = -1;
+}
+
+static struct FetchBot* me(void) { return &robots[carbot_robot()]; }
+
+static double dist(double ax, double ay, double bx, double by) { return hypot(ax - bx, ay - by); }
+
+static bool item_at(double* x, double* y) {
+  CarbotItem it;
+  if (carbot_item_count() < 1) return false;
+  it = carbot_item(0);
+  *x = it.x;
+  *y = it.y;
+  return true;
+}
+
+/* Heading error towards (x, y) from the robot's centre, in (-pi, pi]. */
+static double bearing_error(CarbotPose p, double x, double y) {
+  const double e = atan2(y - p.y, x - p.x) - p.heading;
+  return atan2(sin(e), cos(e));
+}
+
+static double clamp_turn(double turn) {
+  if (turn > FETCHBOT_MAX_TURN) return FETCHBOT_MAX_TURN;
+  if (turn < -FETCHBOT_MAX_TURN) return -FETCHBOT_MAX_TURN;
+  return turn;
+}
+
+/* Drives so that the gripper point comes to (x, y), as the CleanBot does: turn on the spot
+ * when far off, else run at a speed that falls with the remaining distance. */
+static void go_to(double x, double y) {
+  const CarbotPose p = carbot_pose();
+  double gx, gy, speed, remaining, reach, error, turn;
+  carbot_gripper_point(&gx, &gy);
+  reach = dist(p.x, p.y, gx, gy);
+  error = bearing_error(p, x, y);
+  if (dist(p.x, p.y, x, y) < reach * 0.9) { /* too close to turn onto it: back off */
+    carbot_drive(-0.10, 0);
+    return;
+  }
+  turn = clamp_turn(FETCHBOT_TURN_GAIN * error);
+  if (fabs(error) > FETCHBOT_TURN_IN_PLACE) {
+    carbot_drive(0, turn);
+    return;
+  }
+  remaining = dist(p.x, p.y, x, y) - reach;
+  speed = 0.8 * remaining;
+  if (speed > FETCHBOT_CRUISE) speed = FETCHBOT_CRUISE;
+  if (speed < FETCHBOT_SLOW) speed = FETCHBOT_SLOW;
+  if (remaining < FETCHBOT_ARRIVED / 2) speed = 0;
+  carbot_drive(speed * cos(error), turn);
+}
+
+/* --- actions ------------------------------------------------------------------------------ */
+
+void FetchBot_DriveToItem(void) {
+  double x, y;
+  if (!item_at(&x, &y) || FetchBot_Arrived()) {
+    carbot_drive(0, 0);
+    return;
+  }
+  go_to(x, y);
+}
+
+void FetchBot_PickUp(void) {
+  double x, y;
+  if (FetchBot_Holding() || !item_at(&x, &y)) {
+    carbot_drive(0, 0);
+    return;
+  }
+  if (!FetchBot_Arrived()) { /* not in reach (yet, or any more): go for it */
+    me()->handle_since = -1;
+    go_to(x, y);
+    return;
+  }
+  carbot_drive(0, 0);
+  if (me()->handle_since < 0) me()->handle_since = carbot_time();
+  if (carbot_time() - me()->handle_since < FETCHBOT_HANDLE_TIME) return;
+  me()->handle_since = -1;
+  (void)carbot_grip(0); /* fails if another robot holds it: PickUp goes on trying */
+}
+
+/* Drives the held item to its destination, then stands still while the gripper opens and
+ * puts it down. */
+void FetchBot_Carry(void) {
+  CarbotItem it;
+  double gx, gy;
+  if (!FetchBot_Holding()) {
+    carbot_drive(0, 0);
+    return;
+  }
+  it = carbot_item(0);
+  carbot_gripper_point(&gx, &gy);
+  if (dist(gx, gy, it.dest_x, it.dest_y) >= FETCHBOT_ARRIVED) {
+    me()->handle_since = -1;
+    go_to(it.dest_x, it.dest_y);
+    return;
+  }
+  carbot_drive(0, 0);
+  if (me()->handle_since < 0) me()->handle_since = carbot_time();
+  if (carbot_time() - me()->handle_since < FETCHBOT_HANDLE_TIME) return;
+  me()->handle_since = -1;
+  carbot_release();
+}
+
+/* Backs away from the item, still facing it, until FETCHBOT_PARK_DISTANCE from it; then stands. */
+void FetchBot_Park(void) {
+  double x, y;
+  CarbotPose p;
+  if (!item_at(&x, &y)) {
+    carbot_drive(0, 0);
+    return;
+  }
+  p = carbot_pose();
+  if (dist(p.x, p.y, x, y) >= FETCHBOT_PARK_DISTANCE) {
+    carbot_drive(0, 0);
+    return;
+  }
+  carbot_drive(-FETCHBOT_BACK_SPEED, clamp_turn(FETCHBOT_TURN_GAIN * bearing_error(p, x, y)));
+}
+
+void FetchBot_Beep(int times) { carbot_beep(times); }
+
+void FetchBot_Lights(bool on) { carbot_lights(on); }
+
+/* --- conditions --------------------------------------------------------------------------- */
+
+bool FetchBot_Arrived(void) {
+  double x, y, gx, gy;
+  if (!item_at(&x, &y)) return false;
+  carbot_gripper_point(&gx, &gy);
+  return dist(gx, gy, x, y) < FETCHBOT_ARRIVED;
+}
+
+bool FetchBot_Holding(void) { return carbot_item_count() > 0 && carbot_held_item() == 0; }
+
+bool FetchBot_Delivered(void) {
+  CarbotItem it;
+  if (carbot_item_count() < 1) return false;
+  it = carbot_item(0);
+  return !it.held && dist(it.x, it.y, it.dest_x, it.dest_y) < FETCHBOT_DELIVERED;
+}
+
+bool FetchBot_Parked(void) {
+  double x, y;
+  CarbotPose p;
+  if (!item_at(&x, &y)) return true;
+  p = carbot_pose();
+  return dist(p.x, p.y, x, y) >= FETCHBOT_PARK_DISTANCE - 0.05 && fabs(carbot_speed()) < FETCHBOT_STILL;
+}
