@@ -50,11 +50,13 @@ void instance_rows(const model::Model &model, const model::Chart &c, const std::
   first_row[path] = first;
   if (!path.empty())
     instances.push_back({{"path", path}, {"chart", c.name}, {"first", first}, {"count", c.places.size()}});
-  for (std::size_t i = 0; i < c.places.size(); ++i)
-    rows.push_back({{"name", path.empty() ? c.places[i].name : path + "/" + c.places[i].name},
-                    {"node", fmt::format("{}p{}", prefix, i)},
-                    {"terminal", c.places[i].terminal != model::Terminal::None},
-                    {"group", path}});
+  for (std::size_t i = 0; i < c.places.size(); ++i) {
+    nlohmann::json row = {{"name", path.empty() ? c.places[i].name : path + "/" + c.places[i].name},
+                          {"node", fmt::format("{}p{}", prefix, i)},
+                          {"terminal", c.places[i].terminal != model::Terminal::None}};
+    if (!path.empty()) row["group"] = path;
+    rows.push_back(row);
+  }
   for (std::size_t i = 0; i < c.places.size(); ++i)
     if (c.places[i].runs >= 0)
       instance_rows(model, model.charts.at(static_cast<std::size_t>(c.places[i].runs)),
