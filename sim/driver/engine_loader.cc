@@ -30,6 +30,8 @@ Engine::Engine(const std::string& library) {
   state_ = reinterpret_cast<int (*)(const void*)>(dlsym(handle_, kEngineState));
   places_ = reinterpret_cast<int (*)()>(dlsym(handle_, kEnginePlaces));
   activation_ = reinterpret_cast<unsigned (*)(const void*, int)>(dlsym(handle_, kEngineActivation));
+  instance_activation_ =
+      reinterpret_cast<unsigned (*)(const void*, int, int)>(dlsym(handle_, kEngineInstanceActivation));
   // max_align_t alignment: vector storage comes from operator new, which guarantees it.
   memory_.assign(size() + 1, 0);
 }

@@ -108,6 +108,22 @@ void record_tick(const Engine& engine, const ChartInfo& chart, long frame, PlanF
     for (int p = 0; p < engine.places(); ++p)
       if (engine.activation(p) > 0) active.push_back(p);
   }
+  // Sub-chart instances: depth first, so the place that runs one is decided before its rows.
+  std::vector<int> nested;
+  if (engine.has_instances()) {
+    std::vector<bool> on(chart.rows.size(), false);
+    for (int a : active) on[static_cast<std::size_t>(a)] = true;
+    for (std::size_t i = 0; i < chart.instances.size(); ++i) {
+      const ChartInfo::Instance& in = chart.instances[i];
+      if (!on[in.parent_row]) continue;  // not running: its state is as its last tick left it
+      for (std::size_t q = 0; q < in.count; ++q)
+        if (engine.instance_activation(static_cast<int>(i), static_cast<int>(q)) > 0) {
+          on[in.first + q] = true;
+          nested.push_back(static_cast<int>(in.first + q));
+        }
+    }
+  }
+  rec.instances_active.push_back(std::move(nested));
   rec.active.push_back(std::move(active));
   rec.calls.push_back(std::move(call_log()));
   call_log().clear();
@@ -136,6 +152,8 @@ RunResult run_engine(Simulation& sim, Engine& engine, const ChartInfo& chart, do
     // A frame without an engine call (the last) keeps the activation it had.
     auto keep_activation = [&] {
       rec.active.push_back(rec.active.empty() ? std::vector<int>() : rec.active.back());
+      rec.instances_active.push_back(rec.instances_active.empty() ? std::vector<int>()
+                                                                  : rec.instances_active.back());
       rec.calls.emplace_back();
     };
     // The escape button is the robot's stop button: an sfc or fsm engine does not read it,

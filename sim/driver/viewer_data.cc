@@ -61,14 +61,26 @@ json viewer_data(const RunReport& r, const std::string& chart_svg, const std::st
   const long frames = static_cast<long>(r.run.trace.size());
   auto frame_of = [&](double t) { return std::clamp(std::lround(t / period), 0L, std::max(0L, frames - 1)); };
 
-  json rows = json::array();
-  for (const ChartInfo::Row& row : r.chart.rows)
-    rows.push_back({{"name", row.name}, {"node", row.node}, {"terminal", row.terminal}});
+  // The chart's rows, then its sub-chart instances' when the engine told their activation.
+  const bool nested = !rec.instances_active.empty() && !r.chart.instances.empty();
+  json rows = json::array(), instances = json::array();
+  for (const ChartInfo::Row& row : r.chart.rows) {
+    if (!nested && !row.group.empty()) continue;
+    json j = {{"name", row.name}, {"node", row.node}, {"terminal", row.terminal}};
+    if (!row.group.empty()) j["group"] = row.group;
+    rows.push_back(j);
+  }
+  if (nested)
+    for (const ChartInfo::Instance& in : r.chart.instances)
+      instances.push_back({{"path", in.path}, {"chart", in.chart}, {"first", in.first}, {"count", in.count}});
 
   gfec::viewer::ChangeList active;
   gfec::viewer::CallRecorder calls;
   for (long k = 0; k < frames; ++k) {
-    active.record(k, k < static_cast<long>(rec.active.size()) ? json(rec.active[k]) : json::array());
+    json on = k < static_cast<long>(rec.active.size()) ? json(rec.active[k]) : json::array();
+    if (nested && k < static_cast<long>(rec.instances_active.size()))
+      for (int row : rec.instances_active[k]) on.push_back(row);
+    active.record(k, on);
     calls.record(k, k < static_cast<long>(rec.calls.size()) ? rec.calls[k] : std::vector<std::string>());
   }
 
@@ -133,6 +145,7 @@ json viewer_data(const RunReport& r, const std::string& chart_svg, const std::st
       {"svg", chart_svg},
       {"svg_note", svg_note},
       {"rows", rows},
+      {"instances", instances},
       {"active", active.json()},
       {"calls", calls.json()},
       {"calls_note", r.chart.kind == "plan" ? "A plan's actors and supervisors are C++ classes of the toolbox: their "
