@@ -1,5 +1,6 @@
 #include "driver/chart_build.h"
 
+#include <algorithm>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -131,12 +132,19 @@ void read_viewer_info(const nlohmann::json& model, ChartInfo& info) {
     for (std::size_t g = 0; g < globals.size(); ++g)
       info.supervisor_nodes[globals[g].value("name", "?")] = fmt::format("g{}", g);
   }
-  for (const nlohmann::json& f : array("functions")) {
-    ChartInfo::Function fn{f.value("name", ""), f.value("result", "void"), {}};
-    if (f.contains("params") && f["params"].is_array())
-      for (const nlohmann::json& p : f["params"]) fn.params.push_back(p.value("type", "int"));
-    if (!fn.name.empty()) info.functions.push_back(fn);
-  }
+  // The functions the chart calls, and those its sub-charts call (each once): all are wrapped.
+  std::vector<nlohmann::json> function_lists = {array("functions")};
+  for (const nlohmann::json& sub : array("subcharts"))
+    if (sub.contains("functions") && sub["functions"].is_array()) function_lists.push_back(sub["functions"]);
+  for (const nlohmann::json& list : function_lists)
+    for (const nlohmann::json& f : list) {
+      ChartInfo::Function fn{f.value("name", ""), f.value("result", "void"), {}};
+      if (f.contains("params") && f["params"].is_array())
+        for (const nlohmann::json& p : f["params"]) fn.params.push_back(p.value("type", "int"));
+      const bool known = std::any_of(info.functions.begin(), info.functions.end(),
+                                     [&](const ChartInfo::Function& g) { return g.name == fn.name; });
+      if (!fn.name.empty() && !known) info.functions.push_back(fn);
+    }
 }
 
 /// The C spelling of a model type in a function signature, or "" for one the recorder does not

@@ -4,6 +4,7 @@
 // trace's `active` column; the page must be one self-contained file.
 #include <algorithm>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -146,6 +147,81 @@ TEST_CASE("viewer: the clean-up's recording follows its states and the cup", "[e
   CHECK(r.rec["rows"][4]["name"] == "Done");
   CHECK(r.rec["rows"][4]["terminal"] == true);
   CHECK(r.rec["rows"][0]["terminal"] == false);
+}
+
+TEST_CASE("viewer: the mission's recording lights each sub-chart instance from the compiled engine",
+          "[e2e][viewer][mission]") {
+  const Recorded r = record("samples/mission.fsm", "sim/worlds/mission.json", 60);
+  REQUIRE(r.run.exit_code == 0);
+  REQUIRE(r.run.result["status"] == "succeeded");
+  // Reading the instances changes nothing: the trace is the plain build's, byte for byte.
+  CHECK(r.run.trace_text == e2e::run_sim("samples/mission.fsm", "sim/worlds/mission.json", 60).trace_text);
+  const json &rec = r.rec;
+  std::vector<std::string> rows, nodes;
+  for (const json &row : rec["rows"]) {
+    rows.push_back(row["name"]);
+    nodes.push_back(row["node"]);
+  }
+  CHECK(rows == std::vector<std::string>{"Patrol", "Tidy", "Done", "GaveUp", "Patrol/LeftFw", "Patrol/LeftStop",
+                                         "Patrol/RightFw", "Patrol/RightStop", "Tidy/Z0", "Tidy/Z1", "Tidy/Z2",
+                                         "Tidy/Z3", "Tidy/Done", "Tidy/Failed"});
+  // The nodes of the frames gfec's picture draws: place 0 runs the frame s0_, place 1 s1_.
+  CHECK(nodes[4] == "s0_p0");
+  CHECK(nodes[13] == "s1_p5");
+  CHECK(rec["instances"] == json::parse(R"([{"path": "Patrol", "chart": "LineFollower", "first": 4, "count": 4},
+                                            {"path": "Tidy", "chart": "CleanUp", "first": 8, "count": 6}])"));
+
+  // What each place's action calls (line_follower.sfc, cleanup.fsm); Mission's states call nothing.
+  const std::map<std::string, std::string> action = {
+      {"Patrol/LeftFw", "Left_FW()"},  {"Patrol/LeftStop", "Left_Stop()"}, {"Patrol/RightFw", "Right_FW()"},
+      {"Patrol/RightStop", "Right_Stop()"}, {"Tidy/Z0", "DriveToItem()"}, {"Tidy/Z1", "PickUp()"},
+      {"Tidy/Z2", "Transport()"},      {"Tidy/Z3", "PlaceItem()"}};
+  const std::vector<std::string> column = active_column(r.run.trace_text);
+  const long frames = rec["frames"];
+  std::vector<std::string> tidy_states;
+  long patrol_ends = -1;
+  std::set<std::string> previous;
+  for (long k = 0; k + 1 < frames; ++k) {
+    std::set<std::string> on;
+    for (const json &i : value_at(rec["active"], k, json::array())) on.insert(rows[i.get<std::size_t>()]);
+    // The chart's own state is the trace's column.
+    REQUIRE(on.count(column[static_cast<std::size_t>(k)]) == 1);
+    // An instance is lit only while the state that runs it is current; a running LineFollower
+    // has one place of each side active, a running CleanUp exactly one state.
+    auto lit = [&](std::initializer_list<const char *> names) {
+      return std::count_if(names.begin(), names.end(), [&](const char *n) { return on.count(n) > 0; });
+    };
+    const long patrol = lit({"Patrol/LeftFw", "Patrol/LeftStop", "Patrol/RightFw", "Patrol/RightStop"});
+    const long tidy = lit({"Tidy/Z0", "Tidy/Z1", "Tidy/Z2", "Tidy/Z3", "Tidy/Done", "Tidy/Failed"});
+    REQUIRE(patrol == (on.count("Patrol") ? 2 : 0));
+    REQUIRE(lit({"Patrol/LeftFw", "Patrol/LeftStop"}) == patrol / 2);
+    REQUIRE(tidy == (on.count("Tidy") ? 1 : 0));
+    for (const auto &[place, call] : action)
+      if (place.rfind("Tidy/", 0) == 0 && on.count(place) && (tidy_states.empty() || tidy_states.back() != place))
+        tidy_states.push_back(place);
+    if (on.count("Tidy/Done") && tidy_states.back() != "Tidy/Done") tidy_states.push_back("Tidy/Done");
+    // The tick's actions are those of the lit places: the recorded activation and the recorded
+    // calls, both from the engine, agree.
+    std::set<std::string> actions, expected;
+    for (const json &i : value_at(rec["calls"]["ticks"], k, json::array())) {
+      const std::string text = rec["calls"]["texts"][i.get<std::size_t>()];
+      if (text.find(" = ") == std::string::npos) actions.insert(text);
+    }
+    for (const std::string &p : on)
+      if (action.count(p)) expected.insert(action.at(p));
+    INFO("tick " << k);
+    REQUIRE(actions == expected);
+    // Mission leaves Patrol when both sides of the line follower drive: read at the start of the
+    // tick, so the tick before shows LeftFw and RightFw lit.
+    if (on.count("Tidy") && previous.count("Patrol")) {
+      patrol_ends = k;
+      CHECK(previous.count("Patrol/LeftFw") == 1);
+      CHECK(previous.count("Patrol/RightFw") == 1);
+    }
+    previous = on;
+  }
+  CHECK(patrol_ends >= 1999);
+  CHECK(tidy_states == std::vector<std::string>{"Tidy/Z0", "Tidy/Z1", "Tidy/Z2", "Tidy/Z3", "Tidy/Done"});
 }
 
 TEST_CASE("viewer: the wall-follow plan's recording names actors and the supervisor that fired",
