@@ -307,3 +307,22 @@ test('interpreter run page of a chart with sub-charts: each instance lit in the 
     await page.close();
   }
 });
+
+test('mission page (sub-charts on the simulator): the instances lit as the engine recorded them', { skip: skipSim },
+  async () => {
+    const html = path.join(out, 'mission.html'), rec = path.join(out, 'mission.json');
+    execFileSync(sim, [path.join(src, 'samples/mission.fsm'), '--world', path.join(src, 'sim/worlds/mission.json'),
+                       '--seconds', '60', '--html', html, '--record', rec, '-q'], { stdio: 'inherit' });
+    // The recording (--record, written beside the page, not read from it): per tick the nodes of
+    // the active rows, the chart's and each running instance's.
+    const d = JSON.parse(fs.readFileSync(rec, 'utf8'));
+    const expected = [];
+    for (let k = 0, i = -1; k < d.frames; ++k) {
+      while (i + 1 < d.active.length && d.active[i + 1][0] <= k) ++i;
+      expected.push((i < 0 ? [] : d.active[i][1]).map((r) => d.rows[r].node).sort());
+    }
+    assert.deepEqual(expected[0], ['p0', 's0_p0', 's0_p2'], 'Patrol, its line follower on both sides');
+    for (const node of ['s0_p1', 's1_p0', 's1_p1', 's1_p2', 's1_p3', 's1_p4'])
+      assert.ok(expected.some((t) => t.includes(node)), `${node} is lit at some tick`);
+    await checkPage('mission', html, expected, true);
+  });
