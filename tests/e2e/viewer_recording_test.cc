@@ -242,6 +242,38 @@ TEST_CASE("viewer: the wall-follow plan's recording names actors and the supervi
   CHECK(column[static_cast<std::size_t>(at + 1)] == "backupCollision");
 }
 
+TEST_CASE("viewer: the square plan's recording has rows for the actors of its sub-plan", "[e2e][viewer][plan]") {
+  const Recorded r = record("samples/square.plan", "sim/worlds/cleanup.json", 60);
+  if (e2e::skipped_for_missing_backend(r.run)) return;
+  REQUIRE(r.run.exit_code == 0);
+  REQUIRE(r.run.result["status"] == "succeeded");
+  std::vector<std::string> rows;
+  for (const json &row : r.rec["rows"]) rows.push_back(row["name"]);
+  // Square's actors, then those of Side (square_side.plan) as the actor `side` ran them.
+  CHECK(rows == std::vector<std::string>{"side", "count", "backOff", "side/forward", "side/turn"});
+  CHECK(r.rec["rows"][3]["group"] == "side");
+  CHECK(r.rec["rows"][3]["node"] == "");  // gfec's picture of Square does not draw Side's insides
+  CHECK(r.rec["instances"] == json::parse(R"([{"path": "side", "chart": "Side", "first": 3, "count": 2}])"));
+  // Side drives forward then turns; then CountDown counts the side: four sides on the open floor.
+  // `side` stays lit while its sub-plan runs, in the page and in the trace.
+  std::vector<std::string> seen, column_seen;
+  for (long k = 0; k < r.rec["frames"].get<long>(); ++k) {
+    std::string names;
+    for (const json &i : value_at(r.rec["active"], k, json::array()))
+      names += (names.empty() ? "" : " ") + rows[i.get<std::size_t>()];
+    if (seen.empty() || seen.back() != names) seen.push_back(names);
+  }
+  for (const std::string &c : active_column(r.run.trace_text))
+    if (column_seen.empty() || column_seen.back() != c) column_seen.push_back(c);
+  std::vector<std::string> expected, expected_column;
+  for (int side = 0; side < 4; ++side) {
+    expected.insert(expected.end(), {"side side/forward", "side side/turn", "count"});
+    expected_column.insert(expected_column.end(), {"side", "count"});
+  }
+  CHECK(seen == expected);
+  CHECK(column_seen == expected_column);
+}
+
 TEST_CASE("viewer: the page is one self-contained file", "[e2e][viewer]") {
   const Recorded r = record("samples/cleanup.fsm", "sim/worlds/cleanup.json", 5);
   REQUIRE(r.run.exit_code == 0);
