@@ -43,9 +43,8 @@ struct RunOptions {
 /// gfec run's `av` lines and of the picture's frames). A row is named `path/place` and points at
 /// the node the DOT back end gives it (`s0_p1`: place 1 of the chart place 0 runs); `first_row`
 /// maps each instance path to its first row; `instances` lists each instance (not the chart).
-void instance_rows(const model::Model &model, const model::Chart &c, const std::string &path,
-                   const std::string &prefix, nlohmann::json &rows, std::map<std::string, std::size_t> &first_row,
-                   nlohmann::json &instances) {
+void instance_rows(const model::Model &model, const model::Chart &c, const std::string &path, const std::string &prefix,
+                   nlohmann::json &rows, std::map<std::string, std::size_t> &first_row, nlohmann::json &instances) {
   const std::size_t first = rows.size();
   first_row[path] = first;
   if (!path.empty())

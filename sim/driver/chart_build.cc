@@ -283,20 +283,16 @@ bool read_instance_forms(const std::string& header, ChartInfo& c) {
       const std::string place = in.path.substr(from, dot == std::string::npos ? std::string::npos : dot - from);
       std::smatch m;
       fields = std::regex_search(fields, m, std::regex("struct\\s+(\\w+)\\s+" + place + "\\s*;")) ? body(m[1].str())
-                                                                                                 : std::string();
+                                                                                                  : std::string();
       if (dot == std::string::npos) break;
       from = dot + 1;
     }
     if (fields.empty()) return false;
     const bool fsm = in.form == "fsm";
-    if (fsm && std::regex_search(fields, std::regex("\\bstate\\s*;")))
-      in.form = "state";
-    else if (!fsm && std::regex_search(fields, std::regex("\\bav\\s*\\[")))
-      in.form = "av";
-    else if (!fsm && std::regex_search(fields, std::regex("\\bcurrent\\s*;")))
-      in.form = "current";
-    else
-      return false;
+    if (fsm && std::regex_search(fields, std::regex("\\bstate\\s*;"))) in.form = "state";
+    else if (!fsm && std::regex_search(fields, std::regex("\\bav\\s*\\["))) in.form = "av";
+    else if (!fsm && std::regex_search(fields, std::regex("\\bcurrent\\s*;"))) in.form = "current";
+    else return false;
   }
   return true;
 }

@@ -11,7 +11,7 @@ constexpr const char* kEngineStatus =
 constexpr const char* kEngineState = "carbot_engine_state";    ///< int (const void*), optional (fsm): the state index
 constexpr const char* kEnginePlaces = "carbot_engine_places";  ///< int (void), optional: places (states) of a C engine
 constexpr const char* kEngineActivation =
-    "carbot_engine_activation";                            ///< unsigned (const void*, int), optional: X_activation
+    "carbot_engine_activation";  ///< unsigned (const void*, int), optional: X_activation
 constexpr const char* kEngineInstanceActivation =
     "carbot_engine_instance_activation";  ///< unsigned (const void*, int, int), optional: a sub-chart instance's place
 constexpr const char* kEngineFini = "carbot_engine_fini";  ///< void (void*), optional: destroys the state

@@ -55,10 +55,10 @@ class Engine {
   void (*init_)(void*) = nullptr;
   void (*run_)(void*) = nullptr;
   int (*status_)(const void*) = nullptr;
-  void (*fini_)(void*) = nullptr;                       // optional
-  int (*state_)(const void*) = nullptr;                 // optional
-  int (*places_)() = nullptr;                           // optional (C engines)
-  unsigned (*activation_)(const void*, int) = nullptr;  // optional (C engines)
+  void (*fini_)(void*) = nullptr;                                     // optional
+  int (*state_)(const void*) = nullptr;                               // optional
+  int (*places_)() = nullptr;                                         // optional (C engines)
+  unsigned (*activation_)(const void*, int) = nullptr;                // optional (C engines)
   unsigned (*instance_activation_)(const void*, int, int) = nullptr;  // optional (recording builds)
   bool initialised_ = false;
 };

@@ -103,7 +103,9 @@ class PlanFollower {
   int sub() const { return sub_; }
 
  private:
-  bool own(const std::string& qualified) const { return qualified.compare(0, chart_.name.size() + 1, chart_.name + ".") == 0; }
+  bool own(const std::string& qualified) const {
+    return qualified.compare(0, chart_.name.size() + 1, chart_.name + ".") == 0;
+  }
   /// "WallFollow.followWall" -> "followWall" when it is an actor of the chart itself.
   std::string actor_of(const std::string& qualified) const {
     return own(qualified) ? qualified.substr(chart_.name.size() + 1) : qualified;
@@ -130,8 +132,7 @@ void record_tick(const Engine& engine, const ChartInfo& chart, long frame, PlanF
     if (plan.current() >= 0) active.push_back(plan.current());
     if (plan.current() >= 0 && plan.sub() >= 0)
       rec.instances_active.push_back({static_cast<int>(chart.rows.size()) + plan.sub()});
-    else
-      rec.instances_active.emplace_back();
+    else rec.instances_active.emplace_back();
   } else {
     for (int p = 0; p < engine.places(); ++p)
       if (engine.activation(p) > 0) active.push_back(p);
@@ -180,8 +181,7 @@ RunResult run_engine(Simulation& sim, Engine& engine, const ChartInfo& chart, do
     // A frame without an engine call (the last) keeps the activation it had.
     auto keep_activation = [&] {
       rec.active.push_back(rec.active.empty() ? std::vector<int>() : rec.active.back());
-      rec.instances_active.push_back(rec.instances_active.empty() ? std::vector<int>()
-                                                                  : rec.instances_active.back());
+      rec.instances_active.push_back(rec.instances_active.empty() ? std::vector<int>() : rec.instances_active.back());
       rec.calls.emplace_back();
     };
     // The escape button is the robot's stop button: an sfc or fsm engine does not read it,

@@ -173,9 +173,9 @@ TEST_CASE("viewer: the mission's recording lights each sub-chart instance from t
 
   // What each place's action calls (line_follower.sfc, cleanup.fsm); Mission's states call nothing.
   const std::map<std::string, std::string> action = {
-      {"Patrol/LeftFw", "Left_FW()"},  {"Patrol/LeftStop", "Left_Stop()"}, {"Patrol/RightFw", "Right_FW()"},
-      {"Patrol/RightStop", "Right_Stop()"}, {"Tidy/Z0", "DriveToItem()"}, {"Tidy/Z1", "PickUp()"},
-      {"Tidy/Z2", "Transport()"},      {"Tidy/Z3", "PlaceItem()"}};
+      {"Patrol/LeftFw", "Left_FW()"},       {"Patrol/LeftStop", "Left_Stop()"}, {"Patrol/RightFw", "Right_FW()"},
+      {"Patrol/RightStop", "Right_Stop()"}, {"Tidy/Z0", "DriveToItem()"},       {"Tidy/Z1", "PickUp()"},
+      {"Tidy/Z2", "Transport()"},           {"Tidy/Z3", "PlaceItem()"}};
   const std::vector<std::string> column = active_column(r.run.trace_text);
   const long frames = rec["frames"];
   std::vector<std::string> tidy_states;
