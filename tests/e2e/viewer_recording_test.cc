@@ -224,6 +224,39 @@ TEST_CASE("viewer: the mission's recording lights each sub-chart instance from t
   CHECK(tidy_states == std::vector<std::string>{"Tidy/Z0", "Tidy/Z1", "Tidy/Z2", "Tidy/Z3", "Tidy/Done"});
 }
 
+TEST_CASE("viewer: instances two levels deep, one of them a sequential sfc, are read from the engine",
+          "[e2e][viewer]") {
+  // Top's place T runs the fsm Mid, whose state M runs Ring: 70 places in a ring, each stepping
+  // on every tick. Over 64 places with one active, the C engine holds Ring as a sequential sfc
+  // (`current`, docs/c-engine.md), Mid as an fsm (`state`).
+  e2e::TempDir dir;
+  std::string ring = "import \"" + e2e::source("samples/linebot.iface") + "\";\nsfc Ring {\n";
+  for (int i = 0; i < 70; ++i) ring += std::string(i == 0 ? "  initial" : " ") + " place P" + std::to_string(i) + ";\n";
+  for (int i = 0; i < 70; ++i) ring += "  P" + std::to_string(i) + " -> P" + std::to_string((i + 1) % 70) + ";\n";
+  ring +=
+      "}\nfsm Mid { initial state M runs Ring; state N; M -> N when Left_IR_Black(); N -> M when Left_IR_White(); }\n"
+      "sfc Top { period 10ms; initial place T runs Mid; }\n";
+  {
+    std::ofstream out(dir.file("ring.sfc"));
+    out << ring;
+  }
+  const Recorded r = record(dir.file("ring.sfc"), "sim/worlds/oval.json", 2);
+  INFO(r.run.output);
+  REQUIRE(r.run.exit_code == 0);
+  const json &rows = r.rec["rows"];
+  REQUIRE(rows.size() == 1 + 2 + 70);
+  CHECK(rows[1] == json::parse(R"({"name": "T/M", "node": "s0_p0", "terminal": false, "group": "T"})"));
+  CHECK(rows[3 + 69] == json::parse(R"({"name": "T.M/P69", "node": "s0_s0_p69", "terminal": false, "group": "T.M"})"));
+  CHECK(r.rec["instances"] == json::parse(R"([{"path": "T", "chart": "Mid", "first": 1, "count": 2},
+                                              {"path": "T.M", "chart": "Ring", "first": 3, "count": 70}])"));
+  // Top never moves the robot, so Mid stays in M; Ring's first tick enters P0 and steps to P1,
+  // each further tick one place on: after tick k + 1 (frame k) P((k + 1) mod 70) is active.
+  for (long k = 0; k + 1 < r.rec["frames"].get<long>(); ++k) {
+    INFO("frame " << k);
+    REQUIRE(value_at(r.rec["active"], k, json::array()) == json::array({0, 1, 3 + (k + 1) % 70}));
+  }
+}
+
 TEST_CASE("viewer: the wall-follow plan's recording names actors and the supervisor that fired",
           "[e2e][viewer][plan]") {
   const Recorded r = record("samples/wall_follow.plan", "sim/worlds/room.json", 20);
