@@ -267,10 +267,11 @@ void carbot_sim_call(const char *text);
 }
 
 bool read_instance_forms(const std::string& header, ChartInfo& c) {
-  // A struct's body: `struct TAG {` up to the first `};` (its fields hold no braces).
+  // A struct's body: `struct TAG {` up to the first `}` (its fields hold no braces), then `;` or
+  // a typedef's name and `;`.
   auto body = [&](const std::string& tag) -> std::string {
     std::smatch m;
-    if (!std::regex_search(header, m, std::regex("struct\\s+" + tag + "\\s*\\{([^}]*)\\};"))) return "";
+    if (!std::regex_search(header, m, std::regex("struct\\s+" + tag + "\\s*\\{([^}]*)\\}[^;]*;"))) return "";
     return m[1].str();
   };
   for (ChartInfo::Instance& in : c.instances) {
