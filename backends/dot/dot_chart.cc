@@ -31,6 +31,18 @@ std::string place_node(const model::Model &m, const model::Chart &c, std::size_t
   return fmt::format("  {}p{} [{}, label={}];\n", id, i, attrs, quote(label));
 }
 
+/// A transition: Grafcet's bar with its label to its right. The label is a cell of the node's
+/// own table rather than an `xlabel`: Graphviz places xlabels after the layout, where they may
+/// overlap each other and the edges (two transitions on one rank: "T1: ... >= 2sT2: ..."), while a
+/// node's size is part of the layout, which keeps nodes apart. Edges meet the bar at its `bar`
+/// port, top and bottom.
+std::string transition_node(const std::string &id, const std::string &label) {
+  return fmt::format("  {} [shape=plain, label=<<TABLE BORDER=\"0\" CELLBORDER=\"0\" CELLSPACING=\"0\" "
+                     "CELLPADDING=\"0\"><TR><TD PORT=\"bar\" BGCOLOR=\"black\" WIDTH=\"36\" HEIGHT=\"4\" "
+                     "FIXEDSIZE=\"TRUE\"></TD><TD ALIGN=\"LEFT\" CELLPADDING=\"3\">{}</TD></TR></TABLE>>];\n",
+                     id, html_escape(label));
+}
+
 /// Grafcet's double line where a transition forks into several places or several places join
 /// into one transition: a thin double-bordered bar.
 std::string sync_bar(const std::string &id, std::size_t width) {
@@ -47,24 +59,30 @@ std::string chart_body(const model::Model &m, const model::Chart &c, const std::
   out += "  // places and states, in declaration order\n";
   for (std::size_t i = 0; i < c.places.size(); ++i) out += place_node(m, c, i, id);
 
-  out += "  // transitions: a bar each, labelled with its name and condition\n";
+  out += "  // transitions: a bar each, its label beside it inside the same node (see transition_node)\n";
   for (std::size_t i = 0; i < c.transitions.size(); ++i) {
     const model::Transition &t = c.transitions[i];
-    std::string cond = t.condition ? source_text(m, t.condition->range) : "true";
-    std::string label = t.named || !fsm ? fmt::format("{}: {}", t.name, cond) : cond;
-    std::string bar = fmt::format("{}t{}", id, i), into = bar, from = bar;
-    out += fmt::format("  {} [shape=box, style=filled, fillcolor=black, label=\"\", height=0.05, width=0.5, "
-                       "fixedsize=true, xlabel={}];\n",
-                       bar, quote(label));
+    std::string label = fmt::format("{}: {}", t.name, t.condition ? source_text(m, t.condition->range) : "true");
+    // An fsm tries the transitions leaving its state in declaration order and takes the first
+    // whose condition holds: the picture numbers them so, 1 first, per state.
+    if (fsm && !t.inputs.empty()) {
+      int rank = 1;
+      for (std::size_t j = 0; j < i; ++j)
+        if (!c.transitions[j].inputs.empty() && c.transitions[j].inputs[0] == t.inputs[0]) ++rank;
+      label = fmt::format("{}. {}", rank, label);
+    }
+    std::string bar = fmt::format("{}t{}", id, i);
+    out += transition_node(bar, label);
+    std::string into = bar + ":bar", from = bar + ":bar";
     if (t.inputs.size() > 1) {
       into = fmt::format("{}join{}", id, i);
       out += sync_bar(into, t.inputs.size());
-      out += fmt::format("  {} -> {} [arrowhead=none];\n", into, bar);
+      out += fmt::format("  {} -> {}:bar [arrowhead=none];\n", into, bar);
     }
     if (t.outputs.size() > 1) {
       from = fmt::format("{}fork{}", id, i);
       out += sync_bar(from, t.outputs.size());
-      out += fmt::format("  {} -> {} [arrowhead=none];\n", bar, from);
+      out += fmt::format("  {}:bar -> {} [arrowhead=none];\n", bar, from);
     }
     for (int p : t.inputs) out += fmt::format("  {}p{} -> {} [arrowhead=none];\n", id, p, into);
     for (int p : t.outputs) out += fmt::format("  {} -> {}p{};\n", from, id, p);

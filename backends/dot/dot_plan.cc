@@ -20,8 +20,8 @@ public:
     out_ = fmt::format("digraph {} {{\n", quote(plan_.name));
     out_ += preamble("plan " + plan_.name);
     config();
-    out_ += "  terminate [shape=doublecircle, style=filled, fillcolor=black, label=\"\", width=0.15, "
-            "xlabel=\"terminate\"];\n";
+    // The word inside the circle: an xlabel would be placed after the layout, over the edges.
+    out_ += "  terminate [shape=doublecircle, label=\"terminate\", fontsize=9, margin=0];\n";
     out_ += "  // actors: the start actor double-bordered; result states lead to the next actor\n";
     for (std::size_t i = 0; i < plan_.actors.size(); ++i) actor(i);
     out_ += "  // global supervisors: may interrupt any actor\n";

@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <map>
 #include <memory>
 #include <ostream>
 #include <sstream>
@@ -37,18 +38,41 @@ struct RunOptions {
   Options report;    ///< -f...: the diagnostics' format and style, as gfec's
 };
 
+/// The timeline's rows for chart `c` run as instance `path` ("" for the compiled chart): its
+/// places, then each sub-chart instance's rows, depth first in declaration order (the order of
+/// gfec run's `av` lines and of the picture's frames). A row is named `path/place` and points at
+/// the node the DOT back end gives it (`s0_p1`: place 1 of the chart place 0 runs); `first_row`
+/// maps each instance path to its first row; `instances` lists each instance (not the chart).
+void instance_rows(const model::Model &model, const model::Chart &c, const std::string &path, const std::string &prefix,
+                   nlohmann::json &rows, std::map<std::string, std::size_t> &first_row, nlohmann::json &instances) {
+  const std::size_t first = rows.size();
+  first_row[path] = first;
+  if (!path.empty())
+    instances.push_back({{"path", path}, {"chart", c.name}, {"first", first}, {"count", c.places.size()}});
+  for (std::size_t i = 0; i < c.places.size(); ++i) {
+    nlohmann::json row = {{"name", path.empty() ? c.places[i].name : path + "/" + c.places[i].name},
+                          {"node", fmt::format("{}p{}", prefix, i)},
+                          {"terminal", c.places[i].terminal != model::Terminal::None}};
+    if (!path.empty()) row["group"] = path;
+    rows.push_back(row);
+  }
+  for (std::size_t i = 0; i < c.places.size(); ++i)
+    if (c.places[i].runs >= 0)
+      instance_rows(model, model.charts.at(static_cast<std::size_t>(c.places[i].runs)),
+                    path.empty() ? c.places[i].name : path + "." + c.places[i].name, fmt::format("{}s{}_", prefix, i),
+                    rows, first_row, instances);
+}
+
 /// The run viewer's recording of an interpreter run (docs/viewer.md): the chart's picture, the
-/// activation after each tick and what each tick did, taken from the run's log. Frame k is
-/// tick k + 1; there is no world and no robot.
+/// activation after each tick (of the chart and of each running sub-chart instance) and what
+/// each tick did, taken from the run's log. Frame k is tick k + 1; there is no world and no robot.
 nlohmann::json viewer_data(const model::Model &model, int chart, const interp::RunResult &r, const RunOptions &o) {
   using nlohmann::json;
   const model::Chart &c = model.charts.at(static_cast<std::size_t>(chart));
   const bool fsm = c.kind == model::Chart::Kind::Fsm;
-  json rows = json::array();
-  for (std::size_t i = 0; i < c.places.size(); ++i)
-    rows.push_back({{"name", c.places[i].name},
-                    {"node", fmt::format("p{}", i)},
-                    {"terminal", c.places[i].terminal != model::Terminal::None}});
+  json rows = json::array(), instances = json::array();
+  std::map<std::string, std::size_t> first_row;
+  instance_rows(model, c, "", "", rows, first_row, instances);
   std::string svg, note;
   try {
     EmitOptions emit;
@@ -63,9 +87,21 @@ nlohmann::json viewer_data(const model::Model &model, int chart, const interp::R
   long frame = -1;
   std::vector<std::string> tick_calls;
   std::string status = "running";
+  json on = json::array();  // the rows active after the current tick
   auto finish_tick = [&] {
-    if (frame >= 0) calls.record(frame, tick_calls);
+    if (frame >= 0) {
+      calls.record(frame, tick_calls);
+      active.record(frame, on);
+    }
     tick_calls.clear();
+    on = json::array();
+  };
+  // "av 1 0 2" (the chart) or "av Search.Grab: 0 1" (a running instance): whose line, and the rest.
+  auto owner = [](const std::string &text, std::size_t from) {
+    std::size_t space = text.find(' ', from);
+    if (space != std::string::npos && space > from && text[space - 1] == ':')
+      return std::make_pair(text.substr(from, space - 1 - from), space + 1);
+    return std::make_pair(std::string(), from);
   };
   for (const interp::Event &e : r.log.events()) {
     switch (e.kind) {
@@ -73,16 +109,19 @@ nlohmann::json viewer_data(const model::Model &model, int chart, const interp::R
       finish_tick();
       ++frame;
       break;
-    case interp::EventKind::Av: {
-      // "av 1 0 2": the activation of each place after the tick.
-      json on = json::array();
-      std::istringstream counts(e.text.substr(2));
+    case interp::EventKind::Av:
+    case interp::EventKind::InstanceAv: {
+      // The activation of each place after the tick; an instance's line only while it runs.
+      auto [path, rest] = owner(e.text, 3);
+      auto first = first_row.find(path);
+      if (first == first_row.end()) break;
+      std::istringstream counts(e.text.substr(rest));
       unsigned long n = 0;
-      for (int p = 0; counts >> n; ++p)
-        if (n > 0) on.push_back(p);
-      active.record(frame, on);
+      for (std::size_t p = 0; counts >> n; ++p)
+        if (n > 0) on.push_back(first->second + p);
       break;
     }
+    case interp::EventKind::InstanceState: break;  // its rows say it; not the run's status
     case interp::EventKind::State: {
       // "state Z3 succeeded": the status is the last word.
       std::string now = e.text.substr(e.text.rfind(' ') + 1);
@@ -113,6 +152,7 @@ nlohmann::json viewer_data(const model::Model &model, int chart, const interp::R
       {"svg", svg},
       {"svg_note", note},
       {"rows", rows},
+      {"instances", instances},
       {"active", active.json()},
       {"calls", calls.json()},
       {"events", events},

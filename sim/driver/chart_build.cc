@@ -1,6 +1,8 @@
 #include "driver/chart_build.h"
 
+#include <algorithm>
 #include <fstream>
+#include <regex>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -30,6 +32,8 @@ void run_gfec(const std::vector<std::string>& argv, const std::string& chart) {
 }
 
 void read_viewer_info(const nlohmann::json& model, ChartInfo& info);
+void instance_rows(const nlohmann::json& chart, const nlohmann::json& subcharts, const std::string& path,
+                   const std::string& prefix, std::size_t first, ChartInfo& info);
 
 ChartInfo read_chart_info(const std::string& model_path) {
   std::ifstream in(model_path);
@@ -68,6 +72,42 @@ ChartInfo read_chart_info(const std::string& model_path) {
   return info;
 }
 
+/// The rows of the sub-chart instances that the places of `chart` (a model JSON chart) run,
+/// depth first in declaration order: the order of gfec's picture frames, whose nodes are
+/// prefixed "s<place>_" per level. `first` is the row of `chart`'s first place.
+void instance_rows(const nlohmann::json& chart, const nlohmann::json& subcharts, const std::string& path,
+                   const std::string& prefix, std::size_t first, ChartInfo& info) {
+  const char* key = chart.value("kind", "") == "fsm" ? "states" : "places";
+  if (!chart.contains(key) || !chart[key].is_array()) return;
+  const nlohmann::json& places = chart[key];
+  for (std::size_t i = 0; i < places.size(); ++i) {
+    if (!places[i].contains("runs") || !places[i]["runs"].is_string()) continue;
+    const std::string runs = places[i]["runs"].get<std::string>();
+    const nlohmann::json* sub = nullptr;
+    for (const nlohmann::json& c : subcharts)
+      if (c.value("name", "") == runs) sub = &c;
+    if (!sub) continue;
+    const char* sub_key = sub->value("kind", "") == "fsm" ? "states" : "places";
+    if (!sub->contains(sub_key) || !(*sub)[sub_key].is_array()) continue;
+    const std::string name = places[i].value("name", "?");
+    ChartInfo::Instance in;
+    in.path = path.empty() ? name : path + "." + name;
+    in.chart = runs;
+    in.first = info.rows.size();
+    in.count = (*sub)[sub_key].size();
+    in.parent_row = first + i;
+    in.form = sub->value("kind", "");  // refined from engine.h by read_instance_forms
+    const std::string inner = fmt::format("{}s{}_", prefix, i);
+    for (std::size_t q = 0; q < in.count; ++q) {
+      const nlohmann::json& pl = (*sub)[sub_key][q];
+      info.rows.push_back({in.path + "/" + pl.value("name", "?"), fmt::format("{}p{}", inner, q),
+                           pl.contains("terminal") && pl["terminal"].is_string(), in.path});
+    }
+    info.instances.push_back(in);
+    instance_rows(*sub, subcharts, in.path, inner, in.first, info);
+  }
+}
+
 /// What the run viewer needs from the model: the timeline's rows and their picture nodes (the
 /// ids gfec's DOT back end gives them: places and states "pN", actors "aN", supervisors "sN_M"
 /// and global ones "gN"), and the interface functions with their C types.
@@ -79,24 +119,33 @@ void read_viewer_info(const nlohmann::json& model, ChartInfo& info) {
   const nlohmann::json rows = array(places);
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const nlohmann::json& r = rows[i];
-    ChartInfo::Row row{r.value("name", "?"), fmt::format("{}{}", info.kind == "plan" ? "a" : "p", i), false};
+    ChartInfo::Row row{r.value("name", "?"), fmt::format("{}{}", info.kind == "plan" ? "a" : "p", i), false, ""};
     row.terminal = r.contains("terminal") && r["terminal"].is_string();
     if (info.kind == "plan" && r.contains("supervisors") && r["supervisors"].is_array())
       for (std::size_t s = 0; s < r["supervisors"].size(); ++s)
         info.supervisor_nodes[row.name + "/" + r["supervisors"][s].value("name", "?")] = fmt::format("s{}_{}", i, s);
     info.rows.push_back(row);
   }
+  info.own_rows = info.rows.size();
+  if (info.kind != "plan") instance_rows(model, array("subcharts"), "", "", 0, info);
   if (info.kind == "plan") {
     const nlohmann::json globals = array("supervisors");
     for (std::size_t g = 0; g < globals.size(); ++g)
       info.supervisor_nodes[globals[g].value("name", "?")] = fmt::format("g{}", g);
   }
-  for (const nlohmann::json& f : array("functions")) {
-    ChartInfo::Function fn{f.value("name", ""), f.value("result", "void"), {}, f.value("interface", "")};
-    if (f.contains("params") && f["params"].is_array())
-      for (const nlohmann::json& p : f["params"]) fn.params.push_back(p.value("type", "int"));
-    if (!fn.name.empty()) info.functions.push_back(fn);
-  }
+  // The functions the chart calls, and those its sub-charts call (each once): all are wrapped.
+  std::vector<nlohmann::json> function_lists = {array("functions")};
+  for (const nlohmann::json& sub : array("subcharts"))
+    if (sub.contains("functions") && sub["functions"].is_array()) function_lists.push_back(sub["functions"]);
+  for (const nlohmann::json& list : function_lists)
+    for (const nlohmann::json& f : list) {
+      ChartInfo::Function fn{f.value("name", ""), f.value("result", "void"), {}, f.value("interface", "")};
+      if (f.contains("params") && f["params"].is_array())
+        for (const nlohmann::json& p : f["params"]) fn.params.push_back(p.value("type", "int"));
+      const bool known = std::any_of(info.functions.begin(), info.functions.end(),
+                                     [&](const ChartInfo::Function& g) { return g.name == fn.name; });
+      if (!fn.name.empty() && !known) info.functions.push_back(fn);
+    }
 }
 
 /// The C spelling of a model type in a function signature, or "" for one the recorder does not
@@ -239,6 +288,60 @@ void carbot_sim_call(const char *text);
   return out;
 }
 
+bool read_instance_forms(const std::string& header, ChartInfo& c) {
+  // A struct's body: `struct TAG {` up to the first `}` (its fields hold no braces), then `;` or
+  // a typedef's name and `;`.
+  auto body = [&](const std::string& tag) -> std::string {
+    std::smatch m;
+    if (!std::regex_search(header, m, std::regex("struct\\s+" + tag + "\\s*\\{([^}]*)\\}[^;]*;"))) return "";
+    return m[1].str();
+  };
+  for (ChartInfo::Instance& in : c.instances) {
+    // Down the path from the root's struct: each level is a field named after the place,
+    // `struct TAG PLACE;` (docs/c-engine.md "Sub-charts").
+    std::string fields = body(c.name);
+    std::size_t from = 0;
+    while (!fields.empty()) {
+      const std::size_t dot = in.path.find('.', from);
+      const std::string place = in.path.substr(from, dot == std::string::npos ? std::string::npos : dot - from);
+      std::smatch m;
+      fields = std::regex_search(fields, m, std::regex("struct\\s+(\\w+)\\s+" + place + "\\s*;")) ? body(m[1].str())
+                                                                                                  : std::string();
+      if (dot == std::string::npos) break;
+      from = dot + 1;
+    }
+    if (fields.empty()) return false;
+    const bool fsm = in.form == "fsm";
+    if (fsm && std::regex_search(fields, std::regex("\\bstate\\s*;"))) in.form = "state";
+    else if (!fsm && std::regex_search(fields, std::regex("\\bav\\s*\\["))) in.form = "av";
+    else if (!fsm && std::regex_search(fields, std::regex("\\bcurrent\\s*;"))) in.form = "current";
+    else return false;
+  }
+  return true;
+}
+
+std::string instance_accessor(const ChartInfo& c) {
+  std::string cases;
+  for (std::size_t i = 0; i < c.instances.size(); ++i) {
+    const ChartInfo::Instance& in = c.instances[i];
+    const std::string field = "m->" + in.path;  // the path's dots are the struct's field accesses
+    cases += in.form == "av" ? fmt::format("  case {}: return (unsigned){}.av[place];\n", i, field)
+                             : fmt::format("  case {}: return (int){}.{} == place ? 1u : 0u;\n", i, field, in.form);
+  }
+  return fmt::format(R"(
+/* Generated by carbot-sim: the activation of each sub-chart instance of {n}, for the run viewer's
+   recording (read after each tick, never written). Instances depth first in declaration order. */
+unsigned {fn}(const void *mv, int instance, int place);
+unsigned {fn}(const void *mv, int instance, int place) {{
+  const {n} *m = (const {n} *)mv;
+  switch (instance) {{
+{cases}  default: return 0u;
+  }}
+}}
+)",
+                     fmt::arg("n", c.name), fmt::arg("fn", kEngineInstanceActivation), fmt::arg("cases", cases));
+}
+
 std::string cpp_shim(const ChartInfo& c, bool has_header) {
   // The plan runs in the stepped executor, one step per control period; its actor changes go
   // to carbot-sim's plan log through an exported C function.
@@ -343,7 +446,22 @@ BuiltEngine build_engine(const Options& o, const std::string& dir) {
     // The same engine.c, its interface calls renamed to the recording wrappers.
     write_file(dir + "/record.h", record_renames(built.chart));
     write_file(dir + "/record.c", renames + record_wrappers(built.chart));
-    write_file(dir + "/engine_rec.c", "#include \"record.h\"\n#include \"engine.c\"\n");
+    // A chart with sub-charts: their activation, read in engine.c's own unit (the instances'
+    // place numbers are its enumerations). Without the instances' structs in engine.h the page
+    // shows the compiled chart only.
+    std::string instances;
+    if (!built.chart.instances.empty()) {
+      std::ifstream header(dir + "/engine.h");
+      std::stringstream text;
+      text << header.rdbuf();
+      if (read_instance_forms(text.str(), built.chart)) {
+        instances = instance_accessor(built.chart);
+      } else {
+        built.chart.rows.resize(built.chart.own_rows);
+        built.chart.instances.clear();
+      }
+    }
+    write_file(dir + "/engine_rec.c", "#include \"record.h\"\n#include \"engine.c\"\n" + instances);
     compile({o.cc, "-std=c99", "-O2", "-fPIC", "-shared", "-I", dir, "-o", built.library, dir + "/engine_rec.c",
              dir + "/shim.c", dir + "/record.c"},
             {dir + "/engine.c", dir + "/engine.h", dir + "/shim.c", dir + "/record.h", dir + "/record.c",

@@ -16,6 +16,8 @@ constexpr const char* kEngineSetAgent =
     "carbot_engine_set_agent";  ///< void (void*, int), a team machine only: X_set_agent
 constexpr const char* kEngineReport =
     "carbot_engine_report";  ///< void (void*, int agent, int state), a team machine only: X_report
+constexpr const char* kEngineInstanceActivation =
+    "carbot_engine_instance_activation";  ///< unsigned (const void*, int, int), optional: a sub-chart instance's place
 constexpr const char* kEngineFini = "carbot_engine_fini";  ///< void (void*), optional: destroys the state
 
 }  // namespace carbot::driver

@@ -33,6 +33,8 @@ Engine::Engine(const std::string& library) {
   activation_ = reinterpret_cast<unsigned (*)(const void*, int)>(dlsym(handle_, kEngineActivation));
   set_agent_ = reinterpret_cast<void (*)(void*, int)>(dlsym(handle_, kEngineSetAgent));
   report_ = reinterpret_cast<void (*)(void*, int, int)>(dlsym(handle_, kEngineReport));
+  instance_activation_ =
+      reinterpret_cast<unsigned (*)(const void*, int, int)>(dlsym(handle_, kEngineInstanceActivation));
   // max_align_t alignment: vector storage comes from operator new, which guarantees it.
   memory_.assign(size() + 1, 0);
 }

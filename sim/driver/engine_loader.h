@@ -50,6 +50,13 @@ class Engine {
   int places() const { return places_ ? places_() : 0; }
   /// X_activation of a C engine's place (read only: the run is not changed by looking).
   unsigned activation(int place) const { return activation_ ? activation_(state(), place) : 0; }
+  /// Whether a recording build exposes its sub-chart instances' activation.
+  bool has_instances() const { return instance_activation_ != nullptr; }
+  /// The activation of place `place` of sub-chart instance `instance` (ChartInfo::instances),
+  /// as the instance's state holds it; meaningful only while the place that runs it is active.
+  unsigned instance_activation(int instance, int place) const {
+    return instance_activation_ ? instance_activation_(state(), instance, place) : 0;
+  }
 
  private:
   void* state() const { return const_cast<unsigned char*>(memory_.data()); }
@@ -58,12 +65,13 @@ class Engine {
   void (*init_)(void*) = nullptr;
   void (*run_)(void*) = nullptr;
   int (*status_)(const void*) = nullptr;
-  void (*fini_)(void*) = nullptr;                       // optional
-  int (*state_)(const void*) = nullptr;                 // optional
-  int (*places_)() = nullptr;                           // optional (C engines)
-  unsigned (*activation_)(const void*, int) = nullptr;  // optional (C engines)
-  void (*set_agent_)(void*, int) = nullptr;             // optional (team machines)
-  void (*report_)(void*, int, int) = nullptr;           // optional (team machines)
+  void (*fini_)(void*) = nullptr;                                     // optional
+  int (*state_)(const void*) = nullptr;                               // optional
+  int (*places_)() = nullptr;                                         // optional (C engines)
+  unsigned (*activation_)(const void*, int) = nullptr;                // optional (C engines)
+  unsigned (*instance_activation_)(const void*, int, int) = nullptr;  // optional (recording builds)
+  void (*set_agent_)(void*, int) = nullptr;                           // optional (team machines)
+  void (*report_)(void*, int, int) = nullptr;                         // optional (team machines)
   bool initialised_ = false;
 };
 

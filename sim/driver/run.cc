@@ -58,14 +58,32 @@ void log_state_change(const Engine& engine, const ChartInfo& chart, double t, in
 }
 
 /// Follows a plan's actor starts and interruptions (its shim's events) to tell which actor of
-/// the top-level plan runs and which supervisor fired. Actors of sub-plans are not rows yet.
+/// the top-level plan runs, which actor of its sub-plan runs inside it (one level: a sub-plan's
+/// own sub-plans count as its actors' rows too), and which supervisor fired.
 class PlanFollower {
  public:
   explicit PlanFollower(const ChartInfo& chart) : chart_(chart) {}
   void take(const std::string& text, long frame, Recording& rec) {
     static const std::string kStart = "start ", kInterrupted = " interrupted by ";
     if (text.compare(0, kStart.size(), kStart) == 0) {
-      current_ = row_of(text.substr(kStart.size()));
+      const std::string qualified = text.substr(kStart.size());
+      const int row = row_of(qualified);
+      if (row >= 0 || own(qualified)) {
+        current_ = row;
+        sub_ = -1;
+      } else if (current_ >= 0) {
+        // "Side.forward" inside the running actor `side`: the row "side/forward".
+        const std::string& parent = chart_.rows[static_cast<std::size_t>(current_)].name;
+        const std::string name = parent + "/" + qualified.substr(qualified.find('.') + 1);
+        sub_ = -1;
+        for (std::size_t i = 0; i < rec.sub_rows.size() && sub_ < 0; ++i)
+          if (rec.sub_rows[i].name == name) sub_ = static_cast<int>(i);
+        if (sub_ < 0) {
+          rec.sub_rows.push_back({name, "", false, parent});
+          rec.sub_plans.push_back(qualified.substr(0, qualified.find('.')));
+          sub_ = static_cast<int>(rec.sub_rows.size()) - 1;
+        }
+      }
       return;
     }
     const std::size_t at = text.find(kInterrupted);
@@ -76,17 +94,24 @@ class PlanFollower {
     if (node == chart_.supervisor_nodes.end()) node = chart_.supervisor_nodes.find(supervisor);
     rec.fired.push_back(
         {frame, node == chart_.supervisor_nodes.end() ? std::string() : node->second, supervisor + " (" + actor + ")"});
-    current_ = -1;
+    // An actor of the plan itself stops; a sub-plan's actor stops inside the actor still running.
+    if (own(text.substr(0, at))) current_ = -1;
+    sub_ = -1;
   }
   int current() const { return current_; }
+  /// The running sub-plan actor, an index into Recording::sub_rows, or -1.
+  int sub() const { return sub_; }
 
  private:
+  bool own(const std::string& qualified) const {
+    return qualified.compare(0, chart_.name.size() + 1, chart_.name + ".") == 0;
+  }
   /// "WallFollow.followWall" -> "followWall" when it is an actor of the chart itself.
   std::string actor_of(const std::string& qualified) const {
-    const std::string prefix = chart_.name + ".";
-    return qualified.compare(0, prefix.size(), prefix) == 0 ? qualified.substr(prefix.size()) : qualified;
+    return own(qualified) ? qualified.substr(chart_.name.size() + 1) : qualified;
   }
   int row_of(const std::string& qualified) const {
+    if (!own(qualified)) return -1;
     const std::string actor = actor_of(qualified);
     for (std::size_t i = 0; i < chart_.rows.size(); ++i)
       if (chart_.rows[i].name == actor) return static_cast<int>(i);
@@ -94,6 +119,7 @@ class PlanFollower {
   }
   const ChartInfo& chart_;
   int current_ = -1;
+  int sub_ = -1;
 };
 
 /// Takes what the engine's tick did into the recording: activation, calls, log entries.
@@ -104,10 +130,29 @@ void record_tick(const Engine& engine, const ChartInfo& chart, long frame, PlanF
     for (std::size_t i = rec.log_frames.size(); i < engine_log().size(); ++i)
       plan.take(engine_log()[i].text, frame, rec);
     if (plan.current() >= 0) active.push_back(plan.current());
+    if (plan.current() >= 0 && plan.sub() >= 0)
+      rec.instances_active.push_back({static_cast<int>(chart.rows.size()) + plan.sub()});
+    else rec.instances_active.emplace_back();
   } else {
     for (int p = 0; p < engine.places(); ++p)
       if (engine.activation(p) > 0) active.push_back(p);
   }
+  // Sub-chart instances: depth first, so the place that runs one is decided before its rows.
+  std::vector<int> nested;
+  if (chart.kind != "plan" && engine.has_instances()) {
+    std::vector<bool> on(chart.rows.size(), false);
+    for (int a : active) on[static_cast<std::size_t>(a)] = true;
+    for (std::size_t i = 0; i < chart.instances.size(); ++i) {
+      const ChartInfo::Instance& in = chart.instances[i];
+      if (!on[in.parent_row]) continue;  // not running: its state is as its last tick left it
+      for (std::size_t q = 0; q < in.count; ++q)
+        if (engine.instance_activation(static_cast<int>(i), static_cast<int>(q)) > 0) {
+          on[in.first + q] = true;
+          nested.push_back(static_cast<int>(in.first + q));
+        }
+    }
+  }
+  if (chart.kind != "plan") rec.instances_active.push_back(std::move(nested));
   rec.active.push_back(std::move(active));
   rec.calls.push_back(std::move(call_log()));
   call_log().clear();
@@ -137,6 +182,7 @@ RunResult run_engine(Simulation& sim, Engine& engine, const ChartInfo& chart, do
     // A frame without an engine call (the last) keeps the activation it had.
     auto keep_activation = [&] {
       rec.active.push_back(rec.active.empty() ? std::vector<int>() : rec.active.back());
+      rec.instances_active.push_back(rec.instances_active.empty() ? std::vector<int>() : rec.instances_active.back());
       rec.calls.emplace_back();
     };
     // The escape button is the robot's stop button: an sfc or fsm engine does not read it,

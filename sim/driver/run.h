@@ -25,6 +25,16 @@ struct Recording {
   /// The timeline rows (ChartInfo::rows) active after the frame's engine call: the places
   /// with activation > 0 (sfc), the current state (fsm), the running actor (plan).
   std::vector<std::vector<int>> active;
+  /// The rows of sub-chart instances (beyond ChartInfo::own_rows) active after the frame's
+  /// engine call: a place of an instance whose own place is active (a recording build only). Kept
+  /// apart from `active`, which the trace's `active` column names, so that the trace stays the
+  /// same with or without recording.
+  std::vector<std::vector<int>> instances_active;
+  /// A plan's sub-plan actors, as their starts reveal them: rows numbered after ChartInfo::rows
+  /// (in `instances_active`), named "actor/subActor", `group` the top-level actor running the
+  /// sub-plan, no node (gfec's picture of a plan does not draw the sub-plans' insides).
+  std::vector<ChartInfo::Row> sub_rows;
+  std::vector<std::string> sub_plans;  ///< per sub_rows entry: the sub-plan's name ("Side")
   /// The frame's interface calls with their results (a recording build only; else empty).
   std::vector<std::vector<std::string>> calls;
   /// The frame of each engine_log() entry (same order).

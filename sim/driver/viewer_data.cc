@@ -2,6 +2,7 @@
 // chart's picture, activation and calls per tick (as change lists) and the events, as JSON.
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -61,14 +62,45 @@ json viewer_data(const RunReport& r, const std::string& chart_svg, const std::st
   const long frames = static_cast<long>(r.run.trace.size());
   auto frame_of = [&](double t) { return std::clamp(std::lround(t / period), 0L, std::max(0L, frames - 1)); };
 
-  json rows = json::array();
-  for (const ChartInfo::Row& row : r.chart.rows)
-    rows.push_back({{"name", row.name}, {"node", row.node}, {"terminal", row.terminal}});
+  // The chart's rows, then its sub-chart instances' when the engine told their activation; for
+  // a plan, its actors, then the sub-plans' actors grouped by the actor that ran them (in the
+  // order they first ran; `remap` takes their recorded numbers to their rows).
+  const bool nested = !r.chart.instances.empty();
+  json rows = json::array(), instances = json::array();
+  for (const ChartInfo::Row& row : r.chart.rows) {
+    if (!nested && !row.group.empty()) continue;
+    json j = {{"name", row.name}, {"node", row.node}, {"terminal", row.terminal}};
+    if (!row.group.empty()) j["group"] = row.group;
+    rows.push_back(j);
+  }
+  if (nested)
+    for (const ChartInfo::Instance& in : r.chart.instances)
+      instances.push_back({{"path", in.path}, {"chart", in.chart}, {"first", in.first}, {"count", in.count}});
+  std::map<int, int> remap;
+  std::vector<std::string> groups;
+  for (const ChartInfo::Row& row : rec.sub_rows)
+    if (std::find(groups.begin(), groups.end(), row.group) == groups.end()) groups.push_back(row.group);
+  for (const std::string& g : groups) {
+    const std::size_t first = rows.size();
+    for (std::size_t i = 0; i < rec.sub_rows.size(); ++i) {
+      if (rec.sub_rows[i].group != g) continue;
+      remap[static_cast<int>(r.chart.rows.size() + i)] = static_cast<int>(rows.size());
+      rows.push_back({{"name", rec.sub_rows[i].name}, {"node", ""}, {"terminal", false}, {"group", g}});
+    }
+    std::string plan;
+    for (std::size_t i = 0; i < rec.sub_rows.size() && plan.empty(); ++i)
+      if (rec.sub_rows[i].group == g && i < rec.sub_plans.size()) plan = rec.sub_plans[i];
+    instances.push_back({{"path", g}, {"chart", plan}, {"first", first}, {"count", rows.size() - first}});
+  }
 
   gfec::viewer::ChangeList active;
   gfec::viewer::CallRecorder calls;
   for (long k = 0; k < frames; ++k) {
-    active.record(k, k < static_cast<long>(rec.active.size()) ? json(rec.active[k]) : json::array());
+    json on = k < static_cast<long>(rec.active.size()) ? json(rec.active[k]) : json::array();
+    if (k < static_cast<long>(rec.instances_active.size()))
+      for (int row : rec.instances_active[k])
+        if (nested || remap.count(row)) on.push_back(remap.count(row) ? remap.at(row) : row);
+    active.record(k, on);
     calls.record(k, k < static_cast<long>(rec.calls.size()) ? rec.calls[k] : std::vector<std::string>());
   }
 
@@ -133,6 +165,7 @@ json viewer_data(const RunReport& r, const std::string& chart_svg, const std::st
       {"svg", chart_svg},
       {"svg_note", svg_note},
       {"rows", rows},
+      {"instances", instances},
       {"active", active.json()},
       {"calls", calls.json()},
       {"calls_note", r.chart.kind == "plan" ? "A plan's actors and supervisors are C++ classes of the toolbox: their "

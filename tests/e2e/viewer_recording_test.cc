@@ -4,6 +4,7 @@
 // trace's `active` column; the page must be one self-contained file.
 #include <algorithm>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -148,6 +149,114 @@ TEST_CASE("viewer: the clean-up's recording follows its states and the cup", "[e
   CHECK(r.rec["rows"][0]["terminal"] == false);
 }
 
+TEST_CASE("viewer: the mission's recording lights each sub-chart instance from the compiled engine",
+          "[e2e][viewer][mission]") {
+  const Recorded r = record("samples/mission.fsm", "sim/worlds/mission.json", 60);
+  REQUIRE(r.run.exit_code == 0);
+  REQUIRE(r.run.result["status"] == "succeeded");
+  // Reading the instances changes nothing: the trace is the plain build's, byte for byte.
+  CHECK(r.run.trace_text == e2e::run_sim("samples/mission.fsm", "sim/worlds/mission.json", 60).trace_text);
+  const json &rec = r.rec;
+  std::vector<std::string> rows, nodes;
+  for (const json &row : rec["rows"]) {
+    rows.push_back(row["name"]);
+    nodes.push_back(row["node"]);
+  }
+  CHECK(rows == std::vector<std::string>{"Patrol", "Tidy", "Done", "GaveUp", "Patrol/LeftFw", "Patrol/LeftStop",
+                                         "Patrol/RightFw", "Patrol/RightStop", "Tidy/Z0", "Tidy/Z1", "Tidy/Z2",
+                                         "Tidy/Z3", "Tidy/Done", "Tidy/Failed"});
+  // The nodes of the frames gfec's picture draws: place 0 runs the frame s0_, place 1 s1_.
+  CHECK(nodes[4] == "s0_p0");
+  CHECK(nodes[13] == "s1_p5");
+  CHECK(rec["instances"] == json::parse(R"([{"path": "Patrol", "chart": "LineFollower", "first": 4, "count": 4},
+                                            {"path": "Tidy", "chart": "CleanUp", "first": 8, "count": 6}])"));
+
+  // What each place's action calls (line_follower.sfc, cleanup.fsm); Mission's states call nothing.
+  const std::map<std::string, std::string> action = {
+      {"Patrol/LeftFw", "Left_FW()"},       {"Patrol/LeftStop", "Left_Stop()"}, {"Patrol/RightFw", "Right_FW()"},
+      {"Patrol/RightStop", "Right_Stop()"}, {"Tidy/Z0", "DriveToItem()"},       {"Tidy/Z1", "PickUp()"},
+      {"Tidy/Z2", "Transport()"},           {"Tidy/Z3", "PlaceItem()"}};
+  const std::vector<std::string> column = active_column(r.run.trace_text);
+  const long frames = rec["frames"];
+  std::vector<std::string> tidy_states;
+  long patrol_ends = -1;
+  std::set<std::string> previous;
+  for (long k = 0; k + 1 < frames; ++k) {
+    std::set<std::string> on;
+    for (const json &i : value_at(rec["active"], k, json::array())) on.insert(rows[i.get<std::size_t>()]);
+    // The chart's own state is the trace's column.
+    REQUIRE(on.count(column[static_cast<std::size_t>(k)]) == 1);
+    // An instance is lit only while the state that runs it is current; a running LineFollower
+    // has one place of each side active, a running CleanUp exactly one state.
+    auto lit = [&](std::initializer_list<const char *> names) {
+      return std::count_if(names.begin(), names.end(), [&](const char *n) { return on.count(n) > 0; });
+    };
+    const long patrol = lit({"Patrol/LeftFw", "Patrol/LeftStop", "Patrol/RightFw", "Patrol/RightStop"});
+    const long tidy = lit({"Tidy/Z0", "Tidy/Z1", "Tidy/Z2", "Tidy/Z3", "Tidy/Done", "Tidy/Failed"});
+    REQUIRE(patrol == (on.count("Patrol") ? 2 : 0));
+    REQUIRE(lit({"Patrol/LeftFw", "Patrol/LeftStop"}) == patrol / 2);
+    REQUIRE(tidy == (on.count("Tidy") ? 1 : 0));
+    for (const auto &[place, call] : action)
+      if (place.rfind("Tidy/", 0) == 0 && on.count(place) && (tidy_states.empty() || tidy_states.back() != place))
+        tidy_states.push_back(place);
+    if (on.count("Tidy/Done") && tidy_states.back() != "Tidy/Done") tidy_states.push_back("Tidy/Done");
+    // The tick's actions are those of the lit places: the recorded activation and the recorded
+    // calls, both from the engine, agree.
+    std::set<std::string> actions, expected;
+    for (const json &i : value_at(rec["calls"]["ticks"], k, json::array())) {
+      const std::string text = rec["calls"]["texts"][i.get<std::size_t>()];
+      if (text.find(" = ") == std::string::npos) actions.insert(text);
+    }
+    for (const std::string &p : on)
+      if (action.count(p)) expected.insert(action.at(p));
+    INFO("tick " << k);
+    REQUIRE(actions == expected);
+    // Mission leaves Patrol when both sides of the line follower drive: read at the start of the
+    // tick, so the tick before shows LeftFw and RightFw lit.
+    if (on.count("Tidy") && previous.count("Patrol")) {
+      patrol_ends = k;
+      CHECK(previous.count("Patrol/LeftFw") == 1);
+      CHECK(previous.count("Patrol/RightFw") == 1);
+    }
+    previous = on;
+  }
+  CHECK(patrol_ends >= 1999);
+  CHECK(tidy_states == std::vector<std::string>{"Tidy/Z0", "Tidy/Z1", "Tidy/Z2", "Tidy/Z3", "Tidy/Done"});
+}
+
+TEST_CASE("viewer: instances two levels deep, one of them a sequential sfc, are read from the engine",
+          "[e2e][viewer]") {
+  // Top's place T runs the fsm Mid, whose state M runs Ring: 70 places in a ring, each stepping
+  // on every tick. Over 64 places with one active, the C engine holds Ring as a sequential sfc
+  // (`current`, docs/c-engine.md), Mid as an fsm (`state`).
+  e2e::TempDir dir;
+  std::string ring = "import \"" + e2e::source("samples/linebot.iface") + "\";\nsfc Ring {\n";
+  for (int i = 0; i < 70; ++i) ring += std::string(i == 0 ? "  initial" : " ") + " place P" + std::to_string(i) + ";\n";
+  for (int i = 0; i < 70; ++i) ring += "  P" + std::to_string(i) + " -> P" + std::to_string((i + 1) % 70) + ";\n";
+  ring +=
+      "}\nfsm Mid { initial state M runs Ring; state N; M -> N when Left_IR_Black(); N -> M when Left_IR_White(); }\n"
+      "sfc Top { period 10ms; initial place T runs Mid; }\n";
+  {
+    std::ofstream out(dir.file("ring.sfc"));
+    out << ring;
+  }
+  const Recorded r = record(dir.file("ring.sfc"), "sim/worlds/oval.json", 2);
+  INFO(r.run.output);
+  REQUIRE(r.run.exit_code == 0);
+  const json &rows = r.rec["rows"];
+  REQUIRE(rows.size() == 1 + 2 + 70);
+  CHECK(rows[1] == json::parse(R"({"name": "T/M", "node": "s0_p0", "terminal": false, "group": "T"})"));
+  CHECK(rows[3 + 69] == json::parse(R"({"name": "T.M/P69", "node": "s0_s0_p69", "terminal": false, "group": "T.M"})"));
+  CHECK(r.rec["instances"] == json::parse(R"([{"path": "T", "chart": "Mid", "first": 1, "count": 2},
+                                              {"path": "T.M", "chart": "Ring", "first": 3, "count": 70}])"));
+  // Top never moves the robot, so Mid stays in M; Ring's first tick enters P0 and steps to P1,
+  // each further tick one place on: after tick k + 1 (frame k) P((k + 1) mod 70) is active.
+  for (long k = 0; k + 1 < r.rec["frames"].get<long>(); ++k) {
+    INFO("frame " << k);
+    REQUIRE(value_at(r.rec["active"], k, json::array()) == json::array({0, 1, 3 + (k + 1) % 70}));
+  }
+}
+
 TEST_CASE("viewer: the wall-follow plan's recording names actors and the supervisor that fired",
           "[e2e][viewer][plan]") {
   const Recorded r = record("samples/wall_follow.plan", "sim/worlds/room.json", 20);
@@ -164,6 +273,38 @@ TEST_CASE("viewer: the wall-follow plan's recording names actors and the supervi
   CHECK(at > 100);
   CHECK(at < 250);
   CHECK(column[static_cast<std::size_t>(at + 1)] == "backupCollision");
+}
+
+TEST_CASE("viewer: the square plan's recording has rows for the actors of its sub-plan", "[e2e][viewer][plan]") {
+  const Recorded r = record("samples/square.plan", "sim/worlds/cleanup.json", 60);
+  if (e2e::skipped_for_missing_backend(r.run)) return;
+  REQUIRE(r.run.exit_code == 0);
+  REQUIRE(r.run.result["status"] == "succeeded");
+  std::vector<std::string> rows;
+  for (const json &row : r.rec["rows"]) rows.push_back(row["name"]);
+  // Square's actors, then those of Side (square_side.plan) as the actor `side` ran them.
+  CHECK(rows == std::vector<std::string>{"side", "count", "backOff", "side/forward", "side/turn"});
+  CHECK(r.rec["rows"][3]["group"] == "side");
+  CHECK(r.rec["rows"][3]["node"] == "");  // gfec's picture of Square does not draw Side's insides
+  CHECK(r.rec["instances"] == json::parse(R"([{"path": "side", "chart": "Side", "first": 3, "count": 2}])"));
+  // Side drives forward then turns; then CountDown counts the side: four sides on the open floor.
+  // `side` stays lit while its sub-plan runs, in the page and in the trace.
+  std::vector<std::string> seen, column_seen;
+  for (long k = 0; k < r.rec["frames"].get<long>(); ++k) {
+    std::string names;
+    for (const json &i : value_at(r.rec["active"], k, json::array()))
+      names += (names.empty() ? "" : " ") + rows[i.get<std::size_t>()];
+    if (seen.empty() || seen.back() != names) seen.push_back(names);
+  }
+  for (const std::string &c : active_column(r.run.trace_text))
+    if (column_seen.empty() || column_seen.back() != c) column_seen.push_back(c);
+  std::vector<std::string> expected, expected_column;
+  for (int side = 0; side < 4; ++side) {
+    expected.insert(expected.end(), {"side side/forward", "side side/turn", "count"});
+    expected_column.insert(expected_column.end(), {"side", "count"});
+  }
+  CHECK(seen == expected);
+  CHECK(column_seen == expected_column);
 }
 
 TEST_CASE("viewer: the page is one self-contained file", "[e2e][viewer]") {

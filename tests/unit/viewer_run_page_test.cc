@@ -64,6 +64,30 @@ TEST_CASE("gfec run --html: the page holds each tick's activation and what the t
   }
 }
 
+TEST_CASE("gfec run --html: a sub-chart instance gets rows of its own, lit while it runs", "[viewer]") {
+  std::string dir = scratch_dir("gfec_run_html_nested");
+  write_file(dir + "/nest.fsm", R"(interface R { bool Go(); }
+sfc Leaf { initial place L1; place L2; L1 -> L2 when Go(); }
+fsm Top { initial state A runs Leaf; state B; A -> B when active(A.L2); B -> A when Go(); }
+)");
+  write_file(dir + "/go.csv", "tick, Go\n1, 0\n2, 1\n3, 0\n4, 1\n");
+  auto r = run_command(gfec_exe + " run " + dir + "/nest.fsm --inputs " + dir + "/go.csv --html " + dir + "/run.html");
+  REQUIRE(r.exit_code == 0);
+  const nlohmann::json d = page_data(read_file(dir + "/run.html"));
+  // The chart's states, then the instance that state A runs, named by its path, drawn in the
+  // frame whose nodes the DOT back end prefixes with s0_.
+  CHECK(d["rows"] == nlohmann::json::parse(R"([
+    {"name": "A", "node": "p0", "terminal": false}, {"name": "B", "node": "p1", "terminal": false},
+    {"name": "A/L1", "node": "s0_p0", "terminal": false, "group": "A"},
+    {"name": "A/L2", "node": "s0_p1", "terminal": false, "group": "A"}])"));
+  CHECK(d["instances"] == nlohmann::json::parse(R"([{"path": "A", "chart": "Leaf", "first": 2, "count": 2}])"));
+  // Tick 1: A, its instance's first tick leaves L1 active. Tick 2: Go() moves the instance to L2.
+  // Tick 3: active(A.L2) takes Top to B; the stopped instance is not lit. Tick 4: back to A, a
+  // fresh instance starts in L1 and, Go() holding, moves to L2 in its first tick.
+  CHECK(d["active"] == nlohmann::json::parse("[[0, [0, 2]], [1, [0, 3]], [2, [1]], [3, [0, 3]]]"));
+  CHECK(d["title"] == "Top (fsm): running after 4 ticks");  // an instance's state is not the run's
+}
+
 TEST_CASE("gfec run --html: an unwritable page is an I/O error and nothing is written", "[viewer]") {
   std::string dir = scratch_dir("gfec_run_html_bad");
   auto r = run_command(gfec_exe + " run " + samples + "/cleanup.fsm --ticks 2 --html " + dir + "/missing/run.html");

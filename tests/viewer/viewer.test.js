@@ -87,13 +87,14 @@ async function openPage(file) {
   return { page, errors, requests };
 }
 
-/// What the page shows: the names of the lit nodes of the chart (each node's first text line)
-/// and the tick in its readout.
-async function shown(page) {
-  return page.evaluate(() => ({
-    lit: [...document.querySelectorAll('#chart g.node.lit')].map((g) => g.querySelector('text').textContent.trim()).sort(),
+/// What the page shows: the lit nodes of the chart, by name (each node's first text line; by the
+/// node's DOT id for `byId`, which the page keeps in `data-node`), and the tick in its readout.
+async function shown(page, byId = false) {
+  return page.evaluate((byId) => ({
+    lit: [...document.querySelectorAll('#chart g.node.lit')]
+      .map((g) => (byId ? g.dataset.node : g.querySelector('text').textContent.trim())).sort(),
     tick: parseInt(document.getElementById('r-tick').textContent, 10),
-  }));
+  }), byId);
 }
 
 /// Moves with the scrubber, as a person dragging it would.
@@ -105,7 +106,7 @@ async function scrubTo(page, k) {
   }, k);
 }
 
-async function checkPage(name, file, expected) {
+async function checkPage(name, file, expected, byId = false) {
   const { page, errors, requests } = await openPage(file);
   try {
     const frames = await page.$eval('#scrubber', (s) => Number(s.max) + 1);
@@ -115,25 +116,25 @@ async function checkPage(name, file, expected) {
     const ticks = chosenTicks(expected);
     for (const k of ticks) {
       await scrubTo(page, k);
-      const s = await shown(page);
+      const s = await shown(page, byId);
       assert.equal(s.tick, k);
       assert.deepEqual(s.lit, expected[k], `${name}: lit places at tick ${k}`);
     }
     // One tick at a time with the keyboard, forward and back, across the first change.
     const firstChange = ticks.find((k) => k > 0 && expected[k].join() !== expected[k - 1].join()) || 1;
     await scrubTo(page, firstChange - 2 >= 0 ? firstChange - 2 : 0);
-    let k = (await shown(page)).tick;
+    let k = (await shown(page, byId)).tick;
     for (let i = 0; i < 4 && k + 1 < frames; ++i) {
       await page.keyboard.press('ArrowRight');
       k += 1;
-      const s = await shown(page);
+      const s = await shown(page, byId);
       assert.equal(s.tick, k, 'ArrowRight steps one tick');
       assert.deepEqual(s.lit, expected[k], `${name}: lit places at tick ${k} (keyboard)`);
     }
     await page.keyboard.press('ArrowLeft');
-    assert.equal((await shown(page)).tick, k - 1, 'ArrowLeft steps one tick back');
+    assert.equal((await shown(page, byId)).tick, k - 1, 'ArrowLeft steps one tick back');
     await page.click('#b-fwd');
-    assert.equal((await shown(page)).tick, k, 'the step button steps one tick');
+    assert.equal((await shown(page, byId)).tick, k, 'the step button steps one tick');
 
     // Play advances time (at 1x, half a second is ~50 ticks of 10 ms), then pause holds it.
     // (a short run plays at 0.25x so that it is still playing when paused)
@@ -141,13 +142,13 @@ async function checkPage(name, file, expected) {
     await page.select('#speed', frames < 500 ? '0.25' : '1');
     await page.click('#b-play');
     await new Promise((r) => setTimeout(r, 700));
-    const during = (await shown(page)).tick;
+    const during = (await shown(page, byId)).tick;
     await page.keyboard.press(' ');
-    const paused = (await shown(page)).tick;
+    const paused = (await shown(page, byId)).tick;
     await new Promise((r) => setTimeout(r, 300));
     assert.ok(during > 0, `${name}: play advanced time (tick ${during})`);
-    assert.equal((await shown(page)).tick, paused, 'pause holds the tick');
-    assert.deepEqual((await shown(page)).lit, expected[paused], `${name}: lit places after playing to ${paused}`);
+    assert.equal((await shown(page, byId)).tick, paused, 'pause holds the tick');
+    assert.deepEqual((await shown(page, byId)).lit, expected[paused], `${name}: lit places after playing to ${paused}`);
 
     // Clicking the timeline jumps there.
     const box = await page.$eval('#timeline', (c) => {
@@ -156,7 +157,7 @@ async function checkPage(name, file, expected) {
       return [r.x, r.y, r.width];
     });
     await page.mouse.click(box[0] + 150 + (box[2] - 158) / 2, box[1] + 30);
-    const mid = (await shown(page)).tick;
+    const mid = (await shown(page, byId)).tick;
     assert.ok(Math.abs(mid - (frames - 1) / 2) <= frames / 100 + 1, `${name}: timeline click at the middle went to ${mid}`);
 
     // The screenshot: at a tick 60% through the run.
@@ -234,3 +235,94 @@ test('interpreter run page (gfec run --html)', async () => {
     await page.close();
   }
 });
+
+/// The node id gfec's picture gives each place of each sub-chart instance, from the model JSON
+/// (not from the page): `{"": ["p0", ...], "Patrol": ["s0_p0", ...], "Patrol.Grab": [...]}`.
+function instanceNodes(model) {
+  const charts = Object.fromEntries((model.subcharts || []).map((c) => [c.name, c]));
+  const out = {};
+  const walk = (chart, instance, prefix) => {
+    const places = chart.places || chart.states;
+    out[instance] = places.map((_, i) => `${prefix}p${i}`);
+    places.forEach((p, i) => {
+      if (p.runs) walk(charts[p.runs], instance ? `${instance}.${p.name}` : p.name, `${prefix}s${i}_`);
+    });
+  };
+  walk(model, '', '');
+  return out;
+}
+
+/// `gfec run`'s full log: per tick, the nodes of every active place of the chart (`av 1 0`) and
+/// of each running instance (`av Patrol: 1 0 1 0`).
+function interpreterNestedActivation(chart, inputs) {
+  const nodes = instanceNodes(JSON.parse(execFileSync(gfec, ['--emit=json', chart, '-o', '-'], { encoding: 'utf8' })));
+  const log = execFileSync(gfec, ['run', chart, '--inputs', inputs], { encoding: 'utf8', maxBuffer: 1 << 28 });
+  const ticks = [];
+  for (const line of log.split('\n')) {
+    if (/^tick \d+$/.test(line)) ticks.push([]);
+    const av = /^  av (?:(\S+): )?([\d ]+)$/.exec(line);
+    if (!av) continue;
+    av[2].split(' ').map(Number).forEach((n, i) => { if (n > 0) ticks[ticks.length - 1].push(nodes[av[1] || ''][i]); });
+  }
+  return ticks.map((t) => t.sort());
+}
+
+/// Inputs for samples/mission.fsm: 20 s of line following (the line under the left sensor at
+/// ticks 100-149, under the right one at 300-339), then the clean-up: arrived at 2010, holding
+/// from 2020, far from the destination until 2024, arrived again at 2030, placed from 2040.
+function missionInputs(file) {
+  const rows = ['tick, Left_IR_Black, Left_IR_White, Right_IR_Black, Right_IR_White, Arrived, Holding, ' +
+                'FarFromDestination, ItemPlaced, ItemAtDestination'];
+  for (let t = 1; t <= 2060; ++t) {
+    const left = t >= 100 && t < 150 ? 1 : 0, right = t >= 300 && t < 340 ? 1 : 0;
+    rows.push([t, left, 1 - left, right, 1 - right, t === 2010 || t === 2030 ? 1 : 0, t >= 2020 ? 1 : 0,
+               t >= 2020 && t < 2025 ? 1 : 0, t >= 2040 ? 1 : 0, 1].join(', '));
+  }
+  fs.writeFileSync(file, rows.join('\n') + '\n');
+}
+
+test('interpreter run page of a chart with sub-charts: each instance lit in the nested picture', async () => {
+  const chart = path.join(src, 'samples/mission.fsm');
+  const inputs = path.join(out, 'mission_inputs.csv');
+  missionInputs(inputs);
+  const html = path.join(out, 'gfec_run_mission.html');
+  execFileSync(gfec, ['run', chart, '--inputs', inputs, '--html', html], { stdio: ['ignore', 'ignore', 'inherit'] });
+  const expected = interpreterNestedActivation(chart, inputs);
+  assert.equal(expected.length, 2060);
+  // The instances' places are there to check: LineFollower's both branches while patrolling,
+  // each state of the clean-up machine in turn.
+  assert.deepEqual(expected[0], ['p0', 's0_p0', 's0_p2']);
+  assert.deepEqual(expected[120], ['p0', 's0_p1', 's0_p2']);
+  for (const state of ['s1_p0', 's1_p1', 's1_p2', 's1_p3', 's1_p4'])
+    assert.ok(expected.some((t) => t.includes(state)), `${state} is active at some tick`);
+  await checkPage('gfec_run_mission', html, expected, true);
+  // The timeline groups the rows by instance, under a header naming the instance and its chart.
+  const { page } = await openPage(html);
+  try {
+    const d = await page.evaluate(() => window.gfecViewer.data);
+    assert.deepEqual(d.instances.map((i) => `${i.path}: ${i.chart}`), ['Patrol: LineFollower', 'Tidy: CleanUp']);
+    assert.deepEqual(d.rows.filter((r) => r.group === 'Tidy').map((r) => r.name),
+                     ['Tidy/Z0', 'Tidy/Z1', 'Tidy/Z2', 'Tidy/Z3', 'Tidy/Done', 'Tidy/Failed']);
+  } finally {
+    await page.close();
+  }
+});
+
+test('mission page (sub-charts on the simulator): the instances lit as the engine recorded them', { skip: skipSim },
+  async () => {
+    const html = path.join(out, 'mission.html'), rec = path.join(out, 'mission.json');
+    execFileSync(sim, [path.join(src, 'samples/mission.fsm'), '--world', path.join(src, 'sim/worlds/mission.json'),
+                       '--seconds', '60', '--html', html, '--record', rec, '-q'], { stdio: 'inherit' });
+    // The recording (--record, written beside the page, not read from it): per tick the nodes of
+    // the active rows, the chart's and each running instance's.
+    const d = JSON.parse(fs.readFileSync(rec, 'utf8'));
+    const expected = [];
+    for (let k = 0, i = -1; k < d.frames; ++k) {
+      while (i + 1 < d.active.length && d.active[i + 1][0] <= k) ++i;
+      expected.push((i < 0 ? [] : d.active[i][1]).map((r) => d.rows[r].node).sort());
+    }
+    assert.deepEqual(expected[0], ['p0', 's0_p0', 's0_p2'], 'Patrol, its line follower on both sides');
+    for (const node of ['s0_p1', 's1_p0', 's1_p1', 's1_p2', 's1_p3', 's1_p4'])
+      assert.ok(expected.some((t) => t.includes(node)), `${node} is lit at some tick`);
+    await checkPage('mission', html, expected, true);
+  });
