@@ -240,10 +240,6 @@ int main(int argc, char** argv) {
       if (built.chart.kind == "plan")
         return fail(kUsage, fmt::format("{}: {} robots: carbot-sim runs several robots with sfc and fsm charts only",
                                         o.world, robots));
-      if (o.recording())
-        return fail(kUsage, fmt::format("{}: {} robots: the run viewer (--html, --record) shows one robot; use "
-                                        "--trace, --json and --svg",
-                                        o.world, robots));
       if (built.chart.team > 0 && robots > built.chart.team)
         return fail(kBadInput, fmt::format("{}: {} robots, but {} is a team of at most {} agents", o.world, robots,
                                            built.chart.name, built.chart.team));

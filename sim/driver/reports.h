@@ -32,6 +32,8 @@ std::string svg_picture(const RunReport& r);
 /// "robots" array (docs/sim.md, "Several robots"). trace_csv and result_json call these.
 std::string team_trace_csv(const RunReport& r);
 std::string team_result_json(const RunReport& r);
+/// Robot i's colour in the SVG picture and the run viewer's page.
+const char* robot_colour(std::size_t i);
 
 /// The run viewer's recording (docs/viewer.md), which its page embeds: `chart_svg` is gfec's SVG
 /// of the chart ("" with `svg_note` saying why there is none).

@@ -48,6 +48,8 @@ struct Recording {
   std::vector<Fired> fired;
   /// Per item, per frame: held, and where it lies when not held.
   std::vector<std::vector<ItemState>> items;
+  /// Several robots: per frame, per item, the robot holding it (-1: none).
+  std::vector<std::vector<int>> holders;
 };
 
 /// One robot of a run with several (docs/sim.md, "Several robots"): its path, what its engine
@@ -57,6 +59,10 @@ struct RobotRun {
   std::vector<TraceRow> trace;           ///< as RunResult::trace, every robot in every tick
   std::vector<std::vector<int>> active;  ///< per trace row, as Recording::active
   std::vector<EngineEvent> state_log;    ///< an fsm's "state Grab PickUp()" changes
+  /// Per trace row, the interface calls of the robot's engine in that tick (a recording build
+  /// only, docs/viewer.md; else empty).
+  std::vector<std::vector<std::string>> calls;
+  long ended = -1;  ///< the trace row of the tick its engine ended in (-1: it did not)
   int state = -1;                        ///< an fsm's state at the end
   // The robot at the end.
   Pose final_pose;
@@ -83,7 +89,8 @@ struct RunResult {
   std::vector<TraceRow> trace;
   Recording recording;
   double wall_seconds = 0;  ///< real time the run took (not in any output file)
-  /// A run with several robots: one entry per robot (then `trace` and `recording` are unused).
+  /// A run with several robots: one entry per robot (then `trace` is unused, and `recording`
+  /// holds only the items, per frame, for the run viewer).
   std::vector<RobotRun> robots;
   bool team_machine = false;  ///< the engines exchanged states
   Exchange exchange;

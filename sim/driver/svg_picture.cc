@@ -226,12 +226,18 @@ void draw_path(Svg& s, const Frame& f, const RunReport& r) {
 
 // --- Several robots (docs/sim.md, "Several robots") ------------------------------------------
 
-/// A colour per robot (no red: red marks bumps; no orange or green: items and destinations).
+}  // namespace
+
+// A colour per robot (no red: red marks bumps; no orange or green: items and destinations);
+// the run viewer's page uses the same (reports.h).
 const char* robot_colour(std::size_t i) {
   static const char* const kRobots[] = {"#1f6fd1", "#7b4fc9", "#16a3a3", "#a0522d",
                                         "#d6409f", "#6b6b6b", "#26262b", "#3a7d1a"};
   return kRobots[i % (sizeof kRobots / sizeof kRobots[0])];
 }
+
+namespace {
+
 constexpr const char* kContact = "#b8860b";
 
 void draw_robot_at(Svg& s, const Frame& f, const Pose& p, const char* colour) {

@@ -7,6 +7,7 @@
 #include <deque>
 
 #include "core/geometry.h"
+#include "driver/engine_log.h"
 #include "driver/run.h"
 #include "hal/hal_binding.h"
 #include "robots/robots.h"
@@ -76,20 +77,34 @@ RunResult run_team(Simulation& sim, std::vector<Engine*> engines, const ChartInf
 
   auto robot = [&](int i) -> RobotRun& { return result.robots[static_cast<std::size_t>(i)]; };
   auto engine = [&](int i) -> Engine& { return *engines[static_cast<std::size_t>(i)]; };
+  // A row without an engine call (the robot's engine ended, or the run did) keeps the activation
+  // it had, and has no calls.
   auto keep_activation = [&](int i) {
     RobotRun& r = robot(i);
     r.active.push_back(r.active.empty() ? std::vector<int>() : r.active.back());
+    r.calls.emplace_back();
   };
+  // The run viewer's recording (docs/viewer.md): where each item is, and who holds it, per row;
+  // each engine's calls of a tick (a recording build reports them through call_log()).
+  Recording& rec = result.recording;
+  call_log().clear();
 
   for (long tick = 0;; ++tick) {
     for (int i = 0; i < n; ++i) {
       sim.select(i);
       robot(i).trace.push_back(row(sim));
     }
+    rec.items.push_back(sim.items());
+    std::vector<int> holders;
+    for (std::size_t k = 0; k < sim.items().size(); ++k) holders.push_back(sim.holder(static_cast<int>(k)));
+    rec.holders.push_back(std::move(holders));
     // The escape button stops every robot still running (see run_engine).
     if (sim.escape() || tick >= ticks) {
       for (int i = 0; i < n; ++i) {
-        if (sim.escape() && running[static_cast<std::size_t>(i)]) robot(i).status = "terminated";
+        if (sim.escape() && running[static_cast<std::size_t>(i)]) {
+          robot(i).status = "terminated";
+          robot(i).ended = tick;
+        }
         keep_activation(i);
       }
       break;
@@ -111,8 +126,11 @@ RunResult run_team(Simulation& sim, std::vector<Engine*> engines, const ChartInf
                                                            : std::to_string(state))});
       }
       r.active.push_back(active_of(engine(i)));
+      r.calls.push_back(std::move(call_log()));
+      call_log().clear();
       if (const int status = engine(i).status(); status != 0) {
         r.status = status_of(status);
+        r.ended = tick;
         running[static_cast<std::size_t>(i)] = false;
         sim.stop();  // an engine that ended drives its robot no more
       } else {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <tuple>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -53,9 +54,157 @@ json pose_json(const std::vector<TraceRow>& trace) {
   return {{"scale", 1000}, {"heading_scale", 100}, {"x", xs}, {"y", ys}, {"h", hs}};
 }
 
+/// A run with several robots (docs/viewer.md, "Several robots"): the chart's rows once per robot
+/// (`robot 1/Grab`, grouped under `robot 1`), each robot's path, calls and status; the items
+/// with the robot holding them; the robots' contacts as events.
+json team_viewer_data(const RunReport& r, const std::string& chart_svg, const std::string& svg_note) {
+  const Simulation& sim = r.sim;
+  const Recording& rec = r.run.recording;
+  const std::vector<RobotRun>& robots = r.run.robots;
+  const double period = sim.config().control_period;
+  const long frames = static_cast<long>(robots.front().trace.size());
+  auto frame_of = [&](double t) { return std::clamp(std::lround(t / period), 0L, std::max(0L, frames - 1)); };
+  auto robot_name = [](std::size_t i) { return fmt::format("robot {}", i); };
+
+  // The chart's own rows (a team machine is never a sub-chart; its own sub-charts' rows are
+  // left out), once per robot: robot i's row j is i * own + j.
+  std::vector<const ChartInfo::Row*> own;
+  for (const ChartInfo::Row& row : r.chart.rows)
+    if (row.group.empty()) own.push_back(&row);
+  const std::size_t per = own.size();
+  json rows = json::array(), robot_list = json::array();
+  std::vector<std::tuple<long, std::string, std::string>> events;
+  json bumps = json::array();
+  for (std::size_t i = 0; i < robots.size(); ++i) {
+    const RobotRun& robot = robots[i];
+    for (const ChartInfo::Row* row : own)
+      rows.push_back({{"name", robot_name(i) + "/" + row->name},
+                      {"node", row->node},
+                      {"terminal", row->terminal},
+                      {"group", robot_name(i)},
+                      {"robot", i}});
+    gfec::viewer::CallRecorder calls;
+    for (long k = 0; k < frames; ++k)
+      calls.record(k, k < static_cast<long>(robot.calls.size()) ? robot.calls[k] : std::vector<std::string>());
+    for (const Bump& b : robot.bump_log) {
+      events.emplace_back(frame_of(b.t), "bump",
+                          fmt::format("{}: bump at ({:.2f}, {:.2f})", robot_name(i), b.at.x, b.at.y));
+      bumps.push_back({frame_of(b.t), r4(b.at.x), r4(b.at.y), i});
+    }
+    for (const EngineEvent& e : robot.state_log)
+      events.emplace_back(frame_of(e.t), "state", fmt::format("{}: {}", robot_name(i), e.text));
+    json status = json::array({json::array({0, "running"})});
+    if (robot.status != "running") {
+      const long end = robot.ended >= 0 ? robot.ended : frames - 1;
+      status.push_back({end, robot.status});
+      events.emplace_back(end, "status", fmt::format("{}: {}", robot_name(i), robot.status));
+    }
+    robot_list.push_back({{"name", robot_name(i)},
+                          {"colour", robot_colour(i)},
+                          {"first", i * per},
+                          {"count", per},
+                          {"pose", pose_json(robot.trace)},
+                          {"calls", calls.json()},
+                          {"status", status}});
+  }
+
+  gfec::viewer::ChangeList active;
+  for (long k = 0; k < frames; ++k) {
+    json on = json::array();
+    for (std::size_t i = 0; i < robots.size(); ++i)
+      if (k < static_cast<long>(robots[i].active.size()))
+        for (int a : robots[i].active[k])
+          if (a >= 0 && static_cast<std::size_t>(a) < per) on.push_back(i * per + static_cast<std::size_t>(a));
+    active.record(k, on);
+  }
+
+  json contacts = json::array();
+  for (const RobotContact& c : sim.robot_contacts()) {
+    events.emplace_back(frame_of(c.t), "contact",
+                        fmt::format("robots {} and {} touch at ({:.2f}, {:.2f})", c.a, c.b, c.at.x, c.at.y));
+    contacts.push_back({frame_of(c.t), c.a, c.b, r4(c.at.x), r4(c.at.y)});
+  }
+  for (const SimNote& n : sim.notes()) events.emplace_back(frame_of(n.t), "note", n.text);
+  json items = json::array();
+  const std::vector<ItemState>& first = rec.items.empty() ? sim.items() : rec.items.front();
+  for (std::size_t i = 0; i < first.size(); ++i) {
+    gfec::viewer::ChangeList track;
+    int held_by = -1;
+    for (long k = 0; k < static_cast<long>(rec.items.size()); ++k) {
+      const ItemState& it = rec.items[k][i];
+      const int holder = it.held && k < static_cast<long>(rec.holders.size()) ? rec.holders[k][i] : -1;
+      if (holder != held_by)
+        events.emplace_back(k, "item",
+                            holder >= 0 ? fmt::format("{} picked up by robot {}", it.name, holder)
+                                        : fmt::format("{} released by robot {}", it.name, held_by));
+      held_by = holder;
+      // While held the item is drawn at its robot's gripper, from that robot's pose.
+      track.record(k, holder >= 0 ? json::array({1, holder}) : json::array({0, r4(it.at.x), r4(it.at.y)}));
+    }
+    items.push_back({{"name", first[i].name},
+                     {"at", point(first[i].at)},
+                     {"destination", point(first[i].destination)},
+                     {"track", track.json()}});
+  }
+  json status = json::array({json::array({0, "running"})});
+  if (r.run.status != "running") {
+    long end = 0;
+    for (const RobotRun& robot : robots) end = std::max(end, robot.ended >= 0 ? robot.ended : frames - 1);
+    status.push_back({end, r.run.status});
+    events.emplace_back(end, "status", "the team: " + r.run.status);
+  }
+  std::stable_sort(events.begin(), events.end(),
+                   [](const auto& a, const auto& b) { return std::get<0>(a) < std::get<0>(b); });
+  json event_list = json::array();
+  for (const auto& [k, kind, text] : events) event_list.push_back({k, kind, text});
+
+  int bump_count = 0;
+  for (const RobotRun& robot : robots) bump_count += robot.bumps;
+  const std::size_t touches = sim.robot_contacts().size();
+  std::string exchange;
+  if (r.run.team_machine) {
+    const Exchange& x = r.run.exchange;
+    exchange = !x.enabled ? " \u00b7 no exchange"
+               : x.delay_ticks > 0 || x.loss > 0
+                   ? fmt::format(" \u00b7 exchange {} ticks late, {:g} lost", x.delay_ticks, x.loss)
+                   : " \u00b7 reference exchange";
+  }
+  return {
+      {"format", 1},
+      {"tool", "carbot-sim"},
+      {"title", fmt::format("{} ({}) on {}, {} robots: {} at {:.2f} s", r.chart.name, r.chart.kind, sim.world().name,
+                            robots.size(), r.run.status, sim.time())},
+      {"subtitle", fmt::format("carbot-sim {} --world {} \u00b7 {} ticks of {:g} ms \u00b7 {} bump{} \u00b7 {} robot "
+                               "contact{}{}",
+                               r.chart_file, sim.world().path, frames, period * 1000, bump_count,
+                               bump_count == 1 ? "" : "s", touches, touches == 1 ? "" : "s", exchange)},
+      {"chart", {{"name", r.chart.name}, {"kind", r.chart.kind}, {"file", r.chart_file}}},
+      {"period", period},
+      {"frames", frames},
+      {"svg", chart_svg},
+      {"svg_note", svg_note},
+      {"rows", rows},
+      {"instances", json::array()},
+      {"robots", robot_list},
+      {"active", active.json()},
+      {"calls", nullptr},
+      {"calls_note", ""},
+      {"events", event_list},
+      {"fired", json::array()},
+      {"status", status},
+      {"world", world_json(sim.world())},
+      {"pose", nullptr},
+      {"items", items},
+      {"bumps", bumps},
+      {"contacts", contacts},
+      {"robot", {{"length", model::kLength}, {"width", model::kWidth}, {"gripper", model::kGripX}}},
+  };
+}
+
 }  // namespace
 
 json viewer_data(const RunReport& r, const std::string& chart_svg, const std::string& svg_note) {
+  if (!r.run.robots.empty()) return team_viewer_data(r, chart_svg, svg_note);
   const Simulation& sim = r.sim;
   const Recording& rec = r.run.recording;
   const double period = sim.config().control_period;

@@ -3,6 +3,7 @@
 // agree with the chart's semantics (an active place's action runs in its tick) and with the
 // trace's `active` column; the page must be one self-contained file.
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <set>
@@ -325,4 +326,110 @@ TEST_CASE("viewer: the page is one self-contained file", "[e2e][viewer]") {
   CHECK(data["chart"]["name"] == "CleanUp");
   CHECK(data["svg"].get<std::string>().find("<svg") != std::string::npos);
   CHECK(data == r.rec);
+}
+
+TEST_CASE("viewer: a team run's recording: each robot's rows, path, calls and the items", "[e2e][viewer][team]") {
+  // Three robots on fetch_room for 8 s: robot 0 picks the cup up and carries it, the others yield.
+  const Recorded r = record("samples/fetch_team.fsm", "sim/worlds/fetch_room.json", 8);
+  REQUIRE(r.run.exit_code == 0);
+  const json &rec = r.rec;
+  const json &result = r.run.result;
+  const long frames = rec["frames"].get<long>();
+  const double period = rec["period"].get<double>();
+  REQUIRE(result["robot_count"] == 3);
+  REQUIRE(rec["robots"].size() == 3);
+  CHECK(rec["pose"].is_null());
+
+  // The team trace, read here (not through the recording): per robot, per row, the active
+  // column and the position.
+  std::vector<std::vector<std::string>> column(3);
+  std::vector<std::vector<std::pair<double, double>>> where(3);
+  {
+    std::istringstream in(r.run.trace_text);
+    std::string line;
+    std::getline(in, line);
+    REQUIRE(line == "t,robot,x,y,heading,active");
+    while (std::getline(in, line)) {
+      std::istringstream cells(line);
+      std::string t, robot, x, y, h, active;
+      std::getline(cells, t, ',');
+      std::getline(cells, robot, ',');
+      std::getline(cells, x, ',');
+      std::getline(cells, y, ',');
+      std::getline(cells, h, ',');
+      std::getline(cells, active);
+      const int i = std::stoi(robot);
+      REQUIRE(i >= 0);
+      REQUIRE(i < 3);
+      column[i].push_back(active);
+      where[i].emplace_back(std::stod(x), std::stod(y));
+    }
+  }
+  const std::size_t states = rec["rows"].size() / 3;
+  REQUIRE(states == 6);  // Go, Grab, Carry, Yield, Done, Left
+  for (int i = 0; i < 3; ++i) {
+    const json &robot = rec["robots"][i];
+    const std::string name = "robot " + std::to_string(i);
+    INFO(name);
+    REQUIRE(column[i].size() == static_cast<std::size_t>(frames));
+    CHECK(robot["name"] == name);
+    CHECK(robot["first"].get<std::size_t>() == i * states);
+    CHECK(robot["count"].get<std::size_t>() == states);
+    for (std::size_t j = 0; j < states; ++j) {
+      const json &row = rec["rows"][i * states + j];
+      CHECK(row["group"] == name);
+      CHECK(row["robot"] == i);
+      CHECK(row["name"].get<std::string>().rfind(name + "/", 0) == 0);
+    }
+    // Every tick: robot i's active rows are the state its trace column names, and no other robot's
+    // row is counted for it.
+    std::vector<double> px, py;
+    double ax = 0, ay = 0;
+    const double scale = robot["pose"]["scale"].get<double>();
+    for (std::size_t k = 0; k < robot["pose"]["x"].size(); ++k) {
+      ax += robot["pose"]["x"][k].get<double>();
+      ay += robot["pose"]["y"][k].get<double>();
+      px.push_back(ax / scale);
+      py.push_back(ay / scale);
+    }
+    REQUIRE(px.size() == static_cast<std::size_t>(frames));
+    for (long k = 0; k < frames; ++k) {
+      std::string names;
+      for (const json &a : value_at(rec["active"], k, json::array())) {
+        const std::size_t row = a.get<std::size_t>();
+        if (row / states != static_cast<std::size_t>(i)) continue;
+        names += (names.empty() ? "" : " ") + rec["rows"][row]["name"].get<std::string>().substr(name.size() + 1);
+      }
+      INFO("tick " << k);
+      CHECK(names == column[i][k]);
+      CHECK(std::abs(px[k] - where[i][k].first) < 0.0011);
+      CHECK(std::abs(py[k] - where[i][k].second) < 0.0011);
+    }
+    // Each state change in the result's state log is where the rows change to that state.
+    for (const json &e : result["robots"][i]["state_log"]) {
+      const std::string state = e["event"].get<std::string>().substr(6);
+      const long k = std::lround(e["t"].get<double>() / period);
+      INFO(e.dump());
+      CHECK(state.rfind(column[i][k], 0) == 0);
+      const json at = value_at(rec["active"], k, json::array());
+      CHECK(std::any_of(at.begin(), at.end(), [&](const json &a) {
+        return rec["rows"][a.get<std::size_t>()]["name"] == name + "/" + column[i][k];
+      }));
+    }
+    // The last row's state is the result's final state.
+    CHECK(column[i].back() == result["robots"][i]["state"].get<std::string>());
+    // Tick 0: every robot is in Go and drives to the item (its action, in its own calls).
+    bool drives = false;
+    for (const json &c : value_at(robot["calls"]["ticks"], 0, json::array()))
+      drives = drives || robot["calls"]["texts"][c.get<std::size_t>()].get<std::string>().rfind("DriveToItem(", 0) == 0;
+    CHECK(drives);
+    CHECK(column[i][0] == "Go");
+  }
+  // Robot 0 carries the cup at the end; the others stood back.
+  CHECK(result["items"][0]["held_by"] == 0);
+  CHECK(value_at(rec["items"][0]["track"], frames - 1, json()) == json::array({1, 0}));
+  CHECK(column[1].back() != "Grab");
+  CHECK(column[1].back() != "Carry");
+  // The page holds the same recording.
+  CHECK(r.page.find("\"robots\":[{") != std::string::npos);
 }

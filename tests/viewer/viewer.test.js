@@ -326,3 +326,96 @@ test('mission page (sub-charts on the simulator): the instances lit as the engin
       assert.ok(expected.some((t) => t.includes(node)), `${node} is lit at some tick`);
     await checkPage('mission', html, expected, true);
   });
+
+/// carbot-sim's team trace (`t,robot,x,y,heading,active`): per robot, the `active` column per row.
+function teamTraceActivation(csvFile) {
+  const lines = fs.readFileSync(csvFile, 'utf8').trim().split('\n');
+  assert.equal(lines[0], 't,robot,x,y,heading,active');
+  const robots = [];
+  for (const l of lines.slice(1)) {
+    const cells = l.split(',');
+    const i = Number(cells[1]);
+    (robots[i] = robots[i] || []).push(cells[5] ? cells[5].split(' ').sort() : []);
+  }
+  return robots;
+}
+
+test('team page (three robots fetch one cup): each robot\'s states lit as its trace says', { skip: skipSim }, async () => {
+  const html = path.join(out, 'team.html'), csv = path.join(out, 'team.csv'), json = path.join(out, 'team.json');
+  execFileSync(sim, [path.join(src, 'samples/fetch_team.fsm'), '--world', path.join(src, 'sim/worlds/fetch_room.json'),
+                     '--seconds', '20', '--html', html, '--trace', csv, '--json', json, '-q'], { stdio: 'inherit' });
+  // Expected from the trace and the result JSON, never from the page's own data.
+  const perRobot = teamTraceActivation(csv);
+  const result = JSON.parse(fs.readFileSync(json, 'utf8'));
+  assert.equal(perRobot.length, 3);
+  assert.deepEqual(result.robots.map((r) => r.state), ['Done', 'Left', 'Left']);
+  const frames = perRobot[0].length;
+  // The state names' node ids in gfec's picture: state i is `p`i (docs/viewer.md).
+  const model = JSON.parse(execFileSync(gfec, ['--emit=json', path.join(src, 'samples/fetch_team.fsm'), '-o', '-'],
+                                        { encoding: 'utf8' }));
+  const nodeOf = Object.fromEntries(model.states.map((s, i) => [s.name, `p${i}`]));
+  // Ticks: first, last, both sides of every robot's state changes.
+  const ticks = new Set([0, frames - 1]);
+  perRobot.forEach((rows) => {
+    for (let k = 1; k < rows.length; ++k)
+      if (rows[k].join() !== rows[k - 1].join()) { ticks.add(k - 1); ticks.add(k); }
+  });
+  const chosen = [...ticks].sort((a, b) => a - b);
+  assert.ok(chosen.length >= 10, `${chosen.length} ticks around the state changes`);
+
+  const { page, errors, requests } = await openPage(html);
+  try {
+    assert.equal(await page.$eval('#scrubber', (s) => Number(s.max) + 1), frames, 'one tick per trace row');
+    // The timeline's groups: one per robot, the chart's six states each.
+    const d = await page.evaluate(() => window.gfecViewer.data);
+    assert.deepEqual(d.robots.map((r) => r.name), ['robot 0', 'robot 1', 'robot 2']);
+    assert.deepEqual(d.rows.filter((r) => r.group === 'robot 1').map((r) => r.name),
+                     ['Go', 'Grab', 'Carry', 'Yield', 'Done', 'Left'].map((s) => `robot 1/${s}`));
+    for (const k of chosen) {
+      await scrubTo(page, k);
+      // All robots: each lit node names (data-robots) exactly the robots in that state.
+      await page.select('#robot-select', 'all');
+      const all = await page.evaluate(() => Object.fromEntries(
+        [...document.querySelectorAll('#chart g.node.lit')].map((g) => [g.dataset.node, g.dataset.robots])));
+      const want = {};
+      perRobot.forEach((rows, i) => rows[k].forEach((s) => {
+        want[nodeOf[s]] = want[nodeOf[s]] ? `${want[nodeOf[s]]} ${i}` : String(i);
+      }));
+      assert.deepEqual(all, want, `tick ${k}: every robot's state lit`);
+      // One robot at a time, with the selector: the lit states are that robot's.
+      for (let i = 0; i < 3; ++i) {
+        await page.select('#robot-select', String(i));
+        const s = await shown(page);
+        assert.equal(s.tick, k);
+        assert.deepEqual(s.lit, perRobot[i][k], `tick ${k}: robot ${i}'s lit state`);
+      }
+      // The info panel names each robot's state.
+      const active = await page.$eval('#r-active', (e) => e.textContent);
+      assert.equal(active, perRobot.map((rows, i) => `robot ${i}: ${rows[k].join(', ') || '\u2013'}`).join('\n'));
+    }
+    // The calls of tick 0: robot 0 drives to the cup (shown while robot 0 is selected).
+    await page.select('#robot-select', '0');
+    await scrubTo(page, 0);
+    const calls = await page.$$eval('#calls li', (l) => l.map((li) => li.textContent.trim()));
+    assert.equal(calls[0], 'robot 0 (Go)');
+    assert.ok(calls.includes('DriveToItem()'), calls.join('\n'));
+    // Each robot is drawn, and play advances time.
+    assert.equal(await page.$$eval('#world g[id^="robot-"]', (g) => g.length), 3);
+    await page.select('#robot-select', 'all');
+    await page.click('#b-play');
+    await new Promise((r) => setTimeout(r, 700));
+    await page.keyboard.press(' ');
+    assert.ok((await shown(page)).tick > 0, 'play advanced time');
+    // The screenshot: robot 0 carrying the cup, the others parked (8 s).
+    await scrubTo(page, 800);
+    await page.screenshot({ path: path.join(out, 'viewer-team.png') });
+    assert.deepEqual(errors, [], 'team: console errors');
+    assert.deepEqual(requests.filter((u) => !u.startsWith('file://') && !u.startsWith('data:')), [],
+                     'team: the page loads nothing from elsewhere');
+    const size = fs.statSync(html).size;
+    console.log(`team: ${frames} ticks, 3 robots, ${chosen.length} chosen ticks checked, page ${(size / 1024).toFixed(0)} KiB, ` +
+                `screenshot ${path.join(out, 'viewer-team.png')}`);
+  } finally {
+    await page.close();
+  }
+});
