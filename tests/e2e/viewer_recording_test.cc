@@ -51,11 +51,11 @@ struct Recorded {
   std::string page;
 };
 
-Recorded record(const std::string &chart, const std::string &world, double seconds) {
+Recorded record(const std::string &chart, const std::string &world, double seconds, const std::string &extra = "") {
   e2e::TempDir dir;
   Recorded r;
   r.run = e2e::run_sim(chart, world, seconds,
-                       "--record '" + dir.file("rec.json") + "' --html '" + dir.file("run.html") + "'");
+                       "--record '" + dir.file("rec.json") + "' --html '" + dir.file("run.html") + "' " + extra);
   if (r.run.exit_code == 0) {
     r.rec = json::parse(slurp(dir.file("rec.json")));
     r.page = slurp(dir.file("run.html"));
@@ -432,4 +432,23 @@ TEST_CASE("viewer: a team run's recording: each robot's rows, path, calls and th
   CHECK(column[1].back() != "Carry");
   // The page holds the same recording.
   CHECK(r.page.find("\"robots\":[{") != std::string::npos);
+}
+
+TEST_CASE("viewer: a team run without the exchange: the robots' contacts are events", "[e2e][viewer][team]") {
+  // Without the exchange nobody yields: robots 1 and 2 run into robot 0 (docs/teams.md).
+  const Recorded r = record("samples/fetch_team.fsm", "sim/worlds/fetch_room.json", 10, "--no-exchange");
+  REQUIRE(r.run.exit_code == 0);
+  const json &log = r.run.result["robot_contact_log"];
+  REQUIRE(log.size() >= 2);
+  const double period = r.rec["period"].get<double>();
+  REQUIRE(r.rec["contacts"].size() == log.size());
+  std::size_t contact_events = 0;
+  for (const json &e : r.rec["events"]) contact_events += e[1] == "contact" ? 1 : 0;
+  CHECK(contact_events == log.size());
+  for (std::size_t i = 0; i < log.size(); ++i) {
+    const json &c = r.rec["contacts"][i];
+    CHECK(c[0].get<long>() == std::lround(log[i]["t"].get<double>() / period));
+    CHECK(c[1] == log[i]["robots"][0]);
+    CHECK(c[2] == log[i]["robots"][1]);
+  }
 }

@@ -419,3 +419,34 @@ test('team page (three robots fetch one cup): each robot\'s states lit as its tr
     await page.close();
   }
 });
+
+test('team page without the exchange: contacts in the events, every robot in its own state', { skip: skipSim }, async () => {
+  const html = path.join(out, 'team_alone.html'), csv = path.join(out, 'team_alone.csv');
+  const json = path.join(out, 'team_alone.json');
+  execFileSync(sim, [path.join(src, 'samples/fetch_team.fsm'), '--world', path.join(src, 'sim/worlds/fetch_room.json'),
+                     '--seconds', '10', '--no-exchange', '--html', html, '--trace', csv, '--json', json, '-q'],
+               { stdio: 'inherit' });
+  const perRobot = teamTraceActivation(csv);
+  const result = JSON.parse(fs.readFileSync(json, 'utf8'));
+  assert.ok(result.robot_contacts >= 2, `${result.robot_contacts} contacts`);
+  const { page, errors } = await openPage(html);
+  try {
+    const listed = await page.$$eval('#events li', (l) => l.map((li) => li.textContent).filter((t) => / touch at /.test(t)));
+    assert.equal(listed.length, result.robot_contacts, listed.join('\n'));
+    // Clicking a contact jumps to its tick; each robot's state there is lit as its trace says.
+    const first = result.robot_contact_log[0];
+    const k = Math.round(first.t / result.control_period_s);
+    await page.evaluate(() => [...document.querySelectorAll('#events li')].find((li) => / touch at /.test(li.textContent)).click());
+    assert.equal((await shown(page)).tick, k);
+    assert.match(listed[0], new RegExp(`robots ${first.robots[0]} and ${first.robots[1]} touch at`));
+    for (let i = 0; i < 3; ++i) {
+      await page.select('#robot-select', String(i));
+      assert.deepEqual((await shown(page)).lit, perRobot[i][k], `robot ${i} at the contact`);
+    }
+    assert.deepEqual(errors, [], 'team_alone: console errors');
+    console.log(`team_alone: ${perRobot[0].length} ticks, ${listed.length} contacts listed, page ` +
+                `${(fs.statSync(html).size / 1024).toFixed(0)} KiB`);
+  } finally {
+    await page.close();
+  }
+});
