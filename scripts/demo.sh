@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The main job: compile the sample charts with gfec, then run the line follower on the
-# simulated Carbot around the oval track, draw its path and write its replay page.
+# simulated Carbot around the oval track, draw its path and write its replay page; and the team
+# sample's replay page (three Carbots fetching one cup).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=build/demo
@@ -16,4 +17,7 @@ if [ -x build/carbot-sim ]; then
     --html "$out/line_follower.html"
   echo "The line follower's run: $out/line_follower.json; its path: $out/line_follower.svg"
   echo "Its replay (open in a browser, docs/viewer.md): $out/line_follower.html"
+  build/carbot-sim samples/fetch_team.fsm --world sim/worlds/fetch_room.json --seconds 20 -q \
+    --html "$out/fetch_team.html"
+  echo "Three robots fetching one cup (docs/teams.md), replayed: $out/fetch_team.html"
 fi
