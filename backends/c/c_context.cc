@@ -33,7 +33,8 @@ void name_globals(Context &c, NameSpace &globals, const Context *root) {
   if (c.root) {
     for (const auto &f : c.model.functions) globals.claim(f.name);
     globals.claim(t);
-    for (const char *api : {"init", "run", "activation", "state", "status"}) globals.claim(t + "_" + api);
+    for (const char *api : {"init", "run", "activation", "state", "status", "place", "transition"})
+      globals.claim(t + "_" + api);
     c.hooks_macro = t + "_HOOKS";
     c.checks_macro = t + "_CHECKS";
     c.assert_macro = t + "_ASSERT";
@@ -49,6 +50,10 @@ void name_globals(Context &c, NameSpace &globals, const Context *root) {
   c.enabled_fn = t + "_enabled";
   c.place_count = t + "_PLACE_COUNT";
   c.transition_count = t + "_TRANSITION_COUNT";
+  // The enumerations' types (MISRA C:2012 wants named enum types, and a debugger prints a field
+  // of such a type by its constant's name): API names of the root, like X_init.
+  c.place_type = c.root ? t + "_place" : globals.take(t + "_place");
+  c.transition_type = c.root ? t + "_transition" : globals.take(t + "_transition");
   if (c.root) {
     for (const auto *n : {&c.hooks_macro, &c.checks_macro, &c.assert_macro, &c.assert_off_macro, &c.activated_fn,
                           &c.enabled_fn, &c.place_count, &c.transition_count})

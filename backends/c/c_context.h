@@ -45,6 +45,8 @@ struct Context {
   std::string activated_fn;                   ///< X_activated
   std::string enabled_fn;                     ///< X_enabled
   std::string place_count;                    ///< X_PLACE_COUNT
+  std::string place_type;                     ///< X_place: the enum type of the places (states)
+  std::string transition_type;                ///< X_transition: the enum type of the transitions
   std::string transition_count;               ///< X_TRANSITION_COUNT
   std::vector<std::string> place_const;       ///< X_<place>, by place index
   std::vector<std::string> transition_const;  ///< X_<transition>, by transition index
