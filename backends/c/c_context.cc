@@ -310,7 +310,7 @@ std::vector<std::string> Context::stop_call(int p) const {
                       field(sub_field[static_cast<std::size_t>(p)]), s->chart.name)};
 }
 
-std::string Context::count_text() const { return root ? place_count : std::to_string(chart.places.size()); }
+std::string Context::count_text() const { return place_count; }
 
 std::string Context::member(const std::string &obj, const std::string &name) const {
   return obj.empty() ? field(name) : obj + "." + name;
@@ -323,7 +323,8 @@ std::string Context::active_test(const std::string &obj, int p, bool at_start) c
   // In a condition the counters serve as `avail` and decrease: a place some transition consumes
   // is read from the snapshot of the start of the tick.
   const bool snapshot = at_start && obj.empty() && is_input.at(static_cast<std::size_t>(p));
-  if (snapshot && sparse()) return fmt::format("(({0}[{1} >> 5] >> ({1} & 31u)) & 1u) != 0u", before, k);
+  if (snapshot && sparse())  // the constant as a number in the bit arithmetic (MISRA C:2012 rule 10.1)
+    return fmt::format("(({0}[(uint32_t){1} >> 5] >> ((uint32_t){1} & 31u)) & 1u) != 0u", before, k);
   if (snapshot) return fmt::format("{}[{}] != 0u", before, k);
   return fmt::format("{}[{}] != 0u", member(obj, av), k);
 }

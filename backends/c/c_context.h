@@ -124,8 +124,8 @@ struct Context {
   const Context *sub_of(int place) const { return sub.at(static_cast<std::size_t>(place)).get(); }
   /// The observation hooks are the root's only (docs/c-engine.md).
   bool hooks() const { return root; }
-  /// The size of the per-place arrays as the header writes it: X_PLACE_COUNT for the root, the
-  /// number for an instance (its enumerations are in engine.c).
+  /// The size of the per-place arrays as the header writes it: X_PLACE_COUNT (an instance's
+  /// enumerations are in the header too, before its struct).
   std::string count_text() const;
   /// `obj.name`, or `m->name` for obj "" (the engine's own state).
   std::string member(const std::string &obj, const std::string &name) const;

@@ -58,6 +58,13 @@ void state_struct(CodeWriter &w, const Context &c) {
   // The instances' types first: the root's struct embeds them.
   for (const auto &s : c.sub)
     if (s) state_struct(w, *s);
+  // An instance's enumerations come with its struct: an fsm instance's state field has their type.
+  if (!c.root) {
+    places_enum(w, c);
+    w.blank();
+    transitions_enum(w, c);
+    w.blank();
+  }
   if (c.root) {
     w.line("/* The state of one engine. The type is complete so that the caller can allocate it (several");
     w.line("   engines may run side by side); only the functions below use its fields. */");
@@ -159,8 +166,8 @@ void hooks(CodeWriter &w, const Context &c) {
          c.fsm ? "state" : "place");
   w.line("   transition whose inputs are all active now but were not at the start of the tick.");
   w.line("   The engine is read only (const): a hook observes, it does not steer. */");
-  w.line("void {0}(const {1} *m, int place, bool active);", c.activated_fn, c.type);
-  w.line("void {0}(const {1} *m, int transition);", c.enabled_fn, c.type);
+  w.line("void {0}(const {1} *m, {2} place, bool active);", c.activated_fn, c.type, c.place_type);
+  w.line("void {0}(const {1} *m, {2} transition);", c.enabled_fn, c.type, c.transition_type);
   directive(w, "#endif");
 }
 

@@ -71,7 +71,7 @@ private:
       w_.line("{} {}[{}]; /* the activation at the start of the tick */", c_.readable_counter(), c_.before,
               c_.place_count);
       // A loop, not memcpy: the engine stays freestanding (no <string.h>) in every mode.
-      w_.line("for (int {0} = 0; {0} < {1}; ++{0}) {{ {2}[{0}] = {3}[{0}]; }}", c_.index, c_.place_count, c_.before,
+      w_.line("for (int {0} = 0; {0} < (int){1}; ++{0}) {{ {2}[{0}] = {3}[{0}]; }}", c_.index, c_.place_count, c_.before,
               c_.field(c_.av));
       if (!snapshot()) directive(w_, "#endif");
     }
@@ -175,16 +175,17 @@ private:
     section("");
     directive(w_, "#ifdef " + c_.hooks_macro);
     w_.line("/* Observation hooks: places that lost, then gained activation; transitions open from now on */");
+    // A loop over the numbers (a test per place would repeat the exit, entry and enabled tests,
+    // which cppcheck reports as duplicate conditions); the number is converted to the enum type
+    // the hook takes.
     const std::string &b = c_.before, &i = c_.index;
     const std::string av = c_.field(c_.av);
-    w_.line("for (int {0} = 0; {0} < {1}; ++{0}) {{", i, c_.place_count);
-    w_.line("    if (({0}[{1}] != 0u) && ({2}[{1}] == 0u)) {{ {3}({4}, {1}, false); }}", b, i, av, c_.activated_fn,
-            c_.self);
-    w_.line("}");
-    w_.line("for (int {0} = 0; {0} < {1}; ++{0}) {{", i, c_.place_count);
-    w_.line("    if (({0}[{1}] == 0u) && ({2}[{1}] != 0u)) {{ {3}({4}, {1}, true); }}", b, i, av, c_.activated_fn,
-            c_.self);
-    w_.line("}");
+    for (bool gained : {false, true}) {
+      w_.line("for (int {0} = 0; {0} < (int){1}; ++{0}) {{", i, c_.place_count);
+      w_.line("    if (({0}[{1}] {2} 0u) && ({3}[{1}] {4} 0u)) {{ {5}({6}, ({7}){1}, {8}); }}", b, i, gained ? "==" : "!=",
+              av, gained ? "!=" : "==", c_.activated_fn, c_.self, c_.place_type, gained ? "true" : "false");
+      w_.line("}");
+    }
     for (std::size_t t = 0; t < c_.chart.transitions.size(); ++t) {
       const auto &inputs = c_.chart.transitions[t].inputs;
       std::string was, is;

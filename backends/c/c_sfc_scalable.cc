@@ -285,10 +285,17 @@ private:
       {
         auto body = w_.block("{");
         w_.line("(void){}; /* not every part reads the engine */", c_.self);
-        w_.line("switch ({}) {{", c_.index);
+        bool cases = false;
         for (std::size_t p = k * size; p < std::min((k + 1) * size, c_.chart.places.size()); ++p)
-          if (s.has(static_cast<int>(p))) s.write(static_cast<int>(p));
-        switch_end();
+          cases = cases || s.has(static_cast<int>(p));
+        if (!cases) {  // a switch needs two clauses (MISRA C:2012 rule 16.6): no place here has one
+          w_.line("(void){}; /* no place of this part has a case */", c_.index);
+        } else {
+          w_.line("switch ({}) {{", c_.index);
+          for (std::size_t p = k * size; p < std::min((k + 1) * size, c_.chart.places.size()); ++p)
+            if (s.has(static_cast<int>(p))) s.write(static_cast<int>(p));
+          switch_end();
+        }
       }
       w_.blank();
     }
@@ -366,8 +373,8 @@ private:
   }
 
   void hook_calls() {
-    w_.line("{}({}, (int){}, false);", c_.activated_fn, c_.self, c_.from);
-    w_.line("{}({}, (int){}, true);", c_.activated_fn, c_.self, current());
+    w_.line("{}({}, ({}){}, false);", c_.activated_fn, c_.self, c_.place_type, c_.from);
+    w_.line("{}({}, ({}){}, true);", c_.activated_fn, c_.self, c_.place_type, current());
     place_switch(hook_switch(), current());
   }
 
@@ -508,12 +515,15 @@ private:
     for (int p : t.inputs) inputs += (inputs.empty() ? "(" : " && (") + c_.av_of(p) + " != 0u)";
     transition_test(t, inputs, condition);
     CodeWriter::Scope scope(w_, "}");  // the block transition_test opened
+    // One side effect per statement (MISRA C:2012 rule 13.3): the decrement, then its test.
     for (int p : t.inputs) {
-      std::string lost = c_.watched(p) ? fmt::format(" {}[{}++] = {};", c_.lost, c_.lost_n, constant(p)) : "";
-      w_.line("if (--{} == 0u) {{ {}({}, 0u, {});{} }}", c_.av_of(p), c_.erase_fn, active_set_args(), constant(p),
+      std::string lost =
+          c_.watched(p) ? fmt::format(" {0}[{1}] = {2}; {1}++;", c_.lost, c_.lost_n, constant(p)) : "";
+      w_.line("{}--;", c_.av_of(p));
+      w_.line("if ({} == 0u) {{ {}({}, 0u, {});{} }}", c_.av_of(p), c_.erase_fn, active_set_args(), constant(p),
               lost);
     }
-    for (int q : t.outputs) w_.line("{}[{}++] = {};", c_.add, c_.add_n, constant(q));
+    for (int q : t.outputs) w_.line("{0}[{1}] = {2}; {1}++;", c_.add, c_.add_n, constant(q));
   }
   std::string active_set_args() const {
     return fmt::format("{}, {}, {}u", c_.field(c_.active), c_.active_levels, l().active.levels());
@@ -568,10 +578,13 @@ private:
     w_.line("{}{} = {}[{}];", c_.hooks() ? "" : "uint32_t ", p, c_.add, i);
     std::string av = fmt::format("{}[{}]", c_.field(c_.av), p);
     if (l().saturate) w_.line("if ({} == UINT32_MAX) {{ continue; }} /* saturated: see docs/c-engine.md */", av);
-    w_.line("if ({}++ == 0u) {{", av);
+    // The counter never wraps: it is bounded by proof, or saturated above.
+    w_.line("{}++;", av);
+    w_.line("if ({} == 1u) {{", av);
     w_.line("    {}({}, {});", c_.insert_fn, active_set(), p);
     if (l().watch_capacity > 0)
-      w_.line("    if ({}({})) {{ {}[{}++] = ({}){}; }}", c_.watched_fn, p, c_.gained, c_.gained_n, place_type(), p);
+      w_.line("    if ({0}({1})) {{ {2}[{3}] = ({4}){1}; {3}++; }}", c_.watched_fn, p, c_.gained, c_.gained_n,
+              place_type());
     w_.line("}");
   }
 
@@ -597,7 +610,8 @@ private:
         if (c_.runs_exit(p)) case_block(p, exit_of(p), c_.stop_call(p));
       switch_end();
     }
-    auto scope = w_.block(fmt::format("for ({0} = 0, {1} = 0; {0} < {2}; ++{0}) {{", i, j, c_.gained_n));
+    w_.line("{} = 0;", j);
+    auto scope = w_.block(fmt::format("for ({0} = 0; {0} < {1}; ++{0}) {{", i, c_.gained_n));
     w_.line("while (({0} < {1}) && ({2}[{0}] < {3}[{4}])) {{ ++{0}; }}", j, c_.lost_n, c_.lost, c_.gained, i);
     w_.line(
         "if (({0} < {1}) && ({2}[{0}] == {3}[{4}])) {{ continue; }} /* lost and regained: no entry, the timer goes on */",
@@ -620,16 +634,16 @@ private:
       return fmt::format("(({}[{} >> 5] >> ({} & 31u)) & 1u)", b, place, place);
     };
     for (bool gained : {false, true}) {
-      w_.line("for ({0} = 0; {0} < {1}; ++{0}) {{", p, c_.place_count);
-      w_.line("    if (({} {} 0u) && ({}[{}] {} 0u)) {{ {}({}, (int){}, {}); }}", was(p),
-              gained ? "==" : "!=", c_.field(c_.av), p, gained ? "!=" : "==", c_.activated_fn, c_.self, p,
+      w_.line("for ({0} = 0; {0} < (uint32_t){1}; ++{0}) {{", p, c_.place_count);
+      w_.line("    if (({} {} 0u) && ({}[{}] {} 0u)) {{ {}({}, ({}){}, {}); }}", was(p), gained ? "==" : "!=",
+              c_.field(c_.av), p, gained ? "!=" : "==", c_.activated_fn, c_.self, c_.place_type, p,
               gained ? "true" : "false");
       w_.line("}");
     }
     for (std::size_t t = 0; t < c_.chart.transitions.size(); ++t) {
       std::string before, now;
       for (int q : c_.chart.transitions[t].inputs) {
-        before += fmt::format("{}({} != 0u)", before.empty() ? "" : " && ", was(constant(q)));
+        before += fmt::format("{}({} != 0u)", before.empty() ? "" : " && ", was("(uint32_t)" + constant(q)));
         now += fmt::format(" && ({} != 0u)", c_.av_of(q));
       }
       w_.line("if (!({}){}) {{ {}({}, {}); }}", before, now, c_.enabled_fn, c_.self, c_.transition_const[t]);

@@ -79,7 +79,7 @@ void init(CodeWriter &w, const Context &c) {
   } else if (c.sparse()) {
     // Loops rather than a line per place: a large chart has few initial places.
     w.line("uint32_t {};", c.index);
-    w.line("for ({0} = 0; {0} < {1}; ++{0}) {{", c.index, c.place_count);
+    w.line("for ({0} = 0; {0} < (uint32_t){1}; ++{0}) {{", c.index, c.place_count);
     w.line("    {}[{}] = 0;", c.field(c.av), c.index);
     w.line("}");
     auto clear = [&](const std::string &field, std::uint32_t words) {
@@ -166,11 +166,8 @@ void stop(CodeWriter &w, const Context &c) {
 void instance(CodeWriter &w, const Context &c) {
   for (const auto &s : c.sub)
     if (s) instance(w, *s);
-  w.line("/* ---- The instance of {} run by {} */", c.chart.name, c.owner);
-  w.blank();
-  places_enum(w, c);
-  w.blank();
-  transitions_enum(w, c);
+  w.line("/* ---- The instance of {} run by {} (its enumerations are in the header, with its struct) */",
+         c.chart.name, c.owner);
   w.blank();
   if (c.sparse()) {
     emit_scalable_helpers(w, c);
@@ -198,7 +195,7 @@ void team_functions(CodeWriter &w, const Context &c) {
   w.blank();
   w.line("void {}({} *{}, int agent, int state)", c.report_fn, t, m);
   w.line("{");
-  w.line("    if ((agent >= 0) && (agent < {}) && (agent != {}) && (state >= 0) && (state < {})) {{", c.team_size,
+  w.line("    if ((agent >= 0) && (agent < {}) && (agent != {}) && (state >= 0) && (state < (int){})) {{", c.team_size,
          c.field(c.agent), c.place_count);
   w.line("        {}[agent] = ({})state;", c.field(c.reports), c.report_type());
   w.line("    }");
@@ -223,9 +220,9 @@ void accessors(CodeWriter &w, const Context &c) {
   w.line("{");
   if (c.fsm) w.line("    return ((int){} == place) ? 1u : 0u;", c.field(c.state));
   else if (c.sequential())
-    w.line("    return ((place >= 0) && (place < {}) && ((int){} == place)) ? 1u : 0u;", c.place_count,
+    w.line("    return ((place >= 0) && (place < (int){}) && ((int){} == place)) ? 1u : 0u;", c.place_count,
            c.field(c.current));
-  else w.line("    return ((place >= 0) && (place < {})) ? {}[place] : 0u;", c.place_count, c.field(c.av));
+  else w.line("    return ((place >= 0) && (place < (int){})) ? {}[place] : 0u;", c.place_count, c.field(c.av));
   w.line("}");
   if (!c.fsm) return;
   w.blank();
