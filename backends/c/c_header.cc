@@ -76,7 +76,8 @@ void state_struct(CodeWriter &w, const Context &c) {
   w.indent();
   std::vector<std::pair<std::string, std::string>> rows;
   if (c.fsm) {
-    rows.emplace_back(fmt::format("{} {};", c.place_type, c.state), fmt::format("the current state, a {}_<state>", c.type));
+    rows.emplace_back(fmt::format("{} {};", c.place_type, c.state),
+                      fmt::format("the current state, a {}_<state>", c.type));
     rows.emplace_back(fmt::format("int {};", c.status), "0 running, 1 succeeded, -1 failed");
   } else if (c.sequential()) {
     rows.emplace_back(fmt::format("{} {};", uint_type(c.layout.index_bits), c.current),

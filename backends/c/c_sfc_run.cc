@@ -71,8 +71,8 @@ private:
       w_.line("{} {}[{}]; /* the activation at the start of the tick */", c_.readable_counter(), c_.before,
               c_.place_count);
       // A loop, not memcpy: the engine stays freestanding (no <string.h>) in every mode.
-      w_.line("for (int {0} = 0; {0} < (int){1}; ++{0}) {{ {2}[{0}] = {3}[{0}]; }}", c_.index, c_.place_count, c_.before,
-              c_.field(c_.av));
+      w_.line("for (int {0} = 0; {0} < (int){1}; ++{0}) {{ {2}[{0}] = {3}[{0}]; }}", c_.index, c_.place_count,
+              c_.before, c_.field(c_.av));
       if (!snapshot()) directive(w_, "#endif");
     }
     if (!uses_self()) w_.line("(void){}; /* the chart has neither transitions nor actions */", c_.self);
@@ -106,7 +106,8 @@ private:
     if (!c_.has_timers) return;
     section("/* Count the ticks of the active places that have a timer */");
     for (int p = 0; p < static_cast<int>(c_.chart.places.size()); ++p)
-      if (c_.place(p).timed) w_.line("if (({0} != 0u) && ({1} < UINT32_MAX)) {{ {1}++; }}", c_.av_of(p), c_.timer_of(p));
+      if (c_.place(p).timed)
+        w_.line("if (({0} != 0u) && ({1} < UINT32_MAX)) {{ {1}++; }}", c_.av_of(p), c_.timer_of(p));
   }
 
   /// Step 2: one block per transition, in declaration order. `&&` short-circuits, so the
@@ -182,8 +183,9 @@ private:
     const std::string av = c_.field(c_.av);
     for (bool gained : {false, true}) {
       w_.line("for (int {0} = 0; {0} < (int){1}; ++{0}) {{", i, c_.place_count);
-      w_.line("    if (({0}[{1}] {2} 0u) && ({3}[{1}] {4} 0u)) {{ {5}({6}, ({7}){1}, {8}); }}", b, i, gained ? "==" : "!=",
-              av, gained ? "!=" : "==", c_.activated_fn, c_.self, c_.place_type, gained ? "true" : "false");
+      w_.line("    if (({0}[{1}] {2} 0u) && ({3}[{1}] {4} 0u)) {{ {5}({6}, ({7}){1}, {8}); }}", b, i,
+              gained ? "==" : "!=", av, gained ? "!=" : "==", c_.activated_fn, c_.self, c_.place_type,
+              gained ? "true" : "false");
       w_.line("}");
     }
     for (std::size_t t = 0; t < c_.chart.transitions.size(); ++t) {
@@ -198,8 +200,7 @@ private:
       if (inputs.size() == 1)
         was = fmt::format("({}[{}] == 0u)", b, c_.place_const[static_cast<std::size_t>(inputs[0])]);
       else if (!was.empty()) was = "!(" + was + ")";
-      if (!was.empty())
-        w_.line("if ({}{}) {{ {}({}, {}); }}", was, is, c_.enabled_fn, c_.self, c_.transition_const[t]);
+      if (!was.empty()) w_.line("if ({}{}) {{ {}({}, {}); }}", was, is, c_.enabled_fn, c_.self, c_.transition_const[t]);
     }
     directive(w_, "#endif");
   }

@@ -469,7 +469,8 @@ private:
     if (!c_.has_timers) return;
     section("/* Count the ticks of the active places that have a timer */");
     for (int p = 0; p < places(); ++p)
-      if (c_.place(p).timed) w_.line("if (({0} != 0u) && ({1} < UINT32_MAX)) {{ {1}++; }}", c_.av_of(p), c_.timer_of(p));
+      if (c_.place(p).timed)
+        w_.line("if (({0} != 0u) && ({1} < UINT32_MAX)) {{ {1}++; }}", c_.av_of(p), c_.timer_of(p));
   }
 
   /// `for` over the members of a set, word by word: `bits` holds the members left in word `w`,
@@ -517,11 +518,9 @@ private:
     CodeWriter::Scope scope(w_, "}");  // the block transition_test opened
     // One side effect per statement (MISRA C:2012 rule 13.3): the decrement, then its test.
     for (int p : t.inputs) {
-      std::string lost =
-          c_.watched(p) ? fmt::format(" {0}[{1}] = {2}; {1}++;", c_.lost, c_.lost_n, constant(p)) : "";
+      std::string lost = c_.watched(p) ? fmt::format(" {0}[{1}] = {2}; {1}++;", c_.lost, c_.lost_n, constant(p)) : "";
       w_.line("{}--;", c_.av_of(p));
-      w_.line("if ({} == 0u) {{ {}({}, 0u, {});{} }}", c_.av_of(p), c_.erase_fn, active_set_args(), constant(p),
-              lost);
+      w_.line("if ({} == 0u) {{ {}({}, 0u, {});{} }}", c_.av_of(p), c_.erase_fn, active_set_args(), constant(p), lost);
     }
     for (int q : t.outputs) w_.line("{0}[{1}] = {2}; {1}++;", c_.add, c_.add_n, constant(q));
   }
@@ -613,9 +612,9 @@ private:
     w_.line("{} = 0;", j);
     auto scope = w_.block(fmt::format("for ({0} = 0; {0} < {1}; ++{0}) {{", i, c_.gained_n));
     w_.line("while (({0} < {1}) && ({2}[{0}] < {3}[{4}])) {{ ++{0}; }}", j, c_.lost_n, c_.lost, c_.gained, i);
-    w_.line(
-        "if (({0} < {1}) && ({2}[{0}] == {3}[{4}])) {{ continue; }} /* lost and regained: no entry, the timer goes on */",
-        j, c_.lost_n, c_.lost, c_.gained, i);
+    w_.line("if (({0} < {1}) && ({2}[{0}] == {3}[{4}])) {{ continue; }} /* lost and regained: no entry, the timer goes "
+            "on */",
+            j, c_.lost_n, c_.lost, c_.gained, i);
     w_.line("switch ({}[{}]) {{", c_.gained, i);
     for (int p = 0; p < places(); ++p)
       if (c_.runs_entry(p) || c_.resets_timer(p)) entry_case(p);
@@ -635,9 +634,9 @@ private:
     };
     for (bool gained : {false, true}) {
       w_.line("for ({0} = 0; {0} < (uint32_t){1}; ++{0}) {{", p, c_.place_count);
-      w_.line("    if (({} {} 0u) && ({}[{}] {} 0u)) {{ {}({}, ({}){}, {}); }}", was(p), gained ? "==" : "!=",
-              c_.field(c_.av), p, gained ? "!=" : "==", c_.activated_fn, c_.self, c_.place_type, p,
-              gained ? "true" : "false");
+      w_.line("    if (({} {} 0u) && ({}[{}] {} 0u)) {{ {}({}, ({}){}, {}); }}", was(p),
+              gained ? "==" : "!=", c_.field(c_.av), p, gained ? "!=" : "==", c_.activated_fn, c_.self, c_.place_type,
+              p, gained ? "true" : "false");
       w_.line("}");
     }
     for (std::size_t t = 0; t < c_.chart.transitions.size(); ++t) {

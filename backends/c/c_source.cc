@@ -166,8 +166,8 @@ void stop(CodeWriter &w, const Context &c) {
 void instance(CodeWriter &w, const Context &c) {
   for (const auto &s : c.sub)
     if (s) instance(w, *s);
-  w.line("/* ---- The instance of {} run by {} (its enumerations are in the header, with its struct) */",
-         c.chart.name, c.owner);
+  w.line("/* ---- The instance of {} run by {} (its enumerations are in the header, with its struct) */", c.chart.name,
+         c.owner);
   w.blank();
   if (c.sparse()) {
     emit_scalable_helpers(w, c);
