@@ -217,6 +217,14 @@ private:
     for (std::size_t k = 0; k < ts.size(); ++k) {
       const auto &t = c_.chart.transitions[ts[k]];
       w_.line("/* {}: {} */", t.name, transition_label(c_, t));
+      if (!t.condition) {
+        // Always fires (the last one tried()): no `if (true)`, whose condition would be invariant
+        // (MISRA C:2012 rule 14.3); the move itself is mapped to the transition.
+        if (c_.model.sources) w_.line_from(*c_.model.sources, t.range);
+        w_.line("{} = {};", current(), constant(t.outputs.front()));
+        w_.line_back();
+        continue;
+      }
       transition_test(t, "", test[k]);
       w_.line("    {} = {};", current(), constant(t.outputs.front()));
       w_.line("    break;");
