@@ -90,11 +90,8 @@ void Door_run(Door *m)
     case Door_Reopen:
         /* T6: Reopen -> Opening */
 #line 29 "door_scalable.sfc"
-        if (true) {
+        m->current = Door_Opening;
 #line 95 "door_scalable.c"
-            m->current = Door_Opening;
-            break;
-        }
         break;
     default:
         break;
@@ -106,7 +103,7 @@ void Door_run(Door *m)
         case Door_Open:
 #line 19 "door_scalable.sfc"
             m->cycles += 1;
-#line 110 "door_scalable.c"
+#line 107 "door_scalable.c"
             break;
         default:
             break;
@@ -115,7 +112,7 @@ void Door_run(Door *m)
         case Door_Closed:
 #line 17 "door_scalable.sfc"
             Light(false);
-#line 119 "door_scalable.c"
+#line 116 "door_scalable.c"
             break;
         case Door_Opening:
             m->timer_Opening = 0;
@@ -124,7 +121,7 @@ void Door_run(Door *m)
             m->timer_Open = 0;
 #line 19 "door_scalable.sfc"
             Light(true);
-#line 128 "door_scalable.c"
+#line 125 "door_scalable.c"
             break;
         case Door_Closing:
             m->timer_Closing = 0;
@@ -153,12 +150,12 @@ void Door_run(Door *m)
     case Door_Opening:
 #line 18 "door_scalable.sfc"
         Motor(1);
-#line 157 "door_scalable.c"
+#line 154 "door_scalable.c"
         break;
     case Door_Closing:
 #line 20 "door_scalable.sfc"
         Motor(-1);
-#line 162 "door_scalable.c"
+#line 159 "door_scalable.c"
         break;
     default:
         break;
