@@ -33,7 +33,8 @@ void name_globals(Context &c, NameSpace &globals, const Context *root) {
   if (c.root) {
     for (const auto &f : c.model.functions) globals.claim(f.name);
     globals.claim(t);
-    for (const char *api : {"init", "run", "activation", "state", "status"}) globals.claim(t + "_" + api);
+    for (const char *api : {"init", "run", "activation", "state", "status", "place", "transition"})
+      globals.claim(t + "_" + api);
     c.hooks_macro = t + "_HOOKS";
     c.checks_macro = t + "_CHECKS";
     c.assert_macro = t + "_ASSERT";
@@ -50,6 +51,10 @@ void name_globals(Context &c, NameSpace &globals, const Context *root) {
   c.enabled_fn = t + "_enabled";
   c.place_count = t + "_PLACE_COUNT";
   c.transition_count = t + "_TRANSITION_COUNT";
+  // The enumerations' types (MISRA C:2012 wants named enum types, and a debugger prints a field
+  // of such a type by its constant's name): API names of the root, like X_init.
+  c.place_type = c.root ? t + "_place" : globals.take(t + "_place");
+  c.transition_type = c.root ? t + "_transition" : globals.take(t + "_transition");
   if (c.root) {
     for (const auto *n : {&c.hooks_macro, &c.checks_macro, &c.assert_macro, &c.assert_off_macro, &c.activated_fn,
                           &c.enabled_fn, &c.place_count, &c.transition_count})
@@ -326,7 +331,7 @@ std::vector<std::string> Context::stop_call(int p) const {
                       field(sub_field[static_cast<std::size_t>(p)]), s->chart.name)};
 }
 
-std::string Context::count_text() const { return root ? place_count : std::to_string(chart.places.size()); }
+std::string Context::count_text() const { return place_count; }
 
 std::string Context::member(const std::string &obj, const std::string &name) const {
   return obj.empty() ? field(name) : obj + "." + name;
@@ -339,7 +344,8 @@ std::string Context::active_test(const std::string &obj, int p, bool at_start) c
   // In a condition the counters serve as `avail` and decrease: a place some transition consumes
   // is read from the snapshot of the start of the tick.
   const bool snapshot = at_start && obj.empty() && is_input.at(static_cast<std::size_t>(p));
-  if (snapshot && sparse()) return fmt::format("(({0}[{1} >> 5] >> ({1} & 31u)) & 1u) != 0u", before, k);
+  if (snapshot && sparse())  // the constant as a number in the bit arithmetic (MISRA C:2012 rule 10.1)
+    return fmt::format("(({0}[(uint32_t){1} >> 5] >> ((uint32_t){1} & 31u)) & 1u) != 0u", before, k);
   if (snapshot) return fmt::format("{}[{}] != 0u", before, k);
   return fmt::format("{}[{}] != 0u", member(obj, av), k);
 }

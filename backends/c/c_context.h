@@ -45,6 +45,8 @@ struct Context {
   std::string activated_fn;                   ///< X_activated
   std::string enabled_fn;                     ///< X_enabled
   std::string place_count;                    ///< X_PLACE_COUNT
+  std::string place_type;                     ///< X_place: the enum type of the places (states)
+  std::string transition_type;                ///< X_transition: the enum type of the transitions
   std::string transition_count;               ///< X_TRANSITION_COUNT
   std::vector<std::string> place_const;       ///< X_<place>, by place index
   std::vector<std::string> transition_const;  ///< X_<transition>, by transition index
@@ -134,8 +136,8 @@ struct Context {
   const Context *sub_of(int place) const { return sub.at(static_cast<std::size_t>(place)).get(); }
   /// The observation hooks are the root's only (docs/c-engine.md).
   bool hooks() const { return root; }
-  /// The size of the per-place arrays as the header writes it: X_PLACE_COUNT for the root, the
-  /// number for an instance (its enumerations are in engine.c).
+  /// The size of the per-place arrays as the header writes it: X_PLACE_COUNT (an instance's
+  /// enumerations are in the header too, before its struct).
   std::string count_text() const;
   /// `obj.name`, or `m->name` for obj "" (the engine's own state).
   std::string member(const std::string &obj, const std::string &name) const;

@@ -443,8 +443,13 @@ private:
     }
     // The model keeps the user's brackets as Paren nodes; these only restore what the tree says
     // (operators are left-associative) and quiet the compilers.
-    if (!l_plain && (l.prec < prec || wanted_by_compilers(op, e.args[0], true))) l.text = bracket(l.text);
-    if (!r_plain && (r.prec <= prec || wanted_by_compilers(op, e.args[1], false))) r.text = bracket(r.text);
+    // MISRA C:2012 rule 12.1 also wants the precedence explicit: an operand that is itself a
+    // binary operation of another precedence is bracketed (`(a * b) + c`, `(x >= 1) && y`).
+    auto other = [prec](int p) { return p < kUnary && p != prec; };
+    if (!l_plain && (l.prec < prec || other(l.prec) || wanted_by_compilers(op, e.args[0], true)))
+      l.text = bracket(l.text);
+    if (!r_plain && (r.prec <= prec || other(r.prec) || wanted_by_compilers(op, e.args[1], false)))
+      r.text = bracket(r.text);
     return {fmt::format("{} {} {}", l.text, spelling(op), r.text), prec, std::move(before)};
   }
 

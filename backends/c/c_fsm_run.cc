@@ -19,19 +19,29 @@ public:
     w_.line("{");
     w_.indent();
     declarations();
+    remember_state();
     if (!uses_self()) {
       section("");
       w_.line("(void){}; /* the machine has neither transitions nor actions */", c_.self);
     }
     first_tick();
-    stop_when_terminal();
+    // One exit (MISRA C:2012 rule 15.5): a terminal state skips the rest of the tick.
+    if (c_.has_terminal) {
+      section("/* In a terminal state nothing happens any more */");
+      w_.line("if ({} == 0) {{", c_.field(c_.status));
+      w_.indent();
+      started_ = false;
+    }
     count_time();
-    remember_state();
     transitions();
     exits_and_entries();
     hooks();
     checks();
     actions();
+    if (c_.has_terminal) {
+      w_.dedent();
+      w_.line("}");
+    }
     w_.dedent();
     w_.line("}");
   }
@@ -60,6 +70,7 @@ private:
     return false;
   }
 
+  /// `m->state == X_S`; an operand of `&&` takes it in parentheses (MISRA C:2012 rule 12.1).
   std::string in_state(int p) const {
     return fmt::format("{} == {}", c_.field(c_.state), c_.place_const.at(static_cast<std::size_t>(p)));
   }
@@ -86,27 +97,21 @@ private:
     w_.line("}");
   }
 
-  void stop_when_terminal() {
-    if (!c_.has_terminal) return;
-    section("/* In a terminal state nothing happens any more */");
-    w_.line("if ({} != 0) {{", c_.field(c_.status));
-    w_.line("    return;");
-    w_.line("}");
-  }
-
   void count_time() {
     if (!c_.has_timers) return;
     section("/* Count the ticks of the current state, if it has a timer */");
     for (int p = 0; p < static_cast<int>(c_.chart.places.size()); ++p)
-      if (c_.place(p).timed) w_.line("if ({0} && {1} < UINT32_MAX) {{ {1}++; }}", in_state(p), c_.timer_of(p));
+      if (c_.place(p).timed) w_.line("if (({0}) && ({1} < UINT32_MAX)) {{ {1}++; }}", in_state(p), c_.timer_of(p));
   }
 
-  /// The state at the start of the tick, for exits, entries and hooks (hooks only in a hooks build).
+  /// The state at the start of the tick, for exits, entries and hooks (hooks only in a hooks
+  /// build); declared with the function's other locals, at its top (the first tick's entry code
+  /// does not change the state).
   void remember_state() {
     if (c_.chart.transitions.empty() || (!c_.needs_snapshot() && !c_.hooks())) return;
     section("");
     if (!c_.needs_snapshot()) directive(w_, "#ifdef " + c_.hooks_macro);
-    w_.line("int {} = {}; /* the state at the start of the tick */", c_.from, c_.field(c_.state));
+    w_.line("{} {} = {}; /* the state at the start of the tick */", c_.place_type, c_.from, c_.field(c_.state));
     if (!c_.needs_snapshot()) directive(w_, "#endif");
   }
 
@@ -118,10 +123,10 @@ private:
       const auto &t = c_.chart.transitions[i];
       w_.line("/* {}: {} */", t.name, transition_label(c_, t));
       std::string test = in_state(t.inputs.at(0));
-      if (t.condition) {
-        test += " && " + conditions_.at(i);
-        if (c_.model.sources) w_.line_from(*c_.model.sources, t.condition->range);
-      }
+      if (t.condition) test = "(" + test + ") && " + conditions_.at(i);
+      // Every transition's test is mapped to the chart: to its condition, or to the whole
+      // transition when it has none (a debugger's `break chart.fsm:LINE` stops on it).
+      if (c_.model.sources) w_.line_from(*c_.model.sources, t.condition ? t.condition->range : t.range);
       w_.line("{}if ({}) {{", i == 0 ? "" : "else ", test);
       w_.line_back();
       w_.indent();
@@ -131,6 +136,12 @@ private:
       if (terminal != model::Terminal::None)
         w_.line("{} = {};", c_.field(c_.status), terminal == model::Terminal::Success ? 1 : -1);
       w_.dedent();
+      w_.line("}");
+    }
+    // An if/else-if chain ends in an else (MISRA C:2012 rule 15.7).
+    if (c_.chart.transitions.size() > 1) {
+      w_.line("else {");
+      w_.line("    /* no transition fires: the state stays */");
       w_.line("}");
     }
   }
@@ -147,7 +158,7 @@ private:
     // Exit blocks that read activation see the state left as the current one.
     const bool swap = exits && c_.exits_read_activity;
     if (swap) {
-      w_.line("int {} = {}; /* the state entered: current once the state left has exited */", c_.to,
+      w_.line("{} {} = {}; /* the state entered: current once the state left has exited */", c_.place_type, c_.to,
               c_.field(c_.state));
       w_.line("{} = {};", c_.field(c_.state), c_.from);
     }
@@ -204,7 +215,7 @@ private:
     }
   }
 
-  /// A terminal state's postcondition, in a checks build. The run returns at its top once the
+  /// A terminal state's postcondition, in a checks build. The run skips the tick once the
   /// machine is in a terminal state, so this holds only in the tick that entered it.
   void checks() {
     if (!c_.has_post) return;

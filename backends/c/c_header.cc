@@ -25,18 +25,18 @@ void places_enum(CodeWriter &w, const Context &c) {
   else
     w.line("/* The {} of {} {}, in declaration order: the instance run by {}. */", c.fsm ? "states" : "places",
            c.fsm ? "fsm" : "sfc", c.chart.name, c.owner);
-  w.line("enum {");
+  w.line("typedef enum {");
   w.indent();
   for (const auto &name : c.place_const) w.line("{},", name);
   w.line("{}", c.place_count);
   w.dedent();
-  w.line("};");
+  w.line("}} {};", c.place_type);
 }
 
 void transitions_enum(CodeWriter &w, const Context &c) {
   w.line(c.root ? "/* Its transitions, in declaration order: the numbers the observation hooks pass. */"
                 : "/* Its transitions, in declaration order. */");
-  w.line("enum {");
+  w.line("typedef enum {");
   w.indent();
   std::vector<std::pair<std::string, std::string>> rows;
   for (std::size_t i = 0; i < c.chart.transitions.size(); ++i)
@@ -44,7 +44,7 @@ void transitions_enum(CodeWriter &w, const Context &c) {
   aligned(w, rows);
   w.line("{}", c.transition_count);
   w.dedent();
-  w.line("};");
+  w.line("}} {};", c.transition_type);
 }
 
 void team_enum(CodeWriter &w, const Context &c) {
@@ -58,6 +58,13 @@ void state_struct(CodeWriter &w, const Context &c) {
   // The instances' types first: the root's struct embeds them.
   for (const auto &s : c.sub)
     if (s) state_struct(w, *s);
+  // An instance's enumerations come with its struct: an fsm instance's state field has their type.
+  if (!c.root) {
+    places_enum(w, c);
+    w.blank();
+    transitions_enum(w, c);
+    w.blank();
+  }
   if (c.root) {
     w.line("/* The state of one engine. The type is complete so that the caller can allocate it (several");
     w.line("   engines may run side by side); only the functions below use its fields. */");
@@ -69,7 +76,8 @@ void state_struct(CodeWriter &w, const Context &c) {
   w.indent();
   std::vector<std::pair<std::string, std::string>> rows;
   if (c.fsm) {
-    rows.emplace_back(fmt::format("int {};", c.state), fmt::format("the current state, a {}_<state>", c.type));
+    rows.emplace_back(fmt::format("{} {};", c.place_type, c.state),
+                      fmt::format("the current state, a {}_<state>", c.type));
     rows.emplace_back(fmt::format("int {};", c.status), "0 running, 1 succeeded, -1 failed");
   } else if (c.sequential()) {
     rows.emplace_back(fmt::format("{} {};", uint_type(c.layout.index_bits), c.current),
@@ -166,7 +174,7 @@ void api(CodeWriter &w, const Context &c) {
     w.line("/* 1 if `place` is the current state, else 0. */");
     w.line("unsigned {0}_activation(const {0} *m, int place);", t);
     w.line("/* The current state, a {}_<state>. */", t);
-    w.line("int {0}_state(const {0} *m);", t);
+    w.line("{1} {0}_state(const {0} *m);", t, c.place_type);
     w.line("/* 0 while running, 1 once in a success state, -1 once in a failure state. */");
     w.line("int {0}_status(const {0} *m);", t);
     if (c.team()) team_api(w, c);
@@ -184,9 +192,10 @@ void hooks(CodeWriter &w, const Context &c) {
   w.line("   the encapsulating code defines them. At the end of each tick's update, in declaration order:");
   w.line("   every {} that lost (active false), then gained (active true) its activation; then every",
          c.fsm ? "state" : "place");
-  w.line("   transition whose inputs are all active now but were not at the start of the tick. */");
-  w.line("void {0}({1} *m, int place, bool active);", c.activated_fn, c.type);
-  w.line("void {0}({1} *m, int transition);", c.enabled_fn, c.type);
+  w.line("   transition whose inputs are all active now but were not at the start of the tick.");
+  w.line("   The engine is read only (const): a hook observes, it does not steer. */");
+  w.line("void {0}(const {1} *m, {2} place, bool active);", c.activated_fn, c.type, c.place_type);
+  w.line("void {0}(const {1} *m, {2} transition);", c.enabled_fn, c.type, c.transition_type);
   directive(w, "#endif");
 }
 

@@ -71,8 +71,8 @@ private:
       w_.line("{} {}[{}]; /* the activation at the start of the tick */", c_.readable_counter(), c_.before,
               c_.place_count);
       // A loop, not memcpy: the engine stays freestanding (no <string.h>) in every mode.
-      w_.line("for (int {0} = 0; {0} < {1}; ++{0}) {{ {2}[{0}] = {3}[{0}]; }}", c_.index, c_.place_count, c_.before,
-              c_.field(c_.av));
+      w_.line("for (int {0} = 0; {0} < (int){1}; ++{0}) {{ {2}[{0}] = {3}[{0}]; }}", c_.index, c_.place_count,
+              c_.before, c_.field(c_.av));
       if (!snapshot()) directive(w_, "#endif");
     }
     if (!uses_self()) w_.line("(void){}; /* the chart has neither transitions nor actions */", c_.self);
@@ -106,7 +106,8 @@ private:
     if (!c_.has_timers) return;
     section("/* Count the ticks of the active places that have a timer */");
     for (int p = 0; p < static_cast<int>(c_.chart.places.size()); ++p)
-      if (c_.place(p).timed) w_.line("if ({0} && {1} < UINT32_MAX) {{ {1}++; }}", c_.av_of(p), c_.timer_of(p));
+      if (c_.place(p).timed)
+        w_.line("if (({0} != 0u) && ({1} < UINT32_MAX)) {{ {1}++; }}", c_.av_of(p), c_.timer_of(p));
   }
 
   /// Step 2: one block per transition, in declaration order. `&&` short-circuits, so the
@@ -120,11 +121,12 @@ private:
       const auto &t = c_.chart.transitions[i];
       w_.line("/* {}: {} */", t.name, transition_label(c_, t));
       std::string test;
-      for (int p : t.inputs) test += (test.empty() ? "" : " && ") + c_.av_of(p);
-      if (t.condition) {
-        test += (test.empty() ? "" : " && ") + conditions_.at(i);
-        if (c_.model.sources) w_.line_from(*c_.model.sources, t.condition->range);
-      }
+      for (int p : t.inputs) test += (test.empty() ? "(" : " && (") + c_.av_of(p) + " != 0u)";
+      if (t.condition) test += (test.empty() ? "" : " && ") + conditions_.at(i);
+      // Every transition's test is mapped to the chart: to its condition, or to the whole
+      // transition when it has none (an unconditional join), so that a debugger's
+      // `break chart.sfc:LINE` stops on it.
+      if (c_.model.sources) w_.line_from(*c_.model.sources, t.condition ? t.condition->range : t.range);
       w_.line("if ({}) {{", test.empty() ? "true" : test);
       w_.line_back();
       w_.indent();
@@ -153,13 +155,15 @@ private:
     for (int p = 0; p < n; ++p)
       if (c_.runs_exit(p)) {
         w_.line("/* exit {} */", c_.place(p).name);
-        w_.line("if ({}[{}] && !{}) {{", c_.before, c_.place_const[static_cast<std::size_t>(p)], c_.av_of(p));
+        w_.line("if (({}[{}] != 0u) && ({} == 0u)) {{", c_.before, c_.place_const[static_cast<std::size_t>(p)],
+                c_.av_of(p));
         block(exit_of(p), c_.stop_call(p));
       }
     for (int p = 0; p < n; ++p)
       if (c_.runs_entry(p) || c_.resets_timer(p)) {
         w_.line("/* {} {} */", c_.runs_entry(p) ? "entry" : "timer of", c_.place(p).name);
-        w_.line("if (!{}[{}] && {}) {{", c_.before, c_.place_const[static_cast<std::size_t>(p)], c_.av_of(p));
+        w_.line("if (({}[{}] == 0u) && ({} != 0u)) {{", c_.before, c_.place_const[static_cast<std::size_t>(p)],
+                c_.av_of(p));
         std::vector<std::string> first = c_.start_call(p);
         if (c_.resets_timer(p)) first.insert(first.begin(), fmt::format("{} = 0;", c_.timer_of(p)));
         block(entry_of(p), first);
@@ -172,23 +176,31 @@ private:
     section("");
     directive(w_, "#ifdef " + c_.hooks_macro);
     w_.line("/* Observation hooks: places that lost, then gained activation; transitions open from now on */");
+    // A loop over the numbers (a test per place would repeat the exit, entry and enabled tests,
+    // which cppcheck reports as duplicate conditions); the number is converted to the enum type
+    // the hook takes.
     const std::string &b = c_.before, &i = c_.index;
     const std::string av = c_.field(c_.av);
-    w_.line("for (int {0} = 0; {0} < {1}; ++{0}) {{", i, c_.place_count);
-    w_.line("    if ({0}[{1}] && !{2}[{1}]) {{ {3}({4}, {1}, false); }}", b, i, av, c_.activated_fn, c_.self);
-    w_.line("}");
-    w_.line("for (int {0} = 0; {0} < {1}; ++{0}) {{", i, c_.place_count);
-    w_.line("    if (!{0}[{1}] && {2}[{1}]) {{ {3}({4}, {1}, true); }}", b, i, av, c_.activated_fn, c_.self);
-    w_.line("}");
+    for (bool gained : {false, true}) {
+      w_.line("for (int {0} = 0; {0} < (int){1}; ++{0}) {{", i, c_.place_count);
+      w_.line("    if (({0}[{1}] {2} 0u) && ({3}[{1}] {4} 0u)) {{ {5}({6}, ({7}){1}, {8}); }}", b, i,
+              gained ? "==" : "!=", av, gained ? "!=" : "==", c_.activated_fn, c_.self, c_.place_type,
+              gained ? "true" : "false");
+      w_.line("}");
+    }
     for (std::size_t t = 0; t < c_.chart.transitions.size(); ++t) {
+      const auto &inputs = c_.chart.transitions[t].inputs;
       std::string was, is;
-      for (int p : c_.chart.transitions[t].inputs) {
-        was += (was.empty() ? "" : " && ") + fmt::format("{}[{}]", b, c_.place_const[static_cast<std::size_t>(p)]);
-        is += " && " + c_.av_of(p);
+      for (int p : inputs) {
+        const std::string &k = c_.place_const[static_cast<std::size_t>(p)];
+        was += fmt::format("{}({}[{}] != 0u)", was.empty() ? "" : " && ", b, k);
+        is += fmt::format(" && ({} != 0u)", c_.av_of(p));
       }
-      if (c_.chart.transitions[t].inputs.size() > 1) was = "(" + was + ")";
-      if (!was.empty())
-        w_.line("if (!{}{}) {{ {}({}, {}); }}", was, is, c_.enabled_fn, c_.self, c_.transition_const[t]);
+      // Not all inputs were active, all are now.
+      if (inputs.size() == 1)
+        was = fmt::format("({}[{}] == 0u)", b, c_.place_const[static_cast<std::size_t>(inputs[0])]);
+      else if (!was.empty()) was = "!(" + was + ")";
+      if (!was.empty()) w_.line("if ({}{}) {{ {}({}, {}); }}", was, is, c_.enabled_fn, c_.self, c_.transition_const[t]);
     }
     directive(w_, "#endif");
   }
@@ -202,7 +214,7 @@ private:
         section(c_.has_sub() ? "/* Perform place actions, each followed by one tick of the instance the place runs */"
                              : "/* Perform place actions */");
       any = true;
-      w_.line("if ({}) {{", c_.av_of(p));
+      w_.line("if ({} != 0u) {{", c_.av_of(p));
       block(c_.place(p).action, {}, c_.tick_call(p));
     }
   }

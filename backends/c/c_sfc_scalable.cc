@@ -130,10 +130,9 @@ protected:
   /// `condition`: the condition as conditions() rendered it.
   void transition_test(const model::Transition &t, const std::string &inputs, const std::string &condition) {
     std::string test = inputs;
-    if (t.condition) {
-      test += (test.empty() ? "" : " && ") + condition;
-      if (c_.model.sources) w_.line_from(*c_.model.sources, t.condition->range);
-    }
+    if (t.condition) test += (test.empty() ? "" : " && ") + condition;
+    // Mapped to the condition, or to the whole transition when it has none (docs/c-engine.md).
+    if (c_.model.sources) w_.line_from(*c_.model.sources, t.condition ? t.condition->range : t.range);
     w_.line("if ({}) {{", test.empty() ? "true" : test);
     w_.line_back();
   }
@@ -218,6 +217,14 @@ private:
     for (std::size_t k = 0; k < ts.size(); ++k) {
       const auto &t = c_.chart.transitions[ts[k]];
       w_.line("/* {}: {} */", t.name, transition_label(c_, t));
+      if (!t.condition) {
+        // Always fires (the last one tried()): no `if (true)`, whose condition would be invariant
+        // (MISRA C:2012 rule 14.3); the move itself is mapped to the transition.
+        if (c_.model.sources) w_.line_from(*c_.model.sources, t.range);
+        w_.line("{} = {};", current(), constant(t.outputs.front()));
+        w_.line_back();
+        continue;
+      }
       transition_test(t, "", test[k]);
       w_.line("    {} = {};", current(), constant(t.outputs.front()));
       w_.line("    break;");
@@ -286,10 +293,17 @@ private:
       {
         auto body = w_.block("{");
         w_.line("(void){}; /* not every part reads the engine */", c_.self);
-        w_.line("switch ({}) {{", c_.index);
+        bool cases = false;
         for (std::size_t p = k * size; p < std::min((k + 1) * size, c_.chart.places.size()); ++p)
-          if (s.has(static_cast<int>(p))) s.write(static_cast<int>(p));
-        switch_end();
+          cases = cases || s.has(static_cast<int>(p));
+        if (!cases) {  // a switch needs two clauses (MISRA C:2012 rule 16.6): no place here has one
+          w_.line("(void){}; /* no place of this part has a case */", c_.index);
+        } else {
+          w_.line("switch ({}) {{", c_.index);
+          for (std::size_t p = k * size; p < std::min((k + 1) * size, c_.chart.places.size()); ++p)
+            if (s.has(static_cast<int>(p))) s.write(static_cast<int>(p));
+          switch_end();
+        }
       }
       w_.blank();
     }
@@ -367,8 +381,8 @@ private:
   }
 
   void hook_calls() {
-    w_.line("{}({}, (int){}, false);", c_.activated_fn, c_.self, c_.from);
-    w_.line("{}({}, (int){}, true);", c_.activated_fn, c_.self, current());
+    w_.line("{}({}, ({}){}, false);", c_.activated_fn, c_.self, c_.place_type, c_.from);
+    w_.line("{}({}, ({}){}, true);", c_.activated_fn, c_.self, c_.place_type, current());
     place_switch(hook_switch(), current());
   }
 
@@ -432,19 +446,24 @@ private:
       if (l().watch_capacity == 1)  // no sort reads them: say to code analysers that they are set
         w_.line("{0}[0] = 0; {1}[0] = 0; /* only the entries written are read */", c_.lost, c_.gained);
     }
-    if (has_transitions() || any_actions())
-      w_.line("uint32_t {}, {}; /* a word of a set, its bits */", c_.word, c_.bits);
+    if (has_transitions() || any_actions()) {
+      w_.line("uint32_t {}; /* a word of a set */", c_.word);
+      w_.line("uint32_t {}; /* its bits */", c_.bits);
+    }
     // An instance has no hooks: its place number is local to the commit loop (cppcheck).
     if (has_transitions()) {
-      if (c_.hooks()) w_.line("uint32_t {}, {};", c_.index, i);
-      else w_.line("uint32_t {};", i);
+      if (c_.hooks()) w_.line("uint32_t {};", c_.index);
+      w_.line("uint32_t {};", i);
     }
     // The start of the tick: for conditions that read activation (docs/language.md, "Sub-charts"), and for hooks.
     const bool keep = c_.reads_start;
     if (keep || c_.hooks()) {
       if (!keep) directive(w_, "#ifdef " + c_.hooks_macro);
       w_.line("uint32_t {}[{}]; /* the active places at the start of the tick */", c_.before, l().active.words_at(0));
-      if (!has_transitions()) w_.line("uint32_t {}, {};", c_.index, i);
+      if (!has_transitions()) {
+        w_.line("uint32_t {};", c_.index);
+        w_.line("uint32_t {};", i);
+      }
       w_.line("for ({0} = 0; {0} < {1}u; ++{0}) {{", i, l().active.words_at(0));
       w_.line("    {}[{}] = {}[{}];", c_.before, i, c_.field(c_.active), i);
       w_.line("}");
@@ -458,7 +477,8 @@ private:
     if (!c_.has_timers) return;
     section("/* Count the ticks of the active places that have a timer */");
     for (int p = 0; p < places(); ++p)
-      if (c_.place(p).timed) w_.line("if ({0} && {1} < UINT32_MAX) {{ {1}++; }}", c_.av_of(p), c_.timer_of(p));
+      if (c_.place(p).timed)
+        w_.line("if (({0} != 0u) && ({1} < UINT32_MAX)) {{ {1}++; }}", c_.av_of(p), c_.timer_of(p));
   }
 
   /// `for` over the members of a set, word by word: `bits` holds the members left in word `w`,
@@ -501,15 +521,16 @@ private:
     const auto &t = c_.chart.transitions[index];
     w_.line("/* {}: {} */", t.name, transition_label(c_, t));
     std::string inputs;
-    for (int p : t.inputs) inputs += (inputs.empty() ? "" : " && ") + c_.av_of(p);
+    for (int p : t.inputs) inputs += (inputs.empty() ? "(" : " && (") + c_.av_of(p) + " != 0u)";
     transition_test(t, inputs, condition);
     CodeWriter::Scope scope(w_, "}");  // the block transition_test opened
+    // One side effect per statement (MISRA C:2012 rule 13.3): the decrement, then its test.
     for (int p : t.inputs) {
-      std::string lost = c_.watched(p) ? fmt::format(" {}[{}++] = {};", c_.lost, c_.lost_n, constant(p)) : "";
-      w_.line("if (--{} == 0u) {{ {}({}, 0u, {});{} }}", c_.av_of(p), c_.erase_fn, active_set_args(), constant(p),
-              lost);
+      std::string lost = c_.watched(p) ? fmt::format(" {0}[{1}] = {2}; {1}++;", c_.lost, c_.lost_n, constant(p)) : "";
+      w_.line("{}--;", c_.av_of(p));
+      w_.line("if ({} == 0u) {{ {}({}, 0u, {});{} }}", c_.av_of(p), c_.erase_fn, active_set_args(), constant(p), lost);
     }
-    for (int q : t.outputs) w_.line("{}[{}++] = {};", c_.add, c_.add_n, constant(q));
+    for (int q : t.outputs) w_.line("{0}[{1}] = {2}; {1}++;", c_.add, c_.add_n, constant(q));
   }
   std::string active_set_args() const {
     return fmt::format("{}, {}, {}u", c_.field(c_.active), c_.active_levels, l().active.levels());
@@ -564,10 +585,13 @@ private:
     w_.line("{}{} = {}[{}];", c_.hooks() ? "" : "uint32_t ", p, c_.add, i);
     std::string av = fmt::format("{}[{}]", c_.field(c_.av), p);
     if (l().saturate) w_.line("if ({} == UINT32_MAX) {{ continue; }} /* saturated: see docs/c-engine.md */", av);
-    w_.line("if ({}++ == 0u) {{", av);
+    // The counter never wraps: it is bounded by proof, or saturated above.
+    w_.line("{}++;", av);
+    w_.line("if ({} == 1u) {{", av);
     w_.line("    {}({}, {});", c_.insert_fn, active_set(), p);
     if (l().watch_capacity > 0)
-      w_.line("    if ({}({})) {{ {}[{}++] = ({}){}; }}", c_.watched_fn, p, c_.gained, c_.gained_n, place_type(), p);
+      w_.line("    if ({0}({1})) {{ {2}[{3}] = ({4}){1}; {3}++; }}", c_.watched_fn, p, c_.gained, c_.gained_n,
+              place_type());
     w_.line("}");
   }
 
@@ -593,11 +617,12 @@ private:
         if (c_.runs_exit(p)) case_block(p, exit_of(p), c_.stop_call(p));
       switch_end();
     }
-    auto scope = w_.block(fmt::format("for ({0} = 0, {1} = 0; {0} < {2}; ++{0}) {{", i, j, c_.gained_n));
-    w_.line("while ({0} < {1} && {2}[{0}] < {3}[{4}]) {{ ++{0}; }}", j, c_.lost_n, c_.lost, c_.gained, i);
-    w_.line(
-        "if ({0} < {1} && {2}[{0}] == {3}[{4}]) {{ continue; }} /* lost and regained: no entry, the timer goes on */",
-        j, c_.lost_n, c_.lost, c_.gained, i);
+    w_.line("{} = 0;", j);
+    auto scope = w_.block(fmt::format("for ({0} = 0; {0} < {1}; ++{0}) {{", i, c_.gained_n));
+    w_.line("while (({0} < {1}) && ({2}[{0}] < {3}[{4}])) {{ ++{0}; }}", j, c_.lost_n, c_.lost, c_.gained, i);
+    w_.line("if (({0} < {1}) && ({2}[{0}] == {3}[{4}])) {{ continue; }} /* lost and regained: no entry, the timer goes "
+            "on */",
+            j, c_.lost_n, c_.lost, c_.gained, i);
     w_.line("switch ({}[{}]) {{", c_.gained, i);
     for (int p = 0; p < places(); ++p)
       if (c_.runs_entry(p) || c_.resets_timer(p)) entry_case(p);
@@ -616,17 +641,17 @@ private:
       return fmt::format("(({}[{} >> 5] >> ({} & 31u)) & 1u)", b, place, place);
     };
     for (bool gained : {false, true}) {
-      w_.line("for ({0} = 0; {0} < {1}; ++{0}) {{", p, c_.place_count);
-      w_.line("    if ({} {} 0u && {}[{}] {} 0u) {{ {}({}, (int){}, {}); }}", was(p),
-              gained ? "==" : "!=", c_.field(c_.av), p, gained ? "!=" : "==", c_.activated_fn, c_.self, p,
-              gained ? "true" : "false");
+      w_.line("for ({0} = 0; {0} < (uint32_t){1}; ++{0}) {{", p, c_.place_count);
+      w_.line("    if (({} {} 0u) && ({}[{}] {} 0u)) {{ {}({}, ({}){}, {}); }}", was(p),
+              gained ? "==" : "!=", c_.field(c_.av), p, gained ? "!=" : "==", c_.activated_fn, c_.self, c_.place_type,
+              p, gained ? "true" : "false");
       w_.line("}");
     }
     for (std::size_t t = 0; t < c_.chart.transitions.size(); ++t) {
       std::string before, now;
       for (int q : c_.chart.transitions[t].inputs) {
-        before += (before.empty() ? "" : " && ") + was(constant(q));
-        now += " && " + c_.av_of(q);
+        before += fmt::format("{}({} != 0u)", before.empty() ? "" : " && ", was("(uint32_t)" + constant(q)));
+        now += fmt::format(" && ({} != 0u)", c_.av_of(q));
       }
       w_.line("if (!({}){}) {{ {}({}, {}); }}", before, now, c_.enabled_fn, c_.self, c_.transition_const[t]);
     }
@@ -650,10 +675,11 @@ void sort_helper(CodeWriter &w, const Context &c, const char *type) {
   w.line("/* Sorts a short list of place numbers (the places that lost or gained activation in a tick). */");
   w.line("static void {}({} *list, uint32_t n)", c.sort_fn, type);
   w.line("{");
-  w.line("    uint32_t i, j;");
+  w.line("    uint32_t i;");
+  w.line("    uint32_t j;");
   w.line("    for (i = 1; i < n; ++i) {");
   w.line("        {} key = list[i];", type);
-  w.line("        for (j = i; j > 0u && list[j - 1u] > key; --j) {");
+  w.line("        for (j = i; (j > 0u) && (list[j - 1u] > key); --j) {");
   w.line("            list[j] = list[j - 1u];");
   w.line("        }");
   w.line("        list[j] = key;");
@@ -678,76 +704,92 @@ void sparse_helpers(CodeWriter &w, const Context &c) {
   if (!l.place_driven)
     w.line("static const uint32_t {}[{}] = {{{}}};", c.candidate_levels, l.candidates.from.size(), table(l.candidates));
   w.blank();
+  // The helpers have one exit each and leave their parameters alone (MISRA C:2012 rules 15.5
+  // and 17.8): a search ends by a flag, not by return or break.
   w.line("/* The number of the lowest bit set in a word that is not 0. */");
   w.line("static uint32_t {}(uint32_t word)", c.lowest_fn);
   w.line("{");
   directive(w, "#if defined(__GNUC__) || defined(__clang__)");
-  w.line("    return (uint32_t)__builtin_ctz(word);");
+  w.line("    uint32_t n = (uint32_t)__builtin_ctz(word);");
   directive(w, "#else");
-  w.line("    uint32_t n = 0;");
-  w.line("    while ((word & 1u) == 0u) {");
-  w.line("        word >>= 1;");
+  w.line("    uint32_t rest = word;");
+  w.line("    uint32_t n = 0u;");
+  w.line("    while ((rest & 1u) == 0u) {");
+  w.line("        rest >>= 1;");
   w.line("        ++n;");
   w.line("    }");
-  w.line("    return n;");
   directive(w, "#endif");
+  w.line("    return n;");
   w.line("}");
   w.blank();
-  w.line("/* The first member >= i of a set of `count` levels, looking from level `low` (0: members;");
+  w.line("/* The first member >= from of a set of `count` levels, looking from level `low` (0: members;");
   w.line("   1: words of level 0 that have members), or UINT32_MAX when there is none. */");
-  w.line("static uint32_t {}(const uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t low, uint32_t i)",
+  w.line("static uint32_t {}(const uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t low, uint32_t from)",
          c.next_fn);
   w.line("{");
-  w.line("    uint32_t level = low, word;");
-  w.line("    for (;;) {");
-  w.line("        if ((i >> 5) >= levels[level + 1] - levels[level]) {");
-  w.line("            return UINT32_MAX;");
+  w.line("    uint32_t level = low;");
+  w.line("    uint32_t i = from;");
+  w.line("    uint32_t word = 0u;");
+  w.line("    bool searching = true;");
+  w.line("    bool found = false;");
+  w.line("    while (searching) {");
+  w.line("        if ((i >> 5) >= (levels[level + 1u] - levels[level])) {");
+  w.line("            searching = false; /* past the last word of this level */");
+  w.line("        } else {");
+  w.line("            word = set[levels[level] + (i >> 5)] & (0xFFFFFFFFu << (i & 31u));");
+  w.line("            if (word != 0u) {");
+  w.line("                found = true;");
+  w.line("                searching = false;");
+  w.line("            } else if ((level + 1u) == count) {");
+  w.line("                searching = false; /* the top level has nothing further */");
+  w.line("            } else {");
+  w.line("                i = (i >> 5) + 1u; /* the next word of this level: its bit one level up */");
+  w.line("                ++level;");
+  w.line("            }");
   w.line("        }");
-  w.line("        word = set[levels[level] + (i >> 5)] & (0xFFFFFFFFu << (i & 31u));");
-  w.line("        if (word != 0u) {");
-  w.line("            break;");
-  w.line("        }");
-  w.line("        if (level + 1u == count) {");
-  w.line("            return UINT32_MAX;");
-  w.line("        }");
-  w.line("        i = (i >> 5) + 1u; /* the next word of this level: its bit one level up */");
-  w.line("        ++level;");
   w.line("    }");
-  w.line("    i = (i & ~31u) | {}(word);", c.lowest_fn);
-  w.line("    while (level > low) {");
-  w.line("        --level;");
-  w.line("        i = (i << 5) | {}(set[levels[level] + i]);", c.lowest_fn);
+  w.line("    if (found) {");
+  w.line("        i = (i & ~31u) | {}(word);", c.lowest_fn);
+  w.line("        while (level > low) {");
+  w.line("            --level;");
+  w.line("            i = (i << 5) | {}(set[levels[level] + i]);", c.lowest_fn);
+  w.line("        }");
+  w.line("    } else {");
+  w.line("        i = UINT32_MAX;");
   w.line("    }");
   w.line("    return i;");
   w.line("}");
   w.blank();
-  w.line("/* Adds member i, telling the levels above when its word stops being empty. */");
-  w.line("static void {}(uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t i)", c.insert_fn);
+  w.line("/* Adds a member, telling the levels above when its word stops being empty. */");
+  w.line("static void {}(uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t member)", c.insert_fn);
   w.line("{");
-  w.line("    uint32_t level;");
-  w.line("    for (level = 0; level < count; ++level) {");
+  w.line("    uint32_t i = member;");
+  w.line("    uint32_t level = 0u;");
+  w.line("    bool rising = true;");
+  w.line("    while (rising && (level < count)) {");
   w.line("        uint32_t *word = &set[levels[level] + (i >> 5)];");
   w.line("        uint32_t was = *word;");
   w.line("        *word = was | (1u << (i & 31u));");
-  w.line("        if (was != 0u) {");
-  w.line("            return;");
-  w.line("        }");
+  w.line("        rising = (was == 0u); /* the word was empty: the level above learns of it */");
   w.line("        i >>= 5;");
+  w.line("        ++level;");
   w.line("    }");
   w.line("}");
   w.blank();
-  w.line("/* Removes member i of level `low` (1: a word of level 0 that became empty), telling the levels");
+  w.line("/* Removes a member of level `low` (1: a word of level 0 that became empty), telling the levels");
   w.line("   above when a word becomes empty. */");
-  w.line("static void {}(uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t low, uint32_t i)", c.erase_fn);
+  w.line("static void {}(uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t low, uint32_t member)",
+         c.erase_fn);
   w.line("{");
-  w.line("    uint32_t level;");
-  w.line("    for (level = low; level < count; ++level) {");
+  w.line("    uint32_t i = member;");
+  w.line("    uint32_t level = low;");
+  w.line("    bool emptied = true;");
+  w.line("    while (emptied && (level < count)) {");
   w.line("        uint32_t *word = &set[levels[level] + (i >> 5)];");
   w.line("        *word &= ~(1u << (i & 31u));");
-  w.line("        if (*word != 0u) {");
-  w.line("            return;");
-  w.line("        }");
+  w.line("        emptied = (*word == 0u); /* the word became empty: the level above learns of it */");
   w.line("        i >>= 5;");
+  w.line("        ++level;");
   w.line("    }");
   w.line("}");
   if (c.chart.transitions.empty() || l.watch_capacity == 0) return;
@@ -759,13 +801,17 @@ void sparse_helpers(CodeWriter &w, const Context &c) {
   w.line("/* Whether a place runs exit or entry code, or resets its timer, when its activation changes. */");
   w.line("static bool {}(uint32_t place)", c.watched_fn);
   w.line("{");
+  w.line("    bool watched;");
   w.line("    switch (place) {");
   for (int p = 0; p < static_cast<int>(c.chart.places.size()); ++p)
     if (c.watched(p)) w.line("    case {}:", c.place_const[static_cast<std::size_t>(p)]);
-  w.line("        return true;");
+  w.line("        watched = true;");
+  w.line("        break;");
   w.line("    default:");
-  w.line("        return false;");
+  w.line("        watched = false;");
+  w.line("        break;");
   w.line("    }");
+  w.line("    return watched;");
   w.line("}");
 }
 

@@ -79,7 +79,7 @@ void init(CodeWriter &w, const Context &c) {
   } else if (c.sparse()) {
     // Loops rather than a line per place: a large chart has few initial places.
     w.line("uint32_t {};", c.index);
-    w.line("for ({0} = 0; {0} < {1}; ++{0}) {{", c.index, c.place_count);
+    w.line("for ({0} = 0; {0} < (uint32_t){1}; ++{0}) {{", c.index, c.place_count);
     w.line("    {}[{}] = 0;", c.field(c.av), c.index);
     w.line("}");
     auto clear = [&](const std::string &field, std::uint32_t words) {
@@ -166,11 +166,8 @@ void stop(CodeWriter &w, const Context &c) {
 void instance(CodeWriter &w, const Context &c) {
   for (const auto &s : c.sub)
     if (s) instance(w, *s);
-  w.line("/* ---- The instance of {} run by {} */", c.chart.name, c.owner);
-  w.blank();
-  places_enum(w, c);
-  w.blank();
-  transitions_enum(w, c);
+  w.line("/* ---- The instance of {} run by {} (its enumerations are in the header, with its struct) */", c.chart.name,
+         c.owner);
   w.blank();
   if (c.sparse()) {
     emit_scalable_helpers(w, c);
@@ -191,14 +188,14 @@ void team_functions(CodeWriter &w, const Context &c) {
   const std::string &t = c.type, &m = c.self;
   w.line("void {}({} *{}, int agent)", c.set_agent_fn, t, m);
   w.line("{");
-  w.line("    if (agent >= 0 && agent < {}) {{", c.team_size);
+  w.line("    if ((agent >= 0) && (agent < {})) {{", c.team_size);
   w.line("        {} = agent;", c.field(c.agent));
   w.line("    }");
   w.line("}");
   w.blank();
   w.line("void {}({} *{}, int agent, int state)", c.report_fn, t, m);
   w.line("{");
-  w.line("    if (agent >= 0 && agent < {} && agent != {} && state >= 0 && state < {}) {{", c.team_size,
+  w.line("    if ((agent >= 0) && (agent < {}) && (agent != {}) && (state >= 0) && (state < (int){})) {{", c.team_size,
          c.field(c.agent), c.place_count);
   w.line("        {}[agent] = ({})state;", c.field(c.reports), c.report_type());
   w.line("    }");
@@ -206,9 +203,10 @@ void team_functions(CodeWriter &w, const Context &c) {
   w.blank();
   w.line("int {}(const {} *{}, int state)", c.team_fn, t, m);
   w.line("{");
-  w.line("    int agent, n = 0;");
+  w.line("    int agent;");
+  w.line("    int n = 0;");
   w.line("    for (agent = 0; agent < {}; ++agent) {{", c.team_size);
-  w.line("        if (agent != {} && {}[agent] == state) {{", c.field(c.agent), c.field(c.reports));
+  w.line("        if ((agent != {}) && ({}[agent] == state)) {{", c.field(c.agent), c.field(c.reports));
   w.line("            ++n;");
   w.line("        }");
   w.line("    }");
@@ -220,19 +218,23 @@ void accessors(CodeWriter &w, const Context &c) {
   const std::string &t = c.type, &m = c.self;
   w.line("unsigned {0}_activation(const {0} *{1}, int place)", t, m);
   w.line("{");
-  if (c.fsm) w.line("    return {} == place ? 1u : 0u;", c.field(c.state));
+  if (c.fsm) w.line("    return ((int){} == place) ? 1u : 0u;", c.field(c.state));
   else if (c.sequential())
-    w.line("    return place >= 0 && place < {} && (int){} == place ? 1u : 0u;", c.place_count, c.field(c.current));
-  else w.line("    return place >= 0 && place < {} ? {}[place] : 0u;", c.place_count, c.field(c.av));
+    w.line("    return ((place >= 0) && (place < (int){}) && ((int){} == place)) ? 1u : 0u;", c.place_count,
+           c.field(c.current));
+  else w.line("    return ((place >= 0) && (place < (int){})) ? {}[place] : 0u;", c.place_count, c.field(c.av));
   w.line("}");
   if (!c.fsm) return;
-  for (const auto &[fn, field] : {std::pair{"state", c.state}, std::pair{"status", c.status}}) {
-    w.blank();
-    w.line("int {0}_{1}(const {0} *{2})", t, fn, m);
-    w.line("{");
-    w.line("    return {};", c.field(field));
-    w.line("}");
-  }
+  w.blank();
+  w.line("{1} {0}_state(const {0} *{2})", t, c.place_type, m);
+  w.line("{");
+  w.line("    return {};", c.field(c.state));
+  w.line("}");
+  w.blank();
+  w.line("int {0}_status(const {0} *{1})", t, m);
+  w.line("{");
+  w.line("    return {};", c.field(c.status));
+  w.line("}");
 }
 
 /// `m->Search.ctx`, `m->Search.Inner.ctx`: the context members of every instance below `c`

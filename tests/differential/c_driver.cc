@@ -102,9 +102,9 @@ void one_case(std::string &s, const DriverCase &c) {
   names(s, fmt::format("d{}_places", c.id), c.places);
   names(s, fmt::format("d{}_transitions", c.id), c.transitions);
   s += fmt::format("\n#ifdef {0}_HOOKS\n"
-                   "void {0}_activated({0} *m, int place, bool active)\n{{\n"
+                   "void {0}_activated(const {0} *m, {0}_place place, bool active)\n{{\n"
                    "    (void)m;\n    printf(\"%s %s\\n\", active ? \"gained\" : \"lost\", d{1}_places[place]);\n}}\n\n"
-                   "void {0}_enabled({0} *m, int transition)\n{{\n"
+                   "void {0}_enabled(const {0} *m, {0}_transition transition)\n{{\n"
                    "    (void)m;\n    printf(\"enabled %s\\n\", d{1}_transitions[transition]);\n}}\n"
                    "#endif\n\n",
                    t, c.id);

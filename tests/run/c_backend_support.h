@@ -495,10 +495,10 @@ inline std::string harness_source(const model::Model &m, const model::Chart &cha
   s += "static const char *const transition_names[] = {";
   for (const auto &t : chart.transitions) s += fmt::format("\"{}\", ", t.name);
   s += "NULL};\n\n";
-  s += fmt::format("void {0}_activated({0} *m, int place, bool active)\n{{\n    (void)m;\n"
+  s += fmt::format("void {0}_activated(const {0} *m, {0}_place place, bool active)\n{{\n    (void)m;\n"
                    "    printf(\"hook %s %s\\n\", active ? \"gained\" : \"lost\", place_names[place]);\n}}\n\n",
                    X);
-  s += fmt::format("void {0}_enabled({0} *m, int transition)\n{{\n    (void)m;\n"
+  s += fmt::format("void {0}_enabled(const {0} *m, {0}_transition transition)\n{{\n    (void)m;\n"
                    "    printf(\"hook enabled %s\\n\", transition_names[transition]);\n}}\n",
                    X);
   s += "#endif\n\n";

@@ -22,82 +22,83 @@ void Weigh_run(Weigh *m)
 {
     int gfec_t0, gfec_t1, gfec_t2, gfec_t3; /* temporaries: the chart calls left to right */
 
-    /* In a terminal state nothing happens any more */
-    if (m->status != 0) {
-        return;
-    }
-
 #ifdef Weigh_HOOKS
-    int from = m->state; /* the state at the start of the tick */
+    Weigh_place from = m->state; /* the state at the start of the tick */
 #endif
 
-    /* Perform state update: the first transition leaving the current state whose condition
-       holds, in declaration order (one per tick) */
-    /* T0: Fill -> Settle */
+    /* In a terminal state nothing happens any more */
+    if (m->status == 0) {
+        /* Perform state update: the first transition leaving the current state whose condition
+           holds, in declaration order (one per tick) */
+        /* T0: Fill -> Settle */
 #line 16 "call_order.fsm"
-    if (m->state == Weigh_Fill && (gfec_t0 = Weight(), gfec_t0 >= Target())) {
-#line 40 "call_order.c"
-        m->state = Weigh_Settle;
-    }
-    /* T1: Settle -> Done */
+        if ((m->state == Weigh_Fill) && (gfec_t0 = Weight(), gfec_t0 >= Target())) {
+#line 37 "call_order.c"
+            m->state = Weigh_Settle;
+        }
+        /* T1: Settle -> Done */
 #line 17 "call_order.fsm"
-    else if (m->state == Weigh_Settle && (Stable() && (gfec_t1 = Weight(), gfec_t1 == Target()))) {
-#line 46 "call_order.c"
-        m->state = Weigh_Done;
-        m->status = 1;
-    }
-    /* T2: Settle -> Over */
+        else if ((m->state == Weigh_Settle) && (Stable() && (gfec_t1 = Weight(), gfec_t1 == Target()))) {
+#line 43 "call_order.c"
+            m->state = Weigh_Done;
+            m->status = 1;
+        }
+        /* T2: Settle -> Over */
 #line 18 "call_order.fsm"
-    else if (m->state == Weigh_Settle && (gfec_t2 = Weight(), gfec_t2 > Target() + 1)) {
-#line 53 "call_order.c"
-        m->state = Weigh_Over;
-        m->status = -1;
-    }
-    /* T3: Settle -> Fill */
+        else if ((m->state == Weigh_Settle) && (gfec_t2 = Weight(), gfec_t2 > (Target() + 1))) {
+#line 50 "call_order.c"
+            m->state = Weigh_Over;
+            m->status = -1;
+        }
+        /* T3: Settle -> Fill */
 #line 19 "call_order.fsm"
-    else if (m->state == Weigh_Settle && (gfec_t3 = Weight(), gfec_t3 < Target())) {
-#line 60 "call_order.c"
-        m->state = Weigh_Fill;
-    }
+        else if ((m->state == Weigh_Settle) && (gfec_t3 = Weight(), gfec_t3 < Target())) {
+#line 57 "call_order.c"
+            m->state = Weigh_Fill;
+        }
+        else {
+            /* no transition fires: the state stays */
+        }
 
 #ifdef Weigh_HOOKS
-    /* Observation hooks: the state left and the state entered; the transitions leaving it */
-    if (m->state != from) {
-        Weigh_activated(m, from, false);
-        Weigh_activated(m, m->state, true);
-        if (m->state == Weigh_Fill) { Weigh_enabled(m, Weigh_T0); }
-        if (m->state == Weigh_Settle) { Weigh_enabled(m, Weigh_T1); Weigh_enabled(m, Weigh_T2); Weigh_enabled(m, Weigh_T3); }
-    }
+        /* Observation hooks: the state left and the state entered; the transitions leaving it */
+        if (m->state != from) {
+            Weigh_activated(m, from, false);
+            Weigh_activated(m, m->state, true);
+            if (m->state == Weigh_Fill) { Weigh_enabled(m, Weigh_T0); }
+            if (m->state == Weigh_Settle) { Weigh_enabled(m, Weigh_T1); Weigh_enabled(m, Weigh_T2); Weigh_enabled(m, Weigh_T3); }
+        }
 #endif
 
 #ifdef Weigh_CHECKS
-    /* Postconditions of the terminal states, checked on entering them */
-    if (m->state == Weigh_Done) {
+        /* Postconditions of the terminal states, checked on entering them */
+        if (m->state == Weigh_Done) {
 #ifndef Weigh_ASSERT_OFF
-        int gfec_t4; /* temporaries: the chart calls left to right */
-        bool gfec_t5; /* temporaries: the chart calls left to right */
+            int gfec_t4; /* temporaries: the chart calls left to right */
+            bool gfec_t5; /* temporaries: the chart calls left to right */
 #line 13 "call_order.fsm"
-        gfec_t4 = Weight(); gfec_t5 = gfec_t4 - Target() < 2 && Stable(); Weigh_ASSERT(gfec_t5);
+            gfec_t4 = Weight(); gfec_t5 = ((gfec_t4 - Target()) < 2) && Stable(); Weigh_ASSERT(gfec_t5);
 #line 82 "call_order.c"
 #endif
-    }
+        }
 #endif
 
-    /* Perform the action of the current state */
-    if (m->state == Weigh_Fill) {
-        int gfec_t6; /* temporaries: the chart calls left to right */
+        /* Perform the action of the current state */
+        if (m->state == Weigh_Fill) {
+            int gfec_t6; /* temporaries: the chart calls left to right */
 #line 11 "call_order.fsm"
-        gfec_t6 = Weight(); Report(gfec_t6, Target());
+            gfec_t6 = Weight(); Report(gfec_t6, Target());
 #line 92 "call_order.c"
+        }
     }
 }
 
 unsigned Weigh_activation(const Weigh *m, int place)
 {
-    return m->state == place ? 1u : 0u;
+    return ((int)m->state == place) ? 1u : 0u;
 }
 
-int Weigh_state(const Weigh *m)
+Weigh_place Weigh_state(const Weigh *m)
 {
     return m->state;
 }

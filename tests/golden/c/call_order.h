@@ -10,29 +10,29 @@ extern "C" {
 #endif
 
 /* The states of fsm Weigh, in declaration order. */
-enum {
+typedef enum {
     Weigh_Fill,
     Weigh_Settle,
     Weigh_Done,
     Weigh_Over,
     Weigh_PLACE_COUNT
-};
+} Weigh_place;
 
 /* Its transitions, in declaration order: the numbers the observation hooks pass. */
-enum {
+typedef enum {
     Weigh_T0, /* Fill -> Settle */
     Weigh_T1, /* Settle -> Done */
     Weigh_T2, /* Settle -> Over */
     Weigh_T3, /* Settle -> Fill */
     Weigh_TRANSITION_COUNT
-};
+} Weigh_transition;
 
 /* The state of one engine. The type is complete so that the caller can allocate it (several
    engines may run side by side); only the functions below use its fields. */
 typedef struct Weigh Weigh;
 struct Weigh {
-    int state;  /* the current state, a Weigh_<state> */
-    int status; /* 0 running, 1 succeeded, -1 failed */
+    Weigh_place state; /* the current state, a Weigh_<state> */
+    int status;        /* 0 running, 1 succeeded, -1 failed */
 };
 
 /* Sets the initial state; calls no code of the chart. */
@@ -42,7 +42,7 @@ void Weigh_run(Weigh *m);
 /* 1 if `place` is the current state, else 0. */
 unsigned Weigh_activation(const Weigh *m, int place);
 /* The current state, a Weigh_<state>. */
-int Weigh_state(const Weigh *m);
+Weigh_place Weigh_state(const Weigh *m);
 /* 0 while running, 1 once in a success state, -1 once in a failure state. */
 int Weigh_status(const Weigh *m);
 
@@ -50,9 +50,10 @@ int Weigh_status(const Weigh *m);
 /* Observation hooks (GFE_Activated, GFE_Enabled): an engine built with -DWeigh_HOOKS calls them and
    the encapsulating code defines them. At the end of each tick's update, in declaration order:
    every state that lost (active false), then gained (active true) its activation; then every
-   transition whose inputs are all active now but were not at the start of the tick. */
-void Weigh_activated(Weigh *m, int place, bool active);
-void Weigh_enabled(Weigh *m, int transition);
+   transition whose inputs are all active now but were not at the start of the tick.
+   The engine is read only (const): a hook observes, it does not steer. */
+void Weigh_activated(const Weigh *m, Weigh_place place, bool active);
+void Weigh_enabled(const Weigh *m, Weigh_transition transition);
 #endif
 
 /* Functions of interface Scale that the chart calls: the robot library defines them. */

@@ -20,118 +20,119 @@ void CleanUp_init(CleanUp *m)
 
 void CleanUp_run(CleanUp *m)
 {
-    /* In a terminal state nothing happens any more */
-    if (m->status != 0) {
-        return;
-    }
-
 #ifdef CleanUp_HOOKS
-    int from = m->state; /* the state at the start of the tick */
+    CleanUp_place from = m->state; /* the state at the start of the tick */
 #endif
 
-    /* Perform state update: the first transition leaving the current state whose condition
-       holds, in declaration order (one per tick) */
-    /* T0: Z0 -> Z1 */
+    /* In a terminal state nothing happens any more */
+    if (m->status == 0) {
+        /* Perform state update: the first transition leaving the current state whose condition
+           holds, in declaration order (one per tick) */
+        /* T0: Z0 -> Z1 */
 #line 15 "cleanup.fsm"
-    if (m->state == CleanUp_Z0 && (Arrived())) {
-#line 38 "cleanup.c"
-        m->state = CleanUp_Z1;
-    }
-    /* T1: Z1 -> Z2 */
+        if ((m->state == CleanUp_Z0) && (Arrived())) {
+#line 35 "cleanup.c"
+            m->state = CleanUp_Z1;
+        }
+        /* T1: Z1 -> Z2 */
 #line 16 "cleanup.fsm"
-    else if (m->state == CleanUp_Z1 && (Holding() && FarFromDestination())) {
-#line 44 "cleanup.c"
-        m->state = CleanUp_Z2;
-    }
-    /* T2: Z1 -> Z3 */
+        else if ((m->state == CleanUp_Z1) && (Holding() && FarFromDestination())) {
+#line 41 "cleanup.c"
+            m->state = CleanUp_Z2;
+        }
+        /* T2: Z1 -> Z3 */
 #line 17 "cleanup.fsm"
-    else if (m->state == CleanUp_Z1 && (Holding() && !FarFromDestination())) {
-#line 50 "cleanup.c"
-        m->state = CleanUp_Z3;
-    }
-    /* T3: Z2 -> Z3 */
+        else if ((m->state == CleanUp_Z1) && (Holding() && !FarFromDestination())) {
+#line 47 "cleanup.c"
+            m->state = CleanUp_Z3;
+        }
+        /* T3: Z2 -> Z3 */
 #line 18 "cleanup.fsm"
-    else if (m->state == CleanUp_Z2 && (Arrived())) {
-#line 56 "cleanup.c"
-        m->state = CleanUp_Z3;
-    }
-    /* T4: Z2 -> Z1 */
+        else if ((m->state == CleanUp_Z2) && (Arrived())) {
+#line 53 "cleanup.c"
+            m->state = CleanUp_Z3;
+        }
+        /* T4: Z2 -> Z1 */
 #line 19 "cleanup.fsm"
-    else if (m->state == CleanUp_Z2 && (!Holding())) {
-#line 62 "cleanup.c"
-        m->state = CleanUp_Z1;
-    }
-    /* T5: Z3 -> Done */
+        else if ((m->state == CleanUp_Z2) && (!Holding())) {
+#line 59 "cleanup.c"
+            m->state = CleanUp_Z1;
+        }
+        /* T5: Z3 -> Done */
 #line 20 "cleanup.fsm"
-    else if (m->state == CleanUp_Z3 && (ItemPlaced())) {
-#line 68 "cleanup.c"
-        m->state = CleanUp_Done;
-        m->status = 1;
-    }
-    /* T6: Z3 -> Z1 */
+        else if ((m->state == CleanUp_Z3) && (ItemPlaced())) {
+#line 65 "cleanup.c"
+            m->state = CleanUp_Done;
+            m->status = 1;
+        }
+        /* T6: Z3 -> Z1 */
 #line 21 "cleanup.fsm"
-    else if (m->state == CleanUp_Z3 && (!Holding() && !ItemPlaced())) {
-#line 75 "cleanup.c"
-        m->state = CleanUp_Z1;
-    }
-    /* T7: Z0 -> Failed */
+        else if ((m->state == CleanUp_Z3) && (!Holding() && !ItemPlaced())) {
+#line 72 "cleanup.c"
+            m->state = CleanUp_Z1;
+        }
+        /* T7: Z0 -> Failed */
 #line 22 "cleanup.fsm"
-    else if (m->state == CleanUp_Z0 && (Stuck())) {
-#line 81 "cleanup.c"
-        m->state = CleanUp_Failed;
-        m->status = -1;
-    }
+        else if ((m->state == CleanUp_Z0) && (Stuck())) {
+#line 78 "cleanup.c"
+            m->state = CleanUp_Failed;
+            m->status = -1;
+        }
+        else {
+            /* no transition fires: the state stays */
+        }
 
 #ifdef CleanUp_HOOKS
-    /* Observation hooks: the state left and the state entered; the transitions leaving it */
-    if (m->state != from) {
-        CleanUp_activated(m, from, false);
-        CleanUp_activated(m, m->state, true);
-        if (m->state == CleanUp_Z0) { CleanUp_enabled(m, CleanUp_T0); CleanUp_enabled(m, CleanUp_T7); }
-        if (m->state == CleanUp_Z1) { CleanUp_enabled(m, CleanUp_T1); CleanUp_enabled(m, CleanUp_T2); }
-        if (m->state == CleanUp_Z2) { CleanUp_enabled(m, CleanUp_T3); CleanUp_enabled(m, CleanUp_T4); }
-        if (m->state == CleanUp_Z3) { CleanUp_enabled(m, CleanUp_T5); CleanUp_enabled(m, CleanUp_T6); }
-    }
+        /* Observation hooks: the state left and the state entered; the transitions leaving it */
+        if (m->state != from) {
+            CleanUp_activated(m, from, false);
+            CleanUp_activated(m, m->state, true);
+            if (m->state == CleanUp_Z0) { CleanUp_enabled(m, CleanUp_T0); CleanUp_enabled(m, CleanUp_T7); }
+            if (m->state == CleanUp_Z1) { CleanUp_enabled(m, CleanUp_T1); CleanUp_enabled(m, CleanUp_T2); }
+            if (m->state == CleanUp_Z2) { CleanUp_enabled(m, CleanUp_T3); CleanUp_enabled(m, CleanUp_T4); }
+            if (m->state == CleanUp_Z3) { CleanUp_enabled(m, CleanUp_T5); CleanUp_enabled(m, CleanUp_T6); }
+        }
 #endif
 
 #ifdef CleanUp_CHECKS
-    /* Postconditions of the terminal states, checked on entering them */
-    if (m->state == CleanUp_Done) {
+        /* Postconditions of the terminal states, checked on entering them */
+        if (m->state == CleanUp_Done) {
 #line 12 "cleanup.fsm"
-        CleanUp_ASSERT(ItemAtDestination());
+            CleanUp_ASSERT(ItemAtDestination());
 #line 103 "cleanup.c"
-    }
+        }
 #endif
 
-    /* Perform the action of the current state */
-    if (m->state == CleanUp_Z0) {
+        /* Perform the action of the current state */
+        if (m->state == CleanUp_Z0) {
 #line 8 "cleanup.fsm"
-        DriveToItem();
+            DriveToItem();
 #line 111 "cleanup.c"
-    }
-    if (m->state == CleanUp_Z1) {
+        }
+        if (m->state == CleanUp_Z1) {
 #line 9 "cleanup.fsm"
-        PickUp();
+            PickUp();
 #line 116 "cleanup.c"
-    }
-    if (m->state == CleanUp_Z2) {
+        }
+        if (m->state == CleanUp_Z2) {
 #line 10 "cleanup.fsm"
-        Transport();
+            Transport();
 #line 121 "cleanup.c"
-    }
-    if (m->state == CleanUp_Z3) {
+        }
+        if (m->state == CleanUp_Z3) {
 #line 11 "cleanup.fsm"
-        PlaceItem();
+            PlaceItem();
 #line 126 "cleanup.c"
+        }
     }
 }
 
 unsigned CleanUp_activation(const CleanUp *m, int place)
 {
-    return m->state == place ? 1u : 0u;
+    return ((int)m->state == place) ? 1u : 0u;
 }
 
-int CleanUp_state(const CleanUp *m)
+CleanUp_place CleanUp_state(const CleanUp *m)
 {
     return m->state;
 }

@@ -10,7 +10,7 @@ extern "C" {
 #endif
 
 /* The states of fsm CleanUp, in declaration order. */
-enum {
+typedef enum {
     CleanUp_Z0,
     CleanUp_Z1,
     CleanUp_Z2,
@@ -18,10 +18,10 @@ enum {
     CleanUp_Done,
     CleanUp_Failed,
     CleanUp_PLACE_COUNT
-};
+} CleanUp_place;
 
 /* Its transitions, in declaration order: the numbers the observation hooks pass. */
-enum {
+typedef enum {
     CleanUp_T0, /* Z0 -> Z1 */
     CleanUp_T1, /* Z1 -> Z2 */
     CleanUp_T2, /* Z1 -> Z3 */
@@ -31,14 +31,14 @@ enum {
     CleanUp_T6, /* Z3 -> Z1 */
     CleanUp_T7, /* Z0 -> Failed */
     CleanUp_TRANSITION_COUNT
-};
+} CleanUp_transition;
 
 /* The state of one engine. The type is complete so that the caller can allocate it (several
    engines may run side by side); only the functions below use its fields. */
 typedef struct CleanUp CleanUp;
 struct CleanUp {
-    int state;  /* the current state, a CleanUp_<state> */
-    int status; /* 0 running, 1 succeeded, -1 failed */
+    CleanUp_place state; /* the current state, a CleanUp_<state> */
+    int status;          /* 0 running, 1 succeeded, -1 failed */
 };
 
 /* Sets the initial state; calls no code of the chart. */
@@ -48,7 +48,7 @@ void CleanUp_run(CleanUp *m);
 /* 1 if `place` is the current state, else 0. */
 unsigned CleanUp_activation(const CleanUp *m, int place);
 /* The current state, a CleanUp_<state>. */
-int CleanUp_state(const CleanUp *m);
+CleanUp_place CleanUp_state(const CleanUp *m);
 /* 0 while running, 1 once in a success state, -1 once in a failure state. */
 int CleanUp_status(const CleanUp *m);
 
@@ -56,9 +56,10 @@ int CleanUp_status(const CleanUp *m);
 /* Observation hooks (GFE_Activated, GFE_Enabled): an engine built with -DCleanUp_HOOKS calls them and
    the encapsulating code defines them. At the end of each tick's update, in declaration order:
    every state that lost (active false), then gained (active true) its activation; then every
-   transition whose inputs are all active now but were not at the start of the tick. */
-void CleanUp_activated(CleanUp *m, int place, bool active);
-void CleanUp_enabled(CleanUp *m, int transition);
+   transition whose inputs are all active now but were not at the start of the tick.
+   The engine is read only (const): a hook observes, it does not steer. */
+void CleanUp_activated(const CleanUp *m, CleanUp_place place, bool active);
+void CleanUp_enabled(const CleanUp *m, CleanUp_transition transition);
 #endif
 
 /* Functions of interface CleanBot that the chart calls: the robot library defines them. */

@@ -89,10 +89,9 @@ void Door_run(Door *m)
         break;
     case Door_Reopen:
         /* T6: Reopen -> Opening */
-        if (true) {
-            m->current = Door_Opening;
-            break;
-        }
+#line 29 "door_scalable.sfc"
+        m->current = Door_Opening;
+#line 95 "door_scalable.c"
         break;
     default:
         break;
@@ -104,7 +103,7 @@ void Door_run(Door *m)
         case Door_Open:
 #line 19 "door_scalable.sfc"
             m->cycles += 1;
-#line 108 "door_scalable.c"
+#line 107 "door_scalable.c"
             break;
         default:
             break;
@@ -113,7 +112,7 @@ void Door_run(Door *m)
         case Door_Closed:
 #line 17 "door_scalable.sfc"
             Light(false);
-#line 117 "door_scalable.c"
+#line 116 "door_scalable.c"
             break;
         case Door_Opening:
             m->timer_Opening = 0;
@@ -122,7 +121,7 @@ void Door_run(Door *m)
             m->timer_Open = 0;
 #line 19 "door_scalable.sfc"
             Light(true);
-#line 126 "door_scalable.c"
+#line 125 "door_scalable.c"
             break;
         case Door_Closing:
             m->timer_Closing = 0;
@@ -132,8 +131,8 @@ void Door_run(Door *m)
         }
 #ifdef Door_HOOKS
         /* Observation hooks: the place left and the place entered; the transitions leaving it */
-        Door_activated(m, (int)from, false);
-        Door_activated(m, (int)m->current, true);
+        Door_activated(m, (Door_place)from, false);
+        Door_activated(m, (Door_place)m->current, true);
         switch (m->current) {
         case Door_Closed: Door_enabled(m, Door_T0); break;
         case Door_Opening: Door_enabled(m, Door_T1); break;
@@ -151,12 +150,12 @@ void Door_run(Door *m)
     case Door_Opening:
 #line 18 "door_scalable.sfc"
         Motor(1);
-#line 155 "door_scalable.c"
+#line 154 "door_scalable.c"
         break;
     case Door_Closing:
 #line 20 "door_scalable.sfc"
         Motor(-1);
-#line 160 "door_scalable.c"
+#line 159 "door_scalable.c"
         break;
     default:
         break;
@@ -165,5 +164,5 @@ void Door_run(Door *m)
 
 unsigned Door_activation(const Door *m, int place)
 {
-    return place >= 0 && place < Door_PLACE_COUNT && (int)m->current == place ? 1u : 0u;
+    return ((place >= 0) && (place < (int)Door_PLACE_COUNT) && ((int)m->current == place)) ? 1u : 0u;
 }

@@ -10,17 +10,17 @@ extern "C" {
 #endif
 
 /* The places of sfc Door, in declaration order. */
-enum {
+typedef enum {
     Door_Closed,
     Door_Opening,
     Door_Open,
     Door_Closing,
     Door_Reopen,
     Door_PLACE_COUNT
-};
+} Door_place;
 
 /* Its transitions, in declaration order: the numbers the observation hooks pass. */
-enum {
+typedef enum {
     Door_T0,   /* Closed -> Opening */
     Door_T1,   /* Opening -> Open */
     Door_Hold, /* Open -> Open */
@@ -29,7 +29,7 @@ enum {
     Door_T5,   /* Closing -> Closed */
     Door_T6,   /* Reopen -> Opening */
     Door_TRANSITION_COUNT
-};
+} Door_transition;
 
 /* The state of one engine. The type is complete so that the caller can allocate it (several
    engines may run side by side); only the functions below use its fields. */
@@ -54,9 +54,10 @@ unsigned Door_activation(const Door *m, int place);
 /* Observation hooks (GFE_Activated, GFE_Enabled): an engine built with -DDoor_HOOKS calls them and
    the encapsulating code defines them. At the end of each tick's update, in declaration order:
    every place that lost (active false), then gained (active true) its activation; then every
-   transition whose inputs are all active now but were not at the start of the tick. */
-void Door_activated(Door *m, int place, bool active);
-void Door_enabled(Door *m, int transition);
+   transition whose inputs are all active now but were not at the start of the tick.
+   The engine is read only (const): a hook observes, it does not steer. */
+void Door_activated(const Door *m, Door_place place, bool active);
+void Door_enabled(const Door *m, Door_transition transition);
 #endif
 
 /* Functions of interface DoorBot that the chart calls: the robot library defines them. */

@@ -19,7 +19,7 @@ void Expressions_run(Expressions *m)
     uint8_t add[Expressions_PLACE_COUNT] = {0}; /* activation produced in this tick */
     int gfec_t0, gfec_t1; /* temporaries: the chart calls left to right */
     uint8_t before[Expressions_PLACE_COUNT]; /* the activation at the start of the tick */
-    for (int p = 0; p < Expressions_PLACE_COUNT; ++p) { before[p] = m->av[p]; }
+    for (int p = 0; p < (int)Expressions_PLACE_COUNT; ++p) { before[p] = m->av[p]; }
 
     /* First tick: the initial places enter */
     if (!m->started) {
@@ -32,20 +32,20 @@ void Expressions_run(Expressions *m)
     }
 
     /* Count the ticks of the active places that have a timer */
-    if (m->av[Expressions_Run] && m->timer_Run < UINT32_MAX) { m->timer_Run++; }
+    if ((m->av[Expressions_Run] != 0u) && (m->timer_Run < UINT32_MAX)) { m->timer_Run++; }
 
     /* Perform state update: transitions in declaration order; the activation they produce
        waits in add[] and cannot be consumed before the next tick */
     /* Start: Idle -> Run */
 #line 38 "expressions.sfc"
-    if (m->av[Expressions_Idle] && (gfec_t0 = Count(), gfec_t0 + Level() > m->n && Ready())) {
+    if ((m->av[Expressions_Idle] != 0u) && (gfec_t0 = Count(), ((gfec_t0 + Level()) > m->n) && Ready())) {
 #line 43 "expressions.c"
         m->av[Expressions_Idle]--;
         add[Expressions_Run]++;
     }
     /* Stop: Run -> Idle */
 #line 39 "expressions.sfc"
-    if (m->av[Expressions_Run] && (m->timer_Run >= 5u /* 50ms */ || (gfec_t1 = Level(), gfec_t1 < Count()))) {
+    if ((m->av[Expressions_Run] != 0u) && ((m->timer_Run >= 5u /* 50ms */) || (gfec_t1 = Level(), gfec_t1 < Count()))) {
 #line 50 "expressions.c"
         m->av[Expressions_Run]--;
         add[Expressions_Idle]++;
@@ -57,20 +57,20 @@ void Expressions_run(Expressions *m)
 
     /* Places that lost their activation exit, then places that gained it enter */
     /* exit Idle */
-    if (before[Expressions_Idle] && !m->av[Expressions_Idle]) {
+    if ((before[Expressions_Idle] != 0u) && (m->av[Expressions_Idle] == 0u)) {
 #line 26 "expressions.sfc"
         m->n = (int)(m->n - Ratio());
 #line 64 "expressions.c"
     }
     /* entry Idle */
-    if (!before[Expressions_Idle] && m->av[Expressions_Idle]) {
+    if ((before[Expressions_Idle] == 0u) && (m->av[Expressions_Idle] != 0u)) {
         int gfec_t3; /* temporaries: the chart calls left to right */
 #line 25 "expressions.sfc"
         gfec_t3 = Count(); Show(gfec_t3, Level() > 10);
 #line 71 "expressions.c"
     }
     /* entry Run */
-    if (!before[Expressions_Run] && m->av[Expressions_Run]) {
+    if ((before[Expressions_Run] == 0u) && (m->av[Expressions_Run] != 0u)) {
         int gfec_t4, gfec_t5; /* temporaries: the chart calls left to right */
         m->timer_Run = 0;
 #line 32 "expressions.sfc"
@@ -80,35 +80,35 @@ void Expressions_run(Expressions *m)
 
 #ifdef Expressions_HOOKS
     /* Observation hooks: places that lost, then gained activation; transitions open from now on */
-    for (int p = 0; p < Expressions_PLACE_COUNT; ++p) {
-        if (before[p] && !m->av[p]) { Expressions_activated(m, p, false); }
+    for (int p = 0; p < (int)Expressions_PLACE_COUNT; ++p) {
+        if ((before[p] != 0u) && (m->av[p] == 0u)) { Expressions_activated(m, (Expressions_place)p, false); }
     }
-    for (int p = 0; p < Expressions_PLACE_COUNT; ++p) {
-        if (!before[p] && m->av[p]) { Expressions_activated(m, p, true); }
+    for (int p = 0; p < (int)Expressions_PLACE_COUNT; ++p) {
+        if ((before[p] == 0u) && (m->av[p] != 0u)) { Expressions_activated(m, (Expressions_place)p, true); }
     }
-    if (!before[Expressions_Idle] && m->av[Expressions_Idle]) { Expressions_enabled(m, Expressions_Start); }
-    if (!before[Expressions_Run] && m->av[Expressions_Run]) { Expressions_enabled(m, Expressions_Stop); }
+    if ((before[Expressions_Idle] == 0u) && (m->av[Expressions_Idle] != 0u)) { Expressions_enabled(m, Expressions_Start); }
+    if ((before[Expressions_Run] == 0u) && (m->av[Expressions_Run] != 0u)) { Expressions_enabled(m, Expressions_Stop); }
 #endif
 
     /* Perform place actions */
-    if (m->av[Expressions_Idle]) {
+    if (m->av[Expressions_Idle] != 0u) {
 #line 27 "expressions.sfc"
         Scale((int)Ratio());
         m->n = (int)(m->n + m->level);
 #line 99 "expressions.c"
     }
-    if (m->av[Expressions_Watch]) {
+    if (m->av[Expressions_Watch] != 0u) {
         int gfec_t6; /* temporaries: the chart calls left to right */
 #line 30 "expressions.sfc"
         gfec_t6 = Count(); Mix(gfec_t6, 7, Level() * 0.1f /* GAIN */);
 #line 105 "expressions.c"
     }
-    if (m->av[Expressions_Run]) {
+    if (m->av[Expressions_Run] != 0u) {
         int gfec_t7, gfec_t8, gfec_t10; /* temporaries: the chart calls left to right */
         bool gfec_t9; /* temporaries: the chart calls left to right */
 #line 33 "expressions.sfc"
         gfec_t7 = Count(); gfec_t8 = gfec_t7 - Level(); Show(gfec_t8, Ready() || (gfec_t9 = Busy(), gfec_t9 == Ready()));
-        gfec_t10 = Count(); m->n = (int)(gfec_t10 + Level() * 0.5);
+        gfec_t10 = Count(); m->n = (int)(gfec_t10 + (Level() * 0.5));
         m->half = (int)0.5;
 #line 114 "expressions.c"
     }
@@ -116,5 +116,5 @@ void Expressions_run(Expressions *m)
 
 unsigned Expressions_activation(const Expressions *m, int place)
 {
-    return place >= 0 && place < Expressions_PLACE_COUNT ? m->av[place] : 0u;
+    return ((place >= 0) && (place < (int)Expressions_PLACE_COUNT)) ? m->av[place] : 0u;
 }

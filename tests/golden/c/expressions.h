@@ -10,19 +10,19 @@ extern "C" {
 #endif
 
 /* The places of sfc Expressions, in declaration order. */
-enum {
+typedef enum {
     Expressions_Idle,
     Expressions_Watch,
     Expressions_Run,
     Expressions_PLACE_COUNT
-};
+} Expressions_place;
 
 /* Its transitions, in declaration order: the numbers the observation hooks pass. */
-enum {
+typedef enum {
     Expressions_Start, /* Idle -> Run */
     Expressions_Stop,  /* Run -> Idle */
     Expressions_TRANSITION_COUNT
-};
+} Expressions_transition;
 
 /* The state of one engine. The type is complete so that the caller can allocate it (several
    engines may run side by side); only the functions below use its fields. */
@@ -47,9 +47,10 @@ unsigned Expressions_activation(const Expressions *m, int place);
 /* Observation hooks (GFE_Activated, GFE_Enabled): an engine built with -DExpressions_HOOKS calls them and
    the encapsulating code defines them. At the end of each tick's update, in declaration order:
    every place that lost (active false), then gained (active true) its activation; then every
-   transition whose inputs are all active now but were not at the start of the tick. */
-void Expressions_activated(Expressions *m, int place, bool active);
-void Expressions_enabled(Expressions *m, int transition);
+   transition whose inputs are all active now but were not at the start of the tick.
+   The engine is read only (const): a hook observes, it does not steer. */
+void Expressions_activated(const Expressions *m, Expressions_place place, bool active);
+void Expressions_enabled(const Expressions *m, Expressions_transition transition);
 #endif
 
 /* Functions of interface Probe that the chart calls: the robot library defines them. */

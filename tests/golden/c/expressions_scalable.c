@@ -11,81 +11,95 @@ static const uint32_t Expressions_ACTIVE_LEVELS[3] = {0u, 1u, 2u};
 static uint32_t Expressions_lowest(uint32_t word)
 {
 #if defined(__GNUC__) || defined(__clang__)
-    return (uint32_t)__builtin_ctz(word);
+    uint32_t n = (uint32_t)__builtin_ctz(word);
 #else
-    uint32_t n = 0;
-    while ((word & 1u) == 0u) {
-        word >>= 1;
+    uint32_t rest = word;
+    uint32_t n = 0u;
+    while ((rest & 1u) == 0u) {
+        rest >>= 1;
         ++n;
     }
-    return n;
 #endif
+    return n;
 }
 
-/* The first member >= i of a set of `count` levels, looking from level `low` (0: members;
+/* The first member >= from of a set of `count` levels, looking from level `low` (0: members;
    1: words of level 0 that have members), or UINT32_MAX when there is none. */
-static uint32_t Expressions_next(const uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t low, uint32_t i)
+static uint32_t Expressions_next(const uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t low, uint32_t from)
 {
-    uint32_t level = low, word;
-    for (;;) {
-        if ((i >> 5) >= levels[level + 1] - levels[level]) {
-            return UINT32_MAX;
+    uint32_t level = low;
+    uint32_t i = from;
+    uint32_t word = 0u;
+    bool searching = true;
+    bool found = false;
+    while (searching) {
+        if ((i >> 5) >= (levels[level + 1u] - levels[level])) {
+            searching = false; /* past the last word of this level */
+        } else {
+            word = set[levels[level] + (i >> 5)] & (0xFFFFFFFFu << (i & 31u));
+            if (word != 0u) {
+                found = true;
+                searching = false;
+            } else if ((level + 1u) == count) {
+                searching = false; /* the top level has nothing further */
+            } else {
+                i = (i >> 5) + 1u; /* the next word of this level: its bit one level up */
+                ++level;
+            }
         }
-        word = set[levels[level] + (i >> 5)] & (0xFFFFFFFFu << (i & 31u));
-        if (word != 0u) {
-            break;
-        }
-        if (level + 1u == count) {
-            return UINT32_MAX;
-        }
-        i = (i >> 5) + 1u; /* the next word of this level: its bit one level up */
-        ++level;
     }
-    i = (i & ~31u) | Expressions_lowest(word);
-    while (level > low) {
-        --level;
-        i = (i << 5) | Expressions_lowest(set[levels[level] + i]);
+    if (found) {
+        i = (i & ~31u) | Expressions_lowest(word);
+        while (level > low) {
+            --level;
+            i = (i << 5) | Expressions_lowest(set[levels[level] + i]);
+        }
+    } else {
+        i = UINT32_MAX;
     }
     return i;
 }
 
-/* Adds member i, telling the levels above when its word stops being empty. */
-static void Expressions_insert(uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t i)
+/* Adds a member, telling the levels above when its word stops being empty. */
+static void Expressions_insert(uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t member)
 {
-    uint32_t level;
-    for (level = 0; level < count; ++level) {
+    uint32_t i = member;
+    uint32_t level = 0u;
+    bool rising = true;
+    while (rising && (level < count)) {
         uint32_t *word = &set[levels[level] + (i >> 5)];
         uint32_t was = *word;
         *word = was | (1u << (i & 31u));
-        if (was != 0u) {
-            return;
-        }
+        rising = (was == 0u); /* the word was empty: the level above learns of it */
         i >>= 5;
+        ++level;
     }
 }
 
-/* Removes member i of level `low` (1: a word of level 0 that became empty), telling the levels
+/* Removes a member of level `low` (1: a word of level 0 that became empty), telling the levels
    above when a word becomes empty. */
-static void Expressions_erase(uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t low, uint32_t i)
+static void Expressions_erase(uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t low, uint32_t member)
 {
-    uint32_t level;
-    for (level = low; level < count; ++level) {
+    uint32_t i = member;
+    uint32_t level = low;
+    bool emptied = true;
+    while (emptied && (level < count)) {
         uint32_t *word = &set[levels[level] + (i >> 5)];
         *word &= ~(1u << (i & 31u));
-        if (*word != 0u) {
-            return;
-        }
+        emptied = (*word == 0u); /* the word became empty: the level above learns of it */
         i >>= 5;
+        ++level;
     }
 }
 
 /* Sorts a short list of place numbers (the places that lost or gained activation in a tick). */
 static void Expressions_sort(uint8_t *list, uint32_t n)
 {
-    uint32_t i, j;
+    uint32_t i;
+    uint32_t j;
     for (i = 1; i < n; ++i) {
         uint8_t key = list[i];
-        for (j = i; j > 0u && list[j - 1u] > key; --j) {
+        for (j = i; (j > 0u) && (list[j - 1u] > key); --j) {
             list[j] = list[j - 1u];
         }
         list[j] = key;
@@ -95,20 +109,24 @@ static void Expressions_sort(uint8_t *list, uint32_t n)
 /* Whether a place runs exit or entry code, or resets its timer, when its activation changes. */
 static bool Expressions_watched(uint32_t place)
 {
+    bool watched;
     switch (place) {
     case Expressions_Idle:
     case Expressions_Run:
-        return true;
+        watched = true;
+        break;
     default:
-        return false;
+        watched = false;
+        break;
     }
+    return watched;
 }
 
 /* Initial marking: Idle and Watch are active. Calls no code of the chart. */
 void Expressions_init(Expressions *m)
 {
     uint32_t p;
-    for (p = 0; p < Expressions_PLACE_COUNT; ++p) {
+    for (p = 0; p < (uint32_t)Expressions_PLACE_COUNT; ++p) {
         m->av[p] = 0;
     }
     for (p = 0; p < 2u; ++p) {
@@ -134,8 +152,10 @@ void Expressions_run(Expressions *m)
     uint32_t lost_n = 0;
     uint8_t gained[2]; /* watched places whose activation rose from 0 */
     uint32_t gained_n = 0;
-    uint32_t w, bits; /* a word of a set, its bits */
-    uint32_t p, i;
+    uint32_t w; /* a word of a set */
+    uint32_t bits; /* its bits */
+    uint32_t p;
+    uint32_t i;
 #ifdef Expressions_HOOKS
     uint32_t before[1]; /* the active places at the start of the tick */
     for (i = 0; i < 1u; ++i) {
@@ -150,11 +170,11 @@ void Expressions_run(Expressions *m)
         /* entry Idle */
 #line 23 "expressions_scalable.sfc"
         gfec_t0 = Count(); Show(gfec_t0, Level() > 10);
-#line 154 "expressions_scalable.c"
+#line 174 "expressions_scalable.c"
     }
 
     /* Count the ticks of the active places that have a timer */
-    if (m->av[Expressions_Run] && m->timer_Run < UINT32_MAX) { m->timer_Run++; }
+    if ((m->av[Expressions_Run] != 0u) && (m->timer_Run < UINT32_MAX)) { m->timer_Run++; }
 
     /* Perform state update: the active places in declaration order, at each the transitions it
        owns; owners follow the transitions' declaration order, so the transitions are tried in it.
@@ -166,10 +186,11 @@ void Expressions_run(Expressions *m)
                 int gfec_t1; /* temporaries: the chart calls left to right */
                 /* Start: Idle -> Run */
 #line 36 "expressions_scalable.sfc"
-                if (m->av[Expressions_Idle] && (gfec_t1 = Count(), gfec_t1 + Level() > m->n && Ready())) {
-#line 171 "expressions_scalable.c"
-                    if (--m->av[Expressions_Idle] == 0u) { Expressions_erase(m->active, Expressions_ACTIVE_LEVELS, 2u, 0u, Expressions_Idle); lost[lost_n++] = Expressions_Idle; }
-                    add[add_n++] = Expressions_Run;
+                if ((m->av[Expressions_Idle] != 0u) && (gfec_t1 = Count(), ((gfec_t1 + Level()) > m->n) && Ready())) {
+#line 191 "expressions_scalable.c"
+                    m->av[Expressions_Idle]--;
+                    if (m->av[Expressions_Idle] == 0u) { Expressions_erase(m->active, Expressions_ACTIVE_LEVELS, 2u, 0u, Expressions_Idle); lost[lost_n] = Expressions_Idle; lost_n++; }
+                    add[add_n] = Expressions_Run; add_n++;
                 }
                 break;
             }
@@ -177,10 +198,11 @@ void Expressions_run(Expressions *m)
                 int gfec_t2; /* temporaries: the chart calls left to right */
                 /* Stop: Run -> Idle */
 #line 37 "expressions_scalable.sfc"
-                if (m->av[Expressions_Run] && (m->timer_Run >= 5u /* 50ms */ || (gfec_t2 = Level(), gfec_t2 < Count()))) {
-#line 182 "expressions_scalable.c"
-                    if (--m->av[Expressions_Run] == 0u) { Expressions_erase(m->active, Expressions_ACTIVE_LEVELS, 2u, 0u, Expressions_Run); lost[lost_n++] = Expressions_Run; }
-                    add[add_n++] = Expressions_Idle;
+                if ((m->av[Expressions_Run] != 0u) && ((m->timer_Run >= 5u /* 50ms */) || (gfec_t2 = Level(), gfec_t2 < Count()))) {
+#line 203 "expressions_scalable.c"
+                    m->av[Expressions_Run]--;
+                    if (m->av[Expressions_Run] == 0u) { Expressions_erase(m->active, Expressions_ACTIVE_LEVELS, 2u, 0u, Expressions_Run); lost[lost_n] = Expressions_Run; lost_n++; }
+                    add[add_n] = Expressions_Idle; add_n++;
                 }
                 break;
             }
@@ -193,9 +215,10 @@ void Expressions_run(Expressions *m)
     /* Commit the activation produced in this tick */
     for (i = 0; i < add_n; ++i) {
         p = add[i];
-        if (m->av[p]++ == 0u) {
+        m->av[p]++;
+        if (m->av[p] == 1u) {
             Expressions_insert(m->active, Expressions_ACTIVE_LEVELS, 2u, p);
-            if (Expressions_watched(p)) { gained[gained_n++] = (uint8_t)p; }
+            if (Expressions_watched(p)) { gained[gained_n] = (uint8_t)p; gained_n++; }
         }
     }
 
@@ -208,21 +231,22 @@ void Expressions_run(Expressions *m)
         case Expressions_Idle:
 #line 24 "expressions_scalable.sfc"
             m->n = (int)(m->n - Ratio());
-#line 212 "expressions_scalable.c"
+#line 235 "expressions_scalable.c"
             break;
         default:
             break;
         }
     }
-    for (i = 0, w = 0; i < gained_n; ++i) {
-        while (w < lost_n && lost[w] < gained[i]) { ++w; }
-        if (w < lost_n && lost[w] == gained[i]) { continue; } /* lost and regained: no entry, the timer goes on */
+    w = 0;
+    for (i = 0; i < gained_n; ++i) {
+        while ((w < lost_n) && (lost[w] < gained[i])) { ++w; }
+        if ((w < lost_n) && (lost[w] == gained[i])) { continue; } /* lost and regained: no entry, the timer goes on */
         switch (gained[i]) {
         case Expressions_Idle: {
             int gfec_t3; /* temporaries: the chart calls left to right */
 #line 23 "expressions_scalable.sfc"
             gfec_t3 = Count(); Show(gfec_t3, Level() > 10);
-#line 226 "expressions_scalable.c"
+#line 250 "expressions_scalable.c"
             break;
         }
         case Expressions_Run: {
@@ -230,7 +254,7 @@ void Expressions_run(Expressions *m)
             m->timer_Run = 0;
 #line 30 "expressions_scalable.sfc"
             gfec_t4 = Level(); gfec_t5 = Count(); Mix(gfec_t4, gfec_t5, -Ratio());
-#line 234 "expressions_scalable.c"
+#line 258 "expressions_scalable.c"
             break;
         }
         default:
@@ -240,14 +264,14 @@ void Expressions_run(Expressions *m)
 
 #ifdef Expressions_HOOKS
     /* Observation hooks: places that lost, then gained activation; transitions open from now on */
-    for (p = 0; p < Expressions_PLACE_COUNT; ++p) {
-        if (((before[p >> 5] >> (p & 31u)) & 1u) != 0u && m->av[p] == 0u) { Expressions_activated(m, (int)p, false); }
+    for (p = 0; p < (uint32_t)Expressions_PLACE_COUNT; ++p) {
+        if ((((before[p >> 5] >> (p & 31u)) & 1u) != 0u) && (m->av[p] == 0u)) { Expressions_activated(m, (Expressions_place)p, false); }
     }
-    for (p = 0; p < Expressions_PLACE_COUNT; ++p) {
-        if (((before[p >> 5] >> (p & 31u)) & 1u) == 0u && m->av[p] != 0u) { Expressions_activated(m, (int)p, true); }
+    for (p = 0; p < (uint32_t)Expressions_PLACE_COUNT; ++p) {
+        if ((((before[p >> 5] >> (p & 31u)) & 1u) == 0u) && (m->av[p] != 0u)) { Expressions_activated(m, (Expressions_place)p, true); }
     }
-    if (!(((before[Expressions_Idle >> 5] >> (Expressions_Idle & 31u)) & 1u)) && m->av[Expressions_Idle]) { Expressions_enabled(m, Expressions_Start); }
-    if (!(((before[Expressions_Run >> 5] >> (Expressions_Run & 31u)) & 1u)) && m->av[Expressions_Run]) { Expressions_enabled(m, Expressions_Stop); }
+    if (!((((before[(uint32_t)Expressions_Idle >> 5] >> ((uint32_t)Expressions_Idle & 31u)) & 1u) != 0u)) && (m->av[Expressions_Idle] != 0u)) { Expressions_enabled(m, Expressions_Start); }
+    if (!((((before[(uint32_t)Expressions_Run >> 5] >> ((uint32_t)Expressions_Run & 31u)) & 1u) != 0u)) && (m->av[Expressions_Run] != 0u)) { Expressions_enabled(m, Expressions_Stop); }
 #endif
 
     /* Perform place actions: the active places in declaration order */
@@ -258,13 +282,13 @@ void Expressions_run(Expressions *m)
 #line 25 "expressions_scalable.sfc"
                 Scale((int)Ratio());
                 m->n = (int)(m->n + m->level);
-#line 262 "expressions_scalable.c"
+#line 286 "expressions_scalable.c"
                 break;
             case Expressions_Watch: {
                 int gfec_t6; /* temporaries: the chart calls left to right */
 #line 28 "expressions_scalable.sfc"
                 gfec_t6 = Count(); Mix(gfec_t6, 7, Level() * 0.1f /* GAIN */);
-#line 268 "expressions_scalable.c"
+#line 292 "expressions_scalable.c"
                 break;
             }
             case Expressions_Run: {
@@ -272,9 +296,9 @@ void Expressions_run(Expressions *m)
                 bool gfec_t9; /* temporaries: the chart calls left to right */
 #line 31 "expressions_scalable.sfc"
                 gfec_t7 = Count(); gfec_t8 = gfec_t7 - Level(); Show(gfec_t8, Ready() || (gfec_t9 = Busy(), gfec_t9 == Ready()));
-                gfec_t10 = Count(); m->n = (int)(gfec_t10 + Level() * 0.5);
+                gfec_t10 = Count(); m->n = (int)(gfec_t10 + (Level() * 0.5));
                 m->half = (int)0.5;
-#line 278 "expressions_scalable.c"
+#line 302 "expressions_scalable.c"
                 break;
             }
             default:
@@ -286,5 +310,5 @@ void Expressions_run(Expressions *m)
 
 unsigned Expressions_activation(const Expressions *m, int place)
 {
-    return place >= 0 && place < Expressions_PLACE_COUNT ? m->av[place] : 0u;
+    return ((place >= 0) && (place < (int)Expressions_PLACE_COUNT)) ? m->av[place] : 0u;
 }

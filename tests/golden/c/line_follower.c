@@ -15,35 +15,35 @@ void LineFollower_run(LineFollower *m)
     uint8_t add[LineFollower_PLACE_COUNT] = {0}; /* activation produced in this tick */
 #ifdef LineFollower_HOOKS
     uint8_t before[LineFollower_PLACE_COUNT]; /* the activation at the start of the tick */
-    for (int p = 0; p < LineFollower_PLACE_COUNT; ++p) { before[p] = m->av[p]; }
+    for (int p = 0; p < (int)LineFollower_PLACE_COUNT; ++p) { before[p] = m->av[p]; }
 #endif
 
     /* Perform state update: transitions in declaration order; the activation they produce
        waits in add[] and cannot be consumed before the next tick */
     /* T0: LeftFw -> LeftStop */
 #line 14 "line_follower.sfc"
-    if (m->av[LineFollower_LeftFw] && (Left_IR_Black())) {
+    if ((m->av[LineFollower_LeftFw] != 0u) && (Left_IR_Black())) {
 #line 27 "line_follower.c"
         m->av[LineFollower_LeftFw]--;
         add[LineFollower_LeftStop]++;
     }
     /* T1: LeftStop -> LeftFw */
 #line 15 "line_follower.sfc"
-    if (m->av[LineFollower_LeftStop] && (Left_IR_White())) {
+    if ((m->av[LineFollower_LeftStop] != 0u) && (Left_IR_White())) {
 #line 34 "line_follower.c"
         m->av[LineFollower_LeftStop]--;
         add[LineFollower_LeftFw]++;
     }
     /* T2: RightFw -> RightStop */
 #line 16 "line_follower.sfc"
-    if (m->av[LineFollower_RightFw] && (Right_IR_Black())) {
+    if ((m->av[LineFollower_RightFw] != 0u) && (Right_IR_Black())) {
 #line 41 "line_follower.c"
         m->av[LineFollower_RightFw]--;
         add[LineFollower_RightStop]++;
     }
     /* T3: RightStop -> RightFw */
 #line 17 "line_follower.sfc"
-    if (m->av[LineFollower_RightStop] && (Right_IR_White())) {
+    if ((m->av[LineFollower_RightStop] != 0u) && (Right_IR_White())) {
 #line 48 "line_follower.c"
         m->av[LineFollower_RightStop]--;
         add[LineFollower_RightFw]++;
@@ -57,35 +57,35 @@ void LineFollower_run(LineFollower *m)
 
 #ifdef LineFollower_HOOKS
     /* Observation hooks: places that lost, then gained activation; transitions open from now on */
-    for (int p = 0; p < LineFollower_PLACE_COUNT; ++p) {
-        if (before[p] && !m->av[p]) { LineFollower_activated(m, p, false); }
+    for (int p = 0; p < (int)LineFollower_PLACE_COUNT; ++p) {
+        if ((before[p] != 0u) && (m->av[p] == 0u)) { LineFollower_activated(m, (LineFollower_place)p, false); }
     }
-    for (int p = 0; p < LineFollower_PLACE_COUNT; ++p) {
-        if (!before[p] && m->av[p]) { LineFollower_activated(m, p, true); }
+    for (int p = 0; p < (int)LineFollower_PLACE_COUNT; ++p) {
+        if ((before[p] == 0u) && (m->av[p] != 0u)) { LineFollower_activated(m, (LineFollower_place)p, true); }
     }
-    if (!before[LineFollower_LeftFw] && m->av[LineFollower_LeftFw]) { LineFollower_enabled(m, LineFollower_T0); }
-    if (!before[LineFollower_LeftStop] && m->av[LineFollower_LeftStop]) { LineFollower_enabled(m, LineFollower_T1); }
-    if (!before[LineFollower_RightFw] && m->av[LineFollower_RightFw]) { LineFollower_enabled(m, LineFollower_T2); }
-    if (!before[LineFollower_RightStop] && m->av[LineFollower_RightStop]) { LineFollower_enabled(m, LineFollower_T3); }
+    if ((before[LineFollower_LeftFw] == 0u) && (m->av[LineFollower_LeftFw] != 0u)) { LineFollower_enabled(m, LineFollower_T0); }
+    if ((before[LineFollower_LeftStop] == 0u) && (m->av[LineFollower_LeftStop] != 0u)) { LineFollower_enabled(m, LineFollower_T1); }
+    if ((before[LineFollower_RightFw] == 0u) && (m->av[LineFollower_RightFw] != 0u)) { LineFollower_enabled(m, LineFollower_T2); }
+    if ((before[LineFollower_RightStop] == 0u) && (m->av[LineFollower_RightStop] != 0u)) { LineFollower_enabled(m, LineFollower_T3); }
 #endif
 
     /* Perform place actions */
-    if (m->av[LineFollower_LeftFw]) {
+    if (m->av[LineFollower_LeftFw] != 0u) {
 #line 9 "line_follower.sfc"
         Left_FW();
 #line 77 "line_follower.c"
     }
-    if (m->av[LineFollower_LeftStop]) {
+    if (m->av[LineFollower_LeftStop] != 0u) {
 #line 10 "line_follower.sfc"
         Left_Stop();
 #line 82 "line_follower.c"
     }
-    if (m->av[LineFollower_RightFw]) {
+    if (m->av[LineFollower_RightFw] != 0u) {
 #line 11 "line_follower.sfc"
         Right_FW();
 #line 87 "line_follower.c"
     }
-    if (m->av[LineFollower_RightStop]) {
+    if (m->av[LineFollower_RightStop] != 0u) {
 #line 12 "line_follower.sfc"
         Right_Stop();
 #line 92 "line_follower.c"
@@ -94,5 +94,5 @@ void LineFollower_run(LineFollower *m)
 
 unsigned LineFollower_activation(const LineFollower *m, int place)
 {
-    return place >= 0 && place < LineFollower_PLACE_COUNT ? m->av[place] : 0u;
+    return ((place >= 0) && (place < (int)LineFollower_PLACE_COUNT)) ? m->av[place] : 0u;
 }

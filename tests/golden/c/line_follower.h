@@ -10,22 +10,22 @@ extern "C" {
 #endif
 
 /* The places of sfc LineFollower, in declaration order. */
-enum {
+typedef enum {
     LineFollower_LeftFw,
     LineFollower_LeftStop,
     LineFollower_RightFw,
     LineFollower_RightStop,
     LineFollower_PLACE_COUNT
-};
+} LineFollower_place;
 
 /* Its transitions, in declaration order: the numbers the observation hooks pass. */
-enum {
+typedef enum {
     LineFollower_T0, /* LeftFw -> LeftStop */
     LineFollower_T1, /* LeftStop -> LeftFw */
     LineFollower_T2, /* RightFw -> RightStop */
     LineFollower_T3, /* RightStop -> RightFw */
     LineFollower_TRANSITION_COUNT
-};
+} LineFollower_transition;
 
 /* The state of one engine. The type is complete so that the caller can allocate it (several
    engines may run side by side); only the functions below use its fields. */
@@ -45,9 +45,10 @@ unsigned LineFollower_activation(const LineFollower *m, int place);
 /* Observation hooks (GFE_Activated, GFE_Enabled): an engine built with -DLineFollower_HOOKS calls them and
    the encapsulating code defines them. At the end of each tick's update, in declaration order:
    every place that lost (active false), then gained (active true) its activation; then every
-   transition whose inputs are all active now but were not at the start of the tick. */
-void LineFollower_activated(LineFollower *m, int place, bool active);
-void LineFollower_enabled(LineFollower *m, int transition);
+   transition whose inputs are all active now but were not at the start of the tick.
+   The engine is read only (const): a hook observes, it does not steer. */
+void LineFollower_activated(const LineFollower *m, LineFollower_place place, bool active);
+void LineFollower_enabled(const LineFollower *m, LineFollower_transition transition);
 #endif
 
 /* Functions of interface LineBot that the chart calls: the robot library defines them. */

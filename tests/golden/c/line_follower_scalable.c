@@ -11,71 +11,84 @@ static const uint32_t LineFollower_ACTIVE_LEVELS[3] = {0u, 1u, 2u};
 static uint32_t LineFollower_lowest(uint32_t word)
 {
 #if defined(__GNUC__) || defined(__clang__)
-    return (uint32_t)__builtin_ctz(word);
+    uint32_t n = (uint32_t)__builtin_ctz(word);
 #else
-    uint32_t n = 0;
-    while ((word & 1u) == 0u) {
-        word >>= 1;
+    uint32_t rest = word;
+    uint32_t n = 0u;
+    while ((rest & 1u) == 0u) {
+        rest >>= 1;
         ++n;
     }
-    return n;
 #endif
+    return n;
 }
 
-/* The first member >= i of a set of `count` levels, looking from level `low` (0: members;
+/* The first member >= from of a set of `count` levels, looking from level `low` (0: members;
    1: words of level 0 that have members), or UINT32_MAX when there is none. */
-static uint32_t LineFollower_next(const uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t low, uint32_t i)
+static uint32_t LineFollower_next(const uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t low, uint32_t from)
 {
-    uint32_t level = low, word;
-    for (;;) {
-        if ((i >> 5) >= levels[level + 1] - levels[level]) {
-            return UINT32_MAX;
+    uint32_t level = low;
+    uint32_t i = from;
+    uint32_t word = 0u;
+    bool searching = true;
+    bool found = false;
+    while (searching) {
+        if ((i >> 5) >= (levels[level + 1u] - levels[level])) {
+            searching = false; /* past the last word of this level */
+        } else {
+            word = set[levels[level] + (i >> 5)] & (0xFFFFFFFFu << (i & 31u));
+            if (word != 0u) {
+                found = true;
+                searching = false;
+            } else if ((level + 1u) == count) {
+                searching = false; /* the top level has nothing further */
+            } else {
+                i = (i >> 5) + 1u; /* the next word of this level: its bit one level up */
+                ++level;
+            }
         }
-        word = set[levels[level] + (i >> 5)] & (0xFFFFFFFFu << (i & 31u));
-        if (word != 0u) {
-            break;
-        }
-        if (level + 1u == count) {
-            return UINT32_MAX;
-        }
-        i = (i >> 5) + 1u; /* the next word of this level: its bit one level up */
-        ++level;
     }
-    i = (i & ~31u) | LineFollower_lowest(word);
-    while (level > low) {
-        --level;
-        i = (i << 5) | LineFollower_lowest(set[levels[level] + i]);
+    if (found) {
+        i = (i & ~31u) | LineFollower_lowest(word);
+        while (level > low) {
+            --level;
+            i = (i << 5) | LineFollower_lowest(set[levels[level] + i]);
+        }
+    } else {
+        i = UINT32_MAX;
     }
     return i;
 }
 
-/* Adds member i, telling the levels above when its word stops being empty. */
-static void LineFollower_insert(uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t i)
+/* Adds a member, telling the levels above when its word stops being empty. */
+static void LineFollower_insert(uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t member)
 {
-    uint32_t level;
-    for (level = 0; level < count; ++level) {
+    uint32_t i = member;
+    uint32_t level = 0u;
+    bool rising = true;
+    while (rising && (level < count)) {
         uint32_t *word = &set[levels[level] + (i >> 5)];
         uint32_t was = *word;
         *word = was | (1u << (i & 31u));
-        if (was != 0u) {
-            return;
-        }
+        rising = (was == 0u); /* the word was empty: the level above learns of it */
         i >>= 5;
+        ++level;
     }
 }
 
-/* Removes member i of level `low` (1: a word of level 0 that became empty), telling the levels
+/* Removes a member of level `low` (1: a word of level 0 that became empty), telling the levels
    above when a word becomes empty. */
-static void LineFollower_erase(uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t low, uint32_t i)
+static void LineFollower_erase(uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t low, uint32_t member)
 {
-    uint32_t level;
-    for (level = low; level < count; ++level) {
+    uint32_t i = member;
+    uint32_t level = low;
+    bool emptied = true;
+    while (emptied && (level < count)) {
         uint32_t *word = &set[levels[level] + (i >> 5)];
         *word &= ~(1u << (i & 31u));
-        if (*word != 0u) {
-            return;
-        }
+        emptied = (*word == 0u); /* the word became empty: the level above learns of it */
         i >>= 5;
+        ++level;
     }
 }
 
@@ -83,7 +96,7 @@ static void LineFollower_erase(uint32_t *set, const uint32_t *levels, uint32_t c
 void LineFollower_init(LineFollower *m)
 {
     uint32_t p;
-    for (p = 0; p < LineFollower_PLACE_COUNT; ++p) {
+    for (p = 0; p < (uint32_t)LineFollower_PLACE_COUNT; ++p) {
         m->av[p] = 0;
     }
     for (p = 0; p < 2u; ++p) {
@@ -100,8 +113,10 @@ void LineFollower_run(LineFollower *m)
     uint8_t add[2]; /* the places that activation produced in this tick goes to */
     uint32_t add_n = 0;
     add[0] = 0; /* only the entries written are read (this says so to code analysers) */
-    uint32_t w, bits; /* a word of a set, its bits */
-    uint32_t p, i;
+    uint32_t w; /* a word of a set */
+    uint32_t bits; /* its bits */
+    uint32_t p;
+    uint32_t i;
 #ifdef LineFollower_HOOKS
     uint32_t before[1]; /* the active places at the start of the tick */
     for (i = 0; i < 1u; ++i) {
@@ -118,37 +133,41 @@ void LineFollower_run(LineFollower *m)
             case LineFollower_LeftFw:
                 /* T0: LeftFw -> LeftStop */
 #line 13 "line_follower_scalable.sfc"
-                if (m->av[LineFollower_LeftFw] && (Left_IR_Black())) {
-#line 123 "line_follower_scalable.c"
-                    if (--m->av[LineFollower_LeftFw] == 0u) { LineFollower_erase(m->active, LineFollower_ACTIVE_LEVELS, 2u, 0u, LineFollower_LeftFw); }
-                    add[add_n++] = LineFollower_LeftStop;
+                if ((m->av[LineFollower_LeftFw] != 0u) && (Left_IR_Black())) {
+#line 138 "line_follower_scalable.c"
+                    m->av[LineFollower_LeftFw]--;
+                    if (m->av[LineFollower_LeftFw] == 0u) { LineFollower_erase(m->active, LineFollower_ACTIVE_LEVELS, 2u, 0u, LineFollower_LeftFw); }
+                    add[add_n] = LineFollower_LeftStop; add_n++;
                 }
                 break;
             case LineFollower_LeftStop:
                 /* T1: LeftStop -> LeftFw */
 #line 14 "line_follower_scalable.sfc"
-                if (m->av[LineFollower_LeftStop] && (Left_IR_White())) {
-#line 132 "line_follower_scalable.c"
-                    if (--m->av[LineFollower_LeftStop] == 0u) { LineFollower_erase(m->active, LineFollower_ACTIVE_LEVELS, 2u, 0u, LineFollower_LeftStop); }
-                    add[add_n++] = LineFollower_LeftFw;
+                if ((m->av[LineFollower_LeftStop] != 0u) && (Left_IR_White())) {
+#line 148 "line_follower_scalable.c"
+                    m->av[LineFollower_LeftStop]--;
+                    if (m->av[LineFollower_LeftStop] == 0u) { LineFollower_erase(m->active, LineFollower_ACTIVE_LEVELS, 2u, 0u, LineFollower_LeftStop); }
+                    add[add_n] = LineFollower_LeftFw; add_n++;
                 }
                 break;
             case LineFollower_RightFw:
                 /* T2: RightFw -> RightStop */
 #line 15 "line_follower_scalable.sfc"
-                if (m->av[LineFollower_RightFw] && (Right_IR_Black())) {
-#line 141 "line_follower_scalable.c"
-                    if (--m->av[LineFollower_RightFw] == 0u) { LineFollower_erase(m->active, LineFollower_ACTIVE_LEVELS, 2u, 0u, LineFollower_RightFw); }
-                    add[add_n++] = LineFollower_RightStop;
+                if ((m->av[LineFollower_RightFw] != 0u) && (Right_IR_Black())) {
+#line 158 "line_follower_scalable.c"
+                    m->av[LineFollower_RightFw]--;
+                    if (m->av[LineFollower_RightFw] == 0u) { LineFollower_erase(m->active, LineFollower_ACTIVE_LEVELS, 2u, 0u, LineFollower_RightFw); }
+                    add[add_n] = LineFollower_RightStop; add_n++;
                 }
                 break;
             case LineFollower_RightStop:
                 /* T3: RightStop -> RightFw */
 #line 16 "line_follower_scalable.sfc"
-                if (m->av[LineFollower_RightStop] && (Right_IR_White())) {
-#line 150 "line_follower_scalable.c"
-                    if (--m->av[LineFollower_RightStop] == 0u) { LineFollower_erase(m->active, LineFollower_ACTIVE_LEVELS, 2u, 0u, LineFollower_RightStop); }
-                    add[add_n++] = LineFollower_RightFw;
+                if ((m->av[LineFollower_RightStop] != 0u) && (Right_IR_White())) {
+#line 168 "line_follower_scalable.c"
+                    m->av[LineFollower_RightStop]--;
+                    if (m->av[LineFollower_RightStop] == 0u) { LineFollower_erase(m->active, LineFollower_ACTIVE_LEVELS, 2u, 0u, LineFollower_RightStop); }
+                    add[add_n] = LineFollower_RightFw; add_n++;
                 }
                 break;
             default:
@@ -160,23 +179,24 @@ void LineFollower_run(LineFollower *m)
     /* Commit the activation produced in this tick */
     for (i = 0; i < add_n; ++i) {
         p = add[i];
-        if (m->av[p]++ == 0u) {
+        m->av[p]++;
+        if (m->av[p] == 1u) {
             LineFollower_insert(m->active, LineFollower_ACTIVE_LEVELS, 2u, p);
         }
     }
 
 #ifdef LineFollower_HOOKS
     /* Observation hooks: places that lost, then gained activation; transitions open from now on */
-    for (p = 0; p < LineFollower_PLACE_COUNT; ++p) {
-        if (((before[p >> 5] >> (p & 31u)) & 1u) != 0u && m->av[p] == 0u) { LineFollower_activated(m, (int)p, false); }
+    for (p = 0; p < (uint32_t)LineFollower_PLACE_COUNT; ++p) {
+        if ((((before[p >> 5] >> (p & 31u)) & 1u) != 0u) && (m->av[p] == 0u)) { LineFollower_activated(m, (LineFollower_place)p, false); }
     }
-    for (p = 0; p < LineFollower_PLACE_COUNT; ++p) {
-        if (((before[p >> 5] >> (p & 31u)) & 1u) == 0u && m->av[p] != 0u) { LineFollower_activated(m, (int)p, true); }
+    for (p = 0; p < (uint32_t)LineFollower_PLACE_COUNT; ++p) {
+        if ((((before[p >> 5] >> (p & 31u)) & 1u) == 0u) && (m->av[p] != 0u)) { LineFollower_activated(m, (LineFollower_place)p, true); }
     }
-    if (!(((before[LineFollower_LeftFw >> 5] >> (LineFollower_LeftFw & 31u)) & 1u)) && m->av[LineFollower_LeftFw]) { LineFollower_enabled(m, LineFollower_T0); }
-    if (!(((before[LineFollower_LeftStop >> 5] >> (LineFollower_LeftStop & 31u)) & 1u)) && m->av[LineFollower_LeftStop]) { LineFollower_enabled(m, LineFollower_T1); }
-    if (!(((before[LineFollower_RightFw >> 5] >> (LineFollower_RightFw & 31u)) & 1u)) && m->av[LineFollower_RightFw]) { LineFollower_enabled(m, LineFollower_T2); }
-    if (!(((before[LineFollower_RightStop >> 5] >> (LineFollower_RightStop & 31u)) & 1u)) && m->av[LineFollower_RightStop]) { LineFollower_enabled(m, LineFollower_T3); }
+    if (!((((before[(uint32_t)LineFollower_LeftFw >> 5] >> ((uint32_t)LineFollower_LeftFw & 31u)) & 1u) != 0u)) && (m->av[LineFollower_LeftFw] != 0u)) { LineFollower_enabled(m, LineFollower_T0); }
+    if (!((((before[(uint32_t)LineFollower_LeftStop >> 5] >> ((uint32_t)LineFollower_LeftStop & 31u)) & 1u) != 0u)) && (m->av[LineFollower_LeftStop] != 0u)) { LineFollower_enabled(m, LineFollower_T1); }
+    if (!((((before[(uint32_t)LineFollower_RightFw >> 5] >> ((uint32_t)LineFollower_RightFw & 31u)) & 1u) != 0u)) && (m->av[LineFollower_RightFw] != 0u)) { LineFollower_enabled(m, LineFollower_T2); }
+    if (!((((before[(uint32_t)LineFollower_RightStop >> 5] >> ((uint32_t)LineFollower_RightStop & 31u)) & 1u) != 0u)) && (m->av[LineFollower_RightStop] != 0u)) { LineFollower_enabled(m, LineFollower_T3); }
 #endif
 
     /* Perform place actions: the active places in declaration order */
@@ -186,22 +206,22 @@ void LineFollower_run(LineFollower *m)
             case LineFollower_LeftFw:
 #line 8 "line_follower_scalable.sfc"
                 Left_FW();
-#line 190 "line_follower_scalable.c"
+#line 210 "line_follower_scalable.c"
                 break;
             case LineFollower_LeftStop:
 #line 9 "line_follower_scalable.sfc"
                 Left_Stop();
-#line 195 "line_follower_scalable.c"
+#line 215 "line_follower_scalable.c"
                 break;
             case LineFollower_RightFw:
 #line 10 "line_follower_scalable.sfc"
                 Right_FW();
-#line 200 "line_follower_scalable.c"
+#line 220 "line_follower_scalable.c"
                 break;
             case LineFollower_RightStop:
 #line 11 "line_follower_scalable.sfc"
                 Right_Stop();
-#line 205 "line_follower_scalable.c"
+#line 225 "line_follower_scalable.c"
                 break;
             default:
                 break;
@@ -212,5 +232,5 @@ void LineFollower_run(LineFollower *m)
 
 unsigned LineFollower_activation(const LineFollower *m, int place)
 {
-    return place >= 0 && place < LineFollower_PLACE_COUNT ? m->av[place] : 0u;
+    return ((place >= 0) && (place < (int)LineFollower_PLACE_COUNT)) ? m->av[place] : 0u;
 }

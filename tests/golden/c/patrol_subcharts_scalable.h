@@ -10,20 +10,33 @@ extern "C" {
 #endif
 
 /* The places of sfc Patrol, in declaration order. */
-enum {
+typedef enum {
     Patrol_Search,
     Patrol_Home,
     Patrol_Retry,
     Patrol_PLACE_COUNT
-};
+} Patrol_place;
 
 /* Its transitions, in declaration order: the numbers the observation hooks pass. */
-enum {
+typedef enum {
     Patrol_T0, /* Search -> Home */
     Patrol_T1, /* Search -> Retry */
     Patrol_T2, /* Retry -> Home */
     Patrol_TRANSITION_COUNT
-};
+} Patrol_transition;
+
+/* The places of sfc Claw, in declaration order: the instance run by state Grab of place Search of Patrol. */
+typedef enum {
+    Patrol_Search_Grab_Open,
+    Patrol_Search_Grab_Closed,
+    Patrol_Search_Grab_PLACE_COUNT
+} Patrol_Search_Grab_place;
+
+/* Its transitions, in declaration order. */
+typedef enum {
+    Patrol_Search_Grab_T0, /* Open -> Closed */
+    Patrol_Search_Grab_TRANSITION_COUNT
+} Patrol_Search_Grab_transition;
 
 /* The state of the instance of Claw run by state Grab of place Search of Patrol (engine.c only uses it). */
 struct Patrol_Search_Grab {
@@ -31,12 +44,42 @@ struct Patrol_Search_Grab {
     bool started;    /* the first tick has run */
 };
 
+/* The states of fsm Fetch, in declaration order: the instance run by place Search of Patrol. */
+typedef enum {
+    Patrol_Search_Go,
+    Patrol_Search_Grab,
+    Patrol_Search_Got,
+    Patrol_Search_Lost,
+    Patrol_Search_PLACE_COUNT
+} Patrol_Search_place;
+
+/* Its transitions, in declaration order. */
+typedef enum {
+    Patrol_Search_T0, /* Go -> Grab */
+    Patrol_Search_T1, /* Grab -> Got */
+    Patrol_Search_T2, /* Go -> Lost */
+    Patrol_Search_TRANSITION_COUNT
+} Patrol_Search_transition;
+
 /* The state of the instance of Fetch run by place Search of Patrol (engine.c only uses it). */
 struct Patrol_Search {
-    int state;                      /* the current state, a Patrol_Search_<state> */
+    Patrol_Search_place state;      /* the current state, a Patrol_Search_<state> */
     int status;                     /* 0 running, 1 succeeded, -1 failed */
     struct Patrol_Search_Grab Grab; /* the instance of Claw that Grab runs */
 };
+
+/* The places of sfc Claw, in declaration order: the instance run by state Grab of place Retry of Patrol. */
+typedef enum {
+    Patrol_Retry_Grab_Open,
+    Patrol_Retry_Grab_Closed,
+    Patrol_Retry_Grab_PLACE_COUNT
+} Patrol_Retry_Grab_place;
+
+/* Its transitions, in declaration order. */
+typedef enum {
+    Patrol_Retry_Grab_T0, /* Open -> Closed */
+    Patrol_Retry_Grab_TRANSITION_COUNT
+} Patrol_Retry_Grab_transition;
 
 /* The state of the instance of Claw run by state Grab of place Retry of Patrol (engine.c only uses it). */
 struct Patrol_Retry_Grab {
@@ -44,9 +87,26 @@ struct Patrol_Retry_Grab {
     bool started;    /* the first tick has run */
 };
 
+/* The states of fsm Fetch, in declaration order: the instance run by place Retry of Patrol. */
+typedef enum {
+    Patrol_Retry_Go,
+    Patrol_Retry_Grab,
+    Patrol_Retry_Got,
+    Patrol_Retry_Lost,
+    Patrol_Retry_PLACE_COUNT
+} Patrol_Retry_place;
+
+/* Its transitions, in declaration order. */
+typedef enum {
+    Patrol_Retry_T0, /* Go -> Grab */
+    Patrol_Retry_T1, /* Grab -> Got */
+    Patrol_Retry_T2, /* Go -> Lost */
+    Patrol_Retry_TRANSITION_COUNT
+} Patrol_Retry_transition;
+
 /* The state of the instance of Fetch run by place Retry of Patrol (engine.c only uses it). */
 struct Patrol_Retry {
-    int state;                     /* the current state, a Patrol_Retry_<state> */
+    Patrol_Retry_place state;      /* the current state, a Patrol_Retry_<state> */
     int status;                    /* 0 running, 1 succeeded, -1 failed */
     struct Patrol_Retry_Grab Grab; /* the instance of Claw that Grab runs */
 };
@@ -72,9 +132,10 @@ unsigned Patrol_activation(const Patrol *m, int place);
 /* Observation hooks (GFE_Activated, GFE_Enabled): an engine built with -DPatrol_HOOKS calls them and
    the encapsulating code defines them. At the end of each tick's update, in declaration order:
    every place that lost (active false), then gained (active true) its activation; then every
-   transition whose inputs are all active now but were not at the start of the tick. */
-void Patrol_activated(Patrol *m, int place, bool active);
-void Patrol_enabled(Patrol *m, int transition);
+   transition whose inputs are all active now but were not at the start of the tick.
+   The engine is read only (const): a hook observes, it does not steer. */
+void Patrol_activated(const Patrol *m, Patrol_place place, bool active);
+void Patrol_enabled(const Patrol *m, Patrol_transition transition);
 #endif
 
 /* Functions of interface Patrolling that the chart and its sub-charts calls: the robot library defines them. */

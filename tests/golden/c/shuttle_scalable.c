@@ -12,81 +12,95 @@ static const uint32_t Shuttle_CANDIDATE_LEVELS[3] = {0u, 1u, 2u};
 static uint32_t Shuttle_lowest(uint32_t word)
 {
 #if defined(__GNUC__) || defined(__clang__)
-    return (uint32_t)__builtin_ctz(word);
+    uint32_t n = (uint32_t)__builtin_ctz(word);
 #else
-    uint32_t n = 0;
-    while ((word & 1u) == 0u) {
-        word >>= 1;
+    uint32_t rest = word;
+    uint32_t n = 0u;
+    while ((rest & 1u) == 0u) {
+        rest >>= 1;
         ++n;
     }
-    return n;
 #endif
+    return n;
 }
 
-/* The first member >= i of a set of `count` levels, looking from level `low` (0: members;
+/* The first member >= from of a set of `count` levels, looking from level `low` (0: members;
    1: words of level 0 that have members), or UINT32_MAX when there is none. */
-static uint32_t Shuttle_next(const uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t low, uint32_t i)
+static uint32_t Shuttle_next(const uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t low, uint32_t from)
 {
-    uint32_t level = low, word;
-    for (;;) {
-        if ((i >> 5) >= levels[level + 1] - levels[level]) {
-            return UINT32_MAX;
+    uint32_t level = low;
+    uint32_t i = from;
+    uint32_t word = 0u;
+    bool searching = true;
+    bool found = false;
+    while (searching) {
+        if ((i >> 5) >= (levels[level + 1u] - levels[level])) {
+            searching = false; /* past the last word of this level */
+        } else {
+            word = set[levels[level] + (i >> 5)] & (0xFFFFFFFFu << (i & 31u));
+            if (word != 0u) {
+                found = true;
+                searching = false;
+            } else if ((level + 1u) == count) {
+                searching = false; /* the top level has nothing further */
+            } else {
+                i = (i >> 5) + 1u; /* the next word of this level: its bit one level up */
+                ++level;
+            }
         }
-        word = set[levels[level] + (i >> 5)] & (0xFFFFFFFFu << (i & 31u));
-        if (word != 0u) {
-            break;
-        }
-        if (level + 1u == count) {
-            return UINT32_MAX;
-        }
-        i = (i >> 5) + 1u; /* the next word of this level: its bit one level up */
-        ++level;
     }
-    i = (i & ~31u) | Shuttle_lowest(word);
-    while (level > low) {
-        --level;
-        i = (i << 5) | Shuttle_lowest(set[levels[level] + i]);
+    if (found) {
+        i = (i & ~31u) | Shuttle_lowest(word);
+        while (level > low) {
+            --level;
+            i = (i << 5) | Shuttle_lowest(set[levels[level] + i]);
+        }
+    } else {
+        i = UINT32_MAX;
     }
     return i;
 }
 
-/* Adds member i, telling the levels above when its word stops being empty. */
-static void Shuttle_insert(uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t i)
+/* Adds a member, telling the levels above when its word stops being empty. */
+static void Shuttle_insert(uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t member)
 {
-    uint32_t level;
-    for (level = 0; level < count; ++level) {
+    uint32_t i = member;
+    uint32_t level = 0u;
+    bool rising = true;
+    while (rising && (level < count)) {
         uint32_t *word = &set[levels[level] + (i >> 5)];
         uint32_t was = *word;
         *word = was | (1u << (i & 31u));
-        if (was != 0u) {
-            return;
-        }
+        rising = (was == 0u); /* the word was empty: the level above learns of it */
         i >>= 5;
+        ++level;
     }
 }
 
-/* Removes member i of level `low` (1: a word of level 0 that became empty), telling the levels
+/* Removes a member of level `low` (1: a word of level 0 that became empty), telling the levels
    above when a word becomes empty. */
-static void Shuttle_erase(uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t low, uint32_t i)
+static void Shuttle_erase(uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t low, uint32_t member)
 {
-    uint32_t level;
-    for (level = low; level < count; ++level) {
+    uint32_t i = member;
+    uint32_t level = low;
+    bool emptied = true;
+    while (emptied && (level < count)) {
         uint32_t *word = &set[levels[level] + (i >> 5)];
         *word &= ~(1u << (i & 31u));
-        if (*word != 0u) {
-            return;
-        }
+        emptied = (*word == 0u); /* the word became empty: the level above learns of it */
         i >>= 5;
+        ++level;
     }
 }
 
 /* Sorts a short list of place numbers (the places that lost or gained activation in a tick). */
 static void Shuttle_sort(uint8_t *list, uint32_t n)
 {
-    uint32_t i, j;
+    uint32_t i;
+    uint32_t j;
     for (i = 1; i < n; ++i) {
         uint8_t key = list[i];
-        for (j = i; j > 0u && list[j - 1u] > key; --j) {
+        for (j = i; (j > 0u) && (list[j - 1u] > key); --j) {
             list[j] = list[j - 1u];
         }
         list[j] = key;
@@ -96,22 +110,26 @@ static void Shuttle_sort(uint8_t *list, uint32_t n)
 /* Whether a place runs exit or entry code, or resets its timer, when its activation changes. */
 static bool Shuttle_watched(uint32_t place)
 {
+    bool watched;
     switch (place) {
     case Shuttle_Dock:
     case Shuttle_Cargo:
     case Shuttle_Moving:
     case Shuttle_Waiting:
-        return true;
+        watched = true;
+        break;
     default:
-        return false;
+        watched = false;
+        break;
     }
+    return watched;
 }
 
 /* Initial marking: Dock and Power are active. Calls no code of the chart. */
 void Shuttle_init(Shuttle *m)
 {
     uint32_t p;
-    for (p = 0; p < Shuttle_PLACE_COUNT; ++p) {
+    for (p = 0; p < (uint32_t)Shuttle_PLACE_COUNT; ++p) {
         m->av[p] = 0;
     }
     for (p = 0; p < 2u; ++p) {
@@ -141,8 +159,10 @@ void Shuttle_run(Shuttle *m)
     uint32_t lost_n = 0;
     uint8_t gained[4]; /* watched places whose activation rose from 0 */
     uint32_t gained_n = 0;
-    uint32_t w, bits; /* a word of a set, its bits */
-    uint32_t p, i;
+    uint32_t w; /* a word of a set */
+    uint32_t bits; /* its bits */
+    uint32_t p;
+    uint32_t i;
 #ifdef Shuttle_HOOKS
     uint32_t before[1]; /* the active places at the start of the tick */
     for (i = 0; i < 1u; ++i) {
@@ -156,13 +176,13 @@ void Shuttle_run(Shuttle *m)
         /* entry Dock */
 #line 19 "shuttle_scalable.sfc"
         Lights(true);
-#line 160 "shuttle_scalable.c"
+#line 180 "shuttle_scalable.c"
     }
 
     /* Count the ticks of the active places that have a timer */
-    if (m->av[Shuttle_Dock] && m->timer_Dock < UINT32_MAX) { m->timer_Dock++; }
-    if (m->av[Shuttle_Moving] && m->timer_Moving < UINT32_MAX) { m->timer_Moving++; }
-    if (m->av[Shuttle_Waiting] && m->timer_Waiting < UINT32_MAX) { m->timer_Waiting++; }
+    if ((m->av[Shuttle_Dock] != 0u) && (m->timer_Dock < UINT32_MAX)) { m->timer_Dock++; }
+    if ((m->av[Shuttle_Moving] != 0u) && (m->timer_Moving < UINT32_MAX)) { m->timer_Moving++; }
+    if ((m->av[Shuttle_Waiting] != 0u) && (m->timer_Waiting < UINT32_MAX)) { m->timer_Waiting++; }
 
     /* The transitions that may be open: those of the active places */
     for (w = Shuttle_next(m->active, Shuttle_ACTIVE_LEVELS, 2u, 1u, 0u); w != UINT32_MAX; w = Shuttle_next(m->active, Shuttle_ACTIVE_LEVELS, 2u, 1u, w + 1u)) {
@@ -189,70 +209,80 @@ void Shuttle_run(Shuttle *m)
             case Shuttle_Fill:
                 /* Fill: Dock -> (Dock, Cargo) */
 #line 25 "shuttle_scalable.sfc"
-                if (m->av[Shuttle_Dock] && (Load() && Count() > 1)) {
-#line 194 "shuttle_scalable.c"
-                    if (--m->av[Shuttle_Dock] == 0u) { Shuttle_erase(m->active, Shuttle_ACTIVE_LEVELS, 2u, 0u, Shuttle_Dock); lost[lost_n++] = Shuttle_Dock; }
-                    add[add_n++] = Shuttle_Dock;
-                    add[add_n++] = Shuttle_Cargo;
+                if ((m->av[Shuttle_Dock] != 0u) && (Load() && (Count() > 1))) {
+#line 214 "shuttle_scalable.c"
+                    m->av[Shuttle_Dock]--;
+                    if (m->av[Shuttle_Dock] == 0u) { Shuttle_erase(m->active, Shuttle_ACTIVE_LEVELS, 2u, 0u, Shuttle_Dock); lost[lost_n] = Shuttle_Dock; lost_n++; }
+                    add[add_n] = Shuttle_Dock; add_n++;
+                    add[add_n] = Shuttle_Cargo; add_n++;
                 }
                 break;
             case Shuttle_Stay:
                 /* Stay: Dock -> Dock */
 #line 26 "shuttle_scalable.sfc"
-                if (m->av[Shuttle_Dock] && (Hold())) {
-#line 204 "shuttle_scalable.c"
-                    if (--m->av[Shuttle_Dock] == 0u) { Shuttle_erase(m->active, Shuttle_ACTIVE_LEVELS, 2u, 0u, Shuttle_Dock); lost[lost_n++] = Shuttle_Dock; }
-                    add[add_n++] = Shuttle_Dock;
+                if ((m->av[Shuttle_Dock] != 0u) && (Hold())) {
+#line 225 "shuttle_scalable.c"
+                    m->av[Shuttle_Dock]--;
+                    if (m->av[Shuttle_Dock] == 0u) { Shuttle_erase(m->active, Shuttle_ACTIVE_LEVELS, 2u, 0u, Shuttle_Dock); lost[lost_n] = Shuttle_Dock; lost_n++; }
+                    add[add_n] = Shuttle_Dock; add_n++;
                 }
                 break;
             case Shuttle_Go:
                 /* Go: (Dock, Power, Cargo) -> (Moving, Power) */
 #line 27 "shuttle_scalable.sfc"
-                if (m->av[Shuttle_Dock] && m->av[Shuttle_Power] && m->av[Shuttle_Cargo] && (Level() >= 0.5 || m->timer_Dock > 4u /* 40ms */)) {
-#line 213 "shuttle_scalable.c"
-                    if (--m->av[Shuttle_Dock] == 0u) { Shuttle_erase(m->active, Shuttle_ACTIVE_LEVELS, 2u, 0u, Shuttle_Dock); lost[lost_n++] = Shuttle_Dock; }
-                    if (--m->av[Shuttle_Power] == 0u) { Shuttle_erase(m->active, Shuttle_ACTIVE_LEVELS, 2u, 0u, Shuttle_Power); }
-                    if (--m->av[Shuttle_Cargo] == 0u) { Shuttle_erase(m->active, Shuttle_ACTIVE_LEVELS, 2u, 0u, Shuttle_Cargo); lost[lost_n++] = Shuttle_Cargo; }
-                    add[add_n++] = Shuttle_Moving;
-                    add[add_n++] = Shuttle_Power;
+                if ((m->av[Shuttle_Dock] != 0u) && (m->av[Shuttle_Power] != 0u) && (m->av[Shuttle_Cargo] != 0u) && ((Level() >= 0.5) || (m->timer_Dock > 4u /* 40ms */))) {
+#line 235 "shuttle_scalable.c"
+                    m->av[Shuttle_Dock]--;
+                    if (m->av[Shuttle_Dock] == 0u) { Shuttle_erase(m->active, Shuttle_ACTIVE_LEVELS, 2u, 0u, Shuttle_Dock); lost[lost_n] = Shuttle_Dock; lost_n++; }
+                    m->av[Shuttle_Power]--;
+                    if (m->av[Shuttle_Power] == 0u) { Shuttle_erase(m->active, Shuttle_ACTIVE_LEVELS, 2u, 0u, Shuttle_Power); }
+                    m->av[Shuttle_Cargo]--;
+                    if (m->av[Shuttle_Cargo] == 0u) { Shuttle_erase(m->active, Shuttle_ACTIVE_LEVELS, 2u, 0u, Shuttle_Cargo); lost[lost_n] = Shuttle_Cargo; lost_n++; }
+                    add[add_n] = Shuttle_Moving; add_n++;
+                    add[add_n] = Shuttle_Power; add_n++;
                 }
                 break;
             case Shuttle_T3:
                 /* T3: Moving -> Waiting */
 #line 28 "shuttle_scalable.sfc"
-                if (m->av[Shuttle_Moving] && (m->timer_Moving >= 3u /* 25ms */ && !Hold())) {
-#line 225 "shuttle_scalable.c"
-                    if (--m->av[Shuttle_Moving] == 0u) { Shuttle_erase(m->active, Shuttle_ACTIVE_LEVELS, 2u, 0u, Shuttle_Moving); lost[lost_n++] = Shuttle_Moving; }
-                    add[add_n++] = Shuttle_Waiting;
+                if ((m->av[Shuttle_Moving] != 0u) && ((m->timer_Moving >= 3u /* 25ms */) && !Hold())) {
+#line 250 "shuttle_scalable.c"
+                    m->av[Shuttle_Moving]--;
+                    if (m->av[Shuttle_Moving] == 0u) { Shuttle_erase(m->active, Shuttle_ACTIVE_LEVELS, 2u, 0u, Shuttle_Moving); lost[lost_n] = Shuttle_Moving; lost_n++; }
+                    add[add_n] = Shuttle_Waiting; add_n++;
                 }
                 break;
             case Shuttle_T4:
                 /* T4: Waiting -> Moving */
 #line 29 "shuttle_scalable.sfc"
-                if (m->av[Shuttle_Waiting] && (Hold())) {
-#line 234 "shuttle_scalable.c"
-                    if (--m->av[Shuttle_Waiting] == 0u) { Shuttle_erase(m->active, Shuttle_ACTIVE_LEVELS, 2u, 0u, Shuttle_Waiting); lost[lost_n++] = Shuttle_Waiting; }
-                    add[add_n++] = Shuttle_Moving;
+                if ((m->av[Shuttle_Waiting] != 0u) && (Hold())) {
+#line 260 "shuttle_scalable.c"
+                    m->av[Shuttle_Waiting]--;
+                    if (m->av[Shuttle_Waiting] == 0u) { Shuttle_erase(m->active, Shuttle_ACTIVE_LEVELS, 2u, 0u, Shuttle_Waiting); lost[lost_n] = Shuttle_Waiting; lost_n++; }
+                    add[add_n] = Shuttle_Moving; add_n++;
                 }
                 break;
             case Shuttle_Back:
                 /* Back: (Waiting, Power) -> (Dock, Power) */
 #line 30 "shuttle_scalable.sfc"
-                if (m->av[Shuttle_Waiting] && m->av[Shuttle_Power] && (Unload() || m->timer_Waiting >= 10u /* 100ms */)) {
-#line 243 "shuttle_scalable.c"
-                    if (--m->av[Shuttle_Waiting] == 0u) { Shuttle_erase(m->active, Shuttle_ACTIVE_LEVELS, 2u, 0u, Shuttle_Waiting); lost[lost_n++] = Shuttle_Waiting; }
-                    if (--m->av[Shuttle_Power] == 0u) { Shuttle_erase(m->active, Shuttle_ACTIVE_LEVELS, 2u, 0u, Shuttle_Power); }
-                    add[add_n++] = Shuttle_Dock;
-                    add[add_n++] = Shuttle_Power;
+                if ((m->av[Shuttle_Waiting] != 0u) && (m->av[Shuttle_Power] != 0u) && (Unload() || (m->timer_Waiting >= 10u /* 100ms */))) {
+#line 270 "shuttle_scalable.c"
+                    m->av[Shuttle_Waiting]--;
+                    if (m->av[Shuttle_Waiting] == 0u) { Shuttle_erase(m->active, Shuttle_ACTIVE_LEVELS, 2u, 0u, Shuttle_Waiting); lost[lost_n] = Shuttle_Waiting; lost_n++; }
+                    m->av[Shuttle_Power]--;
+                    if (m->av[Shuttle_Power] == 0u) { Shuttle_erase(m->active, Shuttle_ACTIVE_LEVELS, 2u, 0u, Shuttle_Power); }
+                    add[add_n] = Shuttle_Dock; add_n++;
+                    add[add_n] = Shuttle_Power; add_n++;
                 }
                 break;
             case Shuttle_T6:
                 /* T6: Cargo -> Cargo */
 #line 31 "shuttle_scalable.sfc"
-                if (m->av[Shuttle_Cargo] && (Count() == 3)) {
-#line 254 "shuttle_scalable.c"
-                    if (--m->av[Shuttle_Cargo] == 0u) { Shuttle_erase(m->active, Shuttle_ACTIVE_LEVELS, 2u, 0u, Shuttle_Cargo); lost[lost_n++] = Shuttle_Cargo; }
-                    add[add_n++] = Shuttle_Cargo;
+                if ((m->av[Shuttle_Cargo] != 0u) && (Count() == 3)) {
+#line 283 "shuttle_scalable.c"
+                    m->av[Shuttle_Cargo]--;
+                    if (m->av[Shuttle_Cargo] == 0u) { Shuttle_erase(m->active, Shuttle_ACTIVE_LEVELS, 2u, 0u, Shuttle_Cargo); lost[lost_n] = Shuttle_Cargo; lost_n++; }
+                    add[add_n] = Shuttle_Cargo; add_n++;
                 }
                 break;
             default:
@@ -265,9 +295,10 @@ void Shuttle_run(Shuttle *m)
     for (i = 0; i < add_n; ++i) {
         p = add[i];
         if (m->av[p] == UINT32_MAX) { continue; } /* saturated: see docs/c-engine.md */
-        if (m->av[p]++ == 0u) {
+        m->av[p]++;
+        if (m->av[p] == 1u) {
             Shuttle_insert(m->active, Shuttle_ACTIVE_LEVELS, 2u, p);
-            if (Shuttle_watched(p)) { gained[gained_n++] = (uint8_t)p; }
+            if (Shuttle_watched(p)) { gained[gained_n] = (uint8_t)p; gained_n++; }
         }
     }
 
@@ -280,26 +311,27 @@ void Shuttle_run(Shuttle *m)
         case Shuttle_Dock:
 #line 19 "shuttle_scalable.sfc"
             Lights(false);
-#line 284 "shuttle_scalable.c"
+#line 315 "shuttle_scalable.c"
             break;
         case Shuttle_Cargo:
 #line 21 "shuttle_scalable.sfc"
             m->trips += 1;
-#line 289 "shuttle_scalable.c"
+#line 320 "shuttle_scalable.c"
             break;
         default:
             break;
         }
     }
-    for (i = 0, w = 0; i < gained_n; ++i) {
-        while (w < lost_n && lost[w] < gained[i]) { ++w; }
-        if (w < lost_n && lost[w] == gained[i]) { continue; } /* lost and regained: no entry, the timer goes on */
+    w = 0;
+    for (i = 0; i < gained_n; ++i) {
+        while ((w < lost_n) && (lost[w] < gained[i])) { ++w; }
+        if ((w < lost_n) && (lost[w] == gained[i])) { continue; } /* lost and regained: no entry, the timer goes on */
         switch (gained[i]) {
         case Shuttle_Dock:
             m->timer_Dock = 0;
 #line 19 "shuttle_scalable.sfc"
             Lights(true);
-#line 303 "shuttle_scalable.c"
+#line 335 "shuttle_scalable.c"
             break;
         case Shuttle_Moving:
             m->timer_Moving = 0;
@@ -308,7 +340,7 @@ void Shuttle_run(Shuttle *m)
             m->timer_Waiting = 0;
 #line 23 "shuttle_scalable.sfc"
             Beep(-1);
-#line 312 "shuttle_scalable.c"
+#line 344 "shuttle_scalable.c"
             break;
         default:
             break;
@@ -317,19 +349,19 @@ void Shuttle_run(Shuttle *m)
 
 #ifdef Shuttle_HOOKS
     /* Observation hooks: places that lost, then gained activation; transitions open from now on */
-    for (p = 0; p < Shuttle_PLACE_COUNT; ++p) {
-        if (((before[p >> 5] >> (p & 31u)) & 1u) != 0u && m->av[p] == 0u) { Shuttle_activated(m, (int)p, false); }
+    for (p = 0; p < (uint32_t)Shuttle_PLACE_COUNT; ++p) {
+        if ((((before[p >> 5] >> (p & 31u)) & 1u) != 0u) && (m->av[p] == 0u)) { Shuttle_activated(m, (Shuttle_place)p, false); }
     }
-    for (p = 0; p < Shuttle_PLACE_COUNT; ++p) {
-        if (((before[p >> 5] >> (p & 31u)) & 1u) == 0u && m->av[p] != 0u) { Shuttle_activated(m, (int)p, true); }
+    for (p = 0; p < (uint32_t)Shuttle_PLACE_COUNT; ++p) {
+        if ((((before[p >> 5] >> (p & 31u)) & 1u) == 0u) && (m->av[p] != 0u)) { Shuttle_activated(m, (Shuttle_place)p, true); }
     }
-    if (!(((before[Shuttle_Dock >> 5] >> (Shuttle_Dock & 31u)) & 1u)) && m->av[Shuttle_Dock]) { Shuttle_enabled(m, Shuttle_Fill); }
-    if (!(((before[Shuttle_Dock >> 5] >> (Shuttle_Dock & 31u)) & 1u)) && m->av[Shuttle_Dock]) { Shuttle_enabled(m, Shuttle_Stay); }
-    if (!(((before[Shuttle_Dock >> 5] >> (Shuttle_Dock & 31u)) & 1u) && ((before[Shuttle_Power >> 5] >> (Shuttle_Power & 31u)) & 1u) && ((before[Shuttle_Cargo >> 5] >> (Shuttle_Cargo & 31u)) & 1u)) && m->av[Shuttle_Dock] && m->av[Shuttle_Power] && m->av[Shuttle_Cargo]) { Shuttle_enabled(m, Shuttle_Go); }
-    if (!(((before[Shuttle_Moving >> 5] >> (Shuttle_Moving & 31u)) & 1u)) && m->av[Shuttle_Moving]) { Shuttle_enabled(m, Shuttle_T3); }
-    if (!(((before[Shuttle_Waiting >> 5] >> (Shuttle_Waiting & 31u)) & 1u)) && m->av[Shuttle_Waiting]) { Shuttle_enabled(m, Shuttle_T4); }
-    if (!(((before[Shuttle_Waiting >> 5] >> (Shuttle_Waiting & 31u)) & 1u) && ((before[Shuttle_Power >> 5] >> (Shuttle_Power & 31u)) & 1u)) && m->av[Shuttle_Waiting] && m->av[Shuttle_Power]) { Shuttle_enabled(m, Shuttle_Back); }
-    if (!(((before[Shuttle_Cargo >> 5] >> (Shuttle_Cargo & 31u)) & 1u)) && m->av[Shuttle_Cargo]) { Shuttle_enabled(m, Shuttle_T6); }
+    if (!((((before[(uint32_t)Shuttle_Dock >> 5] >> ((uint32_t)Shuttle_Dock & 31u)) & 1u) != 0u)) && (m->av[Shuttle_Dock] != 0u)) { Shuttle_enabled(m, Shuttle_Fill); }
+    if (!((((before[(uint32_t)Shuttle_Dock >> 5] >> ((uint32_t)Shuttle_Dock & 31u)) & 1u) != 0u)) && (m->av[Shuttle_Dock] != 0u)) { Shuttle_enabled(m, Shuttle_Stay); }
+    if (!((((before[(uint32_t)Shuttle_Dock >> 5] >> ((uint32_t)Shuttle_Dock & 31u)) & 1u) != 0u) && (((before[(uint32_t)Shuttle_Power >> 5] >> ((uint32_t)Shuttle_Power & 31u)) & 1u) != 0u) && (((before[(uint32_t)Shuttle_Cargo >> 5] >> ((uint32_t)Shuttle_Cargo & 31u)) & 1u) != 0u)) && (m->av[Shuttle_Dock] != 0u) && (m->av[Shuttle_Power] != 0u) && (m->av[Shuttle_Cargo] != 0u)) { Shuttle_enabled(m, Shuttle_Go); }
+    if (!((((before[(uint32_t)Shuttle_Moving >> 5] >> ((uint32_t)Shuttle_Moving & 31u)) & 1u) != 0u)) && (m->av[Shuttle_Moving] != 0u)) { Shuttle_enabled(m, Shuttle_T3); }
+    if (!((((before[(uint32_t)Shuttle_Waiting >> 5] >> ((uint32_t)Shuttle_Waiting & 31u)) & 1u) != 0u)) && (m->av[Shuttle_Waiting] != 0u)) { Shuttle_enabled(m, Shuttle_T4); }
+    if (!((((before[(uint32_t)Shuttle_Waiting >> 5] >> ((uint32_t)Shuttle_Waiting & 31u)) & 1u) != 0u) && (((before[(uint32_t)Shuttle_Power >> 5] >> ((uint32_t)Shuttle_Power & 31u)) & 1u) != 0u)) && (m->av[Shuttle_Waiting] != 0u) && (m->av[Shuttle_Power] != 0u)) { Shuttle_enabled(m, Shuttle_Back); }
+    if (!((((before[(uint32_t)Shuttle_Cargo >> 5] >> ((uint32_t)Shuttle_Cargo & 31u)) & 1u) != 0u)) && (m->av[Shuttle_Cargo] != 0u)) { Shuttle_enabled(m, Shuttle_T6); }
 #endif
 
     /* Perform place actions: the active places in declaration order */
@@ -339,12 +371,12 @@ void Shuttle_run(Shuttle *m)
             case Shuttle_Dock:
 #line 19 "shuttle_scalable.sfc"
                 Beep(m->trips);
-#line 343 "shuttle_scalable.c"
+#line 375 "shuttle_scalable.c"
                 break;
             case Shuttle_Moving:
 #line 22 "shuttle_scalable.sfc"
                 Drive(m->speed);
-#line 348 "shuttle_scalable.c"
+#line 380 "shuttle_scalable.c"
                 break;
             default:
                 break;
@@ -355,5 +387,5 @@ void Shuttle_run(Shuttle *m)
 
 unsigned Shuttle_activation(const Shuttle *m, int place)
 {
-    return place >= 0 && place < Shuttle_PLACE_COUNT ? m->av[place] : 0u;
+    return ((place >= 0) && (place < (int)Shuttle_PLACE_COUNT)) ? m->av[place] : 0u;
 }

@@ -10,17 +10,17 @@ extern "C" {
 #endif
 
 /* The places of sfc Shuttle, in declaration order. */
-enum {
+typedef enum {
     Shuttle_Dock,
     Shuttle_Power,
     Shuttle_Cargo,
     Shuttle_Moving,
     Shuttle_Waiting,
     Shuttle_PLACE_COUNT
-};
+} Shuttle_place;
 
 /* Its transitions, in declaration order: the numbers the observation hooks pass. */
-enum {
+typedef enum {
     Shuttle_Fill, /* Dock -> (Dock, Cargo) */
     Shuttle_Stay, /* Dock -> Dock */
     Shuttle_Go,   /* (Dock, Power, Cargo) -> (Moving, Power) */
@@ -29,7 +29,7 @@ enum {
     Shuttle_Back, /* (Waiting, Power) -> (Dock, Power) */
     Shuttle_T6,   /* Cargo -> Cargo */
     Shuttle_TRANSITION_COUNT
-};
+} Shuttle_transition;
 
 /* The state of one engine. The type is complete so that the caller can allocate it (several
    engines may run side by side); only the functions below use its fields. */
@@ -57,9 +57,10 @@ unsigned Shuttle_activation(const Shuttle *m, int place);
 /* Observation hooks (GFE_Activated, GFE_Enabled): an engine built with -DShuttle_HOOKS calls them and
    the encapsulating code defines them. At the end of each tick's update, in declaration order:
    every place that lost (active false), then gained (active true) its activation; then every
-   transition whose inputs are all active now but were not at the start of the tick. */
-void Shuttle_activated(Shuttle *m, int place, bool active);
-void Shuttle_enabled(Shuttle *m, int transition);
+   transition whose inputs are all active now but were not at the start of the tick.
+   The engine is read only (const): a hook observes, it does not steer. */
+void Shuttle_activated(const Shuttle *m, Shuttle_place place, bool active);
+void Shuttle_enabled(const Shuttle *m, Shuttle_transition transition);
 #endif
 
 /* Functions of interface ShuttleBot that the chart calls: the robot library defines them. */

@@ -27,23 +27,24 @@ void Fetch_init(Fetch *m)
 
 void Fetch_set_agent(Fetch *m, int agent)
 {
-    if (agent >= 0 && agent < Fetch_TEAM_SIZE) {
+    if ((agent >= 0) && (agent < Fetch_TEAM_SIZE)) {
         m->agent = agent;
     }
 }
 
 void Fetch_report(Fetch *m, int agent, int state)
 {
-    if (agent >= 0 && agent < Fetch_TEAM_SIZE && agent != m->agent && state >= 0 && state < Fetch_PLACE_COUNT) {
+    if ((agent >= 0) && (agent < Fetch_TEAM_SIZE) && (agent != m->agent) && (state >= 0) && (state < (int)Fetch_PLACE_COUNT)) {
         m->reports[agent] = (int8_t)state;
     }
 }
 
 int Fetch_team(const Fetch *m, int state)
 {
-    int agent, n = 0;
+    int agent;
+    int n = 0;
     for (agent = 0; agent < Fetch_TEAM_SIZE; ++agent) {
-        if (agent != m->agent && m->reports[agent] == state) {
+        if ((agent != m->agent) && (m->reports[agent] == state)) {
             ++n;
         }
     }
@@ -52,120 +53,121 @@ int Fetch_team(const Fetch *m, int state)
 
 void Fetch_run(Fetch *m)
 {
+    Fetch_place from = m->state; /* the state at the start of the tick */
+
     /* In a terminal state nothing happens any more */
-    if (m->status != 0) {
-        return;
-    }
+    if (m->status == 0) {
+        /* Count the ticks of the current state, if it has a timer */
+        if ((m->state == Fetch_Yield) && (m->timer_Yield < UINT32_MAX)) { m->timer_Yield++; }
 
-    /* Count the ticks of the current state, if it has a timer */
-    if (m->state == Fetch_Yield && m->timer_Yield < UINT32_MAX) { m->timer_Yield++; }
-
-    int from = m->state; /* the state at the start of the tick */
-
-    /* Perform state update: the first transition leaving the current state whose condition
-       holds, in declaration order (one per tick) */
-    /* T0: Go -> Grab */
+        /* Perform state update: the first transition leaving the current state whose condition
+           holds, in declaration order (one per tick) */
+        /* T0: Go -> Grab */
 #line 34 "team_fetch.fsm"
-    if (m->state == Fetch_Go && (Arrived() && Fetch_team(m, Fetch_Grab) == 0)) {
-#line 71 "team_fetch.c"
-        m->state = Fetch_Grab;
-    }
-    /* T1: Go -> Yield */
+        if ((m->state == Fetch_Go) && (Arrived() && (Fetch_team(m, Fetch_Grab) == 0))) {
+#line 69 "team_fetch.c"
+            m->state = Fetch_Grab;
+        }
+        /* T1: Go -> Yield */
 #line 35 "team_fetch.fsm"
-    else if (m->state == Fetch_Go && (Fetch_team(m, Fetch_Grab) > 0)) {
-#line 77 "team_fetch.c"
-        m->state = Fetch_Yield;
-    }
-    /* T2: Grab -> Got */
+        else if ((m->state == Fetch_Go) && (Fetch_team(m, Fetch_Grab) > 0)) {
+#line 75 "team_fetch.c"
+            m->state = Fetch_Yield;
+        }
+        /* T2: Grab -> Got */
 #line 36 "team_fetch.fsm"
-    else if (m->state == Fetch_Grab && (Holding())) {
-#line 83 "team_fetch.c"
-        m->state = Fetch_Got;
-        m->status = 1;
-    }
-    /* T3: Yield -> Left */
+        else if ((m->state == Fetch_Grab) && (Holding())) {
+#line 81 "team_fetch.c"
+            m->state = Fetch_Got;
+            m->status = 1;
+        }
+        /* T3: Yield -> Left */
 #line 37 "team_fetch.fsm"
-    else if (m->state == Fetch_Yield && (Parked() || m->waited > 3)) {
-#line 90 "team_fetch.c"
-        m->state = Fetch_Left;
-        m->status = 1;
-    }
+        else if ((m->state == Fetch_Yield) && (Parked() || (m->waited > 3))) {
+#line 88 "team_fetch.c"
+            m->state = Fetch_Left;
+            m->status = 1;
+        }
+        else {
+            /* no transition fires: the state stays */
+        }
 
-    /* Leave the old state, enter the new one */
-    if (m->state != from) {
-        /* exit Grab */
-        if (from == Fetch_Grab) {
+        /* Leave the old state, enter the new one */
+        if (m->state != from) {
+            /* exit Grab */
+            if (from == Fetch_Grab) {
 #line 17 "team_fetch.fsm"
-            Lights(false);
-#line 101 "team_fetch.c"
-        }
-        /* entry Grab */
-        if (m->state == Fetch_Grab) {
-#line 15 "team_fetch.fsm"
-            Lights(true);
-#line 107 "team_fetch.c"
-        }
-        /* entry Yield */
-        if (m->state == Fetch_Yield) {
-            int gfec_t0; /* temporaries: the chart calls left to right */
-            m->timer_Yield = 0;
-#line 21 "team_fetch.fsm"
-            if (m->agent == 0) {
-                Beep(2);
-            } else if ((gfec_t0 = Seen(), gfec_t0 + Heard() > Fetch_team(m, Fetch_Grab))) {
-                Beep(Seen());
-            } else {
-                Beep(1);
+                Lights(false);
+#line 102 "team_fetch.c"
             }
-#line 121 "team_fetch.c"
-        }
+            /* entry Grab */
+            if (m->state == Fetch_Grab) {
+#line 15 "team_fetch.fsm"
+                Lights(true);
+#line 108 "team_fetch.c"
+            }
+            /* entry Yield */
+            if (m->state == Fetch_Yield) {
+                int gfec_t0; /* temporaries: the chart calls left to right */
+                m->timer_Yield = 0;
+#line 21 "team_fetch.fsm"
+                if (m->agent == 0) {
+                    Beep(2);
+                } else if ((gfec_t0 = Seen(), (gfec_t0 + Heard()) > Fetch_team(m, Fetch_Grab))) {
+                    Beep(Seen());
+                } else {
+                    Beep(1);
+                }
+#line 122 "team_fetch.c"
+            }
 #ifdef Fetch_HOOKS
-        /* Observation hooks: the state left and the state entered; the transitions leaving it */
-        Fetch_activated(m, from, false);
-        Fetch_activated(m, m->state, true);
-        if (m->state == Fetch_Go) { Fetch_enabled(m, Fetch_T0); Fetch_enabled(m, Fetch_T1); }
-        if (m->state == Fetch_Grab) { Fetch_enabled(m, Fetch_T2); }
-        if (m->state == Fetch_Yield) { Fetch_enabled(m, Fetch_T3); }
+            /* Observation hooks: the state left and the state entered; the transitions leaving it */
+            Fetch_activated(m, from, false);
+            Fetch_activated(m, m->state, true);
+            if (m->state == Fetch_Go) { Fetch_enabled(m, Fetch_T0); Fetch_enabled(m, Fetch_T1); }
+            if (m->state == Fetch_Grab) { Fetch_enabled(m, Fetch_T2); }
+            if (m->state == Fetch_Yield) { Fetch_enabled(m, Fetch_T3); }
 #endif
-    }
+        }
 
 #ifdef Fetch_CHECKS
-    /* Postconditions of the terminal states, checked on entering them */
-    if (m->state == Fetch_Left) {
+        /* Postconditions of the terminal states, checked on entering them */
+        if (m->state == Fetch_Left) {
 #line 33 "team_fetch.fsm"
-        Fetch_ASSERT(Parked());
-#line 138 "team_fetch.c"
-    }
+            Fetch_ASSERT(Parked());
+#line 139 "team_fetch.c"
+        }
 #endif
 
-    /* Perform the action of the current state */
-    if (m->state == Fetch_Go) {
+        /* Perform the action of the current state */
+        if (m->state == Fetch_Go) {
 #line 13 "team_fetch.fsm"
-        DriveToItem();
-#line 146 "team_fetch.c"
-    }
-    if (m->state == Fetch_Grab) {
-#line 16 "team_fetch.fsm"
-        PickUp();
-#line 151 "team_fetch.c"
-    }
-    if (m->state == Fetch_Yield) {
-#line 29 "team_fetch.fsm"
-        Park();
-        if (m->timer_Yield >= 100u /* 1000ms */) {
-#line 30 "team_fetch.fsm"
-            m->waited += 1;
+            DriveToItem();
+#line 147 "team_fetch.c"
         }
-#line 160 "team_fetch.c"
+        if (m->state == Fetch_Grab) {
+#line 16 "team_fetch.fsm"
+            PickUp();
+#line 152 "team_fetch.c"
+        }
+        if (m->state == Fetch_Yield) {
+#line 29 "team_fetch.fsm"
+            Park();
+            if (m->timer_Yield >= 100u /* 1000ms */) {
+#line 30 "team_fetch.fsm"
+                m->waited += 1;
+            }
+#line 161 "team_fetch.c"
+        }
     }
 }
 
 unsigned Fetch_activation(const Fetch *m, int place)
 {
-    return m->state == place ? 1u : 0u;
+    return ((int)m->state == place) ? 1u : 0u;
 }
 
-int Fetch_state(const Fetch *m)
+Fetch_place Fetch_state(const Fetch *m)
 {
     return m->state;
 }

@@ -10,23 +10,23 @@ extern "C" {
 #endif
 
 /* The states of fsm Fetch, in declaration order. */
-enum {
+typedef enum {
     Fetch_Go,
     Fetch_Grab,
     Fetch_Yield,
     Fetch_Got,
     Fetch_Left,
     Fetch_PLACE_COUNT
-};
+} Fetch_place;
 
 /* Its transitions, in declaration order: the numbers the observation hooks pass. */
-enum {
+typedef enum {
     Fetch_T0, /* Go -> Grab */
     Fetch_T1, /* Go -> Yield */
     Fetch_T2, /* Grab -> Got */
     Fetch_T3, /* Yield -> Left */
     Fetch_TRANSITION_COUNT
-};
+} Fetch_transition;
 
 /* A team machine: up to 4 agents run it side by side, one engine each. */
 enum { Fetch_TEAM_SIZE = 4 };
@@ -35,7 +35,7 @@ enum { Fetch_TEAM_SIZE = 4 };
    engines may run side by side); only the functions below use its fields. */
 typedef struct Fetch Fetch;
 struct Fetch {
-    int state;                       /* the current state, a Fetch_<state> */
+    Fetch_place state;               /* the current state, a Fetch_<state> */
     int status;                      /* 0 running, 1 succeeded, -1 failed */
     uint32_t timer_Yield;            /* ticks Yield has been active: elapsed(Yield) */
     int agent;                       /* this engine's agent number (set by Fetch_set_agent) */
@@ -50,7 +50,7 @@ void Fetch_run(Fetch *m);
 /* 1 if `place` is the current state, else 0. */
 unsigned Fetch_activation(const Fetch *m, int place);
 /* The current state, a Fetch_<state>. */
-int Fetch_state(const Fetch *m);
+Fetch_place Fetch_state(const Fetch *m);
 /* 0 while running, 1 once in a success state, -1 once in a failure state. */
 int Fetch_status(const Fetch *m);
 /* Team machine: Fetch_init makes the engine agent 0 and forgets every report. Call
@@ -66,9 +66,10 @@ int Fetch_team(const Fetch *m, int state);
 /* Observation hooks (GFE_Activated, GFE_Enabled): an engine built with -DFetch_HOOKS calls them and
    the encapsulating code defines them. At the end of each tick's update, in declaration order:
    every state that lost (active false), then gained (active true) its activation; then every
-   transition whose inputs are all active now but were not at the start of the tick. */
-void Fetch_activated(Fetch *m, int place, bool active);
-void Fetch_enabled(Fetch *m, int transition);
+   transition whose inputs are all active now but were not at the start of the tick.
+   The engine is read only (const): a hook observes, it does not steer. */
+void Fetch_activated(const Fetch *m, Fetch_place place, bool active);
+void Fetch_enabled(const Fetch *m, Fetch_transition transition);
 #endif
 
 /* Functions of interface FetchBot that the chart calls: the robot library defines them. */

@@ -25,7 +25,7 @@ void WorkCell_run(WorkCell *m)
 {
     uint8_t add[WorkCell_PLACE_COUNT] = {0}; /* activation produced in this tick */
     uint8_t before[WorkCell_PLACE_COUNT]; /* the activation at the start of the tick */
-    for (int p = 0; p < WorkCell_PLACE_COUNT; ++p) { before[p] = m->av[p]; }
+    for (int p = 0; p < (int)WorkCell_PLACE_COUNT; ++p) { before[p] = m->av[p]; }
 
     /* First tick: the initial places enter */
     if (!m->started) {
@@ -37,14 +37,14 @@ void WorkCell_run(WorkCell *m)
     }
 
     /* Count the ticks of the active places that have a timer */
-    if (m->av[WorkCell_LeftArm] && m->timer_LeftArm < UINT32_MAX) { m->timer_LeftArm++; }
-    if (m->av[WorkCell_RightArm] && m->timer_RightArm < UINT32_MAX) { m->timer_RightArm++; }
+    if ((m->av[WorkCell_LeftArm] != 0u) && (m->timer_LeftArm < UINT32_MAX)) { m->timer_LeftArm++; }
+    if ((m->av[WorkCell_RightArm] != 0u) && (m->timer_RightArm < UINT32_MAX)) { m->timer_RightArm++; }
 
     /* Perform state update: transitions in declaration order; the activation they produce
        waits in add[] and cannot be consumed before the next tick */
     /* Start: Idle -> (LeftArm, RightArm) */
 #line 32 "work_cell.sfc"
-    if (m->av[WorkCell_Idle] && (PartReady() && !(m->parts >= 100 /* MAX_PARTS */))) {
+    if ((m->av[WorkCell_Idle] != 0u) && (PartReady() && !(m->parts >= 100 /* MAX_PARTS */))) {
 #line 49 "work_cell.c"
         m->av[WorkCell_Idle]--;
         add[WorkCell_LeftArm]++;
@@ -52,27 +52,29 @@ void WorkCell_run(WorkCell *m)
     }
     /* T1: LeftArm -> LeftDone */
 #line 33 "work_cell.sfc"
-    if (m->av[WorkCell_LeftArm] && (AtTarget(0))) {
+    if ((m->av[WorkCell_LeftArm] != 0u) && (AtTarget(0))) {
 #line 57 "work_cell.c"
         m->av[WorkCell_LeftArm]--;
         add[WorkCell_LeftDone]++;
     }
     /* T2: RightArm -> RightDone */
 #line 34 "work_cell.sfc"
-    if (m->av[WorkCell_RightArm] && (AtTarget(1) || (m->timer_RightArm >= 50u /* 1000ms */ && Clear()))) {
+    if ((m->av[WorkCell_RightArm] != 0u) && (AtTarget(1) || ((m->timer_RightArm >= 50u /* 1000ms */) && Clear()))) {
 #line 64 "work_cell.c"
         m->av[WorkCell_RightArm]--;
         add[WorkCell_RightDone]++;
     }
     /* Stuck: LeftArm -> Jammed */
 #line 35 "work_cell.sfc"
-    if (m->av[WorkCell_LeftArm] && (m->timer_LeftArm > 75u /* 1500ms */)) {
+    if ((m->av[WorkCell_LeftArm] != 0u) && (m->timer_LeftArm > 75u /* 1500ms */)) {
 #line 71 "work_cell.c"
         m->av[WorkCell_LeftArm]--;
         add[WorkCell_Jammed]++;
     }
     /* Join: (LeftDone, RightDone) -> Idle */
-    if (m->av[WorkCell_LeftDone] && m->av[WorkCell_RightDone]) {
+#line 36 "work_cell.sfc"
+    if ((m->av[WorkCell_LeftDone] != 0u) && (m->av[WorkCell_RightDone] != 0u)) {
+#line 78 "work_cell.c"
         m->av[WorkCell_LeftDone]--;
         m->av[WorkCell_RightDone]--;
         add[WorkCell_Idle]++;
@@ -88,69 +90,69 @@ void WorkCell_run(WorkCell *m)
 
     /* Places that lost their activation exit, then places that gained it enter */
     /* exit Idle */
-    if (before[WorkCell_Idle] && !m->av[WorkCell_Idle]) {
+    if ((before[WorkCell_Idle] != 0u) && (m->av[WorkCell_Idle] == 0u)) {
 #line 19 "work_cell.sfc"
         Lamp(false);
-#line 95 "work_cell.c"
+#line 97 "work_cell.c"
     }
     /* exit RightDone */
-    if (before[WorkCell_RightDone] && !m->av[WorkCell_RightDone]) {
+    if ((before[WorkCell_RightDone] != 0u) && (m->av[WorkCell_RightDone] == 0u)) {
 #line 24 "work_cell.sfc"
         m->parts += 1;
-#line 101 "work_cell.c"
+#line 103 "work_cell.c"
     }
     /* entry Idle */
-    if (!before[WorkCell_Idle] && m->av[WorkCell_Idle]) {
+    if ((before[WorkCell_Idle] == 0u) && (m->av[WorkCell_Idle] != 0u)) {
 #line 18 "work_cell.sfc"
         Lamp(true);
-#line 107 "work_cell.c"
+#line 109 "work_cell.c"
     }
     /* timer of LeftArm */
-    if (!before[WorkCell_LeftArm] && m->av[WorkCell_LeftArm]) {
+    if ((before[WorkCell_LeftArm] == 0u) && (m->av[WorkCell_LeftArm] != 0u)) {
         m->timer_LeftArm = 0;
     }
     /* timer of RightArm */
-    if (!before[WorkCell_RightArm] && m->av[WorkCell_RightArm]) {
+    if ((before[WorkCell_RightArm] == 0u) && (m->av[WorkCell_RightArm] != 0u)) {
         m->timer_RightArm = 0;
     }
     /* entry Jammed */
-    if (!before[WorkCell_Jammed] && m->av[WorkCell_Jammed]) {
+    if ((before[WorkCell_Jammed] == 0u) && (m->av[WorkCell_Jammed] != 0u)) {
 #line 27 "work_cell.sfc"
         Alarm();
 #line 28 "work_cell.sfc"
         fputs("work cell jammed\n", stderr);
-#line 123 "work_cell.c"
+#line 125 "work_cell.c"
     }
 
 #ifdef WorkCell_HOOKS
     /* Observation hooks: places that lost, then gained activation; transitions open from now on */
-    for (int p = 0; p < WorkCell_PLACE_COUNT; ++p) {
-        if (before[p] && !m->av[p]) { WorkCell_activated(m, p, false); }
+    for (int p = 0; p < (int)WorkCell_PLACE_COUNT; ++p) {
+        if ((before[p] != 0u) && (m->av[p] == 0u)) { WorkCell_activated(m, (WorkCell_place)p, false); }
     }
-    for (int p = 0; p < WorkCell_PLACE_COUNT; ++p) {
-        if (!before[p] && m->av[p]) { WorkCell_activated(m, p, true); }
+    for (int p = 0; p < (int)WorkCell_PLACE_COUNT; ++p) {
+        if ((before[p] == 0u) && (m->av[p] != 0u)) { WorkCell_activated(m, (WorkCell_place)p, true); }
     }
-    if (!before[WorkCell_Idle] && m->av[WorkCell_Idle]) { WorkCell_enabled(m, WorkCell_Start); }
-    if (!before[WorkCell_LeftArm] && m->av[WorkCell_LeftArm]) { WorkCell_enabled(m, WorkCell_T1); }
-    if (!before[WorkCell_RightArm] && m->av[WorkCell_RightArm]) { WorkCell_enabled(m, WorkCell_T2); }
-    if (!before[WorkCell_LeftArm] && m->av[WorkCell_LeftArm]) { WorkCell_enabled(m, WorkCell_Stuck); }
-    if (!(before[WorkCell_LeftDone] && before[WorkCell_RightDone]) && m->av[WorkCell_LeftDone] && m->av[WorkCell_RightDone]) { WorkCell_enabled(m, WorkCell_Join); }
+    if ((before[WorkCell_Idle] == 0u) && (m->av[WorkCell_Idle] != 0u)) { WorkCell_enabled(m, WorkCell_Start); }
+    if ((before[WorkCell_LeftArm] == 0u) && (m->av[WorkCell_LeftArm] != 0u)) { WorkCell_enabled(m, WorkCell_T1); }
+    if ((before[WorkCell_RightArm] == 0u) && (m->av[WorkCell_RightArm] != 0u)) { WorkCell_enabled(m, WorkCell_T2); }
+    if ((before[WorkCell_LeftArm] == 0u) && (m->av[WorkCell_LeftArm] != 0u)) { WorkCell_enabled(m, WorkCell_Stuck); }
+    if (!((before[WorkCell_LeftDone] != 0u) && (before[WorkCell_RightDone] != 0u)) && (m->av[WorkCell_LeftDone] != 0u) && (m->av[WorkCell_RightDone] != 0u)) { WorkCell_enabled(m, WorkCell_Join); }
 #endif
 
     /* Perform place actions */
-    if (m->av[WorkCell_LeftArm]) {
+    if (m->av[WorkCell_LeftArm] != 0u) {
 #line 21 "work_cell.sfc"
         Move(0, m->speed);
-#line 145 "work_cell.c"
+#line 147 "work_cell.c"
     }
-    if (m->av[WorkCell_RightArm]) {
+    if (m->av[WorkCell_RightArm] != 0u) {
 #line 22 "work_cell.sfc"
         Move(1, -m->speed * 2.0);
-#line 150 "work_cell.c"
+#line 152 "work_cell.c"
     }
 }
 
 unsigned WorkCell_activation(const WorkCell *m, int place)
 {
-    return place >= 0 && place < WorkCell_PLACE_COUNT ? m->av[place] : 0u;
+    return ((place >= 0) && (place < (int)WorkCell_PLACE_COUNT)) ? m->av[place] : 0u;
 }

@@ -16,81 +16,95 @@ static const uint32_t WorkCell_CANDIDATE_LEVELS[3] = {0u, 1u, 2u};
 static uint32_t WorkCell_lowest(uint32_t word)
 {
 #if defined(__GNUC__) || defined(__clang__)
-    return (uint32_t)__builtin_ctz(word);
+    uint32_t n = (uint32_t)__builtin_ctz(word);
 #else
-    uint32_t n = 0;
-    while ((word & 1u) == 0u) {
-        word >>= 1;
+    uint32_t rest = word;
+    uint32_t n = 0u;
+    while ((rest & 1u) == 0u) {
+        rest >>= 1;
         ++n;
     }
-    return n;
 #endif
+    return n;
 }
 
-/* The first member >= i of a set of `count` levels, looking from level `low` (0: members;
+/* The first member >= from of a set of `count` levels, looking from level `low` (0: members;
    1: words of level 0 that have members), or UINT32_MAX when there is none. */
-static uint32_t WorkCell_next(const uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t low, uint32_t i)
+static uint32_t WorkCell_next(const uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t low, uint32_t from)
 {
-    uint32_t level = low, word;
-    for (;;) {
-        if ((i >> 5) >= levels[level + 1] - levels[level]) {
-            return UINT32_MAX;
+    uint32_t level = low;
+    uint32_t i = from;
+    uint32_t word = 0u;
+    bool searching = true;
+    bool found = false;
+    while (searching) {
+        if ((i >> 5) >= (levels[level + 1u] - levels[level])) {
+            searching = false; /* past the last word of this level */
+        } else {
+            word = set[levels[level] + (i >> 5)] & (0xFFFFFFFFu << (i & 31u));
+            if (word != 0u) {
+                found = true;
+                searching = false;
+            } else if ((level + 1u) == count) {
+                searching = false; /* the top level has nothing further */
+            } else {
+                i = (i >> 5) + 1u; /* the next word of this level: its bit one level up */
+                ++level;
+            }
         }
-        word = set[levels[level] + (i >> 5)] & (0xFFFFFFFFu << (i & 31u));
-        if (word != 0u) {
-            break;
-        }
-        if (level + 1u == count) {
-            return UINT32_MAX;
-        }
-        i = (i >> 5) + 1u; /* the next word of this level: its bit one level up */
-        ++level;
     }
-    i = (i & ~31u) | WorkCell_lowest(word);
-    while (level > low) {
-        --level;
-        i = (i << 5) | WorkCell_lowest(set[levels[level] + i]);
+    if (found) {
+        i = (i & ~31u) | WorkCell_lowest(word);
+        while (level > low) {
+            --level;
+            i = (i << 5) | WorkCell_lowest(set[levels[level] + i]);
+        }
+    } else {
+        i = UINT32_MAX;
     }
     return i;
 }
 
-/* Adds member i, telling the levels above when its word stops being empty. */
-static void WorkCell_insert(uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t i)
+/* Adds a member, telling the levels above when its word stops being empty. */
+static void WorkCell_insert(uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t member)
 {
-    uint32_t level;
-    for (level = 0; level < count; ++level) {
+    uint32_t i = member;
+    uint32_t level = 0u;
+    bool rising = true;
+    while (rising && (level < count)) {
         uint32_t *word = &set[levels[level] + (i >> 5)];
         uint32_t was = *word;
         *word = was | (1u << (i & 31u));
-        if (was != 0u) {
-            return;
-        }
+        rising = (was == 0u); /* the word was empty: the level above learns of it */
         i >>= 5;
+        ++level;
     }
 }
 
-/* Removes member i of level `low` (1: a word of level 0 that became empty), telling the levels
+/* Removes a member of level `low` (1: a word of level 0 that became empty), telling the levels
    above when a word becomes empty. */
-static void WorkCell_erase(uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t low, uint32_t i)
+static void WorkCell_erase(uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t low, uint32_t member)
 {
-    uint32_t level;
-    for (level = low; level < count; ++level) {
+    uint32_t i = member;
+    uint32_t level = low;
+    bool emptied = true;
+    while (emptied && (level < count)) {
         uint32_t *word = &set[levels[level] + (i >> 5)];
         *word &= ~(1u << (i & 31u));
-        if (*word != 0u) {
-            return;
-        }
+        emptied = (*word == 0u); /* the word became empty: the level above learns of it */
         i >>= 5;
+        ++level;
     }
 }
 
 /* Sorts a short list of place numbers (the places that lost or gained activation in a tick). */
 static void WorkCell_sort(uint8_t *list, uint32_t n)
 {
-    uint32_t i, j;
+    uint32_t i;
+    uint32_t j;
     for (i = 1; i < n; ++i) {
         uint8_t key = list[i];
-        for (j = i; j > 0u && list[j - 1u] > key; --j) {
+        for (j = i; (j > 0u) && (list[j - 1u] > key); --j) {
             list[j] = list[j - 1u];
         }
         list[j] = key;
@@ -100,23 +114,27 @@ static void WorkCell_sort(uint8_t *list, uint32_t n)
 /* Whether a place runs exit or entry code, or resets its timer, when its activation changes. */
 static bool WorkCell_watched(uint32_t place)
 {
+    bool watched;
     switch (place) {
     case WorkCell_Idle:
     case WorkCell_LeftArm:
     case WorkCell_RightArm:
     case WorkCell_RightDone:
     case WorkCell_Jammed:
-        return true;
+        watched = true;
+        break;
     default:
-        return false;
+        watched = false;
+        break;
     }
+    return watched;
 }
 
 /* Initial marking: Idle is active. Calls no code of the chart. */
 void WorkCell_init(WorkCell *m)
 {
     uint32_t p;
-    for (p = 0; p < WorkCell_PLACE_COUNT; ++p) {
+    for (p = 0; p < (uint32_t)WorkCell_PLACE_COUNT; ++p) {
         m->av[p] = 0;
     }
     for (p = 0; p < 2u; ++p) {
@@ -143,8 +161,10 @@ void WorkCell_run(WorkCell *m)
     uint32_t lost_n = 0;
     uint8_t gained[2]; /* watched places whose activation rose from 0 */
     uint32_t gained_n = 0;
-    uint32_t w, bits; /* a word of a set, its bits */
-    uint32_t p, i;
+    uint32_t w; /* a word of a set */
+    uint32_t bits; /* its bits */
+    uint32_t p;
+    uint32_t i;
 #ifdef WorkCell_HOOKS
     uint32_t before[1]; /* the active places at the start of the tick */
     for (i = 0; i < 1u; ++i) {
@@ -158,12 +178,12 @@ void WorkCell_run(WorkCell *m)
         /* entry Idle */
 #line 18 "work_cell_scalable.sfc"
         Lamp(true);
-#line 162 "work_cell_scalable.c"
+#line 182 "work_cell_scalable.c"
     }
 
     /* Count the ticks of the active places that have a timer */
-    if (m->av[WorkCell_LeftArm] && m->timer_LeftArm < UINT32_MAX) { m->timer_LeftArm++; }
-    if (m->av[WorkCell_RightArm] && m->timer_RightArm < UINT32_MAX) { m->timer_RightArm++; }
+    if ((m->av[WorkCell_LeftArm] != 0u) && (m->timer_LeftArm < UINT32_MAX)) { m->timer_LeftArm++; }
+    if ((m->av[WorkCell_RightArm] != 0u) && (m->timer_RightArm < UINT32_MAX)) { m->timer_RightArm++; }
 
     /* The transitions that may be open: those of the active places */
     for (w = WorkCell_next(m->active, WorkCell_ACTIVE_LEVELS, 2u, 1u, 0u); w != UINT32_MAX; w = WorkCell_next(m->active, WorkCell_ACTIVE_LEVELS, 2u, 1u, w + 1u)) {
@@ -190,46 +210,54 @@ void WorkCell_run(WorkCell *m)
             case WorkCell_Start:
                 /* Start: Idle -> (LeftArm, RightArm) */
 #line 32 "work_cell_scalable.sfc"
-                if (m->av[WorkCell_Idle] && (PartReady() && !(m->parts >= 100 /* MAX_PARTS */))) {
-#line 195 "work_cell_scalable.c"
-                    if (--m->av[WorkCell_Idle] == 0u) { WorkCell_erase(m->active, WorkCell_ACTIVE_LEVELS, 2u, 0u, WorkCell_Idle); lost[lost_n++] = WorkCell_Idle; }
-                    add[add_n++] = WorkCell_LeftArm;
-                    add[add_n++] = WorkCell_RightArm;
+                if ((m->av[WorkCell_Idle] != 0u) && (PartReady() && !(m->parts >= 100 /* MAX_PARTS */))) {
+#line 215 "work_cell_scalable.c"
+                    m->av[WorkCell_Idle]--;
+                    if (m->av[WorkCell_Idle] == 0u) { WorkCell_erase(m->active, WorkCell_ACTIVE_LEVELS, 2u, 0u, WorkCell_Idle); lost[lost_n] = WorkCell_Idle; lost_n++; }
+                    add[add_n] = WorkCell_LeftArm; add_n++;
+                    add[add_n] = WorkCell_RightArm; add_n++;
                 }
                 break;
             case WorkCell_T1:
                 /* T1: LeftArm -> LeftDone */
 #line 33 "work_cell_scalable.sfc"
-                if (m->av[WorkCell_LeftArm] && (AtTarget(0))) {
-#line 205 "work_cell_scalable.c"
-                    if (--m->av[WorkCell_LeftArm] == 0u) { WorkCell_erase(m->active, WorkCell_ACTIVE_LEVELS, 2u, 0u, WorkCell_LeftArm); lost[lost_n++] = WorkCell_LeftArm; }
-                    add[add_n++] = WorkCell_LeftDone;
+                if ((m->av[WorkCell_LeftArm] != 0u) && (AtTarget(0))) {
+#line 226 "work_cell_scalable.c"
+                    m->av[WorkCell_LeftArm]--;
+                    if (m->av[WorkCell_LeftArm] == 0u) { WorkCell_erase(m->active, WorkCell_ACTIVE_LEVELS, 2u, 0u, WorkCell_LeftArm); lost[lost_n] = WorkCell_LeftArm; lost_n++; }
+                    add[add_n] = WorkCell_LeftDone; add_n++;
                 }
                 break;
             case WorkCell_T2:
                 /* T2: RightArm -> RightDone */
 #line 34 "work_cell_scalable.sfc"
-                if (m->av[WorkCell_RightArm] && (AtTarget(1) || (m->timer_RightArm >= 50u /* 1000ms */ && Clear()))) {
-#line 214 "work_cell_scalable.c"
-                    if (--m->av[WorkCell_RightArm] == 0u) { WorkCell_erase(m->active, WorkCell_ACTIVE_LEVELS, 2u, 0u, WorkCell_RightArm); lost[lost_n++] = WorkCell_RightArm; }
-                    add[add_n++] = WorkCell_RightDone;
+                if ((m->av[WorkCell_RightArm] != 0u) && (AtTarget(1) || ((m->timer_RightArm >= 50u /* 1000ms */) && Clear()))) {
+#line 236 "work_cell_scalable.c"
+                    m->av[WorkCell_RightArm]--;
+                    if (m->av[WorkCell_RightArm] == 0u) { WorkCell_erase(m->active, WorkCell_ACTIVE_LEVELS, 2u, 0u, WorkCell_RightArm); lost[lost_n] = WorkCell_RightArm; lost_n++; }
+                    add[add_n] = WorkCell_RightDone; add_n++;
                 }
                 break;
             case WorkCell_Stuck:
                 /* Stuck: LeftArm -> Jammed */
 #line 35 "work_cell_scalable.sfc"
-                if (m->av[WorkCell_LeftArm] && (m->timer_LeftArm > 75u /* 1500ms */)) {
-#line 223 "work_cell_scalable.c"
-                    if (--m->av[WorkCell_LeftArm] == 0u) { WorkCell_erase(m->active, WorkCell_ACTIVE_LEVELS, 2u, 0u, WorkCell_LeftArm); lost[lost_n++] = WorkCell_LeftArm; }
-                    add[add_n++] = WorkCell_Jammed;
+                if ((m->av[WorkCell_LeftArm] != 0u) && (m->timer_LeftArm > 75u /* 1500ms */)) {
+#line 246 "work_cell_scalable.c"
+                    m->av[WorkCell_LeftArm]--;
+                    if (m->av[WorkCell_LeftArm] == 0u) { WorkCell_erase(m->active, WorkCell_ACTIVE_LEVELS, 2u, 0u, WorkCell_LeftArm); lost[lost_n] = WorkCell_LeftArm; lost_n++; }
+                    add[add_n] = WorkCell_Jammed; add_n++;
                 }
                 break;
             case WorkCell_Join:
                 /* Join: (LeftDone, RightDone) -> Idle */
-                if (m->av[WorkCell_LeftDone] && m->av[WorkCell_RightDone]) {
-                    if (--m->av[WorkCell_LeftDone] == 0u) { WorkCell_erase(m->active, WorkCell_ACTIVE_LEVELS, 2u, 0u, WorkCell_LeftDone); }
-                    if (--m->av[WorkCell_RightDone] == 0u) { WorkCell_erase(m->active, WorkCell_ACTIVE_LEVELS, 2u, 0u, WorkCell_RightDone); lost[lost_n++] = WorkCell_RightDone; }
-                    add[add_n++] = WorkCell_Idle;
+#line 36 "work_cell_scalable.sfc"
+                if ((m->av[WorkCell_LeftDone] != 0u) && (m->av[WorkCell_RightDone] != 0u)) {
+#line 256 "work_cell_scalable.c"
+                    m->av[WorkCell_LeftDone]--;
+                    if (m->av[WorkCell_LeftDone] == 0u) { WorkCell_erase(m->active, WorkCell_ACTIVE_LEVELS, 2u, 0u, WorkCell_LeftDone); }
+                    m->av[WorkCell_RightDone]--;
+                    if (m->av[WorkCell_RightDone] == 0u) { WorkCell_erase(m->active, WorkCell_ACTIVE_LEVELS, 2u, 0u, WorkCell_RightDone); lost[lost_n] = WorkCell_RightDone; lost_n++; }
+                    add[add_n] = WorkCell_Idle; add_n++;
                 }
                 break;
             default:
@@ -241,9 +269,10 @@ void WorkCell_run(WorkCell *m)
     /* Commit the activation produced in this tick */
     for (i = 0; i < add_n; ++i) {
         p = add[i];
-        if (m->av[p]++ == 0u) {
+        m->av[p]++;
+        if (m->av[p] == 1u) {
             WorkCell_insert(m->active, WorkCell_ACTIVE_LEVELS, 2u, p);
-            if (WorkCell_watched(p)) { gained[gained_n++] = (uint8_t)p; }
+            if (WorkCell_watched(p)) { gained[gained_n] = (uint8_t)p; gained_n++; }
         }
     }
 
@@ -256,25 +285,26 @@ void WorkCell_run(WorkCell *m)
         case WorkCell_Idle:
 #line 19 "work_cell_scalable.sfc"
             Lamp(false);
-#line 260 "work_cell_scalable.c"
+#line 289 "work_cell_scalable.c"
             break;
         case WorkCell_RightDone:
 #line 24 "work_cell_scalable.sfc"
             m->parts += 1;
-#line 265 "work_cell_scalable.c"
+#line 294 "work_cell_scalable.c"
             break;
         default:
             break;
         }
     }
-    for (i = 0, w = 0; i < gained_n; ++i) {
-        while (w < lost_n && lost[w] < gained[i]) { ++w; }
-        if (w < lost_n && lost[w] == gained[i]) { continue; } /* lost and regained: no entry, the timer goes on */
+    w = 0;
+    for (i = 0; i < gained_n; ++i) {
+        while ((w < lost_n) && (lost[w] < gained[i])) { ++w; }
+        if ((w < lost_n) && (lost[w] == gained[i])) { continue; } /* lost and regained: no entry, the timer goes on */
         switch (gained[i]) {
         case WorkCell_Idle:
 #line 18 "work_cell_scalable.sfc"
             Lamp(true);
-#line 278 "work_cell_scalable.c"
+#line 308 "work_cell_scalable.c"
             break;
         case WorkCell_LeftArm:
             m->timer_LeftArm = 0;
@@ -287,7 +317,7 @@ void WorkCell_run(WorkCell *m)
             Alarm();
 #line 28 "work_cell_scalable.sfc"
             fputs("work cell jammed\n", stderr);
-#line 291 "work_cell_scalable.c"
+#line 321 "work_cell_scalable.c"
             break;
         default:
             break;
@@ -296,17 +326,17 @@ void WorkCell_run(WorkCell *m)
 
 #ifdef WorkCell_HOOKS
     /* Observation hooks: places that lost, then gained activation; transitions open from now on */
-    for (p = 0; p < WorkCell_PLACE_COUNT; ++p) {
-        if (((before[p >> 5] >> (p & 31u)) & 1u) != 0u && m->av[p] == 0u) { WorkCell_activated(m, (int)p, false); }
+    for (p = 0; p < (uint32_t)WorkCell_PLACE_COUNT; ++p) {
+        if ((((before[p >> 5] >> (p & 31u)) & 1u) != 0u) && (m->av[p] == 0u)) { WorkCell_activated(m, (WorkCell_place)p, false); }
     }
-    for (p = 0; p < WorkCell_PLACE_COUNT; ++p) {
-        if (((before[p >> 5] >> (p & 31u)) & 1u) == 0u && m->av[p] != 0u) { WorkCell_activated(m, (int)p, true); }
+    for (p = 0; p < (uint32_t)WorkCell_PLACE_COUNT; ++p) {
+        if ((((before[p >> 5] >> (p & 31u)) & 1u) == 0u) && (m->av[p] != 0u)) { WorkCell_activated(m, (WorkCell_place)p, true); }
     }
-    if (!(((before[WorkCell_Idle >> 5] >> (WorkCell_Idle & 31u)) & 1u)) && m->av[WorkCell_Idle]) { WorkCell_enabled(m, WorkCell_Start); }
-    if (!(((before[WorkCell_LeftArm >> 5] >> (WorkCell_LeftArm & 31u)) & 1u)) && m->av[WorkCell_LeftArm]) { WorkCell_enabled(m, WorkCell_T1); }
-    if (!(((before[WorkCell_RightArm >> 5] >> (WorkCell_RightArm & 31u)) & 1u)) && m->av[WorkCell_RightArm]) { WorkCell_enabled(m, WorkCell_T2); }
-    if (!(((before[WorkCell_LeftArm >> 5] >> (WorkCell_LeftArm & 31u)) & 1u)) && m->av[WorkCell_LeftArm]) { WorkCell_enabled(m, WorkCell_Stuck); }
-    if (!(((before[WorkCell_LeftDone >> 5] >> (WorkCell_LeftDone & 31u)) & 1u) && ((before[WorkCell_RightDone >> 5] >> (WorkCell_RightDone & 31u)) & 1u)) && m->av[WorkCell_LeftDone] && m->av[WorkCell_RightDone]) { WorkCell_enabled(m, WorkCell_Join); }
+    if (!((((before[(uint32_t)WorkCell_Idle >> 5] >> ((uint32_t)WorkCell_Idle & 31u)) & 1u) != 0u)) && (m->av[WorkCell_Idle] != 0u)) { WorkCell_enabled(m, WorkCell_Start); }
+    if (!((((before[(uint32_t)WorkCell_LeftArm >> 5] >> ((uint32_t)WorkCell_LeftArm & 31u)) & 1u) != 0u)) && (m->av[WorkCell_LeftArm] != 0u)) { WorkCell_enabled(m, WorkCell_T1); }
+    if (!((((before[(uint32_t)WorkCell_RightArm >> 5] >> ((uint32_t)WorkCell_RightArm & 31u)) & 1u) != 0u)) && (m->av[WorkCell_RightArm] != 0u)) { WorkCell_enabled(m, WorkCell_T2); }
+    if (!((((before[(uint32_t)WorkCell_LeftArm >> 5] >> ((uint32_t)WorkCell_LeftArm & 31u)) & 1u) != 0u)) && (m->av[WorkCell_LeftArm] != 0u)) { WorkCell_enabled(m, WorkCell_Stuck); }
+    if (!((((before[(uint32_t)WorkCell_LeftDone >> 5] >> ((uint32_t)WorkCell_LeftDone & 31u)) & 1u) != 0u) && (((before[(uint32_t)WorkCell_RightDone >> 5] >> ((uint32_t)WorkCell_RightDone & 31u)) & 1u) != 0u)) && (m->av[WorkCell_LeftDone] != 0u) && (m->av[WorkCell_RightDone] != 0u)) { WorkCell_enabled(m, WorkCell_Join); }
 #endif
 
     /* Perform place actions: the active places in declaration order */
@@ -316,12 +346,12 @@ void WorkCell_run(WorkCell *m)
             case WorkCell_LeftArm:
 #line 21 "work_cell_scalable.sfc"
                 Move(0, m->speed);
-#line 320 "work_cell_scalable.c"
+#line 350 "work_cell_scalable.c"
                 break;
             case WorkCell_RightArm:
 #line 22 "work_cell_scalable.sfc"
                 Move(1, -m->speed * 2.0);
-#line 325 "work_cell_scalable.c"
+#line 355 "work_cell_scalable.c"
                 break;
             default:
                 break;
@@ -332,5 +362,5 @@ void WorkCell_run(WorkCell *m)
 
 unsigned WorkCell_activation(const WorkCell *m, int place)
 {
-    return place >= 0 && place < WorkCell_PLACE_COUNT ? m->av[place] : 0u;
+    return ((place >= 0) && (place < (int)WorkCell_PLACE_COUNT)) ? m->av[place] : 0u;
 }

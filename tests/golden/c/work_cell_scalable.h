@@ -10,7 +10,7 @@ extern "C" {
 #endif
 
 /* The places of sfc WorkCell, in declaration order. */
-enum {
+typedef enum {
     WorkCell_Idle,
     WorkCell_LeftArm,
     WorkCell_RightArm,
@@ -18,17 +18,17 @@ enum {
     WorkCell_RightDone,
     WorkCell_Jammed,
     WorkCell_PLACE_COUNT
-};
+} WorkCell_place;
 
 /* Its transitions, in declaration order: the numbers the observation hooks pass. */
-enum {
+typedef enum {
     WorkCell_Start, /* Idle -> (LeftArm, RightArm) */
     WorkCell_T1,    /* LeftArm -> LeftDone */
     WorkCell_T2,    /* RightArm -> RightDone */
     WorkCell_Stuck, /* LeftArm -> Jammed */
     WorkCell_Join,  /* (LeftDone, RightDone) -> Idle */
     WorkCell_TRANSITION_COUNT
-};
+} WorkCell_transition;
 
 /* The state of one engine. The type is complete so that the caller can allocate it (several
    engines may run side by side); only the functions below use its fields. */
@@ -55,9 +55,10 @@ unsigned WorkCell_activation(const WorkCell *m, int place);
 /* Observation hooks (GFE_Activated, GFE_Enabled): an engine built with -DWorkCell_HOOKS calls them and
    the encapsulating code defines them. At the end of each tick's update, in declaration order:
    every place that lost (active false), then gained (active true) its activation; then every
-   transition whose inputs are all active now but were not at the start of the tick. */
-void WorkCell_activated(WorkCell *m, int place, bool active);
-void WorkCell_enabled(WorkCell *m, int transition);
+   transition whose inputs are all active now but were not at the start of the tick.
+   The engine is read only (const): a hook observes, it does not steer. */
+void WorkCell_activated(const WorkCell *m, WorkCell_place place, bool active);
+void WorkCell_enabled(const WorkCell *m, WorkCell_transition transition);
 #endif
 
 /* Functions of interface CellBot that the chart calls: the robot library defines them. */
