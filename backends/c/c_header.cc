@@ -235,14 +235,13 @@ void interface_functions(CodeWriter &w, const Context &c) {
     const auto &name = c.model.functions.at(static_cast<std::size_t>(f)).interface_name;
     if (std::find(interfaces.begin(), interfaces.end(), name) == interfaces.end()) interfaces.push_back(name);
   }
+  const char *who = c.has_sub() ? "the chart and its sub-charts call" : "the chart calls";
   for (const auto &iface : interfaces) {
     w.blank();
     if (iface.empty())
-      w.line("/* Functions the chart{} calls: the robot library defines them. */",
-             c.has_sub() ? " and its sub-charts" : "");
+      w.line("/* Functions {}: the robot library defines them. */", who);
     else
-      w.line("/* Functions of interface {} that the chart{} calls: the robot library defines them. */", iface,
-             c.has_sub() ? " and its sub-charts" : "");
+      w.line("/* Functions of interface {} that {}: the robot library defines them. */", iface, who);
     for (int f : c.functions) {
       const auto &fn = c.model.functions.at(static_cast<std::size_t>(f));
       if (fn.interface_name == iface) w.line("{};", c_prototype(fn, context_first(c, fn)));

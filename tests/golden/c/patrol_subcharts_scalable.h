@@ -138,14 +138,14 @@ void Patrol_activated(const Patrol *m, Patrol_place place, bool active);
 void Patrol_enabled(const Patrol *m, Patrol_transition transition);
 #endif
 
-/* Functions of interface Patrolling that the chart and its sub-charts calls: the robot library defines them. */
+/* Functions of interface Patrolling that the chart and its sub-charts call: the robot library defines them. */
 void Beep(void);
 void Park(void);
 bool Late(void);
 void Lift(void);
 void Squeeze(void);
 
-/* Functions of interface CleanBot that the chart and its sub-charts calls: the robot library defines them. */
+/* Functions of interface CleanBot that the chart and its sub-charts call: the robot library defines them. */
 void DriveToItem(void);
 void PickUp(void);
 bool Arrived(void);

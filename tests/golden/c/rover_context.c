@@ -11,22 +11,7 @@
 #endif
 #endif
 
-/* ---- The instance of Escape run by place Avoid of Roam */
-
-/* The states of fsm Escape, in declaration order: the instance run by place Avoid of Roam. */
-enum {
-    Roam_Avoid_Reverse,
-    Roam_Avoid_Spin,
-    Roam_Avoid_Free,
-    Roam_Avoid_PLACE_COUNT
-};
-
-/* Its transitions, in declaration order. */
-enum {
-    Roam_Avoid_T0, /* Reverse -> Spin */
-    Roam_Avoid_T1, /* Spin -> Free */
-    Roam_Avoid_TRANSITION_COUNT
-};
+/* ---- The instance of Escape run by place Avoid of Roam (its enumerations are in the header, with its struct) */
 
 /* Initial state: Reverse. Calls no code of the chart. */
 static void Roam_Avoid_init(struct Roam_Avoid *m)
@@ -38,45 +23,46 @@ static void Roam_Avoid_init(struct Roam_Avoid *m)
 static void Roam_Avoid_run(struct Roam_Avoid *m)
 {
     /* In a terminal state nothing happens any more */
-    if (m->status != 0) {
-        return;
-    }
-
-    /* Perform state update: the first transition leaving the current state whose condition
-       holds, in declaration order (one per tick) */
-    /* T0: Reverse -> Spin */
+    if (m->status == 0) {
+        /* Perform state update: the first transition leaving the current state whose condition
+           holds, in declaration order (one per tick) */
+        /* T0: Reverse -> Spin */
 #line 19 "rover_context.sfc"
-    if (m->state == Roam_Avoid_Reverse && (Range(m->ctx) > 20)) {
-#line 51 "rover_context.c"
-        m->state = Roam_Avoid_Spin;
-    }
-    /* T1: Spin -> Free */
+        if ((m->state == Roam_Avoid_Reverse) && (Range(m->ctx) > 20)) {
+#line 33 "rover_context.c"
+            m->state = Roam_Avoid_Spin;
+        }
+        /* T1: Spin -> Free */
 #line 20 "rover_context.sfc"
-    else if (m->state == Roam_Avoid_Spin && (!Blocked(m->ctx))) {
-#line 57 "rover_context.c"
-        m->state = Roam_Avoid_Free;
-        m->status = 1;
-    }
+        else if ((m->state == Roam_Avoid_Spin) && (!Blocked(m->ctx))) {
+#line 39 "rover_context.c"
+            m->state = Roam_Avoid_Free;
+            m->status = 1;
+        }
+        else {
+            /* no transition fires: the state stays */
+        }
 
 #ifdef Roam_CHECKS
-    /* Postconditions of the terminal states, checked on entering them */
-    if (m->state == Roam_Avoid_Free) {
+        /* Postconditions of the terminal states, checked on entering them */
+        if (m->state == Roam_Avoid_Free) {
 #line 18 "rover_context.sfc"
-        Roam_ASSERT(!Blocked(m->ctx));
-#line 67 "rover_context.c"
-    }
+            Roam_ASSERT(!Blocked(m->ctx));
+#line 52 "rover_context.c"
+        }
 #endif
 
-    /* Perform the action of the current state */
-    if (m->state == Roam_Avoid_Reverse) {
+        /* Perform the action of the current state */
+        if (m->state == Roam_Avoid_Reverse) {
 #line 16 "rover_context.sfc"
-        Drive(m->ctx, -1);
-#line 75 "rover_context.c"
-    }
-    if (m->state == Roam_Avoid_Spin) {
+            Drive(m->ctx, -1);
+#line 60 "rover_context.c"
+        }
+        if (m->state == Roam_Avoid_Spin) {
 #line 17 "rover_context.sfc"
-        Turn(m->ctx, 1);
-#line 80 "rover_context.c"
+            Turn(m->ctx, 1);
+#line 65 "rover_context.c"
+        }
     }
 }
 
@@ -94,21 +80,21 @@ void Roam_run(Roam *m)
 {
     uint8_t add[Roam_PLACE_COUNT] = {0}; /* activation produced in this tick */
     uint8_t before[Roam_PLACE_COUNT]; /* the activation at the start of the tick */
-    for (int p = 0; p < Roam_PLACE_COUNT; ++p) { before[p] = m->av[p]; }
+    for (int p = 0; p < (int)Roam_PLACE_COUNT; ++p) { before[p] = m->av[p]; }
 
     /* Perform state update: transitions in declaration order; the activation they produce
        waits in add[] and cannot be consumed before the next tick */
     /* Bump: Cruise -> Avoid */
 #line 27 "rover_context.sfc"
-    if (m->av[Roam_Cruise] && (Blocked(m->ctx))) {
-#line 105 "rover_context.c"
+    if ((m->av[Roam_Cruise] != 0u) && (Blocked(m->ctx))) {
+#line 91 "rover_context.c"
         m->av[Roam_Cruise]--;
         add[Roam_Avoid]++;
     }
     /* Clear: Avoid -> Cruise */
 #line 28 "rover_context.sfc"
-    if (m->av[Roam_Avoid] && (before[Roam_Avoid] != 0u && m->Avoid.status == 1)) {
-#line 112 "rover_context.c"
+    if ((m->av[Roam_Avoid] != 0u) && (before[Roam_Avoid] != 0u && m->Avoid.status == 1)) {
+#line 98 "rover_context.c"
         m->av[Roam_Avoid]--;
         add[Roam_Cruise]++;
     }
@@ -119,45 +105,45 @@ void Roam_run(Roam *m)
 
     /* Places that lost their activation exit, then places that gained it enter */
     /* exit Avoid */
-    if (before[Roam_Avoid] && !m->av[Roam_Avoid]) {
+    if ((before[Roam_Avoid] != 0u) && (m->av[Roam_Avoid] == 0u)) {
 #line 26 "rover_context.sfc"
         Lamp(m->ctx, false);
-#line 126 "rover_context.c"
+#line 112 "rover_context.c"
     }
     /* entry Avoid */
-    if (!before[Roam_Avoid] && m->av[Roam_Avoid]) {
+    if ((before[Roam_Avoid] == 0u) && (m->av[Roam_Avoid] != 0u)) {
         Roam_Avoid_init(&m->Avoid); /* start the instance of Escape */
 #line 26 "rover_context.sfc"
         Lamp(m->ctx, true);
-#line 133 "rover_context.c"
+#line 119 "rover_context.c"
     }
 
 #ifdef Roam_HOOKS
     /* Observation hooks: places that lost, then gained activation; transitions open from now on */
-    for (int p = 0; p < Roam_PLACE_COUNT; ++p) {
-        if (before[p] && !m->av[p]) { Roam_activated(m, p, false); }
+    for (int p = 0; p < (int)Roam_PLACE_COUNT; ++p) {
+        if ((before[p] != 0u) && (m->av[p] == 0u)) { Roam_activated(m, (Roam_place)p, false); }
     }
-    for (int p = 0; p < Roam_PLACE_COUNT; ++p) {
-        if (!before[p] && m->av[p]) { Roam_activated(m, p, true); }
+    for (int p = 0; p < (int)Roam_PLACE_COUNT; ++p) {
+        if ((before[p] == 0u) && (m->av[p] != 0u)) { Roam_activated(m, (Roam_place)p, true); }
     }
-    if (!before[Roam_Cruise] && m->av[Roam_Cruise]) { Roam_enabled(m, Roam_Bump); }
-    if (!before[Roam_Avoid] && m->av[Roam_Avoid]) { Roam_enabled(m, Roam_Clear); }
+    if ((before[Roam_Cruise] == 0u) && (m->av[Roam_Cruise] != 0u)) { Roam_enabled(m, Roam_Bump); }
+    if ((before[Roam_Avoid] == 0u) && (m->av[Roam_Avoid] != 0u)) { Roam_enabled(m, Roam_Clear); }
 #endif
 
     /* Perform place actions, each followed by one tick of the instance the place runs */
-    if (m->av[Roam_Cruise]) {
+    if (m->av[Roam_Cruise] != 0u) {
 #line 25 "rover_context.sfc"
         Drive(m->ctx, 2);
-#line 152 "rover_context.c"
+#line 138 "rover_context.c"
     }
-    if (m->av[Roam_Avoid]) {
+    if (m->av[Roam_Avoid] != 0u) {
         Roam_Avoid_run(&m->Avoid); /* one tick of the instance of Escape */
     }
 }
 
 unsigned Roam_activation(const Roam *m, int place)
 {
-    return place >= 0 && place < Roam_PLACE_COUNT ? m->av[place] : 0u;
+    return ((place >= 0) && (place < (int)Roam_PLACE_COUNT)) ? m->av[place] : 0u;
 }
 
 void Roam_set_context(Roam *m, void *ctx)

@@ -10,24 +10,39 @@ extern "C" {
 #endif
 
 /* The places of sfc Roam, in declaration order. */
-enum {
+typedef enum {
     Roam_Cruise,
     Roam_Avoid,
     Roam_PLACE_COUNT
-};
+} Roam_place;
 
 /* Its transitions, in declaration order: the numbers the observation hooks pass. */
-enum {
+typedef enum {
     Roam_Bump,  /* Cruise -> Avoid */
     Roam_Clear, /* Avoid -> Cruise */
     Roam_TRANSITION_COUNT
-};
+} Roam_transition;
+
+/* The states of fsm Escape, in declaration order: the instance run by place Avoid of Roam. */
+typedef enum {
+    Roam_Avoid_Reverse,
+    Roam_Avoid_Spin,
+    Roam_Avoid_Free,
+    Roam_Avoid_PLACE_COUNT
+} Roam_Avoid_place;
+
+/* Its transitions, in declaration order. */
+typedef enum {
+    Roam_Avoid_T0, /* Reverse -> Spin */
+    Roam_Avoid_T1, /* Spin -> Free */
+    Roam_Avoid_TRANSITION_COUNT
+} Roam_Avoid_transition;
 
 /* The state of the instance of Escape run by place Avoid of Roam (engine.c only uses it). */
 struct Roam_Avoid {
-    int state;  /* the current state, a Roam_Avoid_<state> */
-    int status; /* 0 running, 1 succeeded, -1 failed */
-    void *ctx;  /* a copy of the root's context (Roam_set_context) */
+    Roam_Avoid_place state; /* the current state, a Roam_Avoid_<state> */
+    int status;             /* 0 running, 1 succeeded, -1 failed */
+    void *ctx;              /* a copy of the root's context (Roam_set_context) */
 };
 
 /* The state of one engine. The type is complete so that the caller can allocate it (several
@@ -60,12 +75,13 @@ const char *Roam_transition_name(int transition);
 /* Observation hooks (GFE_Activated, GFE_Enabled): an engine built with -DRoam_HOOKS calls them and
    the encapsulating code defines them. At the end of each tick's update, in declaration order:
    every place that lost (active false), then gained (active true) its activation; then every
-   transition whose inputs are all active now but were not at the start of the tick. */
-void Roam_activated(Roam *m, int place, bool active);
-void Roam_enabled(Roam *m, int transition);
+   transition whose inputs are all active now but were not at the start of the tick.
+   The engine is read only (const): a hook observes, it does not steer. */
+void Roam_activated(const Roam *m, Roam_place place, bool active);
+void Roam_enabled(const Roam *m, Roam_transition transition);
 #endif
 
-/* Functions of interface Rover that the chart and its sub-charts calls: the robot library defines them. */
+/* Functions of interface Rover that the chart and its sub-charts call: the robot library defines them. */
 bool Blocked(void *ctx);
 void Drive(void *ctx, int speed);
 void Lamp(void *ctx, bool on);
