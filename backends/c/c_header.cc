@@ -215,8 +215,8 @@ std::string context_first(const Context &c, const model::Function &f) {
 /// a prototype does not declare it in its own scope (gcc, clang: "will not be visible outside").
 void context_tag(CodeWriter &w, const Context &c) {
   const std::string &t = c.options.context_type;
-  for (const char *kind : {"struct ", "union ", "const struct ", "const union ", "volatile struct ",
-                           "volatile union "}) {
+  for (const char *kind :
+       {"struct ", "union ", "const struct ", "const union ", "volatile struct ", "volatile union "}) {
     if (t.rfind(kind, 0) != 0) continue;
     std::string rest = t.substr(std::string(kind).size());
     std::string tag = rest.substr(0, rest.find_first_of(" *"));
@@ -238,10 +238,8 @@ void interface_functions(CodeWriter &w, const Context &c) {
   const char *who = c.has_sub() ? "the chart and its sub-charts call" : "the chart calls";
   for (const auto &iface : interfaces) {
     w.blank();
-    if (iface.empty())
-      w.line("/* Functions {}: the robot library defines them. */", who);
-    else
-      w.line("/* Functions of interface {} that {}: the robot library defines them. */", iface, who);
+    if (iface.empty()) w.line("/* Functions {}: the robot library defines them. */", who);
+    else w.line("/* Functions of interface {} that {}: the robot library defines them. */", iface, who);
     for (int f : c.functions) {
       const auto &fn = c.model.functions.at(static_cast<std::size_t>(f));
       if (fn.interface_name == iface) w.line("{};", c_prototype(fn, context_first(c, fn)));

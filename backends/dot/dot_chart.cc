@@ -1,6 +1,7 @@
 #include "dot_chart.h"
 
 #include "dot_text.h"
+#include "xml_text.h"
 
 #include <fmt/format.h>
 
@@ -40,7 +41,7 @@ std::string transition_node(const std::string &id, const std::string &label) {
   return fmt::format("  {} [shape=plain, label=<<TABLE BORDER=\"0\" CELLBORDER=\"0\" CELLSPACING=\"0\" "
                      "CELLPADDING=\"0\"><TR><TD PORT=\"bar\" BGCOLOR=\"black\" WIDTH=\"36\" HEIGHT=\"4\" "
                      "FIXEDSIZE=\"TRUE\"></TD><TD ALIGN=\"LEFT\" CELLPADDING=\"3\">{}</TD></TR></TABLE>>];\n",
-                     id, html_escape(label));
+                     id, text::xml_escape(label));
 }
 
 /// Grafcet's double line where a transition forks into several places or several places join

@@ -17,20 +17,6 @@ std::string quote(const std::string &text) {
   return out + "\"";
 }
 
-std::string html_escape(const std::string &text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-    case '&': out += "&amp;"; break;
-    case '<': out += "&lt;"; break;
-    case '>': out += "&gt;"; break;
-    case '"': out += "&quot;"; break;
-    default: out += c;
-    }
-  }
-  return out;
-}
-
 std::string block_text(const model::Model &m, const std::vector<model::Stmt> &block) {
   std::string out;
   for (const auto &s : block) {

@@ -9,8 +9,6 @@ namespace gfec::dot {
 
 /// `text` as a DOT double-quoted string, quotes included. "\n" inside stays a line break.
 std::string quote(const std::string &text);
-/// `text` with '&', '<', '>' and '"' written as entities, for a DOT HTML-like label.
-std::string html_escape(const std::string &text);
 using model::source_text;  ///< the chart text of a range, whitespace runs folded (model.h)
 /// The text of a statement block, one statement per line.
 std::string block_text(const model::Model &m, const std::vector<model::Stmt> &block);

@@ -16,8 +16,7 @@ constexpr unsigned kCharts = kAcceptsSfc | kAcceptsFsm;
 
 // Back ends register here as they land, with what they accept and write.
 const std::vector<BackendInfo> kBackends = {
-    {"c", kCharts, ".c", ".h", "a C99 engine: the default for an sfc or fsm", "docs/c-engine.md", make_c_backend,
-     true},
+    {"c", kCharts, ".c", ".h", "a C99 engine: the default for an sfc or fsm", "docs/c-engine.md", make_c_backend, true},
     {"cpp", kAcceptsPlan, ".cpp", ".hpp", "a plan's wiring against the afp runtime: the default for a plan",
      "docs/plans.md", make_cpp_backend},
     {"toolbox-skeleton", kAcceptsToolbox, ".hpp", ".cpp", "a toolbox's C++ classes to fill in", "docs/toolbox.md",

@@ -9,6 +9,7 @@
 #include "scenario/scenario.h"
 #include "scenario/snapshot.h"
 #include "test_engine.h"
+#include "xml_text.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -218,23 +219,6 @@ void load(TestFile &f) {
   f.written_tests = f.suite.written;
 }
 
-std::string xml(const std::string &s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-    case '&': out += "&amp;"; break;
-    case '<': out += "&lt;"; break;
-    case '>': out += "&gt;"; break;
-    case '"': out += "&quot;"; break;
-    case '\'': out += "&apos;"; break;
-    default:
-      if (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t') out += ' ';
-      else out += c;
-    }
-  }
-  return out;
-}
-
 /// JUnit XML: a testsuite per file, a testcase per test; a file that does not compile is one
 /// failed testcase named after the file.
 std::string junit(const std::vector<std::unique_ptr<TestFile>> &files,
@@ -255,15 +239,15 @@ std::string junit(const std::vector<std::unique_ptr<TestFile>> &files,
       }
       ++n;
       time += seconds;
-      cases +=
-          fmt::format("    <testcase name=\"{}\" classname=\"{}\" time=\"{:.3f}\"", xml(name), xml(f->path), seconds);
+      cases += fmt::format("    <testcase name=\"{}\" classname=\"{}\" time=\"{:.3f}\"", text::xml_escape(name),
+                           text::xml_escape(f->path), seconds);
       if (first.empty()) {
         cases += "/>\n";
         return;
       }
       ++failed;
       cases += fmt::format(">\n      <failure message=\"{}\" type=\"expectation\">{}</failure>\n    </testcase>\n",
-                           xml(first), xml(all));
+                           text::xml_escape(first), text::xml_escape(all));
     };
     if (f->unreadable || f->diag.has_errors()) {
       failure(f->path, f->diag, f->sources, 0);
@@ -271,14 +255,14 @@ std::string junit(const std::vector<std::unique_ptr<TestFile>> &files,
         ++failed;
         cases = fmt::format("    <testcase name=\"{0}\" classname=\"{0}\" time=\"0.000\">\n      <failure "
                             "message=\"cannot read '{0}'\" type=\"io\"/>\n    </testcase>\n",
-                            xml(f->path));
+                            text::xml_escape(f->path));
       }
     }
     for (const auto &o : outcomes)
       if (o->file == f.get()) failure(o->test->name, o->diag, f->sources, o->seconds);
     suites += fmt::format(
         "  <testsuite name=\"{}\" tests=\"{}\" failures=\"{}\" errors=\"0\" time=\"{:.3f}\">\n{}  </testsuite>\n",
-        xml(f->path), n, failed, time, cases);
+        text::xml_escape(f->path), n, failed, time, cases);
     total += n;
     failures += failed;
   }

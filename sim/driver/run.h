@@ -63,7 +63,7 @@ struct RobotRun {
   /// only, docs/viewer.md; else empty).
   std::vector<std::vector<std::string>> calls;
   long ended = -1;  ///< the trace row of the tick its engine ended in (-1: it did not)
-  int state = -1;                        ///< an fsm's state at the end
+  int state = -1;   ///< an fsm's state at the end
   // The robot at the end.
   Pose final_pose;
   double distance_m = 0;

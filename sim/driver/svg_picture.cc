@@ -8,6 +8,7 @@
 #include "core/geometry.h"
 #include "driver/engine_log.h"
 #include "driver/reports.h"
+#include "xml_text.h"
 
 namespace carbot::driver {
 namespace {
@@ -26,20 +27,6 @@ constexpr const char* kDest = "#2e9e5b";
 constexpr const char* kBump = "#d62839";
 constexpr const char* kText = "#2b2b2b";
 constexpr const char* kMuted = "#6b6b6b";
-
-std::string escape_xml(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 /// World metres -> picture pixels (y up in the world, down in SVG).
 struct Frame {
@@ -137,7 +124,7 @@ void draw_items(Svg& s, const Frame& f, const RunReport& r) {
     draw_item(s, f, spec.at, true);
     draw_item(s, f, now.at, false);
     s.add(R"(<text x="{:.1f}" y="{:.1f}" font-size="13" fill="{}">{}</text>)", f.x(now.at.x) + 9, f.y(now.at.y) - 9,
-          kText, escape_xml(now.name));
+          kText, gfec::text::xml_escape(now.name));
   }
 }
 
@@ -280,7 +267,7 @@ void draw_team(Svg& s, const Frame& f, const RunReport& r) {
         robot.state >= 0 && robot.state < static_cast<int>(r.chart.rows.size()) ? r.chart.rows[robot.state].name : "";
     s.add(R"(<text x="{:.1f}" y="{:.1f}" font-size="13" font-weight="bold" fill="{}">{}{}</text>)",
           f.x(robot.final_pose.x) + 14, f.y(robot.final_pose.y) + 26, robot_colour(i), i,
-          escape_xml(state.empty() ? "" : " " + state));
+          gfec::text::xml_escape(state.empty() ? "" : " " + state));
   }
   for (const RobotContact& c : r.sim.robot_contacts())
     s.add(R"(<path d="M{:.1f},{:.1f} l7,-7 l7,7 l-7,7 z" fill="{}" stroke="#5c4305" stroke-width="1"/>)",
@@ -358,7 +345,7 @@ void draw_legend(Svg& s, double x, double y, double right, const RunReport& r) {
     const double w = 40 + 7.2 * e.label.size();
     if (cx > x && cx + w > right) cx = x, y += 24;  // wrap to a second row
     s.add(R"~(<g transform="translate({:.1f},{:.1f})">{}<text x="28" y="4" font-size="13" fill="{}">{}</text></g>)~",
-          cx, y, e.swatch, kText, escape_xml(e.label));
+          cx, y, e.swatch, kText, gfec::text::xml_escape(e.label));
     cx += w;
   }
 }
@@ -383,10 +370,10 @@ std::string svg_picture(const RunReport& r) {
   s.add(
       R"(<svg xmlns="http://www.w3.org/2000/svg" width="{:.0f}" height="{:.0f}" viewBox="0 0 {:.0f} {:.0f}" font-family="DejaVu Sans, Helvetica, Arial, sans-serif">)",
       width, height, width, height);
-  s.add("<title>{}</title>", escape_xml(title));
+  s.add("<title>{}</title>", gfec::text::xml_escape(title));
   s.add(R"(<rect width="100%" height="100%" fill="{}"/>)", kPage);
   s.add(R"(<text x="{:.0f}" y="28" font-size="20" font-weight="bold" fill="{}">{}</text>)", kMargin, kText,
-        escape_xml(heading));
+        gfec::text::xml_escape(heading));
   std::string facts =
       fmt::format("{:.2f} m driven · {} bump{}", r.sim.odometer(), r.sim.bumps(), r.sim.bumps() == 1 ? "" : "s");
   if (!r.run.robots.empty()) {
@@ -405,7 +392,8 @@ std::string svg_picture(const RunReport& r) {
     facts += fmt::format(" · {} {:.2f} m from its destination{}", it.name, distance(it.at, it.destination),
                          it.held ? " (held)" : "");
   facts += fmt::format(" · world {:.1f} × {:.1f} m", w.size.x, w.size.y);
-  s.add(R"(<text x="{:.0f}" y="50" font-size="13" fill="{}">{}</text>)", kMargin, kMuted, escape_xml(facts));
+  s.add(R"(<text x="{:.0f}" y="50" font-size="13" fill="{}">{}</text>)", kMargin, kMuted,
+        gfec::text::xml_escape(facts));
 
   draw_floor(s, f, w);
   draw_line(s, f, w.line);

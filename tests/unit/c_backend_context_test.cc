@@ -133,30 +133,27 @@ TEST_CASE("c engine context: two engines of one chart drive two rovers, each onl
   // Rover a: cruises, is blocked in tick 2, backs off until the range opens (tick 3), spins
   // while still blocked (tick 4), is free in tick 5 and cruises again from tick 6. Rover b is
   // blocked at once, far from anything: it spins in the very first tick of its Escape.
-  const std::string a =
-      "a: |"
-      " Blocked Drive(2) |"                 // tick 1: Cruise: Bump not taken; Cruise's action
-      " Blocked Lamp(on) Range Drive(-1) |"  // 2: Bump; Avoid's entry; Escape's first tick: Reverse
-      " Range Turn(1) |"                     // 3: Clear not yet (Escape runs); Reverse -> Spin, Spin's action
-      " Blocked Turn(1) |"                   // 4: Spin stays (still blocked)
-      " Blocked{post} |"                     // 5: Spin -> Free, success: no action
-      " Lamp(off) Drive(2) |"                // 6: Clear (succeeded at the start of the tick); Avoid's exit
-      " Blocked Drive(2)\n";                 // 7: cruising
-  const std::string b =
-      "b: |"
-      " Blocked Lamp(on) Range Turn(1) |"  // tick 1: Bump; Escape: Reverse -> Spin at once (range 50)
-      " Blocked Turn(1) |"                 // 2: still blocked
-      " Blocked{post} |"                   // 3: Spin -> Free
-      " Lamp(off) Drive(2) |"              // 4: Clear
-      " Blocked Drive(2) |"
-      " Blocked Drive(2) |"
-      " Blocked Drive(2)\n";
+  const std::string a = "a: |"
+                        " Blocked Drive(2) |"                  // tick 1: Cruise: Bump not taken; Cruise's action
+                        " Blocked Lamp(on) Range Drive(-1) |"  // 2: Bump; Avoid's entry; Escape's first tick: Reverse
+                        " Range Turn(1) |"       // 3: Clear not yet (Escape runs); Reverse -> Spin, Spin's action
+                        " Blocked Turn(1) |"     // 4: Spin stays (still blocked)
+                        " Blocked{post} |"       // 5: Spin -> Free, success: no action
+                        " Lamp(off) Drive(2) |"  // 6: Clear (succeeded at the start of the tick); Avoid's exit
+                        " Blocked Drive(2)\n";   // 7: cruising
+  const std::string b = "b: |"
+                        " Blocked Lamp(on) Range Turn(1) |"  // tick 1: Bump; Escape: Reverse -> Spin at once (range 50)
+                        " Blocked Turn(1) |"                 // 2: still blocked
+                        " Blocked{post} |"                   // 3: Spin -> Free
+                        " Lamp(off) Drive(2) |"              // 4: Clear
+                        " Blocked Drive(2) |"
+                        " Blocked Drive(2) |"
+                        " Blocked Drive(2)\n";
   // Under Roam_CHECKS Free's postcondition !Blocked() is asserted on entering it: one more call,
   // on the rover of the engine that entered it.
   auto expected = [&](bool checks) {
     std::string log = a + b;
-    for (std::size_t at; (at = log.find("{post}")) != std::string::npos;)
-      log.replace(at, 6, checks ? " Blocked" : "");
+    for (std::size_t at; (at = log.find("{post}")) != std::string::npos;) log.replace(at, 6, checks ? " Blocked" : "");
     return log;
   };
   for (EngineForm form : {EngineForm::Readable, EngineForm::Scalable}) {
@@ -311,11 +308,12 @@ sfc Clash {
   transition context -> names when ctx_ok();
 }
 )C";
-  auto compiled = compile_chart({{"clash.sfc", chart}}, "clash.sfc", "engine.c", true, EngineForm::Auto, "void *", true);
+  auto compiled =
+      compile_chart({{"clash.sfc", chart}}, "clash.sfc", "engine.c", true, EngineForm::Auto, "void *", true);
   INFO(compiled->errors);
   REQUIRE(!compiled->diag.has_errors());
   const std::string &h = compiled->files[1].contents;
-  CHECK(h.find("    int ctx; ") != std::string::npos);    // the var keeps its name
+  CHECK(h.find("    int ctx; ") != std::string::npos);     // the var keeps its name
   CHECK(h.find("    void *ctx_; ") != std::string::npos);  // the context's member gives way
   CHECK(h.find("void Put(void *ctx__, int ctx, int ctx_);") != std::string::npos);
   CHECK(h.find("bool ctx_ok(void *ctx);") != std::string::npos);

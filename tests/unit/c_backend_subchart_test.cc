@@ -23,8 +23,8 @@ std::string run_both(const std::string &test, const model::Model &m, const std::
   const EngineForm forms[2] = {EngineForm::Readable, EngineForm::Scalable};
   for (int f = 0; f < (context ? 4 : 2); ++f) {
     auto files = emit_c(m, "engine.c", true, "hand.sfc", forms[f % 2], f < 2 ? "" : "void *");
-    logs[f] = compile_and_run(test + (f % 2 == 0 ? "" : "_scalable") + (f < 2 ? "" : "_context"), files, m,
-                              m.charts[0], script, defines, true, f >= 2);
+    logs[f] = compile_and_run(test + (f % 2 == 0 ? "" : "_scalable") + (f < 2 ? "" : "_context"), files, m, m.charts[0],
+                              script, defines, true, f >= 2);
   }
   INFO("the scalable engine's log differs from the readable one's");
   CHECK(logs[1] == logs[0]);
