@@ -220,7 +220,8 @@ unsigned {activation}(const void *m, int p) {{ return {n}_activation((const {n} 
 )",
                      fmt::arg("kind", c.kind), fmt::arg("n", n), fmt::arg("size", kEngineSize),
                      fmt::arg("init", kEngineInit), fmt::arg("set_context", kEngineSetContext),
-                     fmt::arg("run", kEngineRun), fmt::arg("status", kEngineStatus), fmt::arg("body", status), fmt::arg("state", state), fmt::arg("places", kEnginePlaces),
+                     fmt::arg("run", kEngineRun), fmt::arg("status", kEngineStatus), fmt::arg("body", status),
+                     fmt::arg("state", state), fmt::arg("places", kEnginePlaces),
                      fmt::arg("activation", kEngineActivation));
 }
 
