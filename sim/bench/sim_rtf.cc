@@ -12,6 +12,7 @@
 
 #include "core/simulation.h"
 #include "core/world.h"
+#include "hal/carbot_hal.h"
 #include "hal/hal_binding.h"
 #include "robots/robots.h"
 
@@ -22,10 +23,12 @@ namespace {
 /// One side of the GFE line follower: forward until the line, stopped until white again.
 struct SideController {
   bool running = true;
-  void tick(bool (*black)(), bool (*white)(), void (*fw)(), void (*stop)()) {
-    if (running && black()) running = false;
-    else if (!running && white()) running = true;
-    running ? fw() : stop();
+  using Condition = bool (*)(CarbotRobot*);
+  using Action = void (*)(CarbotRobot*);
+  void tick(CarbotRobot* robot, Condition black, Condition white, Action fw, Action stop) {
+    if (running && black(robot)) running = false;
+    else if (!running && white(robot)) running = true;
+    running ? fw(robot) : stop(robot);
   }
 };
 
@@ -34,10 +37,11 @@ double measure(const World& world, double physics_step, double seconds, double& 
   hal::bind(&sim);
   linebot_reset();
   SideController left, right;
+  CarbotRobot* robot = carbot_robot_handle(0);  // the calls' context, as an engine passes it
   const auto start = std::chrono::steady_clock::now();
   while (sim.time() < seconds - 1e-9) {
-    left.tick(Left_IR_Black, Left_IR_White, Left_FW, Left_Stop);
-    right.tick(Right_IR_Black, Right_IR_White, Right_FW, Right_Stop);
+    left.tick(robot, Left_IR_Black, Left_IR_White, Left_FW, Left_Stop);
+    right.tick(robot, Right_IR_Black, Right_IR_White, Right_FW, Right_Stop);
     sim.step_control();
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -207,6 +207,8 @@ std::string c_shim(const ChartInfo& c) {
 
 size_t {size}(void) {{ return sizeof({n}); }}
 void {init}(void *m) {{ {n}_init(({n} *)m); }}
+/* The instance context: the robot every interface call of this engine is for. */
+void {set_context}(void *m, struct CarbotRobot *robot) {{ {n}_set_context(({n} *)m, robot); }}
 void {run}(void *m) {{ {n}_run(({n} *)m); }}
 int {status}(const void *m) {{
   {body}
@@ -217,8 +219,9 @@ int {places}(void) {{ return {n}_PLACE_COUNT; }}
 unsigned {activation}(const void *m, int p) {{ return {n}_activation((const {n} *)m, p); }}
 )",
                      fmt::arg("kind", c.kind), fmt::arg("n", n), fmt::arg("size", kEngineSize),
-                     fmt::arg("init", kEngineInit), fmt::arg("run", kEngineRun), fmt::arg("status", kEngineStatus),
-                     fmt::arg("body", status), fmt::arg("state", state), fmt::arg("places", kEnginePlaces),
+                     fmt::arg("init", kEngineInit), fmt::arg("set_context", kEngineSetContext),
+                     fmt::arg("run", kEngineRun), fmt::arg("status", kEngineStatus), fmt::arg("body", status),
+                     fmt::arg("state", state), fmt::arg("places", kEnginePlaces),
                      fmt::arg("activation", kEngineActivation));
 }
 
@@ -251,23 +254,25 @@ std::string record_wrappers(const ChartInfo& c) {
 #include <stdbool.h>
 #include <stdio.h>
 
+struct CarbotRobot;
 void carbot_sim_call(const char *text);
 )",
                   c.name);
   for (const ChartInfo::Function& f : c.functions) {
     if (!recordable(f)) continue;
-    std::string params, args, formats, values;
+    // The instance context first (kContextType), forwarded: the call reaches its own robot.
+    std::string params = std::string(kContextType) + "ctx", args = "ctx", formats, values;
     for (std::size_t i = 0; i < f.params.size(); ++i) {
       const std::string& t = f.params[i];
-      params += fmt::format("{}{} a{}", i ? ", " : "", t, i);
-      args += fmt::format("{}a{}", i ? ", " : "", i);
+      params += fmt::format(", {} a{}", t, i);
+      args += fmt::format(", a{}", i);
       formats += i ? ", " : "";
       formats += t == "bool" ? "%s" : t == "int" ? "%d" : "%g";
       values += t == "bool"  ? fmt::format(", a{} ? \"true\" : \"false\"", i)
                 : t == "int" ? fmt::format(", a{}", i)
                              : fmt::format(", (double)a{}", i);
     }
-    const std::string signature = params.empty() ? "void" : params;
+    const std::string& signature = params;
     const bool is_void = f.result == "void";
     const std::string result_format = is_void              ? ""
                                       : f.result == "bool" ? " = %s"
@@ -437,7 +442,8 @@ BuiltEngine build_engine(const Options& o, const std::string& dir) {
             "compiling the plan engine");
     return built;
   }
-  run_gfec({o.gfec, o.chart, "-o", dir + "/engine.c"}, o.chart);
+  // Each engine instance gets its robot as context (docs/sim.md "Several robots").
+  run_gfec({o.gfec, std::string("--context-type=") + kContextType, o.chart, "-o", dir + "/engine.c"}, o.chart);
   write_file(dir + "/shim.c", c_shim(built.chart));
   // A prefixed robot library: the engine's calls (in a recording build, the wrappers' calls)
   // are renamed by a header.

@@ -3,6 +3,11 @@
 
 namespace carbot::driver {
 
+/// The instance context type carbot-sim builds C engines with (gfec --context-type): a robot's
+/// handle (sim/hal/carbot_hal.h), every interface call's first argument. It ends in `*`, so a
+/// parameter's name can follow it directly.
+constexpr const char* kContextType = "struct CarbotRobot *";
+
 constexpr const char* kEngineSize = "carbot_engine_size";  ///< size_t (void): bytes of engine state
 constexpr const char* kEngineInit = "carbot_engine_init";  ///< void (void*)
 constexpr const char* kEngineRun = "carbot_engine_run";    ///< void (void*): one tick
@@ -18,6 +23,8 @@ constexpr const char* kEngineReport =
     "carbot_engine_report";  ///< void (void*, int agent, int state), a team machine only: X_report
 constexpr const char* kEngineInstanceActivation =
     "carbot_engine_instance_activation";  ///< unsigned (const void*, int, int), optional: a sub-chart instance's place
+constexpr const char* kEngineSetContext =
+    "carbot_engine_set_context";  ///< void (void*, struct CarbotRobot*), C engines: X_set_context (the robot)
 constexpr const char* kEngineFini = "carbot_engine_fini";  ///< void (void*), optional: destroys the state
 
 }  // namespace carbot::driver

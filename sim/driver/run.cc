@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "core/geometry.h"
+#include "hal/carbot_hal.h"
 #include "hal/hal_binding.h"
 #include "driver/engine_log.h"
 #include "robots/robots.h"
@@ -170,6 +171,7 @@ RunResult run_engine(Simulation& sim, Engine& engine, const ChartInfo& chart, do
   fetchbot_reset();
   engine_log().clear();
   engine.init();
+  engine.set_context(carbot_robot_handle(0));  // a C engine's calls name the robot; a plan's act on the bound one
   Progress progress(!quiet, seconds);
   const long ticks = std::lround(seconds / sim.config().control_period);
   int last_state = -1;

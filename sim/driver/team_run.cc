@@ -9,6 +9,7 @@
 #include "core/geometry.h"
 #include "driver/engine_log.h"
 #include "driver/run.h"
+#include "hal/carbot_hal.h"
 #include "hal/hal_binding.h"
 #include "robots/robots.h"
 
@@ -64,9 +65,13 @@ RunResult run_team(Simulation& sim, std::vector<Engine*> engines, const ChartInf
   linebot_reset();
   cleanbot_reset();
   fetchbot_reset();
+  // Each C engine instance gets its robot as context: every interface call it makes names the
+  // robot it is for (docs/sim.md "Several robots"). The HAL stays bound to the simulation; a
+  // plan (no context) is bound to its robot before each tick instead.
   for (int i = 0; i < n; ++i) {
     hal::bind(&sim, i);
     engines[static_cast<std::size_t>(i)]->init();
+    engines[static_cast<std::size_t>(i)]->set_context(carbot_robot_handle(i));
     engines[static_cast<std::size_t>(i)]->set_agent(i);
   }
   Random random(exchange.seed);
@@ -115,7 +120,8 @@ RunResult run_team(Simulation& sim, std::vector<Engine*> engines, const ChartInf
         keep_activation(i);
         continue;
       }
-      hal::bind(&sim, i);
+      sim.select(i);  // this robot's row below; its engine's calls reach it through their context
+      if (!engine(i).has_context()) hal::bind(&sim, i);
       engine(i).run();
       RobotRun& r = robot(i);
       const int state = engine(i).current_state();

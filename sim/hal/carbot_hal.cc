@@ -43,7 +43,35 @@ namespace {
 carbot::Side side_of(int side) { return side == CARBOT_LEFT ? carbot::Side::Left : carbot::Side::Right; }
 }  // namespace
 
+// A handle is the robot's number behind an opaque pointer: the context an engine passes back.
+struct CarbotRobot {
+  int index;
+};
+
+namespace {
+CarbotRobot g_handles[carbot::kMaxRobots] = {{0}, {1}, {2}, {3}, {4}, {5}, {6}, {7}};
+static_assert(carbot::kMaxRobots == 8, "one handle per robot a world may hold");
+}  // namespace
+
 extern "C" {
+
+CarbotRobot* carbot_robot_handle(int index) {
+  if (index < 0 || index >= carbot::kMaxRobots) {
+    std::fprintf(stderr, "carbot HAL: no robot %d\n", index);
+    std::abort();
+  }
+  return &g_handles[index];
+}
+
+int carbot_robot_of(const CarbotRobot* robot) { return robot ? robot->index : -1; }
+
+void carbot_act_on(CarbotRobot* robot) {
+  if (!robot) {
+    std::fputs("carbot HAL: an interface function was called without its robot (no instance context)\n", stderr);
+    std::abort();
+  }
+  carbot::hal::bind(&bound(), robot->index);
+}
 
 int carbot_robot(void) {
   (void)bound();

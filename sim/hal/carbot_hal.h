@@ -2,7 +2,8 @@
  *
  * A robot library (sim/robots/) implements a chart interface (samples/NAME.iface) on top of
  * these calls, the way firmware sits on a board's HAL. In the simulator they act on the
- * simulation that carbot-sim bound with carbot::hal::bind(); calling them with none bound
+ * simulation that carbot-sim bound with carbot::hal::bind(), on the robot of the last
+ * carbot_act_on() or bind(); calling them with none bound
  * is a programming error and aborts with a message.
  *
  * Angles are radians, counter-clockwise positive; distances metres; times seconds.
@@ -22,6 +23,16 @@ enum { CARBOT_LEFT = 0, CARBOT_RIGHT = 1 };
 enum { CARBOT_MAX_ROBOTS = 8 }; /* a library keeping per-robot state keeps this many */
 int carbot_robot(void);         /* this robot's number, 0 .. carbot_robot_count() - 1 */
 int carbot_robot_count(void);   /* robots in the world */
+
+/* A robot's handle: what carbot-sim gives each C engine as its instance context (gfec
+ * --context-type='struct CarbotRobot *', docs/c-engine.md "Instance context"), so every
+ * interface call names the robot it is for, as firmware passes a device. A robot library
+ * starts each interface function with carbot_act_on(ctx): the HAL calls that follow act on
+ * that robot, and carbot_robot() is its number (docs/sim.md "Several robots"). */
+struct CarbotRobot;
+struct CarbotRobot* carbot_robot_handle(int index);   /* robot `index`'s handle (0 .. CARBOT_MAX_ROBOTS - 1) */
+int carbot_robot_of(const struct CarbotRobot* robot); /* the handle's robot number */
+void carbot_act_on(struct CarbotRobot* robot);        /* the HAL acts on `robot` from here on */
 
 /* --- time ------------------------------------------------------------------------------- */
 double carbot_time(void);           /* simulated seconds since the start */

@@ -1,11 +1,10 @@
 // Which simulation, and which of its robots, the C HAL (carbot_hal.h) acts on. carbot-sim, the
 // benchmark and the tests bind one before calling an engine or a toolbox, and unbind it after.
 //
-// Several robots in one world: carbot-sim is single-threaded, so before it ticks robot i's
-// engine it binds robot i, and every interface call that engine makes (and every HAL call of
-// the robot library under it) acts on robot i. This is the simulator's stand-in for an
-// instance context: on firmware each robot runs its own engine on its own board, so the
-// board's HAL is "bound" by construction (docs/sim.md, "Several robots").
+// Several robots in one world: a C engine's interface calls carry their robot (the engine's
+// instance context, a CarbotRobot handle) and the robot library switches the HAL to it with
+// carbot_act_on(), which re-binds the bound simulation's robot. A plan has no context: before
+// its engine runs, carbot-sim binds the plan's robot (docs/sim.md "Several robots").
 #pragma once
 
 namespace carbot {

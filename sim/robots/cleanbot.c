@@ -28,7 +28,8 @@
 
 enum Goal { GOAL_NONE, GOAL_ITEM, GOAL_DESTINATION };
 
-/* One robot's memory; each robot in the world has its own (carbot_robot() picks it). */
+/* One robot's memory; each robot in the world has its own: carbot_robot(), the robot of the
+ * handle the interface call passed (carbot_act_on), picks it. */
 struct CleanBot {
   int item;             /* the item being cleaned up, -1 none chosen */
   enum Goal goal;       /* what it drives to */
@@ -148,25 +149,29 @@ static bool handled(void) {
 
 /* --- actions ------------------------------------------------------------------------------ */
 
-void DriveToItem(void) {
+void DriveToItem(struct CarbotRobot* ctx) {
+  carbot_act_on(ctx);
+
   double x, y;
   aim_at(GOAL_ITEM);
   if (!goal_point(&x, &y)) {
     carbot_drive(0, 0);
     return;
   }
-  if (Arrived()) carbot_drive(0, 0);
+  if (Arrived(ctx)) carbot_drive(0, 0);
   else go_to(x, y);
 }
 
-void PickUp(void) {
+void PickUp(struct CarbotRobot* ctx) {
+  carbot_act_on(ctx);
+
   double x, y;
   aim_at(GOAL_ITEM);
-  if (Holding() || !goal_point(&x, &y)) {
+  if (Holding(ctx) || !goal_point(&x, &y)) {
     carbot_drive(0, 0);
     return;
   }
-  if (!Arrived()) { /* the item is not (or no longer) in reach: fetch it first */
+  if (!Arrived(ctx)) { /* the item is not (or no longer) in reach: fetch it first */
     handle_since = -1;
     go_to(x, y);
     return;
@@ -174,19 +179,23 @@ void PickUp(void) {
   if (handled() && carbot_grip(item)) placed = false;
 }
 
-void Transport(void) {
+void Transport(struct CarbotRobot* ctx) {
+  carbot_act_on(ctx);
+
   double x, y;
   aim_at(GOAL_DESTINATION);
-  if (!Holding() || !goal_point(&x, &y) || Arrived()) {
+  if (!Holding(ctx) || !goal_point(&x, &y) || Arrived(ctx)) {
     carbot_drive(0, 0);
     return;
   }
   go_to(x, y);
 }
 
-void PlaceItem(void) {
+void PlaceItem(struct CarbotRobot* ctx) {
+  carbot_act_on(ctx);
+
   aim_at(GOAL_DESTINATION);
-  if (!Holding()) {
+  if (!Holding(ctx)) {
     carbot_drive(0, 0);
     return;
   }
@@ -198,29 +207,43 @@ void PlaceItem(void) {
 
 /* --- conditions --------------------------------------------------------------------------- */
 
-bool Arrived(void) {
+bool Arrived(struct CarbotRobot* ctx) {
+  carbot_act_on(ctx);
+
   double x, y;
   return goal_point(&x, &y) && gripper_distance_to(x, y) < CLEANBOT_ARRIVED;
 }
 
-bool Holding(void) { return current_item() >= 0 && carbot_held_item() == item; }
+bool Holding(struct CarbotRobot* ctx) {
+  carbot_act_on(ctx);
+  return current_item() >= 0 && carbot_held_item() == item;
+}
 
-bool FarFromDestination(void) {
+bool FarFromDestination(struct CarbotRobot* ctx) {
+  carbot_act_on(ctx);
+
   const int i = current_item();
   if (i < 0) return false;
   const CarbotItem it = carbot_item(i);
   return dist(it.x, it.y, it.dest_x, it.dest_y) > CLEANBOT_FAR;
 }
 
-bool ItemPlaced(void) { return placed && !Holding(); }
+bool ItemPlaced(struct CarbotRobot* ctx) {
+  carbot_act_on(ctx);
+  return placed && !Holding(ctx);
+}
 
-bool ItemAtDestination(void) {
+bool ItemAtDestination(struct CarbotRobot* ctx) {
+  carbot_act_on(ctx);
+
   const int i = current_item();
   return i >= 0 && at_destination(carbot_item(i));
 }
 
 /* No item to clean up, or no progress towards the goal for a while (pushing against a wall). */
-bool Stuck(void) {
+bool Stuck(struct CarbotRobot* ctx) {
+  carbot_act_on(ctx);
+
   if (current_item() < 0) return true;
   return goal != GOAL_NONE && carbot_time() - best_since > CLEANBOT_STUCK_TIME;
 }

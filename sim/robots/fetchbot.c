@@ -94,22 +94,26 @@ static void go_to(double x, double y) {
 
 /* --- actions ------------------------------------------------------------------------------ */
 
-void FetchBot_DriveToItem(void) {
+void FetchBot_DriveToItem(struct CarbotRobot* ctx) {
+  carbot_act_on(ctx);
+
   double x, y;
-  if (!item_at(&x, &y) || FetchBot_Arrived()) {
+  if (!item_at(&x, &y) || FetchBot_Arrived(ctx)) {
     carbot_drive(0, 0);
     return;
   }
   go_to(x, y);
 }
 
-void FetchBot_PickUp(void) {
+void FetchBot_PickUp(struct CarbotRobot* ctx) {
+  carbot_act_on(ctx);
+
   double x, y;
-  if (FetchBot_Holding() || !item_at(&x, &y)) {
+  if (FetchBot_Holding(ctx) || !item_at(&x, &y)) {
     carbot_drive(0, 0);
     return;
   }
-  if (!FetchBot_Arrived()) { /* not in reach (yet, or any more): go for it */
+  if (!FetchBot_Arrived(ctx)) { /* not in reach (yet, or any more): go for it */
     me()->handle_since = -1;
     go_to(x, y);
     return;
@@ -123,10 +127,12 @@ void FetchBot_PickUp(void) {
 
 /* Drives the held item to its destination, then stands still while the gripper opens and
  * puts it down. */
-void FetchBot_Carry(void) {
+void FetchBot_Carry(struct CarbotRobot* ctx) {
+  carbot_act_on(ctx);
+
   CarbotItem it;
   double gx, gy;
-  if (!FetchBot_Holding()) {
+  if (!FetchBot_Holding(ctx)) {
     carbot_drive(0, 0);
     return;
   }
@@ -145,7 +151,9 @@ void FetchBot_Carry(void) {
 }
 
 /* Backs away from the item, still facing it, until FETCHBOT_PARK_DISTANCE from it; then stands. */
-void FetchBot_Park(void) {
+void FetchBot_Park(struct CarbotRobot* ctx) {
+  carbot_act_on(ctx);
+
   double x, y;
   CarbotPose p;
   if (!item_at(&x, &y)) {
@@ -160,29 +168,44 @@ void FetchBot_Park(void) {
   carbot_drive(-FETCHBOT_BACK_SPEED, clamp_turn(FETCHBOT_TURN_GAIN * bearing_error(p, x, y)));
 }
 
-void FetchBot_Beep(int times) { carbot_beep(times); }
+void FetchBot_Beep(struct CarbotRobot* ctx, int times) {
+  carbot_act_on(ctx);
+  carbot_beep(times);
+}
 
-void FetchBot_Lights(bool on) { carbot_lights(on); }
+void FetchBot_Lights(struct CarbotRobot* ctx, bool on) {
+  carbot_act_on(ctx);
+  carbot_lights(on);
+}
 
 /* --- conditions --------------------------------------------------------------------------- */
 
-bool FetchBot_Arrived(void) {
+bool FetchBot_Arrived(struct CarbotRobot* ctx) {
+  carbot_act_on(ctx);
+
   double x, y, gx, gy;
   if (!item_at(&x, &y)) return false;
   carbot_gripper_point(&gx, &gy);
   return dist(gx, gy, x, y) < FETCHBOT_ARRIVED;
 }
 
-bool FetchBot_Holding(void) { return carbot_item_count() > 0 && carbot_held_item() == 0; }
+bool FetchBot_Holding(struct CarbotRobot* ctx) {
+  carbot_act_on(ctx);
+  return carbot_item_count() > 0 && carbot_held_item() == 0;
+}
 
-bool FetchBot_Delivered(void) {
+bool FetchBot_Delivered(struct CarbotRobot* ctx) {
+  carbot_act_on(ctx);
+
   CarbotItem it;
   if (carbot_item_count() < 1) return false;
   it = carbot_item(0);
   return !it.held && dist(it.x, it.y, it.dest_x, it.dest_y) < FETCHBOT_DELIVERED;
 }
 
-bool FetchBot_Parked(void) {
+bool FetchBot_Parked(struct CarbotRobot* ctx) {
+  carbot_act_on(ctx);
+
   double x, y;
   CarbotPose p;
   if (!item_at(&x, &y)) return true;

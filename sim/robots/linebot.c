@@ -38,27 +38,47 @@ void linebot_reset(void) {
 
 static void apply(void) { carbot_drive((left_speed + right_speed) / 2, (right_speed - left_speed) / LINEBOT_TRACK); }
 
-bool Left_IR_Black(void) { return carbot_ir_black(CARBOT_LEFT); }
-bool Left_IR_White(void) { return !carbot_ir_black(CARBOT_LEFT); }
-bool Right_IR_Black(void) { return carbot_ir_black(CARBOT_RIGHT); }
-bool Right_IR_White(void) { return !carbot_ir_black(CARBOT_RIGHT); }
+bool Left_IR_Black(struct CarbotRobot* ctx) {
+  carbot_act_on(ctx);
+  return carbot_ir_black(CARBOT_LEFT);
+}
+bool Left_IR_White(struct CarbotRobot* ctx) {
+  carbot_act_on(ctx);
+  return !carbot_ir_black(CARBOT_LEFT);
+}
+bool Right_IR_Black(struct CarbotRobot* ctx) {
+  carbot_act_on(ctx);
+  return carbot_ir_black(CARBOT_RIGHT);
+}
+bool Right_IR_White(struct CarbotRobot* ctx) {
+  carbot_act_on(ctx);
+  return !carbot_ir_black(CARBOT_RIGHT);
+}
 
-void Left_FW(void) {
+void Left_FW(struct CarbotRobot* ctx) {
+  carbot_act_on(ctx);
+
   left_speed = LINEBOT_SIDE_SPEED;
   apply();
 }
 
-void Left_Stop(void) {
+void Left_Stop(struct CarbotRobot* ctx) {
+  carbot_act_on(ctx);
+
   left_speed = LINEBOT_STOP_SPEED;
   apply();
 }
 
-void Right_FW(void) {
+void Right_FW(struct CarbotRobot* ctx) {
+  carbot_act_on(ctx);
+
   right_speed = LINEBOT_SIDE_SPEED;
   apply();
 }
 
-void Right_Stop(void) {
+void Right_Stop(struct CarbotRobot* ctx) {
+  carbot_act_on(ctx);
+
   right_speed = LINEBOT_STOP_SPEED;
   apply();
 }

@@ -16,6 +16,9 @@
 #include "core/geometry.h"
 #include "core/simulation.h"
 #include "core/world.h"
+#include "hal/carbot_hal.h"
+#include "hal/hal_binding.h"
+#include "robots/robots.h"
 #include "support.h"
 
 using namespace carbot;
@@ -177,6 +180,49 @@ TEST_CASE("team model: each robot is driven on its own and grips only a free ite
   CHECK(sim.pose().x < -0.3);  // robot 1 drove (heading 180: towards -x)
   CHECK(sim.held_item() == -1);
   CHECK_FALSE(sim.grip(0));  // robot 0 holds it
+}
+
+TEST_CASE("team libraries: an interface call acts on the robot of its context, not the bound one", "[e2e][team]") {
+  // The HAL is bound to robot 0; the calls name robot 1 through their first argument, as an
+  // engine built with carbot-sim's instance context passes it (docs/sim.md "Several robots").
+  Simulation sim(floor_with({{{0, 0}, 0}, {{0, 2}, 0}}));
+  hal::bind(&sim, 0);
+  linebot_reset();
+  CarbotRobot *const first = carbot_robot_handle(0), *const second = carbot_robot_handle(1);
+  CHECK(first != second);
+  CHECK(carbot_robot_of(second) == 1);
+  Left_FW(second);
+  Right_FW(second);
+  CHECK(carbot_robot() == 1);  // the HAL now acts on the context's robot
+  sim.select(1);
+  CHECK(sim.commanded_forward() == Approx(0.2));
+  sim.select(0);
+  CHECK(sim.commanded_forward() == Approx(0));  // the bound robot was told nothing
+  // Each robot's library state is its own: robot 0's left side alone turns it, robot 1 goes on.
+  Left_FW(first);
+  sim.select(0);
+  CHECK(sim.commanded_forward() == Approx(0.1));
+  sim.select(1);
+  CHECK(sim.commanded_forward() == Approx(0.2));
+  hal::bind(nullptr);
+}
+
+TEST_CASE("team: carbot-sim builds a C engine with its robot as instance context", "[e2e][team]") {
+  e2e::TempDir dir;
+  const e2e::SimRun run =
+      e2e::run_sim("samples/fetch_team.fsm", "sim/worlds/fetch_hall.json", 1, "--work-dir " + dir.file("engine"));
+  INFO(run.output);
+  REQUIRE(run.exit_code == 0);
+  auto text = [&](const std::string &name) {
+    std::ifstream in(dir.file("engine/" + name));
+    std::stringstream all;
+    all << in.rdbuf();
+    return all.str();
+  };
+  // gfec ran with --context-type: the engine's calls take the robot first, and the shim sets it.
+  CHECK(text("engine.h").find("void DriveToItem(struct CarbotRobot *ctx);") != std::string::npos);
+  CHECK(text("engine.c").find("DriveToItem(m->ctx)") != std::string::npos);
+  CHECK(text("shim.c").find("Fetch_set_context((Fetch *)m, robot);") != std::string::npos);
 }
 
 TEST_CASE("team world files: start lists one pose per robot", "[e2e][team][world]") {
