@@ -22,6 +22,7 @@ void run(const model::Model &m, Diagnostics &diag, const Limits &limits, std::st
     if (!c.in_main_file) continue;
     if (c.kind == model::Chart::Kind::Sfc && sfc) check_sfc(m, c, diag, limits, summary);
     if (c.kind == model::Chart::Kind::Fsm && fsm) check_fsm(m, c, diag, summary);
+    if (everything || diag.warning_options().is_on(Warning::DeadTransition)) check_exclusive_states(m, c, diag);
   }
   for (const auto &p : m.plans)
     if (p.in_main_file && plan) check_plan(m, p, diag, summary);

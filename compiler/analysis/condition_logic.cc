@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <map>
+#include <vector>
 #include <string>
 
 namespace gfec::analysis {
@@ -41,7 +42,10 @@ class Atoms {
 public:
   bool collect(const Expr &e) {
     if (!is_logic(e)) {
-      if (!index_.count(key(e))) index_.emplace(key(e), index_.size());
+      if (!index_.count(key(e))) {
+        first_.emplace(key(e), &e);
+        index_.emplace(key(e), index_.size());
+      }
       return index_.size() <= kMaxAtoms;
     }
     for (const auto &a : e.args)
@@ -49,6 +53,12 @@ public:
     return true;
   }
   std::size_t size() const { return index_.size(); }
+  /// The atoms' expressions, by their bit in a row.
+  std::vector<const Expr *> list() const {
+    std::vector<const Expr *> out(index_.size());
+    for (const auto &[k, i] : index_) out[i] = first_.at(k);
+    return out;
+  }
 
   bool eval(const Expr &e, unsigned row) const {
     switch (e.kind) {
@@ -69,6 +79,7 @@ public:
 
 private:
   std::map<std::string, std::size_t> index_;
+  std::map<std::string, const Expr *> first_;
 };
 
 }  // namespace
@@ -82,6 +93,26 @@ std::optional<bool> implies(const Expr *a, const Expr *b) {
     if (ha && !atoms.eval(*b, row)) return false;
   }
   return true;
+}
+
+std::optional<bool> needs_exclusive(const Expr &e, const std::function<bool(const Expr &, const Expr &)> &exclusive) {
+  Atoms atoms;
+  if (!atoms.collect(e)) return std::nullopt;
+  const auto list = atoms.list();
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  for (std::size_t i = 0; i < list.size(); ++i)
+    for (std::size_t j = i + 1; j < list.size(); ++j)
+      if (exclusive(*list[i], *list[j])) pairs.emplace_back(i, j);
+  if (pairs.empty()) return false;
+  bool holds_somewhere = false;
+  for (unsigned row = 0; row < (1u << atoms.size()); ++row) {
+    if (!atoms.eval(e, row)) continue;
+    bool possible = true;
+    for (auto [i, j] : pairs) possible = possible && !(((row >> i) & 1u) && ((row >> j) & 1u));
+    if (possible) return false;
+    holds_somewhere = true;
+  }
+  return holds_somewhere;
 }
 
 }  // namespace gfec::analysis

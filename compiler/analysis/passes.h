@@ -13,6 +13,8 @@ void check_sfc(const model::Model &m, const model::Chart &c, Diagnostics &diag, 
                std::string &summary);
 void check_fsm(const model::Model &m, const model::Chart &c, Diagnostics &diag, std::string &summary);
 void check_plan(const model::Model &m, const model::Plan &p, Diagnostics &diag, std::string &summary);
+/// Transitions whose condition needs two states of one fsm instance at once (dead-transition).
+void check_exclusive_states(const model::Model &m, const model::Chart &c, Diagnostics &diag);
 
 /// Where a place, transition or chart is named (the model keeps it), so that a warning
 /// underlines the name rather than the whole declaration; the declaration if the name has no range.
