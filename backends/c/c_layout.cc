@@ -121,6 +121,21 @@ void plan_lists(const model::Chart &c, Layout &l) {
   }
   std::size_t watched = static_cast<std::size_t>(std::count(l.watched.begin(), l.watched.end(), true));
   l.watch_capacity = l.bounded ? std::min<std::uint64_t>(watched, l.tokens) : watched;
+  if (l.watch_capacity == 0) return;
+  // At most `tokens` places are active at once, so at most that many fall to 0 or rise from 0
+  // in a tick; and only a watched place some transition consumes from (produces into) can.
+  std::vector<bool> consumed(c.places.size()), produced(c.places.size());
+  for (const auto &t : c.transitions) {
+    for (int p : t.inputs) consumed[static_cast<std::size_t>(p)] = true;
+    for (int p : t.outputs) produced[static_cast<std::size_t>(p)] = true;
+  }
+  auto capacity = [&](const std::vector<bool> &moved) {
+    std::size_t n = 0;
+    for (std::size_t p = 0; p < c.places.size(); ++p) n += l.watched[p] && moved[p] ? 1 : 0;
+    return std::max<std::size_t>(1, l.bounded ? std::min<std::uint64_t>(n, l.tokens) : n);
+  };
+  l.lost_capacity = capacity(consumed);
+  l.gained_capacity = capacity(produced);
 }
 
 }  // namespace

@@ -65,7 +65,11 @@ struct Layout {
   BitLevels candidates;            ///< !place_driven: the transitions to try this tick
   std::size_t add_capacity = 0;    ///< places that fired transitions produce into, per tick
   std::size_t watch_capacity = 0;  ///< watched places that lose (or gain) activation per tick
-  std::vector<bool> watched;       ///< by place: runs exit or entry code, or resets a timer
+  /// The lists of watched places that fell to 0 and that rose from 0 in a tick, each at least 1
+  /// long when watch_capacity is not 0 (C has no empty arrays): a place falls to 0 only if a
+  /// transition consumes from it, and rises only if one produces into it.
+  std::size_t lost_capacity = 0, gained_capacity = 0;
+  std::vector<bool> watched;  ///< by place: runs exit or entry code, or resets a timer
 };
 
 /// Decides the form for `chart` as `requested`, and everything that form needs. `watched`, by

@@ -438,13 +438,17 @@ private:
     }
     if (has_transitions() && l().watch_capacity > 0) {
       w_.line("{} {}[{}]; /* watched places whose activation fell to 0 in this tick */", place_type(), c_.lost,
-              l().watch_capacity);
+              l().lost_capacity);
       w_.line("uint32_t {} = 0;", c_.lost_n);
       w_.line("{} {}[{}]; /* watched places whose activation rose from 0 */", place_type(), c_.gained,
-              l().watch_capacity);
+              l().gained_capacity);
       w_.line("uint32_t {} = 0;", c_.gained_n);
-      if (l().watch_capacity == 1)  // no sort reads them: say to code analysers that they are set
+      // A list of one is not sorted, so nothing writes it before it is read: say to code
+      // analysers that only the entries written are read.
+      if (l().lost_capacity == 1 && l().gained_capacity == 1)
         w_.line("{0}[0] = 0; {1}[0] = 0; /* only the entries written are read */", c_.lost, c_.gained);
+      else if (l().lost_capacity == 1) w_.line("{}[0] = 0; /* only the entries written are read */", c_.lost);
+      else if (l().gained_capacity == 1) w_.line("{}[0] = 0; /* only the entries written are read */", c_.gained);
     }
     if (has_transitions() || any_actions()) {
       w_.line("uint32_t {}; /* a word of a set */", c_.word);
@@ -602,10 +606,9 @@ private:
     if (!has_transitions() || l().watch_capacity == 0) return;
     section("/* Places that lost their activation exit, then places that gained it enter */");
     const std::string &i = c_.i, &j = c_.word;
-    if (l().watch_capacity > 1) {  // a list of one is sorted
-      w_.line("{}({}, {});", c_.sort_fn, c_.lost, c_.lost_n);
-      w_.line("{}({}, {});", c_.sort_fn, c_.gained, c_.gained_n);
-    }
+    // A list of one is sorted.
+    if (l().lost_capacity > 1) w_.line("{}({}, {});", c_.sort_fn, c_.lost, c_.lost_n);
+    if (l().gained_capacity > 1) w_.line("{}({}, {});", c_.sort_fn, c_.gained, c_.gained_n);
     bool exits = false;
     for (int p = 0; p < places(); ++p) exits = exits || c_.runs_exit(p);
     if (exits) {
@@ -796,7 +799,7 @@ void sparse_helpers(CodeWriter &w, const Context &c) {
   const char *type = uint_type(l.index_bits);
   // One watched place needs no sorting (and gcc -O2 would warn about the inlined loop over a
   // one-entry array, -Warray-bounds).
-  if (l.watch_capacity > 1) sort_helper(w, c, type);
+  if (l.lost_capacity > 1 || l.gained_capacity > 1) sort_helper(w, c, type);
   w.blank();
   w.line("/* Whether a place runs exit or entry code, or resets its timer, when its activation changes. */");
   w.line("static bool {}(uint32_t place)", c.watched_fn);

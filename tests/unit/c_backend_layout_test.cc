@@ -88,6 +88,27 @@ TEST_CASE("c layout: a fork is bounded by its weights; counters are a byte", "[c
   CHECK(l.add_capacity == 199);
 }
 
+TEST_CASE("c layout: the lists of places that fell and rose are sized by consumption and production",
+          "[c_backend][layout]") {
+  // Start -> (A, B, C), all four watched: at most 3 places active (Start weighs 3). Only Start
+  // is ever consumed, so at most one watched place falls to 0 in a tick; three can rise.
+  ChartBuilder b("Spread", model::Chart::Kind::Sfc);
+  b.place("Start", true);
+  for (const char *p : {"A", "B", "C"}) b.place(p);
+  b.transition({"Start"}, {"A", "B", "C"});
+  Layout l = plan_layout(b.chart(), EngineForm::Scalable, std::vector<bool>(4, true));
+  REQUIRE(l.form == Layout::Form::Sparse);
+  CHECK(l.tokens == 3);
+  CHECK(l.watch_capacity == 3);
+  CHECK(l.lost_capacity == 1);
+  CHECK(l.gained_capacity == 3);
+  // Nothing watched: no lists at all.
+  Layout none = plan_layout(b.chart(), EngineForm::Scalable, std::vector<bool>(4, false));
+  CHECK(none.watch_capacity == 0);
+  CHECK(none.lost_capacity == 0);
+  CHECK(none.gained_capacity == 0);
+}
+
 TEST_CASE("c layout: auto takes the scalable form for a large chart little of which is active", "[c_backend][layout]") {
   // 30 branches of 4 places forked from Start: at most 30 of 121 places active, under a quarter.
   ChartBuilder b("Sparse", model::Chart::Kind::Sfc);
