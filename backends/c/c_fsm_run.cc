@@ -18,8 +18,10 @@ public:
     w_.line("{}void {}({} *{})", c_.linkage, c_.run_fn, c_.struct_type, c_.self);
     w_.line("{");
     w_.indent();
-    declarations();
-    remember_state();
+    // The locals of the update (its temporaries, the state it starts from) open the block they
+    // are used in: the function's, or the one a terminal state skips — the smallest scope
+    // (cppcheck's variableScope), and declarations before statements (MISRA-minded C).
+    if (!c_.has_terminal) locals();
     if (!uses_self()) {
       section("");
       w_.line("(void){}; /* the machine has neither transitions nor actions */", c_.self);
@@ -31,6 +33,7 @@ public:
       w_.line("if ({} == 0) {{", c_.field(c_.status));
       w_.indent();
       started_ = false;
+      locals();
     }
     count_time();
     transitions();
@@ -53,8 +56,13 @@ private:
     if (!comment.empty()) w_.line(std::string_view(comment));
   }
 
-  /// The conditions are rendered first: the temporaries they need belong to the whole function
-  /// (the transitions are one if/else-if chain), declared at its top.
+  void locals() {
+    declarations();
+    remember_state();
+  }
+
+  /// The conditions are rendered first: the temporaries they need belong to the whole update
+  /// (the transitions are one if/else-if chain), declared at the top of its block.
   void declarations() {
     for (const auto &t : c_.chart.transitions)
       conditions_.push_back(t.condition ? c_condition(c_, *t.condition, temps_, true, t.inputs.at(0)) : "");
@@ -105,8 +113,8 @@ private:
   }
 
   /// The state at the start of the tick, for exits, entries and hooks (hooks only in a hooks
-  /// build); declared with the function's other locals, at its top (the first tick's entry code
-  /// does not change the state).
+  /// build); declared with the update's other locals, at the top of its block (the first tick's
+  /// entry code, which may come before, does not change the state).
   void remember_state() {
     if (c_.chart.transitions.empty() || (!c_.needs_snapshot() && !c_.hooks())) return;
     section("");

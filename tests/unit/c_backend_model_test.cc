@@ -302,6 +302,7 @@ TEST_CASE("c backend: MISRA-minded shape: typed enums and state, one exit, a fin
   CHECK(contains(fc, "#line 8 \"door.fsm\"\n        else if (m->state == Door_Open) {\n"));
   CHECK(contains(fc, "        else if ((m->state == Door_Open) && (Stop())) {\n"));
   CHECK(contains(fc, "        else {\n            /* no transition fires: the state stays */\n        }\n"));
-  // The snapshot of the state is declared with the locals, at the top of the function.
-  CHECK(contains(fc, "void Door_run(Door *m)\n{\n#ifdef Door_HOOKS\n    Door_place from = m->state;"));
+  // The snapshot of the state is declared with the update's locals, at the top of the block a
+  // terminal state skips: the smallest scope, declarations first.
+  CHECK(contains(fc, "    if (m->status == 0) {\n#ifdef Door_HOOKS\n        Door_place from = m->state;"));
 }

@@ -20,14 +20,14 @@ void Weigh_init(Weigh *m)
 
 void Weigh_run(Weigh *m)
 {
-    int gfec_t0, gfec_t1, gfec_t2, gfec_t3; /* temporaries: the chart calls left to right */
-
-#ifdef Weigh_HOOKS
-    Weigh_place from = m->state; /* the state at the start of the tick */
-#endif
-
     /* In a terminal state nothing happens any more */
     if (m->status == 0) {
+        int gfec_t0, gfec_t1, gfec_t2, gfec_t3; /* temporaries: the chart calls left to right */
+
+#ifdef Weigh_HOOKS
+        Weigh_place from = m->state; /* the state at the start of the tick */
+#endif
+
         /* Perform state update: the first transition leaving the current state whose condition
            holds, in declaration order (one per tick) */
         /* T0: Fill -> Settle */

@@ -20,12 +20,12 @@ void CleanUp_init(CleanUp *m)
 
 void CleanUp_run(CleanUp *m)
 {
-#ifdef CleanUp_HOOKS
-    CleanUp_place from = m->state; /* the state at the start of the tick */
-#endif
-
     /* In a terminal state nothing happens any more */
     if (m->status == 0) {
+#ifdef CleanUp_HOOKS
+        CleanUp_place from = m->state; /* the state at the start of the tick */
+#endif
+
         /* Perform state update: the first transition leaving the current state whose condition
            holds, in declaration order (one per tick) */
         /* T0: Z0 -> Z1 */

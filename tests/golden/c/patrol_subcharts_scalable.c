@@ -88,10 +88,10 @@ static void Patrol_Search_stop(struct Patrol_Search *m)
 
 static void Patrol_Search_run(struct Patrol_Search *m)
 {
-    Patrol_Search_place from = m->state; /* the state at the start of the tick */
-
     /* In a terminal state nothing happens any more */
     if (m->status == 0) {
+        Patrol_Search_place from = m->state; /* the state at the start of the tick */
+
         /* Perform state update: the first transition leaving the current state whose condition
            holds, in declaration order (one per tick) */
         /* T0: Go -> Grab */
@@ -232,10 +232,10 @@ static void Patrol_Retry_stop(struct Patrol_Retry *m)
 
 static void Patrol_Retry_run(struct Patrol_Retry *m)
 {
-    Patrol_Retry_place from = m->state; /* the state at the start of the tick */
-
     /* In a terminal state nothing happens any more */
     if (m->status == 0) {
+        Patrol_Retry_place from = m->state; /* the state at the start of the tick */
+
         /* Perform state update: the first transition leaving the current state whose condition
            holds, in declaration order (one per tick) */
         /* T0: Go -> Grab */

@@ -53,10 +53,10 @@ int Fetch_team(const Fetch *m, int state)
 
 void Fetch_run(Fetch *m)
 {
-    Fetch_place from = m->state; /* the state at the start of the tick */
-
     /* In a terminal state nothing happens any more */
     if (m->status == 0) {
+        Fetch_place from = m->state; /* the state at the start of the tick */
+
         /* Count the ticks of the current state, if it has a timer */
         if ((m->state == Fetch_Yield) && (m->timer_Yield < UINT32_MAX)) { m->timer_Yield++; }
 
