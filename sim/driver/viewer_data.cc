@@ -40,6 +40,12 @@ json world_json(const World& w) {
           {"line", line},   {"walls", walls}, {"boxes", boxes}};
 }
 
+/// An item of the world: where it starts, where it goes, and its track through the run.
+json item_json(const ItemState& item, const gfec::viewer::ChangeList& track) {
+  return {
+      {"name", item.name}, {"at", point(item.at)}, {"destination", point(item.destination)}, {"track", track.json()}};
+}
+
 /// The path as delta-coded integers (mm and 0.01 degree): a 120 s run at 10 ms is 12,001 poses.
 json pose_json(const std::vector<TraceRow>& trace) {
   json xs = json::array(), ys = json::array(), hs = json::array();
@@ -141,10 +147,7 @@ json team_viewer_data(const RunReport& r, const std::string& chart_svg, const st
       // While held the item is drawn at its robot's gripper, from that robot's pose.
       track.record(k, holder >= 0 ? json::array({1, holder}) : json::array({0, r4(it.at.x), r4(it.at.y)}));
     }
-    items.push_back({{"name", first[i].name},
-                     {"at", point(first[i].at)},
-                     {"destination", point(first[i].destination)},
-                     {"track", track.json()}});
+    items.push_back(item_json(first[i], track));
   }
   json status = json::array({json::array({0, "running"})});
   if (r.run.status != "running") {
@@ -282,10 +285,7 @@ json viewer_data(const RunReport& r, const std::string& chart_svg, const std::st
       // While held the item is drawn at the gripper, from the pose: no entry per tick.
       track.record(k, it.held ? json::array({1}) : json::array({0, r4(it.at.x), r4(it.at.y)}));
     }
-    items.push_back({{"name", first[i].name},
-                     {"at", point(first[i].at)},
-                     {"destination", point(first[i].destination)},
-                     {"track", track.json()}});
+    items.push_back(item_json(first[i], track));
   }
   json status = json::array({json::array({0, "running"})});
   if (r.run.status != "running") {
