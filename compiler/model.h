@@ -146,6 +146,15 @@ struct Transition {
   bool named = false;      ///< the user gave the name
 };
 
+/// A structural bound on a chart's activation, proven once after validation by the analyses
+/// (compiler/analysis/activation_bounds.h) for the back ends to read: the C engine sizes its
+/// activation counters and lists by it (docs/c-engine.md). Sixteen bytes per chart, none per place.
+struct ActivationBound {
+  std::uint64_t total = 0;  ///< bounded: the activation of all places together never exceeds this
+  std::uint32_t place = 0;  ///< bounded: no place's activation ever exceeds this
+  bool bounded = false;     ///< proven; false also for a chart not analysed: assume no bound
+};
+
 struct Chart {
   enum class Kind { Sfc, Fsm };
   Kind kind = Kind::Sfc;
@@ -157,6 +166,7 @@ struct Chart {
   std::vector<int> functions;  ///< interface functions the chart calls, in declaration order
   std::vector<int> consts;     ///< constants the chart reads, in declaration order
   int team = 0;                ///< fsm `team N;`: N (>= 2); 0 for a machine that is no team
+  ActivationBound activation;  ///< recorded by analysis::record_activation_bounds
   bool in_main_file = false;   ///< declared in the file being compiled, not an import
   SourceRange range;
   SourceRange name_range;  ///< the chart's name where it is declared

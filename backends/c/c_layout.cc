@@ -7,68 +7,6 @@ namespace gfec::c_backend {
 
 namespace {
 
-/// Looks for weights w(p) >= 1 with sum(w of inputs) >= sum(w of outputs) for every transition
-/// (a transition never creates weight, so sum(w * AV) never grows). Starting from w = 1, a
-/// transition short of weight raises its first input by the shortfall, and the transitions
-/// producing into that place are looked at again. A chart that pumps activation (P -> (P, Q))
-/// keeps raising a weight: past a cap, or after a number of raises proportional to the chart,
-/// the search gives up and the chart counts as unbounded. Sound whatever it answers: when it
-/// returns weights, they prove the bound.
-bool find_weights(const model::Chart &c, std::vector<std::uint64_t> &w) {
-  const std::size_t np = c.places.size(), nt = c.transitions.size();
-  constexpr std::uint64_t kCap = std::uint64_t(1) << 32;
-  w.assign(np, 1);
-  std::vector<std::vector<std::size_t>> producers(np);
-  std::size_t arcs = 0;
-  for (std::size_t t = 0; t < nt; ++t) {
-    arcs += c.transitions[t].inputs.size() + c.transitions[t].outputs.size();
-    for (int q : c.transitions[t].outputs) producers[static_cast<std::size_t>(q)].push_back(t);
-  }
-  std::vector<std::size_t> work(nt);
-  std::vector<bool> queued(nt, true);
-  for (std::size_t t = 0; t < nt; ++t) work[t] = nt - 1 - t;  // popped from the back: in order
-  std::size_t budget = 16 * (arcs + nt) + 1000;
-  auto sum = [&](const std::vector<int> &places) {
-    std::uint64_t s = 0;
-    for (int p : places) s += w[static_cast<std::size_t>(p)];
-    return s;
-  };
-  while (!work.empty()) {
-    std::size_t t = work.back();
-    work.pop_back();
-    queued[t] = false;
-    const auto &tr = c.transitions[t];
-    std::uint64_t in = sum(tr.inputs), out = sum(tr.outputs);
-    if (in >= out) continue;
-    if (tr.inputs.empty() || budget-- == 0) return false;
-    auto p = static_cast<std::size_t>(tr.inputs.front());
-    w[p] += out - in;
-    if (w[p] > kCap) return false;
-    for (std::size_t u : producers[p])
-      if (!queued[u]) {
-        queued[u] = true;
-        work.push_back(u);
-      }
-    if (!queued[t]) {  // raising its own input may not be enough (a place both in and out)
-      queued[t] = true;
-      work.push_back(t);
-    }
-  }
-  return true;
-}
-
-void bound_activation(const model::Chart &c, Layout &l) {
-  std::vector<std::uint64_t> w;
-  l.bounded = find_weights(c, w);
-  if (!l.bounded) return;
-  std::uint64_t initial = 0;
-  for (std::size_t p = 0; p < c.places.size(); ++p)
-    if (c.places[p].initial) initial += w[p];
-  l.tokens = initial;  // every weight is at least 1
-  for (std::size_t p = 0; p < c.places.size(); ++p) l.bound = std::max(l.bound, initial / w[p]);
-  if (l.bound > UINT32_MAX) l.bounded = false;
-}
-
 int bits_for(std::uint64_t max) { return max <= UINT8_MAX ? 8 : max <= UINT16_MAX ? 16 : 32; }
 
 /// Owners such that visiting the active places in increasing order, and at each its transitions
@@ -158,7 +96,10 @@ const char *uint_type(int bits) { return bits == 8 ? "uint8_t" : bits == 16 ? "u
 Layout plan_layout(const model::Chart &chart, EngineForm requested, std::vector<bool> watched) {
   Layout l;
   l.watched = std::move(watched);
-  bound_activation(chart, l);
+  // The bound is a fact of the model, proven once by the analyses (analysis/activation_bounds.h).
+  l.bounded = chart.activation.bounded;
+  l.bound = chart.activation.place;
+  l.tokens = chart.activation.total;
   l.counter_bits = l.bounded ? bits_for(l.bound) : 32;
   const bool sequential = is_sequential(chart);
   // `auto`: the scalable form pays per active place for its bookkeeping, so it wins only where

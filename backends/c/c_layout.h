@@ -10,9 +10,9 @@
 //               tried from the active places in declaration order.
 //
 // The counters of the sparse form are as narrow as a structural bound on the activation allows
-// (docs/c-engine.md): weights w(p) >= 1 such that no transition outputs more weight than it
-// consumes make sum(w * AV) a quantity no tick increases, so AV(p) <= W0 / w(p), W0 being the
-// weight of the initial marking.
+// (docs/c-engine.md). The bound is not proven here: the analyses record it in the model once for
+// every chart (model::Chart::activation, compiler/analysis/activation_bounds.h) and the layout
+// reads it.
 #pragma once
 
 #include "backend.h"
@@ -47,8 +47,8 @@ struct Layout {
   enum class Form { Readable, Sequential, Sparse };
   Form form = Form::Readable;
 
-  // ---- bounds (every form computes them; the sparse form sizes its counters by them)
-  bool bounded = false;      ///< the weights exist: activation is bounded
+  // ---- bounds (the model's model::Chart::activation; the sparse form sizes its counters by them)
+  bool bounded = false;      ///< activation is proven bounded
   std::uint64_t bound = 0;   ///< bounded: no place's counter ever exceeds this
   std::uint64_t tokens = 0;  ///< bounded: the total activation never exceeds this
   int counter_bits = 32;     ///< 8, 16 or 32: the narrowest type that holds `bound`

@@ -1,5 +1,6 @@
 #include "pipeline/compilation.h"
 
+#include "analysis/activation_bounds.h"
 #include "analysis/analysis.h"
 #include "roots.h"
 #include "scenario/scenario.h"
@@ -115,6 +116,9 @@ bool Compilation::front_end(const std::string &path, const FileSystem &fs, scena
   // The model holds all the back ends need: the syntax tree goes before they run, so a large
   // chart does not keep both in memory (docs/performance.md).
   loaded.program = {};
+  // The facts the back ends read (docs/architecture.md): proven once here, cheap and linear, so
+  // they are recorded even when the analyses' warnings are off (--check, -w).
+  if (!diag.has_errors()) analysis::record_activation_bounds(model);
   // The static analyses whose warnings are on (compiler/analysis/, docs/verification.md).
   if (options.analyze && !diag.has_errors()) analysis::analyze(model, diag);
   // ALICA input: say which plan element (name and id) each diagnostic is about.

@@ -1,5 +1,6 @@
 #include "fuzz_support.h"
 
+#include "analysis/activation_bounds.h"
 #include "analysis/analysis.h"
 #include "diagnostic_printer.h"
 #include "interpreter/engine.h"
@@ -246,6 +247,8 @@ std::string check_one(const std::string &input) {
   if (!diag.has_errors()) {
     m = validate(loaded.program, sources, diag);
     validated = !diag.has_errors();
+    // The facts the pipeline records for the back ends (compiler/pipeline/compilation.cc).
+    if (validated) analysis::record_activation_bounds(m);
   }
   for (const Diagnostic &d : diag.all()) {
     check_range(sources, d.range, "a diagnostic's range lies in its file");

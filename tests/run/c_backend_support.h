@@ -3,6 +3,7 @@
 // and the generator of the C harness that compile-and-run tests link with an engine.
 #pragma once
 
+#include "analysis/activation_bounds.h"
 #include "backend.h"
 #include "c_backend.h"
 #include "diagnostic_printer.h"
@@ -51,7 +52,12 @@ public:
   }
 
   model::Chart &chart() { return model_.charts.at(current_); }
-  const model::Model &model() const { return model_; }
+  /// The model as the pipeline hands it to the back ends: with the facts it records after
+  /// validation (compiler/pipeline/compilation.cc), proven for the charts as built so far.
+  const model::Model &model() {
+    analysis::record_activation_bounds(model_);
+    return model_;
+  }
 
   /// Sub-charts: adds a chart (index 1, 2, ...) and makes it the one the other calls build, until
   /// select() goes back (chart 0 is the one compiled).

@@ -1,6 +1,6 @@
 // The C back end's choice of engine form and counter width (backends/c/c_layout.h): which form
-// a chart gets, the structural bound on its activation, the owners that let the scalable form
-// try transitions from the active places, and the levels of its bitsets.
+// a chart gets, what it takes from the activation bound the analyses proved, the owners that let
+// the scalable form try transitions from the active places, and the levels of its bitsets.
 #include "../run/c_backend_support.h"
 
 #include "c_layout.h"
@@ -22,8 +22,11 @@ ChartBuilder ring(int n) {
   return b;
 }
 
+/// The chart with the facts the pipeline records (its activation bound), as a back end sees it.
+const model::Chart &analysed(ChartBuilder &b) { return b.model().charts.front(); }
+
 Layout layout_of(ChartBuilder &b, EngineForm form = EngineForm::Auto) {
-  return plan_layout(b.chart(), form, std::vector<bool>(b.chart().places.size(), false));
+  return plan_layout(analysed(b), form, std::vector<bool>(b.chart().places.size(), false));
 }
 
 }  // namespace
@@ -96,14 +99,14 @@ TEST_CASE("c layout: the lists of places that fell and rose are sized by consump
   b.place("Start", true);
   for (const char *p : {"A", "B", "C"}) b.place(p);
   b.transition({"Start"}, {"A", "B", "C"});
-  Layout l = plan_layout(b.chart(), EngineForm::Scalable, std::vector<bool>(4, true));
+  Layout l = plan_layout(analysed(b), EngineForm::Scalable, std::vector<bool>(4, true));
   REQUIRE(l.form == Layout::Form::Sparse);
   CHECK(l.tokens == 3);
   CHECK(l.watch_capacity == 3);
   CHECK(l.lost_capacity == 1);
   CHECK(l.gained_capacity == 3);
   // Nothing watched: no lists at all.
-  Layout none = plan_layout(b.chart(), EngineForm::Scalable, std::vector<bool>(4, false));
+  Layout none = plan_layout(analysed(b), EngineForm::Scalable, std::vector<bool>(4, false));
   CHECK(none.watch_capacity == 0);
   CHECK(none.lost_capacity == 0);
   CHECK(none.gained_capacity == 0);
