@@ -42,21 +42,19 @@ class Atoms {
 public:
   bool collect(const Expr &e) {
     if (!is_logic(e)) {
-      if (!index_.count(key(e))) {
-        first_.emplace(key(e), &e);
-        index_.emplace(key(e), index_.size());
-      }
-      return index_.size() <= kMaxAtoms;
+      // The first expression spelled this way stands for the atom; its bit is its rank.
+      atoms_.try_emplace(key(e), Atom{atoms_.size(), &e});
+      return atoms_.size() <= kMaxAtoms;
     }
     for (const auto &a : e.args)
       if (!collect(a)) return false;
     return true;
   }
-  std::size_t size() const { return index_.size(); }
+  std::size_t size() const { return atoms_.size(); }
   /// The atoms' expressions, by their bit in a row.
   std::vector<const Expr *> list() const {
-    std::vector<const Expr *> out(index_.size());
-    for (const auto &[k, i] : index_) out[i] = first_.at(k);
+    std::vector<const Expr *> out(atoms_.size());
+    for (const auto &[k, atom] : atoms_) out[atom.bit] = atom.first;
     return out;
   }
 
@@ -74,12 +72,15 @@ public:
       break;
     default: break;
     }
-    return (row >> index_.at(key(e))) & 1u;
+    return (row >> atoms_.at(key(e)).bit) & 1u;
   }
 
 private:
-  std::map<std::string, std::size_t> index_;
-  std::map<std::string, const Expr *> first_;
+  struct Atom {
+    std::size_t bit;    ///< its bit in a row of the truth table: the order atoms were met
+    const Expr *first;  ///< the first expression spelled this way
+  };
+  std::map<std::string, Atom> atoms_;  ///< by key(): equal spellings are one atom
 };
 
 }  // namespace
