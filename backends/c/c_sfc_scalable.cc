@@ -178,6 +178,9 @@ private:
     const char *kind;
     std::function<bool(int)> has;
     std::function<void(int)> write;
+    /// The split update switch: its parts return whether the place's one transition fired, and
+    /// the run function moves to the place the table part_next() holds for it.
+    bool moves = false;
   };
 
   std::string current() const { return c_.field(c_.current); }
@@ -208,12 +211,31 @@ private:
     return t;
   }
   PlaceSwitch update_switch() {
-    return {"update", [this](int p) { return !owned(p).empty(); }, [this](int p) { update_case(p); }};
+    return {"update", [this](int p) { return !owned(p).empty(); }, [this](int p) { update_case(p); }, split()};
+  }
+  /// Where the split form moves the place `p` to when its part says that its transition fired:
+  /// the one transition it tries, if it tries one; otherwise it moves itself.
+  int single_move(int p) const {
+    std::vector<std::size_t> ts = tried(p);
+    return split() && ts.size() == 1 ? c_.chart.transitions[ts.front()].outputs.front() : -1;
   }
   void update_case(int p) {
     std::vector<std::size_t> ts = tried(p);
     std::vector<std::string> test = conditions(ts, true);
     case_begin(constant(p));
+    if (single_move(p) >= 0) {
+      // The part only tells whether the transition fires; the move is the run function's, from a
+      // table. gcc -O2 compiles a case that only evaluates a condition into the part's result in
+      // a third of the time and memory of one that moves (docs/performance.md).
+      const auto &t = c_.chart.transitions[ts.front()];
+      w_.line("/* {}: {} */", t.name, transition_label(c_, t));
+      if (c_.model.sources) w_.line_from(*c_.model.sources, t.condition ? t.condition->range : t.range);
+      w_.line("{} = {};", c_.fire, t.condition ? test.front() : "true");
+      w_.line_back();
+      w_.line("break;");
+      case_end();
+      return;
+    }
     for (std::size_t k = 0; k < ts.size(); ++k) {
       const auto &t = c_.chart.transitions[ts[k]];
       w_.line("/* {}: {} */", t.name, transition_label(c_, t));
@@ -259,7 +281,15 @@ private:
   /// `switch (value) { <the cases> }`, or in the split form the call of the part holding `value`.
   void place_switch(const PlaceSwitch &s, const std::string &value) {
     if (split()) {
-      w_.line("{}[{} / {}u]({}, {});", c_.part_table(s.kind), value, c_.layout.part_places, c_.self, value);
+      std::string call =
+          fmt::format("{}[{} / {}u]({}, {})", c_.part_table(s.kind), value, c_.layout.part_places, c_.self, value);
+      if (!s.moves) {
+        w_.line("{};", call);
+        return;
+      }
+      w_.line("if ({}) {{", call);
+      w_.line("    {0} = {1}[{0}];", current(), c_.part_next());
+      w_.line("}");
       return;
     }
     w_.line("switch ({}) {{", value);
@@ -289,9 +319,11 @@ private:
     const std::size_t n = c_.part_count(), size = c_.layout.part_places;
     w_.line("/* The {} switch, in parts of {} places (docs/c-engine.md, \"Large charts\") */", s.kind, size);
     for (std::size_t k = 0; k < n; ++k) {
-      w_.line("static void {}({} *{}, {} {})", c_.part_fn(s.kind, k), c_.struct_type, c_.self, place_type(), c_.index);
+      w_.line("static {} {}({} *{}, {} {})", s.moves ? "bool" : "void", c_.part_fn(s.kind, k), c_.struct_type,
+              c_.self, place_type(), c_.index);
       {
         auto body = w_.block("{");
+        if (s.moves) w_.line("bool {} = false;", c_.fire);
         w_.line("(void){}; /* not every part reads the engine */", c_.self);
         bool cases = false;
         for (std::size_t p = k * size; p < std::min((k + 1) * size, c_.chart.places.size()); ++p)
@@ -304,14 +336,30 @@ private:
             if (s.has(static_cast<int>(p))) s.write(static_cast<int>(p));
           switch_end();
         }
+        if (s.moves) w_.line("return {};", c_.fire);
       }
       w_.blank();
     }
-    w_.line("static void (*const {}[{}])({} *, {}) = {{", c_.part_table(s.kind), n, c_.struct_type, place_type());
+    std::vector<std::string> parts;
+    for (std::size_t k = 0; k < n; ++k) parts.push_back(c_.part_fn(s.kind, k));
+    table(fmt::format("static {} (*const {}[{}])({} *, {})", s.moves ? "bool" : "void", c_.part_table(s.kind), n,
+                      c_.struct_type, place_type()),
+          parts);
+    if (!s.moves) return;
+    w_.line("/* The place each place moves to when its update part says that its transition fired (a place");
+    w_.line("   with several transitions to try moves itself, and its entry is its own) */");
+    std::vector<std::string> next;
+    for (int p = 0; p < places(); ++p) next.push_back(constant(single_move(p) >= 0 ? single_move(p) : p));
+    table(fmt::format("static const {} {}[{}]", place_type(), c_.part_next(), places()), next);
+  }
+
+  /// `<declaration> = { <items> };`, the items several to a line.
+  void table(const std::string &declaration, const std::vector<std::string> &items) {
+    w_.line("{} = {{", declaration);
     std::string row;
-    for (std::size_t k = 0; k < n; ++k) {
-      row += (row.empty() ? "" : " ") + c_.part_fn(s.kind, k) + (k + 1 < n ? "," : "");
-      if (row.size() > 80 || k + 1 == n) {
+    for (std::size_t k = 0; k < items.size(); ++k) {
+      row += (row.empty() ? "" : " ") + items[k] + (k + 1 < items.size() ? "," : "");
+      if (row.size() > 80 || k + 1 == items.size()) {
         w_.line("    {}", row);
         row.clear();
       }
