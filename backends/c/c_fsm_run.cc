@@ -153,9 +153,7 @@ private:
 
   void hooks() {
     if (c_.chart.transitions.empty() || !c_.hooks() || c_.needs_snapshot()) return;
-    section("");
-    directive(w_, "#ifdef " + c_.hooks_macro);
-    w_.line("/* Observation hooks: the state left and the state entered; the transitions leaving it */");
+    hooks_section("/* Observation hooks: the state left and the state entered; the transitions leaving it */");
     w_.line("if ({} != {}) {{", c_.field(c_.state), c_.from);
     w_.indent();
     hook_calls();

@@ -1,5 +1,7 @@
 #include "c_run_writer.h"
 
+#include "c_emit.h"
+
 #include <fmt/format.h>
 
 namespace gfec::c_backend {
@@ -72,6 +74,23 @@ void RunWriter::action_blocks(const std::string &comment, const std::function<st
       w_.line("if ({}) {{", active(p));
       block(c_.place(p).action, {}, c_.tick_call(p));
     }
+}
+
+void RunWriter::hooks_section(const std::string &comment) {
+  section("");
+  directive(w_, "#ifdef " + c_.hooks_macro);
+  w_.line(std::string_view(comment));
+}
+
+void RunWriter::activation_hooks(const std::string &loop, const std::string &i,
+                                 const std::function<std::string(const std::string &)> &was) {
+  for (bool gained : {false, true}) {
+    w_.line(std::string_view(loop));
+    w_.line("    if (({} {} 0u) && ({}[{}] {} 0u)) {{ {}({}, ({}){}, {}); }}", was(i), gained ? "==" : "!=",
+            c_.field(c_.av), i, gained ? "!=" : "==", c_.activated_fn, c_.self, c_.place_type, i,
+            gained ? "true" : "false");
+    w_.line("}");
+  }
 }
 
 bool RunWriter::any_exits() const {

@@ -43,6 +43,15 @@ protected:
   /// `comment` heads the section, if any place acts.
   void action_blocks(const std::string &comment, const std::function<std::string(int)> &active);
 
+  /// A section compiled only in a hooks build: `#ifdef X_HOOKS`, then `comment`; the caller
+  /// writes the `#endif`.
+  void hooks_section(const std::string &comment);
+  /// The hooks of the places that lost, then of those that gained activation in the tick: two
+  /// loops `loop` (their head, `for (...) {`) over the place number `i`; `was(i)`: the place's
+  /// activation at the start of the tick, compared with 0u.
+  void activation_hooks(const std::string &loop, const std::string &i,
+                        const std::function<std::string(const std::string &)> &was);
+
   int places() const { return static_cast<int>(c_.chart.places.size()); }
   /// Some place runs exit code (an exit block or stopping an instance).
   bool any_exits() const;

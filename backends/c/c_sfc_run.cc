@@ -28,7 +28,6 @@ public:
   }
 
 private:
-
   bool produces() const {
     for (const auto &t : c_.chart.transitions)
       if (!t.outputs.empty()) return true;
@@ -129,21 +128,13 @@ private:
   /// The observation hooks, compiled only with -DX_HOOKS.
   void hooks() {
     if (!c_.hooks()) return;
-    section("");
-    directive(w_, "#ifdef " + c_.hooks_macro);
-    w_.line("/* Observation hooks: places that lost, then gained activation; transitions open from now on */");
+    hooks_section("/* Observation hooks: places that lost, then gained activation; transitions open from now on */");
     // A loop over the numbers (a test per place would repeat the exit, entry and enabled tests,
     // which cppcheck reports as duplicate conditions); the number is converted to the enum type
     // the hook takes.
     const std::string &b = c_.before, &i = c_.index;
-    const std::string av = c_.field(c_.av);
-    for (bool gained : {false, true}) {
-      w_.line("for (int {0} = 0; {0} < (int){1}; ++{0}) {{", i, c_.place_count);
-      w_.line("    if (({0}[{1}] {2} 0u) && ({3}[{1}] {4} 0u)) {{ {5}({6}, ({7}){1}, {8}); }}", b, i,
-              gained ? "==" : "!=", av, gained ? "!=" : "==", c_.activated_fn, c_.self, c_.place_type,
-              gained ? "true" : "false");
-      w_.line("}");
-    }
+    activation_hooks(fmt::format("for (int {0} = 0; {0} < (int){1}; ++{0}) {{", i, c_.place_count), i,
+                     [&](const std::string &place) { return fmt::format("{}[{}]", b, place); });
     for (std::size_t t = 0; t < c_.chart.transitions.size(); ++t) {
       const auto &inputs = c_.chart.transitions[t].inputs;
       std::string was, is;

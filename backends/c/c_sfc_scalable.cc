@@ -377,9 +377,7 @@ private:
 
   void hooks() {
     if (!hooks_transitions() || c_.needs_snapshot()) return;
-    section("");
-    directive(w_, "#ifdef " + c_.hooks_macro);
-    w_.line("/* Observation hooks: the place left and the place entered; the transitions leaving it */");
+    hooks_section("/* Observation hooks: the place left and the place entered; the transitions leaving it */");
     {
       auto scope = w_.block(fmt::format("if ({} != {}) {{", current(), c_.from));
       hook_calls();
@@ -641,20 +639,12 @@ private:
   /// end, place by place and transition by transition (a hooks build pays for the whole chart).
   void hooks() {
     if (!c_.hooks()) return;
-    section("");
-    directive(w_, "#ifdef " + c_.hooks_macro);
-    w_.line("/* Observation hooks: places that lost, then gained activation; transitions open from now on */");
+    hooks_section("/* Observation hooks: places that lost, then gained activation; transitions open from now on */");
     const std::string &p = c_.index, &b = c_.before;
     auto was = [&](const std::string &place) {
       return fmt::format("(({}[{} >> 5] >> ({} & 31u)) & 1u)", b, place, place);
     };
-    for (bool gained : {false, true}) {
-      w_.line("for ({0} = 0; {0} < (uint32_t){1}; ++{0}) {{", p, c_.place_count);
-      w_.line("    if (({} {} 0u) && ({}[{}] {} 0u)) {{ {}({}, ({}){}, {}); }}", was(p),
-              gained ? "==" : "!=", c_.field(c_.av), p, gained ? "!=" : "==", c_.activated_fn, c_.self, c_.place_type,
-              p, gained ? "true" : "false");
-      w_.line("}");
-    }
+    activation_hooks(fmt::format("for ({0} = 0; {0} < (uint32_t){1}; ++{0}) {{", p, c_.place_count), p, was);
     for (std::size_t t = 0; t < c_.chart.transitions.size(); ++t) {
       std::string before, now;
       for (int q : c_.chart.transitions[t].inputs) {
