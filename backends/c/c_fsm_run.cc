@@ -47,7 +47,6 @@ public:
   }
 
 private:
-
   void locals() {
     declarations();
     remember_state();

@@ -275,8 +275,8 @@ private:
     const std::size_t n = c_.part_count(), size = c_.layout.part_places;
     w_.line("/* The {} switch, in parts of {} places (docs/c-engine.md, \"Large charts\") */", s.kind, size);
     for (std::size_t k = 0; k < n; ++k) {
-      w_.line("static {} {}({} *{}, {} {})", s.moves ? "bool" : "void", c_.part_fn(s.kind, k), c_.struct_type,
-              c_.self, place_type(), c_.index);
+      w_.line("static {} {}({} *{}, {} {})", s.moves ? "bool" : "void", c_.part_fn(s.kind, k), c_.struct_type, c_.self,
+              place_type(), c_.index);
       {
         auto body = w_.block("{");
         if (s.moves) w_.line("bool {} = false;", c_.fire);
