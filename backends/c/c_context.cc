@@ -128,15 +128,9 @@ void name_locals(Context &c, const NameSpace &globals) {
   c.index = locals.take("p");
   if (c.has_context()) c.ctx_param = locals.take("ctx");
   if (c.options.names) c.names = locals.take("names");
-  const std::pair<const char *, std::string *> scalable[] = {{"add_n", &c.add_n},
-                                                             {"lost", &c.lost},
-                                                             {"lost_n", &c.lost_n},
-                                                             {"gained", &c.gained},
-                                                             {"gained_n", &c.gained_n},
-                                                             {"w", &c.word},
-                                                             {"bits", &c.bits},
-                                                             {"i", &c.i},
-                                                             {"t", &c.t}};
+  const std::pair<const char *, std::string *> scalable[] = {
+      {"add_n", &c.add_n}, {"lost", &c.lost}, {"lost_n", &c.lost_n}, {"gained", &c.gained}, {"gained_n", &c.gained_n},
+      {"w", &c.word},      {"bits", &c.bits}, {"i", &c.i},           {"t", &c.t},           {"fire", &c.fire}};
   for (auto [name, field] : scalable) *field = locals.take(name);
   // The temporaries (gfec_t1, gfec_t2, ...): a prefix that no name the engine's code sees
   // continues with digits only, reserved in the same name space as the locals.
@@ -208,7 +202,7 @@ void build(Context &c, NameSpace &globals, const Context *root);
 /// base takes a trailing `_`, as an instance's prefix does.
 void name_parts(Context &c, NameSpace &globals) {
   auto each = [&](const std::function<bool(const std::string &)> &f) {
-    bool all = true;
+    bool all = f(c.part_next());
     for (const char *kind : Context::kPartKinds) {
       all = all && f(c.part_table(kind));
       for (std::size_t k = 0; all && k < c.part_count(); ++k) all = f(c.part_fn(kind, k));

@@ -70,6 +70,8 @@ struct Context {
     return part_base + "_" + kind + "_" + std::to_string(k);
   }
   std::string part_table(const char *kind) const { return part_base + "_" + kind + "_parts"; }
+  /// The table of the place each place moves to when its one transition fires (`<part_base>_moves`).
+  std::string part_next() const { return part_base + "_moves"; }
 
   // Struct fields: chart variables keep their own names; the engine's own fields give way
   // (take a trailing `_`) if a variable already has their name.
@@ -111,6 +113,8 @@ struct Context {
   std::string names;   ///< --names: the table in X_place_name and X_transition_name
   // Locals of the scalable form's run function.
   std::string add_n, lost, lost_n, gained, gained_n, word, bits, i, t;
+  /// The split sequential form: an update part's result, the active place's one transition fired.
+  std::string fire;
   /// The temporaries that keep calls in order are this and a number: `gfec_t0` (c_expr.h).
   std::string temp_prefix;
 

@@ -2,7 +2,7 @@
 // number; the transitions form one if/else-if chain in declaration order, so at most one fires
 // and only those leaving the current state evaluate their condition.
 #include "c_emit.h"
-#include "c_expr.h"
+#include "c_run_writer.h"
 
 #include <fmt/format.h>
 
@@ -10,14 +10,13 @@ namespace gfec::c_backend {
 
 namespace {
 
-class FsmRun {
+class FsmRun : RunWriter {
 public:
-  FsmRun(CodeWriter &w, const Context &c) : w_(w), c_(c), temps_(c.temp_prefix) {}
+  FsmRun(CodeWriter &w, const Context &c) : RunWriter(w, c) {}
 
   void emit() {
-    w_.line("{}void {}({} *{})", c_.linkage, c_.run_fn, c_.struct_type, c_.self);
-    w_.line("{");
-    w_.indent();
+    head();
+    auto body = w_.block("{");
     // The locals of the update (its temporaries, the state it starts from) open the block they
     // are used in: the function's, or the one a terminal state skips — the smallest scope
     // (cppcheck's variableScope), and declarations before statements (MISRA-minded C).
@@ -26,7 +25,7 @@ public:
       section("");
       w_.line("(void){}; /* the machine has neither transitions nor actions */", c_.self);
     }
-    first_tick();
+    first_tick("/* First tick: the initial state enters */");
     // One exit (MISRA C:2012 rule 15.5): a terminal state skips the rest of the tick.
     if (c_.has_terminal) {
       section("/* In a terminal state nothing happens any more */");
@@ -45,17 +44,9 @@ public:
       w_.dedent();
       w_.line("}");
     }
-    w_.dedent();
-    w_.line("}");
   }
 
 private:
-  void section(const std::string &comment) {
-    if (started_) w_.blank();
-    started_ = true;
-    if (!comment.empty()) w_.line(std::string_view(comment));
-  }
-
   void locals() {
     declarations();
     remember_state();
@@ -72,37 +63,12 @@ private:
   }
 
   bool uses_self() const {
-    if (!c_.chart.transitions.empty() || c_.needs_started || c_.has_timers || c_.has_terminal) return true;
-    for (int p = 0; p < static_cast<int>(c_.chart.places.size()); ++p)
-      if (c_.acts(p)) return true;
-    return false;
+    return !c_.chart.transitions.empty() || c_.needs_started || c_.has_timers || c_.has_terminal || any_actions();
   }
 
   /// `m->state == X_S`; an operand of `&&` takes it in parentheses (MISRA C:2012 rule 12.1).
   std::string in_state(int p) const {
     return fmt::format("{} == {}", c_.field(c_.state), c_.place_const.at(static_cast<std::size_t>(p)));
-  }
-
-  void first_tick() {
-    if (!c_.needs_started) return;
-    section("/* First tick: the initial state enters */");
-    w_.line("if (!{}) {{", c_.field(c_.started));
-    w_.indent();
-    std::vector<std::vector<std::string>> text;
-    for (const auto &p : c_.chart.places)
-      text.push_back(p.initial && has_code(p.entry) ? c_statements(c_, *p.entry, temps_) : std::vector<std::string>{});
-    temps_.declare(w_);
-    w_.line("{} = true;", c_.field(c_.started));
-    for (std::size_t i = 0; i < c_.chart.places.size(); ++i) {
-      const auto &p = c_.chart.places[i];
-      if (p.initial && has_code(p.entry)) {
-        w_.line("/* entry {} */", p.name);
-        emit_statements(w_, c_, *p.entry, text[i]);
-        w_.line_back();
-      }
-    }
-    w_.dedent();
-    w_.line("}");
   }
 
   void count_time() {
@@ -160,31 +126,17 @@ private:
     section("/* Leave the old state, enter the new one */");
     w_.line("if ({} != {}) {{", c_.field(c_.state), c_.from);
     w_.indent();
-    const int n = static_cast<int>(c_.chart.places.size());
-    bool exits = false;
-    for (int p = 0; p < n; ++p) exits = exits || c_.runs_exit(p);
     // Exit blocks that read activation see the state left as the current one.
-    const bool swap = exits && c_.exits_read_activity;
+    const bool swap = any_exits() && c_.exits_read_activity;
     if (swap) {
       w_.line("{} {} = {}; /* the state entered: current once the state left has exited */", c_.place_type, c_.to,
               c_.field(c_.state));
       w_.line("{} = {};", c_.field(c_.state), c_.from);
     }
-    for (int p = 0; p < n; ++p)
-      if (c_.runs_exit(p)) {
-        w_.line("/* exit {} */", c_.place(p).name);
-        w_.line("if ({} == {}) {{", c_.from, c_.place_const[static_cast<std::size_t>(p)]);
-        block(has_code(c_.place(p).exit) ? *c_.place(p).exit : std::vector<model::Stmt>{}, c_.stop_call(p));
-      }
+    exit_blocks(
+        [this](int p) { return fmt::format("{} == {}", c_.from, c_.place_const[static_cast<std::size_t>(p)]); });
     if (swap) w_.line("{} = {};", c_.field(c_.state), c_.to);
-    for (int p = 0; p < n; ++p)
-      if (c_.runs_entry(p) || c_.resets_timer(p)) {
-        w_.line("/* {} {} */", c_.runs_entry(p) ? "entry" : "timer of", c_.place(p).name);
-        w_.line("if ({}) {{", in_state(p));
-        std::vector<std::string> first = c_.start_call(p);
-        if (c_.resets_timer(p)) first.insert(first.begin(), fmt::format("{} = 0;", c_.timer_of(p)));
-        block(has_code(c_.place(p).entry) ? *c_.place(p).entry : std::vector<model::Stmt>{}, first);
-      }
+    entry_blocks([this](int p) { return in_state(p); });
     // The hooks go inside the same test: a second `if` on the same condition right after it is
     // what cppcheck calls a duplicate condition when the exit and entry code leave it alone.
     // Instances have no hooks (docs/c-engine.md).
@@ -200,9 +152,7 @@ private:
 
   void hooks() {
     if (c_.chart.transitions.empty() || !c_.hooks() || c_.needs_snapshot()) return;
-    section("");
-    directive(w_, "#ifdef " + c_.hooks_macro);
-    w_.line("/* Observation hooks: the state left and the state entered; the transitions leaving it */");
+    hooks_section("/* Observation hooks: the state left and the state entered; the transitions leaving it */");
     w_.line("if ({} != {}) {{", c_.field(c_.state), c_.from);
     w_.indent();
     hook_calls();
@@ -254,35 +204,11 @@ private:
   }
 
   void actions() {
-    bool any = false;
-    for (int p = 0; p < static_cast<int>(c_.chart.places.size()); ++p) {
-      if (!c_.acts(p)) continue;
-      if (!any)
-        section(c_.has_sub() ? "/* Perform the action of the current state, then one tick of the instance it runs */"
-                             : "/* Perform the action of the current state */");
-      any = true;
-      w_.line("if ({}) {{", in_state(p));
-      block(c_.place(p).action, {}, c_.tick_call(p));
-    }
+    action_blocks(c_.has_sub() ? "/* Perform the action of the current state, then one tick of the instance it runs */"
+                               : "/* Perform the action of the current state */",
+                  [this](int p) { return in_state(p); });
   }
 
-  void block(const std::vector<model::Stmt> &stmts, const std::vector<std::string> &first = {},
-             const std::vector<std::string> &last = {}) {
-    w_.indent();
-    std::vector<std::string> text = c_statements(c_, stmts, temps_);
-    temps_.declare(w_);
-    for (const auto &l : first) w_.line(std::string_view(l));
-    emit_statements(w_, c_, stmts, text);
-    w_.line_back();
-    for (const auto &l : last) w_.line(std::string_view(l));
-    w_.dedent();
-    w_.line("}");
-  }
-
-  CodeWriter &w_;
-  const Context &c_;
-  bool started_ = false;
-  Temporaries temps_;
   std::vector<std::string> conditions_;  ///< by transition, rendered by declarations()
 };
 

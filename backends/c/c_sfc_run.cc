@@ -2,7 +2,7 @@
 // generated engine (Fig. 4 of the GFE paper): one conditional block per transition, then one
 // per place. Every part that a chart does not use is left out, so it costs nothing.
 #include "c_emit.h"
-#include "c_expr.h"
+#include "c_run_writer.h"
 
 #include <fmt/format.h>
 
@@ -10,46 +10,31 @@ namespace gfec::c_backend {
 
 namespace {
 
-class SfcRun {
+class SfcRun : RunWriter {
 public:
-  SfcRun(CodeWriter &w, const Context &c) : w_(w), c_(c), temps_(c.temp_prefix) {}
+  SfcRun(CodeWriter &w, const Context &c) : RunWriter(w, c) {}
 
   void emit() {
-    w_.line("{}void {}({} *{})", c_.linkage, c_.run_fn, c_.struct_type, c_.self);
-    w_.line("{");
-    w_.indent();
+    head();
+    auto body = w_.block("{");
     declarations();
-    first_tick();
+    first_tick("/* First tick: the initial places enter */");
     count_time();
     transitions();
     commit();
     exits_and_entries();
     hooks();
     actions();
-    w_.dedent();
-    w_.line("}");
   }
 
 private:
-  /// Starts a section of the function body: a blank line before all but the first.
-  void section(const std::string &comment) {
-    if (started_) w_.blank();
-    started_ = true;
-    if (!comment.empty()) w_.line(std::string_view(comment));
-  }
-
   bool produces() const {
     for (const auto &t : c_.chart.transitions)
       if (!t.outputs.empty()) return true;
     return false;
   }
 
-  bool uses_self() const {
-    if (!c_.chart.transitions.empty() || c_.needs_started || c_.has_timers) return true;
-    for (int p = 0; p < static_cast<int>(c_.chart.places.size()); ++p)
-      if (c_.acts(p)) return true;
-    return false;
-  }
+  bool uses_self() const { return !c_.chart.transitions.empty() || c_.needs_started || c_.has_timers || any_actions(); }
 
   /// The start of the tick is kept: for exits and entries, for conditions that read activation
   /// (docs/language.md, "Sub-charts"), or in a hooks build for the hooks.
@@ -76,29 +61,6 @@ private:
       if (!snapshot()) directive(w_, "#endif");
     }
     if (!uses_self()) w_.line("(void){}; /* the chart has neither transitions nor actions */", c_.self);
-  }
-
-  /// Step 0: the entry blocks of the initial places, once.
-  void first_tick() {
-    if (!c_.needs_started) return;
-    section("/* First tick: the initial places enter */");
-    w_.line("if (!{}) {{", c_.field(c_.started));
-    w_.indent();
-    std::vector<std::vector<std::string>> text;
-    for (const auto &p : c_.chart.places)
-      text.push_back(p.initial && has_code(p.entry) ? c_statements(c_, *p.entry, temps_) : std::vector<std::string>{});
-    temps_.declare(w_);
-    w_.line("{} = true;", c_.field(c_.started));
-    for (std::size_t i = 0; i < c_.chart.places.size(); ++i) {
-      const auto &p = c_.chart.places[i];
-      if (p.initial && has_code(p.entry)) {
-        w_.line("/* entry {} */", p.name);
-        emit_statements(w_, c_, *p.entry, text[i]);
-        w_.line_back();
-      }
-    }
-    w_.dedent();
-    w_.line("}");
   }
 
   /// Step 1: timers of the places active at the start of the tick (saturating, never wrapping).
@@ -151,43 +113,26 @@ private:
   void exits_and_entries() {
     if (!c_.needs_snapshot()) return;
     section("/* Places that lost their activation exit, then places that gained it enter */");
-    const int n = static_cast<int>(c_.chart.places.size());
-    for (int p = 0; p < n; ++p)
-      if (c_.runs_exit(p)) {
-        w_.line("/* exit {} */", c_.place(p).name);
-        w_.line("if (({}[{}] != 0u) && ({} == 0u)) {{", c_.before, c_.place_const[static_cast<std::size_t>(p)],
-                c_.av_of(p));
-        block(exit_of(p), c_.stop_call(p));
-      }
-    for (int p = 0; p < n; ++p)
-      if (c_.runs_entry(p) || c_.resets_timer(p)) {
-        w_.line("/* {} {} */", c_.runs_entry(p) ? "entry" : "timer of", c_.place(p).name);
-        w_.line("if (({}[{}] == 0u) && ({} != 0u)) {{", c_.before, c_.place_const[static_cast<std::size_t>(p)],
-                c_.av_of(p));
-        std::vector<std::string> first = c_.start_call(p);
-        if (c_.resets_timer(p)) first.insert(first.begin(), fmt::format("{} = 0;", c_.timer_of(p)));
-        block(entry_of(p), first);
-      }
+    exit_blocks([this](int p) {
+      return fmt::format("({}[{}] != 0u) && ({} == 0u)", c_.before, c_.place_const[static_cast<std::size_t>(p)],
+                         c_.av_of(p));
+    });
+    entry_blocks([this](int p) {
+      return fmt::format("({}[{}] == 0u) && ({} != 0u)", c_.before, c_.place_const[static_cast<std::size_t>(p)],
+                         c_.av_of(p));
+    });
   }
 
   /// The observation hooks, compiled only with -DX_HOOKS.
   void hooks() {
     if (!c_.hooks()) return;
-    section("");
-    directive(w_, "#ifdef " + c_.hooks_macro);
-    w_.line("/* Observation hooks: places that lost, then gained activation; transitions open from now on */");
+    hooks_section("/* Observation hooks: places that lost, then gained activation; transitions open from now on */");
     // A loop over the numbers (a test per place would repeat the exit, entry and enabled tests,
     // which cppcheck reports as duplicate conditions); the number is converted to the enum type
     // the hook takes.
     const std::string &b = c_.before, &i = c_.index;
-    const std::string av = c_.field(c_.av);
-    for (bool gained : {false, true}) {
-      w_.line("for (int {0} = 0; {0} < (int){1}; ++{0}) {{", i, c_.place_count);
-      w_.line("    if (({0}[{1}] {2} 0u) && ({3}[{1}] {4} 0u)) {{ {5}({6}, ({7}){1}, {8}); }}", b, i,
-              gained ? "==" : "!=", av, gained ? "!=" : "==", c_.activated_fn, c_.self, c_.place_type,
-              gained ? "true" : "false");
-      w_.line("}");
-    }
+    activation_hooks(fmt::format("for (int {0} = 0; {0} < (int){1}; ++{0}) {{", i, c_.place_count), i,
+                     [&](const std::string &place) { return fmt::format("{}[{}]", b, place); });
     for (std::size_t t = 0; t < c_.chart.transitions.size(); ++t) {
       const auto &inputs = c_.chart.transitions[t].inputs;
       std::string was, is;
@@ -207,44 +152,11 @@ private:
 
   /// Step 4: every active place runs its action block once, in declaration order.
   void actions() {
-    bool any = false;
-    for (int p = 0; p < static_cast<int>(c_.chart.places.size()); ++p) {
-      if (!c_.acts(p)) continue;
-      if (!any)
-        section(c_.has_sub() ? "/* Perform place actions, each followed by one tick of the instance the place runs */"
-                             : "/* Perform place actions */");
-      any = true;
-      w_.line("if ({} != 0u) {{", c_.av_of(p));
-      block(c_.place(p).action, {}, c_.tick_call(p));
-    }
+    action_blocks(c_.has_sub() ? "/* Perform place actions, each followed by one tick of the instance the place runs */"
+                               : "/* Perform place actions */",
+                  [this](int p) { return fmt::format("{} != 0u", c_.av_of(p)); });
   }
 
-  std::vector<model::Stmt> exit_of(int p) const {
-    return has_code(c_.place(p).exit) ? *c_.place(p).exit : std::vector<model::Stmt>{};
-  }
-  std::vector<model::Stmt> entry_of(int p) const {
-    return has_code(c_.place(p).entry) ? *c_.place(p).entry : std::vector<model::Stmt>{};
-  }
-
-  /// The chart's statements as the body of the block just opened, and its closing brace.
-  /// `first` and `last` are lines of engine code that go before and after them.
-  void block(const std::vector<model::Stmt> &stmts, const std::vector<std::string> &first = {},
-             const std::vector<std::string> &last = {}) {
-    w_.indent();
-    std::vector<std::string> text = c_statements(c_, stmts, temps_);
-    temps_.declare(w_);
-    for (const auto &l : first) w_.line(std::string_view(l));
-    emit_statements(w_, c_, stmts, text);
-    w_.line_back();
-    for (const auto &l : last) w_.line(std::string_view(l));
-    w_.dedent();
-    w_.line("}");
-  }
-
-  CodeWriter &w_;
-  const Context &c_;
-  bool started_ = false;
-  Temporaries temps_;
   std::vector<std::string> conditions_;  ///< by transition, rendered by declarations()
 };
 

@@ -1,0 +1,122 @@
+#include "c_run_writer.h"
+
+#include "c_emit.h"
+
+#include <fmt/format.h>
+
+namespace gfec::c_backend {
+
+void RunWriter::head() { w_.line("{}void {}({} *{})", c_.linkage, c_.run_fn, c_.struct_type, c_.self); }
+
+void RunWriter::section(const std::string &comment) {
+  if (started_) w_.blank();
+  started_ = true;
+  if (!comment.empty()) w_.line(std::string_view(comment));
+}
+
+void RunWriter::first_tick(const std::string &comment) {
+  if (!c_.needs_started) return;
+  section(comment);
+  auto scope = w_.block(fmt::format("if (!{}) {{", c_.field(c_.started)));
+  std::vector<std::vector<std::string>> text;
+  for (const auto &p : c_.chart.places)
+    text.push_back(p.initial && has_code(p.entry) ? c_statements(c_, *p.entry, temps_) : std::vector<std::string>{});
+  temps_.declare(w_);
+  w_.line("{} = true;", c_.field(c_.started));
+  for (std::size_t i = 0; i < c_.chart.places.size(); ++i) {
+    const auto &p = c_.chart.places[i];
+    if (p.initial && has_code(p.entry)) {
+      w_.line("/* entry {} */", p.name);
+      statements(*p.entry, text[i], {}, {});
+    }
+  }
+}
+
+void RunWriter::statements(const std::vector<model::Stmt> &stmts, const std::vector<std::string> &text,
+                           const std::vector<std::string> &first, const std::vector<std::string> &last) {
+  for (const auto &l : first) w_.line(std::string_view(l));
+  emit_statements(w_, c_, stmts, text);
+  w_.line_back();
+  for (const auto &l : last) w_.line(std::string_view(l));
+}
+
+void RunWriter::block(const std::vector<model::Stmt> &stmts, const std::vector<std::string> &first,
+                      const std::vector<std::string> &last) {
+  CodeWriter::Scope scope(w_, "}");
+  std::vector<std::string> text = c_statements(c_, stmts, temps_);
+  temps_.declare(w_);
+  statements(stmts, text, first, last);
+}
+
+void RunWriter::exit_blocks(const std::function<std::string(int)> &left) {
+  for (int p = 0; p < places(); ++p)
+    if (c_.runs_exit(p)) {
+      w_.line("/* exit {} */", c_.place(p).name);
+      w_.line("if ({}) {{", left(p));
+      block(exit_of(p), c_.stop_call(p));
+    }
+}
+
+void RunWriter::entry_blocks(const std::function<std::string(int)> &entered) {
+  for (int p = 0; p < places(); ++p)
+    if (c_.runs_entry(p) || c_.resets_timer(p)) {
+      w_.line("/* {} {} */", c_.runs_entry(p) ? "entry" : "timer of", c_.place(p).name);
+      w_.line("if ({}) {{", entered(p));
+      block(entry_of(p), entry_first(p));
+    }
+}
+
+void RunWriter::action_blocks(const std::string &comment, const std::function<std::string(int)> &active) {
+  if (!any_actions()) return;
+  section(comment);
+  for (int p = 0; p < places(); ++p)
+    if (c_.acts(p)) {
+      w_.line("if ({}) {{", active(p));
+      block(c_.place(p).action, {}, c_.tick_call(p));
+    }
+}
+
+void RunWriter::hooks_section(const std::string &comment) {
+  section("");
+  directive(w_, "#ifdef " + c_.hooks_macro);
+  w_.line(std::string_view(comment));
+}
+
+void RunWriter::activation_hooks(const std::string &loop, const std::string &i,
+                                 const std::function<std::string(const std::string &)> &was) {
+  for (bool gained : {false, true}) {
+    w_.line(std::string_view(loop));
+    w_.line("    if (({} {} 0u) && ({}[{}] {} 0u)) {{ {}({}, ({}){}, {}); }}", was(i),
+            gained ? "==" : "!=", c_.field(c_.av), i, gained ? "!=" : "==", c_.activated_fn, c_.self, c_.place_type, i,
+            gained ? "true" : "false");
+    w_.line("}");
+  }
+}
+
+bool RunWriter::any_exits() const {
+  for (int p = 0; p < places(); ++p)
+    if (c_.runs_exit(p)) return true;
+  return false;
+}
+
+bool RunWriter::any_actions() const {
+  for (int p = 0; p < places(); ++p)
+    if (c_.acts(p)) return true;
+  return false;
+}
+
+std::vector<model::Stmt> RunWriter::exit_of(int p) const {
+  return has_code(c_.place(p).exit) ? *c_.place(p).exit : std::vector<model::Stmt>{};
+}
+
+std::vector<model::Stmt> RunWriter::entry_of(int p) const {
+  return has_code(c_.place(p).entry) ? *c_.place(p).entry : std::vector<model::Stmt>{};
+}
+
+std::vector<std::string> RunWriter::entry_first(int p) const {
+  std::vector<std::string> first = c_.start_call(p);
+  if (c_.resets_timer(p)) first.insert(first.begin(), fmt::format("{} = 0;", c_.timer_of(p)));
+  return first;
+}
+
+}  // namespace gfec::c_backend

@@ -1,0 +1,71 @@
+// What the three writers of a run function share (the readable sfc form, c_sfc_run.cc; the
+// scalable form, c_sfc_scalable.cc; the fsm, c_fsm_run.cc): the function's head, its sections,
+// the first tick, and the chart's blocks with the engine's lines around them. Each writer adds
+// only what its form does differently: how a place's block is guarded (an `if` on its counter,
+// on the state, or a `case` of a switch) and the bookkeeping of the tick.
+#pragma once
+
+#include "c_context.h"
+#include "c_expr.h"
+#include "code_writer.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace gfec::c_backend {
+
+class RunWriter {
+protected:
+  RunWriter(CodeWriter &w, const Context &c) : w_(w), c_(c), temps_(c.temp_prefix) {}
+
+  /// `void X_run(X *m)` (static for an instance); the caller opens the body.
+  void head();
+  /// Starts a section of the function body: a blank line before all but the first.
+  void section(const std::string &comment);
+  /// Step 0: the entry blocks of the initial places, once; `comment` heads the section.
+  void first_tick(const std::string &comment);
+
+  /// The chart's statements `stmts`, as c_statements() rendered them into `text`, with lines of
+  /// engine code `first` before them and `last` after them, at the current indentation.
+  void statements(const std::vector<model::Stmt> &stmts, const std::vector<std::string> &text,
+                  const std::vector<std::string> &first, const std::vector<std::string> &last);
+  /// The chart's statements as the body of the block just opened (their temporaries declared at
+  /// its top), and its closing brace.
+  void block(const std::vector<model::Stmt> &stmts, const std::vector<std::string> &first = {},
+             const std::vector<std::string> &last = {});
+  /// Every exit block, in declaration order, each under `if (<left(p)>) {`.
+  void exit_blocks(const std::function<std::string(int)> &left);
+  /// Every entry block (or timer reset), in declaration order, each under `if (<entered(p)>) {`.
+  void entry_blocks(const std::function<std::string(int)> &entered);
+
+  /// Every action block (and instance tick), in declaration order, each under `if (<active(p)>) {`;
+  /// `comment` heads the section, if any place acts.
+  void action_blocks(const std::string &comment, const std::function<std::string(int)> &active);
+
+  /// A section compiled only in a hooks build: `#ifdef X_HOOKS`, then `comment`; the caller
+  /// writes the `#endif`.
+  void hooks_section(const std::string &comment);
+  /// The hooks of the places that lost, then of those that gained activation in the tick: two
+  /// loops `loop` (their head, `for (...) {`) over the place number `i`; `was(i)`: the place's
+  /// activation at the start of the tick, compared with 0u.
+  void activation_hooks(const std::string &loop, const std::string &i,
+                        const std::function<std::string(const std::string &)> &was);
+
+  int places() const { return static_cast<int>(c_.chart.places.size()); }
+  /// Some place runs exit code (an exit block or stopping an instance).
+  bool any_exits() const;
+  /// Some place acts: runs an action block or ticks an instance.
+  bool any_actions() const;
+  std::vector<model::Stmt> exit_of(int p) const;
+  std::vector<model::Stmt> entry_of(int p) const;
+  /// The engine's lines before a place's entry block: its timer reset, its instance started.
+  std::vector<std::string> entry_first(int p) const;
+
+  CodeWriter &w_;
+  const Context &c_;
+  bool started_ = false;
+  Temporaries temps_;
+};
+
+}  // namespace gfec::c_backend
