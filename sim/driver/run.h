@@ -96,6 +96,20 @@ struct RunResult {
   Exchange exchange;
 };
 
+// What the single-robot and the team run loops read the same way.
+
+/// The selected robot's row of the trace, now.
+TraceRow trace_row(const Simulation& sim);
+/// A C engine's places (states) with activation > 0, in order; none for a plan.
+std::vector<int> active_places(const Engine& engine);
+/// An engine's status() as result.json writes it: "succeeded", "failed" or "terminated" (not 0).
+std::string status_text(int status);
+/// An fsm's state change since `last` (which it updates): "state Z1 PickUp()", the state's
+/// label (ChartInfo::states), or "" when the state stayed or the engine has none.
+std::string state_change(const Engine& engine, const ChartInfo& chart, int& last);
+/// Forgets what the robot libraries keep of every robot, before a run.
+void reset_robot_libraries();
+
 /// Runs `engine` on `sim` for at most `seconds` (progress on stderr when it is a terminal).
 RunResult run_engine(Simulation& sim, Engine& engine, const ChartInfo& chart, double seconds, bool quiet);
 
