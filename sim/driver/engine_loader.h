@@ -59,7 +59,7 @@ class Engine {
   int places() const { return places_ ? places_() : 0; }
   /// X_activation of a C engine's place (read only: the run is not changed by looking).
   unsigned activation(int place) const { return activation_ ? activation_(state(), place) : 0; }
-  /// Whether a recording build exposes its sub-chart instances' activation.
+  /// Whether the engine has sub-chart instances (a C engine with gfec's X_instance_activation).
   bool has_instances() const { return instance_activation_ != nullptr; }
   /// The activation of place `place` of sub-chart instance `instance` (ChartInfo::instances),
   /// as the instance's state holds it; meaningful only while the place that runs it is active.
@@ -78,7 +78,7 @@ class Engine {
   int (*state_)(const void*) = nullptr;                               // optional
   int (*places_)() = nullptr;                                         // optional (C engines)
   unsigned (*activation_)(const void*, int) = nullptr;                // optional (C engines)
-  unsigned (*instance_activation_)(const void*, int, int) = nullptr;  // optional (recording builds)
+  unsigned (*instance_activation_)(const void*, int, int) = nullptr;  // optional (sub-charts)
   void (*set_agent_)(void*, int) = nullptr;                           // optional (team machines)
   void (*report_)(void*, int, int) = nullptr;                         // optional (team machines)
   void (*set_context_)(void*, CarbotRobot*) = nullptr;                // optional (C engines)

@@ -26,7 +26,7 @@ struct Recording {
   /// with activation > 0 (sfc), the current state (fsm), the running actor (plan).
   std::vector<std::vector<int>> active;
   /// The rows of sub-chart instances (beyond ChartInfo::own_rows) active after the frame's
-  /// engine call: a place of an instance whose own place is active (a recording build only). Kept
+  /// engine call: a place of an instance whose own place is active. Kept
   /// apart from `active`, which the trace's `active` column names, so that the trace stays the
   /// same with or without recording.
   std::vector<std::vector<int>> instances_active;

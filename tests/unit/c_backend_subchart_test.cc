@@ -133,6 +133,48 @@ TEST_CASE("c engine sub-charts: sfc in fsm in sfc, start, tick and stop innermos
                "av B\n");
 }
 
+TEST_CASE("c engine sub-charts: X_instance_activation tells where each instance is, depth first",
+          "[c_backend][subchart]") {
+  ChartBuilder b("Top", Kind::Sfc);
+  three_levels(b);
+  // Instance 0 is A's Mid (an fsm), instance 1 M1's Leaf (an sfc: readable, or sequential in the
+  // scalable form). A stopped instance keeps the state its last tick left; a restart resets it.
+  std::string log = run_both("sub_instance_activation", b.model(),
+                             "\n"
+                             "LeafGo\n"
+                             "MidGo\n"
+                             "TopGo\n"
+                             "TopBack\n",
+                             "-DHARNESS_INSTANCES");
+  std::istringstream in(log);
+  std::string shown;
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("tick ", 0) == 0 || line.rfind("av ", 0) == 0 || line.rfind("in ", 0) == 0 ||
+        line.rfind("out of range", 0) == 0)
+      shown += line + "\n";
+  CHECK(shown == "tick 1\nav A\nin A: M1\nin A.M1: L1\n"
+                 "tick 2\nav A\nin A: M1\nin A.M1: L2\n"    // L1 -> L2 inside M1
+                 "tick 3\nav A\nin A: M2\nin A.M1: L2\n"    // M1 -> M2: Leaf stopped as it was
+                 "tick 4\nav B\nin A: M2\nin A.M1: L2\n"    // A -> B: Mid stopped as it was
+                 "tick 5\nav A\nin A: M1\nin A.M1: L1\n");  // B -> A: Mid and its Leaf restarted
+  auto files = emit_c(b.model(), "engine.c", true, "hand.sfc");
+  const std::string &h = files[1].contents;
+  CHECK(h.find("Top_A_INSTANCE,") < h.find("Top_A_M1_INSTANCE,"));
+  CHECK(h.find("unsigned Top_instance_activation(const Top *m, int instance, int place);") != std::string::npos);
+}
+
+TEST_CASE("c engine sub-charts: a chart without sub-charts has no instance API", "[c_backend][subchart]") {
+  ChartBuilder b("Flat", Kind::Sfc);
+  b.fn("Go", Type::Bool);
+  b.place("A", true);
+  b.place("B");
+  b.transition({"A"}, {"B"}, b.call("Go"));
+  for (const auto &f : emit_c(b.model(), "engine.c", true, "hand.sfc")) {
+    CHECK(f.contents.find("_instance_activation") == std::string::npos);
+    CHECK(f.contents.find("INSTANCE") == std::string::npos);
+  }
+}
+
 namespace {
 
 /// sfc Two { P runs Job, Q runs Job (the same chart twice), W reads them, R }, fsm Job counts its

@@ -377,3 +377,25 @@ unsigned Patrol_activation(const Patrol *m, int place)
 {
     return ((place >= 0) && (place < (int)Patrol_PLACE_COUNT)) ? m->av[place] : 0u;
 }
+
+unsigned Patrol_instance_activation(const Patrol *m, int instance, int place)
+{
+    unsigned value = 0u;
+    switch (instance) {
+    case Patrol_Search_INSTANCE:
+        value = ((int)m->Search.state == place) ? 1u : 0u;
+        break;
+    case Patrol_Search_Grab_INSTANCE:
+        value = ((place >= 0) && (place < (int)Patrol_Search_Grab_PLACE_COUNT)) ? m->Search.Grab.av[place] : 0u;
+        break;
+    case Patrol_Retry_INSTANCE:
+        value = ((int)m->Retry.state == place) ? 1u : 0u;
+        break;
+    case Patrol_Retry_Grab_INSTANCE:
+        value = ((place >= 0) && (place < (int)Patrol_Retry_Grab_PLACE_COUNT)) ? m->Retry.Grab.av[place] : 0u;
+        break;
+    default:
+        break;
+    }
+    return value;
+}
