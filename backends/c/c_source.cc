@@ -214,16 +214,6 @@ void team_functions(CodeWriter &w, const Context &c) {
   w.line("}");
 }
 
-/// The activation of `place` in the state `obj` of chart (or instance) `c`, as an expression:
-/// `obj` as Context::member() takes it ("" for the engine's own state).
-std::string activation_value(const Context &c, const std::string &obj) {
-  if (c.fsm) return fmt::format("((int){} == place) ? 1u : 0u", c.member(obj, c.state));
-  if (c.sequential())
-    return fmt::format("((place >= 0) && (place < (int){}) && ((int){} == place)) ? 1u : 0u", c.place_count,
-                       c.member(obj, c.current));
-  return fmt::format("((place >= 0) && (place < (int){})) ? {}[place] : 0u", c.place_count, c.member(obj, c.av));
-}
-
 /// X_instance_activation (docs/c-engine.md "Sub-charts"): a case per instance, each reading the
 /// instance's state as its own form holds it.
 void instance_activation(CodeWriter &w, const Context &c) {
@@ -232,8 +222,16 @@ void instance_activation(CodeWriter &w, const Context &c) {
   w.line("    unsigned value = 0u;");
   w.line("    switch (instance) {");
   c.each_instance(c.self + "->", [&](const Context &s, const std::string &member) {
+    // As X_activation reads the root's, with if statements: MISRA C:2012 rule 10.6 forbids
+    // assigning a conditional expression's narrow unsigned to the wider result.
     w.line("    case {}:", s.instance_const);
-    w.line("        value = {};", activation_value(s, member));
+    if (s.fsm) w.line("        if ((int){} == place) {{", s.member(member, s.state));
+    else if (s.sequential())
+      w.line("        if ((place >= 0) && (place < (int){}) && ((int){} == place)) {{", s.place_count,
+             s.member(member, s.current));
+    else w.line("        if ((place >= 0) && (place < (int){})) {{", s.place_count);
+    w.line("            value = {};", s.fsm || s.sequential() ? "1u" : s.member(member, s.av) + "[place]");
+    w.line("        }");
     w.line("        break;");
   });
   w.line("    default:");
@@ -247,7 +245,11 @@ void accessors(CodeWriter &w, const Context &c) {
   const std::string &t = c.type, &m = c.self;
   w.line("unsigned {0}_activation(const {0} *{1}, int place)", t, m);
   w.line("{");
-  w.line("    return {};", activation_value(c, ""));
+  if (c.fsm) w.line("    return ((int){} == place) ? 1u : 0u;", c.field(c.state));
+  else if (c.sequential())
+    w.line("    return ((place >= 0) && (place < (int){}) && ((int){} == place)) ? 1u : 0u;", c.place_count,
+           c.field(c.current));
+  else w.line("    return ((place >= 0) && (place < (int){})) ? {}[place] : 0u;", c.place_count, c.field(c.av));
   w.line("}");
   if (c.has_sub()) {
     w.blank();

@@ -151,7 +151,9 @@ unsigned Roam_instance_activation(const Roam *m, int instance, int place)
     unsigned value = 0u;
     switch (instance) {
     case Roam_Avoid_INSTANCE:
-        value = ((int)m->Avoid.state == place) ? 1u : 0u;
+        if ((int)m->Avoid.state == place) {
+            value = 1u;
+        }
         break;
     default:
         break;
