@@ -310,7 +310,7 @@ std::string cpp_shim(const ChartInfo& c, bool has_header) {
 #include "carbot_toolbox.h"
 {factory}
 
-extern "C" double carbot_control_period(void);
+extern "C" double carbot_control_period(struct CarbotRobot* robot);
 extern "C" void carbot_sim_plan_event(double t, const char* text);
 
 namespace {{
@@ -337,21 +337,33 @@ struct Log : afp::TraceObserver {{
   }}
 }};
 
+// The plan starts at its first tick, once its robot is known (set_context comes after init).
 struct Engine {{
   Env ee;
   afp::Configuration config;
   Log log;
   std::unique_ptr<afp::Plan> plan = make_{n}(ee);
   afp::SteppedExecutor exec{{*plan, config, &log}};
-  afp::Duration period = std::chrono::duration_cast<afp::Duration>(
-      std::chrono::duration<double>(carbot_control_period()));
+  afp::Duration period{{}};
+  bool started = false;
 }};
 
 }}  // namespace
 
 extern "C" std::size_t {size}(void) {{ return sizeof(Engine); }}
-extern "C" void {init}(void* m) {{ (new (m) Engine)->exec.start(); }}
-extern "C" void {run}(void* m) {{ static_cast<Engine*>(m)->exec.step(static_cast<Engine*>(m)->period); }}
+extern "C" void {init}(void* m) {{ new (m) Engine; }}
+/* The instance context, as a C engine's: the robot the plan's toolbox drives. */
+extern "C" void {set_context}(void* m, struct CarbotRobot* robot) {{
+  auto* e = static_cast<Engine*>(m);
+  e->ee.set_robot(robot);
+  e->period = std::chrono::duration_cast<afp::Duration>(std::chrono::duration<double>(carbot_control_period(robot)));
+}}
+extern "C" void {run}(void* m) {{
+  auto* e = static_cast<Engine*>(m);
+  if (!e->started) e->exec.start();
+  e->started = true;
+  e->exec.step(e->period);
+}}
 extern "C" void {fini}(void* m) {{ static_cast<Engine*>(m)->~Engine(); }}
 extern "C" int {status}(const void* m) {{
   switch (static_cast<const Engine*>(m)->exec.status()) {{
@@ -367,8 +379,8 @@ extern "C" int {status}(const void* m) {{
       // gfec's header declares the factory; without one, declare it as docs/runtime.md shows.
       fmt::arg("factory", has_header ? std::string("#include \"engine.hpp\"")
                                      : fmt::format("std::unique_ptr<afp::Plan> make_{}(Env& ee);", c.name)),
-      fmt::arg("size", kEngineSize), fmt::arg("init", kEngineInit), fmt::arg("run", kEngineRun),
-      fmt::arg("fini", kEngineFini), fmt::arg("status", kEngineStatus));
+      fmt::arg("size", kEngineSize), fmt::arg("init", kEngineInit), fmt::arg("set_context", kEngineSetContext),
+      fmt::arg("run", kEngineRun), fmt::arg("fini", kEngineFini), fmt::arg("status", kEngineStatus));
 }
 
 BuiltEngine build_engine(const Options& o, const std::string& dir) {

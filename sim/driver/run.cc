@@ -181,7 +181,7 @@ RunResult run_engine(Simulation& sim, Engine& engine, const ChartInfo& chart, do
   reset_robot_libraries();
   engine_log().clear();
   engine.init();
-  engine.set_context(carbot_robot_handle(0));  // a C engine's calls name the robot; a plan's act on the bound one
+  engine.set_context(carbot_robot_handle(0));  // every robot call of the engine names the robot
   Progress progress(!quiet, seconds);
   const long ticks = std::lround(seconds / sim.config().control_period);
   int last_state = -1;

@@ -113,9 +113,9 @@ void reset_robot_libraries();
 /// Runs `engine` on `sim` for at most `seconds` (progress on stderr when it is a terminal).
 RunResult run_engine(Simulation& sim, Engine& engine, const ChartInfo& chart, double seconds, bool quiet);
 
-/// Runs one engine per robot of `sim` (engines[i] drives robot i, which is agent i of a team
-/// machine) for at most `seconds`: every tick all engines run in robot order, each with the
-/// HAL bound to its robot; then a team machine's states are exchanged as `exchange` says.
+/// Runs one engine per robot of `sim` (engines[i] drives robot i, its instance context, which is
+/// agent i of a team machine) for at most `seconds`: every tick all engines run in robot order;
+/// then a team machine's states are exchanged as `exchange` says.
 /// The run ends at the time limit, on escape, or when every engine has ended.
 RunResult run_team(Simulation& sim, std::vector<Engine*> engines, const ChartInfo& chart, double seconds,
                    Exchange exchange);

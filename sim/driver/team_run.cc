@@ -1,6 +1,6 @@
-// The run loop for several robots in one world: one engine per robot, ticked in robot order
-// with the HAL bound to that robot, and for a team machine the exchange of states after every
-// tick (docs/sim.md, "Several robots"; docs/language.md "Teams").
+// The run loop for several robots in one world: one engine per robot, each with its robot as
+// instance context, ticked in robot order, and for a team machine the exchange of states after
+// every tick (docs/sim.md, "Several robots"; docs/language.md "Teams").
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -47,11 +47,11 @@ RunResult run_team(Simulation& sim, std::vector<Engine*> engines, const ChartInf
   result.robots.resize(static_cast<std::size_t>(n));
   result.team_machine = chart.team > 0;
   reset_robot_libraries();
-  // Each C engine instance gets its robot as context: every interface call it makes names the
-  // robot it is for (docs/sim.md "Several robots"). The HAL stays bound to the simulation; a
-  // plan (no context) is bound to its robot before each tick instead.
+  // Each engine gets its robot as context: every interface call it makes names the robot it is
+  // for, and the robot library passes it on to the HAL (docs/sim.md "Several robots"). The HAL
+  // is bound to the simulation only.
+  hal::bind(&sim);
   for (int i = 0; i < n; ++i) {
-    hal::bind(&sim, i);
     engines[static_cast<std::size_t>(i)]->init();
     engines[static_cast<std::size_t>(i)]->set_context(carbot_robot_handle(i));
     engines[static_cast<std::size_t>(i)]->set_agent(i);
@@ -103,7 +103,6 @@ RunResult run_team(Simulation& sim, std::vector<Engine*> engines, const ChartInf
         continue;
       }
       sim.select(i);  // this robot's row below; its engine's calls reach it through their context
-      if (!engine(i).has_context()) hal::bind(&sim, i);
       engine(i).run();
       RobotRun& r = robot(i);
       if (std::string change = state_change(engine(i), chart, last_state[static_cast<std::size_t>(i)]); !change.empty())
@@ -145,7 +144,7 @@ RunResult run_team(Simulation& sim, std::vector<Engine*> engines, const ChartInf
     sim.step_control();
   }
   for (int i = 0; i < n; ++i) {
-    hal::bind(&sim, i);
+    sim.select(i);
     engine(i).finish();
     sim.stop();
     RobotRun& r = robot(i);
