@@ -71,9 +71,10 @@ BuiltEngine build_engine(const Options& options, const std::string& dir);
 
 /// The shim's C source for a C engine of `chart` (exposed for tests).
 std::string c_shim(const ChartInfo& chart);
-/// A header renaming the calls of interfaces whose robot library carries a prefix (FetchBot's
-/// `PickUp` is `FetchBot_PickUp` in carbot-sim: CleanBot has a `PickUp` too); "" when none does.
-std::string robot_renames(const ChartInfo& chart);
+/// A header renaming each interface function the engine calls to its robot library's name, the
+/// interface's name and the function's (CleanBot's `PickUp` is `CleanBot_PickUp`: FetchBot has
+/// a `PickUp` too, and carbot-sim links both libraries).
+std::string robot_names(const ChartInfo& chart);
 /// For a recording build (docs/viewer.md): a header renaming each interface function F the
 /// engine calls to carbot_rec_F, and the C source of those wrappers, which call F and report
 /// the call and its result to carbot-sim. The engine makes the same calls in the same order.

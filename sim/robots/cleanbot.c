@@ -142,25 +142,25 @@ static bool handled(struct CarbotRobot* robot) {
 
 /* --- actions ------------------------------------------------------------------------------ */
 
-void DriveToItem(struct CarbotRobot* robot) {
+void CleanBot_DriveToItem(struct CarbotRobot* robot) {
   double x, y;
   aim_at(robot, GOAL_ITEM);
   if (!goal_point(robot, &x, &y)) {
     carbot_drive(robot, 0, 0);
     return;
   }
-  if (Arrived(robot)) carbot_drive(robot, 0, 0);
+  if (CleanBot_Arrived(robot)) carbot_drive(robot, 0, 0);
   else go_to(robot, x, y);
 }
 
-void PickUp(struct CarbotRobot* robot) {
+void CleanBot_PickUp(struct CarbotRobot* robot) {
   double x, y;
   aim_at(robot, GOAL_ITEM);
-  if (Holding(robot) || !goal_point(robot, &x, &y)) {
+  if (CleanBot_Holding(robot) || !goal_point(robot, &x, &y)) {
     carbot_drive(robot, 0, 0);
     return;
   }
-  if (!Arrived(robot)) { /* the item is not (or no longer) in reach: fetch it first */
+  if (!CleanBot_Arrived(robot)) { /* the item is not (or no longer) in reach: fetch it first */
     me(robot)->handle_since = -1;
     go_to(robot, x, y);
     return;
@@ -168,19 +168,19 @@ void PickUp(struct CarbotRobot* robot) {
   if (handled(robot) && carbot_grip(robot, me(robot)->item)) me(robot)->placed = false;
 }
 
-void Transport(struct CarbotRobot* robot) {
+void CleanBot_Transport(struct CarbotRobot* robot) {
   double x, y;
   aim_at(robot, GOAL_DESTINATION);
-  if (!Holding(robot) || !goal_point(robot, &x, &y) || Arrived(robot)) {
+  if (!CleanBot_Holding(robot) || !goal_point(robot, &x, &y) || CleanBot_Arrived(robot)) {
     carbot_drive(robot, 0, 0);
     return;
   }
   go_to(robot, x, y);
 }
 
-void PlaceItem(struct CarbotRobot* robot) {
+void CleanBot_PlaceItem(struct CarbotRobot* robot) {
   aim_at(robot, GOAL_DESTINATION);
-  if (!Holding(robot)) {
+  if (!CleanBot_Holding(robot)) {
     carbot_drive(robot, 0, 0);
     return;
   }
@@ -192,31 +192,31 @@ void PlaceItem(struct CarbotRobot* robot) {
 
 /* --- conditions --------------------------------------------------------------------------- */
 
-bool Arrived(struct CarbotRobot* robot) {
+bool CleanBot_Arrived(struct CarbotRobot* robot) {
   double x, y;
   return goal_point(robot, &x, &y) && gripper_distance_to(robot, x, y) < CLEANBOT_ARRIVED;
 }
 
-bool Holding(struct CarbotRobot* robot) {
+bool CleanBot_Holding(struct CarbotRobot* robot) {
   return current_item(robot) >= 0 && carbot_held_item(robot) == me(robot)->item;
 }
 
-bool FarFromDestination(struct CarbotRobot* robot) {
+bool CleanBot_FarFromDestination(struct CarbotRobot* robot) {
   const int i = current_item(robot);
   if (i < 0) return false;
   const CarbotItem it = carbot_item(robot, i);
   return dist(it.x, it.y, it.dest_x, it.dest_y) > CLEANBOT_FAR;
 }
 
-bool ItemPlaced(struct CarbotRobot* robot) { return me(robot)->placed && !Holding(robot); }
+bool CleanBot_ItemPlaced(struct CarbotRobot* robot) { return me(robot)->placed && !CleanBot_Holding(robot); }
 
-bool ItemAtDestination(struct CarbotRobot* robot) {
+bool CleanBot_ItemAtDestination(struct CarbotRobot* robot) {
   const int i = current_item(robot);
   return i >= 0 && at_destination(carbot_item(robot, i));
 }
 
 /* No item to clean up, or no progress towards the goal for a while (pushing against a wall). */
-bool Stuck(struct CarbotRobot* robot) {
+bool CleanBot_Stuck(struct CarbotRobot* robot) {
   if (current_item(robot) < 0) return true;
   return me(robot)->goal != GOAL_NONE && carbot_time(robot) - me(robot)->best_since > CLEANBOT_STUCK_TIME;
 }

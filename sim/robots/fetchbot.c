@@ -7,9 +7,8 @@
  * robots are not avoided: a robot that drives at an item another robot is holding runs into
  * that robot, which is what the contrast run shows.
  *
- * FetchBot and CleanBot share function names (DriveToItem, PickUp, Arrived, Holding), so
- * this library's functions carry the interface's name as a prefix (FetchBot_PickUp); carbot-sim
- * compiles a FetchBot engine with a header that renames its calls (docs/sim.md, "FetchBot").
+ * As every robot library's, its functions carry the interface's name (FetchBot_PickUp:
+ * CleanBot has a PickUp too); carbot-sim renames an engine's calls to them (sim/robots/robots.h).
  *
  * Units: metres, seconds, radians. Details and numbers: docs/sim.md, "FetchBot".
  */

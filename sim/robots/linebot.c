@@ -41,15 +41,15 @@ static void set_side(struct CarbotRobot* robot, double* side_speeds, double spee
   carbot_drive(robot, (left_speeds[i] + right_speeds[i]) / 2, (right_speeds[i] - left_speeds[i]) / LINEBOT_TRACK);
 }
 
-bool Left_IR_Black(struct CarbotRobot* robot) { return carbot_ir_black(robot, CARBOT_LEFT); }
-bool Left_IR_White(struct CarbotRobot* robot) { return !carbot_ir_black(robot, CARBOT_LEFT); }
-bool Right_IR_Black(struct CarbotRobot* robot) { return carbot_ir_black(robot, CARBOT_RIGHT); }
-bool Right_IR_White(struct CarbotRobot* robot) { return !carbot_ir_black(robot, CARBOT_RIGHT); }
+bool LineBot_Left_IR_Black(struct CarbotRobot* robot) { return carbot_ir_black(robot, CARBOT_LEFT); }
+bool LineBot_Left_IR_White(struct CarbotRobot* robot) { return !carbot_ir_black(robot, CARBOT_LEFT); }
+bool LineBot_Right_IR_Black(struct CarbotRobot* robot) { return carbot_ir_black(robot, CARBOT_RIGHT); }
+bool LineBot_Right_IR_White(struct CarbotRobot* robot) { return !carbot_ir_black(robot, CARBOT_RIGHT); }
 
-void Left_FW(struct CarbotRobot* robot) { set_side(robot, left_speeds, LINEBOT_SIDE_SPEED); }
+void LineBot_Left_FW(struct CarbotRobot* robot) { set_side(robot, left_speeds, LINEBOT_SIDE_SPEED); }
 
-void Left_Stop(struct CarbotRobot* robot) { set_side(robot, left_speeds, LINEBOT_STOP_SPEED); }
+void LineBot_Left_Stop(struct CarbotRobot* robot) { set_side(robot, left_speeds, LINEBOT_STOP_SPEED); }
 
-void Right_FW(struct CarbotRobot* robot) { set_side(robot, right_speeds, LINEBOT_SIDE_SPEED); }
+void LineBot_Right_FW(struct CarbotRobot* robot) { set_side(robot, right_speeds, LINEBOT_SIDE_SPEED); }
 
-void Right_Stop(struct CarbotRobot* robot) { set_side(robot, right_speeds, LINEBOT_STOP_SPEED); }
+void LineBot_Right_Stop(struct CarbotRobot* robot) { set_side(robot, right_speeds, LINEBOT_STOP_SPEED); }

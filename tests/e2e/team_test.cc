@@ -193,15 +193,15 @@ TEST_CASE("team libraries: an interface call acts on the robot of its context, n
   CarbotRobot *const first = carbot_robot_handle(0), *const second = carbot_robot_handle(1);
   CHECK(first != second);
   CHECK(carbot_robot_of(second) == 1);
-  Left_FW(second);
-  Right_FW(second);
+  LineBot_Left_FW(second);
+  LineBot_Right_FW(second);
   CHECK(carbot_robot_count(second) == 2);
   sim.select(1);
   CHECK(sim.commanded_forward() == Approx(0.2));
   sim.select(0);
   CHECK(sim.commanded_forward() == Approx(0));  // the bound robot was told nothing
   // Each robot's library state is its own: robot 0's left side alone turns it, robot 1 goes on.
-  Left_FW(first);
+  LineBot_Left_FW(first);
   sim.select(0);
   CHECK(sim.commanded_forward() == Approx(0.1));
   sim.select(1);
