@@ -8,6 +8,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <functional>
+
 using namespace cbt;
 
 namespace {
@@ -34,6 +36,15 @@ std::string run_both(const std::string &test, const model::Model &m, const std::
     CHECK(logs[3] == logs[0]);
   }
   return logs[0];
+}
+
+/// The lines of `log` that `keep` keeps.
+std::string lines_where(const std::string &log, const std::function<bool(const std::string &)> &keep) {
+  std::istringstream in(log);
+  std::string out;
+  for (std::string line; std::getline(in, line);)
+    if (keep(line)) out += line + "\n";
+  return out;
 }
 
 /// sfc Top { A runs fsm Mid { M1 runs sfc Leaf { L1, L2 }, M2, success Ok }, B }, every place
@@ -146,12 +157,11 @@ TEST_CASE("c engine sub-charts: X_instance_activation tells where each instance 
                              "TopGo\n"
                              "TopBack\n",
                              "-DHARNESS_INSTANCES");
-  std::istringstream in(log);
-  std::string shown;
-  for (std::string line; std::getline(in, line);)
-    if (line.rfind("tick ", 0) == 0 || line.rfind("av ", 0) == 0 || line.rfind("in ", 0) == 0 ||
-        line.rfind("out of range", 0) == 0)
-      shown += line + "\n";
+  const std::string shown = lines_where(log, [](const std::string &line) {
+    for (const char *kept : {"tick ", "av ", "in ", "out of range"})
+      if (line.rfind(kept, 0) == 0) return true;
+    return false;
+  });
   CHECK(shown == "tick 1\nav A\nin A: M1\nin A.M1: L1\n"
                  "tick 2\nav A\nin A: M1\nin A.M1: L2\n"    // L1 -> L2 inside M1
                  "tick 3\nav A\nin A: M2\nin A.M1: L2\n"    // M1 -> M2: Leaf stopped as it was
@@ -312,11 +322,7 @@ void mission(ChartBuilder &b) {
 
 /// The log without the hooks' lines.
 std::string without_hooks(const std::string &log) {
-  std::istringstream in(log);
-  std::string out;
-  for (std::string line; std::getline(in, line);)
-    if (line.rfind("hook ", 0) != 0) out += line + "\n";
-  return out;
+  return lines_where(log, [](const std::string &line) { return line.rfind("hook ", 0) != 0; });
 }
 
 }  // namespace
