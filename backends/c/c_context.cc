@@ -77,6 +77,14 @@ void name_globals(Context &c, NameSpace &globals, const Context *root) {
     globals.claim(c.set_context_fn);
     globals.claim(c.context_fn);
   }
+  const bool has_sub =
+      std::any_of(c.chart.places.begin(), c.chart.places.end(), [](const model::Place &p) { return p.runs >= 0; });
+  if (c.root && has_sub) {
+    c.instance_type = t + "_instance";
+    c.instance_count = t + "_INSTANCE_COUNT";
+    c.instance_activation_fn = t + "_instance_activation";
+    for (const auto *n : {&c.instance_type, &c.instance_count, &c.instance_activation_fn}) globals.claim(*n);
+  }
   if (c.root && c.options.names) {
     c.place_name_fn = t + "_place_name";
     c.transition_name_fn = t + "_transition_name";
@@ -235,6 +243,7 @@ std::unique_ptr<Context> make_instance(const Context &c, int p, NameSpace &globa
   while (!is_free(prefix)) prefix += '_';
   s->type = prefix;
   for (const char *api : {"_init", "_run", "_stop"}) globals.claim(prefix + api);
+  s->instance_const = globals.take(prefix + "_INSTANCE");
   s->struct_type = "struct " + prefix;
   s->linkage = "static ";
   s->init_fn = prefix + "_init";

@@ -7,6 +7,7 @@
 #include "c_layout.h"
 #include "model.h"
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -92,12 +93,17 @@ struct Context {
   std::string team_size;     ///< X_TEAM_SIZE, the number of agents
   std::string team_fn;       ///< X_team: how many other agents last reported a state
   // The instance context (--context, docs/c-engine.md "Instance context"); empty without it.
-  std::string ctx_field;           ///< the struct member holding it, in the root and every instance
-  std::string ctx_param;           ///< X_set_context's parameter, and the prototypes' first one
-  std::string set_context_fn;      ///< X_set_context
-  std::string context_fn;          ///< X_context
-  std::string place_name_fn;       ///< X_place_name (--names)
-  std::string transition_name_fn;  ///< X_transition_name (--names)
+  std::string ctx_field;       ///< the struct member holding it, in the root and every instance
+  std::string ctx_param;       ///< X_set_context's parameter, and the prototypes' first one
+  std::string set_context_fn;  ///< X_set_context
+  std::string context_fn;      ///< X_context
+  // Sub-chart instances, for the caller (docs/c-engine.md "Sub-charts"); empty without any.
+  std::string instance_type;           ///< the root's X_instance: the instances' numbers
+  std::string instance_count;          ///< the root's X_INSTANCE_COUNT
+  std::string instance_activation_fn;  ///< the root's X_instance_activation
+  std::string instance_const;          ///< an instance's number in X_instance: `Patrol_Search_INSTANCE`
+  std::string place_name_fn;           ///< X_place_name (--names)
+  std::string transition_name_fn;      ///< X_transition_name (--names)
   /// Every interface call passes the context first.
   bool has_context() const { return !options.context_type.empty(); }
   /// `void *ctx`, `struct motor *ctx`: the context as a parameter called `name`.
@@ -161,6 +167,18 @@ struct Context {
     return false;
   }
   bool acts(int p) const { return !place(p).action.empty() || sub_of(p); }
+  /// Calls `f(instance, member)` for every instance below this context, depth first in declaration
+  /// order (parents first: the numbering of X_instance), `member` how its struct is reached from
+  /// `prefix` (`m->` gives `m->Search`, then `m->Search.Grab`).
+  void each_instance(const std::string &prefix,
+                     const std::function<void(const Context &, const std::string &)> &f) const {
+    for (std::size_t p = 0; p < sub.size(); ++p) {
+      if (!sub[p]) continue;
+      const std::string member = prefix + sub_field[p];
+      f(*sub[p], member);
+      sub[p]->each_instance(member + ".", f);
+    }
+  }
 
   // ------------------------------------------------------------ what the chart uses
   std::vector<bool> is_input;   ///< by place: some transition consumes its activation

@@ -161,6 +161,33 @@ void names_api(CodeWriter &w, const Context &c) {
   w.line("const char *{}(int transition);", c.transition_name_fn);
 }
 
+/// A chart with sub-charts: the instances' numbers and the reader of their activation
+/// (docs/c-engine.md "Sub-charts"), for a caller that shows where each instance is.
+void instance_api(CodeWriter &w, const Context &c) {
+  const std::string &t = c.type;
+  w.line("/* The sub-chart instances, depth first in declaration order. */");
+  w.line("typedef enum {");
+  w.indent();
+  std::vector<std::pair<std::string, std::string>> rows;
+  c.each_instance("", [&](const Context &s, const std::string &) {
+    rows.emplace_back(s.instance_const + ",", fmt::format("{}, run by {}", s.chart.name, s.owner));
+  });
+  aligned(w, rows);
+  w.line("{}", c.instance_count);
+  w.dedent();
+  w.line("}} {};", c.instance_type);
+  // The first instance's first place names the numbering by example.
+  std::string example;
+  c.each_instance("", [&](const Context &s, const std::string &) {
+    if (example.empty()) example = s.place_const.at(0);
+  });
+  w.line("/* The activation of place `place` of instance `instance`, the place numbered as in that");
+  w.line("   instance's enumeration ({}, ...), as {}_activation tells the root's:", example, t);
+  w.line("   where the instance is while the place that runs it is active, else where its last tick");
+  w.line("   left it. 0 for a number out of range. */");
+  w.line("unsigned {}(const {} *m, int instance, int place);", c.instance_activation_fn, t);
+}
+
 void api(CodeWriter &w, const Context &c) {
   const std::string &t = c.type;
   w.line("/* Sets the initial {}; calls no code of the chart. */", c.fsm ? "state" : "marking");
@@ -182,6 +209,7 @@ void api(CodeWriter &w, const Context &c) {
     w.line("/* The activation counter of a place (a {}_<place>); 0 for a number out of range. */", t);
     w.line("unsigned {0}_activation(const {0} *m, int place);", t);
   }
+  if (c.has_sub()) instance_api(w, c);
   if (c.has_context()) context_api(w, c);
   if (c.options.names) names_api(w, c);
 }

@@ -214,6 +214,33 @@ void team_functions(CodeWriter &w, const Context &c) {
   w.line("}");
 }
 
+/// X_instance_activation (docs/c-engine.md "Sub-charts"): a case per instance, each reading the
+/// instance's state as its own form holds it.
+void instance_activation(CodeWriter &w, const Context &c) {
+  w.line("unsigned {}(const {} *{}, int instance, int place)", c.instance_activation_fn, c.type, c.self);
+  w.line("{");
+  w.line("    unsigned value = 0u;");
+  w.line("    switch (instance) {");
+  c.each_instance(c.self + "->", [&](const Context &s, const std::string &member) {
+    // As X_activation reads the root's, with if statements: MISRA C:2012 rule 10.6 forbids
+    // assigning a conditional expression's narrow unsigned to the wider result.
+    w.line("    case {}:", s.instance_const);
+    if (s.fsm) w.line("        if ((int){} == place) {{", s.member(member, s.state));
+    else if (s.sequential())
+      w.line("        if ((place >= 0) && (place < (int){}) && ((int){} == place)) {{", s.place_count,
+             s.member(member, s.current));
+    else w.line("        if ((place >= 0) && (place < (int){})) {{", s.place_count);
+    w.line("            value = {};", s.fsm || s.sequential() ? "1u" : s.member(member, s.av) + "[place]");
+    w.line("        }");
+    w.line("        break;");
+  });
+  w.line("    default:");
+  w.line("        break;");
+  w.line("    }");
+  w.line("    return value;");
+  w.line("}");
+}
+
 void accessors(CodeWriter &w, const Context &c) {
   const std::string &t = c.type, &m = c.self;
   w.line("unsigned {0}_activation(const {0} *{1}, int place)", t, m);
@@ -224,6 +251,10 @@ void accessors(CodeWriter &w, const Context &c) {
            c.field(c.current));
   else w.line("    return ((place >= 0) && (place < (int){})) ? {}[place] : 0u;", c.place_count, c.field(c.av));
   w.line("}");
+  if (c.has_sub()) {
+    w.blank();
+    instance_activation(w, c);
+  }
   if (!c.fsm) return;
   w.blank();
   w.line("{1} {0}_state(const {0} *{2})", t, c.place_type, m);
@@ -237,17 +268,6 @@ void accessors(CodeWriter &w, const Context &c) {
   w.line("}");
 }
 
-/// `m->Search.ctx`, `m->Search.Inner.ctx`: the context members of every instance below `c`
-/// (`prefix`: how its own fields are reached, `m->` for the root), parents first.
-void instance_contexts(const Context &c, const std::string &prefix, std::vector<std::string> &out) {
-  for (std::size_t p = 0; p < c.sub.size(); ++p) {
-    if (!c.sub[p]) continue;
-    const std::string member = prefix + c.sub_field[p];
-    out.push_back(member + "." + c.sub[p]->ctx_field);
-    instance_contexts(*c.sub[p], member + ".", out);
-  }
-}
-
 /// --context: X_set_context and X_context (docs/c-engine.md "Instance context"). Each instance
 /// keeps a copy, so that its functions pass it as the root's do; the setter writes every copy.
 void context_functions(CodeWriter &w, const Context &c) {
@@ -255,9 +275,10 @@ void context_functions(CodeWriter &w, const Context &c) {
   w.line("void {}({} *{}, {})", c.set_context_fn, t, m, c.context_param(c.ctx_param));
   w.line("{");
   w.line("    {} = {};", c.field(c.ctx_field), c.ctx_param);
-  std::vector<std::string> copies;
-  instance_contexts(c, m + "->", copies);
-  for (const auto &copy : copies) w.line("    {} = {};", copy, c.ctx_param);
+  // `m->Search.ctx`, `m->Search.Inner.ctx`: parents first.
+  c.each_instance(m + "->", [&](const Context &s, const std::string &member) {
+    w.line("    {}.{} = {};", member, s.ctx_field, c.ctx_param);
+  });
   w.line("}");
   w.blank();
   w.line("{}(const {} *{})", c.context_param(c.context_fn), t, m);

@@ -40,8 +40,8 @@ double measure(const World& world, double physics_step, double seconds, double& 
   CarbotRobot* robot = carbot_robot_handle(0);  // the calls' context, as an engine passes it
   const auto start = std::chrono::steady_clock::now();
   while (sim.time() < seconds - 1e-9) {
-    left.tick(robot, Left_IR_Black, Left_IR_White, Left_FW, Left_Stop);
-    right.tick(robot, Right_IR_Black, Right_IR_White, Right_FW, Right_Stop);
+    left.tick(robot, LineBot_Left_IR_Black, LineBot_Left_IR_White, LineBot_Left_FW, LineBot_Left_Stop);
+    right.tick(robot, LineBot_Right_IR_Black, LineBot_Right_IR_White, LineBot_Right_FW, LineBot_Right_Stop);
     sim.step_control();
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -31,16 +31,14 @@ struct ChartInfo {
     std::string group;      ///< the instance path of a sub-chart's row ("" for the chart's own)
   };
   std::vector<Row> rows;
-  /// The sub-chart instances (docs/c-engine.md "Sub-charts"), depth first in declaration order,
-  /// each with its rows rows[first, first + count) and the row of the place that runs it.
+  /// The sub-chart instances (docs/c-engine.md "Sub-charts"), depth first in declaration order
+  /// (the numbers of the engine's X_instance), each with its rows rows[first, first + count) and
+  /// the row of the place that runs it.
   struct Instance {
     std::string path;   ///< "Patrol", "Search.Grab"
     std::string chart;  ///< the chart it runs
     std::size_t first = 0, count = 0;
     std::size_t parent_row = 0;
-    /// How engine.h holds its activation (a recording build reads it): "av" (an sfc's
-    /// counters), "current" (a sequential sfc's one place), "state" (an fsm).
-    std::string form;
   };
   std::vector<Instance> instances;
   /// The rows of the compiled chart itself (rows beyond are instances').
@@ -73,21 +71,15 @@ BuiltEngine build_engine(const Options& options, const std::string& dir);
 
 /// The shim's C source for a C engine of `chart` (exposed for tests).
 std::string c_shim(const ChartInfo& chart);
-/// A header renaming the calls of interfaces whose robot library carries a prefix (FetchBot's
-/// `PickUp` is `FetchBot_PickUp` in carbot-sim: CleanBot has a `PickUp` too); "" when none does.
-std::string robot_renames(const ChartInfo& chart);
+/// A header renaming each interface function the engine calls to its robot library's name, the
+/// interface's name and the function's (CleanBot's `PickUp` is `CleanBot_PickUp`: FetchBot has
+/// a `PickUp` too, and carbot-sim links both libraries).
+std::string robot_names(const ChartInfo& chart);
 /// For a recording build (docs/viewer.md): a header renaming each interface function F the
 /// engine calls to carbot_rec_F, and the C source of those wrappers, which call F and report
 /// the call and its result to carbot-sim. The engine makes the same calls in the same order.
 std::string record_renames(const ChartInfo& chart);
 std::string record_wrappers(const ChartInfo& chart);
-/// For a recording build of a chart with sub-charts: what engine.h (`header`, its text) holds of
-/// each instance, in `chart.instances[i].form`; false (and no form set) when some instance's
-/// struct is not found there.
-bool read_instance_forms(const std::string& header, ChartInfo& chart);
-/// C source appended to engine.c in a recording build: carbot_engine_instance_activation(m, i,
-/// p), the activation of place p of instance i, read from the root's struct (never written).
-std::string instance_accessor(const ChartInfo& chart);
 /// The shim's C++ source for a plan engine: the stepped executor around make_NAME(ee), declared
 /// by gfec's engine.hpp when `has_header`.
 std::string cpp_shim(const ChartInfo& chart, bool has_header);

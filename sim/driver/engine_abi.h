@@ -24,7 +24,7 @@ constexpr const char* kEngineReport =
 constexpr const char* kEngineInstanceActivation =
     "carbot_engine_instance_activation";  ///< unsigned (const void*, int, int), optional: a sub-chart instance's place
 constexpr const char* kEngineSetContext =
-    "carbot_engine_set_context";  ///< void (void*, struct CarbotRobot*), C engines: X_set_context (the robot)
+    "carbot_engine_set_context";  ///< void (void*, struct CarbotRobot*): the robot (X_set_context, a plan's Env)
 constexpr const char* kEngineFini = "carbot_engine_fini";  ///< void (void*), optional: destroys the state
 
 }  // namespace carbot::driver

@@ -32,7 +32,7 @@ Engine::Engine(const std::string& library) {
   places_ = reinterpret_cast<int (*)()>(dlsym(handle_, kEnginePlaces));
   activation_ = reinterpret_cast<unsigned (*)(const void*, int)>(dlsym(handle_, kEngineActivation));
   set_agent_ = reinterpret_cast<void (*)(void*, int)>(dlsym(handle_, kEngineSetAgent));
-  set_context_ = reinterpret_cast<void (*)(void*, CarbotRobot*)>(dlsym(handle_, kEngineSetContext));
+  set_context_ = reinterpret_cast<void (*)(void*, CarbotRobot*)>(symbol(handle_, kEngineSetContext, library));
   report_ = reinterpret_cast<void (*)(void*, int, int)>(dlsym(handle_, kEngineReport));
   instance_activation_ =
       reinterpret_cast<unsigned (*)(const void*, int, int)>(dlsym(handle_, kEngineInstanceActivation));

@@ -38,13 +38,9 @@ class Engine {
   int status() const { return status_(state()); }
   /// An fsm's current state index; -1 for engines without states.
   int current_state() const { return state_ ? state_(state()) : -1; }
-  /// Whether the engine takes an instance context (a C engine: its interface calls name their
-  /// robot); a plan does not, and acts on the robot the HAL is bound to.
-  bool has_context() const { return set_context_ != nullptr; }
-  /// X_set_context: every interface call of this engine is for `robot` (before the first run()).
-  void set_context(CarbotRobot* robot) {
-    if (set_context_) set_context_(state(), robot);
-  }
+  /// Every robot call of this engine is for `robot` (after init(), before the first run()): a
+  /// C engine's X_set_context (its interface calls pass it on), a plan's toolbox environment.
+  void set_context(CarbotRobot* robot) { set_context_(state(), robot); }
   /// A team machine's engine (docs/language.md "Teams") has set_agent and report.
   bool team() const { return set_agent_ && report_; }
   /// X_set_agent: this engine is agent `agent` (after init()).
@@ -59,7 +55,7 @@ class Engine {
   int places() const { return places_ ? places_() : 0; }
   /// X_activation of a C engine's place (read only: the run is not changed by looking).
   unsigned activation(int place) const { return activation_ ? activation_(state(), place) : 0; }
-  /// Whether a recording build exposes its sub-chart instances' activation.
+  /// Whether the engine has sub-chart instances (a C engine with gfec's X_instance_activation).
   bool has_instances() const { return instance_activation_ != nullptr; }
   /// The activation of place `place` of sub-chart instance `instance` (ChartInfo::instances),
   /// as the instance's state holds it; meaningful only while the place that runs it is active.
@@ -78,10 +74,10 @@ class Engine {
   int (*state_)(const void*) = nullptr;                               // optional
   int (*places_)() = nullptr;                                         // optional (C engines)
   unsigned (*activation_)(const void*, int) = nullptr;                // optional (C engines)
-  unsigned (*instance_activation_)(const void*, int, int) = nullptr;  // optional (recording builds)
+  unsigned (*instance_activation_)(const void*, int, int) = nullptr;  // optional (sub-charts)
   void (*set_agent_)(void*, int) = nullptr;                           // optional (team machines)
   void (*report_)(void*, int, int) = nullptr;                         // optional (team machines)
-  void (*set_context_)(void*, CarbotRobot*) = nullptr;                // optional (C engines)
+  void (*set_context_)(void*, CarbotRobot*) = nullptr;
   bool initialised_ = false;
 };
 

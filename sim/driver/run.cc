@@ -43,21 +43,6 @@ class Progress {
   Clock::time_point last_ = Clock::now();
 };
 
-TraceRow row(const Simulation& sim) {
-  const Pose p = sim.pose();
-  return {sim.time(), p.x, p.y, deg(p.heading)};
-}
-
-/// An fsm's state changes go to the engine log as "state Z1 PickUp()", as a plan's actor
-/// changes do, for result.json and the picture.
-void log_state_change(const Engine& engine, const ChartInfo& chart, double t, int& last) {
-  const int now = engine.current_state();
-  if (now < 0 || now == last) return;
-  last = now;
-  const std::string label = now < static_cast<int>(chart.states.size()) ? chart.states[now] : std::to_string(now);
-  engine_log().push_back({t, "state " + label});
-}
-
 /// Follows a plan's actor starts and interruptions (its shim's events) to tell which actor of
 /// the top-level plan runs, which actor of its sub-plan runs inside it (one level: a sub-plan's
 /// own sub-plans count as its actors' rows too), and which supervisor fired.
@@ -135,8 +120,7 @@ void record_tick(const Engine& engine, const ChartInfo& chart, long frame, PlanF
       rec.instances_active.push_back({static_cast<int>(chart.rows.size()) + plan.sub()});
     else rec.instances_active.emplace_back();
   } else {
-    for (int p = 0; p < engine.places(); ++p)
-      if (engine.activation(p) > 0) active.push_back(p);
+    active = active_places(engine);
   }
   // Sub-chart instances: depth first, so the place that runs one is decided before its rows.
   std::vector<int> nested;
@@ -162,16 +146,42 @@ void record_tick(const Engine& engine, const ChartInfo& chart, long frame, PlanF
 
 }  // namespace
 
+TraceRow trace_row(const Simulation& sim) {
+  const Pose p = sim.pose();
+  return {sim.time(), p.x, p.y, deg(p.heading)};
+}
+
+std::vector<int> active_places(const Engine& engine) {
+  std::vector<int> active;
+  for (int p = 0; p < engine.places(); ++p)
+    if (engine.activation(p) > 0) active.push_back(p);
+  return active;
+}
+
+std::string status_text(int status) { return status == 2 ? "terminated" : status > 0 ? "succeeded" : "failed"; }
+
+std::string state_change(const Engine& engine, const ChartInfo& chart, int& last) {
+  const int now = engine.current_state();
+  if (now < 0 || now == last) return "";
+  last = now;
+  return "state " + (now < static_cast<int>(chart.states.size()) ? chart.states[static_cast<std::size_t>(now)]
+                                                                 : std::to_string(now));
+}
+
+void reset_robot_libraries() {
+  linebot_reset();
+  cleanbot_reset();
+  fetchbot_reset();
+}
+
 RunResult run_engine(Simulation& sim, Engine& engine, const ChartInfo& chart, double seconds, bool quiet) {
   RunResult result;
   const auto start = Clock::now();
   hal::bind(&sim);
-  linebot_reset();
-  cleanbot_reset();
-  fetchbot_reset();
+  reset_robot_libraries();
   engine_log().clear();
   engine.init();
-  engine.set_context(carbot_robot_handle(0));  // a C engine's calls name the robot; a plan's act on the bound one
+  engine.set_context(carbot_robot_handle(0));  // every robot call of the engine names the robot
   Progress progress(!quiet, seconds);
   const long ticks = std::lround(seconds / sim.config().control_period);
   int last_state = -1;
@@ -179,7 +189,7 @@ RunResult run_engine(Simulation& sim, Engine& engine, const ChartInfo& chart, do
   PlanFollower plan(chart);
   call_log().clear();
   for (long tick = 0;; ++tick) {
-    result.trace.push_back(row(sim));
+    result.trace.push_back(trace_row(sim));
     rec.items.push_back(sim.items());
     // A frame without an engine call (the last) keeps the activation it had.
     auto keep_activation = [&] {
@@ -199,10 +209,13 @@ RunResult run_engine(Simulation& sim, Engine& engine, const ChartInfo& chart, do
       break;
     }
     engine.run();
-    log_state_change(engine, chart, sim.time(), last_state);
+    // An fsm's state changes go to the engine log, as a plan's actor changes do, for result.json
+    // and the picture.
+    if (std::string change = state_change(engine, chart, last_state); !change.empty())
+      engine_log().push_back({sim.time(), std::move(change)});
     record_tick(engine, chart, tick, plan, rec);
     if (const int status = engine.status(); status != 0) {
-      result.status = status == 2 ? "terminated" : status > 0 ? "succeeded" : "failed";
+      result.status = status_text(status);
       break;
     }
     sim.step_control();

@@ -26,7 +26,7 @@ struct Recording {
   /// with activation > 0 (sfc), the current state (fsm), the running actor (plan).
   std::vector<std::vector<int>> active;
   /// The rows of sub-chart instances (beyond ChartInfo::own_rows) active after the frame's
-  /// engine call: a place of an instance whose own place is active (a recording build only). Kept
+  /// engine call: a place of an instance whose own place is active. Kept
   /// apart from `active`, which the trace's `active` column names, so that the trace stays the
   /// same with or without recording.
   std::vector<std::vector<int>> instances_active;
@@ -96,12 +96,26 @@ struct RunResult {
   Exchange exchange;
 };
 
+// What the single-robot and the team run loops read the same way.
+
+/// The selected robot's row of the trace, now.
+TraceRow trace_row(const Simulation& sim);
+/// A C engine's places (states) with activation > 0, in order; none for a plan.
+std::vector<int> active_places(const Engine& engine);
+/// An engine's status() as result.json writes it: "succeeded", "failed" or "terminated" (not 0).
+std::string status_text(int status);
+/// An fsm's state change since `last` (which it updates): "state Z1 PickUp()", the state's
+/// label (ChartInfo::states), or "" when the state stayed or the engine has none.
+std::string state_change(const Engine& engine, const ChartInfo& chart, int& last);
+/// Forgets what the robot libraries keep of every robot, before a run.
+void reset_robot_libraries();
+
 /// Runs `engine` on `sim` for at most `seconds` (progress on stderr when it is a terminal).
 RunResult run_engine(Simulation& sim, Engine& engine, const ChartInfo& chart, double seconds, bool quiet);
 
-/// Runs one engine per robot of `sim` (engines[i] drives robot i, which is agent i of a team
-/// machine) for at most `seconds`: every tick all engines run in robot order, each with the
-/// HAL bound to its robot; then a team machine's states are exchanged as `exchange` says.
+/// Runs one engine per robot of `sim` (engines[i] drives robot i, its instance context, which is
+/// agent i of a team machine) for at most `seconds`: every tick all engines run in robot order;
+/// then a team machine's states are exchanged as `exchange` says.
 /// The run ends at the time limit, on escape, or when every engine has ended.
 RunResult run_team(Simulation& sim, std::vector<Engine*> engines, const ChartInfo& chart, double seconds,
                    Exchange exchange);

@@ -159,6 +159,19 @@ const char* actor_colour(const std::string& name) {
   return kPalette[i % (sizeof kPalette / sizeof kPalette[0])];
 }
 
+/// The robot to scale at `p`: its outline and an arrow for its heading.
+void draw_robot_at(Svg& s, const Frame& f, const Pose& p, const char* colour) {
+  const double hx = std::cos(p.heading), hy = std::sin(p.heading);
+  auto corner = [&](double bx, double by) {
+    return fmt::format("{:.1f},{:.1f}", f.x(p.x + hx * bx - hy * by), f.y(p.y + hy * bx + hx * by));
+  };
+  const double l = model::kLength / 2, w = model::kWidth / 2;
+  s.add(R"(<polygon points="{} {} {} {}" fill="{}" fill-opacity="0.18" stroke="{}" stroke-width="2"/>)", corner(l, w),
+        corner(l, -w), corner(-l, -w), corner(-l, w), colour, colour);
+  s.add(R"(<polygon points="{} {} {}" fill="{}"/>)", corner(l - 0.02, 0), corner(l - 0.14, 0.07),
+        corner(l - 0.14, -0.07), colour);
+}
+
 /// The path, thinned to points at least 5 mm apart (the picture cannot show finer), one
 /// polyline per stretch driven by one actor (a single one for charts), and the robot drawn to
 /// scale where it ended.
@@ -199,16 +212,7 @@ void draw_path(Svg& s, const Frame& f, const RunReport& r) {
   s.add(R"(<circle cx="{:.1f}" cy="{:.1f}" r="6" fill="#ffffff" stroke="{}" stroke-width="3"/>)", f.x(a.x), f.y(a.y),
         kPath);
 
-  const Pose p = r.sim.pose();
-  const double hx = std::cos(p.heading), hy = std::sin(p.heading);
-  auto corner = [&](double bx, double by) {
-    return fmt::format("{:.1f},{:.1f}", f.x(p.x + hx * bx - hy * by), f.y(p.y + hy * bx + hx * by));
-  };
-  const double l = model::kLength / 2, w = model::kWidth / 2;
-  s.add(R"(<polygon points="{} {} {} {}" fill="{}" fill-opacity="0.18" stroke="{}" stroke-width="2"/>)", corner(l, w),
-        corner(l, -w), corner(-l, -w), corner(-l, w), kPath, kPath);
-  s.add(R"(<polygon points="{} {} {}" fill="{}"/>)", corner(l - 0.02, 0), corner(l - 0.14, 0.07),
-        corner(l - 0.14, -0.07), kPath);
+  draw_robot_at(s, f, r.sim.pose(), kPath);
 }
 
 // --- Several robots (docs/sim.md, "Several robots") ------------------------------------------
@@ -226,18 +230,6 @@ const char* robot_colour(std::size_t i) {
 namespace {
 
 constexpr const char* kContact = "#b8860b";
-
-void draw_robot_at(Svg& s, const Frame& f, const Pose& p, const char* colour) {
-  const double hx = std::cos(p.heading), hy = std::sin(p.heading);
-  auto corner = [&](double bx, double by) {
-    return fmt::format("{:.1f},{:.1f}", f.x(p.x + hx * bx - hy * by), f.y(p.y + hy * bx + hx * by));
-  };
-  const double l = model::kLength / 2, w = model::kWidth / 2;
-  s.add(R"(<polygon points="{} {} {} {}" fill="{}" fill-opacity="0.18" stroke="{}" stroke-width="2"/>)", corner(l, w),
-        corner(l, -w), corner(-l, -w), corner(-l, w), colour, colour);
-  s.add(R"(<polygon points="{} {} {}" fill="{}"/>)", corner(l - 0.02, 0), corner(l - 0.14, 0.07),
-        corner(l - 0.14, -0.07), colour);
-}
 
 /// Every robot's path in its own colour, its start, the robot where it ended with its number
 /// and final state, its bumps; and a diamond where two robots touched.

@@ -1,17 +1,15 @@
-// The run loop for several robots in one world: one engine per robot, ticked in robot order
-// with the HAL bound to that robot, and for a team machine the exchange of states after every
-// tick (docs/sim.md, "Several robots"; docs/language.md "Teams").
+// The run loop for several robots in one world: one engine per robot, each with its robot as
+// instance context, ticked in robot order, and for a team machine the exchange of states after
+// every tick (docs/sim.md, "Several robots"; docs/language.md "Teams").
 #include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <deque>
 
-#include "core/geometry.h"
 #include "driver/engine_log.h"
 #include "driver/run.h"
 #include "hal/carbot_hal.h"
 #include "hal/hal_binding.h"
-#include "robots/robots.h"
 
 namespace carbot::driver {
 namespace {
@@ -39,20 +37,6 @@ struct Message {
   int from, to, state;
 };
 
-TraceRow row(const Simulation& sim) {
-  const Pose p = sim.pose();
-  return {sim.time(), p.x, p.y, deg(p.heading)};
-}
-
-std::vector<int> active_of(const Engine& engine) {
-  std::vector<int> active;
-  for (int p = 0; p < engine.places(); ++p)
-    if (engine.activation(p) > 0) active.push_back(p);
-  return active;
-}
-
-std::string status_of(int status) { return status == 2 ? "terminated" : status > 0 ? "succeeded" : "failed"; }
-
 }  // namespace
 
 RunResult run_team(Simulation& sim, std::vector<Engine*> engines, const ChartInfo& chart, double seconds,
@@ -62,14 +46,12 @@ RunResult run_team(Simulation& sim, std::vector<Engine*> engines, const ChartInf
   const int n = sim.robot_count();
   result.robots.resize(static_cast<std::size_t>(n));
   result.team_machine = chart.team > 0;
-  linebot_reset();
-  cleanbot_reset();
-  fetchbot_reset();
-  // Each C engine instance gets its robot as context: every interface call it makes names the
-  // robot it is for (docs/sim.md "Several robots"). The HAL stays bound to the simulation; a
-  // plan (no context) is bound to its robot before each tick instead.
+  reset_robot_libraries();
+  // Each engine gets its robot as context: every interface call it makes names the robot it is
+  // for, and the robot library passes it on to the HAL (docs/sim.md "Several robots"). The HAL
+  // is bound to the simulation only.
+  hal::bind(&sim);
   for (int i = 0; i < n; ++i) {
-    hal::bind(&sim, i);
     engines[static_cast<std::size_t>(i)]->init();
     engines[static_cast<std::size_t>(i)]->set_context(carbot_robot_handle(i));
     engines[static_cast<std::size_t>(i)]->set_agent(i);
@@ -97,7 +79,7 @@ RunResult run_team(Simulation& sim, std::vector<Engine*> engines, const ChartInf
   for (long tick = 0;; ++tick) {
     for (int i = 0; i < n; ++i) {
       sim.select(i);
-      robot(i).trace.push_back(row(sim));
+      robot(i).trace.push_back(trace_row(sim));
     }
     rec.items.push_back(sim.items());
     std::vector<int> holders;
@@ -121,21 +103,15 @@ RunResult run_team(Simulation& sim, std::vector<Engine*> engines, const ChartInf
         continue;
       }
       sim.select(i);  // this robot's row below; its engine's calls reach it through their context
-      if (!engine(i).has_context()) hal::bind(&sim, i);
       engine(i).run();
       RobotRun& r = robot(i);
-      const int state = engine(i).current_state();
-      if (state >= 0 && state != last_state[static_cast<std::size_t>(i)]) {
-        last_state[static_cast<std::size_t>(i)] = state;
-        r.state_log.push_back({sim.time(), "state " + (state < static_cast<int>(chart.states.size())
-                                                           ? chart.states[static_cast<std::size_t>(state)]
-                                                           : std::to_string(state))});
-      }
-      r.active.push_back(active_of(engine(i)));
+      if (std::string change = state_change(engine(i), chart, last_state[static_cast<std::size_t>(i)]); !change.empty())
+        r.state_log.push_back({sim.time(), std::move(change)});
+      r.active.push_back(active_places(engine(i)));
       r.calls.push_back(std::move(call_log()));
       call_log().clear();
       if (const int status = engine(i).status(); status != 0) {
-        r.status = status_of(status);
+        r.status = status_text(status);
         r.ended = tick;
         running[static_cast<std::size_t>(i)] = false;
         sim.stop();  // an engine that ended drives its robot no more
@@ -168,7 +144,7 @@ RunResult run_team(Simulation& sim, std::vector<Engine*> engines, const ChartInf
     sim.step_control();
   }
   for (int i = 0; i < n; ++i) {
-    hal::bind(&sim, i);
+    sim.select(i);
     engine(i).finish();
     sim.stop();
     RobotRun& r = robot(i);

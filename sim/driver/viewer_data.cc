@@ -63,6 +63,32 @@ json pose_json(const std::vector<TraceRow>& trace) {
 /// A run with several robots (docs/viewer.md, "Several robots"): the chart's rows once per robot
 /// (`robot 1/Grab`, grouped under `robot 1`), each robot's path, calls and status; the items
 /// with the robot holding them; the robots' contacts as events.
+/// The events list: [frame, kind, text], in frame order (events of one frame as they came).
+using Events = std::vector<std::tuple<long, std::string, std::string>>;
+json events_json(Events& events) {
+  std::stable_sort(events.begin(), events.end(),
+                   [](const auto& a, const auto& b) { return std::get<0>(a) < std::get<0>(b); });
+  json list = json::array();
+  for (const auto& [k, kind, text] : events) list.push_back({k, kind, text});
+  return list;
+}
+
+/// What a recording of one robot and one of several hold alike: the format, the chart and its
+/// picture, the frames, the world and the robots' size.
+json common_json(const RunReport& r, long frames, const std::string& chart_svg, const std::string& svg_note) {
+  return {
+      {"format", 1},
+      {"tool", "carbot-sim"},
+      {"chart", {{"name", r.chart.name}, {"kind", r.chart.kind}, {"file", r.chart_file}}},
+      {"period", r.sim.config().control_period},
+      {"frames", frames},
+      {"svg", chart_svg},
+      {"svg_note", svg_note},
+      {"world", world_json(r.sim.world())},
+      {"robot", {{"length", model::kLength}, {"width", model::kWidth}, {"gripper", model::kGripX}}},
+  };
+}
+
 json team_viewer_data(const RunReport& r, const std::string& chart_svg, const std::string& svg_note) {
   const Simulation& sim = r.sim;
   const Recording& rec = r.run.recording;
@@ -79,7 +105,7 @@ json team_viewer_data(const RunReport& r, const std::string& chart_svg, const st
     if (row.group.empty()) own.push_back(&row);
   const std::size_t per = own.size();
   json rows = json::array(), robot_list = json::array();
-  std::vector<std::tuple<long, std::string, std::string>> events;
+  Events events;
   json bumps = json::array();
   for (std::size_t i = 0; i < robots.size(); ++i) {
     const RobotRun& robot = robots[i];
@@ -156,10 +182,6 @@ json team_viewer_data(const RunReport& r, const std::string& chart_svg, const st
     status.push_back({end, r.run.status});
     events.emplace_back(end, "status", "the team: " + r.run.status);
   }
-  std::stable_sort(events.begin(), events.end(),
-                   [](const auto& a, const auto& b) { return std::get<0>(a) < std::get<0>(b); });
-  json event_list = json::array();
-  for (const auto& [k, kind, text] : events) event_list.push_back({k, kind, text});
 
   int bump_count = 0;
   for (const RobotRun& robot : robots) bump_count += robot.bumps;
@@ -172,36 +194,29 @@ json team_viewer_data(const RunReport& r, const std::string& chart_svg, const st
                    ? fmt::format(" \u00b7 exchange {} ticks late, {:g} lost", x.delay_ticks, x.loss)
                    : " \u00b7 reference exchange";
   }
-  return {
-      {"format", 1},
-      {"tool", "carbot-sim"},
+  json doc = common_json(r, frames, chart_svg, svg_note);
+  doc.update({
       {"title", fmt::format("{} ({}) on {}, {} robots: {} at {:.2f} s", r.chart.name, r.chart.kind, sim.world().name,
                             robots.size(), r.run.status, sim.time())},
       {"subtitle", fmt::format("carbot-sim {} --world {} \u00b7 {} ticks of {:g} ms \u00b7 {} bump{} \u00b7 {} robot "
                                "contact{}{}",
                                r.chart_file, sim.world().path, frames, period * 1000, bump_count,
                                bump_count == 1 ? "" : "s", touches, touches == 1 ? "" : "s", exchange)},
-      {"chart", {{"name", r.chart.name}, {"kind", r.chart.kind}, {"file", r.chart_file}}},
-      {"period", period},
-      {"frames", frames},
-      {"svg", chart_svg},
-      {"svg_note", svg_note},
       {"rows", rows},
       {"instances", json::array()},
       {"robots", robot_list},
       {"active", active.json()},
       {"calls", nullptr},
       {"calls_note", ""},
-      {"events", event_list},
+      {"events", events_json(events)},
       {"fired", json::array()},
       {"status", status},
-      {"world", world_json(sim.world())},
       {"pose", nullptr},
       {"items", items},
       {"bumps", bumps},
       {"contacts", contacts},
-      {"robot", {{"length", model::kLength}, {"width", model::kWidth}, {"gripper", model::kGripX}}},
-  };
+  });
+  return doc;
 }
 
 }  // namespace
@@ -257,7 +272,7 @@ json viewer_data(const RunReport& r, const std::string& chart_svg, const std::st
   }
 
   // Events: [frame, kind, text], in frame order.
-  std::vector<std::tuple<long, std::string, std::string>> events;
+  Events events;
   json bumps = json::array();
   for (const Bump& b : sim.bump_log()) {
     events.emplace_back(frame_of(b.t), "bump", fmt::format("bump at ({:.2f}, {:.2f})", b.at.x, b.at.y));
@@ -292,27 +307,17 @@ json viewer_data(const RunReport& r, const std::string& chart_svg, const std::st
     status.push_back({frames - 1, r.run.status});
     events.emplace_back(frames - 1, "status", r.run.status);
   }
-  std::stable_sort(events.begin(), events.end(),
-                   [](const auto& a, const auto& b) { return std::get<0>(a) < std::get<0>(b); });
-  json event_list = json::array();
-  for (const auto& [k, kind, text] : events) event_list.push_back({k, kind, text});
   json fired = json::array();
   for (const Recording::Fired& f : rec.fired) fired.push_back({f.frame, f.node, f.text});
 
-  return {
-      {"format", 1},
-      {"tool", "carbot-sim"},
+  json doc = common_json(r, frames, chart_svg, svg_note);
+  doc.update({
       {"title", fmt::format("{} ({}) on {}: {} at {:.2f} s", r.chart.name, r.chart.kind, sim.world().name, r.run.status,
                             sim.time())},
       {"subtitle",
        fmt::format("carbot-sim {} --world {} \u00b7 {} ticks of {:g} ms \u00b7 {:.2f} m driven \u00b7 {} bump{}",
                    r.chart_file, sim.world().path, frames, period * 1000, sim.odometer(), sim.bumps(),
                    sim.bumps() == 1 ? "" : "s")},
-      {"chart", {{"name", r.chart.name}, {"kind", r.chart.kind}, {"file", r.chart_file}}},
-      {"period", period},
-      {"frames", frames},
-      {"svg", chart_svg},
-      {"svg_note", svg_note},
       {"rows", rows},
       {"instances", instances},
       {"active", active.json()},
@@ -320,15 +325,14 @@ json viewer_data(const RunReport& r, const std::string& chart_svg, const std::st
       {"calls_note", r.chart.kind == "plan" ? "A plan's actors and supervisors are C++ classes of the toolbox: their "
                                               "calls are not recorded; the events list their starts and interruptions."
                                             : ""},
-      {"events", event_list},
+      {"events", events_json(events)},
       {"fired", fired},
       {"status", status},
-      {"world", world_json(sim.world())},
       {"pose", pose_json(r.run.trace)},
       {"items", items},
       {"bumps", bumps},
-      {"robot", {{"length", model::kLength}, {"width", model::kWidth}, {"gripper", model::kGripX}}},
-  };
+  });
+  return doc;
 }
 
 }  // namespace carbot::driver

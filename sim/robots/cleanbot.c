@@ -28,8 +28,7 @@
 
 enum Goal { GOAL_NONE, GOAL_ITEM, GOAL_DESTINATION };
 
-/* One robot's memory; each robot in the world has its own: carbot_robot(), the robot of the
- * handle the interface call passed (carbot_act_on), picks it. */
+/* One robot's memory; each robot in the world has its own, picked by the robot a call is for. */
 struct CleanBot {
   int item;             /* the item being cleaned up, -1 none chosen */
   enum Goal goal;       /* what it drives to */
@@ -51,14 +50,8 @@ void cleanbot_reset(void) {
   }
 }
 
-/* Below, the fields of the robot whose engine is running go by their plain names, so the
- * behaviours read as they would in one robot's firmware. */
-#define item robots[carbot_robot()].item
-#define goal robots[carbot_robot()].goal
-#define handle_since robots[carbot_robot()].handle_since
-#define placed robots[carbot_robot()].placed
-#define best_distance robots[carbot_robot()].best_distance
-#define best_since robots[carbot_robot()].best_since
+/* The memory of the robot a call is for. */
+static struct CleanBot* me(struct CarbotRobot* robot) { return &robots[carbot_robot_of(robot)]; }
 
 static double dist(double ax, double ay, double bx, double by) { return hypot(ax - bx, ay - by); }
 
@@ -67,67 +60,67 @@ static bool at_destination(CarbotItem it) {
 }
 
 /* The chosen item, choosing the first one not at its destination if none is chosen. */
-static int current_item(void) {
-  if (item >= 0) return item;
-  for (int i = 0; i < carbot_item_count(); ++i) {
-    if (!at_destination(carbot_item(i))) return item = i;
+static int current_item(struct CarbotRobot* robot) {
+  if (me(robot)->item >= 0) return me(robot)->item;
+  for (int i = 0; i < carbot_item_count(robot); ++i) {
+    if (!at_destination(carbot_item(robot, i))) return me(robot)->item = i;
   }
   return -1;
 }
 
 /* Where the active goal is; false if there is none. */
-static bool goal_point(double* x, double* y) {
-  const int i = current_item();
-  if (i < 0 || goal == GOAL_NONE) return false;
-  const CarbotItem it = carbot_item(i);
-  *x = goal == GOAL_ITEM ? it.x : it.dest_x;
-  *y = goal == GOAL_ITEM ? it.y : it.dest_y;
+static bool goal_point(struct CarbotRobot* robot, double* x, double* y) {
+  const int i = current_item(robot);
+  if (i < 0 || me(robot)->goal == GOAL_NONE) return false;
+  const CarbotItem it = carbot_item(robot, i);
+  *x = me(robot)->goal == GOAL_ITEM ? it.x : it.dest_x;
+  *y = me(robot)->goal == GOAL_ITEM ? it.y : it.dest_y;
   return true;
 }
 
-static double gripper_distance_to(double x, double y) {
+static double gripper_distance_to(struct CarbotRobot* robot, double x, double y) {
   double gx, gy;
-  carbot_gripper_point(&gx, &gy);
+  carbot_gripper_point(robot, &gx, &gy);
   return dist(gx, gy, x, y);
 }
 
 /* Sets the goal; a new goal restarts the progress watch. */
-static void aim_at(enum Goal g) {
-  if (g == goal) return;
-  goal = g;
-  best_distance = INFINITY;
-  best_since = carbot_time();
+static void aim_at(struct CarbotRobot* robot, enum Goal g) {
+  if (g == me(robot)->goal) return;
+  me(robot)->goal = g;
+  me(robot)->best_distance = INFINITY;
+  me(robot)->best_since = carbot_time(robot);
 }
 
-static void watch_progress(double d) {
-  if (d < best_distance - CLEANBOT_PROGRESS) {
-    best_distance = d;
-    best_since = carbot_time();
+static void watch_progress(struct CarbotRobot* robot, double d) {
+  if (d < me(robot)->best_distance - CLEANBOT_PROGRESS) {
+    me(robot)->best_distance = d;
+    me(robot)->best_since = carbot_time(robot);
   }
 }
 
 /* Drives so that the gripper point comes to (x, y): turn towards it (on the spot when far
  * off), then run at a speed that falls with the remaining distance. A goal beside or behind
  * the gripper's reach (closer to the centre than the gripper) is backed away from first. */
-static void go_to(double x, double y) {
-  const CarbotPose p = carbot_pose();
+static void go_to(struct CarbotRobot* robot, double x, double y) {
+  const CarbotPose p = carbot_pose(robot);
   double gx, gy;
-  carbot_gripper_point(&gx, &gy);
+  carbot_gripper_point(robot, &gx, &gy);
   const double reach = dist(p.x, p.y, gx, gy);
   const double centre_distance = dist(p.x, p.y, x, y);
   double error = atan2(y - p.y, x - p.x) - p.heading;
   error = atan2(sin(error), cos(error));
-  watch_progress(dist(gx, gy, x, y));
+  watch_progress(robot, dist(gx, gy, x, y));
 
   if (centre_distance < reach * 0.9) { /* too close to turn onto it: back off */
-    carbot_drive(-0.10, 0);
+    carbot_drive(robot, -0.10, 0);
     return;
   }
   double turn = CLEANBOT_TURN_GAIN * error;
   if (turn > CLEANBOT_MAX_TURN) turn = CLEANBOT_MAX_TURN;
   if (turn < -CLEANBOT_MAX_TURN) turn = -CLEANBOT_MAX_TURN;
   if (fabs(error) > CLEANBOT_TURN_IN_PLACE) {
-    carbot_drive(0, turn);
+    carbot_drive(robot, 0, turn);
     return;
   }
   const double remaining = centre_distance - reach;
@@ -135,115 +128,95 @@ static void go_to(double x, double y) {
   if (speed > CLEANBOT_CRUISE) speed = CLEANBOT_CRUISE;
   if (speed < CLEANBOT_SLOW) speed = CLEANBOT_SLOW;
   if (remaining < CLEANBOT_ARRIVED / 2) speed = 0;
-  carbot_drive(speed * cos(error), turn);
+  carbot_drive(robot, speed * cos(error), turn);
 }
 
 /* Closing or opening the gripper takes a moment with the robot standing still; true once done. */
-static bool handled(void) {
-  carbot_drive(0, 0);
-  if (handle_since < 0) handle_since = carbot_time();
-  if (carbot_time() - handle_since < CLEANBOT_HANDLE_TIME) return false;
-  handle_since = -1;
+static bool handled(struct CarbotRobot* robot) {
+  carbot_drive(robot, 0, 0);
+  if (me(robot)->handle_since < 0) me(robot)->handle_since = carbot_time(robot);
+  if (carbot_time(robot) - me(robot)->handle_since < CLEANBOT_HANDLE_TIME) return false;
+  me(robot)->handle_since = -1;
   return true;
 }
 
 /* --- actions ------------------------------------------------------------------------------ */
 
-void DriveToItem(struct CarbotRobot* ctx) {
-  carbot_act_on(ctx);
-
+void CleanBot_DriveToItem(struct CarbotRobot* robot) {
   double x, y;
-  aim_at(GOAL_ITEM);
-  if (!goal_point(&x, &y)) {
-    carbot_drive(0, 0);
+  aim_at(robot, GOAL_ITEM);
+  if (!goal_point(robot, &x, &y)) {
+    carbot_drive(robot, 0, 0);
     return;
   }
-  if (Arrived(ctx)) carbot_drive(0, 0);
-  else go_to(x, y);
+  if (CleanBot_Arrived(robot)) carbot_drive(robot, 0, 0);
+  else go_to(robot, x, y);
 }
 
-void PickUp(struct CarbotRobot* ctx) {
-  carbot_act_on(ctx);
-
+void CleanBot_PickUp(struct CarbotRobot* robot) {
   double x, y;
-  aim_at(GOAL_ITEM);
-  if (Holding(ctx) || !goal_point(&x, &y)) {
-    carbot_drive(0, 0);
+  aim_at(robot, GOAL_ITEM);
+  if (CleanBot_Holding(robot) || !goal_point(robot, &x, &y)) {
+    carbot_drive(robot, 0, 0);
     return;
   }
-  if (!Arrived(ctx)) { /* the item is not (or no longer) in reach: fetch it first */
-    handle_since = -1;
-    go_to(x, y);
+  if (!CleanBot_Arrived(robot)) { /* the item is not (or no longer) in reach: fetch it first */
+    me(robot)->handle_since = -1;
+    go_to(robot, x, y);
     return;
   }
-  if (handled() && carbot_grip(item)) placed = false;
+  if (handled(robot) && carbot_grip(robot, me(robot)->item)) me(robot)->placed = false;
 }
 
-void Transport(struct CarbotRobot* ctx) {
-  carbot_act_on(ctx);
-
+void CleanBot_Transport(struct CarbotRobot* robot) {
   double x, y;
-  aim_at(GOAL_DESTINATION);
-  if (!Holding(ctx) || !goal_point(&x, &y) || Arrived(ctx)) {
-    carbot_drive(0, 0);
+  aim_at(robot, GOAL_DESTINATION);
+  if (!CleanBot_Holding(robot) || !goal_point(robot, &x, &y) || CleanBot_Arrived(robot)) {
+    carbot_drive(robot, 0, 0);
     return;
   }
-  go_to(x, y);
+  go_to(robot, x, y);
 }
 
-void PlaceItem(struct CarbotRobot* ctx) {
-  carbot_act_on(ctx);
-
-  aim_at(GOAL_DESTINATION);
-  if (!Holding(ctx)) {
-    carbot_drive(0, 0);
+void CleanBot_PlaceItem(struct CarbotRobot* robot) {
+  aim_at(robot, GOAL_DESTINATION);
+  if (!CleanBot_Holding(robot)) {
+    carbot_drive(robot, 0, 0);
     return;
   }
-  if (handled()) {
-    carbot_release();
-    placed = true;
+  if (handled(robot)) {
+    carbot_release(robot);
+    me(robot)->placed = true;
   }
 }
 
 /* --- conditions --------------------------------------------------------------------------- */
 
-bool Arrived(struct CarbotRobot* ctx) {
-  carbot_act_on(ctx);
-
+bool CleanBot_Arrived(struct CarbotRobot* robot) {
   double x, y;
-  return goal_point(&x, &y) && gripper_distance_to(x, y) < CLEANBOT_ARRIVED;
+  return goal_point(robot, &x, &y) && gripper_distance_to(robot, x, y) < CLEANBOT_ARRIVED;
 }
 
-bool Holding(struct CarbotRobot* ctx) {
-  carbot_act_on(ctx);
-  return current_item() >= 0 && carbot_held_item() == item;
+bool CleanBot_Holding(struct CarbotRobot* robot) {
+  return current_item(robot) >= 0 && carbot_held_item(robot) == me(robot)->item;
 }
 
-bool FarFromDestination(struct CarbotRobot* ctx) {
-  carbot_act_on(ctx);
-
-  const int i = current_item();
+bool CleanBot_FarFromDestination(struct CarbotRobot* robot) {
+  const int i = current_item(robot);
   if (i < 0) return false;
-  const CarbotItem it = carbot_item(i);
+  const CarbotItem it = carbot_item(robot, i);
   return dist(it.x, it.y, it.dest_x, it.dest_y) > CLEANBOT_FAR;
 }
 
-bool ItemPlaced(struct CarbotRobot* ctx) {
-  carbot_act_on(ctx);
-  return placed && !Holding(ctx);
-}
+bool CleanBot_ItemPlaced(struct CarbotRobot* robot) { return me(robot)->placed && !CleanBot_Holding(robot); }
 
-bool ItemAtDestination(struct CarbotRobot* ctx) {
-  carbot_act_on(ctx);
-
-  const int i = current_item();
-  return i >= 0 && at_destination(carbot_item(i));
+bool CleanBot_ItemAtDestination(struct CarbotRobot* robot) {
+  const int i = current_item(robot);
+  return i >= 0 && at_destination(carbot_item(robot, i));
 }
 
 /* No item to clean up, or no progress towards the goal for a while (pushing against a wall). */
-bool Stuck(struct CarbotRobot* ctx) {
-  carbot_act_on(ctx);
-
-  if (current_item() < 0) return true;
-  return goal != GOAL_NONE && carbot_time() - best_since > CLEANBOT_STUCK_TIME;
+bool CleanBot_Stuck(struct CarbotRobot* robot) {
+  if (current_item(robot) < 0) return true;
+  return me(robot)->goal != GOAL_NONE && carbot_time(robot) - me(robot)->best_since > CLEANBOT_STUCK_TIME;
 }

@@ -1,15 +1,14 @@
 /* FetchBot (samples/fetchbot.iface) on the Carbot: a team of robots fetching one item.
  *
- * Every robot of the team links this library; each keeps its own memory (carbot_robot()
- * picks it), as each real robot would in its own firmware. The item to fetch is the first
+ * Every robot of the team links this library; each keeps its own memory (the robot a call
+ * is for picks it), as each real robot would in its own firmware. The item to fetch is the first
  * one in the world file. Nothing here knows about the team: whether a robot picks the item
  * up or stands back is the chart's decision (samples/fetch_team.fsm). Obstacles and other
  * robots are not avoided: a robot that drives at an item another robot is holding runs into
  * that robot, which is what the contrast run shows.
  *
- * FetchBot and CleanBot share function names (DriveToItem, PickUp, Arrived, Holding), so
- * this library's functions carry the interface's name as a prefix (FetchBot_PickUp); carbot-sim
- * compiles a FetchBot engine with a header that renames its calls (docs/sim.md, "FetchBot").
+ * As every robot library's, its functions carry the interface's name (FetchBot_PickUp:
+ * CleanBot has a PickUp too); carbot-sim renames an engine's calls to them (sim/robots/robots.h).
  *
  * Units: metres, seconds, radians. Details and numbers: docs/sim.md, "FetchBot".
  */
@@ -42,14 +41,14 @@ void fetchbot_reset(void) {
   for (i = 0; i < CARBOT_MAX_ROBOTS; ++i) robots[i].handle_since = -1;
 }
 
-static struct FetchBot* me(void) { return &robots[carbot_robot()]; }
+static struct FetchBot* me(struct CarbotRobot* robot) { return &robots[carbot_robot_of(robot)]; }
 
 static double dist(double ax, double ay, double bx, double by) { return hypot(ax - bx, ay - by); }
 
-static bool item_at(double* x, double* y) {
+static bool item_at(struct CarbotRobot* robot, double* x, double* y) {
   CarbotItem it;
-  if (carbot_item_count() < 1) return false;
-  it = carbot_item(0);
+  if (carbot_item_count(robot) < 1) return false;
+  it = carbot_item(robot, 0);
   *x = it.x;
   *y = it.y;
   return true;
@@ -69,19 +68,19 @@ static double clamp_turn(double turn) {
 
 /* Drives so that the gripper point comes to (x, y), as the CleanBot does: turn on the spot
  * when far off, else run at a speed that falls with the remaining distance. */
-static void go_to(double x, double y) {
-  const CarbotPose p = carbot_pose();
+static void go_to(struct CarbotRobot* robot, double x, double y) {
+  const CarbotPose p = carbot_pose(robot);
   double gx, gy, speed, remaining, reach, error, turn;
-  carbot_gripper_point(&gx, &gy);
+  carbot_gripper_point(robot, &gx, &gy);
   reach = dist(p.x, p.y, gx, gy);
   error = bearing_error(p, x, y);
   if (dist(p.x, p.y, x, y) < reach * 0.9) { /* too close to turn onto it: back off */
-    carbot_drive(-0.10, 0);
+    carbot_drive(robot, -0.10, 0);
     return;
   }
   turn = clamp_turn(FETCHBOT_TURN_GAIN * error);
   if (fabs(error) > FETCHBOT_TURN_IN_PLACE) {
-    carbot_drive(0, turn);
+    carbot_drive(robot, 0, turn);
     return;
   }
   remaining = dist(p.x, p.y, x, y) - reach;
@@ -89,126 +88,105 @@ static void go_to(double x, double y) {
   if (speed > FETCHBOT_CRUISE) speed = FETCHBOT_CRUISE;
   if (speed < FETCHBOT_SLOW) speed = FETCHBOT_SLOW;
   if (remaining < FETCHBOT_ARRIVED / 2) speed = 0;
-  carbot_drive(speed * cos(error), turn);
+  carbot_drive(robot, speed * cos(error), turn);
 }
 
 /* --- actions ------------------------------------------------------------------------------ */
 
-void FetchBot_DriveToItem(struct CarbotRobot* ctx) {
-  carbot_act_on(ctx);
-
+void FetchBot_DriveToItem(struct CarbotRobot* robot) {
   double x, y;
-  if (!item_at(&x, &y) || FetchBot_Arrived(ctx)) {
-    carbot_drive(0, 0);
+  if (!item_at(robot, &x, &y) || FetchBot_Arrived(robot)) {
+    carbot_drive(robot, 0, 0);
     return;
   }
-  go_to(x, y);
+  go_to(robot, x, y);
 }
 
-void FetchBot_PickUp(struct CarbotRobot* ctx) {
-  carbot_act_on(ctx);
-
+void FetchBot_PickUp(struct CarbotRobot* robot) {
   double x, y;
-  if (FetchBot_Holding(ctx) || !item_at(&x, &y)) {
-    carbot_drive(0, 0);
+  if (FetchBot_Holding(robot) || !item_at(robot, &x, &y)) {
+    carbot_drive(robot, 0, 0);
     return;
   }
-  if (!FetchBot_Arrived(ctx)) { /* not in reach (yet, or any more): go for it */
-    me()->handle_since = -1;
-    go_to(x, y);
+  if (!FetchBot_Arrived(robot)) { /* not in reach (yet, or any more): go for it */
+    me(robot)->handle_since = -1;
+    go_to(robot, x, y);
     return;
   }
-  carbot_drive(0, 0);
-  if (me()->handle_since < 0) me()->handle_since = carbot_time();
-  if (carbot_time() - me()->handle_since < FETCHBOT_HANDLE_TIME) return;
-  me()->handle_since = -1;
-  (void)carbot_grip(0); /* fails if another robot holds it: PickUp goes on trying */
+  carbot_drive(robot, 0, 0);
+  if (me(robot)->handle_since < 0) me(robot)->handle_since = carbot_time(robot);
+  if (carbot_time(robot) - me(robot)->handle_since < FETCHBOT_HANDLE_TIME) return;
+  me(robot)->handle_since = -1;
+  (void)carbot_grip(robot, 0); /* fails if another robot holds it: PickUp goes on trying */
 }
 
 /* Drives the held item to its destination, then stands still while the gripper opens and
  * puts it down. */
-void FetchBot_Carry(struct CarbotRobot* ctx) {
-  carbot_act_on(ctx);
-
+void FetchBot_Carry(struct CarbotRobot* robot) {
   CarbotItem it;
   double gx, gy;
-  if (!FetchBot_Holding(ctx)) {
-    carbot_drive(0, 0);
+  if (!FetchBot_Holding(robot)) {
+    carbot_drive(robot, 0, 0);
     return;
   }
-  it = carbot_item(0);
-  carbot_gripper_point(&gx, &gy);
+  it = carbot_item(robot, 0);
+  carbot_gripper_point(robot, &gx, &gy);
   if (dist(gx, gy, it.dest_x, it.dest_y) >= FETCHBOT_ARRIVED) {
-    me()->handle_since = -1;
-    go_to(it.dest_x, it.dest_y);
+    me(robot)->handle_since = -1;
+    go_to(robot, it.dest_x, it.dest_y);
     return;
   }
-  carbot_drive(0, 0);
-  if (me()->handle_since < 0) me()->handle_since = carbot_time();
-  if (carbot_time() - me()->handle_since < FETCHBOT_HANDLE_TIME) return;
-  me()->handle_since = -1;
-  carbot_release();
+  carbot_drive(robot, 0, 0);
+  if (me(robot)->handle_since < 0) me(robot)->handle_since = carbot_time(robot);
+  if (carbot_time(robot) - me(robot)->handle_since < FETCHBOT_HANDLE_TIME) return;
+  me(robot)->handle_since = -1;
+  carbot_release(robot);
 }
 
 /* Backs away from the item, still facing it, until FETCHBOT_PARK_DISTANCE from it; then stands. */
-void FetchBot_Park(struct CarbotRobot* ctx) {
-  carbot_act_on(ctx);
-
+void FetchBot_Park(struct CarbotRobot* robot) {
   double x, y;
   CarbotPose p;
-  if (!item_at(&x, &y)) {
-    carbot_drive(0, 0);
+  if (!item_at(robot, &x, &y)) {
+    carbot_drive(robot, 0, 0);
     return;
   }
-  p = carbot_pose();
+  p = carbot_pose(robot);
   if (dist(p.x, p.y, x, y) >= FETCHBOT_PARK_DISTANCE) {
-    carbot_drive(0, 0);
+    carbot_drive(robot, 0, 0);
     return;
   }
-  carbot_drive(-FETCHBOT_BACK_SPEED, clamp_turn(FETCHBOT_TURN_GAIN * bearing_error(p, x, y)));
+  carbot_drive(robot, -FETCHBOT_BACK_SPEED, clamp_turn(FETCHBOT_TURN_GAIN * bearing_error(p, x, y)));
 }
 
-void FetchBot_Beep(struct CarbotRobot* ctx, int times) {
-  carbot_act_on(ctx);
-  carbot_beep(times);
-}
+void FetchBot_Beep(struct CarbotRobot* robot, int times) { carbot_beep(robot, times); }
 
-void FetchBot_Lights(struct CarbotRobot* ctx, bool on) {
-  carbot_act_on(ctx);
-  carbot_lights(on);
-}
+void FetchBot_Lights(struct CarbotRobot* robot, bool on) { carbot_lights(robot, on); }
 
 /* --- conditions --------------------------------------------------------------------------- */
 
-bool FetchBot_Arrived(struct CarbotRobot* ctx) {
-  carbot_act_on(ctx);
-
+bool FetchBot_Arrived(struct CarbotRobot* robot) {
   double x, y, gx, gy;
-  if (!item_at(&x, &y)) return false;
-  carbot_gripper_point(&gx, &gy);
+  if (!item_at(robot, &x, &y)) return false;
+  carbot_gripper_point(robot, &gx, &gy);
   return dist(gx, gy, x, y) < FETCHBOT_ARRIVED;
 }
 
-bool FetchBot_Holding(struct CarbotRobot* ctx) {
-  carbot_act_on(ctx);
-  return carbot_item_count() > 0 && carbot_held_item() == 0;
+bool FetchBot_Holding(struct CarbotRobot* robot) {
+  return carbot_item_count(robot) > 0 && carbot_held_item(robot) == 0;
 }
 
-bool FetchBot_Delivered(struct CarbotRobot* ctx) {
-  carbot_act_on(ctx);
-
+bool FetchBot_Delivered(struct CarbotRobot* robot) {
   CarbotItem it;
-  if (carbot_item_count() < 1) return false;
-  it = carbot_item(0);
+  if (carbot_item_count(robot) < 1) return false;
+  it = carbot_item(robot, 0);
   return !it.held && dist(it.x, it.y, it.dest_x, it.dest_y) < FETCHBOT_DELIVERED;
 }
 
-bool FetchBot_Parked(struct CarbotRobot* ctx) {
-  carbot_act_on(ctx);
-
+bool FetchBot_Parked(struct CarbotRobot* robot) {
   double x, y;
   CarbotPose p;
-  if (!item_at(&x, &y)) return true;
-  p = carbot_pose();
-  return dist(p.x, p.y, x, y) >= FETCHBOT_PARK_DISTANCE - 0.05 && fabs(carbot_speed()) < FETCHBOT_STILL;
+  if (!item_at(robot, &x, &y)) return true;
+  p = carbot_pose(robot);
+  return dist(p.x, p.y, x, y) >= FETCHBOT_PARK_DISTANCE - 0.05 && fabs(carbot_speed(robot)) < FETCHBOT_STILL;
 }

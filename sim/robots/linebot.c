@@ -25,8 +25,6 @@
 /* Each robot's side speeds (several line followers may share a world). */
 static double left_speeds[CARBOT_MAX_ROBOTS];
 static double right_speeds[CARBOT_MAX_ROBOTS];
-#define left_speed left_speeds[carbot_robot()]
-#define right_speed right_speeds[carbot_robot()]
 
 void linebot_reset(void) {
   int i;
@@ -36,49 +34,22 @@ void linebot_reset(void) {
   }
 }
 
-static void apply(void) { carbot_drive((left_speed + right_speed) / 2, (right_speed - left_speed) / LINEBOT_TRACK); }
-
-bool Left_IR_Black(struct CarbotRobot* ctx) {
-  carbot_act_on(ctx);
-  return carbot_ir_black(CARBOT_LEFT);
-}
-bool Left_IR_White(struct CarbotRobot* ctx) {
-  carbot_act_on(ctx);
-  return !carbot_ir_black(CARBOT_LEFT);
-}
-bool Right_IR_Black(struct CarbotRobot* ctx) {
-  carbot_act_on(ctx);
-  return carbot_ir_black(CARBOT_RIGHT);
-}
-bool Right_IR_White(struct CarbotRobot* ctx) {
-  carbot_act_on(ctx);
-  return !carbot_ir_black(CARBOT_RIGHT);
+/* Sets one side of `robot` running at `speed`, and drives the chassis as the two sides ask. */
+static void set_side(struct CarbotRobot* robot, double* side_speeds, double speed) {
+  const int i = carbot_robot_of(robot);
+  side_speeds[i] = speed;
+  carbot_drive(robot, (left_speeds[i] + right_speeds[i]) / 2, (right_speeds[i] - left_speeds[i]) / LINEBOT_TRACK);
 }
 
-void Left_FW(struct CarbotRobot* ctx) {
-  carbot_act_on(ctx);
+bool LineBot_Left_IR_Black(struct CarbotRobot* robot) { return carbot_ir_black(robot, CARBOT_LEFT); }
+bool LineBot_Left_IR_White(struct CarbotRobot* robot) { return !carbot_ir_black(robot, CARBOT_LEFT); }
+bool LineBot_Right_IR_Black(struct CarbotRobot* robot) { return carbot_ir_black(robot, CARBOT_RIGHT); }
+bool LineBot_Right_IR_White(struct CarbotRobot* robot) { return !carbot_ir_black(robot, CARBOT_RIGHT); }
 
-  left_speed = LINEBOT_SIDE_SPEED;
-  apply();
-}
+void LineBot_Left_FW(struct CarbotRobot* robot) { set_side(robot, left_speeds, LINEBOT_SIDE_SPEED); }
 
-void Left_Stop(struct CarbotRobot* ctx) {
-  carbot_act_on(ctx);
+void LineBot_Left_Stop(struct CarbotRobot* robot) { set_side(robot, left_speeds, LINEBOT_STOP_SPEED); }
 
-  left_speed = LINEBOT_STOP_SPEED;
-  apply();
-}
+void LineBot_Right_FW(struct CarbotRobot* robot) { set_side(robot, right_speeds, LINEBOT_SIDE_SPEED); }
 
-void Right_FW(struct CarbotRobot* ctx) {
-  carbot_act_on(ctx);
-
-  right_speed = LINEBOT_SIDE_SPEED;
-  apply();
-}
-
-void Right_Stop(struct CarbotRobot* ctx) {
-  carbot_act_on(ctx);
-
-  right_speed = LINEBOT_STOP_SPEED;
-  apply();
-}
+void LineBot_Right_Stop(struct CarbotRobot* robot) { set_side(robot, right_speeds, LINEBOT_STOP_SPEED); }

@@ -1,9 +1,11 @@
 /* The robot libraries carbot-sim links and exports to generated engines, plus their reset
- * hooks. The interface functions themselves are declared by each generated engine.h
- * (from samples/linebot.iface, samples/cleanbot.iface and samples/fetchbot.iface); they are repeated here so the
- * libraries are compiled against the exact C prototypes an engine expects. carbot-sim builds
- * engines with the instance context `struct CarbotRobot *` (sim/hal/carbot_hal.h), so each
- * function's first argument is the robot the call is for. */
+ * hooks. Each implements an interface (samples/linebot.iface, cleanbot.iface, fetchbot.iface),
+ * and each of its functions carries the interface's name (CleanBot_PickUp implements CleanBot's
+ * PickUp): carbot-sim links every library into one program, and two interfaces may share a
+ * function's name (CleanBot and FetchBot both have PickUp). carbot-sim compiles each engine
+ * with a header renaming its calls to these names (sim/driver/chart_build.cc, robot_names).
+ * carbot-sim builds engines with the instance context `struct CarbotRobot *`
+ * (sim/hal/carbot_hal.h), so each function's first argument is the robot the call is for. */
 #ifndef CARBOT_ROBOTS_H
 #define CARBOT_ROBOTS_H
 
@@ -16,29 +18,28 @@ extern "C" {
 #endif
 
 /* samples/linebot.iface */
-bool Left_IR_Black(struct CarbotRobot* ctx);
-bool Left_IR_White(struct CarbotRobot* ctx);
-bool Right_IR_Black(struct CarbotRobot* ctx);
-bool Right_IR_White(struct CarbotRobot* ctx);
-void Left_FW(struct CarbotRobot* ctx);
-void Left_Stop(struct CarbotRobot* ctx);
-void Right_FW(struct CarbotRobot* ctx);
-void Right_Stop(struct CarbotRobot* ctx);
+bool LineBot_Left_IR_Black(struct CarbotRobot* ctx);
+bool LineBot_Left_IR_White(struct CarbotRobot* ctx);
+bool LineBot_Right_IR_Black(struct CarbotRobot* ctx);
+bool LineBot_Right_IR_White(struct CarbotRobot* ctx);
+void LineBot_Left_FW(struct CarbotRobot* ctx);
+void LineBot_Left_Stop(struct CarbotRobot* ctx);
+void LineBot_Right_FW(struct CarbotRobot* ctx);
+void LineBot_Right_Stop(struct CarbotRobot* ctx);
 
 /* samples/cleanbot.iface */
-void DriveToItem(struct CarbotRobot* ctx);
-void PickUp(struct CarbotRobot* ctx);
-void Transport(struct CarbotRobot* ctx);
-void PlaceItem(struct CarbotRobot* ctx);
-bool Arrived(struct CarbotRobot* ctx);
-bool Holding(struct CarbotRobot* ctx);
-bool FarFromDestination(struct CarbotRobot* ctx);
-bool ItemPlaced(struct CarbotRobot* ctx);
-bool ItemAtDestination(struct CarbotRobot* ctx);
-bool Stuck(struct CarbotRobot* ctx);
+void CleanBot_DriveToItem(struct CarbotRobot* ctx);
+void CleanBot_PickUp(struct CarbotRobot* ctx);
+void CleanBot_Transport(struct CarbotRobot* ctx);
+void CleanBot_PlaceItem(struct CarbotRobot* ctx);
+bool CleanBot_Arrived(struct CarbotRobot* ctx);
+bool CleanBot_Holding(struct CarbotRobot* ctx);
+bool CleanBot_FarFromDestination(struct CarbotRobot* ctx);
+bool CleanBot_ItemPlaced(struct CarbotRobot* ctx);
+bool CleanBot_ItemAtDestination(struct CarbotRobot* ctx);
+bool CleanBot_Stuck(struct CarbotRobot* ctx);
 
-/* samples/fetchbot.iface, prefixed: its names clash with CleanBot's, so a FetchBot engine is
- * compiled with its calls renamed to these (sim/driver/chart_build.cc) */
+/* samples/fetchbot.iface */
 void FetchBot_DriveToItem(struct CarbotRobot* ctx);
 void FetchBot_PickUp(struct CarbotRobot* ctx);
 void FetchBot_Carry(struct CarbotRobot* ctx);

@@ -14,12 +14,19 @@
 
 #include <vector>
 
+struct CarbotRobot;  // a robot's handle (sim/hal/carbot_hal.h)
+
 namespace carbot::toolbox {
 
 /// The robot as the toolbox sees it: motion, pose, sonar, bumper, escape. Thin: every call
-/// goes to the HAL of the simulation carbot-sim runs.
+/// goes to the HAL of the simulation carbot-sim runs, for the environment's robot.
 class Environment {
  public:
+  /// Robot 0, until set_robot() names another.
+  Environment();
+  /// The robot this plan drives (carbot-sim sets it as a C engine's instance context, before
+  /// the plan's first tick): every HAL call of the toolbox names it.
+  void set_robot(CarbotRobot* robot) { robot_ = robot; }
   /// Chassis command: forward speed (m/s) and turn rate (rad/s, + = left).
   void drive(double forward, double turn_rate);
   void halt() { drive(0, 0); }
@@ -36,6 +43,9 @@ class Environment {
   bool sonar_at(double angle) const;
   bool bumper() const;
   bool escape() const;
+
+ private:
+  CarbotRobot* robot_;
 };
 
 /// actor Forward(in float distance) -> FORWARD_OK: drive `distance` cm straight (negative:

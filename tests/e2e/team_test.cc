@@ -182,24 +182,26 @@ TEST_CASE("team model: each robot is driven on its own and grips only a free ite
   CHECK_FALSE(sim.grip(0));  // robot 0 holds it
 }
 
-TEST_CASE("team libraries: an interface call acts on the robot of its context, not the bound one", "[e2e][team]") {
-  // The HAL is bound to robot 0; the calls name robot 1 through their first argument, as an
-  // engine built with carbot-sim's instance context passes it (docs/sim.md "Several robots").
+TEST_CASE("team libraries: an interface call acts on the robot of its context, not the selected one", "[e2e][team]") {
+  // The simulation has robot 0 selected; the calls name robot 1 through their first argument,
+  // as an engine built with carbot-sim's instance context passes it (docs/sim.md "Several
+  // robots"), and the library passes it on to every HAL call.
   Simulation sim(floor_with({{{0, 0}, 0}, {{0, 2}, 0}}));
-  hal::bind(&sim, 0);
+  hal::bind(&sim);
+  sim.select(0);
   linebot_reset();
   CarbotRobot *const first = carbot_robot_handle(0), *const second = carbot_robot_handle(1);
   CHECK(first != second);
   CHECK(carbot_robot_of(second) == 1);
-  Left_FW(second);
-  Right_FW(second);
-  CHECK(carbot_robot() == 1);  // the HAL now acts on the context's robot
+  LineBot_Left_FW(second);
+  LineBot_Right_FW(second);
+  CHECK(carbot_robot_count(second) == 2);
   sim.select(1);
   CHECK(sim.commanded_forward() == Approx(0.2));
   sim.select(0);
   CHECK(sim.commanded_forward() == Approx(0));  // the bound robot was told nothing
   // Each robot's library state is its own: robot 0's left side alone turns it, robot 1 goes on.
-  Left_FW(first);
+  LineBot_Left_FW(first);
   sim.select(0);
   CHECK(sim.commanded_forward() == Approx(0.1));
   sim.select(1);

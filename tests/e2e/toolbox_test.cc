@@ -6,6 +6,7 @@
 #include "carbot_toolbox.h"
 #include "core/geometry.h"
 #include "core/simulation.h"
+#include "hal/carbot_hal.h"
 #include "hal/hal_binding.h"
 #include "wall_fit.h"
 
@@ -88,4 +89,45 @@ TEST_CASE("toolbox: Forward and Turn move the simulated robot as asked", "[e2e][
   CHECK(sim.pose().x == Approx(0.5).margin(0.02));
   CHECK(sim.pose().y == Approx(0.2).margin(0.02));
   CHECK(carbot::deg(sim.pose().heading) == Approx(-90).margin(1.5));
+}
+
+TEST_CASE("toolbox: each environment drives the robot it was given, whichever is selected", "[e2e][toolbox]") {
+  // As carbot-sim gives a plan its robot (docs/sim.md "Several robots"): two environments, one
+  // per robot of one world, each Forward on its own robot; the simulation's selection plays no
+  // part (it is left on robot 0 throughout).
+  using namespace std::chrono_literals;
+  carbot::World w;
+  w.size = {10, 10};
+  w.robots = {{{0, 0}, 0}, {{0, 2}, 90}};
+  w.start = w.robots.front();
+  carbot::Simulation sim(w);
+  carbot::hal::bind(&sim);
+  Env first, second;
+  second.set_robot(carbot_robot_handle(1));
+  afp::Plan a("A"), b("B");
+  auto *fa = a.add_actor("fwd", std::make_unique<Forward>(first, afp::in<float>(40)));
+  auto *fb = b.add_actor("fwd", std::make_unique<Forward>(second, afp::in<float>(20)));
+  a.define_first_actor(fa);
+  a.define_subsequent(fa, Forward::FORWARD_OK, afp::terminate);
+  b.define_first_actor(fb);
+  b.define_subsequent(fb, Forward::FORWARD_OK, afp::terminate);
+  afp::Configuration config;
+  afp::SteppedExecutor ea(a, config), eb(b, config);
+  ea.start();
+  eb.start();
+  while ((ea.status() == afp::Status::Running || eb.status() == afp::Status::Running) && sim.time() < 20) {
+    sim.select(0);
+    sim.step_control();
+    if (ea.status() == afp::Status::Running) ea.step(10ms);
+    if (eb.status() == afp::Status::Running) eb.step(10ms);
+  }
+  carbot::hal::bind(nullptr);
+  CHECK(ea.status() == afp::Status::Succeeded);
+  CHECK(eb.status() == afp::Status::Succeeded);
+  sim.select(0);  // 40 cm along +x
+  CHECK(sim.pose().x == Approx(0.4).margin(0.02));
+  CHECK(sim.pose().y == Approx(0).margin(0.02));
+  sim.select(1);  // 20 cm along +y from (0, 2)
+  CHECK(sim.pose().x == Approx(0).margin(0.02));
+  CHECK(sim.pose().y == Approx(2.2).margin(0.02));
 }

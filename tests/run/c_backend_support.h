@@ -16,6 +16,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <functional>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -519,13 +520,46 @@ inline std::string harness_source(const model::Model &m, const model::Chart &cha
                      X);
   }
   s += "}\n\n";
+  // -DHARNESS_INSTANCES, a chart with sub-charts: after the activation, every instance's (depth
+  // first in declaration order, X_instance_activation's numbers): `in A.M1: L2`; and numbers out
+  // of range read 0.
+  std::vector<std::pair<std::string, const model::Chart *>> instances;
+  std::function<void(const model::Chart &, const std::string &)> collect = [&](const model::Chart &ch,
+                                                                               const std::string &path) {
+    for (const auto &p : ch.places)
+      if (p.runs >= 0) {
+        const model::Chart &sub = m.charts.at(static_cast<std::size_t>(p.runs));
+        instances.emplace_back(path + p.name, &sub);
+        collect(sub, path + p.name + ".");
+      }
+  };
+  collect(chart, "");
+  s += "#ifdef HARNESS_INSTANCES\nstatic void print_instances(const " + X + " *m)\n{\n    int p;\n";
+  for (std::size_t i = 0; i < instances.size(); ++i) {
+    s += fmt::format("    static const char *const names_{}[] = {{", i);
+    for (const auto &p : instances[i].second->places) s += fmt::format("\"{}\", ", p.name);
+    s += "NULL};\n";
+  }
+  for (std::size_t i = 0; i < instances.size(); ++i)
+    s += fmt::format("    printf(\"in {1}:\");\n    for (p = 0; p < {2}; ++p) {{\n"
+                     "        if ({0}_instance_activation(m, {3}, p) != 0u) printf(\" %s\", names_{3}[p]);\n    }}\n"
+                     "    printf(\"\\n\");\n",
+                     X, instances[i].first, instances[i].second->places.size(), i);
+  s += fmt::format("    if ({0}_instance_activation(m, -1, 0) + {0}_instance_activation(m, {1}, 0) +\n"
+                   "        {0}_instance_activation(m, 0, -1) + {0}_instance_activation(m, 0, 1000) != 0u) {{\n"
+                   "        printf(\"out of range: not 0\\n\");\n    }}\n}}\n#endif\n\n",
+                   X, instances.size());
   s += fmt::format("int main(void)\n{{\n    {0} m;\n    int tick = 0;\n"
                    "    setvbuf(stdout, NULL, _IONBF, 0); /* the log survives a failed assert */\n"
                    "    {0}_init(&m);\n{1}"
                    "    while (fgets(script, sizeof script, stdin) != NULL) {{\n"
                    "        printf(\"tick %d\\n\", ++tick);\n"
                    "        {0}_run(&m);\n"
-                   "        print_state(&m);\n    }}\n    return 0;\n}}\n",
+                   "        print_state(&m);\n"
+                   "#ifdef HARNESS_INSTANCES\n"
+                   "        print_instances(&m);\n"
+                   "#endif\n"
+                   "    }}\n    return 0;\n}}\n",
                    X, context ? fmt::format("    {}_set_context(&m, &device);\n", X) : "");
   return s;
 }

@@ -8,6 +8,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <functional>
+
 using namespace cbt;
 
 namespace {
@@ -34,6 +36,15 @@ std::string run_both(const std::string &test, const model::Model &m, const std::
     CHECK(logs[3] == logs[0]);
   }
   return logs[0];
+}
+
+/// The lines of `log` that `keep` keeps.
+std::string lines_where(const std::string &log, const std::function<bool(const std::string &)> &keep) {
+  std::istringstream in(log);
+  std::string out;
+  for (std::string line; std::getline(in, line);)
+    if (keep(line)) out += line + "\n";
+  return out;
 }
 
 /// sfc Top { A runs fsm Mid { M1 runs sfc Leaf { L1, L2 }, M2, success Ok }, B }, every place
@@ -131,6 +142,47 @@ TEST_CASE("c engine sub-charts: sfc in fsm in sfc, start, tick and stop innermos
                "act TopOut\n"
                "act TopB\n"
                "av B\n");
+}
+
+TEST_CASE("c engine sub-charts: X_instance_activation tells where each instance is, depth first",
+          "[c_backend][subchart]") {
+  ChartBuilder b("Top", Kind::Sfc);
+  three_levels(b);
+  // Instance 0 is A's Mid (an fsm), instance 1 M1's Leaf (an sfc: readable, or sequential in the
+  // scalable form). A stopped instance keeps the state its last tick left; a restart resets it.
+  std::string log = run_both("sub_instance_activation", b.model(),
+                             "\n"
+                             "LeafGo\n"
+                             "MidGo\n"
+                             "TopGo\n"
+                             "TopBack\n",
+                             "-DHARNESS_INSTANCES");
+  const std::string shown = lines_where(log, [](const std::string &line) {
+    for (const char *kept : {"tick ", "av ", "in ", "out of range"})
+      if (line.rfind(kept, 0) == 0) return true;
+    return false;
+  });
+  CHECK(shown == "tick 1\nav A\nin A: M1\nin A.M1: L1\n"
+                 "tick 2\nav A\nin A: M1\nin A.M1: L2\n"    // L1 -> L2 inside M1
+                 "tick 3\nav A\nin A: M2\nin A.M1: L2\n"    // M1 -> M2: Leaf stopped as it was
+                 "tick 4\nav B\nin A: M2\nin A.M1: L2\n"    // A -> B: Mid stopped as it was
+                 "tick 5\nav A\nin A: M1\nin A.M1: L1\n");  // B -> A: Mid and its Leaf restarted
+  auto files = emit_c(b.model(), "engine.c", true, "hand.sfc");
+  const std::string &h = files[1].contents;
+  CHECK(h.find("Top_A_INSTANCE,") < h.find("Top_A_M1_INSTANCE,"));
+  CHECK(h.find("unsigned Top_instance_activation(const Top *m, int instance, int place);") != std::string::npos);
+}
+
+TEST_CASE("c engine sub-charts: a chart without sub-charts has no instance API", "[c_backend][subchart]") {
+  ChartBuilder b("Flat", Kind::Sfc);
+  b.fn("Go", Type::Bool);
+  b.place("A", true);
+  b.place("B");
+  b.transition({"A"}, {"B"}, b.call("Go"));
+  for (const auto &f : emit_c(b.model(), "engine.c", true, "hand.sfc")) {
+    CHECK(f.contents.find("_instance_activation") == std::string::npos);
+    CHECK(f.contents.find("INSTANCE") == std::string::npos);
+  }
 }
 
 namespace {
@@ -270,11 +322,7 @@ void mission(ChartBuilder &b) {
 
 /// The log without the hooks' lines.
 std::string without_hooks(const std::string &log) {
-  std::istringstream in(log);
-  std::string out;
-  for (std::string line; std::getline(in, line);)
-    if (line.rfind("hook ", 0) != 0) out += line + "\n";
-  return out;
+  return lines_where(log, [](const std::string &line) { return line.rfind("hook ", 0) != 0; });
 }
 
 }  // namespace

@@ -377,3 +377,33 @@ unsigned Patrol_activation(const Patrol *m, int place)
 {
     return ((place >= 0) && (place < (int)Patrol_PLACE_COUNT)) ? m->av[place] : 0u;
 }
+
+unsigned Patrol_instance_activation(const Patrol *m, int instance, int place)
+{
+    unsigned value = 0u;
+    switch (instance) {
+    case Patrol_Search_INSTANCE:
+        if ((int)m->Search.state == place) {
+            value = 1u;
+        }
+        break;
+    case Patrol_Search_Grab_INSTANCE:
+        if ((place >= 0) && (place < (int)Patrol_Search_Grab_PLACE_COUNT)) {
+            value = m->Search.Grab.av[place];
+        }
+        break;
+    case Patrol_Retry_INSTANCE:
+        if ((int)m->Retry.state == place) {
+            value = 1u;
+        }
+        break;
+    case Patrol_Retry_Grab_INSTANCE:
+        if ((place >= 0) && (place < (int)Patrol_Retry_Grab_PLACE_COUNT)) {
+            value = m->Retry.Grab.av[place];
+        }
+        break;
+    default:
+        break;
+    }
+    return value;
+}

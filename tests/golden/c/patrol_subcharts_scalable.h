@@ -127,6 +127,19 @@ void Patrol_init(Patrol *m);
 void Patrol_run(Patrol *m);
 /* The activation counter of a place (a Patrol_<place>); 0 for a number out of range. */
 unsigned Patrol_activation(const Patrol *m, int place);
+/* The sub-chart instances, depth first in declaration order. */
+typedef enum {
+    Patrol_Search_INSTANCE,      /* Fetch, run by place Search of Patrol */
+    Patrol_Search_Grab_INSTANCE, /* Claw, run by state Grab of place Search of Patrol */
+    Patrol_Retry_INSTANCE,       /* Fetch, run by place Retry of Patrol */
+    Patrol_Retry_Grab_INSTANCE,  /* Claw, run by state Grab of place Retry of Patrol */
+    Patrol_INSTANCE_COUNT
+} Patrol_instance;
+/* The activation of place `place` of instance `instance`, the place numbered as in that
+   instance's enumeration (Patrol_Search_Go, ...), as Patrol_activation tells the root's:
+   where the instance is while the place that runs it is active, else where its last tick
+   left it. 0 for a number out of range. */
+unsigned Patrol_instance_activation(const Patrol *m, int instance, int place);
 
 #ifdef Patrol_HOOKS
 /* Observation hooks (GFE_Activated, GFE_Enabled): an engine built with -DPatrol_HOOKS calls them and

@@ -146,6 +146,21 @@ unsigned Roam_activation(const Roam *m, int place)
     return ((place >= 0) && (place < (int)Roam_PLACE_COUNT)) ? m->av[place] : 0u;
 }
 
+unsigned Roam_instance_activation(const Roam *m, int instance, int place)
+{
+    unsigned value = 0u;
+    switch (instance) {
+    case Roam_Avoid_INSTANCE:
+        if ((int)m->Avoid.state == place) {
+            value = 1u;
+        }
+        break;
+    default:
+        break;
+    }
+    return value;
+}
+
 void Roam_set_context(Roam *m, void *ctx)
 {
     m->ctx = ctx;

@@ -60,6 +60,16 @@ void Roam_init(Roam *m);
 void Roam_run(Roam *m);
 /* The activation counter of a place (a Roam_<place>); 0 for a number out of range. */
 unsigned Roam_activation(const Roam *m, int place);
+/* The sub-chart instances, depth first in declaration order. */
+typedef enum {
+    Roam_Avoid_INSTANCE, /* Escape, run by place Avoid of Roam */
+    Roam_INSTANCE_COUNT
+} Roam_instance;
+/* The activation of place `place` of instance `instance`, the place numbered as in that
+   instance's enumeration (Roam_Avoid_Reverse, ...), as Roam_activation tells the root's:
+   where the instance is while the place that runs it is active, else where its last tick
+   left it. 0 for a number out of range. */
+unsigned Roam_instance_activation(const Roam *m, int instance, int place);
 /* The instance context: every interface function the engine calls (and its sub-charts'
    instances) receives it as its first argument. Set it before the first Roam_run; Roam_init
    leaves it as it is, so either may come first. */
