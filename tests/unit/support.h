@@ -54,6 +54,9 @@ inline WarningOptions all_warnings() {
   return w;
 }
 
+/// The one line where two texts first differ (1-based), for a readable failure.
+std::string first_difference(const std::string &expected, const std::string &actual);
+
 /// Parses one file called "t.sfc" and returns the printed diagnostics.
 inline std::string parse_errors(const std::string &source) { return FrontEnd({{"t.sfc", source}}).text(); }
 
