@@ -205,34 +205,6 @@ t.sfc:9:26: note: 'elapsed(A)' is the time it has been active
 )--");
 }
 
-TEST_CASE("validate: calling something that is not a function", "[validate]") {
-  Validated r({{"t.sfc", R"--(import "bot.iface";
-const bool N = true;
-sfc S {
-  period 10ms;
-  var int n = 0;
-  var bool b = false;
-  var float f = 0;
-  initial place A;
-  transition A -> A when S() && N();
-}
-)--"},
-               {"bot.iface", kBot}});
-  CHECK(r.text() == R"--(t.sfc:9:26: error: called object 'S' is a chart, not a function [type-mismatch]
-   transition A -> A when S() && N();
-                          ^
-t.sfc:3:5: note: 'S' declared here
- sfc S {
-     ^
-t.sfc:9:33: error: called object 'N' is a constant, not a function [type-mismatch]
-   transition A -> A when S() && N();
-                                 ^
-t.sfc:2:12: note: 'N' declared here
- const bool N = true;
-            ^
-)--");
-}
-
 TEST_CASE("validate: assignment only to a var", "[validate]") {
   Validated r({{"t.sfc", R"--(import "bot.iface";
 const int GLOBAL = 1;
@@ -274,30 +246,6 @@ bot.iface:4:8: note: 'Go' declared here; only a 'var' can be assigned
 t.sfc:10:51: error: unknown variable 'nope' [unknown-name]
    place B { LIMIT = 4; A = 1; GLOBAL = 2; Go = 3; nope = 4; }
                                                    ^~~~
-)--");
-}
-
-TEST_CASE("validate: += and -= need a numeric var; assignments convert only between numbers", "[validate]") {
-  Validated r({{"t.sfc", R"--(import "bot.iface";
-sfc S {
-  period 10ms;
-  var int n = 0;
-  var bool b = false;
-  var float f = 0;
-  initial place A;
-  place B { b += 1; n -= 1; f += n; n = 2.5; b = 1; n = b; b = White(); }
-}
-)--"},
-               {"bot.iface", kBot}});
-  CHECK(r.text() == R"--(t.sfc:8:13: error: operator '+=' needs a numeric variable; 'b' has type 'bool' [type-mismatch]
-   place B { b += 1; n -= 1; f += n; n = 2.5; b = 1; n = b; b = White(); }
-             ^
-t.sfc:8:50: error: incompatible types when assigning to 'b' of type 'bool' from type 'int' [type-mismatch]
-   place B { b += 1; n -= 1; f += n; n = 2.5; b = 1; n = b; b = White(); }
-                                                  ^
-t.sfc:8:57: error: incompatible types when assigning to 'n' of type 'int' from type 'bool' [type-mismatch]
-   place B { b += 1; n -= 1; f += n; n = 2.5; b = 1; n = b; b = White(); }
-                                                         ^
 )--");
 }
 

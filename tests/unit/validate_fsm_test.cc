@@ -11,31 +11,6 @@ using test::all_warnings;
 using test::kBot;
 using test::Validated;
 
-TEST_CASE("validate: an fsm has exactly one initial state", "[validate]") {
-  Validated r({{"t.fsm", R"--(fsm M {
-  state A;
-  state B;
-  A -> B;
-}
-fsm N {
-  initial state A;
-  initial state B;
-  A -> B;
-}
-)--"}});
-  CHECK(r.text() == R"--(t.fsm:1:5: error: fsm 'M' has no initial state [initial-state]
- fsm M {
-     ^
-t.fsm:1:5: note: mark the state it starts in with 'initial state'
-t.fsm:8:17: error: fsm 'N' has more than one initial state [initial-state]
-   initial state B;
-                 ^
-t.fsm:7:17: note: 'A' is already its initial state
-   initial state A;
-                 ^
-)--");
-}
-
 TEST_CASE("validate: terminal states have no body and no outgoing transitions", "[validate]") {
   Validated r({{"t.fsm", R"--(import "bot.iface";
 fsm M {
@@ -130,29 +105,6 @@ t.fsm:6:3: error: an fsm transition has exactly one target state [fsm-transition
 t.fsm:7:8: error: unknown state 'Z' [unknown-name]
    A -> Z;
         ^
-)--");
-}
-
-TEST_CASE("validate: every state is connected to the initial state", "[validate]") {
-  Validated r({{"t.fsm", R"--(fsm M {
-  initial state A;
-  state B;
-  state C;
-  state D;
-  state E;
-  A -> B;
-  C -> D;
-}
-)--"}});
-  CHECK(r.text() == R"--(t.fsm:4:9: error: state 'C' is not connected to the initial state 'A' [not-connected]
-   state C;
-         ^
-t.fsm:5:9: error: state 'D' is not connected to the initial state 'A' [not-connected]
-   state D;
-         ^
-t.fsm:6:9: error: state 'E' is not connected to the initial state 'A' [not-connected]
-   state E;
-         ^
 )--");
 }
 

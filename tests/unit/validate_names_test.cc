@@ -11,49 +11,6 @@ using test::kBot;
 using test::kToolbox;
 using test::Validated;
 
-TEST_CASE("validate: a duplicate place is reported with a note at the first", "[validate]") {
-  Validated r({{"t.sfc", R"--(import "bot.iface";
-sfc S {
-  initial place A;
-  place B;
-  place A;
-}
-)--"},
-               {"bot.iface", kBot}});
-  CHECK(r.text() == R"--(t.sfc:5:9: error: redefinition of place 'A' [duplicate-name]
-   place A;
-         ^
-t.sfc:3:17: note: previous definition of 'A' was here
-   initial place A;
-                 ^
-)--");
-}
-
-TEST_CASE("validate: places, transitions, vars and consts share one namespace per chart", "[validate]") {
-  Validated r({{"t.sfc", R"--(import "bot.iface";
-sfc S {
-  var int A = 0;
-  initial place A;
-  const int t = 1;
-  t: A -> A;
-}
-)--"},
-               {"bot.iface", kBot}});
-  CHECK(r.text() == R"--(t.sfc:4:17: error: place 'A' has the same name as a variable [duplicate-name]
-   initial place A;
-                 ^
-t.sfc:3:11: note: variable 'A' declared here
-   var int A = 0;
-           ^
-t.sfc:6:3: error: transition 't' has the same name as a constant [duplicate-name]
-   t: A -> A;
-   ^
-t.sfc:5:13: note: constant 't' declared here
-   const int t = 1;
-             ^
-)--");
-}
-
 TEST_CASE("validate: the same place name in two charts is fine", "[validate]") {
   Validated r({{"t.sfc", R"--(sfc S { initial place A; }
 sfc R { initial place A; }
@@ -116,19 +73,6 @@ sfc S {
   const auto &init = *r.model.charts.at(0).vars.at(0).init;
   CHECK(init.kind == model::Expr::Kind::Const);
   CHECK(r.model.consts.at(init.index).value.text == "0.6");
-}
-
-TEST_CASE("validate: two charts with one name", "[validate]") {
-  Validated r({{"t.sfc", R"--(sfc S { initial place A; }
-fsm S { initial state A; }
-)--"}});
-  CHECK(r.text() == R"--(t.sfc:2:5: error: redefinition of chart 'S' [duplicate-name]
- fsm S { initial state A; }
-     ^
-t.sfc:1:5: note: previous definition of 'S' was here
- sfc S { initial place A; }
-     ^
-)--");
 }
 
 TEST_CASE("validate: an unknown function gets a did-you-mean at the declaration", "[validate]") {

@@ -11,20 +11,6 @@ using test::all_warnings;
 using test::kBot;
 using test::Validated;
 
-TEST_CASE("validate: an sfc needs an initial place", "[validate]") {
-  Validated r({{"t.sfc", R"--(sfc S {
-  place A;
-  place B;
-  transition A -> B;
-}
-)--"}});
-  CHECK(r.text() == R"--(t.sfc:1:5: error: sfc 'S' has no initial place [initial-state]
- sfc S {
-     ^
-t.sfc:1:5: note: mark the places active at start with 'initial place'
-)--");
-}
-
 TEST_CASE("validate: fsm syntax in an sfc", "[validate]") {
   Validated r({{"t.sfc", R"--(import "bot.iface";
 sfc S {
@@ -75,29 +61,6 @@ t.sfc:3:11: note: 'n' declared here
 t.sfc:8:22: error: unknown place 'Other' [unknown-name]
    transition Wait -> Other;
                       ^~~~~
-)--");
-}
-
-TEST_CASE("validate: a place listed twice in a transition's inputs or outputs", "[validate]") {
-  Validated r({{"t.sfc", R"--(sfc S {
-  initial place A;
-  place B;
-  transition (A, B, A) -> B;
-  go: A -> (B, B);
-}
-)--"}});
-  CHECK(r.text() == R"--(t.sfc:4:21: error: place 'A' is listed twice in the inputs of transition 'T0' [duplicate-place]
-   transition (A, B, A) -> B;
-                     ^
-t.sfc:4:15: note: first listed here
-   transition (A, B, A) -> B;
-               ^
-t.sfc:5:16: error: place 'B' is listed twice in the outputs of transition 'go' [duplicate-place]
-   go: A -> (B, B);
-                ^
-t.sfc:5:13: note: first listed here
-   go: A -> (B, B);
-             ^
 )--");
 }
 

@@ -122,35 +122,6 @@ t.sfc:6:9: warning: place 'C' can never become active [-Wunreachable-place]
 )--");
 }
 
-TEST_CASE("validate: sub-charts: a chart that runs itself, directly or through others, names the whole cycle",
-          "[validate][subcharts]") {
-  Validated r({{"t.sfc", R"--(sfc A { initial place P runs A; }
-sfc B { initial place Q; place R runs C; Q -> R; }
-fsm C { initial state S runs D; success state T; S -> T; }
-sfc D { initial place U runs B; }
-)--"},
-               {"bot.iface", kBot}});
-  CHECK(r.text() == R"--(t.sfc:1:30: error: chart 'A' runs itself [subchart-cycle]
- sfc A { initial place P runs A; }
-                              ^
-t.sfc:1:30: note: place 'P' of 'A' runs 'A'
- sfc A { initial place P runs A; }
-                              ^
-t.sfc:2:39: error: chart 'B' runs itself through other charts: B -> C -> D -> B [subchart-cycle]
- sfc B { initial place Q; place R runs C; Q -> R; }
-                                       ^
-t.sfc:2:39: note: place 'R' of 'B' runs 'C'
- sfc B { initial place Q; place R runs C; Q -> R; }
-                                       ^
-t.sfc:3:30: note: state 'S' of 'C' runs 'D'
- fsm C { initial state S runs D; success state T; S -> T; }
-                              ^
-t.sfc:4:30: note: place 'U' of 'D' runs 'B'
- sfc D { initial place U runs B; }
-                              ^
-)--");
-}
-
 TEST_CASE(
     "validate: sub-charts: succeeded/failed need a place that runs an fsm; active paths resolve in the right chart",
     "[validate][subcharts]") {
