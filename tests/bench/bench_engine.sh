@@ -6,9 +6,8 @@
 #
 #   tests/bench/bench_engine.sh GFEC GEN [CC]        (CC default: gcc; engines at -O2)
 #
-# Charts: the line follower (samples/), a ring of 10 and of 1000 places with one token, and a
-# fork into 100 parallel two-place loops (gfec_bench_gen). The stubs (stubs.c) make a token move
-# on one tick in four. Measures; never fails on time.
+# Charts: bench_cases.sh. The stubs (stubs.c) make a token move on one tick in four. Measures;
+# never fails on time.
 set -euo pipefail
 shopt -s inherit_errexit
 gfec=$(realpath "$1") gen=$(realpath "$2") cc=${3:-gcc}
@@ -19,9 +18,8 @@ trap 'rm -rf "$work"' EXIT
 ticks_time=${BENCH_TICKS:-2000000}   # for ns per tick
 ticks_count=20000                    # under callgrind
 
-forms=(readable)
-if "$gfec" --help 2>&1 | grep -q -- '--engine'; then forms+=(scalable); fi
-forms+=(hand)
+# shellcheck source=tests/bench/bench_cases.sh
+source "$here/bench_cases.sh"
 have_callgrind=0
 command -v valgrind > /dev/null && have_callgrind=1
 
@@ -40,42 +38,15 @@ measure() {
   echo "$ir $ns $sum"
 }
 
-# chart_source NAME: writes the chart of a benchmark case to $work/NAME.sfc (with its imports)
-# and the hand-written machine to $work/NAME_hand.c; sets `chart` to the chart's name.
-chart_source() {
-  case $1 in
-    line_follower)
-      cp "$root/samples/line_follower.sfc" "$root/samples/linebot.iface" "$work/"
-      cp "$here/hand/line_follower_hand.c" "$work/line_follower_hand.c"
-      chart=LineFollower ;;
-    ring*)
-      "$gen" chart ring "${1#ring}" > "$work/$1.sfc"
-      "$gen" hand ring "${1#ring}" > "$work/$1_hand.c"
-      chart=Ring ;;
-    branches*)
-      "$gen" chart branches "${1#branches}" > "$work/$1.sfc"
-      "$gen" hand branches "${1#branches}" > "$work/$1_hand.c"
-      chart=Branches ;;
-  esac
-}
-
 declare -A ir_of
 echo "engines: $cc -O2; $("$cc" --version | head -1); ${ticks_time} ticks timed, ${ticks_count} under callgrind"
 printf "%-15s %-9s %12s %10s %9s %14s\n" "chart" "form" "instr/tick" "ns/tick" "vs hand" "checksum"
-for name in line_follower ring10 ring1000 branches100; do
+for name in "${bench_cases[@]}"; do
   chart_source "$name"
   declare -A result=()
   for form in "${forms[@]}"; do
     dir=$work/$name-$form
-    mkdir -p "$dir"
-    if [[ $form == hand ]]; then
-      cp "$work/${name}_hand.c" "$dir/"
-    else
-      opt=()
-      [[ $form == readable ]] || opt=(--engine="$form")
-      if [[ $form == readable ]] && "$gfec" --help 2>&1 | grep -q -- '--engine'; then opt=(--engine=readable); fi
-      (cd "$work" && "$gfec" "$name.sfc" "${opt[@]}" -o "$dir/engine.c")
-    fi
+    machine "$name" "$form" "$dir"
     result[$form]=$(measure "$dir" "$chart")
   done
   read -r hand_ir _ _ <<< "${result[hand]}"

@@ -3,7 +3,7 @@
 # the engine's state (sizeof the chart's struct: the RAM of one engine, which the caller
 # allocates) and the run function's stack frame, on the host (CC -O2) and for a Cortex-M4
 # (clang --target=thumbv7em-none-eabi -mcpu=cortex-m4 -mthumb -Os, llvm-size), for each chart
-# in each engine form and for the hand-written machine.
+# in each engine form and for the hand-written machine (the cases: bench_cases.sh).
 #
 #   tests/bench/bench_size.sh GFEC GEN [CC]
 #
@@ -19,13 +19,8 @@ m4=(clang --target=thumbv7em-none-eabi -mcpu=cortex-m4 -mthumb -Os -ffreestandin
 have_m4=0
 if command -v clang > /dev/null && command -v llvm-size > /dev/null; then have_m4=1; fi
 
-forms=(readable)
-engine_opt=()
-if "$gfec" --help 2>&1 | grep -q -- '--engine'; then
-  forms+=(scalable)
-  engine_opt=(--engine=readable)
-fi
-forms+=(hand)
+# shellcheck source=tests/bench/bench_cases.sh
+source "$here/bench_cases.sh"
 
 # sizes DIR SOURCE CHART COMPILER... : "<text> <data> <bss> <state> <stack>"
 sizes() {
@@ -47,41 +42,15 @@ sizes() {
   echo "$text $data $bss $state_bss ${stack:--}"
 }
 
-chart_source() {
-  case $1 in
-    line_follower)
-      cp "$root/samples/line_follower.sfc" "$root/samples/linebot.iface" "$work/"
-      cp "$here/hand/line_follower_hand.c" "$work/line_follower_hand.c"
-      chart=LineFollower ;;
-    ring*)
-      "$gen" chart ring "${1#ring}" > "$work/$1.sfc"
-      "$gen" hand ring "${1#ring}" > "$work/$1_hand.c"
-      chart=Ring ;;
-    branches*)
-      "$gen" chart branches "${1#branches}" > "$work/$1.sfc"
-      "$gen" hand branches "${1#branches}" > "$work/$1_hand.c"
-      chart=Branches ;;
-  esac
-}
-
 echo "host: $cc -O2 ($("$cc" --version | head -1)); Cortex-M4: ${m4[*]}"
 printf "%-15s %-9s | %8s %6s %6s %7s %6s | %8s %6s %6s %7s %6s\n" "" "" "host" "" "" "" "" "M4" "" "" "" ""
 printf "%-15s %-9s | %8s %6s %6s %7s %6s | %8s %6s %6s %7s %6s\n" "chart" "form" "text" "data" "bss" "state" "stack" \
   "text" "data" "bss" "state" "stack"
-for name in line_follower ring10 ring1000 branches100; do
+for name in "${bench_cases[@]}"; do
   chart_source "$name"
   for form in "${forms[@]}"; do
     dir=$work/$name-$form
-    mkdir -p "$dir"
-    if [[ $form == hand ]]; then
-      source=${name}_hand.c
-      cp "$work/$source" "$dir/"
-    else
-      source=engine.c
-      opt=("${engine_opt[@]}")
-      [[ $form == readable ]] || opt=(--engine="$form")
-      (cd "$work" && "$gfec" "$name.sfc" "${opt[@]}" --no-line-directives -o "$dir/engine.c")
-    fi
+    machine "$name" "$form" "$dir" --no-line-directives
     host=$(sizes "$dir" "$source" "$chart" "$cc" -O2 -std=c99)
     m4_row="- - - - -"
     if ((have_m4)); then m4_row=$(sizes "$dir" "$source" "$chart" "${m4[@]}"); fi

@@ -416,6 +416,22 @@ inline std::vector<std::string> c_compilers() {
 
 inline const char *kStrictFlags = "-std=c99 -Wall -Wextra -Wpedantic -Werror";
 
+/// Writes `files` into the scratch directory `test` and compiles `source` alone (-c) with every
+/// C compiler at kStrictFlags, once with each of `defines`: every build must pass.
+inline void check_compiles(const std::string &test, const std::vector<OutputFile> &files, const std::string &source,
+                           const std::vector<std::string> &defines = {""}) {
+  fs::path dir = scratch_dir(test);
+  for (const auto &f : files) write_file(dir / f.path, f.contents);
+  for (const auto &cc : c_compilers())
+    for (const auto &d : defines) {
+      auto r =
+          run_command(fmt::format("cd '{}' && {} {} {} -c {} -o /dev/null", dir.string(), cc, kStrictFlags, d, source),
+                      dir / "build.log");
+      INFO(cc << " " << d << "\n" << r.output);
+      CHECK(r.status == 0);
+    }
+}
+
 // ------------------------------------------------------------------ the run harness
 
 /// A C main() for one chart: it implements every interface function the chart calls from a

@@ -158,17 +158,6 @@ inline std::string run_script(const std::string &exe, const std::string &script,
   return r.out;
 }
 
-/// The one line where two texts first differ (1-based), for a readable failure.
-inline std::string first_difference(const std::string &expected, const std::string &actual) {
-  std::istringstream e(expected), a(actual);
-  std::string el, al;
-  for (int line = 1;; ++line) {
-    bool more_e = static_cast<bool>(std::getline(e, el)), more_a = static_cast<bool>(std::getline(a, al));
-    if (!more_e && !more_a) return "the texts differ only in their last newline";
-    if (!more_e || !more_a || el != al)
-      return fmt::format("first difference at line {}:\n  expected: {}\n  actual:   {}", line,
-                         more_e ? el : "<end of file>", more_a ? al : "<end of file>");
-  }
-}
+using test::first_difference;
 
 }  // namespace cppt

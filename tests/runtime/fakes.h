@@ -106,6 +106,15 @@ inline FakeSupervisor::Rule never() {
   return [](afp::Context&) { return afp::no_event; };
 }
 
+/// The hand-over several tests build: `a` runs first and `s`, supervising it, hands over to `b`
+/// when it fires; `a` or `b` finishing (DONE) ends the plan.
+inline void hand_over(afp::Plan& plan, const afp::Actor* a, const afp::Supervisor* s, const afp::Actor* b) {
+  plan.define_first_actor(a);
+  plan.define_subsequent(a, FakeActor::DONE, afp::terminate);
+  plan.define_supervision(a, s, FakeSupervisor::FIRED, b);
+  plan.define_subsequent(b, FakeActor::DONE, afp::terminate);
+}
+
 /// The example computation of the toolbox: rest = n - 1; AGAIN while rest > 0.
 class CountDown : public afp::Computation {
  public:

@@ -16,6 +16,7 @@ using fakes::CountDown;
 using fakes::FakeActor;
 using fakes::FakeSupervisor;
 using fakes::fire_from;
+using fakes::hand_over;
 using fakes::never;
 using Lines = std::vector<std::string>;
 using Times = std::vector<afp::Duration>;
@@ -85,10 +86,7 @@ TEST_CASE("an actor's supervisor interrupts it and its event selects the next ac
   auto* a = plan.add_actor("a", std::make_unique<FakeActor>(0));  // never finishes
   auto* b = plan.add_actor("b", std::make_unique<FakeActor>(1));
   auto* s = add_supervisor(plan, "s", 0ms, fire_from(30ms));
-  plan.define_first_actor(a);
-  plan.define_subsequent(a, FakeActor::DONE, afp::terminate);
-  plan.define_supervision(a, s, FakeSupervisor::FIRED, b);
-  plan.define_subsequent(b, FakeActor::DONE, afp::terminate);
+  hand_over(plan, a, s, b);
   afp::Configuration config;
   fakes::Recorder trace;
   afp::SteppedExecutor exec(plan, config, &trace);
@@ -183,10 +181,7 @@ TEST_CASE("an interrupted actor's outputs are discarded", "[stepped]") {
   a->on_start = [](afp::Context& ctx) { afp::out<int>("x").write(ctx, 5); };
   a->on_step = [](afp::Context& ctx) { afp::out<int>("x").write(ctx, 6); };
   auto* s = add_supervisor(plan, "s", 0ms, fire_from(20ms));
-  plan.define_first_actor(a);
-  plan.define_subsequent(a, FakeActor::DONE, afp::terminate);
-  plan.define_supervision(a, s, FakeSupervisor::FIRED, b);
-  plan.define_subsequent(b, FakeActor::DONE, afp::terminate);
+  hand_over(plan, a, s, b);
   afp::Configuration config;
   afp::SteppedExecutor exec(plan, config);
   exec.start();
@@ -212,10 +207,7 @@ TEST_CASE("the interrupting supervisor's outputs are committed - other checks' o
   auto* stop = add_supervisor(plan, "stop", 0ms, fire_from(60ms));
   plan.define_global_supervision(noisy, FakeSupervisor::OTHER_EVENT, afp::ignore);
   plan.define_global_supervision(stop, FakeSupervisor::FIRED, afp::terminate);
-  plan.define_first_actor(a);
-  plan.define_subsequent(a, FakeActor::DONE, afp::terminate);
-  plan.define_supervision(a, s, FakeSupervisor::FIRED, b);
-  plan.define_subsequent(b, FakeActor::DONE, afp::terminate);
+  hand_over(plan, a, s, b);
   afp::Configuration config;
   fakes::Recorder trace;
   afp::SteppedExecutor exec(plan, config, &trace);

@@ -20,6 +20,7 @@ using afp::Status;
 using afp::Value;
 using fakes::FakeActor;
 using fakes::FakeSupervisor;
+using fakes::hand_over;
 using Lines = std::vector<std::string>;
 
 namespace {
@@ -72,10 +73,7 @@ TEST_CASE("threaded: an external write makes a supervisor interrupt - its output
                                   afp::out<std::string>("reason").write(ctx, "go seen");
                                   return afp::CheckResult(FakeSupervisor::FIRED);
                                 }));
-  plan.define_first_actor(a);
-  plan.define_subsequent(a, FakeActor::DONE, afp::terminate);
-  plan.define_supervision(a, s, FakeSupervisor::FIRED, b);
-  plan.define_subsequent(b, FakeActor::DONE, afp::terminate);
+  hand_over(plan, a, s, b);
   afp::Configuration config;
   fakes::Recorder trace;
   afp::ThreadedExecutor exec(plan, config, &trace, fast);

@@ -3,16 +3,14 @@
 
 #include "analysis/analysis.h"
 #include "interpreter_support.h"
+#include "support.h"
 
 namespace gfec::test {
 
 /// Every warning on (or the defaults), the analyses run, the diagnostics as gfec prints them.
 inline std::string analyze_text(const Compiled &c, bool all_on = true, analysis::Limits limits = {},
                                 std::string *report = nullptr) {
-  WarningOptions w;
-  if (all_on)
-    for (int i = 0; i < static_cast<int>(Warning::Count_); ++i) w.set(static_cast<Warning>(i), true);
-  Diagnostics diag(w);
+  Diagnostics diag(all_on ? all_warnings() : WarningOptions{});
   if (report) *report = analysis::analysis_report(c.model, diag, limits);
   else analysis::analyze(c.model, diag, limits);
   std::string out;

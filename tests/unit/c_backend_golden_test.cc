@@ -4,6 +4,7 @@
 // case (--no-line-directives and --engine= matter here). tools/regen-golden.sh c rewrites the expected
 // files with the real gfec; a reviewer reads the diff (tests/README.md).
 #include "../run/c_backend_support.h"
+#include "support.h"
 
 #include <catch2/catch.hpp>
 
@@ -11,6 +12,7 @@
 #include <cstdlib>
 
 using namespace cbt;
+using gfec::test::first_difference;
 
 namespace {
 
@@ -34,19 +36,6 @@ std::vector<std::string> cases(const std::map<std::string, std::string> &files) 
     if (ext == ".sfc" || ext == ".fsm") names.push_back(name);
   }
   return names;  // std::map keeps them sorted
-}
-
-/// The one line where two texts first differ (1-based), for a readable failure.
-std::string first_difference(const std::string &expected, const std::string &actual) {
-  std::istringstream e(expected), a(actual);
-  std::string el, al;
-  for (int line = 1;; ++line) {
-    bool more_e = static_cast<bool>(std::getline(e, el)), more_a = static_cast<bool>(std::getline(a, al));
-    if (!more_e && !more_a) return "the texts differ only in their last newline";
-    if (!more_e || !more_a || el != al)
-      return fmt::format("first difference at line {}:\n  expected: {}\n  actual:   {}", line,
-                         more_e ? el : "<end of file>", more_a ? al : "<end of file>");
-  }
 }
 
 /// Compares `actual` with the golden file; GFEC_UPDATE_GOLDEN=1 writes it instead.

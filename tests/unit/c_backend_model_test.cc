@@ -145,14 +145,7 @@ TEST_CASE("c backend: expressions keep C's meaning and satisfy -Wall", "[c_backe
   CHECK(contains(src, "(false /* never: timers count from 0 to UINT32_MAX */)"));
   CHECK(contains(src, "&& (A() && C())) {"));  // the user's brackets, not doubled
   CHECK(contains(files[1].contents, "void Go(int);"));
-  fs::path dir = scratch_dir("expr");
-  for (const auto &f : files) write_file(dir / f.path, f.contents);
-  for (const auto &cc : c_compilers()) {
-    auto r = run_command(fmt::format("cd '{}' && {} {} -c expr.c -o /dev/null", dir.string(), cc, kStrictFlags),
-                         dir / "build.log");
-    INFO(cc << "\n" << r.output);
-    CHECK(r.status == 0);
-  }
+  check_compiles("expr", files, "expr.c");
 }
 
 TEST_CASE("c backend: a float constant is a float, rounded as the chart rounds it", "[c_backend]") {
@@ -175,14 +168,7 @@ TEST_CASE("c backend: temporaries give way to interface functions named like the
   auto files = emit_c(b.model(), "clash.c", false);
   CHECK(contains(files[0].contents, "int gfec_t_0; /* temporaries: the chart calls left to right */\n"
                                     "        gfec_t_0 = gfec_t0(); A(gfec_t_0, gfec_t0());\n"));
-  fs::path dir = scratch_dir("temporaries_clash");
-  for (const auto &f : files) write_file(dir / f.path, f.contents);
-  for (const auto &cc : c_compilers()) {
-    auto r = run_command(fmt::format("cd '{}' && {} {} -c clash.c -o /dev/null", dir.string(), cc, kStrictFlags),
-                         dir / "build.log");
-    INFO(cc << "\n" << r.output);
-    CHECK(r.status == 0);
-  }
+  check_compiles("temporaries_clash", files, "clash.c");
 }
 
 TEST_CASE("c backend: verbatim code is copied as written, #line pointing at it", "[c_backend]") {
@@ -206,16 +192,8 @@ TEST_CASE("c backend: a chart without transitions or actions still compiles clea
     b.place("Only", true);
     auto files = emit_c(b.model(), "still.c");
     CHECK(contains(files[0].contents, "(void)m;"));
-    fs::path dir = scratch_dir(kind == Kind::Sfc ? "still_sfc" : "still_fsm");
-    for (const auto &f : files) write_file(dir / f.path, f.contents);
-    for (const auto &cc : c_compilers())
-      for (const char *defines : {"", "-DStill_HOOKS -DStill_CHECKS"}) {
-        auto r = run_command(
-            fmt::format("cd '{}' && {} {} {} -c still.c -o /dev/null", dir.string(), cc, kStrictFlags, defines),
-            dir / "build.log");
-        INFO(cc << " " << defines << "\n" << r.output);
-        CHECK(r.status == 0);
-      }
+    check_compiles(kind == Kind::Sfc ? "still_sfc" : "still_fsm", files, "still.c",
+                   {"", "-DStill_HOOKS -DStill_CHECKS"});
   }
 }
 

@@ -3,10 +3,13 @@
 // functions tick by tick and logs every call, and run. The expected logs are written by hand
 // from docs/language.md §5.1 and §7, never produced by the engine.
 #include "../run/c_backend_support.h"
+#include "../run/shared_charts.h"
 
 #include <catch2/catch.hpp>
 
 using namespace cbt;
+using gfec::test::charts::kFsmEntryExit;
+using gfec::test::charts::kIfElse;
 
 namespace {
 
@@ -724,27 +727,6 @@ TEST_CASE("c engine run: fsm calls left to right in conditions, actions and post
   CHECK(run("call_order_fsm_ndebug", kOrderFsm, script, "-DMachine_CHECKS -DNDEBUG") == order_fsm_log(false));
 }
 
-namespace {
-
-// if / else if / else in actions and entry and exit blocks (docs/language.md "if and else"),
-// with calls in the conditions (one needs a temporary to keep them in order) and a timer.
-const char *kIfElse = R"(
-interface Bot { bool X(); bool Y(); int N(); int M(); void A(); void B(int v); void C(); void D(); }
-sfc Branches {
-  period 10ms;
-  var int k = 0;
-  initial place P {
-    entry { if (X()) { A(); } else { C(); } }
-    if (N() + M() > 2) { B(N()); } else if (Y()) { if (X()) { C(); } k += 1; } else { D(); }
-    if (elapsed(P) >= 20ms) { B(k); }
-  }
-  place Q { exit { if (Y()) { B(k); } } D(); }
-  transition P -> Q when k >= 2;
-  transition Q -> P when X();
-})";
-
-}  // namespace
-
 TEST_CASE("c engine run: if, else if and else", "[c_backend][run]") {
   std::string log = run("if_else", kIfElse,
                         "X N=2 M=1\n"
@@ -832,29 +814,6 @@ fsm Choice {
 }
 
 namespace {
-
-// fsm entry and exit (docs/language.md "fsm entry and exit"): the first tick runs the initial
-// state's entry; a transition runs the old state's exit, then the new state's entry with its
-// timer at 0, then (unless terminal) its action.
-const char *kFsmEntryExit = R"(
-interface Bot {
-  bool Go(); bool Back(); bool Fin();
-  void EnterA(); void ExitA(); void DoA(); void EnterB(); void ExitB(); void DoB(); void Late();
-}
-fsm Doors {
-  period 10ms;
-  initial state A { entry { EnterA(); } DoA(); exit { ExitA(); } }
-  state B {
-    entry { EnterB(); if (elapsed(B) >= 10ms) { Late(); } }
-    DoB();
-    if (elapsed(B) >= 10ms) { Late(); }
-    exit { ExitB(); }
-  }
-  success state Done;
-  A -> B when Go();
-  B -> A when Back();
-  B -> Done when Fin();
-})";
 
 const char *kFsmEntryExitScript = "\nGo\n\nBack\nGo\nFin\nGo Back Fin\n";
 

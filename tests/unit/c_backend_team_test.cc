@@ -3,6 +3,7 @@
 // agent ticks in agent order, then every agent's X_state is reported to every other with
 // X_report. The expected logs are written by hand from the language's rules.
 #include "../run/c_backend_support.h"
+#include "../run/shared_charts.h"
 
 #include "interpreter/run_chart.h"
 
@@ -12,6 +13,7 @@
 #include <sstream>
 
 using namespace cbt;
+using gfec::test::charts::kCensus;
 
 namespace {
 
@@ -142,16 +144,6 @@ fsm Fetch {
   Go -> Yield when team(Grab) > 0;
   Grab -> Got when Holding();
   Yield -> Left when Parked();
-})";
-
-const char *kCensus = R"(
-interface Bot { bool Move(); void Count(int me, int go, int wait); }
-fsm Census {
-  team 4;
-  initial state Go { Count(agent(), team(Go), team(Wait)); }
-  state Wait { Count(agent(), team(Go), team(Wait)); }
-  Go -> Wait when Move();
-  Wait -> Go when Move();
 })";
 
 }  // namespace

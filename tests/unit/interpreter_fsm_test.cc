@@ -1,4 +1,5 @@
 // The reference interpreter on fsm machines: docs/language.md §7.
+#include "../run/shared_charts.h"
 #include "interpreter_support.h"
 
 #include <fmt/format.h>
@@ -7,6 +8,8 @@ using namespace gfec;
 using test::compile;
 using test::run_log;
 using test::ScriptedEnv;
+using test::charts::kCensus;
+using test::charts::kFsmEntryExit;
 
 namespace {
 
@@ -111,25 +114,7 @@ fsm Blink {
 
 TEST_CASE("interpreter fsm: entry and exit blocks") {
   // The machine of c_backend_run_test.cc "fsm entry and exit".
-  auto c = compile(R"(
-fsm Doors {
-  period 10ms;
-  initial state A { entry { EnterA(); } DoA(); exit { ExitA(); } }
-  state B {
-    entry { EnterB(); if (elapsed(B) >= 10ms) { Late(); } }
-    DoB();
-    if (elapsed(B) >= 10ms) { Late(); }
-    exit { ExitB(); }
-  }
-  success state Done;
-  A -> B when Go();
-  B -> A when Back();
-  B -> Done when Fin();
-})",
-                   R"(interface Bot {
-  bool Go(); bool Back(); bool Fin();
-  void EnterA(); void ExitA(); void DoA(); void EnterB(); void ExitB(); void DoB(); void Late();
-})");
+  auto c = compile(kFsmEntryExit);
   ScriptedEnv env(*c);
   env.script("Go", {0, 1, 0, 0, 1, 0, 1}).script("Back", {0, 0, 0, 1, 0, 0, 1}).script("Fin", {0, 0, 0, 0, 0, 1, 1});
   CHECK(run_log(*c, env, 7) ==
@@ -156,15 +141,7 @@ fsm Doors {
 
 TEST_CASE("interpreter fsm: a team of four under the reference exchange") {
   // The census of c_backend_team_test.cc: the same calls, in the interpreter's words.
-  auto c = compile(R"(
-fsm Census {
-  team 4;
-  initial state Go { Count(agent(), team(Go), team(Wait)); }
-  state Wait { Count(agent(), team(Go), team(Wait)); }
-  Go -> Wait when Move();
-  Wait -> Go when Move();
-})",
-                   "interface Bot { bool Move(); void Count(int me, int go, int wait); }");
+  auto c = compile(kCensus);
   std::vector<std::unique_ptr<ScriptedEnv>> envs;
   std::vector<interp::Environment *> agents;
   const std::vector<std::vector<double>> moves = {{0, 0, 1, 0}, {1, 0, 0, 0}, {0}, {1, 0}};

@@ -1,10 +1,13 @@
 // The reference interpreter on sfc charts: each test pins one rule of docs/language.md §5.1.
+#include "../run/shared_charts.h"
 #include "interpreter_support.h"
 
 using namespace gfec;
 using test::compile;
+using test::kLineFollowerLeftSeesLine;
 using test::run_log;
 using test::ScriptedEnv;
+using test::charts::kIfElse;
 
 namespace {
 
@@ -58,24 +61,10 @@ TEST_CASE("interpreter sfc: every layer, indented, as gfec run prints it") {
   auto c = compile(kLineFollower, kLineBot);
   ScriptedEnv env(*c);
   env.script("Left_IR_Black", {1});
-  CHECK(run_log(*c, env, 1, {true, true, true}) == "tick 1\n"
-                                                   "  entry LeftFw\n"
-                                                   "  entry RightFw\n"
-                                                   "  cond T0 = true\n"
-                                                   "    call Left_IR_Black() = true\n"
-                                                   "  fire T0: LeftFw -> LeftStop\n"
-                                                   "  cond T2 = false\n"
-                                                   "    call Right_IR_Black() = false\n"
-                                                   "  exit LeftFw\n"
-                                                   "  entry LeftStop\n"
-                                                   "  lost LeftFw\n"
-                                                   "  gained LeftStop\n"
-                                                   "  enabled T1\n"
-                                                   "  action LeftStop\n"
-                                                   "    call Left_Stop()\n"
-                                                   "  action RightFw\n"
-                                                   "    call Right_FW()\n"
-                                                   "  av 0 1 1 0\n");
+  CHECK(run_log(*c, env, 1, {true, true, true}) == std::string("tick 1\n"
+                                                               "  entry LeftFw\n"
+                                                               "  entry RightFw\n") +
+                                                       kLineFollowerLeftSeesLine);
 }
 
 TEST_CASE("interpreter sfc: activation produced in a tick is consumed only in the next") {
@@ -217,21 +206,7 @@ sfc Api {
 TEST_CASE("interpreter sfc: if, else if and else in actions, entry and exit") {
   // The chart of c_backend_run_test.cc "if, else if and else": the same calls, in the
   // interpreter's words.
-  auto c =
-      compile(R"(
-sfc Branches {
-  period 10ms;
-  var int k = 0;
-  initial place P {
-    entry { if (X()) { A(); } else { C(); } }
-    if (N() + M() > 2) { B(N()); } else if (Y()) { if (X()) { C(); } k += 1; } else { D(); }
-    if (elapsed(P) >= 20ms) { B(k); }
-  }
-  place Q { exit { if (Y()) { B(k); } } D(); }
-  transition P -> Q when k >= 2;
-  transition Q -> P when X();
-})",
-              "interface Bot { bool X(); bool Y(); int N(); int M(); void A(); void B(int v); void C(); void D(); }");
+  auto c = compile(kIfElse);
   ScriptedEnv env(*c);
   env.script("X", {1, 0, 0, 1, 0, 1}).script("Y", {0, 0, 1, 1, 0, 1}).script("N", {2, 0}).script("M", {1, 0});
   CHECK(run_log(*c, env, 6) == "tick 1\n"

@@ -212,56 +212,46 @@ const char *kBossBot = R"(interface Bot {
 TEST_CASE("interpreter sub-charts: succeeded, failed and active(P.Q) in conditions and actions",
           "[interpreter][subcharts]") {
   auto c = compile(kBoss, kBossBot);
+  // Both runs alike until Check reads Good(): J works, and Finish() takes it to Check in tick 2.
+  // J's action reads its instance before it ticks; Watch's, after (J comes first).
+  const std::string first_two_ticks = "tick 1\n"
+                                      "call Report(true, false, false, false)\n"
+                                      "call Finish() = false\n"
+                                      "call Working()\n"
+                                      "call Seen(false, false)\n"
+                                      "av 1 1 0 0\n"
+                                      "tick 2\n"
+                                      "call Report(true, false, false, false)\n"
+                                      "call Finish() = true\n"
+                                      "call Seen(true, false)\n"
+                                      "av 1 1 0 0\n";
   SECTION("success") {
     ScriptedEnv env(*c);
     env.script("Finish", {0, 1, 0}).script("Good", {1});
     CHECK(run_log(*c, env, 4, {}, "Boss") ==
-          // J's action reads its instance before it ticks; Watch's, after (J comes first).
-          "tick 1\n"
-          "call Report(true, false, false, false)\n"
-          "call Finish() = false\n"
-          "call Working()\n"
-          "call Seen(false, false)\n"
-          "av 1 1 0 0\n"
-          "tick 2\n"
-          "call Report(true, false, false, false)\n"
-          "call Finish() = true\n"
-          "call Seen(true, false)\n"
-          "av 1 1 0 0\n"
-          "tick 3\n"
-          "call Report(false, true, false, false)\n"
-          "call Good() = true\n"
-          "call Seen(false, true)\n"
-          "av 1 1 0 0\n"
-          // The condition sees the success tick 3 left; J is then inactive, so Watch reads false.
-          "tick 4\n"
-          "call Seen(false, false)\n"
-          "call Yay()\n"
-          "av 0 1 1 0\n");
+          first_two_ticks + "tick 3\n"
+                            "call Report(false, true, false, false)\n"
+                            "call Good() = true\n"
+                            "call Seen(false, true)\n"
+                            "av 1 1 0 0\n"
+                            // The condition sees the success tick 3 left; J is then inactive, so Watch reads false.
+                            "tick 4\n"
+                            "call Seen(false, false)\n"
+                            "call Yay()\n"
+                            "av 0 1 1 0\n");
   }
   SECTION("failure") {
     ScriptedEnv env(*c);
     env.script("Finish", {0, 1, 0}).script("Good", {0});
-    CHECK(run_log(*c, env, 4, {}, "Boss") == "tick 1\n"
-                                             "call Report(true, false, false, false)\n"
-                                             "call Finish() = false\n"
-                                             "call Working()\n"
-                                             "call Seen(false, false)\n"
-                                             "av 1 1 0 0\n"
-                                             "tick 2\n"
-                                             "call Report(true, false, false, false)\n"
-                                             "call Finish() = true\n"
-                                             "call Seen(true, false)\n"
-                                             "av 1 1 0 0\n"
-                                             "tick 3\n"
-                                             "call Report(false, true, false, false)\n"
-                                             "call Good() = false\n"
-                                             "call Good() = false\n"
-                                             "call Seen(false, false)\n"
-                                             "av 1 1 0 0\n"
-                                             "tick 4\n"
-                                             "call Seen(false, false)\n"
-                                             "av 0 1 0 1\n");
+    CHECK(run_log(*c, env, 4, {}, "Boss") == first_two_ticks + "tick 3\n"
+                                                               "call Report(false, true, false, false)\n"
+                                                               "call Good() = false\n"
+                                                               "call Good() = false\n"
+                                                               "call Seen(false, false)\n"
+                                                               "av 1 1 0 0\n"
+                                                               "tick 4\n"
+                                                               "call Seen(false, false)\n"
+                                                               "av 0 1 0 1\n");
   }
 }
 

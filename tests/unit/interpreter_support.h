@@ -105,4 +105,24 @@ inline std::string run_log(const Compiled &c, interp::Environment &env, std::uin
   return out;
 }
 
+/// The line follower (samples/line_follower.sfc) in the tick its left sensor first sees the line,
+/// every layer as `gfec run --hooks` prints it, after the tick's first lines: T0 fires, LeftFw's
+/// exit, LeftStop's entry, the hooks, then the actions. Written by hand from docs/language.md §5.1;
+/// the interpreter's test and `gfec run`'s both expect it.
+inline const char *const kLineFollowerLeftSeesLine = "  cond T0 = true\n"
+                                                     "    call Left_IR_Black() = true\n"
+                                                     "  fire T0: LeftFw -> LeftStop\n"
+                                                     "  cond T2 = false\n"
+                                                     "    call Right_IR_Black() = false\n"
+                                                     "  exit LeftFw\n"
+                                                     "  entry LeftStop\n"
+                                                     "  lost LeftFw\n"
+                                                     "  gained LeftStop\n"
+                                                     "  enabled T1\n"
+                                                     "  action LeftStop\n"
+                                                     "    call Left_Stop()\n"
+                                                     "  action RightFw\n"
+                                                     "    call Right_FW()\n"
+                                                     "  av 0 1 1 0\n";
+
 }  // namespace gfec::test

@@ -37,4 +37,16 @@ std::string read_file(const std::string &path) {
 
 void write_file(const std::string &path, const std::string &text) { std::ofstream(path, std::ios::binary) << text; }
 
+std::string first_difference(const std::string &expected, const std::string &actual) {
+  std::istringstream e(expected), a(actual);
+  std::string el, al;
+  for (int line = 1;; ++line) {
+    bool more_e = static_cast<bool>(std::getline(e, el)), more_a = static_cast<bool>(std::getline(a, al));
+    if (!more_e && !more_a) return "the texts differ only in their last newline";
+    if (!more_e || !more_a || el != al)
+      return "first difference at line " + std::to_string(line) + ":\n  expected: " + (more_e ? el : "<end of file>") +
+             "\n  actual:   " + (more_a ? al : "<end of file>");
+  }
+}
+
 }  // namespace gfec::test

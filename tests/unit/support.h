@@ -47,6 +47,16 @@ std::string scratch_dir(const std::string &name);
 std::string read_file(const std::string &path);
 void write_file(const std::string &path, const std::string &text);
 
+/// Every warning on, as `-Wall -Wextra` and the off-by-default ones would have it.
+inline WarningOptions all_warnings() {
+  WarningOptions w;
+  for (int i = 0; i < static_cast<int>(Warning::Count_); ++i) w.set(static_cast<Warning>(i), true);
+  return w;
+}
+
+/// The one line where two texts first differ (1-based), for a readable failure.
+std::string first_difference(const std::string &expected, const std::string &actual);
+
 /// Parses one file called "t.sfc" and returns the printed diagnostics.
 inline std::string parse_errors(const std::string &source) { return FrontEnd({{"t.sfc", source}}).text(); }
 

@@ -1,60 +1,17 @@
 // The validator: expressions, statements, constants and types (docs/language.md §3 and 4).
 // Each test validates chart text and compares every diagnostic as gfec prints it.
-#include "support.h"
-#include "validate.h"
+#include "validate_fixture.h"
 
 #include <catch2/catch.hpp>
 
 #include <string>
 
 using namespace gfec;
-
-namespace {
-
-[[maybe_unused]] const char *const kBot = R"--(interface Bot {
-  bool Black();
-  bool White();
-  void Go();
-  void Stop();
-  void Motor(int side, float speed);
-  void Lamp(bool on);
-  float Distance();
-  int Count();
-}
-)--";
-
-[[maybe_unused]] const char *const kToolbox = R"--(toolbox Carbot {
-  actor Forward(in float distance) -> FORWARD_OK;
-  actor Turn(in float angle) -> TURN_OK;
-  actor SearchWall(out float angle) -> WALL_FOUND | NO_WALL_FOUND;
-  actor Say(in string text, in bool loud) -> SAID;
-  computation CountDown(in int n, out int rest) -> AGAIN | DONE;
-  supervisor CheckTouch() events TOUCHED;
-  supervisor CheckLane(in float dist) events LANE_NOT_FREE period 10ms;
-}
-)--";
-
-/// Loads in-memory files (the first is the main file) and validates them.
-struct Run {
-  test::FrontEnd fe;
-  model::Model model;
-
-  Run(std::initializer_list<std::pair<std::string, std::string>> files, WarningOptions w = {}) : fe(files, w) {
-    model = validate(fe.loaded.program, fe.sources, fe.diag);
-  }
-  std::string text() const { return fe.text(); }
-};
-
-[[maybe_unused]] WarningOptions all_warnings() {
-  WarningOptions w;
-  for (int i = 0; i < static_cast<int>(Warning::Count_); ++i) w.set(static_cast<Warning>(i), true);
-  return w;
-}
-
-}  // namespace
+using test::kBot;
+using test::Validated;
 
 TEST_CASE("validate: conditions must be bool", "[validate]") {
-  Run r({{"t.sfc", R"--(import "bot.iface";
+  Validated r({{"t.sfc", R"--(import "bot.iface";
 sfc S {
   period 10ms;
   var int n = 0;
@@ -65,7 +22,7 @@ sfc S {
   transition A -> A when Distance();
 }
 )--"},
-         {"bot.iface", kBot}});
+               {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:8:26: error: condition must be bool, not 'int' [type-mismatch]
    transition A -> A when n;
                           ^
@@ -76,7 +33,7 @@ t.sfc:9:26: error: condition must be bool, not 'float' [type-mismatch]
 }
 
 TEST_CASE("validate: bool does not mix with numbers", "[validate]") {
-  Run r({{"t.sfc", R"--(import "bot.iface";
+  Validated r({{"t.sfc", R"--(import "bot.iface";
 sfc S {
   period 10ms;
   var int n = 0;
@@ -90,7 +47,7 @@ sfc S {
   transition A -> A when -b > 0;
 }
 )--"},
-         {"bot.iface", kBot}});
+               {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:8:26: error: invalid operands to binary '&&' (have 'int' and 'bool') [type-mismatch]
    transition A -> A when 1 && b;
                           ^~~~~~
@@ -110,7 +67,7 @@ t.sfc:12:26: error: invalid operand to unary '-' (have 'bool') [type-mismatch]
 }
 
 TEST_CASE("validate: bools compare with == and !=, ints and floats mix as in C", "[validate]") {
-  Run r({{"t.sfc", R"--(import "bot.iface";
+  Validated r({{"t.sfc", R"--(import "bot.iface";
 sfc S {
   period 10ms;
   var int n = 0;
@@ -121,14 +78,14 @@ sfc S {
   transition A -> A when n * 2.5 + f / 3 >= Distance() - Count();
 }
 )--"},
-         {"bot.iface", kBot}});
+               {"bot.iface", kBot}});
   CHECK(r.text() == R"--()--");
   REQUIRE(r.model.charts[0].transitions[1].condition);
   CHECK(r.model.charts[0].transitions[1].condition->args[0].type == model::Type::Double);
 }
 
 TEST_CASE("validate: % takes ints only", "[validate]") {
-  Run r({{"t.sfc", R"--(import "bot.iface";
+  Validated r({{"t.sfc", R"--(import "bot.iface";
 sfc S {
   period 10ms;
   var int n = 0;
@@ -138,7 +95,7 @@ sfc S {
   transition A -> A when n % 2 == 0 && f % 2 == 0;
 }
 )--"},
-         {"bot.iface", kBot}});
+               {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:8:40: error: invalid operands to binary '%' (have 'float' and 'int') [type-mismatch]
    transition A -> A when n % 2 == 0 && f % 2 == 0;
                                         ^~~~~
@@ -146,7 +103,7 @@ sfc S {
 }
 
 TEST_CASE("validate: calls: wrong argument count and types", "[validate]") {
-  Run r({{"t.sfc", R"--(import "bot.iface";
+  Validated r({{"t.sfc", R"--(import "bot.iface";
 sfc S {
   period 10ms;
   var int n = 0;
@@ -156,7 +113,7 @@ sfc S {
   place B { Motor(1); Motor(1, 2, 3); Motor(true, 0.5); Lamp(1); Lamp(n > 0); Motor(n, n); }
 }
 )--"},
-         {"bot.iface", kBot}});
+               {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:8:13: error: too few arguments to function 'Motor' (expected 2, have 1) [argument-count]
    place B { Motor(1); Motor(1, 2, 3); Motor(true, 0.5); Lamp(1); Lamp(n > 0); Motor(n, n); }
              ^~~~~~~~
@@ -185,7 +142,7 @@ bot.iface:7:3: note: 'Lamp' declared here
 }
 
 TEST_CASE("validate: a void function is not a value, a value function may be a statement", "[validate]") {
-  Run r({{"t.sfc", R"--(import "bot.iface";
+  Validated r({{"t.sfc", R"--(import "bot.iface";
 sfc S {
   period 10ms;
   var int n = 0;
@@ -197,7 +154,7 @@ sfc S {
   transition B -> A when Go() == Stop();
 }
 )--"},
-         {"bot.iface", kBot}});
+               {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:9:26: error: 'Go' returns void; it cannot be used as a value [type-mismatch]
    transition A -> B when Go();
                           ^~~~
@@ -220,7 +177,7 @@ bot.iface:5:3: note: 'Stop' declared here
 }
 
 TEST_CASE("validate: a name that is not a value", "[validate]") {
-  Run r({{"t.sfc", R"--(import "bot.iface";
+  Validated r({{"t.sfc", R"--(import "bot.iface";
 sfc S {
   period 10ms;
   var int n = 0;
@@ -231,7 +188,7 @@ sfc S {
   transition A -> B when A;
 }
 )--"},
-         {"bot.iface", kBot}});
+               {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:8:17: error: 'Count' is a function, not a value [type-mismatch]
    place B { n = Count; f = S; }
                  ^~~~~
@@ -248,36 +205,8 @@ t.sfc:9:26: note: 'elapsed(A)' is the time it has been active
 )--");
 }
 
-TEST_CASE("validate: calling something that is not a function", "[validate]") {
-  Run r({{"t.sfc", R"--(import "bot.iface";
-const bool N = true;
-sfc S {
-  period 10ms;
-  var int n = 0;
-  var bool b = false;
-  var float f = 0;
-  initial place A;
-  transition A -> A when S() && N();
-}
-)--"},
-         {"bot.iface", kBot}});
-  CHECK(r.text() == R"--(t.sfc:9:26: error: called object 'S' is a chart, not a function [type-mismatch]
-   transition A -> A when S() && N();
-                          ^
-t.sfc:3:5: note: 'S' declared here
- sfc S {
-     ^
-t.sfc:9:33: error: called object 'N' is a constant, not a function [type-mismatch]
-   transition A -> A when S() && N();
-                                 ^
-t.sfc:2:12: note: 'N' declared here
- const bool N = true;
-            ^
-)--");
-}
-
 TEST_CASE("validate: assignment only to a var", "[validate]") {
-  Run r({{"t.sfc", R"--(import "bot.iface";
+  Validated r({{"t.sfc", R"--(import "bot.iface";
 const int GLOBAL = 1;
 sfc S {
   period 10ms;
@@ -289,7 +218,7 @@ sfc S {
   place B { LIMIT = 4; A = 1; GLOBAL = 2; Go = 3; nope = 4; }
 }
 )--"},
-         {"bot.iface", kBot}});
+               {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:10:13: error: cannot assign to constant 'LIMIT' [not-assignable]
    place B { LIMIT = 4; A = 1; GLOBAL = 2; Go = 3; nope = 4; }
              ^~~~~
@@ -320,32 +249,8 @@ t.sfc:10:51: error: unknown variable 'nope' [unknown-name]
 )--");
 }
 
-TEST_CASE("validate: += and -= need a numeric var; assignments convert only between numbers", "[validate]") {
-  Run r({{"t.sfc", R"--(import "bot.iface";
-sfc S {
-  period 10ms;
-  var int n = 0;
-  var bool b = false;
-  var float f = 0;
-  initial place A;
-  place B { b += 1; n -= 1; f += n; n = 2.5; b = 1; n = b; b = White(); }
-}
-)--"},
-         {"bot.iface", kBot}});
-  CHECK(r.text() == R"--(t.sfc:8:13: error: operator '+=' needs a numeric variable; 'b' has type 'bool' [type-mismatch]
-   place B { b += 1; n -= 1; f += n; n = 2.5; b = 1; n = b; b = White(); }
-             ^
-t.sfc:8:50: error: incompatible types when assigning to 'b' of type 'bool' from type 'int' [type-mismatch]
-   place B { b += 1; n -= 1; f += n; n = 2.5; b = 1; n = b; b = White(); }
-                                                  ^
-t.sfc:8:57: error: incompatible types when assigning to 'n' of type 'int' from type 'bool' [type-mismatch]
-   place B { b += 1; n -= 1; f += n; n = 2.5; b = 1; n = b; b = White(); }
-                                                         ^
-)--");
-}
-
 TEST_CASE("validate: elapsed needs a place of the same chart", "[validate]") {
-  Run r({{"t.sfc", R"--(import "bot.iface";
+  Validated r({{"t.sfc", R"--(import "bot.iface";
 sfc S {
   period 10ms;
   var int n = 0;
@@ -359,7 +264,7 @@ sfc S {
   transition A -> B when elapsed(1) > 1s;
 }
 )--"},
-         {"bot.iface", kBot}});
+               {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:9:34: error: 'n' is a variable, not a place [type-mismatch]
    transition A -> B when elapsed(n) > 1s;
                                   ^
@@ -379,7 +284,7 @@ t.sfc:12:26: error: 'elapsed' takes one argument: the name of a place [elapsed]
 }
 
 TEST_CASE("validate: elapsed needs a period, reported once per chart", "[validate]") {
-  Run r({{"t.sfc", R"--(import "bot.iface";
+  Validated r({{"t.sfc", R"--(import "bot.iface";
 sfc S {
   initial place A;
   place B;
@@ -387,7 +292,7 @@ sfc S {
   transition B -> A when elapsed(B) >= 500ms;
 }
 )--"},
-         {"bot.iface", kBot}});
+               {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:5:26: error: 'elapsed(A)' needs a period, but sfc 'S' declares none [missing-period]
    transition A -> B when elapsed(A) >= 500ms;
                           ^~~~~~~~~~
@@ -398,13 +303,13 @@ t.sfc:2:5: note: declare one in the chart, e.g. 'period 10ms;'
 }
 
 TEST_CASE("validate: a duration needs a period too", "[validate]") {
-  Run r({{"t.sfc", R"--(import "bot.iface";
+  Validated r({{"t.sfc", R"--(import "bot.iface";
 sfc S {
   initial place A;
   transition A -> A when 2s > 1s;
 }
 )--"},
-         {"bot.iface", kBot}});
+               {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:4:26: error: duration '2s' needs a period, but sfc 'S' declares none [missing-period]
    transition A -> A when 2s > 1s;
                           ^~
@@ -415,7 +320,7 @@ t.sfc:2:5: note: declare one in the chart, e.g. 'period 10ms;'
 }
 
 TEST_CASE("validate: durations are only compared with durations", "[validate]") {
-  Run r({{"t.sfc", R"--(import "bot.iface";
+  Validated r({{"t.sfc", R"--(import "bot.iface";
 sfc S {
   period 10ms;
   var int n = 0;
@@ -430,7 +335,7 @@ sfc S {
   transition A -> B when elapsed(A) >= 1s && elapsed(A) != elapsed(B) && 2s > 1s;
 }
 )--"},
-         {"bot.iface", kBot}});
+               {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:9:26: error: invalid operands to binary '>' (have 'duration' and 'int') [type-mismatch]
    transition A -> B when elapsed(A) > 3;
                           ^~~~~~~~~~~~~~
@@ -453,7 +358,7 @@ bot.iface:6:3: note: 'Motor' declared here
 }
 
 TEST_CASE("validate: elapsed is not a statement", "[validate]") {
-  Run r({{"t.sfc", R"--(import "bot.iface";
+  Validated r({{"t.sfc", R"--(import "bot.iface";
 sfc S {
   period 10ms;
   var int n = 0;
@@ -463,7 +368,7 @@ sfc S {
   place B { elapsed(A); }
 }
 )--"},
-         {"bot.iface", kBot}});
+               {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:8:13: error: 'elapsed()' as a statement has no effect [type-mismatch]
    place B { elapsed(A); }
              ^~~~~~~~~~
@@ -471,7 +376,7 @@ sfc S {
 }
 
 TEST_CASE("validate: elapsed outside a chart and in a constant", "[validate]") {
-  Run r({{"t.sfc", R"--(import "bot.iface";
+  Validated r({{"t.sfc", R"--(import "bot.iface";
 const bool LATE = elapsed(A) > 1s;
 sfc S {
   period 10ms;
@@ -480,7 +385,7 @@ sfc S {
   initial place A;
 }
 )--"},
-         {"bot.iface", kBot}});
+               {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:2:19: error: 'elapsed' can only be used inside an sfc or fsm [elapsed]
  const bool LATE = elapsed(A) > 1s;
                    ^~~~~~~~~~
@@ -494,7 +399,7 @@ t.sfc:6:19: error: a constant expression cannot read 'elapsed()' [not-constant]
 }
 
 TEST_CASE("validate: constants must be constant expressions", "[validate]") {
-  Run r({{"t.sfc", R"--(import "bot.iface";
+  Validated r({{"t.sfc", R"--(import "bot.iface";
 const float F = Distance();
 sfc S {
   var int n = 0;
@@ -504,7 +409,7 @@ sfc S {
   initial place A;
 }
 )--"},
-         {"bot.iface", kBot}});
+               {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:2:17: error: a constant expression cannot call 'Distance' [not-constant]
  const float F = Distance();
                  ^~~~~~~~~~
@@ -521,7 +426,7 @@ t.sfc:7:15: error: a constant expression cannot call 'Count' [not-constant]
 }
 
 TEST_CASE("validate: a constant defined in terms of itself", "[validate]") {
-  Run r({{"t.iface", R"--(const int A = B + 1;
+  Validated r({{"t.iface", R"--(const int A = B + 1;
 const int B = C * 2;
 const int C = A;
 const int D = D;
@@ -536,7 +441,7 @@ t.iface:4:11: error: constant 'D' is defined in terms of itself [not-constant]
 }
 
 TEST_CASE("validate: constant folding reports division by zero and overflow", "[validate]") {
-  Run r({{"t.iface", R"--(const int Z = 1 / 0;
+  Validated r({{"t.iface", R"--(const int Z = 1 / 0;
 const int M = 5 % (2 - 2);
 const int BIG = 2000000000 * 2;
 const int HUGE = 3000000000;
@@ -568,7 +473,7 @@ t.iface:7:15: error: division by zero in constant expression [not-constant]
 }
 
 TEST_CASE("validate: constant initializers must have the constant's type", "[validate]") {
-  Run r({{"t.iface", R"--(const bool B = 1;
+  Validated r({{"t.iface", R"--(const bool B = 1;
 const int I = true;
 const float D = 2s;
 const string S = 1;
@@ -591,7 +496,7 @@ t.iface:4:18: error: cannot initialize 'S' of type 'string' with a value of type
 }
 
 TEST_CASE("validate: types: unknown names, and types not allowed where they stand", "[validate]") {
-  Run r({{"t.iface", R"--(interface Robot {
+  Validated r({{"t.iface", R"--(interface Robot {
   integer Count();
   void Motor(void speed);
   string Name();
@@ -631,7 +536,7 @@ t.iface:10:7: note: did you mean 'double'?
 }
 
 TEST_CASE("validate: an initializer's error is reported once, not again at each use", "[validate]") {
-  Run r({{"t.sfc", R"--(import "bot.iface";
+  Validated r({{"t.sfc", R"--(import "bot.iface";
 const int BAD = Count();
 sfc S {
   var int n = BAD;
@@ -639,7 +544,7 @@ sfc S {
   transition A -> A when BAD > 1;
 }
 )--"},
-         {"bot.iface", kBot}});
+               {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:2:17: error: a constant expression cannot call 'Count' [not-constant]
  const int BAD = Count();
                  ^~~~~~~
@@ -647,7 +552,7 @@ sfc S {
 }
 
 TEST_CASE("validate: calls of a function whose prototype has an error are not checked", "[validate]") {
-  Run r({{"t.sfc", R"--(interface Robot {
+  Validated r({{"t.sfc", R"--(interface Robot {
   void Move(integer speed);
 }
 sfc S {
@@ -661,7 +566,7 @@ sfc S {
 }
 
 TEST_CASE("validate: if conditions must be bool; both branches are checked", "[validate]") {
-  Run r({{"t.sfc", R"--(import "bot.iface";
+  Validated r({{"t.sfc", R"--(import "bot.iface";
 sfc S {
   period 10ms;
   var int n = 0;
@@ -672,7 +577,7 @@ sfc S {
   }
 }
 )--"},
-         {"bot.iface", kBot}});
+               {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:6:9: error: the condition of 'if' must be bool, not 'int' [type-mismatch]
      if (n) { Go(); }
          ^
@@ -693,7 +598,7 @@ t.sfc:8:31: error: unknown function 'Nope' [unknown-name]
 }
 
 TEST_CASE("validate: if statements in the model", "[validate]") {
-  Run r({{"t.fsm", R"--(import "bot.iface";
+  Validated r({{"t.fsm", R"--(import "bot.iface";
 fsm M {
   period 10ms;
   var int n = 0;
@@ -703,7 +608,7 @@ fsm M {
   }
 }
 )--"},
-         {"bot.iface", kBot}});
+               {"bot.iface", kBot}});
   CHECK(r.text().empty());
   REQUIRE(r.model.charts.size() == 1);
   const auto &action = r.model.charts[0].places[0].action;

@@ -1,85 +1,18 @@
 // The validator: the rules and warnings of an fsm (docs/language.md §7).
 // Each test validates chart text and compares every diagnostic as gfec prints it.
-#include "support.h"
-#include "validate.h"
+#include "validate_fixture.h"
 
 #include <catch2/catch.hpp>
 
 #include <string>
 
 using namespace gfec;
-
-namespace {
-
-[[maybe_unused]] const char *const kBot = R"--(interface Bot {
-  bool Black();
-  bool White();
-  void Go();
-  void Stop();
-  void Motor(int side, float speed);
-  void Lamp(bool on);
-  float Distance();
-  int Count();
-}
-)--";
-
-[[maybe_unused]] const char *const kToolbox = R"--(toolbox Carbot {
-  actor Forward(in float distance) -> FORWARD_OK;
-  actor Turn(in float angle) -> TURN_OK;
-  actor SearchWall(out float angle) -> WALL_FOUND | NO_WALL_FOUND;
-  actor Say(in string text, in bool loud) -> SAID;
-  computation CountDown(in int n, out int rest) -> AGAIN | DONE;
-  supervisor CheckTouch() events TOUCHED;
-  supervisor CheckLane(in float dist) events LANE_NOT_FREE period 10ms;
-}
-)--";
-
-/// Loads in-memory files (the first is the main file) and validates them.
-struct Run {
-  test::FrontEnd fe;
-  model::Model model;
-
-  Run(std::initializer_list<std::pair<std::string, std::string>> files, WarningOptions w = {}) : fe(files, w) {
-    model = validate(fe.loaded.program, fe.sources, fe.diag);
-  }
-  std::string text() const { return fe.text(); }
-};
-
-[[maybe_unused]] WarningOptions all_warnings() {
-  WarningOptions w;
-  for (int i = 0; i < static_cast<int>(Warning::Count_); ++i) w.set(static_cast<Warning>(i), true);
-  return w;
-}
-
-}  // namespace
-
-TEST_CASE("validate: an fsm has exactly one initial state", "[validate]") {
-  Run r({{"t.fsm", R"--(fsm M {
-  state A;
-  state B;
-  A -> B;
-}
-fsm N {
-  initial state A;
-  initial state B;
-  A -> B;
-}
-)--"}});
-  CHECK(r.text() == R"--(t.fsm:1:5: error: fsm 'M' has no initial state [initial-state]
- fsm M {
-     ^
-t.fsm:1:5: note: mark the state it starts in with 'initial state'
-t.fsm:8:17: error: fsm 'N' has more than one initial state [initial-state]
-   initial state B;
-                 ^
-t.fsm:7:17: note: 'A' is already its initial state
-   initial state A;
-                 ^
-)--");
-}
+using test::all_warnings;
+using test::kBot;
+using test::Validated;
 
 TEST_CASE("validate: terminal states have no body and no outgoing transitions", "[validate]") {
-  Run r({{"t.fsm", R"--(import "bot.iface";
+  Validated r({{"t.fsm", R"--(import "bot.iface";
 fsm M {
   initial state A { Go(); }
   success state Done { Stop(); }
@@ -89,7 +22,7 @@ fsm M {
   Done -> A;
 }
 )--"},
-         {"bot.iface", kBot}});
+               {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.fsm:4:3: error: terminal state 'Done' cannot have a body [terminal-state]
    success state Done { Stop(); }
    ^~~~~~~~~~~~~~~~~~~~~~~~~~~~~~
@@ -103,7 +36,7 @@ t.fsm:4:17: note: 'Done' ends the machine
 }
 
 TEST_CASE("validate: post is for terminal states and must be bool", "[validate]") {
-  Run r({{"t.fsm", R"--(import "bot.iface";
+  Validated r({{"t.fsm", R"--(import "bot.iface";
 fsm M {
   initial state A post Black();
   success state Done post Distance();
@@ -112,7 +45,7 @@ fsm M {
   A -> Failed;
 }
 )--"},
-         {"bot.iface", kBot}});
+               {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.fsm:3:24: error: only a success or failure state can have a 'post' condition [terminal-state]
    initial state A post Black();
                         ^~~~~~~
@@ -123,7 +56,7 @@ t.fsm:4:27: error: postcondition must be bool, not 'float' [type-mismatch]
 }
 
 TEST_CASE("validate: no transition from a state to itself, one per ordered pair", "[validate]") {
-  Run r({{"t.fsm", R"--(import "bot.iface";
+  Validated r({{"t.fsm", R"--(import "bot.iface";
 fsm M {
   initial state A;
   state B;
@@ -134,7 +67,7 @@ fsm M {
   again: B -> A;
 }
 )--"},
-         {"bot.iface", kBot}});
+               {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.fsm:5:3: error: transition from state 'A' to itself [self-transition]
    A -> A when Black();
    ^~~~~~~~~~~~~~~~~~~~
@@ -154,7 +87,7 @@ t.fsm:7:3: note: the first one is here
 }
 
 TEST_CASE("validate: an fsm transition has one source and one target state", "[validate]") {
-  Run r({{"t.fsm", R"--(fsm M {
+  Validated r({{"t.fsm", R"--(fsm M {
   initial state A;
   state B;
   state C;
@@ -175,38 +108,15 @@ t.fsm:7:8: error: unknown state 'Z' [unknown-name]
 )--");
 }
 
-TEST_CASE("validate: every state is connected to the initial state", "[validate]") {
-  Run r({{"t.fsm", R"--(fsm M {
-  initial state A;
-  state B;
-  state C;
-  state D;
-  state E;
-  A -> B;
-  C -> D;
-}
-)--"}});
-  CHECK(r.text() == R"--(t.fsm:4:9: error: state 'C' is not connected to the initial state 'A' [not-connected]
-   state C;
-         ^
-t.fsm:5:9: error: state 'D' is not connected to the initial state 'A' [not-connected]
-   state D;
-         ^
-t.fsm:6:9: error: state 'E' is not connected to the initial state 'A' [not-connected]
-   state E;
-         ^
-)--");
-}
-
 TEST_CASE("validate: sfc syntax in an fsm", "[validate]") {
-  Run r({{"t.fsm", R"--(import "bot.iface";
+  Validated r({{"t.fsm", R"--(import "bot.iface";
 fsm M {
   initial state A { entry { Go(); } Go(); exit { Stop(); } }
   place B;
   A -> B;
 }
 )--"},
-         {"bot.iface", kBot}});
+               {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.fsm:4:3: error: 'place' in an fsm: an fsm has states (write 'state B') [wrong-keyword]
    place B;
    ^~~~~~~~
@@ -214,7 +124,7 @@ fsm M {
 }
 
 TEST_CASE("validate: fsm states may have entry and exit blocks, terminal states still no body", "[validate]") {
-  Run r({{"t.fsm", R"--(import "bot.iface";
+  Validated r({{"t.fsm", R"--(import "bot.iface";
 fsm M {
   initial state A { entry { Go(); } Go(); exit { Stop(); } }
   state B { exit { Stop(); } }
@@ -225,7 +135,7 @@ fsm M {
   B -> Lost when White();
 }
 )--"},
-         {"bot.iface", kBot}});
+               {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.fsm:5:3: error: terminal state 'Done' cannot have a body [terminal-state]
    success state Done { entry { Go(); } }
    ^~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~
@@ -233,7 +143,7 @@ t.fsm:6:3: error: terminal state 'Lost' cannot have a body [terminal-state]
    failure state Lost { exit { Stop(); } }
    ^~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~
 )--");
-  Run ok({{"t.fsm", R"--(import "bot.iface";
+  Validated ok({{"t.fsm", R"--(import "bot.iface";
 fsm M {
   initial state A { entry { Go(); } Go(); exit { Stop(); } }
   state B { exit { Stop(); } }
@@ -242,7 +152,7 @@ fsm M {
   B -> Done when Black();
 }
 )--"},
-          {"bot.iface", kBot}});
+                {"bot.iface", kBot}});
   CHECK(ok.text().empty());
   REQUIRE(ok.model.charts.size() == 1);
   const auto &a = ok.model.charts[0].places[0];
@@ -256,7 +166,7 @@ fsm M {
 }
 
 TEST_CASE("validate: states no transition reaches and the transitions leaving them", "[validate]") {
-  Run r({{"t.fsm", R"--(import "bot.iface";
+  Validated r({{"t.fsm", R"--(import "bot.iface";
 fsm M {
   initial state A;
   state B;
@@ -268,7 +178,7 @@ fsm M {
   A -> Done;
 }
 )--"},
-         {"bot.iface", kBot}});
+               {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.fsm:4:9: warning: state 'B' can never become active [-Wunreachable-place]
    state B;
          ^
@@ -288,7 +198,7 @@ t.fsm:9:3: warning: transition 'T2' can never fire: state 'C' never becomes acti
 }
 
 TEST_CASE("validate: the sample's shape: one transition per pair, terminal states", "[validate]") {
-  Run r({{"t.fsm", R"--(import "bot.iface";
+  Validated r({{"t.fsm", R"--(import "bot.iface";
 fsm M {
   period 20ms;
   initial state A { Go(); }
@@ -301,8 +211,8 @@ fsm M {
   A -> Failed when elapsed(A) > 10s;
 }
 )--"},
-         {"bot.iface", kBot}},
-        all_warnings());
+               {"bot.iface", kBot}},
+              all_warnings());
   CHECK(r.text() == R"--()--");
   const auto &c = r.model.charts.at(0);
   CHECK(c.kind == model::Chart::Kind::Fsm);
@@ -322,7 +232,7 @@ fsm M {
 }
 
 TEST_CASE("validate: team machines: the declaration", "[validate][team]") {
-  Run r({{"t.fsm", R"--(import "bot.iface";
+  Validated r({{"t.fsm", R"--(import "bot.iface";
 fsm M {
   team 1;
   initial state A;
@@ -341,7 +251,7 @@ fsm Big {
   initial state A;
 }
 )--"},
-         {"bot.iface", kBot}});
+               {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.fsm:3:3: error: a team has at least 2 agents, not 1 [team]
    team 1;
    ^~~~~~~
@@ -366,7 +276,7 @@ t.fsm:16:3: error: a team has at most 1024 agents [team]
 }
 
 TEST_CASE("validate: team machines: team(S) and agent()", "[validate][team]") {
-  Run r({{"t.fsm", R"--(import "bot.iface";
+  Validated r({{"t.fsm", R"--(import "bot.iface";
 fsm Fetch {
   team 4;
   var int me = 0;
@@ -377,7 +287,7 @@ fsm Fetch {
   Grab -> Got when team(Got) + team(Go) > 1;
 }
 )--"},
-         {"bot.iface", kBot}});
+               {"bot.iface", kBot}});
   CHECK(r.text().empty());
   REQUIRE(r.model.charts.size() == 1);
   const model::Chart &c = r.model.charts[0];
@@ -393,7 +303,7 @@ fsm Fetch {
 }
 
 TEST_CASE("validate: team machines: team and agent where they cannot be", "[validate][team]") {
-  Run r({{"t.fsm", R"--(import "bot.iface";
+  Validated r({{"t.fsm", R"--(import "bot.iface";
 const int K = agent();
 fsm Solo {
   var int n = 0;
@@ -412,7 +322,7 @@ fsm T {
   Go -> Grab when team(Grap) == 0 || team(n) > 0;
 }
 )--"},
-         {"bot.iface", kBot}});
+               {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.fsm:2:15: error: 'agent()' can only be used in a team machine [team]
  const int K = agent();
                ^~~~~~~
@@ -456,7 +366,7 @@ t.fsm:14:11: note: 'n' declared here
 }
 
 TEST_CASE("validate: team machines: built-in and engine names", "[validate][team]") {
-  Run r({{"t.fsm", R"--(interface Bot { int agent(); bool elapsed(); }
+  Validated r({{"t.fsm", R"--(interface Bot { int agent(); bool elapsed(); }
 fsm T {
   team 2;
   initial state report;

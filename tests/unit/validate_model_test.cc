@@ -1,25 +1,14 @@
 // The validator's output: the model back ends read (docs/language.md §3-8, compiler/model.h).
-#include "support.h"
-#include "validate.h"
+#include "validate_fixture.h"
 
 #include <catch2/catch.hpp>
 
 #include <string>
 
 using namespace gfec;
+using test::Validated;
 
 namespace {
-
-/// Loads in-memory files (the first is the main file) and validates them.
-struct Run {
-  test::FrontEnd fe;
-  model::Model model;
-
-  Run(std::initializer_list<std::pair<std::string, std::string>> files) : fe(files) {
-    model = validate(fe.loaded.program, fe.sources, fe.diag);
-  }
-  std::string text() const { return fe.text(); }
-};
 
 int function_index(const model::Model &m, const std::string &name) {
   for (std::size_t i = 0; i < m.functions.size(); ++i)
@@ -37,11 +26,11 @@ const model::Const &constant(const model::Model &m, const std::string &name) {
 }  // namespace
 
 TEST_CASE("validate model: functions in file order, a chart's functions by index", "[validate]") {
-  Run r({{"main.sfc", "import \"b.iface\";\nimport \"c.iface\";\n"
-                      "interface Main { void Beep(); }\n"
-                      "sfc S { initial place A { Right(); Beep(); } transition A -> A when Sense(); }\n"},
-         {"b.iface", "interface B { bool Sense(); void Left(); }\n"},
-         {"c.iface", "interface C { void Right(); }\n"}});
+  Validated r({{"main.sfc", "import \"b.iface\";\nimport \"c.iface\";\n"
+                            "interface Main { void Beep(); }\n"
+                            "sfc S { initial place A { Right(); Beep(); } transition A -> A when Sense(); }\n"},
+               {"b.iface", "interface B { bool Sense(); void Left(); }\n"},
+               {"c.iface", "interface C { void Right(); }\n"}});
   REQUIRE(r.text() == "");
   const auto &m = r.model;
   REQUIRE(m.functions.size() == 4);
@@ -57,7 +46,7 @@ TEST_CASE("validate model: functions in file order, a chart's functions by index
 }
 
 TEST_CASE("validate model: prototypes, including C's (void)", "[validate]") {
-  Run r({{"t.iface", "interface Bot { void Motor(int side, float); double Read(void); }\n"}});
+  Validated r({{"t.iface", "interface Bot { void Motor(int side, float); double Read(void); }\n"}});
   REQUIRE(r.text() == "");
   const auto &f = r.model.functions;
   REQUIRE(f.size() == 2);
@@ -71,18 +60,18 @@ TEST_CASE("validate model: prototypes, including C's (void)", "[validate]") {
 }
 
 TEST_CASE("validate model: constants are folded to literals of their type", "[validate]") {
-  Run r({{"t.sfc", "const int N = 3;\n"
-                   "const float HALF = N / 2.0;\n"
-                   "const float ONE = 1;\n"
-                   "const double CRUISE = 0.6;\n"
-                   "const int Q = 7 / 2;\n"
-                   "const int R = -7 % 3;\n"
-                   "const int NEG = -N;\n"
-                   "const int T = 2.9;\n"
-                   "const bool B = !false && N > 2;\n"
-                   "const string NAME = \"bot\";\n"
-                   "const int LATER = EARLIER + 1;\n"
-                   "const int EARLIER = 41;\n"}});
+  Validated r({{"t.sfc", "const int N = 3;\n"
+                         "const float HALF = N / 2.0;\n"
+                         "const float ONE = 1;\n"
+                         "const double CRUISE = 0.6;\n"
+                         "const int Q = 7 / 2;\n"
+                         "const int R = -7 % 3;\n"
+                         "const int NEG = -N;\n"
+                         "const int T = 2.9;\n"
+                         "const bool B = !false && N > 2;\n"
+                         "const string NAME = \"bot\";\n"
+                         "const int LATER = EARLIER + 1;\n"
+                         "const int EARLIER = 41;\n"}});
   REQUIRE(r.text() == "");
   const auto &m = r.model;
   auto check = [&](const char *name, model::Expr::Kind kind, model::Type type, const char *text) {
@@ -109,15 +98,15 @@ TEST_CASE("validate model: constants are folded to literals of their type", "[va
 }
 
 TEST_CASE("validate model: a chart's constants, vars and what it reads", "[validate]") {
-  Run r({{"t.sfc", "const int UNUSED = 1;\n"
-                   "const int LIMIT = 3;\n"
-                   "sfc S {\n"
-                   "  const float CRUISE = 0.5;\n"
-                   "  var int laps = LIMIT - 1;\n"
-                   "  var bool done;\n"
-                   "  initial place A { laps += 1; done = laps >= LIMIT; }\n"
-                   "  transition A -> A when done && CRUISE > 0;\n"
-                   "}\n"}});
+  Validated r({{"t.sfc", "const int UNUSED = 1;\n"
+                         "const int LIMIT = 3;\n"
+                         "sfc S {\n"
+                         "  const float CRUISE = 0.5;\n"
+                         "  var int laps = LIMIT - 1;\n"
+                         "  var bool done;\n"
+                         "  initial place A { laps += 1; done = laps >= LIMIT; }\n"
+                         "  transition A -> A when done && CRUISE > 0;\n"
+                         "}\n"}});
   REQUIRE(r.text() == "");
   const auto &m = r.model;
   REQUIRE(m.consts.size() == 3);
@@ -147,20 +136,20 @@ TEST_CASE("validate model: a chart's constants, vars and what it reads", "[valid
 }
 
 TEST_CASE("validate model: durations become whole ticks, rounded up", "[validate]") {
-  Run r({{"t.sfc", "sfc S {\n"
-                   "  period 10ms;\n"
-                   "  initial place A;\n"
-                   "  place B;\n"
-                   "  place C;\n"
-                   "  transition A -> B when elapsed(A) >= 25ms;\n"
-                   "  transition B -> C when elapsed(B) >= 0.1s;\n"
-                   "  transition C -> A when elapsed(A) < 1.5s || 0ms == elapsed(C);\n"
-                   "}\n"
-                   "sfc R {\n"
-                   "  period 30ms;\n"
-                   "  initial place A;\n"
-                   "  transition A -> A when elapsed(A) > 100ms;\n"
-                   "}\n"}});
+  Validated r({{"t.sfc", "sfc S {\n"
+                         "  period 10ms;\n"
+                         "  initial place A;\n"
+                         "  place B;\n"
+                         "  place C;\n"
+                         "  transition A -> B when elapsed(A) >= 25ms;\n"
+                         "  transition B -> C when elapsed(B) >= 0.1s;\n"
+                         "  transition C -> A when elapsed(A) < 1.5s || 0ms == elapsed(C);\n"
+                         "}\n"
+                         "sfc R {\n"
+                         "  period 30ms;\n"
+                         "  initial place A;\n"
+                         "  transition A -> A when elapsed(A) > 100ms;\n"
+                         "}\n"}});
   REQUIRE(r.text() == "");
   const auto &c = r.model.charts[0];
   CHECK(c.period_ms == 10);
@@ -184,14 +173,14 @@ TEST_CASE("validate model: durations become whole ticks, rounded up", "[validate
 }
 
 TEST_CASE("validate model: transitions are named T<position> unless named", "[validate]") {
-  Run r({{"t.sfc", "sfc S {\n"
-                   "  initial place A;\n"
-                   "  place B;\n"
-                   "  place C;\n"
-                   "  transition A -> (B, C);\n"
-                   "  join: (B, C) -> A;\n"
-                   "  transition A -> A;\n"
-                   "}\n"}});
+  Validated r({{"t.sfc", "sfc S {\n"
+                         "  initial place A;\n"
+                         "  place B;\n"
+                         "  place C;\n"
+                         "  transition A -> (B, C);\n"
+                         "  join: (B, C) -> A;\n"
+                         "  transition A -> A;\n"
+                         "}\n"}});
   REQUIRE(r.text() == "");
   const auto &t = r.model.charts[0].transitions;
   REQUIRE(t.size() == 3);
@@ -206,9 +195,9 @@ TEST_CASE("validate model: transitions are named T<position> unless named", "[va
 }
 
 TEST_CASE("validate model: entry and exit blocks, verbatim code", "[validate]") {
-  Run r({{"main.sfc", "import \"lib.sfc\";\n%{ #include \"main.h\" %}\n"
-                      "sfc S { initial place A { entry { Go(); } %{ x++; %} exit { Go(); } } }\n"},
-         {"lib.sfc", "%{ #include \"lib.h\" %}\ninterface L { void Go(); }\nsfc Lib { initial place X; }\n"}});
+  Validated r({{"main.sfc", "import \"lib.sfc\";\n%{ #include \"main.h\" %}\n"
+                            "sfc S { initial place A { entry { Go(); } %{ x++; %} exit { Go(); } } }\n"},
+               {"lib.sfc", "%{ #include \"lib.h\" %}\ninterface L { void Go(); }\nsfc Lib { initial place X; }\n"}});
   REQUIRE(r.text() == "");
   const auto &m = r.model;
   REQUIRE(m.verbatims.size() == 2);
@@ -227,10 +216,10 @@ TEST_CASE("validate model: entry and exit blocks, verbatim code", "[validate]") 
 }
 
 TEST_CASE("validate model: toolboxes and their templates", "[validate]") {
-  Run r({{"t.toolbox", "toolbox Box {\n"
-                       "  actor Move(in float d, out int n) -> OK | BLOCKED;\n"
-                       "  supervisor Watch(in object o) events HIT, MISS period 5ms;\n"
-                       "}\n"}});
+  Validated r({{"t.toolbox", "toolbox Box {\n"
+                             "  actor Move(in float d, out int n) -> OK | BLOCKED;\n"
+                             "  supervisor Watch(in object o) events HIT, MISS period 5ms;\n"
+                             "}\n"}});
   REQUIRE(r.text() == "");
   const auto &m = r.model;
   REQUIRE(m.toolboxes.size() == 1);
@@ -251,21 +240,21 @@ TEST_CASE("validate model: toolboxes and their templates", "[validate]") {
 }
 
 TEST_CASE("validate model: plans, rules by outcome, sub-plans, constants in formulas", "[validate]") {
-  Run r({{"main.plan", "import \"box.toolbox\";\n"
-                       "const float K = 2;\n"
-                       "plan Main {\n"
-                       "  config { float d = K * 10; string label = 7; int n; }\n"
-                       "  supervise stop: Watch() { MISS -> ignore; HIT -> terminate; }\n"
-                       "  start nav;\n"
-                       "  actor nav: Sub() { ERROR -> terminate; OK -> move; INTERRUPTED -> nav; }\n"
-                       "  actor move: Move(d * K, n) { BLOCKED -> nav; OK -> terminate; }\n"
-                       "}\n"
-                       "plan Sub { start m; actor m: Move(1, n) { OK -> terminate; BLOCKED -> terminate; }"
-                       "  config { int n; } }\n"},
-         {"box.toolbox", "toolbox Box {\n"
-                         "  actor Move(in float d, out int n) -> OK | BLOCKED;\n"
-                         "  supervisor Watch() events HIT | MISS;\n"
-                         "}\n"}});
+  Validated r({{"main.plan", "import \"box.toolbox\";\n"
+                             "const float K = 2;\n"
+                             "plan Main {\n"
+                             "  config { float d = K * 10; string label = 7; int n; }\n"
+                             "  supervise stop: Watch() { MISS -> ignore; HIT -> terminate; }\n"
+                             "  start nav;\n"
+                             "  actor nav: Sub() { ERROR -> terminate; OK -> move; INTERRUPTED -> nav; }\n"
+                             "  actor move: Move(d * K, n) { BLOCKED -> nav; OK -> terminate; }\n"
+                             "}\n"
+                             "plan Sub { start m; actor m: Move(1, n) { OK -> terminate; BLOCKED -> terminate; }"
+                             "  config { int n; } }\n"},
+               {"box.toolbox", "toolbox Box {\n"
+                               "  actor Move(in float d, out int n) -> OK | BLOCKED;\n"
+                               "  supervisor Watch() events HIT | MISS;\n"
+                               "}\n"}});
   REQUIRE(r.text() == "");
   const auto &m = r.model;
   REQUIRE(m.plans.size() == 2);

@@ -1,110 +1,25 @@
 // The validator: names across files, duplicates, unknown names, reserved words.
 // Each test validates chart text and compares every diagnostic as gfec prints it.
-#include "support.h"
-#include "validate.h"
+#include "validate_fixture.h"
 
 #include <catch2/catch.hpp>
 
 #include <string>
 
 using namespace gfec;
-
-namespace {
-
-[[maybe_unused]] const char *const kBot = R"--(interface Bot {
-  bool Black();
-  bool White();
-  void Go();
-  void Stop();
-  void Motor(int side, float speed);
-  void Lamp(bool on);
-  float Distance();
-  int Count();
-}
-)--";
-
-[[maybe_unused]] const char *const kToolbox = R"--(toolbox Carbot {
-  actor Forward(in float distance) -> FORWARD_OK;
-  actor Turn(in float angle) -> TURN_OK;
-  actor SearchWall(out float angle) -> WALL_FOUND | NO_WALL_FOUND;
-  actor Say(in string text, in bool loud) -> SAID;
-  computation CountDown(in int n, out int rest) -> AGAIN | DONE;
-  supervisor CheckTouch() events TOUCHED;
-  supervisor CheckLane(in float dist) events LANE_NOT_FREE period 10ms;
-}
-)--";
-
-/// Loads in-memory files (the first is the main file) and validates them.
-struct Run {
-  test::FrontEnd fe;
-  model::Model model;
-
-  Run(std::initializer_list<std::pair<std::string, std::string>> files, WarningOptions w = {}) : fe(files, w) {
-    model = validate(fe.loaded.program, fe.sources, fe.diag);
-  }
-  std::string text() const { return fe.text(); }
-};
-
-[[maybe_unused]] WarningOptions all_warnings() {
-  WarningOptions w;
-  for (int i = 0; i < static_cast<int>(Warning::Count_); ++i) w.set(static_cast<Warning>(i), true);
-  return w;
-}
-
-}  // namespace
-
-TEST_CASE("validate: a duplicate place is reported with a note at the first", "[validate]") {
-  Run r({{"t.sfc", R"--(import "bot.iface";
-sfc S {
-  initial place A;
-  place B;
-  place A;
-}
-)--"},
-         {"bot.iface", kBot}});
-  CHECK(r.text() == R"--(t.sfc:5:9: error: redefinition of place 'A' [duplicate-name]
-   place A;
-         ^
-t.sfc:3:17: note: previous definition of 'A' was here
-   initial place A;
-                 ^
-)--");
-}
-
-TEST_CASE("validate: places, transitions, vars and consts share one namespace per chart", "[validate]") {
-  Run r({{"t.sfc", R"--(import "bot.iface";
-sfc S {
-  var int A = 0;
-  initial place A;
-  const int t = 1;
-  t: A -> A;
-}
-)--"},
-         {"bot.iface", kBot}});
-  CHECK(r.text() == R"--(t.sfc:4:17: error: place 'A' has the same name as a variable [duplicate-name]
-   initial place A;
-                 ^
-t.sfc:3:11: note: variable 'A' declared here
-   var int A = 0;
-           ^
-t.sfc:6:3: error: transition 't' has the same name as a constant [duplicate-name]
-   t: A -> A;
-   ^
-t.sfc:5:13: note: constant 't' declared here
-   const int t = 1;
-             ^
-)--");
-}
+using test::kBot;
+using test::kToolbox;
+using test::Validated;
 
 TEST_CASE("validate: the same place name in two charts is fine", "[validate]") {
-  Run r({{"t.sfc", R"--(sfc S { initial place A; }
+  Validated r({{"t.sfc", R"--(sfc S { initial place A; }
 sfc R { initial place A; }
 )--"}});
   CHECK(r.text() == R"--()--");
 }
 
 TEST_CASE("validate: a duplicate function within an interface", "[validate]") {
-  Run r({{"t.iface", R"--(interface Bot2 {
+  Validated r({{"t.iface", R"--(interface Bot2 {
   void Go();
   bool Go();
 }
@@ -119,10 +34,10 @@ t.iface:2:8: note: previous definition of 'Go' was here
 }
 
 TEST_CASE("validate: a name clashing with an imported one is reported in the importing file", "[validate]") {
-  Run r({{"t.sfc", R"--(import "bot.iface";
+  Validated r({{"t.sfc", R"--(import "bot.iface";
 const int Go = 1;
 )--"},
-         {"bot.iface", kBot}});
+               {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:2:11: error: constant 'Go' has the same name as a function [duplicate-name]
  const int Go = 1;
            ^~
@@ -133,10 +48,10 @@ bot.iface:4:8: note: function 'Go' declared here
 }
 
 TEST_CASE("validate: a chart may not have the name of a function", "[validate]") {
-  Run r({{"t.sfc", R"--(import "bot.iface";
+  Validated r({{"t.sfc", R"--(import "bot.iface";
 sfc Stop { initial place A; }
 )--"},
-         {"bot.iface", kBot}});
+               {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:2:5: error: chart 'Stop' has the same name as a function [duplicate-name]
  sfc Stop { initial place A; }
      ^~~~
@@ -147,7 +62,7 @@ bot.iface:5:8: note: function 'Stop' declared here
 }
 
 TEST_CASE("validate: a chart constant hides a global constant of the same name", "[validate]") {
-  Run r({{"t.sfc", R"--(const float CRUISE = 0.5;
+  Validated r({{"t.sfc", R"--(const float CRUISE = 0.5;
 sfc S {
   const float CRUISE = 0.6;
   var float speed = CRUISE;
@@ -160,21 +75,8 @@ sfc S {
   CHECK(r.model.consts.at(init.index).value.text == "0.6");
 }
 
-TEST_CASE("validate: two charts with one name", "[validate]") {
-  Run r({{"t.sfc", R"--(sfc S { initial place A; }
-fsm S { initial state A; }
-)--"}});
-  CHECK(r.text() == R"--(t.sfc:2:5: error: redefinition of chart 'S' [duplicate-name]
- fsm S { initial state A; }
-     ^
-t.sfc:1:5: note: previous definition of 'S' was here
- sfc S { initial place A; }
-     ^
-)--");
-}
-
 TEST_CASE("validate: an unknown function gets a did-you-mean at the declaration", "[validate]") {
-  Run r({{"t.sfc", R"--(interface LineBot {
+  Validated r({{"t.sfc", R"--(interface LineBot {
   bool Left_IR_Black();
   void Left_FW();
 }
@@ -194,14 +96,14 @@ t.sfc:2:8: note: did you mean 'Left_IR_Black'?
 }
 
 TEST_CASE("validate: an unknown name far from every declared one gets no suggestion", "[validate]") {
-  Run r({{"t.sfc", R"--(import "bot.iface";
+  Validated r({{"t.sfc", R"--(import "bot.iface";
 sfc S {
   var int laps = 0;
   initial place A;
   A -> A when zzzzzz > 1;
 }
 )--"},
-         {"bot.iface", kBot}});
+               {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:5:15: error: unknown name 'zzzzzz' [unknown-name]
    A -> A when zzzzzz > 1;
                ^~~~~~
@@ -209,7 +111,7 @@ sfc S {
 }
 
 TEST_CASE("validate: an unknown name is reported once per chart", "[validate]") {
-  Run r({{"t.sfc", R"--(import "bot.iface";
+  Validated r({{"t.sfc", R"--(import "bot.iface";
 sfc S {
   var int laps = 0;
   initial place A { lap += 1; }
@@ -218,7 +120,7 @@ sfc S {
   transition B -> A when lap > 2 && Whte() && Whte();
 }
 )--"},
-         {"bot.iface", kBot}});
+               {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:4:21: error: unknown variable 'lap' [unknown-name]
    initial place A { lap += 1; }
                      ^~~
@@ -241,7 +143,7 @@ bot.iface:3:8: note: did you mean 'White'?
 }
 
 TEST_CASE("validate: names that are C or C++ keywords are rejected", "[validate]") {
-  Run r({{"t.sfc", R"--(interface Robot {
+  Validated r({{"t.sfc", R"--(interface Robot {
   void register();
   void Motor(int new, float speed);
 }
@@ -295,7 +197,7 @@ t.sfc:14:9: error: 'private' is a keyword of C++ and cannot name an actor [reser
 
 TEST_CASE("validate: C++20's keywords and the C++ runtime's macros are reserved too (one list, compiler/naming/)",
           "[validate]") {
-  Run r({{"t.sfc", R"--(interface Robot { void requires(); }
+  Validated r({{"t.sfc", R"--(interface Robot { void requires(); }
 sfc concept {
   var int co_await = 0;
   initial place stdout;
@@ -317,7 +219,7 @@ t.sfc:4:17: error: 'stdout' is a macro of the C++ standard headers a plan includ
 }
 
 TEST_CASE("validate: elapsed cannot name a function", "[validate]") {
-  Run r({{"t.sfc", R"--(interface Clock {
+  Validated r({{"t.sfc", R"--(interface Clock {
   int elapsed(int p);
 }
 )--"}});
@@ -329,7 +231,7 @@ TEST_CASE("validate: elapsed cannot name a function", "[validate]") {
 }
 
 TEST_CASE("validate: a place may not generate a name the engine or the interface already uses", "[validate]") {
-  Run r({{"t.sfc", R"--(interface LineBot {
+  Validated r({{"t.sfc", R"--(interface LineBot {
   void Left_FW();
 }
 sfc Left {
@@ -363,7 +265,7 @@ t.sfc:10:3: error: transition 'enabled' would generate 'Left_enabled', which the
 }
 
 TEST_CASE("validate: an unnamed transition's T<n> name may not be taken", "[validate]") {
-  Run r({{"t.sfc", R"--(sfc S {
+  Validated r({{"t.sfc", R"--(sfc S {
   initial place A;
   place T1;
   transition A -> T1;
@@ -389,11 +291,11 @@ t.sfc:3:9: note: 'T1' declared here; name the transition ('name: A -> B') or ren
 }
 
 TEST_CASE("validate: templates and plans share one namespace", "[validate]") {
-  Run r({{"t.plan", R"--(import "carbot.toolbox";
+  Validated r({{"t.plan", R"--(import "carbot.toolbox";
 plan Turn { start t; actor t: Forward(1) { FORWARD_OK -> terminate; } }
 toolbox Other { actor Forward(in float d) -> DONE; }
 )--"},
-         {"carbot.toolbox", kToolbox}});
+               {"carbot.toolbox", kToolbox}});
   CHECK(r.text() == R"--(t.plan:2:6: error: plan 'Turn' has the same name as a template [duplicate-name]
  plan Turn { start t; actor t: Forward(1) { FORWARD_OK -> terminate; } }
       ^~~~
@@ -410,7 +312,7 @@ carbot.toolbox:2:9: note: previous definition of 'Forward' was here
 }
 
 TEST_CASE("validate: duplicate interfaces and toolboxes", "[validate]") {
-  Run r({{"t.iface", R"--(interface Bot { void A(); }
+  Validated r({{"t.iface", R"--(interface Bot { void A(); }
 interface Bot { void B(); }
 toolbox Box { actor X() -> OK; }
 toolbox Box { actor Y() -> OK; }

@@ -1,60 +1,18 @@
 // The validator: toolboxes and plans (docs/language.md §8).
 // Each test validates chart text and compares every diagnostic as gfec prints it.
-#include "support.h"
-#include "validate.h"
+#include "validate_fixture.h"
 
 #include <catch2/catch.hpp>
 
 #include <string>
 
 using namespace gfec;
-
-namespace {
-
-[[maybe_unused]] const char *const kBot = R"--(interface Bot {
-  bool Black();
-  bool White();
-  void Go();
-  void Stop();
-  void Motor(int side, float speed);
-  void Lamp(bool on);
-  float Distance();
-  int Count();
-}
-)--";
-
-[[maybe_unused]] const char *const kToolbox = R"--(toolbox Carbot {
-  actor Forward(in float distance) -> FORWARD_OK;
-  actor Turn(in float angle) -> TURN_OK;
-  actor SearchWall(out float angle) -> WALL_FOUND | NO_WALL_FOUND;
-  actor Say(in string text, in bool loud) -> SAID;
-  computation CountDown(in int n, out int rest) -> AGAIN | DONE;
-  supervisor CheckTouch() events TOUCHED;
-  supervisor CheckLane(in float dist) events LANE_NOT_FREE period 10ms;
-}
-)--";
-
-/// Loads in-memory files (the first is the main file) and validates them.
-struct Run {
-  test::FrontEnd fe;
-  model::Model model;
-
-  Run(std::initializer_list<std::pair<std::string, std::string>> files, WarningOptions w = {}) : fe(files, w) {
-    model = validate(fe.loaded.program, fe.sources, fe.diag);
-  }
-  std::string text() const { return fe.text(); }
-};
-
-[[maybe_unused]] WarningOptions all_warnings() {
-  WarningOptions w;
-  for (int i = 0; i < static_cast<int>(Warning::Count_); ++i) w.set(static_cast<Warning>(i), true);
-  return w;
-}
-
-}  // namespace
+using test::all_warnings;
+using test::kToolbox;
+using test::Validated;
 
 TEST_CASE("validate: toolbox templates: parameter types, duplicates, outcomes, periods", "[validate]") {
-  Run r({{"t.toolbox", R"--(toolbox Box {
+  Validated r({{"t.toolbox", R"--(toolbox Box {
   actor A(in integer x, in void y, out float x) -> DONE | DONE;
   supervisor S(in float d) events HIT period 0ms;
   computation C(in int n) -> OK;
@@ -86,7 +44,7 @@ t.toolbox:3:39: error: the period must be positive [period]
 }
 
 TEST_CASE("validate: a plan has exactly one start", "[validate]") {
-  Run r({{"t.plan", R"--(import "carbot.toolbox";
+  Validated r({{"t.plan", R"--(import "carbot.toolbox";
 plan P {
   config { float dist = 30; float angle; int count = 3; bool loud = true; string label = "x"; }
   start go;
@@ -102,7 +60,7 @@ plan R {
   actor x: Forward(1) { FORWARD_OK -> terminate; }
 }
 )--"},
-         {"carbot.toolbox", kToolbox}});
+               {"carbot.toolbox", kToolbox}});
   CHECK(r.text() == R"--(t.plan:5:9: error: plan 'P' has more than one start actor [start]
    start go2;
          ^~~
@@ -120,7 +78,7 @@ t.plan:13:9: error: unknown actor 'xx' [unknown-name]
 }
 
 TEST_CASE("validate: unknown templates get a did-you-mean among the right kind", "[validate]") {
-  Run r({{"t.plan", R"--(import "carbot.toolbox";
+  Validated r({{"t.plan", R"--(import "carbot.toolbox";
 plan P {
   config { float dist = 30; float angle; int count = 3; bool loud = true; string label = "x"; }
   start a;
@@ -129,7 +87,7 @@ plan P {
   supervise s: CheckTuch() { TOUCHED -> terminate; }
 }
 )--"},
-         {"carbot.toolbox", kToolbox}});
+               {"carbot.toolbox", kToolbox}});
   CHECK(r.text() == R"--(t.plan:5:12: error: unknown template 'Foward' [unknown-name]
    actor a: Foward(1) { FORWARD_OK -> terminate; }
             ^~~~~~
@@ -149,7 +107,7 @@ carbot.toolbox:7:14: note: did you mean 'CheckTouch'?
 }
 
 TEST_CASE("validate: templates of the wrong kind", "[validate]") {
-  Run r({{"t.plan", R"--(import "carbot.toolbox";
+  Validated r({{"t.plan", R"--(import "carbot.toolbox";
 plan P {
   config { float dist = 30; float angle; int count = 3; bool loud = true; string label = "x"; }
   start a;
@@ -160,7 +118,7 @@ plan P {
 }
 plan Q { start q; actor q: Turn(1) { TURN_OK -> terminate; } }
 )--"},
-         {"carbot.toolbox", kToolbox}});
+               {"carbot.toolbox", kToolbox}});
   CHECK(
       r.text() ==
       R"--(t.plan:5:12: error: 'CheckTouch' is a supervisor template; an actor needs an actor or computation [template-kind]
@@ -191,7 +149,7 @@ carbot.toolbox:3:3: note: 'Turn' declared here
 }
 
 TEST_CASE("validate: every result state and event is connected, once, to something that exists", "[validate]") {
-  Run r({{"t.plan", R"--(import "carbot.toolbox";
+  Validated r({{"t.plan", R"--(import "carbot.toolbox";
 plan P {
   config { float dist = 30; float angle; int count = 3; bool loud = true; string label = "x"; }
   start a;
@@ -204,8 +162,8 @@ plan P {
   actor c: Forward(dist) { FORWARD_OK -> bb; supervise lane: CheckLane(dist) { } }
 }
 )--"},
-         {"carbot.toolbox", kToolbox}},
-        all_warnings());
+               {"carbot.toolbox", kToolbox}},
+              all_warnings());
   CHECK(r.text() == R"--(t.plan:5:49: error: unknown result state 'NO_WALL_FUND' of 'SearchWall' [unknown-name]
    actor a: SearchWall(angle) { WALL_FOUND -> b; NO_WALL_FUND -> b; }
                                                  ^~~~~~~~~~~~
@@ -237,7 +195,7 @@ carbot.toolbox:8:3: note: 'CheckLane' has the events LANE_NOT_FREE
 }
 
 TEST_CASE("validate: ignore is for events only", "[validate]") {
-  Run r({{"t.plan", R"--(import "carbot.toolbox";
+  Validated r({{"t.plan", R"--(import "carbot.toolbox";
 plan P {
   config { float dist = 30; float angle; int count = 3; bool loud = true; string label = "x"; }
   start a;
@@ -245,7 +203,7 @@ plan P {
   actor a: Forward(1) { FORWARD_OK -> ignore; }
 }
 )--"},
-         {"carbot.toolbox", kToolbox}});
+               {"carbot.toolbox", kToolbox}});
   CHECK(r.text() ==
         R"--(t.plan:6:39: error: result state 'FORWARD_OK' cannot be ignored: only supervisor events can [ignore-state]
    actor a: Forward(1) { FORWARD_OK -> ignore; }
@@ -255,7 +213,7 @@ t.plan:6:39: note: a result state leads to an actor or to 'terminate'
 }
 
 TEST_CASE("validate: argument count and types", "[validate]") {
-  Run r({{"t.plan", R"--(import "carbot.toolbox";
+  Validated r({{"t.plan", R"--(import "carbot.toolbox";
 plan P {
   config { float dist = 30; float angle; int count = 3; bool loud = true; string label = "x"; }
   start a;
@@ -267,7 +225,7 @@ plan P {
   actor f: Forward(label) { FORWARD_OK -> terminate; }
 }
 )--"},
-         {"carbot.toolbox", kToolbox}});
+               {"carbot.toolbox", kToolbox}});
   CHECK(r.text() == R"--(t.plan:5:3: error: too few arguments to 'Forward' (expected 1, have 0) [argument-count]
    actor a: Forward() { FORWARD_OK -> b; }
    ^~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~
@@ -296,7 +254,7 @@ carbot.toolbox:5:3: note: 'Say' declared here
 }
 
 TEST_CASE("validate: out parameters are bound to plain config entries", "[validate]") {
-  Run r({{"t.plan", R"--(import "carbot.toolbox";
+  Validated r({{"t.plan", R"--(import "carbot.toolbox";
 const float K = 1;
 plan P {
   config { float dist = 30; float angle; int count = 3; bool loud = true; string label = "x"; }
@@ -310,7 +268,7 @@ plan P {
   computation g: CountDown(count, label) { AGAIN -> g; DONE -> terminate; }
 }
 )--"},
-         {"carbot.toolbox", kToolbox}});
+               {"carbot.toolbox", kToolbox}});
   CHECK(r.text() ==
         R"--(t.plan:6:23: error: out parameter 'angle' of 'SearchWall' must be bound to a config entry [out-argument]
    actor a: SearchWall(angle + 1) { WALL_FOUND -> b; NO_WALL_FOUND -> b; }
@@ -352,7 +310,7 @@ carbot.toolbox:4:3: note: 'SearchWall' declared here
 }
 
 TEST_CASE("validate: a computation cannot be supervised", "[validate]") {
-  Run r({{"t.plan", R"--(import "carbot.toolbox";
+  Validated r({{"t.plan", R"--(import "carbot.toolbox";
 plan P {
   config { float dist = 30; float angle; int count = 3; bool loud = true; string label = "x"; }
   start c;
@@ -363,7 +321,7 @@ plan P {
   }
 }
 )--"},
-         {"carbot.toolbox", kToolbox}});
+               {"carbot.toolbox", kToolbox}});
   CHECK(r.text() == R"--(t.plan:8:15: error: computation 'c' cannot be supervised [computation-supervisor]
      supervise touch: CheckTouch() { TOUCHED -> terminate; }
                ^~~~~
@@ -372,7 +330,7 @@ t.plan:8:15: note: a computation runs to its result without interruption
 }
 
 TEST_CASE("validate: formulas: + - * / and brackets over entries and constants", "[validate]") {
-  Run r({{"t.plan", R"--(import "carbot.toolbox";
+  Validated r({{"t.plan", R"--(import "carbot.toolbox";
 plan P {
   config { float dist = 30; float angle; int count = 3; bool loud = true; string label = "x"; }
   start a;
@@ -386,7 +344,7 @@ plan P {
   actor h: Forward(nope * 2) { FORWARD_OK -> terminate; }
 }
 )--"},
-         {"carbot.toolbox", kToolbox}});
+               {"carbot.toolbox", kToolbox}});
   CHECK(r.text() == R"--(t.plan:5:20: error: operator '%' cannot be used in a plan argument [formula]
    actor a: Forward(dist % 2) { FORWARD_OK -> b; }
                     ^~~~~~~~
@@ -420,7 +378,7 @@ t.plan:12:20: error: unknown config entry 'nope' [unknown-name]
 }
 
 TEST_CASE("validate: config entries: types, duplicates, constant initializers", "[validate]") {
-  Run r({{"t.plan", R"--(import "carbot.toolbox";
+  Validated r({{"t.plan", R"--(import "carbot.toolbox";
 const int BASE = 10;
 plan P {
   config {
@@ -436,7 +394,7 @@ plan P {
   actor a: Forward(dist) { FORWARD_OK -> terminate; }
 }
 )--"},
-         {"carbot.toolbox", kToolbox}});
+               {"carbot.toolbox", kToolbox}});
   CHECK(r.text() == R"--(t.plan:6:5: error: unknown type name 'flaot' [unknown-type]
      flaot speed;
      ^~~~~
@@ -460,7 +418,7 @@ t.plan:10:19: error: a config initializer cannot read config entry 'dist' [not-c
 }
 
 TEST_CASE("validate: config entries, actors and supervisors share the plan's namespace", "[validate]") {
-  Run r({{"t.plan", R"--(import "carbot.toolbox";
+  Validated r({{"t.plan", R"--(import "carbot.toolbox";
 plan P {
   config { float dist = 30; float angle; int count = 3; bool loud = true; string label = "x"; }
   start dist;
@@ -468,7 +426,7 @@ plan P {
   actor a: Forward(1) { FORWARD_OK -> terminate; }
 }
 )--"},
-         {"carbot.toolbox", kToolbox}});
+               {"carbot.toolbox", kToolbox}});
   CHECK(r.text() == R"--(t.plan:5:9: error: actor 'dist' has the same name as a config entry [duplicate-name]
    actor dist: Forward(1) { FORWARD_OK -> a; supervise a: CheckTouch() { TOUCHED -> terminate; } }
          ^~~~
@@ -485,7 +443,7 @@ t.plan:5:55: note: supervisor 'a' declared here
 }
 
 TEST_CASE("validate: sub-plans: fixed states, no arguments", "[validate]") {
-  Run r({{"t.plan", R"--(import "carbot.toolbox";
+  Validated r({{"t.plan", R"--(import "carbot.toolbox";
 plan Main {
   start nav;
   actor nav: Navigate(1) { OK -> nav; INTERUPTED -> terminate; }
@@ -495,7 +453,7 @@ plan Navigate {
   actor f: Forward(1) { FORWARD_OK -> terminate; }
 }
 )--"},
-         {"carbot.toolbox", kToolbox}});
+               {"carbot.toolbox", kToolbox}});
   CHECK(r.text() == R"--(t.plan:4:3: error: sub-plan 'Navigate' takes no arguments [argument-count]
    actor nav: Navigate(1) { OK -> nav; INTERUPTED -> terminate; }
    ^~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~
@@ -511,7 +469,7 @@ t.plan:4:9: note: a sub-plan's result states are OK, INTERRUPTED, ERROR
 }
 
 TEST_CASE("validate: a plan that contains itself", "[validate]") {
-  Run r({{"t.plan", R"--(import "carbot.toolbox";
+  Validated r({{"t.plan", R"--(import "carbot.toolbox";
 plan A {
   start x;
   actor x: B() { OK -> terminate; INTERRUPTED -> terminate; ERROR -> terminate; }
@@ -529,7 +487,7 @@ plan Self {
   actor s: Self() { OK -> terminate; INTERRUPTED -> terminate; ERROR -> terminate; }
 }
 )--"},
-         {"carbot.toolbox", kToolbox}});
+               {"carbot.toolbox", kToolbox}});
   CHECK(r.text() == R"--(t.plan:2:6: error: plan 'A' contains itself [recursive-plan]
  plan A {
       ^
@@ -552,7 +510,7 @@ t.plan:16:9: note: 'Self' uses 'Self' as actor 's'
 }
 
 TEST_CASE("validate: actors no path reaches from start", "[validate]") {
-  Run r({{"t.plan", R"--(import "carbot.toolbox";
+  Validated r({{"t.plan", R"--(import "carbot.toolbox";
 plan P {
   config { float dist = 30; float angle; int count = 3; bool loud = true; string label = "x"; }
   supervise esc: CheckTouch() { TOUCHED -> rescue; }
@@ -565,7 +523,7 @@ plan P {
   actor lost2: Forward(1) { FORWARD_OK -> lost; }
 }
 )--"},
-         {"carbot.toolbox", kToolbox}});
+               {"carbot.toolbox", kToolbox}});
   CHECK(r.text() ==
         R"--(t.plan:10:9: warning: actor 'lost' is never reached from the start actor 'a' [-Wunreachable-actor]
    actor lost: Forward(1) { FORWARD_OK -> lost2; }

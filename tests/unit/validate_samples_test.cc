@@ -1,6 +1,7 @@
 // The validator on the seed samples: no diagnostics, and the model the back ends will read.
 #include "diagnostic_printer.h"
 #include "loader.h"
+#include "support.h"
 #include "validate.h"
 
 #include <catch2/catch.hpp>
@@ -19,16 +20,10 @@ struct Sample {
   LoadResult loaded;
   model::Model model;
 
-  explicit Sample(const std::string &name) : diag(all_warnings()) {
+  explicit Sample(const std::string &name) : diag(test::all_warnings()) {
     RealFileSystem fs;
     loaded = load_program(std::string(GFEC_SOURCE_DIR) + "/samples/" + name, {}, fs, sources, diag);
     model = validate(loaded.program, sources, diag);
-  }
-
-  static WarningOptions all_warnings() {
-    WarningOptions w;
-    for (int i = 0; i < static_cast<int>(Warning::Count_); ++i) w.set(static_cast<Warning>(i), true);
-    return w;
   }
 
   std::string text() const {

@@ -1,74 +1,18 @@
 // The validator: the rules and warnings of an sfc (docs/language.md §5).
 // Each test validates chart text and compares every diagnostic as gfec prints it.
-#include "support.h"
-#include "validate.h"
+#include "validate_fixture.h"
 
 #include <catch2/catch.hpp>
 
 #include <string>
 
 using namespace gfec;
-
-namespace {
-
-[[maybe_unused]] const char *const kBot = R"--(interface Bot {
-  bool Black();
-  bool White();
-  void Go();
-  void Stop();
-  void Motor(int side, float speed);
-  void Lamp(bool on);
-  float Distance();
-  int Count();
-}
-)--";
-
-[[maybe_unused]] const char *const kToolbox = R"--(toolbox Carbot {
-  actor Forward(in float distance) -> FORWARD_OK;
-  actor Turn(in float angle) -> TURN_OK;
-  actor SearchWall(out float angle) -> WALL_FOUND | NO_WALL_FOUND;
-  actor Say(in string text, in bool loud) -> SAID;
-  computation CountDown(in int n, out int rest) -> AGAIN | DONE;
-  supervisor CheckTouch() events TOUCHED;
-  supervisor CheckLane(in float dist) events LANE_NOT_FREE period 10ms;
-}
-)--";
-
-/// Loads in-memory files (the first is the main file) and validates them.
-struct Run {
-  test::FrontEnd fe;
-  model::Model model;
-
-  Run(std::initializer_list<std::pair<std::string, std::string>> files, WarningOptions w = {}) : fe(files, w) {
-    model = validate(fe.loaded.program, fe.sources, fe.diag);
-  }
-  std::string text() const { return fe.text(); }
-};
-
-[[maybe_unused]] WarningOptions all_warnings() {
-  WarningOptions w;
-  for (int i = 0; i < static_cast<int>(Warning::Count_); ++i) w.set(static_cast<Warning>(i), true);
-  return w;
-}
-
-}  // namespace
-
-TEST_CASE("validate: an sfc needs an initial place", "[validate]") {
-  Run r({{"t.sfc", R"--(sfc S {
-  place A;
-  place B;
-  transition A -> B;
-}
-)--"}});
-  CHECK(r.text() == R"--(t.sfc:1:5: error: sfc 'S' has no initial place [initial-state]
- sfc S {
-     ^
-t.sfc:1:5: note: mark the places active at start with 'initial place'
-)--");
-}
+using test::all_warnings;
+using test::kBot;
+using test::Validated;
 
 TEST_CASE("validate: fsm syntax in an sfc", "[validate]") {
-  Run r({{"t.sfc", R"--(import "bot.iface";
+  Validated r({{"t.sfc", R"--(import "bot.iface";
 sfc S {
   initial place A;
   state B;
@@ -76,7 +20,7 @@ sfc S {
   place C post Black();
 }
 )--"},
-         {"bot.iface", kBot}});
+               {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:4:3: error: 'state' in an sfc: an sfc has places (write 'place B') [wrong-keyword]
    state B;
    ^~~~~~~~
@@ -90,7 +34,7 @@ t.sfc:6:16: error: 'post' belongs to a terminal state of an fsm [wrong-keyword]
 }
 
 TEST_CASE("validate: transitions connect places of this chart", "[validate]") {
-  Run r({{"t.sfc", R"--(import "bot.iface";
+  Validated r({{"t.sfc", R"--(import "bot.iface";
 sfc S {
   var int n = 0;
   initial place Wait;
@@ -101,7 +45,7 @@ sfc S {
 }
 sfc Other { initial place X; }
 )--"},
-         {"bot.iface", kBot}});
+               {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:6:14: error: unknown place 'Wiat' [unknown-name]
    transition Wiat -> Run;
               ^~~~
@@ -120,31 +64,8 @@ t.sfc:8:22: error: unknown place 'Other' [unknown-name]
 )--");
 }
 
-TEST_CASE("validate: a place listed twice in a transition's inputs or outputs", "[validate]") {
-  Run r({{"t.sfc", R"--(sfc S {
-  initial place A;
-  place B;
-  transition (A, B, A) -> B;
-  go: A -> (B, B);
-}
-)--"}});
-  CHECK(r.text() == R"--(t.sfc:4:21: error: place 'A' is listed twice in the inputs of transition 'T0' [duplicate-place]
-   transition (A, B, A) -> B;
-                     ^
-t.sfc:4:15: note: first listed here
-   transition (A, B, A) -> B;
-               ^
-t.sfc:5:16: error: place 'B' is listed twice in the outputs of transition 'go' [duplicate-place]
-   go: A -> (B, B);
-                ^
-t.sfc:5:13: note: first listed here
-   go: A -> (B, B);
-             ^
-)--");
-}
-
 TEST_CASE("validate: the period is given at most once and is positive", "[validate]") {
-  Run r({{"t.sfc", R"--(sfc S {
+  Validated r({{"t.sfc", R"--(sfc S {
   period 10ms;
   period 20ms;
   initial place A;
@@ -168,7 +89,7 @@ t.sfc:7:3: error: the period must be positive [period]
 }
 
 TEST_CASE("validate: unreachable places and dead transitions are warned about", "[validate]") {
-  Run r({{"t.sfc", R"--(import "bot.iface";
+  Validated r({{"t.sfc", R"--(import "bot.iface";
 const bool DEBUG = false;
 sfc S {
   initial place A;
@@ -183,7 +104,7 @@ sfc S {
   never: B -> A when false;
 }
 )--"},
-         {"bot.iface", kBot}});
+               {"bot.iface", kBot}});
   CHECK(r.text() == R"--(t.sfc:6:9: warning: place 'C' can never become active [-Wunreachable-place]
    place C;
          ^
@@ -209,7 +130,7 @@ t.sfc:13:3: warning: transition 'never' can never fire: its condition is always 
 }
 
 TEST_CASE("validate: reachability follows forks and joins", "[validate]") {
-  Run r({{"t.sfc", R"--(sfc S {
+  Validated r({{"t.sfc", R"--(sfc S {
   initial place A;
   place B;
   place C;
@@ -219,12 +140,12 @@ TEST_CASE("validate: reachability follows forks and joins", "[validate]") {
   transition D -> A;
 }
 )--"}},
-        all_warnings());
+              all_warnings());
   CHECK(r.text() == R"--()--");
 }
 
 TEST_CASE("validate: no reachability warnings for a chart with errors", "[validate]") {
-  Run r({{"t.sfc", R"--(sfc S {
+  Validated r({{"t.sfc", R"--(sfc S {
   initial place A;
   place B;
   place C;
@@ -238,7 +159,7 @@ TEST_CASE("validate: no reachability warnings for a chart with errors", "[valida
 }
 
 TEST_CASE("validate: conflicts are off by default", "[validate]") {
-  Run r({{"t.sfc", R"--(import "bot.iface";
+  Validated r({{"t.sfc", R"--(import "bot.iface";
 sfc S {
   initial place A;
   place B;
@@ -247,12 +168,12 @@ sfc S {
   transition A -> C when White();
 }
 )--"},
-         {"bot.iface", kBot}});
+               {"bot.iface", kBot}});
   CHECK(r.text() == R"--()--");
 }
 
 TEST_CASE("validate: conflicts: transitions sharing an input place, settled by declaration order", "[validate]") {
-  Run r({{"t.sfc", R"--(import "bot.iface";
+  Validated r({{"t.sfc", R"--(import "bot.iface";
 sfc S {
   initial place A;
   place B;
@@ -264,8 +185,8 @@ sfc S {
   transition C -> B;
 }
 )--"},
-         {"bot.iface", kBot}},
-        all_warnings());
+               {"bot.iface", kBot}},
+              all_warnings());
   CHECK(r.text() == R"--(t.sfc:7:3: warning: transition 'right' competes with 'left' for place 'A' [-Wconflict]
    right: A -> C when White();
    ^~~~~
@@ -282,12 +203,12 @@ t.sfc:6:3: note: 'left' is declared first: when both can fire, it takes the acti
 }
 
 TEST_CASE("validate: verbatim code is noted only under -Wverbatim", "[validate]") {
-  Run r({{"t.sfc", R"--(%{ #include <stdio.h> %}
+  Validated r({{"t.sfc", R"--(%{ #include <stdio.h> %}
 sfc S {
   initial place A { %{ puts("A"); %} }
 }
 )--"}},
-        all_warnings());
+              all_warnings());
   CHECK(r.text() == R"--(t.sfc:1:1: warning: verbatim code is copied unchecked: gfec cannot check it [-Wverbatim]
  %{ #include <stdio.h> %}
  ^~~~~~~~~~~~~~~~~~~~~~~~
@@ -295,13 +216,13 @@ t.sfc:3:21: warning: verbatim code is copied unchecked: gfec cannot check it [-W
    initial place A { %{ puts("A"); %} }
                      ^~~~~~~~~~~~~~~~
 )--");
-  CHECK(Run({{"t.sfc", "%{ x %}\nsfc S { initial place A { %{ y; %} } }\n"}}).text() == "");
+  CHECK(Validated({{"t.sfc", "%{ x %}\nsfc S { initial place A { %{ y; %} } }\n"}}).text() == "");
 }
 
 TEST_CASE("validate: -Werror on verbatim code does not hide a chart's other warnings", "[validate]") {
   WarningOptions w = all_warnings();
   w.as_errors = true;
-  Run r({{"t.sfc", "sfc S { initial place A { %{ x(); %} } place B; }\n"}}, w);
+  Validated r({{"t.sfc", "sfc S { initial place A { %{ x(); %} } place B; }\n"}}, w);
   CHECK(r.text() == R"--(t.sfc:1:27: error: verbatim code is copied unchecked: gfec cannot check it [-Werror=verbatim]
  sfc S { initial place A { %{ x(); %} } place B; }
                            ^~~~~~~~~~
