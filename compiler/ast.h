@@ -126,7 +126,7 @@ struct Place {
   HeapOptional<Block> entry;
   HeapOptional<Block> exit;
   SourceRange entry_range, exit_range;
-  ExprPtr post;              ///< `post EXPR` of a terminal state
+  ExprPtr post;             ///< `post EXPR` of a terminal state
   HeapOptional<Name> runs;  ///< `place P runs C`: the chart C (sub-charts)
   SourceRange range;
 };

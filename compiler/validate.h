@@ -19,7 +19,6 @@ struct Suite;
 model::Model validate(ast::Program &program, const SourceManager &sources, Diagnostics &diag);
 /// The same, keeping the checked `test` blocks of the main file in `tests` (gfec test). Both
 /// check them; this one keeps them. A test's `elapsed(P)` marks P timed in the model.
-model::Model validate(ast::Program &program, const SourceManager &sources, Diagnostics &diag,
-                      scenario::Suite &tests);
+model::Model validate(ast::Program &program, const SourceManager &sources, Diagnostics &diag, scenario::Suite &tests);
 
 }  // namespace gfec

@@ -19,7 +19,7 @@ constexpr long long kMaxTeam = 1024;
 struct ChartScope {
   ChartScope(ast::Chart &a, model::Chart &o, int i) : ast(a), out(o), index(i) {}
 
-  ast::Chart &ast;  ///< its bodies and conditions are released as they are lowered
+  ast::Chart &ast;    ///< its bodies and conditions are released as they are lowered
   model::Chart &out;  ///< being filled in; its period is set before any expression is lowered
   int index;
   /// Places (or states), named transitions, vars and the chart's constants.

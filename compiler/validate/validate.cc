@@ -30,8 +30,7 @@ model::Model validate(ast::Program &program, const SourceManager &sources, Diagn
   return validate(program, sources, diag, tests);
 }
 
-model::Model validate(ast::Program &program, const SourceManager &sources, Diagnostics &diag,
-                      scenario::Suite &tests) {
+model::Model validate(ast::Program &program, const SourceManager &sources, Diagnostics &diag, scenario::Suite &tests) {
   model::Model model;
   model.sources = &sources;
   if (!program.files.empty() && program.files.front()) model.main_file = program.files.front()->id;
