@@ -4,9 +4,11 @@
 // small, and spellings point into the source text, which outlives the tree (docs/performance.md).
 #pragma once
 
+#include "heap_optional.h"
 #include "operators.h"
 #include "source.h"
 
+#include <deque>
 #include <memory>
 #include <optional>
 #include <string>
@@ -30,14 +32,15 @@ struct Expr {
     Bool,      ///< `true` / `false`: bool_value
     Int,       ///< `42`: text is the spelling
     Float,     ///< `0.5`, `1e-3`: text is the spelling
-    String,    ///< `"..."`: text is the decoded value, spelling the literal as written
+    String,    ///< `"..."`: text is the decoded value (File::strings), spelling the literal as written
     Duration,  ///< `10ms`, `1.5s`: milliseconds in duration_ms
     Name,      ///< a variable, constant or config entry: name
     Call,      ///< `f(a, b)` (also `elapsed(P)`): name + args
     Unary,     ///< unary_op + args[0]
     Binary,    ///< binary_op + args[0], args[1]
     Paren,     ///< `( e )`: args[0]; kept so formulas and generated code keep the user's brackets
-    Path,      ///< `P.Q.R` (only as the argument of `active(...)`, docs/language.md "Sub-charts"): path
+    Path,      ///< `P.Q.R` (only as the argument of `active(...)`, docs/language.md "Sub-charts"):
+               ///< args, one Expr of Kind::Name per name between the dots, outermost first
   };
   Kind kind;
   UnaryOp unary_op = UnaryOp::Not;
@@ -45,11 +48,12 @@ struct Expr {
   bool bool_value = false;
   SourceRange range;
   double duration_ms = 0;
-  std::string text;
+  /// Int, Float: the spelling; String: the decoded value. Points into the source text or into
+  /// File::strings, both of which outlive the tree: no node owns a copy.
+  std::string_view text;
   std::string_view spelling;  ///< the literal as written: points into the source text
   Name name;
   std::vector<ExprPtr> args;
-  std::vector<Name> path;  ///< Kind::Path: the names between the dots, outermost first
 };
 
 // ---------------------------------------------------------------- statements
@@ -118,11 +122,12 @@ struct Place {
   bool has_body = false;
   Name name;
   Block action;
-  std::optional<Block> entry;
-  std::optional<Block> exit;
+  // What most places lack is kept on the heap, a pointer wide when absent (heap_optional.h).
+  HeapOptional<Block> entry;
+  HeapOptional<Block> exit;
   SourceRange entry_range, exit_range;
-  ExprPtr post;              ///< `post EXPR` of a terminal state
-  std::optional<Name> runs;  ///< `place P runs C`: the chart C (sub-charts)
+  ExprPtr post;             ///< `post EXPR` of a terminal state
+  HeapOptional<Name> runs;  ///< `place P runs C`: the chart C (sub-charts)
   SourceRange range;
 };
 
@@ -263,6 +268,8 @@ struct Test {
 
 struct File {
   FileId id = 0;
+  /// The decoded values of string literals (Expr::text views them; a deque never moves them).
+  std::deque<std::string> strings;
   std::vector<Import> imports;
   std::vector<Verbatim> verbatims;
   std::vector<ValueDecl> consts;

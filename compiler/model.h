@@ -76,9 +76,11 @@ struct Stmt {
   AssignOp op = AssignOp::Set;
   bool else_if = false;  ///< Kind::If: else_block is one If written as `else if`
   SourceRange range;
-  int var = -1;                  ///< Kind::Assign: index into Chart::vars
-  Expr call;                     ///< Kind::Call: an Expr of Kind::Call (its result, if any, is discarded)
-  Expr value;                    ///< Kind::Assign; Kind::If: the condition (Bool)
+  int var = -1;  ///< Kind::Assign: index into Chart::vars
+  /// Kind::Call: the call (an Expr of Kind::Call; its result, if any, is discarded);
+  /// Kind::Assign: the value; Kind::If: the condition (Bool). One expression per statement:
+  /// a chart may hold a million statements (docs/performance.md).
+  Expr expr;
   std::string verbatim;          ///< Kind::Verbatim
   std::uint32_t code_begin = 0;  ///< Kind::Verbatim: where `verbatim` starts in range.file (after `%{`); 0: unknown
   std::vector<Stmt> then_block;  ///< Kind::If
@@ -125,8 +127,8 @@ enum class Terminal : std::uint8_t { None, Success, Failure };
 struct Place {
   std::string name;
   std::vector<Stmt> action;
-  std::optional<std::vector<Stmt>> entry;
-  std::optional<std::vector<Stmt>> exit;
+  HeapOptional<std::vector<Stmt>> entry;  ///< on the heap, like post: most places have none
+  HeapOptional<std::vector<Stmt>> exit;
   HeapOptional<Expr> post;  ///< a terminal state's postcondition (on the heap: most places have none)
   SourceRange range;
   SourceRange name_range;  ///< the name where it is declared
@@ -140,7 +142,9 @@ struct Transition {
   std::string name;  ///< the user's name, or T<position> among all transitions
   std::vector<int> inputs;
   std::vector<int> outputs;
-  std::optional<Expr> condition;  ///< absent: `when true`
+  /// absent: `when true`. On the heap, so that the transitions table of a large chart is
+  /// small while the validator fills it in (docs/performance.md).
+  HeapOptional<Expr> condition;
   SourceRange range;
   SourceRange name_range;  ///< the user's name, or the whole transition when it has none
   bool named = false;      ///< the user gave the name

@@ -219,6 +219,7 @@ private:
   }
 
   FileId file_;
+  File *out_ = nullptr;  ///< the file being parsed: it keeps the decoded string literals
   Diagnostics &diag_;
   Lexer lexer_;
   Token tok_;
@@ -234,6 +235,7 @@ private:
 std::unique_ptr<File> Parser::parse() {
   auto file = std::make_unique<File>();
   file->id = file_;
+  out_ = file.get();
   while (!at(Tok::End)) {
     if (diag_.limit_reached()) break;
     std::uint32_t before = here();
@@ -434,7 +436,7 @@ void Parser::place_body(Place &p) {
       std::uint32_t begin = kw.range.begin;
       Block b = block();
       bool entry = kw.kind == Tok::KwEntry;
-      std::optional<Block> &slot = entry ? p.entry : p.exit;
+      HeapOptional<Block> &slot = entry ? p.entry : p.exit;
       if (slot) {
         diag_.error(kw.range, ErrorKind::DuplicateBlock, fmt::format("second '{}' block in '{}'", kw.text, p.name.text))
             .note(entry ? p.entry_range : p.exit_range, "the first one is here");
@@ -697,8 +699,13 @@ std::vector<ExprPtr> Parser::active_arguments() {
 ExprPtr Parser::path(Name first) {
   std::uint32_t begin = first.range.begin;
   auto e = make(Expr::Kind::Path, first.range);
-  e->path.push_back(std::move(first));
-  while (accept(Tok::Dot)) e->path.push_back(name("after '.' (a place or state of the sub-chart)"));
+  auto part = [this](Name n) {
+    auto x = make(Expr::Kind::Name, n.range);
+    x->name = std::move(n);
+    return x;
+  };
+  e->args.push_back(part(std::move(first)));
+  while (accept(Tok::Dot)) e->args.push_back(part(name("after '.' (a place or state of the sub-chart)")));
   e->range = from(begin);
   return e;
 }
@@ -856,14 +863,14 @@ ExprPtr Parser::primary() {
                 {file_, t.range.begin, tok_.range.end}, joined);
     }
     auto e = make(t.kind == Tok::Int ? Expr::Kind::Int : Expr::Kind::Float, t.range);
-    e->text = std::string(t.text);
+    e->text = t.text;
     e->spelling = t.text;
     return e;
   }
   case Tok::String: {
     Token t = take();
     auto e = make(Expr::Kind::String, t.range);
-    e->text = t.value;
+    e->text = out_->strings.emplace_back(std::move(t.value));
     e->spelling = t.text;
     return e;
   }
@@ -952,7 +959,7 @@ void Parser::test_step(Test &test) {
       // Too large for a count is as wrong as 0; the validator says so at the number.
       step.count = count_of(n);
       step.value = make(Expr::Kind::Int, n.range);
-      step.value->text = std::string(n.text);
+      step.value->text = n.text;
       step.value->spelling = n.text;
     } else if (!at(Tok::Semi)) {
       fail("expected a number of ticks or ';' after 'tick'");

@@ -13,10 +13,12 @@ struct Suite;
 }
 
 /// Checks `program` and builds its model. The model is complete only when no error was reported.
-model::Model validate(const ast::Program &program, const SourceManager &sources, Diagnostics &diag);
+/// The program is consumed in part: each chart's statements and conditions are released as soon
+/// as they are lowered (a large chart never holds both forms), so after this only the
+/// declarations of the syntax tree remain; drop it.
+model::Model validate(ast::Program &program, const SourceManager &sources, Diagnostics &diag);
 /// The same, keeping the checked `test` blocks of the main file in `tests` (gfec test). Both
 /// check them; this one keeps them. A test's `elapsed(P)` marks P timed in the model.
-model::Model validate(const ast::Program &program, const SourceManager &sources, Diagnostics &diag,
-                      scenario::Suite &tests);
+model::Model validate(ast::Program &program, const SourceManager &sources, Diagnostics &diag, scenario::Suite &tests);
 
 }  // namespace gfec

@@ -156,7 +156,7 @@ bool reads_activity(const model::Expr &e) {
 }
 
 bool reads_activity(const model::Stmt &s) {
-  if (reads_activity(s.call) || reads_activity(s.value)) return true;
+  if (reads_activity(s.expr)) return true;
   for (const auto *block : {&s.then_block, &s.else_block})
     for (const auto &t : *block)
       if (reads_activity(t)) return true;

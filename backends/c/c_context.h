@@ -216,6 +216,6 @@ struct Context {
 std::unique_ptr<Context> make_context(const model::Model &model, const model::Chart &chart, const EmitOptions &options);
 
 /// The block holds code (an empty `entry { }` is as good as none).
-inline bool has_code(const std::optional<std::vector<model::Stmt>> &block) { return block && !block->empty(); }
+inline bool has_code(const HeapOptional<std::vector<model::Stmt>> &block) { return block && !block->empty(); }
 
 }  // namespace gfec::c_backend

@@ -277,20 +277,20 @@ public:
   std::string statement(const model::Stmt &s) {
     Rendered r;
     if (s.kind == model::Stmt::Kind::Call) {
-      r = render(s.call);
+      r = render(s.expr);
       r.text += ";";
     } else {
       const Type to = c_.chart.vars.at(static_cast<std::size_t>(s.var)).type;
       const std::string target = c_.field(c_.var_field.at(static_cast<std::size_t>(s.var)));
-      r = render(s.value);
-      if (s.op != AssignOp::Set && to == Type::Int && is_floating(s.value.type)) {
+      r = render(s.expr);
+      if (s.op != AssignOp::Set && to == Type::Int && is_floating(s.expr.type)) {
         // `v += f` is `v = v + f` computed in f's type, then converted: written out, so that
         // the conversion is explicit.
         BinaryOp op = s.op == AssignOp::Add ? BinaryOp::Add : BinaryOp::Sub;
         if (r.prec <= precedence(op)) r.text = bracket(r.text);
         r.text = fmt::format("{} = (int)({} {} {});", target, target, spelling(op), r.text);
       } else {
-        r = converted(std::move(r), s.value, to);
+        r = converted(std::move(r), s.expr, to);
         r.text = fmt::format("{} {} {};", target, spelling(s.op), r.text);
       }
     }
@@ -566,7 +566,7 @@ void render_statements(const Context &c, const std::vector<model::Stmt> &stmts, 
       // The test (its temporaries belong to the enclosing block), then each branch: the
       // declarations of its own temporaries, then its statements. An `else if` is the one If
       // of its else block, and declares in the enclosing block like any other test there.
-      text.push_back(c_if_test(c, s.value, temps));
+      text.push_back(c_if_test(c, s.expr, temps));
       for (const auto *branch : {&s.then_block, &s.else_block}) {
         if (branch == &s.else_block && s.else_if) {  // `} else if (test) {`: no block of its own
           text.emplace_back();

@@ -67,16 +67,16 @@ void statements(CodeWriter &w, const model::Model &m, int chart, const std::vect
   const model::Chart &c = m.charts[static_cast<std::size_t>(chart)];
   for (const auto &s : block) {
     switch (s.kind) {
-    case model::Stmt::Kind::Call: w.line("{};", expr(m, chart, s.call)); break;
+    case model::Stmt::Kind::Call: w.line("{};", expr(m, chart, s.expr)); break;
     case model::Stmt::Kind::Assign:
-      w.line("{} {} {};", c.vars[static_cast<std::size_t>(s.var)].name, spelling(s.op), expr(m, chart, s.value));
+      w.line("{} {} {};", c.vars[static_cast<std::size_t>(s.var)].name, spelling(s.op), expr(m, chart, s.expr));
       break;
     case model::Stmt::Kind::Verbatim: w.line("%{{{}%}}", s.verbatim); break;
     case model::Stmt::Kind::If: {
       const model::Stmt *at = &s;
       std::string lead = "if";
       for (;;) {
-        w.line("{} ({}) {{", lead, expr(m, chart, at->value));
+        w.line("{} ({}) {{", lead, expr(m, chart, at->expr));
         w.indent();
         statements(w, m, chart, at->then_block);
         w.dedent();

@@ -66,7 +66,7 @@ void chart_fields(const model::Model &m, const model::Chart &c, Json &doc) {
   for (std::size_t i = 0; i < c.places.size(); ++i) {
     const model::Place &p = c.places[i];
     const char *terminal = terminal_name(p.terminal);
-    auto block = [&](const std::optional<std::vector<model::Stmt>> &b) {
+    auto block = [&](const HeapOptional<std::vector<model::Stmt>> &b) {
       return b ? statements(m, scope, *b) : Json(nullptr);
     };
     places.push_back({{"index", i},

@@ -120,13 +120,13 @@ Json statements(const model::Model &m, const Scope &scope, const std::vector<mod
     switch (s.kind) {
     case model::Stmt::Kind::Call:
       j["kind"] = "call";
-      j["call"] = expression_tree(m, scope, s.call);
+      j["call"] = expression_tree(m, scope, s.expr);
       break;
     case model::Stmt::Kind::Assign:
       j["kind"] = "assign";
       j["var"] = scope.chart ? name_at(scope.chart->vars, s.var) : "?";
       j["op"] = spelling(s.op);
-      j["value"] = expression_tree(m, scope, s.value);
+      j["value"] = expression_tree(m, scope, s.expr);
       break;
     case model::Stmt::Kind::Verbatim:
       j["kind"] = "verbatim";
@@ -134,7 +134,7 @@ Json statements(const model::Model &m, const Scope &scope, const std::vector<mod
       break;
     case model::Stmt::Kind::If:
       j["kind"] = "if";
-      j["condition"] = expression_tree(m, scope, s.value);
+      j["condition"] = expression_tree(m, scope, s.expr);
       j["then"] = statements(m, scope, s.then_block);
       j["else"] = statements(m, scope, s.else_block);
       j["else_if"] = s.else_if;

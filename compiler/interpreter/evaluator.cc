@@ -168,10 +168,10 @@ Value evaluate(const Expr &e, Frame &f) {
 void execute(const std::vector<model::Stmt> &block, Frame &f) {
   for (const model::Stmt &s : block) {
     switch (s.kind) {
-    case model::Stmt::Kind::Call: evaluate(s.call, f); break;
+    case model::Stmt::Kind::Call: evaluate(s.expr, f); break;
     case model::Stmt::Kind::Assign: {
       Value &slot = f.vars.at(static_cast<std::size_t>(s.var));
-      Value v = evaluate(s.value, f);
+      Value v = evaluate(s.expr, f);
       if (s.op != AssignOp::Set) v = arith(s.op == AssignOp::Add ? BinaryOp::Add : BinaryOp::Sub, slot, v, s.range);
       slot = convert(v, slot.type, s.range);
       if (f.log)
@@ -184,7 +184,7 @@ void execute(const std::vector<model::Stmt> &block, Frame &f) {
       if (f.log) f.log->add(EventKind::Note, f.depth, "note verbatim code is not run by the interpreter");
       break;
     case model::Stmt::Kind::If:
-      execute(convert(evaluate(s.value, f), Type::Bool, s.value.range).b ? s.then_block : s.else_block, f);
+      execute(convert(evaluate(s.expr, f), Type::Bool, s.expr.range).b ? s.then_block : s.else_block, f);
       break;
     }
   }

@@ -24,10 +24,11 @@ struct ConstSource {
 };
 
 struct Context {
-  Context(const ast::Program &p, const SourceManager &s, Diagnostics &d, model::Model &m)
+  Context(ast::Program &p, const SourceManager &s, Diagnostics &d, model::Model &m)
       : program(p), sources(s), diag(d), model(m) {}
 
-  const ast::Program &program;
+  /// Not const: a chart's bodies are released once lowered (validate.h).
+  ast::Program &program;
   const SourceManager &sources;
   Diagnostics &diag;
   model::Model &model;
@@ -43,7 +44,7 @@ struct Context {
   /// Parallel to the model tables: the declaration each element was lowered from.
   std::vector<ConstSource> consts;
   std::vector<bool> function_ok;  ///< false: its declaration has an error; calls stay silent
-  std::vector<const ast::Chart *> charts;
+  std::vector<ast::Chart *> charts;
   std::vector<const ast::Template *> templates;
   std::vector<bool> template_ok;  ///< false: a parameter type is wrong; arguments stay unchecked
   std::vector<const ast::Plan *> plans;

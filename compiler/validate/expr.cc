@@ -185,7 +185,8 @@ std::optional<model::Expr> lower_active(const ast::Expr &e, ExprScope &s, bool s
   const ast::Expr &arg = *e.args[0];
   std::vector<ast::Name> names;
   if (arg.kind == ast::Expr::Kind::Name) names.push_back(arg.name);
-  else if (arg.kind == ast::Expr::Kind::Path) names = arg.path;
+  else if (arg.kind == ast::Expr::Kind::Path)
+    for (const ast::ExprPtr &part : arg.args) names.push_back(part->name);
   else {
     s.cx.diag.error(arg.range, ErrorKind::Active,
                     "'active' takes one argument: a place or state, or a path 'P.Q' into its sub-chart");
@@ -431,7 +432,7 @@ std::optional<model::Stmt> lower_assign(const ast::Stmt &st, ExprScope &s) {
   out.range = st.range;
   out.var = sym->index;
   out.op = st.assign_op;
-  out.value = std::move(*value);
+  out.expr = std::move(*value);
   return out;
 }
 
@@ -584,7 +585,7 @@ std::optional<model::Stmt> lower_if(const ast::Stmt &st, ExprScope &s) {
   model::Stmt m;
   m.kind = model::Stmt::Kind::If;
   m.range = st.range;
-  m.value = std::move(*condition);
+  m.expr = std::move(*condition);
   m.then_block = std::move(then_block);
   m.else_block = std::move(else_block);
   // An `else if` whose own condition failed lowers to nothing: then this is a plain else.
@@ -607,7 +608,7 @@ std::vector<model::Stmt> lower_block(const ast::Block &b, ExprScope &s) {
         model::Stmt m;
         m.kind = model::Stmt::Kind::Call;
         m.range = st.range;
-        m.call = std::move(*call);
+        m.expr = std::move(*call);
         out.push_back(std::move(m));
       }
       break;

@@ -17,9 +17,9 @@ constexpr long long kMaxTeam = 1024;
 
 /// A chart's own names, and what its expressions use, while the chart is validated.
 struct ChartScope {
-  ChartScope(const ast::Chart &a, model::Chart &o, int i) : ast(a), out(o), index(i) {}
+  ChartScope(ast::Chart &a, model::Chart &o, int i) : ast(a), out(o), index(i) {}
 
-  const ast::Chart &ast;
+  ast::Chart &ast;    ///< its bodies and conditions are released as they are lowered
   model::Chart &out;  ///< being filled in; its period is set before any expression is lowered
   int index;
   /// Places (or states), named transitions, vars and the chart's constants.

@@ -19,7 +19,7 @@ void declare_file_const(Context &cx, const ast::ValueDecl &decl);
 void fold_file_consts(Context &cx);
 
 /// validate_chart.cc: a chart's name now; its body later, once every global name is known.
-void declare_chart(Context &cx, const ast::Chart &chart);
+void declare_chart(Context &cx, ast::Chart &chart);
 void validate_chart(Context &cx, int index);
 
 /// subcharts.cc: resolves every `runs`, reports charts that run themselves and sub-chart
@@ -47,6 +47,6 @@ void check_plan_recursion(Context &cx);
 void lower_transition_condition(Context &cx, ChartScope &chart, std::size_t index);
 
 /// Whether a condition is constant, and its value (no condition is `when true`).
-std::optional<bool> constant_condition(const std::optional<model::Expr> &condition, const model::Model &model);
+std::optional<bool> constant_condition(const HeapOptional<model::Expr> &condition, const model::Model &model);
 
 }  // namespace gfec::validation

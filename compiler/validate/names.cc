@@ -73,12 +73,12 @@ bool Namespace::declare(const ast::Name &name, Sym kind, int index, Diagnostics 
     report_clash(name, kind, *previous, diag);
     return false;
   }
-  by_name_.emplace(name.text, symbols_.size());
   symbols_.push_back({kind, index, name.text, name.range});
+  by_name_.emplace(symbols_.back().name, static_cast<std::uint32_t>(symbols_.size() - 1));
   return true;
 }
 
-const Symbol *Namespace::find(const std::string &name) const {
+const Symbol *Namespace::find(std::string_view name) const {
   auto it = by_name_.find(name);
   return it == by_name_.end() ? nullptr : &symbols_[it->second];
 }

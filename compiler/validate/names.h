@@ -5,9 +5,12 @@
 #include "ast.h"
 #include "diagnostics.h"
 
+#include <cstdint>
+#include <deque>
 #include <initializer_list>
-#include <map>
 #include <string>
+#include <string_view>
+#include <unordered_map>
 #include <vector>
 
 namespace gfec::validation {
@@ -52,13 +55,15 @@ public:
   /// Declares `name`. A clash is reported (with a note at the first declaration) and returns
   /// false; so does an empty name, which only a recovered syntax error produces.
   bool declare(const ast::Name &name, Sym kind, int index, Diagnostics &diag);
-  const Symbol *find(const std::string &name) const;
+  const Symbol *find(std::string_view name) const;
   /// The symbols of the given kinds in declaration order: did-you-mean candidates.
   std::vector<const Symbol *> of(std::initializer_list<Sym> kinds) const;
 
 private:
-  std::map<std::string, std::size_t> by_name_;
-  std::vector<Symbol> symbols_;
+  // A chart may declare a million names: each is stored once, in its Symbol (a deque keeps it
+  // in place), and the index looks it up through a view of that copy (docs/performance.md).
+  std::deque<Symbol> symbols_;
+  std::unordered_map<std::string_view, std::uint32_t> by_name_;
 };
 
 /// Reports (check `reserved-name`) a name that generated C or C++ reserves (compiler/naming/:

@@ -16,11 +16,11 @@ struct TopDecl {
   std::function<void()> declare;
 };
 
-std::vector<TopDecl> top_level_of(Context &cx, const ast::File &file) {
+std::vector<TopDecl> top_level_of(Context &cx, ast::File &file) {
   std::vector<TopDecl> decls;
   for (const auto &i : file.interfaces) decls.push_back({i.range.begin, [&cx, &i] { declare_interface(cx, i); }});
   for (const auto &c : file.consts) decls.push_back({c.range.begin, [&cx, &c] { declare_file_const(cx, c); }});
-  for (const auto &c : file.charts) decls.push_back({c.range.begin, [&cx, &c] { declare_chart(cx, c); }});
+  for (auto &c : file.charts) decls.push_back({c.range.begin, [&cx, &c] { declare_chart(cx, c); }});
   for (const auto &t : file.toolboxes) decls.push_back({t.range.begin, [&cx, &t] { declare_toolbox(cx, t); }});
   for (const auto &p : file.plans) decls.push_back({p.range.begin, [&cx, &p] { declare_plan(cx, p); }});
   std::stable_sort(decls.begin(), decls.end(), [](const TopDecl &a, const TopDecl &b) { return a.begin < b.begin; });

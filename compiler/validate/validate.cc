@@ -25,13 +25,12 @@ void collect_verbatims(validation::Context &cx) {
 
 }  // namespace
 
-model::Model validate(const ast::Program &program, const SourceManager &sources, Diagnostics &diag) {
+model::Model validate(ast::Program &program, const SourceManager &sources, Diagnostics &diag) {
   scenario::Suite tests;
   return validate(program, sources, diag, tests);
 }
 
-model::Model validate(const ast::Program &program, const SourceManager &sources, Diagnostics &diag,
-                      scenario::Suite &tests) {
+model::Model validate(ast::Program &program, const SourceManager &sources, Diagnostics &diag, scenario::Suite &tests) {
   model::Model model;
   model.sources = &sources;
   if (!program.files.empty() && program.files.front()) model.main_file = program.files.front()->id;

@@ -198,31 +198,37 @@ void lower_values(Context &cx, ChartScope &s) {
 void lower_bodies(Context &cx, ChartScope &s) {
   ExprScope scope{cx, &s, false};
   for (std::size_t i = 0; i < s.ast.places.size(); ++i) {
-    const ast::Place &p = s.ast.places[i];
+    ast::Place &p = s.ast.places[i];
     model::Place &out = s.out.places[i];
     out.action = lower_block(p.action, scope);
     if (p.entry) out.entry = lower_block(*p.entry, scope);
     if (p.exit) out.exit = lower_block(*p.exit, scope);
+    // Lowered: the tree's statements are no longer needed, and a chart of a million places
+    // should not hold both forms at once (docs/performance.md).
+    ast::Block().swap(p.action);
+    p.entry.reset();
+    p.exit.reset();
   }
 }
 
 }  // namespace
 
 void lower_transition_condition(Context &cx, ChartScope &s, std::size_t index) {
-  const ast::Transition &t = s.ast.transitions[index];
+  ast::Transition &t = s.ast.transitions[index];
   if (!t.condition) return;
   ExprScope scope{cx, &s, false};
   s.out.transitions[index].condition = lower_condition(t.condition.get(), scope, "condition");
+  t.condition.reset();  // lowered: see lower_bodies
 }
 
-std::optional<bool> constant_condition(const std::optional<model::Expr> &condition, const model::Model &model) {
+std::optional<bool> constant_condition(const HeapOptional<model::Expr> &condition, const model::Model &model) {
   if (!condition) return true;
   auto v = evaluate(*condition, model, nullptr);
   if (!v || v->type != model::Type::Bool) return std::nullopt;
   return v->b;
 }
 
-void declare_chart(Context &cx, const ast::Chart &chart) {
+void declare_chart(Context &cx, ast::Chart &chart) {
   model::Chart out;
   out.kind = chart.kind == ast::Chart::Kind::Fsm ? model::Chart::Kind::Fsm : model::Chart::Kind::Sfc;
   out.name = chart.name.text;

@@ -92,11 +92,11 @@ public:
   void block(const std::vector<model::Stmt> &b, const model::Chart &chart) {
     for (const auto &s : b) {
       if (s.kind == model::Stmt::Kind::Call) {
-        expect(s.call.kind == model::Expr::Kind::Call, "a call statement holds a call");
-        expr(s.call, &chart);
+        expect(s.expr.kind == model::Expr::Kind::Call, "a call statement holds a call");
+        expr(s.expr, &chart);
       } else if (s.kind == model::Stmt::Kind::Assign) {
         expect(in(s.var, chart.vars.size()), "an assigned var in range");
-        expr(s.value, &chart);
+        expr(s.expr, &chart);
       }
     }
   }

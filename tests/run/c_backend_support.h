@@ -179,7 +179,7 @@ public:
   Stmt act(const std::string &name, std::vector<Expr> args = {}) {
     Stmt s;
     s.kind = Stmt::Kind::Call;
-    s.call = call(name, std::move(args));
+    s.expr = call(name, std::move(args));
     s.range = next_range();
     return s;
   }
@@ -188,7 +188,7 @@ public:
     s.kind = Stmt::Kind::Assign;
     s.var = var_index(var);
     s.op = op;
-    s.value = std::move(value);
+    s.expr = std::move(value);
     s.range = next_range();
     return s;
   }

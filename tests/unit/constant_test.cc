@@ -186,9 +186,9 @@ TEST_CASE("the model keeps each literal's value next to its spelling", "[constan
   CHECK(chart.vars.at(0).init->int_value == 10);
   CHECK(chart.vars.at(0).init->text == "010");
   const auto &action = chart.places.at(0).action;
-  CHECK(action.at(0).call.args.at(0).float_value == 0.1);
-  CHECK(action.at(0).call.args.at(0).text == "0.1");
-  const model::Expr &sum = action.at(1).call.args.at(0);
+  CHECK(action.at(0).expr.args.at(0).float_value == 0.1);
+  CHECK(action.at(0).expr.args.at(0).text == "0.1");
+  const model::Expr &sum = action.at(1).expr.args.at(0);
   CHECK_FALSE(sum.folded);  // reads a var: computed on the robot
   CHECK(sum.args.at(1).int_value == 7);
 }
@@ -210,7 +210,7 @@ TEST_CASE("constant expressions are folded once, with C's float rounding", "[con
   CHECK(r.constant("ZERO").value.float_value == 0);
   CHECK(r.constant("E").value.float_value == static_cast<double>(tenth));
   CHECK(r.constant("K").value.int_value == 20);
-  const model::Expr &arg = r.model.charts.at(0).places.at(0).action.at(0).call.args.at(1);
+  const model::Expr &arg = r.model.charts.at(0).places.at(0).action.at(0).expr.args.at(1);
   CHECK(arg.folded);
   CHECK(arg.int_value == 9);
   CHECK(arg.args.at(0).folded);  // (K - 1): the bracket carries its value too

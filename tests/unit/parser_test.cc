@@ -330,10 +330,10 @@ sfc Top {
   REQUIRE(active_path.args.size() == 1);
   const ast::Expr &path = *active_path.args[0];
   REQUIRE(path.kind == ast::Expr::Kind::Path);
-  REQUIRE(path.path.size() == 3);
-  CHECK(path.path[0].text == "Search");
-  CHECK(path.path[1].text == "Grab");
-  CHECK(path.path[2].text == "Hand");
+  REQUIRE(path.args.size() == 3);
+  CHECK(path.args[0]->name.text == "Search");
+  CHECK(path.args[1]->name.text == "Grab");
+  CHECK(path.args[2]->name.text == "Hand");
   const ast::Expr &active_one = *cond.args[1]->args[0];
   REQUIRE(active_one.args.size() == 1);
   CHECK(active_one.args[0]->kind == ast::Expr::Kind::Name);

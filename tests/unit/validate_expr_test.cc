@@ -615,7 +615,7 @@ fsm M {
   REQUIRE(action.size() == 2);
   const model::Stmt &first = action[0];
   CHECK(first.kind == model::Stmt::Kind::If);
-  CHECK(first.value.type == model::Type::Bool);
+  CHECK(first.expr.type == model::Type::Bool);
   CHECK(first.then_block.size() == 2);
   CHECK(first.else_if);
   REQUIRE(first.else_block.size() == 1);

@@ -127,12 +127,12 @@ TEST_CASE("validate model: a chart's constants, vars and what it reads", "[valid
   CHECK(add.kind == model::Stmt::Kind::Assign);
   CHECK(add.var == 0);
   CHECK(add.op == AssignOp::Add);
-  CHECK(add.value.kind == model::Expr::Kind::Int);
+  CHECK(add.expr.kind == model::Expr::Kind::Int);
   const auto &set = c.places[0].action[1];
   CHECK(set.var == 1);
-  CHECK(set.value.kind == model::Expr::Kind::Binary);
-  CHECK(set.value.args[0].kind == model::Expr::Kind::Var);
-  CHECK(set.value.args[0].index == 0);
+  CHECK(set.expr.kind == model::Expr::Kind::Binary);
+  CHECK(set.expr.args[0].kind == model::Expr::Kind::Var);
+  CHECK(set.expr.args[0].index == 0);
 }
 
 TEST_CASE("validate model: durations become whole ticks, rounded up", "[validate]") {

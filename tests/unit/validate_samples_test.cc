@@ -64,7 +64,7 @@ TEST_CASE("validate: the line follower sample", "[validate]") {
   CHECK(c.functions == std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7});
   REQUIRE(c.places[0].action.size() == 1);
   CHECK(c.places[0].action[0].kind == model::Stmt::Kind::Call);
-  CHECK(s.model.functions[c.places[0].action[0].call.index].name == "Left_FW");
+  CHECK(s.model.functions[c.places[0].action[0].expr.index].name == "Left_FW");
 }
 
 TEST_CASE("validate: the clean-up sample", "[validate]") {
