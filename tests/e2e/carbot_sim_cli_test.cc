@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <string>
+#include <string_view>
 
 #include "support.h"
 
@@ -134,10 +136,10 @@ TEST_CASE("carbot-sim: command-line numbers are finite and in range; the run has
       q(e2e::source("samples/line_follower.sfc")) + " --world " + q(e2e::source("sim/worlds/oval.json")) + " -q";
   std::string out;
   // nan and 1e17 once ran zero ticks and exited 0; 1e300 overflowed the tick count.
-  for (const std::string &bad : {"--seconds nan", "--seconds 1e17", "--seconds -1", "--period 1e300", "--period inf",
+  for (std::string_view bad : {"--seconds nan", "--seconds 1e17", "--seconds -1", "--period 1e300", "--period inf",
                                  "--physics-step 0", "--physics-step nan", "--timeout -1", "--seconds 5x"}) {
     INFO(bad);
-    CHECK(run_cli(base + " " + bad, out, dir) == 2);
+    CHECK(run_cli(base + " " + std::string(bad), out, dir) == 2);
     CHECK(out.find(bad.substr(0, bad.find(' '))) != std::string::npos);  // names the option
   }
   // The tick budget: 1e5 s at a 10 us physics step is 1e10 steps.
