@@ -137,7 +137,7 @@ TEST_CASE("carbot-sim: command-line numbers are finite and in range; the run has
   std::string out;
   // nan and 1e17 once ran zero ticks and exited 0; 1e300 overflowed the tick count.
   for (std::string_view bad : {"--seconds nan", "--seconds 1e17", "--seconds -1", "--period 1e300", "--period inf",
-                                 "--physics-step 0", "--physics-step nan", "--timeout -1", "--seconds 5x"}) {
+                               "--physics-step 0", "--physics-step nan", "--timeout -1", "--seconds 5x"}) {
     INFO(bad);
     CHECK(run_cli(base + " " + std::string(bad), out, dir) == 2);
     CHECK(out.find(bad.substr(0, bad.find(' '))) != std::string::npos);  // names the option
