@@ -26,7 +26,9 @@ struct Context {
   bool sequential() const { return layout.form == Layout::Form::Sequential; }
   bool sparse() const { return layout.form == Layout::Form::Sparse; }
   /// The readable form's counter type: as narrow as the proven bound allows, else GFE's unsigned.
-  const char *readable_counter() const { return layout.bounded ? uint_type(layout.counter_bits) : "unsigned"; }
+  const char *readable_counter() const {
+    return layout.activation.bounded ? uint_type(layout.counter_bits) : "unsigned";
+  }
 
   // ------------------------------------------------------------ names in the generated code
   std::string type;                           ///< the prefix of every global name: the chart's name, or for a

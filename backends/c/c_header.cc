@@ -85,8 +85,9 @@ void state_struct(CodeWriter &w, const Context &c) {
   } else if (c.sparse()) {
     const Layout &l = c.layout;
     rows.emplace_back(fmt::format("{} {}[{}];", uint_type(l.counter_bits), c.av, c.count_text()),
-                      l.bounded ? fmt::format("activation counter of each place (never above {})", l.bound)
-                                : "activation counter of each place (saturates)");
+                      l.activation.bounded
+                          ? fmt::format("activation counter of each place (never above {})", l.activation.place)
+                          : "activation counter of each place (saturates)");
     rows.emplace_back(fmt::format("uint32_t {}[{}];", c.active, l.active.words()),
                       "the active places: bits, and summary levels of them");
     if (!l.place_driven)
@@ -94,8 +95,8 @@ void state_struct(CodeWriter &w, const Context &c) {
                         "the transitions to try in a tick (empty between ticks)");
   } else {
     rows.emplace_back(fmt::format("{} {}[{}];", c.readable_counter(), c.av, c.count_text()),
-                      c.layout.bounded
-                          ? fmt::format("activation counter of each place (never above {})", c.layout.bound)
+                      c.layout.activation.bounded
+                          ? fmt::format("activation counter of each place (never above {})", c.layout.activation.place)
                           : "activation counter of each place");
   }
   for (std::size_t p = 0; p < c.chart.places.size(); ++p)
@@ -169,18 +170,15 @@ void instance_api(CodeWriter &w, const Context &c) {
   w.line("typedef enum {");
   w.indent();
   std::vector<std::pair<std::string, std::string>> rows;
+  std::string example;  // the first instance's first place names the numbering by example
   c.each_instance("", [&](const Context &s, const std::string &) {
     rows.emplace_back(s.instance_const + ",", fmt::format("{}, run by {}", s.chart.name, s.owner));
+    if (example.empty()) example = s.place_const.at(0);
   });
   aligned(w, rows);
   w.line("{}", c.instance_count);
   w.dedent();
   w.line("}} {};", c.instance_type);
-  // The first instance's first place names the numbering by example.
-  std::string example;
-  c.each_instance("", [&](const Context &s, const std::string &) {
-    if (example.empty()) example = s.place_const.at(0);
-  });
   w.line("/* The activation of place `place` of instance `instance`, the place numbered as in that");
   w.line("   instance's enumeration ({}, ...), as {}_activation tells the root's:", example, t);
   w.line("   where the instance is while the place that runs it is active, else where its last tick");

@@ -49,16 +49,16 @@ void plan_lists(const model::Chart &c, Layout &l) {
     all += t.outputs.size();
   }
   l.add_capacity = all;
-  if (l.bounded && l.tokens < outputs.size()) {
+  if (l.activation.bounded && l.activation.total < outputs.size()) {
     // Each transition fires at most once a tick and consumes activation present at its start,
     // so at most `tokens` fire: the most outputs they can have is the `tokens` largest counts.
     std::sort(outputs.begin(), outputs.end(), std::greater<>());
     std::size_t most = 0;
-    for (std::size_t i = 0; i < l.tokens; ++i) most += outputs[i];
+    for (std::size_t i = 0; i < l.activation.total; ++i) most += outputs[i];
     l.add_capacity = most;
   }
   std::size_t watched = static_cast<std::size_t>(std::count(l.watched.begin(), l.watched.end(), true));
-  l.watch_capacity = l.bounded ? std::min<std::uint64_t>(watched, l.tokens) : watched;
+  l.watch_capacity = l.activation.bounded ? std::min<std::uint64_t>(watched, l.activation.total) : watched;
   if (l.watch_capacity == 0) return;
   // At most `tokens` places are active at once, so at most that many fall to 0 or rise from 0
   // in a tick; and only a watched place some transition consumes from (produces into) can.
@@ -70,7 +70,7 @@ void plan_lists(const model::Chart &c, Layout &l) {
   auto capacity = [&](const std::vector<bool> &moved) {
     std::size_t n = 0;
     for (std::size_t p = 0; p < c.places.size(); ++p) n += l.watched[p] && moved[p] ? 1 : 0;
-    return std::max<std::size_t>(1, l.bounded ? std::min<std::uint64_t>(n, l.tokens) : n);
+    return std::max<std::size_t>(1, l.activation.bounded ? std::min<std::uint64_t>(n, l.activation.total) : n);
   };
   l.lost_capacity = capacity(consumed);
   l.gained_capacity = capacity(produced);
@@ -97,15 +97,13 @@ Layout plan_layout(const model::Chart &chart, EngineForm requested, std::vector<
   Layout l;
   l.watched = std::move(watched);
   // The bound is a fact of the model, proven once by the analyses (analysis/activation_bounds.h).
-  l.bounded = chart.activation.bounded;
-  l.bound = chart.activation.place;
-  l.tokens = chart.activation.total;
-  l.counter_bits = l.bounded ? bits_for(l.bound) : 32;
+  l.activation = chart.activation;
+  l.counter_bits = l.activation.bounded ? bits_for(l.activation.place) : 32;
   const bool sequential = is_sequential(chart);
   // `auto`: the scalable form pays per active place for its bookkeeping, so it wins only where
   // little of a large chart is active at once; a chart that keeps a quarter of its places or more
   // active (as many parallel branches do) runs faster in the readable form.
-  const bool concurrent = l.bounded && l.tokens * 4 > chart.places.size();
+  const bool concurrent = l.activation.bounded && l.activation.total * 4 > chart.places.size();
   bool scalable =
       requested == EngineForm::Scalable ||
       (requested == EngineForm::Auto && chart.places.size() > kReadableMaxPlaces && (sequential || !concurrent));
@@ -116,7 +114,7 @@ Layout plan_layout(const model::Chart &chart, EngineForm requested, std::vector<
     if (chart.places.size() > kSplitAbovePlaces) l.part_places = kPartPlaces;
     return l;
   }
-  l.saturate = !l.bounded;
+  l.saturate = !l.activation.bounded;
   l.place_driven = choose_owners(chart, l.owner);
   l.active = bit_levels(chart.places.size());
   if (!l.place_driven) l.candidates = bit_levels(chart.transitions.size());

@@ -47,12 +47,10 @@ struct Layout {
   enum class Form { Readable, Sequential, Sparse };
   Form form = Form::Readable;
 
-  // ---- bounds (the model's model::Chart::activation; the sparse form sizes its counters by them)
-  bool bounded = false;      ///< activation is proven bounded
-  std::uint64_t bound = 0;   ///< bounded: no place's counter ever exceeds this
-  std::uint64_t tokens = 0;  ///< bounded: the total activation never exceeds this
-  int counter_bits = 32;     ///< 8, 16 or 32: the narrowest type that holds `bound`
-  bool saturate = true;      ///< not bounded: counters stop at UINT32_MAX instead of wrapping
+  // ---- bounds (the sparse form sizes its counters by them)
+  model::ActivationBound activation;  ///< the chart's, as the analyses proved it (model::Chart::activation)
+  int counter_bits = 32;              ///< 8, 16 or 32: the narrowest type that holds activation.place
+  bool saturate = true;               ///< not bounded: counters stop at UINT32_MAX instead of wrapping
 
   // ---- the sequential form
   std::size_t part_places = 0;  ///< 0: one run function; else the switches' parts of this many places

@@ -105,12 +105,16 @@ bool RunWriter::any_actions() const {
   return false;
 }
 
-std::vector<model::Stmt> RunWriter::exit_of(int p) const {
-  return has_code(c_.place(p).exit) ? *c_.place(p).exit : std::vector<model::Stmt>{};
+namespace {
+const std::vector<model::Stmt> kNoStatements;
 }
 
-std::vector<model::Stmt> RunWriter::entry_of(int p) const {
-  return has_code(c_.place(p).entry) ? *c_.place(p).entry : std::vector<model::Stmt>{};
+const std::vector<model::Stmt> &RunWriter::exit_of(int p) const {
+  return has_code(c_.place(p).exit) ? *c_.place(p).exit : kNoStatements;
+}
+
+const std::vector<model::Stmt> &RunWriter::entry_of(int p) const {
+  return has_code(c_.place(p).entry) ? *c_.place(p).entry : kNoStatements;
 }
 
 std::vector<std::string> RunWriter::entry_first(int p) const {

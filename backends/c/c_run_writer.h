@@ -57,8 +57,9 @@ protected:
   bool any_exits() const;
   /// Some place acts: runs an action block or ticks an instance.
   bool any_actions() const;
-  std::vector<model::Stmt> exit_of(int p) const;
-  std::vector<model::Stmt> entry_of(int p) const;
+  /// A place's exit (entry) block, or an empty one: a reference, never a copy of the block.
+  const std::vector<model::Stmt> &exit_of(int p) const;
+  const std::vector<model::Stmt> &entry_of(int p) const;
   /// The engine's lines before a place's entry block: its timer reset, its instance started.
   std::vector<std::string> entry_first(int p) const;
 

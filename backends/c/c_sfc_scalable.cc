@@ -305,7 +305,10 @@ private:
     w_.line("/* The place each place moves to when its update part says that its transition fired (a place");
     w_.line("   with several transitions to try moves itself, and its entry is its own) */");
     std::vector<std::string> next;
-    for (int p = 0; p < places(); ++p) next.push_back(constant(single_move(p) >= 0 ? single_move(p) : p));
+    for (int p = 0; p < places(); ++p) {
+      const int to = single_move(p);
+      next.push_back(constant(to >= 0 ? to : p));
+    }
     table(fmt::format("static const {} {}[{}]", place_type(), c_.part_next(), places()), next);
   }
 

@@ -54,8 +54,8 @@ TEST_CASE("c layout: a ring with one token is sequential and 1-bounded", "[c_bac
   auto b = ring(300);
   Layout l = layout_of(b);
   CHECK(l.form == Layout::Form::Sequential);
-  CHECK(l.bounded);
-  CHECK(l.bound == 1);
+  CHECK(l.activation.bounded);
+  CHECK(l.activation.place == 1);
   CHECK(l.index_bits == 16);  // 300 places do not fit a byte
 }
 
@@ -81,9 +81,9 @@ TEST_CASE("c layout: a fork is bounded by its weights; counters are a byte", "[c
   CHECK(readable.counter_bits == 8);
   Layout l = layout_of(b, EngineForm::Scalable);
   CHECK(l.form == Layout::Form::Sparse);
-  CHECK(l.bounded);
-  CHECK(l.bound == 100);
-  CHECK(l.tokens == 100);
+  CHECK(l.activation.bounded);
+  CHECK(l.activation.place == 100);
+  CHECK(l.activation.total == 100);
   CHECK(l.counter_bits == 8);
   CHECK_FALSE(l.saturate);
   CHECK(l.place_driven);
@@ -101,7 +101,7 @@ TEST_CASE("c layout: the lists of places that fell and rose are sized by consump
   b.transition({"Start"}, {"A", "B", "C"});
   Layout l = plan_layout(analysed(b), EngineForm::Scalable, std::vector<bool>(4, true));
   REQUIRE(l.form == Layout::Form::Sparse);
-  CHECK(l.tokens == 3);
+  CHECK(l.activation.total == 3);
   CHECK(l.watch_capacity == 3);
   CHECK(l.lost_capacity == 1);
   CHECK(l.gained_capacity == 3);
@@ -125,7 +125,7 @@ TEST_CASE("c layout: auto takes the scalable form for a large chart little of wh
   for (int i = 0; i < 30; ++i)
     for (int k = 0; k < 4; ++k) b.transition({fmt::format("P{}_{}", i, k)}, {fmt::format("P{}_{}", i, (k + 1) % 4)});
   Layout l = layout_of(b);
-  CHECK(l.tokens == 30);
+  CHECK(l.activation.total == 30);
   CHECK(l.form == Layout::Form::Sparse);
 }
 
@@ -137,7 +137,7 @@ TEST_CASE("c layout: a chart that pumps activation is unbounded; counters satura
   b.transition({"Q"}, {"P"});
   Layout l = layout_of(b, EngineForm::Scalable);
   CHECK(l.form == Layout::Form::Sparse);
-  CHECK_FALSE(l.bounded);
+  CHECK_FALSE(l.activation.bounded);
   CHECK(l.counter_bits == 32);
   CHECK(l.saturate);
   CHECK(l.add_capacity == 3);  // every transition may fire: all their outputs
@@ -151,9 +151,9 @@ TEST_CASE("c layout: joins and forks in balance give a bound of the initial weig
   b.transition({"A"}, {"B", "C"});
   b.transition({"B", "C"}, {"A"});
   Layout l = layout_of(b, EngineForm::Scalable);
-  CHECK(l.bounded);
-  CHECK(l.tokens == 3);
-  CHECK(l.bound == 3);
+  CHECK(l.activation.bounded);
+  CHECK(l.activation.total == 3);
+  CHECK(l.activation.place == 3);
 }
 
 TEST_CASE("c layout: owners follow declaration order, or candidates are needed", "[c_backend][layout]") {
