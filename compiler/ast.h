@@ -5,6 +5,7 @@
 #pragma once
 
 #include "heap_optional.h"
+#include "heap_vector.h"
 #include "operators.h"
 #include "source.h"
 
@@ -17,8 +18,10 @@
 
 namespace gfec::ast {
 
+/// A name as written. The text is a view into the source text or, for a name a reader made up
+/// (ALICA plans), into File::strings; both outlive the tree, so no name owns a copy.
 struct Name {
-  std::string text;
+  std::string_view text;
   SourceRange range;
 };
 
@@ -32,8 +35,8 @@ struct Expr {
     Bool,      ///< `true` / `false`: bool_value
     Int,       ///< `42`: text is the spelling
     Float,     ///< `0.5`, `1e-3`: text is the spelling
-    String,    ///< `"..."`: text is the decoded value (File::strings), spelling the literal as written
-    Duration,  ///< `10ms`, `1.5s`: milliseconds in duration_ms
+    String,    ///< `"..."`: text is the decoded value (File::strings)
+    Duration,  ///< `10ms`, `1.5s`: milliseconds in duration_ms, text is the spelling
     Name,      ///< a variable, constant or config entry: name
     Call,      ///< `f(a, b)` (also `elapsed(P)`): name + args
     Unary,     ///< unary_op + args[0]
@@ -48,10 +51,9 @@ struct Expr {
   bool bool_value = false;
   SourceRange range;
   double duration_ms = 0;
-  /// Int, Float: the spelling; String: the decoded value. Points into the source text or into
-  /// File::strings, both of which outlive the tree: no node owns a copy.
+  /// Int, Float, Duration: the spelling; String: the decoded value. Points into the source text
+  /// or into File::strings, both of which outlive the tree: no node owns a copy.
   std::string_view text;
-  std::string_view spelling;  ///< the literal as written: points into the source text
   Name name;
   std::vector<ExprPtr> args;
 };
@@ -65,12 +67,14 @@ struct Stmt {
   bool has_else = false;  ///< Kind::If: `else` was written
   bool else_if = false;   ///< Kind::If: else_block is exactly the `if` of an `else if`
   SourceRange range;
-  ExprPtr call;                  ///< Kind::Call: an Expr of Kind::Call
-  Name target;                   ///< Kind::Assign
-  ExprPtr value;                 ///< Kind::Assign; Kind::If: the condition
-  std::string verbatim;          ///< Kind::Verbatim: the text between %{ and %}
-  std::vector<Stmt> then_block;  ///< Kind::If
-  std::vector<Stmt> else_block;  ///< Kind::If: empty without `else`; `else if` is one If in it
+  ExprPtr call;   ///< Kind::Call: an Expr of Kind::Call
+  ExprPtr value;  ///< Kind::Assign; Kind::If: the condition
+  // What only one kind of statement has lives on the heap, a pointer wide when absent: a chart
+  // may hold a million statements (docs/performance.md).
+  HeapOptional<Name> target;           ///< Kind::Assign
+  HeapOptional<std::string> verbatim;  ///< Kind::Verbatim: the text between %{ and %}
+  HeapVector<Stmt> then_block;         ///< Kind::If
+  HeapVector<Stmt> else_block;         ///< Kind::If: empty without `else`; `else if` is one If in it
 };
 
 using Block = std::vector<Stmt>;

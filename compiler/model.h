@@ -6,6 +6,8 @@
 #pragma once
 
 #include "heap_optional.h"
+#include "heap_vector.h"
+#include "index_list.h"
 #include "operators.h"
 #include "source.h"
 
@@ -26,11 +28,11 @@ inline bool is_numeric(Type t) { return t == Type::Int || t == Type::Float || t 
 
 struct Expr {
   enum class Kind : std::uint8_t {
-    Bool,     ///< bool_value
-    Int,      ///< text: the spelling, e.g. "42"; int_value: its value
-    Float,    ///< text: the spelling, e.g. "0.5", "1e-3"; float_value: its value as a double
-    String,   ///< text: the decoded value
-    Ticks,    ///< a duration in an sfc/fsm, converted to whole ticks (rounded up): ticks; ms kept
+    Bool,    ///< bool_value
+    Int,     ///< text: the spelling, e.g. "42"; int_value: its value
+    Float,   ///< text: the spelling, e.g. "0.5", "1e-3"; float_value: its value as a double
+    String,  ///< text: the decoded value
+    Ticks,  ///< a duration in an sfc/fsm, converted to whole ticks (rounded up): ticks; float_value keeps the milliseconds
     Var,      ///< index into Chart::vars
     Const,    ///< index into Model::consts
     Config,   ///< index into Plan::config
@@ -63,11 +65,12 @@ struct Expr {
   int index = -1;
   std::int32_t int_value = 0;
   unsigned long ticks = 0;
-  double ms = 0;
-  double float_value = 0;  ///< the value as a double; converted to `type` it is the expression's value
+  /// The value as a double; converted to `type` it is the expression's value. Kind::Ticks: the
+  /// duration as written, in milliseconds (no Ticks expression has a float value of its own).
+  double float_value = 0;
   std::string text;
   std::vector<Expr> args;
-  std::vector<int> path;  ///< Kind::Active
+  HeapVector<int> path;  ///< Kind::Active (on the heap: only `active(P.Q)` has one)
 };
 
 struct Stmt {
@@ -81,10 +84,12 @@ struct Stmt {
   /// Kind::Assign: the value; Kind::If: the condition (Bool). One expression per statement:
   /// a chart may hold a million statements (docs/performance.md).
   Expr expr;
-  std::string verbatim;          ///< Kind::Verbatim
   std::uint32_t code_begin = 0;  ///< Kind::Verbatim: where `verbatim` starts in range.file (after `%{`); 0: unknown
-  std::vector<Stmt> then_block;  ///< Kind::If
-  std::vector<Stmt> else_block;  ///< Kind::If: empty when there is no `else`
+  // What only some kinds of statement have lives on the heap, a pointer wide when absent: a
+  // place's action is one statement of a million in a large chart (docs/performance.md).
+  HeapOptional<std::string> verbatim;  ///< Kind::Verbatim
+  HeapVector<Stmt> then_block;         ///< Kind::If
+  HeapVector<Stmt> else_block;         ///< Kind::If: empty when there is no `else`
 };
 
 // ---------------------------------------------------------------- interface
@@ -140,8 +145,8 @@ struct Place {
 
 struct Transition {
   std::string name;  ///< the user's name, or T<position> among all transitions
-  std::vector<int> inputs;
-  std::vector<int> outputs;
+  IndexList inputs;  ///< places, each once (two kept inline: index_list.h)
+  IndexList outputs;
   /// absent: `when true`. On the heap, so that the transitions table of a large chart is
   /// small while the validator fills it in (docs/performance.md).
   HeapOptional<Expr> condition;

@@ -139,7 +139,7 @@ private:
 
   Name name(std::string_view context = {}) {
     Token t = expect(Tok::Ident, context);
-    return {std::string(t.text), t.range};
+    return {t.text, t.range};
   }
   TypeName type_name(std::string_view context = {}) {
     Token t = expect(Tok::Ident, context.empty() ? std::string_view("(a type name)") : context);
@@ -649,7 +649,7 @@ Rule Parser::rule() {
   if (at(Tok::KwTerminate) || at(Tok::KwIgnore)) {
     Token t = take();
     r.target = t.kind == Tok::KwTerminate ? Rule::Target::Terminate : Rule::Target::Ignore;
-    r.target_name = {std::string(t.text), t.range};
+    r.target_name = {t.text, t.range};
   } else {
     r.target_name = name("(an actor, 'terminate' or 'ignore')");
   }
@@ -846,7 +846,7 @@ ExprPtr Parser::primary() {
     // `team(S)`: a built-in like `elapsed(P)`, though its name is a keyword (`team N;`).
     Token t = take();
     auto e = make(Expr::Kind::Call, t.range);
-    e->name = {std::string(t.text), t.range};
+    e->name = {t.text, t.range};
     if (!at(Tok::LParen)) fail("expected '(' after 'team' (team(S) counts the other agents in state S)");
     e->args = arguments();
     e->range = from(begin);
@@ -864,21 +864,19 @@ ExprPtr Parser::primary() {
     }
     auto e = make(t.kind == Tok::Int ? Expr::Kind::Int : Expr::Kind::Float, t.range);
     e->text = t.text;
-    e->spelling = t.text;
     return e;
   }
   case Tok::String: {
     Token t = take();
     auto e = make(Expr::Kind::String, t.range);
     e->text = out_->strings.emplace_back(std::move(t.value));
-    e->spelling = t.text;
     return e;
   }
   case Tok::Duration: {
     Token t = take();
     auto e = make(Expr::Kind::Duration, t.range);
     e->duration_ms = t.duration_ms;
-    e->spelling = t.text;
+    e->text = t.text;
     return e;
   }
   case Tok::KwTrue:
@@ -960,7 +958,6 @@ void Parser::test_step(Test &test) {
       step.count = count_of(n);
       step.value = make(Expr::Kind::Int, n.range);
       step.value->text = n.text;
-      step.value->spelling = n.text;
     } else if (!at(Tok::Semi)) {
       fail("expected a number of ticks or ';' after 'tick'");
     }
@@ -990,7 +987,7 @@ ExprPtr Parser::test_operand() {
   if (at_word("called") || at_word("calls")) {
     Token word = take();
     auto e = make(Expr::Kind::Call, word.range);
-    e->name = {std::string(word.text), word.range};
+    e->name = {word.text, word.range};
     Name f = name(word.text == "called" ? "(the function) after 'called'" : "(the function) after 'calls'");
     auto target = make(Expr::Kind::Name, f.range);
     if (word.text == "called" && at(Tok::LParen)) {

@@ -229,7 +229,7 @@ public:
     case Expr::Kind::Int:
     case Expr::Kind::Float:
     case Expr::Kind::String: return literal(e);
-    case Expr::Kind::Ticks: return {fmt::format("{}u /* {}ms */", e.ticks, e.ms)};
+    case Expr::Kind::Ticks: return {fmt::format("{}u /* {}ms */", e.ticks, e.float_value)};
     case Expr::Kind::Var: return {c_.field(c_.var_field.at(static_cast<std::size_t>(e.index)))};
     case Expr::Kind::Const: return constant(e);
     case Expr::Kind::Call: return call(e);
@@ -304,7 +304,7 @@ private:
   /// at the start of the tick in a condition; the instances as they are, they are never in the
   /// middle of a tick when the parent's code runs), then the fsm instance's status. Bracketed.
   Rendered activity(const Expr &e) const {
-    std::vector<int> path = e.kind == Expr::Kind::Active ? e.path : std::vector<int>{e.index};
+    std::vector<int> path = e.kind == Expr::Kind::Active ? e.path.get() : std::vector<int>{e.index};
     const Context *c = &c_;
     std::string obj, text;
     for (std::size_t k = 0; k < path.size(); ++k) {
@@ -598,7 +598,7 @@ public:
   void list(const std::vector<model::Stmt> &stmts) {
     for (const auto &s : stmts) {
       if (s.kind == model::Stmt::Kind::Verbatim) {
-        emit_verbatim(w_, sources_, s.range, s.verbatim, s.code_begin);
+        emit_verbatim(w_, sources_, s.range, *s.verbatim, s.code_begin);
         next_ = 0;
         ++at_;
         continue;

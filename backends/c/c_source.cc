@@ -315,7 +315,7 @@ void name_functions(CodeWriter &w, const Context &c) {
 }  // namespace
 
 std::string transition_label(const Context &c, const model::Transition &t) {
-  auto side = [&](const std::vector<int> &places) {
+  auto side = [&](const IndexList &places) {
     std::string s;
     for (int p : places) s += (s.empty() ? "" : ", ") + c.place(p).name;
     return places.size() == 1 ? s : "(" + s + ")";

@@ -92,7 +92,7 @@ void place(CodeWriter &w, const model::Model &m, int chart, const model::Place &
   w.line("}");
 }
 
-std::string places(const model::Chart &c, const std::vector<int> &list) {
+std::string places(const model::Chart &c, const IndexList &list) {
   if (list.size() == 1) return c.places[static_cast<std::size_t>(list[0])].name;
   std::string out;
   for (int p : list) out += (out.empty() ? "" : ", ") + c.places[static_cast<std::size_t>(p)].name;

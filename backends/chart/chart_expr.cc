@@ -29,7 +29,7 @@ std::string expr(const model::Model &m, int chart, const model::Expr &e) {
   case K::Int:
   case K::Float: return e.text;
   case K::String: return c_string_literal(e.text);
-  case K::Ticks: return duration(e.ms);
+  case K::Ticks: return duration(e.float_value);
   case K::Var: return c.vars[static_cast<std::size_t>(e.index)].name;
   case K::Const: return m.consts[static_cast<std::size_t>(e.index)].name;
   case K::Config: return m.plans.empty() ? "?" : "?";  // plans are not converted (see chart_backend.cc)
@@ -71,7 +71,7 @@ void statements(CodeWriter &w, const model::Model &m, int chart, const std::vect
     case model::Stmt::Kind::Assign:
       w.line("{} {} {};", c.vars[static_cast<std::size_t>(s.var)].name, spelling(s.op), expr(m, chart, s.expr));
       break;
-    case model::Stmt::Kind::Verbatim: w.line("%{{{}%}}", s.verbatim); break;
+    case model::Stmt::Kind::Verbatim: w.line("%{{{}%}}", *s.verbatim); break;
     case model::Stmt::Kind::If: {
       const model::Stmt *at = &s;
       std::string lead = "if";

@@ -86,7 +86,7 @@ void chart_fields(const model::Model &m, const model::Chart &c, Json &doc) {
   Json transitions = Json::array();
   for (std::size_t i = 0; i < c.transitions.size(); ++i) {
     const model::Transition &t = c.transitions[i];
-    auto names = [&](const std::vector<int> &list) {
+    auto names = [&](const IndexList &list) {
       Json a = Json::array();
       for (int p : list) a.push_back(c.places.at(at(p)).name);
       return a;

@@ -66,7 +66,7 @@ Json expression_tree(const model::Model &m, const Scope &scope, const Expr &e) {
   case Expr::Kind::Float: j["value"] = e.float_value; break;
   case Expr::Kind::String: j["value"] = e.text; break;
   case Expr::Kind::Ticks:
-    j["ms"] = e.ms;
+    j["ms"] = e.float_value;
     j["ticks"] = e.ticks;
     break;
   case Expr::Kind::Var: j["name"] = scope.chart ? name_at(scope.chart->vars, e.index) : "?"; break;
@@ -130,7 +130,7 @@ Json statements(const model::Model &m, const Scope &scope, const std::vector<mod
       break;
     case model::Stmt::Kind::Verbatim:
       j["kind"] = "verbatim";
-      j["code"] = s.verbatim;
+      j["code"] = *s.verbatim;
       break;
     case model::Stmt::Kind::If:
       j["kind"] = "if";

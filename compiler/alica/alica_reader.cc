@@ -148,7 +148,7 @@ private:
       return;
     }
     main_->interfaces.emplace_back();
-    main_->interfaces.back().name = {identifier(label_of(root), "Plan") + "Functions", range(*doc, root)};
+    main_->interfaces.back().name = {keep(identifier(label_of(root), "Plan") + "Functions"), range(*doc, root)};
     main_->interfaces.back().range = range(*doc, root);
     plan_chart(*doc, root);
     // An interface with no function would only add an empty block to the converted text.
@@ -425,7 +425,7 @@ private:
   void declare(const std::string &name, const char *result, const SourceRange &at) {
     ast::FunctionDecl f;
     f.result = {result, at};
-    f.name = {name, at};
+    f.name = {keep(name), at};
     f.range = at;
     main_->interfaces.back().functions.push_back(std::move(f));
   }
@@ -486,11 +486,11 @@ private:
     return name;
   }
 
-  static ast::ExprPtr call(const std::string &name, const SourceRange &at) {
+  ast::ExprPtr call(const std::string &name, const SourceRange &at) {
     auto e = std::make_unique<ast::Expr>();
     e->kind = ast::Expr::Kind::Call;
     e->range = at;
-    e->name = {name, at};
+    e->name = {keep(name), at};
     return e;
   }
 
@@ -658,7 +658,7 @@ private:
       m.chart.kind = ast::Chart::Kind::Fsm;
       m.chart.range = several ? range(doc, ep) : range(doc, plan);
       std::string chart_name = several ? global_name(name + identifier(label, "EntryPoint" + ep_id), ep_id, "") : name;
-      m.chart.name = {chart_name, m.chart.range};
+      m.chart.name = {keep(chart_name), m.chart.range};
       auto start = state_of(ep.find("state"));
       if (!start) {
         diag_.error(range(doc, ep), ErrorKind::AlicaReference,
@@ -699,7 +699,7 @@ private:
       ast::Chart sfc;
       sfc.kind = ast::Chart::Kind::Sfc;
       sfc.range = range(doc, plan);
-      sfc.name = {name, sfc.range};
+      sfc.name = {keep(name), sfc.range};
       NameScope places;
       for (std::size_t e = 0; e < entries.size(); ++e) {
         if (machines[e].entry_state.empty()) continue;
@@ -707,8 +707,8 @@ private:
         p.initial = true;
         p.range = range(doc, *entries[e]);
         std::string label = entry_label(doc, *entries[e]);
-        p.name = {places.take(identifier(label, "EntryPoint" + id_of(entries[e]->find("id")).value_or("")),
-                              id_of(entries[e]->find("id")).value_or("")),
+        p.name = {keep(places.take(identifier(label, "EntryPoint" + id_of(entries[e]->find("id")).value_or("")),
+                                   id_of(entries[e]->find("id")).value_or(""))),
                   p.range};
         p.runs = ast::Name{machines[e].chart.name.text, p.range};
         sfc.places.push_back(std::move(p));
@@ -793,7 +793,7 @@ private:
     std::string id = id_of(state.find("id")).value_or("");
     std::string label = label_of(state);
     gfec_name = m.states.take(identifier(label, "State" + id), id);
-    p.name = {gfec_name, p.range};
+    p.name = {keep(gfec_name), p.range};
     p.initial = id == m.entry_state;
     std::string what = fmt::format("state '{}' (id {}) of {}", label, id, plan_what);
     element(doc, state, "ALICA " + what);
@@ -847,7 +847,7 @@ private:
       }
       std::string chart = ext == ".pml" ? plan_chart(*t.doc, *t.object) : plan_type_chart(t, at);
       if (chart.empty()) continue;
-      if (!p.runs) p.runs = ast::Name{chart, at};
+      if (!p.runs) p.runs = ast::Name{keep(chart), at};
       else extra_plans.push_back(chart);
     }
     if (!extra_plans.empty()) {
@@ -880,7 +880,8 @@ private:
     }
     bool success = name == "AnyChildSuccess" || name == "AllChildSuccess";
     bool failure = name == "AnyChildFailure" || name == "AllChildFailure";
-    if ((!success && !failure) || !source || !source->runs || !fsm_charts_[source->runs->text]) return nullptr;
+    if ((!success && !failure) || !source || !source->runs || !fsm_charts_[std::string(source->runs->text)])
+      return nullptr;
     auto e = call(success ? "succeeded" : "failed", at);
     auto arg = std::make_unique<ast::Expr>();
     arg->kind = ast::Expr::Kind::Name;
@@ -899,7 +900,7 @@ private:
     if (name != "AnyChildSuccess" && name != "AllChildSuccess" && name != "AnyChildFailure" &&
         name != "AllChildFailure")
       return;
-    std::string state = source ? source->name.text : "?";
+    std::string state(source ? source->name.text : "?");
     std::string why =
         source && source->runs
             ? fmt::format("the plan it runs, '{}', has several entry points and its sfc never ends", source->runs->text)
@@ -936,9 +937,9 @@ private:
     }
     ast::Transition out;
     out.range = range(doc, t);
-    if (meaningful(label)) out.name = ast::Name{m.transitions.take(identifier(label, "T" + id), id), out.range};
-    out.inputs = {ast::Name{state_names[*from], out.range}};
-    out.outputs = {ast::Name{state_names[*to], out.range}};
+    if (meaningful(label)) out.name = ast::Name{keep(m.transitions.take(identifier(label, "T" + id), id)), out.range};
+    out.inputs = {ast::Name{keep(state_names[*from]), out.range}};
+    out.outputs = {ast::Name{keep(state_names[*to]), out.range}};
     const JsonValue *cond = t.find("condition");
     const JsonValue *pre = t.find("preCondition");
     const ast::Place *source = nullptr;
@@ -975,6 +976,8 @@ private:
   Diagnostics &diag_;
   LoadResult &result_;
   ast::File *main_ = nullptr;
+  /// A made-up name kept for the tree's names to view (ast.h: names own no text).
+  std::string_view keep(std::string text) { return main_->strings.emplace_back(std::move(text)); }
   std::map<std::string, std::unique_ptr<Doc>> docs_;
   std::set<std::string> missing_;                          ///< files reported as not found (by the first path tried)
   std::map<std::string, std::vector<std::string>> trees_;  ///< search_below: root -> files below it

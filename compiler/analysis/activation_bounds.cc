@@ -29,7 +29,7 @@ bool find_weights(const model::Chart &c, std::vector<std::uint64_t> &w) {
   std::vector<bool> queued(nt, true);
   for (std::size_t t = 0; t < nt; ++t) work[t] = nt - 1 - t;  // popped from the back: in order
   std::size_t budget = 16 * (arcs + nt) + 1000;
-  auto sum = [&](const std::vector<int> &places) {
+  auto sum = [&](const IndexList &places) {
     std::uint64_t s = 0;
     for (int p : places) s += w[static_cast<std::size_t>(p)];
     return s;

@@ -15,7 +15,7 @@ using model::Chart;
 
 const std::string &place_name(const Chart &c, int p) { return c.places.at(static_cast<std::size_t>(p)).name; }
 
-std::string names(const Chart &c, const std::vector<int> &places) {
+std::string names(const Chart &c, const IndexList &places) {
   std::string out;
   for (std::size_t i = 0; i < places.size(); ++i)
     out += fmt::format("{}'{}'", i == 0 ? "" : i + 1 == places.size() ? " and " : ", ", place_name(c, places[i]));

@@ -174,7 +174,7 @@ void Engine::log_instances(EventLog &log) const {
 }
 
 std::string Engine::label(const model::Transition &t) const {
-  auto side = [&](const std::vector<int> &places) {
+  auto side = [&](const IndexList &places) {
     std::string s;
     for (int p : places) s += (s.empty() ? "" : ", ") + chart_.places.at(static_cast<std::size_t>(p)).name;
     return places.size() == 1 ? s : "(" + s + ")";

@@ -46,10 +46,10 @@ std::set<std::string> &seen(ExprScope &s) { return s.chart ? s.chart->unknown : 
 
 std::optional<model::Expr> lower_duration(const ast::Expr &e, ExprScope &s) {
   model::Expr d = make(K::Ticks, Type::Duration, e.range);
-  d.ms = e.duration_ms;
+  d.float_value = e.duration_ms;
   if (s.chart) {
-    require_period(s, e.range, fmt::format("duration '{}'", e.spelling));
-    d.ticks = to_ticks(d.ms, s.chart->out.period_ms);
+    require_period(s, e.range, fmt::format("duration '{}'", e.text));
+    d.ticks = to_ticks(d.float_value, s.chart->out.period_ms);
   }
   return d;
 }
@@ -130,7 +130,7 @@ std::optional<model::Expr> lower_elapsed(const ast::Expr &e, ExprScope &s, bool 
 }
 
 /// The kind of a misused built-in that reads a chart's state: each has its own.
-ErrorKind builtin_kind(const std::string &f) {
+ErrorKind builtin_kind(std::string_view f) {
   return f == "active" ? ErrorKind::Active : f == "succeeded" ? ErrorKind::Succeeded : ErrorKind::Failed;
 }
 
@@ -138,7 +138,7 @@ ErrorKind builtin_kind(const std::string &f) {
 /// inside a chart, not in a constant, not as a statement, one argument.
 bool builtin_allowed(const ast::Expr &e, ExprScope &s, bool statement, const char *argument) {
   Diagnostics &diag = s.cx.diag;
-  const std::string &f = e.name.text;
+  std::string_view f = e.name.text;
   if (!s.chart) {
     diag.error(e.range, builtin_kind(f), fmt::format("'{}' can only be used inside an sfc or fsm", f));
     return false;
@@ -217,7 +217,7 @@ std::optional<model::Expr> lower_active(const ast::Expr &e, ExprScope &s, bool s
       const ast::Place &p = inner.places[i];
       if (p.name.text == names[k].text && place < 0) place = static_cast<int>(i);
       symbols.push_back({inner.kind == ast::Chart::Kind::Fsm ? Sym::State : Sym::Place, static_cast<int>(i),
-                         p.name.text, p.name.range});
+                         std::string(p.name.text), p.name.range});
     }
     if (place < 0) {
       auto &d = s.cx.diag.error(names[k].range, ErrorKind::UnknownName,
@@ -237,7 +237,7 @@ std::optional<model::Expr> lower_active(const ast::Expr &e, ExprScope &s, bool s
 
 /// `succeeded(P)` / `failed(P)`: P runs an fsm, which ends in a success or failure state.
 std::optional<model::Expr> lower_outcome(const ast::Expr &e, ExprScope &s, bool statement) {
-  const std::string &f = e.name.text;
+  std::string_view f = e.name.text;
   if (!builtin_allowed(e, s, statement, "a place or state that runs an fsm")) return std::nullopt;
   const ast::Expr &arg = *e.args[0];
   if (arg.kind != ast::Expr::Kind::Name) {
@@ -396,8 +396,8 @@ bool constant_fits(const model::Expr &x, Type to, ExprScope &s) {
 std::optional<model::Stmt> lower_assign(const ast::Stmt &st, ExprScope &s) {
   Diagnostics &diag = s.cx.diag;
   auto value = lower_expr(st.value.get(), s);  // first: its errors are independent of the target's
-  const ast::Name &target = st.target;
-  if (target.text.empty() || !s.chart) return std::nullopt;
+  if (!st.target || st.target->text.empty() || !s.chart) return std::nullopt;  // a recovered syntax error
+  const ast::Name &target = *st.target;
   const Symbol *sym = s.chart->names.find(target.text);
   if (!sym) sym = s.cx.c_names.find(target.text);
   if (!sym) {
@@ -451,7 +451,7 @@ unsigned long to_ticks(double ms, double period_ms) {
 
 void report_unknown(Diagnostics &diag, std::set<std::string> &seen, const ast::Name &name, const char *what,
                     const std::vector<const Symbol *> &candidates) {
-  if (!seen.insert(std::string(what) + " " + name.text).second) return;
+  if (!seen.insert(fmt::format("{} {}", what, name.text)).second) return;
   auto &d = diag.error(name.range, ErrorKind::UnknownName, fmt::format("unknown {} '{}'", what, name.text));
   suggest(d, name.text, candidates);
 }
@@ -620,7 +620,7 @@ std::vector<model::Stmt> lower_block(const ast::Block &b, ExprScope &s) {
       model::Stmt m;
       m.kind = model::Stmt::Kind::Verbatim;
       m.range = st.range;
-      m.verbatim = st.verbatim;
+      m.verbatim = st.verbatim ? *st.verbatim : std::string();
       m.code_begin = st.range.begin + 2;  // the lexer's range starts at `%{`
       out.push_back(std::move(m));
       break;

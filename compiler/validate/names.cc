@@ -73,7 +73,7 @@ bool Namespace::declare(const ast::Name &name, Sym kind, int index, Diagnostics 
     report_clash(name, kind, *previous, diag);
     return false;
   }
-  symbols_.push_back({kind, index, name.text, name.range});
+  symbols_.push_back({kind, index, std::string(name.text), name.range});
   by_name_.emplace(symbols_.back().name, static_cast<std::uint32_t>(symbols_.size() - 1));
   return true;
 }

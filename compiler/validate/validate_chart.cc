@@ -7,9 +7,6 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
-#include <functional>
-
 namespace gfec::validation {
 
 namespace {
@@ -67,7 +64,7 @@ void set_team(Context &cx, ChartScope &s) {
 /// Places and transitions become enum constants `<Chart>_<Name>` (§5.2): they must not clash
 /// with the engine's own names or with a global C name.
 void check_generated_name(Context &cx, ChartScope &s, const ast::Name &name, const char *what) {
-  std::string generated = s.out.name + "_" + name.text;
+  std::string generated = fmt::format("{}_{}", s.out.name, name.text);
   for (const char *reserved : kEngineNames) {
     if (name.text != reserved) continue;
     cx.diag.error(
@@ -114,7 +111,7 @@ void declare_value(Context &cx, ChartScope &s, const ast::ValueDecl &v) {
     int index = -1;
     if (type) {
       index = static_cast<int>(s.out.vars.size());
-      s.out.vars.push_back({v.name.text, *type, std::nullopt, v.range});
+      s.out.vars.push_back({std::string(v.name.text), *type, std::nullopt, v.range});
     }
     s.names.declare(v.name, Sym::Var, index, cx.diag);
     return;
@@ -133,25 +130,39 @@ void declare_value(Context &cx, ChartScope &s, const ast::ValueDecl &v) {
   s.names.declare(v.name, Sym::Const, index, cx.diag);
 }
 
+void declare_transition(Context &cx, ChartScope &s, const ast::Name &name, int index) {
+  if (s.names.declare(name, Sym::Transition, index, cx.diag)) check_generated_name(cx, s, name, "transition");
+}
+
 /// Declares places, vars, constants and named transitions in textual order, so a duplicate's
-/// note points at the declaration that really comes first.
+/// note points at the declaration that really comes first. The parser keeps each of the three
+/// lists in textual order, so merging them needs no list of its own (a chart may have a million
+/// places: docs/performance.md).
 void declare_names(Context &cx, ChartScope &s) {
-  std::vector<std::pair<std::uint32_t, std::function<void()>>> decls;
   const ast::Chart &a = s.ast;
   s.out.places.reserve(a.places.size());
-  for (std::size_t i = 0; i < a.places.size(); ++i)
-    decls.push_back({a.places[i].range.begin, [&, i] { declare_place(cx, s, a.places[i], static_cast<int>(i)); }});
-  for (const auto &v : a.values) decls.push_back({v.range.begin, [&cx, &s, &v] { declare_value(cx, s, v); }});
-  for (std::size_t i = 0; i < a.transitions.size(); ++i) {
-    if (!a.transitions[i].name) continue;
-    decls.push_back({a.transitions[i].range.begin, [&, i] {
-                       const ast::Name &name = *a.transitions[i].name;
-                       if (s.names.declare(name, Sym::Transition, static_cast<int>(i), cx.diag))
-                         check_generated_name(cx, s, name, "transition");
-                     }});
+  constexpr std::uint32_t kEnd = UINT32_MAX;
+  std::size_t p = 0, v = 0, t = 0;
+  auto next_transition = [&] {
+    while (t < a.transitions.size() && !a.transitions[t].name) ++t;
+  };
+  next_transition();
+  for (;;) {
+    std::uint32_t at_p = p < a.places.size() ? a.places[p].range.begin : kEnd;
+    std::uint32_t at_v = v < a.values.size() ? a.values[v].range.begin : kEnd;
+    std::uint32_t at_t = t < a.transitions.size() ? a.transitions[t].range.begin : kEnd;
+    if (at_p == kEnd && at_v == kEnd && at_t == kEnd) break;
+    if (at_p <= at_v && at_p <= at_t) {
+      declare_place(cx, s, a.places[p], static_cast<int>(p));
+      ++p;
+    } else if (at_v <= at_t) {
+      declare_value(cx, s, a.values[v++]);
+    } else {
+      declare_transition(cx, s, *a.transitions[t].name, static_cast<int>(t));
+      ++t;
+      next_transition();
+    }
   }
-  std::stable_sort(decls.begin(), decls.end(), [](const auto &x, const auto &y) { return x.first < y.first; });
-  for (auto &d : decls) d.second();
 }
 
 /// Names the transitions: the user's name, or T<position> (§5) unless that name is taken.

@@ -26,7 +26,7 @@ std::vector<int> lower_config_types(Context &cx, PlanScope &s) {
     for (const ast::ConfigEntry &e : block) {
       auto type = lower_type(e.type, kScalar | kString | kObject, "a config entry", cx.diag);
       index.push_back(type ? static_cast<int>(s.out.config.size()) : -1);
-      if (type) s.out.config.push_back({e.name.text, *type, std::nullopt, e.range, e.name.range});
+      if (type) s.out.config.push_back({std::string(e.name.text), *type, std::nullopt, e.range, e.name.range});
     }
   }
   return index;

@@ -51,7 +51,7 @@ void lower_outcomes(Context &cx, const ast::Template &t, model::Template &out) {
   Namespace outcomes;
   for (const ast::Name &o : t.outcomes) {
     outcomes.declare(o, supervisor ? Sym::Event : Sym::ResultState, -1, cx.diag);
-    out.outcomes.push_back(o.text);
+    out.outcomes.emplace_back(o.text);
   }
 }
 

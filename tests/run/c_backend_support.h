@@ -226,7 +226,7 @@ public:
     e.kind = Expr::Kind::Ticks;
     e.type = Type::Duration;
     e.ticks = n;
-    e.ms = ms;
+    e.float_value = ms;
     return e;
   }
   static Expr lit(Expr::Kind kind, const std::string &text, Type type) {

@@ -227,7 +227,7 @@ fsm M {
   REQUIRE(c.transitions[0].condition);
   CHECK(c.transitions[0].condition->args[1].kind == model::Expr::Kind::Ticks);
   CHECK(c.transitions[0].condition->args[1].ticks == 3);
-  CHECK(c.transitions[0].condition->args[1].ms == 50);
+  CHECK(c.transitions[0].condition->args[1].float_value == 50);
   CHECK(c.transitions[3].condition->args[1].ticks == 500);
 }
 

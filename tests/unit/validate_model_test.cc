@@ -158,7 +158,7 @@ TEST_CASE("validate model: durations become whole ticks, rounded up", "[validate
   CHECK(e25.kind == model::Expr::Kind::Ticks);
   CHECK(e25.type == model::Type::Duration);
   CHECK(e25.ticks == 3);
-  CHECK(e25.ms == 25);
+  CHECK(e25.float_value == 25);
   CHECK(ticks(c.transitions[1], 1).ticks == 10);  // 0.1s is 100.00000000000001 ms: still 10 ticks
   const auto &either = *c.transitions[2].condition;
   CHECK(either.args[0].args[1].ticks == 150);
@@ -212,7 +212,7 @@ TEST_CASE("validate model: entry and exit blocks, verbatim code", "[validate]") 
   CHECK(a.entry->size() == 1);
   REQUIRE(a.action.size() == 1);
   CHECK(a.action[0].kind == model::Stmt::Kind::Verbatim);
-  CHECK(a.action[0].verbatim.find("x++;") != std::string::npos);
+  CHECK(a.action[0].verbatim->find("x++;") != std::string::npos);
 }
 
 TEST_CASE("validate model: toolboxes and their templates", "[validate]") {
