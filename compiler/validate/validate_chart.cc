@@ -221,6 +221,11 @@ void lower_transition_condition(Context &cx, ChartScope &s, std::size_t index) {
   t.condition.reset();  // lowered: see lower_bodies
 }
 
+void release_place_names(ast::Transition &t) {
+  std::vector<ast::Name>().swap(t.inputs);
+  std::vector<ast::Name>().swap(t.outputs);
+}
+
 std::optional<bool> constant_condition(const HeapOptional<model::Expr> &condition, const model::Model &model) {
   if (!condition) return true;
   auto v = evaluate(*condition, model, nullptr);

@@ -90,9 +90,10 @@ bool resolve_transitions(Context &cx, ChartScope &s) {
   bool all = true;
   std::map<std::pair<int, int>, std::size_t> pairs;
   for (std::size_t i = 0; i < s.ast.transitions.size(); ++i) {
-    const ast::Transition &t = s.ast.transitions[i];
+    ast::Transition &t = s.ast.transitions[i];
     int from = one_state(cx, s, t, t.inputs, "source");
     int to = one_state(cx, s, t, t.outputs, "target");
+    release_place_names(t);
     if (from >= 0 && to >= 0) check_transition(cx, s, i, from, to, pairs);
     else all = false;
     lower_transition_condition(cx, s, i);

@@ -48,12 +48,13 @@ std::vector<int> resolve_places(Context &cx, ChartScope &s, const std::vector<as
 
 void resolve_transitions(Context &cx, ChartScope &s) {
   for (std::size_t i = 0; i < s.ast.transitions.size(); ++i) {
-    const ast::Transition &t = s.ast.transitions[i];
+    ast::Transition &t = s.ast.transitions[i];
     model::Transition &out = s.out.transitions[i];
     if (t.inputs.empty())
       cx.diag.error(t.range, ErrorKind::NoInput, fmt::format("transition '{}' has no input place", out.name));
     out.inputs = resolve_places(cx, s, t.inputs, "inputs", out.name);
     out.outputs = resolve_places(cx, s, t.outputs, "outputs", out.name);
+    release_place_names(t);
     lower_transition_condition(cx, s, i);
   }
 }
