@@ -153,7 +153,7 @@ void declare_names(Context &cx, ChartScope &s) {
   for (std::size_t i = 0; i < a.values.size(); ++i)
     decls.push_back({a.values[i].range.begin, static_cast<std::uint32_t>(i), What::Value});
   for (std::size_t i = 0; i < a.transitions.size(); ++i)
-    if (a.transitions[i].name)
+    if (a.transitions[i].named)
       decls.push_back({a.transitions[i].range.begin, static_cast<std::uint32_t>(i), What::Transition});
   std::stable_sort(decls.begin(), decls.end(), [](const Decl &x, const Decl &y) { return x.begin < y.begin; });
   for (const Decl &d : decls) {
@@ -161,7 +161,7 @@ void declare_names(Context &cx, ChartScope &s) {
     case What::Place: declare_place(cx, s, a.places[d.index], static_cast<int>(d.index)); break;
     case What::Value: declare_value(cx, s, a.values[d.index]); break;
     case What::Transition: {
-      const ast::Name &name = *a.transitions[d.index].name;
+      const ast::Name &name = a.transitions[d.index].name;
       if (s.names.declare(name, Sym::Transition, static_cast<int>(d.index), cx.diag))
         check_generated_name(cx, s, name, "transition");
       break;
@@ -176,10 +176,10 @@ void name_transitions(Context &cx, ChartScope &s) {
   for (std::size_t i = 0; i < s.ast.transitions.size(); ++i) {
     const ast::Transition &t = s.ast.transitions[i];
     model::Transition out;
-    out.named = t.name.has_value();
-    out.name = out.named ? t.name->text : fmt::format("T{}", i);
+    out.named = t.named;
+    out.name = out.named ? t.name.text : fmt::format("T{}", i);
     out.range = t.range;
-    out.name_range = out.named ? t.name->range : t.range;
+    out.name_range = out.named ? t.name.range : t.range;
     if (!out.named) {
       if (const Symbol *clash = s.names.find(out.name)) {
         cx.diag
@@ -217,13 +217,15 @@ void lower_bodies(Context &cx, ChartScope &s) {
     ast::Place &p = s.ast.places[i];
     model::Place &out = s.out.places[i];
     out.action = lower_block(p.action, scope);
-    if (p.entry) out.entry = lower_block(*p.entry, scope);
-    if (p.exit) out.exit = lower_block(*p.exit, scope);
+    if (p.entry()) out.entry = lower_block(*p.entry(), scope);
+    if (p.exit()) out.exit = lower_block(*p.exit(), scope);
     // Lowered: the tree's statements are no longer needed, and a chart of a million places
     // should not hold both forms at once (docs/performance.md).
     ast::Block().swap(p.action);
-    p.entry.reset();
-    p.exit.reset();
+    if (p.extras) {
+      p.extras->entry.reset();
+      p.extras->exit.reset();
+    }
   }
 }
 

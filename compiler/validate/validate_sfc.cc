@@ -13,7 +13,7 @@ namespace gfec::validation {
 namespace {
 
 /// Where to point at a transition: its name if it has one.
-SourceRange where(const ast::Transition &t) { return t.name ? t.name->range : t.range; }
+SourceRange where(const ast::Transition &t) { return t.named ? t.name.range : t.range; }
 
 /// fsm-only syntax in an sfc.
 void check_keywords(Context &cx, const ast::Place &p) {
@@ -22,7 +22,7 @@ void check_keywords(Context &cx, const ast::Place &p) {
   else if (p.is_state)
     cx.diag.error(p.range, ErrorKind::WrongKeyword,
                   fmt::format("'state' in an sfc: an sfc has places (write 'place {}')", p.name.text));
-  if (p.post) cx.diag.error(p.post->range, ErrorKind::WrongKeyword, "'post' belongs to a terminal state of an fsm");
+  if (p.post()) cx.diag.error(p.post()->range, ErrorKind::WrongKeyword, "'post' belongs to a terminal state of an fsm");
 }
 
 /// Resolves a transition's inputs or outputs (`side`), reporting a place listed twice.
