@@ -118,31 +118,50 @@ struct ValueDecl {
 
 enum class StateKind : std::uint8_t { Normal, Success, Failure };
 
+/// What most places lack, kept in one heap block (Place::extras), so that a place without any
+/// of it costs a pointer (docs/performance.md).
+struct PlaceExtras {
+  std::optional<Block> entry;
+  std::optional<Block> exit;
+  SourceRange entry_range, exit_range;
+  ExprPtr post;              ///< `post EXPR` of a terminal state
+  std::optional<Name> runs;  ///< `place P runs C`: the chart C (sub-charts)
+};
+
 /// A place of an sfc or a state of an fsm.
 struct Place {
   bool initial = false;
   StateKind terminal = StateKind::Normal;  ///< fsm only
   bool is_state = false;                   ///< written with `state` rather than `place`
   bool has_body = false;
+  SourceRange range;
   Name name;
   Block action;
-  // What most places lack is kept on the heap, a pointer wide when absent (heap_optional.h).
-  HeapOptional<Block> entry;
-  HeapOptional<Block> exit;
-  SourceRange entry_range, exit_range;
-  ExprPtr post;             ///< `post EXPR` of a terminal state
-  HeapOptional<Name> runs;  ///< `place P runs C`: the chart C (sub-charts)
-  SourceRange range;
+  /// A chart may have a million places: members are ordered to pack, and what most places
+  /// lack (entry, exit, post, runs) is one heap block, absent when the place has none of it.
+  HeapOptional<PlaceExtras> extras;
+
+  /// The extras, created on first write: for the parser and the readers that build a tree.
+  PlaceExtras &extra() {
+    if (!extras) extras.emplace();
+    return *extras;
+  }
+  /// Null when the place has no such block, condition or `runs`.
+  const Block *entry() const { return extras && extras->entry ? &*extras->entry : nullptr; }
+  const Block *exit() const { return extras && extras->exit ? &*extras->exit : nullptr; }
+  const Expr *post() const { return extras ? extras->post.get() : nullptr; }
+  const Name *runs() const { return extras && extras->runs ? &*extras->runs : nullptr; }
 };
 
 struct Transition {
-  std::optional<Name> name;
-  std::vector<Name> inputs;
-  std::vector<Name> outputs;
+  bool named = false;  ///< `name: inputs -> outputs`; `name` is empty otherwise
   bool parenthesised_inputs = false;
   bool parenthesised_outputs = false;
-  ExprPtr condition;  ///< null: `when true`
   SourceRange range;
+  Name name;  ///< `named` rather than an std::optional: members ordered to pack (see Place)
+  std::vector<Name> inputs;
+  std::vector<Name> outputs;
+  ExprPtr condition;  ///< null: `when true`
 };
 
 struct Period {

@@ -417,8 +417,8 @@ Place Parser::place(Chart::Kind) {
     fail(p.terminal != StateKind::Normal ? "expected 'state'" : "expected 'place' or 'state'");
   }
   p.name = name(p.is_state ? "after 'state'" : "after 'place'");
-  if (accept(Tok::KwRuns)) p.runs = name("after 'runs' (the sfc or fsm to run)");
-  if (accept(Tok::KwPost)) p.post = expr();
+  if (accept(Tok::KwRuns)) p.extra().runs = name("after 'runs' (the sfc or fsm to run)");
+  if (accept(Tok::KwPost)) p.extra().post = expr();
   if (!accept(Tok::Semi)) {
     if (!at(Tok::LBrace)) fail("expected ';' or '{'");
     p.has_body = true;
@@ -436,14 +436,15 @@ void Parser::place_body(Place &p) {
       std::uint32_t begin = kw.range.begin;
       Block b = block();
       bool entry = kw.kind == Tok::KwEntry;
-      HeapOptional<Block> &slot = entry ? p.entry : p.exit;
+      PlaceExtras &x = p.extra();
+      std::optional<Block> &slot = entry ? x.entry : x.exit;
       if (slot) {
         diag_.error(kw.range, ErrorKind::DuplicateBlock, fmt::format("second '{}' block in '{}'", kw.text, p.name.text))
-            .note(entry ? p.entry_range : p.exit_range, "the first one is here");
+            .note(entry ? x.entry_range : x.exit_range, "the first one is here");
         return;
       }
       slot = std::move(b);
-      (entry ? p.entry_range : p.exit_range) = from(begin);
+      (entry ? x.entry_range : x.exit_range) = from(begin);
       return;
     }
     p.action.push_back(statement());
@@ -466,6 +467,7 @@ Transition Parser::transition() {
   if (at(Tok::Ident)) {
     Name first = name();
     if (accept(Tok::Colon)) {
+      t.named = true;
       t.name = std::move(first);
       inputs = place_list(t.parenthesised_inputs);
     } else {

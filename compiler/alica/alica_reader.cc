@@ -710,7 +710,7 @@ private:
         p.name = {keep(places.take(identifier(label, "EntryPoint" + id_of(entries[e]->find("id")).value_or("")),
                                    id_of(entries[e]->find("id")).value_or(""))),
                   p.range};
-        p.runs = ast::Name{machines[e].chart.name.text, p.range};
+        p.extra().runs = ast::Name{machines[e].chart.name.text, p.range};
         sfc.places.push_back(std::move(p));
       }
       file.charts.push_back(std::move(sfc));
@@ -847,19 +847,19 @@ private:
       }
       std::string chart = ext == ".pml" ? plan_chart(*t.doc, *t.object) : plan_type_chart(t, at);
       if (chart.empty()) continue;
-      if (!p.runs) p.runs = ast::Name{keep(chart), at};
+      if (!p.runs()) p.extra().runs = ast::Name{keep(chart), at};
       else extra_plans.push_back(chart);
     }
     if (!extra_plans.empty()) {
       std::string others;
       for (const auto &c : extra_plans) others += (others.empty() ? "'" : ", '") + c + "'";
       ignored(doc, state,
-              fmt::format("{} holds several plans; gfec runs only the first, '{}'; ignored: {}", what, p.runs->text,
+              fmt::format("{} holds several plans; gfec runs only the first, '{}'; ignored: {}", what, p.runs()->text,
                           others));
     }
     if (const JsonValue *post = state.find("postCondition");
         post && post->is_object() && p.terminal != ast::StateKind::Normal)
-      p.post = call(condition(doc, *post, label + "_post"), range(doc, *post));
+      p.extra().post = call(condition(doc, *post, label + "_post"), range(doc, *post));
     return p;
   }
 
@@ -880,7 +880,7 @@ private:
     }
     bool success = name == "AnyChildSuccess" || name == "AllChildSuccess";
     bool failure = name == "AnyChildFailure" || name == "AllChildFailure";
-    if ((!success && !failure) || !source || !source->runs || !fsm_charts_[std::string(source->runs->text)])
+    if ((!success && !failure) || !source || !source->runs() || !fsm_charts_[std::string(source->runs()->text)])
       return nullptr;
     auto e = call(success ? "succeeded" : "failed", at);
     auto arg = std::make_unique<ast::Expr>();
@@ -901,12 +901,12 @@ private:
         name != "AllChildFailure")
       return;
     std::string state(source ? source->name.text : "?");
-    std::string why =
-        source && source->runs
-            ? fmt::format("the plan it runs, '{}', has several entry points and its sfc never ends", source->runs->text)
-        : source && !source->action.empty()
-            ? "it runs no plan, and gfec does not model the success or failure of behaviours"
-            : "it runs neither a plan nor a behaviour";
+    std::string why = source && source->runs()
+                          ? fmt::format("the plan it runs, '{}', has several entry points and its sfc never ends",
+                                        source->runs()->text)
+                      : source && !source->action.empty()
+                          ? "it runs no plan, and gfec does not model the success or failure of behaviours"
+                          : "it runs neither a plan nor a behaviour";
     ignored(at, fmt::format("{} tests {} of state '{}', but {}: the condition becomes the sensing function '{}()' "
                             "of the robot library",
                             what, name, state, why, name));
@@ -937,7 +937,10 @@ private:
     }
     ast::Transition out;
     out.range = range(doc, t);
-    if (meaningful(label)) out.name = ast::Name{keep(m.transitions.take(identifier(label, "T" + id), id)), out.range};
+    if (meaningful(label)) {
+      out.named = true;
+      out.name = ast::Name{keep(m.transitions.take(identifier(label, "T" + id), id)), out.range};
+    }
     out.inputs = {ast::Name{keep(state_names[*from]), out.range}};
     out.outputs = {ast::Name{keep(state_names[*to]), out.range}};
     const JsonValue *cond = t.find("condition");

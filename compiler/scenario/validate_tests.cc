@@ -41,7 +41,7 @@ void declare_chart_names(Context &cx, ChartScope &s) {
     s.names.declare(v.name, Sym::Var, index, quiet);
   }
   for (std::size_t i = 0; i < a.transitions.size(); ++i)
-    if (a.transitions[i].name) s.names.declare(*a.transitions[i].name, Sym::Transition, static_cast<int>(i), quiet);
+    if (a.transitions[i].named) s.names.declare(a.transitions[i].name, Sym::Transition, static_cast<int>(i), quiet);
 }
 
 /// Whether a lowered chart expression calls an interface function (which would run chart code).

@@ -202,7 +202,7 @@ std::optional<model::Expr> lower_active(const ast::Expr &e, ExprScope &s, bool s
     const ast::Place &via = holder.places[static_cast<std::size_t>(place)];
     int sub = s.cx.runs[static_cast<std::size_t>(chart)][static_cast<std::size_t>(place)];
     if (sub < 0) {
-      if (via.runs) return std::nullopt;  // its `runs` has an error of its own
+      if (via.runs()) return std::nullopt;  // its `runs` has an error of its own
       s.cx.diag
           .error(names[k].range, ErrorKind::UnknownName,
                  fmt::format("'{}' runs no sub-chart, so '{}' names nothing in it", via.name.text, names[k].text))
@@ -249,15 +249,15 @@ std::optional<model::Expr> lower_outcome(const ast::Expr &e, ExprScope &s, bool 
   if (place < 0) return std::nullopt;
   const ast::Place &p = s.chart->ast.places[static_cast<std::size_t>(place)];
   int sub = s.cx.runs[static_cast<std::size_t>(s.chart->index)][static_cast<std::size_t>(place)];
-  if (p.runs && sub < 0) return std::nullopt;  // its `runs` has an error of its own
+  if (p.runs() && sub < 0) return std::nullopt;  // its `runs` has an error of its own
   if (sub < 0 || s.cx.model.charts[static_cast<std::size_t>(sub)].kind != model::Chart::Kind::Fsm) {
     auto &d = s.cx.diag.error(
         e.range, ErrorKind::Subchart,
         sub < 0
             ? fmt::format("'{}({})': {} '{}' runs no sub-chart", f, arg.name.text, s.chart->place_word(), arg.name.text)
             : fmt::format("'{}({})': {} '{}' runs sfc '{}', which never {}", f, arg.name.text, s.chart->place_word(),
-                          arg.name.text, p.runs->text, f == "succeeded" ? "succeeds" : "fails"));
-    d.note(sub < 0 ? p.name.range : p.runs->range,
+                          arg.name.text, p.runs()->text, f == "succeeded" ? "succeeds" : "fails"));
+    d.note(sub < 0 ? p.name.range : p.runs()->range,
            sub < 0 ? fmt::format("only a place or state that runs an fsm succeeds or fails ('{} {} runs FSM')",
                                  s.chart->place_word(), arg.name.text)
                    : fmt::format("only an fsm succeeds or fails; 'active({}.P)' reads the places of an sfc",

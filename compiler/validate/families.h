@@ -46,6 +46,11 @@ void check_plan_recursion(Context &cx);
 /// transition's places, so diagnostics come in source order.
 void lower_transition_condition(Context &cx, ChartScope &chart, std::size_t index);
 
+/// Releases a transition's input and output names once they are resolved into the model
+/// transition: nothing reads them later, and a chart of a million places should not keep both
+/// forms (docs/performance.md).
+void release_place_names(ast::Transition &t);
+
 /// Whether a condition is constant, and its value (no condition is `when true`).
 std::optional<bool> constant_condition(const HeapOptional<model::Expr> &condition, const model::Model &model);
 

@@ -10,7 +10,6 @@
 #include <initializer_list>
 #include <string>
 #include <string_view>
-#include <unordered_map>
 #include <vector>
 
 namespace gfec::validation {
@@ -45,25 +44,36 @@ std::string with_article(Sym kind);
 struct Symbol {
   Sym kind;
   int index = -1;  ///< into the model table the kind belongs to
-  std::string name;
+  /// Views the declaring ast::Name (or, in a list of did-you-mean candidates, a string that
+  /// outlives the list): the tree outlives the validator and its tables never move.
+  std::string_view name;
   SourceRange range;
 };
 
 /// One namespace: names in declaration order, the first declaration winning lookups.
 class Namespace {
 public:
-  /// Declares `name`. A clash is reported (with a note at the first declaration) and returns
-  /// false; so does an empty name, which only a recovered syntax error produces.
+  /// Declares `name`, which must outlive the namespace and stay in place: the symbol views its
+  /// text (a node of the syntax tree, never a temporary). A clash is reported (with a note at
+  /// the first declaration) and returns false; so does an empty name, which only a recovered
+  /// syntax error produces.
   bool declare(const ast::Name &name, Sym kind, int index, Diagnostics &diag);
   const Symbol *find(std::string_view name) const;
   /// The symbols of the given kinds in declaration order: did-you-mean candidates.
   std::vector<const Symbol *> of(std::initializer_list<Sym> kinds) const;
 
 private:
-  // A chart may declare a million names: each is stored once, in its Symbol (a deque keeps it
-  // in place), and the index looks it up through a view of that copy (docs/performance.md).
+  /// The slot `name` is in, or the empty slot where it would go. slots_ must not be empty.
+  std::size_t slot_of(std::string_view name) const;
+  void grow();
+
+  // A chart may declare a million names (docs/performance.md): a symbol views its name in the
+  // syntax tree instead of copying it (a deque keeps the symbols in place), and the index is an
+  // open-addressing hash table of symbol numbers (linear probing, a power-of-two capacity at
+  // most half full): 8 to 16 bytes a name, where a node-based map took ~150.
+  static constexpr std::uint32_t kEmpty = UINT32_MAX;
   std::deque<Symbol> symbols_;
-  std::unordered_map<std::string_view, std::uint32_t> by_name_;
+  std::vector<std::uint32_t> slots_;
 };
 
 /// Reports (check `reserved-name`) a name that generated C or C++ reserves (compiler/naming/:

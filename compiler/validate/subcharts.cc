@@ -20,7 +20,7 @@ struct Edge {
 std::string period_text(double ms) { return ms > 0 ? fmt::format("period {:g}ms", ms) : std::string("no period"); }
 
 const ast::Name &runs_name(const Context &cx, const Edge &e) {
-  return *cx.charts[static_cast<std::size_t>(e.parent)]->places[static_cast<std::size_t>(e.place)].runs;
+  return *cx.charts[static_cast<std::size_t>(e.parent)]->places[static_cast<std::size_t>(e.place)].runs();
 }
 
 /// Resolves the chart after each `runs`; reports unknown names, plans and terminal states.
@@ -31,8 +31,8 @@ std::vector<Edge> resolve_runs(Context &cx) {
     cx.runs[c].assign(chart.places.size(), -1);
     for (std::size_t p = 0; p < chart.places.size(); ++p) {
       const ast::Place &place = chart.places[p];
-      if (!place.runs || place.runs->text.empty()) continue;
-      const ast::Name &name = *place.runs;
+      if (!place.runs() || place.runs()->text.empty()) continue;
+      const ast::Name &name = *place.runs();
       if (place.terminal != ast::StateKind::Normal) {
         cx.diag.error(
             name.range, ErrorKind::TerminalRuns,

@@ -7,6 +7,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace gfec::validation {
 
 namespace {
@@ -130,37 +132,40 @@ void declare_value(Context &cx, ChartScope &s, const ast::ValueDecl &v) {
   s.names.declare(v.name, Sym::Const, index, cx.diag);
 }
 
-void declare_transition(Context &cx, ChartScope &s, const ast::Name &name, int index) {
-  if (s.names.declare(name, Sym::Transition, index, cx.diag)) check_generated_name(cx, s, name, "transition");
-}
-
 /// Declares places, vars, constants and named transitions in textual order, so a duplicate's
-/// note points at the declaration that really comes first. The parser keeps each of the three
-/// lists in textual order, so merging them needs no list of its own (a chart may have a million
-/// places: docs/performance.md).
+/// note points at the declaration that really comes first.
 void declare_names(Context &cx, ChartScope &s) {
+  // One small record a declaration rather than a std::function (40 bytes plus a heap-allocated
+  // closure): a chart may declare two million names, and this runs while the whole tree is still
+  // alive (docs/performance.md).
+  enum class What : std::uint8_t { Place, Value, Transition };
+  struct Decl {
+    std::uint32_t begin;
+    std::uint32_t index;
+    What what;
+  };
+  std::vector<Decl> decls;
   const ast::Chart &a = s.ast;
   s.out.places.reserve(a.places.size());
-  constexpr std::uint32_t kEnd = UINT32_MAX;
-  std::size_t p = 0, v = 0, t = 0;
-  auto next_transition = [&] {
-    while (t < a.transitions.size() && !a.transitions[t].name) ++t;
-  };
-  next_transition();
-  for (;;) {
-    std::uint32_t at_p = p < a.places.size() ? a.places[p].range.begin : kEnd;
-    std::uint32_t at_v = v < a.values.size() ? a.values[v].range.begin : kEnd;
-    std::uint32_t at_t = t < a.transitions.size() ? a.transitions[t].range.begin : kEnd;
-    if (at_p == kEnd && at_v == kEnd && at_t == kEnd) break;
-    if (at_p <= at_v && at_p <= at_t) {
-      declare_place(cx, s, a.places[p], static_cast<int>(p));
-      ++p;
-    } else if (at_v <= at_t) {
-      declare_value(cx, s, a.values[v++]);
-    } else {
-      declare_transition(cx, s, *a.transitions[t].name, static_cast<int>(t));
-      ++t;
-      next_transition();
+  decls.reserve(a.places.size() + a.values.size() + a.transitions.size());
+  for (std::size_t i = 0; i < a.places.size(); ++i)
+    decls.push_back({a.places[i].range.begin, static_cast<std::uint32_t>(i), What::Place});
+  for (std::size_t i = 0; i < a.values.size(); ++i)
+    decls.push_back({a.values[i].range.begin, static_cast<std::uint32_t>(i), What::Value});
+  for (std::size_t i = 0; i < a.transitions.size(); ++i)
+    if (a.transitions[i].named)
+      decls.push_back({a.transitions[i].range.begin, static_cast<std::uint32_t>(i), What::Transition});
+  std::stable_sort(decls.begin(), decls.end(), [](const Decl &x, const Decl &y) { return x.begin < y.begin; });
+  for (const Decl &d : decls) {
+    switch (d.what) {
+    case What::Place: declare_place(cx, s, a.places[d.index], static_cast<int>(d.index)); break;
+    case What::Value: declare_value(cx, s, a.values[d.index]); break;
+    case What::Transition: {
+      const ast::Name &name = a.transitions[d.index].name;
+      if (s.names.declare(name, Sym::Transition, static_cast<int>(d.index), cx.diag))
+        check_generated_name(cx, s, name, "transition");
+      break;
+    }
     }
   }
 }
@@ -171,10 +176,10 @@ void name_transitions(Context &cx, ChartScope &s) {
   for (std::size_t i = 0; i < s.ast.transitions.size(); ++i) {
     const ast::Transition &t = s.ast.transitions[i];
     model::Transition out;
-    out.named = t.name.has_value();
-    out.name = out.named ? t.name->text : fmt::format("T{}", i);
+    out.named = t.named;
+    out.name = out.named ? t.name.text : fmt::format("T{}", i);
     out.range = t.range;
-    out.name_range = out.named ? t.name->range : t.range;
+    out.name_range = out.named ? t.name.range : t.range;
     if (!out.named) {
       if (const Symbol *clash = s.names.find(out.name)) {
         cx.diag
@@ -212,13 +217,15 @@ void lower_bodies(Context &cx, ChartScope &s) {
     ast::Place &p = s.ast.places[i];
     model::Place &out = s.out.places[i];
     out.action = lower_block(p.action, scope);
-    if (p.entry) out.entry = lower_block(*p.entry, scope);
-    if (p.exit) out.exit = lower_block(*p.exit, scope);
+    if (p.entry()) out.entry = lower_block(*p.entry(), scope);
+    if (p.exit()) out.exit = lower_block(*p.exit(), scope);
     // Lowered: the tree's statements are no longer needed, and a chart of a million places
     // should not hold both forms at once (docs/performance.md).
     ast::Block().swap(p.action);
-    p.entry.reset();
-    p.exit.reset();
+    if (p.extras) {
+      p.extras->entry.reset();
+      p.extras->exit.reset();
+    }
   }
 }
 
@@ -230,6 +237,11 @@ void lower_transition_condition(Context &cx, ChartScope &s, std::size_t index) {
   ExprScope scope{cx, &s, false};
   s.out.transitions[index].condition = lower_condition(t.condition.get(), scope, "condition");
   t.condition.reset();  // lowered: see lower_bodies
+}
+
+void release_place_names(ast::Transition &t) {
+  std::vector<ast::Name>().swap(t.inputs);
+  std::vector<ast::Name>().swap(t.outputs);
 }
 
 std::optional<bool> constant_condition(const HeapOptional<model::Expr> &condition, const model::Model &model) {

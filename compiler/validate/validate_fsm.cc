@@ -11,7 +11,7 @@ namespace gfec::validation {
 
 namespace {
 
-SourceRange where(const ast::Transition &t) { return t.name ? t.name->range : t.range; }
+SourceRange where(const ast::Transition &t) { return t.named ? t.name.range : t.range; }
 
 bool terminal(const ast::Place &p) { return p.terminal != ast::StateKind::Normal; }
 
@@ -28,14 +28,14 @@ void check_state(Context &cx, ChartScope &s, const ast::Place &p, model::Place &
   if (p.initial && terminal(p))
     cx.diag.error(p.name.range, ErrorKind::InitialState,
                   fmt::format("initial state '{}' cannot be a success or failure state", p.name.text));
-  if (!p.post) return;
+  if (!p.post()) return;
   if (!terminal(p)) {
-    cx.diag.error(p.post->range, ErrorKind::TerminalState,
+    cx.diag.error(p.post()->range, ErrorKind::TerminalState,
                   "only a success or failure state can have a 'post' condition");
     return;
   }
   ExprScope scope{cx, &s, false};
-  out.post = lower_condition(p.post.get(), scope, "postcondition");
+  out.post = lower_condition(p.post(), scope, "postcondition");
 }
 
 /// Notes initial state `index`; a second one is an error (§7: exactly one).
@@ -90,9 +90,10 @@ bool resolve_transitions(Context &cx, ChartScope &s) {
   bool all = true;
   std::map<std::pair<int, int>, std::size_t> pairs;
   for (std::size_t i = 0; i < s.ast.transitions.size(); ++i) {
-    const ast::Transition &t = s.ast.transitions[i];
+    ast::Transition &t = s.ast.transitions[i];
     int from = one_state(cx, s, t, t.inputs, "source");
     int to = one_state(cx, s, t, t.outputs, "target");
+    release_place_names(t);
     if (from >= 0 && to >= 0) check_transition(cx, s, i, from, to, pairs);
     else all = false;
     lower_transition_condition(cx, s, i);

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <set>
 
 namespace gfec::validation {
@@ -12,7 +13,7 @@ namespace gfec::validation {
 namespace {
 
 /// Where to point at a transition: its name if it has one.
-SourceRange where(const ast::Transition &t) { return t.name ? t.name->range : t.range; }
+SourceRange where(const ast::Transition &t) { return t.named ? t.name.range : t.range; }
 
 /// fsm-only syntax in an sfc.
 void check_keywords(Context &cx, const ast::Place &p) {
@@ -21,7 +22,7 @@ void check_keywords(Context &cx, const ast::Place &p) {
   else if (p.is_state)
     cx.diag.error(p.range, ErrorKind::WrongKeyword,
                   fmt::format("'state' in an sfc: an sfc has places (write 'place {}')", p.name.text));
-  if (p.post) cx.diag.error(p.post->range, ErrorKind::WrongKeyword, "'post' belongs to a terminal state of an fsm");
+  if (p.post()) cx.diag.error(p.post()->range, ErrorKind::WrongKeyword, "'post' belongs to a terminal state of an fsm");
 }
 
 /// Resolves a transition's inputs or outputs (`side`), reporting a place listed twice.
@@ -48,12 +49,13 @@ std::vector<int> resolve_places(Context &cx, ChartScope &s, const std::vector<as
 
 void resolve_transitions(Context &cx, ChartScope &s) {
   for (std::size_t i = 0; i < s.ast.transitions.size(); ++i) {
-    const ast::Transition &t = s.ast.transitions[i];
+    ast::Transition &t = s.ast.transitions[i];
     model::Transition &out = s.out.transitions[i];
     if (t.inputs.empty())
       cx.diag.error(t.range, ErrorKind::NoInput, fmt::format("transition '{}' has no input place", out.name));
     out.inputs = resolve_places(cx, s, t.inputs, "inputs", out.name);
     out.outputs = resolve_places(cx, s, t.outputs, "outputs", out.name);
+    release_place_names(t);
     lower_transition_condition(cx, s, i);
   }
 }
@@ -63,12 +65,22 @@ void resolve_transitions(Context &cx, ChartScope &s) {
 /// A worklist, so the cost is linear in the chart whatever the order of its declarations.
 std::vector<bool> reachable_places(const model::Chart &c, const std::vector<bool> &live) {
   std::vector<bool> reach(c.places.size());
-  std::vector<std::vector<std::size_t>> consumers(c.places.size());
-  std::vector<std::size_t> missing(c.transitions.size());  // inputs not reached yet
+  // The transitions that consume each place, as one flat array (compressed rows: place p's are
+  // consumers[first[p]] up to consumers[first[p + 1]]) rather than a heap vector per place, which
+  // a chart of a million places would allocate a million times (docs/performance.md).
+  std::vector<std::uint32_t> first(c.places.size() + 1);
+  std::vector<std::uint32_t> missing(c.transitions.size());  // inputs not reached yet
   for (std::size_t t = 0; t < c.transitions.size(); ++t) {
-    missing[t] = c.transitions[t].inputs.size();
-    for (int p : c.transitions[t].inputs) consumers[static_cast<std::size_t>(p)].push_back(t);
+    missing[t] = static_cast<std::uint32_t>(c.transitions[t].inputs.size());
+    for (int p : c.transitions[t].inputs) ++first[static_cast<std::size_t>(p) + 1];
   }
+  for (std::size_t p = 0; p < c.places.size(); ++p) first[p + 1] += first[p];
+  std::vector<std::uint32_t> consumers(first.back());
+  std::vector<std::uint32_t> next(first.begin(), first.end() - 1);  // where each row's next goes
+  for (std::size_t t = 0; t < c.transitions.size(); ++t)
+    for (int p : c.transitions[t].inputs)
+      consumers[next[static_cast<std::size_t>(p)]++] = static_cast<std::uint32_t>(t);
+  std::vector<std::uint32_t>().swap(next);
   std::vector<std::size_t> work;
   auto reached = [&](std::size_t p) {
     if (reach[p]) return;
@@ -80,8 +92,8 @@ std::vector<bool> reachable_places(const model::Chart &c, const std::vector<bool
   while (!work.empty()) {
     std::size_t p = work.back();
     work.pop_back();
-    for (std::size_t t : consumers[p])
-      if (--missing[t] == 0 && live[t])
+    for (std::uint32_t k = first[p]; k < first[p + 1]; ++k)
+      if (std::uint32_t t = consumers[k]; --missing[t] == 0 && live[t])
         for (int q : c.transitions[t].outputs) reached(static_cast<std::size_t>(q));
   }
   return reach;

@@ -157,8 +157,8 @@ TEST_CASE("alica: a plan with one entry point becomes an fsm with its states and
   // The state holding Fetch.pml runs Fetch's machine (a sub-chart), read from its own file.
   CHECK(m->places[1].runs >= 0);
   const ast::Place &fetch_item = r.loaded.program.files[0]->charts[0].places[1];
-  REQUIRE(fetch_item.runs);
-  CHECK(fetch_item.runs->text == "Fetch");
+  REQUIRE(fetch_item.runs());
+  CHECK(fetch_item.runs()->text == "Fetch");
   const model::Chart *fetch = r.chart("Fetch");
   REQUIRE(fetch);
   CHECK(!fetch->in_main_file);
@@ -184,10 +184,10 @@ TEST_CASE("alica: a plan with several entry points becomes an sfc whose initial 
   CHECK(team->places[0].initial);
   CHECK(team->places[1].initial);
   const auto &places = r.loaded.program.files[0]->charts[0].places;
-  REQUIRE(places[0].runs);
-  CHECK(places[0].runs->text == "TeamLeader");
-  REQUIRE(places[1].runs);
-  CHECK(places[1].runs->text == "TeamHelper");
+  REQUIRE(places[0].runs());
+  CHECK(places[0].runs()->text == "TeamLeader");
+  REQUIRE(places[1].runs());
+  CHECK(places[1].runs()->text == "TeamHelper");
   const model::Chart *leader = r.chart("TeamLeader");
   const model::Chart *helper = r.chart("TeamHelper");
   REQUIRE(leader);

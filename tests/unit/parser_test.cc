@@ -42,13 +42,14 @@ sfc Demo {
   CHECK(c.values[1].is_const);
   REQUIRE(c.places.size() == 3);
   CHECK(c.places[0].initial);
-  CHECK(c.places[0].entry.has_value());
-  CHECK(c.places[0].exit.has_value());
+  CHECK(c.places[0].entry() != nullptr);
+  CHECK(c.places[0].exit() != nullptr);
   CHECK(c.places[0].action.size() == 1);
   CHECK_FALSE(c.places[1].has_body);
   CHECK(c.places[2].has_body);
   REQUIRE(c.transitions.size() == 3);
-  CHECK(c.transitions[0].name->text == "Split");
+  CHECK(c.transitions[0].named);
+  CHECK(c.transitions[0].name.text == "Split");
   CHECK(c.transitions[0].outputs.size() == 2);
   CHECK(c.transitions[1].inputs.size() == 2);
   CHECK(c.transitions[1].condition == nullptr);
@@ -94,9 +95,10 @@ fsm M {
   REQUIRE(c.places.size() == 3);
   CHECK(c.places[0].is_state);
   CHECK(c.places[1].terminal == ast::StateKind::Success);
-  CHECK(c.places[1].post != nullptr);
+  CHECK(c.places[1].post() != nullptr);
   CHECK(c.places[2].terminal == ast::StateKind::Failure);
-  CHECK(c.transitions[1].name->text == "giveUp");
+  CHECK(c.transitions[1].named);
+  CHECK(c.transitions[1].name.text == "giveUp");
 }
 
 TEST_CASE("parser: interface prototypes") {
@@ -213,12 +215,12 @@ fsm M {
   // The statement's range runs from `if` to the last closing brace.
   CHECK(fe.sources.file(s.range.file).text().substr(s.range.begin, s.range.end - s.range.begin) ==
         "if (x > 1) { Go(); n = 2; } else if (Late()) { Stop(); } else { if (y) { } }");
-  REQUIRE(a.entry);
-  CHECK(a.entry->at(0).kind == ast::Stmt::Kind::If);
-  CHECK_FALSE(a.entry->at(0).has_else);
-  REQUIRE(a.exit);
-  CHECK(a.exit->at(0).has_else);
-  CHECK_FALSE(a.exit->at(0).else_if);
+  REQUIRE(a.entry());
+  CHECK(a.entry()->at(0).kind == ast::Stmt::Kind::If);
+  CHECK_FALSE(a.entry()->at(0).has_else);
+  REQUIRE(a.exit());
+  CHECK(a.exit()->at(0).has_else);
+  CHECK_FALSE(a.exit()->at(0).else_if);
 }
 
 TEST_CASE("parser: if and else mistakes") {
@@ -314,14 +316,14 @@ sfc Top {
   CHECK(fe.text() == "");
   const ast::Chart &c = only_file(fe).charts.at(0);
   REQUIRE(c.places.size() == 3);
-  REQUIRE(c.places[0].runs);
-  CHECK(c.places[0].runs->text == "Fetch");
+  REQUIRE(c.places[0].runs());
+  CHECK(c.places[0].runs()->text == "Fetch");
   CHECK(c.places[0].has_body);
-  REQUIRE(c.places[1].runs);
-  CHECK(c.places[1].runs->text == "Fetch");
+  REQUIRE(c.places[1].runs());
+  CHECK(c.places[1].runs()->text == "Fetch");
   CHECK(!c.places[1].has_body);
-  REQUIRE(c.places[2].runs);  // parsed; the validator rejects `runs` on a terminal state
-  CHECK(c.places[2].post);
+  REQUIRE(c.places[2].runs());  // parsed; the validator rejects `runs` on a terminal state
+  CHECK(c.places[2].post());
   const ast::Expr &cond = *c.transitions.at(0).condition;
   REQUIRE(cond.kind == ast::Expr::Kind::Binary);
   const ast::Expr &active_path = *cond.args[0];
