@@ -217,7 +217,7 @@ std::optional<model::Expr> lower_active(const ast::Expr &e, ExprScope &s, bool s
       const ast::Place &p = inner.places[i];
       if (p.name.text == names[k].text && place < 0) place = static_cast<int>(i);
       symbols.push_back({inner.kind == ast::Chart::Kind::Fsm ? Sym::State : Sym::Place, static_cast<int>(i),
-                         std::string(p.name.text), p.name.range});
+                         p.name.text, p.name.range});
     }
     if (place < 0) {
       auto &d = s.cx.diag.error(names[k].range, ErrorKind::UnknownName,
