@@ -12,8 +12,8 @@ Diagnostic &Diagnostic::note(SourceRange r, std::string message) {
   return *this;
 }
 
-Diagnostic &Diagnostic::fix(SourceRange r, std::string replacement) {
-  fixits.push_back({r, std::move(replacement)});
+Diagnostic &Diagnostic::fix(SourceRange r, std::string_view replacement) {
+  fixits.push_back({r, std::string(replacement)});
   return *this;
 }
 

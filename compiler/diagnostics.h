@@ -7,6 +7,7 @@
 #include <array>
 #include <deque>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace gfec {
@@ -39,7 +40,7 @@ struct Diagnostic {
 
   Diagnostic &note(std::string message);
   Diagnostic &note(SourceRange range, std::string message);
-  Diagnostic &fix(SourceRange range, std::string replacement);
+  Diagnostic &fix(SourceRange range, std::string_view replacement);
 
   /// The stable check name: "unknown-name", "syntax", ...; for a warning "-Wname".
   std::string check() const { return kind ? kind->check() : std::string(); }

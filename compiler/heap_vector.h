@@ -49,10 +49,6 @@ public:
 
   void push_back(const T &item) { vec().push_back(item); }
   void push_back(T &&item) { vec().push_back(std::move(item)); }
-  template <typename... Args> T &emplace_back(Args &&...args) {
-    return vec().emplace_back(std::forward<Args>(args)...);
-  }
-  void clear() { items_.reset(); }
 
   friend bool operator==(const HeapVector &a, const HeapVector &b) { return a.get() == b.get(); }
   friend bool operator!=(const HeapVector &a, const HeapVector &b) { return !(a == b); }

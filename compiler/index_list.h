@@ -60,8 +60,6 @@ public:
   void reserve(std::size_t n) {
     if (n > capacity()) grow(static_cast<std::uint32_t>(n));
   }
-  void clear() { size_ = 0; }
-  std::vector<int> vector() const { return {begin(), end()}; }
 
   friend bool operator==(const IndexList &a, const IndexList &b) {
     return a.size_ == b.size_ && std::equal(a.begin(), a.end(), b.begin());

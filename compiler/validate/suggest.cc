@@ -49,7 +49,7 @@ const Symbol *closest(std::string_view name, const std::vector<const Symbol *> &
 void suggest(Diagnostic &d, std::string_view name, const std::vector<const Symbol *> &candidates) {
   // The diagnostic's range is the unknown name itself: the fix-it replaces it.
   if (const Symbol *s = closest(name, candidates))
-    d.fix(d.range, std::string(s->name)).note(s->range, fmt::format("did you mean '{}'?", s->name));
+    d.fix(d.range, s->name).note(s->range, fmt::format("did you mean '{}'?", s->name));
 }
 
 }  // namespace gfec::validation
