@@ -4,6 +4,7 @@
 // small, and spellings point into the source text, which outlives the tree (docs/performance.md).
 #pragma once
 
+#include "ast_expr_list.h"
 #include "heap_optional.h"
 #include "heap_vector.h"
 #include "operators.h"
@@ -33,10 +34,10 @@ using ExprPtr = std::unique_ptr<Expr>;
 struct Expr {
   enum class Kind : std::uint8_t {
     Bool,      ///< `true` / `false`: bool_value
-    Int,       ///< `42`: text is the spelling
-    Float,     ///< `0.5`, `1e-3`: text is the spelling
-    String,    ///< `"..."`: text is the decoded value (File::strings)
-    Duration,  ///< `10ms`, `1.5s`: milliseconds in duration_ms, text is the spelling
+    Int,       ///< `42`: text() is the spelling
+    Float,     ///< `0.5`, `1e-3`: text() is the spelling
+    String,    ///< `"..."`: text() is the decoded value (File::strings)
+    Duration,  ///< `10ms`, `1.5s`: milliseconds in duration_ms, text() is the spelling
     Name,      ///< a variable, constant or config entry: name
     Call,      ///< `f(a, b)` (also `elapsed(P)`): name + args
     Unary,     ///< unary_op + args[0]
@@ -51,11 +52,15 @@ struct Expr {
   bool bool_value = false;
   SourceRange range;
   double duration_ms = 0;
-  /// Int, Float, Duration: the spelling; String: the decoded value. Points into the source text
-  /// or into File::strings, both of which outlive the tree: no node owns a copy.
-  std::string_view text;
+  /// Name, Call: the name. Int, Float, Duration: the spelling (text()); String: the decoded value
+  /// (text()). One field for both, as no expression has a name and a spelling: a chart may hold
+  /// millions of expressions (docs/performance.md). The text points into the source text or into
+  /// File::strings, both of which outlive the tree: no node owns a copy.
   Name name;
-  std::vector<ExprPtr> args;
+  ExprList args;
+
+  /// A literal's spelling (Int, Float, Duration) or a String's decoded value.
+  std::string_view text() const { return name.text; }
 };
 
 // ---------------------------------------------------------------- statements
@@ -153,15 +158,49 @@ struct Place {
   const Name *runs() const { return extras && extras->runs ? &*extras->runs : nullptr; }
 };
 
+/// A read-only run of names: a transition's inputs or outputs.
+class NameSpan {
+public:
+  NameSpan(const Name *first, std::size_t count) : first_(first), count_(count) {}
+  std::size_t size() const { return count_; }
+  bool empty() const { return count_ == 0; }
+  const Name *begin() const { return first_; }
+  const Name *end() const { return first_ + count_; }
+  const Name &operator[](std::size_t i) const { return first_[i]; }
+  const Name &front() const { return *first_; }
+
+private:
+  const Name *first_;
+  std::size_t count_;
+};
+
 struct Transition {
   bool named = false;  ///< `name: inputs -> outputs`; `name` is empty otherwise
   bool parenthesised_inputs = false;
   bool parenthesised_outputs = false;
+  std::uint32_t input_count = 0;  ///< places[0, input_count) are the inputs, the rest the outputs
   SourceRange range;
   Name name;  ///< `named` rather than an std::optional: members ordered to pack (see Place)
-  std::vector<Name> inputs;
-  std::vector<Name> outputs;
+  /// The inputs, then the outputs: one heap block for both (a chart may have a million
+  /// transitions, docs/performance.md). Set with set_places, read with inputs() and outputs().
+  std::vector<Name> places;
   ExprPtr condition;  ///< null: `when true`
+
+  NameSpan inputs() const { return {places.data(), input_count}; }
+  NameSpan outputs() const { return {places.data() + input_count, places.size() - input_count}; }
+  void set_places(const std::vector<Name> &inputs, const std::vector<Name> &outputs) {
+    input_count = static_cast<std::uint32_t>(inputs.size());
+    std::vector<Name> both;
+    both.reserve(inputs.size() + outputs.size());
+    both.insert(both.end(), inputs.begin(), inputs.end());
+    both.insert(both.end(), outputs.begin(), outputs.end());
+    places = std::move(both);
+  }
+  /// Frees the names once the validator has resolved them.
+  void release_places() {
+    std::vector<Name>().swap(places);
+    input_count = 0;
+  }
 };
 
 struct Period {
@@ -231,7 +270,7 @@ struct Rule {
 struct Supervise {
   Name name;
   Name template_name;
-  std::vector<ExprPtr> args;
+  ExprList args;
   std::vector<Rule> rules;
   SourceRange range;
 };
@@ -240,7 +279,7 @@ struct Supervise {
 struct ActorUse {
   Name name;
   Name template_name;  ///< a toolbox template, or another plan (a sub-plan)
-  std::vector<ExprPtr> args;
+  ExprList args;
   std::vector<Rule> rules;
   std::vector<Supervise> supervisors;
   bool written_as_computation = false;
@@ -291,7 +330,7 @@ struct Test {
 
 struct File {
   FileId id = 0;
-  /// The decoded values of string literals (Expr::text views them; a deque never moves them).
+  /// The decoded values of string literals (Expr::text() views them; a deque never moves them).
   std::deque<std::string> strings;
   std::vector<Import> imports;
   std::vector<Verbatim> verbatims;

@@ -168,8 +168,8 @@ private:
   Supervise supervise();
   ActorUse actor_use();
   Rule rule();
-  std::vector<ExprPtr> arguments();
-  std::vector<ExprPtr> active_arguments();
+  ExprList arguments();
+  ExprList active_arguments();
   ExprPtr path(Name first);
   Test test_decl();
   void test_step(Test &test);
@@ -478,17 +478,17 @@ Transition Parser::transition() {
   } else {
     fail(keyword ? "expected the transition's input place" : "expected a declaration");
   }
-  t.inputs = std::move(inputs);
   if (at(Tok::Comma) && !t.parenthesised_inputs)
     fail_hint("expected '->' between a transition's inputs and outputs",
               fmt::format("a transition from several places is a join: write them in brackets, '({}, ...) -> ...'",
-                          t.inputs.front().text));
+                          inputs.front().text));
   expect(Tok::Arrow, "between a transition's inputs and outputs");
-  t.outputs = place_list(t.parenthesised_outputs);
+  std::vector<Name> outputs = place_list(t.parenthesised_outputs);
   if (at(Tok::Comma) && !t.parenthesised_outputs)
     fail_hint("expected ';' after the transition",
               fmt::format("a transition to several places is a fork: write them in brackets, '{} -> ({}, ...)'",
-                          t.inputs.front().text, t.outputs.front().text));
+                          inputs.front().text, outputs.front().text));
+  t.set_places(inputs, outputs);
   if (accept(Tok::KwWhen)) t.condition = expr();
   expect(Tok::Semi, "after the transition");
   t.range = from(begin);
@@ -661,7 +661,7 @@ Rule Parser::rule() {
 }
 
 //G arguments: '(' [ expr { ',' expr } ] ')'
-std::vector<ExprPtr> Parser::arguments() {
+ExprList Parser::arguments() {
   std::vector<ExprPtr> args;
   expect(Tok::LParen, "(the argument list)");
   int highest = 0;
@@ -673,12 +673,12 @@ std::vector<ExprPtr> Parser::arguments() {
   }
   expect(Tok::RParen, "to close the argument list");
   height_ = highest;
-  return args;
+  return ExprList(std::move(args));
 }
 
 //G active_arguments: '(' path ')' | arguments
 //G path: IDENT '.' IDENT { '.' IDENT }
-std::vector<ExprPtr> Parser::active_arguments() {
+ExprList Parser::active_arguments() {
   if (!(at(Tok::LParen) && peek().kind == Tok::Ident)) return arguments();
   advance();
   Name first = name();
@@ -694,7 +694,7 @@ std::vector<ExprPtr> Parser::active_arguments() {
     while (accept(Tok::Comma)) args.push_back(expr());
   }
   expect(Tok::RParen, "to close the argument list");
-  return args;
+  return ExprList(std::move(args));
 }
 
 /// The rest of `P.Q.R` after its first name.
@@ -865,20 +865,20 @@ ExprPtr Parser::primary() {
                 {file_, t.range.begin, tok_.range.end}, joined);
     }
     auto e = make(t.kind == Tok::Int ? Expr::Kind::Int : Expr::Kind::Float, t.range);
-    e->text = t.text;
+    e->name = {t.text, t.range};
     return e;
   }
   case Tok::String: {
     Token t = take();
     auto e = make(Expr::Kind::String, t.range);
-    e->text = out_->strings.emplace_back(std::move(t.value));
+    e->name = {out_->strings.emplace_back(std::move(t.value)), t.range};
     return e;
   }
   case Tok::Duration: {
     Token t = take();
     auto e = make(Expr::Kind::Duration, t.range);
     e->duration_ms = t.duration_ms;
-    e->text = t.text;
+    e->name = {t.text, t.range};
     return e;
   }
   case Tok::KwTrue:
@@ -959,7 +959,7 @@ void Parser::test_step(Test &test) {
       // Too large for a count is as wrong as 0; the validator says so at the number.
       step.count = count_of(n);
       step.value = make(Expr::Kind::Int, n.range);
-      step.value->text = n.text;
+      step.value->name = {n.text, n.range};
     } else if (!at(Tok::Semi)) {
       fail("expected a number of ticks or ';' after 'tick'");
     }

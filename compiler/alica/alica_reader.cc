@@ -941,8 +941,7 @@ private:
       out.named = true;
       out.name = ast::Name{keep(m.transitions.take(identifier(label, "T" + id), id)), out.range};
     }
-    out.inputs = {ast::Name{keep(state_names[*from]), out.range}};
-    out.outputs = {ast::Name{keep(state_names[*to]), out.range}};
+    out.set_places({ast::Name{keep(state_names[*from]), out.range}}, {ast::Name{keep(state_names[*to]), out.range}});
     const JsonValue *cond = t.find("condition");
     const JsonValue *pre = t.find("preCondition");
     const ast::Place *source = nullptr;

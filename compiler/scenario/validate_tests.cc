@@ -144,7 +144,7 @@ private:
       break;
     case AK::Unary: {
       if (e->args.size() != 1) return std::nullopt;
-      auto operand = lower(e->args[0].get());
+      auto operand = lower(e->args[0]);
       if (!operand) return std::nullopt;
       if (operand->kind == Expect::Kind::Chart) break;  // all chart: the chart's lowering types it
       auto type = unary_type(e->unary_op, operand->type);
@@ -161,8 +161,8 @@ private:
     }
     case AK::Binary: {
       if (e->args.size() != 2) return std::nullopt;
-      auto a = lower(e->args[0].get());
-      auto b = lower(e->args[1].get());
+      auto a = lower(e->args[0]);
+      auto b = lower(e->args[1]);
       if (!a || !b) return std::nullopt;
       if (a->kind == Expect::Kind::Chart && b->kind == Expect::Kind::Chart) break;
       auto type = binary_type(e->binary_op, a->type, b->type);
@@ -180,7 +180,7 @@ private:
     }
     case AK::Paren: {
       if (e->args.size() != 1) return std::nullopt;
-      auto inner = lower(e->args[0].get());
+      auto inner = lower(e->args[0]);
       if (!inner) return std::nullopt;
       if (inner->kind == Expect::Kind::Chart) break;
       Expect x = make(Expect::Kind::Paren, inner->type, e->range);
@@ -247,7 +247,7 @@ private:
     std::vector<std::string> args;
     bool ok = true;
     for (std::size_t i = 0; i < target.args.size(); ++i) {
-      auto v = constant(target.args[i].get(), fn.params[i].type, fmt::format("argument {} of '{}'", i + 1, fn.name));
+      auto v = constant(target.args[i], fn.params[i].type, fmt::format("argument {} of '{}'", i + 1, fn.name));
       if (v) args.push_back(*v);
       else ok = false;
     }

@@ -48,7 +48,7 @@ std::optional<model::Expr> lower_duration(const ast::Expr &e, ExprScope &s) {
   model::Expr d = make(K::Ticks, Type::Duration, e.range);
   d.float_value = e.duration_ms;
   if (s.chart) {
-    require_period(s, e.range, fmt::format("duration '{}'", e.text));
+    require_period(s, e.range, fmt::format("duration '{}'", e.text()));
     d.ticks = to_ticks(d.float_value, s.chart->out.period_ms);
   }
   return d;
@@ -186,7 +186,7 @@ std::optional<model::Expr> lower_active(const ast::Expr &e, ExprScope &s, bool s
   std::vector<ast::Name> names;
   if (arg.kind == ast::Expr::Kind::Name) names.push_back(arg.name);
   else if (arg.kind == ast::Expr::Kind::Path)
-    for (const ast::ExprPtr &part : arg.args) names.push_back(part->name);
+    for (const ast::Expr *part : arg.args) names.push_back(part->name);
   else {
     s.cx.diag.error(arg.range, ErrorKind::Active,
                     "'active' takes one argument: a place or state, or a path 'P.Q' into its sub-chart");
@@ -338,7 +338,7 @@ void duration_note(Diagnostic &d, Type a, Type b) {
 
 std::optional<model::Expr> lower_unary(const ast::Expr &e, ExprScope &s) {
   if (e.args.size() != 1) return std::nullopt;
-  auto operand = lower_expr(e.args[0].get(), s);
+  auto operand = lower_expr(e.args[0], s);
   if (!operand) return std::nullopt;
   auto type = unary_type(e.unary_op, operand->type);
   if (!type) {
@@ -356,8 +356,8 @@ std::optional<model::Expr> lower_unary(const ast::Expr &e, ExprScope &s) {
 
 std::optional<model::Expr> lower_binary(const ast::Expr &e, ExprScope &s) {
   if (e.args.size() != 2) return std::nullopt;
-  auto a = lower_expr(e.args[0].get(), s);
-  auto b = lower_expr(e.args[1].get(), s);
+  auto a = lower_expr(e.args[0], s);
+  auto b = lower_expr(e.args[1], s);
   if (!a || !b) return std::nullopt;
   auto type = binary_type(e.binary_op, a->type, b->type);
   if (!type) {
@@ -486,7 +486,7 @@ std::optional<model::Expr> lower_expr(const ast::Expr *e, ExprScope &s) {
   case ast::Expr::Kind::Float: return number_literal(*e, s.cx.diag);
   case ast::Expr::Kind::String: {
     model::Expr x = make(K::String, Type::String, e->range);
-    x.text = e->text;
+    x.text = e->text();
     return x;
   }
   case ast::Expr::Kind::Duration: return lower_duration(*e, s);
@@ -500,7 +500,7 @@ std::optional<model::Expr> lower_expr(const ast::Expr *e, ExprScope &s) {
     return std::nullopt;
   case ast::Expr::Kind::Paren: {
     if (e->args.size() != 1) return std::nullopt;
-    auto inner = lower_expr(e->args[0].get(), s);
+    auto inner = lower_expr(e->args[0], s);
     if (!inner) return std::nullopt;
     model::Expr x = make(K::Paren, inner->type, e->range);
     x.args.push_back(std::move(*inner));
@@ -518,7 +518,7 @@ std::optional<model::Expr> lower_call(const ast::Expr &e, ExprScope &s, bool sta
   if (name.text == "team") return lower_team(e, s, statement);
   if (name.text == "agent") return lower_agent(e, s, statement);
   std::vector<std::optional<model::Expr>> args;
-  for (const auto &a : e.args) args.push_back(lower_expr(a.get(), s));
+  for (const auto &a : e.args) args.push_back(lower_expr(a, s));
   if (name.text.empty()) return std::nullopt;
   if (s.constant) {
     s.cx.diag.error(e.range, ErrorKind::NotConstant, fmt::format("a constant expression cannot call '{}'", name.text));

@@ -42,14 +42,16 @@ void validate_plan(Context &cx, int index);
 /// Reports every plan that contains itself, directly or through sub-plans.
 void check_plan_recursion(Context &cx);
 
-/// Lowers the condition of transition `index`; the sfc and fsm checks call it right after the
-/// transition's places, so diagnostics come in source order.
+/// Lowers the condition of transition `index` (the sfc and fsm checks, once the places' bodies
+/// are lowered).
 void lower_transition_condition(Context &cx, ChartScope &chart, std::size_t index);
 
-/// Releases a transition's input and output names once they are resolved into the model
-/// transition: nothing reads them later, and a chart of a million places should not keep both
-/// forms (docs/performance.md).
-void release_place_names(ast::Transition &t);
+/// Resolves the input and output places of transition `index` into its model transition, with
+/// the family's rules (validate_sfc.cc, validate_fsm.cc), and frees their names. Called as each
+/// model transition is made, before any body is lowered: a chart of a million places then never
+/// holds the names and the model's lists at once (docs/performance.md).
+void resolve_sfc_places(Context &cx, ChartScope &chart, std::size_t index);
+void resolve_fsm_places(Context &cx, ChartScope &chart, std::size_t index);
 
 /// Whether a condition is constant, and its value (no condition is `when true`).
 std::optional<bool> constant_condition(const HeapOptional<model::Expr> &condition, const model::Model &model);

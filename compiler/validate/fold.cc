@@ -105,11 +105,12 @@ std::optional<Value> evaluate(const model::Expr &e, const model::Model &m, Diagn
 std::optional<model::Expr> number_literal(const ast::Expr &e, Diagnostics &diag) {
   model::Expr x;
   x.range = e.range;
-  x.text = e.text;
+  x.text = e.text();
   if (e.kind == ast::Expr::Kind::Int) {
-    auto v = constant::int_literal(e.text);
+    auto v = constant::int_literal(e.text());
     if (!v) {
-      diag.error(e.range, ErrorKind::NotConstant, fmt::format("integer constant '{}' is too large for 'int'", e.text));
+      diag.error(e.range, ErrorKind::NotConstant,
+                 fmt::format("integer constant '{}' is too large for 'int'", e.text()));
       return std::nullopt;
     }
     x.kind = K::Int;
@@ -117,10 +118,10 @@ std::optional<model::Expr> number_literal(const ast::Expr &e, Diagnostics &diag)
     x.int_value = *v;
     return x;
   }
-  auto v = constant::float_literal(e.text);
+  auto v = constant::float_literal(e.text());
   if (!v) {
     diag.error(e.range, ErrorKind::NotConstant,
-               fmt::format("floating constant '{}' is too large for 'double'", e.text));
+               fmt::format("floating constant '{}' is too large for 'double'", e.text()));
     return std::nullopt;
   }
   x.kind = K::Float;

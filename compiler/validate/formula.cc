@@ -74,8 +74,8 @@ std::optional<model::Expr> lower_binary(const ast::Expr &e, Context &cx, PlanSco
   if (op != BinaryOp::Add && op != BinaryOp::Sub && op != BinaryOp::Mul && op != BinaryOp::Div)
     return not_allowed(cx, e.range, fmt::format("operator '{}'", spelling(op)));
   if (e.args.size() != 2) return std::nullopt;
-  auto a = lower_formula(e.args[0].get(), cx, s, constant);
-  auto b = lower_formula(e.args[1].get(), cx, s, constant);
+  auto a = lower_formula(e.args[0], cx, s, constant);
+  auto b = lower_formula(e.args[1], cx, s, constant);
   if (!a || !b) return std::nullopt;
   auto type = formula_type(op, a->type, b->type);
   if (!type) {
@@ -94,7 +94,7 @@ std::optional<model::Expr> lower_binary(const ast::Expr &e, Context &cx, PlanSco
 std::optional<model::Expr> lower_unary(const ast::Expr &e, Context &cx, PlanScope &s, bool constant) {
   if (e.unary_op != UnaryOp::Neg) return not_allowed(cx, e.range, "operator '!'");
   if (e.args.size() != 1) return std::nullopt;
-  auto operand = lower_formula(e.args[0].get(), cx, s, constant);
+  auto operand = lower_formula(e.args[0], cx, s, constant);
   if (!operand) return std::nullopt;
   if (!model::is_numeric(operand->type)) {
     cx.diag.error(e.range, ErrorKind::TypeMismatch,
@@ -128,7 +128,7 @@ std::optional<model::Expr> lower_formula(const ast::Expr *e, Context &cx, PlanSc
   case ast::Expr::Kind::Float: return number_literal(*e, cx.diag);
   case ast::Expr::Kind::String: {
     model::Expr x = make(K::String, Type::String, e->range);
-    x.text = e->text;
+    x.text = e->text();
     return x;
   }
   case ast::Expr::Kind::Duration: return not_allowed(cx, e->range, "a duration");
@@ -139,7 +139,7 @@ std::optional<model::Expr> lower_formula(const ast::Expr *e, Context &cx, PlanSc
   case ast::Expr::Kind::Binary: return check_constant(lower_binary(*e, cx, s, constant), cx.model, cx.diag);
   case ast::Expr::Kind::Paren: {
     if (e->args.size() != 1) return std::nullopt;
-    auto inner = lower_formula(e->args[0].get(), cx, s, constant);
+    auto inner = lower_formula(e->args[0], cx, s, constant);
     if (!inner) return std::nullopt;
     model::Expr x = make(K::Paren, inner->type, e->range);
     x.args.push_back(std::move(*inner));

@@ -172,7 +172,7 @@ std::vector<model::Rule> lower_rules(Context &cx, PlanScope &s, const std::vecto
   return out;
 }
 
-std::vector<model::Arg> lower_args(Context &cx, PlanScope &s, const std::vector<ast::ExprPtr> &args, const Callee &c,
+std::vector<model::Arg> lower_args(Context &cx, PlanScope &s, const ast::ExprList &args, const Callee &c,
                                    SourceRange call) {
   std::vector<model::Arg> out;
   if (c.subplan >= 0) {
@@ -192,8 +192,8 @@ std::vector<model::Arg> lower_args(Context &cx, PlanScope &s, const std::vector<
   if (!cx.template_ok[c.templ]) return out;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const model::TemplateParam &p = params[i];
-    auto x = p.dir == model::ParamDir::Out ? lower_out_arg(cx, s, args[i].get(), p, c)
-                                           : lower_in_arg(cx, s, args[i].get(), p, c, i + 1);
+    auto x =
+        p.dir == model::ParamDir::Out ? lower_out_arg(cx, s, args[i], p, c) : lower_in_arg(cx, s, args[i], p, c, i + 1);
     if (x) out.push_back({std::move(*x), p.dir});
   }
   return out;

@@ -34,7 +34,7 @@ std::vector<model::Rule> lower_rules(Context &cx, PlanScope &s, const std::vecto
                                      const ast::Name &owner);
 
 /// The arguments of an actor or supervisor of `c`; `call` is where a wrong count is reported.
-std::vector<model::Arg> lower_args(Context &cx, PlanScope &s, const std::vector<ast::ExprPtr> &args, const Callee &c,
+std::vector<model::Arg> lower_args(Context &cx, PlanScope &s, const ast::ExprList &args, const Callee &c,
                                    SourceRange call);
 
 }  // namespace gfec::validation

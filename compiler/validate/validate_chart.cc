@@ -170,7 +170,8 @@ void declare_names(Context &cx, ChartScope &s) {
   }
 }
 
-/// Names the transitions: the user's name, or T<position> (§5) unless that name is taken.
+/// Names the transitions: the user's name, or T<position> (§5) unless that name is taken; and
+/// resolves their places.
 void name_transitions(Context &cx, ChartScope &s) {
   s.out.transitions.reserve(s.ast.transitions.size());
   for (std::size_t i = 0; i < s.ast.transitions.size(); ++i) {
@@ -192,6 +193,9 @@ void name_transitions(Context &cx, ChartScope &s) {
       }
     }
     s.out.transitions.push_back(std::move(out));
+    if (s.is_fsm()) resolve_fsm_places(cx, s, i);
+    else resolve_sfc_places(cx, s, i);
+    s.ast.transitions[i].release_places();
   }
 }
 
@@ -237,11 +241,6 @@ void lower_transition_condition(Context &cx, ChartScope &s, std::size_t index) {
   ExprScope scope{cx, &s, false};
   s.out.transitions[index].condition = lower_condition(t.condition.get(), scope, "condition");
   t.condition.reset();  // lowered: see lower_bodies
-}
-
-void release_place_names(ast::Transition &t) {
-  std::vector<ast::Name>().swap(t.inputs);
-  std::vector<ast::Name>().swap(t.outputs);
 }
 
 std::optional<bool> constant_condition(const HeapOptional<model::Expr> &condition, const model::Model &model) {

@@ -52,8 +52,7 @@ void note_initial(Context &cx, ChartScope &s, int index, int &initial) {
 }
 
 /// One side of an fsm transition: exactly one state.
-int one_state(Context &cx, ChartScope &s, const ast::Transition &t, const std::vector<ast::Name> &names,
-              const char *side) {
+int one_state(Context &cx, ChartScope &s, const ast::Transition &t, ast::NameSpan names, const char *side) {
   if (names.size() != 1) {
     cx.diag.error(t.range, ErrorKind::FsmTransition, fmt::format("an fsm transition has exactly one {} state", side));
     return -1;
@@ -80,25 +79,6 @@ void check_transition(Context &cx, ChartScope &s, std::size_t i, int from, int t
         .error(where(t), ErrorKind::DuplicateTransition,
                fmt::format("second transition from '{}' to '{}'", source.name.text, s.ast.places[to].name.text))
         .note(where(s.ast.transitions[it->second]), "the first one is here");
-  s.out.transitions[i].inputs = {from};
-  s.out.transitions[i].outputs = {to};
-}
-
-/// Resolves and checks every transition; false if one could not be resolved, which would
-/// make the connectivity check report its consequences.
-bool resolve_transitions(Context &cx, ChartScope &s) {
-  bool all = true;
-  std::map<std::pair<int, int>, std::size_t> pairs;
-  for (std::size_t i = 0; i < s.ast.transitions.size(); ++i) {
-    ast::Transition &t = s.ast.transitions[i];
-    int from = one_state(cx, s, t, t.inputs, "source");
-    int to = one_state(cx, s, t, t.outputs, "target");
-    release_place_names(t);
-    if (from >= 0 && to >= 0) check_transition(cx, s, i, from, to, pairs);
-    else all = false;
-    lower_transition_condition(cx, s, i);
-  }
-  return all;
 }
 
 /// Every state must be weakly connected to the initial state (§7).
@@ -158,6 +138,18 @@ void warn_unreachable(Context &cx, ChartScope &s, int initial) {
 
 }  // namespace
 
+void resolve_fsm_places(Context &cx, ChartScope &s, std::size_t index) {
+  const ast::Transition &t = s.ast.transitions[index];
+  int from = one_state(cx, s, t, t.inputs(), "source");
+  int to = one_state(cx, s, t, t.outputs(), "target");
+  if (from >= 0 && to >= 0) {
+    s.out.transitions[index].inputs = {from};
+    s.out.transitions[index].outputs = {to};
+  } else {
+    s.places_resolved = false;
+  }
+}
+
 void check_fsm(Context &cx, ChartScope &s, const ErrorWatch &watch) {
   int initial = -1;
   for (std::size_t i = 0; i < s.ast.places.size(); ++i) {
@@ -167,8 +159,15 @@ void check_fsm(Context &cx, ChartScope &s, const ErrorWatch &watch) {
   if (initial < 0)
     cx.diag.error(s.ast.name.range, ErrorKind::InitialState, fmt::format("fsm '{}' has no initial state", s.out.name))
         .note("mark the state it starts in with 'initial state'");
-  bool resolved = resolve_transitions(cx, s);
-  if (initial >= 0 && resolved) check_connected(cx, s, initial);
+  std::map<std::pair<int, int>, std::size_t> pairs;
+  for (std::size_t i = 0; i < s.ast.transitions.size(); ++i) {
+    const model::Transition &t = s.out.transitions[i];
+    if (!t.inputs.empty() && !t.outputs.empty()) check_transition(cx, s, i, t.inputs[0], t.outputs[0], pairs);
+    lower_transition_condition(cx, s, i);
+  }
+  // A transition that could not be resolved would make the connectivity check report its
+  // consequences.
+  if (initial >= 0 && s.places_resolved) check_connected(cx, s, initial);
   if (initial >= 0 && watch.clean()) warn_unreachable(cx, s, initial);
 }
 

@@ -26,7 +26,7 @@ void check_keywords(Context &cx, const ast::Place &p) {
 }
 
 /// Resolves a transition's inputs or outputs (`side`), reporting a place listed twice.
-std::vector<int> resolve_places(Context &cx, ChartScope &s, const std::vector<ast::Name> &names, const char *side,
+std::vector<int> resolve_places(Context &cx, ChartScope &s, ast::NameSpan names, const char *side,
                                 const std::string &transition) {
   std::vector<int> out;
   for (std::size_t i = 0; i < names.size(); ++i) {
@@ -47,17 +47,8 @@ std::vector<int> resolve_places(Context &cx, ChartScope &s, const std::vector<as
   return out;
 }
 
-void resolve_transitions(Context &cx, ChartScope &s) {
-  for (std::size_t i = 0; i < s.ast.transitions.size(); ++i) {
-    ast::Transition &t = s.ast.transitions[i];
-    model::Transition &out = s.out.transitions[i];
-    if (t.inputs.empty())
-      cx.diag.error(t.range, ErrorKind::NoInput, fmt::format("transition '{}' has no input place", out.name));
-    out.inputs = resolve_places(cx, s, t.inputs, "inputs", out.name);
-    out.outputs = resolve_places(cx, s, t.outputs, "outputs", out.name);
-    release_place_names(t);
-    lower_transition_condition(cx, s, i);
-  }
+void lower_conditions(Context &cx, ChartScope &s) {
+  for (std::size_t i = 0; i < s.ast.transitions.size(); ++i) lower_transition_condition(cx, s, i);
 }
 
 /// The places some activation can reach, treating every condition as free except a constant
@@ -175,8 +166,17 @@ void check_sfc(Context &cx, ChartScope &s, const ErrorWatch &watch) {
   if (!initial)
     cx.diag.error(s.ast.name.range, ErrorKind::InitialState, fmt::format("sfc '{}' has no initial place", s.out.name))
         .note("mark the places active at start with 'initial place'");
-  resolve_transitions(cx, s);
+  lower_conditions(cx, s);
   if (watch.clean()) warn_unreachable(cx, s);
+}
+
+void resolve_sfc_places(Context &cx, ChartScope &s, std::size_t index) {
+  const ast::Transition &t = s.ast.transitions[index];
+  model::Transition &out = s.out.transitions[index];
+  if (t.inputs().empty())
+    cx.diag.error(t.range, ErrorKind::NoInput, fmt::format("transition '{}' has no input place", out.name));
+  out.inputs = resolve_places(cx, s, t.inputs(), "inputs", out.name);
+  out.outputs = resolve_places(cx, s, t.outputs(), "outputs", out.name);
 }
 
 }  // namespace gfec::validation

@@ -50,8 +50,8 @@ sfc Demo {
   REQUIRE(c.transitions.size() == 3);
   CHECK(c.transitions[0].named);
   CHECK(c.transitions[0].name.text == "Split");
-  CHECK(c.transitions[0].outputs.size() == 2);
-  CHECK(c.transitions[1].inputs.size() == 2);
+  CHECK(c.transitions[0].outputs().size() == 2);
+  CHECK(c.transitions[1].inputs().size() == 2);
   CHECK(c.transitions[1].condition == nullptr);
   const ast::Expr &cond = *c.transitions[0].condition;
   CHECK(cond.kind == ast::Expr::Kind::Binary);
