@@ -28,9 +28,7 @@ ExprList::ExprList(std::vector<std::unique_ptr<Expr>> items) : one_(nullptr) {
 ExprList &ExprList::operator=(ExprList &&other) noexcept {
   if (this != &other) {
     destroy();
-    one_ = other.one_;
-    size_ = other.size_;
-    other.forget();
+    take(other);
   }
   return *this;
 }

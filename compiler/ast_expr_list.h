@@ -17,10 +17,10 @@ struct Expr;
 /// empty, one inline, or a heap array whose capacity is the next power of two of the size, so
 /// that appending stays linear however long a hostile argument list is.
 class ExprList {
- public:
+public:
   ExprList() noexcept : one_(nullptr) {}
   explicit ExprList(std::vector<std::unique_ptr<Expr>> items);
-  ExprList(ExprList &&other) noexcept : one_(other.one_), size_(other.size_) { other.forget(); }
+  ExprList(ExprList &&other) noexcept : one_(nullptr) { take(other); }
   ExprList &operator=(ExprList &&other) noexcept;
   ExprList(const ExprList &) = delete;
   ExprList &operator=(const ExprList &) = delete;
@@ -28,7 +28,7 @@ class ExprList {
 
   std::size_t size() const { return size_; }
   bool empty() const { return size_ == 0; }
-  Expr *const *begin() const { return size_ == 1 ? &one_ : many_; }
+  Expr *const *begin() const { return size_ == 1 ? &one_ : size_ == 0 ? nullptr : many_; }
   Expr *const *end() const { return begin() + size_; }
   Expr *operator[](std::size_t i) const { return begin()[i]; }
   Expr *at(std::size_t i) const {
@@ -39,7 +39,14 @@ class ExprList {
   Expr *back() const { return end()[-1]; }
   void push_back(std::unique_ptr<Expr> e);
 
- private:
+private:
+  /// Moves `other`'s elements here (this list being empty), reading only its active member.
+  void take(ExprList &other) noexcept {
+    if (other.size_ == 1) one_ = other.one_;
+    else many_ = other.many_;
+    size_ = other.size_;
+    other.forget();
+  }
   void forget() {
     one_ = nullptr;
     size_ = 0;
