@@ -25,7 +25,6 @@ struct ChartScope {
   /// Places (or states), named transitions, vars and the chart's constants.
   Namespace names;
   bool period_reported = false;   ///< "needs a period" is said once per chart
-  bool places_resolved = true;    ///< every transition's places resolved (fsm: one state each)
   std::set<std::string> unknown;  ///< unknown names already reported, each once per chart
   std::set<int> functions;        ///< interface functions called
   std::set<int> consts;           ///< constants read

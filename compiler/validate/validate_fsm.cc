@@ -142,12 +142,9 @@ void resolve_fsm_places(Context &cx, ChartScope &s, std::size_t index) {
   const ast::Transition &t = s.ast.transitions[index];
   int from = one_state(cx, s, t, t.inputs(), "source");
   int to = one_state(cx, s, t, t.outputs(), "target");
-  if (from >= 0 && to >= 0) {
-    s.out.transitions[index].inputs = {from};
-    s.out.transitions[index].outputs = {to};
-  } else {
-    s.places_resolved = false;
-  }
+  if (from < 0 || to < 0) return;  // left without places: check_fsm sees it was not resolved
+  s.out.transitions[index].inputs = {from};
+  s.out.transitions[index].outputs = {to};
 }
 
 void check_fsm(Context &cx, ChartScope &s, const ErrorWatch &watch) {
@@ -160,14 +157,16 @@ void check_fsm(Context &cx, ChartScope &s, const ErrorWatch &watch) {
     cx.diag.error(s.ast.name.range, ErrorKind::InitialState, fmt::format("fsm '{}' has no initial state", s.out.name))
         .note("mark the state it starts in with 'initial state'");
   std::map<std::pair<int, int>, std::size_t> pairs;
+  bool resolved = true;  // every transition has its two states (resolve_fsm_places)
   for (std::size_t i = 0; i < s.ast.transitions.size(); ++i) {
     const model::Transition &t = s.out.transitions[i];
     if (!t.inputs.empty() && !t.outputs.empty()) check_transition(cx, s, i, t.inputs[0], t.outputs[0], pairs);
+    else resolved = false;
     lower_transition_condition(cx, s, i);
   }
   // A transition that could not be resolved would make the connectivity check report its
   // consequences.
-  if (initial >= 0 && s.places_resolved) check_connected(cx, s, initial);
+  if (initial >= 0 && resolved) check_connected(cx, s, initial);
   if (initial >= 0 && watch.clean()) warn_unreachable(cx, s, initial);
 }
 
