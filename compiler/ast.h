@@ -5,6 +5,7 @@
 #pragma once
 
 #include "ast_expr_list.h"
+#include "compact_vector.h"
 #include "heap_optional.h"
 #include "heap_vector.h"
 #include "operators.h"
@@ -183,22 +184,22 @@ struct Transition {
   Name name;  ///< `named` rather than an std::optional: members ordered to pack (see Place)
   /// The inputs, then the outputs: one heap block for both (a chart may have a million
   /// transitions, docs/performance.md). Set with set_places, read with inputs() and outputs().
-  std::vector<Name> places;
+  CompactVector<Name> places;
   ExprPtr condition;  ///< null: `when true`
 
   NameSpan inputs() const { return {places.data(), input_count}; }
   NameSpan outputs() const { return {places.data() + input_count, places.size() - input_count}; }
   void set_places(const std::vector<Name> &inputs, const std::vector<Name> &outputs) {
     input_count = static_cast<std::uint32_t>(inputs.size());
-    std::vector<Name> both;
+    CompactVector<Name> both;
     both.reserve(inputs.size() + outputs.size());
-    both.insert(both.end(), inputs.begin(), inputs.end());
-    both.insert(both.end(), outputs.begin(), outputs.end());
+    for (const Name &n : inputs) both.push_back(n);
+    for (const Name &n : outputs) both.push_back(n);
     places = std::move(both);
   }
   /// Frees the names once the validator has resolved them.
   void release_places() {
-    std::vector<Name>().swap(places);
+    places = CompactVector<Name>();
     input_count = 0;
   }
 };

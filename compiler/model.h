@@ -5,6 +5,8 @@
 // stay small (docs/performance.md, "(a) The compiler").
 #pragma once
 
+#include "compact_string.h"
+#include "compact_vector.h"
 #include "heap_optional.h"
 #include "heap_vector.h"
 #include "index_list.h"
@@ -68,8 +70,10 @@ struct Expr {
   /// The value as a double; converted to `type` it is the expression's value. Kind::Ticks: the
   /// duration as written, in milliseconds (no Ticks expression has a float value of its own).
   double float_value = 0;
-  std::string text;
-  std::vector<Expr> args;
+  // Sixteen bytes each where std::string and std::vector take 32 and 24: expressions are most
+  // of a large chart's model (docs/performance.md).
+  CompactString text;
+  CompactVector<Expr> args;
   HeapVector<int> path;  ///< Kind::Active (on the heap: only `active(P.Q)` has one)
 };
 
@@ -79,12 +83,12 @@ struct Stmt {
   AssignOp op = AssignOp::Set;
   bool else_if = false;  ///< Kind::If: else_block is one If written as `else if`
   SourceRange range;
-  int var = -1;  ///< Kind::Assign: index into Chart::vars
+  int var = -1;                  ///< Kind::Assign: index into Chart::vars
+  std::uint32_t code_begin = 0;  ///< Kind::Verbatim: where `verbatim` starts in range.file (after `%{`); 0: unknown
   /// Kind::Call: the call (an Expr of Kind::Call; its result, if any, is discarded);
   /// Kind::Assign: the value; Kind::If: the condition (Bool). One expression per statement:
   /// a chart may hold a million statements (docs/performance.md).
   Expr expr;
-  std::uint32_t code_begin = 0;  ///< Kind::Verbatim: where `verbatim` starts in range.file (after `%{`); 0: unknown
   // What only some kinds of statement have lives on the heap, a pointer wide when absent: a
   // place's action is one statement of a million in a large chart (docs/performance.md).
   HeapOptional<std::string> verbatim;  ///< Kind::Verbatim
@@ -130,7 +134,7 @@ enum class Terminal : std::uint8_t { None, Success, Failure };
 
 /// A place of an sfc or a state of an fsm.
 struct Place {
-  std::string name;
+  CompactString name;
   std::vector<Stmt> action;
   HeapOptional<std::vector<Stmt>> entry;  ///< on the heap, like post: most places have none
   HeapOptional<std::vector<Stmt>> exit;
@@ -144,8 +148,8 @@ struct Place {
 };
 
 struct Transition {
-  std::string name;  ///< the user's name, or T<position> among all transitions
-  IndexList inputs;  ///< places, each once (two kept inline: index_list.h)
+  CompactString name;  ///< the user's name, or T<position> among all transitions
+  IndexList inputs;    ///< places, each once (two kept inline: index_list.h)
   IndexList outputs;
   /// absent: `when true`. On the heap, so that the transitions table of a large chart is
   /// small while the validator fills it in (docs/performance.md).

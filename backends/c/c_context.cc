@@ -117,10 +117,15 @@ void name_fields(Context &c) {
     c.agent = fields.take("agent");
     c.reports = fields.take("reports");
   }
-  for (const auto &p : c.chart.places) c.timer_field.push_back(p.timed ? fields.take("timer_" + p.name) : "");
+  // Tables by place only when some place needs one: 32 bytes a place that a chart of a million
+  // places without timers or sub-charts would spend on empty strings (docs/performance.md).
+  const auto &places = c.chart.places;
+  if (std::any_of(places.begin(), places.end(), [](const model::Place &p) { return p.timed; }))
+    for (const auto &p : places) c.timer_field.push_back(p.timed ? fields.take("timer_" + p.name) : "");
   if (c.has_context()) c.ctx_field = fields.take("ctx");
   // The instances the places run: a field named after the place (`m->Search`), for debuggers.
-  for (const auto &p : c.chart.places) c.sub_field.push_back(p.runs >= 0 ? fields.take(p.name) : "");
+  if (std::any_of(places.begin(), places.end(), [](const model::Place &p) { return p.runs >= 0; }))
+    for (const auto &p : places) c.sub_field.push_back(p.runs >= 0 ? fields.take(p.name.str()) : "");
 }
 
 void name_locals(Context &c, const NameSpace &globals) {

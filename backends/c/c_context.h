@@ -78,15 +78,16 @@ struct Context {
 
   // Struct fields: chart variables keep their own names; the engine's own fields give way
   // (take a trailing `_`) if a variable already has their name.
-  std::vector<std::string> var_field;    ///< by var index
-  std::vector<std::string> timer_field;  ///< by place index; empty for places without a timer
-  std::string av;                        ///< sfc: activation counters
-  std::string state;                     ///< fsm: the current state
-  std::string status;                    ///< fsm: 0 running, 1 succeeded, -1 failed
-  std::string started;                   ///< set by the first tick, when an initial place has an entry block
-  std::string current;                   ///< sequential form: the number of the one active place
-  std::string active;                    ///< sparse form: the active places as bits with summary levels
-  std::string candidates;                ///< sparse form, not place-driven: the transitions to try this tick
+  std::vector<std::string> var_field;  ///< by var index
+  /// By place index, "" for a place without a timer; no entries at all when no place has one.
+  std::vector<std::string> timer_field;
+  std::string av;          ///< sfc: activation counters
+  std::string state;       ///< fsm: the current state
+  std::string status;      ///< fsm: 0 running, 1 succeeded, -1 failed
+  std::string started;     ///< set by the first tick, when an initial place has an entry block
+  std::string current;     ///< sequential form: the number of the one active place
+  std::string active;      ///< sparse form: the active places as bits with summary levels
+  std::string candidates;  ///< sparse form, not place-driven: the transitions to try this tick
   // A team machine's (docs/c-engine.md "Team machines"); empty for a machine that is no team.
   std::string agent;         ///< this engine's agent number
   std::string reports;       ///< by agent, the state it last reported (-1: none)
@@ -132,9 +133,9 @@ struct Context {
   /// By place: the context of the instance the place runs (null if it runs nothing), and the
   /// parent struct's field that holds it.
   std::vector<std::unique_ptr<Context>> sub;
-  std::vector<std::string> sub_field;
-  bool stoppable = false;  ///< an instance whose place (or an enclosing one) can lose activation
-  bool stop_code = false;  ///< stopping the instance runs code: some exit block, at any depth
+  std::vector<std::string> sub_field;  ///< like timer_field: no entries when no place runs a chart
+  bool stoppable = false;              ///< an instance whose place (or an enclosing one) can lose activation
+  bool stop_code = false;              ///< stopping the instance runs code: some exit block, at any depth
   /// The stop function exists (and is called): it can be stopped and stopping runs code.
   bool has_stop() const { return stoppable && stop_code; }
   /// Some transition condition reads, through active()/succeeded()/failed(), a place whose

@@ -27,6 +27,11 @@ void emit_sfc_run(CodeWriter &w, const Context &c);
 /// run function, one tick exactly as docs/language.md §5.1 says.
 void emit_scalable_helpers(CodeWriter &w, const Context &c);
 void emit_scalable_sfc_run(CodeWriter &w, const Context &c);
+/// The scalable form's fixed functions, from the templates of c_set_functions.cc: the sets'
+/// lowest, next, insert and erase, and the sort of a tick's watched places (`type`: their C type).
+/// At file level (indentation 0).
+void emit_set_functions(CodeWriter &w, const Context &c);
+void emit_sort_function(CodeWriter &w, const Context &c, const char *type);
 /// `void X_run(X *m) { ... }`: one tick, docs/language.md §7.
 void emit_fsm_run(CodeWriter &w, const Context &c);
 

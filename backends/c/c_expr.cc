@@ -104,7 +104,7 @@ Rendered int_literal(std::int32_t v) {
 /// double. `0.1f` where C reads that as the same float as the double 0.1 converted (the model's
 /// value), else `(float)0.1`.
 Rendered float_literal(const Expr &e) {
-  const std::string &text = e.text;
+  const std::string text = e.text.str();
   const bool negative = !text.empty() && text[0] == '-';
   float direct = std::strtof(text.c_str(), nullptr);  // how C reads the spelling with an `f`
   float converted = static_cast<float>(e.float_value);
@@ -116,11 +116,11 @@ Rendered float_literal(const Expr &e) {
 Rendered literal(const Expr &e) {
   switch (e.kind) {
   case Expr::Kind::Bool: return {e.bool_value ? "true" : "false"};
-  case Expr::Kind::String: return {c_string_literal(e.text)};
+  case Expr::Kind::String: return {c_string_literal(e.text.str())};
   case Expr::Kind::Int: return int_literal(e.int_value);
   default:
     if (e.type == Type::Float) return float_literal(e);
-    return {e.text, !e.text.empty() && e.text[0] == '-' ? kUnary : kPrimary};
+    return {e.text.str(), !e.text.empty() && e.text.data()[0] == '-' ? kUnary : kPrimary};
   }
 }
 
@@ -361,7 +361,7 @@ private:
     std::vector<bool> in_temporary;
     std::vector<std::string> before;
   };
-  Operands operands(const std::vector<Expr> &args) {
+  Operands operands(const CompactVector<Expr> &args) {
     std::size_t calling = 0, last = 0;
     for (std::size_t i = 0; i < args.size(); ++i)
       if (has_call(args[i])) {

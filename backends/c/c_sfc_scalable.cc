@@ -671,23 +671,6 @@ private:
   }
 };
 
-void sort_helper(CodeWriter &w, const Context &c, const char *type) {
-  w.blank();
-  w.line("/* Sorts a short list of place numbers (the places that lost or gained activation in a tick). */");
-  w.line("static void {}({} *list, uint32_t n)", c.sort_fn, type);
-  w.line("{");
-  w.line("    uint32_t i;");
-  w.line("    uint32_t j;");
-  w.line("    for (i = 1; i < n; ++i) {");
-  w.line("        {} key = list[i];", type);
-  w.line("        for (j = i; (j > 0u) && (list[j - 1u] > key); --j) {");
-  w.line("            list[j] = list[j - 1u];");
-  w.line("        }");
-  w.line("        list[j] = key;");
-  w.line("    }");
-  w.line("}");
-}
-
 /// The file-local functions of the sparse form's sets, before _init.
 void sparse_helpers(CodeWriter &w, const Context &c) {
   const Layout &l = c.layout;
@@ -705,99 +688,15 @@ void sparse_helpers(CodeWriter &w, const Context &c) {
   if (!l.place_driven)
     w.line("static const uint32_t {}[{}] = {{{}}};", c.candidate_levels, l.candidates.from.size(), table(l.candidates));
   w.blank();
-  // The helpers have one exit each and leave their parameters alone (MISRA C:2012 rules 15.5
-  // and 17.8): a search ends by a flag, not by return or break.
-  w.line("/* The number of the lowest bit set in a word that is not 0. */");
-  w.line("static uint32_t {}(uint32_t word)", c.lowest_fn);
-  w.line("{");
-  directive(w, "#if defined(__GNUC__) || defined(__clang__)");
-  w.line("    uint32_t n = (uint32_t)__builtin_ctz(word);");
-  directive(w, "#else");
-  w.line("    uint32_t rest = word;");
-  w.line("    uint32_t n = 0u;");
-  w.line("    while ((rest & 1u) == 0u) {");
-  w.line("        rest >>= 1;");
-  w.line("        ++n;");
-  w.line("    }");
-  directive(w, "#endif");
-  w.line("    return n;");
-  w.line("}");
-  w.blank();
-  w.line("/* The first member >= from of a set of `count` levels, looking from level `low` (0: members;");
-  w.line("   1: words of level 0 that have members), or UINT32_MAX when there is none. */");
-  w.line("static uint32_t {}(const uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t low, uint32_t from)",
-         c.next_fn);
-  w.line("{");
-  w.line("    uint32_t level = low;");
-  w.line("    uint32_t i = from;");
-  w.line("    uint32_t word = 0u;");
-  w.line("    bool searching = true;");
-  w.line("    bool found = false;");
-  w.line("    while (searching) {");
-  w.line("        if ((i >> 5) >= (levels[level + 1u] - levels[level])) {");
-  w.line("            searching = false; /* past the last word of this level */");
-  w.line("        } else {");
-  w.line("            word = set[levels[level] + (i >> 5)] & (0xFFFFFFFFu << (i & 31u));");
-  w.line("            if (word != 0u) {");
-  w.line("                found = true;");
-  w.line("                searching = false;");
-  w.line("            } else if ((level + 1u) == count) {");
-  w.line("                searching = false; /* the top level has nothing further */");
-  w.line("            } else {");
-  w.line("                i = (i >> 5) + 1u; /* the next word of this level: its bit one level up */");
-  w.line("                ++level;");
-  w.line("            }");
-  w.line("        }");
-  w.line("    }");
-  w.line("    if (found) {");
-  w.line("        i = (i & ~31u) | {}(word);", c.lowest_fn);
-  w.line("        while (level > low) {");
-  w.line("            --level;");
-  w.line("            i = (i << 5) | {}(set[levels[level] + i]);", c.lowest_fn);
-  w.line("        }");
-  w.line("    } else {");
-  w.line("        i = UINT32_MAX;");
-  w.line("    }");
-  w.line("    return i;");
-  w.line("}");
-  w.blank();
-  w.line("/* Adds a member, telling the levels above when its word stops being empty. */");
-  w.line("static void {}(uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t member)", c.insert_fn);
-  w.line("{");
-  w.line("    uint32_t i = member;");
-  w.line("    uint32_t level = 0u;");
-  w.line("    bool rising = true;");
-  w.line("    while (rising && (level < count)) {");
-  w.line("        uint32_t *word = &set[levels[level] + (i >> 5)];");
-  w.line("        uint32_t was = *word;");
-  w.line("        *word = was | (1u << (i & 31u));");
-  w.line("        rising = (was == 0u); /* the word was empty: the level above learns of it */");
-  w.line("        i >>= 5;");
-  w.line("        ++level;");
-  w.line("    }");
-  w.line("}");
-  w.blank();
-  w.line("/* Removes a member of level `low` (1: a word of level 0 that became empty), telling the levels");
-  w.line("   above when a word becomes empty. */");
-  w.line("static void {}(uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t low, uint32_t member)",
-         c.erase_fn);
-  w.line("{");
-  w.line("    uint32_t i = member;");
-  w.line("    uint32_t level = low;");
-  w.line("    bool emptied = true;");
-  w.line("    while (emptied && (level < count)) {");
-  w.line("        uint32_t *word = &set[levels[level] + (i >> 5)];");
-  w.line("        *word &= ~(1u << (i & 31u));");
-  w.line("        emptied = (*word == 0u); /* the word became empty: the level above learns of it */");
-  w.line("        i >>= 5;");
-  w.line("        ++level;");
-  w.line("    }");
-  w.line("}");
+  emit_set_functions(w, c);
   if (c.chart.transitions.empty() || l.watch_capacity == 0) return;
   const char *type = uint_type(l.index_bits);
   // One watched place needs no sorting (and gcc -O2 would warn about the inlined loop over a
   // one-entry array, -Warray-bounds).
-  if (l.lost_capacity > 1 || l.gained_capacity > 1) sort_helper(w, c, type);
+  if (l.lost_capacity > 1 || l.gained_capacity > 1) {
+    w.blank();
+    emit_sort_function(w, c, type);
+  }
   w.blank();
   w.line("/* Whether a place runs exit or entry code, or resets its timer, when its activation changes. */");
   w.line("static bool {}(uint32_t place)", c.watched_fn);

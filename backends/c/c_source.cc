@@ -51,7 +51,7 @@ void verbatims(CodeWriter &w, const Context &c) {
 void init(CodeWriter &w, const Context &c) {
   std::vector<std::string> initial;
   for (const auto &p : c.chart.places)
-    if (p.initial) initial.push_back(p.name);
+    if (p.initial) initial.push_back(p.name.str());
   std::string list;
   for (std::size_t i = 0; i < initial.size(); ++i)
     list += (i == 0 ? "" : i + 1 == initial.size() ? " and " : ", ") + initial[i];
@@ -305,8 +305,8 @@ void name_functions(CodeWriter &w, const Context &c) {
     w.line("}");
   };
   std::vector<std::string> places, transitions;
-  for (const auto &p : c.chart.places) places.push_back(p.name);
-  for (const auto &tr : c.chart.transitions) transitions.push_back(tr.name);
+  for (const auto &p : c.chart.places) places.push_back(p.name.str());
+  for (const auto &tr : c.chart.transitions) transitions.push_back(tr.name.str());
   table(c.place_name_fn, "place", c.place_count, places);
   w.blank();
   table(c.transition_name_fn, "transition", c.transition_count, transitions);

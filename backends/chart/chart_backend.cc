@@ -93,7 +93,7 @@ void place(CodeWriter &w, const model::Model &m, int chart, const model::Place &
 }
 
 std::string places(const model::Chart &c, const IndexList &list) {
-  if (list.size() == 1) return c.places[static_cast<std::size_t>(list[0])].name;
+  if (list.size() == 1) return c.places[static_cast<std::size_t>(list[0])].name.str();
   std::string out;
   for (int p : list) out += (out.empty() ? "" : ", ") + c.places[static_cast<std::size_t>(p)].name;
   return "(" + out + ")";

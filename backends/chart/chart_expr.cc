@@ -9,14 +9,14 @@ namespace {
 /// A duration as the language writes it: whole milliseconds as "500ms", others as "1.5ms".
 std::string duration(double ms) { return fmt::format("{}ms", ms); }
 
-std::string args_of(const model::Model &m, int chart, const std::vector<model::Expr> &args) {
+std::string args_of(const model::Model &m, int chart, const CompactVector<model::Expr> &args) {
   std::string out;
   for (const auto &a : args) out += (out.empty() ? "" : ", ") + expr(m, chart, a);
   return out;
 }
 
-const std::string &place_name(const model::Model &m, int chart, int place) {
-  return m.charts[static_cast<std::size_t>(chart)].places[static_cast<std::size_t>(place)].name;
+std::string_view place_name(const model::Model &m, int chart, int place) {
+  return m.charts[static_cast<std::size_t>(chart)].places[static_cast<std::size_t>(place)].name.view();
 }
 
 }  // namespace
@@ -27,8 +27,8 @@ std::string expr(const model::Model &m, int chart, const model::Expr &e) {
   switch (e.kind) {
   case K::Bool: return e.bool_value ? "true" : "false";
   case K::Int:
-  case K::Float: return e.text;
-  case K::String: return c_string_literal(e.text);
+  case K::Float: return e.text.str();
+  case K::String: return c_string_literal(e.text.str());
   case K::Ticks: return duration(e.float_value);
   case K::Var: return c.vars[static_cast<std::size_t>(e.index)].name;
   case K::Const: return m.consts[static_cast<std::size_t>(e.index)].name;
@@ -50,7 +50,8 @@ std::string expr(const model::Model &m, int chart, const model::Expr &e) {
     int in = chart;
     for (int place : e.path) {
       if (in < 0) break;
-      path += (path.empty() ? "" : ".") + place_name(m, in, place);
+      if (!path.empty()) path += '.';
+      path += place_name(m, in, place);
       in = m.charts[static_cast<std::size_t>(in)].places[static_cast<std::size_t>(place)].runs;
     }
     return fmt::format("active({})", path);

@@ -36,8 +36,8 @@ public:
     switch (e.kind) {
     case Expr::Kind::Bool: return {e.bool_value ? "true" : "false"};
     case Expr::Kind::Int: return int_literal(e.int_value);
-    case Expr::Kind::Float: return {e.text, e.text.rfind('-', 0) == 0 ? kUnary : kPrimary};
-    case Expr::Kind::String: return {c_string_literal(e.text), kPrimary, true};
+    case Expr::Kind::Float: return {e.text.str(), e.text.view().rfind('-', 0) == 0 ? kUnary : kPrimary};
+    case Expr::Kind::String: return {c_string_literal(e.text.str()), kPrimary, true};
     case Expr::Kind::Config: return {entry(e, cpp_type(e.type))};
     case Expr::Kind::Unary: return unary(e);
     case Expr::Kind::Binary: return e.type == Type::String ? join(e) : arithmetic(e);
@@ -131,7 +131,8 @@ bool is_constant(const Expr &e) {
   case Expr::Kind::String: return true;
   case Expr::Kind::Unary: {
     const Expr &operand = e.args.at(0);
-    return (operand.kind == Expr::Kind::Int || operand.kind == Expr::Kind::Float) && operand.text.rfind('-', 0) != 0;
+    return (operand.kind == Expr::Kind::Int || operand.kind == Expr::Kind::Float) &&
+           operand.text.view().rfind('-', 0) != 0;
   }
   default: return false;
   }
@@ -178,10 +179,10 @@ std::string initial_value(const model::Expr &literal, model::Type type) {
   switch (type) {
   case Type::Bool: return literal.bool_value ? "afp::Value(true)" : "afp::Value(false)";
   case Type::Int:
-    return fmt::format("afp::Value({})", literal.text == "-2147483648" ? "-2147483647 - 1" : literal.text);
-  case Type::Float: return fmt::format("afp::Value({})", float_value(literal.text));
-  case Type::Double: return fmt::format("afp::Value({})", float_spelling(literal.text));
-  case Type::String: return fmt::format("afp::Value({})", c_string_literal(literal.text));
+    return fmt::format("afp::Value({})", literal.text == "-2147483648" ? "-2147483647 - 1" : literal.text.c_str());
+  case Type::Float: return fmt::format("afp::Value({})", float_value(literal.text.str()));
+  case Type::Double: return fmt::format("afp::Value({})", float_spelling(literal.text.str()));
+  case Type::String: return fmt::format("afp::Value({})", c_string_literal(literal.text.str()));
   default: break;
   }
   return afp_type(type);  // objects have no literal: declared by type

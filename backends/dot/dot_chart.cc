@@ -14,7 +14,7 @@ namespace {
 /// success and red for failure, and say which they are.
 std::string place_node(const model::Model &m, const model::Chart &c, std::size_t i, const std::string &id) {
   const model::Place &p = c.places[i];
-  std::string label = p.name;
+  std::string label = p.name.str();
   // Grafcet's enclosing step: the chart it runs is drawn beside it, in a frame (below).
   if (p.runs >= 0) label += "\nruns " + m.charts.at(static_cast<std::size_t>(p.runs)).name;
   std::string attrs = "shape=box";

@@ -33,10 +33,9 @@ const char *kind_name(Expr::Kind k) {
   return "?";
 }
 
-template <typename T> const std::string &name_at(const std::vector<T> &table, int index) {
-  static const std::string unknown = "?";
-  return index >= 0 && static_cast<std::size_t>(index) < table.size() ? table[static_cast<std::size_t>(index)].name
-                                                                      : unknown;
+template <typename T> std::string name_at(const std::vector<T> &table, int index) {
+  if (index < 0 || static_cast<std::size_t>(index) >= table.size()) return "?";
+  return std::string(table[static_cast<std::size_t>(index)].name);
 }
 
 }  // namespace

@@ -50,7 +50,7 @@ void instance_rows(const model::Model &model, const model::Chart &c, const std::
   if (!path.empty())
     instances.push_back({{"path", path}, {"chart", c.name}, {"first", first}, {"count", c.places.size()}});
   for (std::size_t i = 0; i < c.places.size(); ++i) {
-    nlohmann::json row = {{"name", path.empty() ? c.places[i].name : path + "/" + c.places[i].name},
+    nlohmann::json row = {{"name", path.empty() ? c.places[i].name.str() : path + "/" + c.places[i].name},
                           {"node", fmt::format("{}p{}", prefix, i)},
                           {"terminal", c.places[i].terminal != model::Terminal::None}};
     if (!path.empty()) row["group"] = path;
@@ -59,8 +59,8 @@ void instance_rows(const model::Model &model, const model::Chart &c, const std::
   for (std::size_t i = 0; i < c.places.size(); ++i)
     if (c.places[i].runs >= 0)
       instance_rows(model, model.charts.at(static_cast<std::size_t>(c.places[i].runs)),
-                    path.empty() ? c.places[i].name : path + "." + c.places[i].name, fmt::format("{}s{}_", prefix, i),
-                    rows, first_row, instances);
+                    path.empty() ? c.places[i].name.str() : path + "." + c.places[i].name,
+                    fmt::format("{}s{}_", prefix, i), rows, first_row, instances);
 }
 
 /// The run viewer's recording of an interpreter run (docs/viewer.md): the chart's picture, the

@@ -1,6 +1,9 @@
 #include "naming/naming.h"
 
+#include <algorithm>
+#include <iterator>
 #include <regex>
+#include <set>
 
 namespace gfec::naming {
 
@@ -66,6 +69,13 @@ bool is_c_library_name(std::string_view name) {
                                                    "WINT_MAX",
                                                    "NDEBUG"};
   if (names.count(name)) return true;
+  // Every name the patterns match starts with one of these: most names (every place of a large
+  // chart) are settled here, without the regex (a tenth of a large compile's time otherwise).
+  static const std::string_view starts[] = {"int",   "uint", "INT",   "UINT",  "SCHAR",  "UCHAR", "CHAR", "SHRT",
+                                            "USHRT", "LONG", "ULONG", "LLONG", "ULLONG", "FLT_",  "DBL_", "LDBL_"};
+  if (std::none_of(std::begin(starts), std::end(starts),
+                   [&](std::string_view s) { return name.substr(0, s.size()) == s; }))
+    return false;
   // intN_t, uintN_t, int_leastN_t, int_fastN_t and their INTn_MAX/_MIN/_C macros; <limits.h>'s
   // INT_MAX, UCHAR_MAX, LLONG_MIN...; <float.h>'s FLT_*, DBL_*, LDBL_*.
   static const std::regex patterns(
@@ -89,7 +99,7 @@ Reserved reserved(std::string_view word) {
 
 std::string NameSpace::take(std::string name) {
   while (!free(name)) name += '_';
-  taken_.insert(name);
+  insert(name);
   return name;
 }
 
@@ -99,9 +109,11 @@ bool NameSpace::numbered(const std::string &name) const {
 }
 
 bool NameSpace::has_numbered(const std::string &prefix) const {
-  // The names that start with `prefix` are neighbours in the ordered set.
-  for (auto it = taken_.upper_bound(prefix); it != taken_.end() && it->compare(0, prefix.size(), prefix) == 0; ++it)
-    if (it->find_first_not_of("0123456789", prefix.size()) == std::string::npos) return true;
+  // Once an engine (reserve_numbered_prefix): a pass over the names is linear, as the rest.
+  for (const std::string &name : names_)
+    if (name.size() > prefix.size() && name.compare(0, prefix.size(), prefix) == 0 &&
+        name.find_first_not_of("0123456789", prefix.size()) == std::string::npos)
+      return true;
   return outer_ && outer_->has_numbered(prefix);
 }
 

@@ -4,7 +4,9 @@
 // a user's name (check `reserved-name`); the back ends never hand one out for their own names.
 #pragma once
 
-#include <set>
+#include "name_index.h"
+
+#include <deque>
 #include <string>
 #include <string_view>
 
@@ -32,7 +34,9 @@ public:
   explicit NameSpace(const NameSpace *outer) : outer_(outer) {}
 
   /// A name that cannot move (a user's function, an API name): later take()s avoid it.
-  void claim(const std::string &name) { taken_.insert(name); }
+  void claim(const std::string &name) {
+    if (!contains(name)) insert(name);
+  }
   bool free(const std::string &name) const { return !taken(name) && !is_reserved(name) && !numbered(name); }
   std::string take(std::string name);
   /// Reserves the prefix of numbered temporaries (`gfec_t1`, `gfec_t2`, ...): `base`, with `_`
@@ -41,13 +45,25 @@ public:
   const std::string &reserve_numbered_prefix(std::string base);
 
 private:
-  bool taken(const std::string &name) const { return taken_.count(name) || (outer_ && outer_->taken(name)); }
+  /// The name at a position of names_, for the index.
+  auto key() const {
+    return [this](std::uint32_t k) -> const std::string & { return names_[k]; };
+  }
+  bool taken(const std::string &name) const { return contains(name) || (outer_ && outer_->taken(name)); }
+  bool contains(std::string_view name) const { return index_.find(name, key()) != NameIndex::kNone; }
+  void insert(std::string name) {
+    index_.insert(name, static_cast<std::uint32_t>(names_.size()), key());
+    names_.push_back(std::move(name));
+  }
   bool numbered(const std::string &name) const;
   /// Some name here or outside is `prefix` followed by digits only.
   bool has_numbered(const std::string &prefix) const;
 
   const NameSpace *outer_ = nullptr;
-  std::set<std::string> taken_;
+  // An engine names two things a place (docs/performance.md): the names in a deque, which never
+  // moves them, and an index of their positions rather than a std::set's 80-byte nodes.
+  std::deque<std::string> names_;
+  NameIndex index_;
   std::string prefix_;  ///< the reserved temporaries' prefix; empty: none yet
 };
 

@@ -61,7 +61,7 @@ public:
     case Expect::Kind::State: {
       bool v = s_.state == e.place;
       std::string current = s_.state >= 0 && s_.state < static_cast<int>(c_.places.size())
-                                ? c_.places[static_cast<std::size_t>(s_.state)].name
+                                ? c_.places[static_cast<std::size_t>(s_.state)].name.str()
                                 : "?";
       operands.push_back({e.range, fmt::format("{} (the current state is '{}')", v ? "true" : "false", current)});
       return literal_bool(v, e.range);

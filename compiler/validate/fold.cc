@@ -20,7 +20,7 @@ Value stored(const model::Expr &e) {
   case Type::Int: return Value::of_int(e.int_value);
   case Type::Float: return Value::of_float(static_cast<float>(e.float_value));
   case Type::Double: return Value::of_double(e.float_value);
-  default: return Value::of_string(e.text);
+  default: return Value::of_string(e.text.str());
   }
 }
 
@@ -86,7 +86,7 @@ std::optional<Value> evaluate(const model::Expr &e, const model::Model &m, Diagn
   case K::Bool: return Value::of_bool(e.bool_value);
   case K::Int:
   case K::Float: return stored(e);  // the value number_literal() parsed
-  case K::String: return Value::of_string(e.text);
+  case K::String: return Value::of_string(e.text.str());
   case K::Const:
     if (e.index < 0 || e.index >= static_cast<int>(m.consts.size())) return std::nullopt;
     return evaluate(m.consts[e.index].value, m, diag);

@@ -74,29 +74,14 @@ bool Namespace::declare(const ast::Name &name, Sym kind, int index, Diagnostics 
     report_clash(name, kind, *previous, diag);
     return false;
   }
-  if (2 * (symbols_.size() + 1) > slots_.size()) grow();
-  slots_[slot_of(name.text)] = static_cast<std::uint32_t>(symbols_.size());
-  symbols_.push_back({kind, index, name.text, name.range});
+  index_.insert(name.text, static_cast<std::uint32_t>(symbols_.size()), key());
+  symbols_.emplace_back(kind, index, name.text, name.range);
   return true;
 }
 
-std::size_t Namespace::slot_of(std::string_view name) const {
-  std::size_t mask = slots_.size() - 1;
-  std::size_t hash = std::hash<std::string_view>{}(name);
-  std::size_t i = hash & mask;
-  while (slots_[i] != kEmpty && symbols_[slots_[i]].name != name) i = (i + 1) & mask;
-  return i;
-}
-
-void Namespace::grow() {
-  slots_.assign(slots_.empty() ? 16 : 2 * slots_.size(), kEmpty);
-  for (std::size_t k = 0; k < symbols_.size(); ++k) slots_[slot_of(symbols_[k].name)] = static_cast<std::uint32_t>(k);
-}
-
 const Symbol *Namespace::find(std::string_view name) const {
-  if (slots_.empty()) return nullptr;
-  std::uint32_t k = slots_[slot_of(name)];
-  return k == kEmpty ? nullptr : &symbols_[k];
+  std::uint32_t k = index_.find(name, key());
+  return k == NameIndex::kNone ? nullptr : &symbols_[k];
 }
 
 std::vector<const Symbol *> Namespace::of(std::initializer_list<Sym> kinds) const {

@@ -4,6 +4,7 @@
 
 #include "ast.h"
 #include "diagnostics.h"
+#include "name_index.h"
 
 #include <cstdint>
 #include <deque>
@@ -41,13 +42,26 @@ const char *describe(Sym kind);
 /// "a place", "an actor": the kind with its article.
 std::string with_article(Sym kind);
 
-struct Symbol {
-  Sym kind;
+class Symbol {
+public:
+  Symbol(Sym kind, int index, std::string_view name, SourceRange range)
+      : name_(name.data()), name_size_(static_cast<std::uint32_t>(name.size())), index(index), range(range),
+        kind(kind) {}
+
+  /// Views the text of the declaring ast::Name (or, in a list of did-you-mean candidates, a
+  /// string that outlives the list): source text and the tree's strings outlive the validator.
+  std::string_view name() const { return {name_, name_size_}; }
+
+private:
+  // A pointer and a 32-bit size rather than a std::string_view: 32 bytes a symbol, not 40, in
+  // a chart that declares two million (docs/performance.md).
+  const char *name_;
+  std::uint32_t name_size_;
+
+public:
   int index = -1;  ///< into the model table the kind belongs to
-  /// Views the declaring ast::Name (or, in a list of did-you-mean candidates, a string that
-  /// outlives the list): the tree outlives the validator and its tables never move.
-  std::string_view name;
   SourceRange range;
+  Sym kind;
 };
 
 /// One namespace: names in declaration order, the first declaration winning lookups.
@@ -63,17 +77,16 @@ public:
   std::vector<const Symbol *> of(std::initializer_list<Sym> kinds) const;
 
 private:
-  /// The slot `name` is in, or the empty slot where it would go. slots_ must not be empty.
-  std::size_t slot_of(std::string_view name) const;
-  void grow();
+  /// The name at a symbol number, for the index.
+  auto key() const {
+    return [this](std::uint32_t k) { return symbols_[k].name(); };
+  }
 
   // A chart may declare a million names (docs/performance.md): a symbol views its name in the
-  // syntax tree instead of copying it (a deque keeps the symbols in place), and the index is an
-  // open-addressing hash table of symbol numbers (linear probing, a power-of-two capacity at
-  // most half full): 8 to 16 bytes a name, where a node-based map took ~150.
-  static constexpr std::uint32_t kEmpty = UINT32_MAX;
+  // syntax tree instead of copying it (a deque keeps the symbols in place), and the index holds
+  // symbol numbers (name_index.h).
   std::deque<Symbol> symbols_;
-  std::vector<std::uint32_t> slots_;
+  NameIndex index_;
 };
 
 /// Reports (check `reserved-name`) a name that generated C or C++ reserves (compiler/naming/:

@@ -55,9 +55,9 @@ int find_outcome(Context &cx, PlanScope &s, const ast::Name &name, const Callee 
   if (!s.unknown.insert(fmt::format("{} {} {}", what, c.name, name.text)).second) return -1;
   auto &d = cx.diag.error(name.range, ErrorKind::UnknownName,
                           fmt::format("unknown {} '{}' of '{}'", what, name.text, c.name));
-  if (best) d.fix(name.range, best->name);
-  if (best && c.outcome_decls.empty()) d.note(fmt::format("did you mean '{}'?", best->name));
-  else if (best) d.note(best->range, fmt::format("did you mean '{}'?", best->name));
+  if (best) d.fix(name.range, best->name());
+  if (best && c.outcome_decls.empty()) d.note(fmt::format("did you mean '{}'?", best->name()));
+  else if (best) d.note(best->range, fmt::format("did you mean '{}'?", best->name()));
   return -1;
 }
 

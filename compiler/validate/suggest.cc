@@ -33,12 +33,12 @@ const Symbol *closest(std::string_view name, const std::vector<const Symbol *> &
   const Symbol *best = nullptr;
   std::size_t best_distance = limit + 1;
   for (const Symbol *c : candidates) {
-    if (c->name == name) continue;
+    if (c->name() == name) continue;
     // Each letter of difference in length costs at least one edit.
-    std::size_t gap = c->name.size() > name.size() ? c->name.size() - name.size() : name.size() - c->name.size();
+    std::size_t gap = c->name().size() > name.size() ? c->name().size() - name.size() : name.size() - c->name().size();
     if (gap > limit) continue;
-    std::size_t d = edit_distance(name, c->name);
-    if (d < best_distance && d < c->name.size()) {
+    std::size_t d = edit_distance(name, c->name());
+    if (d < best_distance && d < c->name().size()) {
       best = c;
       best_distance = d;
     }
@@ -49,7 +49,7 @@ const Symbol *closest(std::string_view name, const std::vector<const Symbol *> &
 void suggest(Diagnostic &d, std::string_view name, const std::vector<const Symbol *> &candidates) {
   // The diagnostic's range is the unknown name itself: the fix-it replaces it.
   if (const Symbol *s = closest(name, candidates))
-    d.fix(d.range, s->name).note(s->range, fmt::format("did you mean '{}'?", s->name));
+    d.fix(d.range, s->name()).note(s->range, fmt::format("did you mean '{}'?", s->name()));
 }
 
 }  // namespace gfec::validation

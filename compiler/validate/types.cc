@@ -42,7 +42,7 @@ std::optional<model::Type> lower_type(const ast::TypeName &t, unsigned allowed, 
   for (const Symbol &s : names) candidates.push_back(&s);
   auto &d = diag.error(t.range, ErrorKind::UnknownType, fmt::format("unknown type name '{}'", t.text));
   if (const Symbol *s = closest(t.text, candidates))
-    d.fix(t.range, s->name).note(fmt::format("did you mean '{}'?", s->name));
+    d.fix(t.range, s->name()).note(fmt::format("did you mean '{}'?", s->name()));
   return std::nullopt;
 }
 

@@ -175,8 +175,8 @@ void resolve_sfc_places(Context &cx, ChartScope &s, std::size_t index) {
   model::Transition &out = s.out.transitions[index];
   if (t.inputs().empty())
     cx.diag.error(t.range, ErrorKind::NoInput, fmt::format("transition '{}' has no input place", out.name));
-  out.inputs = resolve_places(cx, s, t.inputs(), "inputs", out.name);
-  out.outputs = resolve_places(cx, s, t.outputs(), "outputs", out.name);
+  out.inputs = resolve_places(cx, s, t.inputs(), "inputs", out.name.str());
+  out.outputs = resolve_places(cx, s, t.outputs(), "outputs", out.name.str());
 }
 
 }  // namespace gfec::validation

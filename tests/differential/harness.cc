@@ -175,8 +175,8 @@ Outcome Harness::prepare(Case &c) const {
     p->engine = emit_to_memory(*make_c_backend(), p->model, o);
   } catch (const std::exception &e) { return {Verdict::Crash, fmt::format("the C back end threw: {}", e.what()), ""}; }
   const model::Chart &compiled = p->model.charts[static_cast<std::size_t>(root)];
-  for (const auto &pl : compiled.places) p->places.push_back(pl.name);
-  for (const auto &t : compiled.transitions) p->transitions.push_back(t.name);
+  for (const auto &pl : compiled.places) p->places.push_back(pl.name.str());
+  for (const auto &t : compiled.transitions) p->transitions.push_back(t.name.str());
   c.prepared = p;
   return {};
 }

@@ -68,7 +68,7 @@ std::string object_at(const std::string &file, const std::string &id) {
 
 std::vector<std::string> place_names(const model::Chart &c) {
   std::vector<std::string> names;
-  for (const auto &p : c.places) names.push_back(p.name);
+  for (const auto &p : c.places) names.push_back(p.name.str());
   return names;
 }
 

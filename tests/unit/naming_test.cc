@@ -3,6 +3,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <string>
+
 using namespace gfec::naming;
 
 TEST_CASE("naming: one list of reserved words for the validator and both back ends", "[naming]") {
@@ -27,6 +29,15 @@ TEST_CASE("naming: a name space hands out free names with a trailing _", "[namin
   CHECK(names.take("delete") == "delete_");  // reserved in C++
   CHECK(names.take("m") == "m");
   CHECK_FALSE(names.free("m"));
+}
+
+TEST_CASE("naming: a name space of many names finds each one, claimed twice or not", "[naming]") {
+  NameSpace names;
+  for (int i = 0; i < 3000; ++i) CHECK(names.take("P" + std::to_string(i)) == "P" + std::to_string(i));
+  names.claim("P7");  // already taken: claiming again changes nothing
+  for (int i = 0; i < 3000; ++i) CHECK_FALSE(names.free("P" + std::to_string(i)));
+  CHECK(names.take("P2999") == "P2999_");
+  CHECK(names.free("P3000"));
 }
 
 TEST_CASE("naming: a local scope avoids the names of the scope around it", "[naming]") {
