@@ -89,7 +89,8 @@ private:
   }
   void assign(std::string_view s) {
     if (s.size() <= kInline) {
-      std::memcpy(bytes_, s.data(), s.size());
+      // An empty view may have no data at all, and memcpy must not be given a null pointer.
+      if (!s.empty()) std::memcpy(bytes_, s.data(), s.size());
       set_inline_size(s.size());
       return;
     }
