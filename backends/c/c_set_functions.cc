@@ -101,7 +101,8 @@ static void @erase@(uint32_t *set, const uint32_t *levels, uint32_t count, uint3
 )";
 
 // Insertion sort: the lists are a tick's watched places, a handful at most.
-constexpr std::string_view kSortFunction = R"(/* Sorts a short list of place numbers (the places that lost or gained activation in a tick). */
+constexpr std::string_view kSortFunction =
+    R"(/* Sorts a short list of place numbers (the places that lost or gained activation in a tick). */
 static void @sort@(@type@ *list, uint32_t n)
 {
     uint32_t i;

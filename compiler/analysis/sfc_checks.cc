@@ -13,7 +13,7 @@ namespace {
 
 using model::Chart;
 
-std::string place_name(const Chart &c, int p) { return c.places.at(static_cast<std::size_t>(p)).name.str(); }
+std::string_view place_name(const Chart &c, int p) { return c.places.at(static_cast<std::size_t>(p)).name; }
 
 std::string names(const Chart &c, const IndexList &places) {
   std::string out;

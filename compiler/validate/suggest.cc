@@ -33,12 +33,13 @@ const Symbol *closest(std::string_view name, const std::vector<const Symbol *> &
   const Symbol *best = nullptr;
   std::size_t best_distance = limit + 1;
   for (const Symbol *c : candidates) {
-    if (c->name() == name) continue;
+    const std::string_view candidate = c->name();
+    if (candidate == name) continue;
     // Each letter of difference in length costs at least one edit.
-    std::size_t gap = c->name().size() > name.size() ? c->name().size() - name.size() : name.size() - c->name().size();
+    std::size_t gap = candidate.size() > name.size() ? candidate.size() - name.size() : name.size() - candidate.size();
     if (gap > limit) continue;
-    std::size_t d = edit_distance(name, c->name());
-    if (d < best_distance && d < c->name().size()) {
+    std::size_t d = edit_distance(name, candidate);
+    if (d < best_distance && d < candidate.size()) {
       best = c;
       best_distance = d;
     }

@@ -27,7 +27,7 @@ void check_keywords(Context &cx, const ast::Place &p) {
 
 /// Resolves a transition's inputs or outputs (`side`), reporting a place listed twice.
 std::vector<int> resolve_places(Context &cx, ChartScope &s, ast::NameSpan names, const char *side,
-                                const std::string &transition) {
+                                std::string_view transition) {
   std::vector<int> out;
   for (std::size_t i = 0; i < names.size(); ++i) {
     int p = resolve_place(s, cx, names[i]);
@@ -175,8 +175,8 @@ void resolve_sfc_places(Context &cx, ChartScope &s, std::size_t index) {
   model::Transition &out = s.out.transitions[index];
   if (t.inputs().empty())
     cx.diag.error(t.range, ErrorKind::NoInput, fmt::format("transition '{}' has no input place", out.name));
-  out.inputs = resolve_places(cx, s, t.inputs(), "inputs", out.name.str());
-  out.outputs = resolve_places(cx, s, t.outputs(), "outputs", out.name.str());
+  out.inputs = resolve_places(cx, s, t.inputs(), "inputs", out.name);
+  out.outputs = resolve_places(cx, s, t.outputs(), "outputs", out.name);
 }
 
 }  // namespace gfec::validation
