@@ -1,7 +1,7 @@
 // An index from names to the positions of the elements that hold them, for tables of a million
 // names (docs/performance.md, "(a) The compiler"): an open-addressing hash table of 32-bit
-// positions (linear probing, a power-of-two capacity at most half full), 8 to 16 bytes a name
-// where a node-based set or map takes 64 to 150. The table keeps no names of its own: `key(k)`
+// positions and hashes (linear probing, a power-of-two capacity at most half full), 16 to
+// 32 bytes a name where a node-based set or map takes 64 to 150. The table keeps no names of its own: `key(k)`
 // gives the name at position k, so the elements own their names and the index only points.
 #pragma once
 
@@ -18,28 +18,54 @@ public:
 
   /// The position holding `name`, or kNone.
   template <typename Key> std::uint32_t find(std::string_view name, const Key &key) const {
-    return slots_.empty() ? kNone : slots_[slot_of(name, key)];
+    return slots_.empty() ? kNone : slots_[slot_of(name, hash(name), key)].position;
   }
-  /// Records that position `k` holds `name`, which no position holds yet; positions are added
-  /// in order (k is the number of positions before it), as a table grows by appending.
-  template <typename Key> void insert(std::string_view name, std::uint32_t k, const Key &key) {
-    if (2 * (std::size_t{k} + 1) > slots_.size()) {
-      slots_.assign(slots_.empty() ? 16 : 2 * slots_.size(), kNone);
-      for (std::uint32_t j = 0; j < k; ++j) slots_[slot_of(key(j), key)] = j;
-    }
-    slots_[slot_of(name, key)] = k;
+  /// Records that position `k` holds `name` and returns kNone, or returns the position that
+  /// already holds it and records nothing: one probe where find() and then an insert take two.
+  /// Positions are added in order (k is the number of positions before it), as a table grows by
+  /// appending.
+  template <typename Key> std::uint32_t insert(std::string_view name, std::uint32_t k, const Key &key) {
+    if (2 * (std::size_t{k} + 1) > slots_.size()) grow();
+    const std::uint32_t h = hash(name);
+    Slot &slot = slots_[slot_of(name, h, key)];
+    if (slot.position != kNone) return slot.position;
+    slot = Slot{k, h};
+    return kNone;
   }
 
 private:
-  /// The slot `name` is in, or the empty slot where it would go. slots_ must not be empty.
-  template <typename Key> std::size_t slot_of(std::string_view name, const Key &key) const {
+  // Each slot keeps its name's hash beside the position: a probe compares hashes and reads a
+  // name (a cache miss into the table that owns it) only when they match, and growing the
+  // index reads no names at all.
+  struct Slot {
+    std::uint32_t position = kNone;
+    std::uint32_t hash = 0;
+  };
+
+  static std::uint32_t hash(std::string_view name) {
+    return static_cast<std::uint32_t>(std::hash<std::string_view>{}(name));
+  }
+  void grow() {
+    const std::vector<Slot> old = std::move(slots_);
+    slots_.assign(old.empty() ? 16 : 2 * old.size(), Slot{});
     const std::size_t mask = slots_.size() - 1;
-    std::size_t i = std::hash<std::string_view>{}(name)&mask;
-    while (slots_[i] != kNone && std::string_view(key(slots_[i])) != name) i = (i + 1) & mask;
+    for (const Slot &s : old) {
+      if (s.position == kNone) continue;
+      std::size_t i = s.hash & mask;
+      while (slots_[i].position != kNone) i = (i + 1) & mask;
+      slots_[i] = s;
+    }
+  }
+  /// The slot `name` is in, or the empty slot where it would go. slots_ must not be empty.
+  template <typename Key> std::size_t slot_of(std::string_view name, std::uint32_t h, const Key &key) const {
+    const std::size_t mask = slots_.size() - 1;
+    std::size_t i = h & mask;
+    while (slots_[i].position != kNone && (slots_[i].hash != h || std::string_view(key(slots_[i].position)) != name))
+      i = (i + 1) & mask;
     return i;
   }
 
-  std::vector<std::uint32_t> slots_;
+  std::vector<Slot> slots_;
 };
 
 }  // namespace gfec

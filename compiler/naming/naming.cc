@@ -1,15 +1,16 @@
 #include "naming/naming.h"
 
 #include <regex>
-#include <set>
+#include <unordered_set>
 #include <vector>
 
 namespace gfec::naming {
 
 namespace {
 
+// Hashed, not ordered: every name of a million-place chart is looked up here (docs/performance.md).
 // clang-format off
-const std::set<std::string_view> kCKeywords = {
+const std::unordered_set<std::string_view> kCKeywords = {
     "auto", "break", "case", "char", "const", "continue", "default", "do", "double", "else", "enum",
     "extern", "float", "for", "goto", "if", "inline", "int", "long", "register", "restrict", "return",
     "short", "signed", "sizeof", "static", "struct", "switch", "typedef", "union", "unsigned", "void",
@@ -21,7 +22,7 @@ const std::set<std::string_view> kCKeywords = {
 /// C++20's keywords and alternative tokens beyond C's: a C engine's header is read by C++ code
 /// too, and a name good for C++17 should stay good under C++20.
 // clang-format off
-const std::set<std::string_view> kCppKeywords = {
+const std::unordered_set<std::string_view> kCppKeywords = {
     "alignas", "alignof", "and", "and_eq", "asm", "bitand", "bitor", "bool", "catch", "char8_t", "char16_t",
     "char32_t", "class", "compl", "concept", "consteval", "constexpr", "constinit", "const_cast", "co_await",
     "co_return", "co_yield", "decltype", "delete", "dynamic_cast", "explicit", "export", "false", "friend",
@@ -77,43 +78,43 @@ bool matches_library_pattern(std::string_view name) {
 }
 
 bool is_c_library_name(std::string_view name) {
-  static const std::set<std::string_view> names = {"NULL",
-                                                   "EOF",
-                                                   "offsetof",
-                                                   "assert",
-                                                   "errno",
-                                                   "static_assert",
-                                                   "size_t",
-                                                   "ptrdiff_t",
-                                                   "max_align_t",
-                                                   "intptr_t",
-                                                   "uintptr_t",
-                                                   "intmax_t",
-                                                   "uintmax_t",
-                                                   "memcpy",
-                                                   "memset",
-                                                   "memcmp",
-                                                   "memmove",
-                                                   "strlen",
-                                                   "__bool_true_false_are_defined",
-                                                   "CHAR_BIT",
-                                                   "MB_LEN_MAX",
-                                                   "SIZE_MAX",
-                                                   "PTRDIFF_MIN",
-                                                   "PTRDIFF_MAX",
-                                                   "SIG_ATOMIC_MIN",
-                                                   "SIG_ATOMIC_MAX",
-                                                   "WCHAR_MIN",
-                                                   "WCHAR_MAX",
-                                                   "WINT_MIN",
-                                                   "WINT_MAX",
-                                                   "NDEBUG"};
+  static const std::unordered_set<std::string_view> names = {"NULL",
+                                                             "EOF",
+                                                             "offsetof",
+                                                             "assert",
+                                                             "errno",
+                                                             "static_assert",
+                                                             "size_t",
+                                                             "ptrdiff_t",
+                                                             "max_align_t",
+                                                             "intptr_t",
+                                                             "uintptr_t",
+                                                             "intmax_t",
+                                                             "uintmax_t",
+                                                             "memcpy",
+                                                             "memset",
+                                                             "memcmp",
+                                                             "memmove",
+                                                             "strlen",
+                                                             "__bool_true_false_are_defined",
+                                                             "CHAR_BIT",
+                                                             "MB_LEN_MAX",
+                                                             "SIZE_MAX",
+                                                             "PTRDIFF_MIN",
+                                                             "PTRDIFF_MAX",
+                                                             "SIG_ATOMIC_MIN",
+                                                             "SIG_ATOMIC_MAX",
+                                                             "WCHAR_MIN",
+                                                             "WCHAR_MAX",
+                                                             "WINT_MIN",
+                                                             "WINT_MAX",
+                                                             "NDEBUG"};
   if (names.count(name)) return true;
   return matches_library_pattern(name);
 }
 
 /// Macros of the standard headers the C++ plan runtime pulls in (<cstdio>, <cerrno>).
-const std::set<std::string_view> kCppLibrary = {"stdin", "stdout", "stderr", "EDOM", "ERANGE", "EILSEQ"};
+const std::unordered_set<std::string_view> kCppLibrary = {"stdin", "stdout", "stderr", "EDOM", "ERANGE", "EILSEQ"};
 
 }  // namespace
 
@@ -126,8 +127,12 @@ Reserved reserved(std::string_view word) {
 }
 
 std::string NameSpace::take(std::string name) {
-  while (!free(name)) name += '_';
-  insert(name);
+  // free(), with this scope's index probed once: the insert that finds the name taken is the test.
+  for (;; name += '_') {
+    if ((outer_ && outer_->taken(name)) || is_reserved(name) || numbered(name)) continue;
+    if (index_.insert(name, static_cast<std::uint32_t>(names_.size()), key()) == NameIndex::kNone) break;
+  }
+  names_.push_back(name);
   return name;
 }
 

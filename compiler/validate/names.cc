@@ -70,11 +70,11 @@ void report_clash(const ast::Name &name, Sym kind, const Symbol &previous, Diagn
 bool Namespace::declare(const ast::Name &name, Sym kind, int index, Diagnostics &diag) {
   if (name.text.empty()) return false;
   check_reserved(name, kind, diag);
-  if (const Symbol *previous = find(name.text)) {
-    report_clash(name, kind, *previous, diag);
+  const std::uint32_t previous = index_.insert(name.text, static_cast<std::uint32_t>(symbols_.size()), key());
+  if (previous != NameIndex::kNone) {
+    report_clash(name, kind, symbols_[previous], diag);
     return false;
   }
-  index_.insert(name.text, static_cast<std::uint32_t>(symbols_.size()), key());
   symbols_.emplace_back(kind, index, name.text, name.range);
   return true;
 }

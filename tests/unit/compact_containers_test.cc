@@ -117,10 +117,23 @@ TEST_CASE("NameIndex finds every name of a growing table, and nothing else") {
   CHECK(index.find("P0", key) == NameIndex::kNone);
   for (std::uint32_t k = 0; k < 5000; ++k) {
     std::string name = "P" + std::to_string(k);
-    index.insert(name, k, key);
+    CHECK(index.insert(name, k, key) == NameIndex::kNone);
     names.push_back(std::move(name));
   }
   for (std::uint32_t k = 0; k < 5000; ++k) CHECK(index.find("P" + std::to_string(k), key) == k);
   CHECK(index.find("P5000", key) == NameIndex::kNone);
   CHECK(index.find("", key) == NameIndex::kNone);
+}
+
+TEST_CASE("NameIndex::insert of a name held already returns its holder and records nothing") {
+  std::deque<std::string> names;
+  NameIndex index;
+  auto key = [&](std::uint32_t k) -> const std::string & { return names[k]; };
+  for (std::uint32_t k = 0; k < 100; ++k) {
+    names.push_back("N" + std::to_string(k % 40));  // names 40..99 repeat 0..39
+    const std::uint32_t held = index.insert(names.back(), k, key);
+    CHECK(held == (k < 40 ? NameIndex::kNone : k % 40));
+  }
+  // Growing (16 → 128 slots on the way) kept the first holder of each name.
+  for (std::uint32_t k = 0; k < 40; ++k) CHECK(index.find("N" + std::to_string(k), key) == k);
 }
