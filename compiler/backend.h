@@ -27,9 +27,9 @@ struct EmitOptions {
   bool line_directives = true;  ///< `#line` back to the chart
   // What to compile, as pipeline::select_target chose it; exactly the one the back end accepts
   // is set (a back end given none is a bug of its caller and throws std::invalid_argument).
-  int chart = -1;                        ///< index into Model::charts to compile, or -1
-  int plan = -1;                         ///< index into Model::plans to compile, or -1
-  int toolbox = -1;                      ///< index into Model::toolboxes (toolbox skeleton), or -1
+  model::ChartId chart;                  ///< the sfc or fsm to compile, or none
+  model::PlanId plan;                    ///< the plan to compile, or none
+  model::ToolboxId toolbox;              ///< the toolbox to write a skeleton for, or none
   EngineForm engine = EngineForm::Auto;  ///< C back end: `--engine=auto|readable|scalable`
   /// C back end, `--context[-type]`: the C type of the instance context every interface call
   /// receives first (docs/c-engine.md "Instance context"); empty: no context, GFE's calls.

@@ -42,7 +42,7 @@ void CodeWriter::raw(std::string_view text) {
 }
 
 void CodeWriter::line_from(const SourceManager &sources, const SourceRange &range) {
-  if (!line_directives_) return;
+  if (!line_directives_ || !sources.knows(range.file)) return;
   const SourceFile &file = sources.file(range.file);
   // A directive at column 0, whatever the indentation, as compilers and people expect.
   out_ += fmt::format("#line {} {}\n", file.line_col(range.begin).line, c_string_literal(file.path()));

@@ -19,8 +19,8 @@ const char *type_name(Type t) {
 }
 
 std::string source_text(const Model &m, const SourceRange &range) {
-  if (!m.sources || range.file >= m.sources->size() || range.end <= range.begin) return {};
-  const std::string &text = m.sources->file(range.file).text();
+  if (!m.sources().knows(range.file) || range.end <= range.begin) return {};
+  const std::string &text = m.sources().file(range.file).text();
   if (range.end > text.size()) return {};
   std::string out;
   bool space = false;

@@ -1,5 +1,6 @@
 // The model: the checked, resolved form of a program. Back ends and the interpreter read only
-// this. Everything refers by index into the tables here; every element keeps its SourceRange
+// this. Everything refers by typed id into the tables here (compiler/id.h: a PlaceId indexes
+// Chart::places and nothing else, and "none" is an id's own state); every element keeps its SourceRange
 // (for #line and for tools), and `sources` resolves ranges to file names and lines.
 // A chart may have a million places: members are ordered and enums sized so that the elements
 // stay small (docs/performance.md, "(a) The compiler").
@@ -9,16 +10,31 @@
 #include "compact_vector.h"
 #include "heap_optional.h"
 #include "heap_vector.h"
-#include "index_list.h"
+#include "id.h"
 #include "operators.h"
+#include "small_list.h"
 #include "source.h"
 
+#include <cassert>
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace gfec::model {
+
+// The kinds of id, one per table.
+using FunctionId = Id<struct FunctionTag>;      ///< Model::functions
+using ConstId = Id<struct ConstTag>;            ///< Model::consts
+using ChartId = Id<struct ChartTag>;            ///< Model::charts
+using PlaceId = Id<struct PlaceTag>;            ///< Chart::places (of the chart that holds the reference)
+using TransitionId = Id<struct TransitionTag>;  ///< Chart::transitions
+using VarId = Id<struct VarTag>;                ///< Chart::vars
+using TemplateId = Id<struct TemplateTag>;      ///< Model::templates
+using ToolboxId = Id<struct ToolboxTag>;        ///< Model::toolboxes
+using PlanId = Id<struct PlanTag>;              ///< Model::plans
+using ActorId = Id<struct ActorTag>;            ///< Plan::actors
+using ConfigId = Id<struct ConfigTag>;          ///< Plan::config
 
 enum class Type : std::uint8_t { Void, Bool, Int, Float, Double, String, Object, Duration };
 
@@ -35,22 +51,22 @@ struct Expr {
     Float,   ///< text: the spelling, e.g. "0.5", "1e-3"; float_value: its value as a double
     String,  ///< text: the decoded value
     Ticks,  ///< a duration in an sfc/fsm, converted to whole ticks (rounded up): ticks; float_value keeps the milliseconds
-    Var,      ///< index into Chart::vars
-    Const,    ///< index into Model::consts
-    Config,   ///< index into Plan::config
-    Call,     ///< index into Model::functions; args
-    Elapsed,  ///< `elapsed(P)`: index of the place/state; type Duration, counted in ticks
+    Var,      ///< var()
+    Const,    ///< constant()
+    Config,   ///< config()
+    Call,     ///< function(); args
+    Elapsed,  ///< `elapsed(P)`: place() is P; type Duration, counted in ticks
     Unary,    ///< unary_op, args[0]
     Binary,   ///< binary_op, args[0], args[1]
     Paren,    ///< args[0], brackets the user wrote
-    // Sub-charts (docs/language.md "Sub-charts"): `index` is a place/state of the chart the
+    // Sub-charts (docs/language.md "Sub-charts"): place() is a place/state of the chart the
     // expression belongs to (always read at the moment of evaluation, see the docs).
-    Active,     ///< `active(P)` / `active(P.Q.R)`: path = place indices, path[0] in this chart,
+    Active,     ///< `active(P)` / `active(P.Q.R)`: path = places, path[0] in this chart,
                 ///< path[k+1] in the chart that path[k] runs. Type Bool.
-    Succeeded,  ///< `succeeded(P)`: index = P (which runs an fsm). Type Bool.
-    Failed,     ///< `failed(P)`: index = P (which runs an fsm). Type Bool.
+    Succeeded,  ///< `succeeded(P)`: place() = P (which runs an fsm). Type Bool.
+    Failed,     ///< `failed(P)`: place() = P (which runs an fsm). Type Bool.
     // Team machines (docs/language.md "Teams").
-    TeamCount,  ///< `team(S)`: index = state S of this chart. Type Int.
+    TeamCount,  ///< `team(S)`: place() = state S of this chart. Type Int.
     Agent,      ///< `agent()`. Type Int.
   };
   Kind kind = Kind::Bool;
@@ -64,7 +80,6 @@ struct Expr {
   // value in bool_value (Bool), int_value (Int) or float_value (Float, Double).
   bool folded = false;
   SourceRange range;
-  int index = -1;
   std::int32_t int_value = 0;
   unsigned long ticks = 0;
   /// The value as a double; converted to `type` it is the expression's value. Kind::Ticks: the
@@ -74,7 +89,32 @@ struct Expr {
   // of a large chart's model (docs/performance.md).
   CompactString text;
   CompactVector<Expr> args;
-  HeapVector<int> path;  ///< Kind::Active (on the heap: only `active(P.Q)` has one)
+  HeapVector<PlaceId> path;  ///< Kind::Active (on the heap: only `active(P.Q)` has one)
+
+  // What the expression names; which table that is, its kind says (the accessor of another
+  // kind is a mistake, and asserts).
+  VarId var() const { return ref<VarId>(kind == Kind::Var); }
+  ConstId constant() const { return ref<ConstId>(kind == Kind::Const); }
+  ConfigId config() const { return ref<ConfigId>(kind == Kind::Config); }
+  FunctionId function() const { return ref<FunctionId>(kind == Kind::Call); }
+  /// Elapsed, Succeeded, Failed, TeamCount: the place or state named.
+  PlaceId place() const {
+    return ref<PlaceId>(kind == Kind::Elapsed || kind == Kind::Succeeded || kind == Kind::Failed ||
+                        kind == Kind::TeamCount);
+  }
+  /// Makes the expression name `id`, of the table its kind reads.
+  template <typename Tag> void refer_to(Id<Tag> id) {
+    ref_ = id.valid() ? static_cast<std::uint32_t>(id.index()) : kNoRef;
+  }
+
+private:
+  static constexpr std::uint32_t kNoRef = UINT32_MAX;
+  template <typename IdT> IdT ref(bool right_kind) const {
+    assert(right_kind);
+    (void)right_kind;
+    return ref_ == kNoRef ? IdT() : IdT(ref_);
+  }
+  std::uint32_t ref_ = kNoRef;
 };
 
 struct Stmt {
@@ -83,7 +123,7 @@ struct Stmt {
   AssignOp op = AssignOp::Set;
   bool else_if = false;  ///< Kind::If: else_block is one If written as `else if`
   SourceRange range;
-  int var = -1;                  ///< Kind::Assign: index into Chart::vars
+  VarId var;                     ///< Kind::Assign
   std::uint32_t code_begin = 0;  ///< Kind::Verbatim: where `verbatim` starts in range.file (after `%{`); 0: unknown
   /// Kind::Call: the call (an Expr of Kind::Call; its result, if any, is discarded);
   /// Kind::Assign: the value; Kind::If: the condition (Bool). One expression per statement:
@@ -117,7 +157,7 @@ struct Const {
   std::string name;
   Type type = Type::Int;
   Expr value;
-  int chart = -1;  ///< the chart that declares it, or -1 at file level
+  ChartId chart;  ///< the chart that declares it, or none at file level
   SourceRange range;
 };
 
@@ -132,6 +172,8 @@ struct Var {
 
 enum class Terminal : std::uint8_t { None, Success, Failure };
 
+using PlaceList = SmallList<PlaceId>;
+
 /// A place of an sfc or a state of an fsm.
 struct Place {
   CompactString name;
@@ -141,7 +183,7 @@ struct Place {
   HeapOptional<Expr> post;  ///< a terminal state's postcondition (on the heap: most places have none)
   SourceRange range;
   SourceRange name_range;  ///< the name where it is declared
-  int runs = -1;           ///< the sub-chart it runs: an index into Model::charts, or -1
+  ChartId runs;            ///< the sub-chart it runs, or none
   bool initial = false;
   Terminal terminal = Terminal::None;  ///< fsm only
   bool timed = false;                  ///< some `elapsed()` reads this place's timer
@@ -149,8 +191,8 @@ struct Place {
 
 struct Transition {
   CompactString name;  ///< the user's name, or T<position> among all transitions
-  IndexList inputs;    ///< places, each once (two kept inline: index_list.h)
-  IndexList outputs;
+  PlaceList inputs;    ///< each place once (two kept inline: small_list.h)
+  PlaceList outputs;
   /// absent: `when true`. On the heap, so that the transitions table of a large chart is
   /// small while the validator fills it in (docs/performance.md).
   HeapOptional<Expr> condition;
@@ -173,14 +215,14 @@ struct Chart {
   Kind kind = Kind::Sfc;
   std::string name;
   double period_ms = 0;  ///< 0: no `period` given
-  std::vector<Place> places;
-  std::vector<Transition> transitions;  ///< declaration order: the order of §5.1 and §7
-  std::vector<Var> vars;
-  std::vector<int> functions;  ///< interface functions the chart calls, in declaration order
-  std::vector<int> consts;     ///< constants the chart reads, in declaration order
-  int team = 0;                ///< fsm `team N;`: N (>= 2); 0 for a machine that is no team
-  ActivationBound activation;  ///< recorded by analysis::record_activation_bounds
-  bool in_main_file = false;   ///< declared in the file being compiled, not an import
+  Table<PlaceId, Place> places;
+  Table<TransitionId, Transition> transitions;  ///< declaration order: the order of §5.1 and §7
+  Table<VarId, Var> vars;
+  std::vector<FunctionId> functions;  ///< interface functions the chart calls, in declaration order
+  std::vector<ConstId> consts;        ///< constants the chart reads, in declaration order
+  int team = 0;                       ///< fsm `team N;`: N (>= 2); 0 for a machine that is no team
+  ActivationBound activation;         ///< recorded by analysis::record_activation_bounds
+  bool in_main_file = false;          ///< declared in the file being compiled, not an import
   SourceRange range;
   SourceRange name_range;  ///< the chart's name where it is declared
 };
@@ -200,7 +242,7 @@ struct Template {
   enum class Kind { Actor, Computation, Supervisor };
   Kind kind = Kind::Actor;
   std::string name;
-  int toolbox = -1;
+  ToolboxId toolbox;
   std::vector<TemplateParam> params;
   std::vector<std::string> outcomes;  ///< result states, or a supervisor's events
   double period_ms = 0;               ///< supervisors: 0 means every executor step
@@ -209,7 +251,7 @@ struct Template {
 
 struct Toolbox {
   std::string name;
-  std::vector<int> templates;  ///< indices into Model::templates
+  std::vector<TemplateId> templates;
   SourceRange range;
 };
 
@@ -224,7 +266,7 @@ struct ConfigEntry {
 struct Target {
   enum class Kind { Actor, Terminate, Ignore };
   Kind kind = Kind::Actor;
-  int actor = -1;  ///< index into Plan::actors for Kind::Actor
+  ActorId actor;  ///< Kind::Actor
 };
 
 /// `OUTCOME -> target`: outcome indexes the template's outcomes (or a sub-plan's OK/INTERRUPTED/ERROR).
@@ -242,7 +284,7 @@ struct Arg {
 
 struct SupervisorUse {
   std::string name;
-  int templ = -1;  ///< index into Model::templates
+  TemplateId templ;
   std::vector<Arg> args;
   std::vector<Rule> rules;  ///< one per event, in declaration order
   SourceRange range;
@@ -250,8 +292,8 @@ struct SupervisorUse {
 
 struct ActorUse {
   std::string name;
-  int templ = -1;    ///< index into Model::templates, or -1 for a sub-plan
-  int subplan = -1;  ///< index into Model::plans for a sub-plan
+  TemplateId templ;  ///< none for a sub-plan
+  PlanId subplan;    ///< a sub-plan's plan, or none
   std::vector<Arg> args;
   std::vector<Rule> rules;  ///< one per result state, in declaration order
   std::vector<SupervisorUse> supervisors;
@@ -264,11 +306,11 @@ inline const char *const kSubPlanStates[] = {"OK", "INTERRUPTED", "ERROR"};
 
 struct Plan {
   std::string name;
-  std::vector<ConfigEntry> config;
+  Table<ConfigId, ConfigEntry> config;
   std::vector<SupervisorUse> globals;
-  int start = -1;  ///< index into actors
-  std::vector<ActorUse> actors;
-  std::vector<int> toolboxes;  ///< toolboxes whose templates the plan uses
+  ActorId start;
+  Table<ActorId, ActorUse> actors;
+  std::vector<ToolboxId> toolboxes;  ///< toolboxes whose templates the plan uses
   bool in_main_file = false;
   SourceRange range;
 };
@@ -282,15 +324,23 @@ struct Verbatim {
 };
 
 struct Model {
-  const SourceManager *sources = nullptr;
   FileId main_file = 0;
-  std::vector<Function> functions;
-  std::vector<Const> consts;
-  std::vector<Chart> charts;
-  std::vector<Template> templates;
-  std::vector<Toolbox> toolboxes;
-  std::vector<Plan> plans;
+  Table<FunctionId, Function> functions;
+  Table<ConstId, Const> consts;
+  Table<ChartId, Chart> charts;
+  Table<TemplateId, Template> templates;
+  Table<ToolboxId, Toolbox> toolboxes;
+  Table<PlanId, Plan> plans;
   std::vector<Verbatim> verbatims;  ///< file-level %{ %}: imported files first, then the main file
+
+  /// The files the model's ranges point into. The model does not own them: the caller that
+  /// validated it does (pipeline::Compilation) and keeps them as long as the model. A model made
+  /// by hand has none, and then knows no range's file (no `#line`, no location is written).
+  const SourceManager &sources() const { return sources_ ? *sources_ : SourceManager::empty(); }
+  void set_sources(const SourceManager &sources) { sources_ = &sources; }
+
+private:
+  const SourceManager *sources_ = nullptr;
 };
 
 /// The source text of `range` with every run of whitespace folded to one space, for pictures

@@ -13,18 +13,18 @@ namespace gfec {
 
 /// The charts of the main file that no chart runs, in declaration order: the candidates for
 /// the compiled (root) chart. Exactly one is the default; otherwise `--chart` chooses.
-std::vector<int> root_charts(const model::Model &m);
+std::vector<model::ChartId> root_charts(const model::Model &m);
 
-/// The default root: the only candidate of root_charts, or -1 when there is none or several.
-int default_root(const model::Model &m);
+/// The default root: the only candidate of root_charts, or none when there is none or several.
+model::ChartId default_root(const model::Model &m);
 
 /// Per chart: whether compiling `root` runs it, i.e. it is `root` or a chart that `root` runs,
 /// directly or through other charts.
-std::vector<bool> charts_in_tree(const model::Model &m, int root);
+IdMap<model::ChartId, bool> charts_in_tree(const model::Model &m, model::ChartId root);
 
 /// Warns (-Wunused-chart) about each chart of the main file that the compiled `root` neither is
 /// nor runs, when `root` runs sub-charts: a hierarchy that leaves out a chart of its own file
 /// most likely forgot a `runs`.
-void warn_unused_charts(const model::Model &m, int root, Diagnostics &diag);
+void warn_unused_charts(const model::Model &m, model::ChartId root, Diagnostics &diag);
 
 }  // namespace gfec

@@ -33,4 +33,9 @@ FileId SourceManager::add(std::string path, std::string text) {
   return static_cast<FileId>(files_.size() - 1);
 }
 
+const SourceManager &SourceManager::empty() {
+  static const SourceManager none;
+  return none;
+}
+
 }  // namespace gfec

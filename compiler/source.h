@@ -51,6 +51,10 @@ public:
   FileId add(std::string path, std::string text);
   const SourceFile &file(FileId id) const { return *files_.at(id); }
   std::size_t size() const { return files_.size(); }
+  /// Whether `id` is one of the files here: a model made by hand has ranges into none.
+  bool knows(FileId id) const { return id < files_.size(); }
+  /// A manager without files, for a model that has no sources.
+  static const SourceManager &empty();
 
   LineCol begin_of(const SourceRange &r) const { return file(r.file).line_col(r.begin); }
   LineCol end_of(const SourceRange &r) const { return file(r.file).line_col(r.end); }

@@ -13,9 +13,8 @@ class CBackend : public Backend {
 public:
   void emit(const model::Model &model, const EmitOptions &options, OutputSink &sink) const override {
     // The pipeline chose the chart (pipeline/compilation.h); none is a bug of the caller.
-    if (options.chart < 0 || static_cast<std::size_t>(options.chart) >= model.charts.size())
-      throw std::invalid_argument("c back end: no chart chosen to compile");
-    auto c = c_backend::make_context(model, model.charts[static_cast<std::size_t>(options.chart)], options);
+    if (!model.charts.contains(options.chart)) throw std::invalid_argument("c back end: no chart chosen to compile");
+    auto c = c_backend::make_context(model, model.charts[options.chart], options);
     // engine.c first (the primary output), then engine.h beside it.
     c_backend::emit_source(*c, sink.open(options.output_path));
     c_backend::emit_header(*c, sink.open(replace_extension(options.output_path, ".h")));

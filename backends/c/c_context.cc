@@ -11,6 +11,8 @@
 
 namespace gfec::c_backend {
 
+using model::PlaceId;
+
 namespace {
 
 /// Names unique within one C name space (the file's, a struct's, a function's), from the naming
@@ -78,7 +80,7 @@ void name_globals(Context &c, NameSpace &globals, const Context *root) {
     globals.claim(c.context_fn);
   }
   const bool has_sub =
-      std::any_of(c.chart.places.begin(), c.chart.places.end(), [](const model::Place &p) { return p.runs >= 0; });
+      std::any_of(c.chart.places.begin(), c.chart.places.end(), [](const model::Place &p) { return p.runs.valid(); });
   if (c.root && has_sub) {
     c.instance_type = t + "_instance";
     c.instance_count = t + "_INSTANCE_COUNT";
@@ -124,8 +126,8 @@ void name_fields(Context &c) {
     for (const auto &p : places) c.timer_field.push_back(p.timed ? fields.take("timer_" + p.name) : "");
   if (c.has_context()) c.ctx_field = fields.take("ctx");
   // The instances the places run: a field named after the place (`m->Search`), for debuggers.
-  if (std::any_of(places.begin(), places.end(), [](const model::Place &p) { return p.runs >= 0; }))
-    for (const auto &p : places) c.sub_field.push_back(p.runs >= 0 ? fields.take(p.name.str()) : "");
+  if (std::any_of(places.begin(), places.end(), [](const model::Place &p) { return p.runs.valid(); }))
+    for (const auto &p : places) c.sub_field.push_back(p.runs ? fields.take(p.name.str()) : "");
 }
 
 void name_locals(Context &c, const NameSpace &globals) {
@@ -173,8 +175,8 @@ void collect_facts(Context &c) {
   c.is_input.assign(n, false);
   c.is_output.assign(n, false);
   for (const auto &t : c.chart.transitions) {
-    for (int p : t.inputs) c.is_input.at(static_cast<std::size_t>(p)) = true;
-    for (int p : t.outputs) c.is_output.at(static_cast<std::size_t>(p)) = true;
+    for (PlaceId p : t.inputs) c.is_input.at(p) = true;
+    for (PlaceId p : t.outputs) c.is_output.at(p) = true;
   }
   for (const auto &p : c.chart.places) {
     c.has_timers = c.has_timers || p.timed;
@@ -192,10 +194,10 @@ void collect_facts(Context &c) {
 /// The expression reads, by active()/succeeded()/failed(), a place some transition consumes.
 bool reads_input_activity(const Context &c, const model::Expr &e) {
   using K = model::Expr::Kind;
-  int p = e.kind == K::Active                             ? (e.path.empty() ? -1 : e.path.front())
-          : e.kind == K::Succeeded || e.kind == K::Failed ? e.index
-                                                          : -1;
-  if (p >= 0 && c.is_input.at(static_cast<std::size_t>(p))) return true;
+  PlaceId p;
+  if (e.kind == K::Active && !e.path.empty()) p = e.path.front();
+  else if (e.kind == K::Succeeded || e.kind == K::Failed) p = e.place();
+  if (p && c.is_input.at(p)) return true;
   for (const auto &a : e.args)
     if (reads_input_activity(c, a)) return true;
   return false;
@@ -204,8 +206,8 @@ bool reads_input_activity(const Context &c, const model::Expr &e) {
 /// Stopping the chart's instance runs code: a place with an exit block, or one whose own
 /// instance's stop runs code.
 bool stop_runs_code(const Context &c) {
-  for (std::size_t p = 0; p < c.chart.places.size(); ++p)
-    if (has_code(c.chart.places[p].exit) || (c.sub[p] && c.sub[p]->stop_code)) return true;
+  for (PlaceId p : c.chart.places.ids())
+    if (has_code(c.place(p).exit) || (c.sub[p] && c.sub[p]->stop_code)) return true;
   return false;
 }
 
@@ -232,9 +234,9 @@ void name_parts(Context &c, NameSpace &globals) {
 
 /// The instance that place `p` of `c` runs: its names follow the path (`Patrol_Search`), and
 /// move aside (a trailing `_`) if any of them is taken, so that the whole file stays unique.
-std::unique_ptr<Context> make_instance(const Context &c, int p, NameSpace &globals, const Context *root) {
+std::unique_ptr<Context> make_instance(const Context &c, PlaceId p, NameSpace &globals, const Context *root) {
   const model::Place &place = c.place(p);
-  const model::Chart &chart = c.model.charts.at(static_cast<std::size_t>(place.runs));
+  const model::Chart &chart = c.model.charts.at(place.runs);
   auto s = std::make_unique<Context>(c.model, chart, c.options);
   s->root = false;
   std::string prefix = c.type + "_" + place.name;
@@ -257,7 +259,7 @@ std::unique_ptr<Context> make_instance(const Context &c, int p, NameSpace &globa
   s->place_count = prefix + "_PLACE_COUNT";
   s->transition_count = prefix + "_TRANSITION_COUNT";
   s->owner = fmt::format("{} {} of {}", c.fsm ? "state" : "place", place.name, c.root ? c.type : c.owner);
-  s->stoppable = c.stoppable || c.is_input.at(static_cast<std::size_t>(p));
+  s->stoppable = c.stoppable || c.is_input.at(p);
   s->source_file = c.source_file;
   s->header_file = c.header_file;
   s->guard = c.guard;
@@ -271,19 +273,19 @@ void build(Context &c, NameSpace &globals, const Context *root) {
   name_fields(c);
   name_locals(c, globals);
   collect_facts(c);
-  for (int p = 0; p < static_cast<int>(c.chart.places.size()); ++p)
-    c.sub.push_back(c.place(p).runs >= 0 ? make_instance(c, p, globals, root ? root : &c) : nullptr);
+  for (PlaceId p : c.chart.places.ids())
+    c.sub.push_back(c.place(p).runs ? make_instance(c, p, globals, root ? root : &c) : nullptr);
   c.stop_code = stop_runs_code(c);
   std::vector<bool> watched;
-  for (int p = 0; p < static_cast<int>(c.chart.places.size()); ++p) watched.push_back(c.watched(p));
+  for (PlaceId p : c.chart.places.ids()) watched.push_back(c.watched(p));
   c.layout = plan_layout(c.chart, c.options.engine, std::move(watched));
   if (c.layout.part_places > 0) name_parts(c, globals);
 }
 
 /// The interface functions of the chart and of every instance below it, each once, the chart's
 /// own first.
-void collect_functions(const Context &c, std::vector<int> &out) {
-  for (int f : c.chart.functions)
+void collect_functions(const Context &c, std::vector<model::FunctionId> &out) {
+  for (model::FunctionId f : c.chart.functions)
     if (std::find(out.begin(), out.end(), f) == out.end()) out.push_back(f);
   for (const auto &s : c.sub)
     if (s) collect_functions(*s, out);
@@ -291,16 +293,14 @@ void collect_functions(const Context &c, std::vector<int> &out) {
 
 }  // namespace
 
-std::string Context::av_of(int p) const {
-  return fmt::format("{}[{}]", field(av), place_const.at(static_cast<std::size_t>(p)));
-}
+std::string Context::av_of(PlaceId p) const { return fmt::format("{}[{}]", field(av), place_const.at(p)); }
 
 std::string Context::context_param(const std::string &name) const {
   const std::string &t = options.context_type;
   return t.back() == '*' ? t + name : t + " " + name;
 }
 
-std::string Context::timer_of(int p) const { return field(timer_field.at(static_cast<std::size_t>(p))); }
+std::string Context::timer_of(PlaceId p) const { return field(timer_field.at(p)); }
 
 const char *Context::report_type() const {
   // C's int8_t and int16_t hold -1 and up to 127 and 32767 states.
@@ -308,35 +308,32 @@ const char *Context::report_type() const {
   return n <= 127 ? "int8_t" : n <= 32767 ? "int16_t" : "int";
 }
 
-bool Context::runs_exit(int p) const {
+bool Context::runs_exit(PlaceId p) const {
   const Context *s = sub_of(p);
-  return is_input.at(static_cast<std::size_t>(p)) && (has_code(place(p).exit) || (s && s->has_stop()));
+  return is_input.at(p) && (has_code(place(p).exit) || (s && s->has_stop()));
 }
 
-bool Context::runs_entry(int p) const {
+bool Context::runs_entry(PlaceId p) const {
   // An instance is started (reset) whenever its place gains activation.
-  return is_output.at(static_cast<std::size_t>(p)) && (has_code(place(p).entry) || sub_of(p));
+  return is_output.at(p) && (has_code(place(p).entry) || sub_of(p));
 }
 
-std::vector<std::string> Context::start_call(int p) const {
+std::vector<std::string> Context::start_call(PlaceId p) const {
   const Context *s = sub_of(p);
   if (!s) return {};
-  return {fmt::format("{}(&{}); /* start the instance of {} */", s->init_fn,
-                      field(sub_field[static_cast<std::size_t>(p)]), s->chart.name)};
+  return {fmt::format("{}(&{}); /* start the instance of {} */", s->init_fn, field(sub_field[p]), s->chart.name)};
 }
 
-std::vector<std::string> Context::tick_call(int p) const {
+std::vector<std::string> Context::tick_call(PlaceId p) const {
   const Context *s = sub_of(p);
   if (!s) return {};
-  return {fmt::format("{}(&{}); /* one tick of the instance of {} */", s->run_fn,
-                      field(sub_field[static_cast<std::size_t>(p)]), s->chart.name)};
+  return {fmt::format("{}(&{}); /* one tick of the instance of {} */", s->run_fn, field(sub_field[p]), s->chart.name)};
 }
 
-std::vector<std::string> Context::stop_call(int p) const {
+std::vector<std::string> Context::stop_call(PlaceId p) const {
   const Context *s = sub_of(p);
   if (!s || !s->has_stop()) return {};
-  return {fmt::format("{}(&{}); /* stop the instance of {} first */", s->stop_fn,
-                      field(sub_field[static_cast<std::size_t>(p)]), s->chart.name)};
+  return {fmt::format("{}(&{}); /* stop the instance of {} first */", s->stop_fn, field(sub_field[p]), s->chart.name)};
 }
 
 std::string Context::count_text() const { return place_count; }
@@ -345,29 +342,29 @@ std::string Context::member(const std::string &obj, const std::string &name) con
   return obj.empty() ? field(name) : obj + "." + name;
 }
 
-std::string Context::active_test(const std::string &obj, int p, bool at_start) const {
-  const std::string &k = place_const.at(static_cast<std::size_t>(p));
+std::string Context::active_test(const std::string &obj, PlaceId p, bool at_start) const {
+  const std::string &k = place_const.at(p);
   if (fsm) return fmt::format("{} == {}", member(obj, state), k);
   if (sequential()) return fmt::format("{} == {}", member(obj, current), k);
   // In a condition the counters serve as `avail` and decrease: a place some transition consumes
   // is read from the snapshot of the start of the tick.
-  const bool snapshot = at_start && obj.empty() && is_input.at(static_cast<std::size_t>(p));
+  const bool snapshot = at_start && obj.empty() && is_input.at(p);
   if (snapshot && sparse())  // the constant as a number in the bit arithmetic (MISRA C:2012 rule 10.1)
     return fmt::format("(({0}[(uint32_t){1} >> 5] >> ((uint32_t){1} & 31u)) & 1u) != 0u", before, k);
   if (snapshot) return fmt::format("{}[{}] != 0u", before, k);
   return fmt::format("{}[{}] != 0u", member(obj, av), k);
 }
 
-bool Context::resets_timer(int p) const { return is_output.at(static_cast<std::size_t>(p)) && place(p).timed; }
+bool Context::resets_timer(PlaceId p) const { return is_output.at(p) && place(p).timed; }
 
 bool Context::needs_snapshot() const {
-  for (int p = 0; p < static_cast<int>(chart.places.size()); ++p)
+  for (PlaceId p : chart.places.ids())
     if (runs_exit(p) || runs_entry(p) || resets_timer(p)) return true;
   return false;
 }
 
 bool Context::any_watched() const {
-  for (int p = 0; p < static_cast<int>(chart.places.size()); ++p)
+  for (PlaceId p : chart.places.ids())
     if (watched(p)) return true;
   return false;
 }

@@ -31,28 +31,28 @@ struct Context {
   }
 
   // ------------------------------------------------------------ names in the generated code
-  std::string type;                           ///< the prefix of every global name: the chart's name, or for a
-                                              ///< sub-chart instance its path (`Patrol_Search`, docs/c-engine.md)
-  std::string struct_type;                    ///< the state's C type: `Patrol`, or an instance's `struct Patrol_Search`
-  std::string linkage;                        ///< "" for the root's API, "static " for an instance's functions
-  std::string init_fn;                        ///< X_init
-  std::string run_fn;                         ///< X_run
-  std::string stop_fn;                        ///< an instance's X_stop (exits of its active places, innermost first)
-  std::string source_file;                    ///< engine.c as #line names it (the output path as the user gave it)
-  std::string header_file;                    ///< engine.h, as engine.c includes it (base name)
-  std::string guard;                          ///< the header's include guard
-  std::string hooks_macro;                    ///< X_HOOKS: define it to get the observation hooks
-  std::string checks_macro;                   ///< X_CHECKS: define it to assert the postconditions of an fsm
-  std::string assert_macro;                   ///< X_ASSERT(cond): the checks' handler; the user's, else assert
-  std::string assert_off_macro;               ///< X_ASSERT_OFF: set when X_ASSERT is assert under NDEBUG
-  std::string activated_fn;                   ///< X_activated
-  std::string enabled_fn;                     ///< X_enabled
-  std::string place_count;                    ///< X_PLACE_COUNT
-  std::string place_type;                     ///< X_place: the enum type of the places (states)
-  std::string transition_type;                ///< X_transition: the enum type of the transitions
-  std::string transition_count;               ///< X_TRANSITION_COUNT
-  std::vector<std::string> place_const;       ///< X_<place>, by place index
-  std::vector<std::string> transition_const;  ///< X_<transition>, by transition index
+  std::string type;              ///< the prefix of every global name: the chart's name, or for a
+                                 ///< sub-chart instance its path (`Patrol_Search`, docs/c-engine.md)
+  std::string struct_type;       ///< the state's C type: `Patrol`, or an instance's `struct Patrol_Search`
+  std::string linkage;           ///< "" for the root's API, "static " for an instance's functions
+  std::string init_fn;           ///< X_init
+  std::string run_fn;            ///< X_run
+  std::string stop_fn;           ///< an instance's X_stop (exits of its active places, innermost first)
+  std::string source_file;       ///< engine.c as #line names it (the output path as the user gave it)
+  std::string header_file;       ///< engine.h, as engine.c includes it (base name)
+  std::string guard;             ///< the header's include guard
+  std::string hooks_macro;       ///< X_HOOKS: define it to get the observation hooks
+  std::string checks_macro;      ///< X_CHECKS: define it to assert the postconditions of an fsm
+  std::string assert_macro;      ///< X_ASSERT(cond): the checks' handler; the user's, else assert
+  std::string assert_off_macro;  ///< X_ASSERT_OFF: set when X_ASSERT is assert under NDEBUG
+  std::string activated_fn;      ///< X_activated
+  std::string enabled_fn;        ///< X_enabled
+  std::string place_count;       ///< X_PLACE_COUNT
+  std::string place_type;        ///< X_place: the enum type of the places (states)
+  std::string transition_type;   ///< X_transition: the enum type of the transitions
+  std::string transition_count;  ///< X_TRANSITION_COUNT
+  IdMap<model::PlaceId, std::string> place_const;            ///< X_<place>
+  IdMap<model::TransitionId, std::string> transition_const;  ///< X_<transition>
   // The scalable form's file-local helpers (named after the enumerations, so that a place
   // called `lowest` keeps its constant X_lowest and the helper gives way).
   std::string lowest_fn;         ///< the number of the lowest bit of a word
@@ -78,9 +78,9 @@ struct Context {
 
   // Struct fields: chart variables keep their own names; the engine's own fields give way
   // (take a trailing `_`) if a variable already has their name.
-  std::vector<std::string> var_field;  ///< by var index
-  /// By place index, "" for a place without a timer; no entries at all when no place has one.
-  std::vector<std::string> timer_field;
+  IdMap<model::VarId, std::string> var_field;
+  /// "" for a place without a timer; no entries at all when no place has one.
+  IdMap<model::PlaceId, std::string> timer_field;
   std::string av;          ///< sfc: activation counters
   std::string state;       ///< fsm: the current state
   std::string status;      ///< fsm: 0 running, 1 succeeded, -1 failed
@@ -132,10 +132,10 @@ struct Context {
   std::string owner;  ///< an instance: "place Search of Patrol", for comments
   /// By place: the context of the instance the place runs (null if it runs nothing), and the
   /// parent struct's field that holds it.
-  std::vector<std::unique_ptr<Context>> sub;
-  std::vector<std::string> sub_field;  ///< like timer_field: no entries when no place runs a chart
-  bool stoppable = false;              ///< an instance whose place (or an enclosing one) can lose activation
-  bool stop_code = false;              ///< stopping the instance runs code: some exit block, at any depth
+  IdMap<model::PlaceId, std::unique_ptr<Context>> sub;
+  IdMap<model::PlaceId, std::string> sub_field;  ///< like timer_field: no entries when no place runs a chart
+  bool stoppable = false;                        ///< an instance whose place (or an enclosing one) can lose activation
+  bool stop_code = false;                        ///< stopping the instance runs code: some exit block, at any depth
   /// The stop function exists (and is called): it can be stopped and stopping runs code.
   bool has_stop() const { return stoppable && stop_code; }
   /// Some transition condition reads, through active()/succeeded()/failed(), a place whose
@@ -145,8 +145,8 @@ struct Context {
   /// (docs/language.md: the new state becomes current after the old one's exit).
   bool exits_read_activity = false;
   /// The root: every interface function any instance calls, for the header.
-  std::vector<int> functions;
-  const Context *sub_of(int place) const { return sub.at(static_cast<std::size_t>(place)).get(); }
+  std::vector<model::FunctionId> functions;
+  const Context *sub_of(model::PlaceId place) const { return sub.at(place).get(); }
   /// The observation hooks are the root's only (docs/c-engine.md).
   bool hooks() const { return root; }
   /// The size of the per-place arrays as the header writes it: X_PLACE_COUNT (an instance's
@@ -157,25 +157,25 @@ struct Context {
   /// A C test (unbracketed, not a bool operand yet) that place `p` of the state `obj` (see
   /// member()) is active now; `at_start`: in a transition condition of this chart, where the
   /// start of the tick counts (docs/language.md, "Sub-charts").
-  std::string active_test(const std::string &obj, int p, bool at_start = false) const;
+  std::string active_test(const std::string &obj, model::PlaceId p, bool at_start = false) const;
   /// The engine code that starts, ticks or stops the instance place `p` runs (`Patrol_Search_run(
   /// &m->Search);`), as lines; none where the place runs nothing (or stopping runs no code).
-  std::vector<std::string> start_call(int p) const;
-  std::vector<std::string> tick_call(int p) const;
-  std::vector<std::string> stop_call(int p) const;
+  std::vector<std::string> start_call(model::PlaceId p) const;
+  std::vector<std::string> tick_call(model::PlaceId p) const;
+  std::vector<std::string> stop_call(model::PlaceId p) const;
   /// Place `p` has something to do in the actions step: an action block or an instance to tick.
   bool has_sub() const {
     for (const auto &s : sub)
       if (s) return true;
     return false;
   }
-  bool acts(int p) const { return !place(p).action.empty() || sub_of(p); }
+  bool acts(model::PlaceId p) const { return !place(p).action.empty() || sub_of(p); }
   /// Calls `f(instance, member)` for every instance below this context, depth first in declaration
   /// order (parents first: the numbering of X_instance), `member` how its struct is reached from
   /// `prefix` (`m->` gives `m->Search`, then `m->Search.Grab`).
   void each_instance(const std::string &prefix,
                      const std::function<void(const Context &, const std::string &)> &f) const {
-    for (std::size_t p = 0; p < sub.size(); ++p) {
+    for (model::PlaceId p : sub.ids()) {
       if (!sub[p]) continue;
       const std::string member = prefix + sub_field[p];
       f(*sub[p], member);
@@ -184,33 +184,33 @@ struct Context {
   }
 
   // ------------------------------------------------------------ what the chart uses
-  std::vector<bool> is_input;   ///< by place: some transition consumes its activation
-  std::vector<bool> is_output;  ///< by place: some transition produces activation in it
-  bool has_timers = false;      ///< some place has a timer
-  bool has_post = false;        ///< some terminal state has a postcondition
-  bool has_terminal = false;    ///< some state is terminal
-  bool needs_started = false;   ///< an initial place has a non-empty entry block
+  IdMap<model::PlaceId, bool> is_input;   ///< some transition consumes its activation
+  IdMap<model::PlaceId, bool> is_output;  ///< some transition produces activation in it
+  bool has_timers = false;                ///< some place has a timer
+  bool has_post = false;                  ///< some terminal state has a postcondition
+  bool has_terminal = false;              ///< some state is terminal
+  bool needs_started = false;             ///< an initial place has a non-empty entry block
   bool team() const { return chart.team > 0; }
   /// The type of a report: the narrowest signed type that holds every state and -1.
   const char *report_type() const;
 
-  const model::Place &place(int i) const { return chart.places.at(static_cast<std::size_t>(i)); }
+  const model::Place &place(model::PlaceId p) const { return chart.places.at(p); }
   /// `m->field`.
   std::string field(const std::string &name) const { return self + "->" + name; }
   /// `m->av[X_P]`.
-  std::string av_of(int place) const;
+  std::string av_of(model::PlaceId place) const;
   /// `m->timer_P`.
-  std::string timer_of(int place) const;
+  std::string timer_of(model::PlaceId place) const;
   /// A place's exit (or entry) block runs only if the place can lose (gain) its activation.
-  bool runs_exit(int place) const;
-  bool runs_entry(int place) const;
+  bool runs_exit(model::PlaceId place) const;
+  bool runs_entry(model::PlaceId place) const;
   /// The place's timer is reset when it gains activation after the start.
-  bool resets_timer(int place) const;
+  bool resets_timer(model::PlaceId place) const;
   /// Some place runs an exit or entry block or resets its timer: the run function compares the
   /// start of the tick with its end (a snapshot of the activation vector, or of the state).
   bool needs_snapshot() const;
   /// The place's exit or entry code runs, or its timer is reset, when its activation changes.
-  bool watched(int place) const { return runs_exit(place) || runs_entry(place) || resets_timer(place); }
+  bool watched(model::PlaceId place) const { return runs_exit(place) || runs_entry(place) || resets_timer(place); }
   /// Some place is watched.
   bool any_watched() const;
 };

@@ -86,7 +86,7 @@ std::optional<long long> int_constant(const Context &c, const Expr &e) {
   if (e.type != Type::Int) return std::nullopt;
   if (e.kind == Expr::Kind::Int || e.folded) return e.int_value;
   if (e.kind == Expr::Kind::Const) {
-    const Expr &value = c.model.consts.at(static_cast<std::size_t>(e.index)).value;
+    const Expr &value = c.model.consts.at(e.constant()).value;
     if (value.kind == Expr::Kind::Int) return value.int_value;
   }
   return std::nullopt;
@@ -157,7 +157,8 @@ std::optional<bool> settled(const Expr &e) {
 /// (in ticks), `v < 4`.
 struct ConstantTest {
   Expr::Kind kind = Expr::Kind::Var;  ///< Elapsed or Var
-  int index = -1;
+  model::PlaceId place;               ///< Elapsed: whose timer
+  model::VarId var;                   ///< Var
   BinaryOp op = BinaryOp::Eq;
   long long k = 0;
 
@@ -181,9 +182,9 @@ std::optional<ConstantTest> constant_test(const Context &c, const Expr &e) {
     const Expr &k = unbracketed(u.args.at(static_cast<std::size_t>(1 - side)));
     BinaryOp op = side == 0 ? u.binary_op : mirrored(u.binary_op);
     if (x.kind == Expr::Kind::Elapsed && k.kind == Expr::Kind::Ticks)  // timers stop at UINT32_MAX
-      return ConstantTest{x.kind, x.index, op, static_cast<long long>(std::min(k.ticks, 0x100000000ul))};
+      return ConstantTest{x.kind, x.place(), {}, op, static_cast<long long>(std::min(k.ticks, 0x100000000ul))};
     if (x.kind == Expr::Kind::Var && x.type == Type::Int)
-      if (auto v = int_constant(c, k)) return ConstantTest{x.kind, x.index, op, *v};
+      if (auto v = int_constant(c, k)) return ConstantTest{x.kind, {}, x.var(), op, *v};
   }
   return std::nullopt;
 }
@@ -196,7 +197,7 @@ std::optional<ConstantTest> constant_test(const Context &c, const Expr &e) {
 std::optional<std::string> settled_pair(const Context &c, const Expr &e) {
   if (e.binary_op != BinaryOp::And && e.binary_op != BinaryOp::Or) return std::nullopt;
   auto a = constant_test(c, e.args.at(0)), b = constant_test(c, e.args.at(1));
-  if (!a || !b || a->kind != b->kind || a->index != b->index) return std::nullopt;
+  if (!a || !b || a->kind != b->kind || a->place != b->place || a->var != b->var) return std::nullopt;
   const bool timer = a->kind == Expr::Kind::Elapsed;
   const long long lowest = timer ? 0 : INT_MIN, highest = timer ? 0xFFFFFFFFll : INT_MAX;
   const bool both = e.binary_op == BinaryOp::And;
@@ -206,8 +207,7 @@ std::optional<std::string> settled_pair(const Context &c, const Expr &e) {
   for (long long k : {a->k, b->k})
     for (long long x : {k - 1, k, k + 1, highest})
       if (x >= lowest && x <= highest && value(x) != first) return std::nullopt;
-  std::string name = timer ? fmt::format("elapsed({})", c.place(a->index).name)
-                           : c.chart.vars.at(static_cast<std::size_t>(a->index)).name;
+  std::string name = timer ? fmt::format("elapsed({})", c.place(a->place).name) : c.chart.vars.at(a->var).name;
   return fmt::format("{} /* {}: {} {} {} {} {} {} {}{} */", first ? "true" : "false", first ? "always" : "never", name,
                      spelling(a->op), a->k, spelling(e.binary_op), name, spelling(b->op), b->k,
                      timer ? ", in ticks" : "");
@@ -218,9 +218,9 @@ class Renderer {
 public:
   /// `at_start`: the expression is a transition's condition, where active()/succeeded()/
   /// failed() read this chart's activation at the start of the tick (docs/language.md, "Sub-charts").
-  /// `from`: in an fsm or a sequential sfc, the one state the condition can be tried in (or -1),
-  /// which decides active(S) of this chart at the start of the tick.
-  Renderer(const Context &c, Temporaries &temps, bool at_start = false, int from = -1)
+  /// `from`: in an fsm or a sequential sfc, the one state the condition can be tried in (or
+  /// none), which decides active(S) of this chart at the start of the tick.
+  Renderer(const Context &c, Temporaries &temps, bool at_start = false, model::PlaceId from = {})
       : c_(c), temps_(temps), at_start_(at_start), from_(from) {}
 
   Rendered render(const Expr &e) {
@@ -230,10 +230,10 @@ public:
     case Expr::Kind::Float:
     case Expr::Kind::String: return literal(e);
     case Expr::Kind::Ticks: return {fmt::format("{}u /* {}ms */", e.ticks, e.float_value)};
-    case Expr::Kind::Var: return {c_.field(c_.var_field.at(static_cast<std::size_t>(e.index)))};
+    case Expr::Kind::Var: return {c_.field(c_.var_field.at(e.var()))};
     case Expr::Kind::Const: return constant(e);
     case Expr::Kind::Call: return call(e);
-    case Expr::Kind::Elapsed: return {c_.timer_of(e.index)};
+    case Expr::Kind::Elapsed: return {c_.timer_of(e.place())};
     case Expr::Kind::Unary: return unary(e);
     case Expr::Kind::Binary: return binary(e);
     case Expr::Kind::Active:
@@ -245,7 +245,7 @@ public:
       return {bracket(inner.text), kPrimary, std::move(inner.before)};
     }
     case Expr::Kind::TeamCount:  // no side effect: the order of calls is not its concern
-      return {fmt::format("{}({}, {})", c_.team_fn, c_.self, c_.place_const.at(static_cast<std::size_t>(e.index)))};
+      return {fmt::format("{}({}, {})", c_.team_fn, c_.self, c_.place_const.at(e.place()))};
     case Expr::Kind::Agent: return {c_.field(c_.agent)};
     case Expr::Kind::Config: break;  // plans only: the validator keeps it out of charts
     default: break;                  // team machines: not in this back end's charts
@@ -280,8 +280,8 @@ public:
       r = render(s.expr);
       r.text += ";";
     } else {
-      const Type to = c_.chart.vars.at(static_cast<std::size_t>(s.var)).type;
-      const std::string target = c_.field(c_.var_field.at(static_cast<std::size_t>(s.var)));
+      const Type to = c_.chart.vars.at(s.var).type;
+      const std::string target = c_.field(c_.var_field.at(s.var));
       r = render(s.expr);
       if (s.op != AssignOp::Set && to == Type::Int && is_floating(s.expr.type)) {
         // `v += f` is `v = v + f` computed in f's type, then converted: written out, so that
@@ -304,12 +304,13 @@ private:
   /// at the start of the tick in a condition; the instances as they are, they are never in the
   /// middle of a tick when the parent's code runs), then the fsm instance's status. Bracketed.
   Rendered activity(const Expr &e) const {
-    std::vector<int> path = e.kind == Expr::Kind::Active ? e.path.get() : std::vector<int>{e.index};
+    std::vector<model::PlaceId> path =
+        e.kind == Expr::Kind::Active ? e.path.get() : std::vector<model::PlaceId>{e.place()};
     const Context *c = &c_;
     std::string obj, text;
     for (std::size_t k = 0; k < path.size(); ++k) {
       if (!c) return {"false"};  // a path the validator let through into nothing: never active
-      if (k == 0 && at_start_ && from_ >= 0 && (c_.fsm || c_.sequential())) {
+      if (k == 0 && at_start_ && from_ && (c_.fsm || c_.sequential())) {
         // The transition is tried only in state `from`: the first level is known (and testing
         // the state twice would be an overlapping comparison to clang).
         if (path[0] != from_) return {fmt::format("false /* {}: not in {} */", what(e), c_.place(path[0]).name)};
@@ -317,7 +318,7 @@ private:
         text += (text.empty() ? "" : " && ") + c->active_test(obj, path[k], k == 0 && at_start_);
       }
       if (k + 1 < path.size() || e.kind != Expr::Kind::Active) {
-        obj = c->member(obj, c->sub_field.at(static_cast<std::size_t>(path[k])));
+        obj = c->member(obj, c->sub_field.at(path[k]));
         c = c->sub_of(path[k]);
       }
     }
@@ -333,10 +334,10 @@ private:
   /// `active(P.Q)`, as the chart says it, for comments.
   std::string what(const Expr &e) const {
     if (e.kind != Expr::Kind::Active)
-      return fmt::format("{}({})", e.kind == Expr::Kind::Succeeded ? "succeeded" : "failed", c_.place(e.index).name);
+      return fmt::format("{}({})", e.kind == Expr::Kind::Succeeded ? "succeeded" : "failed", c_.place(e.place()).name);
     std::string s;
     const Context *c = &c_;
-    for (int p : e.path) {
+    for (model::PlaceId p : e.path) {
       if (!c) break;
       s += (s.empty() ? "" : ".") + c->place(p).name;
       c = c->sub_of(p);
@@ -347,7 +348,7 @@ private:
   /// A constant is written as its folded value, named in a comment: no C name of the chart's can
   /// collide with it (a constant called `m` would otherwise hide the engine parameter).
   Rendered constant(const Expr &e) const {
-    const auto &k = c_.model.consts.at(static_cast<std::size_t>(e.index));
+    const auto &k = c_.model.consts.at(e.constant());
     Rendered v = literal(k.value);
     v.text += fmt::format(" /* {} */", k.name);
     return v;
@@ -387,7 +388,7 @@ private:
   }
 
   Rendered call(const Expr &e) {
-    const model::Function &f = c_.model.functions.at(static_cast<std::size_t>(e.index));
+    const model::Function &f = c_.model.functions.at(e.function());
     Operands o = operands(e.args);
     // --context: the instance's context first (docs/c-engine.md "Instance context"); reading a
     // field calls nothing, so the order of the calls is untouched.
@@ -456,7 +457,7 @@ private:
   const Context &c_;
   Temporaries &temps_;
   bool at_start_ = false;
-  int from_ = -1;
+  model::PlaceId from_;
 };
 
 bool blank(std::string_view s) { return s.find_first_not_of(" \t\r\f\v") == std::string_view::npos; }
@@ -506,13 +507,13 @@ std::string c_expr(const Context &c, const Expr &e, Temporaries &temps) {
   return closed(Renderer(c, temps).render(e)).text;
 }
 
-std::string c_condition(const Context &c, const Expr &e, Temporaries &temps, bool at_start, int from) {
+std::string c_condition(const Context &c, const Expr &e, Temporaries &temps, bool at_start, model::PlaceId from) {
   Rendered r = Renderer(c, temps, at_start, from).render(e);
   if (!r.before.empty()) return closed(std::move(r)).text;  // a bracketed comma expression
   return e.kind == Expr::Kind::Paren || is_activity(e) ? r.text : bracket(r.text);
 }
 
-std::string c_test(const Context &c, const Expr &e, Temporaries &temps, bool at_start, int from) {
+std::string c_test(const Context &c, const Expr &e, Temporaries &temps, bool at_start, model::PlaceId from) {
   const Expr &u = unbracketed(e);
   if (is_activity(u)) {  // the whole test: without the brackets (clang -Wparentheses-equality)
     std::string text = Renderer(c, temps, at_start, from).render(u).text;
@@ -593,7 +594,7 @@ void render_statements(const Context &c, const std::vector<model::Stmt> &stmts, 
 class StatementWriter {
 public:
   StatementWriter(CodeWriter &w, const Context &c, const std::vector<std::string> &text)
-      : w_(w), sources_(c.model.sources), text_(text) {}
+      : w_(w), sources_(c.model.sources()), text_(text) {}
 
   void list(const std::vector<model::Stmt> &stmts) {
     for (const auto &s : stmts) {
@@ -651,9 +652,9 @@ private:
 
   /// A `#line` to the statement's line unless the next output line stands for it already.
   void point_at(const SourceRange &range) {
-    if (!sources_) return;
-    std::uint32_t chart_line = sources_->begin_of(range).line;
-    if (next_ == 0 || range.file != file_ || chart_line != next_) w_.line_from(*sources_, range);
+    if (!sources_.knows(range.file)) return;
+    std::uint32_t chart_line = sources_.begin_of(range).line;
+    if (next_ == 0 || range.file != file_ || chart_line != next_) w_.line_from(sources_, range);
     file_ = range.file;
     next_ = chart_line;
   }
@@ -664,7 +665,7 @@ private:
   }
 
   CodeWriter &w_;
-  const SourceManager *sources_;
+  const SourceManager &sources_;
   const std::vector<std::string> &text_;
   std::size_t at_ = 0;
   // The chart line the next output line stands for (0: unknown); a #line is needed only when it
@@ -687,7 +688,7 @@ void emit_statements(CodeWriter &w, const Context &c, const std::vector<model::S
   StatementWriter(w, c, text).list(stmts);
 }
 
-void emit_verbatim(CodeWriter &w, const SourceManager *sources, const SourceRange &range, std::string_view text,
+void emit_verbatim(CodeWriter &w, const SourceManager &sources, const SourceRange &range, std::string_view text,
                    std::uint32_t code_begin) {
   // #line names the line where the code starts (just after `%{`), which the model keeps.
   std::uint32_t start = code_begin ? code_begin : range.begin;
@@ -701,7 +702,7 @@ void emit_verbatim(CodeWriter &w, const SourceManager *sources, const SourceRang
   if (last_nl != std::string_view::npos && blank(text.substr(last_nl + 1))) text = text.substr(0, last_nl + 1);
   if (blank(text)) return;
 
-  if (sources) w.line_from(*sources, {range.file, start, start});
+  w.line_from(sources, {range.file, start, start});
   std::string_view body = text.back() == '\n' ? text.substr(0, text.size() - 1) : text;
   if (body.find('\n') == std::string_view::npos) {
     // One line: indented like the code around it.

@@ -59,13 +59,14 @@ std::string c_expr(const Context &c, const model::Expr &e, Temporaries &temps);
 
 /// `e` as the operand of `&&`: parenthesised unless it already is a bracket or a primary.
 /// `at_start`: `e` is a transition's condition (active() and the like read the start of the tick).
-/// `from`: the state an fsm's (or a sequential sfc's) transition leaves, -1 otherwise.
+/// `from`: the state an fsm's (or a sequential sfc's) transition leaves, none otherwise.
 std::string c_condition(const Context &c, const model::Expr &e, Temporaries &temps, bool at_start = false,
-                        int from = -1);
+                        model::PlaceId from = {});
 
 /// `e` as the whole test of an `if`: as c_condition(), except that an equality comparison is
 /// not bracketed (clang -Wparentheses-equality takes `if ((a == b))` for a mistyped `=`).
-std::string c_test(const Context &c, const model::Expr &e, Temporaries &temps, bool at_start = false, int from = -1);
+std::string c_test(const Context &c, const model::Expr &e, Temporaries &temps, bool at_start = false,
+                   model::PlaceId from = {});
 
 /// `e` as the condition of an `if` statement, written inside its brackets: `X()`, `n > 2`, or
 /// where calls need temporaries, the bracketed comma expression `(gfec_t0 = N(), gfec_t0 + M() > 2)`.
@@ -99,7 +100,7 @@ void emit_statements(CodeWriter &w, const Context &c, const std::vector<model::S
 
 /// A `%{ %}` block (text: what is between the braces) with `#line` to where the text begins,
 /// `code_begin` in the model (range.begin if 0; no #line without `sources`).
-void emit_verbatim(CodeWriter &w, const SourceManager *sources, const SourceRange &range, std::string_view text,
+void emit_verbatim(CodeWriter &w, const SourceManager &sources, const SourceRange &range, std::string_view text,
                    std::uint32_t code_begin);
 
 }  // namespace gfec::c_backend

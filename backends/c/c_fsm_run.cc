@@ -67,14 +67,14 @@ private:
   }
 
   /// `m->state == X_S`; an operand of `&&` takes it in parentheses (MISRA C:2012 rule 12.1).
-  std::string in_state(int p) const {
-    return fmt::format("{} == {}", c_.field(c_.state), c_.place_const.at(static_cast<std::size_t>(p)));
+  std::string in_state(model::PlaceId p) const {
+    return fmt::format("{} == {}", c_.field(c_.state), c_.place_const.at(p));
   }
 
   void count_time() {
     if (!c_.has_timers) return;
     section("/* Count the ticks of the current state, if it has a timer */");
-    for (int p = 0; p < static_cast<int>(c_.chart.places.size()); ++p)
+    for (model::PlaceId p : places())
       if (c_.place(p).timed) w_.line("if (({0}) && ({1} < UINT32_MAX)) {{ {1}++; }}", in_state(p), c_.timer_of(p));
   }
 
@@ -100,12 +100,12 @@ private:
       if (t.condition) test = "(" + test + ") && " + conditions_.at(i);
       // Every transition's test is mapped to the chart: to its condition, or to the whole
       // transition when it has none (a debugger's `break chart.fsm:LINE` stops on it).
-      if (c_.model.sources) w_.line_from(*c_.model.sources, t.condition ? t.condition->range : t.range);
+      w_.line_from(c_.model.sources(), t.condition ? t.condition->range : t.range);
       w_.line("{}if ({}) {{", i == 0 ? "" : "else ", test);
       w_.line_back();
       w_.indent();
-      int to = t.outputs.at(0);
-      w_.line("{} = {};", c_.field(c_.state), c_.place_const.at(static_cast<std::size_t>(to)));
+      model::PlaceId to = t.outputs.at(0);
+      w_.line("{} = {};", c_.field(c_.state), c_.place_const.at(to));
       model::Terminal terminal = c_.place(to).terminal;
       if (terminal != model::Terminal::None)
         w_.line("{} = {};", c_.field(c_.status), terminal == model::Terminal::Success ? 1 : -1);
@@ -133,10 +133,9 @@ private:
               c_.field(c_.state));
       w_.line("{} = {};", c_.field(c_.state), c_.from);
     }
-    exit_blocks(
-        [this](int p) { return fmt::format("{} == {}", c_.from, c_.place_const[static_cast<std::size_t>(p)]); });
+    exit_blocks([this](model::PlaceId p) { return fmt::format("{} == {}", c_.from, c_.place_const[p]); });
     if (swap) w_.line("{} = {};", c_.field(c_.state), c_.to);
-    entry_blocks([this](int p) { return in_state(p); });
+    entry_blocks([this](model::PlaceId p) { return in_state(p); });
     // The hooks go inside the same test: a second `if` on the same condition right after it is
     // what cppcheck calls a duplicate condition when the exit and entry code leave it alone.
     // Instances have no hooks (docs/c-engine.md).
@@ -164,9 +163,9 @@ private:
   void hook_calls() {
     w_.line("{}({}, {}, false);", c_.activated_fn, c_.self, c_.from);
     w_.line("{}({}, {}, true);", c_.activated_fn, c_.self, c_.field(c_.state));
-    for (int p = 0; p < static_cast<int>(c_.chart.places.size()); ++p) {
+    for (model::PlaceId p : places()) {
       std::string calls;
-      for (std::size_t t = 0; t < c_.chart.transitions.size(); ++t)
+      for (model::TransitionId t : c_.chart.transitions.ids())
         if (c_.chart.transitions[t].inputs.at(0) == p)
           calls += fmt::format(" {}({}, {});", c_.enabled_fn, c_.self, c_.transition_const[t]);
       if (!calls.empty()) w_.line("if ({}) {{{} }}", in_state(p), calls);
@@ -180,7 +179,7 @@ private:
     section("");
     directive(w_, "#ifdef " + c_.checks_macro);
     w_.line("/* Postconditions of the terminal states, checked on entering them */");
-    for (int p = 0; p < static_cast<int>(c_.chart.places.size()); ++p) {
+    for (model::PlaceId p : places()) {
       const auto &place = c_.place(p);
       if (place.terminal == model::Terminal::None || !place.post) continue;
       std::string check = c_assertion(c_, *place.post, temps_);
@@ -193,7 +192,7 @@ private:
         directive(w_, "#ifndef " + c_.assert_off_macro);
         temps_.declare(w_);
       }
-      if (c_.model.sources) w_.line_from(*c_.model.sources, place.post->range);
+      w_.line_from(c_.model.sources(), place.post->range);
       w_.line(std::string_view(check));
       w_.line_back();
       if (temporaries) directive(w_, "#endif");
@@ -206,7 +205,7 @@ private:
   void actions() {
     action_blocks(c_.has_sub() ? "/* Perform the action of the current state, then one tick of the instance it runs */"
                                : "/* Perform the action of the current state */",
-                  [this](int p) { return in_state(p); });
+                  [this](model::PlaceId p) { return in_state(p); });
   }
 
   std::vector<std::string> conditions_;  ///< by transition, rendered by declarations()

@@ -39,8 +39,8 @@ void transitions_enum(CodeWriter &w, const Context &c) {
   w.line("typedef enum {");
   w.indent();
   std::vector<std::pair<std::string, std::string>> rows;
-  for (std::size_t i = 0; i < c.chart.transitions.size(); ++i)
-    rows.emplace_back(c.transition_const[i] + ",", transition_label(c, c.chart.transitions[i]));
+  for (model::TransitionId t : c.chart.transitions.ids())
+    rows.emplace_back(c.transition_const[t] + ",", transition_label(c, c.chart.transitions[t]));
   aligned(w, rows);
   w.line("{}", c.transition_count);
   w.dedent();
@@ -99,11 +99,10 @@ void state_struct(CodeWriter &w, const Context &c) {
                           ? fmt::format("activation counter of each place (never above {})", c.layout.activation.place)
                           : "activation counter of each place");
   }
-  for (std::size_t p = 0; p < c.chart.places.size(); ++p)
-    if (c.chart.places[p].timed)
-      rows.emplace_back(
-          fmt::format("uint32_t {};", c.timer_field[p]),
-          fmt::format("ticks {} has been active: elapsed({})", c.chart.places[p].name, c.chart.places[p].name));
+  for (model::PlaceId p : c.chart.places.ids())
+    if (c.place(p).timed)
+      rows.emplace_back(fmt::format("uint32_t {};", c.timer_field[p]),
+                        fmt::format("ticks {} has been active: elapsed({})", c.place(p).name, c.place(p).name));
   if (c.needs_started) rows.emplace_back(fmt::format("bool {};", c.started), "the first tick has run");
   if (c.team()) {
     rows.emplace_back(fmt::format("int {};", c.agent),
@@ -111,13 +110,13 @@ void state_struct(CodeWriter &w, const Context &c) {
     rows.emplace_back(fmt::format("{} {}[{}];", c.report_type(), c.reports, c.team_size),
                       "by agent, the state it last reported; -1: none yet");
   }
-  for (std::size_t v = 0; v < c.chart.vars.size(); ++v)
+  for (model::VarId v : c.chart.vars.ids())
     rows.emplace_back(fmt::format("{} {};", c_type(c.chart.vars[v].type), c.var_field[v]),
                       fmt::format("var {}", c.chart.vars[v].name));
-  for (std::size_t p = 0; p < c.chart.places.size(); ++p)
+  for (model::PlaceId p : c.chart.places.ids())
     if (c.sub[p])
       rows.emplace_back(fmt::format("{} {};", c.sub[p]->struct_type, c.sub_field[p]),
-                        fmt::format("the instance of {} that {} runs", c.sub[p]->chart.name, c.chart.places[p].name));
+                        fmt::format("the instance of {} that {} runs", c.sub[p]->chart.name, c.place(p).name));
   if (c.has_context())
     rows.emplace_back(c.context_param(c.ctx_field) + ";",
                       c.root ? fmt::format("the context every interface call receives first ({})", c.set_context_fn)
@@ -173,7 +172,7 @@ void instance_api(CodeWriter &w, const Context &c) {
   std::string example;  // the first instance's first place names the numbering by example
   c.each_instance("", [&](const Context &s, const std::string &) {
     rows.emplace_back(s.instance_const + ",", fmt::format("{}, run by {}", s.chart.name, s.owner));
-    if (example.empty()) example = s.place_const.at(0);
+    if (example.empty()) example = s.place_const.at(model::PlaceId(0));
   });
   aligned(w, rows);
   w.line("{}", c.instance_count);
@@ -257,8 +256,8 @@ void context_tag(CodeWriter &w, const Context &c) {
 void interface_functions(CodeWriter &w, const Context &c) {
   // Grouped by interface, each group in the order the chart's function list gives.
   std::vector<std::string> interfaces;
-  for (int f : c.functions) {
-    const auto &name = c.model.functions.at(static_cast<std::size_t>(f)).interface_name;
+  for (model::FunctionId f : c.functions) {
+    const auto &name = c.model.functions.at(f).interface_name;
     if (std::find(interfaces.begin(), interfaces.end(), name) == interfaces.end()) interfaces.push_back(name);
   }
   const char *who = c.has_sub() ? "the chart and its sub-charts call" : "the chart calls";
@@ -266,8 +265,8 @@ void interface_functions(CodeWriter &w, const Context &c) {
     w.blank();
     if (iface.empty()) w.line("/* Functions {}: the robot library defines them. */", who);
     else w.line("/* Functions of interface {} that {}: the robot library defines them. */", iface, who);
-    for (int f : c.functions) {
-      const auto &fn = c.model.functions.at(static_cast<std::size_t>(f));
+    for (model::FunctionId f : c.functions) {
+      const auto &fn = c.model.functions.at(f);
       if (fn.interface_name == iface) w.line("{};", c_prototype(fn, context_first(c, fn)));
     }
   }

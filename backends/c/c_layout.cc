@@ -14,15 +14,15 @@ int bits_for(std::uint64_t max) { return max <= UINT8_MAX ? 8 : max <= UINT16_MA
 /// transition is one of its inputs, never before the previous transition's owner. A transition
 /// whose owner is not active is not open, so nothing is missed. Greedy: the smallest input that
 /// is not before the last owner leaves the most room for the transitions after it.
-bool choose_owners(const model::Chart &c, std::vector<int> &owner) {
+bool choose_owners(const model::Chart &c, IdMap<model::TransitionId, model::PlaceId> &owner) {
   owner.clear();
-  int last = 0;
+  model::PlaceId last(0);
   bool in_order = true;
   for (const auto &t : c.transitions) {
-    int best = -1;
-    for (int p : t.inputs)
-      if (p >= last && (best < 0 || p < best)) best = p;
-    if (best < 0) {
+    model::PlaceId best;
+    for (model::PlaceId p : t.inputs)
+      if (!(p < last) && (!best || p < best)) best = p;
+    if (!best) {
       in_order = false;
       best = *std::min_element(t.inputs.begin(), t.inputs.end());
     }
@@ -62,14 +62,14 @@ void plan_lists(const model::Chart &c, Layout &l) {
   if (l.watch_capacity == 0) return;
   // At most `tokens` places are active at once, so at most that many fall to 0 or rise from 0
   // in a tick; and only a watched place some transition consumes from (produces into) can.
-  std::vector<bool> consumed(c.places.size()), produced(c.places.size());
+  IdMap<model::PlaceId, bool> consumed(c.places.size()), produced(c.places.size());
   for (const auto &t : c.transitions) {
-    for (int p : t.inputs) consumed[static_cast<std::size_t>(p)] = true;
-    for (int p : t.outputs) produced[static_cast<std::size_t>(p)] = true;
+    for (model::PlaceId p : t.inputs) consumed[p] = true;
+    for (model::PlaceId p : t.outputs) produced[p] = true;
   }
-  auto capacity = [&](const std::vector<bool> &moved) {
+  auto capacity = [&](const IdMap<model::PlaceId, bool> &moved) {
     std::size_t n = 0;
-    for (std::size_t p = 0; p < c.places.size(); ++p) n += l.watched[p] && moved[p] ? 1 : 0;
+    for (model::PlaceId p : c.places.ids()) n += l.watched[p.index()] && moved[p] ? 1 : 0;
     return std::max<std::size_t>(1, l.activation.bounded ? std::min<std::uint64_t>(n, l.activation.total) : n);
   };
   l.lost_capacity = capacity(consumed);

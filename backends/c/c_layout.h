@@ -56,13 +56,13 @@ struct Layout {
   std::size_t part_places = 0;  ///< 0: one run function; else the switches' parts of this many places
 
   // ---- the sparse form
-  int index_bits = 32;             ///< 8, 16 or 32: a type for place numbers (lists of places)
-  std::vector<int> owner;          ///< by transition: the input place whose visit tries it
-  bool place_driven = false;       ///< owners never decrease in declaration order (see c_layout.cc)
-  BitLevels active;                ///< the active places
-  BitLevels candidates;            ///< !place_driven: the transitions to try this tick
-  std::size_t add_capacity = 0;    ///< places that fired transitions produce into, per tick
-  std::size_t watch_capacity = 0;  ///< watched places that lose (or gain) activation per tick
+  int index_bits = 32;                               ///< 8, 16 or 32: a type for place numbers (lists of places)
+  IdMap<model::TransitionId, model::PlaceId> owner;  ///< by transition: the input place whose visit tries it
+  bool place_driven = false;                         ///< owners never decrease in declaration order (see c_layout.cc)
+  BitLevels active;                                  ///< the active places
+  BitLevels candidates;                              ///< !place_driven: the transitions to try this tick
+  std::size_t add_capacity = 0;                      ///< places that fired transitions produce into, per tick
+  std::size_t watch_capacity = 0;                    ///< watched places that lose (or gain) activation per tick
   /// The lists of watched places that fell to 0 and that rose from 0 in a tick, each at least 1
   /// long when watch_capacity is not 0 (C has no empty arrays): a place falls to 0 only if a
   /// transition consumes from it, and rises only if one produces into it.

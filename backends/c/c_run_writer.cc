@@ -48,8 +48,8 @@ void RunWriter::block(const std::vector<model::Stmt> &stmts, const std::vector<s
   statements(stmts, text, first, last);
 }
 
-void RunWriter::exit_blocks(const std::function<std::string(int)> &left) {
-  for (int p = 0; p < places(); ++p)
+void RunWriter::exit_blocks(const std::function<std::string(model::PlaceId)> &left) {
+  for (model::PlaceId p : places())
     if (c_.runs_exit(p)) {
       w_.line("/* exit {} */", c_.place(p).name);
       w_.line("if ({}) {{", left(p));
@@ -57,8 +57,8 @@ void RunWriter::exit_blocks(const std::function<std::string(int)> &left) {
     }
 }
 
-void RunWriter::entry_blocks(const std::function<std::string(int)> &entered) {
-  for (int p = 0; p < places(); ++p)
+void RunWriter::entry_blocks(const std::function<std::string(model::PlaceId)> &entered) {
+  for (model::PlaceId p : places())
     if (c_.runs_entry(p) || c_.resets_timer(p)) {
       w_.line("/* {} {} */", c_.runs_entry(p) ? "entry" : "timer of", c_.place(p).name);
       w_.line("if ({}) {{", entered(p));
@@ -66,10 +66,10 @@ void RunWriter::entry_blocks(const std::function<std::string(int)> &entered) {
     }
 }
 
-void RunWriter::action_blocks(const std::string &comment, const std::function<std::string(int)> &active) {
+void RunWriter::action_blocks(const std::string &comment, const std::function<std::string(model::PlaceId)> &active) {
   if (!any_actions()) return;
   section(comment);
-  for (int p = 0; p < places(); ++p)
+  for (model::PlaceId p : places())
     if (c_.acts(p)) {
       w_.line("if ({}) {{", active(p));
       block(c_.place(p).action, {}, c_.tick_call(p));
@@ -94,13 +94,13 @@ void RunWriter::activation_hooks(const std::string &loop, const std::string &i,
 }
 
 bool RunWriter::any_exits() const {
-  for (int p = 0; p < places(); ++p)
+  for (model::PlaceId p : places())
     if (c_.runs_exit(p)) return true;
   return false;
 }
 
 bool RunWriter::any_actions() const {
-  for (int p = 0; p < places(); ++p)
+  for (model::PlaceId p : places())
     if (c_.acts(p)) return true;
   return false;
 }
@@ -109,15 +109,15 @@ namespace {
 const std::vector<model::Stmt> kNoStatements;
 }
 
-const std::vector<model::Stmt> &RunWriter::exit_of(int p) const {
+const std::vector<model::Stmt> &RunWriter::exit_of(model::PlaceId p) const {
   return has_code(c_.place(p).exit) ? *c_.place(p).exit : kNoStatements;
 }
 
-const std::vector<model::Stmt> &RunWriter::entry_of(int p) const {
+const std::vector<model::Stmt> &RunWriter::entry_of(model::PlaceId p) const {
   return has_code(c_.place(p).entry) ? *c_.place(p).entry : kNoStatements;
 }
 
-std::vector<std::string> RunWriter::entry_first(int p) const {
+std::vector<std::string> RunWriter::entry_first(model::PlaceId p) const {
   std::vector<std::string> first = c_.start_call(p);
   if (c_.resets_timer(p)) first.insert(first.begin(), fmt::format("{} = 0;", c_.timer_of(p)));
   return first;

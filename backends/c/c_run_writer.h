@@ -35,13 +35,13 @@ protected:
   void block(const std::vector<model::Stmt> &stmts, const std::vector<std::string> &first = {},
              const std::vector<std::string> &last = {});
   /// Every exit block, in declaration order, each under `if (<left(p)>) {`.
-  void exit_blocks(const std::function<std::string(int)> &left);
+  void exit_blocks(const std::function<std::string(model::PlaceId)> &left);
   /// Every entry block (or timer reset), in declaration order, each under `if (<entered(p)>) {`.
-  void entry_blocks(const std::function<std::string(int)> &entered);
+  void entry_blocks(const std::function<std::string(model::PlaceId)> &entered);
 
   /// Every action block (and instance tick), in declaration order, each under `if (<active(p)>) {`;
   /// `comment` heads the section, if any place acts.
-  void action_blocks(const std::string &comment, const std::function<std::string(int)> &active);
+  void action_blocks(const std::string &comment, const std::function<std::string(model::PlaceId)> &active);
 
   /// A section compiled only in a hooks build: `#ifdef X_HOOKS`, then `comment`; the caller
   /// writes the `#endif`.
@@ -52,16 +52,17 @@ protected:
   void activation_hooks(const std::string &loop, const std::string &i,
                         const std::function<std::string(const std::string &)> &was);
 
-  int places() const { return static_cast<int>(c_.chart.places.size()); }
+  /// The chart's places, in declaration order: `for (model::PlaceId p : places())`.
+  IdRange<model::PlaceId> places() const { return c_.chart.places.ids(); }
   /// Some place runs exit code (an exit block or stopping an instance).
   bool any_exits() const;
   /// Some place acts: runs an action block or ticks an instance.
   bool any_actions() const;
   /// A place's exit (entry) block, or an empty one: a reference, never a copy of the block.
-  const std::vector<model::Stmt> &exit_of(int p) const;
-  const std::vector<model::Stmt> &entry_of(int p) const;
+  const std::vector<model::Stmt> &exit_of(model::PlaceId p) const;
+  const std::vector<model::Stmt> &entry_of(model::PlaceId p) const;
   /// The engine's lines before a place's entry block: its timer reset, its instance started.
-  std::vector<std::string> entry_first(int p) const;
+  std::vector<std::string> entry_first(model::PlaceId p) const;
 
   CodeWriter &w_;
   const Context &c_;

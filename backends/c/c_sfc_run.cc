@@ -67,7 +67,7 @@ private:
   void count_time() {
     if (!c_.has_timers) return;
     section("/* Count the ticks of the active places that have a timer */");
-    for (int p = 0; p < static_cast<int>(c_.chart.places.size()); ++p)
+    for (model::PlaceId p : places())
       if (c_.place(p).timed)
         w_.line("if (({0} != 0u) && ({1} < UINT32_MAX)) {{ {1}++; }}", c_.av_of(p), c_.timer_of(p));
   }
@@ -83,17 +83,17 @@ private:
       const auto &t = c_.chart.transitions[i];
       w_.line("/* {}: {} */", t.name, transition_label(c_, t));
       std::string test;
-      for (int p : t.inputs) test += (test.empty() ? "(" : " && (") + c_.av_of(p) + " != 0u)";
+      for (model::PlaceId p : t.inputs) test += (test.empty() ? "(" : " && (") + c_.av_of(p) + " != 0u)";
       if (t.condition) test += (test.empty() ? "" : " && ") + conditions_.at(i);
       // Every transition's test is mapped to the chart: to its condition, or to the whole
       // transition when it has none (an unconditional join), so that a debugger's
       // `break chart.sfc:LINE` stops on it.
-      if (c_.model.sources) w_.line_from(*c_.model.sources, t.condition ? t.condition->range : t.range);
+      w_.line_from(c_.model.sources(), t.condition ? t.condition->range : t.range);
       w_.line("if ({}) {{", test.empty() ? "true" : test);
       w_.line_back();
       w_.indent();
-      for (int p : t.inputs) w_.line("{}--;", c_.av_of(p));
-      for (int p : t.outputs) w_.line("{}[{}]++;", c_.add, c_.place_const.at(static_cast<std::size_t>(p)));
+      for (model::PlaceId p : t.inputs) w_.line("{}--;", c_.av_of(p));
+      for (model::PlaceId p : t.outputs) w_.line("{}[{}]++;", c_.add, c_.place_const.at(p));
       w_.dedent();
       w_.line("}");
     }
@@ -103,9 +103,8 @@ private:
   void commit() {
     if (!produces()) return;
     section("/* Commit the activation produced in this tick */");
-    for (int p = 0; p < static_cast<int>(c_.chart.places.size()); ++p)
-      if (c_.is_output[static_cast<std::size_t>(p)])
-        w_.line("{} += {}[{}];", c_.av_of(p), c_.add, c_.place_const[static_cast<std::size_t>(p)]);
+    for (model::PlaceId p : places())
+      if (c_.is_output[p]) w_.line("{} += {}[{}];", c_.av_of(p), c_.add, c_.place_const[p]);
   }
 
   /// Step 3b: comparing the start of the tick with its end, all exits, then all entries. A place
@@ -113,13 +112,11 @@ private:
   void exits_and_entries() {
     if (!c_.needs_snapshot()) return;
     section("/* Places that lost their activation exit, then places that gained it enter */");
-    exit_blocks([this](int p) {
-      return fmt::format("({}[{}] != 0u) && ({} == 0u)", c_.before, c_.place_const[static_cast<std::size_t>(p)],
-                         c_.av_of(p));
+    exit_blocks([this](model::PlaceId p) {
+      return fmt::format("({}[{}] != 0u) && ({} == 0u)", c_.before, c_.place_const[p], c_.av_of(p));
     });
-    entry_blocks([this](int p) {
-      return fmt::format("({}[{}] == 0u) && ({} != 0u)", c_.before, c_.place_const[static_cast<std::size_t>(p)],
-                         c_.av_of(p));
+    entry_blocks([this](model::PlaceId p) {
+      return fmt::format("({}[{}] == 0u) && ({} != 0u)", c_.before, c_.place_const[p], c_.av_of(p));
     });
   }
 
@@ -133,17 +130,16 @@ private:
     const std::string &b = c_.before, &i = c_.index;
     activation_hooks(fmt::format("for (int {0} = 0; {0} < (int){1}; ++{0}) {{", i, c_.place_count), i,
                      [&](const std::string &place) { return fmt::format("{}[{}]", b, place); });
-    for (std::size_t t = 0; t < c_.chart.transitions.size(); ++t) {
+    for (model::TransitionId t : c_.chart.transitions.ids()) {
       const auto &inputs = c_.chart.transitions[t].inputs;
       std::string was, is;
-      for (int p : inputs) {
-        const std::string &k = c_.place_const[static_cast<std::size_t>(p)];
+      for (model::PlaceId p : inputs) {
+        const std::string &k = c_.place_const[p];
         was += fmt::format("{}({}[{}] != 0u)", was.empty() ? "" : " && ", b, k);
         is += fmt::format(" && ({} != 0u)", c_.av_of(p));
       }
       // Not all inputs were active, all are now.
-      if (inputs.size() == 1)
-        was = fmt::format("({}[{}] == 0u)", b, c_.place_const[static_cast<std::size_t>(inputs[0])]);
+      if (inputs.size() == 1) was = fmt::format("({}[{}] == 0u)", b, c_.place_const[inputs[0]]);
       else if (!was.empty()) was = "!(" + was + ")";
       if (!was.empty()) w_.line("if ({}{}) {{ {}({}, {}); }}", was, is, c_.enabled_fn, c_.self, c_.transition_const[t]);
     }
@@ -154,7 +150,7 @@ private:
   void actions() {
     action_blocks(c_.has_sub() ? "/* Perform place actions, each followed by one tick of the instance the place runs */"
                                : "/* Perform place actions */",
-                  [this](int p) { return fmt::format("{} != 0u", c_.av_of(p)); });
+                  [this](model::PlaceId p) { return fmt::format("{} != 0u", c_.av_of(p)); });
   }
 
   std::vector<std::string> conditions_;  ///< by transition, rendered by declarations()

@@ -16,6 +16,9 @@ namespace gfec::c_backend {
 
 namespace {
 
+using model::PlaceId;
+using model::TransitionId;
+
 /// What both scalable run functions share besides RunWriter: the transitions under the place
 /// that tries them, the cases of switches on a place.
 class ScalableRun : protected RunWriter {
@@ -23,22 +26,22 @@ public:
   ScalableRun(CodeWriter &w, const Context &c) : RunWriter(w, c), owned_(c.chart.places.size()) {
     // Each transition under its owner (the sequential layout: its one input), in declaration
     // order, so that the writers stay linear in the chart.
-    for (std::size_t t = 0; t < c.chart.transitions.size(); ++t) {
-      int owner = c.sequential() ? c.chart.transitions[t].inputs.front() : c.layout.owner.at(t);
-      owned_.at(static_cast<std::size_t>(owner)).push_back(t);
+    for (TransitionId t : c.chart.transitions.ids()) {
+      PlaceId owner = c.sequential() ? c.chart.transitions[t].inputs.front() : c.layout.owner.at(t);
+      owned_.at(owner).push_back(t);
     }
   }
 
 protected:
-  const std::vector<std::size_t> &owned(int place) const { return owned_.at(static_cast<std::size_t>(place)); }
+  const std::vector<TransitionId> &owned(PlaceId place) const { return owned_.at(place); }
 
-  const std::string &constant(int place) const { return c_.place_const.at(static_cast<std::size_t>(place)); }
+  const std::string &constant(PlaceId place) const { return c_.place_const.at(place); }
   /// A gained place's entry: the timer reset, the instance started, then the entry block.
-  void entry_case(int p) { case_block(p, entry_of(p), entry_first(p)); }
+  void entry_case(PlaceId p) { case_block(p, entry_of(p), entry_first(p)); }
 
   /// `case X_P:` with the chart's statements (and lines of engine code `first` before them and
   /// `last` after them), then `break;`.
-  void case_block(int place, const std::vector<model::Stmt> &stmts, const std::vector<std::string> &first = {},
+  void case_block(PlaceId place, const std::vector<model::Stmt> &stmts, const std::vector<std::string> &first = {},
                   const std::vector<std::string> &last = {}) {
     std::vector<std::string> text = c_statements(c_, stmts, temps_);
     case_begin(constant(place));
@@ -63,9 +66,9 @@ protected:
 
   /// The conditions of `transitions`, rendered before the code around them is written.
   /// `alone`: each is the whole test of its `if` (no input counters to test first).
-  std::vector<std::string> conditions(const std::vector<std::size_t> &transitions, bool alone = false) {
+  std::vector<std::string> conditions(const std::vector<TransitionId> &transitions, bool alone = false) {
     std::vector<std::string> text;
-    for (std::size_t i : transitions) {
+    for (TransitionId i : transitions) {
       const auto &t = c_.chart.transitions[i];
       if (!t.condition) text.emplace_back();
       else
@@ -75,8 +78,8 @@ protected:
     return text;
   }
 
-  /// The place a transition of the sequential form is tried in; -1 in the sparse form.
-  int from(const model::Transition &t) const { return c_.sequential() ? t.inputs.front() : -1; }
+  /// The place a transition of the sequential form is tried in; none in the sparse form.
+  PlaceId from(const model::Transition &t) const { return c_.sequential() ? t.inputs.front() : PlaceId(); }
 
   void switch_end() {
     w_.line("default:");
@@ -90,13 +93,13 @@ protected:
     std::string test = inputs;
     if (t.condition) test += (test.empty() ? "" : " && ") + condition;
     // Mapped to the condition, or to the whole transition when it has none (docs/c-engine.md).
-    if (c_.model.sources) w_.line_from(*c_.model.sources, t.condition ? t.condition->range : t.range);
+    w_.line_from(c_.model.sources(), t.condition ? t.condition->range : t.range);
     w_.line("if ({}) {{", test.empty() ? "true" : test);
     w_.line_back();
   }
 
 private:
-  std::vector<std::vector<std::size_t>> owned_;
+  IdMap<PlaceId, std::vector<TransitionId>> owned_;
   bool braced_ = false;  ///< the open case is a block
 };
 
@@ -129,8 +132,8 @@ private:
   /// `p` has a case, which `write(p)` writes.
   struct PlaceSwitch {
     const char *kind;
-    std::function<bool(int)> has;
-    std::function<void(int)> write;
+    std::function<bool(PlaceId)> has;
+    std::function<void(PlaceId)> write;
     /// The split update switch: its parts return whether the place's one transition fired, and
     /// the run function moves to the place the table part_next() holds for it.
     bool moves = false;
@@ -140,7 +143,7 @@ private:
   bool split() const { return c_.layout.part_places > 0; }
   const char *place_type() const { return uint_type(c_.layout.index_bits); }
   bool any(const PlaceSwitch &s) const {
-    for (int p = 0; p < places(); ++p)
+    for (PlaceId p : places())
       if (s.has(p)) return true;
     return false;
   }
@@ -148,41 +151,42 @@ private:
   // The switches, and whether the run function uses them (their parts exist only then: an unused
   // static function is a warning).
   PlaceSwitch time_switch() {
-    return {
-        "time", [this](int p) { return c_.place(p).timed; },
-        [this](int p) { w_.line("case {0}: if ({1} < UINT32_MAX) {{ {1}++; }} break;", constant(p), c_.timer_of(p)); }};
+    return {"time", [this](PlaceId p) { return c_.place(p).timed; },
+            [this](PlaceId p) {
+              w_.line("case {0}: if ({1} < UINT32_MAX) {{ {1}++; }} break;", constant(p), c_.timer_of(p));
+            }};
   }
   bool counts_time() const { return c_.has_timers; }
   /// The transitions leaving a place, in declaration order, up to the first that always fires
   /// (the ones after it are never open).
-  std::vector<std::size_t> tried(int p) const {
-    std::vector<std::size_t> t;
-    for (std::size_t i : owned(p)) {
+  std::vector<TransitionId> tried(PlaceId p) const {
+    std::vector<TransitionId> t;
+    for (TransitionId i : owned(p)) {
       t.push_back(i);
       if (!c_.chart.transitions[i].condition) break;
     }
     return t;
   }
   PlaceSwitch update_switch() {
-    return {"update", [this](int p) { return !owned(p).empty(); }, [this](int p) { update_case(p); }, split()};
+    return {"update", [this](PlaceId p) { return !owned(p).empty(); }, [this](PlaceId p) { update_case(p); }, split()};
   }
   /// Where the split form moves the place `p` to when its part says that its transition fired:
   /// the one transition it tries, if it tries one; otherwise it moves itself.
-  int single_move(int p) const {
-    std::vector<std::size_t> ts = tried(p);
-    return split() && ts.size() == 1 ? c_.chart.transitions[ts.front()].outputs.front() : -1;
+  PlaceId single_move(PlaceId p) const {
+    std::vector<TransitionId> ts = tried(p);
+    return split() && ts.size() == 1 ? c_.chart.transitions[ts.front()].outputs.front() : PlaceId();
   }
-  void update_case(int p) {
-    std::vector<std::size_t> ts = tried(p);
+  void update_case(PlaceId p) {
+    std::vector<TransitionId> ts = tried(p);
     std::vector<std::string> test = conditions(ts, true);
     case_begin(constant(p));
-    if (single_move(p) >= 0) {
+    if (single_move(p)) {
       // The part only tells whether the transition fires; the move is the run function's, from a
       // table. gcc -O2 compiles a case that only evaluates a condition into the part's result in
       // a third of the time and memory of one that moves (docs/performance.md).
       const auto &t = c_.chart.transitions[ts.front()];
       w_.line("/* {}: {} */", t.name, transition_label(c_, t));
-      if (c_.model.sources) w_.line_from(*c_.model.sources, t.condition ? t.condition->range : t.range);
+      w_.line_from(c_.model.sources(), t.condition ? t.condition->range : t.range);
       w_.line("{} = {};", c_.fire, t.condition ? test.front() : "true");
       w_.line_back();
       w_.line("break;");
@@ -195,7 +199,7 @@ private:
       if (!t.condition) {
         // Always fires (the last one tried()): no `if (true)`, whose condition would be invariant
         // (MISRA C:2012 rule 14.3); the move itself is mapped to the transition.
-        if (c_.model.sources) w_.line_from(*c_.model.sources, t.range);
+        w_.line_from(c_.model.sources(), t.range);
         w_.line("{} = {};", current(), constant(t.outputs.front()));
         w_.line_back();
         continue;
@@ -209,26 +213,26 @@ private:
     case_end();
   }
   PlaceSwitch exit_switch() {
-    return {"exit", [this](int p) { return c_.runs_exit(p); },
-            [this](int p) { case_block(p, exit_of(p), c_.stop_call(p)); }};
+    return {"exit", [this](PlaceId p) { return c_.runs_exit(p); },
+            [this](PlaceId p) { case_block(p, exit_of(p), c_.stop_call(p)); }};
   }
   PlaceSwitch entry_switch() {
-    return {"enter", [this](int p) { return c_.runs_entry(p) || c_.resets_timer(p); },
-            [this](int p) { entry_case(p); }};
+    return {"enter", [this](PlaceId p) { return c_.runs_entry(p) || c_.resets_timer(p); },
+            [this](PlaceId p) { entry_case(p); }};
   }
   PlaceSwitch hook_switch() {
-    return {"hook", [this](int p) { return !owned(p).empty(); },
-            [this](int p) {
+    return {"hook", [this](PlaceId p) { return !owned(p).empty(); },
+            [this](PlaceId p) {
               std::string calls;
-              for (std::size_t t : owned(p))
+              for (TransitionId t : owned(p))
                 calls += fmt::format(" {}({}, {});", c_.enabled_fn, c_.self, c_.transition_const[t]);
               w_.line("case {}:{} break;", constant(p), calls);
             }};
   }
   bool hooks_transitions() const { return !c_.chart.transitions.empty() && c_.hooks(); }
   PlaceSwitch action_switch() {
-    return {"act", [this](int p) { return c_.acts(p); },
-            [this](int p) { case_block(p, c_.place(p).action, {}, c_.tick_call(p)); }};
+    return {"act", [this](PlaceId p) { return c_.acts(p); },
+            [this](PlaceId p) { case_block(p, c_.place(p).action, {}, c_.tick_call(p)); }};
   }
 
   /// `switch (value) { <the cases> }`, or in the split form the call of the part holding `value`.
@@ -249,7 +253,7 @@ private:
       return;
     }
     w_.line("switch ({}) {{", value);
-    for (int p = 0; p < places(); ++p)
+    for (PlaceId p : places())
       if (s.has(p)) s.write(p);
     switch_end();
   }
@@ -283,13 +287,13 @@ private:
         w_.line("(void){}; /* not every part reads the engine */", c_.self);
         bool cases = false;
         for (std::size_t p = k * size; p < std::min((k + 1) * size, c_.chart.places.size()); ++p)
-          cases = cases || s.has(static_cast<int>(p));
+          cases = cases || s.has(PlaceId(p));
         if (!cases) {  // a switch needs two clauses (MISRA C:2012 rule 16.6): no place here has one
           w_.line("(void){}; /* no place of this part has a case */", c_.index);
         } else {
           w_.line("switch ({}) {{", c_.index);
           for (std::size_t p = k * size; p < std::min((k + 1) * size, c_.chart.places.size()); ++p)
-            if (s.has(static_cast<int>(p))) s.write(static_cast<int>(p));
+            if (s.has(PlaceId(p))) s.write(PlaceId(p));
           switch_end();
         }
         if (s.moves) w_.line("return {};", c_.fire);
@@ -305,11 +309,11 @@ private:
     w_.line("/* The place each place moves to when its update part says that its transition fired (a place");
     w_.line("   with several transitions to try moves itself, and its entry is its own) */");
     std::vector<std::string> next;
-    for (int p = 0; p < places(); ++p) {
-      const int to = single_move(p);
-      next.push_back(constant(to >= 0 ? to : p));
+    for (PlaceId p : places()) {
+      const PlaceId to = single_move(p);
+      next.push_back(constant(to ? to : p));
     }
-    table(fmt::format("static const {} {}[{}]", place_type(), c_.part_next(), places()), next);
+    table(fmt::format("static const {} {}[{}]", place_type(), c_.part_next(), c_.chart.places.size()), next);
   }
 
   /// `<declaration> = { <items> };`, the items several to a line.
@@ -488,7 +492,7 @@ private:
   void count_time() {
     if (!c_.has_timers) return;
     section("/* Count the ticks of the active places that have a timer */");
-    for (int p = 0; p < places(); ++p)
+    for (PlaceId p : places())
       if (c_.place(p).timed)
         w_.line("if (({0} != 0u) && ({1} < UINT32_MAX)) {{ {1}++; }}", c_.av_of(p), c_.timer_of(p));
   }
@@ -518,9 +522,9 @@ private:
     if (!has_transitions()) return;
     section("/* The transitions that may be open: those of the active places */");
     members_begin(active_set(), c_.field(c_.active));
-    for (int p = 0; p < places(); ++p) {
+    for (PlaceId p : places()) {
       std::string marks;
-      for (std::size_t t : owned(p))
+      for (TransitionId t : owned(p))
         marks += fmt::format(" {}({}, {});", c_.insert_fn, candidate_set(), c_.transition_const[t]);
       if (!marks.empty()) w_.line("case {}:{} break;", constant(p), marks);
     }
@@ -529,20 +533,20 @@ private:
 
   /// Step 2, one block per transition as in the readable form. A counter that falls to 0 leaves
   /// the active set at once: the place has no open transition left this tick.
-  void transition_block(std::size_t index, const std::string &condition) {
+  void transition_block(TransitionId index, const std::string &condition) {
     const auto &t = c_.chart.transitions[index];
     w_.line("/* {}: {} */", t.name, transition_label(c_, t));
     std::string inputs;
-    for (int p : t.inputs) inputs += (inputs.empty() ? "(" : " && (") + c_.av_of(p) + " != 0u)";
+    for (PlaceId p : t.inputs) inputs += (inputs.empty() ? "(" : " && (") + c_.av_of(p) + " != 0u)";
     transition_test(t, inputs, condition);
     CodeWriter::Scope scope(w_, "}");  // the block transition_test opened
     // One side effect per statement (MISRA C:2012 rule 13.3): the decrement, then its test.
-    for (int p : t.inputs) {
+    for (PlaceId p : t.inputs) {
       std::string lost = c_.watched(p) ? fmt::format(" {0}[{1}] = {2}; {1}++;", c_.lost, c_.lost_n, constant(p)) : "";
       w_.line("{}--;", c_.av_of(p));
       w_.line("if ({} == 0u) {{ {}({}, 0u, {});{} }}", c_.av_of(p), c_.erase_fn, active_set_args(), constant(p), lost);
     }
-    for (int q : t.outputs) w_.line("{0}[{1}] = {2}; {1}++;", c_.add, c_.add_n, constant(q));
+    for (PlaceId q : t.outputs) w_.line("{0}[{1}] = {2}; {1}++;", c_.add, c_.add_n, constant(q));
   }
   std::string active_set_args() const {
     return fmt::format("{}, {}, {}u", c_.field(c_.active), c_.active_levels, l().active.levels());
@@ -555,7 +559,7 @@ private:
       w_.line("   owns; owners follow the transitions' declaration order, so the transitions are tried in it.");
       w_.line("   The activation they produce waits in {}[] and cannot be consumed before the next tick */", c_.add);
       members_begin(active_set(), c_.field(c_.active));
-      for (int p = 0; p < places(); ++p) {
+      for (PlaceId p : places()) {
         if (owned(p).empty()) continue;
         std::vector<std::string> test = conditions(owned(p));
         case_begin(constant(p));
@@ -578,7 +582,7 @@ private:
     w_.line("for (; {0} != 0u; {0} &= {0} - 1u) {{", b);
     w_.indent();
     w_.line("switch (({} << 5) | {}({})) {{", w, c_.lowest_fn, b);
-    for (std::size_t t = 0; t < c_.chart.transitions.size(); ++t) {
+    for (TransitionId t : c_.chart.transitions.ids()) {
       std::vector<std::string> test = conditions({t});
       case_begin(c_.transition_const[t]);
       transition_block(t, test[0]);
@@ -622,7 +626,7 @@ private:
       w_.line("if ({}[{}[{}]] != 0u) {{ continue; }} /* lost and regained: still active */", c_.field(c_.av), c_.lost,
               i);
       w_.line("switch ({}[{}]) {{", c_.lost, i);
-      for (int p = 0; p < places(); ++p)
+      for (PlaceId p : places())
         if (c_.runs_exit(p)) case_block(p, exit_of(p), c_.stop_call(p));
       switch_end();
     }
@@ -633,7 +637,7 @@ private:
             "on */",
             j, c_.lost_n, c_.lost, c_.gained, i);
     w_.line("switch ({}[{}]) {{", c_.gained, i);
-    for (int p = 0; p < places(); ++p)
+    for (PlaceId p : places())
       if (c_.runs_entry(p) || c_.resets_timer(p)) entry_case(p);
     switch_end();
   }
@@ -648,9 +652,9 @@ private:
       return fmt::format("(({}[{} >> 5] >> ({} & 31u)) & 1u)", b, place, place);
     };
     activation_hooks(fmt::format("for ({0} = 0; {0} < (uint32_t){1}; ++{0}) {{", p, c_.place_count), p, was);
-    for (std::size_t t = 0; t < c_.chart.transitions.size(); ++t) {
+    for (TransitionId t : c_.chart.transitions.ids()) {
       std::string before, now;
-      for (int q : c_.chart.transitions[t].inputs) {
+      for (PlaceId q : c_.chart.transitions[t].inputs) {
         before += fmt::format("{}({} != 0u)", before.empty() ? "" : " && ", was("(uint32_t)" + constant(q)));
         now += fmt::format(" && ({} != 0u)", c_.av_of(q));
       }
@@ -665,7 +669,7 @@ private:
     section(c_.has_sub() ? "/* Perform place actions: the active places in declaration order, then their instances */"
                          : "/* Perform place actions: the active places in declaration order */");
     members_begin(active_set(), c_.field(c_.active));
-    for (int p = 0; p < places(); ++p)
+    for (PlaceId p : places())
       if (c_.acts(p)) case_block(p, c_.place(p).action, {}, c_.tick_call(p));
     members_end();
   }
@@ -703,8 +707,8 @@ void sparse_helpers(CodeWriter &w, const Context &c) {
   w.line("{");
   w.line("    bool watched;");
   w.line("    switch (place) {");
-  for (int p = 0; p < static_cast<int>(c.chart.places.size()); ++p)
-    if (c.watched(p)) w.line("    case {}:", c.place_const[static_cast<std::size_t>(p)]);
+  for (PlaceId p : c.chart.places.ids())
+    if (c.watched(p)) w.line("    case {}:", c.place_const[p]);
   w.line("        watched = true;");
   w.line("        break;");
   w.line("    default:");

@@ -43,7 +43,7 @@ void includes(CodeWriter &w, const Context &c) {
 void verbatims(CodeWriter &w, const Context &c) {
   for (const auto &v : c.model.verbatims) {
     w.blank();
-    emit_verbatim(w, c.model.sources, v.range, v.text, v.code_begin);
+    emit_verbatim(w, c.model.sources(), v.range, v.text, v.code_begin);
     w.line_back();
   }
 }
@@ -64,18 +64,18 @@ void init(CodeWriter &w, const Context &c) {
   w.indent();
   if (c.team()) w.line("int {};", c.index);
   if (c.fsm) {
-    for (std::size_t p = 0; p < c.chart.places.size(); ++p)
-      if (c.chart.places[p].initial) {
+    for (model::PlaceId p : c.chart.places.ids())
+      if (c.place(p).initial) {
         w.line("{} = {};", c.field(c.state), c.place_const[p]);
-        auto terminal = c.chart.places[p].terminal;
+        auto terminal = c.place(p).terminal;
         w.line("{} = {};", c.field(c.status),
                terminal == model::Terminal::Success   ? 1
                : terminal == model::Terminal::Failure ? -1
                                                       : 0);
       }
   } else if (c.sequential()) {
-    for (std::size_t p = 0; p < c.chart.places.size(); ++p)
-      if (c.chart.places[p].initial) w.line("{} = {};", c.field(c.current), c.place_const[p]);
+    for (model::PlaceId p : c.chart.places.ids())
+      if (c.place(p).initial) w.line("{} = {};", c.field(c.current), c.place_const[p]);
   } else if (c.sparse()) {
     // Loops rather than a line per place: a large chart has few initial places.
     w.line("uint32_t {};", c.index);
@@ -89,18 +89,17 @@ void init(CodeWriter &w, const Context &c) {
     };
     clear(c.active, c.layout.active.words());
     if (!c.layout.place_driven) clear(c.candidates, c.layout.candidates.words());
-    for (std::size_t p = 0; p < c.chart.places.size(); ++p)
-      if (c.chart.places[p].initial) {
-        w.line("{} = 1;", c.av_of(static_cast<int>(p)));
+    for (model::PlaceId p : c.chart.places.ids())
+      if (c.place(p).initial) {
+        w.line("{} = 1;", c.av_of(p));
         w.line("{}({}, {}, {}u, {});", c.insert_fn, c.field(c.active), c.active_levels, c.layout.active.levels(),
                c.place_const[p]);
       }
   } else {
-    for (std::size_t p = 0; p < c.chart.places.size(); ++p)
-      w.line("{} = {};", c.av_of(static_cast<int>(p)), c.chart.places[p].initial ? 1 : 0);
+    for (model::PlaceId p : c.chart.places.ids()) w.line("{} = {};", c.av_of(p), c.place(p).initial ? 1 : 0);
   }
-  for (std::size_t p = 0; p < c.chart.places.size(); ++p)
-    if (c.chart.places[p].timed) w.line("{} = 0;", c.timer_of(static_cast<int>(p)));
+  for (model::PlaceId p : c.chart.places.ids())
+    if (c.place(p).timed) w.line("{} = 0;", c.timer_of(p));
   if (c.needs_started) w.line("{} = false;", c.field(c.started));
   if (c.team()) {
     w.line("{} = 0;", c.field(c.agent));
@@ -108,17 +107,17 @@ void init(CodeWriter &w, const Context &c) {
     w.line("    {}[{}] = -1;", c.field(c.reports), c.index);
     w.line("}");
   }
-  for (std::size_t v = 0; v < c.chart.vars.size(); ++v) {
+  for (model::VarId v : c.chart.vars.ids()) {
     const auto &var = c.chart.vars[v];
     std::string value = var.init ? c_value(c, *var.init, var.type) : var.type == model::Type::Bool ? "false" : "0";
     w.line("{} = {};", c.field(c.var_field[v]), value);
   }
   // Every instance is reset, not only the initial places': none runs before its place gains
   // activation (which resets it again), and the whole state is defined from here on.
-  for (std::size_t p = 0; p < c.chart.places.size(); ++p)
+  for (model::PlaceId p : c.chart.places.ids())
     if (c.sub[p])
       w.line("{}(&{}); /* the instance of {} run by {} */", c.sub[p]->init_fn, c.field(c.sub_field[p]),
-             c.sub[p]->chart.name, c.chart.places[p].name);
+             c.sub[p]->chart.name, c.place(p).name);
   w.dedent();
   w.line("}");
 }
@@ -141,7 +140,7 @@ void stop(CodeWriter &w, const Context &c) {
   w.line("{");
   w.indent();
   Temporaries temps(c.temp_prefix);
-  for (int p = 0; p < static_cast<int>(c.chart.places.size()); ++p) {
+  for (model::PlaceId p : c.chart.places.ids()) {
     const auto &place = c.place(p);
     std::vector<std::string> first = c.stop_call(p);
     if (first.empty() && !has_code(place.exit)) continue;
@@ -315,9 +314,9 @@ void name_functions(CodeWriter &w, const Context &c) {
 }  // namespace
 
 std::string transition_label(const Context &c, const model::Transition &t) {
-  auto side = [&](const IndexList &places) {
+  auto side = [&](const model::PlaceList &places) {
     std::string s;
-    for (int p : places) s += (s.empty() ? "" : ", ") + c.place(p).name;
+    for (model::PlaceId p : places) s += (s.empty() ? "" : ", ") + c.place(p).name;
     return places.size() == 1 ? s : "(" + s + ")";
   };
   return side(t.inputs) + " -> " + side(t.outputs);

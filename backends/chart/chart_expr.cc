@@ -9,33 +9,32 @@ namespace {
 /// A duration as the language writes it: whole milliseconds as "500ms", others as "1.5ms".
 std::string duration(double ms) { return fmt::format("{}ms", ms); }
 
-std::string args_of(const model::Model &m, int chart, const CompactVector<model::Expr> &args) {
+std::string args_of(const model::Model &m, model::ChartId chart, const CompactVector<model::Expr> &args) {
   std::string out;
   for (const auto &a : args) out += (out.empty() ? "" : ", ") + expr(m, chart, a);
   return out;
 }
 
-std::string_view place_name(const model::Model &m, int chart, int place) {
-  return m.charts[static_cast<std::size_t>(chart)].places[static_cast<std::size_t>(place)].name.view();
+std::string_view place_name(const model::Model &m, model::ChartId chart, model::PlaceId place) {
+  return m.charts[chart].places[place].name.view();
 }
 
 }  // namespace
 
-std::string expr(const model::Model &m, int chart, const model::Expr &e) {
+std::string expr(const model::Model &m, model::ChartId chart, const model::Expr &e) {
   using K = model::Expr::Kind;
-  const model::Chart &c = m.charts[static_cast<std::size_t>(chart)];
+  const model::Chart &c = m.charts[chart];
   switch (e.kind) {
   case K::Bool: return e.bool_value ? "true" : "false";
   case K::Int:
   case K::Float: return e.text.str();
   case K::String: return c_string_literal(e.text.str());
   case K::Ticks: return duration(e.float_value);
-  case K::Var: return c.vars[static_cast<std::size_t>(e.index)].name;
-  case K::Const: return m.consts[static_cast<std::size_t>(e.index)].name;
+  case K::Var: return c.vars[e.var()].name;
+  case K::Const: return m.consts[e.constant()].name;
   case K::Config: return m.plans.empty() ? "?" : "?";  // plans are not converted (see chart_backend.cc)
-  case K::Call:
-    return fmt::format("{}({})", m.functions[static_cast<std::size_t>(e.index)].name, args_of(m, chart, e.args));
-  case K::Elapsed: return fmt::format("elapsed({})", place_name(m, chart, e.index));
+  case K::Call: return fmt::format("{}({})", m.functions[e.function()].name, args_of(m, chart, e.args));
+  case K::Elapsed: return fmt::format("elapsed({})", place_name(m, chart, e.place()));
   case K::Unary: {
     std::string operand = expr(m, chart, e.args[0]);
     // "- -x" must not become "--x".
@@ -47,30 +46,30 @@ std::string expr(const model::Model &m, int chart, const model::Expr &e) {
   case K::Paren: return fmt::format("({})", expr(m, chart, e.args[0]));
   case K::Active: {
     std::string path;
-    int in = chart;
-    for (int place : e.path) {
-      if (in < 0) break;
+    model::ChartId in = chart;
+    for (model::PlaceId place : e.path) {
+      if (!in) break;
       if (!path.empty()) path += '.';
       path += place_name(m, in, place);
-      in = m.charts[static_cast<std::size_t>(in)].places[static_cast<std::size_t>(place)].runs;
+      in = m.charts[in].places[place].runs;
     }
     return fmt::format("active({})", path);
   }
-  case K::Succeeded: return fmt::format("succeeded({})", place_name(m, chart, e.index));
-  case K::Failed: return fmt::format("failed({})", place_name(m, chart, e.index));
-  case K::TeamCount: return fmt::format("team({})", place_name(m, chart, e.index));
+  case K::Succeeded: return fmt::format("succeeded({})", place_name(m, chart, e.place()));
+  case K::Failed: return fmt::format("failed({})", place_name(m, chart, e.place()));
+  case K::TeamCount: return fmt::format("team({})", place_name(m, chart, e.place()));
   case K::Agent: return "agent()";
   }
   return "";
 }
 
-void statements(CodeWriter &w, const model::Model &m, int chart, const std::vector<model::Stmt> &block) {
-  const model::Chart &c = m.charts[static_cast<std::size_t>(chart)];
+void statements(CodeWriter &w, const model::Model &m, model::ChartId chart, const std::vector<model::Stmt> &block) {
+  const model::Chart &c = m.charts[chart];
   for (const auto &s : block) {
     switch (s.kind) {
     case model::Stmt::Kind::Call: w.line("{};", expr(m, chart, s.expr)); break;
     case model::Stmt::Kind::Assign:
-      w.line("{} {} {};", c.vars[static_cast<std::size_t>(s.var)].name, spelling(s.op), expr(m, chart, s.expr));
+      w.line("{} {} {};", c.vars[s.var].name, spelling(s.op), expr(m, chart, s.expr));
       break;
     case model::Stmt::Kind::Verbatim: w.line("%{{{}%}}", *s.verbatim); break;
     case model::Stmt::Kind::If: {

@@ -10,8 +10,8 @@
 namespace gfec::chart_text {
 
 /// `e`, read in chart `chart` (its places, variables and the charts its places run).
-std::string expr(const model::Model &m, int chart, const model::Expr &e);
+std::string expr(const model::Model &m, model::ChartId chart, const model::Expr &e);
 /// The statements of a block, one per line, at the writer's indentation.
-void statements(CodeWriter &w, const model::Model &m, int chart, const std::vector<model::Stmt> &block);
+void statements(CodeWriter &w, const model::Model &m, model::ChartId chart, const std::vector<model::Stmt> &block);
 
 }  // namespace gfec::chart_text

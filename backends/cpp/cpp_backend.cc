@@ -12,15 +12,14 @@ namespace {
 
 /// The plan or toolbox the pipeline chose (pipeline/compilation.h); none is a bug of the caller.
 const model::Plan &chosen_plan(const model::Model &model, const EmitOptions &options) {
-  if (options.plan < 0 || static_cast<std::size_t>(options.plan) >= model.plans.size())
-    throw std::invalid_argument("cpp back end: no plan chosen to compile");
-  return model.plans[static_cast<std::size_t>(options.plan)];
+  if (!model.plans.contains(options.plan)) throw std::invalid_argument("cpp back end: no plan chosen to compile");
+  return model.plans[options.plan];
 }
 
 const model::Toolbox &chosen_toolbox(const model::Model &model, const EmitOptions &options) {
-  if (options.toolbox < 0 || static_cast<std::size_t>(options.toolbox) >= model.toolboxes.size())
+  if (!model.toolboxes.contains(options.toolbox))
     throw std::invalid_argument("toolbox-skeleton back end: no toolbox chosen");
-  return model.toolboxes[static_cast<std::size_t>(options.toolbox)];
+  return model.toolboxes[options.toolbox];
 }
 
 class CppBackend : public Backend {

@@ -67,7 +67,7 @@ private:
     return fmt::format("c.get<{}>({})", type, c_string_literal(name_of(e)));
   }
 
-  const std::string &name_of(const Expr &e) const { return plan_.config.at(static_cast<std::size_t>(e.index)).name; }
+  const std::string &name_of(const Expr &e) const { return plan_.config.at(e.config()).name; }
 
   Rendered unary(const Expr &e) {
     Rendered operand = render(e.args.at(0));
@@ -160,8 +160,7 @@ std::string in_argument(const model::Plan &plan, const model::Expr &formula, mod
   const char *type = cpp_type(param);
   const Expr &f = unbracketed(formula);
   if (f.kind == Expr::Kind::Config)
-    return fmt::format("afp::in<{}>(afp::entry({}))", type,
-                       c_string_literal(plan.config.at(static_cast<std::size_t>(f.index)).name));
+    return fmt::format("afp::in<{}>(afp::entry({}))", type, c_string_literal(plan.config.at(f.config()).name));
   Formula lambda(plan, helpers);
   Rendered body = lambda.render(f);
   if (is_constant(f)) return fmt::format("afp::in<{}>({})", type, body.text);
@@ -171,8 +170,7 @@ std::string in_argument(const model::Plan &plan, const model::Expr &formula, mod
 
 std::string out_argument(const model::Plan &plan, const model::Expr &entry, model::Type param) {
   const Expr &e = unbracketed(entry);
-  return fmt::format("afp::out<{}>({})", cpp_type(param),
-                     c_string_literal(plan.config.at(static_cast<std::size_t>(e.index)).name));
+  return fmt::format("afp::out<{}>({})", cpp_type(param), c_string_literal(plan.config.at(e.config()).name));
 }
 
 std::string initial_value(const model::Expr &literal, model::Type type) {

@@ -15,26 +15,26 @@ namespace {
 /// The plans of the file in definition order: every sub-plan (transitively) before the plans
 /// that use it, each once, found in actor order; the plan compiled last. The validator has
 /// ruled out a plan that contains itself.
-void collect_plans(PlanContext &c, int plan, std::vector<bool> &seen) {
-  seen[static_cast<std::size_t>(plan)] = true;
-  for (const auto &a : c.model.plans.at(static_cast<std::size_t>(plan)).actors)
-    if (a.subplan >= 0 && !seen[static_cast<std::size_t>(a.subplan)]) collect_plans(c, a.subplan, seen);
+void collect_plans(PlanContext &c, model::PlanId plan, IdMap<model::PlanId, bool> &seen) {
+  seen[plan] = true;
+  for (const auto &a : c.model.plans.at(plan).actors)
+    if (a.subplan && !seen[a.subplan]) collect_plans(c, a.subplan, seen);
   PlanWiring w;
   w.plan = plan;
-  w.factory = "make_" + c.model.plans[static_cast<std::size_t>(plan)].name;
+  w.factory = "make_" + c.model.plans[plan].name;
   c.plans.push_back(std::move(w));
 }
 
 /// A factory takes the environments of its own toolboxes and of its sub-plans' (whose
 /// factories it calls); sub-plans come first, so theirs are known.
 void collect_toolboxes(PlanContext &c) {
-  std::set<int> all;
+  std::set<model::ToolboxId> all;
   for (auto &w : c.plans) {
     const model::Plan &p = c.plan_of(w);
-    std::set<int> boxes(p.toolboxes.begin(), p.toolboxes.end());
+    std::set<model::ToolboxId> boxes(p.toolboxes.begin(), p.toolboxes.end());
     for (const auto &a : p.actors)
-      if (a.subplan >= 0)
-        for (int box : c.wiring_of(a.subplan).toolboxes) boxes.insert(box);
+      if (a.subplan)
+        for (model::ToolboxId box : c.wiring_of(a.subplan).toolboxes) boxes.insert(box);
     w.toolboxes.assign(boxes.begin(), boxes.end());
     all.insert(boxes.begin(), boxes.end());
   }
@@ -42,15 +42,13 @@ void collect_toolboxes(PlanContext &c) {
   // One toolbox (the usual case, and what carbot-sim's harness declares): `ee`, as in the paper.
   c.env_param.assign(c.model.toolboxes.size(), "ee");
   if (c.toolboxes.size() > 1)
-    for (int box : c.toolboxes)
-      c.env_param[static_cast<std::size_t>(box)] =
-          "ee_" + environment_type(c.model.toolboxes[static_cast<std::size_t>(box)]);
+    for (model::ToolboxId box : c.toolboxes) c.env_param[box] = "ee_" + environment_type(c.model.toolboxes[box]);
 }
 
-std::vector<std::string> arguments(PlanContext &c, const model::Plan &p, int templ,
+std::vector<std::string> arguments(PlanContext &c, const model::Plan &p, model::TemplateId templ,
                                    const std::vector<model::Arg> &args) {
   std::vector<std::string> out;
-  if (templ < 0) return out;  // a sub-plan takes no arguments
+  if (!templ) return out;  // a sub-plan takes no arguments
   const auto &params = c.templ(templ).params;
   for (std::size_t i = 0; i < args.size() && i < params.size(); ++i) {
     const auto &param = params[i];
@@ -66,8 +64,9 @@ void convert_arguments(PlanContext &c) {
     for (const auto &g : p.globals) w.global_args.push_back(arguments(c, p, g.templ, g.args));
     for (const auto &a : p.actors) {
       w.actor_args.push_back(arguments(c, p, a.templ, a.args));
-      w.local_args.emplace_back();
-      for (const auto &s : a.supervisors) w.local_args.back().push_back(arguments(c, p, s.templ, s.args));
+      std::vector<std::vector<std::string>> local;
+      for (const auto &s : a.supervisors) local.push_back(arguments(c, p, s.templ, s.args));
+      w.local_args.push_back(std::move(local));
     }
   }
 }
@@ -80,8 +79,8 @@ std::set<std::string> file_names(const PlanContext &c) {
   for (const auto &w : c.plans) {
     names.insert(w.factory);
     const model::Plan &p = c.plan_of(w);
-    auto use = [&](int templ) {
-      if (templ >= 0) names.insert(class_name(c.templ(templ)));
+    auto use = [&](model::TemplateId templ) {
+      if (templ) names.insert(class_name(c.templ(templ)));
     };
     for (const auto &g : p.globals) use(g.templ);
     for (const auto &a : p.actors) {
@@ -89,9 +88,9 @@ std::set<std::string> file_names(const PlanContext &c) {
       for (const auto &s : a.supervisors) use(s.templ);
     }
   }
-  for (int box : c.toolboxes) {
-    names.insert(environment_type(c.model.toolboxes[static_cast<std::size_t>(box)]));
-    names.insert(c.env_param[static_cast<std::size_t>(box)]);
+  for (model::ToolboxId box : c.toolboxes) {
+    names.insert(environment_type(c.model.toolboxes[box]));
+    names.insert(c.env_param[box]);
   }
   if (c.helpers.text) names.insert(FormulaHelpers::kText);
   if (c.helpers.divide) names.insert(FormulaHelpers::kDivide);
@@ -118,15 +117,16 @@ void name_handles(PlanContext &c) {
     for (const auto &g : p.globals) w.global.push_back(handle(g.name));
     for (const auto &a : p.actors) {
       w.actor.push_back(handle(a.name));
-      w.local.emplace_back();
-      for (const auto &s : a.supervisors) w.local.back().push_back(handle(s.name));
+      std::vector<std::string> local;
+      for (const auto &s : a.supervisors) local.push_back(handle(s.name));
+      w.local.push_back(std::move(local));
     }
   }
 }
 
 }  // namespace
 
-const PlanWiring &PlanContext::wiring_of(int plan) const {
+const PlanWiring &PlanContext::wiring_of(model::PlanId plan) const {
   for (const auto &w : plans)
     if (w.plan == plan) return w;
   throw std::logic_error("cpp back end: a sub-plan was not collected");
@@ -134,16 +134,15 @@ const PlanWiring &PlanContext::wiring_of(int plan) const {
 
 std::string PlanContext::factory_params(const PlanWiring &w) const {
   std::string params;
-  for (int box : w.toolboxes)
-    params += fmt::format("{}{}& {}", params.empty() ? "" : ", ",
-                          environment_type(model.toolboxes[static_cast<std::size_t>(box)]),
-                          env_param[static_cast<std::size_t>(box)]);
+  for (model::ToolboxId box : w.toolboxes)
+    params +=
+        fmt::format("{}{}& {}", params.empty() ? "" : ", ", environment_type(model.toolboxes[box]), env_param[box]);
   return params;
 }
 
 std::string PlanContext::factory_args(const PlanWiring &w) const {
   std::string args;
-  for (int box : w.toolboxes) args += (args.empty() ? "" : ", ") + env_param[static_cast<std::size_t>(box)];
+  for (model::ToolboxId box : w.toolboxes) args += (args.empty() ? "" : ", ") + env_param[box];
   return args;
 }
 
@@ -152,8 +151,8 @@ PlanContext make_plan_context(const model::Model &model, const model::Plan &plan
   c.source_file = options.output_path;
   c.header_file = base_name(replace_extension(options.output_path, ".hpp"));
   c.guard = include_guard(c.header_file);
-  std::vector<bool> seen(model.plans.size());
-  collect_plans(c, static_cast<int>(&plan - model.plans.data()), seen);
+  IdMap<model::PlanId, bool> seen(model.plans.size());
+  collect_plans(c, model.plans.id_of(plan), seen);
   for (std::size_t i = 0; i + 1 < c.plans.size(); ++i) c.plans[i].internal = true;
   collect_toolboxes(c);
   convert_arguments(c);

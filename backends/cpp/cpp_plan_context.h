@@ -15,15 +15,15 @@ namespace gfec::cpp_backend {
 
 /// One plan's factory and its instances, as the wiring names them.
 struct PlanWiring {
-  int plan = -1;                                     ///< index into Model::plans
-  std::string factory;                               ///< make_<Plan>
-  bool internal = false;                             ///< a sub-plan: defined in an anonymous namespace of this file
-  std::vector<int> toolboxes;                        ///< environments it takes: its own toolboxes and its sub-plans'
-  std::vector<std::string> actor;                    ///< handle of each actor
-  std::vector<std::vector<std::string>> local;       ///< handle of each actor's supervisors
-  std::vector<std::string> global;                   ///< handle of each global supervisor
-  std::vector<std::vector<std::string>> actor_args;  ///< each actor's arguments as C++
-  std::vector<std::vector<std::vector<std::string>>> local_args;
+  model::PlanId plan;
+  std::string factory;                       ///< make_<Plan>
+  bool internal = false;                     ///< a sub-plan: defined in an anonymous namespace of this file
+  std::vector<model::ToolboxId> toolboxes;   ///< environments it takes: its own toolboxes and its sub-plans'
+  IdMap<model::ActorId, std::string> actor;  ///< handle of each actor
+  IdMap<model::ActorId, std::vector<std::string>> local;       ///< handle of each actor's supervisors
+  std::vector<std::string> global;                             ///< handle of each global supervisor
+  IdMap<model::ActorId, std::vector<std::string>> actor_args;  ///< each actor's arguments as C++
+  IdMap<model::ActorId, std::vector<std::vector<std::string>>> local_args;
   std::vector<std::vector<std::string>> global_args;
 };
 
@@ -38,14 +38,14 @@ struct PlanContext {
   std::string header_file;  ///< plan.hpp beside it (base name, as plan.cpp includes it)
   std::string guard;        ///< the header's include guard
 
-  std::vector<PlanWiring> plans;       ///< sub-plans first, each before the plans that use it; the plan compiled last
-  std::vector<int> toolboxes;          ///< every toolbox the file's plans use, by index
-  std::vector<std::string> env_param;  ///< by toolbox index: the factories' parameter for its environment
-  FormulaHelpers helpers;              ///< what the formulas of the file need
+  std::vector<PlanWiring> plans;  ///< sub-plans first, each before the plans that use it; the plan compiled last
+  std::vector<model::ToolboxId> toolboxes;         ///< every toolbox the file's plans use, in model order
+  IdMap<model::ToolboxId, std::string> env_param;  ///< the factories' parameter for each toolbox's environment
+  FormulaHelpers helpers;                          ///< what the formulas of the file need
 
-  const model::Plan &plan_of(const PlanWiring &w) const { return model.plans.at(static_cast<std::size_t>(w.plan)); }
-  const PlanWiring &wiring_of(int plan) const;
-  const model::Template &templ(int index) const { return model.templates.at(static_cast<std::size_t>(index)); }
+  const model::Plan &plan_of(const PlanWiring &w) const { return model.plans.at(w.plan); }
+  const PlanWiring &wiring_of(model::PlanId plan) const;
+  const model::Template &templ(model::TemplateId id) const { return model.templates.at(id); }
   /// `Carbot& ee`, `Carbot& ee_Carbot, Vision& ee_Vision`: a factory's parameters.
   std::string factory_params(const PlanWiring &w) const;
   /// `ee`: the arguments that pass a factory's environments on.

@@ -38,8 +38,8 @@ std::string emit_plan_header(const PlanContext &c) {
   w.blank();
   directive(w, "#include <memory>");
   w.blank();
-  for (int box : c.toolboxes)
-    directive(w, "#include " + c_string_literal(toolbox_header(c.model.toolboxes[static_cast<std::size_t>(box)])));
+  for (model::ToolboxId box : c.toolboxes)
+    directive(w, "#include " + c_string_literal(toolbox_header(c.model.toolboxes[box])));
   if (!c.toolboxes.empty()) w.blank();
   const PlanWiring &top = c.plans.back();
   w.line("/// A new instance of plan {}, for one run by an afp::SteppedExecutor or afp::ThreadedExecutor,",

@@ -21,14 +21,14 @@ constexpr std::size_t kWidth = 120;
 /// is written only where a statement does not already fall on its own line.
 class Writer {
 public:
-  explicit Writer(const PlanContext &c) : w_(c.source_file, c.options.line_directives), sources_(c.model.sources) {}
+  explicit Writer(const PlanContext &c) : w_(c.source_file, c.options.line_directives), sources_(c.model.sources()) {}
 
   /// A statement that stems from `range` in the plan (several lines when it wraps).
   void from(const SourceRange &range, const std::string &text) {
-    if (sources_ && w_.line_directives()) {
-      std::uint32_t line = sources_->begin_of(range).line;
+    if (sources_.knows(range.file) && w_.line_directives()) {
+      std::uint32_t line = sources_.begin_of(range).line;
       if (!pointing_ || file_ != range.file || next_ != line) {
-        w_.line_from(*sources_, range);
+        w_.line_from(sources_, range);
         pointing_ = true;
         file_ = range.file;
         next_ = line;
@@ -60,7 +60,7 @@ public:
 
 private:
   CodeWriter w_;
-  const SourceManager *sources_;
+  const SourceManager &sources_;
   bool pointing_ = false;
   FileId file_ = 0;
   std::uint32_t next_ = 0;
@@ -88,7 +88,7 @@ public:
     for (const auto &a : p_.actors)
       for (const auto &s : a.supervisors)
         for (const auto &r : s.rules) mark(r.target);
-    if (p_.start >= 0) used_[static_cast<std::size_t>(p_.start)] = true;
+    if (p_.start) used_[p_.start] = true;
   }
 
   void factory() {
@@ -101,7 +101,7 @@ public:
     create_actors();
     create_supervisors();
     start_and_globals();
-    for (std::size_t a = 0; a < p_.actors.size(); ++a) actor_rules(a);
+    for (model::ActorId a : p_.actors.ids()) actor_rules(a);
     out_.back();
     out_.put("return plan;");
     out_.dedent();
@@ -110,7 +110,7 @@ public:
 
 private:
   void mark(const model::Target &t) {
-    if (t.kind == model::Target::Kind::Actor) used_.at(static_cast<std::size_t>(t.actor)) = true;
+    if (t.kind == model::Target::Kind::Actor) used_.at(t.actor) = true;
   }
 
   void create_plan() {
@@ -124,12 +124,12 @@ private:
   void create_actors() {
     out_.blank();
     out_.put("// **** Create Actor instances ****");
-    for (std::size_t i = 0; i < p_.actors.size(); ++i) {
+    for (model::ActorId i : p_.actors.ids()) {
       const model::ActorUse &a = p_.actors[i];
       // An actor nothing refers to (possible only in a hand-made model) needs no handle.
       std::string lhs = used_[i] || !a.rules.empty() || !a.supervisors.empty() ? "auto* " + w_.actor[i] + " = " : "";
       std::string head = fmt::format("{}plan->add_actor({}, ", lhs, c_string_literal(a.name));
-      if (a.subplan >= 0) {
+      if (a.subplan) {
         const PlanWiring &sub = c_.wiring_of(a.subplan);
         out_.from(a.range,
                   fmt::format("{}std::make_unique<afp::SubPlan>({}({})));", head, sub.factory, c_.factory_args(sub)));
@@ -146,7 +146,7 @@ private:
     out_.blank();
     out_.put("// **** Create Supervisor instances ****");
     for (std::size_t g = 0; g < p_.globals.size(); ++g) supervisor(p_.globals[g], w_.global[g], w_.global_args[g]);
-    for (std::size_t a = 0; a < p_.actors.size(); ++a)
+    for (model::ActorId a : p_.actors.ids())
       for (std::size_t s = 0; s < p_.actors[a].supervisors.size(); ++s)
         supervisor(p_.actors[a].supervisors[s], w_.local[a][s], w_.local_args[a][s]);
   }
@@ -158,9 +158,9 @@ private:
   }
 
   /// `head std::make_unique<Class>(ee, args...));`
-  std::string instance(const std::string &head, int templ, std::vector<std::string> args) {
+  std::string instance(const std::string &head, model::TemplateId templ, std::vector<std::string> args) {
     const model::Template &t = c_.templ(templ);
-    args.insert(args.begin(), c_.env_param.at(static_cast<std::size_t>(t.toolbox)));
+    args.insert(args.begin(), c_.env_param.at(t.toolbox));
     return call(fmt::format("{}std::make_unique<{}>(", head, class_name(t)), args, "));");
   }
 
@@ -169,17 +169,16 @@ private:
     out_.put(p_.globals.empty() ? "// **** Define the first actor ****"
                                 : "// **** Define the first actor and the global supervision ****");
     // The model keeps no range for `start NAME;`: the plan's own line stands for it.
-    if (p_.start >= 0)
-      out_.from(p_.range, fmt::format("plan->define_first_actor({});", w_.actor[static_cast<std::size_t>(p_.start)]));
+    if (p_.start) out_.from(p_.range, fmt::format("plan->define_first_actor({});", w_.actor[p_.start]));
     for (std::size_t g = 0; g < p_.globals.size(); ++g) {
       const model::SupervisorUse &s = p_.globals[g];
       for (const auto &r : s.rules)
         out_.from(r.range, fmt::format("plan->define_global_supervision({}, {}, {});", w_.global[g],
-                                       outcome(s.templ, -1, r.outcome), target(r.target)));
+                                       outcome(s.templ, {}, r.outcome), target(r.target)));
     }
   }
 
-  void actor_rules(std::size_t i) {
+  void actor_rules(model::ActorId i) {
     const model::ActorUse &a = p_.actors[i];
     out_.blank();
     out_.put(fmt::format("// **** Define rules for Actor {} ****", a.name));
@@ -191,13 +190,13 @@ private:
       const model::SupervisorUse &sup = a.supervisors[s];
       for (const auto &r : sup.rules)
         out_.from(r.range, fmt::format("plan->define_supervision({}, {}, {}, {});", w_.actor[i], w_.local[i][s],
-                                       outcome(sup.templ, -1, r.outcome), target(r.target)));
+                                       outcome(sup.templ, {}, r.outcome), target(r.target)));
     }
   }
 
   /// `Forward::FORWARD_OK`, `afp::SubPlan::OK`.
-  std::string outcome(int templ, int subplan, int index) const {
-    if (subplan >= 0 || templ < 0) return fmt::format("afp::SubPlan::{}", model::kSubPlanStates[index]);
+  std::string outcome(model::TemplateId templ, model::PlanId subplan, int index) const {
+    if (subplan || !templ) return fmt::format("afp::SubPlan::{}", model::kSubPlanStates[index]);
     const model::Template &t = c_.templ(templ);
     return class_name(t) + "::" + outcome_name(t, index);
   }
@@ -208,14 +207,14 @@ private:
     case model::Target::Kind::Ignore: return "afp::ignore";
     case model::Target::Kind::Actor: break;
     }
-    return w_.actor.at(static_cast<std::size_t>(t.actor));
+    return w_.actor.at(t.actor);
   }
 
   const PlanContext &c_;
   const PlanWiring &w_;
   const model::Plan &p_;
   Writer &out_;
-  std::vector<bool> used_;  ///< by actor: the first actor or the target of some rule
+  IdMap<model::ActorId, bool> used_;  ///< the first actor or the target of some rule
 };
 
 void helpers(Writer &out, const FormulaHelpers &h) {
@@ -246,8 +245,8 @@ std::string emit_plan_source(const PlanContext &c) {
   out.raw("#include <memory>");
   out.raw("#include <string>");
   out.blank();
-  for (int box : c.toolboxes)
-    out.raw("#include " + c_string_literal(toolbox_header(c.model.toolboxes[static_cast<std::size_t>(box)])));
+  for (model::ToolboxId box : c.toolboxes)
+    out.raw("#include " + c_string_literal(toolbox_header(c.model.toolboxes[box])));
   const bool internal = c.helpers.text || c.helpers.divide || c.plans.size() > 1;
   if (internal) {
     out.blank();

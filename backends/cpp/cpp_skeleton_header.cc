@@ -110,9 +110,9 @@ std::string emit_skeleton_header(const model::Model &model, const model::Toolbox
   directive(w, "#include <afp/afp.h>");
   w.blank();
   bool period = false, params = false;
-  for (int i : box.templates) {
-    period = period || model.templates.at(static_cast<std::size_t>(i)).period_ms > 0;
-    params = params || !model.templates.at(static_cast<std::size_t>(i)).params.empty();
+  for (model::TemplateId i : box.templates) {
+    period = period || model.templates.at(i).period_ms > 0;
+    params = params || !model.templates.at(i).params.empty();
   }
   if (period) directive(w, "#include <chrono>");
   if (params) directive(w, "#include <utility>");
@@ -123,9 +123,9 @@ std::string emit_skeleton_header(const model::Model &model, const model::Toolbox
   w.line("public:");
   w.line("    // TODO: what the templates need of the robot.");
   w.line("};");
-  for (int i : box.templates) {
+  for (model::TemplateId i : box.templates) {
     w.blank();
-    template_class(w, model.templates.at(static_cast<std::size_t>(i)), env);
+    template_class(w, model.templates.at(i), env);
   }
   w.blank();
   directive(w, "#endif  // " + guard);

@@ -111,9 +111,9 @@ std::string emit_skeleton_source(const model::Model &model, const model::Toolbox
   w.line("// A starting point: write the bodies and keep this file (regenerating overwrites it). Until");
   w.line("// a body is written, the component fails with \"not implemented\" and the plan ends in error.");
   directive(w, "#include " + c_string_literal(base_name(options.output_path)));
-  for (int i : box.templates) {
+  for (model::TemplateId i : box.templates) {
     w.blank();
-    template_bodies(w, model.templates.at(static_cast<std::size_t>(i)));
+    template_bodies(w, model.templates.at(i));
   }
   return w.take();
 }

@@ -20,8 +20,8 @@ public:
 }  // namespace
 
 std::string dot_picture(const model::Model &m, const EmitOptions &o) {
-  if (o.chart >= 0) return dot::chart_picture(m, m.charts.at(static_cast<std::size_t>(o.chart)));
-  if (o.plan >= 0) return dot::plan_picture(m, m.plans.at(static_cast<std::size_t>(o.plan)));
+  if (o.chart) return dot::chart_picture(m, m.charts.at(o.chart));
+  if (o.plan) return dot::plan_picture(m, m.plans.at(o.plan));
   throw std::invalid_argument("dot back end: no chart or plan chosen");
 }
 

@@ -16,7 +16,7 @@ std::string place_node(const model::Model &m, const model::Chart &c, std::size_t
   const model::Place &p = c.places[i];
   std::string label = p.name.str();
   // Grafcet's enclosing step: the chart it runs is drawn beside it, in a frame (below).
-  if (p.runs >= 0) label += "\nruns " + m.charts.at(static_cast<std::size_t>(p.runs)).name;
+  if (p.runs) label += "\nruns " + m.charts.at(p.runs).name;
   std::string attrs = "shape=box";
   if (p.initial) attrs += ", peripheries=2";
   if (p.terminal != model::Terminal::None) {
@@ -85,13 +85,13 @@ std::string chart_body(const model::Model &m, const model::Chart &c, const std::
       out += sync_bar(from, t.outputs.size());
       out += fmt::format("  {}:bar -> {} [arrowhead=none];\n", bar, from);
     }
-    for (int p : t.inputs) out += fmt::format("  {}p{} -> {} [arrowhead=none];\n", id, p, into);
-    for (int p : t.outputs) out += fmt::format("  {} -> {}p{};\n", from, id, p);
+    for (model::PlaceId p : t.inputs) out += fmt::format("  {}p{} -> {} [arrowhead=none];\n", id, p.index(), into);
+    for (model::PlaceId p : t.outputs) out += fmt::format("  {} -> {}p{};\n", from, id, p.index());
   }
   for (std::size_t i = 0; i < c.places.size(); ++i) {
     const model::Place &p = c.places[i];
-    if (p.runs < 0) continue;
-    const model::Chart &sub = m.charts.at(static_cast<std::size_t>(p.runs));
+    if (!p.runs) continue;
+    const model::Chart &sub = m.charts.at(p.runs);
     std::string inner = fmt::format("{}s{}_", id, i);
     out += fmt::format("  subgraph cluster_{}s{} {{\n", id, i);
     out += fmt::format(
@@ -118,7 +118,7 @@ std::string chart_picture(const model::Model &m, const model::Chart &c) {
   std::string out = fmt::format("digraph {} {{\n", quote(c.name));
   out += preamble(title);
   bool nested = false;
-  for (const auto &p : c.places) nested = nested || p.runs >= 0;
+  for (const auto &p : c.places) nested = nested || p.runs;
   if (nested) out += "  compound=true;\n";  // edges may end at a sub-chart's frame
   out += chart_body(m, c, "");
   out += "}\n";

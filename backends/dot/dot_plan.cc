@@ -23,7 +23,7 @@ public:
     // The word inside the circle: an xlabel would be placed after the layout, over the edges.
     out_ += "  terminate [shape=doublecircle, label=\"terminate\", fontsize=9, margin=0];\n";
     out_ += "  // actors: the start actor double-bordered; result states lead to the next actor\n";
-    for (std::size_t i = 0; i < plan_.actors.size(); ++i) actor(i);
+    for (model::ActorId i : plan_.actors.ids()) actor(i);
     out_ += "  // global supervisors: may interrupt any actor\n";
     for (std::size_t i = 0; i < plan_.globals.size(); ++i) supervisor(plan_.globals[i], fmt::format("g{}", i), "");
     out_ += "}\n";
@@ -51,56 +51,57 @@ private:
   }
 
   std::string target(const model::Target &t) const {
-    return t.kind == model::Target::Kind::Actor ? fmt::format("a{}", t.actor) : "terminate";
+    return t.kind == model::Target::Kind::Actor ? fmt::format("a{}", t.actor.index()) : "terminate";
   }
 
   /// Thin gray edges: config -> node for what an `in` argument reads, node -> config for an
   /// `out` argument. constraint=false keeps the control flow in charge of the layout.
   void data_flow(const std::string &node, const std::vector<model::Arg> &args) {
-    std::set<std::pair<int, bool>> drawn;
+    std::set<std::pair<model::ConfigId, bool>> drawn;
     for (const auto &a : args) {
-      std::vector<int> entries;
+      std::vector<model::ConfigId> entries;
       collect(a.formula, entries);
       bool out = a.dir == model::ParamDir::Out;
-      for (int c : entries) {
+      for (model::ConfigId c : entries) {
         if (!drawn.insert({c, out}).second) continue;
-        out_ += out ? fmt::format("  {} -> c{}", node, c) : fmt::format("  c{} -> {}", c, node);
+        out_ += out ? fmt::format("  {} -> c{}", node, c.index()) : fmt::format("  c{} -> {}", c.index(), node);
         out_ += " [penwidth=0.5, color=gray45, arrowsize=0.4, constraint=false];\n";
       }
     }
   }
 
-  static void collect(const model::Expr &e, std::vector<int> &entries) {
-    if (e.kind == model::Expr::Kind::Config) entries.push_back(e.index);
+  static void collect(const model::Expr &e, std::vector<model::ConfigId> &entries) {
+    if (e.kind == model::Expr::Kind::Config) entries.push_back(e.config());
     for (const auto &a : e.args) collect(a, entries);
   }
 
-  void actor(std::size_t i) {
+  void actor(model::ActorId i) {
     const model::ActorUse &a = plan_.actors[i];
-    bool sub = a.subplan >= 0;
-    std::string templ = sub ? m_.plans.at(at(a.subplan)).name : m_.templates.at(at(a.templ)).name;
-    std::string kind = sub                                                                       ? "plan"
-                       : m_.templates.at(at(a.templ)).kind == model::Template::Kind::Computation ? "computation"
-                                                                                                 : "";
+    const std::string node = fmt::format("a{}", i.index());
+    bool sub = a.subplan.valid();
+    std::string templ = sub ? m_.plans.at(a.subplan).name : m_.templates.at(a.templ).name;
+    std::string kind = sub                                                                   ? "plan"
+                       : m_.templates.at(a.templ).kind == model::Template::Kind::Computation ? "computation"
+                                                                                             : "";
     std::string label = a.name + "\n" + call_text(templ, a.args) + (kind.empty() ? "" : "\n<<" + kind + ">>");
     std::string attrs = sub ? "shape=box, style=\"rounded,bold\"" : "shape=box, style=rounded";
-    if (plan_.start == static_cast<int>(i)) attrs += ", peripheries=2";
-    out_ += fmt::format("  a{} [{}, label={}];\n", i, attrs, quote(label));
+    if (plan_.start == i) attrs += ", peripheries=2";
+    out_ += fmt::format("  {} [{}, label={}];\n", node, attrs, quote(label));
     for (const auto &r : a.rules) {
-      std::string state = !sub                              ? m_.templates.at(at(a.templ)).outcomes.at(at(r.outcome))
+      std::string state = !sub                              ? m_.templates.at(a.templ).outcomes.at(at(r.outcome))
                           : r.outcome >= 0 && r.outcome < 3 ? model::kSubPlanStates[r.outcome]
                                                             : "?";
-      out_ += fmt::format("  a{} -> {} [label={}];\n", i, target(r.target), quote(state));
+      out_ += fmt::format("  {} -> {} [label={}];\n", node, target(r.target), quote(state));
     }
-    data_flow(fmt::format("a{}", i), a.args);
+    data_flow(node, a.args);
     for (std::size_t s = 0; s < a.supervisors.size(); ++s)
-      supervisor(a.supervisors[s], fmt::format("s{}_{}", i, s), fmt::format("a{}", i));
+      supervisor(a.supervisors[s], fmt::format("s{}_{}", i.index(), s), node);
   }
 
   /// A supervisor: a hexagon watching its actor (dotted, no arrow), its events as dashed red
   /// edges to where they lead. Ignored events are listed in the node.
   void supervisor(const model::SupervisorUse &s, const std::string &id, const std::string &watched) {
-    const model::Template &t = m_.templates.at(at(s.templ));
+    const model::Template &t = m_.templates.at(s.templ);
     std::string label = s.name + "\n" + call_text(t.name, s.args);
     if (watched.empty()) label += "\n(global)";
     if (t.period_ms > 0) label += "\nevery " + duration(t.period_ms);

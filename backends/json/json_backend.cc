@@ -26,8 +26,7 @@ std::size_t at(int index) { return static_cast<std::size_t>(index); }
 Json header(const model::Model &m, const EmitOptions &o, const char *kind, const std::string &name,
             const SourceRange &range) {
   Json files = Json::array();
-  if (m.sources)
-    for (FileId i = 0; i < m.sources->size(); ++i) files.push_back(m.sources->file(i).path());
+  for (FileId i = 0; i < m.sources().size(); ++i) files.push_back(m.sources().file(i).path());
   return {{"format", "gfec-model"},
           {"version", kFormatVersion},
           {"kind", kind},
@@ -78,7 +77,7 @@ void chart_fields(const model::Model &m, const model::Chart &c, Json &doc) {
                       {"exit", block(p.exit)},
                       {"post", p.post ? expression(m, scope, *p.post) : Json(nullptr)},
                       {"timed", p.timed},
-                      {"runs", p.runs >= 0 ? Json(m.charts.at(at(p.runs)).name) : Json(nullptr)},
+                      {"runs", p.runs ? Json(m.charts.at(p.runs).name) : Json(nullptr)},
                       {"location", location(m, p.range)}});
   }
   doc[fsm ? "states" : "places"] = std::move(places);
@@ -86,16 +85,16 @@ void chart_fields(const model::Model &m, const model::Chart &c, Json &doc) {
   Json transitions = Json::array();
   for (std::size_t i = 0; i < c.transitions.size(); ++i) {
     const model::Transition &t = c.transitions[i];
-    auto names = [&](const IndexList &list) {
+    auto names = [&](const model::PlaceList &list) {
       Json a = Json::array();
-      for (int p : list) a.push_back(c.places.at(at(p)).name);
+      for (model::PlaceId p : list) a.push_back(c.places.at(p).name);
       return a;
     };
     Json j = {
         {"index", i}, {"name", t.name}, {"named", t.named}, {"inputs", names(t.inputs)}, {"outputs", names(t.outputs)}};
     if (fsm && t.inputs.size() == 1 && t.outputs.size() == 1) {
-      j["from"] = c.places.at(at(t.inputs[0])).name;
-      j["to"] = c.places.at(at(t.outputs[0])).name;
+      j["from"] = c.places.at(t.inputs[0]).name;
+      j["to"] = c.places.at(t.outputs[0]).name;
     }
     j["when"] = t.condition ? json_backend::source_text(m, t.condition->range) : "true";
     j["condition"] = t.condition ? expression(m, scope, *t.condition) : Json(nullptr);
@@ -113,8 +112,8 @@ void chart_fields(const model::Model &m, const model::Chart &c, Json &doc) {
   doc["vars"] = std::move(vars);
 
   Json consts = Json::array();
-  for (int k : c.consts) {
-    const model::Const &cst = m.consts.at(at(k));
+  for (model::ConstId k : c.consts) {
+    const model::Const &cst = m.consts.at(k);
     consts.push_back({{"name", cst.name},
                       {"type", model::type_name(cst.type)},
                       {"value", json_backend::expression_tree(m, scope, cst.value).value("value", Json(nullptr))},
@@ -123,7 +122,7 @@ void chart_fields(const model::Model &m, const model::Chart &c, Json &doc) {
   doc["consts"] = std::move(consts);
 
   Json functions = Json::array();
-  for (int f : c.functions) functions.push_back(function(m.functions.at(at(f))));
+  for (model::FunctionId f : c.functions) functions.push_back(function(m.functions.at(f)));
   doc["functions"] = std::move(functions);
 }
 
@@ -133,8 +132,8 @@ Json chart_document(const model::Model &m, const EmitOptions &o, const model::Ch
   // Every chart the compiled one runs, directly or through others, once, in declaration order
   // (docs/language.md "Sub-charts"); places name them in `runs`.
   Json subcharts = Json::array();
-  std::vector<bool> in = charts_in_tree(m, static_cast<int>(&c - m.charts.data()));
-  for (std::size_t i = 0; i < m.charts.size(); ++i) {
+  const auto in = charts_in_tree(m, m.charts.id_of(c));
+  for (model::ChartId i : m.charts.ids()) {
     const model::Chart &sub = m.charts[i];
     if (!in[i] || &sub == &c) continue;
     Json j = {{"kind", sub.kind == model::Chart::Kind::Fsm ? "fsm" : "sfc"}, {"name", sub.name}};
@@ -166,21 +165,21 @@ struct PlanWriter {
   /// Config entries an argument reads (in) or writes (out), in the order they appear.
   void config_names(const model::Expr &e, Json &out) const {
     if (e.kind == model::Expr::Kind::Config) {
-      const std::string &name = plan.config.at(at(e.index)).name;
+      const std::string &name = plan.config.at(e.config()).name;
       if (std::find(out.begin(), out.end(), name) == out.end()) out.push_back(name);
     }
     for (const auto &a : e.args) config_names(a, out);
   }
 
-  Json args(const std::vector<model::Arg> &list, int templ) const {
+  Json args(const std::vector<model::Arg> &list, model::TemplateId templ) const {
     Json out = Json::array();
     for (std::size_t i = 0; i < list.size(); ++i) {
       const model::Arg &a = list[i];
       Json config = Json::array();
       config_names(a.formula, config);
       Json j = {{"param", nullptr}, {"dir", a.dir == model::ParamDir::Out ? "out" : "in"}};
-      if (templ >= 0 && i < m.templates.at(at(templ)).params.size()) {
-        const model::TemplateParam &p = m.templates.at(at(templ)).params[i];
+      if (templ && i < m.templates.at(templ).params.size()) {
+        const model::TemplateParam &p = m.templates.at(templ).params[i];
         j["param"] = p.name;
         j["type"] = model::type_name(p.type);
       }
@@ -191,18 +190,18 @@ struct PlanWriter {
     return out;
   }
 
-  std::string outcome(int templ, int subplan, int index) const {
-    if (subplan >= 0) return index >= 0 && index < 3 ? model::kSubPlanStates[index] : "?";
-    const auto &outcomes = m.templates.at(at(templ)).outcomes;
+  std::string outcome(model::TemplateId templ, model::PlanId subplan, int index) const {
+    if (subplan) return index >= 0 && index < 3 ? model::kSubPlanStates[index] : "?";
+    const auto &outcomes = m.templates.at(templ).outcomes;
     return index >= 0 && at(index) < outcomes.size() ? outcomes[at(index)] : "?";
   }
 
   /// The rules of one actor or supervisor; each also goes to the plan's flat "rules" list.
-  Json rules(const std::vector<model::Rule> &list, int templ, int subplan, const std::string &actor,
-             const std::string &supervisor) {
+  Json rules(const std::vector<model::Rule> &list, model::TemplateId templ, model::PlanId subplan,
+             const std::string &actor, const std::string &supervisor) {
     Json out = Json::array();
     for (const auto &r : list) {
-      Json target = r.target.kind == model::Target::Kind::Actor       ? Json(plan.actors.at(at(r.target.actor)).name)
+      Json target = r.target.kind == model::Target::Kind::Actor       ? Json(plan.actors.at(r.target.actor).name)
                     : r.target.kind == model::Target::Kind::Terminate ? Json("terminate")
                                                                       : Json("ignore");
       const char *kind = r.target.kind == model::Target::Kind::Actor       ? "actor"
@@ -226,12 +225,12 @@ struct PlanWriter {
   Json supervisors(const std::vector<model::SupervisorUse> &list, const std::string &actor) {
     Json out = Json::array();
     for (const auto &s : list) {
-      const model::Template &t = m.templates.at(at(s.templ));
+      const model::Template &t = m.templates.at(s.templ);
       out.push_back({{"name", s.name},
                      {"template", t.name},
                      {"period_ms", t.period_ms > 0 ? Json(t.period_ms) : Json(nullptr)},
                      {"args", args(s.args, s.templ)},
-                     {"rules", rules(s.rules, s.templ, -1, actor, s.name)},
+                     {"rules", rules(s.rules, s.templ, {}, actor, s.name)},
                      {"location", location(m, s.range)}});
     }
     return out;
@@ -247,15 +246,15 @@ struct PlanWriter {
           {{"name", c.name}, {"type", model::type_name(c.type)}, {"init", init}, {"location", location(m, c.range)}});
     }
     doc["config"] = std::move(config);
-    doc["start"] = plan.start >= 0 ? Json(plan.actors.at(at(plan.start)).name) : Json(nullptr);
+    doc["start"] = plan.start ? Json(plan.actors.at(plan.start).name) : Json(nullptr);
     doc["supervisors"] = supervisors(plan.globals, "");
     Json actors = Json::array();
     for (const auto &a : plan.actors) {
-      bool sub = a.subplan >= 0;
-      const char *kind = sub ? "plan" : template_kind(m.templates.at(at(a.templ)).kind);
+      bool sub = a.subplan.valid();
+      const char *kind = sub ? "plan" : template_kind(m.templates.at(a.templ).kind);
       actors.push_back({{"name", a.name},
                         {"kind", kind},
-                        {"template", sub ? m.plans.at(at(a.subplan)).name : m.templates.at(at(a.templ)).name},
+                        {"template", sub ? m.plans.at(a.subplan).name : m.templates.at(a.templ).name},
                         {"args", args(a.args, a.templ)},
                         {"rules", rules(a.rules, a.templ, a.subplan, a.name, "")},
                         {"supervisors", supervisors(a.supervisors, a.name)},
@@ -269,14 +268,14 @@ struct PlanWriter {
 
   /// The toolbox templates the plan uses, in toolbox order, so a tool needs no toolbox parser.
   Json templates() const {
-    std::vector<bool> used(m.templates.size(), false);
-    for (const auto &s : plan.globals) used.at(at(s.templ)) = true;
+    IdMap<model::TemplateId, bool> used(m.templates.size(), false);
+    for (const auto &s : plan.globals) used.at(s.templ) = true;
     for (const auto &a : plan.actors) {
-      if (a.templ >= 0) used.at(at(a.templ)) = true;
-      for (const auto &s : a.supervisors) used.at(at(s.templ)) = true;
+      if (a.templ) used.at(a.templ) = true;
+      for (const auto &s : a.supervisors) used.at(s.templ) = true;
     }
     Json out = Json::array();
-    for (std::size_t i = 0; i < m.templates.size(); ++i) {
+    for (model::TemplateId i : m.templates.ids()) {
       if (!used[i]) continue;
       const model::Template &t = m.templates[i];
       Json params = Json::array();
@@ -286,7 +285,7 @@ struct PlanWriter {
                           {"name", p.name}});
       out.push_back({{"name", t.name},
                      {"kind", template_kind(t.kind)},
-                     {"toolbox", t.toolbox >= 0 ? Json(m.toolboxes.at(at(t.toolbox)).name) : Json(nullptr)},
+                     {"toolbox", t.toolbox ? Json(m.toolboxes.at(t.toolbox).name) : Json(nullptr)},
                      {"params", std::move(params)},
                      {t.kind == model::Template::Kind::Supervisor ? "events" : "results", t.outcomes},
                      {"period_ms", t.period_ms > 0 ? Json(t.period_ms) : Json(nullptr)}});
@@ -299,8 +298,8 @@ class JsonBackend : public Backend {
 public:
   void emit(const model::Model &m, const EmitOptions &o, OutputSink &sink) const override {
     Json doc;
-    if (o.chart >= 0) doc = chart_document(m, o, m.charts.at(at(o.chart)));
-    else if (o.plan >= 0) doc = PlanWriter{m, m.plans.at(at(o.plan))}.document(o);
+    if (o.chart) doc = chart_document(m, o, m.charts.at(o.chart));
+    else if (o.plan) doc = PlanWriter{m, m.plans.at(o.plan)}.document(o);
     else throw std::invalid_argument("json back end: no chart or plan chosen");
     sink.open(o.output_path) << doc.dump(2, ' ', false, Json::error_handler_t::replace) << "\n";
   }

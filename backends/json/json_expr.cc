@@ -33,16 +33,16 @@ const char *kind_name(Expr::Kind k) {
   return "?";
 }
 
-template <typename T> std::string name_at(const std::vector<T> &table, int index) {
-  if (index < 0 || static_cast<std::size_t>(index) >= table.size()) return "?";
-  return std::string(table[static_cast<std::size_t>(index)].name);
+template <typename IdT, typename T> std::string name_at(const Table<IdT, T> &table, IdT id) {
+  if (!table.contains(id)) return "?";
+  return std::string(table[id].name);
 }
 
 }  // namespace
 
 Json location(const model::Model &m, const SourceRange &range) {
-  if (!m.sources || range.file >= m.sources->size()) return nullptr;
-  const SourceFile &file = m.sources->file(range.file);
+  if (!m.sources().knows(range.file)) return nullptr;
+  const SourceFile &file = m.sources().file(range.file);
   LineCol begin = file.line_col(range.begin), end = file.line_col(range.end);
   return {{"file", file.path()},
           {"line", begin.line},
@@ -68,14 +68,14 @@ Json expression_tree(const model::Model &m, const Scope &scope, const Expr &e) {
     j["ms"] = e.float_value;
     j["ticks"] = e.ticks;
     break;
-  case Expr::Kind::Var: j["name"] = scope.chart ? name_at(scope.chart->vars, e.index) : "?"; break;
-  case Expr::Kind::Const: j["name"] = name_at(m.consts, e.index); break;
-  case Expr::Kind::Config: j["name"] = scope.plan ? name_at(scope.plan->config, e.index) : "?"; break;
+  case Expr::Kind::Var: j["name"] = scope.chart ? name_at(scope.chart->vars, e.var()) : "?"; break;
+  case Expr::Kind::Const: j["name"] = name_at(m.consts, e.constant()); break;
+  case Expr::Kind::Config: j["name"] = scope.plan ? name_at(scope.plan->config, e.config()) : "?"; break;
   case Expr::Kind::Call:
-    j["function"] = name_at(m.functions, e.index);
+    j["function"] = name_at(m.functions, e.function());
     j["args"] = args();
     break;
-  case Expr::Kind::Elapsed: j["place"] = scope.chart ? name_at(scope.chart->places, e.index) : "?"; break;
+  case Expr::Kind::Elapsed: j["place"] = scope.chart ? name_at(scope.chart->places, e.place()) : "?"; break;
   case Expr::Kind::Unary:
     j["op"] = spelling(e.unary_op);
     j["args"] = args();
@@ -89,19 +89,17 @@ Json expression_tree(const model::Model &m, const Scope &scope, const Expr &e) {
     // The names along the path, each a place or state of the chart the previous one runs.
     Json path = Json::array();
     const model::Chart *chart = scope.chart;
-    for (int p : e.path) {
+    for (model::PlaceId p : e.path) {
       path.push_back(chart ? name_at(chart->places, p) : "?");
-      int runs = chart && p >= 0 && static_cast<std::size_t>(p) < chart->places.size()
-                     ? chart->places[static_cast<std::size_t>(p)].runs
-                     : -1;
-      chart = runs >= 0 ? &m.charts.at(static_cast<std::size_t>(runs)) : nullptr;
+      model::ChartId runs = chart && chart->places.contains(p) ? chart->places[p].runs : model::ChartId();
+      chart = runs ? &m.charts.at(runs) : nullptr;
     }
     j["path"] = std::move(path);
     break;
   }
   case Expr::Kind::Succeeded:
   case Expr::Kind::Failed:
-  case Expr::Kind::TeamCount: j["place"] = scope.chart ? name_at(scope.chart->places, e.index) : "?"; break;
+  case Expr::Kind::TeamCount: j["place"] = scope.chart ? name_at(scope.chart->places, e.place()) : "?"; break;
   default: break;
   }
   return j;

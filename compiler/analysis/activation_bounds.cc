@@ -15,37 +15,37 @@ namespace {
 /// keeps raising a weight: past a cap, or after a number of raises proportional to the chart,
 /// the search gives up and the chart counts as unbounded. Sound whatever it answers: when it
 /// returns weights, they prove the bound.
-bool find_weights(const model::Chart &c, std::vector<std::uint64_t> &w) {
+bool find_weights(const model::Chart &c, IdMap<model::PlaceId, std::uint64_t> &w) {
   const std::size_t np = c.places.size(), nt = c.transitions.size();
   constexpr std::uint64_t kCap = std::uint64_t(1) << 32;
   w.assign(np, 1);
-  std::vector<std::vector<std::size_t>> producers(np);
+  IdMap<model::PlaceId, std::vector<model::TransitionId>> producers(np);
   std::size_t arcs = 0;
-  for (std::size_t t = 0; t < nt; ++t) {
+  for (model::TransitionId t : c.transitions.ids()) {
     arcs += c.transitions[t].inputs.size() + c.transitions[t].outputs.size();
-    for (int q : c.transitions[t].outputs) producers[static_cast<std::size_t>(q)].push_back(t);
+    for (model::PlaceId q : c.transitions[t].outputs) producers[q].push_back(t);
   }
-  std::vector<std::size_t> work(nt);
-  std::vector<bool> queued(nt, true);
-  for (std::size_t t = 0; t < nt; ++t) work[t] = nt - 1 - t;  // popped from the back: in order
+  std::vector<model::TransitionId> work(nt);
+  IdMap<model::TransitionId, bool> queued(nt, true);
+  for (std::size_t t = 0; t < nt; ++t) work[t] = model::TransitionId(nt - 1 - t);  // popped from the back: in order
   std::size_t budget = 16 * (arcs + nt) + 1000;
-  auto sum = [&](const IndexList &places) {
+  auto sum = [&](const model::PlaceList &places) {
     std::uint64_t s = 0;
-    for (int p : places) s += w[static_cast<std::size_t>(p)];
+    for (model::PlaceId p : places) s += w[p];
     return s;
   };
   while (!work.empty()) {
-    std::size_t t = work.back();
+    model::TransitionId t = work.back();
     work.pop_back();
     queued[t] = false;
     const auto &tr = c.transitions[t];
     std::uint64_t in = sum(tr.inputs), out = sum(tr.outputs);
     if (in >= out) continue;
     if (tr.inputs.empty() || budget-- == 0) return false;
-    auto p = static_cast<std::size_t>(tr.inputs.front());
+    model::PlaceId p = tr.inputs.front();
     w[p] += out - in;
     if (w[p] > kCap) return false;
-    for (std::size_t u : producers[p])
+    for (model::TransitionId u : producers[p])
       if (!queued[u]) {
         queued[u] = true;
         work.push_back(u);
@@ -62,13 +62,13 @@ bool find_weights(const model::Chart &c, std::vector<std::uint64_t> &w) {
 
 model::ActivationBound prove_activation_bound(const model::Chart &c) {
   model::ActivationBound b;
-  std::vector<std::uint64_t> w;
+  IdMap<model::PlaceId, std::uint64_t> w;
   if (!find_weights(c, w)) return b;
   std::uint64_t initial = 0;
-  for (std::size_t p = 0; p < c.places.size(); ++p)
+  for (model::PlaceId p : c.places.ids())
     if (c.places[p].initial) initial += w[p];
   std::uint64_t place = 0;
-  for (std::size_t p = 0; p < c.places.size(); ++p) place = std::max(place, initial / w[p]);
+  for (model::PlaceId p : c.places.ids()) place = std::max(place, initial / w[p]);
   if (place > UINT32_MAX) return b;
   b.bounded = true;
   b.total = initial;  // every weight is at least 1

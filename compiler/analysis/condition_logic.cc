@@ -27,14 +27,31 @@ bool is_logic(const Expr &e) {
   }
 }
 
+template <typename Tag> std::string id_text(Id<Tag> id) { return id ? std::to_string(id.index()) : "-"; }
+
+/// What `e` names (its kind tells the table), for its key; "" for a kind that names nothing.
+std::string named(const Expr &e) {
+  switch (e.kind) {
+  case Expr::Kind::Var: return id_text(e.var());
+  case Expr::Kind::Const: return id_text(e.constant());
+  case Expr::Kind::Config: return id_text(e.config());
+  case Expr::Kind::Call: return id_text(e.function());
+  case Expr::Kind::Elapsed:
+  case Expr::Kind::Succeeded:
+  case Expr::Kind::Failed:
+  case Expr::Kind::TeamCount: return id_text(e.place());
+  default: return "";
+  }
+}
+
 /// A spelling of an atom that is equal for equal expressions (brackets ignored).
 std::string key(const Expr &e) {
   if (e.kind == Expr::Kind::Paren && !e.args.empty()) return key(e.args[0]);
-  std::string k = fmt::format("{}:{}:{}:{}:{}:{}:{}", static_cast<int>(e.kind), e.index, e.text, e.bool_value, e.ticks,
+  std::string k = fmt::format("{}:{}:{}:{}:{}:{}:{}", static_cast<int>(e.kind), named(e), e.text, e.bool_value, e.ticks,
                               static_cast<int>(e.unary_op), static_cast<int>(e.binary_op));
   for (const auto &a : e.args) k += "(" + key(a) + ")";
   // active(P.Q) and active(P.R) are different atoms: the path is part of the spelling.
-  for (int p : e.path) k += fmt::format(".{}", p);
+  for (model::PlaceId p : e.path) k += fmt::format(".{}", p.index());
   return k;
 }
 

@@ -14,12 +14,13 @@ namespace gfec::analysis {
 namespace {
 
 /// The chart whose place `path.back()` is, following the places' sub-charts from `c`.
-const model::Chart *chart_of_last(const model::Model &m, const model::Chart &c, const std::vector<int> &path) {
+const model::Chart *chart_of_last(const model::Model &m, const model::Chart &c,
+                                  const std::vector<model::PlaceId> &path) {
   const model::Chart *at = &c;
   for (std::size_t k = 0; k + 1 < path.size(); ++k) {
-    const auto &place = at->places.at(static_cast<std::size_t>(path[k]));
-    if (place.runs < 0) return nullptr;
-    at = &m.charts.at(static_cast<std::size_t>(place.runs));
+    const auto &place = at->places.at(path[k]);
+    if (!place.runs) return nullptr;
+    at = &m.charts.at(place.runs);
   }
   return at;
 }

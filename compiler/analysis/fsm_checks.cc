@@ -10,22 +10,22 @@ namespace {
 
 using model::Chart;
 
-bool terminal(const Chart &c, int s) {
-  return c.places.at(static_cast<std::size_t>(s)).terminal != model::Terminal::None;
-}
+using model::PlaceId;
+
+bool terminal(const Chart &c, PlaceId s) { return c.places.at(s).terminal != model::Terminal::None; }
 
 /// States reachable from `from` (forward) or reaching it (backward), over transitions that can fire.
-std::vector<bool> closure(const Chart &c, std::vector<int> from, bool forward) {
-  std::vector<bool> seen(c.places.size(), false);
-  for (int s : from) seen[static_cast<std::size_t>(s)] = true;
+IdMap<PlaceId, bool> closure(const Chart &c, std::vector<PlaceId> from, bool forward) {
+  IdMap<PlaceId, bool> seen(c.places.size(), false);
+  for (PlaceId s : from) seen[s] = true;
   while (!from.empty()) {
-    int s = from.back();
+    PlaceId s = from.back();
     from.pop_back();
     for (const auto &t : c.transitions) {
       if (t.inputs.empty() || t.outputs.empty() || firing_of(t) == Firing::Never) continue;
-      int a = forward ? t.inputs[0] : t.outputs[0], b = forward ? t.outputs[0] : t.inputs[0];
-      if (a == s && !seen[static_cast<std::size_t>(b)]) {
-        seen[static_cast<std::size_t>(b)] = true;
+      PlaceId a = forward ? t.inputs[0] : t.outputs[0], b = forward ? t.outputs[0] : t.inputs[0];
+      if (a == s && !seen[b]) {
+        seen[b] = true;
         from.push_back(b);
       }
     }
@@ -34,24 +34,23 @@ std::vector<bool> closure(const Chart &c, std::vector<int> from, bool forward) {
 }
 
 std::string label(const Chart &c, const model::Transition &t) {
-  return fmt::format("{} -> {}", c.places.at(static_cast<std::size_t>(t.inputs.at(0))).name,
-                     c.places.at(static_cast<std::size_t>(t.outputs.at(0))).name);
+  return fmt::format("{} -> {}", c.places.at(t.inputs.at(0)).name, c.places.at(t.outputs.at(0)).name);
 }
 
 }  // namespace
 
 void check_fsm(const model::Model & /*m*/, const Chart &c, Diagnostics &diag, std::string &summary) {
-  std::vector<int> initial, terminals;
-  for (std::size_t s = 0; s < c.places.size(); ++s) {
-    if (c.places[s].initial) initial.push_back(static_cast<int>(s));
-    if (terminal(c, static_cast<int>(s))) terminals.push_back(static_cast<int>(s));
+  std::vector<PlaceId> initial, terminals;
+  for (PlaceId s : c.places.ids()) {
+    if (c.places[s].initial) initial.push_back(s);
+    if (terminal(c, s)) terminals.push_back(s);
   }
-  std::vector<bool> reach = closure(c, initial, true);
+  IdMap<PlaceId, bool> reach = closure(c, initial, true);
   std::size_t traps = 0;
   // A machine without terminal states is meant to run for ever: nothing to say.
   if (!terminals.empty()) {
-    std::vector<bool> finish = closure(c, terminals, false);
-    for (std::size_t s = 0; s < c.places.size(); ++s) {
+    IdMap<PlaceId, bool> finish = closure(c, terminals, false);
+    for (PlaceId s : c.places.ids()) {
       if (!reach[s] || finish[s]) continue;
       ++traps;
       diag.warning(Warning::TrapState, name_at(c.places[s]),

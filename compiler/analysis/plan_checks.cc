@@ -10,7 +10,9 @@ namespace gfec::analysis {
 
 namespace {
 
-using Written = std::vector<bool>;  ///< by config entry: certainly written by now
+using model::ActorId;
+using model::ConfigId;
+using Written = IdMap<ConfigId, bool>;  ///< by config entry: certainly written by now
 
 void config_reads(const model::Expr &e, std::vector<const model::Expr *> &out) {
   if (e.kind == model::Expr::Kind::Config) out.push_back(&e);
@@ -27,8 +29,8 @@ std::vector<const model::Expr *> reads(const std::vector<model::Arg> &args) {
 /// An actor's or supervisor's out arguments, written when it ends (or interrupts).
 void add_writes(const std::vector<model::Arg> &args, Written &w) {
   for (const auto &a : args)
-    if (a.dir == model::ParamDir::Out && a.formula.kind == model::Expr::Kind::Config && a.formula.index >= 0)
-      w.at(static_cast<std::size_t>(a.formula.index)) = true;
+    if (a.dir == model::ParamDir::Out && a.formula.kind == model::Expr::Kind::Config && a.formula.config())
+      w.at(a.formula.config()) = true;
 }
 
 /// A rule whose outcome does interrupt (an `ignore` never does).
@@ -45,25 +47,25 @@ public:
   /// What is certainly written when each actor starts (intersection over the ways in).
   void run() {
     Written initial(p_.config.size());
-    for (std::size_t e = 0; e < p_.config.size(); ++e) initial[e] = p_.config[e].init.has_value();
+    for (ConfigId e : p_.config.ids()) initial[e] = p_.config[e].init.has_value();
     initial_ = initial;
-    if (p_.start < 0 || static_cast<std::size_t>(p_.start) >= p_.actors.size()) return;
-    std::deque<int> todo;
+    if (!p_.actors.contains(p_.start)) return;
+    std::deque<ActorId> todo;
     arrive(p_.start, initial, todo);
     while (!todo.empty()) {
-      int a = todo.front();
+      ActorId a = todo.front();
       todo.pop_front();
-      const model::ActorUse &actor = p_.actors[static_cast<std::size_t>(a)];
-      Written done = in_[static_cast<std::size_t>(a)];
+      const model::ActorUse &actor = p_.actors[a];
+      Written done = in_[a];
       add_writes(actor.args, done);
       follow(actor.rules, done, todo);
-      for (const auto &s : actor.supervisors) follow(s.rules, with(in_[static_cast<std::size_t>(a)], s.args), todo);
-      for (const auto &s : p_.globals) follow(s.rules, with(in_[static_cast<std::size_t>(a)], s.args), todo);
+      for (const auto &s : actor.supervisors) follow(s.rules, with(in_[a], s.args), todo);
+      for (const auto &s : p_.globals) follow(s.rules, with(in_[a], s.args), todo);
     }
   }
 
-  bool reached(std::size_t a) const { return reached_[a]; }
-  const Written &at(std::size_t a) const { return in_[a]; }
+  bool reached(ActorId a) const { return reached_[a]; }
+  const Written &at(ActorId a) const { return in_[a]; }
   const Written &initial() const { return initial_; }
 
 private:
@@ -72,29 +74,29 @@ private:
     return w;
   }
 
-  void follow(const std::vector<model::Rule> &rules, const Written &w, std::deque<int> &todo) {
+  void follow(const std::vector<model::Rule> &rules, const Written &w, std::deque<ActorId> &todo) {
     for (const auto &r : rules)
       if (r.target.kind == model::Target::Kind::Actor) arrive(r.target.actor, w, todo);
   }
 
-  void arrive(int a, const Written &w, std::deque<int> &todo) {
-    if (a < 0 || static_cast<std::size_t>(a) >= in_.size()) return;
-    Written &in = in_[static_cast<std::size_t>(a)];
+  void arrive(ActorId a, const Written &w, std::deque<ActorId> &todo) {
+    if (!p_.actors.contains(a)) return;
+    Written &in = in_[a];
     bool changed = false;
-    if (!reached_[static_cast<std::size_t>(a)]) {
-      reached_[static_cast<std::size_t>(a)] = true;
+    if (!reached_[a]) {
+      reached_[a] = true;
       in = w;
       changed = true;
     } else {
-      for (std::size_t e = 0; e < in.size(); ++e)
+      for (ConfigId e : in.ids())
         if (in[e] && !w[e]) in[e] = false, changed = true;
     }
     if (changed) todo.push_back(a);
   }
 
   const model::Plan &p_;
-  std::vector<Written> in_;
-  std::vector<bool> reached_;
+  IdMap<ActorId, Written> in_;
+  IdMap<ActorId, bool> reached_;
   Written initial_;
 };
 
@@ -106,9 +108,9 @@ void check_plan(const model::Model & /*m*/, const model::Plan &p, Diagnostics &d
   std::size_t unwritten = 0, races = 0;
   auto check_reads = [&](const std::vector<const model::Expr *> &list, const Written &w, const std::string &who) {
     for (const model::Expr *e : list) {
-      if (e->index < 0 || w.at(static_cast<std::size_t>(e->index))) continue;
+      if (!e->config() || w.at(e->config())) continue;
       ++unwritten;
-      const model::ConfigEntry &entry = p.config[static_cast<std::size_t>(e->index)];
+      const model::ConfigEntry &entry = p.config[e->config()];
       diag.warning(Warning::UninitializedConfig, e->range,
                    fmt::format("{} may read config entry '{}' before anything has written it", who, entry.name))
           .note(name_at(entry),
@@ -119,7 +121,7 @@ void check_plan(const model::Model & /*m*/, const model::Plan &p, Diagnostics &d
   };
   // Global supervisors start with the plan: they read what is there at the start.
   for (const auto &s : p.globals) check_reads(reads(s.args), flow.initial(), fmt::format("supervisor '{}'", s.name));
-  for (std::size_t a = 0; a < p.actors.size(); ++a) {
+  for (ActorId a : p.actors.ids()) {
     if (!flow.reached(a)) continue;
     const model::ActorUse &actor = p.actors[a];
     check_reads(reads(actor.args), flow.at(a), fmt::format("actor '{}'", actor.name));
@@ -142,7 +144,7 @@ void check_plan(const model::Model & /*m*/, const model::Plan &p, Diagnostics &d
         .note(fmt::format("they are checked in this order, and the first to raise an event interrupts: {}", list));
   }
   std::size_t reachable = 0;
-  for (std::size_t a = 0; a < p.actors.size(); ++a) reachable += flow.reached(a);
+  for (ActorId a : p.actors.ids()) reachable += flow.reached(a);
   summary += fmt::format("plan {}: {}, {}, {}\n", p.name, counted(p.actors.size(), "actor", "actors"),
                          counted(p.config.size(), "config entry", "config entries"),
                          counted(p.globals.size(), "global supervisor", "global supervisors"));

@@ -12,10 +12,12 @@ namespace gfec::analysis {
 namespace {
 
 using model::Chart;
+using model::PlaceId;
+using model::TransitionId;
 
-std::string_view place_name(const Chart &c, int p) { return c.places.at(static_cast<std::size_t>(p)).name; }
+std::string_view place_name(const Chart &c, PlaceId p) { return c.places.at(p).name; }
 
-std::string names(const Chart &c, const IndexList &places) {
+std::string names(const Chart &c, const model::PlaceList &places) {
   std::string out;
   for (std::size_t i = 0; i < places.size(); ++i)
     out += fmt::format("{}'{}'", i == 0 ? "" : i + 1 == places.size() ? " and " : ", ", place_name(c, places[i]));
@@ -24,48 +26,49 @@ std::string names(const Chart &c, const IndexList &places) {
 
 /// What the validator already reports: places no chain of live transitions reaches (it warns
 /// about those; this pass speaks only of the rest). A worklist: linear in the chart.
-std::vector<bool> structurally_reachable(const Chart &c) {
-  std::vector<std::vector<int>> consumers(c.places.size());
-  std::vector<std::size_t> waiting(c.transitions.size());  // inputs not yet reached
-  std::vector<int> todo;
-  for (std::size_t t = 0; t < c.transitions.size(); ++t) {
+IdMap<PlaceId, bool> structurally_reachable(const Chart &c) {
+  IdMap<PlaceId, std::vector<TransitionId>> consumers(c.places.size());
+  IdMap<TransitionId, std::size_t> waiting(c.transitions.size());  // inputs not yet reached
+  std::vector<PlaceId> todo;
+  for (TransitionId t : c.transitions.ids()) {
     const auto &tr = c.transitions[t];
     waiting[t] = tr.inputs.size();
-    for (int p : tr.inputs) consumers[static_cast<std::size_t>(p)].push_back(static_cast<int>(t));
+    for (PlaceId p : tr.inputs) consumers[p].push_back(t);
   }
-  std::vector<bool> reach(c.places.size());
-  auto reached = [&](int p) {
-    if (reach[static_cast<std::size_t>(p)]) return;
-    reach[static_cast<std::size_t>(p)] = true;
+  IdMap<PlaceId, bool> reach(c.places.size());
+  auto reached = [&](PlaceId p) {
+    if (reach[p]) return;
+    reach[p] = true;
     todo.push_back(p);
   };
   auto fire = [&](const model::Transition &tr) {
     if (firing_of(tr) == Firing::Never) return;
-    for (int q : tr.outputs) reached(q);
+    for (PlaceId q : tr.outputs) reached(q);
   };
   for (const auto &tr : c.transitions)
     if (tr.inputs.empty()) fire(tr);
-  for (std::size_t p = 0; p < c.places.size(); ++p)
-    if (c.places[p].initial) reached(static_cast<int>(p));
+  for (PlaceId p : c.places.ids())
+    if (c.places[p].initial) reached(p);
   while (!todo.empty()) {
-    int p = todo.back();
+    PlaceId p = todo.back();
     todo.pop_back();
-    for (int t : consumers[static_cast<std::size_t>(p)])
-      if (--waiting[static_cast<std::size_t>(t)] == 0) fire(c.transitions[static_cast<std::size_t>(t)]);
+    for (TransitionId t : consumers[p])
+      if (--waiting[t] == 0) fire(c.transitions[t]);
   }
   return reach;
 }
 
 /// Places reachable from `start` along transitions (a place leads to the outputs of every
 /// transition it is an input of).
-std::set<int> downstream(const Chart &c, const std::vector<std::vector<int>> &consumers, int start) {
-  std::set<int> seen{start};
-  std::vector<int> todo{start};
+std::set<PlaceId> downstream(const Chart &c, const IdMap<PlaceId, std::vector<TransitionId>> &consumers,
+                             PlaceId start) {
+  std::set<PlaceId> seen{start};
+  std::vector<PlaceId> todo{start};
   while (!todo.empty()) {
-    int p = todo.back();
+    PlaceId p = todo.back();
     todo.pop_back();
-    for (int t : consumers[static_cast<std::size_t>(p)])
-      for (int q : c.transitions[static_cast<std::size_t>(t)].outputs)
+    for (TransitionId t : consumers[p])
+      for (PlaceId q : c.transitions[t].outputs)
         if (seen.insert(q).second) todo.push_back(q);
   }
   return seen;
@@ -74,21 +77,21 @@ std::set<int> downstream(const Chart &c, const std::vector<std::vector<int>> &co
 /// A fork's branches meet when some join takes inputs from two different branches.
 void check_forks(const Chart &c, Diagnostics &diag) {
   if (!diag.warning_options().is_on(Warning::UnjoinedFork)) return;  // off by default; not cheap
-  std::vector<std::vector<int>> consumers(c.places.size());
-  for (std::size_t t = 0; t < c.transitions.size(); ++t)
-    for (int p : c.transitions[t].inputs) consumers[static_cast<std::size_t>(p)].push_back(static_cast<int>(t));
+  IdMap<PlaceId, std::vector<TransitionId>> consumers(c.places.size());
+  for (TransitionId t : c.transitions.ids())
+    for (PlaceId p : c.transitions[t].inputs) consumers[p].push_back(t);
   for (const auto &fork : c.transitions) {
     if (fork.outputs.size() < 2) continue;
-    std::vector<std::set<int>> branch;
-    for (int o : fork.outputs) branch.push_back(downstream(c, consumers, o));
+    std::vector<std::set<PlaceId>> branch;
+    for (PlaceId o : fork.outputs) branch.push_back(downstream(c, consumers, o));
     bool meet = false;
     for (const auto &join : c.transitions) {
       if (join.inputs.size() < 2) continue;
       for (std::size_t i = 0; i < branch.size() && !meet; ++i)
         for (std::size_t j = 0; j < branch.size() && !meet; ++j) {
           if (i == j) continue;
-          for (int a : join.inputs)
-            for (int b : join.inputs)
+          for (PlaceId a : join.inputs)
+            for (PlaceId b : join.inputs)
               if (a != b && branch[i].count(a) && branch[j].count(b)) meet = true;
         }
       if (meet) break;
@@ -116,31 +119,31 @@ void check_sfc(const model::Model & /*m*/, const Chart &c, Diagnostics &diag, co
                     c.name, space.states.size(), space.outcomes));
 
   // Per place: the largest count seen, and the first state that shows it above one.
-  std::vector<std::uint32_t> most(np, 0);
-  std::vector<int> unsafe_at(np, -1), unbounded_at(np, -1);
-  std::vector<bool> join_ready(nt, false);
-  const std::vector<bool> &fired = space.ever_fired;
+  IdMap<PlaceId, std::uint32_t> most(np, 0);
+  IdMap<PlaceId, int> unsafe_at(np, -1), unbounded_at(np, -1);
+  IdMap<TransitionId, bool> join_ready(nt, false);
+  const IdMap<TransitionId, bool> &fired = space.ever_fired;
   std::vector<int> deadlocks;
   for (std::size_t s = 0; s < space.states.size(); ++s) {
     const Marking &mk = space.states[s];
-    for (std::size_t p = 0; p < np; ++p) {
-      most[p] = std::max(most[p], mk[p]);
-      if (mk[p] >= 2 && unsafe_at[p] < 0) unsafe_at[p] = static_cast<int>(s);
-      if (mk[p] == kOmega && unbounded_at[p] < 0) unbounded_at[p] = static_cast<int>(s);
+    for (PlaceId p : c.places.ids()) {
+      most[p] = std::max(most[p], mk[p.index()]);
+      if (mk[p.index()] >= 2 && unsafe_at[p] < 0) unsafe_at[p] = static_cast<int>(s);
+      if (mk[p.index()] == kOmega && unbounded_at[p] < 0) unbounded_at[p] = static_cast<int>(s);
     }
     bool can_fire = false, waiting = false;
-    for (std::size_t t = 0; t < nt; ++t) {
+    for (TransitionId t : c.transitions.ids()) {
       const auto &tr = c.transitions[t];
       bool open = is_open(tr, mk);
       join_ready[t] = join_ready[t] || open;
       if (firing_of(tr) == Firing::Never) continue;
       can_fire = can_fire || open;
-      for (int p : tr.inputs) waiting = waiting || mk[static_cast<std::size_t>(p)] > 0;
+      for (PlaceId p : tr.inputs) waiting = waiting || mk[p.index()] > 0;
     }
     if (!can_fire && waiting) deadlocks.push_back(static_cast<int>(s));
   }
 
-  for (std::size_t p = 0; p < np; ++p) {
+  for (PlaceId p : c.places.ids()) {
     const auto &place = c.places[p];
     SourceRange at = name_at(place);
     if (unbounded_at[p] >= 0)
@@ -160,8 +163,8 @@ void check_sfc(const model::Model & /*m*/, const Chart &c, Diagnostics &diag, co
     d.note(fmt::format("it gets there after {}", witness(c, space, s)));
     for (const auto &tr : c.transitions) {
       if (firing_of(tr) == Firing::Never) continue;
-      std::vector<int> active, missing;
-      for (int p : tr.inputs) (mk[static_cast<std::size_t>(p)] > 0 ? active : missing).push_back(p);
+      model::PlaceList active, missing;
+      for (PlaceId p : tr.inputs) (mk[p.index()] > 0 ? active : missing).push_back(p);
       if (!active.empty() && !missing.empty())
         d.note(name_at(tr), fmt::format("'{}' waits for {}", tr.name, names(c, missing)));
     }
@@ -170,18 +173,18 @@ void check_sfc(const model::Model & /*m*/, const Chart &c, Diagnostics &diag, co
   // What never happens, claimed only when every reachable state is known exactly.
   std::size_t unreachable = 0, dead = 0;
   if (space.exact()) {
-    std::vector<bool> structural = structurally_reachable(c);
-    for (std::size_t p = 0; p < np; ++p) {
+    IdMap<PlaceId, bool> structural = structurally_reachable(c);
+    for (PlaceId p : c.places.ids()) {
       if (most[p] > 0 || !structural[p]) continue;  // the validator speaks of the latter
       ++unreachable;
       diag.warning(
           Warning::UnreachablePlace, name_at(c.places[p]),
           fmt::format("place '{}' can never become active: no reachable activation state holds it", c.places[p].name));
     }
-    for (std::size_t t = 0; t < nt; ++t) {
+    for (TransitionId t : c.transitions.ids()) {
       const auto &tr = c.transitions[t];
       bool inputs_reach = firing_of(tr) != Firing::Never;
-      for (int p : tr.inputs) inputs_reach = inputs_reach && most[static_cast<std::size_t>(p)] > 0;
+      for (PlaceId p : tr.inputs) inputs_reach = inputs_reach && most[p] > 0;
       if (fired[t] || !inputs_reach) continue;  // never-active inputs are reported as places
       ++dead;
       SourceRange at = name_at(tr);

@@ -33,7 +33,7 @@ public:
       : c_(c), firing_(firing), budget_(budget) {}
 
   /// The distinct outcomes, each with the transitions that fired; false if the budget ran out.
-  bool outcomes(const Marking &m, std::map<Marking, std::vector<int>> &out) {
+  bool outcomes(const Marking &m, std::map<Marking, std::vector<model::TransitionId>> &out) {
     visit(0, m, Marking(m.size(), 0), {}, 0, out);
     return used_ <= budget_;
   }
@@ -41,13 +41,13 @@ public:
   /// Every transition that fired in some outcome. `outcomes` keeps one firing set per resulting
   /// marking, so a transition whose firing changes nothing (a self-loop `A -> A`) may be missing
   /// from it; it is never missing here.
-  const std::vector<bool> &fired_any() const { return fired_any_; }
+  const IdMap<model::TransitionId, bool> &fired_any() const { return fired_any_; }
 
 private:
   static constexpr int kMaxBranches = 64;
 
-  void visit(std::size_t t, Marking avail, Marking add, std::vector<int> fired, int branches,
-             std::map<Marking, std::vector<int>> &out) {
+  void visit(std::size_t t, Marking avail, Marking add, std::vector<model::TransitionId> fired, int branches,
+             std::map<Marking, std::vector<model::TransitionId>> &out) {
     for (; t < c_.transitions.size(); ++t) {
       if (used_ > budget_) return;
       const model::Transition &tr = c_.transitions[t];
@@ -60,13 +60,13 @@ private:
         }
         visit(t + 1, avail, add, fired, branches + 1, out);  // it does not fire
       }
-      for (int p : tr.inputs) avail[static_cast<std::size_t>(p)] = take(avail[static_cast<std::size_t>(p)]);
-      for (int p : tr.outputs) add[static_cast<std::size_t>(p)] = give(add[static_cast<std::size_t>(p)], 1);
-      fired.push_back(static_cast<int>(t));
+      for (model::PlaceId p : tr.inputs) avail[p.index()] = take(avail[p.index()]);
+      for (model::PlaceId p : tr.outputs) add[p.index()] = give(add[p.index()], 1);
+      fired.push_back(model::TransitionId(t));
     }
     ++used_;
     for (std::size_t p = 0; p < avail.size(); ++p) avail[p] = give(avail[p], add[p]);
-    for (int f : fired) fired_any_[static_cast<std::size_t>(f)] = true;
+    for (model::TransitionId f : fired) fired_any_[f] = true;
     out.emplace(std::move(avail), std::move(fired));
   }
 
@@ -74,7 +74,7 @@ private:
   const std::vector<Firing> &firing_;
   std::size_t budget_;
   std::size_t used_ = 0;
-  std::vector<bool> fired_any_ = std::vector<bool>(c_.transitions.size(), false);
+  IdMap<model::TransitionId, bool> fired_any_ = IdMap<model::TransitionId, bool>(c_.transitions.size(), false);
 };
 
 /// A quick necessary condition for `a` to cover `b` strictly: more unbounded places, or as many
@@ -103,8 +103,8 @@ Firing firing_of(const model::Transition &t) {
 }
 
 bool is_open(const model::Transition &t, const Marking &m) {
-  for (int p : t.inputs)
-    if (m[static_cast<std::size_t>(p)] == 0) return false;
+  for (model::PlaceId p : t.inputs)
+    if (m[p.index()] == 0) return false;
   return true;
 }
 
@@ -117,7 +117,7 @@ StateSpace explore(const model::Chart &chart, const Limits &limits) {
   for (const auto &p : chart.places) initial.push_back(p.initial ? 1 : 0);
   std::map<Marking, int> index;
   std::vector<Size> sizes;
-  auto add_state = [&](Marking m, int parent, std::vector<int> fired) {
+  auto add_state = [&](Marking m, int parent, std::vector<model::TransitionId> fired) {
     auto found = index.find(m);
     if (found != index.end()) return found->second;
     int i = static_cast<int>(s.states.size());
@@ -132,7 +132,7 @@ StateSpace explore(const model::Chart &chart, const Limits &limits) {
   add_state(initial, -1, {});
   const std::size_t size = chart.places.size() + chart.transitions.size() + 1;
   for (std::size_t i = 0; i < s.states.size(); ++i) {
-    std::map<Marking, std::vector<int>> outcomes;
+    std::map<Marking, std::vector<model::TransitionId>> outcomes;
     Tick tick(chart, firing, limits.max_outcomes - std::min(limits.max_outcomes, s.outcomes));
     bool all = tick.outcomes(s.states[i], outcomes);
     s.outcomes += tick.used();
@@ -141,7 +141,7 @@ StateSpace explore(const model::Chart &chart, const Limits &limits) {
       s.limit_hit = true;
       break;
     }
-    for (std::size_t t = 0; t < tick.fired_any().size(); ++t)
+    for (model::TransitionId t : tick.fired_any().ids())
       if (tick.fired_any()[t]) s.ever_fired[t] = true;
     std::set<int> seen;
     for (auto &[next, fired] : outcomes) {
@@ -192,8 +192,8 @@ std::string witness(const model::Chart &chart, const StateSpace &space, int stat
   int tick = 1;
   for (auto it = path.rbegin(); it != path.rend(); ++it, ++tick) {
     std::string fired;
-    for (int t : space.fired[static_cast<std::size_t>(*it)])
-      fired += (fired.empty() ? "" : ", ") + chart.transitions[static_cast<std::size_t>(t)].name;
+    for (model::TransitionId t : space.fired[static_cast<std::size_t>(*it)])
+      fired += (fired.empty() ? "" : ", ") + chart.transitions[t].name;
     out += fmt::format("{}tick {}: {}", out.empty() ? "" : "; ", tick, fired.empty() ? "nothing fires" : fired);
   }
   return out.empty() ? "at the start" : out;

@@ -19,7 +19,7 @@
 namespace gfec::analysis {
 
 constexpr std::uint32_t kOmega = UINT32_MAX;  ///< an activation count that can grow without bound
-using Marking = std::vector<std::uint32_t>;
+using Marking = std::vector<std::uint32_t>;   ///< by place (PlaceId::index(): a map key, so a plain vector)
 
 struct Limits {
   std::size_t max_states = 20000;     ///< activation states explored
@@ -36,15 +36,15 @@ Firing firing_of(const model::Transition &t);
 bool is_open(const model::Transition &t, const Marking &m);
 
 struct StateSpace {
-  std::vector<Marking> states;          ///< states[0] is the initial marking
-  std::vector<int> parent;              ///< the state first reached from; -1 for the initial
-  std::vector<std::vector<int>> fired;  ///< the transitions that fired in that tick
+  std::vector<Marking> states;                          ///< states[0] is the initial marking
+  std::vector<int> parent;                              ///< the state first reached from; -1 for the initial
+  std::vector<std::vector<model::TransitionId>> fired;  ///< the transitions that fired in that tick
   std::vector<std::vector<int>> successors;
-  std::vector<bool> ever_fired;  ///< by transition: fires in some explored tick
-  bool limit_hit = false;        ///< stopped at a limit: some reachable states are missing
-  std::size_t work = 0;          ///< work done, as Limits::max_work counts it
-  bool accelerated = false;      ///< some count became ω: the states are an approximation
-  std::size_t outcomes = 0;      ///< tick outcomes enumerated
+  IdMap<model::TransitionId, bool> ever_fired;  ///< fires in some explored tick
+  bool limit_hit = false;                       ///< stopped at a limit: some reachable states are missing
+  std::size_t work = 0;                         ///< work done, as Limits::max_work counts it
+  bool accelerated = false;                     ///< some count became ω: the states are an approximation
+  std::size_t outcomes = 0;                     ///< tick outcomes enumerated
 
   /// Every reachable state is here, exactly: what is absent cannot happen.
   bool exact() const { return !limit_hit && !accelerated; }

@@ -140,6 +140,7 @@ int compile(const Options &o, DiagnosticReport &report, std::ostream &out) {
     return kExitUsageOrIo;
   }
   EmitOptions emit;
+  // EmitOptions (compiler/backend.h) still numbers them, -1 for none.
   emit.chart = target.chart;
   emit.plan = target.plan;
   emit.toolbox = target.toolbox;

@@ -49,26 +49,27 @@ void instance_rows(const model::Model &model, const model::Chart &c, const std::
   first_row[path] = first;
   if (!path.empty())
     instances.push_back({{"path", path}, {"chart", c.name}, {"first", first}, {"count", c.places.size()}});
-  for (std::size_t i = 0; i < c.places.size(); ++i) {
+  for (model::PlaceId i : c.places.ids()) {
     nlohmann::json row = {{"name", path.empty() ? c.places[i].name.str() : path + "/" + c.places[i].name},
-                          {"node", fmt::format("{}p{}", prefix, i)},
+                          {"node", fmt::format("{}p{}", prefix, i.index())},
                           {"terminal", c.places[i].terminal != model::Terminal::None}};
     if (!path.empty()) row["group"] = path;
     rows.push_back(row);
   }
-  for (std::size_t i = 0; i < c.places.size(); ++i)
-    if (c.places[i].runs >= 0)
-      instance_rows(model, model.charts.at(static_cast<std::size_t>(c.places[i].runs)),
+  for (model::PlaceId i : c.places.ids())
+    if (c.places[i].runs)
+      instance_rows(model, model.charts.at(c.places[i].runs),
                     path.empty() ? c.places[i].name.str() : path + "." + c.places[i].name,
-                    fmt::format("{}s{}_", prefix, i), rows, first_row, instances);
+                    fmt::format("{}s{}_", prefix, i.index()), rows, first_row, instances);
 }
 
 /// The run viewer's recording of an interpreter run (docs/viewer.md): the chart's picture, the
 /// activation after each tick (of the chart and of each running sub-chart instance) and what
 /// each tick did, taken from the run's log. Frame k is tick k + 1; there is no world and no robot.
-nlohmann::json viewer_data(const model::Model &model, int chart, const interp::RunResult &r, const RunOptions &o) {
+nlohmann::json viewer_data(const model::Model &model, model::ChartId chart, const interp::RunResult &r,
+                           const RunOptions &o) {
   using nlohmann::json;
-  const model::Chart &c = model.charts.at(static_cast<std::size_t>(chart));
+  const model::Chart &c = model.charts.at(chart);
   const bool fsm = c.kind == model::Chart::Kind::Fsm;
   json rows = json::array(), instances = json::array();
   std::map<std::string, std::size_t> first_row;
@@ -187,17 +188,17 @@ int run_with(const RunOptions &o, DiagnosticReport &report, std::ostream &out) {
     report.tool_error(o.input, target.error, true);
     return kExitUsageOrIo;
   }
-  const int chart = target.chart;
+  const model::ChartId chart = target.chart;
   // A team machine runs as a team (docs/cli.md): every agent by default, or --agents of them.
-  const int team = model.charts[static_cast<std::size_t>(chart)].team;
+  const int team = model.charts[chart].team;
   int agents = 1;
   if (team > 0) agents = o.agents_given ? o.agents : team;
   if (o.agents_given && (o.agents < 1 || o.agents > std::max(team, 1))) {
     report.tool_error(o.input,
                       team > 0 ? fmt::format("--agents {}: '{}' is a team of 1 to {} agents", o.agents,
-                                             model.charts[static_cast<std::size_t>(chart)].name, team)
+                                             model.charts[chart].name, team)
                                : fmt::format("--agents {}: '{}' is no team machine; it runs as one agent", o.agents,
-                                             model.charts[static_cast<std::size_t>(chart)].name),
+                                             model.charts[chart].name),
                       false);
     return kExitUsageOrIo;
   }

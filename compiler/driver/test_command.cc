@@ -120,9 +120,8 @@ public:
       EngineBuilds::Build b = builds_.get(m, test.chart, chart_file(file, test.chart));
       if (b.program.empty()) {
         out.diag
-            .error(
-                test.range, ErrorKind::TestEngine,
-                fmt::format("cannot build the C engine for '{}'", m.charts[static_cast<std::size_t>(test.chart)].name))
+            .error(test.range, ErrorKind::TestEngine,
+                   fmt::format("cannot build the C engine for '{}'", m.charts[test.chart].name))
             .note(b.error);
       } else {
         eng = builds_.run(b, m, test, id);
@@ -136,8 +135,8 @@ public:
   }
 
 private:
-  static std::string chart_file(const TestFile &file, int chart) {
-    SourceRange r = file.model.charts[static_cast<std::size_t>(chart)].range;
+  static std::string chart_file(const TestFile &file, model::ChartId chart) {
+    SourceRange r = file.model.charts[chart].range;
     return file.sources.file(r.file).path();
   }
 

@@ -22,8 +22,8 @@ namespace fs = std::filesystem;
 using model::Type;
 
 /// The value a `set` line stored, as the function's type; 0 (false) until set.
-std::string result_of(Type t, int f) {
-  std::string v = fmt::format("h_value[{}]", f);
+std::string result_of(Type t, model::FunctionId f) {
+  std::string v = fmt::format("h_value[{}]", f.index());
   switch (t) {
   case Type::Bool: return fmt::format("strcmp({}, \"true\") == 0", v);
   case Type::Int: return fmt::format("(int)strtol({}, NULL, 10)", v);
@@ -32,7 +32,7 @@ std::string result_of(Type t, int f) {
   }
 }
 
-void function(std::string &s, const model::Function &f, int index) {
+void function(std::string &s, const model::Function &f, model::FunctionId id) {
   std::string params, format, args;
   for (std::size_t i = 0; i < f.params.size(); ++i) {
     params += fmt::format("{}{} a{}", i ? ", " : "", model::type_name(f.params[i].type), i);
@@ -42,7 +42,7 @@ void function(std::string &s, const model::Function &f, int index) {
   }
   s += fmt::format("{} {}({})\n{{\n", model::type_name(f.result), f.name, params.empty() ? "void" : params);
   s += fmt::format("    printf(\"call {}({})\\n\"{});\n", f.name, format, args);
-  if (f.result != Type::Void) s += fmt::format("    return {};\n", result_of(f.result, index));
+  if (f.result != Type::Void) s += fmt::format("    return {};\n", result_of(f.result, id));
   s += "}\n\n";
 }
 
@@ -86,8 +86,8 @@ scenario::Call parse_call(const std::string &text, const model::Model &m) {
   c.text = text;
   std::size_t open = text.find('(');
   std::string name = text.substr(0, open);
-  for (std::size_t i = 0; i < m.functions.size(); ++i)
-    if (m.functions[i].name == name) c.function = static_cast<int>(i);
+  for (model::FunctionId i : m.functions.ids())
+    if (m.functions[i].name == name) c.function = i;
   if (open == std::string::npos || text.size() < open + 2) return c;
   std::string list = text.substr(open + 1, text.size() - open - 2);
   std::size_t from = 0;
@@ -101,8 +101,8 @@ scenario::Call parse_call(const std::string &text, const model::Model &m) {
 }
 
 /// The snapshots in a harness's output.
-std::vector<scenario::Snapshot> parse_output(const std::string &out, const model::Model &m, int chart) {
-  const model::Chart &c = m.charts[static_cast<std::size_t>(chart)];
+std::vector<scenario::Snapshot> parse_output(const std::string &out, const model::Model &m, model::ChartId chart) {
+  const model::Chart &c = m.charts[chart];
   std::vector<scenario::Snapshot> snaps;
   scenario::Snapshot cur;
   auto reset = [&] {
@@ -124,19 +124,21 @@ std::vector<scenario::Snapshot> parse_output(const std::string &out, const model
     } else if (word == "call") {
       cur.calls.push_back(parse_call(line.substr(5), m));
     } else if (word == "av") {
-      for (std::size_t p = 0; p < c.places.size(); ++p) words >> cur.activation[p];
+      for (model::PlaceId p : c.places.ids()) words >> cur.activation[p];
     } else if (word == "state") {
-      words >> cur.state >> cur.status;
+      long state = -1;  // the engine's number, -1 for none
+      words >> state >> cur.status;
+      cur.state = state >= 0 ? model::PlaceId(static_cast<std::size_t>(state)) : model::PlaceId::none();
     } else if (word == "var") {
       std::size_t i = 0;
       std::string v;
       words >> i >> v;
-      if (i < c.vars.size()) cur.vars[i] = scenario::parse_value(v, c.vars[i].type);
+      if (i < c.vars.size()) cur.vars[model::VarId(i)] = scenario::parse_value(v, c.vars[i].type);
     } else if (word == "timer") {
       std::size_t p = 0;
       std::uint32_t t = 0;
       words >> p >> t;
-      if (p < c.places.size()) cur.timers[p] = t;
+      if (p < c.places.size()) cur.timers[model::PlaceId(p)] = t;
     } else if (word == "end") {
       snaps.push_back(std::move(cur));
       reset();
@@ -147,31 +149,32 @@ std::vector<scenario::Snapshot> parse_output(const std::string &out, const model
 
 /// The interface functions the engine's header declares: those of the chart and of every chart
 /// its places run (sub-charts), in model order.
-std::vector<int> engine_functions(const model::Model &model, int root) {
-  std::vector<bool> chart_seen(model.charts.size()), used(model.functions.size());
-  std::vector<int> todo{root};
+std::vector<model::FunctionId> engine_functions(const model::Model &model, model::ChartId root) {
+  IdMap<model::ChartId, bool> chart_seen(model.charts.size());
+  IdMap<model::FunctionId, bool> used(model.functions.size());
+  std::vector<model::ChartId> todo{root};
   while (!todo.empty()) {
-    int c = todo.back();
+    model::ChartId c = todo.back();
     todo.pop_back();
-    if (c < 0 || c >= static_cast<int>(model.charts.size()) || chart_seen[static_cast<std::size_t>(c)]) continue;
-    chart_seen[static_cast<std::size_t>(c)] = true;
-    const model::Chart &chart = model.charts[static_cast<std::size_t>(c)];
-    for (int f : chart.functions) used[static_cast<std::size_t>(f)] = true;
+    if (!model.charts.contains(c) || chart_seen[c]) continue;
+    chart_seen[c] = true;
+    const model::Chart &chart = model.charts[c];
+    for (model::FunctionId f : chart.functions) used[f] = true;
     for (const auto &p : chart.places) todo.push_back(p.runs);
   }
-  std::vector<int> out;
-  for (std::size_t f = 0; f < used.size(); ++f)
-    if (used[f]) out.push_back(static_cast<int>(f));
+  std::vector<model::FunctionId> out;
+  for (model::FunctionId f : used.ids())
+    if (used[f]) out.push_back(f);
   return out;
 }
 
 }  // namespace
 
-std::string harness_source(const model::Model &model, int chart, const EmitOptions &options,
+std::string harness_source(const model::Model &model, model::ChartId chart, const EmitOptions &options,
                            const std::string &header) {
   // The engine's field names as the C back end chose them for this chart (vars, timers).
-  const auto fields = c_backend::make_context(model, model.charts.at(static_cast<std::size_t>(chart)), options);
-  const model::Chart &c = model.charts[static_cast<std::size_t>(chart)];
+  const auto fields = c_backend::make_context(model, model.charts.at(chart), options);
+  const model::Chart &c = model.charts[chart];
   const std::string &t = c.name;
   std::string s =
       fmt::format("/* Generated by gfec test: the interface of {0} as a test sets it, and a loop that runs\n"
@@ -180,7 +183,7 @@ std::string harness_source(const model::Model &model, int chart, const EmitOptio
                   "/* By function (its index in the model): what `set` gave it; \"\" is false/0. */\n"
                   "static char h_value[{2}][64];\n\n",
                   t, header, model.functions.size() + 1);
-  for (int f : engine_functions(model, chart)) function(s, model.functions[static_cast<std::size_t>(f)], f);
+  for (model::FunctionId f : engine_functions(model, chart)) function(s, model.functions[f], f);
   s += fmt::format("static void h_dump(const {} *m)\n{{\n    int p;\n    printf(\"av\");\n", t);
   s += fmt::format(
       "    for (p = 0; p < {0}_PLACE_COUNT; ++p) {{\n        printf(\" %u\", {0}_activation(m, p));\n    }}\n"
@@ -188,13 +191,13 @@ std::string harness_source(const model::Model &model, int chart, const EmitOptio
       t);
   if (c.kind == model::Chart::Kind::Fsm)
     s += fmt::format("    printf(\"state %d %d\\n\", {0}_state(m), {0}_status(m));\n", t);
-  for (std::size_t i = 0; i < c.vars.size(); ++i) {
+  for (model::VarId i : c.vars.ids()) {
     auto [f, a] = interp::c_printf_of(c.vars[i].type, "m->" + fields->var_field[i]);
-    s += fmt::format("    printf(\"var {} {}\\n\", {});\n", i, f, a);
+    s += fmt::format("    printf(\"var {} {}\\n\", {});\n", i.index(), f, a);
   }
-  for (std::size_t p = 0; p < c.places.size(); ++p)
+  for (model::PlaceId p : c.places.ids())
     if (c.places[p].timed)
-      s += fmt::format("    printf(\"timer {} %lu\\n\", (unsigned long)m->{});\n", p, fields->timer_field[p]);
+      s += fmt::format("    printf(\"timer {} %lu\\n\", (unsigned long)m->{});\n", p.index(), fields->timer_field[p]);
   s += "    printf(\"end\\n\");\n}\n\n";
   s += fmt::format("int main(void)\n{{\n    static {0} m;\n    char word[16];\n    {0}_init(&m);\n    h_dump(&m);\n"
                    "    while (scanf(\"%15s\", word) == 1) {{\n"
@@ -224,7 +227,7 @@ EngineBuilds::~EngineBuilds() {
   fs::remove_all(folder_, ec);
 }
 
-EngineBuilds::Build EngineBuilds::get(const model::Model &model, int chart, const std::string &source_name) {
+EngineBuilds::Build EngineBuilds::get(const model::Model &model, model::ChartId chart, const std::string &source_name) {
   auto backend = make_backend("c");
   if (!backend) return {"", "gfec was built without its C back end"};
   EmitOptions o;
@@ -270,7 +273,7 @@ scenario::Run EngineBuilds::run(const Build &build, const model::Model &model, c
   scenario::Run run;
   std::string steps;
   for (const scenario::Step &s : test.steps) {
-    if (s.kind == scenario::Step::Kind::Set) steps += fmt::format("set {} {}\n", s.function, s.value);
+    if (s.kind == scenario::Step::Kind::Set) steps += fmt::format("set {} {}\n", s.function.index(), s.value);
     if (s.kind == scenario::Step::Kind::Tick)
       for (unsigned long i = 0; i < s.count; ++i) steps += "tick\n";
   }

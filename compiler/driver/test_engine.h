@@ -44,7 +44,7 @@ public:
 
   /// The harness for chart `chart` of `model` (generated from `source_name`): built on first
   /// use, then reused for every engine with the same generated code. Thread-safe.
-  Build get(const model::Model &model, int chart, const std::string &source_name);
+  Build get(const model::Model &model, model::ChartId chart, const std::string &source_name);
 
   /// Runs `test` on a built harness; `id` names its input and output files.
   scenario::Run run(const Build &build, const model::Model &model, const scenario::Test &test, int id);
@@ -59,6 +59,7 @@ private:
 };
 
 /// harness.c for chart `chart`, whose engine (emitted with `options`) has the header `header`.
-std::string harness_source(const model::Model &model, int chart, const EmitOptions &options, const std::string &header);
+std::string harness_source(const model::Model &model, model::ChartId chart, const EmitOptions &options,
+                           const std::string &header);
 
 }  // namespace gfec

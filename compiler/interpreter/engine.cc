@@ -7,30 +7,33 @@
 
 namespace gfec::interp {
 
+using model::PlaceId;
+using model::TransitionId;
+
 namespace {
 constexpr std::uint32_t kTimerMax = std::numeric_limits<std::uint32_t>::max();
 }  // namespace
 
-Engine::Engine(const model::Model &model, int chart, EngineOptions options) : Engine(model, chart, options, "", 1) {}
+Engine::Engine(const model::Model &model, model::ChartId chart, EngineOptions options)
+    : Engine(model, chart, options, "", 1) {}
 
-Engine::Engine(const model::Model &model, int chart, EngineOptions options, std::string path, int depth)
-    : model_(model), chart_(model.charts.at(static_cast<std::size_t>(chart))), options_(options),
-      path_(std::move(path)), prefix_(path_.empty() ? "" : path_ + "."), depth_(depth) {
+Engine::Engine(const model::Model &model, model::ChartId chart, EngineOptions options, std::string path, int depth)
+    : model_(model), chart_(model.charts.at(chart)), options_(options), path_(std::move(path)),
+      prefix_(path_.empty() ? "" : path_ + "."), depth_(depth) {
   // The validator rejects charts that run themselves, so this recursion ends.
-  instances_.resize(chart_.places.size());
-  for (std::size_t p = 0; p < chart_.places.size(); ++p) {
-    const model::Place &place = chart_.places[p];
-    if (place.runs >= 0) instances_[p].reset(new Engine(model, place.runs, options, prefix_ + place.name, depth + 1));
-  }
+  for (const model::Place &place : chart_.places)
+    instances_.push_back(
+        place.runs ? std::unique_ptr<Engine>(new Engine(model, place.runs, options, prefix_ + place.name, depth + 1))
+                   : nullptr);
   init();
 }
 
-const Engine *Engine::instance(int place) const {
-  if (place < 0 || static_cast<std::size_t>(place) >= instances_.size()) return nullptr;
-  return instances_[static_cast<std::size_t>(place)].get();
+const Engine *Engine::instance(PlaceId place) const {
+  if (!chart_.places.contains(place)) return nullptr;
+  return instances_[place].get();
 }
 
-bool Engine::active(const std::vector<int> &path) const {
+bool Engine::active(const std::vector<PlaceId> &path) const {
   const Engine *e = this;
   for (std::size_t k = 0; k < path.size(); ++k) {
     if (!e || e->activation(path[k]) == 0) return false;
@@ -39,7 +42,7 @@ bool Engine::active(const std::vector<int> &path) const {
   return !path.empty();
 }
 
-bool Engine::outcome(int place, int status) const {
+bool Engine::outcome(PlaceId place, int status) const {
   const Engine *sub = instance(place);
   return activation(place) > 0 && sub && sub->is_fsm() && sub->status() == status;
 }
@@ -60,22 +63,22 @@ void Engine::init() {
   const std::size_t n = chart_.places.size();
   av_.assign(n, 0);
   timers_.assign(n, 0);
-  state_ = -1;
+  state_ = PlaceId::none();
   status_ = 0;
-  for (std::size_t p = 0; p < n; ++p) {
+  for (PlaceId p : chart_.places.ids()) {
     if (!chart_.places[p].initial) continue;
     av_[p] = 1;
-    if (state_ < 0) state_ = static_cast<int>(p);
+    if (!state_) state_ = p;
   }
   started_ = false;
   tick_ = 0;
   agent_ = 0;
-  reports_.assign(static_cast<std::size_t>(chart_.team), -1);
+  reports_.assign(static_cast<std::size_t>(chart_.team), PlaceId::none());
   vars_.clear();
   for (const model::Var &v : chart_.vars) vars_.push_back(Value::zero(v.type));
   // Initialisers are constant: no calls, no vars, no timers (the validator sees to it).
   Frame f = frame(nullptr, nullptr, 0);
-  for (std::size_t i = 0; i < chart_.vars.size(); ++i)
+  for (model::VarId i : chart_.vars.ids())
     if (chart_.vars[i].init)
       vars_[i] = convert(evaluate(*chart_.vars[i].init, f), chart_.vars[i].type, chart_.vars[i].range);
 }
@@ -84,16 +87,16 @@ void Engine::set_agent(int agent) {
   if (agent >= 0 && agent < chart_.team) agent_ = agent;  // agent() stays within 0 ... N-1
 }
 
-void Engine::report(int agent, int state) {
+void Engine::report(int agent, PlaceId state) {
   if (agent < 0 || agent >= chart_.team || agent == agent_) return;
-  if (state < 0 || static_cast<std::size_t>(state) >= chart_.places.size()) return;
+  if (!chart_.places.contains(state)) return;
   reports_[static_cast<std::size_t>(agent)] = state;
 }
 
-unsigned Engine::activation(int place) const {
-  if (place < 0 || static_cast<std::size_t>(place) >= chart_.places.size()) return 0;
+unsigned Engine::activation(PlaceId place) const {
+  if (!chart_.places.contains(place)) return 0;
   if (is_fsm()) return place == state_ ? 1u : 0u;
-  return av_[static_cast<std::size_t>(place)];
+  return av_[place];
 }
 
 void Engine::run(Environment &env, EventLog *log) {
@@ -109,24 +112,23 @@ void Engine::step(Frame &f) {
   if (!started_) {
     // §5.1: the first tick begins with the entry blocks of the initial places.
     started_ = true;
-    for (std::size_t p = 0; p < chart_.places.size(); ++p)
+    for (PlaceId p : chart_.places.ids())
       if (chart_.places[p].initial)
-        block(EventKind::Entry, "entry", static_cast<int>(p),
-              chart_.places[p].entry ? &*chart_.places[p].entry : nullptr, f);
+        block(EventKind::Entry, "entry", p, chart_.places[p].entry ? &*chart_.places[p].entry : nullptr, f);
   }
   if (is_fsm()) run_fsm(f);
   else run_sfc(f);
 }
 
-void Engine::start(int place, Frame &f) {
-  Engine *sub = instances_[static_cast<std::size_t>(place)].get();
+void Engine::start(PlaceId place, Frame &f) {
+  Engine *sub = instances_[place].get();
   if (!sub) return;
   if (f.log) f.log->add(EventKind::Start, depth_, fmt::format("start {}: {}", sub->path_, sub->chart_.name));
   sub->init();
 }
 
-void Engine::stop(int place, Frame &f) {
-  Engine *sub = instances_[static_cast<std::size_t>(place)].get();
+void Engine::stop(PlaceId place, Frame &f) {
+  Engine *sub = instances_[place].get();
   if (!sub) return;
   if (f.log) f.log->add(EventKind::Stop, depth_, fmt::format("stop {}: {}", sub->path_, sub->chart_.name));
   sub->stop_all(f.env, f.log, f.tick);
@@ -134,8 +136,8 @@ void Engine::stop(int place, Frame &f) {
 
 void Engine::stop_all(Environment *env, EventLog *log, std::uint64_t tick) {
   Frame f = frame(env, log, tick);
-  auto leave = [&](int p) {
-    const model::Place &place = chart_.places[static_cast<std::size_t>(p)];
+  auto leave = [&](PlaceId p) {
+    const model::Place &place = chart_.places[p];
     stop(p, f);
     block(EventKind::Exit, "exit", p, place.exit ? &*place.exit : nullptr, f);
   };
@@ -143,12 +145,12 @@ void Engine::stop_all(Environment *env, EventLog *log, std::uint64_t tick) {
     if (status_ == 0) leave(state_);  // a terminal state runs nothing and has no exit
     return;
   }
-  for (std::size_t p = 0; p < chart_.places.size(); ++p)
-    if (av_[p] > 0) leave(static_cast<int>(p));
+  for (PlaceId p : chart_.places.ids())
+    if (av_[p] > 0) leave(p);
 }
 
-void Engine::tick_instance(int place, Frame &f) {
-  Engine *sub = instances_[static_cast<std::size_t>(place)].get();
+void Engine::tick_instance(PlaceId place, Frame &f) {
+  Engine *sub = instances_[place].get();
   if (!sub) return;
   if (f.log) f.log->add(EventKind::RunInstance, depth_, fmt::format("run {}: {}", sub->path_, sub->chart_.name));
   Frame own = sub->frame(f.env, f.log, f.tick);
@@ -156,34 +158,32 @@ void Engine::tick_instance(int place, Frame &f) {
 }
 
 void Engine::log_instances(EventLog &log) const {
-  for (std::size_t p = 0; p < instances_.size(); ++p) {
+  for (PlaceId p : instances_.ids()) {
     const Engine *sub = instances_[p].get();
-    if (!sub || activation(static_cast<int>(p)) == 0) continue;
+    if (!sub || activation(p) == 0) continue;
     std::string av = "av " + sub->path_ + ":";
-    for (std::size_t q = 0; q < sub->chart_.places.size(); ++q)
-      av += fmt::format(" {}", sub->activation(static_cast<int>(q)));
+    for (PlaceId q : sub->chart_.places.ids()) av += fmt::format(" {}", sub->activation(q));
     log.add(EventKind::InstanceAv, 1, std::move(av));
     if (sub->is_fsm()) {
       const char *status = sub->status_ == 0 ? "running" : sub->status_ > 0 ? "succeeded" : "failed";
       log.add(EventKind::InstanceState, 1,
-              fmt::format("state {}: {} {}", sub->path_,
-                          sub->chart_.places.at(static_cast<std::size_t>(sub->state_)).name, status));
+              fmt::format("state {}: {} {}", sub->path_, sub->chart_.places.at(sub->state_).name, status));
     }
     sub->log_instances(log);
   }
 }
 
 std::string Engine::label(const model::Transition &t) const {
-  auto side = [&](const IndexList &places) {
+  auto side = [&](const model::PlaceList &places) {
     std::string s;
-    for (int p : places) s += (s.empty() ? "" : ", ") + chart_.places.at(static_cast<std::size_t>(p)).name;
+    for (PlaceId p : places) s += (s.empty() ? "" : ", ") + chart_.places.at(p).name;
     return places.size() == 1 ? s : "(" + s + ")";
   };
   return side(t.inputs) + " -> " + side(t.outputs);
 }
 
-bool Engine::condition(int t, Frame &f) {
-  const model::Transition &tr = chart_.transitions[static_cast<std::size_t>(t)];
+bool Engine::condition(TransitionId t, Frame &f) {
+  const model::Transition &tr = chart_.transitions[t];
   if (!tr.condition) return true;
   const std::size_t mark = f.log ? f.log->size() : 0;
   f.depth = depth_ + 1;
@@ -194,10 +194,8 @@ bool Engine::condition(int t, Frame &f) {
   return holds;
 }
 
-void Engine::block(EventKind kind, const char *word, int place, const std::vector<model::Stmt> *stmts, Frame &f) {
-  if (f.log)
-    f.log->add(kind, depth_,
-               fmt::format("{} {}{}", word, prefix_, chart_.places.at(static_cast<std::size_t>(place)).name));
+void Engine::block(EventKind kind, const char *word, PlaceId place, const std::vector<model::Stmt> *stmts, Frame &f) {
+  if (f.log) f.log->add(kind, depth_, fmt::format("{} {}{}", word, prefix_, chart_.places.at(place).name));
   if (!stmts) return;
   f.depth = depth_ + 1;
   execute(*stmts, f);
@@ -205,92 +203,88 @@ void Engine::block(EventKind kind, const char *word, int place, const std::vecto
 
 void Engine::run_sfc(Frame &f) {
   const std::size_t n = chart_.places.size();
-  const std::vector<std::uint32_t> before = av_;
+  const IdMap<PlaceId, std::uint32_t> before = av_;
   // 1. Timers of the places active at the start of the tick.
-  for (std::size_t p = 0; p < n; ++p)
+  for (PlaceId p : chart_.places.ids())
     if (av_[p] > 0 && timers_[p] < kTimerMax) ++timers_[p];
   // 2. Transitions in declaration order; produced activation waits in `add`.
-  std::vector<std::uint32_t> avail = av_, add(n, 0);
-  for (std::size_t t = 0; t < chart_.transitions.size(); ++t) {
+  IdMap<PlaceId, std::uint32_t> avail = av_, add(n, 0);
+  for (TransitionId t : chart_.transitions.ids()) {
     const model::Transition &tr = chart_.transitions[t];
     // Open: every input place has activation left (a place listed twice needs two).
-    std::map<int, std::uint32_t> need;
-    for (int p : tr.inputs) ++need[p];
+    std::map<PlaceId, std::uint32_t> need;
+    for (PlaceId p : tr.inputs) ++need[p];
     bool open = true;
-    for (auto [p, k] : need) open = open && avail[static_cast<std::size_t>(p)] >= k;
-    if (!open || !condition(static_cast<int>(t), f)) continue;
-    for (int p : tr.inputs) --avail[static_cast<std::size_t>(p)];
-    for (int p : tr.outputs) ++add[static_cast<std::size_t>(p)];
+    for (auto [p, k] : need) open = open && avail[p] >= k;
+    if (!open || !condition(t, f)) continue;
+    for (PlaceId p : tr.inputs) --avail[p];
+    for (PlaceId p : tr.outputs) ++add[p];
     if (f.log) f.log->add(EventKind::Fire, depth_, fmt::format("fire {}{}: {}", prefix_, tr.name, label(tr)));
   }
   // 3. Commit; compare the start of the tick with its end: all exits, then all entries. A
   // place's instance stops before its exit block and starts before its entry block (§9).
-  for (std::size_t p = 0; p < n; ++p) av_[p] = avail[p] + add[p];
-  for (std::size_t p = 0; p < n; ++p)
+  for (PlaceId p : chart_.places.ids()) av_[p] = avail[p] + add[p];
+  for (PlaceId p : chart_.places.ids())
     if (before[p] > 0 && av_[p] == 0) {
-      stop(static_cast<int>(p), f);
-      block(EventKind::Exit, "exit", static_cast<int>(p), chart_.places[p].exit ? &*chart_.places[p].exit : nullptr, f);
+      stop(p, f);
+      block(EventKind::Exit, "exit", p, chart_.places[p].exit ? &*chart_.places[p].exit : nullptr, f);
     }
-  for (std::size_t p = 0; p < n; ++p)
+  for (PlaceId p : chart_.places.ids())
     if (before[p] == 0 && av_[p] > 0) {
       timers_[p] = 0;
-      start(static_cast<int>(p), f);
-      block(EventKind::Entry, "entry", static_cast<int>(p), chart_.places[p].entry ? &*chart_.places[p].entry : nullptr,
-            f);
+      start(p, f);
+      block(EventKind::Entry, "entry", p, chart_.places[p].entry ? &*chart_.places[p].entry : nullptr, f);
     }
   // The observation hooks: places that lost, then gained activation; transitions whose inputs
   // are all active now but were not all active at the start of the tick. Only the root's: the
   // engine's hooks report the compiled chart.
   if (f.log && path_.empty()) {
-    for (std::size_t p = 0; p < n; ++p)
+    for (PlaceId p : chart_.places.ids())
       if (before[p] > 0 && av_[p] == 0) f.log->add(EventKind::Lost, 1, "lost " + chart_.places[p].name);
-    for (std::size_t p = 0; p < n; ++p)
+    for (PlaceId p : chart_.places.ids())
       if (before[p] == 0 && av_[p] > 0) f.log->add(EventKind::Gained, 1, "gained " + chart_.places[p].name);
     for (const model::Transition &tr : chart_.transitions) {
       if (tr.inputs.empty()) continue;
       bool was = true, is = true;
-      for (int p : tr.inputs) {
-        was = was && before[static_cast<std::size_t>(p)] > 0;
-        is = is && av_[static_cast<std::size_t>(p)] > 0;
+      for (PlaceId p : tr.inputs) {
+        was = was && before[p] > 0;
+        is = is && av_[p] > 0;
       }
       if (!was && is) f.log->add(EventKind::Enabled, 1, "enabled " + tr.name);
     }
   }
   // 4. Actions of the active places, in declaration order; each then ticks its instance (§9).
-  for (std::size_t p = 0; p < n; ++p) {
+  for (PlaceId p : chart_.places.ids()) {
     if (av_[p] == 0) continue;
-    if (!chart_.places[p].action.empty())
-      block(EventKind::Action, "action", static_cast<int>(p), &chart_.places[p].action, f);
-    tick_instance(static_cast<int>(p), f);
+    if (!chart_.places[p].action.empty()) block(EventKind::Action, "action", p, &chart_.places[p].action, f);
+    tick_instance(p, f);
   }
 }
 
 void Engine::run_fsm(Frame &f) {
   // §7: in a terminal state nothing happens.
   if (status_ != 0) return;
-  const std::size_t cur = static_cast<std::size_t>(state_);
-  if (timers_[cur] < kTimerMax) ++timers_[cur];
-  const int from = state_;
-  int to = from;
+  if (timers_[state_] < kTimerMax) ++timers_[state_];
+  const PlaceId from = state_;
+  PlaceId to = from;
   // The first transition leaving the current state whose precondition holds fires (one a tick).
-  for (std::size_t t = 0; t < chart_.transitions.size(); ++t) {
+  for (TransitionId t : chart_.transitions.ids()) {
     const model::Transition &tr = chart_.transitions[t];
     if (tr.inputs.empty() || tr.outputs.empty() || tr.inputs[0] != from) continue;
-    if (!condition(static_cast<int>(t), f)) continue;
+    if (!condition(t, f)) continue;
     to = tr.outputs[0];
     if (f.log) f.log->add(EventKind::Fire, depth_, fmt::format("fire {}{}: {}", prefix_, tr.name, label(tr)));
     break;
   }
-  const std::size_t now = static_cast<std::size_t>(to);
   if (to != from) {
-    const model::Place &old = chart_.places[static_cast<std::size_t>(from)], &neu = chart_.places[now];
+    const model::Place &old = chart_.places[from], &neu = chart_.places[to];
     // The old state's instance stops, then its exit block runs while it is still current; then
     // the new state becomes current, its instance starts and its entry block runs (§9, §10).
     stop(from, f);
     block(EventKind::Exit, "exit", from, old.exit ? &*old.exit : nullptr, f);
     state_ = to;
     if (neu.terminal != model::Terminal::None) status_ = neu.terminal == model::Terminal::Success ? 1 : -1;
-    timers_[now] = 0;
+    timers_[to] = 0;
     start(state_, f);
     block(EventKind::Entry, "entry", state_, neu.entry ? &*neu.entry : nullptr, f);
     if (f.log && path_.empty()) {
@@ -310,7 +304,7 @@ void Engine::run_fsm(Frame &f) {
   }
   // The action of the (new) current state, then one tick of its instance; a terminal state has
   // neither.
-  const model::Place &p = chart_.places[now];
+  const model::Place &p = chart_.places[to];
   if (p.terminal != model::Terminal::None) return;
   if (!p.action.empty()) block(EventKind::Action, "action", state_, &p.action, f);
   tick_instance(state_, f);
@@ -319,12 +313,11 @@ void Engine::run_fsm(Frame &f) {
 void Engine::end_of_tick(Frame &f) {
   if (!f.log) return;
   std::string av = "av";
-  for (std::size_t p = 0; p < chart_.places.size(); ++p) av += fmt::format(" {}", activation(static_cast<int>(p)));
+  for (PlaceId p : chart_.places.ids()) av += fmt::format(" {}", activation(p));
   f.log->add(EventKind::Av, 1, std::move(av));
   if (is_fsm()) {
     const char *status = status_ == 0 ? "running" : status_ > 0 ? "succeeded" : "failed";
-    f.log->add(EventKind::State, 1,
-               fmt::format("state {} {}", chart_.places.at(static_cast<std::size_t>(state_)).name, status));
+    f.log->add(EventKind::State, 1, fmt::format("state {} {}", chart_.places.at(state_).name, status));
   }
 }
 

@@ -23,7 +23,7 @@ struct EngineOptions {
 /// ("Search", "Search.Grab"). Instances are started, ticked and stopped by their parent.
 class Engine {
 public:
-  Engine(const model::Model &model, int chart, EngineOptions options = {});
+  Engine(const model::Model &model, model::ChartId chart, EngineOptions options = {});
 
   /// `_init`: the initial marking (or state), timers 0, vars set to their initialisers, and the
   /// same for every sub-chart instance. Calls no code of the chart. Throws RuntimeError if an
@@ -34,72 +34,73 @@ public:
   void run(Environment &env, EventLog *log);
 
   /// The instance that place `place` runs, or null if it runs no chart.
-  const Engine *instance(int place) const;
+  const Engine *instance(model::PlaceId place) const;
   /// `active(P.Q.R)`: every place along `path` is active, each in the instance the previous
   /// one runs.
-  bool active(const std::vector<int> &path) const;
+  bool active(const std::vector<model::PlaceId> &path) const;
   /// `succeeded(P)` (1) / `failed(P)` (-1): P is active and its fsm instance has that status.
-  bool outcome(int place, int status) const;
+  bool outcome(model::PlaceId place, int status) const;
   /// A team machine (docs/language.md "Teams"), as the C engine's X_set_agent and X_report:
   /// this engine's agent number (init() makes it 0), and agent `agent`'s state as it arrives
   /// (ignored for the own number, a number out of range or an invalid state). init() forgets
   /// every report. A number out of range is ignored by set_agent too, and both do nothing for
   /// a machine that is no team.
   void set_agent(int agent);
-  void report(int agent, int state);
+  void report(int agent, model::PlaceId state);
   int agent() const { return agent_; }
   int team_size() const { return chart_.team; }
-  const std::vector<int> &reports() const { return reports_; }
+  /// By agent: the state it last reported, or none.
+  const std::vector<model::PlaceId> &reports() const { return reports_; }
 
-  unsigned activation(int place) const;
-  int state() const { return state_; }    ///< fsm: the current state's index
-  int status() const { return status_; }  ///< fsm: 0 running, 1 succeeded, -1 failed
+  unsigned activation(model::PlaceId place) const;
+  model::PlaceId state() const { return state_; }  ///< fsm: the current state
+  int status() const { return status_; }           ///< fsm: 0 running, 1 succeeded, -1 failed
   std::uint64_t ticks() const { return tick_; }
-  const std::vector<Value> &vars() const { return vars_; }
-  std::uint32_t timer(int place) const { return timers_.at(static_cast<std::size_t>(place)); }
+  const IdMap<model::VarId, Value> &vars() const { return vars_; }
+  std::uint32_t timer(model::PlaceId place) const { return timers_.at(place); }
   const model::Chart &chart() const { return chart_; }
   bool is_fsm() const { return chart_.kind == model::Chart::Kind::Fsm; }
 
 private:
-  Engine(const model::Model &model, int chart, EngineOptions options, std::string path, int depth);
+  Engine(const model::Model &model, model::ChartId chart, EngineOptions options, std::string path, int depth);
   /// One tick of this chart (§5.1 or §7) in `f`, a frame of this engine (frame()): its events
   /// are logged from depth `depth_`.
   void step(Frame &f);
   /// §9: reset place `place`'s instance as `_init` would (no code runs), before its entry block.
-  void start(int place, Frame &f);
+  void start(model::PlaceId place, Frame &f);
   /// §9: stop place `place`'s instance: the active places of the instance, in declaration
   /// order, each stopping its own instance and then running its exit block (innermost first).
-  void stop(int place, Frame &f);
+  void stop(model::PlaceId place, Frame &f);
   void stop_all(Environment *env, EventLog *log, std::uint64_t tick);
   /// §9: one tick of place `place`'s instance, right after the place's action block.
-  void tick_instance(int place, Frame &f);
+  void tick_instance(model::PlaceId place, Frame &f);
   /// The activation (and state) of every running instance, for people: `av Search: 0 1`.
   void log_instances(EventLog &log) const;
   Frame frame(Environment *env, EventLog *log, std::uint64_t tick);
   void run_sfc(Frame &f);
   void run_fsm(Frame &f);
   /// Evaluates transition `t`'s condition (absent: true) and logs it.
-  bool condition(int t, Frame &f);
+  bool condition(model::TransitionId t, Frame &f);
   /// Runs a place's block, if it has one, logged under `kind` and the place's name.
-  void block(EventKind kind, const char *word, int place, const std::vector<model::Stmt> *stmts, Frame &f);
+  void block(EventKind kind, const char *word, model::PlaceId place, const std::vector<model::Stmt> *stmts, Frame &f);
   void end_of_tick(Frame &f);
   std::string label(const model::Transition &t) const;
 
   const model::Model &model_;
   const model::Chart &chart_;
   EngineOptions options_;
-  std::string path_;                                ///< "" for the root; "Search", "Search.Grab" for instances
-  std::string prefix_;                              ///< path_ + "." (or ""): names in the log are prefixed with it
-  int depth_ = 1;                                   ///< the indentation of this chart's own events
-  std::vector<std::unique_ptr<Engine>> instances_;  ///< by place: the instance it runs, or null
-  std::vector<std::uint32_t> av_;                   ///< sfc: activation counters (C's unsigned)
-  int state_ = -1;                                  ///< fsm
-  int status_ = 0;                                  ///< fsm
-  std::vector<std::uint32_t> timers_;               ///< ticks active, by place (saturating, as in C)
-  std::vector<Value> vars_;
-  bool started_ = false;      ///< the first tick has run the initial entries
-  int agent_ = 0;             ///< team machine: this engine's agent number
-  std::vector<int> reports_;  ///< team machine: by agent, its last state (-1: none)
+  std::string path_;    ///< "" for the root; "Search", "Search.Grab" for instances
+  std::string prefix_;  ///< path_ + "." (or ""): names in the log are prefixed with it
+  int depth_ = 1;       ///< the indentation of this chart's own events
+  IdMap<model::PlaceId, std::unique_ptr<Engine>> instances_;  ///< the instance a place runs, or null
+  IdMap<model::PlaceId, std::uint32_t> av_;                   ///< sfc: activation counters (C's unsigned)
+  model::PlaceId state_;                                      ///< fsm
+  int status_ = 0;                                            ///< fsm
+  IdMap<model::PlaceId, std::uint32_t> timers_;               ///< ticks active (saturating, as in C)
+  IdMap<model::VarId, Value> vars_;
+  bool started_ = false;                 ///< the first tick has run the initial entries
+  int agent_ = 0;                        ///< team machine: this engine's agent number
+  std::vector<model::PlaceId> reports_;  ///< team machine: by agent, its last state (none: none yet)
   std::uint64_t tick_ = 0;
 };
 

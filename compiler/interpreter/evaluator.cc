@@ -80,14 +80,14 @@ std::string call_text(const model::Function &fn, const std::vector<Value> &args)
 }
 
 Value call(const Expr &e, Frame &f) {
-  const model::Function &fn = f.model.functions.at(static_cast<std::size_t>(e.index));
+  const model::Function &fn = f.model.functions.at(e.function());
   std::vector<Value> args;
   for (std::size_t i = 0; i < e.args.size(); ++i) {
     Value v = evaluate(e.args[i], f);
     args.push_back(i < fn.params.size() ? convert(v, fn.params[i].type, e.args[i].range) : v);
   }
   if (!f.env) throw RuntimeError(e.range, fmt::format("'{}' is called in a constant expression", fn.name));
-  Value result = f.env->call(e.index, args, f.tick);
+  Value result = f.env->call(e.function(), args, f.tick);
   std::string text = call_text(fn, args);
   if (fn.result != Type::Void) {
     result = convert(result, fn.result, e.range);
@@ -132,12 +132,12 @@ Value evaluate(const Expr &e, Frame &f) {
   case Expr::Kind::Float:
   case Expr::Kind::String:
   case Expr::Kind::Ticks: return literal(e);
-  case Expr::Kind::Var: return f.vars.at(static_cast<std::size_t>(e.index));
+  case Expr::Kind::Var: return f.vars.at(e.var());
   case Expr::Kind::Const: {
-    const model::Const &k = f.model.consts.at(static_cast<std::size_t>(e.index));
+    const model::Const &k = f.model.consts.at(e.constant());
     return convert(literal(k.value), k.type, e.range);
   }
-  case Expr::Kind::Elapsed: return Value::of_ticks(f.timers.at(static_cast<std::size_t>(e.index)));
+  case Expr::Kind::Elapsed: return Value::of_ticks(f.timers.at(e.place()));
   case Expr::Kind::Call: return call(e, f);
   case Expr::Kind::Unary: return unary(e, f);
   case Expr::Kind::Binary: return binary(e, f);
@@ -148,14 +148,14 @@ Value evaluate(const Expr &e, Frame &f) {
     // Sub-charts (docs/language.md "Sub-charts"): the state as it is now.
     if (!f.engine) throw RuntimeError(e.range, "a sub-chart's state cannot be read here");
     if (e.kind == Expr::Kind::Active) return Value::of_bool(f.engine->active(e.path));
-    return Value::of_bool(f.engine->outcome(e.index, e.kind == Expr::Kind::Succeeded ? 1 : -1));
+    return Value::of_bool(f.engine->outcome(e.place(), e.kind == Expr::Kind::Succeeded ? 1 : -1));
   }
   case Expr::Kind::TeamCount: {
     // The other agents whose last report is the state, as the reports stand now.
     if (!f.reports) throw RuntimeError(e.range, "'team()' is read outside a team machine");
     int n = 0;
     for (std::size_t a = 0; a < f.reports->size(); ++a)
-      if (static_cast<int>(a) != f.agent && (*f.reports)[a] == e.index) ++n;
+      if (static_cast<int>(a) != f.agent && (*f.reports)[a] == e.place()) ++n;
     return Value::of_int(n);
   }
   case Expr::Kind::Agent: return Value::of_int(f.agent);
@@ -170,14 +170,13 @@ void execute(const std::vector<model::Stmt> &block, Frame &f) {
     switch (s.kind) {
     case model::Stmt::Kind::Call: evaluate(s.expr, f); break;
     case model::Stmt::Kind::Assign: {
-      Value &slot = f.vars.at(static_cast<std::size_t>(s.var));
+      Value &slot = f.vars.at(s.var);
       Value v = evaluate(s.expr, f);
       if (s.op != AssignOp::Set) v = arith(s.op == AssignOp::Add ? BinaryOp::Add : BinaryOp::Sub, slot, v, s.range);
       slot = convert(v, slot.type, s.range);
       if (f.log)
-        f.log->add(
-            EventKind::Assign, f.depth,
-            fmt::format("set {} = {}", f.chart.vars.at(static_cast<std::size_t>(s.var)).name, format_value(slot)));
+        f.log->add(EventKind::Assign, f.depth,
+                   fmt::format("set {} = {}", f.chart.vars.at(s.var).name, format_value(slot)));
       break;
     }
     case model::Stmt::Kind::Verbatim:

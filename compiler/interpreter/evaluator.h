@@ -19,27 +19,27 @@ class Engine;
 class Environment {
 public:
   virtual ~Environment() = default;
-  /// The result of interface function `function` (an index into Model::functions) called with
-  /// `args` (already converted to its parameter types) during tick `tick` (counted from 1).
+  /// The result of interface function `function` called with `args` (already converted to its
+  /// parameter types) during tick `tick` (counted from 1).
   /// The interpreter converts the result to the function's type; a void function's is ignored.
-  virtual Value call(int function, const std::vector<Value> &args, std::uint64_t tick) = 0;
+  virtual Value call(model::FunctionId function, const std::vector<Value> &args, std::uint64_t tick) = 0;
 };
 
 /// Everything an expression can read or change while it is evaluated.
 struct Frame {
   const model::Model &model;
   const model::Chart &chart;
-  std::vector<Value> &vars;                  ///< by Chart::vars index
-  const std::vector<std::uint32_t> &timers;  ///< ticks, by place index
-  Environment *env = nullptr;                ///< null: a constant expression, where calls are errors
-  EventLog *log = nullptr;                   ///< null: log nothing
+  IdMap<model::VarId, Value> &vars;
+  const IdMap<model::PlaceId, std::uint32_t> &timers;  ///< ticks
+  Environment *env = nullptr;                          ///< null: a constant expression, where calls are errors
+  EventLog *log = nullptr;                             ///< null: log nothing
   std::uint64_t tick = 0;
   int depth = 1;                   ///< indentation of the events logged
   const Engine *engine = nullptr;  ///< the chart's engine: active(), succeeded(), failed()
   /// A team machine (docs/language.md "Teams"): this engine's agent number, and by agent the
-  /// state each one last reported (-1: none). Null for a machine that is no team.
+  /// state each one last reported (or none). Null for a machine that is no team.
   int agent = 0;
-  const std::vector<int> *reports = nullptr;
+  const std::vector<model::PlaceId> *reports = nullptr;
 };
 
 Value evaluate(const model::Expr &e, Frame &f);

@@ -68,13 +68,10 @@ std::optional<Value> parse_value(std::string_view text, model::Type t) {
   return Value::of_double(v);
 }
 
-constexpr int kTickColumn = -1;
-constexpr int kBadColumn = -2;
-
-int find_function(const model::Model &m, std::string_view name) {
-  for (std::size_t i = 0; i < m.functions.size(); ++i)
-    if (m.functions[i].name == name) return static_cast<int>(i);
-  return -1;
+model::FunctionId find_function(const model::Model &m, std::string_view name) {
+  for (model::FunctionId i : m.functions.ids())
+    if (m.functions[i].name == name) return i;
+  return {};
 }
 
 }  // namespace
@@ -99,8 +96,7 @@ InputTrace::InputTrace(const model::Model &model, const SourceManager &sources, 
       header = false;
       for (const Field &f : fields) {
         if (f.text == "tick") {
-          columns_.push_back(kTickColumn);
-          column_agent_.push_back(-1);
+          columns_.push_back({Column::Kind::Tick, {}, -1});
           continue;
         }
         // `F@k`: function F, agent k only.
@@ -116,26 +112,26 @@ InputTrace::InputTrace(const model::Model &model, const SourceManager &sources, 
             diag.error(f.range, ErrorKind::Trace,
                        agents > 1 ? fmt::format("'{}' names no agent of this run (agents 0 to {})", f.text, agents - 1)
                                   : fmt::format("'{}' names an agent, but this run has only one", f.text));
-            columns_.push_back(kBadColumn);
-            column_agent_.push_back(-1);
+            columns_.push_back({Column::Kind::Bad, {}, -1});
             continue;
           }
           agent = static_cast<int>(k);
         }
-        int fn = find_function(model, name);
-        if (fn < 0) {
+        model::FunctionId fn = find_function(model, name);
+        if (!fn) {
           diag.error(f.range, ErrorKind::Trace, fmt::format("no interface function '{}' for this column", name));
-          fn = kBadColumn;
-        } else if (model.functions[static_cast<std::size_t>(fn)].result == model::Type::Void) {
-          diag.error(f.range, ErrorKind::Trace, fmt::format("'{}' returns nothing, so it takes no input", name));
-          fn = kBadColumn;
-        } else {
-          for (std::size_t c = 0; c < columns_.size(); ++c)
-            if (columns_[c] == fn && column_agent_[c] == agent)
-              diag.error(f.range, ErrorKind::Trace, fmt::format("a second column for '{}'", f.text));
+          columns_.push_back({Column::Kind::Bad, {}, agent});
+          continue;
         }
-        columns_.push_back(fn);
-        column_agent_.push_back(agent);
+        if (model.functions[fn].result == model::Type::Void) {
+          diag.error(f.range, ErrorKind::Trace, fmt::format("'{}' returns nothing, so it takes no input", name));
+          columns_.push_back({Column::Kind::Bad, {}, agent});
+          continue;
+        }
+        for (const Column &c : columns_)
+          if (c.kind == Column::Kind::Function && c.function == fn && c.agent == agent)
+            diag.error(f.range, ErrorKind::Trace, fmt::format("a second column for '{}'", f.text));
+        columns_.push_back({Column::Kind::Function, fn, agent});
       }
       continue;
     }
@@ -146,18 +142,19 @@ InputTrace::InputTrace(const model::Model &model, const SourceManager &sources, 
     }
     std::vector<Value> row;
     for (std::size_t c = 0; c < fields.size(); ++c) {
-      int fn = columns_[c];
-      if (fn == kBadColumn) {  // reported at the header
+      const Column &column = columns_[c];
+      if (column.kind == Column::Kind::Bad) {  // reported at the header
         row.push_back(Value::zero(model::Type::Int));
         continue;
       }
-      model::Type t = fn < 0 ? model::Type::Int : model.functions[static_cast<std::size_t>(fn)].result;
+      const bool tick = column.kind == Column::Kind::Tick;
+      model::Type t = tick ? model::Type::Int : model.functions[column.function].result;
       std::optional<Value> v = parse_value(fields[c].text, t);
       if (!v) {
-        diag.error(fields[c].range, ErrorKind::Trace,
-                   fmt::format("'{}' is not a value of type '{}'{}", fields[c].text, model::type_name(t),
-                               fn < 0 ? " (the tick column)"
-                                      : fmt::format(" for '{}'", model.functions[static_cast<std::size_t>(fn)].name)));
+        diag.error(
+            fields[c].range, ErrorKind::Trace,
+            fmt::format("'{}' is not a value of type '{}'{}", fields[c].text, model::type_name(t),
+                        tick ? " (the tick column)" : fmt::format(" for '{}'", model.functions[column.function].name)));
         v = Value::zero(t);
       }
       row.push_back(*v);
@@ -166,21 +163,23 @@ InputTrace::InputTrace(const model::Model &model, const SourceManager &sources, 
   }
 }
 
-Value InputTrace::value(int function, std::uint64_t tick, int agent) const {
-  const model::Function &fn = model_.functions.at(static_cast<std::size_t>(function));
+Value InputTrace::value(model::FunctionId function, std::uint64_t tick, int agent) const {
+  const model::Function &fn = model_.functions.at(function);
   if (rows_.empty() || tick == 0) return Value::zero(fn.result);
   std::size_t row = static_cast<std::size_t>(std::min<std::uint64_t>(tick, rows_.size()) - 1);
   // The agent's own column, else the column every agent shares.
   std::optional<std::size_t> shared;
   for (std::size_t c = 0; c < columns_.size(); ++c) {
-    if (columns_[c] != function) continue;
-    if (column_agent_[c] == agent) return rows_[row][c];
-    if (column_agent_[c] < 0) shared = c;
+    if (columns_[c].kind != Column::Kind::Function || columns_[c].function != function) continue;
+    if (columns_[c].agent == agent) return rows_[row][c];
+    if (columns_[c].agent < 0) shared = c;
   }
   if (shared) return rows_[row][*shared];
   return Value::zero(fn.result);
 }
 
-Value InputTrace::call(int function, const std::vector<Value> &, std::uint64_t tick) { return value(function, tick); }
+Value InputTrace::call(model::FunctionId function, const std::vector<Value> &, std::uint64_t tick) {
+  return value(function, tick);
+}
 
 }  // namespace gfec::interp

@@ -32,14 +32,14 @@ public:
 
   std::size_t rows() const { return rows_.size(); }
   /// What `function` returns to agent `agent` during `tick` (counted from 1).
-  Value value(int function, std::uint64_t tick, int agent = 0) const;
-  Value call(int function, const std::vector<Value> &args, std::uint64_t tick) override;
+  Value value(model::FunctionId function, std::uint64_t tick, int agent = 0) const;
+  Value call(model::FunctionId function, const std::vector<Value> &args, std::uint64_t tick) override;
 
   /// The inputs of one agent of a team run: what its engine calls.
   class Agent : public Environment {
   public:
     Agent(const InputTrace &trace, int agent) : trace_(trace), agent_(agent) {}
-    Value call(int function, const std::vector<Value> &, std::uint64_t tick) override {
+    Value call(model::FunctionId function, const std::vector<Value> &, std::uint64_t tick) override {
       return trace_.value(function, tick, agent_);
     }
 
@@ -50,8 +50,13 @@ public:
 
 private:
   const model::Model &model_;
-  std::vector<int> columns_;              ///< column -> function index; -1 the tick column, -2 a bad one
-  std::vector<int> column_agent_;         ///< column -> the agent of `F@k`, or -1 for every agent
+  struct Column {
+    enum class Kind { Function, Tick, Bad };
+    Kind kind = Kind::Bad;
+    model::FunctionId function;  ///< Kind::Function
+    int agent = -1;              ///< the agent of `F@k`, or -1 for every agent
+  };
+  std::vector<Column> columns_;
   std::vector<std::vector<Value>> rows_;  ///< by row, by column
 };
 

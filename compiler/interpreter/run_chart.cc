@@ -4,8 +4,8 @@
 
 namespace gfec::interp {
 
-RunResult run_chart(const model::Model &model, int chart, Environment &env, std::uint64_t ticks, EngineOptions options,
-                    Diagnostics &diag) {
+RunResult run_chart(const model::Model &model, model::ChartId chart, Environment &env, std::uint64_t ticks,
+                    EngineOptions options, Diagnostics &diag) {
   RunResult result;
   try {
     Engine engine(model, chart, options);
@@ -22,8 +22,8 @@ RunResult run_chart(const model::Model &model, int chart, Environment &env, std:
   return result;
 }
 
-RunResult run_team(const model::Model &model, int chart, const std::vector<Environment *> &envs, std::uint64_t ticks,
-                   EngineOptions options, Diagnostics &diag) {
+RunResult run_team(const model::Model &model, model::ChartId chart, const std::vector<Environment *> &envs,
+                   std::uint64_t ticks, EngineOptions options, Diagnostics &diag) {
   RunResult result;
   std::size_t agent = 0;
   std::uint64_t tick = 0;
@@ -46,8 +46,8 @@ RunResult run_team(const model::Model &model, int chart, const std::vector<Envir
       // The reference exchange: every agent's state to every other, after all have ticked.
       std::string states = "team";
       for (std::size_t from = 0; from < engines.size(); ++from) {
-        const int state = engines[from].state();
-        states += " " + engines[from].chart().places.at(static_cast<std::size_t>(state)).name;
+        const model::PlaceId state = engines[from].state();
+        states += " " + engines[from].chart().places.at(state).name;
         for (std::size_t to = 0; to < engines.size(); ++to) engines[to].report(static_cast<int>(from), state);
       }
       result.log.add(EventKind::Exchange, 1, std::move(states));

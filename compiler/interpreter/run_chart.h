@@ -19,15 +19,15 @@ struct RunResult {
 
 /// init, then `ticks` times run. Undefined behaviour is reported to `diag` as an error
 /// [runtime] at the expression that would cause it, naming the tick, and ends the run.
-RunResult run_chart(const model::Model &model, int chart, Environment &env, std::uint64_t ticks, EngineOptions options,
-                    Diagnostics &diag);
+RunResult run_chart(const model::Model &model, model::ChartId chart, Environment &env, std::uint64_t ticks,
+                    EngineOptions options, Diagnostics &diag);
 
 /// A team machine run by `envs.size()` agents (at most its team size), one engine each, under
 /// the reference exchange (docs/language.md "Teams"): init every engine and give engine k agent
 /// number k; then each tick, every agent ticks in agent order (`envs[k]` answers agent k's
 /// calls), then every agent's state is reported to every other. Each agent's part of the tick
 /// is logged after `agent k`, one level deeper; the exchange as `team S0 S1 ...`.
-RunResult run_team(const model::Model &model, int chart, const std::vector<Environment *> &envs, std::uint64_t ticks,
-                   EngineOptions options, Diagnostics &diag);
+RunResult run_team(const model::Model &model, model::ChartId chart, const std::vector<Environment *> &envs,
+                   std::uint64_t ticks, EngineOptions options, Diagnostics &diag);
 
 }  // namespace gfec::interp

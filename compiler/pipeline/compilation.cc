@@ -17,7 +17,9 @@ namespace {
 struct Candidate {
   unsigned kind;
   std::string name;
-  int index;
+  model::ChartId chart;  ///< the one of `kind`
+  model::PlanId plan;
+  model::ToolboxId toolbox;
 };
 
 const char *kind_name(unsigned kind) {
@@ -46,24 +48,23 @@ Target select_target(const model::Model &m, const TargetRequest &request) {
   std::vector<Candidate> candidates;
   std::vector<Candidate> named_only;  ///< sub-charts of the main file: compiled alone by name only
   if (request.among & kToolbox)
-    for (std::size_t i = 0; i < m.toolboxes.size(); ++i)
-      if (m.toolboxes[i].range.file == m.main_file)
-        candidates.push_back({kToolbox, m.toolboxes[i].name, static_cast<int>(i)});
+    for (model::ToolboxId i : m.toolboxes.ids())
+      if (m.toolboxes[i].range.file == m.main_file) candidates.push_back({kToolbox, m.toolboxes[i].name, {}, {}, i});
   if (request.among & (kSfc | kFsm)) {
     // The default root rule (docs/language.md "Sub-charts"): a chart another chart runs is
     // compiled only when --chart names it.
-    std::vector<int> roots = root_charts(m);
-    for (std::size_t i = 0; i < m.charts.size(); ++i) {
+    std::vector<model::ChartId> roots = root_charts(m);
+    for (model::ChartId i : m.charts.ids()) {
       const model::Chart &c = m.charts[i];
       unsigned kind = c.kind == model::Chart::Kind::Sfc ? kSfc : kFsm;
       if (!c.in_main_file || !(request.among & kind)) continue;
-      bool root = std::find(roots.begin(), roots.end(), static_cast<int>(i)) != roots.end();
-      (root ? candidates : named_only).push_back({kind, c.name, static_cast<int>(i)});
+      bool root = std::find(roots.begin(), roots.end(), i) != roots.end();
+      (root ? candidates : named_only).push_back({kind, c.name, i, {}, {}});
     }
   }
   if (request.among & kPlan)
-    for (std::size_t i = 0; i < m.plans.size(); ++i)
-      if (m.plans[i].in_main_file) candidates.push_back({kPlan, m.plans[i].name, static_cast<int>(i)});
+    for (model::PlanId i : m.plans.ids())
+      if (m.plans[i].in_main_file) candidates.push_back({kPlan, m.plans[i].name, {}, i, {}});
 
   auto list = [&] {
     std::string names;
@@ -98,7 +99,9 @@ Target select_target(const model::Model &m, const TargetRequest &request) {
   }
   t.kind = chosen->kind;
   t.name = chosen->name;
-  (chosen->kind == kPlan ? t.plan : chosen->kind == kToolbox ? t.toolbox : t.chart) = chosen->index;
+  t.chart = chosen->chart;
+  t.plan = chosen->plan;
+  t.toolbox = chosen->toolbox;
   return t;
 }
 
@@ -133,7 +136,7 @@ bool Compilation::front_end(const std::string &path) {
 
 const Target &Compilation::select(const TargetRequest &request) {
   target = select_target(model, request);
-  if (target.chart >= 0) warn_unused_charts(model, target.chart, diag);
+  if (target.chart) warn_unused_charts(model, target.chart, diag);
   return target;
 }
 

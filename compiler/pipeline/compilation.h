@@ -41,8 +41,10 @@ struct TargetRequest {
 
 /// The chosen chart, plan or toolbox of the main file, or why there is none.
 struct Target {
-  unsigned kind = 0;  ///< one TargetKind bit; 0 when nothing was chosen
-  int chart = -1, plan = -1, toolbox = -1;
+  unsigned kind = 0;     ///< one TargetKind bit; 0 when nothing was chosen
+  model::ChartId chart;  ///< the one of `kind` is set, the others are none
+  model::PlanId plan;
+  model::ToolboxId toolbox;
   std::string name;
   std::string error;      ///< why nothing was chosen ("" when something was)
   bool in_input = false;  ///< the error is the file's (it declares nothing to compile): located, exit 1

@@ -14,11 +14,11 @@ class TestEnvironment : public interp::Environment {
 public:
   explicit TestEnvironment(const model::Model &model) : model_(model), values_(model.functions.size()) {}
 
-  void set(int function, const std::string &value) { values_[static_cast<std::size_t>(function)] = value; }
+  void set(model::FunctionId function, const std::string &value) { values_[function] = value; }
   std::vector<Call> take_calls() { return std::move(calls_); }
 
-  interp::Value call(int function, const std::vector<interp::Value> &args, std::uint64_t) override {
-    const model::Function &f = model_.functions.at(static_cast<std::size_t>(function));
+  interp::Value call(model::FunctionId function, const std::vector<interp::Value> &args, std::uint64_t) override {
+    const model::Function &f = model_.functions.at(function);
     Call c;
     c.function = function;
     for (const auto &a : args) c.args.push_back(interp::format_value(a));
@@ -27,22 +27,22 @@ public:
     c.text = fmt::format("{}({})", f.name, list);
     calls_.push_back(std::move(c));
     if (f.result == model::Type::Void) return interp::Value::zero(model::Type::Int);
-    const std::string &v = values_[static_cast<std::size_t>(function)];
+    const std::string &v = values_[function];
     return v.empty() ? interp::Value::zero(f.result) : parse_value(v, f.result);
   }
 
 private:
   const model::Model &model_;
-  std::vector<std::string> values_;  ///< by function, as `set` formatted it; "" until set
+  IdMap<model::FunctionId, std::string> values_;  ///< as `set` formatted it; "" until set
   std::vector<Call> calls_;
 };
 
 Snapshot snapshot(const interp::Engine &e, std::vector<Call> calls) {
   Snapshot s;
   s.tick = e.ticks();
-  for (std::size_t p = 0; p < e.chart().places.size(); ++p) {
-    s.activation.push_back(e.activation(static_cast<int>(p)));
-    s.timers.push_back(e.timer(static_cast<int>(p)));
+  for (model::PlaceId p : e.chart().places.ids()) {
+    s.activation.push_back(e.activation(p));
+    s.timers.push_back(e.timer(p));
   }
   s.vars = e.vars();
   if (e.is_fsm()) {

@@ -32,8 +32,8 @@ struct Expect {
   model::Type type = model::Type::Bool;
   SourceRange range;
   model::Expr chart;
-  int place = -1;
-  int function = -1;
+  model::PlaceId place;
+  model::FunctionId function;
   std::optional<std::vector<std::string>> call_args;
   UnaryOp unary_op = UnaryOp::Not;
   BinaryOp binary_op = BinaryOp::Add;
@@ -44,15 +44,15 @@ struct Step {
   enum class Kind { Tick, Set, Expect };
   Kind kind = Kind::Tick;
   SourceRange range;
-  unsigned long count = 1;  ///< Tick
-  int function = -1;        ///< Set: index into Model::functions
-  std::string value;        ///< Set: the constant converted to the function's type, formatted
-  Expect expect;            ///< Expect
+  unsigned long count = 1;     ///< Tick
+  model::FunctionId function;  ///< Set
+  std::string value;           ///< Set: the constant converted to the function's type, formatted
+  Expect expect;               ///< Expect
 };
 
 struct Test {
   std::string name;
-  int chart = -1;  ///< index into Model::charts
+  model::ChartId chart;
   std::vector<Step> steps;
   SourceRange range;
 };

@@ -44,6 +44,9 @@ const char *status_word(int status) {
   return status > 0 ? "1 (succeeded)" : status < 0 ? "-1 (failed)" : "0 (running)";
 }
 
+/// A state as the engines number it, -1 for none.
+std::string state_number(model::PlaceId s) { return s ? std::to_string(s.index()) : "-1"; }
+
 /// Replaces the test-only operands by their values, so that the interpreter's evaluator (C's
 /// semantics, once, in one place) computes the rest; records every operand's value.
 class Substitution {
@@ -54,15 +57,13 @@ public:
     switch (e.kind) {
     case Expect::Kind::Chart: chart_operands(e.chart, operands); return e.chart;
     case Expect::Kind::Active: {
-      bool v = s_.activation.at(static_cast<std::size_t>(e.place)) > 0;
+      bool v = s_.activation.at(e.place) > 0;
       operands.push_back({e.range, v ? "true" : "false"});
       return literal_bool(v, e.range);
     }
     case Expect::Kind::State: {
       bool v = s_.state == e.place;
-      std::string current = s_.state >= 0 && s_.state < static_cast<int>(c_.places.size())
-                                ? c_.places[static_cast<std::size_t>(s_.state)].name.str()
-                                : "?";
+      std::string current = c_.places.contains(s_.state) ? c_.places[s_.state].name.str() : "?";
       operands.push_back({e.range, fmt::format("{} (the current state is '{}')", v ? "true" : "false", current)});
       return literal_bool(v, e.range);
     }
@@ -106,9 +107,9 @@ private:
   /// The state a chart expression reads: its variables and timers.
   void chart_operands(const model::Expr &e, std::vector<Operand> &operands) {
     if (e.kind == K::Var) {
-      operands.push_back({e.range, interp::format_value(s_.vars.at(static_cast<std::size_t>(e.index)))});
+      operands.push_back({e.range, interp::format_value(s_.vars.at(e.var()))});
     } else if (e.kind == K::Elapsed) {
-      std::uint32_t t = s_.timers.at(static_cast<std::size_t>(e.index));
+      std::uint32_t t = s_.timers.at(e.place());
       operands.push_back({e.range, c_.period_ms > 0 ? fmt::format("{} ms ({} ticks)", t * c_.period_ms, t)
                                                     : fmt::format("{} ticks", t)});
     }
@@ -122,8 +123,8 @@ private:
 
 }  // namespace
 
-Verdict evaluate(const Expect &e, const Snapshot &s, const model::Model &model, int chart) {
-  const model::Chart &c = model.charts.at(static_cast<std::size_t>(chart));
+Verdict evaluate(const Expect &e, const Snapshot &s, const model::Model &model, model::ChartId chart) {
+  const model::Chart &c = model.charts.at(chart);
   Verdict v;
   std::vector<Operand> operands;
   model::Expr expr = Substitution(s, model, c)(e, operands);
@@ -135,7 +136,7 @@ Verdict evaluate(const Expect &e, const Snapshot &s, const model::Model &model, 
     for (const Operand &p : v.operands) dup = dup || (p.range.begin == o.range.begin && p.range.end == o.range.end);
     if (!dup) v.operands.push_back(o);
   }
-  std::vector<interp::Value> vars = s.vars;
+  IdMap<model::VarId, interp::Value> vars = s.vars;
   interp::Frame frame{model, c, vars, s.timers};
   try {
     interp::Value result = interp::evaluate(expr, frame);
@@ -144,25 +145,26 @@ Verdict evaluate(const Expect &e, const Snapshot &s, const model::Model &model, 
   return v;
 }
 
-std::string compare(const Snapshot &x, const Snapshot &y, const model::Model &model, int chart, const char *a,
-                    const char *b) {
-  const model::Chart &c = model.charts.at(static_cast<std::size_t>(chart));
+std::string compare(const Snapshot &x, const Snapshot &y, const model::Model &model, model::ChartId chart,
+                    const char *a, const char *b) {
+  const model::Chart &c = model.charts.at(chart);
   std::size_t n = std::max(x.calls.size(), y.calls.size());
   for (std::size_t i = 0; i < n; ++i) {
     std::string cx = i < x.calls.size() ? "'" + x.calls[i].text + "'" : "no call";
     std::string cy = i < y.calls.size() ? "'" + y.calls[i].text + "'" : "no call";
     if (cx != cy) return fmt::format("call {}: {} {}, {} {}", i + 1, a, cx, b, cy);
   }
-  for (std::size_t p = 0; p < c.places.size(); ++p)
+  for (model::PlaceId p : c.places.ids())
     if (x.activation.at(p) != y.activation.at(p))
       return fmt::format("activation of '{}': {} {}, {} {}", c.places[p].name, a, x.activation[p], b, y.activation[p]);
   if (c.kind == model::Chart::Kind::Fsm && (x.state != y.state || x.status != y.status))
-    return fmt::format("state: {} {} status {}, {} {} status {}", a, x.state, x.status, b, y.state, y.status);
-  for (std::size_t i = 0; i < c.vars.size(); ++i) {
+    return fmt::format("state: {} {} status {}, {} {} status {}", a, state_number(x.state), x.status, b,
+                       state_number(y.state), y.status);
+  for (model::VarId i : c.vars.ids()) {
     std::string vx = interp::format_value(x.vars.at(i)), vy = interp::format_value(y.vars.at(i));
     if (vx != vy) return fmt::format("variable '{}': {} {}, {} {}", c.vars[i].name, a, vx, b, vy);
   }
-  for (std::size_t p = 0; p < c.places.size(); ++p)
+  for (model::PlaceId p : c.places.ids())
     if (c.places[p].timed && x.timers.at(p) != y.timers.at(p))
       return fmt::format("timer of '{}': {} {}, {} {}", c.places[p].name, a, x.timers[p], b, y.timers[p]);
   return "";

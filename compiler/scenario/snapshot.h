@@ -15,19 +15,19 @@ namespace gfec::scenario {
 
 /// One call of an interface function, its arguments formatted as the engines print them.
 struct Call {
-  int function = -1;
+  model::FunctionId function;
   std::vector<std::string> args;
   std::string text;  ///< `Motor(1, 0.5)`
 };
 
 struct Snapshot {
-  std::uint64_t tick = 0;             ///< ticks run so far (0: just after _init)
-  std::vector<unsigned> activation;   ///< by place
-  std::vector<std::uint32_t> timers;  ///< by place; meaningful for timed places only
-  std::vector<interp::Value> vars;    ///< by Chart::vars index
-  int state = -1;                     ///< fsm
-  int status = 0;                     ///< fsm
-  std::vector<Call> calls;            ///< during the last tick, in order
+  std::uint64_t tick = 0;  ///< ticks run so far (0: just after _init)
+  IdMap<model::PlaceId, unsigned> activation;
+  IdMap<model::PlaceId, std::uint32_t> timers;  ///< meaningful for timed places only
+  IdMap<model::VarId, interp::Value> vars;
+  model::PlaceId state;     ///< fsm
+  int status = 0;           ///< fsm
+  std::vector<Call> calls;  ///< during the last tick, in order
 };
 
 /// An operand's value, for the notes of a failed expectation.
@@ -42,12 +42,12 @@ struct Verdict {
   std::string error;              ///< not empty: the expression has no defined value (e.g. / 0)
 };
 
-Verdict evaluate(const Expect &e, const Snapshot &s, const model::Model &model, int chart);
+Verdict evaluate(const Expect &e, const Snapshot &s, const model::Model &model, model::ChartId chart);
 
 /// The first difference between two snapshots of the same tick, or "" (calls first, then
 /// activation, state, variables and timers). `a` and `b` name the two runs.
-std::string compare(const Snapshot &x, const Snapshot &y, const model::Model &model, int chart, const char *a,
-                    const char *b);
+std::string compare(const Snapshot &x, const Snapshot &y, const model::Model &model, model::ChartId chart,
+                    const char *a, const char *b);
 
 /// A constant as `set` formats it (validate_tests.cc), back to a value of type `t`.
 interp::Value parse_value(const std::string &text, model::Type t);

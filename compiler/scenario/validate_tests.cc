@@ -27,21 +27,22 @@ void declare_chart_names(Context &cx, ChartScope &s) {
   Diagnostics quiet;
   const ast::Chart &a = s.ast;
   for (std::size_t i = 0; i < a.places.size(); ++i)
-    s.names.declare(a.places[i].name, s.is_fsm() ? Sym::State : Sym::Place, static_cast<int>(i), quiet);
+    s.names.declare(a.places[i].name, s.is_fsm() ? Sym::State : Sym::Place, model::PlaceId(i), quiet);
   for (const ast::ValueDecl &v : a.values) {
-    int index = -1;
     if (v.is_const) {
-      for (std::size_t c = 0; c < cx.model.consts.size(); ++c)
-        if (cx.model.consts[c].chart == s.index && cx.model.consts[c].name == v.name.text) index = static_cast<int>(c);
-      if (index >= 0) s.names.declare(v.name, Sym::Const, index, quiet);
+      model::ConstId constant;
+      for (model::ConstId c : cx.model.consts.ids())
+        if (cx.model.consts[c].chart == s.index && cx.model.consts[c].name == v.name.text) constant = c;
+      if (constant) s.names.declare(v.name, Sym::Const, constant, quiet);
       continue;
     }
-    for (std::size_t k = 0; k < s.out.vars.size(); ++k)
-      if (s.out.vars[k].name == v.name.text) index = static_cast<int>(k);
-    s.names.declare(v.name, Sym::Var, index, quiet);
+    model::VarId var;
+    for (model::VarId k : s.out.vars.ids())
+      if (s.out.vars[k].name == v.name.text) var = k;
+    s.names.declare(v.name, Sym::Var, var, quiet);
   }
   for (std::size_t i = 0; i < a.transitions.size(); ++i)
-    if (a.transitions[i].named) s.names.declare(a.transitions[i].name, Sym::Transition, static_cast<int>(i), quiet);
+    if (a.transitions[i].named) s.names.declare(a.transitions[i].name, Sym::Transition, model::TransitionId(i), quiet);
 }
 
 /// Whether a lowered chart expression calls an interface function (which would run chart code).
@@ -64,20 +65,23 @@ public:
     return std::nullopt;
   }
 
-  /// The function `name` names, or -1 after reporting why not.
-  int function(const ast::Name &name) {
-    if (name.text.empty()) return -1;
+  /// The function `name` names, or none after reporting why not.
+  model::FunctionId function(const ast::Name &name) {
+    if (name.text.empty()) return {};
     const Symbol *sym = cx_.c_names.find(name.text);
-    if (sym && sym->kind == Sym::Function) return cx_.function_ok[sym->index] ? sym->index : -1;
+    if (sym && sym->kind == Sym::Function) {
+      const auto f = sym->id<model::FunctionId>();
+      return cx_.function_ok[f] ? f : model::FunctionId::none();
+    }
     if (sym) {
       cx_.diag
           .error(name.range, ErrorKind::TypeMismatch,
                  fmt::format("'{}' is {}, not a function", name.text, with_article(sym->kind)))
           .note(sym->range, fmt::format("'{}' declared here", name.text));
-      return -1;
+      return {};
     }
     report_unknown(cx_.diag, chart_.unknown, name, "function", cx_.c_names.of({Sym::Function}));
-    return -1;
+    return {};
   }
 
   /// `e`, a constant, as a value of type `to` formatted as engines print it (§12: "converted as
@@ -197,7 +201,7 @@ private:
     auto x = lower_expr(&e, scope_);
     if (!x) return std::nullopt;
     if (const model::Expr *call = find_call(*x)) {
-      const std::string &f = cx_.model.functions[call->index].name;
+      const std::string &f = cx_.model.functions[call->function()].name;
       cx_.diag
           .error(call->range, ErrorKind::Test,
                  fmt::format("an expectation calls no chart code: '{}' cannot be called here", f))
@@ -218,8 +222,8 @@ private:
                      fmt::format("'{}' takes one argument: the name of a {}", word, chart_.place_word()));
       return std::nullopt;
     }
-    int place = resolve_place(chart_, cx_, e.args[0]->name);
-    if (place < 0) return std::nullopt;
+    model::PlaceId place = resolve_place(chart_, cx_, e.args[0]->name);
+    if (!place) return std::nullopt;
     Expect x = make(kind, Type::Bool, e.range);
     x.place = place;
     return x;
@@ -229,8 +233,8 @@ private:
     bool count = e.name.text == "calls";
     if (e.args.size() != 1 || !e.args[0]) return std::nullopt;
     const ast::Expr &target = *e.args[0];
-    int f = function(target.name);
-    if (f < 0) return std::nullopt;
+    model::FunctionId f = function(target.name);
+    if (!f) return std::nullopt;
     Expect x = make(count ? Expect::Kind::Calls : Expect::Kind::Called, count ? Type::Int : Type::Bool, e.range);
     x.function = f;
     if (target.kind != ast::Expr::Kind::Call) return x;
@@ -261,32 +265,32 @@ private:
   ExprScope scope_;
 };
 
-/// The chart `name` names, or -1 after reporting why not.
-int resolve_chart(Context &cx, const ast::Name &name, std::set<std::string> &seen) {
-  if (name.text.empty()) return -1;
+/// The chart `name` names, or none after reporting why not.
+model::ChartId resolve_chart(Context &cx, const ast::Name &name, std::set<std::string> &seen) {
+  if (name.text.empty()) return {};
   const Symbol *sym = cx.c_names.find(name.text);
-  if (sym && sym->kind == Sym::Chart) return sym->index;
+  if (sym && sym->kind == Sym::Chart) return sym->id<model::ChartId>();
   if (const Symbol *plan = cx.plan_names.find(name.text); plan && plan->kind == Sym::Plan) {
     cx.diag.error(name.range, ErrorKind::Test, fmt::format("'{}' is a plan; tests run an sfc or fsm", name.text))
         .note(plan->range, fmt::format("'{}' declared here", name.text));
-    return -1;
+    return {};
   }
   if (sym) {
     cx.diag
         .error(name.range, ErrorKind::TypeMismatch,
                fmt::format("'{}' is {}, not an sfc or fsm", name.text, with_article(sym->kind)))
         .note(sym->range, fmt::format("'{}' declared here", name.text));
-    return -1;
+    return {};
   }
   report_unknown(cx.diag, seen, name, "chart", cx.c_names.of({Sym::Chart}));
-  return -1;
+  return {};
 }
 
 /// `set F = CONST;`: F is a parameterless sensing function of the chart's interface.
 bool lower_set(Context &cx, TestLowering &lowering, const model::Chart &chart, const ast::TestStep &in,
                scenario::Step &out) {
-  int f = lowering.function(in.function);
-  if (f < 0) return false;
+  model::FunctionId f = lowering.function(in.function);
+  if (!f) return false;
   const model::Function &fn = cx.model.functions[f];
   if (fn.result == Type::Void || !fn.params.empty()) {
     cx.diag
@@ -297,7 +301,8 @@ bool lower_set(Context &cx, TestLowering &lowering, const model::Chart &chart, c
     return false;
   }
   bool ours = false;
-  for (int used : chart.functions) ours = ours || cx.model.functions[used].interface_name == fn.interface_name;
+  for (model::FunctionId used : chart.functions)
+    ours = ours || cx.model.functions[used].interface_name == fn.interface_name;
   if (!ours) {
     cx.diag
         .error(in.function.range, ErrorKind::Test,
@@ -318,8 +323,8 @@ bool lower_set(Context &cx, TestLowering &lowering, const model::Chart &chart, c
 void validate_tests(Context &cx, scenario::Suite &out) {
   if (cx.program.files.empty() || !cx.program.files.front()) return;
   for (const ast::Test &t : cx.program.files.front()->tests) {
-    int chart = resolve_chart(cx, t.chart, cx.file_unknown);
-    if (chart < 0) continue;
+    model::ChartId chart = resolve_chart(cx, t.chart, cx.file_unknown);
+    if (!chart) continue;
     ChartScope scope(*cx.charts[chart], cx.model.charts[chart], chart);
     declare_chart_names(cx, scope);
     TestLowering lowering(cx, scope);

@@ -42,12 +42,12 @@ struct Context {
   Namespace toolboxes;
 
   /// Parallel to the model tables: the declaration each element was lowered from.
-  std::vector<ConstSource> consts;
-  std::vector<bool> function_ok;  ///< false: its declaration has an error; calls stay silent
-  std::vector<ast::Chart *> charts;
-  std::vector<const ast::Template *> templates;
-  std::vector<bool> template_ok;  ///< false: a parameter type is wrong; arguments stay unchecked
-  std::vector<const ast::Plan *> plans;
+  Table<model::ConstId, ConstSource> consts;
+  Table<model::FunctionId, bool> function_ok;  ///< false: its declaration has an error; calls stay silent
+  Table<model::ChartId, ast::Chart *> charts;
+  Table<model::TemplateId, const ast::Template *> templates;
+  Table<model::TemplateId, bool> template_ok;  ///< false: a parameter type is wrong; arguments stay unchecked
+  Table<model::PlanId, const ast::Plan *> plans;
 
   /// A global name, declared once every file's model entries exist (see collect_symbols).
   struct GlobalName {
@@ -59,14 +59,18 @@ struct Context {
   };
   std::vector<GlobalName> global_names;
   int current_file = 0;
-  void declare_global(Namespace &ns, const ast::Name &name, Sym kind, int index) {
-    global_names.push_back({&ns, &name, kind, index, current_file});
+  template <typename Tag> void declare_global(Namespace &ns, const ast::Name &name, Sym kind, Id<Tag> index) {
+    global_names.push_back({&ns, &name, kind, static_cast<int>(index.index()), current_file});
+  }
+  /// A name that is no element of the model (an interface).
+  void declare_global(Namespace &ns, const ast::Name &name, Sym kind) {
+    global_names.push_back({&ns, &name, kind, -1, current_file});
   }
 
-  /// Sub-charts (subcharts.cc), per chart: for each place the chart it runs (or -1), and the
+  /// Sub-charts (subcharts.cc), per chart: for each place the chart it runs (or none), and the
   /// period it takes from the charts that run it when it declares none (0: none to take).
-  std::vector<std::vector<int>> runs;
-  std::vector<double> inherited_period;
+  IdMap<model::ChartId, IdMap<model::PlaceId, model::ChartId>> runs;
+  IdMap<model::ChartId, double> inherited_period;
 
   /// The chart being validated: its constants fold in its scope.
   ChartScope *chart = nullptr;

@@ -34,7 +34,7 @@ void require_period(ExprScope &s, SourceRange at, const std::string &what) {
                       fmt::format("{} needs a period, but {} '{}' declares none", what, c.kind_word(), c.out.name));
   bool sub_chart = false;
   for (const auto &runs : s.cx.runs)
-    for (int r : runs) sub_chart = sub_chart || r == c.index;
+    for (model::ChartId r : runs) sub_chart = sub_chart || r == c.index;
   if (sub_chart)
     d.note(c.ast.name.range,
            "a sub-chart takes the period of the chart that runs it; declare one there, e.g. 'period 10ms;'");
@@ -54,11 +54,11 @@ std::optional<model::Expr> lower_duration(const ast::Expr &e, ExprScope &s) {
   return d;
 }
 
-std::optional<model::Expr> const_ref(int index, SourceRange at, ExprScope &s) {
+std::optional<model::Expr> const_ref(model::ConstId index, SourceRange at, ExprScope &s) {
   if (!fold_const(s.cx, index)) return std::nullopt;
   if (s.chart) s.chart->consts.insert(index);
   model::Expr e = make(K::Const, s.cx.model.consts[index].type, at);
-  e.index = index;
+  e.refer_to(index);
   return check_constant(std::move(e), s.cx.model, s.cx.diag);  // folded: the constant's value
 }
 
@@ -77,7 +77,7 @@ std::optional<model::Expr> lower_name(const ast::Expr &e, ExprScope &s) {
   if (name.text.empty()) return std::nullopt;
   if (s.chart) {
     if (const Symbol *sym = s.chart->names.find(name.text)) {
-      if (sym->kind == Sym::Const) return const_ref(sym->index, e.range, s);
+      if (sym->kind == Sym::Const) return const_ref(sym->id<model::ConstId>(), e.range, s);
       if (sym->kind != Sym::Var) return not_a_value(s, name, *sym);
       if (s.constant) {
         s.cx.diag.error(name.range, ErrorKind::NotConstant,
@@ -85,13 +85,14 @@ std::optional<model::Expr> lower_name(const ast::Expr &e, ExprScope &s) {
         return std::nullopt;
       }
       if (sym->index < 0) return std::nullopt;  // its declaration has an error
-      model::Expr v = make(K::Var, s.chart->out.vars[sym->index].type, e.range);
-      v.index = sym->index;
+      const model::VarId var = sym->id<model::VarId>();
+      model::Expr v = make(K::Var, s.chart->out.vars[var].type, e.range);
+      v.refer_to(var);
       return v;
     }
   }
   if (const Symbol *sym = s.cx.c_names.find(name.text)) {
-    if (sym->kind == Sym::Const) return const_ref(sym->index, e.range, s);
+    if (sym->kind == Sym::Const) return const_ref(sym->id<model::ConstId>(), e.range, s);
     return not_a_value(s, name, *sym);
   }
   std::vector<const Symbol *> candidates;
@@ -116,8 +117,8 @@ std::optional<model::Expr> lower_elapsed(const ast::Expr &e, ExprScope &s, bool 
                fmt::format("'elapsed' takes one argument: the name of a {}", s.chart->place_word()));
     return std::nullopt;
   }
-  int place = resolve_place(*s.chart, s.cx, e.args[0]->name);
-  if (place < 0) return std::nullopt;
+  model::PlaceId place = resolve_place(*s.chart, s.cx, e.args[0]->name);
+  if (!place) return std::nullopt;
   require_period(s, e.range, fmt::format("'elapsed({})'", e.args[0]->name.text));
   s.chart->out.places[place].timed = true;
   if (statement) {
@@ -125,7 +126,7 @@ std::optional<model::Expr> lower_elapsed(const ast::Expr &e, ExprScope &s, bool 
     return std::nullopt;
   }
   model::Expr x = make(K::Elapsed, Type::Duration, e.range);
-  x.index = place;
+  x.refer_to(place);
   return x;
 }
 
@@ -193,15 +194,15 @@ std::optional<model::Expr> lower_active(const ast::Expr &e, ExprScope &s, bool s
     return std::nullopt;
   }
   model::Expr x = make(K::Active, Type::Bool, e.range);
-  int place = resolve_place(*s.chart, s.cx, names[0]);
-  if (place < 0) return std::nullopt;
+  model::PlaceId place = resolve_place(*s.chart, s.cx, names[0]);
+  if (!place) return std::nullopt;
   x.path.push_back(place);
-  int chart = s.chart->index;
+  model::ChartId chart = s.chart->index;
   for (std::size_t k = 1; k < names.size(); ++k) {
-    const ast::Chart &holder = *s.cx.charts[static_cast<std::size_t>(chart)];
-    const ast::Place &via = holder.places[static_cast<std::size_t>(place)];
-    int sub = s.cx.runs[static_cast<std::size_t>(chart)][static_cast<std::size_t>(place)];
-    if (sub < 0) {
+    const ast::Chart &holder = *s.cx.charts[chart];
+    const ast::Place &via = holder.places[place.index()];
+    model::ChartId sub = s.cx.runs[chart][place];
+    if (!sub) {
       if (via.runs()) return std::nullopt;  // its `runs` has an error of its own
       s.cx.diag
           .error(names[k].range, ErrorKind::UnknownName,
@@ -209,17 +210,17 @@ std::optional<model::Expr> lower_active(const ast::Expr &e, ExprScope &s, bool s
           .note(via.name.range, fmt::format("'{}' declared here", via.name.text));
       return std::nullopt;
     }
-    const ast::Chart &inner = *s.cx.charts[static_cast<std::size_t>(sub)];
+    const ast::Chart &inner = *s.cx.charts[sub];
     const char *word = inner.kind == ast::Chart::Kind::Fsm ? "state" : "place";
-    place = -1;
+    place = model::PlaceId();
     std::vector<Symbol> symbols;
     for (std::size_t i = 0; i < inner.places.size(); ++i) {
       const ast::Place &p = inner.places[i];
-      if (p.name.text == names[k].text && place < 0) place = static_cast<int>(i);
+      if (p.name.text == names[k].text && !place) place = model::PlaceId(i);
       symbols.push_back({inner.kind == ast::Chart::Kind::Fsm ? Sym::State : Sym::Place, static_cast<int>(i),
                          p.name.text, p.name.range});
     }
-    if (place < 0) {
+    if (!place) {
       auto &d = s.cx.diag.error(names[k].range, ErrorKind::UnknownName,
                                 fmt::format("unknown {} '{}' in {} '{}', which '{}' runs", word, names[k].text,
                                             inner.kind == ast::Chart::Kind::Fsm ? "fsm" : "sfc", inner.name.text,
@@ -245,27 +246,27 @@ std::optional<model::Expr> lower_outcome(const ast::Expr &e, ExprScope &s, bool 
                     fmt::format("'{}' takes one argument: a place or state that runs an fsm", f));
     return std::nullopt;
   }
-  int place = resolve_place(*s.chart, s.cx, arg.name);
-  if (place < 0) return std::nullopt;
-  const ast::Place &p = s.chart->ast.places[static_cast<std::size_t>(place)];
-  int sub = s.cx.runs[static_cast<std::size_t>(s.chart->index)][static_cast<std::size_t>(place)];
-  if (p.runs() && sub < 0) return std::nullopt;  // its `runs` has an error of its own
-  if (sub < 0 || s.cx.model.charts[static_cast<std::size_t>(sub)].kind != model::Chart::Kind::Fsm) {
+  model::PlaceId place = resolve_place(*s.chart, s.cx, arg.name);
+  if (!place) return std::nullopt;
+  const ast::Place &p = s.chart->ast.places[place.index()];
+  model::ChartId sub = s.cx.runs[s.chart->index][place];
+  if (p.runs() && !sub) return std::nullopt;  // its `runs` has an error of its own
+  if (!sub || s.cx.model.charts[sub].kind != model::Chart::Kind::Fsm) {
     auto &d = s.cx.diag.error(
         e.range, ErrorKind::Subchart,
-        sub < 0
+        !sub
             ? fmt::format("'{}({})': {} '{}' runs no sub-chart", f, arg.name.text, s.chart->place_word(), arg.name.text)
             : fmt::format("'{}({})': {} '{}' runs sfc '{}', which never {}", f, arg.name.text, s.chart->place_word(),
                           arg.name.text, p.runs()->text, f == "succeeded" ? "succeeds" : "fails"));
-    d.note(sub < 0 ? p.name.range : p.runs()->range,
-           sub < 0 ? fmt::format("only a place or state that runs an fsm succeeds or fails ('{} {} runs FSM')",
-                                 s.chart->place_word(), arg.name.text)
-                   : fmt::format("only an fsm succeeds or fails; 'active({}.P)' reads the places of an sfc",
-                                 arg.name.text));
+    d.note(
+        !sub ? p.name.range : p.runs()->range,
+        !sub ? fmt::format("only a place or state that runs an fsm succeeds or fails ('{} {} runs FSM')",
+                           s.chart->place_word(), arg.name.text)
+             : fmt::format("only an fsm succeeds or fails; 'active({}.P)' reads the places of an sfc", arg.name.text));
     return std::nullopt;
   }
   model::Expr x = make(f == "succeeded" ? K::Succeeded : K::Failed, Type::Bool, e.range);
-  x.index = place;
+  x.refer_to(place);
   return x;
 }
 
@@ -277,14 +278,14 @@ std::optional<model::Expr> lower_team(const ast::Expr &e, ExprScope &s, bool sta
     diag.error(e.range, ErrorKind::Team, "'team' takes one argument: the name of a state");
     return std::nullopt;
   }
-  int state = resolve_place(*s.chart, s.cx, e.args[0]->name);
-  if (state < 0) return std::nullopt;
+  model::PlaceId state = resolve_place(*s.chart, s.cx, e.args[0]->name);
+  if (!state) return std::nullopt;
   if (statement) {
     diag.error(e.range, ErrorKind::TypeMismatch, "'team()' as a statement has no effect");
     return std::nullopt;
   }
   model::Expr x = make(K::TeamCount, Type::Int, e.range);
-  x.index = state;
+  x.refer_to(state);
   return x;
 }
 
@@ -411,7 +412,7 @@ std::optional<model::Stmt> lower_assign(const ast::Stmt &st, ExprScope &s) {
     return std::nullopt;
   }
   if (sym->index < 0) return std::nullopt;
-  Type type = s.chart->out.vars[sym->index].type;
+  Type type = s.chart->out.vars[sym->id<model::VarId>()].type;
   if (st.assign_op != AssignOp::Set && !model::is_numeric(type)) {
     diag.error(target.range, ErrorKind::TypeMismatch,
                fmt::format("operator '{}' needs a numeric variable; '{}' has type {}", spelling(st.assign_op),
@@ -430,7 +431,7 @@ std::optional<model::Stmt> lower_assign(const ast::Stmt &st, ExprScope &s) {
   model::Stmt out;
   out.kind = model::Stmt::Kind::Assign;
   out.range = st.range;
-  out.var = sym->index;
+  out.var = sym->id<model::VarId>();
   out.op = st.assign_op;
   out.expr = std::move(*value);
   return out;
@@ -456,22 +457,22 @@ void report_unknown(Diagnostics &diag, std::set<std::string> &seen, const ast::N
   suggest(d, name.text, candidates);
 }
 
-int resolve_place(ChartScope &chart, Context &cx, const ast::Name &name) {
-  if (name.text.empty()) return -1;
+model::PlaceId resolve_place(ChartScope &chart, Context &cx, const ast::Name &name) {
+  if (name.text.empty()) return {};
   const Symbol *sym = chart.names.find(name.text);
-  if (sym && (sym->kind == Sym::Place || sym->kind == Sym::State)) return sym->index;
+  if (sym && (sym->kind == Sym::Place || sym->kind == Sym::State)) return sym->id<model::PlaceId>();
   // A place that lost its name to an earlier declaration: the clash is reported already.
   for (std::size_t i = 0; sym && i < chart.ast.places.size(); ++i)
-    if (chart.ast.places[i].name.text == name.text) return static_cast<int>(i);
+    if (chart.ast.places[i].name.text == name.text) return model::PlaceId(i);
   if (sym) {
     cx.diag
         .error(name.range, ErrorKind::TypeMismatch,
                fmt::format("'{}' is {}, not a {}", name.text, with_article(sym->kind), chart.place_word()))
         .note(sym->range, fmt::format("'{}' declared here", name.text));
-    return -1;
+    return {};
   }
   report_unknown(cx.diag, chart.unknown, name, chart.place_word(), chart.names.of({Sym::Place, Sym::State}));
-  return -1;
+  return {};
 }
 
 std::optional<model::Expr> lower_expr(const ast::Expr *e, ExprScope &s) {
@@ -537,7 +538,8 @@ std::optional<model::Expr> lower_call(const ast::Expr &e, ExprScope &s, bool sta
     return std::nullopt;
   }
   if (!s.cx.function_ok[sym->index]) return std::nullopt;
-  const model::Function &f = s.cx.model.functions[sym->index];
+  const model::FunctionId function = sym->id<model::FunctionId>();
+  const model::Function &f = s.cx.model.functions[function];
   if (!check_arguments(e, f, args, s.cx.diag)) return std::nullopt;
   for (std::size_t i = 0; i < args.size(); ++i)
     if (!constant_fits(*args[i], f.params[i].type, s)) return std::nullopt;
@@ -547,9 +549,9 @@ std::optional<model::Expr> lower_call(const ast::Expr &e, ExprScope &s, bool sta
         .note(f.range, fmt::format("'{}' declared here", f.name));
     return std::nullopt;
   }
-  if (s.chart) s.chart->functions.insert(sym->index);
+  if (s.chart) s.chart->functions.insert(function);
   model::Expr x = make(K::Call, f.result, e.range);
-  x.index = sym->index;
+  x.refer_to(function);
   for (auto &a : args) x.args.push_back(std::move(*a));
   return x;
 }
@@ -575,12 +577,14 @@ std::optional<model::Expr> lower_initializer(const ast::Expr *e, ExprScope &s, T
 
 namespace {
 
+std::vector<model::Stmt> lower_statements(ast::Stmt *first, ast::Stmt *last, ExprScope &s);
+
 /// `if (c) { } else if (d) { } else { }`: the condition must be bool; both branches are checked
 /// whatever the condition, so every mistake in them is reported.
-std::optional<model::Stmt> lower_if(const ast::Stmt &st, ExprScope &s) {
+std::optional<model::Stmt> lower_if(ast::Stmt &st, ExprScope &s) {
   auto condition = lower_condition(st.value.get(), s, "the condition of 'if'");
-  std::vector<model::Stmt> then_block = lower_block(st.then_block, s);
-  std::vector<model::Stmt> else_block = lower_block(st.else_block, s);
+  std::vector<model::Stmt> then_block = lower_statements(st.then_block.begin(), st.then_block.end(), s);
+  std::vector<model::Stmt> else_block = lower_statements(st.else_block.begin(), st.else_block.end(), s);
   if (!condition) return std::nullopt;
   model::Stmt m;
   m.kind = model::Stmt::Kind::If;
@@ -593,11 +597,10 @@ std::optional<model::Stmt> lower_if(const ast::Stmt &st, ExprScope &s) {
   return m;
 }
 
-}  // namespace
-
-std::vector<model::Stmt> lower_block(const ast::Block &b, ExprScope &s) {
+std::vector<model::Stmt> lower_statements(ast::Stmt *first, ast::Stmt *last, ExprScope &s) {
   std::vector<model::Stmt> out;
-  for (const ast::Stmt &st : b) {
+  for (ast::Stmt *it = first; it != last; ++it) {
+    ast::Stmt &st = *it;
     switch (st.kind) {
     case ast::Stmt::Kind::If:
       if (auto m = lower_if(st, s)) out.push_back(std::move(*m));
@@ -620,14 +623,20 @@ std::vector<model::Stmt> lower_block(const ast::Block &b, ExprScope &s) {
       model::Stmt m;
       m.kind = model::Stmt::Kind::Verbatim;
       m.range = st.range;
-      m.verbatim = st.verbatim ? *st.verbatim : std::string();
-      m.code_begin = st.range.begin + 2;  // the lexer's range starts at `%{`
+      m.verbatim = st.verbatim ? std::move(*st.verbatim) : std::string();  // the tree's copy is released next
+      m.code_begin = st.range.begin + 2;                                   // the lexer's range starts at `%{`
       out.push_back(std::move(m));
       break;
     }
     }
   }
   return out;
+}
+
+}  // namespace
+
+std::vector<model::Stmt> lower_block(ast::Block &b, ExprScope &s) {
+  return lower_statements(b.data(), b.data() + b.size(), s);
 }
 
 }  // namespace gfec::validation

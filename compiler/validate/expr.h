@@ -17,17 +17,17 @@ constexpr long long kMaxTeam = 1024;
 
 /// A chart's own names, and what its expressions use, while the chart is validated.
 struct ChartScope {
-  ChartScope(ast::Chart &a, model::Chart &o, int i) : ast(a), out(o), index(i) {}
+  ChartScope(ast::Chart &a, model::Chart &o, model::ChartId i) : ast(a), out(o), index(i) {}
 
   ast::Chart &ast;    ///< its bodies and conditions are released as they are lowered
   model::Chart &out;  ///< being filled in; its period is set before any expression is lowered
-  int index;
+  model::ChartId index;
   /// Places (or states), named transitions, vars and the chart's constants.
   Namespace names;
-  bool period_reported = false;   ///< "needs a period" is said once per chart
-  std::set<std::string> unknown;  ///< unknown names already reported, each once per chart
-  std::set<int> functions;        ///< interface functions called
-  std::set<int> consts;           ///< constants read
+  bool period_reported = false;           ///< "needs a period" is said once per chart
+  std::set<std::string> unknown;          ///< unknown names already reported, each once per chart
+  std::set<model::FunctionId> functions;  ///< interface functions called
+  std::set<model::ConstId> consts;        ///< constants read
 
   bool is_fsm() const { return ast.kind == ast::Chart::Kind::Fsm; }
   const char *place_word() const { return is_fsm() ? "state" : "place"; }
@@ -54,10 +54,11 @@ std::optional<model::Expr> lower_condition(const ast::Expr *e, ExprScope &s, con
 std::optional<model::Expr> lower_initializer(const ast::Expr *e, ExprScope &s, model::Type type,
                                              const std::string &name);
 
-std::vector<model::Stmt> lower_block(const ast::Block &b, ExprScope &s);
+/// Moves what it can (verbatim text) out of `b`: a block is released once lowered (validate.h).
+std::vector<model::Stmt> lower_block(ast::Block &b, ExprScope &s);
 
-/// The index of place (or state) `name` of the chart, or -1 after reporting why not.
-int resolve_place(ChartScope &chart, Context &cx, const ast::Name &name);
+/// Place (or state) `name` of the chart, or none after reporting why not.
+model::PlaceId resolve_place(ChartScope &chart, Context &cx, const ast::Name &name);
 
 /// Reports `unknown <what> 'name'` with a did-you-mean, unless `seen` (the names reported in
 /// this chart, plan or at file level) says it was already.

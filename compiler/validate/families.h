@@ -20,7 +20,7 @@ void fold_file_consts(Context &cx);
 
 /// validate_chart.cc: a chart's name now; its body later, once every global name is known.
 void declare_chart(Context &cx, ast::Chart &chart);
-void validate_chart(Context &cx, int index);
+void validate_chart(Context &cx, model::ChartId index);
 
 /// subcharts.cc: resolves every `runs`, reports charts that run themselves and sub-chart
 /// periods that disagree with their parents', and fills Context::runs and inherited_period.
@@ -38,7 +38,7 @@ void declare_toolbox(Context &cx, const ast::Toolbox &toolbox);
 
 /// validate_plan.cc
 void declare_plan(Context &cx, const ast::Plan &plan);
-void validate_plan(Context &cx, int index);
+void validate_plan(Context &cx, model::PlanId index);
 /// Reports every plan that contains itself, directly or through sub-plans.
 void check_plan_recursion(Context &cx);
 

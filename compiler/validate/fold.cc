@@ -88,8 +88,8 @@ std::optional<Value> evaluate(const model::Expr &e, const model::Model &m, Diagn
   case K::Float: return stored(e);  // the value number_literal() parsed
   case K::String: return Value::of_string(e.text.str());
   case K::Const:
-    if (e.index < 0 || e.index >= static_cast<int>(m.consts.size())) return std::nullopt;
-    return evaluate(m.consts[e.index].value, m, diag);
+    if (!m.consts.contains(e.constant())) return std::nullopt;
+    return evaluate(m.consts[e.constant()].value, m, diag);
   case K::Paren: return e.args.empty() ? std::nullopt : evaluate(e.args[0], m, diag);
   case K::Unary: {
     if (e.args.size() != 1) return std::nullopt;
@@ -189,9 +189,9 @@ std::optional<model::Expr> to_literal(const Value &v, model::Type to, SourceRang
   return e;
 }
 
-const model::Expr *fold_const(Context &cx, int index) {
+const model::Expr *fold_const(Context &cx, model::ConstId index) {
   using State = ConstSource::State;
-  if (index < 0 || index >= static_cast<int>(cx.consts.size())) return nullptr;
+  if (!cx.consts.contains(index)) return nullptr;
   ConstSource &src = cx.consts[index];
   model::Const &c = cx.model.consts[index];
   switch (src.state) {
@@ -205,8 +205,8 @@ const model::Expr *fold_const(Context &cx, int index) {
   case State::Pending: break;
   }
   // A chart's constants are only visible inside that chart, so it is the one being validated.
-  ChartScope *chart = c.chart >= 0 ? cx.chart : nullptr;
-  if (c.chart >= 0 && (!chart || chart->index != c.chart)) return nullptr;
+  ChartScope *chart = c.chart ? cx.chart : nullptr;
+  if (c.chart && (!chart || chart->index != c.chart)) return nullptr;
   // Folding recurses through the constants an initialiser reads: bound it, never the stack.
   if (cx.const_depth >= kMaxConstDepth) {
     cx.diag.error(src.decl->name.range, ErrorKind::NotConstant,

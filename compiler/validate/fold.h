@@ -43,6 +43,6 @@ constexpr int kMaxConstDepth = 1000;
 
 /// Folds constant `index` of the model (on first use, in its own scope) and returns its
 /// literal, or null if its declaration has an error (reported once, where it is).
-const model::Expr *fold_const(Context &cx, int index);
+const model::Expr *fold_const(Context &cx, model::ConstId index);
 
 }  // namespace gfec::validation

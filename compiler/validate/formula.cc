@@ -44,12 +44,13 @@ std::optional<model::Expr> lower_name(const ast::Expr &e, Context &cx, PlanScope
       return std::nullopt;
     }
     if (sym->index < 0) return std::nullopt;  // its declaration has an error
-    model::Expr x = make(K::Config, s.out.config[sym->index].type, e.range);
-    x.index = sym->index;
+    const model::ConfigId entry = sym->id<model::ConfigId>();
+    model::Expr x = make(K::Config, s.out.config[entry].type, e.range);
+    x.refer_to(entry);
     return x;
   }
   if (const Symbol *sym = cx.c_names.find(name.text); sym && sym->kind == Sym::Const) {
-    const model::Expr *value = fold_const(cx, sym->index);
+    const model::Expr *value = fold_const(cx, sym->id<model::ConstId>());
     if (!value) return std::nullopt;
     model::Expr x = *value;
     x.range = e.range;

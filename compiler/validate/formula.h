@@ -18,8 +18,8 @@ struct PlanScope {
   model::Plan &out;
   /// Config entries, actors and supervisors: all become members of the generated plan class.
   Namespace names;
-  std::set<std::string> unknown;  ///< unknown names already reported
-  std::set<int> toolboxes;        ///< toolboxes whose templates the plan uses
+  std::set<std::string> unknown;         ///< unknown names already reported
+  std::set<model::ToolboxId> toolboxes;  ///< toolboxes whose templates the plan uses
 };
 
 /// Lowers a formula. `constant` (a config initialiser): only literals and file-level constants.

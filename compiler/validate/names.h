@@ -4,8 +4,10 @@
 
 #include "ast.h"
 #include "diagnostics.h"
+#include "id.h"
 #include "name_index.h"
 
+#include <cassert>
 #include <cstdint>
 #include <deque>
 #include <initializer_list>
@@ -51,6 +53,11 @@ public:
   /// Views the text of the declaring ast::Name (or, in a list of did-you-mean candidates, a
   /// string that outlives the list): source text and the tree's strings outlive the validator.
   std::string_view name() const { return {name_, name_size_}; }
+  /// The element the symbol names, as the id of its model table (the kind says which).
+  template <typename IdT> IdT id() const {
+    assert(index >= 0);
+    return IdT(static_cast<std::size_t>(index));
+  }
 
 private:
   // A pointer and a 32-bit size rather than a std::string_view: 32 bytes a symbol, not 40, in
@@ -72,6 +79,10 @@ public:
   /// the first declaration) and returns false; so does an empty name, which only a recovered
   /// syntax error produces.
   bool declare(const ast::Name &name, Sym kind, int index, Diagnostics &diag);
+  /// The same, for the element `id` of a model table (none: its declaration has an error).
+  template <typename Tag> bool declare(const ast::Name &name, Sym kind, Id<Tag> id, Diagnostics &diag) {
+    return declare(name, kind, id ? static_cast<int>(id.index()) : -1, diag);
+  }
   const Symbol *find(std::string_view name) const;
   /// The symbols of the given kinds in declaration order: did-you-mean candidates.
   std::vector<const Symbol *> of(std::initializer_list<Sym> kinds) const;

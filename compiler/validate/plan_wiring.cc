@@ -30,7 +30,7 @@ std::optional<model::Target> lower_target(Context &cx, PlanScope &s, const ast::
     return t;
   case ast::Rule::Target::Actor:
     t.actor = resolve_actor(cx, s, r.target_name);
-    if (t.actor < 0) return std::nullopt;
+    if (!t.actor) return std::nullopt;
     return t;
   }
   return std::nullopt;
@@ -110,34 +110,34 @@ std::optional<model::Expr> lower_in_arg(Context &cx, PlanScope &s, const ast::Ex
 
 }  // namespace
 
-Callee template_callee(Context &cx, int index) {
+Callee template_callee(Context &cx, model::TemplateId index) {
   const model::Template &t = cx.model.templates[index];
-  Callee c{t.name, index, -1, t.outcomes, {}, t.range, t.kind == model::Template::Kind::Supervisor};
+  Callee c{t.name, index, {}, t.outcomes, {}, t.range, t.kind == model::Template::Kind::Supervisor};
   for (const ast::Name &n : cx.templates[index]->outcomes) c.outcome_decls.push_back(&n);
   return c;
 }
 
-Callee plan_callee(Context &cx, int index) {
+Callee plan_callee(Context &cx, model::PlanId index) {
   const model::Plan &p = cx.model.plans[index];
-  return {p.name, -1, index, {std::begin(model::kSubPlanStates), std::end(model::kSubPlanStates)}, {}, p.range, false};
+  return {p.name, {}, index, {std::begin(model::kSubPlanStates), std::end(model::kSubPlanStates)}, {}, p.range, false};
 }
 
-int resolve_actor(Context &cx, PlanScope &s, const ast::Name &name) {
-  if (name.text.empty()) return -1;
+model::ActorId resolve_actor(Context &cx, PlanScope &s, const ast::Name &name) {
+  if (name.text.empty()) return {};
   const Symbol *sym = s.names.find(name.text);
-  if (sym && sym->kind == Sym::Actor) return sym->index;
+  if (sym && sym->kind == Sym::Actor) return sym->id<model::ActorId>();
   // An actor that lost its name to an earlier declaration: the clash is reported already.
   for (std::size_t i = 0; sym && i < s.ast.actors.size(); ++i)
-    if (s.ast.actors[i].name.text == name.text) return static_cast<int>(i);
+    if (s.ast.actors[i].name.text == name.text) return model::ActorId(i);
   if (sym) {
     cx.diag
         .error(name.range, ErrorKind::TypeMismatch,
                fmt::format("'{}' is {}, not an actor", name.text, with_article(sym->kind)))
         .note(sym->range, fmt::format("'{}' declared here", name.text));
-    return -1;
+    return {};
   }
   report_unknown(cx.diag, s.unknown, name, "actor", s.names.of({Sym::Actor}));
-  return -1;
+  return {};
 }
 
 std::vector<model::Rule> lower_rules(Context &cx, PlanScope &s, const std::vector<ast::Rule> &rules, const Callee &c,
@@ -165,7 +165,7 @@ std::vector<model::Rule> lower_rules(Context &cx, PlanScope &s, const std::vecto
     if (connected[k]) continue;
     auto &d = cx.diag.error(owner.range, ErrorKind::NotConnected,
                             fmt::format("{} '{}' of '{}' is not connected", what, c.outcomes[k], c.name));
-    if (c.subplan >= 0) d.note(fmt::format("a sub-plan's result states are {}", outcome_list(c)));
+    if (c.subplan) d.note(fmt::format("a sub-plan's result states are {}", outcome_list(c)));
     else d.note(c.range, fmt::format("'{}' has the {}s {}", c.name, what, outcome_list(c)));
   }
   std::sort(out.begin(), out.end(), [](const model::Rule &a, const model::Rule &b) { return a.outcome < b.outcome; });
@@ -175,7 +175,7 @@ std::vector<model::Rule> lower_rules(Context &cx, PlanScope &s, const std::vecto
 std::vector<model::Arg> lower_args(Context &cx, PlanScope &s, const ast::ExprList &args, const Callee &c,
                                    SourceRange call) {
   std::vector<model::Arg> out;
-  if (c.subplan >= 0) {
+  if (c.subplan) {
     if (!args.empty())
       cx.diag.error(call, ErrorKind::ArgumentCount, fmt::format("sub-plan '{}' takes no arguments", c.name));
     return out;

@@ -12,8 +12,8 @@ namespace gfec::validation {
 /// What an actor or supervisor instantiates: a template, or (actors only) a sub-plan.
 struct Callee {
   std::string name;
-  int templ = -1;
-  int subplan = -1;
+  model::TemplateId templ;  ///< none for a sub-plan
+  model::PlanId subplan;    ///< none for a template
   std::vector<std::string> outcomes;
   std::vector<const ast::Name *> outcome_decls;  ///< empty for a sub-plan's fixed states
   SourceRange range;
@@ -21,11 +21,11 @@ struct Callee {
 };
 
 /// A toolbox template, or plan `index` used as a sub-plan (states OK, INTERRUPTED, ERROR).
-Callee template_callee(Context &cx, int index);
-Callee plan_callee(Context &cx, int index);
+Callee template_callee(Context &cx, model::TemplateId index);
+Callee plan_callee(Context &cx, model::PlanId index);
 
-/// The actor `name` refers to, or -1 after reporting why not.
-int resolve_actor(Context &cx, PlanScope &s, const ast::Name &name);
+/// The actor `name` refers to, or none after reporting why not.
+model::ActorId resolve_actor(Context &cx, PlanScope &s, const ast::Name &name);
 
 /// One rule per outcome of `c`, sorted by outcome (so rules[k] is outcome k once valid); every
 /// outcome must be connected exactly once. `owner` is the actor or supervisor, where a missing

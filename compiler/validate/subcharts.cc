@@ -14,23 +14,26 @@ namespace {
 
 /// One `runs`: place `place` of chart `parent` runs chart `child`.
 struct Edge {
-  int parent, place, child;
+  model::ChartId parent;
+  model::PlaceId place;
+  model::ChartId child;
 };
 
 std::string period_text(double ms) { return ms > 0 ? fmt::format("period {:g}ms", ms) : std::string("no period"); }
 
 const ast::Name &runs_name(const Context &cx, const Edge &e) {
-  return *cx.charts[static_cast<std::size_t>(e.parent)]->places[static_cast<std::size_t>(e.place)].runs();
+  return *cx.charts[e.parent]->places[e.place.index()].runs();
 }
 
 /// Resolves the chart after each `runs`; reports unknown names, plans and terminal states.
 std::vector<Edge> resolve_runs(Context &cx) {
   std::vector<Edge> edges;
-  for (std::size_t c = 0; c < cx.charts.size(); ++c) {
+  for (model::ChartId c : cx.charts.ids()) {
     const ast::Chart &chart = *cx.charts[c];
-    cx.runs[c].assign(chart.places.size(), -1);
-    for (std::size_t p = 0; p < chart.places.size(); ++p) {
-      const ast::Place &place = chart.places[p];
+    cx.runs[c].assign(chart.places.size(), model::ChartId());
+    for (std::size_t i = 0; i < chart.places.size(); ++i) {
+      const model::PlaceId p(i);
+      const ast::Place &place = chart.places[i];
       if (!place.runs() || place.runs()->text.empty()) continue;
       const ast::Name &name = *place.runs();
       if (place.terminal != ast::StateKind::Normal) {
@@ -54,7 +57,8 @@ std::vector<Edge> resolve_runs(Context &cx) {
             .note(sym->range, fmt::format("'{}' declared here", name.text));
         continue;
       }
-      const ast::Chart &run = *cx.charts[static_cast<std::size_t>(sym->index)];
+      const model::ChartId child = sym->id<model::ChartId>();
+      const ast::Chart &run = *cx.charts[child];
       if (!run.teams.empty()) {
         // A team machine talks to other agents through its root's API (docs/language.md "Teams").
         cx.diag
@@ -65,8 +69,8 @@ std::vector<Edge> resolve_runs(Context &cx) {
             .note(run.teams.front().second, "it is made a team machine here");
         continue;
       }
-      cx.runs[c][p] = sym->index;
-      edges.push_back({static_cast<int>(c), static_cast<int>(p), sym->index});
+      cx.runs[c][p] = child;
+      edges.push_back({c, p, child});
     }
   }
   return edges;
@@ -76,16 +80,16 @@ std::vector<Edge> resolve_runs(Context &cx) {
 /// first step, with a note at each step. Returns whether there was one.
 bool report_cycles(Context &cx, const std::vector<Edge> &edges) {
   std::size_t n = cx.charts.size();
-  std::vector<std::vector<const Edge *>> out(n);
-  for (const Edge &e : edges) out[static_cast<std::size_t>(e.parent)].push_back(&e);
+  IdMap<model::ChartId, std::vector<const Edge *>> out(n);
+  for (const Edge &e : edges) out[e.parent].push_back(&e);
   enum Color { White, Grey, Black };
-  std::vector<Color> color(n, White);
+  IdMap<model::ChartId, Color> color(n, White);
   std::vector<const Edge *> stack;  // the edges from the search's root to the current chart
   bool found = false;
-  std::function<void(int)> visit = [&](int c) {
-    color[static_cast<std::size_t>(c)] = Grey;
-    for (const Edge *e : out[static_cast<std::size_t>(c)]) {
-      if (color[static_cast<std::size_t>(e->child)] == Grey) {
+  std::function<void(model::ChartId)> visit = [&](model::ChartId c) {
+    color[c] = Grey;
+    for (const Edge *e : out[c]) {
+      if (color[e->child] == Grey) {
         std::vector<const Edge *> cycle;
         // The cycle starts with the edge on the path that leaves e->child (none for a self-loop).
         std::size_t first = stack.size();
@@ -95,33 +99,31 @@ bool report_cycles(Context &cx, const std::vector<Edge> &edges) {
         }
         cycle.assign(stack.begin() + static_cast<std::ptrdiff_t>(first), stack.end());
         cycle.push_back(e);
-        std::string steps = cx.model.charts[static_cast<std::size_t>(cycle.front()->parent)].name;
-        for (const Edge *s : cycle) steps += " -> " + cx.model.charts[static_cast<std::size_t>(s->child)].name;
-        const model::Chart &head = cx.model.charts[static_cast<std::size_t>(cycle.front()->parent)];
+        std::string steps = cx.model.charts[cycle.front()->parent].name;
+        for (const Edge *s : cycle) steps += " -> " + cx.model.charts[s->child].name;
+        const model::Chart &head = cx.model.charts[cycle.front()->parent];
         auto &d = cx.diag.error(runs_name(cx, *cycle.front()).range, ErrorKind::SubchartCycle,
                                 cycle.size() == 1
                                     ? fmt::format("chart '{}' runs itself", head.name)
                                     : fmt::format("chart '{}' runs itself through other charts: {}", head.name, steps));
         for (const Edge *s : cycle) {
-          const ast::Place &place =
-              cx.charts[static_cast<std::size_t>(s->parent)]->places[static_cast<std::size_t>(s->place)];
+          const ast::Place &place = cx.charts[s->parent]->places[s->place.index()];
           d.note(runs_name(cx, *s).range,
                  fmt::format("{} '{}' of '{}' runs '{}'", place.is_state ? "state" : "place", place.name.text,
-                             cx.model.charts[static_cast<std::size_t>(s->parent)].name,
-                             cx.model.charts[static_cast<std::size_t>(s->child)].name));
+                             cx.model.charts[s->parent].name, cx.model.charts[s->child].name));
         }
         found = true;
         continue;
       }
-      if (color[static_cast<std::size_t>(e->child)] == Black) continue;
+      if (color[e->child] == Black) continue;
       stack.push_back(e);
       visit(e->child);
       stack.pop_back();
     }
-    color[static_cast<std::size_t>(c)] = Black;
+    color[c] = Black;
   };
-  for (std::size_t c = 0; c < n; ++c)
-    if (color[c] == White) visit(static_cast<int>(c));
+  for (model::ChartId c : cx.charts.ids())
+    if (color[c] == White) visit(c);
   return found;
 }
 
@@ -132,13 +134,12 @@ double declared_period(const ast::Chart &c) { return !c.periods.empty() && c.per
 /// one that declares none takes it. Runs parents first (the graph has no cycle here).
 void inherit_periods(Context &cx, const std::vector<Edge> &edges) {
   std::size_t n = cx.charts.size();
-  std::vector<std::vector<const Edge *>> runners(n);
-  for (const Edge &e : edges) runners[static_cast<std::size_t>(e.child)].push_back(&e);
-  std::vector<int> state(n, 0);  // 0 not yet, 1 in progress, 2 done
-  std::vector<double> effective(n, 0);
-  std::vector<const Edge *> inherited_from(n, nullptr);
-  std::function<double(int)> period = [&](int c) -> double {
-    std::size_t i = static_cast<std::size_t>(c);
+  IdMap<model::ChartId, std::vector<const Edge *>> runners(n);
+  for (const Edge &e : edges) runners[e.child].push_back(&e);
+  IdMap<model::ChartId, int> state(n, 0);  // 0 not yet, 1 in progress, 2 done
+  IdMap<model::ChartId, double> effective(n, 0);
+  IdMap<model::ChartId, const Edge *> inherited_from(n, nullptr);
+  std::function<double(model::ChartId)> period = [&](model::ChartId i) -> double {
     if (state[i] == 2) return effective[i];
     if (state[i] == 1) return 0;  // unreachable without cycles; keeps a bug from recursing forever
     state[i] = 1;
@@ -147,7 +148,7 @@ void inherit_periods(Context &cx, const std::vector<Edge> &edges) {
     effective[i] = own;
     for (const Edge *e : runners[i]) {
       double parent = period(e->parent);
-      const std::string &parent_name = cx.model.charts[static_cast<std::size_t>(e->parent)].name;
+      const std::string &parent_name = cx.model.charts[e->parent].name;
       const ast::Name &at = runs_name(cx, *e);
       if (own > 0) {
         if (parent == own) continue;
@@ -170,14 +171,14 @@ void inherit_periods(Context &cx, const std::vector<Edge> &edges) {
           .error(at.range, ErrorKind::Period,
                  fmt::format("sub-chart '{}' would run at {} here but at {} in '{}'; it declares no period of its own",
                              chart.name.text, period_text(parent), period_text(effective[i]),
-                             cx.model.charts[static_cast<std::size_t>(first.parent)].name))
+                             cx.model.charts[first.parent].name))
           .note(runs_name(cx, first).range, fmt::format("'{}' is also run here", chart.name.text));
     }
     state[i] = 2;
     return effective[i];
   };
-  for (std::size_t c = 0; c < n; ++c) {
-    period(static_cast<int>(c));
+  for (model::ChartId c : cx.charts.ids()) {
+    period(c);
     if (declared_period(*cx.charts[c]) <= 0 && cx.charts[c]->periods.empty()) cx.inherited_period[c] = effective[c];
   }
 }
@@ -185,7 +186,7 @@ void inherit_periods(Context &cx, const std::vector<Edge> &edges) {
 }  // namespace
 
 void resolve_subcharts(Context &cx) {
-  cx.runs.assign(cx.charts.size(), {});
+  cx.runs.assign(cx.charts.size(), IdMap<model::PlaceId, model::ChartId>());
   cx.inherited_period.assign(cx.charts.size(), 0);
   std::vector<Edge> edges = resolve_runs(cx);
   if (edges.empty()) return;

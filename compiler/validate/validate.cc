@@ -32,7 +32,7 @@ model::Model validate(ast::Program &program, const SourceManager &sources, Diagn
 
 model::Model validate(ast::Program &program, const SourceManager &sources, Diagnostics &diag, scenario::Suite &tests) {
   model::Model model;
-  model.sources = &sources;
+  model.set_sources(sources);
   if (!program.files.empty() && program.files.front()) model.main_file = program.files.front()->id;
   validation::Context cx(program, sources, diag, model);
 
@@ -40,8 +40,8 @@ model::Model validate(ast::Program &program, const SourceManager &sources, Diagn
   collect_verbatims(cx);
   validation::fold_file_consts(cx);
   validation::resolve_subcharts(cx);
-  for (std::size_t i = 0; i < model.charts.size(); ++i) validation::validate_chart(cx, static_cast<int>(i));
-  for (std::size_t i = 0; i < model.plans.size(); ++i) validation::validate_plan(cx, static_cast<int>(i));
+  for (model::ChartId c : model.charts.ids()) validation::validate_chart(cx, c);
+  for (model::PlanId p : model.plans.ids()) validation::validate_plan(cx, p);
   validation::check_plan_recursion(cx);
   validation::validate_tests(cx, tests);
   return model;

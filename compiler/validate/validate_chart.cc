@@ -34,7 +34,7 @@ void set_period(Context &cx, ChartScope &s) {
     }
   }
   // A sub-chart that declares none runs at the period of the chart that runs it (§9).
-  if (periods.empty()) s.out.period_ms = cx.inherited_period[static_cast<std::size_t>(s.index)];
+  if (periods.empty()) s.out.period_ms = cx.inherited_period[s.index];
   // A bad period was reported: "needs a period" would only repeat it.
   if (!periods.empty() && s.out.period_ms <= 0) s.period_reported = true;
 }
@@ -92,14 +92,14 @@ void check_generated_name(Context &cx, ChartScope &s, const ast::Name &name, con
   }
 }
 
-void declare_place(Context &cx, ChartScope &s, const ast::Place &p, int index) {
+void declare_place(Context &cx, ChartScope &s, const ast::Place &p, model::PlaceId index) {
   model::Place out;
   out.name = p.name.text;
   out.initial = p.initial;
   out.terminal = p.terminal == ast::StateKind::Success   ? model::Terminal::Success
                  : p.terminal == ast::StateKind::Failure ? model::Terminal::Failure
                                                          : model::Terminal::None;
-  out.runs = cx.runs[static_cast<std::size_t>(s.index)][static_cast<std::size_t>(index)];
+  out.runs = cx.runs[s.index][index];
   out.range = p.range;
   out.name_range = p.name.range;
   s.out.places.push_back(std::move(out));
@@ -110,16 +110,16 @@ void declare_place(Context &cx, ChartScope &s, const ast::Place &p, int index) {
 void declare_value(Context &cx, ChartScope &s, const ast::ValueDecl &v) {
   if (!v.is_const) {
     auto type = lower_type(v.type, kScalar, "a variable", cx.diag);
-    int index = -1;
+    model::VarId index;
     if (type) {
-      index = static_cast<int>(s.out.vars.size());
+      index = s.out.vars.next_id();
       s.out.vars.push_back({std::string(v.name.text), *type, std::nullopt, v.range});
     }
     s.names.declare(v.name, Sym::Var, index, cx.diag);
     return;
   }
   auto type = lower_type(v.type, kScalar, "a constant", cx.diag);
-  int index = static_cast<int>(cx.model.consts.size());
+  const model::ConstId index = cx.model.consts.next_id();
   model::Const c;
   c.name = v.name.text;
   c.type = type.value_or(model::Type::Int);
@@ -158,11 +158,11 @@ void declare_names(Context &cx, ChartScope &s) {
   std::stable_sort(decls.begin(), decls.end(), [](const Decl &x, const Decl &y) { return x.begin < y.begin; });
   for (const Decl &d : decls) {
     switch (d.what) {
-    case What::Place: declare_place(cx, s, a.places[d.index], static_cast<int>(d.index)); break;
+    case What::Place: declare_place(cx, s, a.places[d.index], model::PlaceId(d.index)); break;
     case What::Value: declare_value(cx, s, a.values[d.index]); break;
     case What::Transition: {
       const ast::Name &name = a.transitions[d.index].name;
-      if (s.names.declare(name, Sym::Transition, static_cast<int>(d.index), cx.diag))
+      if (s.names.declare(name, Sym::Transition, model::TransitionId(d.index), cx.diag))
         check_generated_name(cx, s, name, "transition");
       break;
     }
@@ -204,12 +204,12 @@ void lower_values(Context &cx, ChartScope &s) {
     const Symbol *sym = s.names.find(v.name.text);
     if (!sym || sym->range.begin != v.name.range.begin) continue;  // a duplicate, already reported
     if (v.is_const) {
-      fold_const(cx, sym->index);  // used or not, so each error is reported
+      fold_const(cx, sym->id<model::ConstId>());  // used or not, so each error is reported
       continue;
     }
     if (sym->index < 0 || !v.init) continue;
     ExprScope scope{cx, &s, true};
-    model::Var &var = s.out.vars[sym->index];
+    model::Var &var = s.out.vars[sym->id<model::VarId>()];
     var.init = lower_initializer(v.init.get(), scope, var.type, var.name);
     if (var.init) evaluate(*var.init, cx.model, &cx.diag);  // _init computes it: no division by zero
   }
@@ -221,8 +221,8 @@ void lower_bodies(Context &cx, ChartScope &s) {
     ast::Place &p = s.ast.places[i];
     model::Place &out = s.out.places[i];
     out.action = lower_block(p.action, scope);
-    if (p.entry()) out.entry = lower_block(*p.entry(), scope);
-    if (p.exit()) out.exit = lower_block(*p.exit(), scope);
+    if (p.extras && p.extras->entry) out.entry = lower_block(*p.extras->entry, scope);
+    if (p.extras && p.extras->exit) out.exit = lower_block(*p.extras->exit, scope);
     // Lowered: the tree's statements are no longer needed, and a chart of a million places
     // should not hold both forms at once (docs/performance.md).
     ast::Block().swap(p.action);
@@ -257,13 +257,13 @@ void declare_chart(Context &cx, ast::Chart &chart) {
   out.in_main_file = cx.in_main_file(chart.range);
   out.range = chart.range;
   out.name_range = chart.name.range;
-  int index = static_cast<int>(cx.model.charts.size());
+  const model::ChartId index = cx.model.charts.next_id();
   cx.model.charts.push_back(std::move(out));
   cx.charts.push_back(&chart);
   cx.declare_global(cx.c_names, chart.name, Sym::Chart, index);
 }
 
-void validate_chart(Context &cx, int index) {
+void validate_chart(Context &cx, model::ChartId index) {
   ErrorWatch watch(cx.diag);
   ChartScope scope(*cx.charts[index], cx.model.charts[index], index);
   cx.chart = &scope;

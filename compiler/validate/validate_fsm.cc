@@ -5,7 +5,6 @@
 #include <fmt/format.h>
 
 #include <map>
-#include <numeric>
 
 namespace gfec::validation {
 
@@ -39,32 +38,32 @@ void check_state(Context &cx, ChartScope &s, const ast::Place &p, model::Place &
 }
 
 /// Notes initial state `index`; a second one is an error (§7: exactly one).
-void note_initial(Context &cx, ChartScope &s, int index, int &initial) {
-  if (initial < 0) {
+void note_initial(Context &cx, ChartScope &s, model::PlaceId index, model::PlaceId &initial) {
+  if (!initial) {
     initial = index;
     return;
   }
+  const ast::Place &first = s.ast.places[initial.index()];
   cx.diag
-      .error(s.ast.places[index].name.range, ErrorKind::InitialState,
+      .error(s.ast.places[index.index()].name.range, ErrorKind::InitialState,
              fmt::format("fsm '{}' has more than one initial state", s.out.name))
-      .note(s.ast.places[initial].name.range,
-            fmt::format("'{}' is already its initial state", s.ast.places[initial].name.text));
+      .note(first.name.range, fmt::format("'{}' is already its initial state", first.name.text));
 }
 
 /// One side of an fsm transition: exactly one state.
-int one_state(Context &cx, ChartScope &s, const ast::Transition &t, ast::NameSpan names, const char *side) {
+model::PlaceId one_state(Context &cx, ChartScope &s, const ast::Transition &t, ast::NameSpan names, const char *side) {
   if (names.size() != 1) {
     cx.diag.error(t.range, ErrorKind::FsmTransition, fmt::format("an fsm transition has exactly one {} state", side));
-    return -1;
+    return {};
   }
   return resolve_place(s, cx, names[0]);
 }
 
 /// Checks one resolved transition `from -> to` against the rules of §7.
-void check_transition(Context &cx, ChartScope &s, std::size_t i, int from, int to,
-                      std::map<std::pair<int, int>, std::size_t> &pairs) {
+void check_transition(Context &cx, ChartScope &s, std::size_t i, model::PlaceId from, model::PlaceId to,
+                      std::map<std::pair<model::PlaceId, model::PlaceId>, std::size_t> &pairs) {
   const ast::Transition &t = s.ast.transitions[i];
-  const ast::Place &source = s.ast.places[from];
+  const ast::Place &source = s.ast.places[from.index()];
   if (terminal(source))
     cx.diag
         .error(where(t), ErrorKind::TerminalState,
@@ -77,23 +76,23 @@ void check_transition(Context &cx, ChartScope &s, std::size_t i, int from, int t
   if (!fresh)
     cx.diag
         .error(where(t), ErrorKind::DuplicateTransition,
-               fmt::format("second transition from '{}' to '{}'", source.name.text, s.ast.places[to].name.text))
+               fmt::format("second transition from '{}' to '{}'", source.name.text, s.ast.places[to.index()].name.text))
         .note(where(s.ast.transitions[it->second]), "the first one is here");
 }
 
 /// Every state must be weakly connected to the initial state (§7).
-void check_connected(Context &cx, ChartScope &s, int initial) {
-  std::vector<int> parent(s.out.places.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  auto root = [&](int x) {
+void check_connected(Context &cx, ChartScope &s, model::PlaceId initial) {
+  IdMap<model::PlaceId, model::PlaceId> parent(s.out.places.size());  // union-find
+  for (model::PlaceId p : s.out.places.ids()) parent[p] = p;
+  auto root = [&](model::PlaceId x) {
     while (parent[x] != x) x = parent[x] = parent[parent[x]];
     return x;
   };
   for (const auto &t : s.out.transitions)
     if (!t.inputs.empty() && !t.outputs.empty()) parent[root(t.inputs[0])] = root(t.outputs[0]);
-  for (std::size_t p = 0; p < s.out.places.size(); ++p) {
-    if (root(static_cast<int>(p)) == root(initial)) continue;
-    cx.diag.error(s.ast.places[p].name.range, ErrorKind::NotConnected,
+  for (model::PlaceId p : s.out.places.ids()) {
+    if (root(p) == root(initial)) continue;
+    cx.diag.error(s.ast.places[p.index()].name.range, ErrorKind::NotConnected,
                   fmt::format("state '{}' is not connected to the initial state '{}'", s.out.places[p].name,
                               s.out.places[initial].name));
   }
@@ -101,28 +100,29 @@ void check_connected(Context &cx, ChartScope &s, int initial) {
 
 /// States the machine can never enter (conditions treated as free, except a constant false)
 /// and the transitions that leave them.
-void warn_unreachable(Context &cx, ChartScope &s, int initial) {
+void warn_unreachable(Context &cx, ChartScope &s, model::PlaceId initial) {
   const model::Chart &c = s.out;
-  std::vector<bool> live, reach(c.places.size());
-  std::vector<std::vector<int>> next(c.places.size());  // a search, linear in the machine
+  std::vector<bool> live;
+  IdMap<model::PlaceId, bool> reach(c.places.size());
+  IdMap<model::PlaceId, std::vector<model::PlaceId>> next(c.places.size());  // a search, linear in the machine
   for (const auto &t : c.transitions) {
     live.push_back(constant_condition(t.condition, cx.model) != false);
-    if (live.back()) next[static_cast<std::size_t>(t.inputs[0])].push_back(t.outputs[0]);
+    if (live.back()) next[t.inputs[0]].push_back(t.outputs[0]);
   }
-  std::vector<int> work{initial};
+  std::vector<model::PlaceId> work{initial};
   reach[initial] = true;
   while (!work.empty()) {
-    int p = work.back();
+    model::PlaceId p = work.back();
     work.pop_back();
-    for (int q : next[static_cast<std::size_t>(p)])
+    for (model::PlaceId q : next[p])
       if (!reach[q]) {
         reach[q] = true;
         work.push_back(q);
       }
   }
-  for (std::size_t p = 0; p < c.places.size(); ++p)
+  for (model::PlaceId p : c.places.ids())
     if (!reach[p])
-      cx.diag.warning(Warning::UnreachablePlace, s.ast.places[p].name.range,
+      cx.diag.warning(Warning::UnreachablePlace, s.ast.places[p.index()].name.range,
                       fmt::format("state '{}' can never become active", c.places[p].name));
   for (std::size_t t = 0; t < c.transitions.size(); ++t) {
     const auto &tr = c.transitions[t];
@@ -140,23 +140,23 @@ void warn_unreachable(Context &cx, ChartScope &s, int initial) {
 
 void resolve_fsm_places(Context &cx, ChartScope &s, std::size_t index) {
   const ast::Transition &t = s.ast.transitions[index];
-  int from = one_state(cx, s, t, t.inputs(), "source");
-  int to = one_state(cx, s, t, t.outputs(), "target");
-  if (from < 0 || to < 0) return;  // left without places: check_fsm sees it was not resolved
+  model::PlaceId from = one_state(cx, s, t, t.inputs(), "source");
+  model::PlaceId to = one_state(cx, s, t, t.outputs(), "target");
+  if (!from || !to) return;  // left without places: check_fsm sees it was not resolved
   s.out.transitions[index].inputs = {from};
   s.out.transitions[index].outputs = {to};
 }
 
 void check_fsm(Context &cx, ChartScope &s, const ErrorWatch &watch) {
-  int initial = -1;
-  for (std::size_t i = 0; i < s.ast.places.size(); ++i) {
-    check_state(cx, s, s.ast.places[i], s.out.places[i]);
-    if (s.ast.places[i].initial) note_initial(cx, s, static_cast<int>(i), initial);
+  model::PlaceId initial;
+  for (model::PlaceId p : s.out.places.ids()) {
+    check_state(cx, s, s.ast.places[p.index()], s.out.places[p]);
+    if (s.ast.places[p.index()].initial) note_initial(cx, s, p, initial);
   }
-  if (initial < 0)
+  if (!initial)
     cx.diag.error(s.ast.name.range, ErrorKind::InitialState, fmt::format("fsm '{}' has no initial state", s.out.name))
         .note("mark the state it starts in with 'initial state'");
-  std::map<std::pair<int, int>, std::size_t> pairs;
+  std::map<std::pair<model::PlaceId, model::PlaceId>, std::size_t> pairs;
   bool resolved = true;  // every transition has its two states (resolve_fsm_places)
   for (std::size_t i = 0; i < s.ast.transitions.size(); ++i) {
     const model::Transition &t = s.out.transitions[i];
@@ -166,8 +166,8 @@ void check_fsm(Context &cx, ChartScope &s, const ErrorWatch &watch) {
   }
   // A transition that could not be resolved would make the connectivity check report its
   // consequences.
-  if (initial >= 0 && resolved) check_connected(cx, s, initial);
-  if (initial >= 0 && watch.clean()) warn_unreachable(cx, s, initial);
+  if (initial && resolved) check_connected(cx, s, initial);
+  if (initial && watch.clean()) warn_unreachable(cx, s, initial);
 }
 
 }  // namespace gfec::validation

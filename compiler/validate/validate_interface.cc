@@ -31,7 +31,7 @@ bool lower_prototype(const ast::FunctionDecl &f, model::Function &out, Diagnosti
 }  // namespace
 
 void declare_interface(Context &cx, const ast::Interface &iface) {
-  cx.declare_global(cx.interfaces, iface.name, Sym::Interface, -1);
+  cx.declare_global(cx.interfaces, iface.name, Sym::Interface);
   for (const ast::FunctionDecl &f : iface.functions) {
     model::Function out;
     out.name = f.name.text;
@@ -42,7 +42,7 @@ void declare_interface(Context &cx, const ast::Interface &iface) {
       if (f.name.text == builtin)
         cx.diag.error(f.name.range, ErrorKind::ReservedName,
                       fmt::format("'{}' is built into the chart language and cannot name a function", builtin));
-    int index = static_cast<int>(cx.model.functions.size());
+    const model::FunctionId index = cx.model.functions.next_id();
     cx.model.functions.push_back(std::move(out));
     cx.function_ok.push_back(ok);
     cx.declare_global(cx.c_names, f.name, Sym::Function, index);
@@ -55,7 +55,7 @@ void declare_file_const(Context &cx, const ast::ValueDecl &decl) {
   c.range = decl.range;
   auto type = lower_type(decl.type, kScalar | kString, "a constant", cx.diag);
   c.type = type.value_or(model::Type::Int);
-  int index = static_cast<int>(cx.model.consts.size());
+  const model::ConstId index = cx.model.consts.next_id();
   cx.model.consts.push_back(std::move(c));
   cx.consts.push_back({&decl, type ? ConstSource::State::Pending : ConstSource::State::Failed});
   cx.declare_global(cx.c_names, decl.name, Sym::Const, index);
@@ -63,7 +63,7 @@ void declare_file_const(Context &cx, const ast::ValueDecl &decl) {
 
 void fold_file_consts(Context &cx) {
   // Every constant is folded, used or not, so each bad one is reported where it is declared.
-  for (std::size_t i = 0; i < cx.consts.size(); ++i) fold_const(cx, static_cast<int>(i));
+  for (model::ConstId c : cx.consts.ids()) fold_const(cx, c);
 }
 
 }  // namespace gfec::validation

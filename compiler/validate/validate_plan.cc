@@ -18,14 +18,14 @@ using model::Type;
 
 // ------------------------------------------------------------------ names
 
-/// Lowers the config entries' types: each entry's index into Plan::config, or -1 if its type
-/// is wrong (uses of it then stay silent).
-std::vector<int> lower_config_types(Context &cx, PlanScope &s) {
-  std::vector<int> index;
+/// Lowers the config entries' types: each entry's id in Plan::config, or none if its type is
+/// wrong (uses of it then stay silent).
+std::vector<model::ConfigId> lower_config_types(Context &cx, PlanScope &s) {
+  std::vector<model::ConfigId> index;
   for (const auto &block : s.ast.config_blocks) {
     for (const ast::ConfigEntry &e : block) {
       auto type = lower_type(e.type, kScalar | kString | kObject, "a config entry", cx.diag);
-      index.push_back(type ? static_cast<int>(s.out.config.size()) : -1);
+      index.push_back(type ? s.out.config.next_id() : model::ConfigId());
       if (type) s.out.config.push_back({std::string(e.name.text), *type, std::nullopt, e.range, e.name.range});
     }
   }
@@ -34,7 +34,7 @@ std::vector<int> lower_config_types(Context &cx, PlanScope &s) {
 
 /// Config entries, actors and supervisors, declared in textual order so a duplicate's note
 /// points at the one that comes first.
-void declare_members(Context &cx, PlanScope &s, const std::vector<int> &config_index) {
+void declare_members(Context &cx, PlanScope &s, const std::vector<model::ConfigId> &config_index) {
   struct Member {
     const ast::Name *name;
     Sym kind;
@@ -43,7 +43,10 @@ void declare_members(Context &cx, PlanScope &s, const std::vector<int> &config_i
   std::vector<Member> members;
   std::size_t entry = 0;
   for (const auto &block : s.ast.config_blocks)
-    for (const auto &e : block) members.push_back({&e.name, Sym::ConfigEntry, config_index[entry++]});
+    for (const auto &e : block) {
+      const model::ConfigId id = config_index[entry++];
+      members.push_back({&e.name, Sym::ConfigEntry, id ? static_cast<int>(id.index()) : -1});
+    }
   for (const auto &g : s.ast.global_supervisors) members.push_back({&g.name, Sym::Supervisor, -1});
   for (std::size_t i = 0; i < s.ast.actors.size(); ++i) {
     members.push_back({&s.ast.actors[i].name, Sym::Actor, static_cast<int>(i)});
@@ -71,12 +74,12 @@ std::optional<model::Expr> lower_config_init(Context &cx, PlanScope &s, const as
   return to_literal(*v, type, init->range, cx.diag, &*init);
 }
 
-void lower_config_inits(Context &cx, PlanScope &s, const std::vector<int> &config_index) {
+void lower_config_inits(Context &cx, PlanScope &s, const std::vector<model::ConfigId> &config_index) {
   std::size_t entry = 0;
   for (const auto &block : s.ast.config_blocks) {
     for (const ast::ConfigEntry &e : block) {
-      int index = config_index[entry++];
-      if (index < 0 || !e.init) continue;
+      const model::ConfigId index = config_index[entry++];
+      if (!index || !e.init) continue;
       s.out.config[index].init = lower_config_init(cx, s, e, s.out.config[index].type);
     }
   }
@@ -105,22 +108,22 @@ std::optional<Callee> resolve_callee(Context &cx, PlanScope &s, const ast::Name 
   if (!sym) {
     std::vector<const Symbol *> candidates;
     for (const Symbol *c : cx.plan_names.of({Sym::Template, Sym::Plan})) {
-      bool is_supervisor =
-          c->kind == Sym::Template && cx.model.templates[c->index].kind == model::Template::Kind::Supervisor;
+      bool is_supervisor = c->kind == Sym::Template &&
+                           cx.model.templates[c->id<model::TemplateId>()].kind == model::Template::Kind::Supervisor;
       if (is_supervisor == supervisor) candidates.push_back(c);
     }
     report_unknown(cx.diag, s.unknown, name, supervisor ? "supervisor template" : "template", candidates);
     return std::nullopt;
   }
   if (sym->kind == Sym::Plan) {
-    if (!supervisor) return plan_callee(cx, sym->index);
+    if (!supervisor) return plan_callee(cx, sym->id<model::PlanId>());
     cx.diag
         .error(name.range, ErrorKind::TemplateKind,
                fmt::format("'{}' is a plan; 'supervise' needs a supervisor template", name.text))
-        .note(cx.model.plans[sym->index].range, fmt::format("'{}' declared here", name.text));
+        .note(cx.model.plans[sym->id<model::PlanId>()].range, fmt::format("'{}' declared here", name.text));
     return std::nullopt;
   }
-  const model::Template &t = cx.model.templates[sym->index];
+  const model::Template &t = cx.model.templates[sym->id<model::TemplateId>()];
   if ((t.kind == model::Template::Kind::Supervisor) != supervisor) {
     cx.diag
         .error(name.range, ErrorKind::TemplateKind,
@@ -131,7 +134,7 @@ std::optional<Callee> resolve_callee(Context &cx, PlanScope &s, const ast::Name 
     return std::nullopt;
   }
   s.toolboxes.insert(t.toolbox);
-  return template_callee(cx, sym->index);
+  return template_callee(cx, sym->id<model::TemplateId>());
 }
 
 model::SupervisorUse lower_supervise(Context &cx, PlanScope &s, const ast::Supervise &sup) {
@@ -152,7 +155,7 @@ model::ActorUse lower_actor(Context &cx, PlanScope &s, const ast::ActorUse &a) {
   out.range = a.range;
   out.name_range = a.name.range;
   auto c = resolve_callee(cx, s, a.template_name, false);
-  bool computation = c && c->templ >= 0 && cx.model.templates[c->templ].kind == model::Template::Kind::Computation;
+  bool computation = c && c->templ && cx.model.templates[c->templ].kind == model::Template::Kind::Computation;
   if (c && a.written_as_computation && !computation)
     cx.diag.error(a.template_name.range, ErrorKind::TemplateKind, fmt::format("'{}' is not a computation", c->name))
         .note(c->range, fmt::format("'{}' declared here", c->name));
@@ -198,9 +201,9 @@ void lower_members(Context &cx, PlanScope &s) {
 /// and of the global supervisors (which may interrupt any actor).
 void warn_unreachable(Context &cx, PlanScope &s) {
   const model::Plan &p = s.out;
-  if (p.start < 0) return;
-  std::vector<bool> reach(p.actors.size());
-  std::vector<int> work{p.start};
+  if (!p.start) return;
+  IdMap<model::ActorId, bool> reach(p.actors.size());
+  std::vector<model::ActorId> work{p.start};
   reach[p.start] = true;
   auto follow = [&](const std::vector<model::Rule> &rules) {
     for (const auto &r : rules)
@@ -216,9 +219,9 @@ void warn_unreachable(Context &cx, PlanScope &s) {
     follow(a.rules);
     for (const auto &sup : a.supervisors) follow(sup.rules);
   }
-  for (std::size_t i = 0; i < p.actors.size(); ++i)
+  for (model::ActorId i : p.actors.ids())
     if (!reach[i])
-      cx.diag.warning(Warning::UnreachableActor, s.ast.actors[i].name.range,
+      cx.diag.warning(Warning::UnreachableActor, s.ast.actors[i.index()].name.range,
                       fmt::format("actor '{}' is never reached from the start actor '{}'", p.actors[i].name,
                                   p.actors[p.start].name));
 }
@@ -227,24 +230,24 @@ void warn_unreachable(Context &cx, PlanScope &s) {
 
 struct PlanGraph {
   Context &cx;
-  std::vector<int> color;  ///< 0 unvisited, 1 on the path, 2 done
+  IdMap<model::PlanId, int> color;  ///< 0 unvisited, 1 on the path, 2 done
   /// The path being explored: (plan, its next actor to look at). An explicit stack, so a long
   /// chain of sub-plans cannot overflow the real one.
-  std::vector<std::pair<int, int>> stack;
+  std::vector<std::pair<model::PlanId, std::size_t>> stack;
 
-  void visit(int root) {
+  void visit(model::PlanId root) {
     color[root] = 1;
     stack.push_back({root, 0});
     while (!stack.empty()) {
       auto &[plan, next] = stack.back();
       const auto &actors = cx.model.plans[plan].actors;
-      if (next == static_cast<int>(actors.size())) {
+      if (next == actors.size()) {
         color[plan] = 2;
         stack.pop_back();
         continue;
       }
-      int sub = actors[next++].subplan;
-      if (sub < 0) continue;
+      model::PlanId sub = actors[next++].subplan;
+      if (!sub) continue;
       if (color[sub] == 1) report(sub);
       if (color[sub] != 0) continue;
       color[sub] = 1;
@@ -254,7 +257,7 @@ struct PlanGraph {
 
   /// `plan` is on the path: the path from it to the top is the chain that contains it (each
   /// entry's actor just before `next` is the one that uses the following plan).
-  void report(int plan) {
+  void report(model::PlanId plan) {
     auto &d = cx.diag.error(cx.plans[plan]->name.range, ErrorKind::RecursivePlan,
                             fmt::format("plan '{}' contains itself", cx.model.plans[plan].name));
     auto first = std::find_if(stack.begin(), stack.end(), [&](const auto &e) { return e.first == plan; });
@@ -273,16 +276,16 @@ void declare_plan(Context &cx, const ast::Plan &plan) {
   out.name = plan.name.text;
   out.in_main_file = cx.in_main_file(plan.range);
   out.range = plan.range;
-  int index = static_cast<int>(cx.model.plans.size());
+  const model::PlanId index = cx.model.plans.next_id();
   cx.model.plans.push_back(std::move(out));
   cx.plans.push_back(&plan);
   cx.declare_global(cx.plan_names, plan.name, Sym::Plan, index);
 }
 
-void validate_plan(Context &cx, int index) {
+void validate_plan(Context &cx, model::PlanId index) {
   ErrorWatch watch(cx.diag);
   PlanScope s(*cx.plans[index], cx.model.plans[index]);
-  std::vector<int> config_index = lower_config_types(cx, s);
+  std::vector<model::ConfigId> config_index = lower_config_types(cx, s);
   declare_members(cx, s, config_index);
   lower_config_inits(cx, s, config_index);
   set_start(cx, s);
@@ -292,9 +295,9 @@ void validate_plan(Context &cx, int index) {
 }
 
 void check_plan_recursion(Context &cx) {
-  PlanGraph g{cx, std::vector<int>(cx.model.plans.size()), {}};
-  for (std::size_t p = 0; p < cx.model.plans.size(); ++p)
-    if (g.color[p] == 0) g.visit(static_cast<int>(p));
+  PlanGraph g{cx, IdMap<model::PlanId, int>(cx.model.plans.size()), {}};
+  for (model::PlanId p : cx.model.plans.ids())
+    if (g.color[p] == 0) g.visit(p);
 }
 
 }  // namespace gfec::validation

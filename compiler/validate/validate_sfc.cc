@@ -26,12 +26,12 @@ void check_keywords(Context &cx, const ast::Place &p) {
 }
 
 /// Resolves a transition's inputs or outputs (`side`), reporting a place listed twice.
-std::vector<int> resolve_places(Context &cx, ChartScope &s, ast::NameSpan names, const char *side,
+model::PlaceList resolve_places(Context &cx, ChartScope &s, ast::NameSpan names, const char *side,
                                 std::string_view transition) {
-  std::vector<int> out;
+  model::PlaceList out;
   for (std::size_t i = 0; i < names.size(); ++i) {
-    int p = resolve_place(s, cx, names[i]);
-    if (p < 0) continue;
+    model::PlaceId p = resolve_place(s, cx, names[i]);
+    if (!p) continue;
     bool twice = false;
     for (std::size_t j = 0; j < i && !twice; ++j) {
       if (names[j].text != names[i].text) continue;
@@ -54,8 +54,8 @@ void lower_conditions(Context &cx, ChartScope &s) {
 /// The places some activation can reach, treating every condition as free except a constant
 /// `false`: a place is reachable if a live transition outputs it from reachable inputs.
 /// A worklist, so the cost is linear in the chart whatever the order of its declarations.
-std::vector<bool> reachable_places(const model::Chart &c, const std::vector<bool> &live) {
-  std::vector<bool> reach(c.places.size());
+IdMap<model::PlaceId, bool> reachable_places(const model::Chart &c, const std::vector<bool> &live) {
+  IdMap<model::PlaceId, bool> reach(c.places.size());
   // The transitions that consume each place, as one flat array (compressed rows: place p's are
   // consumers[first[p]] up to consumers[first[p + 1]]) rather than a heap vector per place, which
   // a chart of a million places would allocate a million times (docs/performance.md).
@@ -63,29 +63,28 @@ std::vector<bool> reachable_places(const model::Chart &c, const std::vector<bool
   std::vector<std::uint32_t> missing(c.transitions.size());  // inputs not reached yet
   for (std::size_t t = 0; t < c.transitions.size(); ++t) {
     missing[t] = static_cast<std::uint32_t>(c.transitions[t].inputs.size());
-    for (int p : c.transitions[t].inputs) ++first[static_cast<std::size_t>(p) + 1];
+    for (model::PlaceId p : c.transitions[t].inputs) ++first[p.index() + 1];
   }
   for (std::size_t p = 0; p < c.places.size(); ++p) first[p + 1] += first[p];
   std::vector<std::uint32_t> consumers(first.back());
   std::vector<std::uint32_t> next(first.begin(), first.end() - 1);  // where each row's next goes
   for (std::size_t t = 0; t < c.transitions.size(); ++t)
-    for (int p : c.transitions[t].inputs)
-      consumers[next[static_cast<std::size_t>(p)]++] = static_cast<std::uint32_t>(t);
+    for (model::PlaceId p : c.transitions[t].inputs) consumers[next[p.index()]++] = static_cast<std::uint32_t>(t);
   std::vector<std::uint32_t>().swap(next);
-  std::vector<std::size_t> work;
-  auto reached = [&](std::size_t p) {
+  std::vector<model::PlaceId> work;
+  auto reached = [&](model::PlaceId p) {
     if (reach[p]) return;
     reach[p] = true;
     work.push_back(p);
   };
-  for (std::size_t p = 0; p < c.places.size(); ++p)
+  for (model::PlaceId p : c.places.ids())
     if (c.places[p].initial) reached(p);
   while (!work.empty()) {
-    std::size_t p = work.back();
+    std::size_t p = work.back().index();
     work.pop_back();
     for (std::uint32_t k = first[p]; k < first[p + 1]; ++k)
       if (std::uint32_t t = consumers[k]; --missing[t] == 0 && live[t])
-        for (int q : c.transitions[t].outputs) reached(static_cast<std::size_t>(q));
+        for (model::PlaceId q : c.transitions[t].outputs) reached(q);
   }
   return reach;
 }
@@ -98,10 +97,10 @@ void warn_unreachable(Context &cx, ChartScope &s) {
     constant.push_back(constant_condition(t.condition, cx.model));
     live.push_back(constant.back() != false);
   }
-  std::vector<bool> reach = reachable_places(c, live);
-  for (std::size_t p = 0; p < c.places.size(); ++p)
+  IdMap<model::PlaceId, bool> reach = reachable_places(c, live);
+  for (model::PlaceId p : c.places.ids())
     if (!reach[p])
-      cx.diag.warning(Warning::UnreachablePlace, s.ast.places[p].name.range,
+      cx.diag.warning(Warning::UnreachablePlace, s.ast.places[p.index()].name.range,
                       fmt::format("place '{}' can never become active", c.places[p].name));
   std::vector<bool> dead(c.transitions.size());
   for (std::size_t t = 0; t < c.transitions.size(); ++t) {
@@ -113,7 +112,7 @@ void warn_unreachable(Context &cx, ChartScope &s) {
       dead[t] = true;
       continue;
     }
-    for (int p : tr.inputs) {
+    for (model::PlaceId p : tr.inputs) {
       if (reach[p]) continue;
       cx.diag.warning(Warning::DeadTransition, at,
                       fmt::format("transition '{}' can never fire: its input place '{}' never "
@@ -128,14 +127,12 @@ void warn_unreachable(Context &cx, ChartScope &s) {
   // (and is not, like it, constant). Per place, the first such transition of either kind is kept,
   // so the check is linear in the chart rather than quadratic in its transitions.
   const std::size_t none = c.transitions.size();
-  std::vector<std::size_t> first_any(c.places.size(), none), first_varying(c.places.size(), none);
+  IdMap<model::PlaceId, std::size_t> first_any(c.places.size(), none), first_varying(c.places.size(), none);
   for (std::size_t j = 0; j < c.transitions.size(); ++j) {
     if (dead[j]) continue;
     const auto &second = c.transitions[j];
     std::size_t i = none;
-    for (int p : second.inputs)
-      i = std::min(i,
-                   constant[j] ? first_varying[static_cast<std::size_t>(p)] : first_any[static_cast<std::size_t>(p)]);
+    for (model::PlaceId p : second.inputs) i = std::min(i, constant[j] ? first_varying[p] : first_any[p]);
     if (i != none) {
       const auto &first = c.transitions[i];
       auto shared =
@@ -147,10 +144,9 @@ void warn_unreachable(Context &cx, ChartScope &s) {
           .note(where(s.ast.transitions[i]),
                 fmt::format("'{}' is declared first: when both can fire, it takes the activation", first.name));
     }
-    for (int p : second.inputs) {
-      auto q = static_cast<std::size_t>(p);
-      if (first_any[q] == none) first_any[q] = j;
-      if (!constant[j] && first_varying[q] == none) first_varying[q] = j;
+    for (model::PlaceId p : second.inputs) {
+      if (first_any[p] == none) first_any[p] = j;
+      if (!constant[j] && first_varying[p] == none) first_varying[p] = j;
     }
   }
 }

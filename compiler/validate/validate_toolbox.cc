@@ -69,7 +69,7 @@ void declare_toolbox(Context &cx, const ast::Toolbox &toolbox) {
   model::Toolbox box;
   box.name = toolbox.name.text;
   box.range = toolbox.range;
-  int box_index = static_cast<int>(cx.model.toolboxes.size());
+  const model::ToolboxId box_index = cx.model.toolboxes.next_id();
   cx.declare_global(cx.toolboxes, toolbox.name, Sym::Toolbox, box_index);
   for (const ast::Template &t : toolbox.templates) {
     model::Template out;
@@ -80,7 +80,7 @@ void declare_toolbox(Context &cx, const ast::Toolbox &toolbox) {
     bool ok = lower_params(cx, t, out);
     lower_outcomes(cx, t, out);
     lower_period(cx, t, out);
-    int index = static_cast<int>(cx.model.templates.size());
+    const model::TemplateId index = cx.model.templates.next_id();
     cx.model.templates.push_back(std::move(out));
     cx.templates.push_back(&t);
     cx.template_ok.push_back(ok);

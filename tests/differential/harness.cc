@@ -136,10 +136,10 @@ Outcome Harness::prepare(Case &c) const {
   p->c.front_end(chart_file, files);
   if (p->diag.has_errors()) return {Verdict::Invalid, printed(p->diag, p->sources), ""};
   // The compiled chart: the root (a hierarchical program also declares its sub-charts).
-  int root = -1;
-  for (std::size_t i = 0; i < p->model.charts.size(); ++i)
-    if (p->model.charts[i].name == c.chart.name) root = static_cast<int>(i);
-  if (root < 0 || p->model.charts.size() != 1 + c.chart.pool.size())
+  model::ChartId root;
+  for (model::ChartId i : p->model.charts.ids())
+    if (p->model.charts[i].name == c.chart.name) root = i;
+  if (!root || p->model.charts.size() != 1 + c.chart.pool.size())
     return {Verdict::Invalid, "the model does not hold the generated charts\n" + printed(p->diag, p->sources), ""};
 
   Diagnostics trace_diag;
@@ -174,7 +174,7 @@ Outcome Harness::prepare(Case &c) const {
   try {
     p->engine = emit_to_memory(*make_c_backend(), p->model, o);
   } catch (const std::exception &e) { return {Verdict::Crash, fmt::format("the C back end threw: {}", e.what()), ""}; }
-  const model::Chart &compiled = p->model.charts[static_cast<std::size_t>(root)];
+  const model::Chart &compiled = p->model.charts[root];
   for (const auto &pl : compiled.places) p->places.push_back(pl.name.str());
   for (const auto &t : compiled.transitions) p->transitions.push_back(t.name.str());
   c.prepared = p;

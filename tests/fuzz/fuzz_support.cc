@@ -39,7 +39,7 @@ void check_range(const SourceManager &sources, const SourceRange &r, const char 
   expect(r.begin <= r.end && r.end <= sources.file(r.file).text().size(), what);
 }
 
-/// Indices the back ends and the interpreter follow without checking.
+/// The ids the back ends and the interpreter follow without checking.
 class ModelCheck {
 public:
   explicit ModelCheck(const model::Model &m) : m_(m) {}
@@ -48,21 +48,21 @@ public:
     using K = model::Expr::Kind;
     auto n = e.args.size();
     switch (e.kind) {
-    case K::Var: expect(chart && in(e.index, chart->vars.size()), "a var index in range"); break;
-    case K::Const: expect(in(e.index, m_.consts.size()), "a const index in range"); break;
+    case K::Var: expect(chart && chart->vars.contains(e.var()), "a var index in range"); break;
+    case K::Const: expect(m_.consts.contains(e.constant()), "a const index in range"); break;
     case K::Call:
-      expect(in(e.index, m_.functions.size()), "a function index in range");
-      if (in(e.index, m_.functions.size()))
-        expect(n == m_.functions[static_cast<std::size_t>(e.index)].params.size(), "as many arguments as parameters");
+      expect(m_.functions.contains(e.function()), "a function index in range");
+      if (m_.functions.contains(e.function()))
+        expect(n == m_.functions[e.function()].params.size(), "as many arguments as parameters");
       break;
-    case K::Elapsed: expect(chart && in(e.index, chart->places.size()), "an elapsed() place in range"); break;
+    case K::Elapsed: expect(chart && chart->places.contains(e.place()), "an elapsed() place in range"); break;
     case K::Succeeded:
     case K::Failed: {
-      bool ok = chart && in(e.index, chart->places.size());
+      bool ok = chart && chart->places.contains(e.place());
       expect(ok, "a succeeded()/failed() place in range");
       if (!ok) break;
-      int runs = chart->places[static_cast<std::size_t>(e.index)].runs;
-      expect(in(runs, m_.charts.size()) && m_.charts[static_cast<std::size_t>(runs)].kind == model::Chart::Kind::Fsm,
+      model::ChartId runs = chart->places[e.place()].runs;
+      expect(m_.charts.contains(runs) && m_.charts[runs].kind == model::Chart::Kind::Fsm,
              "succeeded()/failed() read a place that runs an fsm");
       break;
     }
@@ -71,13 +71,13 @@ public:
       expect(!e.path.empty(), "active() has a path");
       const model::Chart *at = chart;
       for (std::size_t k = 0; k < e.path.size() && at; ++k) {
-        bool ok = in(e.path[k], at->places.size());
+        bool ok = at->places.contains(e.path[k]);
         expect(ok, "an active() path step in range");
         if (!ok) break;
-        int runs = at->places[static_cast<std::size_t>(e.path[k])].runs;
+        model::ChartId runs = at->places[e.path[k]].runs;
         if (k + 1 < e.path.size())
-          expect(in(runs, m_.charts.size()), "an active() path goes through a place that runs a chart");
-        at = in(runs, m_.charts.size()) ? &m_.charts[static_cast<std::size_t>(runs)] : nullptr;
+          expect(m_.charts.contains(runs), "an active() path goes through a place that runs a chart");
+        at = m_.charts.contains(runs) ? &m_.charts[runs] : nullptr;
       }
       break;
     }
@@ -95,7 +95,7 @@ public:
         expect(s.expr.kind == model::Expr::Kind::Call, "a call statement holds a call");
         expr(s.expr, &chart);
       } else if (s.kind == model::Stmt::Kind::Assign) {
-        expect(in(s.var, chart.vars.size()), "an assigned var in range");
+        expect(chart.vars.contains(s.var), "an assigned var in range");
         expr(s.expr, &chart);
       }
     }
@@ -106,8 +106,8 @@ public:
     int initial = 0;
     for (const auto &p : c.places) {
       initial += p.initial;
-      expect(p.runs == -1 || in(p.runs, m_.charts.size()), "a place runs a chart in range, or none");
-      expect(p.runs == -1 || p.terminal == model::Terminal::None, "a terminal state runs nothing");
+      expect(!p.runs || m_.charts.contains(p.runs), "a place runs a chart in range, or none");
+      expect(!p.runs || p.terminal == model::Terminal::None, "a terminal state runs nothing");
       block(p.action, c);
       if (p.entry) block(*p.entry, c);
       if (p.exit) block(*p.exit, c);
@@ -115,26 +115,25 @@ public:
     }
     expect(fsm ? initial == 1 : initial >= 1, "the initial places the language requires");
     for (const auto &t : c.transitions) {
-      for (int p : t.inputs) expect(in(p, c.places.size()), "a transition input in range");
-      for (int p : t.outputs) expect(in(p, c.places.size()), "a transition output in range");
+      for (model::PlaceId p : t.inputs) expect(c.places.contains(p), "a transition input in range");
+      for (model::PlaceId p : t.outputs) expect(c.places.contains(p), "a transition output in range");
       if (fsm) expect(t.inputs.size() == 1 && t.outputs.size() == 1, "an fsm transition has one source and one target");
       if (t.condition) expr(*t.condition, &c);
     }
     for (const auto &v : c.vars)
       if (v.init) expr(*v.init, &c);
-    for (int f : c.functions) expect(in(f, m_.functions.size()), "a chart's function in range");
+    for (model::FunctionId f : c.functions) expect(m_.functions.contains(f), "a chart's function in range");
   }
 
   void plan(const model::Plan &p) {
-    expect(in(p.start, p.actors.size()), "a plan's start in range");
+    expect(p.actors.contains(p.start), "a plan's start in range");
     auto rules = [&](const std::vector<model::Rule> &rs) {
       for (const auto &r : rs)
         if (r.target.kind == model::Target::Kind::Actor)
-          expect(in(r.target.actor, p.actors.size()), "a rule target in range");
+          expect(p.actors.contains(r.target.actor), "a rule target in range");
     };
     for (const auto &a : p.actors) {
-      expect(a.templ >= 0 ? in(a.templ, m_.templates.size()) : in(a.subplan, m_.plans.size()),
-             "an actor's template in range");
+      expect(a.templ ? m_.templates.contains(a.templ) : m_.plans.contains(a.subplan), "an actor's template in range");
       rules(a.rules);
       for (const auto &s : a.supervisors) rules(s.rules);
     }
@@ -142,7 +141,6 @@ public:
   }
 
 private:
-  static bool in(int i, std::size_t n) { return i >= 0 && static_cast<std::size_t>(i) < n; }
   const model::Model &m_;
 };
 
@@ -150,9 +148,9 @@ private:
 class WobblyEnv : public interp::Environment {
 public:
   explicit WobblyEnv(const model::Model &m) : m_(m) {}
-  interp::Value call(int function, const std::vector<interp::Value> &, std::uint64_t tick) override {
-    std::uint64_t h = (tick * 2654435761u) ^ static_cast<std::uint64_t>(function * 40503);
-    switch (m_.functions.at(static_cast<std::size_t>(function)).result) {
+  interp::Value call(model::FunctionId function, const std::vector<interp::Value> &, std::uint64_t tick) override {
+    std::uint64_t h = (tick * 2654435761u) ^ (function.index() * 40503);
+    switch (m_.functions.at(function).result) {
     case model::Type::Bool: return interp::Value::of_bool((h >> 3) & 1);
     case model::Type::Float: return interp::Value::of_float(static_cast<float>(h % 7) - 3);
     case model::Type::Double: return interp::Value::of_double(static_cast<double>(h % 5) / 4);
@@ -164,7 +162,7 @@ private:
   const model::Model &m_;
 };
 
-void run_interpreter(const model::Model &m, int chart) {
+void run_interpreter(const model::Model &m, model::ChartId chart) {
   WobblyEnv env(m);
   interp::EngineOptions options;
   options.check_post = true;
@@ -174,7 +172,7 @@ void run_interpreter(const model::Model &m, int chart) {
     for (int t = 0; t < 12; ++t) engine.run(env, &log);
     log.render({true, true, true});
   } catch (const interp::RuntimeError &e) {
-    expect(e.range.file < m.sources->size(), "a run-time error has a location");
+    expect(e.range.file < m.sources().size(), "a run-time error has a location");
   }
 }
 
@@ -205,24 +203,24 @@ void run_back_ends(const model::Model &m) {
 #ifdef GFEC_FUZZ_CPP_BACKEND
   plans.push_back(make_cpp_backend());
 #endif
-  for (std::size_t c = 0; c < m.charts.size(); ++c) {
+  for (model::ChartId c : m.charts.ids()) {
     if (!m.charts[c].in_main_file) continue;
     EmitOptions o;
-    o.chart = static_cast<int>(c);
+    o.chart = c;
     for (const auto &b : charts) emit_twice(*b, m, o);
   }
 #ifdef GFEC_FUZZ_CPP_BACKEND
-  for (std::size_t t = 0; t < m.toolboxes.size(); ++t) {
+  for (model::ToolboxId t : m.toolboxes.ids()) {
     if (m.toolboxes[t].range.file != m.main_file) continue;
     EmitOptions o;
-    o.toolbox = static_cast<int>(t);
+    o.toolbox = t;
     emit_twice(*make_toolbox_skeleton_backend(), m, o);
   }
 #endif
-  for (std::size_t p = 0; p < m.plans.size(); ++p) {
+  for (model::PlanId p : m.plans.ids()) {
     if (!m.plans[p].in_main_file) continue;
     EmitOptions o;
-    o.plan = static_cast<int>(p);
+    o.plan = p;
     for (const auto &b : plans) emit_twice(*b, m, o);
   }
 }
@@ -262,7 +260,7 @@ std::string check_one(const std::string &input) {
   ModelCheck check(m);
   for (const auto &c : m.charts) check.chart(c);
   for (const auto &p : m.plans) check.plan(p);
-  for (std::size_t c = 0; c < m.charts.size(); ++c) run_interpreter(m, static_cast<int>(c));
+  for (model::ChartId c : m.charts.ids()) run_interpreter(m, c);
   // Every analysis, with small limits so that one input stays fast; its warnings are located.
   analysis::Limits limits;
   limits.max_states = 2000;

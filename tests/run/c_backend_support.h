@@ -44,7 +44,7 @@ public:
   ChartBuilder(std::string name, model::Chart::Kind kind, std::string path = "hand.sfc")
       : sources_(std::make_unique<SourceManager>()) {
     sources_->add(std::move(path), std::string(400, '\n'));
-    model_.sources = sources_.get();
+    model_.set_sources(*sources_);
     model::Chart c;
     c.name = std::move(name);
     c.kind = kind;
@@ -60,35 +60,33 @@ public:
     return model_;
   }
 
-  /// Sub-charts: adds a chart (index 1, 2, ...) and makes it the one the other calls build, until
+  /// Sub-charts: adds a chart (1, 2, ...) and makes it the one the other calls build, until
   /// select() goes back (chart 0 is the one compiled).
-  int begin_chart(std::string name, model::Chart::Kind kind) {
+  model::ChartId begin_chart(std::string name, model::Chart::Kind kind) {
     model::Chart c;
     c.name = std::move(name);
     c.kind = kind;
     c.in_main_file = true;
+    current_ = model_.charts.next_id();
     model_.charts.push_back(std::move(c));
-    current_ = model_.charts.size() - 1;
-    return static_cast<int>(current_);
+    return current_;
   }
-  void select(int chart) { current_ = static_cast<std::size_t>(chart); }
+  void select(model::ChartId chart) { current_ = chart; }
   /// Place `place` of the current chart runs chart `sub`.
-  void runs(const std::string &place, int sub) {
-    chart().places.at(static_cast<std::size_t>(place_index(place))).runs = sub;
-  }
+  void runs(const std::string &place, model::ChartId sub) { chart().places.at(place_id(place)).runs = sub; }
   /// `active(P.Q.R)`: the names resolved chart by chart from the current one.
   Expr active(const std::vector<std::string> &path) const {
     Expr e;
     e.kind = Expr::Kind::Active;
-    std::size_t c = current_;
+    model::ChartId c = current_;
     for (const auto &name : path) {
       const auto &places = model_.charts.at(c).places;
-      int found = -1;
-      for (std::size_t i = 0; i < places.size(); ++i)
-        if (places[i].name == name) found = static_cast<int>(i);
-      if (found < 0) throw std::invalid_argument("no place " + name);
+      model::PlaceId found;
+      for (model::PlaceId p : places.ids())
+        if (places[p].name == name) found = p;
+      if (!found) throw std::invalid_argument("no place " + name);
       e.path.push_back(found);
-      c = static_cast<std::size_t>(std::max(0, places[static_cast<std::size_t>(found)].runs));
+      c = places[found].runs ? places[found].runs : model::ChartId(0);
     }
     return e;
   }
@@ -96,15 +94,15 @@ public:
   Expr status(const std::string &place, bool succeeded) const {
     Expr e;
     e.kind = succeeded ? Expr::Kind::Succeeded : Expr::Kind::Failed;
-    e.index = place_index(place);
+    e.refer_to(place_id(place));
     return e;
   }
 
   /// Declares an interface function (once) and marks it used by the chart.
   ChartBuilder &fn(const std::string &name, Type result = Type::Void, std::vector<model::Param> params = {}) {
-    for (std::size_t i = 0; i < model_.functions.size(); ++i)
+    for (model::FunctionId i : model_.functions.ids())
       if (model_.functions[i].name == name) {  // declared for another chart: used by this one too
-        chart().functions.push_back(static_cast<int>(i));
+        chart().functions.push_back(i);
         return *this;
       }
     model::Function f;
@@ -113,8 +111,8 @@ public:
     f.params = std::move(params);
     f.interface_name = "Bot";
     f.range = next_range();
+    chart().functions.push_back(model_.functions.next_id());
     model_.functions.push_back(f);
-    chart().functions.push_back(static_cast<int>(model_.functions.size() - 1));
     return *this;
   }
 
@@ -133,8 +131,8 @@ public:
     model::Transition t;
     t.name = name.empty() ? fmt::format("T{}", chart().transitions.size()) : name;
     t.named = !name.empty();
-    for (const auto &p : in) t.inputs.push_back(place_index(p));
-    for (const auto &p : out) t.outputs.push_back(place_index(p));
+    for (const auto &p : in) t.inputs.push_back(place_id(p));
+    for (const auto &p : out) t.outputs.push_back(place_id(p));
     t.range = next_range();
     if (condition) {
       t.condition = std::move(condition);
@@ -144,25 +142,27 @@ public:
     return chart().transitions.back();
   }
 
-  int var(const std::string &name, Type type, std::optional<Expr> init = {}) {
+  model::VarId var(const std::string &name, Type type, std::optional<Expr> init = {}) {
     model::Var v;
     v.name = name;
     v.type = type;
     v.init = std::move(init);
     v.range = next_range();
+    const model::VarId id = chart().vars.next_id();
     chart().vars.push_back(std::move(v));
-    return static_cast<int>(chart().vars.size() - 1);
+    return id;
   }
 
-  int constant(const std::string &name, Expr value) {
+  model::ConstId constant(const std::string &name, Expr value) {
     model::Const k;
     k.name = name;
     k.type = value.type;
     k.value = std::move(value);
     k.range = next_range();
+    const model::ConstId id = model_.consts.next_id();
     model_.consts.push_back(std::move(k));
-    chart().consts.push_back(static_cast<int>(model_.consts.size() - 1));
-    return static_cast<int>(model_.consts.size() - 1);
+    chart().consts.push_back(id);
+    return id;
   }
 
   void verbatim(const std::string &text) { model_.verbatims.push_back({text, next_range()}); }
@@ -171,8 +171,8 @@ public:
   Expr call(const std::string &name, std::vector<Expr> args = {}) const {
     Expr e;
     e.kind = Expr::Kind::Call;
-    e.index = function_index(name);
-    e.type = model_.functions[static_cast<std::size_t>(e.index)].result;
+    e.refer_to(function_id(name));
+    e.type = model_.functions[e.function()].result;
     e.args = std::move(args);
     return e;
   }
@@ -186,7 +186,7 @@ public:
   Stmt assign(const std::string &var, AssignOp op, Expr value) {
     Stmt s;
     s.kind = Stmt::Kind::Assign;
-    s.var = var_index(var);
+    s.var = var_id(var);
     s.op = op;
     s.expr = std::move(value);
     s.range = next_range();
@@ -202,23 +202,23 @@ public:
   Expr var_ref(const std::string &name) const {
     Expr e;
     e.kind = Expr::Kind::Var;
-    e.index = var_index(name);
-    e.type = chart_const().vars[static_cast<std::size_t>(e.index)].type;
+    e.refer_to(var_id(name));
+    e.type = chart_const().vars[e.var()].type;
     return e;
   }
-  Expr const_ref(int index) const {
+  Expr const_ref(model::ConstId constant) const {
     Expr e;
     e.kind = Expr::Kind::Const;
-    e.index = index;
-    e.type = model_.consts[static_cast<std::size_t>(index)].type;
+    e.refer_to(constant);
+    e.type = model_.consts[constant].type;
     return e;
   }
   Expr elapsed(const std::string &place) {
     Expr e;
     e.kind = Expr::Kind::Elapsed;
     e.type = Type::Duration;
-    e.index = place_index(place);
-    chart().places[static_cast<std::size_t>(e.index)].timed = true;
+    e.refer_to(place_id(place));
+    chart().places[e.place()].timed = true;
     return e;
   }
   static Expr ticks(unsigned long n, double ms) {
@@ -270,22 +270,22 @@ public:
     return e;
   }
 
-  int place_index(const std::string &name) const {
-    for (std::size_t i = 0; i < chart_const().places.size(); ++i)
-      if (chart_const().places[i].name == name) return static_cast<int>(i);
+  model::PlaceId place_id(const std::string &name) const {
+    for (model::PlaceId p : chart_const().places.ids())
+      if (chart_const().places[p].name == name) return p;
     throw std::invalid_argument("no place " + name);
   }
 
 private:
   const model::Chart &chart_const() const { return model_.charts.at(current_); }
-  int function_index(const std::string &name) const {
-    for (std::size_t i = 0; i < model_.functions.size(); ++i)
-      if (model_.functions[i].name == name) return static_cast<int>(i);
+  model::FunctionId function_id(const std::string &name) const {
+    for (model::FunctionId f : model_.functions.ids())
+      if (model_.functions[f].name == name) return f;
     throw std::invalid_argument("no function " + name);
   }
-  int var_index(const std::string &name) const {
-    for (std::size_t i = 0; i < chart_const().vars.size(); ++i)
-      if (chart_const().vars[i].name == name) return static_cast<int>(i);
+  model::VarId var_id(const std::string &name) const {
+    for (model::VarId v : chart_const().vars.ids())
+      if (chart_const().vars[v].name == name) return v;
     throw std::invalid_argument("no var " + name);
   }
   SourceRange next_range() {
@@ -296,7 +296,7 @@ private:
   std::unique_ptr<SourceManager> sources_;
   model::Model model_;
   std::uint32_t line_ = 0;
-  std::size_t current_ = 0;
+  model::ChartId current_{0};
 };
 
 /// Runs the C back end on a model: {engine.c, engine.h} for output `output`.
@@ -309,7 +309,7 @@ inline std::vector<OutputFile> emit_c(const model::Model &m, const std::string &
   o.line_directives = line_directives;
   o.engine = engine;
   o.context_type = context_type;
-  o.chart = 0;
+  o.chart = model::ChartId(0);
   return emit_to_memory(*make_c_backend(), m, o);
 }
 
@@ -323,10 +323,10 @@ struct Compiled {
   Diagnostics &diag = c.diag;
   model::Model &model = c.model;
   std::vector<OutputFile> files;
-  std::string errors;  ///< rendered diagnostics when the chart did not compile
-  int chart = -1;      ///< the chart compiled: the default root of the main file
+  std::string errors;    ///< rendered diagnostics when the chart did not compile
+  model::ChartId chart;  ///< the chart compiled: the default root of the main file
 
-  const model::Chart &the_chart() const { return model.charts.at(static_cast<std::size_t>(chart)); }
+  const model::Chart &the_chart() const { return model.charts.at(chart); }
 
   /// The tests compare exact diagnostics: the static analyses' warnings are tested apart.
   static pipeline::FrontEndOptions no_analyses() {
@@ -362,7 +362,7 @@ inline std::unique_ptr<Compiled> compile_chart(const std::map<std::string, std::
   o.context_type = context_type;
   o.names = names;
   o.chart = target.chart;
-  c->chart = o.chart;
+  c->chart = target.chart;
   c->files = emit_to_memory(*make_c_backend(), c->model, o);
   return c;
 }
@@ -444,14 +444,14 @@ inline void check_compiles(const std::string &test, const std::vector<OutputFile
 /// function first checks that it received exactly that (else it prints `wrong context` and
 /// exits with 3), so the log is the same as without the context.
 /// The interface functions `chart` and every chart it runs (at any depth) call, each once.
-inline std::vector<int> called_functions(const model::Model &m, const model::Chart &chart) {
-  std::vector<int> out;
+inline std::vector<model::FunctionId> called_functions(const model::Model &m, const model::Chart &chart) {
+  std::vector<model::FunctionId> out;
   std::vector<const model::Chart *> todo{&chart};
   for (std::size_t k = 0; k < todo.size() && k < 64; ++k) {
-    for (int f : todo[k]->functions)
+    for (model::FunctionId f : todo[k]->functions)
       if (std::find(out.begin(), out.end(), f) == out.end()) out.push_back(f);
     for (const auto &p : todo[k]->places)
-      if (p.runs >= 0) todo.push_back(&m.charts.at(static_cast<std::size_t>(p.runs)));
+      if (p.runs) todo.push_back(&m.charts.at(p.runs));
   }
   return out;
 }
@@ -459,7 +459,7 @@ inline std::vector<int> called_functions(const model::Model &m, const model::Cha
 inline std::string harness_source(const model::Model &m, const model::Chart &chart, const std::string &header,
                                   bool context = false) {
   const std::string &X = chart.name;
-  const std::vector<int> functions = called_functions(m, chart);
+  const std::vector<model::FunctionId> functions = called_functions(m, chart);
   const bool fsm = chart.kind == model::Chart::Kind::Fsm;
   std::string s;
   s += fmt::format("#include \"{}\"\n\n#include <stdio.h>\n#include <stdlib.h>\n#include <string.h>\n\n", header);
@@ -472,7 +472,7 @@ inline std::string harness_source(const model::Model &m, const model::Chart &cha
          "        exit(3);\n"
          "    }\n}\n\n";
   bool senses = false;
-  for (int fi : functions) senses = senses || m.functions[static_cast<std::size_t>(fi)].result != Type::Void;
+  for (model::FunctionId fi : functions) senses = senses || m.functions[fi].result != Type::Void;
   if (senses)
     s += "static double value_of(const char *name)\n{\n"
          "    size_t n = strlen(name);\n"
@@ -488,8 +488,8 @@ inline std::string harness_source(const model::Model &m, const model::Chart &cha
   for (const auto &p : chart.places) s += fmt::format("\"{}\", ", p.name);
   s += "NULL};\n";
   s += "\n";
-  for (int fi : functions) {
-    const auto &f = m.functions[static_cast<std::size_t>(fi)];
+  for (model::FunctionId fi : functions) {
+    const auto &f = m.functions[fi];
     std::string params, format, args;
     for (std::size_t i = 0; i < f.params.size(); ++i) {
       const auto &p = f.params[i];
@@ -543,8 +543,8 @@ inline std::string harness_source(const model::Model &m, const model::Chart &cha
   std::function<void(const model::Chart &, const std::string &)> collect = [&](const model::Chart &ch,
                                                                                const std::string &path) {
     for (const auto &p : ch.places)
-      if (p.runs >= 0) {
-        const model::Chart &sub = m.charts.at(static_cast<std::size_t>(p.runs));
+      if (p.runs) {
+        const model::Chart &sub = m.charts.at(p.runs);
         instances.emplace_back(path + p.name, &sub);
         collect(sub, path + p.name + ".");
       }

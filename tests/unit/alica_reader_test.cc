@@ -139,23 +139,22 @@ TEST_CASE("alica: a plan with one entry point becomes an fsm with its states and
   CHECK(m->places[3].terminal == model::Terminal::Success);
   REQUIRE(m->transitions.size() == 4);
   CHECK(m->transitions[0].name == "Found");
-  CHECK(m->transitions[0].inputs == std::vector<int>{0});
-  CHECK(m->transitions[0].outputs == std::vector<int>{1});
+  CHECK(m->transitions[0].inputs == test::ids<model::PlaceId>({0}));
+  CHECK(m->transitions[0].outputs == test::ids<model::PlaceId>({1}));
   // Behaviours are action functions, preconditions sensing functions; an unnamed precondition
   // is named after its transition.
   std::vector<std::string> functions;
-  for (int f : m->functions)
-    functions.push_back(fmt::format("{} {}", model::type_name(r.model.functions[static_cast<std::size_t>(f)].result),
-                                    r.model.functions[static_cast<std::size_t>(f)].name));
+  for (model::FunctionId f : m->functions)
+    functions.push_back(fmt::format("{} {}", model::type_name(r.model.functions[f].result), r.model.functions[f].name));
   CHECK(functions == std::vector<std::string>{"void SearchItem", "void Park", "bool ItemSeen", "bool Parked"});
   // ALICA's standard conditions on the child plan read the sub-chart's outcome.
   REQUIRE(m->transitions[1].condition);
   CHECK(m->transitions[1].condition->kind == model::Expr::Kind::Succeeded);
-  CHECK(m->transitions[1].condition->index == 1);
+  CHECK(m->transitions[1].condition->place() == model::PlaceId(1));
   REQUIRE(m->transitions[2].condition);
   CHECK(m->transitions[2].condition->kind == model::Expr::Kind::Failed);
   // The state holding Fetch.pml runs Fetch's machine (a sub-chart), read from its own file.
-  CHECK(m->places[1].runs >= 0);
+  CHECK(m->places[1].runs.valid());
   const ast::Place &fetch_item = r.loaded.program.files[0]->charts[0].places[1];
   REQUIRE(fetch_item.runs());
   CHECK(fetch_item.runs()->text == "Fetch");
@@ -440,7 +439,7 @@ TEST_CASE("alica: the folder layouts of ALICA's own repositories are found, as A
   REQUIRE(patrol);
   // "init" is the name of the engine's init function: renamed. A placeholder runs nothing.
   CHECK(place_names(*patrol) == std::vector<std::string>{"init_", "Wait", "Sweep", "Done"});
-  CHECK(patrol->places[2].runs >= 0);
+  CHECK(patrol->places[2].runs.valid());
   REQUIRE(patrol->transitions.size() == 3);
   // The designer names transitions by their ids: no name of the user's. AlwaysTrueCondition is
   // `true`, AnyChildSuccess on a state running an fsm `succeeded(Sweep)`; others are functions.

@@ -18,7 +18,7 @@ const char *kBot = "interface Bot { bool Go(); }";
 std::string bound_of(const std::string &text, const std::string &chart) {
   auto c = compile(text, kBot);
   REQUIRE(c->diagnostics() == "");
-  const model::ActivationBound &b = c->model.charts.at(static_cast<std::size_t>(c->chart(chart))).activation;
+  const model::ActivationBound &b = c->model.charts.at(c->chart(chart)).activation;
   return b.bounded ? "total " + std::to_string(b.total) + ", place " + std::to_string(b.place) : "unbounded";
 }
 
@@ -115,9 +115,9 @@ sfc Main {
 namespace {
 
 /// A chain of forks P0 -> (P1, Q1), P1 -> (P2, Q2), ..., declared in that order, P0 initial.
-model::Chart fork_chain(int n) {
+model::Chart fork_chain(std::size_t n) {
   model::Chart chart;
-  for (int i = 0; i < n; ++i) {
+  for (std::size_t i = 0; i < n; ++i) {
     model::Place p;
     p.name = "P" + std::to_string(i);
     p.initial = i == 0;
@@ -126,10 +126,10 @@ model::Chart fork_chain(int n) {
     q.name = "Q" + std::to_string(i);
     chart.places.push_back(q);
   }
-  for (int i = 0; i + 1 < n; ++i) {
+  for (std::size_t i = 0; i + 1 < n; ++i) {
     model::Transition t;
-    t.inputs = {2 * i};
-    t.outputs = {2 * (i + 1), 2 * (i + 1) + 1};
+    t.inputs = {model::PlaceId(2 * i)};
+    t.outputs = {model::PlaceId(2 * (i + 1)), model::PlaceId(2 * (i + 1) + 1)};
     chart.transitions.push_back(t);
   }
   return chart;
@@ -139,7 +139,7 @@ model::Chart fork_chain(int n) {
 
 TEST_CASE("analysis bounds: a chain of forks weighs each place by all it fans out to", "[analysis][bounds]") {
   // Every Qi weighs 1 and P_i weighs n - i (P_{n-1} 1): the total is P0's n, and a Q's bound n.
-  const int n = 60;
+  const std::size_t n = 60;
   model::ActivationBound b = analysis::prove_activation_bound(fork_chain(n));
   CHECK(b.bounded);
   CHECK(b.total == static_cast<std::uint64_t>(n));

@@ -39,14 +39,14 @@ std::vector<Tick> random_script(const model::Model &m, const model::Chart &chart
   std::vector<Tick> ticks(static_cast<std::size_t>(length));
   // The chart's own functions first, then those only its sub-charts call (docs/language.md
   // "Sub-charts"), each once.
-  std::vector<int> functions = chart.functions;
-  std::vector<bool> tree = charts_in_tree(m, static_cast<int>(&chart - m.charts.data()));
-  for (std::size_t c = 0; c < m.charts.size(); ++c)
+  std::vector<model::FunctionId> functions = chart.functions;
+  const auto tree = charts_in_tree(m, m.charts.id_of(chart));
+  for (model::ChartId c : m.charts.ids())
     if (tree[c])
-      for (int f : m.charts[c].functions)
+      for (model::FunctionId f : m.charts[c].functions)
         if (std::find(functions.begin(), functions.end(), f) == functions.end()) functions.push_back(f);
-  for (int f : functions) {
-    const auto &fn = m.functions[static_cast<std::size_t>(f)];
+  for (model::FunctionId f : functions) {
+    const auto &fn = m.functions[f];
     if (fn.result == Type::Void) continue;
     unsigned percent = 10 + rng() % 80;
     for (auto &tick : ticks) {
@@ -82,8 +82,8 @@ class ScriptEnvironment : public interp::Environment {
 public:
   ScriptEnvironment(const model::Model &m, const std::vector<Tick> &ticks) : model_(m), ticks_(ticks) {}
 
-  interp::Value call(int function, const std::vector<interp::Value> &args, std::uint64_t tick) override {
-    const auto &fn = model_.functions.at(static_cast<std::size_t>(function));
+  interp::Value call(model::FunctionId function, const std::vector<interp::Value> &args, std::uint64_t tick) override {
+    const auto &fn = model_.functions.at(function);
     std::string list;
     for (const auto &a : args) list += (list.empty() ? "" : ", ") + harness_value(a);
     if (fn.result == Type::Void) {
@@ -111,9 +111,9 @@ private:
 
 /// The interpreter's run in the harness's format: its event log gives the order of calls, hooks
 /// and the end of each tick; the calls' text comes from the environment.
-std::string interpreter_log(const model::Model &m, int chart_index, const std::vector<Tick> &ticks) {
-  const auto &chart = m.charts.at(static_cast<std::size_t>(chart_index));
-  interp::Engine engine(m, chart_index);
+std::string interpreter_log(const model::Model &m, model::ChartId root, const std::vector<Tick> &ticks) {
+  const auto &chart = m.charts.at(root);
+  interp::Engine engine(m, root);
   ScriptEnvironment env(m, ticks);
   interp::EventLog log;
   for (std::size_t i = 0; i < ticks.size(); ++i) engine.run(env, &log);

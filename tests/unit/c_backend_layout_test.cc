@@ -4,6 +4,7 @@
 #include "../run/c_backend_support.h"
 
 #include "c_layout.h"
+#include "support.h"
 
 #include <catch2/catch.hpp>
 
@@ -164,7 +165,7 @@ TEST_CASE("c layout: owners follow declaration order, or candidates are needed",
   b.transition({"C"}, {"C"});
   Layout in_order = layout_of(b, EngineForm::Scalable);
   CHECK(in_order.place_driven);
-  CHECK(in_order.owner == std::vector<int>{0, 1, 2});
+  CHECK(in_order.owner.values() == test::ids<model::PlaceId>({0, 1, 2}));
   b.transition({"A"}, {"C"});  // back to A after C: no order of owners fits
   Layout out_of_order = layout_of(b, EngineForm::Scalable);
   CHECK_FALSE(out_of_order.place_driven);

@@ -63,7 +63,7 @@ TEST_CASE("c backend: engine fields and locals give way to the chart's names", "
   b.fn("add", Type::Void, {{Type::Int, "n"}}).fn("Ready", Type::Bool);
   b.var("av", Type::Int);
   b.var("started", Type::Bool, B::bool_lit(true));
-  int m = b.constant("m", B::int_lit("-2"));
+  model::ConstId m = b.constant("m", B::int_lit("-2"));
   b.place("init", true, {b.act("add", {b.var_ref("av")}), b.assign("av", AssignOp::Sub, b.const_ref(m))});
   auto entry = b.act("add", {B::int_lit("7")});
   b.place("PLACE_COUNT").entry = std::vector<Stmt>{entry};
@@ -114,7 +114,7 @@ TEST_CASE("c backend: expressions keep C's meaning and satisfy -Wall", "[c_backe
       .fn("C", Type::Bool)
       .fn("N", Type::Int)
       .fn("Go", Type::Void, {{Type::Int, ""}});
-  int half = b.constant("HALF", B::float_lit("-0.5"));
+  model::ConstId half = b.constant("HALF", B::float_lit("-0.5"));
   b.var("x", Type::Double);
   b.var("a", Type::Bool);
   b.var("bb", Type::Bool);
@@ -153,8 +153,8 @@ TEST_CASE("c backend: a float constant is a float, rounded as the chart rounds i
   b.fn("D", Type::Void, {{Type::Double, ""}});
   // Just above halfway between 1 and the next float: read directly as a float it rounds up, but
   // the chart reads a double (exactly halfway) and converts it, which rounds to even: 1.
-  int odd = b.constant("ODD", B::float_lit("1.000000059604644775390625000001"));
-  int tenth = b.constant("TENTH", B::float_lit("0.1"));
+  model::ConstId odd = b.constant("ODD", B::float_lit("1.000000059604644775390625000001"));
+  model::ConstId tenth = b.constant("TENTH", B::float_lit("0.1"));
   b.place("P", true, {b.act("D", {b.const_ref(odd)}), b.act("D", {b.const_ref(tenth)})});
   const std::string src = emit_c(b.model(), "round.c", false)[0].contents;
   CHECK(contains(src, "D((float)1.000000059604644775390625000001 /* ODD */);"));

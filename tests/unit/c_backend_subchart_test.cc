@@ -59,7 +59,7 @@ void three_levels(ChartBuilder &b) {
   b.transition({"A"}, {"B"}, b.call("TopGo"));
   b.transition({"B"}, {"A"}, b.call("TopBack"));
   // Chart 1: Mid.
-  int mid = b.begin_chart("Mid", Kind::Fsm);
+  model::ChartId mid = b.begin_chart("Mid", Kind::Fsm);
   b.fn("MidGo", Type::Bool).fn("MidDone", Type::Bool).fn("MidIn").fn("MidAct").fn("MidOut").fn("Mid2");
   auto &m1 = b.place("M1", true, {b.act("MidAct")});
   m1.entry = std::vector<Stmt>{b.act("MidIn")};
@@ -69,7 +69,7 @@ void three_levels(ChartBuilder &b) {
   b.transition({"M1"}, {"M2"}, b.call("MidGo"));
   b.transition({"M2"}, {"Ok"}, b.call("MidDone"));
   // Chart 2: Leaf.
-  int leaf = b.begin_chart("Leaf", Kind::Sfc);
+  model::ChartId leaf = b.begin_chart("Leaf", Kind::Sfc);
   b.fn("LeafGo", Type::Bool).fn("LeafIn").fn("LeafAct").fn("LeafOut").fn("Leaf2");
   auto &l1 = b.place("L1", true, {b.act("LeafAct")});
   l1.entry = std::vector<Stmt>{b.act("LeafIn")};
@@ -78,7 +78,7 @@ void three_levels(ChartBuilder &b) {
   b.transition({"L1"}, {"L2"}, b.call("LeafGo"));
   b.select(mid);
   b.runs("M1", leaf);
-  b.select(0);
+  b.select(model::ChartId(0));
   b.runs("A", mid);
 }
 
@@ -196,7 +196,7 @@ void two_places(ChartBuilder &b) {
   b.place("Q", true, {b.act("Qa")});
   b.place("W", true);
   b.place("R");
-  int job = b.begin_chart("Job", Kind::Fsm);
+  model::ChartId job = b.begin_chart("Job", Kind::Fsm);
   b.fn("JobOk", Type::Bool).fn("Count", Type::Void, {{Type::Int, "n"}});
   b.var("n", Type::Int);
   b.place("Run", true, {b.assign("n", AssignOp::Add, ChartBuilder::int_lit("1")), b.act("Count", {b.var_ref("n")})});
@@ -205,7 +205,7 @@ void two_places(ChartBuilder &b) {
                ChartBuilder::bin(BinaryOp::And,
                                  ChartBuilder::bin(BinaryOp::Ge, b.var_ref("n"), ChartBuilder::int_lit("2")),
                                  b.call("JobOk")));
-  b.select(0);
+  b.select(model::ChartId(0));
   b.runs("P", job);
   b.runs("Q", job);
   b.chart().places[2].action = {b.act("Look", {b.status("P", true), b.active({"Q", "Run"})})};
@@ -299,7 +299,7 @@ void mission(ChartBuilder &b) {
   s1.entry = std::vector<Stmt>{b.act("E1")};
   s1.exit = std::vector<Stmt>{b.act("X1")};
   b.place("S2", false, {b.act("S2a")});
-  int par = b.begin_chart("Par", Kind::Sfc);
+  model::ChartId par = b.begin_chart("Par", Kind::Sfc);
   b.fn("Join", Type::Bool).fn("InA").fn("Aa").fn("OutA").fn("OutB").fn("Ca");
   auto &a = b.place("A", true, {b.act("Aa")});
   a.entry = std::vector<Stmt>{b.act("InA")};
@@ -307,14 +307,14 @@ void mission(ChartBuilder &b) {
   b.place("B", true).exit = std::vector<Stmt>{b.act("OutB")};
   b.place("C", false, {b.act("Ca")});
   b.transition({"A", "B"}, {"C"}, b.call("Join"));
-  int tiny = b.begin_chart("Tiny", Kind::Fsm);
+  model::ChartId tiny = b.begin_chart("Tiny", Kind::Fsm);
   b.fn("TinyGo", Type::Bool).fn("Ta").fn("OutT");
   b.place("t1", true, {b.act("Ta")}).exit = std::vector<Stmt>{b.act("OutT")};
   b.place("t2");
   b.transition({"t1"}, {"t2"}, b.call("TinyGo"));
   b.select(par);
   b.runs("B", tiny);
-  b.select(0);
+  b.select(model::ChartId(0));
   b.runs("S1", par);
   b.transition({"S1"}, {"S2"}, ChartBuilder::bin(BinaryOp::And, b.active({"S1", "B", "t2"}), b.call("Leave")));
   b.transition({"S2"}, {"S1"}, ChartBuilder::bin(BinaryOp::Or, b.active({"S1", "B"}), b.call("Back")));

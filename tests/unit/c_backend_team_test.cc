@@ -59,8 +59,8 @@ std::string team_harness(const model::Model &m, const model::Chart &chart, const
        "    v = token(own);\n"
        "    if (v < 0) v = token(name);\n"
        "    return v < 0 ? 0 : v;\n}\n\n";
-  for (int fi : chart.functions) {
-    const auto &f = m.functions[static_cast<std::size_t>(fi)];
+  for (model::FunctionId fi : chart.functions) {
+    const auto &f = m.functions[fi];
     std::string params, format, args;
     for (std::size_t i = 0; i < f.params.size(); ++i) {
       params += fmt::format("{}{} a{}", i ? ", " : "", model::type_name(f.params[i].type), i);
@@ -257,8 +257,8 @@ class ScriptInputs : public interp::Environment {
 public:
   ScriptInputs(const model::Model &m, const std::vector<std::string> &lines, int agent)
       : m_(m), lines_(lines), agent_(agent) {}
-  interp::Value call(int function, const std::vector<interp::Value> &, std::uint64_t tick) override {
-    const model::Function &f = m_.functions.at(static_cast<std::size_t>(function));
+  interp::Value call(model::FunctionId function, const std::vector<interp::Value> &, std::uint64_t tick) override {
+    const model::Function &f = m_.functions.at(function);
     std::istringstream line(lines_.at(static_cast<std::size_t>(tick - 1)));
     double own = -1, shared = -1;
     for (std::string token; line >> token;) {
@@ -335,8 +335,8 @@ TEST_CASE("c engine team: the engines and the interpreter agree on random inputs
       std::string script;
       for (int tick = 0; tick < 40; ++tick) {
         std::string line;
-        for (int fi : chart.functions) {
-          const auto &f = compiled->model.functions[static_cast<std::size_t>(fi)];
+        for (model::FunctionId fi : chart.functions) {
+          const auto &f = compiled->model.functions[fi];
           if (f.result == Type::Void) continue;
           for (int a = 0; a < k.agents; ++a) {
             unsigned r = rng() % 4;

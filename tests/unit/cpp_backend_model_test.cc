@@ -222,13 +222,13 @@ plan P {
   LoadResult loaded = load_program("p.plan", {}, mem, sources, diag);
   model::Model m = validate(loaded.program, sources, diag);
   REQUIRE(!diag.has_errors());
-  m.sources = &sources;
+  m.set_sources(sources);
   EmitOptions o;
   o.output_path = "p.cpp";
   o.source_name = "p.plan";
   o.line_directives = false;
-  for (std::size_t i = 0; i < m.plans.size(); ++i)
-    if (m.plans[i].name == "P") o.plan = static_cast<int>(i);
+  for (model::PlanId i : m.plans.ids())
+    if (m.plans[i].name == "P") o.plan = i;
   auto out = emit_to_memory(*make_cpp_backend(), m, o);
   const std::string &w = out[0].contents;
   auto inner = w.find("std::unique_ptr<afp::Plan> make_Inner(Bot& ee) {");

@@ -83,7 +83,7 @@ TEST_CASE("interpreter fsm: failure, hooks and the postcondition check") {
   Diagnostics diag;
   interp::EngineOptions checks;
   checks.check_post = true;
-  interp::RunResult r = interp::run_chart(c->model, 0, done, 3, checks, diag);
+  interp::RunResult r = interp::run_chart(c->model, model::ChartId(0), done, 3, checks, diag);
   std::string log = r.log.render({false, true});
   CHECK(log.find("fire T5: Z3 -> Done\nexit Z3\nentry Done\npost Done = false\ncall ItemAtDestination() = false\n") !=
         std::string::npos);
@@ -151,7 +151,7 @@ TEST_CASE("interpreter fsm: a team of four under the reference exchange") {
     agents.push_back(envs.back().get());
   }
   Diagnostics diag;
-  interp::RunResult r = interp::run_team(c->model, 0, agents, 4, {}, diag);
+  interp::RunResult r = interp::run_team(c->model, model::ChartId(0), agents, 4, {}, diag);
   REQUIRE(r.completed);
   auto agent = [](int k, bool move, const char *count, const char *state) {
     return fmt::format("agent {}\ncall Move() = {}\ncall Count({})\nav {}\nstate {} running\n", k,
@@ -179,22 +179,24 @@ fsm Census {
   state Wait;
   Go -> Wait when team(Wait) > 1;
 })");
-  interp::Engine e(c->model, 0);
+  interp::Engine e(c->model, model::ChartId(0));
   CHECK(e.team_size() == 4);
   e.set_agent(2);
-  e.report(2, 1);  // its own number
-  e.report(4, 1);  // no such agent
-  e.report(-1, 1);
-  e.report(0, 2);  // no such state
-  CHECK(e.reports() == std::vector<int>{-1, -1, -1, -1});
-  e.report(0, 1);
-  e.report(3, 1);
+  const model::PlaceId wait(1);
+  e.report(2, wait);  // its own number
+  e.report(4, wait);  // no such agent
+  e.report(-1, wait);
+  e.report(0, model::PlaceId(2));  // no such state
+  const std::vector<model::PlaceId> none(4, model::PlaceId::none());
+  CHECK(e.reports() == none);
+  e.report(0, wait);
+  e.report(3, wait);
   e.set_agent(9);  // ignored
   CHECK(e.agent() == 2);
   ScriptedEnv env(*c);
   e.run(env, nullptr);
-  CHECK(e.state() == 1);  // two others in Wait
+  CHECK(e.state() == wait);  // two others in Wait
   e.init();
   CHECK(e.agent() == 0);
-  CHECK(e.reports() == std::vector<int>{-1, -1, -1, -1});
+  CHECK(e.reports() == none);
 }

@@ -185,21 +185,23 @@ sfc Api {
 }
 )");
   ScriptedEnv env(*c);
-  interp::Engine e(c->model, 0);
-  CHECK(e.activation(0) == 1);
-  CHECK(e.activation(1) == 0);
-  CHECK(e.activation(7) == 0);
-  CHECK(e.vars().at(0).i == 2);
+  interp::Engine e(c->model, model::ChartId(0));
+  const model::PlaceId a(0), b(1);
+  const model::VarId n(0);
+  CHECK(e.activation(a) == 1);
+  CHECK(e.activation(b) == 0);
+  CHECK(e.activation(model::PlaceId(7)) == 0);
+  CHECK(e.vars().at(n).i == 2);
   e.run(env, nullptr);
-  CHECK(e.vars().at(0).i == 3);
+  CHECK(e.vars().at(n).i == 3);
   e.run(env, nullptr);
   e.run(env, nullptr);
-  CHECK(e.activation(0) == 0);
-  CHECK(e.activation(1) == 1);
+  CHECK(e.activation(a) == 0);
+  CHECK(e.activation(b) == 1);
   CHECK(e.ticks() == 3);
   e.init();
-  CHECK(e.activation(0) == 1);
-  CHECK(e.vars().at(0).i == 2);
+  CHECK(e.activation(a) == 1);
+  CHECK(e.vars().at(n).i == 2);
   CHECK(e.ticks() == 0);
 }
 

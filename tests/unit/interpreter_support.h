@@ -44,16 +44,16 @@ struct Compiled {
     for (const auto &d : diag.all()) out += render_text(d, sources);
     return out;
   }
-  int chart(const std::string &name) const {
-    for (std::size_t i = 0; i < model.charts.size(); ++i)
-      if (model.charts[i].name == name) return static_cast<int>(i);
+  model::ChartId chart(const std::string &name) const {
+    for (model::ChartId i : model.charts.ids())
+      if (model.charts[i].name == name) return i;
     FAIL("no chart " << name);
-    return -1;
+    return {};
   }
-  int function(const std::string &name) const {
-    for (std::size_t i = 0; i < model.functions.size(); ++i)
-      if (model.functions[i].name == name) return static_cast<int>(i);
-    return -1;
+  model::FunctionId function(const std::string &name) const {
+    for (model::FunctionId i : model.functions.ids())
+      if (model.functions[i].name == name) return i;
+    return {};
   }
 };
 
@@ -70,13 +70,13 @@ class ScriptedEnv : public interp::Environment {
 public:
   explicit ScriptedEnv(const Compiled &c) : c_(c) {}
   ScriptedEnv &script(const std::string &fn, std::vector<double> values) {
-    int i = c_.function(fn);
-    REQUIRE(i >= 0);
+    model::FunctionId i = c_.function(fn);
+    REQUIRE(i.valid());
     scripts_[i] = std::move(values);
     return *this;
   }
-  interp::Value call(int function, const std::vector<interp::Value> &, std::uint64_t tick) override {
-    const model::Type t = c_.model.functions.at(static_cast<std::size_t>(function)).result;
+  interp::Value call(model::FunctionId function, const std::vector<interp::Value> &, std::uint64_t tick) override {
+    const model::Type t = c_.model.functions.at(function).result;
     auto s = scripts_.find(function);
     double v = 0;
     if (s != scripts_.end() && !s->second.empty())
@@ -91,15 +91,15 @@ public:
 
 private:
   const Compiled &c_;
-  std::map<int, std::vector<double>> scripts_;
+  std::map<model::FunctionId, std::vector<double>> scripts_;
 };
 
 /// Runs the only (or named) chart for `ticks` ticks; the log's selected layers as text.
 inline std::string run_log(const Compiled &c, interp::Environment &env, std::uint64_t ticks,
                            interp::RenderOptions render = {}, const std::string &chart = "") {
   Diagnostics diag;
-  int index = chart.empty() ? 0 : c.chart(chart);
-  interp::RunResult r = interp::run_chart(c.model, index, env, ticks, {}, diag);
+  model::ChartId root = chart.empty() ? model::ChartId(0) : c.chart(chart);
+  interp::RunResult r = interp::run_chart(c.model, root, env, ticks, {}, diag);
   std::string out = r.log.render(render);
   for (const auto &d : diag.all()) out += render_text(d, c.sources);
   return out;

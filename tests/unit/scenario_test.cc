@@ -266,12 +266,13 @@ TEST_CASE("two runs that differ are told apart by their first differing call", "
   REQUIRE(c.test_errors() == "");
   scenario::Run run = scenario::run_reference(c.model, c.suite.tests.at(0));
   scenario::Snapshot other = run.ticks[1];
-  CHECK(scenario::compare(run.ticks[1], other, c.model, 0, "reference", "engine") == "");
+  const model::ChartId line(0);
+  CHECK(scenario::compare(run.ticks[1], other, c.model, line, "reference", "engine") == "");
   other.calls.push_back(other.calls.back());
-  CHECK(scenario::compare(run.ticks[1], other, c.model, 0, "reference", "engine") ==
+  CHECK(scenario::compare(run.ticks[1], other, c.model, line, "reference", "engine") ==
         "call 3: reference no call, engine 'Go()'");
   other = run.ticks[1];
-  other.activation[1] = 1;
-  CHECK(scenario::compare(run.ticks[1], other, c.model, 0, "reference", "engine") ==
+  other.activation[model::PlaceId(1)] = 1;
+  CHECK(scenario::compare(run.ticks[1], other, c.model, line, "reference", "engine") ==
         "activation of 'B': reference 0, engine 1");
 }

@@ -4,6 +4,7 @@
 #include "diagnostic_printer.h"
 #include "loader.h"
 
+#include <cstddef>
 #include <initializer_list>
 #include <string>
 #include <utility>
@@ -56,6 +57,15 @@ inline WarningOptions all_warnings() {
 
 /// The one line where two texts first differ (1-based), for a readable failure.
 std::string first_difference(const std::string &expected, const std::string &actual);
+
+/// Ids of one table, by position, to compare with what the model refers to:
+/// `CHECK(chart.functions == ids<model::FunctionId>({0, 1, 3}))` (a PlaceList or an Expr's path
+/// compares with it too).
+template <typename IdT> std::vector<IdT> ids(std::initializer_list<std::size_t> positions) {
+  std::vector<IdT> out;
+  for (std::size_t p : positions) out.push_back(IdT(p));
+  return out;
+}
 
 /// Parses one file called "t.sfc" and returns the printed diagnostics.
 inline std::string parse_errors(const std::string &source) { return FrontEnd({{"t.sfc", source}}).text(); }

@@ -222,8 +222,8 @@ fsm M {
   CHECK(c.places[3].post.has_value());
   CHECK(c.places[0].timed);
   CHECK_FALSE(c.places[1].timed);
-  CHECK(c.transitions[2].inputs == std::vector<int>{1});
-  CHECK(c.transitions[2].outputs == std::vector<int>{2});
+  CHECK(c.transitions[2].inputs == test::ids<model::PlaceId>({1}));
+  CHECK(c.transitions[2].outputs == test::ids<model::PlaceId>({2}));
   REQUIRE(c.transitions[0].condition);
   CHECK(c.transitions[0].condition->args[1].kind == model::Expr::Kind::Ticks);
   CHECK(c.transitions[0].condition->args[1].ticks == 3);
@@ -296,7 +296,7 @@ fsm Fetch {
   const model::Expr &team = cond.args.at(0).args.at(1).args.at(0);
   CHECK(team.kind == model::Expr::Kind::TeamCount);
   CHECK(team.type == model::Type::Int);
-  CHECK(team.index == 1);
+  CHECK(team.place() == model::PlaceId(1));
   const model::Expr &agent = cond.args.at(1).args.at(0);
   CHECK(agent.kind == model::Expr::Kind::Agent);
   CHECK(agent.type == model::Type::Int);

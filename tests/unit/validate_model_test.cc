@@ -10,10 +10,10 @@ using test::Validated;
 
 namespace {
 
-int function_index(const model::Model &m, const std::string &name) {
-  for (std::size_t i = 0; i < m.functions.size(); ++i)
-    if (m.functions[i].name == name) return static_cast<int>(i);
-  return -1;
+model::FunctionId function_id(const model::Model &m, const std::string &name) {
+  for (model::FunctionId f : m.functions.ids())
+    if (m.functions[f].name == name) return f;
+  return {};
 }
 
 const model::Const &constant(const model::Model &m, const std::string &name) {
@@ -40,9 +40,9 @@ TEST_CASE("validate model: functions in file order, a chart's functions by index
   CHECK(m.functions[1].result == model::Type::Bool);
   CHECK(m.functions[2].name == "Left");
   CHECK(m.functions[3].name == "Right");
-  CHECK(m.charts[0].functions == std::vector<int>{0, 1, 3});
+  CHECK(m.charts[0].functions == test::ids<model::FunctionId>({0, 1, 3}));
   CHECK(m.main_file == r.fe.loaded.program.files[0]->id);
-  CHECK(m.sources == &r.fe.sources);
+  CHECK(&m.sources() == &r.fe.sources);
 }
 
 TEST_CASE("validate model: prototypes, including C's (void)", "[validate]") {
@@ -77,7 +77,7 @@ TEST_CASE("validate model: constants are folded to literals of their type", "[va
   auto check = [&](const char *name, model::Expr::Kind kind, model::Type type, const char *text) {
     INFO(name);
     const auto &c = constant(m, name);
-    CHECK(c.chart == -1);
+    CHECK_FALSE(c.chart);
     CHECK(c.type == type);
     CHECK(c.value.kind == kind);
     CHECK(c.value.type == type);
@@ -111,28 +111,28 @@ TEST_CASE("validate model: a chart's constants, vars and what it reads", "[valid
   const auto &m = r.model;
   REQUIRE(m.consts.size() == 3);
   CHECK(m.consts[2].name == "CRUISE");
-  CHECK(m.consts[2].chart == 0);
+  CHECK(m.consts[2].chart == model::ChartId(0));
   const auto &c = m.charts[0];
-  CHECK(c.consts == std::vector<int>{1, 2});
+  CHECK(c.consts == test::ids<model::ConstId>({1, 2}));
   REQUIRE(c.vars.size() == 2);
   CHECK(c.vars[0].name == "laps");
   REQUIRE(c.vars[0].init);
   CHECK(c.vars[0].init->kind == model::Expr::Kind::Binary);  // computed by _init, as written
   CHECK(c.vars[0].init->args[0].kind == model::Expr::Kind::Const);
-  CHECK(c.vars[0].init->args[0].index == 1);
+  CHECK(c.vars[0].init->args[0].constant() == model::ConstId(1));
   CHECK_FALSE(c.vars[1].init);
   CHECK(c.vars[1].type == model::Type::Bool);
   REQUIRE(c.places[0].action.size() == 2);
   const auto &add = c.places[0].action[0];
   CHECK(add.kind == model::Stmt::Kind::Assign);
-  CHECK(add.var == 0);
+  CHECK(add.var == model::VarId(0));
   CHECK(add.op == AssignOp::Add);
   CHECK(add.expr.kind == model::Expr::Kind::Int);
   const auto &set = c.places[0].action[1];
-  CHECK(set.var == 1);
+  CHECK(set.var == model::VarId(1));
   CHECK(set.expr.kind == model::Expr::Kind::Binary);
   CHECK(set.expr.args[0].kind == model::Expr::Kind::Var);
-  CHECK(set.expr.args[0].index == 0);
+  CHECK(set.expr.args[0].var() == model::VarId(0));
 }
 
 TEST_CASE("validate model: durations become whole ticks, rounded up", "[validate]") {
@@ -165,7 +165,7 @@ TEST_CASE("validate model: durations become whole ticks, rounded up", "[validate
   CHECK(either.args[1].args[0].ticks == 0);
   const model::Expr elapsed = ticks(c.transitions[0], 0);
   CHECK(elapsed.kind == model::Expr::Kind::Elapsed);
-  CHECK(elapsed.index == 0);
+  CHECK(elapsed.place() == model::PlaceId(0));
   CHECK(c.places[0].timed);
   CHECK(c.places[1].timed);
   CHECK(c.places[2].timed);
@@ -186,11 +186,11 @@ TEST_CASE("validate model: transitions are named T<position> unless named", "[va
   REQUIRE(t.size() == 3);
   CHECK(t[0].name == "T0");
   CHECK_FALSE(t[0].named);
-  CHECK(t[0].outputs == std::vector<int>{1, 2});
+  CHECK(t[0].outputs == test::ids<model::PlaceId>({1, 2}));
   CHECK_FALSE(t[0].condition);
   CHECK(t[1].name == "join");
   CHECK(t[1].named);
-  CHECK(t[1].inputs == std::vector<int>{1, 2});
+  CHECK(t[1].inputs == test::ids<model::PlaceId>({1, 2}));
   CHECK(t[2].name == "T2");
 }
 
@@ -223,11 +223,11 @@ TEST_CASE("validate model: toolboxes and their templates", "[validate]") {
   REQUIRE(r.text() == "");
   const auto &m = r.model;
   REQUIRE(m.toolboxes.size() == 1);
-  CHECK(m.toolboxes[0].templates == std::vector<int>{0, 1});
+  CHECK(m.toolboxes[0].templates == test::ids<model::TemplateId>({0, 1}));
   REQUIRE(m.templates.size() == 2);
   const auto &move = m.templates[0];
   CHECK(move.kind == model::Template::Kind::Actor);
-  CHECK(move.toolbox == 0);
+  CHECK(move.toolbox == model::ToolboxId(0));
   REQUIRE(move.params.size() == 2);
   CHECK(move.params[1].dir == model::ParamDir::Out);
   CHECK(move.params[1].type == model::Type::Int);
@@ -260,41 +260,41 @@ TEST_CASE("validate model: plans, rules by outcome, sub-plans, constants in form
   REQUIRE(m.plans.size() == 2);
   const auto &p = m.plans[0];
   CHECK(p.in_main_file);
-  CHECK(p.toolboxes == std::vector<int>{0});
+  CHECK(p.toolboxes == test::ids<model::ToolboxId>({0}));
   REQUIRE(p.config.size() == 3);
   CHECK(p.config[0].init->text == "20.0");
   CHECK(p.config[1].init->kind == model::Expr::Kind::String);
   CHECK(p.config[1].init->text == "7");
   CHECK_FALSE(p.config[2].init);
   REQUIRE(p.globals.size() == 1);
-  CHECK(p.globals[0].templ == 1);
+  CHECK(p.globals[0].templ == model::TemplateId(1));
   REQUIRE(p.globals[0].rules.size() == 2);
   CHECK(p.globals[0].rules[0].outcome == 0);
   CHECK(p.globals[0].rules[0].target.kind == model::Target::Kind::Terminate);
   CHECK(p.globals[0].rules[1].target.kind == model::Target::Kind::Ignore);
-  CHECK(p.start == 0);
+  CHECK(p.start == model::ActorId(0));
   const auto &nav = p.actors[0];
-  CHECK(nav.templ == -1);
-  CHECK(nav.subplan == 1);
+  CHECK_FALSE(nav.templ);
+  CHECK(nav.subplan == model::PlanId(1));
   REQUIRE(nav.rules.size() == 3);
   CHECK(nav.rules[0].outcome == 0);  // OK
-  CHECK(nav.rules[0].target.actor == 1);
-  CHECK(nav.rules[1].target.actor == 0);  // INTERRUPTED
+  CHECK(nav.rules[0].target.actor == model::ActorId(1));
+  CHECK(nav.rules[1].target.actor == model::ActorId(0));  // INTERRUPTED
   CHECK(nav.rules[2].target.kind == model::Target::Kind::Terminate);
   const auto &move = p.actors[1];
-  CHECK(move.templ == 0);
+  CHECK(move.templ == model::TemplateId(0));
   REQUIRE(move.args.size() == 2);
   CHECK(move.args[0].dir == model::ParamDir::In);
   const auto &formula = move.args[0].formula;
   CHECK(formula.kind == model::Expr::Kind::Binary);
   CHECK(formula.args[0].kind == model::Expr::Kind::Config);
-  CHECK(formula.args[0].index == 0);
+  CHECK(formula.args[0].config() == model::ConfigId(0));
   CHECK(formula.args[1].kind == model::Expr::Kind::Float);  // K, replaced by its value
   CHECK(formula.args[1].text == "2.0");
   CHECK(move.args[1].dir == model::ParamDir::Out);
   CHECK(move.args[1].formula.kind == model::Expr::Kind::Config);
-  CHECK(move.args[1].formula.index == 2);
+  CHECK(move.args[1].formula.config() == model::ConfigId(2));
   CHECK(move.rules[0].outcome == 0);
   CHECK(move.rules[1].outcome == 1);
-  CHECK(function_index(m, "none") == -1);
+  CHECK_FALSE(function_id(m, "none"));
 }

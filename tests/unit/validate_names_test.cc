@@ -72,7 +72,7 @@ sfc S {
   CHECK(r.text() == R"--()--");
   const auto &init = *r.model.charts.at(0).vars.at(0).init;
   CHECK(init.kind == model::Expr::Kind::Const);
-  CHECK(r.model.consts.at(init.index).value.text == "0.6");
+  CHECK(r.model.consts.at(init.constant()).value.text == "0.6");
 }
 
 TEST_CASE("validate: an unknown function gets a did-you-mean at the declaration", "[validate]") {

@@ -131,7 +131,7 @@ TEST_CASE("validate: an empty program is an empty model", "[validate]") {
   model::Model m = validate(program, sources, diag);
   CHECK_FALSE(diag.has_errors());
   CHECK(m.charts.empty());
-  CHECK(m.sources == &sources);
+  CHECK(&m.sources() == &sources);
 }
 
 TEST_CASE("validate: trees the parser patched up after syntax errors", "[validate]") {

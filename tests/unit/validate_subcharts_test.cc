@@ -55,24 +55,24 @@ sfc Patrol {
   // Fetch declares no period: it runs at Patrol's, and its durations count Patrol's ticks.
   CHECK(fetch.period_ms == 10);
   CHECK(fetch.transitions[1].condition->args[1].args[1].ticks == 3);
-  CHECK(patrol.places[0].runs == 0);
-  CHECK(patrol.places[1].runs == -1);
-  CHECK(patrol.places[2].runs == 0);
-  CHECK(fetch.places[0].runs == -1);
+  CHECK(patrol.places[0].runs == model::ChartId(0));
+  CHECK_FALSE(patrol.places[1].runs);
+  CHECK(patrol.places[2].runs == model::ChartId(0));
+  CHECK_FALSE(fetch.places[0].runs);
   using K = model::Expr::Kind;
   const model::Expr &succeeded = *patrol.transitions[0].condition;
   CHECK(succeeded.kind == K::Succeeded);
   CHECK(succeeded.type == model::Type::Bool);
-  CHECK(succeeded.index == 0);
+  CHECK(succeeded.place() == model::PlaceId(0));
   const model::Expr &failed = patrol.transitions[1].condition->args[0];
   CHECK(failed.kind == K::Failed);
-  CHECK(failed.index == 0);
+  CHECK(failed.place() == model::PlaceId(0));
   const model::Expr &path = patrol.transitions[2].condition->args[1].args[0];
   CHECK(path.kind == K::Active);
-  CHECK(path.path == std::vector<int>{2, 1});
+  CHECK(path.path == test::ids<model::PlaceId>({2, 1}));
   const model::Expr &one = *patrol.transitions[3].condition;
   CHECK(one.kind == K::Active);
-  CHECK(one.path == std::vector<int>{1});
+  CHECK(one.path == test::ids<model::PlaceId>({1}));
 }
 
 TEST_CASE("validate: sub-charts: three levels, the same chart under two parents of one period",
@@ -88,7 +88,7 @@ sfc Top { period 5ms; initial place A runs Mid; initial place B runs Leaf; A -> 
   CHECK(r.model.charts[0].period_ms == 5);
   CHECK(r.model.charts[1].period_ms == 5);
   CHECK(r.model.charts[1].transitions[0].condition->args[1].ticks == 4);
-  CHECK(r.model.charts[2].transitions[0].condition->path == std::vector<int>{0, 0, 0});
+  CHECK(r.model.charts[2].transitions[0].condition->path == test::ids<model::PlaceId>({0, 0, 0}));
 }
 
 TEST_CASE("validate: sub-charts: an unknown chart after 'runs' gets a did-you-mean; a function is no chart",
