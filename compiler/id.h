@@ -36,6 +36,9 @@ public:
   friend constexpr bool operator!=(Id a, Id b) { return a.value_ != b.value_; }
   /// Table order; none sorts last.
   friend constexpr bool operator<(Id a, Id b) { return a.value_ < b.value_; }
+  friend constexpr bool operator>(Id a, Id b) { return b < a; }
+  friend constexpr bool operator<=(Id a, Id b) { return !(b < a); }
+  friend constexpr bool operator>=(Id a, Id b) { return !(a < b); }
 
 private:
   static constexpr std::uint32_t kNone = UINT32_MAX;

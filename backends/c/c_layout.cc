@@ -21,7 +21,7 @@ bool choose_owners(const model::Chart &c, IdMap<model::TransitionId, model::Plac
   for (const auto &t : c.transitions) {
     model::PlaceId best;
     for (model::PlaceId p : t.inputs)
-      if (!(p < last) && (!best || p < best)) best = p;
+      if (p >= last && (!best || p < best)) best = p;
     if (!best) {
       in_order = false;
       best = *std::min_element(t.inputs.begin(), t.inputs.end());
