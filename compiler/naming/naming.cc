@@ -127,12 +127,7 @@ Reserved reserved(std::string_view word) {
 }
 
 std::string NameSpace::take(std::string name) {
-  // free(), with this scope's index probed once: the insert that finds the name taken is the test.
-  for (;; name += '_') {
-    if ((outer_ && outer_->taken(name)) || is_reserved(name) || numbered(name)) continue;
-    if (index_.insert(name, static_cast<std::uint32_t>(names_.size()), key()) == NameIndex::kNone) break;
-  }
-  names_.push_back(name);
+  while (!(free_outside(name) && record(name))) name += '_';
   return name;
 }
 

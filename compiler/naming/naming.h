@@ -34,10 +34,8 @@ public:
   explicit NameSpace(const NameSpace *outer) : outer_(outer) {}
 
   /// A name that cannot move (a user's function, an API name): later take()s avoid it.
-  void claim(const std::string &name) {
-    if (!contains(name)) insert(name);
-  }
-  bool free(const std::string &name) const { return !taken(name) && !is_reserved(name) && !numbered(name); }
+  void claim(const std::string &name) { record(name); }
+  bool free(const std::string &name) const { return !contains(name) && free_outside(name); }
   std::string take(std::string name);
   /// Reserves the prefix of numbered temporaries (`gfec_t1`, `gfec_t2`, ...): `base`, with `_`
   /// appended while a name claimed or taken here (or outside) is the prefix followed by digits
@@ -51,9 +49,15 @@ private:
   }
   bool taken(const std::string &name) const { return contains(name) || (outer_ && outer_->taken(name)); }
   bool contains(std::string_view name) const { return index_.find(name, key()) != NameIndex::kNone; }
-  void insert(std::string name) {
-    index_.insert(name, static_cast<std::uint32_t>(names_.size()), key());
-    names_.push_back(std::move(name));
+  /// free() but for this scope's own names, which record() tests as it records.
+  bool free_outside(const std::string &name) const {
+    return !(outer_ && outer_->taken(name)) && !is_reserved(name) && !numbered(name);
+  }
+  /// Adds `name` unless this scope holds it already (one probe of the index); says whether it did.
+  bool record(const std::string &name) {
+    if (index_.insert(name, static_cast<std::uint32_t>(names_.size()), key()) != NameIndex::kNone) return false;
+    names_.push_back(name);
+    return true;
   }
   bool numbered(const std::string &name) const;
   /// Some name here or outside is `prefix` followed by digits only.

@@ -60,7 +60,7 @@ struct Context {
   std::vector<GlobalName> global_names;
   int current_file = 0;
   template <typename Tag> void declare_global(Namespace &ns, const ast::Name &name, Sym kind, Id<Tag> index) {
-    global_names.push_back({&ns, &name, kind, static_cast<int>(index.index()), current_file});
+    global_names.push_back({&ns, &name, kind, symbol_index(index), current_file});
   }
   /// A name that is no element of the model (an interface).
   void declare_global(Namespace &ns, const ast::Name &name, Sym kind) {

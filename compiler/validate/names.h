@@ -44,6 +44,9 @@ const char *describe(Sym kind);
 /// "a place", "an actor": the kind with its article.
 std::string with_article(Sym kind);
 
+/// A symbol's index for element `id` of a model table: -1 for none (a declaration with an error).
+template <typename Tag> int symbol_index(Id<Tag> id) { return id ? static_cast<int>(id.index()) : -1; }
+
 class Symbol {
 public:
   Symbol(Sym kind, int index, std::string_view name, SourceRange range)
@@ -81,7 +84,7 @@ public:
   bool declare(const ast::Name &name, Sym kind, int index, Diagnostics &diag);
   /// The same, for the element `id` of a model table (none: its declaration has an error).
   template <typename Tag> bool declare(const ast::Name &name, Sym kind, Id<Tag> id, Diagnostics &diag) {
-    return declare(name, kind, id ? static_cast<int>(id.index()) : -1, diag);
+    return declare(name, kind, symbol_index(id), diag);
   }
   const Symbol *find(std::string_view name) const;
   /// The symbols of the given kinds in declaration order: did-you-mean candidates.

@@ -43,10 +43,7 @@ void declare_members(Context &cx, PlanScope &s, const std::vector<model::ConfigI
   std::vector<Member> members;
   std::size_t entry = 0;
   for (const auto &block : s.ast.config_blocks)
-    for (const auto &e : block) {
-      const model::ConfigId id = config_index[entry++];
-      members.push_back({&e.name, Sym::ConfigEntry, id ? static_cast<int>(id.index()) : -1});
-    }
+    for (const auto &e : block) members.push_back({&e.name, Sym::ConfigEntry, symbol_index(config_index[entry++])});
   for (const auto &g : s.ast.global_supervisors) members.push_back({&g.name, Sym::Supervisor, -1});
   for (std::size_t i = 0; i < s.ast.actors.size(); ++i) {
     members.push_back({&s.ast.actors[i].name, Sym::Actor, static_cast<int>(i)});

@@ -20,8 +20,8 @@ using model::ChartId;
 using model::PlaceId;
 
 template <typename T, typename I, typename = void> struct Indexable : std::false_type {};
-template <typename T, typename I>
-struct Indexable<T, I, std::void_t<decltype(std::declval<T &>()[std::declval<I>()])>> : std::true_type {};
+template <typename T, typename I> struct Indexable<T, I, std::void_t<decltype(std::declval<T &>()[std::declval<I>()])>>
+    : std::true_type {};
 
 // A place's id does not index the charts, and no int becomes an id by itself.
 static_assert(Indexable<Table<ChartId, int>, ChartId>::value);
