@@ -13,7 +13,9 @@ namespace gfec::c_backend {
 namespace {
 
 // The helpers have one exit each and leave their parameters alone (MISRA C:2012 rules 15.5 and
-// 17.8): a search ends by a flag, not by return or break.
+// 17.8). The search for the next member ends by a flag; insert and erase leave their loop by one
+// `break` (rule 15.4 allows one), which gcc compiles to 40 fewer instructions per tick of a small
+// dense chart than a flag in the loop condition (docs/performance.md (b)).
 constexpr std::string_view kSetFunctions = R"(/* The number of the lowest bit set in a word that is not 0. */
 static uint32_t @lowest@(uint32_t word)
 {
@@ -71,15 +73,15 @@ static uint32_t @next@(const uint32_t *set, const uint32_t *levels, uint32_t cou
 static void @insert@(uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t member)
 {
     uint32_t i = member;
-    uint32_t level = 0u;
-    bool rising = true;
-    while (rising && (level < count)) {
+    uint32_t level;
+    for (level = 0u; level < count; ++level) {
         uint32_t *word = &set[levels[level] + (i >> 5)];
         uint32_t was = *word;
         *word = was | (1u << (i & 31u));
-        rising = (was == 0u); /* the word was empty: the level above learns of it */
+        if (was != 0u) {
+            break; /* the word had members: the levels above know of it already */
+        }
         i >>= 5;
-        ++level;
     }
 }
 
@@ -88,14 +90,14 @@ static void @insert@(uint32_t *set, const uint32_t *levels, uint32_t count, uint
 static void @erase@(uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t low, uint32_t member)
 {
     uint32_t i = member;
-    uint32_t level = low;
-    bool emptied = true;
-    while (emptied && (level < count)) {
+    uint32_t level;
+    for (level = low; level < count; ++level) {
         uint32_t *word = &set[levels[level] + (i >> 5)];
         *word &= ~(1u << (i & 31u));
-        emptied = (*word == 0u); /* the word became empty: the level above learns of it */
+        if (*word != 0u) {
+            break; /* the word keeps members: the levels above stay as they are */
+        }
         i >>= 5;
-        ++level;
     }
 }
 )";

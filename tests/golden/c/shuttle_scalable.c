@@ -65,15 +65,15 @@ static uint32_t Shuttle_next(const uint32_t *set, const uint32_t *levels, uint32
 static void Shuttle_insert(uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t member)
 {
     uint32_t i = member;
-    uint32_t level = 0u;
-    bool rising = true;
-    while (rising && (level < count)) {
+    uint32_t level;
+    for (level = 0u; level < count; ++level) {
         uint32_t *word = &set[levels[level] + (i >> 5)];
         uint32_t was = *word;
         *word = was | (1u << (i & 31u));
-        rising = (was == 0u); /* the word was empty: the level above learns of it */
+        if (was != 0u) {
+            break; /* the word had members: the levels above know of it already */
+        }
         i >>= 5;
-        ++level;
     }
 }
 
@@ -82,14 +82,14 @@ static void Shuttle_insert(uint32_t *set, const uint32_t *levels, uint32_t count
 static void Shuttle_erase(uint32_t *set, const uint32_t *levels, uint32_t count, uint32_t low, uint32_t member)
 {
     uint32_t i = member;
-    uint32_t level = low;
-    bool emptied = true;
-    while (emptied && (level < count)) {
+    uint32_t level;
+    for (level = low; level < count; ++level) {
         uint32_t *word = &set[levels[level] + (i >> 5)];
         *word &= ~(1u << (i & 31u));
-        emptied = (*word == 0u); /* the word became empty: the level above learns of it */
+        if (*word != 0u) {
+            break; /* the word keeps members: the levels above stay as they are */
+        }
         i >>= 5;
-        ++level;
     }
 }
 
