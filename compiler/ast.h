@@ -318,6 +318,9 @@ struct TestStep {
   long long count = 1;  ///< Tick: `tick N;` (1 for `tick;`)
   Name function;        ///< Set: the sensing function
   ExprPtr value;        ///< Set: the constant; Expect: the expectation
+  /// Written inside `agent K { ... }` (a team machine's agent K), or -1.
+  long long agent = -1;
+  SourceRange agent_range;  ///< the `agent K` that scopes the step
 };
 
 /// `test "NAME" of CHART { STEPS }`
@@ -325,6 +328,9 @@ struct Test {
   std::string name;
   SourceRange name_range;
   Name chart;
+  /// `of CHART agents N`: how many agents of a team machine run (0: not written).
+  long long agents = 0;
+  SourceRange agents_range;
   std::vector<TestStep> steps;
   SourceRange range;
 };

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <climits>
 #include <cstdlib>
 #include <optional>
 
@@ -172,7 +173,7 @@ private:
   ExprList active_arguments();
   ExprPtr path(Name first);
   Test test_decl();
-  void test_step(Test &test);
+  void test_step(Test &test, long long agent, SourceRange agent_range);
   ExprPtr test_operand();
   /// The contextual keywords of a test block (`tick set expect called calls status`): plain
   /// identifiers everywhere else.
@@ -924,7 +925,7 @@ ExprPtr Parser::primary() {
 
 // ------------------------------------------------------------ scenario tests
 
-//G test: 'test' STRING 'of' IDENT '{' { test_step } '}'
+//G test: 'test' STRING 'of' IDENT [ 'agents' INT ] '{' { test_step } '}'
 Test Parser::test_decl() {
   std::uint32_t begin = here();
   advance();
@@ -935,9 +936,16 @@ Test Parser::test_decl() {
   if (!at_word("of")) fail("expected 'of' and the chart after the test's name");
   advance();
   t.chart = this->name("(the chart to test) after 'of'");
+  if (at_word("agents")) {
+    std::uint32_t agents_begin = here();
+    advance();
+    Token n = expect(Tok::Int, "after 'agents' (how many agents of the team machine run, e.g. 'agents 3')");
+    t.agents = count_of(n);  // the validator checks it against the team size
+    t.agents_range = from(agents_begin);
+  }
   in_test_ = true;
   try {
-    braced("to begin the test's steps", [&] { test_step(t); });
+    braced("to begin the test's steps", [&] { test_step(t, -1, {}); });
   } catch (const SyntaxError &) {
     in_test_ = false;
     throw;
@@ -948,9 +956,22 @@ Test Parser::test_decl() {
 }
 
 //G test_step: 'tick' [ INT ] ';' | 'set' IDENT '=' expr ';' | 'expect' expr ';'
-void Parser::test_step(Test &test) {
+//G           | 'agent' INT '{' { test_step } '}'
+void Parser::test_step(Test &test, long long agent, SourceRange agent_range) {
   std::uint32_t begin = here();
   TestStep step;
+  step.agent = agent;
+  step.agent_range = agent_range;
+  if (at_word("agent") && peek().kind == Tok::Int) {
+    // The steps of one agent of a team machine.
+    if (agent != -1) fail("'agent' blocks do not nest: end one agent's block before the next");
+    advance();
+    Token n = take();
+    const long long k = count_of(n);
+    const SourceRange scope = from(begin);
+    braced("to begin the agent's steps", [&] { test_step(test, k < 0 ? LLONG_MAX : k, scope); });
+    return;
+  }
   if (at_word("tick")) {
     advance();
     step.kind = TestStep::Kind::Tick;

@@ -56,7 +56,9 @@ struct TestFile {
   model::Model &model = c.model;
   scenario::Suite suite;
   bool unreadable = false;
-  std::size_t written_tests = 0;  ///< `test` blocks in the file, checked or not
+  /// What the file counts for when it cannot run: each `test` block written in it, or the
+  /// file itself when it has none (or cannot be read).
+  std::size_t broken_count() const { return std::max<std::size_t>(suite.written.size(), 1); }
 };
 
 /// What one test gave.
@@ -117,7 +119,7 @@ public:
     std::optional<scenario::Run> ref, eng;
     if (!o_.engine_only) ref = scenario::run_reference(m, test);
     if (!o_.reference_only) {
-      EngineBuilds::Build b = builds_.get(m, test.chart, chart_file(file, test.chart));
+      EngineBuilds::Build b = builds_.get(m, test.chart, chart_file(file, test.chart), test.agents);
       if (b.program.empty()) {
         out.diag
             .error(test.range, ErrorKind::TestEngine,
@@ -152,10 +154,14 @@ private:
     const model::Model &m = out.file->model;
     std::size_t n = std::min(ref.ticks.size(), eng.ticks.size());
     for (std::size_t k = 0; k < n; ++k) {
-      std::string diff = scenario::compare(ref.ticks[k], eng.ticks[k], m, out.test->chart, "reference", "engine");
+      std::string diff;
+      std::size_t agent = 0;
+      for (; agent < ref.ticks[k].size() && agent < eng.ticks[k].size() && diff.empty(); ++agent)
+        diff = scenario::compare(ref.ticks[k][agent], eng.ticks[k][agent], m, out.test->chart, "reference", "engine");
       if (diff.empty()) continue;
       SourceRange at = k == 0 ? out.test->range : tick_step(*out.test, k);
       std::string what = k == 0 ? "after _init" : fmt::format("at tick {}", k);
+      if (out.test->agents > 1) what += fmt::format(" (agent {})", agent - 1);
       bool call = diff.rfind("call ", 0) == 0;
       out.diag
           .error(at, ErrorKind::TestDisagreement,
@@ -179,9 +185,10 @@ private:
         std::optional<scenario::Verdict> verdict;
       } sides[2] = {{"the reference interpreter", std::nullopt}, {"the C engine", std::nullopt}};
       const scenario::Run *runs[2] = {ref, eng};
+      const std::size_t agent = static_cast<std::size_t>(s.expect_agent());
       for (int i = 0; i < 2; ++i)
-        if (runs[i] && tick < runs[i]->ticks.size())
-          sides[i].verdict = scenario::evaluate(s.expect, runs[i]->ticks[tick], file.model, test.chart);
+        if (runs[i] && tick < runs[i]->ticks.size() && agent < runs[i]->ticks[tick].size())
+          sides[i].verdict = scenario::evaluate(s.expect, runs[i]->ticks[tick][agent], file.model, test.chart);
       auto failed = [](const Side &x) { return x.verdict && (!x.verdict->holds || !x.verdict->error.empty()); };
       if (!failed(sides[0]) && !failed(sides[1])) continue;
       const Side &bad = failed(sides[0]) ? sides[0] : sides[1];
@@ -193,14 +200,15 @@ private:
         d.note(fmt::format("'{}' is {}", text_of(file.sources, op.range), op.value));
       if (reads_calls(s.expect)) {
         std::string calls;
-        for (const scenario::Call &c : bad_run.ticks[tick].calls) calls += (calls.empty() ? "" : ", ") + c.text;
+        for (const scenario::Call &c : bad_run.ticks[tick][agent].calls) calls += (calls.empty() ? "" : ", ") + c.text;
         d.note(calls.empty() ? std::string("no function was called in the last tick")
                              : fmt::format("the calls of the last tick: {}", calls));
       }
       if (sides[0].verdict && sides[1].verdict && failed(sides[0]) != failed(sides[1]))
         d.note(
             fmt::format("it fails on {} only; it holds on {}", bad.who, (&bad == &sides[0] ? sides[1] : sides[0]).who));
-      d.note(fmt::format("in test \"{}\", after tick {}", test.name, tick));
+      d.note(test.agents > 1 ? fmt::format("in test \"{}\", agent {}, after tick {}", test.name, agent, tick)
+                             : fmt::format("in test \"{}\", after tick {}", test.name, tick));
     }
   }
 
@@ -211,15 +219,12 @@ private:
 void load(TestFile &f) {
   RealFileSystem fs;
   f.c.front_end(f.path, fs, &f.suite);
-  if (f.c.unreadable()) {
-    f.unreadable = true;
-    return;
-  }
-  f.written_tests = f.suite.written;
+  if (f.c.unreadable()) f.unreadable = true;
 }
 
-/// JUnit XML: a testsuite per file, a testcase per test; a file that does not compile is one
-/// failed testcase named after the file.
+/// JUnit XML: a testsuite per file, a testcase per test; the tests of a file that does not
+/// compile are failed testcases (the file's errors in each), and a file without tests that
+/// cannot run is one failed testcase named after the file: the totals are the summary line's.
 std::string junit(const std::vector<std::unique_ptr<TestFile>> &files,
                   const std::vector<std::unique_ptr<Outcome>> &outcomes) {
   std::size_t total = 0, failures = 0;
@@ -248,14 +253,15 @@ std::string junit(const std::vector<std::unique_ptr<TestFile>> &files,
       cases += fmt::format(">\n      <failure message=\"{}\" type=\"expectation\">{}</failure>\n    </testcase>\n",
                            text::xml_escape(first), text::xml_escape(all));
     };
-    if (f->unreadable || f->diag.has_errors()) {
-      failure(f->path, f->diag, f->sources, 0);
-      if (f->unreadable && failed == 0) {
-        ++failed;
-        cases = fmt::format("    <testcase name=\"{0}\" classname=\"{0}\" time=\"0.000\">\n      <failure "
-                            "message=\"cannot read '{0}'\" type=\"io\"/>\n    </testcase>\n",
-                            text::xml_escape(f->path));
-      }
+    if (f->unreadable) {
+      ++n;
+      ++failed;
+      cases += fmt::format("    <testcase name=\"{0}\" classname=\"{0}\" time=\"0.000\">\n      <failure "
+                           "message=\"cannot read '{0}'\" type=\"io\"/>\n    </testcase>\n",
+                           text::xml_escape(f->path));
+    } else if (f->diag.has_errors()) {
+      if (f->suite.written.empty()) failure(f->path, f->diag, f->sources, 0);
+      for (const std::string &name : f->suite.written) failure(name, f->diag, f->sources, 0);
     }
     for (const auto &o : outcomes)
       if (o->file == f.get()) failure(o->test->name, o->diag, f->sources, o->seconds);
@@ -282,8 +288,9 @@ int test_with(const TestOptions &o, std::ostream &out, std::ostream &err) {
     load(*f);
     if (f->unreadable) {
       io_error = true;
+      broken += 1;
     } else if (f->diag.has_errors()) {
-      broken += std::max<std::size_t>(f->written_tests, 1);
+      broken += f->broken_count();
     } else {
       for (const auto &t : f->suite.tests) {
         if (!o.filter.empty() && t.name.find(o.filter) == std::string::npos) continue;
@@ -329,7 +336,11 @@ int test_with(const TestOptions &o, std::ostream &out, std::ostream &err) {
     }
   }
   if (!o.junit.empty()) {
-    std::string failure = write_atomically({{o.junit, junit(files, outcomes)}}, o.files);
+    // Never over a test file or anything it imports (docs/security.md).
+    std::vector<std::string> inputs = o.files;
+    for (const auto &f : files)
+      for (FileId i = 0; i < f->sources.size(); ++i) inputs.push_back(f->sources.file(i).path());
+    std::string failure = write_atomically({{o.junit, junit(files, outcomes)}}, inputs);
     if (!failure.empty()) {
       report->tool_error(o.junit, failure, false);
       io_error = true;

@@ -4,12 +4,15 @@
 // `cc`) once per distinct engine and run once per test.
 //
 // The exchange is plain text. The runner writes the test's steps to the harness's stdin, one a
-// line: `set F VALUE` (F the function's index in the model, VALUE as the engines print it) and
-// `tick`. The harness prints, after _init and after every tick:
+// line: `set A F VALUE` (A the agent, -1 for every agent; F the function's index in the model;
+// VALUE as the engines print it) and `tick`. The harness prints, after _init and after every
+// tick:
 //
 //   tick                     (before a tick's calls; absent for the snapshot after _init)
+//   agent 1                  a team machine: the lines that follow are this agent's
 //   call Motor(1, 0.5)       every interface call, in order, formatted as `gfec run` prints it
 //   av 1 0 1 0               the activation of each place (X_activation)
+//   inst 0 1 0               each sub-chart instance's activation (X_instance_activation)
 //   state 2 0                fsm only: X_state and X_status
 //   var 0 3                  each variable, by index, formatted like `call` arguments
 //   timer 1 5                each timed place's timer, in ticks
@@ -42,9 +45,10 @@ public:
     std::string error;    ///< why not
   };
 
-  /// The harness for chart `chart` of `model` (generated from `source_name`): built on first
-  /// use, then reused for every engine with the same generated code. Thread-safe.
-  Build get(const model::Model &model, model::ChartId chart, const std::string &source_name);
+  /// The harness for chart `chart` of `model` (generated from `source_name`) running `agents`
+  /// engines side by side (a team machine; else 1): built on first use, then reused for every
+  /// engine with the same generated code. Thread-safe.
+  Build get(const model::Model &model, model::ChartId chart, const std::string &source_name, int agents);
 
   /// Runs `test` on a built harness; `id` names its input and output files.
   scenario::Run run(const Build &build, const model::Model &model, const scenario::Test &test, int id);
@@ -58,8 +62,9 @@ private:
   std::map<std::size_t, Build> builds_;  ///< by hash of the generated engine and harness
 };
 
-/// harness.c for chart `chart`, whose engine (emitted with `options`) has the header `header`.
+/// harness.c for chart `chart`, whose engine (emitted with `options`) has the header `header`,
+/// running `agents` engines (a team machine's agents, with the reference exchange).
 std::string harness_source(const model::Model &model, model::ChartId chart, const EmitOptions &options,
-                           const std::string &header);
+                           const std::string &header, int agents);
 
 }  // namespace gfec

@@ -112,7 +112,7 @@ bool Compilation::front_end(const std::string &path, const FileSystem &fs, scena
   load.language = options.language;
   loaded = load_program(path, load, fs, sources, diag);
   if (tests && !loaded.program.files.empty() && loaded.program.files.front())
-    tests->written = loaded.program.files.front()->tests.size();
+    for (const auto &t : loaded.program.files.front()->tests) tests->written.push_back(t.name);
   if (loaded.main_unreadable || diag.has_errors()) return false;
   if (tests) model = validate(loaded.program, sources, diag, *tests);
   else model = validate(loaded.program, sources, diag);

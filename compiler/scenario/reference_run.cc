@@ -37,6 +37,18 @@ private:
   std::vector<Call> calls_;
 };
 
+/// The activation of every instance inside `e`, depth first in declaration order (instances_of).
+void record_instances(const interp::Engine &e, std::vector<std::vector<unsigned>> &out) {
+  for (model::PlaceId p : e.chart().places.ids()) {
+    const interp::Engine *sub = e.instance(p);
+    if (!sub) continue;
+    std::vector<unsigned> av;
+    for (model::PlaceId q : sub->chart().places.ids()) av.push_back(sub->activation(q));
+    out.push_back(std::move(av));
+    record_instances(*sub, out);
+  }
+}
+
 Snapshot snapshot(const interp::Engine &e, std::vector<Call> calls) {
   Snapshot s;
   s.tick = e.ticks();
@@ -50,6 +62,8 @@ Snapshot snapshot(const interp::Engine &e, std::vector<Call> calls) {
     s.status = e.status();
   }
   s.calls = std::move(calls);
+  record_instances(e, s.instances);
+  s.agent = e.agent();
   return s;
 }
 
@@ -62,23 +76,54 @@ std::uint64_t total_ticks(const Test &test) {
   return n;
 }
 
+void settle_tick(std::vector<Snapshot> &agents, const std::vector<Instance> &instances, const model::Chart &chart) {
+  for (Snapshot &s : agents) {
+    settle_instances(s, instances);
+    s.reports.assign(chart.team > 0 ? static_cast<std::size_t>(chart.team) : 0u, model::PlaceId::none());
+    if (s.tick == 0) continue;
+    for (std::size_t a = 0; a < agents.size() && a < s.reports.size(); ++a) s.reports[a] = agents[a].state;
+  }
+}
+
 Run run_reference(const model::Model &model, const Test &test) {
   Run run;
-  TestEnvironment env(model);
-  interp::Engine engine(model, test.chart);
+  const std::size_t n = static_cast<std::size_t>(std::max(test.agents, 1));
+  const std::vector<Instance> instances = instances_of(model, test.chart);
+  const model::Chart &chart = model.charts.at(test.chart);
+  std::vector<TestEnvironment> envs(n, TestEnvironment(model));
+  std::vector<interp::Engine> engines;
+  engines.reserve(n);
+  for (std::size_t a = 0; a < n; ++a) engines.emplace_back(model, test.chart);
+  std::size_t agent = 0;
+  auto record = [&] {
+    std::vector<Snapshot> tick;
+    for (std::size_t a = 0; a < n; ++a) tick.push_back(snapshot(engines[a], envs[a].take_calls()));
+    settle_tick(tick, instances, chart);
+    run.ticks.push_back(std::move(tick));
+  };
   try {
-    engine.init();
-    run.ticks.push_back(snapshot(engine, {}));
+    for (std::size_t a = 0; a < n; ++a) {
+      engines[a].init();
+      if (chart.team > 0) engines[a].set_agent(static_cast<int>(a));
+    }
+    record();
     for (const Step &step : test.steps) {
-      if (step.kind == Step::Kind::Set) env.set(step.function, step.value);
+      if (step.kind == Step::Kind::Set)
+        for (std::size_t a = 0; a < n; ++a)
+          if (step.agent < 0 || static_cast<std::size_t>(step.agent) == a) envs[a].set(step.function, step.value);
       if (step.kind != Step::Kind::Tick) continue;
       for (unsigned long i = 0; i < step.count; ++i) {
-        engine.run(env, nullptr);
-        run.ticks.push_back(snapshot(engine, env.take_calls()));
+        for (agent = 0; agent < n; ++agent) engines[agent].run(envs[agent], nullptr);
+        // The reference exchange (docs/language.md "Teams"): every agent's state to every other.
+        if (chart.team > 0)
+          for (std::size_t from = 0; from < n; ++from)
+            for (std::size_t to = 0; to < n; ++to) engines[to].report(static_cast<int>(from), engines[from].state());
+        record();
       }
     }
   } catch (const interp::RuntimeError &err) {
-    run.error = fmt::format("tick {}: {}", run.ticks.size(), err.what());
+    run.error = n > 1 ? fmt::format("tick {} (agent {}): {}", run.ticks.size(), agent, err.what())
+                      : fmt::format("tick {}: {}", run.ticks.size(), err.what());
     run.error_range = err.range;
     run.error_located = true;
   }

@@ -12,9 +12,11 @@
 namespace gfec::scenario {
 
 struct Run {
-  std::vector<Snapshot> ticks;  ///< ticks[k]: after k ticks (ticks[0]: after _init)
-  std::string error;            ///< not empty: the run stopped (undefined behaviour, a crash)
-  SourceRange error_range;      ///< where, when the reference interpreter knows
+  /// ticks[k][a]: agent a after k ticks (ticks[0]: after _init); one agent unless the chart
+  /// is a team machine.
+  std::vector<std::vector<Snapshot>> ticks;
+  std::string error;        ///< not empty: the run stopped (undefined behaviour, a crash)
+  SourceRange error_range;  ///< where, when the reference interpreter knows
   bool error_located = false;
 };
 
@@ -22,5 +24,10 @@ struct Run {
 std::uint64_t total_ticks(const Test &test);
 
 Run run_reference(const model::Model &model, const Test &test);
+
+/// What both runs leave alike after they recorded a tick: the instances that are not running
+/// zeroed (settle_instances), and every agent's reports as the reference exchange left them —
+/// after tick k (k >= 1) each agent holds every other agent's state of tick k.
+void settle_tick(std::vector<Snapshot> &agents, const std::vector<Instance> &instances, const model::Chart &chart);
 
 }  // namespace gfec::scenario

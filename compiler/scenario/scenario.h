@@ -48,11 +48,19 @@ struct Step {
   model::FunctionId function;  ///< Set
   std::string value;           ///< Set: the constant converted to the function's type, formatted
   Expect expect;               ///< Expect
+  /// A team machine's agent the step is for (`agent K { ... }`), or -1: a `set` for every
+  /// agent, an `expect` of agent 0.
+  int agent = -1;
+  /// The agent an expectation reads.
+  int expect_agent() const { return agent < 0 ? 0 : agent; }
 };
 
 struct Test {
   std::string name;
   model::ChartId chart;
+  /// How many agents run the chart side by side with the reference exchange (docs/language.md
+  /// "Teams"): a team machine's size unless `agents N` says fewer; 1 for any other chart.
+  int agents = 1;
   std::vector<Step> steps;
   SourceRange range;
 };
@@ -60,9 +68,9 @@ struct Test {
 /// The tests of one file (its own, not those of the files it imports).
 struct Suite {
   std::vector<Test> tests;
-  /// `test` blocks written in the main file, checked or not (a file that does not compile
-  /// counts them all as failed).
-  std::size_t written = 0;
+  /// The names of the `test` blocks written in the main file, checked or not (a file that does
+  /// not compile counts them all as failed).
+  std::vector<std::string> written;
 };
 
 }  // namespace gfec::scenario

@@ -47,15 +47,33 @@ const char *status_word(int status) {
 /// A state as the engines number it, -1 for none.
 std::string state_number(model::PlaceId s) { return s ? std::to_string(s.index()) : "-1"; }
 
+/// Whether a call's arguments (as the engines print them) equal the expected ones (as `called F(ARGS)`
+/// converted them to the parameter types), compared as values: `-0` is `0`, as in C.
+bool same_arguments(const model::Function &f, const std::vector<std::string> &seen,
+                    const std::vector<std::string> &want) {
+  if (seen.size() != want.size() || seen.size() != f.params.size()) return false;
+  for (std::size_t i = 0; i < seen.size(); ++i) {
+    const model::Type t = f.params[i].type;
+    const interp::Value a = parse_value(seen[i], t), b = parse_value(want[i], t);
+    const bool equal = t == Type::Bool                         ? a.b == b.b
+                       : t == Type::Int                        ? a.i == b.i
+                       : t == Type::Float || t == Type::Double ? a.f == b.f
+                                                               : seen[i] == want[i];
+    if (!equal) return false;
+  }
+  return true;
+}
+
 /// Replaces the test-only operands by their values, so that the interpreter's evaluator (C's
 /// semantics, once, in one place) computes the rest; records every operand's value.
 class Substitution {
 public:
-  Substitution(const Snapshot &s, const model::Model &m, const model::Chart &c) : s_(s), m_(m), c_(c) {}
+  Substitution(const Snapshot &s, const model::Model &m, const model::Chart &c, std::vector<Instance> instances)
+      : s_(s), m_(m), c_(c), instances_(std::move(instances)) {}
 
   model::Expr operator()(const Expect &e, std::vector<Operand> &operands) {
     switch (e.kind) {
-    case Expect::Kind::Chart: chart_operands(e.chart, operands); return e.chart;
+    case Expect::Kind::Chart: return chart_part(e.chart, operands);
     case Expect::Kind::Active: {
       bool v = s_.activation.at(e.place) > 0;
       operands.push_back({e.range, v ? "true" : "false"});
@@ -76,7 +94,7 @@ public:
       std::string seen;
       for (const Call &c : s_.calls) {
         if (c.function != e.function) continue;
-        if (e.call_args && c.args != *e.call_args) {
+        if (e.call_args && !same_arguments(m_.functions.at(e.function), c.args, *e.call_args)) {
           seen += fmt::format("{}'{}'", seen.empty() ? "" : ", ", c.text);
           continue;
         }
@@ -104,30 +122,115 @@ public:
   }
 
 private:
-  /// The state a chart expression reads: its variables and timers.
-  void chart_operands(const model::Expr &e, std::vector<Operand> &operands) {
-    if (e.kind == K::Var) {
-      operands.push_back({e.range, interp::format_value(s_.vars.at(e.var()))});
-    } else if (e.kind == K::Elapsed) {
+  /// A chart expression with what it reads of the sub-charts replaced by its value (the
+  /// snapshot has no engine to ask), recording the operands it reads: variables, timers,
+  /// sub-charts' states.
+  model::Expr chart_part(const model::Expr &e, std::vector<Operand> &operands) {
+    switch (e.kind) {
+    case K::Var: operands.push_back({e.range, interp::format_value(s_.vars.at(e.var()))}); return e;
+    case K::Elapsed: {
       std::uint32_t t = s_.timers.at(e.place());
       operands.push_back({e.range, c_.period_ms > 0 ? fmt::format("{} ms ({} ticks)", t * c_.period_ms, t)
                                                     : fmt::format("{} ticks", t)});
+      return e;
     }
-    for (const auto &a : e.args) chart_operands(a, operands);
+    case K::Active:
+    case K::Succeeded:
+    case K::Failed: {
+      bool v = e.kind == K::Active ? active(e.path) : outcome(e.place(), e.kind == K::Succeeded);
+      operands.push_back({e.range, v ? "true" : "false"});
+      return literal_bool(v, e.range);
+    }
+    default: break;
+    }
+    model::Expr out = e;
+    for (std::size_t i = 0; i < e.args.size(); ++i) out.args[i] = chart_part(e.args[i], operands);
+    return out;
+  }
+
+  /// The instance that place `place` of instance `parent` (-1: the root) runs, or -1.
+  int instance_of(int parent, model::PlaceId place) const {
+    for (std::size_t i = 0; i < instances_.size(); ++i)
+      if (instances_[i].parent == parent && instances_[i].place == place) return static_cast<int>(i);
+    return -1;
+  }
+
+  unsigned activation(int instance, model::PlaceId place) const {
+    if (instance < 0) return s_.activation.at(place);
+    const auto &av = s_.instances.at(static_cast<std::size_t>(instance));
+    return place.index() < av.size() ? av[place.index()] : 0u;
+  }
+
+  /// `active(P.Q.R)`: every place along the path active, each in the instance the previous runs.
+  bool active(const HeapVector<model::PlaceId> &path) const {
+    int instance = -1;
+    for (std::size_t i = 0; i < path.size(); ++i) {
+      if (activation(instance, path[i]) == 0) return false;
+      if (i + 1 < path.size()) instance = instance_of(instance, path[i]);
+      if (instance < 0 && i + 1 < path.size()) return false;
+    }
+    return !path.empty();
+  }
+
+  /// `succeeded(P)` / `failed(P)`: P active and its fsm instance in a success / failure state.
+  bool outcome(model::PlaceId place, bool success) const {
+    int instance = instance_of(-1, place);
+    if (instance < 0 || activation(-1, place) == 0) return false;
+    const model::Chart &sub = m_.charts.at(instances_[static_cast<std::size_t>(instance)].chart);
+    const model::Terminal want = success ? model::Terminal::Success : model::Terminal::Failure;
+    for (model::PlaceId q : sub.places.ids())
+      if (sub.places[q].terminal == want && activation(instance, q) > 0) return true;
+    return false;
   }
 
   const Snapshot &s_;
   const model::Model &m_;
   const model::Chart &c_;
+  std::vector<Instance> instances_;
 };
 
 }  // namespace
+
+std::vector<Instance> instances_of(const model::Model &model, model::ChartId chart) {
+  std::vector<Instance> out;
+  // Depth first, in declaration order: an instance, then the instances inside it, then the next.
+  struct Walk {
+    const model::Model &model;
+    std::vector<Instance> &out;
+    void operator()(model::ChartId c, int parent) {
+      const model::Chart &chart = model.charts.at(c);
+      for (model::PlaceId p : chart.places.ids()) {
+        if (!chart.places[p].runs) continue;
+        out.push_back({chart.places[p].runs, parent, p});
+        (*this)(chart.places[p].runs, static_cast<int>(out.size()) - 1);
+      }
+    }
+  };
+  Walk{model, out}(chart, -1);
+  return out;
+}
+
+void settle_instances(Snapshot &s, const std::vector<Instance> &instances) {
+  s.instances.resize(instances.size());
+  std::vector<bool> running(instances.size(), false);
+  for (std::size_t i = 0; i < instances.size(); ++i) {
+    const Instance &in = instances[i];
+    const unsigned owner = in.parent < 0
+                               ? s.activation.at(in.place)
+                               : (running[static_cast<std::size_t>(in.parent)] &&
+                                          in.place.index() < s.instances[static_cast<std::size_t>(in.parent)].size()
+                                      ? s.instances[static_cast<std::size_t>(in.parent)][in.place.index()]
+                                      : 0u);
+    running[i] = owner > 0;
+    if (!running[i]) std::fill(s.instances[i].begin(), s.instances[i].end(), 0u);
+  }
+}
 
 Verdict evaluate(const Expect &e, const Snapshot &s, const model::Model &model, model::ChartId chart) {
   const model::Chart &c = model.charts.at(chart);
   Verdict v;
   std::vector<Operand> operands;
-  model::Expr expr = Substitution(s, model, c)(e, operands);
+  model::Expr expr = Substitution(s, model, c, instances_of(model, chart))(e, operands);
   // Each operand once, in source order.
   std::stable_sort(operands.begin(), operands.end(),
                    [](const Operand &a, const Operand &b) { return a.range.begin < b.range.begin; });
@@ -138,6 +241,10 @@ Verdict evaluate(const Expect &e, const Snapshot &s, const model::Model &model, 
   }
   IdMap<model::VarId, interp::Value> vars = s.vars;
   interp::Frame frame{model, c, vars, s.timers};
+  if (c.team > 0) {  // team(S) and agent() as this agent sees them
+    frame.agent = s.agent;
+    frame.reports = &s.reports;
+  }
   try {
     interp::Value result = interp::evaluate(expr, frame);
     v.holds = result.type == Type::Bool && result.b;
@@ -167,7 +274,31 @@ std::string compare(const Snapshot &x, const Snapshot &y, const model::Model &mo
   for (model::PlaceId p : c.places.ids())
     if (c.places[p].timed && x.timers.at(p) != y.timers.at(p))
       return fmt::format("timer of '{}': {} {}, {} {}", c.places[p].name, a, x.timers[p], b, y.timers[p]);
+  const std::vector<Instance> instances = instances_of(model, chart);
+  for (std::size_t i = 0; i < instances.size() && i < x.instances.size() && i < y.instances.size(); ++i) {
+    const model::Chart &sub = model.charts.at(instances[i].chart);
+    for (model::PlaceId q : sub.places.ids()) {
+      const std::size_t k = q.index();
+      const unsigned vx = k < x.instances[i].size() ? x.instances[i][k] : 0u;
+      const unsigned vy = k < y.instances[i].size() ? y.instances[i][k] : 0u;
+      if (vx != vy)
+        return fmt::format("activation of '{}' in the instance of '{}' that '{}' runs: {} {}, {} {}",
+                           sub.places[q].name, sub.name, instance_path(model, chart, instances, i), a, vx, b, vy);
+    }
+  }
   return "";
+}
+
+std::string instance_path(const model::Model &model, model::ChartId chart, const std::vector<Instance> &instances,
+                          std::size_t i) {
+  std::string path;
+  for (int k = static_cast<int>(i); k >= 0; k = instances[static_cast<std::size_t>(k)].parent) {
+    const Instance &in = instances[static_cast<std::size_t>(k)];
+    const model::Chart &owner =
+        model.charts.at(in.parent < 0 ? chart : instances[static_cast<std::size_t>(in.parent)].chart);
+    path = owner.places.at(in.place).name.str() + (path.empty() ? "" : "." + path);
+  }
+  return path;
 }
 
 interp::Value parse_value(const std::string &text, model::Type t) {

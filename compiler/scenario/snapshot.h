@@ -20,6 +20,18 @@ struct Call {
   std::string text;  ///< `Motor(1, 0.5)`
 };
 
+/// A sub-chart instance of a test's chart (docs/language.md "Sub-charts"), numbered depth first
+/// in declaration order as the C engine's `X_instance` numbers them.
+struct Instance {
+  model::ChartId chart;  ///< the chart it runs
+  int parent = -1;       ///< the instance that holds the place running it, -1 for the root
+  model::PlaceId place;  ///< that place
+};
+
+/// The instances of `chart`, depth first in declaration order.
+std::vector<Instance> instances_of(const model::Model &model, model::ChartId chart);
+
+/// One agent's state after a tick (a chart that is no team machine has only agent 0).
 struct Snapshot {
   std::uint64_t tick = 0;  ///< ticks run so far (0: just after _init)
   IdMap<model::PlaceId, unsigned> activation;
@@ -28,7 +40,18 @@ struct Snapshot {
   model::PlaceId state;     ///< fsm
   int status = 0;           ///< fsm
   std::vector<Call> calls;  ///< during the last tick, in order
+  /// By instance (instances_of): the activation of each of its places; all 0 while the place
+  /// that runs it, or one above, is inactive (then the instance is not running).
+  std::vector<std::vector<unsigned>> instances;
+  /// A team machine: this agent's number, and by agent the state it last reported (none
+  /// before the first exchange; docs/language.md "Teams").
+  int agent = 0;
+  std::vector<model::PlaceId> reports;
 };
+
+/// Zeroes the activation of the instances that are not running (normalises what the two runs
+/// report about stopped instances, which keep where their last tick left them).
+void settle_instances(Snapshot &s, const std::vector<Instance> &instances);
 
 /// An operand's value, for the notes of a failed expectation.
 struct Operand {
@@ -48,6 +71,10 @@ Verdict evaluate(const Expect &e, const Snapshot &s, const model::Model &model, 
 /// activation, state, variables and timers). `a` and `b` name the two runs.
 std::string compare(const Snapshot &x, const Snapshot &y, const model::Model &model, model::ChartId chart,
                     const char *a, const char *b);
+
+/// "P.Q": the places that lead from the root of `chart` to instance `i`, for messages.
+std::string instance_path(const model::Model &model, model::ChartId chart, const std::vector<Instance> &instances,
+                          std::size_t i);
 
 /// A constant as `set` formats it (validate_tests.cc), back to a value of type `t`.
 interp::Value parse_value(const std::string &text, model::Type t);

@@ -13,6 +13,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <climits>
+#include <set>
 
 namespace gfec::validation {
 
@@ -286,9 +288,65 @@ model::ChartId resolve_chart(Context &cx, const ast::Name &name, std::set<std::s
   return {};
 }
 
+/// Calls `f` with chart `root` and every chart its places run, each once.
+template <typename F> void for_each_chart_run(const model::Model &model, model::ChartId root, F f) {
+  IdMap<model::ChartId, bool> seen(model.charts.size());
+  std::vector<model::ChartId> todo{root};
+  while (!todo.empty()) {
+    const model::ChartId c = todo.back();
+    todo.pop_back();
+    if (!model.charts.contains(c) || seen[c]) continue;
+    seen[c] = true;
+    f(model.charts[c]);
+    for (const auto &p : model.charts[c].places)
+      if (p.runs) todo.push_back(p.runs);
+  }
+}
+
+/// `of CHART agents N` and the agents of `agent K { ... }`: only for a team machine, within its size.
+bool check_agents(Context &cx, const ast::Test &t, const model::Chart &chart, scenario::Test &test) {
+  bool ok = true;
+  test.agents = chart.team > 0 ? chart.team : 1;
+  if (t.agents != 0) {
+    if (chart.team <= 0) {
+      cx.diag.error(t.agents_range, ErrorKind::Test,
+                    fmt::format("'agents' needs a team machine, but '{}' declares no 'team N'", chart.name));
+      ok = false;
+    } else if (t.agents < 1 || t.agents > chart.team) {
+      cx.diag.error(t.agents_range, ErrorKind::Test,
+                    fmt::format("'{}' is a team of at most {} agents: 'agents' must be 1 to {}", chart.name, chart.team,
+                                chart.team));
+      ok = false;
+    } else {
+      test.agents = static_cast<int>(t.agents);
+    }
+  }
+  std::set<std::uint32_t> reported;  // one error per `agent K` block
+  for (const ast::TestStep &in : t.steps) {
+    if (in.agent < 0 || !reported.insert(in.agent_range.begin).second) continue;
+    if (chart.team <= 0) {
+      cx.diag.error(in.agent_range, ErrorKind::Test,
+                    fmt::format("'agent' steps need a team machine, but '{}' declares no 'team N'", chart.name));
+      ok = false;
+    } else if (in.agent >= test.agents) {
+      cx.diag.error(in.agent_range, ErrorKind::Test,
+                    fmt::format("the test runs agents 0 to {}: there is no agent {}", test.agents - 1, in.agent));
+      ok = false;
+    }
+  }
+  for (const ast::TestStep &in : t.steps)
+    if (in.agent >= 0 && in.kind == ast::TestStep::Kind::Tick) {
+      cx.diag.error(in.range, ErrorKind::Test, "a tick runs every agent: write 'tick' outside the 'agent' block")
+          .note(in.agent_range, "the agent's block begins here");
+      ok = false;
+    }
+  return ok;
+}
+
 /// `set F = CONST;`: F is a parameterless sensing function of the chart's interface.
-bool lower_set(Context &cx, TestLowering &lowering, const model::Chart &chart, const ast::TestStep &in,
+bool lower_set(Context &cx, TestLowering &lowering, model::ChartId chart_id, const ast::TestStep &in,
                scenario::Step &out) {
+  const model::Chart &chart = cx.model.charts[chart_id];
   model::FunctionId f = lowering.function(in.function);
   if (!f) return false;
   const model::Function &fn = cx.model.functions[f];
@@ -300,14 +358,18 @@ bool lower_set(Context &cx, TestLowering &lowering, const model::Chart &chart, c
         .note(fn.range, fmt::format("'{}' declared here", fn.name));
     return false;
   }
+  // The chart's interfaces and its sub-charts': a sensing function only a sub-chart calls is
+  // still an input of the engine under test.
   bool ours = false;
-  for (model::FunctionId used : chart.functions)
-    ours = ours || cx.model.functions[used].interface_name == fn.interface_name;
+  for_each_chart_run(cx.model, chart_id, [&](const model::Chart &c) {
+    for (model::FunctionId used : c.functions)
+      ours = ours || cx.model.functions[used].interface_name == fn.interface_name;
+  });
   if (!ours) {
     cx.diag
         .error(in.function.range, ErrorKind::Test,
-               fmt::format("'{}' belongs to interface '{}', which chart '{}' does not use", fn.name, fn.interface_name,
-                           chart.name))
+               fmt::format("'{}' belongs to interface '{}', which chart '{}' and its sub-charts do not use", fn.name,
+                           fn.interface_name, chart.name))
         .note(fn.range, fmt::format("'{}' declared here", fn.name));
     return false;
   }
@@ -332,10 +394,11 @@ void validate_tests(Context &cx, scenario::Suite &out) {
     test.name = t.name;
     test.chart = chart;
     test.range = t.range;
-    bool ok = true;
+    bool ok = check_agents(cx, t, scope.out, test);
     for (const ast::TestStep &in : t.steps) {
       scenario::Step step;
       step.range = in.range;
+      step.agent = in.agent >= 0 && in.agent <= INT_MAX ? static_cast<int>(in.agent) : -1;
       switch (in.kind) {
       case ast::TestStep::Kind::Tick:
         step.kind = scenario::Step::Kind::Tick;
@@ -349,7 +412,7 @@ void validate_tests(Context &cx, scenario::Suite &out) {
         break;
       case ast::TestStep::Kind::Set:
         step.kind = scenario::Step::Kind::Set;
-        ok = lower_set(cx, lowering, scope.out, in, step) && ok;
+        ok = lower_set(cx, lowering, chart, in, step) && ok;
         break;
       case ast::TestStep::Kind::Expect: {
         step.kind = scenario::Step::Kind::Expect;

@@ -9,7 +9,8 @@ namespace gfec::text {
 
 /// `&`, `<`, `>` and `"` as entities, so the text is safe in element content and in
 /// double-quoted attributes; control characters other than tab, newline and carriage return
-/// (which XML 1.0 cannot hold at all) become spaces.
+/// (which XML 1.0 cannot hold at all) become spaces, and bytes that are not well-formed UTF-8
+/// of a character XML may hold (U+FFFE and U+FFFF are not) become U+FFFD.
 std::string xml_escape(const std::string &text);
 
 }  // namespace gfec::text

@@ -51,7 +51,7 @@ function scopeOf(tokens, word, line) {
   return t.scopes[t.scopes.length - 1];
 }
 
-const samples = fs.readdirSync(SAMPLES).filter((f) => /\.(sfc|fsm|plan|toolbox|iface)$/.test(f));
+const samples = fs.readdirSync(SAMPLES).filter((f) => /\.(sfc|fsm|plan|toolbox|iface|test)$/.test(f));
 
 test('the grammar claims every sample file extension', () => {
   const raw = JSON.parse(fs.readFileSync(GRAMMAR, 'utf8'));
@@ -172,6 +172,22 @@ test('a test block: its steps and operands are keywords there, plain names elsew
   // The block ends at its brace: what follows is ordinary code again.
   const after = tokenize('test "t" of C { tick; }\nsfc D { initial place expect; }\n');
   assert.equal(scopeOf(after, 'expect', 2), 'entity.name.section.place.gfec');
+});
+
+test('a test of a team machine: agents N, agent K { ... } blocks, and the test ends at its own brace', () => {
+  const text = fs.readFileSync(path.join(SAMPLES, 'fetch_team.test'), 'utf8');
+  const tokens = tokenize(text + '\nsfc D { initial place expect; }\n');
+  const line = text.split('\n').findIndex((l) => l.startsWith('test ')) + 1;
+  assert.equal(scopeOf(tokens, 'agents', line), 'keyword.other.agents.gfec');
+  assert.equal(scopeOf(tokens, '3', line), 'constant.numeric.integer.gfec');
+  const block = text.split('\n').findIndex((l) => l.trim().startsWith('agent 1 {')) + 1;
+  assert.equal(scopeOf(tokens, 'agent', block), 'keyword.control.test.gfec');
+  assert.equal(scopeOf(tokens, 'expect', block), 'keyword.control.test.gfec');
+  assert.equal(scopeOf(tokens, 'Go', block), 'variable.other.gfec');
+  // The agent block's brace does not end the test: the steps after it are still steps.
+  assert.equal(scopeOf(tokens, 'tick', block + 1), 'keyword.control.test.gfec');
+  const last = text.split('\n').length + 1;
+  assert.equal(scopeOf(tokens, 'expect', last), 'entity.name.section.place.gfec');
 });
 
 test('if and else, team machines: team N, team(S) and agent()', () => {

@@ -209,6 +209,84 @@ test('--junit writes one testcase per test, failures with their message', () => 
   assert.match(failure.text, /note: 'active\(LeftStop\)' is false/);
 });
 
+test('--junit: a file that does not compile gives a failed testcase per test it declares; the totals are the summary\'s', () => {
+  const dir = scratch({
+    'broken.test': 'import "line_follower.sfc";\ntest "a" of LineFollower { tick; }\n' +
+      'test "b" of LineFollower { expect active(LeftStp); }\ntest "c" of LineFollower { tick; }\n',
+  });
+  lineFollower(dir);
+  const r = gfec(['test', '--junit', 'out.xml', 'broken.test', 'missing.test'], dir);
+  assert.equal(r.code, 2);  // missing.test cannot be read
+  assert.equal(lastLine(r.stdout), '0 passed, 4 failed');
+  const suites = parseXml(fs.readFileSync(path.join(dir, 'out.xml'), 'utf8'));
+  assert.equal(suites.attrs.tests, '4');
+  assert.equal(suites.attrs.failures, '4');
+  const cases = suites.children.flatMap((s) => s.children.filter((c) => c.name === 'testcase'));
+  assert.deepEqual(cases.map((c) => c.attrs.name), ['a', 'b', 'c', 'missing.test']);
+  assert.match(cases[1].children[0].attrs.message, /unknown place 'LeftStp'/);
+});
+
+test('--junit: names that are not UTF-8, or characters XML cannot hold, still give well-formed XML', () => {
+  const bad = Buffer.concat([Buffer.from('import "line_follower.sfc";\ntest "bad \xff\xfe byte '),
+    Buffer.from([0xff, 0xc3]), Buffer.from(' and \uFFFE" of LineFollower { tick; }\n')]);
+  const dir = scratch();
+  fs.writeFileSync(path.join(dir, 'u8.test'), bad);
+  lineFollower(dir);
+  const r = gfec(['test', '--junit', 'out.xml', 'u8.test'], dir);
+  assert.equal(r.code, 0, r.stderr);
+  const xml = fs.readFileSync(path.join(dir, 'out.xml'));
+  const text = new TextDecoder('utf-8', { fatal: true }).decode(xml);  // throws on malformed UTF-8
+  assert.ok(!text.includes('\uFFFE'));
+  const testcase = parseXml(text).children[0].children[0];
+  assert.equal(testcase.attrs.name, 'bad \u00ff\u00fe byte \uFFFD\uFFFD and \uFFFD');
+});
+
+test('--junit never writes over the test file or a file it imports (exit 2, nothing written)', () => {
+  const dir = scratch({ 'lf.test': EXAMPLE });
+  lineFollower(dir);
+  const before = fs.readFileSync(path.join(dir, 'line_follower.sfc'), 'utf8');
+  for (const target of ['line_follower.sfc', 'linebot.iface', 'lf.test']) {
+    const r = gfec(['test', '--junit', target, 'lf.test'], dir);
+    assert.equal(r.code, 2, target);
+    assert.match(r.stderr, /gfec: error: /);
+  }
+  assert.equal(fs.readFileSync(path.join(dir, 'line_follower.sfc'), 'utf8'), before);
+  assert.equal(gfec(['test', 'lf.test'], dir).code, 0);
+});
+
+test('called F(ARGS) compares values as C does: -0.0 is 0', () => {
+  const dir = scratch({
+    'm.iface': 'interface M { void Move(int side, float speed); }\n',
+    'z.sfc': 'import "m.iface";\nsfc Z {\n  var float speed = 0;\n  initial place A { Move(1, -speed * 2.0); }\n}\n',
+    'z.test': 'import "z.sfc";\ntest "zero" of Z {\n  tick;\n  expect called Move(1, 0) && called Move(1, -0.0);\n' +
+      '  expect !called Move(1, 0.5);\n}\n',
+  });
+  const r = gfec(['test', 'z.test'], dir);
+  assert.equal(r.code, 0, r.stderr);
+  assert.equal(r.stdout, '1 passed, 0 failed\n');
+});
+
+test('sub-charts and team machines: the samples\' tests pass, and a wrong expectation about either fails located', () => {
+  const ok = gfec(['test', path.join(SAMPLES, 'mission.test'), path.join(SAMPLES, 'fetch_team.test')], SAMPLES);
+  assert.equal(ok.code, 0, ok.stderr);
+  assert.equal(ok.stdout, '5 passed, 0 failed\n');
+  const dir = scratch({
+    'm.test': 'import "mission.fsm";\ntest "m" of Mission {\n  tick;\n  expect active(Patrol.LeftStop);\n}\n',
+    't.test': 'import "fetch_team.fsm";\ntest "t" of Fetch agents 2 {\n  agent 0 { set Arrived = true; }\n  tick 2;\n' +
+      '  agent 1 { expect state(Go) && team(Grab) == 1; }\n}\n',
+  });
+  for (const f of ['mission.fsm', 'line_follower.sfc', 'cleanup.fsm', 'linebot.iface', 'cleanbot.iface',
+    'fetch_team.fsm', 'fetchbot.iface'])
+    fs.copyFileSync(path.join(SAMPLES, f), path.join(dir, f));
+  const bad = gfec(['test', 'm.test', 't.test'], dir);
+  assert.equal(bad.code, 1);
+  assert.equal(lastLine(bad.stdout), '0 passed, 2 failed');
+  assert.match(bad.stderr, /^m\.test:4:3: error: expectation failed: active\(Patrol\.LeftStop\) \[expectation\]$/m);
+  assert.match(bad.stderr, /^t\.test:5:13: error: expectation failed: state\(Go\) && team\(Grab\) == 1 \[expectation\]$/m);
+  assert.match(bad.stderr, /note: 'state\(Go\)' is false \(the current state is 'Yield'\)/);
+  assert.match(bad.stderr, /note: in test "t", agent 1, after tick 2/);
+});
+
 test('-fdiagnostics-format=json and sarif-stderr carry the failed expectations', () => {
   const dir = scratch({ 'two.test': TWO });
   lineFollower(dir);

@@ -169,7 +169,8 @@ TEST_CASE("set needs a parameterless sensing function of the chart's interface",
                    0) == 0);
   CHECK(Checked("test \"t\" of Line { set Door = true; }\n")
             .test_errors()
-            .rfind("t.test:2:24: error: 'Door' belongs to interface 'Other', which chart 'Line' does not use [test]\n",
+            .rfind("t.test:2:24: error: 'Door' belongs to interface 'Other', which chart 'Line' and its sub-charts do "
+                   "not use [test]\n",
                    0) == 0);
   CHECK(Checked("test \"t\" of Line { set Black = 1; }\n").test_errors() ==
         "t.test:2:32: error: the value of 'Black' must be 'bool', not 'int' [type-mismatch]\n"
@@ -248,14 +249,14 @@ TEST_CASE("a test runs on the reference interpreter and its expectations are eva
   REQUIRE(run.error == "");
   REQUIRE(run.ticks.size() == 3);
   // Tick 2: the transition fires (the sensing call), then B's action runs; B -> A was not open.
-  CHECK(run.ticks[2].calls.size() == 2);
-  CHECK(run.ticks[2].calls[0].text == "Black()");
-  CHECK(run.ticks[2].calls[1].text == "Motor(1, 0.5)");
-  auto first = scenario::evaluate(t.steps[1].expect, run.ticks[1], c.model, t.chart);
+  CHECK(run.ticks[2][0].calls.size() == 2);
+  CHECK(run.ticks[2][0].calls[0].text == "Black()");
+  CHECK(run.ticks[2][0].calls[1].text == "Motor(1, 0.5)");
+  auto first = scenario::evaluate(t.steps[1].expect, run.ticks[1][0], c.model, t.chart);
   CHECK(first.holds);
-  auto second = scenario::evaluate(t.steps[4].expect, run.ticks[2], c.model, t.chart);
+  auto second = scenario::evaluate(t.steps[4].expect, run.ticks[2][0], c.model, t.chart);
   CHECK(!second.holds);  // calls Go == 1 fails: A's action no longer runs
-  auto third = scenario::evaluate(t.steps[5].expect, run.ticks[2], c.model, t.chart);
+  auto third = scenario::evaluate(t.steps[5].expect, run.ticks[2][0], c.model, t.chart);
   CHECK(!third.holds);
   REQUIRE(third.operands.size() == 1);
   CHECK(third.operands[0].value == "false");
@@ -265,14 +266,14 @@ TEST_CASE("two runs that differ are told apart by their first differing call", "
   Checked c("test \"t\" of Line { tick; }\n");
   REQUIRE(c.test_errors() == "");
   scenario::Run run = scenario::run_reference(c.model, c.suite.tests.at(0));
-  scenario::Snapshot other = run.ticks[1];
+  scenario::Snapshot other = run.ticks[1][0];
   const model::ChartId line(0);
-  CHECK(scenario::compare(run.ticks[1], other, c.model, line, "reference", "engine") == "");
+  CHECK(scenario::compare(run.ticks[1][0], other, c.model, line, "reference", "engine") == "");
   other.calls.push_back(other.calls.back());
-  CHECK(scenario::compare(run.ticks[1], other, c.model, line, "reference", "engine") ==
+  CHECK(scenario::compare(run.ticks[1][0], other, c.model, line, "reference", "engine") ==
         "call 3: reference no call, engine 'Go()'");
-  other = run.ticks[1];
+  other = run.ticks[1][0];
   other.activation[model::PlaceId(1)] = 1;
-  CHECK(scenario::compare(run.ticks[1], other, c.model, line, "reference", "engine") ==
+  CHECK(scenario::compare(run.ticks[1][0], other, c.model, line, "reference", "engine") ==
         "activation of 'B': reference 0, engine 1");
 }
