@@ -328,8 +328,8 @@ struct Test {
   std::string name;
   SourceRange name_range;
   Name chart;
-  /// `of CHART agents N`: how many agents of a team machine run (0: not written).
-  long long agents = 0;
+  /// `of CHART agents N`: how many agents of a team machine run (-1: not written).
+  long long agents = -1;
   SourceRange agents_range;
   std::vector<TestStep> steps;
   SourceRange range;

@@ -940,7 +940,9 @@ Test Parser::test_decl() {
     std::uint32_t agents_begin = here();
     advance();
     Token n = expect(Tok::Int, "after 'agents' (how many agents of the team machine run, e.g. 'agents 3')");
-    t.agents = count_of(n);  // the validator checks it against the team size
+    // The validator checks it against the team size; a number beyond long long is too large.
+    const long long k = count_of(n);
+    t.agents = k < 0 ? LLONG_MAX : k;
     t.agents_range = from(agents_begin);
   }
   in_test_ = true;

@@ -307,7 +307,7 @@ template <typename F> void for_each_chart_run(const model::Model &model, model::
 bool check_agents(Context &cx, const ast::Test &t, const model::Chart &chart, scenario::Test &test) {
   bool ok = true;
   test.agents = chart.team > 0 ? chart.team : 1;
-  if (t.agents != 0) {
+  if (t.agents != -1) {
     if (chart.team <= 0) {
       cx.diag.error(t.agents_range, ErrorKind::Test,
                     fmt::format("'agents' needs a team machine, but '{}' declares no 'team N'", chart.name));
