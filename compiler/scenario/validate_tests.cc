@@ -82,6 +82,14 @@ public:
           .note(sym->range, fmt::format("'{}' declared here", name.text));
       return {};
     }
+    if (const Symbol *local = chart_.names.find(name.text)) {  // a variable, place...: not what `set` sets
+      cx_.diag
+          .error(
+              name.range, ErrorKind::TypeMismatch,
+              fmt::format("'{}' is {} of '{}', not a function", name.text, with_article(local->kind), chart_.out.name))
+          .note(local->range, fmt::format("'{}' declared here", name.text));
+      return {};
+    }
     report_unknown(cx_.diag, chart_.unknown, name, "function", cx_.c_names.of({Sym::Function}));
     return {};
   }

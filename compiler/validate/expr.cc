@@ -511,6 +511,22 @@ std::optional<model::Expr> lower_expr(const ast::Expr *e, ExprScope &s) {
   return std::nullopt;
 }
 
+/// A call of an unknown name that is a built-in misspelt (`acitve(P)`): reported as such, with
+/// the fix, and its arguments left unread (a place is no value: that error would be noise).
+bool misspelt_builtin(const ast::Name &name, ExprScope &s) {
+  static constexpr std::string_view kBuiltins[] = {"elapsed", "active", "succeeded", "failed", "team", "agent"};
+  if (name.text.empty() || name.text.size() > kMaxSuggestedLength || s.cx.c_names.find(name.text)) return false;
+  if (closest(name.text, s.cx.c_names.of({Sym::Function}))) return false;  // an interface function is closer
+  for (std::string_view builtin : kBuiltins) {
+    if (edit_distance(name.text, builtin) > std::max<std::size_t>(1, (name.text.size() + 1) / 3)) continue;
+    if (!seen(s).insert(fmt::format("function {}", name.text)).second) return true;
+    auto &d = s.cx.diag.error(name.range, ErrorKind::UnknownName, fmt::format("unknown function '{}'", name.text));
+    d.fix(d.range, builtin).note(fmt::format("did you mean the built-in '{}'?", builtin));
+    return true;
+  }
+  return false;
+}
+
 std::optional<model::Expr> lower_call(const ast::Expr &e, ExprScope &s, bool statement) {
   const ast::Name &name = e.name;
   if (name.text == "elapsed") return lower_elapsed(e, s, statement);
@@ -518,6 +534,7 @@ std::optional<model::Expr> lower_call(const ast::Expr &e, ExprScope &s, bool sta
   if (name.text == "succeeded" || name.text == "failed") return lower_outcome(e, s, statement);
   if (name.text == "team") return lower_team(e, s, statement);
   if (name.text == "agent") return lower_agent(e, s, statement);
+  if (misspelt_builtin(name, s)) return std::nullopt;
   std::vector<std::optional<model::Expr>> args;
   for (const auto &a : e.args) args.push_back(lower_expr(a, s));
   if (name.text.empty()) return std::nullopt;
