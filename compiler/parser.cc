@@ -1015,6 +1015,9 @@ ExprPtr Parser::test_operand() {
     e->name = {word.text, word.range};
     Name f = name(word.text == "called" ? "(the function) after 'called'" : "(the function) after 'calls'");
     auto target = make(Expr::Kind::Name, f.range);
+    if (word.text == "calls" && at(Tok::LParen))
+      fail("'calls F' counts every call of F, whatever its arguments; 'called F(ARGS)' asks for one with "
+           "these arguments");
     if (word.text == "called" && at(Tok::LParen)) {
       target->kind = Expr::Kind::Call;
       target->args = arguments();

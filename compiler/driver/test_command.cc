@@ -14,6 +14,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <memory>
@@ -196,8 +197,13 @@ private:
       auto &d = out.diag.error(s.range, ErrorKind::Expectation,
                                fmt::format("expectation failed: {}", text_of(file.sources, s.expect.range)));
       if (!bad.verdict->error.empty()) d.note(fmt::format("it has no defined value: {}", bad.verdict->error));
-      for (const scenario::Operand &op : bad.verdict->operands)
-        d.note(fmt::format("'{}' is {}", text_of(file.sources, op.range), op.value));
+      std::vector<std::string> said;  // an operand written twice is told once
+      for (const scenario::Operand &op : bad.verdict->operands) {
+        std::string note = fmt::format("'{}' is {}", text_of(file.sources, op.range), op.value);
+        if (std::find(said.begin(), said.end(), note) != said.end()) continue;
+        d.note(note);
+        said.push_back(std::move(note));
+      }
       if (reads_calls(s.expect)) {
         std::string calls;
         for (const scenario::Call &c : bad_run.ticks[tick][agent].calls) calls += (calls.empty() ? "" : ", ") + c.text;
