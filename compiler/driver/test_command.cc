@@ -57,9 +57,15 @@ struct TestFile {
   model::Model &model = c.model;
   scenario::Suite suite;
   bool unreadable = false;
-  /// What the file counts for when it cannot run: each `test` block written in it, or the
-  /// file itself when it has none (or cannot be read).
-  std::size_t broken_count() const { return std::max<std::size_t>(suite.written.size(), 1); }
+  /// What the file stands for in the results when it cannot run: each `test` block written in
+  /// it that --filter selects, or the file itself when it declares none.
+  std::vector<std::string> broken_tests(const std::string &filter) const {
+    if (suite.written.empty()) return {path};
+    std::vector<std::string> out;
+    for (const std::string &name : suite.written)
+      if (filter.empty() || name.find(filter) != std::string::npos) out.push_back(name);
+    return out;
+  }
 };
 
 /// What one test gave.
@@ -232,7 +238,7 @@ void load(TestFile &f) {
 /// compile are failed testcases (the file's errors in each), and a file without tests that
 /// cannot run is one failed testcase named after the file: the totals are the summary line's.
 std::string junit(const std::vector<std::unique_ptr<TestFile>> &files,
-                  const std::vector<std::unique_ptr<Outcome>> &outcomes) {
+                  const std::vector<std::unique_ptr<Outcome>> &outcomes, const std::string &filter) {
   std::size_t total = 0, failures = 0;
   std::string suites;
   for (const auto &f : files) {
@@ -266,8 +272,7 @@ std::string junit(const std::vector<std::unique_ptr<TestFile>> &files,
                            "message=\"cannot read '{0}'\" type=\"io\"/>\n    </testcase>\n",
                            text::xml_escape(f->path));
     } else if (f->diag.has_errors()) {
-      if (f->suite.written.empty()) failure(f->path, f->diag, f->sources, 0);
-      for (const std::string &name : f->suite.written) failure(name, f->diag, f->sources, 0);
+      for (const std::string &name : f->broken_tests(filter)) failure(name, f->diag, f->sources, 0);
     }
     for (const auto &o : outcomes)
       if (o->file == f.get()) failure(o->test->name, o->diag, f->sources, o->seconds);
@@ -296,7 +301,7 @@ int test_with(const TestOptions &o, std::ostream &out, std::ostream &err) {
       io_error = true;
       broken += 1;
     } else if (f->diag.has_errors()) {
-      broken += f->broken_count();
+      broken += f->broken_tests(o.filter).size();
     } else {
       for (const auto &t : f->suite.tests) {
         if (!o.filter.empty() && t.name.find(o.filter) == std::string::npos) continue;
@@ -346,7 +351,7 @@ int test_with(const TestOptions &o, std::ostream &out, std::ostream &err) {
     std::vector<std::string> inputs = o.files;
     for (const auto &f : files)
       for (FileId i = 0; i < f->sources.size(); ++i) inputs.push_back(f->sources.file(i).path());
-    std::string failure = write_atomically({{o.junit, junit(files, outcomes)}}, inputs);
+    std::string failure = write_atomically({{o.junit, junit(files, outcomes, o.filter)}}, inputs);
     if (!failure.empty()) {
       report->tool_error(o.junit, failure, false);
       io_error = true;

@@ -224,6 +224,11 @@ test('--junit: a file that does not compile gives a failed testcase per test it 
   const cases = suites.children.flatMap((s) => s.children.filter((c) => c.name === 'testcase'));
   assert.deepEqual(cases.map((c) => c.attrs.name), ['a', 'b', 'c', 'missing.test']);
   assert.match(cases[1].children[0].attrs.message, /unknown place 'LeftStp'/);
+  // --filter selects among a broken file's tests too.
+  const only = gfec(['test', '--filter', 'b', '--junit', 'b.xml', 'broken.test'], dir);
+  assert.equal(only.code, 1);
+  assert.equal(lastLine(only.stdout), '0 passed, 1 failed');
+  assert.equal(parseXml(fs.readFileSync(path.join(dir, 'b.xml'), 'utf8')).attrs.tests, '1');
 });
 
 test('--junit: names that are not UTF-8, or characters XML cannot hold, still give well-formed XML', () => {
