@@ -22,12 +22,13 @@ std::string place_node(const model::Model &m, const model::Chart &c, std::size_t
   if (p.terminal != model::Terminal::None) {
     bool ok = p.terminal == model::Terminal::Success;
     label += ok ? "\n(success)" : "\n(failure)";
-    if (p.post) label += "\npost " + source_text(m, p.post->range);
+    if (p.post) label += "\npost " + expr_text(m, m.charts.id_of(c), *p.post);
     attrs += fmt::format(", style=\"filled,bold,rounded\", fillcolor=\"{}\"", ok ? "#d5f5d5" : "#f8d4d4");
   }
-  std::string actions = block_text(m, p.action);
-  if (p.entry) actions = "entry: " + block_text(m, *p.entry) + (actions.empty() ? "" : "\n" + actions);
-  if (p.exit) actions += (actions.empty() ? "" : "\n") + std::string("exit: ") + block_text(m, *p.exit);
+  model::ChartId chart = m.charts.id_of(c);
+  std::string actions = block_text(m, chart, p.action);
+  if (p.entry) actions = "entry: " + block_text(m, chart, *p.entry) + (actions.empty() ? "" : "\n" + actions);
+  if (p.exit) actions += (actions.empty() ? "" : "\n") + std::string("exit: ") + block_text(m, chart, *p.exit);
   if (!actions.empty()) label += "\n" + std::string(12, '-') + "\n" + actions;
   return fmt::format("  {}p{} [{}, label={}];\n", id, i, attrs, quote(label));
 }
@@ -63,7 +64,8 @@ std::string chart_body(const model::Model &m, const model::Chart &c, const std::
   out += "  // transitions: a bar each, its label beside it inside the same node (see transition_node)\n";
   for (std::size_t i = 0; i < c.transitions.size(); ++i) {
     const model::Transition &t = c.transitions[i];
-    std::string label = fmt::format("{}: {}", t.name, t.condition ? source_text(m, t.condition->range) : "true");
+    std::string label =
+        fmt::format("{}: {}", t.name, t.condition ? expr_text(m, m.charts.id_of(c), *t.condition) : "true");
     // An fsm tries the transitions leaving its state in declaration order and takes the first
     // whose condition holds: the picture numbers them so, 1 first, per state.
     if (fsm && !t.inputs.empty()) {

@@ -1,5 +1,8 @@
 #include "dot_text.h"
 
+#include "chart_expr.h"
+#include "code_writer.h"
+
 #include <fmt/format.h>
 
 namespace gfec::dot {
@@ -17,9 +20,34 @@ std::string quote(const std::string &text) {
   return out + "\"";
 }
 
-std::string block_text(const model::Model &m, const std::vector<model::Stmt> &block) {
+bool in_chart_text(const model::Model &m, const SourceRange &range) {
+  if (!m.sources().knows(range.file)) return true;  // a model made by hand: source_text gives ""
+  // Chart text starts with a comment, a keyword or `%{`, never with '{' as every ALICA file does.
+  const std::string &text = m.sources().file(range.file).text();
+  std::size_t first = text.find_first_not_of(" \t\r\n\xef\xbb\xbf");
+  return first == std::string::npos || text[first] != '{';
+}
+
+std::string expr_text(const model::Model &m, model::ChartId chart, const model::Expr &e) {
+  return in_chart_text(m, e.range) ? source_text(m, e.range) : chart_text::expr(m, chart, e);
+}
+
+/// A statement as --emit=chart writes it, its lines joined by line breaks.
+std::string statement_text(const model::Model &m, model::ChartId chart, const model::Stmt &s) {
+  CodeWriter w("", false);
+  chart_text::statements(w, m, chart, {s});
+  std::string out = w.take();
+  while (!out.empty() && out.back() == '\n') out.pop_back();
+  return out;
+}
+
+std::string block_text(const model::Model &m, model::ChartId chart, const std::vector<model::Stmt> &block) {
   std::string out;
   for (const auto &s : block) {
+    if (!in_chart_text(m, s.range)) {
+      out += (out.empty() ? "" : "\n") + statement_text(m, chart, s);
+      continue;
+    }
     std::string line = s.kind == model::Stmt::Kind::Verbatim ? "%{ ... %}" : source_text(m, s.range);
     // A statement's range may or may not take in its ';': show it once either way.
     // An `if` ends with its block's brace.

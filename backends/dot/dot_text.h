@@ -10,8 +10,14 @@ namespace gfec::dot {
 /// `text` as a DOT double-quoted string, quotes included. "\n" inside stays a line break.
 std::string quote(const std::string &text);
 using model::source_text;  ///< the chart text of a range, whitespace runs folded (model.h)
-/// The text of a statement block, one statement per line.
-std::string block_text(const model::Model &m, const std::vector<model::Stmt> &block);
+/// Whether `range` points into chart text, which a label shows as written; the ranges of an ALICA
+/// plan point into its JSON (a condition's range is the whole JSON object).
+bool in_chart_text(const model::Model &m, const SourceRange &range);
+/// An expression of chart `chart` for a label: as written in chart text, else (ALICA) as
+/// --emit=chart spells it (`FromPickUpToMove()`).
+std::string expr_text(const model::Model &m, model::ChartId chart, const model::Expr &e);
+/// The text of a statement block of chart `chart`, one statement per line.
+std::string block_text(const model::Model &m, model::ChartId chart, const std::vector<model::Stmt> &block);
 /// The common graph, node and edge attributes, after `digraph NAME {`.
 std::string preamble(const std::string &title);
 /// A duration for a label: "10ms", "1.5s".

@@ -28,6 +28,10 @@ std::string normal(const fsys::path &p) {
 
 std::string extension_of(const std::string &path) { return fsys::path(path).extension().string(); }
 
+/// Plans nest at most this deep through the states that run them, as imports do (docs/security.md):
+/// reading a plan takes a few stack frames, so a chain of thousands would overflow the stack.
+constexpr int kMaxPlanDepth = 200;
+
 /// "Behaviours/GoTo.beh#1544160969061" -> file and id; "#42" names the same file.
 struct Ref {
   std::string file;
@@ -123,11 +127,17 @@ public:
       for (auto at = s.find("'' (id "); at != std::string::npos; at = s.find("'' (id ", at)) s.erase(at, 3);
       for (auto at = s.find(" (id )"); at != std::string::npos; at = s.find(" (id )", at)) s.erase(at, 6);
     };
+    // Names and references are the file's text: a control character in one must not reach the
+    // terminal, where "\n" would start a forged diagnostic and ESC a terminal command.
+    auto clean = [&](std::string &s) {
+      unquote(s);
+      s = printable(s);
+    };
     for (std::size_t i = first_diagnostic; i < diag_.all().size(); ++i) {
-      unquote(diag_.all()[i].message);
-      for (auto &n : diag_.all()[i].notes) unquote(n.message);
+      clean(diag_.all()[i].message);
+      for (auto &n : diag_.all()[i].notes) clean(n.message);
     }
-    for (auto &e : result_.elements) unquote(e.description);
+    for (auto &e : result_.elements) clean(e.description);
   }
 
 private:
@@ -150,12 +160,23 @@ private:
     main_->interfaces.emplace_back();
     main_->interfaces.back().name = {keep(identifier(label_of(root), "Plan") + "Functions"), range(*doc, root)};
     main_->interfaces.back().range = range(*doc, root);
-    plan_chart(*doc, root);
+    plan_chart(*doc, root, range(*doc, root));
     // An interface with no function would only add an empty block to the converted text.
     if (main_->interfaces.back().functions.empty()) main_->interfaces.clear();
   }
 
   SourceRange range(const Doc &d, const JsonValue &v) const { return {d.file, v.begin, v.end}; }
+
+  /// An id that is there but is no integer ("1.5", "1e3", "x"): a located error saying so, rather
+  /// than the id reading as missing further on (`what` names whose id it is). True if reported.
+  bool not_an_id(const Doc &doc, const JsonValue *v, const std::string &what) {
+    if (!v || v->is_null() || id_of(v)) return false;
+    std::string written =
+        sources_.file(doc.file).text().substr(v->begin, std::min<std::uint32_t>(v->end - v->begin, 40));
+    diag_.error(range(doc, *v), ErrorKind::AlicaFormat,
+                fmt::format("{} is {}, which is no id: ALICA's ids are integers", what, written));
+    return true;
+  }
 
   void element(const Doc &d, const JsonValue &v, std::string description) {
     result_.elements.push_back({range(d, v), std::move(description)});
@@ -384,6 +405,13 @@ private:
                   fmt::format("'{}' is no reference: ALICA writes them as \"File.ext#id\"", text));
       return {};
     }
+    // A NUL would cut the path short (the file opened would not be the one named), and a file
+    // name with a line break would put it into every diagnostic's location.
+    if (std::any_of(ref->file.begin(), ref->file.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20; })) {
+      diag_.error(at, ErrorKind::AlicaReference,
+                  fmt::format("'{}' names a file with a control character in its name", text));
+      return {};
+    }
     Doc *doc = ref->file.empty() ? &from : find_doc(ref->file, from, at, ref->id, need);
     if (!doc || !doc->root) return {};
     auto it = doc->by_id.find(ref->id);
@@ -497,16 +525,27 @@ private:
   // ------------------------------------------------------------ plans
 
   /// The chart a plan becomes (its fsm, or its sfc with several entry points); converted once.
-  std::string plan_chart(Doc &doc, const JsonValue &plan) {
+  /// `at` is the reference that runs it: a plan nested too deep is an error there, and "".
+  std::string plan_chart(Doc &doc, const JsonValue &plan, const SourceRange &at) {
     std::string id = id_of(plan.find("id")).value_or("");
     std::string key = doc.path + "#" + id;
     auto it = plan_charts_.find(key);
     if (it != plan_charts_.end()) return it->second;
+    if (plan_depth_ > kMaxPlanDepth) {
+      diag_.error(at, ErrorKind::AlicaReference,
+                  fmt::format("plans nested more than {} deep: plan '{}' (id {}) would run {} levels below the "
+                              "compiled plan",
+                              kMaxPlanDepth, label_of(plan), id, plan_depth_));
+      plan_charts_[key] = "";  // reported once, however many states run it
+      return "";
+    }
     std::string name = global_name(label_of(plan), id, "Plan");
     plan_charts_[key] = name;  // before the states: a plan that runs itself stops here
     const JsonValue *entries = plan.find("entryPoints");
     fsm_charts_[name] = !entries || !entries->is_array() || entries->items.size() <= 1;
+    ++plan_depth_;
     convert_plan(doc, plan, name);
+    --plan_depth_;
     return name;
   }
 
@@ -541,7 +580,7 @@ private:
     }
     Target first = resolve(activated.front().first, *t.doc, range(*t.doc, *activated.front().second));
     if (!first.object) return "";
-    std::string chart = plan_chart(*first.doc, *first.object);
+    std::string chart = plan_chart(*first.doc, *first.object, at);
     if (activated.size() > 1 && first_use) {
       std::string others;
       for (std::size_t i = 1; i < activated.size(); ++i)
@@ -611,7 +650,9 @@ private:
     for (std::size_t i = 0; i < states.size(); ++i) {
       auto id = id_of(states[i]->find("id"));
       if (!id) {
-        diag_.error(range(doc, *states[i]), ErrorKind::AlicaFormat, fmt::format("a state of {} has no id", what));
+        if (!not_an_id(doc, states[i]->find("id"),
+                       fmt::format("the id of state '{}' of {}", label_of(*states[i]), what)))
+          diag_.error(range(doc, *states[i]), ErrorKind::AlicaFormat, fmt::format("a state of {} has no id", what));
         continue;
       }
       if (!state_index.emplace(*id, i).second)
@@ -661,6 +702,9 @@ private:
       m.chart.name = {keep(chart_name), m.chart.range};
       auto start = state_of(ep.find("state"));
       if (!start) {
+        if (not_an_id(doc, ep.find("state"),
+                      fmt::format("the state of entry point '{}' (id {}) of {}", label, ep_id, what)))
+          continue;
         diag_.error(range(doc, ep), ErrorKind::AlicaReference,
                     fmt::format("entry point '{}' (id {}) starts in state {}, which {} does not have", label, ep_id,
                                 id_of(ep.find("state")).value_or("(none)"), what));
@@ -762,7 +806,15 @@ private:
     if (const JsonValue *wrappers = state.find("confAbstractPlanWrappers"); wrappers && wrappers->is_array())
       for (const auto &w : wrappers->items) {
         if (!w.is_object()) continue;
-        if (const JsonValue *ap = w.find("abstractPlan"); ap && ap->is_string()) add_string(*ap);
+        if (const JsonValue *ap = w.find("abstractPlan"); ap && ap->is_string()) {
+          // A wrapper exists to run one plan or behaviour: empty, it names nothing ALICA could load.
+          if (ap->text.find_first_not_of(' ') == std::string::npos)
+            diag_.error(range(doc, *ap), ErrorKind::AlicaReference,
+                        fmt::format("{} wraps an empty \"abstractPlan\": ALICA writes a reference as "
+                                    "\"File.ext#id\"",
+                                    what));
+          add_string(*ap);
+        }
         if (const JsonValue *km = w.find("keyMapping");
             km && km->is_object() && (non_empty(km->find("input")) || non_empty(km->find("output"))))
           ignored(doc, *km,
@@ -845,7 +897,7 @@ private:
         p.action.push_back(std::move(s));
         continue;
       }
-      std::string chart = ext == ".pml" ? plan_chart(*t.doc, *t.object) : plan_type_chart(t, at);
+      std::string chart = ext == ".pml" ? plan_chart(*t.doc, *t.object, at) : plan_type_chart(t, at);
       if (chart.empty()) continue;
       if (!p.runs()) p.extra().runs = ast::Name{keep(chart), at};
       else extra_plans.push_back(chart);
@@ -921,7 +973,7 @@ private:
     element(doc, t, "ALICA " + what);
     auto from = state_of(t.find("inState")), to = state_of(t.find("outState"));
     for (auto [end, key] : {std::pair{from, "inState"}, std::pair{to, "outState"}})
-      if (!end) {
+      if (!end && !not_an_id(doc, t.find(key), fmt::format("the {} of {}", key, what))) {
         diag_.error(range(doc, t), ErrorKind::AlicaReference,
                     fmt::format("{} names {} {}, which the plan has no state for", what, key,
                                 id_of(t.find(key)).value_or("(none)")));
@@ -985,7 +1037,8 @@ private:
   std::map<std::string, std::vector<std::string>> trees_;  ///< search_below: root -> files below it
   std::set<std::string> trees_listed_;
   std::set<const JsonValue *> plan_type_warned_;    ///< a plan type used by several states warns once
-  std::map<std::string, std::string> plan_charts_;  ///< "path#id" -> chart name
+  std::map<std::string, std::string> plan_charts_;  ///< "path#id" -> chart name ("": not converted)
+  int plan_depth_ = 0;                              ///< plans being converted, the compiled one first
   std::map<std::string, bool> fsm_charts_;          ///< chart name -> it is an fsm (one entry point)
   std::map<std::string, std::string> functions_;    ///< "path#id" of a behaviour or condition -> function
   NameScope globals_;                               ///< charts and functions share C's namespace

@@ -1,15 +1,18 @@
 #include "alica/identifiers.h"
 
+#include "naming/naming.h"
+
 #include <fmt/format.h>
 
 namespace gfec::alica {
 
 namespace {
 
-// gfec's keywords and built-ins (docs/language.md), then C's and C++'s, the names the C engine
-// defines itself and a few of the C headers it includes: a name from any of them would not
-// parse, or the validator would refuse it, or it would not compile once it reaches the
-// generated code. ALICA allows them all ("init" is a common state name).
+// gfec's keywords and built-ins (docs/language.md) and the names the C engine defines itself: a
+// name from them would not parse, or the validator would refuse it, or it would clash in the
+// generated code. The words C, C++ and the C headers reserve are the validator's
+// (naming::is_reserved), so that a name is renamed here exactly when the validator would refuse
+// it. ALICA allows them all ("init" is a common state name).
 // clang-format off
 const char *const kReserved[] = {
     "sfc", "fsm", "plan", "toolbox", "interface", "import", "var", "const", "initial", "place", "state",
@@ -17,25 +20,15 @@ const char *const kReserved[] = {
     "supervise", "events", "start", "terminate", "ignore", "config", "in", "out", "entry", "exit", "true",
     "false", "runs", "if", "else", "team", "test", "elapsed", "succeeded", "failed", "active", "agent",
     "tick", "set", "expect", "called", "calls", "status", "bool", "int", "float", "double", "void", "string",
-    "object", "auto", "break", "case", "char", "continue", "default", "do", "enum", "extern", "for", "goto",
-    "inline", "long", "register", "restrict", "return", "short", "signed", "sizeof", "static", "struct",
-    "switch", "typedef", "union", "unsigned", "volatile", "while", "main",
-    // C++ (the C++ back end) and C11
-    "alignas", "alignof", "and", "and_eq", "asm", "bitand", "bitor", "catch", "char16_t", "char32_t", "class",
-    "compl", "constexpr", "const_cast", "decltype", "delete", "dynamic_cast", "explicit", "export", "friend",
-    "mutable", "namespace", "new", "noexcept", "not", "not_eq", "nullptr", "operator", "or", "or_eq", "private",
-    "protected", "public", "reinterpret_cast", "static_assert", "static_cast", "template", "this",
-    "thread_local", "throw", "try", "typeid", "typename", "using", "virtual", "wchar_t", "xor", "xor_eq",
+    "object", "main",
     // the engine's own members and constants
     "init", "run", "activation", "PLACE_COUNT", "HOOKS", "CHECKS", "activated", "enabled", "TRANSITION_COUNT",
     "set_agent", "report", "TEAM_SIZE",
-    // the C headers' macros and types most likely to be a plan's word
-    "NULL", "EOF", "assert", "errno", "offsetof", "size_t", "ptrdiff_t", "memcpy", "memset", "memcmp",
-    "memmove", "strlen", "NDEBUG",
 };
 // clang-format on
 
 bool reserved(const std::string &s) {
+  if (naming::is_reserved(s)) return true;
   for (const char *r : kReserved)
     if (s == r) return true;
   return false;
@@ -66,10 +59,43 @@ std::string identifier(const std::string &text, const std::string &fallback) {
   }
   if (!meaningful(text) || out.empty() || out == "_") return fallback;
   if (out[0] >= '0' && out[0] <= '9') out = "N" + out;
-  // <stdint.h>'s intN_t / uintN_t family is reserved as well.
-  bool int_type = out.size() > 5 && out.compare(out.size() - 2, 2, "_t") == 0 &&
-                  (out.rfind("int", 0) == 0 || out.rfind("uint", 0) == 0);
-  if (reserved(out) || int_type) out += '_';
+  if (reserved(out)) out += '_';
+  // <float.h> reserves every FLT_, DBL_ and LDBL_ name in capitals, with any number of '_' after.
+  if (reserved(out)) out += 'x';
+  return out;
+}
+
+std::string printable(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (std::size_t i = 0; i < text.size();) {
+    auto c = static_cast<unsigned char>(text[i]);
+    // A UTF-8 sequence is kept whole, but for the C1 controls (U+0080 to U+009F: 0xc2 0x80 ...
+    // 0xc2 0x9f), which some terminals obey as ESC sequences.
+    std::size_t length = c >= 0xc2 && c < 0xe0 ? 2 : c >= 0xe0 && c < 0xf0 ? 3 : c >= 0xf0 && c < 0xf5 ? 4 : 1;
+    bool whole = length > 1 && i + length <= text.size();
+    for (std::size_t k = 1; whole && k < length; ++k) whole = (static_cast<unsigned char>(text[i + k]) & 0xc0) == 0x80;
+    if (whole && !(c == 0xc2 && static_cast<unsigned char>(text[i + 1]) < 0xa0)) {
+      out.append(text.substr(i, length));
+      i += length;
+      continue;
+    }
+    if (whole) {
+      out += fmt::format("\\u{:04x}", static_cast<unsigned char>(text[i + 1]));
+      i += 2;
+      continue;
+    }
+    switch (c) {
+    case '\n': out += "\\n"; break;
+    case '\r': out += "\\r"; break;
+    case '\t': out += "\\t"; break;
+    case '\0': out += "\\0"; break;
+    default:
+      if (c < 0x20 || c >= 0x7f) out += fmt::format("\\x{:02x}", c);
+      else out += static_cast<char>(c);
+    }
+    ++i;
+  }
   return out;
 }
 

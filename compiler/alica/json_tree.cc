@@ -250,11 +250,18 @@ private:
         unsigned cp = 0;
         if (!hex4(cp)) return false;
         if (cp >= 0xd800 && cp < 0xdc00 && s_.substr(pos_, 2) == "\\u") {
+          // Only a low surrogate completes the pair: any other escape after a high surrogate is
+          // a character of its own, read on the next turn ("\ud800\u0041" keeps its 'A').
+          std::size_t at = pos_;
           pos_ += 2;
           unsigned low = 0;
           if (!hex4(low)) return false;
           if (low >= 0xdc00 && low < 0xe000) cp = 0x10000 + ((cp - 0xd800) << 10) + (low - 0xdc00);
+          else pos_ = at;
         }
+        // A surrogate left unpaired is no character: U+FFFD, as a UTF-8 decoder writes for one,
+        // rather than bytes that are not UTF-8.
+        if (cp >= 0xd800 && cp < 0xe000) cp = 0xfffd;
         put_utf8(out, cp);
         break;
       }

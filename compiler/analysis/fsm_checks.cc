@@ -14,20 +14,33 @@ using model::PlaceId;
 
 bool terminal(const Chart &c, PlaceId s) { return c.places.at(s).terminal != model::Terminal::None; }
 
-/// States reachable from `from` (forward) or reaching it (backward), over transitions that can fire.
+/// The transitions leaving each state, in declaration order: the checks below look at a state's
+/// own transitions only, so that they stay linear in the chart (docs/performance.md).
+IdMap<PlaceId, std::vector<model::TransitionId>> leaving(const Chart &c) {
+  IdMap<PlaceId, std::vector<model::TransitionId>> out(c.places.size());
+  for (model::TransitionId t : c.transitions.ids())
+    if (!c.transitions[t].inputs.empty()) out[c.transitions[t].inputs[0]].push_back(t);
+  return out;
+}
+
+/// States reachable from `from` (forward) or reaching it (backward), over transitions that can
+/// fire. A worklist over the edges of those transitions: linear in the chart.
 IdMap<PlaceId, bool> closure(const Chart &c, std::vector<PlaceId> from, bool forward) {
+  IdMap<PlaceId, std::vector<PlaceId>> next(c.places.size());
+  for (const auto &t : c.transitions) {
+    if (t.inputs.empty() || t.outputs.empty() || firing_of(t) == Firing::Never) continue;
+    if (forward) next[t.inputs[0]].push_back(t.outputs[0]);
+    else next[t.outputs[0]].push_back(t.inputs[0]);
+  }
   IdMap<PlaceId, bool> seen(c.places.size(), false);
   for (PlaceId s : from) seen[s] = true;
   while (!from.empty()) {
     PlaceId s = from.back();
     from.pop_back();
-    for (const auto &t : c.transitions) {
-      if (t.inputs.empty() || t.outputs.empty() || firing_of(t) == Firing::Never) continue;
-      PlaceId a = forward ? t.inputs[0] : t.outputs[0], b = forward ? t.outputs[0] : t.inputs[0];
-      if (a == s && !seen[b]) {
-        seen[b] = true;
-        from.push_back(b);
-      }
+    for (PlaceId b : next[s]) {
+      if (seen[b]) continue;
+      seen[b] = true;
+      from.push_back(b);
     }
   }
   return seen;
@@ -60,13 +73,17 @@ void check_fsm(const model::Model & /*m*/, const Chart &c, Diagnostics &diag, st
     }
   }
   // Shadowing: from the same state, an earlier transition holds whenever a later one does.
+  // Only transitions that leave the same state compare, so each is compared with the earlier
+  // ones of its own state (found through `leaving`), in declaration order as before.
   std::size_t shadowed = 0;
-  for (std::size_t j = 0; j < c.transitions.size(); ++j) {
+  const IdMap<PlaceId, std::vector<model::TransitionId>> from = leaving(c);
+  for (model::TransitionId j : c.transitions.ids()) {
     const auto &later = c.transitions[j];
     if (later.inputs.empty() || firing_of(later) == Firing::Never) continue;
-    for (std::size_t i = 0; i < j; ++i) {
+    for (model::TransitionId i : from[later.inputs[0]]) {
+      if (i.index() >= j.index()) break;
       const auto &first = c.transitions[i];
-      if (first.inputs.empty() || first.inputs[0] != later.inputs[0] || firing_of(first) == Firing::Never) continue;
+      if (firing_of(first) == Firing::Never) continue;
       const model::Expr *a = later.condition ? &*later.condition : nullptr;
       const model::Expr *b = first.condition ? &*first.condition : nullptr;
       if (implies(a, b) != true) continue;

@@ -242,8 +242,10 @@ int run_with(const RunOptions &o, DiagnosticReport &report, std::ostream &out) {
   out << r.log.render(render) << std::flush;
   report.add(o.input, run_diag, c.sources);
   if (!o.html.empty()) {
-    std::string failed =
-        write_atomically({{o.html, viewer::page(viewer_data(model, chart, r, o))}}, {o.input, o.inputs_csv});
+    // Never over the chart, a file it imports or the inputs (docs/security.md).
+    std::vector<std::string> inputs{o.input, o.inputs_csv};
+    for (FileId i = 0; i < c.sources.size(); ++i) inputs.push_back(c.sources.file(i).path());
+    std::string failed = write_atomically({{o.html, viewer::page(viewer_data(model, chart, r, o))}}, inputs);
     if (!failed.empty()) {
       report.tool_error(o.html, failed, false);
       return kExitUsageOrIo;

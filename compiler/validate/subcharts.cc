@@ -1,11 +1,13 @@
 // Sub-charts (docs/language.md "Sub-charts"): which chart each `runs` names, charts that run
-// themselves, and the period a sub-chart takes from the charts that run it. Runs before any
-// chart body is lowered, because durations in a sub-chart are counted in its (inherited) period.
+// themselves, charts that embed too many instances, and the period a sub-chart takes from the
+// charts that run it. Runs before any chart body is lowered, because durations in a sub-chart
+// are counted in its (inherited) period.
 #include "validate/families.h"
 #include "validate/suggest.h"
 
 #include <fmt/format.h>
 
+#include <cstdint>
 #include <functional>
 
 namespace gfec::validation {
@@ -127,6 +129,74 @@ bool report_cycles(Context &cx, const std::vector<Edge> &edges) {
   return found;
 }
 
+/// How many sub-chart instances a compiled chart may embed, at every depth (docs/security.md,
+/// docs/hierarchy.md). Each instance is a struct and a copy of its chart's code in the engine.
+constexpr std::uint64_t kMaxInstances = 65536;
+/// Where the counts stop growing: a tree of 20 levels of 10 would overflow 64 bits.
+constexpr std::uint64_t kSaturated = std::uint64_t(1) << 62;
+
+std::uint64_t add_saturating(std::uint64_t a, std::uint64_t b) { return a >= kSaturated - b ? kSaturated : a + b; }
+
+std::string count_text(std::uint64_t n) {
+  return n >= kSaturated ? fmt::format("at least {}", kSaturated) : std::to_string(n);
+}
+
+/// A chart that runs a sub-chart embeds an instance of it for every place or state that runs
+/// it, and in each instance the instances it runs in turn: ten states that each run a chart of
+/// ten states that each run ... multiply. Counts them per chart (once each, children first:
+/// linear in the charts and the `runs`), and reports every chart of the main file that embeds
+/// more than kMaxInstances and that no chart of the main file runs: the roots a compile picks.
+/// The graph has no cycle here.
+void check_instances(Context &cx, const std::vector<Edge> &edges) {
+  std::size_t n = cx.charts.size();
+  IdMap<model::ChartId, std::vector<const Edge *>> out(n);
+  IdMap<model::ChartId, bool> run_in_main(n, false);
+  for (const Edge &e : edges) {
+    out[e.parent].push_back(&e);
+    if (cx.in_main_file(cx.charts[e.parent]->range)) run_in_main[e.child] = true;
+  }
+  // Post-order without recursion, so a long chain of charts costs no stack.
+  IdMap<model::ChartId, std::uint64_t> count(n, 0);
+  IdMap<model::ChartId, bool> done(n, false);
+  std::vector<std::pair<model::ChartId, std::size_t>> stack;  // a chart and its next edge
+  for (model::ChartId root : cx.charts.ids()) {
+    if (done[root]) continue;
+    stack.push_back({root, 0});
+    while (!stack.empty()) {
+      auto &[c, next] = stack.back();
+      if (next < out[c].size()) {
+        model::ChartId child = out[c][next++]->child;
+        if (!done[child]) stack.push_back({child, 0});
+        continue;
+      }
+      std::uint64_t total = 0;
+      for (const Edge *e : out[c]) total = add_saturating(total, add_saturating(1, count[e->child]));
+      count[c] = total;
+      done[c] = true;
+      stack.pop_back();
+    }
+  }
+  for (model::ChartId c : cx.charts.ids()) {
+    const ast::Chart &chart = *cx.charts[c];
+    if (count[c] <= kMaxInstances || run_in_main[c] || !cx.in_main_file(chart.range)) continue;
+    // The place of the chart itself whose sub-chart brings the most (the first of equals).
+    const Edge *most = nullptr;
+    for (const Edge *e : out[c])
+      if (!most || count[e->child] > count[most->child]) most = e;
+    const ast::Place &place = chart.places[most->place.index()];
+    const std::string &child = cx.model.charts[most->child].name;
+    cx.diag
+        .error(chart.name.range, ErrorKind::SubchartInstances,
+               fmt::format("{} '{}' embeds {} sub-chart instances, more than the {} gfec compiles",
+                           chart.kind == ast::Chart::Kind::Fsm ? "fsm" : "sfc", chart.name.text, count_text(count[c]),
+                           kMaxInstances))
+        .note(runs_name(cx, *most).range,
+              fmt::format("{} '{}' runs '{}', which brings the most: {} ('{}' and the {} it embeds)",
+                          place.is_state ? "state" : "place", place.name.text, child,
+                          count_text(add_saturating(1, count[most->child])), child, count_text(count[most->child])));
+  }
+}
+
 /// The period a chart declares (the first one, if valid), or 0.
 double declared_period(const ast::Chart &c) { return !c.periods.empty() && c.periods[0].ms > 0 ? c.periods[0].ms : 0; }
 
@@ -191,6 +261,7 @@ void resolve_subcharts(Context &cx) {
   std::vector<Edge> edges = resolve_runs(cx);
   if (edges.empty()) return;
   if (report_cycles(cx, edges)) return;
+  check_instances(cx, edges);
   inherit_periods(cx, edges);
 }
 

@@ -49,6 +49,9 @@ ChartInfo read_chart_info(const std::string& model_path) {
   ChartInfo info;
   info.name = text("name");
   info.kind = text("kind");
+  if (model.contains("files") && model["files"].is_array())
+    for (const auto& f : model["files"])
+      if (f.is_string()) info.files.push_back(f.get<std::string>());
   if (info.kind != "sfc" && info.kind != "fsm" && info.kind != "plan")
     throw BuildError(fmt::format("{}: unknown chart kind '{}'", model_path, info.kind), kBadInput);
   // Optional parts of the model: carbot-sim runs without them.

@@ -17,6 +17,8 @@ namespace carbot::driver {
 struct ChartInfo {
   std::string name;
   std::string kind;   ///< "sfc", "fsm" or "plan"
+  /// Every file the chart was read from, imports included (gfec's "files"): never an output.
+  std::vector<std::string> files;
   double period = 0;  ///< s, the chart's `period` (0: it gives none)
   int team = 0;       ///< a team machine's `team N` (0: not a team machine)
   /// fsm: a label per state index, "Z1 PickUp()" (the name and the first action's text).

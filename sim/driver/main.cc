@@ -285,7 +285,11 @@ int main(int argc, char** argv) {
       if (!o.html.empty()) outputs.push_back({o.html, gfec::viewer::page(data)});
       if (!o.record.empty()) outputs.push_back({o.record, data.dump() + "\n"});
     }
-    const std::string error = gfec::safe_output::write_all(outputs, {o.chart, o.world});
+    // Never over the chart, a file it imports or the world (docs/security.md).
+    std::vector<std::string> inputs = built.chart.files;
+    inputs.push_back(o.chart);
+    inputs.push_back(o.world);
+    const std::string error = gfec::safe_output::write_all(outputs, inputs);
     if (!error.empty()) return fail(kUsage, error);
     if (!o.quiet) {
       if (robots == 1) {

@@ -69,6 +69,8 @@ expect_refused "-o and -MF the same file" lf.sfc -o e.c -MD -MF e.c
 [ "$(cat e.c)" = old ] || fail "e.c was replaced"
 expect_refused "-o and -MF the same file by two spellings" lf.sfc -o e.c -MD -MF ./sub/../e.c
 rm e.c
+expect_refused "gfec run --html over an import" run lf.sfc --html linebot.iface
+expect_refused "gfec run --html over the chart" run lf.sfc --html lf.sfc
 expect_refused "a plan's header named as its -o" square.plan -o X.hpp
 [ ! -e X.hpp ] || fail "X.hpp written"
 

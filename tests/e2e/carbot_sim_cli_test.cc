@@ -123,6 +123,12 @@ TEST_CASE("carbot-sim: never writes over the world, the chart, a FIFO or one fil
   CHECK_FALSE(std::filesystem::exists(trace));
 
   CHECK(run_cli(base + " --trace " + q(chart), out, dir) == 2);
+  // Nor over a file the chart imports (the model's "files").
+  const std::string iface = dir.file("linebot.iface");
+  const auto iface_size = std::filesystem::file_size(iface);
+  CHECK(run_cli(base + " --json " + q(iface), out, dir) == 2);
+  CHECK(out.find("refusing to write") != std::string::npos);
+  CHECK(std::filesystem::file_size(iface) == iface_size);
   INFO(out);
   CHECK(run_cli(base + " --trace " + q(trace) + " --json " + q(dir.file("r.json")), out, dir) == 0);
   CHECK(std::filesystem::exists(trace));

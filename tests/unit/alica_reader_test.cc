@@ -4,12 +4,15 @@
 // ALICA's format).
 #include "support.h"
 
+#include "alica/identifiers.h"
 #include "alica/json_tree.h"
+#include "dot_chart.h"
 #include "validate.h"
 
 #include <catch2/catch.hpp>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <map>
@@ -578,4 +581,143 @@ TEST_CASE("alica json: a UTF-8 byte order mark before the document is skipped", 
   CHECK(v->begin == 3);
   CHECK(v->find("id")->text == "1");
   CHECK(!alica::parse_json("\xef\xbb{ }", error));
+}
+
+TEST_CASE("alica: plans nest at most 200 deep; deeper is an error at the reference, not a crash", "[alica]") {
+  // c<i>.pml has one state that runs c<i+1>.pml: a chain of `n` plans, each one deeper.
+  auto chain = [](int n) {
+    std::map<std::string, std::string> files;
+    for (int i = 0; i < n; ++i) {
+      std::string runs = i + 1 < n ? fmt::format("\"c{}.pml#{}\"", i + 1, 1000 + i + 1) : "";
+      files[fmt::format("c{}.pml", i)] = fmt::format(
+          R"({{ "id" : {}, "name" : "c{}", "entryPoints" : [ {{ "id" : {}, "name" : "", "state" : {} }} ],
+  "states" : [ {{ "type" : "State", "id" : {}, "name" : "Run", "abstractPlans" : [ {} ] }} ],
+  "transitions" : [ ] }})",
+          1000 + i, i, 5000 + i, 9000 + i, 9000 + i, runs);
+    }
+    return files;
+  };
+  SECTION("200 plans below the compiled one are read") {
+    Run r("c0.pml", chain(201));
+    INFO(r.text);
+    CHECK(!r.diag.has_errors());
+    CHECK(r.chart("c200") != nullptr);
+  }
+  SECTION("the reference to the 201st is an error where it is written, and nothing below is read") {
+    // 3000 plans crashed gfec (a stack overflow) before the limit.
+    Run r("c0.pml", chain(3000));
+    INFO(r.text.substr(0, 2000));
+    CHECK(r.diag.error_count() == 1);
+    CHECK(r.text.find("c200.pml:2:70: error: plans nested more than 200 deep: plan 'c201' (id 1201) would run 201 "
+                      "levels below the compiled plan [alica-reference]") != std::string::npos);
+    CHECK(std::find(r.loaded.paths.begin(), r.loaded.paths.end(), "c202.pml") == r.loaded.paths.end());
+  }
+}
+
+TEST_CASE("alica: control characters of names and references are escaped in messages", "[alica]") {
+  CHECK(alica::printable(std::string("a\nb\x1b]0;x\x07\t\0c", 14)) == "a\\nb\\x1b]0;x\\x07\\t\\0c");
+  // UTF-8 stays; C1 controls (CSI is U+009B) and bytes that are no UTF-8 are escaped.
+  CHECK(alica::printable("\xc3\xa9\xe2\x82\xac\xc2\x9b\xff") == "\xc3\xa9\xe2\x82\xac\\u009b\\xff");
+  std::string plan =
+      R"({ "id" : 9, "name" : "Esc\u001b]0;pwned\u0007", "entryPoints" : [ { "id" : 10, "name" : "", "state" : 1 } ],
+    "states" : [ { "type" : "State", "id" : 1, "name" : "A\u001b[31m", "abstractPlans" : [ "Foo\u0000.beh#1" ] },
+                 { "type" : "State", "id" : 2, "name" : "B", "abstractPlans" : [ "Bar\n::error::.beh#2" ] } ],
+    "transitions" : [ { "id" : 20, "name" : "T\nfake.pml:1:1: error: injected", "inState" : 1, "outState" : 7,
+                        "preCondition" : null } ] })";
+  Run r("esc.pml", {{"esc.pml", plan}});
+  INFO(r.text);
+  CHECK(r.diag.error_count() == 3);
+  CHECK(r.text.find('\x1b') == std::string::npos);
+  CHECK(r.text.find('\0') == std::string::npos);
+  CHECK(r.text.find('\x07') == std::string::npos);
+  // Every line is one of gfec's: none is forged by a name.
+  std::size_t start = 0;
+  for (std::size_t end; (end = r.text.find('\n', start)) != std::string::npos; start = end + 1)
+    CHECK(r.text.compare(start, 8, "esc.pml:") == 0);
+  CHECK(r.text.find("error: 'Foo\\0.beh#1' names a file with a control character in its name [alica-reference]") !=
+        std::string::npos);
+  CHECK(r.text.find("error: 'Bar\\n::error::.beh#2' names a file with a control character") != std::string::npos);
+  CHECK(r.text.find("error: transition 'T\\nfake.pml:1:1: error: injected' (id 20) of plan 'Esc\\x1b]0;pwned\\x07' "
+                    "(id 9) names outState 7, which the plan has no state for") != std::string::npos);
+}
+
+TEST_CASE("alica: names the C headers reserve get '_' appended, as the validator would refuse them", "[alica]") {
+  std::string states;
+  int id = 1;
+  for (const char *name :
+       {"INT_MAX", "UINT32_MAX", "SIZE_MAX", "UINT64_C", "INT8_MAX", "stdout", "_Bool", "int_least8_t", "FLT_MAX"})
+    states += fmt::format(R"({}{{ "type" : "State", "id" : {}, "name" : "{}" }})", id > 1 ? ", " : "", id++, name);
+  std::string transitions;
+  for (int i = 1; i + 1 < id; ++i)
+    transitions += fmt::format(R"({}{{ "id" : {}, "name" : "", "inState" : {}, "outState" : {},
+      "preCondition" : {{ "id" : {}, "name" : "{}" }} }})",
+                               i > 1 ? ", " : "", 100 + i, i, i + 1, 200 + i, i == 1 ? "EOF" : "LLONG_MIN");
+  std::string plan = fmt::format(R"({{ "id" : 9, "name" : "Limits", "entryPoints" : [ {{ "id" : 10, "state" : 1 }} ],
+    "states" : [ {} ], "transitions" : [ {} ] }})",
+                                 states, transitions);
+  Run r("limits.pml", {{"limits.pml", plan}});
+  INFO(r.text);
+  REQUIRE(!r.diag.has_errors());
+  const model::Chart *c = r.chart("Limits");
+  REQUIRE(c);
+  // <float.h> reserves FLT_ followed by any capitals and '_': FLT_MAX_ is taken too.
+  CHECK(place_names(*c) == std::vector<std::string>{"INT_MAX_", "UINT32_MAX_", "SIZE_MAX_", "UINT64_C_", "INT8_MAX_",
+                                                    "stdout_", "_Bool_", "int_least8_t_", "FLT_MAX_x"});
+  std::vector<std::string> functions;
+  for (const auto &f : r.model.functions) functions.push_back(f.name);
+  CHECK(functions == std::vector<std::string>{"EOF_", "LLONG_MIN_"});
+}
+
+TEST_CASE("alica: the picture of a plan labels transitions with the condition, not its JSON", "[alica]") {
+  Run r("plans/Fetch.pml");
+  INFO(r.text);
+  REQUIRE(!r.diag.has_errors());
+  const model::Chart *c = r.chart("Fetch");
+  REQUIRE(c);
+  std::string dot = dot::chart_picture(r.model, *c);
+  INFO(dot);
+  CHECK(dot.find("1. Go2Grab: Arrived()") != std::string::npos);
+  CHECK(dot.find("1. Grab2Got: Holding()") != std::string::npos);
+  CHECK(dot.find("DriveToItem();") != std::string::npos);  // the state's action: a call, not the reference
+  CHECK(dot.find("\"id\"") == std::string::npos);
+  CHECK(dot.find("#1700000000001") == std::string::npos);
+}
+
+TEST_CASE("alica: ids that are no integers, unpaired surrogates and empty references", "[alica]") {
+  SECTION("a state id 1.5 or 1e3 is an error at the id saying ids are integers") {
+    std::string plan = R"({ "id" : 9, "name" : "P", "entryPoints" : [ { "id" : 10, "name" : "E", "state" : 1e3 } ],
+    "states" : [ { "type" : "State", "id" : 1.5, "name" : "Go" } ],
+    "transitions" : [ { "id" : 20, "name" : "T", "inState" : 1.5, "outState" : 1, "preCondition" : null } ] })";
+    Run r("ids.pml", {{"ids.pml", plan}});
+    INFO(r.text);
+    CHECK(r.text.find("ids.pml:2:41: error: the id of state 'Go' of plan 'P' (id 9) is 1.5, which is no id: ALICA's "
+                      "ids are integers [alica-format]") != std::string::npos);
+    CHECK(r.text.find("ids.pml:1:99: error: the state of entry point 'E' (id 10) of plan 'P' (id 9) is 1e3, which is "
+                      "no id: ALICA's ids are integers [alica-format]") != std::string::npos);
+    CHECK(r.text.find("error: the inState of transition 'T' (id 20) of plan 'P' (id 9) is 1.5, which is no id") !=
+          std::string::npos);
+    CHECK(r.text.find("(none)") == std::string::npos);
+  }
+  SECTION("a high surrogate before an escape that is no low surrogate keeps that character") {
+    alica::JsonError error;
+    auto v = alica::parse_json(R"(["\ud800\u0041", "\ud83d\ude00", "\udc00x", "\ud800"])", error);
+    REQUIRE(v);
+    REQUIRE(v->items.size() == 4);
+    CHECK(v->items[0].text == "\xef\xbf\xbd"
+                              "A");
+    CHECK(v->items[1].text == "\xf0\x9f\x98\x80");
+    CHECK(v->items[2].text == "\xef\xbf\xbdx");
+    CHECK(v->items[3].text == "\xef\xbf\xbd");
+  }
+  SECTION("an empty abstractPlan is an error at it") {
+    std::string plan = R"({ "id" : 9, "name" : "P", "entryPoints" : [ { "id" : 10, "name" : "", "state" : 1 } ],
+    "states" : [ { "type" : "State", "id" : 1, "name" : "Go",
+                   "confAbstractPlanWrappers" : [ { "id" : 11, "name" : "", "abstractPlan" : "" } ] } ],
+    "transitions" : [ ] })";
+    Run r("empty.pml", {{"empty.pml", plan}});
+    INFO(r.text);
+    CHECK(r.diag.error_count() == 1);
+    CHECK(r.text.find("empty.pml:3:81: error: state 'Go' (id 1) of plan 'P' (id 9) wraps an empty \"abstractPlan\": "
+                      "ALICA writes a reference as \"File.ext#id\" [alica-reference]") != std::string::npos);
+  }
 }
