@@ -19,6 +19,7 @@
 #include <chrono>
 #include <memory>
 #include <ostream>
+#include <set>
 #include <thread>
 
 namespace gfec {
@@ -124,21 +125,23 @@ public:
     TestFile &file = *out.file;
     const model::Model &m = file.model;
     std::optional<scenario::Run> ref, eng;
-    if (!o_.engine_only) ref = scenario::run_reference(m, test);
+    const std::set<std::uint64_t> keep = scenario::expectation_ticks(test);
+    if (!o_.engine_only) ref = scenario::run_reference(m, test, &keep);
+    EngineBuilds::Build b;
     if (!o_.reference_only) {
-      EngineBuilds::Build b = builds_.get(m, test.chart, chart_file(file, test.chart), test.agents);
+      b = builds_.get(m, test.chart, chart_file(file, test.chart), test.agents);
       if (b.program.empty()) {
         out.diag
             .error(test.range, ErrorKind::TestEngine,
                    fmt::format("cannot build the C engine for '{}'", m.charts[test.chart].name))
             .note(b.error);
       } else {
-        eng = builds_.run(b, m, test, id);
+        eng = builds_.run(b, m, test, id, &keep);
       }
     }
     stopped(out, ref, "the reference interpreter");
     stopped(out, eng, "the C engine");
-    if (ref && eng) disagreement(out, *ref, *eng);
+    if (ref && eng) disagreement(out, *ref, *eng, b, id);
     expectations(out, ref ? &*ref : nullptr, eng ? &*eng : nullptr);
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
@@ -156,15 +159,27 @@ private:
         .note(fmt::format("in test \"{}\"", out.test->name));
   }
 
-  /// The first tick at which the two runs differ, and the first difference in it.
-  void disagreement(Outcome &out, const scenario::Run &ref, const scenario::Run &eng) {
+  /// The first tick at which the two runs differ, and the first difference in it. The runs
+  /// kept digests of most ticks: the records of a tick whose digests differ are made again by
+  /// running both once more, keeping that tick (both are deterministic).
+  void disagreement(Outcome &out, const scenario::Run &ref, const scenario::Run &eng, const EngineBuilds::Build &b,
+                    int id) {
     const model::Model &m = out.file->model;
-    std::size_t n = std::min(ref.ticks.size(), eng.ticks.size());
-    for (std::size_t k = 0; k < n; ++k) {
+    const scenario::Test &test = *out.test;
+    const std::uint64_t n = std::min(ref.recorded(), eng.recorded());
+    for (std::uint64_t k = 0; k < n; ++k) {
+      if (ref.digests[k] == eng.digests[k]) continue;
+      std::optional<scenario::Run> ref_again, eng_again;
+      const std::set<std::uint64_t> just{k};
+      const scenario::Run *x = &ref, *y = &eng;
+      if (!x->at(k)) x = &ref_again.emplace(scenario::run_reference(m, test, &just));
+      if (!y->at(k)) y = &eng_again.emplace(builds_.run(b, m, test, id, &just));
+      if (!x->at(k) || !y->at(k)) continue;
+      const std::vector<scenario::Snapshot> &rx = *x->at(k), &ry = *y->at(k);
       std::string diff;
       std::size_t agent = 0;
-      for (; agent < ref.ticks[k].size() && agent < eng.ticks[k].size() && diff.empty(); ++agent)
-        diff = scenario::compare(ref.ticks[k][agent], eng.ticks[k][agent], m, out.test->chart, "reference", "engine");
+      for (; agent < rx.size() && agent < ry.size() && diff.empty(); ++agent)
+        diff = scenario::compare(rx[agent], ry[agent], m, test.chart, "reference", "engine");
       if (diff.empty()) continue;
       SourceRange at = k == 0 ? out.test->range : tick_step(*out.test, k);
       std::string what = k == 0 ? "after _init" : fmt::format("at tick {}", k);
@@ -194,8 +209,8 @@ private:
       const scenario::Run *runs[2] = {ref, eng};
       const std::size_t agent = static_cast<std::size_t>(s.expect_agent());
       for (int i = 0; i < 2; ++i)
-        if (runs[i] && tick < runs[i]->ticks.size() && agent < runs[i]->ticks[tick].size())
-          sides[i].verdict = scenario::evaluate(s.expect, runs[i]->ticks[tick][agent], file.model, test.chart);
+        if (runs[i] && runs[i]->at(tick) && agent < runs[i]->at(tick)->size())
+          sides[i].verdict = scenario::evaluate(s.expect, runs[i]->at(tick)->at(agent), file.model, test.chart);
       auto failed = [](const Side &x) { return x.verdict && (!x.verdict->holds || !x.verdict->error.empty()); };
       if (!failed(sides[0]) && !failed(sides[1])) continue;
       const Side &bad = failed(sides[0]) ? sides[0] : sides[1];
@@ -212,7 +227,7 @@ private:
       }
       if (reads_calls(s.expect)) {
         std::string calls;
-        for (const scenario::Call &c : bad_run.ticks[tick][agent].calls) calls += (calls.empty() ? "" : ", ") + c.text;
+        for (const scenario::Call &c : bad_run.at(tick)->at(agent).calls) calls += (calls.empty() ? "" : ", ") + c.text;
         d.note(calls.empty() ? std::string("no function was called in the last tick")
                              : fmt::format("the calls of the last tick: {}", calls));
       }

@@ -100,20 +100,20 @@ scenario::Call parse_call(const std::string &text, const model::Model &m) {
   return c;
 }
 
-/// The snapshots in a harness's output: after _init and after every tick, one per agent.
-std::vector<std::vector<scenario::Snapshot>> parse_output(const std::string &out, const model::Model &m,
-                                                          const scenario::Test &test) {
+/// The records in a harness's output, after _init and after every tick (one per agent), into
+/// `run`: read line by line, so a long test is never held whole.
+void parse_output(std::istream &in, const model::Model &m, const scenario::Test &test, scenario::KeptTicks keep,
+                  scenario::Run &run) {
   const model::Chart &c = m.charts[test.chart];
   const std::vector<scenario::Instance> instances = scenario::instances_of(m, test.chart);
   const std::size_t n = static_cast<std::size_t>(std::max(test.agents, 1));
-  std::vector<std::vector<scenario::Snapshot>> ticks;
   std::vector<scenario::Snapshot> agents;
   std::size_t agent = 0;  // whose lines these are
   auto reset = [&] {
     agents.assign(n, scenario::Snapshot{});
     for (std::size_t a = 0; a < n; ++a) {
       scenario::Snapshot &cur = agents[a];
-      cur.tick = ticks.size();
+      cur.tick = run.recorded();
       cur.agent = static_cast<int>(a);
       cur.activation.assign(c.places.size(), 0);
       cur.timers.assign(c.places.size(), 0);
@@ -123,7 +123,6 @@ std::vector<std::vector<scenario::Snapshot>> parse_output(const std::string &out
     agent = 0;
   };
   reset();
-  std::istringstream in(out);
   std::string line;
   while (std::getline(in, line)) {
     std::istringstream words(line);
@@ -161,11 +160,10 @@ std::vector<std::vector<scenario::Snapshot>> parse_output(const std::string &out
       if (p < c.places.size()) cur.timers[model::PlaceId(p)] = t;
     } else if (word == "end") {
       scenario::settle_tick(agents, instances, c);
-      ticks.push_back(std::move(agents));
+      run.record(std::move(agents), keep, m, test.chart);
       reset();
     }
   }
-  return ticks;
 }
 
 /// The interface functions the engine's header declares: those of the chart and of every chart
@@ -390,7 +388,8 @@ EngineBuilds::Build EngineBuilds::get(const model::Model &model, model::ChartId 
   return b;
 }
 
-scenario::Run EngineBuilds::run(const Build &build, const model::Model &model, const scenario::Test &test, int id) {
+scenario::Run EngineBuilds::run(const Build &build, const model::Model &model, const scenario::Test &test, int id,
+                                scenario::KeptTicks keep) {
   scenario::Run run;
   std::string steps;
   for (const scenario::Step &s : test.steps) {
@@ -407,12 +406,14 @@ scenario::Run EngineBuilds::run(const Build &build, const model::Model &model, c
   }
   std::string cmd = fmt::format("{} < {} > {} 2>&1", quote(build.program), quote(in.string()), quote(out.string()));
   int status = std::system(cmd.c_str());
-  std::string text = read_file(out);
-  run.ticks = parse_output(text, model, test);
+  {
+    std::ifstream text(out, std::ios::binary);
+    parse_output(text, model, test, keep, run);
+  }
   std::uint64_t expected = scenario::total_ticks(test) + 1;
-  if (status != 0 || run.ticks.size() != expected)
+  if (status != 0 || run.recorded() != expected)
     run.error = fmt::format("the C engine's harness {} after tick {}", status != 0 ? exit_status(status) : "stopped",
-                            run.ticks.empty() ? 0 : run.ticks.size() - 1);
+                            run.recorded() == 0 ? 0 : run.recorded() - 1);
   std::error_code ec;
   fs::remove(in, ec);
   fs::remove(out, ec);

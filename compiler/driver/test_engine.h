@@ -51,8 +51,10 @@ public:
   /// engine with the same generated code. Thread-safe.
   Build get(const model::Model &model, model::ChartId chart, const std::string &source_name, int agents);
 
-  /// Runs `test` on a built harness; `id` names its input and output files.
-  scenario::Run run(const Build &build, const model::Model &model, const scenario::Test &test, int id);
+  /// Runs `test` on a built harness; `id` names its input and output files. The records of
+  /// the ticks in `keep` are kept (null: every tick's).
+  scenario::Run run(const Build &build, const model::Model &model, const scenario::Test &test, int id,
+                    scenario::KeptTicks keep);
 
   bool ok() const { return !folder_.empty(); }
   const std::string &folder() const { return folder_; }

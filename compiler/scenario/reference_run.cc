@@ -76,6 +76,24 @@ std::uint64_t total_ticks(const Test &test) {
   return n;
 }
 
+std::set<std::uint64_t> expectation_ticks(const Test &test) {
+  std::set<std::uint64_t> out;
+  std::uint64_t tick = 0;
+  for (const Step &s : test.steps) {
+    if (s.kind == Step::Kind::Tick) tick += s.count;
+    if (s.kind == Step::Kind::Expect) out.insert(tick);
+  }
+  return out;
+}
+
+void Run::record(std::vector<Snapshot> &&agents, KeptTicks keep, const model::Model &model, model::ChartId chart) {
+  std::uint64_t d = 0;
+  for (const Snapshot &s : agents) d = d * 1099511628211ULL ^ digest(s, model, chart);
+  const std::uint64_t tick = digests.size();
+  digests.push_back(d);
+  if (!keep || keep->count(tick)) kept.emplace(tick, std::move(agents));
+}
+
 void settle_tick(std::vector<Snapshot> &agents, const std::vector<Instance> &instances, const model::Chart &chart) {
   for (Snapshot &s : agents) {
     settle_instances(s, instances);
@@ -85,7 +103,7 @@ void settle_tick(std::vector<Snapshot> &agents, const std::vector<Instance> &ins
   }
 }
 
-Run run_reference(const model::Model &model, const Test &test) {
+Run run_reference(const model::Model &model, const Test &test, KeptTicks keep) {
   Run run;
   const std::size_t n = static_cast<std::size_t>(std::max(test.agents, 1));
   const std::vector<Instance> instances = instances_of(model, test.chart);
@@ -99,7 +117,7 @@ Run run_reference(const model::Model &model, const Test &test) {
     std::vector<Snapshot> tick;
     for (std::size_t a = 0; a < n; ++a) tick.push_back(snapshot(engines[a], envs[a].take_calls()));
     settle_tick(tick, instances, chart);
-    run.ticks.push_back(std::move(tick));
+    run.record(std::move(tick), keep, model, test.chart);
   };
   try {
     for (std::size_t a = 0; a < n; ++a) {
@@ -122,8 +140,8 @@ Run run_reference(const model::Model &model, const Test &test) {
       }
     }
   } catch (const interp::RuntimeError &err) {
-    run.error = n > 1 ? fmt::format("tick {} (agent {}): {}", run.ticks.size(), agent, err.what())
-                      : fmt::format("tick {}: {}", run.ticks.size(), err.what());
+    run.error = n > 1 ? fmt::format("tick {} (agent {}): {}", run.recorded(), agent, err.what())
+                      : fmt::format("tick {}: {}", run.recorded(), err.what());
     run.error_range = err.range;
     run.error_located = true;
   }

@@ -289,6 +289,31 @@ std::string compare(const Snapshot &x, const Snapshot &y, const model::Model &mo
   return "";
 }
 
+std::uint64_t digest(const Snapshot &s, const model::Model &model, model::ChartId chart) {
+  const model::Chart &c = model.charts.at(chart);
+  std::uint64_t h = 14695981039346656037ULL;  // FNV-1a
+  auto bytes = [&](std::string_view text) {
+    for (char ch : text) h = (h ^ static_cast<unsigned char>(ch)) * 1099511628211ULL;
+    h = (h ^ 0xFFu) * 1099511628211ULL;  // a separator no text byte sequence imitates
+  };
+  auto number = [&](std::uint64_t v) { bytes(std::to_string(v)); };
+  for (const Call &call : s.calls) bytes(call.text);
+  bytes("|");
+  for (model::PlaceId p : c.places.ids()) number(s.activation.at(p));
+  if (c.kind == model::Chart::Kind::Fsm) {
+    number(s.state ? s.state.index() + 1 : 0);
+    number(static_cast<std::uint64_t>(s.status + 1));
+  }
+  for (model::VarId i : c.vars.ids()) bytes(interp::format_value(s.vars.at(i)));
+  for (model::PlaceId p : c.places.ids())
+    if (c.places[p].timed) number(s.timers.at(p));
+  for (const auto &instance : s.instances) {
+    bytes("/");
+    for (unsigned v : instance) number(v);
+  }
+  return h;
+}
+
 std::string instance_path(const model::Model &model, model::ChartId chart, const std::vector<Instance> &instances,
                           std::size_t i) {
   std::string path;

@@ -72,6 +72,10 @@ Verdict evaluate(const Expect &e, const Snapshot &s, const model::Model &model, 
 std::string compare(const Snapshot &x, const Snapshot &y, const model::Model &model, model::ChartId chart,
                     const char *a, const char *b);
 
+/// A digest of what compare() reads of a record: two records that compare equal have the same
+/// digest, so runs are told apart tick by tick without keeping every record.
+std::uint64_t digest(const Snapshot &s, const model::Model &model, model::ChartId chart);
+
 /// "P.Q": the places that lead from the root of `chart` to instance `i`, for messages.
 std::string instance_path(const model::Model &model, model::ChartId chart, const std::vector<Instance> &instances,
                           std::size_t i);

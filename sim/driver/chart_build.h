@@ -16,7 +16,7 @@ namespace carbot::driver {
 /// What gfec says about a chart (`gfec --emit=json`: top-level "kind" and "name").
 struct ChartInfo {
   std::string name;
-  std::string kind;   ///< "sfc", "fsm" or "plan"
+  std::string kind;  ///< "sfc", "fsm" or "plan"
   /// Every file the chart was read from, imports included (gfec's "files"): never an output.
   std::vector<std::string> files;
   double period = 0;  ///< s, the chart's `period` (0: it gives none)

@@ -143,6 +143,12 @@ test('a disagreement between the engine and the reference names the tick and the
   assert.equal(errors[0].line, 8);
   assert.equal(errors[0].message,
     "the reference interpreter and the C engine disagree at tick 1: first differing call 3: reference no call, engine 'Go()'");
+  // A tick no expectation reads is kept only as a digest: the difference is still found and named.
+  fs.writeFileSync(path.join(dir, 'later.test'),
+    DIVERGE.replace('  tick;\n  expect called Go;', '  tick 5;\n  expect active(A);'));
+  r = gfec(['test', 'later.test'], dir);
+  assert.equal(r.code, 1);
+  assert.match(r.stderr, /^later\.test:8:3: error: the reference interpreter and the C engine disagree at tick 1: first differing call 3: reference no call, engine 'Go\(\)' \[test-disagreement\]$/m);
   // Each engine alone agrees with itself: --reference-only and --engine-only pass.
   r = gfec(['test', '--reference-only', 'diverge.test'], dir);
   assert.equal(r.code, 0, r.stderr);

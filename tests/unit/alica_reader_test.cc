@@ -608,14 +608,14 @@ TEST_CASE("alica: plans nest at most 200 deep; deeper is an error at the referen
     Run r("c0.pml", chain(3000));
     INFO(r.text.substr(0, 2000));
     CHECK(r.diag.error_count() == 1);
-    CHECK(r.text.find("c200.pml:2:70: error: plans nested more than 200 deep: plan 'c201' (id 1201) would run 201 "
+    CHECK(r.text.find("c200.pml:2:85: error: plans nested more than 200 deep: plan 'c201' (id 1201) would run 201 "
                       "levels below the compiled plan [alica-reference]") != std::string::npos);
     CHECK(std::find(r.loaded.paths.begin(), r.loaded.paths.end(), "c202.pml") == r.loaded.paths.end());
   }
 }
 
 TEST_CASE("alica: control characters of names and references are escaped in messages", "[alica]") {
-  CHECK(alica::printable(std::string("a\nb\x1b]0;x\x07\t\0c", 14)) == "a\\nb\\x1b]0;x\\x07\\t\\0c");
+  CHECK(alica::printable(std::string("a\nb\x1b]0;x\x07\t\0c", 12)) == "a\\nb\\x1b]0;x\\x07\\t\\0c");
   // UTF-8 stays; C1 controls (CSI is U+009B) and bytes that are no UTF-8 are escaped.
   CHECK(alica::printable("\xc3\xa9\xe2\x82\xac\xc2\x9b\xff") == "\xc3\xa9\xe2\x82\xac\\u009b\\xff");
   std::string plan =
@@ -630,10 +630,10 @@ TEST_CASE("alica: control characters of names and references are escaped in mess
   CHECK(r.text.find('\x1b') == std::string::npos);
   CHECK(r.text.find('\0') == std::string::npos);
   CHECK(r.text.find('\x07') == std::string::npos);
-  // Every line is one of gfec's: none is forged by a name.
+  // Every line is one of gfec's, a diagnostic or a quoted source line: none is forged by a name.
   std::size_t start = 0;
   for (std::size_t end; (end = r.text.find('\n', start)) != std::string::npos; start = end + 1)
-    CHECK(r.text.compare(start, 8, "esc.pml:") == 0);
+    CHECK((r.text.compare(start, 8, "esc.pml:") == 0 || r.text[start] == ' '));
   CHECK(r.text.find("error: 'Foo\\0.beh#1' names a file with a control character in its name [alica-reference]") !=
         std::string::npos);
   CHECK(r.text.find("error: 'Bar\\n::error::.beh#2' names a file with a control character") != std::string::npos);
@@ -645,8 +645,10 @@ TEST_CASE("alica: names the C headers reserve get '_' appended, as the validator
   std::string states;
   int id = 1;
   for (const char *name :
-       {"INT_MAX", "UINT32_MAX", "SIZE_MAX", "UINT64_C", "INT8_MAX", "stdout", "_Bool", "int_least8_t", "FLT_MAX"})
-    states += fmt::format(R"({}{{ "type" : "State", "id" : {}, "name" : "{}" }})", id > 1 ? ", " : "", id++, name);
+       {"INT_MAX", "UINT32_MAX", "SIZE_MAX", "UINT64_C", "INT8_MAX", "stdout", "_Bool", "int_least8_t", "FLT_MAX"}) {
+    states += fmt::format(R"({}{{ "type" : "State", "id" : {}, "name" : "{}" }})", id > 1 ? ", " : "", id, name);
+    ++id;
+  }
   std::string transitions;
   for (int i = 1; i + 1 < id; ++i)
     transitions += fmt::format(R"({}{{ "id" : {}, "name" : "", "inState" : {}, "outState" : {},
@@ -665,7 +667,10 @@ TEST_CASE("alica: names the C headers reserve get '_' appended, as the validator
                                                     "stdout_", "_Bool_", "int_least8_t_", "FLT_MAX_x"});
   std::vector<std::string> functions;
   for (const auto &f : r.model.functions) functions.push_back(f.name);
-  CHECK(functions == std::vector<std::string>{"EOF_", "LLONG_MIN_"});
+  REQUIRE(functions.size() >= 3);
+  CHECK(functions[0] == "EOF_");
+  CHECK(functions[1] == "LLONG_MIN_");
+  CHECK(functions[2] == "LLONG_MIN__203");  // the same name again: its id appended
 }
 
 TEST_CASE("alica: the picture of a plan labels transitions with the condition, not its JSON", "[alica]") {
@@ -685,18 +690,24 @@ TEST_CASE("alica: the picture of a plan labels transitions with the condition, n
 
 TEST_CASE("alica: ids that are no integers, unpaired surrogates and empty references", "[alica]") {
   SECTION("a state id 1.5 or 1e3 is an error at the id saying ids are integers") {
-    std::string plan = R"({ "id" : 9, "name" : "P", "entryPoints" : [ { "id" : 10, "name" : "E", "state" : 1e3 } ],
-    "states" : [ { "type" : "State", "id" : 1.5, "name" : "Go" } ],
-    "transitions" : [ { "id" : 20, "name" : "T", "inState" : 1.5, "outState" : 1, "preCondition" : null } ] })";
+    std::string plan = R"({ "id" : 9, "name" : "P", "entryPoints" : [ { "id" : 10, "name" : "E", "state" : 2 } ],
+    "states" : [ { "type" : "State", "id" : 1.5, "name" : "Go" }, { "type" : "State", "id" : 2, "name" : "Stop" } ],
+    "transitions" : [ { "id" : 20, "name" : "T", "inState" : 2, "outState" : 1e3, "preCondition" : null } ] })";
     Run r("ids.pml", {{"ids.pml", plan}});
     INFO(r.text);
-    CHECK(r.text.find("ids.pml:2:41: error: the id of state 'Go' of plan 'P' (id 9) is 1.5, which is no id: ALICA's "
+    CHECK(r.diag.error_count() == 2);
+    CHECK(r.text.find("ids.pml:2:45: error: the id of state 'Go' of plan 'P' (id 9) is 1.5, which is no id: ALICA's "
                       "ids are integers [alica-format]") != std::string::npos);
-    CHECK(r.text.find("ids.pml:1:99: error: the state of entry point 'E' (id 10) of plan 'P' (id 9) is 1e3, which is "
+    CHECK(r.text.find("ids.pml:3:78: error: the outState of transition 'T' (id 20) of plan 'P' (id 9) is 1e3, which "
+                      "is no id: ALICA's ids are integers [alica-format]") != std::string::npos);
+    // An entry point's state: "starts in state (none)" was all it said.
+    std::string entry = plan;
+    entry.replace(entry.find("\"state\" : 2"), 11, "\"state\" : 2.0");
+    Run e("entry.pml", {{"entry.pml", entry}});
+    INFO(e.text);
+    CHECK(e.text.find("entry.pml:1:82: error: the state of entry point 'E' (id 10) of plan 'P' (id 9) is 2.0, which is "
                       "no id: ALICA's ids are integers [alica-format]") != std::string::npos);
-    CHECK(r.text.find("error: the inState of transition 'T' (id 20) of plan 'P' (id 9) is 1.5, which is no id") !=
-          std::string::npos);
-    CHECK(r.text.find("(none)") == std::string::npos);
+    CHECK(e.text.find("(none)") == std::string::npos);
   }
   SECTION("a high surrogate before an escape that is no low surrogate keeps that character") {
     alica::JsonError error;
@@ -717,7 +728,7 @@ TEST_CASE("alica: ids that are no integers, unpaired surrogates and empty refere
     Run r("empty.pml", {{"empty.pml", plan}});
     INFO(r.text);
     CHECK(r.diag.error_count() == 1);
-    CHECK(r.text.find("empty.pml:3:81: error: state 'Go' (id 1) of plan 'P' (id 9) wraps an empty \"abstractPlan\": "
+    CHECK(r.text.find("empty.pml:3:94: error: state 'Go' (id 1) of plan 'P' (id 9) wraps an empty \"abstractPlan\": "
                       "ALICA writes a reference as \"File.ext#id\" [alica-reference]") != std::string::npos);
   }
 }

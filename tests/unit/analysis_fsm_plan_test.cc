@@ -68,6 +68,54 @@ fsm Pick {
   // C -> D (x() || (y() && !y())) is x(): weaker than x() && y(), so it is not shadowed.
 }
 
+TEST_CASE("analysis fsm: shadowing compares a transition with the earlier ones of its own state only") {
+  // The transitions of A and B interleaved, a never-firing one first: the warnings come in the
+  // order of the shadowed transitions, each with the first earlier one of its state that holds.
+  auto c = compile(R"(
+fsm Mixed {
+  initial state A;
+  state B;
+  state C;
+  success state Done;
+  A -> C when false;
+  B -> C when y();
+  A -> B when x();
+  B -> A when y() && x();
+  A -> Done when x() && y();
+  C -> Done;
+  B -> Done when y();
+}
+)",
+                   kBot);
+  CHECK(headlines(analyze_text(*c, false)) ==
+        "t.sfc:11:3: warning: transition 'T3' (B -> A) can never fire: 'T1' (B -> C) is tried first and holds "
+        "whenever it does [-Wshadowed-transition]\n"
+        "t.sfc:9:3: note: 'T1' has the same or a weaker precondition\n"
+        "t.sfc:12:3: warning: transition 'T4' (A -> Done) can never fire: 'T2' (A -> B) is tried first and holds "
+        "whenever it does [-Wshadowed-transition]\n"
+        "t.sfc:10:3: note: 'T2' has the same or a weaker precondition\n"
+        "t.sfc:14:3: warning: transition 'T6' (B -> Done) can never fire: 'T1' (B -> C) is tried first and holds "
+        "whenever it does [-Wshadowed-transition]\n"
+        "t.sfc:9:3: note: 'T1' has the same or a weaker precondition\n");
+}
+
+TEST_CASE("analysis fsm: a long chain is checked in linear time") {
+  // 50,000 states in a chain to Done, and a trap beside its end: quadratic checks took minutes.
+  const int n = 50000;
+  std::string text = "fsm Chain {\n  initial state S0;\n";
+  for (int i = 1; i < n; ++i) text += "  state S" + std::to_string(i) + ";\n";
+  text += "  state Trap;\n  success state Done;\n";
+  for (int i = 0; i + 1 < n; ++i) text += "  S" + std::to_string(i) + " -> S" + std::to_string(i + 1) + " when x();\n";
+  text += "  S" + std::to_string(n - 1) + " -> Done when x();\n  S" + std::to_string(n - 1) + " -> Trap when y();\n}\n";
+  auto c = compile(text, kBot);
+  std::string report;
+  std::string all = analyze_text(*c, false, {}, &report);
+  CHECK(headlines(all) == "t.sfc:50003:9: warning: state 'Trap' can never reach a success or failure state: once "
+                          "there, fsm 'Chain' runs for ever [-Wtrap-state]\n");
+  CHECK(report.find("reachable states: 50002 of 50002") != std::string::npos);
+  CHECK(report.find("states that can never finish: 1\n") != std::string::npos);
+}
+
 namespace {
 const char *kToolbox = R"(
 toolbox Bot {

@@ -247,16 +247,16 @@ TEST_CASE("a test runs on the reference interpreter and its expectations are eva
   const scenario::Test &t = c.suite.tests.at(0);
   scenario::Run run = scenario::run_reference(c.model, t);
   REQUIRE(run.error == "");
-  REQUIRE(run.ticks.size() == 3);
+  REQUIRE(run.recorded() == 3);
   // Tick 2: the transition fires (the sensing call), then B's action runs; B -> A was not open.
-  CHECK(run.ticks[2][0].calls.size() == 2);
-  CHECK(run.ticks[2][0].calls[0].text == "Black()");
-  CHECK(run.ticks[2][0].calls[1].text == "Motor(1, 0.5)");
-  auto first = scenario::evaluate(t.steps[1].expect, run.ticks[1][0], c.model, t.chart);
+  CHECK(run.at(2)->at(0).calls.size() == 2);
+  CHECK(run.at(2)->at(0).calls[0].text == "Black()");
+  CHECK(run.at(2)->at(0).calls[1].text == "Motor(1, 0.5)");
+  auto first = scenario::evaluate(t.steps[1].expect, run.at(1)->at(0), c.model, t.chart);
   CHECK(first.holds);
-  auto second = scenario::evaluate(t.steps[4].expect, run.ticks[2][0], c.model, t.chart);
+  auto second = scenario::evaluate(t.steps[4].expect, run.at(2)->at(0), c.model, t.chart);
   CHECK(!second.holds);  // calls Go == 1 fails: A's action no longer runs
-  auto third = scenario::evaluate(t.steps[5].expect, run.ticks[2][0], c.model, t.chart);
+  auto third = scenario::evaluate(t.steps[5].expect, run.at(2)->at(0), c.model, t.chart);
   CHECK(!third.holds);
   REQUIRE(third.operands.size() == 1);
   CHECK(third.operands[0].value == "false");
@@ -266,14 +266,14 @@ TEST_CASE("two runs that differ are told apart by their first differing call", "
   Checked c("test \"t\" of Line { tick; }\n");
   REQUIRE(c.test_errors() == "");
   scenario::Run run = scenario::run_reference(c.model, c.suite.tests.at(0));
-  scenario::Snapshot other = run.ticks[1][0];
+  scenario::Snapshot other = run.at(1)->at(0);
   const model::ChartId line(0);
-  CHECK(scenario::compare(run.ticks[1][0], other, c.model, line, "reference", "engine") == "");
+  CHECK(scenario::compare(run.at(1)->at(0), other, c.model, line, "reference", "engine") == "");
   other.calls.push_back(other.calls.back());
-  CHECK(scenario::compare(run.ticks[1][0], other, c.model, line, "reference", "engine") ==
+  CHECK(scenario::compare(run.at(1)->at(0), other, c.model, line, "reference", "engine") ==
         "call 3: reference no call, engine 'Go()'");
-  other = run.ticks[1][0];
+  other = run.at(1)->at(0);
   other.activation[model::PlaceId(1)] = 1;
-  CHECK(scenario::compare(run.ticks[1][0], other, c.model, line, "reference", "engine") ==
+  CHECK(scenario::compare(run.at(1)->at(0), other, c.model, line, "reference", "engine") ==
         "activation of 'B': reference 0, engine 1");
 }

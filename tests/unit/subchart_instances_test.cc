@@ -34,8 +34,8 @@ std::string binary_tower(int levels, const std::string &prefix = "P") {
 }  // namespace
 
 TEST_CASE("sub-chart instances: up to the limit compiles, one more is an error at the root", "[validate][subcharts]") {
-  // P0 embeds 2^16 - 2 = 65,534; Top adds one for P0 and one for Leaf: 65,536, the limit.
-  const std::string tower = binary_tower(16);
+  // P0 embeds 2^12 - 2 = 4094; Top adds one for P0 and one for Leaf: 4096, the limit.
+  const std::string tower = binary_tower(12);
   const std::string at_limit = "import \"bot.iface\";\nsfc Leaf { initial place A; }\n" + tower +
                                "sfc Top { initial place A runs P0; place B runs Leaf; A -> B when Black(); }\n";
   Validated ok({{"t.sfc", at_limit}, {"bot.iface", test::kBot}});
@@ -45,34 +45,41 @@ TEST_CASE("sub-chart instances: up to the limit compiles, one more is an error a
                            "sfc Top { initial place A runs Leaf; place B runs P0; place C runs Leaf; A -> B when "
                            "Black(); B -> C when White(); }\n";
   Validated r({{"t.sfc", over}, {"bot.iface", test::kBot}});
-  // Reported once, at Top (P0 .. P15 are run by charts of the file), with the place that
+  // Reported once, at Top (P0 .. P11 are run by charts of the file), with the place that
   // brings the most: B, not the first place.
   CHECK(headlines(r.text()) ==
-        "t.sfc:19:5: error: sfc 'Top' embeds 65537 sub-chart instances, more than the 65536 gfec compiles "
+        "t.sfc:15:5: error: sfc 'Top' embeds 4097 sub-chart instances, more than the 4096 gfec compiles "
         "[subchart-instances]\n"
-        "t.sfc:19:53: note: place 'B' runs 'P0', which brings the most: 65535 ('P0' and the 65534 it embeds)\n");
+        "t.sfc:15:51: note: place 'B' runs 'P0', which brings the most: 4095 ('P0' and the 4094 it embeds)\n");
 }
 
 TEST_CASE("sub-chart instances: counted once per chart and saturating", "[validate][subcharts]") {
   // 2^70 instances: counting them one by one would never end, and 64 bits would overflow.
   Validated r({{"t.sfc", "import \"bot.iface\";\n" + binary_tower(70)}, {"bot.iface", test::kBot}});
   CHECK(headlines(r.text()) ==
-        "t.sfc:2:5: error: sfc 'P0' embeds at least 4611686018427387904 sub-chart instances, more than the 65536 "
+        "t.sfc:2:5: error: sfc 'P0' embeds at least 4611686018427387904 sub-chart instances, more than the 4096 "
         "gfec compiles [subchart-instances]\n"
-        "t.sfc:2:31: note: place 'A' runs 'P1', which brings the most: at least 4611686018427387904 ('P1' and the at "
-        "least 4611686018427387904 it embeds)\n");
-  // A long chain of charts (one instance each) costs no stack and stays far below the limit.
-  std::string chain = "import \"bot.iface\";\n";
-  for (int i = 0; i < 20000; ++i)
-    chain += "sfc C" + std::to_string(i) + " { initial place A runs C" + std::to_string(i + 1) + "; }\n";
-  chain += "sfc C20000 { initial place A; }\n";
-  Validated deep({{"t.sfc", chain}, {"bot.iface", test::kBot}});
-  CHECK(deep.text() == "");
+        "t.sfc:2:31: note: place 'A' runs 'P1', which brings the most: at least 4611686018427387904\n");
+  // A long chain of charts, one instance each: counted without recursion (no stack to run out
+  // of), 4096 deep is the limit, 20,000 deep over it.
+  auto chain = [](int n) {
+    std::string s = "import \"bot.iface\";\n";
+    for (int i = 0; i < n; ++i)
+      s += "sfc C" + std::to_string(i) + " { initial place A runs C" + std::to_string(i + 1) + "; }\n";
+    return s + "sfc C" + std::to_string(n) + " { initial place A; }\n";
+  };
+  Validated at_limit({{"t.sfc", chain(4096)}, {"bot.iface", test::kBot}});
+  CHECK(at_limit.text() == "");
+  Validated deep({{"t.sfc", chain(20000)}, {"bot.iface", test::kBot}});
+  CHECK(headlines(deep.text()) ==
+        "t.sfc:2:5: error: sfc 'C0' embeds 20000 sub-chart instances, more than the 4096 gfec compiles "
+        "[subchart-instances]\n"
+        "t.sfc:2:31: note: place 'A' runs 'C1', which brings the most: 20000 ('C1' and the 19999 it embeds)\n");
 }
 
 TEST_CASE("sub-chart instances: only what the main file compiles counts", "[validate][subcharts]") {
   // An imported tower that nothing runs is no error; the main file's chart that runs it is.
-  const std::string lib = "import \"bot.iface\";\n" + binary_tower(17, "Q");
+  const std::string lib = "import \"bot.iface\";\n" + binary_tower(13, "Q");
   Validated unused(
       {{"t.sfc", "import \"lib.sfc\";\nsfc Main { initial place A; }\n"}, {"lib.sfc", lib}, {"bot.iface", test::kBot}});
   CHECK(unused.text() == "");
@@ -81,7 +88,7 @@ TEST_CASE("sub-chart instances: only what the main file compiles counts", "[vali
                   {"lib.sfc", lib},
                   {"bot.iface", test::kBot}});
   CHECK(headlines(used.text()) ==
-        "t.sfc:2:5: error: fsm 'Main' embeds 131071 sub-chart instances, more than the 65536 gfec compiles "
+        "t.sfc:2:5: error: fsm 'Main' embeds 8191 sub-chart instances, more than the 4096 gfec compiles "
         "[subchart-instances]\n"
-        "t.sfc:2:33: note: state 'A' runs 'Q0', which brings the most: 131071 ('Q0' and the 131070 it embeds)\n");
+        "t.sfc:2:33: note: state 'A' runs 'Q0', which brings the most: 8191 ('Q0' and the 8190 it embeds)\n");
 }
