@@ -88,9 +88,26 @@ bool report_cycles(Context &cx, const std::vector<Edge> &edges) {
   IdMap<model::ChartId, Color> color(n, White);
   std::vector<const Edge *> stack;  // the edges from the search's root to the current chart
   bool found = false;
-  std::function<void(model::ChartId)> visit = [&](model::ChartId c) {
-    color[c] = Grey;
-    for (const Edge *e : out[c]) {
+  // Depth first without recursion (a chain of thousands of charts would overflow the stack): a
+  // frame per chart on the path, with the next of its edges to follow.
+  struct Frame {
+    model::ChartId chart;
+    std::size_t next = 0;
+  };
+  std::vector<Frame> path;
+  for (model::ChartId root : cx.charts.ids()) {
+    if (color[root] != White) continue;
+    color[root] = Grey;
+    path.push_back({root});
+    while (!path.empty()) {
+      Frame &top = path.back();
+      if (top.next == out[top.chart].size()) {
+        color[top.chart] = Black;
+        path.pop_back();
+        if (!stack.empty() && !path.empty()) stack.pop_back();
+        continue;
+      }
+      const Edge *e = out[top.chart][top.next++];
       if (color[e->child] == Grey) {
         std::vector<const Edge *> cycle;
         // The cycle starts with the edge on the path that leaves e->child (none for a self-loop).
@@ -119,13 +136,10 @@ bool report_cycles(Context &cx, const std::vector<Edge> &edges) {
       }
       if (color[e->child] == Black) continue;
       stack.push_back(e);
-      visit(e->child);
-      stack.pop_back();
+      color[e->child] = Grey;
+      path.push_back({e->child});
     }
-    color[c] = Black;
-  };
-  for (model::ChartId c : cx.charts.ids())
-    if (color[c] == White) visit(c);
+  }
   return found;
 }
 
