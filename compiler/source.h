@@ -30,7 +30,7 @@ struct LineCol {
 /// One file's text, kept for the whole compilation so diagnostics can quote it.
 class SourceFile {
 public:
-  SourceFile(std::string path, std::string text);
+  SourceFile(std::string path, std::string text, bool chart_text = true);
 
   const std::string &path() const { return path_; }
   const std::string &text() const { return text_; }
@@ -38,17 +38,21 @@ public:
   /// The text of 1-based line `line`, without its newline.
   std::string_view line_text(std::uint32_t line) const;
   std::uint32_t line_count() const { return static_cast<std::uint32_t>(line_starts_.size()); }
+  /// Whether the file is chart text, whose ranges a back end may quote as written; an ALICA
+  /// plan's ranges point into its JSON.
+  bool is_chart_text() const { return chart_text_; }
 
 private:
   std::string path_;
   std::string text_;
+  bool chart_text_ = true;
   std::vector<std::uint32_t> line_starts_;
 };
 
 /// Owns every file read in one compilation; FileIds index it.
 class SourceManager {
 public:
-  FileId add(std::string path, std::string text);
+  FileId add(std::string path, std::string text, bool chart_text = true);
   const SourceFile &file(FileId id) const { return *files_.at(id); }
   std::size_t size() const { return files_.size(); }
   /// Whether `id` is one of the files here: a model made by hand has ranges into none.

@@ -21,11 +21,8 @@ std::string quote(const std::string &text) {
 }
 
 bool in_chart_text(const model::Model &m, const SourceRange &range) {
-  if (!m.sources().knows(range.file)) return true;  // a model made by hand: source_text gives ""
-  // Chart text starts with a comment, a keyword or `%{`, never with '{' as every ALICA file does.
-  const std::string &text = m.sources().file(range.file).text();
-  std::size_t first = text.find_first_not_of(" \t\r\n\xef\xbb\xbf");
-  return first == std::string::npos || text[first] != '{';
+  // A model made by hand has no sources: source_text gives "" for it, as for chart text.
+  return !m.sources().knows(range.file) || m.sources().file(range.file).is_chart_text();
 }
 
 std::string expr_text(const model::Model &m, model::ChartId chart, const model::Expr &e) {

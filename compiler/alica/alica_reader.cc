@@ -192,7 +192,7 @@ private:
   Doc *open(const std::string &path, std::string text) {
     auto doc = std::make_unique<Doc>();
     doc->path = path;
-    doc->file = sources_.add(path, std::move(text));
+    doc->file = sources_.add(path, std::move(text), /*chart_text=*/false);
     result_.paths.push_back(path);
     auto file = std::make_unique<ast::File>();
     file->id = doc->file;

@@ -3,6 +3,7 @@
 #include "backend_registry.h"
 #include "c_context.h"
 #include "interpreter/value.h"
+#include "roots.h"
 #include "scenario/snapshot.h"
 
 #include <fmt/format.h>
@@ -170,18 +171,11 @@ void parse_output(std::istream &in, const model::Model &m, const scenario::Test 
 /// The interface functions the engine's header declares: those of the chart and of every chart
 /// its places run (sub-charts), in model order.
 std::vector<model::FunctionId> engine_functions(const model::Model &model, model::ChartId root) {
-  IdMap<model::ChartId, bool> chart_seen(model.charts.size());
+  const IdMap<model::ChartId, bool> tree = charts_in_tree(model, root);
   IdMap<model::FunctionId, bool> used(model.functions.size());
-  std::vector<model::ChartId> todo{root};
-  while (!todo.empty()) {
-    model::ChartId c = todo.back();
-    todo.pop_back();
-    if (!model.charts.contains(c) || chart_seen[c]) continue;
-    chart_seen[c] = true;
-    const model::Chart &chart = model.charts[c];
-    for (model::FunctionId f : chart.functions) used[f] = true;
-    for (const auto &p : chart.places) todo.push_back(p.runs);
-  }
+  for (model::ChartId c : tree.ids())
+    if (tree[c])
+      for (model::FunctionId f : model.charts[c].functions) used[f] = true;
   std::vector<model::FunctionId> out;
   for (model::FunctionId f : used.ids())
     if (used[f]) out.push_back(f);

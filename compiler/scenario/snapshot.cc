@@ -166,10 +166,10 @@ private:
     int instance = -1;
     for (std::size_t i = 0; i < path.size(); ++i) {
       if (activation(instance, path[i]) == 0) return false;
-      if (i + 1 < path.size()) instance = instance_of(instance, path[i]);
-      if (instance < 0 && i + 1 < path.size()) return false;
+      if (i + 1 == path.size()) return true;
+      if ((instance = instance_of(instance, path[i])) < 0) return false;
     }
-    return !path.empty();
+    return false;
   }
 
   /// `succeeded(P)` / `failed(P)`: P active and its fsm instance in a success / failure state.
@@ -211,18 +211,15 @@ std::vector<Instance> instances_of(const model::Model &model, model::ChartId cha
 }
 
 void settle_instances(Snapshot &s, const std::vector<Instance> &instances) {
+  // Parents come before their instances, and a stopped parent is zeroed already: an instance
+  // runs exactly when the place that runs it is active.
   s.instances.resize(instances.size());
-  std::vector<bool> running(instances.size(), false);
   for (std::size_t i = 0; i < instances.size(); ++i) {
     const Instance &in = instances[i];
-    const unsigned owner = in.parent < 0
-                               ? s.activation.at(in.place)
-                               : (running[static_cast<std::size_t>(in.parent)] &&
-                                          in.place.index() < s.instances[static_cast<std::size_t>(in.parent)].size()
-                                      ? s.instances[static_cast<std::size_t>(in.parent)][in.place.index()]
-                                      : 0u);
-    running[i] = owner > 0;
-    if (!running[i]) std::fill(s.instances[i].begin(), s.instances[i].end(), 0u);
+    const std::size_t place = in.place.index();
+    const std::vector<unsigned> *parent = in.parent < 0 ? nullptr : &s.instances[static_cast<std::size_t>(in.parent)];
+    const unsigned owner = !parent ? s.activation.at(in.place) : place < parent->size() ? (*parent)[place] : 0u;
+    if (owner == 0) std::fill(s.instances[i].begin(), s.instances[i].end(), 0u);
   }
 }
 
@@ -296,7 +293,9 @@ std::uint64_t digest(const Snapshot &s, const model::Model &model, model::ChartI
     for (char ch : text) h = (h ^ static_cast<unsigned char>(ch)) * 1099511628211ULL;
     h = (h ^ 0xFFu) * 1099511628211ULL;  // a separator no text byte sequence imitates
   };
-  auto number = [&](std::uint64_t v) { bytes(std::to_string(v)); };
+  auto number = [&](std::uint64_t v) {
+    for (int k = 0; k < 8; ++k, v >>= 8) h = (h ^ (v & 0xFFu)) * 1099511628211ULL;
+  };
   for (const Call &call : s.calls) bytes(call.text);
   bytes("|");
   for (model::PlaceId p : c.places.ids()) number(s.activation.at(p));

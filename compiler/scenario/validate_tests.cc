@@ -6,6 +6,7 @@
 #include "scenario/validate_tests.h"
 
 #include "interpreter/value.h"
+#include "roots.h"
 #include "validate/fold.h"
 #include "validate/suggest.h"
 #include "validate/types.h"
@@ -296,21 +297,6 @@ model::ChartId resolve_chart(Context &cx, const ast::Name &name, std::set<std::s
   return {};
 }
 
-/// Calls `f` with chart `root` and every chart its places run, each once.
-template <typename F> void for_each_chart_run(const model::Model &model, model::ChartId root, F f) {
-  IdMap<model::ChartId, bool> seen(model.charts.size());
-  std::vector<model::ChartId> todo{root};
-  while (!todo.empty()) {
-    const model::ChartId c = todo.back();
-    todo.pop_back();
-    if (!model.charts.contains(c) || seen[c]) continue;
-    seen[c] = true;
-    f(model.charts[c]);
-    for (const auto &p : model.charts[c].places)
-      if (p.runs) todo.push_back(p.runs);
-  }
-}
-
 /// `of CHART agents N` and the agents of `agent K { ... }`: only for a team machine, within its size.
 bool check_agents(Context &cx, const ast::Test &t, const model::Chart &chart, scenario::Test &test) {
   bool ok = true;
@@ -369,10 +355,10 @@ bool lower_set(Context &cx, TestLowering &lowering, model::ChartId chart_id, con
   // The chart's interfaces and its sub-charts': a sensing function only a sub-chart calls is
   // still an input of the engine under test.
   bool ours = false;
-  for_each_chart_run(cx.model, chart_id, [&](const model::Chart &c) {
-    for (model::FunctionId used : c.functions)
-      ours = ours || cx.model.functions[used].interface_name == fn.interface_name;
-  });
+  const IdMap<model::ChartId, bool> tree = charts_in_tree(cx.model, chart_id);
+  for (model::ChartId c : tree.ids())
+    for (model::FunctionId used : cx.model.charts[c].functions)
+      ours = ours || (tree[c] && cx.model.functions[used].interface_name == fn.interface_name);
   if (!ours) {
     cx.diag
         .error(in.function.range, ErrorKind::Test,
