@@ -39,10 +39,12 @@ Value convert(const Value &v, model::Type to, SourceRange where) {
   case model::Type::Float:
     if (v.type == model::Type::Int) return Value::of_float(static_cast<float>(v.i));
     if (v.type == model::Type::Double) return to_float(v.f, where);
+    if (v.type == model::Type::Bool) return Value::of_float(v.b ? 1.0f : 0.0f);
     break;
   case model::Type::Double:
     if (v.type == model::Type::Int) return Value::of_double(static_cast<double>(v.i));
     if (v.type == model::Type::Float) return Value::of_double(v.f);
+    if (v.type == model::Type::Bool) return Value::of_double(v.b ? 1.0 : 0.0);
     break;
   case model::Type::Bool:
     // The validator keeps numbers out of bools; a stray one converts as C's _Bool would.

@@ -96,12 +96,19 @@ public:
   }
 
   /// `e`, a constant, as a value of type `to` formatted as engines print it (§12: "converted as
-  /// C converts").
-  std::optional<std::string> constant(const ast::Expr *e, Type to, const std::string &what) {
+  /// C converts"). `Conversion::C` lets `set` take any scalar for any scalar function, as a C
+  /// assignment to the function's return type would (`set Black = 1;` is true, `set Speed = true;`
+  /// is 1); arguments of `called F(ARGS)` follow the chart's own rule, where bool and numbers do not
+  /// mix.
+  enum class Conversion { Chart, C };
+  std::optional<std::string> constant(const ast::Expr *e, Type to, const std::string &what,
+                                      Conversion conversion = Conversion::Chart) {
     ExprScope constant_scope{cx_, &chart_, true};
     auto x = lower_expr(e, constant_scope);
     if (!x) return std::nullopt;
-    if (!assignable(to, x->type)) {
+    if (!(conversion == Conversion::C
+              ? (to == Type::Bool || is_numeric(to)) && (x->type == Type::Bool || is_numeric(x->type))
+              : assignable(to, x->type))) {
       cx_.diag.error(x->range, ErrorKind::TypeMismatch,
                      fmt::format("{} must be {}, not {}", what, quoted(to), quoted(x->type)));
       return std::nullopt;
@@ -367,7 +374,8 @@ bool lower_set(Context &cx, TestLowering &lowering, model::ChartId chart_id, con
         .note(fn.range, fmt::format("'{}' declared here", fn.name));
     return false;
   }
-  auto v = lowering.constant(in.value.get(), fn.result, fmt::format("the value of '{}'", fn.name));
+  auto v = lowering.constant(in.value.get(), fn.result, fmt::format("the value of '{}'", fn.name),
+                             TestLowering::Conversion::C);
   if (!v) return false;
   out.function = f;
   out.value = *v;

@@ -117,6 +117,22 @@ TEST_CASE("a valid test is lowered to its checked form", "[scenario]") {
   CHECK(c.model.charts[t.chart].places[1].timed);
 }
 
+TEST_CASE("set converts its constant to the function's type as C converts, bool included", "[scenario]") {
+  Checked c("test \"t\" of Line { set Black = 2; set Black = 0.0; set Count = true; set Level = false; }\n");
+  CHECK(c.test_errors() == "");
+  REQUIRE(c.suite.tests.size() == 1);
+  const auto &t = c.suite.tests[0];
+  REQUIRE(t.steps.size() == 4);
+  CHECK(t.steps[0].value == "true");  // any non-zero number is true
+  CHECK(t.steps[1].value == "false");
+  CHECK(t.steps[2].value == "1");
+  CHECK(t.steps[3].value == "0");
+  // Arguments of `called F(ARGS)` follow the chart's rule: bool and numbers do not mix.
+  CHECK(Checked("test \"t\" of Line { tick; expect called Motor(true, 0.5); }\n")
+            .test_errors()
+            .rfind("t.test:2:46: error: argument 1 of 'Motor' must be 'int', not 'bool' [type-mismatch]\n", 0) == 0);
+}
+
 TEST_CASE("an unknown chart is reported with a did-you-mean", "[scenario]") {
   CHECK(Checked("test \"t\" of Lien { tick; }\n").test_errors() ==
         "t.test:2:13: error: unknown chart 'Lien' [unknown-name]\n"
@@ -172,10 +188,10 @@ TEST_CASE("set needs a parameterless sensing function of the chart's interface",
             .rfind("t.test:2:24: error: 'Door' belongs to interface 'Other', which chart 'Line' and its sub-charts do "
                    "not use [test]\n",
                    0) == 0);
-  CHECK(Checked("test \"t\" of Line { set Black = 1; }\n").test_errors() ==
-        "t.test:2:32: error: the value of 'Black' must be 'bool', not 'int' [type-mismatch]\n"
-        " test \"t\" of Line { set Black = 1; }\n"
-        "                                ^\n");
+  CHECK(Checked("test \"t\" of Line { set Black = 10ms; }\n").test_errors() ==
+        "t.test:2:32: error: the value of 'Black' must be 'bool', not 'duration' [type-mismatch]\n"
+        " test \"t\" of Line { set Black = 10ms; }\n"
+        "                                ^~~~\n");
   CHECK(Checked("test \"t\" of Line { set Count = laps; }\n").test_errors() ==
         "t.test:2:32: error: a constant expression cannot read variable 'laps' [not-constant]\n"
         " test \"t\" of Line { set Count = laps; }\n"
