@@ -3,6 +3,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstdint>
+#include <utility>
+#include <vector>
 
 namespace gfec {
 
@@ -27,50 +30,166 @@ std::string paint(const TextStyle &style, const char *sgr, std::string_view text
   return fmt::format("\33[{}m\33[K{}\33[m\33[K", sgr, text);
 }
 
+/// One character of a printed text: its bytes, and what the terminal is given for them.
+struct Shown {
+  std::uint32_t begin = 0;  ///< its first byte in the text
+  std::string text;         ///< itself, or an escape such as <U+001B>
+  bool tab = false;
+};
+
+/// A code point from a well-formed UTF-8 sequence at `at` (shortest form, no surrogate, at most
+/// U+10FFFF), with its length; length 0 if the bytes there are no such sequence.
+std::pair<std::uint32_t, std::size_t> decode_utf8(std::string_view s, std::size_t at) {
+  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(s[at + k]); };
+  const unsigned char c = byte(0);
+  const std::size_t n = c >= 0xC2 && c <= 0xDF ? 2 : c >= 0xE0 && c <= 0xEF ? 3 : c >= 0xF0 && c <= 0xF4 ? 4 : 0;
+  if (n == 0 || at + n > s.size()) return {0, 0};
+  std::uint32_t cp = c & (n == 2 ? 0x1F : n == 3 ? 0x0F : 0x07);
+  for (std::size_t k = 1; k < n; ++k) {
+    if ((byte(k) & 0xC0) != 0x80) return {0, 0};
+    cp = (cp << 6) | (byte(k) & 0x3F);
+  }
+  const bool overlong = (n == 3 && cp < 0x800) || (n == 4 && cp < 0x10000);
+  if (overlong || (cp >= 0xD800 && cp <= 0xDFFF) || cp > 0x10FFFF) return {0, 0};
+  return {cp, n};
+}
+
+/// Characters a terminal obeys or that reorder the text around them (Trojan Source): C1 controls,
+/// and the bidirectional marks, embeddings, overrides and isolates.
+bool hidden_control(std::uint32_t cp) {
+  return (cp >= 0x80 && cp <= 0x9F) || cp == 0x061C || cp == 0x200E || cp == 0x200F || (cp >= 0x202A && cp <= 0x202E) ||
+         (cp >= 0x2066 && cp <= 0x2069);
+}
+
+/// A text as it is safe to print, character by character: what a chart holds reaches the
+/// terminal as text, never as a control (an ESC sequence that recolours or rewrites the screen).
+/// As gcc's -fdiagnostics-escape-format=unicode: a control character but the tab (and, where
+/// `keep_newlines`, the newline) as <U+001B>, and a byte that is no UTF-8 as <ff>.
+std::vector<Shown> characters(std::string_view s, bool keep_newlines = false) {
+  std::vector<Shown> out;
+  for (std::size_t at = 0; at < s.size();) {
+    Shown ch;
+    ch.begin = static_cast<std::uint32_t>(at);
+    const auto c = static_cast<unsigned char>(s[at]);
+    if (c < 0x80) {
+      ch.tab = c == '\t';
+      if (c >= 0x20 && c != 0x7F) ch.text = std::string(1, static_cast<char>(c));
+      else if (ch.tab || (keep_newlines && c == '\n')) ch.text = std::string(1, static_cast<char>(c));
+      else ch.text = fmt::format("<U+{:04X}>", c);
+      ++at;
+    } else if (auto [cp, n] = decode_utf8(s, at); n > 0) {
+      ch.text = hidden_control(cp) ? fmt::format("<U+{:04X}>", cp) : std::string(s.substr(at, n));
+      at += n;
+    } else {
+      ch.text = fmt::format("<{:02x}>", c);
+      ++at;
+    }
+    out.push_back(std::move(ch));
+  }
+  return out;
+}
+
+/// The printable form of a text (a message, a file name, a fix-it).
+std::string printable(std::string_view s, bool keep_newlines = false) {
+  std::string out;
+  for (const Shown &ch : characters(s, keep_newlines)) out += ch.text;
+  return out;
+}
+
+/// The columns a printed character takes: one for a character (a tab copied as it is), the
+/// width of the escape for an escaped one.
+std::size_t width(const Shown &ch) { return ch.text.size() > 1 && ch.text[0] == '<' ? ch.text.size() : 1; }
+
+/// What goes under the printed line before byte `byte`: the line's tabs, and a space a column
+/// otherwise, so that the caret lines up with what was printed in any terminal.
+std::string indent_to(const std::vector<Shown> &line, std::uint32_t byte) {
+  std::string indent;
+  for (const Shown &ch : line) {
+    if (ch.begin >= byte) break;
+    if (ch.tab) indent += '\t';
+    else indent.append(width(ch), ' ');
+  }
+  return indent;
+}
+
+/// Lines longer than this many bytes are quoted around the range only (see quote()).
+constexpr std::uint32_t kLongLine = 240;
+/// How much of a long line is quoted before the range, and after it (or after its first
+/// kLongLine / 2 bytes, for a long range).
+constexpr std::uint32_t kContext = 60;
+
 /// The quoted source line and a caret line: '^' at the start of the range, '~' under the rest
-/// of it on that line, then the fix-it's text under it when the fix stays on that line. Tabs are
-/// copied so the caret lines up in any terminal.
+/// of it on that line, then the fix-it's text under it when the fix stays on that line. The
+/// line is printed as characters() shows it, and the caret counts its columns. Of a long line
+/// (minified JSON, a generated chart on one line) only the part around the range is quoted,
+/// cut at characters and marked "...": a diagnostic then costs the same on a line of megabytes
+/// as on a short one, however many diagnostics the line has.
 void quote(std::string &out, const SourceRange &range, const std::vector<FixIt> &fixits, const SourceManager &sources,
            const TextStyle &style) {
   const SourceFile &file = sources.file(range.file);
   LineCol begin = file.line_col(range.begin);
-  std::string_view line = file.line_text(begin.line);
-  if (line.empty() && file.text().empty()) return;
-  std::string number = std::to_string(begin.line);
-  std::size_t width = std::max<std::size_t>(4, number.size());
-  // gcc 12: " NNNN | source" and "      | ^~~" (the gutter is as wide as the line number).
-  std::string gutter = style.line_numbers ? fmt::format(" {:>{}} |", number, width) : "";
-  std::string blank = style.line_numbers ? fmt::format(" {:>{}} |", "", width) : "";
-  out += fmt::format("{} {}\n", gutter, line);
-  std::string indent;
+  std::string_view whole = file.line_text(begin.line);
+  if (whole.empty() && file.text().empty()) return;
   std::uint32_t col0 = begin.col - 1;
-  for (std::uint32_t i = 0; i < col0 && i < line.size(); ++i) indent += line[i] == '\t' ? '\t' : ' ';
-  std::string caret = "^";
   LineCol end = file.line_col(range.end);
-  std::uint32_t last = end.line == begin.line ? end.col - 1 : static_cast<std::uint32_t>(line.size());
-  if (last > col0 + 1) caret.append(std::min<std::size_t>(last, line.size() + 1) - col0 - 1, '~');
-  out += fmt::format("{} {}{}\n", blank, indent, paint(style, kGreen, caret));
+  std::uint32_t last = end.line == begin.line ? end.col - 1 : static_cast<std::uint32_t>(whole.size());
+  // The part of the line quoted: [from, to), in bytes of the line.
+  auto size = static_cast<std::uint32_t>(whole.size());
+  std::uint32_t from = 0, to = size;
+  if (size > kLongLine) {
+    std::uint32_t at = std::min(col0, size);
+    from = at > kContext ? at - kContext : 0;
+    to = std::min<std::uint32_t>(size, std::max(at, std::min(last, at + kLongLine / 2)) + kContext);
+    auto continuation = [&](std::uint32_t i) { return (static_cast<unsigned char>(whole[i]) & 0xC0) == 0x80; };
+    while (from > 0 && continuation(from)) --from;
+    while (to < size && continuation(to)) ++to;
+  }
+  std::string_view line = whole.substr(from, to - from);
+  std::string cut_before = from > 0 ? "..." : "", cut_after = to < size ? "..." : "";
+  const std::vector<Shown> shown = characters(line);
+  std::string number = std::to_string(begin.line);
+  std::size_t gutter_width = std::max<std::size_t>(4, number.size());
+  // gcc 12: " NNNN | source" and "      | ^~~" (the gutter is as wide as the line number).
+  std::string gutter = style.line_numbers ? fmt::format(" {:>{}} |", number, gutter_width) : "";
+  std::string blank = style.line_numbers ? fmt::format(" {:>{}} |", "", gutter_width) : "";
+  std::string text;
+  for (const Shown &ch : shown) text += ch.text;
+  out += fmt::format("{} {}{}{}\n", gutter, cut_before, text, cut_after);
+  // Columns and bytes from here on count from the start of the quoted part.
+  std::string pad(cut_before.size(), ' ');
+  auto local = [&](std::uint32_t byte) { return byte > from ? byte - from : 0; };
+  // The columns of the characters the range covers on this line; past its end (a missing ';'),
+  // one a byte.
+  std::size_t columns = 0;
+  for (const Shown &ch : shown)
+    if (ch.begin >= local(col0) && ch.begin < local(last)) columns += width(ch);
+  if (to == size && last > size && col0 <= size)
+    columns += std::min<std::size_t>(last, size + 1) - std::max<std::size_t>(col0, size);
+  std::string caret = "^";
+  if (columns > 1) caret.append(columns - 1, '~');
+  out += fmt::format("{} {}{}{}\n", blank, pad, indent_to(shown, local(col0)), paint(style, kGreen, caret));
   for (const FixIt &f : fixits) {
     LineCol at = file.line_col(f.range.begin);
     if (f.range.file != range.file || at.line != begin.line || f.replacement.empty()) continue;
-    std::string fix_indent;
-    for (std::uint32_t i = 0; i + 1 < at.col && i < line.size(); ++i) fix_indent += line[i] == '\t' ? '\t' : ' ';
-    out += fmt::format("{} {}{}\n", blank, fix_indent, paint(style, kGreen, f.replacement));
+    if (at.col - 1 < from || at.col - 1 > to) continue;  // outside the quoted part of a long line
+    out += fmt::format("{} {}{}{}\n", blank, pad, indent_to(shown, local(at.col - 1)),
+                       paint(style, kGreen, printable(f.replacement)));
   }
 }
 
 std::string location(const SourceRange &range, const SourceManager &sources) {
   const SourceFile &file = sources.file(range.file);
   LineCol lc = file.line_col(range.begin);
-  return fmt::format("{}:{}:{}", file.path(), lc.line, lc.col);
+  return fmt::format("{}:{}:{}", printable(file.path()), lc.line, lc.col);
 }
 
-/// gcc's string escapes for a fix-it line: backslash, quote and control characters in octal.
+/// gcc's string escapes for a fix-it line: backslash and quote escaped, and what is not
+/// printable ASCII (control characters, every byte of UTF-8 too) in octal.
 std::string escape(std::string_view s) {
   std::string out;
   for (unsigned char c : s) {
     if (c == '\\' || c == '"') out += {'\\', static_cast<char>(c)};
-    else if (c < 0x20 || c == 0x7F) out += fmt::format("\\{:03o}", c);
+    else if (c < 0x20 || c >= 0x7F) out += fmt::format("\\{:03o}", c);
     else out += static_cast<char>(c);
   }
   return out;
@@ -94,8 +213,9 @@ std::string check_label(const Diagnostic &d) {
 
 std::string render_text(const Diagnostic &d, const SourceManager &sources, const TextStyle &style) {
   const char *color = severity_color(d.severity);
-  std::string out = fmt::format("{} {} {}", paint(style, kBold, location(d.range, sources) + ":"),
-                                paint(style, color, std::string(severity_name(d.severity)) + ":"), d.message);
+  std::string out =
+      fmt::format("{} {} {}", paint(style, kBold, location(d.range, sources) + ":"),
+                  paint(style, color, std::string(severity_name(d.severity)) + ":"), printable(d.message, true));
   if (d.kind) out += fmt::format(" [{}]", paint(style, color, check_label(d)));
   out += '\n';
   quote(out, d.range, style.fixits ? d.fixits : std::vector<FixIt>{}, sources, style);
@@ -110,7 +230,7 @@ std::string render_text(const Diagnostic &d, const SourceManager &sources, const
   for (const auto &n : d.notes) {
     const SourceRange &at = n.has_range ? n.range : d.range;
     out += fmt::format("{} {} {}\n", paint(style, kBold, location(at, sources) + ":"),
-                       paint(style, severity_color(Severity::Note), "note:"), n.message);
+                       paint(style, severity_color(Severity::Note), "note:"), printable(n.message, true));
     if (n.has_range) quote(out, n.range, {}, sources, style);
   }
   return out;

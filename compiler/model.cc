@@ -36,4 +36,15 @@ std::string source_text(const Model &m, const SourceRange &range) {
   return out;
 }
 
+bool in_chart_text(const Model &m, const SourceRange &range) {
+  return !m.sources().knows(range.file) || m.sources().file(range.file).is_chart_text();
+}
+
+IdGroups<PlaceId, TransitionId> transitions_leaving(const Chart &c) {
+  std::vector<std::pair<PlaceId, TransitionId>> items;
+  for (TransitionId t : c.transitions.ids())
+    if (!c.transitions[t].inputs.empty()) items.emplace_back(c.transitions[t].inputs[0], t);
+  return IdGroups<PlaceId, TransitionId>(c.places.size(), items);
+}
+
 }  // namespace gfec::model

@@ -11,6 +11,7 @@
 #include "heap_optional.h"
 #include "heap_vector.h"
 #include "id.h"
+#include "id_groups.h"
 #include "operators.h"
 #include "small_list.h"
 #include "source.h"
@@ -346,5 +347,14 @@ private:
 /// The source text of `range` with every run of whitespace folded to one space, for pictures
 /// and exports that show a condition or a statement as written ("" if the text is unknown).
 std::string source_text(const Model &m, const SourceRange &range);
+/// Whether `range` points into chart text, which pictures and exports show as written. The ranges
+/// of an ALICA plan point into its JSON (a condition's range is a reference string or a whole JSON
+/// object), so those show the model's expression instead, as --emit=chart writes it. A model made
+/// by hand has no sources: source_text gives "" for it, as for chart text.
+bool in_chart_text(const Model &m, const SourceRange &range);
+/// The transitions of `c` by the place or state their first input is (the state an fsm
+/// transition leaves), each group in declaration order: built once, in one pass, so that
+/// whatever looks at a state's own transitions stays linear in the chart.
+IdGroups<PlaceId, TransitionId> transitions_leaving(const Chart &c);
 
 }  // namespace gfec::model

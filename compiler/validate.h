@@ -21,4 +21,10 @@ model::Model validate(ast::Program &program, const SourceManager &sources, Diagn
 /// check them; this one keeps them. A test's `elapsed(P)` marks P timed in the model.
 model::Model validate(ast::Program &program, const SourceManager &sources, Diagnostics &diag, scenario::Suite &tests);
 
+/// --context (docs/c-engine.md "Instance context"): every interface function the C engine of
+/// `chart` calls (its sub-charts' too) takes the context first, so none has a C library
+/// function's prototype: warns (-Wlibrary-function) about those named after a function gcc or
+/// clang know, which the validator let through for having the library's own prototype.
+void check_context_prototypes(const model::Model &model, model::ChartId chart, Diagnostics &diag);
+
 }  // namespace gfec

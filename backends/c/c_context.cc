@@ -8,6 +8,7 @@
 #include <cctype>
 #include <functional>
 #include <set>
+#include <utility>
 
 namespace gfec::c_backend {
 
@@ -61,7 +62,11 @@ void name_globals(Context &c, NameSpace &globals, const Context *root) {
     for (const auto *n : {&c.hooks_macro, &c.checks_macro, &c.assert_macro, &c.assert_off_macro, &c.activated_fn,
                           &c.enabled_fn, &c.place_count, &c.transition_count})
       globals.claim(*n);
+    // The guard is the engine's own: it moves aside for an interface function `ENGINE_H`.
+    c.guard = globals.take(c.guard);
+    c.macros = {c.guard, c.hooks_macro, c.checks_macro, c.assert_macro, c.assert_off_macro};
   } else {
+    c.macros = root->macros;
     c.place_count = globals.take(c.place_count);
     c.transition_count = globals.take(c.transition_count);
   }
@@ -107,6 +112,17 @@ void name_globals(Context &c, NameSpace &globals, const Context *root) {
 
 void name_fields(Context &c) {
   NameSpace fields;
+  // Never a macro's name (-DX_HOOKS would replace the field); nor, since C++ reads the header
+  // too, a name the struct uses before its fields (C++: a member "changes the meaning" of it).
+  for (const auto &m : c.macros) fields.claim(m);
+  for (const auto *used : {&c.place_type, &c.transition_type, &c.place_count, &c.transition_count, &c.team_size})
+    if (!used->empty()) fields.claim(*used);
+  // The context's type (`motor_t *`) is the last field's.
+  std::string word;
+  for (char ch : c.options.context_type + " ") {
+    if (std::isalnum(static_cast<unsigned char>(ch)) || ch == '_') word += ch;
+    else if (!word.empty()) fields.claim(std::exchange(word, ""));
+  }
   for (const auto &v : c.chart.vars) c.var_field.push_back(fields.take(v.name));
   c.av = fields.take("av");
   c.state = fields.take("state");

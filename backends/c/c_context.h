@@ -40,17 +40,20 @@ struct Context {
   std::string stop_fn;           ///< an instance's X_stop (exits of its active places, innermost first)
   std::string source_file;       ///< engine.c as #line names it (the output path as the user gave it)
   std::string header_file;       ///< engine.h, as engine.c includes it (base name)
-  std::string guard;             ///< the header's include guard
+  std::string guard;             ///< the header's include guard (free of every name the file uses)
   std::string hooks_macro;       ///< X_HOOKS: define it to get the observation hooks
   std::string checks_macro;      ///< X_CHECKS: define it to assert the postconditions of an fsm
   std::string assert_macro;      ///< X_ASSERT(cond): the checks' handler; the user's, else assert
   std::string assert_off_macro;  ///< X_ASSERT_OFF: set when X_ASSERT is assert under NDEBUG
-  std::string activated_fn;      ///< X_activated
-  std::string enabled_fn;        ///< X_enabled
-  std::string place_count;       ///< X_PLACE_COUNT
-  std::string place_type;        ///< X_place: the enum type of the places (states)
-  std::string transition_type;   ///< X_transition: the enum type of the transitions
-  std::string transition_count;  ///< X_TRANSITION_COUNT
+  /// The root's macros (the guard, X_HOOKS, X_CHECKS, X_ASSERT, X_ASSERT_OFF): a macro replaces
+  /// a name wherever it stands, so no field, parameter or other name of the file has one's name.
+  std::vector<std::string> macros;
+  std::string activated_fn;                                  ///< X_activated
+  std::string enabled_fn;                                    ///< X_enabled
+  std::string place_count;                                   ///< X_PLACE_COUNT
+  std::string place_type;                                    ///< X_place: the enum type of the places (states)
+  std::string transition_type;                               ///< X_transition: the enum type of the transitions
+  std::string transition_count;                              ///< X_TRANSITION_COUNT
   IdMap<model::PlaceId, std::string> place_const;            ///< X_<place>
   IdMap<model::TransitionId, std::string> transition_const;  ///< X_<transition>
   // The scalable form's file-local helpers (named after the enumerations, so that a place

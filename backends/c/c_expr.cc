@@ -547,11 +547,13 @@ std::string c_value(const Context &c, const Expr &e, model::Type to) {
   return closed(r.converted(r.render(e), e, to)).text;
 }
 
-std::string c_prototype(const model::Function &f, const std::string &first) {
+std::string c_prototype(const model::Function &f, const std::string &first, const std::vector<std::string> &names) {
   std::string params = first;
-  for (const auto &p : f.params) {
+  for (std::size_t i = 0; i < f.params.size(); ++i) {
+    const auto &p = f.params[i];
+    const std::string &name = i < names.size() ? names[i] : p.name;
     params += params.empty() ? "" : ", ";
-    params += p.name.empty() ? c_type(p.type) : fmt::format("{} {}", c_type(p.type), p.name);
+    params += name.empty() ? c_type(p.type) : fmt::format("{} {}", c_type(p.type), name);
   }
   return fmt::format("{} {}({})", c_type(f.result), f.name, params.empty() ? "void" : params);
 }

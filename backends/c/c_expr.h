@@ -82,8 +82,10 @@ std::string c_assertion(const Context &c, const model::Expr &e, Temporaries &tem
 std::string c_value(const Context &c, const model::Expr &e, model::Type to);
 
 /// `bool f(void)`, `void Motor(int side, float speed)`: an interface function's prototype;
-/// `first`, if not empty, is a parameter before the function's own (`void *ctx`, --context).
-std::string c_prototype(const model::Function &f, const std::string &first = "");
+/// `first`, if not empty, is a parameter before the function's own (`void *ctx`, --context);
+/// `names`, if given, the parameters' names to write instead of the declared ones.
+std::string c_prototype(const model::Function &f, const std::string &first = "",
+                        const std::vector<std::string> &names = {});
 
 /// The statements as C, one line each (empty for verbatim code), rendered before they are
 /// written so that the temporaries they need can be declared first, at the top of the block.

@@ -1,6 +1,7 @@
 // engine.h: everything the encapsulating code and the robot library need, and nothing else.
 #include "c_emit.h"
 #include "c_expr.h"
+#include "naming/naming.h"
 
 #include <fmt/format.h>
 
@@ -224,15 +225,27 @@ void hooks(CodeWriter &w, const Context &c) {
   directive(w, "#endif");
 }
 
+/// The parameters' names as the prototype writes them: the user's, but for one with a macro's
+/// name (X_HOOKS, the include guard), which takes a trailing `_` free of the others ("" for a
+/// parameter without a name).
+std::vector<std::string> param_names(const Context &c, const model::Function &f) {
+  auto is_macro = [&](const std::string &n) {
+    return std::find(c.macros.begin(), c.macros.end(), n) != c.macros.end();
+  };
+  naming::NameSpace names;
+  for (const auto &m : c.macros) names.claim(m);
+  for (const auto &p : f.params)
+    if (!is_macro(p.name)) names.claim(p.name);
+  std::vector<std::string> out;
+  for (const auto &p : f.params) out.push_back(is_macro(p.name) ? names.take(p.name) : p.name);
+  return out;
+}
+
 /// --context: the prototypes' first parameter, named apart from the function's own.
-std::string context_first(const Context &c, const model::Function &f) {
+std::string context_first(const Context &c, const std::vector<std::string> &params) {
   if (!c.has_context()) return "";
   std::string name = c.ctx_param;
-  for (bool clash = true; clash;) {
-    clash = false;
-    for (const auto &p : f.params) clash = clash || p.name == name;
-    if (clash) name += '_';
-  }
+  while (std::find(params.begin(), params.end(), name) != params.end()) name += '_';
   return c.context_param(name);
 }
 
@@ -267,7 +280,9 @@ void interface_functions(CodeWriter &w, const Context &c) {
     else w.line("/* Functions of interface {} that {}: the robot library defines them. */", iface, who);
     for (model::FunctionId f : c.functions) {
       const auto &fn = c.model.functions.at(f);
-      if (fn.interface_name == iface) w.line("{};", c_prototype(fn, context_first(c, fn)));
+      if (fn.interface_name != iface) continue;
+      const std::vector<std::string> params = param_names(c, fn);
+      w.line("{};", c_prototype(fn, context_first(c, params), params));
     }
   }
 }

@@ -84,7 +84,7 @@ private:
     if (e.binary_op == BinaryOp::Div && e.args[0].type == Type::Int && e.args[1].type == Type::Int) {
       // C's int division, except that dividing by zero ends the actor in error, not the program.
       helpers_.divide = true;
-      return {fmt::format("{}({}, {})", FormulaHelpers::kDivide, l.text, r.text)};
+      return {fmt::format("{}({}, {})", helpers_.divide_fn, l.text, r.text)};
     }
     // The model keeps the user's brackets as Paren nodes; these restore only what the tree
     // says (operators are left-associative).
@@ -110,7 +110,7 @@ private:
     // An entry converts itself; anything computed goes through the runtime's conversion.
     if (number.kind == Expr::Kind::Config) return {entry(number, "std::string")};
     helpers_.text = true;
-    return {fmt::format("{}({})", FormulaHelpers::kText, render(number).text)};
+    return {fmt::format("{}({})", helpers_.text_fn, render(number).text)};
   }
 
   static const Expr &unbracketed(const Expr &e) { return e.kind == Expr::Kind::Paren ? unbracketed(e.args.at(0)) : e; }

@@ -11,11 +11,12 @@
 namespace gfec::cpp_backend {
 
 /// The functions the generated file defines for its formulas, when some formula needs them.
+/// Named before the formulas are converted, apart from the file's classes (a template `text`).
 struct FormulaHelpers {
-  static constexpr const char *kText = "text";      ///< a number as text (the runtime's format)
-  static constexpr const char *kDivide = "divide";  ///< int / int; throws on division by zero
-  bool text = false;                                ///< some formula joins a computed number to a string
-  bool divide = false;                              ///< some formula divides an int by an int
+  std::string text_fn = "text";      ///< a number as text (the runtime's format)
+  std::string divide_fn = "divide";  ///< int / int; throws on division by zero
+  bool text = false;                 ///< some formula joins a computed number to a string
+  bool divide = false;               ///< some formula divides an int by an int
 };
 
 /// `afp::in<float>(afp::entry("walldist"))`, `afp::in<float>(-60)`, or

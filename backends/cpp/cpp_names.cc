@@ -35,11 +35,7 @@ std::string afp_type(model::Type type) {
   return "afp::Type::Int";
 }
 
-std::string identifier(const std::string &name) {
-  std::string id = name;
-  while (is_reserved(id)) id += '_';
-  return id;
-}
+std::string identifier(const std::string &name) { return naming::unreserved(name); }
 
 std::string class_name(const model::Template &t) { return identifier(t.name); }
 

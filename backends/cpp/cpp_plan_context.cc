@@ -45,6 +45,47 @@ void collect_toolboxes(PlanContext &c) {
     for (model::ToolboxId box : c.toolboxes) c.env_param[box] = "ee_" + environment_type(c.model.toolboxes[box]);
 }
 
+/// The classes and functions a factory's body names besides its locals: each plan's factory,
+/// the templates' classes, the environments' types and (once named) the formula helpers.
+std::set<std::string> global_names(const PlanContext &c) {
+  std::set<std::string> names;
+  for (const auto &w : c.plans) {
+    names.insert(w.factory);
+    const model::Plan &p = c.plan_of(w);
+    auto use = [&](model::TemplateId templ) {
+      if (templ) names.insert(class_name(c.templ(templ)));
+    };
+    for (const auto &g : p.globals) use(g.templ);
+    for (const auto &a : p.actors) {
+      use(a.templ);
+      for (const auto &s : a.supervisors) use(s.templ);
+    }
+  }
+  for (model::ToolboxId box : c.toolboxes) names.insert(environment_type(c.model.toolboxes[box]));
+  if (c.helpers.text) names.insert(c.helpers.text_fn);
+  if (c.helpers.divide) names.insert(c.helpers.divide_fn);
+  return names;
+}
+
+/// The formula helpers' names, before the formulas that call them are written: apart from the
+/// classes and factories of the file, which they would clash with at file scope.
+void name_helpers(PlanContext &c) {
+  NameSpace scope;
+  for (const auto &n : global_names(c)) scope.claim(n);
+  c.helpers.text_fn = scope.take(c.helpers.text_fn);
+  c.helpers.divide_fn = scope.take(c.helpers.divide_fn);
+}
+
+/// `plan` and `ee`, unless a class or function of the file has that name: a local or a parameter
+/// would hide it where the factory names it (`std::make_unique<plan>`).
+void name_factory_locals(PlanContext &c) {
+  NameSpace scope;
+  for (const auto &n : global_names(c)) scope.claim(n);
+  for (const char *fixed : {"afp", "std", "c"}) scope.claim(fixed);
+  c.plan_var = scope.take("plan");
+  for (model::ToolboxId box : c.toolboxes) c.env_param[box] = scope.take(c.env_param[box]);
+}
+
 std::vector<std::string> arguments(PlanContext &c, const model::Plan &p, model::TemplateId templ,
                                    const std::vector<model::Arg> &args) {
   std::vector<std::string> out;
@@ -75,25 +116,10 @@ void convert_arguments(PlanContext &c) {
 /// refers to besides its handles (classes, factories, environments, helpers, `plan`), and `c`,
 /// the formula lambdas' parameter, which would hide a handle of that name (-Wshadow).
 std::set<std::string> file_names(const PlanContext &c) {
-  std::set<std::string> names{"plan", "afp", "std", "c"};
-  for (const auto &w : c.plans) {
-    names.insert(w.factory);
-    const model::Plan &p = c.plan_of(w);
-    auto use = [&](model::TemplateId templ) {
-      if (templ) names.insert(class_name(c.templ(templ)));
-    };
-    for (const auto &g : p.globals) use(g.templ);
-    for (const auto &a : p.actors) {
-      use(a.templ);
-      for (const auto &s : a.supervisors) use(s.templ);
-    }
-  }
-  for (model::ToolboxId box : c.toolboxes) {
-    names.insert(environment_type(c.model.toolboxes[box]));
-    names.insert(c.env_param[box]);
-  }
-  if (c.helpers.text) names.insert(FormulaHelpers::kText);
-  if (c.helpers.divide) names.insert(FormulaHelpers::kDivide);
+  std::set<std::string> names = global_names(c);
+  for (const std::string &fixed : {c.plan_var, std::string("afp"), std::string("std"), std::string("c")})
+    names.insert(fixed);
+  for (model::ToolboxId box : c.toolboxes) names.insert(c.env_param[box]);
   return names;
 }
 
@@ -155,7 +181,9 @@ PlanContext make_plan_context(const model::Model &model, const model::Plan &plan
   collect_plans(c, model.plans.id_of(plan), seen);
   for (std::size_t i = 0; i + 1 < c.plans.size(); ++i) c.plans[i].internal = true;
   collect_toolboxes(c);
+  name_helpers(c);
   convert_arguments(c);
+  name_factory_locals(c);
   name_handles(c);
   return c;
 }

@@ -37,6 +37,9 @@ struct PlanContext {
   std::string source_file;  ///< plan.cpp, as #line names it (the output path as the user gave it)
   std::string header_file;  ///< plan.hpp beside it (base name, as plan.cpp includes it)
   std::string guard;        ///< the header's include guard
+  /// The factories' local holding the plan (`plan`) and, in env_param, their parameters (`ee`):
+  /// named apart from the classes and functions the factories name (a template `plan`).
+  std::string plan_var;
 
   std::vector<PlanWiring> plans;  ///< sub-plans first, each before the plans that use it; the plan compiled last
   std::vector<model::ToolboxId> toolboxes;         ///< every toolbox the file's plans use, in model order

@@ -103,7 +103,7 @@ public:
     start_and_globals();
     for (model::ActorId a : p_.actors.ids()) actor_rules(a);
     out_.back();
-    out_.put("return plan;");
+    out_.put(fmt::format("return {};", c_.plan_var));
     out_.dedent();
     out_.put("}");
   }
@@ -115,9 +115,10 @@ private:
 
   void create_plan() {
     out_.put("// **** Create Plan ****");
-    out_.from(p_.range, fmt::format("auto plan = std::make_unique<afp::Plan>({});", c_string_literal(p_.name)));
+    out_.from(p_.range,
+              fmt::format("auto {} = std::make_unique<afp::Plan>({});", c_.plan_var, c_string_literal(p_.name)));
     for (const auto &e : p_.config)
-      out_.from(e.range, fmt::format("plan->declare({}, {});", c_string_literal(e.name),
+      out_.from(e.range, fmt::format("{}->declare({}, {});", c_.plan_var, c_string_literal(e.name),
                                      e.init ? initial_value(*e.init, e.type) : afp_type(e.type)));
   }
 
@@ -128,7 +129,7 @@ private:
       const model::ActorUse &a = p_.actors[i];
       // An actor nothing refers to (possible only in a hand-made model) needs no handle.
       std::string lhs = used_[i] || !a.rules.empty() || !a.supervisors.empty() ? "auto* " + w_.actor[i] + " = " : "";
-      std::string head = fmt::format("{}plan->add_actor({}, ", lhs, c_string_literal(a.name));
+      std::string head = fmt::format("{}{}->add_actor({}, ", lhs, c_.plan_var, c_string_literal(a.name));
       if (a.subplan) {
         const PlanWiring &sub = c_.wiring_of(a.subplan);
         out_.from(a.range,
@@ -153,8 +154,8 @@ private:
 
   void supervisor(const model::SupervisorUse &s, const std::string &handle, const std::vector<std::string> &args) {
     std::string lhs = s.rules.empty() ? "" : "auto* " + handle + " = ";
-    out_.from(s.range,
-              instance(fmt::format("{}plan->add_supervisor({}, ", lhs, c_string_literal(s.name)), s.templ, args));
+    out_.from(s.range, instance(fmt::format("{}{}->add_supervisor({}, ", lhs, c_.plan_var, c_string_literal(s.name)),
+                                s.templ, args));
   }
 
   /// `head std::make_unique<Class>(ee, args...));`
@@ -169,11 +170,11 @@ private:
     out_.put(p_.globals.empty() ? "// **** Define the first actor ****"
                                 : "// **** Define the first actor and the global supervision ****");
     // The model keeps no range for `start NAME;`: the plan's own line stands for it.
-    if (p_.start) out_.from(p_.range, fmt::format("plan->define_first_actor({});", w_.actor[p_.start]));
+    if (p_.start) out_.from(p_.range, fmt::format("{}->define_first_actor({});", c_.plan_var, w_.actor[p_.start]));
     for (std::size_t g = 0; g < p_.globals.size(); ++g) {
       const model::SupervisorUse &s = p_.globals[g];
       for (const auto &r : s.rules)
-        out_.from(r.range, fmt::format("plan->define_global_supervision({}, {}, {});", w_.global[g],
+        out_.from(r.range, fmt::format("{}->define_global_supervision({}, {}, {});", c_.plan_var, w_.global[g],
                                        outcome(s.templ, {}, r.outcome), target(r.target)));
     }
   }
@@ -183,14 +184,14 @@ private:
     out_.blank();
     out_.put(fmt::format("// **** Define rules for Actor {} ****", a.name));
     for (const auto &r : a.rules)
-      out_.from(r.range, fmt::format("plan->define_subsequent({}, {}, {});", w_.actor[i],
+      out_.from(r.range, fmt::format("{}->define_subsequent({}, {}, {});", c_.plan_var, w_.actor[i],
                                      outcome(a.templ, a.subplan, r.outcome), target(r.target)));
     // Supervisors in declaration order: the order of their first rule is their check order.
     for (std::size_t s = 0; s < a.supervisors.size(); ++s) {
       const model::SupervisorUse &sup = a.supervisors[s];
       for (const auto &r : sup.rules)
-        out_.from(r.range, fmt::format("plan->define_supervision({}, {}, {}, {});", w_.actor[i], w_.local[i][s],
-                                       outcome(sup.templ, {}, r.outcome), target(r.target)));
+        out_.from(r.range, fmt::format("{}->define_supervision({}, {}, {}, {});", c_.plan_var, w_.actor[i],
+                                       w_.local[i][s], outcome(sup.templ, {}, r.outcome), target(r.target)));
     }
   }
 
@@ -221,12 +222,12 @@ void helpers(Writer &out, const FormulaHelpers &h) {
   if (h.text) {
     out.put("/// A computed number joined to a string: the runtime's conversion to text (30.0f -> \"30\").");
     out.put(fmt::format("std::string {}(const afp::Value& number) {{ return afp::convert<std::string>(number); }}",
-                        FormulaHelpers::kText));
+                        h.text_fn));
     out.blank();
   }
   if (h.divide) {
     out.put("/// int / int as in C, except that dividing by zero ends the component in error.");
-    out.put(fmt::format("int {}(int a, int b) {{", FormulaHelpers::kDivide));
+    out.put(fmt::format("int {}(int a, int b) {{", h.divide_fn));
     out.put("    if (b == 0) throw afp::Error(\"division by zero in a formula\");");
     out.put("    return a / b;");
     out.put("}");

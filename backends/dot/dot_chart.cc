@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include <vector>
+
 namespace gfec::dot {
 
 namespace {
@@ -54,26 +56,24 @@ std::string sync_bar(const std::string &id, std::size_t width) {
 
 /// The places and transitions of `c`, every node id prefixed with `id` (empty for the compiled
 /// chart); then, for each place that runs a chart, that instance in a dashed frame named after
-/// the place, linked to it by a dashed line, as Grafcet draws an enclosing step's chart.
-std::string chart_body(const model::Model &m, const model::Chart &c, const std::string &id) {
+/// the place, linked to it by a dashed line, as Grafcet draws an enclosing step's chart. Appended
+/// to `out`: an instance's text returned and copied into its parent's would be copied once per
+/// level it is nested.
+void chart_body(const model::Model &m, const model::Chart &c, const std::string &id, std::string &out) {
   bool fsm = c.kind == model::Chart::Kind::Fsm;
-  std::string out;
   out += "  // places and states, in declaration order\n";
   for (std::size_t i = 0; i < c.places.size(); ++i) out += place_node(m, c, i, id);
 
   out += "  // transitions: a bar each, its label beside it inside the same node (see transition_node)\n";
+  // An fsm's transitions counted so far by the state they leave: the rank of the next one.
+  std::vector<int> leaving(fsm ? c.places.size() : 0, 0);
   for (std::size_t i = 0; i < c.transitions.size(); ++i) {
     const model::Transition &t = c.transitions[i];
     std::string label =
         fmt::format("{}: {}", t.name, t.condition ? expr_text(m, m.charts.id_of(c), *t.condition) : "true");
     // An fsm tries the transitions leaving its state in declaration order and takes the first
     // whose condition holds: the picture numbers them so, 1 first, per state.
-    if (fsm && !t.inputs.empty()) {
-      int rank = 1;
-      for (std::size_t j = 0; j < i; ++j)
-        if (!c.transitions[j].inputs.empty() && c.transitions[j].inputs[0] == t.inputs[0]) ++rank;
-      label = fmt::format("{}. {}", rank, label);
-    }
+    if (fsm && !t.inputs.empty()) label = fmt::format("{}. {}", ++leaving.at(t.inputs[0].index()), label);
     std::string bar = fmt::format("{}t{}", id, i);
     out += transition_node(bar, label);
     std::string into = bar + ":bar", from = bar + ":bar";
@@ -99,13 +99,12 @@ std::string chart_body(const model::Model &m, const model::Chart &c, const std::
     out += fmt::format(
         "  graph [label={}, style=\"dashed,rounded\", labeljust=l];\n",
         quote(fmt::format("{}: {} {}", p.name, sub.kind == model::Chart::Kind::Fsm ? "fsm" : "sfc", sub.name)));
-    out += chart_body(m, sub, inner);
+    chart_body(m, sub, inner, out);
     out += "  }\n";
     // To the sub-chart's first place, clipped at the frame: the line reads "this step encloses that".
     if (!sub.places.empty())
       out += fmt::format("  {}p{} -> {}p0 [style=dashed, arrowhead=none, lhead=cluster_{}s{}];\n", id, i, inner, id, i);
   }
-  return out;
 }
 
 }  // namespace
@@ -122,7 +121,7 @@ std::string chart_picture(const model::Model &m, const model::Chart &c) {
   bool nested = false;
   for (const auto &p : c.places) nested = nested || p.runs;
   if (nested) out += "  compound=true;\n";  // edges may end at a sub-chart's frame
-  out += chart_body(m, c, "");
+  chart_body(m, c, "", out);
   out += "}\n";
   return out;
 }

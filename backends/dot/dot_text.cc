@@ -20,11 +20,6 @@ std::string quote(const std::string &text) {
   return out + "\"";
 }
 
-bool in_chart_text(const model::Model &m, const SourceRange &range) {
-  // A model made by hand has no sources: source_text gives "" for it, as for chart text.
-  return !m.sources().knows(range.file) || m.sources().file(range.file).is_chart_text();
-}
-
 std::string expr_text(const model::Model &m, model::ChartId chart, const model::Expr &e) {
   return in_chart_text(m, e.range) ? source_text(m, e.range) : chart_text::expr(m, chart, e);
 }

@@ -9,10 +9,8 @@ namespace gfec::dot {
 
 /// `text` as a DOT double-quoted string, quotes included. "\n" inside stays a line break.
 std::string quote(const std::string &text);
-using model::source_text;  ///< the chart text of a range, whitespace runs folded (model.h)
-/// Whether `range` points into chart text, which a label shows as written; the ranges of an ALICA
-/// plan point into its JSON (a condition's range is the whole JSON object).
-bool in_chart_text(const model::Model &m, const SourceRange &range);
+using model::in_chart_text;  ///< labels show chart text as written, an ALICA plan's as --emit=chart does
+using model::source_text;    ///< the chart text of a range, whitespace runs folded (model.h)
 /// An expression of chart `chart` for a label: as written in chart text, else (ALICA) as
 /// --emit=chart spells it (`FromPickUpToMove()`).
 std::string expr_text(const model::Model &m, model::ChartId chart, const model::Expr &e);

@@ -96,7 +96,7 @@ void chart_fields(const model::Model &m, const model::Chart &c, Json &doc) {
       j["from"] = c.places.at(t.inputs[0]).name;
       j["to"] = c.places.at(t.outputs[0]).name;
     }
-    j["when"] = t.condition ? json_backend::source_text(m, t.condition->range) : "true";
+    j["when"] = t.condition ? json_backend::expression_text(m, scope, *t.condition) : "true";
     j["condition"] = t.condition ? expression(m, scope, *t.condition) : Json(nullptr);
     j["location"] = location(m, t.range);
     transitions.push_back(std::move(j));

@@ -1,5 +1,7 @@
 #include "json_expr.h"
 
+#include "chart_expr.h"
+#include "code_writer.h"
 #include "operators.h"
 
 namespace gfec::json_backend {
@@ -36,6 +38,16 @@ const char *kind_name(Expr::Kind k) {
 template <typename IdT, typename T> std::string name_at(const Table<IdT, T> &table, IdT id) {
   if (!table.contains(id)) return "?";
   return std::string(table[id].name);
+}
+
+/// A statement's "text": as written, or (ALICA) as --emit=chart writes it, lines joined by '\n'.
+std::string statement_text(const model::Model &m, const Scope &scope, const model::Stmt &s) {
+  if (in_chart_text(m, s.range) || !scope.chart) return source_text(m, s.range);
+  CodeWriter w("", false);
+  chart_text::statements(w, m, m.charts.id_of(*scope.chart), {s});
+  std::string out = w.take();
+  while (!out.empty() && out.back() == '\n') out.pop_back();
+  return out;
 }
 
 }  // namespace
@@ -105,15 +117,21 @@ Json expression_tree(const model::Model &m, const Scope &scope, const Expr &e) {
   return j;
 }
 
+std::string expression_text(const model::Model &m, const Scope &scope, const Expr &e) {
+  if (in_chart_text(m, e.range) || !scope.chart) return source_text(m, e.range);
+  return chart_text::expr(m, m.charts.id_of(*scope.chart), e);
+}
+
 Json expression(const model::Model &m, const Scope &scope, const Expr &e) {
-  return {
-      {"text", source_text(m, e.range)}, {"type", model::type_name(e.type)}, {"tree", expression_tree(m, scope, e)}};
+  return {{"text", expression_text(m, scope, e)},
+          {"type", model::type_name(e.type)},
+          {"tree", expression_tree(m, scope, e)}};
 }
 
 Json statements(const model::Model &m, const Scope &scope, const std::vector<model::Stmt> &block) {
   Json out = Json::array();
   for (const auto &s : block) {
-    Json j = {{"text", source_text(m, s.range)}};
+    Json j = {{"text", statement_text(m, scope, s)}};
     switch (s.kind) {
     case model::Stmt::Kind::Call:
       j["kind"] = "call";

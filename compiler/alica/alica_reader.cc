@@ -122,6 +122,7 @@ public:
   void read_main(const std::string &path, std::string text) {
     std::size_t first_diagnostic = diag_.all().size();
     read_plan(path, std::move(text));
+    duplicate_members();
     // Messages quote names as "state 'X' (id N)"; an element without a name is "state (id N)".
     auto unquote = [](std::string &s) {
       for (auto at = s.find("'' (id "); at != std::string::npos; at = s.find("'' (id ", at)) s.erase(at, 3);
@@ -166,6 +167,44 @@ private:
   }
 
   SourceRange range(const Doc &d, const JsonValue &v) const { return {d.file, v.begin, v.end}; }
+
+  /// A member named twice in one object, in every file read: JSON leaves its meaning open, and
+  /// ALICA's tools disagree (its engine reads the first, its designer keeps the last). gfec reads
+  /// the first; when it read that member and the second says otherwise, what gfec makes of the
+  /// plan would differ from what the designer shows, so that is an error (docs/alica.md).
+  /// After the plan is read, since only then is it known which members gfec looked up.
+  void duplicate_members() {
+    std::vector<const Doc *> docs;
+    for (const auto &[path, doc] : docs_)
+      if (doc->root) docs.push_back(doc.get());
+    std::sort(docs.begin(), docs.end(), [](const Doc *a, const Doc *b) { return a->file < b->file; });
+    for (const Doc *doc : docs) duplicate_members(*doc, *doc->root);
+  }
+  void duplicate_members(const Doc &doc, const JsonValue &v) {
+    for (const auto &d : v.duplicates) {
+      const auto &[key, first] = v.members[d.first];
+      const JsonValue &second = v.members[d.second].second;
+      SourceRange at{doc.file, d.key_begin, d.key_end};
+      bool same = same_json(first, second);
+      Diagnostic &diagnostic =
+          first.looked_up && !same
+              ? diag_.error(at, ErrorKind::ConflictingKey,
+                            fmt::format("member \"{}\" is given a second time in this object, with another value: "
+                                        "gfec reads the first, as ALICA's engine does, but ALICA's plan designer "
+                                        "keeps this one",
+                                        key))
+              : diag_.warning(Warning::DuplicateKey, at,
+                              same ? fmt::format("member \"{}\" is given a second time in this object, with the "
+                                                 "same value",
+                                                 key)
+                                   : fmt::format("member \"{}\" is given a second time in this object, with another "
+                                                 "value; gfec does not read this member here",
+                                                 key));
+      diagnostic.note({doc.file, d.first_key_begin, d.first_key_end}, fmt::format("the first \"{}\" is here", key));
+    }
+    for (const auto &item : v.items) duplicate_members(doc, item);
+    for (const auto &m : v.members) duplicate_members(doc, m.second);
+  }
 
   /// An id that is there but is no integer ("1.5", "1e3", "x"): a located error saying so, rather
   /// than the id reading as missing further on (`what` names whose id it is). True if reported.
@@ -352,7 +391,7 @@ private:
                                               "without its task's name",
                                               file))
                   : diag_.error(at, ErrorKind::AlicaReference, fmt::format("cannot find '{}', referenced here", file));
-    suggest_file(d, file, tried);
+    suggest_file(d, file, tried, from.path);
     // The folders that exist (hold files), not every folder of every layout gfec knows.
     for (const auto &t : tried)
       if (&t == &tried.front() || !fs_.list(normal(fsys::path(t).parent_path())).empty())
@@ -375,13 +414,16 @@ private:
   }
 
   /// "did you mean 'Behaviours/GoTo.beh'?" from the files in the folders the reference was
-  /// looked for in; the first closest name wins, so the note is deterministic.
-  void suggest_file(Diagnostic &d, const std::string &file, const std::vector<std::string> &tried) {
+  /// looked for in; the first closest name wins, so the note is deterministic. Never the file that
+  /// holds the reference (a plan named like the missing one is not what it meant to run).
+  void suggest_file(Diagnostic &d, const std::string &file, const std::vector<std::string> &tried,
+                    const std::string &from) {
     std::string want = fsys::path(file).filename().string();
     std::string best;
     std::size_t best_distance = want.size() / 3 + 1;
     for (const auto &path : tried)
       for (const auto &name : fs_.list(normal(fsys::path(path).parent_path()))) {
+        if (normal(fsys::path(path).parent_path() / name) == from) continue;
         std::size_t dist = validation::edit_distance(want, name);
         if (dist < best_distance) {
           best = name;
@@ -499,19 +541,22 @@ private:
     functions_[key] = name;
     declare(name, "bool", range(doc, cond));
     element(doc, cond, fmt::format("ALICA condition '{}' (id {})", label, id));
+    condition_warnings(doc, cond, fmt::format("gfec's '{}()' takes no arguments", name));
+    return name;
+  }
+
+  /// What a condition holds that gfec's sensing functions cannot take; `why` ends each warning.
+  void condition_warnings(const Doc &doc, const JsonValue &cond, const std::string &why) {
+    std::string id = id_of(cond.find("id")).value_or("");
+    std::string label = label_of(cond);
     if (const JsonValue *q = cond.find("quantifiers"); non_empty(q))
-      ignored(doc, *q,
-              fmt::format("the quantifiers of condition '{}' (id {}) are ignored: gfec's '{}()' takes no "
-                          "arguments",
-                          label, id, name));
+      ignored(doc, *q, fmt::format("the quantifiers of condition '{}' (id {}) are ignored: {}", label, id, why));
     if (const JsonValue *v = cond.find("variables"); non_empty(v))
-      ignored(doc, *v, fmt::format("the variables of condition '{}' (id {}) are ignored", label, id));
+      ignored(doc, *v, fmt::format("the variables of condition '{}' (id {}) are ignored: {}", label, id, why));
     if (const JsonValue *v = cond.find("blackboard"); non_empty(v))
       ignored(doc, *v,
-              fmt::format("the blackboard inputs of condition '{}' (id {}) are ignored: gfec has no "
-                          "blackboard, '{}()' takes no arguments",
-                          label, id, name));
-    return name;
+              fmt::format("the blackboard inputs of condition '{}' (id {}) are ignored: gfec has no blackboard, {}",
+                          label, id, why));
   }
 
   ast::ExprPtr call(const std::string &name, const SourceRange &at) {
@@ -1006,9 +1051,11 @@ private:
         out.condition = call(condition(*c.doc, *c.object, label), range(doc, *cond));
         child_outcome_unobserved(*c.object, source, range(doc, *cond), what);
       }
-      if (non_empty(pre) && pre->is_object() &&
-          (non_empty(pre->find("quantifiers")) || non_empty(pre->find("variables"))))
-        condition(doc, *pre, label);  // only for its warnings
+      // The designer keeps writing a preCondition object beside the reference; it decides nothing,
+      // so it gets no function (which would also take a name from the conditions that are used).
+      if (pre && pre->is_object())
+        condition_warnings(doc, *pre,
+                           fmt::format("the transition's \"condition\", '{}', decides when it fires", cond->text));
     } else if (pre && pre->is_object()) {
       out.condition = child_outcome(*pre, source, range(doc, *pre));
       if (!out.condition) {

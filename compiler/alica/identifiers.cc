@@ -8,11 +8,11 @@ namespace gfec::alica {
 
 namespace {
 
-// gfec's keywords and built-ins (docs/language.md) and the names the C engine defines itself: a
-// name from them would not parse, or the validator would refuse it, or it would clash in the
-// generated code. The words C, C++ and the C headers reserve are the validator's
-// (naming::is_reserved), so that a name is renamed here exactly when the validator would refuse
-// it. ALICA allows them all ("init" is a common state name).
+// gfec's keywords and built-ins (docs/language.md): a name from them would not parse, or the
+// validator would refuse it. The words C, C++ and the C headers reserve, and the names every C
+// engine defines (a state `init` would be the constant `X_init`), are the validator's
+// (naming::is_reserved, naming::engine_names), so that a name is renamed here exactly when the
+// validator would refuse it. ALICA allows them all ("init" is a common state name).
 // clang-format off
 const char *const kReserved[] = {
     "sfc", "fsm", "plan", "toolbox", "interface", "import", "var", "const", "initial", "place", "state",
@@ -21,14 +21,13 @@ const char *const kReserved[] = {
     "false", "runs", "if", "else", "team", "test", "elapsed", "succeeded", "failed", "active", "agent",
     "tick", "set", "expect", "called", "calls", "status", "bool", "int", "float", "double", "void", "string",
     "object", "main",
-    // the engine's own members and constants
-    "init", "run", "activation", "PLACE_COUNT", "HOOKS", "CHECKS", "activated", "enabled", "TRANSITION_COUNT",
-    "set_agent", "report", "TEAM_SIZE",
 };
 // clang-format on
 
 bool reserved(const std::string &s) {
   if (naming::is_reserved(s)) return true;
+  for (const naming::EngineName &e : naming::engine_names())
+    if (e.always && s == e.suffix) return true;
   for (const char *r : kReserved)
     if (s == r) return true;
   return false;
@@ -59,9 +58,9 @@ std::string identifier(const std::string &text, const std::string &fallback) {
   }
   if (!meaningful(text) || out.empty() || out == "_") return fallback;
   if (out[0] >= '0' && out[0] <= '9') out = "N" + out;
-  if (reserved(out)) out += '_';
-  // <float.h> reserves every FLT_, DBL_ and LDBL_ name in capitals, with any number of '_' after.
-  if (reserved(out)) out += 'x';
+  // naming::unreserved moves a name C reserves (`_Bool`, `FLT_MAX`) to one it does not; a name
+  // that is only gfec's (an engine API word) takes a '_'.
+  if (reserved(out)) out = naming::is_reserved(out) ? naming::unreserved(out) : out + '_';
   return out;
 }
 

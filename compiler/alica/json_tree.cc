@@ -2,12 +2,28 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace gfec::alica {
 
 const JsonValue *JsonValue::find(std::string_view key) const {
   for (const auto &m : members)
-    if (m.first == key) return &m.second;
+    if (m.first == key) {
+      m.second.looked_up = true;
+      return &m.second;
+    }
   return nullptr;
+}
+
+bool same_json(const JsonValue &a, const JsonValue &b) {
+  if (a.kind != b.kind || a.boolean != b.boolean || a.text != b.text || a.items.size() != b.items.size() ||
+      a.members.size() != b.members.size())
+    return false;
+  for (std::size_t i = 0; i < a.items.size(); ++i)
+    if (!same_json(a.items[i], b.items[i])) return false;
+  for (std::size_t i = 0; i < a.members.size(); ++i)
+    if (a.members[i].first != b.members[i].first || !same_json(a.members[i].second, b.members[i].second)) return false;
+  return true;
 }
 
 std::string JsonValue::string_of(std::string_view key) const {
@@ -107,12 +123,15 @@ private:
       ++pos_;
       return true;
     }
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> names;  // where each member's name is
     for (;;) {
       skip_space();
       if (pos_ >= s_.size() || s_[pos_] != '"')
         return error(fmt::format("expected a member name in quotes, found {}", describe_here()));
       std::string key;
+      auto key_begin = static_cast<std::uint32_t>(pos_);
       if (!string(key)) return false;
+      names.emplace_back(key_begin, static_cast<std::uint32_t>(pos_));
       skip_space();
       if (pos_ >= s_.size() || s_[pos_] != ':')
         return error(fmt::format("expected ':' after member \"{}\", found {}", key, describe_here()));
@@ -128,10 +147,42 @@ private:
       }
       if (pos_ < s_.size() && s_[pos_] == '}') {
         ++pos_;
+        find_duplicates(v, names);
         return true;
       }
       return error(fmt::format("expected ',' or '}}' in an object, found {}", describe_here()));
     }
+  }
+
+  /// The members of `v` named like an earlier one, in file order: by comparing every pair in a
+  /// small object, and by sorting the names in a large one (a plan may hold thousands of states,
+  /// each an object; a hand-made file one object of a million members).
+  static void find_duplicates(JsonValue &v, const std::vector<std::pair<std::uint32_t, std::uint32_t>> &names) {
+    auto add = [&](std::size_t first, std::size_t second) {
+      v.duplicates.push_back(
+          {first, second, names[first].first, names[first].second, names[second].first, names[second].second});
+    };
+    const auto &m = v.members;
+    constexpr std::size_t kCompared = 32;
+    if (m.size() <= kCompared) {
+      for (std::size_t i = 1; i < m.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j)
+          if (m[j].first == m[i].first) {
+            add(j, i);
+            break;
+          }
+      return;
+    }
+    std::vector<std::size_t> order(m.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    // Stable: among members of one name, file order, so the first of a run is the first written.
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return m[a].first < m[b].first; });
+    for (std::size_t i = 1, first = order[0]; i < order.size(); ++i) {
+      if (m[order[i]].first == m[first].first) add(first, order[i]);
+      else first = order[i];
+    }
+    std::sort(v.duplicates.begin(), v.duplicates.end(),
+              [](const JsonValue::Duplicate &a, const JsonValue::Duplicate &b) { return a.second < b.second; });
   }
 
   bool array(JsonValue &v, int depth) {

@@ -1,5 +1,7 @@
 #include "analysis/activation_bounds.h"
 
+#include "id_groups.h"
+
 #include <algorithm>
 #include <cstdint>
 #include <vector>
@@ -19,12 +21,13 @@ bool find_weights(const model::Chart &c, IdMap<model::PlaceId, std::uint64_t> &w
   const std::size_t np = c.places.size(), nt = c.transitions.size();
   constexpr std::uint64_t kCap = std::uint64_t(1) << 32;
   w.assign(np, 1);
-  IdMap<model::PlaceId, std::vector<model::TransitionId>> producers(np);
+  std::vector<std::pair<model::PlaceId, model::TransitionId>> produced;  // (a place, a transition producing into it)
   std::size_t arcs = 0;
   for (model::TransitionId t : c.transitions.ids()) {
     arcs += c.transitions[t].inputs.size() + c.transitions[t].outputs.size();
-    for (model::PlaceId q : c.transitions[t].outputs) producers[q].push_back(t);
+    for (model::PlaceId q : c.transitions[t].outputs) produced.emplace_back(q, t);
   }
+  const IdGroups<model::PlaceId, model::TransitionId> producers(np, produced);
   std::vector<model::TransitionId> work(nt);
   IdMap<model::TransitionId, bool> queued(nt, true);
   for (std::size_t t = 0; t < nt; ++t) work[t] = model::TransitionId(nt - 1 - t);  // popped from the back: in order

@@ -1,6 +1,7 @@
 // An fsm's states that can never finish, and transitions that can never be the first to hold.
 #include "analysis/condition_logic.h"
 #include "analysis/passes.h"
+#include "id_groups.h"
 
 #include <fmt/format.h>
 
@@ -14,24 +15,16 @@ using model::PlaceId;
 
 bool terminal(const Chart &c, PlaceId s) { return c.places.at(s).terminal != model::Terminal::None; }
 
-/// The transitions leaving each state, in declaration order: the checks below look at a state's
-/// own transitions only, so that they stay linear in the chart (docs/performance.md).
-IdMap<PlaceId, std::vector<model::TransitionId>> leaving(const Chart &c) {
-  IdMap<PlaceId, std::vector<model::TransitionId>> out(c.places.size());
-  for (model::TransitionId t : c.transitions.ids())
-    if (!c.transitions[t].inputs.empty()) out[c.transitions[t].inputs[0]].push_back(t);
-  return out;
-}
-
 /// States reachable from `from` (forward) or reaching it (backward), over transitions that can
 /// fire. A worklist over the edges of those transitions: linear in the chart.
 IdMap<PlaceId, bool> closure(const Chart &c, std::vector<PlaceId> from, bool forward) {
-  IdMap<PlaceId, std::vector<PlaceId>> next(c.places.size());
+  std::vector<std::pair<PlaceId, PlaceId>> edges;
   for (const auto &t : c.transitions) {
     if (t.inputs.empty() || t.outputs.empty() || firing_of(t) == Firing::Never) continue;
-    if (forward) next[t.inputs[0]].push_back(t.outputs[0]);
-    else next[t.outputs[0]].push_back(t.inputs[0]);
+    if (forward) edges.emplace_back(t.inputs[0], t.outputs[0]);
+    else edges.emplace_back(t.outputs[0], t.inputs[0]);
   }
+  const IdGroups<PlaceId, PlaceId> next(c.places.size(), edges);
   IdMap<PlaceId, bool> seen(c.places.size(), false);
   for (PlaceId s : from) seen[s] = true;
   while (!from.empty()) {
@@ -76,7 +69,7 @@ void check_fsm(const model::Model & /*m*/, const Chart &c, Diagnostics &diag, st
   // Only transitions that leave the same state compare, so each is compared with the earlier
   // ones of its own state (found through `leaving`), in declaration order as before.
   std::size_t shadowed = 0;
-  const IdMap<PlaceId, std::vector<model::TransitionId>> from = leaving(c);
+  const IdGroups<PlaceId, model::TransitionId> from = model::transitions_leaving(c);
   for (model::TransitionId j : c.transitions.ids()) {
     const auto &later = c.transitions[j];
     if (later.inputs.empty() || firing_of(later) == Firing::Never) continue;

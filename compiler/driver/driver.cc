@@ -7,6 +7,7 @@
 #include "diagnostic_report.h"
 #include "pipeline/compilation.h"
 #include "safe_output.h"
+#include "validate.h"
 
 #include <fmt/format.h>
 
@@ -94,6 +95,9 @@ int compile(const Options &o, DiagnosticReport &report, std::ostream &out) {
                         ? static_cast<unsigned>(pipeline::kToolbox)
                         : pipeline::kSfc | pipeline::kFsm | pipeline::kPlan;
     c.select(request);
+    // An option of the C engine that changes its prototypes: a warning the validator cannot give.
+    if (!o.context_type.empty() && (c.target.kind & (pipeline::kSfc | pipeline::kFsm)))
+      check_context_prototypes(c.model, c.target.chart, c.diag);
     ok = !c.diag.has_errors();  // -Werror
   }
   report.add(input, c.diag, c.sources);

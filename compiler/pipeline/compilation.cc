@@ -113,7 +113,10 @@ bool Compilation::front_end(const std::string &path, const FileSystem &fs, scena
   loaded = load_program(path, load, fs, sources, diag);
   if (tests && !loaded.program.files.empty() && loaded.program.files.front())
     for (const auto &t : loaded.program.files.front()->tests) tests->written.push_back(t.name);
-  if (loaded.main_unreadable || diag.has_errors()) return false;
+  if (loaded.main_unreadable || diag.has_errors()) {
+    annotate_elements(diag, loaded);  // a JSON member named twice: which plan element it is in
+    return false;
+  }
   if (tests) model = validate(loaded.program, sources, diag, *tests);
   else model = validate(loaded.program, sources, diag);
   // The model holds all the back ends need: the syntax tree goes before they run, so a large

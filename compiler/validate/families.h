@@ -17,6 +17,9 @@ void collect_symbols(Context &cx);
 void declare_interface(Context &cx, const ast::Interface &iface);
 void declare_file_const(Context &cx, const ast::ValueDecl &decl);
 void fold_file_consts(Context &cx);
+/// Once every global name is declared: no interface function has a name the C engine of a
+/// chart defines (`P_init` for a chart P).
+void check_engine_names(Context &cx);
 
 /// validate_chart.cc: a chart's name now; its body later, once every global name is known.
 void declare_chart(Context &cx, ast::Chart &chart);
@@ -35,6 +38,9 @@ void check_fsm(Context &cx, ChartScope &chart, const ErrorWatch &watch);
 /// validate_toolbox.cc: a toolbox and its templates, checked and lowered at once (they use no
 /// other name).
 void declare_toolbox(Context &cx, const ast::Toolbox &toolbox);
+/// Once every global name is declared: the C++ classes of toolboxes (their environments and
+/// templates) clash with no other global C++ name (a plan's factory, another toolbox's class).
+void check_toolbox_classes(Context &cx);
 
 /// validate_plan.cc
 void declare_plan(Context &cx, const ast::Plan &plan);

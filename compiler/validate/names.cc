@@ -48,8 +48,15 @@ bool check_reserved(const ast::Name &name, Sym kind, Diagnostics &diag) {
   case naming::Reserved::None: return true;
   case naming::Reserved::CKeyword: what = "a keyword of C"; break;
   case naming::Reserved::CppKeyword: what = "a keyword of C++"; break;
+  case naming::Reserved::Implementation:
+    what = name.text[1] == '_' ? "reserved for the C and C++ compilers (it begins with '__')"
+                               : "reserved for the C and C++ compilers (it begins with '_' and a capital)";
+    break;
+  case naming::Reserved::Predefined: what = "a macro gcc and clang predefine (in their default GNU modes)"; break;
+  case naming::Reserved::EntryPoint: what = "the entry point of a C or C++ program"; break;
   case naming::Reserved::CLibrary: what = "a macro or type of the C headers the engine includes"; break;
   case naming::Reserved::CppLibrary: what = "a macro of the C++ standard headers a plan includes"; break;
+  case naming::Reserved::CppNamespace: what = "a namespace the C++ of a plan refers to"; break;
   }
   diag.error(name.range, ErrorKind::ReservedName,
              fmt::format("'{}' is {} and cannot name {}", name.text, what, with_article(kind)));

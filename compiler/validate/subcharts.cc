@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 
@@ -145,9 +146,16 @@ bool report_cycles(Context &cx, const std::vector<Edge> &edges) {
 
 /// How many sub-chart instances a compiled chart may embed, at every depth (docs/security.md,
 /// docs/hierarchy.md): each is a struct and a copy of its chart's code in the engine, so the
-/// engine and the compile grow with them. 4096 is far beyond any hierarchy written by hand and
-/// keeps the C back end's output of small charts within what docs/performance.md measures.
-constexpr std::uint64_t kMaxInstances = 4096;
+/// engine and the compile grow with them. 65,536 is far beyond any hierarchy written by hand; the
+/// back ends are linear in the instances, and 65,536 of a small chart compile in a few seconds
+/// (docs/performance.md, "Sub-chart instances in the C back end").
+constexpr std::uint64_t kMaxInstances = 65536;
+/// How many levels of instances a compiled chart may nest below it, as deep as imports and ALICA
+/// plans nest (docs/security.md): the back ends and the interpreter descend into an instance by
+/// recursion (a chain of 30,000 charts overflowed the stack), and an instance's names in the C
+/// engine follow its path (`Patrol_Search_Scan`), so that a chain of charts would cost the square
+/// of its length. 200 levels of 65,536 instances bound both.
+constexpr std::uint64_t kMaxDepth = 200;
 /// Where the counts stop growing: a tree of 20 levels of 10 would overflow 64 bits.
 constexpr std::uint64_t kSaturated = std::uint64_t(1) << 62;
 
@@ -159,10 +167,10 @@ std::string count_text(std::uint64_t n) {
 
 /// A chart that runs a sub-chart embeds an instance of it for every place or state that runs
 /// it, and in each instance the instances it runs in turn: ten states that each run a chart of
-/// ten states that each run ... multiply. Counts them per chart (once each, children first:
-/// linear in the charts and the `runs`), and reports every chart of the main file that embeds
-/// more than kMaxInstances and that no chart of the main file runs: the roots a compile picks.
-/// The graph has no cycle here.
+/// ten states that each run ... multiply. Counts them per chart, and how many levels they nest
+/// (once each, children first: linear in the charts and the `runs`), and reports every chart of
+/// the main file that embeds more than kMaxInstances or nests them deeper than kMaxDepth and that
+/// no chart of the main file runs: the roots a compile picks. The graph has no cycle here.
 void check_instances(Context &cx, const std::vector<Edge> &edges) {
   std::size_t n = cx.charts.size();
   IdMap<model::ChartId, std::vector<const Edge *>> out(n);
@@ -173,6 +181,7 @@ void check_instances(Context &cx, const std::vector<Edge> &edges) {
   }
   // Post-order without recursion, so a long chain of charts costs no stack.
   IdMap<model::ChartId, std::uint64_t> count(n, 0);
+  IdMap<model::ChartId, std::uint64_t> depth(n, 0);  // levels of instances below the chart; at most n
   IdMap<model::ChartId, bool> done(n, false);
   std::vector<std::pair<model::ChartId, std::size_t>> stack;  // a chart and its next edge
   for (model::ChartId root : cx.charts.ids()) {
@@ -186,7 +195,10 @@ void check_instances(Context &cx, const std::vector<Edge> &edges) {
         continue;
       }
       std::uint64_t total = 0;
-      for (const Edge *e : out[c]) total = add_saturating(total, add_saturating(1, count[e->child]));
+      for (const Edge *e : out[c]) {
+        total = add_saturating(total, add_saturating(1, count[e->child]));
+        depth[c] = std::max(depth[c], 1 + depth[e->child]);
+      }
       count[c] = total;
       done[c] = true;
       stack.pop_back();
@@ -194,7 +206,25 @@ void check_instances(Context &cx, const std::vector<Edge> &edges) {
   }
   for (model::ChartId c : cx.charts.ids()) {
     const ast::Chart &chart = *cx.charts[c];
-    if (count[c] <= kMaxInstances || run_in_main[c] || !cx.in_main_file(chart.range)) continue;
+    if (run_in_main[c] || !cx.in_main_file(chart.range)) continue;
+    const char *kind = chart.kind == ast::Chart::Kind::Fsm ? "fsm" : "sfc";
+    if (depth[c] > kMaxDepth) {
+      // The place of the chart itself that runs the deepest (the first of equals).
+      const Edge *deepest = nullptr;
+      for (const Edge *e : out[c])
+        if (!deepest || depth[e->child] > depth[deepest->child]) deepest = e;
+      const ast::Place &place = chart.places[deepest->place.index()];
+      const std::string &child = cx.model.charts[deepest->child].name;
+      cx.diag
+          .error(chart.name.range, ErrorKind::SubchartDepth,
+                 fmt::format("{} '{}' nests sub-chart instances {} levels deep, more than the {} gfec compiles", kind,
+                             chart.name.text, depth[c], kMaxDepth))
+          .note(runs_name(cx, *deepest).range,
+                fmt::format("{} '{}' runs '{}', which goes the deepest: {} levels ('{}' and the {} below it)",
+                            place.is_state ? "state" : "place", place.name.text, child, depth[c], child,
+                            depth[deepest->child]));
+    }
+    if (count[c] <= kMaxInstances) continue;
     // The place of the chart itself whose sub-chart brings the most (the first of equals).
     const Edge *most = nullptr;
     for (const Edge *e : out[c])
@@ -204,9 +234,8 @@ void check_instances(Context &cx, const std::vector<Edge> &edges) {
     const std::uint64_t brings = add_saturating(1, count[most->child]);
     cx.diag
         .error(chart.name.range, ErrorKind::SubchartInstances,
-               fmt::format("{} '{}' embeds {} sub-chart instances, more than the {} gfec compiles",
-                           chart.kind == ast::Chart::Kind::Fsm ? "fsm" : "sfc", chart.name.text, count_text(count[c]),
-                           kMaxInstances))
+               fmt::format("{} '{}' embeds {} sub-chart instances, more than the {} gfec compiles", kind,
+                           chart.name.text, count_text(count[c]), kMaxInstances))
         .note(runs_name(cx, *most).range,
               fmt::format("{} '{}' runs '{}', which brings the most: {}", place.is_state ? "state" : "place",
                           place.name.text, child, count_text(brings)) +

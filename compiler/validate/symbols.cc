@@ -41,6 +41,8 @@ void collect_symbols(Context &cx) {
   std::stable_sort(cx.global_names.begin(), cx.global_names.end(),
                    [](const auto &a, const auto &b) { return a.file > b.file; });
   for (const auto &g : cx.global_names) g.ns->declare(*g.name, g.kind, g.index, cx.diag);
+  check_engine_names(cx);
+  check_toolbox_classes(cx);
 }
 
 }  // namespace gfec::validation

@@ -5,6 +5,8 @@
 #include "validate/fold.h"
 #include "validate/types.h"
 
+#include "naming/naming.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -12,13 +14,6 @@
 namespace gfec::validation {
 
 namespace {
-
-/// Names every C engine defines as `<Chart>_<suffix>` (its API, counts, hooks and macros): a
-/// place or transition with one of these names would give its enum constant the same name.
-const char *const kEngineNames[] = {"init",  "run",    "activation", "state",   "status",          "PLACE_COUNT",
-                                    "HOOKS", "CHECKS", "activated",  "enabled", "TRANSITION_COUNT"};
-/// And those a team machine's engine adds.
-const char *const kTeamEngineNames[] = {"set_agent", "report", "TEAM_SIZE"};
 
 void set_period(Context &cx, ChartScope &s) {
   const auto &periods = s.ast.periods;
@@ -67,16 +62,16 @@ void set_team(Context &cx, ChartScope &s) {
 /// with the engine's own names or with a global C name.
 void check_generated_name(Context &cx, ChartScope &s, const ast::Name &name, const char *what) {
   std::string generated = fmt::format("{}_{}", s.out.name, name.text);
-  for (const char *reserved : kEngineNames) {
-    if (name.text != reserved) continue;
+  // The names every engine defines (naming::engine_names): the constant cannot move aside. A
+  // team machine's engine has an API of its own (docs/c-engine.md "Team machines").
+  const naming::EngineName *api = naming::engine_name(s.out.name, generated);
+  if (api && api->always && !api->team) {
     cx.diag.error(
         name.range, ErrorKind::ReservedName,
         fmt::format("{} '{}' would generate '{}', which the engine already defines", what, name.text, generated));
     return;
   }
-  // A team machine's engine has an API of its own (docs/c-engine.md "Team machines").
-  for (const char *reserved : kTeamEngineNames) {
-    if (s.ast.teams.empty() || name.text != reserved) continue;
+  if (api && api->always && !s.ast.teams.empty()) {
     cx.diag.error(name.range, ErrorKind::ReservedName,
                   fmt::format("{} '{}' would generate '{}', which the engine of a team "
                               "machine already defines",
@@ -261,6 +256,14 @@ void declare_chart(Context &cx, ast::Chart &chart) {
   cx.model.charts.push_back(std::move(out));
   cx.charts.push_back(&chart);
   cx.declare_global(cx.c_names, chart.name, Sym::Chart, index);
+  // The engine's names begin with the chart's and a `_`: a chart `_` would define `__init`.
+  const std::string init = std::string(chart.name.text) + "_init";
+  if (!chart.name.text.empty() && naming::reserved(init) == naming::Reserved::Implementation &&
+      naming::reserved(chart.name.text) == naming::Reserved::None)
+    cx.diag.error(chart.name.range, ErrorKind::ReservedName,
+                  fmt::format("chart '{}' would generate '{}', which C reserves for its compilers (it begins with "
+                              "'__')",
+                              chart.name.text, init));
 }
 
 void validate_chart(Context &cx, model::ChartId index) {

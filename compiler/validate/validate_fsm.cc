@@ -1,5 +1,6 @@
 // The rules of an fsm (§7): one initial state, terminal states that end the machine, one
 // transition per ordered pair of distinct states, and every state connected to the rest.
+#include "id_groups.h"
 #include "validate/families.h"
 
 #include <fmt/format.h>
@@ -104,11 +105,12 @@ void warn_unreachable(Context &cx, ChartScope &s, model::PlaceId initial) {
   const model::Chart &c = s.out;
   std::vector<bool> live;
   IdMap<model::PlaceId, bool> reach(c.places.size());
-  IdMap<model::PlaceId, std::vector<model::PlaceId>> next(c.places.size());  // a search, linear in the machine
+  std::vector<std::pair<model::PlaceId, model::PlaceId>> edges;  // a search, linear in the machine
   for (const auto &t : c.transitions) {
     live.push_back(constant_condition(t.condition, cx.model) != false);
-    if (live.back()) next[t.inputs[0]].push_back(t.outputs[0]);
+    if (live.back()) edges.emplace_back(t.inputs[0], t.outputs[0]);
   }
+  const IdGroups<model::PlaceId, model::PlaceId> next(c.places.size(), edges);
   std::vector<model::PlaceId> work{initial};
   reach[initial] = true;
   while (!work.empty()) {

@@ -7,7 +7,8 @@
 #   tests/bench/bench_compiler.sh GFEC GEN [SIZES...]     (default sizes: 1000 10000 100000 1000000)
 #
 # A last row compiles the 100000 ring declared backwards: no pass may rely on declaration
-# order to stay linear. Measures; never fails on time.
+# order to stay linear. Then the same for fsm chains of N states (and their --emit=dot), and for
+# fans of 1024 to 65536 sub-chart instances. Measures; never fails on time.
 set -euo pipefail
 gfec=$(realpath "$1") gen=$(realpath "$2")
 shift 2
@@ -63,3 +64,43 @@ if [[ " ${sizes[*]} " == *" 100000 "* ]]; then
   row "ring 100000 bwd" "$work/ring.sfc" "$(wc -l < "$work/ring.sfc")"
 fi
 echo "(time x: compile time over that of the size ten times smaller; linear is 10x, the target at most 12x)"
+
+# Long fsms: chains of N states (gfec_bench_gen chart chain N), each state's transitions tried in
+# declaration order; the C back end's observation hooks and --emit=dot's labels go state by state.
+header() {
+  printf "%-18s %10s %10s %11s %10s %11s %12s %11s %8s\n" "chart" "lines" "check" "check RSS" "compile" \
+    "compile RSS" "lines/s" "C output" "time x"
+}
+echo
+header
+prev_time=
+for n in "${sizes[@]}"; do
+  "$gen" chart chain "$n" > "$work/chain$n.fsm"
+  row "fsm chain $n" "$work/chain$n.fsm" "$(wc -l < "$work/chain$n.fsm")"
+done
+echo
+printf "%-18s %10s %10s %11s %8s\n" "chart" "lines" "dot" "dot RSS" "time x"
+prev_time=
+for n in "${sizes[@]}"; do
+  lines=$(wc -l < "$work/chain$n.fsm") runs=1
+  ((lines > 300000)) || runs=3
+  measure dot $runs "$gfec" --emit=dot "$work/chain$n.fsm" -o "$work/chain.dot"
+  read -r dt dm <<< "$dot"
+  growth="-"
+  [[ -z $prev_time ]] || growth=$(awk -v a="$dt" -v b="$prev_time" 'BEGIN { printf((b > 0) ? "%.1fx" : "-", a / b) }')
+  printf "%-18s %10s %9ss %8s MB %8s\n" "fsm chain $n" "$lines" "$dt" "$((dm / 1024))" "$growth"
+  prev_time=$dt
+  rm -f "$work/chain$n.fsm"
+done
+echo "(--emit=dot of the same chains)"
+
+# Sub-chart instances: a ring of N places, each running its own instance of a 3-state fsm
+# (gfec_bench_gen chart fan N), up to the 65,536 instances a chart may embed.
+echo
+header
+prev_time=
+for n in 1024 4096 16384 65536; do
+  "$gen" chart fan "$n" > "$work/fan.sfc"
+  row "fan $n" "$work/fan.sfc" "$(wc -l < "$work/fan.sfc")"
+done
+echo "(fans of N sub-chart instances; each row has 4x the instances of the one before: linear is 4x)"

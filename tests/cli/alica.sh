@@ -37,6 +37,23 @@ for expect in \
   grep -q "$expect" err || fail "missing '$expect' in: $(cat err)"
 done
 
+# A member named twice: an error where gfec reads it and the second differs, located at the second
+# name with a note at the first and the plan element it is in; a warning where it changes nothing.
+set +e
+"$gfec" --check published/etc/plans/Conflict.pml 2>err; code=$?
+set -e
+[ $code -eq 1 ] || fail "conflicting key: exit $code"
+for expect in \
+  "^published/etc/plans/Conflict.pml:9:7: error: member \"state\" is given a second time.*\[conflicting-key\]" \
+  "^published/etc/plans/Conflict.pml:7:7: note: the first \"state\" is here" \
+  "note: this is ALICA entry point .*(id 2100000000000000051) of plan 'Conflict'"; do
+  grep -q "$expect" err || fail "missing '$expect' in: $(cat err)"
+done
+"$gfec" --check published/etc/plans/Twice.pml 2>err || fail "duplicate keys that change nothing: $(cat err)"
+[ "$(grep -c 'warning: .*\[-Wduplicate-key\]' err)" = 3 ] || fail "duplicate keys: $(cat err)"
+"$gfec" --check -Wno-duplicate-key published/etc/plans/Twice.pml 2>err && [ ! -s err ] ||
+  fail "-Wno-duplicate-key: $(cat err)"
+
 # A plan compiles like a chart; -MD lists the plan, its behaviours and the task repository.
 mkdir build
 "$gfec" plans/Fetch.pml -o build/fetch.c -MD
@@ -46,6 +63,9 @@ for dep in plans/Fetch.pml plans/Behaviours/DriveToItem.beh plans/Behaviours/Pic
   grep -q "$dep" build/fetch.d || fail "-MD misses $dep: $(cat build/fetch.d)"
 done
 "$gfec" --emit=json plans/Fetch.pml -o build/fetch.json
+# The model's expressions, as --emit=chart writes them; never the JSON the condition was read from.
+grep -q '"when": "Arrived()"' build/fetch.json || fail "--emit=json: $(grep '"when"' build/fetch.json)"
+! grep -q '"\(when\|text\)": "{' build/fetch.json || fail "--emit=json writes JSON as an expression's text"
 "$gfec" --emit=dot plans/Master.pml -o build/master.dot
 grep -q "digraph" build/master.dot || fail "no DOT"
 

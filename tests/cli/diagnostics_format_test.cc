@@ -12,6 +12,7 @@
 #include <iterator>
 #include <regex>
 #include <set>
+#include <sstream>
 
 using namespace gfec;
 using Json = nlohmann::ordered_json;
@@ -140,6 +141,42 @@ TEST_CASE("text diagnostics: gcc 12's gutter, the fix-it under the caret, parsea
             .rfind("t.sfc:4:23: error: unknown place 'Stoped' [unknown-name]\n"
                    "   transition Start -> Stoped when true;\n",
                    0) == 0);
+}
+
+TEST_CASE("text diagnostics: a long line is quoted around the range, the caret under it") {
+  // A chart on one line, as a generator writes it (or an ALICA plan saved as minified JSON): a
+  // thousand places before the typo and after it. Each diagnostic quoted the whole line, so a
+  // file of one long line with many diagnostics printed their product.
+  std::string before, after;
+  for (int i = 0; i < 1000; ++i) before += "place P" + std::to_string(i) + "; ";
+  for (int i = 0; i < 1000; ++i) after += "place Q" + std::to_string(i) + "; ";
+  std::string text = "sfc T { initial place Start; place Stopped; " + before +
+                     "transition Start -> Stoped when true; transition Stopped -> Start when true; " + after + "}\n";
+  Validated r("t.sfc", text);
+  REQUIRE(!r.diag.all().empty());
+  const Diagnostic &d = r.diag.all().front();
+  REQUIRE(d.fixits.size() == 1);
+  TextStyle style;
+  style.fixits = true;
+  std::string shown = render_text(d, r.sources, style);
+  INFO(shown);
+  CHECK(shown.size() < 600);
+  std::size_t line = shown.find('\n') + 1;
+  std::size_t caret_line = shown.find('\n', line) + 1;
+  std::string quoted = shown.substr(line, caret_line - line - 1);
+  std::string carets = shown.substr(caret_line, shown.find('\n', caret_line) - caret_line);
+  CHECK(quoted.rfind(" ...", 0) == 0);
+  CHECK(quoted.size() > 3);
+  CHECK(quoted.compare(quoted.size() - 3, 3, "...") == 0);
+  // The caret is under 'Stoped', and the fix-it's text under the caret.
+  std::size_t caret = carets.find('^');
+  REQUIRE(caret != std::string::npos);
+  CHECK(quoted.compare(caret, 6, "Stoped") == 0);
+  CHECK(carets.substr(caret) == "^~~~~~");
+  CHECK(shown.find(std::string(caret, ' ') + "Stopped\n") != std::string::npos);
+  // A short line is quoted whole, as before.
+  Validated s("t.sfc", kTypo);
+  CHECK(render_text(s.diag.all().front(), s.sources).find("...") == std::string::npos);
 }
 
 TEST_CASE("text diagnostics: colours as gcc's defaults, only when asked") {
@@ -319,4 +356,51 @@ TEST_CASE("diagnostics are reported in source order: by file as loaded, then by 
   for (const Diagnostic *d : in_source_order(diag)) order.push_back(d->message);
   CHECK(order ==
         std::vector<std::string>{"first", "second", "third", "fourth: same place, found later", "fifth: another file"});
+}
+
+TEST_CASE(
+    "text diagnostics: control characters and bytes that are no UTF-8 are printed escaped, the caret on its column") {
+  // Before the error, in a comment: ESC (a terminal's escape sequence), DEL, a byte that is no
+  // UTF-8, a C1 control (CSI) and a right-to-left override; then an é, printed as it is.
+  const std::string line = "  transition Start -> /*\x1b[2J\x7f\xff\xc2\x9b\xe2\x80\xae\xc3\xa9*/ Stoped when true;";
+  Validated r("t\x1b.sfc", std::string("sfc T {\n  initial place Start;\n  place Stopped;\n") + line +
+                               "\n  transition Stopped -> Start when true;\n}\n");
+  REQUIRE(r.diag.all().size() == 1);
+  TextStyle gcc12;
+  gcc12.line_numbers = true;
+  gcc12.fixits = true;
+  const std::string out = render_text(r.diag.all().front(), r.sources, gcc12);
+  INFO(out);
+  // Nothing a terminal obeys: no control character but the newlines, no byte that is no UTF-8,
+  // no C1 control or override.
+  for (unsigned char ch : out) CHECK((ch == '\n' || (ch >= 0x20 && ch != 0x7f && ch != 0xff)));
+  CHECK(out.find("\xc2\x9b") == std::string::npos);
+  CHECK(out.find("\xe2\x80\xae") == std::string::npos);
+  // As gcc escapes them, the file name too.
+  CHECK(out.rfind("t<U+001B>.sfc:4:", 0) == 0);
+  CHECK(out.find("/*<U+001B>[2J<U+007F><ff><U+009B><U+202E>\xc3\xa9*/ Stoped") != std::string::npos);
+  // The caret and the fix-it stand under the S of Stoped as printed, a column a character.
+  std::vector<std::string> lines;
+  std::istringstream in(out);
+  for (std::string l; std::getline(in, l);) lines.push_back(l);
+  REQUIRE(lines.size() >= 4);
+  const std::string &quoted = lines[1];
+  std::size_t column = 0;  // in characters: é is two bytes and one column
+  for (std::size_t i = 0; i < quoted.find(" Stoped") + 1; ++i)
+    if ((static_cast<unsigned char>(quoted[i]) & 0xC0) != 0x80) ++column;
+  CHECK(lines[2].find('^') == column);
+  CHECK(lines[2].substr(column) == "^~~~~~");
+  CHECK(lines[3].find("Stopped") == column);
+  // The parseable fix-it writes the file name's bytes in octal, as gcc does.
+  gcc12.parseable_fixits = true;
+  CHECK(render_text(r.diag.all().front(), r.sources, gcc12).find("fix-it:\"t\\033.sfc\":{4:") != std::string::npos);
+}
+
+TEST_CASE("text diagnostics: a control character the lexer quotes is escaped in the message too") {
+  Validated r("t.sfc", "sfc T {\n  initial place A;\n  place B \xc2\x9b;\n}\n");
+  REQUIRE(!r.diag.all().empty());
+  const std::string out = render_text(r.diag.all().front(), r.sources);
+  INFO(out);
+  CHECK(out.find("unexpected character '<U+009B>'") != std::string::npos);
+  CHECK(out.find("\xc2\x9b") == std::string::npos);
 }

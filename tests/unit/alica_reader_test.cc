@@ -7,6 +7,7 @@
 #include "alica/identifiers.h"
 #include "alica/json_tree.h"
 #include "dot_chart.h"
+#include "json_backend.h"
 #include "validate.h"
 
 #include <catch2/catch.hpp>
@@ -664,7 +665,7 @@ TEST_CASE("alica: names the C headers reserve get '_' appended, as the validator
   REQUIRE(c);
   // <float.h> reserves FLT_ followed by any capitals and '_': FLT_MAX_ is taken too.
   CHECK(place_names(*c) == std::vector<std::string>{"INT_MAX_", "UINT32_MAX_", "SIZE_MAX_", "UINT64_C_", "INT8_MAX_",
-                                                    "stdout_", "_Bool_", "int_least8_t_", "FLT_MAX_x"});
+                                                    "stdout_", "g_Bool", "int_least8_t_", "FLT_MAX_x"});
   std::vector<std::string> functions;
   for (const auto &f : r.model.functions) functions.push_back(f.name);
   REQUIRE(functions.size() >= 3);
@@ -731,4 +732,165 @@ TEST_CASE("alica: ids that are no integers, unpaired surrogates and empty refere
     CHECK(r.text.find("empty.pml:3:94: error: state 'Go' (id 1) of plan 'P' (id 9) wraps an empty \"abstractPlan\": "
                       "ALICA writes a reference as \"File.ext#id\" [alica-reference]") != std::string::npos);
   }
+}
+
+// The cases below come from running gfec over the plan folders ALICA publishes (docs/alica.md,
+// "Running gfec over a folder of plans"); their fixtures are tests/alica/published/, written for
+// gfec in the formats those folders use.
+
+TEST_CASE("alica json: a member named twice is kept, with where both names are", "[alica]") {
+  std::string text = R"({ "a" : 1, "b" : [ 2 ], "a" : 1, "b" : [ 3 ] })";
+  alica::JsonError error;
+  auto v = alica::parse_json(text, error);
+  REQUIRE(v);
+  REQUIRE(v->duplicates.size() == 2);
+  const auto &a = v->duplicates[0];
+  CHECK(a.first == 0);
+  CHECK(a.second == 2);
+  CHECK(text.substr(a.first_key_begin, a.first_key_end - a.first_key_begin) == "\"a\"");
+  CHECK(a.first_key_begin == 2);
+  CHECK(a.key_begin == 24);
+  CHECK(alica::same_json(v->members[0].second, v->members[2].second));
+  CHECK(!alica::same_json(v->members[1].second, v->members[3].second));
+  CHECK(v->find("a") == &v->members[0].second);  // the first counts, as in ALICA's engine
+  SECTION("in an object too large to compare every pair of names") {
+    std::string big = "{";
+    for (int i = 0; i < 100; ++i) big += fmt::format("\"k{}\" : {}, ", i, i);
+    big += "\"k5\" : 5, \"k99\" : 0 }";
+    auto b = alica::parse_json(big, error);
+    REQUIRE(b);
+    REQUIRE(b->duplicates.size() == 2);
+    CHECK(b->duplicates[0].first == 5);
+    CHECK(b->duplicates[0].second == 100);
+    CHECK(b->duplicates[1].first == 99);
+    CHECK(b->duplicates[1].second == 101);
+    CHECK(big.substr(b->duplicates[1].key_begin, 5) == "\"k99\"");
+  }
+}
+
+TEST_CASE("alica: a member named twice is located, an error when gfec reads it and the second differs", "[alica]") {
+  SECTION("repeated, or not read by gfec: warnings at the second name, a note at the first") {
+    Run r("published/etc/plans/Twice.pml");
+    INFO(r.text);
+    REQUIRE(!r.diag.has_errors());
+    CHECK(r.diag.warning_count() == 3);
+    CHECK(r.text.find("published/etc/plans/Twice.pml:22:7: warning: member \"positionWeb\" is given a second time "
+                      "in this object, with another value; gfec does not read this member here [-Wduplicate-key]") !=
+          std::string::npos);
+    CHECK(r.text.find("published/etc/plans/Twice.pml:18:7: note: the first \"positionWeb\" is here") !=
+          std::string::npos);
+    CHECK(r.text.find("published/etc/plans/Twice.pml:27:7: warning: member \"name\" is given a second time in this "
+                      "object, with the same value [-Wduplicate-key]") != std::string::npos);
+    CHECK(r.text.find("published/etc/plans/Twice.pml:31:3: warning: member \"comment\" is given a second time in "
+                      "this object, with another value; gfec does not read this member here") != std::string::npos);
+    // The note names the element the duplicate is in, as for the validator's diagnostics.
+    CHECK(r.text.find("note: this is ALICA state 'Idle' (id 2100000000000000042)") != std::string::npos);
+    CHECK(r.chart("Twice") != nullptr);
+  }
+  SECTION("a member gfec reads, given again with another value: an error, whichever gfec took") {
+    Run r("published/etc/plans/Conflict.pml");
+    INFO(r.text);
+    CHECK(r.diag.error_count() == 1);
+    CHECK(r.text.find("published/etc/plans/Conflict.pml:9:7: error: member \"state\" is given a second time in this "
+                      "object, with another value: gfec reads the first, as ALICA's engine does, but ALICA's plan "
+                      "designer keeps this one [conflicting-key]") != std::string::npos);
+    CHECK(r.text.find("published/etc/plans/Conflict.pml:7:7: note: the first \"state\" is here") != std::string::npos);
+  }
+  SECTION("-Wno-duplicate-key silences the warnings, not the error") {
+    WarningOptions quiet;
+    quiet.set(Warning::DuplicateKey, false);
+    for (const char *plan : {"published/etc/plans/Twice.pml", "published/etc/plans/Conflict.pml"}) {
+      MemoryFileSystem mem;
+      for (const auto &[path, t] : fixture_files()) mem.add(path, t);
+      SourceManager sources;
+      Diagnostics diag(quiet);
+      load_program(plan, {}, mem, sources, diag);
+      std::string text;
+      for (const auto &d : diag.all()) text += render_text(d, sources);
+      INFO(text);
+      CHECK(diag.warning_count() == 0);
+      CHECK(diag.error_count() == (std::string(plan).find("Conflict") != std::string::npos ? 1u : 0u));
+    }
+  }
+}
+
+TEST_CASE("alica: a preCondition beside a condition reference decides nothing, and takes no function name", "[alica]") {
+  // The designer of ALICA's current repositories writes both; the reference is what the engine
+  // evaluates. The warning about the preCondition's quantifiers named a function 'Ready()' that
+  // no transition calls, and that name then went to the repository's 'Ready' as 'Ready_12'.
+  Run r("published/etc/plans/Leftover.pml");
+  INFO(r.text);
+  REQUIRE(!r.diag.has_errors());
+  std::vector<std::string> functions;
+  for (const auto &f : r.model.functions) functions.push_back(f.name);
+  CHECK(functions == std::vector<std::string>{"Wait", "Armed", "Ready"});
+  CHECK(r.diag.warning_count() == 1);
+  CHECK(r.text.find("published/etc/plans/Leftover.pml:123:24: warning: the quantifiers of condition (id "
+                    "2100000000000000030) are ignored: the transition's \"condition\", 'ConditionRepository.cnd#11', "
+                    "decides when it fires [-Walica-ignored]") != std::string::npos);
+  const model::Chart *c = r.chart("Leftover");
+  REQUIRE(c);
+  REQUIRE(c->transitions.size() == 2);
+  CHECK(c->transitions[1].condition->kind == model::Expr::Kind::Call);
+}
+
+TEST_CASE("alica: --emit=json writes a plan's conditions and actions as the model's expressions, not its JSON",
+          "[alica]") {
+  for (const char *plan : {"published/etc/plans/Leftover.pml", "plans/Fetch.pml"}) {
+    Run r(plan);
+    INFO(r.text);
+    REQUIRE(!r.diag.has_errors());
+    std::string name = fs::path(plan).stem().string();
+    EmitOptions o;
+    o.output_path = name + ".json";
+    o.source_name = plan;
+    o.chart = r.model.charts.id_of(*r.chart(name));
+    std::string json = emit_to_memory(*make_json_backend(), r.model, o).at(0).contents;
+    INFO(json.substr(0, 3000));
+    // A condition's range is a reference string or a whole preCondition object; an action's, the
+    // behaviour's reference: none of that JSON may stand for an expression or a statement.
+    CHECK(json.find(".cnd#") == std::string::npos);
+    CHECK(json.find(".beh#") == std::string::npos);
+    CHECK(json.find("\"text\": \"{") == std::string::npos);
+    CHECK(json.find("\"when\": \"{") == std::string::npos);
+    CHECK(json.find("\\\"") == std::string::npos);  // no JSON quoted inside a string
+    if (name == "Leftover") {
+      CHECK(json.find("\"when\": \"Armed()\"") != std::string::npos);
+      CHECK(json.find("\"text\": \"Ready()\"") != std::string::npos);
+      CHECK(json.find("\"text\": \"Wait();\"") != std::string::npos);
+    } else {
+      CHECK(json.find("\"when\": \"Arrived()\"") != std::string::npos);
+      CHECK(json.find("\"text\": \"DriveToItem();\"") != std::string::npos);
+    }
+  }
+}
+
+TEST_CASE("alica: a plan that cannot be found is never said to be the plan that references it", "[alica]") {
+  Run r("published/etc/plans/Serial.pml");
+  INFO(r.text);
+  CHECK(r.diag.error_count() == 1);
+  CHECK(r.text.find("error: cannot find 'SerialPart.pml', referenced here [alica-reference]") != std::string::npos);
+  CHECK(r.text.find("did you mean 'Serial.pml'") == std::string::npos);
+}
+
+TEST_CASE("alica: a plan saved as one line of JSON is quoted around each diagnostic, not whole", "[alica]") {
+  // Every diagnostic quoted the whole line: a minified plan with many of them printed the file once each.
+  Run r("published/etc/plans/Minified.pml");
+  INFO(r.text);
+  REQUIRE(!r.diag.has_errors());
+  REQUIRE(r.diag.warning_count() == 3);
+  std::string plan = test::read_file((kFixtures / "published/etc/plans/Minified.pml").string());
+  CHECK(r.text.size() < plan.size());
+  // The key mapping of the state's wrapper: the caret under its '{', in the part of the line shown.
+  std::size_t at = r.text.find("Minified.pml:1:870: warning: the blackboard key mapping of 'Wait.beh#");
+  REQUIRE(at != std::string::npos);
+  std::size_t line = r.text.find('\n', at) + 1, caret_line = r.text.find('\n', line) + 1;
+  std::string quoted = r.text.substr(line, caret_line - 1 - line);
+  std::string carets = r.text.substr(caret_line, r.text.find('\n', caret_line) - caret_line);
+  CHECK(quoted.size() < 300);
+  CHECK(quoted.rfind(" ...", 0) == 0);
+  std::size_t caret = carets.find('^');
+  REQUIRE(caret != std::string::npos);
+  CHECK(quoted.compare(caret, 9, "{\"input\":") == 0);
+  CHECK(plan.compare(869, 9, "{\"input\":") == 0);  // column 870 is that '{'
 }

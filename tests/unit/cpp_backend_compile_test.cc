@@ -28,6 +28,21 @@ std::vector<std::string> lines_of(const std::string &text) {
   return lines;
 }
 
+/// A toolbox's skeleton (header and source) and a plan's wiring (source and header), compiled
+/// from `files`: the four files a program that runs the plan starts from.
+std::vector<OutputFile> skeleton_and_wiring(const std::map<std::string, std::string> &files, const std::string &toolbox,
+                                            const std::string &skeleton_header, const std::string &plan,
+                                            const std::string &wiring_source) {
+  auto skeleton = compile(files, toolbox, skeleton_header, true);
+  auto wiring = compile(files, plan, wiring_source);
+  INFO(skeleton->errors << wiring->errors);
+  REQUIRE(skeleton->files.size() == 2);
+  REQUIRE(wiring->files.size() == 2);
+  std::vector<OutputFile> all = skeleton->files;
+  all.insert(all.end(), wiring->files.begin(), wiring->files.end());
+  return all;
+}
+
 }  // namespace
 
 TEST_CASE("cpp compile: every golden file compiles warning-free with g++ and clang++, -Wshadow too",
@@ -66,14 +81,8 @@ TEST_CASE("cpp compile: the sample plans compile against the simulator's Carbot 
 
 TEST_CASE("cpp compile: a fresh skeleton links with the wiring and fails where nothing is written yet",
           "[cpp_backend][compile]") {
-  auto files = sample_files();
-  auto skeleton = compile(files, "carbot.toolbox", "carbot_toolbox.h", true);
-  auto wiring = compile(files, "wall_follow.plan", "wall_follow.cpp");
-  INFO(skeleton->errors << wiring->errors);
-  REQUIRE(skeleton->files.size() == 2);
-  REQUIRE(wiring->files.size() == 2);
-  std::vector<OutputFile> all = skeleton->files;
-  all.insert(all.end(), wiring->files.begin(), wiring->files.end());
+  std::vector<OutputFile> all =
+      skeleton_and_wiring(sample_files(), "carbot.toolbox", "carbot_toolbox.h", "wall_follow.plan", "wall_follow.cpp");
   all.push_back({"main.cpp", "#include \"wall_follow.hpp\"\n"
                              "#include <iostream>\n"
                              "int main() {\n"
@@ -168,4 +177,24 @@ TEST_CASE("cpp compile: gfec writes plan.cpp with plan.hpp, and the skeleton's h
   CHECK(test::read_file(dir + "/square.cpp").find("#include \"carbot_toolbox.h\"") != std::string::npos);
   CHECK(test::read_file(dir + "/square.hpp").find("std::unique_ptr<afp::Plan> make_Square(Carbot& ee);") !=
         std::string::npos);
+}
+
+TEST_CASE("cpp compile: templates named like the factory's own names (ee, the formula helpers) compile",
+          "[cpp_backend][compile]") {
+  // The factory's parameter `ee`, and the helpers `text` and `divide` its formulas call, give
+  // way to the templates' classes, which cannot move: they are the toolbox contract.
+  const std::map<std::string, std::string> files = {
+      {"kit.toolbox", "toolbox Kit {\n  actor ee() -> DONE;\n  actor text(in string s) -> DONE;\n"
+                      "  actor divide(in int n) -> DONE;\n}\n"},
+      {"p.plan", "import \"kit.toolbox\";\nplan P {\n  config { int n = 7; }\n  start a;\n"
+                 "  actor a: ee() { DONE -> b; }\n  actor b: text(\"n = \" + n / 2) { DONE -> c; }\n"
+                 "  actor c: divide(n / 2) { DONE -> terminate; }\n}\n"}};
+  std::string dir =
+      write_all("names-factory", skeleton_and_wiring(files, "kit.toolbox", "kit_toolbox.h", "p.plan", "p.cpp"));
+  for (const auto &cxx : cxx_compilers())
+    for (const char *source : {"p.cpp", "kit_toolbox.cpp"}) {
+      auto r = compile_object(cxx, dir, source, {}, "-Wshadow");
+      INFO(cxx << " " << source << ":\n" << r.out);
+      CHECK(r.exit_code == 0);
+    }
 }

@@ -183,3 +183,19 @@ TEST_CASE("gfec: --context and --names are the C engine's: other back ends rejec
   CHECK(help.out.find("--context-type") != std::string::npos);
   CHECK(help.out.find("--names") != std::string::npos);
 }
+
+TEST_CASE("gfec: --context warns about a C library function's own prototype, which it changes") {
+  // sqrt(double) is the C library's until --context puts the context first (-Wlibrary-function).
+  std::string dir = scratch_dir("driver-context-library");
+  write_file(dir + "/lib.sfc",
+             "interface L { double sqrt(double x); }\nsfc P { initial place A; A -> A when sqrt(2.0) > "
+             "1.0; }\n");
+  auto plain = run_command("cd " + dir + " && " + gfec_exe + " lib.sfc -o engine.c");
+  CHECK(plain.out == "");
+  CHECK(plain.exit_code == 0);
+  auto context = run_command("cd " + dir + " && " + gfec_exe + " lib.sfc -o engine.c --context");
+  CHECK(context.out.find("warning: with --context 'sqrt' takes the context first") != std::string::npos);
+  CHECK(context.out.find("[-Wlibrary-function]") != std::string::npos);
+  CHECK(context.exit_code == 0);
+  CHECK(run_command("cd " + dir + " && " + gfec_exe + " lib.sfc -o engine.c --context -Werror").exit_code == 1);
+}

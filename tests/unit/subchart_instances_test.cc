@@ -1,5 +1,6 @@
-// The limit on the sub-chart instances a compiled chart embeds (compiler/validate/subcharts.cc,
-// docs/hierarchy.md, docs/security.md): counted per chart once, saturating, reported at the root.
+// The limits on the sub-chart instances a compiled chart embeds and on how deep they nest
+// (compiler/validate/subcharts.cc, docs/hierarchy.md, docs/security.md): counted per chart once,
+// saturating, reported at the root.
 #include "validate_fixture.h"
 
 #include <catch2/catch.hpp>
@@ -34,8 +35,8 @@ std::string binary_tower(int levels, const std::string &prefix = "P") {
 }  // namespace
 
 TEST_CASE("sub-chart instances: up to the limit compiles, one more is an error at the root", "[validate][subcharts]") {
-  // P0 embeds 2^12 - 2 = 4094; Top adds one for P0 and one for Leaf: 4096, the limit.
-  const std::string tower = binary_tower(12);
+  // P0 embeds 2^16 - 2 = 65534; Top adds one for P0 and one for Leaf: 65536, the limit.
+  const std::string tower = binary_tower(16);
   const std::string at_limit = "import \"bot.iface\";\nsfc Leaf { initial place A; }\n" + tower +
                                "sfc Top { initial place A runs P0; place B runs Leaf; A -> B when Black(); }\n";
   Validated ok({{"t.sfc", at_limit}, {"bot.iface", test::kBot}});
@@ -45,41 +46,66 @@ TEST_CASE("sub-chart instances: up to the limit compiles, one more is an error a
                            "sfc Top { initial place A runs Leaf; place B runs P0; place C runs Leaf; A -> B when "
                            "Black(); B -> C when White(); }\n";
   Validated r({{"t.sfc", over}, {"bot.iface", test::kBot}});
-  // Reported once, at Top (P0 .. P11 are run by charts of the file), with the place that
+  // Reported once, at Top (P0 .. P15 are run by charts of the file), with the place that
   // brings the most: B, not the first place.
   CHECK(headlines(r.text()) ==
-        "t.sfc:15:5: error: sfc 'Top' embeds 4097 sub-chart instances, more than the 4096 gfec compiles "
+        "t.sfc:19:5: error: sfc 'Top' embeds 65537 sub-chart instances, more than the 65536 gfec compiles "
         "[subchart-instances]\n"
-        "t.sfc:15:51: note: place 'B' runs 'P0', which brings the most: 4095 ('P0' and the 4094 it embeds)\n");
+        "t.sfc:19:51: note: place 'B' runs 'P0', which brings the most: 65535 ('P0' and the 65534 it embeds)\n");
 }
 
 TEST_CASE("sub-chart instances: counted once per chart and saturating", "[validate][subcharts]") {
   // 2^70 instances: counting them one by one would never end, and 64 bits would overflow.
   Validated r({{"t.sfc", "import \"bot.iface\";\n" + binary_tower(70)}, {"bot.iface", test::kBot}});
   CHECK(headlines(r.text()) ==
-        "t.sfc:2:5: error: sfc 'P0' embeds at least 4611686018427387904 sub-chart instances, more than the 4096 "
+        "t.sfc:2:5: error: sfc 'P0' embeds at least 4611686018427387904 sub-chart instances, more than the 65536 "
         "gfec compiles [subchart-instances]\n"
         "t.sfc:2:31: note: place 'A' runs 'P1', which brings the most: at least 4611686018427387904\n");
-  // A long chain of charts, one instance each: counted without recursion (no stack to run out
-  // of), 4096 deep is the limit, 20,000 deep over it.
-  auto chain = [](int n) {
-    std::string s = "import \"bot.iface\";\n";
-    for (int i = 0; i < n; ++i)
-      s += "sfc C" + std::to_string(i) + " { initial place A runs C" + std::to_string(i + 1) + "; }\n";
-    return s + "sfc C" + std::to_string(n) + " { initial place A; }\n";
-  };
-  Validated at_limit({{"t.sfc", chain(4096)}, {"bot.iface", test::kBot}});
+}
+
+namespace {
+
+/// Charts C0 .. C{n}, each running the next from its one place: C0 embeds n instances, n levels
+/// deep. One chart a line.
+std::string chain(int n) {
+  std::string s = "import \"bot.iface\";\n";
+  for (int i = 0; i < n; ++i)
+    s += "sfc C" + std::to_string(i) + " { initial place A runs C" + std::to_string(i + 1) + "; }\n";
+  return s + "sfc C" + std::to_string(n) + " { initial place A; }\n";
+}
+
+}  // namespace
+
+TEST_CASE("sub-chart instances: up to 200 levels deep compile, deeper is an error at the root",
+          "[validate][subcharts]") {
+  Validated at_limit({{"t.sfc", chain(200)}, {"bot.iface", test::kBot}});
   CHECK(at_limit.text() == "");
+  Validated over({{"t.sfc", chain(201)}, {"bot.iface", test::kBot}});
+  CHECK(headlines(over.text()) ==
+        "t.sfc:2:5: error: sfc 'C0' nests sub-chart instances 201 levels deep, more than the 200 gfec compiles "
+        "[subchart-depth]\n"
+        "t.sfc:2:31: note: place 'A' runs 'C1', which goes the deepest: 201 levels ('C1' and the 200 below it)\n");
+  // A long chain of charts, far fewer instances than the limit: its depth is the error, found
+  // without recursion (no stack to run out of).
   Validated deep({{"t.sfc", chain(20000)}, {"bot.iface", test::kBot}});
   CHECK(headlines(deep.text()) ==
-        "t.sfc:2:5: error: sfc 'C0' embeds 20000 sub-chart instances, more than the 4096 gfec compiles "
-        "[subchart-instances]\n"
-        "t.sfc:2:31: note: place 'A' runs 'C1', which brings the most: 20000 ('C1' and the 19999 it embeds)\n");
+        "t.sfc:2:5: error: sfc 'C0' nests sub-chart instances 20000 levels deep, more than the 200 gfec compiles "
+        "[subchart-depth]\n"
+        "t.sfc:2:31: note: place 'A' runs 'C1', which goes the deepest: 20000 levels ('C1' and the 19999 below it)\n");
+  // The note names the place that goes the deepest, not the first place; the depth is the longest
+  // way down, however many instances.
+  Validated branch({{"t.sfc", chain(200) + "sfc Top { initial place X runs C200; place Y runs C0; X -> Y when "
+                                           "Black(); }\n"},
+                    {"bot.iface", test::kBot}});
+  CHECK(headlines(branch.text()) ==
+        "t.sfc:203:5: error: sfc 'Top' nests sub-chart instances 201 levels deep, more than the 200 gfec compiles "
+        "[subchart-depth]\n"
+        "t.sfc:203:51: note: place 'Y' runs 'C0', which goes the deepest: 201 levels ('C0' and the 200 below it)\n");
 }
 
 TEST_CASE("sub-chart instances: only what the main file compiles counts", "[validate][subcharts]") {
   // An imported tower that nothing runs is no error; the main file's chart that runs it is.
-  const std::string lib = "import \"bot.iface\";\n" + binary_tower(13, "Q");
+  const std::string lib = "import \"bot.iface\";\n" + binary_tower(17, "Q");
   Validated unused(
       {{"t.sfc", "import \"lib.sfc\";\nsfc Main { initial place A; }\n"}, {"lib.sfc", lib}, {"bot.iface", test::kBot}});
   CHECK(unused.text() == "");
@@ -88,7 +114,7 @@ TEST_CASE("sub-chart instances: only what the main file compiles counts", "[vali
                   {"lib.sfc", lib},
                   {"bot.iface", test::kBot}});
   CHECK(headlines(used.text()) ==
-        "t.sfc:2:5: error: fsm 'Main' embeds 8191 sub-chart instances, more than the 4096 gfec compiles "
+        "t.sfc:2:5: error: fsm 'Main' embeds 131071 sub-chart instances, more than the 65536 gfec compiles "
         "[subchart-instances]\n"
-        "t.sfc:2:33: note: state 'A' runs 'Q0', which brings the most: 8191 ('Q0' and the 8190 it embeds)\n");
+        "t.sfc:2:33: note: state 'A' runs 'Q0', which brings the most: 131071 ('Q0' and the 131070 it embeds)\n");
 }

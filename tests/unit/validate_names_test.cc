@@ -331,3 +331,29 @@ t.iface:3:9: note: previous definition of 'Box' was here
          ^~~
 )--");
 }
+
+TEST_CASE("validate: with --context a C library function's own prototype is no longer the library's",
+          "[validate][names]") {
+  // The context comes first in every prototype of the engine (docs/c-engine.md), so sqrt(void *,
+  // double) is not the C library's sqrt, which gcc and clang know: a warning, for the functions
+  // the chart and its sub-charts call only.
+  Validated r(
+      {{"t.sfc", R"--(interface Lib { double sqrt(double x); int abs(int v); void Motor(); double fabs(double x); }
+sfc Q { initial place B { Motor(); } B -> B when abs(-1) == 1; }
+sfc P { initial place A runs Q; A -> A when sqrt(2.0) > 1.0; }
+)--"}});
+  REQUIRE(r.text().empty());
+  const model::ChartId p = r.model.charts.id_of(r.model.charts.back());
+  check_context_prototypes(r.model, p, r.fe.diag);
+  CHECK(
+      r.text() ==
+      R"--(t.sfc:1:17: warning: with --context 'sqrt' takes the context first, so it is no longer the C library's 'double sqrt(double)', which gcc or clang know: they warn about it in the engine's header [-Wlibrary-function]
+ interface Lib { double sqrt(double x); int abs(int v); void Motor(); double fabs(double x); }
+                 ^~~~~~~~~~~~~~~~~~~~~~
+t.sfc:1:17: note: rename the function, or build the engine with -fno-builtin-sqrt
+t.sfc:1:40: warning: with --context 'abs' takes the context first, so it is no longer the C library's 'int abs(int)', which gcc or clang know: they warn about it in the engine's header [-Wlibrary-function]
+ interface Lib { double sqrt(double x); int abs(int v); void Motor(); double fabs(double x); }
+                                        ^~~~~~~~~~~~~~~
+t.sfc:1:40: note: rename the function, or build the engine with -fno-builtin-abs
+)--");
+}
