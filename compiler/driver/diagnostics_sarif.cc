@@ -179,6 +179,8 @@ public:
 
   void add(const std::string &input, const Diagnostics &diag, const SourceManager &sources) override {
     log_for(input).add(diag, sources);
+    // Every file the input read (its imports too) is one no log may be written over.
+    for (FileId f = 0; f < sources.size(); ++f) read_.push_back(sources.file(f).path());
   }
   void tool_error(const std::string &input, const std::string &message, bool) override {
     log_for(input).notification("error", input, message);
@@ -199,6 +201,7 @@ public:
       files.push_back({base_name(input.empty() ? "gfec" : input) + ".sarif", text(log)});
       if (!input.empty()) inputs.push_back(input);
     }
+    inputs.insert(inputs.end(), read_.begin(), read_.end());
     return write_atomically(files, inputs);
   }
 
@@ -213,6 +216,7 @@ private:
   }
 
   std::ostream *err_;
+  std::vector<std::string> read_;
   std::vector<std::pair<std::string, SarifLog>> logs_;  ///< in input order
 };
 
