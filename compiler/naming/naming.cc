@@ -1,6 +1,7 @@
 #include "naming/naming.h"
 
 #include <algorithm>
+#include <unordered_map>
 #include <unordered_set>
 #include <vector>
 
@@ -78,21 +79,18 @@ bool matches_library_pattern(std::string_view name) {
   return false;
 }
 
-bool is_c_library_name(std::string_view name) {
-  // <limits.h>'s limits, <stddef.h>'s and <stdint.h>'s other names, <string.h>'s functions.
-  // clang-format off
-  static const std::unordered_set<std::string_view> names = {
-      "NULL", "EOF", "offsetof", "assert", "errno", "static_assert", "size_t", "ptrdiff_t", "max_align_t",
-      "intptr_t", "uintptr_t", "intmax_t", "uintmax_t", "memcpy", "memset", "memcmp", "memmove", "strlen",
-      "__bool_true_false_are_defined", "CHAR_BIT", "MB_LEN_MAX", "SIZE_MAX", "PTRDIFF_MIN", "PTRDIFF_MAX",
-      "SIG_ATOMIC_MIN", "SIG_ATOMIC_MAX", "WCHAR_MIN", "WCHAR_MAX", "WINT_MIN", "WINT_MAX", "NDEBUG",
-      "CHAR_MAX", "CHAR_MIN", "SCHAR_MAX", "SCHAR_MIN", "UCHAR_MAX", "UCHAR_MIN", "SHRT_MAX", "SHRT_MIN",
-      "USHRT_MAX", "USHRT_MIN", "LONG_MAX", "LONG_MIN", "ULONG_MAX", "ULONG_MIN", "LLONG_MAX", "LLONG_MIN",
-      "ULLONG_MAX", "ULLONG_MIN",
-  };
-  // clang-format on
-  return names.count(name) || matches_library_pattern(name);
-}
+/// <limits.h>'s limits, <stddef.h>'s and <stdint.h>'s other names, <string.h>'s functions.
+// clang-format off
+const std::unordered_set<std::string_view> kCLibraryNames = {
+    "NULL", "EOF", "offsetof", "assert", "errno", "static_assert", "size_t", "ptrdiff_t", "max_align_t",
+    "intptr_t", "uintptr_t", "intmax_t", "uintmax_t", "memcpy", "memset", "memcmp", "memmove", "strlen",
+    "__bool_true_false_are_defined", "CHAR_BIT", "MB_LEN_MAX", "SIZE_MAX", "PTRDIFF_MIN", "PTRDIFF_MAX",
+    "SIG_ATOMIC_MIN", "SIG_ATOMIC_MAX", "WCHAR_MIN", "WCHAR_MAX", "WINT_MIN", "WINT_MAX", "NDEBUG",
+    "CHAR_MAX", "CHAR_MIN", "SCHAR_MAX", "SCHAR_MIN", "UCHAR_MAX", "UCHAR_MIN", "SHRT_MAX", "SHRT_MIN",
+    "USHRT_MAX", "USHRT_MIN", "LONG_MAX", "LONG_MIN", "ULONG_MAX", "ULONG_MIN", "LLONG_MAX", "LLONG_MIN",
+    "ULLONG_MAX", "ULLONG_MIN",
+};
+// clang-format on
 
 /// Macros of the standard headers the C++ plan runtime pulls in: ISO C's <stdio.h>, <stdlib.h>,
 /// <time.h> and <errno.h> (with the POSIX error numbers C++'s <cerrno> adds), which <string>,
@@ -168,21 +166,48 @@ const std::unordered_set<std::string_view> kTemplateInherited = {"Actor", "Compu
 
 }  // namespace
 
+namespace {
+
+/// Every listed word with what it is, the first list that has it winning (`static_assert` is a
+/// keyword of C++ before a macro of <assert.h>): one hash per name, as every name of a
+/// million-place chart comes here (docs/performance.md).
+const std::unordered_map<std::string_view, Reserved> &listed_words() {
+  static const std::unordered_map<std::string_view, Reserved> words = [] {
+    std::unordered_map<std::string_view, Reserved> w;
+    auto add = [&w](const std::unordered_set<std::string_view> &list, Reserved r) {
+      for (std::string_view word : list) w.emplace(word, r);
+    };
+    add(kCKeywords, Reserved::CKeyword);
+    add(kCppKeywords, Reserved::CppKeyword);
+    add(kPredefined, Reserved::Predefined);
+    w.emplace("main", Reserved::EntryPoint);
+    add(kCLibraryNames, Reserved::CLibrary);
+    add(kCppLibrary, Reserved::CppLibrary);
+    add(kCppNamespaces, Reserved::CppNamespace);
+    return w;
+  }();
+  return words;
+}
+
+}  // namespace
+
 Reserved reserved(std::string_view word) {
-  if (kCKeywords.count(word)) return Reserved::CKeyword;
-  if (kCppKeywords.count(word)) return Reserved::CppKeyword;
+  const auto &words = listed_words();
+  const auto listed = words.find(word);
+  // Keywords first (`_Bool` is one), then the compilers' own names (`__bool_true_false_are_defined`
+  // begins with `__`), then the headers' names.
+  if (listed != words.end() && (listed->second == Reserved::CKeyword || listed->second == Reserved::CppKeyword))
+    return listed->second;
   if (is_implementation_name(word)) return Reserved::Implementation;
-  if (kPredefined.count(word)) return Reserved::Predefined;
-  if (word == "main") return Reserved::EntryPoint;
-  if (is_c_library_name(word)) return Reserved::CLibrary;
-  if (kCppLibrary.count(word)) return Reserved::CppLibrary;
-  if (kCppNamespaces.count(word)) return Reserved::CppNamespace;
+  if (listed != words.end()) return listed->second;
+  if (matches_library_pattern(word)) return Reserved::CLibrary;
   return Reserved::None;
 }
 
 std::string unreserved(std::string name) {
   if (is_implementation_name(name)) name.insert(0, "g");
-  if (is_reserved(name)) name += '_';
+  if (!is_reserved(name)) return name;
+  name += '_';
   // <float.h> reserves FLT_, DBL_ and LDBL_ followed by any capitals and '_': no '_' frees one.
   while (is_reserved(name)) name += 'x';
   return name;
