@@ -1,6 +1,7 @@
-// The run function of an sfc: one tick exactly as docs/language.md §5.1 says, laid out as GFE's
-// generated engine (Fig. 4 of the GFE paper): one conditional block per transition, then one
-// per place. Every part that a chart does not use is left out, so it costs nothing.
+// The run function of an sfc: one tick exactly as docs/language.md §5.1 says, laid out as
+// GFE's generated engines are (docs/c-engine.md "X_run for an sfc"): one conditional block per
+// transition, then one per place. Every part that a chart does not use is left out, so it costs
+// nothing.
 #include "c_emit.h"
 #include "c_run_writer.h"
 

@@ -1,4 +1,4 @@
-// plan.cpp: the wiring of a plan as the paper's Table I shows it — create the plan, its actor
+// plan.cpp: the wiring of a plan (docs/plans.md "The generated code") — create the plan, its actor
 // and supervisor instances, then the rules actor by actor — against the afp runtime's API
 // (docs/runtime.md section 7). Every statement that comes from the plan begins with a `#line`
 // to the element it comes from, so that a compiler's complaint (a toolbox class that does not
@@ -240,7 +240,7 @@ void helpers(Writer &out, const FormulaHelpers &h) {
 std::string emit_plan_source(const PlanContext &c) {
   Writer out(c);
   out.put(banner(c.options.source_name, "plan " + c.plan.name));
-  out.put("// Do not edit: change the plan and regenerate. The wiring of Table I of the Action Flow Plans paper.");
+  out.put("// Do not edit: change the plan and regenerate. The wiring is described in docs/plans.md.");
   out.raw("#include " + c_string_literal(c.header_file));
   out.blank();
   out.raw("#include <memory>");

@@ -1,4 +1,4 @@
-// Pictures: a chart or plan as Graphviz DOT in the seeds' visual language (Grafcet steps and
+// Pictures: a chart or plan as Graphviz DOT in the pictures Grafcet, ALICA and Action Flow Plans use (Grafcet steps and
 // transition bars, ALICA states, Action Flow Plan actors and supervisors), and as SVG rendered
 // by Graphviz. docs/cli.md shows what each shape means.
 #pragma once
