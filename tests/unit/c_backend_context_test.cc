@@ -354,5 +354,5 @@ int main(void)
 )C";
   // Ticks 1 and 2: ctx_ok() sees 0, then 1 step (false), and context's action steps; tick 3:
   // it sees 2 (true), names is active and does nothing.
-  CHECK(build_and_run("clash", compiled->files, harness) == "2 context names\n");
+  CHECK(build_and_run("context_clash", compiled->files, harness) == "2 context names\n");
 }
