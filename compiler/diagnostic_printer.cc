@@ -1,10 +1,11 @@
 #include "diagnostic_printer.h"
 
+#include "utf8.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cstdint>
-#include <utility>
 #include <vector>
 
 namespace gfec {
@@ -37,23 +38,6 @@ struct Shown {
   bool tab = false;
 };
 
-/// A code point from a well-formed UTF-8 sequence at `at` (shortest form, no surrogate, at most
-/// U+10FFFF), with its length; length 0 if the bytes there are no such sequence.
-std::pair<std::uint32_t, std::size_t> decode_utf8(std::string_view s, std::size_t at) {
-  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(s[at + k]); };
-  const unsigned char c = byte(0);
-  const std::size_t n = c >= 0xC2 && c <= 0xDF ? 2 : c >= 0xE0 && c <= 0xEF ? 3 : c >= 0xF0 && c <= 0xF4 ? 4 : 0;
-  if (n == 0 || at + n > s.size()) return {0, 0};
-  std::uint32_t cp = c & (n == 2 ? 0x1F : n == 3 ? 0x0F : 0x07);
-  for (std::size_t k = 1; k < n; ++k) {
-    if ((byte(k) & 0xC0) != 0x80) return {0, 0};
-    cp = (cp << 6) | (byte(k) & 0x3F);
-  }
-  const bool overlong = (n == 3 && cp < 0x800) || (n == 4 && cp < 0x10000);
-  if (overlong || (cp >= 0xD800 && cp <= 0xDFFF) || cp > 0x10FFFF) return {0, 0};
-  return {cp, n};
-}
-
 /// Characters a terminal obeys or that reorder the text around them (Trojan Source): C1 controls,
 /// and the bidirectional marks, embeddings, overrides and isolates.
 bool hidden_control(std::uint32_t cp) {
@@ -77,9 +61,10 @@ std::vector<Shown> characters(std::string_view s, bool keep_newlines = false) {
       else if (ch.tab || (keep_newlines && c == '\n')) ch.text = std::string(1, static_cast<char>(c));
       else ch.text = fmt::format("<U+{:04X}>", c);
       ++at;
-    } else if (auto [cp, n] = decode_utf8(s, at); n > 0) {
-      ch.text = hidden_control(cp) ? fmt::format("<U+{:04X}>", cp) : std::string(s.substr(at, n));
-      at += n;
+    } else if (const text::Utf8 u = text::decode_utf8(s, at); u.length > 0) {
+      ch.text =
+          hidden_control(u.code_point) ? fmt::format("<U+{:04X}>", u.code_point) : std::string(s.substr(at, u.length));
+      at += u.length;
     } else {
       ch.text = fmt::format("<{:02x}>", c);
       ++at;
