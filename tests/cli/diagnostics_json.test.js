@@ -91,3 +91,19 @@ test('gfec run: an unknown -f option is a usage error', () => {
   assert.equal(r.code, 2);
   assert.match(r.stderr, /unknown diagnostics format 'xml'/);
 });
+
+// Not JSON, but every suite here relies on it: a test process, even a failing one, leaves no
+// scratch folder behind in the temp folder.
+test('helpers: scratch folders are removed when the test process ends', () => {
+  const { spawnSync } = require('node:child_process');
+  const child = `const h = require(${JSON.stringify(path.join(__dirname, 'helpers.js'))});
+    const dir = h.scratch({ 'a.sfc': 'x' });
+    process.stdout.write(dir);
+    process.exitCode = 1;`;
+  const env = { ...process.env };
+  delete env.GFEC_KEEP_SCRATCH;
+  const r = spawnSync(process.execPath, ['-e', child], { encoding: 'utf8', env });
+  assert.equal(r.status, 1, r.stderr);
+  assert.match(r.stdout, /gfec-cli-/);
+  assert.equal(fs.existsSync(r.stdout), false, `${r.stdout} is still there`);
+});

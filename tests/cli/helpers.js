@@ -9,9 +9,18 @@ const SOURCE_DIR = process.env.GFEC_SOURCE_DIR || path.resolve(__dirname, '../..
 const GFEC = process.env.GFEC || path.join(SOURCE_DIR, 'build', 'gfec');
 const SAMPLES = path.join(SOURCE_DIR, 'samples');
 
-/** A fresh folder holding `files` ({name: text}). */
+// Every scratch folder goes when the test process ends, pass or fail, so that a suite run leaves
+// nothing behind in the temp folder. GFEC_KEEP_SCRATCH=1 keeps them for a look after a failure.
+const made = [];
+process.on('exit', () => {
+  if (process.env.GFEC_KEEP_SCRATCH === '1') return;
+  for (const dir of made) fs.rmSync(dir, { recursive: true, force: true });
+});
+
+/** A fresh folder holding `files` ({name: text}), removed when the process ends. */
 function scratch(files = {}) {
   const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'gfec-cli-'));
+  made.push(dir);
   for (const [name, text] of Object.entries(files)) fs.writeFileSync(path.join(dir, name), text);
   return dir;
 }

@@ -97,13 +97,7 @@ int main(int argc, char **argv) {
     work = (std::filesystem::temp_directory_path() / fmt::format("gfec-differential-{}", ::getpid())).string();
   const auto configs = default_configs(list);
   const bool lint = !no_lint && have("cppcheck");
-  Harness harness(work, verbose);
-  const auto start = std::chrono::steady_clock::now();
-
-  std::vector<Case> all(static_cast<std::size_t>(cases));
-  std::vector<Case *> ready;
-  std::vector<Failure> failures;
-  int undefined = 0, invalid = 0, fsm = 0, teams = 0, generated = 0, scalable = 0;
+  // Options are checked before the harness makes its scratch folder, so a refused run leaves none.
   GenOptions base;
   base.subcharts = subcharts;
   for (std::istringstream in(avoid); std::getline(in, avoid, ',');) {
@@ -117,6 +111,13 @@ int main(int argc, char **argv) {
              2;
     else return std::cerr << "gfec_differential: unknown --avoid '" << avoid << "' (known: dead-code)\n", 2;
   }
+  Harness harness(work, verbose);
+  const auto start = std::chrono::steady_clock::now();
+
+  std::vector<Case> all(static_cast<std::size_t>(cases));
+  std::vector<Case *> ready;
+  std::vector<Failure> failures;
+  int undefined = 0, invalid = 0, fsm = 0, teams = 0, generated = 0, scalable = 0;
   for (int k = 0; k < cases; ++k) {
     if (only >= 0 && k != only) continue;
     std::seed_seq s{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32),
