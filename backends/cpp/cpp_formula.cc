@@ -5,10 +5,8 @@
 
 #include <fmt/format.h>
 
-#include <cerrno>
 #include <cmath>
 #include <climits>
-#include <cstdlib>
 
 namespace gfec::cpp_backend {
 
@@ -146,10 +144,11 @@ std::string float_spelling(std::string text) {
 /// A float config value as C++ converts `float x = 0.1;`: the literal is a double, rounded to
 /// float. Spelling it `0.1f` would round the decimal to float directly, which differs in rare
 /// cases (1.00000005960464477550 is 1.0f through a double, 1.00000012f directly); so the float
-/// is computed here and written in the fewest digits that give it back exactly.
-std::string float_value(const std::string &text) {
-  const float value = static_cast<float>(std::strtod(text.c_str(), nullptr));
-  if (!std::isfinite(value)) return fmt::format("static_cast<float>({})", float_spelling(text));
+/// is computed here, from the value the model stores beside the spelling, and written in the
+/// fewest digits that give it back exactly.
+std::string float_value(const model::Expr &literal) {
+  const float value = static_cast<float>(literal.float_value);
+  if (!std::isfinite(value)) return fmt::format("static_cast<float>({})", float_spelling(literal.text.str()));
   return float_spelling(fmt::format("{}", value)) + "f";
 }
 
@@ -178,7 +177,7 @@ std::string initial_value(const model::Expr &literal, model::Type type) {
   case Type::Bool: return literal.bool_value ? "afp::Value(true)" : "afp::Value(false)";
   case Type::Int:
     return fmt::format("afp::Value({})", literal.text == "-2147483648" ? "-2147483647 - 1" : literal.text.c_str());
-  case Type::Float: return fmt::format("afp::Value({})", float_value(literal.text.str()));
+  case Type::Float: return fmt::format("afp::Value({})", float_value(literal));
   case Type::Double: return fmt::format("afp::Value({})", float_spelling(literal.text.str()));
   case Type::String: return fmt::format("afp::Value({})", c_string_literal(literal.text.str()));
   default: break;

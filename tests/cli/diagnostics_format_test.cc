@@ -3,8 +3,7 @@
 #include "diagnostics_json.h"
 #include "diagnostics_sarif.h"
 #include "diagnostic_printer.h"
-#include "loader.h"
-#include "validate.h"
+#include "pipeline/compilation.h"
 
 #include <catch2/catch.hpp>
 
@@ -13,20 +12,30 @@
 #include <regex>
 #include <set>
 #include <sstream>
+#include <utility>
 
 using namespace gfec;
 using Json = nlohmann::ordered_json;
 
 namespace {
 
-/// The front end's diagnostics for one in-memory file.
-struct Run {
-  SourceManager sources;
-  Diagnostics diag;
-  Run(const std::string &name, const std::string &text) {
-    MemoryFileSystem fs;
+/// One in-memory file through the pipeline gfec runs (compiler/pipeline/compilation.h), without
+/// the static analyses: the loader's or the validator's diagnostics.
+struct FrontEnd {
+  pipeline::Compilation c;
+  SourceManager &sources = c.sources;
+  Diagnostics &diag = c.diag;
+  /// `name` holding `text`, beside the files of `fs`.
+  FrontEnd(const std::string &name, const std::string &text, WarningOptions w = {}, MemoryFileSystem fs = {})
+      : c(options(w)) {
     fs.add(name, text);
-    load_program(name, {}, fs, sources, diag);
+    c.front_end(name, fs);
+  }
+  static pipeline::FrontEndOptions options(WarningOptions w) {
+    pipeline::FrontEndOptions f;
+    f.warnings = w;
+    f.analyze = false;
+    return f;
   }
 };
 
@@ -47,7 +56,7 @@ TEST_CASE("columns: bytes for gcc's byte-column, code points for SARIF, tabs to 
 }
 
 TEST_CASE("json diagnostics: a syntax error as gcc writes it") {
-  Run r("t.sfc", "sfc T {\n  initial place A\n}\n");
+  FrontEnd r("t.sfc", "sfc T {\n  initial place A\n}\n");
   REQUIRE(r.diag.all().size() >= 1);
   const Diagnostic &d = r.diag.all().front();
   Json j = diagnostic_to_json(d, r.sources);
@@ -63,7 +72,7 @@ TEST_CASE("json diagnostics: a syntax error as gcc writes it") {
 }
 
 TEST_CASE("sarif: a result per diagnostic, notes as related locations, rules for every check") {
-  Run r("dir/t.sfc", "sfc T {\n  initial place A\n}\n");
+  FrontEnd r("dir/t.sfc", "sfc T {\n  initial place A\n}\n");
   REQUIRE_FALSE(r.diag.all().empty());
   Diagnostic &d = const_cast<Diagnostic &>(r.diag.all().front());
   d.note(d.range, "a note at the same place");
@@ -99,18 +108,6 @@ TEST_CASE("sarif: paths become URIs") {
 
 namespace {
 
-/// Loaded and validated: the validator's diagnostics too.
-struct Validated {
-  SourceManager sources;
-  Diagnostics diag;
-  Validated(const std::string &name, const std::string &text, WarningOptions w = {}) : diag(w) {
-    MemoryFileSystem fs;
-    fs.add(name, text);
-    LoadResult loaded = load_program(name, {}, fs, sources, diag);
-    if (!diag.has_errors()) validate(loaded.program, sources, diag);
-  }
-};
-
 // A misspelt place: did-you-mean knows the fix, so the error carries a fix-it.
 const char *kTypo = "sfc T {\n  initial place Start;\n  place Stopped;\n"
                     "  transition Start -> Stoped when true;\n  transition Stopped -> Start when true;\n}\n";
@@ -118,7 +115,7 @@ const char *kTypo = "sfc T {\n  initial place Start;\n  place Stopped;\n"
 }  // namespace
 
 TEST_CASE("text diagnostics: gcc 12's gutter, the fix-it under the caret, parseable fix-its") {
-  Validated r("t.sfc", kTypo);
+  FrontEnd r("t.sfc", kTypo);
   REQUIRE(r.diag.all().size() == 1);
   const Diagnostic &d = r.diag.all().front();
   REQUIRE(d.fixits.size() == 1);
@@ -152,7 +149,7 @@ TEST_CASE("text diagnostics: a long line is quoted around the range, the caret u
   for (int i = 0; i < 1000; ++i) after += "place Q" + std::to_string(i) + "; ";
   std::string text = "sfc T { initial place Start; place Stopped; " + before +
                      "transition Start -> Stoped when true; transition Stopped -> Start when true; " + after + "}\n";
-  Validated r("t.sfc", text);
+  FrontEnd r("t.sfc", text);
   REQUIRE(!r.diag.all().empty());
   const Diagnostic &d = r.diag.all().front();
   REQUIRE(d.fixits.size() == 1);
@@ -175,12 +172,12 @@ TEST_CASE("text diagnostics: a long line is quoted around the range, the caret u
   CHECK(carets.substr(caret) == "^~~~~~");
   CHECK(shown.find(std::string(caret, ' ') + "Stopped\n") != std::string::npos);
   // A short line is quoted whole, as before.
-  Validated s("t.sfc", kTypo);
+  FrontEnd s("t.sfc", kTypo);
   CHECK(render_text(s.diag.all().front(), s.sources).find("...") == std::string::npos);
 }
 
 TEST_CASE("text diagnostics: colours as gcc's defaults, only when asked") {
-  Validated r("t.sfc", kTypo);
+  FrontEnd r("t.sfc", kTypo);
   TextStyle colour;
   colour.color = true;
   std::string text = render_text(r.diag.all().front(), r.sources, colour);
@@ -193,7 +190,7 @@ TEST_CASE("text diagnostics: colours as gcc's defaults, only when asked") {
 TEST_CASE("text diagnostics: -Werror's label is gcc's [-Werror=NAME]; the check stays the rule") {
   WarningOptions w;
   w.error_override[static_cast<int>(Warning::UnreachablePlace)] = 1;
-  Validated r("t.sfc", "sfc T {\n  initial place A;\n  place B;\n}\n", w);
+  FrontEnd r("t.sfc", "sfc T {\n  initial place A;\n  place B;\n}\n", w);
   REQUIRE(r.diag.all().size() == 1);
   CHECK(r.diag.all()[0].severity == Severity::Error);
   CHECK(render_text(r.diag.all()[0], r.sources).find("never become active [-Werror=unreachable-place]\n") !=
@@ -213,7 +210,7 @@ TEST_CASE("text diagnostics: -Werror's label is gcc's [-Werror=NAME]; the check 
 }
 
 TEST_CASE("json and sarif diagnostics: the fix-it as gcc's fixits and SARIF's fixes") {
-  Validated r("t.sfc", kTypo);
+  FrontEnd r("t.sfc", kTypo);
   const Diagnostic &d = r.diag.all().front();
   Json j = diagnostic_to_json(d, r.sources);
   REQUIRE(j["fixits"].size() == 1);
@@ -247,16 +244,12 @@ namespace {
 
 /// The first diagnostic of a chart, rendered with its fix-its as gcc's parseable lines.
 std::string first_error(const std::string &text, MemoryFileSystem fs = {}) {
-  SourceManager sources;
-  Diagnostics diag;
-  fs.add("t.sfc", text);
-  LoadResult loaded = load_program("t.sfc", {}, fs, sources, diag);
-  if (!diag.has_errors()) validate(loaded.program, sources, diag);
-  if (diag.all().empty()) return "(no diagnostic)";
+  FrontEnd r("t.sfc", text, {}, std::move(fs));
+  if (r.diag.all().empty()) return "(no diagnostic)";
   TextStyle style;
   style.fixits = true;
   style.parseable_fixits = true;
-  return render_text(diag.all().front(), sources, style);
+  return render_text(r.diag.all().front(), r.sources, style);
 }
 
 }  // namespace
@@ -363,8 +356,8 @@ TEST_CASE(
   // Before the error, in a comment: ESC (a terminal's escape sequence), DEL, a byte that is no
   // UTF-8, a C1 control (CSI) and a right-to-left override; then an é, printed as it is.
   const std::string line = "  transition Start -> /*\x1b[2J\x7f\xff\xc2\x9b\xe2\x80\xae\xc3\xa9*/ Stoped when true;";
-  Validated r("t\x1b.sfc", std::string("sfc T {\n  initial place Start;\n  place Stopped;\n") + line +
-                               "\n  transition Stopped -> Start when true;\n}\n");
+  FrontEnd r("t\x1b.sfc", std::string("sfc T {\n  initial place Start;\n  place Stopped;\n") + line +
+                              "\n  transition Stopped -> Start when true;\n}\n");
   REQUIRE(r.diag.all().size() == 1);
   TextStyle gcc12;
   gcc12.line_numbers = true;
@@ -397,7 +390,7 @@ TEST_CASE(
 }
 
 TEST_CASE("text diagnostics: a control character the lexer quotes is escaped in the message too") {
-  Validated r("t.sfc", "sfc T {\n  initial place A;\n  place B \xc2\x9b;\n}\n");
+  FrontEnd r("t.sfc", "sfc T {\n  initial place A;\n  place B \xc2\x9b;\n}\n");
   REQUIRE(!r.diag.all().empty());
   const std::string out = render_text(r.diag.all().front(), r.sources);
   INFO(out);

@@ -1,11 +1,9 @@
 #include "fuzz_support.h"
 
-#include "analysis/activation_bounds.h"
 #include "analysis/analysis.h"
 #include "diagnostic_printer.h"
 #include "interpreter/engine.h"
-#include "loader.h"
-#include "validate.h"
+#include "pipeline/compilation.h"
 #ifdef GFEC_FUZZ_C_BACKEND
 #include "c_backend.h"
 #endif
@@ -234,20 +232,19 @@ std::string check_one(const std::string &input) {
   fs.add("fuzz.sfc", input.substr(0, split));
   if (split != std::string::npos) fs.add("b.sfc", input.substr(split + separator.size()));
 
-  SourceManager sources;
-  WarningOptions all;
-  for (int i = 0; i < static_cast<int>(Warning::Count_); ++i) all.set(static_cast<Warning>(i), true);
-  Diagnostics diag(all, 1000);
-  LoadResult loaded = load_program("fuzz.sfc", {}, fs, sources, diag);
-  model::Model m;
+  // The pipeline gfec runs (compiler/pipeline/compilation.h), every warning on; the analyses
+  // run below with small limits instead, so that one input stays fast.
+  pipeline::FrontEndOptions options;
+  for (int i = 0; i < static_cast<int>(Warning::Count_); ++i) options.warnings.set(static_cast<Warning>(i), true);
+  options.error_limit = 1000;
+  options.analyze = false;
+  pipeline::Compilation compilation(options);
+  const bool validated = compilation.front_end("fuzz.sfc", fs);
+  const SourceManager &sources = compilation.sources;
+  const Diagnostics &diag = compilation.diag;
+  const model::Model &m = compilation.model;
+  const WarningOptions &all = options.warnings;
   std::string printed;
-  bool validated = false;
-  if (!diag.has_errors()) {
-    m = validate(loaded.program, sources, diag);
-    validated = !diag.has_errors();
-    // The facts the pipeline records for the back ends (compiler/pipeline/compilation.cc).
-    if (validated) analysis::record_activation_bounds(m);
-  }
   for (const Diagnostic &d : diag.all()) {
     check_range(sources, d.range, "a diagnostic's range lies in its file");
     for (const auto &n : d.notes)

@@ -35,21 +35,16 @@ std::map<std::string, std::string> fixture_files() {
 }
 
 /// The front end and the validator over the fixtures (plus `extra`), from `main`.
-struct Run {
-  SourceManager sources;
-  Diagnostics diag;
-  LoadResult loaded;
-  model::Model model;
+struct Run : test::Pipeline {
   std::string text;
 
-  explicit Run(const std::string &main, const std::map<std::string, std::string> &extra = {}) {
+  explicit Run(const std::string &main, const std::map<std::string, std::string> &extra = {})
+      : Pipeline(main, files(extra)), text(Pipeline::text()) {}
+  static MemoryFileSystem files(const std::map<std::string, std::string> &extra) {
     MemoryFileSystem mem;
     for (const auto &[path, t] : fixture_files()) mem.add(path, t);
     for (const auto &[path, t] : extra) mem.add(path, t);
-    loaded = load_program(main, {}, mem, sources, diag);
-    if (!diag.has_errors()) model = validate(loaded.program, sources, diag);
-    annotate_elements(diag, loaded);
-    for (const auto &d : diag.all()) text += render_text(d, sources);
+    return mem;
   }
   const model::Chart *chart(const std::string &name) const {
     for (const auto &c : model.charts)
@@ -159,9 +154,7 @@ TEST_CASE("alica: a plan with one entry point becomes an fsm with its states and
   CHECK(m->transitions[2].condition->kind == model::Expr::Kind::Failed);
   // The state holding Fetch.pml runs Fetch's machine (a sub-chart), read from its own file.
   CHECK(m->places[1].runs.valid());
-  const ast::Place &fetch_item = r.loaded.program.files[0]->charts[0].places[1];
-  REQUIRE(fetch_item.runs());
-  CHECK(fetch_item.runs()->text == "Fetch");
+  CHECK(r.model.charts.at(m->places[1].runs).name == "Fetch");
   const model::Chart *fetch = r.chart("Fetch");
   REQUIRE(fetch);
   CHECK(!fetch->in_main_file);
@@ -186,11 +179,10 @@ TEST_CASE("alica: a plan with several entry points becomes an sfc whose initial 
   CHECK(place_names(*team) == std::vector<std::string>{"Leader", "Helper"});
   CHECK(team->places[0].initial);
   CHECK(team->places[1].initial);
-  const auto &places = r.loaded.program.files[0]->charts[0].places;
-  REQUIRE(places[0].runs());
-  CHECK(places[0].runs()->text == "TeamLeader");
-  REQUIRE(places[1].runs());
-  CHECK(places[1].runs()->text == "TeamHelper");
+  REQUIRE(team->places[0].runs.valid());
+  CHECK(r.model.charts.at(team->places[0].runs).name == "TeamLeader");
+  REQUIRE(team->places[1].runs.valid());
+  CHECK(r.model.charts.at(team->places[1].runs).name == "TeamHelper");
   const model::Chart *leader = r.chart("TeamLeader");
   const model::Chart *helper = r.chart("TeamHelper");
   REQUIRE(leader);
@@ -362,15 +354,11 @@ TEST_CASE("alica: every fixture, truncated or damaged anywhere, is read without 
   for (const auto &[path, text] : files) {
     if (fs::path(path).extension() != ".pml") continue;
     auto start = std::chrono::steady_clock::now();
-    SourceManager sources;
-    Diagnostics diag;
-    RealFileSystem real;
-    LoadResult loaded = load_program((kFixtures / path).string(), {}, real, sources, diag);
-    if (!diag.has_errors()) validate(loaded.program, sources, diag);
+    test::Pipeline p((kFixtures / path).string(), RealFileSystem());
     double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     INFO(path);
     CHECK(ms < 250);
-    for (const auto &d : diag.all()) CHECK(d.range.end <= sources.file(d.range.file).text().size());
+    for (const auto &d : p.diag.all()) CHECK(d.range.end <= p.sources.file(d.range.file).text().size());
   }
   // Master.pml cut at every 7th byte, and with one byte changed at every 13th: each a located
   // diagnostic or a clean read, never a crash.
@@ -379,11 +367,8 @@ TEST_CASE("alica: every fixture, truncated or damaged anywhere, is read without 
     MemoryFileSystem mem;
     for (const auto &[path, t] : files) mem.add(path, t);
     mem.add("plans/Master.pml", text);
-    SourceManager sources;
-    Diagnostics diag;
-    LoadResult loaded = load_program("plans/Master.pml", {}, mem, sources, diag);
-    if (!diag.has_errors()) validate(loaded.program, sources, diag);
-    for (const auto &d : diag.all()) REQUIRE(d.range.end <= sources.file(d.range.file).text().size());
+    test::Pipeline p("plans/Master.pml", mem);
+    for (const auto &d : p.diag.all()) REQUIRE(d.range.end <= p.sources.file(d.range.file).text().size());
   };
   for (std::size_t n = 0; n < master.size(); n += 7) read(master.substr(0, n));
   for (std::size_t n = 0; n < master.size(); n += 13)
@@ -413,14 +398,11 @@ TEST_CASE("alica: the folder layouts of ALICA's own repositories are found, as A
   // tests/alica/layout/etc: plans/, behaviours/, conditions/, placeholders/, tasks/, with a plan
   // type and a plan in plans/sub/ whose paths are stale. Read from disk, as gfec reads it.
   fs::path etc = kFixtures / "layout" / "etc";
-  SourceManager sources;
-  Diagnostics diag;
-  RealFileSystem real;
-  LoadResult loaded = load_program((etc / "plans" / "Patrol.pml").string(), {}, real, sources, diag);
-  model::Model model;
-  if (!diag.has_errors()) model = validate(loaded.program, sources, diag);
-  std::string text;
-  for (const auto &d : diag.all()) text += render_text(d, sources);
+  test::Pipeline p((etc / "plans" / "Patrol.pml").string(), RealFileSystem());
+  const LoadResult &loaded = p.loaded;
+  const model::Model &model = p.model;
+  const Diagnostics &diag = p.diag;
+  const std::string text = p.text();
   INFO(text);
   REQUIRE(!diag.has_errors());
   auto read = [&](const std::string &suffix) {

@@ -1,8 +1,6 @@
 // The fsm and plan analyses: states that never finish, shadowed transitions, config read before
 // written, supervisors that can fire together.
 #include "analysis_support.h"
-#include "loader.h"
-#include "validate.h"
 
 using namespace gfec;
 using test::analyze_text;
@@ -193,15 +191,11 @@ plan Guarded {
 TEST_CASE("analysis: the samples are clean with the default warnings") {
   for (const char *sample : {"line_follower.sfc", "cleanup.fsm", "wall_follow.plan"}) {
     INFO(sample);
-    SourceManager sources;
-    Diagnostics diag;
-    RealFileSystem fs;
-    auto loaded = load_program(std::string(GFEC_SOURCE_DIR) + "/samples/" + sample, {}, fs, sources, diag);
-    auto model = validate(loaded.program, sources, diag);
-    REQUIRE_FALSE(diag.has_errors());
-    std::size_t before = diag.all().size();
-    analysis::analyze(model, diag);
-    CHECK(diag.all().size() == before);
+    test::Pipeline p(std::string(GFEC_SOURCE_DIR) + "/samples/" + sample, RealFileSystem());
+    REQUIRE_FALSE(p.diag.has_errors());
+    std::size_t before = p.diag.all().size();
+    analysis::analyze(p.model, p.diag);
+    CHECK(p.diag.all().size() == before);
   }
 }
 

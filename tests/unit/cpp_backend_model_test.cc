@@ -3,8 +3,6 @@
 // twice or nested, and what a plan without formulas leaves out. Where the point is that the
 // output compiles, it is compiled (g++, against the skeletons of its toolboxes).
 #include "../run/cpp_backend_support.h"
-#include "loader.h"
-#include "validate.h"
 
 using namespace cppt;
 
@@ -214,22 +212,21 @@ plan P {
   actor inner: Inner() { OK -> terminate; INTERRUPTED -> terminate; ERROR -> terminate; }
 }
 )"}};
-  // Three plans in one file: the driver asks for --chart; here the plan is chosen by index.
+  // Three plans in one file: P is chosen as `--chart P` chooses it.
   MemoryFileSystem mem;
   for (const auto &[path, text] : files) mem.add(path, text);
-  SourceManager sources;
-  Diagnostics diag;
-  LoadResult loaded = load_program("p.plan", {}, mem, sources, diag);
-  model::Model m = validate(loaded.program, sources, diag);
-  REQUIRE(!diag.has_errors());
-  m.set_sources(sources);
+  pipeline::Compilation c{pipeline::FrontEndOptions{}};
+  c.front_end("p.plan", mem);
+  REQUIRE(!c.diag.has_errors());
+  pipeline::TargetRequest request;
+  request.name = "P";
+  REQUIRE(c.select(request).plan);
   EmitOptions o;
   o.output_path = "p.cpp";
   o.source_name = "p.plan";
   o.line_directives = false;
-  for (model::PlanId i : m.plans.ids())
-    if (m.plans[i].name == "P") o.plan = i;
-  auto out = emit_to_memory(*make_cpp_backend(), m, o);
+  o.plan = c.target.plan;
+  auto out = emit_to_memory(*make_cpp_backend(), c.model, o);
   const std::string &w = out[0].contents;
   auto inner = w.find("std::unique_ptr<afp::Plan> make_Inner(Bot& ee) {");
   auto middle = w.find("std::unique_ptr<afp::Plan> make_Middle(Bot& ee) {");

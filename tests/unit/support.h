@@ -3,6 +3,7 @@
 
 #include "diagnostic_printer.h"
 #include "loader.h"
+#include "pipeline/compilation.h"
 
 #include <cstddef>
 #include <initializer_list>
@@ -22,6 +23,35 @@ struct FrontEnd {
     MemoryFileSystem fs;
     for (auto &f : files) fs.add(f.first, f.second);
     loaded = load_program(files.begin()->first, {}, fs, sources, diag);
+  }
+
+  /// Every diagnostic as gfec prints it.
+  std::string text() const {
+    std::string out;
+    for (const auto &d : diag.all()) out += render_text(d, sources);
+    return out;
+  }
+};
+
+/// One file through the pipeline gfec runs (compiler/pipeline/compilation.h) without the static
+/// analyses: what the loader and the validator said, and the model. Never moves: the model
+/// points into `sources`.
+struct Pipeline {
+  pipeline::Compilation c;
+  SourceManager &sources = c.sources;
+  Diagnostics &diag = c.diag;
+  LoadResult &loaded = c.loaded;  ///< the files read; the syntax tree is gone after validation
+  model::Model &model = c.model;
+
+  Pipeline(const std::string &main, const FileSystem &fs, WarningOptions w = {}) : c(options(w)) {
+    c.front_end(main, fs);
+  }
+  Pipeline(const Pipeline &) = delete;
+  static pipeline::FrontEndOptions options(WarningOptions w) {
+    pipeline::FrontEndOptions f;
+    f.warnings = w;
+    f.analyze = false;
+    return f;
   }
 
   /// Every diagnostic as gfec prints it.

@@ -1,8 +1,6 @@
 // The validator on the seed samples: no diagnostics, and the model the back ends will read.
 #include "diagnostic_printer.h"
-#include "loader.h"
 #include "support.h"
-#include "validate.h"
 
 #include <catch2/catch.hpp>
 
@@ -13,24 +11,10 @@ using namespace gfec;
 
 namespace {
 
-/// Loads and validates one sample from samples/, every warning on.
-struct Sample {
-  SourceManager sources;
-  Diagnostics diag;
-  LoadResult loaded;
-  model::Model model;
-
-  explicit Sample(const std::string &name) : diag(test::all_warnings()) {
-    RealFileSystem fs;
-    loaded = load_program(std::string(GFEC_SOURCE_DIR) + "/samples/" + name, {}, fs, sources, diag);
-    model = validate(loaded.program, sources, diag);
-  }
-
-  std::string text() const {
-    std::string out;
-    for (const auto &d : diag.all()) out += render_text(d, sources);
-    return out;
-  }
+/// One sample from samples/ through the pipeline, every warning on.
+struct Sample : test::Pipeline {
+  explicit Sample(const std::string &name)
+      : Pipeline(std::string(GFEC_SOURCE_DIR) + "/samples/" + name, RealFileSystem(), test::all_warnings()) {}
 };
 
 }  // namespace
