@@ -1,7 +1,10 @@
 #include "backend.h"
 
+#include <fmt/format.h>
+
 #include <memory>
 #include <sstream>
+#include <stdexcept>
 
 namespace gfec {
 
@@ -16,6 +19,12 @@ namespace {
 
 class MemorySink : public OutputSink {
 public:
+  explicit MemorySink(const ToolRunner &tools) : tools_(tools) {}
+  void filter(const std::string &path, const ExternalTool &tool, const std::string &input) override {
+    if (!tools_) throw std::runtime_error(fmt::format("{}, and this caller runs no external tools", tool.purpose));
+    std::string output = tools_(tool, input);
+    open(path) << output;
+  }
   std::ostream &open(const std::string &path) override {
     finish();
     paths_.push_back(path);
@@ -33,6 +42,7 @@ private:
     files_.push_back({paths_.back(), current_->str()});
     current_.reset();
   }
+  const ToolRunner &tools_;
   std::vector<std::string> paths_;
   std::unique_ptr<std::ostringstream> current_;
   std::vector<OutputFile> files_;
@@ -40,8 +50,9 @@ private:
 
 }  // namespace
 
-std::vector<OutputFile> emit_to_memory(const Backend &backend, const model::Model &model, const EmitOptions &options) {
-  MemorySink sink;
+std::vector<OutputFile> emit_to_memory(const Backend &backend, const model::Model &model, const EmitOptions &options,
+                                       const ToolRunner &tools) {
+  MemorySink sink(tools);
   backend.emit(model, options, sink);
   return sink.take();
 }

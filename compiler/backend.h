@@ -5,6 +5,7 @@
 
 #include "model.h"
 
+#include <functional>
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -37,6 +38,14 @@ struct EmitOptions {
   bool names = false;  ///< C back end, `--names`: X_place_name and X_transition_name
 };
 
+/// A program a back end's output goes through (OutputSink::filter): it reads the text on its
+/// standard input and writes the output on its standard output.
+struct ExternalTool {
+  std::vector<std::string> command;  ///< the program, found on PATH, and its arguments
+  std::string purpose;               ///< for messages: "--emit=svg runs Graphviz's 'dot'"
+  std::string if_missing;            ///< what the user can do when the program cannot be started
+};
+
 /// Where a back end writes: one stream per output file, opened in order, the primary output
 /// first (e.g. engine.c, then engine.h beside it). The driver's sink writes each to its safe
 /// temporary file (compiler/driver/safe_output.h) and renames them into place only when the
@@ -46,7 +55,14 @@ public:
   virtual ~OutputSink() = default;
   /// The stream for the output `path`; valid until the next open() or the end of emit().
   virtual std::ostream &open(const std::string &path) = 0;
+  /// The output `path` is `input` put through an external tool (e.g. Graphviz's `dot -Tsvg`).
+  /// The sink runs it, so that back ends never start processes or touch the file system;
+  /// throws std::runtime_error with a message for the user when the tool is missing or fails.
+  virtual void filter(const std::string &path, const ExternalTool &tool, const std::string &input) = 0;
 };
+
+/// Runs `tool` over `input` and returns its standard output (the driver's run_external_tool).
+using ToolRunner = std::function<std::string(const ExternalTool &tool, const std::string &input)>;
 
 class Backend {
 public:
@@ -56,8 +72,10 @@ public:
 };
 
 /// The outputs in memory, in the order the back end opened them: for tests and for uses inside
-/// the process (the run viewer's picture).
-std::vector<OutputFile> emit_to_memory(const Backend &backend, const model::Model &model, const EmitOptions &options);
+/// the process (the run viewer's picture). Outputs that go through an external tool need
+/// `tools`; without it they throw std::runtime_error.
+std::vector<OutputFile> emit_to_memory(const Backend &backend, const model::Model &model, const EmitOptions &options,
+                                       const ToolRunner &tools = {});
 
 /// "dir/engine.c" with extension ".h" -> "dir/engine.h"; a name without extension gets it added.
 std::string replace_extension(const std::string &path, const std::string &ext);

@@ -5,6 +5,7 @@
 #include "backend_registry.h"
 #include "dependency_file.h"
 #include "diagnostic_report.h"
+#include "external_tool.h"
 #include "pipeline/compilation.h"
 #include "safe_output.h"
 #include "validate.h"
@@ -39,6 +40,10 @@ public:
     paths.push_back(path);
     std::ostream *out = t_.open(path);
     return out ? *out : discard_;  // refused: the transaction keeps why, the driver reports it
+  }
+  void filter(const std::string &path, const ExternalTool &tool, const std::string &input) override {
+    std::string output = run_external_tool(tool, input);
+    open(path) << output;
   }
   std::vector<std::string> paths;
 

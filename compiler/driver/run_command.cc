@@ -3,6 +3,7 @@
 #include "backend_registry.h"
 #include "diagnostic_report.h"
 #include "driver.h"
+#include "external_tool.h"
 #include "interpreter/input_trace.h"
 #include "interpreter/run_chart.h"
 #include "output_files.h"
@@ -80,7 +81,8 @@ nlohmann::json viewer_data(const model::Model &model, model::ChartId chart, cons
     emit.chart = chart;
     emit.output_path = "chart.svg";
     emit.source_name = o.input;
-    if (auto backend = make_backend("svg")) svg = emit_to_memory(*backend, model, emit).at(0).contents;
+    if (auto backend = make_backend("svg"))
+      svg = emit_to_memory(*backend, model, emit, run_external_tool).at(0).contents;
   } catch (const std::exception &e) { note = fmt::format("no diagram: {}", e.what()); }
   viewer::ChangeList active, status_list;
   viewer::CallRecorder calls;
