@@ -14,8 +14,9 @@
 
 namespace gfec::c_backend {
 
-struct Context {
-  Context(const model::Model &m, const model::Chart &ch, const EmitOptions &o) : model(m), chart(ch), options(o) {}
+/// The engine being written: its chart and options, the names chosen, the layout.
+struct Engine {
+  Engine(const model::Model &m, const model::Chart &ch, const EmitOptions &o) : model(m), chart(ch), options(o) {}
 
   const model::Model &model;
   const model::Chart &chart;
@@ -135,7 +136,7 @@ struct Context {
   std::string owner;  ///< an instance: "place Search of Patrol", for comments
   /// By place: the context of the instance the place runs (null if it runs nothing), and the
   /// parent struct's field that holds it.
-  IdMap<model::PlaceId, std::unique_ptr<Context>> sub;
+  IdMap<model::PlaceId, std::unique_ptr<Engine>> sub;
   IdMap<model::PlaceId, std::string> sub_field;  ///< like timer_field: no entries when no place runs a chart
   bool stoppable = false;                        ///< an instance whose place (or an enclosing one) can lose activation
   bool stop_code = false;                        ///< stopping the instance runs code: some exit block, at any depth
@@ -149,7 +150,7 @@ struct Context {
   bool exits_read_activity = false;
   /// The root: every interface function any instance calls, for the header.
   std::vector<model::FunctionId> functions;
-  const Context *sub_of(model::PlaceId place) const { return sub.at(place).get(); }
+  const Engine *sub_of(model::PlaceId place) const { return sub.at(place).get(); }
   /// The observation hooks are the root's only (docs/c-engine.md).
   bool hooks() const { return root; }
   /// The size of the per-place arrays as the header writes it: X_PLACE_COUNT (an instance's
@@ -177,7 +178,7 @@ struct Context {
   /// order (parents first: the numbering of X_instance), `member` how its struct is reached from
   /// `prefix` (`m->` gives `m->Search`, then `m->Search.Grab`).
   void each_instance(const std::string &prefix,
-                     const std::function<void(const Context &, const std::string &)> &f) const {
+                     const std::function<void(const Engine &, const std::string &)> &f) const {
     for (model::PlaceId p : sub.ids()) {
       if (!sub[p]) continue;
       const std::string member = prefix + sub_field[p];
@@ -219,7 +220,7 @@ struct Context {
 };
 
 /// Decides every name and fact for compiling `chart`, and for every sub-chart instance below it.
-std::unique_ptr<Context> make_context(const model::Model &model, const model::Chart &chart, const EmitOptions &options);
+std::unique_ptr<Engine> make_context(const model::Model &model, const model::Chart &chart, const EmitOptions &options);
 
 /// The block holds code (an empty `entry { }` is as good as none).
 inline bool has_code(const HeapOptional<std::vector<model::Stmt>> &block) { return block && !block->empty(); }

@@ -12,7 +12,7 @@ namespace {
 
 class FsmRun : RunWriter {
 public:
-  FsmRun(CodeWriter &w, const Context &c) : RunWriter(w, c) {}
+  FsmRun(CodeWriter &w, const Engine &c) : RunWriter(w, c) {}
 
   void emit() {
     head();
@@ -216,6 +216,6 @@ private:
 
 }  // namespace
 
-void emit_fsm_run(CodeWriter &w, const Context &c) { FsmRun(w, c).emit(); }
+void emit_fsm_run(CodeWriter &w, const Engine &c) { FsmRun(w, c).emit(); }
 
 }  // namespace gfec::c_backend

@@ -17,7 +17,7 @@ namespace gfec::c_backend {
 
 class RunWriter {
 protected:
-  RunWriter(CodeWriter &w, const Context &c) : w_(w), c_(c), temps_(c.temp_prefix) {}
+  RunWriter(CodeWriter &w, const Engine &c) : w_(w), c_(c), temps_(c.temp_prefix) {}
 
   /// `void X_run(X *m)` (static for an instance); the caller opens the body.
   void head();
@@ -65,7 +65,7 @@ protected:
   std::vector<std::string> entry_first(model::PlaceId p) const;
 
   CodeWriter &w_;
-  const Context &c_;
+  const Engine &c_;
   bool started_ = false;
   Temporaries temps_;
 };

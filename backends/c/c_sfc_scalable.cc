@@ -23,7 +23,7 @@ using model::TransitionId;
 /// that tries them, the cases of switches on a place.
 class ScalableRun : protected RunWriter {
 public:
-  ScalableRun(CodeWriter &w, const Context &c) : RunWriter(w, c), owned_(c.chart.places.size()) {
+  ScalableRun(CodeWriter &w, const Engine &c) : RunWriter(w, c), owned_(c.chart.places.size()) {
     // Each transition under its owner (the sequential layout: its one input), in declaration
     // order, so that the writers stay linear in the chart.
     for (TransitionId t : c.chart.transitions.ids()) {
@@ -128,7 +128,7 @@ public:
   }
 
 private:
-  /// A switch on a place number: `kind` names its parts (Context::kPartKinds); `has(p)`: place
+  /// A switch on a place number: `kind` names its parts (Engine::kPartKinds); `has(p)`: place
   /// `p` has a case, which `write(p)` writes.
   struct PlaceSwitch {
     const char *kind;
@@ -676,7 +676,7 @@ private:
 };
 
 /// The file-local functions of the sparse form's sets, before _init.
-void sparse_helpers(CodeWriter &w, const Context &c) {
+void sparse_helpers(CodeWriter &w, const Engine &c) {
   const Layout &l = c.layout;
   auto table = [](const BitLevels &b) {
     std::string s;
@@ -721,11 +721,11 @@ void sparse_helpers(CodeWriter &w, const Context &c) {
 
 }  // namespace
 
-void emit_scalable_helpers(CodeWriter &w, const Context &c) {
+void emit_scalable_helpers(CodeWriter &w, const Engine &c) {
   if (c.sparse()) sparse_helpers(w, c);
 }
 
-void emit_scalable_sfc_run(CodeWriter &w, const Context &c) {
+void emit_scalable_sfc_run(CodeWriter &w, const Engine &c) {
   if (c.sequential()) SequentialRun(w, c).emit();
   else SparseRun(w, c).emit();
 }

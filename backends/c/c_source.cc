@@ -12,20 +12,20 @@ namespace gfec::c_backend {
 namespace {
 
 /// Some context of the tree (the root or an instance at any depth) satisfies `test`.
-template <typename Test> bool any_context(const Context &c, const Test &test) {
+template <typename Test> bool any_context(const Engine &c, const Test &test) {
   if (test(c)) return true;
   for (const auto &s : c.sub)
     if (s && any_context(*s, test)) return true;
   return false;
 }
 
-void includes(CodeWriter &w, const Context &c) {
+void includes(CodeWriter &w, const Engine &c) {
   directive(w, "#include " + c_string_literal(c.header_file));
   // No hosted header in any mode (a freestanding C99 engine). The postconditions' checks (of the
   // root and of every instance) use X_ASSERT, which the user may define (before this point: on
   // the command line or in a verbatim block) to the firmware's own handler; by default it is
   // <assert.h>'s assert.
-  if (any_context(c, [](const Context &x) { return x.has_post; })) {
+  if (any_context(c, [](const Engine &x) { return x.has_post; })) {
     w.blank();
     directive(w, "#ifdef " + c.checks_macro);
     directive(w, "#ifndef " + c.assert_macro);
@@ -40,7 +40,7 @@ void includes(CodeWriter &w, const Context &c) {
 }
 
 /// The `%{ %}` blocks at file level (imports' first), where `#include`s for the chart's code go.
-void verbatims(CodeWriter &w, const Context &c) {
+void verbatims(CodeWriter &w, const Engine &c) {
   for (const auto &v : c.model.verbatims) {
     w.blank();
     emit_verbatim(w, c.model.sources(), v.range, v.text, v.code_begin);
@@ -48,7 +48,7 @@ void verbatims(CodeWriter &w, const Context &c) {
   }
 }
 
-void init(CodeWriter &w, const Context &c) {
+void init(CodeWriter &w, const Engine &c) {
   std::vector<std::string> initial;
   for (const auto &p : c.chart.places)
     if (p.initial) initial.push_back(p.name.str());
@@ -123,7 +123,7 @@ void init(CodeWriter &w, const Context &c) {
 }
 
 /// The run function in the engine form the layout chose for this chart (or instance).
-void run_function(CodeWriter &w, const Context &c) {
+void run_function(CodeWriter &w, const Engine &c) {
   if (c.fsm) emit_fsm_run(w, c);
   else if (c.readable()) emit_sfc_run(w, c);
   else emit_scalable_sfc_run(w, c);
@@ -131,7 +131,7 @@ void run_function(CodeWriter &w, const Context &c) {
 
 /// An instance's stop (docs/language.md, "Sub-charts"): for each active place in declaration order, the stop of
 /// the place's own instance, then the place's exit block; innermost first.
-void stop(CodeWriter &w, const Context &c) {
+void stop(CodeWriter &w, const Engine &c) {
   w.line("/* Stops the instance of {} run by {}:", c.chart.name, c.owner);
   w.line("   each active {} in declaration order stops its own instance, then runs its exit block",
          c.fsm ? "state" : "place");
@@ -162,7 +162,7 @@ void stop(CodeWriter &w, const Context &c) {
 
 /// An instance's code, its own instances' first (a static function is defined before its use):
 /// enumerations, the sparse form's helpers, _init, _stop and _run.
-void instance(CodeWriter &w, const Context &c) {
+void instance(CodeWriter &w, const Engine &c) {
   for (const auto &s : c.sub)
     if (s) instance(w, *s);
   w.line("/* ---- The instance of {} run by {} (its enumerations are in the header, with its struct) */", c.chart.name,
@@ -183,7 +183,7 @@ void instance(CodeWriter &w, const Context &c) {
 }
 
 /// X_set_agent, X_report and X_team (docs/c-engine.md "Team machines").
-void team_functions(CodeWriter &w, const Context &c) {
+void team_functions(CodeWriter &w, const Engine &c) {
   const std::string &t = c.type, &m = c.self;
   w.line("void {}({} *{}, int agent)", c.set_agent_fn, t, m);
   w.line("{");
@@ -215,12 +215,12 @@ void team_functions(CodeWriter &w, const Context &c) {
 
 /// X_instance_activation (docs/c-engine.md "Sub-charts"): a case per instance, each reading the
 /// instance's state as its own form holds it.
-void instance_activation(CodeWriter &w, const Context &c) {
+void instance_activation(CodeWriter &w, const Engine &c) {
   w.line("unsigned {}(const {} *{}, int instance, int place)", c.instance_activation_fn, c.type, c.self);
   w.line("{");
   w.line("    unsigned value = 0u;");
   w.line("    switch (instance) {");
-  c.each_instance(c.self + "->", [&](const Context &s, const std::string &member) {
+  c.each_instance(c.self + "->", [&](const Engine &s, const std::string &member) {
     // As X_activation reads the root's, with if statements: MISRA C:2012 rule 10.6 forbids
     // assigning a conditional expression's narrow unsigned to the wider result.
     w.line("    case {}:", s.instance_const);
@@ -240,7 +240,7 @@ void instance_activation(CodeWriter &w, const Context &c) {
   w.line("}");
 }
 
-void accessors(CodeWriter &w, const Context &c) {
+void accessors(CodeWriter &w, const Engine &c) {
   const std::string &t = c.type, &m = c.self;
   w.line("unsigned {0}_activation(const {0} *{1}, int place)", t, m);
   w.line("{");
@@ -269,13 +269,13 @@ void accessors(CodeWriter &w, const Context &c) {
 
 /// --context: X_set_context and X_context (docs/c-engine.md "Instance context"). Each instance
 /// keeps a copy, so that its functions pass it as the root's do; the setter writes every copy.
-void context_functions(CodeWriter &w, const Context &c) {
+void context_functions(CodeWriter &w, const Engine &c) {
   const std::string &t = c.type, &m = c.self;
   w.line("void {}({} *{}, {})", c.set_context_fn, t, m, c.context_param(c.ctx_param));
   w.line("{");
   w.line("    {} = {};", c.field(c.ctx_field), c.ctx_param);
   // `m->Search.ctx`, `m->Search.Inner.ctx`: parents first.
-  c.each_instance(m + "->", [&](const Context &s, const std::string &member) {
+  c.each_instance(m + "->", [&](const Engine &s, const std::string &member) {
     w.line("    {}.{} = {};", member, s.ctx_field, c.ctx_param);
   });
   w.line("}");
@@ -287,7 +287,7 @@ void context_functions(CodeWriter &w, const Context &c) {
 }
 
 /// --names: the declared names of the root's places and transitions (docs/c-engine.md).
-void name_functions(CodeWriter &w, const Context &c) {
+void name_functions(CodeWriter &w, const Engine &c) {
   auto table = [&](const std::string &fn, const char *param, const std::string &count,
                    const std::vector<std::string> &names) {
     w.line("const char *{}(int {})", fn, param);
@@ -313,7 +313,7 @@ void name_functions(CodeWriter &w, const Context &c) {
 
 }  // namespace
 
-std::string transition_label(const Context &c, const model::Transition &t) {
+std::string transition_label(const Engine &c, const model::Transition &t) {
   auto side = [&](const model::PlaceList &places) {
     std::string s;
     for (model::PlaceId p : places) s += (s.empty() ? "" : ", ") + c.place(p).name;
@@ -322,7 +322,7 @@ std::string transition_label(const Context &c, const model::Transition &t) {
   return side(t.inputs) + " -> " + side(t.outputs);
 }
 
-std::string banner(const Context &c) {
+std::string banner(const Engine &c) {
   // A file name cannot be allowed to end the comment early.
   std::string source = c.options.source_name;
   for (std::size_t at; (at = source.find("*/")) != std::string::npos;) source.replace(at, 2, "* /");
@@ -332,7 +332,7 @@ std::string banner(const Context &c) {
 
 void directive(CodeWriter &w, const std::string &text) { w.raw(text + "\n"); }
 
-void emit_source(const Context &c, std::ostream &out) {
+void emit_source(const Engine &c, std::ostream &out) {
   CodeWriter w(out, c.source_file, c.options.line_directives);
   w.line(std::string_view(banner(c)));
   includes(w, c);
