@@ -74,12 +74,15 @@ std::vector<Shown> characters(std::string_view s, bool keep_newlines = false) {
   return out;
 }
 
-/// The printable form of a text (a message, a file name, a fix-it).
-std::string printable(std::string_view s, bool keep_newlines = false) {
+/// The characters as printed, one after the other.
+std::string joined(const std::vector<Shown> &shown) {
   std::string out;
-  for (const Shown &ch : characters(s, keep_newlines)) out += ch.text;
+  for (const Shown &ch : shown) out += ch.text;
   return out;
 }
+
+/// The printable form of a text (a message, a file name, a fix-it).
+std::string printable(std::string_view s, bool keep_newlines = false) { return joined(characters(s, keep_newlines)); }
 
 /// The columns a printed character takes: one for a character (a tab copied as it is), the
 /// width of the escape for an escaped one.
@@ -137,9 +140,7 @@ void quote(std::string &out, const SourceRange &range, const std::vector<FixIt> 
   // gcc 12: " NNNN | source" and "      | ^~~" (the gutter is as wide as the line number).
   std::string gutter = style.line_numbers ? fmt::format(" {:>{}} |", number, gutter_width) : "";
   std::string blank = style.line_numbers ? fmt::format(" {:>{}} |", "", gutter_width) : "";
-  std::string text;
-  for (const Shown &ch : shown) text += ch.text;
-  out += fmt::format("{} {}{}{}\n", gutter, cut_before, text, cut_after);
+  out += fmt::format("{} {}{}{}\n", gutter, cut_before, joined(shown), cut_after);
   // Columns and bytes from here on count from the start of the quoted part.
   std::string pad(cut_before.size(), ' ');
   auto local = [&](std::uint32_t byte) { return byte > from ? byte - from : 0; };

@@ -118,11 +118,7 @@ void name_fields(Engine &c) {
   for (const auto *used : {&c.place_type, &c.transition_type, &c.place_count, &c.transition_count, &c.team_size})
     if (!used->empty()) fields.claim(*used);
   // The context's type (`motor_t *`) is the last field's.
-  std::string word;
-  for (char ch : c.options.context_type + " ") {
-    if (std::isalnum(static_cast<unsigned char>(ch)) || ch == '_') word += ch;
-    else if (!word.empty()) fields.claim(std::exchange(word, ""));
-  }
+  for (const auto &word : c.context_type.words) fields.claim(word);
   for (const auto &v : c.chart.vars) c.var_field.push_back(fields.take(v.name));
   c.av = fields.take("av");
   c.state = fields.take("state");
@@ -310,11 +306,6 @@ void collect_functions(const Engine &c, std::vector<model::FunctionId> &out) {
 }  // namespace
 
 std::string Engine::av_of(PlaceId p) const { return fmt::format("{}[{}]", field(av), place_const.at(p)); }
-
-std::string Engine::context_param(const std::string &name) const {
-  const std::string &t = options.context_type;
-  return t.back() == '*' ? t + name : t + " " + name;
-}
 
 std::string Engine::timer_of(PlaceId p) const { return field(timer_field.at(p)); }
 

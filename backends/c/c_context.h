@@ -4,6 +4,7 @@
 #pragma once
 
 #include "backend.h"
+#include "c_context_type.h"
 #include "c_layout.h"
 #include "model.h"
 
@@ -16,11 +17,13 @@ namespace gfec::c_backend {
 
 /// The engine being written: its chart and options, the names chosen, the layout.
 struct Engine {
-  Engine(const model::Model &m, const model::Chart &ch, const EmitOptions &o) : model(m), chart(ch), options(o) {}
+  Engine(const model::Model &m, const model::Chart &ch, const EmitOptions &o)
+      : model(m), chart(ch), options(o), context_type(o.context_type) {}
 
   const model::Model &model;
   const model::Chart &chart;
   const EmitOptions &options;
+  ContextType context_type;  ///< --context-type, read once
   bool fsm = false;
   Layout layout;  ///< readable, sequential or sparse (c_layout.h)
   bool readable() const { return layout.form == Layout::Form::Readable; }
@@ -112,9 +115,9 @@ struct Engine {
   std::string place_name_fn;           ///< X_place_name (--names)
   std::string transition_name_fn;      ///< X_transition_name (--names)
   /// Every interface call passes the context first.
-  bool has_context() const { return !options.context_type.empty(); }
+  bool has_context() const { return !context_type.spelling.empty(); }
   /// `void *ctx`, `struct motor *ctx`: the context as a parameter called `name`.
-  std::string context_param(const std::string &name) const;
+  std::string context_param(const std::string &name) const { return context_type.param(name); }
 
   // Locals of the run function. They must not hide an interface function that chart code calls.
   std::string self;    ///< the engine parameter, `m`

@@ -252,18 +252,9 @@ std::string context_first(const Engine &c, const std::vector<std::string> &param
 /// `struct motor *` names a tag: declared before the struct and the prototypes use it, so that
 /// a prototype does not declare it in its own scope (gcc, clang: "will not be visible outside").
 void context_tag(CodeWriter &w, const Engine &c) {
-  const std::string &t = c.options.context_type;
-  for (const char *kind :
-       {"struct ", "union ", "const struct ", "const union ", "volatile struct ", "volatile union "}) {
-    if (t.rfind(kind, 0) != 0) continue;
-    std::string rest = t.substr(std::string(kind).size());
-    std::string tag = rest.substr(0, rest.find_first_of(" *"));
-    if (tag.empty()) return;
-    std::string keyword = std::string(kind).find("union") != std::string::npos ? "union" : "struct";
-    w.line("{} {}; /* the instance context's type (--context-type) */", keyword, tag);
-    w.blank();
-    return;
-  }
+  if (c.context_type.tag.empty()) return;
+  w.line("{} {}; /* the instance context's type (--context-type) */", c.context_type.tag_keyword, c.context_type.tag);
+  w.blank();
 }
 
 void interface_functions(CodeWriter &w, const Engine &c) {

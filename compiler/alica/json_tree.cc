@@ -154,25 +154,16 @@ private:
     }
   }
 
-  /// The members of `v` named like an earlier one, in file order: by comparing every pair in a
-  /// small object, and by sorting the names in a large one (a plan may hold thousands of states,
-  /// each an object; a hand-made file one object of a million members).
+  /// The members of `v` named like an earlier one, in file order, found by sorting the names:
+  /// linear-logarithmic however large the object (a plan may hold thousands of states, each an
+  /// object; a hand-made file one object of a million members).
   static void find_duplicates(JsonValue &v, const std::vector<std::pair<std::uint32_t, std::uint32_t>> &names) {
     auto add = [&](std::size_t first, std::size_t second) {
       v.duplicates.push_back(
           {first, second, names[first].first, names[first].second, names[second].first, names[second].second});
     };
     const auto &m = v.members;
-    constexpr std::size_t kCompared = 32;
-    if (m.size() <= kCompared) {
-      for (std::size_t i = 1; i < m.size(); ++i)
-        for (std::size_t j = 0; j < i; ++j)
-          if (m[j].first == m[i].first) {
-            add(j, i);
-            break;
-          }
-      return;
-    }
+    if (m.size() < 2) return;
     std::vector<std::size_t> order(m.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
     // Stable: among members of one name, file order, so the first of a run is the first written.

@@ -165,6 +165,15 @@ std::string count_text(std::uint64_t n) {
   return n >= kSaturated ? fmt::format("at least {}", kSaturated) : std::to_string(n);
 }
 
+/// Of a chart's own `runs` (never empty), the one whose sub-chart has the largest `measure`
+/// (levels below it, instances it brings): the first of equals, for the note of an error.
+const Edge *largest(const std::vector<const Edge *> &runs, const IdMap<model::ChartId, std::uint64_t> &measure) {
+  const Edge *best = runs.front();
+  for (const Edge *e : runs)
+    if (measure[e->child] > measure[best->child]) best = e;
+  return best;
+}
+
 /// A chart that runs a sub-chart embeds an instance of it for every place or state that runs
 /// it, and in each instance the instances it runs in turn: ten states that each run a chart of
 /// ten states that each run ... multiply. Counts them per chart, and how many levels they nest
@@ -209,10 +218,7 @@ void check_instances(Context &cx, const std::vector<Edge> &edges) {
     if (run_in_main[c] || !cx.in_main_file(chart.range)) continue;
     const char *kind = chart.kind == ast::Chart::Kind::Fsm ? "fsm" : "sfc";
     if (depth[c] > kMaxDepth) {
-      // The place of the chart itself that runs the deepest (the first of equals).
-      const Edge *deepest = nullptr;
-      for (const Edge *e : out[c])
-        if (!deepest || depth[e->child] > depth[deepest->child]) deepest = e;
+      const Edge *deepest = largest(out[c], depth);
       const ast::Place &place = chart.places[deepest->place.index()];
       const std::string &child = cx.model.charts[deepest->child].name;
       cx.diag
@@ -225,10 +231,7 @@ void check_instances(Context &cx, const std::vector<Edge> &edges) {
                             depth[deepest->child]));
     }
     if (count[c] <= kMaxInstances) continue;
-    // The place of the chart itself whose sub-chart brings the most (the first of equals).
-    const Edge *most = nullptr;
-    for (const Edge *e : out[c])
-      if (!most || count[e->child] > count[most->child]) most = e;
+    const Edge *most = largest(out[c], count);
     const ast::Place &place = chart.places[most->place.index()];
     const std::string &child = cx.model.charts[most->child].name;
     const std::uint64_t brings = add_saturating(1, count[most->child]);

@@ -33,15 +33,15 @@ const char *kind_word(ast::Template::Kind k) {
 /// would not compile. Reported as reserved, like a keyword.
 bool check_class_name(Context &cx, const ast::Name &name, Sym kind) {
   const char *what = nullptr;
-  const naming::CFunction *f = naming::c_library_function(name.text);
   if (kind == Sym::Toolbox ? naming::is_template_scope_name(name.text) : naming::is_template_member(name.text))
     what = kind == Sym::Toolbox ? "a name inside the C++ class of every template (afp's base classes or the "
                                   "skeleton declare it), where it would hide the environment's type,"
                                 : "a member of the C++ class of every template (afp's base classes or the "
                                   "skeleton declare it)";
   else if (kind != Sym::ResultState && kind != Sym::Event && naming::is_c_library_global(name.text))
-    what = f ? "a function of the C library, which the C++ standard headers declare in the global namespace,"
-             : "a type of the C library, which the C++ standard headers declare in the global namespace,";
+    what = naming::c_library_function(name.text)
+               ? "a function of the C library, which the C++ standard headers declare in the global namespace,"
+               : "a type of the C library, which the C++ standard headers declare in the global namespace,";
   if (!what) return true;
   cx.diag.error(name.range, ErrorKind::ReservedName,
                 fmt::format("'{}' is {} and cannot name {}", name.text, what, with_article(kind)));

@@ -5,10 +5,12 @@
 // -Wpedantic -Werror and run against harnesses written by hand; the expected logs follow from
 // the language's tick order (docs/language.md 5.1, 7, "Sub-charts"), never from an engine's output.
 #include "../run/c_backend_support.h"
+#include "c_context_type.h"
 
 #include <catch2/catch.hpp>
 
 using namespace cbt;
+using gfec::c_backend::ContextType;
 
 namespace {
 
@@ -355,4 +357,50 @@ int main(void)
   // Ticks 1 and 2: ctx_ok() sees 0, then 1 step (false), and context's action steps; tick 3:
   // it sees 2 (true), names is active and does nothing.
   CHECK(build_and_run("context_clash", compiled->files, harness) == "2 context names\n");
+}
+
+TEST_CASE("c engine context: the type's tag is declared first, however it is qualified", "[c_backend][context]") {
+  // `volatile const struct bus *`: without `struct bus;` before the prototypes each would declare
+  // its own tag ("will not be visible outside of this definition"), an error under -Werror.
+  ContextType t("volatile const struct bus *");
+  CHECK(t.words == std::vector<std::string>{"volatile", "const", "struct", "bus"});
+  CHECK(t.tag_keyword == "struct");
+  CHECK(t.tag == "bus");
+  CHECK(t.param("ctx") == "volatile const struct bus *ctx");
+  CHECK(ContextType("bus_t").param("ctx") == "bus_t ctx");
+  CHECK(ContextType("union u *").tag == "u");
+  CHECK(ContextType("void *").tag.empty());
+
+  const char *chart = "interface I { void Go(); }\nsfc Bus { initial place A { Go(); } }\n";
+  auto compiled = compile_chart({{"bus.sfc", chart}}, "bus.sfc", "engine.c", true, EngineForm::Auto, t.spelling);
+  INFO(compiled->errors);
+  REQUIRE(!compiled->diag.has_errors());
+  CHECK(compiled->files[1].contents.find("struct bus; /* the instance context's type (--context-type) */") !=
+        std::string::npos);
+  const char *harness = R"C(#include "engine.h"
+
+#include <stdio.h>
+
+struct bus {
+    int calls;
+};
+
+void Go(volatile const struct bus *b)
+{
+    printf("%d ", b->calls);
+}
+
+int main(void)
+{
+    struct bus b = {7};
+    Bus m;
+    Bus_init(&m);
+    Bus_set_context(&m, &b);
+    Bus_run(&m);
+    Bus_run(&m);
+    printf("\n");
+    return 0;
+}
+)C";
+  CHECK(build_and_run("context_tag", compiled->files, harness) == "7 7 \n");
 }

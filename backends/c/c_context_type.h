@@ -1,0 +1,23 @@
+// The instance context's C type as the engine uses it (--context-type, docs/c-engine.md
+// "Instance context"): read once here rather than split into words wherever it is needed.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace gfec::c_backend {
+
+struct ContextType {
+  /// `spelling` as the driver checked and normalised it: words and `*` (compiler/driver/options.cc).
+  explicit ContextType(std::string spelling);
+
+  std::string spelling;            ///< `struct motor *`; empty: the engine has no context
+  std::vector<std::string> words;  ///< its identifiers (`struct`, `motor`): no field may take one
+  std::string tag_keyword;         ///< `struct` or `union` when it names a tag, else empty
+  std::string tag;                 ///< the tag (`motor`), declared before the prototypes use it
+
+  /// The context as a parameter called `name`: `struct motor *name`, `bus_t name`.
+  std::string param(const std::string &name) const;
+};
+
+}  // namespace gfec::c_backend
