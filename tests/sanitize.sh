@@ -8,7 +8,10 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${GFEC_ASAN_BUILD:-build-asan}
 if [ ! -f "$build/build.ninja" ]; then
+  # -O1 -g1, as the sanitizers' documentation advises: reports name file and line, and the build
+  # costs about half of -O2 -g's.
   cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
     -DGFEC_SANITIZE=address,undefined -DGFEC_BUILD_SIM=OFF \
     -DCMAKE_CXX_FLAGS="-fno-sanitize-recover=undefined" -DCMAKE_C_FLAGS="-fno-sanitize-recover=undefined"
 fi

@@ -9,7 +9,8 @@ root=$(cd "$(dirname "$0")/../.." && pwd)
 build=${BUILD_DIR:-$root/build-tsan}
 
 cmake -S "$root" -B "$build" -G Ninja \
-  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGFEC_SANITIZE=thread -DGFEC_BUILD_SIM=OFF
+  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGFEC_SANITIZE=thread -DGFEC_BUILD_SIM=OFF \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG"
 cmake --build "$build" --target runtime_tests -j "${JOBS:-2}"
 
 # halt_on_error: the first race ends the run with a non-zero status.
