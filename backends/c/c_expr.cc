@@ -513,12 +513,21 @@ std::string c_condition(const Engine &c, const Expr &e, Temporaries &temps, bool
   return e.kind == Expr::Kind::Paren || is_activity(e) ? r.text : bracket(r.text);
 }
 
+namespace {
+
+/// An activity test (an fsm's `(m->state == X)`) as the whole test of an `if`: without its
+/// brackets, which clang -Wparentheses-equality takes for a mistyped `=`.
+std::string bare_activity(const Engine &c, const Expr &activity, Temporaries &temps, bool at_start,
+                          model::PlaceId from) {
+  std::string text = Renderer(c, temps, at_start, from).render(activity).text;
+  return text.size() > 2 && text.front() == '(' ? text.substr(1, text.size() - 2) : text;
+}
+
+}  // namespace
+
 std::string c_test(const Engine &c, const Expr &e, Temporaries &temps, bool at_start, model::PlaceId from) {
   const Expr &u = unbracketed(e);
-  if (is_activity(u)) {  // the whole test: without the brackets (clang -Wparentheses-equality)
-    std::string text = Renderer(c, temps, at_start, from).render(u).text;
-    return text.size() > 2 && text.front() == '(' ? text.substr(1, text.size() - 2) : text;
-  }
+  if (is_activity(u)) return bare_activity(c, u, temps, at_start, from);
   if (u.kind != Expr::Kind::Binary || u.binary_op != BinaryOp::Eq || settled(u))
     return c_condition(c, e, temps, at_start, from);
   return closed(Renderer(c, temps, at_start, from).render(u)).text;
@@ -527,6 +536,7 @@ std::string c_test(const Engine &c, const Expr &e, Temporaries &temps, bool at_s
 std::string c_if_test(const Engine &c, const Expr &e, Temporaries &temps) {
   // `if ((a == b))` is what clang -Wparentheses-equality takes for a mistyped `=`.
   const Expr &u = unbracketed(e);
+  if (is_activity(u)) return bare_activity(c, u, temps, false, {});
   const bool equality = u.kind == Expr::Kind::Binary && u.binary_op == BinaryOp::Eq && !settled(u);
   return closed(Renderer(c, temps).render(equality ? u : e)).text;
 }

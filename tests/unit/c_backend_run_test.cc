@@ -863,3 +863,26 @@ TEST_CASE("c engine run: fsm entry and exit", "[c_backend][run]") {
                  "hook lost A\nhook gained B\nhook enabled T1\nhook enabled T2\n"  // after exit and entry
                  "act DoB\nstate B status 0\n");
 }
+
+TEST_CASE("c engine run: an fsm's if (active(S)) tests the state without extra brackets", "[c_backend][run]") {
+  // `if ((m->state == X))` is clang's -Wparentheses-equality (an error under -Werror): found by
+  // gfec_differential --subcharts 2 --seed 11, case 8.
+  const char *chart = R"(
+interface Bot { bool X(); void A(); void B(); }
+fsm Where {
+  initial state S { if (active(S)) { A(); } else { B(); } }
+  state T { if (active(S)) { A(); } else if (active(T)) { B(); } }
+  S -> T when X();
+})";
+  // Tick 1: X() false, S stays and its action takes the then branch; tick 2: X() true, T is
+  // entered and its action runs the else-if branch; tick 3: T stays (no transition leaves it).
+  std::string log = run("if_active_fsm", chart, "\nX\n\n");
+  CHECK(log == "tick 1\ncond X -> 0\nact A\nstate S status 0\n"
+               "tick 2\ncond X -> 1\nact B\nstate T status 0\n"
+               "tick 3\nact B\nstate T status 0\n");
+  auto compiled = compile_chart({{"chart.sfc", chart}}, "chart.sfc", "engine.c", false);
+  REQUIRE(!compiled->diag.has_errors());
+  const std::string &c = compiled->files.at(0).contents;
+  CHECK(c.find("if (m->state == Where_S) {") != std::string::npos);
+  CHECK(c.find("} else if (m->state == Where_T) {") != std::string::npos);
+}
