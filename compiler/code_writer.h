@@ -38,19 +38,18 @@ public:
   /// Text copied as it is (verbatim blocks); lines are counted, indentation is not added.
   void raw(std::string_view text);
 
-  void indent() { ++depth_; }
-  void dedent() {
-    if (depth_ > 0) --depth_;
-  }
-
-  /// One more level of indentation for as long as it lives; with `close`, the line written at
-  /// the end, one level out (`}`). Neither copied nor moved: the end happens once.
+  /// One more level of indentation for as long as it lives, or until end(); with `close`, the
+  /// line written at the end, one level out (`}`). Neither copied nor moved: the end happens once.
   class Scope {
   public:
     explicit Scope(CodeWriter &w, std::string close = {}) : w_(w), close_(std::move(close)) { w_.indent(); }
     Scope(const Scope &) = delete;
     Scope &operator=(const Scope &) = delete;
-    ~Scope() {
+    ~Scope() { end(); }
+    /// Ends the scope before the C++ scope does (when more follows at the outer level).
+    void end() {
+      if (ended_) return;
+      ended_ = true;
       w_.dedent();
       if (!close_.empty()) w_.line(std::string_view(close_));
     }
@@ -58,6 +57,7 @@ public:
   private:
     CodeWriter &w_;
     std::string close_;
+    bool ended_ = false;
   };
   /// `auto scope = w.indented();`: what follows, to the end of the C++ scope, one level in.
   [[nodiscard]] Scope indented() { return Scope(*this); }
@@ -77,6 +77,12 @@ public:
   std::string take() { return std::move(out_); }
 
 private:
+  // Indentation changes only through a Scope, so every level opened is closed once.
+  void indent() { ++depth_; }
+  void dedent() {
+    if (depth_ > 0) --depth_;
+  }
+
   void put_line(std::string_view text);
   /// After each line: past a block's worth, the buffer goes to the stream.
   void maybe_flush() {

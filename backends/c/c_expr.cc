@@ -629,9 +629,10 @@ private:
   /// `if (test) {`, the branches, and the closing brace; `prefix` is `} else ` in an else-if chain.
   void branches(const model::Stmt &s, const char *prefix) {
     line(fmt::format("{}if ({}) {{", prefix, text_.at(at_++)));
-    w_.indent();
-    branch(s.then_block);
-    w_.dedent();
+    {
+      CodeWriter::Scope then(w_);
+      branch(s.then_block);
+    }
     if (s.else_if) {
       ++at_;  // the else block declares nothing: its one `if` declares where it stands
       const model::Stmt &next = s.else_block.front();
@@ -641,9 +642,8 @@ private:
     }
     if (!s.else_block.empty()) {
       line("} else {");
-      w_.indent();
+      CodeWriter::Scope otherwise(w_);
       branch(s.else_block);
-      w_.dedent();
     } else {
       ++at_;
     }

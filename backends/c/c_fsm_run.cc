@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include <optional>
+
 namespace gfec::c_backend {
 
 namespace {
@@ -27,10 +29,11 @@ public:
     }
     first_tick("/* First tick: the initial state enters */");
     // One exit (MISRA C:2012 rule 15.5): a terminal state skips the rest of the tick.
+    std::optional<CodeWriter::Scope> running;  // the rest of the tick, skipped in a terminal state
     if (c_.has_terminal) {
       section("/* In a terminal state nothing happens any more */");
       w_.line("if ({} == 0) {{", c_.field(c_.status));
-      w_.indent();
+      running.emplace(w_, "}");
       started_ = false;
       locals();
     }
@@ -40,10 +43,6 @@ public:
     hooks();
     checks();
     actions();
-    if (c_.has_terminal) {
-      w_.dedent();
-      w_.line("}");
-    }
   }
 
 private:
@@ -103,20 +102,17 @@ private:
       w_.line_from(c_.model.sources(), t.condition ? t.condition->range : t.range);
       w_.line("{}if ({}) {{", i == 0 ? "" : "else ", test);
       w_.line_back();
-      w_.indent();
+      CodeWriter::Scope fire(w_, "}");
       model::PlaceId to = t.outputs.at(0);
       w_.line("{} = {};", c_.field(c_.state), c_.place_const.at(to));
       model::Terminal terminal = c_.place(to).terminal;
       if (terminal != model::Terminal::None)
         w_.line("{} = {};", c_.field(c_.status), terminal == model::Terminal::Success ? 1 : -1);
-      w_.dedent();
-      w_.line("}");
     }
     // An if/else-if chain ends in an else (MISRA C:2012 rule 15.7).
     if (c_.chart.transitions.size() > 1) {
-      w_.line("else {");
-      w_.line("    /* no transition fires: the state stays */");
-      w_.line("}");
+      auto otherwise = w_.block("else {");
+      w_.line("/* no transition fires: the state stays */");
     }
   }
 
@@ -124,8 +120,7 @@ private:
   void exits_and_entries() {
     if (!c_.needs_snapshot()) return;
     section("/* Leave the old state, enter the new one */");
-    w_.line("if ({} != {}) {{", c_.field(c_.state), c_.from);
-    w_.indent();
+    auto changed = w_.block(fmt::format("if ({} != {}) {{", c_.field(c_.state), c_.from));
     // Exit blocks that read activation see the state left as the current one.
     const bool swap = any_exits() && c_.exits_read_activity;
     if (swap) {
@@ -145,18 +140,15 @@ private:
       hook_calls();
       directive(w_, "#endif");
     }
-    w_.dedent();
-    w_.line("}");
   }
 
   void hooks() {
     if (c_.chart.transitions.empty() || !c_.hooks() || c_.needs_snapshot()) return;
     hooks_section("/* Observation hooks: the state left and the state entered; the transitions leaving it */");
-    w_.line("if ({} != {}) {{", c_.field(c_.state), c_.from);
-    w_.indent();
-    hook_calls();
-    w_.dedent();
-    w_.line("}");
+    {
+      auto changed = w_.block(fmt::format("if ({} != {}) {{", c_.field(c_.state), c_.from));
+      hook_calls();
+    }
     directive(w_, "#endif");
   }
 
@@ -186,8 +178,7 @@ private:
       const auto &place = c_.place(p);
       if (place.terminal == model::Terminal::None || !place.post) continue;
       std::string check = c_assertion(c_, *place.post, temps_);
-      w_.line("if ({}) {{", in_state(p));
-      w_.indent();
+      auto in_it = w_.block(fmt::format("if ({}) {{", in_state(p)));
       // With temporaries the check is more than X_ASSERT(): when X_ASSERT is assert under
       // NDEBUG none of it is compiled; a user's X_ASSERT always gets it.
       const bool temporaries = temps_.pending();
@@ -199,8 +190,6 @@ private:
       w_.line(std::string_view(check));
       w_.line_back();
       if (temporaries) directive(w_, "#endif");
-      w_.dedent();
-      w_.line("}");
     }
     directive(w_, "#endif");
   }

@@ -26,26 +26,20 @@ void places_enum(CodeWriter &w, const Engine &c) {
   else
     w.line("/* The {} of {} {}, in declaration order: the instance run by {}. */", c.fsm ? "states" : "places",
            c.fsm ? "fsm" : "sfc", c.chart.name, c.owner);
-  w.line("typedef enum {");
-  w.indent();
+  auto members = w.block("typedef enum {", fmt::format("}} {};", c.place_type));
   for (const auto &name : c.place_const) w.line("{},", name);
   w.line("{}", c.place_count);
-  w.dedent();
-  w.line("}} {};", c.place_type);
 }
 
 void transitions_enum(CodeWriter &w, const Engine &c) {
   w.line(c.root ? "/* Its transitions, in declaration order: the numbers the observation hooks pass. */"
                 : "/* Its transitions, in declaration order. */");
-  w.line("typedef enum {");
-  w.indent();
+  auto members = w.block("typedef enum {", fmt::format("}} {};", c.transition_type));
   std::vector<std::pair<std::string, std::string>> rows;
   for (model::TransitionId t : c.chart.transitions.ids())
     rows.emplace_back(c.transition_const[t] + ",", transition_label(c, c.chart.transitions[t]));
   aligned(w, rows);
   w.line("{}", c.transition_count);
-  w.dedent();
-  w.line("}} {};", c.transition_type);
 }
 
 void team_enum(CodeWriter &w, const Engine &c) {
@@ -73,8 +67,7 @@ void state_struct(CodeWriter &w, const Engine &c) {
   } else {
     w.line("/* The state of the instance of {} run by {} (engine.c only uses it). */", c.chart.name, c.owner);
   }
-  w.line("{} {{", c.root ? "struct " + c.type : c.struct_type);
-  w.indent();
+  auto fields = w.block(fmt::format("{} {{", c.root ? "struct " + c.type : c.struct_type), "};");
   std::vector<std::pair<std::string, std::string>> rows;
   if (c.fsm) {
     rows.emplace_back(fmt::format("{} {};", c.place_type, c.state),
@@ -123,8 +116,7 @@ void state_struct(CodeWriter &w, const Engine &c) {
                       c.root ? fmt::format("the context every interface call receives first ({})", c.set_context_fn)
                              : fmt::format("a copy of the root's context ({})", c.set_context_fn));
   aligned(w, rows);
-  w.dedent();
-  w.line("};");
+  fields.end();
   if (!c.root) w.blank();
 }
 
@@ -167,8 +159,7 @@ void names_api(CodeWriter &w, const Engine &c) {
 void instance_api(CodeWriter &w, const Engine &c) {
   const std::string &t = c.type;
   w.line("/* The sub-chart instances, depth first in declaration order. */");
-  w.line("typedef enum {");
-  w.indent();
+  auto members = w.block("typedef enum {", fmt::format("}} {};", c.instance_type));
   std::vector<std::pair<std::string, std::string>> rows;
   std::string example;  // the first instance's first place names the numbering by example
   c.each_instance("", [&](const Engine &s, const std::string &) {
@@ -177,8 +168,7 @@ void instance_api(CodeWriter &w, const Engine &c) {
   });
   aligned(w, rows);
   w.line("{}", c.instance_count);
-  w.dedent();
-  w.line("}} {};", c.instance_type);
+  members.end();
   w.line("/* The activation of place `place` of instance `instance`, the place numbered as in that");
   w.line("   instance's enumeration ({}, ...), as {}_activation tells the root's:", example, t);
   w.line("   where the instance is while the place that runs it is active, else where its last tick");

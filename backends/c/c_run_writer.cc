@@ -85,11 +85,10 @@ void RunWriter::hooks_section(const std::string &comment) {
 void RunWriter::activation_hooks(const std::string &loop, const std::string &i,
                                  const std::function<std::string(const std::string &)> &was) {
   for (bool gained : {false, true}) {
-    w_.line(std::string_view(loop));
-    w_.line("    if (({} {} 0u) && ({}[{}] {} 0u)) {{ {}({}, ({}){}, {}); }}", was(i),
+    auto each = w_.block(loop);
+    w_.line("if (({} {} 0u) && ({}[{}] {} 0u)) {{ {}({}, ({}){}, {}); }}", was(i),
             gained ? "==" : "!=", c_.field(c_.av), i, gained ? "!=" : "==", c_.activated_fn, c_.self, c_.place_type, i,
             gained ? "true" : "false");
-    w_.line("}");
   }
 }
 

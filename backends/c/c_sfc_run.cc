@@ -92,11 +92,9 @@ private:
       w_.line_from(c_.model.sources(), t.condition ? t.condition->range : t.range);
       w_.line("if ({}) {{", test.empty() ? "true" : test);
       w_.line_back();
-      w_.indent();
+      CodeWriter::Scope fire(w_, "}");
       for (model::PlaceId p : t.inputs) w_.line("{}--;", c_.av_of(p));
       for (model::PlaceId p : t.outputs) w_.line("{}[{}]++;", c_.add, c_.place_const.at(p));
-      w_.dedent();
-      w_.line("}");
     }
   }
 

@@ -44,24 +44,21 @@ protected:
   void case_block(PlaceId place, const std::vector<model::Stmt> &stmts, const std::vector<std::string> &first = {},
                   const std::vector<std::string> &last = {}) {
     std::vector<std::string> text = c_statements(c_, stmts, temps_);
-    case_begin(constant(place));
-    statements(stmts, text, first, last);
-    w_.line("break;");
-    case_end();
+    in_case(constant(place), [&] {
+      statements(stmts, text, first, last);
+      w_.line("break;");
+    });
   }
 
-  /// `case X:`, and what it runs indented. A case whose chart code needs temporaries (c_expr.h)
-  /// is a block, `case X: {`, that declares them: a declaration cannot follow a label.
-  void case_begin(const std::string &label) {
-    braced_ = temps_.pending();
-    w_.line("case {}:{}", label, braced_ ? " {" : "");
-    w_.indent();
+  /// `case X:`, and what `body` writes indented. A case whose chart code needs temporaries
+  /// (c_expr.h; rendered before) is a block, `case X: {`, that declares them: a declaration
+  /// cannot follow a label.
+  template <typename Body> void in_case(const std::string &label, Body body) {
+    const bool braced = temps_.pending();
+    w_.line("case {}:{}", label, braced ? " {" : "");
+    CodeWriter::Scope scope(w_, braced ? "}" : "");
     temps_.declare(w_);
-  }
-  void case_end() {
-    w_.dedent();
-    if (braced_) w_.line("}");
-    braced_ = false;
+    body();
   }
 
   /// The conditions of `transitions`, rendered before the code around them is written.
@@ -81,9 +78,13 @@ protected:
   /// The place a transition of the sequential form is tried in; none in the sparse form.
   PlaceId from(const model::Transition &t) const { return c_.sequential() ? t.inputs.front() : PlaceId(); }
 
+  /// `default: break;` and the switch's end: its labels stand at its level.
   void switch_end() {
     w_.line("default:");
-    w_.line("    break;");
+    {
+      auto in_default = w_.indented();
+      w_.line("break;");
+    }
     w_.line("}");
   }
 
@@ -100,7 +101,6 @@ protected:
 
 private:
   IdMap<PlaceId, std::vector<TransitionId>> owned_;
-  bool braced_ = false;  ///< the open case is a block
 };
 
 // ------------------------------------------------------------------------------ sequential
@@ -179,20 +179,24 @@ private:
   void update_case(PlaceId p) {
     std::vector<TransitionId> ts = tried(p);
     std::vector<std::string> test = conditions(ts, true);
-    case_begin(constant(p));
-    if (single_move(p)) {
-      // The part only tells whether the transition fires; the move is the run function's, from a
-      // table. gcc -O2 compiles a case that only evaluates a condition into the part's result in
-      // a third of the time and memory of one that moves (docs/performance.md).
-      const auto &t = c_.chart.transitions[ts.front()];
-      w_.line("/* {}: {} */", t.name, transition_label(c_, t));
-      w_.line_from(c_.model.sources(), t.condition ? t.condition->range : t.range);
-      w_.line("{} = {};", c_.fire, t.condition ? test.front() : "true");
-      w_.line_back();
+    in_case(constant(p), [&] {
+      if (single_move(p)) {
+        // The part only tells whether the transition fires; the move is the run function's,
+        // from a table. gcc -O2 compiles a case that only evaluates a condition into the part's
+        // result in a third of the time and memory of one that moves (docs/performance.md).
+        const auto &t = c_.chart.transitions[ts.front()];
+        w_.line("/* {}: {} */", t.name, transition_label(c_, t));
+        w_.line_from(c_.model.sources(), t.condition ? t.condition->range : t.range);
+        w_.line("{} = {};", c_.fire, t.condition ? test.front() : "true");
+        w_.line_back();
+      } else {
+        moves(ts, test);
+      }
       w_.line("break;");
-      case_end();
-      return;
-    }
+    });
+  }
+  /// The transitions `ts` tried in turn, the first that fires moving the state.
+  void moves(const std::vector<TransitionId> &ts, const std::vector<std::string> &test) {
     for (std::size_t k = 0; k < ts.size(); ++k) {
       const auto &t = c_.chart.transitions[ts[k]];
       w_.line("/* {}: {} */", t.name, transition_label(c_, t));
@@ -205,12 +209,10 @@ private:
         continue;
       }
       transition_test(t, "", test[k]);
-      w_.line("    {} = {};", current(), constant(t.outputs.front()));
-      w_.line("    break;");
-      w_.line("}");
+      CodeWriter::Scope fires(w_, "}");  // the block transition_test opened
+      w_.line("{} = {};", current(), constant(t.outputs.front()));
+      w_.line("break;");
     }
-    w_.line("break;");
-    case_end();
   }
   PlaceSwitch exit_switch() {
     return {"exit", [this](PlaceId p) { return c_.runs_exit(p); },
@@ -247,9 +249,8 @@ private:
       // The result in a variable of its own: the test of an `if` is essentially Boolean (MISRA
       // C:2012 rule 14.4), which cppcheck cannot tell of a call through a table.
       w_.line("{} = {};", c_.fire, call);
-      w_.line("if ({}) {{", c_.fire);
-      w_.line("    {0} = {1}[{0}];", current(), c_.part_next());
-      w_.line("}");
+      auto fires = w_.block(fmt::format("if ({}) {{", c_.fire));
+      w_.line("{0} = {1}[{0}];", current(), c_.part_next());
       return;
     }
     w_.line("switch ({}) {{", value);
@@ -318,16 +319,17 @@ private:
 
   /// `<declaration> = { <items> };`, the items several to a line.
   void table(const std::string &declaration, const std::vector<std::string> &items) {
-    w_.line("{} = {{", declaration);
-    std::string row;
-    for (std::size_t k = 0; k < items.size(); ++k) {
-      row += (row.empty() ? "" : " ") + items[k] + (k + 1 < items.size() ? "," : "");
-      if (row.size() > 80 || k + 1 == items.size()) {
-        w_.line("    {}", row);
-        row.clear();
+    {
+      auto rows = w_.block(fmt::format("{} = {{", declaration), "};");
+      std::string row;
+      for (std::size_t k = 0; k < items.size(); ++k) {
+        row += (row.empty() ? "" : " ") + items[k] + (k + 1 < items.size() ? "," : "");
+        if (row.size() > 80 || k + 1 == items.size()) {
+          w_.line(std::string_view(row));
+          row.clear();
+        }
       }
     }
-    w_.line("};");
     w_.blank();
   }
 
@@ -480,9 +482,10 @@ private:
         w_.line("uint32_t {};", c_.index);
         w_.line("uint32_t {};", i);
       }
-      w_.line("for ({0} = 0; {0} < {1}u; ++{0}) {{", i, l().active.words_at(0));
-      w_.line("    {}[{}] = {}[{}];", c_.before, i, c_.field(c_.active), i);
-      w_.line("}");
+      {
+        auto each = w_.block(fmt::format("for ({0} = 0; {0} < {1}u; ++{0}) {{", i, l().active.words_at(0)));
+        w_.line("{}[{}] = {}[{}];", c_.before, i, c_.field(c_.active), i);
+      }
       if (!keep) directive(w_, "#endif");
     }
     if (!has_transitions() && !any_actions() && !c_.needs_started && !c_.has_timers)
@@ -498,22 +501,15 @@ private:
   }
 
   /// `for` over the members of a set, word by word: `bits` holds the members left in word `w`,
-  /// and the switch is on the member's number. The caller writes the cases and closes with
-  /// members_end().
-  void members_begin(const std::string &set, const std::string &words) {
+  /// and the switch is on the member's number; `cases` writes its cases.
+  template <typename Cases> void for_members(const std::string &set, const std::string &words, Cases cases) {
     const std::string &w = c_.word, &b = c_.bits;
-    w_.line("for ({0} = {1}({2}, 1u, 0u); {0} != UINT32_MAX; {0} = {1}({2}, 1u, {0} + 1u)) {{", w, c_.next_fn, set);
-    w_.indent();
-    w_.line("for ({0} = {1}[{2}]; {0} != 0u; {0} &= {0} - 1u) {{", b, words, w);
-    w_.indent();
+    auto each_word = w_.block(fmt::format(
+        "for ({0} = {1}({2}, 1u, 0u); {0} != UINT32_MAX; {0} = {1}({2}, 1u, {0} + 1u)) {{", w, c_.next_fn, set));
+    auto each_bit = w_.block(fmt::format("for ({0} = {1}[{2}]; {0} != 0u; {0} &= {0} - 1u) {{", b, words, w));
     w_.line("switch (({} << 5) | {}({})) {{", w, c_.lowest_fn, b);
-  }
-  void members_end() {
+    cases();
     switch_end();
-    w_.dedent();
-    w_.line("}");
-    w_.dedent();
-    w_.line("}");
   }
 
   /// Not place-driven: the transitions owned by the active places become candidates, which are
@@ -521,14 +517,14 @@ private:
   void candidates() {
     if (!has_transitions()) return;
     section("/* The transitions that may be open: those of the active places */");
-    members_begin(active_set(), c_.field(c_.active));
-    for (PlaceId p : places()) {
-      std::string marks;
-      for (TransitionId t : owned(p))
-        marks += fmt::format(" {}({}, {});", c_.insert_fn, candidate_set(), c_.transition_const[t]);
-      if (!marks.empty()) w_.line("case {}:{} break;", constant(p), marks);
-    }
-    members_end();
+    for_members(active_set(), c_.field(c_.active), [&] {
+      for (PlaceId p : places()) {
+        std::string marks;
+        for (TransitionId t : owned(p))
+          marks += fmt::format(" {}({}, {});", c_.insert_fn, candidate_set(), c_.transition_const[t]);
+        if (!marks.empty()) w_.line("case {}:{} break;", constant(p), marks);
+      }
+    });
   }
 
   /// Step 2, one block per transition as in the readable form. A counter that falls to 0 leaves
@@ -558,38 +554,37 @@ private:
       section("/* Perform state update: the active places in declaration order, at each the transitions it");
       w_.line("   owns; owners follow the transitions' declaration order, so the transitions are tried in it.");
       w_.line("   The activation they produce waits in {}[] and cannot be consumed before the next tick */", c_.add);
-      members_begin(active_set(), c_.field(c_.active));
-      for (PlaceId p : places()) {
-        if (owned(p).empty()) continue;
-        std::vector<std::string> test = conditions(owned(p));
-        case_begin(constant(p));
-        for (std::size_t k = 0; k < owned(p).size(); ++k) transition_block(owned(p)[k], test[k]);
-        w_.line("break;");
-        case_end();
-      }
-      members_end();
+      for_members(active_set(), c_.field(c_.active), [&] {
+        for (PlaceId p : places()) {
+          if (owned(p).empty()) continue;
+          std::vector<std::string> test = conditions(owned(p));
+          in_case(constant(p), [&] {
+            for (std::size_t k = 0; k < owned(p).size(); ++k) transition_block(owned(p)[k], test[k]);
+            w_.line("break;");
+          });
+        }
+      });
       return;
     }
     section("/* Perform state update: the candidates in declaration order, each set emptied as it is read.");
     w_.line("   The activation they produce waits in {}[] and cannot be consumed before the next tick */", c_.add);
     const std::string &w = c_.word, &b = c_.bits;
-    w_.line("for ({0} = {1}({2}, 1u, 0u); {0} != UINT32_MAX; {0} = {1}({2}, 1u, {0} + 1u)) {{", w, c_.next_fn,
-            candidate_set());
-    w_.indent();
+    auto each_word =
+        w_.block(fmt::format("for ({0} = {1}({2}, 1u, 0u); {0} != UINT32_MAX; {0} = {1}({2}, 1u, {0} + 1u)) {{", w,
+                             c_.next_fn, candidate_set()));
     w_.line("{} = {}[{}];", b, c_.field(c_.candidates), w);
     w_.line("{}[{}] = 0u;", c_.field(c_.candidates), w);
     w_.line("{}({}, 1u, {});", c_.erase_fn, candidate_set(), w);
-    w_.line("for (; {0} != 0u; {0} &= {0} - 1u) {{", b);
-    w_.indent();
+    auto each_bit = w_.block(fmt::format("for (; {0} != 0u; {0} &= {0} - 1u) {{", b));
     w_.line("switch (({} << 5) | {}({})) {{", w, c_.lowest_fn, b);
     for (TransitionId t : c_.chart.transitions.ids()) {
       std::vector<std::string> test = conditions({t});
-      case_begin(c_.transition_const[t]);
-      transition_block(t, test[0]);
-      w_.line("break;");
-      case_end();
+      in_case(c_.transition_const[t], [&] {
+        transition_block(t, test[0]);
+        w_.line("break;");
+      });
     }
-    members_end();
+    switch_end();
   }
 
   /// Step 3a: AV := avail + add. A place whose counter rises from 0 joins the active set.
@@ -603,12 +598,11 @@ private:
     if (l().saturate) w_.line("if ({} == UINT32_MAX) {{ continue; }} /* saturated: see docs/c-engine.md */", av);
     // The counter never wraps: it is bounded by proof, or saturated above.
     w_.line("{}++;", av);
-    w_.line("if ({} == 1u) {{", av);
-    w_.line("    {}({}, {});", c_.insert_fn, active_set(), p);
+    auto joins = w_.block(fmt::format("if ({} == 1u) {{", av));
+    w_.line("{}({}, {});", c_.insert_fn, active_set(), p);
     if (l().watch_capacity > 0)
-      w_.line("    if ({0}({1})) {{ {2}[{3}] = ({4}){1}; {3}++; }}", c_.watched_fn, p, c_.gained, c_.gained_n,
+      w_.line("if ({0}({1})) {{ {2}[{3}] = ({4}){1}; {3}++; }}", c_.watched_fn, p, c_.gained, c_.gained_n,
               place_type());
-    w_.line("}");
   }
 
   /// Step 3b: all exits, then all entries, each in declaration order. A watched place that was
@@ -668,10 +662,10 @@ private:
     if (!any_actions()) return;
     section(c_.has_sub() ? "/* Perform place actions: the active places in declaration order, then their instances */"
                          : "/* Perform place actions: the active places in declaration order */");
-    members_begin(active_set(), c_.field(c_.active));
-    for (PlaceId p : places())
-      if (c_.acts(p)) case_block(p, c_.place(p).action, {}, c_.tick_call(p));
-    members_end();
+    for_members(active_set(), c_.field(c_.active), [&] {
+      for (PlaceId p : places())
+        if (c_.acts(p)) case_block(p, c_.place(p).action, {}, c_.tick_call(p));
+    });
   }
 };
 
@@ -704,19 +698,24 @@ void sparse_helpers(CodeWriter &w, const Engine &c) {
   w.blank();
   w.line("/* Whether a place runs exit or entry code, or resets its timer, when its activation changes. */");
   w.line("static bool {}(uint32_t place)", c.watched_fn);
-  w.line("{");
-  w.line("    bool watched;");
-  w.line("    switch (place) {");
+  auto body = w.block("{");
+  w.line("bool watched;");
+  w.line("switch (place) {");  // the labels stand at the level of the switch
   for (PlaceId p : c.chart.places.ids())
-    if (c.watched(p)) w.line("    case {}:", c.place_const[p]);
-  w.line("        watched = true;");
-  w.line("        break;");
-  w.line("    default:");
-  w.line("        watched = false;");
-  w.line("        break;");
-  w.line("    }");
-  w.line("    return watched;");
+    if (c.watched(p)) w.line("case {}:", c.place_const[p]);
+  {
+    auto in_case = w.indented();
+    w.line("watched = true;");
+    w.line("break;");
+  }
+  w.line("default:");
+  {
+    auto in_default = w.indented();
+    w.line("watched = false;");
+    w.line("break;");
+  }
   w.line("}");
+  w.line("return watched;");
 }
 
 }  // namespace

@@ -60,8 +60,7 @@ void init(CodeWriter &w, const Engine &c) {
     w.line("/* Initial marking: {} {} active. Calls no code of the chart. */", list,
            initial.size() == 1 ? "is" : "are");
   w.line("{}void {}({} *{})", c.linkage, c.init_fn, c.struct_type, c.self);
-  w.line("{");
-  w.indent();
+  auto body = w.block("{");
   if (c.team()) w.line("int {};", c.index);
   if (c.fsm) {
     for (model::PlaceId p : c.chart.places.ids())
@@ -79,13 +78,13 @@ void init(CodeWriter &w, const Engine &c) {
   } else if (c.sparse()) {
     // Loops rather than a line per place: a large chart has few initial places.
     w.line("uint32_t {};", c.index);
-    w.line("for ({0} = 0; {0} < (uint32_t){1}; ++{0}) {{", c.index, c.place_count);
-    w.line("    {}[{}] = 0;", c.field(c.av), c.index);
-    w.line("}");
+    {
+      auto each = w.block(fmt::format("for ({0} = 0; {0} < (uint32_t){1}; ++{0}) {{", c.index, c.place_count));
+      w.line("{}[{}] = 0;", c.field(c.av), c.index);
+    }
     auto clear = [&](const std::string &field, std::uint32_t words) {
-      w.line("for ({0} = 0; {0} < {1}u; ++{0}) {{", c.index, words);
-      w.line("    {}[{}] = 0u;", c.field(field), c.index);
-      w.line("}");
+      auto each = w.block(fmt::format("for ({0} = 0; {0} < {1}u; ++{0}) {{", c.index, words));
+      w.line("{}[{}] = 0u;", c.field(field), c.index);
     };
     clear(c.active, c.layout.active.words());
     if (!c.layout.place_driven) clear(c.candidates, c.layout.candidates.words());
@@ -103,9 +102,8 @@ void init(CodeWriter &w, const Engine &c) {
   if (c.needs_started) w.line("{} = false;", c.field(c.started));
   if (c.team()) {
     w.line("{} = 0;", c.field(c.agent));
-    w.line("for ({0} = 0; {0} < {1}; ++{0}) {{", c.index, c.team_size);
-    w.line("    {}[{}] = -1;", c.field(c.reports), c.index);
-    w.line("}");
+    auto each = w.block(fmt::format("for ({0} = 0; {0} < {1}; ++{0}) {{", c.index, c.team_size));
+    w.line("{}[{}] = -1;", c.field(c.reports), c.index);
   }
   for (model::VarId v : c.chart.vars.ids()) {
     const auto &var = c.chart.vars[v];
@@ -118,8 +116,6 @@ void init(CodeWriter &w, const Engine &c) {
     if (c.sub[p])
       w.line("{}(&{}); /* the instance of {} run by {} */", c.sub[p]->init_fn, c.field(c.sub_field[p]),
              c.sub[p]->chart.name, c.place(p).name);
-  w.dedent();
-  w.line("}");
 }
 
 /// The run function in the engine form the layout chose for this chart (or instance).
@@ -137,15 +133,13 @@ void stop(CodeWriter &w, const Engine &c) {
          c.fsm ? "state" : "place");
   w.line("   (innermost first). Leaves the state as it is. */");
   w.line("{}void {}({} *{})", c.linkage, c.stop_fn, c.struct_type, c.self);
-  w.line("{");
-  w.indent();
+  auto body = w.block("{");
   Temporaries temps(c.temp_prefix);
   for (model::PlaceId p : c.chart.places.ids()) {
     const auto &place = c.place(p);
     std::vector<std::string> first = c.stop_call(p);
     if (first.empty() && !has_code(place.exit)) continue;
-    w.line("if ({}) {{", c.active_test("", p));
-    w.indent();
+    auto if_active = w.block(fmt::format("if ({}) {{", c.active_test("", p)));
     std::vector<model::Stmt> stmts = has_code(place.exit) ? *place.exit : std::vector<model::Stmt>{};
     std::vector<std::string> text = c_statements(c, stmts, temps);
     temps.declare(w);
@@ -153,11 +147,7 @@ void stop(CodeWriter &w, const Engine &c) {
     if (!stmts.empty()) w.line("/* exit {} */", place.name);
     emit_statements(w, c, stmts, text);
     w.line_back();
-    w.dedent();
-    w.line("}");
   }
-  w.dedent();
-  w.line("}");
 }
 
 /// An instance's code, its own instances' first (a static function is defined before its use):
@@ -186,70 +176,77 @@ void instance(CodeWriter &w, const Engine &c) {
 void team_functions(CodeWriter &w, const Engine &c) {
   const std::string &t = c.type, &m = c.self;
   w.line("void {}({} *{}, int agent)", c.set_agent_fn, t, m);
-  w.line("{");
-  w.line("    if ((agent >= 0) && (agent < {})) {{", c.team_size);
-  w.line("        {} = agent;", c.field(c.agent));
-  w.line("    }");
-  w.line("}");
+  {
+    auto body = w.block("{");
+    auto valid = w.block(fmt::format("if ((agent >= 0) && (agent < {})) {{", c.team_size));
+    w.line("{} = agent;", c.field(c.agent));
+  }
   w.blank();
   w.line("void {}({} *{}, int agent, int state)", c.report_fn, t, m);
-  w.line("{");
-  w.line("    if ((agent >= 0) && (agent < {}) && (agent != {}) && (state >= 0) && (state < (int){})) {{", c.team_size,
-         c.field(c.agent), c.place_count);
-  w.line("        {}[agent] = ({})state;", c.field(c.reports), c.report_type());
-  w.line("    }");
-  w.line("}");
+  {
+    auto body = w.block("{");
+    auto valid = w.block(
+        fmt::format("if ((agent >= 0) && (agent < {}) && (agent != {}) && (state >= 0) && (state < (int){})) {{",
+                    c.team_size, c.field(c.agent), c.place_count));
+    w.line("{}[agent] = ({})state;", c.field(c.reports), c.report_type());
+  }
   w.blank();
   w.line("int {}(const {} *{}, int state)", c.team_fn, t, m);
-  w.line("{");
-  w.line("    int agent;");
-  w.line("    int n = 0;");
-  w.line("    for (agent = 0; agent < {}; ++agent) {{", c.team_size);
-  w.line("        if ((agent != {}) && ({}[agent] == state)) {{", c.field(c.agent), c.field(c.reports));
-  w.line("            ++n;");
-  w.line("        }");
-  w.line("    }");
-  w.line("    return n;");
-  w.line("}");
+  auto body = w.block("{");
+  w.line("int agent;");
+  w.line("int n = 0;");
+  {
+    auto each = w.block(fmt::format("for (agent = 0; agent < {}; ++agent) {{", c.team_size));
+    auto same =
+        w.block(fmt::format("if ((agent != {}) && ({}[agent] == state)) {{", c.field(c.agent), c.field(c.reports)));
+    w.line("++n;");
+  }
+  w.line("return n;");
 }
 
 /// X_instance_activation (docs/c-engine.md "Sub-charts"): a case per instance, each reading the
 /// instance's state as its own form holds it.
 void instance_activation(CodeWriter &w, const Engine &c) {
   w.line("unsigned {}(const {} *{}, int instance, int place)", c.instance_activation_fn, c.type, c.self);
-  w.line("{");
-  w.line("    unsigned value = 0u;");
-  w.line("    switch (instance) {");
+  auto body = w.block("{");
+  w.line("unsigned value = 0u;");
+  // The labels stand at the level of the switch, what they run one level in.
+  w.line("switch (instance) {");
   c.each_instance(c.self + "->", [&](const Engine &s, const std::string &member) {
     // As X_activation reads the root's, with if statements: MISRA C:2012 rule 10.6 forbids
     // assigning a conditional expression's narrow unsigned to the wider result.
-    w.line("    case {}:", s.instance_const);
-    if (s.fsm) w.line("        if ((int){} == place) {{", s.member(member, s.state));
-    else if (s.sequential())
-      w.line("        if ((place >= 0) && (place < (int){}) && ((int){} == place)) {{", s.place_count,
-             s.member(member, s.current));
-    else w.line("        if ((place >= 0) && (place < (int){})) {{", s.place_count);
-    w.line("            value = {};", s.fsm || s.sequential() ? "1u" : s.member(member, s.av) + "[place]");
-    w.line("        }");
-    w.line("        break;");
+    w.line("case {}:", s.instance_const);
+    auto in_case = w.indented();
+    std::string test = s.fsm            ? fmt::format("(int){} == place", s.member(member, s.state))
+                       : s.sequential() ? fmt::format("(place >= 0) && (place < (int){}) && ((int){} == place)",
+                                                      s.place_count, s.member(member, s.current))
+                                        : fmt::format("(place >= 0) && (place < (int){})", s.place_count);
+    {
+      auto in_it = w.block(fmt::format("if ({}) {{", test));
+      w.line("value = {};", s.fsm || s.sequential() ? "1u" : s.member(member, s.av) + "[place]");
+    }
+    w.line("break;");
   });
-  w.line("    default:");
-  w.line("        break;");
-  w.line("    }");
-  w.line("    return value;");
+  w.line("default:");
+  {
+    auto in_default = w.indented();
+    w.line("break;");
+  }
   w.line("}");
+  w.line("return value;");
 }
 
 void accessors(CodeWriter &w, const Engine &c) {
   const std::string &t = c.type, &m = c.self;
   w.line("unsigned {0}_activation(const {0} *{1}, int place)", t, m);
-  w.line("{");
-  if (c.fsm) w.line("    return ((int){} == place) ? 1u : 0u;", c.field(c.state));
-  else if (c.sequential())
-    w.line("    return ((place >= 0) && (place < (int){}) && ((int){} == place)) ? 1u : 0u;", c.place_count,
-           c.field(c.current));
-  else w.line("    return ((place >= 0) && (place < (int){})) ? {}[place] : 0u;", c.place_count, c.field(c.av));
-  w.line("}");
+  {
+    auto body = w.block("{");
+    if (c.fsm) w.line("return ((int){} == place) ? 1u : 0u;", c.field(c.state));
+    else if (c.sequential())
+      w.line("return ((place >= 0) && (place < (int){}) && ((int){} == place)) ? 1u : 0u;", c.place_count,
+             c.field(c.current));
+    else w.line("return ((place >= 0) && (place < (int){})) ? {}[place] : 0u;", c.place_count, c.field(c.av));
+  }
   if (c.has_sub()) {
     w.blank();
     instance_activation(w, c);
@@ -257,14 +254,14 @@ void accessors(CodeWriter &w, const Engine &c) {
   if (!c.fsm) return;
   w.blank();
   w.line("{1} {0}_state(const {0} *{2})", t, c.place_type, m);
-  w.line("{");
-  w.line("    return {};", c.field(c.state));
-  w.line("}");
+  {
+    auto body = w.block("{");
+    w.line("return {};", c.field(c.state));
+  }
   w.blank();
   w.line("int {0}_status(const {0} *{1})", t, m);
-  w.line("{");
-  w.line("    return {};", c.field(c.status));
-  w.line("}");
+  auto body = w.block("{");
+  w.line("return {};", c.field(c.status));
 }
 
 /// --context: X_set_context and X_context (docs/c-engine.md "Instance context"). Each instance
@@ -272,18 +269,18 @@ void accessors(CodeWriter &w, const Engine &c) {
 void context_functions(CodeWriter &w, const Engine &c) {
   const std::string &t = c.type, &m = c.self;
   w.line("void {}({} *{}, {})", c.set_context_fn, t, m, c.context_param(c.ctx_param));
-  w.line("{");
-  w.line("    {} = {};", c.field(c.ctx_field), c.ctx_param);
-  // `m->Search.ctx`, `m->Search.Inner.ctx`: parents first.
-  c.each_instance(m + "->", [&](const Engine &s, const std::string &member) {
-    w.line("    {}.{} = {};", member, s.ctx_field, c.ctx_param);
-  });
-  w.line("}");
+  {
+    auto body = w.block("{");
+    w.line("{} = {};", c.field(c.ctx_field), c.ctx_param);
+    // `m->Search.ctx`, `m->Search.Inner.ctx`: parents first.
+    c.each_instance(m + "->", [&](const Engine &s, const std::string &member) {
+      w.line("{}.{} = {};", member, s.ctx_field, c.ctx_param);
+    });
+  }
   w.blank();
   w.line("{}(const {} *{})", c.context_param(c.context_fn), t, m);
-  w.line("{");
-  w.line("    return {};", c.field(c.ctx_field));
-  w.line("}");
+  auto body = w.block("{");
+  w.line("return {};", c.field(c.ctx_field));
 }
 
 /// --names: the declared names of the root's places and transitions (docs/c-engine.md).
@@ -291,17 +288,17 @@ void name_functions(CodeWriter &w, const Engine &c) {
   auto table = [&](const std::string &fn, const char *param, const std::string &count,
                    const std::vector<std::string> &names) {
     w.line("const char *{}(int {})", fn, param);
-    w.line("{");
+    auto body = w.block("{");
     if (names.empty()) {  // C has no empty array
-      w.line("    (void){};", param);
-      w.line("    return 0;");
+      w.line("(void){};", param);
+      w.line("return 0;");
     } else {
-      w.line("    static const char *const {}[{}] = {{", c.names, count);
-      for (const auto &n : names) w.line("        {},", c_string_literal(n));
-      w.line("    };");
-      w.line("    return {0} >= 0 && {0} < {1} ? {2}[{0}] : 0;", param, count, c.names);
+      {
+        auto rows = w.block(fmt::format("static const char *const {}[{}] = {{", c.names, count), "};");
+        for (const auto &n : names) w.line("{},", c_string_literal(n));
+      }
+      w.line("return {0} >= 0 && {0} < {1} ? {2}[{0}] : 0;", param, count, c.names);
     }
-    w.line("}");
   };
   std::vector<std::string> places, transitions;
   for (const auto &p : c.chart.places) places.push_back(p.name.str());

@@ -46,12 +46,11 @@ void interfaces(CodeWriter &w, const model::Model &m, const std::set<model::Char
     if (std::find(order.begin(), order.end(), iface) == order.end()) order.push_back(iface);
   }
   for (const auto &iface : order) {
-    w.line("interface {} {{", iface);
-    w.indent();
-    for (model::FunctionId f : used)
-      if (m.functions[f].interface_name == iface) w.line("{}", prototype(m.functions[f]));
-    w.dedent();
-    w.line("}");
+    {
+      auto body = w.block(fmt::format("interface {} {{", iface));
+      for (model::FunctionId f : used)
+        if (m.functions[f].interface_name == iface) w.line("{}", prototype(m.functions[f]));
+    }
     w.blank();
   }
 }
@@ -64,11 +63,8 @@ void value(CodeWriter &w, const model::Model &m, model::ChartId chart, const cha
 
 void block(CodeWriter &w, const model::Model &m, model::ChartId chart, const char *keyword,
            const std::vector<model::Stmt> &stmts) {
-  w.line("{} {{", keyword);
-  w.indent();
+  auto body = w.block(fmt::format("{} {{", keyword));
   chart_text::statements(w, m, chart, stmts);
-  w.dedent();
-  w.line("}");
 }
 
 void place(CodeWriter &w, const model::Model &m, model::ChartId chart, const model::Place &p, bool fsm) {
@@ -82,13 +78,10 @@ void place(CodeWriter &w, const model::Model &m, model::ChartId chart, const mod
     w.line("{};", head);
     return;
   }
-  w.line("{} {{", head);
-  w.indent();
+  auto body = w.block(fmt::format("{} {{", head));
   chart_text::statements(w, m, chart, p.action);
   if (p.entry) block(w, m, chart, "entry", *p.entry);
   if (p.exit) block(w, m, chart, "exit", *p.exit);
-  w.dedent();
-  w.line("}");
 }
 
 std::string places(const model::Chart &c, const model::PlaceList &list) {
@@ -101,8 +94,7 @@ std::string places(const model::Chart &c, const model::PlaceList &list) {
 void chart(CodeWriter &w, const model::Model &m, model::ChartId index) {
   const model::Chart &c = m.charts[index];
   bool fsm = c.kind == model::Chart::Kind::Fsm;
-  w.line("{} {} {{", fsm ? "fsm" : "sfc", c.name);
-  w.indent();
+  auto body = w.block(fmt::format("{} {} {{", fsm ? "fsm" : "sfc", c.name));
   if (c.period_ms > 0) w.line("period {}ms;", c.period_ms);
   if (c.team > 0) w.line("team {};", c.team);
   for (const auto &k : m.consts)
@@ -116,8 +108,6 @@ void chart(CodeWriter &w, const model::Model &m, model::ChartId index) {
     if (t.condition) line += " when " + chart_text::expr(m, index, *t.condition);
     w.line("{};", line);
   }
-  w.dedent();
-  w.line("}");
 }
 
 class ChartBackend : public Backend {

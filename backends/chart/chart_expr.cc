@@ -77,9 +77,10 @@ void statements(CodeWriter &w, const model::Model &m, model::ChartId chart, cons
       std::string lead = "if";
       for (;;) {
         w.line("{} ({}) {{", lead, expr(m, chart, at->expr));
-        w.indent();
-        statements(w, m, chart, at->then_block);
-        w.dedent();
+        {
+          auto then = w.indented();
+          statements(w, m, chart, at->then_block);
+        }
         if (at->else_if && at->else_block.size() == 1) {
           at = &at->else_block.front();
           lead = "} else if";
@@ -87,9 +88,8 @@ void statements(CodeWriter &w, const model::Model &m, model::ChartId chart, cons
         }
         if (!at->else_block.empty()) {
           w.line("} else {");
-          w.indent();
+          auto otherwise = w.indented();
           statements(w, m, chart, at->else_block);
-          w.dedent();
         }
         w.line("}");
         break;

@@ -43,8 +43,8 @@ public:
     next_ += 1 + static_cast<std::uint32_t>(std::count(text.begin(), text.end(), '\n'));
   }
   void blank() { put(""); }
-  void indent() { w_.indent(); }
-  void dedent() { w_.dedent(); }
+  /// What follows, to the end of the C++ scope, one level in (the closing brace is put()).
+  [[nodiscard]] CodeWriter::Scope indented() { return w_.indented(); }
   void raw(const std::string &text) {
     directive(w_, text);
     ++next_;
@@ -96,15 +96,16 @@ public:
                  ? fmt::format("// Sub-plan {}: used as an actor, it ends in OK, INTERRUPTED or ERROR.", p_.name)
                  : fmt::format("// Plan {}: a new instance for an executor; it declares its config entries.", p_.name));
     out_.put(fmt::format("std::unique_ptr<afp::Plan> {}({}) {{", w_.factory, c_.factory_params(w_)));
-    out_.indent();
-    create_plan();
-    create_actors();
-    create_supervisors();
-    start_and_globals();
-    for (model::ActorId a : p_.actors.ids()) actor_rules(a);
-    out_.back();
-    out_.put(fmt::format("return {};", c_.plan_var));
-    out_.dedent();
+    {
+      auto body = out_.indented();
+      create_plan();
+      create_actors();
+      create_supervisors();
+      start_and_globals();
+      for (model::ActorId a : p_.actors.ids()) actor_rules(a);
+      out_.back();
+      out_.put(fmt::format("return {};", c_.plan_var));
+    }
     out_.put("}");
   }
 
@@ -228,8 +229,11 @@ void helpers(Writer &out, const FormulaHelpers &h) {
   if (h.divide) {
     out.put("/// int / int as in C, except that dividing by zero ends the component in error.");
     out.put(fmt::format("int {}(int a, int b) {{", h.divide_fn));
-    out.put("    if (b == 0) throw afp::Error(\"division by zero in a formula\");");
-    out.put("    return a / b;");
+    {
+      auto body = out.indented();
+      out.put("if (b == 0) throw afp::Error(\"division by zero in a formula\");");
+      out.put("return a / b;");
+    }
     out.put("}");
     out.blank();
   }

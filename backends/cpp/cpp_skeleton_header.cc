@@ -41,7 +41,8 @@ void constructor(CodeWriter &w, const model::Template &t, const std::string &env
     w.line("{} : {} {{}}", head, inits);
   } else {
     w.line(std::string_view(head));
-    w.line("    : {} {{}}", inits);
+    auto continued = w.indented();
+    w.line(": {} {{}}", inits);
   }
 }
 
@@ -75,22 +76,23 @@ void template_class(CodeWriter &w, const model::Template &t, const std::string &
   w.line("/// {}", template_signature(t));
   w.line("class {} : public {} {{", class_name(t), base_of(t));
   w.line("public:");
-  w.indent();
-  std::string outcomes;
-  for (std::size_t k = 0; k < t.outcomes.size(); ++k)
-    outcomes += (k == 0 ? "" : ", ") + outcome_name(t, static_cast<int>(k));
-  w.line("enum {} {{ {} }};", t.kind == model::Template::Kind::Supervisor ? "Event" : "State", outcomes);
-  w.blank();
-  constructor(w, t, env, n);
-  w.blank();
-  overrides(w, t);
-  w.dedent();
+  {
+    auto members = w.indented();
+    std::string outcomes;
+    for (std::size_t k = 0; k < t.outcomes.size(); ++k)
+      outcomes += (k == 0 ? "" : ", ") + outcome_name(t, static_cast<int>(k));
+    w.line("enum {} {{ {} }};", t.kind == model::Template::Kind::Supervisor ? "Event" : "State", outcomes);
+    w.blank();
+    constructor(w, t, env, n);
+    w.blank();
+    overrides(w, t);
+  }
   w.blank();
   w.line("private:");
-  w.indent();
+  auto members = w.indented();
   w.line("{}& {};", env, n.env_member);
   for (std::size_t i = 0; i < t.params.size(); ++i) w.line("{} {};", param_type(t.params[i]), n.member[i]);
-  w.dedent();
+  members.end();
   w.line("};");
 }
 
@@ -121,7 +123,10 @@ std::string emit_skeleton_header(const model::Model &model, const model::Toolbox
   w.line("/// motors, libraries). A plan's factory takes it as `{}& ee` and hands it to every instance.", env);
   w.line("class {} {{", env);
   w.line("public:");
-  w.line("    // TODO: what the templates need of the robot.");
+  {
+    auto members = w.indented();
+    w.line("// TODO: what the templates need of the robot.");
+  }
   w.line("};");
   for (model::TemplateId i : box.templates) {
     w.blank();

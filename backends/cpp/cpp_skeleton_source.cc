@@ -50,26 +50,23 @@ void deciding_body(CodeWriter &w, const std::string &cls, const char *fn, const 
 
 void computation(CodeWriter &w, const model::Template &t, const MemberNames &n, const std::string &cls) {
   const std::string out = outputs(t, n);
-  w.line("int {}::compute(afp::Context& ctx) {{", cls);
-  w.indent();
+  auto body = w.block(fmt::format("int {}::compute(afp::Context& ctx) {{", cls));
   bool reads = read_inputs(w, t, n, "compute with it");
   std::vector<std::string> todo{fmt::format("// TODO: compute and return {}.", outcome_list(t))};
   if (!out.empty()) todo.push_back("//       Write the outputs first: " + out + ";");
   deciding_body(w, cls, "compute", todo, fmt::format("{}(void){};", reads ? "" : "(void)ctx, ", n.env_member));
-  w.dedent();
-  w.line("}");
 }
 
 void actor_or_supervisor(CodeWriter &w, const model::Template &t, const MemberNames &n, const std::string &cls) {
   const bool supervisor = t.kind == model::Template::Kind::Supervisor;
   const std::string out = outputs(t, n);
-  w.line("void {}::start(afp::Context& ctx) {{", cls);
-  w.indent();
-  if (!read_inputs(w, t, n, supervisor ? "keep what check() needs in a member" : "keep what step() needs in a member"))
-    w.line("(void)ctx;");
-  w.line(supervisor ? "// TODO: begin watching." : "// TODO: begin the action on {}.", n.env_member);
-  w.dedent();
-  w.line("}");
+  {
+    auto body = w.block(fmt::format("void {}::start(afp::Context& ctx) {{", cls));
+    if (!read_inputs(w, t, n,
+                     supervisor ? "keep what check() needs in a member" : "keep what step() needs in a member"))
+      w.line("(void)ctx;");
+    w.line(supervisor ? "// TODO: begin watching." : "// TODO: begin the action on {}.", n.env_member);
+  }
   w.blank();
   std::vector<std::string> todo;
   if (supervisor) {
@@ -82,15 +79,14 @@ void actor_or_supervisor(CodeWriter &w, const model::Template &t, const MemberNa
                                n.env_member, outcome_list(t)));
   }
   if (!out.empty()) todo.push_back("//       Write the outputs first: " + out + ";");
-  w.indent();
-  deciding_body(w, cls, supervisor ? "check" : "step", todo, fmt::format("(void)ctx, (void){};", n.env_member));
-  w.dedent();
-  w.line("}");
+  {
+    CodeWriter::Scope body(w, "}");  // the function opened above
+    deciding_body(w, cls, supervisor ? "check" : "step", todo, fmt::format("(void)ctx, (void){};", n.env_member));
+  }
   w.blank();
-  w.line("void {}::stop() {{", cls);
-  w.line(supervisor ? "    // TODO: end the watch (release what start() took); must not throw."
-                    : "    // TODO: halt what start() began.");
-  w.line("}");
+  auto body = w.block(fmt::format("void {}::stop() {{", cls));
+  w.line(supervisor ? "// TODO: end the watch (release what start() took); must not throw."
+                    : "// TODO: halt what start() began.");
 }
 
 void template_bodies(CodeWriter &w, const model::Template &t) {
