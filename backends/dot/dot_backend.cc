@@ -13,16 +13,16 @@ namespace {
 class DotBackend : public Backend {
 public:
   void emit(const model::Model &m, const EmitOptions &o, OutputSink &sink) const override {
-    sink.open(o.output_path) << dot_picture(m, o);
+    dot_picture(m, o, sink.open(o.output_path));
   }
 };
 
 }  // namespace
 
-std::string dot_picture(const model::Model &m, const EmitOptions &o) {
-  if (o.chart) return dot::chart_picture(m, m.charts.at(o.chart));
-  if (o.plan) return dot::plan_picture(m, m.plans.at(o.plan));
-  throw std::invalid_argument("dot back end: no chart or plan chosen");
+void dot_picture(const model::Model &m, const EmitOptions &o, std::ostream &out) {
+  if (o.chart) dot::chart_picture(m, m.charts.at(o.chart), out);
+  else if (o.plan) out << dot::plan_picture(m, m.plans.at(o.plan));
+  else throw std::invalid_argument("dot back end: no chart or plan chosen");
 }
 
 std::unique_ptr<Backend> make_dot_backend() { return std::make_unique<DotBackend>(); }

@@ -15,7 +15,7 @@ std::unique_ptr<Backend> make_dot_backend();
 /// std::runtime_error with a message saying so.
 std::unique_ptr<Backend> make_svg_backend();
 
-/// The DOT text for the chart or plan `options` selects.
-std::string dot_picture(const model::Model &model, const EmitOptions &options);
+/// Writes the DOT text for the chart or plan `options` selects to `out`.
+void dot_picture(const model::Model &model, const EmitOptions &options, std::ostream &out);
 
 }  // namespace gfec

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <ostream>
 #include <vector>
 
 namespace gfec::dot {
@@ -56,15 +57,15 @@ std::string sync_bar(const std::string &id, std::size_t width) {
 
 /// The places and transitions of `c`, every node id prefixed with `id` (empty for the compiled
 /// chart); then, for each place that runs a chart, that instance in a dashed frame named after
-/// the place, linked to it by a dashed line, as Grafcet draws an enclosing step's chart. Appended
+/// the place, linked to it by a dashed line, as Grafcet draws an enclosing step's chart. Written
 /// to `out`: an instance's text returned and copied into its parent's would be copied once per
 /// level it is nested.
-void chart_body(const model::Model &m, const model::Chart &c, const std::string &id, std::string &out) {
+void chart_body(const model::Model &m, const model::Chart &c, const std::string &id, std::ostream &out) {
   bool fsm = c.kind == model::Chart::Kind::Fsm;
-  out += "  // places and states, in declaration order\n";
-  for (std::size_t i = 0; i < c.places.size(); ++i) out += place_node(m, c, i, id);
+  out << "  // places and states, in declaration order\n";
+  for (std::size_t i = 0; i < c.places.size(); ++i) out << place_node(m, c, i, id);
 
-  out += "  // transitions: a bar each, its label beside it inside the same node (see transition_node)\n";
+  out << "  // transitions: a bar each, its label beside it inside the same node (see transition_node)\n";
   // An fsm's transitions counted so far by the state they leave: the rank of the next one.
   std::vector<int> leaving(fsm ? c.places.size() : 0, 0);
   for (std::size_t i = 0; i < c.transitions.size(); ++i) {
@@ -75,55 +76,54 @@ void chart_body(const model::Model &m, const model::Chart &c, const std::string 
     // whose condition holds: the picture numbers them so, 1 first, per state.
     if (fsm && !t.inputs.empty()) label = fmt::format("{}. {}", ++leaving.at(t.inputs[0].index()), label);
     std::string bar = fmt::format("{}t{}", id, i);
-    out += transition_node(bar, label);
+    out << transition_node(bar, label);
     std::string into = bar + ":bar", from = bar + ":bar";
     if (t.inputs.size() > 1) {
       into = fmt::format("{}join{}", id, i);
-      out += sync_bar(into, t.inputs.size());
-      out += fmt::format("  {} -> {}:bar [arrowhead=none];\n", into, bar);
+      out << sync_bar(into, t.inputs.size());
+      out << fmt::format("  {} -> {}:bar [arrowhead=none];\n", into, bar);
     }
     if (t.outputs.size() > 1) {
       from = fmt::format("{}fork{}", id, i);
-      out += sync_bar(from, t.outputs.size());
-      out += fmt::format("  {}:bar -> {} [arrowhead=none];\n", bar, from);
+      out << sync_bar(from, t.outputs.size());
+      out << fmt::format("  {}:bar -> {} [arrowhead=none];\n", bar, from);
     }
-    for (model::PlaceId p : t.inputs) out += fmt::format("  {}p{} -> {} [arrowhead=none];\n", id, p.index(), into);
-    for (model::PlaceId p : t.outputs) out += fmt::format("  {} -> {}p{};\n", from, id, p.index());
+    for (model::PlaceId p : t.inputs) out << fmt::format("  {}p{} -> {} [arrowhead=none];\n", id, p.index(), into);
+    for (model::PlaceId p : t.outputs) out << fmt::format("  {} -> {}p{};\n", from, id, p.index());
   }
   for (std::size_t i = 0; i < c.places.size(); ++i) {
     const model::Place &p = c.places[i];
     if (!p.runs) continue;
     const model::Chart &sub = m.charts.at(p.runs);
     std::string inner = fmt::format("{}s{}_", id, i);
-    out += fmt::format("  subgraph cluster_{}s{} {{\n", id, i);
-    out += fmt::format(
+    out << fmt::format("  subgraph cluster_{}s{} {{\n", id, i);
+    out << fmt::format(
         "  graph [label={}, style=\"dashed,rounded\", labeljust=l];\n",
         quote(fmt::format("{}: {} {}", p.name, sub.kind == model::Chart::Kind::Fsm ? "fsm" : "sfc", sub.name)));
     chart_body(m, sub, inner, out);
-    out += "  }\n";
+    out << "  }\n";
     // To the sub-chart's first place, clipped at the frame: the line reads "this step encloses that".
     if (!sub.places.empty())
-      out += fmt::format("  {}p{} -> {}p0 [style=dashed, arrowhead=none, lhead=cluster_{}s{}];\n", id, i, inner, id, i);
+      out << fmt::format("  {}p{} -> {}p0 [style=dashed, arrowhead=none, lhead=cluster_{}s{}];\n", id, i, inner, id, i);
   }
 }
 
 }  // namespace
 
-std::string chart_picture(const model::Model &m, const model::Chart &c) {
+void chart_picture(const model::Model &m, const model::Chart &c, std::ostream &out) {
   bool fsm = c.kind == model::Chart::Kind::Fsm;
   std::string title = fmt::format("{} {}", fsm ? "fsm" : "sfc", c.name);
   std::string details;
   if (c.period_ms > 0) details = fmt::format("period {}", duration(c.period_ms));
   if (c.team > 0) details += fmt::format("{}team of {} agents", details.empty() ? "" : ", ", c.team);
   if (!details.empty()) title += " (" + details + ")";
-  std::string out = fmt::format("digraph {} {{\n", quote(c.name));
-  out += preamble(title);
+  out << fmt::format("digraph {} {{\n", quote(c.name));
+  out << preamble(title);
   bool nested = false;
   for (const auto &p : c.places) nested = nested || p.runs;
-  if (nested) out += "  compound=true;\n";  // edges may end at a sub-chart's frame
+  if (nested) out << "  compound=true;\n";  // edges may end at a sub-chart's frame
   chart_body(m, c, "", out);
-  out += "}\n";
-  return out;
+  out << "}\n";
 }
 
 }  // namespace gfec::dot

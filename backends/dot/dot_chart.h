@@ -3,10 +3,12 @@
 
 #include "model.h"
 
-#include <string>
+#include <ostream>
 
 namespace gfec::dot {
 
-std::string chart_picture(const model::Model &m, const model::Chart &chart);
+/// Writes `chart` as a DOT digraph to `out`, streamed: a chart of a million places is never
+/// held as text in memory whole.
+void chart_picture(const model::Model &m, const model::Chart &chart, std::ostream &out);
 
 }  // namespace gfec::dot

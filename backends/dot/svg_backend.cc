@@ -3,6 +3,8 @@
 // on PATH when a user asks for SVG.
 #include "dot_backend.h"
 
+#include <sstream>
+
 namespace gfec {
 
 namespace {
@@ -13,7 +15,9 @@ public:
     static const ExternalTool dot{{"dot", "-Tsvg"},
                                   "--emit=svg runs Graphviz's 'dot'",
                                   "install Graphviz (Debian: apt-get install graphviz) or use --emit=dot"};
-    sink.filter(o.output_path, dot, dot_picture(m, o));
+    std::ostringstream picture;  // dot reads it whole on its standard input
+    dot_picture(m, o, picture);
+    sink.filter(o.output_path, dot, picture.str());
   }
 };
 

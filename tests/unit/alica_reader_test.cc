@@ -17,6 +17,7 @@
 #include <chrono>
 #include <filesystem>
 #include <map>
+#include <sstream>
 
 using namespace gfec;
 namespace fs = std::filesystem;
@@ -662,7 +663,9 @@ TEST_CASE("alica: the picture of a plan labels transitions with the condition, n
   REQUIRE(!r.diag.has_errors());
   const model::Chart *c = r.chart("Fetch");
   REQUIRE(c);
-  std::string dot = dot::chart_picture(r.model, *c);
+  std::ostringstream picture;
+  dot::chart_picture(r.model, *c, picture);
+  const std::string dot = picture.str();
   INFO(dot);
   CHECK(dot.find("1. Go2Grab: Arrived()") != std::string::npos);
   CHECK(dot.find("1. Grab2Got: Holding()") != std::string::npos);
