@@ -26,10 +26,9 @@ class CppBackend : public Backend {
 public:
   void emit(const model::Model &model, const EmitOptions &options, OutputSink &sink) const override {
     cpp_backend::PlanContext c = cpp_backend::make_plan_context(model, chosen_plan(model, options), options);
-    // plan.cpp first (the primary output), then plan.hpp beside it. A plan's wiring is small:
-    // each file is built as a string and then written.
-    sink.open(options.output_path) << cpp_backend::emit_plan_source(c);
-    sink.open(replace_extension(options.output_path, ".hpp")) << cpp_backend::emit_plan_header(c);
+    // plan.cpp first (the primary output), then plan.hpp beside it, each written as it is made.
+    cpp_backend::emit_plan_source(c, sink.open(options.output_path));
+    cpp_backend::emit_plan_header(c, sink.open(replace_extension(options.output_path, ".hpp")));
   }
 };
 
@@ -40,8 +39,8 @@ public:
     // The header first (what the wiring includes), then the source to fill in beside it.
     std::string source = replace_extension(options.output_path, ".cpp");
     if (source == options.output_path) source += ".cpp";  // -o x.cpp must not name both files
-    sink.open(options.output_path) << cpp_backend::emit_skeleton_header(model, box, options);
-    sink.open(source) << cpp_backend::emit_skeleton_source(model, box, options, base_name(source));
+    cpp_backend::emit_skeleton_header(model, box, options, sink.open(options.output_path));
+    cpp_backend::emit_skeleton_source(model, box, options, base_name(source), sink.open(source));
   }
 };
 

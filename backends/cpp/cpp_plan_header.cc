@@ -27,8 +27,8 @@ std::string entries(const model::Plan &p) {
 
 }  // namespace
 
-std::string emit_plan_header(const PlanContext &c) {
-  CodeWriter w(c.header_file, false);
+void emit_plan_header(const PlanContext &c, std::ostream &out) {
+  CodeWriter w(out, c.header_file, false);
   w.line(std::string_view(banner(c.options.source_name, "plan " + c.plan.name)));
   w.line("// Do not edit: change the plan and regenerate. How to run it: docs/plans.md.");
   directive(w, "#ifndef " + c.guard);
@@ -53,7 +53,6 @@ std::string emit_plan_header(const PlanContext &c) {
   w.line("std::unique_ptr<afp::Plan> {}({});", top.factory, c.factory_params(top));
   w.blank();
   directive(w, "#endif  // " + c.guard);
-  return w.take();
 }
 
 }  // namespace gfec::cpp_backend

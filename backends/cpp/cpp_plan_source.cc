@@ -21,7 +21,8 @@ constexpr std::size_t kWidth = 120;
 /// is written only where a statement does not already fall on its own line.
 class Writer {
 public:
-  explicit Writer(const PlanContext &c) : w_(c.source_file, c.options.line_directives), sources_(c.model.sources()) {}
+  Writer(const PlanContext &c, std::ostream &out)
+      : w_(out, c.source_file, c.options.line_directives), sources_(c.model.sources()) {}
 
   /// A statement that stems from `range` in the plan (several lines when it wraps).
   void from(const SourceRange &range, const std::string &text) {
@@ -55,8 +56,6 @@ public:
     w_.line_back();
     pointing_ = false;
   }
-
-  std::string take() { return w_.take(); }
 
 private:
   CodeWriter w_;
@@ -241,8 +240,8 @@ void helpers(Writer &out, const FormulaHelpers &h) {
 
 }  // namespace
 
-std::string emit_plan_source(const PlanContext &c) {
-  Writer out(c);
+void emit_plan_source(const PlanContext &c, std::ostream &stream) {
+  Writer out(c, stream);
   out.put(banner(c.options.source_name, "plan " + c.plan.name));
   out.put("// Do not edit: change the plan and regenerate. The wiring is described in docs/plans.md.");
   out.raw("#include " + c_string_literal(c.header_file));
@@ -267,7 +266,6 @@ std::string emit_plan_source(const PlanContext &c) {
   }
   out.blank();
   PlanWriter(c, c.plans.back(), out).factory();
-  return out.take();
 }
 
 }  // namespace gfec::cpp_backend

@@ -98,11 +98,12 @@ void template_class(CodeWriter &w, const model::Template &t, const std::string &
 
 }  // namespace
 
-std::string emit_skeleton_header(const model::Model &model, const model::Toolbox &box, const EmitOptions &options) {
+void emit_skeleton_header(const model::Model &model, const model::Toolbox &box, const EmitOptions &options,
+                          std::ostream &out) {
   const std::string header = base_name(options.output_path);
   const std::string guard = include_guard(header);
   const std::string env = environment_type(box);
-  CodeWriter w(header, false);
+  CodeWriter w(out, header, false);
   w.line(std::string_view(banner(options.source_name, "skeleton of toolbox " + box.name)));
   w.line("// A starting point, not generated code to keep regenerating: fill it in and keep it. Plans");
   w.line("// compiled by gfec include it as \"{}\" (docs/toolbox.md: the toolbox contract).", toolbox_header(box));
@@ -134,7 +135,6 @@ std::string emit_skeleton_header(const model::Model &model, const model::Toolbox
   }
   w.blank();
   directive(w, "#endif  // " + guard);
-  return w.take();
 }
 
 }  // namespace gfec::cpp_backend

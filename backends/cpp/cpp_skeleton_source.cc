@@ -100,9 +100,9 @@ void template_bodies(CodeWriter &w, const model::Template &t) {
 
 }  // namespace
 
-std::string emit_skeleton_source(const model::Model &model, const model::Toolbox &box, const EmitOptions &options,
-                                 const std::string &source_name) {
-  CodeWriter w(source_name, false);
+void emit_skeleton_source(const model::Model &model, const model::Toolbox &box, const EmitOptions &options,
+                          const std::string &source_name, std::ostream &out) {
+  CodeWriter w(out, source_name, false);
   w.line(std::string_view(banner(options.source_name, "skeleton of toolbox " + box.name)));
   w.line("// A starting point: write the bodies and keep this file (regenerating overwrites it). Until");
   w.line("// a body is written, the component fails with \"not implemented\" and the plan ends in error.");
@@ -111,7 +111,6 @@ std::string emit_skeleton_source(const model::Model &model, const model::Toolbox
     w.blank();
     template_bodies(w, model.templates.at(i));
   }
-  return w.take();
 }
 
 }  // namespace gfec::cpp_backend
