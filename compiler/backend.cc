@@ -15,16 +15,17 @@ std::string replace_extension(const std::string &path, const std::string &ext) {
   return path.substr(0, dot) + ext;
 }
 
+void OutputSink::filter(const std::string &path, const ExternalTool &tool, const std::string &input) {
+  if (!tools_) throw std::runtime_error(fmt::format("{}, and this caller runs no external tools", tool.purpose));
+  std::string output = tools_(tool, input);
+  open(path) << output;
+}
+
 namespace {
 
 class MemorySink : public OutputSink {
 public:
-  explicit MemorySink(const ToolRunner &tools) : tools_(tools) {}
-  void filter(const std::string &path, const ExternalTool &tool, const std::string &input) override {
-    if (!tools_) throw std::runtime_error(fmt::format("{}, and this caller runs no external tools", tool.purpose));
-    std::string output = tools_(tool, input);
-    open(path) << output;
-  }
+  explicit MemorySink(const ToolRunner &tools) : OutputSink(tools) {}
   std::ostream &open(const std::string &path) override {
     finish();
     paths_.push_back(path);
@@ -42,7 +43,6 @@ private:
     files_.push_back({paths_.back(), current_->str()});
     current_.reset();
   }
-  const ToolRunner &tools_;
   std::vector<std::string> paths_;
   std::unique_ptr<std::ostringstream> current_;
   std::vector<OutputFile> files_;

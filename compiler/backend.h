@@ -8,6 +8,7 @@
 #include <functional>
 #include <iosfwd>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace gfec {
@@ -46,23 +47,29 @@ struct ExternalTool {
   std::string if_missing;            ///< what the user can do when the program cannot be started
 };
 
+/// Runs `tool` over `input` and returns its standard output (the driver's run_external_tool).
+using ToolRunner = std::function<std::string(const ExternalTool &tool, const std::string &input)>;
+
 /// Where a back end writes: one stream per output file, opened in order, the primary output
 /// first (e.g. engine.c, then engine.h beside it). The driver's sink writes each to its safe
 /// temporary file (compiler/driver/safe_output.h) and renames them into place only when the
 /// whole compile succeeded; a name it refuses gives a stream that discards (the driver reports).
 class OutputSink {
 public:
+  /// `tools` runs the external tools of filter(); without it filter() throws.
+  explicit OutputSink(ToolRunner tools) : tools_(std::move(tools)) {}
   virtual ~OutputSink() = default;
   /// The stream for the output `path`; valid until the next open() or the end of emit().
   virtual std::ostream &open(const std::string &path) = 0;
   /// The output `path` is `input` put through an external tool (e.g. Graphviz's `dot -Tsvg`).
-  /// The sink runs it, so that back ends never start processes or touch the file system;
-  /// throws std::runtime_error with a message for the user when the tool is missing or fails.
-  virtual void filter(const std::string &path, const ExternalTool &tool, const std::string &input) = 0;
-};
+  /// The sink's owner runs it, so that back ends never start processes or touch the file
+  /// system; throws std::runtime_error with a message for the user when the tool is missing or
+  /// fails.
+  void filter(const std::string &path, const ExternalTool &tool, const std::string &input);
 
-/// Runs `tool` over `input` and returns its standard output (the driver's run_external_tool).
-using ToolRunner = std::function<std::string(const ExternalTool &tool, const std::string &input)>;
+private:
+  ToolRunner tools_;
+};
 
 class Backend {
 public:

@@ -35,15 +35,11 @@ namespace {
 /// kept for the dependency file.
 class TemporarySink : public OutputSink {
 public:
-  explicit TemporarySink(safe_output::Transaction &t) : t_(t) {}
+  explicit TemporarySink(safe_output::Transaction &t) : OutputSink(run_external_tool), t_(t) {}
   std::ostream &open(const std::string &path) override {
     paths.push_back(path);
     std::ostream *out = t_.open(path);
     return out ? *out : discard_;  // refused: the transaction keeps why, the driver reports it
-  }
-  void filter(const std::string &path, const ExternalTool &tool, const std::string &input) override {
-    std::string output = run_external_tool(tool, input);
-    open(path) << output;
   }
   std::vector<std::string> paths;
 
