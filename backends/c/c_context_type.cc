@@ -1,16 +1,19 @@
 #include "c_context_type.h"
 
-#include <cctype>
+#include "naming/c_type_name.h"
+
+#include <stdexcept>
 #include <utility>
 
 namespace gfec::c_backend {
 
-ContextType::ContextType(std::string s) : spelling(std::move(s)) {
-  std::string word;
-  for (char ch : spelling + " ") {
-    if (std::isalnum(static_cast<unsigned char>(ch)) || ch == '_') word += ch;
-    else if (!word.empty()) words.push_back(std::exchange(word, ""));
-  }
+ContextType::ContextType(const std::string &s) {
+  if (s.empty()) return;  // no context
+  naming::CTypeName type;
+  if (std::string why = naming::read_c_type_name(s, type); !why.empty())
+    throw std::invalid_argument("context type '" + s + "': " + why + " (the driver checks --context-type)");
+  spelling = std::move(type.spelling);
+  words = std::move(type.words);
   // `const struct motor *`, `struct motor const *`: the word after the keyword is the tag; a
   // bare `struct *` names none.
   for (std::size_t i = 0; i + 1 < words.size(); ++i)

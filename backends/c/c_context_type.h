@@ -1,5 +1,6 @@
 // The instance context's C type as the engine uses it (--context-type, docs/c-engine.md
-// "Instance context"): read once here rather than split into words wherever it is needed.
+// "Instance context"): read once, by the reader the driver checks the option with
+// (compiler/naming/c_type_name.h), rather than split into words wherever it is needed.
 #pragma once
 
 #include <string>
@@ -8,8 +9,9 @@
 namespace gfec::c_backend {
 
 struct ContextType {
-  /// `spelling` as the driver checked and normalised it: words and `*` (compiler/driver/options.cc).
-  explicit ContextType(std::string spelling);
+  /// `spelling` as --context-type gave it; empty: no context. Throws std::invalid_argument for
+  /// a name the driver would have refused.
+  explicit ContextType(const std::string &spelling);
 
   std::string spelling;            ///< `struct motor *`; empty: the engine has no context
   std::vector<std::string> words;  ///< its identifiers (`struct`, `motor`): no field may take one

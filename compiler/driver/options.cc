@@ -1,12 +1,11 @@
 #include "options.h"
 
 #include "backend_registry.h"
+#include "naming/c_type_name.h"
 #include "validate/suggest.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
-
-#include <cctype>
 
 namespace gfec {
 
@@ -107,42 +106,6 @@ std::vector<const char *> take_dependency_flags(int argc, const char *const *arg
     }
   }
   return rest;
-}
-
-/// Why `type` cannot be the C engine's context type (--context-type), or "": it is written into
-/// engine.h as it stands, so only the words and `*` of a C type name are taken (a typedef from
-/// <stdint.h>, `void *`, `struct motor *`, `const struct bus *`), never code.
-std::string check_context_type(const std::string &type) {
-  bool word = false;
-  for (char ch : type) {
-    const bool letter = std::isalnum(static_cast<unsigned char>(ch)) || ch == '_';
-    if (!letter && ch != '*' && ch != ' ') {
-      return fmt::format("--context-type '{}': a C type name is words and '*' only (e.g. 'void *', 'struct motor *')",
-                         type);
-    }
-    word = word || letter;
-  }
-  if (!word) return "--context-type needs a C type, e.g. 'struct motor *'";
-  const char first = type[type.find_first_not_of(" *")];
-  if (std::isdigit(static_cast<unsigned char>(first)))
-    return fmt::format("--context-type '{}': a C type name begins with a letter", type);
-  return {};
-}
-
-/// `struct  motor*` -> `struct motor *`: words one space apart, each `*` after a space.
-std::string normal_type(const std::string &type) {
-  std::string out;
-  bool space = false;
-  for (char ch : type) {
-    if (ch == ' ') {
-      space = true;
-      continue;
-    }
-    if (!out.empty() && (space || (ch == '*' && out.back() != '*'))) out += ' ';
-    out += ch;
-    space = false;
-  }
-  return out;
 }
 
 /// The four ways gfec is run, for --help and for a command line without files.
@@ -307,8 +270,10 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
   o.line_directives = !no_line;
   if (!context_type.empty() || context) {
     if (context_type.empty()) context_type = "void *";
-    if (std::string why = check_context_type(context_type); !why.empty()) return usage_error(why);
-    o.context_type = normal_type(context_type);
+    naming::CTypeName type;
+    if (std::string why = naming::read_c_type_name(context_type, type); !why.empty())
+      return usage_error(fmt::format("--context-type '{}': {}", context_type, why));
+    o.context_type = type.spelling;
   }
   if (o.analyze && (!o.output.empty() || o.deps.write)) return usage_error("--analyze writes nothing; drop -o and -MD");
   if (o.analyze) return result;  // several files are fine, as with --check

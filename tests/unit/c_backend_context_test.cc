@@ -370,6 +370,10 @@ TEST_CASE("c engine context: the type's tag is declared first, however it is qua
   CHECK(ContextType("bus_t").param("ctx") == "bus_t ctx");
   CHECK(ContextType("union u *").tag == "u");
   CHECK(ContextType("void *").tag.empty());
+  // The same reader as the driver's check: spacing normalised, code refused.
+  CHECK(ContextType("struct  motor*const").param("m") == "struct motor *const m");
+  CHECK(ContextType("").spelling.empty());
+  CHECK_THROWS_AS(ContextType("int; int x"), std::invalid_argument);
 
   const char *chart = "interface I { void Go(); }\nsfc Bus { initial place A { Go(); } }\n";
   auto compiled = compile_chart({{"bus.sfc", chart}}, "bus.sfc", "engine.c", true, EngineForm::Auto, t.spelling);
