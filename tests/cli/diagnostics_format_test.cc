@@ -3,7 +3,7 @@
 #include "diagnostics_json.h"
 #include "diagnostics_sarif.h"
 #include "diagnostic_printer.h"
-#include "pipeline/compilation.h"
+#include "../unit/support.h"
 
 #include <catch2/catch.hpp>
 
@@ -19,24 +19,16 @@ using Json = nlohmann::ordered_json;
 
 namespace {
 
-/// One in-memory file through the pipeline gfec runs (compiler/pipeline/compilation.h), without
-/// the static analyses: the loader's or the validator's diagnostics.
-struct FrontEnd {
-  pipeline::Compilation c;
-  SourceManager &sources = c.sources;
-  Diagnostics &diag = c.diag;
-  /// `name` holding `text`, beside the files of `fs`.
+MemoryFileSystem adding(MemoryFileSystem fs, const std::string &name, const std::string &text) {
+  fs.add(name, text);
+  return fs;
+}
+
+/// `name` holding `text`, beside the files of `fs`, through the front end: the loader's or the
+/// validator's diagnostics.
+struct FrontEnd : test::Pipeline {
   FrontEnd(const std::string &name, const std::string &text, WarningOptions w = {}, MemoryFileSystem fs = {})
-      : c(options(w)) {
-    fs.add(name, text);
-    c.front_end(name, fs);
-  }
-  static pipeline::FrontEndOptions options(WarningOptions w) {
-    pipeline::FrontEndOptions f;
-    f.warnings = w;
-    f.analyze = false;
-    return f;
-  }
+      : Pipeline(name, adding(std::move(fs), name, text), w) {}
 };
 
 }  // namespace

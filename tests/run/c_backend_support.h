@@ -11,6 +11,7 @@
 #include "loader.h"
 #include "model.h"
 #include "pipeline/compilation.h"
+#include "../unit/support.h"
 
 #include <catch2/catch.hpp>
 #include <fmt/format.h>
@@ -317,38 +318,27 @@ inline std::vector<OutputFile> emit_c(const model::Model &m, const std::string &
 
 /// Chart text through loader, validator and back end, all in memory. Files are named as given
 /// (relative names keep #line paths short and the output byte-stable).
-struct Compiled {
-  pipeline::Compilation c{no_analyses()};
-  SourceManager &sources = c.sources;
-  Diagnostics &diag = c.diag;
-  model::Model &model = c.model;
+struct Compiled : test::Pipeline {
+  using Pipeline::Pipeline;
   std::vector<OutputFile> files;
   std::string errors;    ///< rendered diagnostics when the chart did not compile
   model::ChartId chart;  ///< the chart compiled: the default root of the main file
 
   const model::Chart &the_chart() const { return model.charts.at(chart); }
-
-  /// The tests compare exact diagnostics: the static analyses' warnings are tested apart.
-  static pipeline::FrontEndOptions no_analyses() {
-    pipeline::FrontEndOptions f;
-    f.analyze = false;
-    return f;
-  }
 };
 
 inline std::unique_ptr<Compiled> compile_chart(const std::map<std::string, std::string> &files, const std::string &main,
                                                const std::string &output, bool line_directives = true,
                                                EngineForm engine = EngineForm::Auto,
                                                const std::string &context_type = "", bool names = false) {
-  auto c = std::make_unique<Compiled>();
   MemoryFileSystem mem;
   for (const auto &[path, text] : files) mem.add(path, text);
-  c->c.front_end(main, mem);
+  auto c = std::make_unique<Compiled>(main, mem);
   // The chart gfec compiles by default: the one no other chart runs (docs/language.md "Sub-charts").
   pipeline::TargetRequest request;
   request.among = pipeline::kSfc | pipeline::kFsm;
   const pipeline::Target &target = c->c.diag.has_errors() ? c->c.target : c->c.select(request);
-  for (const auto &d : c->diag.all()) c->errors += render_text(d, c->sources);
+  c->errors = c->text();
   if (c->diag.has_errors() || c->model.charts.empty()) return c;
   if (!target.chosen()) {
     c->errors += target.error + "\n";

@@ -2,10 +2,9 @@
 // and validator to a model, and an environment scripted per function and tick.
 #pragma once
 
-#include "diagnostic_printer.h"
 #include "interpreter/engine.h"
 #include "interpreter/run_chart.h"
-#include "pipeline/compilation.h"
+#include "support.h"
 
 #include <catch2/catch.hpp>
 
@@ -18,32 +17,14 @@
 namespace gfec::test {
 
 /// A program compiled to its model; the model points into `sources`, so this never moves.
-struct Compiled {
-  pipeline::Compilation c;
-  SourceManager &sources = c.sources;
-  Diagnostics &diag = c.diag;
-  LoadResult &loaded = c.loaded;
-  model::Model &model = c.model;
+struct Compiled : Pipeline {
+  /// `text` as t.sfc; a non-empty `iface` becomes bot.iface, which t.sfc imports.
+  explicit Compiled(const std::string &text, const std::string &iface = "", WarningOptions w = {})
+      : Pipeline("t.sfc",
+                 files({{"t.sfc", iface.empty() ? text : "import \"bot.iface\";\n" + text}, {"bot.iface", iface}}), w) {
+  }
 
-  explicit Compiled(const std::string &text, const std::string &iface = "", WarningOptions w = {}) : c(options(w)) {
-    MemoryFileSystem fs;
-    fs.add("t.sfc", iface.empty() ? text : "import \"bot.iface\";\n" + text);
-    fs.add("bot.iface", iface);
-    c.front_end("t.sfc", fs);
-  }
-  static pipeline::FrontEndOptions options(WarningOptions w) {
-    pipeline::FrontEndOptions f;
-    f.warnings = w;
-    f.analyze = false;  // the interpreter's tests compare exact diagnostics
-    return f;
-  }
-  Compiled(const Compiled &) = delete;
-
-  std::string diagnostics() const {
-    std::string out;
-    for (const auto &d : diag.all()) out += render_text(d, sources);
-    return out;
-  }
+  std::string diagnostics() const { return text(); }
   model::ChartId chart(const std::string &name) const {
     for (model::ChartId i : model.charts.ids())
       if (model.charts[i].name == name) return i;

@@ -33,9 +33,16 @@ struct FrontEnd {
   }
 };
 
+/// In-memory files by name.
+inline MemoryFileSystem files(std::initializer_list<std::pair<std::string, std::string>> named) {
+  MemoryFileSystem fs;
+  for (const auto &[name, text] : named) fs.add(name, text);
+  return fs;
+}
+
 /// One file through the pipeline gfec runs (compiler/pipeline/compilation.h) without the static
-/// analyses: what the loader and the validator said, and the model. Never moves: the model
-/// points into `sources`.
+/// analyses, whose warnings are tested apart: what the loader and the validator said, and the
+/// model. Every test that needs a model starts here. Never moves: the model points into `sources`.
 struct Pipeline {
   pipeline::Compilation c;
   SourceManager &sources = c.sources;
