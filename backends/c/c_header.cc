@@ -188,8 +188,8 @@ void api(CodeWriter &w, const Engine &c) {
   if (c.fsm) {
     w.line("/* 1 if `place` is the current state, else 0. */");
     w.line("unsigned {0}_activation(const {0} *m, int place);", t);
-    w.line("/* The current state, a {}_<state>. */", t);
-    w.line("{1} {0}_state(const {0} *m);", t, c.place_type);
+    w.line("/* The current state's number, a {}_<state> (an int, as the language's C API has it). */", t);
+    w.line("int {0}_state(const {0} *m);", t);
     w.line("/* 0 while running, 1 once in a success state, -1 once in a failure state. */");
     w.line("int {0}_status(const {0} *m);", t);
     if (c.team()) team_api(w, c);

@@ -253,10 +253,10 @@ void accessors(CodeWriter &w, const Engine &c) {
   }
   if (!c.fsm) return;
   w.blank();
-  w.line("{1} {0}_state(const {0} *{2})", t, c.place_type, m);
+  w.line("int {0}_state(const {0} *{1})", t, m);
   {
     auto body = w.block("{");
-    w.line("return {};", c.field(c.state));
+    w.line("return (int){};", c.field(c.state));
   }
   w.blank();
   w.line("int {0}_status(const {0} *{1})", t, m);

@@ -77,6 +77,36 @@ TEST_CASE("c engine compile: the header is valid C++", "[c_backend][compile]") {
   }
 }
 
+TEST_CASE("c engine compile: the header declares the API as the language writes its prototypes",
+          "[c_backend][compile]") {
+  // A caller may declare the functions itself (or take their addresses) exactly as
+  // docs/language.md §5.2 and §7 write them: any other return or parameter type is a
+  // "conflicting types" error.
+  for (const auto &e : golden_engines()) {
+    fs::path dir = copy_engine(e, "prototypes");
+    std::string header = read_file(dir / (e.stem + ".h"));
+    const std::string &x = e.chart;
+    std::string user = fmt::format("#include \"{0}.h\"\n"
+                                   "void {1}_init({1} *m);\n"
+                                   "void {1}_run({1} *m);\n"
+                                   "unsigned {1}_activation(const {1} *m, int place);\n",
+                                   e.stem, x);
+    const bool fsm = header.find(x + "_status(") != std::string::npos;
+    if (fsm)
+      user += fmt::format("int {0}_state(const {0} *m);\nint {0}_status(const {0} *m);\n"
+                          "int (*state_of)(const {0} *) = {0}_state;\n",
+                          x);
+    user += fmt::format("unsigned (*activation_of)(const {0} *, int) = {0}_activation;\n", x);
+    write_file(dir / "user.c", user);
+    for (const auto &cc : c_compilers()) {
+      auto r = run_command(fmt::format("cd '{}' && {} {} -c user.c -o /dev/null", dir.string(), cc, kStrictFlags),
+                           dir / "build.log");
+      INFO(e.stem << " (" << (fsm ? "fsm" : "sfc") << "): " << cc << "\n" << user << r.output);
+      CHECK(r.status == 0);
+    }
+  }
+}
+
 TEST_CASE("c engine compile: cppcheck finds nothing", "[c_backend][compile]") {
   if (!have_tool("cppcheck")) {
     WARN("cppcheck is not installed: skipped");

@@ -272,7 +272,7 @@ TEST_CASE("c backend: MISRA-minded shape: typed enums and state, one exit, a fin
   REQUIRE(door->errors.empty());
   const std::string &fc = door->files.at(0).contents, &fh = door->files.at(1).contents;
   CHECK(contains(fh, "    Door_place state; /* the current state, a Door_<state> */\n"));  // a debugger prints its name
-  CHECK(contains(fh, "Door_place Door_state(const Door *m);\n"));
+  CHECK(contains(fh, "int Door_state(const Door *m);\n"));
   // One exit: a terminal state skips the tick inside an if, no early return (rule 15.5).
   CHECK(!contains(fc, "return;"));
   CHECK(contains(fc, "    if (m->status == 0) {\n"));

@@ -98,9 +98,9 @@ unsigned Weigh_activation(const Weigh *m, int place)
     return ((int)m->state == place) ? 1u : 0u;
 }
 
-Weigh_place Weigh_state(const Weigh *m)
+int Weigh_state(const Weigh *m)
 {
-    return m->state;
+    return (int)m->state;
 }
 
 int Weigh_status(const Weigh *m)

@@ -41,8 +41,8 @@ void Weigh_init(Weigh *m);
 void Weigh_run(Weigh *m);
 /* 1 if `place` is the current state, else 0. */
 unsigned Weigh_activation(const Weigh *m, int place);
-/* The current state, a Weigh_<state>. */
-Weigh_place Weigh_state(const Weigh *m);
+/* The current state's number, a Weigh_<state> (an int, as the language's C API has it). */
+int Weigh_state(const Weigh *m);
 /* 0 while running, 1 once in a success state, -1 once in a failure state. */
 int Weigh_status(const Weigh *m);
 

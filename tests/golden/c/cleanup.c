@@ -132,9 +132,9 @@ unsigned CleanUp_activation(const CleanUp *m, int place)
     return ((int)m->state == place) ? 1u : 0u;
 }
 
-CleanUp_place CleanUp_state(const CleanUp *m)
+int CleanUp_state(const CleanUp *m)
 {
-    return m->state;
+    return (int)m->state;
 }
 
 int CleanUp_status(const CleanUp *m)

@@ -47,8 +47,8 @@ void CleanUp_init(CleanUp *m);
 void CleanUp_run(CleanUp *m);
 /* 1 if `place` is the current state, else 0. */
 unsigned CleanUp_activation(const CleanUp *m, int place);
-/* The current state, a CleanUp_<state>. */
-CleanUp_place CleanUp_state(const CleanUp *m);
+/* The current state's number, a CleanUp_<state> (an int, as the language's C API has it). */
+int CleanUp_state(const CleanUp *m);
 /* 0 while running, 1 once in a success state, -1 once in a failure state. */
 int CleanUp_status(const CleanUp *m);
 

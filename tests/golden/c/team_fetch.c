@@ -167,9 +167,9 @@ unsigned Fetch_activation(const Fetch *m, int place)
     return ((int)m->state == place) ? 1u : 0u;
 }
 
-Fetch_place Fetch_state(const Fetch *m)
+int Fetch_state(const Fetch *m)
 {
-    return m->state;
+    return (int)m->state;
 }
 
 int Fetch_status(const Fetch *m)

@@ -49,8 +49,8 @@ void Fetch_init(Fetch *m);
 void Fetch_run(Fetch *m);
 /* 1 if `place` is the current state, else 0. */
 unsigned Fetch_activation(const Fetch *m, int place);
-/* The current state, a Fetch_<state>. */
-Fetch_place Fetch_state(const Fetch *m);
+/* The current state's number, a Fetch_<state> (an int, as the language's C API has it). */
+int Fetch_state(const Fetch *m);
 /* 0 while running, 1 once in a success state, -1 once in a failure state. */
 int Fetch_status(const Fetch *m);
 /* Team machine: Fetch_init makes the engine agent 0 and forgets every report. Call
