@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -76,9 +77,15 @@ std::string head(const std::string &text, int lines = 8) {
   return out;
 }
 
+/// How a program std::system ran through the shell ended. The shell reports a child killed by
+/// signal N as exit status 128 + N; both are named as the signal (SIGFPE: an integer division
+/// by zero in the engine).
 std::string exit_status(int status) {
   if (status == -1) return "could not be started";
-  if (WIFSIGNALED(status)) return fmt::format("was killed by signal {}", WTERMSIG(status));
+  int signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
+  if (WIFEXITED(status) && WEXITSTATUS(status) > 128 && WEXITSTATUS(status) < 128 + 64)
+    signal = WEXITSTATUS(status) - 128;
+  if (signal != 0) return fmt::format("was killed by signal {} ({})", signal, strsignal(signal));
   return fmt::format("exited with status {}", WIFEXITED(status) ? WEXITSTATUS(status) : status);
 }
 
@@ -187,8 +194,8 @@ std::vector<model::FunctionId> engine_functions(const model::Model &model, model
 const std::vector<std::string> &harness_library_names() {
   // What harness.c calls of the C library (and main): an interface function of the same name
   // would stand in for it when the harness is linked.
-  static const std::vector<std::string> names = {"main",   "vprintf", "scanf",  "strcmp",
-                                                 "strcpy", "strtol",  "strtof", "strtod"};
+  static const std::vector<std::string> names = {"main",   "vprintf", "scanf",  "strcmp", "strcpy",
+                                                 "strtol", "strtof",  "strtod", "fflush"};
   return names;
 }
 
@@ -290,9 +297,12 @@ HarnessSources harness_source(const model::Model &model, model::ChartId chart, c
       "double @H@double(int agent, int function)\n{{\n"
       "    return strtod(@H@value[agent][function], NULL);\n}}\n\n",
       n, functions, kHarnessCalls);
-  h += fmt::format("int main(void)\n{{\n    char word[16];\n    @H@init();\n"
+  // Each record is flushed as it is complete: an engine that dies of a signal in tick n leaves
+  // the records before it, so that the message can name the tick.
+  h += fmt::format("int main(void)\n{{\n    char word[16];\n    @H@init();\n    (void)fflush(stdout);\n"
                    "    while (scanf(\"%15s\", word) == 1) {{\n"
                    "        if (strcmp(word, \"tick\") == 0) {{\n            @H@tick();\n"
+                   "            (void)fflush(stdout);\n"
                    "        }} else if (strcmp(word, \"set\") == 0) {{\n"
                    "            int who;\n            int f;\n            int a;\n            char v[64];\n"
                    "            if (scanf(\"%d %d %63s\", &who, &f, v) != 3 || who < -1 || who >= {0} || f < 0 || "
@@ -404,9 +414,12 @@ scenario::Run EngineBuilds::run(const Build &build, const model::Model &model, c
     parse_output(text, model, test, keep, run);
   }
   std::uint64_t expected = scenario::total_ticks(test) + 1;
+  // One record after _init, then one per tick: with n records, tick n did not finish.
   if (status != 0 || run.recorded() != expected)
-    run.error = fmt::format("the C engine's harness {} after tick {}", status != 0 ? exit_status(status) : "stopped",
-                            run.recorded() == 0 ? 0 : run.recorded() - 1);
+    run.error = run.recorded() == 0 ? fmt::format("the C engine's harness {} before its first tick",
+                                                  status != 0 ? exit_status(status) : "stopped")
+                                    : fmt::format("the C engine's harness {} in tick {}",
+                                                  status != 0 ? exit_status(status) : "stopped", run.recorded());
   std::error_code ec;
   fs::remove(in, ec);
   fs::remove(out, ec);

@@ -163,6 +163,22 @@ test('a disagreement between the engine and the reference names the tick and the
   assert.match(r.stderr, /note: it fails on the C engine only; it holds on the reference interpreter$/m);
 });
 
+test('an engine that crashes is a failed test naming the signal and the tick it died in', () => {
+  // N() returns 0 until set: B's action divides by zero in tick 1, which the C engine dies of
+  // (SIGFPE) and the reference interpreter reports as undefined behaviour.
+  const dir = scratch({
+    'div.sfc': 'interface I { int N(); }\nsfc Div {\n  var int k = 0;\n  initial place A;\n  place B { k = 10 / N(); }\n' +
+      '  A -> B when true;\n}\n',
+    'div.test': 'import "div.sfc";\ntest "set" of Div {\n  set N = 2;\n  tick 3;\n  expect k == 5;\n}\n' +
+      'test "unset" of Div {\n  tick 3;\n}\n',
+  });
+  const r = gfec(['test', 'div.test'], dir);
+  assert.equal(r.code, 1);
+  assert.equal(lastLine(r.stdout), '1 passed, 1 failed');
+  assert.match(r.stderr, /^div\.test:7:1: error: the C engine stopped: the C engine's harness was killed by signal 8 \([^)]+\) in tick 1 \[test-run\]$/m);
+  assert.match(r.stderr, /^div\.sfc:5:17: error: the reference interpreter stopped: tick 1: division by zero/m);
+});
+
 const TWO = `${EXAMPLE}
 test "the right wheel stops too" of LineFollower {
   set Right_IR_Black = true;
