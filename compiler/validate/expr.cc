@@ -355,6 +355,28 @@ std::optional<model::Expr> lower_unary(const ast::Expr &e, ExprScope &s) {
   return x;
 }
 
+/// Timers count whole ticks (docs/language.md §5.3): a duration is rounded up to them, which is
+/// exact for `elapsed(P) >= d` and `elapsed(P) < d` (and their mirror images) and not for the
+/// other comparisons: at period 10ms, `elapsed(P) > 25ms` is `ticks > 3`, true from 40 ms on.
+void warn_timer_rounding(const ast::Expr &e, const model::Expr &a, const model::Expr &b, ExprScope &s) {
+  const bool right = b.kind == K::Ticks;
+  const model::Expr &duration = right ? b : a;
+  const double period = s.chart ? s.chart->out.period_ms : 0;
+  if (duration.kind != K::Ticks || period <= 0 || duration.ticks >= kBeyondTimers) return;
+  const BinaryOp op = e.binary_op;
+  if (op == (right ? BinaryOp::Ge : BinaryOp::Le) || op == (right ? BinaryOp::Lt : BinaryOp::Gt)) return;
+  const double periods = duration.float_value / period;
+  if (std::fabs(periods - std::round(periods)) < 1e-9) return;
+  const model::Model &m = s.cx.model;
+  const std::string rounded = fmt::format("{}ms", static_cast<double>(duration.ticks) * period);
+  const std::string means = right ? fmt::format("{} {} {}", source_text(m, a.range), spelling(op), rounded)
+                                  : fmt::format("{} {} {}", rounded, spelling(op), source_text(m, b.range));
+  s.cx.diag.warning(Warning::TimerRounding, duration.range,
+                    fmt::format("{} is not a whole number of periods ({}ms): timers count whole ticks, so '{}' "
+                                "means '{}'",
+                                source_text(m, duration.range), period, source_text(m, e.range), means));
+}
+
 std::optional<model::Expr> lower_binary(const ast::Expr &e, ExprScope &s) {
   if (e.args.size() != 2) return std::nullopt;
   auto a = lower_expr(e.args[0], s);
@@ -368,6 +390,7 @@ std::optional<model::Expr> lower_binary(const ast::Expr &e, ExprScope &s) {
     duration_note(d, a->type, b->type);
     return std::nullopt;
   }
+  if (a->type == Type::Duration && b->type == Type::Duration) warn_timer_rounding(e, *a, *b, s);
   model::Expr x = make(K::Binary, *type, e.range);
   x.binary_op = e.binary_op;
   x.args.push_back(std::move(*a));

@@ -205,7 +205,7 @@ fsm M {
   state B { Stop(); }
   success state Done;
   failure state Failed post Black();
-  A -> B when elapsed(A) > 50ms;
+  A -> B when elapsed(A) > 60ms;
   B -> A when White();
   B -> Done when Black();
   A -> Failed when elapsed(A) > 10s;
@@ -227,7 +227,7 @@ fsm M {
   REQUIRE(c.transitions[0].condition);
   CHECK(c.transitions[0].condition->args[1].kind == model::Expr::Kind::Ticks);
   CHECK(c.transitions[0].condition->args[1].ticks == 3);
-  CHECK(c.transitions[0].condition->args[1].float_value == 50);
+  CHECK(c.transitions[0].condition->args[1].float_value == 60);
   CHECK(c.transitions[3].condition->args[1].ticks == 500);
 }
 
