@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <cmath>
 #include <set>
 
 namespace gfec::validation {
@@ -122,6 +123,14 @@ public:
     case Type::Float: value = interp::Value::of_float(static_cast<float>(v->f)); break;
     case Type::Double: value = interp::Value::of_double(v->f); break;
     default: return std::nullopt;
+    }
+    // `called Act(3.7)` for an int parameter: every call passes a whole number, so the
+    // expectation could never hold with "exactly these arguments" (§12).
+    if (conversion == Conversion::Chart && to == Type::Int && (v->type == Type::Float || v->type == Type::Double) &&
+        std::trunc(v->f) != v->f) {
+      cx_.diag.error(x->range, ErrorKind::TypeMismatch,
+                     fmt::format("{} is an 'int': no call passes {}", what, source_text(cx_.model, x->range)));
+      return std::nullopt;
     }
     try {
       return interp::format_value(interp::convert(value, to, x->range));
