@@ -98,7 +98,9 @@ private:
         diag_.error(import.range, ErrorKind::Import, fmt::format("imports nested more than {} deep", kMaxImportDepth));
         return;
       }
+      via_.push_back(import.range);
       load(path, std::move(*text));
+      via_.pop_back();
       return;
     }
     auto &d = diag_.error(import.range, ErrorKind::Import, fmt::format("cannot find imported file '{}'", import.path));
@@ -136,8 +138,9 @@ private:
     for (std::size_t i = 0; i < stack_.size(); ++i) {
       if (stack_[i] == target) in_cycle = true;
       if (!in_cycle) continue;
-      const std::string &next = i + 1 < stack_.size() ? stack_[i + 1] : target;
-      d.note(fmt::format("'{}' imports '{}'", stack_[i], next));
+      // Each step at its own import; the last one is the error's (shown once).
+      if (i + 1 < stack_.size()) d.note(via_[i], fmt::format("'{}' imports '{}'", stack_[i], stack_[i + 1]));
+      else d.note(fmt::format("'{}' imports '{}'", stack_[i], target));
     }
   }
 
@@ -149,6 +152,7 @@ private:
   std::map<std::string, State> state_;
   std::map<std::string, std::string> by_identity_;  ///< device:inode -> the path it was read by
   std::vector<std::string> stack_;
+  std::vector<SourceRange> via_;  ///< via_[i]: the import by which stack_[i] read stack_[i + 1]
 };
 
 }  // namespace

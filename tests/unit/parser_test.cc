@@ -288,7 +288,9 @@ TEST_CASE("loader: imports are found beside the importer, read once, and cycles 
   CHECK(ok.text() == "dir/b.iface:1:8: error: import cycle: 'dir/a.iface' imports itself [import-cycle]\n"
                      " import \"a.iface\";\n"
                      "        ^~~~~~~~~\n"
-                     "dir/b.iface:1:8: note: 'dir/a.iface' imports 'dir/b.iface'\n"
+                     "dir/a.iface:1:8: note: 'dir/a.iface' imports 'dir/b.iface'\n"
+                     " import \"b.iface\";\n"
+                     "        ^~~~~~~~~\n"
                      "dir/b.iface:1:8: note: 'dir/b.iface' imports 'dir/a.iface'\n");
 
   FrontEnd missing({{"m.sfc", "\nimport \"nothere.iface\";"}});
