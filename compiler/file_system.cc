@@ -19,6 +19,17 @@ std::optional<std::string> RealFileSystem::read(const std::string &path) const {
   return text.str();
 }
 
+std::string cannot_read(const std::string &path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  const char *why = !fs::exists(st)            ? "no such file"
+                    : fs::is_directory(st)     ? "it is a folder"
+                    : !fs::is_regular_file(st) ? "not a regular file; gfec reads no devices, pipes or sockets"
+                                               : "permission denied or an I/O error";
+  return "cannot read '" + path + "': " + why;
+}
+
 std::vector<std::string> RealFileSystem::list(const std::string &dir) const {
   std::vector<std::string> names;
   std::error_code ec;

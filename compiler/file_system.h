@@ -30,6 +30,11 @@ public:
   std::optional<std::string> identity(const std::string &path) const override;
 };
 
+/// "cannot read 'x.sfc': no such file", for a path RealFileSystem::read refused: missing, a
+/// folder, not a regular file (gfec reads no device, pipe or socket: one could block it or never
+/// end, docs/security.md), or not readable.
+std::string cannot_read(const std::string &path);
+
 class MemoryFileSystem : public FileSystem {
 public:
   void add(std::string path, std::string text) { files_[std::move(path)] = std::move(text); }

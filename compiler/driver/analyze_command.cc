@@ -36,7 +36,7 @@ int analyze_one(const std::string &input, const Options &o, DiagnosticReport &re
   if (c.front_end(input)) summary = analysis::analysis_report(c.model, c.diag);
   report.add(input, c.diag, c.sources);
   if (c.unreadable()) {
-    report.tool_error(input, fmt::format("cannot read '{}'", input), false);
+    report.tool_error(input, cannot_read(input), false);
     return kExitUsageOrIo;
   }
   if (c.diag.has_errors()) return kExitInputError;

@@ -103,7 +103,7 @@ int compile(const Options &o, DiagnosticReport &report, std::ostream &out) {
   }
   report.add(input, c.diag, c.sources);
   if (c.unreadable()) {
-    report.tool_error(input, fmt::format("cannot read '{}'", input), false);
+    report.tool_error(input, cannot_read(input), false);
     return kExitUsageOrIo;
   }
   if (!ok) return kExitInputError;

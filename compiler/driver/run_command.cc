@@ -172,7 +172,7 @@ int run_with(const RunOptions &o, DiagnosticReport &report, std::ostream &out) {
   pipeline::Compilation c(f);
   c.front_end(o.input);
   if (c.unreadable()) {
-    report.tool_error(o.input, fmt::format("cannot read '{}'", o.input), false);
+    report.tool_error(o.input, cannot_read(o.input), false);
     return kExitUsageOrIo;
   }
   report.add(o.input, c.diag, c.sources);
@@ -211,7 +211,7 @@ int run_with(const RunOptions &o, DiagnosticReport &report, std::ostream &out) {
   if (!o.inputs_csv.empty()) {
     auto text = fs.read(o.inputs_csv);
     if (!text) {
-      report.tool_error(o.inputs_csv, fmt::format("cannot read '{}'", o.inputs_csv), false);
+      report.tool_error(o.inputs_csv, cannot_read(o.inputs_csv), false);
       return kExitUsageOrIo;
     }
     FileId id = c.sources.add(o.inputs_csv, *text);

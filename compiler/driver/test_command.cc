@@ -349,7 +349,7 @@ int test_with(const TestOptions &o, std::ostream &out, std::ostream &err) {
   std::size_t passed = 0, failed = broken;
   for (const auto &f : files) {
     if (f->unreadable) {
-      report->tool_error(f->path, fmt::format("cannot read '{}'", f->path), false);
+      report->tool_error(f->path, cannot_read(f->path), false);
       continue;
     }
     report->add(f->path, f->diag, f->sources);

@@ -40,7 +40,15 @@ TEST_CASE("gfec: usage errors exit 2") {
   CHECK(w.out == "gfec: error: unknown warning option '-Wno-such-warning' ('gfec --help' lists the warnings)\n");
   auto missing = run_command(gfec_exe + " does-not-exist.sfc");
   CHECK(missing.exit_code == 2);
-  CHECK(missing.out == "gfec: error: cannot read 'does-not-exist.sfc'\n");
+  CHECK(missing.out == "gfec: error: cannot read 'does-not-exist.sfc': no such file\n");
+  // Only regular files are read: a folder or a device is refused with the reason, never waited on.
+  auto folder = run_command(gfec_exe + " --check /tmp");
+  CHECK(folder.exit_code == 2);
+  CHECK(folder.out == "gfec: error: cannot read '/tmp': it is a folder\n");
+  auto device = run_command(gfec_exe + " run /dev/zero");
+  CHECK(device.exit_code == 2);
+  CHECK(device.out == "gfec: error: cannot read '/dev/zero': not a regular file; gfec reads no devices, pipes or "
+                      "sockets\n");
 }
 
 TEST_CASE("gfec: compiles a chart into engine.c and engine.h") {
