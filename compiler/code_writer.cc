@@ -58,6 +58,38 @@ void CodeWriter::line_back() {
   pointing_away_ = false;
 }
 
+namespace {
+
+bool is_blank(std::string_view s) { return s.find_first_not_of(" \t\r\f\v") == std::string_view::npos; }
+
+}  // namespace
+
+void CodeWriter::verbatim(const SourceManager &sources, const SourceRange &range, std::string_view text,
+                          std::uint32_t code_begin) {
+  // #line names the line where the code starts (just after `%{`), which the model keeps.
+  std::uint32_t start = code_begin ? code_begin : range.begin;
+  // Drop the rest of the `%{` line and the indentation before `%}` when they are blank.
+  auto first_nl = text.find('\n');
+  if (first_nl != std::string_view::npos && is_blank(text.substr(0, first_nl))) {
+    text.remove_prefix(first_nl + 1);
+    start += static_cast<std::uint32_t>(first_nl + 1);
+  }
+  auto last_nl = text.rfind('\n');
+  if (last_nl != std::string_view::npos && is_blank(text.substr(last_nl + 1))) text = text.substr(0, last_nl + 1);
+  if (is_blank(text)) return;
+
+  line_from(sources, {range.file, start, start});
+  std::string_view body = text.back() == '\n' ? text.substr(0, text.size() - 1) : text;
+  if (body.find('\n') == std::string_view::npos) {
+    // One line: indented like the code around it.
+    auto b = body.find_first_not_of(" \t");
+    auto e = body.find_last_not_of(" \t\r");
+    line(body.substr(b, e - b + 1));
+  } else {
+    raw(text);  // several lines: exactly as the user laid them out
+  }
+}
+
 std::string c_string_literal(std::string_view text) {
   std::string s = "\"";
   unsigned char previous = 0;

@@ -71,6 +71,11 @@ public:
   void line_from(const SourceManager &sources, const SourceRange &range);
   /// `#line N "engine.c"`: back to the generated file itself, after code from the chart.
   void line_back();
+  /// A `%{ %}` block (`text`: what is between the braces), with `#line` to where the text
+  /// begins, `code_begin` (range.begin if 0). Blank first and last lines are dropped; one line
+  /// is indented like the code around it, several are copied as the user laid them out.
+  void verbatim(const SourceManager &sources, const SourceRange &range, std::string_view text,
+                std::uint32_t code_begin);
 
   bool line_directives() const { return line_directives_; }
   const std::string &text() const { return out_; }

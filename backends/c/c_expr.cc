@@ -460,8 +460,6 @@ private:
   model::PlaceId from_;
 };
 
-bool blank(std::string_view s) { return s.find_first_not_of(" \t\r\f\v") == std::string_view::npos; }
-
 }  // namespace
 
 const char *c_type(model::Type type) {
@@ -611,7 +609,7 @@ public:
   void list(const std::vector<model::Stmt> &stmts) {
     for (const auto &s : stmts) {
       if (s.kind == model::Stmt::Kind::Verbatim) {
-        emit_verbatim(w_, sources_, s.range, *s.verbatim, s.code_begin);
+        w_.verbatim(sources_, s.range, *s.verbatim, s.code_begin);
         next_ = 0;
         ++at_;
         continue;
@@ -698,32 +696,6 @@ std::vector<std::string> c_statements(const Engine &c, const std::vector<model::
 void emit_statements(CodeWriter &w, const Engine &c, const std::vector<model::Stmt> &stmts,
                      const std::vector<std::string> &text) {
   StatementWriter(w, c, text).list(stmts);
-}
-
-void emit_verbatim(CodeWriter &w, const SourceManager &sources, const SourceRange &range, std::string_view text,
-                   std::uint32_t code_begin) {
-  // #line names the line where the code starts (just after `%{`), which the model keeps.
-  std::uint32_t start = code_begin ? code_begin : range.begin;
-  // Drop the rest of the `%{` line and the indentation before `%}` when they are blank.
-  auto first_nl = text.find('\n');
-  if (first_nl != std::string_view::npos && blank(text.substr(0, first_nl))) {
-    text.remove_prefix(first_nl + 1);
-    start += static_cast<std::uint32_t>(first_nl + 1);
-  }
-  auto last_nl = text.rfind('\n');
-  if (last_nl != std::string_view::npos && blank(text.substr(last_nl + 1))) text = text.substr(0, last_nl + 1);
-  if (blank(text)) return;
-
-  w.line_from(sources, {range.file, start, start});
-  std::string_view body = text.back() == '\n' ? text.substr(0, text.size() - 1) : text;
-  if (body.find('\n') == std::string_view::npos) {
-    // One line: indented like the code around it.
-    auto b = body.find_first_not_of(" \t");
-    auto e = body.find_last_not_of(" \t\r");
-    w.line(body.substr(b, e - b + 1));
-  } else {
-    w.raw(text);  // several lines: exactly as the user laid them out
-  }
 }
 
 }  // namespace gfec::c_backend

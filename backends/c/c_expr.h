@@ -100,9 +100,4 @@ std::vector<std::string> c_statements(const Engine &c, const std::vector<model::
 void emit_statements(CodeWriter &w, const Engine &c, const std::vector<model::Stmt> &stmts,
                      const std::vector<std::string> &text);
 
-/// A `%{ %}` block (text: what is between the braces) with `#line` to where the text begins,
-/// `code_begin` in the model (range.begin if 0; no #line without `sources`).
-void emit_verbatim(CodeWriter &w, const SourceManager &sources, const SourceRange &range, std::string_view text,
-                   std::uint32_t code_begin);
-
 }  // namespace gfec::c_backend

@@ -43,7 +43,7 @@ void includes(CodeWriter &w, const Engine &c) {
 void verbatims(CodeWriter &w, const Engine &c) {
   for (const auto &v : c.model.verbatims) {
     w.blank();
-    emit_verbatim(w, c.model.sources(), v.range, v.text, v.code_begin);
+    w.verbatim(c.model.sources(), v.range, v.text, v.code_begin);
     w.line_back();
   }
 }

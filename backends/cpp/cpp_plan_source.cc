@@ -50,6 +50,11 @@ public:
     directive(w_, text);
     ++next_;
   }
+  /// A file-level `%{ %}` block, as the user wrote it, then back to the generated file.
+  void verbatim(const model::Verbatim &v) {
+    w_.verbatim(sources_, v.range, v.text, v.code_begin);
+    back();
+  }
 
   /// Back to the generated file before code that no plan element stands for.
   void back() {
@@ -251,6 +256,12 @@ void emit_plan_source(const PlanContext &c, std::ostream &stream) {
   out.blank();
   for (model::ToolboxId box : c.toolboxes)
     out.raw("#include " + c_string_literal(toolbox_header(c.model.toolboxes[box])));
+  // The `%{ %}` blocks at file level (imports' first), where the plan's own #includes go, as an
+  // engine's (docs/language.md §6).
+  for (const auto &v : c.model.verbatims) {
+    out.blank();
+    out.verbatim(v);
+  }
   const bool internal = c.helpers.text || c.helpers.divide || c.plans.size() > 1;
   if (internal) {
     out.blank();

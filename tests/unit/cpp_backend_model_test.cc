@@ -240,3 +240,27 @@ plan P {
   CHECK(w.rfind("}  // namespace", top) != std::string::npos);      // the sub-plans are internal
   CHECK(out[1].contents.find("make_Middle") == std::string::npos);  // the header declares only P
 }
+
+TEST_CASE("cpp model: file-level verbatim code is copied after the includes, imports' first", "[cpp_backend]") {
+  // docs/language.md §6: the blocks go to the top of the generated file, for #includes, as an
+  // engine's do; the plan's was dropped once. The toolbox's block comes first (imported files
+  // first), then the plan's, before the factory that could use them.
+  const std::map<std::string, std::string> files = {
+      {"bot.toolbox", std::string("%{\n#include <climits>\n%}\n") + kToolbox},
+      {"p.plan", "import \"bot.toolbox\";\n%{\n#include <cmath>\nstatic_assert(INT_MAX > 0, \"from the toolbox\");\n"
+                 "static_assert(sizeof(std::sqrt(2.0)) == sizeof(double), \"from the plan\");\n%}\n"
+                 "plan P {\n  start a;\n  actor a: Say(\"x\") { SAID -> terminate; }\n}\n"}};
+  auto c = compile(files, "p.plan", "p.cpp", false, true);
+  REQUIRE(!c->diag.has_errors());
+  const std::string &w = c->files[0].contents;
+  const auto toolbox_include = w.find("#include \"bot_toolbox.h\"");
+  const auto climits = w.find("#include <climits>");
+  const auto cmath = w.find("#include <cmath>");
+  const auto factory = w.find("make_P(");
+  REQUIRE(toolbox_include != std::string::npos);
+  CHECK(toolbox_include < climits);
+  CHECK(climits < cmath);
+  CHECK(cmath < factory);
+  CHECK(w.find("#line 3 \"p.plan\"\n#include <cmath>") != std::string::npos);  // the user's line
+  CHECK(compiles("plan_verbatim", files, "p.plan") == "");
+}
