@@ -25,6 +25,22 @@ struct Rendered {
   bool char_array = false;  ///< a bare string literal: `+` needs a std::string on one side
 };
 
+std::string float_spelling(std::string text) {
+  if (text.find_first_of(".eE") == std::string::npos) text += ".0";
+  return text;
+}
+
+/// A float config value as C++ converts `float x = 0.1;`: the literal is a double, rounded to
+/// float. Spelling it `0.1f` would round the decimal to float directly, which differs in rare
+/// cases (1.00000005960464477550 is 1.0f through a double, 1.00000012f directly); so the float
+/// is computed here, from the value the model stores beside the spelling, and written in the
+/// fewest digits that give it back exactly.
+std::string float_value(const model::Expr &literal) {
+  const float value = static_cast<float>(literal.float_value);
+  if (!std::isfinite(value)) return fmt::format("static_cast<float>({})", float_spelling(literal.text.str()));
+  return float_spelling(fmt::format("{}", value)) + "f";
+}
+
 /// Renders the inside of one formula lambda; `c` is the lambda's afp::ConfigView.
 class Formula {
 public:
@@ -34,7 +50,13 @@ public:
     switch (e.kind) {
     case Expr::Kind::Bool: return {e.bool_value ? "true" : "false"};
     case Expr::Kind::Int: return int_literal(e.int_value);
-    case Expr::Kind::Float: return {e.text.str(), e.text.view().rfind('-', 0) == 0 ? kUnary : kPrimary};
+    case Expr::Kind::Float: {
+      // A `float` value (a file-level `const float`, folded) is a float in C++ too: written as
+      // its double spelling it would take part in the arithmetic as a double (§4, as in C).
+      std::string text = e.type == Type::Float ? float_value(e) : e.text.str();
+      const int prec = text.rfind('-', 0) == 0 ? kUnary : kPrimary;
+      return {std::move(text), prec};
+    }
     case Expr::Kind::String: return {c_string_literal(e.text.str()), kPrimary, true};
     case Expr::Kind::Config: return {entry(e, cpp_type(e.type))};
     case Expr::Kind::Unary: return unary(e);
@@ -134,22 +156,6 @@ bool is_constant(const Expr &e) {
   }
   default: return false;
   }
-}
-
-std::string float_spelling(std::string text) {
-  if (text.find_first_of(".eE") == std::string::npos) text += ".0";
-  return text;
-}
-
-/// A float config value as C++ converts `float x = 0.1;`: the literal is a double, rounded to
-/// float. Spelling it `0.1f` would round the decimal to float directly, which differs in rare
-/// cases (1.00000005960464477550 is 1.0f through a double, 1.00000012f directly); so the float
-/// is computed here, from the value the model stores beside the spelling, and written in the
-/// fewest digits that give it back exactly.
-std::string float_value(const model::Expr &literal) {
-  const float value = static_cast<float>(literal.float_value);
-  if (!std::isfinite(value)) return fmt::format("static_cast<float>({})", float_spelling(literal.text.str()));
-  return float_spelling(fmt::format("{}", value)) + "f";
 }
 
 }  // namespace

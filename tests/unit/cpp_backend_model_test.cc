@@ -264,3 +264,21 @@ TEST_CASE("cpp model: file-level verbatim code is copied after the includes, imp
   CHECK(w.find("#line 3 \"p.plan\"\n#include <cmath>") != std::string::npos);  // the user's line
   CHECK(compiles("plan_verbatim", files, "p.plan") == "");
 }
+
+TEST_CASE("cpp model: a file-level const float is a float in formulas, as in C", "[cpp_backend]") {
+  // (double)A is 0.10000000149011612 in C: written `0.1` it would be 0.1, and A * v a double
+  // product of the wrong value.
+  std::string w = wiring(R"(
+import "bot.toolbox";
+const float A = 0.1;
+const double D = 0.1;
+plan P {
+  config { float v = 3; }
+  start a;
+  actor a: Go(A) { ARRIVED -> b; STUCK -> terminate; }
+  actor b: Go(A * v + D) { ARRIVED -> terminate; STUCK -> terminate; }
+}
+)");
+  CHECK(w.find("afp::in<float>(0.1f)") != std::string::npos);
+  CHECK(w.find("return 0.1f * c.get<float>(\"v\") + 0.1; }") != std::string::npos);
+}
