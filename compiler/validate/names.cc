@@ -43,6 +43,14 @@ const char *describe(Sym kind) {
 bool check_reserved(const ast::Name &name, Sym kind, Diagnostics &diag) {
   // Every name ends up in generated C or C++ (an enum constant, a struct member, a function, a
   // class), so a word either language reserves would make that code fail to compile.
+  // The built-in functions cannot be declared again as anything (docs/language.md §1): a
+  // variable `active` would make `active(P)` read as a call of it.
+  for (const char *builtin : {"elapsed", "active", "succeeded", "failed", "agent"})
+    if (name.text == builtin) {
+      diag.error(name.range, ErrorKind::ReservedName,
+                 fmt::format("'{}' is built into the chart language and cannot name {}", builtin, with_article(kind)));
+      return false;
+    }
   const char *what = nullptr;
   switch (naming::reserved(name.text)) {
   case naming::Reserved::None: return true;

@@ -79,10 +79,6 @@ void declare_interface(Context &cx, const ast::Interface &iface) {
     out.range = f.range;
     bool ok = lower_prototype(f, out, cx.diag);
     if (ok) check_library_function(cx, f, out);
-    for (const char *builtin : {"elapsed", "active", "succeeded", "failed", "agent"})
-      if (f.name.text == builtin)
-        cx.diag.error(f.name.range, ErrorKind::ReservedName,
-                      fmt::format("'{}' is built into the chart language and cannot name a function", builtin));
     const model::FunctionId index = cx.model.functions.next_id();
     cx.model.functions.push_back(std::move(out));
     cx.function_ok.push_back(ok);
