@@ -43,10 +43,12 @@ const char *describe(Sym kind) {
 bool check_reserved(const ast::Name &name, Sym kind, Diagnostics &diag) {
   // Every name ends up in generated C or C++ (an enum constant, a struct member, a function, a
   // class), so a word either language reserves would make that code fail to compile.
-  // The built-in functions cannot be declared again as anything (docs/language.md §1): a
-  // variable `active` would make `active(P)` read as a call of it.
+  // The built-in functions cannot be declared again (docs/language.md §1): a variable `active`
+  // would make `active(P)` read as a call of it. A parameter's name is only documentation of a
+  // prototype, never read by a chart: `void Report(bool failed)` stays valid.
+  const bool parameter = kind == Sym::Param || kind == Sym::TemplateParam;
   for (const char *builtin : {"elapsed", "active", "succeeded", "failed", "agent"})
-    if (name.text == builtin) {
+    if (!parameter && name.text == builtin) {
       diag.error(name.range, ErrorKind::ReservedName,
                  fmt::format("'{}' is built into the chart language and cannot name {}", builtin, with_article(kind)));
       return false;
