@@ -391,6 +391,7 @@ std::optional<model::Expr> lower_binary(const ast::Expr &e, ExprScope &s) {
     return std::nullopt;
   }
   if (a->type == Type::Duration && b->type == Type::Duration) warn_timer_rounding(e, *a, *b, s);
+  if (divides_by_zero(e.binary_op, *a, *b, e.range, s.cx)) return std::nullopt;
   model::Expr x = make(K::Binary, *type, e.range);
   x.binary_op = e.binary_op;
   x.args.push_back(std::move(*a));
@@ -461,6 +462,18 @@ std::optional<model::Stmt> lower_assign(const ast::Stmt &st, ExprScope &s) {
 }
 
 }  // namespace
+
+bool divides_by_zero(BinaryOp op, const model::Expr &a, const model::Expr &b, SourceRange whole, Context &cx) {
+  if (op != BinaryOp::Div && op != BinaryOp::Mod) return false;
+  // Both constant: folding reports it.
+  auto divisor = evaluate(b, cx.model, nullptr);
+  if (!divisor || (divisor->type == Type::Int ? divisor->i != 0 : divisor->f != 0) || evaluate(a, cx.model, nullptr))
+    return false;
+  cx.diag.error(b.range, ErrorKind::DivisionByZero,
+                fmt::format("{} by zero: '{}' is undefined in C", op == BinaryOp::Div ? "division" : "remainder",
+                            source_text(cx.model, whole)));
+  return true;
+}
 
 unsigned long to_ticks(double ms, double period_ms) {
   if (period_ms <= 0 || ms <= 0) return 0;

@@ -69,6 +69,10 @@ void report_unknown(Diagnostics &diag, std::set<std::string> &seen, const ast::N
 /// longer is this many ticks, never reached.
 constexpr unsigned long kBeyondTimers = 0x100000000ul;
 
+/// `f / 0` or `f % 0` with `f` not constant: undefined in C (C11 6.5.5), and gcc -Werror refuses
+/// the generated code (-Wdiv-by-zero). Reports it at the divisor and returns true.
+bool divides_by_zero(BinaryOp op, const model::Expr &a, const model::Expr &b, SourceRange whole, Context &cx);
+
 /// `ms` in whole ticks of `period_ms`, rounded up (§5.3), at most kBeyondTimers.
 unsigned long to_ticks(double ms, double period_ms);
 

@@ -85,6 +85,7 @@ std::optional<model::Expr> lower_binary(const ast::Expr &e, Context &cx, PlanSco
                               quoted(b->type)));
     return std::nullopt;
   }
+  if (divides_by_zero(op, *a, *b, e.range, cx)) return std::nullopt;
   model::Expr x = make(K::Binary, *type, e.range);
   x.binary_op = op;
   x.args.push_back(std::move(*a));
