@@ -415,11 +415,11 @@ scenario::Run EngineBuilds::run(const Build &build, const model::Model &model, c
   }
   std::uint64_t expected = scenario::total_ticks(test) + 1;
   // One record after _init, then one per tick: with n records, tick n did not finish.
-  if (status != 0 || run.recorded() != expected)
-    run.error = run.recorded() == 0 ? fmt::format("the C engine's harness {} before its first tick",
-                                                  status != 0 ? exit_status(status) : "stopped")
-                                    : fmt::format("the C engine's harness {} in tick {}",
-                                                  status != 0 ? exit_status(status) : "stopped", run.recorded());
+  if (status != 0 || run.recorded() != expected) {
+    const std::string how = status != 0 ? exit_status(status) : "stopped";
+    run.error = run.recorded() == 0 ? fmt::format("the C engine's harness {} before its first tick", how)
+                                    : fmt::format("the C engine's harness {} in tick {}", how, run.recorded());
+  }
   std::error_code ec;
   fs::remove(in, ec);
   fs::remove(out, ec);

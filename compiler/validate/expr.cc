@@ -550,10 +550,9 @@ std::optional<model::Expr> lower_expr(const ast::Expr *e, ExprScope &s) {
 /// A call of an unknown name that is a built-in misspelt (`acitve(P)`): reported as such, with
 /// the fix, and its arguments left unread (a place is no value: that error would be noise).
 bool misspelt_builtin(const ast::Name &name, ExprScope &s) {
-  static constexpr std::string_view kBuiltins[] = {"elapsed", "active", "succeeded", "failed", "team", "agent"};
   if (name.text.empty() || name.text.size() > kMaxSuggestedLength || s.cx.c_names.find(name.text)) return false;
   if (closest(name.text, s.cx.c_names.of({Sym::Function}))) return false;  // an interface function is closer
-  for (std::string_view builtin : kBuiltins) {
+  for (std::string_view builtin : kBuiltinFunctions) {
     if (edit_distance(name.text, builtin) > std::max<std::size_t>(1, (name.text.size() + 1) / 3)) continue;
     if (!seen(s).insert(fmt::format("function {}", name.text)).second) return true;
     auto &d = s.cx.diag.error(name.range, ErrorKind::UnknownName, fmt::format("unknown function '{}'", name.text));

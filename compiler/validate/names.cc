@@ -47,7 +47,7 @@ bool check_reserved(const ast::Name &name, Sym kind, Diagnostics &diag) {
   // would make `active(P)` read as a call of it. A parameter's name is only documentation of a
   // prototype, never read by a chart: `void Report(bool failed)` stays valid.
   const bool parameter = kind == Sym::Param || kind == Sym::TemplateParam;
-  for (const char *builtin : {"elapsed", "active", "succeeded", "failed", "agent"})
+  for (std::string_view builtin : kBuiltinFunctions)
     if (!parameter && name.text == builtin) {
       diag.error(name.range, ErrorKind::ReservedName,
                  fmt::format("'{}' is built into the chart language and cannot name {}", builtin, with_article(kind)));

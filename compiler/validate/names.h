@@ -106,6 +106,10 @@ private:
 /// Reports (check `reserved-name`) a name that generated C or C++ reserves (compiler/naming/:
 /// a keyword of C99/C11 or C++17/C++20, a name of the standard headers the engines include) and
 /// returns false; generated code names things after the user's names.
+/// The chart language's built-in functions (docs/language.md §1): no declaration may take their
+/// names, and a misspelt call is offered the nearest.
+inline constexpr std::string_view kBuiltinFunctions[] = {"elapsed", "active", "succeeded", "failed", "team", "agent"};
+
 bool check_reserved(const ast::Name &name, Sym kind, Diagnostics &diag);
 
 /// Reports a clash with `previous` as `duplicate-name`: the same message `declare` gives.
