@@ -47,6 +47,9 @@ void declare_plan(Context &cx, const ast::Plan &plan);
 void validate_plan(Context &cx, model::PlanId index);
 /// Reports every plan that contains itself, directly or through sub-plans.
 void check_plan_recursion(Context &cx);
+/// Reports a config entry that a plan and a sub-plan it runs declare with different types (an
+/// error) or different initial values (-Wconfig-initial).
+void check_shared_config(Context &cx);
 
 /// Lowers the condition of transition `index` (the sfc and fsm checks, once the places' bodies
 /// are lowered).

@@ -43,6 +43,7 @@ model::Model validate(ast::Program &program, const SourceManager &sources, Diagn
   for (model::ChartId c : model.charts.ids()) validation::validate_chart(cx, c);
   for (model::PlanId p : model.plans.ids()) validation::validate_plan(cx, p);
   validation::check_plan_recursion(cx);
+  validation::check_shared_config(cx);
   validation::validate_tests(cx, tests);
   return model;
 }

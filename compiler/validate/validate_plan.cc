@@ -9,6 +9,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <set>
+#include <string_view>
+#include <tuple>
+#include <unordered_map>
 
 namespace gfec::validation {
 
@@ -266,6 +270,118 @@ struct PlanGraph {
   }
 };
 
+// ------------------------------------------------------------------ the shared configuration
+
+/// A plan and the sub-plans it runs share one configuration, in which a name is one entry
+/// (docs/runtime.md, "Sub-plans"). The runtime declares the plan's entries first, then each
+/// sub-plan's, actor by actor and depth first; the first declaration gives the entry its type and
+/// initial value, a later one of another type stops the program (afp::ConfigError) and a later
+/// initial value is never used. This walks the same order, so both are found at compile time.
+class SharedConfig {
+public:
+  explicit SharedConfig(Context &cx) : cx_(cx), on_path_(cx.model.plans.size()) {}
+
+  void check(model::PlanId root) {
+    first_.clear();
+    std::vector<bool> done(cx_.model.plans.size());
+    enter(root);
+    while (!path_.empty()) {
+      auto &[plan, next] = path_.back();
+      const auto &actors = cx_.model.plans[plan].actors;
+      if (next == actors.size()) {
+        on_path_[plan] = 0;
+        done[plan.index()] = true;
+        path_.pop_back();
+        continue;
+      }
+      model::PlanId sub = actors[model::ActorId(next++)].subplan;
+      // A plan met again declares what it declared before; a cycle is recursive-plan's error.
+      if (sub && !on_path_[sub] && !done[sub.index()]) enter(sub);
+    }
+  }
+
+private:
+  struct Declared {
+    model::PlanId plan;
+    model::ConfigId entry;
+  };
+
+  void enter(model::PlanId plan) {
+    on_path_[plan] = 1;
+    path_.push_back({plan, 0});
+    const model::Plan &p = cx_.model.plans[plan];
+    for (model::ConfigId e : p.config.ids()) {
+      auto [it, fresh] = first_.emplace(std::string_view(p.config[e].name), Declared{plan, e});
+      if (!fresh) compare(it->second, {plan, e});
+    }
+  }
+
+  const model::ConfigEntry &entry(Declared d) const { return cx_.model.plans[d.plan].config[d.entry]; }
+
+  void compare(Declared first, Declared later) {
+    const model::ConfigEntry &a = entry(first), &b = entry(later);
+    const bool conflict = a.type != b.type;
+    if (!conflict && (!b.init || same_initial_value(a, b))) return;
+    if (!reported_.insert({first.plan.index(), first.entry.index(), later.plan.index(), later.entry.index()}).second)
+      return;
+    const std::string &outer = cx_.model.plans[first.plan].name;
+    const std::string &inner = cx_.model.plans[later.plan].name;
+    Diagnostic *d = nullptr;
+    if (conflict) {
+      d = &cx_.diag.error(b.name_range, ErrorKind::ConfigType,
+                          fmt::format("config entry '{}' is '{}' in plan '{}' but '{}' in plan '{}', which share one "
+                                      "configuration",
+                                      b.name, model::type_name(b.type), inner, model::type_name(a.type), outer));
+      d->note(a.name_range, fmt::format("'{}' is declared '{}' here, first", a.name, model::type_name(a.type)));
+    } else {
+      d = &cx_.diag.warning(
+          Warning::ConfigInitial, b.init->range,
+          fmt::format("initial value of config entry '{}' is not used when plan '{}' runs plan '{}': "
+                      "'{}' declares the entry first, {}",
+                      b.name, root_name(), inner, outer,
+                      a.init ? "with another initial value" : "without one (it starts at its type's default)"));
+      d->note(a.name_range, fmt::format("'{}' is declared here, first", a.name));
+    }
+    for (std::size_t i = 0; i + 1 < path_.size(); ++i) {
+      const model::ActorUse &use = cx_.model.plans[path_[i].first].actors[model::ActorId(path_[i].second - 1)];
+      d->note(use.name_range,
+              fmt::format("plan '{}' runs plan '{}' as actor '{}'", cx_.model.plans[path_[i].first].name,
+                          cx_.model.plans[use.subplan].name, use.name));
+    }
+  }
+
+  const std::string &root_name() const { return cx_.model.plans[path_.front().first].name; }
+
+  /// The initial value the entry starts with: its own, or its type's default.
+  static bool same_initial_value(const model::ConfigEntry &a, const model::ConfigEntry &b) {
+    if (!a.init) return initial_is_default(b);
+    const model::Expr &x = *a.init, &y = *b.init;
+    switch (a.type) {
+    case Type::Bool: return x.bool_value == y.bool_value;
+    case Type::Int: return x.int_value == y.int_value;
+    case Type::String: return x.text == y.text;
+    default: return x.float_value == y.float_value;
+    }
+  }
+
+  static bool initial_is_default(const model::ConfigEntry &b) {
+    const model::Expr &y = *b.init;
+    switch (b.type) {
+    case Type::Bool: return !y.bool_value;
+    case Type::Int: return y.int_value == 0;
+    case Type::String: return y.text.empty();
+    default: return y.float_value == 0;
+    }
+  }
+
+  Context &cx_;
+  IdMap<model::PlanId, int> on_path_;  ///< 1: on path_
+  /// The plans from the root down to the one being walked: (plan, its next actor to look at).
+  std::vector<std::pair<model::PlanId, std::size_t>> path_;
+  std::unordered_map<std::string_view, Declared> first_;
+  std::set<std::tuple<std::size_t, std::size_t, std::size_t, std::size_t>> reported_;
+};
+
 }  // namespace
 
 void declare_plan(Context &cx, const ast::Plan &plan) {
@@ -295,6 +411,11 @@ void check_plan_recursion(Context &cx) {
   PlanGraph g{cx, IdMap<model::PlanId, int>(cx.model.plans.size()), {}};
   for (model::PlanId p : cx.model.plans.ids())
     if (g.color[p] == 0) g.visit(p);
+}
+
+void check_shared_config(Context &cx) {
+  SharedConfig shared(cx);
+  for (model::PlanId p : cx.model.plans.ids()) shared.check(p);
 }
 
 }  // namespace gfec::validation
