@@ -415,6 +415,11 @@ bool constant_fits(const model::Expr &x, Type to, ExprScope &s) {
     s.cx.diag.error(x.range, ErrorKind::NotConstant, fmt::format("value {} is too large for 'float'", d));
     return false;
   }
+  if (underflows_float(*v, to)) {
+    s.cx.diag.error(x.range, ErrorKind::NotConstant,
+                    fmt::format("value {} is too small for 'float': it would be 0", d));
+    return false;
+  }
   return true;
 }
 
@@ -619,7 +624,12 @@ std::optional<model::Expr> lower_condition(const ast::Expr *e, ExprScope &s, con
 
 std::optional<model::Expr> lower_initializer(const ast::Expr *e, ExprScope &s, Type type, const std::string &name) {
   auto x = lower_expr(e, s);
-  if (!x || assignable(type, x->type)) return x;
+  if (x && assignable(type, x->type)) {
+    // As an assignment's value: a constant that does not fit the variable is an error.
+    if (!constant_fits(*x, type, s)) return std::nullopt;
+    return x;
+  }
+  if (!x) return x;
   auto &d = s.cx.diag.error(
       x->range, ErrorKind::TypeMismatch,
       fmt::format("cannot initialize '{}' of type {} with a value of type {}", name, quoted(type), quoted(x->type)));

@@ -102,6 +102,15 @@ std::optional<Value> evaluate(const model::Expr &e, const model::Model &m, Diagn
   }
 }
 
+/// Whether a floating literal's digits before its exponent are other than zeros.
+static bool has_nonzero_mantissa(std::string_view spelling) {
+  for (char c : spelling) {
+    if (c == 'e' || c == 'E') break;
+    if (c >= '1' && c <= '9') return true;
+  }
+  return false;
+}
+
 std::optional<model::Expr> number_literal(const ast::Expr &e, Diagnostics &diag) {
   model::Expr x;
   x.range = e.range;
@@ -124,6 +133,13 @@ std::optional<model::Expr> number_literal(const ast::Expr &e, Diagnostics &diag)
                fmt::format("floating constant '{}' is too large for 'double'", e.text()));
     return std::nullopt;
   }
+  // `1e-999` reads as 0, which C compilers refuse to do silently ("floating constant truncated
+  // to zero"): the same rule as for a constant too large.
+  if (*v == 0 && has_nonzero_mantissa(e.text())) {
+    diag.error(e.range, ErrorKind::NotConstant,
+               fmt::format("floating constant '{}' is too small for 'double': it would be 0", e.text()));
+    return std::nullopt;
+  }
   x.kind = K::Float;
   x.type = Type::Double;  // a floating literal is a double, as in C
   x.float_value = *v;
@@ -139,6 +155,10 @@ std::optional<model::Expr> check_constant(std::optional<model::Expr> x, const mo
   if (diag.error_count() != errors) return std::nullopt;
   if (v) store(*x, *v);
   return x;
+}
+
+bool underflows_float(const Value &v, model::Type to) {
+  return to == Type::Float && v.type == Type::Double && v.f != 0 && static_cast<float>(v.f) == 0.0f;
 }
 
 std::optional<model::Expr> to_literal(const Value &v, model::Type to, SourceRange range, Diagnostics &diag,
@@ -159,6 +179,10 @@ std::optional<model::Expr> to_literal(const Value &v, model::Type to, SourceRang
       diag.error(
           range, ErrorKind::NotConstant,
           fmt::format(to == Type::Int ? "value {} does not fit in 'int'" : "value {} is too large for 'float'", v.f));
+    return std::nullopt;
+  }
+  if (underflows_float(v, to)) {
+    diag.error(range, ErrorKind::NotConstant, fmt::format("value {} is too small for 'float': it would be 0", v.f));
     return std::nullopt;
   }
   const Value &w = c.value;

@@ -29,7 +29,8 @@ std::optional<Value> evaluate(const model::Expr &e, const model::Model &model, D
 std::optional<model::Expr> check_constant(std::optional<model::Expr> x, const model::Model &model, Diagnostics &diag);
 
 /// An int or floating literal of the syntax tree with its value, parsed here once for every
-/// later stage; an int above INT_MAX or a floating literal beyond double's range is an error.
+/// later stage; an int above INT_MAX, or a floating literal beyond double's range or so small
+/// that it reads as 0 (`1e-999`), is an error.
 std::optional<model::Expr> number_literal(const ast::Expr &e, Diagnostics &diag);
 
 /// The literal for `v` as a value of type `to` (numbers convert as C converts them; a number
@@ -37,6 +38,11 @@ std::optional<model::Expr> number_literal(const ast::Expr &e, Diagnostics &diag)
 /// user wrote, so generated code shows `0.6` rather than `0.59999999999999998`.
 std::optional<model::Expr> to_literal(const Value &v, model::Type to, SourceRange range, Diagnostics &diag,
                                       const model::Expr *spelling = nullptr);
+
+/// A constant `v` that is not 0 but would be 0 as a `to` (a double below float's smallest
+/// value converted to float): C converts it, but the generated literal (`1e-46f`) is one that C
+/// compilers refuse with -Werror, so the validator treats it as not fitting, as one too large.
+bool underflows_float(const Value &v, model::Type to);
 
 /// How many constants deep an initialiser may read before folding gives up.
 constexpr int kMaxConstDepth = 1000;
