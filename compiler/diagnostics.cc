@@ -34,6 +34,7 @@ Diagnostic &Diagnostics::add_error(SourceRange range, const DiagnosticKind &kind
     // Past the cap, later errors are most likely consequences of earlier ones.
     limit_reached_ = true;
     discarded_ = {};
+    discarded_.dropped = true;
     return discarded_;
   }
   ++errors_;
@@ -45,6 +46,7 @@ Diagnostic &Diagnostics::warning(Warning w, SourceRange range, std::string messa
   const DiagnosticKind &kind = kind_info(w);
   if (!options_.is_on(w)) {
     discarded_ = {};
+    discarded_.dropped = true;
     return discarded_;
   }
   if (options_.is_error(w)) return add_error(range, kind, std::move(message));

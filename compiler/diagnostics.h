@@ -37,6 +37,9 @@ struct Diagnostic {
   const DiagnosticKind *kind = nullptr;
   std::vector<DiagnosticNote> notes;
   std::vector<FixIt> fixits;
+  /// Past the error limit, or a warning that is off: it is never printed, so work spent on its
+  /// notes (a did-you-mean search) is wasted.
+  bool dropped = false;
 
   Diagnostic &note(std::string message);
   Diagnostic &note(SourceRange range, std::string message);

@@ -556,9 +556,12 @@ std::optional<model::Expr> lower_expr(const ast::Expr *e, ExprScope &s) {
 /// the fix, and its arguments left unread (a place is no value: that error would be noise).
 bool misspelt_builtin(const ast::Name &name, ExprScope &s) {
   if (name.text.empty() || name.text.size() > kMaxSuggestedLength || s.cx.c_names.find(name.text)) return false;
-  if (closest(name.text, s.cx.c_names.of({Sym::Function}))) return false;  // an interface function is closer
+  const std::size_t limit = std::max<std::size_t>(1, (name.text.size() + 1) / 3);
   for (std::string_view builtin : kBuiltinFunctions) {
-    if (edit_distance(name.text, builtin) > std::max<std::size_t>(1, (name.text.size() + 1) / 3)) continue;
+    // The built-ins first: they are few, and the search among the interface functions only
+    // matters for a name close to one of them.
+    if (edit_distance_within(name.text, builtin, limit) > limit) continue;
+    if (closest(name.text, s.cx.c_names.of({Sym::Function}))) return false;  // an interface function is closer
     if (!seen(s).insert(fmt::format("function {}", name.text)).second) return true;
     auto &d = s.cx.diag.error(name.range, ErrorKind::UnknownName, fmt::format("unknown function '{}'", name.text));
     d.fix(d.range, builtin).note(fmt::format("did you mean the built-in '{}'?", builtin));

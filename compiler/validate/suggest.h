@@ -12,6 +12,10 @@ namespace gfec::validation {
 /// Edit distance: insert, delete, substitute, or swap two neighbours; each costs 1.
 std::size_t edit_distance(std::string_view a, std::string_view b);
 
+/// edit_distance(a, b) if it is at most k, else k + 1: the work is that of a band 2k + 1 wide,
+/// and stops as soon as the distance must exceed k.
+std::size_t edit_distance_within(std::string_view a, std::string_view b, std::size_t k);
+
 /// Names longer than this get no did-you-mean (nobody mistypes a name that long by hand, and the
 /// edit distance costs the product of the lengths).
 constexpr std::size_t kMaxSuggestedLength = 64;

@@ -3,6 +3,8 @@
 // (exit 1), or a compile.
 #include "support.h"
 
+#include <fmt/format.h>
+
 #include <catch2/catch.hpp>
 
 #include <chrono>
@@ -203,6 +205,23 @@ TEST_CASE("hardening: did-you-mean stays fast on hostile names, and still helps 
   CHECK(t.exit_code == 1);
   CHECK(t.out.find("note: did you mean '" + n64 + "'?") != std::string::npos);
   CHECK(t.out.find("did you mean 'Forwards_and_then_some_more'") == std::string::npos);
+  // A thousand near-identical 64-character names, each called misspelt: every search compared
+  // every name in full, also for the errors past -fmax-errors that are never printed (24.8 s).
+  // Now those get no search, and a search stops at the first candidate it cannot beat.
+  std::string iface = "interface I {\n", calls;
+  for (int i = 0; i < 1000; ++i) {
+    std::string f = fmt::format("F{:04}_{}", i, std::string(58, 'x'));
+    iface += "  void " + f + "();\n";
+    calls += " " + f.substr(0, 63) + "z();";
+  }
+  write_file(dir + "/many.sfc", iface + "}\nsfc X { initial place A {" + calls + " } }\n");
+  start = std::chrono::steady_clock::now();
+  CommandResult many = run_command(gfec_exe + " --check " + dir + "/many.sfc");
+  seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  CHECK(many.exit_code == 1);
+  CHECK(many.out.find("note: did you mean 'F0049_" + std::string(58, 'x') + "'?") != std::string::npos);
+  CHECK(many.out.find("compilation terminated due to -fmax-errors=50.") != std::string::npos);
+  CHECK(seconds < 10);
 }
 
 TEST_CASE("hardening: the smaller input cases of the probe", "[hardening]") {

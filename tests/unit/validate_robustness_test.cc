@@ -163,3 +163,29 @@ TEST_CASE("validate: edit distance and did-you-mean", "[validate]") {
   CHECK(validation::closest("x", candidates) == nullptr);
   CHECK(validation::closest("laps", candidates) == nullptr);  // itself is not a suggestion
 }
+
+TEST_CASE("validate: the banded edit distance is the distance, capped at the bound plus one", "[validate]") {
+  using validation::edit_distance;
+  using validation::edit_distance_within;
+  CHECK(edit_distance_within("kitten", "sitting", 3) == 3);
+  CHECK(edit_distance_within("kitten", "sitting", 2) == 3);
+  CHECK(edit_distance_within("flaot", "float", 0) == 1);
+  CHECK(edit_distance_within("", "", 0) == 0);
+  // Random names over a small alphabet (so that transpositions and near misses are common),
+  // every bound from 0 to past the distance: a deterministic sweep.
+  std::uint32_t seed = 12345;
+  auto next = [&] { return seed = seed * 1103515245u + 12345u, (seed >> 16) & 0x7fff; };
+  auto word = [&] {
+    std::string w(next() % 12, ' ');
+    for (char &c : w) c = static_cast<char>('a' + next() % 3);
+    return w;
+  };
+  for (int n = 0; n < 3000; ++n) {
+    std::string a = word(), b = word();
+    std::size_t d = edit_distance(a, b);
+    for (std::size_t k = 0; k <= d + 1; ++k) {
+      INFO(a << " / " << b << " k=" << k);
+      REQUIRE(edit_distance_within(a, b, k) == std::min(d, k + 1));
+    }
+  }
+}
