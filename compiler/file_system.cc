@@ -2,33 +2,48 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
+#include <cerrno>
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 namespace gfec {
 
 std::optional<std::string> RealFileSystem::read(const std::string &path) const {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) return std::nullopt;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) return std::nullopt;
-  return text.str();
+  // read(2) rather than a stream: a filebuf reports a failed read (EIO, or a file like
+  // /proc/self/mem that refuses to be read) as the end of the file, and a truncated chart would
+  // then be compiled as if it were whole.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NOCTTY);
+  if (fd < 0) return std::nullopt;
+  std::string text;
+  char buffer[65536];
+  for (;;) {
+    const ssize_t n = ::read(fd, buffer, sizeof buffer);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) {
+      ::close(fd);
+      return std::nullopt;
+    }
+    if (n == 0) break;
+    text.append(buffer, static_cast<std::size_t>(n));
+  }
+  ::close(fd);
+  return text;
 }
 
-std::string cannot_read(const std::string &path) {
+std::string unreadable_reason(const std::string &path) {
   namespace fs = std::filesystem;
   std::error_code ec;
   const fs::file_status st = fs::status(path, ec);
-  const char *why = !fs::exists(st)            ? "no such file"
-                    : fs::is_directory(st)     ? "it is a folder"
-                    : !fs::is_regular_file(st) ? "not a regular file; gfec reads no devices, pipes or sockets"
-                                               : "permission denied or an I/O error";
-  return "cannot read '" + path + "': " + why;
+  return !fs::exists(st)            ? "no such file"
+         : fs::is_directory(st)     ? "it is a folder"
+         : !fs::is_regular_file(st) ? "not a regular file; gfec reads no devices, pipes or sockets"
+                                    : "permission denied or an I/O error";
 }
+
+std::string cannot_read(const std::string &path) { return "cannot read '" + path + "': " + unreadable_reason(path); }
 
 std::vector<std::string> RealFileSystem::list(const std::string &dir) const {
   std::vector<std::string> names;

@@ -34,6 +34,8 @@ public:
 /// folder, not a regular file (gfec reads no device, pipe or socket: one could block it or never
 /// end, docs/security.md), or not readable.
 std::string cannot_read(const std::string &path);
+/// Why the file system refuses `path`: cannot_read's reason alone ("no such file", ...).
+std::string unreadable_reason(const std::string &path);
 
 class MemoryFileSystem : public FileSystem {
 public:

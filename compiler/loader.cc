@@ -103,6 +103,13 @@ private:
       via_.pop_back();
       return;
     }
+    // A file that is there but cannot be read (a device, a folder, an I/O error) is no typo.
+    for (const auto &t : tried)
+      if (fs_.identity(t)) {
+        diag_.error(import.range, ErrorKind::Import,
+                    fmt::format("cannot read imported file '{}': {}", t, unreadable_reason(t)));
+        return;
+      }
     auto &d = diag_.error(import.range, ErrorKind::Import, fmt::format("cannot find imported file '{}'", import.path));
     for (const auto &t : tried) d.note(fmt::format("looked for '{}'", t));
     suggest_file(d, import, candidates);
