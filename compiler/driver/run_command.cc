@@ -287,7 +287,7 @@ int run_command(int argc, const char *const *argv, std::ostream &out, std::ostre
   std::vector<std::string> f_flags;
   app.add_option("-f", f_flags,
                  "-fdiagnostics-format=text|json|sarif-stderr|sarif-file, -fdiagnostics-color=WHEN, "
-                 "-fdiagnostics-show-line-numbers, -fmax-errors=N, as for gfec")
+                 "-fno-diagnostics-show-line-numbers, -fmax-errors=N, as for gfec")
       ->type_name("OPTION")
       ->allow_extra_args(false);
   try {

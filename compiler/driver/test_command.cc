@@ -42,8 +42,8 @@ struct TestOptions {
 pipeline::FrontEndOptions test_front_end(const TestOptions &o) {
   pipeline::FrontEndOptions f;
   f.include_dirs = o.include_dirs;
-  f.error_limit = static_cast<std::size_t>(-1);
-  f.analyze = false;  // the tests say what the chart must do; the analyses are gfec's business
+  f.error_limit = o.report.error_limit;  // -fmax-errors=N, as for gfec (50 unless given)
+  f.analyze = false;                     // the tests say what the chart must do; the analyses are gfec's business
   return f;
 }
 
@@ -247,6 +247,11 @@ void load(TestFile &f) {
   RealFileSystem fs;
   f.c.front_end(f.path, fs, &f.suite);
   if (f.c.unreadable()) f.unreadable = true;
+  // A file with nothing to run is a mistake of the command line a CI step must not pass green
+  // (a glob that picked the charts instead of their tests).
+  else if (!f.diag.has_errors() && f.suite.written.empty())
+    f.diag.error({f.model.main_file, 0, 0}, ErrorKind::Test, fmt::format("'{}' declares no test", f.path))
+        .note("a file given to 'gfec test' holds 'test \"NAME\" of CHART { ... }' blocks (docs/testing-charts.md)");
 }
 
 /// JUnit XML: a testsuite per file, a testcase per test; the tests of a file that does not
@@ -402,7 +407,7 @@ int test_command(int argc, const char *const *argv, std::ostream &out, std::ostr
   app.add_flag("-v,--verbose", o.verbose, "Print PASS or FAIL and the name of every test");
   app.add_option("-f", o.f_flags,
                  "-fdiagnostics-format=text|json|sarif-stderr|sarif-file, -fdiagnostics-color=WHEN, "
-                 "-fno-diagnostics-show-line-numbers, as for gfec")
+                 "-fno-diagnostics-show-line-numbers, -fmax-errors=N, as for gfec")
       ->type_name("OPTION")
       ->allow_extra_args(false);
   try {

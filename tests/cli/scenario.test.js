@@ -209,6 +209,33 @@ test('--filter runs the tests whose name contains TEXT; -j gives the same result
   assert.equal(four.stderr, one.stderr);
 });
 
+test('a file that declares no test is a failed test, so a glob that picked the charts fails CI', () => {
+  const dir = scratch({ 'two.test': TWO });
+  lineFollower(dir);
+  const r = gfec(['test', '--junit', 'out.xml', 'line_follower.sfc', 'two.test'], dir);
+  assert.equal(r.code, 1);
+  assert.equal(lastLine(r.stdout), '2 passed, 2 failed');
+  assert.match(r.stderr, /^line_follower\.sfc:1:1: error: 'line_follower\.sfc' declares no test \[test\]$/m);
+  const suites = parseXml(fs.readFileSync(path.join(dir, 'out.xml'), 'utf8'));
+  assert.equal(suites.attrs.tests, '4');
+  assert.equal(suites.attrs.failures, '2');
+  assert.equal(suites.children[0].children[0].attrs.name, 'line_follower.sfc');
+});
+
+test('-fmax-errors=N stops a test file\'s errors after N, as gfec does', () => {
+  const dir = scratch({
+    'two_errors.test': 'import "line_follower.sfc";\ntest "a" of LineFollower { expect active(LeftStp); }\n' +
+      'test "b" of LineFollower { expect active(RightStp); }\n',
+  });
+  lineFollower(dir);
+  const all = gfec(['test', 'two_errors.test'], dir);
+  assert.equal((all.stderr.match(/ error: /g) || []).length, 2, all.stderr);
+  const one = gfec(['test', '-fmax-errors=1', 'two_errors.test'], dir);
+  assert.equal(one.code, 1);
+  assert.equal((one.stderr.match(/ error: /g) || []).length, 1, one.stderr);
+  assert.match(one.stderr, /compilation terminated due to -fmax-errors=1\./);
+});
+
 test('--junit writes one testcase per test, failures with their message', () => {
   const dir = scratch({ 'two.test': TWO });
   lineFollower(dir);
