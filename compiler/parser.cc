@@ -269,7 +269,14 @@ void Parser::top_level(File &file) {
   case Tok::KwVar:
     diag_.error(tok_.range, ErrorKind::Syntax, "'var' declares chart state and belongs inside an sfc or fsm");
     throw SyntaxError{};
-  default: fail("expected a declaration (import, interface, sfc, fsm, toolbox, plan, const or test)");
+  default: {
+    const std::string what = "expected a declaration (import, interface, sfc, fsm, toolbox, plan, const or test)";
+    // A file that opens with '{' is JSON, most likely an ALICA plan under another extension.
+    if (at(Tok::LBrace) && prev_end_ == 0)
+      fail_hint(what, "this looks like JSON: to read an ALICA plan, give the file ALICA's extension (.pml, .beh, "
+                      ".pty) or pass '-x alica' before it");
+    fail(what);
+  }
   }
 }
 

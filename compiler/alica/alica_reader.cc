@@ -213,7 +213,7 @@ private:
     std::string written =
         sources_.file(doc.file).text().substr(v->begin, std::min<std::uint32_t>(v->end - v->begin, 40));
     diag_.error(range(doc, *v), ErrorKind::AlicaFormat,
-                fmt::format("{} is {}, which is no id: ALICA's ids are integers", what, written));
+                fmt::format("{} is {}, which is no id: ALICA's ids are 64-bit integers", what, written));
     return true;
   }
 
@@ -691,6 +691,12 @@ private:
     objects(plan.find("states"), states);
     objects(plan.find("transitions"), transitions);
     objects(plan.find("entryPoints"), entries);
+    // Ids only messages quote: one that is no id is still reported where it is written.
+    not_an_id(doc, plan.find("id"), fmt::format("the id of plan '{}'", label_of(plan)));
+    for (const JsonValue *e : entries)
+      not_an_id(doc, e->find("id"), fmt::format("the id of entry point '{}' of {}", label_of(*e), what));
+    for (const JsonValue *t : transitions)
+      not_an_id(doc, t->find("id"), fmt::format("the id of transition '{}' of {}", label_of(*t), what));
     std::map<std::string, std::size_t> state_index;
     for (std::size_t i = 0; i < states.size(); ++i) {
       auto id = id_of(states[i]->find("id"));
@@ -733,11 +739,13 @@ private:
 
     std::vector<Machine> machines(entries.size());
     std::vector<int> owner(states.size(), -1);
+    std::vector<std::string> entry_names(entries.size());  ///< "'label' (id N)", for messages
     bool several = entries.size() > 1;
     for (std::size_t e = 0; e < entries.size(); ++e) {
       const JsonValue &ep = *entries[e];
       std::string ep_id = id_of(ep.find("id")).value_or("");
       std::string label = entry_label(doc, ep);
+      entry_names[e] = fmt::format("'{}' (id {})", label, ep_id);
       element(doc, ep, fmt::format("ALICA entry point '{}' (id {}) of {}", label, ep_id, what));
       entry_warnings(doc, ep, label, ep_id, several);
       Machine &m = machines[e];
@@ -758,9 +766,9 @@ private:
       if (owner[*start] >= 0) {
         diag_
             .error(range(doc, ep), ErrorKind::AlicaFormat,
-                   fmt::format("entry point '{}' (id {}) starts in state '{}', which entry point '{}' already "
-                               "reaches: gfec gives each entry point a machine of its own states",
-                               label, ep_id, label_of(*states[*start]), machines[owner[*start]].chart.name.text))
+                   fmt::format("entry point {} starts in state '{}', which entry point {} already reaches: gfec "
+                               "gives each entry point a machine of its own states",
+                               entry_names[e], label_of(*states[*start]), entry_names[owner[*start]]))
             .note(range(doc, *states[*start]), "the state is here");
         continue;
       }

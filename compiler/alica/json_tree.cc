@@ -36,8 +36,14 @@ std::optional<std::string> JsonValue::as_id() const {
   if (kind != Kind::Number && kind != Kind::String) return std::nullopt;
   std::size_t i = !s.empty() && s[0] == '-' ? 1 : 0;
   if (i == s.size()) return std::nullopt;
+  const std::size_t first = i;
   for (; i < s.size(); ++i)
     if (s[i] < '0' || s[i] > '9') return std::nullopt;
+  // ALICA's ids are 64-bit: a longer number is none, not an id that no other could equal.
+  std::string_view digits = s.substr(first);
+  while (digits.size() > 1 && digits[0] == '0') digits.remove_prefix(1);
+  std::string_view most = first ? "9223372036854775808" : "9223372036854775807";
+  if (digits.size() > most.size() || (digits.size() == most.size() && digits > most)) return std::nullopt;
   return text;
 }
 

@@ -28,6 +28,9 @@ for expect in \
   "^plans/broken/SecondPair.pml:[0-9]*:[0-9]*: error: second transition from 'A' to 'B'" \
   "^plans/broken/LeavesTerminal.pml:[0-9]*:[0-9]*: error: transition leaves terminal state 'Finished'" \
   "^plans/broken/Disconnected.pml:[0-9]*:[0-9]*: error: state 'Island' is not connected" \
+  "^plans/broken/TerminalBody.pml:[0-9]*:[0-9]*: error: terminal state 'Parked' cannot have a body" \
+  "^plans/broken/NoEntryPoint.pml:1:1: error: plan 'NoEntryPoint' (id 1800000000200) has no entry point" \
+  "^plans/broken/SharedEntry.pml:[0-9]*:[0-9]*: error: entry point 'Right' (id 1800000000304) starts in state 'Both'" \
   "^plans/broken/MissingFile.pml:37:28: error: cannot find 'Behaviours/SerchItem.beh'" \
   "note: did you mean 'Behaviours/SearchItem.beh'?" \
   "^plans/broken/MissingId.pml:37:28: error: 'plans/Behaviours/Park.beh' has no element with id 1700000000099" \

@@ -213,6 +213,8 @@ TEST_CASE("alica: each fsm rule broken in a plan is reported at the JSON object,
       {"Disconnected", "1800000000004",
        "error: state 'Island' is not connected to the initial state 'Start' [not-connected]",
        "note: this is ALICA state 'Island' (id 1800000000004) of plan 'Disconnected' (id 1800000000000)"},
+      {"TerminalBody", "1800000000103", "error: terminal state 'Parked' cannot have a body [terminal-state]",
+       "note: this is ALICA state 'Parked' (id 1800000000103) of plan 'TerminalBody' (id 1800000000100)"},
   };
   for (const auto &c : cases) {
     std::string file = fmt::format("plans/broken/{}.pml", c.plan);
@@ -222,6 +224,29 @@ TEST_CASE("alica: each fsm rule broken in a plan is reported at the JSON object,
     CHECK(r.diag.error_count() == 1);
     CHECK(r.text.find(at + c.message) != std::string::npos);
     CHECK(r.text.find(at + c.element) != std::string::npos);
+  }
+}
+
+TEST_CASE("alica: a plan's machine needs exactly one initial state: no entry point, or two on one state, is an error",
+          "[alica]") {
+  SECTION("no entry point") {
+    const std::string file = "plans/broken/NoEntryPoint.pml";
+    Run r(file);
+    INFO(r.text);
+    CHECK(r.diag.error_count() == 1);
+    CHECK(r.text.find(file + ":1:1: error: plan 'NoEntryPoint' (id 1800000000200) has no entry point: gfec needs one "
+                             "to know where its machine starts [alica-format]") != std::string::npos);
+  }
+  SECTION("two entry points that start in one state") {
+    const std::string file = "plans/broken/SharedEntry.pml";
+    Run r(file);
+    INFO(r.text);
+    CHECK(r.diag.error_count() == 1);
+    CHECK(r.text.find(fmt::format("{}:{}: error: entry point 'Right' (id 1800000000304) starts in state 'Both', which "
+                                  "entry point 'Left' (id 1800000000301) already reaches",
+                                  file, object_at(file, "1800000000304"))) != std::string::npos);
+    CHECK(r.text.find(fmt::format("{}:{}: note: the state is here", file, object_at(file, "1800000000302"))) !=
+          std::string::npos);
   }
 }
 
@@ -683,17 +708,36 @@ TEST_CASE("alica: ids that are no integers, unpaired surrogates and empty refere
     INFO(r.text);
     CHECK(r.diag.error_count() == 2);
     CHECK(r.text.find("ids.pml:2:45: error: the id of state 'Go' of plan 'P' (id 9) is 1.5, which is no id: ALICA's "
-                      "ids are integers [alica-format]") != std::string::npos);
+                      "ids are 64-bit integers [alica-format]") != std::string::npos);
     CHECK(r.text.find("ids.pml:3:78: error: the outState of transition 'T' (id 20) of plan 'P' (id 9) is 1e3, which "
-                      "is no id: ALICA's ids are integers [alica-format]") != std::string::npos);
+                      "is no id: ALICA's ids are 64-bit integers [alica-format]") != std::string::npos);
     // An entry point's state: "starts in state (none)" was all it said.
     std::string entry = plan;
     entry.replace(entry.find("\"state\" : 2"), 11, "\"state\" : 2.0");
     Run e("entry.pml", {{"entry.pml", entry}});
     INFO(e.text);
     CHECK(e.text.find("entry.pml:1:82: error: the state of entry point 'E' (id 10) of plan 'P' (id 9) is 2.0, which is "
-                      "no id: ALICA's ids are integers [alica-format]") != std::string::npos);
+                      "no id: ALICA's ids are 64-bit integers [alica-format]") != std::string::npos);
     CHECK(e.text.find("(none)") == std::string::npos);
+    // Beyond 64 bits: no id either (one more than INT64_MAX; INT64_MIN itself is one).
+    std::string big = plan;
+    auto swap = [&](const std::string &from, const std::string &to) { big.replace(big.find(from), from.size(), to); };
+    swap("\"id\" : 1.5", "\"id\" : 9223372036854775808");
+    swap("\"outState\" : 1e3", "\"outState\" : -9223372036854775808");
+    Run b("big.pml", {{"big.pml", big}});
+    INFO(b.text);
+    CHECK(b.diag.error_count() == 2);
+    CHECK(b.text.find("error: the id of state 'Go' of plan 'P' (id 9) is 9223372036854775808, which is no id: "
+                      "ALICA's ids are 64-bit integers [alica-format]") != std::string::npos);
+    CHECK(b.text.find("the outState of transition 'T' (id 20) of plan 'P' (id 9) is -9223372036854775808, which is "
+                      "no id") == std::string::npos);
+    // The ids that only messages quote too.
+    big = plan;
+    swap("\"id\" : 9,", "\"id\" : 99999999999999999999,");
+    Run p("plan_id.pml", {{"plan_id.pml", big}});
+    INFO(p.text);
+    CHECK(p.text.find("plan_id.pml:1:10: error: the id of plan 'P' is 99999999999999999999, which is no id: ALICA's "
+                      "ids are 64-bit integers [alica-format]") != std::string::npos);
   }
   SECTION("a high surrogate before an escape that is no low surrogate keeps that character") {
     alica::JsonError error;
