@@ -12,6 +12,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -117,7 +118,7 @@ int main(int argc, char **argv) {
   std::vector<Case> all(static_cast<std::size_t>(cases));
   std::vector<Case *> ready;
   std::vector<Failure> failures;
-  int undefined = 0, invalid = 0, fsm = 0, teams = 0, generated = 0, scalable = 0;
+  int undefined = 0, invalid = 0, fsm = 0, teams = 0, generated = 0, scalable = 0, hierarchical = 0;
   for (int k = 0; k < cases; ++k) {
     if (only >= 0 && k != only) continue;
     std::seed_seq s{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32),
@@ -136,6 +137,9 @@ int main(int argc, char **argv) {
     scalable += !options.fsm && scalable_form(c);
     c.chart = random_chart(rng, k, options);
     c.trace = random_trace(rng, c.chart);
+    // A hierarchical program: the root has a place or state that runs a sub-chart.
+    hierarchical +=
+        std::any_of(c.chart.places.begin(), c.chart.places.end(), [](const GPlace &p) { return p.runs >= 0; });
     Outcome o = harness.prepare(c);
     if (verbose && o.verdict != Verdict::Pass)
       std::cout << fmt::format("case {}: {}\n{}", k, verdict_name(o.verdict), o.detail);
@@ -182,9 +186,9 @@ int main(int argc, char **argv) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::cout << fmt::format(
       "gfec_differential: seed {}: {} random charts ({} sfc, {} of them in the scalable form, {} fsm, {} of them team "
-      "machines); {} compared under {} builds "
+      "machines; {} hierarchical); {} compared under {} builds "
       "({} engine runs){}, {} skipped for undefined behaviour, {} rejected by gfec; {} failures; {:.0f} s\n",
-      seed, generated, generated - fsm, scalable, fsm, teams, ready.size(), configs.size(),
+      seed, generated, generated - fsm, scalable, fsm, teams, hierarchical, ready.size(), configs.size(),
       ready.size() * configs.size(), lint ? " and cppcheck" : "", undefined, invalid, failures.size(), seconds);
   // Shrink the first failures (one per case: the same bug tends to fail every build).
   std::vector<int> shown;
