@@ -39,7 +39,7 @@ void collect_toolboxes(PlanContext &c) {
     all.insert(boxes.begin(), boxes.end());
   }
   c.toolboxes.assign(all.begin(), all.end());
-  // One toolbox (the usual case, and what carbot-sim's harness declares): `ee`, as in the paper.
+  // One toolbox (the usual case, and what carbot-sim's harness declares): `ee`, as docs/plans.md writes it.
   c.env_param.assign(c.model.toolboxes.size(), "ee");
   if (c.toolboxes.size() > 1)
     for (model::ToolboxId box : c.toolboxes) c.env_param[box] = "ee_" + environment_type(c.model.toolboxes[box]);

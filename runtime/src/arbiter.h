@@ -1,5 +1,5 @@
 // Internal: decides, under one mutex, which single component ends the active
-// actor in the threaded executor (the paper's critical sections).
+// actor in the threaded executor (docs/runtime.md 2.2).
 #pragma once
 
 #include <cstdint>

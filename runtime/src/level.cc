@@ -22,7 +22,7 @@ void Level::advance() {
   if (auto error = capture([&] { result = plan_.actors_[current_].actor->step(ctx); }))
     return fail(actor_name(), *error);
   if (result.is_running()) return;
-  // The paper's critical section: a supervisor that claimed before the actor
+  // The critical section (docs/runtime.md 2.2): a supervisor that claimed before the actor
   // finished wins; from here on none can interrupt.
   if (auto claim = watchers_->close()) return interrupt(std::move(*claim));
   finish_actor(result.state());

@@ -1,4 +1,4 @@
-// Internal: the main loop of the paper for one plan level (the top plan or a
+// Internal: the main loop (docs/runtime.md 1) for one plan level (the top plan or a
 // sub-plan), turned inside out so that an executor drives it step by step.
 #pragma once
 

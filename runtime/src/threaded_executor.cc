@@ -31,7 +31,7 @@ struct ThreadedExecutor::Impl final : detail::Services {
     prepared = true;
   }
 
-  // The paper's main loop, one actor step per period or per wake-up.
+  // The main loop (docs/runtime.md 1), one actor step per period or per wake-up.
   // Nothing escapes it: under start() an exception would reach std::terminate, under run()
   // it would leave the status NotStarted. A trace hook that throws fails the run.
   Status execute() {

@@ -4,7 +4,7 @@
 //
 // Units follow the plans: distances in centimetres, angles in degrees (counter-clockwise
 // positive). The robot is reached through the C HAL (sim/hal/carbot_hal.h); the execution
-// environment `ee` holds what the templates share, like the paper's ee.getRotator().
+// environment `ee` holds what the templates share (docs/toolbox.md, "environment type").
 //
 // Generated wiring refers to the environment as `Env` (or `Carbot`) and to the classes
 // unqualified; the using-declarations at the end provide those names.

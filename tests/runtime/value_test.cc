@@ -1,4 +1,4 @@
-// Conversions between configuration types, as the paper and docs/language.md §8 define them.
+// Conversions between configuration types, as docs/runtime.md 3 and docs/language.md §8 define them.
 #include <afp/value.h>
 
 #include <catch2/catch.hpp>

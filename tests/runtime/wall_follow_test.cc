@@ -1,4 +1,4 @@
-// The paper's wall-following plan (samples/wall_follow.plan) wired the way the
+// The wall-following plan (samples/wall_follow.plan) wired the way the
 // C++ back end is to emit it (see docs/runtime.md), over a scripted Carbot
 // toolbox: proves the API is easy to target and that the plan runs as drawn.
 #include <afp/afp.h>
@@ -188,7 +188,7 @@ std::vector<std::string> started(const fakes::Recorder& trace) {
 
 }  // namespace
 
-TEST_CASE("the wall-following plan of the paper runs as drawn", "[wallfollow]") {
+TEST_CASE("the wall-following plan runs as drawn", "[wallfollow]") {
   Env ee;
   auto plan = make_WallFollow(ee);
   afp::Configuration config;

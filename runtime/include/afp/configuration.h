@@ -22,7 +22,7 @@ class ConfigError : public Error {
 };
 
 /// Pending writes of one component (an actor or one supervisor check): the
-/// paper's "shadow copy", kept as the entries written rather than a full copy.
+/// "shadow copy" of docs/runtime.md, kept as the entries written rather than a full copy.
 /// Values are already converted to their entries' types.
 class Shadow {
  public:

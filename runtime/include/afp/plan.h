@@ -1,5 +1,5 @@
 // A plan: actor and supervisor instances (owned by the plan) and the rules
-// that wire them, as the code generator emits them (the paper's Table I):
+// that wire them, as the code generator emits them (docs/plans.md):
 //
 //   auto* fwd = plan.add_actor("searchFirstWall", std::make_unique<Forward>(ee, afp::in<float>(100000)));
 //   plan.define_first_actor(fwd);

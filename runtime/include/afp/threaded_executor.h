@@ -1,4 +1,4 @@
-// The executor of the paper: the actor runs in the executor's thread, each
+// The real-time executor (docs/runtime.md 2.2): the actor runs in the executor's thread, each
 // supervisor polls in its own thread, and the first to claim an interruption
 // wins.
 #pragma once

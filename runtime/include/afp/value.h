@@ -1,5 +1,5 @@
-// Typed values of the configuration and the conversions between them (the
-// Action Flow Plans paper: int <-> float, number -> string, string -> number).
+// Typed values of the configuration and the conversions between them (docs/runtime.md
+// 3: int <-> float, number -> string, string -> number).
 #pragma once
 
 #include <memory>
@@ -28,7 +28,7 @@ enum class Type { Int, Float, Double, Bool, String, Object };
 /// The type's name as written in a chart ("int", "float", ..., "object").
 const char* to_string(Type type);
 
-/// An opaque object shared through the configuration ("Object" in the paper):
+/// An opaque object shared through the configuration (`object` in docs/language.md 8):
 /// only the actors that made it know its structure; the type is checked on access.
 class Object {
  public:
@@ -112,7 +112,7 @@ inline constexpr bool is_value_type_v =
 /// The default value of a type: 0, 0.0, false, "" or the null object.
 Value default_value(Type type);
 
-/// Converts a value to a type, following the paper's rules: numbers convert
+/// Converts a value to a type, following docs/runtime.md 3: numbers convert
 /// among themselves as in C (float -> int truncates toward zero), a number
 /// becomes its shortest decimal text, a string becomes a number only when its
 /// whole text (surrounding blanks allowed) is a decimal number; bool converts
