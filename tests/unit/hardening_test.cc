@@ -268,19 +268,22 @@ TEST_CASE("hardening: the smaller input cases of the probe", "[hardening]") {
                                   "cc -std=c99 -Wall -Wextra -Wpedantic -Werror -c tri.c -o tri.o");
   CHECK(tri.exit_code == 0);
   CHECK(read_file(dir + "/tri.c").find("#line 2 \"tri?\\?-.sfc\"") != std::string::npos);
+  // What --check says of a chart that imports `path` and nothing else.
+  auto importing = [&](const std::string &path) {
+    write_file(dir + "/imports.sfc", "import \"" + path + "\";\nsfc S { initial place A; }\n");
+    CommandResult r = run_command("cd " + dir + " && " + gfec_exe + " --check imports.sfc");
+    CHECK(r.exit_code == 1);
+    return r.out;
+  };
   // An import of a device is refused with the reason, not "cannot find".
-  write_file(dir + "/dev.sfc", "import \"/dev/zero\";\nsfc S { initial place A; }\n");
-  CommandResult dev = run_command("cd " + dir + " && " + gfec_exe + " --check dev.sfc");
-  CHECK(dev.exit_code == 1);
-  CHECK(dev.out.find("dev.sfc:1:8: error: cannot read imported file '/dev/zero': not a regular file") !=
-        std::string::npos);
+  CHECK(importing("/dev/zero")
+            .find("imports.sfc:1:8: error: cannot read imported file '/dev/zero': not a regular "
+                  "file") != std::string::npos);
   // A read that fails is an error, never the end of the file: /proc/self/mem is a regular file
   // whose read(2) at offset 0 fails (the page is not mapped), which a stream took for an empty file.
-  write_file(dir + "/mem.sfc", "import \"/proc/self/mem\";\nsfc S { initial place A; }\n");
-  CommandResult mem = run_command("cd " + dir + " && " + gfec_exe + " --check mem.sfc");
-  CHECK(mem.exit_code == 1);
-  CHECK(mem.out.find("mem.sfc:1:8: error: cannot read imported file '/proc/self/mem': permission denied or an I/O "
-                     "error") != std::string::npos);
+  CHECK(importing("/proc/self/mem")
+            .find("imports.sfc:1:8: error: cannot read imported file '/proc/self/mem': "
+                  "permission denied or an I/O error") != std::string::npos);
   CommandResult main_mem = run_command(gfec_exe + " --check /proc/self/mem");
   CHECK(main_mem.exit_code == 2);
 }
