@@ -627,12 +627,9 @@ std::optional<model::Expr> lower_condition(const ast::Expr *e, ExprScope &s, con
 
 std::optional<model::Expr> lower_initializer(const ast::Expr *e, ExprScope &s, Type type, const std::string &name) {
   auto x = lower_expr(e, s);
-  if (x && assignable(type, x->type)) {
-    // As an assignment's value: a constant that does not fit the variable is an error.
-    if (!constant_fits(*x, type, s)) return std::nullopt;
-    return x;
-  }
   if (!x) return x;
+  // As an assignment's value: a constant that does not fit the variable is an error.
+  if (assignable(type, x->type)) return constant_fits(*x, type, s) ? x : std::nullopt;
   auto &d = s.cx.diag.error(
       x->range, ErrorKind::TypeMismatch,
       fmt::format("cannot initialize '{}' of type {} with a value of type {}", name, quoted(type), quoted(x->type)));

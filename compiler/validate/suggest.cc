@@ -70,10 +70,7 @@ const Symbol *closest(std::string_view name, const std::vector<const Symbol *> &
   for (const Symbol *c : candidates) {
     const std::string_view candidate = c->name();
     if (candidate == name) continue;
-    // Each letter of difference in length costs at least one edit.
-    std::size_t gap = candidate.size() > name.size() ? candidate.size() - name.size() : name.size() - candidate.size();
-    if (gap > limit) continue;
-    // Only a closer candidate matters: the bound shrinks as better ones are found, and with it
+    // Only a closer candidate matters (a length gap larger than the bound costs nothing): the bound shrinks as better ones are found, and with it
     // the work (thousands of near-identical names made this quadratic in practice).
     std::size_t d = edit_distance_within(name, candidate, best_distance - 1);
     if (d < best_distance && d < candidate.size()) {

@@ -352,25 +352,16 @@ private:
 
   const std::string &root_name() const { return cx_.model.plans[path_.front().first].name; }
 
-  /// The initial value the entry starts with: its own, or its type's default.
+  /// Whether `b`'s initial value is the one `a`'s declaration gives the entry: `a`'s own, or
+  /// its type's default (false, 0, "", which a default Expr holds).
   static bool same_initial_value(const model::ConfigEntry &a, const model::ConfigEntry &b) {
-    if (!a.init) return initial_is_default(b);
-    const model::Expr &x = *a.init, &y = *b.init;
+    static const model::Expr kDefault;
+    const model::Expr &x = a.init ? *a.init : kDefault, &y = *b.init;
     switch (a.type) {
     case Type::Bool: return x.bool_value == y.bool_value;
     case Type::Int: return x.int_value == y.int_value;
     case Type::String: return x.text == y.text;
     default: return x.float_value == y.float_value;
-    }
-  }
-
-  static bool initial_is_default(const model::ConfigEntry &b) {
-    const model::Expr &y = *b.init;
-    switch (b.type) {
-    case Type::Bool: return !y.bool_value;
-    case Type::Int: return y.int_value == 0;
-    case Type::String: return y.text.empty();
-    default: return y.float_value == 0;
     }
   }
 
