@@ -1,8 +1,11 @@
 // The run function of an fsm: one tick exactly as docs/language.md §7 says. The state is one
 // number; the transitions form one if/else-if chain in declaration order, so at most one fires
-// and only those leaving the current state evaluate their condition.
+// and only those leaving the current state evaluate their condition. Above kSplitAbovePlaces
+// states each part of the tick is a switch on the state instead, written in parts as the
+// sequential sfc form's are (c_switch_run.h): a chain of 10,000 tests in one function took
+// gcc -O2 24 s and 557 MB, and each tick walked the chain (docs/performance.md).
 #include "c_emit.h"
-#include "c_run_writer.h"
+#include "c_switch_run.h"
 
 #include <fmt/format.h>
 
@@ -12,11 +15,12 @@ namespace gfec::c_backend {
 
 namespace {
 
-class FsmRun : RunWriter {
+class FsmRun : SwitchRun {
 public:
-  FsmRun(CodeWriter &w, const Engine &c) : RunWriter(w, c) {}
+  FsmRun(CodeWriter &w, const Engine &c) : SwitchRun(w, c) {}
 
   void emit() {
+    if (split()) parts();
     head();
     auto body = w_.block("{");
     // The locals of the update (its temporaries, the state it starts from) open the block they
@@ -46,14 +50,34 @@ public:
   }
 
 private:
+  std::string state() const override { return c_.field(c_.state); }
+  std::string state_type() const override { return c_.place_type; }
+  void move(model::PlaceId to) override {
+    w_.line("{} = {};", state(), constant(to));
+    model::Terminal terminal = c_.place(to).terminal;
+    if (terminal != model::Terminal::None)
+      w_.line("{} = {};", c_.field(c_.status), terminal == model::Terminal::Success ? 1 : -1);
+  }
+  /// Entering a terminal state also sets the status: its case moves itself.
+  bool moves_by_table(model::PlaceId to) const override { return c_.place(to).terminal == model::Terminal::None; }
+  /// A state as the number a switch's part takes (the parts' parameter type).
+  std::string number(const std::string &state) const { return fmt::format("({}){}", index_type(), state); }
+
   void locals() {
     declarations();
     remember_state();
   }
 
   /// The conditions are rendered first: the temporaries they need belong to the whole update
-  /// (the transitions are one if/else-if chain), declared at the top of its block.
+  /// (the transitions are one if/else-if chain), declared at the top of its block. The split
+  /// form renders them in the cases, and needs only what the update part says.
   void declarations() {
+    if (split()) {
+      if (c_.chart.transitions.empty()) return;
+      section("");
+      w_.line("bool {}; /* the current state's update part says that its transition fired */", c_.fire);
+      return;
+    }
     for (const auto &t : c_.chart.transitions)
       conditions_.push_back(t.condition ? c_condition(c_, *t.condition, temps_, true, t.inputs.at(0)) : "");
     if (!temps_.pending()) return;
@@ -73,6 +97,10 @@ private:
   void count_time() {
     if (!c_.has_timers) return;
     section("/* Count the ticks of the current state, if it has a timer */");
+    if (split()) {
+      place_switch(time_switch(), number(state()));
+      return;
+    }
     for (model::PlaceId p : places())
       if (c_.place(p).timed) w_.line("if (({0}) && ({1} < UINT32_MAX)) {{ {1}++; }}", in_state(p), c_.timer_of(p));
   }
@@ -92,6 +120,10 @@ private:
     if (c_.chart.transitions.empty()) return;
     section("/* Perform state update: the first transition leaving the current state whose condition");
     w_.line("   holds, in declaration order (one per tick) */");
+    if (split()) {
+      place_switch(update_switch(), number(state()));
+      return;
+    }
     for (std::size_t i = 0; i < c_.chart.transitions.size(); ++i) {
       const auto &t = c_.chart.transitions[i];
       w_.line("/* {}: {} */", t.name, transition_label(c_, t));
@@ -128,9 +160,19 @@ private:
               c_.field(c_.state));
       w_.line("{} = {};", c_.field(c_.state), c_.from);
     }
-    exit_blocks([this](model::PlaceId p) { return fmt::format("{} == {}", c_.from, c_.place_const[p]); });
+    if (split()) {
+      PlaceSwitch exits = exit_switch();
+      if (any(exits)) place_switch(exits, number(c_.from));
+    } else {
+      exit_blocks([this](model::PlaceId p) { return fmt::format("{} == {}", c_.from, c_.place_const[p]); });
+    }
     if (swap) w_.line("{} = {};", c_.field(c_.state), c_.to);
-    entry_blocks([this](model::PlaceId p) { return in_state(p); });
+    if (split()) {
+      PlaceSwitch entries = entry_switch();
+      if (any(entries)) place_switch(entries, number(state()));
+    } else {
+      entry_blocks([this](model::PlaceId p) { return in_state(p); });
+    }
     // The hooks go inside the same test: a second `if` on the same condition right after it is
     // what cppcheck calls a duplicate condition when the exit and entry code leave it alone.
     // Instances have no hooks (docs/c-engine.md).
@@ -155,6 +197,10 @@ private:
   void hook_calls() {
     w_.line("{}({}, {}, false);", c_.activated_fn, c_.self, c_.from);
     w_.line("{}({}, {}, true);", c_.activated_fn, c_.self, c_.field(c_.state));
+    if (split()) {
+      place_switch(hook_switch(), number(state()));
+      return;
+    }
     // By the state they leave: a scan of every transition for each state was quadratic (a chain
     // of 120,000 states took 44 s; docs/performance.md, "Long fsms").
     const IdGroups<model::PlaceId, model::TransitionId> leaving = model::transitions_leaving(c_.chart);
@@ -195,9 +241,16 @@ private:
   }
 
   void actions() {
-    action_blocks(c_.has_sub() ? "/* Perform the action of the current state, then one tick of the instance it runs */"
-                               : "/* Perform the action of the current state */",
-                  [this](model::PlaceId p) { return in_state(p); });
+    const char *comment = c_.has_sub()
+                              ? "/* Perform the action of the current state, then one tick of the instance it runs */"
+                              : "/* Perform the action of the current state */";
+    if (!split()) {
+      action_blocks(comment, [this](model::PlaceId p) { return in_state(p); });
+      return;
+    }
+    if (!any_actions()) return;
+    section(comment);
+    place_switch(action_switch(), number(state()));
   }
 
   std::vector<std::string> conditions_;  ///< by transition, rendered by declarations()

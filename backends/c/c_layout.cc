@@ -107,6 +107,14 @@ Layout plan_layout(const model::Chart &chart, EngineForm requested, std::vector<
   bool scalable =
       requested == EngineForm::Scalable ||
       (requested == EngineForm::Auto && chart.places.size() > kReadableMaxPlaces && (sequential || !concurrent));
+  if (chart.kind == model::Chart::Kind::Fsm) {
+    // An fsm has one form; only its size decides whether its switches are split (c_switch_run.h).
+    if (chart.places.size() > kSplitAbovePlaces) {
+      l.index_bits = bits_for(chart.places.size());
+      l.part_places = kPartPlaces;
+    }
+    return l;
+  }
   if (!scalable || chart.kind != model::Chart::Kind::Sfc) return l;
   l.form = sequential ? Layout::Form::Sequential : Layout::Form::Sparse;
   l.index_bits = bits_for(chart.places.size());

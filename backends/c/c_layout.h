@@ -26,7 +26,7 @@ namespace gfec::c_backend {
 /// Charts with more places than this get the scalable form unless told otherwise.
 constexpr std::size_t kReadableMaxPlaces = 64;
 
-/// The sequential form of a chart with more places than this is split (docs/c-engine.md, "Large
+/// The sequential form of a chart (and an fsm) with more places than this is split (docs/c-engine.md, "Large
 /// charts"): each switch on the active place becomes file-local part functions of kPartPlaces
 /// places each, called through a table. One function with a case per place costs gcc -O2 time and
 /// memory that grow faster than the chart (docs/performance.md); the parts keep each function small.

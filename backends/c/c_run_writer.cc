@@ -92,6 +92,50 @@ void RunWriter::activation_hooks(const std::string &loop, const std::string &i,
   }
 }
 
+void RunWriter::own(const std::function<model::PlaceId(model::TransitionId)> &owner) {
+  owned_ = IdMap<model::PlaceId, std::vector<model::TransitionId>>(c_.chart.places.size());
+  for (model::TransitionId t : c_.chart.transitions.ids()) owned_.at(owner(t)).push_back(t);
+}
+
+std::vector<std::string> RunWriter::conditions(const std::vector<model::TransitionId> &transitions, bool alone) {
+  std::vector<std::string> text;
+  for (model::TransitionId i : transitions) {
+    const auto &t = c_.chart.transitions[i];
+    if (!t.condition) text.emplace_back();
+    else
+      text.push_back(alone ? c_test(c_, *t.condition, temps_, true, tried_in(t))
+                           : c_condition(c_, *t.condition, temps_, true, tried_in(t)));
+  }
+  return text;
+}
+
+void RunWriter::transition_test(const model::Transition &t, const std::string &inputs, const std::string &condition) {
+  std::string test = inputs;
+  if (t.condition) test += (test.empty() ? "" : " && ") + condition;
+  // Mapped to the condition, or to the whole transition when it has none (docs/c-engine.md).
+  w_.line_from(c_.model.sources(), t.condition ? t.condition->range : t.range);
+  w_.line("if ({}) {{", test.empty() ? "true" : test);
+  w_.line_back();
+}
+
+void RunWriter::case_block(model::PlaceId place, const std::vector<model::Stmt> &stmts,
+                           const std::vector<std::string> &first, const std::vector<std::string> &last) {
+  std::vector<std::string> text = c_statements(c_, stmts, temps_);
+  in_case(constant(place), [&] {
+    statements(stmts, text, first, last);
+    w_.line("break;");
+  });
+}
+
+void RunWriter::switch_end() {
+  w_.line("default:");
+  {
+    auto in_default = w_.indented();
+    w_.line("break;");
+  }
+  w_.line("}");
+}
+
 bool RunWriter::any_exits() const {
   for (model::PlaceId p : places())
     if (c_.runs_exit(p)) return true;

@@ -18,6 +18,9 @@ namespace gfec::c_backend {
 class RunWriter {
 protected:
   RunWriter(CodeWriter &w, const Engine &c) : w_(w), c_(c), temps_(c.temp_prefix) {}
+  virtual ~RunWriter() = default;
+  RunWriter(const RunWriter &) = delete;
+  RunWriter &operator=(const RunWriter &) = delete;
 
   /// `void X_run(X *m)` (static for an instance); the caller opens the body.
   void head();
@@ -64,10 +67,49 @@ protected:
   /// The engine's lines before a place's entry block: its timer reset, its instance started.
   std::vector<std::string> entry_first(model::PlaceId p) const;
 
+  // ---- the cases of a switch (the scalable forms, a large fsm)
+
+  /// Files each transition under the place that tries it (`owner`), in declaration order, so
+  /// that the writers stay linear in the chart; owned() reads them.
+  void own(const std::function<model::PlaceId(model::TransitionId)> &owner);
+  const std::vector<model::TransitionId> &owned(model::PlaceId place) const { return owned_.at(place); }
+  /// The place a transition is tried in, when only one place is ever active; none otherwise.
+  virtual model::PlaceId tried_in(const model::Transition &) const { return {}; }
+
+  const std::string &constant(model::PlaceId place) const { return c_.place_const.at(place); }
+  /// The conditions of `transitions`, rendered before the code around them is written.
+  /// `alone`: each is the whole test of its `if` (no input counters to test first).
+  std::vector<std::string> conditions(const std::vector<model::TransitionId> &transitions, bool alone = false);
+  /// `if (<inputs> && (<condition>)) {` for transition `t`; `inputs`: the counter tests;
+  /// `condition`: the condition as conditions() rendered it.
+  void transition_test(const model::Transition &t, const std::string &inputs, const std::string &condition);
+
+  /// `case X:`, and what `body` writes indented. A case whose chart code needs temporaries
+  /// (c_expr.h; rendered before) is a block, `case X: {`, that declares them: a declaration
+  /// cannot follow a label.
+  template <typename Body> void in_case(const std::string &label, Body body) {
+    const bool braced = temps_.pending();
+    w_.line("case {}:{}", label, braced ? " {" : "");
+    CodeWriter::Scope scope(w_, braced ? "}" : "");
+    temps_.declare(w_);
+    body();
+  }
+  /// `case X_P:` with the chart's statements (and lines of engine code `first` before them and
+  /// `last` after them), then `break;`.
+  void case_block(model::PlaceId place, const std::vector<model::Stmt> &stmts,
+                  const std::vector<std::string> &first = {}, const std::vector<std::string> &last = {});
+  /// A gained place's entry: the timer reset, the instance started, then the entry block.
+  void entry_case(model::PlaceId p) { case_block(p, entry_of(p), entry_first(p)); }
+  /// `default: break;` and the switch's end: its labels stand at its level.
+  void switch_end();
+
   CodeWriter &w_;
   const Engine &c_;
   bool started_ = false;
   Temporaries temps_;
+
+private:
+  IdMap<model::PlaceId, std::vector<model::TransitionId>> owned_;
 };
 
 }  // namespace gfec::c_backend

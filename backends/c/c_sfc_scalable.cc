@@ -5,7 +5,7 @@
 // active places in declaration order. The chart's code is the same readable C; only the
 // bookkeeping around it differs.
 #include "c_emit.h"
-#include "c_run_writer.h"
+#include "c_switch_run.h"
 
 #include <fmt/format.h>
 
@@ -19,90 +19,6 @@ namespace {
 using model::PlaceId;
 using model::TransitionId;
 
-/// What both scalable run functions share besides RunWriter: the transitions under the place
-/// that tries them, the cases of switches on a place.
-class ScalableRun : protected RunWriter {
-public:
-  ScalableRun(CodeWriter &w, const Engine &c) : RunWriter(w, c), owned_(c.chart.places.size()) {
-    // Each transition under its owner (the sequential layout: its one input), in declaration
-    // order, so that the writers stay linear in the chart.
-    for (TransitionId t : c.chart.transitions.ids()) {
-      PlaceId owner = c.sequential() ? c.chart.transitions[t].inputs.front() : c.layout.owner.at(t);
-      owned_.at(owner).push_back(t);
-    }
-  }
-
-protected:
-  const std::vector<TransitionId> &owned(PlaceId place) const { return owned_.at(place); }
-
-  const std::string &constant(PlaceId place) const { return c_.place_const.at(place); }
-  /// A gained place's entry: the timer reset, the instance started, then the entry block.
-  void entry_case(PlaceId p) { case_block(p, entry_of(p), entry_first(p)); }
-
-  /// `case X_P:` with the chart's statements (and lines of engine code `first` before them and
-  /// `last` after them), then `break;`.
-  void case_block(PlaceId place, const std::vector<model::Stmt> &stmts, const std::vector<std::string> &first = {},
-                  const std::vector<std::string> &last = {}) {
-    std::vector<std::string> text = c_statements(c_, stmts, temps_);
-    in_case(constant(place), [&] {
-      statements(stmts, text, first, last);
-      w_.line("break;");
-    });
-  }
-
-  /// `case X:`, and what `body` writes indented. A case whose chart code needs temporaries
-  /// (c_expr.h; rendered before) is a block, `case X: {`, that declares them: a declaration
-  /// cannot follow a label.
-  template <typename Body> void in_case(const std::string &label, Body body) {
-    const bool braced = temps_.pending();
-    w_.line("case {}:{}", label, braced ? " {" : "");
-    CodeWriter::Scope scope(w_, braced ? "}" : "");
-    temps_.declare(w_);
-    body();
-  }
-
-  /// The conditions of `transitions`, rendered before the code around them is written.
-  /// `alone`: each is the whole test of its `if` (no input counters to test first).
-  std::vector<std::string> conditions(const std::vector<TransitionId> &transitions, bool alone = false) {
-    std::vector<std::string> text;
-    for (TransitionId i : transitions) {
-      const auto &t = c_.chart.transitions[i];
-      if (!t.condition) text.emplace_back();
-      else
-        text.push_back(alone ? c_test(c_, *t.condition, temps_, true, from(t))
-                             : c_condition(c_, *t.condition, temps_, true, from(t)));
-    }
-    return text;
-  }
-
-  /// The place a transition of the sequential form is tried in; none in the sparse form.
-  PlaceId from(const model::Transition &t) const { return c_.sequential() ? t.inputs.front() : PlaceId(); }
-
-  /// `default: break;` and the switch's end: its labels stand at its level.
-  void switch_end() {
-    w_.line("default:");
-    {
-      auto in_default = w_.indented();
-      w_.line("break;");
-    }
-    w_.line("}");
-  }
-
-  /// `if (<inputs> && (<condition>)) {` for transition `t`; `inputs`: the counter tests;
-  /// `condition`: the condition as conditions() rendered it.
-  void transition_test(const model::Transition &t, const std::string &inputs, const std::string &condition) {
-    std::string test = inputs;
-    if (t.condition) test += (test.empty() ? "" : " && ") + condition;
-    // Mapped to the condition, or to the whole transition when it has none (docs/c-engine.md).
-    w_.line_from(c_.model.sources(), t.condition ? t.condition->range : t.range);
-    w_.line("if ({}) {{", test.empty() ? "true" : test);
-    w_.line_back();
-  }
-
-private:
-  IdMap<PlaceId, std::vector<TransitionId>> owned_;
-};
-
 // ------------------------------------------------------------------------------ sequential
 
 /// One place is ever active: the state is its number, and a tick is a switch on it. Above
@@ -110,9 +26,9 @@ private:
 /// of kPartPlaces places each, written before the run function, which calls the part that holds
 /// the place through a table (a table, not a direct call: gcc would inline a function called
 /// once back into one large function).
-class SequentialRun : public ScalableRun {
+class SequentialRun : public SwitchRun {
 public:
-  using ScalableRun::ScalableRun;
+  SequentialRun(CodeWriter &w, const Engine &c) : SwitchRun(w, c) {}
 
   void emit() {
     if (split()) parts();
@@ -128,210 +44,9 @@ public:
   }
 
 private:
-  /// A switch on a place number: `kind` names its parts (Engine::kPartKinds); `has(p)`: place
-  /// `p` has a case, which `write(p)` writes.
-  struct PlaceSwitch {
-    const char *kind;
-    std::function<bool(PlaceId)> has;
-    std::function<void(PlaceId)> write;
-    /// The split update switch: its parts return whether the place's one transition fired, and
-    /// the run function moves to the place the table part_next() holds for it.
-    bool moves = false;
-  };
-
-  std::string current() const { return c_.field(c_.current); }
-  bool split() const { return c_.layout.part_places > 0; }
-  const char *place_type() const { return uint_type(c_.layout.index_bits); }
-  bool any(const PlaceSwitch &s) const {
-    for (PlaceId p : places())
-      if (s.has(p)) return true;
-    return false;
-  }
-
-  // The switches, and whether the run function uses them (their parts exist only then: an unused
-  // static function is a warning).
-  PlaceSwitch time_switch() {
-    return {"time", [this](PlaceId p) { return c_.place(p).timed; },
-            [this](PlaceId p) {
-              w_.line("case {0}: if ({1} < UINT32_MAX) {{ {1}++; }} break;", constant(p), c_.timer_of(p));
-            }};
-  }
-  bool counts_time() const { return c_.has_timers; }
-  /// The transitions leaving a place, in declaration order, up to the first that always fires
-  /// (the ones after it are never open).
-  std::vector<TransitionId> tried(PlaceId p) const {
-    std::vector<TransitionId> t;
-    for (TransitionId i : owned(p)) {
-      t.push_back(i);
-      if (!c_.chart.transitions[i].condition) break;
-    }
-    return t;
-  }
-  PlaceSwitch update_switch() {
-    return {"update", [this](PlaceId p) { return !owned(p).empty(); }, [this](PlaceId p) { update_case(p); }, split()};
-  }
-  /// Where the split form moves the place `p` to when its part says that its transition fired:
-  /// the one transition it tries, if it tries one; otherwise it moves itself.
-  PlaceId single_move(PlaceId p) const {
-    std::vector<TransitionId> ts = tried(p);
-    return split() && ts.size() == 1 ? c_.chart.transitions[ts.front()].outputs.front() : PlaceId();
-  }
-  void update_case(PlaceId p) {
-    std::vector<TransitionId> ts = tried(p);
-    std::vector<std::string> test = conditions(ts, true);
-    in_case(constant(p), [&] {
-      if (single_move(p)) {
-        // The part only tells whether the transition fires; the move is the run function's,
-        // from a table. gcc -O2 compiles a case that only evaluates a condition into the part's
-        // result in a third of the time and memory of one that moves (docs/performance.md).
-        const auto &t = c_.chart.transitions[ts.front()];
-        w_.line("/* {}: {} */", t.name, transition_label(c_, t));
-        w_.line_from(c_.model.sources(), t.condition ? t.condition->range : t.range);
-        w_.line("{} = {};", c_.fire, t.condition ? test.front() : "true");
-        w_.line_back();
-      } else {
-        moves(ts, test);
-      }
-      w_.line("break;");
-    });
-  }
-  /// The transitions `ts` tried in turn, the first that fires moving the state.
-  void moves(const std::vector<TransitionId> &ts, const std::vector<std::string> &test) {
-    for (std::size_t k = 0; k < ts.size(); ++k) {
-      const auto &t = c_.chart.transitions[ts[k]];
-      w_.line("/* {}: {} */", t.name, transition_label(c_, t));
-      if (!t.condition) {
-        // Always fires (the last one tried()): no `if (true)`, whose condition would be invariant
-        // (MISRA C:2012 rule 14.3); the move itself is mapped to the transition.
-        w_.line_from(c_.model.sources(), t.range);
-        w_.line("{} = {};", current(), constant(t.outputs.front()));
-        w_.line_back();
-        continue;
-      }
-      transition_test(t, "", test[k]);
-      CodeWriter::Scope fires(w_, "}");  // the block transition_test opened
-      w_.line("{} = {};", current(), constant(t.outputs.front()));
-      w_.line("break;");
-    }
-  }
-  PlaceSwitch exit_switch() {
-    return {"exit", [this](PlaceId p) { return c_.runs_exit(p); },
-            [this](PlaceId p) { case_block(p, exit_of(p), c_.stop_call(p)); }};
-  }
-  PlaceSwitch entry_switch() {
-    return {"enter", [this](PlaceId p) { return c_.runs_entry(p) || c_.resets_timer(p); },
-            [this](PlaceId p) { entry_case(p); }};
-  }
-  PlaceSwitch hook_switch() {
-    return {"hook", [this](PlaceId p) { return !owned(p).empty(); },
-            [this](PlaceId p) {
-              std::string calls;
-              for (TransitionId t : owned(p))
-                calls += fmt::format(" {}({}, {});", c_.enabled_fn, c_.self, c_.transition_const[t]);
-              w_.line("case {}:{} break;", constant(p), calls);
-            }};
-  }
-  bool hooks_transitions() const { return !c_.chart.transitions.empty() && c_.hooks(); }
-  PlaceSwitch action_switch() {
-    return {"act", [this](PlaceId p) { return c_.acts(p); },
-            [this](PlaceId p) { case_block(p, c_.place(p).action, {}, c_.tick_call(p)); }};
-  }
-
-  /// `switch (value) { <the cases> }`, or in the split form the call of the part holding `value`.
-  void place_switch(const PlaceSwitch &s, const std::string &value) {
-    if (split()) {
-      std::string call =
-          fmt::format("{}[{} / {}u]({}, {})", c_.part_table(s.kind), value, c_.layout.part_places, c_.self, value);
-      if (!s.moves) {
-        w_.line("{};", call);
-        return;
-      }
-      // The result in a variable of its own: the test of an `if` is essentially Boolean (MISRA
-      // C:2012 rule 14.4), which cppcheck cannot tell of a call through a table.
-      w_.line("{} = {};", c_.fire, call);
-      auto fires = w_.block(fmt::format("if ({}) {{", c_.fire));
-      w_.line("{0} = {1}[{0}];", current(), c_.part_next());
-      return;
-    }
-    w_.line("switch ({}) {{", value);
-    for (PlaceId p : places())
-      if (s.has(p)) s.write(p);
-    switch_end();
-  }
-
-  /// The split form: each switch the run function uses, as parts and their table.
-  void parts() {
-    if (counts_time()) switch_parts(time_switch());
-    if (!c_.chart.transitions.empty()) switch_parts(update_switch());
-    if (c_.needs_snapshot()) {
-      PlaceSwitch exits = exit_switch(), entries = entry_switch();
-      if (any(exits)) switch_parts(exits);
-      if (any(entries)) switch_parts(entries);
-    }
-    if (hooks_transitions()) {
-      directive(w_, "#ifdef " + c_.hooks_macro);
-      switch_parts(hook_switch());
-      directive(w_, "#endif");
-    }
-    if (any_actions()) switch_parts(action_switch());
-  }
-
-  void switch_parts(const PlaceSwitch &s) {
-    const std::size_t n = c_.part_count(), size = c_.layout.part_places;
-    w_.line("/* The {} switch, in parts of {} places (docs/c-engine.md, \"Large charts\") */", s.kind, size);
-    for (std::size_t k = 0; k < n; ++k) {
-      w_.line("static {} {}({} *{}, {} {})", s.moves ? "bool" : "void", c_.part_fn(s.kind, k), c_.struct_type, c_.self,
-              place_type(), c_.index);
-      {
-        auto body = w_.block("{");
-        if (s.moves) w_.line("bool {} = false;", c_.fire);
-        w_.line("(void){}; /* not every part reads the engine */", c_.self);
-        bool cases = false;
-        for (std::size_t p = k * size; p < std::min((k + 1) * size, c_.chart.places.size()); ++p)
-          cases = cases || s.has(PlaceId(p));
-        if (!cases) {  // a switch needs two clauses (MISRA C:2012 rule 16.6): no place here has one
-          w_.line("(void){}; /* no place of this part has a case */", c_.index);
-        } else {
-          w_.line("switch ({}) {{", c_.index);
-          for (std::size_t p = k * size; p < std::min((k + 1) * size, c_.chart.places.size()); ++p)
-            if (s.has(PlaceId(p))) s.write(PlaceId(p));
-          switch_end();
-        }
-        if (s.moves) w_.line("return {};", c_.fire);
-      }
-      w_.blank();
-    }
-    std::vector<std::string> parts;
-    for (std::size_t k = 0; k < n; ++k) parts.push_back(c_.part_fn(s.kind, k));
-    table(fmt::format("static {} (*const {}[{}])({} *, {})", s.moves ? "bool" : "void", c_.part_table(s.kind), n,
-                      c_.struct_type, place_type()),
-          parts);
-    if (!s.moves) return;
-    w_.line("/* The place each place moves to when its update part says that its transition fired (a place");
-    w_.line("   with several transitions to try moves itself, and its entry is its own) */");
-    std::vector<std::string> next;
-    for (PlaceId p : places()) {
-      const PlaceId to = single_move(p);
-      next.push_back(constant(to ? to : p));
-    }
-    table(fmt::format("static const {} {}[{}]", place_type(), c_.part_next(), c_.chart.places.size()), next);
-  }
-
-  /// `<declaration> = { <items> };`, the items several to a line.
-  void table(const std::string &declaration, const std::vector<std::string> &items) {
-    {
-      auto rows = w_.block(fmt::format("{} = {{", declaration), "};");
-      std::string row;
-      for (std::size_t k = 0; k < items.size(); ++k) {
-        row += (row.empty() ? "" : " ") + items[k] + (k + 1 < items.size() ? "," : "");
-        if (row.size() > 80 || k + 1 == items.size()) {
-          w_.line(std::string_view(row));
-          row.clear();
-        }
-      }
-    }
-    w_.blank();
-  }
+  std::string state() const override { return c_.field(c_.current); }
+  std::string state_type() const override { return index_type(); }
+  void move(PlaceId to) override { w_.line("{} = {};", state(), constant(to)); }
 
   void declarations() {
     if (c_.chart.transitions.empty()) {
@@ -347,14 +62,14 @@ private:
     if (split()) w_.line("bool {}; /* the active place's update part says that its transition fired */", c_.fire);
     if (!from) return;
     if (!c_.needs_snapshot()) directive(w_, "#ifdef " + c_.hooks_macro);
-    w_.line("{} {} = {}; /* the active place at the start of the tick */", place_type(), c_.from, current());
+    w_.line("{} {} = {}; /* the active place at the start of the tick */", index_type(), c_.from, state());
     if (!c_.needs_snapshot()) directive(w_, "#endif");
   }
 
   void count_time() {
-    if (!counts_time()) return;
+    if (!c_.has_timers) return;
     section("/* Count the ticks of the active place, if it has a timer */");
-    place_switch(time_switch(), current());
+    place_switch(time_switch(), state());
   }
 
   /// The transitions leaving the active place, in declaration order; the first whose condition
@@ -363,16 +78,16 @@ private:
     if (c_.chart.transitions.empty()) return;
     section("/* Perform state update: the transitions leaving the active place, in declaration order;");
     w_.line("   the first whose condition holds takes the activation */");
-    place_switch(update_switch(), current());
+    place_switch(update_switch(), state());
   }
 
   void exits_and_entries() {
     if (!c_.needs_snapshot()) return;
     section("/* Leave the place left, then enter the place entered */");
-    auto scope = w_.block(fmt::format("if ({} != {}) {{", current(), c_.from));
+    auto scope = w_.block(fmt::format("if ({} != {}) {{", state(), c_.from));
     PlaceSwitch exits = exit_switch(), entries = entry_switch();
     if (any(exits)) place_switch(exits, c_.from);
-    if (any(entries)) place_switch(entries, current());
+    if (any(entries)) place_switch(entries, state());
     // The hooks go inside the same test: a second `if` on the same condition right after it is
     // what cppcheck calls a duplicate condition when the exit and entry code leave it alone.
     // Instances have no hooks (docs/c-engine.md).
@@ -388,7 +103,7 @@ private:
     if (!hooks_transitions() || c_.needs_snapshot()) return;
     hooks_section("/* Observation hooks: the place left and the place entered; the transitions leaving it */");
     {
-      auto scope = w_.block(fmt::format("if ({} != {}) {{", current(), c_.from));
+      auto scope = w_.block(fmt::format("if ({} != {}) {{", state(), c_.from));
       hook_calls();
     }
     directive(w_, "#endif");
@@ -396,24 +111,26 @@ private:
 
   void hook_calls() {
     w_.line("{}({}, ({}){}, false);", c_.activated_fn, c_.self, c_.place_type, c_.from);
-    w_.line("{}({}, ({}){}, true);", c_.activated_fn, c_.self, c_.place_type, current());
-    place_switch(hook_switch(), current());
+    w_.line("{}({}, ({}){}, true);", c_.activated_fn, c_.self, c_.place_type, state());
+    place_switch(hook_switch(), state());
   }
 
   void actions() {
     if (!any_actions()) return;
     section(c_.has_sub() ? "/* Perform the action of the active place, then one tick of the instance it runs */"
                          : "/* Perform the action of the active place */");
-    place_switch(action_switch(), current());
+    place_switch(action_switch(), state());
   }
 };
 
 // ------------------------------------------------------------------------------ sparse
 
 /// Counters, the active places as bits with summary levels, lists of what changed.
-class SparseRun : public ScalableRun {
+class SparseRun : protected RunWriter {
 public:
-  using ScalableRun::ScalableRun;
+  SparseRun(CodeWriter &w, const Engine &c) : RunWriter(w, c) {
+    own([&c](TransitionId t) { return c.layout.owner.at(t); });
+  }
 
   void emit() {
     head();

@@ -233,6 +233,41 @@ std::string large_sequential_sfc(int places) {
   return s + "}\n";
 }
 
+/// An fsm of `states` states, large enough for its switches to be split (c_layout.h): each state
+/// goes on to the next, some jump far (to other parts), some tries several transitions or one
+/// without a condition, some have timers, entry, exit and action blocks; success and failure
+/// states (one with a postcondition) are spread over the parts, and many states can reach one.
+std::string large_fsm(int states) {
+  // S8 and S40 (which S3 jumps to) each try one transition, into a terminal state: the split
+  // form moves those in the case, status included.
+  auto terminal = [](int s) { return s == 9 || s % 97 == 50 ? "success " : s == 41 || s % 89 == 60 ? "failure " : ""; };
+  std::string s = "interface RandomBot {\n  bool B0();\n  bool B1();\n  bool B2();\n  int Level();\n"
+                  "  void Act(int n);\n  void Beep();\n}\n\nfsm Huge {\n  period 10ms;\n  var int n = 0;\n";
+  for (int p = 0; p < states; ++p) {
+    if (*terminal(p)) {
+      s += fmt::format("  {}state S{}{};\n", terminal(p), p, p == 50 ? " post Level() >= 0" : "");
+      continue;
+    }
+    std::string body;
+    if (p % 5 == 1) body += " entry { Beep(); }";
+    if (p % 7 == 2) body += " exit { n += 1; }";
+    if (p % 2 == 0) body += fmt::format(" Act({});", p);
+    if (p % 13 == 4) body += fmt::format(" if (elapsed(S{}) >= 20ms) {{ Act(n); }}", p);
+    s += fmt::format("  {}state S{} {{{} }}\n", p == 0 ? "initial " : "", p, body);
+  }
+  for (int p = 0; p < states; ++p) {
+    if (*terminal(p)) continue;
+    const int next = (p + 1) % states, jump = p == 3 ? 40 : (p * 397 + 131) % states, end = 50 + 97 * (p % 11);
+    if (p % 3 == 0 && jump != next) s += fmt::format("  S{} -> S{} when B1() && !B2();\n", p, jump);
+    if (p % 10 == 9 && end != next && end != jump)
+      s += fmt::format("  S{} -> S{} when B2() && Level() == 4;\n", p, end);
+    if (p % 13 == 4) s += fmt::format("  S{} -> S{} when elapsed(S{}) >= 20ms;\n", p, next, p);
+    else if (p % 17 == 5) s += fmt::format("  S{} -> S{};\n", p, next);
+    else s += fmt::format("  S{} -> S{} when B0();\n", p, next);
+  }
+  return s + "}\n";
+}
+
 /// One chart in every engine form against the interpreter, on `scripts` random scripts.
 void check_forms(const std::string &name, const std::map<std::string, std::string> &files, int scripts,
                  const std::vector<EngineForm> &forms = {EngineForm::Readable, EngineForm::Scalable}) {
@@ -288,4 +323,29 @@ TEST_CASE("c engine: the split sequential form of a large chart agrees with the 
   // A place with one transition to try only says that it fired; X_run moves it by the table.
   CHECK(compiled->files.front().contents.find("m->current = Large_moves[m->current];") != std::string::npos);
   check_forms("large.sfc", {{"large.sfc", text}}, 3, {EngineForm::Scalable});
+}
+
+TEST_CASE("c engine: the split form of a large fsm agrees with the interpreter", "[c_backend][run][differential]") {
+  // Above kSplitAbovePlaces states each part of an fsm's tick is a switch on the state, written
+  // in parts called through tables (docs/c-engine.md, "Large charts"); hooks on.
+  const int states = static_cast<int>(gfec::c_backend::kSplitAbovePlaces) + 100;
+  std::string text = large_fsm(states);
+  auto compiled = compile_chart({{"huge.fsm", text}}, "huge.fsm", "engine.c", true, EngineForm::Readable);
+  INFO(compiled->errors);
+  REQUIRE(!compiled->diag.has_errors());
+  REQUIRE(!compiled->files.empty());
+  const std::string &engine = compiled->files.front().contents;
+  CHECK(engine.find("Huge_update_parts[(uint16_t)m->state / 256u](m, (uint16_t)m->state)") != std::string::npos);
+  // A state whose one transition leads to a plain state only says that it fired; one that enters
+  // a terminal state also sets the status, in its own case.
+  CHECK(engine.find("m->state = Huge_moves[m->state];") != std::string::npos);
+  CHECK(engine.find("m->status = 1;") != std::string::npos);
+  CHECK(engine.find("m->status = -1;") != std::string::npos);
+  CHECK(engine.find("else if (") == std::string::npos);  // no chain of tests on the state
+  check_forms("huge.fsm", {{"huge.fsm", text}}, 4, {EngineForm::Readable});
+  // At the size the split begins, the chain stays.
+  std::string small = large_fsm(static_cast<int>(gfec::c_backend::kSplitAbovePlaces));
+  auto chain = compile_chart({{"small.fsm", small}}, "small.fsm", "engine.c", true, EngineForm::Readable);
+  REQUIRE(!chain->diag.has_errors());
+  CHECK(chain->files.front().contents.find("_parts[") == std::string::npos);
 }
