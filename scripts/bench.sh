@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs every benchmark of docs/performance.md and prints its tables. Measures; never fails on time.
 #
-#   scripts/bench.sh [--quick] [SECTION...]     sections: compiler engine size sim plan (default: all)
+#   scripts/bench.sh [--quick] [SECTION...]     sections: compiler cc engine size sim plan (default: all)
 #
 # Builds a Release tree in build-bench/ (or $GFEC_BENCH_BUILD_DIR) with the targets the
 # benchmarks need: gfec, gfec_bench_gen, afp_step_bench, sim_rtf. --quick uses smaller sizes
@@ -14,11 +14,11 @@ sections=()
 for arg in "$@"; do
   case $arg in
     --quick) quick=1 ;;
-    compiler | engine | size | sim | plan) sections+=("$arg") ;;
-    *) echo "usage: scripts/bench.sh [--quick] [compiler|engine|size|sim|plan]..." >&2; exit 2 ;;
+    compiler | cc | engine | size | sim | plan) sections+=("$arg") ;;
+    *) echo "usage: scripts/bench.sh [--quick] [compiler|cc|engine|size|sim|plan]..." >&2; exit 2 ;;
   esac
 done
-[[ ${#sections[@]} -gt 0 ]] || sections=(compiler engine size sim plan)
+[[ ${#sections[@]} -gt 0 ]] || sections=(compiler cc engine size sim plan)
 
 if [[ ! -f $build/build.ninja ]]; then
   cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release > /dev/null
@@ -39,6 +39,9 @@ for section in "${sections[@]}"; do
       else
         "$root/tests/bench/bench_compiler.sh" "$gfec" "$gen"
       fi ;;
+    cc)
+      echo "== (a') the C compiler on large engines"
+      "$root/tests/bench/bench_cc.sh" "$gfec" "$gen" ;;
     engine)
       echo "== (b) engine: instructions and nanoseconds per tick"
       if ((quick)); then export BENCH_TICKS=200000; fi
