@@ -161,11 +161,9 @@ TEST_CASE("floating values are spelled with the shortest digits of their type", 
 namespace {
 
 struct Checked {
-  test::FrontEnd fe;
-  model::Model model;
-  explicit Checked(const std::string &text) : fe({{"t.sfc", text}}) {
-    model = validate(fe.loaded.program, fe.sources, fe.diag);
-  }
+  test::Pipeline fe;
+  model::Model &model = fe.model;
+  explicit Checked(const std::string &text) : fe("t.sfc", test::files({{"t.sfc", text}})) {}
   const model::Const &constant(const std::string &name) const {
     for (const auto &c : model.consts)
       if (c.name == name) return c;

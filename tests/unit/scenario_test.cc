@@ -40,19 +40,18 @@ plan P { start a; actor a: Nothing() { X -> terminate; } }
 )--";
 
 struct Checked {
-  test::FrontEnd fe;
-  model::Model model;
   scenario::Suite suite;
+  test::Pipeline fe;
+  model::Model &model = fe.model;
 
-  explicit Checked(const std::string &tests) : fe({{"t.test", "import \"bot.sfc\";\n" + tests}, {"bot.sfc", kChart}}) {
-    model = validate(fe.loaded.program, fe.sources, fe.diag, suite);
-  }
+  explicit Checked(const std::string &tests)
+      : fe("t.test", test::files({{"t.test", "import \"bot.sfc\";\n" + tests}, {"bot.sfc", kChart}}), {}, &suite) {}
   std::string text() const { return fe.text(); }
   /// The diagnostics about the test file only (the plan in bot.sfc has its own errors).
   std::string test_errors() const {
     std::string out;
     for (const auto &d : fe.diag.all())
-      if (d.range.file == fe.loaded.program.files.front()->id) out += render_text(d, fe.sources);
+      if (fe.sources.file(d.range.file).path() == "t.test") out += render_text(d, fe.sources);
     return out;
   }
 };

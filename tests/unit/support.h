@@ -50,8 +50,10 @@ struct Pipeline {
   LoadResult &loaded = c.loaded;  ///< the files read; the syntax tree is gone after validation
   model::Model &model = c.model;
 
-  Pipeline(const std::string &main, const FileSystem &fs, WarningOptions w = {}) : c(options(w)) {
-    c.front_end(main, fs);
+  /// `tests`: where the main file's `test` blocks go (docs/testing-charts.md), if anywhere.
+  Pipeline(const std::string &main, const FileSystem &fs, WarningOptions w = {}, scenario::Suite *tests = nullptr)
+      : c(options(w)) {
+    c.front_end(main, fs, tests);
   }
   Pipeline(const Pipeline &) = delete;
   static pipeline::FrontEndOptions options(WarningOptions w) {

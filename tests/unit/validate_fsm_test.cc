@@ -399,7 +399,7 @@ t.fsm:6:9: error: state 'TEAM_SIZE' would generate 'T_TEAM_SIZE', which the engi
 }
 
 TEST_CASE("validate: a team machine cannot run as a sub-chart", "[validate][team]") {
-  test::FrontEnd fe({{"t.fsm", R"--(fsm Fetch {
+  test::Pipeline fe("t.fsm", test::files({{"t.fsm", R"--(fsm Fetch {
   team 3;
   initial state Go;
 }
@@ -410,9 +410,7 @@ sfc Patrol {
   initial place Search runs Fetch;
   place Other runs Solo;
 }
-)--"}});
-  REQUIRE(fe.text().empty());
-  model::Model m = validate(fe.loaded.program, fe.sources, fe.diag);
+)--"}}));
   std::string text = fe.text();
   CHECK(
       text.find(
