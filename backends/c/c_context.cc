@@ -36,8 +36,10 @@ void name_globals(Engine &c, NameSpace &globals, const Engine *root) {
   if (c.root) {
     for (const auto &f : c.model.functions) globals.claim(f.name);
     globals.claim(t);
-    for (const char *api : {"init", "run", "activation", "state", "status", "place", "transition"})
-      globals.claim(t + "_" + api);
+    // The names every engine (every team machine) has: naming's one list, which the validator
+    // also reads to refuse a place that would take one.
+    for (const naming::EngineName &e : naming::engine_names())
+      if (e.always && (!e.team || c.chart.team > 0)) globals.claim(t + "_" + std::string(e.suffix));
     c.hooks_macro = t + "_HOOKS";
     c.checks_macro = t + "_CHECKS";
     c.assert_macro = t + "_ASSERT";
