@@ -1,5 +1,6 @@
 #include "c_context.h"
 
+#include "c_form.h"
 #include "naming/naming.h"
 
 #include <fmt/format.h>
@@ -352,16 +353,7 @@ std::string Engine::member(const std::string &obj, const std::string &name) cons
 }
 
 std::string Engine::active_test(const std::string &obj, PlaceId p, bool at_start) const {
-  const std::string &k = place_const.at(p);
-  if (fsm) return fmt::format("{} == {}", member(obj, state), k);
-  if (sequential()) return fmt::format("{} == {}", member(obj, current), k);
-  // In a condition the counters serve as `avail` and decrease: a place some transition consumes
-  // is read from the snapshot of the start of the tick.
-  const bool snapshot = at_start && obj.empty() && is_input.at(p);
-  if (snapshot && sparse())  // the constant as a number in the bit arithmetic (MISRA C:2012 rule 10.1)
-    return fmt::format("(({0}[(uint32_t){1} >> 5] >> ((uint32_t){1} & 31u)) & 1u) != 0u", before, k);
-  if (snapshot) return fmt::format("{}[{}] != 0u", before, k);
-  return fmt::format("{}[{}] != 0u", member(obj, av), k);
+  return form().active_test(*this, obj, p, at_start);
 }
 
 bool Engine::resets_timer(PlaceId p) const { return is_output.at(p) && place(p).timed; }

@@ -15,6 +15,8 @@
 
 namespace gfec::c_backend {
 
+class FormWriter;
+
 /// The engine being written: its chart and options, the names chosen, the layout.
 struct Engine {
   Engine(const model::Model &m, const model::Chart &ch, const EmitOptions &o)
@@ -26,7 +28,9 @@ struct Engine {
   ContextType context_type;  ///< --context-type, read once
   bool fsm = false;
   Layout layout;  ///< readable, sequential or sparse (c_layout.h)
-  bool readable() const { return layout.form == Layout::Form::Readable; }
+  /// The writer of what depends on the engine's form (c_form.h): the fsm's, or the layout's.
+  const FormWriter &form() const;
+  /// The scalable run writers' own tests (c_sfc_scalable.cc); everything else asks form().
   bool sequential() const { return layout.form == Layout::Form::Sequential; }
   bool sparse() const { return layout.form == Layout::Form::Sparse; }
   /// The readable form's counter type: as narrow as the proven bound allows, else GFE's unsigned.

@@ -1,6 +1,7 @@
 // The parts of the engine, one writer each: the header (c_header.cc), the engine file around the
-// run function (c_source.cc), and the run function of an sfc (c_sfc_run.cc, or c_sfc_scalable.cc
-// in the scalable form) or an fsm (c_fsm_run.cc), on the skeleton they share (c_run_writer.h).
+// run function (c_source.cc), what of both depends on the engine's form (c_form.h, c_forms.cc),
+// and the run function of an sfc (c_sfc_run.cc, or c_sfc_scalable.cc in the scalable form) or an
+// fsm (c_fsm_run.cc), on the skeleton they share (c_run_writer.h).
 #pragma once
 
 #include "c_context.h"

@@ -1,5 +1,7 @@
 #include "c_expr.h"
 
+#include "c_form.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -310,7 +312,7 @@ private:
     std::string obj, text;
     for (std::size_t k = 0; k < path.size(); ++k) {
       if (!c) return {"false"};  // a path the validator let through into nothing: never active
-      if (k == 0 && at_start_ && from_ && (c_.fsm || c_.sequential())) {
+      if (k == 0 && at_start_ && from_ && c_.form().one_active()) {
         // The transition is tried only in state `from`: the first level is known (and testing
         // the state twice would be an overlapping comparison to clang).
         if (path[0] != from_) return {fmt::format("false /* {}: not in {} */", what(e), c_.place(path[0]).name)};

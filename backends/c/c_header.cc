@@ -1,6 +1,7 @@
 // engine.h: everything the encapsulating code and the robot library need, and nothing else.
 #include "c_emit.h"
 #include "c_expr.h"
+#include "c_form.h"
 #include "naming/naming.h"
 
 #include <fmt/format.h>
@@ -68,31 +69,8 @@ void state_struct(CodeWriter &w, const Engine &c) {
     w.line("/* The state of the instance of {} run by {} (engine.c only uses it). */", c.chart.name, c.owner);
   }
   auto fields = w.block(fmt::format("{} {{", c.root ? "struct " + c.type : c.struct_type), "};");
-  std::vector<std::pair<std::string, std::string>> rows;
-  if (c.fsm) {
-    rows.emplace_back(fmt::format("{} {};", c.place_type, c.state),
-                      fmt::format("the current state, a {}_<state>", c.type));
-    rows.emplace_back(fmt::format("int {};", c.status), "0 running, 1 succeeded, -1 failed");
-  } else if (c.sequential()) {
-    rows.emplace_back(fmt::format("{} {};", uint_type(c.layout.index_bits), c.current),
-                      fmt::format("the one active place, a {}_<place>", c.type));
-  } else if (c.sparse()) {
-    const Layout &l = c.layout;
-    rows.emplace_back(fmt::format("{} {}[{}];", uint_type(l.counter_bits), c.av, c.count_text()),
-                      l.activation.bounded
-                          ? fmt::format("activation counter of each place (never above {})", l.activation.place)
-                          : "activation counter of each place (saturates)");
-    rows.emplace_back(fmt::format("uint32_t {}[{}];", c.active, l.active.words()),
-                      "the active places: bits, and summary levels of them");
-    if (!l.place_driven)
-      rows.emplace_back(fmt::format("uint32_t {}[{}];", c.candidates, l.candidates.words()),
-                        "the transitions to try in a tick (empty between ticks)");
-  } else {
-    rows.emplace_back(fmt::format("{} {}[{}];", c.readable_counter(), c.av, c.count_text()),
-                      c.layout.activation.bounded
-                          ? fmt::format("activation counter of each place (never above {})", c.layout.activation.place)
-                          : "activation counter of each place");
-  }
+  FieldRows rows;
+  c.form().fields(c, rows);
   for (model::PlaceId p : c.chart.places.ids())
     if (c.place(p).timed)
       rows.emplace_back(fmt::format("uint32_t {};", c.timer_field[p]),
@@ -185,18 +163,8 @@ void api(CodeWriter &w, const Engine &c) {
            c.chart.period_ms);
   else w.line("/* One tick ({}). */", c.fsm ? "docs/language.md 7" : "docs/language.md 5.1");
   w.line("void {0}_run({0} *m);", t);
-  if (c.fsm) {
-    w.line("/* 1 if `place` is the current state, else 0. */");
-    w.line("unsigned {0}_activation(const {0} *m, int place);", t);
-    w.line("/* The current state's number, a {}_<state> (an int, as the language's C API has it). */", t);
-    w.line("int {0}_state(const {0} *m);", t);
-    w.line("/* 0 while running, 1 once in a success state, -1 once in a failure state. */");
-    w.line("int {0}_status(const {0} *m);", t);
-    if (c.team()) team_api(w, c);
-  } else {
-    w.line("/* The activation counter of a place (a {}_<place>); 0 for a number out of range. */", t);
-    w.line("unsigned {0}_activation(const {0} *m, int place);", t);
-  }
+  c.form().accessor_prototypes(w, c);
+  if (c.team()) team_api(w, c);  // only an fsm is a team machine
   if (c.has_sub()) instance_api(w, c);
   if (c.has_context()) context_api(w, c);
   if (c.options.names) names_api(w, c);

@@ -2,6 +2,7 @@
 // accessors.
 #include "c_emit.h"
 #include "c_expr.h"
+#include "c_form.h"
 
 #include <fmt/format.h>
 
@@ -62,41 +63,7 @@ void init(CodeWriter &w, const Engine &c) {
   w.line("{}void {}({} *{})", c.linkage, c.init_fn, c.struct_type, c.self);
   auto body = w.block("{");
   if (c.team()) w.line("int {};", c.index);
-  if (c.fsm) {
-    for (model::PlaceId p : c.chart.places.ids())
-      if (c.place(p).initial) {
-        w.line("{} = {};", c.field(c.state), c.place_const[p]);
-        auto terminal = c.place(p).terminal;
-        w.line("{} = {};", c.field(c.status),
-               terminal == model::Terminal::Success   ? 1
-               : terminal == model::Terminal::Failure ? -1
-                                                      : 0);
-      }
-  } else if (c.sequential()) {
-    for (model::PlaceId p : c.chart.places.ids())
-      if (c.place(p).initial) w.line("{} = {};", c.field(c.current), c.place_const[p]);
-  } else if (c.sparse()) {
-    // Loops rather than a line per place: a large chart has few initial places.
-    w.line("uint32_t {};", c.index);
-    {
-      auto each = w.block(fmt::format("for ({0} = 0; {0} < (uint32_t){1}; ++{0}) {{", c.index, c.place_count));
-      w.line("{}[{}] = 0;", c.field(c.av), c.index);
-    }
-    auto clear = [&](const std::string &field, std::uint32_t words) {
-      auto each = w.block(fmt::format("for ({0} = 0; {0} < {1}u; ++{0}) {{", c.index, words));
-      w.line("{}[{}] = 0u;", c.field(field), c.index);
-    };
-    clear(c.active, c.layout.active.words());
-    if (!c.layout.place_driven) clear(c.candidates, c.layout.candidates.words());
-    for (model::PlaceId p : c.chart.places.ids())
-      if (c.place(p).initial) {
-        w.line("{} = 1;", c.av_of(p));
-        w.line("{}({}, {}, {}u, {});", c.insert_fn, c.field(c.active), c.active_levels, c.layout.active.levels(),
-               c.place_const[p]);
-      }
-  } else {
-    for (model::PlaceId p : c.chart.places.ids()) w.line("{} = {};", c.av_of(p), c.place(p).initial ? 1 : 0);
-  }
+  c.form().init(w, c);
   for (model::PlaceId p : c.chart.places.ids())
     if (c.place(p).timed) w.line("{} = 0;", c.timer_of(p));
   if (c.needs_started) w.line("{} = false;", c.field(c.started));
@@ -116,13 +83,6 @@ void init(CodeWriter &w, const Engine &c) {
     if (c.sub[p])
       w.line("{}(&{}); /* the instance of {} run by {} */", c.sub[p]->init_fn, c.field(c.sub_field[p]),
              c.sub[p]->chart.name, c.place(p).name);
-}
-
-/// The run function in the engine form the layout chose for this chart (or instance).
-void run_function(CodeWriter &w, const Engine &c) {
-  if (c.fsm) emit_fsm_run(w, c);
-  else if (c.readable()) emit_sfc_run(w, c);
-  else emit_scalable_sfc_run(w, c);
 }
 
 /// An instance's stop (docs/language.md, "Sub-charts"): for each active place in declaration order, the stop of
@@ -158,17 +118,14 @@ void instance(CodeWriter &w, const Engine &c) {
   w.line("/* ---- The instance of {} run by {} (its enumerations are in the header, with its struct) */", c.chart.name,
          c.owner);
   w.blank();
-  if (c.sparse()) {
-    emit_scalable_helpers(w, c);
-    w.blank();
-  }
+  c.form().helpers(w, c);
   init(w, c);
   w.blank();
   if (c.has_stop()) {
     stop(w, c);
     w.blank();
   }
-  run_function(w, c);
+  c.form().run(w, c);
   w.blank();
 }
 
@@ -217,13 +174,10 @@ void instance_activation(CodeWriter &w, const Engine &c) {
     // assigning a conditional expression's narrow unsigned to the wider result.
     w.line("case {}:", s.instance_const);
     auto in_case = w.indented();
-    std::string test = s.fsm            ? fmt::format("(int){} == place", s.member(member, s.state))
-                       : s.sequential() ? fmt::format("(place >= 0) && (place < (int){}) && ((int){} == place)",
-                                                      s.place_count, s.member(member, s.current))
-                                        : fmt::format("(place >= 0) && (place < (int){})", s.place_count);
+    const ActivationRead read = s.form().activation(s, member);
     {
-      auto in_it = w.block(fmt::format("if ({}) {{", test));
-      w.line("value = {};", s.fsm || s.sequential() ? "1u" : s.member(member, s.av) + "[place]");
+      auto in_it = w.block(fmt::format("if ({}) {{", read.test));
+      w.line("value = {};", read.value);
     }
     w.line("break;");
   });
@@ -241,27 +195,14 @@ void accessors(CodeWriter &w, const Engine &c) {
   w.line("unsigned {0}_activation(const {0} *{1}, int place)", t, m);
   {
     auto body = w.block("{");
-    if (c.fsm) w.line("return ((int){} == place) ? 1u : 0u;", c.field(c.state));
-    else if (c.sequential())
-      w.line("return ((place >= 0) && (place < (int){}) && ((int){} == place)) ? 1u : 0u;", c.place_count,
-             c.field(c.current));
-    else w.line("return ((place >= 0) && (place < (int){})) ? {}[place] : 0u;", c.place_count, c.field(c.av));
+    const ActivationRead read = c.form().activation(c, "");
+    w.line("return ({}) ? {} : 0u;", read.test, read.value);
   }
   if (c.has_sub()) {
     w.blank();
     instance_activation(w, c);
   }
-  if (!c.fsm) return;
-  w.blank();
-  w.line("int {0}_state(const {0} *{1})", t, m);
-  {
-    auto body = w.block("{");
-    w.line("return (int){};", c.field(c.state));
-  }
-  w.blank();
-  w.line("int {0}_status(const {0} *{1})", t, m);
-  auto body = w.block("{");
-  w.line("return {};", c.field(c.status));
+  c.form().accessors(w, c);
 }
 
 /// --context: X_set_context and X_context (docs/c-engine.md "Instance context"). Each instance
@@ -341,17 +282,14 @@ void emit_source(const Engine &c, std::ostream &out) {
     w.line("/* ---- The compiled chart, {} */", c.chart.name);
     w.blank();
   }
-  if (c.sparse()) {
-    emit_scalable_helpers(w, c);
-    w.blank();
-  }
+  c.form().helpers(w, c);
   init(w, c);
   w.blank();
   if (c.team()) {
     team_functions(w, c);
     w.blank();
   }
-  run_function(w, c);
+  c.form().run(w, c);
   w.blank();
   accessors(w, c);
   if (c.has_context()) {
