@@ -30,9 +30,6 @@ struct Engine {
   Layout layout;  ///< readable, sequential or sparse (c_layout.h)
   /// The writer of what depends on the engine's form (c_form.h): the fsm's, or the layout's.
   const FormWriter &form() const;
-  /// The scalable run writers' own tests (c_sfc_scalable.cc); everything else asks form().
-  bool sequential() const { return layout.form == Layout::Form::Sequential; }
-  bool sparse() const { return layout.form == Layout::Form::Sparse; }
   /// The readable form's counter type: as narrow as the proven bound allows, else GFE's unsigned.
   const char *readable_counter() const {
     return layout.activation.bounded ? uint_type(layout.counter_bits) : "unsigned";

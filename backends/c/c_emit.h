@@ -24,10 +24,12 @@ void transitions_enum(CodeWriter &w, const Engine &c);
 
 /// `void X_run(X *m) { ... }`: one tick, docs/language.md §5.1.
 void emit_sfc_run(CodeWriter &w, const Engine &c);
-/// The scalable form of an sfc (c_layout.h): its file-local helpers (before _init), and its
-/// run function, one tick exactly as docs/language.md §5.1 says.
-void emit_scalable_helpers(CodeWriter &w, const Engine &c);
-void emit_scalable_sfc_run(CodeWriter &w, const Engine &c);
+/// The scalable forms of an sfc (c_layout.h, c_sfc_scalable.cc): the sparse form's file-local
+/// helpers (before _init), and the run function of each, one tick exactly as docs/language.md
+/// §5.1 says.
+void emit_sparse_helpers(CodeWriter &w, const Engine &c);
+void emit_sequential_run(CodeWriter &w, const Engine &c);
+void emit_sparse_run(CodeWriter &w, const Engine &c);
 /// The scalable form's fixed functions, from the templates of c_set_functions.cc: the sets'
 /// lowest, next, insert and erase, and the sort of a tick's watched places (`type`: their C type).
 /// At file level (indentation 0).

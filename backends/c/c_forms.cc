@@ -98,7 +98,7 @@ public:
       if (c.place(p).initial) w.line("{} = {};", c.field(c.current), c.place_const[p]);
   }
 
-  void run(CodeWriter &w, const Engine &c) const override { emit_scalable_sfc_run(w, c); }
+  void run(CodeWriter &w, const Engine &c) const override { emit_sequential_run(w, c); }
 
   ActivationRead activation(const Engine &c, const std::string &obj) const override {
     return {fmt::format("{} && ((int){} == place)", in_range(c), c.member(obj, c.current)), "1u"};
@@ -191,11 +191,11 @@ public:
   }
 
   void helpers(CodeWriter &w, const Engine &c) const override {
-    emit_scalable_helpers(w, c);
+    emit_sparse_helpers(w, c);
     w.blank();
   }
 
-  void run(CodeWriter &w, const Engine &c) const override { emit_scalable_sfc_run(w, c); }
+  void run(CodeWriter &w, const Engine &c) const override { emit_sparse_run(w, c); }
 
 protected:
   /// The snapshot is a bitset here: the constant as a number in the bit arithmetic (MISRA C:2012

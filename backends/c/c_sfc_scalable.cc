@@ -437,13 +437,10 @@ void sparse_helpers(CodeWriter &w, const Engine &c) {
 
 }  // namespace
 
-void emit_scalable_helpers(CodeWriter &w, const Engine &c) {
-  if (c.sparse()) sparse_helpers(w, c);
-}
+void emit_sparse_helpers(CodeWriter &w, const Engine &c) { sparse_helpers(w, c); }
 
-void emit_scalable_sfc_run(CodeWriter &w, const Engine &c) {
-  if (c.sequential()) SequentialRun(w, c).emit();
-  else SparseRun(w, c).emit();
-}
+void emit_sequential_run(CodeWriter &w, const Engine &c) { SequentialRun(w, c).emit(); }
+
+void emit_sparse_run(CodeWriter &w, const Engine &c) { SparseRun(w, c).emit(); }
 
 }  // namespace gfec::c_backend
