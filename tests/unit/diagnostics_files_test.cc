@@ -46,11 +46,12 @@ Case read_case(const fs::path &file) {
 }
 
 /// What gfec says about the case, run in the case's folder so file names stay as written: every
-/// located diagnostic line (source lines, carets and gutters left out) and the exit code.
+/// located diagnostic line (source lines, carets and gutters left out) and the exit code. The
+/// interface most cases share is found on the import path (tests/diagnostics/common/).
 std::string actual(const fs::path &file, const std::string &flags) {
   const std::string gfec = std::string(GFEC_BINARY_DIR) + "/gfec";
-  auto r = run_command("cd '" + file.parent_path().string() + "' && NO_COLOR=1 '" + gfec + "' --check" + flags + " '" +
-                       file.filename().string() + "' 2>&1");
+  auto r = run_command("cd '" + file.parent_path().string() + "' && NO_COLOR=1 '" + gfec + "' --check -I ../common" +
+                       flags + " '" + file.filename().string() + "' 2>&1");
   static const std::regex located(R"(^[^ :][^:]*:[0-9]+:[0-9]+: (error|warning|note): .*)");
   std::string out;
   std::istringstream in(r.out);
