@@ -1,9 +1,10 @@
 // The run function of an fsm: one tick exactly as docs/language.md §7 says. The state is one
-// number; the transitions form one if/else-if chain in declaration order, so at most one fires
-// and only those leaving the current state evaluate their condition. Above kSplitAbovePlaces
-// states each part of the tick is a switch on the state instead, written in parts as the
-// sequential sfc form's are (c_switch_run.h): a chain of 10,000 tests in one function took
-// gcc -O2 24 s and 557 MB, and each tick walked the chain (docs/performance.md).
+// number. In the readable form the transitions form one if/else-if chain in declaration order,
+// so at most one fires and only those leaving the current state evaluate their condition. The
+// scalable form (`auto` above kReadableMaxPlaces states) makes each part of the tick a switch on
+// the state instead, split into parts above kSplitAbovePlaces states as the sequential sfc
+// form's are (c_switch_run.h): a tick no longer tests the state once per transition, and a chain
+// of 10,000 tests in one function took gcc -O2 24 s and 557 MB (docs/performance.md).
 #include "c_emit.h"
 #include "c_switch_run.h"
 
@@ -60,8 +61,12 @@ private:
   }
   /// Entering a terminal state also sets the status: its case moves itself.
   bool moves_by_table(model::PlaceId to) const override { return c_.place(to).terminal == model::Terminal::None; }
-  /// A state as the number a switch's part takes (the parts' parameter type).
-  std::string number(const std::string &state) const { return fmt::format("({}){}", index_type(), state); }
+  /// The scalable form (c_layout.h): each part of the tick a switch on the state, not tests.
+  bool switched() const { return c_.layout.form == Layout::Form::Sequential; }
+  /// A state as a switch takes it: as it is, or as the number a part takes (its parameter type).
+  std::string number(const std::string &state) const {
+    return split() ? fmt::format("({}){}", index_type(), state) : state;
+  }
 
   void locals() {
     declarations();
@@ -69,11 +74,11 @@ private:
   }
 
   /// The conditions are rendered first: the temporaries they need belong to the whole update
-  /// (the transitions are one if/else-if chain), declared at the top of its block. The split
-  /// form renders them in the cases, and needs only what the update part says.
+  /// (the transitions are one if/else-if chain), declared at the top of its block. The switches
+  /// render them in the cases; split, the tick needs what the update part says.
   void declarations() {
-    if (split()) {
-      if (c_.chart.transitions.empty()) return;
+    if (switched()) {
+      if (c_.chart.transitions.empty() || !split()) return;
       section("");
       w_.line("bool {}; /* the current state's update part says that its transition fired */", c_.fire);
       return;
@@ -97,7 +102,7 @@ private:
   void count_time() {
     if (!c_.has_timers) return;
     section("/* Count the ticks of the current state, if it has a timer */");
-    if (split()) {
+    if (switched()) {
       place_switch(time_switch(), number(state()));
       return;
     }
@@ -120,7 +125,7 @@ private:
     if (c_.chart.transitions.empty()) return;
     section("/* Perform state update: the first transition leaving the current state whose condition");
     w_.line("   holds, in declaration order (one per tick) */");
-    if (split()) {
+    if (switched()) {
       place_switch(update_switch(), number(state()));
       return;
     }
@@ -160,14 +165,14 @@ private:
               c_.field(c_.state));
       w_.line("{} = {};", c_.field(c_.state), c_.from);
     }
-    if (split()) {
+    if (switched()) {
       PlaceSwitch exits = exit_switch();
       if (any(exits)) place_switch(exits, number(c_.from));
     } else {
       exit_blocks([this](model::PlaceId p) { return fmt::format("{} == {}", c_.from, c_.place_const[p]); });
     }
     if (swap) w_.line("{} = {};", c_.field(c_.state), c_.to);
-    if (split()) {
+    if (switched()) {
       PlaceSwitch entries = entry_switch();
       if (any(entries)) place_switch(entries, number(state()));
     } else {
@@ -197,7 +202,7 @@ private:
   void hook_calls() {
     w_.line("{}({}, {}, false);", c_.activated_fn, c_.self, c_.from);
     w_.line("{}({}, {}, true);", c_.activated_fn, c_.self, c_.field(c_.state));
-    if (split()) {
+    if (switched()) {
       place_switch(hook_switch(), number(state()));
       return;
     }
@@ -244,7 +249,7 @@ private:
     const char *comment = c_.has_sub()
                               ? "/* Perform the action of the current state, then one tick of the instance it runs */"
                               : "/* Perform the action of the current state */";
-    if (!split()) {
+    if (!switched()) {
       action_blocks(comment, [this](model::PlaceId p) { return in_state(p); });
       return;
     }

@@ -108,11 +108,15 @@ Layout plan_layout(const model::Chart &chart, EngineForm requested, std::vector<
       requested == EngineForm::Scalable ||
       (requested == EngineForm::Auto && chart.places.size() > kReadableMaxPlaces && (sequential || !concurrent));
   if (chart.kind == model::Chart::Kind::Fsm) {
-    // An fsm has one form; only its size decides whether its switches are split (c_switch_run.h).
-    if (chart.places.size() > kSplitAbovePlaces) {
-      l.index_bits = bits_for(chart.places.size());
-      l.part_places = kPartPlaces;
-    }
+    // One state is ever active: an fsm's scalable form is the sequential one, a switch on the
+    // state (c_switch_run.h). Its readable form, the chain of tests, costs a tick one test per
+    // transition before the one that fires, so `auto` leaves it above kReadableMaxPlaces states.
+    const bool switched = requested == EngineForm::Scalable ||
+                          (requested == EngineForm::Auto && chart.places.size() > kReadableMaxPlaces);
+    if (!switched) return l;
+    l.form = Layout::Form::Sequential;
+    l.index_bits = bits_for(chart.places.size());
+    if (chart.places.size() > kSplitAbovePlaces) l.part_places = kPartPlaces;
     return l;
   }
   if (!scalable || chart.kind != model::Chart::Kind::Sfc) return l;

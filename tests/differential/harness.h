@@ -34,7 +34,7 @@ struct Case {
 };
 
 /// Whether the case's engine is written in the scalable form (docs/c-engine.md) rather than the
-/// readable one; an fsm has one form whatever this says.
+/// readable one (an fsm's scalable form: a switch on the state).
 bool scalable_form(const Case &c);
 
 enum class Verdict {

@@ -118,7 +118,7 @@ int main(int argc, char **argv) {
   std::vector<Case> all(static_cast<std::size_t>(cases));
   std::vector<Case *> ready;
   std::vector<Failure> failures;
-  int undefined = 0, invalid = 0, fsm = 0, teams = 0, generated = 0, scalable = 0, hierarchical = 0;
+  int undefined = 0, invalid = 0, fsm = 0, teams = 0, generated = 0, scalable = 0, scalable_fsm = 0, hierarchical = 0;
   for (int k = 0; k < cases; ++k) {
     if (only >= 0 && k != only) continue;
     std::seed_seq s{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32),
@@ -135,6 +135,7 @@ int main(int argc, char **argv) {
     ++generated;
     c.id = k;
     scalable += !options.fsm && scalable_form(c);
+    scalable_fsm += options.fsm && scalable_form(c);
     c.chart = random_chart(rng, k, options);
     c.trace = random_trace(rng, c.chart);
     // A hierarchical program: the root has a place or state that runs a sub-chart.
@@ -185,10 +186,10 @@ int main(int argc, char **argv) {
 
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::cout << fmt::format(
-      "gfec_differential: seed {}: {} random charts ({} sfc, {} of them in the scalable form, {} fsm, {} of them team "
-      "machines; {} hierarchical); {} compared under {} builds "
+      "gfec_differential: seed {}: {} random charts ({} sfc, {} of them in the scalable form, {} fsm, {} of them in "
+      "the scalable form and {} team machines; {} hierarchical); {} compared under {} builds "
       "({} engine runs){}, {} skipped for undefined behaviour, {} rejected by gfec; {} failures; {:.0f} s\n",
-      seed, generated, generated - fsm, scalable, fsm, teams, hierarchical, ready.size(), configs.size(),
+      seed, generated, generated - fsm, scalable, fsm, scalable_fsm, teams, hierarchical, ready.size(), configs.size(),
       ready.size() * configs.size(), lint ? " and cppcheck" : "", undefined, invalid, failures.size(), seconds);
   // Shrink the first failures (one per case: the same bug tends to fail every build).
   std::vector<int> shown;

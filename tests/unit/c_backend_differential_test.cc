@@ -325,12 +325,13 @@ TEST_CASE("c engine: the split sequential form of a large chart agrees with the 
   check_forms("large.sfc", {{"large.sfc", text}}, 3, {EngineForm::Scalable});
 }
 
-TEST_CASE("c engine: the split form of a large fsm agrees with the interpreter", "[c_backend][run][differential]") {
-  // Above kSplitAbovePlaces states each part of an fsm's tick is a switch on the state, written
-  // in parts called through tables (docs/c-engine.md, "Large charts"); hooks on.
+TEST_CASE("c engine: an fsm's switches, whole and in parts, agree with the interpreter",
+          "[c_backend][run][differential]") {
+  // The scalable form of an fsm is a switch on the state; above kSplitAbovePlaces states each
+  // switch is written in parts called through tables (docs/c-engine.md, "Large fsms"); hooks on.
   const int states = static_cast<int>(gfec::c_backend::kSplitAbovePlaces) + 100;
   std::string text = large_fsm(states);
-  auto compiled = compile_chart({{"huge.fsm", text}}, "huge.fsm", "engine.c", true, EngineForm::Readable);
+  auto compiled = compile_chart({{"huge.fsm", text}}, "huge.fsm", "engine.c", true, EngineForm::Auto);
   INFO(compiled->errors);
   REQUIRE(!compiled->diag.has_errors());
   REQUIRE(!compiled->files.empty());
@@ -342,10 +343,12 @@ TEST_CASE("c engine: the split form of a large fsm agrees with the interpreter",
   CHECK(engine.find("m->status = 1;") != std::string::npos);
   CHECK(engine.find("m->status = -1;") != std::string::npos);
   CHECK(engine.find("else if (") == std::string::npos);  // no chain of tests on the state
-  check_forms("huge.fsm", {{"huge.fsm", text}}, 4, {EngineForm::Readable});
-  // At the size the split begins, the chain stays.
-  std::string small = large_fsm(static_cast<int>(gfec::c_backend::kSplitAbovePlaces));
-  auto chain = compile_chart({{"small.fsm", small}}, "small.fsm", "engine.c", true, EngineForm::Readable);
-  REQUIRE(!chain->diag.has_errors());
-  CHECK(chain->files.front().contents.find("_parts[") == std::string::npos);
+  check_forms("huge.fsm", {{"huge.fsm", text}}, 4, {EngineForm::Scalable});
+  // At the size the split begins: one switch per part of the tick, no parts.
+  std::string whole = large_fsm(static_cast<int>(gfec::c_backend::kSplitAbovePlaces));
+  auto one = compile_chart({{"whole.fsm", whole}}, "whole.fsm", "engine.c", true, EngineForm::Auto);
+  REQUIRE(!one->diag.has_errors());
+  CHECK(one->files.front().contents.find("_parts[") == std::string::npos);
+  CHECK(one->files.front().contents.find("switch (m->state) {") != std::string::npos);
+  check_forms("whole.fsm", {{"whole.fsm", whole}}, 2, {EngineForm::Scalable});
 }

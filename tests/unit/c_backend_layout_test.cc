@@ -51,23 +51,28 @@ TEST_CASE("c layout: the sequential form is split in parts only above a size", "
   CHECK(layout_of(above, EngineForm::Readable).part_places == 0);
 }
 
-TEST_CASE("c layout: an fsm keeps its one form, split above the same size whatever form is asked",
-          "[c_backend][layout]") {
+TEST_CASE("c layout: an fsm's scalable form is the sequential one, split above the same size", "[c_backend][layout]") {
   auto chain = [](int n) {
     ChartBuilder b("Chain", model::Chart::Kind::Fsm);
     for (int i = 0; i < n; ++i) b.place(fmt::format("S{}", i), i == 0);
     for (int i = 0; i + 1 < n; ++i) b.transition({fmt::format("S{}", i)}, {fmt::format("S{}", i + 1)});
     return b;
   };
+  auto small = chain(static_cast<int>(gfec::c_backend::kReadableMaxPlaces));
+  CHECK(layout_of(small).form == Layout::Form::Readable);
+  CHECK(layout_of(small, EngineForm::Scalable).form == Layout::Form::Sequential);
   auto at = chain(static_cast<int>(gfec::c_backend::kSplitAbovePlaces));
+  CHECK(layout_of(at).form == Layout::Form::Sequential);
   CHECK(layout_of(at).part_places == 0);
-  CHECK(layout_of(at, EngineForm::Scalable).form == Layout::Form::Readable);
+  CHECK(layout_of(at, EngineForm::Readable).form == Layout::Form::Readable);
   auto above = chain(static_cast<int>(gfec::c_backend::kSplitAbovePlaces) + 1);
-  for (EngineForm f : {EngineForm::Auto, EngineForm::Readable, EngineForm::Scalable}) {
+  for (EngineForm f : {EngineForm::Auto, EngineForm::Scalable}) {
     Layout l = layout_of(above, f);
+    CHECK(l.form == Layout::Form::Sequential);
     CHECK(l.part_places == gfec::c_backend::kPartPlaces);
     CHECK(l.index_bits == 16);
   }
+  CHECK(layout_of(above, EngineForm::Readable).part_places == 0);
 }
 
 TEST_CASE("c layout: a ring with one token is sequential and 1-bounded", "[c_backend][layout]") {

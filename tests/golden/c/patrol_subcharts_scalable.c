@@ -94,53 +94,71 @@ static void Patrol_Search_run(struct Patrol_Search *m)
 
         /* Perform state update: the first transition leaving the current state whose condition
            holds, in declaration order (one per tick) */
-        /* T0: Go -> Grab */
+        switch (m->state) {
+        case Patrol_Search_Go:
+            /* T0: Go -> Grab */
 #line 25 "patrol_subcharts_scalable.sfc"
-        if ((m->state == Patrol_Search_Go) && (Arrived())) {
-#line 101 "patrol_subcharts_scalable.c"
-            m->state = Patrol_Search_Grab;
-        }
-        /* T1: Grab -> Got */
-#line 26 "patrol_subcharts_scalable.sfc"
-        else if ((m->state == Patrol_Search_Grab) && (Holding() && (m->Grab.current == Patrol_Search_Grab_Closed))) {
-#line 107 "patrol_subcharts_scalable.c"
-            m->state = Patrol_Search_Got;
-            m->status = 1;
-        }
-        /* T2: Go -> Lost */
+            if ((Arrived())) {
+#line 103 "patrol_subcharts_scalable.c"
+                m->state = Patrol_Search_Grab;
+                break;
+            }
+            /* T2: Go -> Lost */
 #line 27 "patrol_subcharts_scalable.sfc"
-        else if ((m->state == Patrol_Search_Go) && (Stuck())) {
-#line 114 "patrol_subcharts_scalable.c"
-            m->state = Patrol_Search_Lost;
-            m->status = -1;
-        }
-        else {
-            /* no transition fires: the state stays */
+            if ((Stuck())) {
+#line 110 "patrol_subcharts_scalable.c"
+                m->state = Patrol_Search_Lost;
+                m->status = -1;
+                break;
+            }
+            break;
+        case Patrol_Search_Grab:
+            /* T1: Grab -> Got */
+#line 26 "patrol_subcharts_scalable.sfc"
+            if ((Holding() && (m->Grab.current == Patrol_Search_Grab_Closed))) {
+#line 120 "patrol_subcharts_scalable.c"
+                m->state = Patrol_Search_Got;
+                m->status = 1;
+                break;
+            }
+            break;
+        default:
+            break;
         }
 
         /* Leave the old state, enter the new one */
         if (m->state != from) {
-            /* exit Grab */
-            if (from == Patrol_Search_Grab) {
+            switch (from) {
+            case Patrol_Search_Grab:
                 Patrol_Search_Grab_stop(&m->Grab); /* stop the instance of Claw first */
+                break;
+            default:
+                break;
             }
-            /* entry Grab */
-            if (m->state == Patrol_Search_Grab) {
+            switch (m->state) {
+            case Patrol_Search_Grab:
                 Patrol_Search_Grab_init(&m->Grab); /* start the instance of Claw */
+                break;
+            default:
+                break;
             }
         }
 
         /* Perform the action of the current state, then one tick of the instance it runs */
-        if (m->state == Patrol_Search_Go) {
+        switch (m->state) {
+        case Patrol_Search_Go:
 #line 21 "patrol_subcharts_scalable.sfc"
             DriveToItem();
-#line 138 "patrol_subcharts_scalable.c"
-        }
-        if (m->state == Patrol_Search_Grab) {
+#line 153 "patrol_subcharts_scalable.c"
+            break;
+        case Patrol_Search_Grab:
 #line 22 "patrol_subcharts_scalable.sfc"
             PickUp();
-#line 143 "patrol_subcharts_scalable.c"
+#line 158 "patrol_subcharts_scalable.c"
             Patrol_Search_Grab_run(&m->Grab); /* one tick of the instance of Claw */
+            break;
+        default:
+            break;
         }
     }
 }
@@ -163,7 +181,7 @@ static void Patrol_Retry_Grab_stop(struct Patrol_Retry_Grab *m)
         /* exit Open */
 #line 15 "patrol_subcharts_scalable.sfc"
         Squeeze();
-#line 167 "patrol_subcharts_scalable.c"
+#line 185 "patrol_subcharts_scalable.c"
     }
 }
 
@@ -177,7 +195,7 @@ static void Patrol_Retry_Grab_run(struct Patrol_Retry_Grab *m)
         /* entry Open */
 #line 15 "patrol_subcharts_scalable.sfc"
         Lift();
-#line 181 "patrol_subcharts_scalable.c"
+#line 199 "patrol_subcharts_scalable.c"
     }
 
     /* Perform state update: the transitions leaving the active place, in declaration order;
@@ -187,7 +205,7 @@ static void Patrol_Retry_Grab_run(struct Patrol_Retry_Grab *m)
         /* T0: Open -> Closed */
 #line 17 "patrol_subcharts_scalable.sfc"
         if ((Holding())) {
-#line 191 "patrol_subcharts_scalable.c"
+#line 209 "patrol_subcharts_scalable.c"
             m->current = Patrol_Retry_Grab_Closed;
             break;
         }
@@ -202,7 +220,7 @@ static void Patrol_Retry_Grab_run(struct Patrol_Retry_Grab *m)
         case Patrol_Retry_Grab_Open:
 #line 15 "patrol_subcharts_scalable.sfc"
             Squeeze();
-#line 206 "patrol_subcharts_scalable.c"
+#line 224 "patrol_subcharts_scalable.c"
             break;
         default:
             break;
@@ -238,53 +256,71 @@ static void Patrol_Retry_run(struct Patrol_Retry *m)
 
         /* Perform state update: the first transition leaving the current state whose condition
            holds, in declaration order (one per tick) */
-        /* T0: Go -> Grab */
+        switch (m->state) {
+        case Patrol_Retry_Go:
+            /* T0: Go -> Grab */
 #line 25 "patrol_subcharts_scalable.sfc"
-        if ((m->state == Patrol_Retry_Go) && (Arrived())) {
-#line 245 "patrol_subcharts_scalable.c"
-            m->state = Patrol_Retry_Grab;
-        }
-        /* T1: Grab -> Got */
-#line 26 "patrol_subcharts_scalable.sfc"
-        else if ((m->state == Patrol_Retry_Grab) && (Holding() && (m->Grab.current == Patrol_Retry_Grab_Closed))) {
-#line 251 "patrol_subcharts_scalable.c"
-            m->state = Patrol_Retry_Got;
-            m->status = 1;
-        }
-        /* T2: Go -> Lost */
+            if ((Arrived())) {
+#line 265 "patrol_subcharts_scalable.c"
+                m->state = Patrol_Retry_Grab;
+                break;
+            }
+            /* T2: Go -> Lost */
 #line 27 "patrol_subcharts_scalable.sfc"
-        else if ((m->state == Patrol_Retry_Go) && (Stuck())) {
-#line 258 "patrol_subcharts_scalable.c"
-            m->state = Patrol_Retry_Lost;
-            m->status = -1;
-        }
-        else {
-            /* no transition fires: the state stays */
+            if ((Stuck())) {
+#line 272 "patrol_subcharts_scalable.c"
+                m->state = Patrol_Retry_Lost;
+                m->status = -1;
+                break;
+            }
+            break;
+        case Patrol_Retry_Grab:
+            /* T1: Grab -> Got */
+#line 26 "patrol_subcharts_scalable.sfc"
+            if ((Holding() && (m->Grab.current == Patrol_Retry_Grab_Closed))) {
+#line 282 "patrol_subcharts_scalable.c"
+                m->state = Patrol_Retry_Got;
+                m->status = 1;
+                break;
+            }
+            break;
+        default:
+            break;
         }
 
         /* Leave the old state, enter the new one */
         if (m->state != from) {
-            /* exit Grab */
-            if (from == Patrol_Retry_Grab) {
+            switch (from) {
+            case Patrol_Retry_Grab:
                 Patrol_Retry_Grab_stop(&m->Grab); /* stop the instance of Claw first */
+                break;
+            default:
+                break;
             }
-            /* entry Grab */
-            if (m->state == Patrol_Retry_Grab) {
+            switch (m->state) {
+            case Patrol_Retry_Grab:
                 Patrol_Retry_Grab_init(&m->Grab); /* start the instance of Claw */
+                break;
+            default:
+                break;
             }
         }
 
         /* Perform the action of the current state, then one tick of the instance it runs */
-        if (m->state == Patrol_Retry_Go) {
+        switch (m->state) {
+        case Patrol_Retry_Go:
 #line 21 "patrol_subcharts_scalable.sfc"
             DriveToItem();
-#line 282 "patrol_subcharts_scalable.c"
-        }
-        if (m->state == Patrol_Retry_Grab) {
+#line 315 "patrol_subcharts_scalable.c"
+            break;
+        case Patrol_Retry_Grab:
 #line 22 "patrol_subcharts_scalable.sfc"
             PickUp();
-#line 287 "patrol_subcharts_scalable.c"
+#line 320 "patrol_subcharts_scalable.c"
             Patrol_Retry_Grab_run(&m->Grab); /* one tick of the instance of Claw */
+            break;
+        default:
+            break;
         }
     }
 }
@@ -318,14 +354,14 @@ void Patrol_run(Patrol *m)
         /* T0: Search -> Home */
 #line 35 "patrol_subcharts_scalable.sfc"
         if (m->Search.status == 1) {
-#line 322 "patrol_subcharts_scalable.c"
+#line 358 "patrol_subcharts_scalable.c"
             m->current = Patrol_Home;
             break;
         }
         /* T1: Search -> Retry */
 #line 36 "patrol_subcharts_scalable.sfc"
         if (((m->Search.status == -1) || (m->timer_Search >= 3000u /* 30000ms */))) {
-#line 329 "patrol_subcharts_scalable.c"
+#line 365 "patrol_subcharts_scalable.c"
             m->current = Patrol_Retry;
             break;
         }
@@ -334,7 +370,7 @@ void Patrol_run(Patrol *m)
         /* T2: Retry -> Home */
 #line 37 "patrol_subcharts_scalable.sfc"
         if (((m->Retry.status == 1) || ((m->Retry.state == Patrol_Retry_Grab) && Late()))) {
-#line 338 "patrol_subcharts_scalable.c"
+#line 374 "patrol_subcharts_scalable.c"
             m->current = Patrol_Home;
             break;
         }
@@ -380,13 +416,13 @@ void Patrol_run(Patrol *m)
     case Patrol_Search:
 #line 32 "patrol_subcharts_scalable.sfc"
         Beep();
-#line 384 "patrol_subcharts_scalable.c"
+#line 420 "patrol_subcharts_scalable.c"
         Patrol_Search_run(&m->Search); /* one tick of the instance of Fetch */
         break;
     case Patrol_Home:
 #line 33 "patrol_subcharts_scalable.sfc"
         Park();
-#line 390 "patrol_subcharts_scalable.c"
+#line 426 "patrol_subcharts_scalable.c"
         break;
     case Patrol_Retry:
         Patrol_Retry_run(&m->Retry); /* one tick of the instance of Fetch */
