@@ -26,8 +26,8 @@ for spec in "ring 1000 Ring sfc" "ring 10000 Ring sfc" "chain 1000 Chain fsm" "c
   "$gen" chart "$kind" "$n" > "$dir/chart.$ext"
   "$gfec" "$dir/chart.$ext" -o "$dir/engine.c"
   if grep -q "_update_parts\[" "$dir/engine.c"; then form=parts
-  elif [[ $ext == fsm ]]; then form=chain
-  else form=switch; fi
+  elif grep -q "switch (m->" "$dir/engine.c"; then form=switch
+  else form=chain; fi
   best=""
   for _ in 1 2 3; do
     /usr/bin/time -f "%e %U %M" -o "$dir/time" "$cc" -O2 -std=c99 -c "$dir/engine.c" -o "$dir/engine.o"
