@@ -181,7 +181,7 @@ void SwitchRun::switch_parts(const PlaceSwitch &s) {
         parts);
   if (!s.moves) return;
   w_.line("/* The place each place moves to when its update part says that its transition fired (a place");
-  w_.line("   with several transitions to try moves itself, and its entry is its own) */");
+  w_.line("   that moves itself, with several transitions to try or into a terminal state, has its own) */");
   std::vector<std::string> next;
   for (PlaceId p : places()) {
     const PlaceId to = single_move(p);

@@ -200,8 +200,8 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
   app.add_option("--chart", o.chart, "The chart or plan to compile when a file declares several")->type_name("NAME");
   app.add_flag("--no-line-directives", no_line, "Do not write #line directives pointing back to the chart");
   app.add_option("--engine", o.engine,
-                 "C engine form: auto (readable up to 64 places, or when a quarter of the places can be active at "
-                 "once), readable or scalable")
+                 "C engine form: auto (readable up to 64 places or states, or when a quarter of an sfc's places can "
+                 "be active at once), readable or scalable")
       ->check(CLI::IsMember({"auto", "readable", "scalable"}));
   bool context = false;
   std::string context_type;
