@@ -99,7 +99,9 @@ Layout plan_layout(const model::Chart &chart, EngineForm requested, std::vector<
   // The bound is a fact of the model, proven once by the analyses (analysis/activation_bounds.h).
   l.activation = chart.activation;
   l.counter_bits = l.activation.bounded ? bits_for(l.activation.place) : 32;
-  const bool sequential = is_sequential(chart);
+  // One state of an fsm is ever active: its scalable form is the sequential one, a switch on the
+  // state (c_switch_run.h), which spares a tick the chain's one test per transition.
+  const bool sequential = chart.kind == model::Chart::Kind::Fsm || is_sequential(chart);
   // `auto`: the scalable form pays per active place for its bookkeeping, so it wins only where
   // little of a large chart is active at once; a chart that keeps a quarter of its places or more
   // active (as many parallel branches do) runs faster in the readable form.
@@ -107,19 +109,7 @@ Layout plan_layout(const model::Chart &chart, EngineForm requested, std::vector<
   bool scalable =
       requested == EngineForm::Scalable ||
       (requested == EngineForm::Auto && chart.places.size() > kReadableMaxPlaces && (sequential || !concurrent));
-  if (chart.kind == model::Chart::Kind::Fsm) {
-    // One state is ever active: an fsm's scalable form is the sequential one, a switch on the
-    // state (c_switch_run.h). Its readable form, the chain of tests, costs a tick one test per
-    // transition before the one that fires, so `auto` leaves it above kReadableMaxPlaces states.
-    const bool switched = requested == EngineForm::Scalable ||
-                          (requested == EngineForm::Auto && chart.places.size() > kReadableMaxPlaces);
-    if (!switched) return l;
-    l.form = Layout::Form::Sequential;
-    l.index_bits = bits_for(chart.places.size());
-    if (chart.places.size() > kSplitAbovePlaces) l.part_places = kPartPlaces;
-    return l;
-  }
-  if (!scalable || chart.kind != model::Chart::Kind::Sfc) return l;
+  if (!scalable) return l;
   l.form = sequential ? Layout::Form::Sequential : Layout::Form::Sparse;
   l.index_bits = bits_for(chart.places.size());
   if (l.form == Layout::Form::Sequential) {
