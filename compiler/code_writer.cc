@@ -22,10 +22,16 @@ void CodeWriter::flush() {
 }
 
 void CodeWriter::put_line(std::string_view text) {
-  if (!text.empty()) out_.append(static_cast<std::size_t>(depth_) * 4, ' ');
+  const std::size_t begin = begin_line();
   out_.append(text);
+  end_line(begin);
+}
+
+void CodeWriter::end_line(std::size_t begin) {
+  if (out_.size() == begin) out_.resize(begin - static_cast<std::size_t>(depth_) * 4);  // no trailing blanks
+  else lines_ += static_cast<unsigned>(std::count(out_.begin() + static_cast<std::ptrdiff_t>(begin), out_.end(), '\n'));
+  ++lines_;
   out_.push_back('\n');
-  lines_ += 1 + static_cast<unsigned>(std::count(text.begin(), text.end(), '\n'));
   maybe_flush();
 }
 
@@ -45,7 +51,8 @@ void CodeWriter::line_from(const SourceManager &sources, const SourceRange &rang
   if (!line_directives_ || !sources.knows(range.file)) return;
   const SourceFile &file = sources.file(range.file);
   // A directive at column 0, whatever the indentation, as compilers and people expect.
-  out_ += fmt::format("#line {} {}\n", file.line_col(range.begin).line, c_string_literal(file.path()));
+  fmt::format_to(std::back_inserter(out_), "#line {} {}\n", file.line_col(range.begin).line,
+                 c_string_literal(file.path()));
   ++lines_;
   pointing_away_ = true;
 }
@@ -53,7 +60,7 @@ void CodeWriter::line_from(const SourceManager &sources, const SourceRange &rang
 void CodeWriter::line_back() {
   if (!line_directives_ || !pointing_away_) return;
   // The directive names the line that follows it: lines_ + 2 in 1-based counting.
-  out_ += fmt::format("#line {} {}\n", lines_ + 2, c_string_literal(output_name_));
+  fmt::format_to(std::back_inserter(out_), "#line {} {}\n", lines_ + 2, c_string_literal(output_name_));
   ++lines_;
   pointing_away_ = false;
 }

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include <iosfwd>
+#include <iterator>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -30,8 +31,12 @@ public:
   void flush();
 
   /// One line of code at the current indentation.
+  /// Formatted straight into the buffer: an engine has a line or more per place, and a string
+  /// made for each and copied would be as many allocations.
   template <typename... Args> void line(fmt::format_string<Args...> format, Args &&...args) {
-    put_line(fmt::format(format, std::forward<Args>(args)...));
+    const std::size_t begin = begin_line();
+    fmt::format_to(std::back_inserter(out_), format, std::forward<Args>(args)...);
+    end_line(begin);
   }
   void line(std::string_view text) { put_line(text); }
   void blank();
@@ -89,6 +94,14 @@ private:
   }
 
   void put_line(std::string_view text);
+  /// A line in two halves, for text formatted in place: begin_line() indents and returns where
+  /// the text will start; end_line() takes the indentation back off a line left empty, counts
+  /// the lines written and ends the line.
+  std::size_t begin_line() {
+    out_.append(static_cast<std::size_t>(depth_) * 4, ' ');
+    return out_.size();
+  }
+  void end_line(std::size_t begin);
   /// After each line: past a block's worth, the buffer goes to the stream.
   void maybe_flush() {
     if (stream_ && out_.size() >= kBlock) flush();

@@ -36,10 +36,12 @@ void transitions_enum(CodeWriter &w, const Engine &c) {
   w.line(c.root ? "/* Its transitions, in declaration order: the numbers the observation hooks pass. */"
                 : "/* Its transitions, in declaration order. */");
   auto members = w.block("typedef enum {", fmt::format("}} {};", c.transition_type));
-  std::vector<std::pair<std::string, std::string>> rows;
+  // Written as the labels are made, not gathered first: a chart can have a million transitions.
+  std::size_t width = 0;
+  for (model::TransitionId t : c.chart.transitions.ids()) width = std::max(width, c.transition_const[t].size());
   for (model::TransitionId t : c.chart.transitions.ids())
-    rows.emplace_back(c.transition_const[t] + ",", transition_label(c, c.chart.transitions[t]));
-  aligned(w, rows);
+    w.line("{},{:<{}} /* {} */", c.transition_const[t], "", width - c.transition_const[t].size(),
+           transition_label(c, c.chart.transitions[t]));
   w.line("{}", c.transition_count);
 }
 

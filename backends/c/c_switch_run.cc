@@ -174,29 +174,30 @@ void SwitchRun::switch_parts(const PlaceSwitch &s) {
     }
     w_.blank();
   }
-  std::vector<std::string> parts;
-  for (std::size_t k = 0; k < n; ++k) parts.push_back(c_.part_fn(s.kind, k));
   table(fmt::format("static {} (*const {}[{}])({} *, {})", s.moves ? "bool" : "void", c_.part_table(s.kind), n,
                     c_.struct_type, index_type()),
-        parts);
+        n, [&](std::size_t k) { return c_.part_fn(s.kind, k); });
   if (!s.moves) return;
   w_.line("/* The place each place moves to when its update part says that its transition fired (a place");
   w_.line("   that moves itself, with several transitions to try or into a terminal state, has its own) */");
-  std::vector<std::string> next;
-  for (PlaceId p : places()) {
-    const PlaceId to = single_move(p);
-    next.push_back(constant(to ? to : p));
-  }
-  table(fmt::format("static const {} {}[{}]", state_type(), c_.part_next(), c_.chart.places.size()), next);
+  table(fmt::format("static const {} {}[{}]", state_type(), c_.part_next(), c_.chart.places.size()),
+        c_.chart.places.size(), [&](std::size_t k) {
+          const PlaceId p(k);
+          const PlaceId to = single_move(p);
+          return constant(to ? to : p);
+        });
 }
 
-void SwitchRun::table(const std::string &declaration, const std::vector<std::string> &items) {
+void SwitchRun::table(const std::string &declaration, std::size_t n,
+                      const std::function<std::string(std::size_t)> &item) {
   {
     auto rows = w_.block(fmt::format("{} = {{", declaration), "};");
     std::string row;
-    for (std::size_t k = 0; k < items.size(); ++k) {
-      row += (row.empty() ? "" : " ") + items[k] + (k + 1 < items.size() ? "," : "");
-      if (row.size() > 80 || k + 1 == items.size()) {
+    for (std::size_t k = 0; k < n; ++k) {
+      if (!row.empty()) row += ' ';
+      row += item(k);
+      if (k + 1 < n) row += ',';
+      if (row.size() > 80 || k + 1 == n) {
         w_.line(std::string_view(row));
         row.clear();
       }

@@ -73,7 +73,8 @@ private:
   void moves(const std::vector<model::TransitionId> &ts, const std::vector<std::string> &test);
   void switch_parts(const PlaceSwitch &s);
   /// `<declaration> = { <items> };`, the items several to a line.
-  void table(const std::string &declaration, const std::vector<std::string> &items);
+  /// `declaration = { item(0), ... item(n-1) };`, the items filled into lines of about 80 columns.
+  void table(const std::string &declaration, std::size_t n, const std::function<std::string(std::size_t)> &item);
 };
 
 }  // namespace gfec::c_backend
