@@ -146,6 +146,7 @@ public:
   void assign(std::size_t count, const V &value) { items_.assign(count, value); }
   void resize(std::size_t count, const V &value = V()) { items_.resize(count, value); }
   void push_back(V value) { items_.push_back(std::move(value)); }
+  void reserve(std::size_t count) { items_.reserve(count); }
   void clear() { items_.clear(); }
   bool empty() const { return items_.empty(); }
   std::size_t size() const { return items_.size(); }

@@ -33,6 +33,15 @@ public:
     return kNone;
   }
 
+  /// Room for `count` names in all without growing: a caller that knows how many names come
+  /// saves the rehashes, each a pass of scattered writes over a table that outgrows the cache.
+  /// Only ever grows, and to a power of two, so calling it again and again stays cheap.
+  void reserve(std::size_t count) {
+    std::size_t size = slots_.empty() ? 16 : slots_.size();
+    while (2 * count > size) size *= 2;
+    if (size > slots_.size()) rehash(size);
+  }
+
 private:
   // Each slot keeps its name's hash beside the position: a probe compares hashes and reads a
   // name (a cache miss into the table that owns it) only when they match, and growing the
@@ -45,9 +54,10 @@ private:
   static std::uint32_t hash(std::string_view name) {
     return static_cast<std::uint32_t>(std::hash<std::string_view>{}(name));
   }
-  void grow() {
+  void grow() { rehash(slots_.empty() ? 16 : 2 * slots_.size()); }
+  void rehash(std::size_t size) {
     const std::vector<Slot> old = std::move(slots_);
-    slots_.assign(old.empty() ? 16 : 2 * old.size(), Slot{});
+    slots_.assign(size, Slot{});
     const std::size_t mask = slots_.size() - 1;
     for (const Slot &s : old) {
       if (s.position == kNone) continue;

@@ -101,6 +101,9 @@ void name_globals(Engine &c, NameSpace &globals, const Engine *root) {
     globals.claim(c.place_name_fn);
     globals.claim(c.transition_name_fn);
   }
+  globals.reserve(c.chart.places.size() + c.chart.transitions.size());
+  c.place_const.reserve(c.chart.places.size());
+  c.transition_const.reserve(c.chart.transitions.size());
   for (const auto &p : c.chart.places) c.place_const.push_back(globals.take(t + "_" + p.name));
   for (const auto &tr : c.chart.transitions) c.transition_const.push_back(globals.take(t + "_" + tr.name));
   c.lowest_fn = globals.take(t + "_lowest");

@@ -93,6 +93,9 @@ public:
   void claim(const std::string &name) { record(name); }
   bool free(const std::string &name) const { return !contains(name) && free_outside(name); }
   std::string take(std::string name);
+  /// Room for `count` more names without rehashing (NameIndex::reserve): the C back end takes
+  /// one name a place and one a transition, two million for a large chart.
+  void reserve(std::size_t count) { index_.reserve(names_.size() + count); }
   /// Reserves the prefix of numbered temporaries (`gfec_t1`, `gfec_t2`, ...): `base`, with `_`
   /// appended while a name claimed or taken here (or outside) is the prefix followed by digits
   /// only. Names taken here afterwards never have that form either.

@@ -87,6 +87,8 @@ public:
     return declare(name, kind, symbol_index(id), diag);
   }
   const Symbol *find(std::string_view name) const;
+  /// Room for `count` more names (NameIndex::reserve).
+  void reserve(std::size_t count) { index_.reserve(symbols_.size() + count); }
   /// The symbols of the given kinds in declaration order: did-you-mean candidates.
   std::vector<const Symbol *> of(std::initializer_list<Sym> kinds) const;
 

@@ -150,7 +150,14 @@ void declare_names(Context &cx, ChartScope &s) {
   for (std::size_t i = 0; i < a.transitions.size(); ++i)
     if (a.transitions[i].named)
       decls.push_back({a.transitions[i].range.begin, static_cast<std::uint32_t>(i), What::Transition});
-  std::stable_sort(decls.begin(), decls.end(), [](const Decl &x, const Decl &y) { return x.begin < y.begin; });
+  // Each kind is in source order already: two stable merges put them all in source order in
+  // linear time, where a sort of two million declarations took n log n.
+  auto by_position = [](const Decl &x, const Decl &y) { return x.begin < y.begin; };
+  const auto values_begin = decls.begin() + static_cast<std::ptrdiff_t>(a.places.size());
+  const auto transitions_begin = values_begin + static_cast<std::ptrdiff_t>(a.values.size());
+  std::inplace_merge(decls.begin(), values_begin, transitions_begin, by_position);
+  std::inplace_merge(decls.begin(), transitions_begin, decls.end(), by_position);
+  s.names.reserve(decls.size());
   for (const Decl &d : decls) {
     switch (d.what) {
     case What::Place: declare_place(cx, s, a.places[d.index], model::PlaceId(d.index)); break;

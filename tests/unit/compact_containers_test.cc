@@ -115,10 +115,18 @@ TEST_CASE("NameIndex finds every name of a growing table, and nothing else") {
   NameIndex index;
   auto key = [&](std::uint32_t k) -> const std::string & { return names[k]; };
   CHECK(index.find("P0", key) == NameIndex::kNone);
+  index.reserve(0);  // on an empty index: still empty
+  CHECK(index.find("P0", key) == NameIndex::kNone);
   for (std::uint32_t k = 0; k < 5000; ++k) {
+    // Room made halfway (and a smaller reserve after it, which must not shrink): the names in
+    // the index move to their new slots and stay findable.
+    if (k == 2500) index.reserve(5000);
+    if (k == 2600) index.reserve(10);
     std::string name = "P" + std::to_string(k);
     CHECK(index.insert(name, k, key) == NameIndex::kNone);
     names.push_back(std::move(name));
+    if (k == 2500)
+      for (std::uint32_t j = 0; j <= k; ++j) CHECK(index.find("P" + std::to_string(j), key) == j);
   }
   for (std::uint32_t k = 0; k < 5000; ++k) CHECK(index.find("P" + std::to_string(k), key) == k);
   CHECK(index.find("P5000", key) == NameIndex::kNone);
