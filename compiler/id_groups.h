@@ -24,6 +24,8 @@ public:
     const T *end() const { return end_; }
     std::size_t size() const { return static_cast<std::size_t>(end_ - begin_); }
     bool empty() const { return begin_ == end_; }
+    const T &operator[](std::size_t k) const { return begin_[k]; }
+    const T &front() const { return *begin_; }
 
   private:
     const T *begin_;

@@ -206,13 +206,12 @@ private:
       place_switch(hook_switch(), number(state()));
       return;
     }
-    // By the state they leave: a scan of every transition for each state was quadratic (a chain
-    // of 120,000 states took 44 s; docs/performance.md, "Long fsms").
-    const IdGroups<model::PlaceId, model::TransitionId> leaving = model::transitions_leaving(c_.chart);
+    // By the state they leave, as owned() files them: a scan of every transition for each state
+    // was quadratic (a chain of 120,000 states took 44 s; docs/performance.md, "Long fsms").
     for (model::PlaceId p : places()) {
-      if (leaving[p].empty()) continue;
+      if (owned(p).empty()) continue;
       std::string calls;
-      for (model::TransitionId t : leaving[p])
+      for (model::TransitionId t : owned(p))
         calls += fmt::format(" {}({}, {});", c_.enabled_fn, c_.self, c_.transition_const[t]);
       w_.line("if ({}) {{{} }}", in_state(p), calls);
     }

@@ -93,8 +93,10 @@ void RunWriter::activation_hooks(const std::string &loop, const std::string &i,
 }
 
 void RunWriter::own(const std::function<model::PlaceId(model::TransitionId)> &owner) {
-  owned_ = IdMap<model::PlaceId, std::vector<model::TransitionId>>(c_.chart.places.size());
-  for (model::TransitionId t : c_.chart.transitions.ids()) owned_.at(owner(t)).push_back(t);
+  std::vector<std::pair<model::PlaceId, model::TransitionId>> items;
+  items.reserve(c_.chart.transitions.size());
+  for (model::TransitionId t : c_.chart.transitions.ids()) items.emplace_back(owner(t), t);
+  owned_ = IdGroups<model::PlaceId, model::TransitionId>(c_.chart.places.size(), items);
 }
 
 std::vector<std::string> RunWriter::conditions(const std::vector<model::TransitionId> &transitions, bool alone) {

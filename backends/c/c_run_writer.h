@@ -6,6 +6,7 @@
 #pragma once
 
 #include "c_context.h"
+#include "id_groups.h"
 #include "c_expr.h"
 #include "code_writer.h"
 
@@ -72,7 +73,7 @@ protected:
   /// Files each transition under the place that tries it (`owner`), in declaration order, so
   /// that the writers stay linear in the chart; owned() reads them.
   void own(const std::function<model::PlaceId(model::TransitionId)> &owner);
-  const std::vector<model::TransitionId> &owned(model::PlaceId place) const { return owned_.at(place); }
+  IdGroups<model::PlaceId, model::TransitionId>::Range owned(model::PlaceId place) const { return owned_[place]; }
   /// The place a transition is tried in, when only one place is ever active; none otherwise.
   virtual model::PlaceId tried_in(const model::Transition &) const { return {}; }
 
@@ -109,7 +110,7 @@ protected:
   Temporaries temps_;
 
 private:
-  IdMap<model::PlaceId, std::vector<model::TransitionId>> owned_;
+  IdGroups<model::PlaceId, model::TransitionId> owned_;  // one array, not a vector a place
 };
 
 }  // namespace gfec::c_backend

@@ -274,7 +274,7 @@ private:
       for_members(active_set(), c_.field(c_.active), [&] {
         for (PlaceId p : places()) {
           if (owned(p).empty()) continue;
-          std::vector<std::string> test = conditions(owned(p));
+          std::vector<std::string> test = conditions({owned(p).begin(), owned(p).end()});
           in_case(constant(p), [&] {
             for (std::size_t k = 0; k < owned(p).size(); ++k) transition_block(owned(p)[k], test[k]);
             w_.line("break;");
