@@ -14,8 +14,8 @@ here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d "${TMPDIR:-/tmp}/gfec-bench-cc.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 ticks=2000
-have_callgrind=0
-command -v valgrind > /dev/null && have_callgrind=1
+# shellcheck source=tests/bench/bench_measure.sh
+source "$here/bench_measure.sh"
 
 echo "$cc -O2 -std=c99 -c engine.c ($("$cc" --version | head -1)); the fastest of 3 runs"
 printf "%-12s %-11s %9s %9s %9s %9s %11s\n" "chart" "form" "C lines" "wall s" "user s" "peak MB" "instr/tick"
@@ -28,21 +28,10 @@ for spec in "ring 1000 Ring sfc" "ring 10000 Ring sfc" "chain 1000 Chain fsm" "c
   if grep -q "_update_parts\[" "$dir/engine.c"; then form=parts
   elif grep -q "switch (m->" "$dir/engine.c"; then form=switch
   else form=chain; fi
-  best=""
-  for _ in 1 2 3; do
-    /usr/bin/time -f "%e %U %M" -o "$dir/time" "$cc" -O2 -std=c99 -c "$dir/engine.c" -o "$dir/engine.o"
-    this=$(tail -1 "$dir/time")
-    if [[ -z $best ]] || awk -v a="${this%% *}" -v b="${best%% *}" 'BEGIN { exit !(a < b) }'; then best=$this; fi
-  done
+  fastest best 3 "$cc" -O2 -std=c99 -c "$dir/engine.c" -o "$dir/engine.o"
   read -r wall user kb <<< "$best"
-  ir="-"
-  if ((have_callgrind)); then
-    "$cc" -O2 -std=c99 -DCHART="$chart" -I"$dir" "$here/engine_main.c" "$here/stubs.c" "$dir/engine.c" -o "$dir/bench"
-    valgrind --tool=callgrind --collect-atstart=no --toggle-collect="${chart}_run" \
-      --callgrind-out-file="$dir/callgrind.out" "$dir/bench" "$ticks" > /dev/null 2>&1
-    total=$(awk '/^(summary|totals):/ { print $2; exit }' "$dir/callgrind.out")
-    ir=$(awk -v t="$total" -v n="$ticks" 'BEGIN { printf "%.0f", t / n }')
-  fi
+  "$cc" -O2 -std=c99 -DCHART="$chart" -I"$dir" "$here/engine_main.c" "$here/stubs.c" "$dir/engine.c" -o "$dir/bench"
+  ir=$(tick_instructions "$dir/bench" "$chart" "$ticks")
   printf "%-12s %-11s %9s %9s %9s %9.0f %11s\n" "$kind$n" "$form" "$(wc -l < "$dir/engine.c")" "$wall" "$user" \
     "$(awk -v k="$kb" 'BEGIN { print k / 1024 }')" "$ir"
 done

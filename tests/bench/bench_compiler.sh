@@ -19,22 +19,14 @@ sizes=("$@")
 work=$(mktemp -d "${TMPDIR:-/tmp}/gfec-bench-compiler.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 
-# measure OUT_VAR RUNS command...: runs the command RUNS times, sets "<seconds> <peak KB>" of
-# the fastest run (the cores are shared: the fastest run is the least disturbed one).
+# shellcheck source=tests/bench/bench_measure.sh
+source "$(dirname "$0")/bench_measure.sh"
+# measure OUT_VAR RUNS command...: "<seconds> <peak KB>" of the fastest run.
 measure() {
-  local var=$1 runs=$2 best="" i
-  shift 2
-  for ((i = 0; i < runs; ++i)); do
-    /usr/bin/time -f "%e %M" -o "$work/time" "$@" > /dev/null 2> "$work/err" || {
-      echo "bench_compiler: failed: $*" >&2
-      cat "$work/err" >&2
-      exit 1
-    }
-    local this
-    this=$(tail -1 "$work/time")
-    if [[ -z $best ]] || awk -v a="${this% *}" -v b="${best% *}" 'BEGIN { exit !(a < b) }'; then best=$this; fi
-  done
-  printf -v "$var" '%s' "$best"
+  local _m_var=$1 _m_best _m_wall _m_kb
+  fastest _m_best "${@:2}"
+  read -r _m_wall _ _m_kb <<< "$_m_best"
+  printf -v "$_m_var" '%s %s' "$_m_wall" "$_m_kb"
 }
 
 row() {  # label file lines

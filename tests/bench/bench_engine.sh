@@ -20,22 +20,15 @@ ticks_count=20000                    # under callgrind
 
 # shellcheck source=tests/bench/bench_cases.sh
 source "$here/bench_cases.sh"
-have_callgrind=0
-command -v valgrind > /dev/null && have_callgrind=1
+# shellcheck source=tests/bench/bench_measure.sh
+source "$here/bench_measure.sh"
 
 # One machine: engine source(s) in $work/$id/, chart name $2. Prints "<Ir/tick> <ns/tick> <sum>".
 measure() {
-  local dir=$1 chart=$2 ir="-"
+  local dir=$1 chart=$2
   "$cc" -O2 -std=c99 -DCHART="$chart" -I"$dir" "$here/engine_main.c" "$here/stubs.c" "$dir"/*.c -o "$dir/bench"
   read -r ns sum <<< "$("$dir/bench" "$ticks_time")"
-  if ((have_callgrind)); then
-    valgrind --tool=callgrind --collect-atstart=no --toggle-collect="${chart}_run" \
-      --callgrind-out-file="$dir/callgrind.out" "$dir/bench" "$ticks_count" > /dev/null 2>&1
-    local total
-    total=$(awk '/^(summary|totals):/ { print $2; exit }' "$dir/callgrind.out")
-    ir=$(awk -v t="$total" -v n="$ticks_count" 'BEGIN { printf "%.0f", t / n }')
-  fi
-  echo "$ir $ns $sum"
+  echo "$(tick_instructions "$dir/bench" "$chart" "$ticks_count") $ns $sum"
 }
 
 declare -A ir_of

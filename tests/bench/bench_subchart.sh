@@ -15,6 +15,8 @@ work=$(mktemp -d "${TMPDIR:-/tmp}/gfec-bench-subchart.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 ticks=20000
 command -v valgrind > /dev/null || { echo "bench_subchart: needs valgrind (callgrind)" >&2; exit 2; }
+# shellcheck source=tests/bench/bench_measure.sh
+source "$here/bench_measure.sh"
 
 cp "$root/samples/line_follower.sfc" "$root/samples/linebot.iface" "$work/"
 cat > "$work/wrap.sfc" <<'CHART'
@@ -45,9 +47,7 @@ measure() {
   "$cc" -O2 -std=c99 -DCHART="$chart" -I"$dir" "$here/engine_main.c" "$here/stubs.c" "$dir"/*.c -o "$dir/bench"
   local sum
   sum=$("$dir/bench" "$ticks" | awk '{ print $2 }')
-  valgrind --tool=callgrind --collect-atstart=no --toggle-collect="${chart}_run" \
-    --callgrind-out-file="$dir/callgrind.out" "$dir/bench" "$ticks" > /dev/null 2>&1
-  awk -v n="$ticks" -v s="$sum" '/^(summary|totals):/ { printf "%.0f %s\n", $2 / n, s; exit }' "$dir/callgrind.out"
+  echo "$(tick_instructions "$dir/bench" "$chart" "$ticks") $sum"
 }
 
 echo "engines: $cc -O2; $("$cc" --version | head -1); $ticks ticks under callgrind"
