@@ -79,16 +79,18 @@ if [[ " ${sizes[*]} " == *" 100000 "* && " ${sizes[*]} " == *" 1000000 "* ]]; th
   printf "%-26s %7s %7s %7s %7s %7s %8s\n" "100k -> 1M ring, in pairs" "pair 1" "pair 2" "pair 3" "pair 4" "pair 5" \
     "median"
   for what in check compile; do
-    ratios=()
+    ratios=() times=()
     for pair in 1 2 3 4 5; do
       opts=(--check)
       [[ $what == check ]] || opts=(-o "$work/engine.c")
       measure small 2 "$gfec" "${opts[@]}" "$work/ring100k.sfc"
       measure large 2 "$gfec" "${opts[@]}" "$work/ring1m.sfc"
       ratios+=("$(awk -v a="${large% *}" -v b="${small% *}" 'BEGIN { printf("%.1f", a / b) }')")
+      times+=("${small% *}/${large% *}")
     done
     median=$(printf '%s\n' "${ratios[@]}" | sort -g | sed -n 3p)
     printf "%-26s %6sx %6sx %6sx %6sx %6sx %7sx\n" "$what" "${ratios[@]}" "$median"
+    printf "%-26s %s\n" "  (s, 100k/1M)" "${times[*]}"
   done
   rm -f "$work/ring100k.sfc" "$work/ring1m.sfc"
   echo "(each pair: the 1M ring's time over the 100k ring's, the faster of two runs each, run one right after the other)"
