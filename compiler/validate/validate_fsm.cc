@@ -5,7 +5,8 @@
 
 #include <fmt/format.h>
 
-#include <map>
+#include <cstdint>
+#include <vector>
 
 namespace gfec::validation {
 
@@ -60,9 +61,40 @@ model::PlaceId one_state(Context &cx, ChartScope &s, const ast::Transition &t, a
   return resolve_place(s, cx, names[0]);
 }
 
-/// Checks one resolved transition `from -> to` against the rules of §7.
+constexpr std::size_t kNoTransition = SIZE_MAX;
+
+/// For each transition, the first one before it with the same two states, or kNoTransition:
+/// the transitions grouped by the state they leave, then within a group each state entered
+/// stamped with the group. Linear in the machine, where a map of the pairs was n log n and an
+/// allocation a transition (a chain of a million states spent more there than anywhere else).
+std::vector<std::size_t> earlier_twins(const model::Chart &c) {
+  std::vector<std::pair<model::PlaceId, std::size_t>> by_source;
+  by_source.reserve(c.transitions.size());
+  for (std::size_t i = 0; i < c.transitions.size(); ++i) {
+    const model::Transition &t = c.transitions[model::TransitionId(i)];
+    if (!t.inputs.empty() && !t.outputs.empty()) by_source.emplace_back(t.inputs[0], i);
+  }
+  const IdGroups<model::PlaceId, std::size_t> leaving(c.places.size(), by_source);
+  std::vector<std::size_t> twin(c.transitions.size(), kNoTransition);
+  IdMap<model::PlaceId, model::PlaceId> stamp(c.places.size());  // the source that entered it last
+  IdMap<model::PlaceId, std::size_t> first(c.places.size());     // and by which transition
+  for (model::PlaceId from : c.places.ids())
+    for (std::size_t i : leaving[from]) {
+      const model::PlaceId to = c.transitions[model::TransitionId(i)].outputs[0];
+      if (stamp[to] == from) {
+        twin[i] = first[to];
+      } else {
+        stamp[to] = from;
+        first[to] = i;
+      }
+    }
+  return twin;
+}
+
+/// Checks one resolved transition `from -> to` against the rules of §7; `twin` is the first
+/// transition before it between the same two states, if any.
 void check_transition(Context &cx, ChartScope &s, std::size_t i, model::PlaceId from, model::PlaceId to,
-                      std::map<std::pair<model::PlaceId, model::PlaceId>, std::size_t> &pairs) {
+                      std::size_t twin) {
   const ast::Transition &t = s.ast.transitions[i];
   const ast::Place &source = s.ast.places[from.index()];
   if (terminal(source))
@@ -73,12 +105,11 @@ void check_transition(Context &cx, ChartScope &s, std::size_t i, model::PlaceId 
   if (from == to)
     cx.diag.error(where(t), ErrorKind::SelfTransition,
                   fmt::format("transition from state '{}' to itself", source.name.text));
-  auto [it, fresh] = pairs.emplace(std::make_pair(from, to), i);
-  if (!fresh)
+  if (twin != kNoTransition)
     cx.diag
         .error(where(t), ErrorKind::DuplicateTransition,
                fmt::format("second transition from '{}' to '{}'", source.name.text, s.ast.places[to.index()].name.text))
-        .note(where(s.ast.transitions[it->second]), "the first one is here");
+        .note(where(s.ast.transitions[twin]), "the first one is here");
 }
 
 /// Every state must be weakly connected to the initial state (§7).
@@ -158,11 +189,11 @@ void check_fsm(Context &cx, ChartScope &s, const ErrorWatch &watch) {
   if (!initial)
     cx.diag.error(s.ast.name.range, ErrorKind::InitialState, fmt::format("fsm '{}' has no initial state", s.out.name))
         .note("mark the state it starts in with 'initial state'");
-  std::map<std::pair<model::PlaceId, model::PlaceId>, std::size_t> pairs;
+  const std::vector<std::size_t> twins = earlier_twins(s.out);
   bool resolved = true;  // every transition has its two states (resolve_fsm_places)
   for (std::size_t i = 0; i < s.ast.transitions.size(); ++i) {
     const model::Transition &t = s.out.transitions[i];
-    if (!t.inputs.empty() && !t.outputs.empty()) check_transition(cx, s, i, t.inputs[0], t.outputs[0], pairs);
+    if (!t.inputs.empty() && !t.outputs.empty()) check_transition(cx, s, i, t.inputs[0], t.outputs[0], twins[i]);
     else resolved = false;
     lower_transition_condition(cx, s, i);
   }
