@@ -52,7 +52,7 @@ using ToolRunner = std::function<std::string(const ExternalTool &tool, const std
 
 /// Where a back end writes: one stream per output file, opened in order, the primary output
 /// first (e.g. engine.c, then engine.h beside it). The driver's sink writes each to its safe
-/// temporary file (compiler/driver/safe_output.h) and renames them into place only when the
+/// temporary file (support/safe_output.h) and renames them into place only when the
 /// whole compile succeeded; a name it refuses gives a stream that discards (the driver reports).
 class OutputSink {
 public:

@@ -20,7 +20,7 @@ struct Suite;
 
 namespace pipeline {
 
-/// What can be compiled, as bits (a back end's "accepts" in compiler/driver/backend_registry.h).
+/// What can be compiled, as bits (a back end's "accepts" in backends/backend_registry.h).
 enum TargetKind : unsigned { kSfc = 1, kFsm = 2, kPlan = 4, kToolbox = 8 };
 
 /// What the front end needs from the command line.

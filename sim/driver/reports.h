@@ -1,5 +1,5 @@
 // What a run leaves behind: the trace (CSV), the result (JSON) and a picture (SVG).
-// main.cc writes them as one set with safe_output::write_all (compiler/driver/safe_output.h):
+// main.cc writes them as one set with safe_output::write_all (support/safe_output.h):
 // never over the chart or the world, a special file or one file twice, never half a file.
 #pragma once
 
