@@ -1,6 +1,6 @@
 #include "diagnostic_printer.h"
 
-#include "utf8.h"
+#include "escape.h"
 
 #include <fmt/format.h>
 
@@ -38,38 +38,15 @@ struct Shown {
   bool tab = false;
 };
 
-/// Characters a terminal obeys or that reorder the text around them (Trojan Source): C1 controls,
-/// and the bidirectional marks, embeddings, overrides and isolates.
-bool hidden_control(std::uint32_t cp) {
-  return (cp >= 0x80 && cp <= 0x9F) || cp == 0x061C || cp == 0x200E || cp == 0x200F || (cp >= 0x202A && cp <= 0x202E) ||
-         (cp >= 0x2066 && cp <= 0x2069);
-}
-
-/// A text as it is safe to print, character by character: what a chart holds reaches the
-/// terminal as text, never as a control (an ESC sequence that recolours or rewrites the screen).
-/// As gcc's -fdiagnostics-escape-format=unicode: a control character but the tab (and, where
-/// `keep_newlines`, the newline) as <U+001B>, and a byte that is no UTF-8 as <ff>.
+/// A text as it is safe to print, character by character (support/escape.h): what a chart holds
+/// reaches the terminal as text, never as a control. The tab stays (and, where `keep_newlines`,
+/// the newline).
 std::vector<Shown> characters(std::string_view s, bool keep_newlines = false) {
   std::vector<Shown> out;
   for (std::size_t at = 0; at < s.size();) {
-    Shown ch;
-    ch.begin = static_cast<std::uint32_t>(at);
-    const auto c = static_cast<unsigned char>(s[at]);
-    if (c < 0x80) {
-      ch.tab = c == '\t';
-      if (c >= 0x20 && c != 0x7F) ch.text = std::string(1, static_cast<char>(c));
-      else if (ch.tab || (keep_newlines && c == '\n')) ch.text = std::string(1, static_cast<char>(c));
-      else ch.text = fmt::format("<U+{:04X}>", c);
-      ++at;
-    } else if (const text::Utf8 u = text::decode_utf8(s, at); u.length > 0) {
-      ch.text =
-          hidden_control(u.code_point) ? fmt::format("<U+{:04X}>", u.code_point) : std::string(s.substr(at, u.length));
-      at += u.length;
-    } else {
-      ch.text = fmt::format("<{:02x}>", c);
-      ++at;
-    }
-    out.push_back(std::move(ch));
+    text::Shown ch = text::shown_at(s, at, keep_newlines);
+    out.push_back({static_cast<std::uint32_t>(at), std::move(ch.text), s[at] == '\t'});
+    at += ch.length;
   }
   return out;
 }
@@ -80,9 +57,6 @@ std::string joined(const std::vector<Shown> &shown) {
   for (const Shown &ch : shown) out += ch.text;
   return out;
 }
-
-/// The printable form of a text (a message, a file name, a fix-it).
-std::string printable(std::string_view s, bool keep_newlines = false) { return joined(characters(s, keep_newlines)); }
 
 /// The columns a printed character takes: one for a character (a tab copied as it is), the
 /// width of the escape for an escaped one.
@@ -159,14 +133,14 @@ void quote(std::string &out, const SourceRange &range, const std::vector<FixIt> 
     if (f.range.file != range.file || at.line != begin.line || f.replacement.empty()) continue;
     if (at.col - 1 < from || at.col - 1 > to) continue;  // outside the quoted part of a long line
     out += fmt::format("{} {}{}{}\n", blank, pad, indent_to(shown, local(at.col - 1)),
-                       paint(style, kGreen, printable(f.replacement)));
+                       paint(style, kGreen, text::printable(f.replacement)));
   }
 }
 
 std::string location(const SourceRange &range, const SourceManager &sources) {
   const SourceFile &file = sources.file(range.file);
   LineCol lc = file.line_col(range.begin);
-  return fmt::format("{}:{}:{}", printable(file.path()), lc.line, lc.col);
+  return fmt::format("{}:{}:{}", text::printable(file.path()), lc.line, lc.col);
 }
 
 /// gcc's string escapes for a fix-it line: backslash and quote escaped, and what is not
@@ -201,7 +175,7 @@ std::string render_text(const Diagnostic &d, const SourceManager &sources, const
   const char *color = severity_color(d.severity);
   std::string out =
       fmt::format("{} {} {}", paint(style, kBold, location(d.range, sources) + ":"),
-                  paint(style, color, std::string(severity_name(d.severity)) + ":"), printable(d.message, true));
+                  paint(style, color, std::string(severity_name(d.severity)) + ":"), text::printable(d.message, true));
   if (d.kind) out += fmt::format(" [{}]", paint(style, color, check_label(d)));
   out += '\n';
   quote(out, d.range, style.fixits ? d.fixits : std::vector<FixIt>{}, sources, style);
@@ -216,7 +190,7 @@ std::string render_text(const Diagnostic &d, const SourceManager &sources, const
   for (const auto &n : d.notes) {
     const SourceRange &at = n.has_range ? n.range : d.range;
     out += fmt::format("{} {} {}\n", paint(style, kBold, location(at, sources) + ":"),
-                       paint(style, severity_color(Severity::Note), "note:"), printable(n.message, true));
+                       paint(style, severity_color(Severity::Note), "note:"), text::printable(n.message, true));
     if (n.has_range) quote(out, n.range, {}, sources, style);
   }
   return out;

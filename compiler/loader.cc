@@ -2,7 +2,7 @@
 
 #include "alica/alica_reader.h"
 #include "parser.h"
-#include "validate/suggest.h"
+#include "did_you_mean.h"
 
 #include <fmt/format.h>
 
@@ -120,18 +120,11 @@ private:
   void suggest_file(Diagnostic &d, const ast::Import &import, const std::vector<fsys::path> &searched) {
     fsys::path wanted(import.path);
     std::string name = wanted.filename().string();
-    std::size_t limit = std::max<std::size_t>(1, (name.size() + 1) / 3);
+    NearestName nearest(name, typo_limit(name.size()));
     std::string best;
-    std::size_t best_distance = limit + 1;
-    for (const auto &candidate : searched) {
-      for (const std::string &file : fs_.list(normal(candidate.parent_path()))) {
-        std::size_t distance = validation::edit_distance(name, file);
-        if (distance > 0 && distance < best_distance) {
-          best = file;
-          best_distance = distance;
-        }
-      }
-    }
+    for (const auto &candidate : searched)
+      for (const std::string &file : fs_.list(normal(candidate.parent_path())))
+        if (file != name && nearest.offer(file)) best = file;
     if (best.empty()) return;
     std::string path = (wanted.parent_path() / best).generic_string();
     if (path.find_first_of("\\\"") == std::string::npos) d.fix(import.range, fmt::format("\"{}\"", path));

@@ -5,6 +5,7 @@
 #include "backend_registry.h"
 #include "dependency_file.h"
 #include "diagnostic_report.h"
+#include "escape.h"
 #include "external_tool.h"
 #include "pipeline/compilation.h"
 #include "safe_output.h"
@@ -48,18 +49,6 @@ private:
   std::ostream discard_{nullptr};  // no buffer: badbit, writes ignored
 };
 
-/// `path` with control characters spelled as C escapes, for a message on one line.
-std::string printable(const std::string &path) {
-  std::string out;
-  for (char c : path) {
-    auto u = static_cast<unsigned char>(c);
-    if (c == '\n') out += "\\n";
-    else if (u < 0x20 || u == 0x7f) out += fmt::format("\\x{:02x}", u);
-    else out += c;
-  }
-  return out;
-}
-
 /// Adds the -MD dependency file to the outputs: the files written depend on every file read.
 /// Returns why it cannot be written (a name make cannot read), or "".
 std::string add_dependency_file(const Options &o, const LoadResult &loaded, const std::vector<std::string> &outputs,
@@ -76,7 +65,7 @@ std::string add_dependency_file(const Options &o, const LoadResult &loaded, cons
     if (!why.empty())
       return fmt::format("cannot write the dependency file '{}': the name '{}' contains {}, which make cannot read "
                          "in a rule (docs/build-integration.md)",
-                         name, printable(path), why);
+                         name, text::printable(path), why);
   }
   if (std::ostream *out = t.open(name)) *out << dependency_rule(targets, loaded.paths, o.deps.phony);
   return t.error();

@@ -1,8 +1,8 @@
 #include "options.h"
 
 #include "backend_registry.h"
+#include "did_you_mean.h"
 #include "naming/c_type_name.h"
-#include "validate/suggest.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -18,11 +18,10 @@ std::string unknown_warning(const std::string &flag, const std::string &name) {
     return fmt::format("'-W{}': '{}' is an error, not a warning; errors cannot be turned off or made warnings", flag,
                        name);
   std::string best;
-  std::size_t best_distance = name.size() / 3 + 1;
+  NearestName nearest(name, name.size() / 3);
   for (std::size_t i = 0; i < static_cast<std::size_t>(Warning::Count_); ++i) {
     std::string_view candidate = kind_info(static_cast<Warning>(i)).name;
-    std::size_t d = validation::edit_distance(name, candidate);
-    if (d < best_distance) best_distance = d, best = std::string(candidate);
+    if (nearest.offer(candidate)) best = std::string(candidate);
   }
   std::string message = fmt::format("unknown warning option '-W{}'", flag);
   if (!best.empty())

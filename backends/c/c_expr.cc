@@ -155,14 +155,15 @@ std::optional<bool> settled(const Expr &e) {
   return std::nullopt;
 }
 
-/// A timer or an int var compared with a constant, the constant on the right: `elapsed(P) >= 2`
-/// (in ticks), `v < 4`.
+/// A comparison the compilers see as `subject OP constant` (or mirrored), with a subject that
+/// reads without side effects: a timer, an int or bool var, an fsm's state or status.
 struct ConstantTest {
-  Expr::Kind kind = Expr::Kind::Var;  ///< Elapsed or Var
-  model::PlaceId place;               ///< Elapsed: whose timer
-  model::VarId var;                   ///< Var
+  std::string subject;  ///< the subject's C text: the same text is the same subject
   BinaryOp op = BinaryOp::Eq;
   long long k = 0;
+  long long lowest = INT_MIN, highest = INT_MAX;  ///< every value the subject can hold (or more)
+  std::string shown;                              ///< the test as the chart says it, for comments
+  bool in_ticks = false;                          ///< a timer's: `shown` counts ticks
 
   bool holds(long long x) const {
     switch (op) {
@@ -176,43 +177,52 @@ struct ConstantTest {
   }
 };
 
-std::optional<ConstantTest> constant_test(const Engine &c, const Expr &e) {
-  const Expr &u = unbracketed(e);
-  if (u.kind != Expr::Kind::Binary || !is_comparison(u.binary_op)) return std::nullopt;
-  for (int side = 0; side < 2; ++side) {
-    const Expr &x = unbracketed(u.args.at(static_cast<std::size_t>(side)));
-    const Expr &k = unbracketed(u.args.at(static_cast<std::size_t>(1 - side)));
-    BinaryOp op = side == 0 ? u.binary_op : mirrored(u.binary_op);
-    if (x.kind == Expr::Kind::Elapsed && k.kind == Expr::Kind::Ticks)  // timers stop at UINT32_MAX
-      return ConstantTest{x.kind, x.place(), {}, op, static_cast<long long>(std::min(k.ticks, 0x100000000ul))};
-    if (x.kind == Expr::Kind::Var && x.type == Type::Int)
-      if (auto v = int_constant(c, k)) return ConstantTest{x.kind, {}, x.var(), op, *v};
-  }
-  return std::nullopt;
-}
-
-/// Two tests of one timer or int var against constants, joined by `&&` or `||`, that decide the
-/// same for every value: `v >= 0 || v < 4` is always true, and so is `elapsed(P) >= 15ms ||
-/// elapsed(P) <= 5ms` at period 20ms (`t >= 1 || t <= 1` in ticks). clang says so
-/// (-Wtautological-overlap-compare); such a condition is written as its value, the tests in a
-/// comment. Timers and vars are read without side effects, so nothing is lost.
-std::optional<std::string> settled_pair(const Engine &c, const Expr &e) {
-  if (e.binary_op != BinaryOp::And && e.binary_op != BinaryOp::Or) return std::nullopt;
-  auto a = constant_test(c, e.args.at(0)), b = constant_test(c, e.args.at(1));
-  if (!a || !b || a->kind != b->kind || a->place != b->place || a->var != b->var) return std::nullopt;
-  const bool timer = a->kind == Expr::Kind::Elapsed;
-  const long long lowest = timer ? 0 : INT_MIN, highest = timer ? 0xFFFFFFFFll : INT_MAX;
-  const bool both = e.binary_op == BinaryOp::And;
-  auto value = [&](long long x) { return both ? a->holds(x) && b->holds(x) : a->holds(x) || b->holds(x); };
-  // The result can only change at a constant: trying each, its neighbours and the ends decides.
+/// `a OP b` (`&&` or `||`) of two tests of one subject, if it decides the same for every value
+/// the subject can hold. The result can only change at a constant: trying each, its neighbours
+/// and the ends decides.
+std::optional<bool> decided(const ConstantTest &a, const ConstantTest &b, BinaryOp op) {
+  const bool both = op == BinaryOp::And;
+  auto value = [&](long long x) { return both ? a.holds(x) && b.holds(x) : a.holds(x) || b.holds(x); };
+  const long long lowest = std::max(a.lowest, b.lowest), highest = std::min(a.highest, b.highest);
   const bool first = value(lowest);
-  for (long long k : {a->k, b->k})
+  for (long long k : {a.k, b.k})
     for (long long x : {k - 1, k, k + 1, highest})
       if (x >= lowest && x <= highest && value(x) != first) return std::nullopt;
-  std::string name = timer ? fmt::format("elapsed({})", c.place(a->place).name) : c.chart.vars.at(a->var).name;
-  return fmt::format("{} /* {}: {} {} {} {} {} {} {}{} */", first ? "true" : "false", first ? "always" : "never", name,
-                     spelling(a->op), a->k, spelling(e.binary_op), name, spelling(b->op), b->k,
-                     timer ? ", in ticks" : "");
+  return first;
+}
+
+/// Both operands of a comparison are the same value read twice, with no call: `v == v`,
+/// `elapsed(P) < elapsed(P)`, `v + 1 >= (v + 1)`. The user's brackets do not count; constants
+/// count by value (`v + K` is `v + 3` for `const int K = 3`), as the compilers see them.
+bool same_value(const Engine &c, const Expr &x, const Expr &y) {
+  const Expr &a = unbracketed(x), &b = unbracketed(y);
+  if (a.type != b.type) return false;
+  if (auto ka = int_constant(c, a)) return int_constant(c, b) == ka;
+  if (a.kind != b.kind) return false;
+  switch (a.kind) {
+  case Expr::Kind::Bool: return a.bool_value == b.bool_value;
+  case Expr::Kind::Ticks: return a.ticks == b.ticks;
+  case Expr::Kind::Var: return a.var() == b.var();
+  case Expr::Kind::Elapsed: return a.place() == b.place();
+  case Expr::Kind::Succeeded:
+  case Expr::Kind::Failed: return a.place() == b.place();
+  case Expr::Kind::Active: return a.path.get() == b.path.get();
+  case Expr::Kind::Unary: return a.unary_op == b.unary_op && same_value(c, a.args.at(0), b.args.at(0));
+  case Expr::Kind::Binary:
+    return a.binary_op == b.binary_op && same_value(c, a.args.at(0), b.args.at(0)) &&
+           same_value(c, a.args.at(1), b.args.at(1));
+  default: return false;  // calls, floating literals, constants of other types: not compared
+  }
+}
+
+/// A comparison of a value with itself, which gcc and clang decide and reject under -Werror
+/// (-Wtautological-compare): `==`, `<=` and `>=` hold, the others do not. Not of floating
+/// values, where NaN compares unequal to itself (and the compilers say nothing).
+std::optional<bool> self_comparison(const Engine &c, const Expr &e) {
+  if (!is_comparison(e.binary_op) || is_floating(e.args.at(0).type) || is_floating(e.args.at(1).type))
+    return std::nullopt;
+  if (has_call(e) || !same_value(c, e.args.at(0), e.args.at(1))) return std::nullopt;
+  return e.binary_op == BinaryOp::Eq || e.binary_op == BinaryOp::Le || e.binary_op == BinaryOp::Ge;
 }
 
 /// Renders one expression or statement of a chart, adding the temporaries it needs to `temps`.
@@ -226,6 +236,7 @@ public:
       : c_(c), temps_(temps), at_start_(at_start), from_(from) {}
 
   Rendered render(const Expr &e) {
+    if (&e == replaced_) return {replacement_};
     switch (e.kind) {
     case Expr::Kind::Bool:
     case Expr::Kind::Int:
@@ -412,10 +423,12 @@ private:
   }
 
   Rendered binary(const Expr &e) {
-    if (auto value = settled_pair(c_, e)) return {*value};
+    if (auto decided = overlapping(e)) return std::move(*decided);
     if (auto value = settled(e))
       return {*value ? "true /* always: timers count from 0 to UINT32_MAX */"
                      : "false /* never: timers count from 0 to UINT32_MAX */"};
+    if (auto value = self_comparison(c_, e))
+      return {*value ? "true /* always: both sides are the same */" : "false /* never: both sides are the same */"};
     const BinaryOp op = e.binary_op;
     const int prec = precedence(op);
     Rendered l, r;
@@ -456,10 +469,114 @@ private:
     return {fmt::format("{} {} {}", l.text, spelling(op), r.text), prec, std::move(before)};
   }
 
+  /// `e` as a test the compilers can decide: a timer, an int or bool var or (where the test is
+  /// rendered as one comparison) an fsm's state or status, compared with a constant.
+  std::optional<ConstantTest> constant_test(const Expr &e) const {
+    const Expr &u = unbracketed(e);
+    if (is_activity(u)) return activity_test(u);
+    if (u.kind != Expr::Kind::Binary || !is_comparison(u.binary_op)) return std::nullopt;
+    for (int side = 0; side < 2; ++side) {
+      const Expr &x = unbracketed(u.args.at(static_cast<std::size_t>(side)));
+      const Expr &k = unbracketed(u.args.at(static_cast<std::size_t>(1 - side)));
+      ConstantTest t;
+      t.op = side == 0 ? u.binary_op : mirrored(u.binary_op);
+      if (x.kind == Expr::Kind::Elapsed && k.kind == Expr::Kind::Ticks) {  // timers stop at UINT32_MAX
+        t.subject = c_.timer_of(x.place());
+        t.k = static_cast<long long>(std::min(k.ticks, 0x100000000ul));
+        t.lowest = 0;
+        t.highest = 0xFFFFFFFFll;
+        t.in_ticks = true;
+        t.shown = fmt::format("elapsed({}) {} {}", c_.place(x.place()).name, spelling(t.op), t.k);
+        return t;
+      }
+      if (x.kind != Expr::Kind::Var || (x.type != Type::Int && x.type != Type::Bool)) continue;
+      if (x.type == Type::Int) {
+        auto v = int_constant(c_, k);
+        if (!v) continue;
+        t.k = *v;
+      } else {
+        if (k.kind != Expr::Kind::Bool) continue;
+        t.k = k.bool_value ? 1 : 0;
+        t.lowest = 0;
+        t.highest = 1;
+      }
+      t.subject = c_.field(c_.var_field.at(x.var()));
+      t.shown = fmt::format("{} {} {}", c_.chart.vars.at(x.var()).name, spelling(t.op),
+                            x.type == Type::Bool ? (t.k ? "true" : "false") : std::to_string(t.k));
+      return t;
+    }
+    return std::nullopt;
+  }
+
+  /// An activity test that activity() renders as one comparison, `state == X_K_Z0` or
+  /// `status == -1`: of this chart's one active state outside a transition's condition, or of
+  /// the instance the state a condition is tried in runs.
+  std::optional<ConstantTest> activity_test(const Expr &e) const {
+    std::vector<model::PlaceId> path =
+        e.kind == Expr::Kind::Active ? e.path.get() : std::vector<model::PlaceId>{e.place()};
+    const bool first_known = at_start_ && from_ && c_.form().one_active();
+    const std::size_t tests = (first_known ? 0 : 1) + (e.kind == Expr::Kind::Active ? path.size() - 1 : 1);
+    if (tests != 1 || path.empty() || (first_known && path[0] != from_)) return std::nullopt;
+    const Engine *c = &c_;
+    std::string obj;
+    if (path.size() > 1 || e.kind != Expr::Kind::Active) {
+      obj = c_.member("", c_.sub_field.at(path[0]));
+      c = c_.sub_of(path[0]);
+    }
+    if (!c) return std::nullopt;
+    ConstantTest t;
+    t.shown = what(e);
+    if (e.kind != Expr::Kind::Active) {
+      if (!c->fsm) return std::nullopt;
+      t.subject = c->member(obj, c->status);
+      t.k = e.kind == Expr::Kind::Succeeded ? 1 : -1;
+      return t;
+    }
+    // A one-active form tests `subject == constant` (c_forms.cc); the constants of distinct
+    // places differ, as their numbers do.
+    if (!c->form().one_active()) return std::nullopt;
+    const std::string text = c->active_test(obj, path.back());
+    const auto at = text.find(" == ");
+    if (at == std::string::npos) return std::nullopt;
+    t.subject = text.substr(0, at);
+    t.k = static_cast<long long>(path.back().index());
+    return t;
+  }
+
+  /// Two tests of one subject joined by `&&` or `||` that decide the same for every value:
+  /// `v >= 0 || v < 4` is always true, `failed(K) && succeeded(K)` never, and so is
+  /// `elapsed(P) >= 15ms && elapsed(P) <= 5ms` at period 20ms. clang says so
+  /// (-Wtautological-overlap-compare), and gcc as well where the first test ends a chain of the
+  /// same operator (`x && v == 1 && v == 2`: "'and' of mutually exclusive equal-tests"). Such a
+  /// pair is written as its value, the tests in a comment, in place of the first test (the
+  /// second goes: `x && false`, which is `(x && v == 1) && v == 2`). Nothing is lost: the
+  /// subjects are read without side effects.
+  std::optional<Rendered> overlapping(const Expr &e) {
+    const BinaryOp op = e.binary_op;
+    if (op != BinaryOp::And && op != BinaryOp::Or) return std::nullopt;
+    const Expr *first = &unbracketed(e.args.at(0));
+    while (first->kind == Expr::Kind::Binary && first->binary_op == op) first = &unbracketed(first->args.at(1));
+    auto a = constant_test(*first), b = constant_test(e.args.at(1));
+    if (!a || !b || a->subject != b->subject) return std::nullopt;
+    auto value = decided(*a, *b, op);
+    if (!value) return std::nullopt;
+    std::string text = fmt::format("{} /* {}: {} {} {}{} */", *value ? "true" : "false", *value ? "always" : "never",
+                                   a->shown, spelling(op), b->shown, a->in_ticks ? ", in ticks" : "");
+    if (first == &unbracketed(e.args.at(0))) return Rendered{text};
+    replaced_ = first;
+    replacement_ = std::move(text);
+    Rendered chain = render(e.args.at(0));
+    replaced_ = nullptr;
+    return chain;
+  }
+
   const Engine &c_;
   Temporaries &temps_;
   bool at_start_ = false;
   model::PlaceId from_;
+  /// overlapping(): the test rendered as `replacement_` (its pair's value) instead.
+  const Expr *replaced_ = nullptr;
+  std::string replacement_;
 };
 
 }  // namespace

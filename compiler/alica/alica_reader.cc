@@ -2,8 +2,9 @@
 
 #include "alica/identifiers.h"
 #include "alica/json_tree.h"
+#include "escape.h"
 #include "file_system.h"
-#include "validate/suggest.h"
+#include "did_you_mean.h"
 
 #include <fmt/format.h>
 
@@ -132,7 +133,7 @@ public:
     // terminal, where "\n" would start a forged diagnostic and ESC a terminal command.
     auto clean = [&](std::string &s) {
       unquote(s);
-      s = printable(s);
+      s = text::printable(s);
     };
     for (std::size_t i = first_diagnostic; i < diag_.all().size(); ++i) {
       clean(diag_.all()[i].message);
@@ -420,15 +421,11 @@ private:
                     const std::string &from) {
     std::string want = fsys::path(file).filename().string();
     std::string best;
-    std::size_t best_distance = want.size() / 3 + 1;
+    NearestName nearest(want, want.size() / 3);
     for (const auto &path : tried)
       for (const auto &name : fs_.list(normal(fsys::path(path).parent_path()))) {
         if (normal(fsys::path(path).parent_path() / name) == from) continue;
-        std::size_t dist = validation::edit_distance(want, name);
-        if (dist < best_distance) {
-          best = name;
-          best_distance = dist;
-        }
+        if (nearest.offer(name)) best = name;
       }
     if (!best.empty() && best != want)
       d.note(fmt::format("did you mean '{}'?", normal(fsys::path(file).parent_path() / best)));
@@ -466,14 +463,10 @@ private:
       // A mistyped id: the element whose id is closest (a digit or two off); else, for a file
       // that holds one element (a behaviour, a plan), that element.
       const JsonValue *best = nullptr;
-      std::size_t best_distance = 3;
+      NearestName nearest(ref->id, 2);
       for (const auto &[id, object] : doc->by_id) {
         if (!object->find("name")) continue;  // blackboard keys, mappings: not what references name
-        std::size_t dist = validation::edit_distance(ref->id, id);
-        if (dist < best_distance) {
-          best = object;
-          best_distance = dist;
-        }
+        if (nearest.offer(id)) best = object;
       }
       const JsonValue &root = *doc->root;
       bool repository = root.find("conditions") || root.find("tasks") || root.find("roles");

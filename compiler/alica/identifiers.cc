@@ -64,40 +64,6 @@ std::string identifier(const std::string &text, const std::string &fallback) {
   return out;
 }
 
-std::string printable(std::string_view text) {
-  std::string out;
-  out.reserve(text.size());
-  for (std::size_t i = 0; i < text.size();) {
-    auto c = static_cast<unsigned char>(text[i]);
-    // A UTF-8 sequence is kept whole, but for the C1 controls (U+0080 to U+009F: 0xc2 0x80 ...
-    // 0xc2 0x9f), which some terminals obey as ESC sequences.
-    std::size_t length = c >= 0xc2 && c < 0xe0 ? 2 : c >= 0xe0 && c < 0xf0 ? 3 : c >= 0xf0 && c < 0xf5 ? 4 : 1;
-    bool whole = length > 1 && i + length <= text.size();
-    for (std::size_t k = 1; whole && k < length; ++k) whole = (static_cast<unsigned char>(text[i + k]) & 0xc0) == 0x80;
-    if (whole && !(c == 0xc2 && static_cast<unsigned char>(text[i + 1]) < 0xa0)) {
-      out.append(text.substr(i, length));
-      i += length;
-      continue;
-    }
-    if (whole) {
-      out += fmt::format("\\u{:04x}", static_cast<unsigned char>(text[i + 1]));
-      i += 2;
-      continue;
-    }
-    switch (c) {
-    case '\n': out += "\\n"; break;
-    case '\r': out += "\\r"; break;
-    case '\t': out += "\\t"; break;
-    case '\0': out += "\\0"; break;
-    default:
-      if (c < 0x20 || c >= 0x7f) out += fmt::format("\\x{:02x}", c);
-      else out += static_cast<char>(c);
-    }
-    ++i;
-  }
-  return out;
-}
-
 std::string NameScope::take(const std::string &name, const std::string &id) {
   std::string chosen = name;
   if (used_.count(chosen)) {

@@ -4,7 +4,6 @@
 
 #include <set>
 #include <string>
-#include <string_view>
 
 namespace gfec::alica {
 
@@ -16,12 +15,6 @@ bool meaningful(const std::string &name);
 /// them one '_'); a leading digit gets 'N' in front; a gfec or C keyword gets '_' appended;
 /// empty text gives `fallback`.
 std::string identifier(const std::string &text, const std::string &fallback);
-
-/// `text` for a message: control characters written as escapes (`\n`, `\t`, `\0`, `\x1b`, and
-/// `\u009b` for the C1 controls), and bytes that are no UTF-8 as `\xNN`, so that a name or a
-/// reference from a file can neither start a line of its own (a forged diagnostic) nor drive the
-/// terminal. Printable text, UTF-8 included, is unchanged.
-std::string printable(std::string_view text);
 
 /// Hands out identifiers unique within one scope: the first taker keeps the plain name, later
 /// ones get "_<id>" appended (and then "_2", "_3", ... if even that is taken).

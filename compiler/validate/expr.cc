@@ -556,7 +556,7 @@ std::optional<model::Expr> lower_expr(const ast::Expr *e, ExprScope &s) {
 /// the fix, and its arguments left unread (a place is no value: that error would be noise).
 bool misspelt_builtin(const ast::Name &name, ExprScope &s) {
   if (name.text.empty() || name.text.size() > kMaxSuggestedLength || s.cx.c_names.find(name.text)) return false;
-  const std::size_t limit = std::max<std::size_t>(1, (name.text.size() + 1) / 3);
+  const std::size_t limit = typo_limit(name.text.size());
   for (std::string_view builtin : kBuiltinFunctions) {
     // The built-ins first: they are few, and the search among the interface functions only
     // matters for a name close to one of them.

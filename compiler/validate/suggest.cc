@@ -2,81 +2,22 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
-#include <array>
-#include <cstdint>
-#include <numeric>
-
 namespace gfec::validation {
-
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-  // The classic table, two rows back kept for transpositions ("flaot" is one typo from "float").
-  std::vector<std::size_t> before(b.size() + 1), previous(b.size() + 1), row(b.size() + 1);
-  std::iota(previous.begin(), previous.end(), 0);
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      row[j] = std::min({previous[j] + 1, row[j - 1] + 1, previous[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) row[j] = std::min(row[j], before[j - 2] + 1);
-    }
-    std::swap(before, previous);
-    std::swap(previous, row);
-  }
-  return previous[b.size()];
-}
-
-std::size_t edit_distance_within(std::string_view a, std::string_view b, std::size_t k) {
-  const std::size_t over = k + 1;
-  if ((a.size() > b.size() ? a.size() - b.size() : b.size() - a.size()) > k) return over;
-  // The rows live on the stack: the names closest() compares are at most kMaxSuggestedLength long.
-  constexpr std::size_t kRow = 2 * kMaxSuggestedLength + 2;
-  if (b.size() >= kRow || k >= kRow) return std::min(edit_distance(a, b), over);
-  // Ukkonen's cut-off: a cell farther than k from the diagonal costs more than k, so each row is
-  // computed only within k of it, and a row whose every cell is over k ends the search. Cells
-  // just outside the band read as `over`; the three rows rotate, so the edges are reset each row.
-  std::array<std::uint8_t, kRow> before{}, previous{}, row{};
-  auto cap = [&](std::size_t v) { return static_cast<std::uint8_t>(std::min(v, over)); };
-  for (std::size_t j = 0; j <= b.size(); ++j) previous[j] = cap(j);
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    const std::size_t lo = i > k ? i - k : 1, hi = std::min(b.size(), i + k);
-    std::size_t least = over;
-    if (lo == 1) least = row[0] = cap(i);
-    else row[lo - 1] = cap(over);
-    for (std::size_t j = lo; j <= hi; ++j) {
-      std::size_t v = std::min<std::size_t>(
-          {previous[j] + 1u, row[j - 1] + 1u, previous[j - 1] + (a[i - 1] == b[j - 1] ? 0u : 1u)});
-      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
-        v = std::min<std::size_t>(v, before[j - 2] + 1u);
-      row[j] = cap(v);
-      least = std::min<std::size_t>(least, row[j]);
-    }
-    if (hi < b.size()) row[hi + 1] = cap(over);
-    if (least > k) return over;
-    std::swap(before, previous);
-    std::swap(previous, row);
-  }
-  return previous[b.size()];
-}
 
 const Symbol *closest(std::string_view name, const std::vector<const Symbol *> &candidates) {
   // The table costs the product of the lengths: a hostile 40k-character name against every
   // candidate took seconds. Longer names are not typed by hand, so they get no suggestion.
   if (name.size() > kMaxSuggestedLength) return nullptr;
-  // About a third of the name may be wrong (at least one letter): close enough to be a typo,
-  // far enough apart that short unrelated names are not offered.
-  std::size_t limit = std::max<std::size_t>(1, (name.size() + 1) / 3);
+  const std::size_t limit = typo_limit(name.size());
+  NearestName nearest(name, limit);
   const Symbol *best = nullptr;
-  std::size_t best_distance = limit + 1;
   for (const Symbol *c : candidates) {
     const std::string_view candidate = c->name();
     if (candidate == name) continue;
-    // Only a closer candidate matters (a length gap larger than the bound costs nothing): the bound shrinks as better ones are found, and with it
-    // the work (thousands of near-identical names made this quadratic in practice).
-    std::size_t d = edit_distance_within(name, candidate, best_distance - 1);
-    if (d < best_distance && d < candidate.size()) {
-      best = c;
-      best_distance = d;
-    }
+    // A candidate every letter of which would change is no typo of it (`x` is not `y`); only a
+    // candidate no longer than the limit can be that far.
+    if (candidate.size() <= limit && edit_distance(name, candidate) >= candidate.size()) continue;
+    if (nearest.offer(candidate)) best = c;
   }
   return best;
 }

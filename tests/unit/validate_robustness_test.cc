@@ -150,42 +150,17 @@ TEST_CASE("validate: trees the parser patched up after syntax errors", "[validat
   }
 }
 
-TEST_CASE("validate: edit distance and did-you-mean", "[validate]") {
-  using validation::edit_distance;
-  CHECK(edit_distance("Left_IR_Blak", "Left_IR_Black") == 1);
-  CHECK(edit_distance("flaot", "float") == 1);
-  CHECK(edit_distance("", "abc") == 3);
-  CHECK(edit_distance("kitten", "sitting") == 3);
-  validation::Symbol a{validation::Sym::Var, 0, "laps", {}}, b{validation::Sym::Var, 1, "speed", {}};
-  std::vector<const validation::Symbol *> candidates{&a, &b};
-  CHECK(validation::closest("lap", candidates) == &a);
+TEST_CASE("validate: did-you-mean among the validator's names", "[validate]") {
+  using validation::Sym;
+  using validation::Symbol;
+  const std::string long_name(kMaxSuggestedLength, 'a');
+  Symbol a{Sym::Var, 0, "laps", {}}, b{Sym::Var, 1, "speed", {}}, c{Sym::Var, 2, "y", {}}, d{Sym::Var, 3, "lamp", {}},
+      e{Sym::Var, 4, long_name, {}};
+  std::vector<const Symbol *> candidates{&a, &b, &c, &d, &e};
+  CHECK(validation::closest("lap", candidates) == &a);  // "lamp" is as near, but declared later
   CHECK(validation::closest("spede", candidates) == &b);
-  CHECK(validation::closest("x", candidates) == nullptr);
-  CHECK(validation::closest("laps", candidates) == nullptr);  // itself is not a suggestion
-}
-
-TEST_CASE("validate: the banded edit distance is the distance, capped at the bound plus one", "[validate]") {
-  using validation::edit_distance;
-  using validation::edit_distance_within;
-  CHECK(edit_distance_within("kitten", "sitting", 3) == 3);
-  CHECK(edit_distance_within("kitten", "sitting", 2) == 3);
-  CHECK(edit_distance_within("flaot", "float", 0) == 1);
-  CHECK(edit_distance_within("", "", 0) == 0);
-  // Random names over a small alphabet (so that transpositions and near misses are common),
-  // every bound from 0 to past the distance: a deterministic sweep.
-  std::uint32_t seed = 12345;
-  auto next = [&] { return seed = seed * 1103515245u + 12345u, (seed >> 16) & 0x7fff; };
-  auto word = [&] {
-    std::string w(next() % 12, ' ');
-    for (char &c : w) c = static_cast<char>('a' + next() % 3);
-    return w;
-  };
-  for (int n = 0; n < 3000; ++n) {
-    std::string a = word(), b = word();
-    std::size_t d = edit_distance(a, b);
-    for (std::size_t k = 0; k <= d + 1; ++k) {
-      INFO(a << " / " << b << " k=" << k);
-      REQUIRE(edit_distance_within(a, b, k) == std::min(d, k + 1));
-    }
-  }
+  CHECK(validation::closest("x", candidates) == nullptr);              // `y` is one edit, but every letter of it
+  CHECK(validation::closest("laps", candidates) == nullptr);           // itself is not a suggestion
+  CHECK(validation::closest(long_name + "b", candidates) == nullptr);  // too long to be typed by hand
+  CHECK(validation::closest(long_name.substr(1) + "b", candidates) == &e);
 }

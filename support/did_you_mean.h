@@ -1,0 +1,50 @@
+// Did-you-mean: how near a mistyped name is to the names it could have meant, and which of them
+// is nearest. The validator (unknown names), the loader (missing imports), the options (unknown
+// -W values) and the ALICA reader (references to missing files and ids) all choose this way;
+// each decides only how far a typo may go and what the note says.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <string_view>
+
+namespace gfec {
+
+/// Edit distance: insert, delete, substitute, or swap two neighbours; each costs 1.
+std::size_t edit_distance(std::string_view a, std::string_view b);
+
+/// edit_distance(a, b) if it is at most k, else k + 1: the work is that of a band 2k + 1 wide,
+/// and stops as soon as the distance must exceed k.
+std::size_t edit_distance_within(std::string_view a, std::string_view b, std::size_t k);
+
+/// Names longer than this get no did-you-mean (nobody mistypes a name that long by hand, and the
+/// edit distance costs the product of the lengths).
+constexpr std::size_t kMaxSuggestedLength = 64;
+
+/// How many edits a typo of a name `length` long may hold: about a third of the name, at least
+/// one; close enough to be a typo, far enough apart that short unrelated names are not offered.
+constexpr std::size_t typo_limit(std::size_t length) { return std::max<std::size_t>(1, (length + 1) / 3); }
+
+/// The nearest of candidates offered one by one to a name: at most `limit` edits from it, and of
+/// several equally near the first offered, so a note is deterministic. Only a nearer candidate
+/// costs work (the distance is computed within the best so far), so thousands of near-identical
+/// names stay cheap. A candidate equal to the name is distance 0 like any other: callers that
+/// never suggest the name itself skip it.
+class NearestName {
+public:
+  NearestName(std::string_view name, std::size_t limit) : name_(name), best_(limit + 1) {}
+
+  /// Weighs `candidate`; true when it is the nearest so far (the caller keeps what it stands for).
+  bool offer(std::string_view candidate);
+
+  /// Whether some candidate was near enough, and how near the nearest is.
+  bool found() const { return found_; }
+  std::size_t distance() const { return best_; }
+
+private:
+  std::string_view name_;
+  std::size_t best_;  ///< the nearest distance so far, or the limit + 1
+  bool found_ = false;
+};
+
+}  // namespace gfec
