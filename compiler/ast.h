@@ -57,11 +57,17 @@ struct Expr {
   /// (text()). One field for both, as no expression has a name and a spelling: a chart may hold
   /// millions of expressions (docs/performance.md). The text points into the source text or into
   /// File::strings, both of which outlive the tree: no node owns a copy.
+  /// Unary, Binary: name.range is where the operator is written (op_range()) and name.text is
+  /// empty; an operator has no name, so its range costs the node no byte.
   Name name;
   ExprList args;
 
   /// A literal's spelling (Int, Float, Duration) or a String's decoded value.
   std::string_view text() const { return name.text; }
+  /// Unary, Binary: where the operator is written, so that a message can quote what the user
+  /// wrote (a language that spells `&&` as `AND`); empty for a node a reader made up.
+  const SourceRange &op_range() const { return name.range; }
+  void set_op_range(const SourceRange &r) { name.range = r; }
 };
 
 // ---------------------------------------------------------------- statements

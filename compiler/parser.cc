@@ -827,6 +827,7 @@ ExprPtr Parser::binary(int min_precedence) {
     left_height = grow(std::max(left_height, height_), op_range);
     auto e = make(Expr::Kind::Binary, from(begin));
     e->binary_op = op;
+    e->set_op_range(op_range);
     e->args.push_back(std::move(left));
     e->args.push_back(std::move(right));
     left = std::move(e);
@@ -838,11 +839,13 @@ ExprPtr Parser::unary() {
   if (at(Tok::Not) || at(Tok::Minus)) {
     DepthGuard guard(*this);
     std::uint32_t begin = here();
+    SourceRange op_range = tok_.range;
     UnaryOp op = take().kind == Tok::Not ? UnaryOp::Not : UnaryOp::Neg;
     ExprPtr operand = unary();
     height_ = grow(height_, from(begin));
     auto e = make(Expr::Kind::Unary, from(begin));
     e->unary_op = op;
+    e->set_op_range(op_range);
     e->args.push_back(std::move(operand));
     return e;
   }

@@ -1,5 +1,7 @@
 #include "alica/identifiers.h"
 
+#include "alica/json_tree.h"
+
 #include "naming/naming.h"
 
 #include <fmt/format.h>
@@ -42,6 +44,11 @@ bool ident_char(char c) {
 bool meaningful(const std::string &name) {
   // The designers write MISSING_NAME, or the element's id as its name, when the user gave none.
   return !name.empty() && name != "MISSING_NAME" && name.find_first_not_of("0123456789") != std::string::npos;
+}
+
+std::string label_of(const JsonValue &v) {
+  std::string name = v.string_of("name");
+  return meaningful(name) ? name : "";
 }
 
 std::string identifier(const std::string &text, const std::string &fallback) {

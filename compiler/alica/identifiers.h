@@ -7,9 +7,14 @@
 
 namespace gfec::alica {
 
+struct JsonValue;
+
 /// False for a name the ALICA designers write when the user gave none: empty, MISSING_NAME, or
 /// digits only (the element's id).
 bool meaningful(const std::string &name);
+
+/// An element's name for messages: "" when the designer wrote none (MISSING_NAME, the id).
+std::string label_of(const JsonValue &v);
 
 /// `text` as an identifier: every byte that is not a letter, digit or '_' becomes '_' (a run of
 /// them one '_'); a leading digit gets 'N' in front; a gfec or C keyword gets '_' appended;

@@ -180,9 +180,9 @@ private:
       if (operand->kind == Expect::Kind::Chart) break;  // all chart: the chart's lowering types it
       auto type = unary_type(e->unary_op, operand->type);
       if (!type) {
-        cx_.diag.error(
-            e->range, ErrorKind::TypeMismatch,
-            fmt::format("invalid operand to unary '{}' (have {})", spelling(e->unary_op), quoted(operand->type)));
+        cx_.diag.error(e->range, ErrorKind::TypeMismatch,
+                       fmt::format("invalid operand to unary '{}' (have {})", written_operator(*e, cx_.sources),
+                                   quoted(operand->type)));
         return std::nullopt;
       }
       Expect x = make(Expect::Kind::Unary, *type, e->range);
@@ -199,8 +199,8 @@ private:
       auto type = binary_type(e->binary_op, a->type, b->type);
       if (!type) {
         cx_.diag.error(e->range, ErrorKind::TypeMismatch,
-                       fmt::format("invalid operands to binary '{}' (have {} and {})", spelling(e->binary_op),
-                                   quoted(a->type), quoted(b->type)));
+                       fmt::format("invalid operands to binary '{}' (have {} and {})",
+                                   written_operator(*e, cx_.sources), quoted(a->type), quoted(b->type)));
         return std::nullopt;
       }
       Expect x = make(Expect::Kind::Binary, *type, e->range);

@@ -343,9 +343,9 @@ std::optional<model::Expr> lower_unary(const ast::Expr &e, ExprScope &s) {
   if (!operand) return std::nullopt;
   auto type = unary_type(e.unary_op, operand->type);
   if (!type) {
-    auto &d = s.cx.diag.error(
-        e.range, ErrorKind::TypeMismatch,
-        fmt::format("invalid operand to unary '{}' (have {})", spelling(e.unary_op), quoted(operand->type)));
+    auto &d = s.cx.diag.error(e.range, ErrorKind::TypeMismatch,
+                              fmt::format("invalid operand to unary '{}' (have {})", written_operator(e, s.cx.sources),
+                                          quoted(operand->type)));
     duration_note(d, operand->type, operand->type);
     return std::nullopt;
   }
@@ -369,8 +369,9 @@ void warn_timer_rounding(const ast::Expr &e, const model::Expr &a, const model::
   if (std::fabs(periods - std::round(periods)) < 1e-9) return;
   const model::Model &m = s.cx.model;
   const std::string rounded = fmt::format("{}ms", static_cast<double>(duration.ticks) * period);
-  const std::string means = right ? fmt::format("{} {} {}", source_text(m, a.range), spelling(op), rounded)
-                                  : fmt::format("{} {} {}", rounded, spelling(op), source_text(m, b.range));
+  const std::string written = written_operator(e, s.cx.sources);
+  const std::string means = right ? fmt::format("{} {} {}", source_text(m, a.range), written, rounded)
+                                  : fmt::format("{} {} {}", rounded, written, source_text(m, b.range));
   s.cx.diag.warning(Warning::TimerRounding, duration.range,
                     fmt::format("{} is not a whole number of periods ({}ms): timers count whole ticks, so '{}' "
                                 "means '{}'",
@@ -385,8 +386,8 @@ std::optional<model::Expr> lower_binary(const ast::Expr &e, ExprScope &s) {
   auto type = binary_type(e.binary_op, a->type, b->type);
   if (!type) {
     auto &d = s.cx.diag.error(e.range, ErrorKind::TypeMismatch,
-                              fmt::format("invalid operands to binary '{}' (have {} and {})", spelling(e.binary_op),
-                                          quoted(a->type), quoted(b->type)));
+                              fmt::format("invalid operands to binary '{}' (have {} and {})",
+                                          written_operator(e, s.cx.sources), quoted(a->type), quoted(b->type)));
     duration_note(d, a->type, b->type);
     return std::nullopt;
   }

@@ -73,7 +73,7 @@ std::optional<Type> formula_type(BinaryOp op, Type a, Type b) {
 std::optional<model::Expr> lower_binary(const ast::Expr &e, Context &cx, PlanScope &s, bool constant) {
   BinaryOp op = e.binary_op;
   if (op != BinaryOp::Add && op != BinaryOp::Sub && op != BinaryOp::Mul && op != BinaryOp::Div)
-    return not_allowed(cx, e.range, fmt::format("operator '{}'", spelling(op)));
+    return not_allowed(cx, e.range, fmt::format("operator '{}'", written_operator(e, cx.sources)));
   if (e.args.size() != 2) return std::nullopt;
   auto a = lower_formula(e.args[0], cx, s, constant);
   auto b = lower_formula(e.args[1], cx, s, constant);
@@ -81,8 +81,8 @@ std::optional<model::Expr> lower_binary(const ast::Expr &e, Context &cx, PlanSco
   auto type = formula_type(op, a->type, b->type);
   if (!type) {
     cx.diag.error(e.range, ErrorKind::TypeMismatch,
-                  fmt::format("invalid operands to binary '{}' (have {} and {})", spelling(op), quoted(a->type),
-                              quoted(b->type)));
+                  fmt::format("invalid operands to binary '{}' (have {} and {})", written_operator(e, cx.sources),
+                              quoted(a->type), quoted(b->type)));
     return std::nullopt;
   }
   if (divides_by_zero(op, *a, *b, e.range, cx)) return std::nullopt;
@@ -94,7 +94,8 @@ std::optional<model::Expr> lower_binary(const ast::Expr &e, Context &cx, PlanSco
 }
 
 std::optional<model::Expr> lower_unary(const ast::Expr &e, Context &cx, PlanScope &s, bool constant) {
-  if (e.unary_op != UnaryOp::Neg) return not_allowed(cx, e.range, "operator '!'");
+  if (e.unary_op != UnaryOp::Neg)
+    return not_allowed(cx, e.range, fmt::format("operator '{}'", written_operator(e, cx.sources)));
   if (e.args.size() != 1) return std::nullopt;
   auto operand = lower_formula(e.args[0], cx, s, constant);
   if (!operand) return std::nullopt;

@@ -96,4 +96,13 @@ bool assignable(model::Type to, model::Type from) {
   return to == from;
 }
 
+std::string written_operator(const ast::Expr &e, const SourceManager &sources) {
+  const char *c = e.kind == ast::Expr::Kind::Unary ? spelling(e.unary_op) : spelling(e.binary_op);
+  const SourceRange &r = e.op_range();
+  if (r.end <= r.begin || !sources.knows(r.file)) return c;
+  const SourceFile &file = sources.file(r.file);
+  if (file.is_chart_text() || r.end > file.text().size()) return c;
+  return file.text().substr(r.begin, r.end - r.begin);
+}
+
 }  // namespace gfec::validation

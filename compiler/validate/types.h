@@ -6,6 +6,7 @@
 #include "model.h"
 
 #include <optional>
+#include <string>
 
 namespace gfec::validation {
 
@@ -33,6 +34,11 @@ model::Type promote(model::Type a, model::Type b);
 /// does not mix with numbers; durations are only compared) would not accept it.
 std::optional<model::Type> unary_type(UnaryOp op, model::Type operand);
 std::optional<model::Type> binary_type(BinaryOp op, model::Type a, model::Type b);
+
+/// The operator of a Unary or Binary `e` as its messages quote it: what the user wrote (the
+/// source text of its range) in a file that is not chart text, whose language may spell `&&`
+/// as `AND`; C's spelling otherwise, which is what chart text writes (operators.h).
+std::string written_operator(const ast::Expr &e, const SourceManager &sources);
 
 /// Whether a value of type `from` may be stored in (or passed as) `to`: numbers convert as in
 /// C, bool only to bool, strings only to strings.

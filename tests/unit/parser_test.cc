@@ -79,6 +79,33 @@ TEST_CASE("parser: C precedence and left associativity") {
   CHECK(sub.args[0]->args[1]->binary_op == BinaryOp::Mul);
 }
 
+TEST_CASE("parser: an operator's range is the operator as written, apart from its operands") {
+  // Spaces, brackets and a comment around the operators: the range holds the operator alone.
+  FrontEnd fe({{"t.sfc", "sfc X { initial place A; A -> A when (a)  &&/* c */!  b <= -c; }"}});
+  REQUIRE(fe.text() == "");
+  const std::string &text = fe.sources.file(0).text();
+  auto written = [&](const ast::Expr &e) {
+    const SourceRange &r = e.op_range();
+    CHECK(r.file == e.range.file);
+    CHECK(e.range.begin <= r.begin);
+    CHECK(r.end <= e.range.end);
+    return text.substr(r.begin, r.end - r.begin);
+  };
+  const ast::Expr &and_ = *only_file(fe).charts[0].transitions[0].condition;  // (a) && ((!b) <= (-c))
+  REQUIRE(and_.binary_op == BinaryOp::And);
+  CHECK(written(and_) == "&&");
+  CHECK(and_.op_range().begin == text.find("&&"));
+  const ast::Expr &le = *and_.args[1];
+  REQUIRE(le.binary_op == BinaryOp::Le);
+  CHECK(written(le) == "<=");
+  REQUIRE(le.args[0]->kind == ast::Expr::Kind::Unary);
+  CHECK(written(*le.args[0]) == "!");
+  CHECK(le.args[0]->op_range().begin == text.find('!'));
+  CHECK(written(*le.args[1]) == "-");
+  // An operator has no name: the range sits where a name would, and no text comes with it.
+  CHECK(and_.name.text.empty());
+}
+
 TEST_CASE("parser: fsm states, terminal states with post, bare transitions") {
   FrontEnd fe({{"t.fsm", R"(
 fsm M {

@@ -627,3 +627,48 @@ fsm M {
   CHECK(action[1].else_block.empty());
   CHECK(r.model.charts[0].places[0].timed);  // elapsed() in an if marks the timer
 }
+
+TEST_CASE("validate: a message quotes an operator as written where the file is not chart text", "[validate]") {
+  // Chart text writes C's operators, so its messages quote C's spelling. A reader for a language
+  // that spells them otherwise (IEC 61131-3's `AND`, `NOT`) points an operator's range into its
+  // own file, which is not chart text; no such reader exists yet (ALICA's conditions are
+  // functions, docs/alica.md), so here a tree parsed from chart text gets its operators pointed
+  // into such a file.
+  auto messages = [](const char *pointed_at, bool chart_text) {
+    test::FrontEnd fe({{"t.sfc", R"--(import "bot.iface";
+sfc S {
+  period 10ms;
+  var int n = 0;
+  initial place A;
+  transition A -> A when Black() && n;
+  transition A -> A when !n;
+  transition A -> A when n < Black();
+}
+)--"},
+                       {"bot.iface", kBot}});
+    REQUIRE(fe.text() == "");
+    const std::string text = pointed_at;
+    FileId file = fe.sources.add("t.st", text, chart_text);
+    auto at = [&](const std::string &op) {
+      auto begin = static_cast<std::uint32_t>(text.find(op));
+      return SourceRange{file, begin, begin + static_cast<std::uint32_t>(op.size())};
+    };
+    ast::Chart &chart = fe.loaded.program.files[0]->charts[0];
+    chart.transitions[0].condition->set_op_range(at("AND"));
+    chart.transitions[1].condition->set_op_range(at("NOT"));
+    chart.transitions[2].condition->set_op_range({file, 0, 0});  // a node a reader made up
+    validate(fe.loaded.program, fe.sources, fe.diag);
+    std::string out;
+    for (const auto &d : fe.diag.all()) out += d.message + "\n";
+    return out;
+  };
+  CHECK(messages("Black() AND n; NOT n", false) == R"--(invalid operands to binary 'AND' (have 'bool' and 'int')
+invalid operand to unary 'NOT' (have 'int')
+invalid operands to binary '<' (have 'int' and 'bool')
+)--");
+  // In chart text the written operator is C's: the message does not read the range.
+  CHECK(messages("Black() AND n; NOT n", true) == R"--(invalid operands to binary '&&' (have 'bool' and 'int')
+invalid operand to unary '!' (have 'int')
+invalid operands to binary '<' (have 'int' and 'bool')
+)--");
+}
