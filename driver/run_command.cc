@@ -8,6 +8,7 @@
 #include "interpreter/run_chart.h"
 #include "output_files.h"
 #include "pipeline/compilation.h"
+#include "recording.h"
 #include "viewer_page.h"
 
 #include <CLI/CLI.hpp>
@@ -39,29 +40,20 @@ struct RunOptions {
   Options report;    ///< -f...: the diagnostics' format and style, as gfec's
 };
 
-/// The timeline's rows for chart `c` run as instance `path` ("" for the compiled chart): its
-/// places, then each sub-chart instance's rows, depth first in declaration order (the order of
-/// gfec run's `av` lines and of the picture's frames). A row is named `path/place` and points at
-/// the node the DOT back end gives it (`s0_p1`: place 1 of the chart place 0 runs); `first_row`
-/// maps each instance path to its first row; `instances` lists each instance (not the chart).
-void instance_rows(const model::Model &model, const model::Chart &c, const std::string &path, const std::string &prefix,
-                   nlohmann::json &rows, std::map<std::string, std::size_t> &first_row, nlohmann::json &instances) {
-  const std::size_t first = rows.size();
-  first_row[path] = first;
-  if (!path.empty())
-    instances.push_back({{"path", path}, {"chart", c.name}, {"first", first}, {"count", c.places.size()}});
-  for (model::PlaceId i : c.places.ids()) {
-    nlohmann::json row = {{"name", path.empty() ? c.places[i].name.str() : path + "/" + c.places[i].name},
-                          {"node", fmt::format("{}p{}", prefix, i.index())},
-                          {"terminal", c.places[i].terminal != model::Terminal::None}};
-    if (!path.empty()) row["group"] = path;
-    rows.push_back(row);
+/// Chart `c` and the charts its places run, depth first, as the recording builder reads them;
+/// returns c's index in `outline`.
+int outline_chart(const model::Model &model, model::ChartId c, viewer::ChartOutline &outline) {
+  const model::Chart &chart = model.charts.at(c);
+  const int index = static_cast<int>(outline.charts.size());
+  outline.charts.push_back({chart.name, {}});
+  std::vector<viewer::ChartOutline::Place> places;
+  for (model::PlaceId i : chart.places.ids()) {
+    const model::Place &p = chart.places[i];
+    places.push_back(
+        {p.name.str(), p.terminal != model::Terminal::None, p.runs ? outline_chart(model, p.runs, outline) : -1});
   }
-  for (model::PlaceId i : c.places.ids())
-    if (c.places[i].runs)
-      instance_rows(model, model.charts.at(c.places[i].runs),
-                    path.empty() ? c.places[i].name.str() : path + "." + c.places[i].name,
-                    fmt::format("{}s{}_", prefix, i.index()), rows, first_row, instances);
+  outline.charts[static_cast<std::size_t>(index)].places = std::move(places);
+  return index;
 }
 
 /// The run viewer's recording of an interpreter run (docs/viewer.md): the chart's picture, the
@@ -69,12 +61,24 @@ void instance_rows(const model::Model &model, const model::Chart &c, const std::
 /// each tick did, taken from the run's log. Frame k is tick k + 1; there is no world and no robot.
 nlohmann::json viewer_data(const model::Model &model, model::ChartId chart, const interp::RunResult &r,
                            const RunOptions &o) {
-  using nlohmann::json;
   const model::Chart &c = model.charts.at(chart);
   const bool fsm = c.kind == model::Chart::Kind::Fsm;
-  json rows = json::array(), instances = json::array();
-  std::map<std::string, std::size_t> first_row;
-  instance_rows(model, c, "", "", rows, first_row, instances);
+  const double period_ms = c.period_ms > 0 ? c.period_ms : 10.0;
+  viewer::RecordingBuilder rec("gfec run", c.name, fsm ? "fsm" : "sfc", o.input, period_ms / 1000);
+  // The timeline's rows: the chart's places, then each sub-chart instance's rows, depth first in
+  // declaration order (the order of gfec run's `av` lines and of the picture's frames).
+  viewer::ChartOutline outline;
+  outline_chart(model, chart, outline);
+  std::vector<viewer::Row> rows;
+  std::vector<viewer::Instance> instances;
+  viewer::outline_rows(outline, rows, instances);
+  for (const viewer::Row &row : rows) rec.add_row(row);
+  // Each instance path's first row ("" the chart's own).
+  std::map<std::string, std::size_t> first_row{{"", 0}};
+  for (const viewer::Instance &in : instances) {
+    rec.add_instance(in);
+    first_row[in.path] = in.first;
+  }
   std::string svg, note;
   try {
     EmitOptions emit;
@@ -84,20 +88,18 @@ nlohmann::json viewer_data(const model::Model &model, model::ChartId chart, cons
     if (auto backend = make_backend("svg"))
       svg = emit_to_memory(*backend, model, emit, run_external_tool).at(0).contents;
   } catch (const std::exception &e) { note = fmt::format("no diagram: {}", e.what()); }
-  viewer::ChangeList active, status_list;
-  viewer::CallRecorder calls;
-  json events = json::array();
+  rec.set_picture(svg, note);
   long frame = -1;
   std::vector<std::string> tick_calls;
   std::string status = "running";
-  json on = json::array();  // the rows active after the current tick
+  std::vector<std::size_t> on;  // the rows active after the current tick
   auto finish_tick = [&] {
     if (frame >= 0) {
-      calls.record(frame, tick_calls);
-      active.record(frame, on);
+      rec.record_calls(frame, tick_calls);
+      rec.add_tick(on);
     }
     tick_calls.clear();
-    on = json::array();
+    on.clear();
   };
   // "av 1 0 2" (the chart) or "av Search.Grab: 0 1" (a running instance): whose line, and the rest.
   auto owner = [](const std::string &text, std::size_t from) {
@@ -128,41 +130,24 @@ nlohmann::json viewer_data(const model::Model &model, model::ChartId chart, cons
     case interp::EventKind::State: {
       // "state Z3 succeeded": the status is the last word.
       std::string now = e.text.substr(e.text.rfind(' ') + 1);
-      if (now != status) events.push_back({frame, "status", now});
+      if (now != status) rec.add_event(frame, "status", now);
       status = now;
       break;
     }
-    case interp::EventKind::Fire: events.push_back({frame, fsm ? "state" : "fire", e.text}); [[fallthrough]];
+    case interp::EventKind::Fire: rec.add_event(frame, fsm ? "state" : "fire", e.text); [[fallthrough]];
     default:
       if (interp::layer_of(e.kind) != interp::Layer::Hooks)
         tick_calls.push_back(std::string(static_cast<std::size_t>(2 * std::max(0, e.depth - 1)), ' ') + e.text);
     }
-    if (frame >= 0) status_list.record(frame, status);
+    if (frame >= 0) rec.record_status(frame, status);
   }
   finish_tick();
-  const long frames = frame + 1;
-  return {
-      {"format", 1},
-      {"tool", "gfec run"},
-      {"title",
-       fmt::format("{} ({}): {} after {} tick{}", c.name, fsm ? "fsm" : "sfc", status, frames, frames == 1 ? "" : "s")},
-      {"subtitle",
-       fmt::format("gfec run {}{}{} \u00b7 reference interpreter \u00b7 period {:g} ms", o.input,
-                   o.inputs_csv.empty() ? "" : " --inputs ", o.inputs_csv, c.period_ms > 0 ? c.period_ms : 10.0)},
-      {"chart", {{"name", c.name}, {"kind", fsm ? "fsm" : "sfc"}, {"file", o.input}}},
-      {"period", (c.period_ms > 0 ? c.period_ms : 10.0) / 1000},
-      {"frames", frames},
-      {"svg", svg},
-      {"svg_note", note},
-      {"rows", rows},
-      {"instances", instances},
-      {"active", active.json()},
-      {"calls", calls.json()},
-      {"events", events},
-      {"fired", json::array()},
-      {"status", status_list.json()},
-      {"world", nullptr},
-  };
+  const long frames = rec.frames();
+  rec.set_title(
+      fmt::format("{} ({}): {} after {} tick{}", c.name, fsm ? "fsm" : "sfc", status, frames, frames == 1 ? "" : "s"),
+      fmt::format("gfec run {}{}{} \u00b7 reference interpreter \u00b7 period {:g} ms", o.input,
+                  o.inputs_csv.empty() ? "" : " --inputs ", o.inputs_csv, period_ms));
+  return rec.data();
 }
 
 int run_with(const RunOptions &o, DiagnosticReport &report, std::ostream &out) {

@@ -1,13 +1,38 @@
-# Writes OUTPUT, a C++ file defining gfec::viewer::page_template(), from the text of INPUT.
+# Writes OUTPUT, a C++ file defining gfec::viewer::page_template(), from the page's modules in
+# DIR (docs/viewer.md "How the page is built"): DIR/page.html with each line `@@include NAME@@`
+# replaced by the text of DIR/NAME, and every line starting `//!` (a module's notes) dropped.
 # The text is split into raw-string pieces of at most 8000 bytes (compilers cap one literal's
-# length) with a delimiter that the template never contains.
-file(READ ${INPUT} text)
+# length) with a delimiter that the page never contains.
+
+# The text of FILE without its `//!` lines.
+function(read_module file out)
+  file(READ ${file} text)
+  set(text "\n${text}")
+  string(REGEX REPLACE "\n//![^\n]*" "" text "${text}")
+  string(SUBSTRING "${text}" 1 -1 text)
+  set(${out} "${text}" PARENT_SCOPE)
+endfunction()
+
+read_module(${DIR}/page.html text)
+string(REGEX MATCHALL "@@include [A-Za-z0-9_.-]+@@\n" includes "${text}")
+foreach(include IN LISTS includes)
+  string(REGEX REPLACE "@@include ([A-Za-z0-9_.-]+)@@\n" "\\1" name "${include}")
+  if(NOT EXISTS ${DIR}/${name})
+    message(FATAL_ERROR "${DIR}/page.html includes ${name}, which ${DIR} does not hold")
+  endif()
+  read_module(${DIR}/${name} module)
+  string(REPLACE "${include}" "${module}" text "${text}")
+endforeach()
+string(FIND "${text}" "@@include" left)
+if(NOT left EQUAL -1)
+  message(FATAL_ERROR "${DIR}/page.html: an @@include line that is not `@@include NAME@@` alone on its line")
+endif()
 string(FIND "${text}" ")gfecviewer\"" clash)
 if(NOT clash EQUAL -1)
-  message(FATAL_ERROR "${INPUT} contains the raw-string delimiter )gfecviewer\"")
+  message(FATAL_ERROR "the viewer page contains the raw-string delimiter )gfecviewer\"")
 endif()
 string(LENGTH "${text}" length)
-set(out "// Generated from ${INPUT} by embed_template.cmake. Do not edit.\n#include \"viewer_page.h\"\n\nnamespace gfec::viewer {\n\nconst std::string &page_template() {\n  static const std::string text = std::string()")
+set(out "// Generated from ${DIR} by embed_template.cmake. Do not edit.\n#include \"viewer_page.h\"\n\nnamespace gfec::viewer {\n\nconst std::string &page_template() {\n  static const std::string text = std::string()")
 set(pos 0)
 while(pos LESS length)
   string(SUBSTRING "${text}" ${pos} 8000 piece)

@@ -1,5 +1,6 @@
 // The run viewer: one self-contained HTML page showing a recorded run (docs/viewer.md). The page
-// is a fixed template (page_template.html, embedded at build time) plus the run's data as JSON.
+// is a fixed template (viewer/page/, its modules assembled at build time) plus the run's data as
+// JSON, the recording that RecordingBuilder (recording.h) builds.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -10,7 +11,7 @@
 
 namespace gfec::viewer {
 
-/// The template's text (generated from page_template.html by embed_template.cmake).
+/// The template's text (assembled from viewer/page/ by embed_template.cmake).
 const std::string &page_template();
 
 /// The page for `data`, a recording as docs/viewer.md describes it ("kind", "rows", "active",

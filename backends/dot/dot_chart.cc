@@ -1,5 +1,6 @@
 #include "dot_chart.h"
 
+#include "chart_nodes.h"
 #include "dot_text.h"
 #include "xml_text.h"
 
@@ -33,7 +34,7 @@ std::string place_node(const model::Model &m, const model::Chart &c, std::size_t
   if (p.entry) actions = "entry: " + block_text(m, chart, *p.entry) + (actions.empty() ? "" : "\n" + actions);
   if (p.exit) actions += (actions.empty() ? "" : "\n") + std::string("exit: ") + block_text(m, chart, *p.exit);
   if (!actions.empty()) label += "\n" + std::string(12, '-') + "\n" + actions;
-  return fmt::format("  {}p{} [{}, label={}];\n", id, i, attrs, quote(label));
+  return fmt::format("  {} [{}, label={}];\n", chart_nodes::place(id, i), attrs, quote(label));
 }
 
 /// A transition: Grafcet's bar with its label to its right. The label is a cell of the node's
@@ -75,28 +76,29 @@ void chart_body(const model::Model &m, const model::Chart &c, const std::string 
     // An fsm tries the transitions leaving its state in declaration order and takes the first
     // whose condition holds: the picture numbers them so, 1 first, per state.
     if (fsm && !t.inputs.empty()) label = fmt::format("{}. {}", ++leaving.at(t.inputs[0].index()), label);
-    std::string bar = fmt::format("{}t{}", id, i);
+    std::string bar = chart_nodes::transition(id, i);
     out << transition_node(bar, label);
     std::string into = bar + ":bar", from = bar + ":bar";
     if (t.inputs.size() > 1) {
-      into = fmt::format("{}join{}", id, i);
+      into = chart_nodes::join(id, i);
       out << sync_bar(into, t.inputs.size());
       out << fmt::format("  {} -> {}:bar [arrowhead=none];\n", into, bar);
     }
     if (t.outputs.size() > 1) {
-      from = fmt::format("{}fork{}", id, i);
+      from = chart_nodes::fork(id, i);
       out << sync_bar(from, t.outputs.size());
       out << fmt::format("  {}:bar -> {} [arrowhead=none];\n", bar, from);
     }
-    for (model::PlaceId p : t.inputs) out << fmt::format("  {}p{} -> {} [arrowhead=none];\n", id, p.index(), into);
-    for (model::PlaceId p : t.outputs) out << fmt::format("  {} -> {}p{};\n", from, id, p.index());
+    for (model::PlaceId p : t.inputs)
+      out << fmt::format("  {} -> {} [arrowhead=none];\n", chart_nodes::place(id, p.index()), into);
+    for (model::PlaceId p : t.outputs) out << fmt::format("  {} -> {};\n", from, chart_nodes::place(id, p.index()));
   }
   for (std::size_t i = 0; i < c.places.size(); ++i) {
     const model::Place &p = c.places[i];
     if (!p.runs) continue;
     const model::Chart &sub = m.charts.at(p.runs);
-    std::string inner = fmt::format("{}s{}_", id, i);
-    out << fmt::format("  subgraph cluster_{}s{} {{\n", id, i);
+    std::string inner = chart_nodes::instance_prefix(id, i), frame = chart_nodes::instance_frame(id, i);
+    out << fmt::format("  subgraph {} {{\n", frame);
     out << fmt::format(
         "  graph [label={}, style=\"dashed,rounded\", labeljust=l];\n",
         quote(fmt::format("{}: {} {}", p.name, sub.kind == model::Chart::Kind::Fsm ? "fsm" : "sfc", sub.name)));
@@ -104,7 +106,8 @@ void chart_body(const model::Model &m, const model::Chart &c, const std::string 
     out << "  }\n";
     // To the sub-chart's first place, clipped at the frame: the line reads "this step encloses that".
     if (!sub.places.empty())
-      out << fmt::format("  {}p{} -> {}p0 [style=dashed, arrowhead=none, lhead=cluster_{}s{}];\n", id, i, inner, id, i);
+      out << fmt::format("  {} -> {} [style=dashed, arrowhead=none, lhead={}];\n", chart_nodes::place(id, i),
+                         chart_nodes::place(inner, 0), frame);
   }
 }
 

@@ -1,5 +1,6 @@
 #include "dot_plan.h"
 
+#include "chart_nodes.h"
 #include "dot_text.h"
 
 #include <fmt/format.h>
@@ -25,7 +26,8 @@ public:
     out_ += "  // actors: the start actor double-bordered; result states lead to the next actor\n";
     for (model::ActorId i : plan_.actors.ids()) actor(i);
     out_ += "  // global supervisors: may interrupt any actor\n";
-    for (std::size_t i = 0; i < plan_.globals.size(); ++i) supervisor(plan_.globals[i], fmt::format("g{}", i), "");
+    for (std::size_t i = 0; i < plan_.globals.size(); ++i)
+      supervisor(plan_.globals[i], chart_nodes::global_supervisor(i), "");
     out_ += "}\n";
     return std::move(out_);
   }
@@ -39,7 +41,8 @@ private:
       const model::ConfigEntry &c = plan_.config[i];
       std::string label = fmt::format("{} {}", model::type_name(c.type), c.name);
       if (c.init) label += " = " + source_text(m_, c.init->range);
-      out_ += fmt::format("    c{} [shape=note, style=filled, fillcolor=\"#fff8dc\", label={}];\n", i, quote(label));
+      out_ += fmt::format("    {} [shape=note, style=filled, fillcolor=\"#fff8dc\", label={}];\n",
+                          chart_nodes::constraint(i), quote(label));
     }
     out_ += "  }\n";
   }
@@ -51,7 +54,7 @@ private:
   }
 
   std::string target(const model::Target &t) const {
-    return t.kind == model::Target::Kind::Actor ? fmt::format("a{}", t.actor.index()) : "terminate";
+    return t.kind == model::Target::Kind::Actor ? chart_nodes::actor(t.actor.index()) : "terminate";
   }
 
   /// Thin gray edges: config -> node for what an `in` argument reads, node -> config for an
@@ -64,7 +67,8 @@ private:
       bool out = a.dir == model::ParamDir::Out;
       for (model::ConfigId c : entries) {
         if (!drawn.insert({c, out}).second) continue;
-        out_ += out ? fmt::format("  {} -> c{}", node, c.index()) : fmt::format("  c{} -> {}", c.index(), node);
+        const std::string entry = chart_nodes::constraint(c.index());
+        out_ += out ? fmt::format("  {} -> {}", node, entry) : fmt::format("  {} -> {}", entry, node);
         out_ += " [penwidth=0.5, color=gray45, arrowsize=0.4, constraint=false];\n";
       }
     }
@@ -77,7 +81,7 @@ private:
 
   void actor(model::ActorId i) {
     const model::ActorUse &a = plan_.actors[i];
-    const std::string node = fmt::format("a{}", i.index());
+    const std::string node = chart_nodes::actor(i.index());
     bool sub = a.subplan.valid();
     std::string templ = sub ? m_.plans.at(a.subplan).name : m_.templates.at(a.templ).name;
     std::string kind = sub                                                                   ? "plan"
@@ -95,7 +99,7 @@ private:
     }
     data_flow(node, a.args);
     for (std::size_t s = 0; s < a.supervisors.size(); ++s)
-      supervisor(a.supervisors[s], fmt::format("s{}_{}", i.index(), s), node);
+      supervisor(a.supervisors[s], chart_nodes::supervisor(i.index(), s), node);
   }
 
   /// A supervisor: a hexagon watching its actor (dotted, no arrow), its events as dashed red

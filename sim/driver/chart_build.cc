@@ -9,6 +9,8 @@
 #include "driver/engine_abi.h"
 #include "driver/engine_cache.h"
 #include "driver/process.h"
+#include "chart_nodes.h"
+#include "recording.h"
 
 namespace carbot::driver {
 namespace {
@@ -30,8 +32,6 @@ void run_gfec(const std::vector<std::string>& argv, const std::string& chart) {
 }
 
 void read_viewer_info(const nlohmann::json& model, ChartInfo& info);
-void instance_rows(const nlohmann::json& chart, const nlohmann::json& subcharts, const std::string& path,
-                   const std::string& prefix, std::size_t first, ChartInfo& info);
 
 ChartInfo read_chart_info(const std::string& model_path) {
   std::ifstream in(model_path);
@@ -73,65 +73,68 @@ ChartInfo read_chart_info(const std::string& model_path) {
   return info;
 }
 
-/// The rows of the sub-chart instances that the places of `chart` (a model JSON chart) run,
-/// depth first in declaration order: the order of gfec's picture frames, whose nodes are
-/// prefixed "s<place>_" per level. `first` is the row of `chart`'s first place.
-void instance_rows(const nlohmann::json& chart, const nlohmann::json& subcharts, const std::string& path,
-                   const std::string& prefix, std::size_t first, ChartInfo& info) {
+/// The places (sfc) or states (fsm) of `chart`, a model JSON chart, or null.
+const nlohmann::json* places_of(const nlohmann::json& chart) {
   const char* key = chart.value("kind", "") == "fsm" ? "states" : "places";
-  if (!chart.contains(key) || !chart[key].is_array()) return;
-  const nlohmann::json& places = chart[key];
-  for (std::size_t i = 0; i < places.size(); ++i) {
-    if (!places[i].contains("runs") || !places[i]["runs"].is_string()) continue;
-    const std::string runs = places[i]["runs"].get<std::string>();
-    const nlohmann::json* sub = nullptr;
-    for (const nlohmann::json& c : subcharts)
-      if (c.value("name", "") == runs) sub = &c;
-    if (!sub) continue;
-    const char* sub_key = sub->value("kind", "") == "fsm" ? "states" : "places";
-    if (!sub->contains(sub_key) || !(*sub)[sub_key].is_array()) continue;
-    const std::string name = places[i].value("name", "?");
-    ChartInfo::Instance in;
-    in.path = path.empty() ? name : path + "." + name;
-    in.chart = runs;
-    in.first = info.rows.size();
-    in.count = (*sub)[sub_key].size();
-    in.parent_row = first + i;
-    const std::string inner = fmt::format("{}s{}_", prefix, i);
-    for (std::size_t q = 0; q < in.count; ++q) {
-      const nlohmann::json& pl = (*sub)[sub_key][q];
-      info.rows.push_back({in.path + "/" + pl.value("name", "?"), fmt::format("{}p{}", inner, q),
-                           pl.contains("terminal") && pl["terminal"].is_string(), in.path});
-    }
-    info.instances.push_back(in);
-    instance_rows(*sub, subcharts, in.path, inner, in.first, info);
+  return chart.contains(key) && chart[key].is_array() ? &chart[key] : nullptr;
+}
+
+/// The chart of `model` (gfec's JSON) and its sub-charts as the run viewer's outline: charts[0]
+/// the chart, charts[1 + i] the model's subcharts[i]; a place runs the sub-chart it names.
+gfec::viewer::ChartOutline chart_outline(const nlohmann::json& model, const nlohmann::json& subcharts) {
+  gfec::viewer::ChartOutline outline;
+  std::vector<const nlohmann::json*> charts{&model};
+  for (const nlohmann::json& c : subcharts) charts.push_back(&c);
+  for (const nlohmann::json* c : charts) {
+    gfec::viewer::ChartOutline::Chart chart{c->value("name", "?"), {}};
+    if (const nlohmann::json* places = places_of(*c))
+      for (const nlohmann::json& pl : *places) {
+        gfec::viewer::ChartOutline::Place place{pl.value("name", "?"),
+                                                pl.contains("terminal") && pl["terminal"].is_string(), -1};
+        if (pl.contains("runs") && pl["runs"].is_string())
+          for (std::size_t i = 0; i < subcharts.size(); ++i)
+            if (subcharts[i].value("name", "") == pl["runs"].get<std::string>() && places_of(subcharts[i]))
+              place.runs = static_cast<int>(i + 1);
+        chart.places.push_back(place);
+      }
+    outline.charts.push_back(std::move(chart));
   }
+  return outline;
 }
 
 /// What the run viewer needs from the model: the timeline's rows and their picture nodes (the
-/// ids gfec's DOT back end gives them: places and states "pN", actors "aN", supervisors "sN_M"
-/// and global ones "gN"), and the interface functions with their C types.
+/// ids gfec's DOT back end gives them, support/chart_nodes.h: places and states "pN", actors
+/// "aN", supervisors "sN_M" and global ones "gN"), and the interface functions with their C types.
 void read_viewer_info(const nlohmann::json& model, ChartInfo& info) {
   auto array = [&](const char* key) {
     return model.contains(key) && model[key].is_array() ? model[key] : nlohmann::json::array();
   };
-  const char* places = info.kind == "fsm" ? "states" : info.kind == "sfc" ? "places" : "actors";
-  const nlohmann::json rows = array(places);
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    const nlohmann::json& r = rows[i];
-    ChartInfo::Row row{r.value("name", "?"), fmt::format("{}{}", info.kind == "plan" ? "a" : "p", i), false, ""};
-    row.terminal = r.contains("terminal") && r["terminal"].is_string();
-    if (info.kind == "plan" && r.contains("supervisors") && r["supervisors"].is_array())
-      for (std::size_t s = 0; s < r["supervisors"].size(); ++s)
-        info.supervisor_nodes[row.name + "/" + r["supervisors"][s].value("name", "?")] = fmt::format("s{}_{}", i, s);
-    info.rows.push_back(row);
-  }
-  info.own_rows = info.rows.size();
-  if (info.kind != "plan") instance_rows(model, array("subcharts"), "", "", 0, info);
-  if (info.kind == "plan") {
+  if (info.kind != "plan") {
+    // The places or states, then the sub-chart instances' rows (the viewer's one walk of them).
+    std::vector<gfec::viewer::Row> rows;
+    std::vector<gfec::viewer::Instance> instances;
+    const gfec::viewer::ChartOutline outline = chart_outline(model, array("subcharts"));
+    gfec::viewer::outline_rows(outline, rows, instances);
+    info.own_rows = outline.charts.front().places.size();
+    for (const gfec::viewer::Row& r : rows) info.rows.push_back({r.name, r.node, r.terminal, r.group});
+    for (const gfec::viewer::Instance& in : instances)
+      info.instances.push_back({in.path, in.chart, in.first, in.count, in.parent_row});
+  } else {
+    const nlohmann::json actors = array("actors");
+    for (std::size_t i = 0; i < actors.size(); ++i) {
+      const nlohmann::json& r = actors[i];
+      ChartInfo::Row row{r.value("name", "?"), gfec::chart_nodes::actor(i), false, ""};
+      row.terminal = r.contains("terminal") && r["terminal"].is_string();
+      if (r.contains("supervisors") && r["supervisors"].is_array())
+        for (std::size_t s = 0; s < r["supervisors"].size(); ++s)
+          info.supervisor_nodes[row.name + "/" + r["supervisors"][s].value("name", "?")] =
+              gfec::chart_nodes::supervisor(i, s);
+      info.rows.push_back(row);
+    }
+    info.own_rows = info.rows.size();
     const nlohmann::json globals = array("supervisors");
     for (std::size_t g = 0; g < globals.size(); ++g)
-      info.supervisor_nodes[globals[g].value("name", "?")] = fmt::format("g{}", g);
+      info.supervisor_nodes[globals[g].value("name", "?")] = gfec::chart_nodes::global_supervisor(g);
   }
   // The functions the chart calls, and those its sub-charts call (each once): all are wrapped.
   std::vector<nlohmann::json> function_lists = {array("functions")};

@@ -1,0 +1,17 @@
+//! info.js: The info pane: the fired readout (plans only) and the events list, each event a jump.
+  if (D.chart.kind !== 'plan') {
+    document.getElementById('r-fired-label').style.display = 'none';
+    document.getElementById('r-fired').style.display = 'none';
+  }
+
+  // ---- events list ----
+  var evList = document.getElementById('events'), evItems = [];
+  events.forEach(function (e) {
+    var li = document.createElement('li');
+    li.textContent = fmt(e[0] * period, 2) + ' s  ' + e[2];
+    li.title = 'tick ' + e[0] + ' (' + e[1] + ')';
+    li.addEventListener('click', function () { pause(); seek(e[0]); });
+    evList.appendChild(li);
+    evItems.push(li);
+  });
+
