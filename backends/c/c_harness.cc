@@ -10,12 +10,17 @@
 #include <cstdio>
 #include <stdexcept>
 #include <string_view>
+#include <utility>
 
 namespace gfec::c_backend {
 
 namespace {
 
 using model::Type;
+
+/// The names the C back end chose for a chart's engine (c_context.h), by whatever name its type goes.
+using Names = decltype(make_context(std::declval<const model::Model &>(), std::declval<const model::Chart &>(),
+                                    std::declval<const EmitOptions &>()))::element_type;
 
 std::string c_string(std::string_view s) {
   std::string out = "\"";
@@ -206,8 +211,8 @@ std::string input_tables(const model::Model &m, const std::vector<model::Functio
       std::string row;
       for (std::uint64_t t = 1; t <= ticks; ++t) {
         const bool given = t <= o.table.ticks && o.table.value;
-        row += (t > 1 ? ", " : "") +
-               c_constant(given ? o.table.value(id, t, a) : interp::Value::zero(f.result), f.result);
+        row +=
+            (t > 1 ? ", " : "") + c_constant(given ? o.table.value(id, t, a) : interp::Value::zero(f.result), f.result);
       }
       rows += fmt::format("{}{{{}}}", a ? ", " : "", row);
     }
@@ -265,19 +270,14 @@ std::string hooks(const model::Chart &c, const std::string &t, const HarnessOpti
   for (const auto &tr : c.transitions) s += c_string(tr.name) + ", ";
   s += "\"\"};\n\n";
   s += fmt::format("void {0}_activated(const {0} *m, {0}_place place, bool active)\n{{\n    (void)m;\n", t);
-  s += Line("    ")
-           .text(lead)
-           .string("active ? \"gained\" : \"lost\"")
-           .text(" ")
-           .string("@H@place_names[place]")
-           .end();
+  s += Line("    ").text(lead).string("active ? \"gained\" : \"lost\"").text(" ").string("@H@place_names[place]").end();
   s += fmt::format("}}\n\nvoid {0}_enabled(const {0} *m, {0}_transition transition)\n{{\n    (void)m;\n", t);
   s += Line("    ").text(lead + "enabled ").string("@H@transition_names[transition]").end();
   return s + "}\n#endif\n\n";
 }
 
 /// The records of one agent's engine `m` (HarnessLog::Records).
-std::string records(const model::Model &model, model::ChartId chart, const Engine &fields,
+std::string records(const model::Model &model, model::ChartId chart, const Names &fields,
                     const std::vector<scenario::Instance> &instances) {
   const model::Chart &c = model.charts[chart];
   const std::string &t = c.name;
@@ -286,10 +286,11 @@ std::string records(const model::Model &model, model::ChartId chart, const Engin
   s += Line("        ").text(" ").unsigned_(t + "_activation(m, p)").end(false) + "    }\n    @H@s(\"\\n\");\n";
   // Each sub-chart instance's activation, numbered as X_instance numbers them.
   for (std::size_t k = 0; k < instances.size(); ++k)
-    s += fmt::format("    @H@s(\"inst {}\");\n    for (p = 0; p < {}; ++p) {{\n", k,
-                     model.charts[instances[k].chart].places.size()) +
-         Line("        ").text(" ").unsigned_(fmt::format("{}(m, {}, p)", fields.instance_activation_fn, k)).end(false) +
-         "    }\n    @H@s(\"\\n\");\n";
+    s +=
+        fmt::format("    @H@s(\"inst {}\");\n    for (p = 0; p < {}; ++p) {{\n", k,
+                    model.charts[instances[k].chart].places.size()) +
+        Line("        ").text(" ").unsigned_(fmt::format("{}(m, {}, p)", fields.instance_activation_fn, k)).end(false) +
+        "    }\n    @H@s(\"\\n\");\n";
   if (c.kind == model::Chart::Kind::Fsm)
     s += Line("    ").text("state ").integer(t + "_state(m)").text(" ").integer(t + "_status(m)").end();
   for (model::VarId i : c.vars.ids())
@@ -308,18 +309,19 @@ std::string observable(const model::Chart &c) {
   s += Line("        ").text(" ").unsigned_(t + "_activation(m, p)").end(false) + "    }\n    @H@s(\"\\n\");\n";
   if (c.kind != model::Chart::Kind::Fsm) s += "    (void)@H@place_names; /* the hooks' */\n";
   if (c.kind == model::Chart::Kind::Fsm)
-    s += Line("    ")
-             .text("state ")
-             .string(fmt::format("@H@place_names[{}_state(m)]", t))
-             .text(" ")
-             .string(fmt::format("{0}_status(m) == 0 ? \"running\" : {0}_status(m) > 0 ? \"succeeded\" : \"failed\"", t))
-             .end();
+    s +=
+        Line("    ")
+            .text("state ")
+            .string(fmt::format("@H@place_names[{}_state(m)]", t))
+            .text(" ")
+            .string(fmt::format("{0}_status(m) == 0 ? \"running\" : {0}_status(m) > 0 ? \"succeeded\" : \"failed\"", t))
+            .end();
   return s + "}\n\n";
 }
 
 /// The compact log's lines after a tick: the active places by name (an fsm's state and status),
 /// and with -DHARNESS_INSTANCES every instance's active places, `in A.M1: L2`.
-std::string compact(const model::Model &model, model::ChartId chart, const Engine &fields,
+std::string compact(const model::Model &model, model::ChartId chart, const Names &fields,
                     const std::vector<scenario::Instance> &instances) {
   const model::Chart &c = model.charts[chart];
   const std::string &t = c.name;
@@ -471,8 +473,9 @@ HarnessSources write_harness(const model::Model &model, model::ChartId chart, co
     g += "/* harness.c: the values `set` gave each agent's sensing functions. */\n"
          "int @H@bool(int agent, int function);\nint @H@int(int agent, int function);\n"
          "float @H@float(int agent, int function);\ndouble @H@double(int agent, int function);\n";
-  if (o.inputs == HarnessInputs::Script) g += "/* harness.c: the value this tick's line gives a name. */\n"
-                                              "double @H@value(const char *name);\n";
+  if (o.inputs == HarnessInputs::Script)
+    g += "/* harness.c: the value this tick's line gives a name. */\n"
+         "double @H@value(const char *name);\n";
   if (o.inputs != HarnessInputs::Table) g += "void @H@init(void);\nvoid @H@tick(void);\n";
   g += fmt::format("\n/* The engines, one per agent, and the agent whose engine runs: its calls read its values. */\n"
                    "static {} {}[{}];\nstatic int @H@agent;\nstatic unsigned long @H@tick_count;\n",
@@ -507,7 +510,8 @@ HarnessSources write_harness(const model::Model &model, model::ChartId chart, co
   g += "}\n\n";
   g += fmt::format("{}void @H@tick(void)\n{{\n    int a;\n    ++@H@tick_count;\n",
                    o.inputs == HarnessInputs::Table ? "static " : "");
-  g += o.log == HarnessLog::Records ? "    @H@s(\"tick\\n\");\n" : Line("    ").text("tick ").unsigned_("@H@tick_count").end();
+  g += o.log == HarnessLog::Records ? "    @H@s(\"tick\\n\");\n"
+                                    : Line("    ").text("tick ").unsigned_("@H@tick_count").end();
   g += fmt::format("    for (a = 0; a < {}; ++a) {{\n", n);
   if (team) g += Line("        ").text("agent ").integer("a").end();
   g += fmt::format("        @H@agent = a;\n        {}(&{}[a]);\n", fields->run_fn, kEngines);

@@ -15,10 +15,10 @@ namespace {
 /// Inputs that vary by function, tick and agent, the same for the interpreter and the table;
 /// `special` values stress the character output's number formatting.
 interp::Value input(const model::Model &m, model::FunctionId f, std::uint64_t tick, int agent) {
-  static const double special[] = {0.1,     -0.3,   1e-7,        5e-324,  1.5e300, -0.0,    123456789.0,
-                                   0.5,     2.5e-5, 1e16,        1e17,    99999.5, 1.0 / 3, 4503599627370497.0,
-                                   1e-4,    1e-5,   0.000123456, 1e21,    7.0,     2.0e-308};
-  static const float special_float[] = {0.1f, -0.3f,  1e-7f, 1.4e-45f, 3.4e38f, -0.0f,
+  static const double special[] = {0.1,  -0.3,   1e-7,        5e-324, 1.5e300, -0.0,    123456789.0,
+                                   0.5,  2.5e-5, 1e16,        1e17,   99999.5, 1.0 / 3, 4503599627370497.0,
+                                   1e-4, 1e-5,   0.000123456, 1e21,   7.0,     2.0e-308};
+  static const float special_float[] = {0.1f, -0.3f, 1e-7f, 1.4e-45f, 3.4e38f, -0.0f,
                                         1e8f, 0.75f, 7.0f,  1e-4f,    1e-5f,   16777217.0f};
   const std::size_t k = f.index() * 7 + tick * 3 + static_cast<std::size_t>(agent) * 5;
   switch (m.functions[f].result) {
