@@ -1,6 +1,6 @@
 // The generated C engine under `gfec test` (docs/testing-charts.md "How the C engine is run"):
-// the C back end's engine for the test's chart, plus a generated harness (glue.c and harness.c)
-// that implements the chart's interface functions, built with the system C compiler ($CC, else
+// the C back end's engine for the test's chart, plus the harness that backends/c/c_harness.h
+// writes for it (glue.c and harness.c, with Steps inputs and Records), built with the system C compiler ($CC, else
 // `cc`) once per distinct engine and run once per test.
 //
 // The exchange is plain text. The runner writes the test's steps to the harness's stdin, one a
@@ -64,21 +64,5 @@ private:
   std::mutex mutex_;
   std::map<std::size_t, Build> builds_;  ///< by hash of the generated engine and harness
 };
-
-/// The harness in two halves, so that no file sees both the engine's header (the interface's
-/// prototypes) and the C library's (an interface function may be called `remove` or `abs`).
-struct HarnessSources {
-  std::string glue;  ///< glue.c: the interface functions and the engines, one per agent
-  std::string main;  ///< harness.c: main, the steps from stdin, the values `set` stored, output
-};
-
-/// The harness for chart `chart`, whose engine (emitted with `options`) has the header `header`,
-/// running `agents` engines (a team machine's agents, with the reference exchange).
-HarnessSources harness_source(const model::Model &model, model::ChartId chart, const EmitOptions &options,
-                              const std::string &header, int agents);
-
-/// The C library functions (and `main`) that harness.c calls: an interface function may not
-/// have one of these names, as the harness would call it instead.
-const std::vector<std::string> &harness_library_names();
 
 }  // namespace gfec

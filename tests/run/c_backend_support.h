@@ -6,6 +6,7 @@
 #include "analysis/activation_bounds.h"
 #include "backend.h"
 #include "c_backend.h"
+#include "c_harness.h"
 #include "diagnostic_printer.h"
 #include "file_system.h"
 #include "loader.h"
@@ -424,150 +425,29 @@ inline void check_compiles(const std::string &test, const std::vector<OutputFile
 
 // ------------------------------------------------------------------ the run harness
 
-/// A C main() for one chart: it implements every interface function the chart calls from a
-/// script read on stdin, one line per tick (`Left_IR_Black Distance=12.5`: listed sensing
-/// functions return 1 or the value, others 0), logs each call (`cond F -> 1`, `act G(0, 0.6)`),
-/// runs one tick per line and prints the activation after it (`av A B:2` lists the active
-/// places, counts above one after a colon; an fsm prints `state S status 0`). With -DX_HOOKS it
-/// logs the hooks too (`hook lost A`, `hook gained B`, `hook enabled T0`). `context`: the engine
-/// was made with --context (void *); main sets it to a device of its own, and every interface
-/// function first checks that it received exactly that (else it prints `wrong context` and
-/// exits with 3), so the log is the same as without the context.
-/// The interface functions `chart` and every chart it runs (at any depth) call, each once.
-inline std::vector<model::FunctionId> called_functions(const model::Model &m, const model::Chart &chart) {
-  std::vector<model::FunctionId> out;
-  std::vector<const model::Chart *> todo{&chart};
-  for (std::size_t k = 0; k < todo.size() && k < 64; ++k) {
-    for (model::FunctionId f : todo[k]->functions)
-      if (std::find(out.begin(), out.end(), f) == out.end()) out.push_back(f);
-    for (const auto &p : todo[k]->places)
-      if (p.runs) todo.push_back(&m.charts.at(p.runs));
-  }
-  return out;
-}
-
-inline std::string harness_source(const model::Model &m, const model::Chart &chart, const std::string &header,
-                                  bool context = false) {
-  const std::string &X = chart.name;
-  const std::vector<model::FunctionId> functions = called_functions(m, chart);
-  const bool fsm = chart.kind == model::Chart::Kind::Fsm;
-  std::string s;
-  s += fmt::format("#include \"{}\"\n\n#include <stdio.h>\n#include <stdlib.h>\n#include <string.h>\n\n", header);
-  s += "static char script[1024]; /* this tick's line */\n\n";
-  if (context)
-    s += "static int device; /* the engine's context */\n\n"
-         "static void expect_device(const void *ctx)\n{\n"
-         "    if (ctx != (const void *)&device) {\n"
-         "        printf(\"wrong context\\n\");\n"
-         "        exit(3);\n"
-         "    }\n}\n\n";
-  bool senses = false;
-  for (model::FunctionId fi : functions) senses = senses || m.functions[fi].result != Type::Void;
-  if (senses)
-    s += "static double value_of(const char *name)\n{\n"
-         "    size_t n = strlen(name);\n"
-         "    const char *p = script;\n"
-         "    while ((p = strstr(p, name)) != NULL) {\n"
-         "        int starts = p == script || p[-1] == ' ';\n"
-         "        if (starts && (p[n] == '=')) return atof(p + n + 1);\n"
-         "        if (starts && (p[n] == ' ' || p[n] == '\\n' || p[n] == '\\0')) return 1;\n"
-         "        p += n;\n"
-         "    }\n"
-         "    return 0;\n}\n\n";
-  s += "static const char *const place_names[] = {";
-  for (const auto &p : chart.places) s += fmt::format("\"{}\", ", p.name);
-  s += "NULL};\n";
-  s += "\n";
-  for (model::FunctionId fi : functions) {
-    const auto &f = m.functions[fi];
-    std::string params, format, args;
-    for (std::size_t i = 0; i < f.params.size(); ++i) {
-      const auto &p = f.params[i];
-      params += fmt::format("{}{} a{}", i ? ", " : "", model::type_name(p.type), i);
-      bool real = p.type == Type::Float || p.type == Type::Double;
-      format += fmt::format("{}{}", i ? ", " : "", real ? "%g" : "%d");
-      args += fmt::format(", {}a{}", real ? "(double)" : "(int)", i);
-    }
-    if (context) params = "void *ctx" + (params.empty() ? "" : ", " + params);
-    if (params.empty()) params = "void";
-    const std::string check = context ? "    expect_device(ctx);\n" : "";
-    if (f.result == Type::Void) {
-      s += fmt::format("void {}({})\n{{\n{}    printf(\"act {}{}\\n\"{});\n}}\n\n", f.name, params, check, f.name,
-                       f.params.empty() ? "" : "(" + format + ")", args);
-    } else {
-      bool real = f.result == Type::Float || f.result == Type::Double;
-      std::string t = model::type_name(f.result);
-      s += fmt::format("{} {}({})\n{{\n{}", t, f.name, params, check);
-      if (!f.params.empty()) s += fmt::format("    printf(\"call {}({})\\n\"{});\n", f.name, format, args);
-      s += fmt::format("    {} v = ({})value_of(\"{}\");\n", t, t, f.name);
-      s += fmt::format("    printf(\"cond {} -> {}\\n\", {}v);\n    return v;\n}}\n\n", f.name, real ? "%g" : "%d",
-                       real ? "(double)" : "(int)");
-    }
-  }
-  s += fmt::format("#ifdef {}_HOOKS\n", X);
-  s += "static const char *const transition_names[] = {";
-  for (const auto &t : chart.transitions) s += fmt::format("\"{}\", ", t.name);
-  s += "NULL};\n\n";
-  s += fmt::format("void {0}_activated(const {0} *m, {0}_place place, bool active)\n{{\n    (void)m;\n"
-                   "    printf(\"hook %s %s\\n\", active ? \"gained\" : \"lost\", place_names[place]);\n}}\n\n",
-                   X);
-  s += fmt::format("void {0}_enabled(const {0} *m, {0}_transition transition)\n{{\n    (void)m;\n"
-                   "    printf(\"hook enabled %s\\n\", transition_names[transition]);\n}}\n",
-                   X);
-  s += "#endif\n\n";
-  s += "static void print_state(const " + X + " *m)\n{\n";
-  if (fsm) {
-    s += fmt::format("    printf(\"state %s status %d\\n\", place_names[{0}_state(m)], {0}_status(m));\n", X);
-  } else {
-    s += fmt::format("    int p;\n    printf(\"av\");\n    for (p = 0; p < {0}_PLACE_COUNT; ++p) {{\n"
-                     "        unsigned n = {0}_activation(m, p);\n"
-                     "        if (n == 1) printf(\" %s\", place_names[p]);\n"
-                     "        if (n > 1) printf(\" %s:%u\", place_names[p], n);\n    }}\n    printf(\"\\n\");\n",
-                     X);
-  }
-  s += "}\n\n";
-  // -DHARNESS_INSTANCES, a chart with sub-charts: after the activation, every instance's (depth
-  // first in declaration order, X_instance_activation's numbers): `in A.M1: L2`; and numbers out
-  // of range read 0.
-  std::vector<std::pair<std::string, const model::Chart *>> instances;
-  std::function<void(const model::Chart &, const std::string &)> collect = [&](const model::Chart &ch,
-                                                                               const std::string &path) {
-    for (const auto &p : ch.places)
-      if (p.runs) {
-        const model::Chart &sub = m.charts.at(p.runs);
-        instances.emplace_back(path + p.name, &sub);
-        collect(sub, path + p.name + ".");
-      }
-  };
-  collect(chart, "");
-  s += "#ifdef HARNESS_INSTANCES\nstatic void print_instances(const " + X + " *m)\n{\n    int p;\n";
-  for (std::size_t i = 0; i < instances.size(); ++i) {
-    s += fmt::format("    static const char *const names_{}[] = {{", i);
-    for (const auto &p : instances[i].second->places) s += fmt::format("\"{}\", ", p.name);
-    s += "NULL};\n";
-  }
-  for (std::size_t i = 0; i < instances.size(); ++i)
-    s += fmt::format("    printf(\"in {1}:\");\n    for (p = 0; p < {2}; ++p) {{\n"
-                     "        if ({0}_instance_activation(m, {3}, p) != 0u) printf(\" %s\", names_{3}[p]);\n    }}\n"
-                     "    printf(\"\\n\");\n",
-                     X, instances[i].first, instances[i].second->places.size(), i);
-  s += fmt::format("    if ({0}_instance_activation(m, -1, 0) + {0}_instance_activation(m, {1}, 0) +\n"
-                   "        {0}_instance_activation(m, 0, -1) + {0}_instance_activation(m, 0, 1000) != 0u) {{\n"
-                   "        printf(\"out of range: not 0\\n\");\n    }}\n}}\n#endif\n\n",
-                   X, instances.size());
-  s += fmt::format("int main(void)\n{{\n    {0} m;\n    int tick = 0;\n"
-                   "    setvbuf(stdout, NULL, _IONBF, 0); /* the log survives a failed assert */\n"
-                   "    {0}_init(&m);\n{1}"
-                   "    while (fgets(script, sizeof script, stdin) != NULL) {{\n"
-                   "        printf(\"tick %d\\n\", ++tick);\n"
-                   "        {0}_run(&m);\n"
-                   "        print_state(&m);\n"
-                   "#ifdef HARNESS_INSTANCES\n"
-                   "        print_instances(&m);\n"
-                   "#endif\n"
-                   "    }}\n    return 0;\n}}\n",
-                   X, context ? fmt::format("    {}_set_context(&m, &device);\n", X) : "");
-  return s;
+/// The program the compile-and-run tests link with an engine (backends/c/c_harness.h, Script
+/// inputs and the Compact log): every interface function the chart calls answers from a script
+/// read on stdin, one line per tick (`Left_IR_Black Distance=12.5`: listed sensing functions
+/// return 1 or the value, others 0), and logs each call (`cond F -> 1`, `act G(0, 0.6)`); after
+/// each tick it prints the activation (`av A B:2` lists the active places, counts above one after
+/// a colon; an fsm prints `state S status 0`). With -DX_HOOKS it logs the hooks too (`hook lost
+/// A`, `hook gained B`, `hook enabled T0`); with -DHARNESS_INSTANCES each sub-chart instance's
+/// active places (`in A.M1: L2`). `context`: the engine was made with --context (void *); main
+/// gives it a device of its own, and every interface function first checks that it received
+/// exactly that (else it prints `wrong context` and exits with 3), so the log is the same as
+/// without the context.
+inline c_backend::HarnessSources harness_source(const model::Model &m, const model::Chart &chart,
+                                                const std::string &header, bool context = false) {
+  EmitOptions emit;
+  for (model::ChartId c : m.charts.ids())
+    if (&m.charts[c] == &chart) emit.chart = c;
+  if (context) emit.context_type = "void *";
+  c_backend::HarnessOptions o;
+  o.inputs = c_backend::HarnessInputs::Script;
+  o.log = c_backend::HarnessLog::Compact;
+  o.header = header;
+  o.context = context;
+  return c_backend::write_harness(m, emit.chart, emit, o);
 }
 
 /// Writes the engine and the harness into a scratch directory, compiles them with every C
@@ -579,15 +459,17 @@ inline std::string compile_and_run(const std::string &test, const std::vector<Ou
   REQUIRE(files.size() == 2);
   fs::path dir = scratch_dir(test);
   for (const auto &f : files) write_file(dir / base_name(f.path), f.contents);
-  write_file(dir / "harness.c", harness_source(m, chart, base_name(files[1].path), context));
+  const c_backend::HarnessSources harness = harness_source(m, chart, base_name(files[1].path), context);
+  write_file(dir / "glue.c", harness.glue);
+  write_file(dir / "harness.c", harness.main);
   write_file(dir / "script.txt", script);
   if (!have_tool("clang")) WARN("clang is not installed: the generated code is tested with gcc only");
   std::string first;
   bool have_first = false;
   for (const auto &cc : c_compilers()) {
     fs::path exe = dir / ("run-" + cc);
-    auto build = run_command(fmt::format("cd '{}' && {} {} {} harness.c {} -o '{}'", dir.string(), cc, kStrictFlags,
-                                         defines, base_name(files[0].path), exe.string()),
+    auto build = run_command(fmt::format("cd '{}' && {} {} {} glue.c harness.c {} -o '{}'", dir.string(), cc,
+                                         kStrictFlags, defines, base_name(files[0].path), exe.string()),
                              dir / ("build-" + cc + ".log"));
     INFO(cc << " " << defines << " in " << dir.string() << ":\n" << build.output);
     REQUIRE(build.status == 0);

@@ -14,7 +14,7 @@ using gfec::test::charts::kIfElse;
 namespace {
 
 /// Compiles chart text (with every file it imports) through the real front end and the C back
-/// end, then compiles and runs the engine on `script`: the log (see harness_source()). Every
+/// end, then compiles and runs the engine on `script`: the log (see cbt::harness_source()). Every
 /// chart runs in both engine forms (c_layout.h), which must write the same log.
 std::string run_files(const std::string &test, const std::map<std::string, std::string> &files, const std::string &main,
                       const std::string &script, const std::string &defines = "") {

@@ -1,0 +1,184 @@
+// The C-harness writer's table inputs and observable log (backends/c/c_harness.h): what a target
+// runner builds. The program is compiled at the strict flags and run; its log must be the
+// interpreter's observable log (with -DX_HOOKS, and its hooks layer) for the same inputs, line
+// for line, whether it prints with printf or through a character function of the user's.
+#include "../run/c_backend_support.h"
+
+#include "interpreter/run_chart.h"
+
+#include <catch2/catch.hpp>
+
+using namespace cbt;
+
+namespace {
+
+/// Inputs that vary by function, tick and agent, the same for the interpreter and the table;
+/// `special` values stress the character output's number formatting.
+interp::Value input(const model::Model &m, model::FunctionId f, std::uint64_t tick, int agent) {
+  static const double special[] = {0.1,  -0.3,   1e-7,        5e-324, 1.5e300, -0.0,    123456789.0,
+                                   0.5,  2.5e-5, 1e16,        1e17,   99999.5, 1.0 / 3, 4503599627370497.0,
+                                   1e-4, 1e-5,   0.000123456, 1e21,   7.0,     2.0e-308};
+  static const float special_float[] = {0.1f, -0.3f, 1e-7f, 1.4e-45f, 3.4e38f, -0.0f,
+                                        1e8f, 0.75f, 7.0f,  1e-4f,    1e-5f,   16777217.0f};
+  const std::size_t k = f.index() * 7 + tick * 3 + static_cast<std::size_t>(agent) * 5;
+  switch (m.functions[f].result) {
+  case Type::Bool: return interp::Value::of_bool((k / 2) % 3 == 0);
+  case Type::Int: return interp::Value::of_int(static_cast<std::int32_t>(k % 11) - 5);
+  case Type::Float: return interp::Value::of_float(special_float[k % 12]);
+  default: return interp::Value::of_double(special[(k + 3) % 20]);
+  }
+}
+
+class TableEnvironment : public interp::Environment {
+public:
+  TableEnvironment(const model::Model &m, int agent) : m_(m), agent_(agent) {}
+  interp::Value call(model::FunctionId f, const std::vector<interp::Value> &, std::uint64_t tick) override {
+    return input(m_, f, tick, agent_);
+  }
+
+private:
+  const model::Model &m_;
+  int agent_;
+};
+
+/// The interpreter's observable log of `ticks` ticks (every agent of a team machine).
+std::string reference(const Compiled &c, std::uint64_t ticks, int agents, bool hooks) {
+  std::vector<TableEnvironment> envs;
+  for (int a = 0; a < agents; ++a) envs.emplace_back(c.model, a);
+  Diagnostics diag;
+  interp::RunResult r;
+  if (agents > 1) {
+    std::vector<interp::Environment *> list;
+    for (auto &e : envs) list.push_back(&e);
+    r = interp::run_team(c.model, c.chart, list, ticks, {}, diag);
+  } else {
+    r = interp::run_chart(c.model, c.chart, envs[0], ticks, {}, diag);
+  }
+  REQUIRE(r.completed);
+  interp::RenderOptions o;
+  o.hooks = hooks;
+  return r.log.render(o);
+}
+
+/// Builds the program for the engine in `c` with table inputs, runs it and returns its log.
+std::string run_table_harness(const std::string &test, const Compiled &c, std::uint64_t ticks, int agents,
+                              c_backend::HarnessOutput output, const std::string &defines) {
+  c_backend::HarnessOptions o;
+  o.inputs = c_backend::HarnessInputs::Table;
+  o.log = c_backend::HarnessLog::Observable;
+  o.output = output;
+  o.header = "engine.h";
+  o.agents = agents;
+  o.table.ticks = ticks;
+  o.table.value = [&](model::FunctionId f, std::uint64_t tick, int agent) { return input(c.model, f, tick, agent); };
+  EmitOptions emit;
+  emit.chart = c.chart;
+  const c_backend::HarnessSources h = c_backend::write_harness(c.model, c.chart, emit, o);
+  fs::path dir = scratch_dir(test);
+  for (const auto &f : c.files) write_file(dir / base_name(f.path), f.contents);
+  write_file(dir / "glue.c", h.glue);
+  std::string sources = "glue.c engine.c";
+  if (output == c_backend::HarnessOutput::Putc) {
+    // No C library: the program includes no header of it and calls only the user's function.
+    CHECK(h.main.empty());
+    CHECK(h.glue.find("#include <") == std::string::npos);
+    write_file(dir / "uart.c", "#include <stdio.h>\nint harness_putc(int c);\n"
+                               "int harness_putc(int c)\n{\n    return putchar(c);\n}\n");
+    sources += " uart.c";
+    // glue.c alone, freestanding.
+    auto alone = run_command(
+        fmt::format("cd '{}' && cc {} -ffreestanding -c glue.c -o glue.o", dir.string(), kStrictFlags), dir / "fs.log");
+    INFO(alone.output);
+    CHECK(alone.status == 0);
+  } else {
+    write_file(dir / "harness.c", h.main);
+    sources += " harness.c";
+  }
+  auto build = run_command(fmt::format("cd '{}' && cc {} {} {} -o run", dir.string(), kStrictFlags, defines, sources),
+                           dir / "build.log");
+  INFO(build.output);
+  REQUIRE(build.status == 0);
+  auto run = run_command(fmt::format("'{}'", (dir / "run").string()), dir / "run.log");
+  REQUIRE(run.status == 0);
+  return run.output;
+}
+
+/// Sample `name`, with every chart and interface of samples/ it may import.
+std::unique_ptr<Compiled> compile_sample(const std::string &name) {
+  std::map<std::string, std::string> files;
+  for (const auto &f : fs::directory_iterator(fs::path(GFEC_SOURCE_DIR) / "samples")) {
+    const std::string ext = f.path().extension().string();
+    if (ext == ".sfc" || ext == ".fsm" || ext == ".iface") files[f.path().filename().string()] = read_file(f.path());
+  }
+  auto c = compile_chart(files, name, "engine.c", false);
+  INFO(c->errors);
+  REQUIRE(!c->diag.has_errors());
+  return c;
+}
+
+void check_against_interpreter(const std::string &test, const Compiled &c, std::uint64_t ticks, int agents = 1) {
+  for (auto output : {c_backend::HarnessOutput::Putc, c_backend::HarnessOutput::Stdio})
+    for (bool hooks : {false, true}) {
+      const std::string name = fmt::format("{}_{}{}", test, output == c_backend::HarnessOutput::Putc ? "putc" : "stdio",
+                                           hooks ? "_hooks" : "");
+      const std::string defines = hooks ? fmt::format("-D{}_HOOKS", c.the_chart().name) : "";
+      const std::string log = run_table_harness(name, c, ticks, agents, output, defines);
+      CHECK(log == reference(c, ticks, agents, hooks));
+    }
+}
+
+}  // namespace
+
+TEST_CASE("c harness: a table-driven program prints the interpreter's observable log", "[c_harness][run]") {
+  SECTION("sfc with a fork, a join, timers and float arguments") {
+    auto c = compile_sample("work_cell.sfc");
+    check_against_interpreter("harness_work_cell", *c, 80);
+  }
+  SECTION("sfc line follower") {
+    auto c = compile_sample("line_follower.sfc");
+    check_against_interpreter("harness_line_follower", *c, 12);
+  }
+  SECTION("fsm") {
+    auto c = compile_sample("mission.fsm");
+    check_against_interpreter("harness_mission", *c, 15);
+  }
+  SECTION("a team machine of three agents") {
+    auto c = compile_sample("fetch_team.fsm");
+    check_against_interpreter("harness_fetch_team", *c, 15, 3);
+  }
+}
+
+TEST_CASE("c harness: the character output formats floats and doubles exactly as printf", "[c_harness][run]") {
+  // Every sensing function's result is printed: `call F() = v`, each tick other values, among
+  // them subnormals, halfway cases, the edges of %g's exponent form and negative zero.
+  const std::string chart = "interface Probe { float F(); double D(); double E(); void Show(double x, float y); }\n"
+                            "sfc Numbers {\n"
+                            "  initial place A { Show(D() * 0.5, F() - 1.0); }\n"
+                            "  transition A -> A when F() > 0.0 || E() < 0.0;\n"
+                            "}\n";
+  auto c = compile_chart({{"numbers.sfc", chart}}, "numbers.sfc", "engine.c", false);
+  INFO(c->errors);
+  REQUIRE(!c->diag.has_errors());
+  const std::string log = run_table_harness("harness_numbers", *c, 40, 1, c_backend::HarnessOutput::Putc, "");
+  CHECK(log == reference(*c, 40, 1, false));
+  CHECK(log.find("e-324") != std::string::npos);  // the subnormal reached the log
+}
+
+TEST_CASE("c harness: the library names each kind of program calls", "[c_harness]") {
+  c_backend::HarnessOptions o;
+  o.inputs = c_backend::HarnessInputs::Steps;
+  std::vector<std::string> steps = c_backend::harness_library_names(o);
+  std::sort(steps.begin(), steps.end());
+  // gfec test refuses a chart with an interface function of one of these names.
+  CHECK(steps == std::vector<std::string>{"fflush", "main", "scanf", "strcmp", "strcpy", "strtod", "strtof", "strtol",
+                                          "vprintf"});
+  o.inputs = c_backend::HarnessInputs::Table;
+  o.output = c_backend::HarnessOutput::Putc;
+  CHECK(c_backend::harness_library_names(o) == std::vector<std::string>{"main", "harness_putc"});
+  o.context = true;
+  auto m = ChartBuilder("X", model::Chart::Kind::Sfc);
+  m.place("A", true);
+  EmitOptions emit;
+  emit.chart = model::ChartId(0);
+  CHECK_THROWS_AS(c_backend::write_harness(m.model(), model::ChartId(0), emit, o), std::invalid_argument);
+}
