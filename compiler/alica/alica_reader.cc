@@ -3,6 +3,7 @@
 #include "alica/identifiers.h"
 #include "alica/json_tree.h"
 #include "file_system.h"
+#include "input_languages.h"
 #include "validate/suggest.h"
 
 #include <fmt/format.h>
@@ -76,29 +77,6 @@ void index_ids(const JsonValue &v, std::map<std::string, const JsonValue *> &out
   }
 }
 
-/// The ALICA files that are not plans, by extension: read as ALICA so that `gfec --check etc/*/*`
-/// says what each one is instead of reporting JSON as chart syntax.
-const char *file_kind(const std::string &path) {
-  static const std::pair<const char *, const char *> kinds[] = {
-      {".beh", "an ALICA behaviour"},
-      {".pty", "an ALICA plan type"},
-      {".tsk", "an ALICA task repository"},
-      {".cnd", "an ALICA condition repository"},
-      {".plc", "an ALICA placeholder"},
-      {".pmlex", "the ALICA designer's layout of a plan"},
-      {".rset", "an ALICA role set"},
-      {".rst", "an ALICA role set"},
-      {".rdefset", "an ALICA role definition set"},
-      {".cdefset", "an ALICA capability definition set"},
-      {".cfg", "an ALICA configuration"},
-      {".pp", "an ALICA planning problem"},
-  };
-  std::string ext = extension_of(path);
-  for (const auto &[e, kind] : kinds)
-    if (ext == e) return kind;
-  return nullptr;
-}
-
 /// An element's name for messages: "" when the designer wrote none (MISSING_NAME, the id).
 std::string label_of(const JsonValue &v) {
   std::string name = v.string_of("name");
@@ -152,10 +130,10 @@ private:
                             fmt::format("'{}' is not an ALICA plan: a plan is a JSON object with \"entryPoints\" and "
                                         "\"states\"",
                                         doc->path));
-      if (const char *kind = file_kind(doc->path))
+      if (const FileType *type = language().file_type(doc->path); type && !type->main)
         d.note(fmt::format("this is {}; gfec compiles plans (.pml): give it the plans that use this file, which it "
                            "then reads too",
-                           kind));
+                           type->what));
       return;
     }
     main_->interfaces.emplace_back();
@@ -231,7 +209,7 @@ private:
   Doc *open(const std::string &path, std::string text) {
     auto doc = std::make_unique<Doc>();
     doc->path = path;
-    doc->file = sources_.add(path, std::move(text), /*chart_text=*/false);
+    doc->file = sources_.add(path, std::move(text), language());
     result_.paths.push_back(path);
     auto file = std::make_unique<ast::File>();
     file->id = doc->file;
@@ -1100,8 +1078,6 @@ private:
 };
 
 }  // namespace
-
-bool is_alica_path(const std::string &path) { return extension_of(path) == ".pml" || file_kind(path); }
 
 void read_alica_program(const std::string &main_path, std::string text, const LoadOptions &options,
                         const FileSystem &fs, SourceManager &sources, Diagnostics &diag, LoadResult &result) {
