@@ -1,4 +1,5 @@
-// The file system behind an interface, so the loader's tests run in memory (as ninja does).
+// The file system behind an interface, so the loader's tests run in memory (as ninja does) and a
+// language server reads its editor's unsaved buffers over the disk (OverlayFileSystem).
 #pragma once
 
 #include <map>
@@ -8,6 +9,14 @@
 
 namespace gfec {
 
+/// How far FileSystem::walk goes: a reader searching for a file below a folder must stay fast
+/// beside a huge tree.
+struct WalkLimits {
+  int max_depth = 5;                ///< folders below the one walked that are entered
+  std::size_t max_entries = 20000;  ///< entries (files and folders) looked at, at most
+  bool skip_hidden = true;          ///< folders whose name begins with '.' (.git) are not entered
+};
+
 class FileSystem {
 public:
   virtual ~FileSystem() = default;
@@ -15,12 +24,20 @@ public:
   virtual std::optional<std::string> read(const std::string &path) const = 0;
   /// The names of the files in a folder (for did-you-mean on imports); none if unreadable.
   virtual std::vector<std::string> list(const std::string &dir) const = 0;
+  /// Every file below `dir`, in its sub-folders too, within `limits`: paths that begin with
+  /// `dir` ("" and "." list relative paths), normalised, with '/', sorted.
+  std::vector<std::string> walk(const std::string &dir, const WalkLimits &limits = WalkLimits()) const {
+    return walk_files(dir, limits);
+  }
   /// What makes two paths the same file (device and inode), or nothing if it cannot tell:
   /// "/src/a.iface" and "link/a.iface" through a symlinked folder are one file, read once.
   virtual std::optional<std::string> identity(const std::string &path) const {
     (void)path;
     return std::nullopt;
   }
+
+protected:
+  virtual std::vector<std::string> walk_files(const std::string &dir, const WalkLimits &limits) const = 0;
 };
 
 class RealFileSystem : public FileSystem {
@@ -28,6 +45,9 @@ public:
   std::optional<std::string> read(const std::string &path) const override;
   std::vector<std::string> list(const std::string &dir) const override;
   std::optional<std::string> identity(const std::string &path) const override;
+
+protected:
+  std::vector<std::string> walk_files(const std::string &dir, const WalkLimits &limits) const override;
 };
 
 /// "cannot read 'x.sfc': no such file", for a path RealFileSystem::read refused: missing, a
@@ -43,8 +63,36 @@ public:
   std::optional<std::string> read(const std::string &path) const override;
   std::vector<std::string> list(const std::string &dir) const override;
 
+protected:
+  std::vector<std::string> walk_files(const std::string &dir, const WalkLimits &limits) const override;
+
 private:
   std::map<std::string, std::string> files_;
+};
+
+/// Open editor buffers over another file system (the disk): what a language server compiles.
+/// A path with a buffer open reads as the buffer, saved or not; every other path reads through.
+/// Paths are compared normalised ("a/./b.sfc" is "a/b.sfc").
+class OverlayFileSystem : public FileSystem {
+public:
+  explicit OverlayFileSystem(const FileSystem &base) : base_(base) {}
+  /// Opens or replaces the buffer of `path`.
+  void open(const std::string &path, std::string text);
+  /// Closes the buffer of `path`: it reads from the file system below again.
+  void close(const std::string &path);
+
+  std::optional<std::string> read(const std::string &path) const override;
+  /// The folder's files below and its buffers, a name once.
+  std::vector<std::string> list(const std::string &dir) const override;
+  /// The file below's, when it has one: a buffer of a file on disk is that file.
+  std::optional<std::string> identity(const std::string &path) const override;
+
+protected:
+  std::vector<std::string> walk_files(const std::string &dir, const WalkLimits &limits) const override;
+
+private:
+  const FileSystem &base_;
+  std::map<std::string, std::string> buffers_;  ///< normalised path -> text
 };
 
 }  // namespace gfec

@@ -1,6 +1,6 @@
 #include "loader.h"
 
-#include "alica/alica_reader.h"
+#include "input_languages.h"
 #include "parser.h"
 #include "did_you_mean.h"
 
@@ -31,17 +31,7 @@ public:
          LoadResult &result)
       : options_(options), fs_(fs), sources_(sources), diag_(diag), result_(result) {}
 
-  void load_main(const std::string &path) {
-    auto text = fs_.read(path);
-    if (!text) {
-      result_.main_unreadable = true;
-      return;
-    }
-    bool alica = options_.language == InputLanguage::Alica ||
-                 (options_.language == InputLanguage::Auto && alica::is_alica_path(path));
-    if (alica) alica::read_alica_program(path, std::move(*text), options_, fs_, sources_, diag_, result_);
-    else load(normal(path), std::move(*text));
-  }
+  void read_main(const std::string &path, std::string text) { load(normal(path), std::move(text)); }
 
 private:
   enum class State { Loading, Done };
@@ -157,11 +147,48 @@ private:
 
 }  // namespace
 
+void read_chart_program(const std::string &main_path, std::string text, const LoadOptions &options,
+                        const FileSystem &fs, SourceManager &sources, Diagnostics &diag, LoadResult &result) {
+  Loader(options, fs, sources, diag, result).read_main(main_path, std::move(text));
+}
+
+const InputLanguage &chart_text_language() {
+  static const InputLanguage row{
+      "gfec",
+      "chart text",
+      // What the files of docs/language.md are called; any other name not claimed by another
+      // language is chart text too, since any declaration may stand in any file.
+      {{".sfc", "an sfc chart"},
+       {".fsm", "an fsm chart"},
+       {".plan", "a plan"},
+       {".test", "scenario tests"},
+       {".toolbox", "a toolbox", false},
+       {".iface", "an interface", false}},
+      nullptr,
+      read_chart_program,
+      true,
+      "//",
+      nullptr,
+  };
+  return row;
+}
+
 LoadResult load_program(const std::string &main_path, const LoadOptions &options, const FileSystem &fs,
                         SourceManager &sources, Diagnostics &diag) {
   LoadResult result;
-  Loader(options, fs, sources, diag, result).load_main(main_path);
+  auto text = fs.read(main_path);
+  if (!text) {
+    result.main_unreadable = true;
+    return result;
+  }
+  const InputLanguage &language = options.language ? *options.language : input_language_of(main_path, *text);
+  result.language = &language;
+  language.read(main_path, std::move(*text), options, fs, sources, diag, result);
   return result;
+}
+
+void annotate_diagnostics(Diagnostics &diag, const LoadResult &loaded) {
+  if (loaded.language && loaded.language->annotate) loaded.language->annotate(diag, loaded);
 }
 
 }  // namespace gfec

@@ -1,5 +1,7 @@
 #include "model.h"
 
+#include "input_languages.h"
+
 #include <cctype>
 
 namespace gfec::model {
@@ -37,7 +39,7 @@ std::string source_text(const Model &m, const SourceRange &range) {
 }
 
 bool in_chart_text(const Model &m, const SourceRange &range) {
-  return !m.sources().knows(range.file) || m.sources().file(range.file).is_chart_text();
+  return !m.sources().knows(range.file) || m.sources().file(range.file).language().chart_text;
 }
 
 IdGroups<PlaceId, TransitionId> transitions_leaving(const Chart &c) {

@@ -1,11 +1,13 @@
 #include "source.h"
 
+#include "input_languages.h"
+
 #include <algorithm>
 
 namespace gfec {
 
-SourceFile::SourceFile(std::string path, std::string text, bool chart_text)
-    : path_(std::move(path)), text_(std::move(text)), chart_text_(chart_text) {
+SourceFile::SourceFile(std::string path, std::string text, const InputLanguage &language)
+    : path_(std::move(path)), text_(std::move(text)), language_(&language) {
   line_starts_.push_back(0);
   // Lines end with LF, CRLF or a lone CR (old Mac files): each is one line end.
   for (std::uint32_t i = 0; i < text_.size(); ++i)
@@ -29,8 +31,12 @@ std::string_view SourceFile::line_text(std::uint32_t line) const {
   return s;
 }
 
-FileId SourceManager::add(std::string path, std::string text, bool chart_text) {
-  files_.push_back(std::make_unique<SourceFile>(std::move(path), std::move(text), chart_text));
+FileId SourceManager::add(std::string path, std::string text) {
+  return add(std::move(path), std::move(text), chart_text_language());
+}
+
+FileId SourceManager::add(std::string path, std::string text, const InputLanguage &language) {
+  files_.push_back(std::make_unique<SourceFile>(std::move(path), std::move(text), language));
   return static_cast<FileId>(files_.size() - 1);
 }
 

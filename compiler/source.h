@@ -11,6 +11,8 @@ namespace gfec {
 
 using FileId = std::uint32_t;
 
+struct InputLanguage;
+
 /// A half-open byte range [begin, end) in one source file.
 struct SourceRange {
   FileId file = 0;
@@ -30,7 +32,7 @@ struct LineCol {
 /// One file's text, kept for the whole compilation so diagnostics can quote it.
 class SourceFile {
 public:
-  SourceFile(std::string path, std::string text, bool chart_text = true);
+  SourceFile(std::string path, std::string text, const InputLanguage &language);
 
   const std::string &path() const { return path_; }
   const std::string &text() const { return text_; }
@@ -38,21 +40,23 @@ public:
   /// The text of 1-based line `line`, without its newline.
   std::string_view line_text(std::uint32_t line) const;
   std::uint32_t line_count() const { return static_cast<std::uint32_t>(line_starts_.size()); }
-  /// Whether the file is chart text, whose ranges a back end may quote as written; an ALICA
-  /// plan's ranges point into its JSON.
-  bool is_chart_text() const { return chart_text_; }
+  /// The language the file was read as (compiler/input_languages.h): whether its ranges are
+  /// chart text a back end may quote as written, or point into another syntax (ALICA's JSON).
+  const InputLanguage &language() const { return *language_; }
 
 private:
   std::string path_;
   std::string text_;
-  bool chart_text_ = true;
+  const InputLanguage *language_;
   std::vector<std::uint32_t> line_starts_;
 };
 
 /// Owns every file read in one compilation; FileIds index it.
 class SourceManager {
 public:
-  FileId add(std::string path, std::string text, bool chart_text = true);
+  /// A file of chart text: the parser's, and every file made up by a test or a tool.
+  FileId add(std::string path, std::string text);
+  FileId add(std::string path, std::string text, const InputLanguage &language);
   const SourceFile &file(FileId id) const { return *files_.at(id); }
   std::size_t size() const { return files_.size(); }
   /// Whether `id` is one of the files here: a model made by hand has ranges into none.

@@ -12,14 +12,22 @@ namespace scenario {
 struct Suite;
 }
 
+struct ValidateOptions {
+  /// Leave the syntax tree whole, for a client that reads it after validation (a language
+  /// server: outlines, go-to-definition). By default each chart's statements, conditions and
+  /// transition places are released as soon as they are lowered, so a large chart never holds
+  /// both forms (docs/performance.md).
+  bool keep_tree = false;
+};
+
 /// Checks `program` and builds its model. The model is complete only when no error was reported.
-/// The program is consumed in part: each chart's statements and conditions are released as soon
-/// as they are lowered (a large chart never holds both forms), so after this only the
-/// declarations of the syntax tree remain; drop it.
+/// Unless options.keep_tree, the program is consumed in part: after this only the declarations
+/// of the syntax tree remain; drop it.
 model::Model validate(ast::Program &program, const SourceManager &sources, Diagnostics &diag);
 /// The same, keeping the checked `test` blocks of the main file in `tests` (gfec test). Both
 /// check them; this one keeps them. A test's `elapsed(P)` marks P timed in the model.
-model::Model validate(ast::Program &program, const SourceManager &sources, Diagnostics &diag, scenario::Suite &tests);
+model::Model validate(ast::Program &program, const SourceManager &sources, Diagnostics &diag, scenario::Suite &tests,
+                      const ValidateOptions &options = {});
 
 /// --context (docs/c-engine.md "Instance context"): every interface function the C engine of
 /// `chart` calls (its sub-charts' too) takes the context first, so none has a C library

@@ -7,6 +7,7 @@
 #include "diagnostic_report.h"
 #include "escape.h"
 #include "external_tool.h"
+#include "input_languages.h"
 #include "pipeline/compilation.h"
 #include "safe_output.h"
 #include "validate.h"
@@ -22,9 +23,7 @@ namespace gfec {
 pipeline::FrontEndOptions front_end_options(const Options &o) {
   pipeline::FrontEndOptions f;
   f.include_dirs = o.include_dirs;
-  f.language = o.language == "alica"  ? InputLanguage::Alica
-               : o.language == "gfec" ? InputLanguage::Gfec
-                                      : InputLanguage::Auto;
+  f.language = find_input_language(o.language);  // -x was checked against the same table
   f.warnings = o.warnings;
   f.error_limit = o.error_limit;
   return f;

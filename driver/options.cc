@@ -2,6 +2,7 @@
 
 #include "backend_registry.h"
 #include "did_you_mean.h"
+#include "input_languages.h"
 #include "naming/c_type_name.h"
 
 #include <CLI/CLI.hpp>
@@ -186,10 +187,10 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
       ->type_name("DIR")
       ->allow_extra_args(false);
   app.add_option("-x", o.language,
-                 "Input language, as gcc's -x: alica (ALICA JSON plans) or gfec (chart text); "
-                 "default: .pml files are ALICA, others chart text")
+                 "Input language, as gcc's -x: " + input_languages_help() +
+                     "; default: from the file's extension (.pml is alica), other files chart text")
       ->type_name("LANG")
-      ->check(CLI::IsMember({"alica", "gfec"}));
+      ->check(CLI::IsMember(input_language_names()));
   app.add_flag("--check", o.check_only, "Validate only: report every diagnostic and write nothing");
   app.add_flag("--analyze", o.analyze,
                "Run every static analysis and print a report per chart and plan; write nothing");

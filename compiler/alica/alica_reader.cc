@@ -6,39 +6,13 @@
 #include "alica/identifiers.h"
 #include "alica/reader_context.h"
 #include "escape.h"
+#include "input_languages.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 
 namespace gfec::alica {
-
-namespace {
-
-/// The ALICA files that are not plans, by extension: read as ALICA so that `gfec --check etc/*/*`
-/// says what each one is instead of reporting JSON as chart syntax.
-const char *file_kind(const std::string &path) {
-  static const std::pair<const char *, const char *> kinds[] = {
-      {".beh", "an ALICA behaviour"},
-      {".pty", "an ALICA plan type"},
-      {".tsk", "an ALICA task repository"},
-      {".cnd", "an ALICA condition repository"},
-      {".plc", "an ALICA placeholder"},
-      {".pmlex", "the ALICA designer's layout of a plan"},
-      {".rset", "an ALICA role set"},
-      {".rst", "an ALICA role set"},
-      {".rdefset", "an ALICA role definition set"},
-      {".cdefset", "an ALICA capability definition set"},
-      {".cfg", "an ALICA configuration"},
-      {".pp", "an ALICA planning problem"},
-  };
-  std::string ext = extension_of(path);
-  for (const auto &[e, kind] : kinds)
-    if (ext == e) return kind;
-  return nullptr;
-}
-
-}  // namespace
 
 void Reader::read_main(const std::string &path, std::string text) {
   std::size_t first_diagnostic = diag_.all().size();
@@ -72,10 +46,10 @@ void Reader::read_plan(const std::string &path, std::string text) {
                           fmt::format("'{}' is not an ALICA plan: a plan is a JSON object with \"entryPoints\" and "
                                       "\"states\"",
                                       doc->path));
-    if (const char *kind = file_kind(doc->path))
+    if (const FileType *type = language().file_type(doc->path); type && !type->main)
       d.note(fmt::format("this is {}; gfec compiles plans (.pml): give it the plans that use this file, which it "
                          "then reads too",
-                         kind));
+                         type->what));
     return;
   }
   main_->interfaces.emplace_back();
@@ -130,8 +104,6 @@ bool Reader::not_an_id(const Doc &doc, const JsonValue *v, const std::string &wh
               fmt::format("{} is {}, which is no id: ALICA's ids are 64-bit integers", what, written));
   return true;
 }
-
-bool is_alica_path(const std::string &path) { return extension_of(path) == ".pml" || file_kind(path); }
 
 void read_alica_program(const std::string &main_path, std::string text, const LoadOptions &options,
                         const FileSystem &fs, SourceManager &sources, Diagnostics &diag, LoadResult &result) {

@@ -3,14 +3,25 @@
 // the validator, the model and every back end work unchanged. docs/alica.md has the mapping.
 #pragma once
 
-#include "loader.h"
+#include "diagnostics.h"
+#include "file_system.h"
+#include "import_result.h"
 
 #include <string>
 
+namespace gfec {
+
+/// Adds to each diagnostic located in an ALICA file a note naming the element it points at
+/// (kind, name, id): the validator's messages know only the gfec names. The ALICA row's
+/// annotate hook (compiler/input_languages.h).
+void annotate_elements(Diagnostics &diag, const LoadResult &loaded);
+
+}  // namespace gfec
+
 namespace gfec::alica {
 
-/// True for a path read as ALICA when no -x says otherwise: a .pml plan.
-bool is_alica_path(const std::string &path);
+/// ALICA's row of the input-language table (alica_language.cc): its extensions, this reader.
+const InputLanguage &language();
 
 /// Reads the plan in `main_path` (whose text is `text`) and every file it references into
 /// `result`: the main plan's file first, then the others in the order first reached.

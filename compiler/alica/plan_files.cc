@@ -2,6 +2,8 @@
 
 #include "alica/identifiers.h"
 #include "did_you_mean.h"
+#include "alica/alica_reader.h"
+#include "input_languages.h"
 
 #include <fmt/format.h>
 
@@ -56,7 +58,7 @@ void index_ids(const JsonValue &v, std::map<std::string, const JsonValue *> &out
 Doc *PlanFiles::open(const std::string &path, std::string text) {
   auto doc = std::make_unique<Doc>();
   doc->path = path;
-  doc->file = sources_.add(path, std::move(text), /*chart_text=*/false);
+  doc->file = sources_.add(path, std::move(text), language());
   result_.paths.push_back(path);
   auto file = std::make_unique<ast::File>();
   file->id = doc->file;

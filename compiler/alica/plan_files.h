@@ -7,7 +7,7 @@
 #include "alica/json_tree.h"
 #include "diagnostics.h"
 #include "file_system.h"
-#include "loader.h"
+#include "import_result.h"
 
 #include <filesystem>
 #include <map>

@@ -20,7 +20,7 @@
 #include "alica/plan_files.h"
 #include "ast.h"
 #include "diagnostics.h"
-#include "loader.h"
+#include "import_result.h"
 
 #include <map>
 #include <optional>

@@ -114,21 +114,23 @@ bool Compilation::front_end(const std::string &path, const FileSystem &fs, scena
   if (tests && !loaded.program.files.empty() && loaded.program.files.front())
     for (const auto &t : loaded.program.files.front()->tests) tests->written.push_back(t.name);
   if (loaded.main_unreadable || diag.has_errors()) {
-    annotate_elements(diag, loaded);  // a JSON member named twice: which plan element it is in
+    annotate_diagnostics(diag, loaded);  // a JSON member named twice: which plan element it is in
     return false;
   }
-  if (tests) model = validate(loaded.program, sources, diag, *tests);
-  else model = validate(loaded.program, sources, diag);
+  ValidateOptions validation;
+  validation.keep_tree = options.keep_syntax_tree;
+  scenario::Suite unkept;  // validate checks the tests either way; only gfec test keeps them
+  model = validate(loaded.program, sources, diag, tests ? *tests : unkept, validation);
   // The model holds all the back ends need: the syntax tree goes before they run, so a large
   // chart does not keep both in memory (docs/performance.md).
-  loaded.program = {};
+  if (!options.keep_syntax_tree) loaded.program = {};
   // The facts the back ends read (docs/architecture.md): proven once here, cheap and linear, so
   // they are recorded even when the analyses' warnings are off (--check, -w).
   if (!diag.has_errors()) analysis::record_activation_bounds(model);
   // The static analyses whose warnings are on (compiler/analysis/, docs/verification.md).
   if (options.analyze && !diag.has_errors()) analysis::analyze(model, diag);
   // ALICA input: say which plan element (name and id) each diagnostic is about.
-  annotate_elements(diag, loaded);
+  annotate_diagnostics(diag, loaded);
   return !diag.has_errors();
 }
 

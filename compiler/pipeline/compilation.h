@@ -25,11 +25,14 @@ enum TargetKind : unsigned { kSfc = 1, kFsm = 2, kPlan = 4, kToolbox = 8 };
 
 /// What the front end needs from the command line.
 struct FrontEndOptions {
-  std::vector<std::string> include_dirs;         ///< -I
-  InputLanguage language = InputLanguage::Auto;  ///< -x
-  WarningOptions warnings;                       ///< -W...
-  std::size_t error_limit = 50;                  ///< -fmax-errors=N
-  bool analyze = true;  ///< run the static analyses whose warnings are on (docs/verification.md)
+  std::vector<std::string> include_dirs;    ///< -I
+  const InputLanguage *language = nullptr;  ///< -x (input_languages.h); null: the file's own
+  WarningOptions warnings;                  ///< -W...
+  std::size_t error_limit = 50;             ///< -fmax-errors=N
+  bool analyze = true;                      ///< run the static analyses whose warnings are on (docs/verification.md)
+  /// Keep the whole syntax tree in `loaded.program` after validation (a language server reads
+  /// it); by default it is dropped, bodies first, so a large chart is never held twice.
+  bool keep_syntax_tree = false;
 };
 
 /// What to compile, the one function select_target answers it with.

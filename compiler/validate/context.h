@@ -27,8 +27,9 @@ struct Context {
   Context(ast::Program &p, const SourceManager &s, Diagnostics &d, model::Model &m)
       : program(p), sources(s), diag(d), model(m) {}
 
-  /// Not const: a chart's bodies are released once lowered (validate.h).
+  /// Not const: a chart's bodies are released once lowered, unless keep_tree (validate.h).
   ast::Program &program;
+  bool keep_tree = false;
   const SourceManager &sources;
   Diagnostics &diag;
   model::Model &model;

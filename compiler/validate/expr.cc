@@ -686,8 +686,9 @@ std::vector<model::Stmt> lower_statements(ast::Stmt *first, ast::Stmt *last, Exp
       model::Stmt m;
       m.kind = model::Stmt::Kind::Verbatim;
       m.range = st.range;
-      m.verbatim = st.verbatim ? std::move(*st.verbatim) : std::string();  // the tree's copy is released next
-      m.code_begin = st.range.begin + 2;                                   // the lexer's range starts at `%{`
+      // The tree's copy is released next, unless it is kept.
+      m.verbatim = !st.verbatim ? std::string() : s.cx.keep_tree ? *st.verbatim : std::move(*st.verbatim);
+      m.code_begin = st.range.begin + 2;  // the lexer's range starts at `%{`
       out.push_back(std::move(m));
       break;
     }

@@ -101,7 +101,7 @@ std::string written_operator(const ast::Expr &e, const SourceManager &sources) {
   const SourceRange &r = e.op_range();
   if (r.end <= r.begin || !sources.knows(r.file)) return c;
   const SourceFile &file = sources.file(r.file);
-  if (file.is_chart_text() || r.end > file.text().size()) return c;
+  if (file.language().chart_text || r.end > file.text().size()) return c;
   return file.text().substr(r.begin, r.end - r.begin);
 }
 

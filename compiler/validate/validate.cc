@@ -30,11 +30,13 @@ model::Model validate(ast::Program &program, const SourceManager &sources, Diagn
   return validate(program, sources, diag, tests);
 }
 
-model::Model validate(ast::Program &program, const SourceManager &sources, Diagnostics &diag, scenario::Suite &tests) {
+model::Model validate(ast::Program &program, const SourceManager &sources, Diagnostics &diag, scenario::Suite &tests,
+                      const ValidateOptions &options) {
   model::Model model;
   model.set_sources(sources);
   if (!program.files.empty() && program.files.front()) model.main_file = program.files.front()->id;
   validation::Context cx(program, sources, diag, model);
+  cx.keep_tree = options.keep_tree;
 
   validation::collect_symbols(cx);
   collect_verbatims(cx);

@@ -197,7 +197,7 @@ void name_transitions(Context &cx, ChartScope &s) {
     s.out.transitions.push_back(std::move(out));
     if (s.is_fsm()) resolve_fsm_places(cx, s, i);
     else resolve_sfc_places(cx, s, i);
-    s.ast.transitions[i].release_places();
+    if (!cx.keep_tree) s.ast.transitions[i].release_places();
   }
 }
 
@@ -227,6 +227,7 @@ void lower_bodies(Context &cx, ChartScope &s) {
     if (p.extras && p.extras->exit) out.exit = lower_block(*p.extras->exit, scope);
     // Lowered: the tree's statements are no longer needed, and a chart of a million places
     // should not hold both forms at once (docs/performance.md).
+    if (cx.keep_tree) continue;
     ast::Block().swap(p.action);
     if (p.extras) {
       p.extras->entry.reset();
@@ -242,7 +243,7 @@ void lower_transition_condition(Context &cx, ChartScope &s, std::size_t index) {
   if (!t.condition) return;
   ExprScope scope{cx, &s, false};
   s.out.transitions[index].condition = lower_condition(t.condition.get(), scope, "condition");
-  t.condition.reset();  // lowered: see lower_bodies
+  if (!cx.keep_tree) t.condition.reset();  // lowered: see lower_bodies
 }
 
 std::optional<bool> constant_condition(const HeapOptional<model::Expr> &condition, const model::Model &model) {

@@ -3,6 +3,7 @@
 #include "diagnostics_json.h"
 #include "diagnostics_sarif.h"
 #include "diagnostic_printer.h"
+#include "input_languages.h"
 #include "../unit/support.h"
 
 #include <catch2/catch.hpp>
@@ -34,7 +35,7 @@ struct FrontEnd : test::Pipeline {
 }  // namespace
 
 TEST_CASE("columns: bytes for gcc's byte-column, code points for SARIF, tabs to 8 for display") {
-  SourceFile f("t.sfc", "\tplace A;\n// \xC3\xA9t\xC3\xA9 X\n");
+  SourceFile f("t.sfc", "\tplace A;\n// \xC3\xA9t\xC3\xA9 X\n", chart_text_language());
   Columns tab = columns_at(f, 1);  // 'p' after the tab
   CHECK(tab.line == 1);
   CHECK(tab.byte == 2);

@@ -6,6 +6,7 @@
 
 #include "alica/identifiers.h"
 #include "alica/json_tree.h"
+#include "input_languages.h"
 #include "dot_chart.h"
 #include "json_backend.h"
 #include "validate.h"
@@ -323,7 +324,7 @@ TEST_CASE("alica: malformed JSON and XML plans are located errors", "[alica]") {
   MemoryFileSystem mem;
   mem.add("tasks.json", test::read_file((kFixtures / "tasks/TaskRepository.tsk").string()));
   LoadOptions options;
-  options.language = InputLanguage::Alica;
+  options.language = find_input_language("alica");
   load_program("tasks.json", options, mem, sources, diag);
   REQUIRE(diag.error_count() == 1);
   CHECK(

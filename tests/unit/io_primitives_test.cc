@@ -58,7 +58,7 @@ TEST_CASE("io: lines formatted in place are indented, counted and end without bl
                     "    x();\n"
                     "}\n");
   // line_back() writes nothing until a #line pointed away; point away and back to see the count.
-  const FileId file = sources.add("chart.sfc", "sfc S {}\n", false);
+  const FileId file = sources.add("chart.sfc", "sfc S {}\n");
   w.line_from(sources, {file, 0, 0});  // line 9
   w.line("{}", "y();");                // line 10
   w.line_back();                       // line 11, naming line 12

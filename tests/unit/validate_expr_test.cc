@@ -1,5 +1,6 @@
 // The validator: expressions, statements, constants and types (docs/language.md §3 and 4).
 // Each test validates chart text and compares every diagnostic as gfec prints it.
+#include "input_languages.h"
 #include "validate_fixture.h"
 
 #include <catch2/catch.hpp>
@@ -648,7 +649,10 @@ sfc S {
                        {"bot.iface", kBot}});
     REQUIRE(fe.text() == "");
     const std::string text = pointed_at;
-    FileId file = fe.sources.add("t.st", text, chart_text);
+    // A language whose ranges are not chart text (its row says how its text is quoted).
+    static const InputLanguage written{"written", "a language that spells its operators", {}, nullptr, nullptr,
+                                       /*chart_text=*/false};
+    FileId file = fe.sources.add("t.st", text, chart_text ? chart_text_language() : written);
     auto at = [&](const std::string &op) {
       auto begin = static_cast<std::uint32_t>(text.find(op));
       return SourceRange{file, begin, begin + static_cast<std::uint32_t>(op.size())};
