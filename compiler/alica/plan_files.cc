@@ -129,8 +129,6 @@ std::vector<std::string> PlanFiles::candidates(const std::string &file, const Do
 /// designer leaves stale paths behind when files move: the last resort is the file of that
 /// name (and trailing folders) below the folder above the plans' root, nearest first.
 std::optional<std::string> PlanFiles::search_below(const std::string &file, const Doc &from) {
-  // Only on disk: an in-memory file system (the loader's tests) has no folders to walk.
-  if (!dynamic_cast<const RealFileSystem *>(&fs_)) return std::nullopt;
   fsys::path dir = fsys::path(from.path).parent_path();
   std::string rel = from.root && from.root->is_object() ? from.root->string_of("relativeDirectory") : "";
   for (const auto &part : fsys::path(rel).lexically_normal())
@@ -139,22 +137,10 @@ std::optional<std::string> PlanFiles::search_below(const std::string &file, cons
   auto &files = trees_[root];
   if (!trees_listed_.count(root)) {
     trees_listed_.insert(root);
-    // Bounded, so that a plan next to a huge folder tree stays fast: ALICA's folders are a few
-    // levels deep and hold hundreds of files.
-    std::error_code ec;
-    constexpr int kMaxDepth = 5;
-    constexpr std::size_t kMaxEntries = 20000;
-    std::size_t seen = 0;
-    fsys::recursive_directory_iterator it(root.empty() ? "." : root, fsys::directory_options::skip_permission_denied,
-                                          ec);
-    for (fsys::recursive_directory_iterator end; !ec && it != end && seen < kMaxEntries; it.increment(ec), ++seen) {
-      std::string name = it->path().filename().string();
-      if (it->is_directory(ec)) {
-        if (it.depth() >= kMaxDepth || (!name.empty() && name[0] == '.')) it.disable_recursion_pending();
-        continue;
-      }
-      if (it->is_regular_file(ec)) files.push_back(normal(it->path()));
-    }
+    // Bounded (WalkLimits: 5 levels, 20,000 entries, no hidden folders), so that a plan next to
+    // a huge folder tree stays fast: ALICA's folders are a few levels deep and hold hundreds of
+    // files. Through the file system, so an editor's unsaved buffers are found too.
+    files = fs_.walk(root.empty() ? "." : root);
     std::sort(files.begin(), files.end(), [](const std::string &a, const std::string &b) {
       auto depth = [](const std::string &p) { return std::count(p.begin(), p.end(), '/'); };
       return depth(a) != depth(b) ? depth(a) < depth(b) : a < b;
