@@ -224,7 +224,7 @@ int run_with(const RunOptions &o, DiagnosticReport &report, std::ostream &out) {
   // Without --ticks: one tick per row of the trace, or ten.
   std::uint64_t ticks = o.ticks ? o.ticks : trace->rows() ? trace->rows() : 10;
 
-  interp::EngineOptions engine;
+  interp::MachineOptions engine;
   engine.check_post = o.check_post;
   Diagnostics run_diag;
   interp::RunResult r;

@@ -2,7 +2,7 @@
 
 #include "analysis/analysis.h"
 #include "diagnostic_printer.h"
-#include "interpreter/engine.h"
+#include "interpreter/machine.h"
 #include "pipeline/compilation.h"
 #ifdef GFEC_FUZZ_C_BACKEND
 #include "c_backend.h"
@@ -162,10 +162,10 @@ private:
 
 void run_interpreter(const model::Model &m, model::ChartId chart) {
   WobblyEnv env(m);
-  interp::EngineOptions options;
+  interp::MachineOptions options;
   options.check_post = true;
   try {
-    interp::Engine engine(m, chart, options);
+    interp::Machine engine(m, chart, options);
     interp::EventLog log;
     for (int t = 0; t < 12; ++t) engine.run(env, &log);
     log.render({true, true, true});
