@@ -27,7 +27,7 @@ struct EmitOptions {
   std::string output_path;      ///< the primary output as the user named it (e.g. "engine.c")
   std::string source_name;      ///< the chart file as the user named it, for the header comment
   bool line_directives = true;  ///< `#line` back to the chart
-  // What to compile, as pipeline::select_target chose it; exactly the one the back end accepts
+  // What to compile, as pipeline::choose() picked it; exactly the one the back end accepts
   // is set (a back end given none is a bug of its caller and throws std::invalid_argument).
   model::ChartId chart;                  ///< the sfc or fsm to compile, or none
   model::PlanId plan;                    ///< the plan to compile, or none

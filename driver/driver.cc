@@ -89,7 +89,7 @@ int compile(const Options &o, DiagnosticReport &report, std::ostream &out) {
   const BackendInfo *chosen_backend = o.emit.empty() ? nullptr : find_backend(o.emit);
   bool ok = c.front_end(input);
   if (ok && !o.check_only) {
-    pipeline::TargetRequest request;
+    pipeline::SelectionRequest request;
     request.name = o.chart;
     // A back end that compiles toolboxes only chooses among the toolboxes (§5.4).
     request.among = chosen_backend && chosen_backend->accepts == pipeline::kToolbox
@@ -97,8 +97,8 @@ int compile(const Options &o, DiagnosticReport &report, std::ostream &out) {
                         : pipeline::kSfc | pipeline::kFsm | pipeline::kPlan;
     c.select(request);
     // An option of the C engine that changes its prototypes: a warning the validator cannot give.
-    if (!o.context_type.empty() && (c.target.kind & (pipeline::kSfc | pipeline::kFsm)))
-      check_context_prototypes(c.model, c.target.chart, c.diag);
+    if (!o.context_type.empty() && (c.selection.kind & (pipeline::kSfc | pipeline::kFsm)))
+      check_context_prototypes(c.model, c.selection.chart, c.diag);
     ok = !c.diag.has_errors();  // -Werror
   }
   report.add(input, c.diag, c.sources);
@@ -109,31 +109,31 @@ int compile(const Options &o, DiagnosticReport &report, std::ostream &out) {
   if (!ok) return kExitInputError;
   if (o.check_only) return kExitOk;
 
-  const pipeline::Target &target = c.target;
-  if (!target.chosen() && target.in_input) {
+  const pipeline::Selection &selection = c.selection;
+  if (!selection.chosen() && selection.in_input) {
     Diagnostics located(o.warnings, o.error_limit);
-    located.error({c.model.main_file, 0, 0}, ErrorKind::NothingToCompile, target.error);
+    located.error({c.model.main_file, 0, 0}, ErrorKind::NothingToCompile, selection.error);
     report.add(input, located, c.sources);
     return kExitInputError;
   }
-  if (!target.chosen()) {
-    report.tool_error(input, target.error, true);
+  if (!selection.chosen()) {
+    report.tool_error(input, selection.error, true);
     return kExitUsageOrIo;
   }
   if (!o.emit.empty() && !chosen_backend) {
     report.tool_error(input, fmt::format("unknown back end '{}' (known: {})", o.emit, backend_names_list()), false);
     return kExitUsageOrIo;
   }
-  const BackendInfo &info = chosen_backend ? *chosen_backend : default_backend(target.kind);
-  if (!info.accepts_kind(target.kind)) {
+  const BackendInfo &info = chosen_backend ? *chosen_backend : default_backend(selection.kind);
+  if (!info.accepts_kind(selection.kind)) {
     report.tool_error(input,
                       fmt::format("--emit={} compiles {} only; '{}' is {}", info.name, accepted_kinds(info),
-                                  target.name,
-                                  target.kind == pipeline::kSfc    ? "sfc"
-                                  : target.kind == pipeline::kFsm  ? "fsm"
-                                  : target.kind == pipeline::kPlan ? "plan"
-                                                                   : "toolbox",
-                                  target.name),
+                                  selection.name,
+                                  selection.kind == pipeline::kSfc    ? "sfc"
+                                  : selection.kind == pipeline::kFsm  ? "fsm"
+                                  : selection.kind == pipeline::kPlan ? "plan"
+                                                                      : "toolbox",
+                                  selection.name),
                       true);
     return kExitUsageOrIo;
   }
@@ -146,9 +146,9 @@ int compile(const Options &o, DiagnosticReport &report, std::ostream &out) {
   }
   EmitOptions emit;
   // EmitOptions (compiler/backend.h) still numbers them, -1 for none.
-  emit.chart = target.chart;
-  emit.plan = target.plan;
-  emit.toolbox = target.toolbox;
+  emit.chart = selection.chart;
+  emit.plan = selection.plan;
+  emit.toolbox = selection.toolbox;
   emit.output_path = o.output.empty() ? replace_extension(base_name(input), info.extension) : o.output;
   emit.source_name = input;
   emit.line_directives = o.line_directives;

@@ -181,11 +181,11 @@ int run_with(const RunOptions &o, DiagnosticReport &report, std::ostream &out) {
 
   // The sfc or fsm of the main file to run: the one no chart runs (docs/language.md
   // "Sub-charts"), or the one --chart names.
-  pipeline::TargetRequest request;
+  pipeline::SelectionRequest request;
   request.name = o.chart;
   request.among = pipeline::kSfc | pipeline::kFsm;
   request.verb = "run";
-  pipeline::Target target = pipeline::select_target(model, request);
+  pipeline::Selection target = pipeline::choose(model, request);
   if (!target.chosen()) {
     report.tool_error(o.input, target.error, true);
     return kExitUsageOrIo;

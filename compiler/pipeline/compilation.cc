@@ -44,7 +44,7 @@ std::string kinds_text(unsigned among) {
 
 }  // namespace
 
-Target select_target(const model::Model &m, const TargetRequest &request) {
+Selection choose(const model::Model &m, const SelectionRequest &request) {
   std::vector<Candidate> candidates;
   std::vector<Candidate> named_only;  ///< sub-charts of the main file: compiled alone by name only
   if (request.among & kToolbox)
@@ -72,7 +72,7 @@ Target select_target(const model::Model &m, const TargetRequest &request) {
       names += fmt::format("{}{} '{}'", names.empty() ? "" : ", ", kind_name(c.kind), c.name);
     return names;
   };
-  Target t;
+  Selection t;
   const Candidate *chosen = nullptr;
   if (!request.name.empty()) {
     for (const auto *from : {&candidates, &named_only})
@@ -137,10 +137,10 @@ bool Compilation::front_end(const std::string &path) {
   return front_end(path, fs);
 }
 
-const Target &Compilation::select(const TargetRequest &request) {
-  target = select_target(model, request);
-  if (target.chart) warn_unused_charts(model, target.chart, diag);
-  return target;
+const Selection &Compilation::select(const SelectionRequest &request) {
+  selection = choose(model, request);
+  if (selection.chart) warn_unused_charts(model, selection.chart, diag);
+  return selection;
 }
 
 }  // namespace gfec::pipeline

@@ -335,9 +335,9 @@ inline std::unique_ptr<Compiled> compile_chart(const std::map<std::string, std::
   for (const auto &[path, text] : files) mem.add(path, text);
   auto c = std::make_unique<Compiled>(main, mem);
   // The chart gfec compiles by default: the one no other chart runs (docs/language.md "Sub-charts").
-  pipeline::TargetRequest request;
+  pipeline::SelectionRequest request;
   request.among = pipeline::kSfc | pipeline::kFsm;
-  const pipeline::Target &target = c->c.diag.has_errors() ? c->c.target : c->c.select(request);
+  const pipeline::Selection &target = c->c.diag.has_errors() ? c->c.selection : c->c.select(request);
   c->errors = c->text();
   if (c->diag.has_errors() || c->model.charts.empty()) return c;
   if (!target.chosen()) {
