@@ -127,7 +127,7 @@ public:
     expect(p.actors.contains(p.start), "a plan's start in range");
     auto rules = [&](const std::vector<model::Rule> &rs) {
       for (const auto &r : rs)
-        if (r.target.kind == model::Target::Kind::Actor)
+        if (r.target.kind == model::RuleTarget::Kind::Actor)
           expect(p.actors.contains(r.target.actor), "a rule target in range");
     };
     for (const auto &a : p.actors) {
