@@ -94,11 +94,10 @@ int compile(const Options &o, DiagnosticReport &report, std::ostream &out) {
     // A back end that compiles toolboxes only chooses among the toolboxes (§5.4).
     request.among = chosen_backend && chosen_backend->accepts == pipeline::kToolbox
                         ? static_cast<unsigned>(pipeline::kToolbox)
-                        : pipeline::kSfc | pipeline::kFsm | pipeline::kPlan;
+                        : pipeline::kCharts | pipeline::kPlan;
     c.select(request);
-    // An option of the C engine that changes its prototypes: a warning the validator cannot give.
-    if (!o.context_type.empty() && (c.selection.kind & (pipeline::kSfc | pipeline::kFsm)))
-      check_context_prototypes(c.model, c.selection.chart, c.diag);
+    // A back end's own options may add warnings about what was selected (the C engine's --context).
+    for (const auto &given : o.backend_options) given.group->check_selection(c.model, c.selection, c.diag);
     ok = !c.diag.has_errors();  // -Werror
   }
   report.add(input, c.diag, c.sources);
@@ -128,21 +127,24 @@ int compile(const Options &o, DiagnosticReport &report, std::ostream &out) {
   if (!info.accepts_kind(selection.kind)) {
     report.tool_error(input,
                       fmt::format("--emit={} compiles {} only; '{}' is {}", info.name, accepted_kinds(info),
-                                  selection.name,
-                                  selection.kind == pipeline::kSfc    ? "sfc"
-                                  : selection.kind == pipeline::kFsm  ? "fsm"
-                                  : selection.kind == pipeline::kPlan ? "plan"
-                                                                      : "toolbox",
-                                  selection.name),
+                                  selection.name, pipeline::kind_name(selection.kind), selection.name),
                       true);
     return kExitUsageOrIo;
   }
-  if ((!o.context_type.empty() || o.names) && !info.c_engine_options) {
-    report.tool_error(input,
-                      fmt::format("{} applies only to the C engine; --emit={} does not take it",
-                                  o.context_type.empty() ? "--names" : "--context", info.name),
-                      false);
-    return kExitUsageOrIo;
+  // A back end's own options are for it alone.
+  std::shared_ptr<const BackendOptions> own;
+  for (const auto &given : o.backend_options) {
+    if (given.backend == &info) {
+      own = given.group->options();
+      continue;
+    }
+    if (std::string flag = given.group->given(); !flag.empty()) {
+      report.tool_error(
+          input,
+          fmt::format("{} applies only to {}; --emit={} does not take it", flag, given.group->owner(), info.name),
+          false);
+      return kExitUsageOrIo;
+    }
   }
   EmitOptions emit;
   // EmitOptions (compiler/backend.h) still numbers them, -1 for none.
@@ -155,8 +157,7 @@ int compile(const Options &o, DiagnosticReport &report, std::ostream &out) {
   emit.engine = o.engine == "readable"   ? EngineForm::Readable
                 : o.engine == "scalable" ? EngineForm::Scalable
                                          : EngineForm::Auto;
-  emit.context_type = o.context_type;
-  emit.names = o.names;
+  emit.backend = own;
   auto backend = info.make();
   if (o.output == "-") {
     // "-o -": the one output on stdout, for pipes (gfec --emit=dot x.sfc -o - | dot -Tpng).
@@ -223,6 +224,15 @@ int finish_report(DiagnosticReport &report, int code, std::ostream &err) {
   if (failure.empty()) return code;
   err << "gfec: error: " << failure << "\n";
   return kExitUsageOrIo;
+}
+
+int compile_command(int argc, const char *const *argv, std::ostream &out, std::ostream &err) {
+  ParsedCommandLine cl = parse_command_line(argc, argv);
+  if (cl.exit_now) {
+    (cl.exit_code == 0 ? out : err) << cl.message;
+    return cl.exit_code;
+  }
+  return run(cl.options, out, err);
 }
 
 int run(const Options &o, std::ostream &out, std::ostream &err) {

@@ -95,7 +95,7 @@ void name_globals(EngineContext &c, NameSpace &globals, const EngineContext *roo
     c.instance_activation_fn = t + "_instance_activation";
     for (const auto *n : {&c.instance_type, &c.instance_count, &c.instance_activation_fn}) globals.claim(*n);
   }
-  if (c.root && c.options.names) {
+  if (c.root && c.engine_options.names) {
     c.place_name_fn = t + "_place_name";
     c.transition_name_fn = t + "_transition_name";
     globals.claim(c.place_name_fn);
@@ -160,7 +160,7 @@ void name_locals(EngineContext &c, const NameSpace &globals) {
   c.to = locals.take("to");
   c.index = locals.take("p");
   if (c.has_context()) c.ctx_param = locals.take("ctx");
-  if (c.options.names) c.names = locals.take("names");
+  if (c.engine_options.names) c.names = locals.take("names");
   const std::pair<const char *, std::string *> scalable[] = {
       {"add_n", &c.add_n}, {"lost", &c.lost}, {"lost_n", &c.lost_n}, {"gained", &c.gained}, {"gained_n", &c.gained_n},
       {"w", &c.word},      {"bits", &c.bits}, {"i", &c.i},           {"t", &c.t},           {"fire", &c.fire}};

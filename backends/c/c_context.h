@@ -5,6 +5,7 @@
 
 #include "backend.h"
 #include "c_context_type.h"
+#include "c_engine_options.h"
 #include "c_layout.h"
 #include "model.h"
 
@@ -20,12 +21,14 @@ class FormWriter;
 /// The engine being written: its chart and options, the names chosen, the layout.
 struct EngineContext {
   EngineContext(const model::Model &m, const model::Chart &ch, const EmitOptions &o)
-      : model(m), chart(ch), options(o), context_type(o.context_type) {}
+      : model(m), chart(ch), options(o), engine_options(backend_options<CEngineOptions>(o)),
+        context_type(engine_options.context_type) {}
 
   const model::Model &model;
   const model::Chart &chart;
   const EmitOptions &options;
-  ContextType context_type;  ///< --context-type, read once
+  const CEngineOptions &engine_options;  ///< the C engine's own options (--context, --names)
+  ContextType context_type;              ///< --context-type, read once
   bool fsm = false;
   Layout layout;  ///< readable, sequential or sparse (c_layout.h)
   /// The writer of what depends on the engine's form (c_form.h): the fsm's, or the layout's.

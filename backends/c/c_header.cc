@@ -169,7 +169,7 @@ void api(CodeWriter &w, const EngineContext &c) {
   if (c.team()) team_api(w, c);  // only an fsm is a team machine
   if (c.has_sub()) instance_api(w, c);
   if (c.has_context()) context_api(w, c);
-  if (c.options.names) names_api(w, c);
+  if (c.engine_options.names) names_api(w, c);
 }
 
 void hooks(CodeWriter &w, const EngineContext &c) {

@@ -296,7 +296,7 @@ void emit_source(const EngineContext &c, std::ostream &out) {
     w.blank();
     context_functions(w, c);
   }
-  if (c.options.names) {
+  if (c.engine_options.names) {
     w.blank();
     name_functions(w, c);
   }

@@ -22,26 +22,6 @@ struct Candidate {
   model::ToolboxId toolbox;
 };
 
-const char *kind_name(unsigned kind) {
-  switch (kind) {
-  case kSfc: return "sfc";
-  case kFsm: return "fsm";
-  case kPlan: return "plan";
-  default: return "toolbox";
-  }
-}
-
-/// "sfc, fsm or plan": the kinds of `among`, for "the file declares no ...".
-std::string kinds_text(unsigned among) {
-  std::vector<const char *> names;
-  for (unsigned k : {kSfc, kFsm, kPlan, kToolbox})
-    if (among & k) names.push_back(kind_name(k));
-  std::string s;
-  for (std::size_t i = 0; i < names.size(); ++i)
-    s += fmt::format("{}{}", i == 0 ? "" : i + 1 == names.size() ? " or " : ", ", names[i]);
-  return s;
-}
-
 }  // namespace
 
 Selection choose(const model::Model &m, const SelectionRequest &request) {
@@ -87,9 +67,9 @@ Selection choose(const model::Model &m, const SelectionRequest &request) {
   } else if (candidates.size() == 1) {
     chosen = &candidates.front();
   } else if (candidates.empty()) {
-    t.error = request.among == kToolbox
-                  ? std::string("the file declares no toolbox")
-                  : fmt::format("nothing to {}: the file declares no {}", request.verb, kinds_text(request.among));
+    t.error = request.among == kToolbox ? std::string("the file declares no toolbox")
+                                        : fmt::format("nothing to {}: the file declares no {}", request.verb,
+                                                      kinds_text(request.among, "or"));
     t.in_input = true;
     return t;
   } else {

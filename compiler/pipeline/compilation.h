@@ -8,6 +8,7 @@
 #include "file_system.h"
 #include "loader.h"
 #include "model.h"
+#include "pipeline/kind.h"
 #include "source.h"
 
 #include <string>
@@ -19,9 +20,6 @@ struct Suite;
 }
 
 namespace pipeline {
-
-/// What can be compiled, as bits (a back end's "accepts" in backends/backend_registry.h).
-enum TargetKind : unsigned { kSfc = 1, kFsm = 2, kPlan = 4, kToolbox = 8 };
 
 /// What the front end needs from the command line.
 struct FrontEndOptions {
@@ -42,7 +40,7 @@ struct SelectionRequest {
 /// The selection: the chart, plan or toolbox of the main file chosen to compile (or run), or why
 /// there is none. (A "target" is an MCU the engine runs on; this is what of the file is compiled.)
 struct Selection {
-  unsigned kind = 0;     ///< one TargetKind bit; 0 when nothing was chosen
+  unsigned kind = 0;     ///< one Kind bit (pipeline/kind.h); 0 when nothing was chosen
   model::ChartId chart;  ///< the one of `kind` is set, the others are none
   model::PlanId plan;
   model::ToolboxId toolbox;

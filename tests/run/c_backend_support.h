@@ -6,6 +6,7 @@
 #include "analysis/activation_bounds.h"
 #include "backend.h"
 #include "c_backend.h"
+#include "c_engine_options.h"
 #include "diagnostic_printer.h"
 #include "file_system.h"
 #include "loader.h"
@@ -300,6 +301,14 @@ private:
   model::ChartId current_{0};
 };
 
+/// The C engine's own options (--context-type, --names) as EmitOptions carries them.
+inline std::shared_ptr<const BackendOptions> c_engine_options(const std::string &context_type, bool names = false) {
+  auto c = std::make_shared<c_backend::CEngineOptions>();
+  c->context_type = context_type;
+  c->names = names;
+  return c;
+}
+
 /// Runs the C back end on a model: {engine.c, engine.h} for output `output`.
 inline std::vector<OutputFile> emit_c(const model::Model &m, const std::string &output = "engine.c",
                                       bool line_directives = true, const std::string &source = "hand.sfc",
@@ -309,7 +318,7 @@ inline std::vector<OutputFile> emit_c(const model::Model &m, const std::string &
   o.source_name = source;
   o.line_directives = line_directives;
   o.engine = engine;
-  o.context_type = context_type;
+  o.backend = c_engine_options(context_type);
   o.chart = model::ChartId(0);
   return emit_to_memory(*make_c_backend(), m, o);
 }
@@ -349,8 +358,7 @@ inline std::unique_ptr<Compiled> compile_chart(const std::map<std::string, std::
   o.source_name = main;
   o.line_directives = line_directives;
   o.engine = engine;
-  o.context_type = context_type;
-  o.names = names;
+  o.backend = c_engine_options(context_type, names);
   o.chart = target.chart;
   c->chart = target.chart;
   c->files = emit_to_memory(*make_c_backend(), c->model, o);
