@@ -1,6 +1,7 @@
 #include "backend_registry.h"
 
 #include "c_backend.h"
+#include "c_engine_options.h"
 #include "chart_backend.h"
 #include "cpp_backend.h"
 #include "dot_backend.h"
@@ -12,19 +13,21 @@ namespace gfec {
 
 namespace {
 
-constexpr unsigned kCharts = kAcceptsSfc | kAcceptsFsm;
+using pipeline::kCharts;
+using pipeline::kPlan;
+using pipeline::kToolbox;
 
 // Back ends register here as they land, with what they accept and write.
 const std::vector<BackendInfo> kBackends = {
-    {"c", kCharts, ".c", ".h", "a C99 engine: the default for an sfc or fsm", "docs/c-engine.md", make_c_backend, true},
-    {"cpp", kAcceptsPlan, ".cpp", ".hpp", "a plan's wiring against the afp runtime: the default for a plan",
-     "docs/plans.md", make_cpp_backend},
-    {"toolbox-skeleton", kAcceptsToolbox, ".hpp", ".cpp", "a toolbox's C++ classes to fill in", "docs/toolbox.md",
+    {"c", kCharts, ".c", ".h", "a C99 engine: the default for an sfc or fsm", "docs/c-engine.md", make_c_backend,
+     c_backend::make_c_engine_option_group},
+    {"cpp", kPlan, ".cpp", ".hpp", "a plan's wiring against the afp runtime: the default for a plan", "docs/plans.md",
+     make_cpp_backend},
+    {"toolbox-skeleton", kToolbox, ".hpp", ".cpp", "a toolbox's C++ classes to fill in", "docs/toolbox.md",
      make_toolbox_skeleton_backend},
-    {"json", kCharts | kAcceptsPlan, ".json", "", "the validated model, for tools", "docs/model-json.md",
-     make_json_backend},
-    {"dot", kCharts | kAcceptsPlan, ".dot", "", "a picture in Graphviz DOT", "docs/cli.md", make_dot_backend},
-    {"svg", kCharts | kAcceptsPlan, ".svg", "", "the same picture rendered by Graphviz's dot (needs dot on PATH)",
+    {"json", kCharts | kPlan, ".json", "", "the validated model, for tools", "docs/model-json.md", make_json_backend},
+    {"dot", kCharts | kPlan, ".dot", "", "a picture in Graphviz DOT", "docs/cli.md", make_dot_backend},
+    {"svg", kCharts | kPlan, ".svg", "", "the same picture rendered by Graphviz's dot (needs dot on PATH)",
      "docs/cli.md", make_svg_backend},
     {"chart", kCharts, ".sfc", "", "chart text, e.g. a converted ALICA plan", "docs/alica.md", make_chart_backend},
 };
@@ -52,17 +55,7 @@ std::string backend_names_list() {
   return names;
 }
 
-std::string accepted_kinds(const BackendInfo &b) {
-  std::vector<const char *> kinds;
-  if (b.accepts & kAcceptsSfc) kinds.push_back("sfc");
-  if (b.accepts & kAcceptsFsm) kinds.push_back("fsm");
-  if (b.accepts & kAcceptsPlan) kinds.push_back("plan");
-  if (b.accepts & kAcceptsToolbox) kinds.push_back("toolbox");
-  std::string s;
-  for (std::size_t i = 0; i < kinds.size(); ++i)
-    s += fmt::format("{}{}", i == 0 ? "" : i + 1 == kinds.size() ? " and " : ", ", kinds[i]);
-  return s;
-}
+std::string accepted_kinds(const BackendInfo &b) { return pipeline::kinds_text(b.accepts, "and"); }
 
 std::string backends_help() {
   std::string s = "Back ends (--emit=NAME; without it an sfc or fsm gives a C engine, a plan C++ wiring):\n";
@@ -70,6 +63,16 @@ std::string backends_help() {
     s += fmt::format("  {:<18} {}\n  {:<18} compiles {}; writes {}{}{}; {}\n", b.name, b.summary, "", accepted_kinds(b),
                      b.extension, b.single_file() ? "" : " and ", b.companions, b.help);
   return s;
+}
+
+std::vector<BackendOptionsGiven> add_backend_options(CLI::App &app) {
+  std::vector<BackendOptionsGiven> groups;
+  for (const auto &b : kBackends) {
+    if (!b.option_group) continue;
+    groups.push_back({&b, b.option_group()});
+    groups.back().group->add_to(app);
+  }
+  return groups;
 }
 
 std::unique_ptr<Backend> make_backend(std::string_view name) {

@@ -4,6 +4,8 @@
 #pragma once
 
 #include "backend.h"
+#include "backend_option_group.h"
+#include "pipeline/kind.h"
 
 #include <memory>
 #include <string>
@@ -12,19 +14,17 @@
 
 namespace gfec {
 
-/// What a back end compiles, as bits: a chart file's sfc and fsm, a plan, a toolbox.
-enum Accepts : unsigned { kAcceptsSfc = 1, kAcceptsFsm = 2, kAcceptsPlan = 4, kAcceptsToolbox = 8 };
-
 struct BackendInfo {
   const char *name;        ///< as --emit spells it
-  unsigned accepts;        ///< Accepts bits
+  unsigned accepts;        ///< what it compiles: pipeline::Kind bits
   const char *extension;   ///< the primary output's, for the name derived from the input (".c")
   const char *companions;  ///< outputs written beside the primary one ("" when none), for --help
   const char *summary;     ///< one line for --help
   const char *help;        ///< where to read more: the docs page
   std::unique_ptr<Backend> (*make)();
-  /// Takes the C engine's options (--context, --context-type, --names); others reject them.
-  bool c_engine_options = false;
+  /// Its own command-line options (the C engine's --context, --context-type, --names), or null.
+  /// Every group is declared on the command line; giving one for another back end is an error.
+  std::unique_ptr<BackendOptionGroup> (*option_group)() = nullptr;
 
   bool accepts_kind(unsigned kind) const { return (accepts & kind) != 0; }
   /// Writes only its primary output (so `-o -` can send it to stdout).
@@ -35,7 +35,7 @@ struct BackendInfo {
 const std::vector<BackendInfo> &backends();
 /// The back end called `name`, or null.
 const BackendInfo *find_backend(std::string_view name);
-/// The back end used when --emit is not given, for what is compiled (one Accepts bit): the C
+/// The back end used when --emit is not given, for what is compiled (one pipeline::Kind bit): the C
 /// engine for an sfc or fsm, the C++ wiring for a plan, the skeleton for a toolbox.
 const BackendInfo &default_backend(unsigned kind);
 /// "c, cpp, json, ...": for messages.
@@ -44,6 +44,14 @@ std::string backend_names_list();
 std::string backends_help();
 /// "sfc and fsm", "sfc, fsm and plan": what `b` compiles, for messages.
 std::string accepted_kinds(const BackendInfo &b);
+
+/// A back end's option group as one command line filled it.
+struct BackendOptionsGiven {
+  const BackendInfo *backend;
+  std::shared_ptr<BackendOptionGroup> group;
+};
+/// Declares every back end's option group on `app`, in the table's order (parse_command_line).
+std::vector<BackendOptionsGiven> add_backend_options(CLI::App &app);
 
 /// The back end called `name`, or null (a new instance).
 std::unique_ptr<Backend> make_backend(std::string_view name);

@@ -7,6 +7,7 @@
 
 #include <functional>
 #include <iosfwd>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -23,21 +24,33 @@ struct OutputFile {
 /// picks the readable form for small charts and the scalable one above a size.
 enum class EngineForm { Auto, Readable, Scalable };
 
+/// A back end's own options (the C engine's --context and --names): a struct of the back end's
+/// deriving from this, carried by EmitOptions::backend; nothing generic reads it.
+struct BackendOptions {
+  virtual ~BackendOptions() = default;
+};
+
 struct EmitOptions {
   std::string output_path;      ///< the primary output as the user named it (e.g. "engine.c")
   std::string source_name;      ///< the chart file as the user named it, for the header comment
   bool line_directives = true;  ///< `#line` back to the chart
-  // What to compile, as pipeline::select_target chose it; exactly the one the back end accepts
+  // What to compile, as pipeline::choose() picked it; exactly the one the back end accepts
   // is set (a back end given none is a bug of its caller and throws std::invalid_argument).
   model::ChartId chart;                  ///< the sfc or fsm to compile, or none
   model::PlanId plan;                    ///< the plan to compile, or none
   model::ToolboxId toolbox;              ///< the toolbox to write a skeleton for, or none
   EngineForm engine = EngineForm::Auto;  ///< C back end: `--engine=auto|readable|scalable`
-  /// C back end, `--context[-type]`: the C type of the instance context every interface call
-  /// receives first (docs/c-engine.md "Instance context"); empty: no context, GFE's calls.
-  std::string context_type;
-  bool names = false;  ///< C back end, `--names`: X_place_name and X_transition_name
+  /// The chosen back end's own options (its registry row's option group made them,
+  /// backends/backend_registry.h), or null: its defaults. Read with backend_options<T>().
+  std::shared_ptr<const BackendOptions> backend;
 };
+
+/// The back end's own options of type T that `o` carries, or T's defaults.
+template <class T> const T &backend_options(const EmitOptions &o) {
+  static const T defaults{};
+  const T *own = dynamic_cast<const T *>(o.backend.get());
+  return own ? *own : defaults;
+}
 
 /// A program a back end's output goes through (OutputSink::filter): it reads the text on its
 /// standard input and writes the output on its standard output.

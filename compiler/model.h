@@ -264,7 +264,8 @@ struct ConfigEntry {
   SourceRange name_range;  ///< the entry's name where it is declared
 };
 
-struct Target {
+/// Where a plan rule sends an outcome: an actor, `terminate` or `ignore` (the runtime's afp::Target).
+struct RuleTarget {
   enum class Kind { Actor, Terminate, Ignore };
   Kind kind = Kind::Actor;
   ActorId actor;  ///< Kind::Actor
@@ -273,7 +274,7 @@ struct Target {
 /// `OUTCOME -> target`: outcome indexes the template's outcomes (or a sub-plan's OK/INTERRUPTED/ERROR).
 struct Rule {
   int outcome = -1;
-  Target target;
+  RuleTarget target;
   SourceRange range;
 };
 

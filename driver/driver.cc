@@ -77,16 +77,15 @@ int compile(const Options &o, DiagnosticReport &report, std::ostream &out) {
   const BackendInfo *chosen_backend = o.emit.empty() ? nullptr : find_backend(o.emit);
   bool ok = c.front_end(input);
   if (ok && !o.check_only) {
-    pipeline::TargetRequest request;
+    pipeline::SelectionRequest request;
     request.name = o.chart;
     // A back end that compiles toolboxes only chooses among the toolboxes (§5.4).
     request.among = chosen_backend && chosen_backend->accepts == pipeline::kToolbox
                         ? static_cast<unsigned>(pipeline::kToolbox)
-                        : pipeline::kSfc | pipeline::kFsm | pipeline::kPlan;
+                        : pipeline::kCharts | pipeline::kPlan;
     c.select(request);
-    // An option of the C engine that changes its prototypes: a warning the validator cannot give.
-    if (!o.context_type.empty() && (c.target.kind & (pipeline::kSfc | pipeline::kFsm)))
-      check_context_prototypes(c.model, c.target.chart, c.diag);
+    // A back end's own options may add warnings about what was selected (the C engine's --context).
+    for (const auto &given : o.backend_options) given.group->check_selection(c.model, c.selection, c.diag);
     ok = !c.diag.has_errors();  // -Werror
   }
   report.add(input, c.diag, c.sources);
@@ -97,54 +96,56 @@ int compile(const Options &o, DiagnosticReport &report, std::ostream &out) {
   if (!ok) return kExitInputError;
   if (o.check_only) return kExitOk;
 
-  const pipeline::Target &target = c.target;
-  if (!target.chosen() && target.in_input) {
+  const pipeline::Selection &selection = c.selection;
+  if (!selection.chosen() && selection.in_input) {
     Diagnostics located(o.warnings, o.error_limit);
-    located.error({c.model.main_file, 0, 0}, ErrorKind::NothingToCompile, target.error);
+    located.error({c.model.main_file, 0, 0}, ErrorKind::NothingToCompile, selection.error);
     report.add(input, located, c.sources);
     return kExitInputError;
   }
-  if (!target.chosen()) {
-    report.tool_error(input, target.error, true);
+  if (!selection.chosen()) {
+    report.tool_error(input, selection.error, true);
     return kExitUsageOrIo;
   }
   if (!o.emit.empty() && !chosen_backend) {
     report.tool_error(input, fmt::format("unknown back end '{}' (known: {})", o.emit, backend_names_list()), false);
     return kExitUsageOrIo;
   }
-  const BackendInfo &info = chosen_backend ? *chosen_backend : default_backend(target.kind);
-  if (!info.accepts_kind(target.kind)) {
+  const BackendInfo &info = chosen_backend ? *chosen_backend : default_backend(selection.kind);
+  if (!info.accepts_kind(selection.kind)) {
     report.tool_error(input,
                       fmt::format("--emit={} compiles {} only; '{}' is {}", info.name, accepted_kinds(info),
-                                  target.name,
-                                  target.kind == pipeline::kSfc    ? "sfc"
-                                  : target.kind == pipeline::kFsm  ? "fsm"
-                                  : target.kind == pipeline::kPlan ? "plan"
-                                                                   : "toolbox",
-                                  target.name),
+                                  selection.name, pipeline::kind_name(selection.kind), selection.name),
                       true);
     return kExitUsageOrIo;
   }
-  if ((!o.context_type.empty() || o.names) && !info.c_engine_options) {
-    report.tool_error(input,
-                      fmt::format("{} applies only to the C engine; --emit={} does not take it",
-                                  o.context_type.empty() ? "--names" : "--context", info.name),
-                      false);
-    return kExitUsageOrIo;
+  // A back end's own options are for it alone.
+  std::shared_ptr<const BackendOptions> own;
+  for (const auto &given : o.backend_options) {
+    if (given.backend == &info) {
+      own = given.group->options();
+      continue;
+    }
+    if (std::string flag = given.group->given(); !flag.empty()) {
+      report.tool_error(
+          input,
+          fmt::format("{} applies only to {}; --emit={} does not take it", flag, given.group->owner(), info.name),
+          false);
+      return kExitUsageOrIo;
+    }
   }
   EmitOptions emit;
   // EmitOptions (compiler/backend.h) still numbers them, -1 for none.
-  emit.chart = target.chart;
-  emit.plan = target.plan;
-  emit.toolbox = target.toolbox;
+  emit.chart = selection.chart;
+  emit.plan = selection.plan;
+  emit.toolbox = selection.toolbox;
   emit.output_path = o.output.empty() ? replace_extension(base_name(input), info.extension) : o.output;
   emit.source_name = input;
   emit.line_directives = o.line_directives;
   emit.engine = o.engine == "readable"   ? EngineForm::Readable
                 : o.engine == "scalable" ? EngineForm::Scalable
                                          : EngineForm::Auto;
-  emit.context_type = o.context_type;
-  emit.names = o.names;
+  emit.backend = own;
   auto backend = info.make();
   if (o.output == "-") {
     // "-o -": the one output on stdout, for pipes (gfec --emit=dot x.sfc -o - | dot -Tpng).
@@ -211,6 +212,15 @@ int finish_report(DiagnosticReport &report, int code, std::ostream &err) {
   if (failure.empty()) return code;
   err << "gfec: error: " << failure << "\n";
   return kExitUsageOrIo;
+}
+
+int compile_command(int argc, const char *const *argv, std::ostream &out, std::ostream &err) {
+  ParsedCommandLine cl = parse_command_line(argc, argv);
+  if (cl.exit_now) {
+    (cl.exit_code == 0 ? out : err) << cl.message;
+    return cl.exit_code;
+  }
+  return run(cl.options, out, err);
 }
 
 int run(const Options &o, std::ostream &out, std::ostream &err) {

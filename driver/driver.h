@@ -14,6 +14,9 @@ enum ExitCode { kExitOk = 0, kExitInputError = 1, kExitUsageOrIo = 2 };
 
 int run(const Options &options, std::ostream &out, std::ostream &err);
 
+/// `gfec FILE...` (commands.h): reads the command line (options.h) and runs it.
+int compile_command(int argc, const char *const *argv, std::ostream &out, std::ostream &err);
+
 class DiagnosticReport;
 
 /// Ends `report` (a SARIF file is written then) and gives the command's exit code: `code`, or

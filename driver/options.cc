@@ -1,9 +1,9 @@
 #include "options.h"
 
 #include "backend_registry.h"
+#include "commands.h"
 #include "did_you_mean.h"
 #include "input_languages.h"
-#include "naming/c_type_name.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -108,12 +108,13 @@ std::vector<const char *> take_dependency_flags(int argc, const char *const *arg
   return rest;
 }
 
-/// The four ways gfec is run, for --help and for a command line without files.
-std::string usage_forms() {
-  return "Usage: gfec CHART [-o OUT] [OPTIONS]      compile an sfc or fsm to a C engine, a plan to C++\n"
-         "       gfec --check FILE... [OPTIONS]     validate, report every diagnostic, write nothing\n"
-         "       gfec --analyze FILE... [OPTIONS]   every static analysis, a report per chart and plan\n"
-         "       gfec run CHART --inputs TRACE.csv  run a chart in the reference interpreter, tick by tick\n";
+/// -x LANG: the one place its values are checked.
+void add_language_option(CLI::App &app, std::string &language) {
+  app.add_option("-x", language,
+                 "Input language, as gcc's -x: " + input_languages_help() +
+                     "; default: from the file's extension (.pml is alica), other files chart text")
+      ->type_name("LANG")
+      ->check(CLI::IsMember(input_language_names()));
 }
 
 std::string warning_help() {
@@ -159,10 +160,38 @@ std::string apply_f_flag(const std::string &f, Options &o) {
   return {};
 }
 
+std::string FrontEndFlags::apply(Options &o) const {
+  for (const auto &w : warnings)
+    if (std::string why = apply_warning_flag(w, o.warnings); !why.empty()) return why;
+  for (const auto &flag : f)
+    if (std::string why = apply_f_flag(flag, o); !why.empty()) return why;
+  // gcc: -w inhibits every warning, whatever -W flags came with it.
+  if (no_warnings) o.warnings.enabled.fill(false);
+  return {};
+}
+
+void add_front_end_options(CLI::App &app, Options &o, FrontEndFlags &flags) {
+  // One value per occurrence (-I a -I b, -Wall -Werror): CLI11 would otherwise let a vector
+  // option swallow the file names that follow it ("-Wall x.sfc").
+  app.add_option("-I", o.include_dirs, "Add DIR to the folders searched for imports")
+      ->type_name("DIR")
+      ->allow_extra_args(false);
+  add_language_option(app, o.language);
+  app.add_option("-W", flags.warnings, "Warning control: -W<name>, -Wno-<name>, -Wall, -Werror")
+      ->type_name("NAME")
+      ->allow_extra_args(false);
+  app.add_flag("-w", flags.no_warnings, "Inhibit every warning (as gcc)");
+  app.add_option("-f", flags.f,
+                 "-fdiagnostics-format=text|json|sarif-stderr|sarif-file, -fmax-errors=N, -fdiagnostics-color=WHEN, "
+                 "-fdiagnostics-parseable-fixits, -fno-diagnostics-show-line-numbers")
+      ->type_name("OPTION")
+      ->allow_extra_args(false);
+}
+
 ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
   ParsedCommandLine result;
   Options &o = result.options;
-  CLI::App app{"gfec - compiles chart files (sfc, fsm, plan) into C and C++ engines for robots\n\n" + usage_forms(),
+  CLI::App app{"gfec - compiles chart files (sfc, fsm, plan) into C and C++ engines for robots\n\n" + usage_lines(),
                "gfec"};
   app.footer(backends_help() + "\n" + warning_help() +
              "\nDependency files, as gcc writes them: -MD writes OUTPUT.d (or -MF FILE) for make, naming\n"
@@ -171,26 +200,16 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
              "\nDiagnostics, as gcc 12 prints them: -fdiagnostics-color=auto|always|never (auto: colour on a\n"
              "terminal unless NO_COLOR is set; -fno-diagnostics-color = never), -fno-diagnostics-show-line-numbers,\n"
              "-fdiagnostics-parseable-fixits (fix-it:\"FILE\":{L:C-L:C}:\"TEXT\" lines for editors).\n"
-             "\nSubcommands: 'gfec run CHART' runs a chart in the reference interpreter; 'gfec test FILE...'\n"
-             "runs scenario tests (see 'gfec run --help', 'gfec test --help').\n"
+             "\n" +
+             commands_help() +
              "\nExit status: 0 success, 1 errors in the input, 2 usage or I/O error.\n"
              "Documentation: docs/cli.md");
-  std::vector<std::string> warning_flags;
-  std::vector<std::string> f_flags;
   bool no_line = false;
   app.add_option("files", o.inputs, "Chart files to compile (several only with --check or --analyze)");
   app.add_option("-o,--output", o.output,
                  "Output file; a C engine's header is written beside it; '-' for stdout (one-file back ends)");
-  // One value per occurrence (-I a -I b, -Wall -Werror): CLI11 would otherwise let a vector
-  // option swallow the file names that follow it ("-Wall x.sfc").
-  app.add_option("-I", o.include_dirs, "Add DIR to the folders searched for imports")
-      ->type_name("DIR")
-      ->allow_extra_args(false);
-  app.add_option("-x", o.language,
-                 "Input language, as gcc's -x: " + input_languages_help() +
-                     "; default: from the file's extension (.pml is alica), other files chart text")
-      ->type_name("LANG")
-      ->check(CLI::IsMember(input_language_names()));
+  FrontEndFlags front_end;
+  add_front_end_options(app, o, front_end);
   app.add_flag("--check", o.check_only, "Validate only: report every diagnostic and write nothing");
   app.add_flag("--analyze", o.analyze,
                "Run every static analysis and print a report per chart and plan; write nothing");
@@ -203,26 +222,8 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
                  "C engine form: auto (readable up to 64 places or states, or when a quarter of an sfc's places can "
                  "be active at once), readable or scalable")
       ->check(CLI::IsMember({"auto", "readable", "scalable"}));
-  bool context = false;
-  std::string context_type;
-  app.add_flag("--context", context,
-               "C engine: every interface function takes the instance's context (void *) as its first argument, "
-               "set by X_set_context (docs/c-engine.md \"Instance context\")");
-  app.add_option("--context-type", context_type,
-                 "C engine: the context's C type, e.g. 'struct motor *' (implies --context; default void *)")
-      ->type_name("TYPE");
-  app.add_flag("--names", o.names,
-               "C engine: X_place_name() and X_transition_name(), the declared names for logging and tracing");
-  app.add_option("-W", warning_flags, "Warning control: -W<name>, -Wno-<name>, -Wall, -Werror")
-      ->type_name("NAME")
-      ->allow_extra_args(false);
-  bool no_warnings = false;
-  app.add_flag("-w", no_warnings, "Inhibit every warning (as gcc)");
-  app.add_option("-f", f_flags,
-                 "-fdiagnostics-format=text|json|sarif-stderr|sarif-file, -fmax-errors=N, -fdiagnostics-color=WHEN, "
-                 "-fdiagnostics-parseable-fixits, -fno-diagnostics-show-line-numbers")
-      ->type_name("OPTION")
-      ->allow_extra_args(false);
+  // Each back end's own options (the C engine's --context, --names): its registry row declares them.
+  o.backend_options = add_backend_options(app);
   app.set_version_flag("--version", fmt::format("gfec {}", GFEC_VERSION));
 
   std::string dep_error;
@@ -255,26 +256,14 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
     // gcc's words, then what a first-time user can type next.
     result.exit_now = true;
     result.exit_code = 2;
-    result.message = "gfec: fatal error: no input files\n" + usage_forms() +
+    result.message = "gfec: fatal error: no input files\n" + usage_lines() +
                      "Run 'gfec --help' for the options, 'gfec run --help' for the interpreter's.\n";
     return result;
   }
-  for (const auto &w : warning_flags)
-    if (std::string why = apply_warning_flag(w, o.warnings); !why.empty()) return usage_error(why);
-  for (const auto &f : f_flags) {
-    std::string why = apply_f_flag(f, o);
-    if (!why.empty()) return usage_error(why);
-  }
-  // gcc: -w inhibits every warning, whatever -W flags came with it.
-  if (no_warnings) o.warnings.enabled.fill(false);
+  if (std::string why = front_end.apply(o); !why.empty()) return usage_error(why);
   o.line_directives = !no_line;
-  if (!context_type.empty() || context) {
-    if (context_type.empty()) context_type = "void *";
-    naming::CTypeName type;
-    if (std::string why = naming::read_c_type_name(context_type, type); !why.empty())
-      return usage_error(fmt::format("--context-type '{}': {}", context_type, why));
-    o.context_type = type.spelling;
-  }
+  for (auto &given : o.backend_options)
+    if (std::string why = given.group->check(); !why.empty()) return usage_error(why);
   if (o.analyze && (!o.output.empty() || o.deps.write)) return usage_error("--analyze writes nothing; drop -o and -MD");
   if (o.analyze) return result;  // several files are fine, as with --check
   if (!o.check_only && o.inputs.size() > 1) return usage_error("several input files are only allowed with --check");

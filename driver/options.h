@@ -1,10 +1,15 @@
 // Everything the command line says, in one value passed down (no option globals).
 #pragma once
 
+#include "backend_registry.h"
 #include "diagnostics.h"
 
 #include <string>
 #include <vector>
+
+namespace CLI {
+class App;
+}
 
 namespace gfec {
 
@@ -30,18 +35,17 @@ struct DependencyOptions {
 
 struct Options {
   std::vector<std::string> inputs;
-  std::string output;                     ///< -o; empty: derived from the input's name
-  std::vector<std::string> include_dirs;  ///< -I
-  std::string language;                   ///< -x alica|gfec: the input language; empty: from the extension
-  bool check_only = false;                ///< --check: validate, write nothing
-  bool analyze = false;                   ///< --analyze: every static analysis, a report (analyze_command.h)
-  std::string emit;                       ///< --emit=NAME (backend_registry.h); empty: from what is compiled
-  std::string chart;                      ///< --chart NAME
-  bool line_directives = true;            ///< --no-line-directives turns them off
-  std::string engine = "auto";            ///< --engine=auto|readable|scalable: the C engine's form
-  std::string context_type;               ///< --context (void *) or --context-type=TYPE; empty: no context
-  bool names = false;                     ///< --names: the C engine's place and transition name table
-  WarningOptions warnings;                ///< -W<name>, -Wno-<name>, -Wall, -Werror[=NAME], -Wno-error=NAME, -w
+  std::string output;                                ///< -o; empty: derived from the input's name
+  std::vector<std::string> include_dirs;             ///< -I
+  std::string language;                              ///< -x alica|gfec: the input language; empty: from the extension
+  bool check_only = false;                           ///< --check: validate, write nothing
+  bool analyze = false;                              ///< --analyze: every static analysis, a report (analyze_command.h)
+  std::string emit;                                  ///< --emit=NAME (backend_registry.h); empty: from what is compiled
+  std::string chart;                                 ///< --chart NAME
+  bool line_directives = true;                       ///< --no-line-directives turns them off
+  std::string engine = "auto";                       ///< --engine=auto|readable|scalable: the C engine's form
+  std::vector<BackendOptionsGiven> backend_options;  ///< each back end's own (--context...): backend_registry.h
+  WarningOptions warnings;  ///< -W<name>, -Wno-<name>, -Wall, -Werror[=NAME], -Wno-error=NAME, -w
   DiagnosticsFormat diagnostics_format = DiagnosticsFormat::Text;
   std::size_t error_limit = 50;       ///< -fmax-errors=N
   ColorMode color = ColorMode::Auto;  ///< -fdiagnostics-color[=WHEN], -fno-diagnostics-color
@@ -61,8 +65,22 @@ struct ParsedCommandLine {
 
 ParsedCommandLine parse_command_line(int argc, const char *const *argv);
 
-/// Applies one -f option without its "-f" ("diagnostics-format=json", "max-errors=5"): gfec,
-/// `gfec run` and `gfec test` read them alike. Returns "" or the usage error.
+/// Applies one -f option without its "-f" ("diagnostics-format=json", "max-errors=5"): every
+/// command reads them alike. Returns "" or the usage error.
 std::string apply_f_flag(const std::string &flag, Options &o);
+
+/// The -W, -w and -f values of a command line as given, until the parse is over.
+struct FrontEndFlags {
+  std::vector<std::string> warnings;  ///< -W<value>
+  std::vector<std::string> f;         ///< -f<value>
+  bool no_warnings = false;           ///< -w
+  /// Applies them to `o` (-w last, as gcc); returns "" or the usage error.
+  std::string apply(Options &o) const;
+};
+
+/// The options every command takes alike, so that `gfec run` and `gfec test` read a chart as gfec
+/// does: -I and -x into `o`, and -W..., -w and -f... (diagnostics, -fmax-errors) into `flags`
+/// for FrontEndFlags::apply once the parse is over.
+void add_front_end_options(CLI::App &app, Options &o, FrontEndFlags &flags);
 
 }  // namespace gfec

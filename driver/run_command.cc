@@ -32,12 +32,11 @@ struct RunOptions {
   int agents = 0;             ///< a team machine's agents (with agents_given)
   bool agents_given = false;  ///< --agents was given; else a team machine runs all its agents
   std::string chart;
-  std::vector<std::string> include_dirs;
   bool observable = false;  ///< only the observable layer, unindented: what engines print
   bool hooks = false;
   bool check_post = false;
   std::string html;  ///< the run viewer page ("" = none)
-  Options report;    ///< -f...: the diagnostics' format and style, as gfec's
+  Options report;    ///< -I, -x, -W..., -f...: as gfec's (add_front_end_options)
 };
 
 /// Chart `c` and the charts its places run, depth first, as the recording builder reads them;
@@ -152,7 +151,6 @@ nlohmann::json viewer_data(const model::Model &model, model::ChartId chart, cons
 
 int run_with(const RunOptions &o, DiagnosticReport &report, std::ostream &out) {
   pipeline::FrontEndOptions f = front_end_options(o.report);
-  f.include_dirs = o.include_dirs;
   f.analyze = false;  // a run reports what happens, not what the analyses would find
   pipeline::Compilation c(f);
   c.front_end(o.input);
@@ -166,11 +164,11 @@ int run_with(const RunOptions &o, DiagnosticReport &report, std::ostream &out) {
 
   // The sfc or fsm of the main file to run: the one no chart runs (docs/language.md
   // "Sub-charts"), or the one --chart names.
-  pipeline::TargetRequest request;
+  pipeline::SelectionRequest request;
   request.name = o.chart;
   request.among = pipeline::kSfc | pipeline::kFsm;
   request.verb = "run";
-  pipeline::Target target = pipeline::select_target(model, request);
+  pipeline::Selection target = pipeline::choose(model, request);
   if (!target.chosen()) {
     report.tool_error(o.input, target.error, true);
     return kExitUsageOrIo;
@@ -209,7 +207,7 @@ int run_with(const RunOptions &o, DiagnosticReport &report, std::ostream &out) {
   // Without --ticks: one tick per row of the trace, or ten.
   std::uint64_t ticks = o.ticks ? o.ticks : trace->rows() ? trace->rows() : 10;
 
-  interp::EngineOptions engine;
+  interp::MachineOptions engine;
   engine.check_post = o.check_post;
   Diagnostics run_diag;
   interp::RunResult r;
@@ -260,21 +258,14 @@ int run_command(int argc, const char *const *argv, std::ostream &out, std::ostre
                                        "A team machine: how many of its agents run, in lockstep (default: all of them)")
                             ->type_name("N");
   app.add_option("--chart", o.chart, "The chart to run when the file declares several")->type_name("NAME");
-  app.add_option("-I", o.include_dirs, "Add DIR to the folders searched for imports")
-      ->type_name("DIR")
-      ->allow_extra_args(false);
   app.add_flag("--observable", o.observable,
                "Print only what an engine's caller can see (calls, activation, state), unindented");
   app.add_flag("--hooks", o.hooks, "Also print what the observation hooks report (lost, gained, enabled)");
   app.add_option("--html", o.html, "Also write the run viewer: a self-contained HTML page of the run (docs/viewer.md)")
       ->type_name("FILE");
   app.add_flag("--check-post", o.check_post, "Evaluate a terminal state's postcondition on entering it");
-  std::vector<std::string> f_flags;
-  app.add_option("-f", f_flags,
-                 "-fdiagnostics-format=text|json|sarif-stderr|sarif-file, -fdiagnostics-color=WHEN, "
-                 "-fno-diagnostics-show-line-numbers, -fmax-errors=N, as for gfec")
-      ->type_name("OPTION")
-      ->allow_extra_args(false);
+  FrontEndFlags front_end;
+  add_front_end_options(app, o.report, front_end);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError &e) {
@@ -285,12 +276,9 @@ int run_command(int argc, const char *const *argv, std::ostream &out, std::ostre
   o.agents_given = agents->count() > 0;
   // The text style gfec run has always printed: no line-number gutter unless asked for.
   o.report.line_numbers = false;
-  for (const auto &f : f_flags) {
-    std::string why = apply_f_flag(f, o.report);
-    if (!why.empty()) {
-      err << "gfec: error: " << why << "\nRun 'gfec run --help' for the options.\n";
-      return kExitUsageOrIo;
-    }
+  if (std::string why = front_end.apply(o.report); !why.empty()) {
+    err << "gfec: error: " << why << "\nRun 'gfec run --help' for the options.\n";
+    return kExitUsageOrIo;
   }
   auto report = make_report(o.report, err);
   return finish_report(*report, run_with(o, *report, out), err);

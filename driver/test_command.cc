@@ -28,22 +28,18 @@ namespace {
 
 struct TestOptions {
   std::vector<std::string> files;
-  std::vector<std::string> include_dirs;
-  std::vector<std::string> f_flags;
   std::string junit;
   std::string filter;
   bool engine_only = false;
   bool reference_only = false;
   bool verbose = false;
   unsigned jobs = 1;
-  Options report;  ///< -f...: the diagnostics' format and style, as gfec's
+  Options report;  ///< -I, -x, -W..., -f...: as gfec's (add_front_end_options)
 };
 
 pipeline::FrontEndOptions test_front_end(const TestOptions &o) {
-  pipeline::FrontEndOptions f;
-  f.include_dirs = o.include_dirs;
-  f.error_limit = o.report.error_limit;  // -fmax-errors=N, as for gfec (50 unless given)
-  f.analyze = false;                     // the tests say what the chart must do; the analyses are gfec's business
+  pipeline::FrontEndOptions f = front_end_options(o.report);
+  f.analyze = false;  // the tests say what the chart must do; the analyses are gfec's business
   return f;
 }
 
@@ -396,20 +392,14 @@ int test_command(int argc, const char *const *argv, std::ostream &out, std::ostr
              "Exit status: 0 all passed, 1 a test failed or a file has errors, 2 usage or I/O error.\n"
              "Documentation: docs/testing-charts.md");
   app.add_option("files", o.files, "Test files")->required();
-  app.add_option("-I", o.include_dirs, "Add DIR to the folders searched for imports")
-      ->type_name("DIR")
-      ->allow_extra_args(false);
   app.add_option("--junit", o.junit, "Also write the results as JUnit XML to FILE")->type_name("FILE");
   app.add_option("--filter", o.filter, "Run only the tests whose name contains TEXT")->type_name("TEXT");
   app.add_flag("--engine-only", o.engine_only, "Run the generated C engine only");
   app.add_flag("--reference-only", o.reference_only, "Run the reference interpreter only (no C compiler needed)");
   app.add_option("-j,--jobs", o.jobs, "Run N tests at once")->type_name("N")->check(CLI::Range(1u, 256u));
   app.add_flag("-v,--verbose", o.verbose, "Print PASS or FAIL and the name of every test");
-  app.add_option("-f", o.f_flags,
-                 "-fdiagnostics-format=text|json|sarif-stderr|sarif-file, -fdiagnostics-color=WHEN, "
-                 "-fno-diagnostics-show-line-numbers, -fmax-errors=N, as for gfec")
-      ->type_name("OPTION")
-      ->allow_extra_args(false);
+  FrontEndFlags front_end;
+  add_front_end_options(app, o.report, front_end);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError &e) {
@@ -422,10 +412,7 @@ int test_command(int argc, const char *const *argv, std::ostream &out, std::ostr
     return kExitUsageOrIo;
   };
   if (o.engine_only && o.reference_only) return usage("--engine-only and --reference-only exclude each other");
-  for (const auto &f : o.f_flags) {
-    std::string why = apply_f_flag(f, o.report);
-    if (!why.empty()) return usage(why);
-  }
+  if (std::string why = front_end.apply(o.report); !why.empty()) return usage(why);
   return test_with(o, out, err);
 }
 

@@ -28,7 +28,7 @@ std::string guard_of(const std::string &header_base) {
   return g;
 }
 
-void name_globals(Engine &c, NameSpace &globals, const Engine *root) {
+void name_globals(EngineContext &c, NameSpace &globals, const EngineContext *root) {
   // Global names: every interface function the model knows, the engine's fixed API, then the
   // enumerations. The API names are the contract and never move; an enum constant that would
   // clash with one of them (a place called `init`) gets the trailing `_`. Sub-chart instances
@@ -95,7 +95,7 @@ void name_globals(Engine &c, NameSpace &globals, const Engine *root) {
     c.instance_activation_fn = t + "_instance_activation";
     for (const auto *n : {&c.instance_type, &c.instance_count, &c.instance_activation_fn}) globals.claim(*n);
   }
-  if (c.root && c.options.names) {
+  if (c.root && c.engine_options.names) {
     c.place_name_fn = t + "_place_name";
     c.transition_name_fn = t + "_transition_name";
     globals.claim(c.place_name_fn);
@@ -116,7 +116,7 @@ void name_globals(Engine &c, NameSpace &globals, const Engine *root) {
   c.candidate_levels = globals.take(t + "_CANDIDATE_LEVELS");
 }
 
-void name_fields(Engine &c) {
+void name_fields(EngineContext &c) {
   NameSpace fields;
   // Never a macro's name (-DX_HOOKS would replace the field); nor, since C++ reads the header
   // too, a name the struct uses before its fields (C++: a member "changes the meaning" of it).
@@ -148,7 +148,7 @@ void name_fields(Engine &c) {
     for (const auto &p : places) c.sub_field.push_back(p.runs ? fields.take(p.name.str()) : "");
 }
 
-void name_locals(Engine &c, const NameSpace &globals) {
+void name_locals(EngineContext &c, const NameSpace &globals) {
   // Inside the file's names: a local never hides an interface function, an enum constant or a
   // helper of the engine that the function's code refers to.
   NameSpace locals(&globals);
@@ -160,7 +160,7 @@ void name_locals(Engine &c, const NameSpace &globals) {
   c.to = locals.take("to");
   c.index = locals.take("p");
   if (c.has_context()) c.ctx_param = locals.take("ctx");
-  if (c.options.names) c.names = locals.take("names");
+  if (c.engine_options.names) c.names = locals.take("names");
   const std::pair<const char *, std::string *> scalable[] = {
       {"add_n", &c.add_n}, {"lost", &c.lost}, {"lost_n", &c.lost_n}, {"gained", &c.gained}, {"gained_n", &c.gained_n},
       {"w", &c.word},      {"bits", &c.bits}, {"i", &c.i},           {"t", &c.t},           {"fire", &c.fire}};
@@ -170,7 +170,7 @@ void name_locals(Engine &c, const NameSpace &globals) {
   c.temp_prefix = locals.reserve_numbered_prefix("gfec_t");
 }
 
-bool reads_input_activity(const Engine &c, const model::Expr &e);
+bool reads_input_activity(const EngineContext &c, const model::Expr &e);
 
 bool reads_activity(const model::Expr &e) {
   using K = model::Expr::Kind;
@@ -188,7 +188,7 @@ bool reads_activity(const model::Stmt &s) {
   return false;
 }
 
-void collect_facts(Engine &c) {
+void collect_facts(EngineContext &c) {
   const auto n = c.chart.places.size();
   c.is_input.assign(n, false);
   c.is_output.assign(n, false);
@@ -210,7 +210,7 @@ void collect_facts(Engine &c) {
 }
 
 /// The expression reads, by active()/succeeded()/failed(), a place some transition consumes.
-bool reads_input_activity(const Engine &c, const model::Expr &e) {
+bool reads_input_activity(const EngineContext &c, const model::Expr &e) {
   using K = model::Expr::Kind;
   PlaceId p;
   if (e.kind == K::Active && !e.path.empty()) p = e.path.front();
@@ -223,20 +223,20 @@ bool reads_input_activity(const Engine &c, const model::Expr &e) {
 
 /// Stopping the chart's instance runs code: a place with an exit block, or one whose own
 /// instance's stop runs code.
-bool stop_runs_code(const Engine &c) {
+bool stop_runs_code(const EngineContext &c) {
   for (PlaceId p : c.chart.places.ids())
     if (has_code(c.place(p).exit) || (c.sub[p] && c.sub[p]->stop_code)) return true;
   return false;
 }
 
-void build(Engine &c, NameSpace &globals, const Engine *root);
+void build(EngineContext &c, NameSpace &globals, const EngineContext *root);
 
-/// The names of the split sequential form's parts (Engine::part_base): every one free, or the
+/// The names of the split sequential form's parts (EngineContext::part_base): every one free, or the
 /// base takes a trailing `_`, as an instance's prefix does.
-void name_parts(Engine &c, NameSpace &globals) {
+void name_parts(EngineContext &c, NameSpace &globals) {
   auto each = [&](const std::function<bool(const std::string &)> &f) {
     bool all = f(c.part_next());
-    for (const char *kind : Engine::kPartKinds) {
+    for (const char *kind : EngineContext::kPartKinds) {
       all = all && f(c.part_table(kind));
       for (std::size_t k = 0; all && k < c.part_count(); ++k) all = f(c.part_fn(kind, k));
     }
@@ -252,10 +252,11 @@ void name_parts(Engine &c, NameSpace &globals) {
 
 /// The instance that place `p` of `c` runs: its names follow the path (`Patrol_Search`), and
 /// move aside (a trailing `_`) if any of them is taken, so that the whole file stays unique.
-std::unique_ptr<Engine> make_instance(const Engine &c, PlaceId p, NameSpace &globals, const Engine *root) {
+std::unique_ptr<EngineContext> make_instance(const EngineContext &c, PlaceId p, NameSpace &globals,
+                                             const EngineContext *root) {
   const model::Place &place = c.place(p);
   const model::Chart &chart = c.model.charts.at(place.runs);
-  auto s = std::make_unique<Engine>(c.model, chart, c.options);
+  auto s = std::make_unique<EngineContext>(c.model, chart, c.options);
   s->root = false;
   std::string prefix = c.type + "_" + place.name;
   // The prefix itself is only a struct tag (tags have a name space of their own, so `struct
@@ -285,7 +286,7 @@ std::unique_ptr<Engine> make_instance(const Engine &c, PlaceId p, NameSpace &glo
   return s;
 }
 
-void build(Engine &c, NameSpace &globals, const Engine *root) {
+void build(EngineContext &c, NameSpace &globals, const EngineContext *root) {
   c.fsm = c.chart.kind == model::Chart::Kind::Fsm;
   name_globals(c, globals, root ? root : &c);
   name_fields(c);
@@ -302,7 +303,7 @@ void build(Engine &c, NameSpace &globals, const Engine *root) {
 
 /// The interface functions of the chart and of every instance below it, each once, the chart's
 /// own first.
-void collect_functions(const Engine &c, std::vector<model::FunctionId> &out) {
+void collect_functions(const EngineContext &c, std::vector<model::FunctionId> &out) {
   for (model::FunctionId f : c.chart.functions)
     if (std::find(out.begin(), out.end(), f) == out.end()) out.push_back(f);
   for (const auto &s : c.sub)
@@ -311,70 +312,71 @@ void collect_functions(const Engine &c, std::vector<model::FunctionId> &out) {
 
 }  // namespace
 
-std::string Engine::av_of(PlaceId p) const { return fmt::format("{}[{}]", field(av), place_const.at(p)); }
+std::string EngineContext::av_of(PlaceId p) const { return fmt::format("{}[{}]", field(av), place_const.at(p)); }
 
-std::string Engine::timer_of(PlaceId p) const { return field(timer_field.at(p)); }
+std::string EngineContext::timer_of(PlaceId p) const { return field(timer_field.at(p)); }
 
-const char *Engine::report_type() const {
+const char *EngineContext::report_type() const {
   // C's int8_t and int16_t hold -1 and up to 127 and 32767 states.
   const std::size_t n = chart.places.size();
   return n <= 127 ? "int8_t" : n <= 32767 ? "int16_t" : "int";
 }
 
-bool Engine::runs_exit(PlaceId p) const {
-  const Engine *s = sub_of(p);
+bool EngineContext::runs_exit(PlaceId p) const {
+  const EngineContext *s = sub_of(p);
   return is_input.at(p) && (has_code(place(p).exit) || (s && s->has_stop()));
 }
 
-bool Engine::runs_entry(PlaceId p) const {
+bool EngineContext::runs_entry(PlaceId p) const {
   // An instance is started (reset) whenever its place gains activation.
   return is_output.at(p) && (has_code(place(p).entry) || sub_of(p));
 }
 
-std::vector<std::string> Engine::start_call(PlaceId p) const {
-  const Engine *s = sub_of(p);
+std::vector<std::string> EngineContext::start_call(PlaceId p) const {
+  const EngineContext *s = sub_of(p);
   if (!s) return {};
   return {fmt::format("{}(&{}); /* start the instance of {} */", s->init_fn, field(sub_field[p]), s->chart.name)};
 }
 
-std::vector<std::string> Engine::tick_call(PlaceId p) const {
-  const Engine *s = sub_of(p);
+std::vector<std::string> EngineContext::tick_call(PlaceId p) const {
+  const EngineContext *s = sub_of(p);
   if (!s) return {};
   return {fmt::format("{}(&{}); /* one tick of the instance of {} */", s->run_fn, field(sub_field[p]), s->chart.name)};
 }
 
-std::vector<std::string> Engine::stop_call(PlaceId p) const {
-  const Engine *s = sub_of(p);
+std::vector<std::string> EngineContext::stop_call(PlaceId p) const {
+  const EngineContext *s = sub_of(p);
   if (!s || !s->has_stop()) return {};
   return {fmt::format("{}(&{}); /* stop the instance of {} first */", s->stop_fn, field(sub_field[p]), s->chart.name)};
 }
 
-std::string Engine::count_text() const { return place_count; }
+std::string EngineContext::count_text() const { return place_count; }
 
-std::string Engine::member(const std::string &obj, const std::string &name) const {
+std::string EngineContext::member(const std::string &obj, const std::string &name) const {
   return obj.empty() ? field(name) : obj + "." + name;
 }
 
-std::string Engine::active_test(const std::string &obj, PlaceId p, bool at_start) const {
+std::string EngineContext::active_test(const std::string &obj, PlaceId p, bool at_start) const {
   return form().active_test(*this, obj, p, at_start);
 }
 
-bool Engine::resets_timer(PlaceId p) const { return is_output.at(p) && place(p).timed; }
+bool EngineContext::resets_timer(PlaceId p) const { return is_output.at(p) && place(p).timed; }
 
-bool Engine::needs_snapshot() const {
+bool EngineContext::needs_snapshot() const {
   for (PlaceId p : chart.places.ids())
     if (runs_exit(p) || runs_entry(p) || resets_timer(p)) return true;
   return false;
 }
 
-bool Engine::any_watched() const {
+bool EngineContext::any_watched() const {
   for (PlaceId p : chart.places.ids())
     if (watched(p)) return true;
   return false;
 }
 
-std::unique_ptr<Engine> make_context(const model::Model &model, const model::Chart &chart, const EmitOptions &options) {
-  auto c = std::make_unique<Engine>(model, chart, options);
+std::unique_ptr<EngineContext> make_context(const model::Model &model, const model::Chart &chart,
+                                            const EmitOptions &options) {
+  auto c = std::make_unique<EngineContext>(model, chart, options);
   c->type = chart.name;
   c->struct_type = chart.name;
   c->init_fn = c->type + "_init";

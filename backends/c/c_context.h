@@ -5,6 +5,7 @@
 
 #include "backend.h"
 #include "c_context_type.h"
+#include "c_engine_options.h"
 #include "c_layout.h"
 #include "model.h"
 
@@ -18,14 +19,16 @@ namespace gfec::c_backend {
 class FormWriter;
 
 /// The engine being written: its chart and options, the names chosen, the layout.
-struct Engine {
-  Engine(const model::Model &m, const model::Chart &ch, const EmitOptions &o)
-      : model(m), chart(ch), options(o), context_type(o.context_type) {}
+struct EngineContext {
+  EngineContext(const model::Model &m, const model::Chart &ch, const EmitOptions &o)
+      : model(m), chart(ch), options(o), engine_options(backend_options<CEngineOptions>(o)),
+        context_type(engine_options.context_type) {}
 
   const model::Model &model;
   const model::Chart &chart;
   const EmitOptions &options;
-  ContextType context_type;  ///< --context-type, read once
+  const CEngineOptions &engine_options;  ///< the C engine's own options (--context, --names)
+  ContextType context_type;              ///< --context-type, read once
   bool fsm = false;
   Layout layout;  ///< readable, sequential or sparse (c_layout.h)
   /// The writer of what depends on the engine's form (c_form.h): the fsm's, or the layout's.
@@ -140,7 +143,7 @@ struct Engine {
   std::string owner;  ///< an instance: "place Search of Patrol", for comments
   /// By place: the context of the instance the place runs (null if it runs nothing), and the
   /// parent struct's field that holds it.
-  IdMap<model::PlaceId, std::unique_ptr<Engine>> sub;
+  IdMap<model::PlaceId, std::unique_ptr<EngineContext>> sub;
   IdMap<model::PlaceId, std::string> sub_field;  ///< like timer_field: no entries when no place runs a chart
   bool stoppable = false;                        ///< an instance whose place (or an enclosing one) can lose activation
   bool stop_code = false;                        ///< stopping the instance runs code: some exit block, at any depth
@@ -154,7 +157,7 @@ struct Engine {
   bool exits_read_activity = false;
   /// The root: every interface function any instance calls, for the header.
   std::vector<model::FunctionId> functions;
-  const Engine *sub_of(model::PlaceId place) const { return sub.at(place).get(); }
+  const EngineContext *sub_of(model::PlaceId place) const { return sub.at(place).get(); }
   /// The observation hooks are the root's only (docs/c-engine.md).
   bool hooks() const { return root; }
   /// The size of the per-place arrays as the header writes it: X_PLACE_COUNT (an instance's
@@ -182,7 +185,7 @@ struct Engine {
   /// order (parents first: the numbering of X_instance), `member` how its struct is reached from
   /// `prefix` (`m->` gives `m->Search`, then `m->Search.Grab`).
   void each_instance(const std::string &prefix,
-                     const std::function<void(const Engine &, const std::string &)> &f) const {
+                     const std::function<void(const EngineContext &, const std::string &)> &f) const {
     for (model::PlaceId p : sub.ids()) {
       if (!sub[p]) continue;
       const std::string member = prefix + sub_field[p];
@@ -224,7 +227,8 @@ struct Engine {
 };
 
 /// Decides every name and fact for compiling `chart`, and for every sub-chart instance below it.
-std::unique_ptr<Engine> make_context(const model::Model &model, const model::Chart &chart, const EmitOptions &options);
+std::unique_ptr<EngineContext> make_context(const model::Model &model, const model::Chart &chart,
+                                            const EmitOptions &options);
 
 /// The block holds code (an empty `entry { }` is as good as none).
 inline bool has_code(const HeapOptional<std::vector<model::Stmt>> &block) { return block && !block->empty(); }

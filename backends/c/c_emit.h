@@ -13,35 +13,35 @@
 namespace gfec::c_backend {
 
 /// engine.h: the types, the API, the hooks and the interface prototypes.
-void emit_header(const Engine &c, std::ostream &out);
+void emit_header(const EngineContext &c, std::ostream &out);
 /// engine.c: includes, file-level verbatim code, _init, _run and the accessors.
-void emit_source(const Engine &c, std::ostream &out);
+void emit_source(const EngineContext &c, std::ostream &out);
 
 /// The enumerations of a chart's places and transitions (the root's in engine.h, an instance's
 /// in engine.c).
-void places_enum(CodeWriter &w, const Engine &c);
-void transitions_enum(CodeWriter &w, const Engine &c);
+void places_enum(CodeWriter &w, const EngineContext &c);
+void transitions_enum(CodeWriter &w, const EngineContext &c);
 
 /// `void X_run(X *m) { ... }`: one tick, docs/language.md §5.1.
-void emit_sfc_run(CodeWriter &w, const Engine &c);
+void emit_sfc_run(CodeWriter &w, const EngineContext &c);
 /// The scalable forms of an sfc (c_layout.h, c_sfc_scalable.cc): the sparse form's file-local
 /// helpers (before _init), and the run function of each, one tick exactly as docs/language.md
 /// §5.1 says.
-void emit_sparse_helpers(CodeWriter &w, const Engine &c);
-void emit_sequential_run(CodeWriter &w, const Engine &c);
-void emit_sparse_run(CodeWriter &w, const Engine &c);
+void emit_sparse_helpers(CodeWriter &w, const EngineContext &c);
+void emit_sequential_run(CodeWriter &w, const EngineContext &c);
+void emit_sparse_run(CodeWriter &w, const EngineContext &c);
 /// The scalable form's fixed functions, from the templates of c_set_functions.cc: the sets'
 /// lowest, next, insert and erase, and the sort of a tick's watched places (`type`: their C type).
 /// At file level (indentation 0).
-void emit_set_functions(CodeWriter &w, const Engine &c);
-void emit_sort_function(CodeWriter &w, const Engine &c, const char *type);
+void emit_set_functions(CodeWriter &w, const EngineContext &c);
+void emit_sort_function(CodeWriter &w, const EngineContext &c, const char *type);
 /// `void X_run(X *m) { ... }`: one tick, docs/language.md §7.
-void emit_fsm_run(CodeWriter &w, const Engine &c);
+void emit_fsm_run(CodeWriter &w, const EngineContext &c);
 
 /// "LeftFw -> LeftStop", "(A, B) -> C": a transition as the chart would write it.
-std::string transition_label(const Engine &c, const model::Transition &t);
+std::string transition_label(const EngineContext &c, const model::Transition &t);
 /// The generated-file comment: names the tool and the chart, never a date.
-std::string banner(const Engine &c);
+std::string banner(const EngineContext &c);
 /// A preprocessor line, at column 0 whatever the indentation.
 void directive(CodeWriter &w, const std::string &text);
 

@@ -84,7 +84,7 @@ bool has_call(const Expr &e) {
 
 /// The value of an int expression the validator folded (a literal, a constant, arithmetic on
 /// them), if it is one: the model's value, computed once with C's semantics (compiler/constant.h).
-std::optional<long long> int_constant(const Engine &c, const Expr &e) {
+std::optional<long long> int_constant(const EngineContext &c, const Expr &e) {
   if (e.type != Type::Int) return std::nullopt;
   if (e.kind == Expr::Kind::Int || e.folded) return e.int_value;
   if (e.kind == Expr::Kind::Const) {
@@ -194,7 +194,7 @@ std::optional<bool> decided(const ConstantTest &a, const ConstantTest &b, Binary
 /// Both operands of a comparison are the same value read twice, with no call: `v == v`,
 /// `elapsed(P) < elapsed(P)`, `v + 1 >= (v + 1)`. The user's brackets do not count; constants
 /// count by value (`v + K` is `v + 3` for `const int K = 3`), as the compilers see them.
-bool same_value(const Engine &c, const Expr &x, const Expr &y) {
+bool same_value(const EngineContext &c, const Expr &x, const Expr &y) {
   const Expr &a = unbracketed(x), &b = unbracketed(y);
   if (a.type != b.type) return false;
   if (auto ka = int_constant(c, a)) return int_constant(c, b) == ka;
@@ -218,7 +218,7 @@ bool same_value(const Engine &c, const Expr &x, const Expr &y) {
 /// A comparison of a value with itself, which gcc and clang decide and reject under -Werror
 /// (-Wtautological-compare): `==`, `<=` and `>=` hold, the others do not. Not of floating
 /// values, where NaN compares unequal to itself (and the compilers say nothing).
-std::optional<bool> self_comparison(const Engine &c, const Expr &e) {
+std::optional<bool> self_comparison(const EngineContext &c, const Expr &e) {
   if (!is_comparison(e.binary_op) || is_floating(e.args.at(0).type) || is_floating(e.args.at(1).type))
     return std::nullopt;
   if (has_call(e) || !same_value(c, e.args.at(0), e.args.at(1))) return std::nullopt;
@@ -232,7 +232,7 @@ public:
   /// failed() read this chart's activation at the start of the tick (docs/language.md, "Sub-charts").
   /// `from`: in an fsm or a sequential sfc, the one state the condition can be tried in (or
   /// none), which decides active(S) of this chart at the start of the tick.
-  Renderer(const Engine &c, Temporaries &temps, bool at_start = false, model::PlaceId from = {})
+  Renderer(const EngineContext &c, Temporaries &temps, bool at_start = false, model::PlaceId from = {})
       : c_(c), temps_(temps), at_start_(at_start), from_(from) {}
 
   Rendered render(const Expr &e) {
@@ -319,7 +319,7 @@ private:
   Rendered activity(const Expr &e) const {
     std::vector<model::PlaceId> path =
         e.kind == Expr::Kind::Active ? e.path.get() : std::vector<model::PlaceId>{e.place()};
-    const Engine *c = &c_;
+    const EngineContext *c = &c_;
     std::string obj, text;
     for (std::size_t k = 0; k < path.size(); ++k) {
       if (!c) return {"false"};  // a path the validator let through into nothing: never active
@@ -349,7 +349,7 @@ private:
     if (e.kind != Expr::Kind::Active)
       return fmt::format("{}({})", e.kind == Expr::Kind::Succeeded ? "succeeded" : "failed", c_.place(e.place()).name);
     std::string s;
-    const Engine *c = &c_;
+    const EngineContext *c = &c_;
     for (model::PlaceId p : e.path) {
       if (!c) break;
       s += (s.empty() ? "" : ".") + c->place(p).name;
@@ -517,7 +517,7 @@ private:
     const bool first_known = at_start_ && from_ && c_.form().one_active();
     const std::size_t tests = (first_known ? 0 : 1) + (e.kind == Expr::Kind::Active ? path.size() - 1 : 1);
     if (tests != 1 || path.empty() || (first_known && path[0] != from_)) return std::nullopt;
-    const Engine *c = &c_;
+    const EngineContext *c = &c_;
     std::string obj;
     if (path.size() > 1 || e.kind != Expr::Kind::Active) {
       obj = c_.member("", c_.sub_field.at(path[0]));
@@ -570,7 +570,7 @@ private:
     return chain;
   }
 
-  const Engine &c_;
+  const EngineContext &c_;
   Temporaries &temps_;
   bool at_start_ = false;
   model::PlaceId from_;
@@ -620,11 +620,11 @@ std::vector<std::string> Temporaries::declarations() {
   return lines;
 }
 
-std::string c_expr(const Engine &c, const Expr &e, Temporaries &temps) {
+std::string c_expr(const EngineContext &c, const Expr &e, Temporaries &temps) {
   return closed(Renderer(c, temps).render(e)).text;
 }
 
-std::string c_condition(const Engine &c, const Expr &e, Temporaries &temps, bool at_start, model::PlaceId from) {
+std::string c_condition(const EngineContext &c, const Expr &e, Temporaries &temps, bool at_start, model::PlaceId from) {
   Rendered r = Renderer(c, temps, at_start, from).render(e);
   if (!r.before.empty()) return closed(std::move(r)).text;  // a bracketed comma expression
   return e.kind == Expr::Kind::Paren || is_activity(e) ? r.text : bracket(r.text);
@@ -634,7 +634,7 @@ namespace {
 
 /// An activity test (an fsm's `(m->state == X)`) as the whole test of an `if`: without its
 /// brackets, which clang -Wparentheses-equality takes for a mistyped `=`.
-std::string bare_activity(const Engine &c, const Expr &activity, Temporaries &temps, bool at_start,
+std::string bare_activity(const EngineContext &c, const Expr &activity, Temporaries &temps, bool at_start,
                           model::PlaceId from) {
   std::string text = Renderer(c, temps, at_start, from).render(activity).text;
   return text.size() > 2 && text.front() == '(' ? text.substr(1, text.size() - 2) : text;
@@ -642,7 +642,7 @@ std::string bare_activity(const Engine &c, const Expr &activity, Temporaries &te
 
 }  // namespace
 
-std::string c_test(const Engine &c, const Expr &e, Temporaries &temps, bool at_start, model::PlaceId from) {
+std::string c_test(const EngineContext &c, const Expr &e, Temporaries &temps, bool at_start, model::PlaceId from) {
   const Expr &u = unbracketed(e);
   if (is_activity(u)) return bare_activity(c, u, temps, at_start, from);
   if (u.kind != Expr::Kind::Binary || u.binary_op != BinaryOp::Eq || settled(u))
@@ -650,7 +650,7 @@ std::string c_test(const Engine &c, const Expr &e, Temporaries &temps, bool at_s
   return closed(Renderer(c, temps, at_start, from).render(u)).text;
 }
 
-std::string c_if_test(const Engine &c, const Expr &e, Temporaries &temps) {
+std::string c_if_test(const EngineContext &c, const Expr &e, Temporaries &temps) {
   // `if ((a == b))` is what clang -Wparentheses-equality takes for a mistyped `=`.
   const Expr &u = unbracketed(e);
   if (is_activity(u)) return bare_activity(c, u, temps, false, {});
@@ -658,7 +658,7 @@ std::string c_if_test(const Engine &c, const Expr &e, Temporaries &temps) {
   return closed(Renderer(c, temps).render(equality ? u : e)).text;
 }
 
-std::string c_assertion(const Engine &c, const Expr &e, Temporaries &temps) {
+std::string c_assertion(const EngineContext &c, const Expr &e, Temporaries &temps) {
   const int before = temps.count();
   Rendered r = Renderer(c, temps).render(e);
   if (temps.count() == before) return fmt::format("{}({});", c.assert_macro, r.text);
@@ -668,7 +668,7 @@ std::string c_assertion(const Engine &c, const Expr &e, Temporaries &temps) {
   return text + fmt::format("{} = {}; {}({});", holds, r.text, c.assert_macro, holds);
 }
 
-std::string c_value(const Engine &c, const Expr &e, model::Type to) {
+std::string c_value(const EngineContext &c, const Expr &e, model::Type to) {
   Temporaries none(c.temp_prefix);  // a constant expression calls nothing: it needs none
   Renderer r(c, none);
   return closed(r.converted(r.render(e), e, to)).text;
@@ -687,7 +687,7 @@ std::string c_prototype(const model::Function &f, const std::string &first, cons
 
 namespace {
 
-void render_statements(const Engine &c, const std::vector<model::Stmt> &stmts, Temporaries &temps, Renderer &r,
+void render_statements(const EngineContext &c, const std::vector<model::Stmt> &stmts, Temporaries &temps, Renderer &r,
                        std::vector<std::string> &text) {
   for (const auto &s : stmts) {
     switch (s.kind) {
@@ -722,7 +722,7 @@ void render_statements(const Engine &c, const std::vector<model::Stmt> &stmts, T
 /// Writes statements from `text`, consuming it from `at` in the order render_statements() filled it.
 class StatementWriter {
 public:
-  StatementWriter(CodeWriter &w, const Engine &c, const std::vector<std::string> &text)
+  StatementWriter(CodeWriter &w, const EngineContext &c, const std::vector<std::string> &text)
       : w_(w), sources_(c.model.sources()), text_(text) {}
 
   void list(const std::vector<model::Stmt> &stmts) {
@@ -805,14 +805,15 @@ private:
 
 }  // namespace
 
-std::vector<std::string> c_statements(const Engine &c, const std::vector<model::Stmt> &stmts, Temporaries &temps) {
+std::vector<std::string> c_statements(const EngineContext &c, const std::vector<model::Stmt> &stmts,
+                                      Temporaries &temps) {
   Renderer r(c, temps);
   std::vector<std::string> text;
   render_statements(c, stmts, temps, r, text);
   return text;
 }
 
-void emit_statements(CodeWriter &w, const Engine &c, const std::vector<model::Stmt> &stmts,
+void emit_statements(CodeWriter &w, const EngineContext &c, const std::vector<model::Stmt> &stmts,
                      const std::vector<std::string> &text) {
   StatementWriter(w, c, text).list(stmts);
 }

@@ -26,7 +26,7 @@ namespace gfec::c_backend {
 const char *c_type(model::Type type);
 
 /// The temporaries of one function of the engine that keep calls in the chart's order: named
-/// `gfec_t0`, `gfec_t1`, ... (Engine::temp_prefix) through the whole function, so that no two
+/// `gfec_t0`, `gfec_t1`, ... (EngineContext::temp_prefix) through the whole function, so that no two
 /// of them meet in nested blocks; each is declared at the top of the block that uses it.
 class Temporaries {
 public:
@@ -55,31 +55,31 @@ private:
 };
 
 /// `e` as one C expression. Temporaries it needs are added to `temps`.
-std::string c_expr(const Engine &c, const model::Expr &e, Temporaries &temps);
+std::string c_expr(const EngineContext &c, const model::Expr &e, Temporaries &temps);
 
 /// `e` as the operand of `&&`: parenthesised unless it already is a bracket or a primary.
 /// `at_start`: `e` is a transition's condition (active() and the like read the start of the tick).
 /// `from`: the state an fsm's (or a sequential sfc's) transition leaves, none otherwise.
-std::string c_condition(const Engine &c, const model::Expr &e, Temporaries &temps, bool at_start = false,
+std::string c_condition(const EngineContext &c, const model::Expr &e, Temporaries &temps, bool at_start = false,
                         model::PlaceId from = {});
 
 /// `e` as the whole test of an `if`: as c_condition(), except that an equality comparison is
 /// not bracketed (clang -Wparentheses-equality takes `if ((a == b))` for a mistyped `=`).
-std::string c_test(const Engine &c, const model::Expr &e, Temporaries &temps, bool at_start = false,
+std::string c_test(const EngineContext &c, const model::Expr &e, Temporaries &temps, bool at_start = false,
                    model::PlaceId from = {});
 
 /// `e` as the condition of an `if` statement, written inside its brackets: `X()`, `n > 2`, or
 /// where calls need temporaries, the bracketed comma expression `(gfec_t0 = N(), gfec_t0 + M() > 2)`.
-std::string c_if_test(const Engine &c, const model::Expr &e, Temporaries &temps);
+std::string c_if_test(const EngineContext &c, const model::Expr &e, Temporaries &temps);
 
 /// A postcondition as the statement that asserts it: `assert(e);`, or where keeping the calls
 /// in order needs temporaries, `gfec_t0 = S0(); gfec_t1 = gfec_t0 < S1(); assert(gfec_t1);`
 /// (code checkers flag an assertion that assigns).
-std::string c_assertion(const Engine &c, const model::Expr &e, Temporaries &temps);
+std::string c_assertion(const EngineContext &c, const model::Expr &e, Temporaries &temps);
 
 /// A constant expression (a var's initialiser: it calls nothing) as a value of type `to`,
 /// converted as the model converts it.
-std::string c_value(const Engine &c, const model::Expr &e, model::Type to);
+std::string c_value(const EngineContext &c, const model::Expr &e, model::Type to);
 
 /// `bool f(void)`, `void Motor(int side, float speed)`: an interface function's prototype;
 /// `first`, if not empty, is a parameter before the function's own (`void *ctx`, --context);
@@ -92,12 +92,13 @@ std::string c_prototype(const model::Function &f, const std::string &first = "",
 /// An `if` is its test (what goes between the brackets of `if ( )`) followed by each branch,
 /// then and else: one entry with the declarations of the branch's own temporaries (empty if
 /// none), then the branch's statements the same way, in textual order.
-std::vector<std::string> c_statements(const Engine &c, const std::vector<model::Stmt> &stmts, Temporaries &temps);
+std::vector<std::string> c_statements(const EngineContext &c, const std::vector<model::Stmt> &stmts,
+                                      Temporaries &temps);
 
 /// The statements, one per line at the current indentation, each preceded by `#line` to the
 /// chart where needed; `text` is what c_statements() made of them. The caller writes
 /// `line_back()` after the code that follows.
-void emit_statements(CodeWriter &w, const Engine &c, const std::vector<model::Stmt> &stmts,
+void emit_statements(CodeWriter &w, const EngineContext &c, const std::vector<model::Stmt> &stmts,
                      const std::vector<std::string> &text);
 
 }  // namespace gfec::c_backend

@@ -1,4 +1,4 @@
-// The four engine forms (c_form.h), and Engine::form(), the one place that picks among them.
+// The four engine forms (c_form.h), and EngineContext::form(), the one place that picks among them.
 #include "c_emit.h"
 #include "c_form.h"
 
@@ -13,13 +13,13 @@ using model::PlaceId;
 /// docs/language.md §7: the state is one field, the status another.
 class FsmForm final : public FormWriter {
 public:
-  void fields(const Engine &c, FieldRows &rows) const override {
+  void fields(const EngineContext &c, FieldRows &rows) const override {
     rows.emplace_back(fmt::format("{} {};", c.place_type, c.state),
                       fmt::format("the current state, a {}_<state>", c.type));
     rows.emplace_back(fmt::format("int {};", c.status), "0 running, 1 succeeded, -1 failed");
   }
 
-  void init(CodeWriter &w, const Engine &c) const override {
+  void init(CodeWriter &w, const EngineContext &c) const override {
     for (PlaceId p : c.chart.places.ids())
       if (c.place(p).initial) {
         w.line("{} = {};", c.field(c.state), c.place_const[p]);
@@ -31,19 +31,19 @@ public:
       }
   }
 
-  void run(CodeWriter &w, const Engine &c) const override { emit_fsm_run(w, c); }
+  void run(CodeWriter &w, const EngineContext &c) const override { emit_fsm_run(w, c); }
 
-  ActivationRead activation(const Engine &c, const std::string &obj) const override {
+  ActivationRead activation(const EngineContext &c, const std::string &obj) const override {
     return {fmt::format("(int){} == place", c.member(obj, c.state)), "1u"};
   }
 
-  std::string active_test(const Engine &c, const std::string &obj, PlaceId p, bool) const override {
+  std::string active_test(const EngineContext &c, const std::string &obj, PlaceId p, bool) const override {
     return fmt::format("{} == {}", c.member(obj, c.state), c.place_const.at(p));
   }
 
   bool one_active() const override { return true; }
 
-  void accessor_prototypes(CodeWriter &w, const Engine &c) const override {
+  void accessor_prototypes(CodeWriter &w, const EngineContext &c) const override {
     const std::string &t = c.type;
     w.line("/* 1 if `place` is the current state, else 0. */");
     w.line("unsigned {0}_activation(const {0} *m, int place);", t);
@@ -53,7 +53,7 @@ public:
     w.line("int {0}_status(const {0} *m);", t);
   }
 
-  void accessors(CodeWriter &w, const Engine &c) const override {
+  void accessors(CodeWriter &w, const EngineContext &c) const override {
     const std::string &t = c.type, &m = c.self;
     w.blank();
     w.line("int {0}_state(const {0} *{1})", t, m);
@@ -72,7 +72,7 @@ public:
 /// in the sequential form), as GFE's API has it.
 class SfcForm : public FormWriter {
 public:
-  void accessor_prototypes(CodeWriter &w, const Engine &c) const override {
+  void accessor_prototypes(CodeWriter &w, const EngineContext &c) const override {
     const std::string &t = c.type;
     w.line("/* The activation counter of a place (a {}_<place>); 0 for a number out of range. */", t);
     w.line("unsigned {0}_activation(const {0} *m, int place);", t);
@@ -80,7 +80,7 @@ public:
 
 protected:
   /// `place` numbers a place of `c`.
-  static std::string in_range(const Engine &c) {
+  static std::string in_range(const EngineContext &c) {
     return fmt::format("(place >= 0) && (place < (int){})", c.place_count);
   }
 };
@@ -88,23 +88,23 @@ protected:
 /// The scalable form of a chart whose one place is always active: its number is the state.
 class SequentialForm final : public SfcForm {
 public:
-  void fields(const Engine &c, FieldRows &rows) const override {
+  void fields(const EngineContext &c, FieldRows &rows) const override {
     rows.emplace_back(fmt::format("{} {};", uint_type(c.layout.index_bits), c.current),
                       fmt::format("the one active place, a {}_<place>", c.type));
   }
 
-  void init(CodeWriter &w, const Engine &c) const override {
+  void init(CodeWriter &w, const EngineContext &c) const override {
     for (PlaceId p : c.chart.places.ids())
       if (c.place(p).initial) w.line("{} = {};", c.field(c.current), c.place_const[p]);
   }
 
-  void run(CodeWriter &w, const Engine &c) const override { emit_sequential_run(w, c); }
+  void run(CodeWriter &w, const EngineContext &c) const override { emit_sequential_run(w, c); }
 
-  ActivationRead activation(const Engine &c, const std::string &obj) const override {
+  ActivationRead activation(const EngineContext &c, const std::string &obj) const override {
     return {fmt::format("{} && ((int){} == place)", in_range(c), c.member(obj, c.current)), "1u"};
   }
 
-  std::string active_test(const Engine &c, const std::string &obj, PlaceId p, bool) const override {
+  std::string active_test(const EngineContext &c, const std::string &obj, PlaceId p, bool) const override {
     return fmt::format("{} == {}", c.member(obj, c.current), c.place_const.at(p));
   }
 
@@ -114,11 +114,11 @@ public:
 /// The forms with an activation counter per place (the readable and the sparse form).
 class CounterForm : public SfcForm {
 public:
-  ActivationRead activation(const Engine &c, const std::string &obj) const override {
+  ActivationRead activation(const EngineContext &c, const std::string &obj) const override {
     return {in_range(c), c.member(obj, c.av) + "[place]"};
   }
 
-  std::string active_test(const Engine &c, const std::string &obj, PlaceId p, bool at_start) const override {
+  std::string active_test(const EngineContext &c, const std::string &obj, PlaceId p, bool at_start) const override {
     // In a condition the counters serve as `avail` and decrease: a place some transition consumes
     // is read from the snapshot of the start of the tick.
     const std::string &k = c.place_const.at(p);
@@ -130,7 +130,7 @@ public:
 
 protected:
   /// Place `k` (its constant) was active at the start of the tick, as the run function keeps it.
-  virtual std::string at_start_test(const Engine &c, const std::string &k) const {
+  virtual std::string at_start_test(const EngineContext &c, const std::string &k) const {
     return fmt::format("{}[{}] != 0u", c.before, k);
   }
 };
@@ -138,25 +138,25 @@ protected:
 /// GFE's form: every tick visits every place and transition.
 class ReadableForm final : public CounterForm {
 public:
-  void fields(const Engine &c, FieldRows &rows) const override {
+  void fields(const EngineContext &c, FieldRows &rows) const override {
     rows.emplace_back(fmt::format("{} {}[{}];", c.readable_counter(), c.av, c.count_text()),
                       c.layout.activation.bounded
                           ? fmt::format("activation counter of each place (never above {})", c.layout.activation.place)
                           : "activation counter of each place");
   }
 
-  void init(CodeWriter &w, const Engine &c) const override {
+  void init(CodeWriter &w, const EngineContext &c) const override {
     for (PlaceId p : c.chart.places.ids()) w.line("{} = {};", c.av_of(p), c.place(p).initial ? 1 : 0);
   }
 
-  void run(CodeWriter &w, const Engine &c) const override { emit_sfc_run(w, c); }
+  void run(CodeWriter &w, const EngineContext &c) const override { emit_sfc_run(w, c); }
 };
 
 /// The scalable form of any other chart: counters, and the active places as bits with summary
 /// levels, which file-local helpers search and change.
 class SparseForm final : public CounterForm {
 public:
-  void fields(const Engine &c, FieldRows &rows) const override {
+  void fields(const EngineContext &c, FieldRows &rows) const override {
     const Layout &l = c.layout;
     rows.emplace_back(fmt::format("{} {}[{}];", uint_type(l.counter_bits), c.av, c.count_text()),
                       l.activation.bounded
@@ -169,7 +169,7 @@ public:
                         "the transitions to try in a tick (empty between ticks)");
   }
 
-  void init(CodeWriter &w, const Engine &c) const override {
+  void init(CodeWriter &w, const EngineContext &c) const override {
     // Loops rather than a line per place: a large chart has few initial places.
     w.line("uint32_t {};", c.index);
     {
@@ -190,24 +190,24 @@ public:
       }
   }
 
-  void helpers(CodeWriter &w, const Engine &c) const override {
+  void helpers(CodeWriter &w, const EngineContext &c) const override {
     emit_sparse_helpers(w, c);
     w.blank();
   }
 
-  void run(CodeWriter &w, const Engine &c) const override { emit_sparse_run(w, c); }
+  void run(CodeWriter &w, const EngineContext &c) const override { emit_sparse_run(w, c); }
 
 protected:
   /// The snapshot is a bitset here: the constant as a number in the bit arithmetic (MISRA C:2012
   /// rule 10.1).
-  std::string at_start_test(const Engine &c, const std::string &k) const override {
+  std::string at_start_test(const EngineContext &c, const std::string &k) const override {
     return fmt::format("(({0}[(uint32_t){1} >> 5] >> ((uint32_t){1} & 31u)) & 1u) != 0u", c.before, k);
   }
 };
 
 }  // namespace
 
-const FormWriter &Engine::form() const {
+const FormWriter &EngineContext::form() const {
   static const FsmForm fsm_form;
   static const ReadableForm readable_form;
   static const SequentialForm sequential_form;

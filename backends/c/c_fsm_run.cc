@@ -18,7 +18,7 @@ namespace {
 
 class FsmRun : SwitchRun {
 public:
-  FsmRun(CodeWriter &w, const Engine &c) : SwitchRun(w, c) {}
+  FsmRun(CodeWriter &w, const EngineContext &c) : SwitchRun(w, c) {}
 
   void emit() {
     if (split()) parts();
@@ -262,6 +262,6 @@ private:
 
 }  // namespace
 
-void emit_fsm_run(CodeWriter &w, const Engine &c) { FsmRun(w, c).emit(); }
+void emit_fsm_run(CodeWriter &w, const EngineContext &c) { FsmRun(w, c).emit(); }
 
 }  // namespace gfec::c_backend

@@ -21,7 +21,7 @@ void aligned(CodeWriter &w, const std::vector<std::pair<std::string, std::string
 
 }  // namespace
 
-void places_enum(CodeWriter &w, const Engine &c) {
+void places_enum(CodeWriter &w, const EngineContext &c) {
   if (c.root)
     w.line("/* The {} of {} {}, in declaration order. */", c.fsm ? "states" : "places", c.fsm ? "fsm" : "sfc", c.type);
   else
@@ -32,7 +32,7 @@ void places_enum(CodeWriter &w, const Engine &c) {
   w.line("{}", c.place_count);
 }
 
-void transitions_enum(CodeWriter &w, const Engine &c) {
+void transitions_enum(CodeWriter &w, const EngineContext &c) {
   w.line(c.root ? "/* Its transitions, in declaration order: the numbers the observation hooks pass. */"
                 : "/* Its transitions, in declaration order. */");
   auto members = w.block("typedef enum {", fmt::format("}} {};", c.transition_type));
@@ -45,14 +45,14 @@ void transitions_enum(CodeWriter &w, const Engine &c) {
   w.line("{}", c.transition_count);
 }
 
-void team_enum(CodeWriter &w, const Engine &c) {
+void team_enum(CodeWriter &w, const EngineContext &c) {
   w.line("/* A team machine: up to {} agents run it side by side, one engine each. */", c.chart.team);
   w.line("enum {{ {} = {} }};", c.team_size, c.chart.team);
 }
 
 namespace {
 
-void state_struct(CodeWriter &w, const Engine &c) {
+void state_struct(CodeWriter &w, const EngineContext &c) {
   // The instances' types first: the root's struct embeds them.
   for (const auto &s : c.sub)
     if (s) state_struct(w, *s);
@@ -101,7 +101,7 @@ void state_struct(CodeWriter &w, const Engine &c) {
 }
 
 /// docs/c-engine.md "Team machines": the engine never sends or receives; its caller does.
-void team_api(CodeWriter &w, const Engine &c) {
+void team_api(CodeWriter &w, const EngineContext &c) {
   const std::string &t = c.type;
   w.line("/* Team machine: {0}_init makes the engine agent 0 and forgets every report. Call", t);
   w.line("   {0}_set_agent after {0}_init; a number outside 0 ... {1} - 1 is ignored. */", t, c.team_size);
@@ -114,7 +114,7 @@ void team_api(CodeWriter &w, const Engine &c) {
 }
 
 /// --context: the setter and the getter (docs/c-engine.md "Instance context").
-void context_api(CodeWriter &w, const Engine &c) {
+void context_api(CodeWriter &w, const EngineContext &c) {
   const std::string &t = c.type;
   w.line("/* The instance context: every interface function the engine calls (and its sub-charts'");
   w.line("   instances) receives it as its first argument. Set it before the first {}_run; {}_init", t, t);
@@ -125,7 +125,7 @@ void context_api(CodeWriter &w, const Engine &c) {
 }
 
 /// --names: the declared names, for logging and tracing.
-void names_api(CodeWriter &w, const Engine &c) {
+void names_api(CodeWriter &w, const EngineContext &c) {
   const std::string &t = c.type;
   const char *what = c.fsm ? "state" : "place";
   w.line("/* The declared name of a {0} (a {1}_<{0}>), or a null pointer for a number out of range. */", what, t);
@@ -136,13 +136,13 @@ void names_api(CodeWriter &w, const Engine &c) {
 
 /// A chart with sub-charts: the instances' numbers and the reader of their activation
 /// (docs/c-engine.md "Sub-charts"), for a caller that shows where each instance is.
-void instance_api(CodeWriter &w, const Engine &c) {
+void instance_api(CodeWriter &w, const EngineContext &c) {
   const std::string &t = c.type;
   w.line("/* The sub-chart instances, depth first in declaration order. */");
   auto members = w.block("typedef enum {", fmt::format("}} {};", c.instance_type));
   std::vector<std::pair<std::string, std::string>> rows;
   std::string example;  // the first instance's first place names the numbering by example
-  c.each_instance("", [&](const Engine &s, const std::string &) {
+  c.each_instance("", [&](const EngineContext &s, const std::string &) {
     rows.emplace_back(s.instance_const + ",", fmt::format("{}, run by {}", s.chart.name, s.owner));
     if (example.empty()) example = s.place_const.at(model::PlaceId(0));
   });
@@ -156,7 +156,7 @@ void instance_api(CodeWriter &w, const Engine &c) {
   w.line("unsigned {}(const {} *m, int instance, int place);", c.instance_activation_fn, t);
 }
 
-void api(CodeWriter &w, const Engine &c) {
+void api(CodeWriter &w, const EngineContext &c) {
   const std::string &t = c.type;
   w.line("/* Sets the initial {}; calls no code of the chart. */", c.fsm ? "state" : "marking");
   w.line("void {0}_init({0} *m);", t);
@@ -169,10 +169,10 @@ void api(CodeWriter &w, const Engine &c) {
   if (c.team()) team_api(w, c);  // only an fsm is a team machine
   if (c.has_sub()) instance_api(w, c);
   if (c.has_context()) context_api(w, c);
-  if (c.options.names) names_api(w, c);
+  if (c.engine_options.names) names_api(w, c);
 }
 
-void hooks(CodeWriter &w, const Engine &c) {
+void hooks(CodeWriter &w, const EngineContext &c) {
   directive(w, "#ifdef " + c.hooks_macro);
   w.line("/* Observation hooks (GFE_Activated, GFE_Enabled): an engine built with -D{} calls them and", c.hooks_macro);
   w.line("   the encapsulating code defines them. At the end of each tick's update, in declaration order:");
@@ -188,7 +188,7 @@ void hooks(CodeWriter &w, const Engine &c) {
 /// The parameters' names as the prototype writes them: the user's, but for one with a macro's
 /// name (X_HOOKS, the include guard), which takes a trailing `_` free of the others ("" for a
 /// parameter without a name).
-std::vector<std::string> param_names(const Engine &c, const model::Function &f) {
+std::vector<std::string> param_names(const EngineContext &c, const model::Function &f) {
   auto is_macro = [&](const std::string &n) {
     return std::find(c.macros.begin(), c.macros.end(), n) != c.macros.end();
   };
@@ -202,7 +202,7 @@ std::vector<std::string> param_names(const Engine &c, const model::Function &f) 
 }
 
 /// --context: the prototypes' first parameter, named apart from the function's own.
-std::string context_first(const Engine &c, const std::vector<std::string> &params) {
+std::string context_first(const EngineContext &c, const std::vector<std::string> &params) {
   if (!c.has_context()) return "";
   std::string name = c.ctx_param;
   while (std::find(params.begin(), params.end(), name) != params.end()) name += '_';
@@ -211,13 +211,13 @@ std::string context_first(const Engine &c, const std::vector<std::string> &param
 
 /// `struct motor *` names a tag: declared before the struct and the prototypes use it, so that
 /// a prototype does not declare it in its own scope (gcc, clang: "will not be visible outside").
-void context_tag(CodeWriter &w, const Engine &c) {
+void context_tag(CodeWriter &w, const EngineContext &c) {
   if (c.context_type.tag.empty()) return;
   w.line("{} {}; /* the instance context's type (--context-type) */", c.context_type.tag_keyword, c.context_type.tag);
   w.blank();
 }
 
-void interface_functions(CodeWriter &w, const Engine &c) {
+void interface_functions(CodeWriter &w, const EngineContext &c) {
   // Grouped by interface, each group in the order the chart's function list gives.
   std::vector<std::string> interfaces;
   for (model::FunctionId f : c.functions) {
@@ -240,7 +240,7 @@ void interface_functions(CodeWriter &w, const Engine &c) {
 
 }  // namespace
 
-void emit_header(const Engine &c, std::ostream &out) {
+void emit_header(const EngineContext &c, std::ostream &out) {
   CodeWriter w(out, c.header_file, false);
   w.line(std::string_view(banner(c)));
   directive(w, "#ifndef " + c.guard);

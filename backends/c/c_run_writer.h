@@ -18,7 +18,7 @@ namespace gfec::c_backend {
 
 class RunWriter {
 protected:
-  RunWriter(CodeWriter &w, const Engine &c) : w_(w), c_(c), temps_(c.temp_prefix) {}
+  RunWriter(CodeWriter &w, const EngineContext &c) : w_(w), c_(c), temps_(c.temp_prefix) {}
   virtual ~RunWriter() = default;
   RunWriter(const RunWriter &) = delete;
   RunWriter &operator=(const RunWriter &) = delete;
@@ -105,7 +105,7 @@ protected:
   void switch_end();
 
   CodeWriter &w_;
-  const Engine &c_;
+  const EngineContext &c_;
   bool started_ = false;
   Temporaries temps_;
 

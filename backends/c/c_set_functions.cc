@@ -144,12 +144,12 @@ std::string fill(std::string_view text, std::initializer_list<std::pair<std::str
 
 }  // namespace
 
-void emit_set_functions(CodeWriter &w, const Engine &c) {
+void emit_set_functions(CodeWriter &w, const EngineContext &c) {
   w.raw(fill(kSetFunctions,
              {{"lowest", c.lowest_fn}, {"next", c.next_fn}, {"insert", c.insert_fn}, {"erase", c.erase_fn}}));
 }
 
-void emit_sort_function(CodeWriter &w, const Engine &c, const char *type) {
+void emit_sort_function(CodeWriter &w, const EngineContext &c, const char *type) {
   w.raw(fill(kSortFunction, {{"sort", c.sort_fn}, {"type", type}}));
 }
 

@@ -13,7 +13,7 @@ namespace {
 
 class SfcRun : RunWriter {
 public:
-  SfcRun(CodeWriter &w, const Engine &c) : RunWriter(w, c) {}
+  SfcRun(CodeWriter &w, const EngineContext &c) : RunWriter(w, c) {}
 
   void emit() {
     head();
@@ -157,6 +157,6 @@ private:
 
 }  // namespace
 
-void emit_sfc_run(CodeWriter &w, const Engine &c) { SfcRun(w, c).emit(); }
+void emit_sfc_run(CodeWriter &w, const EngineContext &c) { SfcRun(w, c).emit(); }
 
 }  // namespace gfec::c_backend

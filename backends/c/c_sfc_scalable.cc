@@ -28,7 +28,7 @@ using model::TransitionId;
 /// once back into one large function).
 class SequentialRun : public SwitchRun {
 public:
-  SequentialRun(CodeWriter &w, const Engine &c) : SwitchRun(w, c) {}
+  SequentialRun(CodeWriter &w, const EngineContext &c) : SwitchRun(w, c) {}
 
   void emit() {
     if (split()) parts();
@@ -128,7 +128,7 @@ private:
 /// Counters, the active places as bits with summary levels, lists of what changed.
 class SparseRun : protected RunWriter {
 public:
-  SparseRun(CodeWriter &w, const Engine &c) : RunWriter(w, c) {
+  SparseRun(CodeWriter &w, const EngineContext &c) : RunWriter(w, c) {
     own([&c](TransitionId t) { return c.layout.owner.at(t); });
   }
 
@@ -387,7 +387,7 @@ private:
 };
 
 /// The file-local functions of the sparse form's sets, before _init.
-void sparse_helpers(CodeWriter &w, const Engine &c) {
+void sparse_helpers(CodeWriter &w, const EngineContext &c) {
   const Layout &l = c.layout;
   auto table = [](const BitLevels &b) {
     std::string s;
@@ -437,10 +437,10 @@ void sparse_helpers(CodeWriter &w, const Engine &c) {
 
 }  // namespace
 
-void emit_sparse_helpers(CodeWriter &w, const Engine &c) { sparse_helpers(w, c); }
+void emit_sparse_helpers(CodeWriter &w, const EngineContext &c) { sparse_helpers(w, c); }
 
-void emit_sequential_run(CodeWriter &w, const Engine &c) { SequentialRun(w, c).emit(); }
+void emit_sequential_run(CodeWriter &w, const EngineContext &c) { SequentialRun(w, c).emit(); }
 
-void emit_sparse_run(CodeWriter &w, const Engine &c) { SparseRun(w, c).emit(); }
+void emit_sparse_run(CodeWriter &w, const EngineContext &c) { SparseRun(w, c).emit(); }
 
 }  // namespace gfec::c_backend

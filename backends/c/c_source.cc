@@ -13,20 +13,20 @@ namespace gfec::c_backend {
 namespace {
 
 /// Some context of the tree (the root or an instance at any depth) satisfies `test`.
-template <typename Test> bool any_context(const Engine &c, const Test &test) {
+template <typename Test> bool any_context(const EngineContext &c, const Test &test) {
   if (test(c)) return true;
   for (const auto &s : c.sub)
     if (s && any_context(*s, test)) return true;
   return false;
 }
 
-void includes(CodeWriter &w, const Engine &c) {
+void includes(CodeWriter &w, const EngineContext &c) {
   directive(w, "#include " + c_string_literal(c.header_file));
   // No hosted header in any mode (a freestanding C99 engine). The postconditions' checks (of the
   // root and of every instance) use X_ASSERT, which the user may define (before this point: on
   // the command line or in a verbatim block) to the firmware's own handler; by default it is
   // <assert.h>'s assert.
-  if (any_context(c, [](const Engine &x) { return x.has_post; })) {
+  if (any_context(c, [](const EngineContext &x) { return x.has_post; })) {
     w.blank();
     directive(w, "#ifdef " + c.checks_macro);
     directive(w, "#ifndef " + c.assert_macro);
@@ -41,7 +41,7 @@ void includes(CodeWriter &w, const Engine &c) {
 }
 
 /// The `%{ %}` blocks at file level (imports' first), where `#include`s for the chart's code go.
-void verbatims(CodeWriter &w, const Engine &c) {
+void verbatims(CodeWriter &w, const EngineContext &c) {
   for (const auto &v : c.model.verbatims) {
     w.blank();
     w.verbatim(c.model.sources(), v.range, v.text, v.code_begin);
@@ -49,7 +49,7 @@ void verbatims(CodeWriter &w, const Engine &c) {
   }
 }
 
-void init(CodeWriter &w, const Engine &c) {
+void init(CodeWriter &w, const EngineContext &c) {
   std::vector<std::string> initial;
   for (const auto &p : c.chart.places)
     if (p.initial) initial.push_back(p.name.str());
@@ -87,7 +87,7 @@ void init(CodeWriter &w, const Engine &c) {
 
 /// An instance's stop (docs/language.md, "Sub-charts"): for each active place in declaration order, the stop of
 /// the place's own instance, then the place's exit block; innermost first.
-void stop(CodeWriter &w, const Engine &c) {
+void stop(CodeWriter &w, const EngineContext &c) {
   w.line("/* Stops the instance of {} run by {}:", c.chart.name, c.owner);
   w.line("   each active {} in declaration order stops its own instance, then runs its exit block",
          c.fsm ? "state" : "place");
@@ -112,7 +112,7 @@ void stop(CodeWriter &w, const Engine &c) {
 
 /// An instance's code, its own instances' first (a static function is defined before its use):
 /// enumerations, the sparse form's helpers, _init, _stop and _run.
-void instance(CodeWriter &w, const Engine &c) {
+void instance(CodeWriter &w, const EngineContext &c) {
   for (const auto &s : c.sub)
     if (s) instance(w, *s);
   w.line("/* ---- The instance of {} run by {} (its enumerations are in the header, with its struct) */", c.chart.name,
@@ -130,7 +130,7 @@ void instance(CodeWriter &w, const Engine &c) {
 }
 
 /// X_set_agent, X_report and X_team (docs/c-engine.md "Team machines").
-void team_functions(CodeWriter &w, const Engine &c) {
+void team_functions(CodeWriter &w, const EngineContext &c) {
   const std::string &t = c.type, &m = c.self;
   w.line("void {}({} *{}, int agent)", c.set_agent_fn, t, m);
   {
@@ -163,13 +163,13 @@ void team_functions(CodeWriter &w, const Engine &c) {
 
 /// X_instance_activation (docs/c-engine.md "Sub-charts"): a case per instance, each reading the
 /// instance's state as its own form holds it.
-void instance_activation(CodeWriter &w, const Engine &c) {
+void instance_activation(CodeWriter &w, const EngineContext &c) {
   w.line("unsigned {}(const {} *{}, int instance, int place)", c.instance_activation_fn, c.type, c.self);
   auto body = w.block("{");
   w.line("unsigned value = 0u;");
   // The labels stand at the level of the switch, what they run one level in.
   w.line("switch (instance) {");
-  c.each_instance(c.self + "->", [&](const Engine &s, const std::string &member) {
+  c.each_instance(c.self + "->", [&](const EngineContext &s, const std::string &member) {
     // As X_activation reads the root's, with if statements: MISRA C:2012 rule 10.6 forbids
     // assigning a conditional expression's narrow unsigned to the wider result.
     w.line("case {}:", s.instance_const);
@@ -190,7 +190,7 @@ void instance_activation(CodeWriter &w, const Engine &c) {
   w.line("return value;");
 }
 
-void accessors(CodeWriter &w, const Engine &c) {
+void accessors(CodeWriter &w, const EngineContext &c) {
   const std::string &t = c.type, &m = c.self;
   w.line("unsigned {0}_activation(const {0} *{1}, int place)", t, m);
   {
@@ -207,14 +207,14 @@ void accessors(CodeWriter &w, const Engine &c) {
 
 /// --context: X_set_context and X_context (docs/c-engine.md "Instance context"). Each instance
 /// keeps a copy, so that its functions pass it as the root's do; the setter writes every copy.
-void context_functions(CodeWriter &w, const Engine &c) {
+void context_functions(CodeWriter &w, const EngineContext &c) {
   const std::string &t = c.type, &m = c.self;
   w.line("void {}({} *{}, {})", c.set_context_fn, t, m, c.context_param(c.ctx_param));
   {
     auto body = w.block("{");
     w.line("{} = {};", c.field(c.ctx_field), c.ctx_param);
     // `m->Search.ctx`, `m->Search.Inner.ctx`: parents first.
-    c.each_instance(m + "->", [&](const Engine &s, const std::string &member) {
+    c.each_instance(m + "->", [&](const EngineContext &s, const std::string &member) {
       w.line("{}.{} = {};", member, s.ctx_field, c.ctx_param);
     });
   }
@@ -225,7 +225,7 @@ void context_functions(CodeWriter &w, const Engine &c) {
 }
 
 /// --names: the declared names of the root's places and transitions (docs/c-engine.md).
-void name_functions(CodeWriter &w, const Engine &c) {
+void name_functions(CodeWriter &w, const EngineContext &c) {
   auto table = [&](const std::string &fn, const char *param, const std::string &count,
                    const std::vector<std::string> &names) {
     w.line("const char *{}(int {})", fn, param);
@@ -251,7 +251,7 @@ void name_functions(CodeWriter &w, const Engine &c) {
 
 }  // namespace
 
-std::string transition_label(const Engine &c, const model::Transition &t) {
+std::string transition_label(const EngineContext &c, const model::Transition &t) {
   auto side = [&](const model::PlaceList &places) {
     std::string s;
     for (model::PlaceId p : places) s += (s.empty() ? "" : ", ") + c.place(p).name;
@@ -260,7 +260,7 @@ std::string transition_label(const Engine &c, const model::Transition &t) {
   return side(t.inputs) + " -> " + side(t.outputs);
 }
 
-std::string banner(const Engine &c) {
+std::string banner(const EngineContext &c) {
   // A file name cannot be allowed to end the comment early.
   std::string source = c.options.source_name;
   for (std::size_t at; (at = source.find("*/")) != std::string::npos;) source.replace(at, 2, "* /");
@@ -270,7 +270,7 @@ std::string banner(const Engine &c) {
 
 void directive(CodeWriter &w, const std::string &text) { w.raw(text + "\n"); }
 
-void emit_source(const Engine &c, std::ostream &out) {
+void emit_source(const EngineContext &c, std::ostream &out) {
   CodeWriter w(out, c.source_file, c.options.line_directives);
   w.line(std::string_view(banner(c)));
   includes(w, c);
@@ -296,7 +296,7 @@ void emit_source(const Engine &c, std::ostream &out) {
     w.blank();
     context_functions(w, c);
   }
-  if (c.options.names) {
+  if (c.engine_options.names) {
     w.blank();
     name_functions(w, c);
   }

@@ -11,7 +11,7 @@ namespace gfec::c_backend {
 using model::PlaceId;
 using model::TransitionId;
 
-SwitchRun::SwitchRun(CodeWriter &w, const Engine &c) : RunWriter(w, c) {
+SwitchRun::SwitchRun(CodeWriter &w, const EngineContext &c) : RunWriter(w, c) {
   own([&c](TransitionId t) { return c.chart.transitions[t].inputs.front(); });
 }
 

@@ -16,9 +16,9 @@ namespace gfec::c_backend {
 
 class SwitchRun : protected RunWriter {
 protected:
-  SwitchRun(CodeWriter &w, const Engine &c);
+  SwitchRun(CodeWriter &w, const EngineContext &c);
 
-  /// A switch on a place number: `kind` names its parts (Engine::kPartKinds); `has(p)`: place
+  /// A switch on a place number: `kind` names its parts (EngineContext::kPartKinds); `has(p)`: place
   /// `p` has a case, which `write(p)` writes.
   struct PlaceSwitch {
     const char *kind;

@@ -114,8 +114,8 @@ public:
   }
 
 private:
-  void mark(const model::Target &t) {
-    if (t.kind == model::Target::Kind::Actor) used_.at(t.actor) = true;
+  void mark(const model::RuleTarget &t) {
+    if (t.kind == model::RuleTarget::Kind::Actor) used_.at(t.actor) = true;
   }
 
   void create_plan() {
@@ -207,11 +207,11 @@ private:
     return class_name(t) + "::" + outcome_name(t, index);
   }
 
-  std::string target(const model::Target &t) const {
+  std::string target(const model::RuleTarget &t) const {
     switch (t.kind) {
-    case model::Target::Kind::Terminate: return "afp::terminate";
-    case model::Target::Kind::Ignore: return "afp::ignore";
-    case model::Target::Kind::Actor: break;
+    case model::RuleTarget::Kind::Terminate: return "afp::terminate";
+    case model::RuleTarget::Kind::Ignore: return "afp::ignore";
+    case model::RuleTarget::Kind::Actor: break;
     }
     return w_.actor.at(t.actor);
   }

@@ -53,8 +53,8 @@ private:
     return s + ")";
   }
 
-  std::string target(const model::Target &t) const {
-    return t.kind == model::Target::Kind::Actor ? chart_nodes::actor(t.actor.index()) : "terminate";
+  std::string target(const model::RuleTarget &t) const {
+    return t.kind == model::RuleTarget::Kind::Actor ? chart_nodes::actor(t.actor.index()) : "terminate";
   }
 
   /// Thin gray edges: config -> node for what an `in` argument reads, node -> config for an
@@ -111,13 +111,13 @@ private:
     if (t.period_ms > 0) label += "\nevery " + duration(t.period_ms);
     std::string ignored;
     for (const auto &r : s.rules)
-      if (r.target.kind == model::Target::Kind::Ignore)
+      if (r.target.kind == model::RuleTarget::Kind::Ignore)
         ignored += (ignored.empty() ? "" : ", ") + t.outcomes.at(at(r.outcome));
     if (!ignored.empty()) label += "\nignores " + ignored;
     out_ += fmt::format("  {} [shape=hexagon, style=filled, fillcolor=\"#e8eefc\", label={}];\n", id, quote(label));
     if (!watched.empty()) out_ += fmt::format("  {} -> {} [style=dotted, arrowhead=none];\n", watched, id);
     for (const auto &r : s.rules) {
-      if (r.target.kind == model::Target::Kind::Ignore) continue;
+      if (r.target.kind == model::RuleTarget::Kind::Ignore) continue;
       out_ += fmt::format("  {} -> {} [style=dashed, color=firebrick, fontcolor=firebrick, label={}];\n", id,
                           target(r.target), quote(t.outcomes.at(at(r.outcome))));
     }

@@ -201,12 +201,12 @@ struct PlanWriter {
              const std::string &actor, const std::string &supervisor) {
     Json out = Json::array();
     for (const auto &r : list) {
-      Json target = r.target.kind == model::Target::Kind::Actor       ? Json(plan.actors.at(r.target.actor).name)
-                    : r.target.kind == model::Target::Kind::Terminate ? Json("terminate")
-                                                                      : Json("ignore");
-      const char *kind = r.target.kind == model::Target::Kind::Actor       ? "actor"
-                         : r.target.kind == model::Target::Kind::Terminate ? "terminate"
-                                                                           : "ignore";
+      Json target = r.target.kind == model::RuleTarget::Kind::Actor       ? Json(plan.actors.at(r.target.actor).name)
+                    : r.target.kind == model::RuleTarget::Kind::Terminate ? Json("terminate")
+                                                                          : Json("ignore");
+      const char *kind = r.target.kind == model::RuleTarget::Kind::Actor       ? "actor"
+                         : r.target.kind == model::RuleTarget::Kind::Terminate ? "terminate"
+                                                                               : "ignore";
       Json j = {{"outcome", outcome(templ, subplan, r.outcome)},
                 {"target", target},
                 {"target_kind", kind},

@@ -36,7 +36,7 @@ void add_writes(const std::vector<model::Arg> &args, Written &w) {
 /// A rule whose outcome does interrupt (an `ignore` never does).
 bool interrupts(const model::SupervisorUse &s) {
   for (const auto &r : s.rules)
-    if (r.target.kind != model::Target::Kind::Ignore) return true;
+    if (r.target.kind != model::RuleTarget::Kind::Ignore) return true;
   return false;
 }
 
@@ -76,7 +76,7 @@ private:
 
   void follow(const std::vector<model::Rule> &rules, const Written &w, std::deque<ActorId> &todo) {
     for (const auto &r : rules)
-      if (r.target.kind == model::Target::Kind::Actor) arrive(r.target.actor, w, todo);
+      if (r.target.kind == model::RuleTarget::Kind::Actor) arrive(r.target.actor, w, todo);
   }
 
   void arrive(ActorId a, const Written &w, std::deque<ActorId> &todo) {

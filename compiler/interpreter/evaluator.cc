@@ -1,6 +1,6 @@
 #include "evaluator.h"
 
-#include "engine.h"
+#include "machine.h"
 
 #include "constant.h"
 

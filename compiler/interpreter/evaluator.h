@@ -12,7 +12,7 @@
 
 namespace gfec::interp {
 
-class Engine;
+class Machine;
 
 /// What the interpreter calls for the interface functions: an input trace in `gfec run`,
 /// anything a test likes.
@@ -34,8 +34,8 @@ struct Frame {
   Environment *env = nullptr;                          ///< null: a constant expression, where calls are errors
   EventLog *log = nullptr;                             ///< null: log nothing
   std::uint64_t tick = 0;
-  int depth = 1;                   ///< indentation of the events logged
-  const Engine *engine = nullptr;  ///< the chart's engine: active(), succeeded(), failed()
+  int depth = 1;                    ///< indentation of the events logged
+  const Machine *engine = nullptr;  ///< the chart's engine: active(), succeeded(), failed()
   /// A team machine (docs/language.md "Teams"): this engine's agent number, and by agent the
   /// state each one last reported (or none). Null for a machine that is no team.
   int agent = 0;

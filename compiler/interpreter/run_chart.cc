@@ -5,10 +5,10 @@
 namespace gfec::interp {
 
 RunResult run_chart(const model::Model &model, model::ChartId chart, Environment &env, std::uint64_t ticks,
-                    EngineOptions options, Diagnostics &diag) {
+                    MachineOptions options, Diagnostics &diag) {
   RunResult result;
   try {
-    Engine engine(model, chart, options);
+    Machine engine(model, chart, options);
     for (std::uint64_t t = 0; t < ticks; ++t) {
       engine.run(env, &result.log);
       result.ticks = engine.ticks();
@@ -23,12 +23,12 @@ RunResult run_chart(const model::Model &model, model::ChartId chart, Environment
 }
 
 RunResult run_team(const model::Model &model, model::ChartId chart, const std::vector<Environment *> &envs,
-                   std::uint64_t ticks, EngineOptions options, Diagnostics &diag) {
+                   std::uint64_t ticks, MachineOptions options, Diagnostics &diag) {
   RunResult result;
   std::size_t agent = 0;
   std::uint64_t tick = 0;
   try {
-    std::vector<Engine> engines;
+    std::vector<Machine> engines;
     engines.reserve(envs.size());
     for (std::size_t k = 0; k < envs.size(); ++k) {
       engines.emplace_back(model, chart, options);

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "diagnostics.h"
-#include "engine.h"
+#include "machine.h"
 #include "event_log.h"
 
 #include <cstdint>
@@ -20,7 +20,7 @@ struct RunResult {
 /// init, then `ticks` times run. Undefined behaviour is reported to `diag` as an error
 /// [runtime] at the expression that would cause it, naming the tick, and ends the run.
 RunResult run_chart(const model::Model &model, model::ChartId chart, Environment &env, std::uint64_t ticks,
-                    EngineOptions options, Diagnostics &diag);
+                    MachineOptions options, Diagnostics &diag);
 
 /// A team machine run by `envs.size()` agents (at most its team size), one engine each, under
 /// the reference exchange (docs/language.md "Teams"): init every engine and give engine k agent
@@ -28,6 +28,6 @@ RunResult run_chart(const model::Model &model, model::ChartId chart, Environment
 /// calls), then every agent's state is reported to every other. Each agent's part of the tick
 /// is logged after `agent k`, one level deeper; the exchange as `team S0 S1 ...`.
 RunResult run_team(const model::Model &model, model::ChartId chart, const std::vector<Environment *> &envs,
-                   std::uint64_t ticks, EngineOptions options, Diagnostics &diag);
+                   std::uint64_t ticks, MachineOptions options, Diagnostics &diag);
 
 }  // namespace gfec::interp

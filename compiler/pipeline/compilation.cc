@@ -22,29 +22,9 @@ struct Candidate {
   model::ToolboxId toolbox;
 };
 
-const char *kind_name(unsigned kind) {
-  switch (kind) {
-  case kSfc: return "sfc";
-  case kFsm: return "fsm";
-  case kPlan: return "plan";
-  default: return "toolbox";
-  }
-}
-
-/// "sfc, fsm or plan": the kinds of `among`, for "the file declares no ...".
-std::string kinds_text(unsigned among) {
-  std::vector<const char *> names;
-  for (unsigned k : {kSfc, kFsm, kPlan, kToolbox})
-    if (among & k) names.push_back(kind_name(k));
-  std::string s;
-  for (std::size_t i = 0; i < names.size(); ++i)
-    s += fmt::format("{}{}", i == 0 ? "" : i + 1 == names.size() ? " or " : ", ", names[i]);
-  return s;
-}
-
 }  // namespace
 
-Target select_target(const model::Model &m, const TargetRequest &request) {
+Selection choose(const model::Model &m, const SelectionRequest &request) {
   std::vector<Candidate> candidates;
   std::vector<Candidate> named_only;  ///< sub-charts of the main file: compiled alone by name only
   if (request.among & kToolbox)
@@ -72,7 +52,7 @@ Target select_target(const model::Model &m, const TargetRequest &request) {
       names += fmt::format("{}{} '{}'", names.empty() ? "" : ", ", kind_name(c.kind), c.name);
     return names;
   };
-  Target t;
+  Selection t;
   const Candidate *chosen = nullptr;
   if (!request.name.empty()) {
     for (const auto *from : {&candidates, &named_only})
@@ -87,9 +67,9 @@ Target select_target(const model::Model &m, const TargetRequest &request) {
   } else if (candidates.size() == 1) {
     chosen = &candidates.front();
   } else if (candidates.empty()) {
-    t.error = request.among == kToolbox
-                  ? std::string("the file declares no toolbox")
-                  : fmt::format("nothing to {}: the file declares no {}", request.verb, kinds_text(request.among));
+    t.error = request.among == kToolbox ? std::string("the file declares no toolbox")
+                                        : fmt::format("nothing to {}: the file declares no {}", request.verb,
+                                                      kinds_text(request.among, "or"));
     t.in_input = true;
     return t;
   } else {
@@ -139,10 +119,10 @@ bool Compilation::front_end(const std::string &path) {
   return front_end(path, fs);
 }
 
-const Target &Compilation::select(const TargetRequest &request) {
-  target = select_target(model, request);
-  if (target.chart) warn_unused_charts(model, target.chart, diag);
-  return target;
+const Selection &Compilation::select(const SelectionRequest &request) {
+  selection = choose(model, request);
+  if (selection.chart) warn_unused_charts(model, selection.chart, diag);
+  return selection;
 }
 
 }  // namespace gfec::pipeline

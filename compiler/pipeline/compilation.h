@@ -8,6 +8,7 @@
 #include "file_system.h"
 #include "loader.h"
 #include "model.h"
+#include "pipeline/kind.h"
 #include "source.h"
 
 #include <string>
@@ -19,9 +20,6 @@ struct Suite;
 }
 
 namespace pipeline {
-
-/// What can be compiled, as bits (a back end's "accepts" in backends/backend_registry.h).
-enum TargetKind : unsigned { kSfc = 1, kFsm = 2, kPlan = 4, kToolbox = 8 };
 
 /// What the front end needs from the command line.
 struct FrontEndOptions {
@@ -35,16 +33,17 @@ struct FrontEndOptions {
   bool keep_syntax_tree = false;
 };
 
-/// What to compile, the one function select_target answers it with.
-struct TargetRequest {
+/// What to compile: the question choose() answers.
+struct SelectionRequest {
   std::string name;                      ///< --chart NAME; empty: the default (docs/language.md "Sub-charts")
   unsigned among = kSfc | kFsm | kPlan;  ///< the kinds to choose from (kToolbox alone: a toolbox skeleton)
   const char *verb = "compile";          ///< for messages: "compile", "run"
 };
 
-/// The chosen chart, plan or toolbox of the main file, or why there is none.
-struct Target {
-  unsigned kind = 0;     ///< one TargetKind bit; 0 when nothing was chosen
+/// The selection: the chart, plan or toolbox of the main file chosen to compile (or run), or why
+/// there is none. (A "target" is an MCU the engine runs on; this is what of the file is compiled.)
+struct Selection {
+  unsigned kind = 0;     ///< one Kind bit (pipeline/kind.h); 0 when nothing was chosen
   model::ChartId chart;  ///< the one of `kind` is set, the others are none
   model::PlanId plan;
   model::ToolboxId toolbox;
@@ -56,7 +55,7 @@ struct Target {
 
 /// Which chart, plan or toolbox of `m`'s main file `request` names, or by default the only
 /// candidate: the charts no chart runs (compiler/roots.h) and the plans, or the toolboxes.
-Target select_target(const model::Model &m, const TargetRequest &request);
+Selection choose(const model::Model &m, const SelectionRequest &request);
 
 /// One input file through the pipeline: the sources read, their diagnostics, the model.
 class Compilation {
@@ -73,9 +72,9 @@ public:
   /// The same on the real file system.
   bool front_end(const std::string &path);
 
-  /// Picks what to compile (select_target) and, for a chart that runs sub-charts, warns about
-  /// the charts of the main file it leaves out (-Wunused-chart). Keeps the choice in target.
-  const Target &select(const TargetRequest &request);
+  /// Picks what to compile (choose()) and, for a chart that runs sub-charts, warns about
+  /// the charts of the main file it leaves out (-Wunused-chart). Keeps the choice in selection.
+  const Selection &select(const SelectionRequest &request);
 
   bool unreadable() const { return loaded.main_unreadable; }
   bool ok() const { return !loaded.main_unreadable && !diag.has_errors(); }
@@ -85,7 +84,7 @@ public:
   Diagnostics diag;
   LoadResult loaded;
   model::Model model;
-  Target target;
+  Selection selection;
 };
 
 }  // namespace pipeline

@@ -1,6 +1,6 @@
 #include "scenario/reference_run.h"
 
-#include "interpreter/engine.h"
+#include "interpreter/machine.h"
 
 #include <fmt/format.h>
 
@@ -38,9 +38,9 @@ private:
 };
 
 /// The activation of every instance inside `e`, depth first in declaration order (instances_of).
-void record_instances(const interp::Engine &e, std::vector<std::vector<unsigned>> &out) {
+void record_instances(const interp::Machine &e, std::vector<std::vector<unsigned>> &out) {
   for (model::PlaceId p : e.chart().places.ids()) {
-    const interp::Engine *sub = e.instance(p);
+    const interp::Machine *sub = e.instance(p);
     if (!sub) continue;
     std::vector<unsigned> av;
     for (model::PlaceId q : sub->chart().places.ids()) av.push_back(sub->activation(q));
@@ -49,7 +49,7 @@ void record_instances(const interp::Engine &e, std::vector<std::vector<unsigned>
   }
 }
 
-Snapshot snapshot(const interp::Engine &e, std::vector<Call> calls) {
+Snapshot snapshot(const interp::Machine &e, std::vector<Call> calls) {
   Snapshot s;
   s.tick = e.ticks();
   for (model::PlaceId p : e.chart().places.ids()) {
@@ -109,7 +109,7 @@ Run run_reference(const model::Model &model, const Test &test, KeptTicks keep) {
   const std::vector<Instance> instances = instances_of(model, test.chart);
   const model::Chart &chart = model.charts.at(test.chart);
   std::vector<TestEnvironment> envs(n, TestEnvironment(model));
-  std::vector<interp::Engine> engines;
+  std::vector<interp::Machine> engines;
   engines.reserve(n);
   for (std::size_t a = 0; a < n; ++a) engines.emplace_back(model, test.chart);
   std::size_t agent = 0;

@@ -14,10 +14,10 @@ namespace {
 using model::Type;
 
 /// `STATE -> target` of one rule; nothing if the target is wrong (reported).
-std::optional<model::Target> lower_target(Context &cx, PlanScope &s, const ast::Rule &r, const Callee &c) {
-  model::Target t;
+std::optional<model::RuleTarget> lower_target(Context &cx, PlanScope &s, const ast::Rule &r, const Callee &c) {
+  model::RuleTarget t;
   switch (r.target) {
-  case ast::Rule::Target::Terminate: t.kind = model::Target::Kind::Terminate; return t;
+  case ast::Rule::Target::Terminate: t.kind = model::RuleTarget::Kind::Terminate; return t;
   case ast::Rule::Target::Ignore:
     if (!c.events) {
       cx.diag
@@ -26,7 +26,7 @@ std::optional<model::Target> lower_target(Context &cx, PlanScope &s, const ast::
           .note("a result state leads to an actor or to 'terminate'");
       return std::nullopt;
     }
-    t.kind = model::Target::Kind::Ignore;
+    t.kind = model::RuleTarget::Kind::Ignore;
     return t;
   case ast::Rule::Target::Actor:
     t.actor = resolve_actor(cx, s, r.target_name);

@@ -1,5 +1,6 @@
 #include "validate/types.h"
 
+#include "input_languages.h"
 #include "validate/context.h"
 #include "validate/suggest.h"
 

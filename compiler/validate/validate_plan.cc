@@ -208,7 +208,7 @@ void warn_unreachable(Context &cx, PlanScope &s) {
   reach[p.start] = true;
   auto follow = [&](const std::vector<model::Rule> &rules) {
     for (const auto &r : rules)
-      if (r.target.kind == model::Target::Kind::Actor && !reach[r.target.actor]) {
+      if (r.target.kind == model::RuleTarget::Kind::Actor && !reach[r.target.actor]) {
         reach[r.target.actor] = true;
         work.push_back(r.target.actor);
       }

@@ -15,7 +15,7 @@ void* symbol(void* handle, const char* name, const std::string& library) {
 
 }  // namespace
 
-Engine::Engine(const std::string& library) {
+LoadedEngine::LoadedEngine(const std::string& library) {
   handle_ = dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (!handle_) {
     const char* why = dlerror();
@@ -40,7 +40,7 @@ Engine::Engine(const std::string& library) {
   memory_.assign(size() + 1, 0);
 }
 
-Engine::~Engine() {
+LoadedEngine::~LoadedEngine() {
   finish();
   if (handle_) dlclose(handle_);
 }

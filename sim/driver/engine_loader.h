@@ -14,14 +14,14 @@ struct LoadError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-class Engine {
+class LoadedEngine {
  public:
   /// dlopen()s `library` with every symbol resolved now: an engine that calls a robot
   /// function carbot-sim does not have fails here, with the function's name.
-  explicit Engine(const std::string& library);
-  ~Engine();
-  Engine(const Engine&) = delete;
-  Engine& operator=(const Engine&) = delete;
+  explicit LoadedEngine(const std::string& library);
+  ~LoadedEngine();
+  LoadedEngine(const LoadedEngine&) = delete;
+  LoadedEngine& operator=(const LoadedEngine&) = delete;
 
   void init() {
     init_(state());

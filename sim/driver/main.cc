@@ -244,9 +244,9 @@ int main(int argc, char** argv) {
         return fail(kBadInput, fmt::format("{}: {} robots, but {} is a team of at most {} agents", o.world, robots,
                                            built.chart.name, built.chart.team));
     }
-    std::vector<std::unique_ptr<Engine>> engines;
-    for (int i = 0; i < robots; ++i) engines.push_back(std::make_unique<Engine>(built.library));
-    Engine& engine = *engines.front();
+    std::vector<std::unique_ptr<LoadedEngine>> engines;
+    for (int i = 0; i < robots; ++i) engines.push_back(std::make_unique<LoadedEngine>(built.library));
+    LoadedEngine& engine = *engines.front();
 
     // 3. The run.
     // The chart's own period, unless the command line gives one.
@@ -262,7 +262,7 @@ int main(int argc, char** argv) {
     if (robots == 1) {
       result = run_engine(sim, engine, built.chart, o.seconds, o.quiet);
     } else {
-      std::vector<Engine*> each;
+      std::vector<LoadedEngine*> each;
       for (auto& e : engines) each.push_back(e.get());
       Exchange exchange;
       exchange.enabled = !o.no_exchange;

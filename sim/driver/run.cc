@@ -110,7 +110,7 @@ class PlanFollower {
 
 /// Takes what the engine's tick did into the recording: activation, calls, log entries.
 /// Log entries made before the first tick (a plan's start) count for frame 0.
-void record_tick(const Engine& engine, const ChartInfo& chart, long frame, PlanFollower& plan, Recording& rec) {
+void record_tick(const LoadedEngine& engine, const ChartInfo& chart, long frame, PlanFollower& plan, Recording& rec) {
   std::vector<int> active;
   if (chart.kind == "plan") {
     for (std::size_t i = rec.log_frames.size(); i < engine_log().size(); ++i)
@@ -151,7 +151,7 @@ TraceRow trace_row(const Simulation& sim) {
   return {sim.time(), p.x, p.y, deg(p.heading)};
 }
 
-std::vector<int> active_places(const Engine& engine) {
+std::vector<int> active_places(const LoadedEngine& engine) {
   std::vector<int> active;
   for (int p = 0; p < engine.places(); ++p)
     if (engine.activation(p) > 0) active.push_back(p);
@@ -160,7 +160,7 @@ std::vector<int> active_places(const Engine& engine) {
 
 std::string status_text(int status) { return status == 2 ? "terminated" : status > 0 ? "succeeded" : "failed"; }
 
-std::string state_change(const Engine& engine, const ChartInfo& chart, int& last) {
+std::string state_change(const LoadedEngine& engine, const ChartInfo& chart, int& last) {
   const int now = engine.current_state();
   if (now < 0 || now == last) return "";
   last = now;
@@ -174,7 +174,7 @@ void reset_robot_libraries() {
   fetchbot_reset();
 }
 
-RunResult run_engine(Simulation& sim, Engine& engine, const ChartInfo& chart, double seconds, bool quiet) {
+RunResult run_engine(Simulation& sim, LoadedEngine& engine, const ChartInfo& chart, double seconds, bool quiet) {
   RunResult result;
   const auto start = Clock::now();
   hal::bind(&sim);

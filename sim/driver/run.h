@@ -101,23 +101,23 @@ struct RunResult {
 /// The selected robot's row of the trace, now.
 TraceRow trace_row(const Simulation& sim);
 /// A C engine's places (states) with activation > 0, in order; none for a plan.
-std::vector<int> active_places(const Engine& engine);
+std::vector<int> active_places(const LoadedEngine& engine);
 /// An engine's status() as result.json writes it: "succeeded", "failed" or "terminated" (not 0).
 std::string status_text(int status);
 /// An fsm's state change since `last` (which it updates): "state Z1 PickUp()", the state's
 /// label (ChartInfo::states), or "" when the state stayed or the engine has none.
-std::string state_change(const Engine& engine, const ChartInfo& chart, int& last);
+std::string state_change(const LoadedEngine& engine, const ChartInfo& chart, int& last);
 /// Forgets what the robot libraries keep of every robot, before a run.
 void reset_robot_libraries();
 
 /// Runs `engine` on `sim` for at most `seconds` (progress on stderr when it is a terminal).
-RunResult run_engine(Simulation& sim, Engine& engine, const ChartInfo& chart, double seconds, bool quiet);
+RunResult run_engine(Simulation& sim, LoadedEngine& engine, const ChartInfo& chart, double seconds, bool quiet);
 
 /// Runs one engine per robot of `sim` (engines[i] drives robot i, its instance context, which is
 /// agent i of a team machine) for at most `seconds`: every tick all engines run in robot order;
 /// then a team machine's states are exchanged as `exchange` says.
 /// The run ends at the time limit, on escape, or when every engine has ended.
-RunResult run_team(Simulation& sim, std::vector<Engine*> engines, const ChartInfo& chart, double seconds,
+RunResult run_team(Simulation& sim, std::vector<LoadedEngine*> engines, const ChartInfo& chart, double seconds,
                    Exchange exchange);
 
 }  // namespace carbot::driver

@@ -39,7 +39,7 @@ struct Message {
 
 }  // namespace
 
-RunResult run_team(Simulation& sim, std::vector<Engine*> engines, const ChartInfo& chart, double seconds,
+RunResult run_team(Simulation& sim, std::vector<LoadedEngine*> engines, const ChartInfo& chart, double seconds,
                    Exchange exchange) {
   RunResult result;
   const auto start = std::chrono::steady_clock::now();
@@ -63,7 +63,7 @@ RunResult run_team(Simulation& sim, std::vector<Engine*> engines, const ChartInf
   const long ticks = std::lround(seconds / sim.config().control_period);
 
   auto robot = [&](int i) -> RobotRun& { return result.robots[static_cast<std::size_t>(i)]; };
-  auto engine = [&](int i) -> Engine& { return *engines[static_cast<std::size_t>(i)]; };
+  auto engine = [&](int i) -> LoadedEngine& { return *engines[static_cast<std::size_t>(i)]; };
   // A row without an engine call (the robot's engine ended, or the run did) keeps the activation
   // it had, and has no calls.
   auto keep_activation = [&](int i) {

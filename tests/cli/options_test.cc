@@ -1,6 +1,8 @@
 // The command line as make and CMake pass it: gcc's -M flags before CLI11, diagnostics formats.
 #include "options.h"
 
+#include "c_engine_options.h"
+
 #include <catch2/catch.hpp>
 
 #include <vector>
@@ -12,6 +14,18 @@ namespace {
 ParsedCommandLine parse(std::vector<const char *> args) {
   args.insert(args.begin(), "gfec");
   return parse_command_line(static_cast<int>(args.size()), args.data());
+}
+
+/// The C engine's own options as its option group read them (backend_registry.h).
+c_backend::CEngineOptions c_engine(const ParsedCommandLine &cl) {
+  for (const auto &given : cl.options.backend_options)
+    if (std::string(given.backend->name) == "c") {
+      EmitOptions emit;
+      emit.backend = given.group->options();
+      return backend_options<c_backend::CEngineOptions>(emit);
+    }
+  FAIL("the C back end declares no option group");
+  return {};
 }
 
 }  // namespace
@@ -125,17 +139,17 @@ TEST_CASE("options: no file is gcc's 'no input files' and the ways to run gfec, 
 
 TEST_CASE("options: --context, --context-type and --names, the C engine's options") {
   auto plain = parse({"x.sfc"});
-  CHECK(plain.options.context_type.empty());
-  CHECK_FALSE(plain.options.names);
+  CHECK(c_engine(plain).context_type.empty());
+  CHECK_FALSE(c_engine(plain).names);
   auto context = parse({"--context", "x.sfc", "--names"});
   REQUIRE_FALSE(context.exit_now);
-  CHECK(context.options.context_type == "void *");
-  CHECK(context.options.names);
+  CHECK(c_engine(context).context_type == "void *");
+  CHECK(c_engine(context).names);
   CHECK(context.options.inputs == std::vector<std::string>{"x.sfc"});  // --context takes no value
   // A type implies --context; spacing is normalised as engine.h writes it.
-  CHECK(parse({"--context-type=struct  motor*", "x.sfc"}).options.context_type == "struct motor *");
-  CHECK(parse({"--context-type", "uint8_t", "x.sfc"}).options.context_type == "uint8_t");
-  CHECK(parse({"--context", "--context-type=const struct bus *", "x.sfc"}).options.context_type ==
+  CHECK(c_engine(parse({"--context-type=struct  motor*", "x.sfc"})).context_type == "struct motor *");
+  CHECK(c_engine(parse({"--context-type", "uint8_t", "x.sfc"})).context_type == "uint8_t");
+  CHECK(c_engine(parse({"--context", "--context-type=const struct bus *", "x.sfc"})).context_type ==
         "const struct bus *");
   // Only a type's words and stars: nothing that would put code into engine.h.
   for (const char *bad : {"--context-type=int; int x", "--context-type=void (*)(void)", "--context-type=* *",

@@ -2,7 +2,7 @@
 
 #include "analysis/analysis.h"
 #include "diagnostic_printer.h"
-#include "interpreter/engine.h"
+#include "interpreter/machine.h"
 #include "pipeline/compilation.h"
 #ifdef GFEC_FUZZ_C_BACKEND
 #include "c_backend.h"
@@ -127,7 +127,7 @@ public:
     expect(p.actors.contains(p.start), "a plan's start in range");
     auto rules = [&](const std::vector<model::Rule> &rs) {
       for (const auto &r : rs)
-        if (r.target.kind == model::Target::Kind::Actor)
+        if (r.target.kind == model::RuleTarget::Kind::Actor)
           expect(p.actors.contains(r.target.actor), "a rule target in range");
     };
     for (const auto &a : p.actors) {
@@ -162,10 +162,10 @@ private:
 
 void run_interpreter(const model::Model &m, model::ChartId chart) {
   WobblyEnv env(m);
-  interp::EngineOptions options;
+  interp::MachineOptions options;
   options.check_post = true;
   try {
-    interp::Engine engine(m, chart, options);
+    interp::Machine engine(m, chart, options);
     interp::EventLog log;
     for (int t = 0; t < 12; ++t) engine.run(env, &log);
     log.render({true, true, true});

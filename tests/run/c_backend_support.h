@@ -6,6 +6,7 @@
 #include "analysis/activation_bounds.h"
 #include "backend.h"
 #include "c_backend.h"
+#include "c_engine_options.h"
 #include "c_harness.h"
 #include "diagnostic_printer.h"
 #include "file_system.h"
@@ -301,6 +302,14 @@ private:
   model::ChartId current_{0};
 };
 
+/// The C engine's own options (--context-type, --names) as EmitOptions carries them.
+inline std::shared_ptr<const BackendOptions> c_engine_options(const std::string &context_type, bool names = false) {
+  auto c = std::make_shared<c_backend::CEngineOptions>();
+  c->context_type = context_type;
+  c->names = names;
+  return c;
+}
+
 /// Runs the C back end on a model: {engine.c, engine.h} for output `output`.
 inline std::vector<OutputFile> emit_c(const model::Model &m, const std::string &output = "engine.c",
                                       bool line_directives = true, const std::string &source = "hand.sfc",
@@ -310,7 +319,7 @@ inline std::vector<OutputFile> emit_c(const model::Model &m, const std::string &
   o.source_name = source;
   o.line_directives = line_directives;
   o.engine = engine;
-  o.context_type = context_type;
+  o.backend = c_engine_options(context_type);
   o.chart = model::ChartId(0);
   return emit_to_memory(*make_c_backend(), m, o);
 }
@@ -336,9 +345,9 @@ inline std::unique_ptr<Compiled> compile_chart(const std::map<std::string, std::
   for (const auto &[path, text] : files) mem.add(path, text);
   auto c = std::make_unique<Compiled>(main, mem);
   // The chart gfec compiles by default: the one no other chart runs (docs/language.md "Sub-charts").
-  pipeline::TargetRequest request;
+  pipeline::SelectionRequest request;
   request.among = pipeline::kSfc | pipeline::kFsm;
-  const pipeline::Target &target = c->c.diag.has_errors() ? c->c.target : c->c.select(request);
+  const pipeline::Selection &target = c->c.diag.has_errors() ? c->c.selection : c->c.select(request);
   c->errors = c->text();
   if (c->diag.has_errors() || c->model.charts.empty()) return c;
   if (!target.chosen()) {
@@ -350,8 +359,7 @@ inline std::unique_ptr<Compiled> compile_chart(const std::map<std::string, std::
   o.source_name = main;
   o.line_directives = line_directives;
   o.engine = engine;
-  o.context_type = context_type;
-  o.names = names;
+  o.backend = c_engine_options(context_type, names);
   o.chart = target.chart;
   c->chart = target.chart;
   c->files = emit_to_memory(*make_c_backend(), c->model, o);
@@ -441,7 +449,7 @@ inline c_backend::HarnessSources harness_source(const model::Model &m, const mod
   EmitOptions emit;
   for (model::ChartId c : m.charts.ids())
     if (&m.charts[c] == &chart) emit.chart = c;
-  if (context) emit.context_type = "void *";
+  if (context) emit.backend = c_engine_options("void *");
   c_backend::HarnessOptions o;
   o.inputs = c_backend::HarnessInputs::Script;
   o.log = c_backend::HarnessLog::Compact;

@@ -68,9 +68,9 @@ inline std::unique_ptr<Compiled> compile(const std::map<std::string, std::string
   c->c.front_end(main, mem);
   for (const auto &d : c->diag.all()) c->errors += render_text(d, c->sources);
   if (c->diag.has_errors()) return c;
-  pipeline::TargetRequest request;
+  pipeline::SelectionRequest request;
   request.among = skeleton ? pipeline::kToolbox : pipeline::kPlan;
-  const pipeline::Target &target = c->c.select(request);
+  const pipeline::Selection &target = c->c.select(request);
   if (!target.chosen()) {
     c->errors += target.error + "\n";
     return c;

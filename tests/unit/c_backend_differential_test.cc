@@ -5,7 +5,7 @@
 #include "../run/c_backend_support.h"
 
 #include "c_layout.h"
-#include "interpreter/engine.h"
+#include "interpreter/machine.h"
 #include "interpreter/event_log.h"
 #include "roots.h"
 
@@ -113,7 +113,7 @@ private:
 /// and the end of each tick; the calls' text comes from the environment.
 std::string interpreter_log(const model::Model &m, model::ChartId root, const std::vector<Tick> &ticks) {
   const auto &chart = m.charts.at(root);
-  interp::Engine engine(m, root);
+  interp::Machine engine(m, root);
   ScriptEnvironment env(m, ticks);
   interp::EventLog log;
   for (std::size_t i = 0; i < ticks.size(); ++i) engine.run(env, &log);

@@ -218,14 +218,14 @@ plan P {
   pipeline::Compilation c{pipeline::FrontEndOptions{}};
   c.front_end("p.plan", mem);
   REQUIRE(!c.diag.has_errors());
-  pipeline::TargetRequest request;
+  pipeline::SelectionRequest request;
   request.name = "P";
   REQUIRE(c.select(request).plan);
   EmitOptions o;
   o.output_path = "p.cpp";
   o.source_name = "p.plan";
   o.line_directives = false;
-  o.plan = c.target.plan;
+  o.plan = c.selection.plan;
   auto out = emit_to_memory(*make_cpp_backend(), c.model, o);
   const std::string &w = out[0].contents;
   auto inner = w.find("std::unique_ptr<afp::Plan> make_Inner(Bot& ee) {");

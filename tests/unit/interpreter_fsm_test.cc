@@ -81,7 +81,7 @@ TEST_CASE("interpreter fsm: failure, hooks and the postcondition check") {
   ScriptedEnv done(*c);
   done.script("Arrived", {1}).script("Holding", {1}).script("ItemPlaced", {1});
   Diagnostics diag;
-  interp::EngineOptions checks;
+  interp::MachineOptions checks;
   checks.check_post = true;
   interp::RunResult r = interp::run_chart(c->model, model::ChartId(0), done, 3, checks, diag);
   std::string log = r.log.render({false, true});
@@ -179,7 +179,7 @@ fsm Census {
   state Wait;
   Go -> Wait when team(Wait) > 1;
 })");
-  interp::Engine e(c->model, model::ChartId(0));
+  interp::Machine e(c->model, model::ChartId(0));
   CHECK(e.team_size() == 4);
   e.set_agent(2);
   const model::PlaceId wait(1);

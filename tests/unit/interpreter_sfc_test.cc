@@ -185,7 +185,7 @@ sfc Api {
 }
 )");
   ScriptedEnv env(*c);
-  interp::Engine e(c->model, model::ChartId(0));
+  interp::Machine e(c->model, model::ChartId(0));
   const model::PlaceId a(0), b(1);
   const model::VarId n(0);
   CHECK(e.activation(a) == 1);

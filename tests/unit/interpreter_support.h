@@ -2,7 +2,7 @@
 // and validator to a model, and an environment scripted per function and tick.
 #pragma once
 
-#include "interpreter/engine.h"
+#include "interpreter/machine.h"
 #include "interpreter/run_chart.h"
 #include "support.h"
 

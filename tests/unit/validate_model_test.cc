@@ -275,8 +275,8 @@ TEST_CASE("validate model: plans, rules by outcome, sub-plans, constants in form
   CHECK(p.globals[0].templ == model::TemplateId(1));
   REQUIRE(p.globals[0].rules.size() == 2);
   CHECK(p.globals[0].rules[0].outcome == 0);
-  CHECK(p.globals[0].rules[0].target.kind == model::Target::Kind::Terminate);
-  CHECK(p.globals[0].rules[1].target.kind == model::Target::Kind::Ignore);
+  CHECK(p.globals[0].rules[0].target.kind == model::RuleTarget::Kind::Terminate);
+  CHECK(p.globals[0].rules[1].target.kind == model::RuleTarget::Kind::Ignore);
   CHECK(p.start == model::ActorId(0));
   const auto &nav = p.actors[0];
   CHECK_FALSE(nav.templ);
@@ -285,7 +285,7 @@ TEST_CASE("validate model: plans, rules by outcome, sub-plans, constants in form
   CHECK(nav.rules[0].outcome == 0);  // OK
   CHECK(nav.rules[0].target.actor == model::ActorId(1));
   CHECK(nav.rules[1].target.actor == model::ActorId(0));  // INTERRUPTED
-  CHECK(nav.rules[2].target.kind == model::Target::Kind::Terminate);
+  CHECK(nav.rules[2].target.kind == model::RuleTarget::Kind::Terminate);
   const auto &move = p.actors[1];
   CHECK(move.templ == model::TemplateId(0));
   REQUIRE(move.args.size() == 2);

@@ -88,7 +88,7 @@ TEST_CASE("validate: the wall-follow sample", "[validate]") {
   CHECK(p.start == model::ActorId(0));
   REQUIRE(p.globals.size() == 1);
   CHECK(p.globals[0].rules.size() == 1);
-  CHECK(p.globals[0].rules[0].target.kind == model::Target::Kind::Terminate);
+  CHECK(p.globals[0].rules[0].target.kind == model::RuleTarget::Kind::Terminate);
   const auto &follow = p.actors[4];
   CHECK(follow.name == "followWall");
   REQUIRE(follow.rules.size() == 3);

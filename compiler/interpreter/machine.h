@@ -1,6 +1,6 @@
-// The reference engine: one chart of a model, run tick by tick exactly as docs/language.md says —
-// §5.1 for an sfc, §7 for an fsm. Its API mirrors the generated C engine's (§5.2): init, run,
-// activation, state, status. It reads only the model.
+// The reference interpreter's machine: one chart of a model, run tick by tick exactly as
+// docs/language.md says — §5.1 for an sfc, §7 for an fsm. Its API mirrors the generated C engine's
+// (§5.2): init, run, activation, state, status. It reads only the model.
 #pragma once
 
 #include "evaluator.h"
@@ -12,18 +12,18 @@
 
 namespace gfec::interp {
 
-struct EngineOptions {
+struct MachineOptions {
   /// Evaluate a terminal state's postcondition when the machine enters it (an engine built with
   /// -DX_CHECKS asserts it). Its calls are then logged like any other.
   bool check_post = false;
 };
 
-/// A sub-chart (docs/language.md "Sub-charts") is an Engine too: each place or state that runs
+/// A sub-chart (docs/language.md "Sub-charts") is a Machine too: each place or state that runs
 /// a chart owns one instance, built with its parent and named by its path from the root
 /// ("Search", "Search.Grab"). Instances are started, ticked and stopped by their parent.
-class Engine {
+class Machine {
 public:
-  Engine(const model::Model &model, model::ChartId chart, EngineOptions options = {});
+  Machine(const model::Model &model, model::ChartId chart, MachineOptions options = {});
 
   /// `_init`: the initial marking (or state), timers 0, vars set to their initialisers, and the
   /// same for every sub-chart instance. Calls no code of the chart. Throws RuntimeError if an
@@ -34,7 +34,7 @@ public:
   void run(Environment &env, EventLog *log);
 
   /// The instance that place `place` runs, or null if it runs no chart.
-  const Engine *instance(model::PlaceId place) const;
+  const Machine *instance(model::PlaceId place) const;
   /// `active(P.Q.R)`: every place along `path` is active, each in the instance the previous
   /// one runs.
   bool active(const std::vector<model::PlaceId> &path) const;
@@ -62,7 +62,7 @@ public:
   bool is_fsm() const { return chart_.kind == model::Chart::Kind::Fsm; }
 
 private:
-  Engine(const model::Model &model, model::ChartId chart, EngineOptions options, std::string path, int depth);
+  Machine(const model::Model &model, model::ChartId chart, MachineOptions options, std::string path, int depth);
   /// One tick of this chart (§5.1 or §7) in `f`, a frame of this engine (frame()): its events
   /// are logged from depth `depth_`.
   void step(Frame &f);
@@ -88,15 +88,15 @@ private:
 
   const model::Model &model_;
   const model::Chart &chart_;
-  EngineOptions options_;
+  MachineOptions options_;
   std::string path_;    ///< "" for the root; "Search", "Search.Grab" for instances
   std::string prefix_;  ///< path_ + "." (or ""): names in the log are prefixed with it
   int depth_ = 1;       ///< the indentation of this chart's own events
-  IdMap<model::PlaceId, std::unique_ptr<Engine>> instances_;  ///< the instance a place runs, or null
-  IdMap<model::PlaceId, std::uint32_t> av_;                   ///< sfc: activation counters (C's unsigned)
-  model::PlaceId state_;                                      ///< fsm
-  int status_ = 0;                                            ///< fsm
-  IdMap<model::PlaceId, std::uint32_t> timers_;               ///< ticks active (saturating, as in C)
+  IdMap<model::PlaceId, std::unique_ptr<Machine>> instances_;  ///< the instance a place runs, or null
+  IdMap<model::PlaceId, std::uint32_t> av_;                    ///< sfc: activation counters (C's unsigned)
+  model::PlaceId state_;                                       ///< fsm
+  int status_ = 0;                                             ///< fsm
+  IdMap<model::PlaceId, std::uint32_t> timers_;                ///< ticks active (saturating, as in C)
   IdMap<model::VarId, Value> vars_;
   bool started_ = false;                 ///< the first tick has run the initial entries
   int agent_ = 0;                        ///< team machine: this engine's agent number

@@ -1,4 +1,4 @@
-#include "engine.h"
+#include "machine.h"
 
 #include <fmt/format.h>
 
@@ -14,27 +14,27 @@ namespace {
 constexpr std::uint32_t kTimerMax = std::numeric_limits<std::uint32_t>::max();
 }  // namespace
 
-Engine::Engine(const model::Model &model, model::ChartId chart, EngineOptions options)
-    : Engine(model, chart, options, "", 1) {}
+Machine::Machine(const model::Model &model, model::ChartId chart, MachineOptions options)
+    : Machine(model, chart, options, "", 1) {}
 
-Engine::Engine(const model::Model &model, model::ChartId chart, EngineOptions options, std::string path, int depth)
+Machine::Machine(const model::Model &model, model::ChartId chart, MachineOptions options, std::string path, int depth)
     : model_(model), chart_(model.charts.at(chart)), options_(options), path_(std::move(path)),
       prefix_(path_.empty() ? "" : path_ + "."), depth_(depth) {
   // The validator rejects charts that run themselves, so this recursion ends.
   for (const model::Place &place : chart_.places)
     instances_.push_back(
-        place.runs ? std::unique_ptr<Engine>(new Engine(model, place.runs, options, prefix_ + place.name, depth + 1))
+        place.runs ? std::unique_ptr<Machine>(new Machine(model, place.runs, options, prefix_ + place.name, depth + 1))
                    : nullptr);
   init();
 }
 
-const Engine *Engine::instance(PlaceId place) const {
+const Machine *Machine::instance(PlaceId place) const {
   if (!chart_.places.contains(place)) return nullptr;
   return instances_[place].get();
 }
 
-bool Engine::active(const std::vector<PlaceId> &path) const {
-  const Engine *e = this;
+bool Machine::active(const std::vector<PlaceId> &path) const {
+  const Machine *e = this;
   for (std::size_t k = 0; k < path.size(); ++k) {
     if (!e || e->activation(path[k]) == 0) return false;
     if (k + 1 < path.size()) e = e->instance(path[k]);
@@ -42,12 +42,12 @@ bool Engine::active(const std::vector<PlaceId> &path) const {
   return !path.empty();
 }
 
-bool Engine::outcome(PlaceId place, int status) const {
-  const Engine *sub = instance(place);
+bool Machine::outcome(PlaceId place, int status) const {
+  const Machine *sub = instance(place);
   return activation(place) > 0 && sub && sub->is_fsm() && sub->status() == status;
 }
 
-Frame Engine::frame(Environment *env, EventLog *log, std::uint64_t tick) {
+Frame Machine::frame(Environment *env, EventLog *log, std::uint64_t tick) {
   Frame f{model_, chart_, vars_, timers_, env, log, tick, depth_ + 1};
   f.engine = this;
   f.agent = agent_;
@@ -55,7 +55,7 @@ Frame Engine::frame(Environment *env, EventLog *log, std::uint64_t tick) {
   return f;
 }
 
-void Engine::init() {
+void Machine::init() {
   // Every instance is reset too: an initial place's instance is started by _init (§9); the
   // others are reset again when their place becomes active.
   for (auto &sub : instances_)
@@ -83,23 +83,23 @@ void Engine::init() {
       vars_[i] = convert(evaluate(*chart_.vars[i].init, f), chart_.vars[i].type, chart_.vars[i].range);
 }
 
-void Engine::set_agent(int agent) {
+void Machine::set_agent(int agent) {
   if (agent >= 0 && agent < chart_.team) agent_ = agent;  // agent() stays within 0 ... N-1
 }
 
-void Engine::report(int agent, PlaceId state) {
+void Machine::report(int agent, PlaceId state) {
   if (agent < 0 || agent >= chart_.team || agent == agent_) return;
   if (!chart_.places.contains(state)) return;
   reports_[static_cast<std::size_t>(agent)] = state;
 }
 
-unsigned Engine::activation(PlaceId place) const {
+unsigned Machine::activation(PlaceId place) const {
   if (!chart_.places.contains(place)) return 0;
   if (is_fsm()) return place == state_ ? 1u : 0u;
   return av_[place];
 }
 
-void Engine::run(Environment &env, EventLog *log) {
+void Machine::run(Environment &env, EventLog *log) {
   ++tick_;
   if (log) log->add(EventKind::Tick, 0, fmt::format("tick {}", tick_));
   Frame f = frame(&env, log, tick_);
@@ -108,7 +108,7 @@ void Engine::run(Environment &env, EventLog *log) {
   if (log) log_instances(*log);
 }
 
-void Engine::step(Frame &f) {
+void Machine::step(Frame &f) {
   if (!started_) {
     // §5.1: the first tick begins with the entry blocks of the initial places.
     started_ = true;
@@ -120,21 +120,21 @@ void Engine::step(Frame &f) {
   else run_sfc(f);
 }
 
-void Engine::start(PlaceId place, Frame &f) {
-  Engine *sub = instances_[place].get();
+void Machine::start(PlaceId place, Frame &f) {
+  Machine *sub = instances_[place].get();
   if (!sub) return;
   if (f.log) f.log->add(EventKind::Start, depth_, fmt::format("start {}: {}", sub->path_, sub->chart_.name));
   sub->init();
 }
 
-void Engine::stop(PlaceId place, Frame &f) {
-  Engine *sub = instances_[place].get();
+void Machine::stop(PlaceId place, Frame &f) {
+  Machine *sub = instances_[place].get();
   if (!sub) return;
   if (f.log) f.log->add(EventKind::Stop, depth_, fmt::format("stop {}: {}", sub->path_, sub->chart_.name));
   sub->stop_all(f.env, f.log, f.tick);
 }
 
-void Engine::stop_all(Environment *env, EventLog *log, std::uint64_t tick) {
+void Machine::stop_all(Environment *env, EventLog *log, std::uint64_t tick) {
   Frame f = frame(env, log, tick);
   auto leave = [&](PlaceId p) {
     const model::Place &place = chart_.places[p];
@@ -149,17 +149,17 @@ void Engine::stop_all(Environment *env, EventLog *log, std::uint64_t tick) {
     if (av_[p] > 0) leave(p);
 }
 
-void Engine::tick_instance(PlaceId place, Frame &f) {
-  Engine *sub = instances_[place].get();
+void Machine::tick_instance(PlaceId place, Frame &f) {
+  Machine *sub = instances_[place].get();
   if (!sub) return;
   if (f.log) f.log->add(EventKind::RunInstance, depth_, fmt::format("run {}: {}", sub->path_, sub->chart_.name));
   Frame own = sub->frame(f.env, f.log, f.tick);
   sub->step(own);
 }
 
-void Engine::log_instances(EventLog &log) const {
+void Machine::log_instances(EventLog &log) const {
   for (PlaceId p : instances_.ids()) {
-    const Engine *sub = instances_[p].get();
+    const Machine *sub = instances_[p].get();
     if (!sub || activation(p) == 0) continue;
     std::string av = "av " + sub->path_ + ":";
     for (PlaceId q : sub->chart_.places.ids()) av += fmt::format(" {}", sub->activation(q));
@@ -173,7 +173,7 @@ void Engine::log_instances(EventLog &log) const {
   }
 }
 
-std::string Engine::label(const model::Transition &t) const {
+std::string Machine::label(const model::Transition &t) const {
   auto side = [&](const model::PlaceList &places) {
     std::string s;
     for (PlaceId p : places) s += (s.empty() ? "" : ", ") + chart_.places.at(p).name;
@@ -182,7 +182,7 @@ std::string Engine::label(const model::Transition &t) const {
   return side(t.inputs) + " -> " + side(t.outputs);
 }
 
-bool Engine::condition(TransitionId t, Frame &f) {
+bool Machine::condition(TransitionId t, Frame &f) {
   const model::Transition &tr = chart_.transitions[t];
   if (!tr.condition) return true;
   const std::size_t mark = f.log ? f.log->size() : 0;
@@ -194,14 +194,14 @@ bool Engine::condition(TransitionId t, Frame &f) {
   return holds;
 }
 
-void Engine::block(EventKind kind, const char *word, PlaceId place, const std::vector<model::Stmt> *stmts, Frame &f) {
+void Machine::block(EventKind kind, const char *word, PlaceId place, const std::vector<model::Stmt> *stmts, Frame &f) {
   if (f.log) f.log->add(kind, depth_, fmt::format("{} {}{}", word, prefix_, chart_.places.at(place).name));
   if (!stmts) return;
   f.depth = depth_ + 1;
   execute(*stmts, f);
 }
 
-void Engine::run_sfc(Frame &f) {
+void Machine::run_sfc(Frame &f) {
   const std::size_t n = chart_.places.size();
   const IdMap<PlaceId, std::uint32_t> before = av_;
   // 1. Timers of the places active at the start of the tick.
@@ -261,7 +261,7 @@ void Engine::run_sfc(Frame &f) {
   }
 }
 
-void Engine::run_fsm(Frame &f) {
+void Machine::run_fsm(Frame &f) {
   // §7: in a terminal state nothing happens.
   if (status_ != 0) return;
   if (timers_[state_] < kTimerMax) ++timers_[state_];
@@ -310,7 +310,7 @@ void Engine::run_fsm(Frame &f) {
   tick_instance(state_, f);
 }
 
-void Engine::end_of_tick(Frame &f) {
+void Machine::end_of_tick(Frame &f) {
   if (!f.log) return;
   std::string av = "av";
   for (PlaceId p : chart_.places.ids()) av += fmt::format(" {}", activation(p));
