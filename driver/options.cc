@@ -188,6 +188,18 @@ void add_front_end_options(CLI::App &app, Options &o, FrontEndFlags &flags) {
       ->allow_extra_args(false);
 }
 
+std::optional<int> parse_subcommand(CLI::App &app, int argc, const char *const *argv, std::ostream &out,
+                                    std::ostream &err, const char *command) {
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError &e) {
+    int code = app.exit(e, out, err);
+    if (code != 0) err << "Run 'gfec " << command << " --help' for the options.\n";
+    return code == 0 ? 0 : 2;
+  }
+  return std::nullopt;
+}
+
 ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
   ParsedCommandLine result;
   Options &o = result.options;

@@ -4,6 +4,8 @@
 #include "backend_registry.h"
 #include "diagnostics.h"
 
+#include <iosfwd>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -82,5 +84,10 @@ struct FrontEndFlags {
 /// does: -I and -x into `o`, and -W..., -w and -f... (diagnostics, -fmax-errors) into `flags`
 /// for FrontEndFlags::apply once the parse is over.
 void add_front_end_options(CLI::App &app, Options &o, FrontEndFlags &flags);
+
+/// Parses a subcommand's line (`gfec run`, `gfec test`): nothing when the command goes on, else
+/// the exit code after --help (0) or a usage error (2, with a hint to `gfec COMMAND --help`).
+std::optional<int> parse_subcommand(CLI::App &app, int argc, const char *const *argv, std::ostream &out,
+                                    std::ostream &err, const char *command);
 
 }  // namespace gfec

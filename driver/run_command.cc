@@ -266,13 +266,7 @@ int run_command(int argc, const char *const *argv, std::ostream &out, std::ostre
   app.add_flag("--check-post", o.check_post, "Evaluate a terminal state's postcondition on entering it");
   FrontEndFlags front_end;
   add_front_end_options(app, o.report, front_end);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError &e) {
-    int code = app.exit(e, out, err);
-    if (code != 0) err << "Run 'gfec run --help' for the options.\n";
-    return code == 0 ? kExitOk : kExitUsageOrIo;
-  }
+  if (auto code = parse_subcommand(app, argc, argv, out, err, "run")) return *code;
   o.agents_given = agents->count() > 0;
   // The text style gfec run has always printed: no line-number gutter unless asked for.
   o.report.line_numbers = false;

@@ -400,13 +400,7 @@ int test_command(int argc, const char *const *argv, std::ostream &out, std::ostr
   app.add_flag("-v,--verbose", o.verbose, "Print PASS or FAIL and the name of every test");
   FrontEndFlags front_end;
   add_front_end_options(app, o.report, front_end);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError &e) {
-    int code = app.exit(e, out, err);
-    if (code != 0) err << "Run 'gfec test --help' for the options.\n";
-    return code == 0 ? kExitOk : kExitUsageOrIo;
-  }
+  if (auto code = parse_subcommand(app, argc, argv, out, err, "test")) return *code;
   auto usage = [&](const std::string &message) {
     err << "gfec: error: " << message << "\nRun 'gfec test --help' for the options.\n";
     return kExitUsageOrIo;

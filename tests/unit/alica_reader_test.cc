@@ -482,13 +482,25 @@ TEST_CASE("alica: the folder layouts of ALICA's own repositories are found, as A
     CHECK(text.find(what) != std::string::npos);
 }
 
-TEST_CASE("alica: the loader's in-memory file system is never searched on disk", "[alica]") {
-  // The same plan in memory: everything but the stale path is found; that one is a located error.
+TEST_CASE("alica: the search below the plans' root walks the loader's file system, never the disk behind it",
+          "[alica]") {
+  // The same plan in memory: the stale "Behaviour/Turn.beh" is found by the search below etc/,
+  // through FileSystem::walk, as on disk (an editor's unsaved buffers are found the same way).
   Run r("layout/etc/plans/Patrol.pml");
   INFO(r.text);
-  CHECK(r.diag.error_count() == 1);
-  CHECK(r.text.find("layout/etc/plans/sub/SweepLeft.pml:33:28: error: cannot find 'Behaviour/Turn.beh', "
-                    "referenced here [alica-reference]") != std::string::npos);
+  CHECK(r.diag.error_count() == 0);
+  CHECK(std::find(r.loaded.paths.begin(), r.loaded.paths.end(), "layout/etc/behaviours/Turn.beh") !=
+        r.loaded.paths.end());
+  // Without the file in memory the search finds nothing, though the fixture is on disk: a
+  // located error at the reference.
+  MemoryFileSystem mem;
+  for (const auto &[path, t] : fixture_files())
+    if (path != "layout/etc/behaviours/Turn.beh") mem.add(path, t);
+  test::Pipeline without("layout/etc/plans/Patrol.pml", mem);
+  INFO(without.text());
+  CHECK(without.diag.error_count() == 1);
+  CHECK(without.text().find("layout/etc/plans/sub/SweepLeft.pml:33:28: error: cannot find 'Behaviour/Turn.beh', "
+                            "referenced here [alica-reference]") != std::string::npos);
 }
 
 TEST_CASE("alica: a mistyped id in a repository suggests the element with the closest id", "[alica]") {
@@ -499,7 +511,7 @@ TEST_CASE("alica: a mistyped id in a repository suggests the element with the cl
                  "ConditionRepository.cnd#1900000002012");
   Run r("layout/etc/plans/Typo.pml", {{"layout/etc/plans/Typo.pml", patrol}});
   INFO(r.text);
-  CHECK(r.diag.error_count() == 2);  // and the stale path, as above
+  CHECK(r.diag.error_count() == 1);
   CHECK(r.text.find("layout/etc/plans/Typo.pml:125:21: error: 'layout/etc/conditions/ConditionRepository.cnd' has "
                     "no element with id 1900000002012 [alica-reference]") != std::string::npos);
   CHECK(r.text.find("layout/etc/conditions/ConditionRepository.cnd:22:5: note: did you mean 'Ready' (id "
