@@ -13,20 +13,14 @@ namespace {
 
 namespace fsys = std::filesystem;
 
-std::string normal(const fsys::path &p) {
-  std::string s = p.lexically_normal().generic_string();
-  if (s.size() > 1 && s.back() == '/') s.pop_back();
-  return s.empty() ? "." : s;
-}
-
 /// The paths of `paths` that walk(dir, limits) takes: below `dir`, in no folder deeper than
 /// limits.max_depth, nor (limits.skip_hidden) in a hidden folder. Normalised and sorted.
 std::vector<std::string> below(const std::string &dir, const std::vector<std::string> &paths,
                                const WalkLimits &limits) {
-  const std::string root = normal(dir.empty() ? "." : dir);
+  const std::string root = normal_path(dir.empty() ? "." : dir);
   std::vector<std::string> out;
   for (const std::string &given : paths) {
-    const std::string path = normal(given);
+    const std::string path = normal_path(given);
     std::string rel;
     if (root == ".") {
       if (path.empty() || path[0] == '/' || path.rfind("../", 0) == 0) continue;
@@ -130,7 +124,7 @@ std::vector<std::string> RealFileSystem::walk_files(const std::string &dir, cons
         it.disable_recursion_pending();
       continue;
     }
-    if (it->is_regular_file(ec)) files.push_back(normal(it->path()));
+    if (it->is_regular_file(ec)) files.push_back(normal_path(it->path()));
   }
   std::sort(files.begin(), files.end());  // directory order is the file system's
   return files;
@@ -154,22 +148,24 @@ std::optional<std::string> MemoryFileSystem::read(const std::string &path) const
   return it->second;
 }
 
-void OverlayFileSystem::open(const std::string &path, std::string text) { buffers_[normal(path)] = std::move(text); }
+void OverlayFileSystem::open(const std::string &path, std::string text) {
+  buffers_[normal_path(path)] = std::move(text);
+}
 
-void OverlayFileSystem::close(const std::string &path) { buffers_.erase(normal(path)); }
+void OverlayFileSystem::close(const std::string &path) { buffers_.erase(normal_path(path)); }
 
 std::optional<std::string> OverlayFileSystem::read(const std::string &path) const {
-  auto it = buffers_.find(normal(path));
+  auto it = buffers_.find(normal_path(path));
   if (it != buffers_.end()) return it->second;
   return base_.read(path);
 }
 
 std::vector<std::string> OverlayFileSystem::list(const std::string &dir) const {
   std::vector<std::string> names = base_.list(dir);
-  const std::string folder = normal(dir.empty() ? "." : dir);
+  const std::string folder = normal_path(dir.empty() ? "." : dir);
   for (const auto &entry : buffers_) {
     fsys::path p(entry.first);
-    if (normal(p.parent_path()) == folder) names.push_back(p.filename().string());
+    if (normal_path(p.parent_path()) == folder) names.push_back(p.filename().string());
   }
   std::sort(names.begin(), names.end());
   names.erase(std::unique(names.begin(), names.end()), names.end());
@@ -182,6 +178,12 @@ std::vector<std::string> OverlayFileSystem::walk_files(const std::string &dir, c
   std::vector<std::string> paths = base_.walk(dir, limits);
   for (const auto &entry : buffers_) paths.push_back(entry.first);
   return below(dir, paths, limits);
+}
+
+std::string normal_path(const std::string &path) {
+  std::string s = fsys::path(path).lexically_normal().generic_string();
+  if (s.size() > 1 && s.back() == '/') s.pop_back();
+  return s.empty() ? "." : s;
 }
 
 }  // namespace gfec

@@ -50,6 +50,10 @@ protected:
   std::vector<std::string> walk_files(const std::string &dir, const WalkLimits &limits) const override;
 };
 
+/// `path` lexically normal, with '/', no trailing '/' ("a/./b/" is "a/b", "" is "."): how the
+/// file systems and the readers that search folders compare paths.
+std::string normal_path(const std::string &path);
+
 /// "cannot read 'x.sfc': no such file", for a path RealFileSystem::read refused: missing, a
 /// folder, not a regular file (gfec reads no device, pipe or socket: one could block it or never
 /// end, docs/security.md), or not readable.

@@ -39,9 +39,10 @@ const InputLanguage &input_language_of(const std::string &path, std::string_view
   const InputLanguage *by_extension = nullptr;
   for (const InputLanguage *l : rows()) {
     if (!l->file_type(path)) continue;
-    if (l->sniff ? l->sniff(text) : !by_extension) {
-      if (l->sniff) return *l;
-      by_extension = l;
+    if (!l->sniff) {
+      if (!by_extension) by_extension = l;
+    } else if (l->sniff(text)) {
+      return *l;  // the text says it is this language's
     }
   }
   return by_extension ? *by_extension : chart_text_language();

@@ -276,14 +276,20 @@ std::string hooks(const model::Chart &c, const std::string &t, const HarnessOpti
   return s + "}\n#endif\n\n";
 }
 
+/// The start of `@H@dump` for the records and the observable log: `av` and every place's
+/// activation count, one line.
+std::string dump_with_counts(const std::string &t) {
+  std::string s = fmt::format("static void @H@dump(const {} *m)\n{{\n    int p;\n    @H@s(\"av\");\n", t);
+  s += fmt::format("    for (p = 0; p < {}_PLACE_COUNT; ++p) {{\n", t);
+  return s + Line("        ").text(" ").unsigned_(t + "_activation(m, p)").end(false) + "    }\n    @H@s(\"\\n\");\n";
+}
+
 /// The records of one agent's engine `m` (HarnessLog::Records).
 std::string records(const model::Model &model, model::ChartId chart, const Names &fields,
                     const std::vector<scenario::Instance> &instances) {
   const model::Chart &c = model.charts[chart];
   const std::string &t = c.name;
-  std::string s = fmt::format("static void @H@dump(const {} *m)\n{{\n    int p;\n    @H@s(\"av\");\n", t);
-  s += fmt::format("    for (p = 0; p < {}_PLACE_COUNT; ++p) {{\n", t);
-  s += Line("        ").text(" ").unsigned_(t + "_activation(m, p)").end(false) + "    }\n    @H@s(\"\\n\");\n";
+  std::string s = dump_with_counts(t);
   // Each sub-chart instance's activation, numbered as X_instance numbers them.
   for (std::size_t k = 0; k < instances.size(); ++k)
     s +=
@@ -304,9 +310,7 @@ std::string records(const model::Model &model, model::ChartId chart, const Names
 /// The observable lines after one agent's tick: `av`, and an fsm's `state S running`.
 std::string observable(const model::Chart &c) {
   const std::string &t = c.name;
-  std::string s = fmt::format("static void @H@dump(const {} *m)\n{{\n    int p;\n    @H@s(\"av\");\n", t);
-  s += fmt::format("    for (p = 0; p < {}_PLACE_COUNT; ++p) {{\n", t);
-  s += Line("        ").text(" ").unsigned_(t + "_activation(m, p)").end(false) + "    }\n    @H@s(\"\\n\");\n";
+  std::string s = dump_with_counts(t);
   if (c.kind != model::Chart::Kind::Fsm) s += "    (void)@H@place_names; /* the hooks' */\n";
   if (c.kind == model::Chart::Kind::Fsm)
     s +=

@@ -37,7 +37,7 @@ void Reader::read_main(const std::string &path, std::string text) {
 }
 
 void Reader::read_plan(const std::string &path, std::string text) {
-  Doc *doc = files_.open(normal(path), std::move(text));
+  Doc *doc = files_.open(normal_path(path), std::move(text));
   main_ = result_.program.files.front().get();
   if (!doc->root) return;
   const JsonValue &root = *doc->root;

@@ -13,12 +13,6 @@ namespace gfec::alica {
 
 namespace fsys = std::filesystem;
 
-std::string normal(const fsys::path &p) {
-  std::string s = p.lexically_normal().generic_string();
-  if (s.size() > 1 && s.back() == '/') s.pop_back();
-  return s.empty() ? "." : s;
-}
-
 std::string extension_of(const std::string &path) { return fsys::path(path).extension().string(); }
 
 std::optional<Ref> split_ref(std::string text) {
@@ -91,7 +85,7 @@ Doc *PlanFiles::open(const std::string &path, std::string text) {
 std::vector<std::string> PlanFiles::candidates(const std::string &file, const Doc &from) const {
   std::vector<std::string> out;
   auto add = [&](const fsys::path &p) {
-    std::string n = normal(p);
+    std::string n = normal_path(p);
     if (std::find(out.begin(), out.end(), n) == out.end()) out.push_back(n);
   };
   if (fsys::path(file).is_absolute()) {
@@ -133,7 +127,7 @@ std::optional<std::string> PlanFiles::search_below(const std::string &file, cons
   std::string rel = from.root && from.root->is_object() ? from.root->string_of("relativeDirectory") : "";
   for (const auto &part : fsys::path(rel).lexically_normal())
     if (!part.empty() && part != ".") dir /= "..";
-  std::string root = normal(dir / "..");
+  std::string root = normal_path(dir / "..");
   auto &files = trees_[root];
   if (!trees_listed_.count(root)) {
     trees_listed_.insert(root);
@@ -203,7 +197,7 @@ Doc *PlanFiles::find_doc(const std::string &file, const Doc &from, const SourceR
   suggest_file(d, file, tried, from.path);
   // The folders that exist (hold files), not every folder of every layout gfec knows.
   for (const auto &t : tried)
-    if (&t == &tried.front() || !fs_.list(normal(fsys::path(t).parent_path())).empty())
+    if (&t == &tried.front() || !fs_.list(normal_path(fsys::path(t).parent_path())).empty())
       d.note(fmt::format("looked for '{}'", t));
   return nullptr;
 }
@@ -231,12 +225,12 @@ void PlanFiles::suggest_file(Diagnostic &d, const std::string &file, const std::
   std::string best;
   NearestName nearest(want, want.size() / 3);
   for (const auto &path : tried)
-    for (const auto &name : fs_.list(normal(fsys::path(path).parent_path()))) {
-      if (normal(fsys::path(path).parent_path() / name) == from) continue;
+    for (const auto &name : fs_.list(normal_path(fsys::path(path).parent_path()))) {
+      if (normal_path(fsys::path(path).parent_path() / name) == from) continue;
       if (nearest.offer(name)) best = name;
     }
   if (!best.empty() && best != want)
-    d.note(fmt::format("did you mean '{}'?", normal(fsys::path(file).parent_path() / best)));
+    d.note(fmt::format("did you mean '{}'?", normal_path(fsys::path(file).parent_path() / best)));
 }
 
 /// The element a reference "File.ext#id" names, or nothing (reported at `at`).

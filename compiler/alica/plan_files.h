@@ -19,9 +19,6 @@
 
 namespace gfec::alica {
 
-/// `p` without "." and ".." parts, with '/' separators and no trailing '/': the one spelling of a
-/// path, so that a file reached by two references is read once.
-std::string normal(const std::filesystem::path &p);
 /// ".pml" for "plans/Master.pml".
 std::string extension_of(const std::string &path);
 
