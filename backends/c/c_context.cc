@@ -319,7 +319,7 @@ std::string EngineContext::timer_of(PlaceId p) const { return field(timer_field.
 const char *EngineContext::report_type() const {
   // C's int8_t and int16_t hold -1 and up to 127 and 32767 states.
   const std::size_t n = chart.places.size();
-  return n <= 127 ? "int8_t" : n <= 32767 ? "int16_t" : "int";
+  return n <= 127 ? "int8_t" : n <= 32767 ? "int16_t" : "int32_t";
 }
 
 bool EngineContext::runs_exit(PlaceId p) const {

@@ -33,9 +33,10 @@ struct EngineContext {
   Layout layout;  ///< readable, sequential or sparse (c_layout.h)
   /// The writer of what depends on the engine's form (c_form.h): the fsm's, or the layout's.
   const FormWriter &form() const;
-  /// The readable form's counter type: as narrow as the proven bound allows, else GFE's unsigned.
+  /// The readable form's counter type: as narrow as the proven bound allows, else 32 bits (GFE's
+  /// unsigned, which is 16 bits on an AVR).
   const char *readable_counter() const {
-    return layout.activation.bounded ? uint_type(layout.counter_bits) : "unsigned";
+    return layout.activation.bounded ? uint_type(layout.counter_bits) : "uint32_t";
   }
 
   // ------------------------------------------------------------ names in the generated code

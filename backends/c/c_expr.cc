@@ -82,6 +82,18 @@ bool has_call(const Expr &e) {
   return false;
 }
 
+/// The value of a floating expression known at compile time (a literal, a constant, folded
+/// arithmetic), as a double: converted to its type it is the expression's value.
+std::optional<double> floating_constant(const EngineContext &c, const Expr &e) {
+  if (e.type != Type::Float && e.type != Type::Double) return std::nullopt;
+  if (e.kind == Expr::Kind::Float || e.folded) return e.float_value;
+  if (e.kind == Expr::Kind::Const) {
+    const Expr &value = c.model.consts.at(e.constant()).value;
+    if (value.type == Type::Float || value.type == Type::Double) return value.float_value;
+  }
+  return std::nullopt;
+}
+
 /// The value of an int expression the validator folded (a literal, a constant, arithmetic on
 /// them), if it is one: the model's value, computed once with C's semantics (compiler/constant.h).
 std::optional<long long> int_constant(const EngineContext &c, const Expr &e) {
@@ -102,16 +114,25 @@ Rendered int_literal(std::int32_t v) {
   return {std::to_string(v), v < 0 ? kUnary : kPrimary};
 }
 
-/// A floating literal of type float (a folded float constant): C would read the spelling as a
-/// double. `0.1f` where C reads that as the same float as the double 0.1 converted (the model's
-/// value), else `(float)0.1`.
+/// A float as a C literal that every compiler reads as exactly this float: the shortest
+/// decimal that rounds back to it, with an `f`, which a compiler rounds once, straight to float.
+/// (`(float)1.00000005960464478` would round twice where double is binary64 and once where it
+/// is 32 bits, as on the AVR: two different floats.)
+Rendered float_value_literal(float v) {
+  std::string text = fmt::format("{}", v);
+  if (text.find_first_of(".eE") == std::string::npos) text += ".0";
+  return {text + "f", v < 0 ? kUnary : kPrimary};
+}
+
+/// A floating literal of type float (a folded float constant): its spelling with an `f` when
+/// that reads as the model's value, else the value itself.
 Rendered float_literal(const Expr &e) {
   const std::string text = e.text.str();
   const bool negative = !text.empty() && text[0] == '-';
   float direct = std::strtof(text.c_str(), nullptr);  // how C reads the spelling with an `f`
   float converted = static_cast<float>(e.float_value);
   if (std::memcmp(&direct, &converted, sizeof direct) == 0) return {text + "f", negative ? kUnary : kPrimary};
-  return {"(float)" + (negative ? bracket(text) : text), kUnary};
+  return float_value_literal(converted);
 }
 
 /// A literal; a folded constant may be negative, and then binds like a unary minus.
@@ -237,6 +258,14 @@ public:
 
   Rendered render(const Expr &e) {
     if (&e == replaced_) return {replacement_};
+    if (written_as_value(e)) {
+      in_folded_ = true;
+      Rendered spelled = render(e);
+      in_folded_ = false;
+      Rendered value =
+          e.type == Type::Int ? int_literal(e.int_value) : float_value_literal(static_cast<float>(e.float_value));
+      return annotated(std::move(value), e, spelled.text);
+    }
     switch (e.kind) {
     case Expr::Kind::Bool:
     case Expr::Kind::Int:
@@ -271,9 +300,18 @@ public:
   /// becomes a float that cannot hold it exactly (-Wimplicit-const-int-float-conversion). The
   /// conversion is the one C (and the language) makes anyway.
   Rendered converted(Rendered r, const Expr &e, Type to) const {
+    // A floating constant that meets an int or a float is written as the value it becomes: the
+    // target's compiler would convert it in its own double, 32 bits on the AVR.
+    if ((to == Type::Int || to == Type::Float) && e.type == Type::Double) {
+      if (auto v = floating_constant(c_, e)) {
+        Rendered value =
+            to == Type::Int ? int_literal(static_cast<std::int32_t>(*v)) : float_value_literal(static_cast<float>(*v));
+        return annotated(std::move(value), e, r.text);
+      }
+    }
     const char *cast = nullptr;
     if (to == Type::Int && is_floating(e.type)) {
-      cast = "(int)";
+      cast = "(int32_t)";
     } else if (to == Type::Float && e.type == Type::Int) {
       auto v = int_constant(c_, e);
       if (v && static_cast<long long>(static_cast<float>(*v)) != *v) cast = "(float)";
@@ -301,7 +339,7 @@ public:
         // the conversion is explicit.
         BinaryOp op = s.op == AssignOp::Add ? BinaryOp::Add : BinaryOp::Sub;
         if (r.prec <= precedence(op)) r.text = bracket(r.text);
-        r.text = fmt::format("{} = (int)({} {} {});", target, target, spelling(op), r.text);
+        r.text = fmt::format("{} = (int32_t)({} {} {});", target, target, spelling(op), r.text);
       } else {
         r = converted(std::move(r), s.expr, to);
         r.text = fmt::format("{} {} {};", target, spelling(s.op), r.text);
@@ -358,10 +396,30 @@ private:
     return "active(" + s + ")";
   }
 
+  /// Int and float arithmetic the validator folded is written as its value, the chart's
+  /// expression in a comment: computed by the target's compiler in C's `int` it could overflow
+  /// where int is 16 bits (`200 * 200` on the AVR).
+  bool written_as_value(const Expr &e) const {
+    if (in_folded_ || !e.folded || (e.type != Type::Int && e.type != Type::Float)) return false;
+    return e.kind != Expr::Kind::Int && e.kind != Expr::Kind::Float && e.kind != Expr::Kind::Const;
+  }
+
+  /// `value` with what the chart wrote in a comment, when that says more than the value.
+  Rendered annotated(Rendered value, const Expr &e, const std::string &spelled) const {
+    std::string origin = spelled;
+    if (e.kind == Expr::Kind::Const) origin = std::string(c_.model.consts.at(e.constant()).name);
+    if (origin != value.text && origin + "f" != value.text && origin.find("/*") == std::string::npos &&
+        origin.find("*/") == std::string::npos)
+      value.text += fmt::format(" /* {} */", origin);
+    return value;
+  }
+
   /// A constant is written as its folded value, named in a comment: no C name of the chart's can
-  /// collide with it (a constant called `m` would otherwise hide the engine parameter).
+  /// collide with it (a constant called `m` would otherwise hide the engine parameter). Inside a
+  /// folded expression's comment, only its name.
   Rendered constant(const Expr &e) const {
     const auto &k = c_.model.consts.at(e.constant());
+    if (in_folded_) return {std::string(k.name)};
     Rendered v = literal(k.value);
     v.text += fmt::format(" /* {} */", k.name);
     return v;
@@ -577,6 +635,7 @@ private:
   /// overlapping(): the test rendered as `replacement_` (its pair's value) instead.
   const Expr *replaced_ = nullptr;
   std::string replacement_;
+  bool in_folded_ = false;  ///< rendering a folded expression for its comment
 };
 
 }  // namespace
@@ -584,7 +643,7 @@ private:
 const char *c_type(model::Type type) {
   switch (type) {
   case model::Type::Bool: return "bool";
-  case model::Type::Int: return "int";
+  case model::Type::Int: return "int32_t";
   case model::Type::Float: return "float";
   case model::Type::Double: return "double";
   case model::Type::Void: return "void";

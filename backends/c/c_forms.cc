@@ -46,7 +46,7 @@ public:
   void accessor_prototypes(CodeWriter &w, const EngineContext &c) const override {
     const std::string &t = c.type;
     w.line("/* 1 if `place` is the current state, else 0. */");
-    w.line("unsigned {0}_activation(const {0} *m, int place);", t);
+    w.line("uint32_t {0}_activation(const {0} *m, int place);", t);
     w.line("/* The current state's number, a {}_<state> (an int, as the language's C API has it). */", t);
     w.line("int {0}_state(const {0} *m);", t);
     w.line("/* 0 while running, 1 once in a success state, -1 once in a failure state. */");
@@ -75,7 +75,7 @@ public:
   void accessor_prototypes(CodeWriter &w, const EngineContext &c) const override {
     const std::string &t = c.type;
     w.line("/* The activation counter of a place (a {}_<place>); 0 for a number out of range. */", t);
-    w.line("unsigned {0}_activation(const {0} *m, int place);", t);
+    w.line("uint32_t {0}_activation(const {0} *m, int place);", t);
   }
 
 protected:

@@ -1,6 +1,7 @@
 #include "c_harness.h"
 
 #include "c_context.h"
+#include "c_expr.h"
 #include "roots.h"
 #include "scenario/snapshot.h"
 
@@ -120,7 +121,7 @@ constexpr std::string_view kPutcOutput =
     "    }\n    return len;\n}\n\n"
     "void @H@g(double value, int digits)\n{\n"
     "    /* value = N / 10^k exactly, N's digits least significant first: a double's N has at most 800. */\n"
-    "    static unsigned char digit[830];\n"
+    "    static unsigned char digit[sizeof value > 4u ? 830 : 120]; /* 120 where double is binary32 (AVR) */\n"
     "    const unsigned one = 1u;\n"
     "    const unsigned char *byte = (const unsigned char *)&value;\n"
     "    int len = 0, k = 0, e = 0, cut = 0, x, j;\n"
@@ -128,7 +129,7 @@ constexpr std::string_view kPutcOutput =
     "    if ((*(const unsigned char *)&one == 1u ? byte[sizeof value - 1] : byte[0]) & 0x80u) {\n"
     "        (void)@P@('-');\n        value = -value;\n    }\n"
     "    if (value != value) {\n        @H@s(\"nan\");\n        return;\n    }\n"
-    "    if (value > 1.7976931348623157e308) {\n        @H@s(\"inf\");\n        return;\n    }\n"
+    "    if ((value - value) != 0.0) {\n        @H@s(\"inf\");\n        return;\n    }\n"
     "    if (value == 0.0) {\n        (void)@P@('0');\n        return;\n    }\n"
     "    if (digits < 1) {\n        digits = 1;\n    }\n"
     "    /* value = m * 2^e, m an integer of 53 bits: scaling by 2 is exact. */\n"
@@ -168,7 +169,7 @@ constexpr std::string_view kPutcOutput =
 
 /// Where a sensing function's value comes from, as a C expression of its result type.
 std::string input_of(const HarnessOptions &o, const model::Function &f, model::FunctionId id) {
-  const std::string t = model::type_name(f.result);
+  const std::string t = c_type(f.result);
   switch (o.inputs) {
   case HarnessInputs::Steps:
     switch (f.result) {
@@ -216,8 +217,8 @@ std::string input_tables(const model::Model &m, const std::vector<model::Functio
       }
       rows += fmt::format("{}{{{}}}", a ? ", " : "", row);
     }
-    s += fmt::format("static const {} @H@in{}[{}][{}] = {{{}}};\n", model::type_name(f.result), id.index(), o.agents,
-                     ticks, rows);
+    s +=
+        fmt::format("static const {} @H@in{}[{}][{}] = {{{}}};\n", c_type(f.result), id.index(), o.agents, ticks, rows);
   }
   return s + "\n";
 }
@@ -228,14 +229,14 @@ void interface_function(std::string &s, const model::Model &m, model::FunctionId
   const bool compact = o.log == HarnessLog::Compact;
   std::string params;
   for (std::size_t i = 0; i < f.params.size(); ++i)
-    params += fmt::format("{}{} a{}", i ? ", " : "", model::type_name(f.params[i].type), i);
+    params += fmt::format("{}{} a{}", i ? ", " : "", c_type(f.params[i].type), i);
   if (o.context) params = "void *ctx" + (params.empty() ? "" : ", " + params);
-  s += fmt::format("{} {}({})\n{{\n", model::type_name(f.result), f.name, params.empty() ? "void" : params);
+  s += fmt::format("{} {}({})\n{{\n", c_type(f.result), f.name, params.empty() ? "void" : params);
   if (o.context)
     s += "    if (ctx != (const void *)&@H@device[@H@agent]) {\n        @H@s(\"wrong context\\n\");\n"
          "        @H@exit(3);\n    }\n";
   const bool senses = f.result != Type::Void;
-  if (senses) s += fmt::format("    const {} v = {};\n", model::type_name(f.result), input_of(o, f, id));
+  if (senses) s += fmt::format("    const {} v = {};\n", c_type(f.result), input_of(o, f, id));
   // `call F(args)`: every call in the records and the observable log; the compact log's
   // `act F(args)` for an action, `call F(args)` for a sensing function with arguments.
   if (!compact || !senses || !f.params.empty()) {

@@ -1,6 +1,7 @@
 // engine.h: everything the encapsulating code and the robot library need, and nothing else.
 #include "c_emit.h"
 #include "c_expr.h"
+#include "c_floating_use.h"
 #include "c_form.h"
 #include "naming/naming.h"
 
@@ -153,7 +154,7 @@ void instance_api(CodeWriter &w, const EngineContext &c) {
   w.line("   instance's enumeration ({}, ...), as {}_activation tells the root's:", example, t);
   w.line("   where the instance is while the place that runs it is active, else where its last tick");
   w.line("   left it. 0 for a number out of range. */");
-  w.line("unsigned {}(const {} *m, int instance, int place);", c.instance_activation_fn, t);
+  w.line("uint32_t {}(const {} *m, int instance, int place);", c.instance_activation_fn, t);
 }
 
 void api(CodeWriter &w, const EngineContext &c) {
@@ -240,6 +241,39 @@ void interface_functions(CodeWriter &w, const EngineContext &c) {
 
 }  // namespace
 
+namespace {
+
+/// The engine computes as the language does only where float is IEEE binary32 and double
+/// binary64 (docs/targets.md): elsewhere (avr-gcc's double is 32 bits) it does not compile,
+/// rather than compute other values.
+void exact_types(CodeWriter &w, const EngineContext &c) {
+  const FloatingUse use = floating_use(c);
+  if (!use.float_type && !use.double_type) return;
+  directive(w, "#include <float.h>");
+  w.blank();
+  w.line("/* The floating types as the language has them (docs/targets.md): a compiler whose types differ");
+  w.line("   refuses the engine. (FLT_MANT_DIG is C99's own; a checker that reads no <float.h> skips this.) */");
+  if (use.float_type) {
+    directive(w, "#if defined(FLT_MANT_DIG) && ((FLT_RADIX != 2) || (FLT_MANT_DIG != 24) || (FLT_MAX_EXP != 128) || "
+                 "(FLT_MIN_EXP != -125))");
+    directive(w, fmt::format("#error \"{}: its float must be IEEE binary32, which this compiler's float is not: see "
+                             "docs/targets.md in gfec's documentation\"",
+                             c.type));
+    directive(w, "#endif");
+  }
+  if (use.double_type) {
+    directive(w, "#if defined(DBL_MANT_DIG) && ((FLT_RADIX != 2) || (DBL_MANT_DIG != 53) || (DBL_MAX_EXP != 1024) || "
+                 "(DBL_MIN_EXP != -1021))");
+    directive(
+        w, fmt::format("#error \"{}: its double must be IEEE binary64, which this compiler's double is not (avr-gcc's "
+                       "is 32 bits): see docs/targets.md in gfec's documentation\"",
+                       c.type));
+    directive(w, "#endif");
+  }
+}
+
+}  // namespace
+
 void emit_header(const EngineContext &c, std::ostream &out) {
   CodeWriter w(out, c.header_file, false);
   w.line(std::string_view(banner(c)));
@@ -248,6 +282,7 @@ void emit_header(const EngineContext &c, std::ostream &out) {
   w.blank();
   directive(w, "#include <stdbool.h>");
   directive(w, "#include <stdint.h>");
+  exact_types(w, c);
   w.blank();
   directive(w, "#ifdef __cplusplus");
   w.line("extern \"C\" {");

@@ -2,6 +2,7 @@
 // accessors.
 #include "c_emit.h"
 #include "c_expr.h"
+#include "c_floating_use.h"
 #include "c_form.h"
 
 #include <fmt/format.h>
@@ -38,6 +39,22 @@ void includes(CodeWriter &w, const EngineContext &c) {
     directive(w, "#endif");
     directive(w, "#endif");
   }
+}
+
+/// C lets a compiler fuse `a * b + c` into one multiply-add with one rounding (gcc does by
+/// default outside ISO mode, on a Cortex-M4F or x86 with FMA); the language rounds after every
+/// operation, as the interpreter does. clang obeys the standard pragma; gcc ignores it and takes
+/// its own (which avr-gcc and arm-none-eabi-gcc understand too).
+void no_contraction(CodeWriter &w, const EngineContext &c) {
+  if (!floating_use(c).arithmetic) return;
+  w.blank();
+  w.line("/* Floating arithmetic rounds after every operation, as the language computes it: no fused");
+  w.line("   multiply-add (docs/targets.md). */");
+  directive(w, "#if defined(__clang__)");
+  directive(w, "#pragma STDC FP_CONTRACT OFF");
+  directive(w, "#elif defined(__GNUC__)");
+  directive(w, "#pragma GCC optimize(\"fp-contract=off\")");
+  directive(w, "#endif");
 }
 
 /// The `%{ %}` blocks at file level (imports' first), where `#include`s for the chart's code go.
@@ -164,9 +181,9 @@ void team_functions(CodeWriter &w, const EngineContext &c) {
 /// X_instance_activation (docs/c-engine.md "Sub-charts"): a case per instance, each reading the
 /// instance's state as its own form holds it.
 void instance_activation(CodeWriter &w, const EngineContext &c) {
-  w.line("unsigned {}(const {} *{}, int instance, int place)", c.instance_activation_fn, c.type, c.self);
+  w.line("uint32_t {}(const {} *{}, int instance, int place)", c.instance_activation_fn, c.type, c.self);
   auto body = w.block("{");
-  w.line("unsigned value = 0u;");
+  w.line("uint32_t value = 0u;");
   // The labels stand at the level of the switch, what they run one level in.
   w.line("switch (instance) {");
   c.each_instance(c.self + "->", [&](const EngineContext &s, const std::string &member) {
@@ -192,7 +209,7 @@ void instance_activation(CodeWriter &w, const EngineContext &c) {
 
 void accessors(CodeWriter &w, const EngineContext &c) {
   const std::string &t = c.type, &m = c.self;
-  w.line("unsigned {0}_activation(const {0} *{1}, int place)", t, m);
+  w.line("uint32_t {0}_activation(const {0} *{1}, int place)", t, m);
   {
     auto body = w.block("{");
     const ActivationRead read = c.form().activation(c, "");
@@ -274,6 +291,7 @@ void emit_source(const EngineContext &c, std::ostream &out) {
   CodeWriter w(out, c.source_file, c.options.line_directives);
   w.line(std::string_view(banner(c)));
   includes(w, c);
+  no_contraction(w, c);
   verbatims(w, c);
   w.blank();
   for (const auto &s : c.sub)

@@ -41,7 +41,7 @@ for chart in "$source_dir"/samples/*.sfc "$source_dir"/samples/*.fsm; do
     "$gfec" --engine="$form" "${options[@]}" -I "$source_dir/samples" -o "$dir/$base.c" "$chart" || fail "gfec $chart"
     name=$(sed -n 's/^void \([A-Za-z0-9_]*\)_init(.*/\1/p' "$dir/$base.h")
     [ -n "$name" ] || fail "no _init in $base.h"
-    grep -n '#include <' "$dir/$base.c" "$dir/$base.h" | grep -v -e '<stdint.h>' -e '<stdbool.h>' -e '<limits.h>' -e '<assert.h>' &&
+    grep -n '#include <' "$dir/$base.c" "$dir/$base.h" | grep -v -e '<stdint.h>' -e '<stdbool.h>' -e '<limits.h>' -e '<float.h>' -e '<assert.h>' &&
       fail "$base ($variant) includes a hosted header"
     grep -q 'memcpy\|memset\|printf' "$dir/$base.c" && fail "$base ($variant) calls the C library"
     # shellcheck disable=SC2059

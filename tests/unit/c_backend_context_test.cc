@@ -315,9 +315,9 @@ sfc Clash {
   INFO(compiled->errors);
   REQUIRE(!compiled->diag.has_errors());
   const std::string &h = compiled->files[1].contents;
-  CHECK(h.find("    int ctx; ") != std::string::npos);     // the var keeps its name
-  CHECK(h.find("    void *ctx_; ") != std::string::npos);  // the context's member gives way
-  CHECK(h.find("void Put(void *ctx__, int ctx, int ctx_);") != std::string::npos);
+  CHECK(h.find("    int32_t ctx; ") != std::string::npos);  // the var keeps its name
+  CHECK(h.find("    void *ctx_; ") != std::string::npos);   // the context's member gives way
+  CHECK(h.find("void Put(void *ctx__, int32_t ctx, int32_t ctx_);") != std::string::npos);
   CHECK(h.find("bool ctx_ok(void *ctx);") != std::string::npos);
   CHECK(h.find("Clash_context_,") != std::string::npos);  // the place's constant gives way to the API
   const char *harness = R"C(#include "engine.h"

@@ -170,7 +170,7 @@ TEST_CASE("c engine sub-charts: X_instance_activation tells where each instance 
   auto files = emit_c(b.model(), "engine.c", true, "hand.sfc");
   const std::string &h = files[1].contents;
   CHECK(h.find("Top_A_INSTANCE,") < h.find("Top_A_M1_INSTANCE,"));
-  CHECK(h.find("unsigned Top_instance_activation(const Top *m, int instance, int place);") != std::string::npos);
+  CHECK(h.find("uint32_t Top_instance_activation(const Top *m, int instance, int place);") != std::string::npos);
 }
 
 TEST_CASE("c engine sub-charts: a chart without sub-charts has no instance API", "[c_backend][subchart]") {

@@ -22,7 +22,7 @@ void Weigh_run(Weigh *m)
 {
     /* In a terminal state nothing happens any more */
     if (m->status == 0) {
-        int gfec_t0, gfec_t1, gfec_t2, gfec_t3; /* temporaries: the chart calls left to right */
+        int32_t gfec_t0, gfec_t1, gfec_t2, gfec_t3; /* temporaries: the chart calls left to right */
 
 #ifdef Weigh_HOOKS
         Weigh_place from = m->state; /* the state at the start of the tick */
@@ -74,7 +74,7 @@ void Weigh_run(Weigh *m)
         /* Postconditions of the terminal states, checked on entering them */
         if (m->state == Weigh_Done) {
 #ifndef Weigh_ASSERT_OFF
-            int gfec_t4; /* temporaries: the chart calls left to right */
+            int32_t gfec_t4; /* temporaries: the chart calls left to right */
             bool gfec_t5; /* temporaries: the chart calls left to right */
 #line 13 "call_order.fsm"
             gfec_t4 = Weight(); gfec_t5 = ((gfec_t4 - Target()) < 2) && Stable(); Weigh_ASSERT(gfec_t5);
@@ -85,7 +85,7 @@ void Weigh_run(Weigh *m)
 
         /* Perform the action of the current state */
         if (m->state == Weigh_Fill) {
-            int gfec_t6; /* temporaries: the chart calls left to right */
+            int32_t gfec_t6; /* temporaries: the chart calls left to right */
 #line 11 "call_order.fsm"
             gfec_t6 = Weight(); Report(gfec_t6, Target());
 #line 92 "call_order.c"
@@ -93,7 +93,7 @@ void Weigh_run(Weigh *m)
     }
 }
 
-unsigned Weigh_activation(const Weigh *m, int place)
+uint32_t Weigh_activation(const Weigh *m, int place)
 {
     return ((int)m->state == place) ? 1u : 0u;
 }

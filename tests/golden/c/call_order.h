@@ -40,7 +40,7 @@ void Weigh_init(Weigh *m);
 /* One tick (docs/language.md 7). */
 void Weigh_run(Weigh *m);
 /* 1 if `place` is the current state, else 0. */
-unsigned Weigh_activation(const Weigh *m, int place);
+uint32_t Weigh_activation(const Weigh *m, int place);
 /* The current state's number, a Weigh_<state> (an int, as the language's C API has it). */
 int Weigh_state(const Weigh *m);
 /* 0 while running, 1 once in a success state, -1 once in a failure state. */
@@ -57,10 +57,10 @@ void Weigh_enabled(const Weigh *m, Weigh_transition transition);
 #endif
 
 /* Functions of interface Scale that the chart calls: the robot library defines them. */
-int Weight(void);
-int Target(void);
+int32_t Weight(void);
+int32_t Target(void);
 bool Stable(void);
-void Report(int weight, int target);
+void Report(int32_t weight, int32_t target);
 
 #ifdef __cplusplus
 }

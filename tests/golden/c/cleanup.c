@@ -127,7 +127,7 @@ void CleanUp_run(CleanUp *m)
     }
 }
 
-unsigned CleanUp_activation(const CleanUp *m, int place)
+uint32_t CleanUp_activation(const CleanUp *m, int place)
 {
     return ((int)m->state == place) ? 1u : 0u;
 }

@@ -46,7 +46,7 @@ void CleanUp_init(CleanUp *m);
 /* One tick (docs/language.md 7): call it every 10 ms. */
 void CleanUp_run(CleanUp *m);
 /* 1 if `place` is the current state, else 0. */
-unsigned CleanUp_activation(const CleanUp *m, int place);
+uint32_t CleanUp_activation(const CleanUp *m, int place);
 /* The current state's number, a CleanUp_<state> (an int, as the language's C API has it). */
 int CleanUp_state(const CleanUp *m);
 /* 0 while running, 1 once in a success state, -1 once in a failure state. */

@@ -162,7 +162,7 @@ void Door_run(Door *m)
     }
 }
 
-unsigned Door_activation(const Door *m, int place)
+uint32_t Door_activation(const Door *m, int place)
 {
     return ((place >= 0) && (place < (int)Door_PLACE_COUNT) && ((int)m->current == place)) ? 1u : 0u;
 }

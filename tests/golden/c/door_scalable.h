@@ -40,7 +40,7 @@ struct Door {
     uint32_t timer_Open;    /* ticks Open has been active: elapsed(Open) */
     uint32_t timer_Closing; /* ticks Closing has been active: elapsed(Closing) */
     bool started;           /* the first tick has run */
-    int cycles;             /* var cycles */
+    int32_t cycles;         /* var cycles */
 };
 
 /* Sets the initial marking; calls no code of the chart. */
@@ -48,7 +48,7 @@ void Door_init(Door *m);
 /* One tick (docs/language.md 5.1): call it every 10 ms. */
 void Door_run(Door *m);
 /* The activation counter of a place (a Door_<place>); 0 for a number out of range. */
-unsigned Door_activation(const Door *m, int place);
+uint32_t Door_activation(const Door *m, int place);
 
 #ifdef Door_HOOKS
 /* Observation hooks (GFE_Activated, GFE_Enabled): an engine built with -DDoor_HOOKS calls them and
@@ -63,7 +63,7 @@ void Door_enabled(const Door *m, Door_transition transition);
 /* Functions of interface DoorBot that the chart calls: the robot library defines them. */
 bool Button(void);
 bool Blocked(void);
-void Motor(int direction);
+void Motor(int32_t direction);
 void Light(bool on);
 
 #ifdef __cplusplus

@@ -4,6 +4,16 @@
 
 #include <stdbool.h>
 #include <stdint.h>
+#include <float.h>
+
+/* The floating types as the language has them (docs/targets.md): a compiler whose types differ
+   refuses the engine. (FLT_MANT_DIG is C99's own; a checker that reads no <float.h> skips this.) */
+#if defined(FLT_MANT_DIG) && ((FLT_RADIX != 2) || (FLT_MANT_DIG != 24) || (FLT_MAX_EXP != 128) || (FLT_MIN_EXP != -125))
+#error "Expressions: its float must be IEEE binary32, which this compiler's float is not: see docs/targets.md in gfec's documentation"
+#endif
+#if defined(DBL_MANT_DIG) && ((FLT_RADIX != 2) || (DBL_MANT_DIG != 53) || (DBL_MAX_EXP != 1024) || (DBL_MIN_EXP != -1021))
+#error "Expressions: its double must be IEEE binary64, which this compiler's double is not (avr-gcc's is 32 bits): see docs/targets.md in gfec's documentation"
+#endif
 
 #ifdef __cplusplus
 extern "C" {
@@ -31,8 +41,8 @@ struct Expressions {
     uint8_t av[Expressions_PLACE_COUNT]; /* activation counter of each place (never above 2) */
     uint32_t timer_Run;                  /* ticks Run has been active: elapsed(Run) */
     bool started;                        /* the first tick has run */
-    int n;                               /* var n */
-    int half;                            /* var half */
+    int32_t n;                           /* var n */
+    int32_t half;                        /* var half */
     float level;                         /* var level */
 };
 
@@ -41,7 +51,7 @@ void Expressions_init(Expressions *m);
 /* One tick (docs/language.md 5.1): call it every 10 ms. */
 void Expressions_run(Expressions *m);
 /* The activation counter of a place (a Expressions_<place>); 0 for a number out of range. */
-unsigned Expressions_activation(const Expressions *m, int place);
+uint32_t Expressions_activation(const Expressions *m, int place);
 
 #ifdef Expressions_HOOKS
 /* Observation hooks (GFE_Activated, GFE_Enabled): an engine built with -DExpressions_HOOKS calls them and
@@ -54,14 +64,14 @@ void Expressions_enabled(const Expressions *m, Expressions_transition transition
 #endif
 
 /* Functions of interface Probe that the chart calls: the robot library defines them. */
-int Count(void);
-int Level(void);
+int32_t Count(void);
+int32_t Level(void);
 bool Ready(void);
 bool Busy(void);
 float Ratio(void);
-void Show(int n, bool on);
-void Scale(int n);
-void Mix(int a, int b, double c);
+void Show(int32_t n, bool on);
+void Scale(int32_t n);
+void Mix(int32_t a, int32_t b, double c);
 
 #ifdef __cplusplus
 }

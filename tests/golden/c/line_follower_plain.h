@@ -39,7 +39,7 @@ void LineFollower_init(LineFollower *m);
 /* One tick (docs/language.md 5.1): call it every 10 ms. */
 void LineFollower_run(LineFollower *m);
 /* The activation counter of a place (a LineFollower_<place>); 0 for a number out of range. */
-unsigned LineFollower_activation(const LineFollower *m, int place);
+uint32_t LineFollower_activation(const LineFollower *m, int place);
 
 #ifdef LineFollower_HOOKS
 /* Observation hooks (GFE_Activated, GFE_Enabled): an engine built with -DLineFollower_HOOKS calls them and

@@ -230,7 +230,7 @@ void LineFollower_run(LineFollower *m)
     }
 }
 
-unsigned LineFollower_activation(const LineFollower *m, int place)
+uint32_t LineFollower_activation(const LineFollower *m, int place)
 {
     return ((place >= 0) && (place < (int)LineFollower_PLACE_COUNT)) ? m->av[place] : 0u;
 }

@@ -373,14 +373,14 @@ void Patrol_run(Patrol *m)
     }
 }
 
-unsigned Patrol_activation(const Patrol *m, int place)
+uint32_t Patrol_activation(const Patrol *m, int place)
 {
     return ((place >= 0) && (place < (int)Patrol_PLACE_COUNT)) ? m->av[place] : 0u;
 }
 
-unsigned Patrol_instance_activation(const Patrol *m, int instance, int place)
+uint32_t Patrol_instance_activation(const Patrol *m, int instance, int place)
 {
-    unsigned value = 0u;
+    uint32_t value = 0u;
     switch (instance) {
     case Patrol_Search_INSTANCE:
         if ((int)m->Search.state == place) {

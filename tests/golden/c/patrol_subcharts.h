@@ -126,7 +126,7 @@ void Patrol_init(Patrol *m);
 /* One tick (docs/language.md 5.1): call it every 10 ms. */
 void Patrol_run(Patrol *m);
 /* The activation counter of a place (a Patrol_<place>); 0 for a number out of range. */
-unsigned Patrol_activation(const Patrol *m, int place);
+uint32_t Patrol_activation(const Patrol *m, int place);
 /* The sub-chart instances, depth first in declaration order. */
 typedef enum {
     Patrol_Search_INSTANCE,      /* Fetch, run by place Search of Patrol */
@@ -139,7 +139,7 @@ typedef enum {
    instance's enumeration (Patrol_Search_Go, ...), as Patrol_activation tells the root's:
    where the instance is while the place that runs it is active, else where its last tick
    left it. 0 for a number out of range. */
-unsigned Patrol_instance_activation(const Patrol *m, int instance, int place);
+uint32_t Patrol_instance_activation(const Patrol *m, int instance, int place);
 
 #ifdef Patrol_HOOKS
 /* Observation hooks (GFE_Activated, GFE_Enabled): an engine built with -DPatrol_HOOKS calls them and

@@ -432,14 +432,14 @@ void Patrol_run(Patrol *m)
     }
 }
 
-unsigned Patrol_activation(const Patrol *m, int place)
+uint32_t Patrol_activation(const Patrol *m, int place)
 {
     return ((place >= 0) && (place < (int)Patrol_PLACE_COUNT) && ((int)m->current == place)) ? 1u : 0u;
 }
 
-unsigned Patrol_instance_activation(const Patrol *m, int instance, int place)
+uint32_t Patrol_instance_activation(const Patrol *m, int instance, int place)
 {
-    unsigned value = 0u;
+    uint32_t value = 0u;
     switch (instance) {
     case Patrol_Search_INSTANCE:
         if ((int)m->Search.state == place) {

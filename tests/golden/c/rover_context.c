@@ -141,14 +141,14 @@ void Roam_run(Roam *m)
     }
 }
 
-unsigned Roam_activation(const Roam *m, int place)
+uint32_t Roam_activation(const Roam *m, int place)
 {
     return ((place >= 0) && (place < (int)Roam_PLACE_COUNT)) ? m->av[place] : 0u;
 }
 
-unsigned Roam_instance_activation(const Roam *m, int instance, int place)
+uint32_t Roam_instance_activation(const Roam *m, int instance, int place)
 {
-    unsigned value = 0u;
+    uint32_t value = 0u;
     switch (instance) {
     case Roam_Avoid_INSTANCE:
         if ((int)m->Avoid.state == place) {

@@ -59,7 +59,7 @@ void Roam_init(Roam *m);
 /* One tick (docs/language.md 5.1): call it every 20 ms. */
 void Roam_run(Roam *m);
 /* The activation counter of a place (a Roam_<place>); 0 for a number out of range. */
-unsigned Roam_activation(const Roam *m, int place);
+uint32_t Roam_activation(const Roam *m, int place);
 /* The sub-chart instances, depth first in declaration order. */
 typedef enum {
     Roam_Avoid_INSTANCE, /* Escape, run by place Avoid of Roam */
@@ -69,7 +69,7 @@ typedef enum {
    instance's enumeration (Roam_Avoid_Reverse, ...), as Roam_activation tells the root's:
    where the instance is while the place that runs it is active, else where its last tick
    left it. 0 for a number out of range. */
-unsigned Roam_instance_activation(const Roam *m, int instance, int place);
+uint32_t Roam_instance_activation(const Roam *m, int instance, int place);
 /* The instance context: every interface function the engine calls (and its sub-charts'
    instances) receives it as its first argument. Set it before the first Roam_run; Roam_init
    leaves it as it is, so either may come first. */
@@ -93,10 +93,10 @@ void Roam_enabled(const Roam *m, Roam_transition transition);
 
 /* Functions of interface Rover that the chart and its sub-charts call: the robot library defines them. */
 bool Blocked(void *ctx);
-void Drive(void *ctx, int speed);
+void Drive(void *ctx, int32_t speed);
 void Lamp(void *ctx, bool on);
-int Range(void *ctx);
-void Turn(void *ctx, int dir);
+int32_t Range(void *ctx);
+void Turn(void *ctx, int32_t dir);
 
 #ifdef __cplusplus
 }

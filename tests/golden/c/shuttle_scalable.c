@@ -147,7 +147,7 @@ void Shuttle_init(Shuttle *m)
     m->timer_Waiting = 0;
     m->started = false;
     m->trips = 0;
-    m->speed = 0.5;
+    m->speed = 0.5f;
 }
 
 void Shuttle_run(Shuttle *m)
@@ -385,7 +385,7 @@ void Shuttle_run(Shuttle *m)
     }
 }
 
-unsigned Shuttle_activation(const Shuttle *m, int place)
+uint32_t Shuttle_activation(const Shuttle *m, int place)
 {
     return ((place >= 0) && (place < (int)Shuttle_PLACE_COUNT)) ? m->av[place] : 0u;
 }

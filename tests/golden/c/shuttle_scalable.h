@@ -4,6 +4,16 @@
 
 #include <stdbool.h>
 #include <stdint.h>
+#include <float.h>
+
+/* The floating types as the language has them (docs/targets.md): a compiler whose types differ
+   refuses the engine. (FLT_MANT_DIG is C99's own; a checker that reads no <float.h> skips this.) */
+#if defined(FLT_MANT_DIG) && ((FLT_RADIX != 2) || (FLT_MANT_DIG != 24) || (FLT_MAX_EXP != 128) || (FLT_MIN_EXP != -125))
+#error "Shuttle: its float must be IEEE binary32, which this compiler's float is not: see docs/targets.md in gfec's documentation"
+#endif
+#if defined(DBL_MANT_DIG) && ((FLT_RADIX != 2) || (DBL_MANT_DIG != 53) || (DBL_MAX_EXP != 1024) || (DBL_MIN_EXP != -1021))
+#error "Shuttle: its double must be IEEE binary64, which this compiler's double is not (avr-gcc's is 32 bits): see docs/targets.md in gfec's documentation"
+#endif
 
 #ifdef __cplusplus
 extern "C" {
@@ -42,7 +52,7 @@ struct Shuttle {
     uint32_t timer_Moving;            /* ticks Moving has been active: elapsed(Moving) */
     uint32_t timer_Waiting;           /* ticks Waiting has been active: elapsed(Waiting) */
     bool started;                     /* the first tick has run */
-    int trips;                        /* var trips */
+    int32_t trips;                    /* var trips */
     float speed;                      /* var speed */
 };
 
@@ -51,7 +61,7 @@ void Shuttle_init(Shuttle *m);
 /* One tick (docs/language.md 5.1): call it every 10 ms. */
 void Shuttle_run(Shuttle *m);
 /* The activation counter of a place (a Shuttle_<place>); 0 for a number out of range. */
-unsigned Shuttle_activation(const Shuttle *m, int place);
+uint32_t Shuttle_activation(const Shuttle *m, int place);
 
 #ifdef Shuttle_HOOKS
 /* Observation hooks (GFE_Activated, GFE_Enabled): an engine built with -DShuttle_HOOKS calls them and
@@ -67,9 +77,9 @@ void Shuttle_enabled(const Shuttle *m, Shuttle_transition transition);
 bool Load(void);
 bool Unload(void);
 bool Hold(void);
-int Count(void);
+int32_t Count(void);
 float Level(void);
-void Beep(int n);
+void Beep(int32_t n);
 void Drive(float speed);
 void Lights(bool on);
 

@@ -108,7 +108,7 @@ void Fetch_run(Fetch *m)
             }
             /* entry Yield */
             if (m->state == Fetch_Yield) {
-                int gfec_t0; /* temporaries: the chart calls left to right */
+                int32_t gfec_t0; /* temporaries: the chart calls left to right */
                 m->timer_Yield = 0;
 #line 21 "team_fetch.fsm"
                 if (m->agent == 0) {
@@ -162,7 +162,7 @@ void Fetch_run(Fetch *m)
     }
 }
 
-unsigned Fetch_activation(const Fetch *m, int place)
+uint32_t Fetch_activation(const Fetch *m, int place)
 {
     return ((int)m->state == place) ? 1u : 0u;
 }

@@ -40,7 +40,7 @@ struct Fetch {
     uint32_t timer_Yield;            /* ticks Yield has been active: elapsed(Yield) */
     int agent;                       /* this engine's agent number (set by Fetch_set_agent) */
     int8_t reports[Fetch_TEAM_SIZE]; /* by agent, the state it last reported; -1: none yet */
-    int waited;                      /* var waited */
+    int32_t waited;                  /* var waited */
 };
 
 /* Sets the initial state; calls no code of the chart. */
@@ -48,7 +48,7 @@ void Fetch_init(Fetch *m);
 /* One tick (docs/language.md 7): call it every 10 ms. */
 void Fetch_run(Fetch *m);
 /* 1 if `place` is the current state, else 0. */
-unsigned Fetch_activation(const Fetch *m, int place);
+uint32_t Fetch_activation(const Fetch *m, int place);
 /* The current state's number, a Fetch_<state> (an int, as the language's C API has it). */
 int Fetch_state(const Fetch *m);
 /* 0 while running, 1 once in a success state, -1 once in a failure state. */
@@ -76,13 +76,13 @@ void Fetch_enabled(const Fetch *m, Fetch_transition transition);
 void DriveToItem(void);
 void PickUp(void);
 void Park(void);
-void Beep(int times);
+void Beep(int32_t times);
 void Lights(bool on);
 bool Arrived(void);
 bool Holding(void);
 bool Parked(void);
-int Seen(void);
-int Heard(void);
+int32_t Seen(void);
+int32_t Heard(void);
 
 #ifdef __cplusplus
 }

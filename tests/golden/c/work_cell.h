@@ -4,6 +4,16 @@
 
 #include <stdbool.h>
 #include <stdint.h>
+#include <float.h>
+
+/* The floating types as the language has them (docs/targets.md): a compiler whose types differ
+   refuses the engine. (FLT_MANT_DIG is C99's own; a checker that reads no <float.h> skips this.) */
+#if defined(FLT_MANT_DIG) && ((FLT_RADIX != 2) || (FLT_MANT_DIG != 24) || (FLT_MAX_EXP != 128) || (FLT_MIN_EXP != -125))
+#error "WorkCell: its float must be IEEE binary32, which this compiler's float is not: see docs/targets.md in gfec's documentation"
+#endif
+#if defined(DBL_MANT_DIG) && ((FLT_RADIX != 2) || (DBL_MANT_DIG != 53) || (DBL_MAX_EXP != 1024) || (DBL_MIN_EXP != -1021))
+#error "WorkCell: its double must be IEEE binary64, which this compiler's double is not (avr-gcc's is 32 bits): see docs/targets.md in gfec's documentation"
+#endif
 
 #ifdef __cplusplus
 extern "C" {
@@ -38,7 +48,7 @@ struct WorkCell {
     uint32_t timer_LeftArm;           /* ticks LeftArm has been active: elapsed(LeftArm) */
     uint32_t timer_RightArm;          /* ticks RightArm has been active: elapsed(RightArm) */
     bool started;                     /* the first tick has run */
-    int parts;                        /* var parts */
+    int32_t parts;                    /* var parts */
     float speed;                      /* var speed */
 };
 
@@ -47,7 +57,7 @@ void WorkCell_init(WorkCell *m);
 /* One tick (docs/language.md 5.1): call it every 20 ms. */
 void WorkCell_run(WorkCell *m);
 /* The activation counter of a place (a WorkCell_<place>); 0 for a number out of range. */
-unsigned WorkCell_activation(const WorkCell *m, int place);
+uint32_t WorkCell_activation(const WorkCell *m, int place);
 
 #ifdef WorkCell_HOOKS
 /* Observation hooks (GFE_Activated, GFE_Enabled): an engine built with -DWorkCell_HOOKS calls them and
@@ -61,10 +71,10 @@ void WorkCell_enabled(const WorkCell *m, WorkCell_transition transition);
 
 /* Functions of interface CellBot that the chart calls: the robot library defines them. */
 bool PartReady(void);
-bool AtTarget(int arm);
+bool AtTarget(int32_t arm);
 bool Clear(void);
 void Lamp(bool on);
-void Move(int arm, float speed);
+void Move(int32_t arm, float speed);
 void Alarm(void);
 
 #ifdef __cplusplus
