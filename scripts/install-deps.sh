@@ -7,6 +7,7 @@ packages=(
   graphviz valgrind cppcheck time
   clang-format  # scripts/format.sh --check, a ctest test
   gcc-arm-none-eabi  # the cross build and freestanding engine tests (Cortex-M4)
+  gcc-avr avr-libc libsimavr-dev  # AVR programs and tools/avr-run (docs/targets.md)
   chromium   # the run viewer's browser test (tests/viewer)
 )
 # Node (for the SARIF schema and TextMate grammar tests) may come from another repo already.
