@@ -281,7 +281,9 @@ static void apply_pins(Run *run, Script *s) {
       fprintf(stderr, "%s: the %s has no port %c\n", program_name, run->avr->mmcu, e->port);
       exit(kExitError);
     }
-    avr_raise_irq(irq, (uint32_t)e->value);
+    // Only a change: simavr checks a low INT0/INT1 pin (PD2, PD3) every cycle once told of it,
+    // which would make a run that drives one low from the start several times slower.
+    if (irq->value != (uint32_t)e->value) avr_raise_irq(irq, (uint32_t)e->value);
   }
 }
 
