@@ -1,5 +1,7 @@
 #include "c_context.h"
 
+#include "c_expr.h"
+
 #include "c_form.h"
 #include "naming/naming.h"
 
@@ -212,6 +214,7 @@ void collect_facts(EngineContext &c) {
 /// The expression reads, by active()/succeeded()/failed(), a place some transition consumes.
 bool reads_input_activity(const EngineContext &c, const model::Expr &e) {
   using K = model::Expr::Kind;
+  if (written_as_constant(c, e)) return false;  // the engine writes its value: it reads nothing
   PlaceId p;
   if (e.kind == K::Active && !e.path.empty()) p = e.path.front();
   else if (e.kind == K::Succeeded || e.kind == K::Failed) p = e.place();

@@ -40,7 +40,7 @@ std::string bracket(const std::string &s) { return "(" + s + ")"; }
 Rendered closed(Rendered r) {
   if (r.before.empty()) return r;
   std::string s = "(";
-  for (const auto &b : r.before) s += b + ", ";
+  for (const auto &b : r.before) s += "(void)(" + b + "), ";  // void: the value is meant to go (clang's -Wcomma)
   return {s + r.text + ")"};
 }
 
@@ -224,6 +224,7 @@ bool same_value(const EngineContext &c, const Expr &x, const Expr &y) {
   case Expr::Kind::Bool: return a.bool_value == b.bool_value;
   case Expr::Kind::Ticks: return a.ticks == b.ticks;
   case Expr::Kind::Var: return a.var() == b.var();
+  case Expr::Kind::Agent: return true;  // the engine's own agent number, a field
   case Expr::Kind::Elapsed: return a.place() == b.place();
   case Expr::Kind::Succeeded:
   case Expr::Kind::Failed: return a.place() == b.place();
@@ -245,6 +246,69 @@ std::optional<bool> self_comparison(const EngineContext &c, const Expr &e) {
   if (has_call(e) || !same_value(c, e.args.at(0), e.args.at(1))) return std::nullopt;
   return e.binary_op == BinaryOp::Eq || e.binary_op == BinaryOp::Le || e.binary_op == BinaryOp::Ge;
 }
+
+/// A condition of `&&`, `||` and `!` over tests that read without side effects, whose value
+/// those tests cannot change: `!active(D) || !active(B) || active(D)`. gcc decides such a
+/// condition at -O1 and up ("'or' of unmatched not-equal tests is always 1", a warning no switch
+/// turns off). Each distinct test (same_value) is taken as free to be true or false, which is
+/// what the compilers see; at most kMaxTests of them, beyond which nothing is decided.
+class Tautology {
+public:
+  static constexpr std::size_t kMaxTests = 12;
+
+  static std::optional<bool> of(const EngineContext &c, const Expr &e) {
+    const Expr &u = unbracketed(e);
+    const bool logic =
+        (u.kind == Expr::Kind::Binary && (u.binary_op == BinaryOp::And || u.binary_op == BinaryOp::Or)) ||
+        (u.kind == Expr::Kind::Unary && u.unary_op == UnaryOp::Not);
+    if (!logic || u.type != Type::Bool || has_call(u)) return std::nullopt;
+    Tautology t(c);
+    if (!t.collect(u)) return std::nullopt;
+    const bool first = t.value(u, 0);
+    for (std::uint32_t mask = 1; mask < (1u << t.tests_.size()); ++mask)
+      if (t.value(u, mask) != first) return std::nullopt;
+    return first;
+  }
+
+private:
+  explicit Tautology(const EngineContext &c) : c_(c) {}
+
+  static bool is_logic(const Expr &e) {
+    return (e.kind == Expr::Kind::Binary && (e.binary_op == BinaryOp::And || e.binary_op == BinaryOp::Or)) ||
+           (e.kind == Expr::Kind::Unary && e.unary_op == UnaryOp::Not) || e.kind == Expr::Kind::Paren;
+  }
+
+  std::size_t index(const Expr &test) const {
+    for (std::size_t i = 0; i < tests_.size(); ++i)
+      if (same_value(c_, *tests_[i], test)) return i;
+    return tests_.size();
+  }
+
+  bool collect(const Expr &e) {
+    if (is_logic(e)) {
+      for (const auto &a : e.args)
+        if (!collect(a)) return false;
+      return true;
+    }
+    if (e.kind == Expr::Kind::Bool || index(e) < tests_.size()) return true;
+    tests_.push_back(&e);
+    return tests_.size() <= kMaxTests;
+  }
+
+  bool value(const Expr &e, std::uint32_t mask) const {
+    if (e.kind == Expr::Kind::Paren) return value(e.args.at(0), mask);
+    if (e.kind == Expr::Kind::Unary) return !value(e.args.at(0), mask);
+    if (e.kind == Expr::Kind::Binary && e.binary_op == BinaryOp::And)
+      return value(e.args.at(0), mask) && value(e.args.at(1), mask);
+    if (e.kind == Expr::Kind::Binary && e.binary_op == BinaryOp::Or)
+      return value(e.args.at(0), mask) || value(e.args.at(1), mask);
+    if (e.kind == Expr::Kind::Bool) return e.bool_value;
+    return ((mask >> index(e)) & 1u) != 0u;
+  }
+
+  const EngineContext &c_;
+  std::vector<const Expr *> tests_;
+};
 
 /// Renders one expression or statement of a chart, adding the temporaries it needs to `temps`.
 class Renderer {
@@ -313,8 +377,15 @@ public:
     if (to == Type::Int && is_floating(e.type)) {
       cast = "(int32_t)";
     } else if (to == Type::Float && e.type == Type::Int) {
+      // A value read at run time may not fit a float exactly (gcc's -Wconversion, clang's
+      // -Wimplicit-int-float-conversion): the conversion is written out. A constant only when
+      // it does not fit.
       auto v = int_constant(c_, e);
-      if (v && static_cast<long long>(static_cast<float>(*v)) != *v) cast = "(float)";
+      if (!v || static_cast<long long>(static_cast<float>(*v)) != *v) cast = "(float)";
+    } else if (to == Type::Float && e.type == Type::Double) {
+      cast = "(float)";  // -Wfloat-conversion, -Wimplicit-float-conversion
+    } else if (to == Type::Double && e.type == Type::Float) {
+      cast = "(double)";  // -Wdouble-promotion
     }
     if (!cast) return r;
     if (r.prec < kPrimary) r.text = bracket(r.text);
@@ -339,7 +410,14 @@ public:
         // the conversion is explicit.
         BinaryOp op = s.op == AssignOp::Add ? BinaryOp::Add : BinaryOp::Sub;
         if (r.prec <= precedence(op)) r.text = bracket(r.text);
-        r.text = fmt::format("{} = (int32_t)({} {} {});", target, target, spelling(op), r.text);
+        r.text = fmt::format("{} = (int32_t)({}{} {} {});", target, s.expr.type == Type::Float ? "(float)" : "", target,
+                             spelling(op), r.text);
+      } else if (s.op != AssignOp::Set && to == Type::Float && s.expr.type == Type::Double) {
+        // `f += d` is computed in double, then rounded to float: written out (-Wfloat-conversion,
+        // -Wdouble-promotion). Not `f += (float)d`, which would round d first.
+        BinaryOp op = s.op == AssignOp::Add ? BinaryOp::Add : BinaryOp::Sub;
+        if (r.prec <= precedence(op)) r.text = bracket(r.text);
+        r.text = fmt::format("{} = (float)((double){} {} {});", target, target, spelling(op), r.text);
       } else {
         r = converted(std::move(r), s.expr, to);
         r.text = fmt::format("{} {} {};", target, spelling(s.op), r.text);
@@ -473,6 +551,7 @@ private:
   }
 
   Rendered unary(const Expr &e) {
+    if (auto value = tautology(e)) return std::move(*value);
     Rendered operand = render(e.args.at(0));
     // `- -x` must not become the decrement `--x`.
     bool minus_minus = e.unary_op == UnaryOp::Neg && !operand.text.empty() && operand.text[0] == '-';
@@ -480,7 +559,20 @@ private:
     return {spelling(e.unary_op) + operand.text, kUnary, std::move(operand.before)};
   }
 
+  /// A condition its tests cannot change (Tautology), written as its value with the chart's
+  /// text in a comment.
+  std::optional<Rendered> tautology(const Expr &e) const {
+    auto value = Tautology::of(c_, e);
+    if (!value) return std::nullopt;
+    std::string text = model::source_text(c_.model, e.range);
+    const bool shown = !text.empty() && text.size() <= 120 && text.find_first_of("\r\n") == std::string::npos &&
+                       text.find("/*") == std::string::npos && text.find("*/") == std::string::npos;
+    return Rendered{fmt::format("{} /* {}, whatever its tests read{}{} */", *value ? "true" : "false",
+                                *value ? "always" : "never", shown ? ": " : "", shown ? text : "")};
+  }
+
   Rendered binary(const Expr &e) {
+    if (auto value = tautology(e)) return std::move(*value);
     if (auto decided = overlapping(e)) return std::move(*decided);
     if (auto value = settled(e))
       return {*value ? "true /* always: timers count from 0 to UINT32_MAX */"
@@ -508,11 +600,14 @@ private:
       l_plain = o.in_temporary[0];
       r_plain = o.in_temporary[1];
       before = std::move(o.before);
-      // An int constant meeting a float is converted to float, as C converts it.
+      // The usual arithmetic conversions written out where they may round or widen a float (the
+      // stricter warnings of docs/c-engine.md): an int meeting a float becomes a float, a float
+      // meeting a double a double; an int meeting a double converts exactly and stays implicit.
       const Type a = e.args[0].type, b = e.args[1].type;
-      if (model::is_numeric(a) && model::is_numeric(b) && a != Type::Double && b != Type::Double) {
-        l = converted(std::move(l), e.args[0], b == Type::Float ? Type::Float : a);
-        r = converted(std::move(r), e.args[1], a == Type::Float ? Type::Float : b);
+      if (model::is_numeric(a) && model::is_numeric(b) && a != b) {
+        const Type common = a == Type::Double || b == Type::Double ? Type::Double : Type::Float;
+        if (!(common == Type::Double && a == Type::Int)) l = converted(std::move(l), e.args[0], common);
+        if (!(common == Type::Double && b == Type::Int)) r = converted(std::move(r), e.args[1], common);
       }
     }
     // The model keeps the user's brackets as Paren nodes; these only restore what the tree says
@@ -726,6 +821,8 @@ std::string c_assertion(const EngineContext &c, const Expr &e, Temporaries &temp
   std::string holds = temps.add(Type::Bool);
   return text + fmt::format("{} = {}; {}({});", holds, r.text, c.assert_macro, holds);
 }
+
+bool written_as_constant(const EngineContext &c, const Expr &e) { return Tautology::of(c, e).has_value(); }
 
 std::string c_value(const EngineContext &c, const Expr &e, model::Type to) {
   Temporaries none(c.temp_prefix);  // a constant expression calls nothing: it needs none

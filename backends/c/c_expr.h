@@ -81,6 +81,11 @@ std::string c_assertion(const EngineContext &c, const model::Expr &e, Temporarie
 /// converted as the model converts it.
 std::string c_value(const EngineContext &c, const model::Expr &e, model::Type to);
 
+/// Whether the engine writes `e`, a condition of `&&`, `||` and `!` over tests that read without
+/// side effects, as a constant because those tests cannot change its value (what gcc and clang
+/// would decide and warn about). Such a condition reads nothing at run time.
+bool written_as_constant(const EngineContext &c, const model::Expr &e);
+
 /// `bool f(void)`, `void Motor(int side, float speed)`: an interface function's prototype;
 /// `first`, if not empty, is a parameter before the function's own (`void *ctx`, --context);
 /// `names`, if given, the parameters' names to write instead of the declared ones.

@@ -64,8 +64,10 @@ private:
   /// The scalable form (c_layout.h): each part of the tick a switch on the state, not tests.
   bool switched() const { return c_.layout.form == Layout::Form::Sequential; }
   /// A state as a switch takes it: as it is, or as the number a part takes (its parameter type).
+  /// The state as a switch reads it: as a number, not as its enumeration, whose every member a
+  /// switch would otherwise have to name (clang's -Wswitch-enum: terminal states have no case).
   std::string number(const std::string &state) const {
-    return split() ? fmt::format("({}){}", index_type(), state) : state;
+    return fmt::format("({}){}", split() ? index_type() : "int", state);
   }
 
   void locals() {

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <vector>
 
 namespace gfec::c_backend {
 
@@ -160,12 +161,16 @@ private:
   void declarations() {
     section("");
     const std::string &i = c_.i;
+    // Stores that tell code analysers what is read come after every declaration (C90 and clang's
+    // -Wdeclaration-after-statement: firmware teams build with it).
+    std::vector<std::string> stores;
     if (has_transitions()) {
       w_.line("{} {}[{}]; /* the places that activation produced in this tick goes to */", place_type(), c_.add,
               l().add_capacity);
       w_.line("uint32_t {} = 0;", c_.add_n);
       // Only entries below add_n are read; code analysers cannot tell, and one store costs nothing.
-      w_.line("{}[0] = 0; /* only the entries written are read (this says so to code analysers) */", c_.add);
+      stores.push_back(
+          fmt::format("{}[0] = 0; /* only the entries written are read (this says so to code analysers) */", c_.add));
     }
     if (has_transitions() && l().watch_capacity > 0) {
       w_.line("{} {}[{}]; /* watched places whose activation fell to 0 in this tick */", place_type(), c_.lost,
@@ -177,9 +182,12 @@ private:
       // A list of one is not sorted, so nothing writes it before it is read: say to code
       // analysers that only the entries written are read.
       if (l().lost_capacity == 1 && l().gained_capacity == 1)
-        w_.line("{0}[0] = 0; {1}[0] = 0; /* only the entries written are read */", c_.lost, c_.gained);
-      else if (l().lost_capacity == 1) w_.line("{}[0] = 0; /* only the entries written are read */", c_.lost);
-      else if (l().gained_capacity == 1) w_.line("{}[0] = 0; /* only the entries written are read */", c_.gained);
+        stores.push_back(
+            fmt::format("{0}[0] = 0; {1}[0] = 0; /* only the entries written are read */", c_.lost, c_.gained));
+      else if (l().lost_capacity == 1)
+        stores.push_back(fmt::format("{}[0] = 0; /* only the entries written are read */", c_.lost));
+      else if (l().gained_capacity == 1)
+        stores.push_back(fmt::format("{}[0] = 0; /* only the entries written are read */", c_.gained));
     }
     if (has_transitions() || any_actions()) {
       w_.line("uint32_t {}; /* a word of a set */", c_.word);
@@ -199,6 +207,11 @@ private:
         w_.line("uint32_t {};", c_.index);
         w_.line("uint32_t {};", i);
       }
+      if (!keep) directive(w_, "#endif");
+    }
+    for (const auto &store : stores) w_.line("{}", store);
+    if (keep || c_.hooks()) {
+      if (!keep) directive(w_, "#ifdef " + c_.hooks_macro);
       {
         auto each = w_.block(fmt::format("for ({0} = 0; {0} < {1}u; ++{0}) {{", i, l().active.words_at(0)));
         w_.line("{}[{}] = {}[{}];", c_.before, i, c_.field(c_.active), i);

@@ -40,6 +40,30 @@ for chart in "$src"/samples/*.sfc "$src"/samples/*.fsm; do
   done
 done
 
+# The stricter sets firmware teams build with (docs/c-engine.md, "Warnings"): clang's
+# -Weverything less the short documented list, and gcc's conversion and hygiene warnings at -O2
+# (where gcc decides conditions), for every sample and golden chart in both engine forms, with
+# the hooks and the checks compiled in.
+everything=(-std=c99 -Weverything -Wno-padded -Wno-bad-function-cast -Werror)
+gcc_strict=(-std=c99 -O2 -Wall -Wextra -Wpedantic -Wconversion -Wshadow -Wcast-qual -Wstrict-prototypes -Wundef
+  -Wdouble-promotion -Werror)
+strict_count=0
+for chart in "$src"/samples/*.sfc "$src"/samples/*.fsm "$src"/tests/golden/c/*.sfc "$src"/tests/golden/c/*.fsm; do
+  base=$(basename "$chart")
+  forms=(auto)
+  [[ $chart == *.sfc ]] && forms=(readable scalable)
+  for form in "${forms[@]}"; do
+    out="strict_${base%.*}_${form}.c"
+    run "$gfec" --engine="$form" -I "$src/samples" -I "$(dirname "$chart")" "$chart" -o "$out"
+    [ -f "$out" ] || continue
+    prefix=$(sed -n 's/^void \([A-Za-z0-9_]*\)_init(.*/\1/p' "${out%.c}.h" | head -n 1)
+    defines=(-D"${prefix}_HOOKS" -D"${prefix}_CHECKS")
+    command -v clang > /dev/null && run clang "${everything[@]}" "${defines[@]}" -c "$out" -o /dev/null
+    command -v gcc > /dev/null && run gcc "${gcc_strict[@]}" "${defines[@]}" -c "$out" -o /dev/null
+    strict_count=$((strict_count + 1))
+  done
+done
+
 cpp_files=()
 for toolbox in "$src"/samples/*.toolbox; do
   name=$(grep -o '^toolbox [A-Za-z_][A-Za-z0-9_]*' "$toolbox" | head -n 1 | cut -d' ' -f2 | tr '[:upper:]' '[:lower:]')
@@ -68,5 +92,5 @@ else
   echo "cppcheck not installed: skipped"
 fi
 
-echo "generated code: ${#c_files[@]} C engines with ${ccs[*]} (C99, C11; plain, hooks, checks), ${#cpp_files[@]} C++ files with ${cxxs[*]}, cppcheck"
+echo "generated code: ${#c_files[@]} C engines with ${ccs[*]} (C99, C11; plain, hooks, checks), $strict_count under clang -Weverything and gcc's strict set, ${#cpp_files[@]} C++ files with ${cxxs[*]}, cppcheck"
 exit $failed

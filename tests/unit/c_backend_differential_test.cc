@@ -349,6 +349,6 @@ TEST_CASE("c engine: an fsm's switches, whole and in parts, agree with the inter
   auto one = compile_chart({{"whole.fsm", whole}}, "whole.fsm", "engine.c", true, EngineForm::Auto);
   REQUIRE(!one->diag.has_errors());
   CHECK(one->files.front().contents.find("_parts[") == std::string::npos);
-  CHECK(one->files.front().contents.find("switch (m->state) {") != std::string::npos);
+  CHECK(one->files.front().contents.find("switch ((int)m->state) {") != std::string::npos);
   check_forms("whole.fsm", {{"whole.fsm", whole}}, 2, {EngineForm::Scalable});
 }

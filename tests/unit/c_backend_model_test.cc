@@ -159,8 +159,8 @@ TEST_CASE("c backend: a float constant is a float, rounded as the chart rounds i
   const std::string src = emit_c(b.model(), "round.c", false)[0].contents;
   // Written as the float it is: `(float)1.0000000596…` would round twice where double is binary64
   // and once on the AVR (docs/targets.md).
-  CHECK(contains(src, "D(1.0f /* ODD */);"));
-  CHECK(contains(src, "D(0.1f /* TENTH */);"));  // C would pass the double 0.1
+  CHECK(contains(src, "D((double)1.0f /* ODD */);"));
+  CHECK(contains(src, "D((double)0.1f /* TENTH */);"));  // C would pass the double 0.1
 }
 
 TEST_CASE("c backend: temporaries give way to interface functions named like them", "[c_backend]") {

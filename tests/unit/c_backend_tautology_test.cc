@@ -90,3 +90,51 @@ fsm Check {
                    "tick 3\ncond Go -> 0\nact Mark(9)\nstate Either status 0\n"
                    "tick 4\nact Mark(9)\nstate Either status 0\n");
 }
+
+TEST_CASE("c engine tautologies: agent() == agent() and a condition its activity tests cannot change compile at -O2",
+          "[c_backend][compile]") {
+  // gcc and clang rejected `m->agent == m->agent`; gcc at -O1 and up the scalable form's
+  // `!active(D) || !active(B) || active(D)` ("'or' of unmatched not-equal tests is always 1",
+  // which no -W option names); both only under -Werror with the optimiser on for the second.
+  const char *team = R"(
+interface Bot { bool Go(); void Mark(int n); }
+fsm Crew {
+  team 3;
+  initial state A { if (agent() == agent()) { Mark(1); } }
+  state B;
+  A -> B when Go() && agent() != agent();
+  B -> A when Go();
+})";
+  const char *fork = R"(
+interface Bot { bool Go(); void Mark(int n); }
+sfc Pair {
+  initial place P;
+  place Q;
+  place D { Mark(1); }
+  place B;
+  transition Fork: P -> (D, B) when Go();
+  transition Join: (D, B) -> Q when Go();
+  transition Back: Q -> P when !active(D) || !active(B) || active(D);
+  transition Odd: D -> Q when Go() && (active(B) && !active(B));
+})";
+  struct Case {
+    const char *name, *file, *text;
+  };
+  for (const Case &c : {Case{"tautology_team", "crew.fsm", team}, Case{"tautology_fork", "pair.sfc", fork}}) {
+    for (EngineForm form : {EngineForm::Readable, EngineForm::Scalable}) {
+      auto compiled = compile_chart({{c.file, c.text}}, c.file, "engine.c", true, form);
+      INFO(c.name << "\n" << compiled->errors);
+      REQUIRE(!compiled->diag.has_errors());
+      const std::string &src = compiled->files.at(0).contents;
+      CHECK(src.find("agent == m->agent") == std::string::npos);
+      if (std::string(c.file) == "pair.sfc") {
+        CHECK(src.find("true /* always, whatever its tests read: !active(D) || !active(B) || active(D) */") !=
+              std::string::npos);
+        CHECK(src.find("(false /* never, whatever its tests read: active(B) && !active(B) */)") != std::string::npos);
+      }
+      for (const char *level : {"-O0", "-O2"})
+        check_compiles(std::string(c.name) + (form == EngineForm::Scalable ? "_scalable" : "") + level, compiled->files,
+                       "engine.c", {level});
+    }
+  }
+}

@@ -32,27 +32,27 @@ void Weigh_run(Weigh *m)
            holds, in declaration order (one per tick) */
         /* T0: Fill -> Settle */
 #line 16 "call_order.fsm"
-        if ((m->state == Weigh_Fill) && (gfec_t0 = Weight(), gfec_t0 >= Target())) {
+        if ((m->state == Weigh_Fill) && ((void)(gfec_t0 = Weight()), gfec_t0 >= Target())) {
 #line 37 "call_order.c"
             m->state = Weigh_Settle;
         }
         /* T1: Settle -> Done */
 #line 17 "call_order.fsm"
-        else if ((m->state == Weigh_Settle) && (Stable() && (gfec_t1 = Weight(), gfec_t1 == Target()))) {
+        else if ((m->state == Weigh_Settle) && (Stable() && ((void)(gfec_t1 = Weight()), gfec_t1 == Target()))) {
 #line 43 "call_order.c"
             m->state = Weigh_Done;
             m->status = 1;
         }
         /* T2: Settle -> Over */
 #line 18 "call_order.fsm"
-        else if ((m->state == Weigh_Settle) && (gfec_t2 = Weight(), gfec_t2 > (Target() + 1))) {
+        else if ((m->state == Weigh_Settle) && ((void)(gfec_t2 = Weight()), gfec_t2 > (Target() + 1))) {
 #line 50 "call_order.c"
             m->state = Weigh_Over;
             m->status = -1;
         }
         /* T3: Settle -> Fill */
 #line 19 "call_order.fsm"
-        else if ((m->state == Weigh_Settle) && (gfec_t3 = Weight(), gfec_t3 < Target())) {
+        else if ((m->state == Weigh_Settle) && ((void)(gfec_t3 = Weight()), gfec_t3 < Target())) {
 #line 57 "call_order.c"
             m->state = Weigh_Fill;
         }

@@ -46,14 +46,14 @@ void Expressions_run(Expressions *m)
        waits in add[] and cannot be consumed before the next tick */
     /* Start: Idle -> Run */
 #line 38 "expressions.sfc"
-    if ((m->av[Expressions_Idle] != 0u) && (gfec_t0 = Count(), ((gfec_t0 + Level()) > m->n) && Ready())) {
+    if ((m->av[Expressions_Idle] != 0u) && ((void)(gfec_t0 = Count()), ((gfec_t0 + Level()) > m->n) && Ready())) {
 #line 51 "expressions.c"
         m->av[Expressions_Idle]--;
         add[Expressions_Run]++;
     }
     /* Stop: Run -> Idle */
 #line 39 "expressions.sfc"
-    if ((m->av[Expressions_Run] != 0u) && ((m->timer_Run >= 5u /* 50ms */) || (gfec_t1 = Level(), gfec_t1 < Count()))) {
+    if ((m->av[Expressions_Run] != 0u) && ((m->timer_Run >= 5u /* 50ms */) || ((void)(gfec_t1 = Level()), gfec_t1 < Count()))) {
 #line 58 "expressions.c"
         m->av[Expressions_Run]--;
         add[Expressions_Idle]++;
@@ -67,7 +67,7 @@ void Expressions_run(Expressions *m)
     /* exit Idle */
     if ((before[Expressions_Idle] != 0u) && (m->av[Expressions_Idle] == 0u)) {
 #line 26 "expressions.sfc"
-        m->n = (int32_t)(m->n - Ratio());
+        m->n = (int32_t)((float)m->n - Ratio());
 #line 72 "expressions.c"
     }
     /* entry Idle */
@@ -82,7 +82,7 @@ void Expressions_run(Expressions *m)
         int32_t gfec_t4, gfec_t5; /* temporaries: the chart calls left to right */
         m->timer_Run = 0;
 #line 32 "expressions.sfc"
-        gfec_t4 = Level(); gfec_t5 = Count(); Mix(gfec_t4, gfec_t5, -Ratio());
+        gfec_t4 = Level(); gfec_t5 = Count(); Mix(gfec_t4, gfec_t5, (double)(-Ratio()));
 #line 87 "expressions.c"
     }
 
@@ -102,20 +102,20 @@ void Expressions_run(Expressions *m)
     if (m->av[Expressions_Idle] != 0u) {
 #line 27 "expressions.sfc"
         Scale((int32_t)Ratio());
-        m->n = (int32_t)(m->n + m->level);
+        m->n = (int32_t)((float)m->n + m->level);
 #line 107 "expressions.c"
     }
     if (m->av[Expressions_Watch] != 0u) {
         int32_t gfec_t6; /* temporaries: the chart calls left to right */
 #line 30 "expressions.sfc"
-        gfec_t6 = Count(); Mix(gfec_t6, 7, Level() * 0.1f /* GAIN */);
+        gfec_t6 = Count(); Mix(gfec_t6, 7, (double)((float)Level() * 0.1f /* GAIN */));
 #line 113 "expressions.c"
     }
     if (m->av[Expressions_Run] != 0u) {
         int32_t gfec_t7, gfec_t8, gfec_t10; /* temporaries: the chart calls left to right */
         bool gfec_t9; /* temporaries: the chart calls left to right */
 #line 33 "expressions.sfc"
-        gfec_t7 = Count(); gfec_t8 = gfec_t7 - Level(); Show(gfec_t8, Ready() || (gfec_t9 = Busy(), gfec_t9 == Ready()));
+        gfec_t7 = Count(); gfec_t8 = gfec_t7 - Level(); Show(gfec_t8, Ready() || ((void)(gfec_t9 = Busy()), gfec_t9 == Ready()));
         gfec_t10 = Count(); m->n = (int32_t)(gfec_t10 + (Level() * 0.5));
         m->half = 0 /* 0.5 */;
 #line 122 "expressions.c"

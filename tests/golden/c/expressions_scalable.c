@@ -155,7 +155,6 @@ void Expressions_run(Expressions *m)
 {
     uint8_t add[2]; /* the places that activation produced in this tick goes to */
     uint32_t add_n = 0;
-    add[0] = 0; /* only the entries written are read (this says so to code analysers) */
     uint8_t lost[2]; /* watched places whose activation fell to 0 in this tick */
     uint32_t lost_n = 0;
     uint8_t gained[2]; /* watched places whose activation rose from 0 */
@@ -166,6 +165,9 @@ void Expressions_run(Expressions *m)
     uint32_t i;
 #ifdef Expressions_HOOKS
     uint32_t before[1]; /* the active places at the start of the tick */
+#endif
+    add[0] = 0; /* only the entries written are read (this says so to code analysers) */
+#ifdef Expressions_HOOKS
     for (i = 0; i < 1u; ++i) {
         before[i] = m->active[i];
     }
@@ -178,7 +180,7 @@ void Expressions_run(Expressions *m)
         /* entry Idle */
 #line 23 "expressions_scalable.sfc"
         gfec_t0 = Count(); Show(gfec_t0, Level() > 10);
-#line 182 "expressions_scalable.c"
+#line 184 "expressions_scalable.c"
     }
 
     /* Count the ticks of the active places that have a timer */
@@ -194,8 +196,8 @@ void Expressions_run(Expressions *m)
                 int32_t gfec_t1; /* temporaries: the chart calls left to right */
                 /* Start: Idle -> Run */
 #line 36 "expressions_scalable.sfc"
-                if ((m->av[Expressions_Idle] != 0u) && (gfec_t1 = Count(), ((gfec_t1 + Level()) > m->n) && Ready())) {
-#line 199 "expressions_scalable.c"
+                if ((m->av[Expressions_Idle] != 0u) && ((void)(gfec_t1 = Count()), ((gfec_t1 + Level()) > m->n) && Ready())) {
+#line 201 "expressions_scalable.c"
                     m->av[Expressions_Idle]--;
                     if (m->av[Expressions_Idle] == 0u) { Expressions_erase(m->active, Expressions_ACTIVE_LEVELS, 2u, 0u, Expressions_Idle); lost[lost_n] = Expressions_Idle; lost_n++; }
                     add[add_n] = Expressions_Run; add_n++;
@@ -206,8 +208,8 @@ void Expressions_run(Expressions *m)
                 int32_t gfec_t2; /* temporaries: the chart calls left to right */
                 /* Stop: Run -> Idle */
 #line 37 "expressions_scalable.sfc"
-                if ((m->av[Expressions_Run] != 0u) && ((m->timer_Run >= 5u /* 50ms */) || (gfec_t2 = Level(), gfec_t2 < Count()))) {
-#line 211 "expressions_scalable.c"
+                if ((m->av[Expressions_Run] != 0u) && ((m->timer_Run >= 5u /* 50ms */) || ((void)(gfec_t2 = Level()), gfec_t2 < Count()))) {
+#line 213 "expressions_scalable.c"
                     m->av[Expressions_Run]--;
                     if (m->av[Expressions_Run] == 0u) { Expressions_erase(m->active, Expressions_ACTIVE_LEVELS, 2u, 0u, Expressions_Run); lost[lost_n] = Expressions_Run; lost_n++; }
                     add[add_n] = Expressions_Idle; add_n++;
@@ -238,8 +240,8 @@ void Expressions_run(Expressions *m)
         switch (lost[i]) {
         case Expressions_Idle:
 #line 24 "expressions_scalable.sfc"
-            m->n = (int32_t)(m->n - Ratio());
-#line 243 "expressions_scalable.c"
+            m->n = (int32_t)((float)m->n - Ratio());
+#line 245 "expressions_scalable.c"
             break;
         default:
             break;
@@ -254,15 +256,15 @@ void Expressions_run(Expressions *m)
             int32_t gfec_t3; /* temporaries: the chart calls left to right */
 #line 23 "expressions_scalable.sfc"
             gfec_t3 = Count(); Show(gfec_t3, Level() > 10);
-#line 258 "expressions_scalable.c"
+#line 260 "expressions_scalable.c"
             break;
         }
         case Expressions_Run: {
             int32_t gfec_t4, gfec_t5; /* temporaries: the chart calls left to right */
             m->timer_Run = 0;
 #line 30 "expressions_scalable.sfc"
-            gfec_t4 = Level(); gfec_t5 = Count(); Mix(gfec_t4, gfec_t5, -Ratio());
-#line 266 "expressions_scalable.c"
+            gfec_t4 = Level(); gfec_t5 = Count(); Mix(gfec_t4, gfec_t5, (double)(-Ratio()));
+#line 268 "expressions_scalable.c"
             break;
         }
         default:
@@ -289,24 +291,24 @@ void Expressions_run(Expressions *m)
             case Expressions_Idle:
 #line 25 "expressions_scalable.sfc"
                 Scale((int32_t)Ratio());
-                m->n = (int32_t)(m->n + m->level);
-#line 294 "expressions_scalable.c"
+                m->n = (int32_t)((float)m->n + m->level);
+#line 296 "expressions_scalable.c"
                 break;
             case Expressions_Watch: {
                 int32_t gfec_t6; /* temporaries: the chart calls left to right */
 #line 28 "expressions_scalable.sfc"
-                gfec_t6 = Count(); Mix(gfec_t6, 7, Level() * 0.1f /* GAIN */);
-#line 300 "expressions_scalable.c"
+                gfec_t6 = Count(); Mix(gfec_t6, 7, (double)((float)Level() * 0.1f /* GAIN */));
+#line 302 "expressions_scalable.c"
                 break;
             }
             case Expressions_Run: {
                 int32_t gfec_t7, gfec_t8, gfec_t10; /* temporaries: the chart calls left to right */
                 bool gfec_t9; /* temporaries: the chart calls left to right */
 #line 31 "expressions_scalable.sfc"
-                gfec_t7 = Count(); gfec_t8 = gfec_t7 - Level(); Show(gfec_t8, Ready() || (gfec_t9 = Busy(), gfec_t9 == Ready()));
+                gfec_t7 = Count(); gfec_t8 = gfec_t7 - Level(); Show(gfec_t8, Ready() || ((void)(gfec_t9 = Busy()), gfec_t9 == Ready()));
                 gfec_t10 = Count(); m->n = (int32_t)(gfec_t10 + (Level() * 0.5));
                 m->half = 0 /* 0.5 */;
-#line 310 "expressions_scalable.c"
+#line 312 "expressions_scalable.c"
                 break;
             }
             default:

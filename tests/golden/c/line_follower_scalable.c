@@ -112,13 +112,15 @@ void LineFollower_run(LineFollower *m)
 {
     uint8_t add[2]; /* the places that activation produced in this tick goes to */
     uint32_t add_n = 0;
-    add[0] = 0; /* only the entries written are read (this says so to code analysers) */
     uint32_t w; /* a word of a set */
     uint32_t bits; /* its bits */
     uint32_t p;
     uint32_t i;
 #ifdef LineFollower_HOOKS
     uint32_t before[1]; /* the active places at the start of the tick */
+#endif
+    add[0] = 0; /* only the entries written are read (this says so to code analysers) */
+#ifdef LineFollower_HOOKS
     for (i = 0; i < 1u; ++i) {
         before[i] = m->active[i];
     }
@@ -134,7 +136,7 @@ void LineFollower_run(LineFollower *m)
                 /* T0: LeftFw -> LeftStop */
 #line 13 "line_follower_scalable.sfc"
                 if ((m->av[LineFollower_LeftFw] != 0u) && (Left_IR_Black())) {
-#line 138 "line_follower_scalable.c"
+#line 140 "line_follower_scalable.c"
                     m->av[LineFollower_LeftFw]--;
                     if (m->av[LineFollower_LeftFw] == 0u) { LineFollower_erase(m->active, LineFollower_ACTIVE_LEVELS, 2u, 0u, LineFollower_LeftFw); }
                     add[add_n] = LineFollower_LeftStop; add_n++;
@@ -144,7 +146,7 @@ void LineFollower_run(LineFollower *m)
                 /* T1: LeftStop -> LeftFw */
 #line 14 "line_follower_scalable.sfc"
                 if ((m->av[LineFollower_LeftStop] != 0u) && (Left_IR_White())) {
-#line 148 "line_follower_scalable.c"
+#line 150 "line_follower_scalable.c"
                     m->av[LineFollower_LeftStop]--;
                     if (m->av[LineFollower_LeftStop] == 0u) { LineFollower_erase(m->active, LineFollower_ACTIVE_LEVELS, 2u, 0u, LineFollower_LeftStop); }
                     add[add_n] = LineFollower_LeftFw; add_n++;
@@ -154,7 +156,7 @@ void LineFollower_run(LineFollower *m)
                 /* T2: RightFw -> RightStop */
 #line 15 "line_follower_scalable.sfc"
                 if ((m->av[LineFollower_RightFw] != 0u) && (Right_IR_Black())) {
-#line 158 "line_follower_scalable.c"
+#line 160 "line_follower_scalable.c"
                     m->av[LineFollower_RightFw]--;
                     if (m->av[LineFollower_RightFw] == 0u) { LineFollower_erase(m->active, LineFollower_ACTIVE_LEVELS, 2u, 0u, LineFollower_RightFw); }
                     add[add_n] = LineFollower_RightStop; add_n++;
@@ -164,7 +166,7 @@ void LineFollower_run(LineFollower *m)
                 /* T3: RightStop -> RightFw */
 #line 16 "line_follower_scalable.sfc"
                 if ((m->av[LineFollower_RightStop] != 0u) && (Right_IR_White())) {
-#line 168 "line_follower_scalable.c"
+#line 170 "line_follower_scalable.c"
                     m->av[LineFollower_RightStop]--;
                     if (m->av[LineFollower_RightStop] == 0u) { LineFollower_erase(m->active, LineFollower_ACTIVE_LEVELS, 2u, 0u, LineFollower_RightStop); }
                     add[add_n] = LineFollower_RightFw; add_n++;
@@ -206,22 +208,22 @@ void LineFollower_run(LineFollower *m)
             case LineFollower_LeftFw:
 #line 8 "line_follower_scalable.sfc"
                 Left_FW();
-#line 210 "line_follower_scalable.c"
+#line 212 "line_follower_scalable.c"
                 break;
             case LineFollower_LeftStop:
 #line 9 "line_follower_scalable.sfc"
                 Left_Stop();
-#line 215 "line_follower_scalable.c"
+#line 217 "line_follower_scalable.c"
                 break;
             case LineFollower_RightFw:
 #line 10 "line_follower_scalable.sfc"
                 Right_FW();
-#line 220 "line_follower_scalable.c"
+#line 222 "line_follower_scalable.c"
                 break;
             case LineFollower_RightStop:
 #line 11 "line_follower_scalable.sfc"
                 Right_Stop();
-#line 225 "line_follower_scalable.c"
+#line 227 "line_follower_scalable.c"
                 break;
             default:
                 break;

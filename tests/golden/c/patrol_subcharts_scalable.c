@@ -94,7 +94,7 @@ static void Patrol_Search_run(struct Patrol_Search *m)
 
         /* Perform state update: the first transition leaving the current state whose condition
            holds, in declaration order (one per tick) */
-        switch (m->state) {
+        switch ((int)m->state) {
         case Patrol_Search_Go:
             /* T0: Go -> Grab */
 #line 25 "patrol_subcharts_scalable.sfc"
@@ -128,14 +128,14 @@ static void Patrol_Search_run(struct Patrol_Search *m)
 
         /* Leave the old state, enter the new one */
         if (m->state != from) {
-            switch (from) {
+            switch ((int)from) {
             case Patrol_Search_Grab:
                 Patrol_Search_Grab_stop(&m->Grab); /* stop the instance of Claw first */
                 break;
             default:
                 break;
             }
-            switch (m->state) {
+            switch ((int)m->state) {
             case Patrol_Search_Grab:
                 Patrol_Search_Grab_init(&m->Grab); /* start the instance of Claw */
                 break;
@@ -145,7 +145,7 @@ static void Patrol_Search_run(struct Patrol_Search *m)
         }
 
         /* Perform the action of the current state, then one tick of the instance it runs */
-        switch (m->state) {
+        switch ((int)m->state) {
         case Patrol_Search_Go:
 #line 21 "patrol_subcharts_scalable.sfc"
             DriveToItem();
@@ -256,7 +256,7 @@ static void Patrol_Retry_run(struct Patrol_Retry *m)
 
         /* Perform state update: the first transition leaving the current state whose condition
            holds, in declaration order (one per tick) */
-        switch (m->state) {
+        switch ((int)m->state) {
         case Patrol_Retry_Go:
             /* T0: Go -> Grab */
 #line 25 "patrol_subcharts_scalable.sfc"
@@ -290,14 +290,14 @@ static void Patrol_Retry_run(struct Patrol_Retry *m)
 
         /* Leave the old state, enter the new one */
         if (m->state != from) {
-            switch (from) {
+            switch ((int)from) {
             case Patrol_Retry_Grab:
                 Patrol_Retry_Grab_stop(&m->Grab); /* stop the instance of Claw first */
                 break;
             default:
                 break;
             }
-            switch (m->state) {
+            switch ((int)m->state) {
             case Patrol_Retry_Grab:
                 Patrol_Retry_Grab_init(&m->Grab); /* start the instance of Claw */
                 break;
@@ -307,7 +307,7 @@ static void Patrol_Retry_run(struct Patrol_Retry *m)
         }
 
         /* Perform the action of the current state, then one tick of the instance it runs */
-        switch (m->state) {
+        switch ((int)m->state) {
         case Patrol_Retry_Go:
 #line 21 "patrol_subcharts_scalable.sfc"
             DriveToItem();

@@ -154,7 +154,6 @@ void Shuttle_run(Shuttle *m)
 {
     uint8_t add[10]; /* the places that activation produced in this tick goes to */
     uint32_t add_n = 0;
-    add[0] = 0; /* only the entries written are read (this says so to code analysers) */
     uint8_t lost[4]; /* watched places whose activation fell to 0 in this tick */
     uint32_t lost_n = 0;
     uint8_t gained[4]; /* watched places whose activation rose from 0 */
@@ -165,6 +164,9 @@ void Shuttle_run(Shuttle *m)
     uint32_t i;
 #ifdef Shuttle_HOOKS
     uint32_t before[1]; /* the active places at the start of the tick */
+#endif
+    add[0] = 0; /* only the entries written are read (this says so to code analysers) */
+#ifdef Shuttle_HOOKS
     for (i = 0; i < 1u; ++i) {
         before[i] = m->active[i];
     }
@@ -176,7 +178,7 @@ void Shuttle_run(Shuttle *m)
         /* entry Dock */
 #line 19 "shuttle_scalable.sfc"
         Lights(true);
-#line 180 "shuttle_scalable.c"
+#line 182 "shuttle_scalable.c"
     }
 
     /* Count the ticks of the active places that have a timer */
@@ -210,7 +212,7 @@ void Shuttle_run(Shuttle *m)
                 /* Fill: Dock -> (Dock, Cargo) */
 #line 25 "shuttle_scalable.sfc"
                 if ((m->av[Shuttle_Dock] != 0u) && (Load() && (Count() > 1))) {
-#line 214 "shuttle_scalable.c"
+#line 216 "shuttle_scalable.c"
                     m->av[Shuttle_Dock]--;
                     if (m->av[Shuttle_Dock] == 0u) { Shuttle_erase(m->active, Shuttle_ACTIVE_LEVELS, 2u, 0u, Shuttle_Dock); lost[lost_n] = Shuttle_Dock; lost_n++; }
                     add[add_n] = Shuttle_Dock; add_n++;
@@ -221,7 +223,7 @@ void Shuttle_run(Shuttle *m)
                 /* Stay: Dock -> Dock */
 #line 26 "shuttle_scalable.sfc"
                 if ((m->av[Shuttle_Dock] != 0u) && (Hold())) {
-#line 225 "shuttle_scalable.c"
+#line 227 "shuttle_scalable.c"
                     m->av[Shuttle_Dock]--;
                     if (m->av[Shuttle_Dock] == 0u) { Shuttle_erase(m->active, Shuttle_ACTIVE_LEVELS, 2u, 0u, Shuttle_Dock); lost[lost_n] = Shuttle_Dock; lost_n++; }
                     add[add_n] = Shuttle_Dock; add_n++;
@@ -230,8 +232,8 @@ void Shuttle_run(Shuttle *m)
             case Shuttle_Go:
                 /* Go: (Dock, Power, Cargo) -> (Moving, Power) */
 #line 27 "shuttle_scalable.sfc"
-                if ((m->av[Shuttle_Dock] != 0u) && (m->av[Shuttle_Power] != 0u) && (m->av[Shuttle_Cargo] != 0u) && ((Level() >= 0.5) || (m->timer_Dock > 4u /* 40ms */))) {
-#line 235 "shuttle_scalable.c"
+                if ((m->av[Shuttle_Dock] != 0u) && (m->av[Shuttle_Power] != 0u) && (m->av[Shuttle_Cargo] != 0u) && (((double)Level() >= 0.5) || (m->timer_Dock > 4u /* 40ms */))) {
+#line 237 "shuttle_scalable.c"
                     m->av[Shuttle_Dock]--;
                     if (m->av[Shuttle_Dock] == 0u) { Shuttle_erase(m->active, Shuttle_ACTIVE_LEVELS, 2u, 0u, Shuttle_Dock); lost[lost_n] = Shuttle_Dock; lost_n++; }
                     m->av[Shuttle_Power]--;
@@ -246,7 +248,7 @@ void Shuttle_run(Shuttle *m)
                 /* T3: Moving -> Waiting */
 #line 28 "shuttle_scalable.sfc"
                 if ((m->av[Shuttle_Moving] != 0u) && ((m->timer_Moving >= 3u /* 25ms */) && !Hold())) {
-#line 250 "shuttle_scalable.c"
+#line 252 "shuttle_scalable.c"
                     m->av[Shuttle_Moving]--;
                     if (m->av[Shuttle_Moving] == 0u) { Shuttle_erase(m->active, Shuttle_ACTIVE_LEVELS, 2u, 0u, Shuttle_Moving); lost[lost_n] = Shuttle_Moving; lost_n++; }
                     add[add_n] = Shuttle_Waiting; add_n++;
@@ -256,7 +258,7 @@ void Shuttle_run(Shuttle *m)
                 /* T4: Waiting -> Moving */
 #line 29 "shuttle_scalable.sfc"
                 if ((m->av[Shuttle_Waiting] != 0u) && (Hold())) {
-#line 260 "shuttle_scalable.c"
+#line 262 "shuttle_scalable.c"
                     m->av[Shuttle_Waiting]--;
                     if (m->av[Shuttle_Waiting] == 0u) { Shuttle_erase(m->active, Shuttle_ACTIVE_LEVELS, 2u, 0u, Shuttle_Waiting); lost[lost_n] = Shuttle_Waiting; lost_n++; }
                     add[add_n] = Shuttle_Moving; add_n++;
@@ -266,7 +268,7 @@ void Shuttle_run(Shuttle *m)
                 /* Back: (Waiting, Power) -> (Dock, Power) */
 #line 30 "shuttle_scalable.sfc"
                 if ((m->av[Shuttle_Waiting] != 0u) && (m->av[Shuttle_Power] != 0u) && (Unload() || (m->timer_Waiting >= 10u /* 100ms */))) {
-#line 270 "shuttle_scalable.c"
+#line 272 "shuttle_scalable.c"
                     m->av[Shuttle_Waiting]--;
                     if (m->av[Shuttle_Waiting] == 0u) { Shuttle_erase(m->active, Shuttle_ACTIVE_LEVELS, 2u, 0u, Shuttle_Waiting); lost[lost_n] = Shuttle_Waiting; lost_n++; }
                     m->av[Shuttle_Power]--;
@@ -279,7 +281,7 @@ void Shuttle_run(Shuttle *m)
                 /* T6: Cargo -> Cargo */
 #line 31 "shuttle_scalable.sfc"
                 if ((m->av[Shuttle_Cargo] != 0u) && (Count() == 3)) {
-#line 283 "shuttle_scalable.c"
+#line 285 "shuttle_scalable.c"
                     m->av[Shuttle_Cargo]--;
                     if (m->av[Shuttle_Cargo] == 0u) { Shuttle_erase(m->active, Shuttle_ACTIVE_LEVELS, 2u, 0u, Shuttle_Cargo); lost[lost_n] = Shuttle_Cargo; lost_n++; }
                     add[add_n] = Shuttle_Cargo; add_n++;
@@ -311,12 +313,12 @@ void Shuttle_run(Shuttle *m)
         case Shuttle_Dock:
 #line 19 "shuttle_scalable.sfc"
             Lights(false);
-#line 315 "shuttle_scalable.c"
+#line 317 "shuttle_scalable.c"
             break;
         case Shuttle_Cargo:
 #line 21 "shuttle_scalable.sfc"
             m->trips += 1;
-#line 320 "shuttle_scalable.c"
+#line 322 "shuttle_scalable.c"
             break;
         default:
             break;
@@ -331,7 +333,7 @@ void Shuttle_run(Shuttle *m)
             m->timer_Dock = 0;
 #line 19 "shuttle_scalable.sfc"
             Lights(true);
-#line 335 "shuttle_scalable.c"
+#line 337 "shuttle_scalable.c"
             break;
         case Shuttle_Moving:
             m->timer_Moving = 0;
@@ -340,7 +342,7 @@ void Shuttle_run(Shuttle *m)
             m->timer_Waiting = 0;
 #line 23 "shuttle_scalable.sfc"
             Beep(-1);
-#line 344 "shuttle_scalable.c"
+#line 346 "shuttle_scalable.c"
             break;
         default:
             break;
@@ -371,12 +373,12 @@ void Shuttle_run(Shuttle *m)
             case Shuttle_Dock:
 #line 19 "shuttle_scalable.sfc"
                 Beep(m->trips);
-#line 375 "shuttle_scalable.c"
+#line 377 "shuttle_scalable.c"
                 break;
             case Shuttle_Moving:
 #line 22 "shuttle_scalable.sfc"
                 Drive(m->speed);
-#line 380 "shuttle_scalable.c"
+#line 382 "shuttle_scalable.c"
                 break;
             default:
                 break;

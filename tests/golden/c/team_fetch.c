@@ -113,7 +113,7 @@ void Fetch_run(Fetch *m)
 #line 21 "team_fetch.fsm"
                 if (m->agent == 0) {
                     Beep(2);
-                } else if ((gfec_t0 = Seen(), (gfec_t0 + Heard()) > Fetch_team(m, Fetch_Grab))) {
+                } else if (((void)(gfec_t0 = Seen()), (gfec_t0 + Heard()) > Fetch_team(m, Fetch_Grab))) {
                     Beep(Seen());
                 } else {
                     Beep(1);

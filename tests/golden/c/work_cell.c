@@ -155,7 +155,7 @@ void WorkCell_run(WorkCell *m)
     }
     if (m->av[WorkCell_RightArm] != 0u) {
 #line 22 "work_cell.sfc"
-        Move(1, -m->speed * 2.0);
+        Move(1, (float)((double)(-m->speed) * 2.0));
 #line 160 "work_cell.c"
     }
 }

@@ -164,7 +164,6 @@ void WorkCell_run(WorkCell *m)
 {
     uint8_t add[3]; /* the places that activation produced in this tick goes to */
     uint32_t add_n = 0;
-    add[0] = 0; /* only the entries written are read (this says so to code analysers) */
     uint8_t lost[2]; /* watched places whose activation fell to 0 in this tick */
     uint32_t lost_n = 0;
     uint8_t gained[2]; /* watched places whose activation rose from 0 */
@@ -175,6 +174,9 @@ void WorkCell_run(WorkCell *m)
     uint32_t i;
 #ifdef WorkCell_HOOKS
     uint32_t before[1]; /* the active places at the start of the tick */
+#endif
+    add[0] = 0; /* only the entries written are read (this says so to code analysers) */
+#ifdef WorkCell_HOOKS
     for (i = 0; i < 1u; ++i) {
         before[i] = m->active[i];
     }
@@ -186,7 +188,7 @@ void WorkCell_run(WorkCell *m)
         /* entry Idle */
 #line 18 "work_cell_scalable.sfc"
         Lamp(true);
-#line 190 "work_cell_scalable.c"
+#line 192 "work_cell_scalable.c"
     }
 
     /* Count the ticks of the active places that have a timer */
@@ -219,7 +221,7 @@ void WorkCell_run(WorkCell *m)
                 /* Start: Idle -> (LeftArm, RightArm) */
 #line 32 "work_cell_scalable.sfc"
                 if ((m->av[WorkCell_Idle] != 0u) && (PartReady() && !(m->parts >= 100 /* MAX_PARTS */))) {
-#line 223 "work_cell_scalable.c"
+#line 225 "work_cell_scalable.c"
                     m->av[WorkCell_Idle]--;
                     if (m->av[WorkCell_Idle] == 0u) { WorkCell_erase(m->active, WorkCell_ACTIVE_LEVELS, 2u, 0u, WorkCell_Idle); lost[lost_n] = WorkCell_Idle; lost_n++; }
                     add[add_n] = WorkCell_LeftArm; add_n++;
@@ -230,7 +232,7 @@ void WorkCell_run(WorkCell *m)
                 /* T1: LeftArm -> LeftDone */
 #line 33 "work_cell_scalable.sfc"
                 if ((m->av[WorkCell_LeftArm] != 0u) && (AtTarget(0))) {
-#line 234 "work_cell_scalable.c"
+#line 236 "work_cell_scalable.c"
                     m->av[WorkCell_LeftArm]--;
                     if (m->av[WorkCell_LeftArm] == 0u) { WorkCell_erase(m->active, WorkCell_ACTIVE_LEVELS, 2u, 0u, WorkCell_LeftArm); lost[lost_n] = WorkCell_LeftArm; lost_n++; }
                     add[add_n] = WorkCell_LeftDone; add_n++;
@@ -240,7 +242,7 @@ void WorkCell_run(WorkCell *m)
                 /* T2: RightArm -> RightDone */
 #line 34 "work_cell_scalable.sfc"
                 if ((m->av[WorkCell_RightArm] != 0u) && (AtTarget(1) || ((m->timer_RightArm >= 50u /* 1000ms */) && Clear()))) {
-#line 244 "work_cell_scalable.c"
+#line 246 "work_cell_scalable.c"
                     m->av[WorkCell_RightArm]--;
                     if (m->av[WorkCell_RightArm] == 0u) { WorkCell_erase(m->active, WorkCell_ACTIVE_LEVELS, 2u, 0u, WorkCell_RightArm); lost[lost_n] = WorkCell_RightArm; lost_n++; }
                     add[add_n] = WorkCell_RightDone; add_n++;
@@ -250,7 +252,7 @@ void WorkCell_run(WorkCell *m)
                 /* Stuck: LeftArm -> Jammed */
 #line 35 "work_cell_scalable.sfc"
                 if ((m->av[WorkCell_LeftArm] != 0u) && (m->timer_LeftArm > 75u /* 1500ms */)) {
-#line 254 "work_cell_scalable.c"
+#line 256 "work_cell_scalable.c"
                     m->av[WorkCell_LeftArm]--;
                     if (m->av[WorkCell_LeftArm] == 0u) { WorkCell_erase(m->active, WorkCell_ACTIVE_LEVELS, 2u, 0u, WorkCell_LeftArm); lost[lost_n] = WorkCell_LeftArm; lost_n++; }
                     add[add_n] = WorkCell_Jammed; add_n++;
@@ -260,7 +262,7 @@ void WorkCell_run(WorkCell *m)
                 /* Join: (LeftDone, RightDone) -> Idle */
 #line 36 "work_cell_scalable.sfc"
                 if ((m->av[WorkCell_LeftDone] != 0u) && (m->av[WorkCell_RightDone] != 0u)) {
-#line 264 "work_cell_scalable.c"
+#line 266 "work_cell_scalable.c"
                     m->av[WorkCell_LeftDone]--;
                     if (m->av[WorkCell_LeftDone] == 0u) { WorkCell_erase(m->active, WorkCell_ACTIVE_LEVELS, 2u, 0u, WorkCell_LeftDone); }
                     m->av[WorkCell_RightDone]--;
@@ -293,12 +295,12 @@ void WorkCell_run(WorkCell *m)
         case WorkCell_Idle:
 #line 19 "work_cell_scalable.sfc"
             Lamp(false);
-#line 297 "work_cell_scalable.c"
+#line 299 "work_cell_scalable.c"
             break;
         case WorkCell_RightDone:
 #line 24 "work_cell_scalable.sfc"
             m->parts += 1;
-#line 302 "work_cell_scalable.c"
+#line 304 "work_cell_scalable.c"
             break;
         default:
             break;
@@ -312,7 +314,7 @@ void WorkCell_run(WorkCell *m)
         case WorkCell_Idle:
 #line 18 "work_cell_scalable.sfc"
             Lamp(true);
-#line 316 "work_cell_scalable.c"
+#line 318 "work_cell_scalable.c"
             break;
         case WorkCell_LeftArm:
             m->timer_LeftArm = 0;
@@ -325,7 +327,7 @@ void WorkCell_run(WorkCell *m)
             Alarm();
 #line 28 "work_cell_scalable.sfc"
             fputs("work cell jammed\n", stderr);
-#line 329 "work_cell_scalable.c"
+#line 331 "work_cell_scalable.c"
             break;
         default:
             break;
@@ -354,12 +356,12 @@ void WorkCell_run(WorkCell *m)
             case WorkCell_LeftArm:
 #line 21 "work_cell_scalable.sfc"
                 Move(0, m->speed);
-#line 358 "work_cell_scalable.c"
+#line 360 "work_cell_scalable.c"
                 break;
             case WorkCell_RightArm:
 #line 22 "work_cell_scalable.sfc"
-                Move(1, -m->speed * 2.0);
-#line 363 "work_cell_scalable.c"
+                Move(1, (float)((double)(-m->speed) * 2.0));
+#line 365 "work_cell_scalable.c"
                 break;
             default:
                 break;
