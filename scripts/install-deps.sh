@@ -7,6 +7,8 @@ packages=(
   graphviz valgrind cppcheck time
   clang-format  # scripts/format.sh --check, a ctest test
   gcc-arm-none-eabi  # the cross build and freestanding engine tests (Cortex-M4)
+  gcc-avr avr-libc libsimavr-dev  # AVR programs and tools/avr-run (docs/targets.md)
+  arduino-mk  # the Arduino sketch's make build (examples/arduino-line-follower); brings arduino-core-avr
   chromium   # the run viewer's browser test (tests/viewer)
 )
 # Node (for the SARIF schema and TextMate grammar tests) may come from another repo already.
