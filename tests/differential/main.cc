@@ -197,6 +197,13 @@ int main(int argc, char **argv) {
       c.text = read_text(chart.string());
       auto csv = chart;
       c.csv = read_text(csv.replace_extension(".csv").string());
+      // No trace: a chart without inputs runs the ticks its `// ticks: N` line says (else 1).
+      if (c.csv.empty()) {
+        const auto at = c.text.find("// ticks: ");
+        const int ticks = at == std::string::npos ? 1 : std::atoi(c.text.c_str() + at + 10);
+        c.csv = "tick\n";
+        for (int t = 1; t <= ticks; ++t) c.csv += std::to_string(t) + "\n";
+      }
       if (c.text.empty()) return std::cerr << "gfec_differential: cannot read " << chart.string() << "\n", 2;
       ++generated;
       Outcome o = harness.prepare(c);

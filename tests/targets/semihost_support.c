@@ -6,14 +6,8 @@
 int harness_putc(int c);
 void bench_mark(int what);
 
-int harness_putc(int c)
-{
-    return putchar(c);
-}
+int harness_putc(int c) { return putchar(c); }
 
 /* Benchmarks (tests/bench/bench_target.sh) count the instructions between two calls: 1 starts a
    measured stretch, 2 ends it. The asm keeps the call and its argument from being optimised out. */
-__attribute__((noinline)) void bench_mark(int what)
-{
-    __asm__ volatile("" : : "r"(what) : "memory");
-}
+__attribute__((noinline)) void bench_mark(int what) { __asm__ volatile("" : : "r"(what) : "memory"); }
