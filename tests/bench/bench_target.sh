@@ -58,12 +58,13 @@ measure() {
 }
 
 printf "%-12s %-16s %7s %6s %7s %6s %10s\n" target chart flash ram "(state)" "" "per tick"
-while IFS='|' read -r name dbl cc flags link support run _ram _flash; do
+while IFS='|' read -r name _double cc flags link support run _ram _flash; do
   name=$(trim "$name") cc=$(trim "$cc") flags=$(trim "$flags") link=$(trim "$link") support=$(trim "$support")
   run=$(trim "$run")
   [[ -n $name && $name != \#* ]] || continue
   if [[ $# -gt 0 && " $* " != *" $name "* ]]; then continue; fi
-  emulator=$(sed "s#{bin}#$bin#" <<< "${run%% *}")
+  emulator=${run%% *}
+  emulator=${emulator//\{bin\}/$bin}
   if ! command -v "$cc" > /dev/null || ! command -v "$emulator" > /dev/null; then
     echo "$name: skipped ($cc or $emulator is not installed)"
     continue

@@ -23,28 +23,27 @@ extern volatile unsigned long bench_tick;
 extern volatile unsigned long bench_sum;
 
 static union {
-    long l;
-    void *p;
-    float f;
-    unsigned char bytes[STATE_BYTES];
+  long l;
+  void *p;
+  float f;
+  unsigned char bytes[STATE_BYTES];
 } state;
 
-int main(void)
-{
-    int i;
-    CHART *m = (CHART *)(void *)&state;
-    NAME(CHART, _init)(m);
+int main(void) {
+  int i;
+  CHART *m = (CHART *)(void *)&state;
+  NAME(CHART, _init)(m);
 #ifndef __AVR__
-    for (i = 0; i < TICKS; ++i) {
-        MARK(1);
-        MARK(2);
-    }
+  for (i = 0; i < TICKS; ++i) {
+    MARK(1);
+    MARK(2);
+  }
 #endif
-    for (i = 0; i < TICKS; ++i) {
-        ++bench_tick;
-        MARK(1);
-        NAME(CHART, _run)(m);
-        MARK(2);
-    }
-    return (int)(bench_sum & 0u);
+  for (i = 0; i < TICKS; ++i) {
+    ++bench_tick;
+    MARK(1);
+    NAME(CHART, _run)(m);
+    MARK(2);
+  }
+  return (int)(bench_sum & 0u);
 }
