@@ -8,6 +8,10 @@ packages=(
   clang-format  # scripts/format.sh --check, a ctest test
   gcc-arm-none-eabi  # the cross build and freestanding engine tests (Cortex-M4)
   gcc-avr avr-libc libsimavr-dev  # AVR programs and tools/avr-run (docs/targets.md)
+  # The engines on emulated targets (tests/targets, docs/targets.md): Cortex-M3/M4F under qemu
+  # with picolibc's semihosting, RV32 under qemu-system-riscv32 (in qemu-system-misc).
+  picolibc-arm-none-eabi qemu-system-arm
+  gcc-riscv64-unknown-elf picolibc-riscv64-unknown-elf qemu-system-misc
   arduino-mk  # the Arduino sketch's make build (examples/arduino-line-follower); brings arduino-core-avr
   chromium   # the run viewer's browser test (tests/viewer)
 )

@@ -1,4 +1,5 @@
 #include "harness.h"
+#include "prepared.h"
 
 #include "c_backend.h"
 #include "c_driver.h"
@@ -21,22 +22,6 @@
 namespace gfec::diff {
 
 namespace fs = std::filesystem;
-
-struct Prepared {
-  pipeline::Compilation c{options()};
-  SourceManager &sources = c.sources;
-  Diagnostics &diag = c.diag;
-  model::Model &model = c.model;
-  std::string expected_plain, expected_hooks;
-  std::vector<OutputFile> engine;
-  std::vector<std::string> places, transitions;
-
-  static pipeline::FrontEndOptions options() {
-    pipeline::FrontEndOptions f;
-    f.analyze = false;  // the case is judged by its runs, not by the analyses
-    return f;
-  }
-};
 
 namespace {
 
@@ -97,6 +82,8 @@ const char *verdict_name(Verdict v) {
   case Verdict::CompileError: return "compile error";
   case Verdict::Lint: return "cppcheck finding";
   case Verdict::Crash: return "crash";
+  case Verdict::TooBig: return "does not fit the target";
+  case Verdict::NotRefused: return "compiled where double must be refused";
   }
   return "?";
 }
@@ -129,26 +116,39 @@ Harness::Harness(std::string work, bool verbose) : work_(std::move(work)), verbo
 }
 
 Outcome Harness::prepare(Case &c) const {
-  c.text = chart_text(c.chart);
-  c.csv = trace_csv(c.chart, c.trace);
+  if (!c.given) {
+    c.text = chart_text(c.chart);
+    c.csv = trace_csv(c.chart, c.trace);
+  }
   auto p = std::make_shared<Prepared>();
   MemoryFileSystem files;
-  const std::string chart_file = fmt::format("r{}.sfc", c.id);
+  const std::string chart_file = c.given ? c.file : fmt::format("r{}.sfc", c.id);
   files.add(chart_file, c.text);
   p->c.front_end(chart_file, files);
-  if (p->diag.has_errors()) return {Verdict::Invalid, printed(p->diag, p->sources), ""};
-  // The compiled chart: the root (a hierarchical program also declares its sub-charts).
+  if (p->diag.has_errors()) {
+    // Near the limits, a generated expression of constants may overflow: gfec refuses it at
+    // compile time, as the interpreter refuses it at run time (docs/language.md): no test.
+    const std::string why = printed(p->diag, p->sources);
+    if (!c.given && why.find("[not-constant]") != std::string::npos && why.find("overflow") != std::string::npos)
+      return {Verdict::Undefined, why, ""};
+    return {Verdict::Invalid, why, ""};
+  }
+  // The compiled chart: the root (a hierarchical program also declares its sub-charts; a given
+  // file's root is its last chart).
   model::ChartId root;
   for (model::ChartId i : p->model.charts.ids())
-    if (p->model.charts[i].name == c.chart.name) root = i;
-  if (!root || p->model.charts.size() != 1 + c.chart.pool.size())
+    if (c.given ? p->model.charts[i].in_main_file : p->model.charts[i].name == c.chart.name) root = i;
+  if (c.given && root) c.chart.name = p->model.charts[root].name;
+  if (!root || (!c.given && p->model.charts.size() != 1 + c.chart.pool.size()))
     return {Verdict::Invalid, "the model does not hold the generated charts\n" + printed(p->diag, p->sources), ""};
 
   Diagnostics trace_diag;
   FileId csv = p->sources.add(fmt::format("r{}.csv", c.id), c.csv);
   const int agents = std::max(1, c.chart.agents);
-  interp::InputTrace trace(p->model, p->sources, csv, trace_diag, agents);
+  p->inputs = std::make_unique<interp::InputTrace>(p->model, p->sources, csv, trace_diag, agents);
+  interp::InputTrace &trace = *p->inputs;
   if (trace_diag.has_errors()) return {Verdict::Invalid, printed(trace_diag, p->sources), ""};
+  if (c.given && c.trace.ticks == 0) c.trace.ticks = static_cast<int>(trace.rows());
   Diagnostics run_diag;
   const auto ticks = static_cast<std::uint64_t>(c.trace.ticks);
   interp::RunResult r;
@@ -173,6 +173,8 @@ Outcome Harness::prepare(Case &c) const {
   // Random charts are small, so `auto` would always pick the readable form: half the cases take
   // the scalable one (an fsm's: a switch on the state), so both forms answer to the interpreter.
   o.engine = scalable_form(c) ? EngineForm::Scalable : EngineForm::Readable;
+  p->root = root;
+  p->emit = o;
   try {
     p->engine = emit_to_memory(*make_c_backend(), p->model, o);
   } catch (const std::exception &e) { return {Verdict::Crash, fmt::format("the C back end threw: {}", e.what()), ""}; }
@@ -187,6 +189,11 @@ std::vector<Outcome> Harness::run_batch(const std::vector<Case *> &batch, const 
                                         const std::string &tag) const {
   std::vector<Outcome> outcomes(batch.size());
   if (batch.empty()) return outcomes;
+  if (config.target) {  // a program per case: a small part holds one engine and its trace at a time
+    for (std::size_t i = 0; i < batch.size(); ++i)
+      outcomes[i] = run_on_target(*batch[i], config, fmt::format("{}t{}", tag, i));
+    return outcomes;
+  }
   const std::string dir = work_ + "/" + tag;
   fs::remove_all(dir);
   fs::create_directories(dir);
@@ -303,6 +310,10 @@ void Harness::save(const Case &c, const Outcome &o, const Config &config, const 
   write(dir + "/trace.csv", c.csv);
   write(dir + "/expected.log", o.expected);
   write(dir + "/actual.log", o.detail);
+  if (c.prepared && config.target) {
+    save_target_program(c, config, dir);
+    return;
+  }
   if (c.prepared) {
     for (const auto &f : c.prepared->engine) write(dir + "/" + f.path, f.contents);
     DriverCase d{c.id,

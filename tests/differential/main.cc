@@ -6,6 +6,9 @@
 //
 //   gfec_differential [--seed N] [--cases N]     (ctest runs a few hundred; long runs:
 //                                                 docs/verification.md)
+//   gfec_differential --target NAME [--cases N]  each engine built for an emulated
+//                                                 microcontroller and run there (docs/targets.md)
+//   gfec_differential --target NAME --chart F.sfc...   hand-written charts with their traces
 #include "harness.h"
 #include "shrink.h"
 
@@ -16,11 +19,14 @@
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <map>
 #include <iostream>
 #include <sstream>
 #include <unistd.h>
 
 using namespace gfec::diff;
+namespace targets = gfec::targets;
 
 namespace {
 
@@ -29,6 +35,13 @@ struct Failure {
   Config config;
   Outcome outcome;
 };
+
+std::string read_text(const std::string &path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
 
 bool have(const std::string &tool) { return std::system(("command -v " + tool + " > /dev/null 2>&1").c_str()) == 0; }
 
@@ -64,7 +77,9 @@ int main(int argc, char **argv) {
   std::uint64_t seed = 1;
   int cases = 300, batch = 60, shrink_max = 3, only = -1, subcharts = 0;
   std::string work, compilers, avoid;
-  bool verbose = false, keep = false, no_lint = false;
+  bool verbose = false, keep = false, no_lint = false, limits = false;
+  std::string target_name, table_path = GFEC_TARGET_TABLE, bin = GFEC_BINARY_DIR, flags_extra, flags_without;
+  std::vector<std::string> charts;
   CLI::App app{"gfec_differential - random charts: the reference interpreter against the generated C engines"};
   app.add_option("--seed", seed, "Seed of the random charts and traces (same seed, same cases)");
   app.add_option("--cases", cases, "How many random charts (a third of them fsm)");
@@ -78,6 +93,19 @@ int main(int argc, char **argv) {
       "Hierarchical programs: up to N sub-charts each (sfc and fsm, nested, the same one run by several places)");
   app.add_option("--case", only, "Run only this case (of the same seed), e.g. to shrink it again");
   app.add_flag("--no-cppcheck", no_lint, "Do not run cppcheck on the engines");
+  app.add_flag("--limits", limits,
+               "Values near the limits: ints past 16 bits and at INT32's ends, floats that need exact rounding, "
+               "a*b+c in float (always on with --target)");
+  app.add_option("--target", target_name,
+                 "Build each case for this emulated target (a row of the target table) and run it there");
+  app.add_option("--targets", table_path, "The target table (tests/targets/targets.txt)");
+  app.add_option("--bin", bin, "The build tree, for {bin} in the table's run commands");
+  app.add_option("--chart", charts,
+                 "With --target: run this hand-written chart, its trace beside it (X.sfc: X.csv), instead of "
+                 "random ones");
+  app.add_option("--flags-extra", flags_extra, "With --target: compile flags after the target's (e.g. -O2)");
+  app.add_option("--flags-without", flags_without,
+                 "With --target: leave this flag of the target's out (e.g. -ffp-contract=off)");
   app.add_flag("--keep", keep, "Keep the scratch folder");
   app.add_flag("-v,--verbose", verbose, "Say what happens to every case");
   CLI11_PARSE(app, argc, argv);
@@ -94,13 +122,51 @@ int main(int argc, char **argv) {
     std::cerr << "gfec_differential: no C compiler found\n";
     return 2;
   }
+  targets::Table table;
+  std::vector<Config> target_configs;
+  if (!target_name.empty()) {
+    table = targets::read_table(table_path);
+    if (!table.error.empty()) return std::cerr << "gfec_differential: " << table.error << "\n", 2;
+    const targets::Target *t = table.find(target_name);
+    if (!t)
+      return std::cerr << "gfec_differential: no target '" << target_name << "' (known: " << table.names() << ")\n", 2;
+    // A test whose tool is missing fails in CI (scripts/install-deps.sh installs them all) and
+    // is skipped elsewhere (ctest's SKIP_RETURN_CODE).
+    const std::map<std::string, std::string> vars = {{"bin", bin}};
+    for (const std::string &tool : {t->cc, t->emulator(vars)})
+      if (!have(tool)) {
+        const bool ci = std::getenv("CI") && std::string(std::getenv("CI")) == "true";
+        std::cerr << fmt::format("gfec_differential: target {} needs '{}', which is not installed{}\n", t->name, tool,
+                                 ci ? " (scripts/install-deps.sh)" : ": skipped");
+        return ci ? 1 : 77;
+      }
+    Config config = target_config(*t, table.folder, bin);
+    if (!flags_without.empty()) {
+      std::string kept;
+      std::istringstream words(config.command);
+      for (std::string w; words >> w;)
+        if (w != flags_without) kept += (kept.empty() ? "" : " ") + w;
+      config.command = kept;
+    }
+    if (!flags_extra.empty()) config.command += " " + flags_extra;
+    if (!flags_extra.empty() || !flags_without.empty()) config.name = t->name + ": " + config.command;
+    target_configs.push_back(config);
+    limits = true;
+    no_lint = true;  // the host runs already lint every engine
+  } else if (!charts.empty()) {
+    return std::cerr << "gfec_differential: --chart runs hand-written charts on a --target\n", 2;
+  }
   if (work.empty())
     work = (std::filesystem::temp_directory_path() / fmt::format("gfec-differential-{}", ::getpid())).string();
-  const auto configs = default_configs(list);
+  const auto configs = target_configs.empty() ? default_configs(list) : target_configs;
   const bool lint = !no_lint && have("cppcheck");
   // Options are checked before the harness makes its scratch folder, so a refused run leaves none.
   GenOptions base;
   base.subcharts = subcharts;
+  base.limits = limits;
+  // Where double is binary32 a chart that declares one is refused (the hand cases check that):
+  // the random charts use float and int there, so that they run.
+  base.doubles = target_configs.empty() || target_configs[0].target->double_bits == 64;
   for (std::istringstream in(avoid); std::getline(in, avoid, ',');) {
     // Keys whose bugs are fixed are gone; a script still passing one is told so rather than
     // silently getting every construct it meant to leave out.
@@ -115,12 +181,36 @@ int main(int argc, char **argv) {
   Harness harness(work, verbose);
   const auto start = std::chrono::steady_clock::now();
 
+  if (!charts.empty()) cases = static_cast<int>(charts.size());
   std::vector<Case> all(static_cast<std::size_t>(cases));
   std::vector<Case *> ready;
   std::vector<Failure> failures;
   int undefined = 0, invalid = 0, fsm = 0, teams = 0, generated = 0, scalable = 0, scalable_fsm = 0, hierarchical = 0;
   for (int k = 0; k < cases; ++k) {
     if (only >= 0 && k != only) continue;
+    if (!charts.empty()) {  // a hand-written chart and its trace, as they are
+      Case &c = all[static_cast<std::size_t>(k)];
+      const std::filesystem::path chart = charts[static_cast<std::size_t>(k)];
+      c.id = k;
+      c.given = true;
+      c.file = chart.filename().string();
+      c.text = read_text(chart.string());
+      auto csv = chart;
+      c.csv = read_text(csv.replace_extension(".csv").string());
+      // No trace: a chart without inputs runs the ticks its `// ticks: N` line says (else 1).
+      if (c.csv.empty()) {
+        const auto at = c.text.find("// ticks: ");
+        const int ticks = at == std::string::npos ? 1 : std::atoi(c.text.c_str() + at + 10);
+        c.csv = "tick\n";
+        for (int t = 1; t <= ticks; ++t) c.csv += std::to_string(t) + "\n";
+      }
+      if (c.text.empty()) return std::cerr << "gfec_differential: cannot read " << chart.string() << "\n", 2;
+      ++generated;
+      Outcome o = harness.prepare(c);
+      if (o.verdict == Verdict::Pass) ready.push_back(&c);
+      else failures.push_back({c, {"gfec (front end)", "", false}, o});
+      continue;
+    }
     std::seed_seq s{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32),
                     static_cast<std::uint32_t>(k)};
     std::mt19937_64 rng(s);
@@ -137,7 +227,7 @@ int main(int argc, char **argv) {
     scalable += !options.fsm && scalable_form(c);
     scalable_fsm += options.fsm && scalable_form(c);
     c.chart = random_chart(rng, k, options);
-    c.trace = random_trace(rng, c.chart);
+    c.trace = random_trace(rng, c.chart, options.limits);
     // A hierarchical program: the root has a place or state that runs a sub-chart.
     hierarchical +=
         std::any_of(c.chart.places.begin(), c.chart.places.end(), [](const GPlace &p) { return p.runs >= 0; });
@@ -156,7 +246,7 @@ int main(int argc, char **argv) {
     }
   }
 
-  std::vector<std::pair<Case *, const Config *>> failed;
+  int refused = 0, too_big = 0;
   for (std::size_t b = 0; b < ready.size(); b += static_cast<std::size_t>(batch)) {
     std::vector<Case *> group(
         ready.begin() + static_cast<std::ptrdiff_t>(b),
@@ -172,7 +262,17 @@ int main(int argc, char **argv) {
     for (std::size_t k = 0; k < configs.size(); ++k) {
       auto outcomes = harness.run_batch(group, configs[k], fmt::format("b{}c{}", b, k));
       for (std::size_t i = 0; i < group.size(); ++i) {
+        refused += outcomes[i].refused;
+        if (!charts.empty())
+          std::cout << fmt::format("{}: {}\n", group[i]->file,
+                                   outcomes[i].refused ? "refused at compile time, as it must be"
+                                                       : verdict_name(outcomes[i].verdict));
         if (outcomes[i].verdict == Verdict::Pass) continue;
+        if (outcomes[i].verdict == Verdict::TooBig && charts.empty()) {  // said, and run on a bigger part
+          ++too_big;
+          if (verbose) std::cout << fmt::format("case {} does not fit: {}", group[i]->id, outcomes[i].detail);
+          continue;
+        }
         failures.push_back({*group[i], configs[k], outcomes[i]});
         if (verbose)
           std::cout << fmt::format("case {} under '{}': {}\n", group[i]->id, configs[k].name,
@@ -191,6 +291,11 @@ int main(int argc, char **argv) {
       "({} engine runs){}, {} skipped for undefined behaviour, {} rejected by gfec; {} failures; {:.0f} s\n",
       seed, generated, generated - fsm, scalable, fsm, scalable_fsm, teams, hierarchical, ready.size(), configs.size(),
       ready.size() * configs.size(), lint ? " and cppcheck" : "", undefined, invalid, failures.size(), seconds);
+  if (!target_configs.empty())
+    std::cout << fmt::format("on {}: {} compared, {} refused at compile time (a double where double is binary32), {} "
+                             "too big for the part; {} failures\n",
+                             target_configs[0].name, ready.size() - static_cast<std::size_t>(refused + too_big),
+                             refused, too_big, failures.size());
   // Shrink the first failures (one per case: the same bug tends to fail every build).
   std::vector<int> shown;
   for (auto &f : failures) {
@@ -198,8 +303,9 @@ int main(int argc, char **argv) {
     if (std::find(shown.begin(), shown.end(), f.c.id) != shown.end()) continue;
     shown.push_back(f.c.id);
     int steps = 0;
-    if (f.outcome.verdict == Verdict::Mismatch || f.outcome.verdict == Verdict::Crash ||
-        f.outcome.verdict == Verdict::CompileError || f.outcome.verdict == Verdict::Lint) {
+    if (!f.c.given && (f.outcome.verdict == Verdict::Mismatch || f.outcome.verdict == Verdict::Crash ||
+                       f.outcome.verdict == Verdict::CompileError || f.outcome.verdict == Verdict::Lint ||
+                       f.outcome.verdict == Verdict::NotRefused)) {
       Outcome o = shrink(harness, f.c, f.config, f.outcome.verdict, &steps);
       if (o.verdict == f.outcome.verdict) f.outcome = o;
     }

@@ -30,6 +30,17 @@ const std::vector<std::string> kTrickyVars = {"m",  "add",    "before",  "from",
 const std::vector<std::string> kFloatLiterals = {"0.5",   "0.25", "1.5", "2.0", "0.1",  "3.75", "1e-1",
                                                  "2.5e0", "0.3",  "2.",  ".5",  "10.0", "0.0"};
 const std::vector<std::string> kFloatInputs = {"0", "0.5", "0.25", "-1.5", "0.1", "3", "2.75", "-0.3"};
+// Near the limits (GenOptions::limits): ints a 16-bit int cannot hold, INT32's ends; decimal
+// constants that round differently if rounded twice (to double, then to float), or that need
+// every digit of binary32; inputs likewise.
+const std::vector<std::string> kIntLimits = {"40000",   "65535",      "65536", "100000", "32768",
+                                             "1000000", "2147483647", "46341", "70000"};
+const std::vector<std::string> kFloatLimits = {"1.00000005960464478", "16777217.0",     "0.1",
+                                               "3.4028234e38",        "1.17549435e-38", "123456.789",
+                                               "0.333333343267",      "1e-45",          "8388607.5"};
+const std::vector<std::string> kIntInputLimits = {"100000",      "65536", "-40000", "2147483647",
+                                                  "-2147483648", "32767", "-32769", "1000000"};
+const std::vector<std::string> kFloatInputLimits = {"16777216", "1.00000012", "3.4e38", "-1e-30", "1234.5678"};
 
 class Gen {
 public:
@@ -85,7 +96,7 @@ public:
 
   Type any_numeric() {
     int r = uniform(0, 9);
-    return r < 5 ? Type::Int : r < 7 ? Type::Float : Type::Double;
+    return r < 5 ? Type::Int : r < 7 || !o_.doubles ? Type::Float : Type::Double;
   }
   Type any_type() { return chance(0.3) ? Type::Bool : any_numeric(); }
 
@@ -105,7 +116,9 @@ public:
     e.kind = GExpr::Kind::Lit;
     e.type = t;
     if (t == Type::Bool) e.text = chance(0.5) ? "true" : "false";
+    else if (t == Type::Int && o_.limits && chance(0.2)) e.text = pick(kIntLimits);
     else if (t == Type::Int) e.text = chance(0.04) ? "010" : std::to_string(uniform(0, 12));
+    else if (o_.limits && chance(0.2)) e.text = pick(kFloatLimits);
     else e.text = pick(kFloatLiterals);
     return e;
   }
@@ -158,8 +171,22 @@ public:
     return {a, b};
   }
 
+  /// `a * b + c` of float operands (vars, constants, calls): a target with a fused
+  /// multiply-add rounds it once if the compiler contracts it, the interpreter twice.
+  std::optional<GExpr> float_multiply_add(int depth) {
+    std::vector<GExpr> leaves;
+    for (int i = 0; i < 3; ++i)
+      if (auto leaf = named_leaf(Type::Float, depth - 1)) leaves.push_back(*leaf);
+    if (leaves.empty()) return std::nullopt;
+    while (leaves.size() < 3) leaves.push_back(pick(leaves));  // `v * v + v` will do
+    GExpr product{GExpr::Kind::Binary, Type::Float, "*", {leaves[0], leaves[1]}};
+    return GExpr{GExpr::Kind::Binary, Type::Float, chance(0.7) ? "+" : "-", {product, leaves[2]}};
+  }
+
   /// A numeric expression (only ints when `ints`); its type follows C's conversions.
   GExpr number(int depth, bool ints) {
+    if (o_.limits && !ints && depth > 0 && chance(0.15))
+      if (auto fma = float_multiply_add(depth)) return *fma;
     if (depth <= 0 || chance(0.35)) {
       Type t = ints ? Type::Int : any_numeric();
       if (!chance(0.35))
@@ -355,7 +382,7 @@ public:
       GFunction f;
       f.name = fmt::format("{}_s{}", c_.prefix, k);
       int r = uniform(0, 9);
-      f.result = r < 5 ? Type::Bool : r < 7 ? Type::Int : r < 8 ? Type::Float : Type::Double;
+      f.result = r < 5 ? Type::Bool : r < 7 ? Type::Int : r < 8 || !o_.doubles ? Type::Float : Type::Double;
       if (chance(0.3)) f.params.push_back(chance(0.6) ? Type::Int : Type::Float);
       c_.functions.push_back(f);
     }
@@ -598,8 +625,17 @@ GChart random_chart(std::mt19937_64 &rng, int id, const GenOptions &options) {
   return c;
 }
 
-GTrace random_trace(std::mt19937_64 &rng, const GChart &chart) {
+GTrace random_trace(std::mt19937_64 &rng, const GChart &chart, bool limits) {
   GTrace t;
+  std::uniform_int_distribution<int> near_limits(0, 99);
+  // An int or float input: now and then (limits) one near the limits.
+  auto number = [&](Type type, auto &&usual) {
+    if (limits && near_limits(rng) < 20) {
+      const auto &list = type == Type::Int ? kIntInputLimits : kFloatInputLimits;
+      return list[std::uniform_int_distribution<std::size_t>(0, list.size() - 1)(rng)];
+    }
+    return usual();
+  };
   std::uniform_int_distribution<int> ticks(3, 25), small(-3, 9), coin(0, 99);
   std::uniform_int_distribution<std::size_t> floats(0, kFloatInputs.size() - 1);
   t.ticks = ticks(rng);
@@ -611,9 +647,9 @@ GTrace random_trace(std::mt19937_64 &rng, const GChart &chart) {
         if (coin(rng) < 35) level = !level;  // runs, so that places stay active a while
         v.push_back(level ? "1" : "0");
       } else if (f.result == Type::Int) {
-        v.push_back(std::to_string(small(rng)));
+        v.push_back(number(Type::Int, [&] { return std::to_string(small(rng)); }));
       } else {
-        v.push_back(kFloatInputs[floats(rng)]);
+        v.push_back(number(Type::Float, [&] { return kFloatInputs[floats(rng)]; }));
       }
     }
     t.values.push_back(v);
@@ -631,9 +667,9 @@ GTrace random_trace(std::mt19937_64 &rng, const GChart &chart) {
             if (coin(rng) < 35) level = !level;
             v.push_back(level ? "1" : "0");
           } else if (f.result == Type::Int) {
-            v.push_back(std::to_string(small(rng)));
+            v.push_back(number(Type::Int, [&] { return std::to_string(small(rng)); }));
           } else {
-            v.push_back(kFloatInputs[floats(rng)]);
+            v.push_back(number(Type::Float, [&] { return kFloatInputs[floats(rng)]; }));
           }
         }
       }

@@ -105,10 +105,18 @@ struct GenOptions {
   int subcharts = 0;
   /// A team machine (an fsm only) run by this many agents (2 to 4; 0: not a team).
   int agents = 0;
+  /// Values near the limits (docs/targets.md): int literals and inputs past 16 bits and at
+  /// INT32's ends, float constants that need exact rounding (`1.00000005960464478`), and
+  /// `a * b + c` of floats, which a target with a fused multiply-add must not fuse.
+  bool limits = false;
+  /// false: no double anywhere (a target whose double is binary32 refuses it).
+  bool doubles = true;
 };
 
 GChart random_chart(std::mt19937_64 &rng, int id, const GenOptions &options);
-GTrace random_trace(std::mt19937_64 &rng, const GChart &chart);
+/// `limits`: now and then an int input past 16 bits or at INT32's ends, a float input that
+/// needs all of binary32's digits.
+GTrace random_trace(std::mt19937_64 &rng, const GChart &chart, bool limits = false);
 
 /// The chart as one file: its interface, its file-level constants, the chart.
 std::string chart_text(const GChart &chart);
