@@ -278,10 +278,23 @@ private:
            (e.kind == Expr::Kind::Unary && e.unary_op == UnaryOp::Not) || e.kind == Expr::Kind::Paren;
   }
 
+  /// A test's number: the same node, or one that reads the same value. A test same_value cannot
+  /// compare (a call-free expression of another kind) is a test of its own.
   std::size_t index(const Expr &test) const {
     for (std::size_t i = 0; i < tests_.size(); ++i)
-      if (same_value(c_, *tests_[i], test)) return i;
+      if (tests_[i] == &test || same_value(c_, *tests_[i], test)) return i;
     return tests_.size();
+  }
+
+  /// The value of a bool known at compile time: a literal, a constant, a folded expression.
+  std::optional<bool> known(const Expr &e) const {
+    if (e.type != Type::Bool) return std::nullopt;
+    if (e.kind == Expr::Kind::Bool || e.folded) return e.bool_value;
+    if (e.kind == Expr::Kind::Const) {
+      const Expr &v = c_.model.consts.at(e.constant()).value;
+      if (v.kind == Expr::Kind::Bool) return v.bool_value;
+    }
+    return std::nullopt;
   }
 
   bool collect(const Expr &e) {
@@ -290,7 +303,7 @@ private:
         if (!collect(a)) return false;
       return true;
     }
-    if (e.kind == Expr::Kind::Bool || index(e) < tests_.size()) return true;
+    if (known(e) || index(e) < tests_.size()) return true;
     tests_.push_back(&e);
     return tests_.size() <= kMaxTests;
   }
@@ -302,7 +315,7 @@ private:
       return value(e.args.at(0), mask) && value(e.args.at(1), mask);
     if (e.kind == Expr::Kind::Binary && e.binary_op == BinaryOp::Or)
       return value(e.args.at(0), mask) || value(e.args.at(1), mask);
-    if (e.kind == Expr::Kind::Bool) return e.bool_value;
+    if (auto k = known(e)) return *k;
     return ((mask >> index(e)) & 1u) != 0u;
   }
 

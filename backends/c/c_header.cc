@@ -80,7 +80,7 @@ void state_struct(CodeWriter &w, const EngineContext &c) {
                         fmt::format("ticks {} has been active: elapsed({})", c.place(p).name, c.place(p).name));
   if (c.needs_started) rows.emplace_back(fmt::format("bool {};", c.started), "the first tick has run");
   if (c.team()) {
-    rows.emplace_back(fmt::format("int {};", c.agent),
+    rows.emplace_back(fmt::format("int32_t {};", c.agent),
                       fmt::format("this engine's agent number (set by {})", c.set_agent_fn));
     rows.emplace_back(fmt::format("{} {}[{}];", c.report_type(), c.reports, c.team_size),
                       "by agent, the state it last reported; -1: none yet");
@@ -111,7 +111,7 @@ void team_api(CodeWriter &w, const EngineContext &c) {
   w.line("   arrives. Ignored for the engine's own number, a number out of range and an invalid state. */");
   w.line("void {0}({1} *m, int agent, int state);", c.report_fn, t);
   w.line("/* team(S) of the chart: how many other agents last reported `state`. */");
-  w.line("int {0}(const {1} *m, int state);", c.team_fn, t);
+  w.line("int32_t {0}(const {1} *m, int state);", c.team_fn, t);
 }
 
 /// --context: the setter and the getter (docs/c-engine.md "Instance context").

@@ -165,10 +165,10 @@ void team_functions(CodeWriter &w, const EngineContext &c) {
     w.line("{}[agent] = ({})state;", c.field(c.reports), c.report_type());
   }
   w.blank();
-  w.line("int {}(const {} *{}, int state)", c.team_fn, t, m);
+  w.line("int32_t {}(const {} *{}, int state)", c.team_fn, t, m);
   auto body = w.block("{");
   w.line("int agent;");
-  w.line("int n = 0;");
+  w.line("int32_t n = 0;");
   {
     auto each = w.block(fmt::format("for (agent = 0; agent < {}; ++agent) {{", c.team_size));
     auto same =

@@ -111,7 +111,11 @@ public:
     return n;
   }
 
-  GExpr literal(Type t) {
+  /// A literal of type t. A floating literal is a double in the language (as in C): where
+  /// doubles are off (a target whose double is binary32 refuses them) one in an expression
+  /// becomes a float constant of the chart, `const float L<n> = 0.5;`, so that the arithmetic
+  /// around it stays float. `in_expression` false: an initialiser, converted at compile time.
+  GExpr literal(Type t, bool in_expression = true) {
     GExpr e;
     e.kind = GExpr::Kind::Lit;
     e.type = t;
@@ -120,14 +124,21 @@ public:
     else if (t == Type::Int) e.text = chance(0.04) ? "010" : std::to_string(uniform(0, 12));
     else if (o_.limits && chance(0.2)) e.text = pick(kFloatLimits);
     else e.text = pick(kFloatLiterals);
-    return e;
+    return in_expression ? float_named(std::move(e)) : e;
   }
 
   GExpr nonzero_literal(Type t) {
-    GExpr e = literal(t);
+    GExpr e = literal(t, false);
     if (t == Type::Int) e.text = std::to_string(uniform(1, 9));
     else e.text = pick(std::vector<std::string>{"0.5", "2.0", "4.", "0.1", "3.0", "1e1"});
-    return e;
+    return float_named(std::move(e));
+  }
+
+  GExpr float_named(GExpr e) {
+    if (o_.doubles || e.type != Type::Float || e.kind != GExpr::Kind::Lit) return e;
+    std::string name = fresh("L", static_cast<int>(c_.consts.size()), {});
+    c_.consts.push_back({Type::Float, name, e.text, false});
+    return {GExpr::Kind::Const, Type::Float, name, {}};
   }
 
   /// A variable, constant or call of exactly type t, if the chart has one. Calls nest only
@@ -397,15 +408,15 @@ public:
   void values() {
     for (int i = uniform(0, 1), k = 0; k < i; ++k) {
       Type t = any_type();
-      c_.consts.push_back({t, fmt::format("{}_F{}", c_.prefix, k), literal(t).text, true});
+      c_.consts.push_back({t, fmt::format("{}_F{}", c_.prefix, k), literal(t, false).text, true});
     }
     for (int i = uniform(0, 2), k = 0; k < i; ++k) {
       Type t = any_type();
-      c_.consts.push_back({t, fresh("K", k, {}), literal(t).text, false});
+      c_.consts.push_back({t, fresh("K", k, {}), literal(t, false).text, false});
     }
     for (int i = uniform(0, 3), k = 0; k < i; ++k) {
       Type t = any_type();
-      c_.vars.push_back({t, fresh("v", k, kTrickyVars), chance(0.6) ? literal(t).text : "", false});
+      c_.vars.push_back({t, fresh("v", k, kTrickyVars), chance(0.6) ? literal(t, false).text : "", false});
     }
   }
 

@@ -39,10 +39,10 @@ void Fetch_report(Fetch *m, int agent, int state)
     }
 }
 
-int Fetch_team(const Fetch *m, int state)
+int32_t Fetch_team(const Fetch *m, int state)
 {
     int agent;
-    int n = 0;
+    int32_t n = 0;
     for (agent = 0; agent < Fetch_TEAM_SIZE; ++agent) {
         if ((agent != m->agent) && (m->reports[agent] == state)) {
             ++n;

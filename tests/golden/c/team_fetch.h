@@ -38,7 +38,7 @@ struct Fetch {
     Fetch_place state;               /* the current state, a Fetch_<state> */
     int status;                      /* 0 running, 1 succeeded, -1 failed */
     uint32_t timer_Yield;            /* ticks Yield has been active: elapsed(Yield) */
-    int agent;                       /* this engine's agent number (set by Fetch_set_agent) */
+    int32_t agent;                   /* this engine's agent number (set by Fetch_set_agent) */
     int8_t reports[Fetch_TEAM_SIZE]; /* by agent, the state it last reported; -1: none yet */
     int32_t waited;                  /* var waited */
 };
@@ -60,7 +60,7 @@ void Fetch_set_agent(Fetch *m, int agent);
    arrives. Ignored for the engine's own number, a number out of range and an invalid state. */
 void Fetch_report(Fetch *m, int agent, int state);
 /* team(S) of the chart: how many other agents last reported `state`. */
-int Fetch_team(const Fetch *m, int state);
+int32_t Fetch_team(const Fetch *m, int state);
 
 #ifdef Fetch_HOOKS
 /* Observation hooks (GFE_Activated, GFE_Enabled): an engine built with -DFetch_HOOKS calls them and
