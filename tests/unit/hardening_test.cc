@@ -279,11 +279,22 @@ TEST_CASE("hardening: the smaller input cases of the probe", "[hardening]") {
   CHECK(importing("/dev/zero")
             .find("imports.sfc:1:8: error: cannot read imported file '/dev/zero': not a regular "
                   "file") != std::string::npos);
-  // A read that fails is an error, never the end of the file: /proc/self/mem is a regular file
-  // whose read(2) at offset 0 fails (the page is not mapped), which a stream took for an empty file.
+  // /proc/self/mem, a regular file whose read(2) at offset 0 fails (a stream took it for an empty
+  // file), is not even opened: no file of /proc is read (tests/cli/special_files.sh has the rest).
   CHECK(importing("/proc/self/mem")
-            .find("imports.sfc:1:8: error: cannot read imported file '/proc/self/mem': "
-                  "permission denied or an I/O error") != std::string::npos);
+            .find("imports.sfc:1:8: error: cannot read imported file '/proc/self/mem': a file of /proc, /sys or "
+                  "another of the kernel's pseudo file systems; gfec reads none") != std::string::npos);
+  // A megabyte-long import path beside a thousand files: refused by its length before it is split,
+  // searched for or offered a did-you-mean (0.7 s and 190 MB before, for 'a/a/a/...').
+  for (int i = 0; i < 1000; ++i)
+    write_file(dir + "/f" + std::to_string(i) + ".iface", "interface I" + std::to_string(i) + " { }\n");
+  std::string huge;
+  for (int i = 0; i < 500000; ++i) huge += "a/";
+  CHECK(importing(huge).find(
+            "imports.sfc:1:8: error: an import path is at most 4096 bytes; this one has 1000000 [import]") !=
+        std::string::npos);
+  CHECK(importing(std::string(4097, 'f')).find("this one has 4097 [import]") != std::string::npos);
+  CHECK(importing(std::string(4000, 'f')).find("cannot find imported file") != std::string::npos);
   CommandResult main_mem = run_command(gfec_exe + " --check /proc/self/mem");
   CHECK(main_mem.exit_code == 2);
 }
