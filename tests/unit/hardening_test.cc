@@ -105,6 +105,45 @@ TEST_CASE("hardening: chains of 200 terms still compile with every back end", "[
   }
 }
 
+TEST_CASE("hardening: a flat else-if chain is not nesting; a nested if is", "[hardening]") {
+  std::string dir = scratch_dir("hardening_else_if");
+  // A place whose entry block is `if (x == 0) {...} else if (x == 1) {...} ...`, n branches, or
+  // n ifs each inside the one before.
+  auto chart = [](int n, bool nested) {
+    std::string body;
+    for (int i = 0; i < n; ++i) body += fmt::format("{}if (x == {}) {{ Act({}); ", i && !nested ? "} else " : "", i, i);
+    body += nested ? std::string(static_cast<std::size_t>(n), '}') : "}";
+    return "interface I { void Act(int v); }\nsfc X {\n  var int x = 1;\n  initial place A { x = x + 1; " + body +
+           " }\n  place B;\n  A -> B when x > 2;\n  B -> A;\n}\n";
+  };
+  // 255 branches were "expression nested too deeply" (each `else if` counted one level); 1024
+  // go through every back end, the analyses and the interpreter.
+  for (int n : {255, 1024}) {
+    INFO(n << " branches");
+    write_file(dir + "/chain.sfc", chart(n, false));
+    for (std::string emit : {"c", "json", "dot", "chart"}) {
+      INFO("--emit=" << emit);
+      CommandResult r = run_command(gfec_exe + " --emit=" + emit + " " + dir + "/chain.sfc -o " + dir + "/out." + emit);
+      CHECK(r.exit_code == 0);
+      CHECK(r.out == "");
+    }
+    CHECK(run_command(gfec_exe + " --analyze " + dir + "/chain.sfc").exit_code == 0);
+    CommandResult run = run_command(gfec_exe + " run " + dir + "/chain.sfc --ticks 3");
+    CHECK(run.exit_code == 0);
+    CHECK(run.out.find("Act(2)") != std::string::npos);
+  }
+  write_file(dir + "/chain.sfc", chart(1025, false));
+  CommandResult longer = run_command(gfec_exe + " --check " + dir + "/chain.sfc");
+  CHECK(longer.exit_code == 1);
+  CHECK(longer.out.find("chain.sfc:4:") != std::string::npos);
+  CHECK(longer.out.find("error: an 'else if' chain longer than 1024 branches [nesting]") != std::string::npos);
+  // Nesting is still bounded: 300 ifs each inside the one before.
+  write_file(dir + "/nested.sfc", chart(300, true));
+  CommandResult nested = run_command(gfec_exe + " --check " + dir + "/nested.sfc");
+  CHECK(nested.exit_code == 1);
+  CHECK(nested.out.find("error: expression nested too deeply (more than 256 levels) [nesting]") != std::string::npos);
+}
+
 TEST_CASE("hardening: a NUL in an import path is an error at the string", "[hardening]") {
   FrontEnd fe({{"m.sfc", "import \"a.iface\\0.sfc\";\n"}, {"a.iface", "interface A { void Go(); }\n"}});
   CHECK(fe.text() == "m.sfc:1:8: error: an import path cannot contain a NUL character [import]\n"
