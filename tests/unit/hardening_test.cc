@@ -144,6 +144,36 @@ TEST_CASE("hardening: a flat else-if chain is not nesting; a nested if is", "[ha
   CHECK(nested.out.find("error: expression nested too deeply (more than 256 levels) [nesting]") != std::string::npos);
 }
 
+TEST_CASE("hardening: --emit=chart writes extreme constants so that they read back", "[hardening]") {
+  // INT_MIN has no literal; a float folded to -FLT_MAX is shortest as -3.4028235e+38, a double
+  // past FLT_MAX; durations below a tick and past the timers. The chart written must compile to
+  // the same engine as the chart it came from, and write itself again unchanged.
+  std::string dir = scratch_dir("hardening_chart_round_trip");
+  run_command("mkdir -p " + dir + "/a " + dir + "/b");
+  write_file(dir + "/a/s.sfc",
+             "interface I { void Act(int v); void F(float f); }\n"
+             "const int LOW = -2147483647 - 1;\nconst int HIGH = 2147483647;\n"
+             "const float BIG = -3.4028234e38;\nconst float SMALL = 1e-38;\n"
+             "sfc S {\n  period 10ms;\n  var int x = -2147483647 - 1;\n  var float f = -0.0;\n"
+             "  initial place A { Act(LOW); Act(x); Act(HIGH); Act(-(LOW + 1)); F(BIG); F(SMALL); F(f); Act(- -5); }\n"
+             "  place B;\n"
+             "  A -> B when elapsed(A) >= 1e-9ms && x == -2147483647 - 1 || elapsed(A) > 4294967295000ms;\n"
+             "  B -> A when elapsed(B) >= 0.1s;\n}\n");
+  CommandResult to_chart = run_command(gfec_exe + " --emit=chart " + dir + "/a/s.sfc -o " + dir + "/b/s.sfc");
+  REQUIRE(to_chart.exit_code == 0);
+  CHECK(read_file(dir + "/b/s.sfc").find("const int LOW = (-2147483647 - 1);") != std::string::npos);
+  CommandResult again = run_command(gfec_exe + " --emit=chart " + dir + "/b/s.sfc -o " + dir + "/again.sfc");
+  CHECK(again.out == "");
+  REQUIRE(again.exit_code == 0);
+  std::string written = read_file(dir + "/b/s.sfc"), rewritten = read_file(dir + "/again.sfc");
+  CHECK(written.substr(written.find('\n')) == rewritten.substr(rewritten.find('\n')));  // all but "from FILE"
+  for (std::string side : {"a", "b"})
+    CHECK(run_command("cd " + dir + "/" + side + " && " + gfec_exe + " s.sfc --no-line-directives -o e.c").exit_code ==
+          0);
+  CHECK(read_file(dir + "/a/e.c") == read_file(dir + "/b/e.c"));
+  CHECK(read_file(dir + "/a/e.h") == read_file(dir + "/b/e.h"));
+}
+
 TEST_CASE("hardening: a NUL in an import path is an error at the string", "[hardening]") {
   FrontEnd fe({{"m.sfc", "import \"a.iface\\0.sfc\";\n"}, {"a.iface", "interface A { void Go(); }\n"}});
   CHECK(fe.text() == "m.sfc:1:8: error: an import path cannot contain a NUL character [import]\n"
