@@ -116,4 +116,24 @@ elif [ "${CI:-}" = true ]; then
 else
   echo "skipping the JSON parse: node is not installed"
 fi
+# Output names. The engine includes its header by name, and #include "..." takes no escapes: a
+# name it cannot hold is refused (exit 2, nothing written), never an engine that cannot find
+# its header. A valid name of 240 to 255 bytes is written (its temporary's name is cut to fit).
+for name in 'q"x.c' 'a\b.c' 'tri??-.c' "$(printf 'n\nl.c')"; do
+  run line_follower.sfc -o "$name"
+  expect_error 2 "cannot name the header '.*' in the engine's #include"
+  no_forged_lines
+done
+[ -z "$(find . -name '*.h' ! -name '*.iface' -newer line_follower.sfc)" ] || fail "a refused name wrote a header"
+for length in 240 253; do
+  name=$(printf "%${length}s" "" | tr ' ' e)  # NAME.c: 242 and 255 bytes, NAME.h beside it
+  run line_follower.sfc -o "$name.c"
+  [ $code -eq 0 ] || fail "a $((length + 2))-byte output name: exit $code: $(cat err)"
+  [ -f "$name.c" ] && [ -f "$name.h" ] || fail "a $((length + 2))-byte output name was not written"
+  if command -v cc >/dev/null 2>&1; then
+    cc -std=c99 -Wall -Wextra -Wpedantic -Werror -c "$name.c" -o long.o || fail "the engine of a long name does not compile"
+  fi
+  if ls | grep -q gfec-tmp; then fail "a temporary was left: $(ls | grep gfec-tmp)"; fi
+done
+
 echo "special files and names: ok"
