@@ -175,7 +175,7 @@ std::string render_text(const Diagnostic &d, const SourceManager &sources, const
   const char *color = severity_color(d.severity);
   std::string out =
       fmt::format("{} {} {}", paint(style, kBold, location(d.range, sources) + ":"),
-                  paint(style, color, std::string(severity_name(d.severity)) + ":"), text::printable(d.message, true));
+                  paint(style, color, std::string(severity_name(d.severity)) + ":"), text::printable(d.message));
   if (d.kind) out += fmt::format(" [{}]", paint(style, color, check_label(d)));
   out += '\n';
   quote(out, d.range, style.fixits ? d.fixits : std::vector<FixIt>{}, sources, style);
@@ -190,7 +190,7 @@ std::string render_text(const Diagnostic &d, const SourceManager &sources, const
   for (const auto &n : d.notes) {
     const SourceRange &at = n.has_range ? n.range : d.range;
     out += fmt::format("{} {} {}\n", paint(style, kBold, location(at, sources) + ":"),
-                       paint(style, severity_color(Severity::Note), "note:"), text::printable(n.message, true));
+                       paint(style, severity_color(Severity::Note), "note:"), text::printable(n.message));
     if (n.has_range) quote(out, n.range, {}, sources, style);
   }
   return out;

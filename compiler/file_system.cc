@@ -1,10 +1,15 @@
 #include "file_system.h"
 
+#include "escape.h"
+
 #include <algorithm>
 #include <filesystem>
 #include <cerrno>
+#include <cstdint>
+#include <cstring>
 #include <fcntl.h>
 #include <sys/stat.h>
+#include <sys/statfs.h>
 #include <unistd.h>
 
 namespace gfec {
@@ -48,49 +53,120 @@ std::vector<std::string> below(const std::string &dir, const std::vector<std::st
 
 }  // namespace
 
-std::optional<std::string> RealFileSystem::read(const std::string &path) const {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) return std::nullopt;
+namespace {
+
+/// The pseudo file systems whose files are the kernel's, not data (linux/magic.h): their sizes
+/// say 0 or lie, a read may block (/proc/kmsg), consume (the kernel log) or act (sysfs).
+bool kernel_file_system(unsigned long type) {
+  switch (type) {
+  case 0x9fa0UL:      // procfs
+  case 0x62656572UL:  // sysfs
+  case 0x64626720UL:  // debugfs
+  case 0x74726163UL:  // tracefs
+  case 0x73636673UL:  // securityfs
+  case 0x27e0ebUL:    // cgroup
+  case 0x63677270UL:  // cgroup2
+  case 0x62656570UL:  // configfs
+  case 0xcafe4a11UL:  // bpf
+  case 0xde5e81e4UL:  // efivarfs
+  case 0x6165676cUL:  // pstore
+  case 0x42494e4dUL:  // binfmt_misc
+  case 0x65735543UL:  // fusectl
+  case 0xf97cff8cUL:  // selinuxfs
+  case 0x43415d53UL:  // smackfs
+    return true;
+  default: return false;
+  }
+}
+
+constexpr const char *kKernelFile =
+    "a file of /proc, /sys or another of the kernel's pseudo file systems; gfec reads none";
+
+std::string mib(std::size_t bytes) { return std::to_string(bytes >> 20) + " MiB"; }
+
+/// Why a file with this status is not read, or "" if it may be.
+std::string refusal(const struct stat &st, std::size_t max_file) {
+  if (S_ISDIR(st.st_mode)) return "it is a folder";
+  if (!S_ISREG(st.st_mode)) return "not a regular file; gfec reads no devices, pipes or sockets";
+  if (st.st_size > 0 && static_cast<std::uintmax_t>(st.st_size) > max_file)
+    return "larger than " + mib(max_file) + ", the most gfec reads of one file";
+  return {};
+}
+
+std::string error_reason(int error) {
+  return error == ENOENT || error == ENOTDIR ? "no such file"
+         : error == EACCES                   ? "permission denied"
+                                             : std::strerror(error);
+}
+
+}  // namespace
+
+FileText RealFileSystem::read(const std::string &path) const {
+  auto refused = [](std::string why) { return FileText{std::nullopt, std::move(why)}; };
+  // Looked at before it is opened, since opening may act already (a FIFO's open waits for a
+  // writer, a device's driver runs), and again on what was opened: the path may have changed
+  // in between. Symlinks are followed (a symlinked import is fine): the checks are on the file
+  // they lead to.
+  struct stat st {};
+  struct statfs sfs {};
+  if (::stat(path.c_str(), &st) != 0) return refused(error_reason(errno));
+  if (std::string why = refusal(st, limits_.max_file); !why.empty()) return refused(why);
+  if (::statfs(path.c_str(), &sfs) == 0 && kernel_file_system(static_cast<unsigned long>(sfs.f_type)))
+    return refused(kKernelFile);
+  // O_NONBLOCK: should a FIFO or device replace the file after the checks, open() returns at
+  // once and fstat refuses it; O_NOCTTY: a terminal never becomes gfec's controlling one.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NOCTTY | O_NONBLOCK);
+  if (fd < 0) return refused(error_reason(errno));
+  struct Closer {
+    int fd;
+    ~Closer() { ::close(fd); }
+  } closer{fd};
+  if (::fstat(fd, &st) != 0) return refused(error_reason(errno));
+  if (std::string why = refusal(st, limits_.max_file); !why.empty()) return refused(why);
+  if (::fstatfs(fd, &sfs) != 0 || kernel_file_system(static_cast<unsigned long>(sfs.f_type)))
+    return refused(kKernelFile);
+  const int flags = ::fcntl(fd, F_GETFL);
+  if (flags < 0 || ::fcntl(fd, F_SETFL, flags & ~O_NONBLOCK) != 0) return refused(error_reason(errno));
+
+  const std::size_t size = st.st_size > 0 ? static_cast<std::size_t>(st.st_size) : 0;
+  const std::size_t before = total_.load();
+  auto too_much = [this] {
+    return "the files read so far and this one are larger than " + mib(limits_.max_total) +
+           ", the most gfec reads for one input";
+  };
+  if (before + size > limits_.max_total) return refused(too_much());
   // read(2) rather than a stream: a filebuf reports a failed read (EIO, or a file like
   // /proc/self/mem that refuses to be read) as the end of the file, and a truncated chart would
   // then be compiled as if it were whole.
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NOCTTY);
-  if (fd < 0) return std::nullopt;
-  // Read into a string sized from fstat: appending in chunks would grow it by doubling, and a
-  // 90 MB chart would touch three times its size in fresh pages. Reading still goes on to the
-  // end of the file, so one that grew meanwhile is read whole and one that shrank is not padded.
-  auto read_some = [fd](char *into, std::size_t size) {
+  auto read_some = [fd](char *into, std::size_t count) {
     ssize_t n;
-    do n = ::read(fd, into, size);
+    do n = ::read(fd, into, count);
     while (n < 0 && errno == EINTR);
     return n;
   };
-  struct stat st {};
-  std::string text;
-  if (::fstat(fd, &st) == 0 && st.st_size > 0) text.resize(static_cast<std::size_t>(st.st_size));
+  // Read into a string sized from fstat: appending in chunks would grow it by doubling, and a
+  // 90 MB chart would touch three times its size in fresh pages. Reading still goes on to the
+  // end of the file, so one that grew meanwhile is read whole and one that shrank is not padded;
+  // but never past the limit, whatever the size said.
+  std::string text(size, '\0');
   std::size_t used = 0;
   ssize_t n = 1;
   while (used < text.size() && (n = read_some(text.data() + used, text.size() - used)) > 0)
     used += static_cast<std::size_t>(n);
   text.resize(used);
   char buffer[65536];
-  while (n > 0 && (n = read_some(buffer, sizeof buffer)) > 0) text.append(buffer, static_cast<std::size_t>(n));
-  ::close(fd);
-  if (n < 0) return std::nullopt;
-  return text;
+  while (n > 0 && text.size() <= limits_.max_file && (n = read_some(buffer, sizeof buffer)) > 0)
+    text.append(buffer, static_cast<std::size_t>(n));
+  if (n < 0) return refused(error_reason(errno));
+  if (text.size() > limits_.max_file)
+    return refused("larger than " + mib(limits_.max_file) + ", the most gfec reads of one file");
+  if (total_.fetch_add(text.size()) + text.size() > limits_.max_total) return refused(too_much());
+  return FileText{std::move(text), {}};
 }
 
-std::string unreadable_reason(const std::string &path) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const fs::file_status st = fs::status(path, ec);
-  return !fs::exists(st)            ? "no such file"
-         : fs::is_directory(st)     ? "it is a folder"
-         : !fs::is_regular_file(st) ? "not a regular file; gfec reads no devices, pipes or sockets"
-                                    : "permission denied or an I/O error";
+std::string cannot_read(const std::string &path, const std::string &why) {
+  return "cannot read '" + text::printable(path) + "': " + why;
 }
-
-std::string cannot_read(const std::string &path) { return "cannot read '" + path + "': " + unreadable_reason(path); }
 
 std::vector<std::string> RealFileSystem::list(const std::string &dir) const {
   std::vector<std::string> names;
@@ -142,10 +218,10 @@ std::optional<std::string> RealFileSystem::identity(const std::string &path) con
   return std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino);
 }
 
-std::optional<std::string> MemoryFileSystem::read(const std::string &path) const {
+FileText MemoryFileSystem::read(const std::string &path) const {
   auto it = files_.find(path);
-  if (it == files_.end()) return std::nullopt;
-  return it->second;
+  if (it == files_.end()) return FileText{std::nullopt, "no such file"};
+  return FileText{it->second, {}};
 }
 
 void OverlayFileSystem::open(const std::string &path, std::string text) {
@@ -154,9 +230,9 @@ void OverlayFileSystem::open(const std::string &path, std::string text) {
 
 void OverlayFileSystem::close(const std::string &path) { buffers_.erase(normal_path(path)); }
 
-std::optional<std::string> OverlayFileSystem::read(const std::string &path) const {
+FileText OverlayFileSystem::read(const std::string &path) const {
   auto it = buffers_.find(normal_path(path));
-  if (it != buffers_.end()) return it->second;
+  if (it != buffers_.end()) return FileText{it->second, {}};
   return base_.read(path);
 }
 

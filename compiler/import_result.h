@@ -29,6 +29,7 @@ struct LoadResult {
   ast::Program program;                     ///< main file first, then imports in the order first reached
   std::vector<std::string> paths;           ///< the path of every file read, in the same order
   bool main_unreadable = false;             ///< the main file itself could not be read (an I/O error)
+  std::string main_unreadable_why;          ///< why not (FileText::why)
   const InputLanguage *language = nullptr;  ///< the main file's, once it was read
   std::vector<SourceElement> elements;      ///< ALICA input: every plan, state, transition... read
 };

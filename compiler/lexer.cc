@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
 
 namespace gfec {
@@ -239,9 +240,17 @@ Token Lexer::number(std::uint32_t begin) {
     while (is_ident_char(peek())) ++pos_;
     std::string_view suffix = text_.substr(suffix_begin, pos_ - suffix_begin);
     if (suffix == "ms" || suffix == "s") {
-      Token t = make(Tok::Duration, begin);
       double value = std::strtod(std::string(text_.substr(begin, number_end - begin)).c_str(), nullptr);
-      t.duration_ms = suffix == "s" ? value * 1000.0 : value;
+      const double ms = suffix == "s" ? value * 1000.0 : value;
+      // As for numbers: a duration that overflows (1e999s) or underflows (1e-999ms, which would
+      // read as 0) is an error where it is written, never infinity or nothing.
+      const std::string_view written = text_.substr(begin, pos_ - begin);
+      if (!std::isfinite(ms)) return error(begin, pos_, fmt::format("duration '{}' is too large", written));
+      const std::string_view digits = text_.substr(begin, number_end - begin);
+      if (ms == 0 && digits.find_first_of("123456789") < digits.find_first_of("eE"))
+        return error(begin, pos_, fmt::format("duration '{}' is too small: it would read as 0", written));
+      Token t = make(Tok::Duration, begin);
+      t.duration_ms = ms;
       return t;
     }
     return error(begin, pos_,

@@ -19,6 +19,7 @@ namespace fsys = std::filesystem;
 /// Imports deeper than this are refused: a chain this long is a generated mistake, and the
 /// loader recurses once per level.
 constexpr std::size_t kMaxImportDepth = 200;
+constexpr std::size_t kMaxImportPath = 4096;  // PATH_MAX: no longer path opens
 
 std::string normal(const fsys::path &p) {
   std::string s = p.lexically_normal().generic_string();
@@ -56,7 +57,16 @@ private:
       diag_.error(import.range, ErrorKind::Import, "an import path cannot contain a NUL character");
       return;
     }
+    // No system opens a longer path (PATH_MAX); refused before it is split, searched or quoted
+    // in notes, so a megabyte-long string costs nothing.
+    if (import.path.size() > kMaxImportPath) {
+      diag_.error(
+          import.range, ErrorKind::Import,
+          fmt::format("an import path is at most {} bytes; this one has {}", kMaxImportPath, import.path.size()));
+      return;
+    }
     std::vector<std::string> tried;
+    std::vector<std::pair<std::string, std::string>> refused;  ///< path, why
     fsys::path dir = fsys::path(from).parent_path();
     std::vector<fsys::path> candidates;
     fsys::path wanted(import.path);
@@ -75,7 +85,10 @@ private:
       }
       tried.push_back(path);
       auto text = fs_.read(path);
-      if (!text) continue;
+      if (!text) {
+        if (fs_.identity(path)) refused.emplace_back(path, text.why);  // there, but not read
+        continue;
+      }
       // The same file by another path (absolute, or through a symlinked folder): read once.
       if (auto id = fs_.identity(path)) {
         auto same = by_identity_.find(*id);
@@ -94,12 +107,11 @@ private:
       return;
     }
     // A file that is there but cannot be read (a device, a folder, an I/O error) is no typo.
-    for (const auto &t : tried)
-      if (fs_.identity(t)) {
-        diag_.error(import.range, ErrorKind::Import,
-                    fmt::format("cannot read imported file '{}': {}", t, unreadable_reason(t)));
-        return;
-      }
+    if (!refused.empty()) {
+      diag_.error(import.range, ErrorKind::Import,
+                  fmt::format("cannot read imported file '{}': {}", refused.front().first, refused.front().second));
+      return;
+    }
     auto &d = diag_.error(import.range, ErrorKind::Import, fmt::format("cannot find imported file '{}'", import.path));
     for (const auto &t : tried) d.note(fmt::format("looked for '{}'", t));
     suggest_file(d, import, candidates);
@@ -179,6 +191,7 @@ LoadResult load_program(const std::string &main_path, const LoadOptions &options
   auto text = fs.read(main_path);
   if (!text) {
     result.main_unreadable = true;
+    result.main_unreadable_why = text.why;
     return result;
   }
   const InputLanguage &language = options.language ? *options.language : input_language_of(main_path, *text);

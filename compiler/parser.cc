@@ -181,7 +181,7 @@ private:
 
   // ------------------------------------------------------------ statements and expressions
   Stmt statement();
-  Stmt if_statement();
+  Stmt if_statement(int chain = 0);  ///< chain: the `else if`s before this `if`
   ExprPtr expr() { return binary(1); }
   ExprPtr binary(int min_precedence);
   ExprPtr unary();
@@ -762,8 +762,17 @@ Stmt Parser::statement() {
 }
 
 //G if_statement: 'if' '(' expr ')' block [ 'else' ( if_statement | block ) ]
-Stmt Parser::if_statement() {
-  DepthGuard guard(*this);  // `else if` chains and nested blocks recurse
+Stmt Parser::if_statement(int chain) {
+  // A block inside an `if` is one level deeper; the `if` of an `else if` is not (it is the next
+  // branch of a flat chain) but still a level of the tree every later walk recurses along, so
+  // chains have a bound of their own.
+  std::optional<DepthGuard> guard;
+  if (chain == 0) guard.emplace(*this);
+  if (chain >= kMaxElseIfChain) {
+    diag_.error(tok_.range, ErrorKind::Nesting,
+                fmt::format("an 'else if' chain longer than {} branches", kMaxElseIfChain));
+    throw SyntaxError{};
+  }
   std::uint32_t begin = here();
   advance();
   Stmt s;
@@ -777,7 +786,7 @@ Stmt Parser::if_statement() {
     s.has_else = true;
     if (at(Tok::KwIf)) {
       s.else_if = true;
-      s.else_block.push_back(if_statement());
+      s.else_block.push_back(if_statement(chain + 1));
     } else {
       if (!at(Tok::LBrace)) fail("expected '{' or 'if' after 'else'");
       s.else_block = block();

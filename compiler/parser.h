@@ -13,6 +13,9 @@ namespace gfec {
 /// brackets, unary operators, calls and each binary operator of a chain count one level, so
 /// every later recursive walk of an expression (validator, back ends, interpreter) is bounded.
 constexpr int kMaxNesting = 256;
+/// The branches of one `if ... else if ...` chain, at most: each is a level of the syntax tree
+/// and of the model, and the passes over them recurse.
+constexpr int kMaxElseIfChain = 1024;
 
 /// Parses one file. Syntax errors are reported to `diag`; the parser recovers at the next
 /// declaration or statement, so one run reports every independent error.

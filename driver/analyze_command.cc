@@ -1,5 +1,6 @@
 #include "analyze_command.h"
 
+#include "escape.h"
 #include "analysis/analysis.h"
 #include "diagnostic_report.h"
 #include "driver.h"
@@ -36,11 +37,11 @@ int analyze_one(const std::string &input, const Options &o, DiagnosticReport &re
   if (c.front_end(input)) summary = analysis::analysis_report(c.model, c.diag);
   report.add(input, c.diag, c.sources);
   if (c.unreadable()) {
-    report.tool_error(input, cannot_read(input), false);
+    report.tool_error(input, c.cannot_read_main(input), false);
     return kExitUsageOrIo;
   }
   if (c.diag.has_errors()) return kExitInputError;
-  out << fmt::format("{}:\n", input);
+  out << fmt::format("{}:\n", text::printable(input));
   if (summary.empty()) summary = "  no sfc, fsm or plan to analyse\n";
   for (std::size_t at = 0, nl; (nl = summary.find('\n', at)) != std::string::npos; at = nl + 1)
     out << "  " << summary.substr(at, nl - at + 1);

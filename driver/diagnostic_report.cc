@@ -3,6 +3,7 @@
 #include "diagnostic_printer.h"
 #include "diagnostics_json.h"
 #include "diagnostics_sarif.h"
+#include "escape.h"
 
 #include <fmt/format.h>
 
@@ -30,7 +31,9 @@ public:
     if (diag.limit_reached()) err_ << limit_message(diag) << "\n";
   }
   void tool_error(const std::string &input, const std::string &message, bool text_names_input) override {
-    err_ << fmt::format("{}: error: {}\n", text_names_input && !input.empty() ? input : "gfec", message);
+    // Both may quote a file name or a chart's string: one line each, never a forged one.
+    err_ << fmt::format("{}: error: {}\n", text_names_input && !input.empty() ? text::printable(input) : "gfec",
+                        text::printable(message));
   }
   std::string finish(int) override {
     // gcc's closing line when -Werror (not -Werror=NAME) turned a warning into the failure.

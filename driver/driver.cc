@@ -90,7 +90,7 @@ int compile(const Options &o, DiagnosticReport &report, std::ostream &out) {
   }
   report.add(input, c.diag, c.sources);
   if (c.unreadable()) {
-    report.tool_error(input, cannot_read(input), false);
+    report.tool_error(input, c.cannot_read_main(input), false);
     return kExitUsageOrIo;
   }
   if (!ok) return kExitInputError;
@@ -210,7 +210,7 @@ int check_all(const Options &o, DiagnosticReport &report, std::ostream &out) {
 int finish_report(DiagnosticReport &report, int code, std::ostream &err) {
   std::string failure = report.finish(code);
   if (failure.empty()) return code;
-  err << "gfec: error: " << failure << "\n";
+  err << "gfec: error: " << text::printable(failure) << "\n";
   return kExitUsageOrIo;
 }
 

@@ -3,10 +3,13 @@
 #include "backend_registry.h"
 #include "commands.h"
 #include "did_you_mean.h"
+#include "escape.h"
 #include "input_languages.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
+
+#include <sstream>
 
 namespace gfec {
 
@@ -188,12 +191,27 @@ void add_front_end_options(CLI::App &app, Options &o, FrontEndFlags &flags) {
       ->allow_extra_args(false);
 }
 
+namespace {
+
+/// CLI11's message for `e` with the error's own text (which quotes the command line: a file name
+/// from a glob may hold a newline) escaped as every message gfec prints is (support/escape.h).
+std::string printable_error(std::string message, const CLI::ParseError &e) {
+  const std::string what = e.what();
+  if (auto at = message.find(what); !what.empty() && at != std::string::npos)
+    message.replace(at, what.size(), text::printable(what));
+  return message;
+}
+
+}  // namespace
+
 std::optional<int> parse_subcommand(CLI::App &app, int argc, const char *const *argv, std::ostream &out,
                                     std::ostream &err, const char *command) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError &e) {
-    int code = app.exit(e, out, err);
+    std::ostringstream error;
+    int code = app.exit(e, out, error);
+    err << printable_error(error.str(), e);
     if (code != 0) err << "Run 'gfec " << command << " --help' for the options.\n";
     return code == 0 ? 0 : 2;
   }
@@ -243,7 +261,7 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
   if (!dep_error.empty()) {
     result.exit_now = true;
     result.exit_code = 2;
-    result.message = "gfec: error: " + dep_error + "\nRun 'gfec --help' for the options.\n";
+    result.message = "gfec: error: " + text::printable(dep_error) + "\nRun 'gfec --help' for the options.\n";
     return result;
   }
 
@@ -253,7 +271,7 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
     result.exit_now = true;
     std::ostringstream out, err;
     result.exit_code = app.exit(e, out, err) == 0 ? 0 : 2;
-    result.message = result.exit_code == 0 ? out.str() : err.str();
+    result.message = result.exit_code == 0 ? out.str() : printable_error(err.str(), e);
     if (result.exit_code != 0) result.message += "Run 'gfec --help' for the options.\n";
     return result;
   }
@@ -261,7 +279,7 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
   auto usage_error = [&](std::string message) {
     result.exit_now = true;
     result.exit_code = 2;
-    result.message = "gfec: error: " + message + "\n";
+    result.message = "gfec: error: " + text::printable(message) + "\n";
     return result;
   };
   if (o.inputs.empty()) {

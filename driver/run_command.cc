@@ -1,5 +1,6 @@
 #include "run_command.h"
 
+#include "escape.h"
 #include "backend_registry.h"
 #include "diagnostic_report.h"
 #include "driver.h"
@@ -155,7 +156,7 @@ int run_with(const RunOptions &o, DiagnosticReport &report, std::ostream &out) {
   pipeline::Compilation c(f);
   c.front_end(o.input);
   if (c.unreadable()) {
-    report.tool_error(o.input, cannot_read(o.input), false);
+    report.tool_error(o.input, c.cannot_read_main(o.input), false);
     return kExitUsageOrIo;
   }
   report.add(o.input, c.diag, c.sources);
@@ -194,7 +195,7 @@ int run_with(const RunOptions &o, DiagnosticReport &report, std::ostream &out) {
   if (!o.inputs_csv.empty()) {
     auto text = fs.read(o.inputs_csv);
     if (!text) {
-      report.tool_error(o.inputs_csv, cannot_read(o.inputs_csv), false);
+      report.tool_error(o.inputs_csv, cannot_read(o.inputs_csv, text.why), false);
       return kExitUsageOrIo;
     }
     FileId id = c.sources.add(o.inputs_csv, *text);
@@ -271,7 +272,7 @@ int run_command(int argc, const char *const *argv, std::ostream &out, std::ostre
   // The text style gfec run has always printed: no line-number gutter unless asked for.
   o.report.line_numbers = false;
   if (std::string why = front_end.apply(o.report); !why.empty()) {
-    err << "gfec: error: " << why << "\nRun 'gfec run --help' for the options.\n";
+    err << "gfec: error: " << text::printable(why) << "\nRun 'gfec run --help' for the options.\n";
     return kExitUsageOrIo;
   }
   auto report = make_report(o.report, err);

@@ -1,5 +1,6 @@
 #include "test_command.h"
 
+#include "escape.h"
 #include "diagnostic_printer.h"
 #include "diagnostic_report.h"
 #include "driver.h"
@@ -54,6 +55,7 @@ struct TestFile {
   model::Model &model = c.model;
   scenario::Suite suite;
   bool unreadable = false;
+  std::string unreadable_why;  ///< "cannot read 'x.test': ...", when unreadable
   /// What the file stands for in the results when it cannot run: each `test` block written in
   /// it that --filter selects, or the file itself when it declares none.
   std::vector<std::string> broken_tests(const std::string &filter) const {
@@ -127,10 +129,15 @@ public:
     if (!o_.reference_only) {
       b = builds_.get(m, test.chart, chart_file(file, test.chart), test.agents);
       if (b.program.empty()) {
-        out.diag
-            .error(test.range, ErrorKind::TestEngine,
-                   fmt::format("cannot build the C engine for '{}'", m.charts[test.chart].name))
-            .note(b.error);
+        auto &d = out.diag.error(test.range, ErrorKind::TestEngine,
+                                 fmt::format("cannot build the C engine for '{}'", m.charts[test.chart].name));
+        // The compiler's output, a note a line: a message is printed on one line, its line
+        // breaks escaped (a line of its own could forge a diagnostic or a CI command).
+        for (std::size_t at = 0, nl; at < b.error.size(); at = nl + 1) {
+          nl = b.error.find('\n', at);
+          if (nl == std::string::npos) nl = b.error.size();
+          if (nl > at) d.note(b.error.substr(at, nl - at));
+        }
       } else {
         eng = builds_.run(b, m, test, id, &keep);
       }
@@ -242,7 +249,10 @@ private:
 void load(TestFile &f) {
   RealFileSystem fs;
   f.c.front_end(f.path, fs, &f.suite);
-  if (f.c.unreadable()) f.unreadable = true;
+  if (f.c.unreadable()) {
+    f.unreadable = true;
+    f.unreadable_why = f.c.cannot_read_main(f.path);
+  }
   // A file with nothing to run is a mistake of the command line a CI step must not pass green
   // (a glob that picked the charts instead of their tests).
   else if (!f.diag.has_errors() && f.suite.written.empty())
@@ -350,7 +360,7 @@ int test_with(const TestOptions &o, std::ostream &out, std::ostream &err) {
   std::size_t passed = 0, failed = broken;
   for (const auto &f : files) {
     if (f->unreadable) {
-      report->tool_error(f->path, cannot_read(f->path), false);
+      report->tool_error(f->path, f->unreadable_why, false);
       continue;
     }
     report->add(f->path, f->diag, f->sources);
@@ -359,7 +369,9 @@ int test_with(const TestOptions &o, std::ostream &out, std::ostream &err) {
       report->add(f->path, oc->diag, f->sources);
       if (oc->passed()) ++passed;
       else ++failed;
-      if (o.verbose) out << fmt::format("{} {}: {}\n", oc->passed() ? "PASS" : "FAIL", f->path, oc->test->name);
+      if (o.verbose)
+        out << fmt::format("{} {}: {}\n", oc->passed() ? "PASS" : "FAIL", text::printable(f->path),
+                           text::printable(oc->test->name));
     }
   }
   if (!o.junit.empty()) {
@@ -402,7 +414,7 @@ int test_command(int argc, const char *const *argv, std::ostream &out, std::ostr
   add_front_end_options(app, o.report, front_end);
   if (auto code = parse_subcommand(app, argc, argv, out, err, "test")) return *code;
   auto usage = [&](const std::string &message) {
-    err << "gfec: error: " << message << "\nRun 'gfec test --help' for the options.\n";
+    err << "gfec: error: " << text::printable(message) << "\nRun 'gfec test --help' for the options.\n";
     return kExitUsageOrIo;
   };
   if (o.engine_only && o.reference_only) return usage("--engine-only and --reference-only exclude each other");

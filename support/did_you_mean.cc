@@ -60,7 +60,7 @@ std::size_t edit_distance_within(std::string_view a, std::string_view b, std::si
 bool NearestName::offer(std::string_view candidate) {
   // A candidate as near as the best so far loses (the first offered wins), so the bound is one
   // less than the best: a length gap larger than it costs nothing.
-  if (best_ == 0) return false;
+  if (best_ == 0 || name_.size() > kMaxSuggestedLength || ++offered_ > kMaxSuggestionCandidates) return false;
   const std::size_t d = edit_distance_within(name_, candidate, best_ - 1);
   if (d >= best_) return false;
   best_ = d;

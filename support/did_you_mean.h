@@ -21,6 +21,10 @@ std::size_t edit_distance_within(std::string_view a, std::string_view b, std::si
 /// edit distance costs the product of the lengths).
 constexpr std::size_t kMaxSuggestedLength = 64;
 
+/// Of more candidates than this only the first are weighed: a did-you-mean over a folder of a
+/// million files, or a chart of a million names, costs at most this many comparisons.
+constexpr std::size_t kMaxSuggestionCandidates = 100000;
+
 /// How many edits a typo of a name `length` long may hold: about a third of the name, at least
 /// one; close enough to be a typo, far enough apart that short unrelated names are not offered.
 constexpr std::size_t typo_limit(std::size_t length) { return std::max<std::size_t>(1, (length + 1) / 3); }
@@ -29,7 +33,8 @@ constexpr std::size_t typo_limit(std::size_t length) { return std::max<std::size
 /// several equally near the first offered, so a note is deterministic. Only a nearer candidate
 /// costs work (the distance is computed within the best so far), so thousands of near-identical
 /// names stay cheap. A candidate equal to the name is distance 0 like any other: callers that
-/// never suggest the name itself skip it.
+/// never suggest the name itself skip it. A name longer than kMaxSuggestedLength finds nothing,
+/// and only the first kMaxSuggestionCandidates offered are weighed.
 class NearestName {
 public:
   NearestName(std::string_view name, std::size_t limit) : name_(name), best_(limit + 1) {}
@@ -44,6 +49,7 @@ public:
 private:
   std::string_view name_;
   std::size_t best_;  ///< the nearest distance so far, or the limit + 1
+  std::size_t offered_ = 0;
   bool found_ = false;
 };
 

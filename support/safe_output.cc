@@ -22,6 +22,7 @@ namespace {
 
 constexpr int kSignals[] = {SIGINT, SIGTERM, SIGHUP};
 constexpr std::size_t kMaxTemps = 64;
+constexpr std::size_t kNameMax = 255;  // NAME_MAX of Linux file systems: the longest name of one file
 char *g_temps[kMaxTemps];
 volatile std::sig_atomic_t g_temp_count = 0;
 
@@ -299,6 +300,22 @@ Transaction::~Transaction() {
   TempRegistry::remove_all();
 }
 
+std::string temporary_pattern(const std::string &path) {
+  // NAME.gfec-tmp-XXXXXX, beside the output; a name near NAME_MAX (255 bytes) is cut so that
+  // the temporary's name still fits, or a valid output name could never be written.
+  const std::string suffix = ".gfec-tmp-XXXXXX";
+  const std::size_t slash = path.rfind('/');
+  const std::size_t base = slash == std::string::npos ? 0 : slash + 1;
+  std::string name = path.substr(base);
+  if (name.size() + suffix.size() > kNameMax) {
+    name.resize(kNameMax - suffix.size());
+    // Not inside a UTF-8 character: the name stays text (it is shown in messages).
+    while (!name.empty() && (static_cast<unsigned char>(name.back()) & 0xC0) == 0x80) name.pop_back();
+    if (!name.empty() && static_cast<unsigned char>(name.back()) >= 0xC0) name.pop_back();
+  }
+  return path.substr(0, base) + name + suffix;
+}
+
 std::ostream *Transaction::open(const std::string &path) {
   if (!error_.empty() || committed_) return nullptr;
   state_->checked.push_back({path, {}});
@@ -310,7 +327,7 @@ std::ostream *Transaction::open(const std::string &path) {
   }
   auto o = std::make_unique<Output>();
   o->path = path;
-  o->temp = path + ".gfec-tmp-XXXXXX";
+  o->temp = temporary_pattern(path);
   int fd = state_->registry.create(o->temp);
   if (fd < 0) {
     fail("cannot write " + quote(path) + ": " + std::strerror(errno));

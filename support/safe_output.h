@@ -58,6 +58,10 @@ private:
   bool committed_ = false;
 };
 
+/// The mkostemp pattern of the temporary beside `path`: `NAME.gfec-tmp-XXXXXX`, NAME cut (at a
+/// character's boundary) where the whole would pass 255 bytes.
+std::string temporary_pattern(const std::string &path);
+
 /// Writes every file or none. `never_overwrite` are files read by this run (the inputs and
 /// imports): an output that is one of them (same device and inode, also through symlinks or
 /// hard links) is refused. On failure returns a message naming the file and the reason, and

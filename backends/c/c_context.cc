@@ -11,6 +11,7 @@
 #include <cctype>
 #include <functional>
 #include <set>
+#include <stdexcept>
 #include <utility>
 
 namespace gfec::c_backend {
@@ -386,6 +387,15 @@ std::unique_ptr<EngineContext> make_context(const model::Model &model, const mod
   c->run_fn = c->type + "_run";
   c->source_file = options.output_path;
   c->header_file = base_name(replace_extension(options.output_path, ".h"));
+  // `#include "..."` takes no escapes: a '"', a backslash, a control character or a trigraph
+  // ("??-" is '~' in C99) in the header's name would name another file, or none.
+  const bool control = std::any_of(c->header_file.begin(), c->header_file.end(),
+                                   [](unsigned char ch) { return ch < 0x20 || ch == 0x7f; });
+  if (control || c->header_file.find_first_of("\"\\") != std::string::npos ||
+      c->header_file.find("??") != std::string::npos)
+    throw std::runtime_error(
+        "cannot name the header '" + c->header_file +
+        "' in the engine's #include \"...\", which takes no '\"', '\\', control character or '??': choose another -o");
   c->guard = guard_of(c->header_file);
   NameSpace globals;
   build(*c, globals, nullptr);

@@ -2,6 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+
 namespace gfec::chart_text {
 
 namespace {
@@ -26,8 +30,17 @@ std::string expr(const model::Model &m, model::ChartId chart, const model::Expr 
   const model::Chart &c = m.charts[chart];
   switch (e.kind) {
   case K::Bool: return e.bool_value ? "true" : "false";
-  case K::Int:
-  case K::Float: return e.text.str();
+  // INT_MIN has no literal (2147483648 does not fit an int): C's spelling, which reads back.
+  case K::Int: return e.text.str() == "-2147483648" ? "(-2147483647 - 1)" : e.text.str();
+  case K::Float: {
+    // A float folded to FLT_MAX is spelled 3.4028235e+38, which as the double it reads back as
+    // lies past FLT_MAX and is refused: then the value's own digits, as a double.
+    const std::string text = e.text.str();
+    const double read_back = std::strtod(text.c_str(), nullptr);
+    if (e.type == model::Type::Float && std::fabs(read_back) > std::numeric_limits<float>::max())
+      return fmt::format("{}", e.float_value);
+    return text;
+  }
   case K::String: return c_string_literal(e.text.str());
   case K::Ticks: return duration(e.float_value);
   case K::Var: return c.vars[e.var()].name;

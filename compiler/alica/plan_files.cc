@@ -164,6 +164,7 @@ Doc *PlanFiles::find_doc(const std::string &file, const Doc &from, const SourceR
   if (missing_.count(tried.front())) return nullptr;
   // The search below etc/ only when the usual places fail: it is the slow path.
   bool searched = false;
+  std::string refused;  ///< cannot_read's message for the first file there that was not read
   auto search = [&] {
     searched = true;
     if (auto found = search_below(file, from))
@@ -176,6 +177,7 @@ Doc *PlanFiles::find_doc(const std::string &file, const Doc &from, const SourceR
     auto seen = docs_.find(tried[i]);
     if (seen != docs_.end()) doc = seen->second.get();
     else if (auto text = fs_.read(tried[i])) doc = open(tried[i], std::move(*text));
+    else if (refused.empty() && fs_.identity(tried[i])) refused = cannot_read(tried[i], text.why);  // there, not read
     if (!doc) continue;
     // ALICA resolves by id: when the nearest file of that name lacks the id (a behaviour and
     // its interface share a name, an old repository lies beside the new one), a farther one of
@@ -188,6 +190,11 @@ Doc *PlanFiles::find_doc(const std::string &file, const Doc &from, const SourceR
     return doc;
   }
   missing_.insert(tried.front());
+  // A file that is there but refused (a device, a file of /proc, too large) is no typo.
+  if (!refused.empty()) {
+    diag_.error(at, ErrorKind::AlicaReference, fmt::format("{}, referenced here", refused));
+    return nullptr;
+  }
   auto &d = need == Need::LabelOnly
                 ? diag_.warning(Warning::AlicaIgnored, at,
                                 fmt::format("cannot find '{}', referenced here: the entry point is labelled "

@@ -77,6 +77,8 @@ public:
   const Selection &select(const SelectionRequest &request);
 
   bool unreadable() const { return loaded.main_unreadable; }
+  /// "cannot read 'x.sfc': no such file", when unreadable().
+  std::string cannot_read_main(const std::string &path) const { return cannot_read(path, loaded.main_unreadable_why); }
   bool ok() const { return !loaded.main_unreadable && !diag.has_errors(); }
 
   FrontEndOptions options;

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include <cfloat>
+#include <algorithm>
 #include <cmath>
 
 namespace gfec::validation {
@@ -485,7 +486,8 @@ unsigned long to_ticks(double ms, double period_ms) {
   if (period_ms <= 0 || ms <= 0) return 0;
   // Durations are read as decimals (0.1s is 100.00000000000001 ms): a hair under a whole tick
   // is that tick, not the next one.
-  double ticks = std::ceil(ms / period_ms - 1e-9);
+  // But a positive duration is at least one tick, however short (1e-9ms is not "at once").
+  double ticks = std::max(1.0, std::ceil(ms / period_ms - 1e-9));
   // Timers saturate at UINT32_MAX: any duration beyond is "never reached", and converting a
   // double past the integer's range would be undefined (1e18s once became 0 ticks).
   if (!(ticks < kBeyondTimers)) return kBeyondTimers;

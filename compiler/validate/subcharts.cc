@@ -156,6 +156,12 @@ constexpr std::uint64_t kMaxInstances = 65536;
 /// engine follow its path (`Patrol_Search_Scan`), so that a chain of charts would cost the square
 /// of its length. 200 levels of 65,536 instances bound both.
 constexpr std::uint64_t kMaxDepth = 200;
+/// How long an instance's path of names may be: the chart's name and the names of the places or
+/// states that lead to the deepest instance, joined by one byte each. The engine's names for an
+/// instance follow its path, and each level's names repeat the levels above, so 200 levels of
+/// 4,000-character names wrote 972 MB of C (3.4 GB of memory); 4,096 bytes bound every name an
+/// instance gives the engine, far beyond a path written by hand.
+constexpr std::uint64_t kMaxInstancePath = 4096;
 /// Where the counts stop growing: a tree of 20 levels of 10 would overflow 64 bits.
 constexpr std::uint64_t kSaturated = std::uint64_t(1) << 62;
 
@@ -191,6 +197,7 @@ void check_instances(Context &cx, const std::vector<Edge> &edges) {
   // Post-order without recursion, so a long chain of charts costs no stack.
   IdMap<model::ChartId, std::uint64_t> count(n, 0);
   IdMap<model::ChartId, std::uint64_t> depth(n, 0);  // levels of instances below the chart; at most n
+  IdMap<model::ChartId, std::uint64_t> path(n, 0);   // bytes of the longest path of names below it
   IdMap<model::ChartId, bool> done(n, false);
   std::vector<std::pair<model::ChartId, std::size_t>> stack;  // a chart and its next edge
   for (model::ChartId root : cx.charts.ids()) {
@@ -207,6 +214,8 @@ void check_instances(Context &cx, const std::vector<Edge> &edges) {
       for (const Edge *e : out[c]) {
         total = add_saturating(total, add_saturating(1, count[e->child]));
         depth[c] = std::max(depth[c], 1 + depth[e->child]);
+        const std::uint64_t here = cx.charts[c]->places[e->place.index()].name.text.size() + 1;
+        path[c] = std::max(path[c], add_saturating(here, path[e->child]));
       }
       count[c] = total;
       done[c] = true;
@@ -229,6 +238,18 @@ void check_instances(Context &cx, const std::vector<Edge> &edges) {
                 fmt::format("{} '{}' runs '{}', which goes the deepest: {} levels ('{}' and the {} below it)",
                             place.is_state ? "state" : "place", place.name.text, child, depth[c], child,
                             depth[deepest->child]));
+    }
+    if (depth[c] <= kMaxDepth && chart.name.text.size() + path[c] > kMaxInstancePath) {
+      const Edge *longest = largest(out[c], path);
+      const ast::Place &place = chart.places[longest->place.index()];
+      cx.diag
+          .error(chart.name.range, ErrorKind::SubchartDepth,
+                 fmt::format("{} '{}' has sub-chart instances whose path of names is {} bytes long, more than the {} "
+                             "gfec compiles (the engine names an instance after its path)",
+                             kind, chart.name.text, count_text(chart.name.text.size() + path[c]), kMaxInstancePath))
+          .note(runs_name(cx, *longest).range,
+                fmt::format("{} '{}' runs '{}', whose instances have the longest path",
+                            place.is_state ? "state" : "place", place.name.text, cx.model.charts[longest->child].name));
     }
     if (count[c] <= kMaxInstances) continue;
     const Edge *most = largest(out[c], count);

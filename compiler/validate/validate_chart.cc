@@ -15,6 +15,9 @@ namespace gfec::validation {
 
 namespace {
 
+constexpr double kMinPeriodMs = 0.001;         // a microsecond
+constexpr double kMaxPeriodMs = 4294967295.0;  // UINT32_MAX milliseconds
+
 void set_period(Context &cx, ChartScope &s) {
   const auto &periods = s.ast.periods;
   for (std::size_t i = 0; i < periods.size(); ++i) {
@@ -24,6 +27,10 @@ void set_period(Context &cx, ChartScope &s) {
           .note(periods[0].range, "the first one is here");
     } else if (p.ms <= 0) {
       cx.diag.error(p.range, ErrorKind::Period, "the period must be positive");
+    } else if (p.ms < kMinPeriodMs || p.ms > kMaxPeriodMs) {
+      // Beyond these no controller ticks, and the ticks of a duration stop meaning anything.
+      cx.diag.error(p.range, ErrorKind::Period,
+                    fmt::format("the period must be from {}ms to {}ms (about 49 days)", kMinPeriodMs, kMaxPeriodMs));
     } else {
       s.out.period_ms = p.ms;
     }

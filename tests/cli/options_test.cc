@@ -160,4 +160,27 @@ TEST_CASE("options: --context, --context-type and --names, the C engine's option
     CHECK(r.exit_code == 2);
     CHECK(r.message.rfind("gfec: error: --context-type", 0) == 0);
   }
+  // Words and stars that are no type an engine can store, assign and return: each refused with
+  // its reason (they gave an engine that did not compile).
+  const std::vector<std::pair<std::string, std::string>> refused = {
+      {"void", "'void' has no values: a context of no type is 'void *'"},
+      {"const", "the type cannot be 'const' itself"},
+      {"const int", "the type cannot be 'const' itself"},
+      {"int *const", "the type cannot be 'const' itself"},
+      {"volatile int", "the type cannot be 'volatile' itself"},
+      {"int *restrict", "the type cannot be 'restrict' itself"},
+      {"static int", "'static' is not part of a type name"},
+      {"extern struct m *", "'extern' is not part of a type name"},
+      {"struct", "'struct' needs its tag"},
+      {"struct *", "'struct' needs its tag"},
+      {"int * int", "no words after its last '*' but qualifiers"},
+  };
+  for (const auto &[type, why] : refused) {
+    INFO(type);
+    const std::string option = "--context-type=" + type;
+    auto r = parse({option.c_str(), "x.sfc"});
+    CHECK(r.exit_code == 2);
+    CHECK(r.message.rfind("gfec: error: --context-type '" + type + "': ", 0) == 0);
+    CHECK(r.message.find(why) != std::string::npos);
+  }
 }

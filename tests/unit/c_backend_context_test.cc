@@ -371,7 +371,8 @@ TEST_CASE("c engine context: the type's tag is declared first, however it is qua
   CHECK(ContextType("union u *").tag == "u");
   CHECK(ContextType("void *").tag.empty());
   // The same reader as the driver's check: spacing normalised, code refused.
-  CHECK(ContextType("struct  motor*const").param("m") == "struct motor *const m");
+  CHECK(ContextType("struct  motor*const*").param("m") == "struct motor *const *m");
+  CHECK_THROWS_AS(ContextType("struct motor *const"), std::invalid_argument);  // cannot be assigned
   CHECK(ContextType("").spelling.empty());
   CHECK_THROWS_AS(ContextType("int; int x"), std::invalid_argument);
 

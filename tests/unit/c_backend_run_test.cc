@@ -266,6 +266,23 @@ sfc Timer {
                    "tick 7\n" + wait + "tick 8\n" + wait + "tick 9\n" + wait + "tick 10\nact Finished\nav Done\n");
 }
 
+TEST_CASE("c engine run: a duration shorter than the period is one tick, not none", "[c_backend][run]") {
+  // 1e-9ms rounds up to one tick of 10 ms (docs/language.md "Time"): false in the tick Wait is
+  // entered (its timer is 0), true from the next; as 0 ticks it was true at once.
+  std::string log = run("tiny_duration", R"(
+interface Bot { void Waiting(); void Late(); }
+sfc Tiny {
+  period 10ms;
+  initial place Idle;
+  place Wait { if (elapsed(Wait) >= 1e-9ms) { Late(); } Waiting(); }
+  transition Idle -> Wait;
+})",
+                        "\n\n\n");
+  CHECK(log == "tick 1\nact Waiting\nav Wait\n"
+               "tick 2\nact Late\nact Waiting\nav Wait\n"
+               "tick 3\nact Late\nact Waiting\nav Wait\n");
+}
+
 TEST_CASE("c engine run: an initial place's timer counts from the first tick", "[c_backend][run]") {
   std::string log = run("warm", R"(
 interface Bot { void Heating(); void Serve(); }

@@ -87,3 +87,19 @@ TEST_CASE("did you mean: the nearest name within the limit, the first of equals"
   CHECK(n.found());
   CHECK(n.distance() == 1);
 }
+
+TEST_CASE("did you mean: a name too long, or candidates past the cap, cost nothing", "[support]") {
+  // A name longer than kMaxSuggestedLength is never matched, not even by itself.
+  const std::string longest(kMaxSuggestedLength, 'a'), over(kMaxSuggestedLength + 1, 'a');
+  CHECK(NearestName(longest, 3).offer(longest + "b"));
+  NearestName too_long(over, 3);
+  CHECK(!too_long.offer(over));
+  CHECK(!too_long.found());
+  // Only the first kMaxSuggestionCandidates are weighed: a near one after them is not found.
+  NearestName many("lamp", 1);
+  bool any = false;
+  for (std::size_t i = 0; i < kMaxSuggestionCandidates; ++i) any = many.offer("zzzzzzzz") || any;
+  CHECK(!any);
+  CHECK(!many.offer("lamps"));
+  CHECK(!many.found());
+}

@@ -169,6 +169,20 @@ sfc Top { initial place A runs Leaf; }
   CHECK(one.out.rfind("digraph \"Top\"", 0) == 0);
 }
 
+TEST_CASE("gfec: every --context-type gfec accepts gives an engine that compiles") {
+  std::string dir = scratch_dir("driver-context-types");
+  write_file(dir + "/tiny.sfc", kGood);
+  write_file(dir + "/types.h", "#include <stdint.h>\nstruct motor { int a; };\nenum mode { M };\n");
+  for (const char *type : {"void *", "const struct motor *", "struct motor const *", "struct motor", "uint32_t",
+                           "unsigned long", "enum mode", "void **", "const char *const *", "volatile int *"}) {
+    INFO(type);
+    auto c = run_command("cd " + dir + " && " + gfec_exe + " --context-type='" + type + "' tiny.sfc -o e.c && " +
+                         "cc -std=c99 -Wall -Wextra -Wpedantic -Werror -include types.h -c e.c -o e.o");
+    CHECK(c.out == "");
+    CHECK(c.exit_code == 0);
+  }
+}
+
 TEST_CASE("gfec: --context and --names are the C engine's: other back ends reject them (exit 2)") {
   std::string dir = scratch_dir("driver-context");
   write_file(dir + "/tiny.sfc", kGood);

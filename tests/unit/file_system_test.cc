@@ -86,18 +86,18 @@ TEST_CASE("file system: an overlay's open buffers shadow the files below", "[fil
   disk.add("src/a.sfc", "on disk");
   disk.add("src/b.iface", "interface");
   OverlayFileSystem fs(disk);
-  CHECK(fs.read("src/a.sfc") == std::optional<std::string>("on disk"));
+  CHECK(fs.read("src/a.sfc").text == std::optional<std::string>("on disk"));
   fs.open("src/a.sfc", "in the editor");
   fs.open("src/new.sfc", "not saved yet");
-  CHECK(fs.read("src/a.sfc") == std::optional<std::string>("in the editor"));
-  CHECK(fs.read("src/./a.sfc") == std::optional<std::string>("in the editor"));
-  CHECK(fs.read("src/new.sfc") == std::optional<std::string>("not saved yet"));
-  CHECK(fs.read("src/b.iface") == std::optional<std::string>("interface"));
+  CHECK(fs.read("src/a.sfc").text == std::optional<std::string>("in the editor"));
+  CHECK(fs.read("src/./a.sfc").text == std::optional<std::string>("in the editor"));
+  CHECK(fs.read("src/new.sfc").text == std::optional<std::string>("not saved yet"));
+  CHECK(fs.read("src/b.iface").text == std::optional<std::string>("interface"));
   CHECK(!fs.read("src/none.sfc"));
   CHECK(fs.list("src") == std::vector<std::string>{"a.sfc", "b.iface", "new.sfc"});
   fs.close("src/a.sfc");
-  CHECK(fs.read("src/a.sfc") == std::optional<std::string>("on disk"));
-  CHECK(disk.read("src/a.sfc") == std::optional<std::string>("on disk"));  // the disk was never written
+  CHECK(fs.read("src/a.sfc").text == std::optional<std::string>("on disk"));
+  CHECK(disk.read("src/a.sfc").text == std::optional<std::string>("on disk"));  // the disk was never written
 }
 
 TEST_CASE("file system: the pipeline compiles the editor's buffer, and a file it imports from disk", "[file_system]") {

@@ -105,6 +105,75 @@ TEST_CASE("hardening: chains of 200 terms still compile with every back end", "[
   }
 }
 
+TEST_CASE("hardening: a flat else-if chain is not nesting; a nested if is", "[hardening]") {
+  std::string dir = scratch_dir("hardening_else_if");
+  // A place whose entry block is `if (x == 0) {...} else if (x == 1) {...} ...`, n branches, or
+  // n ifs each inside the one before.
+  auto chart = [](int n, bool nested) {
+    std::string body;
+    for (int i = 0; i < n; ++i) body += fmt::format("{}if (x == {}) {{ Act({}); ", i && !nested ? "} else " : "", i, i);
+    body += nested ? std::string(static_cast<std::size_t>(n), '}') : "}";
+    return "interface I { void Act(int v); }\nsfc X {\n  var int x = 1;\n  initial place A { x = x + 1; " + body +
+           " }\n  place B;\n  A -> B when x > 2;\n  B -> A;\n}\n";
+  };
+  // 255 branches were "expression nested too deeply" (each `else if` counted one level); 1024
+  // go through every back end, the analyses and the interpreter.
+  for (int n : {255, 1024}) {
+    INFO(n << " branches");
+    write_file(dir + "/chain.sfc", chart(n, false));
+    for (std::string emit : {"c", "json", "dot", "chart"}) {
+      INFO("--emit=" << emit);
+      CommandResult r = run_command(gfec_exe + " --emit=" + emit + " " + dir + "/chain.sfc -o " + dir + "/out." + emit);
+      CHECK(r.exit_code == 0);
+      CHECK(r.out == "");
+    }
+    CHECK(run_command(gfec_exe + " --analyze " + dir + "/chain.sfc").exit_code == 0);
+    CommandResult run = run_command(gfec_exe + " run " + dir + "/chain.sfc --ticks 3");
+    CHECK(run.exit_code == 0);
+    CHECK(run.out.find("Act(2)") != std::string::npos);
+  }
+  write_file(dir + "/chain.sfc", chart(1025, false));
+  CommandResult longer = run_command(gfec_exe + " --check " + dir + "/chain.sfc");
+  CHECK(longer.exit_code == 1);
+  CHECK(longer.out.find("chain.sfc:4:") != std::string::npos);
+  CHECK(longer.out.find("error: an 'else if' chain longer than 1024 branches [nesting]") != std::string::npos);
+  // Nesting is still bounded: 300 ifs each inside the one before.
+  write_file(dir + "/nested.sfc", chart(300, true));
+  CommandResult nested = run_command(gfec_exe + " --check " + dir + "/nested.sfc");
+  CHECK(nested.exit_code == 1);
+  CHECK(nested.out.find("error: expression nested too deeply (more than 256 levels) [nesting]") != std::string::npos);
+}
+
+TEST_CASE("hardening: --emit=chart writes extreme constants so that they read back", "[hardening]") {
+  // INT_MIN has no literal; a float folded to -FLT_MAX is shortest as -3.4028235e+38, a double
+  // past FLT_MAX; durations below a tick and past the timers. The chart written must compile to
+  // the same engine as the chart it came from, and write itself again unchanged.
+  std::string dir = scratch_dir("hardening_chart_round_trip");
+  run_command("mkdir -p " + dir + "/a " + dir + "/b");
+  write_file(dir + "/a/s.sfc",
+             "interface I { void Act(int v); void F(float f); }\n"
+             "const int LOW = -2147483647 - 1;\nconst int HIGH = 2147483647;\n"
+             "const float BIG = -3.4028234e38;\nconst float SMALL = 1e-38;\n"
+             "sfc S {\n  period 10ms;\n  var int x = -2147483647 - 1;\n  var float f = -0.0;\n"
+             "  initial place A { Act(LOW); Act(x); Act(HIGH); Act(-(LOW + 1)); F(BIG); F(SMALL); F(f); Act(- -5); }\n"
+             "  place B;\n"
+             "  A -> B when elapsed(A) >= 1e-9ms && x == -2147483647 - 1 || elapsed(A) > 4294967295000ms;\n"
+             "  B -> A when elapsed(B) >= 0.1s;\n}\n");
+  CommandResult to_chart = run_command(gfec_exe + " --emit=chart " + dir + "/a/s.sfc -o " + dir + "/b/s.sfc");
+  REQUIRE(to_chart.exit_code == 0);
+  CHECK(read_file(dir + "/b/s.sfc").find("const int LOW = (-2147483647 - 1);") != std::string::npos);
+  CommandResult again = run_command(gfec_exe + " --emit=chart " + dir + "/b/s.sfc -o " + dir + "/again.sfc");
+  CHECK(again.out == "");
+  REQUIRE(again.exit_code == 0);
+  std::string written = read_file(dir + "/b/s.sfc"), rewritten = read_file(dir + "/again.sfc");
+  CHECK(written.substr(written.find('\n')) == rewritten.substr(rewritten.find('\n')));  // all but "from FILE"
+  for (std::string side : {"a", "b"})
+    CHECK(run_command("cd " + dir + "/" + side + " && " + gfec_exe + " s.sfc --no-line-directives -o e.c").exit_code ==
+          0);
+  CHECK(read_file(dir + "/a/e.c") == read_file(dir + "/b/e.c"));
+  CHECK(read_file(dir + "/a/e.h") == read_file(dir + "/b/e.h"));
+}
+
 TEST_CASE("hardening: a NUL in an import path is an error at the string", "[hardening]") {
   FrontEnd fe({{"m.sfc", "import \"a.iface\\0.sfc\";\n"}, {"a.iface", "interface A { void Go(); }\n"}});
   CHECK(fe.text() == "m.sfc:1:8: error: an import path cannot contain a NUL character [import]\n"
@@ -279,11 +348,22 @@ TEST_CASE("hardening: the smaller input cases of the probe", "[hardening]") {
   CHECK(importing("/dev/zero")
             .find("imports.sfc:1:8: error: cannot read imported file '/dev/zero': not a regular "
                   "file") != std::string::npos);
-  // A read that fails is an error, never the end of the file: /proc/self/mem is a regular file
-  // whose read(2) at offset 0 fails (the page is not mapped), which a stream took for an empty file.
+  // /proc/self/mem, a regular file whose read(2) at offset 0 fails (a stream took it for an empty
+  // file), is not even opened: no file of /proc is read (tests/cli/special_files.sh has the rest).
   CHECK(importing("/proc/self/mem")
-            .find("imports.sfc:1:8: error: cannot read imported file '/proc/self/mem': "
-                  "permission denied or an I/O error") != std::string::npos);
+            .find("imports.sfc:1:8: error: cannot read imported file '/proc/self/mem': a file of /proc, /sys or "
+                  "another of the kernel's pseudo file systems; gfec reads none") != std::string::npos);
+  // A megabyte-long import path beside a thousand files: refused by its length before it is split,
+  // searched for or offered a did-you-mean (0.7 s and 190 MB before, for 'a/a/a/...').
+  for (int i = 0; i < 1000; ++i)
+    write_file(dir + "/f" + std::to_string(i) + ".iface", "interface I" + std::to_string(i) + " { }\n");
+  std::string huge;
+  for (int i = 0; i < 500000; ++i) huge += "a/";
+  CHECK(importing(huge).find(
+            "imports.sfc:1:8: error: an import path is at most 4096 bytes; this one has 1000000 [import]") !=
+        std::string::npos);
+  CHECK(importing(std::string(4097, 'f')).find("this one has 4097 [import]") != std::string::npos);
+  CHECK(importing(std::string(4000, 'f')).find("cannot find imported file") != std::string::npos);
   CommandResult main_mem = run_command(gfec_exe + " --check /proc/self/mem");
   CHECK(main_mem.exit_code == 2);
 }

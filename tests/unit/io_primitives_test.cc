@@ -7,7 +7,13 @@
 
 #include <catch2/catch.hpp>
 
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
 #include <string>
+
+#include <sys/stat.h>
+#include <unistd.h>
 
 using namespace gfec;
 using namespace gfec::test;
@@ -26,15 +32,58 @@ TEST_CASE("io: a file is read whole, whatever its size says", "[io]") {
     CHECK(got->size() == size);
     CHECK(*got == text);
   }
-  // A /proc file says it has 0 bytes and has more: everything is read all the same.
-  auto status = fs.read("/proc/self/status");
-  REQUIRE(status);
-  CHECK(status->find("Name:") == 0);
-  CHECK(status->find("VmRSS:") != std::string::npos);
   // Not a regular file, or a read that fails: no text at all, never a short one.
-  CHECK(!fs.read("/dev/zero"));
-  CHECK(!fs.read("/proc/self/mem"));
+  CHECK(fs.read("/dev/zero").why == "not a regular file; gfec reads no devices, pipes or sockets");
   CHECK(!fs.read(dir + "/missing"));
+  CHECK(fs.read(dir + "/missing").why == "no such file");
+  CHECK(fs.read(dir).why == "it is a folder");
+}
+
+TEST_CASE("io: the kernel's files, FIFOs and files past the limits are refused unread", "[io]") {
+  RealFileSystem fs;
+  const std::string kernel = "a file of /proc, /sys or another of the kernel's pseudo file systems; gfec reads none";
+  // /proc/self/pagemap says 0 bytes and has gigabytes; /proc/kmsg (root only) blocks and takes
+  // the kernel's log; /proc/self/status stands in for it: it is never opened, let alone read.
+  for (const char *path :
+       {"/proc/self/pagemap", "/proc/self/status", "/proc/self/mem", "/sys/kernel/mm/transparent_hugepage/enabled"}) {
+    if (!std::filesystem::exists(path)) continue;  // /sys may be missing in a container
+    INFO(path);
+    auto got = fs.read(path);
+    CHECK(!got);
+    CHECK(got.why == kernel);
+  }
+  const std::string dir = scratch_dir("io-limits");
+  // Through a symlink too: the checks are on the file it leads to.
+  std::filesystem::remove(dir + "/status.sfc");
+  std::filesystem::create_symlink("/proc/self/status", dir + "/status.sfc");
+  CHECK(fs.read(dir + "/status.sfc").why == kernel);
+  // A FIFO with no writer: open() would wait for ever without O_NONBLOCK; refused at once.
+  const std::string fifo = dir + "/pipe.sfc";
+  std::filesystem::remove(fifo);
+  REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  CHECK(fs.read(fifo).why == "not a regular file; gfec reads no devices, pipes or sockets");
+
+  // The limits, made small: one file, then what one file system reads in all.
+  ReadLimits small;
+  small.max_file = std::size_t{1} << 20;
+  small.max_total = std::size_t{3} << 20;
+  RealFileSystem limited(small);
+  write_file(dir + "/one.sfc", std::string(small.max_file, 'a'));
+  write_file(dir + "/over.sfc", std::string(small.max_file + 1, 'a'));
+  CHECK(limited.read(dir + "/one.sfc"));
+  CHECK(limited.read(dir + "/over.sfc").why == "larger than 1 MiB, the most gfec reads of one file");
+  CHECK(limited.read(dir + "/one.sfc"));
+  CHECK(limited.read(dir + "/one.sfc"));
+  CHECK(limited.read(dir + "/one.sfc").why ==
+        "the files read so far and this one are larger than 3 MiB, the most gfec reads for one input");
+  // A sparse file says its size honestly: refused before a byte is read, whatever the default.
+  {
+    std::FILE *f = std::fopen((dir + "/sparse.sfc").c_str(), "w");
+    REQUIRE(f);
+    REQUIRE(::ftruncate(::fileno(f), std::int64_t{1} << 34) == 0);
+    std::fclose(f);
+  }
+  CHECK(fs.read(dir + "/sparse.sfc").why == "larger than 128 MiB, the most gfec reads of one file");
 }
 
 TEST_CASE("io: lines formatted in place are indented, counted and end without blanks", "[io]") {

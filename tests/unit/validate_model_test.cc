@@ -169,6 +169,13 @@ TEST_CASE("validate model: durations become whole ticks, rounded up", "[validate
   CHECK(either.args[0].args[1].ticks == 150);
   CHECK(either.args[1].args[0].ticks == 0);
   const model::Expr elapsed = ticks(c.transitions[0], 0);
+  // A positive duration below the period is one tick, never 0 ("at once").
+  Validated tiny(
+      {{"t.sfc", "sfc S {\n  period 10ms;\n  initial place A;\n  place B;\n"
+                 "  transition A -> B when elapsed(A) >= 1e-9ms;\n  transition B -> A when elapsed(B) >= 0ms;\n}\n"}});
+  REQUIRE(tiny.text() == "");
+  CHECK(ticks(tiny.model.charts[0].transitions[0], 1).ticks == 1);
+  CHECK(ticks(tiny.model.charts[0].transitions[1], 1).ticks == 0);
   CHECK(elapsed.kind == model::Expr::Kind::Elapsed);
   CHECK(elapsed.place() == model::PlaceId(0));
   CHECK(c.places[0].timed);
