@@ -238,6 +238,8 @@ EngineBuilds::Build EngineBuilds::get(const model::Model &model, model::ChartId 
     compile.stderr_path = "&1";
     const child_process::Result r = child_process::run(compile);
     if (r.ok()) b.program = (dir / "harness").string();
+    else if (r.how == child_process::Result::How::NotStarted)
+      b.error = fmt::format("the C compiler '{}' could not be started ({})", cc, r.error);
     else
       b.error = fmt::format("the C compiler '{}' {} on the generated engine:\n{}", cc, child_process::describe(r),
                             head(read_file(compile.stdout_path)));
