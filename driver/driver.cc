@@ -161,6 +161,9 @@ int compile(const Options &o, DiagnosticReport &report, std::ostream &out) {
       std::vector<OutputFile> outputs = emit_to_memory(*backend, c.model, emit);
       for (const auto &f : outputs) out << f.contents;
       out << std::flush;
+    } catch (const ToolTimeLimit &e) {
+      report.tool_error(input, e.what(), false);
+      return kExitInputError;
     } catch (const std::exception &e) {
       report.tool_error(input, e.what(), false);
       return kExitUsageOrIo;
@@ -173,6 +176,9 @@ int compile(const Options &o, DiagnosticReport &report, std::ostream &out) {
   TemporarySink sink(files);
   try {
     backend->emit(c.model, emit, sink);
+  } catch (const ToolTimeLimit &e) {
+    report.tool_error(input, e.what(), false);  // a chart too large to draw in time
+    return kExitInputError;
   } catch (const std::exception &e) {
     // Back ends report no user errors; what reaches here is the environment (e.g. --emit=svg
     // without Graphviz installed).

@@ -26,10 +26,16 @@ namespace gfec {
 
 namespace {
 
+/// The most ticks one run may take: the log is streamed, so memory does not grow with the
+/// ticks, but a typo such as --ticks 10000000000 would otherwise run for hours (docs/cli.md).
+constexpr std::uint64_t kMaxRunTicks = 10000000;
+/// With --html the page keeps every tick's frame: at most this many.
+constexpr std::uint64_t kMaxHtmlTicks = 100000;
+
 struct RunOptions {
   std::string input;
   std::string inputs_csv;
-  std::uint64_t ticks = 0;
+  long long ticks = 0;        ///< 0: one per row of the trace, or 10
   int agents = 0;             ///< a team machine's agents (with agents_given)
   bool agents_given = false;  ///< --agents was given; else a team machine runs all its agents
   std::string chart;
@@ -56,99 +62,117 @@ int outline_chart(const model::Model &model, model::ChartId c, viewer::ChartOutl
   return index;
 }
 
-/// The run viewer's recording of an interpreter run (docs/viewer.md): the chart's picture, the
-/// activation after each tick (of the chart and of each running sub-chart instance) and what
-/// each tick did, taken from the run's log. Frame k is tick k + 1; there is no world and no robot.
-nlohmann::json viewer_data(const model::Model &model, model::ChartId chart, const interp::RunResult &r,
-                           const RunOptions &o) {
-  const model::Chart &c = model.charts.at(chart);
-  const bool fsm = c.kind == model::Chart::Kind::Fsm;
-  const double period_ms = c.period_ms > 0 ? c.period_ms : 10.0;
-  viewer::RecordingBuilder rec("gfec run", c.name, fsm ? "fsm" : "sfc", o.input, period_ms / 1000);
-  // The timeline's rows: the chart's places, then each sub-chart instance's rows, depth first in
-  // declaration order (the order of gfec run's `av` lines and of the picture's frames).
-  viewer::ChartOutline outline;
-  outline_chart(model, chart, outline);
-  std::vector<viewer::Row> rows;
-  std::vector<viewer::Instance> instances;
-  viewer::outline_rows(outline, rows, instances);
-  for (const viewer::Row &row : rows) rec.add_row(row);
-  // Each instance path's first row ("" the chart's own).
-  std::map<std::string, std::size_t> first_row{{"", 0}};
-  for (const viewer::Instance &in : instances) {
-    rec.add_instance(in);
-    first_row[in.path] = in.first;
-  }
-  std::string svg, note;
-  try {
-    EmitOptions emit;
-    emit.chart = chart;
-    emit.output_path = "chart.svg";
-    emit.source_name = o.input;
-    if (auto backend = make_backend("svg"))
-      svg = emit_to_memory(*backend, model, emit, run_external_tool).at(0).contents;
-  } catch (const std::exception &e) { note = fmt::format("no diagram: {}", e.what()); }
-  rec.set_picture(svg, note);
-  long frame = -1;
-  std::vector<std::string> tick_calls;
-  std::string status = "running";
-  std::vector<std::size_t> on;  // the rows active after the current tick
-  auto finish_tick = [&] {
-    if (frame >= 0) {
-      rec.record_calls(frame, tick_calls);
-      rec.add_tick(on);
+/// The run viewer's recording of an interpreter run (docs/viewer.md), built as the run goes
+/// (feed() after each tick): the chart's picture, the activation after each tick (of the chart
+/// and of each running sub-chart instance) and what each tick did, taken from the run's log.
+/// Frame k is tick k + 1; there is no world and no robot. It keeps every frame, so a run with
+/// --html is bounded by kMaxHtmlTicks.
+class RunViewer {
+public:
+  RunViewer(const model::Model &model, model::ChartId chart, const RunOptions &o)
+      : c_(model.charts.at(chart)), fsm_(c_.kind == model::Chart::Kind::Fsm),
+        period_ms_(c_.period_ms > 0 ? c_.period_ms : 10.0),
+        rec_("gfec run", c_.name, fsm_ ? "fsm" : "sfc", o.input, period_ms_ / 1000), o_(o) {
+    // The timeline's rows: the chart's places, then each sub-chart instance's rows, depth first
+    // in declaration order (the order of gfec run's `av` lines and of the picture's frames).
+    viewer::ChartOutline outline;
+    outline_chart(model, chart, outline);
+    std::vector<viewer::Row> rows;
+    std::vector<viewer::Instance> instances;
+    viewer::outline_rows(outline, rows, instances);
+    for (const viewer::Row &row : rows) rec_.add_row(row);
+    for (const viewer::Instance &in : instances) {
+      rec_.add_instance(in);
+      first_row_[in.path] = in.first;
     }
-    tick_calls.clear();
-    on.clear();
-  };
-  // "av 1 0 2" (the chart) or "av Search.Grab: 0 1" (a running instance): whose line, and the rest.
-  auto owner = [](const std::string &text, std::size_t from) {
+    std::string svg, note;
+    try {
+      EmitOptions emit;
+      emit.chart = chart;
+      emit.output_path = "chart.svg";
+      emit.source_name = o.input;
+      if (auto backend = make_backend("svg"))
+        svg = emit_to_memory(*backend, model, emit, run_external_tool).at(0).contents;
+    } catch (const ToolTimeLimit &) {
+      throw;  // a chart too large to draw in time is an error, not a page without a picture
+    } catch (const std::exception &e) { note = fmt::format("no diagram: {}", e.what()); }
+    rec_.set_picture(svg, note);
+  }
+
+  void feed(const std::vector<interp::Event> &events) {
+    for (const interp::Event &e : events) {
+      switch (e.kind) {
+      case interp::EventKind::Tick:
+        finish_tick();
+        ++frame_;
+        break;
+      case interp::EventKind::Av:
+      case interp::EventKind::InstanceAv: {
+        // The activation of each place after the tick; an instance's line only while it runs.
+        auto [path, rest] = owner(e.text, 3);
+        auto first = first_row_.find(path);
+        if (first == first_row_.end()) break;
+        std::istringstream counts(e.text.substr(rest));
+        unsigned long n = 0;
+        for (std::size_t p = 0; counts >> n; ++p)
+          if (n > 0) on_.push_back(first->second + p);
+        break;
+      }
+      case interp::EventKind::InstanceState: break;  // its rows say it; not the run's status
+      case interp::EventKind::State: {
+        // "state Z3 succeeded": the status is the last word.
+        std::string now = e.text.substr(e.text.rfind(' ') + 1);
+        if (now != status_) rec_.add_event(frame_, "status", now);
+        status_ = now;
+        break;
+      }
+      case interp::EventKind::Fire: rec_.add_event(frame_, fsm_ ? "state" : "fire", e.text); [[fallthrough]];
+      default:
+        if (interp::layer_of(e.kind) != interp::Layer::Hooks)
+          tick_calls_.push_back(std::string(static_cast<std::size_t>(2 * std::max(0, e.depth - 1)), ' ') + e.text);
+      }
+      if (frame_ >= 0) rec_.record_status(frame_, status_);
+    }
+  }
+
+  nlohmann::json finish() {
+    finish_tick();
+    const long frames = rec_.frames();
+    rec_.set_title(fmt::format("{} ({}): {} after {} tick{}", c_.name, fsm_ ? "fsm" : "sfc", status_, frames,
+                               frames == 1 ? "" : "s"),
+                   fmt::format("gfec run {}{}{} \u00b7 reference interpreter \u00b7 period {:g} ms", o_.input,
+                               o_.inputs_csv.empty() ? "" : " --inputs ", o_.inputs_csv, period_ms_));
+    return rec_.data();
+  }
+
+private:
+  void finish_tick() {
+    if (frame_ >= 0) {
+      rec_.record_calls(frame_, tick_calls_);
+      rec_.add_tick(on_);
+    }
+    tick_calls_.clear();
+    on_.clear();
+  }
+  /// "av 1 0 2" (the chart) or "av Search.Grab: 0 1" (a running instance): whose line, and the rest.
+  static std::pair<std::string, std::size_t> owner(const std::string &text, std::size_t from) {
     std::size_t space = text.find(' ', from);
     if (space != std::string::npos && space > from && text[space - 1] == ':')
       return std::make_pair(text.substr(from, space - 1 - from), space + 1);
     return std::make_pair(std::string(), from);
-  };
-  for (const interp::Event &e : r.log.events()) {
-    switch (e.kind) {
-    case interp::EventKind::Tick:
-      finish_tick();
-      ++frame;
-      break;
-    case interp::EventKind::Av:
-    case interp::EventKind::InstanceAv: {
-      // The activation of each place after the tick; an instance's line only while it runs.
-      auto [path, rest] = owner(e.text, 3);
-      auto first = first_row.find(path);
-      if (first == first_row.end()) break;
-      std::istringstream counts(e.text.substr(rest));
-      unsigned long n = 0;
-      for (std::size_t p = 0; counts >> n; ++p)
-        if (n > 0) on.push_back(first->second + p);
-      break;
-    }
-    case interp::EventKind::InstanceState: break;  // its rows say it; not the run's status
-    case interp::EventKind::State: {
-      // "state Z3 succeeded": the status is the last word.
-      std::string now = e.text.substr(e.text.rfind(' ') + 1);
-      if (now != status) rec.add_event(frame, "status", now);
-      status = now;
-      break;
-    }
-    case interp::EventKind::Fire: rec.add_event(frame, fsm ? "state" : "fire", e.text); [[fallthrough]];
-    default:
-      if (interp::layer_of(e.kind) != interp::Layer::Hooks)
-        tick_calls.push_back(std::string(static_cast<std::size_t>(2 * std::max(0, e.depth - 1)), ' ') + e.text);
-    }
-    if (frame >= 0) rec.record_status(frame, status);
   }
-  finish_tick();
-  const long frames = rec.frames();
-  rec.set_title(
-      fmt::format("{} ({}): {} after {} tick{}", c.name, fsm ? "fsm" : "sfc", status, frames, frames == 1 ? "" : "s"),
-      fmt::format("gfec run {}{}{} \u00b7 reference interpreter \u00b7 period {:g} ms", o.input,
-                  o.inputs_csv.empty() ? "" : " --inputs ", o.inputs_csv, period_ms));
-  return rec.data();
-}
+
+  const model::Chart &c_;
+  const bool fsm_;
+  const double period_ms_;
+  viewer::RecordingBuilder rec_;
+  const RunOptions &o_;
+  std::map<std::string, std::size_t> first_row_{{"", 0}};  ///< each instance path's first row
+  long frame_ = -1;
+  std::vector<std::string> tick_calls_;
+  std::string status_ = "running";
+  std::vector<std::size_t> on_;  ///< the rows active after the current tick
+};
 
 int run_with(const RunOptions &o, DiagnosticReport &report, std::ostream &out) {
   pipeline::FrontEndOptions f = front_end_options(o.report);
@@ -206,8 +230,36 @@ int run_with(const RunOptions &o, DiagnosticReport &report, std::ostream &out) {
     trace = std::make_unique<interp::InputTrace>(model);
   }
   // Without --ticks: one tick per row of the trace, or ten.
-  std::uint64_t ticks = o.ticks ? o.ticks : trace->rows() ? trace->rows() : 10;
+  const std::uint64_t ticks = o.ticks ? static_cast<std::uint64_t>(o.ticks) : trace->rows() ? trace->rows() : 10;
+  if (ticks > kMaxRunTicks || (!o.html.empty() && ticks > kMaxHtmlTicks)) {
+    report.tool_error(o.inputs_csv.empty() ? o.input : o.inputs_csv,
+                      fmt::format("{} ticks is more than gfec run runs{}: at most {} (docs/cli.md)", ticks,
+                                  o.html.empty() ? "" : " with --html", o.html.empty() ? kMaxRunTicks : kMaxHtmlTicks),
+                      false);
+    return kExitUsageOrIo;
+  }
 
+  // The page's picture is drawn before the run, so a chart too large to draw costs no run.
+  std::unique_ptr<RunViewer> viewer;
+  if (!o.html.empty()) {
+    try {
+      viewer = std::make_unique<RunViewer>(model, chart, o);
+    } catch (const ToolTimeLimit &e) {
+      report.tool_error(o.input, e.what(), false);
+      return kExitInputError;
+    }
+  }
+  interp::RenderOptions render;
+  render.hooks = o.hooks;
+  render.explain = !o.observable;
+  render.indent = !o.observable;
+  // Each tick's lines are printed (and recorded) as soon as it ends, then dropped: the log of a
+  // long run is never held whole.
+  auto after_tick = [&](interp::EventLog &log) {
+    out << log.render(render);
+    if (viewer) viewer->feed(log.events());
+    log.clear();
+  };
   interp::MachineOptions engine;
   engine.check_post = o.check_post;
   Diagnostics run_diag;
@@ -217,21 +269,18 @@ int run_with(const RunOptions &o, DiagnosticReport &report, std::ostream &out) {
     for (int k = 0; k < agents; ++k) inputs.emplace_back(*trace, k);
     std::vector<interp::Environment *> envs;
     for (auto &i : inputs) envs.push_back(&i);
-    r = interp::run_team(model, chart, envs, ticks, engine, run_diag);
+    r = interp::run_team(model, chart, envs, ticks, engine, run_diag, after_tick);
   } else {
-    r = interp::run_chart(model, chart, *trace, ticks, engine, run_diag);
+    r = interp::run_chart(model, chart, *trace, ticks, engine, run_diag, after_tick);
   }
-  interp::RenderOptions render;
-  render.hooks = o.hooks;
-  render.explain = !o.observable;
-  render.indent = !o.observable;
-  out << r.log.render(render) << std::flush;
+  after_tick(r.log);  // what the tick that stopped the run did
+  out << std::flush;
   report.add(o.input, run_diag, c.sources);
-  if (!o.html.empty()) {
+  if (viewer) {
     // Never over the chart, a file it imports or the inputs (docs/security.md).
     std::vector<std::string> inputs{o.input, o.inputs_csv};
     for (FileId i = 0; i < c.sources.size(); ++i) inputs.push_back(c.sources.file(i).path());
-    std::string failed = write_atomically({{o.html, viewer::page(viewer_data(model, chart, r, o))}}, inputs);
+    std::string failed = write_atomically({{o.html, viewer::page(viewer->finish())}}, inputs);
     if (!failed.empty()) {
       report.tool_error(o.html, failed, false);
       return kExitUsageOrIo;
@@ -254,7 +303,9 @@ int run_command(int argc, const char *const *argv, std::ostream &out, std::ostre
   app.add_option("chart", o.input, "The chart file")->required();
   app.add_option("--inputs", o.inputs_csv, "CSV input trace: a column per sensing function, a row per tick")
       ->type_name("FILE");
-  app.add_option("--ticks", o.ticks, "Ticks to run (default: one per row of the trace, or 10)")->type_name("N");
+  app.add_option("--ticks", o.ticks, "Ticks to run (default: one per row of the trace, or 10)")
+      ->type_name("N")
+      ->check(CLI::Range(1LL, static_cast<long long>(kMaxRunTicks)));
   CLI::Option *agents = app.add_option("--agents", o.agents,
                                        "A team machine: how many of its agents run, in lockstep (default: all of them)")
                             ->type_name("N");

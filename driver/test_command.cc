@@ -9,6 +9,7 @@
 #include "scenario/reference_run.h"
 #include "scenario/scenario.h"
 #include "scenario/snapshot.h"
+#include "child_process.h"
 #include "test_engine.h"
 #include "xml_text.h"
 
@@ -18,6 +19,10 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <csignal>
+#include <filesystem>
+#include <pthread.h>
+#include <unistd.h>
 #include <memory>
 #include <ostream>
 #include <set>
@@ -313,6 +318,53 @@ std::string junit(const std::vector<std::unique_ptr<TestFile>> &files,
                      total, failures, suites);
 }
 
+/// For the lifetime of a `gfec test` run, SIGINT, SIGTERM and SIGHUP are held back in every
+/// thread and taken by one watcher, which stops the C compilers and harnesses still running
+/// (their process groups), removes the build folder, then lets the signal act: a stopped run
+/// leaves nothing in TMPDIR and no child behind (docs/security.md).
+class StopOnSignal {
+public:
+  explicit StopOnSignal(std::string folder) : folder_(std::move(folder)) {
+    sigemptyset(&set_);
+    for (int s : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&set_, s);
+    pthread_sigmask(SIG_BLOCK, &set_, &old_);  // before any worker starts: they inherit it
+    watcher_ = std::thread([this] {
+      while (!done_) take(100);
+    });
+  }
+  ~StopOnSignal() {
+    done_ = true;
+    watcher_.join();
+    take(0);  // one that came as the watcher ended
+    pthread_sigmask(SIG_SETMASK, &old_, nullptr);
+  }
+  StopOnSignal(const StopOnSignal &) = delete;
+  StopOnSignal &operator=(const StopOnSignal &) = delete;
+
+private:
+  void take(long wait_ms) {
+    timespec wait{0, wait_ms * 1000000L};
+    const int sig = sigtimedwait(&set_, nullptr, &wait);
+    if (sig <= 0) return;
+    child_process::stop_all(1.0);
+    std::error_code ignored;
+    if (!folder_.empty()) std::filesystem::remove_all(folder_, ignored);
+    // The signal's own action now, in this thread: safe_output's handler while the JUnit file
+    // is being written (it removes its temporary), else the default, which ends gfec.
+    sigset_t one;
+    sigemptyset(&one);
+    sigaddset(&one, sig);
+    pthread_sigmask(SIG_UNBLOCK, &one, nullptr);
+    raise(sig);
+    _exit(128 + sig);
+  }
+
+  std::string folder_;
+  sigset_t set_, old_;
+  std::atomic<bool> done_{false};
+  std::thread watcher_;
+};
+
 int test_with(const TestOptions &o, std::ostream &out, std::ostream &err) {
   auto report = make_report(o.report, err);
   std::vector<std::unique_ptr<TestFile>> files;
@@ -346,6 +398,7 @@ int test_with(const TestOptions &o, std::ostream &out, std::ostream &err) {
     report->finish(kExitUsageOrIo);
     return kExitUsageOrIo;
   }
+  StopOnSignal stop_on_signal(builds.folder());
   TestRunner runner(o, builds);
   std::atomic<std::size_t> next{0};
   auto worker = [&] {

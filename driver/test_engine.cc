@@ -2,6 +2,7 @@
 
 #include "backend_registry.h"
 #include "c_harness.h"
+#include "child_process.h"
 #include "interpreter/value.h"
 #include "scenario/snapshot.h"
 
@@ -13,19 +14,15 @@
 #include <fstream>
 #include <functional>
 #include <sstream>
-#include <sys/wait.h>
+#include <cerrno>
+#include <fcntl.h>
+#include <unistd.h>
 
 namespace gfec {
 
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string quote(const std::string &path) {
-  std::string out = "'";
-  for (char c : path) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
 
 std::string read_file(const fs::path &p) {
   std::ifstream in(p, std::ios::binary);
@@ -49,16 +46,35 @@ std::string head(const std::string &text, int lines = 8) {
   return out;
 }
 
-/// How a program std::system ran through the shell ended. The shell reports a child killed by
-/// signal N as exit status 128 + N; both are named as the signal (SIGFPE: an integer division
-/// by zero in the engine).
-std::string exit_status(int status) {
-  if (status == -1) return "could not be started";
-  int signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
-  if (WIFEXITED(status) && WEXITSTATUS(status) > 128 && WEXITSTATUS(status) < 128 + 64)
-    signal = WEXITSTATUS(status) - 128;
-  if (signal != 0) return fmt::format("was killed by signal {} ({})", signal, strsignal(signal));
-  return fmt::format("exited with status {}", WIFEXITED(status) ? WEXITSTATUS(status) : status);
+/// A pipe's read end as an input stream: the harness's records are parsed as they arrive, so
+/// its output is never stored (docs/testing-charts.md).
+class PipeReader : public std::streambuf {
+public:
+  explicit PipeReader(int fd) : fd_(fd) {}
+
+protected:
+  int_type underflow() override {
+    ssize_t n;
+    do n = ::read(fd_, buffer_, sizeof buffer_);
+    while (n < 0 && errno == EINTR);
+    if (n <= 0) return traits_type::eof();
+    setg(buffer_, buffer_, buffer_ + n);
+    return traits_type::to_int_type(buffer_[0]);
+  }
+
+private:
+  int fd_;
+  char buffer_[65536];
+};
+
+/// $CC split at blanks, as make splits it ("ccache gcc"), else `cc`.
+std::vector<std::string> c_compiler() {
+  const char *cc_env = std::getenv("CC");
+  std::istringstream words(cc_env && *cc_env ? cc_env : "cc");
+  std::vector<std::string> cc;
+  for (std::string w; words >> w;) cc.push_back(w);
+  if (cc.empty()) cc.push_back("cc");
+  return cc;
 }
 
 /// One harness output line `call F(a, b)` as a Call.
@@ -193,8 +209,9 @@ EngineBuilds::Build EngineBuilds::get(const model::Model &model, model::ChartId 
                                 "library's '{}' itself (run this chart's tests with --reference-only)",
                                 name, name)};
   const c_backend::HarnessSources harness = c_backend::write_harness(model, chart, o, harness_o);
-  const char *cc_env = std::getenv("CC");
-  std::string cc = cc_env && *cc_env ? cc_env : "cc";
+  const std::vector<std::string> cc_words = c_compiler();
+  std::string cc;
+  for (const std::string &w : cc_words) cc += (cc.empty() ? "" : " ") + w;
   std::string all = cc + '\0' + harness.glue + '\0' + harness.main;
   for (const auto &f : files) all += '\0' + f.path + '\0' + f.contents;
   std::size_t hash = std::hash<std::string>{}(all);
@@ -210,15 +227,22 @@ EngineBuilds::Build EngineBuilds::get(const model::Model &model, model::ChartId 
   if (!written) {
     b.error = fmt::format("cannot write the engine into '{}'", dir.string());
   } else {
-    std::string log = (dir / "build.log").string();
-    std::string cmd = fmt::format("{} -std=c99 -o {} {} {} {} > {} 2>&1", cc, quote((dir / "harness").string()),
-                                  quote((dir / "engine.c").string()), quote((dir / "glue.c").string()),
-                                  quote((dir / "harness.c").string()), quote(log));
-    int status = std::system(cmd.c_str());
-    if (status == 0) b.program = (dir / "harness").string();
+    // A child in its own process group, stopped with what it started if gfec test is stopped
+    // (support/child_process.h).
+    child_process::Spawn compile;
+    compile.argv = cc_words;
+    for (const char *part : {"-std=c99", "-o"}) compile.argv.push_back(part);
+    for (const char *part : {"harness", "engine.c", "glue.c", "harness.c"})
+      compile.argv.push_back((dir / part).string());
+    compile.stdout_path = (dir / "build.log").string();
+    compile.stderr_path = "&1";
+    const child_process::Result r = child_process::run(compile);
+    if (r.ok()) b.program = (dir / "harness").string();
+    else if (r.how == child_process::Result::How::NotStarted)
+      b.error = fmt::format("the C compiler '{}' could not be started ({})", cc, r.error);
     else
-      b.error = fmt::format("the C compiler '{}' {} on the generated engine:\n{}", cc, exit_status(status),
-                            head(read_file(log)));
+      b.error = fmt::format("the C compiler '{}' {} on the generated engine:\n{}", cc, child_process::describe(r),
+                            head(read_file(compile.stdout_path)));
   }
   builds_[hash] = b;
   return b;
@@ -235,27 +259,44 @@ scenario::Run EngineBuilds::run(const Build &build, const model::Model &model, c
       for (unsigned long i = 0; i < s.count; ++i) steps += "tick\n";
   }
   fs::path in = fs::path(folder_) / fmt::format("steps-{}.txt", id);
-  fs::path out = fs::path(folder_) / fmt::format("out-{}.txt", id);
   if (!write_file(in, steps)) {
     run.error = fmt::format("cannot write '{}'", in.string());
     return run;
   }
-  std::string cmd = fmt::format("{} < {} > {} 2>&1", quote(build.program), quote(in.string()), quote(out.string()));
-  int status = std::system(cmd.c_str());
-  {
-    std::ifstream text(out, std::ios::binary);
-    parse_output(text, model, test, keep, run);
+  // The records come through a pipe and are parsed as they arrive: a long test's output is
+  // never stored in TMPDIR nor held in memory (docs/testing-charts.md).
+  int pipe_fds[2];
+  if (::pipe2(pipe_fds, O_CLOEXEC) != 0) {
+    run.error = fmt::format("cannot create a pipe: {}", std::strerror(errno));
+    return run;
   }
+  child_process::Spawn harness;
+  harness.argv = {build.program};
+  harness.stdin_path = in.string();
+  harness.stdout_fd = pipe_fds[1];
+  harness.stderr_path = "&1";
+  std::string error;
+  const int pid = child_process::start(harness, error);
+  ::close(pipe_fds[1]);
+  child_process::Result r;
+  if (pid >= 0) {
+    PipeReader reader(pipe_fds[0]);
+    std::istream text(&reader);
+    parse_output(text, model, test, keep, run);
+    r = child_process::wait(pid);
+  } else {
+    r.error = error;
+  }
+  ::close(pipe_fds[0]);
   std::uint64_t expected = scenario::total_ticks(test) + 1;
   // One record after _init, then one per tick: with n records, tick n did not finish.
-  if (status != 0 || run.recorded() != expected) {
-    const std::string how = status != 0 ? exit_status(status) : "stopped";
+  if (!r.ok() || run.recorded() != expected) {
+    const std::string how = !r.ok() ? child_process::describe(r) : "stopped";
     run.error = run.recorded() == 0 ? fmt::format("the C engine's harness {} before its first tick", how)
                                     : fmt::format("the C engine's harness {} in tick {}", how, run.recorded());
   }
   std::error_code ec;
   fs::remove(in, ec);
-  fs::remove(out, ec);
   return run;
 }
 

@@ -5,6 +5,7 @@ packages=(
   cmake ninja-build gcc g++ clang lld llvm pkg-config make
   libfmt-dev nlohmann-json3-dev libcli11-dev catch2 libode-dev
   graphviz valgrind cppcheck time
+  procps  # pgrep: tests/cli/reliability.sh signals gfec, not the timeout(1) around it
   clang-format  # scripts/format.sh --check, a ctest test
   gcc-arm-none-eabi  # the cross build and freestanding engine tests (Cortex-M4)
   gcc-avr avr-libc libsimavr-dev  # AVR programs and tools/avr-run (docs/targets.md)

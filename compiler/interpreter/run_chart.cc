@@ -5,25 +5,28 @@
 namespace gfec::interp {
 
 RunResult run_chart(const model::Model &model, model::ChartId chart, Environment &env, std::uint64_t ticks,
-                    MachineOptions options, Diagnostics &diag) {
+                    MachineOptions options, Diagnostics &diag, const AfterTick &after_tick) {
   RunResult result;
+  bool started = false;  // a tick began (the log may have been emptied since)
   try {
     Machine engine(model, chart, options);
     for (std::uint64_t t = 0; t < ticks; ++t) {
+      started = true;
       engine.run(env, &result.log);
       result.ticks = engine.ticks();
+      if (after_tick) after_tick(result.log);
     }
     result.completed = true;
   } catch (const RuntimeError &e) {
     std::string when = result.ticks < ticks ? fmt::format("during tick {}", result.ticks + 1) : "";
-    if (result.log.events().empty()) when = "in init";
+    if (!started && result.log.events().empty()) when = "in init";
     diag.error(e.range, ErrorKind::Runtime, fmt::format("{} {}", e.what(), when));
   }
   return result;
 }
 
 RunResult run_team(const model::Model &model, model::ChartId chart, const std::vector<Environment *> &envs,
-                   std::uint64_t ticks, MachineOptions options, Diagnostics &diag) {
+                   std::uint64_t ticks, MachineOptions options, Diagnostics &diag, const AfterTick &after_tick) {
   RunResult result;
   std::size_t agent = 0;
   std::uint64_t tick = 0;
@@ -52,6 +55,7 @@ RunResult run_team(const model::Model &model, model::ChartId chart, const std::v
       }
       result.log.add(EventKind::Exchange, 1, std::move(states));
       result.ticks = tick;
+      if (after_tick) after_tick(result.log);
     }
     result.completed = true;
   } catch (const RuntimeError &e) {

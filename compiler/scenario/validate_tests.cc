@@ -395,6 +395,8 @@ bool lower_set(Context &cx, TestLowering &lowering, model::ChartId chart_id, con
 
 void validate_tests(Context &cx, scenario::Suite &out) {
   if (cx.program.files.empty() || !cx.program.files.front()) return;
+  long long file_ticks = 0;  // every test's ticks so far, for kMaxTicksPerFile
+  bool over_budget = false;
   for (const ast::Test &t : cx.program.files.front()->tests) {
     model::ChartId chart = resolve_chart(cx, t.chart, cx.file_unknown);
     if (!chart) continue;
@@ -420,6 +422,15 @@ void validate_tests(Context &cx, scenario::Suite &out) {
           ok = false;
         }
         step.count = static_cast<unsigned long>(std::max(in.count, 1LL));
+        file_ticks += std::min(in.count, kMaxTicksPerStep);  // an over-long step is its own error
+        if (file_ticks > kMaxTicksPerFile && !over_budget) {
+          cx.diag.error(in.value ? in.value->range : in.range, ErrorKind::Test,
+                        fmt::format("the tests of this file run more than {} ticks in all: split them over "
+                                    "several files",
+                                    kMaxTicksPerFile));
+          over_budget = true;
+          ok = false;
+        }
         break;
       case ast::TestStep::Kind::Set:
         step.kind = scenario::Step::Kind::Set;

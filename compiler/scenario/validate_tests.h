@@ -12,6 +12,11 @@ namespace gfec::validation {
 /// than a run that seems to hang.
 constexpr long long kMaxTicksPerStep = 1000000;
 
+/// The most ticks all the tests of one file may run together (each on the reference interpreter
+/// and on the C engine): a file of many long tests is an error at the step that goes past it,
+/// rather than a run that seems to hang (docs/testing-charts.md).
+constexpr long long kMaxTicksPerFile = 10000000;
+
 /// Checks the tests of the main file and appends those without errors to `out`.
 void validate_tests(Context &cx, scenario::Suite &out);
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <stdexcept>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -74,6 +75,16 @@ struct World {
 
 /// The most robots a world may hold (the robot libraries keep per-robot state for this many).
 constexpr int kMaxRobots = 8;
+
+/// A world file is at most this many bytes (read without blocking, and only a regular file:
+/// docs/security.md), ...
+constexpr std::size_t kMaxWorldBytes = 4u << 20;
+/// ... and holds at most this many walls, boxes and items in all, line points and events: each
+/// wall, box and item is tested against the robot's sensors and bumpers in every physics step,
+/// so the run's cost grows with them (100,000 walls took 6 to 9 s per simulated second).
+constexpr std::size_t kMaxWorldObstacles = 1000;
+constexpr std::size_t kMaxLinePoints = 10000;
+constexpr std::size_t kMaxWorldEvents = 10000;
 
 /// A world file that cannot be used; what() is "FILE: FIELD: what is wrong".
 struct WorldError : std::runtime_error {

@@ -1,6 +1,8 @@
 // Reading a world file: JSON -> World, with every mistake reported as "FILE: FIELD: problem".
 #include "core/world.h"
 
+#include "bounded_file.h"
+
 #include <cmath>
 #include <fstream>
 #include <initializer_list>
@@ -105,6 +107,8 @@ Line read_line(const Reader& r, const json& v) {
     line.closed = c->get<bool>();
   }
   const json& pts = r.array(r.require(v, f, "points"), f + ".points");
+  if (pts.size() > kMaxLinePoints)
+    r.fail(f + ".points", fmt::format("expected at most {} points, got {}", kMaxLinePoints, pts.size()));
   for (size_t i = 0; i < pts.size(); ++i) line.points.push_back(r.pair(pts[i], Reader::index(f + ".points", i)));
   if (line.points.size() < 2) r.fail(f + ".points", "expected at least 2 points");
   for (size_t i = 1; i < line.points.size(); ++i) {
@@ -239,6 +243,16 @@ World parse_world(const std::string& text, const std::string& path) {
   w.size = r.pair(r.require(doc, "", "size"), "size", "[w, h] (metres)");
   if (w.size.x <= 0 || w.size.y <= 0) r.fail("size", "expected positive [w, h]");
   if (const json* v = r.find(doc, "line")) w.line = read_line(r, *v);
+  // The run's cost grows with the obstacles: counted before any is read.
+  std::size_t obstacles = 0;
+  for (const char* key : {"walls", "boxes", "items"})
+    if (const json* v = r.find(doc, key)) {
+      r.array(*v, key);
+      obstacles += v->size();
+      if (obstacles > kMaxWorldObstacles)
+        r.fail(key, fmt::format("a world holds at most {} walls, boxes and items in all; this one has at least {}",
+                                kMaxWorldObstacles, obstacles));
+    }
   if (const json* v = r.find(doc, "walls")) {
     r.array(*v, "walls");
     for (size_t i = 0; i < v->size(); ++i) w.walls.push_back(read_wall(r, (*v)[i], Reader::index("walls", i)));
@@ -270,17 +284,20 @@ World parse_world(const std::string& text, const std::string& path) {
   w.start = w.robots.front();
   if (const json* v = r.find(doc, "events")) {
     r.array(*v, "events");
+    if (v->size() > kMaxWorldEvents)
+      r.fail("events", fmt::format("expected at most {} events, got {}", kMaxWorldEvents, v->size()));
     for (size_t i = 0; i < v->size(); ++i) w.events.push_back(read_event(r, (*v)[i], Reader::index("events", i), w));
   }
   return w;
 }
 
 World load_world(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw WorldError(fmt::format("{}: cannot open the world file", path));
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_world(text.str(), path);
+  // Only a regular file, opened without blocking and read to a bound: a FIFO, /dev/zero or a
+  // huge file is an error, not a hang or gigabytes (docs/security.md).
+  std::string text, error;
+  if (!gfec::bounded_file::read(path, kMaxWorldBytes, text, error))
+    throw WorldError(fmt::format("{}: cannot read the world file: {}", path, error));
+  return parse_world(text, path);
 }
 
 }  // namespace carbot

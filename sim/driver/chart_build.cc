@@ -1,6 +1,7 @@
 #include "driver/chart_build.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <fstream>
 
 #include <fmt/format.h>
@@ -166,17 +167,16 @@ bool recordable(const ChartInfo::Function& f) {
 }
 
 /// Runs a compile unless the cache has its result. The key leaves out the folder the engine is
-/// built in (it differs every run) by hashing the command with that folder blanked.
+/// built in (a fresh one every run) wherever it appears.
 void compile(const std::vector<std::string>& command, const std::vector<std::string>& inputs,
              const std::vector<std::string>& header_dirs, const Options& o, const std::string& output,
              const char* what) {
   const EngineCache cache(o.cache_dir);
-  std::vector<std::string> keyed = command;
-  const std::string dir = header_dirs.front();
-  for (std::string& a : keyed)
-    if (a.compare(0, dir.size(), dir) == 0) a = "<dir>" + a.substr(dir.size());
-  const std::string key = EngineCache::key(keyed, inputs, header_dirs);
-  if (cache.fetch(key, output)) return;
+  const std::string key = EngineCache::key(command, inputs, header_dirs, header_dirs.front());
+  if (cache.fetch(key, output)) {
+    if (!o.quiet) std::fprintf(stderr, "carbot-sim: %s: taken from the cache (entry %s)\n", what, key.c_str());
+    return;
+  }
   run_tool(command, what, kBadInput);
   cache.store(key, output);
 }

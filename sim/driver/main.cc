@@ -5,6 +5,7 @@
 #include <pthread.h>
 #include <signal.h>
 
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -27,6 +28,7 @@
 #include "driver/process.h"
 #include "driver/reports.h"
 #include "driver/run.h"
+#include "child_process.h"
 #include "safe_output.h"
 #include "viewer_page.h"
 
@@ -41,36 +43,50 @@ std::string env_or(const char* name, const char* fallback) {
   return v && *v ? v : fallback;
 }
 
+/// Set by the watchdog when it stops the run: it reports and ends the process itself.
+std::atomic<bool> g_stopping{false};
+
 int fail(Exit code, const std::string& message) {
+  // A child killed by the watchdog makes its step fail here: the watchdog's word is the one.
+  while (g_stopping) pause();
   std::fprintf(stderr, "carbot-sim: error: %s\n", message.c_str());
   return code;
 }
 
-/// A scratch folder for the generated engine: the user's --work-dir (kept), or a fresh
-/// temporary one (removed when the run ends).
+/// The private scratch folder the engine is built in (mkdtemp: fresh, mode 0700), removed when
+/// the run ends. --work-dir gets a copy of what was built (keep_copy), written as outputs are:
+/// a file or symlink planted there is replaced, never written through (docs/security.md).
 class WorkDir {
  public:
-  explicit WorkDir(const std::string& keep) {
-    if (!keep.empty()) {
-      fs::create_directories(keep);
-      path_ = keep;
-      return;
-    }
+  WorkDir() {
     std::string templ = (fs::temp_directory_path() / "carbot-sim-XXXXXX").string();
     if (!mkdtemp(templ.data())) throw std::runtime_error("cannot create a temporary folder");
     path_ = templ;
-    owned_ = true;
   }
   ~WorkDir() {
     std::error_code ignored;
-    if (owned_) fs::remove_all(path_, ignored);
+    fs::remove_all(path_, ignored);
   }
   const std::string& path() const { return path_; }
-  bool owned() const { return owned_; }
+
+  /// Copies every regular file built so far into `keep` (created if missing); "" or why not.
+  std::string keep_copy(const std::string& keep, const std::vector<std::string>& inputs) const {
+    std::error_code ec;
+    fs::create_directories(keep, ec);
+    if (ec) return fmt::format("--work-dir {}: {}", keep, ec.message());
+    std::vector<gfec::safe_output::File> files;
+    for (const auto& entry : fs::directory_iterator(path_, ec)) {
+      if (!entry.is_regular_file(ec)) continue;
+      std::ifstream in(entry.path(), std::ios::binary);
+      std::ostringstream bytes;
+      bytes << in.rdbuf();
+      files.push_back({(fs::path(keep) / entry.path().filename()).string(), bytes.str()});
+    }
+    return gfec::safe_output::write_all(files, inputs);
+  }
 
  private:
   std::string path_;
-  bool owned_ = false;
 };
 
 /// gfec's SVG of the chart for the viewer page, or "" and `note` saying why there is none (the
@@ -79,6 +95,10 @@ std::string chart_svg(const Options& o, const std::string& dir, std::string& not
   const std::string path = dir + "/chart.svg";
   std::string error;
   const int rc = run_process({o.gfec, "--emit=svg", o.chart, "-o", path}, error);
+  // Exit 1: the chart cannot be drawn in gfec's time limit for Graphviz (GFEC_TOOL_TIMEOUT,
+  // docs/security.md): an error, as it is for gfec. Else Graphviz is optional: a page without it.
+  if (rc == 1)
+    throw BuildError(fmt::format("{}: gfec could not draw the chart (its message is above)", o.chart), kBadInput);
   if (rc != 0) {
     note = rc < 0 ? error : "no diagram: 'gfec --emit=svg' failed (it needs Graphviz's dot)";
     return "";
@@ -107,7 +127,7 @@ CLI::Validator finite_in(double low, double high) {
       fmt::format("NUMBER in [{:g}, {:g}]", low, high));
 }
 
-/// The work folder to remove if the run is stopped from outside (owned temporaries only).
+/// The private work folder, to remove if the run is stopped from outside.
 std::string g_work_dir;
 std::mutex g_work_dir_mutex;
 
@@ -134,6 +154,9 @@ void start_watchdog(double timeout_seconds) {
       }
       const int sig = sigtimedwait(&set, nullptr, &wait);
       if (sig > 0) {
+        // The compilers, gfec and dot first (their process groups), then their folder.
+        g_stopping = true;
+        gfec::child_process::stop_all(1.0);
         {
           std::lock_guard<std::mutex> lock(g_work_dir_mutex);
           std::error_code ignored;
@@ -141,7 +164,6 @@ void start_watchdog(double timeout_seconds) {
         }
         // The signal's own action now: safe_output's handler if outputs are being written
         // (it removes their temporaries), else the default, which ends the process.
-        signal(sig, SIG_DFL);
         sigset_t one;
         sigemptyset(&one);
         sigaddset(&one, sig);
@@ -150,6 +172,8 @@ void start_watchdog(double timeout_seconds) {
         _exit(128 + sig);
       }
     }
+    g_stopping = true;
+    gfec::child_process::stop_all(1.0);
     {
       std::lock_guard<std::mutex> lock(g_work_dir_mutex);
       std::error_code ignored;
@@ -164,7 +188,15 @@ void start_watchdog(double timeout_seconds) {
 
 }  // namespace
 
+int run_main(int argc, char** argv);
+
 int main(int argc, char** argv) {
+  const int code = run_main(argc, argv);
+  while (g_stopping) pause();  // the watchdog ends the process with its own status
+  return code;
+}
+
+int run_main(int argc, char** argv) {
   Options o;
   o.gfec = env_or("CARBOT_SIM_GFEC", kGfecPath);
   o.cc = env_or("CC", kCCompiler);
@@ -198,7 +230,7 @@ int main(int argc, char** argv) {
   app.add_option("--cxx", o.cxx, "C++ compiler for plan engines (env CXX)")->capture_default_str();
   app.add_option("--cache", o.cache_dir, "keep compiled engines here for reuse, '' for none (env CARBOT_SIM_CACHE)")
       ->capture_default_str();
-  app.add_option("--work-dir", o.work_dir, "build the engine here and keep it (default: a temporary folder)");
+  app.add_option("--work-dir", o.work_dir, "keep a copy of the generated engine's files here");
   app.add_flag("-q,--quiet", o.quiet, "no progress display and no summary");
   // Several robots running a team machine (docs/sim.md, "Several robots").
   app.add_flag("--no-exchange", o.no_exchange, "team machines: exchange no states (each robot runs alone)");
@@ -229,12 +261,25 @@ int main(int argc, char** argv) {
 
   try {
     // 2. The engine: gfec generates it, the C compiler makes it loadable, we load it.
-    WorkDir dir(o.work_dir);
-    if (dir.owned()) {
+    WorkDir dir;
+    {
       std::lock_guard<std::mutex> lock(g_work_dir_mutex);
       g_work_dir = dir.path();
     }
-    const BuiltEngine built = build_engine(o, dir.path());
+    BuiltEngine built;
+    try {
+      built = build_engine(o, dir.path());
+    } catch (const BuildError&) {
+      if (!o.work_dir.empty()) dir.keep_copy(o.work_dir, {o.chart, o.world});  // for a look at what failed
+      throw;
+    }
+    if (!o.work_dir.empty()) {
+      std::vector<std::string> never = built.chart.files;
+      never.push_back(o.chart);
+      never.push_back(o.world);
+      const std::string error = dir.keep_copy(o.work_dir, never);
+      if (!error.empty()) return fail(kUsage, error);
+    }
     const int robots = static_cast<int>(world.robots.size());
     if (robots > 1) {
       if (built.chart.kind == "plan")
@@ -289,6 +334,7 @@ int main(int argc, char** argv) {
     std::vector<std::string> inputs = built.chart.files;
     inputs.push_back(o.chart);
     inputs.push_back(o.world);
+    while (g_stopping) pause();  // a child stopped by the watchdog: no outputs from a cut-short run
     const std::string error = gfec::safe_output::write_all(outputs, inputs);
     if (!error.empty()) return fail(kUsage, error);
     if (!o.quiet) {

@@ -1,44 +1,21 @@
 #include "driver/process.h"
 
-#include <signal.h>
-#include <spawn.h>
-#include <sys/wait.h>
-
-#include <cerrno>
-#include <cstring>
-
-extern char** environ;
+#include "child_process.h"
 
 namespace carbot::driver {
 
 int run_process(const std::vector<std::string>& argv, std::string& error) {
-  std::vector<char*> args;
-  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-  args.push_back(nullptr);
-  pid_t pid = 0;
-  // carbot-sim blocks SIGINT/SIGTERM/SIGHUP in its threads (main.cc's watchdog takes them); the
-  // compilers it runs get the default mask, so they stop (and clean up) on a signal themselves.
-  posix_spawnattr_t attr;
-  posix_spawnattr_init(&attr);
-  sigset_t none;
-  sigemptyset(&none);
-  posix_spawnattr_setsigmask(&attr, &none);
-  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGMASK);
-  const int rc = posix_spawnp(&pid, args[0], nullptr, &attr, args.data(), environ);
-  posix_spawnattr_destroy(&attr);
-  if (rc != 0) {
-    error = std::string("cannot run ") + argv[0] + ": " + std::strerror(rc);
-    return -1;
-  }
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0) {
-    if (errno != EINTR) {
-      error = std::string("waiting for ") + argv[0] + ": " + std::strerror(errno);
-      return -1;
-    }
-  }
-  if (WIFEXITED(status)) return WEXITSTATUS(status);
-  error = argv[0] + std::string(" died of signal ") + std::to_string(WTERMSIG(status));
+  // In a process group of its own (support/child_process.h): when the run is stopped (--timeout,
+  // SIGINT, SIGTERM, SIGHUP), main.cc's watchdog stops the group, so cc's cc1, as and ld, or
+  // gfec and its dot, do not outlive carbot-sim. The child gets an empty signal mask (carbot-sim
+  // blocks those signals in its threads) and so stops and cleans up on a signal itself.
+  gfec::child_process::Spawn spawn;
+  spawn.argv = argv;
+  const gfec::child_process::Result r = gfec::child_process::run(spawn);
+  using How = gfec::child_process::Result::How;
+  if (r.how == How::Exited) return r.code;
+  error = r.how == How::NotStarted ? "cannot run " + argv[0] + ": " + r.error
+                                   : argv[0] + " " + gfec::child_process::describe(r);
   return -1;
 }
 
