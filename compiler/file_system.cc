@@ -1,5 +1,6 @@
 #include "file_system.h"
 
+#include "bounded_file.h"
 #include "escape.h"
 
 #include <algorithm>
@@ -53,115 +54,23 @@ std::vector<std::string> below(const std::string &dir, const std::vector<std::st
 
 }  // namespace
 
-namespace {
-
-/// The pseudo file systems whose files are the kernel's, not data (linux/magic.h): their sizes
-/// say 0 or lie, a read may block (/proc/kmsg), consume (the kernel log) or act (sysfs).
-bool kernel_file_system(unsigned long type) {
-  switch (type) {
-  case 0x9fa0UL:      // procfs
-  case 0x62656572UL:  // sysfs
-  case 0x64626720UL:  // debugfs
-  case 0x74726163UL:  // tracefs
-  case 0x73636673UL:  // securityfs
-  case 0x27e0ebUL:    // cgroup
-  case 0x63677270UL:  // cgroup2
-  case 0x62656570UL:  // configfs
-  case 0xcafe4a11UL:  // bpf
-  case 0xde5e81e4UL:  // efivarfs
-  case 0x6165676cUL:  // pstore
-  case 0x42494e4dUL:  // binfmt_misc
-  case 0x65735543UL:  // fusectl
-  case 0xf97cff8cUL:  // selinuxfs
-  case 0x43415d53UL:  // smackfs
-    return true;
-  default: return false;
-  }
-}
-
-constexpr const char *kKernelFile =
-    "a file of /proc, /sys or another of the kernel's pseudo file systems; gfec reads none";
-
-std::string mib(std::size_t bytes) { return std::to_string(bytes >> 20) + " MiB"; }
-
-/// Why a file with this status is not read, or "" if it may be.
-std::string refusal(const struct stat &st, std::size_t max_file) {
-  if (S_ISDIR(st.st_mode)) return "it is a folder";
-  if (!S_ISREG(st.st_mode)) return "not a regular file; gfec reads no devices, pipes or sockets";
-  if (st.st_size > 0 && static_cast<std::uintmax_t>(st.st_size) > max_file)
-    return "larger than " + mib(max_file) + ", the most gfec reads of one file";
-  return {};
-}
-
-std::string error_reason(int error) {
-  return error == ENOENT || error == ENOTDIR ? "no such file"
-         : error == EACCES                   ? "permission denied"
-                                             : std::strerror(error);
-}
-
-}  // namespace
-
 FileText RealFileSystem::read(const std::string &path) const {
   auto refused = [](std::string why) { return FileText{std::nullopt, std::move(why)}; };
-  // Looked at before it is opened, since opening may act already (a FIFO's open waits for a
-  // writer, a device's driver runs), and again on what was opened: the path may have changed
-  // in between. Symlinks are followed (a symlinked import is fine): the checks are on the file
-  // they lead to.
-  struct stat st {};
-  struct statfs sfs {};
-  if (::stat(path.c_str(), &st) != 0) return refused(error_reason(errno));
-  if (std::string why = refusal(st, limits_.max_file); !why.empty()) return refused(why);
-  if (::statfs(path.c_str(), &sfs) == 0 && kernel_file_system(static_cast<unsigned long>(sfs.f_type)))
-    return refused(kKernelFile);
-  // O_NONBLOCK: should a FIFO or device replace the file after the checks, open() returns at
-  // once and fstat refuses it; O_NOCTTY: a terminal never becomes gfec's controlling one.
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NOCTTY | O_NONBLOCK);
-  if (fd < 0) return refused(error_reason(errno));
-  struct Closer {
-    int fd;
-    ~Closer() { ::close(fd); }
-  } closer{fd};
-  if (::fstat(fd, &st) != 0) return refused(error_reason(errno));
-  if (std::string why = refusal(st, limits_.max_file); !why.empty()) return refused(why);
-  if (::fstatfs(fd, &sfs) != 0 || kernel_file_system(static_cast<unsigned long>(sfs.f_type)))
-    return refused(kKernelFile);
-  const int flags = ::fcntl(fd, F_GETFL);
-  if (flags < 0 || ::fcntl(fd, F_SETFL, flags & ~O_NONBLOCK) != 0) return refused(error_reason(errno));
-
-  const std::size_t size = st.st_size > 0 ? static_cast<std::size_t>(st.st_size) : 0;
   const std::size_t before = total_.load();
+  const std::size_t room = before >= limits_.max_total ? 0 : limits_.max_total - before;
   auto too_much = [this] {
-    return "the files read so far and this one are larger than " + mib(limits_.max_total) +
+    return "the files read so far and this one are larger than " + bounded_file::mib(limits_.max_total) +
            ", the most gfec reads for one input";
   };
-  if (before + size > limits_.max_total) return refused(too_much());
-  // read(2) rather than a stream: a filebuf reports a failed read (EIO, or a file like
-  // /proc/self/mem that refuses to be read) as the end of the file, and a truncated chart would
-  // then be compiled as if it were whole.
-  auto read_some = [fd](char *into, std::size_t count) {
-    ssize_t n;
-    do n = ::read(fd, into, count);
-    while (n < 0 && errno == EINTR);
-    return n;
-  };
-  // Read into a string sized from fstat: appending in chunks would grow it by doubling, and a
-  // 90 MB chart would touch three times its size in fresh pages. Reading still goes on to the
-  // end of the file, so one that grew meanwhile is read whole and one that shrank is not padded;
-  // but never past the limit, whatever the size said.
-  std::string text(size, '\0');
-  std::size_t used = 0;
-  ssize_t n = 1;
-  while (used < text.size() && (n = read_some(text.data() + used, text.size() - used)) > 0)
-    used += static_cast<std::size_t>(n);
-  text.resize(used);
-  char buffer[65536];
-  while (n > 0 && text.size() <= limits_.max_file && (n = read_some(buffer, sizeof buffer)) > 0)
-    text.append(buffer, static_cast<std::size_t>(n));
-  if (n < 0) return refused(error_reason(errno));
-  if (text.size() > limits_.max_file)
-    return refused("larger than " + mib(limits_.max_file) + ", the most gfec reads of one file");
-  if (total_.fetch_add(text.size()) + text.size() > limits_.max_total) return refused(too_much());
-  return FileText{std::move(text), {}};
+  bounded_file::Text file = bounded_file::read(path, std::min(limits_.max_file, room));
+  if (file.too_large)
+    return refused(limits_.max_file <= room
+                       ? "larger than " + bounded_file::mib(limits_.max_file) + ", the most gfec reads of one file"
+                       : too_much());
+  if (!file.text) return refused(file.why);
+  const std::size_t size = file.text->size();
+  if (total_.fetch_add(size) + size > limits_.max_total) return refused(too_much());
+  return FileText{std::move(*file.text), {}};
 }
 
 std::string cannot_read(const std::string &path, const std::string &why) {

@@ -395,7 +395,7 @@ std::unique_ptr<EngineContext> make_context(const model::Model &model, const mod
       c->header_file.find("??") != std::string::npos)
     throw std::runtime_error(
         "cannot name the header '" + c->header_file +
-        "' in the engine's #include \"...\", which takes no '\"', '\\', control character or '??': choose another -o");
+        "' in the engine's #include \"...\", which takes no '\"', '\\', control character or '?\?': choose another -o");
   c->guard = guard_of(c->header_file);
   NameSpace globals;
   build(*c, globals, nullptr);

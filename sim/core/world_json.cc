@@ -294,10 +294,12 @@ World parse_world(const std::string& text, const std::string& path) {
 World load_world(const std::string& path) {
   // Only a regular file, opened without blocking and read to a bound: a FIFO, /dev/zero or a
   // huge file is an error, not a hang or gigabytes (docs/security.md).
-  std::string text, error;
-  if (!gfec::bounded_file::read(path, kMaxWorldBytes, text, error))
-    throw WorldError(fmt::format("{}: cannot read the world file: {}", path, error));
-  return parse_world(text, path);
+  gfec::bounded_file::Text file = gfec::bounded_file::read(path, kMaxWorldBytes);
+  if (file.too_large)
+    throw WorldError(fmt::format("{}: cannot read the world file: larger than {}, the most a world may be", path,
+                                 gfec::bounded_file::mib(kMaxWorldBytes)));
+  if (!file.text) throw WorldError(fmt::format("{}: cannot read the world file: {}", path, file.why));
+  return parse_world(*file.text, path);
 }
 
 }  // namespace carbot

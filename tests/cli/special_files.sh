@@ -31,7 +31,7 @@ expect_error() {  # EXIT-CODE PATTERN: what the last run must have done
   grep -q -- "$2" err || fail "no '$2' in: $(head -c 2000 err)"
 }
 kernel="a file of /proc, /sys or another of the kernel's pseudo file systems; gfec reads none"
-not_regular="not a regular file; gfec reads no devices, pipes or sockets"
+not_regular="not a regular file (a FIFO); gfec reads no devices, pipes or sockets"
 
 # Imports: the file /proc/self/pagemap (gigabytes that say 0 bytes), a symlink to a /proc file,
 # a FIFO no one writes. Each is a located error, exit 1, and nothing is read.

@@ -276,7 +276,7 @@ TEST_CASE("carbot-sim: a world that is a device, a FIFO, too large or too full i
   for (const Case &c :
        {Case{zero, "cannot read the world file: not a regular file (a character device)"},
         Case{fifo, "cannot read the world file: not a regular file (a FIFO)"},
-        Case{dir.file("big.json"), "cannot read the world file: the file is 5242926 bytes; at most 4194304 are read"},
+        Case{dir.file("big.json"), "cannot read the world file: larger than 4 MiB, the most a world may be"},
         Case{dir.file("walls.json"),
              "walls: a world holds at most 1000 walls, boxes and items in all; this one has at least "
              "100000"}}) {

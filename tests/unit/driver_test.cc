@@ -47,8 +47,8 @@ TEST_CASE("gfec: usage errors exit 2") {
   CHECK(folder.out == "gfec: error: cannot read '/tmp': it is a folder\n");
   auto device = run_command(gfec_exe + " run /dev/zero");
   CHECK(device.exit_code == 2);
-  CHECK(device.out == "gfec: error: cannot read '/dev/zero': not a regular file; gfec reads no devices, pipes or "
-                      "sockets\n");
+  CHECK(device.out == "gfec: error: cannot read '/dev/zero': not a regular file (a character device); gfec reads no "
+                      "devices, pipes or sockets\n");
 }
 
 TEST_CASE("gfec: compiles a chart into engine.c and engine.h") {

@@ -33,7 +33,7 @@ TEST_CASE("io: a file is read whole, whatever its size says", "[io]") {
     CHECK(*got == text);
   }
   // Not a regular file, or a read that fails: no text at all, never a short one.
-  CHECK(fs.read("/dev/zero").why == "not a regular file; gfec reads no devices, pipes or sockets");
+  CHECK(fs.read("/dev/zero").why == "not a regular file (a character device); gfec reads no devices, pipes or sockets");
   CHECK(!fs.read(dir + "/missing"));
   CHECK(fs.read(dir + "/missing").why == "no such file");
   CHECK(fs.read(dir).why == "it is a folder");
@@ -61,7 +61,7 @@ TEST_CASE("io: the kernel's files, FIFOs and files past the limits are refused u
   const std::string fifo = dir + "/pipe.sfc";
   std::filesystem::remove(fifo);
   REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
-  CHECK(fs.read(fifo).why == "not a regular file; gfec reads no devices, pipes or sockets");
+  CHECK(fs.read(fifo).why == "not a regular file (a FIFO); gfec reads no devices, pipes or sockets");
 
   // The limits, made small: one file, then what one file system reads in all.
   ReadLimits small;

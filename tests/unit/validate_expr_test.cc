@@ -650,9 +650,13 @@ sfc S {
     REQUIRE(fe.text() == "");
     const std::string text = pointed_at;
     // A language whose ranges are not chart text (its row says how its text is quoted).
-    static const InputLanguage written{
-        "written",           "a language that spells its operators", {}, nullptr, nullptr,
-        /*chart_text=*/false};
+    static const InputLanguage written{"written",
+                                       "a language that spells its operators",
+                                       {},
+                                       nullptr,
+                                       nullptr,
+                                       /*chart_text=*/false,
+                                       /*line_comment=*/{}};
     FileId file = fe.sources.add("t.st", text, chart_text ? chart_text_language() : written);
     auto at = [&](const std::string &op) {
       auto begin = static_cast<std::uint32_t>(text.find(op));
