@@ -80,6 +80,39 @@ test('a broken chart fails at the expectation, with the values in notes', () => 
   assert.match(r.stderr, /note: in test "a black left sensor stops the left wheel", after tick 2$/m);
 });
 
+// A call expected in the wrong tick is the common slip (an initial place's timer counts from the
+// first tick): the failed expectation says when the function was last called.
+const LAST_CALL = `interface Bot { void Beep(); void Led(bool on); }
+sfc Blink {
+  period 100ms;
+  initial place Off { Led(false); }
+  place On { entry { Beep(); } Led(true); }
+  Off -> On when elapsed(Off) >= 500ms;
+}
+test "beeps when it switches on" of Blink {
+  tick 6;
+  expect called Beep;
+  expect called Led(false);
+}
+test "never switches the LED off" of Blink {
+  tick 3;
+  expect !called Led(false) || called Beep;
+}
+`;
+
+test('a failed expectation about a call says when the function was last called', () => {
+  const dir = scratch({ 'last.test': LAST_CALL });
+  const r = gfec(['test', 'last.test'], dir);
+  assert.equal(r.code, 1);
+  assert.equal(lastLine(r.stdout), '0 passed, 2 failed');
+  assert.match(r.stderr, /^last\.test:10:3: error: expectation failed: called Beep \[expectation\]$/m);
+  assert.match(r.stderr, /^last\.test:10:3: note: 'Beep' was last called in tick 5: Beep\(\)$/m);
+  assert.match(r.stderr, /^last\.test:11:3: note: 'Led\(false\)' was last called in tick 4: Led\(false\)$/m);
+  // A call of the last tick is in the list of its calls already.
+  assert.doesNotMatch(r.stderr, /^last\.test:15:3: note: 'Led\(false\)' was last called/m);
+  assert.match(r.stderr, /^last\.test:15:3: note: 'Beep' was not called in any tick so far \(1 \.\.\. 3\)$/m);
+});
+
 test('a test file with errors is a failed run with located errors (exit 1)', () => {
   const dir = scratch({ 'bad.test': 'import "line_follower.sfc";\ntest "t" of LineFolower { tick 0; }\n' });
   lineFollower(dir);
