@@ -8,6 +8,7 @@
 #include "c_engine_options.h"
 #include "c_layout.h"
 #include "model.h"
+#include "naming/naming.h"
 
 #include <functional>
 #include <memory>
@@ -55,7 +56,7 @@ struct EngineContext {
   std::string fingerprint;
   /// X_init and X_run as the linker sees them: the names with the fingerprint, so that code
   /// compiled against another version of the header does not link.
-  std::string stamped(const std::string &fn) const { return fn + "_regenerate_if_undefined_" + fingerprint; }
+  std::string stamped(const std::string &fn) const { return fn + std::string(naming::kFingerprintInfix) + fingerprint; }
   /// Defined by the header: the engine refuses to compile against any other version of it.
   std::string layout_macro() const { return guard + "_LAYOUT_" + fingerprint; }
   std::string hooks_macro;       ///< X_HOOKS: define it to get the observation hooks
