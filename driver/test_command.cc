@@ -370,6 +370,21 @@ int test_with(const TestOptions &o, std::ostream &out, std::ostream &err) {
     report->finish(kExitUsageOrIo);
     return kExitUsageOrIo;
   }
+  if (!o.reference_only && !outcomes.empty()) {
+    // One clear error rather than every test failing on its own (docs/testing-charts.md).
+    std::vector<std::string> notes;
+    if (!builds.choose_compiler(notes)) {
+      std::string message = "no C compiler builds programs for this machine, so the generated engines cannot run";
+      for (const std::string &n : notes) message += "\n  tried " + n;
+      message += "\n  install one (Debian: gcc), name it in $HOST_CC, or run only the reference interpreter with "
+                 "'gfec test --reference-only'";
+      report->tool_error("", message, false);
+      report->finish(kExitUsageOrIo);
+      return kExitUsageOrIo;
+    }
+    if (!notes.empty())
+      err << fmt::format("gfec test: note: the engines are built with '{}': {}\n", builds.compiler(), notes.front());
+  }
   TestRunner runner(o, builds);
   std::atomic<std::size_t> next{0};
   auto worker = [&] {

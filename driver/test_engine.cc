@@ -173,6 +173,38 @@ EngineBuilds::~EngineBuilds() {
   fs::remove_all(folder_, ec);
 }
 
+bool EngineBuilds::choose_compiler(std::vector<std::string> &notes) {
+  std::vector<std::pair<std::string, std::string>> candidates;  // (compiler, where it came from)
+  for (const char *var : {"HOST_CC", "CC"})
+    if (const char *v = std::getenv(var); v && *v) candidates.emplace_back(v, fmt::format("${}", var));
+  candidates.emplace_back("cc", "the default");
+  const fs::path probe = fs::path(folder_) / "probe";
+  if (!write_file(probe.string() + ".c", "int main(void) { return 0; }\n")) return false;
+  std::vector<std::string> tried;
+  for (const auto &[cc, from] : candidates) {
+    if (std::find_if(tried.begin(), tried.end(), [&](const std::string &t) { return t == cc; }) != tried.end())
+      continue;
+    tried.push_back(cc);
+    const std::string log = probe.string() + ".log";
+    const std::string build = fmt::format("{} -std=c99 -o {} {} > {} 2>&1", cc, quote(probe.string()),
+                                          quote(probe.string() + ".c"), quote(log));
+    int status = std::system(build.c_str());
+    if (status != 0) {
+      std::string out = head(read_file(log));
+      notes.push_back(fmt::format("'{}' ({}) {}{}", cc, from, exit_status(status), out.empty() ? "" : ":\n" + out));
+      continue;
+    }
+    status = std::system((quote(probe.string()) + " > /dev/null 2>&1").c_str());
+    if (status != 0) {
+      notes.push_back(fmt::format("'{}' ({}) builds programs this machine does not run (a cross compiler?)", cc, from));
+      continue;
+    }
+    cc_ = cc;
+    return true;
+  }
+  return false;
+}
+
 EngineBuilds::Build EngineBuilds::get(const model::Model &model, model::ChartId chart, const std::string &source_name,
                                       int agents) {
   auto backend = make_backend("c");
@@ -193,8 +225,7 @@ EngineBuilds::Build EngineBuilds::get(const model::Model &model, model::ChartId 
                                 "library's '{}' itself (run this chart's tests with --reference-only)",
                                 name, name)};
   const c_backend::HarnessSources harness = c_backend::write_harness(model, chart, o, harness_o);
-  const char *cc_env = std::getenv("CC");
-  std::string cc = cc_env && *cc_env ? cc_env : "cc";
+  const std::string &cc = cc_;
   std::string all = cc + '\0' + harness.glue + '\0' + harness.main;
   for (const auto &f : files) all += '\0' + f.path + '\0' + f.contents;
   std::size_t hash = std::hash<std::string>{}(all);
