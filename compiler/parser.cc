@@ -23,7 +23,7 @@ struct SyntaxError {};
 class Parser {
 public:
   Parser(const SourceManager &sources, FileId file, Diagnostics &diag)
-      : file_(file), diag_(diag), lexer_(sources, file, diag) {
+      : file_(file), diag_(diag), lexer_(sources, file, diag), text_(sources.file(file).text()) {
     advance();
   }
 
@@ -69,8 +69,24 @@ private:
   /// Consumes `k` or reports "expected X before Y" and abandons the construct.
   Token expect(Tok k, std::string_view context = {}) {
     if (at(k)) return take();
+    if (k == Tok::Semi) missing_semicolon(context);
     fail(fmt::format("expected {}{}", describe(k), context.empty() ? "" : fmt::format(" {}", context)));
   }
+  /// A `;` forgotten at the end of a line: gcc's place for it, just after the previous token (the
+  /// next line's first token is not where the mistake is), with the fix-it inserting it.
+  void missing_semicolon(std::string_view context) {
+    if (tok_.follows_error || prev_end_ == 0 || prev_end_ > tok_.range.begin) return;
+    const std::string_view between = std::string_view(text_).substr(prev_end_, tok_.range.begin - prev_end_);
+    if (between.find('\n') == std::string_view::npos) return;
+    const SourceRange at{file_, prev_end_, prev_end_};
+    diag_
+        .error(at, ErrorKind::Syntax,
+               fmt::format("expected ';'{} at the end of the line", context.empty() ? "" : fmt::format(" {}", context)))
+        .fix(at, ";")
+        .note(tok_.range, at_end() ? "the file ends here" : fmt::format("before '{}' on the next line", tok_.text));
+    throw SyntaxError{};
+  }
+  bool at_end() const { return at(Tok::End); }
   [[noreturn]] void fail(const std::string &what) {
     // Right after a lexical error the parser's complaint is only its echo: stay quiet.
     if (!tok_.follows_error) {
@@ -226,6 +242,7 @@ private:
   Token tok_;
   std::optional<Token> lookahead_;
   std::uint32_t prev_end_ = 0;
+  const std::string &text_;  ///< the file's text (where a line ends)
   int depth_ = 0;
   int height_ = 0;  ///< height of the expression the last binary/unary/primary returned
   bool eof_reported_ = false;
@@ -1007,8 +1024,15 @@ void Parser::test_step(Test &test, long long agent, SourceRange agent_range) {
       step.count = count_of(n);
       step.value = make(Expr::Kind::Int, n.range);
       step.value->name = {n.text, n.range};
+    } else if (at(Tok::Duration)) {
+      // `tick 5s;`: as many ticks as the chart's period makes it (the validator counts them).
+      Token d = take();
+      step.count = 0;
+      step.value = make(Expr::Kind::Duration, d.range);
+      step.value->duration_ms = d.duration_ms;
+      step.value->name = {d.text, d.range};
     } else if (!at(Tok::Semi)) {
-      fail("expected a number of ticks or ';' after 'tick'");
+      fail("expected a number of ticks, a duration or ';' after 'tick'");
     }
   } else if (at_word("set")) {
     advance();

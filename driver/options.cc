@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <sstream>
 
 namespace gfec {
@@ -31,6 +32,29 @@ std::string unknown_warning(const std::string &flag, const std::string &name) {
   if (!best.empty())
     message += fmt::format("; did you mean '-W{}{}'?", flag.substr(0, flag.size() - name.size()), best);
   return message + " ('gfec --help' lists the warnings)";
+}
+
+/// For an option the command does not have (`--chek`), the nearest it has: "did you mean
+/// '--check'?" on a line of its own, or "".
+std::string option_suggestion(const CLI::App &app, int argc, const char *const *argv) {
+  std::vector<std::string> names;
+  for (const CLI::Option *opt : app.get_options()) {
+    for (const std::string &l : opt->get_lnames()) names.push_back("--" + l);
+    for (const std::string &sn : opt->get_snames()) names.push_back("-" + sn);
+  }
+  std::string out;
+  for (int i = 1; i < argc; ++i) {
+    std::string arg = argv[i];
+    if (arg.size() < 3 || arg.compare(0, 2, "--") != 0) continue;
+    arg = arg.substr(0, arg.find('='));
+    if (std::find(names.begin(), names.end(), arg) != names.end()) continue;
+    NearestName nearest(arg, typo_limit(arg.size() - 2));
+    std::string best;
+    for (const std::string &n : names)
+      if (n.size() > 2 && nearest.offer(n)) best = n;
+    if (!best.empty()) out += fmt::format("{}: note: did you mean '{}'?\n", app.get_name(), best);
+  }
+  return out;
 }
 
 /// Applies one -W value ("error", "all", "no-conflict", "conflict"); returns why it cannot, or "".
@@ -212,7 +236,8 @@ std::optional<int> parse_subcommand(CLI::App &app, int argc, const char *const *
     std::ostringstream error;
     int code = app.exit(e, out, error);
     err << printable_error(error.str(), e);
-    if (code != 0) err << "Run 'gfec " << command << " --help' for the options.\n";
+    if (code != 0)
+      err << option_suggestion(app, argc, argv) << "Run 'gfec " << command << " --help' for the options.\n";
     return code == 0 ? 0 : 2;
   }
   return std::nullopt;
@@ -272,7 +297,9 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
     std::ostringstream out, err;
     result.exit_code = app.exit(e, out, err) == 0 ? 0 : 2;
     result.message = result.exit_code == 0 ? out.str() : printable_error(err.str(), e);
-    if (result.exit_code != 0) result.message += "Run 'gfec --help' for the options.\n";
+    if (result.exit_code != 0)
+      result.message +=
+          option_suggestion(app, static_cast<int>(args.size()), args.data()) + "Run 'gfec --help' for the options.\n";
     return result;
   }
 

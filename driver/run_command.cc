@@ -229,8 +229,10 @@ int run_with(const RunOptions &o, DiagnosticReport &report, std::ostream &out) {
   } else {
     trace = std::make_unique<interp::InputTrace>(model);
   }
-  // Without --ticks: one tick per row of the trace, or ten.
-  const std::uint64_t ticks = o.ticks ? static_cast<std::uint64_t>(o.ticks) : trace->rows() ? trace->rows() : 10;
+  // Without --ticks: up to the trace's last row (its tick, or its number), or ten.
+  const std::uint64_t ticks = o.ticks              ? static_cast<std::uint64_t>(o.ticks)
+                              : trace->last_tick() ? trace->last_tick()
+                                                   : 10;
   if (ticks > kMaxRunTicks || (!o.html.empty() && ticks > kMaxHtmlTicks)) {
     report.tool_error(o.inputs_csv.empty() ? o.input : o.inputs_csv,
                       fmt::format("{} ticks is more than gfec run runs{}: at most {} (docs/cli.md)", ticks,
@@ -296,14 +298,15 @@ int run_command(int argc, const char *const *argv, std::ostream &out, std::ostre
   CLI::App app{"gfec run - runs an sfc or fsm in the reference interpreter and prints what happens each tick",
                "gfec run"};
   app.footer("The trace is CSV: a header naming interface functions, then one row per tick with what\n"
-             "each returns. A function without a column returns 0 (false); past the last row the last\n"
-             "row holds. A team machine runs every agent: a column `F@k` is what F returns to agent k.\n"
+             "each returns; with a `tick` column a row holds from its tick until the next row's. A\n"
+             "function without a column returns 0 (false); past the last row the last row holds. A team machine runs "
+             "every agent: a column `F@k` is what F returns to agent k.\n"
              "Exit status: 0 ran, 1 errors in the chart or the trace, or undefined behaviour\n"
              "while running, 2 usage or I/O error. Documentation: docs/verification.md");
   app.add_option("chart", o.input, "The chart file")->required();
   app.add_option("--inputs", o.inputs_csv, "CSV input trace: a column per sensing function, a row per tick")
       ->type_name("FILE");
-  app.add_option("--ticks", o.ticks, "Ticks to run (default: one per row of the trace, or 10)")
+  app.add_option("--ticks", o.ticks, "Ticks to run (default: up to the trace's last row, or 10)")
       ->type_name("N")
       ->check(CLI::Range(1LL, static_cast<long long>(kMaxRunTicks)));
   CLI::Option *agents = app.add_option("--agents", o.agents,

@@ -107,6 +107,12 @@ bool reads_calls(const scenario::Expect &e) {
   return false;
 }
 
+/// The `called` and `calls` operands of an expectation, in source order.
+void call_operands(const scenario::Expect &e, std::vector<const scenario::Expect *> &out) {
+  if (e.kind == scenario::Expect::Kind::Called || e.kind == scenario::Expect::Kind::Calls) out.push_back(&e);
+  for (const auto &a : e.args) call_operands(a, out);
+}
+
 /// The range of the `tick` step that ran tick `tick` (counted from 1).
 SourceRange tick_step(const scenario::Test &test, std::uint64_t tick) {
   std::uint64_t seen = 0;
@@ -238,12 +244,40 @@ private:
         for (const scenario::Call &c : bad_run.at(tick)->at(agent).calls) calls += (calls.empty() ? "" : ", ") + c.text;
         d.note(calls.empty() ? std::string("no function was called in the last tick")
                              : fmt::format("the calls of the last tick: {}", calls));
+        last_calls(d, test, file, s.expect, agent, tick);
       }
       if (sides[0].verdict && sides[1].verdict && failed(sides[0]) != failed(sides[1]))
         d.note(
             fmt::format("it fails on {} only; it holds on {}", bad.who, (&bad == &sides[0] ? sides[1] : sides[0]).who));
       d.note(test.agents > 1 ? fmt::format("in test \"{}\", agent {}, after tick {}", test.name, agent, tick)
                              : fmt::format("in test \"{}\", after tick {}", test.name, tick));
+    }
+  }
+
+  /// When each function the expectation asks about was last called (on the reference run): a
+  /// call expected at the wrong tick is the usual mistake (the first tick of an initial place).
+  static void last_calls(Diagnostic &d, const scenario::Test &test, const TestFile &file, const scenario::Expect &e,
+                         std::size_t agent, std::uint64_t tick) {
+    constexpr std::uint64_t kWindow = 100000;  // a longer look back would keep too many records
+    if (tick == 0) return;                     // before the first tick nothing was called
+    std::vector<const scenario::Expect *> operands;
+    call_operands(e, operands);
+    std::vector<std::string> said;  // an operand written twice is told once
+    for (const scenario::Expect *op : operands) {
+      const model::Function &fn = file.model.functions.at(op->function);
+      std::string name = std::string(fn.name);
+      if (op->call_args) {  // `Led(false)` as the test wrote it
+        const std::string written = text_of(file.sources, op->range);
+        const std::size_t at = written.find(name);
+        if (at != std::string::npos) name = written.substr(at);
+      }
+      if (std::find(said.begin(), said.end(), name) != said.end()) continue;
+      said.push_back(name);
+      const auto last = scenario::last_call(file.model, test, op->function, op->call_args, agent, tick, kWindow);
+      if (last && last->tick == tick) continue;  // the calls of the last tick are listed already
+      if (last) d.note(fmt::format("'{}' was last called in tick {}: {}", name, last->tick, last->text));
+      else if (tick <= kWindow) d.note(fmt::format("'{}' was not called in any tick so far (1 ... {})", name, tick));
+      else d.note(fmt::format("'{}' was not called in the {} ticks up to tick {}", name, kWindow, tick));
     }
   }
 
@@ -399,6 +433,21 @@ int test_with(const TestOptions &o, std::ostream &out, std::ostream &err) {
     return kExitUsageOrIo;
   }
   StopOnSignal stop_on_signal(builds.folder());
+  if (!o.reference_only && !outcomes.empty()) {
+    // One clear error rather than every test failing on its own (docs/testing-charts.md).
+    std::vector<std::string> notes;
+    if (!builds.choose_compiler(notes)) {
+      std::string message = "no C compiler builds programs for this machine, so the generated engines cannot run";
+      for (const std::string &n : notes) message += "\n  tried " + n;
+      message += "\n  install one (Debian: gcc), name it in $HOST_CC, or run only the reference interpreter with "
+                 "'gfec test --reference-only'";
+      report->tool_error("", message, false);
+      report->finish(kExitUsageOrIo);
+      return kExitUsageOrIo;
+    }
+    if (!notes.empty())
+      err << fmt::format("gfec test: note: the engines are built with '{}': {}\n", builds.compiler(), notes.front());
+  }
   TestRunner runner(o, builds);
   std::atomic<std::size_t> next{0};
   auto worker = [&] {

@@ -67,14 +67,13 @@ private:
   char buffer_[65536];
 };
 
-/// $CC split at blanks, as make splits it ("ccache gcc"), else `cc`.
-std::vector<std::string> c_compiler() {
-  const char *cc_env = std::getenv("CC");
-  std::istringstream words(cc_env && *cc_env ? cc_env : "cc");
-  std::vector<std::string> cc;
-  for (std::string w; words >> w;) cc.push_back(w);
-  if (cc.empty()) cc.push_back("cc");
-  return cc;
+/// A compiler command split at blanks, as make splits $CC ("ccache gcc").
+std::vector<std::string> words_of(const std::string &command) {
+  std::istringstream words(command);
+  std::vector<std::string> out;
+  for (std::string w; words >> w;) out.push_back(w);
+  if (out.empty()) out.push_back("cc");
+  return out;
 }
 
 /// One harness output line `call F(a, b)` as a Call.
@@ -189,6 +188,49 @@ EngineBuilds::~EngineBuilds() {
   fs::remove_all(folder_, ec);
 }
 
+bool EngineBuilds::choose_compiler(std::vector<std::string> &notes) {
+  std::vector<std::pair<std::string, std::string>> candidates;  // (compiler, where it came from)
+  for (const char *var : {"HOST_CC", "CC"})
+    if (const char *v = std::getenv(var); v && *v) candidates.emplace_back(v, fmt::format("${}", var));
+  candidates.emplace_back("cc", "the default");
+  const fs::path probe = fs::path(folder_) / "probe";
+  if (!write_file(probe.string() + ".c", "int main(void) { return 0; }\n")) return false;
+  std::vector<std::string> tried;
+  for (const auto &[cc, from] : candidates) {
+    if (std::find_if(tried.begin(), tried.end(), [&](const std::string &t) { return t == cc; }) != tried.end())
+      continue;
+    tried.push_back(cc);
+    const std::string log = probe.string() + ".log";
+    child_process::Spawn build;
+    build.argv = words_of(cc);
+    for (const std::string &part : {std::string("-std=c99"), std::string("-o"), probe.string(), probe.string() + ".c"})
+      build.argv.push_back(part);
+    build.stdout_path = log;
+    build.stderr_path = "&1";
+    const child_process::Result built = child_process::run(build);
+    if (!built.ok()) {
+      std::string out = head(read_file(log));
+      notes.push_back(fmt::format("'{}' ({}) {}{}", cc, from,
+                                  built.how == child_process::Result::How::NotStarted
+                                      ? "could not be started (" + built.error + ")"
+                                      : child_process::describe(built),
+                                  out.empty() ? "" : ":\n" + out));
+      continue;
+    }
+    child_process::Spawn run;
+    run.argv = {probe.string()};
+    run.stdout_path = "/dev/null";
+    run.stderr_path = "&1";
+    if (!child_process::run(run).ok()) {
+      notes.push_back(fmt::format("'{}' ({}) builds programs this machine does not run (a cross compiler?)", cc, from));
+      continue;
+    }
+    cc_ = cc;
+    return true;
+  }
+  return false;
+}
+
 EngineBuilds::Build EngineBuilds::get(const model::Model &model, model::ChartId chart, const std::string &source_name,
                                       int agents) {
   auto backend = make_backend("c");
@@ -209,9 +251,7 @@ EngineBuilds::Build EngineBuilds::get(const model::Model &model, model::ChartId 
                                 "library's '{}' itself (run this chart's tests with --reference-only)",
                                 name, name)};
   const c_backend::HarnessSources harness = c_backend::write_harness(model, chart, o, harness_o);
-  const std::vector<std::string> cc_words = c_compiler();
-  std::string cc;
-  for (const std::string &w : cc_words) cc += (cc.empty() ? "" : " ") + w;
+  const std::string &cc = cc_;
   std::string all = cc + '\0' + harness.glue + '\0' + harness.main;
   for (const auto &f : files) all += '\0' + f.path + '\0' + f.contents;
   std::size_t hash = std::hash<std::string>{}(all);
@@ -230,7 +270,7 @@ EngineBuilds::Build EngineBuilds::get(const model::Model &model, model::ChartId 
     // A child in its own process group, stopped with what it started if gfec test is stopped
     // (support/child_process.h).
     child_process::Spawn compile;
-    compile.argv = cc_words;
+    compile.argv = words_of(cc);
     for (const char *part : {"-std=c99", "-o"}) compile.argv.push_back(part);
     for (const char *part : {"harness", "engine.c", "glue.c", "harness.c"})
       compile.argv.push_back((dir / part).string());

@@ -56,8 +56,17 @@ public:
   scenario::Run run(const Build &build, const model::Model &model, const scenario::Test &test, int id,
                     scenario::KeptTicks keep);
 
+  /// Chooses the compiler of the host harness (docs/testing-charts.md "The C compiler"): the first
+  /// of $HOST_CC, $CC and `cc` that builds a program this machine runs (an exported cross
+  /// compiler's does not). False when none does; `notes` says what was tried and why not.
+  bool choose_compiler(std::vector<std::string> &notes);
+  const std::string &compiler() const { return cc_; }
+
   bool ok() const { return !folder_.empty(); }
   const std::string &folder() const { return folder_; }
+
+private:
+  std::string cc_ = "cc";
 
 private:
   std::string folder_;

@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdint>
 #include <numeric>
+#include <string>
 #include <vector>
 
 namespace gfec {
@@ -57,13 +58,36 @@ std::size_t edit_distance_within(std::string_view a, std::string_view b, std::si
   return previous[b.size()];
 }
 
+namespace {
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  for (char &c : out)
+    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+  return out;
+}
+
+bool begins(std::string_view longer, std::string_view shorter) {
+  return longer.size() >= shorter.size() && longer.substr(0, shorter.size()) == shorter;
+}
+
+}  // namespace
+
 bool NearestName::offer(std::string_view candidate) {
-  // A candidate as near as the best so far loses (the first offered wins), so the bound is one
-  // less than the best: a length gap larger than it costs nothing.
-  if (best_ == 0 || name_.size() > kMaxSuggestedLength || ++offered_ > kMaxSuggestionCandidates) return false;
-  const std::size_t d = edit_distance_within(name_, candidate, best_ - 1);
-  if (d >= best_) return false;
+  if (name_.size() > kMaxSuggestedLength || ++offered_ > kMaxSuggestionCandidates) return false;
+  if (found_ && best_ == 0 && best_affix_ && best_cased_ == 0) return false;  // nothing can beat it
+  const std::string a = lower(name_), b = lower(candidate);
+  // Within the best so far (a tie may still win on the later keys), never past the limit.
+  const std::size_t d = edit_distance_within(a, b, std::min(best_, limit_));
+  if (d > limit_ || d > best_) return false;
+  const bool affix = !a.empty() && !b.empty() && (begins(a, b) || begins(b, a));
+  if (d == best_ && found_ && (best_affix_ && !affix)) return false;
+  const bool same_rank = d == best_ && found_ && best_affix_ == affix;
+  const std::size_t cased = edit_distance_within(name_, candidate, same_rank ? best_cased_ : kMaxSuggestedLength);
+  if (same_rank && cased >= best_cased_) return false;
   best_ = d;
+  best_affix_ = affix;
+  best_cased_ = cased;
   found_ = true;
   return true;
 }

@@ -8,6 +8,7 @@
 #include "c_engine_options.h"
 #include "c_layout.h"
 #include "model.h"
+#include "naming/naming.h"
 
 #include <functional>
 #include <memory>
@@ -40,16 +41,24 @@ struct EngineContext {
   }
 
   // ------------------------------------------------------------ names in the generated code
-  std::string type;              ///< the prefix of every global name: the chart's name, or for a
-                                 ///< sub-chart instance its path (`Patrol_Search`, docs/c-engine.md)
-  std::string struct_type;       ///< the state's C type: `Patrol`, or an instance's `struct Patrol_Search`
-  std::string linkage;           ///< "" for the root's API, "static " for an instance's functions
-  std::string init_fn;           ///< X_init
-  std::string run_fn;            ///< X_run
-  std::string stop_fn;           ///< an instance's X_stop (exits of its active places, innermost first)
-  std::string source_file;       ///< engine.c as #line names it (the output path as the user gave it)
-  std::string header_file;       ///< engine.h, as engine.c includes it (base name)
-  std::string guard;             ///< the header's include guard (free of every name the file uses)
+  std::string type;         ///< the prefix of every global name: the chart's name, or for a
+                            ///< sub-chart instance its path (`Patrol_Search`, docs/c-engine.md)
+  std::string struct_type;  ///< the state's C type: `Patrol`, or an instance's `struct Patrol_Search`
+  std::string linkage;      ///< "" for the root's API, "static " for an instance's functions
+  std::string init_fn;      ///< X_init
+  std::string run_fn;       ///< X_run
+  std::string stop_fn;      ///< an instance's X_stop (exits of its active places, innermost first)
+  std::string source_file;  ///< engine.c as #line names it (the output path as the user gave it)
+  std::string header_file;  ///< engine.h, as engine.c includes it (base name)
+  std::string guard;        ///< the header's include guard (free of every name the file uses)
+  /// The header's fingerprint (docs/c-engine.md "Header and engine together"): 8 hex digits of a
+  /// hash of the header's text; empty until c_backend.cc has rendered the header.
+  std::string fingerprint;
+  /// X_init and X_run as the linker sees them: the names with the fingerprint, so that code
+  /// compiled against another version of the header does not link.
+  std::string stamped(const std::string &fn) const { return fn + std::string(naming::kFingerprintInfix) + fingerprint; }
+  /// Defined by the header: the engine refuses to compile against any other version of it.
+  std::string layout_macro() const { return guard + "_LAYOUT_" + fingerprint; }
   std::string hooks_macro;       ///< X_HOOKS: define it to get the observation hooks
   std::string checks_macro;      ///< X_CHECKS: define it to assert the postconditions of an fsm
   std::string assert_macro;      ///< X_ASSERT(cond): the checks' handler; the user's, else assert

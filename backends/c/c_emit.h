@@ -12,8 +12,13 @@
 
 namespace gfec::c_backend {
 
-/// engine.h: the types, the API, the hooks and the interface prototypes.
-void emit_header(const EngineContext &c, std::ostream &out);
+/// engine.h after its include guard: the types, the API, the hooks and the interface prototypes.
+/// Rendered before either file is written: its hash is the fingerprint both files carry.
+std::string header_body(const EngineContext &c);
+/// 8 hex digits of a 32-bit FNV-1a hash of the header's body.
+std::string fingerprint_of(const std::string &body);
+/// engine.h: the banner, the guard, the fingerprint's macros and `body`.
+void emit_header(const EngineContext &c, const std::string &body, std::ostream &out);
 /// engine.c: includes, file-level verbatim code, _init, _run and the accessors.
 void emit_source(const EngineContext &c, std::ostream &out);
 

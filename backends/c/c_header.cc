@@ -274,12 +274,8 @@ void exact_types(CodeWriter &w, const EngineContext &c) {
 
 }  // namespace
 
-void emit_header(const EngineContext &c, std::ostream &out) {
-  CodeWriter w(out, c.header_file, false);
-  w.line(std::string_view(banner(c)));
-  directive(w, "#ifndef " + c.guard);
-  directive(w, "#define " + c.guard);
-  w.blank();
+std::string header_body(const EngineContext &c) {
+  CodeWriter w(c.header_file, false);
   directive(w, "#include <stdbool.h>");
   directive(w, "#include <stdint.h>");
   exact_types(w, c);
@@ -309,6 +305,37 @@ void emit_header(const EngineContext &c, std::ostream &out) {
   directive(w, "#endif");
   w.blank();
   directive(w, fmt::format("#endif /* {} */", c.guard));
+  return w.take();
+}
+
+std::string fingerprint_of(const std::string &body) {
+  std::uint32_t h = 2166136261u;  // FNV-1a: deterministic on every host, and cheap on a large header
+  for (unsigned char ch : body) h = (h ^ ch) * 16777619u;
+  return fmt::format("{:08x}", h);
+}
+
+/// docs/c-engine.md "Header and engine together": X_init and X_run carry the header's fingerprint
+/// in their linker names, so a program compiled against another version of the header fails to
+/// link, and the undefined name says what to do; engine.c refuses any header but its own.
+void fingerprint_macros(CodeWriter &w, const EngineContext &c) {
+  w.line("/* This header belongs with the {} generated with it. Code compiled against another version",
+         base_name(c.source_file));
+  w.line("   of it does not link (\"undefined reference to {}\"):", c.stamped(c.init_fn));
+  w.line("   regenerate both files from the chart and rebuild. */");
+  directive(w, fmt::format("#define {} 1", c.layout_macro()));
+  directive(w, fmt::format("#define {} {}", c.init_fn, c.stamped(c.init_fn)));
+  directive(w, fmt::format("#define {} {}", c.run_fn, c.stamped(c.run_fn)));
+}
+
+void emit_header(const EngineContext &c, const std::string &body, std::ostream &out) {
+  CodeWriter w(out, c.header_file, false);
+  w.line(std::string_view(banner(c)));
+  directive(w, "#ifndef " + c.guard);
+  directive(w, "#define " + c.guard);
+  w.blank();
+  fingerprint_macros(w, c);
+  w.blank();
+  w.raw(body);
 }
 
 }  // namespace gfec::c_backend

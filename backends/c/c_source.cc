@@ -23,6 +23,10 @@ template <typename Test> bool any_context(const EngineContext &c, const Test &te
 
 void includes(CodeWriter &w, const EngineContext &c) {
   directive(w, "#include " + c_string_literal(c.header_file));
+  // The header found first may be a stale one (another folder on the include path): refuse it.
+  directive(w, "#ifndef " + c.layout_macro());
+  directive(w, "#error \"the header found is not the one generated with this file: regenerate both from the chart\"");
+  directive(w, "#endif");
   // No hosted header in any mode (a freestanding C99 engine). The postconditions' checks (of the
   // root and of every instance) use X_ASSERT, which the user may define (before this point: on
   // the command line or in a verbatim block) to the firmware's own handler; by default it is

@@ -170,25 +170,40 @@ void check_sfc(const model::Model & /*m*/, const Chart &c, Diagnostics &diag, co
     }
   }
 
-  // What never happens, claimed only when every reachable state is known exactly.
+  // What never happens, claimed only when every reachable state is known exactly. The summary
+  // counts every place never active and every transition never firing, the validator's
+  // structural findings included, so that it never says "0" under their warnings.
   std::size_t unreachable = 0, dead = 0;
   if (space.exact()) {
     IdMap<PlaceId, bool> structural = structurally_reachable(c);
     for (PlaceId p : c.places.ids()) {
-      if (most[p] > 0 || !structural[p]) continue;  // the validator speaks of the latter
+      if (most[p] > 0) continue;
       ++unreachable;
+      if (!structural[p]) continue;  // the validator speaks of it
       diag.warning(
           Warning::UnreachablePlace, name_at(c.places[p]),
           fmt::format("place '{}' can never become active: no reachable activation state holds it", c.places[p].name));
     }
     for (TransitionId t : c.transitions.ids()) {
       const auto &tr = c.transitions[t];
-      bool inputs_reach = firing_of(tr) != Firing::Never;
-      for (PlaceId p : tr.inputs) inputs_reach = inputs_reach && most[p] > 0;
-      if (fired[t] || !inputs_reach) continue;  // never-active inputs are reported as places
+      if (fired[t]) continue;
       ++dead;
+      if (firing_of(tr) == Firing::Never) continue;  // the validator: its condition is always false
       SourceRange at = name_at(tr);
-      if (!join_ready[t])
+      PlaceId never;
+      bool structurally_dead = false;
+      for (PlaceId p : tr.inputs) {
+        if (most[p] > 0) continue;
+        if (!never) never = p;
+        structurally_dead = structurally_dead || !structural[p];
+      }
+      if (structurally_dead) continue;  // the validator: an input place never becomes active
+      if (never)
+        diag.warning(Warning::DeadTransition, at,
+                     fmt::format("transition '{}' can never fire: its input place '{}' never becomes active (no "
+                                 "reachable activation state holds it)",
+                                 tr.name, c.places[never].name));
+      else if (!join_ready[t])
         diag.warning(Warning::DeadJoin, at,
                      fmt::format("join '{}' can never fire: its input places {} are never active at the same time",
                                  tr.name, names(c, tr.inputs)));

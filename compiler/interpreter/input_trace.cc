@@ -1,5 +1,7 @@
 #include "input_trace.h"
 
+#include "did_you_mean.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -68,6 +70,18 @@ std::optional<Value> parse_value(std::string_view text, model::Type t) {
   return Value::of_double(v);
 }
 
+/// The sensing function nearest to a misspelt column's name (did-you-mean), or null.
+const char *nearest_input(const model::Model &m, std::string_view name) {
+  if (name.size() > kMaxSuggestedLength) return nullptr;
+  NearestName nearest(name, typo_limit(name.size()));
+  const char *best = nullptr;
+  for (model::FunctionId i : m.functions.ids())
+    if (m.functions[i].result != model::Type::Void && nearest.offer(m.functions[i].name))
+      best = m.functions[i].name.c_str();
+  if (nearest.offer("tick")) best = "tick";
+  return best;
+}
+
 model::FunctionId find_function(const model::Model &m, std::string_view name) {
   for (model::FunctionId i : m.functions.ids())
     if (m.functions[i].name == name) return i;
@@ -96,6 +110,8 @@ InputTrace::InputTrace(const model::Model &model, const SourceManager &sources, 
       header = false;
       for (const Field &f : fields) {
         if (f.text == "tick") {
+          if (tick_column_) diag.error(f.range, ErrorKind::Trace, "a second 'tick' column");
+          else tick_column_ = columns_.size();
           columns_.push_back({Column::Kind::Tick, {}, -1});
           continue;
         }
@@ -119,7 +135,10 @@ InputTrace::InputTrace(const model::Model &model, const SourceManager &sources, 
         }
         model::FunctionId fn = find_function(model, name);
         if (!fn) {
-          diag.error(f.range, ErrorKind::Trace, fmt::format("no interface function '{}' for this column", name));
+          auto &d =
+              diag.error(f.range, ErrorKind::Trace, fmt::format("no interface function '{}' for this column", name));
+          if (const char *near = nearest_input(model, name))
+            d.note(fmt::format("did you mean '{}{}'?", near, agent >= 0 ? fmt::format("@{}", agent) : ""));
           columns_.push_back({Column::Kind::Bad, {}, agent});
           continue;
         }
@@ -159,14 +178,44 @@ InputTrace::InputTrace(const model::Model &model, const SourceManager &sources, 
       }
       row.push_back(*v);
     }
+    if (tick_column_) {
+      // docs/cli.md "Input traces": a row holds from its tick until the next row's.
+      const Field &f = fields[*tick_column_];
+      const std::int32_t t = row[*tick_column_].i;
+      if (t < 1) {
+        diag.error(f.range, ErrorKind::Trace, fmt::format("tick {} in the tick column: ticks count from 1", f.text));
+        continue;
+      }
+      if (!ticks_.empty() && static_cast<std::uint64_t>(t) <= ticks_.back()) {
+        diag.error(f.range, ErrorKind::Trace,
+                   fmt::format("tick {} is not after the previous row's tick {}: the rows go up in tick order", t,
+                               ticks_.back()))
+            .note("a row holds from its tick until the next row's; a tick without a row keeps the row before");
+        continue;
+      }
+      ticks_.push_back(static_cast<std::uint64_t>(t));
+    }
     rows_.push_back(std::move(row));
   }
+}
+
+std::uint64_t InputTrace::last_tick() const {
+  if (tick_column_) return ticks_.empty() ? 0 : ticks_.back();
+  return rows_.size();
 }
 
 Value InputTrace::value(model::FunctionId function, std::uint64_t tick, int agent) const {
   const model::Function &fn = model_.functions.at(function);
   if (rows_.empty() || tick == 0) return Value::zero(fn.result);
-  std::size_t row = static_cast<std::size_t>(std::min<std::uint64_t>(tick, rows_.size()) - 1);
+  std::size_t row;
+  if (tick_column_) {
+    // The last row whose tick has come; before the first row's tick every function returns 0.
+    auto after = std::upper_bound(ticks_.begin(), ticks_.end(), tick);
+    if (after == ticks_.begin()) return Value::zero(fn.result);
+    row = static_cast<std::size_t>(after - ticks_.begin()) - 1;
+  } else {
+    row = static_cast<std::size_t>(std::min<std::uint64_t>(tick, rows_.size()) - 1);
+  }
   // The agent's own column, else the column every agent shares.
   std::optional<std::size_t> shared;
   for (std::size_t c = 0; c < columns_.size(); ++c) {

@@ -6,7 +6,9 @@
 //   1,    1,             0,             0.25
 //   2,    0,             1,             0.5
 //
-// A `tick` column is allowed and ignored (it is for people). A function without a column
+// Without a `tick` column row k is tick k. With one, a row holds from its tick until the next
+// row's (a sparse trace: `1` then `250` is 249 ticks of the first row), the ticks go up from 1,
+// and before the first row's tick every function returns 0. A function without a column
 // returns 0 (false). Past the last row, the last row holds (sensors keep their value).
 //
 // A team run (several agents, docs/cli.md) gives each agent its own columns: `F@2` is what F
@@ -16,6 +18,8 @@
 #include "diagnostics.h"
 #include "evaluator.h"
 
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,6 +35,8 @@ public:
   explicit InputTrace(const model::Model &model);
 
   std::size_t rows() const { return rows_.size(); }
+  /// The tick of the last row (its number without a tick column); 0 without rows.
+  std::uint64_t last_tick() const;
   /// What `function` returns to agent `agent` during `tick` (counted from 1).
   Value value(model::FunctionId function, std::uint64_t tick, int agent = 0) const;
   Value call(model::FunctionId function, const std::vector<Value> &args, std::uint64_t tick) override;
@@ -58,6 +64,8 @@ private:
   };
   std::vector<Column> columns_;
   std::vector<std::vector<Value>> rows_;  ///< by row, by column
+  std::optional<std::size_t> tick_column_;
+  std::vector<std::uint64_t> ticks_;  ///< with a tick column: by row, its tick (going up)
 };
 
 }  // namespace gfec::interp

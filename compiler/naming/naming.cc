@@ -218,7 +218,12 @@ const std::vector<EngineName> &engine_names() { return kEngineNames; }
 const EngineName *engine_name(std::string_view chart, std::string_view name) {
   if (name.size() <= chart.size() + 1 || name.substr(0, chart.size()) != chart || name[chart.size()] != '_')
     return nullptr;
-  const std::string_view suffix = name.substr(chart.size() + 1);
+  std::string_view suffix = name.substr(chart.size() + 1);
+  // X_init and X_run as the linker sees them (docs/c-engine.md "Header and engine together").
+  const std::size_t stamp = suffix.find(kFingerprintInfix);
+  if (stamp != std::string_view::npos && suffix.size() == stamp + kFingerprintInfix.size() + 8 &&
+      (suffix.substr(0, stamp) == "init" || suffix.substr(0, stamp) == "run"))
+    suffix = suffix.substr(0, stamp);
   for (const EngineName &e : kEngineNames)
     if (e.suffix == suffix) return &e;
   return nullptr;

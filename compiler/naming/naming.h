@@ -47,7 +47,11 @@ struct EngineName {
   bool team;    ///< a team machine's (docs/c-engine.md "Team machines")
 };
 const std::vector<EngineName> &engine_names();
-/// The engine name `name` is for chart `chart` (`P_init` for `P`), or null.
+/// What the header puts between X_init (X_run) and the fingerprint in the names the linker sees
+/// (docs/c-engine.md "Header and engine together").
+inline constexpr std::string_view kFingerprintInfix = "_regenerate_if_undefined_";
+/// The engine name `name` is for chart `chart` (`P_init` for `P`, and `P_init` with a
+/// fingerprint), or null.
 const EngineName *engine_name(std::string_view chart, std::string_view name);
 
 /// A function of the C library (compiler/naming/c_library.def, which tools/c-library-names.py

@@ -148,4 +148,21 @@ Run run_reference(const model::Model &model, const Test &test, KeptTicks keep) {
   return run;
 }
 
+std::optional<LastCall> last_call(const model::Model &model, const Test &test, model::FunctionId function,
+                                  const std::optional<std::vector<std::string>> &args, std::size_t agent,
+                                  std::uint64_t up_to, std::uint64_t window) {
+  std::set<std::uint64_t> keep;
+  for (std::uint64_t t = up_to; t >= 1 && up_to - t < window; --t) keep.insert(t);
+  const Run run = run_reference(model, test, &keep);
+  for (auto t = keep.rbegin(); t != keep.rend(); ++t) {
+    const std::vector<Snapshot> *records = run.at(*t);
+    if (!records || agent >= records->size()) continue;
+    const std::vector<Call> &calls = (*records)[agent].calls;
+    for (auto c = calls.rbegin(); c != calls.rend(); ++c)
+      if (c->function == function && (!args || same_arguments(model.functions.at(function), c->args, *args)))
+        return LastCall{*t, c->text};
+  }
+  return std::nullopt;
+}
+
 }  // namespace gfec::scenario

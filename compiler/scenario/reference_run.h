@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -45,6 +46,17 @@ std::uint64_t total_ticks(const Test &test);
 std::set<std::uint64_t> expectation_ticks(const Test &test);
 
 Run run_reference(const model::Model &model, const Test &test, KeptTicks keep = nullptr);
+
+/// The last tick, at most `up_to`, in which agent `agent` called `function` (with `args`, when
+/// given) on the reference run, with that call; none when it was not called in the `window` ticks up to `up_to`. For the
+/// note of a failed expectation about a call: it runs the test again, keeping only those ticks.
+struct LastCall {
+  std::uint64_t tick = 0;
+  std::string text;  ///< `Led(true)`
+};
+std::optional<LastCall> last_call(const model::Model &model, const Test &test, model::FunctionId function,
+                                  const std::optional<std::vector<std::string>> &args, std::size_t agent,
+                                  std::uint64_t up_to, std::uint64_t window);
 
 /// What both runs leave alike after they recorded a tick: the instances that are not running
 /// zeroed (settle_instances), and every agent's reports as the reference exchange left them —

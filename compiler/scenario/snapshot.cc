@@ -47,23 +47,6 @@ const char *status_word(int status) {
 /// A state as the engines number it, -1 for none.
 std::string state_number(model::PlaceId s) { return s ? std::to_string(s.index()) : "-1"; }
 
-/// Whether a call's arguments (as the engines print them) equal the expected ones (as `called F(ARGS)`
-/// converted them to the parameter types), compared as values: `-0` is `0`, as in C.
-bool same_arguments(const model::Function &f, const std::vector<std::string> &seen,
-                    const std::vector<std::string> &want) {
-  if (seen.size() != want.size() || seen.size() != f.params.size()) return false;
-  for (std::size_t i = 0; i < seen.size(); ++i) {
-    const model::Type t = f.params[i].type;
-    const interp::Value a = parse_value(seen[i], t), b = parse_value(want[i], t);
-    const bool equal = t == Type::Bool                         ? a.b == b.b
-                       : t == Type::Int                        ? a.i == b.i
-                       : t == Type::Float || t == Type::Double ? a.f == b.f
-                                                               : seen[i] == want[i];
-    if (!equal) return false;
-  }
-  return true;
-}
-
 /// Replaces the test-only operands by their values, so that the interpreter's evaluator (C's
 /// semantics, once, in one place) computes the rest; records every operand's value.
 class Substitution {
@@ -190,6 +173,23 @@ private:
 };
 
 }  // namespace
+
+/// Whether a call's arguments (as the engines print them) equal the expected ones (as `called F(ARGS)`
+/// converted them to the parameter types), compared as values: `-0` is `0`, as in C.
+bool same_arguments(const model::Function &f, const std::vector<std::string> &seen,
+                    const std::vector<std::string> &want) {
+  if (seen.size() != want.size() || seen.size() != f.params.size()) return false;
+  for (std::size_t i = 0; i < seen.size(); ++i) {
+    const model::Type t = f.params[i].type;
+    const interp::Value a = parse_value(seen[i], t), b = parse_value(want[i], t);
+    const bool equal = t == Type::Bool                         ? a.b == b.b
+                       : t == Type::Int                        ? a.i == b.i
+                       : t == Type::Float || t == Type::Double ? a.f == b.f
+                                                               : seen[i] == want[i];
+    if (!equal) return false;
+  }
+  return true;
+}
 
 std::vector<Instance> instances_of(const model::Model &model, model::ChartId chart) {
   std::vector<Instance> out;

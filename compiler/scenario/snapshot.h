@@ -80,6 +80,11 @@ std::uint64_t digest(const Snapshot &s, const model::Model &model, model::ChartI
 std::string instance_path(const model::Model &model, model::ChartId chart, const std::vector<Instance> &instances,
                           std::size_t i);
 
+/// Whether a call's arguments (as the engines print them) equal the expected ones (as `called
+/// F(ARGS)` converted them to the parameter types), compared as values: `-0` is `0`, as in C.
+bool same_arguments(const model::Function &f, const std::vector<std::string> &seen,
+                    const std::vector<std::string> &want);
+
 /// A constant as `set` formats it (validate_tests.cc), back to a value of type `t`.
 interp::Value parse_value(const std::string &text, model::Type t);
 

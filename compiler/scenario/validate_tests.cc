@@ -172,6 +172,7 @@ private:
       // `active(P)` of a place of this chart; deeper paths are the sub-charts' lowering.
       if (e->name.text == "active" && e->args.size() == 1 && e->args[0] && e->args[0]->kind == AK::Name)
         return place_operand(*e, Expect::Kind::Active);
+      if (void_call(*e)) return std::nullopt;
       break;
     case AK::Unary: {
       if (e->args.size() != 1) return std::nullopt;
@@ -221,6 +222,27 @@ private:
     default: break;
     }
     return chart_expression(*e);
+  }
+
+  /// `expect Led(true);` of a void function: the test means `called Led(true)` (a beginner's
+  /// reading of "the chart called it"), which the fix-it writes.
+  bool void_call(const ast::Expr &e) {
+    const Symbol *sym = cx_.c_names.find(e.name.text);
+    if (!sym || sym->kind != Sym::Function || sym->index < 0 || !cx_.function_ok[sym->index]) return false;
+    const model::Function &f = cx_.model.functions[sym->id<model::FunctionId>()];
+    if (f.result != Type::Void) return false;
+    const SourceRange at{e.range.file, e.range.begin, e.range.begin};
+    cx_.diag
+        .error(e.range, ErrorKind::Test,
+               fmt::format("'{}' returns nothing: an expectation cannot call it", std::string(f.name)))
+        .fix(at, "called ")
+        .note(fmt::format("to expect that the chart called it in the last tick, write 'called {}'", text_of(e.range)));
+    return true;
+  }
+
+  std::string text_of(SourceRange r) const {
+    const std::string &t = cx_.sources.file(r.file).text();
+    return t.substr(r.begin, r.end - r.begin);
   }
 
   /// A part that uses no test-only operand: the chart's own expression lowering.
@@ -314,6 +336,36 @@ model::ChartId resolve_chart(Context &cx, const ast::Name &name, std::set<std::s
 }
 
 /// `of CHART agents N` and the agents of `agent K { ... }`: only for a team machine, within its size.
+/// `tick 5s;`: the duration in ticks of the chart's period, or -1 after an error (no period, not a
+/// whole number of periods, more than a step may run).
+long long duration_ticks(Context &cx, const ast::Expr &d, const model::Chart &chart) {
+  if (chart.period_ms <= 0) {
+    cx.diag
+        .error(d.range, ErrorKind::Test,
+               fmt::format("'tick {}' needs the chart's period, and '{}' has no 'period'", d.name.text, chart.name))
+        .note("write the number of ticks ('tick 5;'), or give the chart a 'period'");
+    return -1;
+  }
+  const double ticks = d.duration_ms / chart.period_ms;
+  const double whole = std::round(ticks);
+  if (std::fabs(ticks - whole) > 1e-9 * std::max(1.0, whole) || whole < 1) {
+    cx.diag
+        .error(
+            d.range, ErrorKind::Test,
+            fmt::format("'{}' is {:g} ticks of {:g} ms: 'tick' runs whole ticks", d.name.text, ticks, chart.period_ms))
+        .note(fmt::format("write 'tick {:.0f};' ({:g} ms) or 'tick {:.0f};'", std::max(1.0, std::floor(ticks)),
+                          std::max(1.0, std::floor(ticks)) * chart.period_ms, std::ceil(ticks)));
+    return -1;
+  }
+  if (whole > static_cast<double>(kMaxTicksPerStep)) {
+    cx.diag.error(d.range, ErrorKind::Test,
+                  fmt::format("'{}' is {:.0f} ticks; 'tick' runs at most {} ticks at a time", d.name.text, whole,
+                              kMaxTicksPerStep));
+    return -1;
+  }
+  return static_cast<long long>(whole);
+}
+
 bool check_agents(Context &cx, const ast::Test &t, const model::Chart &chart, scenario::Test &test) {
   bool ok = true;
   test.agents = chart.team > 0 ? chart.team : 1;
@@ -415,6 +467,15 @@ void validate_tests(Context &cx, scenario::Suite &out) {
       switch (in.kind) {
       case ast::TestStep::Kind::Tick:
         step.kind = scenario::Step::Kind::Tick;
+        if (in.value && in.value->kind == ast::Expr::Kind::Duration) {
+          const long long ticks = duration_ticks(cx, *in.value, scope.out);
+          if (ticks < 0) {
+            ok = false;
+            break;
+          }
+          step.count = static_cast<unsigned long>(ticks);
+          break;
+        }
         if (in.count < 1 || in.count > kMaxTicksPerStep) {
           cx.diag.error(in.value ? in.value->range : in.range, ErrorKind::Test,
                         in.count == 0 ? std::string("'tick 0' runs no tick: the count must be at least 1")

@@ -68,6 +68,11 @@ std::nullopt_t not_a_value(ExprScope &s, const ast::Name &name, const Symbol &sy
   auto &d = s.cx.diag.error(name.range, ErrorKind::TypeMismatch,
                             fmt::format("'{}' is {}, not a value", name.text, with_article(sym.kind)));
   if (sym.kind == Sym::Function) d.note(sym.range, fmt::format("to call it, write '{}()'", name.text));
+  if (sym.kind == Sym::Place) {
+    // A place as a condition: a beginner means "while it is active".
+    d.fix(name.range, fmt::format("active({})", name.text))
+        .note(fmt::format("to test whether it is active, write 'active({})'", name.text));
+  }
   if (sym.kind == Sym::Place || sym.kind == Sym::State)
     d.note(fmt::format("'elapsed({})' is the time it has been active", name.text));
   return std::nullopt;

@@ -184,3 +184,14 @@ TEST_CASE("options: --context, --context-type and --names, the C engine's option
     CHECK(r.message.find(why) != std::string::npos);
   }
 }
+
+TEST_CASE("options: a misspelt option gets a did-you-mean") {
+  auto chek = parse({"--chek", "x.sfc"});
+  CHECK(chek.exit_code == 2);
+  CHECK(chek.message.find("gfec: note: did you mean '--check'?") != std::string::npos);
+  auto emit = parse({"--emti=svg", "x.sfc"});
+  CHECK(emit.message.find("did you mean '--emit'?") != std::string::npos);
+  auto far = parse({"--zzzzzz", "x.sfc"});
+  CHECK(far.exit_code == 2);
+  CHECK(far.message.find("did you mean") == std::string::npos);
+}

@@ -80,6 +80,59 @@ test('a broken chart fails at the expectation, with the values in notes', () => 
   assert.match(r.stderr, /note: in test "a black left sensor stops the left wheel", after tick 2$/m);
 });
 
+// A call expected in the wrong tick is the common slip (an initial place's timer counts from the
+// first tick): the failed expectation says when the function was last called.
+const LAST_CALL = `interface Bot { void Beep(); void Led(bool on); }
+sfc Blink {
+  period 100ms;
+  initial place Off { Led(false); }
+  place On { entry { Beep(); } Led(true); }
+  Off -> On when elapsed(Off) >= 500ms;
+}
+test "beeps when it switches on" of Blink {
+  tick 6;
+  expect called Beep;
+  expect called Led(false);
+}
+test "never switches the LED off" of Blink {
+  tick 3;
+  expect !called Led(false) || called Beep;
+}
+`;
+
+test('a failed expectation about a call says when the function was last called', () => {
+  const dir = scratch({ 'last.test': LAST_CALL });
+  const r = gfec(['test', 'last.test'], dir);
+  assert.equal(r.code, 1);
+  assert.equal(lastLine(r.stdout), '0 passed, 2 failed');
+  assert.match(r.stderr, /^last\.test:10:3: error: expectation failed: called Beep \[expectation\]$/m);
+  assert.match(r.stderr, /^last\.test:10:3: note: 'Beep' was last called in tick 5: Beep\(\)$/m);
+  assert.match(r.stderr, /^last\.test:11:3: note: 'Led\(false\)' was last called in tick 4: Led\(false\)$/m);
+  // A call of the last tick is in the list of its calls already.
+  assert.doesNotMatch(r.stderr, /^last\.test:15:3: note: 'Led\(false\)' was last called/m);
+  assert.match(r.stderr, /^last\.test:15:3: note: 'Beep' was not called in any tick so far \(1 \.\.\. 3\)$/m);
+});
+
+test('an exported cross CC does not break the host harness; no host compiler is one error with a hint', () => {
+  const dir = scratch({ 'last.test': LAST_CALL.replace(/test "never[\s\S]*$/, '').replace('tick 6;\n  expect called Beep;\n  expect called Led(false);', 'tick 5;\n  expect called Beep;') });
+  // A "cross compiler" whose programs this machine cannot run.
+  fs.writeFileSync(path.join(dir, 'cross-cc'),
+    '#!/bin/sh\nwhile [ $# -gt 0 ]; do case $1 in -o) out=$2; shift;; esac; shift; done\n' +
+    "printf 'not a program for this machine' > \"$out\"\n/bin/chmod +x \"$out\"\n", { mode: 0o755 });
+  let r = gfec(['test', 'last.test'], dir, { ...process.env, CC: path.join(dir, 'cross-cc') });
+  assert.equal(r.code, 0, r.stderr);
+  assert.equal(r.stdout, '1 passed, 0 failed\n');
+  assert.match(r.stderr, /^gfec test: note: the engines are built with 'cc': '.*cross-cc' \(\$CC\) builds programs this machine does not run/m);
+  // No compiler at all: one error, exit 2, and the way out.
+  r = gfec(['test', 'last.test'], dir, { PATH: '/nonexistent' });
+  assert.equal(r.code, 2);
+  assert.equal((r.stderr.match(/error:/g) || []).length, 1, r.stderr);
+  assert.match(r.stderr, /no C compiler builds programs for this machine/);
+  assert.match(r.stderr, /gfec test --reference-only/);
+  r = gfec(['test', '--reference-only', 'last.test'], dir, { PATH: '/nonexistent' });
+  assert.equal(r.code, 0, r.stderr);
+});
+
 test('a test file with errors is a failed run with located errors (exit 1)', () => {
   const dir = scratch({ 'bad.test': 'import "line_follower.sfc";\ntest "t" of LineFolower { tick 0; }\n' });
   lineFollower(dir);
@@ -417,11 +470,15 @@ test('the engine and its harness compile warning-free with gcc and clang (-Werro
     ++ran;
   }
   if (ran === 0) t.skip('neither gcc nor clang');
-  // A compiler that does not exist: each test fails and says why.
-  const r = gfec(['test', path.join(SAMPLES, 'line_follower.test')], SAMPLES, { ...process.env, CC: 'no-such-cc' });
+  // A $CC that does not exist: the host's cc builds the harness, and a note says so.
+  let r = gfec(['test', path.join(SAMPLES, 'line_follower.test')], SAMPLES, { ...process.env, CC: 'no-such-cc' });
+  assert.equal(r.code, 0, r.stderr);
+  assert.match(r.stderr, /^gfec test: note: the engines are built with 'cc': 'no-such-cc' \(\$CC\) could not be started/m);
+  // A compiler that builds programs but not this engine: each test fails and says why.
+  r = gfec(['test', path.join(SAMPLES, 'line_follower.test')], SAMPLES,
+    { ...process.env, CC: 'cc -Dm=1' });
   assert.equal(r.code, 1);
   assert.match(r.stderr, /error: cannot build the C engine for 'LineFollower' \[test-engine\]/);
-  assert.match(r.stderr, /note: the C compiler 'no-such-cc' could not be started \(No such file or directory\)\n/);
 });
 
 test('a variable named like a timer field: the harness reads the field the engine renamed', () => {

@@ -62,3 +62,32 @@ TEST_CASE("gfec: the analyses run in every compile, as named warnings that -Werr
   CHECK(quiet.exit_code == 0);
   CHECK(quiet.out == "");
 }
+
+TEST_CASE("gfec --analyze: the summary counts what the warnings above it report; a transition out of a place "
+          "never active is dead") {
+  std::string dir = scratch_dir("analysis_summary");
+  // X and Y: no transition leads in (the validator's finding); C: only after an unconditional
+  // transition declared first, so no reachable state holds it (the state space's).
+  write_file(dir + "/never.sfc", R"(interface Bot { bool Go(); }
+sfc Never {
+  initial place A;
+  place B;
+  place C;
+  place D;
+  place X;
+  place Y;
+  A -> B;
+  A -> C when Go();
+  C -> D when Go();
+  X -> Y when Go();
+  Y -> X when Go();
+}
+)");
+  auto r = run_command(gfec_exe + " --analyze " + dir + "/never.sfc");
+  CHECK(r.out.find("never active: 4 places; never firing: 4 transitions") != std::string::npos);
+  CHECK(r.out.find("place 'X' can never become active") != std::string::npos);
+  CHECK(r.out.find("place 'C' can never become active") != std::string::npos);
+  CHECK(r.out.find("transition 'T2' can never fire: its input place 'C' never becomes active") != std::string::npos);
+  CHECK(r.out.find("transition 'T3' can never fire: its input place 'X' never becomes active") != std::string::npos);
+  CHECK(r.out.find("transition 'T1' can never fire") != std::string::npos);
+}

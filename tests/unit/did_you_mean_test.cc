@@ -103,3 +103,14 @@ TEST_CASE("did you mean: a name too long, or candidates past the cap, cost nothi
   CHECK(!many.offer("lamps"));
   CHECK(!many.found());
 }
+
+TEST_CASE("did you mean: case is no edit, a name cut short is nearer than a substitution", "[support]") {
+  CHECK(nearest("LED", {"Button", "Led"}, 1) == 1);               // capitals alone: distance 0
+  CHECK(nearest("LED", {"led", "Led"}, 1) == 1);                  // equal ignoring case: fewer case changes wins
+  CHECK(nearest("YellowOf", {"YellowOn", "YellowOff"}, 2) == 1);  // cut short, not a substitution
+  CHECK(nearest("YellowOfff", {"YellowOn", "YellowOff"}, 3) == 1);
+  CHECK(nearest("yelowon", {"YellowOff", "YellowOn"}, 2) == 1);  // ignoring case one edit, with it three
+  NearestName n("Led", 1);
+  CHECK(n.offer("LED"));
+  CHECK(n.distance() == 0);
+}

@@ -64,3 +64,51 @@ TEST_CASE("input trace: errors are located in the CSV file") {
                       " 1, 2\n"
                       " ^~~~\n");
 }
+
+TEST_CASE("input trace: a tick column makes a sparse trace, a row holding until the next row's tick") {
+  Trace t("tick, Black, Count\n3, 1, 7\n250, 0, 8\n251, 1, 9\n");
+  CHECK(t.errors() == "");
+  CHECK(t.trace->rows() == 3);
+  CHECK(t.trace->last_tick() == 251);
+  CHECK(t.at("Black", 1) == "false");  // before the first row's tick: 0
+  CHECK(t.at("Count", 2) == "0");
+  CHECK(t.at("Count", 3) == "7");
+  CHECK(t.at("Count", 249) == "7");
+  CHECK(t.at("Count", 250) == "8");
+  CHECK(t.at("Black", 250) == "false");
+  CHECK(t.at("Count", 251) == "9");
+  CHECK(t.at("Count", 9000) == "9");  // past the last row it holds
+  Trace plain("Count\n5\n6\n");
+  CHECK(plain.trace->last_tick() == 2);
+}
+
+TEST_CASE("input trace: ticks that do not go up from 1 are located errors; a misspelt column gets a suggestion") {
+  Trace t("tick, Black\n2, 1\n2, 0\n1, 0\n0, 1\n");
+  CHECK(t.errors() ==
+        "trace.csv:3:1: error: tick 2 is not after the previous row's tick 2: the rows go up in tick order [trace]\n"
+        " 2, 0\n"
+        " ^\n"
+        "trace.csv:3:1: note: a row holds from its tick until the next row's; a tick without a row keeps the row "
+        "before\n"
+        "trace.csv:4:1: error: tick 1 is not after the previous row's tick 2: the rows go up in tick order [trace]\n"
+        " 1, 0\n"
+        " ^\n"
+        "trace.csv:4:1: note: a row holds from its tick until the next row's; a tick without a row keeps the row "
+        "before\n"
+        "trace.csv:5:1: error: tick 0 in the tick column: ticks count from 1 [trace]\n"
+        " 0, 1\n"
+        " ^\n");
+  Trace misspelt("tick, black, Cuont, Tick\n");
+  CHECK(misspelt.errors() == "trace.csv:1:7: error: no interface function 'black' for this column [trace]\n"
+                             " tick, black, Cuont, Tick\n"
+                             "       ^~~~~\n"
+                             "trace.csv:1:7: note: did you mean 'Black'?\n"
+                             "trace.csv:1:14: error: no interface function 'Cuont' for this column [trace]\n"
+                             " tick, black, Cuont, Tick\n"
+                             "              ^~~~~\n"
+                             "trace.csv:1:14: note: did you mean 'Count'?\n"
+                             "trace.csv:1:21: error: no interface function 'Tick' for this column [trace]\n"
+                             " tick, black, Cuont, Tick\n"
+                             "                     ^~~~\n"
+                             "trace.csv:1:21: note: did you mean 'tick'?\n");
+}

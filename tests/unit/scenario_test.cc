@@ -94,7 +94,7 @@ TEST_CASE("test blocks report syntax errors where they are", "[scenario]") {
         " test \"x\" of Line { wait; }\n"
         "                    ^~~~\n");
   CHECK(test::parse_errors("test \"x\" of Line { tick x; }\n") ==
-        "t.sfc:1:25: error: expected a number of ticks or ';' after 'tick', found 'x' [syntax]\n"
+        "t.sfc:1:25: error: expected a number of ticks, a duration or ';' after 'tick', found 'x' [syntax]\n"
         " test \"x\" of Line { tick x; }\n"
         "                         ^\n");
 }

@@ -202,6 +202,7 @@ t.sfc:8:28: error: 'S' is a chart, not a value [type-mismatch]
 t.sfc:9:26: error: 'A' is a place, not a value [type-mismatch]
    transition A -> B when A;
                           ^
+t.sfc:9:26: note: to test whether it is active, write 'active(A)'
 t.sfc:9:26: note: 'elapsed(A)' is the time it has been active
 )--");
 }

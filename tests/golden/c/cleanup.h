@@ -2,6 +2,13 @@
 #ifndef CLEANUP_H
 #define CLEANUP_H
 
+/* This header belongs with the cleanup.c generated with it. Code compiled against another version
+   of it does not link ("undefined reference to CleanUp_init_regenerate_if_undefined_abe8d1a0"):
+   regenerate both files from the chart and rebuild. */
+#define CLEANUP_H_LAYOUT_abe8d1a0 1
+#define CleanUp_init CleanUp_init_regenerate_if_undefined_abe8d1a0
+#define CleanUp_run CleanUp_run_regenerate_if_undefined_abe8d1a0
+
 #include <stdbool.h>
 #include <stdint.h>
 

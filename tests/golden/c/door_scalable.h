@@ -2,6 +2,13 @@
 #ifndef DOOR_SCALABLE_H
 #define DOOR_SCALABLE_H
 
+/* This header belongs with the door_scalable.c generated with it. Code compiled against another version
+   of it does not link ("undefined reference to Door_init_regenerate_if_undefined_6b58a8bd"):
+   regenerate both files from the chart and rebuild. */
+#define DOOR_SCALABLE_H_LAYOUT_6b58a8bd 1
+#define Door_init Door_init_regenerate_if_undefined_6b58a8bd
+#define Door_run Door_run_regenerate_if_undefined_6b58a8bd
+
 #include <stdbool.h>
 #include <stdint.h>
 

@@ -2,6 +2,13 @@
 #ifndef EXPRESSIONS_H
 #define EXPRESSIONS_H
 
+/* This header belongs with the expressions.c generated with it. Code compiled against another version
+   of it does not link ("undefined reference to Expressions_init_regenerate_if_undefined_580bc0b6"):
+   regenerate both files from the chart and rebuild. */
+#define EXPRESSIONS_H_LAYOUT_580bc0b6 1
+#define Expressions_init Expressions_init_regenerate_if_undefined_580bc0b6
+#define Expressions_run Expressions_run_regenerate_if_undefined_580bc0b6
+
 #include <stdbool.h>
 #include <stdint.h>
 #include <float.h>

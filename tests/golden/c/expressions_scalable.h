@@ -2,6 +2,13 @@
 #ifndef EXPRESSIONS_SCALABLE_H
 #define EXPRESSIONS_SCALABLE_H
 
+/* This header belongs with the expressions_scalable.c generated with it. Code compiled against another version
+   of it does not link ("undefined reference to Expressions_init_regenerate_if_undefined_8ecc4ffb"):
+   regenerate both files from the chart and rebuild. */
+#define EXPRESSIONS_SCALABLE_H_LAYOUT_8ecc4ffb 1
+#define Expressions_init Expressions_init_regenerate_if_undefined_8ecc4ffb
+#define Expressions_run Expressions_run_regenerate_if_undefined_8ecc4ffb
+
 #include <stdbool.h>
 #include <stdint.h>
 #include <float.h>

@@ -2,6 +2,13 @@
 #ifndef LINE_FOLLOWER_H
 #define LINE_FOLLOWER_H
 
+/* This header belongs with the line_follower.c generated with it. Code compiled against another version
+   of it does not link ("undefined reference to LineFollower_init_regenerate_if_undefined_9bedea51"):
+   regenerate both files from the chart and rebuild. */
+#define LINE_FOLLOWER_H_LAYOUT_9bedea51 1
+#define LineFollower_init LineFollower_init_regenerate_if_undefined_9bedea51
+#define LineFollower_run LineFollower_run_regenerate_if_undefined_9bedea51
+
 #include <stdbool.h>
 #include <stdint.h>
 

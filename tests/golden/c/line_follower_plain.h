@@ -2,6 +2,13 @@
 #ifndef LINE_FOLLOWER_PLAIN_H
 #define LINE_FOLLOWER_PLAIN_H
 
+/* This header belongs with the line_follower_plain.c generated with it. Code compiled against another version
+   of it does not link ("undefined reference to LineFollower_init_regenerate_if_undefined_c4de282e"):
+   regenerate both files from the chart and rebuild. */
+#define LINE_FOLLOWER_PLAIN_H_LAYOUT_c4de282e 1
+#define LineFollower_init LineFollower_init_regenerate_if_undefined_c4de282e
+#define LineFollower_run LineFollower_run_regenerate_if_undefined_c4de282e
+
 #include <stdbool.h>
 #include <stdint.h>
 

@@ -2,6 +2,13 @@
 #ifndef LINE_FOLLOWER_SCALABLE_H
 #define LINE_FOLLOWER_SCALABLE_H
 
+/* This header belongs with the line_follower_scalable.c generated with it. Code compiled against another version
+   of it does not link ("undefined reference to LineFollower_init_regenerate_if_undefined_ac36428c"):
+   regenerate both files from the chart and rebuild. */
+#define LINE_FOLLOWER_SCALABLE_H_LAYOUT_ac36428c 1
+#define LineFollower_init LineFollower_init_regenerate_if_undefined_ac36428c
+#define LineFollower_run LineFollower_run_regenerate_if_undefined_ac36428c
+
 #include <stdbool.h>
 #include <stdint.h>
 

@@ -2,6 +2,13 @@
 #ifndef PATROL_SUBCHARTS_H
 #define PATROL_SUBCHARTS_H
 
+/* This header belongs with the patrol_subcharts.c generated with it. Code compiled against another version
+   of it does not link ("undefined reference to Patrol_init_regenerate_if_undefined_2121472c"):
+   regenerate both files from the chart and rebuild. */
+#define PATROL_SUBCHARTS_H_LAYOUT_2121472c 1
+#define Patrol_init Patrol_init_regenerate_if_undefined_2121472c
+#define Patrol_run Patrol_run_regenerate_if_undefined_2121472c
+
 #include <stdbool.h>
 #include <stdint.h>
 

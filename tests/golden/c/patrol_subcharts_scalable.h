@@ -2,6 +2,13 @@
 #ifndef PATROL_SUBCHARTS_SCALABLE_H
 #define PATROL_SUBCHARTS_SCALABLE_H
 
+/* This header belongs with the patrol_subcharts_scalable.c generated with it. Code compiled against another version
+   of it does not link ("undefined reference to Patrol_init_regenerate_if_undefined_1f69cdc9"):
+   regenerate both files from the chart and rebuild. */
+#define PATROL_SUBCHARTS_SCALABLE_H_LAYOUT_1f69cdc9 1
+#define Patrol_init Patrol_init_regenerate_if_undefined_1f69cdc9
+#define Patrol_run Patrol_run_regenerate_if_undefined_1f69cdc9
+
 #include <stdbool.h>
 #include <stdint.h>
 

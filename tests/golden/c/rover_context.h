@@ -2,6 +2,13 @@
 #ifndef ROVER_CONTEXT_H
 #define ROVER_CONTEXT_H
 
+/* This header belongs with the rover_context.c generated with it. Code compiled against another version
+   of it does not link ("undefined reference to Roam_init_regenerate_if_undefined_85f44894"):
+   regenerate both files from the chart and rebuild. */
+#define ROVER_CONTEXT_H_LAYOUT_85f44894 1
+#define Roam_init Roam_init_regenerate_if_undefined_85f44894
+#define Roam_run Roam_run_regenerate_if_undefined_85f44894
+
 #include <stdbool.h>
 #include <stdint.h>
 

@@ -2,6 +2,13 @@
 #ifndef SHUTTLE_SCALABLE_H
 #define SHUTTLE_SCALABLE_H
 
+/* This header belongs with the shuttle_scalable.c generated with it. Code compiled against another version
+   of it does not link ("undefined reference to Shuttle_init_regenerate_if_undefined_6c4a5d27"):
+   regenerate both files from the chart and rebuild. */
+#define SHUTTLE_SCALABLE_H_LAYOUT_6c4a5d27 1
+#define Shuttle_init Shuttle_init_regenerate_if_undefined_6c4a5d27
+#define Shuttle_run Shuttle_run_regenerate_if_undefined_6c4a5d27
+
 #include <stdbool.h>
 #include <stdint.h>
 #include <float.h>

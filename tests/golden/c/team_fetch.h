@@ -2,6 +2,13 @@
 #ifndef TEAM_FETCH_H
 #define TEAM_FETCH_H
 
+/* This header belongs with the team_fetch.c generated with it. Code compiled against another version
+   of it does not link ("undefined reference to Fetch_init_regenerate_if_undefined_47affdd5"):
+   regenerate both files from the chart and rebuild. */
+#define TEAM_FETCH_H_LAYOUT_47affdd5 1
+#define Fetch_init Fetch_init_regenerate_if_undefined_47affdd5
+#define Fetch_run Fetch_run_regenerate_if_undefined_47affdd5
+
 #include <stdbool.h>
 #include <stdint.h>
 

@@ -2,6 +2,13 @@
 #ifndef WORK_CELL_H
 #define WORK_CELL_H
 
+/* This header belongs with the work_cell.c generated with it. Code compiled against another version
+   of it does not link ("undefined reference to WorkCell_init_regenerate_if_undefined_4a608bc1"):
+   regenerate both files from the chart and rebuild. */
+#define WORK_CELL_H_LAYOUT_4a608bc1 1
+#define WorkCell_init WorkCell_init_regenerate_if_undefined_4a608bc1
+#define WorkCell_run WorkCell_run_regenerate_if_undefined_4a608bc1
+
 #include <stdbool.h>
 #include <stdint.h>
 #include <float.h>

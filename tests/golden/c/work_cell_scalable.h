@@ -2,6 +2,13 @@
 #ifndef WORK_CELL_SCALABLE_H
 #define WORK_CELL_SCALABLE_H
 
+/* This header belongs with the work_cell_scalable.c generated with it. Code compiled against another version
+   of it does not link ("undefined reference to WorkCell_init_regenerate_if_undefined_f5b71ed9"):
+   regenerate both files from the chart and rebuild. */
+#define WORK_CELL_SCALABLE_H_LAYOUT_f5b71ed9 1
+#define WorkCell_init WorkCell_init_regenerate_if_undefined_f5b71ed9
+#define WorkCell_run WorkCell_run_regenerate_if_undefined_f5b71ed9
+
 #include <stdbool.h>
 #include <stdint.h>
 #include <float.h>
