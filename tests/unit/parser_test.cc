@@ -183,9 +183,12 @@ TEST_CASE("parser: one run reports every independent syntax error") {
         "                 ^\n");
 }
 
-TEST_CASE("parser: a missing semicolon is reported at the next token") {
+TEST_CASE("parser: a missing semicolon at the end of a line is reported there and the next token in a note") {
   CHECK(parse_errors("sfc X {\n  initial place A;\n  A -> A\n}\n") ==
-        "t.sfc:4:1: error: expected ';' after the transition, found '}' [syntax]\n"
+        "t.sfc:3:9: error: expected ';' after the transition at the end of the line [syntax]\n"
+        "   A -> A\n"
+        "         ^\n"
+        "t.sfc:4:1: note: before '}' on the next line\n"
         " }\n"
         " ^\n");
 }
