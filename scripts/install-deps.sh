@@ -7,6 +7,7 @@ packages=(
   graphviz valgrind cppcheck time
   procps  # pgrep: tests/cli/reliability.sh signals gfec, not the timeout(1) around it
   man-db  # man -l: tests/cli/install_files.sh renders docs/man/gfec.1 as `man gfec` shows it
+  bash-completion  # tests/cli/install_files.sh: bash-completion loads the installed completion
   dpkg-dev  # dpkg-shlibdeps: the .deb's Depends (cmake/GfecPackage.cmake, tests/cli/deb_package.sh)
   clang-format  # scripts/format.sh --check, a ctest test
   gcc-arm-none-eabi  # the cross build and freestanding engine tests (Cortex-M4)

@@ -60,6 +60,16 @@ gfec="$root/usr/bin/gfec"
 "$gfec" --help | grep -qxF "Documentation: man gfec; $root/usr/share/doc/gfec/cli.md" ||
   fail "gfec --help does not cite the packaged guide: $("$gfec" --help | tail -1)"
 
+# bash-completion finds the completion where the package puts it (root/usr/share stands for /usr/share).
+loader=/usr/share/bash-completion/bash_completion
+if [ -f "$loader" ]; then
+  loaded=$(XDG_DATA_DIRS="$root/usr/share" BASH_COMPLETION_USER_DIR="$work/none" bash -c \
+    'source "$1"; __load_completion gfec && complete -p gfec' _ "$loader" 2>&1) ||
+    fail "bash-completion did not load the packaged completion: $loaded"
+elif [ "${CI:-}" = true ]; then
+  fail "bash-completion is not installed (Debian package bash-completion)"
+fi
+
 # A sample chart, compiled into a C engine that compiles; its scenario tests pass.
 cp "$source_dir"/samples/line_follower.sfc "$source_dir"/samples/linebot.iface \
    "$source_dir"/samples/line_follower.test "$work/"

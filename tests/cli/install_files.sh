@@ -73,6 +73,19 @@ if [ -n "$man_text" ]; then
   done
 fi
 
+# bash-completion itself loads the file from the prefix once the prefix's share/ is on
+# XDG_DATA_DIRS (the way docs/build-integration.md gives for a prefix it does not search).
+loader=/usr/share/bash-completion/bash_completion
+if [ -f "$loader" ]; then
+  loaded=$(XDG_DATA_DIRS="$root/share:/usr/share" BASH_COMPLETION_USER_DIR="$work/none" bash -c \
+    'source "$1"; __load_completion gfec && complete -p gfec' _ "$loader" 2>&1) ||
+    fail "bash-completion did not load gfec's completion from $root/share: $loaded"
+  [ "$loaded" = "complete -F _gfec gfec" ] || fail "bash-completion loaded: $loaded"
+else
+  [ "${CI:-}" = true ] && fail "bash-completion is not installed (Debian package bash-completion)"
+  echo "note: no bash-completion: its loading of the file is not checked"
+fi
+
 # The completion, driven as bash does: COMP_WORDS/COMP_CWORD in, COMPREPLY out.
 mkdir "$work/charts" && cd "$work/charts"
 touch blink.sfc cleanup.fsm board.iface notes.txt blink.test plan.pml report.xml
