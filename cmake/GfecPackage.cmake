@@ -15,13 +15,13 @@ set(CPACK_DEBIAN_PACKAGE_MAINTAINER "${GFEC_PACKAGE_MAINTAINER}")
 set(CPACK_DEBIAN_PACKAGE_SECTION devel)
 set(CPACK_DEBIAN_PACKAGE_PRIORITY optional)
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "chart compiler for robot engines (sfc, fsm, plan to C and C++)")
-set(CPACK_PACKAGE_DESCRIPTION
-    "gfec compiles sequential function charts, state machines and action flow plans into C99 "
-    "engines and C++17 plan wiring for robots and microcontrollers, with gcc's flags and "
-    "diagnostics. The package holds the compiler, the plan runtime library and headers, the CMake "
-    "package (find_package(gfec), gfec_add_chart()), the manual page, the guides and bash "
-    "completion.")
-string(JOIN "" CPACK_PACKAGE_DESCRIPTION ${CPACK_PACKAGE_DESCRIPTION})
+# The extended description, in lines under 80 columns as Debian asks (CPack indents them).
+string(JOIN "\n" CPACK_PACKAGE_DESCRIPTION
+  "gfec compiles sequential function charts, state machines and action flow plans"
+  "into C99 engines and C++17 plan wiring for robots and microcontrollers, with"
+  "gcc's flags and diagnostics. The package holds the compiler, the plan runtime"
+  "library and headers, the CMake package (find_package(gfec), gfec_add_chart()),"
+  "the manual page, the guides and bash completion.")
 # The libraries gfec links dynamically (libc, libstdc++, libfmt ...) are found by dpkg-shlibdeps
 # (Debian package dpkg-dev) when it is there; without it, the ones every such build needs.
 find_program(GFEC_DPKG_SHLIBDEPS dpkg-shlibdeps)
