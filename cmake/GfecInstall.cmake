@@ -38,13 +38,14 @@ install(FILES
   "${CMAKE_CURRENT_LIST_DIR}/GfecChart.cmake"
   DESTINATION "${GFEC_INSTALL_CMAKEDIR}")
 
-# Manual pages (written by hand in roff: docs/man/) and bash completion, one script for both
-# commands, installed under each name because bash-completion loads a file by command name.
+# The manual page (written by hand in roff: docs/man/) and bash completion, where man and
+# bash-completion look (bash-completion loads a file named for the command on the first <Tab>).
+# carbot-sim's page and completion stay in the source: the simulator is not installed, and a page
+# for a command the user does not have is a dead end.
 install(FILES "${PROJECT_SOURCE_DIR}/docs/man/gfec.1" DESTINATION "${CMAKE_INSTALL_MANDIR}/man1")
 install(FILES "${PROJECT_SOURCE_DIR}/tools/completion/gfec.bash"
   DESTINATION "${CMAKE_INSTALL_DATADIR}/bash-completion/completions" RENAME gfec)
-if(GFEC_BUILD_SIM)
-  install(FILES "${PROJECT_SOURCE_DIR}/docs/man/carbot-sim.1" DESTINATION "${CMAKE_INSTALL_MANDIR}/man1")
-  install(FILES "${PROJECT_SOURCE_DIR}/tools/completion/gfec.bash"
-    DESTINATION "${CMAKE_INSTALL_DATADIR}/bash-completion/completions" RENAME carbot-sim)
-endif()
+# The guides, which gfec --help and the man page cite: share/doc/gfec/ (CMAKE_INSTALL_DOCDIR).
+install(DIRECTORY "${PROJECT_SOURCE_DIR}/docs/" DESTINATION "${CMAKE_INSTALL_DOCDIR}"
+  FILES_MATCHING PATTERN "*.md" PATTERN "*.svg" PATTERN "*.png" PATTERN "*.json" PATTERN "*.yml"
+  PATTERN "man" EXCLUDE)

@@ -7,6 +7,8 @@
 #include <fmt/format.h>
 
 #include <cstring>
+#include <filesystem>
+#include <system_error>
 
 namespace gfec {
 
@@ -56,6 +58,19 @@ std::string commands_help() {
   return fmt::format("Commands: 'gfec NAME ...' runs a command instead of the compiler (the usage lines above);\n"
                      "{} list their options.\n",
                      names);
+}
+
+std::string documentation_line(const char *file) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  // /proc/self/exe, not argv[0]: gfec is usually found through PATH.
+  fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    fs::path installed = exe.parent_path().parent_path() / "share" / "doc" / "gfec" / file;
+    if (fs::is_regular_file(installed, ec)) return fmt::format("Documentation: man gfec; {}", installed.string());
+  }
+  return fmt::format("Documentation: man gfec; {} in share/doc/gfec/ of gfec's installation, docs/ of its source",
+                     file);
 }
 
 }  // namespace gfec

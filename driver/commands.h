@@ -33,5 +33,9 @@ int dispatch(int argc, const char *const *argv, std::ostream &out, std::ostream 
 std::string usage_lines();
 /// The paragraph of `gfec --help` that points to each command's own --help.
 std::string commands_help();
+/// "Documentation: man gfec; FILE ...": where the installed copy of docs/FILE is (share/doc/gfec
+/// beside the running gfec's bin/, as cmake --install and the .deb put it), else where to look.
+/// --help must cite a page the user has, not a path in a source tree they may never have seen.
+std::string documentation_line(const char *file);
 
 }  // namespace gfec

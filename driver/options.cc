@@ -243,6 +243,15 @@ std::optional<int> parse_subcommand(CLI::App &app, int argc, const char *const *
   return std::nullopt;
 }
 
+namespace {
+class NoUsageFormatter : public CLI::Formatter {
+public:
+  std::string make_usage(const CLI::App *, std::string) const override { return ""; }
+  // The description already ends in a newline (the last usage line).
+  std::string make_description(const CLI::App *app) const override { return app->get_description(); }
+};
+}  // namespace
+
 ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
   ParsedCommandLine result;
   Options &o = result.options;
@@ -256,9 +265,11 @@ ParsedCommandLine parse_command_line(int argc, const char *const *argv) {
              "terminal unless NO_COLOR is set; -fno-diagnostics-color = never), -fno-diagnostics-show-line-numbers,\n"
              "-fdiagnostics-parseable-fixits (fix-it:\"FILE\":{L:C-L:C}:\"TEXT\" lines for editors).\n"
              "\n" +
-             commands_help() +
-             "\nExit status: 0 success, 1 errors in the input, 2 usage or I/O error.\n"
-             "Documentation: docs/cli.md");
+             commands_help() + "\nExit status: 0 success, 1 errors in the input, 2 usage or I/O error.\n" +
+             documentation_line("cli.md"));
+  // The description's usage lines are the usage: CLI11's own "Usage: gfec [OPTIONS] [files...]"
+  // would be a second, less precise block.
+  app.formatter(std::make_shared<NoUsageFormatter>());
   bool no_line = false;
   app.add_option("files", o.inputs, "Chart files to compile (several only with --check or --analyze)");
   app.add_option("-o,--output", o.output,

@@ -1,5 +1,6 @@
 #include "run_command.h"
 
+#include "commands.h"
 #include "escape.h"
 #include "backend_registry.h"
 #include "diagnostic_report.h"
@@ -302,7 +303,8 @@ int run_command(int argc, const char *const *argv, std::ostream &out, std::ostre
              "function without a column returns 0 (false); past the last row the last row holds. A team machine runs "
              "every agent: a column `F@k` is what F returns to agent k.\n"
              "Exit status: 0 ran, 1 errors in the chart or the trace, or undefined behaviour\n"
-             "while running, 2 usage or I/O error. Documentation: docs/verification.md");
+             "while running, 2 usage or I/O error.\n" +
+             documentation_line("verification.md"));
   app.add_option("chart", o.input, "The chart file")->required();
   app.add_option("--inputs", o.inputs_csv, "CSV input trace: a column per sensing function, a row per tick")
       ->type_name("FILE");

@@ -1,5 +1,6 @@
 #include "test_command.h"
 
+#include "commands.h"
 #include "escape.h"
 #include "diagnostic_printer.h"
 #include "diagnostic_report.h"
@@ -503,8 +504,8 @@ int test_command(int argc, const char *const *argv, std::ostream &out, std::ostr
                "gfec test"};
   app.footer("Each test runs on both; it passes when every expectation holds on both and both saw the same\n"
              "calls. The last line is 'N passed, M failed'. The C engine is built with $CC (else cc).\n"
-             "Exit status: 0 all passed, 1 a test failed or a file has errors, 2 usage or I/O error.\n"
-             "Documentation: docs/testing-charts.md");
+             "Exit status: 0 all passed, 1 a test failed or a file has errors, 2 usage or I/O error.\n" +
+             documentation_line("testing-charts.md"));
   app.add_option("files", o.files, "Test files")->required();
   app.add_option("--junit", o.junit, "Also write the results as JUnit XML to FILE")->type_name("FILE");
   app.add_option("--filter", o.filter, "Run only the tests whose name contains TEXT")->type_name("TEXT");

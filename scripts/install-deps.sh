@@ -6,6 +6,9 @@ packages=(
   libfmt-dev nlohmann-json3-dev libcli11-dev catch2 libode-dev
   graphviz valgrind cppcheck time
   procps  # pgrep: tests/cli/reliability.sh signals gfec, not the timeout(1) around it
+  man-db  # man -l: tests/cli/install_files.sh renders docs/man/gfec.1 as `man gfec` shows it
+  bash-completion  # tests/cli/install_files.sh: bash-completion loads the installed completion
+  dpkg-dev  # dpkg-shlibdeps: the .deb's Depends (cmake/GfecPackage.cmake, tests/cli/deb_package.sh)
   clang-format  # scripts/format.sh --check, a ctest test
   gcc-arm-none-eabi  # the cross build and freestanding engine tests (Cortex-M4)
   gcc-avr avr-libc libsimavr-dev  # AVR programs and tools/avr-run (docs/targets.md)

@@ -1,24 +1,47 @@
 #!/usr/bin/env bash
-# `cmake --install` into a DESTDIR puts the manual pages and the bash completion where man and
-# bash-completion look; the pages render without a warning; the completion offers gfec's
-# options, warning names (read from gfec --help), back ends and chart files.
+# `cmake --install` into a DESTDIR puts the manual page, the guides and the bash completion where
+# man and bash-completion look; the page renders without a warning and names what --help names;
+# --help has one usage block and cites a guide that is installed; the completion offers gfec's
+# commands, options, warning names (read from gfec --help), back ends and chart and test files.
 # Usage: install_files.sh BUILD_DIR
 set -euo pipefail
 build_dir=$1
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
+# The man page checks need man (man-db); CI installs it (scripts/install-deps.sh).
+if ! command -v man >/dev/null; then
+  [ "${CI:-}" = true ] && fail "man is not installed (Debian package man-db)"
+  echo "note: no man (man-db): the man page is not rendered"
+fi
 
 DESTDIR="$work/dest" cmake --install "$build_dir" --prefix /usr/local >/dev/null || fail "cmake --install"
 root="$work/dest/usr/local"
 [ -x "$root/bin/gfec" ] || fail "no bin/gfec"
 [ -f "$root/share/man/man1/gfec.1" ] || fail "no share/man/man1/gfec.1"
 [ -f "$root/share/bash-completion/completions/gfec" ] || fail "no bash completion for gfec"
-sim=$(grep -c '^GFEC_BUILD_SIM:BOOL=ON' "$build_dir/CMakeCache.txt" || true)
-if [ "$sim" = 1 ]; then
-  [ -f "$root/share/man/man1/carbot-sim.1" ] || fail "no share/man/man1/carbot-sim.1"
-  [ -f "$root/share/bash-completion/completions/carbot-sim" ] || fail "no bash completion for carbot-sim"
-fi
+# A page or a completion only for a command that is installed.
+for page in "$root"/share/man/man1/*.1; do
+  name=$(basename "$page" .1)
+  [ -x "$root/bin/$name" ] || fail "share/man/man1/$name.1 installed without bin/$name"
+done
+for file in "$root"/share/bash-completion/completions/*; do
+  [ -x "$root/bin/$(basename "$file")" ] || fail "a completion for $(basename "$file"), not installed"
+done
+[ -f "$root/share/doc/gfec/cli.md" ] || fail "no share/doc/gfec/cli.md"
+[ -f "$root/share/doc/gfec/tutorial.md" ] || fail "no share/doc/gfec/tutorial.md"
+
+# --help: one usage block, and every guide a help cites is installed (found beside bin/).
+help=$("$root/bin/gfec" --help)
+[ "$(grep -c 'Usage:' <<<"$help")" = 1 ] || fail "gfec --help has $(grep -c 'Usage:' <<<"$help") usage blocks"
+for words in "gfec test FILE" "-x LANG" "chart text"; do
+  grep -qF -- "$words" <<<"$help" || fail "gfec --help does not mention '$words'"
+done
+for command in "" run test; do
+  cited=$("$root/bin/gfec" $command --help | sed -n 's/^Documentation: man gfec; \([^ ]*\)$/\1/p')
+  [ -n "$cited" ] || fail "gfec $command --help cites no installed guide: $("$root/bin/gfec" $command --help | tail -1)"
+  [ -f "$cited" ] || fail "gfec $command --help cites $cited, not installed"
+done
 
 # The pages render, with every groff warning on and none given.
 pages=("$root"/share/man/man1/*.1)
@@ -38,13 +61,34 @@ if [ -n "$man_text" ]; then
   # Every option --help lists is in the page.
   for opt in --check --analyze --emit --chart --engine --no-line-directives -Werror= -Wno-error= \
              -fdiagnostics-color -fdiagnostics-parseable-fixits -fmax-errors -MD -MF -MP -MT; do
-    echo "$man_text" | grep -q -- "$opt" || fail "gfec.1 does not mention $opt"
+    grep -q -- "$opt" <<<"$man_text" || fail "gfec.1 does not mention $opt"
   done
+  for words in "gfec test" "GFEC TEST" "-x alica|gfec" "toolbox-skeleton or chart" \
+               'fix-it:"FILE":{L:C-L:C}:"TEXT"' /usr/share/bash-completion/completions/gfec /usr/share/doc/gfec/; do
+    grep -qF -- "$words" <<<"$man_text" || fail "gfec.1 does not say '$words'"
+  done
+  # Every page SEE ALSO names is installed (or a well-known system one).
+  for ref in $(echo "$man_text" | sed -n '/^SEE ALSO/,$p' | grep -o '[a-z][a-z-]*([0-9])' | sed 's/(.*//'); do
+    case $ref in gcc|make|cmake) ;; *) [ -x "$root/bin/$ref" ] || fail "gfec.1 refers to $ref(1), not installed" ;; esac
+  done
+fi
+
+# bash-completion itself loads the file from the prefix once the prefix's share/ is on
+# XDG_DATA_DIRS (the way docs/build-integration.md gives for a prefix it does not search).
+loader=/usr/share/bash-completion/bash_completion
+if [ -f "$loader" ]; then
+  loaded=$(XDG_DATA_DIRS="$root/share:/usr/share" BASH_COMPLETION_USER_DIR="$work/none" bash -c \
+    'source "$1"; __load_completion gfec && complete -p gfec' _ "$loader" 2>&1) ||
+    fail "bash-completion did not load gfec's completion from $root/share: $loaded"
+  [ "$loaded" = "complete -F _gfec gfec" ] || fail "bash-completion loaded: $loaded"
+else
+  [ "${CI:-}" = true ] && fail "bash-completion is not installed (Debian package bash-completion)"
+  echo "note: no bash-completion: its loading of the file is not checked"
 fi
 
 # The completion, driven as bash does: COMP_WORDS/COMP_CWORD in, COMPREPLY out.
 mkdir "$work/charts" && cd "$work/charts"
-touch blink.sfc cleanup.fsm board.iface notes.txt
+touch blink.sfc cleanup.fsm board.iface notes.txt blink.test plan.pml report.xml
 complete_words() {
   PATH="$root/bin:$PATH" bash -c '
     shopt -s extglob
@@ -66,13 +110,24 @@ expect() {
 expect --check --chart -- gfec --ch
 expect --context --context-type= -- gfec --cont
 expect --names -- gfec --na
-expect --emit=c --emit=cpp --emit=svg -- gfec --emit=
+expect --emit=c --emit=cpp --emit=svg --emit=chart -- gfec --emit=
 expect -Wunreachable-actor -Wunreachable-place -- gfec -Wunre
 expect -Werror=dead-transition -- gfec -Werror=dead
 expect -fdiagnostics-color=always -fdiagnostics-color=auto -- gfec -fdiagnostics-color=a
-expect blink.sfc cleanup.fsm board.iface run -- gfec ""
+expect blink.sfc cleanup.fsm board.iface plan.pml run test -- gfec ""
 [[ " $(offers gfec "") " == *" notes.txt "* ]] && fail "gfec <Tab> offers a text file"
+expect -x -- gfec -
+expect alica gfec -- gfec -x ""
 expect blink.sfc -- gfec run b
+expect plan.pml -- gfec run p
 expect --inputs -- gfec run blink.sfc --in
-expect --world -- carbot-sim blink.sfc --wo
+expect --html -- gfec run blink.sfc --ht
+expect --agents -- gfec run blink.sfc --ag
+expect alica -- gfec run -x a
+expect -Wall -- gfec run blink.sfc -Wal
+expect blink.test -- gfec test ""
+[[ " $(offers gfec test "") " == *" blink.sfc "* ]] && fail "gfec test <Tab> offers a chart, not a test file"
+expect --reference-only --junit -x -- gfec test -
+expect report.xml -- gfec test --junit r
+expect -Wconflict -- gfec test blink.test -Wconf
 echo "installed manual pages and completion: all checks passed"

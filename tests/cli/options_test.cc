@@ -135,6 +135,13 @@ TEST_CASE("options: no file is gcc's 'no input files' and the ways to run gfec, 
   CHECK(help.exit_code == 0);
   CHECK(help.message.find("gfec run CHART") != std::string::npos);
   CHECK(help.message.find("--analyze") != std::string::npos);
+  // One usage block (ours), not CLI11's "Usage: gfec [OPTIONS] [files...]" as well.
+  size_t usages = 0;
+  for (size_t at = help.message.find("Usage:"); at != std::string::npos; at = help.message.find("Usage:", at + 1))
+    ++usages;
+  CHECK(usages == 1);
+  for (const char *words : {"gfec test FILE", "-x LANG", "chart text", "Documentation: man gfec; cli.md"})
+    CHECK(help.message.find(words) != std::string::npos);
 }
 
 TEST_CASE("options: --context, --context-type and --names, the C engine's options") {

@@ -1,6 +1,7 @@
-# bash completion for gfec and carbot-sim. Installed by cmake --install into
-# share/bash-completion/completions/ (cmake/GfecInstall.cmake); bash-completion loads it on the
-# first <Tab> after "gfec" or "carbot-sim". tests/cli/install_files.sh checks what it offers.
+# bash completion for gfec (and carbot-sim, when sourced from the source tree). Installed by
+# cmake --install and the .deb into share/bash-completion/completions/gfec
+# (cmake/GfecInstall.cmake); bash-completion loads it on the first <Tab> after "gfec".
+# tests/cli/install_files.sh checks what it offers.
 
 _gfec_warnings() {
   # The warning names from gfec itself, so the list never goes stale.
@@ -13,27 +14,48 @@ _gfec() {
   prev=${COMP_WORDS[COMP_CWORD-1]}
   local gfec=${COMP_WORDS[0]}
 
-  if [[ ${COMP_WORDS[1]} == run && $COMP_CWORD -gt 1 ]]; then
+  # Options every command takes (the front end's): -I DIR, -x LANG.
+  case $prev in
+    -I) COMPREPLY=($(compgen -d -- "$cur")); return ;;
+    -x) COMPREPLY=($(compgen -W 'alica gfec' -- "$cur")); return ;;
+  esac
+
+  # -W<name> and -f<option> complete as the compiler's, below.
+  if [[ ${COMP_WORDS[1]} == run && $COMP_CWORD -gt 1 && $cur != -[Wf]?* ]]; then
     case $prev in
       --inputs) COMPREPLY=($(compgen -f -X '!*.csv' -- "$cur")); compopt -o plusdirs 2>/dev/null; return ;;
-      --ticks|--chart) return ;;
-      -I) COMPREPLY=($(compgen -d -- "$cur")); return ;;
+      --html) COMPREPLY=($(compgen -f -X '!*.html' -- "$cur")); compopt -o plusdirs 2>/dev/null; return ;;
+      --ticks|--chart|--agents) return ;;
     esac
     if [[ $cur == -* ]]; then
-      COMPREPLY=($(compgen -W '--inputs --ticks --chart -I --observable --hooks --check-post --help' -- "$cur"))
+      COMPREPLY=($(compgen -W '--inputs --ticks --agents --chart --html -I -x --observable --hooks --check-post
+        -W -w -f --help' -- "$cur"))
     else
-      COMPREPLY=($(compgen -f -X '!*.@(sfc|fsm)' -- "$cur")); compopt -o plusdirs 2>/dev/null
+      COMPREPLY=($(compgen -f -X '!*.@(sfc|fsm|pml)' -- "$cur")); compopt -o plusdirs 2>/dev/null
+    fi
+    return
+  fi
+
+  if [[ ${COMP_WORDS[1]} == test && $COMP_CWORD -gt 1 && $cur != -[Wf]?* ]]; then
+    case $prev in
+      --junit) COMPREPLY=($(compgen -f -X '!*.xml' -- "$cur")); compopt -o plusdirs 2>/dev/null; return ;;
+      --filter|-j|--jobs) return ;;
+    esac
+    if [[ $cur == -* ]]; then
+      COMPREPLY=($(compgen -W '--junit --filter --engine-only --reference-only -j --jobs -v --verbose -I -x
+        -W -w -f --help' -- "$cur"))
+    else
+      COMPREPLY=($(compgen -f -X '!*.test' -- "$cur")); compopt -o plusdirs 2>/dev/null
     fi
     return
   fi
 
   case $prev in
     -o|--output|-MF) COMPREPLY=($(compgen -f -- "$cur")); return ;;
-    -I) COMPREPLY=($(compgen -d -- "$cur")); return ;;
     --chart|-MT|--context-type) return ;;
   esac
   case $cur in
-    --emit=*) COMPREPLY=($(compgen -P --emit= -W 'c cpp json dot svg toolbox-skeleton' -- "${cur#--emit=}")); return ;;
+    --emit=*) COMPREPLY=($(compgen -P --emit= -W 'c cpp json dot svg toolbox-skeleton chart' -- "${cur#--emit=}")); return ;;
     --engine=*) COMPREPLY=($(compgen -P --engine= -W 'auto readable scalable' -- "${cur#--engine=}")); return ;;
     -fdiagnostics-format=*)
       COMPREPLY=($(compgen -P -fdiagnostics-format= -W 'text json sarif-stderr sarif-file' -- "${cur#*=}")); return ;;
@@ -49,15 +71,15 @@ _gfec() {
         -fdiagnostics-parseable-fixits -fno-diagnostics-show-line-numbers -fmax-errors=' -- "$cur"))
       compopt -o nospace 2>/dev/null; return ;;
     -*)
-      COMPREPLY=($(compgen -W '-o -I --check --analyze --emit= --chart --engine= --no-line-directives
+      COMPREPLY=($(compgen -W '-o -I -x --check --analyze --emit= --chart --engine= --no-line-directives
         --context --context-type= --names -W -w -Wall -Werror -f -MD -MMD -MF -MP -MT --help --version' -- "$cur"))
       [[ ${COMPREPLY[0]} == *= ]] && compopt -o nospace 2>/dev/null
       return ;;
   esac
   if [[ $COMP_CWORD -eq 1 ]]; then
-    COMPREPLY=($(compgen -W run -- "$cur"))
+    COMPREPLY=($(compgen -W 'run test' -- "$cur"))
   fi
-  COMPREPLY+=($(compgen -f -X '!*.@(sfc|fsm|plan|iface|toolbox)' -- "$cur"))
+  COMPREPLY+=($(compgen -f -X '!*.@(sfc|fsm|plan|iface|toolbox|pml)' -- "$cur"))
   compopt -o plusdirs 2>/dev/null
 }
 
