@@ -338,6 +338,21 @@ test('the chart is readable at 1400x900 and zooms: buttons, Ctrl+wheel, keys, fi
     await page.keyboard.press('+');
     assert.ok(await zoom() > first, 'key +');
     await page.keyboard.press('0');
+    // At the first scale the mission's picture is larger than its pane: a lit state out of sight
+    // (the clean-up's Z3, low in its frame) is scrolled into view when its tick is shown.
+    await page.evaluate(() => { document.getElementById('chart').scrollTop = 0; });
+    const z3 = await page.evaluate(() => {
+      const d = window.gfecViewer.data, row = d.rows.findIndex((r) => r.node === 's1_p3');
+      return d.active.find(([, rows]) => rows.includes(row))[0];
+    });
+    const inSight = () => page.evaluate(() => {
+      const pane = document.getElementById('chart').getBoundingClientRect();
+      const r = document.querySelector('#chart g.node[data-node="s1_p3"]').getBoundingClientRect();
+      return r.right > pane.left && r.left < pane.right && r.bottom > pane.top && r.top < pane.bottom;
+    });
+    assert.equal(await inSight(), false, 'Z3 is out of sight before its tick');
+    await page.evaluate((k) => window.gfecViewer.seek(k), z3);
+    assert.equal(await inSight(), true, 'Z3, lit, is scrolled into sight');
     // The picture scrolls in its pane rather than overflowing the page.
     const pane = await page.$eval('#chart', (c) => [c.scrollWidth > c.clientWidth || c.scrollHeight > c.clientHeight, getComputedStyle(c).overflow]);
     assert.equal(pane[1], 'auto');
@@ -505,7 +520,7 @@ test('team page (three robots fetch one cup): each robot\'s states lit as its tr
       const active = await page.$eval('#r-active', (e) => e.textContent);
       assert.equal(active, perRobot.map((rows, i) => `robot ${i}: ${rows[k].join(', ') || '\u2013'}`).join('\n'));
     }
-    // The calls of tick 0: robot 0 drives to the cup (shown while robot 0 is selected).
+    // The calls of tick 1 (frame 0): robot 0 drives to the cup (shown while robot 0 is selected).
     await page.select('#robot-select', '0');
     await scrubTo(page, 0);
     const calls = await page.$$eval('#calls li', (l) => l.map((li) => li.textContent.trim()));

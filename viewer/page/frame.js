@@ -61,6 +61,16 @@
       ul.appendChild(note);
     }
   }
+  // A zoomed picture scrolls: when the last lit node - the innermost instance's place, rows being
+  // the chart's then its instances' depth first - is out of sight, it is brought to the pane's
+  // centre; a picture the reader scrolled stays put while that node shows.
+  function keepLitInView() {
+    if (!lastLit.length || !natural) return;
+    var pane = chartBox.getBoundingClientRect(), r = lastLit[lastLit.length - 1].getBoundingClientRect();
+    if (r.right > pane.left && r.left < pane.right && r.bottom > pane.top && r.top < pane.bottom) return;
+    chartBox.scrollLeft += (r.left + r.width / 2) - (pane.left + pane.width / 2);
+    chartBox.scrollTop += (r.top + r.height / 2) - (pane.top + pane.height / 2);
+  }
   function render() {
     var act = activeRows(frame);
     unlight();
@@ -69,6 +79,7 @@
       var g = nodeOf[rows[r].node];
       if (g) { g.classList.add('lit'); lastLit.push(g); }
     });
+    keepLitInView();
     // Several robots: one line per robot, "robot 0: Grab".
     var stateOf = {};
     if (team) act.forEach(function (r) { (stateOf[rows[r].robot] = stateOf[rows[r].robot] || []).push(rowState(r)); });
