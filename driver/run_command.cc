@@ -7,6 +7,8 @@
 #include "driver.h"
 #include "external_tool.h"
 #include "interpreter/input_trace.h"
+#include "interpreter/machine.h"
+#include "interpreter/value.h"
 #include "interpreter/run_chart.h"
 #include "output_files.h"
 #include "pipeline/compilation.h"
@@ -98,10 +100,34 @@ public:
       throw;  // a chart too large to draw in time is an error, not a page without a picture
     } catch (const std::exception &e) { note = fmt::format("no diagram: {}", e.what()); }
     rec_.set_picture(svg, note);
+    // The vars' initial values as the interpreter's _init sets them; each tick's `set` lines
+    // then give their changes. A team's agents each have their own vars, which the log does
+    // not tell apart: their declarations only.
+    interp::Machine initial(model, chart);
+    std::string unknown;
+    try {
+      initial.init();
+    } catch (const std::exception &e) {
+      unknown = e.what();  // the run reports it, located, at its first tick
+    }
+    for (model::VarId v : c_.vars.ids())
+      rec_.add_var(model::type_name(c_.vars[v].type), c_.vars[v].name,
+                   unknown.empty() ? interp::format_value(initial.vars()[v]) : "?");
+    if (!unknown.empty()) rec_.set_vars_note("no initial values: " + unknown);
+    if (c_.team > 0 && !c_.vars.empty())
+      rec_.set_vars_note("each agent of the team has its own vars: their initial values");
   }
 
   void feed(const std::vector<interp::Event> &events) {
     for (const interp::Event &e : events) {
+      // Whose statements run now: a sub-chart instance's places are named by their path ("A.S").
+      if (e.kind == interp::EventKind::Entry || e.kind == interp::EventKind::Action ||
+          e.kind == interp::EventKind::Exit)
+        in_instance_ = e.text.find('.') != std::string::npos;
+      else if (e.kind == interp::EventKind::RunInstance || e.kind == interp::EventKind::Start ||
+               e.kind == interp::EventKind::Stop)
+        in_instance_ = true;
+      else if (e.kind == interp::EventKind::Assign && !in_instance_ && c_.team == 0 && frame_ >= 0) record_var(e.text);
       switch (e.kind) {
       case interp::EventKind::Tick:
         finish_tick();
@@ -155,6 +181,14 @@ private:
     tick_calls_.clear();
     on_.clear();
   }
+  /// "set parts = 3": the chart's var `parts` is 3 after this tick.
+  void record_var(const std::string &text) {
+    std::size_t eq = text.find(" = ");
+    if (text.rfind("set ", 0) != 0 || eq == std::string::npos) return;
+    std::string name = text.substr(4, eq - 4);
+    for (model::VarId v : c_.vars.ids())
+      if (c_.vars[v].name == name) rec_.record_var(v.index(), frame_, text.substr(eq + 3));
+  }
   /// "av 1 0 2" (the chart) or "av Search.Grab: 0 1" (a running instance): whose line, and the rest.
   static std::pair<std::string, std::size_t> owner(const std::string &text, std::size_t from) {
     std::size_t space = text.find(' ', from);
@@ -173,6 +207,7 @@ private:
   std::vector<std::string> tick_calls_;
   std::string status_ = "running";
   std::vector<std::size_t> on_;  ///< the rows active after the current tick
+  bool in_instance_ = false;     ///< the statements running now are a sub-chart instance's
 };
 
 int run_with(const RunOptions &o, DiagnosticReport &report, std::ostream &out) {

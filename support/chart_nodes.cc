@@ -19,5 +19,6 @@ std::string supervisor(std::size_t actor, std::size_t supervisor) {
 }
 std::string global_supervisor(std::size_t global) { return id("", "g", global); }
 std::string constraint(std::size_t constraint) { return id("", "c", constraint); }
+std::string vars() { return "vars"; }
 
 }  // namespace gfec::chart_nodes

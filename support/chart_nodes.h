@@ -30,4 +30,7 @@ std::string supervisor(std::size_t actor, std::size_t supervisor);
 std::string global_supervisor(std::size_t global);
 std::string constraint(std::size_t constraint);
 
+/// The note listing an sfc's or fsm's vars: "vars" (the run viewer shows their values beside it).
+std::string vars();
+
 }  // namespace gfec::chart_nodes

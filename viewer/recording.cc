@@ -92,6 +92,17 @@ void RecordingBuilder::record_status(std::size_t robot, long frame, const std::s
   robots_.at(robot).status.record(frame, status);
 }
 
+std::size_t RecordingBuilder::add_var(std::string type, std::string name, std::string initial) {
+  Var v;
+  v.fields = {{"type", std::move(type)}, {"name", std::move(name)}, {"init", std::move(initial)}};
+  vars_.push_back(std::move(v));
+  return vars_.size() - 1;
+}
+
+void RecordingBuilder::record_var(std::size_t var, long frame, const std::string &value) {
+  vars_.at(var).values.record(frame, value);
+}
+
 void RecordingBuilder::add_event(long frame, std::string kind, std::string text) {
   events_.emplace_back(frame, std::move(kind), std::move(text));
 }
@@ -143,6 +154,14 @@ nlohmann::json RecordingBuilder::data() const {
     }
     doc["robots"] = std::move(list);
   }
+  json vars = json::array();
+  for (const Var &v : vars_) {
+    json j = v.fields;
+    j["values"] = v.values.json();
+    vars.push_back(std::move(j));
+  }
+  doc["vars"] = std::move(vars);
+  doc["vars_note"] = vars_note_;
   for (const auto &[key, value] : extra_) doc[key] = value;
   return doc;
 }

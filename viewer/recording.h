@@ -79,6 +79,14 @@ public:
   /// The run's (or a robot's) status from `frame` on: "running", "succeeded", ...
   void record_status(long frame, const std::string &status);
   void record_status(std::size_t robot, long frame, const std::string &status);
+  /// A var of the chart (docs/viewer.md "Vars"): its declaration as the picture's note gives it
+  /// ("int", "parts", "0"); returns its index for record_var.
+  std::size_t add_var(std::string type, std::string name, std::string initial);
+  /// Var `var`'s value after tick `frame`, as the log prints it; it holds until the next one.
+  /// A var never recorded shows its initial value; a recorder that does not know the values
+  /// (carbot-sim) records none and says so with set_vars_note.
+  void record_var(std::size_t var, long frame, const std::string &value);
+  void set_vars_note(std::string note) { vars_note_ = std::move(note); }
   /// An entry of the events list; events are listed in frame order, those of one frame as added.
   void add_event(long frame, std::string kind, std::string text);
   /// A plan's supervisor that fired: its node, lit for a second, and what it was.
@@ -107,6 +115,12 @@ private:
   std::vector<std::tuple<long, std::string, std::string>> events_;
   nlohmann::json fired_ = nlohmann::json::array();
   std::vector<Robot> robots_;
+  struct Var {
+    nlohmann::json fields;
+    ChangeList values;
+  };
+  std::vector<Var> vars_;
+  std::string vars_note_;
   std::map<std::string, nlohmann::json> extra_;
 };
 

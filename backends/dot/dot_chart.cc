@@ -30,9 +30,16 @@ std::string place_node(const model::Model &m, const model::Chart &c, std::size_t
     attrs += fmt::format(", style=\"filled,bold,rounded\", fillcolor=\"{}\"", ok ? "#d5f5d5" : "#f8d4d4");
   }
   model::ChartId chart = m.charts.id_of(c);
-  std::string actions = block_text(m, chart, p.action);
-  if (p.entry) actions = "entry: " + block_text(m, chart, *p.entry) + (actions.empty() ? "" : "\n" + actions);
-  if (p.exit) actions += (actions.empty() ? "" : "\n") + std::string("exit: ") + block_text(m, chart, *p.exit);
+  // Each block under its own heading, in the order they run for a place entered and left: a
+  // block's further statements follow on their own lines, up to the next heading.
+  std::string actions;
+  auto section = [&](const char *heading, const std::vector<model::Stmt> &block) {
+    std::string text = block_text(m, chart, block);
+    if (!text.empty()) actions += (actions.empty() ? "" : "\n") + std::string(heading) + text;
+  };
+  if (p.entry) section("entry: ", *p.entry);
+  section("every tick: ", p.action);
+  if (p.exit) section("exit: ", *p.exit);
   if (!actions.empty()) label += "\n" + std::string(12, '-') + "\n" + actions;
   return fmt::format("  {} [{}, label={}];\n", chart_nodes::place(id, i), attrs, quote(label));
 }
@@ -111,6 +118,31 @@ void chart_body(const model::Model &m, const model::Chart &c, const std::string 
   }
 }
 
+/// A var's value without an initialiser (docs/language.md: zero).
+std::string type_zero(model::Type t) {
+  switch (t) {
+  case model::Type::Bool: return "false";
+  case model::Type::Float:
+  case model::Type::Double: return "0.0";
+  default: return "0";
+  }
+}
+
+/// The chart's vars, a note beside the places (as the plan picture's config entries are): name,
+/// type and initial value, one a line, in declaration order. A sub-chart's vars are its own
+/// and are not listed: the note is the compiled chart's state besides its activation.
+void vars_note(const model::Model &m, const model::Chart &c, std::ostream &out) {
+  if (c.vars.empty()) return;
+  std::string text = "vars";
+  for (const model::Var &v : c.vars) {
+    std::string init = v.init ? expr_text(m, m.charts.id_of(c), *v.init) : type_zero(v.type);
+    text += fmt::format("\n{} {} = {}", type_name(v.type), v.name, init);
+  }
+  out << "  // the chart's vars with their initial values\n";
+  out << fmt::format("  {} [shape=note, style=filled, fillcolor=\"#f4f4f4\", fontsize=10, label={}];\n",
+                     chart_nodes::vars(), quote(text));
+}
+
 }  // namespace
 
 void chart_picture(const model::Model &m, const model::Chart &c, std::ostream &out) {
@@ -126,6 +158,7 @@ void chart_picture(const model::Model &m, const model::Chart &c, std::ostream &o
   for (const auto &p : c.places) nested = nested || p.runs;
   if (nested) out << "  compound=true;\n";  // edges may end at a sub-chart's frame
   chart_body(m, c, "", out);
+  vars_note(m, c, out);
   out << "}\n";
 }
 

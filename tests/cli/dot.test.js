@@ -314,6 +314,40 @@ test('dot: a team machine says its team size; an if keeps its braces', () => {
   const dot = emit(path.join(SAMPLES, 'fetch_team.fsm'), 'dot');
   assert.match(dot, /label="fsm Fetch \(period 10ms, team of 4 agents\)"/);
   const yieldNode = Object.values(nodes(dot)).filter((a) => /\blabel=/.test(a)).map(label).find((l) => l.startsWith('Yield'));
-  assert.ok(yieldNode.includes('entry: if (agent() == 0) { Beep(2); } else { Beep(1); }\n'), yieldNode);
+  assert.ok(yieldNode.includes('entry: if (agent() == 0) { Beep(2); } else { Beep(1); }\nevery tick: Park();'), yieldNode);
   if (haveDot) render(dot);
+});
+
+test('dot: a place\'s entry, every-tick and exit blocks each under its own heading', () => {
+  const dir = scratch({
+    'blocks.sfc': `interface R { bool Done(); void Lamp(bool on); void Beep(); void Go(); void Stop(); }
+sfc Blocks {
+  initial place A { entry { Lamp(true); Beep(); } Go(); Stop(); exit { Lamp(false); } }
+  place B { Go(); }
+  place C { entry { Beep(); } }
+  A -> B when Done();
+  B -> C;
+}
+`,
+  });
+  const n = nodes(emit(path.join(dir, 'blocks.sfc'), 'dot'));
+  assert.equal(label(n.p0), 'A\n------------\nentry: Lamp(true);\nBeep();\nevery tick: Go();\nStop();\nexit: Lamp(false);');
+  assert.equal(label(n.p1), 'B\n------------\nevery tick: Go();');
+  assert.equal(label(n.p2), 'C\n------------\nentry: Beep();');
+});
+
+test('dot: a chart\'s vars are listed with their types and initial values in a note', () => {
+  const dot = emit(path.join(SAMPLES, 'work_cell.sfc'), 'dot');
+  const n = nodes(dot);
+  assert.match(n.vars, /shape=note/);
+  assert.equal(label(n.vars), 'vars\nint parts = 0\nfloat speed = SLOW');
+  const dir = scratch({
+    'zero.fsm': `interface R { bool Done(); }
+fsm Zero { var bool seen; var float f; var int k = 2 + 3; initial state S; success state E; S -> E when Done(); }
+`,
+  });
+  assert.equal(label(nodes(emit(path.join(dir, 'zero.fsm'), 'dot')).vars), 'vars\nbool seen = false\nfloat f = 0.0\nint k = 2 + 3');
+  // A chart without vars has no note.
+  assert.equal(nodes(emit(path.join(SAMPLES, 'line_follower.sfc'), 'dot')).vars, undefined);
+  if (haveDot) assert.match(render(dot), /<title>vars<\/title>/);
 });

@@ -88,6 +88,33 @@ fsm Top { initial state A runs Leaf; state B; A -> B when active(A.L2); B -> A w
   CHECK(d["title"] == "Top (fsm): running after 4 ticks");  // an instance's state is not the run's
 }
 
+TEST_CASE("gfec run --html: the chart's vars with their values per tick, not a sub-chart's", "[viewer]") {
+  std::string dir = scratch_dir("gfec_run_html_vars");
+  // Leaf has a var of the same name as Top's: its `set n` lines are the instance's, not Top's.
+  write_file(dir + "/vars.sfc", R"(interface R { bool Go(); }
+const int START = 4;
+sfc Leaf { var int n = 100; initial place L { n += 1; } }
+sfc Top {
+  var int n = START;
+  var bool done;
+  initial place A runs Leaf { n += 2; }
+  place B { entry { done = true; } }
+  A -> B when Go();
+}
+)");
+  write_file(dir + "/go.csv", "tick, Go\n1, 0\n2, 0\n3, 1\n4, 0\n");
+  auto r = run_command(gfec_exe + " run " + dir + "/vars.sfc --chart Top --inputs " + dir + "/go.csv --html " + dir +
+                       "/run.html");
+  REQUIRE(r.exit_code == 0);
+  const nlohmann::json d = page_data(read_file(dir + "/run.html"));
+  // Ticks 1 and 2: A's action adds 2 to Top's n; tick 3: B is entered (done). Leaf's n (101,
+  // 102) never shows.
+  CHECK(d["vars"] == nlohmann::json::parse(R"([
+    {"type": "int", "name": "n", "init": "4", "values": [[0, "6"], [1, "8"]]},
+    {"type": "bool", "name": "done", "init": "false", "values": [[2, "true"]]}])"));
+  CHECK(d["vars_note"] == "");
+}
+
 TEST_CASE("gfec run --html: an unwritable page is an I/O error and nothing is written", "[viewer]") {
   std::string dir = scratch_dir("gfec_run_html_bad");
   auto r = run_command(gfec_exe + " run " + samples + "/cleanup.fsm --ticks 2 --html " + dir + "/missing/run.html");

@@ -88,13 +88,20 @@ async function openPage(file) {
 }
 
 /// What the page shows: the lit nodes of the chart, by name (each node's first text line; by the
-/// node's DOT id for `byId`, which the page keeps in `data-node`), and the tick in its readout.
+/// node's DOT id for `byId`, which the page keeps in `data-node`), and the frame: the page shows
+/// tick k + 1 for frame k, as logs count ticks from 1 (checked here against the frame it is at,
+/// in both readouts).
 async function shown(page, byId = false) {
-  return page.evaluate((byId) => ({
+  const s = await page.evaluate((byId) => ({
     lit: [...document.querySelectorAll('#chart g.node.lit')]
       .map((g) => (byId ? g.dataset.node : g.querySelector('text').textContent.trim())).sort(),
-    tick: parseInt(document.getElementById('r-tick').textContent, 10),
+    shownTick: parseInt(document.getElementById('r-tick').textContent, 10),
+    readout: document.getElementById('readout').textContent,
+    frame: window.gfecViewer.frame(),
   }), byId);
+  assert.equal(s.shownTick, s.frame + 1, 'the info pane shows frame k as tick k + 1');
+  assert.ok(s.readout.startsWith(`tick ${s.frame + 1} `), `the readout "${s.readout}" shows tick ${s.frame + 1}`);
+  return { lit: s.lit, tick: s.frame };
 }
 
 /// Moves with the scrubber, as a person dragging it would.
@@ -231,6 +238,126 @@ test('interpreter run page (gfec run --html)', async () => {
     const calls = await page.$$eval('#calls li', (l) => l.map((li) => li.textContent.trim()));
     assert.ok(calls.includes('call Left_IR_Black() = true'), calls.join('\n'));
     assert.ok(calls.some((c) => c.startsWith('fire T0')), calls.join('\n'));
+    // The page numbers that tick as the log does: the log's first `fire T0` is in its `tick 11`.
+    const log = execFileSync(gfec, ['run', chart, '--inputs', inputs], { encoding: 'utf8' });
+    const fireTick = Number(/tick (\d+)\n(?:  .*\n)*?  fire T0/.exec(log)[1]);
+    assert.equal(fireTick, 11);
+    assert.equal(await page.$eval('#r-tick', (e) => e.textContent), `${fireTick} / 60`);
+    const title = await page.$$eval('#events li', (l) => l.find((li) => li.textContent.includes('fire T0')).title);
+    assert.equal(title, `tick ${fireTick} (fire)`);
+  } finally {
+    await page.close();
+  }
+});
+
+test('interpreter run page: each var\'s value at every tick, as the log sets it', async () => {
+  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'gfec-viewer-vars-'));
+  const chart = path.join(dir, 'count.sfc'), inputs = path.join(dir, 'count.csv');
+  fs.writeFileSync(chart, `interface R { bool Go(); bool Back(); void Lamp(bool on); }
+sfc Count {
+  var int n = 2;
+  var bool seen;
+  var float speed = 0.5;
+  initial place A { n += 1; }
+  place B { entry { seen = true; speed = speed * 2.0; } Lamp(seen); }
+  A -> B when Go();
+  B -> A when Back();
+}
+`);
+  const go = [0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0];
+  fs.writeFileSync(inputs, 'tick, Go, Back\n' + go.map((g, i) => `${i + 1}, ${g ? 'true' : 'false'}, ${i === 6 ? 'true' : 'false'}`).join('\n') + '\n');
+  const html = path.join(out, 'gfec_run_vars.html');
+  execFileSync(gfec, ['run', chart, '--inputs', inputs, '--html', html], { stdio: ['ignore', 'ignore', 'inherit'] });
+  // The expected values, from the log: `set NAME = VALUE` lines, each holding until the next.
+  const log = execFileSync(gfec, ['run', chart, '--inputs', inputs], { encoding: 'utf8' });
+  const now = { n: '2', seen: 'false', speed: '0.5' }, expected = [];
+  for (const line of log.split('\n')) {
+    if (/^tick \d+$/.test(line)) { if (expected.length || line !== 'tick 1') expected.push({ ...now }); continue; }
+    const m = /^\s+set (\w+) = (.*)$/.exec(line);
+    if (m) now[m[1]] = m[2];
+  }
+  expected.push({ ...now });
+  assert.equal(expected.length, go.length);
+  assert.equal(expected[0].n, '3');
+  assert.ok(expected.some((v) => v.seen === 'true' && v.speed === '1'), JSON.stringify(expected));
+  const { page, errors } = await openPage(html);
+  try {
+    for (let k = 0; k < go.length; ++k) {
+      await scrubTo(page, k);
+      const vars = await page.$$eval('#vars li', (l) => l.map((li) => [li.textContent, li.className]));
+      const e = expected[k], before = k > 0 ? expected[k - 1] : { n: '2', seen: 'false', speed: '0.5' };
+      assert.deepEqual(vars.map((v) => v[0]), [`int n = ${e.n}`, `bool seen = ${e.seen}`, `float speed = ${e.speed}`], `tick ${k + 1}`);
+      assert.deepEqual(vars.map((v) => v[1] === 'changed'), ['n', 'seen', 'speed'].map((v) => e[v] !== before[v]), `tick ${k + 1}: changed`);
+    }
+    // The picture's note declares them too.
+    const note = await page.$eval('#chart g.node[data-node="vars"]', (g) => [...g.querySelectorAll('text')].map((t) => t.textContent));
+    assert.deepEqual(note, ['vars', 'int n = 2', 'bool seen = false', 'float speed = 0.5']);
+    assert.deepEqual(errors, []);
+  } finally {
+    await page.close();
+    fs.rmSync(dir, { recursive: true, force: true });
+  }
+});
+
+test('the chart is readable at 1400x900 and zooms: buttons, Ctrl+wheel, keys, fit', async () => {
+  const chart = path.join(src, 'samples/mission.fsm');
+  const inputs = path.join(out, 'mission_zoom_inputs.csv');
+  missionInputs(inputs);
+  const html = path.join(out, 'gfec_run_zoom.html');
+  execFileSync(gfec, ['run', chart, '--inputs', inputs, '--html', html], { stdio: ['ignore', 'ignore', 'inherit'] });
+  const { page, errors } = await openPage(html);
+  // The smallest size on screen, in px, of the places' and states' text (Graphviz's 11 pt).
+  const textPx = () => page.$$eval('#chart g.node text', (l) => Math.min(...l
+    .filter((t) => t.getAttribute('font-size') === '11.00')
+    .map((t) => t.getScreenCTM().a * 11)));
+  const zoom = () => page.evaluate(() => window.gfecViewer.zoom());
+  try {
+    const first = await zoom();
+    assert.ok(await textPx() >= 11.9, `the first scale draws 11 pt text at ${await textPx()} px (at least 12)`);
+    assert.equal(await page.$eval('#z-level', (e) => e.textContent), `${Math.round(first * 100)}%`);
+    await page.click('#z-in');
+    assert.ok(Math.abs(await zoom() - first * 1.25) < 1e-9, 'zoom in: 1.25 times');
+    const bigger = await textPx();
+    assert.ok(bigger > first * 11 * 4 / 3 * 1.2, `zoomed in, text is ${bigger} px`);
+    await page.click('#z-out');
+    await page.click('#z-out');
+    assert.ok(Math.abs(await zoom() - first / 1.25) < 1e-9, 'zoom out twice');
+    await page.click('#z-fit');
+    assert.equal(await zoom(), first, 'fit goes back to the first scale');
+    // Ctrl+wheel over the picture zooms in; a plain wheel does not zoom.
+    const box = await page.$eval('#chart', (c) => { const r = c.getBoundingClientRect(); return [r.x + r.width / 2, r.y + r.height / 2]; });
+    await page.mouse.move(box[0], box[1]);
+    await page.mouse.wheel({ deltaY: 100 });
+    assert.equal(await zoom(), first, 'a plain wheel scrolls, it does not zoom');
+    await page.keyboard.down('Control');
+    await page.mouse.wheel({ deltaY: -100 });
+    await page.keyboard.up('Control');
+    assert.ok(await zoom() > first, 'Ctrl+wheel up zooms in');
+    await page.keyboard.press('0');
+    assert.equal(await zoom(), first, 'key 0: fit');
+    await page.keyboard.press('+');
+    assert.ok(await zoom() > first, 'key +');
+    await page.keyboard.press('0');
+    // At the first scale the mission's picture is larger than its pane: a lit state out of sight
+    // (the clean-up's Z3, low in its frame) is scrolled into view when its tick is shown.
+    await page.evaluate(() => { document.getElementById('chart').scrollTop = 0; });
+    const z3 = await page.evaluate(() => {
+      const d = window.gfecViewer.data, row = d.rows.findIndex((r) => r.node === 's1_p3');
+      return d.active.find(([, rows]) => rows.includes(row))[0];
+    });
+    const inSight = () => page.evaluate(() => {
+      const pane = document.getElementById('chart').getBoundingClientRect();
+      const r = document.querySelector('#chart g.node[data-node="s1_p3"]').getBoundingClientRect();
+      return r.right > pane.left && r.left < pane.right && r.bottom > pane.top && r.top < pane.bottom;
+    });
+    assert.equal(await inSight(), false, 'Z3 is out of sight before its tick');
+    await page.evaluate((k) => window.gfecViewer.seek(k), z3);
+    assert.equal(await inSight(), true, 'Z3, lit, is scrolled into sight');
+    // The picture scrolls in its pane rather than overflowing the page.
+    const pane = await page.$eval('#chart', (c) => [c.scrollWidth > c.clientWidth || c.scrollHeight > c.clientHeight, getComputedStyle(c).overflow]);
+    assert.equal(pane[1], 'auto');
+    await page.screenshot({ path: path.join(out, 'viewer-gfec_run_zoom.png') });
+    assert.deepEqual(errors, []);
   } finally {
     await page.close();
   }
@@ -393,7 +520,7 @@ test('team page (three robots fetch one cup): each robot\'s states lit as its tr
       const active = await page.$eval('#r-active', (e) => e.textContent);
       assert.equal(active, perRobot.map((rows, i) => `robot ${i}: ${rows[k].join(', ') || '\u2013'}`).join('\n'));
     }
-    // The calls of tick 0: robot 0 drives to the cup (shown while robot 0 is selected).
+    // The calls of tick 1 (frame 0): robot 0 drives to the cup (shown while robot 0 is selected).
     await page.select('#robot-select', '0');
     await scrubTo(page, 0);
     const calls = await page.$$eval('#calls li', (l) => l.map((li) => li.textContent.trim()));

@@ -1,14 +1,18 @@
 //! chart.js: The chart's picture: gfec's SVG placed in #chart, `nodeOf` from a node id (the rows' `node`,
-//! support/chart_nodes.h) to its <g class="node">; a note where there is no picture.
+//! support/chart_nodes.h) to its <g class="node">; a note where there is no picture. The zoom: the
+//! picture is drawn at a scale (1 = Graphviz's own size, 1 pt = 4/3 px) and scrolls in its pane.
   // ---- the chart's diagram ----
   var chartBox = document.getElementById('chart');
+  var natural = null;        // the picture's own size in points, or null for none
   var nodeOf = {};           // node id (the dot name, in <title>) -> <g class="node">
   if (D.svg) {
     var text = D.svg.slice(D.svg.indexOf('<svg'));
     chartBox.innerHTML = text;
     var svg = chartBox.querySelector('svg');
+    // The picture's own size in points (Graphviz writes width="726pt"): the zoom scales it.
+    natural = { w: parseFloat(svg.getAttribute('width')) || 400, h: parseFloat(svg.getAttribute('height')) || 300 };
     svg.removeAttribute('width'); svg.removeAttribute('height');
-    svg.setAttribute('preserveAspectRatio', 'xMidYMid meet');
+    svg.setAttribute('preserveAspectRatio', 'xMidYMin meet');
     var nodes = svg.querySelectorAll('g.node');
     for (var n = 0; n < nodes.length; ++n) {
       var t = nodes[n].querySelector('title');
@@ -22,3 +26,42 @@
     chartBox.firstChild.textContent = D.svg_note || 'no diagram';
   }
 
+
+  // ---- zoom ----
+  // The first scale fits the picture to the pane's width, but never draws the places' text
+  // (Graphviz's 11 pt) smaller than MIN_TEXT_PX nor larger than 1.5 times its own size: a large
+  // chart then scrolls instead of shrinking to unreadable text. The buttons, Ctrl+wheel and the
+  // keys + - 0 change it; "fit" (0) goes back to the first scale.
+  var MIN_TEXT_PX = 12, PT = 4 / 3, zoom = 1, fitZoom = 1;
+  var zoomLabel = document.getElementById('z-level');
+  function fitScale() {
+    if (!natural) return 1;
+    var byWidth = (chartBox.clientWidth - 16) / (natural.w * PT);
+    return Math.min(1.5, Math.max(MIN_TEXT_PX / (11 * PT), byWidth));
+  }
+  function setZoom(z, keepCentre) {
+    if (!natural) return;
+    z = Math.max(0.1, Math.min(8, z));
+    var cx = (chartBox.scrollLeft + chartBox.clientWidth / 2) / (zoom || 1);
+    var cy = (chartBox.scrollTop + chartBox.clientHeight / 2) / (zoom || 1);
+    zoom = z;
+    svg.style.width = (natural.w * PT * z) + 'px';
+    svg.style.height = (natural.h * PT * z) + 'px';
+    if (keepCentre) {
+      chartBox.scrollLeft = cx * z - chartBox.clientWidth / 2;
+      chartBox.scrollTop = cy * z - chartBox.clientHeight / 2;
+    }
+    zoomLabel.textContent = Math.round(z * 100) + '%';
+  }
+  function resetZoom() { fitZoom = fitScale(); setZoom(fitZoom, false); chartBox.scrollLeft = 0; chartBox.scrollTop = 0; }
+  if (D.svg) {
+    resetZoom();
+    document.getElementById('z-in').addEventListener('click', function () { setZoom(zoom * 1.25, true); });
+    document.getElementById('z-out').addEventListener('click', function () { setZoom(zoom / 1.25, true); });
+    document.getElementById('z-fit').addEventListener('click', resetZoom);
+    chartBox.addEventListener('wheel', function (ev) {
+      if (!ev.ctrlKey && !ev.metaKey) return;  // a plain wheel scrolls the picture
+      ev.preventDefault();
+      setZoom(zoom * (ev.deltaY < 0 ? 1.1 : 1 / 1.1), true);
+    }, { passive: false });
+  } else document.getElementById('zoom').style.display = 'none';

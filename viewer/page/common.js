@@ -7,6 +7,9 @@
   var rows = D.rows || [];
   var events = D.events || [];
   var frame = 0, playing = false, clock = 0, lastStamp = null;
+  // The tick a frame shows, as logs and tests count them: frame 0 is tick 1, the first tick
+  // after _init (which runs no statement of the chart and is no frame).
+  function tickOf(k) { return k + 1; }
 
   // ---- change lists: [[tick, value], ...], a value holds until the next entry ----
   function valueAt(list, k, fallback) {

@@ -40,6 +40,9 @@
     else if (ev.key === 'ArrowLeft') { pause(); seek(frame - (ev.shiftKey ? big : 1)); }
     else if (ev.key === 'Home') { pause(); seek(0); }
     else if (ev.key === 'End') { pause(); seek(frames - 1); }
+    else if (D.svg && (ev.key === '+' || ev.key === '=')) setZoom(zoom * 1.25, true);
+    else if (D.svg && ev.key === '-') setZoom(zoom / 1.25, true);
+    else if (D.svg && ev.key === '0') resetZoom();
     else return;
     ev.preventDefault();
   });
@@ -48,6 +51,12 @@
   window.gfecViewer = {
     data: D,
     frame: function () { return frame; },
+    // The tick number the page shows for the current frame (logs count from 1: frame + 1).
+    tick: function () { return tickOf(frame); },
+    // The picture's scale (1 = Graphviz's own size) and the first, fit-to-width one.
+    zoom: function () { return zoom; },
+    fitZoom: function () { return fitZoom; },
+    setZoom: function (z) { setZoom(z, true); },
     // Several robots: whose states the picture lights ('all' or a robot's number, as a string).
     robot: shownRobot,
     showRobot: function (v) { if (robotSelect) { robotSelect.value = String(v); render(); } },

@@ -42,6 +42,35 @@
     lastLit = [];
   }
   function rowState(r) { return rows[r].name.slice(rows[r].name.indexOf('/') + 1); }
+  // The chart's vars after this tick (as the picture's note declares them), a changed one marked.
+  function showVars() {
+    var ul = document.getElementById('vars');
+    ul.textContent = '';
+    (D.vars || []).forEach(function (v) {
+      var now = valueAt(v.values, frame, v.init), before = frame > 0 ? valueAt(v.values, frame - 1, v.init) : v.init;
+      var li = document.createElement('li');
+      li.textContent = v.type + ' ' + v.name + ' = ' + now;
+      li.setAttribute('data-var', v.name);
+      if (now !== before) { li.className = 'changed'; li.title = 'was ' + before; }
+      ul.appendChild(li);
+    });
+    if (D.vars_note) {
+      var note = document.createElement('li');
+      note.className = 'note';
+      note.textContent = D.vars_note;
+      ul.appendChild(note);
+    }
+  }
+  // A zoomed picture scrolls: when the last lit node - the innermost instance's place, rows being
+  // the chart's then its instances' depth first - is out of sight, it is brought to the pane's
+  // centre; a picture the reader scrolled stays put while that node shows.
+  function keepLitInView() {
+    if (!lastLit.length || !natural) return;
+    var pane = chartBox.getBoundingClientRect(), r = lastLit[lastLit.length - 1].getBoundingClientRect();
+    if (r.right > pane.left && r.left < pane.right && r.bottom > pane.top && r.top < pane.bottom) return;
+    chartBox.scrollLeft += (r.left + r.width / 2) - (pane.left + pane.width / 2);
+    chartBox.scrollTop += (r.top + r.height / 2) - (pane.top + pane.height / 2);
+  }
   function render() {
     var act = activeRows(frame);
     unlight();
@@ -50,6 +79,7 @@
       var g = nodeOf[rows[r].node];
       if (g) { g.classList.add('lit'); lastLit.push(g); }
     });
+    keepLitInView();
     // Several robots: one line per robot, "robot 0: Grab".
     var stateOf = {};
     if (team) act.forEach(function (r) { (stateOf[rows[r].robot] = stateOf[rows[r].robot] || []).push(rowState(r)); });
@@ -66,12 +96,13 @@
         if (frame - f[0] < 1 / period && nodeOf[f[1]]) { lastFired = nodeOf[f[1]]; lastFired.classList.add('fired'); }
       } else document.getElementById('r-fired').textContent = '\u2013';
     } else document.getElementById('r-fired').textContent = '\u2013';
-    document.getElementById('r-tick').textContent = frame + ' / ' + (frames - 1);
+    document.getElementById('r-tick').textContent = tickOf(frame) + ' / ' + tickOf(frames - 1);
     document.getElementById('r-time').textContent = fmt(frame * period, 3) + ' s';
     document.getElementById('r-status').textContent = valueAt(D.status || [], frame, 'running') + (team
       ? '\n' + bots.map(function (b) { return b.name + ': ' + valueAt(b.status, frame, 'running'); }).join('\n') : '');
-    document.getElementById('readout').textContent = 'tick ' + frame + '   t = ' + fmt(frame * period, 2) + ' s';
+    document.getElementById('readout').textContent = 'tick ' + tickOf(frame) + '   t = ' + fmt(frame * period, 2) + ' s';
     scrub.value = String(frame);
+    showVars();
     var ul = document.getElementById('calls');
     ul.textContent = '';
     if (D.calls_note) {

@@ -4,12 +4,14 @@
     document.getElementById('r-fired').style.display = 'none';
   }
 
+  if (!(D.vars || []).length && !D.vars_note) document.getElementById('vars-block').style.display = 'none';
+
   // ---- events list ----
   var evList = document.getElementById('events'), evItems = [];
   events.forEach(function (e) {
     var li = document.createElement('li');
     li.textContent = fmt(e[0] * period, 2) + ' s  ' + e[2];
-    li.title = 'tick ' + e[0] + ' (' + e[1] + ')';
+    li.title = 'tick ' + tickOf(e[0]) + ' (' + e[1] + ')';
     li.addEventListener('click', function () { pause(); seek(e[0]); });
     evList.appendChild(li);
     evItems.push(li);
