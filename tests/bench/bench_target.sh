@@ -107,7 +107,9 @@ while IFS='|' read -r name _double cc flags link support run _ram _flash; do
     [[ $chart != hand ]] || state=$((state - bss))
     "$here/target_stubs.sh" "$dir/engine.h" "$name_c" > "$dir/stubs.c"
     # shellcheck disable=SC2086
-    (cd "$dir" && $cc $flags -DCHART="$name_c" -DSTATE_BYTES="$state" -DTICKS=$ticks -o prog.elf \
+    header=()
+    [[ $chart == hand ]] || header=(-I. -DENGINE_HEADER='"engine.h"')
+    (cd "$dir" && $cc $flags -DCHART="$name_c" -DSTATE_BYTES="$state" -DTICKS=$ticks "${header[@]}" -o prog.elf \
       "$here/target_main.c" machine.c stubs.c "$root/tests/targets/$support" $link)
     per_tick=$(measure "$dir")
     printf "%-12s %-22s %7d %6d %7s %10s %s\n" "$name" "$label" $((text + data)) $((data + bss + state)) "($state)" \
