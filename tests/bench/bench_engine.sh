@@ -26,7 +26,10 @@ source "$here/bench_measure.sh"
 # One machine: engine source(s) in $work/$id/, chart name $2. Prints "<Ir/tick> <ns/tick> <sum>".
 measure() {
   local dir=$1 chart=$2
-  "$cc" -O2 -std=c99 -DCHART="$chart" -I"$dir" "$here/engine_main.c" "$here/stubs.c" "$dir"/*.c -o "$dir/bench"
+  local header
+  header=$(engine_header "$dir")
+  # shellcheck disable=SC2086 # empty for a hand-written machine
+  "$cc" -O2 -std=c99 -DCHART="$chart" $header -I"$dir" "$here/engine_main.c" "$here/stubs.c" "$dir"/*.c -o "$dir/bench"
   read -r ns sum <<< "$("$dir/bench" "$ticks_time")"
   echo "$(tick_instructions "$dir/bench" "$chart" "$ticks_count") $ns $sum"
 }

@@ -30,7 +30,18 @@ tick_instructions() {
     echo "-"
     return
   fi
+  # A generated engine's run function carries the chart's fingerprint: X_run_regenerate_if_undefined_<hash>.
   valgrind --tool=callgrind --collect-atstart=no --toggle-collect="${chart}_run" \
+    --toggle-collect="${chart}_run_regenerate_if_undefined_*" \
     --callgrind-out-file="$work/callgrind.out" "$program" "$ticks" > /dev/null 2>&1
   awk -v n="$ticks" '/^(summary|totals):/ { printf "%.0f\n", $2 / n; exit }' "$work/callgrind.out"
+}
+
+# engine_header DIR: the flag with which engine_main.c includes the generated header in DIR (its
+# functions' names carry the chart's fingerprint, which only the header knows); nothing for a
+# hand-written machine, which has none.
+engine_header() {
+  local h
+  h=$(grep -l 'regenerate_if_undefined' "$1"/*.h 2> /dev/null | head -n 1 || true)
+  [ -z "$h" ] || printf -- '-DENGINE_HEADER="%s"\n' "$(basename "$h")"
 }

@@ -44,7 +44,10 @@ CHART
 # measure DIR CHART: "<instructions per tick> <checksum>"
 measure() {
   local dir=$1 chart=$2
-  "$cc" -O2 -std=c99 -DCHART="$chart" -I"$dir" "$here/engine_main.c" "$here/stubs.c" "$dir"/*.c -o "$dir/bench"
+  local header
+  header=$(engine_header "$dir")
+  # shellcheck disable=SC2086 # empty for a hand-written machine
+  "$cc" -O2 -std=c99 -DCHART="$chart" $header -I"$dir" "$here/engine_main.c" "$here/stubs.c" "$dir"/*.c -o "$dir/bench"
   local sum
   sum=$("$dir/bench" "$ticks" | awk '{ print $2 }')
   echo "$(tick_instructions "$dir/bench" "$chart" "$ticks") $sum"

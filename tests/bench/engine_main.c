@@ -11,9 +11,15 @@
 #define GLUE(a, b) a##b
 #define NAME(a, b) GLUE(a, b)
 
+/* A generated engine's header (its functions' names carry the chart's fingerprint, which only
+   the header knows); a hand-written machine has none. */
+#ifdef ENGINE_HEADER
+#include ENGINE_HEADER
+#else
 typedef struct CHART CHART;
 void NAME(CHART, _init)(CHART *m);
 void NAME(CHART, _run)(CHART *m);
+#endif
 
 extern unsigned long bench_tick, bench_sum;
 
