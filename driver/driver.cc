@@ -147,6 +147,8 @@ int compile(const Options &o, DiagnosticReport &report, std::ostream &out) {
                                          : EngineForm::Auto;
   emit.backend = own;
   auto backend = info.make();
+  if (o.output.empty())
+    if (std::string fixed = backend->default_output(c.model, emit); !fixed.empty()) emit.output_path = fixed;
   if (o.output == "-") {
     // "-o -": the one output on stdout, for pipes (gfec --emit=dot x.sfc -o - | dot -Tpng).
     if (!info.single_file()) {
