@@ -21,6 +21,7 @@ struct ConstSource {
   enum class State { Pending, Busy, Done, Failed };
   const ast::ValueDecl *decl = nullptr;
   State state = State::Pending;
+  bool used = false;  ///< an expression, a plan argument or another constant reads it (-Wunused-const)
 };
 
 struct Context {

@@ -56,6 +56,7 @@ std::optional<model::Expr> lower_duration(const ast::Expr &e, ExprScope &s) {
 }
 
 std::optional<model::Expr> const_ref(model::ConstId index, SourceRange at, ExprScope &s) {
+  s.cx.consts[index].used = true;
   if (!fold_const(s.cx, index)) return std::nullopt;
   if (s.chart) s.chart->consts.insert(index);
   model::Expr e = make(K::Const, s.cx.model.consts[index].type, at);
