@@ -59,6 +59,7 @@ model::Model validate(ast::Program &program, const SourceManager &sources, Diagn
   if (!program.files.empty() && program.files.front()) model.main_file = program.files.front()->id;
   validation::Context cx(program, sources, diag, model);
   cx.keep_tree = options.keep_tree;
+  cx.declaring_files = options.declaring_files;
 
   validation::collect_symbols(cx);
   collect_verbatims(cx);
