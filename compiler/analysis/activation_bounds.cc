@@ -100,6 +100,11 @@ model::ActivationBound exact_activation_bound(const model::Chart &c) {
 void record_activation_bounds(model::Model &model) {
   for (auto &c : model.charts) {
     c.activation = prove_activation_bound(c);
+    // The initial marking is a reachable state: a bound it reaches already is exact, and the
+    // exploration (a fixed budget, but a chart-sized cost per state) is skipped.
+    std::uint64_t initial = 0;
+    for (const auto &p : c.places) initial += p.initial ? 1 : 0;
+    if (c.activation.bounded && c.activation.place <= 1 && c.activation.total <= initial) continue;
     // The weights' bound can exceed what any reachable state holds (a fork's two branches weigh
     // two, though no place holds more than one); --analyze reports what the states hold, so the
     // engine uses that number too when the exploration saw every state: one bound, in the
