@@ -185,6 +185,9 @@ struct Transition {
   bool named = false;  ///< `name: inputs -> outputs`; `name` is empty otherwise
   bool parenthesised_inputs = false;
   bool parenthesised_outputs = false;
+  /// `A -> C else [when c];`: the chart says the transitions declared before it that share an
+  /// input place come first, as declaration order has it anyway (docs/language.md §5.1).
+  bool otherwise = false;
   std::uint32_t input_count = 0;  ///< places[0, input_count) are the inputs, the rest the outputs
   SourceRange range;
   Name name;  ///< `named` rather than an std::optional: members ordered to pack (see Place)

@@ -89,6 +89,9 @@ public:
   virtual ~Backend() = default;
   /// Writes the outputs for the chart, plan or toolbox `options` names.
   virtual void emit(const model::Model &model, const EmitOptions &options, OutputSink &sink) const = 0;
+  /// The output's name without -o when the back end's contract fixes it (a toolbox skeleton's
+  /// header is the one the plans' wiring includes); empty: the input's name with the extension.
+  virtual std::string default_output(const model::Model &, const EmitOptions &) const { return {}; }
 };
 
 /// The outputs in memory, in the order the back end opened them: for tests and for uses inside

@@ -200,6 +200,7 @@ struct Transition {
   SourceRange range;
   SourceRange name_range;  ///< the user's name, or the whole transition when it has none
   bool named = false;      ///< the user gave the name
+  bool otherwise = false;  ///< written `else`: the earlier transitions sharing an input come first by intent
 };
 
 /// A structural bound on a chart's activation, proven once after validation by the analyses

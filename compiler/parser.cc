@@ -488,7 +488,7 @@ Block Parser::block() {
   return b;
 }
 
-//G transition: [ 'transition' ] [ IDENT ':' ] place_list '->' place_list [ 'when' expr ] ';'
+//G transition: [ 'transition' ] [ IDENT ':' ] place_list '->' place_list [ 'else' ] [ 'when' expr ] ';'
 Transition Parser::transition() {
   std::uint32_t begin = here();
   Transition t;
@@ -519,6 +519,7 @@ Transition Parser::transition() {
               fmt::format("a transition to several places is a fork: write them in brackets, '{} -> ({}, ...)'",
                           inputs.front().text, outputs.front().text));
   t.set_places(inputs, outputs);
+  t.otherwise = accept(Tok::KwElse);
   if (accept(Tok::KwWhen)) t.condition = expr();
   expect(Tok::Semi, "after the transition");
   t.range = from(begin);

@@ -6,6 +6,10 @@
 #include "diagnostics.h"
 #include "model.h"
 
+#include <functional>
+#include <string>
+#include <vector>
+
 namespace gfec {
 
 namespace scenario {
@@ -18,6 +22,10 @@ struct ValidateOptions {
   /// transition places are released as soon as they are lowered, so a large chart never holds
   /// both forms (docs/performance.md).
   bool keep_tree = false;
+  /// The interface files, not imported, that declare a function of this name, as the import
+  /// would name them: a note on "unknown function" says which to import. The caller, which has
+  /// the file system and the search folders, answers (pipeline/missing_import.h); null: no note.
+  std::function<std::vector<std::string>(const std::string &function)> declaring_files;
 };
 
 /// Checks `program` and builds its model. The model is complete only when no error was reported.

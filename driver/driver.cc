@@ -7,6 +7,7 @@
 #include "diagnostic_report.h"
 #include "escape.h"
 #include "external_tool.h"
+#include "file_system.h"
 #include "input_languages.h"
 #include "pipeline/compilation.h"
 #include "safe_output.h"
@@ -16,6 +17,7 @@
 
 #include <algorithm>
 #include <exception>
+#include <filesystem>
 #include <ostream>
 
 namespace gfec {
@@ -147,6 +149,8 @@ int compile(const Options &o, DiagnosticReport &report, std::ostream &out) {
                                          : EngineForm::Auto;
   emit.backend = own;
   auto backend = info.make();
+  if (o.output.empty())
+    if (std::string fixed = backend->default_output(c.model, emit); !fixed.empty()) emit.output_path = fixed;
   if (o.output == "-") {
     // "-o -": the one output on stdout, for pipes (gfec --emit=dot x.sfc -o - | dot -Tpng).
     if (!info.single_file()) {
@@ -200,13 +204,47 @@ int compile(const Options &o, DiagnosticReport &report, std::ostream &out) {
   return kExitOk;
 }
 
-/// --check: every file is validated and every diagnostic reported; the worst exit code wins.
+/// Whether --check takes `path`, found in a folder it was given: a main file of an input
+/// language, or chart text of any kind (an interface or toolbox checks on its own). An
+/// extension several languages share is read and asked (input_language_of), as the loader does.
+bool checked_in_folder(const FileSystem &fs, const std::string &path) {
+  for (const InputLanguage *language : input_languages()) {
+    const FileType *type = language->file_type(path);
+    if (!type || !(type->main || language->chart_text)) continue;
+    if (!language->sniff) return true;
+    FileText text = fs.read(path);
+    if (text && &input_language_of(path, *text) == language) return true;
+  }
+  return false;
+}
+
+/// --check: every file is validated and every diagnostic reported; the worst exit code wins. A
+/// folder stands for the files below it that checked_in_folder takes, in path order, as far as
+/// the file system layer's walk goes (its WalkLimits: hidden folders are skipped).
 int check_all(const Options &o, DiagnosticReport &report, std::ostream &out) {
   int worst = kExitOk;
+  RealFileSystem fs;
   for (const auto &input : o.inputs) {
-    Options one = o;
-    one.inputs = {input};
-    worst = std::max(worst, compile(one, report, out));
+    std::vector<std::string> files{input};
+    std::error_code ec;
+    if (std::filesystem::is_directory(input, ec)) {
+      files.clear();
+      for (const std::string &path : fs.walk(input))
+        if (checked_in_folder(fs, path)) files.push_back(path);
+      if (files.empty()) {
+        report.tool_error(input,
+                          fmt::format("folder '{}' holds no file of a language gfec reads (docs/cli.md lists "
+                                      "their extensions)",
+                                      input),
+                          false);
+        worst = std::max<int>(worst, kExitUsageOrIo);
+      }
+    }
+    for (const std::string &file : files) {
+      Options one = o;
+      one.inputs = {file};
+      worst = std::max(worst, compile(one, report, out));
+    }
   }
   return worst;
 }

@@ -105,6 +105,7 @@ void chart(CodeWriter &w, const model::Model &m, model::ChartId index) {
     std::string line = fsm ? "" : "transition ";
     if (t.named) line += t.name + ": ";
     line += places(c, t.inputs) + " -> " + places(c, t.outputs);
+    if (t.otherwise) line += " else";
     if (t.condition) line += " when " + chart_text::expr(m, index, *t.condition);
     w.line("{};", line);
   }

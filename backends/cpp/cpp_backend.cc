@@ -1,6 +1,7 @@
 #include "cpp_backend.h"
 
 #include "cpp_emit.h"
+#include "cpp_names.h"
 #include "cpp_plan_context.h"
 
 #include <ostream>
@@ -41,6 +42,9 @@ public:
     if (source == options.output_path) source += ".cpp";  // -o x.cpp must not name both files
     cpp_backend::emit_skeleton_header(model, box, options, sink.open(options.output_path));
     cpp_backend::emit_skeleton_source(model, box, options, base_name(source), sink.open(source));
+  }
+  std::string default_output(const model::Model &model, const EmitOptions &options) const override {
+    return cpp_backend::toolbox_header(chosen_toolbox(model, options));
   }
 };
 

@@ -1,5 +1,6 @@
 #include "analysis/activation_bounds.h"
 
+#include "analysis/sfc_states.h"
 #include "id_groups.h"
 
 #include <algorithm>
@@ -79,8 +80,44 @@ model::ActivationBound prove_activation_bound(const model::Chart &c) {
   return b;
 }
 
+model::ActivationBound exact_activation_bound(const model::Chart &c) {
+  model::ActivationBound b;
+  if (c.kind != model::Chart::Kind::Sfc) return b;
+  const StateSpace space = explore(c);
+  if (!space.exact()) return b;
+  for (const Marking &m : space.states) {
+    std::uint64_t total = 0;
+    for (std::uint32_t k : m) {
+      b.place = std::max(b.place, k);
+      total += k;
+    }
+    b.total = std::max(b.total, total);
+  }
+  b.bounded = true;
+  return b;
+}
+
 void record_activation_bounds(model::Model &model) {
-  for (auto &c : model.charts) c.activation = prove_activation_bound(c);
+  for (auto &c : model.charts) {
+    c.activation = prove_activation_bound(c);
+    // The initial marking is a reachable state: a bound it reaches already is exact, and the
+    // exploration (a fixed budget, but a chart-sized cost per state) is skipped.
+    std::uint64_t initial = 0;
+    for (const auto &p : c.places) initial += p.initial ? 1 : 0;
+    if (c.activation.bounded && c.activation.place <= 1 && c.activation.total <= initial) continue;
+    // The weights' bound can exceed what any reachable state holds (a fork's two branches weigh
+    // two, though no place holds more than one); --analyze reports what the states hold, so the
+    // engine uses that number too when the exploration saw every state: one bound, in the
+    // header and in --analyze alike (issue 41).
+    if (model::ActivationBound exact = exact_activation_bound(c); exact.bounded)
+      if (!c.activation.bounded || exact.place < c.activation.place || exact.total < c.activation.total) {
+        if (c.activation.bounded) {
+          exact.place = std::min(exact.place, c.activation.place);
+          exact.total = std::min(exact.total, c.activation.total);
+        }
+        c.activation = exact;
+      }
+  }
 }
 
 }  // namespace gfec::analysis

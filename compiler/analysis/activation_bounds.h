@@ -19,7 +19,14 @@ namespace gfec::analysis {
 /// chart) or when a place's bound would not fit 32 bits. Sound whatever it answers.
 model::ActivationBound prove_activation_bound(const model::Chart &chart);
 
-/// Records prove_activation_bound on every chart of `model` (an fsm is bounded by 1).
+/// The largest activation of a place, and of all places together, over every reachable state
+/// of an sfc, when the bounded exploration of sfc_states.h (its default limits, as --analyze's)
+/// saw them all without acceleration; not bounded otherwise.
+model::ActivationBound exact_activation_bound(const model::Chart &chart);
+
+/// Records on every chart of `model` the tighter of prove_activation_bound and
+/// exact_activation_bound (an fsm is bounded by 1), so that the C engine's header and
+/// --analyze name one number.
 void record_activation_bounds(model::Model &model);
 
 }  // namespace gfec::analysis

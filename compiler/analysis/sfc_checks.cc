@@ -216,10 +216,13 @@ void check_sfc(const model::Model & /*m*/, const Chart &c, Diagnostics &diag, co
   }
   check_forks(c, diag);
 
-  // The summary for --analyze.
-  bool safe = std::all_of(most.begin(), most.end(), [](std::uint32_t k) { return k <= 1; });
+  // The summary for --analyze. Its bound is the C engine's (model::Chart::activation, the one
+  // the header's comment names) whenever that is proven; the states explored here reach it
+  // exactly when they are all of them (activation_bounds.h).
   std::uint32_t bound = 0;
   for (auto k : most) bound = std::max(bound, k);
+  if (c.activation.bounded) bound = c.activation.place;
+  bool safe = bound <= 1;
   summary +=
       fmt::format("sfc {}: {}, {}\n", c.name, counted(np, "place", "places"), counted(nt, "transition", "transitions"));
   summary +=

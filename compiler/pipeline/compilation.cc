@@ -1,6 +1,7 @@
 #include "pipeline/compilation.h"
 
 #include "analysis/activation_bounds.h"
+#include "pipeline/missing_import.h"
 #include "analysis/analysis.h"
 #include "roots.h"
 #include "scenario/scenario.h"
@@ -99,6 +100,8 @@ bool Compilation::front_end(const std::string &path, const FileSystem &fs, scena
   }
   ValidateOptions validation;
   validation.keep_tree = options.keep_syntax_tree;
+  MissingImportFinder missing_import(fs, path, options.include_dirs);
+  validation.declaring_files = [&missing_import](const std::string &function) { return missing_import(function); };
   scenario::Suite unkept;  // validate checks the tests either way; only gfec test keeps them
   model = validate(loaded.program, sources, diag, tests ? *tests : unkept, validation);
   // The model holds all the back ends need: the syntax tree goes before they run, so a large

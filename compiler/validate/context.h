@@ -7,6 +7,7 @@
 #include "model.h"
 #include "validate/names.h"
 
+#include <functional>
 #include <set>
 #include <string>
 #include <vector>
@@ -21,6 +22,7 @@ struct ConstSource {
   enum class State { Pending, Busy, Done, Failed };
   const ast::ValueDecl *decl = nullptr;
   State state = State::Pending;
+  bool used = false;  ///< an expression, a plan argument or another constant reads it (-Wunused-const)
 };
 
 struct Context {
@@ -30,6 +32,8 @@ struct Context {
   /// Not const: a chart's bodies are released once lowered, unless keep_tree (validate.h).
   ast::Program &program;
   bool keep_tree = false;
+  /// ValidateOptions::declaring_files: for the note on an unknown function.
+  std::function<std::vector<std::string>(const std::string &)> declaring_files;
   const SourceManager &sources;
   Diagnostics &diag;
   model::Model &model;

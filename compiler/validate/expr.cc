@@ -56,6 +56,7 @@ std::optional<model::Expr> lower_duration(const ast::Expr &e, ExprScope &s) {
 }
 
 std::optional<model::Expr> const_ref(model::ConstId index, SourceRange at, ExprScope &s) {
+  s.cx.consts[index].used = true;
   if (!fold_const(s.cx, index)) return std::nullopt;
   if (s.chart) s.chart->consts.insert(index);
   model::Expr e = make(K::Const, s.cx.model.consts[index].type, at);
@@ -499,11 +500,12 @@ unsigned long to_ticks(double ms, double period_ms) {
   return static_cast<unsigned long>(ticks);
 }
 
-void report_unknown(Diagnostics &diag, std::set<std::string> &seen, const ast::Name &name, const char *what,
-                    const std::vector<const Symbol *> &candidates) {
-  if (!seen.insert(fmt::format("{} {}", what, name.text)).second) return;
+Diagnostic *report_unknown(Diagnostics &diag, std::set<std::string> &seen, const ast::Name &name, const char *what,
+                           const std::vector<const Symbol *> &candidates) {
+  if (!seen.insert(fmt::format("{} {}", what, name.text)).second) return nullptr;
   auto &d = diag.error(name.range, ErrorKind::UnknownName, fmt::format("unknown {} '{}'", what, name.text));
   suggest(d, name.text, candidates);
+  return &d;
 }
 
 model::PlaceId resolve_place(ChartScope &chart, Context &cx, const ast::Name &name) {
@@ -595,7 +597,11 @@ std::optional<model::Expr> lower_call(const ast::Expr &e, ExprScope &s, bool sta
   }
   const Symbol *sym = s.cx.c_names.find(name.text);
   if (!sym) {
-    report_unknown(s.cx.diag, seen(s), name, "function", s.cx.c_names.of({Sym::Function}));
+    Diagnostic *d = report_unknown(s.cx.diag, seen(s), name, "function", s.cx.c_names.of({Sym::Function}));
+    // A beginner's usual cause: the chart does not import the interface that declares it.
+    if (d && s.cx.declaring_files)
+      for (const std::string &file : s.cx.declaring_files(std::string(name.text)))
+        d->note(fmt::format("'{}' declares '{}': add 'import \"{}\";'", file, name.text, file));
     return std::nullopt;
   }
   if (sym->kind != Sym::Function) {

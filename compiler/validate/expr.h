@@ -61,9 +61,9 @@ std::vector<model::Stmt> lower_block(ast::Block &b, ExprScope &s);
 model::PlaceId resolve_place(ChartScope &chart, Context &cx, const ast::Name &name);
 
 /// Reports `unknown <what> 'name'` with a did-you-mean, unless `seen` (the names reported in
-/// this chart, plan or at file level) says it was already.
-void report_unknown(Diagnostics &diag, std::set<std::string> &seen, const ast::Name &name, const char *what,
-                    const std::vector<const Symbol *> &candidates);
+/// this chart, plan or at file level) says it was already. Returns the error, or null when it was.
+Diagnostic *report_unknown(Diagnostics &diag, std::set<std::string> &seen, const ast::Name &name, const char *what,
+                           const std::vector<const Symbol *> &candidates);
 
 /// One more than timers can count (they saturate at UINT32_MAX): every duration that long or
 /// longer is this many ticks, never reached.

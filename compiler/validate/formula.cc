@@ -50,6 +50,7 @@ std::optional<model::Expr> lower_name(const ast::Expr &e, Context &cx, PlanScope
     return x;
   }
   if (const Symbol *sym = cx.c_names.find(name.text); sym && sym->kind == Sym::Const) {
+    cx.consts[sym->id<model::ConstId>()].used = true;
     const model::Expr *value = fold_const(cx, sym->id<model::ConstId>());
     if (!value) return std::nullopt;
     model::Expr x = *value;

@@ -6,6 +6,8 @@
 #include "scenario/validate_tests.h"
 #include "validate/families.h"
 
+#include <fmt/format.h>
+
 namespace gfec {
 
 namespace {
@@ -23,6 +25,26 @@ void collect_verbatims(validation::Context &cx) {
   }
 }
 
+/// A constant of the main file that nothing reads (-Wunused-const): one of a chart, or one at
+/// file level when the file declares a chart or plan. An interface's or toolbox's constants are
+/// there for the files importing it, so a file declaring only those is not warned about. Not
+/// after errors.
+void warn_unused_consts(validation::Context &cx) {
+  const ast::File *main = cx.program.files.empty() ? nullptr : cx.program.files.front().get();
+  // After an error a constant may be unread because its use was refused (`N()` of a constant):
+  // the warning would only repeat the error.
+  if (!main || cx.diag.has_errors()) return;
+  const bool compiled = !main->charts.empty() || !main->plans.empty() || !main->tests.empty();
+  for (model::ConstId k : cx.model.consts.ids()) {
+    const model::Const &c = cx.model.consts[k];
+    const validation::ConstSource &source = cx.consts[k];
+    if (source.used || source.state == validation::ConstSource::State::Failed) continue;
+    if (c.range.file != cx.model.main_file || (!c.chart && !compiled)) continue;
+    cx.diag.warning(Warning::UnusedConst, source.decl ? source.decl->name.range : c.range,
+                    fmt::format("constant '{}' is never used", c.name));
+  }
+}
+
 }  // namespace
 
 model::Model validate(ast::Program &program, const SourceManager &sources, Diagnostics &diag) {
@@ -37,6 +59,7 @@ model::Model validate(ast::Program &program, const SourceManager &sources, Diagn
   if (!program.files.empty() && program.files.front()) model.main_file = program.files.front()->id;
   validation::Context cx(program, sources, diag, model);
   cx.keep_tree = options.keep_tree;
+  cx.declaring_files = options.declaring_files;
 
   validation::collect_symbols(cx);
   collect_verbatims(cx);
@@ -47,6 +70,7 @@ model::Model validate(ast::Program &program, const SourceManager &sources, Diagn
   validation::check_plan_recursion(cx);
   validation::check_shared_config(cx);
   validation::validate_tests(cx, tests);
+  warn_unused_consts(cx);
   return model;
 }
 

@@ -179,6 +179,22 @@ void declare_names(Context &cx, ChartScope &s) {
   }
 }
 
+/// An `else` transition comes after another that leaves one of its places (§5): otherwise it
+/// states an order that nothing follows. One pass with a mark per place, linear in the chart.
+void check_else(Context &cx, ChartScope &s) {
+  IdMap<model::PlaceId, bool> left(s.out.places.size());
+  for (const model::Transition &t : s.out.transitions) {
+    bool follows = false;
+    for (model::PlaceId p : t.inputs) follows = follows || left[p];
+    if (t.otherwise && !follows && !t.inputs.empty())
+      cx.diag.error(t.name_range, ErrorKind::ElseTransition,
+                    fmt::format("'else' on transition '{}', but no transition declared before it leaves {}", t.name,
+                                t.inputs.size() == 1 ? fmt::format("'{}'", s.out.places[t.inputs[0]].name)
+                                                     : std::string("any of its input places")));
+    for (model::PlaceId p : t.inputs) left[p] = true;
+  }
+}
+
 /// Names the transitions: the user's name, or T<position> (§5) unless that name is taken; and
 /// resolves their places.
 void name_transitions(Context &cx, ChartScope &s) {
@@ -187,6 +203,7 @@ void name_transitions(Context &cx, ChartScope &s) {
     const ast::Transition &t = s.ast.transitions[i];
     model::Transition out;
     out.named = t.named;
+    out.otherwise = t.otherwise;
     out.name = out.named ? t.name.text : fmt::format("T{}", i);
     out.range = t.range;
     out.name_range = out.named ? t.name.range : t.range;
@@ -206,6 +223,7 @@ void name_transitions(Context &cx, ChartScope &s) {
     else resolve_sfc_places(cx, s, i);
     if (!cx.keep_tree) s.ast.transitions[i].release_places();
   }
+  check_else(cx, s);
 }
 
 void lower_values(Context &cx, ChartScope &s) {

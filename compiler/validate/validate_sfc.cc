@@ -124,7 +124,8 @@ void warn_unreachable(Context &cx, ChartScope &s) {
   }
   // Conflicts (§5.1): declaration order decides; worth a look when a condition can vary. A
   // transition is reported once, against the first earlier live transition that shares an input
-  // (and is not, like it, constant). Per place, the first such transition of either kind is kept,
+  // (and is not, like it, constant); never a transition written `else`, whose chart says the
+  // order is intended (check_else saw that an earlier transition shares its input). Per place, the first such transition of either kind is kept,
   // so the check is linear in the chart rather than quadratic in its transitions.
   const std::size_t none = c.transitions.size();
   IdMap<model::PlaceId, std::size_t> first_any(c.places.size(), none), first_varying(c.places.size(), none);
@@ -133,7 +134,7 @@ void warn_unreachable(Context &cx, ChartScope &s) {
     const auto &second = c.transitions[j];
     std::size_t i = none;
     for (model::PlaceId p : second.inputs) i = std::min(i, constant[j] ? first_varying[p] : first_any[p]);
-    if (i != none) {
+    if (i != none && !second.otherwise) {
       const auto &first = c.transitions[i];
       auto shared =
           std::find_first_of(second.inputs.begin(), second.inputs.end(), first.inputs.begin(), first.inputs.end());

@@ -116,4 +116,28 @@ printf 'sfc One { initial place A; place B; A -> B; }\n' > one.sfc
 "$gfec" --analyze one.sfc >"$out" 2>"$err" || fail "--analyze one.sfc: $(cat "$err")"
 grep -q "sfc One: 2 places, 1 transition$" "$out" || fail "plural: $(cat "$out")"
 grep -q "never active: 0 places; never firing: 0 transitions$" "$out" || fail "plural: $(cat "$out")"
+# A folder: every file below it of a language gfec reads, sub-folders too, hidden ones not,
+# other files left alone; the worst exit code wins.
+mkdir -p "$work/tree/sub/deeper" "$work/tree/.hidden"
+printf 'interface Bot { bool Ready(); void Go(); }\n' > "$work/tree/bot.iface"
+printf 'import "bot.iface";\nsfc Top { initial place A { Go(); } place B; A -> B when Ready(); B -> A; }\n' > "$work/tree/top.sfc"
+printf 'import "../../bot.iface";\nsfc Deep { initial place A; A -> Gone; }\n' > "$work/tree/sub/deeper/deep.sfc"
+printf 'sfc Island { initial place A; place Lost; A -> A; }\n' > "$work/tree/sub/island.fsm"
+printf 'sfc Hidden { initial place A; A -> Nowhere; }\n' > "$work/tree/.hidden/hidden.sfc"
+printf 'not a chart\n' > "$work/tree/sub/notes.txt"
+set +e
+(cd "$work" && "$gfec" --check tree/) >"$out" 2>"$err"; code=$?
+set -e
+[ $code -eq 1 ] || fail "folder: exit $code: $(cat "$err")"
+grep -q "^tree/sub/deeper/deep.sfc:2:.*error: .*Gone" "$err" || fail "folder: deep.sfc not checked: $(cat "$err")"
+grep -q "^tree/sub/island.fsm:1:.*warning: .*Lost" "$err" || fail "folder: island.fsm not checked: $(cat "$err")"
+grep -q "hidden\|notes" "$err" && fail "folder: a hidden folder or another file checked: $(cat "$err")"
+(cd "$work/tree" && "$gfec" --check . sub/../top.sfc 2>/dev/null) && fail "folder '.' passed despite errors below it"
+(cd "$work/tree" && "$gfec" --check top.sfc bot.iface) || fail "the good files of the folder fail"
+mkdir "$work/nothing"
+set +e
+"$gfec" --check "$work/nothing" 2>"$err"; code=$?
+set -e
+[ $code -eq 2 ] || fail "an empty folder: exit $code"
+grep -q "folder '.*nothing' holds no file" "$err" || fail "an empty folder: $(cat "$err")"
 echo "gfec --check: all checks passed"

@@ -85,7 +85,9 @@ TEST_CASE("c layout: a ring with one token is sequential and 1-bounded", "[c_bac
 }
 
 TEST_CASE("c layout: a fork is bounded by its weights; counters are a byte", "[c_backend][layout]") {
-  // Start -> (A0..A99); each Ai -> Bi -> Ai. Weights: Start 100, the rest 1: bound 100.
+  // Start -> (A0..A99); each Ai -> Bi -> Ai. Weights: Start 100, the rest 1: total 100. The
+  // transitions have no condition, so the states explored are all of them: no place holds more
+  // than 1 (analysis/activation_bounds.h keeps the tighter bound).
   ChartBuilder b("Fork", model::Chart::Kind::Sfc);
   b.place("Start", true);
   std::vector<std::string> branches;
@@ -107,7 +109,7 @@ TEST_CASE("c layout: a fork is bounded by its weights; counters are a byte", "[c
   Layout l = layout_of(b, EngineForm::Scalable);
   CHECK(l.form == Layout::Form::Sparse);
   CHECK(l.activation.bounded);
-  CHECK(l.activation.place == 100);
+  CHECK(l.activation.place == 1);
   CHECK(l.activation.total == 100);
   CHECK(l.counter_bits == 8);
   CHECK_FALSE(l.saturate);
@@ -169,7 +171,8 @@ TEST_CASE("c layout: a chart that pumps activation is unbounded; counters satura
 }
 
 TEST_CASE("c layout: joins and forks in balance give a bound of the initial weight", "[c_backend][layout]") {
-  // A -> (B, C); (B, C) -> A: weights A 2, B 1, C 1; two initial places A and D (weight 1).
+  // A -> (B, C); (B, C) -> A: weights A 2, B 1, C 1; two initial places A and D (weight 1):
+  // total 3. Each place holds at most 1 in every reachable state, the tighter bound kept.
   ChartBuilder b("Balance", model::Chart::Kind::Sfc);
   for (const char *p : {"A", "B", "C"}) b.place(p, std::string(p) == "A");
   b.place("D", true);
@@ -178,7 +181,7 @@ TEST_CASE("c layout: joins and forks in balance give a bound of the initial weig
   Layout l = layout_of(b, EngineForm::Scalable);
   CHECK(l.activation.bounded);
   CHECK(l.activation.total == 3);
-  CHECK(l.activation.place == 3);
+  CHECK(l.activation.place == 1);
 }
 
 TEST_CASE("c layout: owners follow declaration order, or candidates are needed", "[c_backend][layout]") {

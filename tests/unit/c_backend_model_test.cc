@@ -236,7 +236,7 @@ TEST_CASE("c backend: readable counters are a byte when bounded, 32 bits on ever
   join.transition({"C"}, {"A", "B"});
   auto bounded = emit_c(join.model(), "join.c", false);
   CHECK(contains(bounded[1].contents,
-                 "uint8_t av[Join_PLACE_COUNT]; /* activation counter of each place (never above 2) */"));
+                 "uint8_t av[Join_PLACE_COUNT]; /* activation counter of each place (never above 1) */"));
 }
 
 // docs/misra.md: the shape of the engines that MISRA C:2012 asks for, as a reviewer reads it.

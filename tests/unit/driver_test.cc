@@ -41,8 +41,9 @@ TEST_CASE("gfec: usage errors exit 2") {
   auto missing = run_command(gfec_exe + " does-not-exist.sfc");
   CHECK(missing.exit_code == 2);
   CHECK(missing.out == "gfec: error: cannot read 'does-not-exist.sfc': no such file\n");
-  // Only regular files are read: a folder or a device is refused with the reason, never waited on.
-  auto folder = run_command(gfec_exe + " --check /tmp");
+  // Only regular files are read: a folder or a device is refused with the reason, never waited on
+  // (--check takes a folder for the files below it: tests/cli/check.sh).
+  auto folder = run_command(gfec_exe + " /tmp");
   CHECK(folder.exit_code == 2);
   CHECK(folder.out == "gfec: error: cannot read '/tmp': it is a folder\n");
   auto device = run_command(gfec_exe + " run /dev/zero");

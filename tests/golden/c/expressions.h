@@ -3,11 +3,11 @@
 #define EXPRESSIONS_H
 
 /* This header belongs with the expressions.c generated with it. Code compiled against another version
-   of it does not link ("undefined reference to Expressions_init_regenerate_if_undefined_580bc0b6"):
+   of it does not link ("undefined reference to Expressions_init_regenerate_if_undefined_32a254a9"):
    regenerate both files from the chart and rebuild. */
-#define EXPRESSIONS_H_LAYOUT_580bc0b6 1
-#define Expressions_init Expressions_init_regenerate_if_undefined_580bc0b6
-#define Expressions_run Expressions_run_regenerate_if_undefined_580bc0b6
+#define EXPRESSIONS_H_LAYOUT_32a254a9 1
+#define Expressions_init Expressions_init_regenerate_if_undefined_32a254a9
+#define Expressions_run Expressions_run_regenerate_if_undefined_32a254a9
 
 #include <stdbool.h>
 #include <stdint.h>
@@ -45,7 +45,7 @@ typedef enum {
    engines may run side by side); only the functions below use its fields. */
 typedef struct Expressions Expressions;
 struct Expressions {
-    uint8_t av[Expressions_PLACE_COUNT]; /* activation counter of each place (never above 2) */
+    uint8_t av[Expressions_PLACE_COUNT]; /* activation counter of each place (never above 1) */
     uint32_t timer_Run;                  /* ticks Run has been active: elapsed(Run) */
     bool started;                        /* the first tick has run */
     int32_t n;                           /* var n */

@@ -3,11 +3,11 @@
 #define EXPRESSIONS_SCALABLE_H
 
 /* This header belongs with the expressions_scalable.c generated with it. Code compiled against another version
-   of it does not link ("undefined reference to Expressions_init_regenerate_if_undefined_8ecc4ffb"):
+   of it does not link ("undefined reference to Expressions_init_regenerate_if_undefined_009023b8"):
    regenerate both files from the chart and rebuild. */
-#define EXPRESSIONS_SCALABLE_H_LAYOUT_8ecc4ffb 1
-#define Expressions_init Expressions_init_regenerate_if_undefined_8ecc4ffb
-#define Expressions_run Expressions_run_regenerate_if_undefined_8ecc4ffb
+#define EXPRESSIONS_SCALABLE_H_LAYOUT_009023b8 1
+#define Expressions_init Expressions_init_regenerate_if_undefined_009023b8
+#define Expressions_run Expressions_run_regenerate_if_undefined_009023b8
 
 #include <stdbool.h>
 #include <stdint.h>
@@ -45,7 +45,7 @@ typedef enum {
    engines may run side by side); only the functions below use its fields. */
 typedef struct Expressions Expressions;
 struct Expressions {
-    uint8_t av[Expressions_PLACE_COUNT]; /* activation counter of each place (never above 2) */
+    uint8_t av[Expressions_PLACE_COUNT]; /* activation counter of each place (never above 1) */
     uint32_t active[2];                  /* the active places: bits, and summary levels of them */
     uint32_t timer_Run;                  /* ticks Run has been active: elapsed(Run) */
     bool started;                        /* the first tick has run */

@@ -3,11 +3,11 @@
 #define LINE_FOLLOWER_H
 
 /* This header belongs with the line_follower.c generated with it. Code compiled against another version
-   of it does not link ("undefined reference to LineFollower_init_regenerate_if_undefined_9bedea51"):
+   of it does not link ("undefined reference to LineFollower_init_regenerate_if_undefined_fc713f6e"):
    regenerate both files from the chart and rebuild. */
-#define LINE_FOLLOWER_H_LAYOUT_9bedea51 1
-#define LineFollower_init LineFollower_init_regenerate_if_undefined_9bedea51
-#define LineFollower_run LineFollower_run_regenerate_if_undefined_9bedea51
+#define LINE_FOLLOWER_H_LAYOUT_fc713f6e 1
+#define LineFollower_init LineFollower_init_regenerate_if_undefined_fc713f6e
+#define LineFollower_run LineFollower_run_regenerate_if_undefined_fc713f6e
 
 #include <stdbool.h>
 #include <stdint.h>
@@ -38,7 +38,7 @@ typedef enum {
    engines may run side by side); only the functions below use its fields. */
 typedef struct LineFollower LineFollower;
 struct LineFollower {
-    uint8_t av[LineFollower_PLACE_COUNT]; /* activation counter of each place (never above 2) */
+    uint8_t av[LineFollower_PLACE_COUNT]; /* activation counter of each place (never above 1) */
 };
 
 /* Sets the initial marking; calls no code of the chart. */

@@ -3,11 +3,11 @@
 #define LINE_FOLLOWER_PLAIN_H
 
 /* This header belongs with the line_follower_plain.c generated with it. Code compiled against another version
-   of it does not link ("undefined reference to LineFollower_init_regenerate_if_undefined_c4de282e"):
+   of it does not link ("undefined reference to LineFollower_init_regenerate_if_undefined_86ecaec5"):
    regenerate both files from the chart and rebuild. */
-#define LINE_FOLLOWER_PLAIN_H_LAYOUT_c4de282e 1
-#define LineFollower_init LineFollower_init_regenerate_if_undefined_c4de282e
-#define LineFollower_run LineFollower_run_regenerate_if_undefined_c4de282e
+#define LINE_FOLLOWER_PLAIN_H_LAYOUT_86ecaec5 1
+#define LineFollower_init LineFollower_init_regenerate_if_undefined_86ecaec5
+#define LineFollower_run LineFollower_run_regenerate_if_undefined_86ecaec5
 
 #include <stdbool.h>
 #include <stdint.h>
@@ -38,7 +38,7 @@ typedef enum {
    engines may run side by side); only the functions below use its fields. */
 typedef struct LineFollower LineFollower;
 struct LineFollower {
-    uint8_t av[LineFollower_PLACE_COUNT]; /* activation counter of each place (never above 2) */
+    uint8_t av[LineFollower_PLACE_COUNT]; /* activation counter of each place (never above 1) */
 };
 
 /* Sets the initial marking; calls no code of the chart. */

@@ -3,11 +3,11 @@
 #define LINE_FOLLOWER_SCALABLE_H
 
 /* This header belongs with the line_follower_scalable.c generated with it. Code compiled against another version
-   of it does not link ("undefined reference to LineFollower_init_regenerate_if_undefined_ac36428c"):
+   of it does not link ("undefined reference to LineFollower_init_regenerate_if_undefined_9b7059bd"):
    regenerate both files from the chart and rebuild. */
-#define LINE_FOLLOWER_SCALABLE_H_LAYOUT_ac36428c 1
-#define LineFollower_init LineFollower_init_regenerate_if_undefined_ac36428c
-#define LineFollower_run LineFollower_run_regenerate_if_undefined_ac36428c
+#define LINE_FOLLOWER_SCALABLE_H_LAYOUT_9b7059bd 1
+#define LineFollower_init LineFollower_init_regenerate_if_undefined_9b7059bd
+#define LineFollower_run LineFollower_run_regenerate_if_undefined_9b7059bd
 
 #include <stdbool.h>
 #include <stdint.h>
@@ -38,7 +38,7 @@ typedef enum {
    engines may run side by side); only the functions below use its fields. */
 typedef struct LineFollower LineFollower;
 struct LineFollower {
-    uint8_t av[LineFollower_PLACE_COUNT]; /* activation counter of each place (never above 2) */
+    uint8_t av[LineFollower_PLACE_COUNT]; /* activation counter of each place (never above 1) */
     uint32_t active[2];                   /* the active places: bits, and summary levels of them */
 };
 

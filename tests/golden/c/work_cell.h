@@ -3,11 +3,11 @@
 #define WORK_CELL_H
 
 /* This header belongs with the work_cell.c generated with it. Code compiled against another version
-   of it does not link ("undefined reference to WorkCell_init_regenerate_if_undefined_4a608bc1"):
+   of it does not link ("undefined reference to WorkCell_init_regenerate_if_undefined_0cd8bc96"):
    regenerate both files from the chart and rebuild. */
-#define WORK_CELL_H_LAYOUT_4a608bc1 1
-#define WorkCell_init WorkCell_init_regenerate_if_undefined_4a608bc1
-#define WorkCell_run WorkCell_run_regenerate_if_undefined_4a608bc1
+#define WORK_CELL_H_LAYOUT_0cd8bc96 1
+#define WorkCell_init WorkCell_init_regenerate_if_undefined_0cd8bc96
+#define WorkCell_run WorkCell_run_regenerate_if_undefined_0cd8bc96
 
 #include <stdbool.h>
 #include <stdint.h>
@@ -51,7 +51,7 @@ typedef enum {
    engines may run side by side); only the functions below use its fields. */
 typedef struct WorkCell WorkCell;
 struct WorkCell {
-    uint8_t av[WorkCell_PLACE_COUNT]; /* activation counter of each place (never above 2) */
+    uint8_t av[WorkCell_PLACE_COUNT]; /* activation counter of each place (never above 1) */
     uint32_t timer_LeftArm;           /* ticks LeftArm has been active: elapsed(LeftArm) */
     uint32_t timer_RightArm;          /* ticks RightArm has been active: elapsed(RightArm) */
     bool started;                     /* the first tick has run */

@@ -3,11 +3,11 @@
 #define WORK_CELL_SCALABLE_H
 
 /* This header belongs with the work_cell_scalable.c generated with it. Code compiled against another version
-   of it does not link ("undefined reference to WorkCell_init_regenerate_if_undefined_f5b71ed9"):
+   of it does not link ("undefined reference to WorkCell_init_regenerate_if_undefined_340e7ed6"):
    regenerate both files from the chart and rebuild. */
-#define WORK_CELL_SCALABLE_H_LAYOUT_f5b71ed9 1
-#define WorkCell_init WorkCell_init_regenerate_if_undefined_f5b71ed9
-#define WorkCell_run WorkCell_run_regenerate_if_undefined_f5b71ed9
+#define WORK_CELL_SCALABLE_H_LAYOUT_340e7ed6 1
+#define WorkCell_init WorkCell_init_regenerate_if_undefined_340e7ed6
+#define WorkCell_run WorkCell_run_regenerate_if_undefined_340e7ed6
 
 #include <stdbool.h>
 #include <stdint.h>
@@ -51,7 +51,7 @@ typedef enum {
    engines may run side by side); only the functions below use its fields. */
 typedef struct WorkCell WorkCell;
 struct WorkCell {
-    uint8_t av[WorkCell_PLACE_COUNT]; /* activation counter of each place (never above 2) */
+    uint8_t av[WorkCell_PLACE_COUNT]; /* activation counter of each place (never above 1) */
     uint32_t active[2];               /* the active places: bits, and summary levels of them */
     uint32_t candidates[2];           /* the transitions to try in a tick (empty between ticks) */
     uint32_t timer_LeftArm;           /* ticks LeftArm has been active: elapsed(LeftArm) */
