@@ -370,5 +370,6 @@ int main(int argc, char **argv) {
     code = kExitError;
   }
   avr_terminate(run.avr);
+  free(script.events);
   return code;
 }
