@@ -258,10 +258,7 @@ public:
 
   static std::optional<bool> of(const EngineContext &c, const Expr &e) {
     const Expr &u = unbracketed(e);
-    const bool logic =
-        (u.kind == Expr::Kind::Binary && (u.binary_op == BinaryOp::And || u.binary_op == BinaryOp::Or)) ||
-        (u.kind == Expr::Kind::Unary && u.unary_op == UnaryOp::Not);
-    if (!logic || u.type != Type::Bool || has_call(u)) return std::nullopt;
+    if (!is_logic(u) || u.type != Type::Bool || has_call(u)) return std::nullopt;  // u is no Paren
     Tautology t(c);
     if (!t.collect(u)) return std::nullopt;
     const bool first = t.value(u, 0);

@@ -1,5 +1,6 @@
 #include "harness.h"
 #include "prepared.h"
+#include "scratch_io.h"
 
 #include "c_backend.h"
 #include "c_driver.h"
@@ -24,25 +25,6 @@ namespace gfec::diff {
 namespace fs = std::filesystem;
 
 namespace {
-
-void write(const std::string &path, const std::string &text) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out << text;
-}
-
-std::string read(const std::string &path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-/// Runs a shell command; its exit status (128+signal if killed, as the shell says).
-int shell(const std::string &command) {
-  int status = std::system(command.c_str());
-  if (status == -1) return 127;
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-}
 
 std::string printed(const Diagnostics &diag, const SourceManager &sources) {
   std::string out;

@@ -4,6 +4,7 @@
 // observable log byte for byte, whatever the target's C library can print.
 #include "harness.h"
 #include "prepared.h"
+#include "scratch_io.h"
 
 #include "c_harness.h"
 #include "file_system.h"
@@ -23,24 +24,6 @@ namespace {
 
 /// Stack and the C library's own data: what RAM needs besides .data and .bss.
 constexpr long kStackReserve = 256;
-
-void write(const std::string &path, const std::string &text) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out << text;
-}
-
-std::string read(const std::string &path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-int shell(const std::string &command) {
-  int status = std::system(command.c_str());
-  if (status == -1) return 127;
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-}
 
 /// Whether the program declares a double anywhere (an interface function, a constant, a var):
 /// where `double` is not binary64 its engine must refuse to compile.
