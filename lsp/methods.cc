@@ -14,6 +14,13 @@ const std::vector<Method> &methods() {
       {"textDocument/didChange", nullptr, h::did_change},
       {"textDocument/didClose", nullptr, h::did_close},
       {"textDocument/didSave", nullptr, h::did_save},
+      {"textDocument/hover", h::hover, nullptr, h::advertise_hover},
+      {"textDocument/definition", h::definition, nullptr, h::advertise_definition},
+      {"textDocument/references", h::references, nullptr, h::advertise_references},
+      {"textDocument/prepareRename", h::prepare_rename, nullptr, h::advertise_rename},
+      {"textDocument/rename", h::rename},
+      {"textDocument/documentSymbol", h::document_symbol, nullptr, h::advertise_document_symbol},
+      {"workspace/symbol", h::workspace_symbol, nullptr, h::advertise_workspace_symbol},
       // Answered before its request is read on (single-threaded): nothing left to cancel.
       {"$/cancelRequest", nullptr, h::ignore},
       {"$/setTrace", nullptr, h::ignore},

@@ -43,6 +43,19 @@ void did_close(Session &, const nlohmann::json &);
 void did_save(Session &, const nlohmann::json &);
 void advertise_text_sync(nlohmann::json &);
 void ignore(Session &, const nlohmann::json &);
+nlohmann::json hover(Session &, const nlohmann::json &);
+void advertise_hover(nlohmann::json &);
+nlohmann::json definition(Session &, const nlohmann::json &);
+void advertise_definition(nlohmann::json &);
+nlohmann::json references(Session &, const nlohmann::json &);
+void advertise_references(nlohmann::json &);
+nlohmann::json prepare_rename(Session &, const nlohmann::json &);
+nlohmann::json rename(Session &, const nlohmann::json &);
+void advertise_rename(nlohmann::json &);
+nlohmann::json document_symbol(Session &, const nlohmann::json &);
+void advertise_document_symbol(nlohmann::json &);
+nlohmann::json workspace_symbol(Session &, const nlohmann::json &);
+void advertise_workspace_symbol(nlohmann::json &);
 }  // namespace handlers
 
 }  // namespace gfec::lsp
