@@ -1,0 +1,122 @@
+#include "fmt_command.h"
+
+#include "commands.h"
+#include "diagnostic_report.h"
+#include "driver.h"
+#include "escape.h"
+#include "file_system.h"
+#include "format/format_source.h"
+#include "input_languages.h"
+#include "options.h"
+#include "safe_output.h"
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+#include <iterator>
+#include <sys/stat.h>
+
+namespace gfec {
+
+namespace {
+
+struct FmtOptions {
+  std::vector<std::string> files;
+  bool check = false;
+  Options report;  ///< -f...: how diagnostics are printed
+};
+
+/// What became of one file.
+enum class Outcome { Unchanged, Changed, Broken, IoError };
+
+/// Formats `text`, read from `path`; the canonical text, or nothing when it does not parse (the
+/// errors went to `report`).
+std::optional<std::string> formatted(const std::string &path, std::string text, DiagnosticReport &report,
+                                     const Options &o) {
+  SourceManager sources;
+  const InputLanguage &language = input_language_of(path, text);
+  FileId id = sources.add(path, std::move(text), language);
+  Diagnostics diag(o.warnings, o.error_limit);
+  std::optional<std::string> result = format_source(sources, id, diag);
+  report.add(path, diag, sources);
+  return result;
+}
+
+Outcome format_stdin(const FmtOptions &o, DiagnosticReport &report, std::ostream &out) {
+  std::string text{std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>()};
+  auto result = formatted("<stdin>", text, report, o.report);
+  if (!result) return Outcome::Broken;
+  if (o.check) {
+    if (*result == text) return Outcome::Unchanged;
+    out << "<stdin>\n";
+    return Outcome::Changed;
+  }
+  out << *result;
+  return *result == text ? Outcome::Unchanged : Outcome::Changed;
+}
+
+Outcome format_file(const std::string &path, const FmtOptions &o, DiagnosticReport &report, std::ostream &out) {
+  // The link would be replaced by a formatted copy, leaving the file it names as it was.
+  struct stat st {};
+  if (::lstat(path.c_str(), &st) == 0 && S_ISLNK(st.st_mode)) {
+    report.tool_error(
+        path, "not rewritten: '" + text::printable(path) + "' is a symbolic link; format the file it names", false);
+    return Outcome::IoError;
+  }
+  RealFileSystem fs;
+  FileText text = fs.read(path);
+  if (!text) {
+    report.tool_error(path, cannot_read(path, text.why), false);
+    return Outcome::IoError;
+  }
+  auto result = formatted(path, *text, report, o.report);
+  if (!result) return Outcome::Broken;
+  if (*result == *text) return Outcome::Unchanged;
+  if (o.check) {
+    out << text::printable(path) << "\n";
+    return Outcome::Changed;
+  }
+  if (std::string failed = safe_output::write_all({{path, *result}}, {}); !failed.empty()) {
+    report.tool_error(path, failed, false);
+    return Outcome::IoError;
+  }
+  return Outcome::Changed;
+}
+
+}  // namespace
+
+int fmt_command(int argc, const char *const *argv, std::ostream &out, std::ostream &err) {
+  FmtOptions o;
+  FrontEndFlags flags;
+  CLI::App app{"gfec fmt - lays out chart text (.sfc .fsm .plan .toolbox .iface .test) in its canonical form",
+               "gfec fmt"};
+  app.footer("Rewrites each FILE in place (a file already canonical is left untouched); '-' reads stdin\n"
+             "and writes the result to stdout. Comments are kept and the compiled chart does not change.\n"
+             "A file that does not parse is reported and left as it is.\n"
+             "Exit status: 0 done (--check: nothing to change), 1 a file does not parse or --check\n"
+             "found files to change, 2 usage or I/O error.\n" +
+             documentation_line("formatting.md"));
+  app.add_option("files", o.files, "Chart text files; '-' for stdin")->required();
+  app.add_flag("--check", o.check, "Write nothing: list the files that are not canonical, exit 1 if any");
+  app.add_option("-f", flags.f,
+                 "-fdiagnostics-format=text|json|sarif-stderr|sarif-file, -fmax-errors=N, -fdiagnostics-color=WHEN")
+      ->type_name("OPTION")
+      ->allow_extra_args(false);
+  if (auto code = parse_subcommand(app, argc, argv, out, err, "fmt")) return *code;
+  if (std::string why = flags.apply(o.report); !why.empty()) {
+    err << "gfec: error: " << text::printable(why) << "\nRun 'gfec fmt --help' for the options.\n";
+    return kExitUsageOrIo;
+  }
+  auto report = make_report(o.report, err);
+  bool broken = false, changed = false, io_error = false;
+  for (const std::string &path : o.files) {
+    Outcome r = path == "-" ? format_stdin(o, *report, out) : format_file(path, o, *report, out);
+    broken |= r == Outcome::Broken;
+    changed |= r == Outcome::Changed;
+    io_error |= r == Outcome::IoError;
+  }
+  int code = io_error ? kExitUsageOrIo : broken || (o.check && changed) ? kExitInputError : kExitOk;
+  return finish_report(*report, code, err);
+}
+
+}  // namespace gfec
