@@ -36,6 +36,7 @@ public:
       const Item &item = items[i];
       paragraph_ = paragraphs_[i];
       line_ = lines_[i];
+      column_ = columns_of_items_[i];
       std::uint32_t gap_from = i == 0 ? first_offset() : items[i - 1].range.end;
       int newlines = count_newlines(gap_from, item.range.begin);
       // A line comment ends its line even where a lone '\r' ended it in the original.
@@ -43,16 +44,16 @@ public:
       if (i == 0) {
         start_line(item);
       } else if (newlines > 0) {
-        out_ += '\n';
+        newline();
         // One blank line at most, and none just inside a block.
-        if (newlines > 1 && last_token_ != Tok::LBrace && item.kind != Tok::RBrace) out_ += '\n';
+        if (newlines > 1 && last_token_ != Tok::LBrace && item.kind != Tok::RBrace) newline();
         start_line(item);
       } else {
         space_before(item, gap_from);
       }
       write(item);
     }
-    if (!out_.empty()) out_ += '\n';
+    if (!out_.empty()) newline();
     return std::move(out_);
   }
 
@@ -77,14 +78,25 @@ private:
   }
 
   /// The column (0-based, in bytes) where `offset` stands on its line of the original text.
-  std::uint32_t original_column(std::uint32_t offset) const {
-    std::size_t nl = offset == 0 ? std::string_view::npos : text_.find_last_of("\r\n", offset - 1);
-    return offset - (nl == std::string_view::npos ? 0 : static_cast<std::uint32_t>(nl + 1));
+  /// Called in increasing order of offsets (index_columns), so a long line is scanned once.
+  std::uint32_t original_column(std::uint32_t offset) {
+    for (; scanned_ < offset; ++scanned_)
+      if (text_[scanned_] == '\n' || text_[scanned_] == '\r') line_begin_ = scanned_ + 1;
+    return offset - line_begin_;
   }
 
-  std::uint32_t column() const {
-    std::size_t nl = out_.rfind('\n');
-    return static_cast<std::uint32_t>(nl == std::string::npos ? out_.size() : out_.size() - nl - 1);
+  /// The column of the end of the output.
+  std::uint32_t column() const { return static_cast<std::uint32_t>(out_.size() - out_line_begin_); }
+
+  void append(std::string_view text) {
+    out_.append(text);
+    if (auto nl = text.rfind('\n'); nl != std::string_view::npos)
+      out_line_begin_ = out_.size() - (text.size() - nl - 1);
+  }
+
+  void newline() {
+    out_ += '\n';
+    out_line_begin_ = out_.size();
   }
 
   std::uint32_t block_indent() const { return blocks_.empty() ? 0 : blocks_.back().inner; }
@@ -100,8 +112,8 @@ private:
                      last_token_ != Tok::RBrace && last_token_ != Tok::Verbatim;
       if (carried) width += kContinuation;
     }
-    out_.append(width, ' ');
-    line_shift_ = static_cast<std::int64_t>(width) - original_column(item.range.begin);
+    append(std::string(width, ' '));
+    line_shift_ = static_cast<std::int64_t>(width) - column_;
     line_multiline_ = false;
     fresh_line_ = true;
   }
@@ -117,11 +129,11 @@ private:
     // wrote more.
     bool two = wide && ((last_token_ == Tok::Semi && !last_was_comment_) || item.comment());
     std::uint32_t at = column() + (two ? 2 : 1);
-    if (wide && !line_multiline_ && (item.comment() || lined_up(original_column(item.range.begin)))) {
-      std::int64_t aligned = original_column(item.range.begin) + line_shift_;
+    if (wide && !line_multiline_ && (item.comment() || lined_up(column_))) {
+      std::int64_t aligned = column_ + line_shift_;
       if (aligned > at) at = static_cast<std::uint32_t>(aligned);
     }
-    out_.append(at - column(), ' ');
+    append(std::string(at - column(), ' '));
   }
 
   /// The line and paragraph (lines between blank lines) of each item, the columns where items
@@ -137,10 +149,11 @@ private:
       paragraphs_.push_back(paragraph);
       lines_.push_back(line);
       if (line_columns_.size() <= line) line_columns_.resize(line + 1);
-      line_columns_[line].push_back(original_column(items[i].range.begin));
+      columns_of_items_.push_back(original_column(items[i].range.begin));
+      line_columns_[line].push_back(columns_of_items_.back());
       if (i > 0 && count_newlines(items[i - 1].range.end, items[i].range.begin) == 0 &&
           items[i].range.begin - items[i - 1].range.end >= 2)
-        ++columns_[{paragraph, original_column(items[i].range.begin)}];
+        ++columns_[{paragraph, columns_of_items_.back()}];
     }
   }
 
@@ -148,9 +161,9 @@ private:
   /// item of the line above or below, or with another item of its paragraph that follows extra
   /// spaces too. Other extra spaces are noise.
   bool lined_up(std::uint32_t col) const {
-    auto on = [&](std::uint32_t line) {
+    auto on = [&](std::uint32_t line) {  // a line's columns are in increasing order
       return line < line_columns_.size() &&
-             std::find(line_columns_[line].begin(), line_columns_[line].end(), col) != line_columns_[line].end();
+             std::binary_search(line_columns_[line].begin(), line_columns_[line].end(), col);
     };
     if ((line_ > 0 && on(line_ - 1)) || on(line_ + 1)) return true;
     auto found = columns_.find({paragraph_, col});
@@ -164,7 +177,7 @@ private:
       blocks_.back().hangs = false;
       if (!item.comment() && !fresh_line_) blocks_.back().inner = column();
     }
-    out_.append(text);
+    append(text);
     fresh_line_ = false;
     if (text.find('\n') != std::string_view::npos) line_multiline_ = true;
     last_was_comment_ = item.comment();
@@ -178,6 +191,9 @@ private:
 
   std::string_view text_;
   std::string out_;
+  std::size_t out_line_begin_ = 0;  ///< where the output's last line begins
+  std::uint32_t scanned_ = 0;       ///< original_column(): the text is scanned up to here
+  std::uint32_t line_begin_ = 0;    ///< and the line there begins here
   std::vector<Block> blocks_;
   std::vector<std::uint32_t> paragraphs_;  ///< per item: its paragraph in the original
   /// Per paragraph and column of the original: on how many lines an item begins there.
@@ -186,6 +202,8 @@ private:
   std::vector<std::vector<std::uint32_t>> line_columns_;  ///< per original line: where its items begin
   std::uint32_t paragraph_ = 0;                           ///< the paragraph of the item being laid out
   std::uint32_t line_ = 0;                                ///< its line
+  std::uint32_t column_ = 0;                              ///< and its column in the original
+  std::vector<std::uint32_t> columns_of_items_;           ///< per item: its column in the original
   Tok last_token_ = Tok::End;
   bool last_unary_ = false;
   bool last_was_comment_ = false;
