@@ -8,13 +8,19 @@
 #include "format/format_source.h"
 #include "input_languages.h"
 #include "options.h"
+#include "child_process.h"
 #include "safe_output.h"
 
 #include <CLI/CLI.hpp>
 
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <iterator>
 #include <sys/stat.h>
+#include <unistd.h>
 
 namespace gfec {
 
@@ -23,8 +29,61 @@ namespace {
 struct FmtOptions {
   std::vector<std::string> files;
   bool check = false;
-  Options report;  ///< -f...: how diagnostics are printed
+  bool diff = false;  ///< --diff: as --check, and print what would change
+  Options report;     ///< -f...: how diagnostics are printed
 };
+
+/// The differences between `before` and `after` as `diff -u` prints them, both sides labelled
+/// `name`; "" and `why` set when diff cannot run. (diff is part of every Debian system.)
+std::string unified_diff(const std::string &name, const std::string &before, const std::string &after,
+                         std::string &why) {
+  std::error_code ec;
+  std::filesystem::path tmp = std::filesystem::temp_directory_path(ec);  // $TMPDIR, else /tmp
+  std::string pattern = ((ec ? std::filesystem::path("/tmp") : tmp) / "gfec-fmt-XXXXXX").string();
+  const char *dir = ::mkdtemp(pattern.data());
+  if (!dir) {
+    why = std::string("cannot make a temporary folder for diff: ") + std::strerror(errno);
+    return {};
+  }
+  const std::string a = std::string(dir) + "/a", b = std::string(dir) + "/b", d = std::string(dir) + "/diff";
+  std::string result;
+  if (std::ofstream(a, std::ios::binary) << before && std::ofstream(b, std::ios::binary) << after) {
+    child_process::Spawn spawn;
+    spawn.argv = {"diff", "-u", "--label", name, "--label", name, a, b};
+    spawn.stdout_path = d;
+    spawn.time_limit = 60;
+    child_process::Result r = child_process::run(spawn);
+    if (r.how == child_process::Result::How::Exited && r.code <= 1) {
+      std::ifstream in(d, std::ios::binary);
+      result.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    } else {
+      why = "diff " + child_process::describe(r);
+    }
+  } else {
+    why = std::string("cannot write a temporary file for diff in ") + dir;
+  }
+  for (const std::string &f : {a, b, d}) ::unlink(f.c_str());
+  ::rmdir(dir);
+  return result;
+}
+
+/// What --check and --diff print for a file that would change; false when that failed
+/// (reported).
+bool show_change(const std::string &name, const std::string &before, const std::string &after, const FmtOptions &o,
+                 DiagnosticReport &report, std::ostream &out) {
+  if (!o.diff) {
+    out << text::printable(name) << "\n";
+    return true;
+  }
+  std::string why;
+  std::string diff = unified_diff(text::printable(name), before, after, why);
+  if (!why.empty()) {
+    report.tool_error(name, why, false);
+    return false;
+  }
+  out << diff;
+  return true;
+}
 
 /// What became of one file.
 enum class Outcome { Unchanged, Changed, Broken, IoError };
@@ -46,10 +105,9 @@ Outcome format_stdin(const FmtOptions &o, DiagnosticReport &report, std::ostream
   std::string text{std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>()};
   auto result = formatted("<stdin>", text, report, o.report);
   if (!result) return Outcome::Broken;
-  if (o.check) {
+  if (o.check || o.diff) {
     if (*result == text) return Outcome::Unchanged;
-    out << "<stdin>\n";
-    return Outcome::Changed;
+    return show_change("<stdin>", text, *result, o, report, out) ? Outcome::Changed : Outcome::IoError;
   }
   out << *result;
   return *result == text ? Outcome::Unchanged : Outcome::Changed;
@@ -72,10 +130,7 @@ Outcome format_file(const std::string &path, const FmtOptions &o, DiagnosticRepo
   auto result = formatted(path, *text, report, o.report);
   if (!result) return Outcome::Broken;
   if (*result == *text) return Outcome::Unchanged;
-  if (o.check) {
-    out << text::printable(path) << "\n";
-    return Outcome::Changed;
-  }
+  if (o.check || o.diff) return show_change(path, *text, *result, o, report, out) ? Outcome::Changed : Outcome::IoError;
   if (std::string failed = safe_output::write_all({{path, *result}}, {}); !failed.empty()) {
     report.tool_error(path, failed, false);
     return Outcome::IoError;
@@ -93,11 +148,12 @@ int fmt_command(int argc, const char *const *argv, std::ostream &out, std::ostre
   app.footer("Rewrites each FILE in place (a file already canonical is left untouched); '-' reads stdin\n"
              "and writes the result to stdout. Comments are kept and the compiled chart does not change.\n"
              "A file that does not parse is reported and left as it is.\n"
-             "Exit status: 0 done (--check: nothing to change), 1 a file does not parse or --check\n"
-             "found files to change, 2 usage or I/O error.\n" +
+             "Exit status: 0 done (--check, --diff: nothing to change), 1 a file does not parse or\n"
+             "--check or --diff found files to change, 2 usage or I/O error.\n" +
              documentation_line("formatting.md"));
   app.add_option("files", o.files, "Chart text files; '-' for stdin")->required();
   app.add_flag("--check", o.check, "Write nothing: list the files that are not canonical, exit 1 if any");
+  app.add_flag("--diff", o.diff, "Write nothing: print what would change as a unified diff, exit 1 if anything would");
   app.add_option("-f", flags.f,
                  "-fdiagnostics-format=text|json|sarif-stderr|sarif-file, -fmax-errors=N, -fdiagnostics-color=WHEN")
       ->type_name("OPTION")
@@ -115,7 +171,7 @@ int fmt_command(int argc, const char *const *argv, std::ostream &out, std::ostre
     changed |= r == Outcome::Changed;
     io_error |= r == Outcome::IoError;
   }
-  int code = io_error ? kExitUsageOrIo : broken || (o.check && changed) ? kExitInputError : kExitOk;
+  int code = io_error ? kExitUsageOrIo : broken || ((o.check || o.diff) && changed) ? kExitInputError : kExitOk;
   return finish_report(*report, code, err);
 }
 

@@ -26,6 +26,18 @@ set -e
 cmp -s "$work/ugly.sfc" "$work/want.sfc" && fail "--check rewrote the file"
 "$gfec" fmt --check "$work/canonical.sfc" || fail "--check on a canonical file failed"
 
+# --diff: what would change as a unified diff, exit 1, nothing written.
+set +e
+shown=$("$gfec" fmt --diff "$work/ugly.sfc" "$work/canonical.sfc")
+rc=$?
+set -e
+[[ $rc -eq 1 ]] || fail "--diff with a file to change exited $rc"
+grep -qx -- "--- $work/ugly.sfc" <<<"$shown" || fail "--diff printed no header: $shown"
+grep -qx -- "-initial place A{Go();}   // go" <<<"$shown" || fail "--diff lacks the old line: $shown"
+grep -qx -- "+  initial place A { Go(); }  // go" <<<"$shown" || fail "--diff lacks the new line: $shown"
+grep -q canonical <<<"$shown" && fail "--diff showed a canonical file"
+cmp -s "$work/ugly.sfc" "$work/want.sfc" && fail "--diff rewrote the file"
+
 # '-': stdin to stdout.
 "$gfec" fmt - < "$work/ugly.sfc" > "$work/out.sfc"
 cmp "$work/out.sfc" "$work/want.sfc" || fail "gfec fmt - printed other text"

@@ -52,7 +52,7 @@ _gfec() {
 
   if [[ ${COMP_WORDS[1]} == fmt && $COMP_CWORD -gt 1 && $cur != -f?* ]]; then
     if [[ $cur == -* ]]; then
-      COMPREPLY=($(compgen -W '--check -f --help' -- "$cur"))
+      COMPREPLY=($(compgen -W '--check --diff -f --help' -- "$cur"))
     else
       COMPREPLY=($(compgen -f -X '!*.@(sfc|fsm|plan|iface|toolbox|test)' -- "$cur")); compopt -o plusdirs 2>/dev/null
     fi
