@@ -39,7 +39,8 @@ public:
       column_ = columns_of_items_[i];
       std::uint32_t gap_from = i == 0 ? first_offset() : items[i - 1].range.end;
       int newlines = count_newlines(gap_from, item.range.begin);
-      // A line comment ends its line even where a lone '\r' ended it in the original.
+      // A line comment ends its line, whatever ended it in the original (count_newlines knows
+      // the lexer's line ends; this keeps the code after a comment out of it regardless).
       if (i > 0 && newlines == 0 && is_line_comment(items[i - 1])) newlines = 1;
       if (i == 0) {
         start_line(item);
@@ -196,7 +197,7 @@ private:
   std::uint32_t line_begin_ = 0;    ///< and the line there begins here
   std::vector<Block> blocks_;
   std::vector<std::uint32_t> paragraphs_;  ///< per item: its paragraph in the original
-  /// Per paragraph and column of the original: on how many lines an item begins there.
+  /// Per paragraph and column of the original: how many items that follow extra spaces begin there.
   std::map<std::pair<std::uint32_t, std::uint32_t>, int> columns_;
   std::vector<std::uint32_t> lines_;                      ///< per item: its line in the original
   std::vector<std::vector<std::uint32_t>> line_columns_;  ///< per original line: where its items begin
