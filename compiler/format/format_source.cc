@@ -173,6 +173,8 @@ private:
 
   void write(const Item &item) {
     std::string_view text = text_.substr(item.range.begin, item.range.end - item.range.begin);
+    // A line comment runs to the end of its line, spaces the author left at the end included.
+    if (is_line_comment(item)) text = text.substr(0, text.find_last_not_of(" \t\f\v") + 1);
     if (!blocks_.empty() && blocks_.back().hangs) {
       // The first item after a brace on its line: the block's lines line up under it.
       blocks_.back().hangs = false;

@@ -236,7 +236,11 @@ std::string lexed(const std::string &text) {
   std::string out;
   for (Token t = lexer.next(); t.kind != Tok::End; t = lexer.next())
     out.append(std::to_string(static_cast<int>(t.kind))).append(" ").append(t.text).append("\n");
-  for (const SourceRange &r : comments) out.append(text, r.begin, r.end - r.begin).append("\n");
+  for (const SourceRange &r : comments) {
+    std::string c = text.substr(r.begin, r.end - r.begin);
+    if (c.rfind("//", 0) == 0) c.erase(c.find_last_not_of(" \t\f\v") + 1);  // gfec fmt drops trailing blanks
+    out.append(c).append("\n");
+  }
   return out;
 }
 
