@@ -85,6 +85,18 @@ bool show_change(const std::string &name, const std::string &before, const std::
   return true;
 }
 
+/// The files below `dir` whose extension is one of chart text's six.
+std::vector<std::string> chart_text_below(const std::string &dir) {
+  static const char *const kKinds[] = {".sfc", ".fsm", ".plan", ".toolbox", ".iface", ".test"};
+  std::vector<std::string> files;
+  for (const std::string &path : RealFileSystem().walk(dir)) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    for (const char *kind : kKinds)
+      if (ext == kind) files.push_back(path);
+  }
+  return files;
+}
+
 /// What became of one file.
 enum class Outcome { Unchanged, Changed, Broken, IoError };
 
@@ -145,13 +157,15 @@ int fmt_command(int argc, const char *const *argv, std::ostream &out, std::ostre
   FrontEndFlags flags;
   CLI::App app{"gfec fmt - lays out chart text (.sfc .fsm .plan .toolbox .iface .test) in its canonical form",
                "gfec fmt"};
-  app.footer("Rewrites each FILE in place (a file already canonical is left untouched); '-' reads stdin\n"
+  app.footer("Rewrites each FILE in place (a file already canonical is left untouched); a folder stands\n"
+             "for the .sfc .fsm .plan .toolbox .iface .test files below it; '-' reads stdin\n"
              "and writes the result to stdout. Comments are kept and the compiled chart does not change.\n"
              "A file that does not parse is reported and left as it is.\n"
              "Exit status: 0 done (--check, --diff: nothing to change), 1 a file does not parse or\n"
              "--check or --diff found files to change, 2 usage or I/O error.\n" +
              documentation_line("formatting.md"));
-  app.add_option("files", o.files, "Chart text files; '-' for stdin")->required();
+  app.add_option("files", o.files, "Chart text files, folders (the chart text below them) and '-' for stdin")
+      ->required();
   app.add_flag("--check", o.check, "Write nothing: list the files that are not canonical, exit 1 if any");
   app.add_flag("--diff", o.diff, "Write nothing: print what would change as a unified diff, exit 1 if anything would");
   app.add_option("-f", flags.f,
@@ -165,11 +179,25 @@ int fmt_command(int argc, const char *const *argv, std::ostream &out, std::ostre
   }
   auto report = make_report(o.report, err);
   bool broken = false, changed = false, io_error = false;
-  for (const std::string &path : o.files) {
-    Outcome r = path == "-" ? format_stdin(o, *report, out) : format_file(path, o, *report, out);
+  auto count = [&](Outcome r) {
     broken |= r == Outcome::Broken;
     changed |= r == Outcome::Changed;
     io_error |= r == Outcome::IoError;
+  };
+  for (const std::string &path : o.files) {
+    std::error_code ec;
+    if (path != "-" && std::filesystem::is_directory(path, ec) && !std::filesystem::is_symlink(path, ec)) {
+      // A folder: the chart text files below it, in path order, as far as the file system
+      // layer's walk goes (hidden folders skipped), as `gfec --check FOLDER` reads them.
+      std::vector<std::string> below = chart_text_below(path);
+      if (below.empty()) {
+        report->tool_error(path, "folder '" + text::printable(path) + "' holds no chart text file", false);
+        count(Outcome::IoError);
+      }
+      for (const std::string &file : below) count(format_file(file, o, *report, out));
+      continue;
+    }
+    count(path == "-" ? format_stdin(o, *report, out) : format_file(path, o, *report, out));
   }
   int code = io_error ? kExitUsageOrIo : broken || ((o.check || o.diff) && changed) ? kExitInputError : kExitOk;
   return finish_report(*report, code, err);

@@ -76,7 +76,15 @@ rc=$?
 set -e
 [[ $rc -eq 2 ]] || fail "a missing file exited $rc"
 
+# A folder: the chart text below it, nothing else.
+mkdir -p "$work/tree/sub"
+printf 'sfc V{initial place D;}\n' > "$work/tree/sub/deep.sfc"
+printf 'not chart text{\n' > "$work/tree/notes.txt"
+"$gfec" fmt "$work/tree"
+[[ $(cat "$work/tree/sub/deep.sfc") == 'sfc V { initial place D; }' ]] || fail "a file below a folder was not formatted"
+[[ $(cat "$work/tree/notes.txt") == 'not chart text{' ]] || fail "a file of another kind was touched"
+
 # What the project ships is canonical.
-"$gfec" fmt --check "$src"/samples/*.{sfc,fsm,plan,toolbox,iface,test} "$src"/tests/golden/fmt/*.after.* ||
+"$gfec" fmt --check "$src/samples" "$src"/tests/golden/fmt/*.after.* ||
   fail "not canonical (run gfec fmt on the files listed)"
 echo "fmt: ok"
