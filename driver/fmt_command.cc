@@ -128,7 +128,8 @@ Outcome format_stdin(const FmtOptions &o, DiagnosticReport &report, std::ostream
 Outcome format_file(const std::string &path, const FmtOptions &o, DiagnosticReport &report, std::ostream &out) {
   // The link would be replaced by a formatted copy, leaving the file it names as it was.
   struct stat st {};
-  if (::lstat(path.c_str(), &st) == 0 && S_ISLNK(st.st_mode)) {
+  const bool stated = ::lstat(path.c_str(), &st) == 0;
+  if (stated && S_ISLNK(st.st_mode)) {
     report.tool_error(
         path, "not rewritten: '" + text::printable(path) + "' is a symbolic link; format the file it names", false);
     return Outcome::IoError;
@@ -145,6 +146,11 @@ Outcome format_file(const std::string &path, const FmtOptions &o, DiagnosticRepo
   if (o.check || o.diff) return show_change(path, *text, *result, o, report, out) ? Outcome::Changed : Outcome::IoError;
   if (std::string failed = safe_output::write_all({{path, *result}}, {}); !failed.empty()) {
     report.tool_error(path, failed, false);
+    return Outcome::IoError;
+  }
+  // The new file has the mode a new output gets; a formatted file keeps the one it had.
+  if (stated && ::chmod(path.c_str(), st.st_mode & 07777) != 0) {
+    report.tool_error(path, "formatted, but cannot restore its mode: " + std::string(std::strerror(errno)), false);
     return Outcome::IoError;
   }
   return Outcome::Changed;

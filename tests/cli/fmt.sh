@@ -42,9 +42,11 @@ cmp -s "$work/ugly.sfc" "$work/want.sfc" && fail "--diff rewrote the file"
 "$gfec" fmt - < "$work/ugly.sfc" > "$work/out.sfc"
 cmp "$work/out.sfc" "$work/want.sfc" || fail "gfec fmt - printed other text"
 
-# In place: the ugly file rewritten, the canonical one not touched (its time stays).
+# In place: the ugly file rewritten (its mode kept), the canonical one not touched (its time stays).
+chmod 640 "$work/ugly.sfc"
 "$gfec" fmt "$work/ugly.sfc" "$work/canonical.sfc"
 cmp "$work/ugly.sfc" "$work/want.sfc" || fail "gfec fmt FILE did not rewrite it"
+[[ $(stat -c %a "$work/ugly.sfc") == 640 ]] || fail "the file's mode became $(stat -c %a "$work/ugly.sfc")"
 [[ $(stat -c %Y "$work/canonical.sfc") == $(date -d '2000-01-01' +%s) ]] || fail "an unchanged file was rewritten"
 
 # Broken text: a located error, exit 1, the file as it was, the other files still formatted.
