@@ -17,9 +17,11 @@ packages=(
   picolibc-arm-none-eabi qemu-system-arm
   gcc-riscv64-unknown-elf picolibc-riscv64-unknown-elf qemu-system-misc
   arduino-mk  # the Arduino sketch's make build (examples/arduino-line-follower); brings arduino-core-avr
-  chromium   # the run viewer's browser test (tests/viewer)
+  chromium   # the run viewer's and the VS Code preview's browser tests (tests/viewer)
+  unzip  # the VS Code extension's .vsix contents checked (tests/editors/vscode_test.sh)
 )
-# Node (for the SARIF schema and TextMate grammar tests) may come from another repo already.
+# Node (the SARIF schema and TextMate grammar tests, the VS Code extension's build) may come from
+# another repo already.
 command -v npm >/dev/null 2>&1 || packages+=(nodejs npm)
 missing=()
 for p in "${packages[@]}"; do
