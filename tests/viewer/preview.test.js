@@ -107,7 +107,7 @@ function pictureFromCompiler(file, text) {
   try {
     execFileSync(gfec, ['--emit=svg', file, '-o', svgFile], { stdio: 'pipe' });
   } catch (e) {
-    return { version: null, svg: null, note: String(e.stderr).split('\n')[0], elements: [] };
+    return { version: null, svg: null, note: 'the text does not compile', elements: [] };
   }
   const model = JSON.parse(execFileSync(gfec, ['--emit=json', file, '-o', '-'], { encoding: 'utf8' }));
   const range = (l) => ({ start: { line: l.line - 1, character: l.column - 1 }, end: { line: l.end_line - 1, character: l.end_column - 1 } });
@@ -239,7 +239,13 @@ test('the preview: click to the source, redraw on an edit, the cursor lit, error
     // Another file's cursor lights nothing.
     await send(page, { type: 'cursor', uri: uri + '.other', position: { line: z3line, character: 12 } });
     await page.waitForFunction(() => window.gfecPreview.highlighted() === null);
+    // The screenshot for docs/editors.md: the sample, the state under the cursor lit.
+    await page.mouse.move(1, 1);
+    await send(page, { type: 'cursor', uri, position: { line: lineOf(text, /state Z2/), character: 10 } });
+    await page.waitForFunction(() => window.gfecPreview.highlighted() === 'p2');
+    await page.screenshot({ path: path.join(out, 'vscode-preview.png') });
     await send(page, { type: 'cursor', uri, position: { line: z3line, character: 12 } });
+    await page.waitForFunction(() => window.gfecPreview.highlighted() === 'p3');
 
     // An edit: a new state and a transition to it; the picture is drawn again with them, and
     // the cursor's element stays lit.
@@ -294,11 +300,12 @@ test('the preview: click to the source, redraw on an edit, the cursor lit, error
     assert.notDeepEqual(scroll1, scroll0, 'the drag scrolled the picture');
     assert.equal((await posted(page)).length, count, 'a drag posts nothing');
 
-    // The screenshot for docs/editors.md: the state under the cursor lit, at the first scale.
+    // The second screenshot: the edited picture kept under an error, at the first scale.
     await page.keyboard.press('0');
-    await send(page, { type: 'cursor', uri, position: { line: lineOf(text, /state Z2/), character: 10 } });
-    await page.waitForFunction(() => window.gfecPreview.highlighted() === 'p2');
-    await page.screenshot({ path: path.join(out, 'vscode-preview.png') });
+    await page.mouse.move(1, 1);
+    await send(page, { type: 'problems', note: none.note || 'the text does not compile', problems });
+    await page.waitForFunction(() => window.gfecPreview.stale());
+    await page.screenshot({ path: path.join(out, 'vscode-preview-errors.png') });
     assert.deepEqual(errors, [], 'no console error');
   } finally {
     await page.close();
