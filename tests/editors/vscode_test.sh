@@ -5,9 +5,11 @@
 #   package   `vsce package` (which runs the build: scripts/prepare.js and tsc) and the .vsix's
 #             contents checked: the manifest's contributions, the compiled client, the grammar
 #             (the repository's, byte for byte), the preview page assembled from viewer/page
+#   host      the compiled preview (out/preview.js) under Node with stand-ins for VS Code and the
+#             language client (preview_host.test.js)
 #   grammar   vscode-tmgrammar-test over tests/editors/grammar (expected scopes in the files)
 # Without node and npm the test fails in CI (CI=true) and is skipped (77) elsewhere.
-# Usage: vscode_test.sh setup|package|grammar SOURCE_DIR WORK_DIR
+# Usage: vscode_test.sh setup|package|host|grammar SOURCE_DIR WORK_DIR
 set -euo pipefail
 mode=$1 src=$(cd "$2" && pwd) work=$3
 
@@ -79,6 +81,10 @@ if (m.main !== './out/extension.js') fail('main is not the compiled client');
 console.log('the manifest contributes the six languages, their grammar, the commands and the settings');
 JS
   echo "packaged: $ext/gfec.vsix ($(stat -c %s gfec.vsix) bytes, $(wc -l <<<"$listing") files)"
+  ;;
+host)
+  npm run compile
+  EXT_DIR=$ext node --test "$src/tests/editors/preview_host.test.js"
   ;;
 grammar)
   node scripts/prepare.js

@@ -1,0 +1,246 @@
+// The extension host's side of the chart preview (editors/vscode/src/preview.ts, compiled by tsc)
+// under Node with a stand-in for VS Code's `vscode` module and for the language client: what it
+// asks the server and when (the debounce, late answers dropped), what it posts to the page
+// (picture, problems, cursor) and what it does with the page's messages (ready, reveal). The page
+// itself is tested in Chromium (tests/viewer/preview.test.js); this is the other end of its
+// messages. Environment: EXT_DIR (the built extension: out/, media/).
+'use strict';
+const { test, beforeEach } = require('node:test');
+const assert = require('node:assert/strict');
+const Module = require('node:module');
+const path = require('node:path');
+
+const extDir = process.env.EXT_DIR;
+
+// ---- a stand-in for the parts of the vscode API the preview uses ----
+function event() {
+  const listeners = [];
+  const on = (f) => { listeners.push(f); return { dispose() { listeners.splice(listeners.indexOf(f), 1); } }; };
+  on.fire = (e) => listeners.slice().forEach((f) => f(e));
+  return on;
+}
+class Position { constructor(line, character) { this.line = line; this.character = character; } }
+class Range {
+  constructor(a, b, c, d) { this.start = new Position(a, b); this.end = new Position(c, d); }
+}
+class Selection { constructor(anchor, active) { this.anchor = anchor; this.active = active; } }
+const uriOf = (s) => ({ scheme: 'file', fsPath: s.replace('file://', ''), toString: () => s });
+
+const fake = {};
+function resetFake() {
+  Object.assign(fake, {
+    settings: { 'preview.delay': 40 },
+    panels: [], shown: [], diagnostics: [], infos: [],
+    events: { change: event(), active: event(), selection: event(), diagnostics: event() },
+  });
+  const vscode = {
+    Position, Range, Selection,
+    ViewColumn: { One: 1, Beside: -2 },
+    DiagnosticSeverity: { Error: 0, Warning: 1 },
+    TextEditorRevealType: { InCenterIfOutsideViewport: 2 },
+    Uri: { parse: uriOf, file: (p) => uriOf('file://' + p) },
+    workspace: {
+      onDidChangeTextDocument: fake.events.change,
+      getConfiguration: () => ({ get: (k) => fake.settings[k] }),
+      openTextDocument: async (uri) => ({ uri, languageId: 'gfec-fsm' }),
+    },
+    window: {
+      activeTextEditor: undefined,
+      visibleTextEditors: [],
+      onDidChangeActiveTextEditor: fake.events.active,
+      onDidChangeTextEditorSelection: fake.events.selection,
+      showInformationMessage: async (m) => { fake.infos.push(m); },
+      showTextDocument: async (doc, options) => {
+        const editor = { document: doc, selection: null, revealed: null, revealRange(r) { this.revealed = r; } };
+        fake.shown.push({ editor, options });
+        return editor;
+      },
+      createWebviewPanel: (viewType, title, column, options) => {
+        const received = event(), disposed = event();
+        const panel = {
+          viewType, title, column, options, posted: [], disposed: false,
+          webview: { html: '', postMessage: async (m) => { panel.posted.push(m); return true; }, onDidReceiveMessage: received },
+          onDidDispose: disposed,
+          reveal() {},
+          dispose() { panel.disposed = true; disposed.fire(); },
+          fromPage: (m) => received.fire(m),
+        };
+        fake.panels.push(panel);
+        return panel;
+      },
+    },
+    languages: {
+      onDidChangeDiagnostics: fake.events.diagnostics,
+      getDiagnostics: () => fake.diagnostics,
+    },
+  };
+  require.cache.vscode = { id: 'vscode', filename: 'vscode', loaded: true, exports: vscode };
+  return vscode;
+}
+const resolve = Module._resolveFilename;
+Module._resolveFilename = function (request, ...rest) {
+  return request === 'vscode' ? 'vscode' : resolve.call(this, request, ...rest);
+};
+
+/// A language client answering gfec/chartPicture with the next of `answers` (a result, an Error
+/// to throw, or a promise), recording the requests.
+function fakeClient(answers, running = true) {
+  const requests = [];
+  return {
+    requests,
+    isRunning: () => running,
+    sendRequest: async (method, params) => {
+      requests.push({ method, params });
+      const a = answers.length > 1 ? answers.shift() : answers[0];
+      const v = await a;
+      if (v instanceof Error) throw v;
+      return v;
+    },
+  };
+}
+const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
+/// Waits (up to 5 s) until `ok()` holds: no test depends on how fast a loaded machine runs timers.
+async function until(ok, what) {
+  for (let t = 0; t < 500 && !ok(); ++t) await sleep(10);
+  assert.ok(ok(), what);
+}
+const CHART = 'file:///work/cleanup.fsm';
+const element = { node: 'p1', kind: 'state', name: 'Z1', uri: CHART, range: { start: { line: 8, character: 2 }, end: { line: 8, character: 24 } } };
+const good = { version: 1, svg: '<svg width="10pt" height="10pt"><g class="node"><title>p1</title></g></svg>', note: '', elements: [element] };
+
+let vscode, ChartPreview, doc, editor;
+beforeEach(() => {
+  vscode = resetFake();
+  for (const k of Object.keys(require.cache)) if (k.startsWith(path.join(extDir, 'out'))) delete require.cache[k];
+  ({ ChartPreview } = require(path.join(extDir, 'out', 'preview.js')));
+  doc = { uri: uriOf(CHART), languageId: 'gfec-fsm' };
+  editor = { document: doc, selection: { active: new Position(8, 5) }, viewColumn: 1 };
+  vscode.window.activeTextEditor = editor;
+  vscode.window.visibleTextEditors = [editor];
+});
+const context = () => ({ extensionPath: extDir, subscriptions: [] });
+
+test('open: a panel beside the editor with the preview page under a nonce policy; ready asks for the picture and posts it with the cursor', async () => {
+  const client = fakeClient([good]);
+  const preview = new ChartPreview(context(), () => client);
+  preview.open();
+  assert.equal(fake.panels.length, 1);
+  const panel = fake.panels[0];
+  assert.equal(panel.column.viewColumn, vscode.ViewColumn.Beside);
+  assert.equal(panel.column.preserveFocus, true);
+  assert.equal(panel.options.enableScripts, true);
+  assert.deepEqual(panel.options.localResourceRoots, []);
+  const html = panel.webview.html;
+  const nonce = /script-src 'nonce-([^']+)'/.exec(html)[1];
+  assert.match(html, /Content-Security-Policy" content="default-src 'none';/);
+  assert.ok(html.includes('window.gfecPreview'), 'the page is media/preview.html');
+  assert.equal((html.match(/<script>/g) || []).length, 0, 'every script carries the nonce');
+  assert.ok(html.includes(`<script nonce="${nonce}">`));
+
+  panel.fromPage({ type: 'ready' });
+  await until(() => panel.posted.length === 2, 'the picture and the cursor');
+  assert.deepEqual(client.requests, [{ method: 'gfec/chartPicture', params: { textDocument: { uri: CHART } } }]);
+  assert.equal(panel.title, 'Chart: cleanup.fsm');
+  const [picture, cursor] = panel.posted;
+  assert.equal(picture.type, 'picture');
+  assert.equal(picture.svg, good.svg);
+  assert.deepEqual(picture.elements, [element]);
+  assert.deepEqual(cursor, { type: 'cursor', uri: CHART, position: { line: 8, character: 5 } });
+  preview.dispose();
+  assert.ok(panel.disposed);
+});
+
+test('typing: one request after the delay, not one per keystroke; the cursor follows the selection', async () => {
+  fake.settings['preview.delay'] = 250;
+  const client = fakeClient([good]);
+  const preview = new ChartPreview(context(), () => client);
+  preview.open();
+  const panel = fake.panels[0];
+  panel.fromPage({ type: 'ready' });
+  await until(() => client.requests.length === 1, 'the first request');
+  for (let i = 0; i < 5; ++i) { fake.events.change.fire({ document: doc }); await sleep(10); }
+  assert.equal(client.requests.length, 1, 'nothing asked while the user types');
+  await until(() => client.requests.length === 2, 'one request once the typing paused');
+  await sleep(400);
+  assert.equal(client.requests.length, 2, 'and only one');
+  fake.events.change.fire({ document: { uri: uriOf('file:///work/other.fsm') } });
+  await sleep(400);
+  assert.equal(client.requests.length, 2, 'another document\'s change asks nothing');
+  editor.selection = { active: new Position(3, 1) };
+  fake.events.selection.fire({ textEditor: editor });
+  assert.deepEqual(panel.posted.at(-1), { type: 'cursor', uri: CHART, position: { line: 3, character: 1 } });
+  preview.dispose();
+});
+
+test('broken text: no picture, the errors of the text posted as problems; a late answer is dropped', async () => {
+  let late;
+  const slow = new Promise((r) => { late = r; });
+  const client = fakeClient([good, slow, { version: 3, svg: null, note: 'the text has errors', elements: [] }]);
+  fake.diagnostics = [
+    { severity: 0, message: "expected an expression, found ';'", range: new Range(15, 18, 15, 19) },
+    { severity: 1, message: 'unused var', range: new Range(3, 0, 3, 4) },
+  ];
+  const preview = new ChartPreview(context(), () => client);
+  preview.open();
+  const panel = fake.panels[0];
+  panel.fromPage({ type: 'ready' });
+  await until(() => panel.posted.length === 2, 'the first picture and cursor');
+  fake.events.change.fire({ document: doc });   // asks (slow), then
+  await until(() => client.requests.length === 2, 'the second request');
+  fake.events.change.fire({ document: doc });   // asks again: broken
+  await until(() => panel.posted.length === 3, 'the problems');
+  late(good);                                   // the first answer arrives last
+  await sleep(50);
+  assert.equal(client.requests.length, 3);
+  const last = panel.posted.at(-1);
+  assert.deepEqual(last, {
+    type: 'problems', note: 'the text has errors',
+    problems: [{ uri: CHART, message: "expected an expression, found ';'", range: { start: { line: 15, character: 18 }, end: { line: 15, character: 19 } } }],
+  });
+  assert.equal(panel.posted.filter((m) => m.type === 'picture').length, 1, 'the late picture is not drawn over the errors');
+  // New diagnostics while the text is broken: the list is posted again.
+  fake.diagnostics = [];
+  fake.events.diagnostics.fire({ uris: [doc.uri] });
+  assert.deepEqual(panel.posted.at(-1).problems, []);
+  preview.dispose();
+});
+
+test('no server, or a server without the request: the panel says so', async () => {
+  let preview = new ChartPreview(context(), () => fakeClient([good], false));
+  preview.open();
+  fake.panels[0].fromPage({ type: 'ready' });
+  await until(() => fake.panels[0].posted.length === 1, 'a message');
+  assert.equal(fake.panels[0].posted[0].type, 'problems');
+  assert.match(fake.panels[0].posted[0].note, /not running.*gfec\.path/);
+  preview.dispose();
+
+  preview = new ChartPreview(context(), () => fakeClient([new Error('Unhandled method gfec/chartPicture')]));
+  preview.open();
+  fake.panels[1].fromPage({ type: 'ready' });
+  await until(() => fake.panels[1].posted.length === 1, 'a message');
+  assert.match(fake.panels[1].posted[0].note, /^no picture: Unhandled method/);
+  preview.dispose();
+});
+
+test('reveal: the element\'s file opens in the editor\'s column with the cursor at its start', async () => {
+  const preview = new ChartPreview(context(), () => fakeClient([good]));
+  preview.open();
+  fake.panels[0].fromPage({ type: 'reveal', uri: element.uri, range: element.range });
+  await until(() => fake.shown.length === 1 && fake.shown[0].editor.selection, 'the editor shown');
+  assert.equal(fake.shown.length, 1);
+  const { editor: shown, options } = fake.shown[0];
+  assert.equal(shown.document.uri.toString(), CHART);
+  assert.equal(options.viewColumn, 1, 'in the column of the editor already showing it');
+  assert.deepEqual([shown.selection.active.line, shown.selection.active.character], [8, 2]);
+  assert.deepEqual([shown.revealed.start.line, shown.revealed.end.character], [8, 24]);
+  preview.dispose();
+});
+
+test('open without a gfec editor: a message, no panel', () => {
+  vscode.window.activeTextEditor = { document: { uri: uriOf('file:///x.txt'), languageId: 'plaintext' } };
+  const preview = new ChartPreview(context(), () => fakeClient([good]));
+  preview.open();
+  assert.equal(fake.panels.length, 0);
+  assert.match(fake.infos[0], /open a chart/);
+  preview.dispose();
+});
