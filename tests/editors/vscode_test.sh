@@ -5,8 +5,8 @@
 #   package   `vsce package` (which runs the build: scripts/prepare.js and tsc) and the .vsix's
 #             contents checked: the manifest's contributions, the compiled client, the grammar
 #             (the repository's, byte for byte), the preview page assembled from viewer/page
-#   host      the compiled preview (out/preview.js) under Node with stand-ins for VS Code and the
-#             language client (preview_host.test.js)
+#   host      the compiled extension (out/: the preview, the live monitor's panel) under Node,
+#             with stand-ins for VS Code and the language client (extension_host.test.js)
 #   grammar   vscode-tmgrammar-test over tests/editors/grammar (expected scopes in the files)
 # Without node and npm the test fails in CI (CI=true) and is skipped (77) elsewhere.
 # Usage: vscode_test.sh setup|package|host|grammar SOURCE_DIR WORK_DIR
@@ -43,7 +43,7 @@ package)
   npx vsce package --skip-license --allow-missing-repository -o gfec.vsix
   listing=$(unzip -Z1 gfec.vsix)
   for f in extension/package.json extension/language-configuration.json extension/readme.md \
-           extension/out/extension.js extension/out/preview.js extension/out/replay.js extension/out/webview.js \
+           extension/out/extension.js extension/out/preview.js extension/out/replay.js extension/out/webview.js extension/out/monitor.js \
            extension/syntaxes/gfec.tmLanguage.json extension/media/preview.html \
            extension/node_modules/vscode-languageclient/node.js extension/node_modules/vscode-jsonrpc/package.json; do
     grep -qx "$f" <<<"$listing" || fail "the .vsix lacks $f"
@@ -73,7 +73,7 @@ for (const k of kinds) {
   const g = c.grammars.find((x) => x.language === lang.id);
   if (!g || g.scopeName !== 'source.gfec' || g.path !== './syntaxes/gfec.tmLanguage.json') fail(`.${k} has no grammar`);
 }
-for (const cmd of ['gfec.openPreview', 'gfec.openRunReplay'])
+for (const cmd of ['gfec.openPreview', 'gfec.openRunReplay', 'gfec.openLiveMonitor'])
   if (!c.commands.some((x) => x.command === cmd)) fail(`no command ${cmd}`);
 for (const p of ['gfec.path', 'gfec.trace.server'])
   if (!c.configuration.properties[p]) fail(`no setting ${p}`);
@@ -84,7 +84,7 @@ JS
   ;;
 host)
   npm run compile
-  EXT_DIR=$ext node --test "$src/tests/editors/preview_host.test.js"
+  EXT_DIR=$ext node --test "$src/tests/editors/extension_host.test.js"
   ;;
 grammar)
   node scripts/prepare.js

@@ -1,9 +1,10 @@
-// The extension's entry: the language client running `gfec lsp`, the chart preview and the run
-// replay (docs/editors.md, "VS Code").
+// The extension's entry: the language client running `gfec lsp`, the chart preview, the run
+// replay and the live monitor (docs/editors.md, "VS Code").
 import * as vscode from 'vscode';
 import { LanguageClient, LanguageClientOptions, ServerOptions, TransportKind } from 'vscode-languageclient/node';
 import { LANGUAGES, gfecPath } from './languages';
 import { ChartPreview } from './preview';
+import { openLiveMonitor } from './monitor';
 import { openRunReplay } from './replay';
 
 let client: LanguageClient | undefined;
@@ -44,6 +45,7 @@ export async function activate(context: vscode.ExtensionContext): Promise<void> 
     preview,
     vscode.commands.registerCommand('gfec.openPreview', () => preview.open()),
     vscode.commands.registerCommand('gfec.openRunReplay', (uri?: vscode.Uri) => openRunReplay(context, uri)),
+    vscode.commands.registerCommand('gfec.openLiveMonitor', openLiveMonitor),
     vscode.commands.registerCommand('gfec.restartServer', restartClient),
     vscode.workspace.onDidChangeConfiguration((e) => {
       if (e.affectsConfiguration('gfec.path')) void restartClient();

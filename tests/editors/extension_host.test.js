@@ -1,9 +1,10 @@
-// The extension host's side of the chart preview (editors/vscode/src/preview.ts, compiled by tsc)
-// under Node with a stand-in for VS Code's `vscode` module and for the language client: what it
+// The extension's host side (editors/vscode/src, compiled by tsc) under Node with a stand-in for
+// VS Code's `vscode` module and for the language client. The chart preview (preview.ts): what it
 // asks the server and when (the debounce, late answers dropped), what it posts to the page
-// (picture, problems, cursor) and what it does with the page's messages (ready, reveal). The page
-// itself is tested in Chromium (tests/viewer/preview.test.js); this is the other end of its
-// messages. Environment: EXT_DIR (the built extension: out/, media/).
+// (picture, problems, cursor) and what it does with the page's messages (ready, reveal); the page
+// itself is tested in Chromium (tests/viewer/preview.test.js), this is the other end of its
+// messages. The live monitor's panel (monitor.ts): loopback addresses only, the page framed.
+// Environment: EXT_DIR (the built extension: out/, media/).
 'use strict';
 const { test, beforeEach } = require('node:test');
 const assert = require('node:assert/strict');
@@ -38,7 +39,7 @@ function resetFake() {
     ViewColumn: { One: 1, Beside: -2 },
     DiagnosticSeverity: { Error: 0, Warning: 1 },
     TextEditorRevealType: { InCenterIfOutsideViewport: 2 },
-    Uri: { parse: uriOf, file: (p) => uriOf('file://' + p) },
+    Uri: { parse: (s) => ({ ...uriOf(s), toString: () => s }), file: (p) => uriOf('file://' + p) },
     workspace: {
       onDidChangeTextDocument: fake.events.change,
       getConfiguration: () => ({ get: (k) => fake.settings[k] }),
@@ -50,6 +51,7 @@ function resetFake() {
       onDidChangeActiveTextEditor: fake.events.active,
       onDidChangeTextEditorSelection: fake.events.selection,
       showInformationMessage: async (m) => { fake.infos.push(m); },
+      showInputBox: async (options) => { fake.inputBox = options; return fake.typed; },
       showTextDocument: async (doc, options) => {
         const editor = { document: doc, selection: null, revealed: null, revealRange(r) { this.revealed = r; } };
         fake.shown.push({ editor, options });
@@ -69,6 +71,7 @@ function resetFake() {
         return panel;
       },
     },
+    env: { asExternalUri: async (uri) => uri },
     languages: {
       onDidChangeDiagnostics: fake.events.diagnostics,
       getDiagnostics: () => fake.diagnostics,
@@ -243,4 +246,30 @@ test('open without a gfec editor: a message, no panel', () => {
   assert.equal(fake.panels.length, 0);
   assert.match(fake.infos[0], /open a chart/);
   preview.dispose();
+});
+
+test('the live monitor: a loopback URL only, its page in a frame under a policy that allows that origin alone', async () => {
+  const { loopbackUrl, monitorPage, openLiveMonitor } = require(path.join(extDir, 'out', 'monitor.js'));
+  assert.equal(loopbackUrl('http://127.0.0.1:8080/').url.port, '8080');
+  assert.ok(loopbackUrl('http://localhost:9000').url);
+  assert.ok(loopbackUrl('http://[::1]:9000/').url);
+  assert.match(loopbackUrl('http://192.168.1.5:8080/').error, /loopback only/);
+  assert.match(loopbackUrl('file:///etc/passwd').error, /not an http URL/);
+  assert.match(loopbackUrl('127.0.0.1:8080').error, /not (a|an http) URL/);
+  const page = monitorPage('http://127.0.0.1:8080/?a=1&b="2"');
+  assert.match(page, /content="default-src 'none'; frame-src http:\/\/127\.0\.0\.1:8080; /);
+  assert.ok(page.includes('<iframe src="http://127.0.0.1:8080/?a=1&amp;b=&quot;2&quot;"'));
+  assert.ok(!page.includes('<script'));
+
+  fake.typed = 'http://127.0.0.1:8123/';
+  await openLiveMonitor();
+  assert.equal(fake.inputBox.validateInput('http://10.0.0.1:1/'), 'gfec monitor serves loopback only: 127.0.0.1, localhost or [::1]');
+  assert.equal(fake.inputBox.validateInput('http://127.0.0.1:1/'), null);
+  assert.equal(fake.panels.length, 1);
+  assert.equal(fake.panels[0].title, 'Live: 127.0.0.1:8123');
+  assert.equal(fake.panels[0].options.enableScripts, true, 'the monitor page runs its scripts in the frame');
+  assert.ok(fake.panels[0].webview.html.includes('<iframe src="http://127.0.0.1:8123/"'));
+  fake.typed = undefined;   // dismissed: no panel
+  await openLiveMonitor();
+  assert.equal(fake.panels.length, 1);
 });
