@@ -111,11 +111,20 @@ function pictureFromCompiler(file, text) {
   }
   const model = JSON.parse(execFileSync(gfec, ['--emit=json', file, '-o', '-'], { encoding: 'utf8' }));
   const range = (l) => ({ start: { line: l.line - 1, character: l.column - 1 }, end: { line: l.end_line - 1, character: l.end_column - 1 } });
-  const uri = pathToFileURL(file).href;
-  const elements = [
-    ...(model.states || model.places).map((s) => ({ node: `p${s.index}`, kind: model.states ? 'state' : 'place', name: s.name, uri, range: range(s.location) })),
-    ...model.transitions.map((t) => ({ node: `t${t.index}`, kind: 'transition', name: t.name, uri, range: range(t.location) })),
+  const uriOf = (l) => pathToFileURL(path.resolve(l.file)).href;
+  // A chart's places and transitions, and one level of sub-chart instances: the frame of the
+  // instance place i runs ("cluster_s<i>", a "chart" element) and its nodes ("s<i>_p<j>").
+  const elementsOf = (chart, prefix, owner) => [
+    ...(chart.states || chart.places).map((s) => ({ node: `${prefix}p${s.index}`, kind: chart.states ? 'state' : 'place', name: owner + s.name, uri: uriOf(s.location), range: range(s.location) })),
+    ...chart.transitions.map((t) => ({ node: `${prefix}t${t.index}`, kind: 'transition', name: owner + t.name, uri: uriOf(t.location), range: range(t.location) })),
   ];
+  const elements = elementsOf(model, '', '');
+  for (const s of model.states || model.places) {
+    const sub = s.runs && (model.subcharts || []).find((c) => c.name === s.runs);
+    if (!sub) continue;
+    elements.push({ node: `cluster_s${s.index}`, kind: 'chart', name: s.name, uri: uriOf(sub.location), range: range(sub.location) },
+                  ...elementsOf(sub, `s${s.index}_`, `${s.name}.`));
+  }
   return { version: null, svg: fs.readFileSync(svgFile, 'utf8'), note: '', elements };
 }
 
@@ -306,6 +315,52 @@ test('the preview: click to the source, redraw on an edit, the cursor lit, error
     await send(page, { type: 'problems', note: none.note || 'the text does not compile', problems });
     await page.waitForFunction(() => window.gfecPreview.stale());
     await page.screenshot({ path: path.join(out, 'vscode-preview-errors.png') });
+    assert.deepEqual(errors, [], 'no console error');
+  } finally {
+    await page.close();
+  }
+});
+
+test('sub-charts: a click in an instance leads to the sub-chart\'s file; its frame lights for a cursor in that chart', async () => {
+  const { page, errors } = await openPreview();
+  const dir = path.join(work, 'mission');
+  fs.mkdirSync(dir, { recursive: true });
+  for (const f of ['mission.fsm', 'line_follower.sfc', 'linebot.iface', 'cleanup.fsm', 'cleanbot.iface'])
+    fs.copyFileSync(path.join(src, 'samples', f), path.join(dir, f));
+  const file = path.join(dir, 'mission.fsm');
+  const follower = fs.readFileSync(path.join(dir, 'line_follower.sfc'), 'utf8');
+  const followerUri = pathToFileURL(path.join(dir, 'line_follower.sfc')).href;
+  const cleanupUri = pathToFileURL(path.join(dir, 'cleanup.fsm')).href;
+  const cleanup = fs.readFileSync(path.join(dir, 'cleanup.fsm'), 'utf8');
+  try {
+    const p = await picture(file, fs.readFileSync(file, 'utf8'));
+    assert.ok(p.svg, `a picture of mission.fsm: ${p.note}`);
+    await send(page, { type: 'picture', svg: p.svg, note: p.note, elements: p.elements, title: 'mission.fsm' });
+    await page.waitForFunction(() => window.gfecPreview.pictures() === 1);
+    const patrol = p.elements.find((e) => e.name === 'Patrol' && e.kind === 'state');
+    const instance = p.elements.filter((e) => e.node.startsWith(`s${patrol.node.slice(1)}_`));
+    assert.ok(instance.length >= 4, 'the elements of the instance Patrol runs');
+    // A click on the instance's place LeftStop: the line that declares it in line_follower.sfc.
+    const leftStop = instance.find((e) => /LeftStop$/.test(e.name));
+    await clickNode(page, leftStop.node);
+    let last = (await posted(page)).slice(-1)[0];
+    assert.equal(last.uri, followerUri);
+    assert.equal(last.range.start.line, lineOf(follower, /place\s+LeftStop\b/));
+    // The cursor in cleanup.fsm, outside every state and transition but in the chart: the frame
+    // of the instance that runs it lights; on a state's line, that state does.
+    const tidy = p.elements.find((e) => e.kind === 'chart' && e.uri === cleanupUri);
+    assert.ok(tidy, 'the frame of the instance Tidy runs is an element');
+    await send(page, { type: 'cursor', uri: cleanupUri, position: { line: lineOf(cleanup, /period 10ms/), character: 3 } });
+    await page.waitForFunction((n) => window.gfecPreview.highlighted() === n, {}, tidy.node);
+    assert.equal(await page.$eval(`#chart g.cluster[data-node="${tidy.node}"]`, (g) => g.classList.contains('cursor')), true);
+    await send(page, { type: 'cursor', uri: cleanupUri, position: { line: lineOf(cleanup, /state Z2/), character: 9 } });
+    const z2 = p.elements.find((e) => e.uri === cleanupUri && /\.Z2$/.test(e.name));
+    await page.waitForFunction((n) => window.gfecPreview.highlighted() === n, {}, z2.node);
+    // A click inside the frame, away from its nodes: the sub-chart's declaration.
+    const frame = await (await page.$(`#chart g.cluster[data-node="${tidy.node}"]`)).boundingBox();
+    await page.mouse.click(frame.x + 6, frame.y + frame.height / 2);
+    last = (await posted(page)).slice(-1)[0];
+    assert.deepEqual(last, { type: 'reveal', uri: cleanupUri, range: tidy.range });
     assert.deepEqual(errors, [], 'no console error');
   } finally {
     await page.close();

@@ -5,6 +5,7 @@
 //!   in  {type: 'problems', note, problems: [{uri, range, message}]}  the text does not compile:
 //!                                                       keep the last good picture, list the errors
 //!   in  {type: 'cursor', uri, position: {line, character}}  light the element under the cursor
+//!                                                       (a node, or a sub-chart instance's frame)
 //!   out {type: 'ready'}                                  the page can take messages
 //!   out {type: 'reveal', uri, range}                     a click on an element or an error
 //! Pan: drag the picture; zoom: chart.js's buttons, Ctrl+wheel, the keys + - 0.
@@ -14,6 +15,9 @@
   var problemsBox = document.getElementById('problems');
   var elements = [];         // the last good picture's elements
   var byNode = {};           // node id -> element
+  var frameOf = {};          // a sub-chart instance's frame id ("cluster_s0") -> its <g class="cluster">
+  // The drawn group of an element: a node, or the frame of a sub-chart instance (a "chart").
+  function shapeOf(id) { return nodeOf[id] || frameOf[id]; }
   var cursorAt = null;       // the editor's last cursor: {uri, position}
   var cursorNode = null;     // the node lit for it
   var pictures = 0;          // pictures drawn, for scripts and tests
@@ -33,7 +37,7 @@
     var best = null;
     for (var i = 0; i < elements.length; ++i) {
       var e = elements[i];
-      if (!nodeOf[e.node] || e.uri !== at.uri || !contains(e.range, at.position)) continue;
+      if (!shapeOf(e.node) || e.uri !== at.uri || !contains(e.range, at.position)) continue;
       if (!best || size(e.range) < size(best.range)) best = e;
     }
     return best;
@@ -43,7 +47,7 @@
     cursorNode = null;
     var e = cursorAt && elementAt(cursorAt);
     if (!e) return;
-    cursorNode = nodeOf[e.node];
+    cursorNode = shapeOf(e.node);
     cursorNode.classList.add('cursor');
     // Bring it into sight when it is out of the pane; leave the reader's scroll alone otherwise.
     var pane = chartBox.getBoundingClientRect(), r = cursorNode.getBoundingClientRect();
@@ -56,12 +60,18 @@
   function picture(m) {
     showPicture(m.svg, m.note, true);
     ++pictures;
+    frameOf = {};
+    var frames = svg ? svg.querySelectorAll('g.cluster') : [];
+    for (var f = 0; f < frames.length; ++f) {
+      var ft = frames[f].querySelector('title');
+      if (ft) { frameOf[ft.textContent] = frames[f]; frames[f].setAttribute('data-node', ft.textContent); }
+    }
     elements = m.elements || [];
     byNode = {};
     for (var i = 0; i < elements.length; ++i) {
       var e = elements[i];
       byNode[e.node] = e;
-      var g = nodeOf[e.node];
+      var g = shapeOf(e.node);
       if (!g) continue;
       g.classList.add('linked');
       var t = g.querySelector('title');
@@ -113,7 +123,7 @@
   window.addEventListener('mouseup', function () { drag = null; chartBox.classList.remove('panning'); });
   chartBox.addEventListener('click', function (ev) {
     if (dragged) { dragged = false; return; }
-    var g = ev.target.closest ? ev.target.closest('g.node') : null;
+    var g = ev.target.closest ? ev.target.closest('g.node, g.cluster') : null;
     var e = g && byNode[g.getAttribute('data-node')];
     if (e) post({ type: 'reveal', uri: e.uri, range: e.range });
   });
