@@ -31,8 +31,8 @@ const fake = {};
 function resetFake() {
   Object.assign(fake, {
     settings: { 'preview.delay': 40 },
-    panels: [], shown: [], diagnostics: [], infos: [],
-    events: { change: event(), active: event(), selection: event(), diagnostics: event() },
+    panels: [], shown: [], diagnostics: [], infos: [], errors: [], commands: {}, clients: [],
+    events: { change: event(), active: event(), selection: event(), diagnostics: event(), config: event() },
   });
   const vscode = {
     Position, Range, Selection,
@@ -40,7 +40,10 @@ function resetFake() {
     DiagnosticSeverity: { Error: 0, Warning: 1 },
     TextEditorRevealType: { InCenterIfOutsideViewport: 2 },
     Uri: { parse: (s) => ({ ...uriOf(s), toString: () => s }), file: (p) => uriOf('file://' + p) },
+    commands: { registerCommand: (id, f) => { fake.commands[id] = f; return { dispose() {} }; } },
     workspace: {
+      onDidChangeConfiguration: fake.events.config,
+      createFileSystemWatcher: (glob) => ({ glob, dispose() {} }),
       onDidChangeTextDocument: fake.events.change,
       getConfiguration: () => ({ get: (k) => fake.settings[k] }),
       openTextDocument: async (uri) => ({ uri, languageId: 'gfec-fsm' }),
@@ -51,6 +54,7 @@ function resetFake() {
       onDidChangeActiveTextEditor: fake.events.active,
       onDidChangeTextEditorSelection: fake.events.selection,
       showInformationMessage: async (m) => { fake.infos.push(m); },
+      showErrorMessage: async (m) => { fake.errors.push(m); },
       showInputBox: async (options) => { fake.inputBox = options; return fake.typed; },
       showTextDocument: async (doc, options) => {
         const editor = { document: doc, selection: null, revealed: null, revealRange(r) { this.revealed = r; } };
@@ -80,9 +84,23 @@ function resetFake() {
   require.cache.vscode = { id: 'vscode', filename: 'vscode', loaded: true, exports: vscode };
   return vscode;
 }
+// The language client: records how it was made, starts (or fails to, fake.startError) and stops.
+class LanguageClient {
+  constructor(id, name, server, options) {
+    Object.assign(this, { id, name, server, options, started: false, stopped: false });
+    fake.clients.push(this);
+  }
+  async start() { if (fake.startError) throw fake.startError; this.started = true; }
+  async stop() { this.stopped = true; }
+  isRunning() { return this.started && !this.stopped; }
+}
+require.cache.languageclient = { id: 'languageclient', filename: 'languageclient', loaded: true,
+                                 exports: { LanguageClient, TransportKind: { stdio: 0 } } };
 const resolve = Module._resolveFilename;
 Module._resolveFilename = function (request, ...rest) {
-  return request === 'vscode' ? 'vscode' : resolve.call(this, request, ...rest);
+  if (request === 'vscode') return 'vscode';
+  if (request === 'vscode-languageclient/node') return 'languageclient';
+  return resolve.call(this, request, ...rest);
 };
 
 /// A language client answering gfec/chartPicture with the next of `answers` (a result, an Error
@@ -272,4 +290,44 @@ test('the live monitor: a loopback URL only, its page in a frame under a policy 
   fake.typed = undefined;   // dismissed: no panel
   await openLiveMonitor();
   assert.equal(fake.panels.length, 1);
+});
+
+test('activate: the client runs `gfec lsp` (gfec.path) for the six languages with the server\'s settings; the commands; a changed setting restarts it', async () => {
+  const { activate, deactivate } = require(path.join(extDir, 'out', 'extension.js'));
+  fake.settings.path = '/opt/gfec/bin/gfec';
+  fake.settings.warnings = ['all', 'no-unused-var'];
+  fake.settings.includeDirs = [];
+  const ctx = context();
+  await activate(ctx);
+  assert.equal(fake.clients.length, 1);
+  const c = fake.clients[0];
+  assert.equal(c.id, 'gfec', 'the id under which vscode-languageclient reads gfec.trace.server');
+  assert.deepEqual(c.server, { command: '/opt/gfec/bin/gfec', args: ['lsp'], transport: 0 });
+  assert.deepEqual(c.options.documentSelector.map((d) => d.language).sort(),
+                   ['gfec-fsm', 'gfec-iface', 'gfec-plan', 'gfec-sfc', 'gfec-test', 'gfec-toolbox']);
+  assert.deepEqual(c.options.initializationOptions, { warnings: ['all', 'no-unused-var'] }, 'only the settings that are set');
+  assert.equal(c.options.synchronize.fileEvents.glob, '**/*.{sfc,fsm,plan,toolbox,iface,test}');
+  assert.ok(c.started);
+  assert.deepEqual(Object.keys(fake.commands).sort(),
+                   ['gfec.openLiveMonitor', 'gfec.openPreview', 'gfec.openRunReplay', 'gfec.restartServer']);
+  // The package declares what the code registers.
+  const manifest = require(path.join(extDir, 'package.json'));
+  assert.deepEqual(manifest.contributes.commands.map((x) => x.command).sort(), Object.keys(fake.commands).sort());
+
+  fake.settings.path = 'gfec';
+  fake.events.config.fire({ affectsConfiguration: (k) => k === 'gfec.path' });
+  await until(() => fake.clients.length === 2 && fake.clients[1].started, 'a new client');
+  assert.ok(c.stopped, 'the old client stopped');
+  assert.equal(fake.clients[1].server.command, 'gfec');
+  fake.events.config.fire({ affectsConfiguration: (k) => k === 'gfec.preview.delay' });
+  await sleep(50);
+  assert.equal(fake.clients.length, 2, 'the preview\'s delay restarts nothing');
+
+  // A gfec that cannot start: an error naming the setting, no crash.
+  fake.startError = new Error('spawn gfec ENOENT');
+  await fake.commands['gfec.restartServer']();
+  assert.match(fake.errors[0], /could not start 'gfec lsp' \(spawn gfec ENOENT\)\. Set gfec\.path/);
+  fake.startError = undefined;
+  await deactivate();
+  for (const d of ctx.subscriptions) d.dispose();
 });

@@ -11,8 +11,17 @@ let client: LanguageClient | undefined;
 
 function makeClient(): LanguageClient {
   const server: ServerOptions = { command: gfecPath(), args: ['lsp'], transport: TransportKind.stdio };
+  // The server's own settings (docs/editors.md, "Starting the server"): given only when set, so a
+  // server's defaults stay its own.
+  const config = vscode.workspace.getConfiguration('gfec');
+  const initializationOptions: { includeDirs?: string[]; warnings?: string[] } = {};
+  const includeDirs = config.get<string[]>('includeDirs') ?? [];
+  const warnings = config.get<string[]>('warnings') ?? [];
+  if (includeDirs.length > 0) initializationOptions.includeDirs = includeDirs;
+  if (warnings.length > 0) initializationOptions.warnings = warnings;
   const options: LanguageClientOptions = {
     documentSelector: LANGUAGES.map((language) => ({ language })),
+    initializationOptions,
     // Files of the workspace the server reads without their being open (imports, .test files
     // naming a chart): it hears when they change on disk.
     synchronize: { fileEvents: vscode.workspace.createFileSystemWatcher('**/*.{sfc,fsm,plan,toolbox,iface,test}') },
@@ -48,7 +57,7 @@ export async function activate(context: vscode.ExtensionContext): Promise<void> 
     vscode.commands.registerCommand('gfec.openLiveMonitor', openLiveMonitor),
     vscode.commands.registerCommand('gfec.restartServer', restartClient),
     vscode.workspace.onDidChangeConfiguration((e) => {
-      if (e.affectsConfiguration('gfec.path')) void restartClient();
+      if (['gfec.path', 'gfec.includeDirs', 'gfec.warnings'].some((k) => e.affectsConfiguration(k))) void restartClient();
     }),
   );
   await startClient();
