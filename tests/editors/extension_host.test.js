@@ -4,7 +4,8 @@
 // (picture, problems, cursor) and what it does with the page's messages (ready, reveal); the page
 // itself is tested in Chromium (tests/viewer/preview.test.js), this is the other end of its
 // messages. The live monitor's panel (monitor.ts): loopback addresses only, the page framed.
-// Environment: EXT_DIR (the built extension: out/, media/).
+// The run replay (replay.ts) runs the real `gfec run --html`.
+// Environment: EXT_DIR (the built extension: out/, media/), GFEC, GFEC_SOURCE_DIR.
 'use strict';
 const { test, beforeEach } = require('node:test');
 const assert = require('node:assert/strict');
@@ -55,6 +56,7 @@ function resetFake() {
       onDidChangeTextEditorSelection: fake.events.selection,
       showInformationMessage: async (m) => { fake.infos.push(m); },
       showErrorMessage: async (m) => { fake.errors.push(m); },
+      showOpenDialog: async (options) => { fake.openDialog = options; return fake.picked; },
       showInputBox: async (options) => { fake.inputBox = options; return fake.typed; },
       showTextDocument: async (doc, options) => {
         const editor = { document: doc, selection: null, revealed: null, revealRange(r) { this.revealed = r; } };
@@ -139,7 +141,10 @@ beforeEach(() => {
   vscode.window.activeTextEditor = editor;
   vscode.window.visibleTextEditors = [editor];
 });
-const context = () => ({ extensionPath: extDir, subscriptions: [] });
+const os = require('node:os');
+const fs = require('node:fs');
+const storage = fs.mkdtempSync(path.join(os.tmpdir(), 'gfec-ext-storage-'));
+const context = () => ({ extensionPath: extDir, subscriptions: [], globalStorageUri: { fsPath: storage } });
 
 test('open: a panel beside the editor with the preview page under a nonce policy; ready asks for the picture and posts it with the cursor', async () => {
   const client = fakeClient([good]);
@@ -330,4 +335,38 @@ test('activate: the client runs `gfec lsp` (gfec.path) for the six languages wit
   fake.startError = undefined;
   await deactivate();
   for (const d of ctx.subscriptions) d.dispose();
+});
+
+test('run replay: gfec run --html on the chart and the chosen inputs, its page in a panel under the nonce policy; a failed run says why', async () => {
+  const { openRunReplay } = require(path.join(extDir, 'out', 'replay.js'));
+  const src = process.env.GFEC_SOURCE_DIR;
+  fake.settings.path = process.env.GFEC;
+  const chart = vscode.Uri.file(path.join(src, 'samples', 'line_follower.sfc'));
+  fake.picked = [vscode.Uri.file(path.join(src, 'tests', 'viewer', 'line_follower_inputs.csv'))];
+  await openRunReplay(context(), chart);
+  assert.deepEqual(fake.errors, []);
+  assert.deepEqual(fake.openDialog.filters, { CSV: ['csv'] });
+  assert.equal(fake.panels.length, 1);
+  const panel = fake.panels[0];
+  assert.equal(panel.title, 'Run: line_follower.sfc');
+  assert.equal(panel.options.enableScripts, true);
+  const html = panel.webview.html;
+  const written = fs.readFileSync(path.join(storage, 'line_follower.sfc.run.html'), 'utf8');
+  assert.ok(written.includes('id="gfec-data"'), 'gfec run wrote the viewer page');
+  const nonce = /script-src 'nonce-([^']+)'/.exec(html)[1];
+  assert.equal(html.replace(/<meta http-equiv="Content-Security-Policy"[^>]*>\n/, '').replaceAll(`<script nonce="${nonce}">`, '<script>'), written,
+               'the page as gfec run wrote it, with the policy and the nonce only');
+  assert.ok(html.includes('<script type="application/json" id="gfec-data">'), 'the data stays data');
+
+  // Dismissing the dialog runs nothing.
+  fake.picked = undefined;
+  await openRunReplay(context(), chart);
+  assert.equal(fake.panels.length, 1);
+  // A chart that does not compile: gfec's own message, no panel.
+  const broken = path.join(storage, 'broken.fsm');
+  fs.writeFileSync(broken, 'fsm B {\n  initial state A;\n  A -> C when ;\n}\n');
+  fake.picked = [vscode.Uri.file(path.join(src, 'tests', 'viewer', 'line_follower_inputs.csv'))];
+  await openRunReplay(context(), vscode.Uri.file(broken));
+  assert.equal(fake.panels.length, 1);
+  assert.match(fake.errors[0], /^gfec run failed: .*broken\.fsm:3:\d+: error: /);
 });

@@ -152,16 +152,21 @@ function problemsOf(file) {
   }));
 }
 
+/// The webview's policy, as editors/vscode/src/webview.ts adds it: the page's own scripts by
+/// nonce, nothing from the network.
+function withPolicy(html) {
+  const nonce = 'dGVzdG5vbmNl';
+  return html
+    .replace('<head>', `<head>\n<meta http-equiv="Content-Security-Policy" content="default-src 'none'; img-src data:; style-src 'unsafe-inline'; script-src 'nonce-${nonce}';">`)
+    .replace(/<script>/g, `<script nonce="${nonce}">`);
+}
+
 before(async () => {
   work = fs.mkdtempSync(path.join(os.tmpdir(), 'gfec-preview-'));
   profile = path.join(work, 'chromium');
   execFileSync(process.execPath, [path.join(src, 'editors', 'vscode', 'scripts', 'prepare.js'), path.join(work, 'ext')],
                { env: { ...process.env, GFEC_SOURCE_DIR: src } });
-  // The webview's policy (editors/vscode/src/webview.ts): the page's own scripts by nonce, no network.
-  const nonce = 'dGVzdG5vbmNl';
-  const html = fs.readFileSync(path.join(work, 'ext', 'media', 'preview.html'), 'utf8')
-    .replace('<head>', `<head>\n<meta http-equiv="Content-Security-Policy" content="default-src 'none'; img-src data:; style-src 'unsafe-inline'; script-src 'nonce-${nonce}';">`)
-    .replace(/<script>/g, `<script nonce="${nonce}">`);
+  const html = withPolicy(fs.readFileSync(path.join(work, 'ext', 'media', 'preview.html'), 'utf8'));
   pageFile = path.join(work, 'preview.html');
   fs.writeFileSync(pageFile, html);
   fs.copyFileSync(path.join(src, 'samples', 'cleanbot.iface'), path.join(work, 'cleanbot.iface'));
@@ -371,6 +376,28 @@ test('sub-charts: a click in an instance leads to the sub-chart\'s file; its fra
     last = (await posted(page)).slice(-1)[0];
     assert.deepEqual(last, { type: 'reveal', uri: cleanupUri, range: tidy.range });
     assert.deepEqual(errors, [], 'no console error');
+  } finally {
+    await page.close();
+  }
+});
+
+test('the run replay\'s page (gfec run --html) runs under the webview\'s policy', async () => {
+  const html = path.join(work, 'run.html');
+  execFileSync(gfec, ['run', path.join(src, 'samples', 'line_follower.sfc'), '--inputs',
+                      path.join(src, 'tests', 'viewer', 'line_follower_inputs.csv'), '--html', html]);
+  fs.writeFileSync(html, withPolicy(fs.readFileSync(html, 'utf8')));
+  const page = await browser.newPage();
+  const errors = [];
+  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+  page.on('pageerror', (e) => errors.push(String(e)));
+  try {
+    await page.goto('file://' + html, { waitUntil: 'load' });
+    assert.ok(await page.evaluate(() => !!window.gfecViewer), 'the page\'s script ran');
+    assert.ok((await page.$$('#chart g.node')).length >= 8, 'the chart is drawn');
+    await page.keyboard.press('End');
+    assert.ok(await page.evaluate(() => window.gfecViewer.tick()) > 1);
+    assert.ok((await page.$$('#chart g.node.lit')).length >= 1, 'the active places are lit');
+    assert.deepEqual(errors, [], 'no console error (none refused by the policy)');
   } finally {
     await page.close();
   }
