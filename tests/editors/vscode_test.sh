@@ -35,18 +35,18 @@ setup)
   if [ -d node_modules ] && cmp -s package-lock.json node_modules/.gfec-lock; then
     echo "node packages are up to date in $ext"
   else
-    npm ci --no-audit --no-fund
+    npm ci --no-audit --no-fund --ignore-scripts   # no package needs its install script to build the .vsix
     cp package-lock.json node_modules/.gfec-lock
   fi
   ;;
 package)
   npx vsce package --skip-license --allow-missing-repository -o gfec.vsix
   listing=$(unzip -Z1 gfec.vsix)
-  for f in extension/package.json extension/language-configuration.json extension/readme.md \
+  for f in extension/package.json extension/language-configuration.json extension/README.md \
            extension/out/extension.js extension/out/preview.js extension/out/replay.js extension/out/webview.js extension/out/monitor.js \
            extension/syntaxes/gfec.tmLanguage.json extension/media/preview.html \
            extension/node_modules/vscode-languageclient/node.js extension/node_modules/vscode-jsonrpc/package.json; do
-    grep -qx "$f" <<<"$listing" || fail "the .vsix lacks $f"
+    grep -qix "$f" <<<"$listing" || fail "the .vsix lacks $f"   # vsce 3 writes readme.md, 2 README.md
   done
   # Sources, build tools and the test tools stay out.
   if grep -E '^extension/(src/|scripts/|tsconfig|node_modules/(typescript|@vscode/vsce|vscode-tmgrammar-test)/)' <<<"$listing"; then
