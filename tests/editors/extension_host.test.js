@@ -189,12 +189,28 @@ test('typing: one request after the delay, not one per keystroke; the cursor fol
   await until(() => client.requests.length === 2, 'one request once the typing paused');
   await sleep(400);
   assert.equal(client.requests.length, 2, 'and only one');
-  fake.events.change.fire({ document: { uri: uriOf('file:///work/other.fsm') } });
+  fake.events.change.fire({ document: { uri: uriOf('file:///work/notes.txt'), languageId: 'plaintext' } });
   await sleep(400);
-  assert.equal(client.requests.length, 2, 'another document\'s change asks nothing');
-  editor.selection = { active: new Position(3, 1) };
+  assert.equal(client.requests.length, 2, 'a change of another kind of text asks nothing');
+  fake.events.change.fire({ document: { uri: uriOf('file:///work/cleanbot.iface'), languageId: 'gfec-iface' } });
+  await until(() => client.requests.length === 3, 'a change of an interface the chart may import asks again');
+  assert.deepEqual(client.requests[2].params, { textDocument: { uri: CHART } }, 'for the chart shown');
+  // Another chart becomes active: the panel follows it; an interface does not move it.
+  const iface = { document: { uri: uriOf('file:///work/cleanbot.iface'), languageId: 'gfec-iface' }, selection: { active: new Position(0, 0) } };
+  fake.events.active.fire(iface);
+  await sleep(50);
+  assert.equal(client.requests.length, 3);
+  const other = { document: { uri: uriOf('file:///work/mission.fsm'), languageId: 'gfec-fsm' }, selection: { active: new Position(0, 0) } };
+  fake.events.active.fire(other);
+  await until(() => client.requests.length === 4, 'the new chart asked for');
+  assert.deepEqual(client.requests[3].params, { textDocument: { uri: 'file:///work/mission.fsm' } });
+  await until(() => panel.title === 'Chart: mission.fsm', 'the panel named for it');
+  other.selection = { active: new Position(3, 1) };
+  fake.events.selection.fire({ textEditor: other });
+  assert.deepEqual(panel.posted.at(-1), { type: 'cursor', uri: 'file:///work/mission.fsm', position: { line: 3, character: 1 } });
+  const count = panel.posted.length;
   fake.events.selection.fire({ textEditor: editor });
-  assert.deepEqual(panel.posted.at(-1), { type: 'cursor', uri: CHART, position: { line: 3, character: 1 } });
+  assert.equal(panel.posted.length, count, 'the cursor of a chart not shown is not posted');
   preview.dispose();
 });
 
@@ -262,11 +278,14 @@ test('reveal: the element\'s file opens in the editor\'s column with the cursor 
   preview.dispose();
 });
 
-test('open without a gfec editor: a message, no panel', () => {
-  vscode.window.activeTextEditor = { document: { uri: uriOf('file:///x.txt'), languageId: 'plaintext' } };
+test('open without a chart\'s editor (no gfec text, or an interface): a message, no panel', () => {
   const preview = new ChartPreview(context(), () => fakeClient([good]));
+  vscode.window.activeTextEditor = { document: { uri: uriOf('file:///x.txt'), languageId: 'plaintext' } };
+  preview.open();
+  vscode.window.activeTextEditor = { document: { uri: uriOf('file:///x.iface'), languageId: 'gfec-iface' } };
   preview.open();
   assert.equal(fake.panels.length, 0);
+  assert.equal(fake.infos.length, 2);
   assert.match(fake.infos[0], /open a chart/);
   preview.dispose();
 });

@@ -8,6 +8,11 @@ export function isGfec(languageId: string): boolean {
   return LANGUAGES.includes(languageId);
 }
 
+/** The kinds that have a picture: charts and plans. */
+export function isChart(languageId: string): boolean {
+  return ['gfec-sfc', 'gfec-fsm', 'gfec-plan'].includes(languageId);
+}
+
 /** gfec.path: a path, or a name looked up on PATH. */
 export function gfecPath(): string {
   return vscode.workspace.getConfiguration('gfec').get<string>('path') || 'gfec';

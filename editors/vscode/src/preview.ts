@@ -7,7 +7,7 @@ import * as fs from 'node:fs';
 import * as path from 'node:path';
 import * as vscode from 'vscode';
 import type { LanguageClient } from 'vscode-languageclient/node';
-import { isGfec } from './languages';
+import { isChart, isGfec } from './languages';
 import { withPolicy } from './webview';
 
 interface LspRange { start: { line: number; character: number }; end: { line: number; character: number } }
@@ -26,11 +26,14 @@ export class ChartPreview implements vscode.Disposable {
   constructor(private readonly context: vscode.ExtensionContext,
               private readonly client: () => LanguageClient | undefined) {
     this.subscriptions.push(
+      // The picture depends on the files the chart imports too (interfaces, sub-charts): any
+      // gfec text's change asks again.
       vscode.workspace.onDidChangeTextDocument((e) => {
-        if (this.panel && e.document === this.document) this.schedule();
+        if (this.panel && this.document && (e.document === this.document || isGfec(e.document.languageId))) this.schedule();
       }),
+      // The panel follows the active chart; an interface or a test file leaves it as it is.
       vscode.window.onDidChangeActiveTextEditor((editor) => {
-        if (this.panel && editor && isGfec(editor.document.languageId) && editor.document !== this.document) {
+        if (this.panel && editor && isChart(editor.document.languageId) && editor.document !== this.document) {
           this.document = editor.document;
           void this.refresh();
         }
@@ -47,7 +50,7 @@ export class ChartPreview implements vscode.Disposable {
 
   open(): void {
     const editor = vscode.window.activeTextEditor;
-    if (!editor || !isGfec(editor.document.languageId)) {
+    if (!editor || !isChart(editor.document.languageId)) {
       void vscode.window.showInformationMessage('gfec: open a chart (.sfc, .fsm, .plan) to preview it.');
       return;
     }
