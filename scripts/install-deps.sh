@@ -9,6 +9,7 @@ packages=(
   man-db  # man -l: tests/cli/install_files.sh renders docs/man/gfec.1 as `man gfec` shows it
   bash-completion  # tests/cli/install_files.sh: bash-completion loads the installed completion
   dpkg-dev  # dpkg-shlibdeps: the .deb's Depends (cmake/GfecPackage.cmake, tests/cli/deb_package.sh)
+  unzip  # the VS Code extension's .vsix contents (tests/editors/vscode_test.sh)
   clang-format  # scripts/format.sh --check, a ctest test
   gcc-arm-none-eabi  # the cross build and freestanding engine tests (Cortex-M4)
   gcc-avr avr-libc libsimavr-dev  # AVR programs and tools/avr-run (docs/targets.md)
@@ -17,11 +18,9 @@ packages=(
   picolibc-arm-none-eabi qemu-system-arm
   gcc-riscv64-unknown-elf picolibc-riscv64-unknown-elf qemu-system-misc
   arduino-mk  # the Arduino sketch's make build (examples/arduino-line-follower); brings arduino-core-avr
-  chromium   # the run viewer's and the VS Code preview's browser tests (tests/viewer)
-  unzip  # the VS Code extension's .vsix contents checked (tests/editors/vscode_test.sh)
+  chromium   # the run viewer's browser test (tests/viewer)
 )
-# Node (the SARIF schema and TextMate grammar tests, the VS Code extension's build) may come from
-# another repo already.
+# Node (for the SARIF schema and TextMate grammar tests) may come from another repo already.
 command -v npm >/dev/null 2>&1 || packages+=(nodejs npm)
 missing=()
 for p in "${packages[@]}"; do
