@@ -2,6 +2,7 @@
 
 #include "driver.h"
 #include "fmt_command.h"
+#include "lsp_command.h"
 #include "run_command.h"
 #include "test_command.h"
 
@@ -21,6 +22,7 @@ const std::vector<Command> kCommands = {
     {"run", "gfec run CHART --inputs TRACE.csv", "run a chart in the reference interpreter, tick by tick", run_command},
     {"test", "gfec test FILE... [OPTIONS]", "run scenario tests on the interpreter and the C engine", test_command},
     {"fmt", "gfec fmt [--check] FILE...", "lay out chart text in its canonical form, in place", fmt_command},
+    {"lsp", "gfec lsp [--stdio]", "the language server for editors, on stdin and stdout", lsp_command},
 };
 
 /// The compiler's other forms: modes of its options rather than commands of their own.
