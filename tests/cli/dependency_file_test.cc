@@ -5,7 +5,7 @@
 
 using namespace gfec;
 
-TEST_CASE("dependency file: outputs depend on the chart and its imports; -MP adds empty rules") {
+TEST_CASE("dependency file: outputs depend on the chart and its imports, -MP adds empty rules") {
   CHECK(dependency_rule({{"engine.c"}, {"engine.h"}}, {"lf.sfc", "linebot.iface"}, false) ==
         "engine.c engine.h: lf.sfc linebot.iface\n");
   CHECK(dependency_rule({{"engine.c"}}, {"lf.sfc", "a.iface", "b.iface"}, true) ==
@@ -45,7 +45,7 @@ TEST_CASE("dependency file: make's special characters are escaped") {
         "$(OBJ)/e.c $$(OBJ)/e.h: x.sfc\n");
 }
 
-TEST_CASE("dependency file: ':' is escaped; what make cannot read in a rule is named") {
+TEST_CASE("dependency file: ':' is escaped, what make cannot read in a rule is named") {
   CHECK(make_escape("c:/a b.iface") == "c\\:/a\\ b.iface");
   CHECK(make_unreadable("charts/a#b$c d:e%f.iface") == "");
   CHECK(make_unreadable("e1\nall:touch${IFS}PWNED") == "a newline");

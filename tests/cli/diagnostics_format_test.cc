@@ -180,7 +180,7 @@ TEST_CASE("text diagnostics: colours as gcc's defaults, only when asked") {
   CHECK(render_text(r.diag.all().front(), r.sources).find('\33') == std::string::npos);
 }
 
-TEST_CASE("text diagnostics: -Werror's label is gcc's [-Werror=NAME]; the check stays the rule") {
+TEST_CASE("text diagnostics: -Werror's label is gcc's [-Werror=NAME], the check stays the rule") {
   WarningOptions w;
   w.error_override[static_cast<int>(Warning::UnreachablePlace)] = 1;
   FrontEnd r("t.sfc", "sfc T {\n  initial place A;\n  place B;\n}\n", w);

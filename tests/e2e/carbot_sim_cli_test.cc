@@ -137,7 +137,7 @@ TEST_CASE("carbot-sim: never writes over the world, the chart, a FIFO or one fil
     CHECK(entry.path().filename().string().find("tmp") == std::string::npos);
 }
 
-TEST_CASE("carbot-sim: command-line numbers are finite and in range; the run has budgets", "[e2e][cli]") {
+TEST_CASE("carbot-sim: command-line numbers are finite and in range, the run has budgets", "[e2e][cli]") {
   e2e::TempDir dir;
   const std::string base =
       q(e2e::source("samples/line_follower.sfc")) + " --world " + q(e2e::source("sim/worlds/oval.json")) + " -q";
@@ -154,7 +154,7 @@ TEST_CASE("carbot-sim: command-line numbers are finite and in range; the run has
   CHECK(out.find("physics steps; the budget is") != std::string::npos);
 }
 
-TEST_CASE("carbot-sim: --timeout stops a chart that loops forever; no temporary folder is left", "[e2e][cli]") {
+TEST_CASE("carbot-sim: --timeout stops a chart that loops forever, no temporary folder is left", "[e2e][cli]") {
   e2e::TempDir dir;
   const std::string tmp = dir.file("tmp");
   std::filesystem::create_directories(tmp);

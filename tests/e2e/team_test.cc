@@ -277,7 +277,7 @@ TEST_CASE("team: with reports two seconds late the others run into the carrier b
   CHECK(robots_in(r, "Left") == 2);
 }
 
-TEST_CASE("team: a lossy exchange is repeatable with its seed; trace and picture carry every robot", "[e2e][team]") {
+TEST_CASE("team: a lossy exchange is repeatable with its seed, trace and picture carry every robot", "[e2e][team]") {
   const std::string lossy = "--exchange-loss 0.9 --seed 7";
   const e2e::SimRun a = e2e::run_sim("samples/fetch_team.fsm", "sim/worlds/fetch_room.json", 20, lossy);
   const e2e::SimRun b = e2e::run_sim("samples/fetch_team.fsm", "sim/worlds/fetch_room.json", 20, lossy);

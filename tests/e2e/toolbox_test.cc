@@ -44,7 +44,7 @@ TEST_CASE("toolbox: a wall straight ahead means a left turn of 90 degrees (wall 
   CHECK(fit.distance == Approx(0.5).margin(0.01));
 }
 
-TEST_CASE("toolbox: a wall on the right needs no turn; one on the left a half turn", "[e2e][toolbox]") {
+TEST_CASE("toolbox: a wall on the right needs no turn, one on the left a half turn", "[e2e][toolbox]") {
   const auto right = fit_wall(sweep({{{0, -1}, 0.3}}), kSonarX, 4.0);
   REQUIRE(right.found);
   CHECK(carbot::deg(right.turn) == Approx(0).margin(1));

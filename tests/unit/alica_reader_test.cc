@@ -605,7 +605,7 @@ TEST_CASE("alica json: a UTF-8 byte order mark before the document is skipped", 
   CHECK(!alica::parse_json("\xef\xbb{ }", error));
 }
 
-TEST_CASE("alica: plans nest at most 200 deep; deeper is an error at the reference, not a crash", "[alica]") {
+TEST_CASE("alica: plans nest at most 200 deep, deeper is an error at the reference, not a crash", "[alica]") {
   // c<i>.pml has one state that runs c<i+1>.pml: a chain of `n` plans, each one deeper.
   auto chain = [](int n) {
     std::map<std::string, std::string> files;

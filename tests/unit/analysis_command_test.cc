@@ -63,7 +63,7 @@ TEST_CASE("gfec: the analyses run in every compile, as named warnings that -Werr
   CHECK(quiet.out == "");
 }
 
-TEST_CASE("gfec --analyze: the summary counts what the warnings above it report; a transition out of a place "
+TEST_CASE("gfec --analyze: the summary counts what the warnings above it report, a transition out of a place "
           "never active is dead") {
   std::string dir = scratch_dir("analysis_summary");
   // X and Y: no transition leads in (the validator's finding); C: only after an unconditional

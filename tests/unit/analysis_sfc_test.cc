@@ -106,7 +106,7 @@ sfc Starve {
         "it without a condition takes the activation first [-Wdead-transition]\n");
 }
 
-TEST_CASE("analysis sfc: forks whose branches never meet; places with no way out are ends, not deadlocks") {
+TEST_CASE("analysis sfc: forks whose branches never meet, places with no way out are ends, not deadlocks") {
   auto c = compile(R"(
 sfc Apart {
   initial place S;

@@ -84,7 +84,7 @@ TEST_CASE("c layout: a ring with one token is sequential and 1-bounded", "[c_bac
   CHECK(l.index_bits == 16);  // 300 places do not fit a byte
 }
 
-TEST_CASE("c layout: a fork is bounded by its weights; counters are a byte", "[c_backend][layout]") {
+TEST_CASE("c layout: a fork is bounded by its weights, counters are a byte", "[c_backend][layout]") {
   // Start -> (A0..A99); each Ai -> Bi -> Ai. Weights: Start 100, the rest 1: total 100. The
   // transitions have no condition, so the states explored are all of them: no place holds more
   // than 1 (analysis/activation_bounds.h keeps the tighter bound).
@@ -156,7 +156,7 @@ TEST_CASE("c layout: auto takes the scalable form for a large chart little of wh
   CHECK(l.form == Layout::Form::Sparse);
 }
 
-TEST_CASE("c layout: a chart that pumps activation is unbounded; counters saturate", "[c_backend][layout]") {
+TEST_CASE("c layout: a chart that pumps activation is unbounded, counters saturate", "[c_backend][layout]") {
   ChartBuilder b("Pump", model::Chart::Kind::Sfc);
   b.place("P", true);
   b.place("Q");

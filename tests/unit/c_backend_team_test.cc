@@ -193,7 +193,7 @@ TEST_CASE("c engine team: team(S) counts the other agents' last reports, agent()
                "agent 3\ncond Move -> 0\nact Count(3, 1, 2)\nstate Wait status 0\n");
 }
 
-TEST_CASE("c engine team: X_report and X_set_agent ignore what is out of range; X_init forgets",
+TEST_CASE("c engine team: X_report and X_set_agent ignore what is out of range, X_init forgets",
           "[c_backend][run][team]") {
   auto compiled = compile_chart({{"chart.fsm", kCensus}}, "chart.fsm", "engine.c");
   REQUIRE(!compiled->diag.has_errors());
@@ -202,7 +202,7 @@ TEST_CASE("c engine team: X_report and X_set_agent ignore what is out of range; 
   CHECK(h.find("int8_t reports[Census_TEAM_SIZE];") != std::string::npos);
   CHECK(h.find("void Census_set_agent(Census *m, int agent);") != std::string::npos);
   CHECK(h.find("void Census_report(Census *m, int agent, int state);") != std::string::npos);
-  CHECK(h.find("int Census_team(const Census *m, int state);") != std::string::npos);
+  CHECK(h.find("int32_t Census_team(const Census *m, int state);") != std::string::npos);
   fs::path dir = scratch_dir("team_api");
   for (const auto &f : compiled->files) write_file(dir / base_name(f.path), f.contents);
   write_file(dir / "main.c", R"(#include "engine.h"

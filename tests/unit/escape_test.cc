@@ -17,7 +17,7 @@ TEST_CASE("escape: control characters are escaped as <U+XXXX>, the tab stays", "
   CHECK(printable("") == "");
 }
 
-TEST_CASE("escape: UTF-8 stays but for C1 controls and bidirectional marks; other bytes as <xx>", "[support]") {
+TEST_CASE("escape: UTF-8 stays but for C1 controls and bidirectional marks, other bytes as <xx>", "[support]") {
   // é and € stay; CSI (U+009B) and RIGHT-TO-LEFT OVERRIDE (U+202E) are escaped.
   CHECK(printable("\xc3\xa9\xe2\x82\xac\xc2\x9b\xe2\x80\xae") == "\xc3\xa9\xe2\x82\xac<U+009B><U+202E>");
   CHECK(printable("\xd8\x9c\xe2\x80\x8e\xe2\x81\xa6\xe2\x81\xa9") == "<U+061C><U+200E><U+2066><U+2069>");

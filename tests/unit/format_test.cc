@@ -123,7 +123,7 @@ void check_kept(const std::string &name, const std::string &original, const std:
 
 }  // namespace
 
-TEST_CASE("fmt: indentation, spaces around operators and blank lines are set; line breaks and comments kept", "[fmt]") {
+TEST_CASE("fmt: indentation, spaces around operators and blank lines are set, line breaks and comments kept", "[fmt]") {
   auto out = format("t.sfc", "// head\n\n\n\nsfc   S{\nperiod 10ms;var int n=0;\n\n\n"
                              "   initial place A{entry{n+=1;}Go(-n*2,!true); }  // trailing\n"
                              "place B {}\n"
@@ -148,7 +148,7 @@ TEST_CASE("fmt: text that does not parse is reported and not formatted", "[fmt]"
   CHECK(errors.find("unterminated comment") != std::string::npos);
 }
 
-TEST_CASE("fmt: CR and CRLF line ends become LF; no line ends in blanks; a byte-order mark stays", "[fmt]") {
+TEST_CASE("fmt: CR and CRLF line ends become LF, no line ends in blanks, a byte-order mark stays", "[fmt]") {
   auto out = format("t.fsm", "\xEF\xBB\xBF// x \t\rfsm F {\r\n  initial state A;\r}");
   REQUIRE(out);
   CHECK(*out == "\xEF\xBB\xBF// x\nfsm F {\n  initial state A;\n}\n");

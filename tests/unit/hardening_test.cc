@@ -105,7 +105,7 @@ TEST_CASE("hardening: chains of 200 terms still compile with every back end", "[
   }
 }
 
-TEST_CASE("hardening: a flat else-if chain is not nesting; a nested if is", "[hardening]") {
+TEST_CASE("hardening: a flat else-if chain is not nesting, a nested if is", "[hardening]") {
   std::string dir = scratch_dir("hardening_else_if");
   // A place whose entry block is `if (x == 0) {...} else if (x == 1) {...} ...`, n branches, or
   // n ifs each inside the one before.

@@ -31,7 +31,7 @@ TEST_CASE("interpreter expressions: ints are C's 32-bit ints, truncating") {
         "call I(3)\ncall I(-3)\ncall I(-1)\ncall I(1)\ncall I(14)\n");
 }
 
-TEST_CASE("interpreter expressions: usual arithmetic conversions; literals are double") {
+TEST_CASE("interpreter expressions: usual arithmetic conversions, literals are double") {
   // 0.1 is a double literal: F's argument is the double product rounded once to float.
   CHECK(first_tick_calls("F(Sf()); D(Sf()); D(0.1); I(Si() / 2 * 2.5); F(1 / 3); D(1.0 / 3);") ==
         "call Sf() = 0.100000001\ncall F(0.100000001)\n"
@@ -51,7 +51,7 @@ TEST_CASE("interpreter expressions: a const float is a float") {
   CHECK(first_tick_calls("D(K);", "const float K = 0.1;") == "call D(0.10000000149011612)\n");
 }
 
-TEST_CASE("interpreter expressions: && and || short-circuit; other operands go left to right") {
+TEST_CASE("interpreter expressions: && and || short-circuit, other operands go left to right") {
   auto c = compile(R"(
 sfc E {
   initial place A;

@@ -89,7 +89,7 @@ TEST_CASE("interpreter fsm: failure, hooks and the postcondition check") {
         std::string::npos);
 }
 
-TEST_CASE("interpreter fsm: timers restart on entry; vars persist") {
+TEST_CASE("interpreter fsm: timers restart on entry, vars persist") {
   auto c = compile(R"(
 fsm Blink {
   period 100ms;

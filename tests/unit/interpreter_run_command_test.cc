@@ -37,7 +37,7 @@ TEST_CASE("gfec run: the line follower over a CSV trace, every layer") {
                      kLineFollowerLeftSeesLine);
 }
 
-TEST_CASE("gfec run: --observable prints what an engine's caller sees; --ticks") {
+TEST_CASE("gfec run: --observable prints what an engine's caller sees, --ticks") {
   auto r = run_command(gfec_exe + " run " + samples + "/cleanup.fsm --ticks 2 --observable");
   CHECK(r.exit_code == 0);
   CHECK(r.out ==

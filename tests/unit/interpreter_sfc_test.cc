@@ -133,7 +133,7 @@ sfc Pump {
                                               "tick 3\nfire T0: S -> (S, P)\nav 1 3\n");
 }
 
-TEST_CASE("interpreter sfc: all exits before all entries; a place that loses and regains stays") {
+TEST_CASE("interpreter sfc: all exits before all entries, a place that loses and regains stays") {
   auto c = compile(R"(
 sfc Blocks {
   initial place A { entry { Log(1); } Log(2); exit { Log(3); } }

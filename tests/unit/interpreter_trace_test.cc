@@ -82,7 +82,7 @@ TEST_CASE("input trace: a tick column makes a sparse trace, a row holding until 
   CHECK(plain.trace->last_tick() == 2);
 }
 
-TEST_CASE("input trace: ticks that do not go up from 1 are located errors; a misspelt column gets a suggestion") {
+TEST_CASE("input trace: ticks that do not go up from 1 are located errors, a misspelt column gets a suggestion") {
   Trace t("tick, Black\n2, 1\n2, 0\n1, 0\n0, 1\n");
   CHECK(t.errors() ==
         "trace.csv:3:1: error: tick 2 is not after the previous row's tick 2: the rows go up in tick order [trace]\n"

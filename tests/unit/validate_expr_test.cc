@@ -567,7 +567,7 @@ sfc S {
 )--");
 }
 
-TEST_CASE("validate: if conditions must be bool; both branches are checked", "[validate]") {
+TEST_CASE("validate: if conditions must be bool, both branches are checked", "[validate]") {
   Validated r({{"t.sfc", R"--(import "bot.iface";
 sfc S {
   period 10ms;

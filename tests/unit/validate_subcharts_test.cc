@@ -91,7 +91,7 @@ sfc Top { period 5ms; initial place A runs Mid; initial place B runs Leaf; A -> 
   CHECK(r.model.charts[2].transitions[0].condition->path == test::ids<model::PlaceId>({0, 0, 0}));
 }
 
-TEST_CASE("validate: sub-charts: an unknown chart after 'runs' gets a did-you-mean; a function is no chart",
+TEST_CASE("validate: sub-charts: an unknown chart after 'runs' gets a did-you-mean, a function is no chart",
           "[validate][subcharts]") {
   Validated r({{"t.sfc", R"--(import "bot.iface";
 fsm Fetch { initial state Go; success state Got; Go -> Got when Arrived(); }
@@ -123,7 +123,7 @@ t.sfc:6:9: warning: place 'C' can never become active [-Wunreachable-place]
 }
 
 TEST_CASE(
-    "validate: sub-charts: succeeded/failed need a place that runs an fsm; active paths resolve in the right chart",
+    "validate: sub-charts: succeeded/failed need a place that runs an fsm, active paths resolve in the right chart",
     "[validate][subcharts]") {
   Validated r({{"t.sfc", R"--(import "bot.iface";
 fsm Fetch { initial state Go; state Grab; success state Got; failure state Lost; Go -> Grab; Grab -> Got; Go -> Lost; }
@@ -233,7 +233,7 @@ t.sfc:2:51: error: 'active()' as a statement has no effect [type-mismatch]
 )--");
 }
 
-TEST_CASE("validate: sub-charts: a sub-chart's period must be its parent's; two parents must agree",
+TEST_CASE("validate: sub-charts: a sub-chart's period must be its parent's, two parents must agree",
           "[validate][subcharts]") {
   Validated r({{"t.sfc", R"--(import "bot.iface";
 fsm Fast { period 20ms; initial state Go { DriveToItem(); } success state Got; Go -> Got when elapsed(Go) >= 100ms; }
