@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Formats the hand-written C and C++ of the repository with clang-format (the .clang-format files:
-# the root one for the compiler, its support, back ends, driver, viewer, tools and tests; Google's style in sim/, runtime/ and
+# the root one for the compiler, its support, back ends, driver, language server, viewer, tools and tests; Google's style in sim/, runtime/ and
 # tests/runtime/). Generated files (tests/golden/) are left as gfec wrote them.
 #
 #   scripts/format.sh            rewrite the files in place

@@ -37,7 +37,7 @@ help=$("$root/bin/gfec" --help)
 for words in "gfec test FILE" "-x LANG" "chart text"; do
   grep -qF -- "$words" <<<"$help" || fail "gfec --help does not mention '$words'"
 done
-for command in "" run test; do
+for command in "" run test lsp; do
   cited=$("$root/bin/gfec" $command --help | sed -n 's/^Documentation: man gfec; \([^ ]*\)$/\1/p')
   [ -n "$cited" ] || fail "gfec $command --help cites no installed guide: $("$root/bin/gfec" $command --help | tail -1)"
   [ -f "$cited" ] || fail "gfec $command --help cites $cited, not installed"

@@ -77,7 +77,7 @@ _gfec() {
       return ;;
   esac
   if [[ $COMP_CWORD -eq 1 ]]; then
-    COMPREPLY=($(compgen -W 'run test' -- "$cur"))
+    COMPREPLY=($(compgen -W 'run test lsp' -- "$cur"))
   fi
   COMPREPLY+=($(compgen -f -X '!*.@(sfc|fsm|plan|iface|toolbox|pml)' -- "$cur"))
   compopt -o plusdirs 2>/dev/null
