@@ -43,6 +43,22 @@ void did_close(Session &, const nlohmann::json &);
 void did_save(Session &, const nlohmann::json &);
 void advertise_text_sync(nlohmann::json &);
 void ignore(Session &, const nlohmann::json &);
+// Editing features over the compiler's tokens, tree and model (lsp/features/).
+nlohmann::json completion(Session &, const nlohmann::json &);
+void advertise_completion(nlohmann::json &);
+nlohmann::json semantic_tokens_full(Session &, const nlohmann::json &);
+void advertise_semantic_tokens(nlohmann::json &);
+nlohmann::json folding_range(Session &, const nlohmann::json &);
+void advertise_folding_range(nlohmann::json &);
+nlohmann::json code_action(Session &, const nlohmann::json &);
+void advertise_code_action(nlohmann::json &);
+nlohmann::json formatting(Session &, const nlohmann::json &);
+void advertise_formatting(nlohmann::json &);
+nlohmann::json code_lens(Session &, const nlohmann::json &);
+nlohmann::json execute_command(Session &, const nlohmann::json &);
+void advertise_code_lens(nlohmann::json &);
+nlohmann::json chart_picture(Session &, const nlohmann::json &);
+void advertise_chart_picture(nlohmann::json &);
 }  // namespace handlers
 
 }  // namespace gfec::lsp

@@ -15,8 +15,10 @@ using nlohmann::json;
 
 class Server {
 public:
-  Server(std::ostream &out, std::ostream &log, const FileSystem &disk)
-      : out_(out), log_(log), session_(disk, [this](const std::string &m, json p) { send_notification(m, p); }) {}
+  Server(std::ostream &out, std::ostream &log, const FileSystem &disk, ToolRunner tools)
+      : out_(out), log_(log), session_(disk, [this](const std::string &m, json p) { send_notification(m, p); }) {
+    session_.tools = std::move(tools);
+  }
 
   /// Handles one frame's body; false once `exit` came.
   bool handle(const std::string &body);
@@ -124,8 +126,8 @@ void Server::notification(const std::string &method, const json &params) {
 
 }  // namespace
 
-int serve(std::istream &in, std::ostream &out, std::ostream &log, const FileSystem &disk) {
-  Server server(out, log, disk);
+int serve(std::istream &in, std::ostream &out, std::ostream &log, const FileSystem &disk, ToolRunner tools) {
+  Server server(out, log, disk, std::move(tools));
   for (;;) {
     Frame f = read_frame(in);
     if (f.status == Frame::Status::End) break;

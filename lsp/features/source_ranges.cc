@@ -2,8 +2,6 @@
 
 namespace gfec::lsp {
 
-nlohmann::json to_json(Position p) { return {{"line", p.line}, {"character", p.character}}; }
-
 const TextIndex &SourceRanges::index(FileId file) {
   auto it = indexes_.find(file);
   if (it == indexes_.end()) it = indexes_.emplace(file, TextIndex(sources_.file(file).text())).first;

@@ -27,6 +27,4 @@ private:
   std::map<FileId, TextIndex> indexes_;
 };
 
-nlohmann::json to_json(Position p);
-
 }  // namespace gfec::lsp

@@ -4,16 +4,13 @@
 // a byte that is not UTF-8 one (as editors show it: one replacement character).
 #pragma once
 
+#include "positions.h"
+
 #include <cstdint>
 #include <string_view>
 #include <vector>
 
 namespace gfec::lsp {
-
-struct Position {
-  std::uint32_t line = 0;       ///< 0-based
-  std::uint32_t character = 0;  ///< UTF-16 code units from the line's start
-};
 
 class TextIndex {
 public:
