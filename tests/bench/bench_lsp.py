@@ -7,7 +7,9 @@ Starts `GFEC lsp`, opens the ring of PLACES places (default 5000) that `GEN char
 writes, then ROUNDS times (default 20): an incremental didChange (a digit of a condition
 changed) and the time until its publishDiagnostics arrives (the version the server reports
 says which change it answers); a hover on a place; a completion in a condition. Prints the
-median and the maximum of each, in milliseconds. Measures; never fails on time.
+median and the maximum of each, in milliseconds. Then the change round trip again with the
+warnings of the static analyses off (initializationOptions.warnings): what the state-space
+explorations cost of each round trip. Measures; never fails on time.
 """
 import json
 import os
@@ -48,7 +50,7 @@ class Client:
             m = self.read()
             if m.get("id") == self.next_id and "method" not in m:
                 if "error" in m:
-                    raise SystemExit(f"{method}: {m['error']}")
+                    raise RuntimeError(f"{method}: {m['error']['message']}")
                 return m.get("result")
 
     def notify(self, method, params):
@@ -67,7 +69,25 @@ def ms(seconds):
 
 
 def row(name, samples):
-    print(f"{name:<40} {statistics.median(samples):9.1f} {max(samples):9.1f}")
+    if samples:
+        print(f"{name:<40} {statistics.median(samples):9.1f} {max(samples):9.1f}")
+    else:
+        print(f"{name:<40} (not served by this gfec)")
+
+
+def timed(samples, call):
+    """Appends call()'s time in ms to samples; a method the server does not have is left out."""
+    start = time.perf_counter()
+    try:
+        call()
+    except RuntimeError:
+        return
+    samples.append(ms(time.perf_counter() - start))
+
+
+# The warnings whose checks explore a chart's state space (docs/verification.md).
+ANALYSES = ["unreachable-place", "dead-transition", "conflict", "deadlock", "trap-state", "unsafe-place",
+            "unbounded-place", "dead-join", "unjoined-fork", "shadowed-transition", "timer-rounding"]
 
 
 def main():
@@ -75,18 +95,27 @@ def main():
     places = int(sys.argv[3]) if len(sys.argv) > 3 else 5000
     rounds = int(sys.argv[4]) if len(sys.argv) > 4 else 20
     text = subprocess.run([gen, "chart", "ring", str(places)], check=True, capture_output=True, text=True).stdout
+    session(gfec, text, places, rounds, {}, full=True)
+    session(gfec, text, places, rounds, {"warnings": ["no-" + w for w in ANALYSES]}, full=False)
+
+
+def session(gfec, text, places, rounds, options, full):
     lines = text.split("\n")
     path = f"/nonexistent-gfec-bench/ring{places}.sfc"  # an unsaved buffer: never read from disk
     uri = "file://" + path
     client = Client([gfec, "lsp"])
-    client.request("initialize", {"processId": os.getpid(), "rootUri": None, "capabilities": {}})
+    client.request("initialize", {"processId": os.getpid(), "rootUri": None, "capabilities": {},
+                                  "initializationOptions": options})
     client.notify("initialized", {})
     start = time.perf_counter()
     client.notify("textDocument/didOpen",
                   {"textDocument": {"uri": uri, "languageId": "gfec", "version": 1, "text": text}})
     client.wait_diagnostics(uri, 1)
-    print(f"ring of {places} places, {len(lines)} lines, {len(text)} bytes; {rounds} rounds")
-    print(f"{'didOpen -> publishDiagnostics (once)':<40} {ms(time.perf_counter() - start):9.1f}")
+    opened = ms(time.perf_counter() - start)
+    if full:
+        print(f"ring of {places} places, {len(lines)} lines, {len(text)} bytes; {rounds} rounds")
+        print(f"{'':<40} {'median ms':>9} {'max ms':>9}")
+        print(f"{'didOpen -> publishDiagnostics (once)':<40} {opened:9.1f}")
 
     # The line `transition T<k>: P<k> -> ... when Go(<k>);` of the middle transition: its
     # condition's argument is edited, which keeps the chart valid (Go(i) takes any int).
@@ -109,18 +138,16 @@ def main():
         change.append(ms(time.perf_counter() - start))
         if any(d.get("severity") == 1 for d in diagnostics):
             raise SystemExit(f"the edit broke the chart: {diagnostics[:1]}")
-        start = time.perf_counter()
-        client.request("textDocument/hover", {"textDocument": {"uri": uri},
-                                              "position": {"line": place_line, "character": 9}})
-        hover.append(ms(time.perf_counter() - start))
-        start = time.perf_counter()
-        client.request("textDocument/completion", {"textDocument": {"uri": uri},
-                                                   "position": {"line": line_no, "character": column - 3}})
-        complete.append(ms(time.perf_counter() - start))
-    print(f"{'':<40} {'median ms':>9} {'max ms':>9}")
-    row("didChange -> publishDiagnostics", change)
-    row("hover (after the change)", hover)
-    row("completion in a condition", complete)
+        timed(hover, lambda: client.request("textDocument/hover", {
+            "textDocument": {"uri": uri}, "position": {"line": place_line, "character": 9}}))
+        timed(complete, lambda: client.request("textDocument/completion", {
+            "textDocument": {"uri": uri}, "position": {"line": line_no, "character": column - 3}}))
+    if full:
+        row("didChange -> publishDiagnostics", change)
+        row("hover (after the change)", hover)
+        row("completion in a condition", complete)
+    else:
+        row("the same, static analyses' warnings off", change)
     client.request("shutdown", None)
     client.notify("exit", None)
     client.proc.wait(timeout=10)
