@@ -1,5 +1,6 @@
 #include "compiled_document.h"
 
+#include "lexer.h"
 #include "session.h"
 
 namespace gfec::lsp {
@@ -43,6 +44,36 @@ bool CompiledDocument::reads(const std::string &path) const {
   for (const auto &p : compilation_->loaded.paths)
     if (normal_path(p) == wanted) return true;
   return false;
+}
+
+const NameUse *CompiledDocument::name_at(Position p) const {
+  if (!has_main_) return nullptr;
+  return compilation_->name_uses.at(main_, static_cast<std::uint32_t>(offset_at(p)));
+}
+
+Token CompiledDocument::token_at(std::size_t offset) const {
+  if (!has_main_) return {};
+  Diagnostics scratch;  // the file's lexical errors are reported by its compilation already
+  Lexer lexer(compilation_->sources, main_, scratch);
+  for (Token t = lexer.next(); t.kind != Tok::End; t = lexer.next()) {
+    if (t.range.begin > offset) break;
+    if (offset <= t.range.end && t.kind != Tok::Error) return t;
+  }
+  return {};
+}
+
+const ast::File *CompiledDocument::syntax_of(FileId file) const {
+  for (const auto &f : compilation_->loaded.program.files)
+    if (f && f->id == file) return f.get();
+  return nullptr;
+}
+
+std::string_view CompiledDocument::text_of(const SourceRange &r) const {
+  const auto &sources = compilation_->sources;
+  if (!sources.knows(r.file)) return {};
+  const std::string &text = sources.file(r.file).text();
+  if (r.begin > r.end || r.end > text.size()) return {};
+  return std::string_view(text).substr(r.begin, r.end - r.begin);
 }
 
 }  // namespace gfec::lsp

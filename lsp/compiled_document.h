@@ -6,6 +6,7 @@
 
 #include "pipeline/compilation.h"
 #include "positions.h"
+#include "token.h"
 
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -41,6 +42,18 @@ public:
   /// Whether the compilation read the file at `path` (normalised): it must be redone when that
   /// file's buffer changes.
   bool reads(const std::string &path) const;
+
+  // ---- the element at a position
+  /// The name written at `p` in the document, as the validator resolved it (a declaration or a
+  /// use; name_uses.h), or null: no name there, or the validator did not run (a syntax error).
+  const NameUse *name_at(Position p) const;
+  /// The token of the document's text over byte `offset`, lexed by the compiler's lexer (a
+  /// keyword, an identifier...); Tok::End if none.
+  Token token_at(std::size_t offset) const;
+  /// The syntax tree of the file `file` (null if it did not parse into one).
+  const ast::File *syntax_of(FileId file) const;
+  /// The source text of `r`.
+  std::string_view text_of(const SourceRange &r) const;
 
 private:
   const Session &session_;

@@ -53,7 +53,10 @@ const CompiledDocument &Session::compiled(const std::string &uri) {
   Cached &c = compiled_[uri];
   if (!c.document || c.stale) {
     c.document.reset();  // the old model points into its sources: gone before the new one is made
-    c.document = std::make_unique<CompiledDocument>(*this, uri, d.path, front_end, overlay_);
+    pipeline::FrontEndOptions options = front_end;
+    options.keep_syntax_tree = true;  // outlines, hover
+    options.record_name_uses = true;  // definition, references, rename
+    c.document = std::make_unique<CompiledDocument>(*this, uri, d.path, options, overlay_);
     c.stale = false;
   }
   return *c.document;

@@ -71,7 +71,7 @@ std::string outcome_list(const Callee &c) {
 std::optional<model::Expr> lower_out_arg(Context &cx, PlanScope &s, const ast::Expr *arg, const model::TemplateParam &p,
                                          const Callee &c) {
   if (!arg) return std::nullopt;
-  const Symbol *sym = arg->kind == ast::Expr::Kind::Name ? s.names.find(arg->name.text) : nullptr;
+  const Symbol *sym = arg->kind == ast::Expr::Kind::Name ? s.names.resolve(arg->name) : nullptr;
   if (arg->kind == ast::Expr::Kind::Name && !sym && !cx.c_names.find(arg->name.text))
     return lower_formula(arg, cx, s, false);  // reports the unknown name
   if (!sym || sym->kind != Sym::ConfigEntry) {
@@ -124,7 +124,7 @@ Callee plan_callee(Context &cx, model::PlanId index) {
 
 model::ActorId resolve_actor(Context &cx, PlanScope &s, const ast::Name &name) {
   if (name.text.empty()) return {};
-  const Symbol *sym = s.names.find(name.text);
+  const Symbol *sym = s.names.resolve(name);
   if (sym && sym->kind == Sym::Actor) return sym->id<model::ActorId>();
   // An actor that lost its name to an earlier declaration: the clash is reported already.
   for (std::size_t i = 0; sym && i < s.ast.actors.size(); ++i)
