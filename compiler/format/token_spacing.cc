@@ -26,9 +26,10 @@ bool space_between(Tok left, bool left_unary, Tok right) {
   default: break;
   }
   if (left == Tok::LParen || left == Tok::Dot) return false;
-  if (left_unary) return false;  // `-speed`, `!(a && b)`
-  // A call, and the scenario tests' `state(S)`, hug their bracket; `if (`, `-> (`, `&& (` do not.
-  if (right == Tok::LParen) return left != Tok::Ident && left != Tok::KwState;
+  if (left == Tok::LBrace && right == Tok::RBrace) return false;  // an empty block: `place C {}`
+  if (left_unary) return false;                                   // `-speed`, `!(a && b)`
+  // A call, and `team(S)` and the scenario tests' `state(S)` hug their bracket; `if (`, `-> (`, `&& (` do not.
+  if (right == Tok::LParen) return left != Tok::Ident && left != Tok::KwState && left != Tok::KwTeam;
   return true;
 }
 

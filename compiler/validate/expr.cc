@@ -237,6 +237,11 @@ std::optional<model::Expr> lower_active(const ast::Expr &e, ExprScope &s, bool s
       suggest(d, names[k].text, candidates);
       return std::nullopt;
     }
+    // Looked up in the sub-chart's tree, not a namespace: recorded here for the language server.
+    if (s.cx.uses)
+      s.cx.uses->list.push_back({names[k].range, inner.places[place.index()].name.range,
+                                 inner.kind == ast::Chart::Kind::Fsm ? Sym::State : Sym::Place,
+                                 static_cast<int>(place.index())});
     x.path.push_back(place);
     chart = sub;
   }

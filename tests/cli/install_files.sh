@@ -126,6 +126,10 @@ expect --agents -- gfec run blink.sfc --ag
 expect alica -- gfec run -x a
 expect -Wall -- gfec run blink.sfc -Wal
 expect blink.test -- gfec test ""
+expect blink.sfc blink.test board.iface -- gfec fmt ""
+[[ " $(offers gfec fmt "") " == *" plan.pml "* ]] && fail "gfec fmt <Tab> offers an ALICA plan, which it does not format"
+expect --check -- gfec fmt --ch
+expect fmt -- gfec f
 [[ " $(offers gfec test "") " == *" blink.sfc "* ]] && fail "gfec test <Tab> offers a chart, not a test file"
 expect --reference-only --junit -x -- gfec test -
 expect report.xml -- gfec test --junit r

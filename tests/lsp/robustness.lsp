@@ -62,6 +62,34 @@
 {"method":"textDocument/publishDiagnostics","params":{"uri":"${root}/b.sfc","diagnostics":[
  {"code":"syntax","severity":1,"message":"expected identifier after 'place', found end of file"},
  {"code":"syntax","message":"expected '}' at end of input","relatedInformation":[{"location":{"range":{"start":{"line":0,"character":6}}},"message":"to match this '{'"}]}]}}
+# Requests on the broken file are answered: no name resolved, so hover and definition give
+# null, prepareRename an error that says why; documentSymbol an empty outline (the parser
+# makes no chart of a file cut off inside it; symbols.lsp has one of a repaired tree).
+// send
+{"jsonrpc":"2.0","id":20,"method":"textDocument/hover","params":{"textDocument":{"uri":"${root}/b.sfc"},"position":{"line":0,"character":5}}}
+// expect
+{"id":20,"result":null}
+// send
+{"jsonrpc":"2.0","id":21,"method":"textDocument/definition","params":{"textDocument":{"uri":"${root}/b.sfc"},"position":{"line":0,"character":5}}}
+// expect
+{"id":21,"result":null}
+// send
+{"jsonrpc":"2.0","id":22,"method":"textDocument/prepareRename","params":{"textDocument":{"uri":"${root}/b.sfc"},"position":{"line":0,"character":5}}}
+// expect
+{"id":22,"error":{"code":-32803,"message":"the file has errors that stop gfec before it resolves names"}}
+// send
+{"jsonrpc":"2.0","id":23,"method":"textDocument/documentSymbol","params":{"textDocument":{"uri":"${root}/b.sfc"}}}
+// expect
+{"id":23,"result":[]}
+# Parameters of the wrong shape: InvalidParams.
+// send
+{"jsonrpc":"2.0","id":24,"method":"textDocument/hover","params":{"textDocument":{"uri":"${root}/b.sfc"},"position":{"line":"one"}}}
+// expect
+{"id":24,"error":{"code":-32602}}
+// send
+{"jsonrpc":"2.0","id":25,"method":"textDocument/hover","params":[]}
+// expect
+{"id":25,"error":{"code":-32602}}
 // send
 {"jsonrpc":"2.0","method":"textDocument/didChange","params":{"textDocument":{"uri":"${root}/b.sfc","version":2},"contentChanges":[
  {"range":{"start":{"line":1,"character":500},"end":{"line":90,"character":0}},"text":" P { }\n}\n"}]}}

@@ -46,6 +46,16 @@ test "lights up" of Blink {
 {"jsonrpc":"2.0","id":4,"method":"workspace/symbol","params":{"query":"lights"}}
 // expect
 {"id":4,"result":[{"name":"test \"lights up\"","kind":6,"location":{"uri":"${root}/blink.test"}}]}
+# A syntax error inside a place: the validator does not run, the outline is still there.
+// send
+{"jsonrpc":"2.0","method":"textDocument/didChange","params":{"textDocument":{"uri":"${root}/blink.sfc","version":2},"contentChanges":[
+ {"range":{"start":{"line":5,"character":31},"end":{"line":5,"character":40}},"text":""}]}}
+// expect
+{"method":"textDocument/publishDiagnostics","params":{"uri":"${root}/blink.sfc","version":2,"diagnostics":[{"code":"syntax","message":"expected an expression, found ';'"}]}}
+// send
+{"jsonrpc":"2.0","id":5,"method":"textDocument/documentSymbol","params":{"textDocument":{"uri":"${root}/blink.sfc"}}}
+// expect
+{"id":5,"result":[{"name":"Blink","children":[{"name":"count"},{"name":"Off"},{"name":"On"}]}]}
 // send
 {"jsonrpc":"2.0","id":99,"method":"shutdown"}
 // expect
