@@ -4,6 +4,7 @@
 #include "text_index.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
@@ -36,6 +37,14 @@ const char *const kModifiers[] = {"declaration", "readonly", "defaultLibrary"};
 
 bool is_type_word(std::string_view s) {
   for (const char *t : {"bool", "int", "float", "double", "void", "string", "object"})
+    if (s == t) return true;
+  return false;
+}
+
+/// Words that are keywords inside a `test` block only (docs/language.md §1), and the `of` and
+/// `agents` of its header.
+bool is_test_word(std::string_view s) {
+  for (const char *t : {"tick", "set", "expect", "called", "calls", "status", "agent", "of", "agents"})
     if (s == t) return true;
   return false;
 }
@@ -84,6 +93,8 @@ private:
     std::vector<int> stack;  // the chart each open brace belongs to
     int chart = -1, charts = 0;
     int pending_chart = -1;
+    bool test_header = false;           // after `test`, before its `{`
+    std::size_t test_depth = SIZE_MAX;  // the depth of the open `test` block's brace
     for (std::size_t i = 0; i < t_.size(); ++i) {
       const Token &tok = t_[i];
       const Tok k = tok.kind;
@@ -93,15 +104,23 @@ private:
       if (k == Tok::LBrace) {
         stack.push_back(chart);
         if (pending_chart >= 0) chart = pending_chart, pending_chart = -1;
+        if (test_header) test_depth = stack.size(), test_header = false;
         emit(Operator);
         continue;
       }
       if (k == Tok::RBrace) {
+        if (stack.size() == test_depth) test_depth = SIZE_MAX;
         if (!stack.empty()) chart = stack.back(), stack.pop_back();
         emit(Operator);
         continue;
       }
       if (k == Tok::KwSfc || k == Tok::KwFsm || k == Tok::KwPlan) pending_chart = charts++;
+      if (k == Tok::KwTest) test_header = true;
+      if (k == Tok::Ident && (test_header || test_depth != SIZE_MAX) && is_test_word(tok.text) &&
+          kind(i + 1) != Tok::LParen) {
+        emit(Keyword);
+        continue;
+      }
       if (is_keyword(k)) {
         emit(Keyword);
         continue;

@@ -120,6 +120,24 @@ TEST_CASE("Semantic tokens classify declarations and uses", "[lsp]") {
   CHECK(seen[{2, 7, 11}] == "string");
 }
 
+TEST_CASE("Semantic tokens: a test block's own keywords", "[lsp]") {
+  json legend = semantic_tokens_legend();
+  const std::string text = "test \"t\" of Line {\n  tick 2;\n  set Black = true;\n  expect called Go;\n}\nvar tick;\n";
+  json data = semantic_tokens(text)["data"];
+  std::vector<std::string> types;
+  for (std::size_t i = 0; i < data.size(); i += 5) types.push_back(legend["tokenTypes"][data[i + 3].get<int>()]);
+  // test "t" of Line { tick 2 ; set Black = true ; expect called Go ; } var tick ;
+  REQUIRE(types.size() == 21);
+  CHECK(types[2] == "keyword");    // of
+  CHECK(types[5] == "keyword");    // tick
+  CHECK(types[8] == "keyword");    // set
+  CHECK(types[9] == "variable");   // Black
+  CHECK(types[13] == "keyword");   // expect
+  CHECK(types[14] == "keyword");   // called
+  CHECK(types[15] == "variable");  // Go
+  CHECK(types[19] == "variable");  // `tick` outside a test is a name
+}
+
 TEST_CASE("Folding ranges: blocks, comment runs and import groups", "[lsp]") {
   json folds = folding_ranges(kChart);
   CHECK(folds.size() == 3);
