@@ -33,7 +33,7 @@ const std::vector<Method> &methods() {
       {"$/cancelRequest", nullptr, h::ignore},
       {"$/setTrace", nullptr, h::ignore},
       {"workspace/didChangeConfiguration", nullptr, h::ignore},
-      {"workspace/didChangeWatchedFiles", nullptr, h::ignore},
+      {"workspace/didChangeWatchedFiles", nullptr, h::did_change_watched_files},
   };
   return table;
 }

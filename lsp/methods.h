@@ -43,6 +43,7 @@ void did_close(Session &, const nlohmann::json &);
 void did_save(Session &, const nlohmann::json &);
 void advertise_text_sync(nlohmann::json &);
 void ignore(Session &, const nlohmann::json &);
+void did_change_watched_files(Session &, const nlohmann::json &);
 nlohmann::json hover(Session &, const nlohmann::json &);
 void advertise_hover(nlohmann::json &);
 nlohmann::json definition(Session &, const nlohmann::json &);

@@ -72,6 +72,19 @@ std::vector<std::string> Session::dependents(const std::string &uri) const {
   return uris;
 }
 
+std::vector<std::string> Session::disk_file_changed(const std::string &path) {
+  const std::string normal = normal_path(path);
+  std::vector<std::string> uris;
+  for (const auto &d : documents_)
+    if (normal_path(d.second.path) == normal) return uris;
+  for (auto &c : compiled_)
+    if (c.second.document->reads(normal)) {
+      c.second.stale = true;
+      uris.push_back(c.first);
+    }
+  return uris;
+}
+
 std::string Session::uri_of_path(const std::string &path) const {
   const std::string wanted = normal_path(path);
   for (const auto &d : documents_)

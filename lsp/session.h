@@ -79,6 +79,9 @@ public:
   /// The open documents other than `uri` whose last compilation read `uri`'s file: they are
   /// checked again when it changes. (Documents not compiled yet are not listed.)
   std::vector<std::string> dependents(const std::string &uri) const;
+  /// A file on disk changed (workspace/didChangeWatchedFiles): the open documents whose last
+  /// compilation read it, now stale. A file with an open buffer is read from the buffer: none.
+  std::vector<std::string> disk_file_changed(const std::string &path);
   /// The URI of a path: the open document's own when one has that path, else a file:// URI.
   std::string uri_of_path(const std::string &path) const;
 

@@ -73,6 +73,22 @@ test "lights up" of Blink {
 {"jsonrpc":"2.0","id":9,"method":"textDocument/rename","params":{"textDocument":{"uri":"${root}/blink.sfc"},"position":{"line":5,"character":9},"newName":"2x"}}
 // expect
 {"id":9,"error":{"code":-32602}}
+# a built-in function, in the test file once it is open: `active` of `expect active(On)`
+// send
+{"jsonrpc": "2.0", "method": "textDocument/didOpen", "params": {"textDocument": {"uri": "${root}/blink.test", "languageId": "gfec-test", "version": 1, "text": "import \"blink.sfc\";\ntest \"lights up\" of Blink {\n  set ready = true;\n  tick;\n  expect active(On) && called led_on;\n}\n"}}}
+// expect
+{"method":"textDocument/publishDiagnostics","params":{"uri":"${root}/blink.test","diagnostics":[]}}
+// send
+{"jsonrpc":"2.0","id":10,"method":"textDocument/prepareRename","params":{"textDocument":{"uri":"${root}/blink.test"},"position":{"line":4,"character":10}}}
+// expect
+{"id":10,"error":{"code":-32803,"message":"'active' is a built-in function: it cannot be renamed"}}
+# the place inside it is a name: renamed in the test and in the chart
+// send
+{"jsonrpc":"2.0","id":11,"method":"textDocument/rename","params":{"textDocument":{"uri":"${root}/blink.test"},"position":{"line":4,"character":17},"newName":"Lit"}}
+// expect
+{"id":11,"result":{"changes":{
+  "${root}/blink.sfc":[{"range":{"start":{"line":5,"character":8}},"newText":"Lit"},{"newText":"Lit"},{"newText":"Lit"}],
+  "${root}/blink.test":[{"range":{"start":{"line":4,"character":16},"end":{"line":4,"character":18}},"newText":"Lit"}]}}}
 // send
 {"jsonrpc":"2.0","id":99,"method":"shutdown"}
 // expect
