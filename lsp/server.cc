@@ -39,7 +39,13 @@ private:
   void send_error(const json &id, int code, const std::string &message) {
     send({{"jsonrpc", "2.0"}, {"id", id}, {"error", {{"code", code}, {"message", message}}}});
   }
-  void send_result(const json &id, const json &result) { send({{"jsonrpc", "2.0"}, {"id", id}, {"result", result}}); }
+  void send_result(const json &id, json result) {
+    // The result moved in, not copied by an initializer list: semantic tokens of a large chart
+    // are an array of a few hundred thousand numbers.
+    json message = {{"jsonrpc", "2.0"}, {"id", id}};
+    message["result"] = std::move(result);
+    send(message);
+  }
   void request(const json &id, const std::string &method, const json &params);
   void notification(const std::string &method, const json &params);
 

@@ -8,11 +8,18 @@ namespace gfec::lsp {
 
 TextIndex::TextIndex(std::string_view text) : text_(text) {
   starts_.push_back(0);
+  bool ascii = true;
   // \n, \r\n and \r all end a line (docs/language.md §1), as they do for LSP.
   for (std::uint32_t i = 0; i < text.size(); ++i) {
+    if (static_cast<unsigned char>(text[i]) >= 0x80) ascii = false;
     if (text[i] == '\r' && i + 1 < text.size() && text[i + 1] == '\n') ++i;
-    if (text[i] == '\n' || text[i] == '\r') starts_.push_back(i + 1);
+    if (text[i] == '\n' || text[i] == '\r') {
+      starts_.push_back(i + 1);
+      ascii_.push_back(ascii);
+      ascii = true;
+    }
   }
+  ascii_.push_back(ascii);
 }
 
 std::uint32_t TextIndex::line_end(std::uint32_t line) const {
@@ -39,12 +46,14 @@ Position TextIndex::position(std::uint32_t offset) const {
   offset = std::min<std::uint32_t>(offset, static_cast<std::uint32_t>(text_.size()));
   auto it = std::upper_bound(starts_.begin(), starts_.end(), offset);
   std::uint32_t line = static_cast<std::uint32_t>(it - starts_.begin()) - 1;
+  if (ascii_[line]) return {line, offset - starts_[line]};
   return {line, utf16_length(text_.substr(starts_[line], offset - starts_[line]))};
 }
 
 std::uint32_t TextIndex::offset(Position p) const {
   if (p.line >= starts_.size()) return static_cast<std::uint32_t>(text_.size());
   std::uint32_t i = starts_[p.line], end = line_end(p.line), units = 0;
+  if (ascii_[p.line]) return std::min(end, i + p.character);
   while (i < end && units < p.character) {
     text::Utf8 u = text::decode_utf8(text_, i);
     if (u.length == 0) {

@@ -29,6 +29,9 @@ public:
 private:
   std::string_view text_;
   std::vector<std::uint32_t> starts_;
+  /// Per line: only ASCII, so a column in code units is its byte offset from the line's start
+  /// (the common case: a position costs a binary search, not a walk along the line).
+  std::vector<bool> ascii_;
 };
 
 /// UTF-16 code units in `s`.

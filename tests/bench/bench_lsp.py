@@ -6,7 +6,9 @@
 Starts `GFEC lsp`, opens the ring of PLACES places (default 5000) that `GEN chart ring PLACES`
 writes, then ROUNDS times (default 20): an incremental didChange (a digit of a condition
 changed) and the time until its publishDiagnostics arrives (the version the server reports
-says which change it answers); a hover on a place; a completion in a condition. Prints the
+says which change it answers); a hover on a place; a completion in a condition; the semantic
+tokens and the folding ranges of the whole buffer (an editor asks for both after changes); the
+chart picture is left out (Graphviz takes minutes on 5000 places). Prints the
 median and the maximum of each, in milliseconds. Then the change round trip again with the
 warnings of the static analyses off (initializationOptions.warnings): what the state-space
 explorations cost of each round trip. Measures; never fails on time.
@@ -123,7 +125,7 @@ def session(gfec, text, places, rounds, options, full):
     line_no = next(i for i, l in enumerate(lines) if l.startswith(f"  transition T{k}:"))
     column = lines[line_no].index("Go(") + 3
     place_line = next(i for i, l in enumerate(lines) if l.startswith(f"  place P{k} "))
-    change, hover, complete = [], [], []
+    change, hover, complete, tokens, folds = [], [], [], [], []
     for r in range(rounds):
         version = r + 2
         digit = str(r % 10)
@@ -142,10 +144,14 @@ def session(gfec, text, places, rounds, options, full):
             "textDocument": {"uri": uri}, "position": {"line": place_line, "character": 9}}))
         timed(complete, lambda: client.request("textDocument/completion", {
             "textDocument": {"uri": uri}, "position": {"line": line_no, "character": column - 3}}))
+        timed(tokens, lambda: client.request("textDocument/semanticTokens/full", {"textDocument": {"uri": uri}}))
+        timed(folds, lambda: client.request("textDocument/foldingRange", {"textDocument": {"uri": uri}}))
     if full:
         row("didChange -> publishDiagnostics", change)
         row("hover (after the change)", hover)
         row("completion in a condition", complete)
+        row("semantic tokens, whole buffer", tokens)
+        row("folding ranges, whole buffer", folds)
     else:
         row("the same, static analyses' warnings off", change)
     client.request("shutdown", None)
