@@ -23,6 +23,7 @@ const std::vector<Method> &methods() {
       {"workspace/symbol", h::workspace_symbol, nullptr, h::advertise_workspace_symbol},
       {"textDocument/completion", h::completion, nullptr, h::advertise_completion},
       {"textDocument/semanticTokens/full", h::semantic_tokens_full, nullptr, h::advertise_semantic_tokens},
+      {"textDocument/semanticTokens/range", h::semantic_tokens_range},
       {"textDocument/foldingRange", h::folding_range, nullptr, h::advertise_folding_range},
       {"textDocument/codeAction", h::code_action, nullptr, h::advertise_code_action},
       {"textDocument/formatting", h::formatting, nullptr, h::advertise_formatting},

@@ -61,6 +61,7 @@ void advertise_workspace_symbol(nlohmann::json &);
 nlohmann::json completion(Session &, const nlohmann::json &);
 void advertise_completion(nlohmann::json &);
 nlohmann::json semantic_tokens_full(Session &, const nlohmann::json &);
+nlohmann::json semantic_tokens_range(Session &, const nlohmann::json &);
 void advertise_semantic_tokens(nlohmann::json &);
 nlohmann::json folding_range(Session &, const nlohmann::json &);
 void advertise_folding_range(nlohmann::json &);

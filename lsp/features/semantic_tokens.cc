@@ -192,7 +192,7 @@ nlohmann::json semantic_tokens_legend() {
           {"tokenModifiers", std::vector<std::string>(std::begin(kModifiers), std::end(kModifiers))}};
 }
 
-nlohmann::json semantic_tokens(std::string_view text) {
+nlohmann::json semantic_tokens(std::string_view text, std::uint32_t begin, std::uint32_t end) {
   LexedText lexed = lex_text(text);
   std::vector<Classified> all = Classifier(lexed).run();
   // Tokens and comments are each in text order already: a merge, not a sort.
@@ -217,6 +217,7 @@ nlohmann::json semantic_tokens(std::string_view text) {
     last_line = p.line, last_char = p.character;
   };
   for (const Classified &c : all) {
+    if (c.end <= begin || c.begin >= end) continue;
     Position from = index.position(c.begin), to = index.position(c.end);
     for (std::uint32_t line = from.line; line <= to.line; ++line) {
       std::uint32_t b = line == from.line ? c.begin : index.line_start(line);

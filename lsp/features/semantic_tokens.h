@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
 #include <string_view>
 
 namespace gfec::lsp {
@@ -13,6 +14,8 @@ namespace gfec::lsp {
 nlohmann::json semantic_tokens_legend();
 
 /// The result of semanticTokens/full for `text`: {data: [...]} in LSP's relative encoding.
-nlohmann::json semantic_tokens(std::string_view text);
+/// With `begin`/`end`, semanticTokens/range: only the tokens that overlap those bytes (an
+/// editor asks for what it shows of a large buffer).
+nlohmann::json semantic_tokens(std::string_view text, std::uint32_t begin = 0, std::uint32_t end = UINT32_MAX);
 
 }  // namespace gfec::lsp

@@ -1,9 +1,9 @@
-# Folding ranges (blocks, comment runs, import groups) and semantic tokens (the legend in
+# Folding ranges (blocks, comment runs, import groups) and semantic tokens, full and of a range (the legend in
 # docs/editors.md): both from the compiler's tokens, so they hold while the text is broken.
 // send
 {"jsonrpc":"2.0","id":1,"method":"initialize","params":{"rootUri":"${root}","capabilities":{}}}
 // expect
-{"id":1,"result":{"capabilities":{"foldingRangeProvider":true,"semanticTokensProvider":{"full":true,"legend":{
+{"id":1,"result":{"capabilities":{"foldingRangeProvider":true,"semanticTokensProvider":{"full":true,"range":true,"legend":{
  "tokenTypes":["keyword","type","function","variable","parameter","enumMember","class","string","number","comment","operator","macro","event"],
  "tokenModifiers":["declaration","readonly","defaultLibrary"]}}}}}
 # Broken on purpose (the transition lacks its `;`).
@@ -29,6 +29,13 @@
  0,0,3,0,0,  0,4,1,6,1,  0,2,1,10,0,
  1,2,7,0,0,  0,8,5,0,0,  0,6,1,5,1,  0,2,1,10,0,  0,2,2,2,0,  0,2,1,10,0,  0,1,1,10,0,  0,1,1,10,0,  0,2,1,10,0,
  1,0,1,10,0]}}
+# The range form: line 1 alone; the first token's line counts from the start of the text.
+// send
+{"jsonrpc":"2.0","id":4,"method":"textDocument/semanticTokens/range","params":{"textDocument":{"uri":"${root}/k.sfc"},
+ "range":{"start":{"line":1,"character":0},"end":{"line":1,"character":27}}}}
+// expect
+{"id":4,"result":{"data":[
+ 1,2,7,0,0,  0,8,5,0,0,  0,6,1,5,1,  0,2,1,10,0,  0,2,2,2,0,  0,2,1,10,0,  0,1,1,10,0,  0,1,1,10,0,  0,2,1,10,0]}}
 // send
 {"jsonrpc":"2.0","id":9,"method":"shutdown"}
 // expect

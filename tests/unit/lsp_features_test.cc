@@ -120,6 +120,25 @@ TEST_CASE("Semantic tokens classify declarations and uses", "[lsp]") {
   CHECK(seen[{2, 7, 11}] == "string");
 }
 
+TEST_CASE("Semantic tokens of a range are the whole text's that overlap it", "[lsp]") {
+  const std::string text = kChart;
+  json all = semantic_tokens(text)["data"];
+  // Line 8 alone: `  initial place Go { Forward(); }`.
+  TextIndex index(text);
+  json part = semantic_tokens(text, index.line_start(8), index.line_end(8))["data"];
+  REQUIRE(part.size() == 9 * 5);  // initial place Go { Forward ( ) ; }
+  CHECK(part[0] == 8);            // the first token's line, relative to the start
+  CHECK(part[1] == 2);
+  // The same tokens as in the whole text's data, apart from the first one's relative line.
+  std::vector<int> decoded_lines;
+  int line = 0;
+  for (std::size_t i = 0; i < all.size(); i += 5) {
+    line += all[i].get<int>();
+    decoded_lines.push_back(line);
+  }
+  CHECK(std::count(decoded_lines.begin(), decoded_lines.end(), 8) == 9);
+}
+
 TEST_CASE("Semantic tokens: a test block's own keywords", "[lsp]") {
   json legend = semantic_tokens_legend();
   const std::string text = "test \"t\" of Line {\n  tick 2;\n  set Black = true;\n  expect called Go;\n}\nvar tick;\n";
