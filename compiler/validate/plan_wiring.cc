@@ -41,7 +41,13 @@ std::optional<model::RuleTarget> lower_target(Context &cx, PlanScope &s, const a
 int find_outcome(Context &cx, PlanScope &s, const ast::Name &name, const Callee &c, int &guess) {
   guess = -1;
   for (std::size_t k = 0; k < c.outcomes.size(); ++k)
-    if (c.outcomes[k] == name.text) return static_cast<int>(k);
+    if (c.outcomes[k] == name.text) {
+      // Found in the template's list, not a namespace: recorded here for the language server.
+      if (cx.uses && k < c.outcome_decls.size())
+        cx.uses->list.push_back(
+            {name.range, c.outcome_decls[k]->range, c.events ? Sym::Event : Sym::ResultState, static_cast<int>(k)});
+      return static_cast<int>(k);
+    }
   if (name.text.empty()) return -1;
   std::vector<Symbol> symbols;
   for (std::size_t k = 0; k < c.outcomes.size(); ++k)
