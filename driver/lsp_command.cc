@@ -2,6 +2,7 @@
 
 #include "commands.h"
 #include "driver.h"
+#include "external_tool.h"
 #include "file_system.h"
 #include "server.h"
 
@@ -29,7 +30,7 @@ int lsp_command(int argc, const char *const *argv, std::ostream &out, std::ostre
   // The server writes frames to stdout only; the command's `out` is stdout when run by main.
   std::ios::sync_with_stdio(false);
   RealFileSystem disk;
-  return lsp::serve(std::cin, out, err, disk);
+  return lsp::serve(std::cin, out, err, disk, run_external_tool);
 }
 
 }  // namespace gfec

@@ -57,6 +57,23 @@ nlohmann::json document_symbol(Session &, const nlohmann::json &);
 void advertise_document_symbol(nlohmann::json &);
 nlohmann::json workspace_symbol(Session &, const nlohmann::json &);
 void advertise_workspace_symbol(nlohmann::json &);
+// Editing features over the compiler's tokens, tree and model (lsp/features/).
+nlohmann::json completion(Session &, const nlohmann::json &);
+void advertise_completion(nlohmann::json &);
+nlohmann::json semantic_tokens_full(Session &, const nlohmann::json &);
+nlohmann::json semantic_tokens_range(Session &, const nlohmann::json &);
+void advertise_semantic_tokens(nlohmann::json &);
+nlohmann::json folding_range(Session &, const nlohmann::json &);
+void advertise_folding_range(nlohmann::json &);
+nlohmann::json code_action(Session &, const nlohmann::json &);
+void advertise_code_action(nlohmann::json &);
+nlohmann::json formatting(Session &, const nlohmann::json &);
+void advertise_formatting(nlohmann::json &);
+nlohmann::json code_lens(Session &, const nlohmann::json &);
+nlohmann::json execute_command(Session &, const nlohmann::json &);
+void advertise_code_lens(nlohmann::json &);
+nlohmann::json chart_picture(Session &, const nlohmann::json &);
+void advertise_chart_picture(nlohmann::json &);
 }  // namespace handlers
 
 }  // namespace gfec::lsp

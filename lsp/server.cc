@@ -15,8 +15,10 @@ using nlohmann::json;
 
 class Server {
 public:
-  Server(std::ostream &out, std::ostream &log, const FileSystem &disk)
-      : out_(out), log_(log), session_(disk, [this](const std::string &m, json p) { send_notification(m, p); }) {}
+  Server(std::ostream &out, std::ostream &log, const FileSystem &disk, ToolRunner tools)
+      : out_(out), log_(log), session_(disk, [this](const std::string &m, json p) { send_notification(m, p); }) {
+    session_.tools = std::move(tools);
+  }
 
   /// Handles one frame's body; false once `exit` came.
   bool handle(const std::string &body);
@@ -37,7 +39,13 @@ private:
   void send_error(const json &id, int code, const std::string &message) {
     send({{"jsonrpc", "2.0"}, {"id", id}, {"error", {{"code", code}, {"message", message}}}});
   }
-  void send_result(const json &id, const json &result) { send({{"jsonrpc", "2.0"}, {"id", id}, {"result", result}}); }
+  void send_result(const json &id, json result) {
+    // The result moved in, not copied by an initializer list: semantic tokens of a large chart
+    // are an array of a few hundred thousand numbers.
+    json message = {{"jsonrpc", "2.0"}, {"id", id}};
+    message["result"] = std::move(result);
+    send(message);
+  }
   void request(const json &id, const std::string &method, const json &params);
   void notification(const std::string &method, const json &params);
 
@@ -124,8 +132,8 @@ void Server::notification(const std::string &method, const json &params) {
 
 }  // namespace
 
-int serve(std::istream &in, std::ostream &out, std::ostream &log, const FileSystem &disk) {
-  Server server(out, log, disk);
+int serve(std::istream &in, std::ostream &out, std::ostream &log, const FileSystem &disk, ToolRunner tools) {
+  Server server(out, log, disk, std::move(tools));
   for (;;) {
     Frame f = read_frame(in);
     if (f.status == Frame::Status::End) break;

@@ -3,6 +3,8 @@
 // every broken message gets the error the spec names, or is dropped when it cannot be answered.
 #pragma once
 
+#include "backend.h"
+
 #include <iosfwd>
 
 namespace gfec {
@@ -13,6 +15,7 @@ namespace gfec::lsp {
 
 /// Serves until `exit` or the end of the input. Returns the exit code LSP 3.17 names: 0 after
 /// `shutdown` then `exit`, 1 otherwise. `log` gets one line per message that could not be read.
-int serve(std::istream &in, std::ostream &out, std::ostream &log, const FileSystem &disk);
+/// `tools` runs the external programs a picture goes through (the driver's run_external_tool).
+int serve(std::istream &in, std::ostream &out, std::ostream &log, const FileSystem &disk, ToolRunner tools = {});
 
 }  // namespace gfec::lsp

@@ -4,6 +4,7 @@
 // buffer it read changes.
 #pragma once
 
+#include "backend.h"
 #include "compiled_document.h"
 #include "file_system.h"
 
@@ -53,6 +54,9 @@ public:
   std::vector<std::string> workspace_folders;
   /// What every compilation is given: -I folders and warnings from initializationOptions.
   pipeline::FrontEndOptions front_end;
+  /// Runs the external tools a picture goes through (Graphviz's dot for gfec/chartPicture): the
+  /// driver's run_external_tool, with its time limit. Empty: no picture, a note says so.
+  ToolRunner tools;
 
   void notify(const std::string &method, nlohmann::json params) const { notify_(method, std::move(params)); }
 

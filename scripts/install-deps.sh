@@ -20,6 +20,8 @@ packages=(
   gcc-riscv64-unknown-elf picolibc-riscv64-unknown-elf qemu-system-misc
   arduino-mk  # the Arduino sketch's make build (examples/arduino-line-follower); brings arduino-core-avr
   chromium   # the run viewer's browser test (tests/viewer)
+  neovim     # the language server driven by a real client (tests/lsp/neovim)
+  python3    # scripts/bench.sh lsp (tests/bench/bench_lsp.py)
 )
 # Node (for the SARIF schema and TextMate grammar tests) may come from another repo already.
 command -v npm >/dev/null 2>&1 || packages+=(nodejs npm)

@@ -1,7 +1,12 @@
 // Replays saved fuzz inputs (files, or every file under a folder) through the fuzz target's
 // checks without libFuzzer: the regression test of every crash the fuzzer found, runnable
 // with gcc and under the sanitizers (ctest: fuzz_regressions).
+//
+// With --lsp the inputs are language server sessions (lsp_session.h), and --random N plays N
+// pseudo-random sessions of edits and requests over each input as the document besides
+// (ctest: fuzz_lsp_sessions): the short run of the server's fuzzing that CI can afford.
 #include "fuzz_support.h"
+#include "lsp_session.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -13,11 +18,20 @@
 int main(int argc, char **argv) {
   namespace fs = std::filesystem;
   std::vector<fs::path> files;
-  bool verbose = false;
+  bool verbose = false, lsp = false;
+  unsigned random_sessions = 0;
   for (int i = 1; i < argc; ++i) {
     fs::path p = argv[i];
     if (p == "-v") {  // print what gfec says about each input
       verbose = true;
+      continue;
+    }
+    if (p == "--lsp") {
+      lsp = true;
+      continue;
+    }
+    if (p == "--random" && i + 1 < argc) {
+      random_sessions = static_cast<unsigned>(std::stoul(argv[++i]));
       continue;
     }
     if (!fs::exists(p)) continue;  // an empty folder is not kept by git
@@ -33,9 +47,17 @@ int main(int argc, char **argv) {
     std::ifstream in(f, std::ios::binary);
     std::ostringstream text;
     text << in.rdbuf();
+    if (lsp) {
+      if (verbose) std::cout << "== " << f.string() << "\n";
+      gfec::fuzz::check_lsp_session(text.str());
+      for (unsigned seed = 1; seed <= random_sessions; ++seed)
+        gfec::fuzz::check_lsp_session(gfec::fuzz::random_lsp_session(text.str(), seed));
+      continue;
+    }
     std::string said = gfec::fuzz::check_one(text.str());
     if (verbose) std::cout << "== " << f.string() << "\n" << said;
   }
-  std::cout << "replayed " << files.size() << " inputs\n";
+  if (lsp) std::cout << "played " << files.size() * (1 + random_sessions) << " language server sessions\n";
+  else std::cout << "replayed " << files.size() << " inputs\n";
   return files.empty() ? 1 : 0;
 }
