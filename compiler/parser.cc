@@ -344,11 +344,13 @@ FunctionDecl Parser::function_decl() {
 }
 
 //G const_decl: 'const' type IDENT '=' expr ';'
-//G var_decl: 'var' type IDENT [ '=' expr ] ';'
+//G var_decl: ( 'var' | 'in' | 'out' ) type IDENT [ '=' expr ] ';'
 ValueDecl Parser::value_decl() {
   std::uint32_t begin = here();
   ValueDecl v;
-  v.is_const = take().kind == Tok::KwConst;
+  const Tok kw = take().kind;
+  v.is_const = kw == Tok::KwConst;
+  v.role = kw == Tok::KwIn ? VarRole::In : kw == Tok::KwOut ? VarRole::Out : VarRole::Local;
   v.type = type_name();
   v.name = name();
   if (v.is_const) {
@@ -388,6 +390,8 @@ void Parser::chart_item(Chart &c) {
   switch (tok_.kind) {
   case Tok::KwPeriod: c.periods.push_back(period()); return;
   case Tok::KwTeam: team_decl(c); return;
+  case Tok::KwIn:
+  case Tok::KwOut:
   case Tok::KwVar:
   case Tok::KwConst: c.values.push_back(value_decl()); return;
   case Tok::KwInitial:
