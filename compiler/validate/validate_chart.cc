@@ -318,6 +318,11 @@ void validate_chart(Context &cx, model::ChartId index) {
   name_transitions(cx, scope);
   lower_values(cx, scope);
   lower_bodies(cx, scope);
+  if (!scope.ast.actions.empty() ||
+      scope.ast.places.end() != std::find_if(scope.ast.places.begin(), scope.ast.places.end(), [](const ast::Place &p) {
+        return p.extras && !p.extras->associations.empty();
+      }))
+    check_named_actions(cx, scope);
   if (scope.is_fsm()) check_fsm(cx, scope, watch);
   else check_sfc(cx, scope, watch);
   scope.out.functions.assign(scope.functions.begin(), scope.functions.end());
