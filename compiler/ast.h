@@ -119,9 +119,15 @@ struct Interface {
   SourceRange range;
 };
 
-/// `const float CRUISE = 0.6;` (file level or in a chart) and `var int laps = 0;` (in a chart).
+/// What a chart's `var` is to the chart's caller (docs/language.md §14): its own state, an input
+/// the caller sets before a tick (`in`), or an output the caller reads after one (`out`).
+enum class VarRole : std::uint8_t { Local, In, Out };
+
+/// `const float CRUISE = 0.6;` (file level or in a chart) and `var int laps = 0;`, `in bool Start;`,
+/// `out int Count = 0;` (in a chart).
 struct ValueDecl {
   bool is_const = false;
+  VarRole role = VarRole::Local;  ///< not a const: var, in or out
   TypeName type;
   Name name;
   ExprPtr init;  ///< may be null for `var`
@@ -130,14 +136,32 @@ struct ValueDecl {
 
 enum class StateKind : std::uint8_t { Normal, Success, Failure };
 
+/// In a place: `N Fill;`, `L Pump 2s;` — the place holds a named action under a qualifier
+/// (docs/language.md §14, docs/iec.md "Action control").
+struct Association {
+  Name qualifier;  ///< as written: one of N R S L D P P0 P1 SD DS SL
+  Name action;
+  std::optional<double> duration_ms;  ///< the duration, when one is written
+  SourceRange duration_range;
+  SourceRange range;
+};
+
+/// `action Fill { ... }` at chart level: a named action's body.
+struct ActionDecl {
+  Name name;
+  std::vector<Stmt> body;
+  SourceRange range;
+};
+
 /// What most places lack, kept in one heap block (Place::extras), so that a place without any
 /// of it costs a pointer (docs/performance.md).
 struct PlaceExtras {
   std::optional<Block> entry;
   std::optional<Block> exit;
   SourceRange entry_range, exit_range;
-  ExprPtr post;              ///< `post EXPR` of a terminal state
-  std::optional<Name> runs;  ///< `place P runs C`: the chart C (sub-charts)
+  ExprPtr post;                           ///< `post EXPR` of a terminal state
+  std::optional<Name> runs;               ///< `place P runs C`: the chart C (sub-charts)
+  std::vector<Association> associations;  ///< the named actions the place holds
 };
 
 /// A place of an sfc or a state of an fsm.
@@ -229,6 +253,7 @@ struct Chart {
   std::vector<ValueDecl> values;
   std::vector<Place> places;
   std::vector<Transition> transitions;
+  std::vector<ActionDecl> actions;  ///< named actions (docs/language.md §14)
   SourceRange range;
 };
 

@@ -164,9 +164,14 @@ struct Const {
 
 // ---------------------------------------------------------------- sfc and fsm
 
+/// What a var is to the chart's caller (docs/language.md §14): the chart's own state, an input the
+/// caller sets before a tick, or an output the caller reads after one.
+enum class VarRole : std::uint8_t { Local, In, Out };
+
 struct Var {
   std::string name;
   Type type = Type::Int;
+  VarRole role = VarRole::Local;
   std::optional<Expr> init;  ///< absent: zero
   SourceRange range;
 };

@@ -176,6 +176,8 @@ private:
   Place place(Chart::Kind kind);
   Block block();
   void place_body(Place &p);
+  Association association();
+  ActionDecl action_decl();
   Transition transition();
   std::vector<Name> place_list(bool &parenthesised);
   Toolbox toolbox();
@@ -344,11 +346,13 @@ FunctionDecl Parser::function_decl() {
 }
 
 //G const_decl: 'const' type IDENT '=' expr ';'
-//G var_decl: 'var' type IDENT [ '=' expr ] ';'
+//G var_decl: ( 'var' | 'in' | 'out' ) type IDENT [ '=' expr ] ';'
 ValueDecl Parser::value_decl() {
   std::uint32_t begin = here();
   ValueDecl v;
-  v.is_const = take().kind == Tok::KwConst;
+  const Tok kw = take().kind;
+  v.is_const = kw == Tok::KwConst;
+  v.role = kw == Tok::KwIn ? VarRole::In : kw == Tok::KwOut ? VarRole::Out : VarRole::Local;
   v.type = type_name();
   v.name = name();
   if (v.is_const) {
@@ -360,6 +364,13 @@ ValueDecl Parser::value_decl() {
   expect(Tok::Semi, "after the declaration");
   v.range = from(begin);
   return v;
+}
+
+/// The qualifiers of IEC 61131-3's action control (docs/iec.md).
+bool is_qualifier(std::string_view word) {
+  for (const char *q : {"N", "R", "S", "L", "D", "P", "P0", "P1", "SD", "DS", "SL"})
+    if (word == q) return true;
+  return false;
 }
 
 //G sfc: 'sfc' IDENT '{' { chart_item } '}'
@@ -383,11 +394,13 @@ Chart Parser::chart(Chart::Kind kind) {
   return c;
 }
 
-//G chart_item: period | team | var_decl | const_decl | place | state | transition
+//G chart_item: period | team | var_decl | const_decl | action_decl | place | state | transition
 void Parser::chart_item(Chart &c) {
   switch (tok_.kind) {
   case Tok::KwPeriod: c.periods.push_back(period()); return;
   case Tok::KwTeam: team_decl(c); return;
+  case Tok::KwIn:
+  case Tok::KwOut:
   case Tok::KwVar:
   case Tok::KwConst: c.values.push_back(value_decl()); return;
   case Tok::KwInitial:
@@ -395,8 +408,16 @@ void Parser::chart_item(Chart &c) {
   case Tok::KwState:
   case Tok::KwSuccess:
   case Tok::KwFailure: c.places.push_back(place(c.kind)); return;
-  case Tok::KwTransition:
   case Tok::Ident:
+    // `action` is a keyword only here, before a name (docs/language.md §14): no transition
+    // begins with two names.
+    if (tok_.text == "action" && peek().kind == Tok::Ident) {
+      c.actions.push_back(action_decl());
+      return;
+    }
+    c.transitions.push_back(transition());
+    return;
+  case Tok::KwTransition:
   case Tok::LParen: c.transitions.push_back(transition()); return;
   default:
     fail(c.kind == Chart::Kind::Sfc ? "expected a place, transition, var, const or period"
@@ -458,7 +479,7 @@ Place Parser::place(Chart::Kind) {
   return p;
 }
 
-//G place_body: '{' { 'entry' block | 'exit' block | statement } '}'
+//G place_body: '{' { 'entry' block | 'exit' block | association | statement } '}'
 void Parser::place_body(Place &p) {
   braced("", [&] {
     if (at(Tok::KwEntry) || at(Tok::KwExit)) {
@@ -477,8 +498,41 @@ void Parser::place_body(Place &p) {
       (entry ? x.entry_range : x.exit_range) = from(begin);
       return;
     }
+    // A qualifier before a name is an association; no statement begins with two names.
+    if (at(Tok::Ident) && is_qualifier(tok_.text) && peek().kind == Tok::Ident) {
+      p.extra().associations.push_back(association());
+      return;
+    }
     p.action.push_back(statement());
   });
+}
+
+//G association: QUALIFIER IDENT [ DURATION ] ';'
+Association Parser::association() {
+  std::uint32_t begin = here();
+  Association a;
+  a.qualifier = name();
+  a.action = name();
+  if (at(Tok::Duration)) {
+    Token d = take();
+    a.duration_ms = d.duration_ms;
+    a.duration_range = d.range;
+  }
+  expect(Tok::Semi, "after the action (e.g. 'N Fill;' or 'L Pump 2s;')");
+  a.range = from(begin);
+  return a;
+}
+
+//G action_decl: 'action' IDENT block
+ActionDecl Parser::action_decl() {
+  std::uint32_t begin = here();
+  advance();
+  ActionDecl a;
+  a.name = name("after 'action'");
+  if (!at(Tok::LBrace)) fail("expected '{' and the action's statements");
+  a.body = block();
+  a.range = from(begin);
+  return a;
 }
 
 //G block: '{' { statement } '}'

@@ -310,8 +310,9 @@ std::string records(const model::Model &model, model::ChartId chart, const Names
   return s + "}\n\n";
 }
 
-/// The observable lines after one agent's tick: `av`, and an fsm's `state S running`.
-std::string observable(const model::Chart &c) {
+/// The observable lines after one agent's tick: `av`, an fsm's `state S running`, and every
+/// output variable's `out NAME = VALUE` (docs/iec.md).
+std::string observable(const model::Chart &c, const Names &fields) {
   const std::string &t = c.name;
   std::string s = dump_with_counts(t);
   if (c.kind != model::Chart::Kind::Fsm) s += "    (void)@H@place_names; /* the hooks' */\n";
@@ -323,7 +324,46 @@ std::string observable(const model::Chart &c) {
             .text(" ")
             .string(fmt::format("{0}_status(m) == 0 ? \"running\" : {0}_status(m) > 0 ? \"succeeded\" : \"failed\"", t))
             .end();
+  for (model::VarId i : c.vars.ids())
+    if (c.vars[i].role == model::VarRole::Out)
+      s += Line("    ")
+               .text(fmt::format("out {} = ", c.vars[i].name))
+               .value(c.vars[i].type, "m->" + fields.var_field[i])
+               .end();
   return s + "}\n\n";
+}
+
+/// Table inputs of the chart's `in` variables, `[tick - 1]`, with whether the tick sets it.
+std::string input_var_tables(const model::Chart &c, const HarnessOptions &o) {
+  std::string s;
+  const std::uint64_t ticks = std::max<std::uint64_t>(o.table.ticks, 1);
+  for (model::VarId id : c.vars.ids()) {
+    const model::Var &v = c.vars[id];
+    if (v.role != model::VarRole::In) continue;
+    std::string values, given;
+    for (std::uint64_t t = 1; t <= ticks; ++t) {
+      std::optional<interp::Value> x;
+      if (t <= o.table.ticks && o.table.input) x = o.table.input(v, t);
+      values += (t > 1 ? ", " : "") + c_constant(x ? *x : interp::Value::zero(v.type), v.type);
+      given += (t > 1 ? ", " : "") + std::string(x ? "1" : "0");
+    }
+    s += fmt::format("static const {} @H@var{}[{}] = {{{}}};\n", c_type(v.type), id.index(), ticks, values);
+    s += fmt::format("static const unsigned char @H@var{}_set[{}] = {{{}}};\n", id.index(), ticks, given);
+  }
+  return s.empty() ? s
+                   : std::string("/* What the caller sets each input variable to, by tick (1: set). */\n") + s + "\n";
+}
+
+/// Before a tick: the caller sets the chart's `in` variables (docs/iec.md "The scan").
+std::string set_input_vars(const model::Chart &c, const Names &fields, const HarnessOptions &o) {
+  std::string s;
+  if (o.inputs != HarnessInputs::Table) return s;
+  for (model::VarId id : c.vars.ids())
+    if (c.vars[id].role == model::VarRole::In)
+      s += fmt::format("        if (@H@var{0}_set[@H@tick_count - 1] != 0u) {{\n"
+                       "            {1}[a].{2} = @H@var{0}[@H@tick_count - 1];\n        }}\n",
+                       id.index(), kEngines, fields.var_field[id]);
+  return s;
 }
 
 /// The compact log's lines after a tick: the active places by name (an fsm's state and status),
@@ -489,7 +529,7 @@ HarnessSources write_harness(const model::Model &model, model::ChartId chart, co
                    t, kEngines, n);
   if (o.context) g += fmt::format("static int @H@device[{}]; /* the engines' contexts */\n", n);
   g += "\n";
-  if (o.inputs == HarnessInputs::Table) g += input_tables(model, functions, o);
+  if (o.inputs == HarnessInputs::Table) g += input_tables(model, functions, o) + input_var_tables(c, o);
   // The unused-warnings of the places' names (not every log prints them) are kept quiet by the
   // hooks and the dumps that do.
   const bool names = o.log != HarnessLog::Records;
@@ -498,7 +538,7 @@ HarnessSources write_harness(const model::Model &model, model::ChartId chart, co
   if (o.log != HarnessLog::Records) g += hooks(c, t, o);
   switch (o.log) {
   case HarnessLog::Records: g += records(model, chart, *fields, instances); break;
-  case HarnessLog::Observable: g += observable(c); break;
+  case HarnessLog::Observable: g += observable(c, *fields); break;
   case HarnessLog::Compact: g += compact(model, chart, *fields, instances); break;
   }
   const bool after_init = o.log == HarnessLog::Records;
@@ -521,6 +561,7 @@ HarnessSources write_harness(const model::Model &model, model::ChartId chart, co
                                     : Line("    ").text("tick ").unsigned_("@H@tick_count").end();
   g += fmt::format("    for (a = 0; a < {}; ++a) {{\n", n);
   if (team) g += Line("        ").text("agent ").integer("a").end();
+  g += set_input_vars(c, *fields, o);
   g += fmt::format("        @H@agent = a;\n        {}(&{}[a]);\n", fields->run_fn, kEngines);
   if (!after_init) g += fmt::format("        @H@dump(&{}[a]);\n", kEngines);
   g += "    }\n";

@@ -19,6 +19,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -68,6 +69,9 @@ struct HarnessTable {
   /// What `function` returns to agent `agent` during tick `tick` (from 1), a value of its result
   /// type; every call in that tick gets the same value.
   std::function<interp::Value(model::FunctionId function, std::uint64_t tick, int agent)> value;
+  /// What the caller sets input `var` (an `in` variable, docs/language.md §14) to before tick
+  /// `tick`, a value of its type; none: it keeps its value. Unset: inputs are never set.
+  std::function<std::optional<interp::Value>(const model::Var &var, std::uint64_t tick)> input;
 };
 
 struct HarnessOptions {

@@ -66,7 +66,15 @@ void state_struct(CodeWriter &w, const EngineContext &c) {
   }
   if (c.root) {
     w.line("/* The state of one engine. The type is complete so that the caller can allocate it (several");
-    w.line("   engines may run side by side); only the functions below use its fields. */");
+    bool io = false;
+    for (const model::Var &v : c.chart.vars) io = io || v.role != model::VarRole::Local;
+    if (io) {
+      // docs/iec.md "The C engine of an imported program": the caller's part of the struct.
+      w.line("   engines may run side by side); only the functions below use its fields, but for the");
+      w.line("   inputs, which the caller sets before a tick, and the outputs, which it reads after. */");
+    } else {
+      w.line("   engines may run side by side); only the functions below use its fields. */");
+    }
     w.line("typedef struct {0} {0};", c.type);
   } else {
     w.line("/* The state of the instance of {} run by {} (engine.c only uses it). */", c.chart.name, c.owner);
@@ -85,9 +93,14 @@ void state_struct(CodeWriter &w, const EngineContext &c) {
     rows.emplace_back(fmt::format("{} {}[{}];", c.report_type(), c.reports, c.team_size),
                       "by agent, the state it last reported; -1: none yet");
   }
-  for (model::VarId v : c.chart.vars.ids())
-    rows.emplace_back(fmt::format("{} {};", c_type(c.chart.vars[v].type), c.var_field[v]),
-                      fmt::format("var {}", c.chart.vars[v].name));
+  for (model::VarId v : c.chart.vars.ids()) {
+    const model::Var &var = c.chart.vars[v];
+    rows.emplace_back(fmt::format("{} {};", c_type(var.type), c.var_field[v]),
+                      var.role == model::VarRole::In ? fmt::format("in {}: the caller sets it before a tick", var.name)
+                      : var.role == model::VarRole::Out
+                          ? fmt::format("out {}: the caller reads it after a tick", var.name)
+                          : fmt::format("var {}", var.name));
+  }
   for (model::PlaceId p : c.chart.places.ids())
     if (c.sub[p])
       rows.emplace_back(fmt::format("{} {};", c.sub[p]->struct_type, c.sub_field[p]),

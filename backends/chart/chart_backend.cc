@@ -99,7 +99,12 @@ void chart(CodeWriter &w, const model::Model &m, model::ChartId index) {
   if (c.team > 0) w.line("team {};", c.team);
   for (const auto &k : m.consts)
     if (k.chart == index) value(w, m, index, "const", k.type, k.name, &k.value);
-  for (const auto &v : c.vars) value(w, m, index, "var", v.type, v.name, v.init ? &*v.init : nullptr);
+  for (const auto &v : c.vars)
+    value(w, m, index,
+          v.role == model::VarRole::In    ? "in"
+          : v.role == model::VarRole::Out ? "out"
+                                          : "var",
+          v.type, v.name, v.init ? &*v.init : nullptr);
   for (const auto &p : c.places) place(w, m, index, p, fsm);
   for (const auto &t : c.transitions) {
     std::string line = fsm ? "" : "transition ";

@@ -104,11 +104,15 @@ void chart_fields(const model::Model &m, const model::Chart &c, Json &doc) {
   doc["transitions"] = std::move(transitions);
 
   Json vars = Json::array();
-  for (const auto &v : c.vars)
-    vars.push_back({{"name", v.name},
-                    {"type", model::type_name(v.type)},
-                    {"init", v.init ? expression(m, scope, *v.init) : Json(nullptr)},
-                    {"location", location(m, v.range)}});
+  for (const auto &v : c.vars) {
+    Json j = {{"name", v.name},
+              {"type", model::type_name(v.type)},
+              {"init", v.init ? expression(m, scope, *v.init) : Json(nullptr)},
+              {"location", location(m, v.range)}};
+    // Only inputs and outputs carry a role (docs/model-json.md): a chart's own var has none.
+    if (v.role != model::VarRole::Local) j["role"] = v.role == model::VarRole::In ? "in" : "out";
+    vars.push_back(std::move(j));
+  }
   doc["vars"] = std::move(vars);
 
   Json consts = Json::array();

@@ -8,6 +8,7 @@
 #include "value.h"
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace gfec::interp {
@@ -23,6 +24,13 @@ public:
   /// parameter types) during tick `tick` (counted from 1).
   /// The interpreter converts the result to the function's type; a void function's is ignored.
   virtual Value call(model::FunctionId function, const std::vector<Value> &args, std::uint64_t tick) = 0;
+  /// The value the caller gives the chart's input `var` (an `in` variable, docs/language.md §14)
+  /// before tick `tick`; none: the input keeps the value it has.
+  virtual std::optional<Value> input(const model::Var &var, std::uint64_t tick) {
+    (void)var;
+    (void)tick;
+    return std::nullopt;
+  }
 };
 
 /// Everything an expression can read or change while it is evaluated.

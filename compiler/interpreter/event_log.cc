@@ -8,7 +8,8 @@ Layer layer_of(EventKind kind) {
   case EventKind::Call:
   case EventKind::Av:
   case EventKind::State:
-  case EventKind::Agent: return Layer::Observable;
+  case EventKind::Agent:
+  case EventKind::Output: return Layer::Observable;
   case EventKind::Lost:
   case EventKind::Gained:
   case EventKind::Enabled: return Layer::Hooks;

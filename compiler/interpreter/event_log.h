@@ -4,7 +4,8 @@
 //   observable   what code linked with an engine can see through its API and the interface
 //                functions:  `tick 3`, `call Left_IR_Black() = true`, `call Motor(1, 0.5)`,
 //                `av 1 0 1 0` (sfc and fsm), `state Z1 running` (fsm); in a team run,
-//                `agent 1` before each agent's part of the tick
+//                `agent 1` before each agent's part of the tick; `out Valve = true` per
+//                output variable of the chart, in declaration order (docs/iec.md)
 //   hooks        what the observation hooks (-DX_HOOKS) report: `lost P`, `gained P`,
 //                `enabled T`
 //   explanation  why it happened, for people: `cond T0 = true`, `fire T0`, `exit P`,
@@ -27,7 +28,8 @@ enum class EventKind {
   Call,
   Av,
   State,
-  Agent,  // observable
+  Agent,
+  Output,  // observable
   Lost,
   Gained,
   Enabled,  // hooks

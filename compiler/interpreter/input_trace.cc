@@ -134,6 +134,20 @@ InputTrace::InputTrace(const model::Model &model, const SourceManager &sources, 
           agent = static_cast<int>(k);
         }
         model::FunctionId fn = find_function(model, name);
+        if (!fn && agent < 0) {
+          // docs/language.md §14: an input of a chart is a column as a sensing function is.
+          const model::Var *input = nullptr;
+          for (const model::Chart &c : model.charts)
+            for (const model::Var &v : c.vars)
+              if (!input && v.role == model::VarRole::In && v.name == name) input = &v;
+          if (input) {
+            for (const Column &c : columns_)
+              if (c.kind == Column::Kind::Input && c.input->name == name)
+                diag.error(f.range, ErrorKind::Trace, fmt::format("a second column for '{}'", f.text));
+            columns_.push_back({Column::Kind::Input, {}, -1, input});
+            continue;
+          }
+        }
         if (!fn) {
           auto &d =
               diag.error(f.range, ErrorKind::Trace, fmt::format("no interface function '{}' for this column", name));
@@ -167,13 +181,15 @@ InputTrace::InputTrace(const model::Model &model, const SourceManager &sources, 
         continue;
       }
       const bool tick = column.kind == Column::Kind::Tick;
-      model::Type t = tick ? model::Type::Int : model.functions[column.function].result;
+      const bool input = column.kind == Column::Kind::Input;
+      model::Type t = tick ? model::Type::Int : input ? column.input->type : model.functions[column.function].result;
       std::optional<Value> v = parse_value(fields[c].text, t);
       if (!v) {
-        diag.error(
-            fields[c].range, ErrorKind::Trace,
-            fmt::format("'{}' is not a value of type '{}'{}", fields[c].text, model::type_name(t),
-                        tick ? " (the tick column)" : fmt::format(" for '{}'", model.functions[column.function].name)));
+        diag.error(fields[c].range, ErrorKind::Trace,
+                   fmt::format("'{}' is not a value of type '{}'{}", fields[c].text, model::type_name(t),
+                               tick    ? " (the tick column)"
+                               : input ? fmt::format(" for '{}'", column.input->name)
+                                       : fmt::format(" for '{}'", model.functions[column.function].name)));
         v = Value::zero(t);
       }
       row.push_back(*v);
@@ -229,6 +245,22 @@ Value InputTrace::value(model::FunctionId function, std::uint64_t tick, int agen
 
 Value InputTrace::call(model::FunctionId function, const std::vector<Value> &, std::uint64_t tick) {
   return value(function, tick);
+}
+
+std::optional<std::size_t> InputTrace::row_at(std::uint64_t tick) const {
+  if (rows_.empty() || tick == 0) return std::nullopt;
+  if (!tick_column_) return static_cast<std::size_t>(std::min<std::uint64_t>(tick, rows_.size()) - 1);
+  auto after = std::upper_bound(ticks_.begin(), ticks_.end(), tick);
+  if (after == ticks_.begin()) return std::nullopt;
+  return static_cast<std::size_t>(after - ticks_.begin()) - 1;
+}
+
+std::optional<Value> InputTrace::input(const model::Var &var, std::uint64_t tick) {
+  std::optional<std::size_t> row = row_at(tick);
+  if (!row) return std::nullopt;
+  for (std::size_t c = 0; c < columns_.size(); ++c)
+    if (columns_[c].kind == Column::Kind::Input && columns_[c].input->name == var.name) return rows_[*row][c];
+  return std::nullopt;
 }
 
 }  // namespace gfec::interp

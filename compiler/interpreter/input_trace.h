@@ -40,6 +40,9 @@ public:
   /// What `function` returns to agent `agent` during `tick` (counted from 1).
   Value value(model::FunctionId function, std::uint64_t tick, int agent = 0) const;
   Value call(model::FunctionId function, const std::vector<Value> &args, std::uint64_t tick) override;
+  /// A column named after an input (`in` variable) of a chart gives its value; before the
+  /// first row's tick, or without a column, the input keeps its value.
+  std::optional<Value> input(const model::Var &var, std::uint64_t tick) override;
 
   /// The inputs of one agent of a team run: what its engine calls.
   class Agent : public Environment {
@@ -57,11 +60,14 @@ public:
 private:
   const model::Model &model_;
   struct Column {
-    enum class Kind { Function, Tick, Bad };
+    enum class Kind { Function, Tick, Bad, Input };
     Kind kind = Kind::Bad;
-    model::FunctionId function;  ///< Kind::Function
-    int agent = -1;              ///< the agent of `F@k`, or -1 for every agent
+    model::FunctionId function;         ///< Kind::Function
+    int agent = -1;                     ///< the agent of `F@k`, or -1 for every agent
+    const model::Var *input = nullptr;  ///< Kind::Input: a chart's `in` variable of that name
   };
+  /// The row that holds at `tick`, if any has come.
+  std::optional<std::size_t> row_at(std::uint64_t tick) const;
   std::vector<Column> columns_;
   std::vector<std::vector<Value>> rows_;  ///< by row, by column
   std::optional<std::size_t> tick_column_;

@@ -102,6 +102,10 @@ unsigned Machine::activation(PlaceId place) const {
 void Machine::run(Environment &env, EventLog *log) {
   ++tick_;
   if (log) log->add(EventKind::Tick, 0, fmt::format("tick {}", tick_));
+  // docs/iec.md "The scan": the caller sets the inputs before the tick.
+  for (model::VarId v : chart_.vars.ids())
+    if (chart_.vars[v].role == model::VarRole::In)
+      if (std::optional<Value> value = env.input(chart_.vars[v], tick_)) vars_[v] = *value;
   Frame f = frame(&env, log, tick_);
   step(f);
   end_of_tick(f);
@@ -319,6 +323,10 @@ void Machine::end_of_tick(Frame &f) {
     const char *status = status_ == 0 ? "running" : status_ > 0 ? "succeeded" : "failed";
     f.log->add(EventKind::State, 1, fmt::format("state {} {}", chart_.places.at(state_).name, status));
   }
+  // docs/iec.md "`gfec run` on a program": what the caller reads after the tick.
+  for (model::VarId v : chart_.vars.ids())
+    if (chart_.vars[v].role == model::VarRole::Out)
+      f.log->add(EventKind::Output, 1, fmt::format("out {} = {}", chart_.vars[v].name, format_value(vars_[v])));
 }
 
 }  // namespace gfec::interp

@@ -454,7 +454,14 @@ std::optional<model::Stmt> lower_assign(const ast::Stmt &st, ExprScope &s) {
     return std::nullopt;
   }
   if (sym->index < 0) return std::nullopt;
-  Type type = s.chart->out.vars[sym->id<model::VarId>()].type;
+  const model::Var &var = s.chart->out.vars[sym->id<model::VarId>()];
+  if (var.role == model::VarRole::In) {
+    diag.error(target.range, ErrorKind::NotAssignable,
+               fmt::format("cannot assign to input '{}': the chart's caller sets it before each tick", target.text))
+        .note(var.range, fmt::format("'{}' declared 'in' here; declare it 'var' or 'out' to assign it", target.text));
+    return std::nullopt;
+  }
+  Type type = var.type;
   if (st.assign_op != AssignOp::Set && !model::is_numeric(type)) {
     diag.error(target.range, ErrorKind::TypeMismatch,
                fmt::format("operator '{}' needs a numeric variable; '{}' has type {}", spelling(st.assign_op),

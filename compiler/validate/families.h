@@ -33,6 +33,8 @@ void resolve_subcharts(Context &cx);
 /// chart's names, bodies and conditions are lowered. `watch` began with the chart: its
 /// warnings are given only if it has no errors.
 void check_sfc(Context &cx, ChartScope &chart, const ErrorWatch &watch);
+/// named_actions.cc: the named actions of a chart and the associations of its places (§14).
+void check_named_actions(Context &cx, ChartScope &chart);
 void check_fsm(Context &cx, ChartScope &chart, const ErrorWatch &watch);
 
 /// validate_toolbox.cc: a toolbox and its templates, checked and lowered at once (they use no

@@ -72,6 +72,19 @@ std::vector<Edge> resolve_runs(Context &cx) {
             .note(run.teams.front().second, "it is made a team machine here");
         continue;
       }
+      // A sub-chart's caller is its parent, which sets and reads nothing: its inputs would never
+      // change (docs/language.md §14).
+      if (auto io = std::find_if(run.values.begin(), run.values.end(),
+                                 [](const ast::ValueDecl &v) { return !v.is_const && v.role != ast::VarRole::Local; });
+          io != run.values.end()) {
+        cx.diag
+            .error(name.range, ErrorKind::ChartIo,
+                   fmt::format("chart '{}' has inputs or outputs; it can only be compiled as the root, not run as a "
+                               "sub-chart",
+                               name.text))
+            .note(io->range, fmt::format("'{}' is declared here", io->name.text));
+        continue;
+      }
       cx.runs[c][p] = child;
       edges.push_back({c, p, child});
     }

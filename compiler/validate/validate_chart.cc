@@ -112,10 +112,19 @@ void declare_place(Context &cx, ChartScope &s, const ast::Place &p, model::Place
 void declare_value(Context &cx, ChartScope &s, const ast::ValueDecl &v) {
   if (!v.is_const) {
     auto type = lower_type(v.type, kScalar, "a variable", cx.diag);
+    const model::VarRole role = v.role == ast::VarRole::In    ? model::VarRole::In
+                                : v.role == ast::VarRole::Out ? model::VarRole::Out
+                                                              : model::VarRole::Local;
+    // An fsm's caller steers it through sensing functions and reads its state; inputs and
+    // outputs are an IEC program's, and an sfc's (docs/language.md §14).
+    if (role != model::VarRole::Local && s.is_fsm())
+      cx.diag.error(v.range, ErrorKind::ChartIo,
+                    fmt::format("'{}' declares an {} variable in an fsm; only an sfc has inputs and outputs",
+                                v.name.text, role == model::VarRole::In ? "'in'" : "'out'"));
     model::VarId index;
     if (type) {
       index = s.out.vars.next_id();
-      s.out.vars.push_back({std::string(v.name.text), *type, std::nullopt, v.range});
+      s.out.vars.push_back({std::string(v.name.text), *type, role, std::nullopt, v.range});
     }
     s.names.declare(v.name, Sym::Var, index, cx.diag);
     return;
@@ -310,6 +319,11 @@ void validate_chart(Context &cx, model::ChartId index) {
   name_transitions(cx, scope);
   lower_values(cx, scope);
   lower_bodies(cx, scope);
+  if (!scope.ast.actions.empty() ||
+      scope.ast.places.end() != std::find_if(scope.ast.places.begin(), scope.ast.places.end(), [](const ast::Place &p) {
+        return p.extras && !p.extras->associations.empty();
+      }))
+    check_named_actions(cx, scope);
   if (scope.is_fsm()) check_fsm(cx, scope, watch);
   else check_sfc(cx, scope, watch);
   scope.out.functions.assign(scope.functions.begin(), scope.functions.end());

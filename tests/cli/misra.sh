@@ -50,11 +50,13 @@ chain="$work/chain.fsm"
 } >"$chain"
 
 # chart|form: the samples (an fsm's readable form is its chain of tests, its scalable form a
-# switch on the state), a sequential chart of the golden tests.
+# switch on the state), a sequential chart of the golden tests, a chart with inputs and outputs.
 jobs=()
 for chart in "$source_dir"/samples/*.sfc; do jobs+=("$chart|readable" "$chart|scalable"); done
 for chart in "$source_dir"/samples/*.fsm; do jobs+=("$chart|readable" "$chart|scalable"); done
 jobs+=("$source_dir/tests/golden/c/door_scalable.sfc|scalable" "$ring|scalable" "$chain|scalable")
+# A chart with inputs and outputs (docs/language.md §14): the caller's fields.
+jobs+=("$source_dir/tests/iec/mixer.sfc|readable" "$source_dir/tests/iec/mixer.sfc|scalable")
 
 findings="$work/findings"
 : >"$findings"

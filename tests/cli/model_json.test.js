@@ -178,3 +178,16 @@ sfc Patrol {
   assert.deepEqual(doc.transitions[2].condition.tree.args[0].path, ['Retry', 'Grab', 'Closed']);
   assert.deepEqual(emit(path.join(dir, 'patrol.sfc'), ['--chart', 'Hand']).subcharts, []);
 });
+
+test('json: inputs and outputs carry their role, a chart\'s own var none (docs/language.md §14)', () => {
+  const doc = emit(path.join(SOURCE_DIR, 'tests', 'iec', 'mixer.sfc'));
+  assert.deepEqual(doc.vars.map((v) => [v.name, v.type, v.role]), [
+    ['Start', 'bool', 'in'], ['Level', 'int', 'in'], ['Valve', 'bool', 'out'],
+    ['Batches', 'int', 'out'], ['Mix', 'float', 'out'], ['Flow', 'double', 'out'],
+  ]);
+  const dir = scratch();
+  fs.writeFileSync(path.join(dir, 'own.sfc'), 'sfc Own { var int k = 1; initial place A { k += 1; } }\n');
+  const own = emit(path.join(dir, 'own.sfc'));
+  assert.equal(own.vars.length, 1);
+  assert.equal('role' in own.vars[0], false);
+});

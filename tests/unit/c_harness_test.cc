@@ -29,12 +29,26 @@ interp::Value input(const model::Model &m, model::FunctionId f, std::uint64_t ti
   }
 }
 
+/// What the caller sets input variable `v` to before `tick` (docs/language.md §14): values that
+/// vary by tick and variable, and every fourth tick nothing, so that an input keeps its value.
+std::optional<interp::Value> input_var(const model::Var &v, std::uint64_t tick) {
+  const std::size_t k = v.name.size() * 5 + tick * 3;
+  if (tick % 4 == 3) return std::nullopt;
+  switch (v.type) {
+  case Type::Bool: return interp::Value::of_bool((k / 2) % 3 != 0);
+  case Type::Int: return interp::Value::of_int(static_cast<std::int32_t>(k % 13) * 10 - 20);
+  case Type::Float: return interp::Value::of_float(static_cast<float>(k % 9) * 0.25f);
+  default: return interp::Value::of_double(static_cast<double>(k % 7) / 3);
+  }
+}
+
 class TableEnvironment : public interp::Environment {
 public:
   TableEnvironment(const model::Model &m, int agent) : m_(m), agent_(agent) {}
   interp::Value call(model::FunctionId f, const std::vector<interp::Value> &, std::uint64_t tick) override {
-    return input(m_, f, tick, agent_);
+    return ::input(m_, f, tick, agent_);
   }
+  std::optional<interp::Value> input(const model::Var &v, std::uint64_t tick) override { return input_var(v, tick); }
 
 private:
   const model::Model &m_;
@@ -71,6 +85,7 @@ std::string run_table_harness(const std::string &test, const Compiled &c, std::u
   o.agents = agents;
   o.table.ticks = ticks;
   o.table.value = [&](model::FunctionId f, std::uint64_t tick, int agent) { return input(c.model, f, tick, agent); };
+  o.table.input = input_var;
   EmitOptions emit;
   emit.chart = c.chart;
   const c_backend::HarnessSources h = c_backend::write_harness(c.model, c.chart, emit, o);
@@ -145,6 +160,35 @@ TEST_CASE("c harness: a table-driven program prints the interpreter's observable
   SECTION("a team machine of three agents") {
     auto c = compile_sample("fetch_team.fsm");
     check_against_interpreter("harness_fetch_team", *c, 15, 3);
+  }
+}
+
+TEST_CASE("c harness: a chart's inputs and outputs, set and read around each tick", "[c_harness][run][iec]") {
+  // docs/language.md §14: the caller sets `in` fields before a tick and reads `out` fields after;
+  // the observable log's `out NAME = VALUE` lines are the interpreter's, in both engine forms.
+  const std::string chart = "sfc Mixer {\n"
+                            "  period 100ms;\n"
+                            "  in bool Start;\n  in int Level = 5;\n  in double Rate;\n"
+                            "  out bool Valve;\n  out int Batches = 1;\n  out float Mix = 0.5;\n"
+                            "  out double Flow;\n  var int kept;\n"
+                            "  initial place Idle { Valve = false; }\n"
+                            "  place Filling { Valve = Level < 80; Flow = Rate * 2.0; kept += 1; }\n"
+                            "  place Settle { Batches += Level; Mix = Mix / 2.0; }\n"
+                            "  Idle -> Filling when Start;\n"
+                            "  Filling -> Settle when Level >= 40 || !Start;\n"
+                            "  Settle -> Idle when elapsed(Settle) >= 200ms;\n"
+                            "}\n";
+  for (EngineForm form : {EngineForm::Readable, EngineForm::Scalable}) {
+    auto c = compile_chart({{"mixer.sfc", chart}}, "mixer.sfc", "engine.c", false, form);
+    INFO(c->errors);
+    REQUIRE(!c->diag.has_errors());
+    const std::string name = form == EngineForm::Readable ? "harness_io_readable" : "harness_io_scalable";
+    for (auto output : {c_backend::HarnessOutput::Putc, c_backend::HarnessOutput::Stdio}) {
+      const std::string log = run_table_harness(name, *c, 30, 1, output, "");
+      CHECK(log == reference(*c, 30, 1, false));
+      CHECK(log.find("out Batches = ") != std::string::npos);
+      CHECK(log.find("out Valve = true") != std::string::npos);  // an input reached the chart
+    }
   }
 }
 

@@ -112,3 +112,25 @@ TEST_CASE("input trace: ticks that do not go up from 1 are located errors, a mis
                              "                     ^~~~\n"
                              "trace.csv:1:21: note: did you mean 'tick'?\n");
 }
+
+TEST_CASE("input trace: a column per input variable of the chart (docs/language.md §14)", "[iec]") {
+  auto c = compile("sfc S { in int Level = 7; in bool Start; out bool On; initial place A { On = Start; } }", kIface);
+  REQUIRE(!c->diag.has_errors());
+  SourceManager sources;
+  Diagnostics diag;
+  FileId id = sources.add("trace.csv", "tick, Level, Black\n2, 40, 1\n5, x, 0\n");
+  interp::InputTrace trace(c->model, sources, id, diag);
+  std::string errors;
+  for (const auto &d : diag.all()) errors += render_text(d, sources);
+  CHECK(errors == "trace.csv:3:4: error: 'x' is not a value of type 'int' for 'Level' [trace]\n"
+                  " 5, x, 0\n"
+                  "    ^\n");
+  const model::Chart &chart = c->model.charts[model::ChartId(0)];
+  const model::Var &level = chart.vars[model::VarId(0)];
+  // Before the first row's tick the input keeps its value (none given); then the row's holds.
+  CHECK(!trace.input(level, 1));
+  REQUIRE(trace.input(level, 2));
+  CHECK(interp::format_value(*trace.input(level, 4)) == "40");
+  // An input without a column is never set.
+  CHECK(!trace.input(chart.vars[model::VarId(1)], 3));
+}

@@ -1,0 +1,66 @@
+// Named actions and the associations that hold them (docs/language.md §14, docs/iec.md "Action
+// control"): every name resolved, every qualifier with or without its duration as it must be,
+// every body checked. Action control is not compiled yet, so a chart that declares a named action
+// is refused at it, with a located error that says so, rather than run without it.
+#include "did_you_mean.h"
+#include "validate/expr.h"
+#include "validate/families.h"
+
+#include <fmt/format.h>
+
+#include <map>
+#include <string_view>
+
+namespace gfec::validation {
+
+namespace {
+
+/// The qualifiers that take a duration (docs/iec.md).
+bool timed(std::string_view q) { return q == "L" || q == "D" || q == "SD" || q == "DS" || q == "SL"; }
+
+}  // namespace
+
+void check_named_actions(Context &cx, ChartScope &s) {
+  std::map<std::string_view, const ast::ActionDecl *> actions;
+  for (const ast::ActionDecl &a : s.ast.actions) {
+    auto [at, fresh] = actions.emplace(a.name.text, &a);
+    if (!fresh)
+      cx.diag.error(a.name.range, ErrorKind::DuplicateName, fmt::format("action '{}' declared twice", a.name.text))
+          .note(at->second->name.range, "the first declaration is here");
+  }
+  for (const ast::Place &p : s.ast.places) {
+    if (!p.extras) continue;
+    for (const ast::Association &as : p.extras->associations) {
+      if (!actions.count(as.action.text)) {
+        auto &d =
+            cx.diag.error(as.action.range, ErrorKind::UnknownName, fmt::format("unknown action '{}'", as.action.text));
+        NearestName nearest(as.action.text, as.action.text.size() / 3 + 1);
+        std::string_view best;
+        for (const auto &[name, decl] : actions)
+          if (nearest.offer(name)) best = name;
+        if (nearest.found()) d.note(actions.at(best)->name.range, fmt::format("did you mean '{}'?", best));
+      }
+      const bool needs = timed(as.qualifier.text);
+      if (needs && !as.duration_ms)
+        cx.diag.error(as.range, ErrorKind::QualifierTime,
+                      fmt::format("qualifier '{}' needs a duration: '{} {} 2s;'", as.qualifier.text, as.qualifier.text,
+                                  as.action.text));
+      if (!needs && as.duration_ms)
+        cx.diag.error(as.duration_range, ErrorKind::QualifierTime,
+                      fmt::format("qualifier '{}' takes no duration; only L, D, SD, DS and SL do", as.qualifier.text));
+      if (s.is_fsm())
+        cx.diag.error(as.range, ErrorKind::NotSupported,
+                      "an fsm state holds no named actions; they are an sfc's (IEC 61131-3 steps)");
+    }
+  }
+  ExprScope scope{cx, &s, false};
+  for (ast::ActionDecl &a : s.ast.actions) {
+    (void)lower_block(a.body, scope);  // its errors, as a place's body would have them
+    cx.diag.error(a.name.range, ErrorKind::NotSupported,
+                  fmt::format("action '{}': named actions are checked but not compiled yet (docs/iec.md, "
+                              "\"Status\"); write its statements in the places that hold it",
+                              a.name.text));
+  }
+}
+
+}  // namespace gfec::validation
