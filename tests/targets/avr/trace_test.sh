@@ -8,13 +8,11 @@
 # Usage: trace_test.sh GFEC AVR_RUN SOURCE_DIR [--bench]   (--bench: the numbers only, one line)
 set -euo pipefail
 gfec=$(realpath "$1") avr_run=$(realpath "$2") source_dir=$(realpath "$3") bench=${4:-}
-for tool in avr-gcc; do
-  if ! command -v "$tool" > /dev/null; then
-    echo "$tool is missing (scripts/install-deps.sh installs Debian's gcc-avr and avr-libc)"
-    [ -n "${CI:-}" ] && exit 1
-    exit 77
-  fi
-done
+if ! command -v avr-gcc > /dev/null; then
+  echo "avr-gcc is missing (scripts/install-deps.sh installs Debian's gcc-avr and avr-libc)"
+  [ -n "${CI:-}" ] && exit 1
+  exit 77
+fi
 here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
