@@ -16,6 +16,9 @@ constexpr std::uint8_t kSync0 = 0xA7;  ///< every frame begins with these two by
 constexpr std::uint8_t kSync1 = 0x5E;
 constexpr std::uint8_t kVersion = 1;
 constexpr std::uint8_t kFlagFull = 0x01;         ///< the frame holds every value, else only changes
+constexpr std::uint8_t kFlagCalls = 0x02;        ///< the payload begins with the tick's calls
+constexpr std::uint8_t kFlagCallsCut = 0x04;     ///< the calls did not all fit in the engine's buffer
+constexpr std::size_t kCallBytes = 128;          ///< the engine's buffer for one tick's calls
 constexpr std::size_t kHeaderBytes = 14;         ///< sync, version, flags, length, fingerprint, tick
 constexpr std::size_t kCrcBytes = 4;             ///< CRC-32 of the header and the payload
 constexpr std::uint32_t kDefaultFullEvery = 32;  ///< a full frame at least every this many ticks
@@ -46,8 +49,9 @@ struct Layout {
   /// mean something else is refused.
   std::uint32_t fingerprint = 0;
   /// The longest frame: every value changed, as an index (at most 3 bytes) and a value (at most 5).
-  std::size_t max_payload() const { return values * 8; }
-  std::size_t max_frame() const { return kHeaderBytes + max_payload() + kCrcBytes; }
+  /// With `calls`, the calls' section (its length and at most kCallBytes) before the values.
+  std::size_t max_payload(bool calls = true) const { return values * 8 + (calls ? 5 + kCallBytes : 0); }
+  std::size_t max_frame(bool calls = true) const { return kHeaderBytes + max_payload(calls) + kCrcBytes; }
 };
 
 Layout layout_of(const model::Model &model, model::ChartId chart);

@@ -92,7 +92,7 @@ int monitor_with(const MonitorOptions &o, DiagnosticReport &report, std::ostream
     return kExitUsageOrIo;
   }
   monitor::LogSink log(c.model, target.chart, out);
-  monitor::TraceDecoder decoder(layout, log);
+  monitor::TraceDecoder decoder(c.model, layout, log);
   const std::string read_error = monitor::read_stream(
       fd, o.silence, log, [&](const unsigned char *data, std::size_t n) { decoder.feed(data, n); },
       [&] { return decoder.refused(); });

@@ -15,6 +15,7 @@ LogSink::LogSink(const model::Model &model, model::ChartId chart, std::ostream &
 void LogSink::tick(const DecodedTick &t) {
   std::string text = fmt::format("tick {}\n", t.tick);
   if (team_) text += fmt::format("agent {}\n", t.agent);
+  if (t.calls_cut) text += "# calls cut: more than the engine's buffer holds (docs/live.md)\n";
   for (const auto &call : t.calls) text += "call " + call + "\n";
   text += "av";
   for (std::size_t p = 0; p < places_ && p < t.activation.size(); ++p) text += fmt::format(" {}", t.activation[p]);

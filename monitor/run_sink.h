@@ -24,6 +24,8 @@ struct DecodedTick {
   /// when the stream carries calls; empty otherwise.
   std::vector<std::string> calls;
   bool has_calls = false;
+  /// The engine's buffer for the tick's calls overflowed: `calls` is empty, not the tick's calls.
+  bool calls_cut = false;
   /// A team machine's engine: its agent number, and by agent the state it last reported (-1:
   /// none yet). -1 and empty for any other chart.
   int agent = -1;

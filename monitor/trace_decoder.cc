@@ -1,6 +1,10 @@
 #include "trace_decoder.h"
 
+#include "interpreter/value.h"
+
 #include <fmt/format.h>
+
+#include <cstring>
 
 namespace gfec::monitor {
 
@@ -26,8 +30,9 @@ bool read_number(const std::uint8_t *data, std::size_t end, std::size_t &at, std
 
 }  // namespace
 
-TraceDecoder::TraceDecoder(const trace::Layout &layout, RunSink &sink, std::size_t robot)
-    : layout_(layout), sink_(sink), robot_(robot), values_(layout.values, 0), scratch_(layout.values, 0) {}
+TraceDecoder::TraceDecoder(const model::Model &model, const trace::Layout &layout, RunSink &sink, std::size_t robot)
+    : model_(model), layout_(layout), sink_(sink), robot_(robot), values_(layout.values, 0),
+      scratch_(layout.values, 0) {}
 
 void TraceDecoder::feed(const std::uint8_t *data, std::size_t n) {
   if (refused()) return;
@@ -62,7 +67,8 @@ int TraceDecoder::frame_at_front() {
   const std::size_t length = static_cast<std::size_t>(p[4]) | static_cast<std::size_t>(p[5]) << 8;
   // A length no frame of this chart has is a garbled header: waiting for that many bytes would
   // stall the stream.
-  if (length > layout_.max_payload() || (p[3] & ~trace::kFlagFull) != 0) return -1;
+  if (length > layout_.max_payload() || (p[3] & ~(trace::kFlagFull | trace::kFlagCalls | trace::kFlagCallsCut)) != 0)
+    return -1;
   const std::size_t size = trace::kHeaderBytes + length + trace::kCrcBytes;
   if (have < size) return 0;
   if (trace::crc32(p, trace::kHeaderBytes + length) != le32(p + trace::kHeaderBytes + length)) return -1;
@@ -82,22 +88,90 @@ int TraceDecoder::frame_at_front() {
     return 1;
   }
   const std::size_t before = at_;
-  frame((p[3] & trace::kFlagFull) != 0, le32(p + 10), p + trace::kHeaderBytes, length);
+  frame(p[3], le32(p + 10), p + trace::kHeaderBytes, length);
   if (at_ == before) at_ += size;
   return 1;
 }
 
-void TraceDecoder::frame(bool full, std::uint32_t tick, const std::uint8_t *payload, std::size_t length) {
+bool TraceDecoder::read_calls(const std::uint8_t *payload, std::size_t length, std::size_t &at) {
+  std::uint32_t size = 0;
+  if (!read_number(payload, length, at, size) || size > length - at) return false;
+  const std::size_t end = at + size;
+  if (calls_cut_) {  // cut anywhere, even inside a record: nothing of it is shown
+    at = end;
+    return true;
+  }
+  while (at < end) {
+    std::uint32_t index = 0;
+    if (!read_number(payload, end, at, index) || index >= model_.functions.size()) return false;
+    const model::Function &f = model_.functions.at(model::FunctionId(index));
+    auto value = [&](model::Type type, interp::Value &v) {
+      std::uint32_t n = 0;
+      switch (type) {
+      case model::Type::Bool:
+        if (!read_number(payload, end, at, n) || n > 1) return false;
+        v = interp::Value::of_bool(n != 0);
+        return true;
+      case model::Type::Float: {
+        if (end - at < 4) return false;
+        float x = 0;
+        std::uint8_t bytes[4];
+        for (int k = 0; k < 4; ++k) bytes[k] = payload[at + static_cast<std::size_t>(k)];
+        std::memcpy(&x, bytes, 4);
+        at += 4;
+        v = interp::Value::of_float(x);
+        return true;
+      }
+      case model::Type::Double: {
+        if (end - at < 8) return false;
+        double x = 0;
+        std::uint8_t bytes[8];
+        for (int k = 0; k < 8; ++k) bytes[k] = payload[at + static_cast<std::size_t>(k)];
+        std::memcpy(&x, bytes, 8);
+        at += 8;
+        v = interp::Value::of_double(x);
+        return true;
+      }
+      default:
+        if (!read_number(payload, end, at, n)) return false;
+        // 0, 1, 2, 3 ... are 0, -1, 1, -2 ...
+        v = interp::Value::of_int((n & 1u) != 0 ? -static_cast<std::int32_t>(n >> 1) - 1
+                                                : static_cast<std::int32_t>(n >> 1));
+        return true;
+      }
+    };
+    std::string text = f.name + "(";
+    for (std::size_t i = 0; i < f.params.size(); ++i) {
+      interp::Value v;
+      if (!value(f.params[i].type, v)) return false;
+      text += (i ? ", " : "") + interp::format_value(v);
+    }
+    text += ")";
+    if (f.result != model::Type::Void) {
+      interp::Value v;
+      if (!value(f.result, v)) return false;
+      text += " = " + interp::format_value(v);
+    }
+    calls_.push_back(std::move(text));
+  }
+  return at == end;
+}
+
+void TraceDecoder::frame(std::uint8_t kind, std::uint32_t tick, const std::uint8_t *payload, std::size_t length) {
   if (!started_) {
     started_ = true;
     sink_.started(robot_);
   }
-  bool ok = true;
+  const bool full = (kind & trace::kFlagFull) != 0;
+  has_calls_ = (kind & trace::kFlagCalls) != 0;
+  calls_cut_ = (kind & trace::kFlagCallsCut) != 0;
+  calls_.clear();
   std::size_t at = 0;
+  bool ok = !has_calls_ || read_calls(payload, length, at);
   if (full) {
     for (std::size_t i = 0; ok && i < layout_.values; ++i) ok = read_number(payload, length, at, scratch_[i]);
   } else {
-    ok = exact_ && tick == last_seen_ + 1;
+    ok = ok && exact_ && tick == last_seen_ + 1;
     if (ok) scratch_ = values_;
     while (ok && at < length) {
       std::uint32_t index = 0, value = 0;
@@ -130,6 +204,9 @@ void TraceDecoder::show(std::uint32_t tick) {
   DecodedTick t;
   t.robot = robot_;
   t.tick = tick;
+  t.has_calls = has_calls_ && !calls_cut_;
+  t.calls_cut = calls_cut_;
+  t.calls = calls_;
   std::size_t activation = layout_.values;
   if (layout_.status >= 0) activation = static_cast<std::size_t>(layout_.status);
   else if (layout_.agent >= 0) activation = static_cast<std::size_t>(layout_.agent);

@@ -16,7 +16,8 @@ namespace gfec::monitor {
 
 class TraceDecoder {
 public:
-  TraceDecoder(const trace::Layout &layout, RunSink &sink, std::size_t robot = 0);
+  /// `model`: the chart's, for the names and types of the calls a frame may carry.
+  TraceDecoder(const model::Model &model, const trace::Layout &layout, RunSink &sink, std::size_t robot = 0);
 
   /// The next bytes of the stream.
   void feed(const std::uint8_t *data, std::size_t n);
@@ -36,10 +37,13 @@ private:
   /// Tries to read a frame at the front of the buffer: 1 read one, 0 needs more bytes, -1 the
   /// front byte begins no frame.
   int frame_at_front();
-  void frame(bool full, std::uint32_t tick, const std::uint8_t *payload, std::size_t length);
+  void frame(std::uint8_t kind, std::uint32_t tick, const std::uint8_t *payload, std::size_t length);
+  /// The calls' section at payload[at]: false if it is malformed.
+  bool read_calls(const std::uint8_t *payload, std::size_t length, std::size_t &at);
   void show(std::uint32_t tick);
   void skip_byte();
 
+  const model::Model &model_;
   const trace::Layout layout_;
   RunSink &sink_;
   const std::size_t robot_;
@@ -47,6 +51,8 @@ private:
   std::size_t at_ = 0;  ///< where the unread bytes of buffer_ begin
   std::vector<std::uint32_t> values_;
   std::vector<std::uint32_t> scratch_;
+  std::vector<std::string> calls_;  ///< the calls of the frame being read
+  bool has_calls_ = false, calls_cut_ = false;
   bool exact_ = false;            ///< values_ are the engine's after tick last_seen_
   bool started_ = false;          ///< a frame of this chart has arrived
   std::uint32_t last_seen_ = 0;   ///< the last frame's tick

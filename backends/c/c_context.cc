@@ -414,6 +414,52 @@ std::unique_ptr<EngineContext> make_context(const model::Model &model, const mod
   NameSpace globals;
   build(*c, globals, nullptr);
   collect_functions(*c, c->functions);
+  if (c->traced() && c->engine_options.trace_calls) {
+    const std::string &t = c->type;
+    c->calls_buffer = globals.take(t + "_trace_calls");
+    c->calls_count = globals.take(t + "_trace_calls_n");
+    c->calls_cut = globals.take(t + "_trace_calls_cut");
+    c->call_record_fn = globals.take(t + "_trace_record");
+    c->call_bytes_fn = globals.take(t + "_trace_record_bytes");
+    c->zigzag_fn = globals.take(t + "_trace_zigzag");
+    // Wrapped: the functions the tick calls; not one only a postcondition calls (X_CHECKS), which
+    // the reference's log shows no call of either, and whose unused wrapper would be a warning.
+    std::vector<bool> called(model.functions.size(), false);
+    std::function<void(const model::Expr &)> expr = [&](const model::Expr &e) {
+      if (e.kind == model::Expr::Kind::Call) called[e.function().index()] = true;
+      for (const auto &a : e.args) expr(a);
+    };
+    std::function<void(const model::Stmt &)> stmt = [&](const model::Stmt &st) {
+      expr(st.expr);
+      for (const auto &x : st.then_block) stmt(x);
+      for (const auto &x : st.else_block) stmt(x);
+    };
+    std::function<void(const EngineContext &)> chart = [&](const EngineContext &e) {
+      for (const auto &p : e.chart.places) {
+        for (const auto &st : p.action) stmt(st);
+        for (const auto *block : {&p.entry, &p.exit})
+          if (*block)
+            for (const auto &st : **block) stmt(st);
+      }
+      for (const auto &tr : e.chart.transitions)
+        if (tr.condition) expr(*tr.condition);
+      for (const auto &sub : e.sub)
+        if (sub) chart(*sub);
+    };
+    chart(*c);
+    c->call_wrapper.assign(model.functions.size(), "");
+    for (model::FunctionId f : c->functions)
+      if (called[f.index()]) c->call_wrapper[f] = globals.take(t + "_traced_" + model.functions[f].name);
+    // The instances call the root's wrappers.
+    std::function<void(EngineContext &)> share = [&](EngineContext &e) {
+      for (auto &s : e.sub)
+        if (s) {
+          s->call_wrapper = c->call_wrapper;
+          share(*s);
+        }
+    };
+    share(*c);
+  }
   return c;
 }
 

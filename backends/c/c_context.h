@@ -135,8 +135,15 @@ struct EngineContext {
   std::string trace_left;      ///< field: delta frames before the next full one
   std::string trace_prev;      ///< field: the values of the last frame
   bool traced() const { return root && engine_options.trace; }
-  std::string place_name_fn;       ///< X_place_name (--names)
-  std::string transition_name_fn;  ///< X_transition_name (--names)
+  // --trace=calls: every interface call goes through a file-local wrapper that records it; the
+  // root and every instance share the root's wrappers. Empty without the option.
+  IdMap<model::FunctionId, std::string> call_wrapper;  ///< by function, "" for one no chart calls
+  std::string calls_buffer, calls_count, calls_cut;    ///< the tick's recorded calls
+  std::string call_record_fn;                          ///< records a number
+  std::string call_bytes_fn;                           ///< records a float's or double's bytes
+  std::string zigzag_fn;                               ///< an int32_t as an unsigned number
+  std::string place_name_fn;                           ///< X_place_name (--names)
+  std::string transition_name_fn;                      ///< X_transition_name (--names)
   /// Every interface call passes the context first.
   bool has_context() const { return !context_type.spelling.empty(); }
   /// `void *ctx`, `struct motor *ctx`: the context as a parameter called `name`.

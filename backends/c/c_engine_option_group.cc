@@ -21,9 +21,10 @@ public:
         ->type_name("TYPE");
     app.add_flag("--names", options_->names,
                  "C engine: X_place_name() and X_transition_name(), the declared names for logging and tracing");
-    app.add_flag("--trace", options_->trace,
+    app.add_flag("--trace{activation}", trace_mode_,
                  "C engine: after each tick, one frame of the activation through X_trace_write(), the user's, for "
-                 "'gfec monitor' (docs/live.md)");
+                 "'gfec monitor' (docs/live.md); --trace=calls: the tick's calls too, with arguments and results")
+        ->type_name("WHAT");
     full_every_option_ =
         app.add_option(
                "--trace-full-every", full_every_,
@@ -33,6 +34,13 @@ public:
   }
 
   std::string check() override {
+    if (!trace_mode_.empty()) {
+      if (trace_mode_ != "activation" && trace_mode_ != "calls")
+        return fmt::format("--trace={}: the trace holds 'activation' (the default) or 'calls' (activation and calls)",
+                           trace_mode_);
+      options_->trace = true;
+      options_->trace_calls = trace_mode_ == "calls";
+    }
     if (full_every_option_ != nullptr && full_every_option_->count() > 0) {
       if (!options_->trace) return "--trace-full-every needs --trace";
       if (full_every_ < 1 || full_every_ > 65535)
@@ -67,6 +75,7 @@ public:
 private:
   bool context_ = false;
   std::string type_;
+  std::string trace_mode_;  ///< --trace[=activation|calls]; empty: not given
   long long full_every_ = 0;
   CLI::Option *full_every_option_ = nullptr;
   std::shared_ptr<CEngineOptions> options_ = std::make_shared<CEngineOptions>();

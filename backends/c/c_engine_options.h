@@ -18,6 +18,8 @@ struct CEngineOptions : BackendOptions {
   bool names = false;  ///< `--names`: X_place_name and X_transition_name
   /// `--trace`: each tick ends with a frame through X_trace_write (docs/live.md).
   bool trace = false;
+  /// `--trace=calls`: the frames also carry the calls each tick made, with arguments and results.
+  bool trace_calls = false;
   /// `--trace-full-every N`: a full frame at least every N ticks (the others carry changes).
   unsigned trace_full_every = 32;
 };

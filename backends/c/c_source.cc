@@ -300,6 +300,10 @@ void emit_source(const EngineContext &c, std::ostream &out) {
   no_contraction(w, c);
   verbatims(w, c);
   w.blank();
+  if (!c.calls_buffer.empty()) {
+    emit_trace_calls(w, c);
+    w.blank();
+  }
   for (const auto &s : c.sub)
     if (s) instance(w, *s);
   if (c.has_sub()) {

@@ -6,6 +6,7 @@
 #include "c_trace.h"
 
 #include "c_emit.h"
+#include "c_expr.h"
 #include "trace_format.h"
 
 #include <fmt/format.h>
@@ -21,7 +22,7 @@ namespace {
 trace::Layout layout(const EngineContext &c) {
   trace::Layout l = trace::layout_of(c.model, c.options.chart);
   // The frame's length and its positions are 16-bit numbers (an AVR's unsigned).
-  if (l.max_frame() > 65535)
+  if (l.max_frame(c.engine_options.trace_calls) > 65535)
     throw std::runtime_error(fmt::format("--trace: {} {} has {} values a frame (places, instances' places, status), "
                                          "more than a frame of at most 65535 bytes can hold",
                                          l.fsm ? "fsm" : "sfc", c.type, l.values));
@@ -54,10 +55,136 @@ void trace_init(CodeWriter &w, const EngineContext &c) {
   w.line("{}[{}] = 0u;", c.field(c.trace_prev), c.i);
 }
 
+void emit_trace_calls(CodeWriter &w, const EngineContext &c) {
+  const std::size_t cap = trace::kCallBytes;
+  // Only the helpers some call needs: an unused static function is a warning.
+  bool ints = false, floats = false;
+  for (model::FunctionId id : c.functions) {
+    if (c.call_wrapper.at(id).empty()) continue;
+    const model::Function &f = c.model.functions.at(id);
+    std::vector<model::Type> types{f.result};
+    for (const auto &p : f.params) types.push_back(p.type);
+    for (model::Type t : types) {
+      ints = ints || t == model::Type::Int;
+      floats = floats || t == model::Type::Float || t == model::Type::Double;
+    }
+  }
+  w.line("/* --trace=calls: the calls of the tick being run, as the frame carries them (docs/live.md);");
+  w.line("   a tick whose calls do not fit in {} bytes sends them cut, and the monitor says so. */", cap);
+  w.line("static unsigned char {}[{}];", c.calls_buffer, cap);
+  w.line("static uint16_t {};", c.calls_count);
+  w.line("static bool {};", c.calls_cut);
+  w.blank();
+  w.line("static void {}(uint32_t value)", c.call_record_fn);
+  {
+    auto body = w.block("{");
+    w.line("uint32_t rest = value;");
+    {
+      auto full = w.block(fmt::format("if ({} > {}u) {{", c.calls_count, cap - 5), "} else {");
+      w.line("{} = true;", c.calls_cut);
+    }
+    {
+      auto room = w.indented();
+      {
+        auto more = w.block("while (rest >= 0x80u) {");
+        w.line("{}[{}] = (unsigned char)((rest & 0x7Fu) | 0x80u);", c.calls_buffer, c.calls_count);
+        w.line("{0} = (uint16_t)({0} + 1u);", c.calls_count);
+        w.line("rest = rest >> 7;");
+      }
+      w.line("{}[{}] = (unsigned char)rest;", c.calls_buffer, c.calls_count);
+      w.line("{0} = (uint16_t)({0} + 1u);", c.calls_count);
+    }
+    w.line("}");
+  }
+  if (floats) {
+    w.blank();
+    w.line("/* A float's or double's bytes as the target stores them (little-endian on every target). */");
+    w.line("static void {}(const unsigned char *bytes, uint16_t size)", c.call_bytes_fn);
+    {
+      auto body = w.block("{");
+      w.line("uint16_t k;");
+      {
+        auto full = w.block(fmt::format("if ({} > (uint16_t)({}u - size)) {{", c.calls_count, cap), "} else {");
+        w.line("{} = true;", c.calls_cut);
+      }
+      {
+        auto room = w.indented();
+        auto each = w.block("for (k = 0u; k < size; ++k) {");
+        w.line("{}[{}] = bytes[k];", c.calls_buffer, c.calls_count);
+        w.line("{0} = (uint16_t)({0} + 1u);", c.calls_count);
+      }
+      w.line("}");
+    }
+  }
+  if (ints) {
+    w.blank();
+    w.line("/* An int32_t as an unsigned number, small for small magnitudes: 0, -1, 1, -2 ... as 0, 1, 2, 3 ... */");
+    w.line("static uint32_t {}(int32_t value)", c.zigzag_fn);
+    {
+      auto body = w.block("{");
+      w.line("uint32_t z;");
+      {
+        auto negative = w.block("if (value < 0) {", "} else {");
+        w.line("z = ((uint32_t)(-(value + 1)) << 1) | 1u;");
+      }
+      {
+        auto positive = w.indented();
+        w.line("z = (uint32_t)value << 1;");
+      }
+      w.line("}");
+      w.line("return z;");
+    }
+  }
+  // A wrapper per interface function: the call, then its record (number, arguments, result).
+  auto record = [&](model::Type type, const std::string &value) {
+    switch (type) {
+    case model::Type::Bool: {
+      auto yes = w.block(fmt::format("if ({}) {{", value), "} else {");
+      w.line("{}(1u);", c.call_record_fn);
+      yes.end();
+      {
+        auto no = w.indented();
+        w.line("{}(0u);", c.call_record_fn);
+      }
+      w.line("}");
+      break;
+    }
+    case model::Type::Float:
+    case model::Type::Double:
+      w.line("{}((const unsigned char *)&{}, (uint16_t)sizeof {});", c.call_bytes_fn, value, value);
+      break;
+    default: w.line("{}({}({}));", c.call_record_fn, c.zigzag_fn, value); break;
+    }
+  };
+  for (model::FunctionId id : c.functions) {
+    if (c.call_wrapper.at(id).empty()) continue;
+    const model::Function &f = c.model.functions.at(id);
+    std::vector<std::string> names;
+    std::string args = c.has_context() ? "ctx" : "";
+    for (std::size_t i = 0; i < f.params.size(); ++i) {
+      names.push_back(fmt::format("a{}", i));
+      args += (args.empty() ? "" : ", ") + names.back();
+    }
+    model::Function wrapper = f;
+    wrapper.name = c.call_wrapper.at(id);
+    w.blank();
+    w.line("static {}", c_prototype(wrapper, c.has_context() ? c.context_param("ctx") : "", names));
+    auto body = w.block("{");
+    if (f.result != model::Type::Void) w.line("{} result = {}({});", c_type(f.result), f.name, args);
+    else w.line("{}({});", f.name, args);
+    w.line("{}({}u);", c.call_record_fn, id.index());
+    for (std::size_t i = 0; i < f.params.size(); ++i) record(f.params[i].type, names[i]);
+    if (f.result != model::Type::Void) {
+      record(f.result, "result");
+      w.line("return result;");
+    }
+  }
+}
+
 void emit_trace(CodeWriter &w, const EngineContext &c) {
   const trace::Layout l = layout(c);
   const std::string &t = c.type, &m = c.self;
-  const std::size_t size = l.max_frame();
+  const std::size_t size = l.max_frame(!c.calls_buffer.empty());
   w.line("/* --trace: `value` at frame[at], 7 bits a byte, low first, the top bit set on all but the");
   w.line("   last byte (docs/live.md); returns where the next number goes. */");
   w.line("static uint16_t {}(unsigned char *frame, uint16_t at, uint32_t value)", c.trace_put_fn);
@@ -88,6 +215,7 @@ void emit_trace(CodeWriter &w, const EngineContext &c) {
   w.line("uint8_t bit;");
   w.line("int place;");
   w.line("bool full;");
+  if (!c.calls_buffer.empty()) w.line("uint8_t kind = {}u;", trace::kFlagCalls);
   w.line("/* The values: the {}' activation{}, read as {}_activation reads them. */", l.fsm ? "states" : "places",
          l.instances.empty() ? "" : ", then each sub-chart instance's", t);
   w.line("i = 0u;");
@@ -147,6 +275,25 @@ void emit_trace(CodeWriter &w, const EngineContext &c) {
     w.line("{0} = (uint16_t)({0} - 1u);", c.field(c.trace_left));
   }
   w.line("}");
+  if (!c.calls_buffer.empty()) {
+    w.line("/* The tick's calls first: their length, then their records. */");
+    w.line("n = {}(frame, n, (uint32_t){});", c.trace_put_fn, c.calls_count);
+    {
+      auto each = w.block(fmt::format("for (i = 0u; i < {}; ++i) {{", c.calls_count));
+      w.line("frame[n] = {}[i];", c.calls_buffer);
+      w.line("n = (uint16_t)(n + 1u);");
+    }
+    {
+      auto cut = w.block(fmt::format("if ({}) {{", c.calls_cut));
+      w.line("kind = (uint8_t)(kind | {}u);", trace::kFlagCallsCut);
+    }
+    w.line("{} = 0u;", c.calls_count);
+    w.line("{} = false;", c.calls_cut);
+    {
+      auto whole = w.block("if (full) {");
+      w.line("kind = (uint8_t)(kind | {}u);", trace::kFlagFull);
+    }
+  }
   {
     auto each = w.block(fmt::format("for (i = 0u; i < {}u; ++i) {{", l.values));
     {
@@ -170,7 +317,8 @@ void emit_trace(CodeWriter &w, const EngineContext &c) {
   w.line("frame[0] = 0x{:02X}u;", trace::kSync0);
   w.line("frame[1] = 0x{:02X}u;", trace::kSync1);
   w.line("frame[2] = {}u;", trace::kVersion);
-  w.line("frame[3] = full ? 1u : 0u;");
+  if (!c.calls_buffer.empty()) w.line("frame[3] = kind;");
+  else w.line("frame[3] = full ? 1u : 0u;");
   w.line("frame[4] = (unsigned char)((uint16_t)(n - {}u) & 0xFFu);", trace::kHeaderBytes);
   w.line("frame[5] = (unsigned char)((uint16_t)(n - {}u) >> 8);", trace::kHeaderBytes);
   for (int b = 0; b < 4; ++b) w.line("frame[{}] = 0x{:02X}u;", 6 + b, (l.fingerprint >> (8 * b)) & 0xFFu);

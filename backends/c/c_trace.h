@@ -14,6 +14,9 @@ void trace_prototype(CodeWriter &w, const EngineContext &c);
 void trace_fields(const EngineContext &c, FieldRows &rows);
 /// X_init's part: the count and the last values zero (so the first frame is a full one).
 void trace_init(CodeWriter &w, const EngineContext &c);
+/// engine.c, before any code of the chart (--trace=calls): the tick's call records and a
+/// wrapper per interface function that calls it and records the call.
+void emit_trace_calls(CodeWriter &w, const EngineContext &c);
 /// engine.c, after the accessors: the frame's writer and X_run, which ticks and then writes it.
 void emit_trace(CodeWriter &w, const EngineContext &c);
 

@@ -36,6 +36,15 @@ diff expected.log got.log || fail "the decoded stdin stream differs from gfec ru
 grep -q "ticks decoded, 0 lost, 0 bytes garbled" summary.txt || fail "summary: $(cat summary.txt)"
 echo "stdin: $(grep -c '^tick' got.log) ticks as gfec run --observable"
 
+# --trace=calls: the whole observable log, calls with their results.
+mkdir calls
+"$gfec" "$chart" --trace=calls -o calls/lf.c
+cc -std=c99 -Wall -Wextra -Werror -Icalls "$here/monitor/lf_robot.c" calls/lf.c -o robot-calls
+"$gfec" run "$chart" --inputs "$csv" --observable > expected-calls.log
+./robot-calls "$csv" | "$gfec" monitor "$chart" --log > got-calls.log 2> /dev/null
+diff expected-calls.log got-calls.log || fail "--trace=calls: the decoded stream differs from gfec run --observable"
+echo "stdin, --trace=calls: the same, calls included"
+
 # TCP: the robot listens, the monitor connects.
 ./robot "$csv" --listen port.txt &
 robot_pid=$!

@@ -26,7 +26,7 @@ namespace {
 
 struct TracedRun {
   std::unique_ptr<Compiled> compiled;
-  std::string log;    ///< the engine's observable log, call lines removed
+  std::string log;    ///< the engine's observable log, call lines removed (all of it with calls)
   std::string bytes;  ///< what it handed X_trace_write
 };
 
@@ -53,7 +53,8 @@ std::string random_script(const model::Model &m, unsigned seed, int ticks) {
 }
 
 TracedRun traced_run(const std::string &test, const std::map<std::string, std::string> &files, const std::string &main,
-                     unsigned seed, int ticks, unsigned full_every = 32, EngineForm form = EngineForm::Auto) {
+                     unsigned seed, int ticks, unsigned full_every = 32, EngineForm form = EngineForm::Auto,
+                     bool calls = false) {
   TracedRun r;
   r.compiled = compile_chart(files, main, "engine.c");
   INFO(r.compiled->errors);
@@ -66,6 +67,7 @@ TracedRun traced_run(const std::string &test, const std::map<std::string, std::s
   auto options = std::make_shared<c_backend::CEngineOptions>();
   options->trace = true;
   options->trace_full_every = full_every;
+  options->trace_calls = calls;
   o.backend = options;
   o.chart = r.compiled->chart;
   const std::vector<OutputFile> engine = emit_to_memory(*make_c_backend(), m, o);
@@ -99,7 +101,7 @@ TracedRun traced_run(const std::string &test, const std::map<std::string, std::s
   REQUIRE(run.status == 0);
   std::istringstream lines(run.output);
   for (std::string line; std::getline(lines, line);)
-    if (line.rfind("call ", 0) != 0) r.log += line + "\n";
+    if (calls || line.rfind("call ", 0) != 0) r.log += line + "\n";
   r.bytes = read_file(dir / "trace.bin");
   return r;
 }
@@ -109,7 +111,7 @@ std::string decode(const TracedRun &r, const std::string &bytes, std::size_t chu
                    std::string *refusal = nullptr) {
   std::ostringstream out;
   monitor::LogSink log(r.compiled->model, r.compiled->chart, out);
-  monitor::TraceDecoder decoder(trace::layout_of(r.compiled->model, r.compiled->chart), log);
+  monitor::TraceDecoder decoder(r.compiled->model, trace::layout_of(r.compiled->model, r.compiled->chart), log);
   const auto *data = reinterpret_cast<const std::uint8_t *>(bytes.data());
   for (std::size_t at = 0; at < bytes.size(); at += chunk) decoder.feed(data + at, std::min(chunk, bytes.size() - at));
   decoder.finish();
@@ -167,6 +169,13 @@ TEST_CASE("traced engines: the decoded frames give the engine's observable log",
         CHECK(decode(r, r.bytes) == r.log);
         CHECK(decode(r, r.bytes, 1) == r.log);
         CHECK(decode(r, r.bytes, 4096) == r.log);
+      }
+      // --trace=calls: the whole observable log, calls with their arguments and results.
+      for (EngineForm form : {EngineForm::Readable, EngineForm::Scalable}) {
+        const TracedRun r = traced_run(s.main, sample_files(s.files), s.main, 11, 120, 32, form, true);
+        INFO(s.main << " with calls");
+        REQUIRE(r.log.find("\ncall ") != std::string::npos);
+        CHECK(decode(r, r.bytes, 5) == r.log);
       }
     }
   }
