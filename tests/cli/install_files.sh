@@ -110,7 +110,8 @@ expect() {
 expect --check --chart -- gfec --ch
 expect --context --context-type= -- gfec --cont
 expect --names -- gfec --na
-expect --trace --trace-full-every -- gfec --tra
+expect --trace --trace= --trace-full-every -- gfec --tra
+expect --trace=calls -- gfec --trace=c
 expect --log --serial --tcp --silence -- gfec monitor blink.sfc --
 expect 115200 -- gfec monitor blink.sfc --baud 11
 expect --emit=c --emit=cpp --emit=svg --emit=chart -- gfec --emit=

@@ -71,6 +71,7 @@ _gfec() {
   case $cur in
     --emit=*) COMPREPLY=($(compgen -P --emit= -W 'c cpp json dot svg toolbox-skeleton chart' -- "${cur#--emit=}")); return ;;
     --engine=*) COMPREPLY=($(compgen -P --engine= -W 'auto readable scalable' -- "${cur#--engine=}")); return ;;
+    --trace=*) COMPREPLY=($(compgen -P --trace= -W 'activation calls' -- "${cur#--trace=}")); return ;;
     -fdiagnostics-format=*)
       COMPREPLY=($(compgen -P -fdiagnostics-format= -W 'text json sarif-stderr sarif-file' -- "${cur#*=}")); return ;;
     -fdiagnostics-color=*)
@@ -86,7 +87,7 @@ _gfec() {
       compopt -o nospace 2>/dev/null; return ;;
     -*)
       COMPREPLY=($(compgen -W '-o -I -x --check --analyze --emit= --chart --engine= --no-line-directives
-        --context --context-type= --names --trace --trace-full-every -W -w -Wall -Werror -f -MD -MMD -MF -MP -MT --help --version' -- "$cur"))
+        --context --context-type= --names --trace --trace= --trace-full-every -W -w -Wall -Werror -f -MD -MMD -MF -MP -MT --help --version' -- "$cur"))
       [[ ${COMPREPLY[0]} == *= ]] && compopt -o nospace 2>/dev/null
       return ;;
   esac
