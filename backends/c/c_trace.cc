@@ -1,6 +1,6 @@
 // --trace (docs/live.md): after each tick the engine hands one frame to X_trace_write, the user's
-// function. The values come through the engine's own accessors (X_activation,
-// X_instance_activation), so every form of the engine writes the same frames; the layout of the
+// function. The values are read as the engine's accessors (X_activation, X_instance_activation)
+// read them, so every form of the engine writes the same frames; the layout of the
 // values and the fingerprint come from the one description of the format (compiler/trace_format.h)
 // that the monitor reads too.
 #include "c_trace.h"

@@ -97,6 +97,19 @@ for bad in "--trace-full-every 5|needs --trace" "--trace --trace-full-every 0|mu
   "$gfec" "$chart" ${bad%|*} -o bad.c 2> bad.err || status=$?
   { [ "$status" = 2 ] && grep -q -- "${bad#*|}" bad.err; } || fail "gfec ${bad%|*}: exit $status, $(cat bad.err)"
 done
+# A chart whose frame would not fit the 16-bit length: refused, nothing written.
+{
+  echo "interface B { bool Go(); }"
+  echo "sfc Big {"
+  echo "  initial place P0;"
+  for i in $(seq 1 8200); do echo "  place P$i;"; done
+  for i in $(seq 0 8199); do echo "  transition P$i -> P$((i + 1)) when Go();"; done
+  echo "}"
+} > big.sfc
+status=0
+"$gfec" big.sfc --trace -o big.c 2> big.err || status=$?
+{ [ "$status" = 2 ] && grep -q "8201 values a frame" big.err && [ ! -e big.c ]; } ||
+  fail "a chart too large for a frame: exit $status, $(cat big.err)"
 "$gfec" "$chart" --trace --trace-full-every 1 -o every.c
 [ "$(grep -c 'm->trace_left = 0u;' every.c)" = 2 ] || fail "--trace-full-every 1: not every frame full"
 echo "monitor: all checks passed"
