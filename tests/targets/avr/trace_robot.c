@@ -26,31 +26,29 @@ void Right_Stop(void) {}
 static unsigned char pending[64];
 static unsigned pending_n;
 
-void LineFollower_trace_write(const unsigned char *data, unsigned len)
-{
-    unsigned i;
-    for (i = 0u; (i < len) && (pending_n < sizeof pending); ++i) {
-        pending[pending_n] = data[i];
-        ++pending_n;
-    }
+void LineFollower_trace_write(const unsigned char *data, unsigned len) {
+  unsigned i;
+  for (i = 0u; (i < len) && (pending_n < sizeof pending); ++i) {
+    pending[pending_n] = data[i];
+    ++pending_n;
+  }
 }
 #endif
 
-int main(void)
-{
-    static LineFollower m;
-    uint16_t k;
-    uint8_t j;
-    LineFollower_init(&m);
-    for (k = 0u; k < ROWS; ++k) {
-        for (j = 0u; j < 4u; ++j) sensors[j] = rows[k][j];
-        GPIOR0 = 1;
-        LineFollower_run(&m);
-        GPIOR0 = 2;
+int main(void) {
+  static LineFollower m;
+  uint16_t k;
+  uint8_t j;
+  LineFollower_init(&m);
+  for (k = 0u; k < ROWS; ++k) {
+    for (j = 0u; j < 4u; ++j) sensors[j] = rows[k][j];
+    GPIOR0 = 1;
+    LineFollower_run(&m);
+    GPIOR0 = 2;
 #ifdef TRACED
-        for (j = 0u; j < pending_n; ++j) (void)harness_putc(pending[j]);
-        pending_n = 0u;
+    for (j = 0u; j < pending_n; ++j) (void)harness_putc(pending[j]);
+    pending_n = 0u;
 #endif
-    }
-    return 0;
+  }
+  return 0;
 }
