@@ -129,7 +129,9 @@ void Lexer::skip_space_and_comments() {
     if (c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v') {
       ++pos_;
     } else if (c == '/' && peek(1) == '/') {
+      std::uint32_t begin = pos_;
       while (pos_ < text_.size() && text_[pos_] != '\n' && text_[pos_] != '\r') ++pos_;
+      if (comments_) comments_->push_back({file_, begin, pos_});
     } else if (c == '/' && peek(1) == '*') {
       std::uint32_t begin = pos_;
       auto close = text_.find("*/", pos_ + 2);
@@ -139,6 +141,7 @@ void Lexer::skip_space_and_comments() {
         return;
       }
       pos_ = static_cast<std::uint32_t>(close + 2);
+      if (comments_) comments_->push_back({file_, begin, pos_});
     } else {
       return;
     }

@@ -4,6 +4,8 @@
 #include "diagnostics.h"
 #include "token.h"
 
+#include <vector>
+
 namespace gfec {
 
 class Lexer {
@@ -12,6 +14,11 @@ public:
 
   /// The next token; Tok::End forever at the end of the file.
   Token next();
+
+  /// From now on, appends the range of every comment skipped (`//` to the end of the line, or
+  /// `/* ... */`) to `out`, in order: what the formatter (compiler/format/) needs to keep them.
+  /// Off by default, so the compiler pays one null test per comment.
+  void record_comments(std::vector<SourceRange> *out) { comments_ = out; }
 
 private:
   Token make(Tok kind, std::uint32_t begin);
@@ -28,6 +35,7 @@ private:
   std::string_view text_;
   Diagnostics &diag_;
   std::uint32_t pos_ = 0;
+  std::vector<SourceRange> *comments_ = nullptr;
 };
 
 }  // namespace gfec

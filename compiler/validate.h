@@ -5,6 +5,7 @@
 #include "ast.h"
 #include "diagnostics.h"
 #include "model.h"
+#include "name_uses.h"
 
 #include <functional>
 #include <string>
@@ -26,6 +27,9 @@ struct ValidateOptions {
   /// would name them: a note on "unknown function" says which to import. The caller, which has
   /// the file system and the search folders, answers (pipeline/missing_import.h); null: no note.
   std::function<std::vector<std::string>(const std::string &function)> declaring_files;
+  /// Where to record what every name refers to (a language server's definition, references,
+  /// rename); null: nowhere.
+  NameUses *name_uses = nullptr;
 };
 
 /// Checks `program` and builds its model. The model is complete only when no error was reported.

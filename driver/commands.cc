@@ -1,6 +1,8 @@
 #include "commands.h"
 
 #include "driver.h"
+#include "fmt_command.h"
+#include "lsp_command.h"
 #include "monitor_command.h"
 #include "run_command.h"
 #include "test_command.h"
@@ -20,6 +22,8 @@ const std::vector<Command> kCommands = {
     {"", "gfec CHART [-o OUT] [OPTIONS]", "compile an sfc or fsm to a C engine, a plan to C++", compile_command},
     {"run", "gfec run CHART --inputs TRACE.csv", "run a chart in the reference interpreter, tick by tick", run_command},
     {"test", "gfec test FILE... [OPTIONS]", "run scenario tests on the interpreter and the C engine", test_command},
+    {"fmt", "gfec fmt [--check] FILE...", "lay out chart text in its canonical form, in place", fmt_command},
+    {"lsp", "gfec lsp [--stdio]", "the language server for editors, on stdin and stdout", lsp_command},
     {"monitor", "gfec monitor CHART --log", "decode a live trace of an engine built with --trace", monitor_command},
 };
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Formats the hand-written C and C++ of the repository with clang-format (the .clang-format files:
-# the root one for the compiler, its support, back ends, driver, viewer, tools and tests; Google's style in sim/, runtime/ and
+# the root one for the compiler, its support, back ends, driver, language server, viewer, tools and tests; Google's style in sim/, runtime/ and
 # tests/runtime/). Generated files (tests/golden/) are left as gfec wrote them.
 #
 #   scripts/format.sh            rewrite the files in place
@@ -8,7 +8,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
-mapfile -t files < <(git ls-files -- support compiler backends viewer driver runtime sim tests tools |
+mapfile -t files < <(git ls-files -- support compiler backends viewer driver lsp runtime sim tests tools |
   grep -E '\.(cc|cpp|h|hpp|c)$' | grep -v '^tests/golden/')
 if [[ ${1:-} == --check ]]; then
   bad=0

@@ -5,10 +5,12 @@ packages=(
   cmake ninja-build gcc g++ clang lld llvm pkg-config make
   libfmt-dev nlohmann-json3-dev libcli11-dev catch2 libode-dev
   graphviz valgrind cppcheck time
+  diffutils  # diff: gfec fmt --diff (essential in Debian; named because gfec runs it)
   procps  # pgrep: tests/cli/reliability.sh signals gfec, not the timeout(1) around it
   man-db  # man -l: tests/cli/install_files.sh renders docs/man/gfec.1 as `man gfec` shows it
   bash-completion  # tests/cli/install_files.sh: bash-completion loads the installed completion
   dpkg-dev  # dpkg-shlibdeps: the .deb's Depends (cmake/GfecPackage.cmake, tests/cli/deb_package.sh)
+  unzip  # the VS Code extension's .vsix contents (tests/editors/vscode_test.sh)
   clang-format  # scripts/format.sh --check, a ctest test
   gcc-arm-none-eabi  # the cross build and freestanding engine tests (Cortex-M4)
   gcc-avr avr-libc libsimavr-dev  # AVR programs and tools/avr-run (docs/targets.md)

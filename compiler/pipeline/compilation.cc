@@ -100,6 +100,7 @@ bool Compilation::front_end(const std::string &path, const FileSystem &fs, scena
   }
   ValidateOptions validation;
   validation.keep_tree = options.keep_syntax_tree;
+  if (options.record_name_uses) validation.name_uses = &name_uses;
   MissingImportFinder missing_import(fs, path, options.include_dirs);
   validation.declaring_files = [&missing_import](const std::string &function) { return missing_import(function); };
   scenario::Suite unkept;  // validate checks the tests either way; only gfec test keeps them

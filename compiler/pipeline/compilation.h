@@ -8,6 +8,7 @@
 #include "file_system.h"
 #include "loader.h"
 #include "model.h"
+#include "name_uses.h"
 #include "pipeline/kind.h"
 #include "source.h"
 
@@ -31,6 +32,9 @@ struct FrontEndOptions {
   /// Keep the whole syntax tree in `loaded.program` after validation (a language server reads
   /// it); by default it is dropped, bodies first, so a large chart is never held twice.
   bool keep_syntax_tree = false;
+  /// Record in Compilation::name_uses what every name refers to (a language server's
+  /// definition, references and rename).
+  bool record_name_uses = false;
 };
 
 /// What to compile: the question choose() answers.
@@ -87,6 +91,8 @@ public:
   LoadResult loaded;
   model::Model model;
   Selection selection;
+  /// With FrontEndOptions::record_name_uses: every declaration and resolved use of a name.
+  NameUses name_uses;
 };
 
 }  // namespace pipeline

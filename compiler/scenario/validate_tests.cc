@@ -72,7 +72,7 @@ public:
   /// The function `name` names, or none after reporting why not.
   model::FunctionId function(const ast::Name &name) {
     if (name.text.empty()) return {};
-    const Symbol *sym = cx_.c_names.find(name.text);
+    const Symbol *sym = cx_.c_names.resolve(name);
     if (sym && sym->kind == Sym::Function) {
       const auto f = sym->id<model::FunctionId>();
       return cx_.function_ok[f] ? f : model::FunctionId::none();
@@ -317,9 +317,9 @@ private:
 /// The chart `name` names, or none after reporting why not.
 model::ChartId resolve_chart(Context &cx, const ast::Name &name, std::set<std::string> &seen) {
   if (name.text.empty()) return {};
-  const Symbol *sym = cx.c_names.find(name.text);
+  const Symbol *sym = cx.c_names.resolve(name);
   if (sym && sym->kind == Sym::Chart) return sym->id<model::ChartId>();
-  if (const Symbol *plan = cx.plan_names.find(name.text); plan && plan->kind == Sym::Plan) {
+  if (const Symbol *plan = cx.plan_names.resolve(name); plan && plan->kind == Sym::Plan) {
     cx.diag.error(name.range, ErrorKind::Test, fmt::format("'{}' is a plan; tests run an sfc or fsm", name.text))
         .note(plan->range, fmt::format("'{}' declared here", name.text));
     return {};
@@ -453,6 +453,7 @@ void validate_tests(Context &cx, scenario::Suite &out) {
     model::ChartId chart = resolve_chart(cx, t.chart, cx.file_unknown);
     if (!chart) continue;
     ChartScope scope(*cx.charts[chart], cx.model.charts[chart], chart);
+    scope.names.uses = cx.uses;
     declare_chart_names(cx, scope);
     TestLowering lowering(cx, scope);
     scenario::Test test;

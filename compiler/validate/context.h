@@ -45,6 +45,8 @@ struct Context {
   Namespace plan_names;
   Namespace interfaces;
   Namespace toolboxes;
+  /// ValidateOptions::name_uses: every namespace made while validating records into it.
+  NameUses *uses = nullptr;
 
   /// Parallel to the model tables: the declaration each element was lowered from.
   Table<model::ConstId, ConstSource> consts;

@@ -83,7 +83,7 @@ std::optional<model::Expr> lower_name(const ast::Expr &e, ExprScope &s) {
   const ast::Name &name = e.name;
   if (name.text.empty()) return std::nullopt;
   if (s.chart) {
-    if (const Symbol *sym = s.chart->names.find(name.text)) {
+    if (const Symbol *sym = s.chart->names.resolve(name)) {
       if (sym->kind == Sym::Const) return const_ref(sym->id<model::ConstId>(), e.range, s);
       if (sym->kind != Sym::Var) return not_a_value(s, name, *sym);
       if (s.constant) {
@@ -98,7 +98,7 @@ std::optional<model::Expr> lower_name(const ast::Expr &e, ExprScope &s) {
       return v;
     }
   }
-  if (const Symbol *sym = s.cx.c_names.find(name.text)) {
+  if (const Symbol *sym = s.cx.c_names.resolve(name)) {
     if (sym->kind == Sym::Const) return const_ref(sym->id<model::ConstId>(), e.range, s);
     return not_a_value(s, name, *sym);
   }
@@ -237,6 +237,11 @@ std::optional<model::Expr> lower_active(const ast::Expr &e, ExprScope &s, bool s
       suggest(d, names[k].text, candidates);
       return std::nullopt;
     }
+    // Looked up in the sub-chart's tree, not a namespace: recorded here for the language server.
+    if (s.cx.uses)
+      s.cx.uses->list.push_back({names[k].range, inner.places[place.index()].name.range,
+                                 inner.kind == ast::Chart::Kind::Fsm ? Sym::State : Sym::Place,
+                                 static_cast<int>(place.index())});
     x.path.push_back(place);
     chart = sub;
   }
@@ -436,8 +441,8 @@ std::optional<model::Stmt> lower_assign(const ast::Stmt &st, ExprScope &s) {
   auto value = lower_expr(st.value.get(), s);  // first: its errors are independent of the target's
   if (!st.target || st.target->text.empty() || !s.chart) return std::nullopt;  // a recovered syntax error
   const ast::Name &target = *st.target;
-  const Symbol *sym = s.chart->names.find(target.text);
-  if (!sym) sym = s.cx.c_names.find(target.text);
+  const Symbol *sym = s.chart->names.resolve(target);
+  if (!sym) sym = s.cx.c_names.resolve(target);
   if (!sym) {
     report_unknown(s.cx.diag, seen(s), target, "variable", s.chart->names.of({Sym::Var}));
     return std::nullopt;
@@ -510,7 +515,7 @@ Diagnostic *report_unknown(Diagnostics &diag, std::set<std::string> &seen, const
 
 model::PlaceId resolve_place(ChartScope &chart, Context &cx, const ast::Name &name) {
   if (name.text.empty()) return {};
-  const Symbol *sym = chart.names.find(name.text);
+  const Symbol *sym = chart.names.resolve(name);
   if (sym && (sym->kind == Sym::Place || sym->kind == Sym::State)) return sym->id<model::PlaceId>();
   // A place that lost its name to an earlier declaration: the clash is reported already.
   for (std::size_t i = 0; sym && i < chart.ast.places.size(); ++i)
@@ -595,7 +600,7 @@ std::optional<model::Expr> lower_call(const ast::Expr &e, ExprScope &s, bool sta
     s.cx.diag.error(e.range, ErrorKind::NotConstant, fmt::format("a constant expression cannot call '{}'", name.text));
     return std::nullopt;
   }
-  const Symbol *sym = s.cx.c_names.find(name.text);
+  const Symbol *sym = s.cx.c_names.resolve(name);
   if (!sym) {
     Diagnostic *d = report_unknown(s.cx.diag, seen(s), name, "function", s.cx.c_names.of({Sym::Function}));
     // A beginner's usual cause: the chart does not import the interface that declares it.

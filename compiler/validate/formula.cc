@@ -30,7 +30,7 @@ std::nullopt_t not_allowed(Context &cx, SourceRange at, const std::string &what)
 std::optional<model::Expr> lower_name(const ast::Expr &e, Context &cx, PlanScope &s, bool constant) {
   const ast::Name &name = e.name;
   if (name.text.empty()) return std::nullopt;
-  if (const Symbol *sym = s.names.find(name.text)) {
+  if (const Symbol *sym = s.names.resolve(name)) {
     if (sym->kind != Sym::ConfigEntry) {
       cx.diag
           .error(name.range, ErrorKind::TypeMismatch,
@@ -49,7 +49,7 @@ std::optional<model::Expr> lower_name(const ast::Expr &e, Context &cx, PlanScope
     x.refer_to(entry);
     return x;
   }
-  if (const Symbol *sym = cx.c_names.find(name.text); sym && sym->kind == Sym::Const) {
+  if (const Symbol *sym = cx.c_names.resolve(name); sym && sym->kind == Sym::Const) {
     cx.consts[sym->id<model::ConstId>()].used = true;
     const model::Expr *value = fold_const(cx, sym->id<model::ConstId>());
     if (!value) return std::nullopt;

@@ -86,6 +86,7 @@ void report_clash(const ast::Name &name, Sym kind, const Symbol &previous, Diagn
 
 bool Namespace::declare(const ast::Name &name, Sym kind, int index, Diagnostics &diag) {
   if (name.text.empty()) return false;
+  if (uses) uses->list.push_back({name.range, name.range, kind, index});
   check_reserved(name, kind, diag);
   const std::uint32_t previous = index_.insert(name.text, static_cast<std::uint32_t>(symbols_.size()), key());
   if (previous != NameIndex::kNone) {
@@ -99,6 +100,12 @@ bool Namespace::declare(const ast::Name &name, Sym kind, int index, Diagnostics 
 const Symbol *Namespace::find(std::string_view name) const {
   std::uint32_t k = index_.find(name, key());
   return k == NameIndex::kNone ? nullptr : &symbols_[k];
+}
+
+const Symbol *Namespace::resolve(const ast::Name &name) const {
+  const Symbol *sym = find(name.text);
+  if (sym && uses) uses->list.push_back({name.range, sym->range, sym->kind, sym->index});
+  return sym;
 }
 
 std::vector<const Symbol *> Namespace::of(std::initializer_list<Sym> kinds) const {

@@ -6,6 +6,7 @@
 #include "diagnostics.h"
 #include "id.h"
 #include "name_index.h"
+#include "name_uses.h"
 
 #include <cassert>
 #include <cstdint>
@@ -16,28 +17,6 @@
 #include <vector>
 
 namespace gfec::validation {
-
-/// What a name denotes; one enum for every namespace so messages can describe any clash.
-enum class Sym {
-  Interface,
-  Function,
-  Param,
-  Const,
-  Chart,
-  Place,
-  State,
-  Transition,
-  Var,
-  Toolbox,
-  Template,
-  TemplateParam,
-  ResultState,
-  Event,
-  Plan,
-  ConfigEntry,
-  Actor,
-  Supervisor,
-};
 
 /// "function", "place", "config entry", ... as a message says it.
 const char *describe(Sym kind);
@@ -87,10 +66,16 @@ public:
     return declare(name, kind, symbol_index(id), diag);
   }
   const Symbol *find(std::string_view name) const;
+  /// find(name.text), and the use recorded in `uses` when found: every lookup of a name the
+  /// user wrote goes through here, so a language server sees what it refers to.
+  const Symbol *resolve(const ast::Name &name) const;
   /// Room for `count` more names (NameIndex::reserve).
   void reserve(std::size_t count) { index_.reserve(symbols_.size() + count); }
   /// The symbols of the given kinds in declaration order: did-you-mean candidates.
   std::vector<const Symbol *> of(std::initializer_list<Sym> kinds) const;
+
+  /// Where declarations and resolved uses are recorded (ValidateOptions::name_uses); null: nowhere.
+  NameUses *uses = nullptr;
 
 private:
   /// The name at a symbol number, for the index.

@@ -41,7 +41,13 @@ std::optional<model::RuleTarget> lower_target(Context &cx, PlanScope &s, const a
 int find_outcome(Context &cx, PlanScope &s, const ast::Name &name, const Callee &c, int &guess) {
   guess = -1;
   for (std::size_t k = 0; k < c.outcomes.size(); ++k)
-    if (c.outcomes[k] == name.text) return static_cast<int>(k);
+    if (c.outcomes[k] == name.text) {
+      // Found in the template's list, not a namespace: recorded here for the language server.
+      if (cx.uses && k < c.outcome_decls.size())
+        cx.uses->list.push_back(
+            {name.range, c.outcome_decls[k]->range, c.events ? Sym::Event : Sym::ResultState, static_cast<int>(k)});
+      return static_cast<int>(k);
+    }
   if (name.text.empty()) return -1;
   std::vector<Symbol> symbols;
   for (std::size_t k = 0; k < c.outcomes.size(); ++k)
@@ -71,7 +77,7 @@ std::string outcome_list(const Callee &c) {
 std::optional<model::Expr> lower_out_arg(Context &cx, PlanScope &s, const ast::Expr *arg, const model::TemplateParam &p,
                                          const Callee &c) {
   if (!arg) return std::nullopt;
-  const Symbol *sym = arg->kind == ast::Expr::Kind::Name ? s.names.find(arg->name.text) : nullptr;
+  const Symbol *sym = arg->kind == ast::Expr::Kind::Name ? s.names.resolve(arg->name) : nullptr;
   if (arg->kind == ast::Expr::Kind::Name && !sym && !cx.c_names.find(arg->name.text))
     return lower_formula(arg, cx, s, false);  // reports the unknown name
   if (!sym || sym->kind != Sym::ConfigEntry) {
@@ -124,7 +130,7 @@ Callee plan_callee(Context &cx, model::PlanId index) {
 
 model::ActorId resolve_actor(Context &cx, PlanScope &s, const ast::Name &name) {
   if (name.text.empty()) return {};
-  const Symbol *sym = s.names.find(name.text);
+  const Symbol *sym = s.names.resolve(name);
   if (sym && sym->kind == Sym::Actor) return sym->id<model::ActorId>();
   // An actor that lost its name to an earlier declaration: the clash is reported already.
   for (std::size_t i = 0; sym && i < s.ast.actors.size(); ++i)

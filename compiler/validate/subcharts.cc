@@ -45,8 +45,8 @@ std::vector<Edge> resolve_runs(Context &cx) {
             fmt::format("terminal state '{}' cannot run a sub-chart: the machine has stopped there", place.name.text));
         continue;
       }
-      const Symbol *sym = cx.c_names.find(name.text);
-      if (!sym) sym = cx.plan_names.find(name.text);
+      const Symbol *sym = cx.c_names.resolve(name);
+      if (!sym) sym = cx.plan_names.resolve(name);
       if (!sym) {
         auto &d = cx.diag.error(name.range, ErrorKind::UnknownName, fmt::format("unknown chart '{}'", name.text));
         suggest(d, name.text, cx.c_names.of({Sym::Chart}));

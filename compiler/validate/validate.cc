@@ -60,6 +60,8 @@ model::Model validate(ast::Program &program, const SourceManager &sources, Diagn
   validation::Context cx(program, sources, diag, model);
   cx.keep_tree = options.keep_tree;
   cx.declaring_files = options.declaring_files;
+  cx.uses = options.name_uses;
+  for (validation::Namespace *ns : {&cx.c_names, &cx.plan_names, &cx.interfaces, &cx.toolboxes}) ns->uses = cx.uses;
 
   validation::collect_symbols(cx);
   collect_verbatims(cx);

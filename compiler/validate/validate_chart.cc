@@ -302,6 +302,7 @@ void declare_chart(Context &cx, ast::Chart &chart) {
 void validate_chart(Context &cx, model::ChartId index) {
   ErrorWatch watch(cx.diag);
   ChartScope scope(*cx.charts[index], cx.model.charts[index], index);
+  scope.names.uses = cx.uses;
   cx.chart = &scope;
   set_period(cx, scope);
   set_team(cx, scope);

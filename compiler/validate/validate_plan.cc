@@ -105,7 +105,7 @@ void set_start(Context &cx, PlanScope &s) {
 /// The template (or plan) `name` refers to, if it is one of `kinds`; reports why not.
 std::optional<Callee> resolve_callee(Context &cx, PlanScope &s, const ast::Name &name, bool supervisor) {
   if (name.text.empty()) return std::nullopt;
-  const Symbol *sym = cx.plan_names.find(name.text);
+  const Symbol *sym = cx.plan_names.resolve(name);
   if (!sym) {
     std::vector<const Symbol *> candidates;
     for (const Symbol *c : cx.plan_names.of({Sym::Template, Sym::Plan})) {
@@ -389,6 +389,7 @@ void declare_plan(Context &cx, const ast::Plan &plan) {
 void validate_plan(Context &cx, model::PlanId index) {
   ErrorWatch watch(cx.diag);
   PlanScope s(*cx.plans[index], cx.model.plans[index]);
+  s.names.uses = cx.uses;
   std::vector<model::ConfigId> config_index = lower_config_types(cx, s);
   declare_members(cx, s, config_index);
   lower_config_inits(cx, s, config_index);

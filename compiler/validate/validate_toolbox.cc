@@ -94,6 +94,7 @@ void lower_outcomes(Context &cx, const ast::Template &t, model::Template &out) {
         t.name.range, ErrorKind::NoOutcome,
         fmt::format("{} '{}' has no {}", kind_word(t.kind), t.name.text, supervisor ? "event" : "result state"));
   Namespace outcomes;
+  outcomes.uses = cx.uses;  // a rule's `STATE ->` points here (plan_wiring.cc find_outcome)
   for (const ast::Name &o : t.outcomes) {
     out.outcomes.emplace_back(o.text);
     const Sym kind = supervisor ? Sym::Event : Sym::ResultState;

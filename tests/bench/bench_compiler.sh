@@ -130,3 +130,20 @@ for n in 1024 4096 16384 65536; do
   row "fan $n" "$work/fan.sfc" "$(wc -l < "$work/fan.sfc")"
 done
 echo "(fans of N sub-chart instances; each row has 4x the instances of the one before: linear is 4x)"
+
+# gfec fmt (docs/formatting.md) on the same rings: it parses, then lays the tokens out twice
+# (the second pass proves the first a fixed point). --check: the same work, nothing written.
+echo
+printf "%-18s %10s %10s %11s %8s\n" "chart" "lines" "fmt" "fmt RSS" "time x"
+prev_time=
+for n in "${sizes[@]}"; do
+  "$gen" chart ring "$n" > "$work/ring.sfc"
+  lines=$(wc -l < "$work/ring.sfc")
+  measure fmt 3 "$gfec" fmt --check "$work/ring.sfc"
+  read -r ft fm <<< "$fmt"
+  growth="-"
+  [[ -z $prev_time ]] || growth=$(awk -v a="$ft" -v b="$prev_time" 'BEGIN { printf((b > 0) ? "%.1fx" : "-", a / b) }')
+  printf "%-18s %10s %9ss %8s MB %8s\n" "ring $n" "$lines" "$ft" "$((fm / 1024))" "$growth"
+  prev_time=$ft
+done
+echo "(gfec fmt --check of the rings above)"

@@ -37,7 +37,7 @@ help=$("$root/bin/gfec" --help)
 for words in "gfec test FILE" "-x LANG" "chart text"; do
   grep -qF -- "$words" <<<"$help" || fail "gfec --help does not mention '$words'"
 done
-for command in "" run test monitor; do
+for command in "" run test lsp monitor; do
   cited=$("$root/bin/gfec" $command --help | sed -n 's/^Documentation: man gfec; \([^ ]*\)$/\1/p')
   [ -n "$cited" ] || fail "gfec $command --help cites no installed guide: $("$root/bin/gfec" $command --help | tail -1)"
   [ -f "$cited" ] || fail "gfec $command --help cites $cited, not installed"
@@ -130,6 +130,10 @@ expect --agents -- gfec run blink.sfc --ag
 expect alica -- gfec run -x a
 expect -Wall -- gfec run blink.sfc -Wal
 expect blink.test -- gfec test ""
+expect blink.sfc blink.test board.iface -- gfec fmt ""
+[[ " $(offers gfec fmt "") " == *" plan.pml "* ]] && fail "gfec fmt <Tab> offers an ALICA plan, which it does not format"
+expect --check -- gfec fmt --ch
+expect fmt -- gfec f
 [[ " $(offers gfec test "") " == *" blink.sfc "* ]] && fail "gfec test <Tab> offers a chart, not a test file"
 expect --reference-only --junit -x -- gfec test -
 expect report.xml -- gfec test --junit r

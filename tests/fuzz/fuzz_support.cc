@@ -2,6 +2,8 @@
 
 #include "analysis/analysis.h"
 #include "diagnostic_printer.h"
+#include "format/format_source.h"
+#include "lexer.h"
 #include "interpreter/machine.h"
 #include "pipeline/compilation.h"
 #ifdef GFEC_FUZZ_C_BACKEND
@@ -223,6 +225,42 @@ void run_back_ends(const model::Model &m) {
   }
 }
 
+/// The tokens (kind and spelling) and the comments of a text, one string.
+std::string lexed(const std::string &text) {
+  SourceManager sources;
+  Diagnostics diag(WarningOptions{}, 1000);
+  FileId id = sources.add("t.sfc", text);
+  std::vector<SourceRange> comments;
+  Lexer lexer(sources, id, diag);
+  lexer.record_comments(&comments);
+  std::string out;
+  for (Token t = lexer.next(); t.kind != Tok::End; t = lexer.next())
+    out.append(std::to_string(static_cast<int>(t.kind))).append(" ").append(t.text).append("\n");
+  for (const SourceRange &r : comments) {
+    std::string c = text.substr(r.begin, r.end - r.begin);
+    if (c.rfind("//", 0) == 0) c.erase(c.find_last_not_of(" \t\f\v") + 1);  // gfec fmt drops trailing blanks
+    out.append(c).append("\n");
+  }
+  return out;
+}
+
+/// gfec fmt's promises (docs/formatting.md): it refuses only text with errors, keeps every token
+/// and comment, and formatting its result changes nothing.
+void check_format(const std::string &text) {
+  SourceManager sources;
+  Diagnostics diag(WarningOptions{}, 1000);
+  auto once = format_source(sources, sources.add("fuzz.sfc", text), diag);
+  if (!once) {
+    expect(diag.has_errors(), "the formatter refuses only text with errors");
+    return;
+  }
+  expect(lexed(text) == lexed(*once), "formatting keeps every token and comment");
+  SourceManager again;
+  Diagnostics again_diag(WarningOptions{}, 1000);
+  auto twice = format_source(again, again.add("fuzz.sfc", *once), again_diag);
+  expect(twice && *twice == *once, "formatting formatted text changes nothing");
+}
+
 }  // namespace
 
 std::string check_one(const std::string &input) {
@@ -252,6 +290,7 @@ std::string check_one(const std::string &input) {
     expect(!d.message.empty() && !d.check().empty(), "a diagnostic has a message and a check name");
     printed += render_text(d, sources);
   }
+  check_format(input.substr(0, split));
   if (!validated) return printed;
 
   ModelCheck check(m);

@@ -31,6 +31,23 @@ TEST_CASE("lexer: keywords, identifiers, punctuation and comments") {
   CHECK_FALSE(diag.has_errors());
 }
 
+TEST_CASE("lexer: on request, the comments it skips are recorded in order, as written") {
+  SourceManager sm;
+  Diagnostics diag;
+  const std::string text = "a // one  \r\n/* two\n lines */ b /**/ c // end";
+  FileId id = sm.add("t.sfc", text);
+  std::vector<SourceRange> comments;
+  Lexer lexer(sm, id, diag);
+  lexer.record_comments(&comments);
+  std::vector<std::string_view> tokens;
+  for (Token t = lexer.next(); t.kind != Tok::End; t = lexer.next()) tokens.push_back(t.text);
+  CHECK(tokens == std::vector<std::string_view>{"a", "b", "c"});
+  std::vector<std::string> written;
+  for (const SourceRange &r : comments) written.push_back(text.substr(r.begin, r.end - r.begin));
+  CHECK(written == std::vector<std::string>{"// one  ", "/* two\n lines */", "/**/", "// end"});
+  CHECK_FALSE(diag.has_errors());
+}
+
 TEST_CASE("lexer: numbers, durations and strings") {
   SourceManager sm;
   Diagnostics diag;

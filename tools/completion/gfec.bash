@@ -64,6 +64,15 @@ _gfec() {
     return
   fi
 
+  if [[ ${COMP_WORDS[1]} == fmt && $COMP_CWORD -gt 1 && $cur != -f?* ]]; then
+    if [[ $cur == -* ]]; then
+      COMPREPLY=($(compgen -W '--check --diff -f --help' -- "$cur"))
+    else
+      COMPREPLY=($(compgen -f -X '!*.@(sfc|fsm|plan|iface|toolbox|test)' -- "$cur")); compopt -o plusdirs 2>/dev/null
+    fi
+    return
+  fi
+
   case $prev in
     -o|--output|-MF) COMPREPLY=($(compgen -f -- "$cur")); return ;;
     --chart|-MT|--context-type|--trace-full-every) return ;;
@@ -92,7 +101,7 @@ _gfec() {
       return ;;
   esac
   if [[ $COMP_CWORD -eq 1 ]]; then
-    COMPREPLY=($(compgen -W 'run test monitor' -- "$cur"))
+    COMPREPLY=($(compgen -W 'run test fmt lsp monitor' -- "$cur"))
   fi
   COMPREPLY+=($(compgen -f -X '!*.@(sfc|fsm|plan|iface|toolbox|pml)' -- "$cur"))
   compopt -o plusdirs 2>/dev/null

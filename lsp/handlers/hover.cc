@@ -1,0 +1,70 @@
+// textDocument/hover: what the name at the cursor is, from its declaration in the syntax tree
+// (outline.h) and the validator's resolution: an interface function's prototype and interface,
+// a place's kind and actions, a var's or constant's type and initial value, a chart's
+// interface (its places' kinds, vars and constants). Markdown, with chart text in `gfec` blocks.
+#include "handlers/navigation.h"
+#include "methods.h"
+#include "outline.h"
+#include "validate/names.h"
+
+namespace gfec::lsp::handlers {
+
+using nlohmann::json;
+
+namespace {
+
+/// `text` cut to its first `lines` lines (a "..." line says so).
+std::string first_lines(std::string_view text, int lines) {
+  std::string out;
+  int n = 0;
+  for (std::size_t at = 0; at < text.size();) {
+    std::size_t nl = text.find('\n', at);
+    std::string_view line = text.substr(at, nl == std::string_view::npos ? std::string_view::npos : nl - at);
+    if (++n > lines) return out + "...\n";
+    out += std::string(line) + "\n";
+    if (nl == std::string_view::npos) break;
+    at = nl + 1;
+  }
+  return out;
+}
+
+std::string code(const std::string &text) {
+  return "```gfec\n" + text + (text.empty() || text.back() != '\n' ? "\n" : "") + "```";
+}
+
+/// A chart's interface: what a chart that runs it, or a test of it, may name.
+std::string chart_interface(const OutlineItem &chart) {
+  std::string s = chart.detail + " " + chart.name + " {\n";
+  for (const OutlineItem &c : chart.children) s += "  " + c.detail + " " + c.name + ";\n";
+  return s + "}";
+}
+
+}  // namespace
+
+json hover(Session &s, const json &params) {
+  At at = name_at_request(s, params);
+  if (!at.name) return nullptr;
+  const NameUse &u = *at.name;
+  std::string header =
+      "**" + std::string(validation::describe(u.kind)) + "** `" + std::string(at.doc.text_of(u.at)) + "`";
+  std::string body;
+  if (const ast::File *file = at.doc.syntax_of(u.decl.file)) {
+    std::vector<OutlineItem> items = outline(*file);
+    const OutlineItem *parent = nullptr;
+    if (const OutlineItem *decl = declaration_named_at(items, u.decl, &parent)) {
+      if (parent) header += " of " + parent->detail + " `" + parent->name + "`";
+      if (u.kind == validation::Sym::Chart) body = code(chart_interface(*decl));
+      else body = code(first_lines(at.doc.text_of(decl->range), 12));
+    }
+  }
+  if (u.decl.file != u.at.file || !at.doc.compilation().sources.knows(u.decl.file)) {
+    const auto &sources = at.doc.compilation().sources;
+    if (sources.knows(u.decl.file)) header += "\n\ndeclared in `" + sources.file(u.decl.file).path() + "`";
+  }
+  return {{"contents", {{"kind", "markdown"}, {"value", body.empty() ? header : header + "\n\n" + body}}},
+          {"range", at.doc.range(u.at)}};
+}
+
+void advertise_hover(json &caps) { caps["hoverProvider"] = true; }
+
+}  // namespace gfec::lsp::handlers
