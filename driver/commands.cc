@@ -3,6 +3,7 @@
 #include "driver.h"
 #include "fmt_command.h"
 #include "lsp_command.h"
+#include "monitor_command.h"
 #include "run_command.h"
 #include "test_command.h"
 
@@ -23,6 +24,7 @@ const std::vector<Command> kCommands = {
     {"test", "gfec test FILE... [OPTIONS]", "run scenario tests on the interpreter and the C engine", test_command},
     {"fmt", "gfec fmt [--check] FILE...", "lay out chart text in its canonical form, in place", fmt_command},
     {"lsp", "gfec lsp [--stdio]", "the language server for editors, on stdin and stdout", lsp_command},
+    {"monitor", "gfec monitor CHART --log", "decode a live trace of an engine built with --trace", monitor_command},
 };
 
 /// The compiler's other forms: modes of its options rather than commands of their own.

@@ -104,6 +104,10 @@ void name_globals(EngineContext &c, NameSpace &globals, const EngineContext *roo
     globals.claim(c.place_name_fn);
     globals.claim(c.transition_name_fn);
   }
+  if (c.traced()) {
+    c.trace_write_fn = t + "_trace_write";
+    globals.claim(c.trace_write_fn);
+  }
   globals.reserve(c.chart.places.size() + c.chart.transitions.size());
   c.place_const.reserve(c.chart.places.size());
   c.transition_const.reserve(c.chart.transitions.size());
@@ -117,6 +121,11 @@ void name_globals(EngineContext &c, NameSpace &globals, const EngineContext *roo
   c.watched_fn = globals.take(t + "_watched");
   c.active_levels = globals.take(t + "_ACTIVE_LEVELS");
   c.candidate_levels = globals.take(t + "_CANDIDATE_LEVELS");
+  if (c.traced()) {
+    c.trace_frame_fn = globals.take(t + "_trace_frame");
+    c.trace_put_fn = globals.take(t + "_trace_put");
+    c.step_fn = globals.take(t + "_step");
+  }
 }
 
 void name_fields(EngineContext &c) {
@@ -146,6 +155,11 @@ void name_fields(EngineContext &c) {
   if (std::any_of(places.begin(), places.end(), [](const model::Place &p) { return p.timed; }))
     for (const auto &p : places) c.timer_field.push_back(p.timed ? fields.take("timer_" + p.name) : "");
   if (c.has_context()) c.ctx_field = fields.take("ctx");
+  if (c.traced()) {
+    c.trace_tick = fields.take("trace_tick");
+    c.trace_left = fields.take("trace_left");
+    c.trace_prev = fields.take("trace_prev");
+  }
   // The instances the places run: a field named after the place (`m->Search`), for debuggers.
   if (std::any_of(places.begin(), places.end(), [](const model::Place &p) { return p.runs.valid(); }))
     for (const auto &p : places) c.sub_field.push_back(p.runs ? fields.take(p.name.str()) : "");
@@ -400,6 +414,52 @@ std::unique_ptr<EngineContext> make_context(const model::Model &model, const mod
   NameSpace globals;
   build(*c, globals, nullptr);
   collect_functions(*c, c->functions);
+  if (c->traced() && c->engine_options.trace_calls) {
+    const std::string &t = c->type;
+    c->calls_buffer = globals.take(t + "_trace_calls");
+    c->calls_count = globals.take(t + "_trace_calls_n");
+    c->calls_cut = globals.take(t + "_trace_calls_cut");
+    c->call_record_fn = globals.take(t + "_trace_record");
+    c->call_bytes_fn = globals.take(t + "_trace_record_bytes");
+    c->zigzag_fn = globals.take(t + "_trace_zigzag");
+    // Wrapped: the functions the tick calls; not one only a postcondition calls (X_CHECKS), which
+    // the reference's log shows no call of either, and whose unused wrapper would be a warning.
+    std::vector<bool> called(model.functions.size(), false);
+    std::function<void(const model::Expr &)> expr = [&](const model::Expr &e) {
+      if (e.kind == model::Expr::Kind::Call) called[e.function().index()] = true;
+      for (const auto &a : e.args) expr(a);
+    };
+    std::function<void(const model::Stmt &)> stmt = [&](const model::Stmt &st) {
+      expr(st.expr);
+      for (const auto &x : st.then_block) stmt(x);
+      for (const auto &x : st.else_block) stmt(x);
+    };
+    std::function<void(const EngineContext &)> chart = [&](const EngineContext &e) {
+      for (const auto &p : e.chart.places) {
+        for (const auto &st : p.action) stmt(st);
+        for (const auto *block : {&p.entry, &p.exit})
+          if (*block)
+            for (const auto &st : **block) stmt(st);
+      }
+      for (const auto &tr : e.chart.transitions)
+        if (tr.condition) expr(*tr.condition);
+      for (const auto &sub : e.sub)
+        if (sub) chart(*sub);
+    };
+    chart(*c);
+    c->call_wrapper.assign(model.functions.size(), "");
+    for (model::FunctionId f : c->functions)
+      if (called[f.index()]) c->call_wrapper[f] = globals.take(t + "_traced_" + model.functions[f].name);
+    // The instances call the root's wrappers.
+    std::function<void(EngineContext &)> share = [&](EngineContext &e) {
+      for (auto &s : e.sub)
+        if (s) {
+          s->call_wrapper = c->call_wrapper;
+          share(*s);
+        }
+    };
+    share(*c);
+  }
   return c;
 }
 

@@ -21,9 +21,32 @@ public:
         ->type_name("TYPE");
     app.add_flag("--names", options_->names,
                  "C engine: X_place_name() and X_transition_name(), the declared names for logging and tracing");
+    app.add_flag("--trace{activation}", trace_mode_,
+                 "C engine: after each tick, one frame of the activation through X_trace_write(), the user's, for "
+                 "'gfec monitor' (docs/live.md); --trace=calls: the tick's calls too, with arguments and results")
+        ->type_name("WHAT");
+    full_every_option_ =
+        app.add_option(
+               "--trace-full-every", full_every_,
+               "C engine, --trace: a full frame at least every N ticks, the others carry changes (default 32; 1: "
+               "every frame full)")
+            ->type_name("N");
   }
 
   std::string check() override {
+    if (!trace_mode_.empty()) {
+      if (trace_mode_ != "activation" && trace_mode_ != "calls")
+        return fmt::format("--trace={}: the trace holds 'activation' (the default) or 'calls' (activation and calls)",
+                           trace_mode_);
+      options_->trace = true;
+      options_->trace_calls = trace_mode_ == "calls";
+    }
+    if (full_every_option_ != nullptr && full_every_option_->count() > 0) {
+      if (!options_->trace) return "--trace-full-every needs --trace";
+      if (full_every_ < 1 || full_every_ > 65535)
+        return fmt::format("--trace-full-every {}: the number of ticks must be 1 ... 65535", full_every_);
+      options_->trace_full_every = static_cast<unsigned>(full_every_);
+    }
     if (type_.empty() && !context_) return {};
     if (type_.empty()) type_ = "void *";
     naming::CTypeName type;
@@ -34,7 +57,10 @@ public:
   }
 
   std::string given() const override {
-    return !options_->context_type.empty() ? "--context" : options_->names ? "--names" : "";
+    return !options_->context_type.empty() ? "--context"
+           : options_->names               ? "--names"
+           : options_->trace               ? "--trace"
+                                           : "";
   }
 
   const char *owner() const override { return "the C engine"; }
@@ -49,6 +75,9 @@ public:
 private:
   bool context_ = false;
   std::string type_;
+  std::string trace_mode_;  ///< --trace[=activation|calls]; empty: not given
+  long long full_every_ = 0;
+  CLI::Option *full_every_option_ = nullptr;
   std::shared_ptr<CEngineOptions> options_ = std::make_shared<CEngineOptions>();
 };
 

@@ -557,7 +557,10 @@ private:
           i < f.params.size() ? converted(std::move(o.items[i]), e.args[i], f.params[i].type) : std::move(o.items[i]);
       args += (args.empty() ? "" : ", ") + a.text;
     }
-    return {fmt::format("{}({})", f.name, args), kPrimary, std::move(o.before)};
+    // --trace=calls: through the file-local wrapper that records the call (c_trace.cc).
+    const std::string &name =
+        c_.call_wrapper.empty() || c_.call_wrapper.at(e.function()).empty() ? f.name : c_.call_wrapper.at(e.function());
+    return {fmt::format("{}({})", name, args), kPrimary, std::move(o.before)};
   }
 
   Rendered unary(const Expr &e) {

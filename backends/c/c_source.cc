@@ -4,6 +4,7 @@
 #include "c_expr.h"
 #include "c_floating_use.h"
 #include "c_form.h"
+#include "c_trace.h"
 
 #include <fmt/format.h>
 
@@ -88,6 +89,7 @@ void init(CodeWriter &w, const EngineContext &c) {
   for (model::PlaceId p : c.chart.places.ids())
     if (c.place(p).timed) w.line("{} = 0;", c.timer_of(p));
   if (c.needs_started) w.line("{} = false;", c.field(c.started));
+  if (c.traced()) trace_init(w, c);
   if (c.team()) {
     w.line("{} = 0;", c.field(c.agent));
     auto each = w.block(fmt::format("for ({0} = 0; {0} < {1}; ++{0}) {{", c.index, c.team_size));
@@ -298,6 +300,10 @@ void emit_source(const EngineContext &c, std::ostream &out) {
   no_contraction(w, c);
   verbatims(w, c);
   w.blank();
+  if (!c.calls_buffer.empty()) {
+    emit_trace_calls(w, c);
+    w.blank();
+  }
   for (const auto &s : c.sub)
     if (s) instance(w, *s);
   if (c.has_sub()) {
@@ -321,6 +327,10 @@ void emit_source(const EngineContext &c, std::ostream &out) {
   if (c.engine_options.names) {
     w.blank();
     name_functions(w, c);
+  }
+  if (c.traced()) {
+    w.blank();
+    emit_trace(w, c);
   }
 }
 

@@ -36,6 +36,20 @@ _gfec() {
     return
   fi
 
+  if [[ ${COMP_WORDS[1]} == monitor && $COMP_CWORD -gt 1 && $cur != -[Wf]?* ]]; then
+    case $prev in
+      --serial) COMPREPLY=($(compgen -f -- "${cur:-/dev/tty}")); return ;;
+      --baud) COMPREPLY=($(compgen -W '9600 19200 38400 57600 115200 230400 460800 921600 1000000' -- "$cur")); return ;;
+      --tcp|--silence|--chart) return ;;
+    esac
+    if [[ $cur == -* ]]; then
+      COMPREPLY=($(compgen -W '--log --serial --baud --tcp --silence --chart -I -x -W -w -f --help' -- "$cur"))
+    else
+      COMPREPLY=($(compgen -f -X '!*.@(sfc|fsm|pml)' -- "$cur")); compopt -o plusdirs 2>/dev/null
+    fi
+    return
+  fi
+
   if [[ ${COMP_WORDS[1]} == test && $COMP_CWORD -gt 1 && $cur != -[Wf]?* ]]; then
     case $prev in
       --junit) COMPREPLY=($(compgen -f -X '!*.xml' -- "$cur")); compopt -o plusdirs 2>/dev/null; return ;;
@@ -61,11 +75,12 @@ _gfec() {
 
   case $prev in
     -o|--output|-MF) COMPREPLY=($(compgen -f -- "$cur")); return ;;
-    --chart|-MT|--context-type) return ;;
+    --chart|-MT|--context-type|--trace-full-every) return ;;
   esac
   case $cur in
     --emit=*) COMPREPLY=($(compgen -P --emit= -W 'c cpp json dot svg toolbox-skeleton chart' -- "${cur#--emit=}")); return ;;
     --engine=*) COMPREPLY=($(compgen -P --engine= -W 'auto readable scalable' -- "${cur#--engine=}")); return ;;
+    --trace=*) COMPREPLY=($(compgen -P --trace= -W 'activation calls' -- "${cur#--trace=}")); return ;;
     -fdiagnostics-format=*)
       COMPREPLY=($(compgen -P -fdiagnostics-format= -W 'text json sarif-stderr sarif-file' -- "${cur#*=}")); return ;;
     -fdiagnostics-color=*)
@@ -81,12 +96,12 @@ _gfec() {
       compopt -o nospace 2>/dev/null; return ;;
     -*)
       COMPREPLY=($(compgen -W '-o -I -x --check --analyze --emit= --chart --engine= --no-line-directives
-        --context --context-type= --names -W -w -Wall -Werror -f -MD -MMD -MF -MP -MT --help --version' -- "$cur"))
+        --context --context-type= --names --trace --trace= --trace-full-every -W -w -Wall -Werror -f -MD -MMD -MF -MP -MT --help --version' -- "$cur"))
       [[ ${COMPREPLY[0]} == *= ]] && compopt -o nospace 2>/dev/null
       return ;;
   esac
   if [[ $COMP_CWORD -eq 1 ]]; then
-    COMPREPLY=($(compgen -W 'run test fmt lsp' -- "$cur"))
+    COMPREPLY=($(compgen -W 'run test fmt lsp monitor' -- "$cur"))
   fi
   COMPREPLY+=($(compgen -f -X '!*.@(sfc|fsm|plan|iface|toolbox|pml)' -- "$cur"))
   compopt -o plusdirs 2>/dev/null
