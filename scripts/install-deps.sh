@@ -18,6 +18,7 @@ packages=(
   gcc-riscv64-unknown-elf picolibc-riscv64-unknown-elf qemu-system-misc
   arduino-mk  # the Arduino sketch's make build (examples/arduino-line-follower); brings arduino-core-avr
   chromium   # the run viewer's browser test (tests/viewer)
+  libcpp-httplib-dev  # gfec monitor --http: the live page's server (monitor/live, docs/live.md)
 )
 # Node (for the SARIF schema and TextMate grammar tests) may come from another repo already.
 command -v npm >/dev/null 2>&1 || packages+=(nodejs npm)
