@@ -104,6 +104,10 @@ void name_globals(EngineContext &c, NameSpace &globals, const EngineContext *roo
     globals.claim(c.place_name_fn);
     globals.claim(c.transition_name_fn);
   }
+  if (c.traced()) {
+    c.trace_write_fn = t + "_trace_write";
+    globals.claim(c.trace_write_fn);
+  }
   globals.reserve(c.chart.places.size() + c.chart.transitions.size());
   c.place_const.reserve(c.chart.places.size());
   c.transition_const.reserve(c.chart.transitions.size());
@@ -117,6 +121,11 @@ void name_globals(EngineContext &c, NameSpace &globals, const EngineContext *roo
   c.watched_fn = globals.take(t + "_watched");
   c.active_levels = globals.take(t + "_ACTIVE_LEVELS");
   c.candidate_levels = globals.take(t + "_CANDIDATE_LEVELS");
+  if (c.traced()) {
+    c.trace_frame_fn = globals.take(t + "_trace_frame");
+    c.trace_put_fn = globals.take(t + "_trace_put");
+    c.step_fn = globals.take(t + "_step");
+  }
 }
 
 void name_fields(EngineContext &c) {
@@ -146,6 +155,11 @@ void name_fields(EngineContext &c) {
   if (std::any_of(places.begin(), places.end(), [](const model::Place &p) { return p.timed; }))
     for (const auto &p : places) c.timer_field.push_back(p.timed ? fields.take("timer_" + p.name) : "");
   if (c.has_context()) c.ctx_field = fields.take("ctx");
+  if (c.traced()) {
+    c.trace_tick = fields.take("trace_tick");
+    c.trace_left = fields.take("trace_left");
+    c.trace_prev = fields.take("trace_prev");
+  }
   // The instances the places run: a field named after the place (`m->Search`), for debuggers.
   if (std::any_of(places.begin(), places.end(), [](const model::Place &p) { return p.runs.valid(); }))
     for (const auto &p : places) c.sub_field.push_back(p.runs ? fields.take(p.name.str()) : "");

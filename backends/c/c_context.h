@@ -126,8 +126,17 @@ struct EngineContext {
   std::string instance_count;          ///< the root's X_INSTANCE_COUNT
   std::string instance_activation_fn;  ///< the root's X_instance_activation
   std::string instance_const;          ///< an instance's number in X_instance: `Patrol_Search_INSTANCE`
-  std::string place_name_fn;           ///< X_place_name (--names)
-  std::string transition_name_fn;      ///< X_transition_name (--names)
+  // --trace (docs/live.md), the root's only; empty without it.
+  std::string trace_write_fn;  ///< X_trace_write, the user's: where each frame goes
+  std::string trace_frame_fn;  ///< the file-local writer of one tick's frame
+  std::string trace_put_fn;    ///< the file-local writer of one number (7 bits a byte)
+  std::string step_fn;         ///< the file-local tick that X_run runs before the frame
+  std::string trace_tick;      ///< field: the ticks run since _init
+  std::string trace_left;      ///< field: delta frames before the next full one
+  std::string trace_prev;      ///< field: the values of the last frame
+  bool traced() const { return root && engine_options.trace; }
+  std::string place_name_fn;       ///< X_place_name (--names)
+  std::string transition_name_fn;  ///< X_transition_name (--names)
   /// Every interface call passes the context first.
   bool has_context() const { return !context_type.spelling.empty(); }
   /// `void *ctx`, `struct motor *ctx`: the context as a parameter called `name`.

@@ -21,9 +21,22 @@ public:
         ->type_name("TYPE");
     app.add_flag("--names", options_->names,
                  "C engine: X_place_name() and X_transition_name(), the declared names for logging and tracing");
+    app.add_flag("--trace", options_->trace,
+                 "C engine: after each tick, one frame of the activation through X_trace_write(), the user's, for "
+                 "'gfec monitor' (docs/live.md)");
+    app.add_option("--trace-full-every", full_every_,
+                   "C engine, --trace: a full frame at least every N ticks, the others carry changes (default 32; 1: "
+                   "every frame full)")
+        ->type_name("N");
   }
 
   std::string check() override {
+    if (full_every_ != 0) {
+      if (!options_->trace) return "--trace-full-every needs --trace";
+      if (full_every_ < 1 || full_every_ > 65535)
+        return fmt::format("--trace-full-every {}: the number of ticks must be 1 ... 65535", full_every_);
+      options_->trace_full_every = static_cast<unsigned>(full_every_);
+    }
     if (type_.empty() && !context_) return {};
     if (type_.empty()) type_ = "void *";
     naming::CTypeName type;
@@ -34,7 +47,10 @@ public:
   }
 
   std::string given() const override {
-    return !options_->context_type.empty() ? "--context" : options_->names ? "--names" : "";
+    return !options_->context_type.empty() ? "--context"
+           : options_->names               ? "--names"
+           : options_->trace               ? "--trace"
+                                           : "";
   }
 
   const char *owner() const override { return "the C engine"; }
@@ -49,6 +65,7 @@ public:
 private:
   bool context_ = false;
   std::string type_;
+  long long full_every_ = 0;  ///< 0: not given
   std::shared_ptr<CEngineOptions> options_ = std::make_shared<CEngineOptions>();
 };
 

@@ -5,6 +5,7 @@
 #include "backend.h"
 #include "backend_option_group.h"
 
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -15,9 +16,13 @@ struct CEngineOptions : BackendOptions {
   /// first (docs/c-engine.md "Instance context"); empty: no context, GFE's calls.
   std::string context_type;
   bool names = false;  ///< `--names`: X_place_name and X_transition_name
+  /// `--trace`: each tick ends with a frame through X_trace_write (docs/live.md).
+  bool trace = false;
+  /// `--trace-full-every N`: a full frame at least every N ticks (the others carry changes).
+  unsigned trace_full_every = 32;
 };
 
-/// --context, --context-type and --names (c_engine_option_group.cc).
+/// --context, --context-type, --names, --trace and --trace-full-every (c_engine_option_group.cc).
 std::unique_ptr<BackendOptionGroup> make_c_engine_option_group();
 
 }  // namespace gfec::c_backend

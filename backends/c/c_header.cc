@@ -3,6 +3,7 @@
 #include "c_expr.h"
 #include "c_floating_use.h"
 #include "c_form.h"
+#include "c_trace.h"
 #include "naming/naming.h"
 
 #include <fmt/format.h>
@@ -92,6 +93,7 @@ void state_struct(CodeWriter &w, const EngineContext &c) {
     if (c.sub[p])
       rows.emplace_back(fmt::format("{} {};", c.sub[p]->struct_type, c.sub_field[p]),
                         fmt::format("the instance of {} that {} runs", c.sub[p]->chart.name, c.place(p).name));
+  if (c.traced()) trace_fields(c, rows);
   if (c.has_context())
     rows.emplace_back(c.context_param(c.ctx_field) + ";",
                       c.root ? fmt::format("the context every interface call receives first ({})", c.set_context_fn)
@@ -171,6 +173,7 @@ void api(CodeWriter &w, const EngineContext &c) {
   if (c.has_sub()) instance_api(w, c);
   if (c.has_context()) context_api(w, c);
   if (c.engine_options.names) names_api(w, c);
+  if (c.traced()) trace_prototype(w, c);
 }
 
 void hooks(CodeWriter &w, const EngineContext &c) {

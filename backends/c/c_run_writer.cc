@@ -6,7 +6,11 @@
 
 namespace gfec::c_backend {
 
-void RunWriter::head() { w_.line("{}void {}({} *{})", c_.linkage, c_.run_fn, c_.struct_type, c_.self); }
+void RunWriter::head() {
+  // --trace: the tick is file-local and X_run (c_trace.cc) runs it, then writes the frame.
+  if (c_.traced()) w_.line("static void {}({} *{})", c_.step_fn, c_.struct_type, c_.self);
+  else w_.line("{}void {}({} *{})", c_.linkage, c_.run_fn, c_.struct_type, c_.self);
+}
 
 void RunWriter::section(const std::string &comment) {
   if (started_) w_.blank();

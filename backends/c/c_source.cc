@@ -4,6 +4,7 @@
 #include "c_expr.h"
 #include "c_floating_use.h"
 #include "c_form.h"
+#include "c_trace.h"
 
 #include <fmt/format.h>
 
@@ -83,11 +84,12 @@ void init(CodeWriter &w, const EngineContext &c) {
            initial.size() == 1 ? "is" : "are");
   w.line("{}void {}({} *{})", c.linkage, c.init_fn, c.struct_type, c.self);
   auto body = w.block("{");
-  if (c.team()) w.line("int {};", c.index);
+  if (c.team() || c.traced()) w.line("int {};", c.index);
   c.form().init(w, c);
   for (model::PlaceId p : c.chart.places.ids())
     if (c.place(p).timed) w.line("{} = 0;", c.timer_of(p));
   if (c.needs_started) w.line("{} = false;", c.field(c.started));
+  if (c.traced()) trace_init(w, c);
   if (c.team()) {
     w.line("{} = 0;", c.field(c.agent));
     auto each = w.block(fmt::format("for ({0} = 0; {0} < {1}; ++{0}) {{", c.index, c.team_size));
@@ -321,6 +323,10 @@ void emit_source(const EngineContext &c, std::ostream &out) {
   if (c.engine_options.names) {
     w.blank();
     name_functions(w, c);
+  }
+  if (c.traced()) {
+    w.blank();
+    emit_trace(w, c);
   }
 }
 
