@@ -1,6 +1,7 @@
 #include "commands.h"
 
 #include "driver.h"
+#include "monitor_command.h"
 #include "run_command.h"
 #include "test_command.h"
 
@@ -19,6 +20,7 @@ const std::vector<Command> kCommands = {
     {"", "gfec CHART [-o OUT] [OPTIONS]", "compile an sfc or fsm to a C engine, a plan to C++", compile_command},
     {"run", "gfec run CHART --inputs TRACE.csv", "run a chart in the reference interpreter, tick by tick", run_command},
     {"test", "gfec test FILE... [OPTIONS]", "run scenario tests on the interpreter and the C engine", test_command},
+    {"monitor", "gfec monitor CHART --log", "decode a live trace of an engine built with --trace", monitor_command},
 };
 
 /// The compiler's other forms: modes of its options rather than commands of their own.

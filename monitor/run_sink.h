@@ -12,8 +12,8 @@ namespace gfec::monitor {
 /// One tick of a running engine, decoded exactly (a tick that could not be decoded exactly is
 /// never handed on; see RunSink::lost).
 struct DecodedTick {
-  std::size_t robot = 0;  ///< which stream of a team run (0 for a single engine)
-  std::uint32_t tick = 0; ///< the engine's tick count, from 1
+  std::size_t robot = 0;   ///< which stream of a team run (0 for a single engine)
+  std::uint32_t tick = 0;  ///< the engine's tick count, from 1
   /// X_activation of every place of the compiled chart in declaration order, then of every
   /// sub-chart instance's places, depth first in declaration order: gfec run's `av` lines in
   /// order, concatenated (viewer::outline_rows gives the rows in this same order).
@@ -24,6 +24,10 @@ struct DecodedTick {
   /// when the stream carries calls; empty otherwise.
   std::vector<std::string> calls;
   bool has_calls = false;
+  /// A team machine's engine: its agent number, and by agent the state it last reported (-1:
+  /// none yet). -1 and empty for any other chart.
+  int agent = -1;
+  std::vector<std::int32_t> reports;
 };
 
 /// Receives a decoded run. Called from the monitor's reading thread, in stream order.

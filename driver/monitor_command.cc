@@ -1,0 +1,142 @@
+// gfec monitor CHART: reads the trace an engine built with --trace writes (stdin, --serial,
+// --tcp) and shows the run. The decoding is monitor/'s; this file parses the options, compiles
+// the chart for the frame's layout and connects the source to what shows the run.
+#include "monitor_command.h"
+
+#include "byte_source.h"
+#include "commands.h"
+#include "diagnostic_report.h"
+#include "driver.h"
+#include "escape.h"
+#include "log_sink.h"
+#include "options.h"
+#include "pipeline/compilation.h"
+#include "trace_decoder.h"
+#include "trace_format.h"
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <ostream>
+#include <unistd.h>
+
+namespace gfec {
+
+namespace {
+
+/// The monitor's options, all declared in add_options: one place to add another way to show the
+/// run.
+struct MonitorOptions {
+  std::string input;
+  std::string chart;
+  bool log = false;    ///< print the observable log
+  std::string serial;  ///< a serial port's device
+  long baud = 115200;
+  std::string tcp;     ///< HOST:PORT to connect to
+  double silence = 0;  ///< report silence after this many seconds (0: never)
+  Options report;      ///< -I, -x, -W..., -f...: as gfec's
+};
+
+void add_options(CLI::App &app, MonitorOptions &o, FrontEndFlags &front_end) {
+  app.add_option("chart", o.input, "The chart the engine was built from")->required();
+  app.add_option("--chart", o.chart, "The chart, when the file declares several")->type_name("NAME");
+  app.add_flag("--log", o.log,
+               "Print the decoded run as 'gfec run --observable' does (tick, agent, av, state); the monitor's "
+               "own lines (loss, silence) begin with '#'");
+  app.add_option("--serial", o.serial, "Read the trace from a serial port, e.g. /dev/ttyACM0 (raw, 8N1)")
+      ->type_name("DEV");
+  app.add_option("--baud", o.baud, "The serial port's rate (default 115200)")->type_name("N");
+  app.add_option("--tcp", o.tcp, "Connect to HOST:PORT (the robot or simulator listens) and read the trace")
+      ->type_name("HOST:PORT");
+  app.add_option("--silence", o.silence, "Report when nothing has arrived for S seconds (default: never)")
+      ->type_name("S")
+      ->check(CLI::Range(0.0, 86400.0));
+  add_front_end_options(app, o.report, front_end);
+}
+
+/// "FILE:LINE:COL" of the chart's name, for an error about the stream the chart refuses.
+std::string chart_location(const pipeline::Compilation &c, const model::Chart &chart) {
+  const SourceRange &r = chart.name_range;
+  const LineCol at = c.sources.begin_of(r);
+  return fmt::format("{}:{}:{}", text::printable(c.sources.file(r.file).path()), at.line, at.col);
+}
+
+int monitor_with(const MonitorOptions &o, DiagnosticReport &report, std::ostream &out, std::ostream &err) {
+  pipeline::FrontEndOptions f = front_end_options(o.report);
+  f.analyze = false;
+  pipeline::Compilation c(f);
+  c.front_end(o.input);
+  if (c.unreadable()) {
+    report.tool_error(o.input, c.cannot_read_main(o.input), false);
+    return kExitUsageOrIo;
+  }
+  report.add(o.input, c.diag, c.sources);
+  if (c.diag.has_errors()) return kExitInputError;
+  pipeline::SelectionRequest request;
+  request.name = o.chart;
+  request.among = pipeline::kSfc | pipeline::kFsm;
+  request.verb = "monitor";
+  pipeline::Selection target = pipeline::choose(c.model, request);
+  if (!target.chosen()) {
+    report.tool_error(o.input, target.error, true);
+    return kExitUsageOrIo;
+  }
+  const trace::Layout layout = trace::layout_of(c.model, target.chart);
+
+  std::string why;
+  int fd = 0;  // stdin
+  if (!o.serial.empty()) fd = monitor::open_serial(o.serial, o.baud, why);
+  else if (!o.tcp.empty()) fd = monitor::open_tcp(o.tcp, why);
+  if (fd < 0) {
+    report.tool_error(o.input, why, false);
+    return kExitUsageOrIo;
+  }
+  monitor::LogSink log(c.model, target.chart, out);
+  monitor::TraceDecoder decoder(layout, log);
+  const std::string read_error = monitor::read_stream(
+      fd, o.silence, log, [&](const unsigned char *data, std::size_t n) { decoder.feed(data, n); },
+      [&] { return decoder.refused(); });
+  if (fd != 0) ::close(fd);
+  decoder.finish();
+  if (decoder.refused()) {
+    err << fmt::format("{}: error: {}\n", chart_location(c, c.model.charts.at(target.chart)),
+                       text::printable(decoder.refusal()));
+    return kExitInputError;
+  }
+  err << fmt::format("gfec monitor: {} tick{} decoded, {} lost, {} byte{} garbled\n", decoder.ticks_shown(),
+                     decoder.ticks_shown() == 1 ? "" : "s", decoder.ticks_lost(), decoder.bytes_garbled(),
+                     decoder.bytes_garbled() == 1 ? "" : "s");
+  if (!read_error.empty()) {
+    report.tool_error(o.input, "reading the trace: " + read_error, false);
+    return kExitUsageOrIo;
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+int monitor_command(int argc, const char *const *argv, std::ostream &out, std::ostream &err) {
+  MonitorOptions o;
+  CLI::App app{"gfec monitor - decodes the live trace of a C engine built with --trace (docs/live.md)", "gfec monitor"};
+  app.footer("The trace comes from stdin, a serial port (--serial) or a TCP connection (--tcp). A frame\n"
+             "that cannot be decoded exactly is never shown: the loss is reported and the monitor is\n"
+             "exact again from the next full frame.\n"
+             "Exit status: 0 the stream ended, 1 errors in the chart or a stream of another chart,\n"
+             "2 usage or I/O error.\n" +
+             documentation_line("live.md"));
+  FrontEndFlags front_end;
+  add_options(app, o, front_end);
+  if (auto code = parse_subcommand(app, argc, argv, out, err, "monitor")) return *code;
+  o.report.line_numbers = false;
+  std::string why = front_end.apply(o.report);
+  if (why.empty() && !o.serial.empty() && !o.tcp.empty()) why = "--serial and --tcp: give one source";
+  if (why.empty() && !o.log) why = "nothing to show: give --log";
+  if (!why.empty()) {
+    err << "gfec: error: " << text::printable(why) << "\nRun 'gfec monitor --help' for the options.\n";
+    return kExitUsageOrIo;
+  }
+  auto report = make_report(o.report, err);
+  return finish_report(*report, monitor_with(o, *report, out, err), err);
+}
+
+}  // namespace gfec

@@ -1,0 +1,164 @@
+#include "trace_decoder.h"
+
+#include <fmt/format.h>
+
+namespace gfec::monitor {
+
+namespace {
+
+std::uint32_t le32(const std::uint8_t *p) {
+  return static_cast<std::uint32_t>(p[0]) | static_cast<std::uint32_t>(p[1]) << 8 |
+         static_cast<std::uint32_t>(p[2]) << 16 | static_cast<std::uint32_t>(p[3]) << 24;
+}
+
+/// A number of 7 bits a byte at data[at]; false if it runs past `end` or past 32 bits.
+bool read_number(const std::uint8_t *data, std::size_t end, std::size_t &at, std::uint32_t &value) {
+  value = 0;
+  for (int shift = 0; shift < 35; shift += 7) {
+    if (at >= end) return false;
+    const std::uint8_t byte = data[at++];
+    if (shift == 28 && (byte & 0x70) != 0) return false;
+    value |= static_cast<std::uint32_t>(byte & 0x7F) << shift;
+    if ((byte & 0x80) == 0) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+TraceDecoder::TraceDecoder(const trace::Layout &layout, RunSink &sink, std::size_t robot)
+    : layout_(layout), sink_(sink), robot_(robot), values_(layout.values, 0), scratch_(layout.values, 0) {}
+
+void TraceDecoder::feed(const std::uint8_t *data, std::size_t n) {
+  if (refused()) return;
+  buffer_.insert(buffer_.end(), data, data + n);
+  for (;;) {
+    const int r = frame_at_front();
+    if (refused()) return;
+    if (r == 0) break;
+    if (r < 0) skip_byte();
+  }
+  // Keep the buffer as long as the unread bytes, not the stream.
+  if (at_ > 0) {
+    buffer_.erase(buffer_.begin(), buffer_.begin() + static_cast<std::ptrdiff_t>(at_));
+    at_ = 0;
+  }
+}
+
+void TraceDecoder::skip_byte() {
+  ++at_;
+  ++garbled_;
+  ++garbled_total_;
+}
+
+int TraceDecoder::frame_at_front() {
+  const std::size_t have = buffer_.size() - at_;
+  const std::uint8_t *p = buffer_.data() + at_;
+  if (have < 1) return 0;
+  if (p[0] != trace::kSync0) return -1;
+  if (have < 2) return 0;
+  if (p[1] != trace::kSync1) return -1;
+  if (have < trace::kHeaderBytes) return 0;
+  const std::size_t length = static_cast<std::size_t>(p[4]) | static_cast<std::size_t>(p[5]) << 8;
+  // A length no frame of this chart has is a garbled header: waiting for that many bytes would
+  // stall the stream.
+  if (length > layout_.max_payload() || (p[3] & ~trace::kFlagFull) != 0) return -1;
+  const std::size_t size = trace::kHeaderBytes + length + trace::kCrcBytes;
+  if (have < size) return 0;
+  if (trace::crc32(p, trace::kHeaderBytes + length) != le32(p + trace::kHeaderBytes + length)) return -1;
+  // A whole frame, intact: now its version and chart count.
+  if (p[2] != trace::kVersion) {
+    refusal_ = fmt::format("the stream's frames are of format version {}; this gfec reads version {}", p[2],
+                           static_cast<int>(trace::kVersion));
+    sink_.ended(refusal_);
+    return 1;
+  }
+  if (le32(p + 6) != layout_.fingerprint) {
+    refusal_ = fmt::format("the stream comes from another chart: its fingerprint is {:08x}, the chart's {:08x} "
+                           "(rebuild the engine from this chart with --trace, or give the monitor the chart it "
+                           "was built from)",
+                           le32(p + 6), layout_.fingerprint);
+    sink_.ended(refusal_);
+    return 1;
+  }
+  const std::size_t before = at_;
+  frame((p[3] & trace::kFlagFull) != 0, le32(p + 10), p + trace::kHeaderBytes, length);
+  if (at_ == before) at_ += size;
+  return 1;
+}
+
+void TraceDecoder::frame(bool full, std::uint32_t tick, const std::uint8_t *payload, std::size_t length) {
+  if (!started_) {
+    started_ = true;
+    sink_.started(robot_);
+  }
+  bool ok = true;
+  std::size_t at = 0;
+  if (full) {
+    for (std::size_t i = 0; ok && i < layout_.values; ++i) ok = read_number(payload, length, at, scratch_[i]);
+  } else {
+    ok = exact_ && tick == last_seen_ + 1;
+    if (ok) scratch_ = values_;
+    while (ok && at < length) {
+      std::uint32_t index = 0, value = 0;
+      ok = read_number(payload, length, at, index) && index < layout_.values && read_number(payload, length, at, value);
+      if (ok) scratch_[index] = value;
+    }
+  }
+  ok = ok && at == length;
+  last_seen_ = tick;
+  exact_ = ok;
+  if (!ok) return;  // lost: said when the next tick is shown
+  values_.swap(scratch_);
+  show(tick);
+}
+
+void TraceDecoder::show(std::uint32_t tick) {
+  if (tick != last_shown_ + 1 || garbled_ > 0) {
+    std::string why;
+    std::uint64_t missing = tick > last_shown_ ? tick - last_shown_ - 1 : 0;
+    if (tick <= last_shown_) why = fmt::format("the engine started again (tick {} after {})", tick, last_shown_);
+    else if (last_shown_ == 0 && garbled_ == 0) why = fmt::format("the stream joined the run at tick {}", tick);
+    else if (garbled_ > 0) why = fmt::format("bad CRC or garbled bytes ({} skipped)", garbled_);
+    else why = "frames missing from the stream";
+    if (missing > 0 || garbled_ > 0 || tick <= last_shown_) sink_.lost(robot_, missing, why);
+    lost_ += missing;
+  }
+  garbled_ = 0;
+  last_shown_ = tick;
+  ++shown_;
+  DecodedTick t;
+  t.robot = robot_;
+  t.tick = tick;
+  std::size_t activation = layout_.values;
+  if (layout_.status >= 0) activation = static_cast<std::size_t>(layout_.status);
+  else if (layout_.agent >= 0) activation = static_cast<std::size_t>(layout_.agent);
+  t.activation.assign(values_.begin(), values_.begin() + static_cast<std::ptrdiff_t>(activation));
+  if (layout_.status >= 0) {
+    const std::uint32_t s = values_[static_cast<std::size_t>(layout_.status)];
+    t.status = s == 0 ? "running" : s == 1 ? "succeeded" : "failed";
+  }
+  if (layout_.agent >= 0) {
+    const auto a = static_cast<std::size_t>(layout_.agent);
+    t.agent = static_cast<int>(values_[a]);
+    for (std::size_t k = 0; k < layout_.team; ++k)
+      t.reports.push_back(static_cast<std::int32_t>(values_[a + 1 + k]) - 1);
+  }
+  sink_.tick(t);
+}
+
+void TraceDecoder::finish() {
+  if (refused()) return;
+  const std::size_t rest = buffer_.size() - at_;
+  if (rest > 0 || garbled_ > 0) {
+    garbled_total_ += rest;
+    sink_.lost(robot_, 0,
+               rest > 0 ? fmt::format("the stream ended inside a frame ({} bytes)", rest)
+                        : fmt::format("garbled bytes at the end of the stream ({} skipped)", garbled_));
+  }
+  buffer_.clear();
+  at_ = 0;
+  garbled_ = 0;
+}
+
+}  // namespace gfec::monitor
