@@ -25,6 +25,7 @@
 #include "driver/chart_build.h"
 #include "driver/engine_loader.h"
 #include "driver/options.h"
+#include "driver/trace_link.h"
 #include "driver/process.h"
 #include "driver/reports.h"
 #include "driver/run.h"
