@@ -46,14 +46,17 @@ void LiveRecording::tick(const monitor::DecodedTick &t) {
   started_[t.robot] = true;
   if (state_ == "waiting") state_ = "live";
   silent_ = 0;
-  // A tick at or before the last frame's comes too late to be shown (a robot that joined late).
-  if (static_cast<std::int64_t>(t.tick) <= last_frame_tick_ || static_cast<std::int64_t>(t.tick) <= last_tick_[t.robot])
-    return;
-  last_tick_[t.robot] = t.tick;
+  // One engine: every tick it hands on is the next frame, even an engine started again (its
+  // ticks from 1 again; the decoder reports that as a loss).
   if (robots_ == 1) {
+    last_tick_[0] = t.tick;
     add_frame(t.tick, {&t});
     return;
   }
+  // A team's tick at or before the last frame's comes too late to be shown (a robot that joined late).
+  if (static_cast<std::int64_t>(t.tick) <= last_frame_tick_ || static_cast<std::int64_t>(t.tick) <= last_tick_[t.robot])
+    return;
+  last_tick_[t.robot] = t.tick;
   Pending &p = pending_[t.tick];
   if (p.has.empty()) {
     p.has.assign(robots_, false);

@@ -15,7 +15,7 @@
   }
   // The banner: silence or the end of the stream, recent losses, a monitor that does not answer.
   function showLink() {
-    if (!D.live) return;
+    if (!D.live || !link) return;  // (render runs once before this section's variables are set)
     var text = '', kind = '';
     var lost = link.lost_ticks ? link.lost_ticks + ' tick' + (link.lost_ticks === 1 ? '' : 's') + ' lost'
                                : link.losses ? 'ticks lost' : '';
