@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The line follower engine on the emulated AVR, shown live (docs/live.md "The emulated AVR live"):
 # builds samples/line_follower.sfc with `gfec --trace` for the ATmega328P (examples/avr-live), runs
-# it under tools/avr-run with its IR sensors driven from tests/targets/avr/line_follower_trace.csv
-# (looped), and pipes its UART into `gfec monitor`, by default serving the live page:
+# it under tools/avr-run at the part's real speed (--real-time) with its IR sensors driven from
+# tests/targets/avr/line_follower_trace.csv (looped), and pipes its UART into `gfec monitor`, by
+# default serving the live page:
 #
 #   scripts/live-avr.sh                          # http://127.0.0.1:8080/ until Ctrl-C
 #   scripts/live-avr.sh --seconds 120 --http 127.0.0.1:0
@@ -39,9 +40,13 @@ if [ -z "$gfec" ] || [ -z "$avr_run" ]; then
   avr_run=${avr_run:-$root/build/tools/avr-run/avr-run}
 fi
 
+# Paths given relative to where the script was started stay right after the cd below.
+case $gfec in */*) gfec=$(realpath "$gfec") ;; esac
+case $avr_run in */*) avr_run=$(realpath "$avr_run") ;; esac
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-chart=$root/samples/line_follower.sfc
+cd "$root"  # the page and the log name the chart as the repository does
+chart=samples/line_follower.sfc
 "$gfec" "$chart" --trace -o "$work/line_follower.c"
 avr-gcc -mmcu=atmega328p -DF_CPU=16000000UL -Os -std=c99 -Wall -Wextra -I "$work" \
   -o "$work/line_follower.elf" "$root/examples/avr-live/line_follower_uart.c" "$work/line_follower.c"
@@ -59,7 +64,7 @@ awk -F, -v per=$per -v ticks="$ticks" 'NR > 1 { row[n++] = "PD2=" $1 " PD3=" $3 
 # (its "timeout" line is then no error); anything else is said.
 run_avr() {
   local status=0
-  "$avr_run" --mcu atmega328p --max-cycles $(((ticks - 1) * per + per / 2)) --pins "$work/pins.script" \
+  "$avr_run" --mcu atmega328p --real-time --max-cycles $(((ticks - 1) * per + per / 2)) --pins "$work/pins.script" \
     "$work/line_follower.elf" 2> "$work/avr-run.err" || status=$?
   [ "$status" -eq 3 ] || { cat "$work/avr-run.err" >&2; return 1; }
 }
