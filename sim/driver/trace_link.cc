@@ -86,6 +86,7 @@ std::string TraceLinks::open(const std::string& spec, int robots, double period)
     setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
     sockets_.push_back(fd);
     broken_.push_back(false);
+    if (robots > 1) std::fprintf(stderr, "carbot-sim: --trace-to: robot %d connected\n", i);
   }
   ::close(listener);
   period_ = period;
