@@ -29,7 +29,10 @@ port_of() {
 }
 
 # The model's place or state names in order, for the monitor's av lines.
-names() { "$gfec" --emit=json "$1" -o - | python3 -c 'import json,sys; m=json.load(sys.stdin); print(" ".join(p["name"] for p in (m.get("places") or m.get("states"))))'; }
+names() {
+  "$gfec" --emit=json "$1" -o - |
+    node -e 'const m = JSON.parse(require("fs").readFileSync(0, "utf8")); console.log((m.places || m.states).map((p) => p.name).join(" "))'
+}
 
 # av lines -> the active names of each tick, one line each, sorted.
 active_of_log() {
