@@ -19,9 +19,9 @@ cd "$work"
 
 # The port carbot-sim listens on, from its line on stderr.
 port_of() {
-  for _ in $(seq 200); do
+  for _ in $(seq 200); do  # (the file may not exist yet: carbot-sim opens it as it starts)
     local p
-    p=$(sed -n 's/.*--trace-to: waiting on 127.0.0.1 port \([0-9]*\) .*/\1/p' "$1")
+    p=$(sed -n 's/.*--trace-to: waiting on 127.0.0.1 port \([0-9]*\) .*/\1/p' "$1" 2> /dev/null)
     [ -n "$p" ] && { echo "$p"; return; }
     sleep 0.05
   done
