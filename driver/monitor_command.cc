@@ -22,6 +22,9 @@
 #include <fmt/format.h>
 
 #include <memory>
+#include <mutex>
+#include <thread>
+#include <vector>
 #include <ostream>
 #include <unistd.h>
 
@@ -42,6 +45,7 @@ struct MonitorOptions {
   bool silence_given = false;
   std::string http;          ///< HOST:PORT of the live page ("" = none)
   bool http_remote = false;  ///< serve it on an address that is not loopback
+  int robots = 1;            ///< --tcp connections, one per robot of a team (--http only)
   Options report;            ///< -I, -x, -W..., -f...: as gfec's
 };
 
@@ -66,6 +70,11 @@ void add_options(CLI::App &app, MonitorOptions &o, FrontEndFlags &front_end) {
   app.add_flag("--http-remote", o.http_remote,
                "Serve the live page on an address that is not loopback too (it has no login: anyone who reaches "
                "it sees the run)");
+  app.add_option("--robots", o.robots,
+                 "With --tcp and --http: connect N times, one stream per robot (carbot-sim --trace-to serves "
+                 "robot i to the i-th connection), all robots on one page, each in its colour")
+      ->type_name("N")
+      ->check(CLI::Range(1, 64));
   add_front_end_options(app, o.report, front_end);
 }
 
@@ -111,7 +120,8 @@ int monitor_with(const MonitorOptions &o, DiagnosticReport &report, std::ostream
   if (!o.http.empty()) {
     const std::string source = !o.serial.empty() ? "serial " + o.serial : !o.tcp.empty() ? "tcp " + o.tcp : "stdin";
     try {
-      page = std::make_unique<live::LiveRecording>(live_chart(c.model, target.chart, o.input, source));
+      page = std::make_unique<live::LiveRecording>(live_chart(c.model, target.chart, o.input, source),
+                                                   static_cast<std::size_t>(o.robots));
     } catch (const ToolTimeLimit &e) {
       report.tool_error(o.input, e.what(), false);
       return kExitInputError;
@@ -148,6 +158,44 @@ int monitor_with(const MonitorOptions &o, DiagnosticReport &report, std::ostream
     return kExitOk;
   };
   if (!page) return read();
+  if (o.robots > 1) {
+    // A team: the other robots' connections (robot i is the i-th), each read and decoded on a
+    // thread of its own into the one page (LiveRecording takes a lock per call).
+    std::vector<int> fds{fd};
+    for (int i = 1; i < o.robots; ++i) {
+      const int more = monitor::open_tcp(o.tcp, why);
+      if (more < 0) {
+        for (int f : fds) ::close(f);
+        report.tool_error(o.input, fmt::format("robot {}: {}", i, why), false);
+        return kExitUsageOrIo;
+      }
+      fds.push_back(more);
+    }
+    auto read_team = [&] {
+      std::vector<std::unique_ptr<monitor::TraceDecoder>> decoders;
+      for (std::size_t i = 0; i < fds.size(); ++i)
+        decoders.push_back(std::make_unique<monitor::TraceDecoder>(layout, *page, i));
+      std::mutex err_mutex;
+      std::vector<std::thread> readers;
+      for (std::size_t i = 0; i < fds.size(); ++i)
+        readers.emplace_back([&, i] {
+          monitor::TraceDecoder &d = *decoders[i];
+          const std::string read_error = monitor::read_stream(
+              fds[i], silence, *page, [&](const unsigned char *data, std::size_t n) { d.feed(data, n); },
+              [&] { return d.refused(); });
+          ::close(fds[i]);
+          d.finish();
+          std::lock_guard<std::mutex> lock(err_mutex);
+          if (d.refused()) err << fmt::format("gfec monitor: robot {}: {}\n", i, text::printable(d.refusal()));
+          err << fmt::format("gfec monitor: robot {}: {} ticks decoded, {} lost, {} bytes garbled{}\n", i,
+                             d.ticks_shown(), d.ticks_lost(), d.bytes_garbled(),
+                             read_error.empty() ? "" : "; reading: " + read_error);
+        });
+      for (std::thread &t : readers) t.join();
+      page->ended("the end of the robots' streams");
+    };
+    return serve_live_page(*page, o.http, o.http_remote, read_team, err);
+  }
   // The page stays up after the stream ends, until the monitor is stopped; only a server that
   // cannot listen returns.
   return serve_live_page(
@@ -173,6 +221,8 @@ int monitor_command(int argc, const char *const *argv, std::ostream &out, std::o
   std::string why = front_end.apply(o.report);
   if (why.empty() && !o.serial.empty() && !o.tcp.empty()) why = "--serial and --tcp: give one source";
   if (why.empty() && !o.log && o.http.empty()) why = "nothing to show: give --log or --http HOST:PORT";
+  if (why.empty() && o.robots > 1 && (o.tcp.empty() || o.http.empty() || o.log))
+    why = "--robots: several robots' streams come over --tcp and show on one --http page (no --log)";
   if (!why.empty()) {
     err << "gfec: error: " << text::printable(why) << "\nRun 'gfec monitor --help' for the options.\n";
     return kExitUsageOrIo;

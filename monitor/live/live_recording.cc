@@ -14,7 +14,8 @@ std::string robot_name(std::size_t i) { return "robot " + std::to_string(i); }
 
 LiveRecording::LiveRecording(const LiveChart &chart, std::size_t robots)
     : rec_("gfec monitor", chart.name, chart.kind, chart.file, chart.period), robots_(std::max<std::size_t>(1, robots)),
-      per_(chart.rows.size()), status_(robots_, "running"), last_tick_(robots_, -1), started_(robots_, false) {
+      per_(chart.rows.size()), status_(robots_, "running"), last_tick_(robots_, -1), started_(robots_, false),
+      done_(robots_, false), last_rows_(robots_) {
   rec_.set_picture(chart.svg, chart.svg_note);
   rec_.set_title(chart.name + " (" + chart.kind + "): live", "gfec monitor " + chart.file + " \u00b7 " + chart.source);
   if (robots_ == 1) {
@@ -64,6 +65,7 @@ void LiveRecording::tick(const monitor::DecodedTick &t) {
   }
   p.has[t.robot] = true;
   p.ticks[t.robot] = t;
+  if (!t.status.empty() && t.status != "running") done_[t.robot] = true;
   flush_team(false);
 }
 
@@ -73,10 +75,11 @@ void LiveRecording::flush_team(bool all) {
     const std::uint32_t tick = oldest->first;
     bool ready = all || pending_.rbegin()->first - tick >= kTeamSlack;
     if (!ready) {
-      // Every robot that streams has sent this tick, or a later one (this one was lost).
+      // Every robot has sent this tick, or a later one (this one was lost), or has ended. Robots
+      // not heard from yet are waited for too (their first frames may just be late).
       ready = true;
       for (std::size_t r = 0; r < robots_; ++r)
-        if (started_[r] && !oldest->second.has[r] && last_tick_[r] < static_cast<std::int64_t>(tick)) ready = false;
+        if (!done_[r] && !oldest->second.has[r] && last_tick_[r] < static_cast<std::int64_t>(tick)) ready = false;
     }
     if (!ready) return;
     std::vector<const monitor::DecodedTick *> shown(robots_, nullptr);
@@ -96,11 +99,16 @@ void LiveRecording::add_frame(std::uint32_t tick, const std::vector<const monito
     const monitor::DecodedTick *t = robots[r];
     if (!t) {
       if (robots_ > 1) rec_.record_calls(r, frame, {});
+      // An ended robot stays in its final state; a robot whose tick did not come shows none.
+      if (done_[r] && static_cast<std::int64_t>(tick) > last_tick_[r])
+        on.insert(on.end(), last_rows_[r].begin(), last_rows_[r].end());
       continue;
     }
     const std::size_t rows = robots_ == 1 ? per_ : std::min(per_, t->activation.size());
+    last_rows_[r].clear();
     for (std::size_t i = 0; i < rows && i < t->activation.size(); ++i)
-      if (t->activation[i] > 0) on.push_back(r * per_ + i);
+      if (t->activation[i] > 0) last_rows_[r].push_back(r * per_ + i);
+    on.insert(on.end(), last_rows_[r].begin(), last_rows_[r].end());
     const std::string status = t->status.empty() ? "running" : t->status;
     if (status != status_[r]) rec_.add_event(frame, "status", robots_ == 1 ? status : robot_name(r) + ": " + status);
     status_[r] = status;

@@ -69,6 +69,10 @@ private:
   std::vector<std::string> status_;      ///< each robot's last status ("running")
   std::vector<std::int64_t> last_tick_;  ///< each robot's last tick handed on (-1: none)
   std::vector<bool> started_;
+  /// A team's robot whose engine ended (succeeded, failed): it sends no more ticks, so it is not
+  /// waited for, and its last activation - final, so exact - shows in the frames after.
+  std::vector<bool> done_;
+  std::vector<std::vector<std::size_t>> last_rows_;
   std::map<std::uint32_t, Pending> pending_;  ///< a team's ticks not yet a frame
   std::int64_t last_frame_tick_ = -1;
   std::string state_ = "waiting";  ///< waiting, live, ended

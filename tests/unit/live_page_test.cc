@@ -136,6 +136,21 @@ TEST_CASE("live recording: a team's robots are aligned tick by tick, each in its
   CHECK(rec.frames() == 4);
 }
 
+TEST_CASE("live recording: a team's robot that ended is not waited for and stays in its last state", "[live]") {
+  LiveRecording rec(three_places(), 2);
+  rec.tick(at(1, {1, 0, 0}, 0));
+  DecodedTick done = at(1, {0, 0, 1}, 1);
+  done.status = "succeeded";
+  rec.tick(done);
+  CHECK(rec.frames() == 1);
+  rec.tick(at(2, {0, 1, 0}, 0));  // robot 1's engine ended: it sends no tick 2
+  rec.tick(at(3, {0, 1, 0}, 0));
+  CHECK(rec.frames() == 3);
+  json page = rec.page_data();
+  CHECK(page["active"] == json::parse("[[0,[0,5]],[1,[1,5]]]"));
+  CHECK(page["robots"][1]["status"] == json::parse(R"([[0,"succeeded"]])"));
+}
+
 TEST_CASE("live server: loopback only unless asked; the page and its updates over HTTP", "[live]") {
   using gfec::live::is_loopback;
   CHECK(is_loopback("127.0.0.1"));
