@@ -169,3 +169,62 @@ test('live page: the chart lit as a real engine\'s ticks arrive; pause, step bac
     monitor.child.kill('SIGTERM');
   }
 });
+
+const sim = process.env.CARBOT_SIM || '';
+
+test('live team page: carbot-sim --trace-to, three robots on one page, each robot\'s state as its trace', { skip: sim ? false : 'carbot-sim is not built' }, async () => {
+  const src = process.env.GFEC_SOURCE_DIR, gfec = process.env.GFEC;
+  const chart = path.join(src, 'samples/fetch_team.fsm');
+  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'gfec-live-team-'));
+  const csv = path.join(dir, 'team.csv');
+  const simulator = spawn(sim, [chart, '--world', path.join(src, 'sim/worlds/fetch_room.json'), '--seconds', '3',
+                                '--trace-to', 'tcp:127.0.0.1:0', '--trace', csv, '-q', '--cache', ''],
+                          { stdio: ['ignore', 'ignore', 'pipe'] });
+  let simErr = '';
+  simulator.stderr.on('data', (d) => { simErr += d; });
+  const simDone = new Promise((resolve) => simulator.on('exit', resolve));
+  let monitor = null;
+  const page = await browser.newPage();
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(String(e)));
+  try {
+    const port = await until('carbot-sim listening', async () => (/port (\d+) /.exec(simErr) || [])[1], 60000);
+    monitor = startMonitor([gfec, 'monitor', chart, '--tcp', `127.0.0.1:${port}`, '--robots', '3', '--http', '127.0.0.1:0']);
+    await page.goto(await monitor.url, { waitUntil: 'load' });
+    // While the run goes: the page follows, all three robots' rows there.
+    const during = await until('ticks arriving', async () => {
+      const v = await shown(page);
+      return v.frames > 20 ? v : null;
+    }, 20000);
+    assert.ok(during.following);
+    assert.equal(await simDone, 0, `carbot-sim: ${simErr}`);
+    await until('the end banner', async () => /ended/.test((await shown(page)).banner), 10000);
+    // The team trace: each robot's state per tick (rows `t,robot,x,y,heading,active`).
+    const rows = fs.readFileSync(csv, 'utf8').trim().split('\n').slice(1).map((l) => l.split(','));
+    const stateAt = (robot, k) => rows.filter((r) => Number(r[1]) === robot)[k][5];
+    const model = JSON.parse(execFileSync(gfec, ['--emit=json', chart, '-o', '-'], { encoding: 'utf8' }));
+    const nodeOf = Object.fromEntries(model.states.map((st, i) => [st.name, `p${i}`]));
+    const frames = (await shown(page)).frames;
+    assert.ok(frames >= 250, `${frames} ticks arrived`);
+    for (const k of [0, 50, Math.floor(frames / 2), frames - 1]) {
+      await page.evaluate((k) => window.gfecViewer.seek(k), k);
+      const lit = await page.evaluate(() => [...document.querySelectorAll('#chart g.node.lit')]
+        .map((g) => [g.dataset.node, g.getAttribute('data-robots')]));
+      const tick = (await shown(page)).tick;
+      const want = {};
+      for (const r of [0, 1, 2]) {
+        const node = nodeOf[stateAt(r, tick - 1)];
+        want[node] = (want[node] ? want[node] + ' ' : '') + r;
+      }
+      assert.deepEqual(Object.fromEntries(lit), want, `tick ${tick}: each robot lit in its trace's state`);
+    }
+    await page.screenshot({ path: path.join(out, 'live-team.png') });
+    assert.deepEqual(errors, []);
+    console.log(`live team page: ${frames} ticks of three robots, screenshot ${path.join(out, 'live-team.png')}`);
+  } finally {
+    await page.close();
+    if (monitor) monitor.child.kill('SIGTERM');
+    simulator.kill('SIGTERM');
+    fs.rmSync(dir, { recursive: true, force: true });
+  }
+});
