@@ -11,6 +11,7 @@
 #include "external_tool.h"
 #include "live_page.h"
 #include "live_recording.h"
+#include "live_server.h"
 #include "tee_sink.h"
 #include "log_sink.h"
 #include "options.h"
@@ -221,6 +222,17 @@ int monitor_command(int argc, const char *const *argv, std::ostream &out, std::o
   std::string why = front_end.apply(o.report);
   if (why.empty() && !o.serial.empty() && !o.tcp.empty()) why = "--serial and --tcp: give one source";
   if (why.empty() && !o.log && o.http.empty()) why = "nothing to show: give --log or --http HOST:PORT";
+  if (why.empty() && !o.http.empty()) {
+    // The address is checked before the chart is compiled and drawn or a source opened.
+    std::string host;
+    int port = 0;
+    why = live::parse_address(o.http, host, port);
+    if (why.empty() && !o.http_remote && !live::is_loopback(host))
+      why = "'" + host +
+            "' is not a loopback address: the live page has no login, so anyone who reaches it sees the "
+            "run; --http-remote serves it there anyway";
+    if (!why.empty()) why = "--http " + o.http + ": " + why;
+  }
   if (why.empty() && o.robots > 1 && (o.tcp.empty() || o.http.empty() || o.log))
     why = "--robots: several robots' streams come over --tcp and show on one --http page (no --log)";
   if (!why.empty()) {

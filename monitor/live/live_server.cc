@@ -39,6 +39,13 @@ bool is_loopback(const std::string &host) {
   return in.peek() == EOF && parts[0] == 127;
 }
 
+std::string refuse_host(const std::string &host, bool allow_remote) {
+  if (allow_remote || is_loopback(host)) return "";
+  return "'" + host +
+         "' is not a loopback address: the live page has no login, so anyone who reaches it sees the run; "
+         "--http-remote serves it there anyway";
+}
+
 std::string parse_address(const std::string &text, std::string &host, int &port) {
   const std::size_t colon = text.rfind(':');
   if (colon == std::string::npos || colon == 0 || colon + 1 == text.size())
@@ -93,10 +100,7 @@ LiveServer::LiveServer(const LiveRecording &recording) : impl_(new Impl{recordin
 LiveServer::~LiveServer() { stop(); }
 
 std::string LiveServer::bind(const std::string &host, int port, bool allow_remote) {
-  if (!allow_remote && !is_loopback(host))
-    return "'" + host +
-           "' is not a loopback address: the live page has no login, so anyone who reaches it sees the run; "
-           "--http-remote serves it there anyway";
+  if (std::string why = refuse_host(host, allow_remote); !why.empty()) return why;
   Impl &s = *impl_;
   port_ = port == 0 ? s.server.bind_to_any_port(host) : (s.server.bind_to_port(host, port) ? port : -1);
   if (port_ < 0) {

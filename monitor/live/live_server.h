@@ -12,6 +12,9 @@ namespace gfec::live {
 /// "127.0.0.1", "127.x.y.z", "::1", "localhost": an address only this machine reaches.
 bool is_loopback(const std::string &host);
 
+/// "" when the page may be served on `host`, else why not: not loopback, and not `allow_remote`.
+std::string refuse_host(const std::string &host, bool allow_remote);
+
 /// Splits "HOST:PORT" ("[::1]:8080" for IPv6); "" when it is not of that form, else the error.
 std::string parse_address(const std::string &text, std::string &host, int &port);
 

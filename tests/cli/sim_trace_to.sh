@@ -81,3 +81,18 @@ for i in 0 1 2; do
   diff "expected$i.txt" "got$i.txt" > diff.txt || fail "robot $i's decoded states differ from the team trace: $(head diff.txt)"
 done
 echo "fetch team: three robots, each as carbot-sim's trace"
+
+# Usage errors, said before anything runs: exit 2 with the reason.
+chart=$src/samples/line_follower.sfc
+expect_usage() {  # expect_usage TEXT COMMAND...
+  local text=$1 status=0
+  shift
+  "$@" < /dev/null > /dev/null 2> usage.err || status=$?
+  [ "$status" -eq 2 ] || fail "$*: exit $status, expected 2: $(cat usage.err)"
+  grep -q -- "$text" usage.err || fail "$*: no '$text' in: $(cat usage.err)"
+}
+expect_usage "not HOST:PORT" "$gfec" monitor "$chart" --http nonsense
+expect_usage "not a loopback address" "$gfec" monitor "$chart" --http 192.0.2.1:0
+expect_usage "--robots" "$gfec" monitor "$chart" --robots 2 --http 127.0.0.1:0
+expect_usage "not tcp:HOST:PORT" "$sim" "$chart" --world "$src/sim/worlds/oval.json" --seconds 1 --trace-to udp:x:1 -q --cache ""
+echo "usage errors: said, exit 2"
