@@ -227,10 +227,7 @@ int monitor_command(int argc, const char *const *argv, std::ostream &out, std::o
     std::string host;
     int port = 0;
     why = live::parse_address(o.http, host, port);
-    if (why.empty() && !o.http_remote && !live::is_loopback(host))
-      why = "'" + host +
-            "' is not a loopback address: the live page has no login, so anyone who reaches it sees the "
-            "run; --http-remote serves it there anyway";
+    if (why.empty()) why = live::refuse_host(host, o.http_remote);
     if (!why.empty()) why = "--http " + o.http + ": " + why;
   }
   if (why.empty() && o.robots > 1 && (o.tcp.empty() || o.http.empty() || o.log))
