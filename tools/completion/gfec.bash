@@ -50,6 +50,21 @@ _gfec() {
     return
   fi
 
+  if [[ ${COMP_WORDS[1]} == monitor && $COMP_CWORD -gt 1 && $cur != -[Wf]?* ]]; then
+    case $prev in
+      --serial) COMPREPLY=($(compgen -f -- "${cur:-/dev/tty}")); return ;;
+      --http) COMPREPLY=($(compgen -W '127.0.0.1:8080 127.0.0.1:0' -- "$cur")); return ;;
+      --tcp|--baud|--silence|--robots|--chart) return ;;
+    esac
+    if [[ $cur == -* ]]; then
+      COMPREPLY=($(compgen -W '--log --http --http-remote --serial --baud --tcp --robots --silence --chart -I -x
+        -W -w -f --help' -- "$cur"))
+    else
+      COMPREPLY=($(compgen -f -X '!*.@(sfc|fsm)' -- "$cur")); compopt -o plusdirs 2>/dev/null
+    fi
+    return
+  fi
+
   case $prev in
     -o|--output|-MF) COMPREPLY=($(compgen -f -- "$cur")); return ;;
     --chart|-MT|--context-type) return ;;
