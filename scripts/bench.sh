@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs every benchmark of docs/performance.md and prints its tables. Measures; never fails on time.
 #
-#   scripts/bench.sh [--quick] [SECTION...]     sections: compiler cc engine size target sim plan (default: all)
+#   scripts/bench.sh [--quick] [SECTION...]     sections: compiler cc engine size target trace sim plan (default: all)
 #
 # Builds a Release tree in build-bench/ (or $GFEC_BENCH_BUILD_DIR) with the targets the
 # benchmarks need: gfec, gfec_bench_gen, afp_step_bench, sim_rtf. --quick uses smaller sizes
@@ -14,11 +14,11 @@ sections=()
 for arg in "$@"; do
   case $arg in
     --quick) quick=1 ;;
-    compiler | cc | engine | size | target | sim | plan) sections+=("$arg") ;;
-    *) echo "usage: scripts/bench.sh [--quick] [compiler|cc|engine|size|target|sim|plan]..." >&2; exit 2 ;;
+    compiler | cc | engine | size | target | trace | sim | plan) sections+=("$arg") ;;
+    *) echo "usage: scripts/bench.sh [--quick] [compiler|cc|engine|size|target|trace|sim|plan]..." >&2; exit 2 ;;
   esac
 done
-[[ ${#sections[@]} -gt 0 ]] || sections=(compiler cc engine size target sim plan)
+[[ ${#sections[@]} -gt 0 ]] || sections=(compiler cc engine size target trace sim plan)
 
 if [[ ! -f $build/build.ninja ]]; then
   cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release > /dev/null
@@ -56,6 +56,13 @@ for section in "${sections[@]}"; do
       echo "== (c') cost on the emulated targets: flash, RAM, cycles or instructions per tick"
       cmake --build "$build" -j 2 --target avr-run > /dev/null 2>&1 || echo "(avr-run not built: no libsimavr; the AVR rows are skipped)"
       GFEC_TARGET_BIN=$build "$root/tests/bench/bench_target.sh" "$gfec" ;;
+    trace)
+      echo "== (c'') the live trace (--trace, docs/live.md): bytes and cycles per tick on the emulated AVR"
+      if cmake --build "$build" -j 2 --target avr-run > /dev/null 2>&1 && command -v avr-gcc > /dev/null; then
+        "$root/tests/targets/avr/trace_test.sh" "$gfec" "$build/tools/avr-run/avr-run" "$root" --bench
+      else
+        echo "(avr-run or avr-gcc missing: no trace row)"
+      fi ;;
     sim)
       echo "== (d) simulator real-time factor"
       if [[ -x $build/sim_rtf ]]; then

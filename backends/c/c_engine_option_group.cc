@@ -24,14 +24,16 @@ public:
     app.add_flag("--trace", options_->trace,
                  "C engine: after each tick, one frame of the activation through X_trace_write(), the user's, for "
                  "'gfec monitor' (docs/live.md)");
-    app.add_option("--trace-full-every", full_every_,
-                   "C engine, --trace: a full frame at least every N ticks, the others carry changes (default 32; 1: "
-                   "every frame full)")
-        ->type_name("N");
+    full_every_option_ =
+        app.add_option(
+               "--trace-full-every", full_every_,
+               "C engine, --trace: a full frame at least every N ticks, the others carry changes (default 32; 1: "
+               "every frame full)")
+            ->type_name("N");
   }
 
   std::string check() override {
-    if (full_every_ != 0) {
+    if (full_every_option_ != nullptr && full_every_option_->count() > 0) {
       if (!options_->trace) return "--trace-full-every needs --trace";
       if (full_every_ < 1 || full_every_ > 65535)
         return fmt::format("--trace-full-every {}: the number of ticks must be 1 ... 65535", full_every_);
@@ -65,7 +67,8 @@ public:
 private:
   bool context_ = false;
   std::string type_;
-  long long full_every_ = 0;  ///< 0: not given
+  long long full_every_ = 0;
+  CLI::Option *full_every_option_ = nullptr;
   std::shared_ptr<CEngineOptions> options_ = std::make_shared<CEngineOptions>();
 };
 

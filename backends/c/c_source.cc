@@ -84,7 +84,7 @@ void init(CodeWriter &w, const EngineContext &c) {
            initial.size() == 1 ? "is" : "are");
   w.line("{}void {}({} *{})", c.linkage, c.init_fn, c.struct_type, c.self);
   auto body = w.block("{");
-  if (c.team() || c.traced()) w.line("int {};", c.index);
+  if (c.team()) w.line("int {};", c.index);
   c.form().init(w, c);
   for (model::PlaceId p : c.chart.places.ids())
     if (c.place(p).timed) w.line("{} = 0;", c.timer_of(p));

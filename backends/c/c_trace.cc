@@ -47,8 +47,11 @@ void trace_init(CodeWriter &w, const EngineContext &c) {
   const trace::Layout l = layout(c);
   w.line("{} = 0u;", c.field(c.trace_tick));
   w.line("{} = 0u;", c.field(c.trace_left));
-  auto each = w.block(fmt::format("for ({0} = 0; {0} < {1}; ++{0}) {{", c.index, l.values));
-  w.line("{}[{}] = 0u;", c.field(c.trace_prev), c.index);
+  // A block of its own: each form declares the function's index with a type of its own.
+  auto scope = w.block("{");
+  w.line("uint16_t {};", c.i);
+  auto each = w.block(fmt::format("for ({0} = 0u; {0} < {1}u; ++{0}) {{", c.i, l.values));
+  w.line("{}[{}] = 0u;", c.field(c.trace_prev), c.i);
 }
 
 void emit_trace(CodeWriter &w, const EngineContext &c) {
@@ -83,20 +86,32 @@ void emit_trace(CodeWriter &w, const EngineContext &c) {
   w.line("uint16_t n = {}u;", trace::kHeaderBytes);
   w.line("uint16_t i;");
   w.line("uint8_t bit;");
+  w.line("int place;");
   w.line("bool full;");
-  w.line("/* The values: the {}' activation{}. */", l.fsm ? "states" : "places",
-         l.instances.empty() ? "" : ", then each sub-chart instance's");
-  {
-    auto each = w.block(fmt::format("for (i = 0u; i < {}u; ++i) {{", l.places));
-    w.line("now[i] = {}_activation({}, (int)i);", t, m);
-  }
-  std::vector<std::string> numbers;  // X_instance's constants, in the layout's order
-  c.each_instance("", [&](const EngineContext &s, const std::string &) { numbers.push_back(s.instance_const); });
-  for (std::size_t k = 0; k < l.instances.size(); ++k) {
-    const auto &in = l.instances[k];
-    auto each = w.block(fmt::format("for (i = 0u; i < {}u; ++i) {{ /* {} */", in.places, in.path));
-    w.line("now[{}u + i] = {}({}, (int){}, (int)i);", in.first, c.instance_activation_fn, m, numbers.at(k));
-  }
+  w.line("/* The values: the {}' activation{}, read as {}_activation reads them. */", l.fsm ? "states" : "places",
+         l.instances.empty() ? "" : ", then each sub-chart instance's", t);
+  w.line("i = 0u;");
+  // Read in place rather than through X_activation: the engine calls none of its own API.
+  auto read_all = [&](const EngineContext &of, const std::string &obj, std::size_t places, const std::string &what) {
+    auto each = w.block(fmt::format("for (place = 0; place < {}; ++place) {{{}", places, what));
+    const ActivationRead read = of.form().activation(of, obj);
+    {
+      auto active = w.block(fmt::format("if ({}) {{", read.test), "} else {");
+      w.line("now[i] = {};", read.value);
+    }
+    {
+      auto inactive = w.indented();
+      w.line("now[i] = 0u;");
+    }
+    w.line("}");
+    w.line("i = (uint16_t)(i + 1u);");
+  };
+  read_all(c, "", l.places, "");
+  std::size_t k = 0;
+  c.each_instance(m + "->", [&](const EngineContext &s, const std::string &member) {
+    read_all(s, member, l.instances.at(k).places, fmt::format(" /* {} */", l.instances.at(k).path));
+    ++k;
+  });
   if (l.fsm) {
     w.line("/* The status: 0 running, 1 succeeded, 2 failed. */");
     w.line("now[{}] = 0u;", l.status);
@@ -111,7 +126,15 @@ void emit_trace(CodeWriter &w, const EngineContext &c) {
     w.line("/* The agent number, then by agent the state last reported plus 1 (0: none). */");
     w.line("now[{}] = (uint32_t){};", l.agent, c.field(c.agent));
     auto each = w.block(fmt::format("for (i = 0u; i < {}u; ++i) {{", l.team));
-    w.line("now[{}u + i] = (uint32_t)((int32_t){}[i] + 1);", l.agent + 1, c.field(c.reports));
+    {
+      auto some = w.block(fmt::format("if ({}[i] >= 0) {{", c.field(c.reports)), "} else {");
+      w.line("now[{}u + i] = (uint32_t){}[i] + 1u;", l.agent + 1, c.field(c.reports));
+    }
+    {
+      auto none = w.indented();
+      w.line("now[{}u + i] = 0u;", l.agent + 1);
+    }
+    w.line("}");
   }
   w.line("{0} = {0} + 1u;", c.field(c.trace_tick));
   w.line("full = {} == 0u;", c.field(c.trace_left));
@@ -169,11 +192,11 @@ void emit_trace(CodeWriter &w, const EngineContext &c) {
     w.line("}");
   }
   w.line("crc = ~crc;");
-  {
-    auto each = w.block("for (bit = 0u; bit < 4u; ++bit) {");
-    w.line("frame[n] = (unsigned char)((crc >> (8u * bit)) & 0xFFu);");
-    w.line("n = (uint16_t)(n + 1u);");
-  }
+  w.line("frame[n] = (unsigned char)(crc & 0xFFu);");
+  w.line("frame[n + 1u] = (unsigned char)((crc >> 8) & 0xFFu);");
+  w.line("frame[n + 2u] = (unsigned char)((crc >> 16) & 0xFFu);");
+  w.line("frame[n + 3u] = (unsigned char)((crc >> 24) & 0xFFu);");
+  w.line("n = (uint16_t)(n + 4u);");
   w.line("{}(frame, (unsigned)n);", c.trace_write_fn);
   body.end();
   w.blank();

@@ -37,7 +37,7 @@ help=$("$root/bin/gfec" --help)
 for words in "gfec test FILE" "-x LANG" "chart text"; do
   grep -qF -- "$words" <<<"$help" || fail "gfec --help does not mention '$words'"
 done
-for command in "" run test; do
+for command in "" run test monitor; do
   cited=$("$root/bin/gfec" $command --help | sed -n 's/^Documentation: man gfec; \([^ ]*\)$/\1/p')
   [ -n "$cited" ] || fail "gfec $command --help cites no installed guide: $("$root/bin/gfec" $command --help | tail -1)"
   [ -f "$cited" ] || fail "gfec $command --help cites $cited, not installed"
@@ -110,11 +110,14 @@ expect() {
 expect --check --chart -- gfec --ch
 expect --context --context-type= -- gfec --cont
 expect --names -- gfec --na
+expect --trace --trace-full-every -- gfec --tra
+expect --log --serial --tcp --silence -- gfec monitor blink.sfc --
+expect 115200 -- gfec monitor blink.sfc --baud 11
 expect --emit=c --emit=cpp --emit=svg --emit=chart -- gfec --emit=
 expect -Wunreachable-actor -Wunreachable-place -- gfec -Wunre
 expect -Werror=dead-transition -- gfec -Werror=dead
 expect -fdiagnostics-color=always -fdiagnostics-color=auto -- gfec -fdiagnostics-color=a
-expect blink.sfc cleanup.fsm board.iface plan.pml run test -- gfec ""
+expect blink.sfc cleanup.fsm board.iface plan.pml run test monitor -- gfec ""
 [[ " $(offers gfec "") " == *" notes.txt "* ]] && fail "gfec <Tab> offers a text file"
 expect -x -- gfec -
 expect alica gfec -- gfec -x ""

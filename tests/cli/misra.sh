@@ -2,7 +2,8 @@
 # The C engines against MISRA C:2012, as cppcheck's misra addon checks it: the sample charts in
 # every engine form that applies (an sfc readable and scalable -- both sparse; a sequential chart
 # in the scalable form, single switch and in parts above 1,024 places; an fsm readable and
-# scalable, a switch on the state, and in parts above 1,024 states), each
+# scalable, a switch on the state, and in parts above 1,024 states; with --trace three samples,
+# both forms among them), each
 # in every build mode (plain, -DX_HOOKS, -DX_CHECKS, both). Any finding whose rule is not in the
 # deviation record fails the test, and so does a deviation that no finding needs any more: the
 # record (tests/cli/misra_deviations.txt, explained in docs/misra.md) stays exactly what the
@@ -55,6 +56,9 @@ jobs=()
 for chart in "$source_dir"/samples/*.sfc; do jobs+=("$chart|readable" "$chart|scalable"); done
 for chart in "$source_dir"/samples/*.fsm; do jobs+=("$chart|readable" "$chart|scalable"); done
 jobs+=("$source_dir/tests/golden/c/door_scalable.sfc|scalable" "$ring|scalable" "$chain|scalable")
+# --trace (docs/live.md): the frame writer in both forms, with sub-chart instances and a team.
+jobs+=("$source_dir/samples/line_follower.sfc|scalable+trace" "$source_dir/samples/mission.fsm|readable+trace"
+  "$source_dir/samples/fetch_team.fsm|scalable+trace")
 
 findings="$work/findings"
 : >"$findings"
@@ -64,7 +68,9 @@ for job in "${jobs[@]}"; do
   base=$(basename "${chart%.*}")
   dir="$work/$base-$form"
   mkdir -p "$dir"
-  "$gfec" --engine="$form" -I "$source_dir/samples" -I "$(dirname "$chart")" -o "$dir/$base.c" "$chart" ||
+  trace=()
+  [[ $form == *+trace ]] && trace=(--trace)
+  "$gfec" --engine="${form%+trace}" "${trace[@]}" -I "$source_dir/samples" -I "$(dirname "$chart")" -o "$dir/$base.c" "$chart" ||
     fail "gfec $chart"
   name=$(sed -n 's/^void \([A-Za-z0-9_]*\)_init(.*/\1/p' "$dir/$base.h")
   [ -n "$name" ] || fail "no _init in $base.h"

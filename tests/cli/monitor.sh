@@ -12,7 +12,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d)
 robot_pid=
 cleanup() {
-  [ -n "$robot_pid" ] && kill "$robot_pid" 2> /dev/null || true
+  if [ -n "$robot_pid" ]; then kill "$robot_pid" 2> /dev/null || true; fi
   rm -rf "$work"
 }
 trap cleanup EXIT
@@ -71,14 +71,23 @@ grep -Eq '^.*work_cell\.sfc:[0-9]+:[0-9]+: error: the stream comes from another 
 # Sources and usage.
 status=0
 "$gfec" monitor "$chart" --log --serial /dev/null < /dev/null 2> serial.err || status=$?
-[ "$status" = 2 ] && grep -q "not a serial port" serial.err || fail "--serial /dev/null: exit $status, $(cat serial.err)"
+{ [ "$status" = 2 ] && grep -q "not a serial port" serial.err; } || fail "--serial /dev/null: exit $status, $(cat serial.err)"
 status=0
 "$gfec" monitor "$chart" --log --serial /dev/null --baud 12345 2> baud.err || status=$?
-[ "$status" = 2 ] && grep -q "not a rate" baud.err || fail "--baud 12345: exit $status, $(cat baud.err)"
+{ [ "$status" = 2 ] && grep -q "not a rate" baud.err; } || fail "--baud 12345: exit $status, $(cat baud.err)"
 status=0
 "$gfec" monitor "$chart" < stream.bin 2> nolog.err || status=$?
-[ "$status" = 2 ] && grep -q "give --log" nolog.err || fail "no --log: exit $status"
+{ [ "$status" = 2 ] && grep -q "give --log" nolog.err; } || fail "no --log: exit $status"
 status=0
 "$gfec" monitor "$chart" --log --tcp nowhere < /dev/null 2> tcp.err || status=$?
-[ "$status" = 2 ] && grep -q "HOST:PORT" tcp.err || fail "--tcp nowhere: exit $status, $(cat tcp.err)"
+{ [ "$status" = 2 ] && grep -q "HOST:PORT" tcp.err; } || fail "--tcp nowhere: exit $status, $(cat tcp.err)"
+# The engine's options.
+for bad in "--trace-full-every 5|needs --trace" "--trace --trace-full-every 0|must be 1 ... 65535"; do
+  status=0
+  # shellcheck disable=SC2086 # the options are words
+  "$gfec" "$chart" ${bad%|*} -o bad.c 2> bad.err || status=$?
+  { [ "$status" = 2 ] && grep -q -- "${bad#*|}" bad.err; } || fail "gfec ${bad%|*}: exit $status, $(cat bad.err)"
+done
+"$gfec" "$chart" --trace --trace-full-every 1 -o every.c
+[ "$(grep -c 'm->trace_left = 0u;' every.c)" = 2 ] || fail "--trace-full-every 1: not every frame full"
 echo "monitor: all checks passed"

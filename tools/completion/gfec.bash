@@ -36,6 +36,22 @@ _gfec() {
     return
   fi
 
+  if [[ ${COMP_WORDS[1]} == monitor && $COMP_CWORD -gt 1 && $cur != -[Wf]?* ]]; then
+    case $prev in
+      --serial) COMPREPLY=($(compgen -f -- "${cur:-/dev/tty}")); return ;;
+      --baud) COMPREPLY=($(compgen -W '9600 19200 38400 57600 115200 230400 460800 921600 1000000' -- "$cur")); return ;;
+      --http) COMPREPLY=($(compgen -W '127.0.0.1:8080 127.0.0.1:0' -- "$cur")); return ;;
+      --tcp|--silence|--robots|--chart) return ;;
+    esac
+    if [[ $cur == -* ]]; then
+      COMPREPLY=($(compgen -W '--log --http --http-remote --serial --baud --tcp --robots --silence --chart -I -x -W -w
+        -f --help' -- "$cur"))
+    else
+      COMPREPLY=($(compgen -f -X '!*.@(sfc|fsm|pml)' -- "$cur")); compopt -o plusdirs 2>/dev/null
+    fi
+    return
+  fi
+
   if [[ ${COMP_WORDS[1]} == test && $COMP_CWORD -gt 1 && $cur != -[Wf]?* ]]; then
     case $prev in
       --junit) COMPREPLY=($(compgen -f -X '!*.xml' -- "$cur")); compopt -o plusdirs 2>/dev/null; return ;;
@@ -50,24 +66,9 @@ _gfec() {
     return
   fi
 
-  if [[ ${COMP_WORDS[1]} == monitor && $COMP_CWORD -gt 1 && $cur != -[Wf]?* ]]; then
-    case $prev in
-      --serial) COMPREPLY=($(compgen -f -- "${cur:-/dev/tty}")); return ;;
-      --http) COMPREPLY=($(compgen -W '127.0.0.1:8080 127.0.0.1:0' -- "$cur")); return ;;
-      --tcp|--baud|--silence|--robots|--chart) return ;;
-    esac
-    if [[ $cur == -* ]]; then
-      COMPREPLY=($(compgen -W '--log --http --http-remote --serial --baud --tcp --robots --silence --chart -I -x
-        -W -w -f --help' -- "$cur"))
-    else
-      COMPREPLY=($(compgen -f -X '!*.@(sfc|fsm)' -- "$cur")); compopt -o plusdirs 2>/dev/null
-    fi
-    return
-  fi
-
   case $prev in
     -o|--output|-MF) COMPREPLY=($(compgen -f -- "$cur")); return ;;
-    --chart|-MT|--context-type) return ;;
+    --chart|-MT|--context-type|--trace-full-every) return ;;
   esac
   case $cur in
     --emit=*) COMPREPLY=($(compgen -P --emit= -W 'c cpp json dot svg toolbox-skeleton chart' -- "${cur#--emit=}")); return ;;
@@ -87,12 +88,12 @@ _gfec() {
       compopt -o nospace 2>/dev/null; return ;;
     -*)
       COMPREPLY=($(compgen -W '-o -I -x --check --analyze --emit= --chart --engine= --no-line-directives
-        --context --context-type= --names -W -w -Wall -Werror -f -MD -MMD -MF -MP -MT --help --version' -- "$cur"))
+        --context --context-type= --names --trace --trace-full-every -W -w -Wall -Werror -f -MD -MMD -MF -MP -MT --help --version' -- "$cur"))
       [[ ${COMPREPLY[0]} == *= ]] && compopt -o nospace 2>/dev/null
       return ;;
   esac
   if [[ $COMP_CWORD -eq 1 ]]; then
-    COMPREPLY=($(compgen -W 'run test' -- "$cur"))
+    COMPREPLY=($(compgen -W 'run test monitor' -- "$cur"))
   fi
   COMPREPLY+=($(compgen -f -X '!*.@(sfc|fsm|plan|iface|toolbox|pml)' -- "$cur"))
   compopt -o plusdirs 2>/dev/null
