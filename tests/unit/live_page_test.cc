@@ -1,8 +1,8 @@
 // The live page's recording and server (monitor/live/, docs/live.md "The live page"): ticks
 // handed on by a decoder become frames the page appends, with the engine's tick numbers, losses,
 // silence and the end; a team's robots are aligned tick by tick; the server answers on loopback
-// only, with the page and its updates, while a decoder thread appends (clean under ThreadSanitizer,
-// -DGFEC_SANITIZE=thread).
+// only, with the page and its updates, while a decoder thread appends (clean when compiled with
+// -fsanitize=thread).
 #include "live_recording.h"
 #include "live_server.h"
 
