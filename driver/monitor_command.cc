@@ -8,6 +8,11 @@
 #include "diagnostic_report.h"
 #include "driver.h"
 #include "escape.h"
+#include "external_tool.h"
+#include "live_page.h"
+#include "live_recording.h"
+#include "live_server.h"
+#include "tee_sink.h"
 #include "log_sink.h"
 #include "options.h"
 #include "pipeline/compilation.h"
@@ -17,6 +22,10 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <vector>
 #include <ostream>
 #include <unistd.h>
 
@@ -34,7 +43,11 @@ struct MonitorOptions {
   long baud = 115200;
   std::string tcp;     ///< HOST:PORT to connect to
   double silence = 0;  ///< report silence after this many seconds (0: never)
-  Options report;      ///< -I, -x, -W..., -f...: as gfec's
+  bool silence_given = false;
+  std::string http;          ///< HOST:PORT of the live page ("" = none)
+  bool http_remote = false;  ///< serve it on an address that is not loopback
+  int robots = 1;            ///< --tcp connections, one per robot of a team (--http only)
+  Options report;            ///< -I, -x, -W..., -f...: as gfec's
 };
 
 void add_options(CLI::App &app, MonitorOptions &o, FrontEndFlags &front_end) {
@@ -51,6 +64,18 @@ void add_options(CLI::App &app, MonitorOptions &o, FrontEndFlags &front_end) {
   app.add_option("--silence", o.silence, "Report when nothing has arrived for S seconds (default: never)")
       ->type_name("S")
       ->check(CLI::Range(0.0, 86400.0));
+  app.add_option("--http", o.http,
+                 "Serve the live page on HOST:PORT (loopback only; port 0: a free one, printed): the run viewer "
+                 "with the chart lit as ticks arrive (docs/live.md)")
+      ->type_name("HOST:PORT");
+  app.add_flag("--http-remote", o.http_remote,
+               "Serve the live page on an address that is not loopback too (it has no login: anyone who reaches "
+               "it sees the run)");
+  app.add_option("--robots", o.robots,
+                 "With --tcp and --http: connect N times, one stream per robot (carbot-sim --trace-to serves "
+                 "robot i to the i-th connection), all robots on one page, each in its colour")
+      ->type_name("N")
+      ->check(CLI::Range(1, 64));
   add_front_end_options(app, o.report, front_end);
 }
 
@@ -91,26 +116,91 @@ int monitor_with(const MonitorOptions &o, DiagnosticReport &report, std::ostream
     report.tool_error(o.input, why, false);
     return kExitUsageOrIo;
   }
+  // --http: the live page's recording, fed beside (or instead of) the log.
+  std::unique_ptr<live::LiveRecording> page;
+  if (!o.http.empty()) {
+    const std::string source = !o.serial.empty() ? "serial " + o.serial : !o.tcp.empty() ? "tcp " + o.tcp : "stdin";
+    try {
+      page = std::make_unique<live::LiveRecording>(live_chart(c.model, target.chart, o.input, source),
+                                                   static_cast<std::size_t>(o.robots));
+    } catch (const ToolTimeLimit &e) {
+      report.tool_error(o.input, e.what(), false);
+      return kExitInputError;
+    }
+  }
   monitor::LogSink log(c.model, target.chart, out);
-  monitor::TraceDecoder decoder(c.model, layout, log);
-  const std::string read_error = monitor::read_stream(
-      fd, o.silence, log, [&](const unsigned char *data, std::size_t n) { decoder.feed(data, n); },
-      [&] { return decoder.refused(); });
-  if (fd != 0) ::close(fd);
-  decoder.finish();
-  if (decoder.refused()) {
-    err << fmt::format("{}: error: {}\n", chart_location(c, c.model.charts.at(target.chart)),
-                       text::printable(decoder.refusal()));
-    return kExitInputError;
+  std::unique_ptr<live::TeeSink> both;
+  if (o.log && page) both = std::make_unique<live::TeeSink>(log, *page);
+  monitor::RunSink &sink = both   ? static_cast<monitor::RunSink &>(*both)
+                           : page ? static_cast<monitor::RunSink &>(*page)
+                                  : static_cast<monitor::RunSink &>(log);
+  monitor::TraceDecoder decoder(c.model, layout, sink);
+  // The page's silence banner needs silence reported: after a second unless --silence says.
+  const double silence = page && !o.silence_given ? 1.0 : o.silence;
+  auto read = [&]() -> int {
+    const std::string read_error = monitor::read_stream(
+        fd, silence, sink, [&](const unsigned char *data, std::size_t n) { decoder.feed(data, n); },
+        [&] { return decoder.refused(); });
+    if (fd != 0) ::close(fd);
+    decoder.finish();
+    if (decoder.refused()) {
+      err << fmt::format("{}: error: {}\n", chart_location(c, c.model.charts.at(target.chart)),
+                         text::printable(decoder.refusal()));
+      return kExitInputError;
+    }
+    if (page) page->ended(read_error.empty() ? "the end of the stream" : "reading the trace: " + read_error);
+    err << fmt::format("gfec monitor: {} tick{} decoded, {} lost, {} byte{} garbled\n", decoder.ticks_shown(),
+                       decoder.ticks_shown() == 1 ? "" : "s", decoder.ticks_lost(), decoder.bytes_garbled(),
+                       decoder.bytes_garbled() == 1 ? "" : "s");
+    if (!read_error.empty()) {
+      report.tool_error(o.input, "reading the trace: " + read_error, false);
+      return kExitUsageOrIo;
+    }
+    return kExitOk;
+  };
+  if (!page) return read();
+  if (o.robots > 1) {
+    // A team: the other robots' connections (robot i is the i-th), each read and decoded on a
+    // thread of its own into the one page (LiveRecording takes a lock per call).
+    std::vector<int> fds{fd};
+    for (int i = 1; i < o.robots; ++i) {
+      const int more = monitor::open_tcp(o.tcp, why);
+      if (more < 0) {
+        for (int f : fds) ::close(f);
+        report.tool_error(o.input, fmt::format("robot {}: {}", i, why), false);
+        return kExitUsageOrIo;
+      }
+      fds.push_back(more);
+    }
+    auto read_team = [&] {
+      std::vector<std::unique_ptr<monitor::TraceDecoder>> decoders;
+      for (std::size_t i = 0; i < fds.size(); ++i)
+        decoders.push_back(std::make_unique<monitor::TraceDecoder>(c.model, layout, *page, i));
+      std::mutex err_mutex;
+      std::vector<std::thread> readers;
+      for (std::size_t i = 0; i < fds.size(); ++i)
+        readers.emplace_back([&, i] {
+          monitor::TraceDecoder &d = *decoders[i];
+          const std::string read_error = monitor::read_stream(
+              fds[i], silence, *page, [&](const unsigned char *data, std::size_t n) { d.feed(data, n); },
+              [&] { return d.refused(); });
+          ::close(fds[i]);
+          d.finish();
+          std::lock_guard<std::mutex> lock(err_mutex);
+          if (d.refused()) err << fmt::format("gfec monitor: robot {}: {}\n", i, text::printable(d.refusal()));
+          err << fmt::format("gfec monitor: robot {}: {} ticks decoded, {} lost, {} bytes garbled{}\n", i,
+                             d.ticks_shown(), d.ticks_lost(), d.bytes_garbled(),
+                             read_error.empty() ? "" : "; reading: " + read_error);
+        });
+      for (std::thread &t : readers) t.join();
+      page->ended("the end of the robots' streams");
+    };
+    return serve_live_page(*page, o.http, o.http_remote, read_team, err);
   }
-  err << fmt::format("gfec monitor: {} tick{} decoded, {} lost, {} byte{} garbled\n", decoder.ticks_shown(),
-                     decoder.ticks_shown() == 1 ? "" : "s", decoder.ticks_lost(), decoder.bytes_garbled(),
-                     decoder.bytes_garbled() == 1 ? "" : "s");
-  if (!read_error.empty()) {
-    report.tool_error(o.input, "reading the trace: " + read_error, false);
-    return kExitUsageOrIo;
-  }
-  return kExitOk;
+  // The page stays up after the stream ends, until the monitor is stopped; only a server that
+  // cannot listen returns.
+  return serve_live_page(
+      *page, o.http, o.http_remote, [&] { read(); }, err);
 }
 
 }  // namespace
@@ -127,10 +217,21 @@ int monitor_command(int argc, const char *const *argv, std::ostream &out, std::o
   FrontEndFlags front_end;
   add_options(app, o, front_end);
   if (auto code = parse_subcommand(app, argc, argv, out, err, "monitor")) return *code;
+  o.silence_given = app.get_option("--silence")->count() > 0;
   o.report.line_numbers = false;
   std::string why = front_end.apply(o.report);
   if (why.empty() && !o.serial.empty() && !o.tcp.empty()) why = "--serial and --tcp: give one source";
-  if (why.empty() && !o.log) why = "nothing to show: give --log";
+  if (why.empty() && !o.log && o.http.empty()) why = "nothing to show: give --log or --http HOST:PORT";
+  if (why.empty() && !o.http.empty()) {
+    // The address is checked before the chart is compiled and drawn or a source opened.
+    std::string host;
+    int port = 0;
+    why = live::parse_address(o.http, host, port);
+    if (why.empty()) why = live::refuse_host(host, o.http_remote);
+    if (!why.empty()) why = "--http " + o.http + ": " + why;
+  }
+  if (why.empty() && o.robots > 1 && (o.tcp.empty() || o.http.empty() || o.log))
+    why = "--robots: several robots' streams come over --tcp and show on one --http page (no --log)";
   if (!why.empty()) {
     err << "gfec: error: " << text::printable(why) << "\nRun 'gfec monitor --help' for the options.\n";
     return kExitUsageOrIo;

@@ -10,6 +10,7 @@
 #include "interpreter/machine.h"
 #include "interpreter/value.h"
 #include "interpreter/run_chart.h"
+#include "live_page.h"
 #include "output_files.h"
 #include "pipeline/compilation.h"
 #include "recording.h"
@@ -49,22 +50,6 @@ struct RunOptions {
   Options report;    ///< -I, -x, -W..., -f...: as gfec's (add_front_end_options)
 };
 
-/// Chart `c` and the charts its places run, depth first, as the recording builder reads them;
-/// returns c's index in `outline`.
-int outline_chart(const model::Model &model, model::ChartId c, viewer::ChartOutline &outline) {
-  const model::Chart &chart = model.charts.at(c);
-  const int index = static_cast<int>(outline.charts.size());
-  outline.charts.push_back({chart.name, {}});
-  std::vector<viewer::ChartOutline::Place> places;
-  for (model::PlaceId i : chart.places.ids()) {
-    const model::Place &p = chart.places[i];
-    places.push_back(
-        {p.name.str(), p.terminal != model::Terminal::None, p.runs ? outline_chart(model, p.runs, outline) : -1});
-  }
-  outline.charts[static_cast<std::size_t>(index)].places = std::move(places);
-  return index;
-}
-
 /// The run viewer's recording of an interpreter run (docs/viewer.md), built as the run goes
 /// (feed() after each tick): the chart's picture, the activation after each tick (of the chart
 /// and of each running sub-chart instance) and what each tick did, taken from the run's log.
@@ -78,27 +63,15 @@ public:
         rec_("gfec run", c_.name, fsm_ ? "fsm" : "sfc", o.input, period_ms_ / 1000), o_(o) {
     // The timeline's rows: the chart's places, then each sub-chart instance's rows, depth first
     // in declaration order (the order of gfec run's `av` lines and of the picture's frames).
-    viewer::ChartOutline outline;
-    outline_chart(model, chart, outline);
     std::vector<viewer::Row> rows;
     std::vector<viewer::Instance> instances;
-    viewer::outline_rows(outline, rows, instances);
+    viewer::outline_rows(chart_outline(model, chart), rows, instances);
     for (const viewer::Row &row : rows) rec_.add_row(row);
     for (const viewer::Instance &in : instances) {
       rec_.add_instance(in);
       first_row_[in.path] = in.first;
     }
-    std::string svg, note;
-    try {
-      EmitOptions emit;
-      emit.chart = chart;
-      emit.output_path = "chart.svg";
-      emit.source_name = o.input;
-      if (auto backend = make_backend("svg"))
-        svg = emit_to_memory(*backend, model, emit, run_external_tool).at(0).contents;
-    } catch (const ToolTimeLimit &) {
-      throw;  // a chart too large to draw in time is an error, not a page without a picture
-    } catch (const std::exception &e) { note = fmt::format("no diagram: {}", e.what()); }
+    const auto [svg, note] = chart_picture(model, chart, o.input);
     rec_.set_picture(svg, note);
     // The vars' initial values as the interpreter's _init sets them; each tick's `set` lines
     // then give their changes. A team's agents each have their own vars, which the log does

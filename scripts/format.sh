@@ -8,7 +8,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
-mapfile -t files < <(git ls-files -- support compiler backends viewer driver lsp runtime sim tests tools |
+mapfile -t files < <(git ls-files -- support compiler backends viewer monitor driver lsp runtime sim tests tools |
   grep -E '\.(cc|cpp|h|hpp|c)$' | grep -v '^tests/golden/')
 if [[ ${1:-} == --check ]]; then
   bad=0

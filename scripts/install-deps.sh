@@ -22,6 +22,7 @@ packages=(
   chromium   # the run viewer's browser test (tests/viewer)
   neovim     # the language server driven by a real client (tests/lsp/neovim)
   python3    # scripts/bench.sh lsp (tests/bench/bench_lsp.py)
+  libcpp-httplib-dev  # gfec monitor --http: the live page's server (monitor/live, docs/live.md)
 )
 # Node (for the SARIF schema and TextMate grammar tests) may come from another repo already.
 command -v npm >/dev/null 2>&1 || packages+=(nodejs npm)

@@ -35,6 +35,12 @@ void instance_rows(const ChartOutline &outline, const ChartOutline::Chart &c, co
 
 }  // namespace
 
+const char *robot_colour(std::size_t i) {
+  static const char *const kRobots[] = {"#1f6fd1", "#7b4fc9", "#16a3a3", "#a0522d",
+                                        "#d6409f", "#6b6b6b", "#26262b", "#3a7d1a"};
+  return kRobots[i % (sizeof kRobots / sizeof kRobots[0])];
+}
+
 void outline_rows(const ChartOutline &outline, std::vector<Row> &rows, std::vector<Instance> &instances) {
   if (outline.charts.empty()) return;
   const ChartOutline::Chart &c = outline.charts.front();
@@ -163,6 +169,30 @@ nlohmann::json RecordingBuilder::data() const {
   doc["vars"] = std::move(vars);
   doc["vars_note"] = vars_note_;
   for (const auto &[key, value] : extra_) doc[key] = value;
+  return doc;
+}
+
+nlohmann::json RecordingBuilder::since(const Cursor &c) const {
+  using nlohmann::json;
+  auto texts = [&](std::size_t i) { return i < c.texts.size() ? c.texts[i] : std::size_t{0}; };
+  json events = json::array();
+  for (std::size_t i = c.events; i < events_.size(); ++i) {
+    const auto &[k, kind, text] = events_[i];
+    events.push_back({k, kind, text});
+  }
+  json doc = {{"frames", frames_},
+              {"active", active_.since(c.frames)},
+              {"status", status_.since(c.frames)},
+              {"calls", robots_.empty() ? calls_.since(c.frames, texts(0)) : json(nullptr)},
+              {"events", events},
+              {"events_total", events_.size()}};
+  if (!robots_.empty()) {
+    json list = json::array();
+    for (std::size_t r = 0; r < robots_.size(); ++r)
+      list.push_back(
+          {{"calls", robots_[r].calls.since(c.frames, texts(r + 1))}, {"status", robots_[r].status.since(c.frames)}});
+    doc["robots"] = std::move(list);
+  }
   return doc;
 }
 

@@ -25,6 +25,9 @@ struct Row {
   int robot = -1;         ///< several robots: whose row (-1: not a team recording)
 };
 
+/// Robot `i`'s colour in every page and picture of several robots (a lit state, a path, a badge).
+const char *robot_colour(std::size_t i);
+
 /// A sub-chart instance (docs/c-engine.md "Sub-charts"): rows [first, first + count).
 struct Instance {
   std::string path;   ///< "Patrol", "Search.Grab"
@@ -98,6 +101,17 @@ public:
   long frames() const { return frames_; }
   /// The recording so far, as docs/viewer.md describes it; viewer::page() makes it a page.
   nlohmann::json data() const;
+
+  /// What a page holding the recording up to a point lacks (docs/viewer.md "Live mode").
+  struct Cursor {
+    long frames = 0;                 ///< the frames it holds
+    std::size_t events = 0;          ///< the events it holds, in the order they were added
+    std::vector<std::size_t> texts;  ///< the call texts it holds: the run's, then each robot's
+  };
+  /// The frames from cursor.frames on (active, status, calls, per robot too), the events from
+  /// number cursor.events on and the call texts the page lacks; `frames` is the new count.
+  /// Nothing of a frame before `frames()` changes once it is added, so the page appends.
+  nlohmann::json since(const Cursor &cursor) const;
 
 private:
   struct Robot {

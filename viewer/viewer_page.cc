@@ -1,5 +1,6 @@
 #include "viewer_page.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace gfec::viewer {
@@ -31,6 +32,26 @@ void CallRecorder::record(long tick, const std::vector<std::string> &calls) {
     ids.push_back(it->second);
   }
   changes_.record(tick, ids);
+}
+
+nlohmann::json ChangeList::since(long tick) const {
+  // Entries are in tick order: the first at or after `tick` by bisection.
+  std::size_t lo = 0, hi = list_.size();
+  while (lo < hi) {
+    const std::size_t mid = (lo + hi) / 2;
+    if (list_[mid][0].get<long>() < tick) lo = mid + 1;
+    else hi = mid;
+  }
+  nlohmann::json out = nlohmann::json::array();
+  for (std::size_t i = lo; i < list_.size(); ++i) out.push_back(list_[i]);
+  return out;
+}
+
+nlohmann::json CallRecorder::since(long tick, std::size_t texts_known) const {
+  const std::size_t from = std::min(texts_known, texts_.size());
+  return {{"texts_from", from},
+          {"texts", std::vector<std::string>(texts_.begin() + static_cast<std::ptrdiff_t>(from), texts_.end())},
+          {"ticks", changes_.since(tick)}};
 }
 
 }  // namespace gfec::viewer

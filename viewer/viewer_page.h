@@ -30,6 +30,9 @@ public:
     has_last_ = true;
   }
   const nlohmann::json &json() const { return list_; }
+  /// The entries from `tick` on: what a page that holds the ticks before `tick` lacks (a live
+  /// page's update, docs/viewer.md "Live mode").
+  nlohmann::json since(long tick) const;
 
 private:
   nlohmann::json list_ = nlohmann::json::array();
@@ -43,6 +46,10 @@ class CallRecorder {
 public:
   void record(long tick, const std::vector<std::string> &calls);
   nlohmann::json json() const { return {{"texts", texts_}, {"ticks", changes_.json()}}; }
+  /// The ticks from `tick` on and the texts from number `texts_known` on (`texts_from` says
+  /// where they go): a live page's update.
+  nlohmann::json since(long tick, std::size_t texts_known) const;
+  std::size_t texts() const { return texts_.size(); }
 
 private:
   std::vector<std::string> texts_;

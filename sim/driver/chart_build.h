@@ -72,7 +72,7 @@ struct BuildError : std::runtime_error {
 BuiltEngine build_engine(const Options& options, const std::string& dir);
 
 /// The shim's C source for a C engine of `chart` (exposed for tests).
-std::string c_shim(const ChartInfo& chart);
+std::string c_shim(const ChartInfo& chart, bool traced = false);
 /// A header renaming each interface function the engine calls to its robot library's name, the
 /// interface's name and the function's (CleanBot's `PickUp` is `CleanBot_PickUp`: FetchBot has
 /// a `PickUp` too, and carbot-sim links both libraries).

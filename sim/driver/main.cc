@@ -25,6 +25,7 @@
 #include "driver/chart_build.h"
 #include "driver/engine_loader.h"
 #include "driver/options.h"
+#include "driver/trace_link.h"
 #include "driver/process.h"
 #include "driver/reports.h"
 #include "driver/run.h"
@@ -216,6 +217,11 @@ int run_main(int argc, char** argv) {
   app.add_option("--svg", o.svg, "write a picture of the world and the path (SVG)");
   app.add_option("--html", o.html, "write the run viewer: one self-contained HTML page (docs/viewer.md)");
   app.add_option("--record", o.record, "write the run viewer's recording (JSON, docs/viewer.md)");
+  app.add_option("--trace-to", o.trace_to,
+                 "serve each robot's engine trace (gfec --trace) on this address, one connection per robot: "
+                 "the run starts when `gfec monitor CHART --tcp HOST:PORT` has connected for each, and goes at "
+                 "real time (docs/live.md)")
+      ->type_name("tcp:HOST:PORT");
   app.add_option("--physics-step", o.physics_step, "physics step in seconds")
       ->capture_default_str()
       ->check(finite_in(1e-5, 0.1));
@@ -302,6 +308,13 @@ int run_main(int argc, char** argv) {
       return fail(kUsage, fmt::format("--seconds {:g} is {:.3g} control ticks and {:.3g} physics steps; the budget is "
                                       "{:g} and {:g} (a shorter run, a longer --period or --physics-step)",
                                       o.seconds, control_ticks, physics_steps, kMaxControlTicks, kMaxPhysicsSteps));
+    // The live trace: every robot connected before the first tick, or no run.
+    if (!o.trace_to.empty()) {
+      if (built.chart.kind == "plan")
+        return fail(kUsage, "--trace-to: plans have no engine trace yet (sfc and fsm charts only)");
+      if (const std::string why = trace_links().open(o.trace_to, robots, period); !why.empty())
+        return fail(kUsage, why);
+    }
     Simulation sim(world, SimConfig{o.physics_step, period});
     RunResult result;
     if (robots == 1) {

@@ -14,6 +14,7 @@ struct Options {
   std::string svg;               ///< picture of the world and the path ("" = none)
   std::string html;              ///< the run viewer page ("" = none)
   std::string record;            ///< the run viewer's recording as JSON ("" = none)
+  std::string trace_to;          ///< tcp:HOST:PORT: each robot's engine trace, live (docs/live.md; "" = none)
   double physics_step = 0.002;   ///< s
   double period = 0.010;         ///< s, control period
   std::string gfec;              ///< the chart compiler

@@ -10,6 +10,7 @@
 #include "hal/carbot_hal.h"
 #include "hal/hal_binding.h"
 #include "driver/engine_log.h"
+#include "driver/trace_link.h"
 #include "robots/robots.h"
 
 namespace carbot::driver {
@@ -208,6 +209,7 @@ RunResult run_engine(Simulation& sim, LoadedEngine& engine, const ChartInfo& cha
       keep_activation();
       break;
     }
+    trace_links().select(0);
     engine.run();
     // An fsm's state changes go to the engine log, as a plan's actor changes do, for result.json
     // and the picture.

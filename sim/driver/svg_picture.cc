@@ -8,6 +8,7 @@
 #include "core/geometry.h"
 #include "driver/engine_log.h"
 #include "driver/reports.h"
+#include "recording.h"
 #include "xml_text.h"
 
 namespace carbot::driver {
@@ -221,11 +222,7 @@ void draw_path(Svg& s, const Frame& f, const RunReport& r) {
 
 // A colour per robot (no red: red marks bumps; no orange or green: items and destinations);
 // the run viewer's page uses the same (reports.h).
-const char* robot_colour(std::size_t i) {
-  static const char* const kRobots[] = {"#1f6fd1", "#7b4fc9", "#16a3a3", "#a0522d",
-                                        "#d6409f", "#6b6b6b", "#26262b", "#3a7d1a"};
-  return kRobots[i % (sizeof kRobots / sizeof kRobots[0])];
-}
+const char* robot_colour(std::size_t i) { return gfec::viewer::robot_colour(i); }
 
 namespace {
 

@@ -7,6 +7,7 @@
 #include <deque>
 
 #include "driver/engine_log.h"
+#include "driver/trace_link.h"
 #include "driver/run.h"
 #include "hal/carbot_hal.h"
 #include "hal/hal_binding.h"
@@ -102,7 +103,8 @@ RunResult run_team(Simulation& sim, std::vector<LoadedEngine*> engines, const Ch
         keep_activation(i);
         continue;
       }
-      sim.select(i);  // this robot's row below; its engine's calls reach it through their context
+      sim.select(i);            // this robot's row below; its engine's calls reach it through their context
+      trace_links().select(i);  // its engine's trace frame goes down its own link
       engine(i).run();
       RobotRun& r = robot(i);
       if (std::string change = state_change(engine(i), chart, last_state[static_cast<std::size_t>(i)]); !change.empty())

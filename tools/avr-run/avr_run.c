@@ -1,7 +1,7 @@
 // avr-run: runs an AVR program under simavr the way a test needs it (docs/targets.md "AVR / Arduino").
 //
 //   avr-run --mcu atmega328p [--freq 16000000] [--max-cycles N] [--cycles]
-//           [--pins SCRIPT] [--pin-log FILE] PROGRAM.elf
+//           [--pins SCRIPT] [--pin-log FILE] [--real-time] PROGRAM.elf
 //
 // simavr's own command line decorates the UART's lines and rewrites newlines, and sleeps in real
 // time; this runner gives a test the program's bytes and a plain exit status instead:
@@ -19,6 +19,11 @@
 // write, so the count holds the start marker's own `out` and not the end marker's. Interrupts
 // taken inside a stretch are counted in it. The marker registers are the megaAVR's (GPIOR0 at
 // data address 0x3E, GPIOR1 at 0x4A), as on the ATmega48/88/168/328, 644, 1284 and 2560.
+//
+// Real time (--real-time): the program runs no faster than the part would (it is slower when the
+// host cannot keep up), and its UART bytes leave each emulated millisecond instead of when
+// stdout's buffer fills: what a live monitor reading the UART through a pipe needs
+// (scripts/live-avr.sh, docs/live.md).
 //
 // Pins: --pins SCRIPT drives input pins at given times; --pin-log FILE records every change of an
 // output pin (a pin whose DDR bit is set; its level is its PORT bit). Both use one line format:
@@ -43,6 +48,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 enum { kExitOk = 0, kExitStatus = 1, kExitError = 2, kExitTimeout = 3 };
 enum { kGpior0 = 0x3E, kGpior1 = 0x4A, kMarkStart = 1, kMarkStop = 2, kMaxPorts = 12 };
@@ -55,6 +61,7 @@ typedef struct Options {
   const char *pins;
   const char *pin_log;
   const char *program;
+  int real_time;
 } Options;
 
 /// One pin set by the script at a time.
@@ -97,7 +104,7 @@ static void fail_usage(const char *format, ...) {
   vfprintf(stderr, format, args);
   va_end(args);
   fprintf(stderr, "\nusage: avr-run --mcu MCU [--freq HZ] [--max-cycles N] [--cycles] [--pins SCRIPT] "
-                  "[--pin-log FILE] PROGRAM.elf\n");
+                  "[--pin-log FILE] [--real-time] PROGRAM.elf\n");
   exit(kExitError);
 }
 
@@ -118,13 +125,15 @@ static int parse_u64(const char *text, uint64_t *out) {
 }
 
 static Options parse_options(int argc, char **argv) {
-  Options o = {NULL, 16000000u, 2000000000ull, 0, NULL, NULL, NULL};
+  Options o = {NULL, 16000000u, 2000000000ull, 0, NULL, NULL, NULL, 0};
   for (int i = 1; i < argc; ++i) {
     const char *a = argv[i];
     int has_value = i + 1 < argc;
     uint64_t n;
     if (strcmp(a, "--cycles") == 0) {
       o.cycles = 1;
+    } else if (strcmp(a, "--real-time") == 0) {
+      o.real_time = 1;
     } else if (strcmp(a, "--mcu") == 0 && has_value) {
       o.mcu = argv[++i];
     } else if (strcmp(a, "--freq") == 0 && has_value) {
@@ -339,7 +348,24 @@ int main(int argc, char **argv) {
   }
 
   int code = kExitOk;
+  // --real-time: each emulated millisecond, the UART's bytes go out and the run waits for the clock.
+  struct timespec start;
+  clock_gettime(CLOCK_MONOTONIC, &start);
+  const uint64_t per_ms = o.freq / 1000u ? o.freq / 1000u : 1u;
+  uint64_t next_ms = per_ms;
   for (;;) {
+    if (o.real_time && run.avr->cycle >= next_ms) {
+      next_ms += per_ms;
+      fflush(stdout);
+      struct timespec now;
+      clock_gettime(CLOCK_MONOTONIC, &now);
+      const double ahead = (double)run.avr->cycle / o.freq -
+                           ((double)(now.tv_sec - start.tv_sec) + (double)(now.tv_nsec - start.tv_nsec) / 1e9);
+      if (ahead > 0) {
+        struct timespec wait = {(time_t)ahead, (long)((ahead - (double)(time_t)ahead) * 1e9)};
+        nanosleep(&wait, NULL);
+      }
+    }
     if (script.next < script.count) apply_pins(&run, &script);
     int state = avr_run(run.avr);
     if (run.pin_log) log_outputs(&run);

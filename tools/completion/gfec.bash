@@ -40,10 +40,12 @@ _gfec() {
     case $prev in
       --serial) COMPREPLY=($(compgen -f -- "${cur:-/dev/tty}")); return ;;
       --baud) COMPREPLY=($(compgen -W '9600 19200 38400 57600 115200 230400 460800 921600 1000000' -- "$cur")); return ;;
-      --tcp|--silence|--chart) return ;;
+      --http) COMPREPLY=($(compgen -W '127.0.0.1:8080 127.0.0.1:0' -- "$cur")); return ;;
+      --tcp|--silence|--robots|--chart) return ;;
     esac
     if [[ $cur == -* ]]; then
-      COMPREPLY=($(compgen -W '--log --serial --baud --tcp --silence --chart -I -x -W -w -f --help' -- "$cur"))
+      COMPREPLY=($(compgen -W '--log --http --http-remote --serial --baud --tcp --robots --silence --chart -I -x -W -w
+        -f --help' -- "$cur"))
     else
       COMPREPLY=($(compgen -f -X '!*.@(sfc|fsm|pml)' -- "$cur")); compopt -o plusdirs 2>/dev/null
     fi

@@ -7,9 +7,11 @@
   var rows = D.rows || [];
   var events = D.events || [];
   var frame = 0, playing = false, clock = 0, lastStamp = null;
+  var following = false;  // a live page showing each tick as it arrives (live.js)
   // The tick a frame shows, as logs and tests count them: frame 0 is tick 1, the first tick
-  // after _init (which runs no statement of the chart and is no frame).
-  function tickOf(k) { return k + 1; }
+  // after _init (which runs no statement of the chart and is no frame). A live stream joined late
+  // or with lost ticks says its engine's tick numbers: D.ticks, a change list of tick - frame - 1.
+  function tickOf(k) { return k + 1 + (D.ticks ? valueAt(D.ticks, k, 0) : 0); }
 
   // ---- change lists: [[tick, value], ...], a value holds until the next entry ----
   function valueAt(list, k, fallback) {

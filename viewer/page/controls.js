@@ -1,5 +1,7 @@
 //! controls.js: Moving through the run: seek, play/pause at a speed, the buttons, the keys; window.gfecViewer.
+  // A move to a chosen frame; on a live page it stops following the ticks as they arrive.
   function seek(k) {
+    following = false;
     frame = Math.max(0, Math.min(frames - 1, k));
     clock = frame * period;
     render();
@@ -10,7 +12,8 @@
     if (lastStamp !== null) {
       clock += (stamp - lastStamp) / 1000 * speed();
       var k = Math.floor(clock / period + 1e-9);
-      if (k >= frames - 1) { k = frames - 1; pause(); }
+      // At the last frame: the end of a recording; a live page follows the ticks as they come.
+      if (k >= frames - 1) { k = frames - 1; pause(); if (D.live) follow(); }
       if (k !== frame) { frame = k; render(); }
     }
     lastStamp = stamp;
@@ -39,7 +42,7 @@
     else if (ev.key === 'ArrowRight') { pause(); seek(frame + (ev.shiftKey ? big : 1)); }
     else if (ev.key === 'ArrowLeft') { pause(); seek(frame - (ev.shiftKey ? big : 1)); }
     else if (ev.key === 'Home') { pause(); seek(0); }
-    else if (ev.key === 'End') { pause(); seek(frames - 1); }
+    else if (ev.key === 'End') { pause(); if (D.live) follow(); else seek(frames - 1); }
     else if (D.svg && (ev.key === '+' || ev.key === '=')) setZoom(zoom * 1.25, true);
     else if (D.svg && ev.key === '-') setZoom(zoom / 1.25, true);
     else if (D.svg && ev.key === '0') resetZoom();

@@ -96,11 +96,13 @@
         if (frame - f[0] < 1 / period && nodeOf[f[1]]) { lastFired = nodeOf[f[1]]; lastFired.classList.add('fired'); }
       } else document.getElementById('r-fired').textContent = '\u2013';
     } else document.getElementById('r-fired').textContent = '\u2013';
-    document.getElementById('r-tick').textContent = tickOf(frame) + ' / ' + tickOf(frames - 1);
-    document.getElementById('r-time').textContent = fmt(frame * period, 3) + ' s';
+    // Time from the engine's tick: a live stream's first tick may be its thousandth.
+    var seconds = (tickOf(frame) - 1) * period;
+    document.getElementById('r-tick').textContent = frames ? tickOf(frame) + ' / ' + tickOf(frames - 1) : '\u2013';
+    document.getElementById('r-time').textContent = frames ? fmt(seconds, 3) + ' s' : '\u2013';
     document.getElementById('r-status').textContent = valueAt(D.status || [], frame, 'running') + (team
       ? '\n' + bots.map(function (b) { return b.name + ': ' + valueAt(b.status, frame, 'running'); }).join('\n') : '');
-    document.getElementById('readout').textContent = 'tick ' + tickOf(frame) + '   t = ' + fmt(frame * period, 2) + ' s';
+    document.getElementById('readout').textContent = frames ? 'tick ' + tickOf(frame) + '   t = ' + fmt(seconds, 2) + ' s' : 'no tick yet';
     scrub.value = String(frame);
     showVars();
     var ul = document.getElementById('calls');
@@ -155,4 +157,5 @@
       });
     }
     drawTimeline();
+    if (D.live) showLink();  // following or paused, as this move left it
   }

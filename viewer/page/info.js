@@ -8,12 +8,14 @@
 
   // ---- events list ----
   var evList = document.getElementById('events'), evItems = [];
-  events.forEach(function (e) {
+  // One event's entry; a live page adds those that arrive (live.js).
+  function addEventItem(e) {
     var li = document.createElement('li');
     li.textContent = fmt(e[0] * period, 2) + ' s  ' + e[2];
     li.title = 'tick ' + tickOf(e[0]) + ' (' + e[1] + ')';
     li.addEventListener('click', function () { pause(); seek(e[0]); });
     evList.appendChild(li);
     evItems.push(li);
-  });
+  }
+  events.forEach(addEventItem);
 

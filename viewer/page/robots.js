@@ -12,7 +12,8 @@
   }
   var team = !!(D.robots && D.robots.length);
   var bots = team ? D.robots.map(function (r, i) {
-    var b = decodePose(r.pose);
+    // A live team has no poses: no world, no path.
+    var b = decodePose(r.pose || { scale: 1, heading_scale: 1, x: [], y: [], h: [] });
     b.index = i; b.name = r.name; b.colour = r.colour; b.calls = r.calls; b.status = r.status;
     return b;
   }) : D.pose ? [decodePose(D.pose)] : [];

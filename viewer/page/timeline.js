@@ -17,23 +17,25 @@
       lineOf.push(lines++);
     });
   })();
-  var intervals = rows.map(function () { return []; });   // per row: [from, to) frames
-  (function () {
-    var open = rows.map(function () { return -1; });
+  // Per row: the closed intervals [from, to) of frames it was active, and the frame its open one
+  // began (-1: none), which lasts to the last frame. extendIntervals reads the change list's
+  // entries not read yet: a live page calls it as frames arrive (live.js).
+  var intervals = rows.map(function () { return []; }), openAt = rows.map(function () { return -1; }), readTo = 0;
+  function extendIntervals() {
     var list = D.active || [];
-    for (var i = 0; i <= list.length; ++i) {
-      var at = i < list.length ? list[i][0] : frames;
-      var set = {};
-      if (i < list.length) list[i][1].forEach(function (r) { set[r] = true; });
+    for (; readTo < list.length; ++readTo) {
+      var at = list[readTo][0], set = {};
+      list[readTo][1].forEach(function (r) { set[r] = true; });
       for (var r = 0; r < rows.length; ++r) {
         var on = !!set[r];
-        if (open[r] >= 0 && (!on || i === list.length)) { intervals[r].push([open[r], at]); open[r] = -1; }
-        if (on && open[r] < 0 && i < list.length) open[r] = at;
+        if (openAt[r] >= 0 && !on) { intervals[r].push([openAt[r], at]); openAt[r] = -1; }
+        if (on && openAt[r] < 0) openAt[r] = at;
       }
     }
-  })();
+  }
+  extendIntervals();
   var EVCOLOR = { bump: '#d32f2f', item: '#fb8c00', status: '#6a1b9a', note: '#00838f', supervisor: '#c62828',
-                  state: '#455a64', actor: '#455a64', contact: '#b8860b' };
+                  state: '#455a64', actor: '#455a64', contact: '#b8860b', lost: '#e53935' };
   var backdrop = null;
   function drawBackdrop() {
     var dpr = window.devicePixelRatio || 1, cw = tl.clientWidth, ch = TOP + ROW * lines + 18;
@@ -79,7 +81,7 @@
       // Several robots: each robot's bars in its colour, a success or failure state's paler.
       c.fillStyle = team ? D.robots[row.robot].colour : row.terminal ? '#8e24aa' : '#f9a825';
       c.globalAlpha = team && row.terminal ? 0.45 : 1;
-      intervals[r].forEach(function (iv) {
+      intervals[r].concat(openAt[r] >= 0 ? [[openAt[r], frames]] : []).forEach(function (iv) {
         var a = xOf(iv[0]), b = Math.max(a + 1.5, xOf(iv[1]));
         c.fillRect(a, y + 3, b - a, ROW - 6);
       });
