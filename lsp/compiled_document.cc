@@ -44,6 +44,9 @@ bool CompiledDocument::reads(const std::string &path) const {
   const std::string wanted = normal_path(path);
   for (const auto &p : compilation_->loaded.paths)
     if (normal_path(p) == wanted) return true;
+  // An import that found nothing at `path`: a buffer opened there makes the import resolve.
+  for (const auto &p : compilation_->loaded.missing)
+    if (normal_path(p) == wanted) return true;
   return false;
 }
 

@@ -40,8 +40,8 @@ public:
   nlohmann::json location(const SourceRange &r) const;
   /// The URI of a file this compilation read.
   std::string uri_of(FileId file) const;
-  /// Whether the compilation read the file at `path` (normalised): it must be redone when that
-  /// file's buffer changes.
+  /// Whether the compilation read the file at `path` (normalised), or an import looked for it
+  /// there and found nothing: it must be redone when that file's buffer opens or changes.
   bool reads(const std::string &path) const;
 
   // ---- the element at a position
