@@ -26,8 +26,11 @@ struct SourceElement {
 };
 
 struct LoadResult {
-  ast::Program program;                     ///< main file first, then imports in the order first reached
-  std::vector<std::string> paths;           ///< the path of every file read, in the same order
+  ast::Program program;            ///< main file first, then imports in the order first reached
+  std::vector<std::string> paths;  ///< the path of every file read, in the same order
+  /// The paths an import looked for and found nothing at: a file appearing there (the language
+  /// server's new buffer) changes the result, as a change of a file read does.
+  std::vector<std::string> missing;
   bool main_unreadable = false;             ///< the main file itself could not be read (an I/O error)
   std::string main_unreadable_why;          ///< why not (FileText::why)
   const InputLanguage *language = nullptr;  ///< the main file's, once it was read

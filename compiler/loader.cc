@@ -114,6 +114,7 @@ private:
     }
     auto &d = diag_.error(import.range, ErrorKind::Import, fmt::format("cannot find imported file '{}'", import.path));
     for (const auto &t : tried) d.note(fmt::format("looked for '{}'", t));
+    result_.missing.insert(result_.missing.end(), tried.begin(), tried.end());
     suggest_file(d, import, candidates);
   }
 

@@ -7,7 +7,8 @@ namespace gfec::lsp {
 
 CompiledDocument::CompiledDocument(const Session &session, const std::string &uri, const std::string &path,
                                    const pipeline::FrontEndOptions &options, const FileSystem &files)
-    : session_(session), uri_(uri), path_(path), compilation_(std::make_unique<pipeline::Compilation>(options)) {
+    : session_(session), uri_(uri), path_(path), compilation_(std::make_unique<pipeline::Compilation>(options)),
+      ranges_(compilation_->sources) {
   compilation_->front_end(path, files);
   if (!compilation_->loaded.program.files.empty() && compilation_->loaded.program.files.front()) {
     main_ = compilation_->loaded.program.files.front()->id;
@@ -25,7 +26,7 @@ const std::string &CompiledDocument::text() const {
 nlohmann::json CompiledDocument::range(const SourceRange &r) const {
   const auto &sources = compilation_->sources;
   if (!sources.knows(r.file)) return range_json("", 0, 0);
-  return range_json(sources.file(r.file).text(), r.begin, r.end);
+  return ranges_.range(r);
 }
 
 std::string CompiledDocument::uri_of(FileId file) const {
@@ -42,6 +43,9 @@ nlohmann::json CompiledDocument::location(const SourceRange &r) const {
 bool CompiledDocument::reads(const std::string &path) const {
   const std::string wanted = normal_path(path);
   for (const auto &p : compilation_->loaded.paths)
+    if (normal_path(p) == wanted) return true;
+  // An import that found nothing at `path`: a buffer opened there makes the import resolve.
+  for (const auto &p : compilation_->loaded.missing)
     if (normal_path(p) == wanted) return true;
   return false;
 }

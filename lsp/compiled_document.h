@@ -6,6 +6,7 @@
 
 #include "pipeline/compilation.h"
 #include "positions.h"
+#include "source_ranges.h"
 #include "token.h"
 
 #include <memory>
@@ -32,15 +33,15 @@ public:
   const std::string &text() const;
 
   /// The byte offset in the main file of an LSP position.
-  std::size_t offset_at(Position p) const { return offset_of(text(), p); }
+  std::size_t offset_at(Position p) const { return has_main_ ? ranges_.index(main_).offset(p) : 0; }
   /// A SourceRange as an LSP Range (in its own file's text).
   nlohmann::json range(const SourceRange &r) const;
   /// A SourceRange as an LSP Location: the URI of its file (an open buffer's own URI) and range.
   nlohmann::json location(const SourceRange &r) const;
   /// The URI of a file this compilation read.
   std::string uri_of(FileId file) const;
-  /// Whether the compilation read the file at `path` (normalised): it must be redone when that
-  /// file's buffer changes.
+  /// Whether the compilation read the file at `path` (normalised), or an import looked for it
+  /// there and found nothing: it must be redone when that file's buffer opens or changes.
   bool reads(const std::string &path) const;
 
   // ---- the element at a position
@@ -61,6 +62,9 @@ private:
   std::unique_ptr<pipeline::Compilation> compilation_;
   FileId main_ = 0;
   bool has_main_ = false;
+  /// Line indexes of the files read, built on first use and kept with this compilation (one
+  /// per document version): a position costs a binary search, not a scan from the text's start.
+  mutable SourceRanges ranges_;
 };
 
 }  // namespace gfec::lsp

@@ -1,6 +1,6 @@
 // LSP positions (a line and a UTF-16 code unit offset within it, both from 0) and the byte
-// offsets of the compiler's SourceRange. Lines end at "\n" or "\r\n". A byte that is no UTF-8
-// counts as one code unit (editors show it as U+FFFD); a character outside the BMP counts two.
+// offsets of the compiler's SourceRange. Lines end at "\n", "\r\n" or a lone "\r" (as for LSP and
+// gfec's lexer). A byte that is no UTF-8 counts as one code unit (editors show it as U+FFFD); a character outside the BMP counts two.
 #pragma once
 
 #include <cstdint>

@@ -46,24 +46,35 @@ Position TextIndex::position(std::uint32_t offset) const {
   offset = std::min<std::uint32_t>(offset, static_cast<std::uint32_t>(text_.size()));
   auto it = std::upper_bound(starts_.begin(), starts_.end(), offset);
   std::uint32_t line = static_cast<std::uint32_t>(it - starts_.begin()) - 1;
-  if (ascii_[line]) return {line, offset - starts_[line]};
-  return {line, utf16_length(text_.substr(starts_[line], offset - starts_[line]))};
+  if (ascii_[line]) return {line, std::min(offset, line_end(line)) - starts_[line]};
+  // An offset inside a character (or inside a "\r\n") stands for that character's start.
+  std::uint32_t at = starts_[line], units = 0;
+  const std::uint32_t end = std::min(offset, line_end(line));
+  while (at < end) {
+    text::Utf8 u = text::decode_utf8(text_, at);
+    const std::uint32_t bytes = u.length == 0 ? 1 : static_cast<std::uint32_t>(u.length);
+    if (at + bytes > end) break;
+    at += bytes;
+    units += u.length != 0 && u.code_point >= 0x10000 ? 2 : 1;
+  }
+  return {line, units};
 }
 
 std::uint32_t TextIndex::offset(Position p) const {
   if (p.line >= starts_.size()) return static_cast<std::uint32_t>(text_.size());
   std::uint32_t i = starts_[p.line], end = line_end(p.line), units = 0;
-  if (ascii_[p.line]) return std::min(end, i + p.character);
+  // 64-bit: a column near 2^32 must clamp to the line's end, not wrap before its start.
+  if (ascii_[p.line]) return static_cast<std::uint32_t>(std::min<std::uint64_t>(end, std::uint64_t{i} + p.character));
   while (i < end && units < p.character) {
     text::Utf8 u = text::decode_utf8(text_, i);
-    if (u.length == 0) {
-      ++units, ++i;
-      continue;
-    }
-    units += u.code_point >= 0x10000 ? 2 : 1;
-    i += static_cast<std::uint32_t>(u.length);
+    const std::uint32_t bytes = u.length == 0 ? 1 : static_cast<std::uint32_t>(u.length);
+    const std::uint32_t width = u.length != 0 && u.code_point >= 0x10000 ? 2 : 1;
+    // A position inside a surrogate pair is the pair's start (the spec leaves it to the server).
+    if (units + width > p.character) break;
+    units += width;
+    i += bytes;
   }
-  return i;
+  return std::min(i, end);
 }
 
 }  // namespace gfec::lsp

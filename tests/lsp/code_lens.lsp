@@ -7,8 +7,9 @@
 // send
 {"jsonrpc":"2.0","method":"textDocument/didOpen","params":{"textDocument":{"uri":"${root}/t.test","languageId":"gfec-test","version":1,
  "text":"import \"t.sfc\";\n\ntest \"starts\" of T {\n  tick;\n}\n  test \"stops \\\"soon\\\"\" of T { tick; }\n"}}}
+# t.sfc is neither on disk nor open yet.
 // expect
-{"method":"textDocument/publishDiagnostics","params":{"uri":"${root}/t.test","diagnostics":"*"}}
+{"method":"textDocument/publishDiagnostics","params":{"uri":"${root}/t.test","diagnostics":[{"code":"import","severity":1}]}}
 // send
 {"jsonrpc":"2.0","id":2,"method":"textDocument/codeLens","params":{"textDocument":{"uri":"${root}/t.test"}}}
 // expect
@@ -22,6 +23,10 @@
  "text":"sfc T { initial place A; }\n"}}}
 // expect
 {"method":"textDocument/publishDiagnostics","params":{"uri":"${root}/t.sfc","diagnostics":[]}}
+# The .test file's import found no t.sfc on disk; the buffer opened there is what it imports
+# now: it is checked again, and the error goes.
+// expect
+{"method":"textDocument/publishDiagnostics","params":{"uri":"${root}/t.test","version":1,"diagnostics":[]}}
 // send
 {"jsonrpc":"2.0","id":3,"method":"textDocument/codeLens","params":{"textDocument":{"uri":"${root}/t.sfc"}}}
 // expect

@@ -8,6 +8,7 @@
 #include "completion.h"
 #include "folding_ranges.h"
 #include "semantic_tokens.h"
+#include "positions.h"
 #include "text_index.h"
 
 #include "pipeline/compilation.h"
@@ -93,6 +94,31 @@ TEST_CASE("LSP positions count UTF-16 code units per line", "[lsp]") {
   CHECK(index.offset({2, 1}) == text.find('b'));       // a byte that is not UTF-8 is one unit
   CHECK(index.offset({1, 99}) == text.find('x') + 1);  // past the line: its end
   CHECK(index.offset({9, 0}) == text.size());
+}
+
+TEST_CASE("The server's positions end lines at \\r, \\r\\n and \\n alike", "[lsp]") {
+  // offset_of/position_of (the text sync and requests) and TextIndex are one code: a lone "\r"
+  // ends a line for LSP and for gfec's lexer.
+  for (const std::string eol : {"\n", "\r\n", "\r"}) {
+    const std::string text = "ab" + eol + "c\xf0\x9d\x84\x9e" + "d" + eol + "e";
+    const std::size_t d = text.find('d'), e = text.find('e');
+    CHECK(offset_of(text, {1, 3}) == d);
+    CHECK(offset_of(text, {2, 0}) == e);
+    CHECK(offset_of(text, {0, 99}) == 2);                  // past the line: its end, before the break
+    CHECK(offset_of(text, {0, 0xFFFFFFFFu}) == 2);         // no wrap-around before the line's start
+    CHECK(offset_of(text, {1, 2}) == text.find('c') + 1);  // inside the surrogate pair: its start
+    Position pd = position_of(text, d);
+    CHECK(pd.line == 1);
+    CHECK(pd.character == 3);
+    Position pe = position_of(text, e);
+    CHECK(pe.line == 2);
+    CHECK(pe.character == 0);
+    Position inside = position_of(text, text.find('c') + 2);  // inside the 4-byte character
+    CHECK(inside.character == 1);
+    Position at_break = position_of(text, 2 + eol.size() - 1);  // on the break's last byte
+    CHECK(at_break.line == 0);
+    CHECK(at_break.character == 2);  // the line's end, never past it
+  }
 }
 
 TEST_CASE("Semantic tokens classify declarations and uses", "[lsp]") {
