@@ -3,8 +3,21 @@
 #include "input_languages.h"
 
 #include <cctype>
+#include <iterator>
 
 namespace gfec::model {
+
+namespace {
+constexpr const char *kQualifierNames[] = {"N", "R", "S", "L", "D", "P", "P0", "P1", "SD", "DS", "SL"};
+}  // namespace
+
+const char *qualifier_name(Qualifier q) { return kQualifierNames[static_cast<std::size_t>(q)]; }
+
+std::optional<Qualifier> qualifier_named(std::string_view word) {
+  for (std::size_t i = 0; i < std::size(kQualifierNames); ++i)
+    if (word == kQualifierNames[i]) return static_cast<Qualifier>(i);
+  return std::nullopt;
+}
 
 const char *type_name(Type t) {
   switch (t) {

@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace gfec::model {
@@ -31,6 +32,7 @@ using ChartId = Id<struct ChartTag>;            ///< Model::charts
 using PlaceId = Id<struct PlaceTag>;            ///< Chart::places (of the chart that holds the reference)
 using TransitionId = Id<struct TransitionTag>;  ///< Chart::transitions
 using VarId = Id<struct VarTag>;                ///< Chart::vars
+using ActionId = Id<struct ActionTag>;          ///< Chart::actions
 using TemplateId = Id<struct TemplateTag>;      ///< Model::templates
 using ToolboxId = Id<struct ToolboxTag>;        ///< Model::toolboxes
 using PlanId = Id<struct PlanTag>;              ///< Model::plans
@@ -208,6 +210,38 @@ struct Transition {
   bool otherwise = false;  ///< written `else`: the earlier transitions sharing an input come first by intent
 };
 
+/// The qualifiers of IEC 61131-3's action control (docs/iec.md "Action control").
+enum class Qualifier : std::uint8_t { N, R, S, L, D, P, P0, P1, SD, DS, SL };
+
+/// The qualifier as written: "N", "SD", ...
+const char *qualifier_name(Qualifier q);
+/// The qualifier spelled `word`, if it is one.
+std::optional<Qualifier> qualifier_named(std::string_view word);
+/// L, D, SD, DS and SL take a duration; the others none.
+inline bool is_timed(Qualifier q) {
+  return q == Qualifier::L || q == Qualifier::D || q == Qualifier::SD || q == Qualifier::DS || q == Qualifier::SL;
+}
+
+/// `N Fill;` in place P: P holds the action under a qualifier.
+struct Association {
+  PlaceId place;
+  Qualifier qualifier = Qualifier::N;
+  double duration_ms = 0;   ///< as written, for the timed qualifiers
+  unsigned long ticks = 0;  ///< the duration in whole ticks, rounded up (§5.3)
+  SourceRange range;
+};
+
+/// A named action (docs/language.md §14): its body and every association that holds it, in
+/// place declaration order and then in the order written in the place. Its control's state
+/// (stored flags, timers, the previous tick's Q) belongs to each back end.
+struct Action {
+  CompactString name;
+  std::vector<Stmt> body;
+  std::vector<Association> associations;
+  SourceRange range;
+  SourceRange name_range;
+};
+
 /// A structural bound on a chart's activation, proven once after validation by the analyses
 /// (compiler/analysis/activation_bounds.h) for the back ends to read: the C engine sizes its
 /// activation counters and lists by it (docs/c-engine.md). Sixteen bytes per chart, none per place.
@@ -225,6 +259,7 @@ struct Chart {
   Table<PlaceId, Place> places;
   Table<TransitionId, Transition> transitions;  ///< declaration order: the order of §5.1 and §7
   Table<VarId, Var> vars;
+  Table<ActionId, Action> actions;    ///< named actions in declaration order: the order they run in
   std::vector<FunctionId> functions;  ///< interface functions the chart calls, in declaration order
   std::vector<ConstId> consts;        ///< constants the chart reads, in declaration order
   int team = 0;                       ///< fsm `team N;`: N (>= 2); 0 for a machine that is no team

@@ -63,6 +63,9 @@ void Machine::init() {
   const std::size_t n = chart_.places.size();
   av_.assign(n, 0);
   timers_.assign(n, 0);
+  acted_active_.assign(n, false);
+  stored_.assign(chart_.actions.size(), false);
+  was_q_.assign(chart_.actions.size(), false);
   state_ = PlaceId::none();
   status_ = 0;
   for (PlaceId p : chart_.places.ids()) {
@@ -263,6 +266,46 @@ void Machine::run_sfc(Frame &f) {
     if (!chart_.places[p].action.empty()) block(EventKind::Action, "action", p, &chart_.places[p].action, f);
     tick_instance(p, f);
   }
+  // 5. Named actions under their action control (docs/language.md §14).
+  if (!chart_.actions.empty()) named_actions(f);
+}
+
+void Machine::named_actions(Frame &f) {
+  using model::Qualifier;
+  for (model::ActionId a : chart_.actions.ids()) {
+    const model::Action &action = chart_.actions[a];
+    bool q = false, edge = false, set = false, reset = false;
+    for (const model::Association &as : action.associations) {
+      const bool x = av_[as.place] > 0, was = acted_active_[as.place];
+      const std::uint32_t t = timers_[as.place];
+      switch (as.qualifier) {
+      case Qualifier::N: q = q || x; break;
+      case Qualifier::P: q = q || (x && !was); break;
+      case Qualifier::L: q = q || (x && t < as.ticks); break;
+      case Qualifier::D: q = q || (x && t >= as.ticks); break;
+      case Qualifier::S: set = set || x; break;
+      case Qualifier::R: reset = reset || x; break;
+      case Qualifier::P1: edge = edge || (x && !was); break;
+      case Qualifier::P0: edge = edge || (!x && was); break;
+      // Refused by the validator until their timers are compiled (docs/iec.md "Status").
+      case Qualifier::SD:
+      case Qualifier::DS:
+      case Qualifier::SL: break;
+      }
+    }
+    // Reset dominates: the sets of this tick first, then the reset.
+    if (set) stored_[a] = true;
+    if (reset) stored_[a] = false;
+    q = q || stored_[a];
+    // Q true, its final run as Q falls, or an edge of P1 / P0: at most one run per tick.
+    if (q || was_q_[a] || edge) {
+      if (f.log) f.log->add(EventKind::Action, depth_, fmt::format("action {}{}", prefix_, action.name));
+      f.depth = depth_ + 1;
+      execute(action.body, f);
+    }
+    was_q_[a] = q;
+  }
+  for (PlaceId p : chart_.places.ids()) acted_active_[p] = av_[p] > 0;
 }
 
 void Machine::run_fsm(Frame &f) {

@@ -84,6 +84,7 @@ private:
   /// Runs a place's block, if it has one, logged under `kind` and the place's name.
   void block(EventKind kind, const char *word, model::PlaceId place, const std::vector<model::Stmt> *stmts, Frame &f);
   void end_of_tick(Frame &f);
+  void named_actions(Frame &f);
   std::string label(const model::Transition &t) const;
 
   const model::Model &model_;
@@ -98,6 +99,12 @@ private:
   int status_ = 0;                                             ///< fsm
   IdMap<model::PlaceId, std::uint32_t> timers_;                ///< ticks active (saturating, as in C)
   IdMap<model::VarId, Value> vars_;
+  /// Action control (docs/iec.md "Action control"): each place's state as the previous tick's
+  /// action control saw it (false before tick 1, so an initial place rises in tick 1), each
+  /// action's stored flag (S) and its Q of the previous tick (for the final run).
+  IdMap<model::PlaceId, bool> acted_active_;
+  IdMap<model::ActionId, bool> stored_;
+  IdMap<model::ActionId, bool> was_q_;
   bool started_ = false;                 ///< the first tick has run the initial entries
   int agent_ = 0;                        ///< team machine: this engine's agent number
   std::vector<model::PlaceId> reports_;  ///< team machine: by agent, its last state (none: none yet)

@@ -25,23 +25,6 @@ model::Expr make(K kind, Type type, SourceRange range) {
   return e;
 }
 
-/// Time needs a period: said once per chart, at the first place that needs it.
-void require_period(ExprScope &s, SourceRange at, const std::string &what) {
-  ChartScope &c = *s.chart;
-  if (c.out.period_ms > 0 || c.period_reported) return;
-  c.period_reported = true;
-  auto &d =
-      s.cx.diag.error(at, ErrorKind::MissingPeriod,
-                      fmt::format("{} needs a period, but {} '{}' declares none", what, c.kind_word(), c.out.name));
-  bool sub_chart = false;
-  for (const auto &runs : s.cx.runs)
-    for (model::ChartId r : runs) sub_chart = sub_chart || r == c.index;
-  if (sub_chart)
-    d.note(c.ast.name.range,
-           "a sub-chart takes the period of the chart that runs it; declare one there, e.g. 'period 10ms;'");
-  else d.note(c.ast.name.range, "declare one in the chart, e.g. 'period 10ms;'");
-}
-
 /// The unknown names already reported where `s` stands.
 std::set<std::string> &seen(ExprScope &s) { return s.chart ? s.chart->unknown : s.cx.file_unknown; }
 
@@ -498,6 +481,22 @@ bool divides_by_zero(BinaryOp op, const model::Expr &a, const model::Expr &b, So
                 fmt::format("{} by zero: '{}' is undefined in C", op == BinaryOp::Div ? "division" : "remainder",
                             source_text(cx.model, whole)));
   return true;
+}
+
+void require_period(ExprScope &s, SourceRange at, const std::string &what) {
+  ChartScope &c = *s.chart;
+  if (c.out.period_ms > 0 || c.period_reported) return;
+  c.period_reported = true;
+  auto &d =
+      s.cx.diag.error(at, ErrorKind::MissingPeriod,
+                      fmt::format("{} needs a period, but {} '{}' declares none", what, c.kind_word(), c.out.name));
+  bool sub_chart = false;
+  for (const auto &runs : s.cx.runs)
+    for (model::ChartId r : runs) sub_chart = sub_chart || r == c.index;
+  if (sub_chart)
+    d.note(c.ast.name.range,
+           "a sub-chart takes the period of the chart that runs it; declare one there, e.g. 'period 10ms;'");
+  else d.note(c.ast.name.range, "declare one in the chart, e.g. 'period 10ms;'");
 }
 
 unsigned long to_ticks(double ms, double period_ms) {

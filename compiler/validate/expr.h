@@ -73,6 +73,10 @@ constexpr unsigned long kBeyondTimers = 0x100000000ul;
 /// the generated code (-Wdiv-by-zero). Reports it at the divisor and returns true.
 bool divides_by_zero(BinaryOp op, const model::Expr &a, const model::Expr &b, SourceRange whole, Context &cx);
 
+/// Time needs a period: `what` (a duration, `elapsed(P)`, a timed qualifier) is an error in a
+/// chart without one; said once per chart, at the first place that needs it.
+void require_period(ExprScope &s, SourceRange at, const std::string &what);
+
 /// `ms` in whole ticks of `period_ms`, rounded up (§5.3), at most kBeyondTimers.
 unsigned long to_ticks(double ms, double period_ms);
 

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include <map>
+#include <optional>
 #include <string_view>
 
 namespace gfec::validation {
@@ -16,7 +17,10 @@ namespace gfec::validation {
 namespace {
 
 /// The qualifiers that take a duration (docs/iec.md).
-bool timed(std::string_view q) { return q == "L" || q == "D" || q == "SD" || q == "DS" || q == "SL"; }
+bool timed(std::string_view q) {
+  std::optional<model::Qualifier> named = model::qualifier_named(q);
+  return named && model::is_timed(*named);
+}
 
 }  // namespace
 
@@ -45,6 +49,10 @@ void check_named_actions(Context &cx, ChartScope &s) {
         cx.diag.error(as.range, ErrorKind::QualifierTime,
                       fmt::format("qualifier '{}' needs a duration: '{} {} 2s;'", as.qualifier.text, as.qualifier.text,
                                   as.action.text));
+      if (needs && as.duration_ms && !s.is_fsm()) {
+        ExprScope at{cx, &s, false};
+        require_period(at, as.duration_range, fmt::format("qualifier '{}'", as.qualifier.text));
+      }
       if (!needs && as.duration_ms)
         cx.diag.error(as.duration_range, ErrorKind::QualifierTime,
                       fmt::format("qualifier '{}' takes no duration; only L, D, SD, DS and SL do", as.qualifier.text));
@@ -53,13 +61,40 @@ void check_named_actions(Context &cx, ChartScope &s) {
                       "an fsm state holds no named actions; they are an sfc's (IEC 61131-3 steps)");
     }
   }
+  // The model's actions table: each action once (a duplicate is an error above), with every
+  // association that holds it, in place order, for the back ends' action control.
   ExprScope scope{cx, &s, false};
+  std::map<std::string_view, model::ActionId> ids;
   for (ast::ActionDecl &a : s.ast.actions) {
-    (void)lower_block(a.body, scope);  // its errors, as a place's body would have them
+    std::vector<model::Stmt> body = lower_block(a.body, scope);  // its errors, as a place's body would have them
+    if (ids.emplace(a.name.text, model::ActionId(s.out.actions.size())).second) {
+      model::Action out;
+      out.name = a.name.text;
+      out.body = std::move(body);
+      out.range = a.range;
+      out.name_range = a.name.range;
+      s.out.actions.push_back(std::move(out));
+    }
     cx.diag.error(a.name.range, ErrorKind::NotSupported,
                   fmt::format("action '{}': named actions are checked but not compiled yet (docs/iec.md, "
                               "\"Status\"); write its statements in the places that hold it",
                               a.name.text));
+  }
+  for (std::size_t i = 0; i < s.ast.places.size(); ++i) {
+    const ast::Place &p = s.ast.places[i];
+    if (!p.extras) continue;
+    for (const ast::Association &as : p.extras->associations) {
+      auto id = ids.find(as.action.text);
+      std::optional<model::Qualifier> q = model::qualifier_named(as.qualifier.text);
+      if (id == ids.end() || !q) continue;
+      model::Association out;
+      out.place = model::PlaceId(i);
+      out.qualifier = *q;
+      out.duration_ms = as.duration_ms.value_or(0);
+      out.ticks = as.duration_ms ? to_ticks(*as.duration_ms, s.out.period_ms) : 0;
+      out.range = as.range;
+      s.out.actions[id->second].associations.push_back(out);
+    }
   }
 }
 

@@ -310,3 +310,34 @@ TEST_CASE("validate model: plans, rules by outcome, sub-plans, constants in form
   CHECK(move.rules[1].outcome == 1);
   CHECK_FALSE(function_id(m, "none"));
 }
+
+TEST_CASE("validate model: named actions in declaration order, each with its associations", "[validate][iec]") {
+  // docs/language.md §14: the actions table the back ends' action control reads. Action control
+  // is not compiled yet, so each action is still refused; the table is filled all the same.
+  Validated r({{"m.sfc", R"--(sfc Press {
+  period 100ms;
+  out int Count;
+  action Tally { Count += 1; }
+  action Idle { }
+  initial place A { P Tally; N Tally; }
+  place B { L Tally 250ms; R Tally; }
+  A -> B when true;
+}
+)--"}});
+  const model::Chart &c = r.model.charts.front();
+  REQUIRE(c.actions.size() == 2);
+  const model::Action &tally = c.actions[model::ActionId(0)];
+  CHECK(tally.name == "Tally");
+  CHECK(tally.body.size() == 1);
+  REQUIRE(tally.associations.size() == 4);
+  CHECK(tally.associations[0].place == model::PlaceId(0));
+  CHECK(tally.associations[0].qualifier == model::Qualifier::P);
+  CHECK(tally.associations[1].qualifier == model::Qualifier::N);
+  CHECK(tally.associations[2].place == model::PlaceId(1));
+  CHECK(tally.associations[2].qualifier == model::Qualifier::L);
+  CHECK(tally.associations[2].duration_ms == 250);
+  CHECK(tally.associations[2].ticks == 3);  // 250ms at 100ms: rounded up (§5.3)
+  CHECK(tally.associations[3].qualifier == model::Qualifier::R);
+  CHECK(c.actions[model::ActionId(1)].associations.empty());
+  CHECK(r.text().find("[not-supported]") != std::string::npos);
+}
