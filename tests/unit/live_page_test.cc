@@ -40,7 +40,7 @@ DecodedTick at(std::uint32_t tick, std::vector<std::uint32_t> activation, std::s
 
 }  // namespace
 
-TEST_CASE("live recording: ticks become frames; an update holds only what the page lacks", "[live]") {
+TEST_CASE("live recording: ticks become frames, an update holds only what the page lacks", "[live]") {
   LiveRecording rec(three_places());
   CHECK(rec.page_data()["live"]["link"]["state"] == "waiting");
   rec.started(0);
@@ -152,7 +152,7 @@ TEST_CASE("live recording: a team's robot that ended is not waited for and stays
   CHECK(page["robots"][1]["status"] == json::parse(R"([[0,"succeeded"]])"));
 }
 
-TEST_CASE("live server: loopback only unless asked; the page and its updates over HTTP", "[live]") {
+TEST_CASE("live server: loopback only unless asked, the page and its updates over HTTP", "[live]") {
   using gfec::live::is_loopback;
   CHECK(is_loopback("127.0.0.1"));
   CHECK(is_loopback("127.1.2.3"));
