@@ -16,6 +16,7 @@
 #include "log_sink.h"
 #include "options.h"
 #include "pipeline/compilation.h"
+#include "runnable_chart.h"
 #include "trace_decoder.h"
 #include "trace_format.h"
 
@@ -87,26 +88,11 @@ std::string chart_location(const pipeline::Compilation &c, const model::Chart &c
 }
 
 int monitor_with(const MonitorOptions &o, DiagnosticReport &report, std::ostream &out, std::ostream &err) {
-  pipeline::FrontEndOptions f = front_end_options(o.report);
-  f.analyze = false;
-  pipeline::Compilation c(f);
-  c.front_end(o.input);
-  if (c.unreadable()) {
-    report.tool_error(o.input, c.cannot_read_main(o.input), false);
-    return kExitUsageOrIo;
-  }
-  report.add(o.input, c.diag, c.sources);
-  if (c.diag.has_errors()) return kExitInputError;
-  pipeline::SelectionRequest request;
-  request.name = o.chart;
-  request.among = pipeline::kSfc | pipeline::kFsm;
-  request.verb = "monitor";
-  pipeline::Selection target = pipeline::choose(c.model, request);
-  if (!target.chosen()) {
-    report.tool_error(o.input, target.error, true);
-    return kExitUsageOrIo;
-  }
-  const trace::Layout layout = trace::layout_of(c.model, target.chart);
+  const RunnableChart loaded = load_runnable_chart(o.report, o.input, o.chart, "monitor", report);
+  if (loaded.exit_code != kExitOk) return loaded.exit_code;
+  const pipeline::Compilation &c = *loaded.compilation;
+  const model::ChartId chart = loaded.chart;
+  const trace::Layout layout = trace::layout_of(c.model, chart);
 
   std::string why;
   int fd = 0;  // stdin
@@ -121,14 +107,14 @@ int monitor_with(const MonitorOptions &o, DiagnosticReport &report, std::ostream
   if (!o.http.empty()) {
     const std::string source = !o.serial.empty() ? "serial " + o.serial : !o.tcp.empty() ? "tcp " + o.tcp : "stdin";
     try {
-      page = std::make_unique<live::LiveRecording>(live_chart(c.model, target.chart, o.input, source),
+      page = std::make_unique<live::LiveRecording>(live_chart(c.model, chart, o.input, source),
                                                    static_cast<std::size_t>(o.robots));
     } catch (const ToolTimeLimit &e) {
       report.tool_error(o.input, e.what(), false);
       return kExitInputError;
     }
   }
-  monitor::LogSink log(c.model, target.chart, out);
+  monitor::LogSink log(c.model, chart, out);
   std::unique_ptr<live::TeeSink> both;
   if (o.log && page) both = std::make_unique<live::TeeSink>(log, *page);
   monitor::RunSink &sink = both   ? static_cast<monitor::RunSink &>(*both)
@@ -144,7 +130,7 @@ int monitor_with(const MonitorOptions &o, DiagnosticReport &report, std::ostream
     if (fd != 0) ::close(fd);
     decoder.finish();
     if (decoder.refused()) {
-      err << fmt::format("{}: error: {}\n", chart_location(c, c.model.charts.at(target.chart)),
+      err << fmt::format("{}: error: {}\n", chart_location(c, c.model.charts.at(chart)),
                          text::printable(decoder.refusal()));
       return kExitInputError;
     }

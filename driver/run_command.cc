@@ -14,6 +14,7 @@
 #include "output_files.h"
 #include "pipeline/compilation.h"
 #include "recording.h"
+#include "runnable_chart.h"
 #include "viewer_page.h"
 
 #include <CLI/CLI.hpp>
@@ -184,30 +185,11 @@ private:
 };
 
 int run_with(const RunOptions &o, DiagnosticReport &report, std::ostream &out) {
-  pipeline::FrontEndOptions f = front_end_options(o.report);
-  f.analyze = false;  // a run reports what happens, not what the analyses would find
-  pipeline::Compilation c(f);
-  c.front_end(o.input);
-  if (c.unreadable()) {
-    report.tool_error(o.input, c.cannot_read_main(o.input), false);
-    return kExitUsageOrIo;
-  }
-  report.add(o.input, c.diag, c.sources);
-  if (c.diag.has_errors()) return kExitInputError;
+  const RunnableChart loaded = load_runnable_chart(o.report, o.input, o.chart, "run", report);
+  if (loaded.exit_code != kExitOk) return loaded.exit_code;
+  pipeline::Compilation &c = *loaded.compilation;  // the trace's CSV joins its sources
   const model::Model &model = c.model;
-
-  // The sfc or fsm of the main file to run: the one no chart runs (docs/language.md
-  // "Sub-charts"), or the one --chart names.
-  pipeline::SelectionRequest request;
-  request.name = o.chart;
-  request.among = pipeline::kSfc | pipeline::kFsm;
-  request.verb = "run";
-  pipeline::Selection target = pipeline::choose(model, request);
-  if (!target.chosen()) {
-    report.tool_error(o.input, target.error, true);
-    return kExitUsageOrIo;
-  }
-  const model::ChartId chart = target.chart;
+  const model::ChartId chart = loaded.chart;
   // A team machine runs as a team (docs/cli.md): every agent by default, or --agents of them.
   const int team = model.charts[chart].team;
   int agents = 1;

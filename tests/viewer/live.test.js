@@ -14,7 +14,7 @@ const { execFileSync, spawn } = require('node:child_process');
 const fs = require('node:fs');
 const os = require('node:os');
 const path = require('node:path');
-const puppeteer = require('puppeteer-core');
+const { launchChromium } = require('./chromium.js');
 const { liveStream } = require('./live_stream.js');
 
 const out = process.env.VIEWER_OUT;
@@ -25,14 +25,7 @@ let profile;
 
 before(async () => {
   profile = fs.mkdtempSync(path.join(os.tmpdir(), 'gfec-live-chromium-'));
-  browser = await puppeteer.launch({
-    executablePath: process.env.CHROMIUM,
-    headless: true,
-    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-           '--disable-background-networking', '--disable-component-update', '--disable-sync',
-           `--user-data-dir=${profile}`],
-    defaultViewport: { width: 1400, height: 900 },
-  });
+  browser = await launchChromium(profile);
 });
 
 after(async () => {

@@ -18,7 +18,7 @@ const fs = require('node:fs');
 const os = require('node:os');
 const path = require('node:path');
 const { pathToFileURL } = require('node:url');
-const puppeteer = require('puppeteer-core');
+const { launchChromium } = require('./chromium.js');
 
 const src = process.env.GFEC_SOURCE_DIR;
 const out = process.env.VIEWER_OUT;
@@ -171,14 +171,7 @@ before(async () => {
   fs.writeFileSync(pageFile, html);
   fs.copyFileSync(path.join(src, 'samples', 'cleanbot.iface'), path.join(work, 'cleanbot.iface'));
   server = await startServer();
-  browser = await puppeteer.launch({
-    executablePath: process.env.CHROMIUM,
-    headless: true,
-    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-           '--disable-background-networking', '--disable-component-update', '--disable-sync',
-           `--user-data-dir=${profile}`],
-    defaultViewport: { width: 900, height: 700 },
-  });
+  browser = await launchChromium(profile, { width: 900, height: 700 });
 });
 
 after(async () => {

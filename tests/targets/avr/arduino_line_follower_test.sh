@@ -77,9 +77,6 @@ awk -F, -v per=$cycles_per_tick 'NR > 1 { k = NR - 1; at = (k - 1) * per - per /
 
 # Run until the middle of the last tick: the sketch never halts, so avr-run ends it (exit 3).
 status=0
-# Under the sanitizer pass (tests/sanitize.sh) LeakSanitizer would turn exit 3 into 1 for what
-# libsimavr itself keeps at a timeout (its core and IRQ tables): not avr-run's, not gfec's.
-ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0 \
 "$avr_run" --mcu atmega328p --max-cycles $(((ticks - 1) * cycles_per_tick + cycles_per_tick / 2)) \
   --pins "$work/pins.script" --pin-log "$work/pins.log" "$elf" > "$work/uart.out" 2> "$work/avr-run.err" || status=$?
 [ "$status" -eq 3 ] || fail "avr-run exited $status, expected 3 (the run's end): $(cat "$work/avr-run.err")"
