@@ -93,6 +93,8 @@ void check_named_actions(Context &cx, ChartScope &s) {
       out.duration_ms = as.duration_ms.value_or(0);
       out.ticks = as.duration_ms ? to_ticks(*as.duration_ms, s.out.period_ms) : 0;
       out.range = as.range;
+      // L and D read the place's timer, as elapsed() does.
+      if (*q == model::Qualifier::L || *q == model::Qualifier::D) s.out.places[out.place].timed = true;
       s.out.actions[id->second].associations.push_back(out);
     }
   }
