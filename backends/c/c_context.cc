@@ -170,7 +170,8 @@ void name_fields(EngineContext &c) {
       c.action_q.push_back(q ? fields.take("q_" + a.name.str()) : "");
       c.action_stored.push_back(stored ? fields.take("stored_" + a.name.str()) : "");
     }
-    for (model::PlaceId p : places.ids()) c.was_active.push_back(edged[p] ? fields.take("was_" + places[p].name.str()) : "");
+    for (model::PlaceId p : places.ids())
+      c.was_active.push_back(edged[p] ? fields.take("was_" + places[p].name.str()) : "");
   }
   if (c.has_context()) c.ctx_field = fields.take("ctx");
   if (c.traced()) {

@@ -91,9 +91,11 @@ void state_struct(CodeWriter &w, const EngineContext &c) {
   for (model::ActionId a : c.action_q.ids()) {
     const std::string &name = c.chart.actions[a].name.str();
     if (!c.action_stored[a].empty())
-      rows.emplace_back(fmt::format("bool {};", c.action_stored[a]), fmt::format("action {} set (S), until reset (R)", name));
+      rows.emplace_back(fmt::format("bool {};", c.action_stored[a]),
+                        fmt::format("action {} set (S), until reset (R)", name));
     if (!c.action_q[a].empty())
-      rows.emplace_back(fmt::format("bool {};", c.action_q[a]), fmt::format("action {} was active (Q) in the last tick", name));
+      rows.emplace_back(fmt::format("bool {};", c.action_q[a]),
+                        fmt::format("action {} was active (Q) in the last tick", name));
   }
   for (model::PlaceId p : c.was_active.ids())
     if (!c.was_active[p].empty())

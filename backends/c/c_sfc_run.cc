@@ -36,8 +36,10 @@ private:
     return false;
   }
 
-  bool uses_self() const { return !c_.chart.transitions.empty() || c_.needs_started || c_.has_timers || any_actions() ||
-                                      c_.has_named_actions(); }
+  bool uses_self() const {
+    return !c_.chart.transitions.empty() || c_.needs_started || c_.has_timers || any_actions() ||
+           c_.has_named_actions();
+  }
 
   /// The start of the tick is kept: for exits and entries, for conditions that read activation
   /// (docs/language.md, "Sub-charts"), or in a hooks build for the hooks.

@@ -256,9 +256,8 @@ TEST_CASE("c harness: action control runs in both engine forms as in the interpr
     for (EngineForm form : {EngineForm::Readable, EngineForm::Scalable}) {
       auto c = compile_actions(chart, form);
       for (bool hooks : {false, true}) {
-        const std::string name =
-            fmt::format("harness_actions{}_{}{}", k, form == EngineForm::Readable ? "readable" : "scalable",
-                        hooks ? "_hooks" : "");
+        const std::string name = fmt::format(
+            "harness_actions{}_{}{}", k, form == EngineForm::Readable ? "readable" : "scalable", hooks ? "_hooks" : "");
         const std::string defines = hooks ? fmt::format("-D{}_HOOKS", c->the_chart().name) : "";
         const std::string log = run_table_harness(name, *c, 40, 1, c_backend::HarnessOutput::Stdio, defines);
         CHECK(log == reference(*c, 40, 1, hooks));
