@@ -86,10 +86,19 @@ void RunWriter::named_actions() {
   using model::Qualifier;
   if (!c_.has_named_actions()) return;
   section("/* Named actions under their action control, in declaration order */");
+  // Each term is bracketed; one alone is the whole test and needs no brackets.
   auto any = [](const std::vector<std::string> &terms) {
+    if (terms.size() == 1 && terms[0].front() == '(' && terms[0].back() == ')')
+      return terms[0].substr(1, terms[0].size() - 2);
     std::string s;
     for (const std::string &t : terms) s += (s.empty() ? "" : " || ") + t;
     return s;
+  };
+  // The sequential form's place number is an unsigned field: the constant is made one too, as
+  // MISRA C:2012 rule 10.4 asks (the form's own test compares it with the enumeration constant).
+  auto active = [this](model::PlaceId p) {
+    if (c_.fsm || c_.layout.form != Layout::Form::Sequential) return c_.active_test("", p);
+    return fmt::format("{} == ({}){}", c_.field(c_.current), uint_type(c_.layout.index_bits), c_.place_const[p]);
   };
   for (model::ActionId a : c_.chart.actions.ids()) {
     const model::Action &action = c_.chart.actions[a];
@@ -97,7 +106,7 @@ void RunWriter::named_actions() {
     std::vector<std::string> q, edge, set, reset;
     std::string held;
     for (const model::Association &as : action.associations) {
-      const std::string x = "(" + c_.active_test("", as.place) + ")";
+      const std::string x = "(" + active(as.place) + ")";
       const std::string was = c_.was_active[as.place].empty() ? "" : c_.field(c_.was_active[as.place]);
       const std::string ticks = std::to_string(as.ticks) + "u";
       held += fmt::format("{}{} in {}", held.empty() ? "" : ", ", model::qualifier_name(as.qualifier),
@@ -146,7 +155,7 @@ void RunWriter::named_actions() {
     if (!last_q.empty()) w_.line("{} = {};", c_.field(last_q), c_.q);
   }
   for (model::PlaceId p : c_.was_active.ids())
-    if (!c_.was_active[p].empty()) w_.line("{} = {};", c_.field(c_.was_active[p]), c_.active_test("", p));
+    if (!c_.was_active[p].empty()) w_.line("{} = {};", c_.field(c_.was_active[p]), active(p));
 }
 
 void RunWriter::hooks_section(const std::string &comment) {

@@ -194,27 +194,11 @@ TEST_CASE("c harness: a chart's inputs and outputs, set and read around each tic
 
 namespace {
 
-/// A chart with named actions, its engine emitted in `form`. While the validator still refuses
-/// named actions (docs/iec.md "Status": --emit=chart and --emit=json do not write them yet), its
-/// only errors are those refusals and its model is complete: the engine is emitted from it as
-/// compile_chart() would.
+/// A chart with named actions, its engine emitted in `form`.
 std::unique_ptr<Compiled> compile_actions(const std::string &text, EngineForm form) {
-  MemoryFileSystem mem;
-  mem.add("acts.sfc", text);
-  auto c = std::make_unique<Compiled>("acts.sfc", mem);
-  INFO(c->text());
-  for (const auto &d : c->diag.all())
-    if (d.severity == Severity::Error) REQUIRE(d.check() == "not-supported");
-  REQUIRE(c->model.charts.size() == 1);
-  EmitOptions o;
-  o.output_path = "engine.c";
-  o.source_name = "acts.sfc";
-  o.line_directives = false;
-  o.engine = form;
-  o.backend = c_engine_options("", false);
-  o.chart = model::ChartId(0);
-  c->chart = o.chart;
-  c->files = emit_to_memory(*make_c_backend(), c->model, o);
+  auto c = compile_chart({{"acts.sfc", text}}, "acts.sfc", "engine.c", false, form);
+  INFO(c->errors);
+  REQUIRE(!c->diag.has_errors());
   return c;
 }
 
