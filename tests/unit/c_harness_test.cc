@@ -227,6 +227,14 @@ const char *const kActionCharts[] = {
     "  place Drain { S Lamp; N Run; }\n"
     "  Idle -> Fill when Go;\n  Fill -> Hold when Level > 20;\n  Hold -> Drain when !Go;\n"
     "  Drain -> Idle when elapsed(Drain) >= 30ms;\n}\n",
+    // Sub-charts: an instance's action control is its own, and starts clear when its place gains
+    // activation again; the actions report through calls.
+    "interface Io { void Hit(int i); bool Go(int i); }\n"
+    "sfc Inner {\n  action Beat { Hit(1); }\n  action Once { Hit(2); }\n"
+    "  initial place I { N Beat; P1 Once; }\n  place J { P Once; S Beat; }\n"
+    "  I -> J when Go(1);\n  J -> I when Go(2);\n}\n"
+    "sfc Outer {\n  action Mark { Hit(3); }\n  initial place A runs Inner { S Mark; }\n"
+    "  place B runs Inner { R Mark; P0 Mark; }\n  A -> B when Go(3);\n  B -> A when Go(4);\n}\n",
 };
 
 }  // namespace
