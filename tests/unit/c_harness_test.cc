@@ -227,6 +227,12 @@ const char *const kActionCharts[] = {
     "  place Drain { S Lamp; N Run; }\n"
     "  Idle -> Fill when Go;\n  Fill -> Hold when Level > 20;\n  Hold -> Drain when !Go;\n"
     "  Drain -> Idle when elapsed(Drain) >= 30ms;\n}\n",
+    // The sparse form with timers: L and D on places of a fork and its join.
+    "sfc Fork {\n  period 10ms;\n  var int k = 0;\n  out int a = 0;\n  out int b = 0;\n"
+    "  action Lim { a += 1; }\n  action Del { b += 1; }\n"
+    "  initial place Clock { k += 1; }\n  initial place S { L Lim 30ms; }\n"
+    "  place X { D Del 20ms; L Lim 10ms; }\n  place Y { D Del 0ms; }\n"
+    "  S -> (X, Y) when k % 7 == 2;\n  (X, Y) -> S when k % 7 == 0;\n}\n",
     // Sub-charts: an instance's action control is its own, and starts clear when its place gains
     // activation again; the actions report through calls.
     "interface Io { void Hit(int i); bool Go(int i); }\n"
