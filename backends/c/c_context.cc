@@ -154,6 +154,25 @@ void name_fields(EngineContext &c) {
   const auto &places = c.chart.places;
   if (std::any_of(places.begin(), places.end(), [](const model::Place &p) { return p.timed; }))
     for (const auto &p : places) c.timer_field.push_back(p.timed ? fields.take("timer_" + p.name) : "");
+  if (c.has_named_actions()) {
+    // The previous Q of every action a Q can hold (not one held by P1, P0 and R only), the stored
+    // flag of every one that S sets, the previous state of every place an edge is taken of.
+    IdMap<model::PlaceId, bool> edged(places.size(), false);
+    for (const model::Action &a : c.chart.actions) {
+      bool q = false, stored = false;
+      for (const model::Association &as : a.associations) {
+        const model::Qualifier k = as.qualifier;
+        stored = stored || k == model::Qualifier::S;
+        q = q || k == model::Qualifier::N || k == model::Qualifier::S || k == model::Qualifier::P ||
+            k == model::Qualifier::L || k == model::Qualifier::D;
+        if (k == model::Qualifier::P || k == model::Qualifier::P1 || k == model::Qualifier::P0) edged[as.place] = true;
+      }
+      c.action_q.push_back(q ? fields.take("q_" + a.name.str()) : "");
+      c.action_stored.push_back(stored ? fields.take("stored_" + a.name.str()) : "");
+    }
+    for (model::PlaceId p : places.ids())
+      c.was_active.push_back(edged[p] ? fields.take("was_" + places[p].name.str()) : "");
+  }
   if (c.has_context()) c.ctx_field = fields.take("ctx");
   if (c.traced()) {
     c.trace_tick = fields.take("trace_tick");
@@ -176,6 +195,7 @@ void name_locals(EngineContext &c, const NameSpace &globals) {
   c.from = locals.take("from");
   c.to = locals.take("to");
   c.index = locals.take("p");
+  c.q = locals.take("q");
   if (c.has_context()) c.ctx_param = locals.take("ctx");
   if (c.engine_options.names) c.names = locals.take("names");
   const std::pair<const char *, std::string *> scalable[] = {

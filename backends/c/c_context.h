@@ -109,6 +109,12 @@ struct EngineContext {
   std::string current;     ///< sequential form: the number of the one active place
   std::string active;      ///< sparse form: the active places as bits with summary levels
   std::string candidates;  ///< sparse form, not place-driven: the transitions to try this tick
+  // Action control (docs/iec.md "Action control"): the state each back end keeps for itself.
+  // Tables only when the chart has named actions; "" for an action (place) that needs no field.
+  IdMap<model::ActionId, std::string> action_q;       ///< the action's Q of the previous tick (its final run)
+  IdMap<model::ActionId, std::string> action_stored;  ///< set by S, cleared by R
+  /// Places holding an action with P, P1 or P0: active at the previous tick's action control.
+  IdMap<model::PlaceId, std::string> was_active;
   // A team machine's (docs/c-engine.md "Team machines"); empty for a machine that is no team.
   std::string agent;         ///< this engine's agent number
   std::string reports;       ///< by agent, the state it last reported (-1: none)
@@ -156,6 +162,7 @@ struct EngineContext {
   std::string from;    ///< fsm: the state at the start of the tick
   std::string to;      ///< fsm: the state entered, while the old one's exit blocks run
   std::string index;   ///< a loop index
+  std::string q;       ///< a named action's Q in this tick
   std::string names;   ///< --names: the table in X_place_name and X_transition_name
   // Locals of the scalable form's run function.
   std::string add_n, lost, lost_n, gained, gained_n, word, bits, i, t;
@@ -227,6 +234,12 @@ struct EngineContext {
   bool has_post = false;                  ///< some terminal state has a postcondition
   bool has_terminal = false;              ///< some state is terminal
   bool needs_started = false;             ///< an initial place has a non-empty entry block
+  /// Some named action has an association: the run function ends with their action control.
+  bool has_named_actions() const {
+    for (const auto &a : chart.actions)
+      if (!a.associations.empty()) return true;
+    return false;
+  }
   bool team() const { return chart.team > 0; }
   /// The type of a report: the narrowest signed type that holds every state and -1.
   const char *report_type() const;

@@ -88,6 +88,19 @@ void state_struct(CodeWriter &w, const EngineContext &c) {
       rows.emplace_back(fmt::format("uint32_t {};", c.timer_field[p]),
                         fmt::format("ticks {} has been active: elapsed({})", c.place(p).name, c.place(p).name));
   if (c.needs_started) rows.emplace_back(fmt::format("bool {};", c.started), "the first tick has run");
+  for (model::ActionId a : c.action_q.ids()) {
+    const std::string &name = c.chart.actions[a].name.str();
+    if (!c.action_stored[a].empty())
+      rows.emplace_back(fmt::format("bool {};", c.action_stored[a]),
+                        fmt::format("action {} set (S), until reset (R)", name));
+    if (!c.action_q[a].empty())
+      rows.emplace_back(fmt::format("bool {};", c.action_q[a]),
+                        fmt::format("action {} was active (Q) in the last tick", name));
+  }
+  for (model::PlaceId p : c.was_active.ids())
+    if (!c.was_active[p].empty())
+      rows.emplace_back(fmt::format("bool {};", c.was_active[p]),
+                        fmt::format("{} was active at the last tick's action control", c.place(p).name));
   if (c.team()) {
     rows.emplace_back(fmt::format("int32_t {};", c.agent),
                       fmt::format("this engine's agent number (set by {})", c.set_agent_fn));

@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include <optional>
+
 namespace gfec::c_backend {
 
 void RunWriter::head() {
@@ -78,6 +80,82 @@ void RunWriter::action_blocks(const std::string &comment, const std::function<st
       w_.line("if ({}) {{", active(p));
       block(c_.place(p).action, {}, c_.tick_call(p));
     }
+}
+
+void RunWriter::named_actions() {
+  using model::Qualifier;
+  if (!c_.has_named_actions()) return;
+  section("/* Named actions under their action control, in declaration order */");
+  // Each term is bracketed; one alone is the whole test and needs no brackets.
+  auto any = [](const std::vector<std::string> &terms) {
+    if (terms.size() == 1 && terms[0].front() == '(' && terms[0].back() == ')')
+      return terms[0].substr(1, terms[0].size() - 2);
+    std::string s;
+    for (const std::string &t : terms) s += (s.empty() ? "" : " || ") + t;
+    return s;
+  };
+  // The sequential form's place number is an unsigned field: the constant is made one too, as
+  // MISRA C:2012 rule 10.4 asks (the form's own test compares it with the enumeration constant).
+  auto active = [this](model::PlaceId p) {
+    if (c_.fsm || c_.layout.form != Layout::Form::Sequential) return c_.active_test("", p);
+    return fmt::format("{} == ({}){}", c_.field(c_.current), uint_type(c_.layout.index_bits), c_.place_const[p]);
+  };
+  for (model::ActionId a : c_.chart.actions.ids()) {
+    const model::Action &action = c_.chart.actions[a];
+    if (action.associations.empty()) continue;  // held by no place: never runs
+    std::vector<std::string> q, edge, set, reset;
+    std::string held;
+    for (const model::Association &as : action.associations) {
+      const std::string x = "(" + active(as.place) + ")";
+      const std::string was = c_.was_active[as.place].empty() ? "" : c_.field(c_.was_active[as.place]);
+      const std::string ticks = std::to_string(as.ticks) + "u";
+      held += fmt::format("{}{} in {}", held.empty() ? "" : ", ", model::qualifier_name(as.qualifier),
+                          c_.place(as.place).name);
+      switch (as.qualifier) {
+      case Qualifier::N: q.push_back(x); break;
+      case Qualifier::P: q.push_back(fmt::format("({} && !{})", x, was)); break;
+      // `L 0` is never active (and `timer < 0u` would be a constant); `D 0` is active as N.
+      case Qualifier::L:
+        if (as.ticks > 0) q.push_back(fmt::format("({} && ({} < {}))", x, c_.timer_of(as.place), ticks));
+        break;
+      case Qualifier::D:
+        q.push_back(as.ticks > 0 ? fmt::format("({} && ({} >= {}))", x, c_.timer_of(as.place), ticks) : x);
+        break;
+      case Qualifier::S: set.push_back(x); break;
+      case Qualifier::R: reset.push_back(x); break;
+      case Qualifier::P1: edge.push_back(fmt::format("({} && !{})", x, was)); break;
+      case Qualifier::P0: edge.push_back(fmt::format("(!{} && {})", x, was)); break;
+      // Refused by the validator until their timers are compiled (docs/iec.md "Status").
+      case Qualifier::SD:
+      case Qualifier::DS:
+      case Qualifier::SL: break;
+      }
+    }
+    w_.line("/* {}: {} */", action.name, held);
+    const std::string &stored = c_.action_stored[a], &last_q = c_.action_q[a];
+    // Reset dominates: this tick's sets first, then the reset.
+    if (!stored.empty() && !set.empty()) w_.line("if ({}) {{ {} = true; }}", any(set), c_.field(stored));
+    if (!stored.empty() && !reset.empty()) w_.line("if ({}) {{ {} = false; }}", any(reset), c_.field(stored));
+    if (!stored.empty()) q.push_back(c_.field(stored));
+    // Q true, its final run as Q falls, or an edge of P1 / P0: one run at most.
+    std::vector<std::string> runs;
+    std::optional<CodeWriter::Scope> scope;
+    if (!last_q.empty()) {
+      w_.line("{");
+      scope.emplace(w_, "}");
+      w_.line("const bool {} = {};", c_.q, q.empty() ? "false" : any(q));
+      runs = {c_.q, c_.field(last_q)};
+    }
+    runs.insert(runs.end(), edge.begin(), edge.end());
+    if (runs.empty()) continue;  // only R: nothing to run
+    w_.line_from(c_.model.sources(), action.name_range);
+    w_.line("if ({}) {{", any(runs));
+    w_.line_back();
+    block(action.body);
+    if (!last_q.empty()) w_.line("{} = {};", c_.field(last_q), c_.q);
+  }
+  for (model::PlaceId p : c_.was_active.ids())
+    if (!c_.was_active[p].empty()) w_.line("{} = {};", c_.field(c_.was_active[p]), active(p));
 }
 
 void RunWriter::hooks_section(const std::string &comment) {

@@ -47,6 +47,11 @@ protected:
   /// `comment` heads the section, if any place acts.
   void action_blocks(const std::string &comment, const std::function<std::string(model::PlaceId)> &active);
 
+  /// Step 5: the named actions under their action control (docs/iec.md "Action control"), in
+  /// action declaration order, from the places' states at the end of the tick; then each place an
+  /// edge is taken of remembers its state for the next tick. Nothing without named actions.
+  void named_actions();
+
   /// A section compiled only in a hooks build: `#ifdef X_HOOKS`, then `comment`; the caller
   /// writes the `#endif`.
   void hooks_section(const std::string &comment);

@@ -26,6 +26,7 @@ public:
     exits_and_entries();
     hooks();
     actions();
+    named_actions();
   }
 
 private:
@@ -35,7 +36,10 @@ private:
     return false;
   }
 
-  bool uses_self() const { return !c_.chart.transitions.empty() || c_.needs_started || c_.has_timers || any_actions(); }
+  bool uses_self() const {
+    return !c_.chart.transitions.empty() || c_.needs_started || c_.has_timers || any_actions() ||
+           c_.has_named_actions();
+  }
 
   /// The start of the tick is kept: for exits and entries, for conditions that read activation
   /// (docs/language.md, "Sub-charts"), or in a hooks build for the hooks.

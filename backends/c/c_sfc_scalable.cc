@@ -42,6 +42,7 @@ public:
     exits_and_entries();
     hooks();
     actions();
+    named_actions();
   }
 
 private:
@@ -51,7 +52,7 @@ private:
 
   void declarations() {
     if (c_.chart.transitions.empty()) {
-      if (!any_actions() && !c_.needs_started && !c_.has_timers) {
+      if (!any_actions() && !c_.needs_started && !c_.has_timers && !c_.has_named_actions()) {
         section("");
         w_.line("(void){}; /* the chart has neither transitions nor actions */", c_.self);
       }
@@ -145,6 +146,7 @@ public:
     exits_and_entries();
     hooks();
     actions();
+    named_actions();
   }
 
 private:
@@ -218,7 +220,7 @@ private:
       }
       if (!keep) directive(w_, "#endif");
     }
-    if (!has_transitions() && !any_actions() && !c_.needs_started && !c_.has_timers)
+    if (!has_transitions() && !any_actions() && !c_.needs_started && !c_.has_timers && !c_.has_named_actions())
       w_.line("(void){}; /* the chart has neither transitions nor actions */", c_.self);
   }
 

@@ -89,6 +89,14 @@ void init(CodeWriter &w, const EngineContext &c) {
   for (model::PlaceId p : c.chart.places.ids())
     if (c.place(p).timed) w.line("{} = 0;", c.timer_of(p));
   if (c.needs_started) w.line("{} = false;", c.field(c.started));
+  // Action control starts clear: no action stored or active, no place active before tick 1 (so
+  // that an initial place rises in tick 1).
+  for (model::ActionId a : c.action_q.ids()) {
+    if (!c.action_stored[a].empty()) w.line("{} = false;", c.field(c.action_stored[a]));
+    if (!c.action_q[a].empty()) w.line("{} = false;", c.field(c.action_q[a]));
+  }
+  for (model::PlaceId p : c.was_active.ids())
+    if (!c.was_active[p].empty()) w.line("{} = false;", c.field(c.was_active[p]));
   if (c.traced()) trace_init(w, c);
   if (c.team()) {
     w.line("{} = 0;", c.field(c.agent));

@@ -67,18 +67,35 @@ void block(CodeWriter &w, const model::Model &m, model::ChartId chart, const cha
   chart_text::statements(w, m, chart, stmts);
 }
 
-void place(CodeWriter &w, const model::Model &m, model::ChartId chart, const model::Place &p, bool fsm) {
+/// The associations place `p` holds: `N Fill;`, `L Pump 2000ms;`. Grouped by action in
+/// declaration order, each action's in the order written: what its action control reads.
+std::vector<std::string> associations(const model::Chart &c, model::PlaceId p) {
+  std::vector<std::string> out;
+  for (const model::Action &a : c.actions)
+    for (const model::Association &as : a.associations) {
+      if (as.place != p) continue;
+      std::string line = fmt::format("{} {}", model::qualifier_name(as.qualifier), a.name);
+      if (model::is_timed(as.qualifier)) line += fmt::format(" {}ms", as.duration_ms);
+      out.push_back(line + ";");
+    }
+  return out;
+}
+
+void place(CodeWriter &w, const model::Model &m, model::ChartId chart, model::PlaceId id, bool fsm) {
+  const model::Place &p = m.charts[chart].places[id];
+  const std::vector<std::string> held = associations(m.charts[chart], id);
   std::string head = p.initial ? "initial " : "";
   if (p.terminal == model::Terminal::Success) head += "success ";
   if (p.terminal == model::Terminal::Failure) head += "failure ";
   head += fmt::format("{} {}", fsm ? "state" : "place", p.name);
   if (p.runs) head += " runs " + m.charts[p.runs].name;
   if (p.post) head += " post " + chart_text::expr(m, chart, *p.post);
-  if (p.action.empty() && !p.entry && !p.exit) {
+  if (p.action.empty() && !p.entry && !p.exit && held.empty()) {
     w.line("{};", head);
     return;
   }
   auto body = w.block(fmt::format("{} {{", head));
+  for (const std::string &line : held) w.line("{}", line);
   chart_text::statements(w, m, chart, p.action);
   if (p.entry) block(w, m, chart, "entry", *p.entry);
   if (p.exit) block(w, m, chart, "exit", *p.exit);
@@ -105,7 +122,11 @@ void chart(CodeWriter &w, const model::Model &m, model::ChartId index) {
           : v.role == model::VarRole::Out ? "out"
                                           : "var",
           v.type, v.name, v.init ? &*v.init : nullptr);
-  for (const auto &p : c.places) place(w, m, index, p, fsm);
+  for (const auto &a : c.actions) {
+    auto action = w.block(fmt::format("action {} {{", a.name));
+    chart_text::statements(w, m, index, a.body);
+  }
+  for (model::PlaceId p : c.places.ids()) place(w, m, index, p, fsm);
   for (const auto &t : c.transitions) {
     std::string line = fsm ? "" : "transition ";
     if (t.named) line += t.name + ": ";

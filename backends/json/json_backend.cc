@@ -125,6 +125,28 @@ void chart_fields(const model::Model &m, const model::Chart &c, Json &doc) {
   }
   doc["consts"] = std::move(consts);
 
+  // Only a chart with named actions has the field (docs/model-json.md), so that the documents of
+  // the others stay as they were.
+  if (!c.actions.empty()) {
+    Json actions = Json::array();
+    for (const model::Action &a : c.actions) {
+      Json held = Json::array();
+      for (const model::Association &as : a.associations) {
+        const bool timed = model::is_timed(as.qualifier);
+        held.push_back({{"place", c.places.at(as.place).name},
+                        {"qualifier", model::qualifier_name(as.qualifier)},
+                        {"duration_ms", timed ? Json(as.duration_ms) : Json(nullptr)},
+                        {"ticks", timed ? Json(as.ticks) : Json(nullptr)},
+                        {"location", location(m, as.range)}});
+      }
+      actions.push_back({{"name", a.name},
+                         {"body", statements(m, scope, a.body)},
+                         {"associations", std::move(held)},
+                         {"location", location(m, a.range)}});
+    }
+    doc["actions"] = std::move(actions);
+  }
+
   Json functions = Json::array();
   for (model::FunctionId f : c.functions) functions.push_back(function(m.functions.at(f)));
   doc["functions"] = std::move(functions);

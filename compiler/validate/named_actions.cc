@@ -1,7 +1,7 @@
 // Named actions and the associations that hold them (docs/language.md §14, docs/iec.md "Action
 // control"): every name resolved, every qualifier with or without its duration as it must be,
-// every body checked. Action control is not compiled yet, so a chart that declares a named action
-// is refused at it, with a located error that says so, rather than run without it.
+// every body checked. The qualifiers whose timers are not compiled yet (SD, DS, SL) are refused at
+// the association, with a located error that says so, rather than run without them.
 #include "did_you_mean.h"
 #include "validate/expr.h"
 #include "validate/families.h"
@@ -59,6 +59,14 @@ void check_named_actions(Context &cx, ChartScope &s) {
       if (s.is_fsm())
         cx.diag.error(as.range, ErrorKind::NotSupported,
                       "an fsm state holds no named actions; they are an sfc's (IEC 61131-3 steps)");
+      // Their per-association timers are not compiled yet: refused in every tool alike, never run
+      // without them (docs/iec.md "Status").
+      std::optional<model::Qualifier> q = model::qualifier_named(as.qualifier.text);
+      if (q && (*q == model::Qualifier::SD || *q == model::Qualifier::DS || *q == model::Qualifier::SL))
+        cx.diag.error(as.qualifier.range, ErrorKind::NotSupported,
+                      fmt::format("qualifier '{}' is not compiled yet (docs/iec.md, \"Status\"); N, R, S, L, D, P, "
+                                  "P0 and P1 are",
+                                  as.qualifier.text));
     }
   }
   // The model's actions table: each action once (a duplicate is an error above), with every
@@ -75,10 +83,6 @@ void check_named_actions(Context &cx, ChartScope &s) {
       out.name_range = a.name.range;
       s.out.actions.push_back(std::move(out));
     }
-    cx.diag.error(a.name.range, ErrorKind::NotSupported,
-                  fmt::format("action '{}': named actions are checked but not compiled yet (docs/iec.md, "
-                              "\"Status\"); write its statements in the places that hold it",
-                              a.name.text));
   }
   for (std::size_t i = 0; i < s.ast.places.size(); ++i) {
     const ast::Place &p = s.ast.places[i];
@@ -93,6 +97,8 @@ void check_named_actions(Context &cx, ChartScope &s) {
       out.duration_ms = as.duration_ms.value_or(0);
       out.ticks = as.duration_ms ? to_ticks(*as.duration_ms, s.out.period_ms) : 0;
       out.range = as.range;
+      // L and D read the place's timer, as elapsed() does.
+      if (*q == model::Qualifier::L || *q == model::Qualifier::D) s.out.places[out.place].timed = true;
       s.out.actions[id->second].associations.push_back(out);
     }
   }

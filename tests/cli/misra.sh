@@ -58,6 +58,9 @@ for chart in "$source_dir"/samples/*.fsm; do jobs+=("$chart|readable" "$chart|sc
 jobs+=("$source_dir/tests/golden/c/door_scalable.sfc|scalable" "$ring|scalable" "$chain|scalable")
 # A chart with inputs and outputs (docs/language.md §14): the caller's fields.
 jobs+=("$source_dir/tests/iec/mixer.sfc|readable" "$source_dir/tests/iec/mixer.sfc|scalable")
+# Named actions under action control (docs/iec.md "Action control"): a sequential chart, so its
+# scalable form is the switch on the one active place.
+jobs+=("$source_dir/tests/iec/actions.sfc|readable" "$source_dir/tests/iec/actions.sfc|scalable")
 # --trace (docs/live.md): the frame writer in both forms, with sub-chart instances and a team.
 jobs+=("$source_dir/samples/line_follower.sfc|scalable+trace" "$source_dir/samples/mission.fsm|readable+calls"
   "$source_dir/samples/fetch_team.fsm|scalable+trace")

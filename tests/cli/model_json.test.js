@@ -191,3 +191,19 @@ test('json: inputs and outputs carry their role, a chart\'s own var none (docs/l
   assert.equal(own.vars.length, 1);
   assert.equal('role' in own.vars[0], false);
 });
+
+test('json: named actions with their associations, only in a chart that has them (docs/language.md §14)', () => {
+  const doc = emit(path.join(SOURCE_DIR, 'tests', 'iec', 'actions.sfc'));
+  assert.deepEqual(doc.actions.map((a) => a.name), ['Run', 'Kick', 'Edge', 'Lamp', 'Brief', 'Late', 'Never']);
+  const brief = doc.actions[4];
+  assert.equal(brief.body.length, 1);
+  assert.deepEqual(brief.associations.map((a) => [a.place, a.qualifier, a.duration_ms, a.ticks]), [
+    ['Fill', 'L', 30, 3], ['Hold', 'L', 0, 0],
+  ]);
+  assert.deepEqual(doc.actions[0].associations.map((a) => [a.place, a.qualifier, a.duration_ms, a.ticks]), [
+    ['Idle', 'N', null, null], ['Fill', 'N', null, null], ['Drain', 'N', null, null],
+  ]);
+  // L and D read the place's timer: Fill and Hold are timed, Idle is not; Drain by elapsed().
+  assert.deepEqual(doc.places.map((p) => p.timed), [false, true, true, true]);
+  assert.equal('actions' in emit(path.join(SOURCE_DIR, 'tests', 'iec', 'mixer.sfc')), false);
+});

@@ -192,6 +192,78 @@ TEST_CASE("c harness: a chart's inputs and outputs, set and read around each tic
   }
 }
 
+namespace {
+
+/// A chart with named actions, its engine emitted in `form`.
+std::unique_ptr<Compiled> compile_actions(const std::string &text, EngineForm form) {
+  auto c = compile_chart({{"acts.sfc", text}}, "acts.sfc", "engine.c", false, form);
+  INFO(c->errors);
+  REQUIRE(!c->diag.has_errors());
+  return c;
+}
+
+// The interpreter's hand-checked charts (tests/unit/interpreter_sfc_test.cc) and a cycle driven
+// by inputs that holds every qualifier the engine runs, with durations of 0.
+const char *const kActionCharts[] = {
+    "sfc Acts {\n  var int k = 0;\n  out int hold = 0;\n  out int pulse = 0;\n  out int edge = 0;\n"
+    "  action Hold { hold += 1; }\n  action Pulse { pulse += 1; }\n  action Edge { edge += 1; }\n"
+    "  initial place Clock { k += 1; }\n  initial place A { P Pulse; P1 Edge; N Hold; }\n"
+    "  place B { N Hold; P0 Edge; }\n  place C { N Hold; }\n  place E;\n  place F;\n"
+    "  A -> (B, C) when k >= 1;\n  B -> E when k >= 2;\n  C -> F when k >= 3;\n}\n",
+    "sfc Store {\n  var int k = 0;\n  out int lamp = 0;\n  action Lamp { lamp += 1; }\n"
+    "  initial place Clock { k += 1; }\n  initial place A { S Lamp; }\n  place B;\n"
+    "  place C { S Lamp; R Lamp; }\n  place D;\n"
+    "  A -> B when k >= 1;\n  B -> C when k >= 2;\n  C -> D when k >= 3;\n}\n",
+    "sfc Timed {\n  period 10ms;\n  out int brief = 0;\n  out int late = 0;\n"
+    "  action Short { brief += 1; }\n  action Late { late += 1; }\n"
+    "  initial place A { L Short 20ms; D Late 20ms; }\n}\n",
+    "sfc Cycle {\n  period 10ms;\n  in bool Go;\n  in int Level;\n"
+    "  out int n = 0;\n  out int p = 0;\n  out int e = 0;\n  out int s = 0;\n  out int l = 0;\n  out int d = 0;\n"
+    "  action Run { n += 1; }\n  action Kick { p += 1; }\n  action Edge { e += 10; }\n"
+    "  action Lamp { s += 1; }\n  action Brief { l += 1; }\n  action Late { d += 1; }\n  action Never { n = 0; }\n"
+    "  initial place Idle { P1 Edge; S Lamp; N Run; }\n"
+    "  place Fill { N Run; P Kick; L Brief 30ms; D Late 20ms; P0 Edge; }\n"
+    "  place Hold { R Lamp; D Late 0ms; L Brief 0ms; P Kick; R Never; }\n"
+    "  place Drain { S Lamp; N Run; }\n"
+    "  Idle -> Fill when Go;\n  Fill -> Hold when Level > 20;\n  Hold -> Drain when !Go;\n"
+    "  Drain -> Idle when elapsed(Drain) >= 30ms;\n}\n",
+    // The sparse form with timers: L and D on places of a fork and its join.
+    "sfc Fork {\n  period 10ms;\n  var int k = 0;\n  out int a = 0;\n  out int b = 0;\n"
+    "  action Lim { a += 1; }\n  action Del { b += 1; }\n"
+    "  initial place Clock { k += 1; }\n  initial place S { L Lim 30ms; }\n"
+    "  place X { D Del 20ms; L Lim 10ms; }\n  place Y { D Del 0ms; }\n"
+    "  S -> (X, Y) when k % 7 == 2;\n  (X, Y) -> S when k % 7 == 0;\n}\n",
+    // Sub-charts: an instance's action control is its own, and starts clear when its place gains
+    // activation again; the actions report through calls.
+    "interface Io { void Hit(int i); bool Go(int i); }\n"
+    "sfc Inner {\n  action Beat { Hit(1); }\n  action Once { Hit(2); }\n"
+    "  initial place I { N Beat; P1 Once; }\n  place J { P Once; S Beat; }\n"
+    "  I -> J when Go(1);\n  J -> I when Go(2);\n}\n"
+    "sfc Outer {\n  action Mark { Hit(3); }\n  initial place A runs Inner { S Mark; }\n"
+    "  place B runs Inner { R Mark; P0 Mark; }\n  A -> B when Go(3);\n  B -> A when Go(4);\n}\n",
+};
+
+}  // namespace
+
+TEST_CASE("c harness: action control runs in both engine forms as in the interpreter", "[c_harness][run][iec]") {
+  // docs/iec.md "Action control": the outputs count each action's runs, so the log of every tick
+  // shows which ran; with hooks, the activation too.
+  int k = 0;
+  for (const char *chart : kActionCharts) {
+    ++k;
+    for (EngineForm form : {EngineForm::Readable, EngineForm::Scalable}) {
+      auto c = compile_actions(chart, form);
+      for (bool hooks : {false, true}) {
+        const std::string name = fmt::format(
+            "harness_actions{}_{}{}", k, form == EngineForm::Readable ? "readable" : "scalable", hooks ? "_hooks" : "");
+        const std::string defines = hooks ? fmt::format("-D{}_HOOKS", c->the_chart().name) : "";
+        const std::string log = run_table_harness(name, *c, 40, 1, c_backend::HarnessOutput::Stdio, defines);
+        CHECK(log == reference(*c, 40, 1, hooks));
+      }
+    }
+  }
+}
+
 TEST_CASE("c harness: the character output formats floats and doubles exactly as printf", "[c_harness][run]") {
   // Every sensing function's result is printed: `call F() = v`, each tick other values, among
   // them subnormals, halfway cases, the edges of %g's exponent form and negative zero.

@@ -312,8 +312,8 @@ TEST_CASE("validate model: plans, rules by outcome, sub-plans, constants in form
 }
 
 TEST_CASE("validate model: named actions in declaration order, each with its associations", "[validate][iec]") {
-  // docs/language.md §14: the actions table the back ends' action control reads. Action control
-  // is not compiled yet, so each action is still refused; the table is filled all the same.
+  // docs/language.md §14: the actions table the back ends' action control reads; L marks the
+  // place timed (its timer feeds the control), and B, holding L, is timed while A is not.
   Validated r({{"m.sfc", R"--(sfc Press {
   period 100ms;
   out int Count;
@@ -339,5 +339,7 @@ TEST_CASE("validate model: named actions in declaration order, each with its ass
   CHECK(tally.associations[2].ticks == 3);  // 250ms at 100ms: rounded up (§5.3)
   CHECK(tally.associations[3].qualifier == model::Qualifier::R);
   CHECK(c.actions[model::ActionId(1)].associations.empty());
-  CHECK(r.text().find("[not-supported]") != std::string::npos);
+  CHECK(!c.places[model::PlaceId(0)].timed);
+  CHECK(c.places[model::PlaceId(1)].timed);
+  CHECK(r.text().find("error") == std::string::npos);
 }
