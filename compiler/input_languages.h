@@ -49,9 +49,10 @@ struct InputLanguage {
   /// expected output in such comments. Empty: the language has none; the expected output is in
   /// a sidecar file beside the case (tests/diagnostics/README.md).
   std::string_view line_comment;
-  /// Run once the front end is done, or stopped: adds to the diagnostics what only the reader
-  /// knows (which ALICA element a location is in). Null: nothing to add.
-  void (*annotate)(Diagnostics &diag, const LoadResult &loaded) = nullptr;
+  /// Run once the front end is done, or stopped, and again after the analyses: adds to the
+  /// diagnostics from index `first` on what only the reader knows (which ALICA element a
+  /// location is in); those before `first` have been annotated already. Null: nothing to add.
+  void (*annotate)(Diagnostics &diag, const LoadResult &loaded, std::size_t first) = nullptr;
 
   /// The entry of `file_types` for `path`'s extension, or null.
   const FileType *file_type(const std::string &path) const;

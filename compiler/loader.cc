@@ -201,8 +201,8 @@ LoadResult load_program(const std::string &main_path, const LoadOptions &options
   return result;
 }
 
-void annotate_diagnostics(Diagnostics &diag, const LoadResult &loaded) {
-  if (loaded.language && loaded.language->annotate) loaded.language->annotate(diag, loaded);
+void annotate_diagnostics(Diagnostics &diag, const LoadResult &loaded, std::size_t first) {
+  if (loaded.language && loaded.language->annotate) loaded.language->annotate(diag, loaded, first);
 }
 
 }  // namespace gfec

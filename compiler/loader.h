@@ -21,7 +21,8 @@ LoadResult load_program(const std::string &main_path, const LoadOptions &options
 void read_chart_program(const std::string &main_path, std::string text, const LoadOptions &options,
                         const FileSystem &fs, SourceManager &sources, Diagnostics &diag, LoadResult &result);
 
-/// Runs the main file's language's annotate hook, if it has one (input_languages.h).
-void annotate_diagnostics(Diagnostics &diag, const LoadResult &loaded);
+/// Runs the main file's language's annotate hook, if it has one (input_languages.h), on the
+/// diagnostics from index `first` on: each is annotated once.
+void annotate_diagnostics(Diagnostics &diag, const LoadResult &loaded, std::size_t first = 0);
 
 }  // namespace gfec

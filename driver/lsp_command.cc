@@ -8,6 +8,7 @@
 
 #include <cstring>
 #include <iostream>
+#include <poll.h>
 
 namespace gfec {
 
@@ -30,7 +31,15 @@ int lsp_command(int argc, const char *const *argv, std::ostream &out, std::ostre
   // The server writes frames to stdout only; the command's `out` is stdout when run by main.
   std::ios::sync_with_stdio(false);
   RealFileSystem disk;
-  return lsp::serve(std::cin, out, err, disk, run_external_tool);
+  // A message waits in std::cin's buffer or in the pipe below it (std::cin reads fd 0 through
+  // its own buffer once unsynchronised): the server handles it before it runs the analyses of
+  // the last change (lsp/server.h).
+  const auto stdin_waiting = [] {
+    if (std::cin.rdbuf()->in_avail() > 0) return true;
+    pollfd p{0, POLLIN, 0};
+    return ::poll(&p, 1, 0) > 0;
+  };
+  return lsp::serve(std::cin, out, err, disk, run_external_tool, stdin_waiting);
 }
 
 }  // namespace gfec

@@ -9,7 +9,8 @@ CompiledDocument::CompiledDocument(const Session &session, const std::string &ur
                                    const pipeline::FrontEndOptions &options, const FileSystem &files)
     : session_(session), uri_(uri), path_(path), compilation_(std::make_unique<pipeline::Compilation>(options)),
       ranges_(compilation_->sources) {
-  compilation_->front_end(path, files);
+  compilation_->load_and_validate(path, files);
+  front_end_diagnostics_ = compilation_->diag.all().size();
   if (!compilation_->loaded.program.files.empty() && compilation_->loaded.program.files.front()) {
     main_ = compilation_->loaded.program.files.front()->id;
     has_main_ = true;

@@ -19,8 +19,16 @@ class Session;
 
 class CompiledDocument {
 public:
+  /// Loads and validates the document; the static analyses are left to analyze().
   CompiledDocument(const Session &session, const std::string &uri, const std::string &path,
                    const pipeline::FrontEndOptions &options, const FileSystem &files);
+
+  /// Runs the static analyses if they have not run (Compilation::analyze).
+  void analyze() { compilation_->analyze(); }
+  bool analysis_pending() const { return compilation_->analysis_pending(); }
+  /// Whether the analyses reported anything: the diagnostics published before they ran are
+  /// not all there are.
+  bool analyses_reported() const { return compilation_->diag.all().size() > front_end_diagnostics_; }
 
   const std::string &uri() const { return uri_; }
   const std::string &path() const { return path_; }
@@ -62,6 +70,7 @@ private:
   std::unique_ptr<pipeline::Compilation> compilation_;
   FileId main_ = 0;
   bool has_main_ = false;
+  std::size_t front_end_diagnostics_ = 0;  ///< how many diagnostics there were before the analyses
   /// Line indexes of the files read, built on first use and kept with this compilation (one
   /// per document version): a position costs a binary search, not a scan from the text's start.
   mutable SourceRanges ranges_;

@@ -53,7 +53,7 @@ std::vector<Occurrence> occurrences(Session &session, const DeclarationKey &key,
   std::map<std::pair<std::string, std::uint32_t>, Occurrence> found;
   std::set<std::string> done;
   for (const std::string &uri : session.open_uris()) {
-    const CompiledDocument &doc = session.compiled(uri);
+    const CompiledDocument &doc = session.validated(uri);
     collect(doc, key, found);
     done.insert(normal_path(doc.path()));
   }

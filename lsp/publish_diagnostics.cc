@@ -60,13 +60,29 @@ json diagnostics_of(const CompiledDocument &doc, long long version) {
   return {{"uri", doc.uri()}, {"version", version}, {"diagnostics", list}};
 }
 
+void publish_document(Session &session, const std::string &uri) {
+  const Document *d = session.document(uri);
+  if (!d) return;
+  const CompiledDocument &doc = session.validated(uri);
+  session.notify("textDocument/publishDiagnostics", diagnostics_of(doc, d->version));
+  session.set_deferred(uri, doc.analysis_pending());
+}
+
 void publish_diagnostics(Session &session, const std::string &uri) {
   std::vector<std::string> uris{uri};
   for (const std::string &d : session.dependents(uri)) uris.push_back(d);
-  for (const std::string &u : uris) {
-    Document *d = session.document(u);
+  for (const std::string &u : uris) publish_document(session, u);
+}
+
+void publish_analyses(Session &session, const std::function<bool()> &input_waiting) {
+  while (session.has_deferred() && !input_waiting()) {
+    const std::string uri = session.next_deferred();
+    const Document *d = session.document(uri);
     if (!d) continue;
-    session.notify("textDocument/publishDiagnostics", diagnostics_of(session.compiled(u), d->version));
+    // Every change to what the compilation read republishes it (publish_diagnostics), so this
+    // is the compilation the first publish was of, and the version is still its version.
+    const CompiledDocument &doc = session.compiled(uri);
+    if (doc.analyses_reported()) session.notify("textDocument/publishDiagnostics", diagnostics_of(doc, d->version));
   }
 }
 

@@ -1,6 +1,7 @@
 #include "server.h"
 
 #include "methods.h"
+#include "publish_diagnostics.h"
 #include "session.h"
 #include "transport.h"
 
@@ -27,6 +28,8 @@ public:
     send_error(nullptr, error_code::kParseError, why);
   }
   int exit_code() const { return session_.shutdown_requested ? 0 : 1; }
+  /// No message waits: the deferred analyses' turn (publish_diagnostics.h).
+  void idle(const std::function<bool()> &input_waiting);
 
 private:
   void send(const json &message) {
@@ -130,11 +133,21 @@ void Server::notification(const std::string &method, const json &params) {
   } catch (const std::exception &e) { log_ << "gfec lsp: " << method << ": " << e.what() << "\n"; }
 }
 
+void Server::idle(const std::function<bool()> &input_waiting) {
+  if (!session_.initialized || session_.shutdown_requested) return;
+  try {
+    publish_analyses(session_, input_waiting);
+  } catch (const std::exception &e) { log_ << "gfec lsp: the analyses: " << e.what() << "\n"; }
+}
+
 }  // namespace
 
-int serve(std::istream &in, std::ostream &out, std::ostream &log, const FileSystem &disk, ToolRunner tools) {
+int serve(std::istream &in, std::ostream &out, std::ostream &log, const FileSystem &disk, ToolRunner tools,
+          std::function<bool()> input_waiting) {
   Server server(out, log, disk, std::move(tools));
+  if (!input_waiting) input_waiting = [&in] { return in.rdbuf()->in_avail() > 0; };
   for (;;) {
+    server.idle(input_waiting);
     Frame f = read_frame(in);
     if (f.status == Frame::Status::End) break;
     if (f.status == Frame::Status::BadHeader) {

@@ -5,6 +5,7 @@
 
 #include "backend.h"
 
+#include <functional>
 #include <iosfwd>
 
 namespace gfec {
@@ -16,6 +17,9 @@ namespace gfec::lsp {
 /// Serves until `exit` or the end of the input. Returns the exit code LSP 3.17 names: 0 after
 /// `shutdown` then `exit`, 1 otherwise. `log` gets one line per message that could not be read.
 /// `tools` runs the external programs a picture goes through (the driver's run_external_tool).
-int serve(std::istream &in, std::ostream &out, std::ostream &log, const FileSystem &disk, ToolRunner tools = {});
+/// The static analyses of a change run when no message waits (publish_diagnostics.h):
+/// `input_waiting()` says whether one does; by default, whether `in` holds unread bytes.
+int serve(std::istream &in, std::ostream &out, std::ostream &log, const FileSystem &disk, ToolRunner tools = {},
+          std::function<bool()> input_waiting = {});
 
 }  // namespace gfec::lsp

@@ -2,6 +2,8 @@
 
 #include "uri.h"
 
+#include <algorithm>
+
 namespace gfec::lsp {
 
 Session::Session(const FileSystem &disk, std::function<void(const std::string &, nlohmann::json)> notify)
@@ -29,6 +31,7 @@ void Session::close(const std::string &uri) {
   overlay_.close(it->second.path);
   invalidate(uri, it->second.path);
   compiled_.erase(uri);
+  deferred_.erase(std::remove(deferred_.begin(), deferred_.end(), uri), deferred_.end());
   documents_.erase(it);
 }
 
@@ -49,6 +52,26 @@ std::vector<std::string> Session::open_uris() const {
 }
 
 const CompiledDocument &Session::compiled(const std::string &uri) {
+  validated(uri);
+  CompiledDocument &doc = *compiled_[uri].document;
+  doc.analyze();
+  return doc;
+}
+
+void Session::set_deferred(const std::string &uri, bool deferred) {
+  auto it = std::find(deferred_.begin(), deferred_.end(), uri);
+  if (deferred && it == deferred_.end()) deferred_.push_back(uri);
+  if (!deferred && it != deferred_.end()) deferred_.erase(it);
+}
+
+std::string Session::next_deferred() {
+  if (deferred_.empty()) return {};
+  std::string uri = std::move(deferred_.front());
+  deferred_.erase(deferred_.begin());
+  return uri;
+}
+
+const CompiledDocument &Session::validated(const std::string &uri) {
   Document &d = open_document(uri);
   Cached &c = compiled_[uri];
   if (!c.document || c.stale) {

@@ -73,9 +73,19 @@ public:
   const FileSystem &files() const { return overlay_; }
 
   // ---- compilations
-  /// The compilation of the open document `uri` (made now if the cached one is stale); throws
-  /// RequestError when it is not open.
+  /// The compilation of the open document `uri` (made now if the cached one is stale), its
+  /// static analyses run; throws RequestError when it is not open.
   const CompiledDocument &compiled(const std::string &uri);
+  /// The same, but the analyses may not have run yet (analysis_pending()): what the first
+  /// publish of a change reports, and all that the requests which read only the syntax tree,
+  /// the names and the model need.
+  const CompiledDocument &validated(const std::string &uri);
+  /// Whether `uri`'s diagnostics were published without the analyses': those are to be run and
+  /// published when the input is idle (publish_analyses), in the order deferred.
+  void set_deferred(const std::string &uri, bool deferred);
+  bool has_deferred() const { return !deferred_.empty(); }
+  /// The oldest deferred document, taken off the list; "" when there is none.
+  std::string next_deferred();
   /// The open documents other than `uri` whose last compilation read `uri`'s file: they are
   /// checked again when it changes. (Documents not compiled yet are not listed.)
   std::vector<std::string> dependents(const std::string &uri) const;
@@ -98,6 +108,7 @@ private:
   std::function<void(const std::string &, nlohmann::json)> notify_;
   std::map<std::string, Document> documents_;  ///< by URI
   std::map<std::string, Cached> compiled_;     ///< by URI, open documents only
+  std::vector<std::string> deferred_;          ///< URIs whose analyses wait for idle input
 };
 
 /// The parameters' textDocument.uri; InvalidParams if missing.

@@ -114,7 +114,7 @@ void read_alica_program(const std::string &main_path, std::string text, const Lo
 
 namespace gfec {
 
-void annotate_elements(Diagnostics &diag, const LoadResult &loaded) {
+void annotate_elements(Diagnostics &diag, const LoadResult &loaded, std::size_t first) {
   if (loaded.elements.empty()) return;
   // The innermost element holding `r`: elements nest (a plan holds its states).
   auto describe = [&](const SourceRange &r) -> const SourceElement * {
@@ -125,7 +125,8 @@ void annotate_elements(Diagnostics &diag, const LoadResult &loaded) {
         best = &e;
     return best;
   };
-  for (Diagnostic &d : diag.all()) {
+  for (std::size_t i = first; i < diag.all().size(); ++i) {
+    Diagnostic &d = diag.all()[i];
     // The ALICA reader's own messages name their element already.
     if (d.kind == &kind_info(ErrorKind::Json) || d.kind == &kind_info(ErrorKind::AlicaFormat) ||
         d.kind == &kind_info(ErrorKind::AlicaReference) || d.kind == &kind_info(Warning::AlicaIgnored))

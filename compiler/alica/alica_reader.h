@@ -11,10 +11,10 @@
 
 namespace gfec {
 
-/// Adds to each diagnostic located in an ALICA file a note naming the element it points at
+/// Adds to each diagnostic from index `first` on located in an ALICA file a note naming the element it points at
 /// (kind, name, id): the validator's messages know only the gfec names. The ALICA row's
 /// annotate hook (compiler/input_languages.h).
-void annotate_elements(Diagnostics &diag, const LoadResult &loaded);
+void annotate_elements(Diagnostics &diag, const LoadResult &loaded, std::size_t first);
 
 }  // namespace gfec
 

@@ -89,6 +89,11 @@ Selection choose(const model::Model &m, const SelectionRequest &request) {
 Compilation::Compilation(const FrontEndOptions &o) : options(o), diag(o.warnings, o.error_limit) {}
 
 bool Compilation::front_end(const std::string &path, const FileSystem &fs, scenario::Suite *tests) {
+  return load_and_validate(path, fs, tests) && analyze();
+}
+
+bool Compilation::load_and_validate(const std::string &path, const FileSystem &fs, scenario::Suite *tests) {
+  analysis_pending_ = false;
   LoadOptions load{options.include_dirs};
   load.language = options.language;
   loaded = load_program(path, load, fs, sources, diag);
@@ -111,10 +116,21 @@ bool Compilation::front_end(const std::string &path, const FileSystem &fs, scena
   // The facts the back ends read (docs/architecture.md): proven once here, cheap and linear, so
   // they are recorded even when the analyses' warnings are off (--check, -w).
   if (!diag.has_errors()) analysis::record_activation_bounds(model);
-  // The static analyses whose warnings are on (compiler/analysis/, docs/verification.md).
-  if (options.analyze && !diag.has_errors()) analysis::analyze(model, diag);
   // ALICA input: say which plan element (name and id) each diagnostic is about.
   annotate_diagnostics(diag, loaded);
+  analysis_pending_ = options.analyze && !diag.has_errors();
+  return !diag.has_errors();
+}
+
+bool Compilation::analyze() {
+  if (analysis_pending_) {
+    analysis_pending_ = false;
+    // Only what the analyses add: a diagnostic annotated twice would say "this is ..." twice.
+    const std::size_t first = diag.all().size();
+    // The static analyses whose warnings are on (compiler/analysis/, docs/verification.md).
+    analysis::analyze(model, diag);
+    annotate_diagnostics(diag, loaded, first);
+  }
   return !diag.has_errors();
 }
 

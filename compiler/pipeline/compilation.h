@@ -69,12 +69,23 @@ public:
   Compilation &operator=(const Compilation &) = delete;
 
   /// Loads `path` and what it imports, validates (keeping the main file's `test` blocks in
-  /// `tests` when given) and runs the analyses. False when the input has errors (in diag) or
-  /// the main file is unreadable (unreadable()). Stops at the first stage with errors:
-  /// validating a tree the parser had to patch up would mostly report the patches.
+  /// `tests` when given) and runs the analyses: load_and_validate(), then analyze(). False when
+  /// the input has errors (in diag) or the main file is unreadable (unreadable()). Stops at the
+  /// first stage with errors: validating a tree the parser had to patch up would mostly report
+  /// the patches.
   bool front_end(const std::string &path, const FileSystem &fs, scenario::Suite *tests = nullptr);
   /// The same on the real file system.
   bool front_end(const std::string &path);
+
+  /// front_end() without the static analyses, which analyze() runs later: a language server
+  /// publishes what the front end found first, as the analyses cost the most on a large chart.
+  bool load_and_validate(const std::string &path, const FileSystem &fs, scenario::Suite *tests = nullptr);
+  /// The static analyses whose warnings are on (options.analyze), once, when the front end
+  /// found no error; the diagnostics they add are annotated as the front end's were. False
+  /// when the input has errors.
+  bool analyze();
+  /// Whether analyze() has analyses left to run.
+  bool analysis_pending() const { return analysis_pending_; }
 
   /// Picks what to compile (choose()) and, for a chart that runs sub-charts, warns about
   /// the charts of the main file it leaves out (-Wunused-chart). Keeps the choice in selection.
@@ -93,6 +104,9 @@ public:
   Selection selection;
   /// With FrontEndOptions::record_name_uses: every declaration and resolved use of a name.
   NameUses name_uses;
+
+private:
+  bool analysis_pending_ = false;
 };
 
 }  // namespace pipeline

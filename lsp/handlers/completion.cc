@@ -20,7 +20,7 @@ json completion(Session &s, const json &params) {
   const std::string uri = document_uri(params);
   const Document &doc = s.open_document(uri);
   const std::size_t offset = offset_of(doc.text, read_position(params.at("position")));
-  const CompiledDocument &compiled = s.compiled(uri);
+  const CompiledDocument &compiled = s.validated(uri);
   const ast::Program &program = compiled.compilation().loaded.program;
   const std::string dir = std::filesystem::path(doc.path).parent_path().string();
   return lsp::completion(doc.text, static_cast<std::uint32_t>(offset), program.files.empty() ? nullptr : &program, dir);

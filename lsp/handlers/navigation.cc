@@ -5,7 +5,7 @@
 namespace gfec::lsp::handlers {
 
 At name_at_request(Session &s, const nlohmann::json &params) {
-  const CompiledDocument &doc = s.compiled(document_uri(params));
+  const CompiledDocument &doc = s.validated(document_uri(params));
   return {doc, doc.name_at(read_position(params.at("position")))};
 }
 

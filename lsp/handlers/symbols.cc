@@ -58,7 +58,7 @@ void add_symbols(const CompiledDocument &doc, const std::vector<OutlineItem> &it
 }  // namespace
 
 json document_symbol(Session &s, const json &params) {
-  const CompiledDocument &doc = s.compiled(document_uri(params));
+  const CompiledDocument &doc = s.validated(document_uri(params));
   json list = json::array();
   if (const ast::File *file = doc.syntax_of(doc.main_file()))
     for (const OutlineItem &item : outline(*file)) list.push_back(document_symbol_json(doc, item));
@@ -73,7 +73,7 @@ json workspace_symbol(Session &s, const json &params) {
     done.insert(normal_path(doc.path()));
     if (const ast::File *file = doc.syntax_of(doc.main_file())) add_symbols(doc, outline(*file), "", query, out);
   };
-  for (const std::string &uri : s.open_uris()) add(s.compiled(uri));
+  for (const std::string &uri : s.open_uris()) add(s.validated(uri));
   pipeline::FrontEndOptions options = s.front_end;
   options.keep_syntax_tree = true;
   for (const std::string &path : workspace_files(s)) {

@@ -15,10 +15,7 @@ void did_change_watched_files(Session &s, const nlohmann::json &params) {
   for (const nlohmann::json &change : params.at("changes"))
     for (const std::string &uri : s.disk_file_changed(path_of_uri(change.at("uri").get<std::string>())))
       stale.insert(uri);
-  for (const std::string &uri : stale) {
-    const Document *d = s.document(uri);
-    if (d) s.notify("textDocument/publishDiagnostics", diagnostics_of(s.compiled(uri), d->version));
-  }
+  for (const std::string &uri : stale) publish_document(s, uri);
 }
 
 }  // namespace gfec::lsp::handlers

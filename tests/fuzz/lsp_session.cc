@@ -181,19 +181,34 @@ void check_lsp_session(const std::string &input) {
   MemoryFileSystem disk;
   disk.add("/w/b.iface", "interface B { bool Go(); void Act(); }\n");
   disk.add("/w/s.sfc", "sfc S { initial place A; place B; A -> B; }\n");
-  const int code = lsp::serve(in, out, log, disk);
+  // The whole session is in the stream, so a message always waits: every third look says none
+  // does, and the deferred analyses run and publish between messages as they do in an editor.
+  int looks = 0;
+  const auto input_waiting = [&looks] { return ++looks % 3 != 0; };
+  const int code = lsp::serve(in, out, log, disk, {}, input_waiting);
   expect(code == 0, "exit 0 after shutdown and exit", std::to_string(code));
 
   // Every request of ours answered exactly once: a result or an error, never neither or both.
   std::istringstream replies(out.str());
   std::map<long long, int> answers;
+  long long published = 0;  // the last version a publishDiagnostics named
   for (;;) {
     lsp::Frame f = lsp::read_frame(replies);
     if (f.status == lsp::Frame::Status::End) break;
     expect(f.status == lsp::Frame::Status::Ok, "the server writes whole frames");
     json m = json::parse(f.body, nullptr, false);
     expect(!m.is_discarded(), "the server writes JSON", f.body.substr(0, 200));
-    if (m.contains("method")) continue;  // a notification
+    if (m.contains("method")) {  // a notification
+      // The analyses' publish comes after the front end's, of the same version, never of an
+      // older one than a publish before it.
+      const json &params = m.value("params", json::object());
+      if (params.contains("version") && params["version"].is_number_integer()) {
+        const long long version = params["version"].get<long long>();
+        expect(version >= published, "publishes never go back to an older version", f.body.substr(0, 200));
+        published = version;
+      }
+      continue;
+    }
     expect(m.contains("result") != m.contains("error"), "a response has a result or an error", f.body.substr(0, 200));
     if (m["id"].is_number_integer()) ++answers[m["id"].get<long long>()];
   }

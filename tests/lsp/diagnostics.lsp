@@ -61,6 +61,34 @@ interface Io {
 {"method":"textDocument/publishDiagnostics","params":{"uri":"${root}/io.iface","diagnostics":[]}}
 // expect
 {"method":"textDocument/publishDiagnostics","params":{"uri":"${root}/bad.sfc","diagnostics":[{"code":"-Wunreachable-place"}]}}
+# Two publishes of one version (docs/editors.md "Speed"): at once what the front end found
+# (C, which no transition enters), then, when no message waits, the list again with the
+# static analyses' warnings (a state that deadlocks, a place no reachable state holds, a join
+# that never fires). The second comes before anything the client sends next is answered, so
+# a transcript expects it right after the first.
+// send
+{"jsonrpc":"2.0","method":"textDocument/didChange","params":{"textDocument":{"uri":"${root}/bad.sfc","version":5},"contentChanges":[
+ {"text":"import \"io.iface\";\nsfc Bad {\n  initial place S { led_on(); }\n  place L;\n  place R;\n  place J;\n  place C;\n  transition GoLeft: S -> L when button();\n  transition GoRight: S -> R when !button();\n  transition Both: (L, R) -> J;\n}\n"}]}}
+// expect
+{"method":"textDocument/publishDiagnostics","params":{"uri":"${root}/bad.sfc","version":5,"diagnostics":[
+ {"range":{"start":{"line":6,"character":8},"end":{"line":6,"character":9}},"severity":2,"code":"-Wunreachable-place","message":"place 'C' can never become active"}]}}
+// expect
+{"method":"textDocument/publishDiagnostics","params":{"uri":"${root}/bad.sfc","version":5,"diagnostics":[
+ {"range":{"start":{"line":6,"character":8},"end":{"line":6,"character":9}},"code":"-Wunreachable-place","message":"place 'C' can never become active"},
+ {"range":{"start":{"line":1,"character":4},"end":{"line":1,"character":7}},"severity":2,"code":"-Wdeadlock","source":"gfec",
+  "message":"sfc 'Bad' can reach a state in which nothing can fire any more: R\nnote: it gets there after tick 1: GoRight",
+  "relatedInformation":[{"location":{"uri":"${root}/bad.sfc","range":{"start":{"line":9,"character":13},"end":{"line":9,"character":17}}},"message":"'Both' waits for 'L'"}]},
+ {"range":{"start":{"line":5,"character":8},"end":{"line":5,"character":9}},"code":"-Wunreachable-place","message":"place 'J' can never become active: no reachable activation state holds it"},
+ {"range":{"start":{"line":9,"character":13},"end":{"line":9,"character":17}},"code":"-Wdead-join"}]}}
+# The join taken out: J is the front end's to report now, the analyses find nothing more, and
+# the front end's publish is the only one (one more would be a message no block expects).
+// send
+{"jsonrpc":"2.0","method":"textDocument/didChange","params":{"textDocument":{"uri":"${root}/bad.sfc","version":6},"contentChanges":[
+ {"range":{"start":{"line":9,"character":0},"end":{"line":10,"character":0}},"text":""}]}}
+// expect
+{"method":"textDocument/publishDiagnostics","params":{"uri":"${root}/bad.sfc","version":6,"diagnostics":[
+ {"code":"-Wunreachable-place","message":"place 'J' can never become active"},
+ {"code":"-Wunreachable-place","message":"place 'C' can never become active"}]}}
 // send
 {"jsonrpc":"2.0","id":2,"method":"shutdown"}
 // expect

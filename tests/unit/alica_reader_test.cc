@@ -935,3 +935,59 @@ TEST_CASE("alica: a plan saved as one line of JSON is quoted around each diagnos
   CHECK(quoted.compare(caret, 9, "{\"input\":") == 0);
   CHECK(plan.compare(869, 9, "{\"input\":") == 0);  // column 870 is that '{'
 }
+
+TEST_CASE("alica: a warning of the analyses names its element once, whether they run in the front end or after it",
+          "[alica][pipeline]") {
+  // Two transitions out of Wait, neither with a precondition: the second never fires (the
+  // analyses' warning); Left's name given twice (the reader's). A language server runs the
+  // analyses after the front end (Compilation::analyze); annotating all the diagnostics again
+  // there would name the reader's element twice.
+  MemoryFileSystem mem;
+  mem.add("Fork.pml", R"({ "id" : 1900000000000, "name" : "Fork", "masterPlan" : false, "variables" : [],
+  "entryPoints" : [ { "id" : 1900000000001, "name" : "Start", "task" : null, "state" : 1900000000002,
+                      "plan" : 1900000000000 } ],
+  "states" : [
+    { "type" : "State", "id" : 1900000000002, "name" : "Wait", "entryPoint" : 1900000000001,
+      "parentPlan" : 1900000000000, "outTransitions" : [ 1900000000020, 1900000000021 ], "inTransitions" : [] },
+    { "type" : "State", "id" : 1900000000003, "name" : "Left", "name" : "Left", "parentPlan" : 1900000000000,
+      "outTransitions" : [], "inTransitions" : [ 1900000000020 ] },
+    { "type" : "State", "id" : 1900000000004, "name" : "Right", "parentPlan" : 1900000000000,
+      "outTransitions" : [], "inTransitions" : [ 1900000000021 ] } ],
+  "transitions" : [
+    { "id" : 1900000000020, "name" : "ToLeft", "inState" : 1900000000002, "outState" : 1900000000003,
+      "preCondition" : null },
+    { "id" : 1900000000021, "name" : "ToRight", "inState" : 1900000000002, "outState" : 1900000000004,
+      "preCondition" : null } ],
+  "synchronisations" : [] }
+)");
+  auto text = [](const pipeline::Compilation &c) {
+    std::string out;
+    for (const auto &d : c.diag.all()) out += render_text(d, c.sources);
+    return out;
+  };
+  auto count = [](const std::string &text, const std::string &what) {
+    std::size_t n = 0;
+    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+  };
+  pipeline::FrontEndOptions options;  // the analyses on, as gfec runs them
+  pipeline::Compilation whole(options);
+  CHECK(whole.front_end("Fork.pml", mem));
+  pipeline::Compilation later(options);
+  REQUIRE(later.load_and_validate("Fork.pml", mem));
+  CHECK(later.analysis_pending());
+  const std::size_t front = later.diag.all().size();
+  CHECK(later.analyze());
+  CHECK(!later.analysis_pending());
+  CHECK(later.analyze());  // once: a second call adds nothing
+  CHECK(later.diag.all().size() == front + 1);
+  const std::string all = text(later);
+  INFO(all);
+  CHECK(all == text(whole));
+  CHECK(all.find("warning: transition 'ToRight' (Wait -> Right) can never fire") != std::string::npos);
+  CHECK(count(all, "note: this is ALICA transition 'ToRight' (id 1900000000021)") == 1);
+  CHECK(count(all, "(ALICA transition 'ToLeft' (id 1900000000020)") == 1);
+  CHECK(front == 1);
+  CHECK(count(all, "[-Wduplicate-key]") == 1);
+  CHECK(count(all, "note: this is ALICA state 'Left' (id 1900000000003)") == 1);
+}

@@ -63,6 +63,44 @@ TEST_CASE("gfec: the analyses run in every compile, as named warnings that -Werr
   CHECK(quiet.out == "");
 }
 
+TEST_CASE("the pipeline: the analyses run after the front end report what they report inside it, once", "[pipeline]") {
+  // A language server publishes the front end's diagnostics before the analyses run
+  // (Compilation::load_and_validate, then analyze()); gfec runs both in front_end().
+  std::string with_unreachable = kChoice;
+  with_unreachable.insert(with_unreachable.find("  place J;"), "  place X;\n");
+  auto fs = files({{"choice.sfc", with_unreachable}});
+  auto text = [](const gfec::pipeline::Compilation &c) {
+    std::string out;
+    for (const auto &d : c.diag.all()) out += gfec::render_text(d, c.sources);
+    return out;
+  };
+  gfec::pipeline::FrontEndOptions options;
+  gfec::pipeline::Compilation whole(options);
+  CHECK(whole.front_end("choice.sfc", fs));
+  gfec::pipeline::Compilation later(options);
+  REQUIRE(later.load_and_validate("choice.sfc", fs));
+  // The validator's own finding is there at once; the state space's wait for analyze().
+  CHECK(text(later).find("place 'X' can never become active [-Wunreachable-place]") != std::string::npos);
+  CHECK(text(later).find("[-Wdeadlock]") == std::string::npos);
+  CHECK(later.analysis_pending());
+  CHECK(later.analyze());
+  CHECK(!later.analysis_pending());
+  CHECK(later.analyze());
+  CHECK(text(later) == text(whole));
+  CHECK(text(later).find("[-Wdeadlock]") != std::string::npos);
+
+  // Nothing pending without the analyses, or after a front end with errors.
+  options.analyze = false;
+  gfec::pipeline::Compilation off(options);
+  CHECK(off.load_and_validate("choice.sfc", fs));
+  CHECK(!off.analysis_pending());
+  gfec::pipeline::Compilation broken(gfec::pipeline::FrontEndOptions{});
+  auto bad = files({{"bad.sfc", "sfc Bad { initial place A; A -> Nowhere; }\n"}});
+  CHECK(!broken.load_and_validate("bad.sfc", bad));
+  CHECK(!broken.analysis_pending());
+  CHECK(!broken.analyze());
+}
+
 TEST_CASE("gfec --analyze: the summary counts what the warnings above it report, a transition out of a place "
           "never active is dead") {
   std::string dir = scratch_dir("analysis_summary");

@@ -8,6 +8,8 @@
 #include "completion.h"
 #include "folding_ranges.h"
 #include "semantic_tokens.h"
+#include "server.h"
+#include "transport.h"
 #include "positions.h"
 #include "text_index.h"
 
@@ -298,4 +300,42 @@ TEST_CASE("The chart picture maps every node to its source", "[lsp]") {
   CHECK(none["svg"].is_null());
   CHECK(none["note"].get<std::string>().find("not redrawn: 1 error in the text; the first: b.sfc:1:") == 0);
   CHECK(none["elements"].empty());
+}
+
+TEST_CASE("The analyses wait while messages do, and then run once, on the newest text", "[lsp]") {
+  // Two changes in one read: by default a message waits while `in` holds bytes, so the first
+  // change's analyses are skipped (the second came first) and the second's run when the input
+  // is idle, at its end: two front-end publishes, then one full publish of version 3.
+  const std::string uri = "file:///w/choice.sfc";
+  std::string choice = "interface Bot { bool Left(); }\nsfc Choice {\n  initial place S;\n  place L;\n  place R;\n"
+                       "  place J;\n  transition GoLeft: S -> L when Left();\n  transition GoRight: S -> R when "
+                       "!Left();\n  transition Both: (L, R) -> J;\n}\n";
+  std::ostringstream session;
+  auto send = [&session](const json &m) { write_frame(session, m.dump()); };
+  send({{"jsonrpc", "2.0"}, {"id", 1}, {"method", "initialize"}, {"params", {{"capabilities", json::object()}}}});
+  for (long long version = 1; version <= 3; ++version) {
+    json doc = {{"uri", uri}, {"version", version}};
+    if (version == 1) {
+      doc["text"] = choice;
+      send({{"jsonrpc", "2.0"}, {"method", "textDocument/didOpen"}, {"params", {{"textDocument", doc}}}});
+    } else {
+      send({{"jsonrpc", "2.0"},
+            {"method", "textDocument/didChange"},
+            {"params",
+             {{"textDocument", doc}, {"contentChanges", {{{"text", choice + "// " + std::to_string(version)}}}}}}});
+    }
+  }
+  std::istringstream in(session.str());
+  std::ostringstream out, log;
+  MemoryFileSystem disk;
+  CHECK(serve(in, out, log, disk) == 1);  // the input ended without shutdown
+  std::istringstream written(out.str());
+  std::vector<std::pair<long long, std::size_t>> publishes;  // version, diagnostics
+  for (Frame f = read_frame(written); f.status == Frame::Status::Ok; f = read_frame(written)) {
+    json m = json::parse(f.body);
+    if (m.value("method", "") != "textDocument/publishDiagnostics") continue;
+    publishes.emplace_back(m["params"]["version"].get<long long>(), m["params"]["diagnostics"].size());
+  }
+  // The front end finds nothing; the analyses a deadlock, a place never active, a dead join.
+  CHECK(publishes == std::vector<std::pair<long long, std::size_t>>{{1, 0}, {2, 0}, {3, 0}, {3, 3}});
 }
