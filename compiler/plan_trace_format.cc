@@ -4,6 +4,7 @@ namespace gfec::trace {
 
 namespace {
 
+/// `path`: the level's own path ("" for the plan, "nav", "nav.side").
 void describe(const model::Model &model, model::PlanId id, const std::string &path, PlanLayout &layout,
               std::string &text) {
   const model::Plan &plan = model.plans.at(id);
@@ -26,10 +27,10 @@ void describe(const model::Model &model, model::PlanId id, const std::string &pa
   for (const model::ActorUse &a : plan.actors) {
     const std::size_t actor = k++;
     if (!a.subplan) continue;
-    const std::string inner = path + a.name;
+    const std::string inner = path.empty() ? a.name : path + "." + a.name;
     text += "instance " + inner + "\n";
     layout.levels[index].children[actor] = layout.levels.size();
-    describe(model, a.subplan, inner + ".", layout, text);
+    describe(model, a.subplan, inner, layout, text);
   }
 }
 
