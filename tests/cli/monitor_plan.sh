@@ -5,7 +5,8 @@
 # tests (tests/run/cpp/run_plan.cc), which logs what its afp::TraceObserver hears and, beside it,
 # writes an afp::LinkTrace's frames to a file. `gfec monitor PLAN --log` must print the harness's
 # event lines exactly. Then a garbled stream, a cut one, another plan's stream, a chart engine's
-# stream given to a plan and a plan's to a chart (exit 1, located). About 15 s (three compiles).
+# stream given to a plan and a plan's to a chart (exit 1, located); the square once on the threaded
+# executor. About 20 s (three compiles).
 # Usage: monitor_plan.sh GFEC SOURCE_DIR RUNTIME_LIBRARY [LINK_FLAGS]
 set -euo pipefail
 gfec=$(realpath "$1") source_dir=$(realpath "$2") runtime=$(realpath "$3") link_flags=${4:-}
@@ -49,6 +50,14 @@ printf '\n\n\nescape\n' | ./square link=escape.bin > escape.out
 "$gfec" monitor "$square" --log < escape.bin > escape.log 2> /dev/null
 diff <(grep -E '^[0-9]+ ' escape.out) escape.log || fail "square, escape: the decoded stream differs"
 grep -q '^30 end Side stopped$' escape.log || fail "square, escape: $(cat escape.log)"
+
+# The threaded executor (the observer called from its thread only): the same events; the harness
+# leaves its real plan times out, so they are compared without them.
+printf 'set:sides=2\n' | ./square threaded link=threaded.bin > threaded.out
+"$gfec" monitor "$square" --log < threaded.bin 2> /dev/null | sed -E 's/^[0-9]+ //' > threaded.log
+diff <(grep -E '^(start|finish|interrupt|fail|end) ' threaded.out) threaded.log ||
+  fail "square, threaded: the decoded stream differs"
+grep -q '^end Square succeeded$' threaded.log || fail "square, threaded: $(cat threaded.log)"
 
 formulas=$source_dir/tests/golden/cpp/formulas.plan
 build formulas "$formulas" Formulas Probe

@@ -179,6 +179,42 @@ TEST_CASE("plan trace: gfec's fingerprint is the runtime's, and another plan's d
   CHECK(compile_plans(text).layout.fingerprint == other.fingerprint());
 }
 
+TEST_CASE("plan trace: a sub-plan's sub-plan, two levels down", "[monitor][plan]") {
+  Model m = compile_plans(std::string(kPlans) + "plan Deep {\n  start d;\n  actor d: Outer() { OK -> terminate; "
+                                                "INTERRUPTED -> terminate; ERROR -> terminate; }\n}\n");
+  model::PlanId deep;
+  for (model::PlanId id : m.compiled->model.plans.ids())
+    if (m.compiled->model.plans[id].name == "Deep") deep = id;
+  const trace::PlanLayout layout = trace::plan_layout_of(m.compiled->model, deep);
+  REQUIRE(layout.levels.size() == 3);
+  CHECK(layout.levels[1].path == "d");
+  CHECK(layout.levels[2].path == "d.sub");
+  CHECK(layout.levels[0].children == std::vector<std::size_t>{1});
+  auto plan = std::make_unique<afp::Plan>("Deep");
+  auto *d = plan->add_actor("d", std::make_unique<afp::SubPlan>(wire_outer()));
+  plan->define_first_actor(d);
+  plan->define_subsequent(d, afp::SubPlan::OK, afp::terminate);
+  std::string bytes;
+  afp::LinkTrace link(
+      *plan, [&](const unsigned char *data, std::size_t n) { bytes.append(reinterpret_cast<const char *>(data), n); });
+  CHECK(link.fingerprint() == layout.fingerprint);
+  const afp::Plan &outer = *plan->actor_at(0).nested_plan();
+  const afp::Plan &inner = *outer.actor_at(1).nested_plan();
+  link.actor_started(*plan, "d", 0ms);
+  link.actor_started(outer, "sub", 0ms);
+  link.actor_started(inner, "b", 0ms);
+  m.layout = layout;
+  std::ostringstream out;
+  monitor::PlanLogSink sink(m.compiled->model, layout, out);
+  monitor::PlanTraceDecoder decoder(m.compiled->model, layout, sink);
+  // From the third frame on: the state says every level's running actor.
+  const std::size_t third = bytes.size() / 3 * 2;
+  decoder.feed(reinterpret_cast<const std::uint8_t *>(bytes.data()) + third, bytes.size() - third);
+  CHECK(out.str() == "# lost 2 events: the stream joined the run at event 3\n"
+                     "# at 0 ms running: Deep.d Outer.sub Inner.b\n"
+                     "0 start Inner.b\n");
+}
+
 TEST_CASE("plan trace: a frame byte by byte, as docs/live.md lays it out", "[monitor][plan]") {
   Recorded r;
   r.link.actor_started(*r.plan, "sub", 1500ms);
@@ -248,14 +284,14 @@ TEST_CASE("plan trace: heartbeats, a late monitor, garbled bytes and another pla
   SECTION("another plan's stream is refused") {
     auto renamed = wire_outer("y");
     std::string bytes;
-    afp::LinkTrace other(*renamed,
-                         [&](const unsigned char *d, std::size_t n) { bytes.append(reinterpret_cast<const char *>(d), n); });
+    afp::LinkTrace other(
+        *renamed, [&](const unsigned char *d, std::size_t n) { bytes.append(reinterpret_cast<const char *>(d), n); });
     other.actor_started(*renamed, "y", 0ms);
     other.actor_finished(*renamed, "y", 0, 10ms);
     std::string refusal;
     CHECK(decode(m, bytes, 2, &refusal).empty());
-    CHECK_THAT(refusal, Catch::StartsWith("the stream comes from another plan: its fingerprint is " +
-                                          fmt::format("{:08x}, the plan's {:08x}", other.fingerprint(),
-                                                      m.layout.fingerprint)));
+    CHECK_THAT(refusal,
+               Catch::StartsWith("the stream comes from another plan: its fingerprint is " +
+                                 fmt::format("{:08x}, the plan's {:08x}", other.fingerprint(), m.layout.fingerprint)));
   }
 }
