@@ -126,7 +126,8 @@ int monitor_plan(const MonitorOptions &o, const pipeline::Compilation &c, model:
                        text::printable(decoder.refusal()));
     return kExitInputError;
   }
-  err << fmt::format("gfec monitor: {} event{} decoded, {} lost, {} byte{} garbled\n", decoder.events_shown(),
+  err << fmt::format("gfec monitor: {} frame{} decoded ({} event{}), {} lost, {} byte{} garbled\n",
+                     decoder.frames_shown(), decoder.frames_shown() == 1 ? "" : "s", decoder.events_shown(),
                      decoder.events_shown() == 1 ? "" : "s", decoder.events_lost(), decoder.bytes_garbled(),
                      decoder.bytes_garbled() == 1 ? "" : "s");
   if (!read_error.empty()) {

@@ -176,6 +176,7 @@ void PlanTraceDecoder::show(DecodedPlanEvent &e) {
   bad_ = 0;
   last_shown_ = seq;
   ++shown_;
+  if (e.record != trace::PlanRecord::State) ++events_;
   sink_.event(e);
 }
 

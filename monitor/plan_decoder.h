@@ -25,7 +25,9 @@ public:
 
   bool refused() const { return !refusal_.empty(); }
   const std::string &refusal() const { return refusal_; }
-  std::uint64_t events_shown() const { return shown_; }
+  /// Frames handed on, and of them the events (the others are LinkTrace::heartbeat's state).
+  std::uint64_t frames_shown() const { return shown_; }
+  std::uint64_t events_shown() const { return events_; }
   std::uint64_t events_lost() const { return lost_; }
   std::uint64_t bytes_garbled() const { return garbled_total_; }
 
@@ -47,7 +49,7 @@ private:
   std::uint64_t garbled_ = 0;     ///< bytes skipped since the last frame handed on
   std::uint64_t bad_ = 0;         ///< intact frames that did not decode, since the last one handed on
   std::uint64_t garbled_total_ = 0;
-  std::uint64_t shown_ = 0, lost_ = 0;
+  std::uint64_t shown_ = 0, events_ = 0, lost_ = 0;
   std::string refusal_;
 };
 
