@@ -83,11 +83,14 @@ void add_options(CLI::App &app, MonitorOptions &o, FrontEndFlags &front_end) {
   add_front_end_options(app, o.report, front_end);
 }
 
-/// "FILE:LINE:COL" of the chart's name, for an error about the stream the chart refuses.
-std::string chart_location(const pipeline::Compilation &c, const model::Chart &chart) {
-  const SourceRange &r = chart.name_range;
-  const LineCol at = c.sources.begin_of(r);
-  return fmt::format("{}:{}:{}", text::printable(c.sources.file(r.file).path()), at.line, at.col);
+/// A stream the chart or plan refuses (another chart's, another format version): an error
+/// located at the chart's name or the plan, reported as every diagnostic is, so
+/// -fdiagnostics-format=json|sarif carries it too.
+void report_refusal(DiagnosticReport &report, const std::string &input, const pipeline::Compilation &c,
+                    const SourceRange &at, const std::string &refusal) {
+  Diagnostics diag;
+  diag.error(at, ErrorKind::StreamRefused, text::printable(refusal));
+  report.add(input, diag, c.sources);
 }
 
 /// The source's file descriptor (0 for stdin), or -1 with `why` set.
@@ -120,10 +123,7 @@ int monitor_plan(const MonitorOptions &o, const pipeline::Compilation &c, model:
   if (fd != 0) ::close(fd);
   decoder.finish();
   if (decoder.refused()) {
-    const model::Plan &p = c.model.plans.at(plan);
-    const LineCol at = c.sources.begin_of(p.range);
-    err << fmt::format("{}:{}:{}: error: {}\n", text::printable(c.sources.file(p.range.file).path()), at.line, at.col,
-                       text::printable(decoder.refusal()));
+    report_refusal(report, o.input, c, c.model.plans.at(plan).range, decoder.refusal());
     return kExitInputError;
   }
   err << fmt::format("gfec monitor: {} frame{} decoded ({} event{}), {} lost, {} byte{} garbled\n",
@@ -180,8 +180,7 @@ int monitor_with(const MonitorOptions &o, DiagnosticReport &report, std::ostream
     if (fd != 0) ::close(fd);
     decoder.finish();
     if (decoder.refused()) {
-      err << fmt::format("{}: error: {}\n", chart_location(c, c.model.charts.at(chart)),
-                         text::printable(decoder.refusal()));
+      report_refusal(report, o.input, c, c.model.charts.at(chart).name_range, decoder.refusal());
       return kExitInputError;
     }
     if (page) page->ended(read_error.empty() ? "the end of the stream" : "reading the trace: " + read_error);

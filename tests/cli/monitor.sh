@@ -75,6 +75,7 @@ status=0
 [ "$status" = 1 ] || fail "another chart's stream: exit $status, not 1"
 grep -Eq '^.*work_cell\.sfc:[0-9]+:[0-9]+: error: the stream comes from another chart: its fingerprint is [0-9a-f]{8}, the chart.s [0-9a-f]{8}' other.err ||
   fail "another chart's stream: $(cat other.err)"
+grep -q '\[stream-refused\]$' other.err || fail "another chart's stream: not reported as a diagnostic: $(cat other.err)"
 [ ! -s other.log ] || fail "another chart's stream printed ticks"
 
 # Sources and usage.
