@@ -84,7 +84,8 @@ live::LiveChart live_plan(const model::Model &model, const trace::PlanLayout &la
           {level.path, model.plans.at(level.plan).name, out.level_rows.back(), level.actors.size(), 0});
   }
   // The trace numbers the supervisors as the wiring adds them: the globals, then each actor's.
-  for (std::size_t g = 0; g < plan.globals.size(); ++g) out.supervisor_nodes.push_back(chart_nodes::global_supervisor(g));
+  for (std::size_t g = 0; g < plan.globals.size(); ++g)
+    out.supervisor_nodes.push_back(chart_nodes::global_supervisor(g));
   std::size_t a = 0;
   for (const model::ActorUse &actor : plan.actors) {
     for (std::size_t s = 0; s < actor.supervisors.size(); ++s)

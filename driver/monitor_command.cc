@@ -140,8 +140,8 @@ int monitor_plan(const MonitorOptions &o, const pipeline::Compilation &c, model:
     if (decoder.refused()) {
       const model::Plan &p = c.model.plans.at(plan);
       const LineCol at = c.sources.begin_of(p.range);
-      err << fmt::format("{}:{}:{}: error: {}\n", text::printable(c.sources.file(p.range.file).path()), at.line,
-                         at.col, text::printable(decoder.refusal()));
+      err << fmt::format("{}:{}:{}: error: {}\n", text::printable(c.sources.file(p.range.file).path()), at.line, at.col,
+                         text::printable(decoder.refusal()));
       if (page) page->ended(decoder.refusal());
       return kExitInputError;
     }
@@ -168,8 +168,8 @@ int monitor_with(const MonitorOptions &o, DiagnosticReport &report, std::ostream
   const pipeline::Compilation &c = *loaded.compilation;
   if (loaded.plan) {
     if (o.robots > 1) {
-      report.tool_error(o.input,
-                        "--robots: the live page shows one plan's stream (one gfec monitor per robot's plan)", false);
+      report.tool_error(o.input, "--robots: the live page shows one plan's stream (one gfec monitor per robot's plan)",
+                        false);
       return kExitUsageOrIo;
     }
     return monitor_plan(o, c, loaded.plan, report, out, err);

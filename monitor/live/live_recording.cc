@@ -102,8 +102,8 @@ void LiveRecording::event(const monitor::DecodedPlanEvent &e) {
   case PlanRecord::Interrupted:
     rec_.add_event(frame, "supervisor", e.text);
     // The picture is the plan's own: a sub-plan's supervisor is said, not lit.
-    rec_.add_fired(frame, e.level == 0 && e.supervisor < supervisor_nodes_.size() ? supervisor_nodes_[e.supervisor] : "",
-                   e.text);
+    rec_.add_fired(
+        frame, e.level == 0 && e.supervisor < supervisor_nodes_.size() ? supervisor_nodes_[e.supervisor] : "", e.text);
     break;
   case PlanRecord::Failed: rec_.add_event(frame, "fail", e.text); break;
   case PlanRecord::Ended:
@@ -188,8 +188,9 @@ void LiveRecording::lost(std::size_t robot, std::uint64_t ticks_missing, const s
   last_loss_ = why;
   plan_gap_ = true;
   const std::string unit = plan_ ? "event" : "tick";
-  std::string text = ticks_missing ? std::to_string(ticks_missing) + " " + unit + (ticks_missing == 1 ? "" : "s") + " lost"
-                                   : unit + "s lost";
+  std::string text = ticks_missing
+                         ? std::to_string(ticks_missing) + " " + unit + (ticks_missing == 1 ? "" : "s") + " lost"
+                         : unit + "s lost";
   if (robots_ > 1) text = robot_name(robot) + ": " + text;
   if (!why.empty()) text += ": " + why;
   // Before the next frame shown: the gap is between the last frame and it.
@@ -210,8 +211,13 @@ void LiveRecording::ended(const std::string &why) {
 }
 
 nlohmann::json LiveRecording::link() const {
-  return {{"state", state_},         {"silent", silent_},   {"lost_ticks", lost_ticks_}, {"losses", losses_},
-          {"last_loss", last_loss_}, {"ended", ended_why_}, {"waiting", pending_.size()},
+  return {{"state", state_},
+          {"silent", silent_},
+          {"lost_ticks", lost_ticks_},
+          {"losses", losses_},
+          {"last_loss", last_loss_},
+          {"ended", ended_why_},
+          {"waiting", pending_.size()},
           {"unit", plan_ ? "event" : "tick"}};
 }
 
@@ -219,7 +225,9 @@ nlohmann::json LiveRecording::page_data() const {
   std::lock_guard<std::mutex> lock(m_);
   nlohmann::json d = rec_.data();
   d["ticks"] = tick_offset_.json();
-  d["calls_note"] = "";
+  d["calls_note"] = plan_ ? "A plan's actors and supervisors are C++ classes of the toolbox: the trace carries "
+                            "no calls; the events list their starts, finishes and interruptions."
+                          : "";
   d["live"] = {{"update", "live"}, {"link", link()}};
   return d;
 }

@@ -307,7 +307,9 @@ live::LiveChart outer_page() {
   c.name = "Outer";
   c.kind = "plan";
   c.file = "plans.plan";
-  c.rows = {{"x", "a0", false, "", -1}, {"sub", "a1", false, "", -1}, {"sub/a", "", false, "sub", -1},
+  c.rows = {{"x", "a0", false, "", -1},
+            {"sub", "a1", false, "", -1},
+            {"sub/a", "", false, "sub", -1},
             {"sub/b", "", false, "sub", -1}};
   c.instances = {{"sub", "Inner", 2, 2, 0}};
   c.level_rows = {0, 2};

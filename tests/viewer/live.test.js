@@ -188,9 +188,11 @@ test('live plan page: the running actor lit as a plan\'s LinkTrace frames arrive
       const last = ends[Math.floor(ends.length * part / 4) - 1];
       for (; fed <= last; ++fed) monitor.child.stdin.write(s.frames[fed].bytes);
       const want = s.frames.slice(0, fed).filter((f) => f.event).length;
+      // The events first: once they are all there, so are the part's frames (one update holds both).
       const now = await until(`the events of part ${part}`, async () => {
+        if ((await eventTexts()).length !== want) return null;
         const v = await shown(page);
-        return (await eventTexts()).length === want && v.frame === v.frames - 1 ? v : null;
+        return v.frame === v.frames - 1 ? v : null;
       });
       const f = s.frames[last];
       assert.ok(now.following);
@@ -232,6 +234,10 @@ test('live plan page: the running actor lit as a plan\'s LinkTrace frames arrive
     await page.click('#b-live');
     const end = await shown(page);
     assert.deepEqual(end.lit, s.frames[s.frames.length - 1].active ? [`a${s.frames[s.frames.length - 1].active - 1}`] : []);
+    // The screenshot (docs/images/live-plan.png): paused where the wall is followed.
+    await page.evaluate(() => [...document.querySelectorAll('#events li')]
+      .find((li) => /start WallFollow\.followWall$/.test(li.textContent)).click());
+    assert.equal((await shown(page)).lit.length, 1, 'an actor lit at followWall\'s start');
     await page.screenshot({ path: path.join(out, 'live-plan.png') });
     assert.deepEqual(errors, [], 'console errors');
     console.log(`live plan page: ${s.frames.length} frames (${events.length} events) in 4 parts, ` +
