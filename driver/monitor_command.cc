@@ -70,7 +70,8 @@ void add_options(CLI::App &app, MonitorOptions &o, FrontEndFlags &front_end) {
       ->check(CLI::Range(0.0, 86400.0));
   app.add_option("--http", o.http,
                  "Serve the live page on HOST:PORT (loopback only; port 0: a free one, printed): the run viewer "
-                 "with the chart lit as ticks arrive (docs/live.md)")
+                 "with the chart lit as ticks arrive, or a plan's running actors as its events arrive "
+                 "(docs/live.md)")
       ->type_name("HOST:PORT");
   app.add_flag("--http-remote", o.http_remote,
                "Serve the live page on an address that is not loopback too (it has no login: anyone who reaches "
