@@ -95,7 +95,11 @@ void LiveRecording::event(const monitor::DecodedPlanEvent &e) {
   tick_offset_.record(frame, static_cast<long>(tick) - frame - 1);
   last_frame_tick_ = tick;
   plan_gap_ = false;
-  if (frame == 0) rec_.record_status(0, "running");
+  // The first frame, or the plan run again after it ended (a program that starts it anew).
+  if (frame == 0 || (status_[0] != "running" && e.record != PlanRecord::Ended)) {
+    status_[0] = "running";
+    rec_.record_status(frame, "running");
+  }
   switch (e.record) {
   case PlanRecord::Started: rec_.add_event(frame, "actor", e.text); break;
   case PlanRecord::Finished: rec_.add_event(frame, "state", e.text); break;

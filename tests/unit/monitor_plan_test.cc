@@ -360,7 +360,8 @@ TEST_CASE("plan trace on the live page: frames of plan time, the running actors,
   CHECK(d["live"]["link"]["unit"] == "event");
 }
 
-TEST_CASE("plan trace on the live page: a lost event leaves a jump, an update brings what fired", "[live][plan]") {
+TEST_CASE("plan trace on the live page: a lost event leaves a jump, a plan run again, an update brings what fired",
+          "[live][plan]") {
   using nlohmann::json;
   const Model m = compile_plans();
   Recorded r;
@@ -381,6 +382,16 @@ TEST_CASE("plan trace on the live page: a lost event leaves a jump, an update br
     }
   CHECK(lost);
   CHECK(d["live"]["link"]["lost_ticks"] == 1);
+
+  // The plan run again after its end (the same LinkTrace, its plan time from 0 again): a frame
+  // without fill, the status running again.
+  Recorded again;
+  play(again);
+  play(again);
+  const json twice = page_of(m, again.bytes());
+  CHECK(twice["frames"] == 316);
+  CHECK(twice["status"] == json::parse(R"([[0,"running"],[157,"succeeded"],[158,"running"],[315,"succeeded"]])"));
+  CHECK(twice["ticks"][7] == json::parse("[158,-158]"));  // frame 158 is tick 1
 
   // A page holding frames 0-2 lacks the supervisor that fired at frame 3; one holding 4 does not.
   live::LiveRecording page(outer_page());
