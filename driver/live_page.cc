@@ -1,6 +1,7 @@
 #include "live_page.h"
 
 #include "backend_registry.h"
+#include "chart_nodes.h"
 #include "driver.h"
 #include "escape.h"
 #include "external_tool.h"
@@ -39,11 +40,11 @@ viewer::ChartOutline chart_outline(const model::Model &model, model::ChartId c) 
   return outline;
 }
 
-std::pair<std::string, std::string> chart_picture(const model::Model &model, model::ChartId c,
-                                                  const std::string &input) {
+namespace {
+
+/// The picture of the chart or plan `emit` names.
+std::pair<std::string, std::string> picture(EmitOptions emit, const model::Model &model, const std::string &input) {
   try {
-    EmitOptions emit;
-    emit.chart = c;
     emit.output_path = "chart.svg";
     emit.source_name = input;
     if (auto backend = make_backend("svg"))
@@ -52,6 +53,50 @@ std::pair<std::string, std::string> chart_picture(const model::Model &model, mod
   } catch (const ToolTimeLimit &) { throw; } catch (const std::exception &e) {
     return {"", fmt::format("no diagram: {}", e.what())};
   }
+}
+
+}  // namespace
+
+std::pair<std::string, std::string> chart_picture(const model::Model &model, model::ChartId c,
+                                                  const std::string &input) {
+  EmitOptions emit;
+  emit.chart = c;
+  return picture(emit, model, input);
+}
+
+live::LiveChart live_plan(const model::Model &model, const trace::PlanLayout &layout, const std::string &input,
+                          std::string source) {
+  const model::Plan &plan = model.plans.at(layout.plan);
+  live::LiveChart out;
+  out.name = plan.name;
+  out.kind = "plan";
+  out.file = input;
+  // A plan has no period (its executor steps it): 10 ms frames, a stepped executor's usual step.
+  out.period = 0.01;
+  for (const trace::PlanLevel &level : layout.levels) {
+    out.level_rows.push_back(out.rows.size());
+    for (std::size_t a = 0; a < level.actors.size(); ++a) {
+      if (level.path.empty()) out.rows.push_back({level.actors[a], chart_nodes::actor(a), false, "", -1});
+      else out.rows.push_back({level.path + "/" + level.actors[a], "", false, level.path, -1});
+    }
+    if (!level.path.empty())
+      out.instances.push_back(
+          {level.path, model.plans.at(level.plan).name, out.level_rows.back(), level.actors.size(), 0});
+  }
+  // The trace numbers the supervisors as the wiring adds them: the globals, then each actor's.
+  for (std::size_t g = 0; g < plan.globals.size(); ++g)
+    out.supervisor_nodes.push_back(chart_nodes::global_supervisor(g));
+  std::size_t a = 0;
+  for (const model::ActorUse &actor : plan.actors) {
+    for (std::size_t s = 0; s < actor.supervisors.size(); ++s)
+      out.supervisor_nodes.push_back(chart_nodes::supervisor(a, s));
+    ++a;
+  }
+  EmitOptions emit;
+  emit.plan = layout.plan;
+  std::tie(out.svg, out.svg_note) = picture(emit, model, input);
+  out.source = std::move(source);
+  return out;
 }
 
 live::LiveChart live_chart(const model::Model &model, model::ChartId c, const std::string &input, std::string source) {

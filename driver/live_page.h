@@ -4,6 +4,7 @@
 
 #include "live_recording.h"
 #include "model.h"
+#include "plan_trace_format.h"
 #include "recording.h"
 
 #include <functional>
@@ -25,6 +26,12 @@ std::pair<std::string, std::string> chart_picture(const model::Model &model, mod
 /// What the live page shows of chart `c` before a tick arrives: rows, instances, picture, period.
 /// `source` names the stream ("stdin", "tcp 127.0.0.1:5000").
 live::LiveChart live_chart(const model::Model &model, model::ChartId c, const std::string &input, std::string source);
+
+/// What the live page shows of plan `p` (docs/live.md "Plans on the live page"): its actors' rows
+/// (node "aN" in its picture), then each sub-plan level's actors, grouped by the level's path, in
+/// the trace's level order (`layout`); the picture; the node of each of its supervisors.
+live::LiveChart live_plan(const model::Model &model, const trace::PlanLayout &layout, const std::string &input,
+                          std::string source);
 
 /// The monitor's --http: serves `recording`'s page on `address` ("127.0.0.1:8080", port 0: a free
 /// one; a non-loopback host only with `allow_remote`), prints the page's address to `err`, runs

@@ -70,7 +70,8 @@ void add_options(CLI::App &app, MonitorOptions &o, FrontEndFlags &front_end) {
       ->check(CLI::Range(0.0, 86400.0));
   app.add_option("--http", o.http,
                  "Serve the live page on HOST:PORT (loopback only; port 0: a free one, printed): the run viewer "
-                 "with the chart lit as ticks arrive (docs/live.md)")
+                 "with the chart lit as ticks arrive, or a plan's running actors as its events arrive "
+                 "(docs/live.md)")
       ->type_name("HOST:PORT");
   app.add_flag("--http-remote", o.http_remote,
                "Serve the live page on an address that is not loopback too (it has no login: anyone who reaches "
@@ -93,6 +94,11 @@ void report_refusal(DiagnosticReport &report, const std::string &input, const pi
   report.add(input, diag, c.sources);
 }
 
+/// Where the stream comes from, for the live page's subtitle.
+std::string source_name(const MonitorOptions &o) {
+  return !o.serial.empty() ? "serial " + o.serial : !o.tcp.empty() ? "tcp " + o.tcp : "stdin";
+}
+
 /// The source's file descriptor (0 for stdin), or -1 with `why` set.
 int open_source(const MonitorOptions &o, std::string &why) {
   if (!o.serial.empty()) return monitor::open_serial(o.serial, o.baud, why);
@@ -100,14 +106,10 @@ int open_source(const MonitorOptions &o, std::string &why) {
   return 0;
 }
 
-/// A plan's stream (afp::LinkTrace, docs/live.md "Plans"): its events as a log.
+/// A plan's stream (afp::LinkTrace, docs/live.md "Plans"): its events as a log, on the live page
+/// or both.
 int monitor_plan(const MonitorOptions &o, const pipeline::Compilation &c, model::PlanId plan, DiagnosticReport &report,
                  std::ostream &out, std::ostream &err) {
-  if (!o.http.empty()) {
-    report.tool_error(o.input, "--http: the live page shows sfc and fsm charts; a plan's stream is shown with --log",
-                      false);
-    return kExitUsageOrIo;
-  }
   const trace::PlanLayout layout = trace::plan_layout_of(c.model, plan);
   std::string why;
   const int fd = open_source(o, why);
@@ -115,26 +117,49 @@ int monitor_plan(const MonitorOptions &o, const pipeline::Compilation &c, model:
     report.tool_error(o.input, why, false);
     return kExitUsageOrIo;
   }
+  std::unique_ptr<live::LiveRecording> page;
+  if (!o.http.empty()) {
+    try {
+      page = std::make_unique<live::LiveRecording>(live_plan(c.model, layout, o.input, source_name(o)));
+    } catch (const ToolTimeLimit &e) {
+      if (fd != 0) ::close(fd);
+      report.tool_error(o.input, e.what(), false);
+      return kExitInputError;
+    }
+  }
   monitor::PlanLogSink log(c.model, layout, out);
-  monitor::PlanTraceDecoder decoder(c.model, layout, log);
-  const std::string read_error = monitor::read_stream(
-      fd, o.silence, log, [&](const unsigned char *data, std::size_t n) { decoder.feed(data, n); },
-      [&] { return decoder.refused(); });
-  if (fd != 0) ::close(fd);
-  decoder.finish();
-  if (decoder.refused()) {
-    report_refusal(report, o.input, c, c.model.plans.at(plan).range, decoder.refusal());
-    return kExitInputError;
-  }
-  err << fmt::format("gfec monitor: {} frame{} decoded ({} event{}), {} lost, {} byte{} garbled\n",
-                     decoder.frames_shown(), decoder.frames_shown() == 1 ? "" : "s", decoder.events_shown(),
-                     decoder.events_shown() == 1 ? "" : "s", decoder.events_lost(), decoder.bytes_garbled(),
-                     decoder.bytes_garbled() == 1 ? "" : "s");
-  if (!read_error.empty()) {
-    report.tool_error(o.input, "reading the trace: " + read_error, false);
-    return kExitUsageOrIo;
-  }
-  return kExitOk;
+  std::unique_ptr<live::TeeSink> both;
+  if (o.log && page) both = std::make_unique<live::TeeSink>(static_cast<monitor::PlanSink &>(log), *page);
+  monitor::PlanSink &sink = both   ? static_cast<monitor::PlanSink &>(*both)
+                            : page ? static_cast<monitor::PlanSink &>(*page)
+                                   : static_cast<monitor::PlanSink &>(log);
+  monitor::PlanTraceDecoder decoder(c.model, layout, sink);
+  const double silence = page && !o.silence_given ? 1.0 : o.silence;
+  auto read = [&]() -> int {
+    const std::string read_error = monitor::read_stream(
+        fd, silence, sink, [&](const unsigned char *data, std::size_t n) { decoder.feed(data, n); },
+        [&] { return decoder.refused(); });
+    if (fd != 0) ::close(fd);
+    decoder.finish();
+    if (decoder.refused()) {
+      report_refusal(report, o.input, c, c.model.plans.at(plan).range, decoder.refusal());
+      if (page) page->ended(decoder.refusal());
+      return kExitInputError;
+    }
+    if (page) page->ended(read_error.empty() ? "the end of the stream" : "reading the trace: " + read_error);
+    err << fmt::format("gfec monitor: {} frame{} decoded ({} event{}), {} lost, {} byte{} garbled\n",
+                       decoder.frames_shown(), decoder.frames_shown() == 1 ? "" : "s", decoder.events_shown(),
+                       decoder.events_shown() == 1 ? "" : "s", decoder.events_lost(), decoder.bytes_garbled(),
+                       decoder.bytes_garbled() == 1 ? "" : "s");
+    if (!read_error.empty()) {
+      report.tool_error(o.input, "reading the trace: " + read_error, false);
+      return kExitUsageOrIo;
+    }
+    return kExitOk;
+  };
+  if (!page) return read();
+  return serve_live_page(
+      *page, o.http, o.http_remote, [&] { read(); }, err);
 }
 
 int monitor_with(const MonitorOptions &o, DiagnosticReport &report, std::ostream &out, std::ostream &err) {
@@ -142,7 +167,14 @@ int monitor_with(const MonitorOptions &o, DiagnosticReport &report, std::ostream
                                                    pipeline::kSfc | pipeline::kFsm | pipeline::kPlan);
   if (loaded.exit_code != kExitOk) return loaded.exit_code;
   const pipeline::Compilation &c = *loaded.compilation;
-  if (loaded.plan) return monitor_plan(o, c, loaded.plan, report, out, err);
+  if (loaded.plan) {
+    if (o.robots > 1) {
+      report.tool_error(o.input, "--robots: the live page shows one plan's stream (one gfec monitor per robot's plan)",
+                        false);
+      return kExitUsageOrIo;
+    }
+    return monitor_plan(o, c, loaded.plan, report, out, err);
+  }
   const model::ChartId chart = loaded.chart;
   const trace::Layout layout = trace::layout_of(c.model, chart);
 
@@ -155,9 +187,8 @@ int monitor_with(const MonitorOptions &o, DiagnosticReport &report, std::ostream
   // --http: the live page's recording, fed beside (or instead of) the log.
   std::unique_ptr<live::LiveRecording> page;
   if (!o.http.empty()) {
-    const std::string source = !o.serial.empty() ? "serial " + o.serial : !o.tcp.empty() ? "tcp " + o.tcp : "stdin";
     try {
-      page = std::make_unique<live::LiveRecording>(live_chart(c.model, chart, o.input, source),
+      page = std::make_unique<live::LiveRecording>(live_chart(c.model, chart, o.input, source_name(o)),
                                                    static_cast<std::size_t>(o.robots));
     } catch (const ToolTimeLimit &e) {
       report.tool_error(o.input, e.what(), false);

@@ -121,17 +121,21 @@ bool PlanTraceDecoder::decode(const std::uint8_t *payload, std::size_t length, D
   case trace::PlanRecord::Started:
     if (!read_number(payload, length, at, a) || a >= l.actors.size()) return false;
     e.text = fmt::format("start {}.{}", plan, l.actors[a]);
+    e.actor = a;
     break;
   case trace::PlanRecord::Finished:
     if (!read_number(payload, length, at, a) || a >= l.actors.size() || !read_number(payload, length, at, b))
       return false;
     e.text = fmt::format("finish {}.{} state {}", plan, l.actors[a], zigzag(b));
+    e.actor = a;
     break;
   case trace::PlanRecord::Interrupted:
     if (!read_number(payload, length, at, a) || a >= l.actors.size() || !read_number(payload, length, at, b) ||
         b >= l.supervisors.size() || !read_number(payload, length, at, c))
       return false;
     e.text = fmt::format("interrupt {}.{} by {} event {}", plan, l.actors[a], l.supervisors[b], zigzag(c));
+    e.actor = a;
+    e.supervisor = b;
     break;
   case trace::PlanRecord::Failed: {
     if (!read_number(payload, length, at, a) || a >= l.actors.size() + l.supervisors.size() ||
@@ -149,6 +153,7 @@ bool PlanTraceDecoder::decode(const std::uint8_t *payload, std::size_t length, D
   case trace::PlanRecord::Ended:
     if (!read_number(payload, length, at, a) || a >= std::size(kStatus)) return false;
     e.text = fmt::format("end {} {}", plan, kStatus[a]);
+    e.status = kStatus[a];
     break;
   case trace::PlanRecord::State: break;
   }

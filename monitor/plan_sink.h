@@ -20,6 +20,12 @@ struct DecodedPlanEvent {
   /// The event as an afp::TraceObserver's log writes it ("start WallFollow.followWall"); empty
   /// for a frame of the state alone (LinkTrace::heartbeat).
   std::string text;
+  /// The record's actor (started, finished, interrupted) in its level's declaration order, and
+  /// an interrupt's supervisor (PlanLevel::supervisors); npos for the others.
+  std::size_t actor = static_cast<std::size_t>(-1);
+  std::size_t supervisor = static_cast<std::size_t>(-1);
+  /// An ended plan's status ("succeeded", "interrupted", "failed", "stopped"); "" for the others.
+  std::string status;
   /// After the event, by level: the running actor's number + 1, 0 for none.
   std::vector<std::uint32_t> active;
 };

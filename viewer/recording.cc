@@ -180,8 +180,14 @@ nlohmann::json RecordingBuilder::since(const Cursor &c) const {
     const auto &[k, kind, text] = events_[i];
     events.push_back({k, kind, text});
   }
+  // A plan's supervisors fire at the frame being added (a live monitor adds them so): a page
+  // holding frames before c.frames lacks those from c.frames on.
+  json fired = json::array();
+  for (const json &f : fired_)
+    if (f[0].get<long>() >= c.frames) fired.push_back(f);
   json doc = {{"frames", frames_},
               {"active", active_.since(c.frames)},
+              {"fired", fired},
               {"status", status_.since(c.frames)},
               {"calls", robots_.empty() ? calls_.since(c.frames, texts(0)) : json(nullptr)},
               {"events", events},

@@ -92,7 +92,8 @@ public:
   void set_vars_note(std::string note) { vars_note_ = std::move(note); }
   /// An entry of the events list; events are listed in frame order, those of one frame as added.
   void add_event(long frame, std::string kind, std::string text);
-  /// A plan's supervisor that fired: its node, lit for a second, and what it was.
+  /// A plan's supervisor that fired: its node, lit for a second, and what it was. A live
+  /// recording adds it at the frame it is about to add (since() hands on those from its cursor).
   void add_fired(long frame, std::string node, std::string text);
   /// A part of the recording this builder does not know (a world, a path, items): kept as given.
   void set(const std::string &key, nlohmann::json value);

@@ -18,6 +18,11 @@ LiveRecording::LiveRecording(const LiveChart &chart, std::size_t robots)
       done_(robots_, false), last_rows_(robots_) {
   rec_.set_picture(chart.svg, chart.svg_note);
   rec_.set_title(chart.name + " (" + chart.kind + "): live", "gfec monitor " + chart.file + " \u00b7 " + chart.source);
+  plan_ = chart.kind == "plan";
+  period_ = chart.period;
+  level_rows_ = chart.level_rows;
+  supervisor_nodes_ = chart.supervisor_nodes;
+  for (std::size_t row : level_rows_) level_paths_.push_back(row < chart.rows.size() ? chart.rows[row].group : "");
   if (robots_ == 1) {
     for (const viewer::Row &row : chart.rows) rec_.add_row(row);
     for (const viewer::Instance &in : chart.instances) rec_.add_instance(in);
@@ -67,6 +72,55 @@ void LiveRecording::tick(const monitor::DecodedTick &t) {
   p.ticks[t.robot] = t;
   if (!t.status.empty() && t.status != "running") done_[t.robot] = true;
   flush_team(false);
+}
+
+void LiveRecording::event(const monitor::DecodedPlanEvent &e) {
+  using trace::PlanRecord;
+  std::lock_guard<std::mutex> lock(m_);
+  if (state_ == "waiting") state_ = "live";
+  silent_ = 0;
+  const std::uint32_t period_ms = std::max<std::uint32_t>(1, static_cast<std::uint32_t>(period_ * 1000 + 0.5));
+  const std::int64_t tick = e.ms / period_ms + 1;
+  std::vector<std::size_t> on;
+  for (std::size_t level = 0; level < e.active.size() && level < level_rows_.size(); ++level)
+    if (e.active[level] > 0) on.push_back(level_rows_[level] + e.active[level] - 1);
+  std::sort(on.begin(), on.end());
+  // The frames between the last event and this one: the last event's state, which held. Not
+  // across a loss (what ran then is unknown: the tick numbers jump) nor a plan time that went
+  // back (the trace started again), and at most an hour of frames.
+  constexpr std::int64_t kMaxFill = 360000;
+  if (rec_.frames() > 0 && !plan_gap_ && tick > last_frame_tick_ + 1 && tick - last_frame_tick_ <= kMaxFill)
+    for (std::int64_t t = last_frame_tick_ + 1; t < tick; ++t) rec_.add_tick(last_rows_[0]);
+  const long frame = rec_.frames();
+  tick_offset_.record(frame, static_cast<long>(tick) - frame - 1);
+  last_frame_tick_ = tick;
+  plan_gap_ = false;
+  // The first frame, or the plan run again after it ended (a program that starts it anew).
+  if (frame == 0 || (status_[0] != "running" && e.record != PlanRecord::Ended)) {
+    status_[0] = "running";
+    rec_.record_status(frame, "running");
+  }
+  switch (e.record) {
+  case PlanRecord::Started: rec_.add_event(frame, "actor", e.text); break;
+  case PlanRecord::Finished: rec_.add_event(frame, "state", e.text); break;
+  case PlanRecord::Interrupted:
+    rec_.add_event(frame, "supervisor", e.text);
+    // The picture is the plan's own: a sub-plan's supervisor is said, not lit.
+    rec_.add_fired(
+        frame, e.level == 0 && e.supervisor < supervisor_nodes_.size() ? supervisor_nodes_[e.supervisor] : "", e.text);
+    break;
+  case PlanRecord::Failed: rec_.add_event(frame, "fail", e.text); break;
+  case PlanRecord::Ended:
+    rec_.add_event(frame, "status", e.text);
+    if (e.level == 0) {
+      status_[0] = e.status;
+      rec_.record_status(frame, e.status);
+    }
+    break;
+  case PlanRecord::State: break;
+  }
+  last_rows_[0] = on;
+  rec_.add_tick(on);
 }
 
 void LiveRecording::flush_team(bool all) {
@@ -136,8 +190,11 @@ void LiveRecording::lost(std::size_t robot, std::uint64_t ticks_missing, const s
   lost_ticks_ += ticks_missing;
   ++losses_;
   last_loss_ = why;
-  std::string text = ticks_missing ? std::to_string(ticks_missing) + " tick" + (ticks_missing == 1 ? "" : "s") + " lost"
-                                   : "ticks lost";
+  plan_gap_ = true;
+  const std::string unit = plan_ ? "event" : "tick";
+  std::string text = ticks_missing
+                         ? std::to_string(ticks_missing) + " " + unit + (ticks_missing == 1 ? "" : "s") + " lost"
+                         : unit + "s lost";
   if (robots_ > 1) text = robot_name(robot) + ": " + text;
   if (!why.empty()) text += ": " + why;
   // Before the next frame shown: the gap is between the last frame and it.
@@ -158,15 +215,23 @@ void LiveRecording::ended(const std::string &why) {
 }
 
 nlohmann::json LiveRecording::link() const {
-  return {{"state", state_},         {"silent", silent_},   {"lost_ticks", lost_ticks_}, {"losses", losses_},
-          {"last_loss", last_loss_}, {"ended", ended_why_}, {"waiting", pending_.size()}};
+  return {{"state", state_},
+          {"silent", silent_},
+          {"lost_ticks", lost_ticks_},
+          {"losses", losses_},
+          {"last_loss", last_loss_},
+          {"ended", ended_why_},
+          {"waiting", pending_.size()},
+          {"unit", plan_ ? "event" : "tick"}};
 }
 
 nlohmann::json LiveRecording::page_data() const {
   std::lock_guard<std::mutex> lock(m_);
   nlohmann::json d = rec_.data();
   d["ticks"] = tick_offset_.json();
-  d["calls_note"] = "";
+  d["calls_note"] = plan_ ? "A plan's actors and supervisors are C++ classes of the toolbox: the trace carries "
+                            "no calls; the events list their starts, finishes and interruptions."
+                          : "";
   d["live"] = {{"update", "live"}, {"link", link()}};
   return d;
 }

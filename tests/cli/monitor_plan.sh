@@ -5,8 +5,8 @@
 # tests (tests/run/cpp/run_plan.cc), which logs what its afp::TraceObserver hears and, beside it,
 # writes an afp::LinkTrace's frames to a file. `gfec monitor PLAN --log` must print the harness's
 # event lines exactly. Then a garbled stream, a cut one, another plan's stream, a chart engine's
-# stream given to a plan and a plan's to a chart (exit 1, located); the square once on the threaded
-# executor. About 20 s (three compiles).
+# stream given to a plan and a plan's to a chart (exit 1, located), --robots for a plan (exit 2);
+# the square once on the threaded executor. About 20 s (three compiles).
 # Usage: monitor_plan.sh GFEC SOURCE_DIR RUNTIME_LIBRARY [LINK_FLAGS]
 set -euo pipefail
 gfec=$(realpath "$1") source_dir=$(realpath "$2") runtime=$(realpath "$3") link_flags=${4:-}
@@ -130,8 +130,9 @@ status=0
 [ "$status" = 1 ] && grep -q "error: the stream comes from a plan's afp::LinkTrace" plan.err ||
   fail "a plan's stream to a chart: exit $status, $(cat plan.err)"
 
-# --http is for charts.
+# The live page shows one plan's stream (tests/viewer/live.test.js shows it): --robots is refused.
 status=0
-"$gfec" monitor "$wall" --http 127.0.0.1:0 < long.bin > /dev/null 2> http.err || status=$?
-[ "$status" = 2 ] || fail "--http on a plan: exit $status, $(cat http.err)"
-echo "refusals: another plan, a chart's engine, a plan to a chart monitor, --http: as documented"
+"$gfec" monitor "$wall" --tcp 127.0.0.1:1 --robots 2 --http 127.0.0.1:0 > /dev/null 2> robots.err || status=$?
+[ "$status" = 2 ] && grep -q "error: --robots: the live page shows one plan's stream" robots.err ||
+  fail "--robots on a plan: exit $status, $(cat robots.err)"
+echo "refusals: another plan, a chart's engine, a plan to a chart monitor, --robots: as documented"

@@ -2,10 +2,12 @@
 // back end wires a plan, against gfec's own reading of the same plan text: the two fingerprints
 // agree (and differ for another plan), the frames are laid out byte for byte as documented, and
 // the decoder gives the events back as an observer's log — read in any chunking, after garbled
-// bytes, joined late, or refused for another plan. Runs of generated plans are
-// tests/cli/monitor_plan.sh's.
+// bytes, joined late, or refused for another plan; decoded into the live page's recording, the
+// frames and events a page of the run holds. Runs of generated plans are
+// tests/cli/monitor_plan.sh's and tests/viewer/live.test.js's.
 #include "../run/cpp_backend_support.h"
 
+#include "live_recording.h"
 #include "plan_decoder.h"
 #include "plan_log_sink.h"
 #include "plan_trace_format.h"
@@ -294,4 +296,111 @@ TEST_CASE("plan trace: heartbeats, a late monitor, garbled bytes and another pla
                Catch::StartsWith("the stream comes from another plan: its fingerprint is " +
                                  fmt::format("{:08x}, the plan's {:08x}", other.fingerprint(), m.layout.fingerprint)));
   }
+}
+
+namespace {
+
+/// Outer as `gfec monitor --http` shows it (driver/live_page.cc live_plan): its actors, then the
+/// sub-plan's under "sub"; supervisors g (global) and t (x's) in the trace's order.
+live::LiveChart outer_page() {
+  live::LiveChart c;
+  c.name = "Outer";
+  c.kind = "plan";
+  c.file = "plans.plan";
+  c.rows = {{"x", "a0", false, "", -1},
+            {"sub", "a1", false, "", -1},
+            {"sub/a", "", false, "sub", -1},
+            {"sub/b", "", false, "sub", -1}};
+  c.instances = {{"sub", "Inner", 2, 2, 0}};
+  c.level_rows = {0, 2};
+  c.supervisor_nodes = {"g0", "s0_0"};
+  c.source = "stdin";
+  return c;
+}
+
+nlohmann::json page_of(const Model &m, const std::string &bytes) {
+  live::LiveRecording page(outer_page());
+  monitor::PlanTraceDecoder d(m.compiled->model, m.layout, page);
+  d.feed(reinterpret_cast<const std::uint8_t *>(bytes.data()), bytes.size());
+  d.finish();
+  page.ended("the end of the stream");
+  return page.page_data();
+}
+
+}  // namespace
+
+TEST_CASE("plan trace on the live page: frames of plan time, the running actors, events and supervisors",
+          "[live][plan]") {
+  using nlohmann::json;
+  const Model m = compile_plans();
+  Recorded r;
+  play(r);
+  const json d = page_of(m, r.bytes());
+  CHECK(d["chart"]["kind"] == "plan");
+  CHECK(d["period"] == 0.01);
+  // A frame is 10 ms: x runs from 0 ms (tick 1), is interrupted at 30 ms (tick 4; the frames
+  // between hold x) and starts again in a frame of its own at that tick; it finishes at 1500 ms
+  // (tick 151), when sub and inside it Inner's a start, each in a frame of its own.
+  const json active = d["active"];
+  REQUIRE(active.size() >= 6);
+  CHECK(json(std::vector<json>(active.begin(), active.begin() + 6)) ==
+        json::parse("[[0,[0]],[3,[]],[4,[0]],[151,[]],[152,[1]],[153,[1,2]]]"));
+  CHECK(active.back()[1] == json::array());
+  CHECK(d["frames"] == 158);
+  // The engine's "tick" of each frame (tick - frame - 1): events at one tick share it.
+  CHECK(d["ticks"] == json::parse("[[0,0],[4,-1],[152,-2],[153,-3],[155,-4],[156,-5],[157,-6]]"));
+  CHECK(d["fired"] == json::parse(R"([[3,"s0_0","interrupt Outer.x by t event 0"]])"));
+  CHECK(d["status"] == json::parse(R"([[0,"running"],[157,"succeeded"]])"));
+  std::vector<std::string> kinds;
+  for (const json &e : d["events"]) kinds.push_back(std::to_string(e[0].get<long>()) + " " + e[1].get<std::string>());
+  CHECK(kinds == std::vector<std::string>{"0 actor", "3 supervisor", "4 actor", "151 state", "152 actor", "153 actor",
+                                          "154 fail", "155 status", "156 state", "157 status", "157 note"});
+  CHECK(d["events"][9][2] == "end Outer succeeded");
+  CHECK(d["live"]["link"]["state"] == "ended");
+  CHECK(d["live"]["link"]["unit"] == "event");
+}
+
+TEST_CASE("plan trace on the live page: a lost event leaves a jump, a plan run again, an update brings what fired",
+          "[live][plan]") {
+  using nlohmann::json;
+  const Model m = compile_plans();
+  Recorded r;
+  play(r);
+  // Without "1500 finish Outer.x": the next frame shown (sub starts) has no fill before it.
+  std::string bytes;
+  for (std::size_t i = 0; i < r.frames.size(); ++i)
+    if (i != 3) bytes += r.frames[i];
+  const json d = page_of(m, bytes);
+  CHECK(d["ticks"][1] == json::parse("[4,-1]"));
+  CHECK(d["ticks"][2] == json::parse("[5,145]"));  // frame 5 is tick 151
+  bool lost = false;
+  for (const json &e : d["events"])
+    if (e[1] == "lost") {
+      CHECK(e[0] == 5);
+      CHECK(e[2] == "1 event lost: frames missing from the stream");
+      lost = true;
+    }
+  CHECK(lost);
+  CHECK(d["live"]["link"]["lost_ticks"] == 1);
+
+  // The plan run again after its end (the same LinkTrace, its plan time from 0 again): a frame
+  // without fill, the status running again.
+  Recorded again;
+  play(again);
+  play(again);
+  const json twice = page_of(m, again.bytes());
+  CHECK(twice["frames"] == 316);
+  CHECK(twice["status"] == json::parse(R"([[0,"running"],[157,"succeeded"],[158,"running"],[315,"succeeded"]])"));
+  CHECK(twice["ticks"][7] == json::parse("[158,-158]"));  // frame 158 is tick 1
+
+  // A page holding frames 0-2 lacks the supervisor that fired at frame 3; one holding 4 does not.
+  live::LiveRecording page(outer_page());
+  monitor::PlanTraceDecoder dec(m.compiled->model, m.layout, page);
+  const std::string all = r.bytes();
+  dec.feed(reinterpret_cast<const std::uint8_t *>(all.data()), all.size());
+  viewer::RecordingBuilder::Cursor c;
+  c.frames = 3;
+  CHECK(page.update(c)["fired"].size() == 1);
+  c.frames = 4;
+  CHECK(page.update(c)["fired"].empty());
 }

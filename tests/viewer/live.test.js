@@ -15,7 +15,7 @@ const fs = require('node:fs');
 const os = require('node:os');
 const path = require('node:path');
 const { launchChromium } = require('./chromium.js');
-const { liveStream } = require('./live_stream.js');
+const { liveStream, planStream } = require('./live_stream.js');
 
 const out = process.env.VIEWER_OUT;
 fs.mkdirSync(out, { recursive: true });
@@ -157,6 +157,91 @@ test('live page: the chart lit as a real engine\'s ticks arrive; pause, step bac
     assert.match(String(refused.stderr), /not a loopback address/);
     console.log(`live page: ${last.frames} ticks in 4 parts (${samples.map((x) => x.frames).join(', ')}), ` +
                 `screenshot ${path.join(out, 'live-line_follower.png')}`);
+  } finally {
+    await page.close();
+    monitor.child.kill('SIGTERM');
+  }
+});
+
+test('live plan page: the running actor lit as a plan\'s LinkTrace frames arrive; events at their plan time', { skip: process.env.AFP_RUNTIME ? false : 'the afp runtime is not built' }, async () => {
+  const s = planStream();
+  const events = s.frames.filter((f) => f.event);
+  assert.equal(events.length, s.events.length, 'a frame per event the observer heard');
+  assert.ok(s.frames.length > events.length, 'heartbeats too');
+  const monitor = startMonitor(s.command);
+  const page = await browser.newPage();
+  const errors = [];
+  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+  page.on('pageerror', (e) => errors.push(String(e)));
+  const eventTexts = () => page.evaluate(() => [...document.querySelectorAll('#events li')].map((li) => li.textContent));
+  try {
+    await page.goto(await monitor.url, { waitUntil: 'load' });
+    assert.equal((await shown(page)).frames, 0);
+    assert.match((await shown(page)).banner, /waiting for the stream.s first event/);
+    // Four parts, each ending with an event's frame: after each the page follows to that frame,
+    // its tick the event's plan time (10 ms frames), the running actor it says lit (aN).
+    const ends = [];
+    s.frames.forEach((f, i) => { if (f.event) ends.push(i); });
+    const samples = [];
+    let fed = 0;
+    for (let part = 1; part <= 4; ++part) {
+      const last = ends[Math.floor(ends.length * part / 4) - 1];
+      for (; fed <= last; ++fed) monitor.child.stdin.write(s.frames[fed].bytes);
+      const want = s.frames.slice(0, fed).filter((f) => f.event).length;
+      // The events first: once they are all there, so are the part's frames (one update holds both).
+      const now = await until(`the events of part ${part}`, async () => {
+        if ((await eventTexts()).length !== want) return null;
+        const v = await shown(page);
+        return v.frame === v.frames - 1 ? v : null;
+      });
+      const f = s.frames[last];
+      assert.ok(now.following);
+      assert.equal(now.tick, Math.floor(f.ms / 10) + 1, `part ${part}: the newest frame is the event at ${f.ms} ms`);
+      assert.deepEqual(now.lit, f.active ? [`a${f.active - 1}`] : [], `part ${part}: the running actor at ${f.ms} ms`);
+      samples.push(now);
+    }
+    assert.equal(fed, s.frames.length, 'the last frame is an event (the plan\'s end)');
+    assert.ok(new Set(samples.map((v) => v.lit.join())).size > 1,
+              `the lit actor changed as frames arrived: ${samples.map((v) => v.lit.join(' ')).join(' | ')}`);
+    // Every event listed at its plan time, as the harness's observer logged it.
+    const listed = await eventTexts();
+    assert.deepEqual(listed, s.events.map((l) => {
+      const [ms, ...text] = l.split(' ');
+      return `${(Number(ms) / 1000).toFixed(2)} s  ${text.join(' ')}`;
+    }));
+    // Back through every frame: the last frame of each tick is lit as the last plan frame at or
+    // before that tick says (the frames between two events hold the state after the first).
+    const all = await page.evaluate(() => {
+      const got = [];
+      for (let k = 0; k < window.gfecViewer.live.frames(); ++k) {
+        window.gfecViewer.seek(k);
+        got.push({ tick: parseInt(document.getElementById('r-tick').textContent, 10),
+                   lit: [...document.querySelectorAll('#chart g.node.lit')].map((g) => g.dataset.node).sort() });
+      }
+      return got;
+    });
+    let checked = 0;
+    all.forEach((v, k) => {
+      if (k + 1 < all.length && all[k + 1].tick === v.tick) return;
+      const before = s.frames.slice(0, fed).filter((f) => Math.floor(f.ms / 10) + 1 <= v.tick);
+      const f = before[before.length - 1];
+      assert.deepEqual(v.lit, f.active ? [`a${f.active - 1}`] : [], `tick ${v.tick} (frame ${k})`);
+      ++checked;
+    });
+    assert.ok(checked > 20, `${checked} ticks checked`);
+    monitor.child.stdin.end();
+    await until('the end banner', async () => /ended/.test((await shown(page)).banner), 10000);
+    await page.click('#b-live');
+    const end = await shown(page);
+    assert.deepEqual(end.lit, s.frames[s.frames.length - 1].active ? [`a${s.frames[s.frames.length - 1].active - 1}`] : []);
+    // The screenshot (docs/images/live-plan.png): paused where the wall is followed.
+    await page.evaluate(() => [...document.querySelectorAll('#events li')]
+      .find((li) => /start WallFollow\.followWall$/.test(li.textContent)).click());
+    assert.equal((await shown(page)).lit.length, 1, 'an actor lit at followWall\'s start');
+    await page.screenshot({ path: path.join(out, 'live-plan.png') });
+    assert.deepEqual(errors, [], 'console errors');
+    console.log(`live plan page: ${s.frames.length} frames (${events.length} events) in 4 parts, ` +
+                `screenshot ${path.join(out, 'live-plan.png')}`);
   } finally {
     await page.close();
     monitor.child.kill('SIGTERM');

@@ -33,4 +33,43 @@ function liveStream() {
   }
 }
 
-module.exports = { liveStream };
+/// A plan's stream: samples/wall_follow.plan's generated wiring run by the cpp back end's run
+/// harness (tests/run/cpp/run_plan.cc, as tests/cli/monitor_plan.sh builds it) over a script,
+/// its afp::LinkTrace frames kept apart, with what each says as docs/live.md "The plan frame" lays
+/// it out: the plan time, whether it is an event (not a heartbeat), the running actor after it.
+/// And the events the harness's observer logged. Needs AFP_RUNTIME (the runtime library).
+function planStream() {
+  const src = process.env.GFEC_SOURCE_DIR, gfec = process.env.GFEC;
+  const plan = path.join(src, 'samples/wall_follow.plan');
+  const work = fs.mkdtempSync(path.join(os.tmpdir(), 'gfec-live-plan-'));
+  try {
+    execFileSync(gfec, [plan, '-w', '-o', path.join(work, 'wall.cpp')]);
+    const runDir = path.join(src, 'tests/run/cpp'), harness = path.join(work, 'wall');
+    execFileSync(process.env.CXX || 'c++', ['-std=c++17', '-I', work, '-I', runDir, '-I', path.join(src, 'runtime/include'),
+                                           '-DPLAN_HEADER="wall.hpp"', '-DPLAN_FACTORY=make_WallFollow', '-DPLAN_ENV=Carbot',
+                                           path.join(runDir, 'run_plan.cc'), path.join(work, 'wall.cpp'),
+                                           process.env.AFP_RUNTIME, '-pthread', '-o', harness]);
+    // The lane closes, a wall is found and followed (long enough for heartbeats), a touch, escape.
+    const script = '\n\nlane=25\nwall=15\n\nset:walldist=40\nblocked\n\n\ntouch\n' + '\n'.repeat(40) +
+                   'wall=-20\n\nescape\n';
+    const link = path.join(work, 'wall.bin');
+    const log = execFileSync(harness, [`link=${link}`], { input: script, encoding: 'utf8' });
+    const bytes = fs.readFileSync(link);
+    const frames = [];
+    for (let at = 0; at < bytes.length;) {
+      const length = bytes.readUInt16LE(at + 4), payload = bytes.subarray(at + 14, at + 14 + length);
+      let i = 0;
+      const number = () => { let v = 0, shift = 0, b; do { b = payload[i++]; v += (b & 0x7f) * 2 ** shift; shift += 7; } while (b & 0x80); return v; };
+      const ms = number(), record = number();
+      frames.push({ bytes: bytes.subarray(at, at + 18 + length), ms, event: record !== 5,
+                    active: payload[length - 1] });  // one level: the last number, below 128
+      at += 18 + length;
+    }
+    const events = log.split('\n').filter((l) => /^\d+ /.test(l));
+    return { command: [gfec, 'monitor', plan, '--http', '127.0.0.1:0'], frames, events };
+  } finally {
+    fs.rmSync(work, { recursive: true, force: true });
+  }
+}
+
+module.exports = { liveStream, planStream };

@@ -92,7 +92,7 @@
       var fi = valueAt(D.fired.map(function (f, i) { return [f[0], i]; }), frame, -1);
       if (fi >= 0) {
         var f = D.fired[fi];
-        document.getElementById('r-fired').textContent = f[2] + ' at ' + fmt(f[0] * period, 2) + ' s';
+        document.getElementById('r-fired').textContent = f[2] + ' at ' + fmt((tickOf(f[0]) - 1) * period, 2) + ' s';
         if (frame - f[0] < 1 / period && nodeOf[f[1]]) { lastFired = nodeOf[f[1]]; lastFired.classList.add('fired'); }
       } else document.getElementById('r-fired').textContent = '\u2013';
     } else document.getElementById('r-fired').textContent = '\u2013';

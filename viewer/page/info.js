@@ -11,7 +11,7 @@
   // One event's entry; a live page adds those that arrive (live.js).
   function addEventItem(e) {
     var li = document.createElement('li');
-    li.textContent = fmt(e[0] * period, 2) + ' s  ' + e[2];
+    li.textContent = fmt((tickOf(e[0]) - 1) * period, 2) + ' s  ' + e[2];
     li.title = 'tick ' + tickOf(e[0]) + ' (' + e[1] + ')';
     li.addEventListener('click', function () { pause(); seek(e[0]); });
     evList.appendChild(li);

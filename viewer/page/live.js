@@ -17,12 +17,13 @@
   function showLink() {
     if (!D.live || !link) return;  // (render runs once before this section's variables are set)
     var text = '', kind = '';
-    var lost = link.lost_ticks ? link.lost_ticks + ' tick' + (link.lost_ticks === 1 ? '' : 's') + ' lost'
-                               : link.losses ? 'ticks lost' : '';
+    var unit = link.unit || 'tick';  // a plan's stream loses events
+    var lost = link.lost_ticks ? link.lost_ticks + ' ' + unit + (link.lost_ticks === 1 ? '' : 's') + ' lost'
+                               : link.losses ? unit + 's lost' : '';
     if (link.losses > lostSeen) { lostSeen = link.losses; lostAt = Date.now(); }
     if (Date.now() - answered > 3000) { text = 'the monitor does not answer: the page shows what arrived before'; kind = 'silent'; }
     else if (link.state === 'ended') { text = 'the stream ended: ' + (link.ended || 'end of stream'); kind = 'ended'; }
-    else if (link.state === 'waiting') { text = 'waiting for the stream\u2019s first tick'; kind = 'waiting'; }
+    else if (link.state === 'waiting') { text = 'waiting for the stream\u2019s first ' + unit; kind = 'waiting'; }
     else if (link.silent > 0) { text = 'the link is silent: nothing for ' + fmt(link.silent, 1) + ' s'; kind = 'silent'; }
     else if (lost && Date.now() - lostAt < 10000) { text = lost + ' (' + (link.last_loss || 'garbled bytes') + ')'; kind = 'lost'; }
     banner.textContent = text;
@@ -48,6 +49,7 @@
     append(D.active, u.active);
     append(D.status, u.status);
     append(D.ticks, u.ticks);
+    if (D.fired) append(D.fired, u.fired);
     appendCalls(D.calls, u.calls);
     (u.robots || []).forEach(function (r, i) { appendCalls(bots[i].calls, r.calls); append(bots[i].status, r.status); });
     (u.events || []).forEach(function (e) { events.push(e); addEventItem(e); });

@@ -35,7 +35,8 @@
   }
   extendIntervals();
   var EVCOLOR = { bump: '#d32f2f', item: '#fb8c00', status: '#6a1b9a', note: '#00838f', supervisor: '#c62828',
-                  state: '#455a64', actor: '#455a64', contact: '#b8860b', lost: '#e53935' };
+                  state: '#455a64', actor: '#455a64', contact: '#b8860b', lost: '#e53935',
+                  fail: '#b71c1c' };
   var backdrop = null;
   function drawBackdrop() {
     var dpr = window.devicePixelRatio || 1, cw = tl.clientWidth, ch = TOP + ROW * lines + 18;
