@@ -90,7 +90,8 @@ ast::ValueDecl lower_variable(Variable &v, Diagnostics &diag) {
     d.type = {c, v.type.range};
   } else {
     d.type = {"int", v.type.range};  // reported: what follows is still checked
-    if (elementary(t))
+    std::string head = t.substr(0, t.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZ_0123456789"));
+    if (elementary(head))
       diag.error(v.type.range, ErrorKind::NotSupported,
                  fmt::format("the IEC type '{}' is not supported yet: gfec reads BOOL, DINT, REAL and LREAL "
                              "variables",
