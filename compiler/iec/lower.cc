@@ -109,6 +109,40 @@ ast::ValueDecl lower_variable(Variable &v, Diagnostics &diag) {
   return d;
 }
 
+/// The first place `e` reads a time (`Step.T`, a TIME literal), or null.
+const SourceRange *time_read(const ast::Expr &e) {
+  if (e.kind == ast::Expr::Kind::Duration || (e.kind == ast::Expr::Kind::Call && e.name.text == "elapsed"))
+    return &e.range;
+  for (const ast::Expr *a : e.args)
+    if (const SourceRange *r = a ? time_read(*a) : nullptr) return r;
+  return nullptr;
+}
+
+template <typename Stmts> const SourceRange *time_read(const Stmts &block) {
+  for (const ast::Stmt &s : block) {
+    const SourceRange *r = s.value ? time_read(*s.value) : nullptr;
+    if (!r) r = time_read(s.then_block);
+    if (!r) r = time_read(s.else_block);
+    if (r) return r;
+  }
+  return nullptr;
+}
+
+/// The first place the chart reads a time: a timed association, `Step.T`, a TIME literal.
+const SourceRange *time_read(const ast::Chart &c) {
+  for (const ast::Place &p : c.places)
+    if (p.extras)
+      for (const ast::Association &a : p.extras->associations)
+        if (a.duration_ms) return &a.duration_range;
+  for (const ast::Transition &t : c.transitions)
+    if (const SourceRange *r = t.condition ? time_read(*t.condition) : nullptr) return r;
+  for (const ast::ActionDecl &a : c.actions)
+    if (const SourceRange *r = time_read(a.body)) return r;
+  for (const ast::ValueDecl &v : c.values)
+    if (const SourceRange *r = v.init ? time_read(*v.init) : nullptr) return r;
+  return nullptr;
+}
+
 }  // namespace
 
 std::optional<ast::Period> period_of(const Project &project, const Pou &pou, Diagnostics &diag) {
@@ -137,6 +171,7 @@ bool lower(Pou &&pou, const std::optional<ast::Period> &period, ast::File &file,
     return false;
   }
   if (pou.other_body) {
+    for (Variable &v : pou.variables) lower_variable(v, diag);  // their problems too, in one pass
     diag.error(*pou.other_body, ErrorKind::NotSupported,
                fmt::format("program '{}': a body that is not a sequential function chart is not supported yet",
                            pou.name.text));
@@ -200,6 +235,14 @@ bool lower(Pou &&pou, const std::optional<ast::Period> &period, ast::File &file,
     names.respell_block(a.body);
     d.body = std::move(a.body);
   }
+  // The validator would ask for chart text's `period`; an IEC program gets it from its task.
+  if (!period)
+    if (const SourceRange *at = time_read(c))
+      diag.error(*at, ErrorKind::MissingPeriod,
+                 fmt::format("program '{}' reads a time, but no TASK with an INTERVAL runs it", c.name.text))
+          .note(c.name.range, fmt::format("run it in a task of a CONFIGURATION: 'TASK t (INTERVAL := T#10ms); "
+                                          "PROGRAM i WITH t : {};'",
+                                          c.name.text));
   return true;
 }
 
