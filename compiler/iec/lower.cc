@@ -192,6 +192,23 @@ bool lower(Pou &&pou, const std::optional<ast::Period> &period, ast::File &file,
     if (d.init) names.respell(*d.init);
     c.values.push_back(std::move(d));
   }
+  // An association naming a variable rather than an ACTION is IEC's Boolean action (the variable
+  // follows the action's Q): not read yet, and said so rather than "unknown action".
+  std::map<std::string, const Variable *> variables;
+  for (const Variable &v : pou.variables) variables.emplace(upper(v.name.text), &v);
+  std::map<std::string, bool> actions;
+  for (const Action &a : pou.actions) actions.emplace(upper(a.name.text), true);
+  for (Step &s : pou.steps)
+    for (const ast::Association &as : s.associations) {
+      const std::string n = upper(as.action.text);
+      auto v = variables.find(n);
+      if (v != variables.end() && !actions.count(n))
+        diag.error(as.action.range, ErrorKind::NotSupported,
+                   fmt::format("Boolean action '{}' (an association naming a variable, not an ACTION) is not "
+                               "supported yet",
+                               as.action.text))
+            .note(v->second->name.range, "the variable");
+    }
   for (Step &s : pou.steps) {
     ast::Place &p = c.places.emplace_back();
     p.initial = s.initial;

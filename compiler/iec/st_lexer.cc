@@ -63,13 +63,13 @@ private:
       if (c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v') {
         ++i_;
       } else if (c == '(' && at(i_ + 1) == '*') {
-        skip_comment(i_, "*)", "comment '(*' without its '*)'");
+        skip_comment(i_, "*)", "a comment '(*' that is never closed");
       } else if (c == '/' && at(i_ + 1) == '*') {
-        skip_comment(i_, "*/", "comment '/*' without its '*/'");
+        skip_comment(i_, "*/", "a comment '/*' that is never closed");
       } else if (c == '/' && at(i_ + 1) == '/') {
         while (i_ < t_.size() && t_[i_] != '\n') ++i_;
       } else if (c == '{') {
-        skip_comment(i_, "}", "pragma '{' without its '}'");
+        skip_comment(i_, "}", "a pragma '{' that is never closed");
       } else {
         return;
       }
