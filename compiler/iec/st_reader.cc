@@ -61,6 +61,9 @@ void StParser::file(Project &project) {
     } else if (is_keyword(t, "VAR_GLOBAL")) {
       not_supported(range(t), "global variables (VAR_GLOBAL) are not supported yet");
       skip_block("VAR");
+    } else if (is_keyword(t, "USING")) {
+      not_supported(range(t), "'USING' (IEC 61131-3 third edition namespaces) is not supported yet");
+      skip_statement();
     } else if (is_keyword(t, "NAMESPACE") || is_keyword(t, "CLASS") || is_keyword(t, "INTERFACE")) {
       not_supported(range(t), fmt::format("'{}' (IEC 61131-3 third edition) is not supported yet", t.text));
       skip_block(upper(t.text));
