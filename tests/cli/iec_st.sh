@@ -72,4 +72,16 @@ for st in "$dir"/*.st; do
     cmp <(tail -n +2 direct/engine.h) <(tail -n +2 back/engine.h) || fail "$name: the converted chart compiles to another $form header"
   done
 done
+# Several PROGRAMs: the one the CONFIGURATION's task runs is compiled, --chart picks another;
+# when the tasks run both, --chart is needed.
+{ sed '/^CONFIGURATION/,$d' "$dir/tank.st"
+  printf 'PROGRAM Other\n VAR_OUTPUT o : BOOL; END_VAR\n INITIAL_STEP A: END_STEP\nEND_PROGRAM\n'
+  sed -n '/^CONFIGURATION/,$p' "$dir/tank.st"; } > several.st
+"$gfec" several.st -o several.c || fail "several PROGRAMs: the one the task runs does not compile"
+grep -q 'void Tank_run' several.h || fail "several PROGRAMs: not the one the task runs"
+"$gfec" several.st --chart Other -o several.c && grep -q 'void Other_run' several.h || fail "several PROGRAMs: --chart"
+sed 's/^\( *\)PROGRAM Tank1 WITH Fast : Tank;/&\n\1PROGRAM Other1 WITH Fast : Other;/' several.st > both.st
+grep -q 'Other1 WITH' both.st || fail "both.st not made"
+if "$gfec" both.st -o both.c 2> err.txt; then fail "several PROGRAMs, both run: compiled one"; fi
+grep -q 'choose one with --chart' err.txt || fail "several PROGRAMs, both run: $(cat err.txt)"
 echo "iec_st: ok"
