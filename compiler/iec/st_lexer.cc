@@ -30,6 +30,7 @@ public:
 
   std::vector<StToken> run() {
     std::vector<StToken> out;
+    if (t_.substr(0, 3) == "\xEF\xBB\xBF") i_ = 3;  // a UTF-8 byte-order mark, as editors on Windows write
     for (;;) {
       skip_blanks();
       StToken tok;
