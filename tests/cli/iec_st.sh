@@ -85,5 +85,5 @@ grep -q 'Other1 WITH' both.st || fail "both.st not made"
 if "$gfec" both.st -o both.c 2> err.txt; then fail "several PROGRAMs, both run: compiled one"; fi
 grep -q 'choose one with --chart' err.txt || fail "several PROGRAMs, both run: $(cat err.txt)"
 # A byte-order mark and CR LF line ends, as Windows editors write them, read as any file.
-"$gfec" --check "$2/tests/fuzz/corpus_iec/bom_crlf.st" || fail "a file with a byte-order mark and CR LF"
+"$gfec" --check "$dir/../../fuzz/corpus_iec/bom_crlf.st" || fail "a file with a byte-order mark and CR LF"
 echo "iec_st: ok"
