@@ -22,8 +22,9 @@ const InputLanguage &st_language() {
   static const InputLanguage row{
       "iec-st",
       "IEC 61131-3 structured text with SFC",
-      {{".st", "an IEC 61131-3 structured-text program"}},
-      nullptr,  // the extension decides
+      {{".st", "an IEC 61131-3 structured-text program"},
+       {".ST", "an IEC 61131-3 structured-text program"}},  // as some Windows tools name them
+      nullptr,                                              // the extension decides
       read_st_program,
       false,  // its ranges are ST: back ends print expressions from the model, in chart syntax
       "//",   // IEC's third edition comment, which the reader accepts: diagnostic tests use it
