@@ -15,6 +15,9 @@
 #include "tee_sink.h"
 #include "log_sink.h"
 #include "options.h"
+#include "plan_decoder.h"
+#include "plan_log_sink.h"
+#include "plan_trace_format.h"
 #include "pipeline/compilation.h"
 #include "runnable_chart.h"
 #include "trace_decoder.h"
@@ -52,7 +55,7 @@ struct MonitorOptions {
 };
 
 void add_options(CLI::App &app, MonitorOptions &o, FrontEndFlags &front_end) {
-  app.add_option("chart", o.input, "The chart the engine was built from")->required();
+  app.add_option("chart", o.input, "The chart the engine was built from, or the plan of an afp::LinkTrace")->required();
   app.add_option("--chart", o.chart, "The chart, when the file declares several")->type_name("NAME");
   app.add_flag("--log", o.log,
                "Print the decoded run as 'gfec run --observable' does (tick, agent, av, state); the monitor's "
@@ -87,17 +90,64 @@ std::string chart_location(const pipeline::Compilation &c, const model::Chart &c
   return fmt::format("{}:{}:{}", text::printable(c.sources.file(r.file).path()), at.line, at.col);
 }
 
+/// The source's file descriptor (0 for stdin), or -1 with `why` set.
+int open_source(const MonitorOptions &o, std::string &why) {
+  if (!o.serial.empty()) return monitor::open_serial(o.serial, o.baud, why);
+  if (!o.tcp.empty()) return monitor::open_tcp(o.tcp, why);
+  return 0;
+}
+
+/// A plan's stream (afp::LinkTrace, docs/live.md "Plans"): its events as a log.
+int monitor_plan(const MonitorOptions &o, const pipeline::Compilation &c, model::PlanId plan, DiagnosticReport &report,
+                 std::ostream &out, std::ostream &err) {
+  if (!o.http.empty()) {
+    report.tool_error(o.input, "--http: the live page shows sfc and fsm charts; a plan's stream is shown with --log",
+                      false);
+    return kExitUsageOrIo;
+  }
+  const trace::PlanLayout layout = trace::plan_layout_of(c.model, plan);
+  std::string why;
+  const int fd = open_source(o, why);
+  if (fd < 0) {
+    report.tool_error(o.input, why, false);
+    return kExitUsageOrIo;
+  }
+  monitor::PlanLogSink log(c.model, layout, out);
+  monitor::PlanTraceDecoder decoder(c.model, layout, log);
+  const std::string read_error = monitor::read_stream(
+      fd, o.silence, log, [&](const unsigned char *data, std::size_t n) { decoder.feed(data, n); },
+      [&] { return decoder.refused(); });
+  if (fd != 0) ::close(fd);
+  decoder.finish();
+  if (decoder.refused()) {
+    const model::Plan &p = c.model.plans.at(plan);
+    const LineCol at = c.sources.begin_of(p.range);
+    err << fmt::format("{}:{}:{}: error: {}\n", text::printable(c.sources.file(p.range.file).path()), at.line, at.col,
+                       text::printable(decoder.refusal()));
+    return kExitInputError;
+  }
+  err << fmt::format("gfec monitor: {} frame{} decoded ({} event{}), {} lost, {} byte{} garbled\n",
+                     decoder.frames_shown(), decoder.frames_shown() == 1 ? "" : "s", decoder.events_shown(),
+                     decoder.events_shown() == 1 ? "" : "s", decoder.events_lost(), decoder.bytes_garbled(),
+                     decoder.bytes_garbled() == 1 ? "" : "s");
+  if (!read_error.empty()) {
+    report.tool_error(o.input, "reading the trace: " + read_error, false);
+    return kExitUsageOrIo;
+  }
+  return kExitOk;
+}
+
 int monitor_with(const MonitorOptions &o, DiagnosticReport &report, std::ostream &out, std::ostream &err) {
-  const RunnableChart loaded = load_runnable_chart(o.report, o.input, o.chart, "monitor", report);
+  const RunnableChart loaded = load_runnable_chart(o.report, o.input, o.chart, "monitor", report,
+                                                   pipeline::kSfc | pipeline::kFsm | pipeline::kPlan);
   if (loaded.exit_code != kExitOk) return loaded.exit_code;
   const pipeline::Compilation &c = *loaded.compilation;
+  if (loaded.plan) return monitor_plan(o, c, loaded.plan, report, out, err);
   const model::ChartId chart = loaded.chart;
   const trace::Layout layout = trace::layout_of(c.model, chart);
 
   std::string why;
-  int fd = 0;  // stdin
-  if (!o.serial.empty()) fd = monitor::open_serial(o.serial, o.baud, why);
-  else if (!o.tcp.empty()) fd = monitor::open_tcp(o.tcp, why);
+  int fd = open_source(o, why);
   if (fd < 0) {
     report.tool_error(o.input, why, false);
     return kExitUsageOrIo;
@@ -193,7 +243,9 @@ int monitor_with(const MonitorOptions &o, DiagnosticReport &report, std::ostream
 
 int monitor_command(int argc, const char *const *argv, std::ostream &out, std::ostream &err) {
   MonitorOptions o;
-  CLI::App app{"gfec monitor - decodes the live trace of a C engine built with --trace (docs/live.md)", "gfec monitor"};
+  CLI::App app{"gfec monitor - decodes the live trace of a C engine built with --trace, or of a plan's "
+               "afp::LinkTrace (docs/live.md)",
+               "gfec monitor"};
   app.footer("The trace comes from stdin, a serial port (--serial) or a TCP connection (--tcp). A frame\n"
              "that cannot be decoded exactly is never shown: the loss is reported and the monitor is\n"
              "exact again from the next full frame.\n"

@@ -6,7 +6,7 @@
 namespace gfec {
 
 RunnableChart load_runnable_chart(const Options &options, const std::string &input, const std::string &chart_name,
-                                  const char *verb, DiagnosticReport &report) {
+                                  const char *verb, DiagnosticReport &report, unsigned among) {
   RunnableChart r;
   pipeline::FrontEndOptions f = front_end_options(options);
   f.analyze = false;
@@ -25,7 +25,7 @@ RunnableChart load_runnable_chart(const Options &options, const std::string &inp
   }
   pipeline::SelectionRequest request;
   request.name = chart_name;
-  request.among = pipeline::kSfc | pipeline::kFsm;
+  request.among = among;
   request.verb = verb;
   const pipeline::Selection target = pipeline::choose(c.model, request);
   if (!target.chosen()) {
@@ -34,6 +34,7 @@ RunnableChart load_runnable_chart(const Options &options, const std::string &inp
     return r;
   }
   r.chart = target.chart;
+  r.plan = target.plan;
   return r;
 }
 

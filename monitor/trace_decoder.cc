@@ -1,6 +1,7 @@
 #include "trace_decoder.h"
 
 #include "interpreter/value.h"
+#include "plan_trace_format.h"
 
 #include <fmt/format.h>
 
@@ -9,6 +10,9 @@
 namespace gfec::monitor {
 
 namespace {
+
+/// The longest plan frame payload read to refuse it: a plan of several hundred levels.
+constexpr std::size_t kMaxPlanFrameRead = 4096;
 
 std::uint32_t le32(const std::uint8_t *p) {
   return static_cast<std::uint32_t>(p[0]) | static_cast<std::uint32_t>(p[1]) << 8 |
@@ -67,7 +71,10 @@ int TraceDecoder::frame_at_front() {
   const std::size_t length = static_cast<std::size_t>(p[4]) | static_cast<std::size_t>(p[5]) << 8;
   // A length no frame of this chart has is a garbled header: waiting for that many bytes would
   // stall the stream.
-  if (length > layout_.max_payload() || (p[3] & ~(trace::kFlagFull | trace::kFlagCalls | trace::kFlagCallsCut)) != 0)
+  // A plan's frame (afp::LinkTrace) is read only to refuse the stream with a clear message.
+  const bool plan = p[3] == (trace::kFlagFull | trace::kFlagPlan);
+  if (length > (plan ? kMaxPlanFrameRead : layout_.max_payload()) ||
+      (!plan && (p[3] & ~(trace::kFlagFull | trace::kFlagCalls | trace::kFlagCallsCut)) != 0))
     return -1;
   const std::size_t size = trace::kHeaderBytes + length + trace::kCrcBytes;
   if (have < size) return 0;
@@ -76,6 +83,13 @@ int TraceDecoder::frame_at_front() {
   if (p[2] != trace::kVersion) {
     refusal_ = fmt::format("the stream's frames are of format version {}; this gfec reads version {}", p[2],
                            static_cast<int>(trace::kVersion));
+    sink_.ended(refusal_);
+    return 1;
+  }
+  if (plan) {
+    refusal_ = fmt::format("the stream comes from a plan's afp::LinkTrace (fingerprint {:08x}), not from a chart's "
+                           "engine (give the monitor the plan the program was built from)",
+                           le32(p + 6));
     sink_.ended(refusal_);
     return 1;
   }

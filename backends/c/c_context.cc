@@ -155,20 +155,29 @@ void name_fields(EngineContext &c) {
   if (std::any_of(places.begin(), places.end(), [](const model::Place &p) { return p.timed; }))
     for (const auto &p : places) c.timer_field.push_back(p.timed ? fields.take("timer_" + p.name) : "");
   if (c.has_named_actions()) {
-    // The previous Q of every action a Q can hold (not one held by P1, P0 and R only), the stored
-    // flag of every one that S sets, the previous state of every place an edge is taken of.
+    // The previous Q of every action a Q can hold (not one held by P1, P0 and R only), the flags
+    // of every stored qualifier it is held under (with their timers), the previous state of
+    // every place an edge is taken of.
     IdMap<model::PlaceId, bool> edged(places.size(), false);
     for (const model::Action &a : c.chart.actions) {
-      bool q = false, stored = false;
+      bool q = false, stored = false, sd = false, sl = false;
       for (const model::Association &as : a.associations) {
-        const model::Qualifier k = as.qualifier;
-        stored = stored || k == model::Qualifier::S;
-        q = q || k == model::Qualifier::N || k == model::Qualifier::S || k == model::Qualifier::P ||
-            k == model::Qualifier::L || k == model::Qualifier::D;
-        if (k == model::Qualifier::P || k == model::Qualifier::P1 || k == model::Qualifier::P0) edged[as.place] = true;
+        const Keep k = kept_as(as);
+        stored = stored || k == Keep::Set;
+        sd = sd || k == Keep::Sd;
+        sl = sl || k == Keep::Sl;
+        q = q || k == Keep::Q || k == Keep::Set || k == Keep::Sd || k == Keep::Sl;
+        const model::Qualifier qu = as.qualifier;
+        if (qu == model::Qualifier::P || qu == model::Qualifier::P1 || qu == model::Qualifier::P0)
+          edged[as.place] = true;
       }
-      c.action_q.push_back(q ? fields.take("q_" + a.name.str()) : "");
-      c.action_stored.push_back(stored ? fields.take("stored_" + a.name.str()) : "");
+      const std::string name = a.name.str();
+      c.action_q.push_back(q ? fields.take("q_" + name) : "");
+      c.action_stored.push_back(stored ? fields.take("stored_" + name) : "");
+      c.action_sd.push_back(sd ? fields.take("sd_" + name) : "");
+      c.action_sd_timer.push_back(sd ? fields.take("sd_timer_" + name) : "");
+      c.action_sl.push_back(sl ? fields.take("sl_" + name) : "");
+      c.action_sl_timer.push_back(sl ? fields.take("sl_timer_" + name) : "");
     }
     for (model::PlaceId p : places.ids())
       c.was_active.push_back(edged[p] ? fields.take("was_" + places[p].name.str()) : "");
@@ -481,6 +490,28 @@ std::unique_ptr<EngineContext> make_context(const model::Model &model, const mod
     share(*c);
   }
   return c;
+}
+
+Keep kept_as(const model::Association &as) {
+  using model::Qualifier;
+  // Timers stop at UINT32_MAX ticks: a longer duration is never reached (docs/language.md §5.3).
+  const bool beyond = as.ticks > 0xFFFFFFFFul;
+  switch (as.qualifier) {
+  case Qualifier::N:
+  case Qualifier::P:
+  case Qualifier::L:
+  case Qualifier::D: return Keep::Q;
+  case Qualifier::S: return Keep::Set;
+  case Qualifier::R: return Keep::Reset;
+  case Qualifier::P0:
+  case Qualifier::P1: return Keep::Edge;
+  // A flag that is only set and cleared by R, as S's is: one flag serves S, DS, SD 0 and an SL
+  // that never runs out, as their OR is one flag set by any of them.
+  case Qualifier::DS: return beyond ? Keep::Nothing : Keep::Set;
+  case Qualifier::SD: return as.ticks == 0 ? Keep::Set : beyond ? Keep::Nothing : Keep::Sd;
+  case Qualifier::SL: return as.ticks == 0 ? Keep::Nothing : beyond ? Keep::Set : Keep::Sl;
+  }
+  return Keep::Nothing;
 }
 
 }  // namespace gfec::c_backend

@@ -111,8 +111,12 @@ struct EngineContext {
   std::string candidates;  ///< sparse form, not place-driven: the transitions to try this tick
   // Action control (docs/iec.md "Action control"): the state each back end keeps for itself.
   // Tables only when the chart has named actions; "" for an action (place) that needs no field.
-  IdMap<model::ActionId, std::string> action_q;       ///< the action's Q of the previous tick (its final run)
-  IdMap<model::ActionId, std::string> action_stored;  ///< set by S, cleared by R
+  IdMap<model::ActionId, std::string> action_q;  ///< the action's Q of the previous tick (its final run)
+  /// Set by S, DS, SD 0 and an SL beyond the timers' range (one flag: each is only set, and one R
+  /// clears them all), cleared by R.
+  IdMap<model::ActionId, std::string> action_stored;
+  /// SD and SL with a duration the timers reach: the flag and the ticks since its set.
+  IdMap<model::ActionId, std::string> action_sd, action_sd_timer, action_sl, action_sl_timer;
   /// Places holding an action with P, P1 or P0: active at the previous tick's action control.
   IdMap<model::PlaceId, std::string> was_active;
   // A team machine's (docs/c-engine.md "Team machines"); empty for a machine that is no team.
@@ -268,6 +272,13 @@ struct EngineContext {
 /// Decides every name and fact for compiling `chart`, and for every sub-chart instance below it.
 std::unique_ptr<EngineContext> make_context(const model::Model &model, const model::Chart &chart,
                                             const EmitOptions &options);
+
+/// What the engine's action control does with an association (docs/iec.md "Action control in
+/// the C engine"): a term of Q, an edge that runs the body, a set of the stored flag, a reset, a
+/// set of the SD or SL flag with its timer, or nothing (`SL 0` is never active, nor is an SD whose
+/// duration the timers never reach).
+enum class Keep : std::uint8_t { Q, Edge, Set, Reset, Sd, Sl, Nothing };
+Keep kept_as(const model::Association &as);
 
 /// The block holds code (an empty `entry { }` is as good as none).
 inline bool has_code(const HeapOptional<std::vector<model::Stmt>> &block) { return block && !block->empty(); }

@@ -7,6 +7,7 @@
 #include "naming/naming.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 
@@ -90,9 +91,31 @@ void state_struct(CodeWriter &w, const EngineContext &c) {
   if (c.needs_started) rows.emplace_back(fmt::format("bool {};", c.started), "the first tick has run");
   for (model::ActionId a : c.action_q.ids()) {
     const std::string &name = c.chart.actions[a].name.str();
-    if (!c.action_stored[a].empty())
+    if (!c.action_stored[a].empty()) {
+      // The qualifiers that set the one stored flag, each once: `S`, `DS`, `SD 0`, `SL` (one whose
+      // limit the timers never reach).
+      std::vector<std::string> by;
+      for (const model::Association &as : c.chart.actions[a].associations) {
+        if (kept_as(as) != Keep::Set) continue;
+        std::string q = model::qualifier_name(as.qualifier);
+        if (as.qualifier == model::Qualifier::SD) q += " 0";
+        if (std::find(by.begin(), by.end(), q) == by.end()) by.push_back(q);
+      }
       rows.emplace_back(fmt::format("bool {};", c.action_stored[a]),
-                        fmt::format("action {} set (S), until reset (R)", name));
+                        fmt::format("action {} set ({}), until reset (R)", name, fmt::join(by, ", ")));
+    }
+    if (!c.action_sd[a].empty()) {
+      rows.emplace_back(fmt::format("bool {};", c.action_sd[a]),
+                        fmt::format("action {} set (SD), until reset (R)", name));
+      rows.emplace_back(fmt::format("uint32_t {};", c.action_sd_timer[a]),
+                        fmt::format("ticks since action {} was set (SD)", name));
+    }
+    if (!c.action_sl[a].empty()) {
+      rows.emplace_back(fmt::format("bool {};", c.action_sl[a]),
+                        fmt::format("action {} set (SL), until reset (R)", name));
+      rows.emplace_back(fmt::format("uint32_t {};", c.action_sl_timer[a]),
+                        fmt::format("ticks since action {} was set (SL)", name));
+    }
     if (!c.action_q[a].empty())
       rows.emplace_back(fmt::format("bool {};", c.action_q[a]),
                         fmt::format("action {} was active (Q) in the last tick", name));

@@ -103,8 +103,10 @@ void RunWriter::named_actions() {
   for (model::ActionId a : c_.chart.actions.ids()) {
     const model::Action &action = c_.chart.actions[a];
     if (action.associations.empty()) continue;  // held by no place: never runs
-    std::vector<std::string> q, edge, set, reset;
+    std::vector<std::string> q, edge, set, reset, set_sd, set_sl;
     std::string held;
+    // One duration per action for SD and for SL (the validator sees to it): their timer's.
+    std::string sd_ticks, sl_ticks;
     for (const model::Association &as : action.associations) {
       const std::string x = "(" + active(as.place) + ")";
       const std::string was = c_.was_active[as.place].empty() ? "" : c_.field(c_.was_active[as.place]);
@@ -125,18 +127,58 @@ void RunWriter::named_actions() {
       case Qualifier::R: reset.push_back(x); break;
       case Qualifier::P1: edge.push_back(fmt::format("({} && !{})", x, was)); break;
       case Qualifier::P0: edge.push_back(fmt::format("(!{} && {})", x, was)); break;
-      // Refused by the validator until their timers are compiled (docs/iec.md "Status").
-      case Qualifier::SD:
+      // The stored flag, set once the place's timer reaches the duration (at once for `DS 0`).
       case Qualifier::DS:
-      case Qualifier::SL: break;
+        if (kept_as(as) == Keep::Set)
+          set.push_back(as.ticks > 0 ? fmt::format("({} && ({} >= {}))", x, c_.timer_of(as.place), ticks) : x);
+        break;
+      case Qualifier::SD:
+      case Qualifier::SL:
+        switch (kept_as(as)) {
+        case Keep::Set: set.push_back(x); break;  // `SD 0` is S, and so is an SL that never runs out
+        case Keep::Sd:
+          set_sd.push_back(x);
+          sd_ticks = ticks;
+          break;
+        case Keep::Sl:
+          set_sl.push_back(x);
+          sl_ticks = ticks;
+          break;
+        default: break;  // `SL 0` is never active, nor is an SD the timers never reach
+        }
+        break;
       }
     }
     w_.line("/* {}: {} */", action.name, held);
     const std::string &stored = c_.action_stored[a], &last_q = c_.action_q[a];
-    // Reset dominates: this tick's sets first, then the reset.
+    const std::string &sd = c_.action_sd[a], &sl = c_.action_sl[a];
+    // The SD and SL timers count one more tick once their flag is set (0 in the tick of the set).
+    for (const std::string *timed : {&sd, &sl})
+      if (!timed->empty()) {
+        const std::string timer = c_.field(timed == &sd ? c_.action_sd_timer[a] : c_.action_sl_timer[a]);
+        w_.line("if ({} && ({} < UINT32_MAX)) {{ {}++; }}", c_.field(*timed), timer, timer);
+      }
+    // Reset dominates: this tick's sets first, then the reset. A set starts the SD or SL timer
+    // only as the flag rises.
     if (!stored.empty() && !set.empty()) w_.line("if ({}) {{ {} = true; }}", any(set), c_.field(stored));
-    if (!stored.empty() && !reset.empty()) w_.line("if ({}) {{ {} = false; }}", any(reset), c_.field(stored));
+    for (const std::string *timed : {&sd, &sl}) {
+      const std::vector<std::string> &sets = timed == &sd ? set_sd : set_sl;
+      if (timed->empty() || sets.empty()) continue;
+      const std::string flag = c_.field(*timed);
+      w_.line("if (({}) && !{}) {{ {} = true; {} = 0u; }}", any(sets), flag, flag,
+              c_.field(timed == &sd ? c_.action_sd_timer[a] : c_.action_sl_timer[a]));
+    }
+    if (!reset.empty()) {
+      std::string clear;
+      for (const std::string *flag : {&stored, &sd, &sl})
+        if (!flag->empty()) clear += fmt::format(" {} = false;", c_.field(*flag));
+      if (!clear.empty()) w_.line("if ({}) {{{} }}", any(reset), clear);
+    }
     if (!stored.empty()) q.push_back(c_.field(stored));
+    if (!sd.empty())
+      q.push_back(fmt::format("({} && ({} >= {}))", c_.field(sd), c_.field(c_.action_sd_timer[a]), sd_ticks));
+    if (!sl.empty())
+      q.push_back(fmt::format("({} && ({} < {}))", c_.field(sl), c_.field(c_.action_sl_timer[a]), sl_ticks));
     // Q true, its final run as Q falls, or an edge of P1 / P0: one run at most.
     std::vector<std::string> runs;
     std::optional<CodeWriter::Scope> scope;

@@ -93,6 +93,10 @@ void init(CodeWriter &w, const EngineContext &c) {
   // that an initial place rises in tick 1).
   for (model::ActionId a : c.action_q.ids()) {
     if (!c.action_stored[a].empty()) w.line("{} = false;", c.field(c.action_stored[a]));
+    for (const std::string *timed : {&c.action_sd[a], &c.action_sl[a]})
+      if (!timed->empty()) w.line("{} = false;", c.field(*timed));
+    for (const std::string *timer : {&c.action_sd_timer[a], &c.action_sl_timer[a]})
+      if (!timer->empty()) w.line("{} = 0u;", c.field(*timer));
     if (!c.action_q[a].empty()) w.line("{} = false;", c.field(c.action_q[a]));
   }
   for (model::PlaceId p : c.was_active.ids())

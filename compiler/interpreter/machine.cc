@@ -64,7 +64,7 @@ void Machine::init() {
   av_.assign(n, 0);
   timers_.assign(n, 0);
   acted_active_.assign(n, false);
-  stored_.assign(chart_.actions.size(), false);
+  stored_.assign(chart_.actions.size(), StoredFlags{});
   was_q_.assign(chart_.actions.size(), false);
   state_ = PlaceId::none();
   status_ = 0;
@@ -274,7 +274,15 @@ void Machine::named_actions(Frame &f) {
   using model::Qualifier;
   for (model::ActionId a : chart_.actions.ids()) {
     const model::Action &action = chart_.actions[a];
-    bool q = false, edge = false, set = false, reset = false;
+    StoredFlags &flags = stored_[a];
+    // The timers of SD and SL count one more tick once their flag is set (0 in the tick of the
+    // set, as a place's timer is in the tick it is entered).
+    for (Stored *timed : {&flags.sd, &flags.sl})
+      if (timed->set && timed->ticks < kTimerMax) ++timed->ticks;
+    bool q = false, edge = false, reset = false;
+    bool set_s = false, set_sd = false, set_ds = false, set_sl = false;
+    // One duration per action for SD and for SL (the validator sees to it): their timer's.
+    unsigned long sd_ticks = 0, sl_ticks = 0;
     for (const model::Association &as : action.associations) {
       const bool x = av_[as.place] > 0, was = acted_active_[as.place];
       const std::uint32_t t = timers_[as.place];
@@ -283,20 +291,37 @@ void Machine::named_actions(Frame &f) {
       case Qualifier::P: q = q || (x && !was); break;
       case Qualifier::L: q = q || (x && t < as.ticks); break;
       case Qualifier::D: q = q || (x && t >= as.ticks); break;
-      case Qualifier::S: set = set || x; break;
+      case Qualifier::S: set_s = set_s || x; break;
       case Qualifier::R: reset = reset || x; break;
       case Qualifier::P1: edge = edge || (x && !was); break;
       case Qualifier::P0: edge = edge || (!x && was); break;
-      // Refused by the validator until their timers are compiled (docs/iec.md "Status").
       case Qualifier::SD:
-      case Qualifier::DS:
-      case Qualifier::SL: break;
+        set_sd = set_sd || x;
+        sd_ticks = as.ticks;
+        break;
+      // Set only while the place is still active when its timer reaches the duration.
+      case Qualifier::DS: set_ds = set_ds || (x && t >= as.ticks); break;
+      case Qualifier::SL:
+        set_sl = set_sl || x;
+        sl_ticks = as.ticks;
+        break;
       }
     }
-    // Reset dominates: the sets of this tick first, then the reset.
-    if (set) stored_[a] = true;
-    if (reset) stored_[a] = false;
-    q = q || stored_[a];
+    // A set starts the timer only when the flag rises: a place that sets it again while it is
+    // set (or another place) does not restart it.
+    auto raise = [](Stored &flag, bool set) {
+      if (!set || flag.set) return;
+      flag.set = true;
+      flag.ticks = 0;
+    };
+    raise(flags.s, set_s);
+    raise(flags.sd, set_sd);
+    raise(flags.ds, set_ds);
+    raise(flags.sl, set_sl);
+    // Reset dominates: the sets of this tick first, then the reset of every stored form.
+    if (reset) flags = StoredFlags{};
+    q = q || flags.s.set || (flags.sd.set && flags.sd.ticks >= sd_ticks) || flags.ds.set ||
+        (flags.sl.set && flags.sl.ticks < sl_ticks);
     // Q true, its final run as Q falls, or an edge of P1 / P0: at most one run per tick.
     if (q || was_q_[a] || edge) {
       if (f.log) f.log->add(EventKind::Action, depth_, fmt::format("action {}{}", prefix_, action.name));

@@ -101,9 +101,19 @@ private:
   IdMap<model::VarId, Value> vars_;
   /// Action control (docs/iec.md "Action control"): each place's state as the previous tick's
   /// action control saw it (false before tick 1, so an initial place rises in tick 1), each
-  /// action's stored flag (S) and its Q of the previous tick (for the final run).
+  /// action's stored flags, one per stored qualifier, and its Q of the previous tick (for the
+  /// final run).
   IdMap<model::PlaceId, bool> acted_active_;
-  IdMap<model::ActionId, bool> stored_;
+  /// A stored qualifier's flag, and for SD and SL the ticks since it was set (0 in the tick of
+  /// the set, saturating as the place timers do).
+  struct Stored {
+    bool set = false;
+    std::uint32_t ticks = 0;
+  };
+  struct StoredFlags {
+    Stored s, sd, ds, sl;
+  };
+  IdMap<model::ActionId, StoredFlags> stored_;
   IdMap<model::ActionId, bool> was_q_;
   bool started_ = false;                 ///< the first tick has run the initial entries
   int agent_ = 0;                        ///< team machine: this engine's agent number

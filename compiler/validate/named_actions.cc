@@ -1,7 +1,6 @@
 // Named actions and the associations that hold them (docs/language.md §14, docs/iec.md "Action
 // control"): every name resolved, every qualifier with or without its duration as it must be,
-// every body checked. The qualifiers whose timers are not compiled yet (SD, DS, SL) are refused at
-// the association, with a located error that says so, rather than run without them.
+// every body checked, and one duration per action for SD and for SL, whose timer is the action's.
 #include "did_you_mean.h"
 #include "validate/expr.h"
 #include "validate/families.h"
@@ -11,6 +10,7 @@
 #include <map>
 #include <optional>
 #include <string_view>
+#include <utility>
 
 namespace gfec::validation {
 
@@ -32,6 +32,7 @@ void check_named_actions(Context &cx, ChartScope &s) {
       cx.diag.error(a.name.range, ErrorKind::DuplicateName, fmt::format("action '{}' declared twice", a.name.text))
           .note(at->second->name.range, "the first declaration is here");
   }
+  std::map<std::pair<std::string_view, model::Qualifier>, const ast::Association *> timer_durations;
   for (const ast::Place &p : s.ast.places) {
     if (!p.extras) continue;
     for (const ast::Association &as : p.extras->associations) {
@@ -59,14 +60,20 @@ void check_named_actions(Context &cx, ChartScope &s) {
       if (s.is_fsm())
         cx.diag.error(as.range, ErrorKind::NotSupported,
                       "an fsm state holds no named actions; they are an sfc's (IEC 61131-3 steps)");
-      // Their per-association timers are not compiled yet: refused in every tool alike, never run
-      // without them (docs/iec.md "Status").
+      // SD and SL time the action's own flag from its set: one timer per action and qualifier,
+      // so one duration (docs/iec.md "Action control").
       std::optional<model::Qualifier> q = model::qualifier_named(as.qualifier.text);
-      if (q && (*q == model::Qualifier::SD || *q == model::Qualifier::DS || *q == model::Qualifier::SL))
-        cx.diag.error(as.qualifier.range, ErrorKind::NotSupported,
-                      fmt::format("qualifier '{}' is not compiled yet (docs/iec.md, \"Status\"); N, R, S, L, D, P, "
-                                  "P0 and P1 are",
-                                  as.qualifier.text));
+      if (q && (*q == model::Qualifier::SD || *q == model::Qualifier::SL) && as.duration_ms) {
+        auto [first, fresh] = timer_durations.emplace(std::make_pair(as.action.text, *q), &as);
+        if (!fresh && *first->second->duration_ms != *as.duration_ms)
+          cx.diag
+              .error(as.duration_range, ErrorKind::QualifierTime,
+                     fmt::format("action '{}' is held under {} for {}ms here and for {}ms before; its {} timer is the "
+                                 "action's, so every {} association of it takes one duration",
+                                 as.action.text, as.qualifier.text, *as.duration_ms, *first->second->duration_ms,
+                                 as.qualifier.text, as.qualifier.text))
+              .note(first->second->duration_range, "the other duration is here");
+      }
     }
   }
   // The model's actions table: each action once (a duplicate is an error above), with every
@@ -97,8 +104,9 @@ void check_named_actions(Context &cx, ChartScope &s) {
       out.duration_ms = as.duration_ms.value_or(0);
       out.ticks = as.duration_ms ? to_ticks(*as.duration_ms, s.out.period_ms) : 0;
       out.range = as.range;
-      // L and D read the place's timer, as elapsed() does.
-      if (*q == model::Qualifier::L || *q == model::Qualifier::D) s.out.places[out.place].timed = true;
+      // L, D and DS read the place's timer, as elapsed() does.
+      if (*q == model::Qualifier::L || *q == model::Qualifier::D || *q == model::Qualifier::DS)
+        s.out.places[out.place].timed = true;
       s.out.actions[id->second].associations.push_back(out);
     }
   }

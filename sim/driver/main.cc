@@ -310,8 +310,6 @@ int run_main(int argc, char** argv) {
                                       o.seconds, control_ticks, physics_steps, kMaxControlTicks, kMaxPhysicsSteps));
     // The live trace: every robot connected before the first tick, or no run.
     if (!o.trace_to.empty()) {
-      if (built.chart.kind == "plan")
-        return fail(kUsage, "--trace-to: plans have no engine trace yet (sfc and fsm charts only)");
       if (const std::string why = trace_links().open(o.trace_to, robots, period); !why.empty())
         return fail(kUsage, why);
     }

@@ -81,7 +81,7 @@ std::string TraceLinks::open(const std::string& spec, int robots, double period)
       close();
       return fmt::format("--trace-to {}: accepting robot {}'s connection: {}", spec, i, why);
     }
-    // A frame a tick: sent at once rather than gathered.
+    // Each frame sent at once rather than gathered.
     int one = 1;
     setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
     sockets_.push_back(fd);
@@ -90,18 +90,21 @@ std::string TraceLinks::open(const std::string& spec, int robots, double period)
   }
   ::close(listener);
   period_ = period;
-  frames_ = 0;
+  ticks_ = 0;
   return "";
+}
+
+void TraceLinks::select(int robot) {
+  current_ = robot;
+  if (robot != 0 || sockets_.empty()) return;
+  if (ticks_ == 0) start_ = now();
+  const double due = start_ + static_cast<double>(ticks_) * period_, wait = due - now();
+  if (wait > 0) std::this_thread::sleep_for(std::chrono::duration<double>(wait));
+  ++ticks_;
 }
 
 void TraceLinks::write(const unsigned char* data, unsigned len) {
   if (current_ < 0 || static_cast<std::size_t>(current_) >= sockets_.size() || broken_[current_]) return;
-  if (current_ == 0) {
-    if (frames_ == 0) start_ = now();
-    const double due = start_ + static_cast<double>(frames_) * period_, wait = due - now();
-    if (wait > 0) std::this_thread::sleep_for(std::chrono::duration<double>(wait));
-    ++frames_;
-  }
   while (len > 0) {
     const ssize_t n = send(sockets_[current_], data, len, MSG_NOSIGNAL);
     if (n < 0 && errno == EINTR) continue;

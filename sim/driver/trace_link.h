@@ -15,10 +15,11 @@ class TraceLinks {
   /// connections, robot 0's first; "" or why not.
   std::string open(const std::string& spec, int robots, double period);
   bool active() const { return !sockets_.empty(); }
-  /// The robot whose engine ticks next: its frames go to its connection.
-  void select(int robot) { current_ = robot; }
-  /// A frame from the selected robot's engine. Robot 0's frames keep the run at real time: the
-  /// k-th waits until k periods have passed since the first, so the page shows the run as it goes.
+  /// The robot whose engine ticks next: its frames go to its connection. Robot 0's ticks keep
+  /// the run at real time: the k-th waits until k periods have passed since the first, so the
+  /// page shows the run as it goes (by ticks, not frames: a plan writes a frame per event).
+  void select(int robot);
+  /// A frame from the selected robot's engine.
   void write(const unsigned char* data, unsigned len);
   void close();
   ~TraceLinks() { close(); }
@@ -28,7 +29,7 @@ class TraceLinks {
   std::vector<bool> broken_;
   int current_ = 0;
   double period_ = 0.01;
-  long frames_ = 0;
+  long ticks_ = 0;
   double start_ = 0;
 };
 

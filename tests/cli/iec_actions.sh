@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Named actions under action control (docs/iec.md "Action control"): `gfec run --observable` on
-# tests/iec/actions.sfc prints actions.expected (checked by hand against docs/iec.md, tick by
-# tick); the C engine in both forms, fed the same inputs by a small caller, prints the same
-# lines; --emit=chart writes the actions and associations back and the converted text compiles
-# to the same engine byte for byte; --emit=json lists them.
+# tests/iec/actions.sfc (N R S P P0 P1 L D) and tests/iec/stored.sfc (SD DS SL) prints their
+# .expected logs (checked by hand against docs/iec.md, tick by tick); the C engine in both forms,
+# fed the same inputs by a small caller, prints the same lines; --emit=chart writes the actions
+# and associations back and the converted text compiles to the same engine byte for byte;
+# --emit=json lists them.
 # Usage: iec_actions.sh GFEC SOURCE_DIR
 set -euo pipefail
 gfec=$1
@@ -12,11 +13,8 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
-"$gfec" run "$dir/actions.sfc" --inputs "$dir/actions.csv" --observable --ticks 14 > "$work/run.txt"
-diff -u "$dir/actions.expected" "$work/run.txt" || fail "gfec run differs from actions.expected"
-
 cd "$work"
-cat > main.c <<'C'
+cat > actions_main.c <<'C'
 #include "engine.h"
 #include <stdio.h>
 int main(void)
@@ -43,22 +41,65 @@ int main(void)
     return 0;
 }
 C
-mkdir direct back
-cp "$dir/actions.sfc" direct/actions.sfc
-"$gfec" --emit=chart direct/actions.sfc -o back/actions.sfc
+cat > stored_main.c <<'C'
+#include "engine.h"
+#include <stdio.h>
+int main(void)
+{
+    /* tick, Go, Stop: the rows of stored.csv, which hold until the next row's tick */
+    static const int rows[][3] = {{1, 0, 0}, {2, 1, 0}, {3, 0, 0}, {4, 0, 1}, {5, 0, 0},
+                                  {7, 1, 0}, {8, 0, 0}, {13, 0, 1}, {14, 0, 0}};
+    Press m;
+    int tick;
+    int row = 0;
+    Press_init(&m);
+    for (tick = 1; tick <= 15; ++tick) {
+        int p;
+        if (row < 9 && rows[row][0] == tick) {
+            m.Go = rows[row][1] != 0;
+            m.Stop = rows[row][2] != 0;
+            ++row;
+        }
+        Press_run(&m);
+        printf("tick %d\nav", tick);
+        for (p = 0; p < Press_PLACE_COUNT; ++p) printf(" %u", (unsigned)Press_activation(&m, p));
+        printf("\nout horn = %d\nout fan = %d\nout lamp = %d\nout beep = %d\n", (int)m.horn, (int)m.fan,
+               (int)m.lamp, (int)m.beep);
+    }
+    return 0;
+}
+C
+
+# check NAME TICKS: the interpreter, both engine forms and the round trip of tests/iec/NAME.sfc.
+check() {
+  local name=$1 ticks=$2
+  "$gfec" run "$dir/$name.sfc" --inputs "$dir/$name.csv" --observable --ticks "$ticks" > "$name.run"
+  diff -u "$dir/$name.expected" "$name.run" || fail "gfec run differs from $name.expected"
+  rm -rf direct back
+  mkdir direct back
+  cp "$dir/$name.sfc" direct/$name.sfc
+  "$gfec" --emit=chart direct/$name.sfc -o back/$name.sfc
+  for form in readable scalable; do
+    "$gfec" "$dir/$name.sfc" --engine=$form -o engine.c
+    cc -std=c99 -Wall -Wextra -Wpedantic -Werror ${name}_main.c engine.c -o run || fail "the $form engine of $name does not build"
+    ./run > engine.txt
+    diff -u "$dir/$name.expected" engine.txt || fail "the $form engine of $name differs from gfec run"
+    for d in direct back; do (cd $d && "$gfec" $name.sfc --engine=$form --no-line-directives -o engine.c); done
+    cmp direct/engine.c back/engine.c || fail "the converted $name compiles to another $form engine"
+    cmp direct/engine.h back/engine.h || fail "the converted $name compiles to another $form header"
+  done
+}
+
+check actions 14
 grep -q '^ *action Brief {' back/actions.sfc || fail "--emit=chart lost 'action Brief'"
 grep -q '^ *L Brief 30ms;' back/actions.sfc || fail "--emit=chart lost 'L Brief 30ms'"
-for form in readable scalable; do
-  "$gfec" "$dir/actions.sfc" --engine=$form -o engine.c
-  cc -std=c99 -Wall -Wextra -Wpedantic -Werror main.c engine.c -o run || fail "the $form engine does not build"
-  ./run > engine.txt
-  diff -u "$dir/actions.expected" engine.txt || fail "the $form engine differs from gfec run"
-  for d in direct back; do (cd $d && "$gfec" actions.sfc --engine=$form --no-line-directives -o engine.c); done
-  cmp direct/engine.c back/engine.c || fail "the converted chart compiles to another $form engine"
-  cmp direct/engine.h back/engine.h || fail "the converted chart compiles to another $form header"
-done
-
 "$gfec" --emit=json "$dir/actions.sfc" -o model.json
 grep -q '"qualifier": "P0"' model.json || fail "--emit=json lost the P0 association"
 grep -q '"name": "Never"' model.json || fail "--emit=json lost action Never"
+
+check stored 15
+grep -q '^ *SD Horn 30ms;' back/stored.sfc || fail "--emit=chart lost 'SD Horn 30ms'"
+grep -q '^ *DS Fan 20ms;' back/stored.sfc || fail "--emit=chart lost 'DS Fan 20ms'"
+grep -q '^ *SL Lamp 40ms;' back/stored.sfc || fail "--emit=chart lost 'SL Lamp 40ms'"
+grep -q '^ *SD Beep 0ms;' back/stored.sfc || fail "--emit=chart lost 'SD Beep 0ms'"
 echo "iec_actions: ok"

@@ -61,6 +61,8 @@ jobs+=("$source_dir/tests/iec/mixer.sfc|readable" "$source_dir/tests/iec/mixer.s
 # Named actions under action control (docs/iec.md "Action control"): a sequential chart, so its
 # scalable form is the switch on the one active place.
 jobs+=("$source_dir/tests/iec/actions.sfc|readable" "$source_dir/tests/iec/actions.sfc|scalable")
+# SD, DS and SL: the flags and timers of stored actions.
+jobs+=("$source_dir/tests/iec/stored.sfc|readable" "$source_dir/tests/iec/stored.sfc|scalable")
 # --trace (docs/live.md): the frame writer in both forms, with sub-chart instances and a team.
 jobs+=("$source_dir/samples/line_follower.sfc|scalable+trace" "$source_dir/samples/mission.fsm|readable+calls"
   "$source_dir/samples/fetch_team.fsm|scalable+trace")

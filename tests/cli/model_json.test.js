@@ -207,3 +207,15 @@ test('json: named actions with their associations, only in a chart that has them
   assert.deepEqual(doc.places.map((p) => p.timed), [false, true, true, true]);
   assert.equal('actions' in emit(path.join(SOURCE_DIR, 'tests', 'iec', 'mixer.sfc')), false);
 });
+
+test('json: SD, DS and SL associations with their durations; DS times its place, SD and SL do not', () => {
+  const doc = emit(path.join(SOURCE_DIR, 'tests', 'iec', 'stored.sfc'));
+  const held = (name) => doc.actions.find((a) => a.name === name).associations
+    .map((a) => [a.place, a.qualifier, a.duration_ms, a.ticks]);
+  assert.deepEqual(held('Horn'), [['Idle', 'R', null, null], ['Arm', 'SD', 30, 3]]);
+  assert.deepEqual(held('Fan'), [['Idle', 'R', null, null], ['Run', 'DS', 20, 2]]);
+  assert.deepEqual(held('Lamp'), [['Idle', 'R', null, null], ['Arm', 'SL', 40, 4], ['Run', 'SL', 40, 4]]);
+  assert.deepEqual(held('Beep'), [['Arm', 'SD', 0, 0], ['Run', 'DS', 0, 0], ['Run', 'R', null, null]]);
+  // DS reads its place's timer, as elapsed() does; SD and SL time the action's own flag.
+  assert.deepEqual(doc.places.map((p) => [p.name, p.timed]), [['Idle', false], ['Arm', false], ['Run', true]]);
+});

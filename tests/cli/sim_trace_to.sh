@@ -3,7 +3,9 @@
 # engine trace (gfec --trace) on a loopback port, one connection per robot, and `gfec monitor
 # --tcp --log` decodes each; every decoded tick's activation must be the one carbot-sim's own
 # trace CSV records for that robot and tick (its `active` column), with nothing lost. One robot
-# on the oval for 2 s, then the fetch team's three robots for 1 s: about 4 s (real time).
+# on the oval for 2 s, then the fetch team's three robots for 1 s: about 4 s (real time). Then the
+# wall-follow plan's afp::LinkTrace for 4.5 s against carbot-sim's plan log (its engine compiled,
+# about 10 s).
 # Usage: sim_trace_to.sh GFEC CARBOT_SIM SOURCE_DIR
 set -euo pipefail
 gfec=$(realpath "$1") sim=$(realpath "$2") src=$(realpath "$3")
@@ -81,6 +83,28 @@ for i in 0 1 2; do
   diff "expected$i.txt" "got$i.txt" > diff.txt || fail "robot $i's decoded states differ from the team trace: $(head diff.txt)"
 done
 echo "fetch team: three robots, each as carbot-sim's trace"
+
+# A plan: its afp::LinkTrace's frames, decoded, must give carbot-sim's own plan log (which keeps
+# an actor's start only when another actor started before it, and interruptions and failures).
+# 4.5 s in the room: a touch interrupts searchFirstWall at 1.63 s, backing up ends at 4.04 s.
+plan=$src/samples/wall_follow.plan
+"$sim" "$plan" --world "$src/sim/worlds/room.json" --seconds 4.5 --trace-to tcp:127.0.0.1:0 --json plan.json -q \
+  --cache "" 2> plan.err &
+sim_pid=$!
+pids+=("$sim_pid")
+port=$(port_of plan.err)
+"$gfec" monitor "$plan" --tcp "127.0.0.1:$port" --log > plan.log 2> plan-monitor.err || fail "monitor: $(cat plan-monitor.err)"
+wait "$sim_pid" || fail "carbot-sim (plan): $(cat plan.err)"
+grep -q " 0 lost, 0 bytes garbled" plan-monitor.err || fail "monitor: $(cat plan-monitor.err)"
+awk '$2 == "start" { if ($3 != last) print $1, "start " $3; last = $3 }
+     $2 == "interrupt" { print $1, $3 " interrupted by " $5; last = "" }
+     $2 == "fail" { t = $1; sub(/^[0-9]+ fail /, ""); sub(/:/, " failed:"); print t, $0 }' plan.log > plan-got.txt
+node -e 'for (const e of JSON.parse(require("fs").readFileSync("plan.json", "utf8")).plan_log)
+           console.log(Math.round(e.t * 1000), e.event)' > plan-expected.txt
+[ "$(wc -l < plan-expected.txt)" -ge 4 ] || fail "the plan did too little: $(cat plan-expected.txt)"
+diff plan-expected.txt plan-got.txt || fail "the decoded plan events differ from carbot-sim's plan log"
+grep -q '^4500 end WallFollow stopped$' plan.log || fail "the plan's end: $(tail -1 plan.log)"
+echo "plan: $(wc -l < plan-got.txt) events as carbot-sim's plan log"
 
 # Usage errors, said before anything runs: exit 2 with the reason.
 chart=$src/samples/line_follower.sfc

@@ -241,6 +241,47 @@ const char *const kActionCharts[] = {
     "  I -> J when Go(1);\n  J -> I when Go(2);\n}\n"
     "sfc Outer {\n  action Mark { Hit(3); }\n  initial place A runs Inner { S Mark; }\n"
     "  place B runs Inner { R Mark; P0 Mark; }\n  A -> B when Go(3);\n  B -> A when Go(4);\n}\n",
+    // SD, DS and SL (tests/unit/interpreter_sfc_test.cc checks each by hand): a set and its place
+    // left before the delay, R before it, R in the tick of a set, DS left before its delay, SL
+    // running out and set again after R, durations of 0 and beyond the timers' range.
+    "sfc SdLeft {\n  period 10ms;\n  var int k = 0;\n  out int on = 0;\n  action Late { on += 1; }\n"
+    "  initial place Clock { k += 1; }\n  initial place A { SD Late 30ms; }\n  place B;\n  place C { R Late; }\n"
+    "  place D;\n  A -> B when k >= 1;\n  B -> C when k >= 6;\n  C -> D when k >= 7;\n}\n",
+    "sfc SdReset {\n  period 10ms;\n  var int k = 0;\n  out int late = 0;\n  out int lamp = 0;\n"
+    "  action Late { late += 1; }\n  action Lamp { lamp += 1; }\n  initial place Clock { k += 1; }\n"
+    "  initial place A { SD Late 30ms; }\n  place B { R Late; }\n"
+    "  place C { SD Late 30ms; R Late; SL Lamp 20ms; R Lamp; }\n  place D;\n"
+    "  A -> B when k >= 1;\n  B -> C when k >= 2;\n  C -> D when k >= 3;\n}\n",
+    "sfc Ds {\n  period 10ms;\n  var int k = 0;\n  out int a = 0;\n  out int b = 0;\n"
+    "  action Early { a += 1; }\n  action Kept { b += 1; }\n  initial place Clock { k += 1; }\n"
+    "  initial place A { DS Early 30ms; DS Kept 20ms; }\n  place B;\n  place C { R Kept; }\n"
+    "  A -> B when k >= 2;\n  B -> C when k >= 5;\n}\n",
+    "sfc Sl {\n  period 10ms;\n  var int k = 0;\n  out int l = 0;\n  out int z = 0;\n  out int y = 0;\n"
+    "  out int w = 0;\n  out int v = 0;\n  out int u = 0;\n"
+    "  action Lim { l += 1; }\n  action Zsd { z += 1; }\n  action Zds { y += 1; }\n  action Zsl { w += 1; }\n"
+    "  action Far { v += 1; }\n  action Wide { u += 1; }\n"
+    "  initial place Clock { k += 1; }\n  initial place A { SL Lim 30ms; SD Far 1e12s; SL Wide 1e12s; }\n"
+    "  place B { SD Zsd 0ms; DS Zds 0ms; SL Zsl 0ms; DS Far 1e12s; }\n"
+    "  place C { R Zsd; R Zds; R Lim; R Wide; }\n  place D { SL Lim 30ms; SL Wide 1e12s; }\n"
+    "  A -> B when k >= 5;\n  B -> C when k >= 6;\n  C -> D when k >= 7;\n  D -> A when k % 13 == 0;\n}\n",
+    // A sequential chart (its scalable form is the switch on the one active place) driven by
+    // inputs: every stored form in one action, set and reset around a cycle.
+    "sfc Cycle {\n  period 10ms;\n  in bool Go;\n  in int Level;\n  out int n = 0;\n  out int m = 0;\n"
+    "  action Run { n += 1; }\n  action Mix { m += 1; }\n"
+    "  initial place Idle { SD Run 40ms; R Mix; }\n  place Fill { SL Run 20ms; DS Mix 30ms; }\n"
+    "  place Hold { SD Run 40ms; S Mix; SL Mix 50ms; }\n  place Drain { R Run; DS Run 10ms; }\n"
+    "  Idle -> Fill when Go;\n  Fill -> Hold when Level > 20;\n  Hold -> Drain when !Go;\n"
+    "  Drain -> Idle when elapsed(Drain) >= 30ms;\n}\n",
+    // Sub-charts: an instance's SD, DS and SL flags and timers are its own, cleared as its place
+    // gains activation again (Brief, set by DS in J, runs until then).
+    "interface Io { void Hit(int i); }\n"
+    "sfc Inner {\n  period 10ms;\n  var int j = 0;\n  action Slow { Hit(1); }\n  action Brief { Hit(2); }\n"
+    "  initial place I { j += 1; SD Slow 30ms; SL Brief 20ms; }\n  place J { j += 1; DS Brief 20ms; R Slow; }\n"
+    "  I -> J when j % 5 == 4;\n  J -> I when j % 5 == 2;\n}\n"
+    "sfc Outer {\n  period 10ms;\n  var int k = 0;\n  action Mark { Hit(3); }\n"
+    "  initial place A runs Inner { k += 1; SD Mark 20ms; }\n  place B runs Inner { k += 1; SL Mark 30ms; }\n"
+    "  place C { k += 1; R Mark; }\n"
+    "  A -> B when k % 11 == 7;\n  B -> C when k % 11 == 10;\n  C -> A when k % 11 == 0;\n}\n",
 };
 
 }  // namespace

@@ -2,6 +2,10 @@
 #include "../run/shared_charts.h"
 #include "interpreter_support.h"
 
+#include <fmt/format.h>
+
+#include <algorithm>
+
 using namespace gfec;
 using test::compile;
 using test::kLineFollowerLeftSeesLine;
@@ -240,7 +244,7 @@ TEST_CASE("interpreter sfc: if, else if and else in actions, entry and exit") {
 
 namespace {
 
-/// A chart with named actions under the qualifiers that compile (docs/iec.md "Status").
+/// A chart with named actions (docs/language.md §14); it must compile without an error.
 std::unique_ptr<test::Compiled> compile_actions(const std::string &text) {
   auto c = std::make_unique<test::Compiled>(text);
   INFO(c->diagnostics());
@@ -328,4 +332,138 @@ sfc Timed {
                                "tick 2\nav 1\nout brief = 2\nout late = 1\n"
                                "tick 3\nav 1\nout brief = 2\nout late = 2\n"
                                "tick 4\nav 1\nout brief = 2\nout late = 3\n");
+}
+
+TEST_CASE("interpreter sfc: action control, SD set and its place left before the delay", "[iec]") {
+  // docs/iec.md "Action control": SD's timer counts from the tick of the set (0 then), 30ms at
+  // 10ms is 3 ticks. Tick 1: A sets Late (timer 0). Tick 2: A is left; the flag stays (timer 1).
+  // Tick 4: timer 3, Late runs, and every tick after. Tick 7: C resets it: its final run.
+  auto c = compile_actions(R"(
+sfc SdLeft {
+  period 10ms;
+  var int k = 0;
+  out int on = 0;
+  action Late { on += 1; }
+  initial place Clock { k += 1; }
+  initial place A { SD Late 30ms; }
+  place B;
+  place C { R Late; }
+  place D;
+  A -> B when k >= 1;
+  B -> C when k >= 6;
+  C -> D when k >= 7;
+}
+)");
+  ScriptedEnv env(*c);
+  CHECK(run_log(*c, env, 8) == "tick 1\nav 1 1 0 0 0\nout on = 0\n"
+                               "tick 2\nav 1 0 1 0 0\nout on = 0\n"
+                               "tick 3\nav 1 0 1 0 0\nout on = 0\n"
+                               "tick 4\nav 1 0 1 0 0\nout on = 1\n"
+                               "tick 5\nav 1 0 1 0 0\nout on = 2\n"
+                               "tick 6\nav 1 0 1 0 0\nout on = 3\n"
+                               "tick 7\nav 1 0 0 1 0\nout on = 4\n"
+                               "tick 8\nav 1 0 0 0 1\nout on = 4\n");
+}
+
+TEST_CASE("interpreter sfc: action control, R before the SD delay, R in the tick of a set", "[iec]") {
+  // Tick 1: A sets Late. Tick 2: B resets it before its 3 ticks: Late never runs. Tick 3: C sets
+  // Late and Lamp (SL, which would run at once) and resets both: the reset wins, neither runs,
+  // and no SD timer is left counting (had the set won, Late would run from tick 6).
+  auto c = compile_actions(R"(
+sfc SdReset {
+  period 10ms;
+  var int k = 0;
+  out int late = 0;
+  out int lamp = 0;
+  action Late { late += 1; }
+  action Lamp { lamp += 1; }
+  initial place Clock { k += 1; }
+  initial place A { SD Late 30ms; }
+  place B { R Late; }
+  place C { SD Late 30ms; R Late; SL Lamp 20ms; R Lamp; }
+  place D;
+  A -> B when k >= 1;
+  B -> C when k >= 2;
+  C -> D when k >= 3;
+}
+)");
+  ScriptedEnv env(*c);
+  std::string expected;
+  const char *av[] = {"1 1 0 0 0", "1 0 1 0 0", "1 0 0 1 0", "1 0 0 0 1"};
+  for (int tick = 1; tick <= 8; ++tick)
+    expected += fmt::format("tick {}\nav {}\nout late = 0\nout lamp = 0\n", tick, av[std::min(tick, 4) - 1]);
+  CHECK(run_log(*c, env, 8) == expected);
+}
+
+TEST_CASE("interpreter sfc: action control, DS set only if its place is still active at the delay", "[iec]") {
+  // A is initial: its timer is 1 in tick 1. Kept (DS 20ms): A's timer reaches 2 in tick 2, Kept
+  // is set and runs until C resets it in tick 6 (its final run). Early (DS 30ms): A is left in
+  // tick 3, the tick its timer would reach 3: never set, never runs.
+  auto c = compile_actions(R"(
+sfc Ds {
+  period 10ms;
+  var int k = 0;
+  out int a = 0;
+  out int b = 0;
+  action Early { a += 1; }
+  action Kept { b += 1; }
+  initial place Clock { k += 1; }
+  initial place A { DS Early 30ms; DS Kept 20ms; }
+  place B;
+  place C { R Kept; }
+  A -> B when k >= 2;
+  B -> C when k >= 5;
+}
+)");
+  ScriptedEnv env(*c);
+  CHECK(run_log(*c, env, 7) == "tick 1\nav 1 1 0 0\nout a = 0\nout b = 0\n"
+                               "tick 2\nav 1 1 0 0\nout a = 0\nout b = 1\n"
+                               "tick 3\nav 1 0 1 0\nout a = 0\nout b = 2\n"
+                               "tick 4\nav 1 0 1 0\nout a = 0\nout b = 3\n"
+                               "tick 5\nav 1 0 1 0\nout a = 0\nout b = 4\n"
+                               "tick 6\nav 1 0 0 1\nout a = 0\nout b = 5\n"
+                               "tick 7\nav 1 0 0 1\nout a = 0\nout b = 5\n");
+}
+
+TEST_CASE("interpreter sfc: action control, SL runs out, SD 0 / DS 0 as S, SL 0 never", "[iec]") {
+  // Lim (SL 30ms, 3 ticks): ticks 1-3, its final run in tick 4; A still holds it in tick 5 but
+  // the flag is still set, so the limit does not start again. C resets it in tick 7, D sets it
+  // again in tick 8: ticks 8-10 and the final run in 11. B (entered in tick 6, timer 0) holds
+  // Zsd under SD 0 and Zds under DS 0: both run at once, as under S, until C resets them (their
+  // final runs in tick 7); Zsl under SL 0 never runs.
+  auto c = compile_actions(R"(
+sfc Sl {
+  period 10ms;
+  var int k = 0;
+  out int l = 0;
+  out int z = 0;
+  out int y = 0;
+  out int w = 0;
+  action Lim { l += 1; }
+  action Zsd { z += 1; }
+  action Zds { y += 1; }
+  action Zsl { w += 1; }
+  initial place Clock { k += 1; }
+  initial place A { SL Lim 30ms; }
+  place B { SD Zsd 0ms; DS Zds 0ms; SL Zsl 0ms; }
+  place C { R Zsd; R Zds; R Lim; }
+  place D { SL Lim 30ms; }
+  A -> B when k >= 5;
+  B -> C when k >= 6;
+  C -> D when k >= 7;
+}
+)");
+  ScriptedEnv env(*c);
+  CHECK(run_log(*c, env, 12) == "tick 1\nav 1 1 0 0 0\nout l = 1\nout z = 0\nout y = 0\nout w = 0\n"
+                                "tick 2\nav 1 1 0 0 0\nout l = 2\nout z = 0\nout y = 0\nout w = 0\n"
+                                "tick 3\nav 1 1 0 0 0\nout l = 3\nout z = 0\nout y = 0\nout w = 0\n"
+                                "tick 4\nav 1 1 0 0 0\nout l = 4\nout z = 0\nout y = 0\nout w = 0\n"
+                                "tick 5\nav 1 1 0 0 0\nout l = 4\nout z = 0\nout y = 0\nout w = 0\n"
+                                "tick 6\nav 1 0 1 0 0\nout l = 4\nout z = 1\nout y = 1\nout w = 0\n"
+                                "tick 7\nav 1 0 0 1 0\nout l = 4\nout z = 2\nout y = 2\nout w = 0\n"
+                                "tick 8\nav 1 0 0 0 1\nout l = 5\nout z = 2\nout y = 2\nout w = 0\n"
+                                "tick 9\nav 1 0 0 0 1\nout l = 6\nout z = 2\nout y = 2\nout w = 0\n"
+                                "tick 10\nav 1 0 0 0 1\nout l = 7\nout z = 2\nout y = 2\nout w = 0\n"
+                                "tick 11\nav 1 0 0 0 1\nout l = 8\nout z = 2\nout y = 2\nout w = 0\n"
+                                "tick 12\nav 1 0 0 0 1\nout l = 8\nout z = 2\nout y = 2\nout w = 0\n");
 }

@@ -47,7 +47,7 @@ _gfec() {
       COMPREPLY=($(compgen -W '--log --http --http-remote --serial --baud --tcp --robots --silence --chart -I -x -W -w
         -f --help' -- "$cur"))
     else
-      COMPREPLY=($(compgen -f -X '!*.@(sfc|fsm|pml)' -- "$cur")); compopt -o plusdirs 2>/dev/null
+      COMPREPLY=($(compgen -f -X '!*.@(sfc|fsm|plan|pml)' -- "$cur")); compopt -o plusdirs 2>/dev/null
     fi
     return
   fi

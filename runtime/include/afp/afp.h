@@ -4,6 +4,7 @@
 #include "afp/actor.h"
 #include "afp/configuration.h"
 #include "afp/context.h"
+#include "afp/link_trace.h"
 #include "afp/params.h"
 #include "afp/plan.h"
 #include "afp/status.h"

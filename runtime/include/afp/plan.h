@@ -147,6 +147,14 @@ class Plan {
   const std::string& name_of(const Actor* actor) const;
   const std::string& name_of(const Supervisor* supervisor) const;
 
+  /// The actors and supervisors in the order they were added (for observers that number them,
+  /// such as afp::LinkTrace).
+  std::size_t actor_count() const { return actors_.size(); }
+  const std::string& actor_name(std::size_t index) const { return actors_.at(index).name; }
+  const Actor& actor_at(std::size_t index) const { return *actors_.at(index).actor; }
+  std::size_t supervisor_count() const { return supervisors_.size(); }
+  const std::string& supervisor_name(std::size_t index) const { return supervisors_.at(index).name; }
+
  private:
   friend class detail::Level;
 

@@ -10,7 +10,7 @@ if ! command -v nvim > /dev/null; then
     exit 1
   fi
   echo "nvim not found: skipped"
-  exit 0
+  exit 77
 fi
 work=$(mktemp -d "${TMPDIR:-/tmp}/gfec-neovim.XXXXXX")
 trap 'rm -rf "$work"' EXIT

@@ -7,12 +7,15 @@
 // what the toolbox's components print (indented), then the status and every config entry.
 // With the argument `threaded` the plan runs on the threaded executor instead, to its end:
 // the script's first line is applied, the others are not read, and plan times are left out
-// of the log (they are real time there).
+// of the log (they are real time there). With `link=FILE` an afp::LinkTrace beside the log
+// writes the plan's frames to FILE (docs/live.md "Plans"), with a heartbeat after each step,
+// for `gfec monitor PLAN --log` to decode (tests/cli/monitor_plan.sh).
 #include PLAN_HEADER
 
 #include <afp/afp.h>
 
 #include <chrono>
+#include <fstream>
 #include <iostream>
 #include <map>
 #include <string>
@@ -79,19 +82,31 @@ int main(int argc, char **argv) {
   Log log;
   auto plan = PLAN_FACTORY(ee);
   std::string line;
-  if (argc > 1 && std::string(argv[1]) == "threaded") {
+  bool threaded = false;
+  std::ofstream frames;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "threaded") threaded = true;
+    else if (arg.rfind("link=", 0) == 0) frames.open(arg.substr(5), std::ios::binary);
+  }
+  afp::LinkTrace link(*plan, [&](const unsigned char *data, std::size_t n) {
+    frames.write(reinterpret_cast<const char *>(data), static_cast<std::streamsize>(n));
+  });
+  afp::TraceTee both(&log, frames.is_open() ? &link : nullptr);
+  if (threaded) {
     log.timed = false;
-    afp::ThreadedExecutor exec(*plan, config, &log);
+    afp::ThreadedExecutor exec(*plan, config, &both);
     if (std::getline(std::cin, line)) apply_writes(config, ee.next(line));
     exec.run();
     report(exec);
   } else {
-    afp::SteppedExecutor exec(*plan, config, &log);
+    afp::SteppedExecutor exec(*plan, config, &both);
     if (std::getline(std::cin, line)) apply_writes(config, ee.next(line));
     exec.start();
     while (exec.status() == afp::Status::Running && std::getline(std::cin, line)) {
       apply_writes(config, ee.next(line));
       exec.step(10ms);
+      link.heartbeat(exec.now());
     }
     report(exec);
   }
