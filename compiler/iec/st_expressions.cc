@@ -88,14 +88,29 @@ StParser::Node StParser::or_expr() {
   return lhs;
 }
 
-// XOR of two BOOLs is their inequality; the chart language has no bitwise operators, so on
-// integers it is a type error as any other BOOL operator would be.
+// `a XOR b` is `!a != !b`: the inequality of two BOOLs, and on integers (IEC's bitwise XOR,
+// which the chart language has not) a type error at the `XOR`, as for AND and OR, rather than
+// an inequality of numbers.
 StParser::Node StParser::xor_expr() {
   Node lhs = and_expr();
   while (lhs.e && keyword("XOR")) {
     StToken op = tok();
     next();
-    lhs = binary(std::move(lhs), and_expr(), BinaryOp::Ne, op);
+    Node rhs = and_expr();
+    if (!rhs.e) return {};
+    auto negate = [&](Node n) {
+      if (n.e->kind == ast::Expr::Kind::Binary) {
+        auto p = make(ast::Expr::Kind::Paren, n.e->range);
+        p->args.push_back(std::move(n.e));
+        n.e = std::move(p);
+      }
+      auto e = make(ast::Expr::Kind::Unary, n.e->range);
+      e->unary_op = UnaryOp::Not;
+      e->set_op_range(range(op));  // a message about it quotes the XOR the user wrote
+      e->args.push_back(std::move(n.e));
+      return Node{std::move(e), n.height + 2};
+    };
+    lhs = binary(negate(std::move(lhs)), negate(std::move(rhs)), BinaryOp::Ne, op);
   }
   return lhs;
 }
