@@ -35,6 +35,9 @@ struct LoadResult {
   std::string main_unreadable_why;          ///< why not (FileText::why)
   const InputLanguage *language = nullptr;  ///< the main file's, once it was read
   std::vector<SourceElement> elements;      ///< ALICA input: every plan, state, transition... read
+  /// The chart compiled when the main file declares several and --chart names none (the IEC
+  /// PROGRAM that the file's one TASK runs, docs/iec.md); empty: the default rule alone.
+  std::string default_chart;
 };
 
 }  // namespace gfec
