@@ -1,0 +1,101 @@
+// The IEC 61131-3 program model: what the structured-text reader (st_reader.h) and the PLCopen
+// XML reader both fill, and what one lowering (lower.h) turns into the chart syntax tree.
+// docs/iec.md says what each element means and how it maps onto the chart language.
+//
+// Names and expressions are those of the chart syntax tree (ast.h): ST expressions and
+// statements are parsed straight into ast::Expr and ast::Stmt by st_fragment.h, with operator
+// ranges on what the user wrote (`AND`, `<>`), so messages quote the IEC spelling. As in the
+// tree, names own no text: they view the source text or a string the reader keeps
+// (ast::File::strings), which outlive the model and the tree made from it.
+#pragma once
+
+#include "ast.h"
+#include "source.h"
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace gfec::iec {
+
+/// A variable section. Only these three are read; the readers report the others
+/// (VAR_IN_OUT, VAR_EXTERNAL, VAR_GLOBAL, VAR_TEMP, ...) as located "not supported yet" errors.
+enum class Section : std::uint8_t { Input, Output, Local };
+
+/// `Start : BOOL;`, `Count : DINT := 3;` in one of the sections.
+struct Variable {
+  Section section = Section::Local;
+  ast::Name name;
+  /// The type as written (`BOOL`, `dint`, `TON`, `ARRAY` ...): the lowering maps BOOL, DINT, REAL,
+  /// LREAL and reports every other as not supported yet, at this range.
+  ast::Name type;
+  ast::ExprPtr init;  ///< the initial value (an ST expression), or null
+  /// `AT %IX0.0` was written (a located variable): its range, else empty. Not supported yet.
+  std::optional<SourceRange> located;
+  bool constant = false;  ///< in a `VAR CONSTANT` section
+  SourceRange range;
+};
+
+/// A step. Its associations are those of the chart language (ast::Association): the qualifier
+/// as written (N R S L D P P0 P1 SD DS SL, any case), the action, the duration in milliseconds.
+struct Step {
+  ast::Name name;
+  bool initial = false;
+  std::vector<ast::Association> associations;
+  SourceRange range;
+};
+
+/// `TRANSITION [name] [(PRIORITY := n)] FROM s TO t := condition; END_TRANSITION`, or a PLCopen
+/// transition between the steps it links.
+struct Transition {
+  std::optional<ast::Name> name;
+  std::optional<long long> priority;  ///< lower first within a selection divergence (docs/iec.md)
+  SourceRange priority_range;
+  std::vector<ast::Name> from, to;  ///< the preceding and succeeding steps
+  bool parenthesised_from = false, parenthesised_to = false;
+  ast::ExprPtr condition;  ///< a BOOL ST expression; never null in a transition the reader kept
+  SourceRange range;
+};
+
+/// `ACTION name: <ST statements> END_ACTION`.
+struct Action {
+  ast::Name name;
+  ast::Block body;
+  SourceRange range;
+};
+
+enum class PouKind : std::uint8_t { Program, FunctionBlock, Function };
+
+/// A program organisation unit: a PROGRAM (what gfec compiles), or a FUNCTION_BLOCK or
+/// FUNCTION a reader met (the lowering reports those as not supported yet).
+struct Pou {
+  PouKind kind = PouKind::Program;
+  ast::Name name;
+  std::vector<Variable> variables;  ///< in declaration order, all sections together
+  std::vector<Step> steps;          ///< in declaration order
+  std::vector<Transition> transitions;
+  std::vector<Action> actions;  ///< in declaration order: the order their bodies run in
+  /// The POU has a body that is not an SFC (plain ST statements, LD, FBD, IL): where, to report
+  /// it as not supported yet. Empty range when the body is an SFC or there is none.
+  std::optional<SourceRange> other_body;
+  SourceRange range;
+};
+
+/// `TASK name (INTERVAL := T#10ms, PRIORITY := 1);` and the program instances it runs
+/// (`PROGRAM inst WITH name : Pou;`).
+struct Task {
+  ast::Name name;
+  std::optional<double> interval_ms;
+  SourceRange interval_range;
+  std::vector<ast::Name> programs;  ///< the POU (type) names of the instances it runs
+  SourceRange range;
+};
+
+/// Everything one file declares: its POUs in order, and the tasks of its CONFIGURATION /
+/// RESOURCE (the period of a program is the INTERVAL of the task that runs it).
+struct Project {
+  std::vector<Pou> pous;
+  std::vector<Task> tasks;
+};
+
+}  // namespace gfec::iec

@@ -1,0 +1,214 @@
+// The lowering of an IEC program into the chart syntax tree (docs/iec.md "What a program is in
+// gfec's chart language"). IEC names are case-insensitive and the chart language's are not, so
+// every use of a variable, step or action is respelled as its declaration (`start` reads the
+// `Start` declared); the range stays on what the user wrote.
+#include "iec/lower.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <map>
+#include <string>
+
+namespace gfec::iec {
+
+namespace {
+
+std::string upper(std::string_view s) {
+  std::string out(s);
+  for (char &c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return out;
+}
+
+/// The chart type of an IEC elementary type gfec reads, or null.
+const char *chart_type(const std::string &iec) {
+  if (iec == "BOOL") return "bool";
+  if (iec == "DINT") return "int";
+  if (iec == "REAL") return "float";
+  if (iec == "LREAL") return "double";
+  return nullptr;
+}
+
+bool elementary(const std::string &iec) {
+  static const char *const kTypes[] = {"SINT",          "INT",   "LINT",   "USINT",   "UINT", "UDINT", "ULINT",
+                                       "BYTE",          "WORD",  "DWORD",  "LWORD",   "TIME", "LTIME", "DATE",
+                                       "TOD",           "DT",    "STRING", "WSTRING", "CHAR", "WCHAR", "TIME_OF_DAY",
+                                       "DATE_AND_TIME", "LDATE", "LTOD",   "LDT"};
+  for (const char *t : kTypes)
+    if (iec == t) return true;
+  return false;
+}
+
+const char *pou_kind(PouKind k) {
+  switch (k) {
+  case PouKind::Program: return "PROGRAM";
+  case PouKind::FunctionBlock: return "FUNCTION_BLOCK";
+  case PouKind::Function: return "FUNCTION";
+  }
+  return "POU";
+}
+
+/// Declared names by their upper-case spelling: IEC's case-insensitive scope of one POU.
+class Spellings {
+public:
+  void declare(const ast::Name &n) { by_upper_.emplace(upper(n.text), n.text); }
+  /// Respells `n` as its declaration, if it has one.
+  void respell(ast::Name &n) const {
+    auto it = by_upper_.find(upper(n.text));
+    if (it != by_upper_.end()) n.text = it->second;
+  }
+  void respell(ast::Expr &e) const {
+    if (e.kind == ast::Expr::Kind::Name || e.kind == ast::Expr::Kind::Path) respell(e.name);
+    for (ast::Expr *a : e.args)
+      if (a) respell(*a);
+  }
+  template <typename Stmts> void respell_block(Stmts &b) const {
+    for (ast::Stmt &s : b) {
+      if (s.call) respell(*s.call);
+      if (s.value) respell(*s.value);
+      if (s.target) respell(*s.target);
+      respell_block(s.then_block);
+      respell_block(s.else_block);
+    }
+  }
+
+private:
+  std::map<std::string, std::string_view> by_upper_;
+};
+
+ast::ValueDecl lower_variable(Variable &v, Diagnostics &diag) {
+  ast::ValueDecl d;
+  d.role = v.section == Section::Input    ? ast::VarRole::In
+           : v.section == Section::Output ? ast::VarRole::Out
+                                          : ast::VarRole::Local;
+  d.is_const = v.constant && v.section == Section::Local;
+  d.name = v.name;
+  d.range = v.range;
+  const std::string t = upper(v.type.text);
+  if (const char *c = chart_type(t)) {
+    d.type = {c, v.type.range};
+  } else {
+    d.type = {"int", v.type.range};  // reported: what follows is still checked
+    if (elementary(t))
+      diag.error(v.type.range, ErrorKind::NotSupported,
+                 fmt::format("the IEC type '{}' is not supported yet: gfec reads BOOL, DINT, REAL and LREAL "
+                             "variables",
+                             v.type.text));
+    else
+      diag.error(v.type.range, ErrorKind::NotSupported,
+                 fmt::format("'{}' is not an elementary type gfec reads: function-block instances and "
+                             "user-defined types are not supported yet",
+                             v.type.text));
+  }
+  if (v.located)
+    diag.error(*v.located, ErrorKind::NotSupported,
+               fmt::format("located variable '{}' ('AT %...') is not supported yet", v.name.text));
+  d.init = std::move(v.init);
+  return d;
+}
+
+}  // namespace
+
+std::optional<ast::Period> period_of(const Project &project, const Pou &pou, Diagnostics &diag) {
+  std::optional<ast::Period> found;
+  const std::string name = upper(pou.name.text);
+  for (const Task &t : project.tasks) {
+    bool runs =
+        std::any_of(t.programs.begin(), t.programs.end(), [&](const ast::Name &p) { return upper(p.text) == name; });
+    if (!runs || !t.interval_ms) continue;
+    if (!found) {
+      found = ast::Period{*t.interval_ms, t.interval_range};
+    } else if (found->ms != *t.interval_ms) {
+      diag.error(t.interval_range, ErrorKind::Period,
+                 fmt::format("program '{}' runs in tasks of different INTERVALs; gfec runs a program at one period",
+                             pou.name.text))
+          .note(found->range, "the other INTERVAL");
+    }
+  }
+  return found;
+}
+
+bool lower(Pou &&pou, const std::optional<ast::Period> &period, ast::File &file, Diagnostics &diag) {
+  if (pou.kind != PouKind::Program) {
+    diag.error(pou.name.range, ErrorKind::NotSupported,
+               fmt::format("{} '{}' is not supported yet: gfec compiles PROGRAMs", pou_kind(pou.kind), pou.name.text));
+    return false;
+  }
+  if (pou.other_body) {
+    diag.error(*pou.other_body, ErrorKind::NotSupported,
+               fmt::format("program '{}': a body that is not a sequential function chart is not supported yet",
+                           pou.name.text));
+    return false;
+  }
+  Spellings names;
+  for (const Variable &v : pou.variables) names.declare(v.name);
+  for (const Step &s : pou.steps) names.declare(s.name);
+  for (const Action &a : pou.actions) names.declare(a.name);
+
+  ast::Chart &c = file.charts.emplace_back();
+  c.kind = ast::Chart::Kind::Sfc;
+  c.name = pou.name;
+  c.range = pou.range;
+  if (period) c.periods.push_back(*period);
+  for (Variable &v : pou.variables) {
+    ast::ValueDecl d = lower_variable(v, diag);
+    if (d.init) names.respell(*d.init);
+    c.values.push_back(std::move(d));
+  }
+  for (Step &s : pou.steps) {
+    ast::Place &p = c.places.emplace_back();
+    p.initial = s.initial;
+    p.name = s.name;
+    p.range = s.range;
+    if (!s.associations.empty()) {
+      for (ast::Association &as : s.associations) {
+        names.respell(as.action);
+        std::string q = upper(as.qualifier.text);
+        if (q != as.qualifier.text) as.qualifier.text = file.strings.emplace_back(std::move(q));
+      }
+      p.extra().associations = std::move(s.associations);
+    }
+  }
+  // PRIORITY orders the transitions of a divergence, lower first; those without one keep their
+  // order after those with one (docs/iec.md). Transitions of different divergences never
+  // compete, so one stable order over all of them says the same.
+  std::stable_sort(pou.transitions.begin(), pou.transitions.end(), [](const Transition &a, const Transition &b) {
+    if (!a.priority || !b.priority) return a.priority.has_value() && !b.priority.has_value();
+    return *a.priority < *b.priority;
+  });
+  for (Transition &t : pou.transitions) {
+    ast::Transition &x = c.transitions.emplace_back();
+    for (ast::Name &n : t.from) names.respell(n);
+    for (ast::Name &n : t.to) names.respell(n);
+    x.set_places(t.from, t.to);
+    x.parenthesised_inputs = t.parenthesised_from || t.from.size() != 1;
+    x.parenthesised_outputs = t.parenthesised_to || t.to.size() != 1;
+    if (t.name) {
+      x.named = true;
+      x.name = *t.name;
+    }
+    x.range = t.range;
+    x.condition = std::move(t.condition);
+    if (x.condition) names.respell(*x.condition);
+  }
+  for (Action &a : pou.actions) {
+    ast::ActionDecl &d = c.actions.emplace_back();
+    d.name = a.name;
+    d.range = a.range;
+    names.respell_block(a.body);
+    d.body = std::move(a.body);
+  }
+  return true;
+}
+
+std::size_t lower(Project &&project, ast::File &file, Diagnostics &diag) {
+  std::size_t added = 0;
+  for (Pou &p : project.pous) {
+    std::optional<ast::Period> period = p.kind == PouKind::Program ? period_of(project, p, diag) : std::nullopt;
+    if (lower(std::move(p), period, file, diag)) ++added;
+  }
+  return added;
+}
+
+}  // namespace gfec::iec

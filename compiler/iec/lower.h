@@ -1,0 +1,30 @@
+// The one lowering of an IEC program (iec_model.h) into the chart syntax tree (ast.h), shared by
+// the ST and the PLCopen XML readers: docs/iec.md "What a program is in gfec's chart language".
+#pragma once
+
+#include "ast.h"
+#include "diagnostics.h"
+#include "iec/iec_model.h"
+
+#include <optional>
+
+namespace gfec::iec {
+
+/// The scan period of `pou`: the INTERVAL of the one task of `project` that runs it, or nullopt
+/// (none runs it, or it has no INTERVAL). Two tasks with different intervals running it are an
+/// error at the second one.
+std::optional<ast::Period> period_of(const Project &project, const Pou &pou, Diagnostics &diag);
+
+/// Turns `pou` into an sfc of the chart language and appends it to `file.charts`: its variables
+/// (BOOL, DINT, REAL, LREAL as bool, int, float, double; every other type a located
+/// "not supported yet" error), steps, transitions (ordered by PRIORITY within their divergence),
+/// named actions and the period. Consumes the POU's expressions and statements. A FUNCTION_BLOCK
+/// or FUNCTION, or a POU whose body is not an SFC, is reported and adds nothing. Returns whether
+/// a chart was added.
+bool lower(Pou &&pou, const std::optional<ast::Period> &period, ast::File &file, Diagnostics &diag);
+
+/// Lowers every PROGRAM of `project` into `file` (each with the period of the task that runs
+/// it), and reports every other POU kind as not supported yet. Returns how many charts it added.
+std::size_t lower(Project &&project, ast::File &file, Diagnostics &diag);
+
+}  // namespace gfec::iec
