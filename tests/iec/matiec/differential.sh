@@ -23,7 +23,7 @@ form=${3:-st}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-programs=0 scans=0 differ=0 final=0 bad=0
+programs=0 identical=0 scans=0 differ=0 final=0 bad=0
 run() { # FILE CSV OUT: gfec's tick and out lines
   if ! "$gfec" run "$1" --inputs "$2" --observable > "$work/full" 2> "$work/err"; then
     echo "FAIL: gfec run $1 --inputs $2 --observable:" >&2
@@ -56,6 +56,7 @@ for csv in "$dir"/random/*.csv "$dir"/agree/*.csv; do
     NR % 3 == 0 {print (g == m) ? 0 : (g == $0) ? 1 : 2}')
   d=$(grep -c '[12]' <<< "$verdicts" || true)
   f=$(grep -c 1 <<< "$verdicts" || true)
+  [ "$d" -eq 0 ] && identical=$((identical + 1))
   differ=$((differ + d))
   final=$((final + f))
   if [ "$d" -ne "$f" ]; then
@@ -82,7 +83,7 @@ for csv in "$dir"/hand/*.csv; do
   fi
 done
 
-echo "matiec_differential ($form): $programs random programs, $scans scans; $differ scans differ" \
-  "from MatIEC, $final of them by the final scan alone (documented), $((differ - final)) otherwise;" \
-  "$hand hand cases; $bad failures"
+echo "matiec_differential ($form): $programs programs, $scans scans; $identical programs print" \
+  "MatIEC's log; $differ scans differ from it, $final of them by the final scan alone (documented)," \
+  "$((differ - final)) otherwise; $hand hand cases of documented differences; $bad failures"
 [ "$bad" -eq 0 ]
