@@ -40,7 +40,7 @@ extern %(type)s RES__INST;
 void config_init__(void);
 void config_run__(unsigned long tick);
 extern unsigned long long common_ticktime__;
-static const long long trace[][%(ncols)d] = {
+static const double trace[][%(ncols)d] = { /* REAL: the text as a double, then float, as gfec's (float)strtod */
 %(rows)s
 };
 int main(void)
@@ -128,10 +128,13 @@ def run_one(st_path, matiec, with_final):
     index = {h.lower(): i for i, h in enumerate(header)}
     table = []
     for r in rows[1:]:
-        table.append([int({"true": "1", "false": "0"}.get(r[index[n.lower()]].strip(), r[index[n.lower()]].strip()))
-                      if n.lower() in index else 0 for n, _ in inputs])
-    sets = "\n".join("        RES__INST.%s.value = trace[n - 1][%d];" % (n.upper(), i)
-                     for i, (n, _) in enumerate(inputs))
+        cells = []
+        for n, _ in inputs:
+            text = r[index[n.lower()]].strip() if n.lower() in index else "0"
+            cells.append({"true": "1", "false": "0"}.get(text.lower(), text))
+        table.append(cells)
+    sets = "\n".join("        RES__INST.%s.value = (%s)trace[n - 1][%d];" % (n.upper(), t, i)
+                     for i, (n, t) in enumerate(inputs))
     main = MAIN % {
         "type": name.upper(), "ncols": max(1, len(inputs)),
         "rows": ",\n".join("    {%s}" % ", ".join(str(v) for v in (r or [0])) for r in table),
