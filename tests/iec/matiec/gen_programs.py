@@ -15,11 +15,11 @@ classifies (README.md):
     so at most one holds and MatIEC's "every enabled branch fires" never shows;
   - an action is held by at most one step under a non-stored qualifier (N, L, D); S and R may be
     shared;
-  - no P, P0, P1 (hand cases cover them);
+  - no P (hand cases cover it); P1 and P0 only with --edges, P1 never on the initial step;
   - a duration that is not a whole number of periods is compared only with >= and < (the ones
     gfec's rounding up and MatIEC's time comparison agree on).
 
-Usage: gen_programs.py --seed S --count N [--reals] --out DIR
+Usage: gen_programs.py --seed S --count N [--reals] [--edges] --out DIR
 Deterministic: the same seed and count write the same files.
 """
 
@@ -119,10 +119,11 @@ def c_stmts(stmts, ind):
 
 
 class Program:
-    def __init__(self, rng, name, reals=False):
+    def __init__(self, rng, name, reals=False, edges=False):
         self.rng = rng
         self.name = name
         self.reals = reals
+        self.edges = edges
         self.period = rng.choice([10, 20, 50, 100])
         self.bool_in = ["a%d" % i for i in range(rng.randint(1, 3))]
         self.int_in = ["n%d" % i for i in range(rng.randint(1, 2))]
@@ -342,9 +343,11 @@ class Program:
         for a in self.actions:
             kind = rng.random()
             if kind < 0.6:
-                q = rng.choice(["N", "N", "L", "D"])
-                dur = None if q == "N" else self.duration()[0]
-                self.assoc[rng.choice(self.steps)].append((a, q, dur))
+                q = rng.choice(["N", "N", "L", "D"] + (["P1", "P0"] if self.edges else []))
+                dur = self.duration()[0] if q in ("L", "D") else None
+                # P1 on the initial step is a documented difference (MatIEC never runs it in scan 1)
+                steps = [s for s in self.steps if s != self.initial] if q == "P1" else self.steps
+                self.assoc[rng.choice(steps)].append((a, q, dur))
             else:
                 for s in rng.sample(self.steps, min(len(self.steps), rng.randint(1, 2))):
                     self.assoc[s].append((a, "S", None))
@@ -447,12 +450,14 @@ def main():
     ap.add_argument("--out", required=True)
     ap.add_argument("--reals", action="store_true",
                     help="programs named realNNN with a REAL input and REAL and LREAL outputs too")
+    ap.add_argument("--edges", action="store_true",
+                    help="actions under P1 (not on the initial step) and P0 too")
     args = ap.parse_args()
     os.makedirs(args.out, exist_ok=True)
     for i in range(args.count):
         rng = random.Random("%d/%d" % (args.seed, i))
         name = ("real%03d" if args.reals else "gen%03d") % i
-        p = Program(rng, name, args.reals)
+        p = Program(rng, name, args.reals, args.edges)
         p.build()
         for ext, text in (("st", p.st()), ("sfc", p.sfc()), ("csv", p.trace())):
             with open(os.path.join(args.out, "%s.%s" % (name, ext)), "w") as f:
