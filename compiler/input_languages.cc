@@ -1,6 +1,7 @@
 #include "input_languages.h"
 
 #include "alica/alica_reader.h"
+#include "iec/st_reader.h"
 #include "plcopen/plcopen_reader.h"
 
 #include <algorithm>
@@ -15,6 +16,7 @@ std::vector<const InputLanguage *> &rows() {
   static std::vector<const InputLanguage *> table = {
       &chart_text_language(),  // compiler/loader.cc
       &alica::language(),      // compiler/alica/alica_language.cc
+      &iec::st_language(),     // compiler/iec/st_language.cc
       &plcopen::language(),    // compiler/plcopen/plcopen_language.cc
   };
   return table;

@@ -5,8 +5,9 @@
 namespace gfec::iec {
 
 std::uint32_t FragmentPlace::offset(std::uint32_t o) const {
-  auto it = std::upper_bound(breaks.begin(), breaks.end(), o,
-                             [](std::uint32_t x, const std::pair<std::uint32_t, std::uint32_t> &b) { return x < b.first; });
+  auto it =
+      std::upper_bound(breaks.begin(), breaks.end(), o,
+                       [](std::uint32_t x, const std::pair<std::uint32_t, std::uint32_t> &b) { return x < b.first; });
   if (it == breaks.begin()) return o;  // no breakpoint before o: a place without one maps as is
   --it;
   return it->second + (o - it->first);

@@ -31,10 +31,10 @@ const char *chart_type(const std::string &iec) {
 }
 
 bool elementary(const std::string &iec) {
-  static const char *const kTypes[] = {"SINT",  "INT",   "LINT",  "USINT", "UINT",   "UDINT",         "ULINT",
-                                       "BYTE",  "WORD",  "DWORD", "LWORD", "TIME",   "LTIME",         "DATE",
-                                       "TOD",   "DT",    "STRING", "WSTRING", "CHAR", "WCHAR",        "TIME_OF_DAY",
-                                       "DATE_AND_TIME", "LDATE", "LTOD",  "LDT"};
+  static const char *const kTypes[] = {"SINT",          "INT",   "LINT",   "USINT",   "UINT", "UDINT", "ULINT",
+                                       "BYTE",          "WORD",  "DWORD",  "LWORD",   "TIME", "LTIME", "DATE",
+                                       "TOD",           "DT",    "STRING", "WSTRING", "CHAR", "WCHAR", "TIME_OF_DAY",
+                                       "DATE_AND_TIME", "LDATE", "LTOD",   "LDT"};
   for (const char *t : kTypes)
     if (iec == t) return true;
   return false;
@@ -79,7 +79,7 @@ private:
 
 ast::ValueDecl lower_variable(Variable &v, Diagnostics &diag) {
   ast::ValueDecl d;
-  d.role = v.section == Section::Input ? ast::VarRole::In
+  d.role = v.section == Section::Input    ? ast::VarRole::In
            : v.section == Section::Output ? ast::VarRole::Out
                                           : ast::VarRole::Local;
   d.is_const = v.constant && v.section == Section::Local;
@@ -114,8 +114,8 @@ std::optional<ast::Period> period_of(const Project &project, const Pou &pou, Dia
   std::optional<ast::Period> found;
   const std::string name = upper(pou.name.text);
   for (const Task &t : project.tasks) {
-    bool runs = std::any_of(t.programs.begin(), t.programs.end(),
-                            [&](const ast::Name &p) { return upper(p.text) == name; });
+    bool runs =
+        std::any_of(t.programs.begin(), t.programs.end(), [&](const ast::Name &p) { return upper(p.text) == name; });
     if (!runs || !t.interval_ms) continue;
     if (!found) {
       found = ast::Period{*t.interval_ms, t.interval_range};

@@ -1,0 +1,334 @@
+// ST expressions as chart expressions: IEC's operators become the chart's with the range of what
+// the user wrote (`AND`, `<>`, `MOD`), `Step.X` and `Step.T` become `active(Step)` and
+// `elapsed(Step)`, TIME literals durations (docs/iec.md).
+#include "iec/st_parser.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace gfec::iec {
+
+namespace {
+
+ast::ExprPtr make(ast::Expr::Kind kind, const SourceRange &at) {
+  auto e = std::make_unique<ast::Expr>();
+  e->kind = kind;
+  e->range = at;
+  return e;
+}
+
+}  // namespace
+
+StParser::StParser(std::string_view text, const FragmentPlace &place, std::deque<std::string> &strings,
+                   Diagnostics &diag)
+    : text_(text), place_(place), strings_(strings), diag_(diag), toks_(lex_st(text, place, diag)) {}
+
+std::string StParser::quoted() const {
+  if (at_end()) return "the end of the text";
+  return fmt::format("'{}'", tok().text);
+}
+
+Diagnostic &StParser::error(const SourceRange &at, std::string message, ErrorKind kind) {
+  static thread_local Diagnostic discarded;
+  if (quiet_) {
+    discarded = Diagnostic();
+    return discarded;
+  }
+  quiet_ = true;
+  return diag_.error(at, kind, std::move(message));
+}
+
+ast::ExprPtr StParser::expression() {
+  if (++depth_ > kMaxStNesting) {
+    --depth_;
+    error(range(tok()), fmt::format("expression nested too deeply (more than {} levels)", kMaxStNesting),
+          ErrorKind::Nesting);
+    return nullptr;
+  }
+  Node n = or_expr();
+  --depth_;
+  return std::move(n.e);
+}
+
+StParser::Node StParser::binary(Node lhs, Node rhs, BinaryOp op, const StToken &at) {
+  if (!lhs.e || !rhs.e) return {};
+  int h = std::max(lhs.height, rhs.height) + 1;
+  if (h > kMaxStNesting) {
+    error(range(at), fmt::format("expression nested too deeply (more than {} levels)", kMaxStNesting),
+          ErrorKind::Nesting);
+    return {};
+  }
+  auto e = make(ast::Expr::Kind::Binary, lhs.e->range.to(rhs.e->range));
+  e->binary_op = op;
+  e->set_op_range(range(at));
+  e->args.push_back(std::move(lhs.e));
+  e->args.push_back(std::move(rhs.e));
+  return {std::move(e), h};
+}
+
+StParser::Node StParser::or_expr() {
+  Node lhs = xor_expr();
+  while (lhs.e && keyword("OR")) {
+    StToken op = tok();
+    next();
+    lhs = binary(std::move(lhs), xor_expr(), BinaryOp::Or, op);
+  }
+  return lhs;
+}
+
+// XOR of two BOOLs is their inequality; the chart language has no bitwise operators, so on
+// integers it is a type error as any other BOOL operator would be.
+StParser::Node StParser::xor_expr() {
+  Node lhs = and_expr();
+  while (lhs.e && keyword("XOR")) {
+    StToken op = tok();
+    next();
+    lhs = binary(std::move(lhs), and_expr(), BinaryOp::Ne, op);
+  }
+  return lhs;
+}
+
+StParser::Node StParser::and_expr() {
+  Node lhs = equality();
+  while (lhs.e && (keyword("AND") || tok().kind == StTok::Amp)) {
+    StToken op = tok();
+    next();
+    lhs = binary(std::move(lhs), equality(), BinaryOp::And, op);
+  }
+  return lhs;
+}
+
+StParser::Node StParser::equality() {
+  Node lhs = comparison();
+  while (lhs.e) {
+    StToken op = tok();
+    if (op.kind == StTok::EqEq || op.kind == StTok::BangEq) {
+      const char *iec = op.kind == StTok::EqEq ? "=" : "<>";
+      error(range(op), fmt::format("'{}' is not IEC 61131-3: structured text compares with '{}'", op.text, iec))
+          .fix(range(op), iec);
+      return {};
+    }
+    if (op.kind != StTok::Eq && op.kind != StTok::Ne) break;
+    next();
+    lhs = binary(std::move(lhs), comparison(), op.kind == StTok::Eq ? BinaryOp::Eq : BinaryOp::Ne, op);
+  }
+  return lhs;
+}
+
+StParser::Node StParser::comparison() {
+  Node lhs = additive();
+  while (lhs.e) {
+    StToken op = tok();
+    BinaryOp b;
+    if (op.kind == StTok::Lt) b = BinaryOp::Lt;
+    else if (op.kind == StTok::Le) b = BinaryOp::Le;
+    else if (op.kind == StTok::Gt) b = BinaryOp::Gt;
+    else if (op.kind == StTok::Ge) b = BinaryOp::Ge;
+    else break;
+    next();
+    lhs = binary(std::move(lhs), additive(), b, op);
+  }
+  return lhs;
+}
+
+StParser::Node StParser::additive() {
+  Node lhs = term();
+  while (lhs.e && (tok().kind == StTok::Plus || tok().kind == StTok::Minus)) {
+    StToken op = tok();
+    next();
+    lhs = binary(std::move(lhs), term(), op.kind == StTok::Plus ? BinaryOp::Add : BinaryOp::Sub, op);
+  }
+  return lhs;
+}
+
+StParser::Node StParser::term() {
+  Node lhs = power();
+  while (lhs.e && (tok().kind == StTok::Star || tok().kind == StTok::Slash || keyword("MOD"))) {
+    StToken op = tok();
+    next();
+    BinaryOp b = op.kind == StTok::Star ? BinaryOp::Mul : op.kind == StTok::Slash ? BinaryOp::Div : BinaryOp::Mod;
+    lhs = binary(std::move(lhs), power(), b, op);
+  }
+  return lhs;
+}
+
+StParser::Node StParser::power() {
+  Node lhs = unary();
+  if (lhs.e && tok().kind == StTok::Power) {
+    not_supported(range(tok()), "the power operator '**' is not supported yet");
+    return {};
+  }
+  return lhs;
+}
+
+StParser::Node StParser::unary() {
+  StToken op = tok();
+  bool neg = op.kind == StTok::Minus, plus = op.kind == StTok::Plus, not_ = keyword("NOT");
+  if (!neg && !plus && !not_) return primary();
+  if (++depth_ > kMaxStNesting) {
+    --depth_;
+    error(range(op), fmt::format("expression nested too deeply (more than {} levels)", kMaxStNesting),
+          ErrorKind::Nesting);
+    return {};
+  }
+  next();
+  Node operand = unary();
+  --depth_;
+  if (!operand.e || plus) return operand;
+  auto e = make(ast::Expr::Kind::Unary, range(op).to(operand.e->range));
+  e->unary_op = neg ? UnaryOp::Neg : UnaryOp::Not;
+  e->set_op_range(range(op));
+  e->args.push_back(std::move(operand.e));
+  return {std::move(e), operand.height + 1};
+}
+
+StParser::Node StParser::literal() {
+  const StToken t = tok();
+  next();
+  switch (t.kind) {
+  case StTok::Int: {
+    if (t.overflow) {
+      error(range(t), fmt::format("integer literal '{}' does not fit 64 bits", t.text));
+      return {};
+    }
+    auto e = make(ast::Expr::Kind::Int, range(t));
+    // The chart's Int is its decimal spelling; `1_000`, `16#FF`, `DINT#5` are made decimal.
+    std::string decimal = std::to_string(t.int_value);
+    e->name.text = decimal == t.text ? t.text : std::string_view(strings_.emplace_back(std::move(decimal)));
+    return {std::move(e), 0};
+  }
+  case StTok::Real: {
+    auto e = make(ast::Expr::Kind::Float, range(t));
+    std::string_view s = t.text;
+    if (auto hash = s.find('#'); hash != std::string_view::npos) s = s.substr(hash + 1);
+    if (s.find('_') != std::string_view::npos) {
+      std::string clean;
+      for (char c : s)
+        if (c != '_') clean += c;
+      s = strings_.emplace_back(std::move(clean));
+    }
+    e->name.text = s;
+    return {std::move(e), 0};
+  }
+  case StTok::Time: {
+    auto e = make(ast::Expr::Kind::Duration, range(t));
+    e->duration_ms = t.ms;
+    e->name.text = t.text;
+    if (t.ms < 0) {
+      not_supported(range(t), fmt::format("a negative TIME literal ('{}') is not supported", t.text));
+      return {};
+    }
+    return {std::move(e), 0};
+  }
+  case StTok::Typed:
+    not_supported(range(t), fmt::format("the typed literal '{}' is not supported yet", t.text));
+    return {};
+  case StTok::String:
+    not_supported(range(t), "STRING values are not supported yet");
+    return {};
+  default: break;
+  }
+  return {};
+}
+
+StParser::Node StParser::primary() {
+  const StToken t = tok();
+  switch (t.kind) {
+  case StTok::Int:
+  case StTok::Real:
+  case StTok::Time:
+  case StTok::Typed:
+  case StTok::String: return literal();
+  case StTok::LParen: {
+    next();
+    if (++depth_ > kMaxStNesting) {
+      --depth_;
+      error(range(t), fmt::format("expression nested too deeply (more than {} levels)", kMaxStNesting),
+            ErrorKind::Nesting);
+      return {};
+    }
+    Node inner = or_expr();
+    --depth_;
+    if (!inner.e) return {};
+    if (tok().kind != StTok::RParen) {
+      error(range(tok()), fmt::format("expected ')' to close the '(' here, not {}", quoted()))
+          .note(range(t), "the '(' it closes");
+      return {};
+    }
+    const StToken close = tok();
+    next();
+    auto e = make(ast::Expr::Kind::Paren, range(t, close));
+    e->args.push_back(std::move(inner.e));
+    return {std::move(e), inner.height + 1};
+  }
+  case StTok::Ident: return name_use();
+  case StTok::Direct:
+    not_supported(range(t), fmt::format("direct address '{}' is not supported yet", t.text));
+    return {};
+  default: break;
+  }
+  error(range(t), fmt::format("expected an expression, not {}", quoted()));
+  return {};
+}
+
+StParser::Node StParser::name_use() {
+  const StToken t = tok();
+  if (is_keyword(t, "TRUE") || is_keyword(t, "FALSE")) {
+    next();
+    auto e = make(ast::Expr::Kind::Bool, range(t));
+    e->bool_value = is_keyword(t, "TRUE");
+    return {std::move(e), 0};
+  }
+  static const char *const kReserved[] = {"THEN", "ELSE", "ELSIF", "END_IF", "DO", "OF", "END_CASE", "AND", "OR",
+                                          "XOR", "MOD", "NOT", "TO", "FROM", "END_TRANSITION", "END_ACTION"};
+  for (const char *k : kReserved)
+    if (is_keyword(t, k)) {
+      error(range(t), fmt::format("expected an expression, not the keyword '{}'", t.text));
+      return {};
+    }
+  next();
+  if (tok().kind == StTok::Dot && peek().kind == StTok::Ident) {
+    const StToken member = peek();
+    next();
+    next();
+    bool x = is_keyword(member, "X"), time = is_keyword(member, "T");
+    if (x || time) {
+      // `Step.X` is active(Step), `Step.T` elapsed(Step) (docs/iec.md); an unknown step is the
+      // validator's to report, as for chart text.
+      auto e = make(ast::Expr::Kind::Call, range(t, member));
+      e->name = {x ? std::string_view("active") : std::string_view("elapsed"), range(member)};
+      auto arg = make(ast::Expr::Kind::Name, range(t));
+      arg->name = name(t);
+      e->args.push_back(std::move(arg));
+      return {std::move(e), 1};
+    }
+    if (is_keyword(member, "Q") || is_keyword(member, "A"))
+      not_supported(range(t, member),
+                    fmt::format("an action's '.{}' ('{}.{}') is not supported yet", member.text, t.text, member.text));
+    else
+      not_supported(range(t, member),
+                    fmt::format("'{}.{}': members of structures and function-block instances are not supported yet",
+                                t.text, member.text));
+    return {};
+  }
+  if (tok().kind == StTok::LParen) {
+    not_supported(range(t), fmt::format("calling '{}' is not supported yet: gfec reads no functions or function "
+                                        "blocks in structured text",
+                                        t.text));
+    return {};
+  }
+  if (tok().kind == StTok::LBracket) {
+    not_supported(range(t), fmt::format("'{}[...]': arrays are not supported yet", t.text));
+    return {};
+  }
+  if (tok().kind == StTok::Caret) {
+    not_supported(range(t), fmt::format("'{}^': pointers are not supported", t.text));
+    return {};
+  }
+  auto e = make(ast::Expr::Kind::Name, range(t));
+  e->name = name(t);
+  return {std::move(e), 0};
+}
+
+}  // namespace gfec::iec

@@ -1,0 +1,638 @@
+// The structure of an ST file: POUs with their variable sections and textual SFC (steps with
+// their action associations, transitions, actions), and configurations with resources, tasks
+// and program instances. Expressions and statement lists are st_expressions.cc's and
+// st_statements.cc's; what gfec does not read yet is a located "not supported yet" error.
+#include "iec/st_parser.h"
+#include "iec/st_reader.h"
+
+#include <fmt/format.h>
+
+#include <cctype>
+
+namespace gfec::iec {
+
+namespace {
+
+std::string upper(std::string_view s) {
+  std::string out(s);
+  for (char &c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return out;
+}
+
+bool qualifier(const std::string &q) {
+  for (const char *k : {"N", "R", "S", "L", "D", "P", "P0", "P1", "SD", "DS", "SL"})
+    if (q == k) return true;
+  return false;
+}
+
+ast::ExprPtr clone(const ast::Expr &e) {
+  auto c = std::make_unique<ast::Expr>();
+  c->kind = e.kind;
+  c->unary_op = e.unary_op;
+  c->binary_op = e.binary_op;
+  c->bool_value = e.bool_value;
+  c->range = e.range;
+  c->duration_ms = e.duration_ms;
+  c->name = e.name;
+  for (const ast::Expr *a : e.args) c->args.push_back(clone(*a));
+  return c;
+}
+
+}  // namespace
+
+// ------------------------------------------------------------------ the file
+
+void StParser::file(Project &project) {
+  while (!at_end()) {
+    resync();
+    const StToken t = tok();
+    if (is_keyword(t, "PROGRAM")) {
+      pou(project, PouKind::Program, "END_PROGRAM");
+    } else if (is_keyword(t, "FUNCTION_BLOCK")) {
+      pou(project, PouKind::FunctionBlock, "END_FUNCTION_BLOCK");
+    } else if (is_keyword(t, "FUNCTION")) {
+      pou(project, PouKind::Function, "END_FUNCTION");
+    } else if (is_keyword(t, "CONFIGURATION")) {
+      configuration(project);
+    } else if (is_keyword(t, "TYPE")) {
+      not_supported(range(t), "data type declarations (TYPE ... END_TYPE) are not supported yet");
+      skip_block("TYPE");
+    } else if (is_keyword(t, "VAR_GLOBAL")) {
+      not_supported(range(t), "global variables (VAR_GLOBAL) are not supported yet");
+      skip_block("VAR");
+    } else if (is_keyword(t, "NAMESPACE") || is_keyword(t, "CLASS") || is_keyword(t, "INTERFACE")) {
+      not_supported(range(t), fmt::format("'{}' (IEC 61131-3 third edition) is not supported yet", t.text));
+      skip_block(upper(t.text));
+    } else {
+      error(range(t), fmt::format("expected 'PROGRAM', 'FUNCTION_BLOCK', 'FUNCTION' or 'CONFIGURATION', not {}",
+                                  quoted()));
+      // On to the next declaration that can begin a file's element.
+      next();
+      while (!at_end() && !keyword("PROGRAM") && !keyword("FUNCTION_BLOCK") && !keyword("FUNCTION") &&
+             !keyword("CONFIGURATION") && !keyword("TYPE"))
+        next();
+    }
+  }
+}
+
+void StParser::pou(Project &project, PouKind kind, std::string_view end) {
+  const StToken start = tok();
+  next();
+  if (tok().kind != StTok::Ident) {
+    error(range(tok()), fmt::format("expected the name of the {} after '{}', not {}", start.text, start.text, quoted()));
+    skip_block(upper(start.text));
+    return;
+  }
+  Pou &p = project.pous.emplace_back();
+  p.kind = kind;
+  p.name = name(tok());
+  next();
+  if (kind != PouKind::Program) {
+    // Reported by the lowering at its name; its body is not read, so that nothing in it adds
+    // errors of its own.
+    while (!at_end() && !keyword(end)) next();
+    p.range = range(start, tok());
+    if (!at_end()) next();
+    return;
+  }
+  bool sfc = false;
+  while (!at_end() && !keyword(end)) {
+    resync();
+    const StToken t = tok();
+    if (t.kind == StTok::Ident && upper(t.text).rfind("VAR", 0) == 0 && !is_keyword(t, "VAR_X")) {
+      var_section(p);
+    } else if (is_keyword(t, "INITIAL_STEP") || is_keyword(t, "STEP")) {
+      sfc = true;
+      step(p, is_keyword(t, "INITIAL_STEP"));
+    } else if (is_keyword(t, "TRANSITION")) {
+      sfc = true;
+      transition(p);
+    } else if (is_keyword(t, "ACTION")) {
+      action(p);
+    } else if (is_keyword(t, "END_PROGRAM") || is_keyword(t, "END_FUNCTION_BLOCK") || is_keyword(t, "END_FUNCTION")) {
+      error(range(t), fmt::format("'{}' closes no '{}'; expected '{}'", t.text, t.text.substr(4), end));
+      next();
+    } else if (!sfc && !p.other_body) {
+      p.other_body = range(t);  // the lowering reports it: gfec compiles SFC bodies
+      while (!at_end() && !keyword(end) && !keyword("INITIAL_STEP") && !keyword("STEP") && !keyword("TRANSITION") &&
+             !keyword("ACTION"))
+        next();
+    } else {
+      error(range(t), fmt::format("expected a step, transition or action of the SFC, not {}", quoted()));
+      skip_statement();
+    }
+  }
+  p.range = range(start, tok());
+  if (at_end()) {
+    error(range(start), fmt::format("'{}' without its '{}'", start.text, end));
+    return;
+  }
+  next();
+}
+
+// ------------------------------------------------------------------ variables
+
+void StParser::var_section(Pou &pou) {
+  const StToken kw = tok();
+  const std::string k = upper(kw.text);
+  next();
+  Section section;
+  if (k == "VAR_INPUT") section = Section::Input;
+  else if (k == "VAR_OUTPUT") section = Section::Output;
+  else if (k == "VAR") section = Section::Local;
+  else {
+    not_supported(range(kw), fmt::format("'{}' sections are not supported yet: gfec reads VAR_INPUT, VAR_OUTPUT "
+                                         "and VAR",
+                                         kw.text));
+    skip_block("VAR");
+    return;
+  }
+  bool constant = false;
+  while (keyword("CONSTANT") || keyword("RETAIN") || keyword("NON_RETAIN") || keyword("PERSISTENT")) {
+    constant = constant || keyword("CONSTANT");
+    next();
+  }
+  while (!at_end() && !keyword("END_VAR")) {
+    resync();
+    if (tok().kind != StTok::Ident || block_end()) {
+      error(range(tok()), fmt::format("expected a variable declaration ('name : TYPE;') or 'END_VAR', not {}", quoted()));
+      if (block_end()) return;
+      skip_statement();
+      continue;
+    }
+    declaration(pou, section, constant, "END_VAR");
+  }
+  if (keyword("END_VAR")) next();
+}
+
+void StParser::declaration(Pou &pou, Section section, bool constant, std::string_view) {
+  std::vector<ast::Name> names{name(tok())};
+  const StToken first = tok();
+  next();
+  while (tok().kind == StTok::Comma && peek().kind == StTok::Ident) {
+    next();
+    names.push_back(name(tok()));
+    next();
+  }
+  std::optional<SourceRange> located;
+  if (keyword("AT")) {
+    const StToken at = tok();
+    next();
+    if (tok().kind == StTok::Direct) next();
+    located = range(at, toks_[pos_ - 1]);
+  }
+  if (tok().kind != StTok::Colon) {
+    error(range(tok()), fmt::format("expected ':' and the type of '{}', not {}", first.text, quoted()));
+    skip_statement();
+    return;
+  }
+  next();
+  // The type: one name, or anything up to ':=' or ';' (ARRAY, STRING(20), an enumeration, a
+  // subrange), kept whole for the lowering to name as not supported.
+  const StToken type_start = tok();
+  std::size_t type_end = pos_;
+  int depth = 0;
+  while (!at_end()) {
+    StTok k = tok().kind;
+    if (depth == 0 && (k == StTok::Assign || k == StTok::Semi)) break;
+    if (depth == 0 && block_end()) break;
+    if (k == StTok::LParen || k == StTok::LBracket) ++depth;
+    if ((k == StTok::RParen || k == StTok::RBracket) && depth > 0) --depth;
+    type_end = pos_;
+    next();
+  }
+  if (type_start.kind == StTok::Assign || type_start.kind == StTok::Semi || pos_ == 0) {
+    error(range(type_start), fmt::format("expected the type of '{}', not {}", first.text, quoted()));
+    skip_statement();
+    return;
+  }
+  const StToken &last = toks_[type_end];
+  ast::Name type{text_.substr(type_start.begin, last.end - type_start.begin), range(type_start, last)};
+  const std::string t = upper(type.text);
+  const bool readable = t == "BOOL" || t == "DINT" || t == "REAL" || t == "LREAL";
+  ast::ExprPtr init;
+  if (tok().kind == StTok::Assign) {
+    next();
+    if (readable) {
+      init = expression();
+      if (!init) {
+        skip_statement();
+        return;
+      }
+    } else {
+      // The lowering reports the type; its initial value (a structure, an array) is not read.
+      while (!at_end() && tok().kind != StTok::Semi && !block_end()) next();
+    }
+  }
+  const StToken end = tok();
+  if (!expect_semi("the declaration")) {
+    skip_statement();
+    return;
+  }
+  for (const ast::Name &n : names) {
+    Variable &v = pou.variables.emplace_back();
+    v.section = section;
+    v.name = n;
+    v.type = type;
+    v.located = located;
+    v.constant = constant;
+    v.range = n.range.to(range(end));
+    if (init) v.init = &n == &names.back() ? std::move(init) : clone(*init);
+  }
+}
+
+// ------------------------------------------------------------------ the SFC
+
+void StParser::step(Pou &pou, bool initial) {
+  const StToken kw = tok();
+  next();
+  if (tok().kind != StTok::Ident) {
+    error(range(tok()), fmt::format("expected the step's name after '{}', not {}", kw.text, quoted()));
+    skip_block("STEP");
+    return;
+  }
+  Step &s = pou.steps.emplace_back();
+  s.initial = initial;
+  s.name = name(tok());
+  next();
+  if (tok().kind != StTok::Colon) {
+    error(range(tok()), fmt::format("expected ':' after the step's name ('{} {}:'), not {}", kw.text, s.name.text,
+                                    quoted()))
+        .fix(range(toks_[pos_ - 1]), std::string(s.name.text) + ":");
+  } else {
+    next();
+  }
+  while (!at_end() && !keyword("END_STEP")) {
+    resync();
+    const StToken a = tok();
+    if (a.kind != StTok::Ident || block_end()) {
+      error(range(a), fmt::format("expected an action association ('Action(N);') or 'END_STEP', not {}", quoted()));
+      if (block_end()) break;
+      skip_statement();
+      continue;
+    }
+    next();
+    if (tok().kind != StTok::LParen) {
+      error(range(tok()), fmt::format("expected '(' and the qualifier after '{}' ('{}(N);'), not {}", a.text, a.text,
+                                      quoted()));
+      skip_statement();
+      continue;
+    }
+    const StToken open = tok();
+    next();
+    ast::Association as;
+    as.action = name(a);
+    // `a();` has no qualifier: the standard's default is N.
+    as.qualifier = {"N", range(a)};
+    bool ok = true;
+    if (tok().kind == StTok::Ident) {
+      const std::string q = upper(tok().text);
+      if (!qualifier(q)) {
+        error(range(tok()),
+              fmt::format("'{}' is no action qualifier: IEC's are N, R, S, L, D, P, P0, P1, SD, DS and SL", tok().text));
+        ok = false;
+      }
+      as.qualifier = name(tok());
+      next();
+    }
+    if (ok && tok().kind == StTok::Comma) {
+      next();
+      if (tok().kind == StTok::Time) {
+        if (tok().ms < 0) {
+          not_supported(range(tok()), fmt::format("a negative duration ('{}')", tok().text));
+          ok = false;
+        }
+        as.duration_ms = tok().ms;
+        as.duration_range = range(tok());
+        next();
+      } else if (tok().kind == StTok::Ident) {
+        not_supported(range(tok()), fmt::format("a duration or an indicator variable ('{}') in an action association "
+                                                "is not supported yet: write a TIME literal ('T#2s')",
+                                                tok().text));
+        ok = false;
+      } else {
+        error(range(tok()), fmt::format("expected a TIME literal ('T#2s'), not {}", quoted()));
+        ok = false;
+      }
+    }
+    if (ok && tok().kind != StTok::RParen) {
+      error(range(tok()), fmt::format("expected ')' to close the association, not {}", quoted()))
+          .note(range(open), "the '(' it closes");
+      ok = false;
+    }
+    if (!ok) {
+      skip_statement();
+      continue;
+    }
+    const StToken close = tok();
+    next();
+    as.range = range(a, close);
+    if (!expect_semi("the action association")) {
+      skip_statement();
+      continue;
+    }
+    s.associations.push_back(std::move(as));
+  }
+  s.range = range(kw, tok());
+  if (!keyword("END_STEP")) {
+    error(range(tok()), fmt::format("expected 'END_STEP' to close step '{}', not {}", s.name.text, quoted()))
+        .note(range(kw), "the step");
+    return;
+  }
+  next();
+  if (tok().kind == StTok::Semi) next();
+}
+
+std::vector<ast::Name> StParser::step_list(bool &parenthesised) {
+  std::vector<ast::Name> out;
+  parenthesised = tok().kind == StTok::LParen;
+  if (!parenthesised) {
+    if (tok().kind == StTok::Ident && !block_end()) {
+      out.push_back(name(tok()));
+      next();
+    } else {
+      error(range(tok()), fmt::format("expected a step name, not {}", quoted()));
+    }
+    return out;
+  }
+  const StToken open = tok();
+  next();
+  for (;;) {
+    if (tok().kind != StTok::Ident || block_end()) {
+      error(range(tok()), fmt::format("expected a step name, not {}", quoted()));
+      return {};
+    }
+    out.push_back(name(tok()));
+    next();
+    if (tok().kind == StTok::Comma) {
+      next();
+      continue;
+    }
+    if (tok().kind == StTok::RParen) {
+      next();
+      return out;
+    }
+    error(range(tok()), fmt::format("expected ',' or ')' in the list of steps, not {}", quoted()))
+        .note(range(open), "the list");
+    return {};
+  }
+}
+
+void StParser::transition(Pou &pou) {
+  const StToken kw = tok();
+  next();
+  Transition t;
+  if (tok().kind == StTok::Ident && !keyword("FROM")) {
+    t.name = name(tok());
+    next();
+  }
+  if (tok().kind == StTok::LParen && is_keyword(peek(), "PRIORITY")) {
+    next();
+    next();
+    if (tok().kind == StTok::Assign && peek().kind == StTok::Int && peek(2).kind == StTok::RParen) {
+      next();
+      t.priority = tok().int_value;
+      t.priority_range = range(tok());
+      next();
+      next();
+    } else {
+      error(range(tok()), "expected '(PRIORITY := n)' with an integer n");
+      skip_block("TRANSITION");
+      return;
+    }
+  }
+  if (!keyword("FROM")) {
+    error(range(tok()), fmt::format("expected 'FROM' and the steps the transition leaves, not {}", quoted()));
+    skip_block("TRANSITION");
+    return;
+  }
+  next();
+  t.from = step_list(t.parenthesised_from);
+  if (t.from.empty()) {
+    skip_block("TRANSITION");
+    return;
+  }
+  if (!keyword("TO")) {
+    error(range(tok()), fmt::format("expected 'TO' and the steps the transition enters, not {}", quoted()));
+    skip_block("TRANSITION");
+    return;
+  }
+  next();
+  t.to = step_list(t.parenthesised_to);
+  if (t.to.empty()) {
+    skip_block("TRANSITION");
+    return;
+  }
+  if (tok().kind == StTok::Colon) {
+    not_supported(range(tok()), "a transition condition in IL, LD or FBD (after ':') is not supported yet: write "
+                                "':= condition;' in ST");
+    skip_block("TRANSITION");
+    return;
+  }
+  if (tok().kind != StTok::Assign) {
+    error(range(tok()), fmt::format("expected ':=' and the transition's condition, not {}", quoted()));
+    skip_block("TRANSITION");
+    return;
+  }
+  next();
+  t.condition = expression();
+  if (!t.condition) {
+    skip_block("TRANSITION");
+    return;
+  }
+  if (!expect_semi("the transition's condition")) {
+    skip_block("TRANSITION");
+    return;
+  }
+  if (!keyword("END_TRANSITION")) {
+    error(range(tok()), fmt::format("expected 'END_TRANSITION', not {}", quoted())).note(range(kw), "the transition");
+    skip_block("TRANSITION");
+    return;
+  }
+  t.range = range(kw, tok());
+  next();
+  if (tok().kind == StTok::Semi) next();
+  pou.transitions.push_back(std::move(t));
+}
+
+void StParser::action(Pou &pou) {
+  const StToken kw = tok();
+  next();
+  if (tok().kind != StTok::Ident) {
+    error(range(tok()), fmt::format("expected the action's name after 'ACTION', not {}", quoted()));
+    skip_block("ACTION");
+    return;
+  }
+  Action &a = pou.actions.emplace_back();
+  a.name = name(tok());
+  next();
+  if (tok().kind == StTok::Colon) {
+    next();
+  } else {
+    // A dialect's `ACTION x` (no colon) is not IEC: say so, then read on as if it were there.
+    SourceRange at = range(toks_[pos_ - 1]);
+    error(at, fmt::format("IEC 61131-3 writes 'ACTION {}:' with a colon after the action's name", a.name.text))
+        .fix({at.file, at.end, at.end}, ":");
+    resync();
+  }
+  if (keyword("INITIAL_STEP") || keyword("STEP")) {
+    not_supported(range(tok()), fmt::format("an SFC inside action '{}' is not supported yet", a.name.text));
+    while (!at_end() && !keyword("END_ACTION")) next();
+  } else {
+    a.body = statements();
+  }
+  a.range = range(kw, tok());
+  if (!keyword("END_ACTION")) {
+    error(range(tok()), fmt::format("expected 'END_ACTION' to close action '{}', not {}", a.name.text, quoted()))
+        .note(range(kw), "the action");
+    return;
+  }
+  next();
+  if (tok().kind == StTok::Semi) next();
+}
+
+// ------------------------------------------------------------------ configurations
+
+void StParser::configuration(Project &project) {
+  const StToken kw = tok();
+  next();
+  if (tok().kind == StTok::Ident) next();
+  resource(project, "END_CONFIGURATION");
+  (void)kw;
+}
+
+/// The body of a CONFIGURATION or RESOURCE up to `end`: resources, tasks, program instances.
+void StParser::resource(Project &project, std::string_view end) {
+  while (!at_end() && !keyword(end)) {
+    resync();
+    if (keyword("RESOURCE")) {
+      next();
+      if (tok().kind == StTok::Ident) next();
+      if (keyword("ON")) {
+        next();
+        if (tok().kind == StTok::Ident) next();
+      }
+      resource(project, "END_RESOURCE");
+    } else if (keyword("TASK")) {
+      task(project);
+    } else if (keyword("PROGRAM")) {
+      program_instance(project);
+    } else if (keyword("VAR_GLOBAL") || keyword("VAR_ACCESS") || keyword("VAR_CONFIG")) {
+      // Variables of the configuration: a program reaches them only through VAR_EXTERNAL, which
+      // is reported where it is declared.
+      skip_block("VAR");
+    } else {
+      error(range(tok()), fmt::format("expected 'RESOURCE', 'TASK', 'PROGRAM' or '{}', not {}", end, quoted()));
+      skip_statement();
+    }
+  }
+  if (at_end()) {
+    error(range(tok()), fmt::format("expected '{}' before the end of the text", end));
+    return;
+  }
+  next();
+  if (tok().kind == StTok::Semi) next();
+}
+
+void StParser::task(Project &project) {
+  const StToken kw = tok();
+  next();
+  if (tok().kind != StTok::Ident) {
+    error(range(tok()), fmt::format("expected the task's name, not {}", quoted()));
+    skip_statement();
+    return;
+  }
+  Task t;
+  t.name = name(tok());
+  next();
+  if (tok().kind == StTok::LParen) {
+    next();
+    while (!at_end() && tok().kind != StTok::RParen) {
+      const StToken key = tok();
+      if (key.kind != StTok::Ident || peek().kind != StTok::Assign) {
+        error(range(key), fmt::format("expected 'INTERVAL :=', 'PRIORITY :=' or 'SINGLE :=', not {}", quoted()));
+        skip_statement();
+        return;
+      }
+      next();
+      next();
+      if (is_keyword(key, "INTERVAL")) {
+        if (tok().kind == StTok::Time) {
+          t.interval_ms = tok().ms;
+          t.interval_range = range(tok());
+        } else {
+          not_supported(range(tok()), "a task INTERVAL that is not a TIME literal is not supported yet");
+        }
+      }
+      next();
+      if (tok().kind == StTok::Comma) next();
+    }
+    if (tok().kind == StTok::RParen) next();
+  }
+  t.range = range(kw, tok());
+  expect_semi("the task");
+  project.tasks.push_back(std::move(t));
+}
+
+void StParser::program_instance(Project &project) {
+  next();  // PROGRAM
+  if (keyword("RETAIN") || keyword("NON_RETAIN")) next();
+  if (tok().kind != StTok::Ident) {
+    error(range(tok()), fmt::format("expected the program instance's name, not {}", quoted()));
+    skip_statement();
+    return;
+  }
+  next();
+  Task *task = nullptr;
+  if (keyword("WITH")) {
+    next();
+    if (tok().kind == StTok::Ident) {
+      const std::string wanted = upper(tok().text);
+      for (Task &t : project.tasks)
+        if (upper(t.name.text) == wanted) task = &t;
+      if (!task) error(range(tok()), fmt::format("no TASK named '{}' is declared before", tok().text),
+                       ErrorKind::UnknownName);
+      next();
+    }
+  }
+  if (tok().kind != StTok::Colon || peek().kind != StTok::Ident) {
+    error(range(tok()), fmt::format("expected ':' and the program's type, not {}", quoted()));
+    skip_statement();
+    return;
+  }
+  next();
+  if (task) task->programs.push_back(name(tok()));
+  next();
+  skip_statement();  // `(...)` bindings of its variables, then ';'
+}
+
+// ------------------------------------------------------------------ entry points
+
+void read_st(std::string_view text, FileId file, std::deque<std::string> &strings, Diagnostics &diag,
+             Project &project) {
+  FragmentPlace place = FragmentPlace::at(file, 0);
+  StParser(text, place, strings, diag).file(project);
+}
+
+ast::ExprPtr parse_st_expression(std::string_view text, const FragmentPlace &place, std::deque<std::string> &strings,
+                                 Diagnostics &diag) {
+  std::size_t errors = diag.error_count();
+  StParser p(text, place, strings, diag);
+  ast::ExprPtr e = p.expression();
+  if (e && !p.at_end()) p.error(p.range(p.tok()), fmt::format("unexpected {} after the expression", p.quoted()));
+  if (diag.error_count() != errors) return nullptr;
+  return e;
+}
+
+std::optional<ast::Block> parse_st_statements(std::string_view text, const FragmentPlace &place,
+                                              std::deque<std::string> &strings, Diagnostics &diag) {
+  std::size_t errors = diag.error_count();
+  StParser p(text, place, strings, diag);
+  ast::Block b = p.statements();
+  p.resync();
+  if (!p.at_end()) p.error(p.range(p.tok()), fmt::format("expected a statement, not {}", p.quoted()));
+  if (diag.error_count() != errors) return std::nullopt;
+  return b;
+}
+
+}  // namespace gfec::iec
