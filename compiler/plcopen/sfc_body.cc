@@ -348,8 +348,8 @@ void Reader::read_sfc(const pugi::xml_node &sfc, const pugi::xml_node &pou_node,
     } else if (pugi::xml_node cin = child(cond, "connectionPointIn")) {
       pugi::xml_node c = child(cin, "connection");
       const Node *from = c ? g.target({c.attribute("refLocalId").value(), c}) : nullptr;
+      if (from) const_cast<Node *>(from)->used = true;  // reported here, not again as an element
       if (from && from->kind == Kind::InVariable) {
-        const_cast<Node *>(from)->used = true;
         t.condition = expression(xml_.text_below(child(from->xml, "expression")));
       } else if (from) {
         diag_
@@ -434,7 +434,7 @@ void Reader::read_sfc(const pugi::xml_node &sfc, const pugi::xml_node &pou_node,
         }
         step.associations.push_back(std::move(as));
       }
-    } else if (n.kind == Kind::Other || (n.kind == Kind::InVariable && !n.used)) {
+    } else if ((n.kind == Kind::Other || n.kind == Kind::InVariable) && !n.used) {
       not_supported(n.xml, fmt::format("{} in an SFC body: LD and FBD elements are not supported yet", g.describe(n)));
     }
   }
