@@ -76,4 +76,37 @@ done
 "$gfec" run "$dir/mixer.st" --inputs "$dir/mixer.csv" --observable --ticks 14 | grep -v '^av' > st.txt ||
   fail "mixer.st: gfec run fails"
 diff -u "$dir/mixer.expected" st.txt || fail "mixer.st runs to other outputs than the PLCopen files"
+# A generated project: program Big of 500 steps and 23 more SFC programs, read, checked, compiled
+# and built; its engine and the interpreter agree.
+"$dir/gen_plcopen.sh" 500 24 > big.xml
+"$gfec" --check big.xml || fail "big.xml: --check fails"
+"$gfec" big.xml --chart Big -o big.c || fail "big.xml: Big does not compile"
+cc -std=c99 -c big.c -o big.o || fail "big.xml: Big's engine does not build"
+"$gfec" big.xml --chart Small23 -o small.c || fail "big.xml: Small23 does not compile"
+printf 'tick, Go, Skip\n1, 1, 0\n40, 1, 1\n41, 1, 0\n' > big.csv
+"$gfec" run big.xml --chart Big --inputs big.csv --observable --ticks 60 > big_run.txt
+grep -q '^out Count = 1[0-9]$' big_run.txt || fail "big.xml: Big's Count does not count"
+
+# Truncations and garbage of every sample: exit 0 or 1 with located messages, never a crash, exit 2
+# or a hang.
+check_robust() {
+  local rc=0
+  timeout 10 "$gfec" --check "$1" > /dev/null 2> robust.err || rc=$?
+  [[ $rc -le 1 ]] || fail "$2: exit $rc: $(head -c 600 robust.err)"
+}
+for producer in beremiz openplc codesys twincat tc6_old; do
+  src=$dir/$producer.xml
+  size=$(wc -c < "$src")
+  for ((cut = 0; cut < size; cut += 401)); do
+    head -c "$cut" "$src" > cut.xml
+    check_robust cut.xml "$producer cut at byte $cut"
+  done
+  # Garbage: a byte overwritten with each of a few characters that matter to XML or to ST.
+  for ((at = 150; at < size; at += 601)); do
+    for c in "<" ">" "&" "(" "x"; do
+      { head -c "$at" "$src"; printf '%s' "$c"; tail -c +"$((at + 2))" "$src"; } > bad.xml
+      check_robust bad.xml "$producer with '$c' at byte $at"
+    done
+  done
+done
 echo "plcopen: ok"
