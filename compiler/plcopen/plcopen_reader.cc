@@ -267,6 +267,14 @@ void Reader::read_tasks(const pugi::xml_node &instances, iec::Project &project) 
 // ---------------------------------------------------------------- the entry point
 
 bool is_plcopen(std::string_view text) {
+  // A UTF-16 file (some Windows tools save one): its start, narrowed, so that the reader can say
+  // it is PLCopen in the wrong encoding rather than chart text.
+  if (text.size() >= 2 && ((text[0] == '\xFF' && text[1] == '\xFE') || (text[0] == '\xFE' && text[1] == '\xFF'))) {
+    std::string narrow;
+    for (std::size_t k = 2; k < text.size() && k < 8192; ++k)
+      if (text[k] != '\0') narrow += text[k];
+    return is_plcopen(narrow);
+  }
   // The root element's start tag: past the BOM, the XML declaration, comments and a doctype.
   std::size_t i = text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;
   for (int guard = 0; guard < 1000 && i < text.size(); ++guard) {

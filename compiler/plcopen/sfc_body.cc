@@ -166,6 +166,15 @@ Kind kind_of(std::string_view name) {
   return it == kKinds.end() ? Kind::Other : it->second;
 }
 
+/// Whether `q` is one of IEC 61131-3's action qualifiers (any case, as IEC reads keywords).
+bool qualifier(std::string_view q) {
+  static const char *const kQualifiers[] = {"N", "R", "S", "L", "D", "P", "P0", "P1", "SD", "DS", "SL"};
+  std::string u = upper(q);
+  for (const char *k : kQualifiers)
+    if (u == k) return true;
+  return false;
+}
+
 /// Elements of a graphical body that carry no meaning for the program.
 bool meaningless(std::string_view name) {
   return name == "comment" || name == "addData" || name == "documentation" || name == "error";
@@ -302,6 +311,13 @@ void Reader::read_sfc(const pugi::xml_node &sfc, const pugi::xml_node &pou_node,
       diag_.error(at(n.xml), ErrorKind::Plcopen, fmt::format("{} has no condition", g.describe(n)));
       continue;
     }
+    if (std::string_view neg = cond.attribute("negated").value(); neg == "true" || neg == "1") {
+      diag_.error(xml_.attribute_range(cond, "negated"), ErrorKind::NotSupported,
+                  fmt::format("the condition of {} is negated: a negated condition is not supported yet; write NOT "
+                              "in the condition",
+                              g.describe(n)));
+      continue;
+    }
     if (pugi::xml_node in = child(cond, "inline")) {
       if (pugi::xml_node st = child(in, "ST")) {
         t.condition = expression(xml_.text_below(st));
@@ -400,6 +416,13 @@ void Reader::read_sfc(const pugi::xml_node &sfc, const pugi::xml_node &pou_node,
         ast::Association as;
         as.range = at(a);
         as.qualifier = a.attribute("qualifier") ? name_of(a, "qualifier") : ast::Name{"N", at(a)};
+        if (!qualifier(as.qualifier.text)) {
+          diag_.error(as.qualifier.range, ErrorKind::Plcopen,
+                      fmt::format("'{}' is not an action qualifier: IEC 61131-3's are N, R, S, L, D, P, P0, P1, SD, "
+                                  "DS and SL",
+                                  text::printable(as.qualifier.text)));
+          continue;
+        }
         if (a.attribute("duration") && *a.attribute("duration").value()) {
           as.duration_range = xml_.attribute_range(a, "duration");
           as.duration_ms = duration_ms(a.attribute("duration").value());

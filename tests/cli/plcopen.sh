@@ -109,4 +109,9 @@ for producer in beremiz openplc codesys twincat tc6_old; do
     done
   done
 done
+# A UTF-16 file is PLCopen in an encoding gfec does not read: one located error, exit 1.
+iconv -f UTF-8 -t UTF-16 "$dir/beremiz.xml" > utf16.xml
+rc=0
+"$gfec" --check utf16.xml 2> utf16.err || rc=$?
+[[ $rc == 1 ]] && grep -q 'utf16.xml:1:1: error: the file is UTF-16' utf16.err || fail "UTF-16: exit $rc: $(head -c 300 utf16.err)"
 echo "plcopen: ok"
