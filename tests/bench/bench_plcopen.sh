@@ -14,13 +14,13 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 # shellcheck source=tests/bench/bench_measure.sh
 source "$root/tests/bench/bench_measure.sh"
-printf '%-7s %-9s %-10s %-16s %-16s %-10s\n' steps programs file_KB check_s check+C_s peak_MB
+printf '%-7s %-9s %-9s %-22s %-22s %-8s\n' steps programs file_KB 'check s (wall/user)' 'check+C s (wall/user)' peak_MB
 for steps in "${sizes[@]}"; do
   "$root/tests/iec/plcopen/gen_plcopen.sh" "$steps" 24 > "$work/big.xml"
   kb=$(($(wc -c < "$work/big.xml") / 1024))
   fastest check 5 "$gfec" --check "$work/big.xml"
   fastest compile 5 "$gfec" "$work/big.xml" --chart Big -o "$work/big.c"
-  read -r c_wall _ _ <<< "$check"
-  read -r o_wall _ o_kb <<< "$compile"
-  printf '%-7s %-9s %-10s %-16s %-16s %-10s\n' "$steps" 24 "$kb" "$c_wall" "$o_wall" "$((o_kb / 1024))"
+  read -r c_wall c_user _ <<< "$check"
+  read -r o_wall o_user o_kb <<< "$compile"
+  printf '%-7s %-9s %-9s %-22s %-22s %-8s\n' "$steps" 24 "$kb" "$c_wall / $c_user" "$o_wall / $o_user" "$((o_kb / 1024))"
 done
