@@ -35,6 +35,9 @@ struct LoadResult {
   std::string main_unreadable_why;          ///< why not (FileText::why)
   const InputLanguage *language = nullptr;  ///< the main file's, once it was read
   std::vector<SourceElement> elements;      ///< ALICA input: every plan, state, transition... read
+  /// The chart to compile when --chart names none and the file has several: the one program a
+  /// PLC's tasks run (PLCopen's instances). Empty: the default root rule decides alone.
+  std::string default_chart;
 };
 
 }  // namespace gfec

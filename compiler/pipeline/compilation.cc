@@ -140,6 +140,15 @@ bool Compilation::front_end(const std::string &path) {
 }
 
 const Selection &Compilation::select(const SelectionRequest &request) {
+  if (request.name.empty() && !loaded.default_chart.empty()) {
+    SelectionRequest by_task = request;
+    by_task.name = loaded.default_chart;
+    selection = choose(model, by_task);
+    if (selection.chart) {
+      warn_unused_charts(model, selection.chart, diag);
+      return selection;
+    }
+  }
   selection = choose(model, request);
   if (selection.chart) warn_unused_charts(model, selection.chart, diag);
   return selection;

@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
 #include <memory>
 
@@ -342,6 +343,15 @@ void read_plcopen_program(const std::string &main_path, std::string text, const 
   }
   Reader reader(xml, file, diag);
   iec::Project project = reader.read_project(root);
+  // The program the tasks run is the one compiled when --chart names none (docs/iec.md).
+  std::vector<std::string> run;
+  for (const iec::Task &task : project.tasks)
+    for (const ast::Name &p : task.programs)
+      for (const iec::Pou &pou : project.pous)
+        if (pou.kind == iec::PouKind::Program && upper(pou.name.text) == upper(p.text) &&
+            std::find(run.begin(), run.end(), std::string(pou.name.text)) == run.end())
+          run.emplace_back(pou.name.text);
+  if (run.size() == 1) result.default_chart = run.front();
   iec::lower(std::move(project), file, diag);
 }
 

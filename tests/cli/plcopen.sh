@@ -83,8 +83,11 @@ diff -u "$dir/mixer.expected" st.txt || fail "mixer.st runs to other outputs tha
 "$gfec" big.xml --chart Big -o big.c || fail "big.xml: Big does not compile"
 cc -std=c99 -c big.c -o big.o || fail "big.xml: Big's engine does not build"
 "$gfec" big.xml --chart Small23 -o small.c || fail "big.xml: Small23 does not compile"
+# Without --chart, the program the task runs.
+"$gfec" big.xml -o default.c || fail "big.xml: no default program"
+grep -q 'void Big_run(Big \*' default.h || fail "big.xml: the default is not Big, the program task Main runs"
 printf 'tick, Go, Skip\n1, 1, 0\n40, 1, 1\n41, 1, 0\n' > big.csv
-"$gfec" run big.xml --chart Big --inputs big.csv --observable --ticks 60 > big_run.txt
+"$gfec" run big.xml --inputs big.csv --observable --ticks 60 > big_run.txt
 grep -q '^out Count = 1[0-9]$' big_run.txt || fail "big.xml: Big's Count does not count"
 
 # Truncations and garbage of every sample: exit 0 or 1 with located messages, never a crash, exit 2

@@ -87,7 +87,8 @@ TEST_CASE("plcopen: TIME literals and XML durations", "[plcopen]") {
 }
 
 TEST_CASE("plcopen: a .xml file is PLCopen's when its root is a PLCopen <project>", "[plcopen]") {
-  CHECK(is_plcopen("<?xml version=\"1.0\"?>\n<!-- export -->\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0201\">"));
+  CHECK(
+      is_plcopen("<?xml version=\"1.0\"?>\n<!-- export -->\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0201\">"));
   CHECK(is_plcopen("\xEF\xBB\xBF<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\"/>"));
   CHECK(is_plcopen("<ppx:project xmlns:ppx=\"http://www.plcopen.org/xml/tc6.xsd\">"));
   CHECK_FALSE(is_plcopen("<?xml version=\"1.0\"?><project xmlns=\"http://maven.apache.org/POM/4.0.0\">"));
