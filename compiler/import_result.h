@@ -35,8 +35,8 @@ struct LoadResult {
   std::string main_unreadable_why;          ///< why not (FileText::why)
   const InputLanguage *language = nullptr;  ///< the main file's, once it was read
   std::vector<SourceElement> elements;      ///< ALICA input: every plan, state, transition... read
-  /// The chart to compile when --chart names none and the file has several: the one program a
-  /// PLC's tasks run (PLCopen's instances). Empty: the default root rule decides alone.
+  /// The chart compiled when the main file declares several and --chart names none (the IEC
+  /// PROGRAM that the file's one TASK runs, or a PLCopen file's tasks, docs/iec.md); empty: the default rule alone.
   std::string default_chart;
 };
 

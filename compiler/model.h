@@ -368,6 +368,8 @@ struct Verbatim {
 
 struct Model {
   FileId main_file = 0;
+  /// LoadResult::default_chart: chosen among several candidates when --chart names none.
+  std::string default_chart;
   Table<FunctionId, Function> functions;
   Table<ConstId, Const> consts;
   Table<ChartId, Chart> charts;

@@ -139,7 +139,7 @@ std::vector<const char *> take_dependency_flags(int argc, const char *const *arg
 void add_language_option(CLI::App &app, std::string &language) {
   app.add_option("-x", language,
                  "Input language, as gcc's -x: " + input_languages_help() +
-                     "; default: from the file's extension (.pml is alica), other files chart text")
+                     "; default: from the file's extension (.pml is alica, .st iec-st), other files chart text")
       ->type_name("LANG")
       ->check(CLI::IsMember(input_language_names()));
 }

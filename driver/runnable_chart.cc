@@ -24,8 +24,7 @@ RunnableChart load_runnable_chart(const Options &options, const std::string &inp
     return r;
   }
   pipeline::SelectionRequest request;
-  // Without --chart, the chart the reader says runs (the program a PLC's task runs), if any.
-  request.name = chart_name.empty() ? c.loaded.default_chart : chart_name;
+  request.name = chart_name;
   request.among = pipeline::kSfc | pipeline::kFsm;
   request.verb = verb;
   const pipeline::Selection target = pipeline::choose(c.model, request);

@@ -90,7 +90,8 @@ ast::ValueDecl lower_variable(Variable &v, Diagnostics &diag) {
     d.type = {c, v.type.range};
   } else {
     d.type = {"int", v.type.range};  // reported: what follows is still checked
-    if (elementary(t))
+    std::string head = t.substr(0, t.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZ_0123456789"));
+    if (elementary(head))
       diag.error(v.type.range, ErrorKind::NotSupported,
                  fmt::format("the IEC type '{}' is not supported yet: gfec reads BOOL, DINT, REAL and LREAL "
                              "variables",
@@ -106,6 +107,40 @@ ast::ValueDecl lower_variable(Variable &v, Diagnostics &diag) {
                fmt::format("located variable '{}' ('AT %...') is not supported yet", v.name.text));
   d.init = std::move(v.init);
   return d;
+}
+
+/// The first place `e` reads a time (`Step.T`, a TIME literal), or null.
+const SourceRange *time_read(const ast::Expr &e) {
+  if (e.kind == ast::Expr::Kind::Duration || (e.kind == ast::Expr::Kind::Call && e.name.text == "elapsed"))
+    return &e.range;
+  for (const ast::Expr *a : e.args)
+    if (const SourceRange *r = a ? time_read(*a) : nullptr) return r;
+  return nullptr;
+}
+
+template <typename Stmts> const SourceRange *time_read(const Stmts &block) {
+  for (const ast::Stmt &s : block) {
+    const SourceRange *r = s.value ? time_read(*s.value) : nullptr;
+    if (!r) r = time_read(s.then_block);
+    if (!r) r = time_read(s.else_block);
+    if (r) return r;
+  }
+  return nullptr;
+}
+
+/// The first place the chart reads a time: a timed association, `Step.T`, a TIME literal.
+const SourceRange *time_read(const ast::Chart &c) {
+  for (const ast::Place &p : c.places)
+    if (p.extras)
+      for (const ast::Association &a : p.extras->associations)
+        if (a.duration_ms) return &a.duration_range;
+  for (const ast::Transition &t : c.transitions)
+    if (const SourceRange *r = t.condition ? time_read(*t.condition) : nullptr) return r;
+  for (const ast::ActionDecl &a : c.actions)
+    if (const SourceRange *r = time_read(a.body)) return r;
+  for (const ast::ValueDecl &v : c.values)
+    if (const SourceRange *r = v.init ? time_read(*v.init) : nullptr) return r;
+  return nullptr;
 }
 
 }  // namespace
@@ -136,6 +171,7 @@ bool lower(Pou &&pou, const std::optional<ast::Period> &period, ast::File &file,
     return false;
   }
   if (pou.other_body) {
+    for (Variable &v : pou.variables) lower_variable(v, diag);  // their problems too, in one pass
     diag.error(*pou.other_body, ErrorKind::NotSupported,
                fmt::format("program '{}': a body that is not a sequential function chart is not supported yet",
                            pou.name.text));
@@ -156,6 +192,23 @@ bool lower(Pou &&pou, const std::optional<ast::Period> &period, ast::File &file,
     if (d.init) names.respell(*d.init);
     c.values.push_back(std::move(d));
   }
+  // An association naming a variable rather than an ACTION is IEC's Boolean action (the variable
+  // follows the action's Q): not read yet, and said so rather than "unknown action".
+  std::map<std::string, const Variable *> variables;
+  for (const Variable &v : pou.variables) variables.emplace(upper(v.name.text), &v);
+  std::map<std::string, bool> actions;
+  for (const Action &a : pou.actions) actions.emplace(upper(a.name.text), true);
+  for (Step &s : pou.steps)
+    for (const ast::Association &as : s.associations) {
+      const std::string n = upper(as.action.text);
+      auto v = variables.find(n);
+      if (v != variables.end() && !actions.count(n))
+        diag.error(as.action.range, ErrorKind::NotSupported,
+                   fmt::format("Boolean action '{}' (an association naming a variable, not an ACTION) is not "
+                               "supported yet",
+                               as.action.text))
+            .note(v->second->name.range, "the variable");
+    }
   for (Step &s : pou.steps) {
     ast::Place &p = c.places.emplace_back();
     p.initial = s.initial;
@@ -199,6 +252,14 @@ bool lower(Pou &&pou, const std::optional<ast::Period> &period, ast::File &file,
     names.respell_block(a.body);
     d.body = std::move(a.body);
   }
+  // The validator would ask for chart text's `period`; an IEC program gets it from its task.
+  if (!period)
+    if (const SourceRange *at = time_read(c))
+      diag.error(*at, ErrorKind::MissingPeriod,
+                 fmt::format("program '{}' reads a time, but no TASK with an INTERVAL runs it", c.name.text))
+          .note(c.name.range, fmt::format("run it in a task of a CONFIGURATION: 'TASK t (INTERVAL := T#10ms); "
+                                          "PROGRAM i WITH t : {};'",
+                                          c.name.text));
   return true;
 }
 

@@ -59,6 +59,17 @@ StParser::Node StParser::binary(Node lhs, Node rhs, BinaryOp op, const StToken &
           ErrorKind::Nesting);
     return {};
   }
+  // IEC's precedence is C's but for XOR, which is `!=` here and binds looser than AND in IEC,
+  // tighter than `&&` in C: an operand that C would read otherwise is bracketed, as the user
+  // meant it, so the chart text, the engine and the tree all read it the same.
+  auto bracket = [](ast::ExprPtr &x, bool when) {
+    if (!when) return;
+    auto p = make(ast::Expr::Kind::Paren, x->range);
+    p->args.push_back(std::move(x));
+    x = std::move(p);
+  };
+  bracket(lhs.e, lhs.e->kind == ast::Expr::Kind::Binary && precedence(lhs.e->binary_op) < precedence(op));
+  bracket(rhs.e, rhs.e->kind == ast::Expr::Kind::Binary && precedence(rhs.e->binary_op) <= precedence(op));
   auto e = make(ast::Expr::Kind::Binary, lhs.e->range.to(rhs.e->range));
   e->binary_op = op;
   e->set_op_range(range(at));
@@ -193,10 +204,17 @@ StParser::Node StParser::literal() {
       return {};
     }
     auto e = make(ast::Expr::Kind::Int, range(t));
-    // The chart's Int is its decimal spelling; `1_000`, `16#FF`, `DINT#5` are made decimal.
-    std::string decimal = std::to_string(t.int_value);
+    // The chart's Int is its decimal spelling; `1_000`, `16#FF`, `DINT#5` are made decimal, and
+    // `DINT#-5` the negation of 5.
+    const bool negative = t.int_value < 0;
+    std::string decimal =
+        negative ? std::to_string(0 - static_cast<unsigned long long>(t.int_value)) : std::to_string(t.int_value);
     e->name.text = decimal == t.text ? t.text : std::string_view(strings_.emplace_back(std::move(decimal)));
-    return {std::move(e), 0};
+    if (!negative) return {std::move(e), 0};
+    auto neg = make(ast::Expr::Kind::Unary, range(t));
+    neg->unary_op = UnaryOp::Neg;
+    neg->args.push_back(std::move(e));
+    return {std::move(neg), 1};
   }
   case StTok::Real: {
     auto e = make(ast::Expr::Kind::Float, range(t));
@@ -224,9 +242,7 @@ StParser::Node StParser::literal() {
   case StTok::Typed:
     not_supported(range(t), fmt::format("the typed literal '{}' is not supported yet", t.text));
     return {};
-  case StTok::String:
-    not_supported(range(t), "STRING values are not supported yet");
-    return {};
+  case StTok::String: not_supported(range(t), "STRING values are not supported yet"); return {};
   default: break;
   }
   return {};
@@ -280,8 +296,9 @@ StParser::Node StParser::name_use() {
     e->bool_value = is_keyword(t, "TRUE");
     return {std::move(e), 0};
   }
-  static const char *const kReserved[] = {"THEN", "ELSE", "ELSIF", "END_IF", "DO", "OF", "END_CASE", "AND", "OR",
-                                          "XOR", "MOD", "NOT", "TO", "FROM", "END_TRANSITION", "END_ACTION"};
+  static const char *const kReserved[] = {
+      "THEN", "ELSE", "ELSIF", "END_IF", "DO", "OF",   "END_CASE",       "AND",
+      "OR",   "XOR",  "MOD",   "NOT",    "TO", "FROM", "END_TRANSITION", "END_ACTION"};
   for (const char *k : kReserved)
     if (is_keyword(t, k)) {
       error(range(t), fmt::format("expected an expression, not the keyword '{}'", t.text));

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -29,6 +30,7 @@ public:
 
   std::vector<StToken> run() {
     std::vector<StToken> out;
+    if (t_.substr(0, 3) == "\xEF\xBB\xBF") i_ = 3;  // a UTF-8 byte-order mark, as editors on Windows write
     for (;;) {
       skip_blanks();
       StToken tok;
@@ -50,6 +52,8 @@ private:
   char at(std::size_t k) const { return k < t_.size() ? t_[k] : '\0'; }
 
   void error(std::size_t b, std::size_t e, std::string message) {
+    b = std::min(b, t_.size());
+    e = std::min(std::max(b, e), t_.size());
     diag_.error(place_.range(static_cast<std::uint32_t>(b), static_cast<std::uint32_t>(e)), ErrorKind::Syntax,
                 std::move(message));
   }
@@ -60,13 +64,13 @@ private:
       if (c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v') {
         ++i_;
       } else if (c == '(' && at(i_ + 1) == '*') {
-        skip_comment(i_, "*)", "comment '(*' without its '*)'");
+        skip_comment(i_, "*)", "a comment '(*' that is never closed");
       } else if (c == '/' && at(i_ + 1) == '*') {
-        skip_comment(i_, "*/", "comment '/*' without its '*/'");
+        skip_comment(i_, "*/", "a comment '/*' that is never closed");
       } else if (c == '/' && at(i_ + 1) == '/') {
         while (i_ < t_.size() && t_[i_] != '\n') ++i_;
       } else if (c == '{') {
-        skip_comment(i_, "}", "pragma '{' without its '}'");
+        skip_comment(i_, "}", "a pragma '{' that is never closed");
       } else {
         return;
       }
@@ -124,6 +128,10 @@ private:
       long long value = 0;
       bool of = false;
       if (!digits(static_cast<int>(base), value, of)) error(start, i_, "a based integer without digits");
+      if (is_ident_char(at(i_))) {
+        while (is_ident_char(at(i_))) ++i_;
+        error(start, i_, fmt::format("'{}' is not a base-{} integer", t_.substr(start, i_ - start), base));
+      }
       tok.kind = StTok::Int;
       tok.int_value = value;
       tok.overflow = of;

@@ -15,40 +15,40 @@ namespace gfec::iec {
 
 enum class StTok : std::uint8_t {
   End,
-  Ident,       ///< identifiers and keywords
-  Int,         ///< `42`, `1_000`, `16#FF`, `DINT#5`: value in int_value (when it fits)
-  Real,        ///< `1.5`, `1.0E3`, `REAL#1.5`
-  Time,        ///< `T#1s200ms`, `TIME#5ms`: milliseconds in ms
-  Typed,       ///< another typed literal (`TOD#…`, `D#…`, `STRING#…`, `BOOL#1`): not read yet
-  String,      ///< `'text'` or `"text"`
-  Direct,      ///< `%IX0.0`: a direct address
-  Assign,      ///< :=
-  Arrow,       ///< => (an output binding)
-  Colon,       ///< :
-  Semi,        ///< ;
-  Comma,       ///< ,
-  Dot,         ///< .
-  DotDot,      ///< ..
-  LParen,      ///< (
-  RParen,      ///< )
-  LBracket,    ///< [
-  RBracket,    ///< ]
-  Eq,          ///< =
-  Ne,          ///< <>
-  Lt,          ///< <
-  Le,          ///< <=
-  Gt,          ///< >
-  Ge,          ///< >=
-  Plus,        ///< +
-  Minus,       ///< -
-  Star,        ///< *
-  Power,       ///< **
-  Slash,       ///< /
-  Amp,         ///< &
-  Caret,       ///< ^ (dereference)
-  EqEq,        ///< == (not IEC: reported, naming `=`)
-  BangEq,      ///< != (not IEC: reported, naming `<>`)
-  Other,       ///< any other character
+  Ident,     ///< identifiers and keywords
+  Int,       ///< `42`, `1_000`, `16#FF`, `DINT#5`: value in int_value (when it fits)
+  Real,      ///< `1.5`, `1.0E3`, `REAL#1.5`
+  Time,      ///< `T#1s200ms`, `TIME#5ms`: milliseconds in ms
+  Typed,     ///< another typed literal (`TOD#…`, `D#…`, `STRING#…`, `BOOL#1`): not read yet
+  String,    ///< `'text'` or `"text"`
+  Direct,    ///< `%IX0.0`: a direct address
+  Assign,    ///< :=
+  Arrow,     ///< => (an output binding)
+  Colon,     ///< :
+  Semi,      ///< ;
+  Comma,     ///< ,
+  Dot,       ///< .
+  DotDot,    ///< ..
+  LParen,    ///< (
+  RParen,    ///< )
+  LBracket,  ///< [
+  RBracket,  ///< ]
+  Eq,        ///< =
+  Ne,        ///< <>
+  Lt,        ///< <
+  Le,        ///< <=
+  Gt,        ///< >
+  Ge,        ///< >=
+  Plus,      ///< +
+  Minus,     ///< -
+  Star,      ///< *
+  Power,     ///< **
+  Slash,     ///< /
+  Amp,       ///< &
+  Caret,     ///< ^ (dereference)
+  EqEq,      ///< == (not IEC: reported, naming `=`)
+  BangEq,    ///< != (not IEC: reported, naming `<>`)
+  Other,     ///< any other character
 };
 
 struct StToken {

@@ -37,9 +37,7 @@ public:
 
   // ---------------------------------------------------------- tokens
   const StToken &tok() const { return toks_[pos_]; }
-  const StToken &peek(std::size_t k = 1) const {
-    return pos_ + k < toks_.size() ? toks_[pos_ + k] : toks_.back();
-  }
+  const StToken &peek(std::size_t k = 1) const { return pos_ + k < toks_.size() ? toks_[pos_ + k] : toks_.back(); }
   void next() {
     if (pos_ + 1 < toks_.size()) ++pos_;
   }

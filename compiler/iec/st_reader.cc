@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include <cctype>
+#include <cstdint>
 
 namespace gfec::iec {
 
@@ -60,12 +61,15 @@ void StParser::file(Project &project) {
     } else if (is_keyword(t, "VAR_GLOBAL")) {
       not_supported(range(t), "global variables (VAR_GLOBAL) are not supported yet");
       skip_block("VAR");
+    } else if (is_keyword(t, "USING")) {
+      not_supported(range(t), "'USING' (IEC 61131-3 third edition namespaces) is not supported yet");
+      skip_statement();
     } else if (is_keyword(t, "NAMESPACE") || is_keyword(t, "CLASS") || is_keyword(t, "INTERFACE")) {
       not_supported(range(t), fmt::format("'{}' (IEC 61131-3 third edition) is not supported yet", t.text));
       skip_block(upper(t.text));
     } else {
-      error(range(t), fmt::format("expected 'PROGRAM', 'FUNCTION_BLOCK', 'FUNCTION' or 'CONFIGURATION', not {}",
-                                  quoted()));
+      error(range(t),
+            fmt::format("expected 'PROGRAM', 'FUNCTION_BLOCK', 'FUNCTION' or 'CONFIGURATION', not {}", quoted()));
       // On to the next declaration that can begin a file's element.
       next();
       while (!at_end() && !keyword("PROGRAM") && !keyword("FUNCTION_BLOCK") && !keyword("FUNCTION") &&
@@ -79,7 +83,8 @@ void StParser::pou(Project &project, PouKind kind, std::string_view end) {
   const StToken start = tok();
   next();
   if (tok().kind != StTok::Ident) {
-    error(range(tok()), fmt::format("expected the name of the {} after '{}', not {}", start.text, start.text, quoted()));
+    error(range(tok()),
+          fmt::format("expected the name of the {} after '{}', not {}", start.text, start.text, quoted()));
     skip_block(upper(start.text));
     return;
   }
@@ -98,6 +103,7 @@ void StParser::pou(Project &project, PouKind kind, std::string_view end) {
   bool sfc = false;
   while (!at_end() && !keyword(end)) {
     resync();
+    const std::size_t before = pos_;
     const StToken t = tok();
     if (t.kind == StTok::Ident && upper(t.text).rfind("VAR", 0) == 0 && !is_keyword(t, "VAR_X")) {
       var_section(p);
@@ -121,6 +127,7 @@ void StParser::pou(Project &project, PouKind kind, std::string_view end) {
       error(range(t), fmt::format("expected a step, transition or action of the SFC, not {}", quoted()));
       skip_statement();
     }
+    if (pos_ == before) next();  // never loop on a token nothing consumed
   }
   p.range = range(start, tok());
   if (at_end()) {
@@ -154,13 +161,16 @@ void StParser::var_section(Pou &pou) {
   }
   while (!at_end() && !keyword("END_VAR")) {
     resync();
+    const std::size_t before = pos_;
     if (tok().kind != StTok::Ident || block_end()) {
-      error(range(tok()), fmt::format("expected a variable declaration ('name : TYPE;') or 'END_VAR', not {}", quoted()));
+      error(range(tok()),
+            fmt::format("expected a variable declaration ('name : TYPE;') or 'END_VAR', not {}", quoted()));
       if (block_end()) return;
       skip_statement();
-      continue;
+    } else {
+      declaration(pou, section, constant, "END_VAR");
     }
-    declaration(pou, section, constant, "END_VAR");
+    if (pos_ == before) next();
   }
   if (keyword("END_VAR")) next();
 }
@@ -256,13 +266,16 @@ void StParser::step(Pou &pou, bool initial) {
   s.name = name(tok());
   next();
   if (tok().kind != StTok::Colon) {
-    error(range(tok()), fmt::format("expected ':' after the step's name ('{} {}:'), not {}", kw.text, s.name.text,
-                                    quoted()))
+    error(range(tok()),
+          fmt::format("expected ':' after the step's name ('{} {}:'), not {}", kw.text, s.name.text, quoted()))
         .fix(range(toks_[pos_ - 1]), std::string(s.name.text) + ":");
   } else {
     next();
   }
-  while (!at_end() && !keyword("END_STEP")) {
+  for (std::size_t before = SIZE_MAX; !at_end() && !keyword("END_STEP");) {
+    if (pos_ == before) next();  // never loop on a token nothing consumed
+    if (at_end() || keyword("END_STEP")) break;
+    before = pos_;
     resync();
     const StToken a = tok();
     if (a.kind != StTok::Ident || block_end()) {
@@ -273,8 +286,8 @@ void StParser::step(Pou &pou, bool initial) {
     }
     next();
     if (tok().kind != StTok::LParen) {
-      error(range(tok()), fmt::format("expected '(' and the qualifier after '{}' ('{}(N);'), not {}", a.text, a.text,
-                                      quoted()));
+      error(range(tok()),
+            fmt::format("expected '(' and the qualifier after '{}' ('{}(N);'), not {}", a.text, a.text, quoted()));
       skip_statement();
       continue;
     }
@@ -288,8 +301,9 @@ void StParser::step(Pou &pou, bool initial) {
     if (tok().kind == StTok::Ident) {
       const std::string q = upper(tok().text);
       if (!qualifier(q)) {
-        error(range(tok()),
-              fmt::format("'{}' is no action qualifier: IEC's are N, R, S, L, D, P, P0, P1, SD, DS and SL", tok().text));
+        error(
+            range(tok()),
+            fmt::format("'{}' is no action qualifier: IEC's are N, R, S, L, D, P, P0, P1, SD, DS and SL", tok().text));
         ok = false;
       }
       as.qualifier = name(tok());
@@ -505,7 +519,8 @@ void StParser::configuration(Project &project) {
 void StParser::resource(Project &project, std::string_view end) {
   while (!at_end() && !keyword(end)) {
     resync();
-    if (keyword("RESOURCE")) {
+    const std::size_t before = pos_;
+    if (keyword("RESOURCE") && end == "END_CONFIGURATION") {
       next();
       if (tok().kind == StTok::Ident) next();
       if (keyword("ON")) {
@@ -525,6 +540,7 @@ void StParser::resource(Project &project, std::string_view end) {
       error(range(tok()), fmt::format("expected 'RESOURCE', 'TASK', 'PROGRAM' or '{}', not {}", end, quoted()));
       skip_statement();
     }
+    if (pos_ == before) next();
   }
   if (at_end()) {
     error(range(tok()), fmt::format("expected '{}' before the end of the text", end));
@@ -549,6 +565,7 @@ void StParser::task(Project &project) {
     next();
     while (!at_end() && tok().kind != StTok::RParen) {
       const StToken key = tok();
+      if (block_end()) break;
       if (key.kind != StTok::Ident || peek().kind != StTok::Assign) {
         error(range(key), fmt::format("expected 'INTERVAL :=', 'PRIORITY :=' or 'SINGLE :=', not {}", quoted()));
         skip_statement();
@@ -590,8 +607,8 @@ void StParser::program_instance(Project &project) {
       const std::string wanted = upper(tok().text);
       for (Task &t : project.tasks)
         if (upper(t.name.text) == wanted) task = &t;
-      if (!task) error(range(tok()), fmt::format("no TASK named '{}' is declared before", tok().text),
-                       ErrorKind::UnknownName);
+      if (!task)
+        error(range(tok()), fmt::format("no TASK named '{}' is declared before", tok().text), ErrorKind::UnknownName);
       next();
     }
   }

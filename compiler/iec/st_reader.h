@@ -19,8 +19,7 @@ namespace gfec::iec {
 const InputLanguage &st_language();
 
 /// Reads the POUs and configurations of the ST text `text` (of file `file`) into `project`.
-void read_st(std::string_view text, FileId file, std::deque<std::string> &strings, Diagnostics &diag,
-             Project &project);
+void read_st(std::string_view text, FileId file, std::deque<std::string> &strings, Diagnostics &diag, Project &project);
 
 /// The row's reader: the .st file in `main_path` as one ast::File with a chart per PROGRAM.
 void read_st_program(const std::string &main_path, std::string text, const LoadOptions &options, const FileSystem &fs,

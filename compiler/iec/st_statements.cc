@@ -166,15 +166,14 @@ void StParser::statement(ast::Block &out) {
                                         "blocks in structured text",
                                         t.text));
   else if (after.kind == StTok::Dot || after.kind == StTok::LBracket || after.kind == StTok::Caret)
-    not_supported(range(t, after),
-                  fmt::format("assigning a member, an element or through a pointer of '{}' is not supported yet",
-                              t.text));
+    not_supported(
+        range(t, after),
+        fmt::format("assigning a member, an element or through a pointer of '{}' is not supported yet", t.text));
   else if (after.kind == StTok::Eq)
     error(range(after), fmt::format("'=' compares; an ST assignment is '{} := ...;'", t.text)).fix(range(after), ":=");
   else if (after.kind == StTok::Colon && (is_keyword(t, "ACTION") || is_keyword(t, "STEP")))
     error(range(t), fmt::format("expected a statement, not {}", quoted()));
-  else
-    error(range(after), fmt::format("expected ':=' after '{}', not '{}'", t.text, after.text));
+  else error(range(after), fmt::format("expected ':=' after '{}', not '{}'", t.text, after.text));
   skip_statement();
 }
 
@@ -282,6 +281,14 @@ void StParser::case_statement(ast::Block &out) {
   };
   std::vector<Branch> branches;
   ast::Block otherwise;
+  if (++depth_ > kMaxStNesting) {
+    --depth_;
+    error(range(start), fmt::format("statements nested too deeply (more than {} levels)", kMaxStNesting),
+          ErrorKind::Nesting);
+    skip_block("CASE");
+    return;
+  }
+  --depth_;
   while (!keyword("END_CASE") && !at_end()) {
     if (keyword("ELSE")) {
       next();

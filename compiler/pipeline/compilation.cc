@@ -74,9 +74,14 @@ Selection choose(const model::Model &m, const SelectionRequest &request) {
     t.in_input = true;
     return t;
   } else {
-    t.error =
-        fmt::format("the file declares several things to {} ({}); choose one with --chart NAME", request.verb, list());
-    return t;
+    // The reader may know which one the file means (an IEC CONFIGURATION's task runs it).
+    for (const auto &c : candidates)
+      if (!m.default_chart.empty() && c.name == m.default_chart && !chosen) chosen = &c;
+    if (!chosen) {
+      t.error = fmt::format("the file declares several things to {} ({}); choose one with --chart NAME", request.verb,
+                            list());
+      return t;
+    }
   }
   t.kind = chosen->kind;
   t.name = chosen->name;
@@ -110,6 +115,7 @@ bool Compilation::load_and_validate(const std::string &path, const FileSystem &f
   validation.declaring_files = [&missing_import](const std::string &function) { return missing_import(function); };
   scenario::Suite unkept;  // validate checks the tests either way; only gfec test keeps them
   model = validate(loaded.program, sources, diag, tests ? *tests : unkept, validation);
+  model.default_chart = loaded.default_chart;
   // The model holds all the back ends need: the syntax tree goes before they run, so a large
   // chart does not keep both in memory (docs/performance.md).
   if (!options.keep_syntax_tree) loaded.program = {};
@@ -140,15 +146,6 @@ bool Compilation::front_end(const std::string &path) {
 }
 
 const Selection &Compilation::select(const SelectionRequest &request) {
-  if (request.name.empty() && !loaded.default_chart.empty()) {
-    SelectionRequest by_task = request;
-    by_task.name = loaded.default_chart;
-    selection = choose(model, by_task);
-    if (selection.chart) {
-      warn_unused_charts(model, selection.chart, diag);
-      return selection;
-    }
-  }
   selection = choose(model, request);
   if (selection.chart) warn_unused_charts(model, selection.chart, diag);
   return selection;

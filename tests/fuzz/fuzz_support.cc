@@ -19,6 +19,7 @@
 #include "cpp_backend.h"
 #endif
 
+#include <cstdint>
 #include <cstdio>
 #include <functional>
 #include <memory>
@@ -263,11 +264,37 @@ void check_format(const std::string &text) {
 
 }  // namespace
 
-std::string check_one(const std::string &input) {
+std::string mutate(const std::string &text, unsigned seed) {
+  std::uint64_t x = seed * 0x9E3779B97F4A7C15ull + 1;
+  auto next = [&x](std::size_t n) {
+    x ^= x << 13;
+    x ^= x >> 7;
+    x ^= x << 17;
+    return n == 0 ? std::size_t(0) : static_cast<std::size_t>(x % n);
+  };
+  std::string t = text;
+  const std::size_t edits = 1 + next(4);
+  for (std::size_t e = 0; e < edits; ++e) {
+    const std::size_t at = next(t.size() + 1), len = 1 + next(16);
+    switch (next(4)) {
+    case 0: t.resize(at); break;
+    case 1: t.erase(at, len); break;
+    case 2: t.insert(at, t.substr(next(t.size() + 1), len)); break;
+    default:
+      for (std::size_t k = at; k < t.size() && k < at + len; ++k) t[k] = static_cast<char>(next(256));
+      break;
+    }
+  }
+  return t;
+}
+
+std::string check_one(const std::string &input, const std::string &name) {
   MemoryFileSystem fs;
+  const bool chart_text = name.size() < 3 || name.compare(name.size() - 3, 3, ".st") != 0;
   const std::string separator = "\n%%%\n";
-  auto split = input.find(separator);
-  fs.add("fuzz.sfc", input.substr(0, split));
+  auto split = chart_text ? input.find(separator) : std::string::npos;
+  const std::string main = chart_text ? "fuzz.sfc" : "fuzz.st";
+  fs.add(main, input.substr(0, split));
   if (split != std::string::npos) fs.add("b.sfc", input.substr(split + separator.size()));
 
   // The pipeline gfec runs (compiler/pipeline/compilation.h), every warning on; the analyses
@@ -277,7 +304,7 @@ std::string check_one(const std::string &input) {
   options.error_limit = 1000;
   options.analyze = false;
   pipeline::Compilation compilation(options);
-  const bool validated = compilation.front_end("fuzz.sfc", fs);
+  const bool validated = compilation.front_end(main, fs);
   const SourceManager &sources = compilation.sources;
   const Diagnostics &diag = compilation.diag;
   const model::Model &m = compilation.model;
@@ -290,7 +317,7 @@ std::string check_one(const std::string &input) {
     expect(!d.message.empty() && !d.check().empty(), "a diagnostic has a message and a check name");
     printed += render_text(d, sources);
   }
-  check_format(input.substr(0, split));
+  if (chart_text) check_format(input.substr(0, split));
   if (!validated) return printed;
 
   ModelCheck check(m);

@@ -5,6 +5,10 @@
 // With --lsp the inputs are language server sessions (lsp_session.h), and --random N plays N
 // pseudo-random sessions of edits and requests over each input as the document besides
 // (ctest: fuzz_lsp_sessions): the short run of the server's fuzzing that CI can afford.
+//
+// With --mutate N each input is also checked in N pseudo-random mutations (cut short, spans
+// deleted or repeated, bytes replaced): the inputs of a language the libFuzzer target does not
+// read (IEC structured text, by the file's extension; ctest: fuzz_iec_st).
 #include "fuzz_support.h"
 #include "lsp_session.h"
 
@@ -19,7 +23,7 @@ int main(int argc, char **argv) {
   namespace fs = std::filesystem;
   std::vector<fs::path> files;
   bool verbose = false, lsp = false;
-  unsigned random_sessions = 0;
+  unsigned random_sessions = 0, mutations = 0;
   for (int i = 1; i < argc; ++i) {
     fs::path p = argv[i];
     if (p == "-v") {  // print what gfec says about each input
@@ -28,6 +32,10 @@ int main(int argc, char **argv) {
     }
     if (p == "--lsp") {
       lsp = true;
+      continue;
+    }
+    if (p == "--mutate" && i + 1 < argc) {
+      mutations = static_cast<unsigned>(std::stoul(argv[++i]));
       continue;
     }
     if (p == "--random" && i + 1 < argc) {
@@ -54,8 +62,11 @@ int main(int argc, char **argv) {
         gfec::fuzz::check_lsp_session(gfec::fuzz::random_lsp_session(text.str(), seed));
       continue;
     }
-    std::string said = gfec::fuzz::check_one(text.str());
+    const std::string name = "fuzz" + f.extension().string();
+    std::string said = gfec::fuzz::check_one(text.str(), name);
     if (verbose) std::cout << "== " << f.string() << "\n" << said;
+    for (unsigned seed = 1; seed <= mutations; ++seed)
+      gfec::fuzz::check_one(gfec::fuzz::mutate(text.str(), seed), name);
   }
   if (lsp) std::cout << "played " << files.size() * (1 + random_sessions) << " language server sessions\n";
   else std::cout << "replayed " << files.size() << " inputs\n";

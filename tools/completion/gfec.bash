@@ -17,7 +17,7 @@ _gfec() {
   # Options every command takes (the front end's): -I DIR, -x LANG.
   case $prev in
     -I) COMPREPLY=($(compgen -d -- "$cur")); return ;;
-    -x) COMPREPLY=($(compgen -W 'alica gfec plcopen' -- "$cur")); return ;;
+    -x) COMPREPLY=($(compgen -W 'alica gfec iec-st plcopen' -- "$cur")); return ;;
   esac
 
   # -W<name> and -f<option> complete as the compiler's, below.
