@@ -76,6 +76,12 @@ done
 "$gfec" run "$dir/mixer.st" --inputs "$dir/mixer.csv" --observable --ticks 14 | grep -v '^av' > st.txt ||
   fail "mixer.st: gfec run fails"
 diff -u "$dir/mixer.expected" st.txt || fail "mixer.st runs to other outputs than the PLCopen files"
+# The ST reader's mixer (tests/iec/st/mixer.st, its actions' bodies with IF and CASE) as PLCopen
+# XML runs to that program's whole log, activations included.
+"$gfec" run "$dir/st_mixer.xml" --inputs "$dir/../st/mixer.csv" --observable > st_mixer.txt ||
+  fail "st_mixer.xml: gfec run fails"
+diff -u "$dir/../st/mixer.expected" st_mixer.txt || fail "st_mixer.xml runs to another log than tests/iec/st/mixer.st"
+
 # A generated project: program Big of 500 steps and 23 more SFC programs, read, checked, compiled
 # and built; its engine and the interpreter agree.
 "$dir/gen_plcopen.sh" 500 24 > big.xml
