@@ -79,6 +79,7 @@ public:
   /// The steps a transition's input link leads back to.
   bool steps_before(const Node &n, const Link &via, const Node &transition, std::vector<ast::Name> &out, int depth) {
     if (depth > kMaxDepth) return fail(via, "the SFC nests divergences deeper than gfec reads");
+    if (!seen_.insert(&n).second) return true;  // reached before: a diamond, or a cycle, walked once
     switch (n.kind) {
     case Kind::Step: out.push_back(step_name(n.step)); return true;
     case Kind::SelectionDivergence:
@@ -104,6 +105,7 @@ public:
   /// The steps that a link out of a transition leads to.
   bool steps_after(const Node &n, const Node &transition, std::vector<ast::Name> &out, int depth) {
     if (depth > kMaxDepth) return fail(at(n), "the SFC nests divergences deeper than gfec reads");
+    if (n.kind != Kind::JumpStep && !seen_.insert(&n).second) return true;
     switch (n.kind) {
     case Kind::Step: out.push_back(step_name(n.step)); return true;
     case Kind::JumpStep: {
@@ -135,6 +137,10 @@ public:
     }
   }
 
+  /// Starts a walk from one transition: each element is visited once per walk, so links that
+  /// meet again (or loop) cost nothing more.
+  void new_walk() { seen_.clear(); }
+
   SourceRange at(const Node &n) const { return xml_.range(n.xml); }
   SourceRange at(const Link &l) const { return xml_.attribute_range(l.element, "refLocalId"); }
   bool fail(const Link &l, const std::string &message) { return fail(at(l), message); }
@@ -147,6 +153,7 @@ private:
   const XmlFile &xml_;
   Diagnostics &diag_;
   iec::Pou &pou_;
+  std::set<const Node *> seen_;
 };
 
 Kind kind_of(std::string_view name) {
@@ -277,11 +284,13 @@ void Reader::read_sfc(const pugi::xml_node &sfc, const pugi::xml_node &pou_node,
     t.range = at(n.xml);
     bool ok = true;
     if (n.ins.empty()) ok = g.fail(at(n.xml), fmt::format("{} has no preceding step", g.describe(n)));
+    g.new_walk();
     for (const Link &l : n.ins)
       if (const Node *before = g.target(l)) ok = g.steps_before(*before, l, n, t.from, 0) && ok;
       else ok = false;
     if (n.outs.empty())
       ok = g.fail(at(n.xml), fmt::format("{} leads to no step: nothing connects to it", g.describe(n)));
+    g.new_walk();
     for (std::size_t o : n.outs) ok = g.steps_after(g.nodes[o], n, t.to, 0) && ok;
     std::size_t direct_steps = 0;
     for (const Link &l : n.ins)

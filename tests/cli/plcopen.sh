@@ -118,6 +118,24 @@ for producer in beremiz openplc codesys twincat tc6_old; do
     done
   done
 done
+# Links that meet again and again (each simultaneous convergence fed twice by the one before it,
+# 60 deep), and a cycle of divergences: read in linear time, never walked path by path.
+{
+  echo '<project xmlns="http://www.plcopen.org/xml/tc6_0201"><types><pous><pou name="P" pouType="program"><body><SFC>'
+  echo '<step localId="1" name="S0" initialStep="true"/>'
+  echo '<simultaneousConvergence localId="100"><connectionPointIn><connection refLocalId="1"/></connectionPointIn><connectionPointIn><connection refLocalId="1"/></connectionPointIn></simultaneousConvergence>'
+  for ((k = 101; k < 160; ++k)); do
+    echo "<simultaneousConvergence localId=\"$k\"><connectionPointIn><connection refLocalId=\"$((k - 1))\"/></connectionPointIn><connectionPointIn><connection refLocalId=\"$((k - 1))\"/></connectionPointIn></simultaneousConvergence>"
+  done
+  echo '<transition localId="2"><connectionPointIn><connection refLocalId="159"/></connectionPointIn><condition><inline><ST>TRUE</ST></inline></condition></transition>'
+  echo '<selectionDivergence localId="200"><connectionPointIn><connection refLocalId="201"/></connectionPointIn></selectionDivergence>'
+  echo '<selectionDivergence localId="201"><connectionPointIn><connection refLocalId="200"/></connectionPointIn></selectionDivergence>'
+  echo '<transition localId="3"><connectionPointIn><connection refLocalId="201"/></connectionPointIn><condition><inline><ST>TRUE</ST></inline></condition></transition>'
+  echo '<jumpStep localId="4" targetName="S0"><connectionPointIn><connection refLocalId="2"/></connectionPointIn></jumpStep>'
+  echo '</SFC></body></pou></pous></types></project>'
+} > diamonds.xml
+check_robust diamonds.xml "diamonds.xml"
+
 # A UTF-16 file is PLCopen in an encoding gfec does not read: one located error, exit 1.
 iconv -f UTF-8 -t UTF-16 "$dir/beremiz.xml" > utf16.xml
 rc=0
