@@ -92,8 +92,7 @@ public:
       }
       return ok;
     }
-    case Kind::MacroStep:
-      diag_.error(at(n), ErrorKind::NotSupported, fmt::format("{}: macro steps are not supported yet", describe(n)));
+    case Kind::MacroStep:  // reported once, with the body's other elements gfec does not read
       return false;
     default:
       return fail(via, fmt::format("{} is preceded by {}: a transition follows a step, a selection divergence or a "
@@ -125,8 +124,7 @@ public:
       for (std::size_t o : n.outs) ok = steps_after(nodes[o], transition, out, depth + 1) && ok;
       return ok;
     }
-    case Kind::MacroStep:
-      diag_.error(at(n), ErrorKind::NotSupported, fmt::format("{}: macro steps are not supported yet", describe(n)));
+    case Kind::MacroStep:  // reported once, with the body's other elements gfec does not read
       return false;
     case Kind::ActionBlock:  // an action block hangs off a step, reported where it is read
       return true;
@@ -466,6 +464,8 @@ void Reader::read_sfc(const pugi::xml_node &sfc, const pugi::xml_node &pou_node,
         }
         step.associations.push_back(std::move(as));
       }
+    } else if (n.kind == Kind::MacroStep) {
+      not_supported(n.xml, fmt::format("{}: macro steps are not supported yet", g.describe(n)));
     } else if ((n.kind == Kind::Other || n.kind == Kind::InVariable) && !n.used) {
       not_supported(n.xml, fmt::format("{} in an SFC body: LD and FBD elements are not supported yet", g.describe(n)));
     }
