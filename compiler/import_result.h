@@ -36,7 +36,7 @@ struct LoadResult {
   const InputLanguage *language = nullptr;  ///< the main file's, once it was read
   std::vector<SourceElement> elements;      ///< ALICA input: every plan, state, transition... read
   /// The chart compiled when the main file declares several and --chart names none (the IEC
-  /// PROGRAM that the file's one TASK runs, docs/iec.md); empty: the default rule alone.
+  /// PROGRAM that the file's one TASK runs, or a PLCopen file's tasks, docs/iec.md); empty: the default rule alone.
   std::string default_chart;
 };
 

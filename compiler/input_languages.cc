@@ -2,6 +2,7 @@
 
 #include "alica/alica_reader.h"
 #include "iec/st_reader.h"
+#include "plcopen/plcopen_reader.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -16,6 +17,7 @@ std::vector<const InputLanguage *> &rows() {
       &chart_text_language(),  // compiler/loader.cc
       &alica::language(),      // compiler/alica/alica_language.cc
       &iec::st_language(),     // compiler/iec/st_language.cc
+      &plcopen::language(),    // compiler/plcopen/plcopen_language.cc
   };
   return table;
 }

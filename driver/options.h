@@ -39,7 +39,7 @@ struct Options {
   std::vector<std::string> inputs;
   std::string output;                     ///< -o; empty: derived from the input's name
   std::vector<std::string> include_dirs;  ///< -I
-  std::string language;                   ///< -x alica|gfec|iec-st: the input language; empty: from the extension
+  std::string language;                   ///< -x alica|gfec|iec-st|plcopen: the input language; empty: from the extension
   bool check_only = false;                ///< --check: validate, write nothing
   bool analyze = false;                   ///< --analyze: every static analysis, a report (analyze_command.h)
   std::string emit;                       ///< --emit=NAME (backend_registry.h); empty: from what is compiled

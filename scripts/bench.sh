@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs every benchmark of docs/performance.md and prints its tables. Measures; never fails on time.
 #
-#   scripts/bench.sh [--quick] [SECTION...]     sections: compiler cc engine size target trace sim plan lsp (default: all)
+#   scripts/bench.sh [--quick] [SECTION...]     sections: compiler cc engine size target trace sim plan lsp iec (default: all)
 #
 # Builds a Release tree in build-bench/ (or $GFEC_BENCH_BUILD_DIR) with the targets the
 # benchmarks need: gfec, gfec_bench_gen, afp_step_bench, sim_rtf. --quick uses smaller sizes
@@ -14,11 +14,11 @@ sections=()
 for arg in "$@"; do
   case $arg in
     --quick) quick=1 ;;
-    compiler | cc | engine | size | target | trace | sim | plan | lsp) sections+=("$arg") ;;
-    *) echo "usage: scripts/bench.sh [--quick] [compiler|cc|engine|size|target|trace|sim|plan|lsp]..." >&2; exit 2 ;;
+    compiler | cc | engine | size | target | trace | sim | plan | lsp | iec) sections+=("$arg") ;;
+    *) echo "usage: scripts/bench.sh [--quick] [compiler|cc|engine|size|target|trace|sim|plan|lsp|iec]..." >&2; exit 2 ;;
   esac
 done
-[[ ${#sections[@]} -gt 0 ]] || sections=(compiler cc engine size target trace sim plan lsp)
+[[ ${#sections[@]} -gt 0 ]] || sections=(compiler cc engine size target trace sim plan lsp iec)
 
 if [[ ! -f $build/build.ninja ]]; then
   cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release > /dev/null
@@ -76,5 +76,8 @@ for section in "${sections[@]}"; do
     lsp)
       echo "== (f) language server: latency on a 5000-place chart"
       python3 "$root/tests/bench/bench_lsp.py" "$gfec" "$gen" 5000 $((quick ? 10 : 30)) ;;
+    iec)
+      echo "== (g) PLCopen XML: read + check, and read + check + compile, of a generated project"
+      if ((quick)); then "$root/tests/bench/bench_plcopen.sh" "$gfec" "$root" 500; else "$root/tests/bench/bench_plcopen.sh" "$gfec" "$root"; fi ;;
   esac
 done

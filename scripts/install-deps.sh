@@ -3,7 +3,7 @@
 set -euo pipefail
 packages=(
   cmake ninja-build gcc g++ clang lld llvm pkg-config make
-  libfmt-dev nlohmann-json3-dev libcli11-dev catch2 libode-dev
+  libfmt-dev nlohmann-json3-dev libcli11-dev catch2 libode-dev libpugixml-dev
   graphviz valgrind cppcheck time
   diffutils  # diff: gfec fmt --diff (essential in Debian; named because gfec runs it)
   procps  # pgrep: tests/cli/reliability.sh signals gfec, not the timeout(1) around it

@@ -121,7 +121,7 @@ expect -fdiagnostics-color=always -fdiagnostics-color=auto -- gfec -fdiagnostics
 expect blink.sfc cleanup.fsm board.iface plan.pml run test monitor -- gfec ""
 [[ " $(offers gfec "") " == *" notes.txt "* ]] && fail "gfec <Tab> offers a text file"
 expect -x -- gfec -
-expect alica gfec -- gfec -x ""
+expect alica gfec plcopen -- gfec -x ""
 expect blink.sfc -- gfec run b
 expect plan.pml -- gfec run p
 expect --inputs -- gfec run blink.sfc --in

@@ -17,7 +17,7 @@ _gfec() {
   # Options every command takes (the front end's): -I DIR, -x LANG.
   case $prev in
     -I) COMPREPLY=($(compgen -d -- "$cur")); return ;;
-    -x) COMPREPLY=($(compgen -W 'alica gfec iec-st' -- "$cur")); return ;;
+    -x) COMPREPLY=($(compgen -W 'alica gfec iec-st plcopen' -- "$cur")); return ;;
   esac
 
   # -W<name> and -f<option> complete as the compiler's, below.
@@ -31,7 +31,7 @@ _gfec() {
       COMPREPLY=($(compgen -W '--inputs --ticks --agents --chart --html -I -x --observable --hooks --check-post
         -W -w -f --help' -- "$cur"))
     else
-      COMPREPLY=($(compgen -f -X '!*.@(sfc|fsm|pml)' -- "$cur")); compopt -o plusdirs 2>/dev/null
+      COMPREPLY=($(compgen -f -X '!*.@(sfc|fsm|pml|xml)' -- "$cur")); compopt -o plusdirs 2>/dev/null
     fi
     return
   fi
@@ -47,7 +47,7 @@ _gfec() {
       COMPREPLY=($(compgen -W '--log --http --http-remote --serial --baud --tcp --robots --silence --chart -I -x -W -w
         -f --help' -- "$cur"))
     else
-      COMPREPLY=($(compgen -f -X '!*.@(sfc|fsm|plan|pml)' -- "$cur")); compopt -o plusdirs 2>/dev/null
+      COMPREPLY=($(compgen -f -X '!*.@(sfc|fsm|plan|pml|xml)' -- "$cur")); compopt -o plusdirs 2>/dev/null
     fi
     return
   fi
@@ -105,7 +105,7 @@ _gfec() {
   if [[ $COMP_CWORD -eq 1 ]]; then
     COMPREPLY=($(compgen -W 'run test fmt lsp monitor' -- "$cur"))
   fi
-  COMPREPLY+=($(compgen -f -X '!*.@(sfc|fsm|plan|iface|toolbox|pml)' -- "$cur"))
+  COMPREPLY+=($(compgen -f -X '!*.@(sfc|fsm|plan|iface|toolbox|pml|xml)' -- "$cur"))
   compopt -o plusdirs 2>/dev/null
 }
 

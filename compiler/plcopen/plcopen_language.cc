@@ -1,0 +1,21 @@
+// PLCopen XML's row of the input-language table (compiler/input_languages.h).
+#include "input_languages.h"
+#include "plcopen/plcopen_reader.h"
+
+namespace gfec::plcopen {
+
+const InputLanguage &language() {
+  static const InputLanguage row{
+      "plcopen",
+      "PLCopen TC6 XML (IEC 61131-3 SFC)",
+      {{".xml", "a PLCopen project"}},
+      is_plcopen,  // .xml is everyone's: the root element says whether it is PLCopen's
+      read_plcopen_program,
+      false,  // its ranges point into XML
+      "",     // XML has no line comments: diagnostic test cases keep their expected output beside
+      nullptr,
+  };
+  return row;
+}
+
+}  // namespace gfec::plcopen

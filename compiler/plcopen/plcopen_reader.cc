@@ -1,0 +1,358 @@
+// The PLCopen reader's entry point and the project around the SFC bodies: the namespace, the
+// POUs and their variables, named actions, and the tasks that give a program its period.
+#include "plcopen/plcopen_reader.h"
+
+#include "escape.h"
+#include "iec/lower.h"
+#include "iec/st_fragment.h"
+#include "input_languages.h"
+#include "plcopen/iec_duration.h"
+#include "plcopen/reader_context.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <memory>
+
+namespace gfec::plcopen {
+
+namespace {
+
+/// The namespaces of the three TC6 schemas in use: 1.0 (tc6.xsd), 2.0 and 2.01.
+constexpr std::string_view kNamespaces[] = {"http://www.plcopen.org/xml/tc6.xsd", "http://www.plcopen.org/xml/tc6_0200",
+                                            "http://www.plcopen.org/xml/tc6_0201"};
+
+bool is_true(std::string_view v) { return v == "true" || v == "1"; }
+
+std::string upper(std::string_view s) {
+  std::string out(s);
+  for (char &c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return out;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------- shared helpers
+
+ast::Name Reader::name_of(const pugi::xml_node &node, std::string_view attribute) {
+  LocatedText t = xml_.attribute_text(node, attribute);
+  SourceRange r = xml_.attribute_range(node, attribute);
+  return {keep(std::move(t.text)), r};
+}
+
+bool Reader::identifier(const ast::Name &name, std::string_view what) {
+  bool ok = !name.text.empty() && !std::isdigit(static_cast<unsigned char>(name.text[0]));
+  for (char c : name.text) ok = ok && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
+  if (!ok)
+    diag_.error(name.range, ErrorKind::Plcopen,
+                name.text.empty()
+                    ? fmt::format("{} without a name", what)
+                    : fmt::format("{} '{}': an IEC name is letters, digits and '_', not beginning with a digit", what,
+                                  text::printable(name.text)));
+  return ok;
+}
+
+ast::ExprPtr Reader::expression(const LocatedText &text) {
+  iec::FragmentPlace place{file_.id, text.breaks};
+  if (text.blank()) {
+    diag_.error(place.range(0, 0), ErrorKind::Plcopen,
+                "an empty ST expression where gfec needs a condition or a value");
+    return nullptr;
+  }
+  std::string_view kept = keep(text.text);
+  return iec::parse_st_expression(kept, place, file_.strings, diag_);
+}
+
+std::optional<ast::Block> Reader::statements(const LocatedText &text) {
+  iec::FragmentPlace place{file_.id, text.breaks};
+  std::string_view kept = keep(text.text);
+  return iec::parse_st_statements(kept, place, file_.strings, diag_);
+}
+
+std::string Reader::describe(const pugi::xml_node &node) const {
+  std::string out = std::string(local_name(node));
+  if (auto n = node.attribute("name"); n && *n.value()) out += fmt::format(" '{}'", n.value());
+  if (auto id = node.attribute("localId")) out += fmt::format(" (localId {})", id.value());
+  return text::printable(out);
+}
+
+void Reader::not_supported(const pugi::xml_node &node, const std::string &message) {
+  diag_.error(at(node), ErrorKind::NotSupported, message);
+}
+
+// ---------------------------------------------------------------- the project
+
+iec::Project Reader::read_project(const pugi::xml_node &root) {
+  iec::Project project;
+  for (pugi::xml_node types : root.children()) {
+    if (local_name(types) != "types") continue;
+    for (pugi::xml_node pous : types.children())
+      if (local_name(pous) == "pous")
+        for (pugi::xml_node pou : pous.children())
+          if (local_name(pou) == "pou") read_pou(pou, project);
+  }
+  if (pugi::xml_node instances = child(root, "instances")) read_tasks(instances, project);
+  return project;
+}
+
+void Reader::read_pou(const pugi::xml_node &node, iec::Project &project) {
+  iec::Pou pou;
+  pou.name = name_of(node, "name");
+  pou.range = at(node);
+  if (!identifier(pou.name, "POU")) return;
+  std::string_view type = node.attribute("pouType").value();
+  if (type == "functionBlock") {
+    pou.kind = iec::PouKind::FunctionBlock;
+  } else if (type == "function") {
+    pou.kind = iec::PouKind::Function;
+  } else if (type != "program") {
+    diag_.error(xml_.attribute_range(node, "pouType"), ErrorKind::Plcopen,
+                fmt::format("POU '{}' has pouType '{}': the schema's are program, functionBlock and function",
+                            pou.name.text, text::printable(type)));
+    return;
+  }
+  if (pou.kind != iec::PouKind::Program) {  // the lowering reports it; its insides are not read
+    project.pous.push_back(std::move(pou));
+    return;
+  }
+  if (pugi::xml_node interface = child(node, "interface")) read_interface(interface, pou);
+  if (pugi::xml_node actions = child(node, "actions")) read_actions(actions, pou);
+  // A program has one body (TC6 2.01 allows several, one per worksheet: gfec reads one).
+  pugi::xml_node sfc, other;
+  int bodies = 0;
+  for (pugi::xml_node body : node.children()) {
+    if (local_name(body) != "body") continue;
+    ++bodies;
+    for (pugi::xml_node b : body.children()) {
+      if (b.type() != pugi::node_element || local_name(b) == "documentation" || local_name(b) == "addData") continue;
+      if (local_name(b) == "SFC" && !sfc) sfc = b;
+      else if (!other) other = b;
+    }
+  }
+  if (!sfc && !other) {
+    diag_.error(pou.name.range, ErrorKind::Plcopen, fmt::format("program '{}' has no body", pou.name.text));
+    return;
+  }
+  if (!sfc || bodies > 1) {
+    pugi::xml_node what = other ? other : sfc;
+    diag_.error(at(what), ErrorKind::NotSupported,
+                fmt::format("program '{}': a body in {} is not supported yet; gfec reads programs whose body is "
+                            "one sequential function chart (SFC)",
+                            pou.name.text, text::printable(local_name(what))));
+    return;
+  }
+  read_sfc(sfc, node, pou);
+  project.pous.push_back(std::move(pou));
+}
+
+void Reader::read_interface(const pugi::xml_node &interface, iec::Pou &pou) {
+  for (pugi::xml_node section : interface.children()) {
+    if (section.type() != pugi::node_element) continue;
+    std::string_view kind = local_name(section);
+    if (kind == "documentation" || kind == "addData") continue;
+    std::optional<iec::Section> s;
+    if (kind == "inputVars") s = iec::Section::Input;
+    else if (kind == "outputVars") s = iec::Section::Output;
+    else if (kind == "localVars") s = iec::Section::Local;
+    if (!s) {
+      if (child(section, "variable"))
+        not_supported(section, fmt::format("a {} section is not supported yet: gfec reads inputVars, outputVars and "
+                                           "localVars",
+                                           text::printable(kind)));
+      continue;
+    }
+    bool constant = is_true(section.attribute("constant").value());
+    for (pugi::xml_node v : section.children())
+      if (local_name(v) == "variable") read_variable(v, *s, constant, pou);
+  }
+}
+
+void Reader::read_variable(const pugi::xml_node &v, iec::Section section, bool constant, iec::Pou &pou) {
+  iec::Variable var;
+  var.section = section;
+  var.constant = constant;
+  var.name = name_of(v, "name");
+  var.range = at(v);
+  if (!identifier(var.name, "variable")) return;
+  if (v.attribute("address")) var.located = xml_.attribute_range(v, "address");
+  pugi::xml_node type = child(v, "type");
+  pugi::xml_node t;
+  for (pugi::xml_node c : type.children())
+    if (c.type() == pugi::node_element) {
+      t = c;
+      break;
+    }
+  if (!t) {
+    diag_.error(at(v), ErrorKind::Plcopen, fmt::format("variable '{}' has no type", var.name.text));
+    return;
+  }
+  if (local_name(t) == "derived") {
+    var.type = name_of(t, "name");
+  } else {
+    // Elementary types are elements named as the type (<BOOL/>); string is <string/>.
+    var.type = {keep(upper(local_name(t))), at(t)};
+  }
+  if (pugi::xml_node init = child(v, "initialValue")) {
+    pugi::xml_node simple = child(init, "simpleValue");
+    if (simple) var.init = expression(xml_.attribute_text(simple, "value"));
+    else
+      not_supported(init, fmt::format("the initial value of variable '{}' is not a simple value: arrays and "
+                                      "structures are not supported yet",
+                                      var.name.text));
+  }
+  pou.variables.push_back(std::move(var));
+}
+
+void Reader::read_actions(const pugi::xml_node &actions, iec::Pou &pou) {
+  for (pugi::xml_node a : actions.children()) {
+    if (local_name(a) != "action") continue;
+    iec::Action action;
+    action.name = name_of(a, "name");
+    action.range = at(a);
+    if (!identifier(action.name, "action")) continue;
+    pugi::xml_node body = child(a, "body");
+    pugi::xml_node st = child(body, "ST");
+    if (!st) {
+      pugi::xml_node what = body;
+      for (pugi::xml_node c : body.children())
+        if (c.type() == pugi::node_element && local_name(c) != "documentation" && local_name(c) != "addData") {
+          what = c;
+          break;
+        }
+      if (!what) what = a;
+      not_supported(what, fmt::format("the body of action '{}' is {}: gfec reads action bodies in ST; {} is not "
+                                      "supported yet",
+                                      action.name.text, describe(what), local_name(what)));
+      continue;
+    }
+    auto block = statements(xml_.text_below(st));
+    if (!block) continue;
+    action.body = std::move(*block);
+    pou.actions.push_back(std::move(action));
+  }
+}
+
+void Reader::read_tasks(const pugi::xml_node &instances, iec::Project &project) {
+  for (pugi::xml_node configurations : instances.children()) {
+    if (local_name(configurations) != "configurations") continue;
+    for (pugi::xml_node configuration : configurations.children()) {
+      if (local_name(configuration) != "configuration") continue;
+      for (pugi::xml_node resource : configuration.children()) {
+        if (local_name(resource) != "resource") continue;
+        for (pugi::xml_node t : resource.children()) {
+          if (local_name(t) != "task") continue;
+          iec::Task task;
+          task.name = name_of(t, "name");
+          task.range = at(t);
+          if (t.attribute("interval")) {
+            task.interval_range = xml_.attribute_range(t, "interval");
+            task.interval_ms = duration_ms(t.attribute("interval").value());
+            if (!task.interval_ms || *task.interval_ms <= 0) {
+              diag_.error(task.interval_range, ErrorKind::Plcopen,
+                          fmt::format("task '{}' has the interval '{}': gfec reads a positive TIME literal "
+                                      "(T#10ms) or an XML duration (PT0.01S)",
+                                      task.name.text, text::printable(t.attribute("interval").value())));
+              task.interval_ms.reset();
+            }
+          }
+          for (pugi::xml_node inst : t.children())
+            if (local_name(inst) == "pouInstance") task.programs.push_back(name_of(inst, "typeName"));
+          project.tasks.push_back(std::move(task));
+        }
+      }
+    }
+  }
+}
+
+// ---------------------------------------------------------------- the entry point
+
+bool is_plcopen(std::string_view text) {
+  // A UTF-16 file (some Windows tools save one): its start, narrowed, so that the reader can say
+  // it is PLCopen in the wrong encoding rather than chart text.
+  if (text.size() >= 2 && ((text[0] == '\xFF' && text[1] == '\xFE') || (text[0] == '\xFE' && text[1] == '\xFF'))) {
+    std::string narrow;
+    for (std::size_t k = 2; k < text.size() && k < 8192; ++k)
+      if (text[k] != '\0') narrow += text[k];
+    return is_plcopen(narrow);
+  }
+  // The root element's start tag: past the BOM, the XML declaration, comments and a doctype.
+  std::size_t i = text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;
+  for (int guard = 0; guard < 1000 && i < text.size(); ++guard) {
+    i = text.find('<', i);
+    if (i == std::string_view::npos) return false;
+    if (text.compare(i, 2, "<?") == 0 || text.compare(i, 2, "<!") == 0) {
+      std::size_t end = text.compare(i, 4, "<!--") == 0 ? text.find("-->", i) : text.find('>', i);
+      if (end == std::string_view::npos) return false;
+      i = end + 1;
+      continue;
+    }
+    std::size_t end = text.find('>', i);
+    std::string_view tag = text.substr(i + 1, end == std::string_view::npos ? std::string_view::npos : end - i - 1);
+    std::size_t name_end = tag.find_first_of(" \t\r\n/");
+    std::string_view name = tag.substr(0, name_end);
+    if (auto colon = name.find(':'); colon != std::string_view::npos) name = name.substr(colon + 1);
+    // Any PLCopen namespace: the reader then says whether it is one gfec reads.
+    return name == "project" && tag.find("www.plcopen.org/xml/") != std::string_view::npos;
+  }
+  return false;
+}
+
+void read_plcopen_program(const std::string &main_path, std::string text, const LoadOptions &, const FileSystem &,
+                          SourceManager &sources, Diagnostics &diag, LoadResult &result) {
+  result.paths.push_back(main_path);
+  result.program.files.push_back(std::make_unique<ast::File>());
+  ast::File &file = *result.program.files.back();
+  file.id = sources.add(main_path, std::move(text), language());
+  const std::string &t = sources.file(file.id).text();
+  if (t.size() >= 2 && ((t[0] == '\xFF' && t[1] == '\xFE') || (t[0] == '\xFE' && t[1] == '\xFF'))) {
+    diag.error({file.id, 0, 2}, ErrorKind::Xml,
+               "the file is UTF-16: gfec reads PLCopen files in UTF-8; save it as UTF-8");
+    return;
+  }
+  pugi::xml_document doc;
+  pugi::xml_parse_result parsed = doc.load_buffer(t.data(), t.size(), pugi::parse_default, pugi::encoding_utf8);
+  if (!parsed) {
+    auto offset =
+        static_cast<std::uint32_t>(std::min<std::ptrdiff_t>(std::max<std::ptrdiff_t>(parsed.offset, 0), t.size()));
+    diag.error({file.id, offset, offset}, ErrorKind::Xml, fmt::format("malformed XML: {}", parsed.description()));
+    return;
+  }
+  XmlFile xml(file.id, t);
+  pugi::xml_node root = doc.document_element();
+  if (local_name(root) != "project") {
+    diag.error(xml.range(root), ErrorKind::Plcopen,
+               fmt::format("the root element is <{}>: a PLCopen file's is <project>", text::printable(root.name())));
+    return;
+  }
+  std::string_view root_name = root.name();
+  auto colon = root_name.find(':');
+  std::string xmlns = colon == std::string_view::npos ? "xmlns" : "xmlns:" + std::string(root_name.substr(0, colon));
+  std::string_view ns = root.attribute(xmlns.c_str()).value();
+  bool known = false;
+  for (std::string_view k : kNamespaces) known = known || ns == k;
+  if (!known) {
+    diag.error(xml.attribute_range(root, xmlns), ErrorKind::Plcopen,
+               ns.empty()
+                   ? std::string("the <project> has no namespace: gfec reads PLCopen TC6 XML, whose namespace is "
+                                 "http://www.plcopen.org/xml/tc6_0201 (or tc6_0200, or tc6.xsd)")
+                   : fmt::format("the namespace '{}' is not one gfec reads: it reads PLCopen TC6 XML in "
+                                 "http://www.plcopen.org/xml/tc6_0201, tc6_0200 and tc6.xsd",
+                                 text::printable(ns)));
+    return;
+  }
+  Reader reader(xml, file, diag);
+  iec::Project project = reader.read_project(root);
+  // The program the tasks run is the one compiled when --chart names none (docs/iec.md).
+  std::vector<std::string> run;
+  for (const iec::Task &task : project.tasks)
+    for (const ast::Name &p : task.programs)
+      for (const iec::Pou &pou : project.pous)
+        if (pou.kind == iec::PouKind::Program && upper(pou.name.text) == upper(p.text) &&
+            std::find(run.begin(), run.end(), std::string(pou.name.text)) == run.end())
+          run.emplace_back(pou.name.text);
+  if (run.size() == 1) result.default_chart = run.front();
+  iec::lower(std::move(project), file, diag);
+}
+
+}  // namespace gfec::plcopen

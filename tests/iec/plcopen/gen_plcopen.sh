@@ -1,0 +1,86 @@
+#!/usr/bin/env bash
+# Writes a large PLCopen TC6 XML project to stdout, for cli.plcopen and scripts/bench.sh: program
+# Big with STEPS steps in a loop, and POUS-1 programs Small1... of 20 steps each. Every tenth step
+# opens a selection divergence (go on, or skip a step) that a selection convergence closes, every
+# fifth holds action Count with N; task Main runs Big every 10 ms. Positions are all 0,0, as
+# CODESYS writes them: only localId/refLocalId link the elements.
+#   gen_plcopen.sh [STEPS [POUS]]      (default 500 steps, 24 programs)
+set -euo pipefail
+steps=${1:-500}
+pous=${2:-24}
+awk -v steps="$steps" -v pous="$pous" '
+function pou(name, n,    i, id, prev, t, d, c) {
+  print "      <pou name=\"" name "\" pouType=\"program\">"
+  print "        <interface>"
+  print "          <inputVars><variable name=\"Go\"><type><BOOL/></type></variable>"
+  print "            <variable name=\"Skip\"><type><BOOL/></type></variable></inputVars>"
+  print "          <outputVars><variable name=\"Count\"><type><DINT/></type><initialValue><simpleValue value=\"0\"/></initialValue></variable></outputVars>"
+  print "        </interface>"
+  print "        <actions><action name=\"Inc\"><body><ST><xhtml:p><![CDATA[Count := Count + 1;]]></xhtml:p></ST></body></action></actions>"
+  print "        <body>"
+  print "          <SFC>"
+  # ids: step i is 10*i+1, its outgoing transition 10*i+2, divergence 10*i+3, skip transition
+  # 10*i+4, convergence before step i 10*i+5, action block 10*i+6, jump back 10*i+7.
+  for (i = 0; i < n; i++) {
+    id = 10 * i + 1
+    if (i == 0) prev = ""
+    else if (i % 10 == 2 && i >= 2) prev = 10 * i + 5
+    else prev = 10 * (i - 1) + 2
+    print "            <step localId=\"" id "\" name=\"S" i "\"" (i == 0 ? " initialStep=\"true\"" : "") ">"
+    print "              <position x=\"0\" y=\"0\"/>"
+    if (prev != "") print "              <connectionPointIn><connection refLocalId=\"" prev "\"/></connectionPointIn>"
+    print "              <connectionPointOut formalParameter=\"\"/>"
+    print "            </step>"
+    if (i % 5 == 0) {
+      print "            <actionBlock localId=\"" 10 * i + 6 "\"><position x=\"0\" y=\"0\"/>"
+      print "              <connectionPointIn><connection refLocalId=\"" id "\"/></connectionPointIn>"
+      print "              <action localId=\"0\" qualifier=\"N\"><relPosition x=\"0\" y=\"0\"/><reference name=\"Inc\"/></action>"
+      print "            </actionBlock>"
+    }
+    from = id
+    if (i % 10 == 0 && i + 2 < n) {
+      d = 10 * i + 3
+      print "            <selectionDivergence localId=\"" d "\"><position x=\"0\" y=\"0\"/>"
+      print "              <connectionPointIn><connection refLocalId=\"" id "\"/></connectionPointIn>"
+      print "            </selectionDivergence>"
+      from = d
+    }
+    t = 10 * i + 2
+    print "            <transition localId=\"" t "\"><position x=\"0\" y=\"0\"/>"
+    print "              <connectionPointIn><connection refLocalId=\"" from "\"/></connectionPointIn>"
+    print "              <condition><inline name=\"\"><ST><xhtml:p><![CDATA[Go AND NOT Skip]]></xhtml:p></ST></inline></condition>"
+    print "            </transition>"
+    if (i % 10 == 0 && i + 2 < n) {
+      print "            <transition localId=\"" 10 * i + 4 "\"><position x=\"0\" y=\"0\"/>"
+      print "              <connectionPointIn><connection refLocalId=\"" d "\"/></connectionPointIn>"
+      print "              <condition><inline name=\"\"><ST><xhtml:p><![CDATA[Go AND Skip]]></xhtml:p></ST></inline></condition>"
+      print "            </transition>"
+      c = 10 * (i + 2) + 5
+      print "            <selectionConvergence localId=\"" c "\"><position x=\"0\" y=\"0\"/>"
+      print "              <connectionPointIn><connection refLocalId=\"" 10 * (i + 1) + 2 "\"/></connectionPointIn>"
+      print "              <connectionPointIn><connection refLocalId=\"" 10 * i + 4 "\"/></connectionPointIn>"
+      print "            </selectionConvergence>"
+    }
+  }
+  print "            <jumpStep localId=\"" 10 * (n - 1) + 7 "\" targetName=\"S0\"><position x=\"0\" y=\"0\"/>"
+  print "              <connectionPointIn><connection refLocalId=\"" 10 * (n - 1) + 2 "\"/></connectionPointIn>"
+  print "            </jumpStep>"
+  print "          </SFC>"
+  print "        </body>"
+  print "      </pou>"
+}
+BEGIN {
+  print "<?xml version=\"1.0\" encoding=\"utf-8\"?>"
+  print "<project xmlns=\"http://www.plcopen.org/xml/tc6_0201\" xmlns:xhtml=\"http://www.w3.org/1999/xhtml\">"
+  print "  <fileHeader companyName=\"gfec\" productName=\"gen_plcopen.sh\" productVersion=\"1\" creationDateTime=\"2026-12-07T00:00:00\"/>"
+  print "  <types>"
+  print "    <pous>"
+  pou("Big", steps)
+  for (p = 1; p < pous; p++) pou("Small" p, 20)
+  print "    </pous>"
+  print "  </types>"
+  print "  <instances><configurations><configuration name=\"Plant\"><resource name=\"Cpu\">"
+  print "    <task name=\"Main\" interval=\"T#10ms\" priority=\"1\"><pouInstance name=\"big\" typeName=\"Big\"/></task>"
+  print "  </resource></configuration></configurations></instances>"
+  print "</project>"
+}'
