@@ -159,6 +159,7 @@ void name_fields(EngineContext &c) {
     // of every stored qualifier it is held under (with their timers), the previous state of
     // every place an edge is taken of.
     IdMap<model::PlaceId, bool> edged(places.size(), false);
+    bool initial_p0 = false;
     for (const model::Action &a : c.chart.actions) {
       bool q = false, stored = false, sd = false, sl = false;
       for (const model::Association &as : a.associations) {
@@ -170,6 +171,7 @@ void name_fields(EngineContext &c) {
         const model::Qualifier qu = as.qualifier;
         if (qu == model::Qualifier::P || qu == model::Qualifier::P1 || qu == model::Qualifier::P0)
           edged[as.place] = true;
+        initial_p0 = initial_p0 || (qu == model::Qualifier::P0 && places[as.place].initial);
       }
       const std::string name = a.name.str();
       c.action_q.push_back(q ? fields.take("q_" + name) : "");
@@ -181,6 +183,7 @@ void name_fields(EngineContext &c) {
     }
     for (model::PlaceId p : places.ids())
       c.was_active.push_back(edged[p] ? fields.take("was_" + places[p].name.str()) : "");
+    if (initial_p0) c.acted = fields.take("acted");
   }
   if (c.has_context()) c.ctx_field = fields.take("ctx");
   if (c.traced()) {

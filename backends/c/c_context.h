@@ -119,6 +119,9 @@ struct EngineContext {
   IdMap<model::ActionId, std::string> action_sd, action_sd_timer, action_sl, action_sl_timer;
   /// Places holding an action with P, P1 or P0: active at the previous tick's action control.
   IdMap<model::PlaceId, std::string> was_active;
+  /// Set by the first tick's action control, when an initial place holds an action with P0: till
+  /// then that place counts as active before for P0 (left in tick 1, it falls in tick 1).
+  std::string acted;
   // A team machine's (docs/c-engine.md "Team machines"); empty for a machine that is no team.
   std::string agent;         ///< this engine's agent number
   std::string reports;       ///< by agent, the state it last reported (-1: none)

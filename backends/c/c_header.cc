@@ -124,6 +124,7 @@ void state_struct(CodeWriter &w, const EngineContext &c) {
     if (!c.was_active[p].empty())
       rows.emplace_back(fmt::format("bool {};", c.was_active[p]),
                         fmt::format("{} was active at the last tick's action control", c.place(p).name));
+  if (!c.acted.empty()) rows.emplace_back(fmt::format("bool {};", c.acted), "the first tick's action control has run");
   if (c.team()) {
     rows.emplace_back(fmt::format("int32_t {};", c.agent),
                       fmt::format("this engine's agent number (set by {})", c.set_agent_fn));

@@ -126,7 +126,11 @@ void RunWriter::named_actions() {
       case Qualifier::S: set.push_back(x); break;
       case Qualifier::R: reset.push_back(x); break;
       case Qualifier::P1: edge.push_back(fmt::format("({} && !{})", x, was)); break;
-      case Qualifier::P0: edge.push_back(fmt::format("(!{} && {})", x, was)); break;
+      // Initialisation activated an initial place: left in tick 1, it falls in tick 1.
+      case Qualifier::P0:
+        if (c_.place(as.place).initial) edge.push_back(fmt::format("(!{} && ({} || !{}))", x, was, c_.field(c_.acted)));
+        else edge.push_back(fmt::format("(!{} && {})", x, was));
+        break;
       // The stored flag, set once the place's timer reaches the duration (at once for `DS 0`).
       case Qualifier::DS:
         if (kept_as(as) == Keep::Set)
@@ -198,6 +202,7 @@ void RunWriter::named_actions() {
   }
   for (model::PlaceId p : c_.was_active.ids())
     if (!c_.was_active[p].empty()) w_.line("{} = {};", c_.field(c_.was_active[p]), active(p));
+  if (!c_.acted.empty()) w_.line("{} = true;", c_.field(c_.acted));
 }
 
 void RunWriter::hooks_section(const std::string &comment) {

@@ -101,6 +101,7 @@ void init(CodeWriter &w, const EngineContext &c) {
   }
   for (model::PlaceId p : c.was_active.ids())
     if (!c.was_active[p].empty()) w.line("{} = false;", c.field(c.was_active[p]));
+  if (!c.acted.empty()) w.line("{} = false;", c.field(c.acted));
   if (c.traced()) trace_init(w, c);
   if (c.team()) {
     w.line("{} = 0;", c.field(c.agent));

@@ -64,6 +64,7 @@ void Machine::init() {
   av_.assign(n, 0);
   timers_.assign(n, 0);
   acted_active_.assign(n, false);
+  acted_ = false;
   stored_.assign(chart_.actions.size(), StoredFlags{});
   was_q_.assign(chart_.actions.size(), false);
   state_ = PlaceId::none();
@@ -294,7 +295,8 @@ void Machine::named_actions(Frame &f) {
       case Qualifier::S: set_s = set_s || x; break;
       case Qualifier::R: reset = reset || x; break;
       case Qualifier::P1: edge = edge || (x && !was); break;
-      case Qualifier::P0: edge = edge || (!x && was); break;
+      // Initialisation activated an initial place: left in tick 1, it falls in tick 1.
+      case Qualifier::P0: edge = edge || (!x && (was || (!acted_ && chart_.places[as.place].initial))); break;
       case Qualifier::SD:
         set_sd = set_sd || x;
         sd_ticks = as.ticks;
@@ -331,6 +333,7 @@ void Machine::named_actions(Frame &f) {
     was_q_[a] = q;
   }
   for (PlaceId p : chart_.places.ids()) acted_active_[p] = av_[p] > 0;
+  acted_ = true;
 }
 
 void Machine::run_fsm(Frame &f) {

@@ -104,6 +104,9 @@ private:
   /// action's stored flags, one per stored qualifier, and its Q of the previous tick (for the
   /// final run).
   IdMap<model::PlaceId, bool> acted_active_;
+  /// The action control has run once: until then an initial place counts as active before for
+  /// P0 (left in tick 1, it falls in tick 1) while it counts as inactive before for P and P1.
+  bool acted_ = false;
   /// A stored qualifier's flag, and for SD and SL the ticks since it was set (0 in the tick of
   /// the set, saturating as the place timers do).
   struct Stored {

@@ -282,6 +282,18 @@ const char *const kActionCharts[] = {
     "  initial place A runs Inner { k += 1; SD Mark 20ms; }\n  place B runs Inner { k += 1; SL Mark 30ms; }\n"
     "  place C { k += 1; R Mark; }\n"
     "  A -> B when k % 11 == 7;\n  B -> C when k % 11 == 10;\n  C -> A when k % 11 == 0;\n}\n",
+    // An initial place left in tick 1 falls in tick 1 (its P0 runs, the rest does not): in the
+    // sequential form, and in instances, whose first tick follows each start.
+    "sfc Seq {\n  var int k = 0;\n  out int n = 0;\n  out int r = 0;\n  out int f = 0;\n  out int p = 0;\n"
+    "  action Run { n += 1; }\n  action Rise { r += 1; }\n  action Fall { f += 1; }\n  action Kick { p += 1; }\n"
+    "  initial place A { k += 1; N Run; P1 Rise; P0 Fall; P Kick; }\n  place B { k += 1; P0 Fall; }\n"
+    "  A -> B when k % 5 == 0;\n  B -> A when k % 5 == 3;\n}\n",
+    "interface Io { void Hit(int i); bool Go(int i); }\n"
+    "sfc Inner {\n  action Fall { Hit(1); }\n  action Rise { Hit(2); }\n  action Hold { Hit(4); }\n"
+    "  initial place I { P0 Fall; P1 Rise; N Hold; }\n  place J { P0 Fall; }\n"
+    "  I -> J when Go(1);\n  J -> I when Go(2);\n}\n"
+    "sfc Outer {\n  action Mark { Hit(3); }\n  initial place A runs Inner { P0 Mark; }\n"
+    "  place B runs Inner { P0 Mark; }\n  A -> B when Go(3);\n  B -> A when Go(4);\n}\n",
 };
 
 }  // namespace

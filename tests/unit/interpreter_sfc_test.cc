@@ -288,6 +288,51 @@ sfc Acts {
                                "tick 5\nav 1 0 0 0 1 1\nout hold = 4\nout pulse = 2\nout edge = 2\n");
 }
 
+TEST_CASE("interpreter sfc: action control, an initial place left in tick 1 falls in tick 1", "[iec]") {
+  // By hand from docs/iec.md "Action control", "The initial step". Tick 1: A, active from
+  // initialisation, is left: Fall (P0) runs; Hold (N), Rise (P1) and Pulse (P) do not, as A is
+  // not active at the action control (no Q, so no final run either). S stays: Keep (N) and Up
+  // (P1) run, Down (P0) does not. Tick 2: S is left: Down runs, Keep's final run. Tick 3: A is
+  // entered again: Hold, Rise and Pulse run. Tick 4: Hold, Pulse's final run. Tick 5: Hold.
+  auto c = compile_actions(R"(
+sfc InitialLeft {
+  var int k = 0;
+  out int hold = 0;
+  out int rise = 0;
+  out int fall = 0;
+  out int pulse = 0;
+  out int keep = 0;
+  out int up = 0;
+  out int down = 0;
+  action Hold { hold += 1; }
+  action Rise { rise += 1; }
+  action Fall { fall += 1; }
+  action Pulse { pulse += 1; }
+  action Keep { keep += 1; }
+  action Up { up += 1; }
+  action Down { down += 1; }
+  initial place Clock { k += 1; }
+  initial place A { N Hold; P1 Rise; P0 Fall; P Pulse; }
+  initial place S { N Keep; P1 Up; P0 Down; }
+  place B;
+  place T;
+  A -> B when k == 0;
+  S -> T when k == 1;
+  B -> A when k >= 2;
+}
+)");
+  ScriptedEnv env(*c);
+  const std::string outs[] = {
+      "out hold = 0\nout rise = 0\nout fall = 1\nout pulse = 0\nout keep = 1\nout up = 1\nout down = 0\n",
+      "out hold = 0\nout rise = 0\nout fall = 1\nout pulse = 0\nout keep = 2\nout up = 1\nout down = 1\n",
+      "out hold = 1\nout rise = 1\nout fall = 1\nout pulse = 1\nout keep = 2\nout up = 1\nout down = 1\n",
+      "out hold = 2\nout rise = 1\nout fall = 1\nout pulse = 2\nout keep = 2\nout up = 1\nout down = 1\n",
+      "out hold = 3\nout rise = 1\nout fall = 1\nout pulse = 2\nout keep = 2\nout up = 1\nout down = 1\n"};
+  CHECK(run_log(*c, env, 5) == "tick 1\nav 1 0 1 1 0\n" + outs[0] + "tick 2\nav 1 0 0 1 1\n" + outs[1] +
+                                   "tick 3\nav 1 1 0 0 1\n" + outs[2] + "tick 4\nav 1 1 0 0 1\n" + outs[3] +
+                                   "tick 5\nav 1 1 0 0 1\n" + outs[4]);
+}
+
 TEST_CASE("interpreter sfc: action control, S stored across places, R wins over S in one tick", "[iec]") {
   // Tick 1: A sets Lamp. Tick 2: B holds nothing, Lamp stays set. Tick 3: C sets and resets it:
   // the reset wins, Q falls, the final run. Tick 4: nothing (had S won, Lamp would still run).
