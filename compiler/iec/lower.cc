@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <map>
 #include <string>
 
@@ -107,6 +108,55 @@ ast::ValueDecl lower_variable(Variable &v, Diagnostics &diag) {
                fmt::format("located variable '{}' ('AT %...') is not supported yet", v.name.text));
   d.init = std::move(v.init);
   return d;
+}
+
+/// `Step.T` compared with a TIME literal the period does not divide, made exact. The chart
+/// language compares `elapsed(P)` with a duration in whole ticks, the duration rounded up
+/// (docs/language.md §5.3), which is the time comparison for `>=` and `<`; IEC compares times.
+/// With `.T` a whole number of periods, `T > d` is `T >= d` rounded up and `T <= d` is `T < d`
+/// rounded up; `T = d` never holds and `T <> d` always does (docs/iec.md "The scan").
+void exact_step_times(ast::Expr &e, double period_ms) {
+  for (ast::Expr *a : e.args)
+    if (a) exact_step_times(*a, period_ms);
+  if (e.kind != ast::Expr::Kind::Binary || e.args.size() != 2 || !e.args[0] || !e.args[1]) return;
+  auto is_elapsed = [](const ast::Expr &x) { return x.kind == ast::Expr::Kind::Call && x.name.text == "elapsed"; };
+  BinaryOp op = e.binary_op;
+  const ast::Expr *duration = nullptr;
+  if (is_elapsed(*e.args[0]) && e.args[1]->kind == ast::Expr::Kind::Duration) {
+    duration = e.args[1];
+  } else if (is_elapsed(*e.args[1]) && e.args[0]->kind == ast::Expr::Kind::Duration) {
+    duration = e.args[0];
+    // d OP T is T OP' d
+    op = op == BinaryOp::Lt   ? BinaryOp::Gt
+         : op == BinaryOp::Gt ? BinaryOp::Lt
+         : op == BinaryOp::Le ? BinaryOp::Ge
+         : op == BinaryOp::Ge ? BinaryOp::Le
+                              : op;
+  }
+  if (!duration || period_ms <= 0) return;
+  const double periods = duration->duration_ms / period_ms;
+  if (periods == std::floor(periods)) return;  // a whole number of periods: already exact
+  const bool mirrored = duration == e.args[0];
+  switch (op) {
+  case BinaryOp::Gt: e.binary_op = mirrored ? BinaryOp::Le : BinaryOp::Ge; break;
+  case BinaryOp::Le: e.binary_op = mirrored ? BinaryOp::Gt : BinaryOp::Lt; break;
+  case BinaryOp::Eq:
+  case BinaryOp::Ne:
+    e.kind = ast::Expr::Kind::Bool;
+    e.bool_value = op == BinaryOp::Ne;
+    e.args = ast::ExprList();
+    break;
+  default: break;
+  }
+}
+
+template <typename Stmts> void exact_step_times_in(Stmts &block, double period_ms) {
+  for (ast::Stmt &s : block) {
+    if (s.value) exact_step_times(*s.value, period_ms);
+    if (s.call) exact_step_times(*s.call, period_ms);
+    exact_step_times_in(s.then_block, period_ms);
+    exact_step_times_in(s.else_block, period_ms);
+  }
 }
 
 /// The first place `e` reads a time (`Step.T`, a TIME literal), or null.
@@ -251,6 +301,11 @@ bool lower(Pou &&pou, const std::optional<ast::Period> &period, ast::File &file,
     d.range = a.range;
     names.respell_block(a.body);
     d.body = std::move(a.body);
+  }
+  if (period) {
+    for (ast::Transition &t : c.transitions)
+      if (t.condition) exact_step_times(*t.condition, period->ms);
+    for (ast::ActionDecl &a : c.actions) exact_step_times_in(a.body, period->ms);
   }
   // The validator would ask for chart text's `period`; an IEC program gets it from its task.
   if (!period)
