@@ -39,13 +39,13 @@ struct Options {
   std::vector<std::string> inputs;
   std::string output;                     ///< -o; empty: derived from the input's name
   std::vector<std::string> include_dirs;  ///< -I
-  std::string language;                   ///< -x alica|gfec|iec-st|plcopen: the input language; empty: from the extension
-  bool check_only = false;                ///< --check: validate, write nothing
-  bool analyze = false;                   ///< --analyze: every static analysis, a report (analyze_command.h)
-  std::string emit;                       ///< --emit=NAME (backend_registry.h); empty: from what is compiled
-  std::string chart;                      ///< --chart NAME
-  bool line_directives = true;            ///< --no-line-directives turns them off
-  std::string engine = "auto";            ///< --engine=auto|readable|scalable: the C engine's form
+  std::string language;         ///< -x alica|gfec|iec-st|plcopen: the input language; empty: from the extension
+  bool check_only = false;      ///< --check: validate, write nothing
+  bool analyze = false;         ///< --analyze: every static analysis, a report (analyze_command.h)
+  std::string emit;             ///< --emit=NAME (backend_registry.h); empty: from what is compiled
+  std::string chart;            ///< --chart NAME
+  bool line_directives = true;  ///< --no-line-directives turns them off
+  std::string engine = "auto";  ///< --engine=auto|readable|scalable: the C engine's form
   std::vector<BackendOptionsGiven> backend_options;  ///< each back end's own (--context...): backend_registry.h
   WarningOptions warnings;  ///< -W<name>, -Wno-<name>, -Wall, -Werror[=NAME], -Wno-error=NAME, -w
   DiagnosticsFormat diagnostics_format = DiagnosticsFormat::Text;
