@@ -1,6 +1,7 @@
 // The PLCopen reader's entry point and the project around the SFC bodies: the namespace, the
 // POUs and their variables, named actions, and the tasks that give a program its period.
 #include "plcopen/plcopen_reader.h"
+#include "iec/iec_text.h"
 
 #include "escape.h"
 #include "iec/lower.h"
@@ -25,11 +26,7 @@ constexpr std::string_view kNamespaces[] = {"http://www.plcopen.org/xml/tc6.xsd"
 
 bool is_true(std::string_view v) { return v == "true" || v == "1"; }
 
-std::string upper(std::string_view s) {
-  std::string out(s);
-  for (char &c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return out;
-}
+using iec::upper;
 
 }  // namespace
 
