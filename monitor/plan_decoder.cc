@@ -6,24 +6,6 @@ namespace gfec::monitor {
 
 namespace {
 
-std::uint32_t le32(const std::uint8_t *p) {
-  return static_cast<std::uint32_t>(p[0]) | static_cast<std::uint32_t>(p[1]) << 8 |
-         static_cast<std::uint32_t>(p[2]) << 16 | static_cast<std::uint32_t>(p[3]) << 24;
-}
-
-/// A number of 7 bits a byte at data[at]; false if it runs past `end` or past 32 bits.
-bool read_number(const std::uint8_t *data, std::size_t end, std::size_t &at, std::uint32_t &value) {
-  value = 0;
-  for (int shift = 0; shift < 35; shift += 7) {
-    if (at >= end) return false;
-    const std::uint8_t byte = data[at++];
-    if (shift == 28 && (byte & 0x70) != 0) return false;
-    value |= static_cast<std::uint32_t>(byte & 0x7F) << shift;
-    if ((byte & 0x80) == 0) return true;
-  }
-  return false;
-}
-
 int zigzag(std::uint32_t n) { return (n & 1u) != 0 ? -static_cast<int>(n >> 1) - 1 : static_cast<int>(n >> 1); }
 
 /// afp::to_string of the runtime's Status, by its number.
@@ -37,41 +19,16 @@ constexpr std::uint8_t kChartKinds = trace::kFlagFull | trace::kFlagCalls | trac
 PlanTraceDecoder::PlanTraceDecoder(const model::Model &model, const trace::PlanLayout &layout, PlanSink &sink)
     : model_(model), layout_(layout), sink_(sink) {}
 
-void PlanTraceDecoder::feed(const std::uint8_t *data, std::size_t n) {
-  if (refused()) return;
-  buffer_.insert(buffer_.end(), data, data + n);
-  for (;;) {
-    const int r = frame_at_front();
-    if (refused()) return;
-    if (r == 0) break;
-    if (r < 0) skip_byte();
-  }
-  if (at_ > 0) {
-    buffer_.erase(buffer_.begin(), buffer_.begin() + static_cast<std::ptrdiff_t>(at_));
-    at_ = 0;
-  }
-}
-
-void PlanTraceDecoder::skip_byte() {
-  ++at_;
-  ++garbled_;
-  ++garbled_total_;
+std::optional<std::size_t> PlanTraceDecoder::max_payload(std::uint8_t kind) const {
+  // A chart engine's frame (any kind without kFlagPlan) is read only to refuse the stream.
+  if (kind != kPlanKind && (kind & ~kChartKinds) != 0) return std::nullopt;
+  return layout_.max_payload();
 }
 
 int PlanTraceDecoder::frame_at_front() {
-  const std::size_t have = buffer_.size() - at_;
-  const std::uint8_t *p = buffer_.data() + at_;
-  if (have < 1) return 0;
-  if (p[0] != trace::kSync0) return -1;
-  if (have < 2) return 0;
-  if (p[1] != trace::kSync1) return -1;
-  if (have < trace::kHeaderBytes) return 0;
-  const std::size_t length = static_cast<std::size_t>(p[4]) | static_cast<std::size_t>(p[5]) << 8;
-  // A chart engine's frame (any kind without kFlagPlan) is read only to refuse the stream.
-  if (length > layout_.max_payload() || (p[3] != kPlanKind && (p[3] & ~kChartKinds) != 0)) return -1;
-  const std::size_t size = trace::kHeaderBytes + length + trace::kCrcBytes;
-  if (have < size) return 0;
-  if (trace::crc32(p, trace::kHeaderBytes + length) != le32(p + trace::kHeaderBytes + length)) return -1;
+  Frame f;
+  if (const int r = intact_frame_at_front(f); r <= 0) return r;
+  const std::uint8_t *p = f.p;
   if (p[2] != trace::kVersion) {
     refusal_ = fmt::format("the stream's frames are of format version {}; this gfec reads version {}", p[2],
                            static_cast<int>(trace::kVersion));
@@ -99,9 +56,9 @@ int PlanTraceDecoder::frame_at_front() {
   }
   DecodedPlanEvent e;
   e.sequence = le32(p + 10);
-  if (decode(p + trace::kHeaderBytes, length, e)) show(e);
+  if (decode(p + trace::kHeaderBytes, f.length, e)) show(e);
   else ++bad_;  // intact but not this plan's record: said with the next event shown
-  at_ += size;
+  at_ += f.size;
   return 1;
 }
 
@@ -187,16 +144,13 @@ void PlanTraceDecoder::show(DecodedPlanEvent &e) {
 
 void PlanTraceDecoder::finish() {
   if (refused()) return;
-  const std::size_t rest = buffer_.size() - at_;
+  const std::size_t rest = drop_rest();
   if (rest > 0 || garbled_ > 0 || bad_ > 0) {
-    garbled_total_ += rest;
     sink_.lost(0, 0,
                rest > 0       ? fmt::format("the stream ended inside a frame ({} bytes)", rest)
                : garbled_ > 0 ? fmt::format("garbled bytes at the end of the stream ({} skipped)", garbled_)
                               : "a frame at the end of the stream this plan cannot decode");
   }
-  buffer_.clear();
-  at_ = 0;
   garbled_ = 0;
   bad_ = 0;
 }

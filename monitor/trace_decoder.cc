@@ -14,71 +14,24 @@ namespace {
 /// The longest plan frame payload read to refuse it: a plan of several hundred levels.
 constexpr std::size_t kMaxPlanFrameRead = 4096;
 
-std::uint32_t le32(const std::uint8_t *p) {
-  return static_cast<std::uint32_t>(p[0]) | static_cast<std::uint32_t>(p[1]) << 8 |
-         static_cast<std::uint32_t>(p[2]) << 16 | static_cast<std::uint32_t>(p[3]) << 24;
-}
-
-/// A number of 7 bits a byte at data[at]; false if it runs past `end` or past 32 bits.
-bool read_number(const std::uint8_t *data, std::size_t end, std::size_t &at, std::uint32_t &value) {
-  value = 0;
-  for (int shift = 0; shift < 35; shift += 7) {
-    if (at >= end) return false;
-    const std::uint8_t byte = data[at++];
-    if (shift == 28 && (byte & 0x70) != 0) return false;
-    value |= static_cast<std::uint32_t>(byte & 0x7F) << shift;
-    if ((byte & 0x80) == 0) return true;
-  }
-  return false;
-}
-
 }  // namespace
 
 TraceDecoder::TraceDecoder(const model::Model &model, const trace::Layout &layout, RunSink &sink, std::size_t robot)
     : model_(model), layout_(layout), sink_(sink), robot_(robot), values_(layout.values, 0),
       scratch_(layout.values, 0) {}
 
-void TraceDecoder::feed(const std::uint8_t *data, std::size_t n) {
-  if (refused()) return;
-  buffer_.insert(buffer_.end(), data, data + n);
-  for (;;) {
-    const int r = frame_at_front();
-    if (refused()) return;
-    if (r == 0) break;
-    if (r < 0) skip_byte();
-  }
-  // Keep the buffer as long as the unread bytes, not the stream.
-  if (at_ > 0) {
-    buffer_.erase(buffer_.begin(), buffer_.begin() + static_cast<std::ptrdiff_t>(at_));
-    at_ = 0;
-  }
-}
-
-void TraceDecoder::skip_byte() {
-  ++at_;
-  ++garbled_;
-  ++garbled_total_;
+std::optional<std::size_t> TraceDecoder::max_payload(std::uint8_t kind) const {
+  // A plan's frame (afp::LinkTrace) is read only to refuse the stream with a clear message.
+  if (kind == (trace::kFlagFull | trace::kFlagPlan)) return kMaxPlanFrameRead;
+  if ((kind & ~(trace::kFlagFull | trace::kFlagCalls | trace::kFlagCallsCut)) != 0) return std::nullopt;
+  return layout_.max_payload();
 }
 
 int TraceDecoder::frame_at_front() {
-  const std::size_t have = buffer_.size() - at_;
-  const std::uint8_t *p = buffer_.data() + at_;
-  if (have < 1) return 0;
-  if (p[0] != trace::kSync0) return -1;
-  if (have < 2) return 0;
-  if (p[1] != trace::kSync1) return -1;
-  if (have < trace::kHeaderBytes) return 0;
-  const std::size_t length = static_cast<std::size_t>(p[4]) | static_cast<std::size_t>(p[5]) << 8;
-  // A length no frame of this chart has is a garbled header: waiting for that many bytes would
-  // stall the stream.
-  // A plan's frame (afp::LinkTrace) is read only to refuse the stream with a clear message.
+  Frame f;
+  if (const int r = intact_frame_at_front(f); r <= 0) return r;
+  const std::uint8_t *p = f.p;
   const bool plan = p[3] == (trace::kFlagFull | trace::kFlagPlan);
-  if (length > (plan ? kMaxPlanFrameRead : layout_.max_payload()) ||
-      (!plan && (p[3] & ~(trace::kFlagFull | trace::kFlagCalls | trace::kFlagCallsCut)) != 0))
-    return -1;
-  const std::size_t size = trace::kHeaderBytes + length + trace::kCrcBytes;
-  if (have < size) return 0;
-  if (trace::crc32(p, trace::kHeaderBytes + length) != le32(p + trace::kHeaderBytes + length)) return -1;
   // A whole frame, intact: now its version and chart count.
   if (p[2] != trace::kVersion) {
     refusal_ = fmt::format("the stream's frames are of format version {}; this gfec reads version {}", p[2],
@@ -102,8 +55,8 @@ int TraceDecoder::frame_at_front() {
     return 1;
   }
   const std::size_t before = at_;
-  frame(p[3], le32(p + 10), p + trace::kHeaderBytes, length);
-  if (at_ == before) at_ += size;
+  frame(p[3], le32(p + 10), p + trace::kHeaderBytes, f.length);
+  if (at_ == before) at_ += f.size;
   return 1;
 }
 
@@ -240,15 +193,12 @@ void TraceDecoder::show(std::uint32_t tick) {
 
 void TraceDecoder::finish() {
   if (refused()) return;
-  const std::size_t rest = buffer_.size() - at_;
+  const std::size_t rest = drop_rest();
   if (rest > 0 || garbled_ > 0) {
-    garbled_total_ += rest;
     sink_.lost(robot_, 0,
                rest > 0 ? fmt::format("the stream ended inside a frame ({} bytes)", rest)
                         : fmt::format("garbled bytes at the end of the stream ({} skipped)", garbled_));
   }
-  buffer_.clear();
-  at_ = 0;
   garbled_ = 0;
 }
 
