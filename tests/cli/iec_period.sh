@@ -33,6 +33,13 @@ grep -q "missing-period" err.txt || fail "gfec test without --period: $(cat err.
 "$gfec" test notask.st --period 100ms > /dev/null 2> err.txt && fail "gfec test: a file without tests passed"
 grep -q "missing-period" err.txt && fail "gfec test --period 100ms still misses the period: $(cat err.txt)"
 grep -q "declares no test" err.txt || fail "gfec test --period 100ms: $(cat err.txt)"
+# gfec monitor too: with --period it gets as far as the device it cannot open.
+"$gfec" monitor notask.st --log --serial "$work/no-such-tty" < /dev/null > /dev/null 2> err.txt &&
+  fail "gfec monitor: a missing device opened"
+grep -q "missing-period" err.txt || fail "gfec monitor without --period: $(cat err.txt)"
+"$gfec" monitor notask.st --log --period 100ms --serial "$work/no-such-tty" < /dev/null > /dev/null 2> err.txt &&
+  fail "gfec monitor: a missing device opened"
+grep -q "cannot open" err.txt || fail "gfec monitor --period 100ms: $(cat err.txt)"
 
 # Over the TASK's 100 ms: at 50 ms Wait.T is 50 ms in scan n, so `Wait.T = T#250ms` holds in scan
 # 5 alone, `Wait.T > T#250ms` from scan 6, and `Wait.T > T#650ms` (700 ms) moves to Done in scan 14.
