@@ -3,6 +3,7 @@
 // every use of a variable, step or action is respelled as its declaration (`start` reads the
 // `Start` declared); the range stays on what the user wrote.
 #include "iec/lower.h"
+#include "iec/iec_text.h"
 
 #include <fmt/format.h>
 
@@ -15,12 +16,6 @@
 namespace gfec::iec {
 
 namespace {
-
-std::string upper(std::string_view s) {
-  std::string out(s);
-  for (char &c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return out;
-}
 
 /// The chart type of an IEC elementary type gfec reads, or null.
 const char *chart_type(const std::string &iec) {

@@ -1,5 +1,6 @@
 // IEC structured text's row of the input-language table (compiler/input_languages.h).
 #include "iec/lower.h"
+#include "iec/iec_text.h"
 #include "iec/st_reader.h"
 #include "input_languages.h"
 
@@ -7,16 +8,6 @@
 #include <cctype>
 
 namespace gfec::iec {
-
-namespace {
-
-std::string upper(std::string_view s) {
-  std::string out(s);
-  for (char &c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return out;
-}
-
-}  // namespace
 
 const InputLanguage &st_language() {
   static const InputLanguage row{

@@ -3,6 +3,7 @@
 // and program instances. Expressions and statement lists are st_expressions.cc's and
 // st_statements.cc's; what gfec does not read yet is a located "not supported yet" error.
 #include "iec/st_parser.h"
+#include "iec/iec_text.h"
 #include "iec/st_reader.h"
 
 #include <fmt/format.h>
@@ -14,29 +15,10 @@ namespace gfec::iec {
 
 namespace {
 
-std::string upper(std::string_view s) {
-  std::string out(s);
-  for (char &c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return out;
-}
-
 bool qualifier(const std::string &q) {
   for (const char *k : {"N", "R", "S", "L", "D", "P", "P0", "P1", "SD", "DS", "SL"})
     if (q == k) return true;
   return false;
-}
-
-ast::ExprPtr clone(const ast::Expr &e) {
-  auto c = std::make_unique<ast::Expr>();
-  c->kind = e.kind;
-  c->unary_op = e.unary_op;
-  c->binary_op = e.binary_op;
-  c->bool_value = e.bool_value;
-  c->range = e.range;
-  c->duration_ms = e.duration_ms;
-  c->name = e.name;
-  for (const ast::Expr *a : e.args) c->args.push_back(clone(*a));
-  return c;
 }
 
 }  // namespace

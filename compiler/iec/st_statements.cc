@@ -3,25 +3,13 @@
 // because ST expressions as gfec reads them have no side effects). Loops, calls and the rest are
 // located "not supported yet" errors (docs/iec.md "What is not read yet").
 #include "iec/st_parser.h"
+#include "iec/iec_text.h"
 
 #include <fmt/format.h>
 
 namespace gfec::iec {
 
 namespace {
-
-ast::ExprPtr clone(const ast::Expr &e) {
-  auto c = std::make_unique<ast::Expr>();
-  c->kind = e.kind;
-  c->unary_op = e.unary_op;
-  c->binary_op = e.binary_op;
-  c->bool_value = e.bool_value;
-  c->range = e.range;
-  c->duration_ms = e.duration_ms;
-  c->name = e.name;
-  for (const ast::Expr *a : e.args) c->args.push_back(clone(*a));
-  return c;
-}
 
 ast::ExprPtr made_binary(ast::ExprPtr a, ast::ExprPtr b, BinaryOp op, const SourceRange &at) {
   auto e = std::make_unique<ast::Expr>();

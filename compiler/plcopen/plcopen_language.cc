@@ -9,7 +9,7 @@ const InputLanguage &language() {
       "plcopen",
       "PLCopen TC6 XML (IEC 61131-3 SFC)",
       {{".xml", "a PLCopen project"}},
-      is_plcopen,  // .xml is everyone's: the root element says whether it is PLCopen's
+      is_xml_document,  // .xml is everyone's: the reader says when the root is not PLCopen's
       read_plcopen_program,
       false,  // its ranges point into XML
       "",     // XML has no line comments: diagnostic test cases keep their expected output beside

@@ -1,6 +1,7 @@
 // The PLCopen reader's entry point and the project around the SFC bodies: the namespace, the
 // POUs and their variables, named actions, and the tasks that give a program its period.
 #include "plcopen/plcopen_reader.h"
+#include "iec/iec_text.h"
 
 #include "escape.h"
 #include "iec/lower.h"
@@ -25,11 +26,7 @@ constexpr std::string_view kNamespaces[] = {"http://www.plcopen.org/xml/tc6.xsd"
 
 bool is_true(std::string_view v) { return v == "true" || v == "1"; }
 
-std::string upper(std::string_view s) {
-  std::string out(s);
-  for (char &c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return out;
-}
+using iec::upper;
 
 }  // namespace
 
@@ -267,35 +264,13 @@ void Reader::read_tasks(const pugi::xml_node &instances, iec::Project &project) 
 
 // ---------------------------------------------------------------- the entry point
 
-bool is_plcopen(std::string_view text) {
-  // A UTF-16 file (some Windows tools save one): its start, narrowed, so that the reader can say
-  // it is PLCopen in the wrong encoding rather than chart text.
-  if (text.size() >= 2 && ((text[0] == '\xFF' && text[1] == '\xFE') || (text[0] == '\xFE' && text[1] == '\xFF'))) {
-    std::string narrow;
-    for (std::size_t k = 2; k < text.size() && k < 8192; ++k)
-      if (text[k] != '\0') narrow += text[k];
-    return is_plcopen(narrow);
-  }
-  // The root element's start tag: past the BOM, the XML declaration, comments and a doctype.
+bool is_xml_document(std::string_view text) {
+  // A UTF-16 file (some Windows tools save one): the reader says it is in the wrong encoding.
+  if (text.size() >= 2 && ((text[0] == '\xFF' && text[1] == '\xFE') || (text[0] == '\xFE' && text[1] == '\xFF')))
+    return true;
   std::size_t i = text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;
-  for (int guard = 0; guard < 1000 && i < text.size(); ++guard) {
-    i = text.find('<', i);
-    if (i == std::string_view::npos) return false;
-    if (text.compare(i, 2, "<?") == 0 || text.compare(i, 2, "<!") == 0) {
-      std::size_t end = text.compare(i, 4, "<!--") == 0 ? text.find("-->", i) : text.find('>', i);
-      if (end == std::string_view::npos) return false;
-      i = end + 1;
-      continue;
-    }
-    std::size_t end = text.find('>', i);
-    std::string_view tag = text.substr(i + 1, end == std::string_view::npos ? std::string_view::npos : end - i - 1);
-    std::size_t name_end = tag.find_first_of(" \t\r\n/");
-    std::string_view name = tag.substr(0, name_end);
-    if (auto colon = name.find(':'); colon != std::string_view::npos) name = name.substr(colon + 1);
-    // Any PLCopen namespace: the reader then says whether it is one gfec reads.
-    return name == "project" && tag.find("www.plcopen.org/xml/") != std::string_view::npos;
-  }
-  return false;
+  while (i < text.size() && (text[i] == ' ' || text[i] == '\t' || text[i] == '\r' || text[i] == '\n')) ++i;
+  return i < text.size() && text[i] == '<';
 }
 
 void read_plcopen_program(const std::string &main_path, std::string text, const LoadOptions &options,

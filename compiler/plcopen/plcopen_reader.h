@@ -20,8 +20,10 @@ namespace gfec::plcopen {
 /// PLCopen's row of the input-language table (plcopen_language.cc).
 const InputLanguage &language();
 
-/// Whether `text` is a PLCopen project: its root element is `project` in a PLCopen namespace.
-bool is_plcopen(std::string_view text);
+/// Whether `text` is an XML document (it begins with markup). Every XML document of a .xml file
+/// goes to the PLCopen reader, which says in one located error when its root is not a PLCopen
+/// `project` (a Beremiz configuration, an SVG) — rather than reading it as chart text.
+bool is_xml_document(std::string_view text);
 
 /// The row's reader: the main file's projects' programs as charts.
 void read_plcopen_program(const std::string &main_path, std::string text, const LoadOptions &options,

@@ -2,6 +2,7 @@
 // associations of action blocks. The graph is read from localId/refLocalId alone; positions say
 // nothing (CODESYS and TwinCAT write every one as 0,0). docs/iec.md "PLCopen XML" has the rules.
 #include "escape.h"
+#include "iec/iec_text.h"
 #include "plcopen/iec_duration.h"
 #include "plcopen/reader_context.h"
 
@@ -43,11 +44,7 @@ struct Node {
   bool used = false;              ///< an InVariable read as a condition
 };
 
-std::string upper(std::string_view s) {
-  std::string out(s);
-  for (char &c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return out;
-}
+using iec::upper;
 
 /// Graphs deeper than this (a divergence inside a divergence inside ...) are not SFCs a person
 /// draws; the bound keeps a hostile file from exhausting the stack.

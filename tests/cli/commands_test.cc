@@ -116,9 +116,10 @@ TEST_CASE("commands: -x is read by gfec run and gfec test as by gfec") {
   for (const char *command : {"run", "test"}) {
     Ran bad = run_gfec({command, "-x", "cobol", "warn.sfc"});
     CHECK(bad.code == 2);
-    CHECK(bad.err.find("-x: cobol not in {alica,gfec}") != std::string::npos);
+    CHECK(bad.err.find("-x: cobol not in {alica,gfec,iec-st,plcopen}") != std::string::npos);
   }
-  CHECK(run_gfec({"-x", "cobol", "warn.sfc"}).err.find("-x: cobol not in {alica,gfec}") != std::string::npos);
+  CHECK(run_gfec({"-x", "cobol", "warn.sfc"}).err.find("-x: cobol not in {alica,gfec,iec-st,plcopen}") !=
+        std::string::npos);
 }
 
 TEST_CASE("commands: -W, -Werror, -Wno-NAME and -w act in gfec run and gfec test as in gfec") {

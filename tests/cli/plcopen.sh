@@ -95,6 +95,32 @@ grep -q 'void Big_run(Big \*' default.h || fail "big.xml: the default is not Big
 printf 'tick, Go, Skip\n1, 1, 0\n40, 1, 1\n41, 1, 0\n' > big.csv
 "$gfec" run big.xml --inputs big.csv --observable --ticks 60 > big_run.txt
 grep -q '^out Count = 1[0-9]$' big_run.txt || fail "big.xml: Big's Count does not count"
+# Big in structured text (gen_plcopen.sh --st, MatIEC's input in docs/performance.md (g)) is the
+# program the XML says: the same log, activations included, over a trace round the whole loop.
+"$dir/gen_plcopen.sh" 500 1 > big1.xml
+"$dir/gen_plcopen.sh" --st 500 > Big.st
+"$dir/gen_plcopen.sh" --trace > loop.csv
+"$gfec" run big1.xml --inputs loop.csv --observable > xml_loop.txt
+"$gfec" run Big.st --inputs loop.csv --observable > st_loop.txt
+cmp -s xml_loop.txt st_loop.txt || fail "Big.st and big1.xml run differently: diff $(diff xml_loop.txt st_loop.txt | head -3)"
+awk '$1 == "av" && NF == 501 && $NF == 1 { last = 1 } END { exit !last }' st_loop.txt ||
+  fail "Big.st: the loop trace never reaches the last step S499"
+
+# XML that is not PLCopen, as a PLC project's folder holds it (a Beremiz project's beremiz.xml, a
+# Maven POM): one located error naming the root or the namespace, exit 1, never chart text's
+# syntax errors.
+printf '<?xml version="1.0" encoding="utf-8"?>\n<BeremizRoot URI_location="LOCAL://">\n  <TargetType/>\n</BeremizRoot>\n' > beremiz.xml
+status=0
+"$gfec" --check beremiz.xml 2> beremiz.err || status=$?
+[ "$status" = 1 ] || fail "beremiz.xml: exit $status, not 1"
+[ "$(grep -c 'error:' beremiz.err)" = 1 ] || fail "beremiz.xml: not one error: $(cat beremiz.err)"
+grep -q '^beremiz.xml:2:1: error: the root element is <BeremizRoot>' beremiz.err || fail "beremiz.xml: $(cat beremiz.err)"
+printf '<project xmlns="http://maven.apache.org/POM/4.0.0">\n</project>\n' > pom.xml
+status=0
+"$gfec" --check pom.xml 2> pom.err || status=$?
+[ "$status" = 1 ] || fail "pom.xml: exit $status, not 1"
+grep -q "^pom.xml:1:[0-9]*: error: the namespace 'http://maven.apache.org/POM/4.0.0' is not one gfec reads" pom.err ||
+  fail "pom.xml: $(cat pom.err)"
 
 # Truncations and garbage of every sample: exit 0 or 1 with located messages, never a crash, exit 2
 # or a hang.

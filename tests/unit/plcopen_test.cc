@@ -86,13 +86,16 @@ TEST_CASE("plcopen: TIME literals and XML durations", "[plcopen]") {
   CHECK_FALSE(duration_ms("P1Y"));
 }
 
-TEST_CASE("plcopen: a .xml file is PLCopen's when its root is a PLCopen <project>", "[plcopen]") {
-  CHECK(
-      is_plcopen("<?xml version=\"1.0\"?>\n<!-- export -->\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0201\">"));
-  CHECK(is_plcopen("\xEF\xBB\xBF<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\"/>"));
-  CHECK(is_plcopen("<ppx:project xmlns:ppx=\"http://www.plcopen.org/xml/tc6.xsd\">"));
-  CHECK_FALSE(is_plcopen("<?xml version=\"1.0\"?><project xmlns=\"http://maven.apache.org/POM/4.0.0\">"));
-  CHECK_FALSE(is_plcopen("<svg xmlns=\"http://www.plcopen.org/xml/tc6_0201\">"));
-  CHECK_FALSE(is_plcopen("sfc Blink { initial place A; }"));
-  CHECK_FALSE(is_plcopen(""));
+TEST_CASE("plcopen: every XML document of a .xml file goes to the PLCopen reader", "[plcopen]") {
+  CHECK(is_xml_document(
+      "<?xml version=\"1.0\"?>\n<!-- export -->\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0201\">"));
+  CHECK(is_xml_document("\xEF\xBB\xBF<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\"/>"));
+  CHECK(is_xml_document(" \r\n<ppx:project xmlns:ppx=\"http://www.plcopen.org/xml/tc6.xsd\">"));
+  CHECK(is_xml_document("\xFF\xFE<\0p\0"));
+  // Not PLCopen, but XML: the reader names the root or the namespace (tests/cli/plcopen.sh).
+  CHECK(is_xml_document("<?xml version=\"1.0\"?><project xmlns=\"http://maven.apache.org/POM/4.0.0\">"));
+  CHECK(is_xml_document("<BeremizRoot URI_location=\"LOCAL://\"/>"));
+  CHECK_FALSE(is_xml_document("sfc Blink { initial place A; when a < b }"));
+  CHECK_FALSE(is_xml_document("// <project>\nsfc A { initial place a; }"));
+  CHECK_FALSE(is_xml_document(""));
 }

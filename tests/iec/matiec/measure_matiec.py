@@ -8,7 +8,8 @@ function and all it calls (MatIEC: config_run__, gfec: NAME_run), divided by the
 sizeof the program's instance (MatIEC: the PROGRAM's struct; gfec: the engine's struct). The
 ratios are MatIEC's figure over the better of gfec's two forms.
 
-Usage: measure_matiec.py --matiec DIR --gfec GFEC FILE.st...      (needs valgrind)
+Usage: measure_matiec.py [--matiec DIR] --gfec GFEC FILE.st...      (needs valgrind)
+Without --matiec, gfec's two forms alone (scripts/bench.sh iec, where MatIEC is not built).
 A measurement for people (docs/performance.md), not a test.
 """
 
@@ -103,6 +104,20 @@ def callgrind(exe, toggle, work):
     return total / scans, size
 
 
+def measure_matiec(st_path, matiec, name, inputs, rows, ncols, work):
+    subprocess.run([os.path.join(matiec, "iec2c"), "-I", os.path.join(matiec, "lib"), "-T", work,
+                    os.path.abspath(st_path)], check=True, capture_output=True)
+    sets = "\n".join("            RES__INST.%s.value = trace[i][%d];" % (n.upper(), k)
+                     for k, (n, _) in enumerate(inputs))
+    with open(os.path.join(work, "main.c"), "w") as f:
+        f.write(MATIEC_MAIN % {"type": name.upper(), "ncols": ncols, "rows": table(rows, ncols),
+                               "sets": sets, "repeat": REPEAT})
+    sources = sorted(p for p in glob.glob(os.path.join(work, "*.c")) if not p.endswith("POUS.c"))
+    subprocess.run(["gcc", "-O2", "-w", "-I", os.path.join(matiec, "lib", "C"), "-I", work] + sources +
+                   ["-o", os.path.join(work, "matiec")], check=True, capture_output=True)
+    return callgrind(os.path.join(work, "matiec"), "config_run__", work)
+
+
 def measure(st_path, matiec, gfec):
     base = st_path[:-3]
     with open(st_path) as f:
@@ -111,17 +126,8 @@ def measure(st_path, matiec, gfec):
     ncols = max(1, len(inputs))
     results = {}
     with tempfile.TemporaryDirectory() as work:
-        subprocess.run([os.path.join(matiec, "iec2c"), "-I", os.path.join(matiec, "lib"), "-T", work,
-                        os.path.abspath(st_path)], check=True, capture_output=True)
-        sets = "\n".join("            RES__INST.%s.value = trace[i][%d];" % (n.upper(), k)
-                         for k, (n, _) in enumerate(inputs))
-        with open(os.path.join(work, "main.c"), "w") as f:
-            f.write(MATIEC_MAIN % {"type": name.upper(), "ncols": ncols, "rows": table(rows, ncols),
-                                   "sets": sets, "repeat": REPEAT})
-        sources = sorted(p for p in glob.glob(os.path.join(work, "*.c")) if not p.endswith("POUS.c"))
-        subprocess.run(["gcc", "-O2", "-w", "-I", os.path.join(matiec, "lib", "C"), "-I", work] + sources +
-                       ["-o", os.path.join(work, "matiec")], check=True, capture_output=True)
-        results["MatIEC"] = callgrind(os.path.join(work, "matiec"), "config_run__", work)
+        if matiec:
+            results["MatIEC"] = measure_matiec(st_path, matiec, name, inputs, rows, ncols, work)
         sets = "\n".join("            m.%s = trace[i][%d];" % (n, k) for k, (n, _) in enumerate(inputs))
         with open(os.path.join(work, "gmain.c"), "w") as f:
             f.write(GFEC_MAIN % {"type": name, "ncols": ncols, "rows": table(rows, ncols), "sets": sets,
@@ -138,7 +144,7 @@ def measure(st_path, matiec, gfec):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--matiec", required=True)
+    ap.add_argument("--matiec", help="a MatIEC source tree with iec2c built; without it, gfec alone")
     ap.add_argument("--gfec", required=True)
     ap.add_argument("files", nargs="+")
     args = ap.parse_args()

@@ -5,7 +5,51 @@
 # fifth holds action Count with N; task Main runs Big every 10 ms. Positions are all 0,0, as
 # CODESYS writes them: only localId/refLocalId link the elements.
 #   gen_plcopen.sh [STEPS [POUS]]      (default 500 steps, 24 programs)
+# The same program Big in IEC structured text, for readers that take no XML (MatIEC: the
+# comparison of docs/performance.md (g)), and an input trace that walks it round its loop:
+#   gen_plcopen.sh --st [STEPS]        program Big alone, run by task Main every 10 ms; the
+#                                      resource and instance are res and inst, the names
+#                                      tests/iec/matiec/measure_matiec.py drives
+#   gen_plcopen.sh --trace [ROWS]      columns Go, Skip (default 1000 rows: once round the loop
+#                                      of 500 steps): Go falls every seventh scan, Skip is set
+#                                      every third
 set -euo pipefail
+case ${1:-} in
+  --st)
+    awk -v n="${2:-500}" '
+    BEGIN {
+      print "PROGRAM Big"
+      print "  VAR_INPUT"
+      print "    Go : BOOL;"
+      print "    Skip : BOOL;"
+      print "  END_VAR"
+      print "  VAR_OUTPUT"
+      print "    Count : DINT := 0;"
+      print "  END_VAR"
+      for (i = 0; i < n; i++)
+        print "  " (i == 0 ? "INITIAL_STEP" : "STEP") " S" i " :" (i % 5 == 0 ? " Inc(N);" : "") " END_STEP"
+      # In the order of the XML: a step'"'"'s own transition, then the skip of its divergence.
+      for (i = 0; i < n; i++) {
+        print "  TRANSITION FROM S" i " TO S" (i + 1 < n ? i + 1 : 0) " := Go AND NOT Skip; END_TRANSITION"
+        if (i % 10 == 0 && i + 2 < n) print "  TRANSITION FROM S" i " TO S" i + 2 " := Go AND Skip; END_TRANSITION"
+      }
+      print "  ACTION Inc:"
+      print "    Count := Count + 1;"
+      print "  END_ACTION"
+      print "END_PROGRAM"
+      print ""
+      print "CONFIGURATION Plant"
+      print "  RESOURCE res ON PLC"
+      print "    TASK Main(INTERVAL := T#10ms, PRIORITY := 1);"
+      print "    PROGRAM inst WITH Main : Big;"
+      print "  END_RESOURCE"
+      print "END_CONFIGURATION"
+    }'
+    exit 0 ;;
+  --trace)
+    awk -v rows="${2:-1000}" 'BEGIN { print "Go,Skip"; for (r = 0; r < rows; r++) print (r % 7 != 6) "," (r % 3 == 0) }'
+    exit 0 ;;
+esac
 steps=${1:-500}
 pous=${2:-24}
 awk -v steps="$steps" -v pous="$pous" '
