@@ -6,6 +6,7 @@
 #include "ast.h"
 #include "source.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,9 @@ struct InputLanguage;
 struct LoadOptions {
   std::vector<std::string> include_dirs;    ///< -I, searched after the importing file's folder
   const InputLanguage *language = nullptr;  ///< -x; null: the main file's own (input_language_of)
+  /// --period in milliseconds: the scan period of every IEC program read, in place of its task's
+  /// INTERVAL (docs/iec.md "Time"); a language without tasks refuses it (InputLanguage::reads_period).
+  std::optional<double> period_ms;
 };
 
 /// An element of a file that is not chart text (an ALICA state, transition, plan...): where it

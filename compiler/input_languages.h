@@ -53,6 +53,10 @@ struct InputLanguage {
   /// diagnostics from index `first` on what only the reader knows (which ALICA element a
   /// location is in); those before `first` have been annotated already. Null: nothing to add.
   void (*annotate)(Diagnostics &diag, const LoadResult &loaded, std::size_t first) = nullptr;
+  /// Whether the reader takes LoadOptions::period_ms (an IEC program's period comes from its
+  /// task, which the command line may override); false: --period is an error, as chart text
+  /// declares its own `period` and an ALICA plan has none.
+  bool reads_period = false;
 
   /// The entry of `file_types` for `path`'s extension, or null.
   const FileType *file_type(const std::string &path) const;

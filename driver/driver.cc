@@ -28,6 +28,7 @@ pipeline::FrontEndOptions front_end_options(const Options &o) {
   f.language = find_input_language(o.language);  // -x was checked against the same table
   f.warnings = o.warnings;
   f.error_limit = o.error_limit;
+  f.period_ms = o.period_ms;
   return f;
 }
 

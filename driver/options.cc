@@ -10,6 +10,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
+#include <cmath>
 #include <sstream>
 
 namespace gfec {
@@ -192,9 +194,49 @@ std::string FrontEndFlags::apply(Options &o) const {
     if (std::string why = apply_warning_flag(w, o.warnings); !why.empty()) return why;
   for (const auto &flag : f)
     if (std::string why = apply_f_flag(flag, o); !why.empty()) return why;
+  if (!period.empty()) {
+    o.period_ms = parse_period(period);
+    if (!o.period_ms)
+      return fmt::format("--period '{}' is not a duration above 0: write it as 10ms, 1.5s or T#10ms",
+                         text::printable(period));
+  }
   // gcc: -w inhibits every warning, whatever -W flags came with it.
   if (no_warnings) o.warnings.enabled.fill(false);
   return {};
+}
+
+std::optional<double> parse_period(std::string_view s) {
+  auto lower = [](char c) { return static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c); };
+  auto starts = [&](std::string_view prefix) {
+    if (s.size() < prefix.size()) return false;
+    for (std::size_t i = 0; i < prefix.size(); ++i)
+      if (lower(s[i]) != prefix[i]) return false;
+    return true;
+  };
+  // IEC's TIME literal: parts from days down to milliseconds, `_` between digits, any case.
+  const bool iec = starts("t#") || starts("time#");
+  if (iec) s.remove_prefix(starts("t#") ? 2 : 5);
+  static const std::pair<std::string_view, double> kUnits[] = {
+      {"ms", 1}, {"d", 86400000}, {"h", 3600000}, {"m", 60000}, {"s", 1000}};
+  double ms = 0;
+  std::size_t i = 0, parts = 0;
+  while (i < s.size()) {
+    std::string number;
+    while (i < s.size() && (std::isdigit(static_cast<unsigned char>(s[i])) || s[i] == '.' || (iec && s[i] == '_')))
+      if (s[i++] != '_') number += s[i - 1];
+    if (number.empty() || number.front() == '.' || number.back() == '.' ||
+        std::count(number.begin(), number.end(), '.') > 1)
+      return std::nullopt;
+    std::string unit;
+    while (i < s.size() && std::isalpha(static_cast<unsigned char>(s[i]))) unit += lower(s[i++]);
+    const auto u = std::find_if(std::begin(kUnits), std::end(kUnits), [&](const auto &k) { return k.first == unit; });
+    // The chart language writes one number in ms or s (docs/language.md); IEC any of its units.
+    if (u == std::end(kUnits) || (!iec && (parts > 0 || (unit != "ms" && unit != "s")))) return std::nullopt;
+    ms += std::stod(number) * u->second;
+    ++parts;
+  }
+  if (parts == 0 || !std::isfinite(ms) || ms <= 0) return std::nullopt;
+  return ms;
 }
 
 void add_front_end_options(CLI::App &app, Options &o, FrontEndFlags &flags) {
@@ -208,6 +250,10 @@ void add_front_end_options(CLI::App &app, Options &o, FrontEndFlags &flags) {
       ->type_name("NAME")
       ->allow_extra_args(false);
   app.add_flag("-w", flags.no_warnings, "Inhibit every warning (as gcc)");
+  app.add_option("--period", flags.period,
+                 "An IEC program's scan period (10ms, 1.5s, T#10ms), over its TASK's INTERVAL; chart text "
+                 "declares its own")
+      ->type_name("DURATION");
   app.add_option("-f", flags.f,
                  "-fdiagnostics-format=text|json|sarif-stderr|sarif-file, -fmax-errors=N, -fdiagnostics-color=WHEN, "
                  "-fdiagnostics-parseable-fixits, -fno-diagnostics-show-line-numbers")

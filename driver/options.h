@@ -7,6 +7,7 @@
 #include <iosfwd>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace CLI {
@@ -54,6 +55,7 @@ struct Options {
   bool line_numbers = true;           ///< -fno-diagnostics-show-line-numbers drops gcc 12's gutter
   bool parseable_fixits = false;      ///< -fdiagnostics-parseable-fixits
   DependencyOptions deps;             ///< -MD, -MF, -MP, -MT
+  std::optional<double> period_ms;    ///< --period: an IEC program's scan period, over its TASK's
 };
 
 /// The result of reading argv: options to run with, or an exit code and text to print now
@@ -76,9 +78,14 @@ struct FrontEndFlags {
   std::vector<std::string> warnings;  ///< -W<value>
   std::vector<std::string> f;         ///< -f<value>
   bool no_warnings = false;           ///< -w
+  std::string period;                 ///< --period as written
   /// Applies them to `o` (-w last, as gcc); returns "" or the usage error.
   std::string apply(Options &o) const;
 };
+
+/// --period's value in milliseconds: a duration of the chart language (`10ms`, `1.5s`) or an IEC
+/// TIME literal (`T#10ms`, `TIME#1s500ms`, `t#2s`); nullopt when it is neither or not above 0.
+std::optional<double> parse_period(std::string_view written);
 
 /// The options every command takes alike, so that `gfec run` and `gfec test` read a chart as gfec
 /// does: -I and -x into `o`, and -W..., -w and -f... (diagnostics, -fmax-errors) into `flags`

@@ -308,15 +308,20 @@ bool lower(Pou &&pou, const std::optional<ast::Period> &period, ast::File &file,
       diag.error(*at, ErrorKind::MissingPeriod,
                  fmt::format("program '{}' reads a time, but no TASK with an INTERVAL runs it", c.name.text))
           .note(c.name.range, fmt::format("run it in a task of a CONFIGURATION: 'TASK t (INTERVAL := T#10ms); "
-                                          "PROGRAM i WITH t : {};'",
+                                          "PROGRAM i WITH t : {};', or give the period on the command line: "
+                                          "'--period 10ms'",
                                           c.name.text));
   return true;
 }
 
-std::size_t lower(Project &&project, ast::File &file, Diagnostics &diag) {
+std::size_t lower(Project &&project, ast::File &file, Diagnostics &diag, std::optional<double> period_ms) {
   std::size_t added = 0;
   for (Pou &p : project.pous) {
-    std::optional<ast::Period> period = p.kind == PouKind::Program ? period_of(project, p, diag) : std::nullopt;
+    std::optional<ast::Period> period;
+    // --period wins: the tasks' INTERVALs, even disagreeing ones, are not asked. Its range is
+    // the program's name, the place a diagnostic about the period can point at.
+    if (p.kind == PouKind::Program)
+      period = period_ms ? ast::Period{*period_ms, p.name.range} : period_of(project, p, diag);
     if (lower(std::move(p), period, file, diag)) ++added;
   }
   return added;

@@ -24,7 +24,9 @@ std::optional<ast::Period> period_of(const Project &project, const Pou &pou, Dia
 bool lower(Pou &&pou, const std::optional<ast::Period> &period, ast::File &file, Diagnostics &diag);
 
 /// Lowers every PROGRAM of `project` into `file` (each with the period of the task that runs
-/// it), and reports every other POU kind as not supported yet. Returns how many charts it added.
-std::size_t lower(Project &&project, ast::File &file, Diagnostics &diag);
+/// it, or `period_ms` when given: --period, which wins over every task), and reports every other
+/// POU kind as not supported yet. Returns how many charts it added.
+std::size_t lower(Project &&project, ast::File &file, Diagnostics &diag,
+                  std::optional<double> period_ms = std::nullopt);
 
 }  // namespace gfec::iec

@@ -20,11 +20,12 @@ const InputLanguage &st_language() {
       false,  // its ranges are ST: back ends print expressions from the model, in chart syntax
       "//",   // IEC's third edition comment, which the reader accepts: diagnostic tests use it
       nullptr,
+      true,  // --period overrides the TASK's INTERVAL
   };
   return row;
 }
 
-void read_st_program(const std::string &main_path, std::string text, const LoadOptions &, const FileSystem &,
+void read_st_program(const std::string &main_path, std::string text, const LoadOptions &options, const FileSystem &,
                      SourceManager &sources, Diagnostics &diag, LoadResult &result) {
   result.paths.push_back(main_path);
   result.program.files.push_back(std::make_unique<ast::File>());
@@ -47,7 +48,7 @@ void read_st_program(const std::string &main_path, std::string text, const LoadO
           run.push_back(p.name.text);
   }
   if (programs > 1 && run.size() == 1) result.default_chart = std::string(run.front());
-  lower(std::move(project), file, diag);
+  lower(std::move(project), file, diag, options.period_ms);
 }
 
 }  // namespace gfec::iec

@@ -99,8 +99,10 @@ bool Compilation::front_end(const std::string &path, const FileSystem &fs, scena
 
 bool Compilation::load_and_validate(const std::string &path, const FileSystem &fs, scenario::Suite *tests) {
   analysis_pending_ = false;
-  LoadOptions load{options.include_dirs};
+  LoadOptions load;
+  load.include_dirs = options.include_dirs;
   load.language = options.language;
+  load.period_ms = options.period_ms;
   loaded = load_program(path, load, fs, sources, diag);
   if (tests && !loaded.program.files.empty() && loaded.program.files.front())
     for (const auto &t : loaded.program.files.front()->tests) tests->written.push_back(t.name);

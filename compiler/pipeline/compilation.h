@@ -12,6 +12,7 @@
 #include "pipeline/kind.h"
 #include "source.h"
 
+#include <optional>
 #include <string>
 
 namespace gfec {
@@ -28,6 +29,7 @@ struct FrontEndOptions {
   const InputLanguage *language = nullptr;  ///< -x (input_languages.h); null: the file's own
   WarningOptions warnings;                  ///< -W...
   std::size_t error_limit = 50;             ///< -fmax-errors=N
+  std::optional<double> period_ms;          ///< --period: an IEC program's scan period (LoadOptions)
   bool analyze = true;                      ///< run the static analyses whose warnings are on (docs/verification.md)
   /// Keep the whole syntax tree in `loaded.program` after validation (a language server reads
   /// it); by default it is dropped, bodies first, so a large chart is never held twice.

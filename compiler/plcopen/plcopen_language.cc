@@ -14,6 +14,7 @@ const InputLanguage &language() {
       false,  // its ranges point into XML
       "",     // XML has no line comments: diagnostic test cases keep their expected output beside
       nullptr,
+      true,  // --period overrides the TASK's INTERVAL
   };
   return row;
 }

@@ -273,8 +273,8 @@ bool is_xml_document(std::string_view text) {
   return i < text.size() && text[i] == '<';
 }
 
-void read_plcopen_program(const std::string &main_path, std::string text, const LoadOptions &, const FileSystem &,
-                          SourceManager &sources, Diagnostics &diag, LoadResult &result) {
+void read_plcopen_program(const std::string &main_path, std::string text, const LoadOptions &options,
+                          const FileSystem &, SourceManager &sources, Diagnostics &diag, LoadResult &result) {
   result.paths.push_back(main_path);
   result.program.files.push_back(std::make_unique<ast::File>());
   ast::File &file = *result.program.files.back();
@@ -327,7 +327,7 @@ void read_plcopen_program(const std::string &main_path, std::string text, const 
             std::find(run.begin(), run.end(), std::string(pou.name.text)) == run.end())
           run.emplace_back(pou.name.text);
   if (run.size() == 1) result.default_chart = run.front();
-  iec::lower(std::move(project), file, diag);
+  iec::lower(std::move(project), file, diag, options.period_ms);
 }
 
 }  // namespace gfec::plcopen

@@ -88,7 +88,7 @@ fi
 
 # The completion, driven as bash does: COMP_WORDS/COMP_CWORD in, COMPREPLY out.
 mkdir "$work/charts" && cd "$work/charts"
-touch blink.sfc cleanup.fsm board.iface notes.txt blink.test plan.pml report.xml
+touch blink.sfc mixer.st cleanup.fsm board.iface notes.txt blink.test plan.pml report.xml
 complete_words() {
   PATH="$root/bin:$PATH" bash -c '
     shopt -s extglob
@@ -128,6 +128,9 @@ expect --inputs -- gfec run blink.sfc --in
 expect --html -- gfec run blink.sfc --ht
 expect --agents -- gfec run blink.sfc --ag
 expect alica -- gfec run -x a
+expect --period -- gfec run mixer.st --per
+expect T#10ms -- gfec --period T
+expect mixer.st -- gfec run m
 expect -Wall -- gfec run blink.sfc -Wal
 expect blink.test -- gfec test ""
 expect blink.sfc blink.test board.iface -- gfec fmt ""

@@ -202,3 +202,22 @@ TEST_CASE("options: a misspelt option gets a did-you-mean") {
   CHECK(far.exit_code == 2);
   CHECK(far.message.find("did you mean") == std::string::npos);
 }
+
+TEST_CASE("options: --period reads a chart duration or an IEC TIME literal, and nothing else") {
+  CHECK(parse_period("10ms") == 10.0);
+  CHECK(parse_period("1.5s") == 1500.0);
+  CHECK(parse_period("T#10ms") == 10.0);
+  CHECK(parse_period("time#1s500ms") == 1500.0);
+  CHECK(parse_period("T#1m2s") == 62000.0);
+  CHECK(parse_period("T#1_000ms") == 1000.0);
+  for (const char *bad :
+       {"", "10", "0ms", "-5ms", "T#", "T#0s", "10m", "1s500ms", "1.5.0s", ".5s", "10ms ", "1_000ms", "T#10x", "T#-1s"})
+    CHECK_FALSE(parse_period(bad));
+  ParsedCommandLine cl = parse({"x.st", "--period", "T#20ms"});
+  REQUIRE_FALSE(cl.exit_now);
+  CHECK(cl.options.period_ms == 20.0);
+  cl = parse({"x.st", "--period", "20"});
+  CHECK(cl.exit_now);
+  CHECK(cl.exit_code == 2);
+  CHECK(cl.message.find("--period '20' is not a duration above 0") != std::string::npos);
+}

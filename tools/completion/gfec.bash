@@ -14,10 +14,11 @@ _gfec() {
   prev=${COMP_WORDS[COMP_CWORD-1]}
   local gfec=${COMP_WORDS[0]}
 
-  # Options every command takes (the front end's): -I DIR, -x LANG.
+  # Options every command takes (the front end's): -I DIR, -x LANG, --period DURATION.
   case $prev in
     -I) COMPREPLY=($(compgen -d -- "$cur")); return ;;
     -x) COMPREPLY=($(compgen -W 'alica gfec iec-st plcopen' -- "$cur")); return ;;
+    --period) COMPREPLY=($(compgen -W '10ms 100ms 1s T#10ms T#100ms' -- "$cur")); return ;;
   esac
 
   # -W<name> and -f<option> complete as the compiler's, below.
@@ -28,10 +29,10 @@ _gfec() {
       --ticks|--chart|--agents) return ;;
     esac
     if [[ $cur == -* ]]; then
-      COMPREPLY=($(compgen -W '--inputs --ticks --agents --chart --html -I -x --observable --hooks --check-post
-        -W -w -f --help' -- "$cur"))
+      COMPREPLY=($(compgen -W '--inputs --ticks --agents --chart --html -I -x --period --observable --hooks
+        --check-post -W -w -f --help' -- "$cur"))
     else
-      COMPREPLY=($(compgen -f -X '!*.@(sfc|fsm|pml|xml)' -- "$cur")); compopt -o plusdirs 2>/dev/null
+      COMPREPLY=($(compgen -f -X '!*.@(sfc|fsm|pml|xml|st|ST)' -- "$cur")); compopt -o plusdirs 2>/dev/null
     fi
     return
   fi
@@ -44,8 +45,8 @@ _gfec() {
       --tcp|--silence|--robots|--chart) return ;;
     esac
     if [[ $cur == -* ]]; then
-      COMPREPLY=($(compgen -W '--log --http --http-remote --serial --baud --tcp --robots --silence --chart -I -x -W -w
-        -f --help' -- "$cur"))
+      COMPREPLY=($(compgen -W '--log --http --http-remote --serial --baud --tcp --robots --silence --chart -I -x
+        --period -W -w -f --help' -- "$cur"))
     else
       COMPREPLY=($(compgen -f -X '!*.@(sfc|fsm|plan|pml|xml)' -- "$cur")); compopt -o plusdirs 2>/dev/null
     fi
@@ -59,7 +60,7 @@ _gfec() {
     esac
     if [[ $cur == -* ]]; then
       COMPREPLY=($(compgen -W '--junit --filter --engine-only --reference-only -j --jobs -v --verbose -I -x
-        -W -w -f --help' -- "$cur"))
+        --period -W -w -f --help' -- "$cur"))
     else
       COMPREPLY=($(compgen -f -X '!*.test' -- "$cur")); compopt -o plusdirs 2>/dev/null
     fi
@@ -97,7 +98,7 @@ _gfec() {
         -fdiagnostics-parseable-fixits -fno-diagnostics-show-line-numbers -fmax-errors=' -- "$cur"))
       compopt -o nospace 2>/dev/null; return ;;
     -*)
-      COMPREPLY=($(compgen -W '-o -I -x --check --analyze --emit= --chart --engine= --no-line-directives
+      COMPREPLY=($(compgen -W '-o -I -x --period --check --analyze --emit= --chart --engine= --no-line-directives
         --context --context-type= --names --trace --trace= --trace-full-every -W -w -Wall -Werror -f -MD -MMD -MF -MP -MT --help --version' -- "$cur"))
       [[ ${COMPREPLY[0]} == *= ]] && compopt -o nospace 2>/dev/null
       return ;;
@@ -105,7 +106,7 @@ _gfec() {
   if [[ $COMP_CWORD -eq 1 ]]; then
     COMPREPLY=($(compgen -W 'run test fmt lsp monitor' -- "$cur"))
   fi
-  COMPREPLY+=($(compgen -f -X '!*.@(sfc|fsm|plan|iface|toolbox|pml|xml)' -- "$cur"))
+  COMPREPLY+=($(compgen -f -X '!*.@(sfc|fsm|plan|iface|toolbox|pml|xml|st|ST)' -- "$cur"))
   compopt -o plusdirs 2>/dev/null
 }
 
