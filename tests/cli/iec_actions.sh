@@ -8,71 +8,18 @@
 # Usage: iec_actions.sh GFEC SOURCE_DIR
 set -euo pipefail
 gfec=$1
+caller=$(cd "$(dirname "$0")" && pwd)/engine_caller.py
 dir=$2/tests/iec
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
 cd "$work"
-cat > actions_main.c <<'C'
-#include "engine.h"
-#include <stdio.h>
-int main(void)
-{
-    /* tick, Go, Level: the rows of actions.csv, which hold until the next row's tick */
-    static const int rows[][3] = {{1, 0, 0}, {2, 1, 0}, {6, 1, 30}, {8, 0, 30}};
-    Cycle m;
-    int tick;
-    int row = 0;
-    Cycle_init(&m);
-    for (tick = 1; tick <= 14; ++tick) {
-        int p;
-        if (row < 4 && rows[row][0] == tick) {
-            m.Go = rows[row][1] != 0;
-            m.Level = rows[row][2];
-            ++row;
-        }
-        Cycle_run(&m);
-        printf("tick %d\nav", tick);
-        for (p = 0; p < Cycle_PLACE_COUNT; ++p) printf(" %u", (unsigned)Cycle_activation(&m, p));
-        printf("\nout n = %d\nout p = %d\nout e = %d\nout s = %d\nout l = %d\nout d = %d\n", (int)m.n, (int)m.p,
-               (int)m.e, (int)m.s, (int)m.l, (int)m.d);
-    }
-    return 0;
-}
-C
-cat > stored_main.c <<'C'
-#include "engine.h"
-#include <stdio.h>
-int main(void)
-{
-    /* tick, Go, Stop: the rows of stored.csv, which hold until the next row's tick */
-    static const int rows[][3] = {{1, 0, 0}, {2, 1, 0}, {3, 0, 0}, {4, 0, 1}, {5, 0, 0},
-                                  {7, 1, 0}, {8, 0, 0}, {13, 0, 1}, {14, 0, 0}};
-    Press m;
-    int tick;
-    int row = 0;
-    Press_init(&m);
-    for (tick = 1; tick <= 15; ++tick) {
-        int p;
-        if (row < 9 && rows[row][0] == tick) {
-            m.Go = rows[row][1] != 0;
-            m.Stop = rows[row][2] != 0;
-            ++row;
-        }
-        Press_run(&m);
-        printf("tick %d\nav", tick);
-        for (p = 0; p < Press_PLACE_COUNT; ++p) printf(" %u", (unsigned)Press_activation(&m, p));
-        printf("\nout horn = %d\nout fan = %d\nout lamp = %d\nout beep = %d\n", (int)m.horn, (int)m.fan,
-               (int)m.lamp, (int)m.beep);
-    }
-    return 0;
-}
-C
 
 # check NAME TICKS: the interpreter, both engine forms and the round trip of tests/iec/NAME.sfc.
 check() {
-  local name=$1 ticks=$2
+  local name=$1 ticks=$2 chart
+  chart=$(grep -m1 -o '^sfc  *[A-Za-z_0-9]*' "$dir/$name.sfc" | awk '{print $2}')
   "$gfec" run "$dir/$name.sfc" --inputs "$dir/$name.csv" --observable --ticks "$ticks" > "$name.run"
   diff -u "$dir/$name.expected" "$name.run" || fail "gfec run differs from $name.expected"
   rm -rf direct back
@@ -81,6 +28,7 @@ check() {
   "$gfec" --emit=chart direct/$name.sfc -o back/$name.sfc
   for form in readable scalable; do
     "$gfec" "$dir/$name.sfc" --engine=$form -o engine.c
+    python3 "$caller" engine.h "$dir/$name.csv" "$chart" "$ticks" > ${name}_main.c
     cc -std=c99 -Wall -Wextra -Wpedantic -Werror ${name}_main.c engine.c -o run || fail "the $form engine of $name does not build"
     ./run > engine.txt
     diff -u "$dir/$name.expected" engine.txt || fail "the $form engine of $name differs from gfec run"

@@ -7,6 +7,7 @@
 # Usage: iec_io.sh GFEC SOURCE_DIR
 set -euo pipefail
 gfec=$1
+caller=$(cd "$(dirname "$0")" && pwd)/engine_caller.py
 dir=$2/tests/iec
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -18,33 +19,7 @@ diff -u "$dir/mixer.expected" "$work/run.txt" || fail "gfec run differs from mix
 # The engine's caller: sets the inputs before each tick (as the trace's rows do), runs, prints.
 cd "$work"
 "$gfec" "$dir/mixer.sfc" -o engine.c
-cat > main.c <<'C'
-#include "engine.h"
-#include <stdio.h>
-int main(void)
-{
-    /* tick, Start, Level: the rows of mixer.csv, which hold until the next row's tick */
-    static const int rows[][3] = {{1, 0, 5}, {2, 1, 5}, {3, 0, 50}, {4, 0, 90}, {7, 0, 10}};
-    Mixer m;
-    int tick;
-    int row = 0;
-    Mixer_init(&m);
-    for (tick = 1; tick <= 7; ++tick) {
-        int p;
-        if (row < 5 && rows[row][0] == tick) {
-            m.Start = rows[row][1] != 0;
-            m.Level = rows[row][2];
-            ++row;
-        }
-        Mixer_run(&m);
-        printf("tick %d\nav", tick);
-        for (p = 0; p < Mixer_PLACE_COUNT; ++p) printf(" %u", (unsigned)Mixer_activation(&m, p));
-        printf("\nout Valve = %s\nout Batches = %d\nout Mix = %.9g\nout Flow = %.17g\n", m.Valve ? "true" : "false",
-               (int)m.Batches, (double)m.Mix, m.Flow);
-    }
-    return 0;
-}
-C
+python3 "$caller" engine.h "$dir/mixer.csv" Mixer "$(grep -c '^tick ' "$dir/mixer.expected")" > main.c
 for form in readable scalable; do
   "$gfec" "$dir/mixer.sfc" --engine=$form -o engine.c
   cc -std=c99 -Wall -Wextra -Wpedantic -Werror main.c engine.c -o run || fail "the $form engine does not build"

@@ -8,41 +8,13 @@
 # Usage: iec_st.sh GFEC SOURCE_DIR
 set -euo pipefail
 gfec=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
+caller=$(cd "$(dirname "$0")" && pwd)/engine_caller.py
 dir=$(cd "$2" && pwd)/tests/iec/st
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
 command -v python3 > /dev/null || fail "python3 is needed (scripts/install-deps.sh installs it)"
 
-# A caller for the engine: the trace's rows as C data, each input field set before the scan, each
-# output printed after it as `gfec run --observable` prints it.
-make_main() { # HEADER TRACE CHART
-  python3 - "$1" "$2" "$3" <<'PY'
-import csv, re, sys
-header, trace, chart = sys.argv[1:]
-fields = re.findall(r'^\s+(\w+)\s+(\w+);\s+/\* (in|out) \2:', open(header).read(), re.M)
-ins = [(t, n) for t, n, r in fields if r == 'in']
-outs = [(t, n) for t, n, r in fields if r == 'out']
-rows = list(csv.reader(open(trace)))
-cols = rows[0]
-print('#include "engine.h"\n#include <stdio.h>\nint main(void) {')
-print(f'  static const double rows[][{max(1, len(cols))}] = {{' +
-      ', '.join('{' + ', '.join(r) + '}' for r in rows[1:]) + '};')
-print(f'  {chart} m; int tick, p;\n  {chart}_init(&m);')
-print(f'  for (tick = 1; tick <= {len(rows) - 1}; ++tick) {{')
-for t, n in ins:
-    print(f'    m.{n} = ({t})rows[tick - 1][{cols.index(n)}];')
-print(f'    {chart}_run(&m);\n    printf("tick %d\\nav", tick);')
-print(f'    for (p = 0; p < {chart}_PLACE_COUNT; ++p) printf(" %u", (unsigned){chart}_activation(&m, p));')
-print('    printf("\\n");')
-for t, n in outs:
-    if t == 'bool': print(f'    printf("out {n} = %s\\n", m.{n} ? "true" : "false");')
-    elif t == 'float': print(f'    printf("out {n} = %.9g\\n", (double)m.{n});')
-    elif t == 'double': print(f'    printf("out {n} = %.17g\\n", m.{n});')
-    else: print(f'    printf("out {n} = %ld\\n", (long)m.{n});')
-print('  }\n  return 0;\n}')
-PY
-}
 
 cd "$work"
 for st in "$dir"/*.st; do
@@ -61,7 +33,7 @@ for st in "$dir"/*.st; do
   "$gfec" -x iec-st --check program.txt || fail "$name: -x iec-st"
   for form in readable scalable; do
     "$gfec" "$st" --engine=$form -o engine.c
-    make_main engine.h "$dir/$name.csv" "$chart" > main.c
+    python3 "$caller" engine.h "$dir/$name.csv" "$chart" > main.c
     cc -std=c99 -Wall -Wextra -Wpedantic -Werror main.c engine.c -o run || fail "$name: the $form engine does not build"
     ./run > engine.txt
     diff -u "$dir/$name.expected" engine.txt || fail "$name: the $form engine differs from gfec run"

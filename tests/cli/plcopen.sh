@@ -9,37 +9,13 @@
 # Usage: plcopen.sh GFEC SOURCE_DIR
 set -euo pipefail
 gfec=$1
+caller=$(cd "$(dirname "$0")" && pwd)/engine_caller.py
 dir=$2/tests/iec/plcopen
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
 cd "$work"
 
-cat > main.c <<'C'
-#include "engine.h"
-#include <stdio.h>
-int main(void)
-{
-    /* tick, Start, Level: the rows of mixer.csv, which hold until the next row's tick */
-    static const int rows[][3] = {{1, 0, 5}, {2, 1, 5}, {3, 0, 50}, {4, 0, 90}, {7, 0, 10}, {10, 1, 90}, {11, 0, 90}};
-    Mixer m;
-    int tick, row = 0;
-    Mixer_init(&m);
-    for (tick = 1; tick <= 14; ++tick) {
-        int p;
-        if (row < 7 && rows[row][0] == tick) {
-            m.Start = rows[row][1] != 0;
-            m.Level = rows[row][2];
-            ++row;
-        }
-        Mixer_run(&m);
-        printf("tick %d\nav", tick);
-        for (p = 0; p < Mixer_PLACE_COUNT; ++p) printf(" %u", (unsigned)Mixer_activation(&m, p));
-        printf("\nout Valve = %s\nout Batches = %d\n", m.Valve ? "true" : "false", (int)m.Batches);
-    }
-    return 0;
-}
-C
 
 for producer in beremiz openplc codesys twincat tc6_old; do
   src=$dir/$producer.xml
@@ -56,6 +32,7 @@ for producer in beremiz openplc codesys twincat tc6_old; do
   diff -u "$dir/mixer.expected" outs.txt || fail "$producer: gfec run's outputs differ from mixer.expected"
   for form in readable scalable; do
     "$gfec" "$src" --engine=$form -o engine.c 2> /dev/null
+    python3 "$caller" engine.h "$dir/mixer.csv" Mixer 14 > main.c
     cc -std=c99 -Wall -Wextra -Wpedantic -Werror main.c engine.c -o run || fail "$producer: the $form engine does not build"
     ./run > engine.txt
     diff -u run.txt engine.txt || fail "$producer: the $form engine differs from gfec run"

@@ -1,0 +1,51 @@
+#!/usr/bin/env python3
+"""A caller for an imported program's C engine (docs/iec.md "The C engine of an imported program"):
+prints main.c, which feeds the input trace to the engine and prints what `gfec run --observable`
+prints after each scan: `tick N`, the `av` line and one `out NAME = VALUE` line per output.
+
+Usage: engine_caller.py HEADER TRACE CHART [TICKS]
+HEADER is the engine's header (its fields say `/* in NAME: ... */` and `/* out NAME: ... */`).
+TRACE is gfec run's input trace (docs/verification.md "The input trace"): `#` comments, a header
+row of input names, and either one row per scan or, with a `tick` column, rows that hold until the
+next row's tick. TICKS: how many scans (default: the rows, or the last row's tick).
+"""
+import csv
+import re
+import sys
+
+header, trace, chart = sys.argv[1:4]
+fields = re.findall(r'^\s+(\w+)\s+(\w+);\s+/\* (in|out) \2:', open(header).read(), re.M)
+ins = [(t, n) for t, n, r in fields if r == 'in']
+outs = [(t, n) for t, n, r in fields if r == 'out']
+lines = [l for l in open(trace) if l.strip() and not l.lstrip().startswith('#')]
+rows = [[c.strip() for c in r] for r in csv.reader(lines)]
+cols, rows = rows[0], rows[1:]
+sparse = 'tick' in cols
+if not sparse:  # one row per scan: give each its tick
+    cols = ['tick'] + cols
+    rows = [[str(i + 1)] + r for i, r in enumerate(rows)]
+ticks = int(sys.argv[4]) if len(sys.argv) > 4 else int(rows[-1][0])
+
+print('#include "engine.h"\n#include <stdio.h>\nint main(void) {')
+print(f'  static const double rows[][{len(cols)}] = {{' + ', '.join('{' + ', '.join(r) + '}' for r in rows) + '};')
+print(f'  {chart} m;\n  int tick, p, row = 0;\n  {chart}_init(&m);')
+print(f'  for (tick = 1; tick <= {ticks}; ++tick) {{')
+print(f'    if (row < {len(rows)} && (int)rows[row][0] == tick) {{')
+for t, n in ins:
+    if n in cols:
+        cast = '0 != ' if t == 'bool' else f'({t})'
+        print(f'      m.{n} = {cast}rows[row][{cols.index(n)}];')
+print('      ++row;\n    }')
+print(f'    {chart}_run(&m);\n    printf("tick %d\\nav", tick);')
+print(f'    for (p = 0; p < {chart}_PLACE_COUNT; ++p) printf(" %u", (unsigned){chart}_activation(&m, p));')
+print('    printf("\\n");')
+for t, n in outs:
+    if t == 'bool':
+        print(f'    printf("out {n} = %s\\n", m.{n} ? "true" : "false");')
+    elif t == 'float':
+        print(f'    printf("out {n} = %.9g\\n", (double)m.{n});')
+    elif t == 'double':
+        print(f'    printf("out {n} = %.17g\\n", m.{n});')
+    else:
+        print(f'    printf("out {n} = %ld\\n", (long)m.{n});')
+print('  }\n  return 0;\n}')
