@@ -26,6 +26,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <thread>
@@ -99,6 +100,31 @@ std::string source_name(const MonitorOptions &o) {
   return !o.serial.empty() ? "serial " + o.serial : !o.tcp.empty() ? "tcp " + o.tcp : "stdin";
 }
 
+/// Reads the stream on `fd` to its end into `decoder`, whose sink is `sink`: a refused stream is
+/// reported at `refused_at` and ends the page; otherwise the page is told how the stream ended and
+/// `counts` (the decoder's figures) is printed. Returns the command's exit code.
+int read_to_end(const MonitorOptions &o, int fd, double silence, monitor::RunSink &sink, monitor::FrameStream &decoder,
+                live::LiveRecording *page, DiagnosticReport &report, const pipeline::Compilation &c,
+                const SourceRange &refused_at, const std::function<std::string()> &counts, std::ostream &err) {
+  const std::string read_error = monitor::read_stream(
+      fd, silence, sink, [&](const unsigned char *data, std::size_t n) { decoder.feed(data, n); },
+      [&] { return decoder.refused(); });
+  if (fd != 0) ::close(fd);
+  decoder.finish();
+  if (decoder.refused()) {
+    report_refusal(report, o.input, c, refused_at, decoder.refusal());
+    if (page) page->ended(decoder.refusal());
+    return kExitInputError;
+  }
+  if (page) page->ended(read_error.empty() ? "the end of the stream" : "reading the trace: " + read_error);
+  err << "gfec monitor: " << counts() << '\n';
+  if (!read_error.empty()) {
+    report.tool_error(o.input, "reading the trace: " + read_error, false);
+    return kExitUsageOrIo;
+  }
+  return kExitOk;
+}
+
 /// The source's file descriptor (0 for stdin), or -1 with `why` set.
 int open_source(const MonitorOptions &o, std::string &why) {
   if (!o.serial.empty()) return monitor::open_serial(o.serial, o.baud, why);
@@ -136,26 +162,15 @@ int monitor_plan(const MonitorOptions &o, const pipeline::Compilation &c, model:
   monitor::PlanTraceDecoder decoder(c.model, layout, sink);
   const double silence = page && !o.silence_given ? 1.0 : o.silence;
   auto read = [&]() -> int {
-    const std::string read_error = monitor::read_stream(
-        fd, silence, sink, [&](const unsigned char *data, std::size_t n) { decoder.feed(data, n); },
-        [&] { return decoder.refused(); });
-    if (fd != 0) ::close(fd);
-    decoder.finish();
-    if (decoder.refused()) {
-      report_refusal(report, o.input, c, c.model.plans.at(plan).range, decoder.refusal());
-      if (page) page->ended(decoder.refusal());
-      return kExitInputError;
-    }
-    if (page) page->ended(read_error.empty() ? "the end of the stream" : "reading the trace: " + read_error);
-    err << fmt::format("gfec monitor: {} frame{} decoded ({} event{}), {} lost, {} byte{} garbled\n",
-                       decoder.frames_shown(), decoder.frames_shown() == 1 ? "" : "s", decoder.events_shown(),
-                       decoder.events_shown() == 1 ? "" : "s", decoder.events_lost(), decoder.bytes_garbled(),
-                       decoder.bytes_garbled() == 1 ? "" : "s");
-    if (!read_error.empty()) {
-      report.tool_error(o.input, "reading the trace: " + read_error, false);
-      return kExitUsageOrIo;
-    }
-    return kExitOk;
+    return read_to_end(
+        o, fd, silence, sink, decoder, page.get(), report, c, c.model.plans.at(plan).range,
+        [&] {
+          return fmt::format("{} frame{} decoded ({} event{}), {} lost, {} byte{} garbled", decoder.frames_shown(),
+                             decoder.frames_shown() == 1 ? "" : "s", decoder.events_shown(),
+                             decoder.events_shown() == 1 ? "" : "s", decoder.events_lost(), decoder.bytes_garbled(),
+                             decoder.bytes_garbled() == 1 ? "" : "s");
+        },
+        err);
   };
   if (!page) return read();
   return serve_live_page(
@@ -205,24 +220,14 @@ int monitor_with(const MonitorOptions &o, DiagnosticReport &report, std::ostream
   // The page's silence banner needs silence reported: after a second unless --silence says.
   const double silence = page && !o.silence_given ? 1.0 : o.silence;
   auto read = [&]() -> int {
-    const std::string read_error = monitor::read_stream(
-        fd, silence, sink, [&](const unsigned char *data, std::size_t n) { decoder.feed(data, n); },
-        [&] { return decoder.refused(); });
-    if (fd != 0) ::close(fd);
-    decoder.finish();
-    if (decoder.refused()) {
-      report_refusal(report, o.input, c, c.model.charts.at(chart).name_range, decoder.refusal());
-      return kExitInputError;
-    }
-    if (page) page->ended(read_error.empty() ? "the end of the stream" : "reading the trace: " + read_error);
-    err << fmt::format("gfec monitor: {} tick{} decoded, {} lost, {} byte{} garbled\n", decoder.ticks_shown(),
-                       decoder.ticks_shown() == 1 ? "" : "s", decoder.ticks_lost(), decoder.bytes_garbled(),
-                       decoder.bytes_garbled() == 1 ? "" : "s");
-    if (!read_error.empty()) {
-      report.tool_error(o.input, "reading the trace: " + read_error, false);
-      return kExitUsageOrIo;
-    }
-    return kExitOk;
+    return read_to_end(
+        o, fd, silence, sink, decoder, page.get(), report, c, c.model.charts.at(chart).name_range,
+        [&] {
+          return fmt::format("{} tick{} decoded, {} lost, {} byte{} garbled", decoder.ticks_shown(),
+                             decoder.ticks_shown() == 1 ? "" : "s", decoder.ticks_lost(), decoder.bytes_garbled(),
+                             decoder.bytes_garbled() == 1 ? "" : "s");
+        },
+        err);
   };
   if (!page) return read();
   if (o.robots > 1) {

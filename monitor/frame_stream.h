@@ -24,6 +24,8 @@ public:
 
   /// The next bytes of the stream: every frame they complete is taken, in order.
   void feed(const std::uint8_t *data, std::size_t n);
+  /// The stream ended: bytes of an unfinished frame are reported lost.
+  virtual void finish() = 0;
 
   /// A frame of another chart, plan or format arrived: the stream was refused and every later
   /// byte is ignored.
@@ -52,8 +54,8 @@ protected:
   std::size_t drop_rest();
 
   std::vector<std::uint8_t> buffer_;
-  std::size_t at_ = 0;            ///< where the unread bytes of buffer_ begin
-  std::uint64_t garbled_ = 0;     ///< bytes skipped since the decoder last handed something on
+  std::size_t at_ = 0;         ///< where the unread bytes of buffer_ begin
+  std::uint64_t garbled_ = 0;  ///< bytes skipped since the decoder last handed something on
   std::uint64_t garbled_total_ = 0;
   std::string refusal_;
 };

@@ -20,8 +20,7 @@ class PlanTraceDecoder : public FrameStream {
 public:
   PlanTraceDecoder(const model::Model &model, const trace::PlanLayout &layout, PlanSink &sink);
 
-  /// The stream ended: bytes of an unfinished frame are reported lost.
-  void finish();
+  void finish() override;
 
   /// Frames handed on, and of them the events (the others are LinkTrace::heartbeat's state).
   std::uint64_t frames_shown() const { return shown_; }

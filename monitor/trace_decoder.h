@@ -20,8 +20,7 @@ public:
   /// `model`: the chart's, for the names and types of the calls a frame may carry.
   TraceDecoder(const model::Model &model, const trace::Layout &layout, RunSink &sink, std::size_t robot = 0);
 
-  /// The stream ended: bytes of an unfinished frame are reported lost.
-  void finish();
+  void finish() override;
 
   /// A refused stream (FrameStream::refused) was also reported to the sink (RunSink::ended).
 
