@@ -290,10 +290,16 @@ std::string mutate(const std::string &text, unsigned seed) {
 
 std::string check_one(const std::string &input, const std::string &name) {
   MemoryFileSystem fs;
-  const bool chart_text = name.size() < 3 || name.compare(name.size() - 3, 3, ".st") != 0;
+  // The reader is chosen by the saved input's extension: IEC structured text, PLCopen XML, or
+  // chart text (which may hold a second file after a line %%%).
+  auto ends_with = [&](const char *ext) {
+    const std::size_t n = std::char_traits<char>::length(ext);
+    return name.size() >= n && name.compare(name.size() - n, n, ext) == 0;
+  };
+  const bool chart_text = !ends_with(".st") && !ends_with(".xml");
   const std::string separator = "\n%%%\n";
   auto split = chart_text ? input.find(separator) : std::string::npos;
-  const std::string main = chart_text ? "fuzz.sfc" : "fuzz.st";
+  const std::string main = chart_text ? "fuzz.sfc" : ends_with(".st") ? "fuzz.st" : "fuzz.xml";
   fs.add(main, input.substr(0, split));
   if (split != std::string::npos) fs.add("b.sfc", input.substr(split + separator.size()));
 

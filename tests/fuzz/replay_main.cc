@@ -8,7 +8,8 @@
 //
 // With --mutate N each input is also checked in N pseudo-random mutations (cut short, spans
 // deleted or repeated, bytes replaced): the inputs of a language the libFuzzer target does not
-// read (IEC structured text, by the file's extension; ctest: fuzz_iec_st).
+// read (IEC structured text and PLCopen XML, by the file's extension; ctest: fuzz_iec_st,
+// fuzz_plcopen).
 #include "fuzz_support.h"
 #include "lsp_session.h"
 
