@@ -37,7 +37,8 @@ function liveStream() {
 /// harness (tests/run/cpp/run_plan.cc, as tests/cli/monitor_plan.sh builds it) over a script,
 /// its afp::LinkTrace frames kept apart, with what each says as docs/live.md "The plan frame" lays
 /// it out: the plan time, whether it is an event (not a heartbeat), the running actor after it.
-/// And the events the harness's observer logged. Needs AFP_RUNTIME (the runtime library).
+/// And the events the harness's observer logged. Needs AFP_RUNTIME (the runtime library) and,
+/// when that library was built with the sanitizers, AFP_LINK_FLAGS (-fsanitize=...).
 function planStream() {
   const src = process.env.GFEC_SOURCE_DIR, gfec = process.env.GFEC;
   const plan = path.join(src, 'samples/wall_follow.plan');
@@ -48,7 +49,10 @@ function planStream() {
     execFileSync(process.env.CXX || 'c++', ['-std=c++17', '-I', work, '-I', runDir, '-I', path.join(src, 'runtime/include'),
                                            '-DPLAN_HEADER="wall.hpp"', '-DPLAN_FACTORY=make_WallFollow', '-DPLAN_ENV=Carbot',
                                            path.join(runDir, 'run_plan.cc'), path.join(work, 'wall.cpp'),
-                                           process.env.AFP_RUNTIME, '-pthread', '-o', harness]);
+                                           process.env.AFP_RUNTIME, '-pthread',
+                                           ...(process.env.AFP_LINK_FLAGS || '').split(' ').filter(Boolean),
+                                           '-o', harness],
+                 { maxBuffer: 64 << 20 });
     // The lane closes, a wall is found and followed (long enough for heartbeats), a touch, escape.
     const script = '\n\nlane=25\nwall=15\n\nset:walldist=40\nblocked\n\n\ntouch\n' + '\n'.repeat(40) +
                    'wall=-20\n\nescape\n';
