@@ -131,6 +131,9 @@ struct ValueDecl {
   TypeName type;
   Name name;
   ExprPtr init;  ///< may be null for `var`
+  /// An IEC located variable's direct address (`%IX0.0`), kept for --emit=json and chart text's
+  /// comment; empty in chart text, which has no located variables (docs/iec.md).
+  std::string_view address;
   SourceRange range;
 };
 

@@ -176,6 +176,7 @@ struct Var {
   VarRole role = VarRole::Local;
   std::optional<Expr> init;  ///< absent: zero
   SourceRange range;
+  std::string address;  ///< an imported IEC located variable's direct address (`%IX0.0`), or empty
 };
 
 enum class Terminal : std::uint8_t { None, Success, Failure };

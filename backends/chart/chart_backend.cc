@@ -56,9 +56,12 @@ void interfaces(CodeWriter &w, const model::Model &m, const std::set<model::Char
 }
 
 void value(CodeWriter &w, const model::Model &m, model::ChartId chart, const char *keyword, model::Type type,
-           const std::string &name, const model::Expr *init) {
-  if (init) w.line("{} {} {} = {};", keyword, model::type_name(type), name, chart_text::expr(m, chart, *init));
-  else w.line("{} {} {};", keyword, model::type_name(type), name);
+           const std::string &name, const model::Expr *init, const std::string &address = {}) {
+  // An IEC located variable keeps its address as a comment: chart text has no addresses, and the
+  // engine's field is the variable's name either way (docs/iec.md "Located variables").
+  const std::string at = address.empty() ? "" : "  // AT " + address;
+  if (init) w.line("{} {} {} = {};{}", keyword, model::type_name(type), name, chart_text::expr(m, chart, *init), at);
+  else w.line("{} {} {};{}", keyword, model::type_name(type), name, at);
 }
 
 void block(CodeWriter &w, const model::Model &m, model::ChartId chart, const char *keyword,
@@ -121,7 +124,7 @@ void chart(CodeWriter &w, const model::Model &m, model::ChartId index) {
           v.role == model::VarRole::In    ? "in"
           : v.role == model::VarRole::Out ? "out"
                                           : "var",
-          v.type, v.name, v.init ? &*v.init : nullptr);
+          v.type, v.name, v.init ? &*v.init : nullptr, v.address);
   for (const auto &a : c.actions) {
     auto action = w.block(fmt::format("action {} {{", a.name));
     chart_text::statements(w, m, index, a.body);

@@ -111,6 +111,7 @@ void chart_fields(const model::Model &m, const model::Chart &c, Json &doc) {
               {"location", location(m, v.range)}};
     // Only inputs and outputs carry a role (docs/model-json.md): a chart's own var has none.
     if (v.role != model::VarRole::Local) j["role"] = v.role == model::VarRole::In ? "in" : "out";
+    if (!v.address.empty()) j["address"] = v.address;
     vars.push_back(std::move(j));
   }
   doc["vars"] = std::move(vars);

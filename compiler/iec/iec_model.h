@@ -30,9 +30,11 @@ struct Variable {
   /// LREAL and reports every other as not supported yet, at this range.
   ast::Name type;
   ast::ExprPtr init;  ///< the initial value (an ST expression), or null
-  /// `AT %IX0.0` was written (a located variable): its range, else empty. Not supported yet.
+  /// `AT %IX0.0` was written (a located variable): its range, else empty. The lowering makes a
+  /// %I variable an input, %Q an output and %M a local variable (docs/iec.md "Located variables").
   std::optional<SourceRange> located;
-  bool constant = false;  ///< in a `VAR CONSTANT` section
+  std::string_view address;  ///< the direct address as written (`%IX0.0`), when located
+  bool constant = false;     ///< in a `VAR CONSTANT` section
   SourceRange range;
 };
 

@@ -73,6 +73,29 @@ private:
   std::map<std::string, std::string_view> by_upper_;
 };
 
+/// A located variable's role comes from its address, whatever its section: the caller sets the
+/// process image's inputs (%I) before a scan and reads its outputs (%Q) after it; %M is memory the
+/// program keeps (docs/iec.md "Located variables").
+void located_role(const Variable &v, ast::ValueDecl &d, Diagnostics &diag) {
+  const std::string a = upper(v.address);
+  const char area = a.size() > 1 && a[0] == '%' ? a[1] : '\0';
+  if (a.find('*') != std::string::npos) {
+    diag.error(*v.located, ErrorKind::NotSupported,
+               fmt::format("the address '{}' of '{}' is left open ('*'), to be given by a VAR_CONFIG: not "
+                           "supported yet",
+                           v.address, v.name.text));
+  } else if (area == 'I' || area == 'Q' || area == 'M') {
+    d.role = area == 'I' ? ast::VarRole::In : area == 'Q' ? ast::VarRole::Out : ast::VarRole::Local;
+    d.is_const = d.is_const && area == 'M';
+    d.address = v.address;
+  } else {
+    diag.error(*v.located, ErrorKind::NotSupported,
+               fmt::format("'{}' is not a direct address gfec reads: a located variable is at %I (an input), %Q "
+                           "(an output) or %M (memory), as '%IX0.0'",
+                           v.address));
+  }
+}
+
 ast::ValueDecl lower_variable(Variable &v, Diagnostics &diag) {
   ast::ValueDecl d;
   d.role = v.section == Section::Input    ? ast::VarRole::In
@@ -98,10 +121,14 @@ ast::ValueDecl lower_variable(Variable &v, Diagnostics &diag) {
                              "user-defined types are not supported yet",
                              v.type.text));
   }
-  if (v.located)
-    diag.error(*v.located, ErrorKind::NotSupported,
-               fmt::format("located variable '{}' ('AT %...') is not supported yet", v.name.text));
+  if (v.located) located_role(v, d, diag);
   d.init = std::move(v.init);
+  // IEC's BOOL literals include 0 and 1 (`Lamp AT %QX0.0 : BOOL := 1;`, as MatIEC's tests write).
+  if (t == "BOOL" && d.init && d.init->kind == ast::Expr::Kind::Int &&
+      (d.init->text() == "0" || d.init->text() == "1")) {
+    d.init->bool_value = d.init->text() == "1";
+    d.init->kind = ast::Expr::Kind::Bool;
+  }
   return d;
 }
 

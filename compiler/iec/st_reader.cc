@@ -167,11 +167,17 @@ void StParser::declaration(Pou &pou, Section section, bool constant, std::string
     next();
   }
   std::optional<SourceRange> located;
+  std::string_view address;
   if (keyword("AT")) {
-    const StToken at = tok();
     next();
-    if (tok().kind == StTok::Direct) next();
-    located = range(at, toks_[pos_ - 1]);
+    if (tok().kind != StTok::Direct) {
+      error(range(tok()), fmt::format("expected a direct address after 'AT' ('AT %IX0.0'), not {}", quoted()));
+      skip_statement();
+      return;
+    }
+    address = tok().text;
+    located = range(tok());
+    next();
   }
   if (tok().kind != StTok::Colon) {
     error(range(tok()), fmt::format("expected ':' and the type of '{}', not {}", first.text, quoted()));
@@ -227,6 +233,7 @@ void StParser::declaration(Pou &pou, Section section, bool constant, std::string
     v.name = n;
     v.type = type;
     v.located = located;
+    v.address = address;
     v.constant = constant;
     v.range = n.range.to(range(end));
     if (init) v.init = &n == &names.back() ? std::move(init) : clone(*init);

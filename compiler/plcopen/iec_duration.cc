@@ -75,12 +75,29 @@ std::optional<double> xsd_duration(const std::string &s) {
   return total;
 }
 
+/// `00:00:00.100000`: hours, minutes and seconds, as Beremiz writes a task's interval.
+std::optional<double> clock_duration(const std::string &s) {
+  double total = 0;
+  std::size_t i = 0;
+  for (double unit : {3600000.0, 60000.0}) {
+    std::size_t b = i;
+    while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) ++i;
+    if (i == b || i >= s.size() || s[i] != ':') return std::nullopt;
+    total += std::strtod(s.substr(b, i - b).c_str(), nullptr) * unit;
+    ++i;
+  }
+  auto seconds = number(s, i);
+  if (!seconds || i != s.size()) return std::nullopt;
+  return total + *seconds * 1000;
+}
+
 }  // namespace
 
 std::optional<double> duration_ms(std::string_view text) {
   std::string s = trimmed_upper(text);
   for (std::string_view prefix : {"TIME#", "T#", "LTIME#", "LT#"})
     if (s.compare(0, prefix.size(), prefix) == 0) return iec_units(s.substr(prefix.size()));
+  if (s.find(':') != std::string::npos) return clock_duration(s);
   return xsd_duration(s);
 }
 

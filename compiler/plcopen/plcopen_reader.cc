@@ -172,7 +172,10 @@ void Reader::read_variable(const pugi::xml_node &v, iec::Section section, bool c
   var.name = name_of(v, "name");
   var.range = at(v);
   if (!identifier(var.name, "variable")) return;
-  if (v.attribute("address")) var.located = xml_.attribute_range(v, "address");
+  if (v.attribute("address")) {
+    var.located = xml_.attribute_range(v, "address");
+    var.address = keep(v.attribute("address").value());
+  }
   pugi::xml_node type = child(v, "type");
   pugi::xml_node t;
   for (pugi::xml_node c : type.children())
@@ -248,7 +251,7 @@ void Reader::read_tasks(const pugi::xml_node &instances, iec::Project &project) 
             if (!task.interval_ms || *task.interval_ms <= 0) {
               diag_.error(task.interval_range, ErrorKind::Plcopen,
                           fmt::format("task '{}' has the interval '{}': gfec reads a positive TIME literal "
-                                      "(T#10ms) or an XML duration (PT0.01S)",
+                                      "(T#10ms), an XML duration (PT0.01S) or a clock time (00:00:00.010)",
                                       task.name.text, text::printable(t.attribute("interval").value())));
               task.interval_ms.reset();
             }

@@ -124,7 +124,7 @@ void declare_value(Context &cx, ChartScope &s, const ast::ValueDecl &v) {
     model::VarId index;
     if (type) {
       index = s.out.vars.next_id();
-      s.out.vars.push_back({std::string(v.name.text), *type, role, std::nullopt, v.range});
+      s.out.vars.push_back({std::string(v.name.text), *type, role, std::nullopt, v.range, std::string(v.address)});
     }
     s.names.declare(v.name, Sym::Var, index, cx.diag);
     return;

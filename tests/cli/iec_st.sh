@@ -56,6 +56,11 @@ sed 's/^\( *\)PROGRAM Tank1 WITH Fast : Tank;/&\n\1PROGRAM Other1 WITH Fast : Ot
 grep -q 'Other1 WITH' both.st || fail "both.st not made"
 if "$gfec" both.st -o both.c 2> err.txt; then fail "several PROGRAMs, both run: compiled one"; fi
 grep -q 'choose one with --chart' err.txt || fail "several PROGRAMs, both run: $(cat err.txt)"
+# Located variables keep their address in the model's JSON and as a comment of the chart text.
+"$gfec" --emit=json "$dir/located.st" -o located.json
+grep -q '"address": "%QD0"' located.json || fail "located.st: --emit=json has no address"
+"$gfec" --emit=chart "$dir/located.st" -o located.sfc
+grep -q '^ *in bool Start;  // AT %IX0.0$' located.sfc || fail "located.st: --emit=chart: $(cat located.sfc)"
 # A byte-order mark and CR LF line ends, as Windows editors write them, read as any file.
 "$gfec" --check "$dir/../../fuzz/corpus_iec/bom_crlf.st" || fail "a file with a byte-order mark and CR LF"
 echo "iec_st: ok"
