@@ -42,6 +42,12 @@ struct Node {
   std::vector<std::size_t> outs;  ///< the nodes with a connection to it, in file order
   std::size_t step = 0;           ///< Kind::Step: index in Pou::steps
   bool used = false;              ///< an InVariable read as a condition
+  bool entry = false;             ///< Kind::Step in a macro step's body, marked initialStep
+  std::size_t macro = SIZE_MAX;   ///< the macro step whose body holds it, or SIZE_MAX
+  std::string prefix;             ///< what qualifies the localIds of its body ("" or "3/")
+  /// Kind::MacroStep: the steps of its body the links into it activate (those marked initial),
+  /// and those the links out of it wait for (the steps no transition of the body leaves).
+  std::vector<std::size_t> entries, exits;
 };
 
 using iec::upper;
@@ -89,8 +95,9 @@ public:
       }
       return ok;
     }
-    case Kind::MacroStep:  // reported once, with the body's other elements gfec does not read
-      return false;
+    case Kind::MacroStep:  // leaving a macro step is leaving the exit steps of its body
+      for (std::size_t e : n.exits) out.push_back(step_name(nodes[e].step));
+      return !n.exits.empty();
     default:
       return fail(via, fmt::format("{} is preceded by {}: a transition follows a step, a selection divergence or a "
                                    "simultaneous convergence",
@@ -106,7 +113,11 @@ public:
     case Kind::Step: out.push_back(step_name(n.step)); return true;
     case Kind::JumpStep: {
       SourceRange r = xml_.attribute_range(n.xml, "targetName");
-      auto it = step_by_name.find(upper(n.xml.attribute("targetName").value()));
+      auto it = step_by_name.end();
+      if (n.macro != SIZE_MAX)  // in a macro step's body, its own steps first
+        it = step_by_name.find(upper(
+            fmt::format("{}_{}", nodes[n.macro].xml.attribute("name").value(), n.xml.attribute("targetName").value())));
+      if (it == step_by_name.end()) it = step_by_name.find(upper(n.xml.attribute("targetName").value()));
       if (it == step_by_name.end())
         return fail(r, fmt::format("{} jumps to a step the SFC does not have", describe(n)));
       ast::Name name = step_name(it->second);
@@ -121,8 +132,9 @@ public:
       for (std::size_t o : n.outs) ok = steps_after(nodes[o], transition, out, depth + 1) && ok;
       return ok;
     }
-    case Kind::MacroStep:  // reported once, with the body's other elements gfec does not read
-      return false;
+    case Kind::MacroStep:  // entering a macro step is entering the entry steps of its body
+      for (std::size_t e : n.entries) out.push_back(step_name(nodes[e].step));
+      return !n.entries.empty();
     case Kind::ActionBlock:  // an action block hangs off a step, reported where it is read
       return true;
     default:
@@ -177,6 +189,31 @@ bool qualifier(std::string_view q) {
   return false;
 }
 
+bool is_true(std::string_view v) { return v == "true" || v == "1"; }
+
+/// `NOT (e)`: a condition the file marks `negated="true"`; the operator's range is the attribute,
+/// so a message about it points at what the user wrote.
+ast::ExprPtr negated(ast::ExprPtr e, const SourceRange &attribute) {
+  if (!e) return e;
+  auto wrap = [](ast::Expr::Kind kind, const SourceRange &at) {
+    auto x = std::make_unique<ast::Expr>();
+    x->kind = kind;
+    x->range = at;
+    return x;
+  };
+  const SourceRange at = e->range;
+  if (e->kind == ast::Expr::Kind::Binary || e->kind == ast::Expr::Kind::Unary) {
+    auto p = wrap(ast::Expr::Kind::Paren, at);
+    p->args.push_back(std::move(e));
+    e = std::move(p);
+  }
+  auto n = wrap(ast::Expr::Kind::Unary, at);
+  n->unary_op = UnaryOp::Not;
+  n->set_op_range(attribute);
+  n->args.push_back(std::move(e));
+  return n;
+}
+
 /// Elements of a graphical body that carry no meaning for the program.
 bool meaningless(std::string_view name) {
   return name == "comment" || name == "addData" || name == "documentation" || name == "error";
@@ -214,46 +251,71 @@ LocatedText condition_of_body(const LocatedText &body, std::string_view transiti
 
 void Reader::read_sfc(const pugi::xml_node &sfc, const pugi::xml_node &pou_node, iec::Pou &pou) {
   SfcGraph g(xml_, diag_, pou);
-  // ---- the elements, by localId
-  for (pugi::xml_node e : sfc.children()) {
-    if (e.type() != pugi::node_element || meaningless(local_name(e))) continue;
-    Node n;
-    n.xml = e;
-    n.kind = kind_of(local_name(e));
-    std::string id = e.attribute("localId").value();
-    if (id.empty()) {
-      diag_.error(at(e), ErrorKind::Plcopen,
-                  fmt::format("{} has no localId: SFC elements are linked by it", describe(e)));
-      continue;
+  // ---- the elements, by localId. A macro step's body is read into the same graph, its
+  // localIds qualified by the macro step's ("7/3") and its steps named after it ("Fill_Open"):
+  // the macro step is expanded inline (docs/iec.md "PLCopen XML").
+  auto elements = [&](auto &self, const pugi::xml_node &body, const std::string &prefix, std::size_t macro,
+                      int depth) -> void {
+    for (pugi::xml_node e : body.children()) {
+      if (e.type() != pugi::node_element || meaningless(local_name(e))) continue;
+      Node n;
+      n.xml = e;
+      n.kind = kind_of(local_name(e));
+      n.macro = macro;
+      n.prefix = prefix;
+      std::string id = e.attribute("localId").value();
+      if (id.empty()) {
+        diag_.error(at(e), ErrorKind::Plcopen,
+                    fmt::format("{} has no localId: SFC elements are linked by it", describe(e)));
+        continue;
+      }
+      for (pugi::xml_node in : e.children()) {
+        if (local_name(in) != "connectionPointIn") continue;
+        for (pugi::xml_node c : in.children())
+          if (local_name(c) == "connection") n.ins.push_back({prefix + c.attribute("refLocalId").value(), c});
+      }
+      if (n.kind == Kind::Step) {
+        iec::Step step;
+        step.name = name_of(e, "name");
+        const bool initial = is_true(e.attribute("initialStep").value());
+        step.range = at(e);
+        if (!identifier(step.name, "step")) continue;
+        if (macro != SIZE_MAX) {
+          // Marked initial in a macro step's body: where the body starts, not an initial step.
+          n.entry = initial;
+          step.name.text = keep(fmt::format("{}_{}", g.nodes[macro].xml.attribute("name").value(), step.name.text));
+        } else {
+          step.initial = initial;
+        }
+        n.step = pou.steps.size();
+        auto [it, fresh] = g.step_by_name.emplace(upper(step.name.text), n.step);
+        (void)it;
+        (void)fresh;  // a duplicate name is the validator's to report, at both places
+        pou.steps.push_back(std::move(step));
+      }
+      auto [it, fresh] = g.by_id.emplace(prefix + id, g.nodes.size());
+      if (!fresh) {
+        diag_
+            .error(xml_.attribute_range(e, "localId"), ErrorKind::Plcopen,
+                   fmt::format("{}: another element of the body has localId {}", describe(e), text::printable(id)))
+            .note(at(g.nodes[it->second].xml), "the other one");
+        continue;
+      }
+      const std::size_t index = g.nodes.size();
+      g.nodes.push_back(std::move(n));
+      if (g.nodes[index].kind != Kind::MacroStep) continue;
+      pugi::xml_node inner = child(child(e, "body"), "SFC");
+      if (!inner) {
+        diag_.error(at(e), ErrorKind::Plcopen,
+                    fmt::format("{} has no <body> with an <SFC>: gfec expands a macro step's SFC inline", describe(e)));
+      } else if (depth >= kMaxDepth) {
+        diag_.error(at(e), ErrorKind::Plcopen, "macro steps nest deeper than gfec reads");
+      } else {
+        self(self, inner, prefix + id + "/", index, depth + 1);
+      }
     }
-    for (pugi::xml_node in : e.children()) {
-      if (local_name(in) != "connectionPointIn") continue;
-      for (pugi::xml_node c : in.children())
-        if (local_name(c) == "connection") n.ins.push_back({c.attribute("refLocalId").value(), c});
-    }
-    if (n.kind == Kind::Step) {
-      iec::Step step;
-      step.name = name_of(e, "name");
-      step.initial = std::string_view(e.attribute("initialStep").value()) == "true" ||
-                     std::string_view(e.attribute("initialStep").value()) == "1";
-      step.range = at(e);
-      if (!identifier(step.name, "step")) continue;
-      n.step = pou.steps.size();
-      auto [it, fresh] = g.step_by_name.emplace(upper(step.name.text), n.step);
-      (void)it;
-      (void)fresh;  // a duplicate name is the validator's to report, at both places
-      pou.steps.push_back(std::move(step));
-    }
-    auto [it, fresh] = g.by_id.emplace(id, g.nodes.size());
-    if (!fresh) {
-      diag_
-          .error(xml_.attribute_range(e, "localId"), ErrorKind::Plcopen,
-                 fmt::format("{}: another element of the body has localId {}", describe(e), text::printable(id)))
-          .note(at(g.nodes[it->second].xml), "the other one");
-      continue;
-    }
-    g.nodes.push_back(std::move(n));
-  }
+  };
+  elements(elements, sfc, "", SIZE_MAX, 0);
   // ---- links, both ways
   for (std::size_t i = 0; i < g.nodes.size(); ++i) {
     for (const Link &l : g.nodes[i].ins) {
@@ -272,6 +334,25 @@ void Reader::read_sfc(const pugi::xml_node &sfc, const pugi::xml_node &pou_node,
     for (std::size_t o : ids) c += g.nodes[o].kind == k;
     return c;
   };
+  // ---- each macro step's entry and exit steps
+  for (std::size_t i = 0; i < g.nodes.size(); ++i) {
+    const Node &n = g.nodes[i];
+    if (n.kind != Kind::Step || n.macro == SIZE_MAX) continue;
+    Node &m = g.nodes[n.macro];
+    if (n.entry) m.entries.push_back(i);
+    if (n.outs.size() == direct_kind_count(n.outs, Kind::ActionBlock)) m.exits.push_back(i);
+  }
+  for (const Node &m : g.nodes) {
+    if (m.kind != Kind::MacroStep || !child(child(m.xml, "body"), "SFC")) continue;
+    if (m.entries.empty())
+      diag_.error(
+          at(m.xml), ErrorKind::Plcopen,
+          fmt::format("{}: no step of its body is marked initialStep=\"true\", the step it starts at", g.describe(m)));
+    if (m.exits.empty())
+      diag_.error(
+          at(m.xml), ErrorKind::Plcopen,
+          fmt::format("{}: every step of its body is followed by a transition, so none ends it", g.describe(m)));
+  }
   // ---- transitions, in file order (the order of a divergence's branches: docs/iec.md)
   for (Node &n : g.nodes) {
     if (n.kind != Kind::Transition) continue;
@@ -313,13 +394,6 @@ void Reader::read_sfc(const pugi::xml_node &sfc, const pugi::xml_node &pou_node,
     pugi::xml_node cond = child(n.xml, "condition");
     if (!cond) {
       diag_.error(at(n.xml), ErrorKind::Plcopen, fmt::format("{} has no condition", g.describe(n)));
-      continue;
-    }
-    if (std::string_view neg = cond.attribute("negated").value(); neg == "true" || neg == "1") {
-      diag_.error(xml_.attribute_range(cond, "negated"), ErrorKind::NotSupported,
-                  fmt::format("the condition of {} is negated: a negated condition is not supported yet; write NOT "
-                              "in the condition",
-                              g.describe(n)));
       continue;
     }
     if (pugi::xml_node in = child(cond, "inline")) {
@@ -367,10 +441,13 @@ void Reader::read_sfc(const pugi::xml_node &sfc, const pugi::xml_node &pou_node,
       }
     } else if (pugi::xml_node cin = child(cond, "connectionPointIn")) {
       pugi::xml_node c = child(cin, "connection");
-      const Node *from = c ? g.target({c.attribute("refLocalId").value(), c}) : nullptr;
+      const Node *from = c ? g.target({n.prefix + c.attribute("refLocalId").value(), c}) : nullptr;
       if (from) const_cast<Node *>(from)->used = true;  // reported here, not again as an element
       if (from && from->kind == Kind::InVariable) {
         t.condition = expression(xml_.text_below(child(from->xml, "expression")));
+        // An FBD variable negated at its output, or the connection negated at the transition.
+        if (is_true(from->xml.attribute("negated").value()))
+          t.condition = negated(std::move(t.condition), xml_.attribute_range(from->xml, "negated"));
       } else if (from) {
         diag_
             .error(g.at(Link{"", c}), ErrorKind::NotSupported,
@@ -386,6 +463,9 @@ void Reader::read_sfc(const pugi::xml_node &sfc, const pugi::xml_node &pou_node,
       diag_.error(at(cond), ErrorKind::Plcopen,
                   fmt::format("the condition of {} is neither inline, a reference nor a connection", g.describe(n)));
     }
+    // `<condition negated="true">`: the transition clears when the condition does not hold.
+    if (is_true(cond.attribute("negated").value()))
+      t.condition = negated(std::move(t.condition), xml_.attribute_range(cond, "negated"));
     if (ok && t.condition) pou.transitions.push_back(std::move(t));
   }
   // ---- steps: inferred convergences and divergences
@@ -461,8 +541,6 @@ void Reader::read_sfc(const pugi::xml_node &sfc, const pugi::xml_node &pou_node,
         }
         step.associations.push_back(std::move(as));
       }
-    } else if (n.kind == Kind::MacroStep) {
-      not_supported(n.xml, fmt::format("{}: macro steps are not supported yet", g.describe(n)));
     } else if ((n.kind == Kind::Other || n.kind == Kind::InVariable) && !n.used) {
       not_supported(n.xml, fmt::format("{} in an SFC body: LD and FBD elements are not supported yet", g.describe(n)));
     }
