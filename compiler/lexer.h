@@ -8,6 +8,10 @@
 
 namespace gfec {
 
+/// Whether `word` is a keyword of chart text (`place`, `when`, `in`, ...): such a name is written
+/// `` `place` `` (docs/language.md §14).
+bool is_chart_keyword(std::string_view word);
+
 class Lexer {
 public:
   Lexer(const SourceManager &sources, FileId file, Diagnostics &diag);

@@ -60,8 +60,10 @@ void value(CodeWriter &w, const model::Model &m, model::ChartId chart, const cha
   // An IEC located variable keeps its address as a comment: chart text has no addresses, and the
   // engine's field is the variable's name either way (docs/iec.md "Located variables").
   const std::string at = address.empty() ? "" : "  // AT " + address;
-  if (init) w.line("{} {} {} = {};{}", keyword, model::type_name(type), name, chart_text::expr(m, chart, *init), at);
-  else w.line("{} {} {};{}", keyword, model::type_name(type), name, at);
+  if (init)
+    w.line("{} {} {} = {};{}", keyword, model::type_name(type), chart_text::name(name),
+           chart_text::expr(m, chart, *init), at);
+  else w.line("{} {} {};{}", keyword, model::type_name(type), chart_text::name(name), at);
 }
 
 void block(CodeWriter &w, const model::Model &m, model::ChartId chart, const char *keyword,
@@ -77,7 +79,7 @@ std::vector<std::string> associations(const model::Chart &c, model::PlaceId p) {
   for (const model::Action &a : c.actions)
     for (const model::Association &as : a.associations) {
       if (as.place != p) continue;
-      std::string line = fmt::format("{} {}", model::qualifier_name(as.qualifier), a.name);
+      std::string line = fmt::format("{} {}", model::qualifier_name(as.qualifier), chart_text::name(a.name.view()));
       if (model::is_timed(as.qualifier)) line += fmt::format(" {}ms", as.duration_ms);
       out.push_back(line + ";");
     }
@@ -90,7 +92,7 @@ void place(CodeWriter &w, const model::Model &m, model::ChartId chart, model::Pl
   std::string head = p.initial ? "initial " : "";
   if (p.terminal == model::Terminal::Success) head += "success ";
   if (p.terminal == model::Terminal::Failure) head += "failure ";
-  head += fmt::format("{} {}", fsm ? "state" : "place", p.name);
+  head += fmt::format("{} {}", fsm ? "state" : "place", chart_text::name(p.name.view()));
   if (p.runs) head += " runs " + m.charts[p.runs].name;
   if (p.post) head += " post " + chart_text::expr(m, chart, *p.post);
   if (p.action.empty() && !p.entry && !p.exit && held.empty()) {
@@ -105,9 +107,9 @@ void place(CodeWriter &w, const model::Model &m, model::ChartId chart, model::Pl
 }
 
 std::string places(const model::Chart &c, const model::PlaceList &list) {
-  if (list.size() == 1) return c.places[list[0]].name.str();
+  if (list.size() == 1) return chart_text::name(c.places[list[0]].name.view());
   std::string out;
-  for (model::PlaceId p : list) out += (out.empty() ? "" : ", ") + c.places[p].name;
+  for (model::PlaceId p : list) out += (out.empty() ? "" : ", ") + chart_text::name(c.places[p].name.view());
   return "(" + out + ")";
 }
 
@@ -126,13 +128,13 @@ void chart(CodeWriter &w, const model::Model &m, model::ChartId index) {
                                           : "var",
           v.type, v.name, v.init ? &*v.init : nullptr, v.address);
   for (const auto &a : c.actions) {
-    auto action = w.block(fmt::format("action {} {{", a.name));
+    auto action = w.block(fmt::format("action {} {{", chart_text::name(a.name.view())));
     chart_text::statements(w, m, index, a.body);
   }
   for (model::PlaceId p : c.places.ids()) place(w, m, index, p, fsm);
   for (const auto &t : c.transitions) {
     std::string line = fsm ? "" : "transition ";
-    if (t.named) line += t.name + ": ";
+    if (t.named) line += chart_text::name(t.name) + ": ";
     line += places(c, t.inputs) + " -> " + places(c, t.outputs);
     if (t.otherwise) line += " else";
     if (t.condition) line += " when " + chart_text::expr(m, index, *t.condition);

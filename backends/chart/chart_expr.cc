@@ -1,4 +1,5 @@
 #include "chart_expr.h"
+#include "lexer.h"
 
 #include <fmt/format.h>
 
@@ -19,11 +20,13 @@ std::string args_of(const model::Model &m, model::ChartId chart, const CompactVe
   return out;
 }
 
-std::string_view place_name(const model::Model &m, model::ChartId chart, model::PlaceId place) {
-  return m.charts[chart].places[place].name.view();
+std::string place_name(const model::Model &m, model::ChartId chart, model::PlaceId place) {
+  return name(m.charts[chart].places[place].name.view());
 }
 
 }  // namespace
+
+std::string name(std::string_view n) { return is_chart_keyword(n) ? fmt::format("`{}`", n) : std::string(n); }
 
 std::string expr(const model::Model &m, model::ChartId chart, const model::Expr &e) {
   using K = model::Expr::Kind;
@@ -43,7 +46,7 @@ std::string expr(const model::Model &m, model::ChartId chart, const model::Expr 
   }
   case K::String: return c_string_literal(e.text.str());
   case K::Ticks: return duration(e.float_value);
-  case K::Var: return c.vars[e.var()].name;
+  case K::Var: return name(c.vars[e.var()].name);
   case K::Const: return m.consts[e.constant()].name;
   case K::Config: return m.plans.empty() ? "?" : "?";  // plans are not converted (see chart_backend.cc)
   case K::Call: return fmt::format("{}({})", m.functions[e.function()].name, args_of(m, chart, e.args));
@@ -82,7 +85,7 @@ void statements(CodeWriter &w, const model::Model &m, model::ChartId chart, cons
     switch (s.kind) {
     case model::Stmt::Kind::Call: w.line("{};", expr(m, chart, s.expr)); break;
     case model::Stmt::Kind::Assign:
-      w.line("{} {} {};", c.vars[s.var].name, spelling(s.op), expr(m, chart, s.expr));
+      w.line("{} {} {};", name(c.vars[s.var].name), spelling(s.op), expr(m, chart, s.expr));
       break;
     case model::Stmt::Kind::Verbatim: w.line("%{{{}%}}", *s.verbatim); break;
     case model::Stmt::Kind::If: {
