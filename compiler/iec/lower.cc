@@ -11,6 +11,7 @@
 #include <cctype>
 #include <cmath>
 #include <map>
+#include <set>
 #include <string>
 
 namespace gfec::iec {
@@ -316,6 +317,24 @@ bool lower(Pou &&pou, const std::optional<ast::Period> &period, ast::File &file,
     x.range = t.range;
     x.condition = std::move(t.condition);
     if (x.condition) names.respell(*x.condition);
+  }
+  // An unnamed transition is T<position> in the chart language, which a PLC program may have
+  // given to another one (`TRANSITION T1 FROM ...` third in the file): such a one is named
+  // T<position>_ instead (docs/iec.md), rather than the chart's duplicate-name error.
+  std::set<std::string_view> taken;
+  for (const Variable &v : pou.variables) taken.insert(v.name.text);
+  for (const Step &st : pou.steps) taken.insert(st.name.text);
+  for (const Action &a : pou.actions) taken.insert(a.name.text);
+  for (const ast::Transition &t : c.transitions)
+    if (t.named) taken.insert(t.name.text);
+  for (std::size_t i = 0; i < c.transitions.size(); ++i) {
+    ast::Transition &t = c.transitions[i];
+    std::string name = fmt::format("T{}", i);
+    if (t.named || !taken.count(name)) continue;
+    while (taken.count(name)) name += '_';
+    t.named = true;
+    t.name = {file.strings.emplace_back(std::move(name)), t.range};
+    taken.insert(t.name.text);
   }
   for (Action &a : pou.actions) {
     ast::ActionDecl &d = c.actions.emplace_back();
