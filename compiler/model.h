@@ -71,6 +71,10 @@ struct Expr {
     // Team machines (docs/language.md "Teams").
     TeamCount,  ///< `team(S)`: place() = state S of this chart. Type Int.
     Agent,      ///< `agent()`. Type Int.
+    // Named actions (docs/language.md §14): action() is the action, of this chart. Type Bool,
+    // the value of the latest action control (docs/iec.md "Action flags").
+    ActionQ,  ///< `active(A)`: the action's Q (IEC's `A.Q`)
+    ActionA,  ///< `running(A)`: the action's body runs (IEC's `A.A`: Q, its final run, an edge)
   };
   Kind kind = Kind::Bool;
   Type type = Type::Bool;
@@ -105,6 +109,7 @@ struct Expr {
     return ref<PlaceId>(kind == Kind::Elapsed || kind == Kind::Succeeded || kind == Kind::Failed ||
                         kind == Kind::TeamCount);
   }
+  ActionId action() const { return ref<ActionId>(kind == Kind::ActionQ || kind == Kind::ActionA); }
   /// Makes the expression name `id`, of the table its kind reads.
   template <typename Tag> void refer_to(Id<Tag> id) {
     ref_ = id.valid() ? static_cast<std::uint32_t>(id.index()) : kNoRef;
@@ -266,6 +271,9 @@ struct Chart {
   int team = 0;                       ///< fsm `team N;`: N (>= 2); 0 for a machine that is no team
   ActivationBound activation;         ///< recorded by analysis::record_activation_bounds
   bool in_main_file = false;          ///< declared in the file being compiled, not an import
+  /// Some expression reads an action's flags (`active(A)`, `running(A)`): the action control
+  /// then runs for every action before any body (docs/iec.md "Action flags").
+  bool reads_action_flags = false;
   SourceRange range;
   SourceRange name_range;  ///< the chart's name where it is declared
 };

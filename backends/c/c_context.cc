@@ -161,7 +161,7 @@ void name_fields(EngineContext &c) {
     IdMap<model::PlaceId, bool> edged(places.size(), false);
     bool initial_p0 = false;
     for (const model::Action &a : c.chart.actions) {
-      bool q = false, stored = false, sd = false, sl = false;
+      bool q = false, stored = false, sd = false, sl = false, edge = false;
       for (const model::Association &as : a.associations) {
         const Keep k = kept_as(as);
         stored = stored || k == Keep::Set;
@@ -171,10 +171,12 @@ void name_fields(EngineContext &c) {
         const model::Qualifier qu = as.qualifier;
         if (qu == model::Qualifier::P || qu == model::Qualifier::P1 || qu == model::Qualifier::P0)
           edged[as.place] = true;
+        edge = edge || qu == model::Qualifier::P1 || qu == model::Qualifier::P0;
         initial_p0 = initial_p0 || (qu == model::Qualifier::P0 && places[as.place].initial);
       }
       const std::string name = a.name.str();
       c.action_q.push_back(q ? fields.take("q_" + name) : "");
+      c.action_a.push_back(c.chart.reads_action_flags && (q || edge) ? fields.take("a_" + name) : "");
       c.action_stored.push_back(stored ? fields.take("stored_" + name) : "");
       c.action_sd.push_back(sd ? fields.take("sd_" + name) : "");
       c.action_sd_timer.push_back(sd ? fields.take("sd_timer_" + name) : "");

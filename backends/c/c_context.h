@@ -112,6 +112,9 @@ struct EngineContext {
   // Action control (docs/iec.md "Action control"): the state each back end keeps for itself.
   // Tables only when the chart has named actions; "" for an action (place) that needs no field.
   IdMap<model::ActionId, std::string> action_q;  ///< the action's Q of the previous tick (its final run)
+  /// When the chart reads action flags (`running(A)`): the action's body runs at the latest
+  /// action control; all controls then come before all bodies (docs/iec.md "Action flags").
+  IdMap<model::ActionId, std::string> action_a;
   /// Set by S, DS, SD 0 and an SL beyond the timers' range (one flag: each is only set, and one R
   /// clears them all), cleared by R.
   IdMap<model::ActionId, std::string> action_stored;

@@ -225,6 +225,8 @@ bool same_value(const EngineContext &c, const Expr &x, const Expr &y) {
   case Expr::Kind::Ticks: return a.ticks == b.ticks;
   case Expr::Kind::Var: return a.var() == b.var();
   case Expr::Kind::Agent: return true;  // the engine's own agent number, a field
+  case Expr::Kind::ActionQ:
+  case Expr::Kind::ActionA: return a.action() == b.action();
   case Expr::Kind::Elapsed: return a.place() == b.place();
   case Expr::Kind::Succeeded:
   case Expr::Kind::Failed: return a.place() == b.place();
@@ -363,6 +365,15 @@ public:
     case Expr::Kind::TeamCount:  // no side effect: the order of calls is not its concern
       return {fmt::format("{}({}, {})", c_.team_fn, c_.self, c_.place_const.at(e.place()))};
     case Expr::Kind::Agent: return {c_.field(c_.agent)};
+    // An action no Q can hold (only P1, P0, R) is never active; one that never runs, never running.
+    case Expr::Kind::ActionQ: {
+      const std::string &f = c_.action_q.at(e.action());
+      return {f.empty() ? "false" : c_.field(f)};
+    }
+    case Expr::Kind::ActionA: {
+      const std::string &f = c_.action_a.at(e.action());
+      return {f.empty() ? "false" : c_.field(f)};
+    }
     case Expr::Kind::Config: break;  // plans only: the validator keeps it out of charts
     default: break;                  // team machines: not in this back end's charts
     }

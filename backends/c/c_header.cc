@@ -119,6 +119,9 @@ void state_struct(CodeWriter &w, const EngineContext &c) {
     if (!c.action_q[a].empty())
       rows.emplace_back(fmt::format("bool {};", c.action_q[a]),
                         fmt::format("action {} was active (Q) in the last tick", name));
+    if (!c.action_a[a].empty())
+      rows.emplace_back(fmt::format("bool {};", c.action_a[a]),
+                        fmt::format("action {} ran in the last tick: running({})", name, name));
   }
   for (model::PlaceId p : c.was_active.ids())
     if (!c.was_active[p].empty())

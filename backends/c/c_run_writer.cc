@@ -194,11 +194,24 @@ void RunWriter::named_actions() {
     }
     runs.insert(runs.end(), edge.begin(), edge.end());
     if (runs.empty()) continue;  // only R: nothing to run
+    if (!c_.action_a[a].empty()) {
+      // The chart reads action flags: this control's outcome now, the body after every control.
+      w_.line("{} = {};", c_.field(c_.action_a[a]), any(runs));
+      if (!last_q.empty()) w_.line("{} = {};", c_.field(last_q), c_.q);
+      continue;
+    }
     w_.line_from(c_.model.sources(), action.name_range);
     w_.line("if ({}) {{", any(runs));
     w_.line_back();
     block(action.body);
     if (!last_q.empty()) w_.line("{} = {};", c_.field(last_q), c_.q);
+  }
+  for (model::ActionId a : c_.chart.actions.ids()) {
+    if (c_.action_a[a].empty()) continue;
+    w_.line_from(c_.model.sources(), c_.chart.actions[a].name_range);
+    w_.line("if ({}) {{", c_.field(c_.action_a[a]));
+    w_.line_back();
+    block(c_.chart.actions[a].body);
   }
   for (model::PlaceId p : c_.was_active.ids())
     if (!c_.was_active[p].empty()) w_.line("{} = {};", c_.field(c_.was_active[p]), active(p));

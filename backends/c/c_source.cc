@@ -98,6 +98,7 @@ void init(CodeWriter &w, const EngineContext &c) {
     for (const std::string *timer : {&c.action_sd_timer[a], &c.action_sl_timer[a]})
       if (!timer->empty()) w.line("{} = 0u;", c.field(*timer));
     if (!c.action_q[a].empty()) w.line("{} = false;", c.field(c.action_q[a]));
+    if (!c.action_a[a].empty()) w.line("{} = false;", c.field(c.action_a[a]));
   }
   for (model::PlaceId p : c.was_active.ids())
     if (!c.was_active[p].empty()) w.line("{} = false;", c.field(c.was_active[p]));

@@ -75,6 +75,8 @@ std::string expr(const model::Model &m, model::ChartId chart, const model::Expr 
   case K::Failed: return fmt::format("failed({})", place_name(m, chart, e.place()));
   case K::TeamCount: return fmt::format("team({})", place_name(m, chart, e.place()));
   case K::Agent: return "agent()";
+  case K::ActionQ: return fmt::format("active({})", name(c.actions[e.action()].name.view()));
+  case K::ActionA: return fmt::format("running({})", name(c.actions[e.action()].name.view()));
   }
   return "";
 }

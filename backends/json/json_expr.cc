@@ -30,6 +30,8 @@ const char *kind_name(Expr::Kind k) {
   case Expr::Kind::Failed: return "failed";
   case Expr::Kind::TeamCount: return "team";
   case Expr::Kind::Agent: return "agent";
+  case Expr::Kind::ActionQ: return "active";
+  case Expr::Kind::ActionA: return "running";
   default: break;
   }
   return "?";
@@ -112,6 +114,8 @@ Json expression_tree(const model::Model &m, const Scope &scope, const Expr &e) {
   case Expr::Kind::Succeeded:
   case Expr::Kind::Failed:
   case Expr::Kind::TeamCount: j["place"] = scope.chart ? name_at(scope.chart->places, e.place()) : "?"; break;
+  case Expr::Kind::ActionQ:
+  case Expr::Kind::ActionA: j["action"] = scope.chart ? name_at(scope.chart->actions, e.action()) : "?"; break;
   default: break;
   }
   return j;

@@ -40,6 +40,8 @@ std::string named(const Expr &e) {
   case Expr::Kind::Succeeded:
   case Expr::Kind::Failed:
   case Expr::Kind::TeamCount: return id_text(e.place());
+  case Expr::Kind::ActionQ:
+  case Expr::Kind::ActionA: return id_text(e.action());
   default: return "";
   }
 }

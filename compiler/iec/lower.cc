@@ -133,6 +133,35 @@ ast::ValueDecl lower_variable(Variable &v, Diagnostics &diag) {
   return d;
 }
 
+/// `A.Q` and `A.A` as the ST parser left them (calls named ".Q", ".A"): of an action, its flags
+/// `active(A)` and `running(A)` (docs/iec.md "Action flags"); of anything else, a located error.
+void action_flags(ast::Expr &e, const std::map<std::string, bool> &actions, Diagnostics &diag) {
+  for (ast::Expr *a : e.args)
+    if (a) action_flags(*a, actions, diag);
+  if (e.kind != ast::Expr::Kind::Call || (e.name.text != ".Q" && e.name.text != ".A")) return;
+  const bool q = e.name.text == ".Q";
+  const ast::Expr *of = e.args.size() == 1 ? e.args[0] : nullptr;
+  if (of && actions.count(upper(of->name.text))) {
+    e.name.text = q ? "active" : "running";
+    return;
+  }
+  diag.error(e.range, ErrorKind::NotSupported,
+             fmt::format("'{}{}': '{}' is no ACTION of the program; members of structures and function-block "
+                         "instances are not supported yet",
+                         of ? of->name.text : "", e.name.text, of ? of->name.text : ""));
+  e.name.text = q ? "active" : "running";
+}
+
+template <typename Stmts>
+void action_flags_in(Stmts &block, const std::map<std::string, bool> &actions, Diagnostics &diag) {
+  for (ast::Stmt &s : block) {
+    if (s.value) action_flags(*s.value, actions, diag);
+    if (s.call) action_flags(*s.call, actions, diag);
+    action_flags_in(s.then_block, actions, diag);
+    action_flags_in(s.else_block, actions, diag);
+  }
+}
+
 /// `Step.T` compared with a TIME literal the period does not divide, made exact. The chart
 /// language compares `elapsed(P)` with a duration in whole ticks, the duration rounded up
 /// (docs/language.md §5.3), which is the time comparison for `>=` and `<`; IEC compares times.
@@ -343,6 +372,11 @@ bool lower(Pou &&pou, const std::optional<ast::Period> &period, ast::File &file,
     names.respell_block(a.body);
     d.body = std::move(a.body);
   }
+  for (ast::Transition &t : c.transitions)
+    if (t.condition) action_flags(*t.condition, actions, diag);
+  for (ast::ActionDecl &a : c.actions) action_flags_in(a.body, actions, diag);
+  for (ast::ValueDecl &v : c.values)
+    if (v.init) action_flags(*v.init, actions, diag);
   if (period) {
     for (ast::Transition &t : c.transitions)
       if (t.condition) exact_step_times(*t.condition, period->ms);

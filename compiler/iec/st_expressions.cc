@@ -335,10 +335,16 @@ StParser::Node StParser::name_use() {
       e->args.push_back(std::move(arg));
       return {std::move(e), 1};
     }
-    if (is_keyword(member, "Q") || is_keyword(member, "A"))
-      not_supported(range(t, member),
-                    fmt::format("an action's '.{}' ('{}.{}') is not supported yet", member.text, t.text, member.text));
-    else
+    if (is_keyword(member, "Q") || is_keyword(member, "A")) {
+      // An action's flag, if `t` is an action: the lowering knows the POU's actions, and makes it
+      // `active(t)` or `running(t)` or reports what else it is (lower.cc, action_flags).
+      auto e = make(ast::Expr::Kind::Call, range(t, member));
+      e->name = {is_keyword(member, "Q") ? std::string_view(".Q") : std::string_view(".A"), range(member)};
+      auto arg = make(ast::Expr::Kind::Name, range(t));
+      arg->name = name(t);
+      e->args.push_back(std::move(arg));
+      return {std::move(e), 1};
+    }
       not_supported(range(t, member),
                     fmt::format("'{}.{}': members of structures and function-block instances are not supported yet",
                                 t.text, member.text));

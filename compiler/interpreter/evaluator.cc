@@ -159,6 +159,10 @@ Value evaluate(const Expr &e, Frame &f) {
     return Value::of_int(n);
   }
   case Expr::Kind::Agent: return Value::of_int(f.agent);
+  case Expr::Kind::ActionQ:
+  case Expr::Kind::ActionA:
+    if (!f.engine) throw RuntimeError(e.range, "an action's flags cannot be read here");
+    return Value::of_bool(f.engine->action_flag(e.action(), e.kind == Expr::Kind::ActionA));
   case Expr::Kind::Config: break;
   default: throw RuntimeError(e.range, "this expression is not supported by the interpreter yet");
   }

@@ -67,6 +67,7 @@ void Machine::init() {
   acted_ = false;
   stored_.assign(chart_.actions.size(), StoredFlags{});
   was_q_.assign(chart_.actions.size(), false);
+  runs_.assign(chart_.actions.size(), false);
   state_ = PlaceId::none();
   status_ = 0;
   for (PlaceId p : chart_.places.ids()) {
@@ -325,15 +326,24 @@ void Machine::named_actions(Frame &f) {
     q = q || flags.s.set || (flags.sd.set && flags.sd.ticks >= sd_ticks) || flags.ds.set ||
         (flags.sl.set && flags.sl.ticks < sl_ticks);
     // Q true, its final run as Q falls, or an edge of P1 / P0: at most one run per tick.
-    if (q || was_q_[a] || edge) {
-      if (f.log) f.log->add(EventKind::Action, depth_, fmt::format("action {}{}", prefix_, action.name));
-      f.depth = depth_ + 1;
-      execute(action.body, f);
-    }
+    runs_[a] = q || was_q_[a] || edge;
     was_q_[a] = q;
+    // A body reads every action's flags of this tick, so all the controls come first then; the
+    // bodies do not change what a control reads (places, timers, flags), so that order is the
+    // other's otherwise.
+    if (!chart_.reads_action_flags) run_action(a, f);
   }
+  if (chart_.reads_action_flags)
+    for (model::ActionId a : chart_.actions.ids()) run_action(a, f);
   for (PlaceId p : chart_.places.ids()) acted_active_[p] = av_[p] > 0;
   acted_ = true;
+}
+
+void Machine::run_action(model::ActionId a, Frame &f) {
+  if (!runs_[a]) return;
+  if (f.log) f.log->add(EventKind::Action, depth_, fmt::format("action {}{}", prefix_, chart_.actions[a].name));
+  f.depth = depth_ + 1;
+  execute(chart_.actions[a].body, f);
 }
 
 void Machine::run_fsm(Frame &f) {

@@ -40,6 +40,11 @@ public:
   bool active(const std::vector<model::PlaceId> &path) const;
   /// `succeeded(P)` (1) / `failed(P)` (-1): P is active and its fsm instance has that status.
   bool outcome(model::PlaceId place, int status) const;
+  /// `active(A)` / `running(A)` of a named action: its Q, or whether its body runs, as the latest
+  /// action control left them (docs/iec.md "Action flags").
+  bool action_flag(model::ActionId action, bool running) const {
+    return running ? runs_[action] : was_q_[action];
+  }
   /// A team machine (docs/language.md "Teams"), as the C engine's X_set_agent and X_report:
   /// this engine's agent number (init() makes it 0), and agent `agent`'s state as it arrives
   /// (ignored for the own number, a number out of range or an invalid state). init() forgets
@@ -85,6 +90,7 @@ private:
   void block(EventKind kind, const char *word, model::PlaceId place, const std::vector<model::Stmt> *stmts, Frame &f);
   void end_of_tick(Frame &f);
   void named_actions(Frame &f);
+  void run_action(model::ActionId a, Frame &f);
   std::string label(const model::Transition &t) const;
 
   const model::Model &model_;
@@ -117,7 +123,8 @@ private:
     Stored s, sd, ds, sl;
   };
   IdMap<model::ActionId, StoredFlags> stored_;
-  IdMap<model::ActionId, bool> was_q_;
+  IdMap<model::ActionId, bool> was_q_;  ///< the Q of the latest action control
+  IdMap<model::ActionId, bool> runs_;   ///< the body runs at the latest action control (`running(A)`)
   bool started_ = false;                 ///< the first tick has run the initial entries
   int agent_ = 0;                        ///< team machine: this engine's agent number
   std::vector<model::PlaceId> reports_;  ///< team machine: by agent, its last state (none: none yet)

@@ -169,11 +169,30 @@ bool team_context(const ast::Expr &e, ExprScope &s, const std::string &what) {
   return true;
 }
 
+/// The named action of the chart that `arg` names (a plain name), or none.
+model::ActionId named_action(const ast::Expr &arg, const ExprScope &s) {
+  if (!s.chart || arg.kind != ast::Expr::Kind::Name) return {};
+  const auto &actions = s.chart->ast.actions;
+  for (std::size_t i = 0; i < actions.size(); ++i)
+    if (actions[i].name.text == arg.name.text) return model::ActionId(i);
+  return {};
+}
+
+/// `active(A)` and `running(A)` of a named action A: its Q, and whether its body runs, as the
+/// latest action control left them (docs/iec.md "Action flags").
+model::Expr action_flag(const ast::Expr &e, ExprScope &s, model::ActionId action, bool running) {
+  model::Expr x = make(running ? K::ActionA : K::ActionQ, Type::Bool, e.range);
+  x.refer_to(action);
+  s.chart->out.reads_action_flags = true;
+  return x;
+}
+
 /// `active(P)`, `active(P.Q.R)`: each name after the first is a place or state of the chart
-/// the previous one runs.
+/// the previous one runs. `active(A)` of a named action A is its Q.
 std::optional<model::Expr> lower_active(const ast::Expr &e, ExprScope &s, bool statement) {
   if (!builtin_allowed(e, s, statement, "a place or state, or a path 'P.Q' into its sub-chart")) return std::nullopt;
   const ast::Expr &arg = *e.args[0];
+  if (model::ActionId a = named_action(arg, s)) return action_flag(e, s, a, false);
   std::vector<ast::Name> names;
   if (arg.kind == ast::Expr::Kind::Name) names.push_back(arg.name);
   else if (arg.kind == ast::Expr::Kind::Path)
@@ -601,6 +620,13 @@ std::optional<model::Expr> lower_call(const ast::Expr &e, ExprScope &s, bool sta
   const ast::Name &name = e.name;
   if (name.text == "elapsed") return lower_elapsed(e, s, statement);
   if (name.text == "active") return lower_active(e, s, statement);
+  // `running(A)` is a built-in only of a named action, so that an interface may still declare
+  // a function `running`.
+  if (name.text == "running" && e.args.size() == 1 && e.args[0])
+    if (model::ActionId a = named_action(*e.args[0], s)) {
+      if (!builtin_allowed(e, s, statement, "a named action")) return std::nullopt;
+      return action_flag(e, s, a, true);
+    }
   if (name.text == "succeeded" || name.text == "failed") return lower_outcome(e, s, statement);
   if (name.text == "team") return lower_team(e, s, statement);
   if (name.text == "agent") return lower_agent(e, s, statement);
