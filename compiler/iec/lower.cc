@@ -10,7 +10,9 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <iterator>
 #include <map>
+#include <memory>
 #include <set>
 #include <string>
 
@@ -294,23 +296,57 @@ bool lower(Pou &&pou, const std::optional<ast::Period> &period, ast::File &file,
     if (d.init) names.respell(*d.init);
     c.values.push_back(std::move(d));
   }
-  // An association naming a variable rather than an ACTION is IEC's Boolean action (the variable
-  // follows the action's Q): not read yet, and said so rather than "unknown action".
+  // An association naming a variable rather than an ACTION is IEC's Boolean action: the
+  // variable is the action's Q. It becomes a generated action `V_Q { V = active(V_Q); }`, held
+  // as written, run before the program's actions: TRUE while Q, FALSE in its final run
+  // (docs/iec.md "Boolean actions").
   std::map<std::string, const Variable *> variables;
   for (const Variable &v : pou.variables) variables.emplace(upper(v.name.text), &v);
   std::map<std::string, bool> actions;
   for (const Action &a : pou.actions) actions.emplace(upper(a.name.text), true);
+  std::set<std::string> names_taken;
+  for (const Variable &v : pou.variables) names_taken.insert(upper(v.name.text));
+  for (const Step &s : pou.steps) names_taken.insert(upper(s.name.text));
+  for (const Action &a : pou.actions) names_taken.insert(upper(a.name.text));
+  std::map<std::string, std::string_view> boolean_actions;  ///< variable (upper case) -> its action
+  std::vector<Action> generated;
   for (Step &s : pou.steps)
-    for (const ast::Association &as : s.associations) {
+    for (ast::Association &as : s.associations) {
       const std::string n = upper(as.action.text);
       auto v = variables.find(n);
-      if (v != variables.end() && !actions.count(n))
-        diag.error(as.action.range, ErrorKind::NotSupported,
-                   fmt::format("Boolean action '{}' (an association naming a variable, not an ACTION) is not "
-                               "supported yet",
-                               as.action.text))
-            .note(v->second->name.range, "the variable");
+      if (v == variables.end() || actions.count(n)) continue;
+      auto [it, fresh] = boolean_actions.emplace(n, std::string_view());
+      if (fresh) {
+        std::string name = std::string(v->second->name.text) + "_Q";
+        while (names_taken.count(upper(name))) name += '_';
+        names_taken.insert(upper(name));
+        it->second = file.strings.emplace_back(std::move(name));
+        Action &a = generated.emplace_back();
+        a.name = {it->second, as.action.range};
+        a.range = as.action.range;
+        ast::Stmt &st = a.body.emplace_back();
+        st.kind = ast::Stmt::Kind::Assign;
+        st.range = as.action.range;
+        st.target.emplace(ast::Name{v->second->name.text, as.action.range});
+        auto call = std::make_unique<ast::Expr>();
+        call->kind = ast::Expr::Kind::Call;
+        call->range = as.action.range;
+        call->name = {"active", as.action.range};
+        auto arg = std::make_unique<ast::Expr>();
+        arg->kind = ast::Expr::Kind::Name;
+        arg->range = as.action.range;
+        arg->name = a.name;
+        call->args.push_back(std::move(arg));
+        st.value = std::move(call);
+      }
+      as.action = {it->second, as.action.range};
     }
+  for (Action &a : generated) {
+    names.declare(a.name);
+    actions.emplace(upper(a.name.text), true);
+  }
+  pou.actions.insert(pou.actions.begin(), std::make_move_iterator(generated.begin()),
+                     std::make_move_iterator(generated.end()));
   for (Step &s : pou.steps) {
     ast::Place &p = c.places.emplace_back();
     p.initial = s.initial;

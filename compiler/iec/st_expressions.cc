@@ -345,9 +345,9 @@ StParser::Node StParser::name_use() {
       e->args.push_back(std::move(arg));
       return {std::move(e), 1};
     }
-      not_supported(range(t, member),
-                    fmt::format("'{}.{}': members of structures and function-block instances are not supported yet",
-                                t.text, member.text));
+    not_supported(range(t, member),
+                  fmt::format("'{}.{}': members of structures and function-block instances are not supported yet",
+                              t.text, member.text));
     return {};
   }
   if (tok().kind == StTok::LParen) {

@@ -42,9 +42,7 @@ public:
   bool outcome(model::PlaceId place, int status) const;
   /// `active(A)` / `running(A)` of a named action: its Q, or whether its body runs, as the latest
   /// action control left them (docs/iec.md "Action flags").
-  bool action_flag(model::ActionId action, bool running) const {
-    return running ? runs_[action] : was_q_[action];
-  }
+  bool action_flag(model::ActionId action, bool running) const { return running ? runs_[action] : was_q_[action]; }
   /// A team machine (docs/language.md "Teams"), as the C engine's X_set_agent and X_report:
   /// this engine's agent number (init() makes it 0), and agent `agent`'s state as it arrives
   /// (ignored for the own number, a number out of range or an invalid state). init() forgets
@@ -123,8 +121,8 @@ private:
     Stored s, sd, ds, sl;
   };
   IdMap<model::ActionId, StoredFlags> stored_;
-  IdMap<model::ActionId, bool> was_q_;  ///< the Q of the latest action control
-  IdMap<model::ActionId, bool> runs_;   ///< the body runs at the latest action control (`running(A)`)
+  IdMap<model::ActionId, bool> was_q_;   ///< the Q of the latest action control
+  IdMap<model::ActionId, bool> runs_;    ///< the body runs at the latest action control (`running(A)`)
   bool started_ = false;                 ///< the first tick has run the initial entries
   int agent_ = 0;                        ///< team machine: this engine's agent number
   std::vector<model::PlaceId> reports_;  ///< team machine: by agent, its last state (none: none yet)
