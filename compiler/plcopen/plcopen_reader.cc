@@ -264,10 +264,18 @@ void Reader::read_tasks(const pugi::xml_node &instances, iec::Project &project) 
 
 // ---------------------------------------------------------------- the entry point
 
+namespace {
+
+// A UTF-16 byte-order mark (some Windows tools save PLCopen files so).
+bool starts_utf16(std::string_view text) {
+  return text.size() >= 2 && ((text[0] == '\xFF' && text[1] == '\xFE') || (text[0] == '\xFE' && text[1] == '\xFF'));
+}
+
+}  // namespace
+
 bool is_xml_document(std::string_view text) {
-  // A UTF-16 file (some Windows tools save one): the reader says it is in the wrong encoding.
-  if (text.size() >= 2 && ((text[0] == '\xFF' && text[1] == '\xFE') || (text[0] == '\xFE' && text[1] == '\xFF')))
-    return true;
+  // Claimed, so that the reader says it is in the wrong encoding.
+  if (starts_utf16(text)) return true;
   std::size_t i = text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;
   while (i < text.size() && (text[i] == ' ' || text[i] == '\t' || text[i] == '\r' || text[i] == '\n')) ++i;
   return i < text.size() && text[i] == '<';
@@ -280,7 +288,7 @@ void read_plcopen_program(const std::string &main_path, std::string text, const 
   ast::File &file = *result.program.files.back();
   file.id = sources.add(main_path, std::move(text), language());
   const std::string &t = sources.file(file.id).text();
-  if (t.size() >= 2 && ((t[0] == '\xFF' && t[1] == '\xFE') || (t[0] == '\xFE' && t[1] == '\xFF'))) {
+  if (starts_utf16(t)) {
     diag.error({file.id, 0, 2}, ErrorKind::Xml,
                "the file is UTF-16: gfec reads PLCopen files in UTF-8; save it as UTF-8");
     return;
