@@ -131,6 +131,23 @@ void Reader::read_pou(const pugi::xml_node &node, iec::Project &project) {
     diag_.error(pou.name.range, ErrorKind::Plcopen, fmt::format("program '{}' has no body", pou.name.text));
     return;
   }
+  if (!sfc && bodies == 1) {
+    // A body of statements: ST as written, FBD and LD as the ST they mean (network_body.cc).
+    std::string_view lang = local_name(other);
+    if (lang == "ST") {
+      pou.body = statements(xml_.text_below(other));
+    } else if (lang == "FBD" || lang == "LD") {
+      pou.body = read_network(other);
+    } else {
+      not_supported(other, fmt::format("program '{}': a body in {} is not supported yet; gfec reads SFC, ST, "
+                                       "FBD and LD bodies",
+                                       pou.name.text, text::printable(lang)));
+      return;
+    }
+    if (!pou.body) return;  // reported
+    project.pous.push_back(std::move(pou));
+    return;
+  }
   if (!sfc || bodies > 1) {
     pugi::xml_node what = other ? other : sfc;
     diag_.error(at(what), ErrorKind::NotSupported,
