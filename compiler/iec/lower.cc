@@ -223,6 +223,12 @@ bool lower(Pou &&pou, const std::optional<ast::Period> &period, ast::File &file,
                            pou.name.text));
     return false;
   }
+  if (pou.body && !pou.steps.empty()) {
+    diag.error(pou.steps.front().range, ErrorKind::Syntax,
+               fmt::format("program '{}' has both statements and an SFC: IEC gives a POU one body", pou.name.text))
+        .note(pou.body_range, "the statements");
+    return false;
+  }
   Spellings names;
   for (const Variable &v : pou.variables) names.declare(v.name);
   for (const Step &s : pou.steps) names.declare(s.name);

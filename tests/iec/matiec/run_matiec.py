@@ -93,6 +93,8 @@ def print_line(name, typ):
 def final_scan(pous_c, edge_actions):
     """MatIEC's C with the standard's final scan added (see the module's text). P1 and P0 are not
     part of an action's Q (docs/iec.md): an action held only under them gets no final scan."""
+    if "// Actions execution" not in pous_c:
+        return None  # a program without an SFC: no action has a final scan
     body = pous_c.index("// Actions execution")
     end = pous_c.index("goto __end;", body)
 
