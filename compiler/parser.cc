@@ -887,22 +887,36 @@ Stmt Parser::loop_statement() {
     // parts, a condition in the second, each one required.
     s.kind = Stmt::Kind::For;
     expect(Tok::LParen, "after 'for'");
-    for (int part = 0; part < 2; ++part) {
-      const char *what = part == 0 ? "expected an assignment as the first part of 'for' (i = 0)"
-                                   : "expected an assignment as the third part of 'for' (i += 1)";
-      std::uint32_t at_part = here();
-      if (!at(Tok::Ident)) fail(what);
-      Name target = name();
-      if (!at(Tok::Assign) && !at(Tok::PlusAssign) && !at(Tok::MinusAssign)) fail(what);
-      s.else_block.push_back(assignment(std::move(target), at_part));
-      if (part == 0) {
-        expect(Tok::Semi, "after the first part of 'for'");
-        if (at(Tok::Semi)) fail("expected the condition of 'for' (gfec's 'for' needs all three parts)");
-        s.value = expr();
-        expect(Tok::Semi, "after the condition of 'for'");
+    try {
+      for (int part = 0; part < 2; ++part) {
+        const char *what = part == 0 ? "expected an assignment as the first part of 'for' (i = 0)"
+                                     : "expected an assignment as the third part of 'for' (i += 1)";
+        std::uint32_t at_part = here();
+        if (!at(Tok::Ident)) fail(what);
+        Name target = name();
+        if (!at(Tok::Assign) && !at(Tok::PlusAssign) && !at(Tok::MinusAssign)) fail(what);
+        s.else_block.push_back(assignment(std::move(target), at_part));
+        if (part == 0) {
+          expect(Tok::Semi, "after the first part of 'for'");
+          if (at(Tok::Semi)) fail("expected the condition of 'for' (gfec's 'for' needs all three parts)");
+          s.value = expr();
+          expect(Tok::Semi, "after the condition of 'for'");
+        }
       }
+      expect(Tok::RParen, "to close the header of 'for'");
+    } catch (const SyntaxError &) {
+      // The header's own `;`s would stop the usual recovery inside it: skip to its `)` and read
+      // the body, so one mistake in the header is one error. The tree is not validated.
+      for (int depth = 0; !at(Tok::End) && !at(Tok::LBrace) && !at(Tok::RBrace);) {
+        if (at(Tok::LParen)) ++depth;
+        if (at(Tok::RParen) && depth-- == 0) {
+          advance();
+          break;
+        }
+        advance();
+      }
+      s.else_block = std::vector<Stmt>();
     }
-    expect(Tok::RParen, "to close the header of 'for'");
     if (!at(Tok::LBrace)) fail("expected '{' after the header of 'for' (a loop's body is a block)");
     s.then_block = block();
   }

@@ -1,7 +1,10 @@
 // Loops, `break` and `return` (docs/language.md §10): parsed, checked with located errors, run by
 // the interpreter as C runs them, and stopped by the interpreter's bound when they run away.
+#include "iec/st_fragment.h"
 #include "interpreter_support.h"
 #include "validate_fixture.h"
+
+#include <deque>
 
 using namespace gfec;
 using test::compile;
@@ -21,14 +24,16 @@ std::string first_tick_calls(const std::string &action, const std::string &vars 
   env.script("Si", {3}).script("Sb", {1});
   std::string log = run_log(*c, env, 1);
   std::string calls;
-  for (std::size_t at = 0, nl; (nl = log.find('\n', at)) != std::string::npos; at = nl + 1)
-    if (log.compare(at, 7, "call I(") == 0 || log.find("error", at) < nl) calls += log.substr(at, nl - at + 1);
+  for (std::size_t at = 0, nl; (nl = log.find('\n', at)) != std::string::npos; at = nl + 1) {
+    std::string_view line(log.data() + at, nl - at + 1);  // a million lines: search each line only
+    if (line.compare(0, 7, "call I(") == 0 || line.find("error") != std::string_view::npos) calls += line;
+  }
   return calls;
 }
 
 }  // namespace
 
-TEST_CASE("loops: while, do-while and for parse as statements in every block") {
+TEST_CASE("loops: while, do and for parse as statements in every block") {
   test::FrontEnd fe({{"t.sfc", R"(
 sfc S {
   var int i;
@@ -65,7 +70,7 @@ TEST_CASE("loops: syntax errors say what the loop needs") {
     return parse_errors("sfc S {\n  var int i;\n  initial place A { " + stmt + " }\n}\n");
   };
   CHECK(one("for (; i < 3; i += 1) { }") ==
-        "t.sfc:3:26: error: expected an assignment as the first part of 'for' (i = 0) [syntax]\n"
+        "t.sfc:3:26: error: expected an assignment as the first part of 'for' (i = 0), found ';' [syntax]\n"
         "   initial place A { for (; i < 3; i += 1) { } }\n"
         "                          ^\n");
   CHECK(one("for (i = 0; ; i += 1) { }").find("expected the condition of 'for' (gfec's 'for' needs all three parts)") !=
@@ -78,7 +83,7 @@ TEST_CASE("loops: syntax errors say what the loop needs") {
   CHECK(one("return 3;").find("expected ';' after 'return' (a statement returns no value)") != std::string::npos);
 }
 
-TEST_CASE("loops: the validator checks conditions, break and loops that cannot end", "[validate]") {
+TEST_CASE("loops: the validator checks conditions and break and refuses loops that cannot end", "[validate]") {
   Validated r({{"t.sfc", R"--(import "bot.iface";
 sfc S {
   var int n = 0;
@@ -109,17 +114,17 @@ t.sfc:8:12: error: this 'while' loop never ends: its condition is always true an
      while (true) { n += 1; }
             ^~~~
 t.sfc:8:12: note: a tick must end: add a 'break' or 'return' that the body reaches, or a condition that becomes false
-t.sfc:9:56: error: this 'while' loop never ends: its condition is always true and its body has no 'break' or 'return' [loop]
+t.sfc:9:57: error: this 'while' loop never ends: its condition is always true and its body has no 'break' or 'return' [loop]
      do { for (n = 0; n < 3; n += 1) { break; } } while (1 < 2);
-                                                        ^~~~~
-t.sfc:9:56: note: a tick must end: add a 'break' or 'return' that the body reaches, or a condition that becomes false
+                                                         ^~~~~
+t.sfc:9:57: note: a tick must end: add a 'break' or 'return' that the body reaches, or a condition that becomes false
 t.sfc:11:14: error: incompatible types when assigning to 'n' of type 'int' from type 'bool' [type-mismatch]
      for (n = true; n < 3; n += 1) { }
               ^~~~
 )--");
 }
 
-TEST_CASE("loops: the model holds the loop, its header and its body", "[validate]") {
+TEST_CASE("loops: the model holds the loop with its header and its body", "[validate]") {
   Validated r({{"t.sfc", R"--(import "bot.iface";
 sfc S {
   var int n = 0;
@@ -166,4 +171,52 @@ TEST_CASE("loops: the interpreter stops a loop that runs away, at the loop") {
   // The count is per execution of the loop statement: a million passes in all is fine.
   CHECK(first_tick_calls("for (i = 0; i < 2000; i += 1) { for (j = 0; j < 999; j += 1) { n += 1; } } I(n);",
                          "var int i; var int j; var int n;") == "call I(1998000)\n");
+}
+
+TEST_CASE("loops: IEC FOR, WHILE, REPEAT, EXIT and RETURN read as the chart's loops", "[iec]") {
+  std::deque<std::string> strings;
+  auto read = [&](const std::string &text, Diagnostics &diag) {
+    return iec::parse_st_statements(text, iec::FragmentPlace::at(0, 0), strings, diag);
+  };
+  Diagnostics diag;
+  auto b = read("FOR i := 1 TO n DO EXIT; END_FOR; FOR i := 9 TO 0 BY -3 DO RETURN; END_FOR "
+                "FOR i := 0 TO 5 BY s DO END_FOR; WHILE x < 3 DO x := x + 1; END_WHILE; "
+                "REPEAT x := x - 1; UNTIL x = 0 END_REPEAT; y := MOD(x, 4);",
+                diag);
+  REQUIRE(b);
+  CHECK_FALSE(diag.has_errors());
+  REQUIRE(b->size() == 6);
+  const ast::Stmt &up = (*b)[0];
+  REQUIRE(up.kind == ast::Stmt::Kind::For);
+  CHECK(up.value->binary_op == BinaryOp::Le);
+  CHECK(up.else_block[1].assign_op == AssignOp::Add);
+  CHECK(up.else_block[1].value->text() == "1");
+  CHECK(up.then_block[0].kind == ast::Stmt::Kind::Break);
+  const ast::Stmt &down = (*b)[1];
+  CHECK(down.value->binary_op == BinaryOp::Ge);  // a literal negative step counts down
+  CHECK(down.else_block[1].assign_op == AssignOp::Sub);
+  CHECK(down.else_block[1].value->text() == "3");
+  CHECK(down.then_block[0].kind == ast::Stmt::Kind::Return);
+  const ast::Stmt &by = (*b)[2];
+  CHECK(by.value->binary_op == BinaryOp::Or);  // the step's sign is tested before each pass
+  CHECK(by.else_block[1].value->kind == ast::Expr::Kind::Name);
+  CHECK((*b)[3].kind == ast::Stmt::Kind::While);
+  const ast::Stmt &repeat = (*b)[4];
+  CHECK(repeat.kind == ast::Stmt::Kind::DoWhile);
+  CHECK(repeat.value->unary_op == UnaryOp::Not);  // UNTIL c: again while !(c)
+  CHECK((*b)[5].value->args[0]->binary_op == BinaryOp::Mod);
+
+  auto one_error = [&](const std::string &text) {
+    Diagnostics d;
+    read(text, d);
+    REQUIRE(d.error_count() == 1);
+    return d.all().front().check() + ": " + d.all().front().message;
+  };
+  CHECK(one_error("EXIT;") == "loop: 'EXIT' outside a loop: it ends the innermost FOR, WHILE or REPEAT");
+  CHECK(one_error("FOR i := 1 TO 3 BY 0 DO x := i; END_FOR;") ==
+        "loop: the step of 'FOR' is 0: the loop would never end");
+  CHECK(one_error("FOR i := 1 TO 3 x := i; END_FOR;") == "syntax: expected 'DO' after the header of 'FOR', not 'x'");
+  CHECK(one_error("REPEAT x := 1; END_REPEAT;") ==
+        "syntax: expected 'UNTIL' to end the body of 'REPEAT', not 'END_REPEAT'");
+  CHECK(one_error("WHILE TRUE DO CONTINUE; END_WHILE;").rfind("not-supported: ", 0) == 0);
 }

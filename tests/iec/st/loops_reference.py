@@ -1,5 +1,6 @@
 # Independent reference for tests/iec/st/loops.expected: IEC scan semantics (docs/iec.md) with
 # the action bodies written out in Python, C integer division (truncation).
+# Usage: python3 loops_reference.py loops.csv > loops.expected
 import csv, sys
 def cdiv(a, b): q = abs(a) // abs(b); return q if (a >= 0) == (b >= 0) else -q
 rows = list(csv.DictReader(open(sys.argv[1])))
