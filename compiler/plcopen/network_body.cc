@@ -43,11 +43,10 @@ struct Operator {
 };
 
 constexpr Operator kOperators[] = {
-    {"ADD", "+", true, false},   {"MUL", "*", true, false},    {"SUB", "-", false, false},
-    {"DIV", "/", false, false},  {"MOD", "MOD", false, false}, {"AND", "AND", true, false},
-    {"OR", "OR", true, false},   {"XOR", "XOR", true, false},  {"GT", ">", true, true},
-    {"GE", ">=", true, true},    {"EQ", "=", true, true},      {"LT", "<", true, true},
-    {"LE", "<=", true, true},    {"NE", "<>", false, true},
+    {"ADD", "+", true, false},    {"MUL", "*", true, false},   {"SUB", "-", false, false}, {"DIV", "/", false, false},
+    {"MOD", "MOD", false, false}, {"AND", "AND", true, false}, {"OR", "OR", true, false},  {"XOR", "XOR", true, false},
+    {"GT", ">", true, true},      {"GE", ">=", true, true},    {"EQ", "=", true, true},    {"LT", "<", true, true},
+    {"LE", "<=", true, true},     {"NE", "<>", false, true},
 };
 
 const Operator *operator_of(const std::string &type) {
@@ -129,8 +128,8 @@ private:
     if (k == "coil") {
       target = r_.xml_.text_below(child(n, "variable"));
       if (std::string_view edge = n.attribute("edge").value(); !edge.empty() && edge != "none")
-        return fail(n, fmt::format("{}: an edge coil ('{}') is not supported yet", r_.describe(n),
-                                   text::printable(edge)));
+        return fail(n,
+                    fmt::format("{}: an edge coil ('{}') is not supported yet", r_.describe(n), text::printable(edge)));
     } else {
       target = r_.xml_.text_below(child(n, "expression"));
     }
@@ -183,8 +182,8 @@ private:
     const std::string ref = connection.attribute("refLocalId").value();
     auto it = by_id_.find(ref);
     if (it == by_id_.end())
-      return broken(connection, fmt::format("a connection to localId {}, which the body does not have",
-                                          text::printable(ref)));
+      return broken(connection,
+                    fmt::format("a connection to localId {}, which the body does not have", text::printable(ref)));
     const pugi::xml_node n = it->second;
     if (!on_path_.insert(ref).second)
       return fail(n, fmt::format("{} feeds itself: a network loop without a function-block instance in it has "
@@ -217,8 +216,8 @@ private:
     }
     if (k == "contact") {
       if (std::string_view edge = n.attribute("edge").value(); !edge.empty() && edge != "none")
-        return fail(n, fmt::format("{}: an edge contact ('{}') is not supported yet", r_.describe(n),
-                                   text::printable(edge)));
+        return fail(
+            n, fmt::format("{}: an edge contact ('{}') is not supported yet", r_.describe(n), text::printable(edge)));
       LocatedText var = r_.xml_.text_below(child(n, "variable"));
       if (var.blank()) return broken(n, fmt::format("{} names no variable", r_.describe(n)));
       // A contact on the power rail is its variable; one further along, the power AND it.
@@ -250,13 +249,15 @@ private:
     const std::string type = iec::upper(block.attribute("typeName").value());
     std::string pin = connection.attribute("formalParameter").value();
     if (*block.attribute("instanceName").value()) {
-      if (pin.empty()) return broken(connection, fmt::format("a connection from {} names no output", r_.describe(block)));
+      if (pin.empty())
+        return broken(connection, fmt::format("a connection from {} names no output", r_.describe(block)));
       piece(out, block.attribute("instanceName").value(), block);
       piece(out, ".", block);
       piece(out, pin, block);
       return true;
     }
-    if (iec::upper(pin) == "ENO") return fail(connection, fmt::format("{}: ENO is not supported yet", r_.describe(block)));
+    if (iec::upper(pin) == "ENO")
+      return fail(connection, fmt::format("{}: ENO is not supported yet", r_.describe(block)));
     std::vector<pugi::xml_node> inputs;
     for (pugi::xml_node v : child(block, "inputVariables").children()) {
       if (local_name(v) != "variable") continue;
@@ -274,7 +275,8 @@ private:
     };
     const Operator *op = operator_of(type);
     if (type == "NOT" || type == "MOVE") {
-      if (inputs.size() != 1) return broken(block, fmt::format("{} has {} inputs, not one", r_.describe(block), inputs.size()));
+      if (inputs.size() != 1)
+        return broken(block, fmt::format("{} has {} inputs, not one", r_.describe(block), inputs.size()));
       piece(out, type == "NOT" ? "(NOT " : "(", block);
       if (!input(0)) return false;
       piece(out, ")", block);
@@ -282,8 +284,9 @@ private:
     }
     if (op) {
       if (inputs.size() < 2 || (!op->extensible && inputs.size() != 2))
-        return broken(block, fmt::format("{} has {} input{}; {} takes {}", r_.describe(block), inputs.size(),
-                                       inputs.size() == 1 ? "" : "s", op->name, op->extensible ? "two or more" : "two"));
+        return broken(block,
+                      fmt::format("{} has {} input{}; {} takes {}", r_.describe(block), inputs.size(),
+                                  inputs.size() == 1 ? "" : "s", op->name, op->extensible ? "two or more" : "two"));
       piece(out, "(", block);
       for (std::size_t i = 0; i + 1 < inputs.size(); ++i) {
         if (op->comparison) {
@@ -322,10 +325,9 @@ private:
 
   /// Whether gfec reads element `n` of a network body; reports it otherwise.
   bool known(const pugi::xml_node &n) {
-    static const char *const kRead[] = {"inVariable", "outVariable", "inOutVariable", "block",
-                                        "contact",    "coil",        "leftPowerRail", "rightPowerRail",
-                                        "connector",  "continuation", "comment",      "documentation",
-                                        "addData"};
+    static const char *const kRead[] = {"inVariable", "outVariable",   "inOutVariable",  "block",     "contact",
+                                        "coil",       "leftPowerRail", "rightPowerRail", "connector", "continuation",
+                                        "comment",    "documentation", "addData"};
     std::string_view k = local_name(n);
     for (const char *x : kRead)
       if (k == x) return true;

@@ -219,3 +219,19 @@ test('json: SD, DS and SL associations with their durations; DS times its place,
   // DS reads its place's timer, as elapsed() does; SD and SL time the action's own flag.
   assert.deepEqual(doc.places.map((p) => [p.name, p.timed]), [['Idle', false], ['Arm', false], ['Run', true]]);
 });
+
+test('json: loops, break and return as statements (tests/run/loops.sfc)', () => {
+  const doc = emit(path.join(SOURCE_DIR, 'tests', 'run', 'loops.sfc'));
+  const scan = doc.places.find((p) => p.name === 'Scan').action;
+  const outer = scan[1];
+  assert.equal(outer.kind, 'for');
+  assert.equal(outer.init.kind, 'assign');
+  assert.equal(outer.init.op, '=');
+  assert.equal(outer.step.op, '+=');
+  assert.equal(outer.body[0].kind, 'for');
+  assert.equal(outer.body[0].body[0].then[0].kind, 'break');
+  assert.deepEqual(scan.map((s) => s.kind), ['assign', 'for', 'call', 'if', 'while', 'do_while', 'call']);
+  assert.equal(scan[3].then[0].kind, 'return');
+  assert.equal(scan[4].condition.type, 'bool');
+  assert.equal(scan[5].body.length, 1);
+});
