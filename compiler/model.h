@@ -102,6 +102,10 @@ struct Expr {
     // Team machines (docs/language.md "Teams").
     TeamCount,  ///< `team(S)`: place() = state S of this chart. Type Int.
     Agent,      ///< `agent()`. Type Int.
+    /// A conversion `T(x)` (docs/language.md §4), args[0] = x, type T: between integer types
+    /// and to and from `time` exact (a value that does not fit is an error), a floating value to
+    /// an integer rounded to nearest, ties away from zero (IEC's REAL_TO_INT).
+    Convert,
   };
   Kind kind = Kind::Bool;
   Type type = Type::Bool;
