@@ -668,7 +668,7 @@ private:
       // stricter warnings of docs/c-engine.md): an int meeting a float becomes a float, a float
       // meeting a double a double; an int meeting a double converts exactly and stays implicit.
       const Type a = e.args[0].type, b = e.args[1].type;
-      if (model::is_numeric(a) && model::is_numeric(b) && a != b) {
+      if (model::is_numeric(a) && model::is_numeric(b) && a != b && (is_floating(a) || is_floating(b))) {
         const Type common = a == Type::Double || b == Type::Double ? Type::Double : Type::Float;
         if (!(common == Type::Double && a == Type::Int)) l = converted(std::move(l), e.args[0], common);
         if (!(common == Type::Double && b == Type::Int)) r = converted(std::move(r), e.args[1], common);
