@@ -348,6 +348,9 @@ public:
 
   Rendered render(const Expr &e) {
     if (&e == replaced_) return {replacement_};
+    // A folded sized integer or time is its value alone: chart text converted from another
+    // language spells large ones as arithmetic (chart_expr.cc), which must give the same engine.
+    if (written_as_value(e) && is_wide(e.type)) return wide_literal(e);
     if (written_as_value(e)) {
       in_folded_ = true;
       Rendered spelled = render(e);

@@ -136,19 +136,20 @@ std::optional<model::Expr> number_literal(const ast::Expr &e, Diagnostics &diag)
     }
     // Beyond int: an int64 literal, which only a type that holds it takes (expr.cc,
     // retype_constant; docs/language.md §4).
-    std::int64_t big = 0;
-    bool digits = !e.text().empty() && e.text().size() <= 18;
+    constant::Wide big = 0;  // chart text has at most 18 digits; an IEC LINT literal up to INT64_MAX
+    bool digits = !e.text().empty();
     for (char c : e.text()) {
-      digits = digits && c >= '0' && c <= '9';
+      digits = digits && c >= '0' && c <= '9' && big <= INT64_MAX;
       if (digits) big = big * 10 + (c - '0');
     }
+    digits = digits && big <= INT64_MAX;
     if (!digits) {
       diag.error(e.range, ErrorKind::NotConstant,
                  fmt::format("integer constant '{}' is too large for 'int'", e.text()));
       return std::nullopt;
     }
     x.type = Type::Int64;
-    x.int_value = big;
+    x.int_value = static_cast<std::int64_t>(big);
     return x;
   }
   auto v = constant::float_literal(e.text());
