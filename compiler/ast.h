@@ -73,20 +73,22 @@ struct Expr {
 // ---------------------------------------------------------------- statements
 
 struct Stmt {
-  enum class Kind : std::uint8_t { Call, Assign, Verbatim, If };
+  /// While, DoWhile, For, Break, Return: docs/language.md §10 "Loops".
+  enum class Kind : std::uint8_t { Call, Assign, Verbatim, If, While, DoWhile, For, Break, Return };
   Kind kind;
   AssignOp assign_op = AssignOp::Set;
   bool has_else = false;  ///< Kind::If: `else` was written
   bool else_if = false;   ///< Kind::If: else_block is exactly the `if` of an `else if`
   SourceRange range;
   ExprPtr call;   ///< Kind::Call: an Expr of Kind::Call
-  ExprPtr value;  ///< Kind::Assign; Kind::If: the condition
+  ExprPtr value;  ///< Kind::Assign; Kind::If, While, DoWhile, For: the condition
   // What only one kind of statement has lives on the heap, a pointer wide when absent: a chart
   // may hold a million statements (docs/performance.md).
   HeapOptional<Name> target;           ///< Kind::Assign
   HeapOptional<std::string> verbatim;  ///< Kind::Verbatim: the text between %{ and %}
-  HeapVector<Stmt> then_block;         ///< Kind::If
-  HeapVector<Stmt> else_block;         ///< Kind::If: empty without `else`; `else if` is one If in it
+  HeapVector<Stmt> then_block;         ///< Kind::If; While, DoWhile, For: the loop's body
+  HeapVector<Stmt> else_block;         ///< Kind::If: empty without `else`; `else if` is one If in it;
+                                       ///< Kind::For: the header's two assignments, first and third
 };
 
 using Block = std::vector<Stmt>;

@@ -83,6 +83,8 @@ public:
                 std::uint32_t code_begin);
 
   bool line_directives() const { return line_directives_; }
+  /// A number no other call on this writer returns: a label that is unique in the file.
+  unsigned new_label() { return labels_++; }
   const std::string &text() const { return out_; }
   std::string take() { return std::move(out_); }
 
@@ -116,6 +118,7 @@ private:
   int depth_ = 0;
   unsigned lines_ = 0;  ///< lines completed so far
   bool pointing_away_ = false;
+  unsigned labels_ = 0;
 };
 
 /// `text` as a C string literal, quotes included.

@@ -52,6 +52,11 @@ const Keyword kKeywords[] = {
     {"test", Tok::KwTest},
     {"if", Tok::KwIf},
     {"else", Tok::KwElse},
+    {"while", Tok::KwWhile},
+    {"do", Tok::KwDo},
+    {"for", Tok::KwFor},
+    {"break", Tok::KwBreak},
+    {"return", Tok::KwReturn},
     {"team", Tok::KwTeam},
 };
 

@@ -165,7 +165,8 @@ private:
 };
 
 struct Stmt {
-  enum class Kind : std::uint8_t { Call, Assign, Verbatim, If };
+  /// While, DoWhile, For, Break, Return: docs/language.md §10 "Loops".
+  enum class Kind : std::uint8_t { Call, Assign, Verbatim, If, While, DoWhile, For, Break, Return };
   Kind kind = Kind::Call;
   AssignOp op = AssignOp::Set;
   bool else_if = false;  ///< Kind::If: else_block is one If written as `else if`
@@ -173,14 +174,17 @@ struct Stmt {
   VarId var;                     ///< Kind::Assign
   std::uint32_t code_begin = 0;  ///< Kind::Verbatim: where `verbatim` starts in range.file (after `%{`); 0: unknown
   /// Kind::Call: the call (an Expr of Kind::Call; its result, if any, is discarded);
-  /// Kind::Assign: the value; Kind::If: the condition (Bool). One expression per statement:
+  /// Kind::Assign: the value; Kind::If, While, DoWhile, For: the condition (Bool). One expression per statement:
   /// a chart may hold a million statements (docs/performance.md).
   Expr expr;
   // What only some kinds of statement have lives on the heap, a pointer wide when absent: a
   // place's action is one statement of a million in a large chart (docs/performance.md).
   HeapOptional<std::string> verbatim;  ///< Kind::Verbatim
-  HeapVector<Stmt> then_block;         ///< Kind::If
-  HeapVector<Stmt> else_block;         ///< Kind::If: empty when there is no `else`
+  HeapVector<Stmt> then_block;         ///< Kind::If; While, DoWhile, For: the loop's body
+  /// Kind::If: empty when there is no `else`. Kind::For: the header's assignments, exactly two:
+  /// the first part (run once) and the third (run after each pass of the body), so every walk
+  /// over statements sees them.
+  HeapVector<Stmt> else_block;
 };
 
 // ---------------------------------------------------------------- interface

@@ -200,6 +200,10 @@ private:
   // ------------------------------------------------------------ statements and expressions
   Stmt statement();
   Stmt if_statement(int chain = 0);  ///< chain: the `else if`s before this `if`
+  Stmt loop_statement();
+  Stmt assignment(Name target, std::uint32_t begin);
+  /// `(` expr `)`: a loop's condition.
+  ExprPtr loop_condition(const char *keyword);
   ExprPtr expr() { return binary(1); }
   ExprPtr binary(int min_precedence);
   ExprPtr unary();
@@ -798,10 +802,20 @@ ExprPtr Parser::path(Name first) {
 }
 
 //G statement: call ';' | IDENT ( '=' | '+=' | '-=' ) expr ';' | VERBATIM | if_statement
+//G   | loop_statement | 'break' ';' | 'return' ';'
 Stmt Parser::statement() {
   std::uint32_t begin = here();
   Stmt s;
   if (at(Tok::KwIf)) return if_statement();
+  if (at(Tok::KwWhile) || at(Tok::KwDo) || at(Tok::KwFor)) return loop_statement();
+  if (at(Tok::KwBreak) || at(Tok::KwReturn)) {
+    s.kind = at(Tok::KwBreak) ? Stmt::Kind::Break : Stmt::Kind::Return;
+    const char *word = at(Tok::KwBreak) ? "after 'break'" : "after 'return' (a statement returns no value)";
+    advance();
+    expect(Tok::Semi, word);
+    s.range = from(begin);
+    return s;
+  }
   if (at(Tok::KwElse)) fail("expected a statement ('else' must follow the block of an 'if')");
   if (at(Tok::Verbatim)) {
     Token t = take();
@@ -810,14 +824,10 @@ Stmt Parser::statement() {
     s.range = t.range;
     return s;
   }
-  if (!at(Tok::Ident)) fail("expected a statement (a call, an assignment, 'if' or %{ ... %})");
+  if (!at(Tok::Ident)) fail("expected a statement (a call, an assignment, 'if', a loop or %{ ... %})");
   Name target = name();
   if (at(Tok::Assign) || at(Tok::PlusAssign) || at(Tok::MinusAssign)) {
-    Tok op = take().kind;
-    s.kind = Stmt::Kind::Assign;
-    s.target = std::move(target);
-    s.assign_op = op == Tok::Assign ? AssignOp::Set : op == Tok::PlusAssign ? AssignOp::Add : AssignOp::Sub;
-    s.value = expr();
+    s = assignment(std::move(target), begin);
   } else if (at(Tok::LParen)) {
     auto call = make(Expr::Kind::Call, target.range);
     call->name = std::move(target);
@@ -829,6 +839,87 @@ Stmt Parser::statement() {
     fail("expected '(' or an assignment after the name");
   }
   expect(Tok::Semi, "after the statement");
+  s.range = from(begin);
+  return s;
+}
+
+/// `NAME op expr` after its name, without the `;`: a statement, or a part of a `for`'s header.
+Stmt Parser::assignment(Name target, std::uint32_t begin) {
+  Stmt s;
+  Tok op = take().kind;
+  s.kind = Stmt::Kind::Assign;
+  s.target = std::move(target);
+  s.assign_op = op == Tok::Assign ? AssignOp::Set : op == Tok::PlusAssign ? AssignOp::Add : AssignOp::Sub;
+  s.value = expr();
+  s.range = from(begin);
+  return s;
+}
+
+ExprPtr Parser::loop_condition(const char *keyword) {
+  expect(Tok::LParen, fmt::format("after '{}'", keyword).c_str());
+  ExprPtr condition = expr();
+  expect(Tok::RParen, fmt::format("to close the condition of '{}'", keyword).c_str());
+  return condition;
+}
+
+//G loop_statement: 'while' '(' expr ')' block | 'do' block 'while' '(' expr ')' ';'
+//G   | 'for' '(' IDENT ( '=' | '+=' | '-=' ) expr ';' expr ';' IDENT ( '=' | '+=' | '-=' ) expr ')' block
+Stmt Parser::loop_statement() {
+  DepthGuard guard(*this);
+  std::uint32_t begin = here();
+  Stmt s;
+  const Tok keyword = take().kind;
+  if (keyword == Tok::KwWhile) {
+    s.kind = Stmt::Kind::While;
+    s.value = loop_condition("while");
+    if (!at(Tok::LBrace)) fail("expected '{' after the condition of 'while' (a loop's body is a block)");
+    s.then_block = block();
+  } else if (keyword == Tok::KwDo) {
+    s.kind = Stmt::Kind::DoWhile;
+    if (!at(Tok::LBrace)) fail("expected '{' after 'do' (a loop's body is a block)");
+    s.then_block = block();
+    if (!at(Tok::KwWhile)) fail("expected 'while' after the body of 'do'");
+    advance();
+    s.value = loop_condition("while");
+    expect(Tok::Semi, "after 'do { ... } while (...)'");
+  } else {
+    // C's `for`, restricted to what a counted loop needs: an assignment in the first and third
+    // parts, a condition in the second, each one required.
+    s.kind = Stmt::Kind::For;
+    expect(Tok::LParen, "after 'for'");
+    try {
+      for (int part = 0; part < 2; ++part) {
+        const char *what = part == 0 ? "expected an assignment as the first part of 'for' (i = 0)"
+                                     : "expected an assignment as the third part of 'for' (i += 1)";
+        std::uint32_t at_part = here();
+        if (!at(Tok::Ident)) fail(what);
+        Name target = name();
+        if (!at(Tok::Assign) && !at(Tok::PlusAssign) && !at(Tok::MinusAssign)) fail(what);
+        s.else_block.push_back(assignment(std::move(target), at_part));
+        if (part == 0) {
+          expect(Tok::Semi, "after the first part of 'for'");
+          if (at(Tok::Semi)) fail("expected the condition of 'for' (gfec's 'for' needs all three parts)");
+          s.value = expr();
+          expect(Tok::Semi, "after the condition of 'for'");
+        }
+      }
+      expect(Tok::RParen, "to close the header of 'for'");
+    } catch (const SyntaxError &) {
+      // The header's own `;`s would stop the usual recovery inside it: skip to its `)` and read
+      // the body, so one mistake in the header is one error. The tree is not validated.
+      for (int depth = 0; !at(Tok::End) && !at(Tok::LBrace) && !at(Tok::RBrace);) {
+        if (at(Tok::LParen)) ++depth;
+        if (at(Tok::RParen) && depth-- == 0) {
+          advance();
+          break;
+        }
+        advance();
+      }
+      s.else_block = std::vector<Stmt>();
+    }
+    if (!at(Tok::LBrace)) fail("expected '{' after the header of 'for' (a loop's body is a block)");
+    s.then_block = block();
+  }
   s.range = from(begin);
   return s;
 }

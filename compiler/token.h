@@ -16,7 +16,8 @@ enum class Tok {
   KwState, KwTransition, KwWhen, KwSuccess, KwFailure, KwPost, KwPeriod, KwActor, KwComputation,
   KwSupervisor, KwSupervise, KwEvents, KwStart, KwTerminate, KwIgnore, KwConfig, KwIn, KwOut,
   KwEntry, KwExit, KwTrue, KwFalse, KwRuns, KwTest,
-  KwIf, KwElse, KwTeam,  // statements (§10) and team machines (§11)
+  KwIf, KwElse, KwWhile, KwDo, KwFor, KwBreak, KwReturn,  // statements (§10)
+  KwTeam,  // team machines (§11)
   // punctuation
   LBrace, RBrace, LParen, RParen, Semi, Comma, Colon, Arrow, Assign, PlusAssign, MinusAssign,
   Plus, Minus, Star, Slash, Percent, Lt, Le, Gt, Ge, EqEq, NotEq, AndAnd, OrOr, Not, Pipe, Dot,

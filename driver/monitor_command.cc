@@ -103,7 +103,7 @@ std::string source_name(const MonitorOptions &o) {
 /// Reads the stream on `fd` to its end into `decoder`, whose sink is `sink`: a refused stream is
 /// reported at `refused_at` and ends the page; otherwise the page is told how the stream ended and
 /// `counts` (the decoder's figures) is printed. Returns the command's exit code.
-int read_to_end(const MonitorOptions &o, int fd, double silence, monitor::RunSink &sink, monitor::FrameStream &decoder,
+int read_to_end(const std::string &input, int fd, double silence, monitor::RunSink &sink, monitor::FrameStream &decoder,
                 live::LiveRecording *page, DiagnosticReport &report, const pipeline::Compilation &c,
                 const SourceRange &refused_at, const std::function<std::string()> &counts, std::ostream &err) {
   const std::string read_error = monitor::read_stream(
@@ -112,17 +112,28 @@ int read_to_end(const MonitorOptions &o, int fd, double silence, monitor::RunSin
   if (fd != 0) ::close(fd);
   decoder.finish();
   if (decoder.refused()) {
-    report_refusal(report, o.input, c, refused_at, decoder.refusal());
+    report_refusal(report, input, c, refused_at, decoder.refusal());
     if (page) page->ended(decoder.refusal());
     return kExitInputError;
   }
   if (page) page->ended(read_error.empty() ? "the end of the stream" : "reading the trace: " + read_error);
   err << "gfec monitor: " << counts() << '\n';
   if (!read_error.empty()) {
-    report.tool_error(o.input, "reading the trace: " + read_error, false);
+    report.tool_error(input, "reading the trace: " + read_error, false);
     return kExitUsageOrIo;
   }
   return kExitOk;
+}
+
+/// Where decoded frames go: the log, the live page, or both through `both` (which it fills).
+/// `Sink` is the decoder's sink interface (monitor::RunSink for charts, monitor::PlanSink for
+/// plans); the page and the tee implement both.
+template <class Sink, class Log>
+Sink &pick_sink(Log &log, live::LiveRecording *page, bool want_log, std::unique_ptr<live::TeeSink> &both) {
+  if (want_log && page) both = std::make_unique<live::TeeSink>(static_cast<Sink &>(log), *page);
+  if (both) return *both;
+  if (page) return *page;
+  return log;
 }
 
 /// The source's file descriptor (0 for stdin), or -1 with `why` set.
@@ -155,15 +166,12 @@ int monitor_plan(const MonitorOptions &o, const pipeline::Compilation &c, model:
   }
   monitor::PlanLogSink log(c.model, layout, out);
   std::unique_ptr<live::TeeSink> both;
-  if (o.log && page) both = std::make_unique<live::TeeSink>(static_cast<monitor::PlanSink &>(log), *page);
-  monitor::PlanSink &sink = both   ? static_cast<monitor::PlanSink &>(*both)
-                            : page ? static_cast<monitor::PlanSink &>(*page)
-                                   : static_cast<monitor::PlanSink &>(log);
+  monitor::PlanSink &sink = pick_sink<monitor::PlanSink>(log, page.get(), o.log, both);
   monitor::PlanTraceDecoder decoder(c.model, layout, sink);
   const double silence = page && !o.silence_given ? 1.0 : o.silence;
   auto read = [&]() -> int {
     return read_to_end(
-        o, fd, silence, sink, decoder, page.get(), report, c, c.model.plans.at(plan).range,
+        o.input, fd, silence, sink, decoder, page.get(), report, c, c.model.plans.at(plan).range,
         [&] {
           return fmt::format("{} frame{} decoded ({} event{}), {} lost, {} byte{} garbled", decoder.frames_shown(),
                              decoder.frames_shown() == 1 ? "" : "s", decoder.events_shown(),
@@ -212,16 +220,13 @@ int monitor_with(const MonitorOptions &o, DiagnosticReport &report, std::ostream
   }
   monitor::LogSink log(c.model, chart, out);
   std::unique_ptr<live::TeeSink> both;
-  if (o.log && page) both = std::make_unique<live::TeeSink>(log, *page);
-  monitor::RunSink &sink = both   ? static_cast<monitor::RunSink &>(*both)
-                           : page ? static_cast<monitor::RunSink &>(*page)
-                                  : static_cast<monitor::RunSink &>(log);
+  monitor::RunSink &sink = pick_sink<monitor::RunSink>(log, page.get(), o.log, both);
   monitor::TraceDecoder decoder(c.model, layout, sink);
   // The page's silence banner needs silence reported: after a second unless --silence says.
   const double silence = page && !o.silence_given ? 1.0 : o.silence;
   auto read = [&]() -> int {
     return read_to_end(
-        o, fd, silence, sink, decoder, page.get(), report, c, c.model.charts.at(chart).name_range,
+        o.input, fd, silence, sink, decoder, page.get(), report, c, c.model.charts.at(chart).name_range,
         [&] {
           return fmt::format("{} tick{} decoded, {} lost, {} byte{} garbled", decoder.ticks_shown(),
                              decoder.ticks_shown() == 1 ? "" : "s", decoder.ticks_lost(), decoder.bytes_garbled(),

@@ -919,10 +919,40 @@ std::string c_prototype(const model::Function &f, const std::string &first, cons
 namespace {
 
 void render_statements(const EngineContext &c, const std::vector<model::Stmt> &stmts, Temporaries &temps, Renderer &r,
+                       std::vector<std::string> &text);
+
+/// A block of its own (a loop's body): the declarations of its temporaries, then its statements.
+void render_block(const EngineContext &c, const std::vector<model::Stmt> &stmts, Temporaries &temps, Renderer &r,
+                  std::vector<std::string> &text) {
+  auto outer = temps.take();
+  std::size_t at = text.size();
+  text.emplace_back();
+  render_statements(c, stmts, temps, r, text);
+  std::string declared;
+  for (const auto &line : temps.declarations()) declared += (declared.empty() ? "" : "\n") + line;
+  text[at] = declared;
+  temps.restore(std::move(outer));
+}
+
+void render_statements(const EngineContext &c, const std::vector<model::Stmt> &stmts, Temporaries &temps, Renderer &r,
                        std::vector<std::string> &text) {
   for (const auto &s : stmts) {
     switch (s.kind) {
     case model::Stmt::Kind::Verbatim: text.emplace_back(); break;
+    case model::Stmt::Kind::Break: text.emplace_back("break;"); break;
+    case model::Stmt::Kind::Return: text.emplace_back(); break;  // a goto to the label emit_statements() places
+    case model::Stmt::Kind::While:
+    case model::Stmt::Kind::DoWhile:
+      // The test's temporaries belong to the enclosing block: it is evaluated before each pass.
+      text.push_back(c_if_test(c, s.expr, temps));
+      render_block(c, s.then_block, temps, r, text);
+      break;
+    case model::Stmt::Kind::For:
+      text.push_back(r.statement(s.else_block.front()));
+      text.push_back(c_if_test(c, s.expr, temps));
+      text.push_back(r.statement(s.else_block.back()));
+      render_block(c, s.then_block, temps, r, text);
+      break;
     case model::Stmt::Kind::If: {
       // The test (its temporaries belong to the enclosing block), then each branch: the
       // declarations of its own temporaries, then its statements. An `else if` is the one If
@@ -956,7 +986,9 @@ public:
   StatementWriter(CodeWriter &w, const EngineContext &c, const std::vector<std::string> &text)
       : w_(w), sources_(c.model.sources()), text_(text) {}
 
-  void list(const std::vector<model::Stmt> &stmts) {
+  /// `done`: the label that ends the block, where a `return` goes.
+  void list(const std::vector<model::Stmt> &stmts, const std::string &done = {}) {
+    if (!done.empty()) done_ = done;
     for (const auto &s : stmts) {
       if (s.kind == model::Stmt::Kind::Verbatim) {
         w_.verbatim(sources_, s.range, *s.verbatim, s.code_begin);
@@ -965,15 +997,67 @@ public:
         continue;
       }
       point_at(s.range);
-      if (s.kind == model::Stmt::Kind::If) {
-        branches(s, "");
-        continue;
+      switch (s.kind) {
+      case model::Stmt::Kind::If: branches(s, ""); break;
+      case model::Stmt::Kind::While:
+      case model::Stmt::Kind::DoWhile:
+      case model::Stmt::Kind::For: loop(s); break;
+      case model::Stmt::Kind::Return:
+        ++at_;
+        line(fmt::format("goto {};", done_));
+        break;
+      default: line(text_.at(at_++)); break;
       }
-      line(text_.at(at_++));
     }
   }
 
 private:
+  /// `while (test) {`, `do {` ... `} while (test);`, or for a `for`, `for (init; test; step) {`
+  /// where the two assignments need no temporaries, else the init, then a `while` whose body
+  /// ends with the step (the same in C without `continue`, which the language does not have).
+  void loop(const model::Stmt &s) {
+    if (s.kind == model::Stmt::Kind::DoWhile) {
+      const std::string &test = text_.at(at_++);
+      line("do {");
+      {
+        CodeWriter::Scope body(w_);
+        branch(s.then_block);
+      }
+      line(fmt::format("}} while ({});", test));
+      return;
+    }
+    if (s.kind == model::Stmt::Kind::While) {
+      line(fmt::format("while ({}) {{", text_.at(at_++)));
+      {
+        CodeWriter::Scope body(w_);
+        branch(s.then_block);
+      }
+      line("}");
+      return;
+    }
+    const std::string &init = text_.at(at_++);
+    const std::string &test = text_.at(at_++);
+    const std::string &step = text_.at(at_++);
+    auto one = [](const std::string &t) { return t.find(';') == t.size() - 1; };
+    if (one(init) && one(step)) {
+      line(fmt::format("for ({}; {}; {}) {{", init.substr(0, init.size() - 1), test, step.substr(0, step.size() - 1)));
+      {
+        CodeWriter::Scope body(w_);
+        branch(s.then_block);
+      }
+      line("}");
+      return;
+    }
+    line(init);
+    line(fmt::format("while ({}) {{", test));
+    {
+      CodeWriter::Scope body(w_);
+      branch(s.then_block);
+      line(step);
+    }
+    line("}");
+  }
+
   /// `if (test) {`, the branches, and the closing brace; `prefix` is `} else ` in an else-if chain.
   void branches(const model::Stmt &s, const char *prefix) {
     line(fmt::format("{}if ({}) {{", prefix, text_.at(at_++)));
@@ -1028,6 +1112,7 @@ private:
   const SourceManager &sources_;
   const std::vector<std::string> &text_;
   std::size_t at_ = 0;
+  std::string done_;
   // The chart line the next output line stands for (0: unknown); a #line is needed only when it
   // is not the statement's own line.
   FileId file_ = 0;
@@ -1044,9 +1129,27 @@ std::vector<std::string> c_statements(const EngineContext &c, const std::vector<
   return text;
 }
 
+namespace {
+
+bool returns(const HeapVector<model::Stmt> &block) {
+  for (const model::Stmt &s : block)
+    if (s.kind == model::Stmt::Kind::Return || returns(s.then_block) || returns(s.else_block)) return true;
+  return false;
+}
+
+}  // namespace
+
 void emit_statements(CodeWriter &w, const EngineContext &c, const std::vector<model::Stmt> &stmts,
                      const std::vector<std::string> &text) {
-  StatementWriter(w, c, text).list(stmts);
+  // `return` ends the chart's block, not the engine function it is written into: a forward
+  // `goto` to a label after the block's last statement, placed only where a `return` needs it.
+  bool any = false;
+  for (const model::Stmt &s : stmts)
+    any = any || s.kind == model::Stmt::Kind::Return || returns(s.then_block) || returns(s.else_block);
+  // Labels have a name space of their own in C: no variable or function can collide with it.
+  const std::string done = any ? fmt::format("gfec_return_{}", w.new_label()) : std::string();
+  StatementWriter(w, c, text).list(stmts, done);
+  if (any) w.line("{}:;", done);
 }
 
 }  // namespace gfec::c_backend

@@ -107,6 +107,30 @@ void statements(CodeWriter &w, const model::Model &m, model::ChartId chart, cons
       w.line("{} {} {};", c.vars[s.var].name, spelling(s.op), expr(m, chart, s.expr));
       break;
     case model::Stmt::Kind::Verbatim: w.line("%{{{}%}}", *s.verbatim); break;
+    case model::Stmt::Kind::Break: w.line("break;"); break;
+    case model::Stmt::Kind::Return: w.line("return;"); break;
+    case model::Stmt::Kind::While:
+    case model::Stmt::Kind::DoWhile:
+    case model::Stmt::Kind::For: {
+      const std::string condition = expr(m, chart, s.expr);
+      if (s.kind == model::Stmt::Kind::While) {
+        w.line("while ({}) {{", condition);
+      } else if (s.kind == model::Stmt::Kind::DoWhile) {
+        w.line("do {");
+      } else {
+        auto part = [&](const model::Stmt &a) {
+          return fmt::format("{} {} {}", c.vars[a.var].name, spelling(a.op), expr(m, chart, a.expr));
+        };
+        w.line("for ({}; {}; {}) {{", part(s.else_block.front()), condition, part(s.else_block.back()));
+      }
+      {
+        auto body = w.indented();
+        statements(w, m, chart, s.then_block);
+      }
+      if (s.kind == model::Stmt::Kind::DoWhile) w.line("}} while ({});", condition);
+      else w.line("}");
+      break;
+    }
     case model::Stmt::Kind::If: {
       const model::Stmt *at = &s;
       std::string lead = "if";

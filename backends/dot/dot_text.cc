@@ -43,7 +43,8 @@ std::string block_text(const model::Model &m, model::ChartId chart, const std::v
     std::string line = s.kind == model::Stmt::Kind::Verbatim ? "%{ ... %}" : source_text(m, s.range);
     // A statement's range may or may not take in its ';': show it once either way.
     // An `if` ends with its block's brace.
-    if (!line.empty() && line.back() != ';' && s.kind != model::Stmt::Kind::Verbatim && s.kind != model::Stmt::Kind::If)
+    if (!line.empty() && line.back() != ';' && s.kind != model::Stmt::Kind::Verbatim &&
+        s.kind != model::Stmt::Kind::If && s.kind != model::Stmt::Kind::While && s.kind != model::Stmt::Kind::For)
       line += ';';
     out += (out.empty() ? "" : "\n") + line;
   }

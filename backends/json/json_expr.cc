@@ -152,6 +152,21 @@ Json statements(const model::Model &m, const Scope &scope, const std::vector<mod
       j["kind"] = "verbatim";
       j["code"] = *s.verbatim;
       break;
+    case model::Stmt::Kind::Break: j["kind"] = "break"; break;
+    case model::Stmt::Kind::Return: j["kind"] = "return"; break;
+    case model::Stmt::Kind::While:
+    case model::Stmt::Kind::DoWhile:
+      j["kind"] = s.kind == model::Stmt::Kind::While ? "while" : "do_while";
+      j["condition"] = expression_tree(m, scope, s.expr);
+      j["body"] = statements(m, scope, s.then_block);
+      break;
+    case model::Stmt::Kind::For:
+      j["kind"] = "for";
+      j["init"] = statements(m, scope, {s.else_block.front()})[0];
+      j["condition"] = expression_tree(m, scope, s.expr);
+      j["step"] = statements(m, scope, {s.else_block.back()})[0];
+      j["body"] = statements(m, scope, s.then_block);
+      break;
     case model::Stmt::Kind::If:
       j["kind"] = "if";
       j["condition"] = expression_tree(m, scope, s.expr);

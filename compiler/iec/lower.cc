@@ -54,6 +54,7 @@ const char *pou_kind(PouKind k) {
 class Spellings {
 public:
   void declare(const ast::Name &n) { by_upper_.emplace(upper(n.text), n.text); }
+  bool declared(std::string_view name) const { return by_upper_.count(upper(name)) != 0; }
   /// Respells `n` as its declaration, if it has one.
   void respell(ast::Name &n) const {
     auto it = by_upper_.find(upper(n.text));
@@ -227,6 +228,12 @@ bool lower(Pou &&pou, const std::optional<ast::Period> &period, ast::File &file,
                            pou.name.text));
     return false;
   }
+  if (pou.body && !pou.steps.empty()) {
+    diag.error(pou.steps.front().range, ErrorKind::Syntax,
+               fmt::format("program '{}' has both statements and an SFC: IEC gives a POU one body", pou.name.text))
+        .note(pou.body_range, "the statements");
+    return false;
+  }
   Spellings names;
   for (const Variable &v : pou.variables) names.declare(v.name);
   for (const Step &s : pou.steps) names.declare(s.name);
@@ -259,6 +266,20 @@ bool lower(Pou &&pou, const std::optional<ast::Period> &period, ast::File &file,
                                as.action.text))
             .note(v->second->name.range, "the variable");
     }
+  if (pou.body) {
+    // A body of statements: one initial step that is never left runs them every scan, as the
+    // place block of step 4 of a tick (docs/iec.md "Programs without an SFC"). The step is
+    // named Body, or Body_ (…) when the program has a name so.
+    std::string step = "Body";
+    while (names.declared(step)) step += '_';
+    ast::Place &p = c.places.emplace_back();
+    p.initial = true;
+    p.has_body = true;
+    p.name = {file.strings.emplace_back(std::move(step)), pou.name.range};
+    p.range = pou.range;
+    names.respell_block(*pou.body);
+    p.action = std::move(*pou.body);
+  }
   for (Step &s : pou.steps) {
     ast::Place &p = c.places.emplace_back();
     p.initial = s.initial;

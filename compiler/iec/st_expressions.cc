@@ -317,7 +317,7 @@ StParser::Node StParser::name_use() {
       "THEN", "ELSE", "ELSIF", "END_IF", "DO", "OF",   "END_CASE",       "AND",
       "OR",   "XOR",  "MOD",   "NOT",    "TO", "FROM", "END_TRANSITION", "END_ACTION"};
   for (const char *k : kReserved)
-    if (is_keyword(t, k)) {
+    if (is_keyword(t, k) && !(is_keyword(t, "MOD") && peek().kind == StTok::LParen)) {  // MOD(a, b): a function
       error(range(t), fmt::format("expected an expression, not the keyword '{}'", t.text));
       return {};
     }
@@ -345,6 +345,32 @@ StParser::Node StParser::name_use() {
                     fmt::format("'{}.{}': members of structures and function-block instances are not supported yet",
                                 t.text, member.text));
     return {};
+  }
+  if (tok().kind == StTok::LParen && is_keyword(t, "MOD")) {
+    // The standard function MOD(a, b) is the operator `a MOD b`: C's `%` (docs/iec.md).
+    next();
+    Node a = or_expr();
+    if (!a.e) return {};
+    if (tok().kind != StTok::Comma) {
+      error(range(tok()), fmt::format("expected ',' after the first argument of 'MOD', not {}", quoted()));
+      return {};
+    }
+    next();
+    Node b = or_expr();
+    if (!b.e) return {};
+    if (tok().kind != StTok::RParen) {
+      error(range(tok()),
+            fmt::format("expected ')' after the second argument of 'MOD' (it takes two), not {}", quoted()));
+      return {};
+    }
+    const StToken close = tok();
+    next();
+    Node mod = binary(std::move(a), std::move(b), BinaryOp::Mod, t);
+    if (!mod.e) return {};
+    mod.e->range = range(t, close);
+    auto e = make(ast::Expr::Kind::Paren, range(t, close));
+    e->args.push_back(std::move(mod.e));
+    return {std::move(e), mod.height + 1};
   }
   if (tok().kind == StTok::LParen) {
     // `<T1>_TO_<T2>(x)`, the standard's type conversions, is the chart language's `t2(x)`

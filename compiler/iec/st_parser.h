@@ -87,6 +87,9 @@ private:
   void statement(ast::Block &out);
   void if_statement(ast::Block &out);
   void case_statement(ast::Block &out);
+  void loop_statement(ast::Block &out);
+  /// FOR's `i := a TO b BY s` as the header of a chart `for`; false when reported.
+  bool for_header(ast::Stmt &loop, const StToken &start);
   bool case_label_ahead() const;
 
   // st_reader.cc
@@ -110,6 +113,7 @@ private:
   std::size_t pos_ = 0;
   bool quiet_ = false;
   int depth_ = 0;
+  int loops_ = 0;  ///< the loops around the statement being read: EXIT needs one
 };
 
 /// Statement-list and expression nesting past which the parser stops (the validator and the back

@@ -101,11 +101,10 @@ void StParser::pou(Project &project, PouKind kind, std::string_view end) {
     } else if (is_keyword(t, "END_PROGRAM") || is_keyword(t, "END_FUNCTION_BLOCK") || is_keyword(t, "END_FUNCTION")) {
       error(range(t), fmt::format("'{}' closes no '{}'; expected '{}'", t.text, t.text.substr(4), end));
       next();
-    } else if (!sfc && !p.other_body) {
-      p.other_body = range(t);  // the lowering reports it: gfec compiles SFC bodies
-      while (!at_end() && !keyword(end) && !keyword("INITIAL_STEP") && !keyword("STEP") && !keyword("TRANSITION") &&
-             !keyword("ACTION"))
-        next();
+    } else if (!sfc && !p.body) {
+      // A body of statements: a chart of one step that runs them every scan (lower.cc).
+      p.body = statements();
+      p.body_range = range(t);
     } else {
       error(range(t), fmt::format("expected a step, transition or action of the SFC, not {}", quoted()));
       skip_statement();

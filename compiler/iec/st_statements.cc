@@ -1,11 +1,15 @@
 // ST statement lists as chart statements: assignments, IF/ELSIF/ELSE, and CASE as the chain of
 // `if`s it means (its selector is read once per label, which is the same as IEC's one reading
-// because ST expressions as gfec reads them have no side effects). Loops, calls and the rest are
-// located "not supported yet" errors (docs/iec.md "What is not read yet").
+// because ST expressions as gfec reads them have no side effects), FOR, WHILE and REPEAT as the
+// chart's `for`, `while` and `do ... while`, EXIT and RETURN as `break` and `return` (docs/iec.md
+// "Loops"). Calls and the rest are located "not supported yet" errors (docs/iec.md "What is not
+// read yet").
 #include "iec/st_parser.h"
 #include "iec/iec_text.h"
 
 #include <fmt/format.h>
+
+#include <optional>
 
 namespace gfec::iec {
 
@@ -29,7 +33,179 @@ ast::ExprPtr paren(ast::ExprPtr inner) {
   return e;
 }
 
+ast::ExprPtr made_name(const ast::Name &n) {
+  auto e = std::make_unique<ast::Expr>();
+  e->kind = ast::Expr::Kind::Name;
+  e->range = n.range;
+  e->name = n;
+  return e;
+}
+
+ast::ExprPtr made_int(std::string_view text, const SourceRange &at) {
+  auto e = std::make_unique<ast::Expr>();
+  e->kind = ast::Expr::Kind::Int;
+  e->range = at;
+  e->name.text = text;
+  return e;
+}
+
+ast::Stmt made_assign(const ast::Name &target, AssignOp op, ast::ExprPtr value, const SourceRange &at) {
+  ast::Stmt s;
+  s.kind = ast::Stmt::Kind::Assign;
+  s.assign_op = op;
+  s.range = at;
+  s.target.emplace(target);
+  s.value = std::move(value);
+  return s;
+}
+
+/// A step written as a literal: 1 for `5`, -1 for `-5`, 0 for `0`; none when it is no literal.
+std::optional<int> literal_sign(const ast::Expr &e) {
+  if (e.kind == ast::Expr::Kind::Paren && e.args.size() == 1) return literal_sign(*e.args[0]);
+  if (e.kind == ast::Expr::Kind::Int) return e.text().find_first_not_of('0') == std::string_view::npos ? 0 : 1;
+  if (e.kind == ast::Expr::Kind::Unary && e.unary_op == UnaryOp::Neg && e.args.size() == 1)
+    if (auto inner = literal_sign(*e.args[0])) return -*inner;
+  return std::nullopt;
+}
+
+/// The literal under a sign and brackets: the 5 of `-(5)`.
+const ast::Expr &magnitude(const ast::Expr &e) {
+  if ((e.kind == ast::Expr::Kind::Paren || e.kind == ast::Expr::Kind::Unary) && e.args.size() == 1)
+    return magnitude(*e.args[0]);
+  return e;
+}
+
 }  // namespace
+
+bool StParser::for_header(ast::Stmt &loop, const StToken &start) {
+  const StToken var = tok();
+  if (var.kind != StTok::Ident || peek().kind != StTok::Assign) {
+    error(range(var), fmt::format("expected the control variable and ':=' after 'FOR', not {}", quoted()));
+    return false;
+  }
+  next();
+  next();
+  ast::ExprPtr first = expression();
+  if (!first) return false;
+  if (!keyword("TO")) {
+    error(range(tok()), fmt::format("expected 'TO' after the initial value of 'FOR', not {}", quoted()));
+    return false;
+  }
+  next();
+  ast::ExprPtr end = expression();
+  if (!end) return false;
+  ast::ExprPtr by;
+  if (keyword("BY")) {
+    next();
+    by = expression();
+    if (!by) return false;
+  }
+  if (!keyword("DO")) {
+    error(range(tok()), fmt::format("expected 'DO' after the header of 'FOR', not {}", quoted()));
+    return false;
+  }
+  next();
+  const ast::Name i = name(var);
+  const SourceRange header = range(start).to(end->range);
+  // `FOR i := a TO b BY s`: `i = a`; while the end is not passed, the body, then `i += s`; the
+  // end and the step are evaluated before each pass (as MatIEC's C reads them). A step written
+  // as a literal picks the comparison at compile time; another picks it by its sign each pass.
+  std::optional<int> sign = by ? literal_sign(*by) : std::optional<int>(1);
+  if (sign && *sign == 0) {
+    error(by->range, "the step of 'FOR' is 0: the loop would never end", ErrorKind::Loop);
+    return false;
+  }
+  loop.else_block.push_back(made_assign(i, AssignOp::Set, std::move(first), header));
+  ast::ExprPtr step_value;
+  AssignOp step_op = AssignOp::Add;
+  if (!by) {
+    loop.value = made_binary(made_name(i), std::move(end), BinaryOp::Le, header);
+    step_value = made_int("1", range(var));
+  } else if (sign) {
+    loop.value = made_binary(made_name(i), std::move(end), *sign > 0 ? BinaryOp::Le : BinaryOp::Ge, header);
+    step_value = made_int(magnitude(*by).text(), by->range);
+    step_op = *sign > 0 ? AssignOp::Add : AssignOp::Sub;
+  } else {
+    auto zero = [&] { return made_int("0", by->range); };
+    auto up = made_binary(made_binary(clone(*by), zero(), BinaryOp::Gt, header),
+                          made_binary(made_name(i), clone(*end), BinaryOp::Le, header), BinaryOp::And, header);
+    auto down = made_binary(made_binary(clone(*by), zero(), BinaryOp::Lt, header),
+                            made_binary(made_name(i), std::move(end), BinaryOp::Ge, header), BinaryOp::And, header);
+    loop.value = made_binary(paren(std::move(up)), paren(std::move(down)), BinaryOp::Or, header);
+    step_value = std::move(by);
+  }
+  loop.else_block.push_back(made_assign(i, step_op, std::move(step_value), header));
+  return true;
+}
+
+void StParser::loop_statement(ast::Block &out) {
+  const StToken start = tok();
+  const std::string_view kind = is_keyword(start, "FOR") ? "FOR" : is_keyword(start, "WHILE") ? "WHILE" : "REPEAT";
+  next();
+  ast::Stmt loop;
+  loop.kind = kind == "FOR"     ? ast::Stmt::Kind::For
+              : kind == "WHILE" ? ast::Stmt::Kind::While
+                                : ast::Stmt::Kind::DoWhile;
+  bool ok = true;
+  if (kind == "FOR") {
+    ok = for_header(loop, start);
+  } else if (kind == "WHILE") {
+    loop.value = expression();
+    if (loop.value && !keyword("DO"))
+      error(range(tok()), fmt::format("expected 'DO' after the condition of 'WHILE', not {}", quoted()));
+    if (!loop.value || !keyword("DO")) ok = false;
+    else next();
+  }
+  if (!ok) {
+    skip_block(kind);
+    return;
+  }
+  if (++depth_ > kMaxStNesting) {
+    --depth_;
+    error(range(start), fmt::format("statements nested too deeply (more than {} levels)", kMaxStNesting),
+          ErrorKind::Nesting);
+    skip_block(kind);
+    return;
+  }
+  ++loops_;
+  loop.then_block = statements();
+  --loops_;
+  --depth_;
+  if (kind == "REPEAT") {
+    if (!keyword("UNTIL")) {
+      error(range(tok()), fmt::format("expected 'UNTIL' to end the body of 'REPEAT', not {}", quoted()))
+          .note(range(start), "the 'REPEAT' it ends");
+      skip_block(kind);
+      return;
+    }
+    const StToken until = tok();
+    next();
+    ast::ExprPtr condition = expression();
+    if (!condition) {
+      skip_block(kind);
+      return;
+    }
+    // REPEAT ... UNTIL c: the body runs again while c is false.
+    auto negated = std::make_unique<ast::Expr>();
+    negated->kind = ast::Expr::Kind::Unary;
+    negated->unary_op = UnaryOp::Not;
+    negated->range = range(until).to(condition->range);
+    negated->set_op_range(range(until));
+    negated->args.push_back(paren(std::move(condition)));
+    loop.value = std::move(negated);
+  }
+  const std::string end = "END_" + std::string(kind);
+  if (!keyword(end)) {
+    error(range(tok()), fmt::format("expected '{}' to close the '{}', not {}", end, kind, quoted()))
+        .note(range(start), fmt::format("the '{}' it closes", kind));
+    return;
+  }
+  const StToken last = tok();
+  next();
+  if (tok().kind == StTok::Semi) next();
+  loop.range = range(start, last);
+  out.push_back(std::move(loop));
+}
 
 bool StParser::block_end() const {
   if (at_end()) return true;
@@ -110,13 +286,25 @@ void StParser::statement(ast::Block &out) {
   }
   if (is_keyword(t, "IF")) return if_statement(out);
   if (is_keyword(t, "CASE")) return case_statement(out);
-  for (const char *loop : {"FOR", "WHILE", "REPEAT"}) {
-    if (!is_keyword(t, loop)) continue;
-    not_supported(range(t), fmt::format("{} loops are not supported yet", loop));
-    skip_block(is_keyword(t, "REPEAT") ? "REPEAT" : loop);
+  if (is_keyword(t, "FOR") || is_keyword(t, "WHILE") || is_keyword(t, "REPEAT")) return loop_statement(out);
+  if (is_keyword(t, "EXIT") || is_keyword(t, "RETURN")) {
+    const bool exit = is_keyword(t, "EXIT");
+    next();
+    if (exit && loops_ == 0) {
+      error(range(t), "'EXIT' outside a loop: it ends the innermost FOR, WHILE or REPEAT", ErrorKind::Loop);
+      skip_statement();
+      return;
+    }
+    if (!expect_semi(exit ? "'EXIT'" : "'RETURN'")) {
+      skip_statement();
+      return;
+    }
+    ast::Stmt &s = out.emplace_back();
+    s.kind = exit ? ast::Stmt::Kind::Break : ast::Stmt::Kind::Return;
+    s.range = range(t);
     return;
   }
-  for (const char *k : {"RETURN", "EXIT", "CONTINUE", "JMP"}) {
+  for (const char *k : {"CONTINUE", "JMP"}) {
     if (!is_keyword(t, k)) continue;
     not_supported(range(t), fmt::format("'{}' is not supported yet", t.text));
     skip_statement();

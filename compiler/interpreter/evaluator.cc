@@ -187,28 +187,75 @@ Value evaluate(const Expr &e, Frame &f) {
   throw RuntimeError(e.range, "a config entry has no value in a chart");
 }
 
-void execute(const std::vector<model::Stmt> &block, Frame &f) {
-  for (const model::Stmt &s : block) {
-    switch (s.kind) {
-    case model::Stmt::Kind::Call: evaluate(s.expr, f); break;
-    case model::Stmt::Kind::Assign: {
-      Value &slot = f.vars.at(s.var);
-      Value v = evaluate(s.expr, f);
-      if (s.op != AssignOp::Set) v = arith(s.op == AssignOp::Add ? BinaryOp::Add : BinaryOp::Sub, slot, v, s.range);
-      slot = convert(v, slot.type, s.range);
-      if (f.log)
-        f.log->add(EventKind::Assign, f.depth,
-                   fmt::format("set {} = {}", f.chart.vars.at(s.var).name, format_value(slot)));
-      break;
-    }
-    case model::Stmt::Kind::Verbatim:
-      if (f.log) f.log->add(EventKind::Note, f.depth, "note verbatim code is not run by the interpreter");
-      break;
-    case model::Stmt::Kind::If:
-      execute(convert(evaluate(s.expr, f), Type::Bool, s.expr.range).b ? s.then_block : s.else_block, f);
-      break;
-    }
+namespace {
+
+/// How a block ended: at its end, or by a `break` or `return` that the blocks around it honour.
+enum class Flow { Next, Break, Return };
+
+Flow run(const std::vector<model::Stmt> &block, Frame &f);
+Flow run_one(const model::Stmt &s, Frame &f);
+
+bool holds(const model::Stmt &s, Frame &f) { return convert(evaluate(s.expr, f), Type::Bool, s.expr.range).b; }
+
+/// One pass more of loop `s`: a loop that runs away stops the run with a located error, so
+/// that `gfec run` never hangs (docs/language.md §10).
+void count_pass(const model::Stmt &s, std::uint64_t &passes) {
+  if (++passes > kMaxLoopPasses)
+    throw RuntimeError(s.range, fmt::format("this loop ran more than {} times in one tick: gfec run stops it "
+                                            "(an engine on a target would hang)",
+                                            kMaxLoopPasses));
+}
+
+Flow loop(const model::Stmt &s, Frame &f) {
+  std::uint64_t passes = 0;
+  if (s.kind == model::Stmt::Kind::For) run_one(s.else_block.front(), f);
+  if (s.kind != model::Stmt::Kind::DoWhile && !holds(s, f)) return Flow::Next;
+  for (;;) {
+    count_pass(s, passes);
+    Flow flow = run(s.then_block, f);
+    if (flow == Flow::Return) return flow;
+    if (flow == Flow::Break) return Flow::Next;
+    if (s.kind == model::Stmt::Kind::For) run_one(s.else_block.back(), f);
+    if (!holds(s, f)) return Flow::Next;
   }
 }
+
+Flow run(const std::vector<model::Stmt> &block, Frame &f) {
+  for (const model::Stmt &s : block) {
+    Flow flow = run_one(s, f);
+    if (flow != Flow::Next) return flow;
+  }
+  return Flow::Next;
+}
+
+Flow run_one(const model::Stmt &s, Frame &f) {
+  switch (s.kind) {
+  case model::Stmt::Kind::While:
+  case model::Stmt::Kind::DoWhile:
+  case model::Stmt::Kind::For: return loop(s, f);
+  case model::Stmt::Kind::Break: return Flow::Break;
+  case model::Stmt::Kind::Return: return Flow::Return;
+  case model::Stmt::Kind::Call: evaluate(s.expr, f); break;
+  case model::Stmt::Kind::Assign: {
+    Value &slot = f.vars.at(s.var);
+    Value v = evaluate(s.expr, f);
+    if (s.op != AssignOp::Set) v = arith(s.op == AssignOp::Add ? BinaryOp::Add : BinaryOp::Sub, slot, v, s.range);
+    slot = convert(v, slot.type, s.range);
+    if (f.log)
+      f.log->add(EventKind::Assign, f.depth,
+                 fmt::format("set {} = {}", f.chart.vars.at(s.var).name, format_value(slot)));
+    break;
+  }
+  case model::Stmt::Kind::Verbatim:
+    if (f.log) f.log->add(EventKind::Note, f.depth, "note verbatim code is not run by the interpreter");
+    break;
+  case model::Stmt::Kind::If: return run(holds(s, f) ? s.then_block : s.else_block, f);
+  }
+  return Flow::Next;
+}
+
+}  // namespace
+
+void execute(const std::vector<model::Stmt> &block, Frame &f) { run(block, f); }
 
 }  // namespace gfec::interp

@@ -50,8 +50,13 @@ struct Frame {
   const std::vector<model::PlaceId> *reports = nullptr;
 };
 
+/// How many times one loop statement may run its body in one execution before the interpreter
+/// stops the run with an error (docs/language.md §10): gfec run never hangs.
+inline constexpr std::uint64_t kMaxLoopPasses = 1000000;
+
 Value evaluate(const model::Expr &e, Frame &f);
-/// Runs the statements in order; an `if` evaluates its condition, then runs one branch.
+/// Runs the statements in order; an `if` evaluates its condition, then runs one branch; a loop
+/// runs as C runs it; `return` ends the block given here.
 /// Verbatim code cannot be run: it is skipped with a note.
 void execute(const std::vector<model::Stmt> &block, Frame &f);
 

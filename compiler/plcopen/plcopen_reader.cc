@@ -131,6 +131,23 @@ void Reader::read_pou(const pugi::xml_node &node, iec::Project &project) {
     diag_.error(pou.name.range, ErrorKind::Plcopen, fmt::format("program '{}' has no body", pou.name.text));
     return;
   }
+  if (!sfc && bodies == 1) {
+    // A body of statements: ST as written, FBD and LD as the ST they mean (network_body.cc).
+    std::string_view lang = local_name(other);
+    if (lang == "ST") {
+      pou.body = statements(xml_.text_below(other));
+    } else if (lang == "FBD" || lang == "LD") {
+      pou.body = read_network(other);
+    } else {
+      not_supported(other, fmt::format("program '{}': a body in {} is not supported yet; gfec reads SFC, ST, "
+                                       "FBD and LD bodies",
+                                       pou.name.text, text::printable(lang)));
+      return;
+    }
+    if (!pou.body) return;  // reported
+    project.pous.push_back(std::move(pou));
+    return;
+  }
   if (!sfc || bodies > 1) {
     pugi::xml_node what = other ? other : sfc;
     diag_.error(at(what), ErrorKind::NotSupported,
@@ -264,10 +281,18 @@ void Reader::read_tasks(const pugi::xml_node &instances, iec::Project &project) 
 
 // ---------------------------------------------------------------- the entry point
 
+namespace {
+
+// A UTF-16 byte-order mark (some Windows tools save PLCopen files so).
+bool starts_utf16(std::string_view text) {
+  return text.size() >= 2 && ((text[0] == '\xFF' && text[1] == '\xFE') || (text[0] == '\xFE' && text[1] == '\xFF'));
+}
+
+}  // namespace
+
 bool is_xml_document(std::string_view text) {
-  // A UTF-16 file (some Windows tools save one): the reader says it is in the wrong encoding.
-  if (text.size() >= 2 && ((text[0] == '\xFF' && text[1] == '\xFE') || (text[0] == '\xFE' && text[1] == '\xFF')))
-    return true;
+  // Claimed, so that the reader says it is in the wrong encoding.
+  if (starts_utf16(text)) return true;
   std::size_t i = text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;
   while (i < text.size() && (text[i] == ' ' || text[i] == '\t' || text[i] == '\r' || text[i] == '\n')) ++i;
   return i < text.size() && text[i] == '<';
@@ -280,7 +305,7 @@ void read_plcopen_program(const std::string &main_path, std::string text, const 
   ast::File &file = *result.program.files.back();
   file.id = sources.add(main_path, std::move(text), language());
   const std::string &t = sources.file(file.id).text();
-  if (t.size() >= 2 && ((t[0] == '\xFF' && t[1] == '\xFE') || (t[0] == '\xFE' && t[1] == '\xFF'))) {
+  if (starts_utf16(t)) {
     diag.error({file.id, 0, 2}, ErrorKind::Xml,
                "the file is UTF-16: gfec reads PLCopen files in UTF-8; save it as UTF-8");
     return;

@@ -5,6 +5,7 @@
 //   plcopen_reader.cc     the project: its namespace, POUs, variables, actions and tasks;
 //   sfc_body.cc           an SFC body's graph (steps, transitions, divergences, convergences,
 //                         jumps, action blocks), linked by localId/refLocalId alone;
+//   network_body.cc       FBD and LD networks (bodies, conditions) as the ST text they mean;
 //   iec_duration.cc       TIME literals.
 #pragma once
 
@@ -38,6 +39,15 @@ private:
 
   // ---------------------------------------------------------- sfc_body.cc
   void read_sfc(const pugi::xml_node &sfc, const pugi::xml_node &pou_node, iec::Pou &pou);
+
+  // ---------------------------------------------------------- network_body.cc
+  friend class Network;
+  /// An FBD or LD body (`<FBD>`, `<LD>`) as the ST statements it means (docs/iec.md "FBD and LD
+  /// bodies"), or nullopt after reporting what it cannot read.
+  std::optional<ast::Block> read_network(const pugi::xml_node &body);
+  /// The value flowing into `point` (a connectionPointIn of element `owner`) from the FBD/LD
+  /// elements of `body`, as an ST expression; null after reporting.
+  ast::ExprPtr network_value(const pugi::xml_node &body, const pugi::xml_node &owner, const pugi::xml_node &point);
 
   // ---------------------------------------------------------- shared
   /// A name the tree can view: kept in the file's strings.

@@ -210,6 +210,33 @@ LocatedText condition_of_body(const LocatedText &body, std::string_view transiti
   return out;
 }
 
+/// The `<connection>`s below `e`, a few levels down (a block's are in inputVariables/variable/
+/// connectionPointIn).
+void connections_below(const pugi::xml_node &e, std::vector<pugi::xml_node> &out, int depth = 0) {
+  if (depth > 4) return;
+  for (pugi::xml_node c : e.children()) {
+    if (c.type() != pugi::node_element) continue;
+    if (local_name(c) == "connection") out.push_back(c);
+    else connections_below(c, out, depth + 1);
+  }
+}
+
+/// Marks `from` and every FBD/LD element upstream of it as read: a transition's condition is
+/// their network, so they are not reported again as elements gfec does not read.
+void mark_network(SfcGraph &g, const Node &from) {
+  std::vector<const Node *> todo{&from};
+  while (!todo.empty()) {
+    Node &n = const_cast<Node &>(*todo.back());
+    todo.pop_back();
+    if (n.used || (n.kind != Kind::Other && n.kind != Kind::InVariable)) continue;
+    n.used = true;
+    std::vector<pugi::xml_node> links;
+    connections_below(n.xml, links);
+    for (const pugi::xml_node &c : links)
+      if (const Node *up = g.target({c.attribute("refLocalId").value(), c})) todo.push_back(up);
+  }
+}
+
 }  // namespace
 
 void Reader::read_sfc(const pugi::xml_node &sfc, const pugi::xml_node &pou_node, iec::Pou &pou) {
@@ -368,16 +395,10 @@ void Reader::read_sfc(const pugi::xml_node &sfc, const pugi::xml_node &pou_node,
     } else if (pugi::xml_node cin = child(cond, "connectionPointIn")) {
       pugi::xml_node c = child(cin, "connection");
       const Node *from = c ? g.target({c.attribute("refLocalId").value(), c}) : nullptr;
-      if (from) const_cast<Node *>(from)->used = true;  // reported here, not again as an element
-      if (from && from->kind == Kind::InVariable) {
-        t.condition = expression(xml_.text_below(child(from->xml, "expression")));
-      } else if (from) {
-        diag_
-            .error(g.at(Link{"", c}), ErrorKind::NotSupported,
-                   fmt::format("the condition of {} comes from {}, an LD/FBD network: gfec reads conditions in ST "
-                               "and from an FBD variable; LD and FBD networks are not supported yet",
-                               g.describe(n), g.describe(*from)))
-            .note(at(from->xml), "the element");
+      if (from) {
+        // An FBD or LD network drawn in the SFC body: its value, as ST (network_body.cc).
+        mark_network(g, *from);
+        t.condition = network_value(sfc, n.xml, cin);
       } else {
         diag_.error(c ? g.at(Link{"", c}) : at(cin), ErrorKind::Plcopen,
                     fmt::format("the condition of {} is connected to no element of the SFC body", g.describe(n)));

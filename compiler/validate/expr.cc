@@ -830,11 +830,94 @@ std::optional<model::Stmt> lower_if(ast::Stmt &st, ExprScope &s) {
   return m;
 }
 
+/// Whether `block` holds a `return`, at any depth.
+bool returns(const HeapVector<model::Stmt> &block) {
+  for (const model::Stmt &s : block)
+    if (s.kind == model::Stmt::Kind::Return || returns(s.then_block) || returns(s.else_block)) return true;
+  return false;
+}
+
+/// Whether `block` leaves the loop whose body it is: a `break` not inside a nested loop, or a
+/// `return` anywhere.
+bool leaves_loop(const HeapVector<model::Stmt> &block) {
+  for (const model::Stmt &s : block) {
+    switch (s.kind) {
+    case model::Stmt::Kind::Break:
+    case model::Stmt::Kind::Return: return true;
+    case model::Stmt::Kind::If:
+      if (leaves_loop(s.then_block) || leaves_loop(s.else_block)) return true;
+      break;
+    case model::Stmt::Kind::While:
+    case model::Stmt::Kind::DoWhile:
+    case model::Stmt::Kind::For:
+      if (returns(s.then_block)) return true;
+      break;
+    default: break;
+    }
+  }
+  return false;
+}
+
+/// `while (c) { }`, `do { } while (c);`, `for (i = a; c; i += s) { }`: the condition must be
+/// bool, and a condition that is always true needs a way out of the body: gfec promises that
+/// what it compiles does not hang (docs/language.md §10).
+std::optional<model::Stmt> lower_loop(ast::Stmt &st, ExprScope &s) {
+  const char *keyword = st.kind == ast::Stmt::Kind::For ? "for" : "while";
+  std::vector<model::Stmt> header;
+  if (st.kind == ast::Stmt::Kind::For && st.else_block.size() == 2)
+    if (auto init = lower_assign(st.else_block[0], s)) header.push_back(std::move(*init));
+  auto condition = lower_condition(st.value.get(), s, fmt::format("the condition of '{}'", keyword).c_str());
+  ++s.loops;
+  std::vector<model::Stmt> body = lower_statements(st.then_block.begin(), st.then_block.end(), s);
+  --s.loops;
+  if (st.kind == ast::Stmt::Kind::For && st.else_block.size() == 2)
+    if (auto step = lower_assign(st.else_block[1], s)) header.push_back(std::move(*step));
+  if (!condition || (st.kind == ast::Stmt::Kind::For && header.size() != 2)) return std::nullopt;
+  model::Stmt m;
+  m.kind = st.kind == ast::Stmt::Kind::While     ? model::Stmt::Kind::While
+           : st.kind == ast::Stmt::Kind::DoWhile ? model::Stmt::Kind::DoWhile
+                                                 : model::Stmt::Kind::For;
+  m.range = st.range;
+  m.expr = std::move(*condition);
+  m.then_block = std::move(body);
+  m.else_block = std::move(header);
+  const bool always = (m.expr.kind == model::Expr::Kind::Bool || m.expr.folded) && m.expr.bool_value;
+  if (always && !leaves_loop(m.then_block)) {
+    s.cx.diag
+        .error(m.expr.range, ErrorKind::Loop,
+               fmt::format("this '{}' loop never ends: its condition is always true and its body has no 'break' or "
+                           "'return'",
+                           keyword))
+        .note("a tick must end: add a 'break' or 'return' that the body reaches, or a condition that becomes false");
+    return std::nullopt;
+  }
+  return m;
+}
+
 std::vector<model::Stmt> lower_statements(ast::Stmt *first, ast::Stmt *last, ExprScope &s) {
   std::vector<model::Stmt> out;
   for (ast::Stmt *it = first; it != last; ++it) {
     ast::Stmt &st = *it;
     switch (st.kind) {
+    case ast::Stmt::Kind::While:
+    case ast::Stmt::Kind::DoWhile:
+    case ast::Stmt::Kind::For:
+      if (auto m = lower_loop(st, s)) out.push_back(std::move(*m));
+      break;
+    case ast::Stmt::Kind::Break:
+    case ast::Stmt::Kind::Return: {
+      const bool is_break = st.kind == ast::Stmt::Kind::Break;
+      if (is_break && s.loops == 0) {
+        s.cx.diag.error(st.range, ErrorKind::Loop, "'break' outside a loop")
+            .note("'break' ends the innermost 'while', 'do' or 'for' it is written in; 'return' ends the whole block");
+        break;
+      }
+      model::Stmt m;
+      m.kind = is_break ? model::Stmt::Kind::Break : model::Stmt::Kind::Return;
+      m.range = st.range;
+      out.push_back(std::move(m));
+      break;
+    }
     case ast::Stmt::Kind::If:
       if (auto m = lower_if(st, s)) out.push_back(std::move(*m));
       break;

@@ -39,6 +39,7 @@ struct ExprScope {
   Context &cx;
   ChartScope *chart = nullptr;  ///< null at file level
   bool constant = false;        ///< an initialiser: no calls, no vars, no timers
+  int loops = 0;                ///< the loops around the statement being lowered: `break` needs one
 };
 
 std::optional<model::Expr> lower_expr(const ast::Expr *e, ExprScope &s);

@@ -206,7 +206,7 @@ struct Names {
 const char *const kTopLevel[] = {"import", "sfc", "fsm", "plan", "toolbox", "interface", "const", "test"};
 const char *const kChartItems[] = {"place",  "state", "initial", "transition", "var",   "const",
                                    "period", "team",  "success", "failure",    "entry", "exit"};
-const char *const kStatements[] = {"if", "else", "entry", "exit"};
+const char *const kStatements[] = {"if", "else", "while", "do", "for", "break", "return", "entry", "exit"};
 const char *const kTestSteps[] = {"tick", "set", "expect", "agent"};
 const char *const kTypes[] = {"bool",  "int",   "float", "double", "string", "time",  "int8",
                               "int16", "int64", "uint8", "uint16", "uint32", "uint64"};

@@ -235,3 +235,19 @@ test('json: sized integers, time and conversions are typed nodes the schema know
   assert.match(text, /"kind":"convert","type":"int64"/);
   assert.match(text, /"kind":"elapsed","type":"time"/);
 });
+
+test('json: loops, break and return as statements (tests/run/loops.sfc)', () => {
+  const doc = emit(path.join(SOURCE_DIR, 'tests', 'run', 'loops.sfc'));
+  const scan = doc.places.find((p) => p.name === 'Scan').action;
+  const outer = scan[1];
+  assert.equal(outer.kind, 'for');
+  assert.equal(outer.init.kind, 'assign');
+  assert.equal(outer.init.op, '=');
+  assert.equal(outer.step.op, '+=');
+  assert.equal(outer.body[0].kind, 'for');
+  assert.equal(outer.body[0].body[0].then[0].kind, 'break');
+  assert.deepEqual(scan.map((s) => s.kind), ['assign', 'for', 'call', 'if', 'while', 'do_while', 'call']);
+  assert.equal(scan[3].then[0].kind, 'return');
+  assert.equal(scan[4].condition.type, 'bool');
+  assert.equal(scan[5].body.length, 1);
+});

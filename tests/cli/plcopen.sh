@@ -83,6 +83,30 @@ cmp -s xml_loop.txt st_loop.txt || fail "Big.st and big1.xml run differently: di
 awk '$1 == "av" && NF == 501 && $NF == 1 { last = 1 } END { exit !last }' st_loop.txt ||
   fail "Big.st: the loop trace never reaches the last step S499"
 
+# FBD and LD (networks.xml, docs/iec.md "FBD and LD bodies"): a program with an FBD body, one with
+# an LD body and an SFC whose conditions are an LD rung and an FBD block run to the outputs worked
+# out by hand; both engine forms print what the interpreter printed; the converted chart text
+# compiles to the same engine.
+for case in gates:Gates:4 latch:Latch:6 seq:Seq:7; do
+  IFS=: read -r name pou ticks <<< "$case"
+  "$gfec" run "$dir/networks.xml" --chart "$pou" --inputs "$dir/$name.csv" --observable --ticks "$ticks" > run.txt 2> run.err ||
+    fail "networks.xml $pou: gfec run fails: $(cat run.err)"
+  grep -v '^av' run.txt | diff -u "$dir/$name.expected" - || fail "networks.xml $pou: outputs differ from $name.expected"
+  for form in readable scalable; do
+    "$gfec" "$dir/networks.xml" --chart "$pou" --engine=$form -o engine.c
+    python3 "$caller" engine.h "$dir/$name.csv" "$pou" "$ticks" > main.c
+    cc -std=c99 -Wall -Wextra -Wpedantic -Werror main.c engine.c -o run || fail "networks.xml $pou: the $form engine does not build"
+    ./run > engine.txt
+    diff -u run.txt engine.txt || fail "networks.xml $pou: the $form engine differs from gfec run"
+  done
+  rm -rf direct back && mkdir direct back
+  "$gfec" --emit=chart "$dir/networks.xml" --chart "$pou" -o "back/$pou.sfc"
+  "$gfec" "$dir/networks.xml" --chart "$pou" --no-line-directives -o direct/engine.c
+  (cd back && "$gfec" "$pou.sfc" --no-line-directives -o engine.c)
+  cmp <(tail -n +2 direct/engine.c) <(tail -n +2 back/engine.c) ||
+    fail "networks.xml $pou: --emit=chart's text compiles to another engine"
+done
+
 # XML that is not PLCopen, as a PLC project's folder holds it (a Beremiz project's beremiz.xml, a
 # Maven POM): one located error naming the root or the namespace, exit 1, never chart text's
 # syntax errors.
@@ -138,6 +162,24 @@ done
   echo '</SFC></body></pou></pous></types></project>'
 } > diamonds.xml
 check_robust diamonds.xml "diamonds.xml"
+
+# An FBD network whose every block reads the one before it twice (60 deep): its text would double
+# at each block; it is reported, fast, never written out.
+{
+  echo '<project xmlns="http://www.plcopen.org/xml/tc6_0201"><types><pous><pou name="P" pouType="program">'
+  echo '<interface><outputVars><variable name="Q"><type><DINT/></type></variable></outputVars></interface><body><FBD>'
+  echo '<inVariable localId="1"><expression>1</expression></inVariable>'
+  prev=1
+  for ((k = 2; k < 62; ++k)); do
+    echo "<block localId=\"$k\" typeName=\"ADD\"><inputVariables><variable formalParameter=\"IN1\"><connectionPointIn><connection refLocalId=\"$prev\"/></connectionPointIn></variable><variable formalParameter=\"IN2\"><connectionPointIn><connection refLocalId=\"$prev\"/></connectionPointIn></variable></inputVariables></block>"
+    prev=$k
+  done
+  echo "<outVariable localId=\"100\"><connectionPointIn><connection refLocalId=\"$prev\"/></connectionPointIn><expression>Q</expression></outVariable>"
+  echo '</FBD></body></pou></pous></types></project>'
+} > fanout.xml
+rc=0
+timeout 10 "$gfec" --check fanout.xml 2> fanout.err || rc=$?
+[[ $rc == 1 ]] && grep -q 'more than gfec writes as one expression' fanout.err || fail "fanout.xml: exit $rc: $(head -c 300 fanout.err)"
 
 # A UTF-16 file is PLCopen in an encoding gfec does not read: one located error, exit 1.
 iconv -f UTF-8 -t UTF-16 "$dir/beremiz.xml" > utf16.xml

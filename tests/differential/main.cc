@@ -77,7 +77,7 @@ int main(int argc, char **argv) {
   std::uint64_t seed = 1;
   int cases = 300, batch = 60, shrink_max = 3, only = -1, subcharts = 0;
   std::string work, compilers, avoid;
-  bool verbose = false, keep = false, no_lint = false, limits = false;
+  bool verbose = false, keep = false, no_lint = false, limits = false, loops = false;
   std::string target_name, table_path = GFEC_TARGET_TABLE, bin = GFEC_BINARY_DIR, flags_extra, flags_without;
   std::vector<std::string> charts;
   CLI::App app{"gfec_differential - random charts: the reference interpreter against the generated C engines"};
@@ -96,6 +96,7 @@ int main(int argc, char **argv) {
   app.add_flag("--limits", limits,
                "Values near the limits: ints past 16 bits and at INT32's ends, floats that need exact rounding, "
                "a*b+c in float (always on with --target)");
+  app.add_flag("--loops", loops, "Counted for loops in actions, some left by a break (docs/language.md §10)");
   app.add_option("--target", target_name,
                  "Build each case for this emulated target (a row of the target table) and run it there");
   app.add_option("--targets", table_path, "The target table (tests/targets/targets.txt)");
@@ -164,6 +165,7 @@ int main(int argc, char **argv) {
   GenOptions base;
   base.subcharts = subcharts;
   base.limits = limits;
+  base.loops = loops;
   // Where double is binary32 a chart that declares one is refused (the hand cases check that):
   // the random charts use float and int there, so that they run.
   base.doubles = target_configs.empty() || target_configs[0].target->double_bits == 64;

@@ -335,6 +335,28 @@ public:
   }
 
   GStmt statement(int depth = 2) {
+    // Drawn only with --loops, so that the charts of a seed without it stay what they were.
+    if (o_.loops && depth > 0 && loops_ < 2 && chance(0.12)) {
+      GStmt s;
+      s.counter = fmt::format("{}_n{}", c_.prefix, loops_);
+      c_.loop_counters = std::max(c_.loop_counters, loops_ + 1);
+      s.bound = uniform(1, 4);  // not 0: cppcheck rightly flags a loop that never runs
+      ++loops_;
+      s.then_block = block(1, 3, depth - 1);
+      --loops_;
+      return s;
+    }
+    if (o_.loops && loops_ > 0 && chance(0.1)) {  // `if (c) { break; }`
+      GStmt s;
+      s.is_if = true;
+      s.expr = boolean(2);
+      for (int tries = 0; tries < 5 && !varies(s.expr); ++tries) s.expr = boolean(2);
+      if (!varies(s.expr)) return statement(0);
+      GStmt out;
+      out.is_break = true;
+      s.then_block.push_back(out);
+      return s;
+    }
     if (depth > 0 && chance(0.15)) {  // if / else if / else (docs/language.md "if and else")
       GStmt s;
       s.is_if = true;
@@ -523,6 +545,7 @@ private:
   std::set<std::string> used_;
   const std::vector<GChart> *pool_ = nullptr;
   int first_runnable_ = 0;
+  int loops_ = 0;  ///< the loops around the statement being made
 
 public:
   int from_ = -1;  ///< while a transition's condition is made: its one input, else -1
@@ -540,6 +563,14 @@ int precedence(const std::string &op) {
 std::string block_text(const std::vector<GStmt> &b) {
   std::string s;
   for (const auto &st : b) {
+    if (st.is_break) {
+      s += "break; ";
+      continue;
+    }
+    if (!st.counter.empty()) {
+      s += fmt::format("for ({0} = 0; {0} < {1}; {0} += 1) {{ {2}}} ", st.counter, st.bound, block_text(st.then_block));
+      continue;
+    }
     if (st.is_if) {
       s += fmt::format("if ({}) {{ {}}} ", expr_text(st.expr), block_text(st.then_block));
       if (!st.has_else) continue;
@@ -701,6 +732,7 @@ std::string chart_body(const GChart &c, const std::vector<GChart> &pool) {
     if (!k.file_level) s += fmt::format("  const {} {} = {};\n", type_word(k.type), k.name, k.init);
   for (const auto &v : c.vars)
     s += fmt::format("  var {} {}{};\n", type_word(v.type), v.name, v.init.empty() ? "" : " = " + v.init);
+  for (int k = 0; k < c.loop_counters; ++k) s += fmt::format("  var int {}_n{};\n", c.prefix, k);
   for (const auto &p : c.places) {
     std::string head = c.fsm ? (p.terminal == model::Terminal::Success   ? "success state"
                                 : p.terminal == model::Terminal::Failure ? "failure state"

@@ -26,10 +26,15 @@ struct GExpr {
 
 struct GStmt {
   bool assign = false;
-  std::string target;  ///< assignments: the var
-  std::string op;      ///< "=", "+=", "-="
-  GExpr expr;          ///< the value, or the call; an `if`: its condition
-  bool is_if = false;  ///< `if (expr) { then_block } else { else_block }`
+  std::string target;     ///< assignments: the var
+  std::string op;         ///< "=", "+=", "-="
+  GExpr expr;             ///< the value, or the call; an `if`: its condition
+  bool is_if = false;     ///< `if (expr) { then_block } else { else_block }`
+  bool is_break = false;  ///< `break;` (only as an `if`'s branch, inside a loop)
+  /// `for (counter = 0; counter < bound; counter += 1) { then_block }` when counter is not empty;
+  /// the counter is a var of its own that no statement assigns, so the loop ends.
+  std::string counter;
+  int bound = 0;
   bool has_else = false;
   std::vector<GStmt> then_block, else_block;  ///< an `else if` is one `if` in else_block
 };
@@ -74,6 +79,7 @@ struct GChart {
   std::vector<GValue> vars;
   std::vector<GPlace> places;
   std::vector<GTransition> transitions;
+  int loop_counters = 0;  ///< `var int <prefix>_n<k>;` for k below this: the counters of nested loops
   /// The root only: the sub-charts, each with the root's interface and period. pool[j] runs
   /// only pool[k] with k > j, and the root any of them, so there is no cycle; the same chart
   /// may be run by several places.
@@ -111,6 +117,8 @@ struct GenOptions {
   bool limits = false;
   /// false: no double anywhere (a target whose double is binary32 refuses it).
   bool doubles = true;
+  /// Counted `for` loops (docs/language.md §10), some with a `break` under an `if`.
+  bool loops = false;
 };
 
 GChart random_chart(std::mt19937_64 &rng, int id, const GenOptions &options);

@@ -38,7 +38,7 @@ std::vector<std::vector<GStmt> *> blocks(GChart &c) {
   std::function<void(std::vector<GStmt> &)> add = [&](std::vector<GStmt> &b) {
     out.push_back(&b);
     for (auto &s : b) {
-      if (!s.is_if) continue;
+      if (!s.is_if && s.counter.empty()) continue;
       add(s.then_block);
       add(s.else_block);
     }

@@ -84,7 +84,7 @@ TEST_CASE("iec st: a statement fragment: CASE is its if chain, literals are made
 
   Diagnostics loop;
   CHECK_FALSE(
-      iec::parse_st_statements("FOR i := 1 TO 3 DO x := i; END_FOR;", iec::FragmentPlace::at(0, 0), strings, loop));
+      iec::parse_st_statements("FOR i := 1 TO 3 DO CONTINUE; END_FOR;", iec::FragmentPlace::at(0, 0), strings, loop));
   REQUIRE(loop.error_count() == 1);
   CHECK(loop.all().front().check() == "not-supported");
 }

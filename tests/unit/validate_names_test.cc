@@ -152,7 +152,7 @@ sfc switch {
   initial place int;
   place this;
 }
-toolbox Tools { actor Wait(in float for) -> DONE | default; }
+toolbox Tools { actor Wait(in float goto) -> DONE | default; }
 plan namespace {
   config { float double; }
   start private;
@@ -162,12 +162,12 @@ plan namespace {
   CHECK(r.text() == R"--(t.sfc:3:18: error: 'new' is a keyword of C++ and cannot name a parameter [reserved-name]
    void Motor(int new, float speed);
                   ^~~
-t.sfc:10:37: error: 'for' is a keyword of C and cannot name a parameter [reserved-name]
- toolbox Tools { actor Wait(in float for) -> DONE | default; }
-                                     ^~~
-t.sfc:10:52: error: 'default' is a keyword of C and cannot name a result state [reserved-name]
- toolbox Tools { actor Wait(in float for) -> DONE | default; }
-                                                    ^~~~~~~
+t.sfc:10:37: error: 'goto' is a keyword of C and cannot name a parameter [reserved-name]
+ toolbox Tools { actor Wait(in float goto) -> DONE | default; }
+                                     ^~~~
+t.sfc:10:53: error: 'default' is a keyword of C and cannot name a result state [reserved-name]
+ toolbox Tools { actor Wait(in float goto) -> DONE | default; }
+                                                     ^~~~~~~
 t.sfc:2:8: error: 'register' is a keyword of C and cannot name a function [reserved-name]
    void register();
         ^~~~~~~~

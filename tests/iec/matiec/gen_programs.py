@@ -86,6 +86,16 @@ def c_expr(e):
 
 
 # Statements: ('assign', var, expr), ('if', [(cond, [stmts])...], [else stmts] or None).
+def ranges(x, cuts):
+    """Conditions on x, one per interval between the sorted cuts: exactly one holds."""
+    parts = []
+    for i in range(len(cuts) + 1):
+        lo = ("cmp", ">=", x, ("lit", cuts[i - 1])) if i > 0 else None
+        hi = ("cmp", "<", x, ("lit", cuts[i])) if i < len(cuts) else None
+        parts.append(lo if hi is None else hi if lo is None else ("and", lo, hi))
+    return parts
+
+
 def st_stmts(stmts, ind):
     out = []
     for s in stmts:
@@ -214,12 +224,7 @@ class Program:
         rng = self.rng
         if self.reals and rng.random() < 0.3:
             x = ("var", rng.choice(self.real_in + self.real_out + self.lreal_out))
-            cuts = sorted(rng.sample([0.2, 0.5, 1.0, 2.5], k - 1))
-            parts = []
-            for i in range(k):
-                lo = ("cmp", ">=", x, ("lit", cuts[i - 1])) if i > 0 else None
-                hi = ("cmp", "<", x, ("lit", cuts[i])) if i < k - 1 else None
-                parts.append(lo if hi is None else hi if lo is None else ("and", lo, hi))
+            parts = ranges(x, sorted(rng.sample([0.2, 0.5, 1.0, 2.5], k - 1)))
             rng.shuffle(parts)
             return parts
         if k == 2 and rng.random() < 0.4:
@@ -227,12 +232,7 @@ class Program:
             parts = [a, ("not", a)]
         else:
             x = ("var", rng.choice(self.int_in + self.int_out))
-            cuts = sorted(rng.sample(range(1, 10), k - 1))
-            parts = []
-            for i in range(k):
-                lo = ("cmp", ">=", x, ("lit", cuts[i - 1])) if i > 0 else None
-                hi = ("cmp", "<", x, ("lit", cuts[i])) if i < k - 1 else None
-                parts.append(lo if hi is None else hi if lo is None else ("and", lo, hi))
+            parts = ranges(x, sorted(rng.sample(range(1, 10), k - 1)))
         rng.shuffle(parts)
         return parts
 

@@ -37,17 +37,7 @@ def table(rows, ncols):
     return ",\n".join("    {%s}" % ", ".join(str(v) for v in (r or [0])) for r in rows)
 
 
-MATIEC_MAIN = r"""
-#include <stdio.h>
-#include "iec_std_lib.h"
-#include "POUS.h"
-TIME __CURRENT_TIME;
-BOOL __DEBUG;
-extern %(type)s RES__INST;
-void config_init__(void);
-void config_run__(unsigned long tick);
-extern unsigned long long common_ticktime__;
-static const long long trace[][%(ncols)d] = {
+MATIEC_MAIN = run_matiec.PRELUDE + r"""static const long long trace[][%(ncols)d] = {
 %(rows)s
 };
 int main(void)

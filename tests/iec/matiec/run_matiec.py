@@ -30,7 +30,8 @@ import subprocess
 import sys
 import tempfile
 
-MAIN = r"""
+# What a C main needs to drive MatIEC's generated configuration (also used by measure_matiec.py).
+PRELUDE = r"""
 #include <stdio.h>
 #include "iec_std_lib.h"
 #include "POUS.h"
@@ -40,7 +41,9 @@ extern %(type)s RES__INST;
 void config_init__(void);
 void config_run__(unsigned long tick);
 extern unsigned long long common_ticktime__;
-static const double trace[][%(ncols)d] = { /* REAL: the text as a double, then float, as gfec's (float)strtod */
+"""
+
+MAIN = PRELUDE + r"""static const double trace[][%(ncols)d] = { /* REAL: the text as a double, then float, as gfec's (float)strtod */
 %(rows)s
 };
 int main(void)
@@ -90,6 +93,8 @@ def print_line(name, typ):
 def final_scan(pous_c, edge_actions):
     """MatIEC's C with the standard's final scan added (see the module's text). P1 and P0 are not
     part of an action's Q (docs/iec.md): an action held only under them gets no final scan."""
+    if "// Actions execution" not in pous_c:
+        return None  # a program without an SFC: no action has a final scan
     body = pous_c.index("// Actions execution")
     end = pous_c.index("goto __end;", body)
 
