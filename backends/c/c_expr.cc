@@ -1,6 +1,7 @@
 #include "c_expr.h"
 
 #include "c_form.h"
+#include "constant.h"
 
 #include <fmt/format.h>
 
@@ -114,6 +115,21 @@ Rendered int_literal(std::int32_t v) {
   return {std::to_string(v), v < 0 ? kUnary : kPrimary};
 }
 
+/// A literal of a sized integer type or of `time` (milliseconds): its value as a C constant
+/// every target reads as that value (a decimal constant takes the first of int, long, long long
+/// that holds it; only INT64_MIN and the uint64 values above INT64_MAX need more).
+Rendered wide_literal(const Expr &e) {
+  const constant::Value v = constant::Value::of_integer(e.type, e.int_value);
+  std::string text = constant::decimal(v);
+  if (e.type == Type::UInt64 && e.int_value < 0) text = fmt::format("UINT64_C({})", text);
+  else if (e.int_value == INT64_MIN) text = "(-INT64_C(9223372036854775807) - 1)";
+  // A time is written in milliseconds without the spelling it had (`2s`, IEC's `T#2s`): chart
+  // text converted from another language compiles to the same engine.
+  return {text, e.int_value < 0 && e.type != Type::UInt64 ? kUnary : kPrimary};
+}
+
+bool is_wide(Type t) { return model::is_sized(t) || t == Type::Time; }
+
 /// A float as a C literal that every compiler reads as exactly this float: the shortest
 /// decimal that rounds back to it, with an `f`, which a compiler rounds once, straight to float.
 /// (`(float)1.00000005960464478` would round twice where double is binary64 and once where it
@@ -140,7 +156,7 @@ Rendered literal(const Expr &e) {
   switch (e.kind) {
   case Expr::Kind::Bool: return {e.bool_value ? "true" : "false"};
   case Expr::Kind::String: return {c_string_literal(e.text.str())};
-  case Expr::Kind::Int: return int_literal(e.int_value);
+  case Expr::Kind::Int: return is_wide(e.type) ? wide_literal(e) : int_literal(static_cast<std::int32_t>(e.int_value));
   default:
     if (e.type == Type::Float) return float_literal(e);
     return {e.text.str(), !e.text.empty() && e.text.data()[0] == '-' ? kUnary : kPrimary};
@@ -334,12 +350,16 @@ public:
 
   Rendered render(const Expr &e) {
     if (&e == replaced_) return {replacement_};
+    // A folded sized integer or time is its value alone: chart text converted from another
+    // language spells large ones as arithmetic (chart_expr.cc), which must give the same engine.
+    if (written_as_value(e) && is_wide(e.type)) return wide_literal(e);
     if (written_as_value(e)) {
       in_folded_ = true;
       Rendered spelled = render(e);
       in_folded_ = false;
-      Rendered value =
-          e.type == Type::Int ? int_literal(e.int_value) : float_value_literal(static_cast<float>(e.float_value));
+      Rendered value = is_wide(e.type)       ? wide_literal(e)
+                       : e.type == Type::Int ? int_literal(static_cast<std::int32_t>(e.int_value))
+                                             : float_value_literal(static_cast<float>(e.float_value));
       return annotated(std::move(value), e, spelled.text);
     }
     switch (e.kind) {
@@ -351,7 +371,11 @@ public:
     case Expr::Kind::Var: return {c_.field(c_.var_field.at(e.var()))};
     case Expr::Kind::Const: return constant(e);
     case Expr::Kind::Call: return call(e);
-    case Expr::Kind::Elapsed: return {c_.timer_of(e.place())};
+    case Expr::Kind::Elapsed:
+      // As a time: ticks times the period in milliseconds (docs/language.md §4), in 64 bits.
+      if (e.type == Type::Time)
+        return {fmt::format("((int64_t){} * {})", c_.timer_of(e.place()), static_cast<long long>(c_.chart.period_ms))};
+      return {c_.timer_of(e.place())};
     case Expr::Kind::Unary: return unary(e);
     case Expr::Kind::Binary: return binary(e);
     case Expr::Kind::Active:
@@ -374,6 +398,7 @@ public:
       const std::string &f = c_.action_a.at(e.action());
       return {f.empty() ? "false" : c_.field(f)};
     }
+    case Expr::Kind::Convert: return conversion(e);
     case Expr::Kind::Config: break;  // plans only: the validator keeps it out of charts
     default: break;                  // team machines: not in this back end's charts
     }
@@ -395,7 +420,16 @@ public:
       }
     }
     const char *cast = nullptr;
-    if (to == Type::Int && is_floating(e.type)) {
+    if (is_floating(to) && model::is_sized(e.type)) {
+      cast = to == Type::Float ? "(float)" : "(double)";  // -Wimplicit-int-float-conversion
+    } else if (model::is_sized(to) && model::integer_bits(to) < 32 && e.type == to && e.kind != Expr::Kind::Var &&
+               e.kind != Expr::Kind::Int && !e.folded && e.kind != Expr::Kind::Const) {
+      // C computes an int8/int16/uint8/uint16 expression in int; the language's value fits the
+      // type (gfec run checks it), so the conversion back is written out (-Wconversion).
+      r.text = fmt::format("({})({})", model::c_integer_type(to), r.text);
+      r.prec = kUnary;
+      return r;
+    } else if (to == Type::Int && is_floating(e.type)) {
       cast = "(int32_t)";
     } else if (to == Type::Float && e.type == Type::Int) {
       // A value read at run time may not fit a float exactly (gcc's -Wconversion, clang's
@@ -439,6 +473,11 @@ public:
         BinaryOp op = s.op == AssignOp::Add ? BinaryOp::Add : BinaryOp::Sub;
         if (r.prec <= precedence(op)) r.text = bracket(r.text);
         r.text = fmt::format("{} = (float)((double){} {} {});", target, target, spelling(op), r.text);
+      } else if (s.op != AssignOp::Set && model::is_sized(to) && model::integer_bits(to) < 32) {
+        // `v += e` computes in int: written out with its conversion back (-Wconversion).
+        BinaryOp op = s.op == AssignOp::Add ? BinaryOp::Add : BinaryOp::Sub;
+        if (r.prec <= precedence(op)) r.text = bracket(r.text);
+        r.text = fmt::format("{} = ({})({} {} {});", target, model::c_integer_type(to), target, spelling(op), r.text);
       } else {
         r = converted(std::move(r), s.expr, to);
         r.text = fmt::format("{} {} {};", target, spelling(s.op), r.text);
@@ -499,7 +538,7 @@ private:
   /// expression in a comment: computed by the target's compiler in C's `int` it could overflow
   /// where int is 16 bits (`200 * 200` on the AVR).
   bool written_as_value(const Expr &e) const {
-    if (in_folded_ || !e.folded || (e.type != Type::Int && e.type != Type::Float)) return false;
+    if (in_folded_ || !e.folded || (e.type != Type::Int && e.type != Type::Float && !is_wide(e.type))) return false;
     return e.kind != Expr::Kind::Int && e.kind != Expr::Kind::Float && e.kind != Expr::Kind::Const;
   }
 
@@ -511,6 +550,21 @@ private:
         origin.find("*/") == std::string::npos)
       value.text += fmt::format(" /* {} */", origin);
     return value;
+  }
+
+  /// `T(x)`: a cast where C's conversion is the language's (between integer types, which the
+  /// interpreter checks to fit; to a floating type); a floating value to an integer through
+  /// gfec_round (c_source.cc), rounded to nearest, ties away from zero.
+  Rendered conversion(const Expr &e) {
+    Rendered x = render(e.args.at(0));
+    const Type from = e.args.at(0).type;
+    const char *to = e.type == Type::Float ? "float" : e.type == Type::Double ? "double" : c_type(e.type);
+    if (model::is_integer(e.type) || e.type == Type::Time) {
+      if (is_floating(from))
+        return {fmt::format("({})gfec_round((double){})", to, bracket(x.text)), kUnary, std::move(x.before)};
+    }
+    if (x.prec < kUnary) x.text = bracket(x.text);
+    return {fmt::format("({}){}", to, x.text), kUnary, std::move(x.before)};
   }
 
   /// A constant is written as its folded value, named in a comment: no C name of the chart's can
@@ -628,7 +682,7 @@ private:
       // stricter warnings of docs/c-engine.md): an int meeting a float becomes a float, a float
       // meeting a double a double; an int meeting a double converts exactly and stays implicit.
       const Type a = e.args[0].type, b = e.args[1].type;
-      if (model::is_numeric(a) && model::is_numeric(b) && a != b) {
+      if (model::is_numeric(a) && model::is_numeric(b) && a != b && (is_floating(a) || is_floating(b))) {
         const Type common = a == Type::Double || b == Type::Double ? Type::Double : Type::Float;
         if (!(common == Type::Double && a == Type::Int)) l = converted(std::move(l), e.args[0], common);
         if (!(common == Type::Double && b == Type::Int)) r = converted(std::move(r), e.args[1], common);
@@ -763,6 +817,14 @@ const char *c_type(model::Type type) {
   switch (type) {
   case model::Type::Bool: return "bool";
   case model::Type::Int: return "int32_t";
+  case model::Type::Time:
+  case model::Type::Int8:
+  case model::Type::Int16:
+  case model::Type::Int64:
+  case model::Type::UInt8:
+  case model::Type::UInt16:
+  case model::Type::UInt32:
+  case model::Type::UInt64: return model::c_integer_type(type);
   case model::Type::Float: return "float";
   case model::Type::Double: return "double";
   case model::Type::Void: return "void";

@@ -1,6 +1,8 @@
 #include "chart_expr.h"
 #include "lexer.h"
 
+#include "constant.h"
+
 #include <fmt/format.h>
 
 #include <cmath>
@@ -13,6 +15,20 @@ namespace {
 
 /// A duration as the language writes it: whole milliseconds as "500ms", others as "1.5ms".
 std::string duration(double ms) { return fmt::format("{}ms", ms); }
+
+/// A sized integer's value as chart text reads it back: in decimal below 10^18 (the lexer reads
+/// at most 18 digits), else as `T(Q) * 1000000000 + R`, which folds to the value.
+std::string sized_literal(const model::Expr &e) {
+  const constant::Value v = constant::Value::of_integer(e.type, e.int_value);
+  const constant::Wide w = constant::wide(v), limit = static_cast<constant::Wide>(1000000000000000000);
+  if (w < limit && w > -limit) return constant::decimal(v);
+  const constant::Wide q = w / 1000000000, r = w % 1000000000;  // r has w's sign
+  const auto text = [](constant::Wide x) {
+    return constant::decimal(constant::Value::of_integer(model::Type::Int64, static_cast<std::int64_t>(x)));
+  };
+  return fmt::format("({}({}) * 1000000000 {} {})", model::type_name(e.type), text(q), r < 0 ? "-" : "+",
+                     text(r < 0 ? -r : r));
+}
 
 std::string args_of(const model::Model &m, model::ChartId chart, const CompactVector<model::Expr> &args) {
   std::string out;
@@ -34,7 +50,12 @@ std::string expr(const model::Model &m, model::ChartId chart, const model::Expr 
   switch (e.kind) {
   case K::Bool: return e.bool_value ? "true" : "false";
   // INT_MIN has no literal (2147483648 does not fit an int): C's spelling, which reads back.
-  case K::Int: return e.text.str() == "-2147483648" ? "(-2147483647 - 1)" : e.text.str();
+  case K::Int:
+    // A time is written in milliseconds, a sized integer in decimal (its literal takes the type
+    // of what it meets, docs/language.md §4).
+    if (e.type == model::Type::Time) return constant::decimal(constant::Value::of_time(e.int_value)) + "ms";
+    if (model::is_sized(e.type)) return sized_literal(e);
+    return e.text.str() == "-2147483648" ? "(-2147483647 - 1)" : e.text.str();
   case K::Float: {
     // A float folded to FLT_MAX is spelled 3.4028235e+38, which as the double it reads back as
     // lies past FLT_MAX and is refused: then the value's own digits, as a double.
@@ -77,6 +98,7 @@ std::string expr(const model::Model &m, model::ChartId chart, const model::Expr 
   case K::Agent: return "agent()";
   case K::ActionQ: return fmt::format("active({})", name(c.actions[e.action()].name.view()));
   case K::ActionA: return fmt::format("running({})", name(c.actions[e.action()].name.view()));
+  case K::Convert: return fmt::format("{}({})", model::type_name(e.type), expr(m, chart, e.args[0]));
   }
   return "";
 }

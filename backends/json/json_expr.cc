@@ -32,6 +32,7 @@ const char *kind_name(Expr::Kind k) {
   case Expr::Kind::Agent: return "agent";
   case Expr::Kind::ActionQ: return "active";
   case Expr::Kind::ActionA: return "running";
+  case Expr::Kind::Convert: return "convert";
   default: break;
   }
   return "?";
@@ -75,7 +76,10 @@ Json expression_tree(const model::Model &m, const Scope &scope, const Expr &e) {
   switch (e.kind) {
   case Expr::Kind::Bool: j["value"] = e.bool_value; break;
   // The values the validator parsed from the spellings (a literal's value as C reads it).
-  case Expr::Kind::Int: j["value"] = e.int_value; break;
+  case Expr::Kind::Int:  // an integer of e.type, or a time in milliseconds
+    if (e.type == model::Type::UInt64) j["value"] = static_cast<std::uint64_t>(e.int_value);
+    else j["value"] = e.int_value;
+    break;
   case Expr::Kind::Float: j["value"] = e.float_value; break;
   case Expr::Kind::String: j["value"] = e.text; break;
   case Expr::Kind::Ticks:
@@ -98,7 +102,8 @@ Json expression_tree(const model::Model &m, const Scope &scope, const Expr &e) {
     j["op"] = spelling(e.binary_op);
     j["args"] = args();
     break;
-  case Expr::Kind::Paren: j["args"] = args(); break;
+  case Expr::Kind::Paren:
+  case Expr::Kind::Convert: j["args"] = args(); break;  // a conversion: to `type`
   case Expr::Kind::Active: {
     // The names along the path, each a place or state of the chart the previous one runs.
     Json path = Json::array();

@@ -15,6 +15,7 @@ using K = model::Expr::Kind;
 
 /// The value the model stores in `e`: a literal's, or the one check_constant() folded.
 Value stored(const model::Expr &e) {
+  if (model::is_sized(e.type) || e.type == Type::Time) return Value::of_integer(e.type, e.int_value);
   switch (e.type) {
   case Type::Bool: return Value::of_bool(e.bool_value);
   case Type::Int: return Value::of_int(e.int_value);
@@ -29,10 +30,10 @@ void store(model::Expr &e, const Value &v) {
   e.folded = true;
   switch (v.type) {
   case Type::Bool: e.bool_value = v.b; break;
-  case Type::Int: e.int_value = static_cast<std::int32_t>(v.i); break;
   case Type::Float:
   case Type::Double: e.float_value = v.f; break;
-  default: e.text = v.s; break;
+  case Type::String: e.text = v.s; break;
+  default: e.int_value = v.i; break;  // an integer, a time
   }
 }
 
@@ -98,6 +99,17 @@ std::optional<Value> evaluate(const model::Expr &e, const model::Model &m, Diagn
     return checked(constant::unary(e.unary_op, *a), e.range, diag);
   }
   case K::Binary: return e.args.size() == 2 ? binary(e, m, diag) : std::nullopt;
+  case K::Convert: {
+    if (e.args.size() != 1) return std::nullopt;
+    auto a = evaluate(e.args[0], m, diag);
+    if (!a) return std::nullopt;
+    auto r = constant::conversion(*a, e.type);
+    if (!r && diag && r.fault == constant::Fault::DoesNotFit)
+      diag->error(e.range, ErrorKind::NotConstant,
+                  fmt::format("value {} does not fit in '{}'", constant::text(*a), model::type_name(e.type)));
+    if (!r) return std::nullopt;
+    return r.value;
+  }
   default: return std::nullopt;  // runs on the robot: a var, a call, a timer, a config entry
   }
 }
@@ -116,15 +128,28 @@ std::optional<model::Expr> number_literal(const ast::Expr &e, Diagnostics &diag)
   x.range = e.range;
   x.text = e.text();
   if (e.kind == ast::Expr::Kind::Int) {
-    auto v = constant::int_literal(e.text());
-    if (!v) {
+    x.kind = K::Int;
+    x.type = Type::Int;
+    if (auto v = constant::int_literal(e.text())) {
+      x.int_value = *v;
+      return x;
+    }
+    // Beyond int: an int64 literal, which only a type that holds it takes (expr.cc,
+    // retype_constant; docs/language.md §4).
+    constant::Wide big = 0;  // chart text has at most 18 digits; an IEC LINT literal up to INT64_MAX
+    bool digits = !e.text().empty();
+    for (char c : e.text()) {
+      digits = digits && c >= '0' && c <= '9' && big <= INT64_MAX;
+      if (digits) big = big * 10 + (c - '0');
+    }
+    digits = digits && big <= INT64_MAX;
+    if (!digits) {
       diag.error(e.range, ErrorKind::NotConstant,
                  fmt::format("integer constant '{}' is too large for 'int'", e.text()));
       return std::nullopt;
     }
-    x.kind = K::Int;
-    x.type = Type::Int;
-    x.int_value = *v;
+    x.type = Type::Int64;
+    x.int_value = static_cast<std::int64_t>(big);
     return x;
   }
   auto v = constant::float_literal(e.text());
@@ -171,9 +196,22 @@ std::optional<model::Expr> to_literal(const Value &v, model::Type to, SourceRang
     e.bool_value = v.b;
     return e;
   }
+  if (to == Type::Time) {
+    if (v.type != Type::Time) return std::nullopt;  // the caller reported the type mismatch
+    e.kind = K::Int;
+    e.int_value = v.i;
+    e.text = constant::text(v);
+    return e;
+  }
   if (!(model::is_numeric(to) && model::is_numeric(v.type)) && to != Type::String)
     return std::nullopt;  // the caller reported the type mismatch
   auto c = constant::convert(v, to);
+  if (!c && model::is_sized(to)) {
+    if (c.fault == constant::Fault::DoesNotFit)
+      diag.error(range, ErrorKind::NotConstant,
+                 fmt::format("value {} does not fit in '{}'", constant::text(v), model::type_name(to)));
+    return std::nullopt;
+  }
   if (!c) {
     if (c.fault == constant::Fault::DoesNotFit)
       diag.error(
@@ -186,6 +224,12 @@ std::optional<model::Expr> to_literal(const Value &v, model::Type to, SourceRang
     return std::nullopt;
   }
   const Value &w = c.value;
+  if (model::is_sized(to)) {
+    e.kind = K::Int;
+    e.int_value = w.i;
+    e.text = constant::decimal(w);
+    return e;
+  }
   switch (to) {
   case Type::Int:
     e.kind = K::Int;

@@ -208,7 +208,8 @@ const char *const kChartItems[] = {"place",  "state", "initial", "transition", "
                                    "period", "team",  "success", "failure",    "entry", "exit"};
 const char *const kStatements[] = {"if", "else", "while", "do", "for", "break", "return", "entry", "exit"};
 const char *const kTestSteps[] = {"tick", "set", "expect", "agent"};
-const char *const kTypes[] = {"bool", "int", "float", "double", "string"};
+const char *const kTypes[] = {"bool",  "int",   "float", "double", "string", "time",  "int8",
+                              "int16", "int64", "uint8", "uint16", "uint32", "uint64"};
 const char *const kPlaceBuiltins[] = {"elapsed", "active", "succeeded", "failed"};
 
 bool chart_file(const std::filesystem::path &p) {

@@ -36,7 +36,8 @@ enum Modifier : std::uint32_t { Declaration = 1, Readonly = 2, DefaultLibrary = 
 const char *const kModifiers[] = {"declaration", "readonly", "defaultLibrary"};
 
 bool is_type_word(std::string_view s) {
-  for (const char *t : {"bool", "int", "float", "double", "void", "string", "object"})
+  for (const char *t : {"bool", "int", "float", "double", "void", "string", "object", "time", "int8", "int16", "int64",
+                        "uint8", "uint16", "uint32", "uint64"})
     if (s == t) return true;
   return false;
 }
