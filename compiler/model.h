@@ -38,6 +38,7 @@ using ToolboxId = Id<struct ToolboxTag>;        ///< Model::toolboxes
 using PlanId = Id<struct PlanTag>;              ///< Model::plans
 using ActorId = Id<struct ActorTag>;            ///< Plan::actors
 using ConfigId = Id<struct ConfigTag>;          ///< Plan::config
+using BlockId = Id<struct BlockTag>;            ///< Model::blocks
 
 enum class Type : std::uint8_t { Void, Bool, Int, Float, Double, String, Object, Duration };
 
@@ -121,13 +122,17 @@ private:
 };
 
 struct Stmt {
-  enum class Kind : std::uint8_t { Call, Assign, Verbatim, If };
+  /// Invoke: a call of a block instance (docs/language.md "Blocks"), already inlined: var is
+  /// the instance's first member (Instance::first), then_block its first code_begin statements
+  /// the arguments (Assigns of inputs, as written) and then the block's body for this instance.
+  enum class Kind : std::uint8_t { Call, Assign, Verbatim, If, Invoke };
   Kind kind = Kind::Call;
   AssignOp op = AssignOp::Set;
   bool else_if = false;  ///< Kind::If: else_block is one If written as `else if`
   SourceRange range;
-  VarId var;                     ///< Kind::Assign
+  VarId var;                     ///< Kind::Assign; Kind::Invoke: the instance's first member
   std::uint32_t code_begin = 0;  ///< Kind::Verbatim: where `verbatim` starts in range.file (after `%{`); 0: unknown
+                                 ///< Kind::Invoke: how many arguments then_block begins with
   /// Kind::Call: the call (an Expr of Kind::Call; its result, if any, is discarded);
   /// Kind::Assign: the value; Kind::If: the condition (Bool). One expression per statement:
   /// a chart may hold a million statements (docs/performance.md).
@@ -175,6 +180,18 @@ struct Var {
   Type type = Type::Int;
   VarRole role = VarRole::Local;
   std::optional<Expr> init;  ///< absent: zero
+  SourceRange range;
+};
+
+/// `var TON t1;`: an instance of a block (docs/language.md "Blocks"). Its state is the block's
+/// vars, copied into the chart (or the block) that declares it as vars[first, first + count),
+/// named `t1.IN`, `t1.Q`, ... in the block's order; the members of an instance inside it follow
+/// as `t1.inner.Q`. Each is a Local var of the holder: the instance's inputs are not the chart's.
+struct Instance {
+  std::string name;
+  BlockId block;
+  VarId first;
+  std::uint32_t count = 0;
   SourceRange range;
 };
 
@@ -260,6 +277,7 @@ struct Chart {
   Table<TransitionId, Transition> transitions;  ///< declaration order: the order of §5.1 and §7
   Table<VarId, Var> vars;
   Table<ActionId, Action> actions;    ///< named actions in declaration order: the order they run in
+  std::vector<Instance> instances;    ///< block instances, in declaration order (their vars are in vars)
   std::vector<FunctionId> functions;  ///< interface functions the chart calls, in declaration order
   std::vector<ConstId> consts;        ///< constants the chart reads, in declaration order
   int team = 0;                       ///< fsm `team N;`: N (>= 2); 0 for a machine that is no team
@@ -267,6 +285,22 @@ struct Chart {
   bool in_main_file = false;          ///< declared in the file being compiled, not an import
   SourceRange range;
   SourceRange name_range;  ///< the chart's name where it is declared
+};
+
+/// A block (docs/language.md "Blocks"): its vars (the in, out and var members in declaration
+/// order, and the members of its own instances), and its body over them. A call of an instance
+/// inlines the body with every var moved to the instance's (Stmt::Kind::Invoke).
+struct Block {
+  std::string name;
+  std::vector<Var> vars;  ///< roles: In, Out, Local, as declared
+  std::vector<Instance> instances;
+  std::vector<Stmt> body;
+  std::vector<FunctionId> functions;  ///< interface functions the body calls
+  std::vector<ConstId> consts;        ///< constants the body reads
+  bool standard = false;              ///< predefined by gfec (TON, CTU, ...: docs/iec.md)
+  bool used = false;                  ///< some chart of the program has an instance of it
+  SourceRange range;
+  SourceRange name_range;
 };
 
 // ---------------------------------------------------------------- toolbox and plan
@@ -373,6 +407,7 @@ struct Model {
   Table<FunctionId, Function> functions;
   Table<ConstId, Const> consts;
   Table<ChartId, Chart> charts;
+  Table<BlockId, Block> blocks;  ///< user blocks in declaration order, then the standard ones used
   Table<TemplateId, Template> templates;
   Table<ToolboxId, Toolbox> toolboxes;
   Table<PlanId, Plan> plans;

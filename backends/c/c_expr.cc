@@ -861,6 +861,7 @@ void render_statements(const EngineContext &c, const std::vector<model::Stmt> &s
   for (const auto &s : stmts) {
     switch (s.kind) {
     case model::Stmt::Kind::Verbatim: text.emplace_back(); break;
+    case model::Stmt::Kind::Invoke: render_statements(c, s.then_block, temps, r, text); break;  // inlined
     case model::Stmt::Kind::If: {
       // The test (its temporaries belong to the enclosing block), then each branch: the
       // declarations of its own temporaries, then its statements. An `else if` is the one If
@@ -900,6 +901,10 @@ public:
         w_.verbatim(sources_, s.range, *s.verbatim, s.code_begin);
         next_ = 0;
         ++at_;
+        continue;
+      }
+      if (s.kind == model::Stmt::Kind::Invoke) {  // a block call: its body inlined, in line
+        list(s.then_block);
         continue;
       }
       point_at(s.range);

@@ -85,6 +85,21 @@ void statements(CodeWriter &w, const model::Model &m, model::ChartId chart, cons
       w.line("{} {} {};", c.vars[s.var].name, spelling(s.op), expr(m, chart, s.expr));
       break;
     case model::Stmt::Kind::Verbatim: w.line("%{{{}%}}", *s.verbatim); break;
+    case model::Stmt::Kind::Invoke: {
+      // `inst(a = e, ...)`: the arguments are the first code_begin statements, the rest the
+      // block's body, which the block's declaration writes.
+      std::string instance = "?";
+      for (const model::Instance &i : c.instances)
+        if (i.first == s.var) instance = i.name;
+      std::string args;
+      for (std::uint32_t k = 0; k < s.code_begin; ++k) {
+        const model::Stmt &a = s.then_block[k];
+        const std::string &member = c.vars[a.var].name;
+        args += fmt::format("{}{} = {}", k ? ", " : "", member.substr(member.rfind('.') + 1), expr(m, chart, a.expr));
+      }
+      w.line("{}({});", instance, args);
+      break;
+    }
     case model::Stmt::Kind::If: {
       const model::Stmt *at = &s;
       std::string lead = "if";

@@ -147,6 +147,18 @@ Json statements(const model::Model &m, const Scope &scope, const std::vector<mod
       j["kind"] = "verbatim";
       j["code"] = *s.verbatim;
       break;
+    case model::Stmt::Kind::Invoke: {
+      // A block call: the instance, its arguments; the inlined body is the block's (blocks[]).
+      j["kind"] = "invoke";
+      std::string instance = "?";
+      if (scope.chart)
+        for (const model::Instance &i : scope.chart->instances)
+          if (i.first == s.var) instance = i.name;
+      j["instance"] = instance;
+      j["args"] =
+          statements(m, scope, std::vector<model::Stmt>(s.then_block.begin(), s.then_block.begin() + s.code_begin));
+      break;
+    }
     case model::Stmt::Kind::If:
       j["kind"] = "if";
       j["condition"] = expression_tree(m, scope, s.expr);

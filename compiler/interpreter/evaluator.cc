@@ -182,6 +182,7 @@ void execute(const std::vector<model::Stmt> &block, Frame &f) {
     case model::Stmt::Kind::Verbatim:
       if (f.log) f.log->add(EventKind::Note, f.depth, "note verbatim code is not run by the interpreter");
       break;
+    case model::Stmt::Kind::Invoke: execute(s.then_block, f); break;  // the block's body, inlined
     case model::Stmt::Kind::If:
       execute(convert(evaluate(s.expr, f), Type::Bool, s.expr.range).b ? s.then_block : s.else_block, f);
       break;

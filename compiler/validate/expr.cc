@@ -1,5 +1,6 @@
 #include "validate/expr.h"
 
+#include "validate/blocks.h"
 #include "validate/fold.h"
 #include "validate/suggest.h"
 #include "validate/types.h"
@@ -421,6 +422,7 @@ bool constant_fits(const model::Expr &x, Type to, ExprScope &s) {
 
 std::optional<model::Stmt> lower_assign(const ast::Stmt &st, ExprScope &s) {
   Diagnostics &diag = s.cx.diag;
+  if (st.target && s.chart && st.target->text.find('.') != std::string_view::npos) return lower_member_assign(st, s);
   auto value = lower_expr(st.value.get(), s);  // first: its errors are independent of the target's
   if (!st.target || st.target->text.empty() || !s.chart) return std::nullopt;  // a recovered syntax error
   const ast::Name &target = *st.target;
@@ -558,9 +560,8 @@ std::optional<model::Expr> lower_expr(const ast::Expr *e, ExprScope &s) {
   case ast::Expr::Kind::Unary: return check_constant(lower_unary(*e, s), s.cx.model, s.cx.diag);
   case ast::Expr::Kind::Binary: return check_constant(lower_binary(*e, s), s.cx.model, s.cx.diag);
   case ast::Expr::Kind::Path:
-    // Only `active(...)` reads a path, and it reads its argument itself.
-    s.cx.diag.error(e->range, ErrorKind::Syntax, "a path to a sub-chart's place is only read through 'active(...)'");
-    return std::nullopt;
+    // `inst.q`: a block's output; `active(...)` reads a path to a place itself.
+    return lower_member(*e, s);
   case ast::Expr::Kind::Paren: {
     if (e->args.size() != 1) return std::nullopt;
     auto inner = lower_expr(e->args[0], s);
@@ -692,8 +693,15 @@ std::vector<model::Stmt> lower_statements(ast::Stmt *first, ast::Stmt *last, Exp
     case ast::Stmt::Kind::If:
       if (auto m = lower_if(st, s)) out.push_back(std::move(*m));
       break;
+    case ast::Stmt::Kind::Invoke:
+      if (auto m = lower_invoke(st, s)) out.push_back(std::move(*m));
+      break;
     case ast::Stmt::Kind::Call:
       if (!st.call || st.call->kind != ast::Expr::Kind::Call) break;
+      if (names_instance(st.call->name, s)) {  // `inst();`
+        if (auto m = lower_invoke(st, s)) out.push_back(std::move(*m));
+        break;
+      }
       if (auto call = lower_call(*st.call, s, true)) {
         model::Stmt m;
         m.kind = model::Stmt::Kind::Call;

@@ -1,0 +1,18 @@
+// The standard function blocks of IEC 61131-3 (docs/iec.md "The standard blocks"), predefined in
+// every program that names one: their text is chart text compiled into gfec, read as one more file.
+#pragma once
+
+#include "ast.h"
+#include "diagnostics.h"
+#include "source.h"
+
+namespace gfec {
+
+/// The chart text that declares the standard blocks.
+const char *standard_blocks_text();
+
+/// When some `var` of `program` has the type of a standard block that no file declares, parses
+/// the standard blocks into one more file of the program (its blocks marked standard).
+void add_standard_blocks(ast::Program &program, SourceManager &sources, Diagnostics &diag);
+
+}  // namespace gfec
