@@ -116,6 +116,8 @@ bool standard_name(std::string_view name) {
 
 const char *standard_blocks_text() { return kText; }
 
+bool is_standard_block(std::string_view name) { return standard_name(name); }
+
 void add_standard_blocks(ast::Program &program, SourceManager &sources, Diagnostics &diag) {
   std::set<std::string_view> declared;
   bool wanted = false;

@@ -6,7 +6,12 @@
 #include "diagnostics.h"
 #include "source.h"
 
+#include <string_view>
+
 namespace gfec {
+
+/// Whether `name` is a standard block's (TON, CTU, ...: upper case, as IEC writes them).
+bool is_standard_block(std::string_view name);
 
 /// The chart text that declares the standard blocks.
 const char *standard_blocks_text();

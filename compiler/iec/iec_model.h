@@ -75,6 +75,7 @@ struct Pou {
   std::vector<Step> steps;          ///< in declaration order
   std::vector<Transition> transitions;
   std::vector<Action> actions;  ///< in declaration order: the order their bodies run in
+  ast::Block body;              ///< a FUNCTION_BLOCK's statements (structured text)
   /// The POU has a body that is not an SFC (plain ST statements, LD, FBD, IL): where, to report
   /// it as not supported yet. Empty range when the body is an SFC or there is none.
   std::optional<SourceRange> other_body;

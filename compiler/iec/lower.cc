@@ -4,12 +4,14 @@
 // `Start` declared); the range stays on what the user wrote.
 #include "iec/lower.h"
 #include "iec/iec_text.h"
+#include "standard_blocks.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <deque>
 #include <map>
 #include <string>
 
@@ -73,7 +75,65 @@ private:
   std::map<std::string, std::string_view> by_upper_;
 };
 
-ast::ValueDecl lower_variable(Variable &v, Diagnostics &diag) {
+/// The function blocks a POU may instantiate, by their upper-case names: the project's
+/// FUNCTION_BLOCKs and the standard blocks. IEC names are case-insensitive: a type, an instance's
+/// member and a parameter are respelled as the block declares them.
+struct KnownBlocks {
+  std::map<std::string, std::string> spelled;  ///< upper-case name -> as declared
+  std::map<std::string, Spellings> members;    ///< a FUNCTION_BLOCK's; a standard block's are upper case
+
+  const std::string *type(const std::string &iec_upper) const {
+    auto it = spelled.find(iec_upper);
+    return it == spelled.end() ? nullptr : &it->second;
+  }
+  /// `member` of a block `type` (as declared), respelled as the block declares it.
+  void respell_member(const std::string &type, ast::Name &member, std::deque<std::string> &strings) const {
+    auto it = members.find(upper(type));
+    if (it != members.end()) it->second.respell(member);
+    else if (upper(member.text) != member.text) member.text = strings.emplace_back(upper(member.text));
+  }
+};
+
+/// The instances a POU declares: upper-case name -> block type as declared.
+using Instances = std::map<std::string, std::string>;
+
+void respell_members(ast::Expr &e, const Instances &inst, const KnownBlocks &known, std::deque<std::string> &strings) {
+  for (ast::Expr *a : e.args)
+    if (a) respell_members(*a, inst, known, strings);
+  if (e.kind != ast::Expr::Kind::Path || e.args.size() != 2 || !e.args[0] || !e.args[1]) return;
+  auto it = inst.find(upper(e.args[0]->name.text));
+  if (it != inst.end()) known.respell_member(it->second, e.args[1]->name, strings);
+}
+
+template <typename Stmts> void respell_members_in(Stmts &block, const Instances &inst, const KnownBlocks &known,
+                                                  const Spellings &names, std::deque<std::string> &strings) {
+  for (ast::Stmt &s : block) {
+    if (s.value) respell_members(*s.value, inst, known, strings);
+    if (s.call) respell_members(*s.call, inst, known, strings);
+    if (s.kind == ast::Stmt::Kind::Invoke && s.target) {
+      auto it = inst.find(upper(s.target->text));
+      for (ast::Stmt &a : s.then_block) {
+        if (a.value) respell_members(*a.value, inst, known, strings);
+        if (it != inst.end() && a.target) known.respell_member(it->second, *a.target, strings);
+      }
+      continue;
+    }
+    if (s.kind == ast::Stmt::Kind::Assign && s.target && s.target->text.find('.') != std::string_view::npos) {
+      // `inst.IN := x`: both names respelled, joined again.
+      const std::size_t dot = s.target->text.find('.');
+      ast::Name head{s.target->text.substr(0, dot), s.target->range};
+      ast::Name member{s.target->text.substr(dot + 1), s.target->range};
+      names.respell(head);
+      auto it = inst.find(upper(head.text));
+      if (it != inst.end()) known.respell_member(it->second, member, strings);
+      s.target->text = strings.emplace_back(fmt::format("{}.{}", head.text, member.text));
+    }
+    respell_members_in(s.then_block, inst, known, names, strings);
+    respell_members_in(s.else_block, inst, known, names, strings);
+  }
+}
+
+ast::ValueDecl lower_variable(Variable &v, Diagnostics &diag, const KnownBlocks *known = nullptr) {
   ast::ValueDecl d;
   d.role = v.section == Section::Input    ? ast::VarRole::In
            : v.section == Section::Output ? ast::VarRole::Out
@@ -82,8 +142,15 @@ ast::ValueDecl lower_variable(Variable &v, Diagnostics &diag) {
   d.name = v.name;
   d.range = v.range;
   const std::string t = upper(v.type.text);
+  const std::string *block = known ? known->type(t) : nullptr;
   if (const char *c = chart_type(t)) {
     d.type = {c, v.type.range};
+  } else if (block) {
+    d.type = {*block, v.type.range};  // an instance (docs/iec.md "Function blocks")
+    if (v.section != Section::Local)
+      diag.error(
+          v.type.range, ErrorKind::NotSupported,
+          fmt::format("a function-block instance as an input or output ('{}') is not supported yet", v.name.text));
   } else {
     d.type = {"int", v.type.range};  // reported: what follows is still checked
     std::string head = t.substr(0, t.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZ_0123456789"));
@@ -209,7 +276,44 @@ std::optional<ast::Period> period_of(const Project &project, const Pou &pou, Dia
   return found;
 }
 
-bool lower(Pou &&pou, const std::optional<ast::Period> &period, ast::File &file, Diagnostics &diag) {
+namespace {
+
+/// A FUNCTION_BLOCK: a block of the chart language (docs/iec.md "Function blocks").
+void lower_function_block(Pou &pou, ast::File &file, Diagnostics &diag, const KnownBlocks &known) {
+  Spellings names;
+  for (const Variable &v : pou.variables) names.declare(v.name);
+  Instances instances;
+  ast::BlockDecl &b = file.blocks.emplace_back();
+  b.name = pou.name;
+  b.range = pou.range;
+  for (Variable &v : pou.variables) {
+    if (v.constant) {
+      diag.error(v.name.range, ErrorKind::NotSupported,
+                 fmt::format("a constant in a function block ('{}') is not supported yet", v.name.text));
+      continue;
+    }
+    ast::ValueDecl d = lower_variable(v, diag, &known);
+    if (d.init) names.respell(*d.init);
+    if (known.type(upper(v.type.text))) instances.emplace(upper(v.name.text), d.type.text);
+    b.values.push_back(std::move(d));
+  }
+  names.respell_block(pou.body);
+  respell_members_in(pou.body, instances, known, names, file.strings);
+  b.body = std::move(pou.body);
+}
+
+/// Turns `pou` into an sfc of the chart language and appends it to `file.charts`: its variables
+/// (BOOL, DINT, REAL, LREAL as bool, int, float, double, a known block's instances; every other
+/// type a located "not supported yet" error), steps, transitions (ordered by PRIORITY within
+/// their divergence), named actions and the period. A FUNCTION_BLOCK becomes a block of
+/// `file.blocks`; a FUNCTION, or a PROGRAM whose body is not an SFC, is reported and adds
+/// nothing. Returns whether a chart was added.
+bool lower_pou(Pou &&pou, const std::optional<ast::Period> &period, ast::File &file, Diagnostics &diag,
+               const KnownBlocks &known) {
+  if (pou.kind == PouKind::FunctionBlock) {
+    lower_function_block(pou, file, diag, known);
+    return false;  // a block, not a program
+  }
   if (pou.kind != PouKind::Program) {
     diag.error(pou.name.range, ErrorKind::NotSupported,
                fmt::format("{} '{}' is not supported yet: gfec compiles PROGRAMs", pou_kind(pou.kind), pou.name.text));
@@ -232,9 +336,11 @@ bool lower(Pou &&pou, const std::optional<ast::Period> &period, ast::File &file,
   c.name = pou.name;
   c.range = pou.range;
   if (period) c.periods.push_back(*period);
+  Instances instances;
   for (Variable &v : pou.variables) {
-    ast::ValueDecl d = lower_variable(v, diag);
+    ast::ValueDecl d = lower_variable(v, diag, &known);
     if (d.init) names.respell(*d.init);
+    if (known.type(upper(v.type.text))) instances.emplace(upper(v.name.text), d.type.text);
     c.values.push_back(std::move(d));
   }
   // An association naming a variable rather than an ACTION is IEC's Boolean action (the variable
@@ -289,12 +395,14 @@ bool lower(Pou &&pou, const std::optional<ast::Period> &period, ast::File &file,
     x.range = t.range;
     x.condition = std::move(t.condition);
     if (x.condition) names.respell(*x.condition);
+    if (x.condition) respell_members(*x.condition, instances, known, file.strings);
   }
   for (Action &a : pou.actions) {
     ast::ActionDecl &d = c.actions.emplace_back();
     d.name = a.name;
     d.range = a.range;
     names.respell_block(a.body);
+    respell_members_in(a.body, instances, known, names, file.strings);
     d.body = std::move(a.body);
   }
   if (period) {
@@ -314,15 +422,26 @@ bool lower(Pou &&pou, const std::optional<ast::Period> &period, ast::File &file,
   return true;
 }
 
+}  // namespace
+
 std::size_t lower(Project &&project, ast::File &file, Diagnostics &diag, std::optional<double> period_ms) {
   std::size_t added = 0;
+  KnownBlocks known;
+  for (const char *s : {"TON", "TOF", "TP", "R_TRIG", "F_TRIG", "SR", "RS", "CTU", "CTD", "CTUD"})
+    if (is_standard_block(s)) known.spelled.emplace(s, s);
+  for (const Pou &p : project.pous)
+    if (p.kind == PouKind::FunctionBlock) {
+      known.spelled[upper(p.name.text)] = std::string(p.name.text);
+      Spellings &m = known.members[upper(p.name.text)];
+      for (const Variable &v : p.variables) m.declare(v.name);
+    }
   for (Pou &p : project.pous) {
     std::optional<ast::Period> period;
     // --period wins: the tasks' INTERVALs, even disagreeing ones, are not asked. Its range is
     // the program's name, the place a diagnostic about the period can point at.
     if (p.kind == PouKind::Program)
       period = period_ms ? ast::Period{*period_ms, p.name.range} : period_of(project, p, diag);
-    if (lower(std::move(p), period, file, diag)) ++added;
+    if (lower_pou(std::move(p), period, file, diag, known)) ++added;
   }
   return added;
 }

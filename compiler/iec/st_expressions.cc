@@ -335,14 +335,19 @@ StParser::Node StParser::name_use() {
       e->args.push_back(std::move(arg));
       return {std::move(e), 1};
     }
-    if (is_keyword(member, "Q") || is_keyword(member, "A"))
+    if (is_keyword(member, "A")) {
       not_supported(range(t, member),
                     fmt::format("an action's '.{}' ('{}.{}') is not supported yet", member.text, t.text, member.text));
-    else
-      not_supported(range(t, member),
-                    fmt::format("'{}.{}': members of structures and function-block instances are not supported yet",
-                                t.text, member.text));
-    return {};
+      return {};
+    }
+    // `inst.Q`: an output of a function-block instance (the validator says what else it is).
+    auto e = make(ast::Expr::Kind::Path, range(t, member));
+    for (const StToken *part : {&t, &member}) {
+      auto n = make(ast::Expr::Kind::Name, range(*part));
+      n->name = name(*part);
+      e->args.push_back(std::move(n));
+    }
+    return {std::move(e), 1};
   }
   if (tok().kind == StTok::LParen) {
     not_supported(range(t), fmt::format("calling '{}' is not supported yet: gfec reads no functions or function "
