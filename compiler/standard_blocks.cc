@@ -118,6 +118,8 @@ const char *standard_blocks_text() { return kText; }
 
 bool is_standard_block(std::string_view name) { return standard_name(name); }
 
+std::vector<std::string_view> standard_block_names() { return {std::begin(kNames), std::end(kNames)}; }
+
 void add_standard_blocks(ast::Program &program, SourceManager &sources, Diagnostics &diag) {
   std::set<std::string_view> declared;
   bool wanted = false;

@@ -7,11 +7,15 @@
 #include "source.h"
 
 #include <string_view>
+#include <vector>
 
 namespace gfec {
 
 /// Whether `name` is a standard block's (TON, CTU, ...: upper case, as IEC writes them).
 bool is_standard_block(std::string_view name);
+
+/// The standard blocks' names, for did-you-mean.
+std::vector<std::string_view> standard_block_names();
 
 /// The chart text that declares the standard blocks.
 const char *standard_blocks_text();

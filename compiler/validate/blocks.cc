@@ -4,6 +4,7 @@
 #include "validate/blocks.h"
 
 #include "did_you_mean.h"
+#include "standard_blocks.h"
 #include "validate/fold.h"
 #include "validate/suggest.h"
 #include "validate/types.h"
@@ -192,8 +193,33 @@ void validate_unused_blocks(Context &cx) {
     if (!cx.model.blocks[id].standard) ensure_block(cx, id, cx.model.blocks[id].name_range);
 }
 
+namespace {
+
+/// `var TONN t;`: a type that is no type but near a block's name is a misspelt block: reported
+/// with the block, and the instance declared (with an error) so its uses stay quiet.
+bool misspelt_block(Context &cx, ChartScope &s, const ast::ValueDecl &v) {
+  for (const char *scalar : {"bool", "int", "float", "double", "void", "string", "object"})
+    if (v.type.text == scalar) return false;
+  if (v.type.text.empty() || v.type.text.size() > kMaxSuggestedLength) return false;
+  NearestName nearest(v.type.text, typo_limit(v.type.text.size()));
+  std::string best;
+  for (const Symbol *b : cx.blocks.of({Sym::Block}))
+    if (nearest.offer(b->name())) best = b->name();
+  for (std::string_view n : standard_block_names())
+    if (nearest.offer(n)) best = n;
+  if (best.empty()) return false;
+  cx.diag.error(v.type.range, ErrorKind::UnknownType, fmt::format("unknown type name '{}'", v.type.text))
+      .fix(v.type.range, best)
+      .note(fmt::format("did you mean the block '{}'?", best));
+  s.names.declare(v.name, Sym::Instance, -1, cx.diag);
+  return true;
+}
+
+}  // namespace
+
 bool declare_instance(Context &cx, ChartScope &s, const ast::ValueDecl &v) {
-  if (v.is_const || !cx.blocks.find(v.type.text)) return false;
+  if (v.is_const) return false;
+  if (!cx.blocks.find(v.type.text)) return misspelt_block(cx, s, v);
   const Symbol *sym = cx.blocks.resolve(ast::Name{v.type.text, v.type.range});
   if (v.role != ast::VarRole::Local)
     cx.diag.error(v.range, ErrorKind::ChartIo,
