@@ -195,9 +195,9 @@ void StParser::block_call(ast::Block &out) {
     const StToken param = tok();
     const StTok bind = peek().kind;
     if (param.kind != StTok::Ident || (bind != StTok::Assign && bind != StTok::Arrow)) {
-      error(range(param), fmt::format("expected 'input := value' or 'output => variable' in the call of '{}', not {}",
-                                      inst.text, quoted()))
-          .note("gfec reads calls of function blocks with named parameters only");
+      not_supported(range(param), fmt::format("a parameter that is not named ({}) in the call of '{}' is not "
+                                              "supported yet: write 'input := value' or 'output => variable'",
+                                              quoted(), inst.text));
       skip_statement();
       return;
     }

@@ -109,6 +109,10 @@ void Reader::read_pou(const pugi::xml_node &node, iec::Project &project) {
                             pou.name.text, text::printable(type)));
     return;
   }
+  if (pou.kind == iec::PouKind::FunctionBlock) {
+    read_function_block(node, pou, project);
+    return;
+  }
   if (pou.kind != iec::PouKind::Program) {  // the lowering reports it; its insides are not read
     project.pous.push_back(std::move(pou));
     return;
@@ -140,6 +144,27 @@ void Reader::read_pou(const pugi::xml_node &node, iec::Project &project) {
     return;
   }
   read_sfc(sfc, node, pou);
+  project.pous.push_back(std::move(pou));
+}
+
+void Reader::read_function_block(const pugi::xml_node &node, iec::Pou &pou, iec::Project &project) {
+  if (pugi::xml_node interface = child(node, "interface")) read_interface(interface, pou);
+  pugi::xml_node body = child(node, "body");
+  pugi::xml_node st = child(body, "ST");
+  if (!st) {
+    pugi::xml_node what = body ? body : node;
+    for (pugi::xml_node c : body.children())
+      if (c.type() == pugi::node_element && local_name(c) != "documentation" && local_name(c) != "addData") {
+        what = c;
+        break;
+      }
+    not_supported(what, fmt::format("function block '{}': a body that is not ST ({}) is not supported yet",
+                                    pou.name.text, body ? text::printable(local_name(what)) : "none"));
+    return;
+  }
+  auto block = statements(xml_.text_below(st));
+  if (!block) return;
+  pou.body = std::move(*block);
   project.pous.push_back(std::move(pou));
 }
 
