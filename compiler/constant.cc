@@ -53,14 +53,56 @@ Value Value::of_ticks(std::uint64_t v) {
   return r;
 }
 
+Value Value::of_integer(Type t, std::int64_t bits) {
+  Value r;
+  r.type = t;
+  r.i = bits;
+  return r;
+}
+
 Value Value::zero(Type t) {
   switch (t) {
   case Type::Bool: return of_bool(false);
   case Type::Float: return of_float(0);
   case Type::Double: return of_double(0);
   case Type::Duration: return of_ticks(0);
-  default: return of_int(0);
+  default:
+    if (model::is_integer(t) || t == Type::Time) return of_integer(t, 0);
+    return of_int(0);
   }
+}
+
+Wide wide(const Value &v) {
+  if (v.type == Type::UInt64) return static_cast<Wide>(static_cast<std::uint64_t>(v.i));
+  return static_cast<Wide>(v.i);
+}
+
+Wide lowest(Type t) {
+  if (model::is_unsigned(t)) return 0;
+  const int bits = model::integer_bits(t);
+  return -(static_cast<Wide>(1) << (bits - 1));
+}
+
+Wide highest(Type t) {
+  const int bits = model::integer_bits(t);
+  return (static_cast<Wide>(1) << (model::is_unsigned(t) ? bits : bits - 1)) - 1;
+}
+
+bool holds(Type big, Type small) { return lowest(big) <= lowest(small) && highest(big) >= highest(small); }
+
+std::optional<Type> integer_common(Type a, Type b) {
+  if (holds(a, b)) return a;
+  if (holds(b, a)) return b;
+  return std::nullopt;
+}
+
+std::string decimal(const Value &v) {
+  Wide w = wide(v);
+  if (w == 0) return "0";
+  const bool negative = w < 0;
+  std::string digits;
+  for (; w != 0; w /= 10) digits.insert(digits.begin(), static_cast<char>('0' + (negative ? -(w % 10) : w % 10)));
+  return negative ? "-" + digits : digits;
 }
 
 namespace {
@@ -111,6 +153,32 @@ template <typename T> Outcome float_arithmetic(BinaryOp op, T a, T b, Type t) {
   }
 }
 
+/// An integer (or time) result computed exactly: a range check decides.
+Outcome integer_result(Wide v, Type t) {
+  if (v < lowest(t) || v > highest(t)) return fault(Fault::IntOverflow);
+  return ok(Value::of_integer(t, static_cast<std::int64_t>(static_cast<std::uint64_t>(v))));
+}
+
+/// Arithmetic on two integers of type `t` (Int keeps its own function, above, and C's faults).
+Outcome wide_arithmetic(BinaryOp op, Wide a, Wide b, Type t) {
+  switch (op) {
+  case BinaryOp::Add: return integer_result(a + b, t);
+  case BinaryOp::Sub: return integer_result(a - b, t);
+  case BinaryOp::Mul: return integer_result(a * b, t);
+  case BinaryOp::Div:
+  case BinaryOp::Mod:
+    if (b == 0) return fault(Fault::DivisionByZero);
+    // INT64_MIN % -1 is undefined in C as INT64_MIN / -1 is; narrower types compute in int.
+    if (t == Type::Int64 && a == lowest(t) && b == -1) return fault(Fault::IntOverflow);
+    return integer_result(op == BinaryOp::Div ? a / b : a % b, t);  // truncates toward zero, as C99
+  default: return fault(Fault::BadOperands);
+  }
+}
+
+/// `a op b` with a time among the operands (docs/language.md §4): time ± time, time * integer,
+/// integer * time, time / integer, and the comparisons of two times, in 64-bit milliseconds.
+Outcome time_binary(BinaryOp op, const Value &a, const Value &b);
+
 bool is_comparison(BinaryOp op) {
   return op == BinaryOp::Lt || op == BinaryOp::Le || op == BinaryOp::Gt || op == BinaryOp::Ge || op == BinaryOp::Eq ||
          op == BinaryOp::Ne;
@@ -140,12 +208,74 @@ std::optional<double> float_literal(std::string_view spelling) {
 Type common_type(Type a, Type b) {
   if (a == Type::Double || b == Type::Double) return Type::Double;
   if (a == Type::Float || b == Type::Float) return Type::Float;
+  if (model::is_integer(a) && model::is_integer(b))
+    if (auto t = integer_common(a, b)) return *t;
   return Type::Int;
 }
+
+namespace {
+
+Outcome time_binary(BinaryOp op, const Value &a, const Value &b) {
+  const bool ta = a.type == Type::Time, tb = b.type == Type::Time;
+  if (is_comparison(op)) {
+    if (!ta || !tb) return fault(Fault::BadOperands);
+    return ok(Value::of_bool(compare(op, a.i, b.i)));
+  }
+  switch (op) {
+  case BinaryOp::Add:
+  case BinaryOp::Sub:
+    if (!ta || !tb) break;
+    return integer_result(op == BinaryOp::Add ? wide(a) + wide(b) : wide(a) - wide(b), Type::Time);
+  case BinaryOp::Mul:
+    if (!(ta && model::is_integer(b.type)) && !(tb && model::is_integer(a.type))) break;
+    return integer_result(wide(a) * wide(b), Type::Time);
+  case BinaryOp::Div:
+    if (!ta || !model::is_integer(b.type)) break;
+    if (wide(b) == 0) return fault(Fault::DivisionByZero);
+    return integer_result(wide(a) / wide(b), Type::Time);  // truncates toward zero, as C99
+  default: break;
+  }
+  return fault(Fault::BadOperands);
+}
+
+/// A floating value truncated to integer type `to`, as C converts it.
+Outcome truncated(double f, Type to) {
+  const double t = std::trunc(f);  // truncation first: -0.9 becomes 0, which fits
+  // Every bound of an integer type up to 64 bits is a power of two or one less: compared as
+  // doubles, lowest() is exact and highest() + 1 is.
+  if (!(t >= static_cast<double>(lowest(to)) && t < static_cast<double>(highest(to) + 1)))
+    return fault(Fault::DoesNotFit);
+  return ok(Value::of_integer(to, model::is_unsigned(to) ? static_cast<std::int64_t>(static_cast<std::uint64_t>(t))
+                                                         : static_cast<std::int64_t>(t)));
+}
+
+/// An integer value as a floating one of type `to`, rounded as C converts it.
+Value to_floating(const Value &v, Type to) {
+  const double d =
+      v.type == Type::UInt64 ? static_cast<double>(static_cast<std::uint64_t>(v.i)) : static_cast<double>(v.i);
+  if (to == Type::Float) {
+    const float f = v.type == Type::UInt64 ? static_cast<float>(static_cast<std::uint64_t>(v.i))
+                                           : static_cast<float>(v.i);  // rounded once, as C does
+    return Value::of_float(f);
+  }
+  return Value::of_double(d);
+}
+
+}  // namespace
 
 Outcome convert(const Value &v, Type to) {
   if (v.type == to) return ok(v);
   const bool number = model::is_numeric(v.type);
+  if (model::is_sized(to) || (to == Type::Int && model::is_sized(v.type))) {
+    if (v.type == Type::Bool) return ok(Value::of_integer(to, v.b ? 1 : 0));
+    if (model::is_integer(v.type)) {
+      if (!(wide(v) >= lowest(to) && wide(v) <= highest(to))) return fault(Fault::DoesNotFit);
+      return ok(Value::of_integer(to, static_cast<std::int64_t>(static_cast<std::uint64_t>(wide(v)))));
+    }
+    if (is_floating(v.type)) return truncated(v.f, to);
+    return fault(Fault::BadOperands);
+  }
+  if ((to == Type::Float || to == Type::Double) && model::is_sized(v.type)) return ok(to_floating(v, to));
   switch (to) {
   case Type::Int: {
     if (v.type == Type::Bool) return ok(Value::of_int(v.b ? 1 : 0));
@@ -170,7 +300,7 @@ Outcome convert(const Value &v, Type to) {
     break;
   case Type::Bool:
     // The validator keeps numbers out of bools; a stray one converts as C's _Bool would.
-    if (v.type == Type::Int) return ok(Value::of_bool(v.i != 0));
+    if (model::is_integer(v.type)) return ok(Value::of_bool(v.i != 0));
     if (is_floating(v.type)) return ok(Value::of_bool(v.f != 0));
     break;
   default: break;
@@ -183,6 +313,7 @@ Outcome unary(UnaryOp op, const Value &a) {
     if (a.type != Type::Bool) return fault(Fault::BadOperands);
     return ok(Value::of_bool(!a.b));
   }
+  if (model::is_sized(a.type) || a.type == Type::Time) return integer_result(-wide(a), a.type);
   switch (a.type) {
   case Type::Int: return int_result(-a.i);  // -INT_MIN overflows
   case Type::Float: return ok(Value::of_float(-static_cast<float>(a.f)));
@@ -203,9 +334,18 @@ Outcome binary(BinaryOp op, const Value &a, const Value &b) {
   }
   if (is_comparison(op) && a.type == Type::Bool && b.type == Type::Bool)
     return ok(Value::of_bool(compare(op, a.b, b.b)));
+  if (a.type == Type::Time || b.type == Type::Time) return time_binary(op, a, b);
   if (!model::is_numeric(a.type) || !model::is_numeric(b.type)) return fault(Fault::BadOperands);
   const Type t = common_type(a.type, b.type);
-  const Value x = convert(a, t).value, y = convert(b, t).value;  // int to floating always converts
+  if (model::is_integer(a.type) && model::is_integer(b.type)) {
+    // Integers compare and compute as the mathematical values they are: exact, then a range
+    // check in the type they mix in (the validator lets only types mix of which one holds the
+    // other, so the C of the engine computes the same).
+    if (is_comparison(op)) return ok(Value::of_bool(compare(op, wide(a), wide(b))));
+    if (t == Type::Int) return int_arithmetic(op, a.i, b.i);
+    return wide_arithmetic(op, wide(a), wide(b), t);
+  }
+  const Value x = convert(a, t).value, y = convert(b, t).value;  // integer to floating always converts
   if (is_comparison(op)) {
     if (t == Type::Int) return ok(Value::of_bool(compare(op, x.i, y.i)));
     return ok(Value::of_bool(compare(op, x.f, y.f)));  // a float's value is exact in a double
@@ -218,6 +358,8 @@ Outcome binary(BinaryOp op, const Value &a, const Value &b) {
 }
 
 std::string text(const Value &v) {
+  if (model::is_integer(v.type)) return decimal(v);
+  if (v.type == Type::Time) return decimal(v) + "ms";
   switch (v.type) {
   case Type::String: return v.s;
   case Type::Int: return std::to_string(v.i);

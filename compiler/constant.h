@@ -22,10 +22,12 @@ namespace gfec::constant {
 /// A value of the language; `type` says which member holds it.
 struct Value {
   model::Type type = model::Type::Int;
-  bool b = false;      ///< Bool
-  std::int64_t i = 0;  ///< Int: always within int's 32 bits; Duration (the interpreter): ticks
-  double f = 0;        ///< Float: always a value a float holds; Double
-  std::string s;       ///< String (plan formulas only)
+  bool b = false;  ///< Bool
+  /// An integer type: the value, always within the type's range (a uint64 above INT64_MAX is kept
+  /// as its bit pattern: wide() reads it); Time: milliseconds; Duration (the interpreter): ticks.
+  std::int64_t i = 0;
+  double f = 0;   ///< Float: always a value a float holds; Double
+  std::string s;  ///< String (plan formulas only)
 
   static Value of_bool(bool v);
   static Value of_int(std::int32_t v);
@@ -33,14 +35,34 @@ struct Value {
   static Value of_double(double v);
   static Value of_string(std::string v);
   static Value of_ticks(std::uint64_t v);
+  /// A value of integer type `t` (or Time), given as its bit pattern in 64 bits.
+  static Value of_integer(model::Type t, std::int64_t bits);
+  static Value of_time(std::int64_t ms) { return of_integer(model::Type::Time, ms); }
   /// Zero (false) of type `t`: an unset var, a missing input column.
   static Value zero(model::Type t);
 };
 
+/// Wide enough for every integer type's values and for the exact product of two of them.
+using Wide = __int128;
+
+/// The mathematical value of an integer (or Time) value.
+Wide wide(const Value &v);
+
+/// The values an integer type (or Time) holds.
+Wide lowest(model::Type t);
+Wide highest(model::Type t);
+
+/// Whether integer type `big` holds every value of integer type `small` (docs/language.md §4).
+bool holds(model::Type big, model::Type small);
+
+/// The type two integer types mix in: the one that holds every value of the other; nothing when
+/// neither does (an int16 with a uint16, an int with a uint32).
+std::optional<model::Type> integer_common(model::Type a, model::Type b);
+
 /// Why an operation has no value.
 enum class Fault {
   None,
-  IntOverflow,     ///< the int result does not fit 32 bits (INT_MIN / -1 and INT_MIN % -1 too)
+  IntOverflow,     ///< the integer (or time) result does not fit its type (INT_MIN / -1 and INT_MIN % -1 too)
   DivisionByZero,  ///< `/` or `%` by zero, int or floating
   NotFinite,       ///< a floating result that is an infinity or a NaN
   DoesNotFit,      ///< a conversion to a type that cannot hold the value (3e9 to int, 1e39 to float)
@@ -90,7 +112,10 @@ template <typename T> bool compare(BinaryOp op, T a, T b) {
   }
 }
 
-/// A value as text: strings as they are, ints in decimal, floats with the shortest digits that
+/// An integer value in decimal (a uint64 above INT64_MAX too).
+std::string decimal(const Value &v);
+
+/// A value as text: strings as they are, integers in decimal, times as `500ms`, floats with the shortest digits that
 /// read back as the same float (or double), bools as `true`/`false`.
 std::string text(const Value &v);
 

@@ -29,8 +29,44 @@ const char *type_name(Type t) {
   case Type::String: return "string";
   case Type::Object: return "object";
   case Type::Duration: return "duration";
+  case Type::Time: return "time";
+  case Type::Int8: return "int8";
+  case Type::Int16: return "int16";
+  case Type::Int64: return "int64";
+  case Type::UInt8: return "uint8";
+  case Type::UInt16: return "uint16";
+  case Type::UInt32: return "uint32";
+  case Type::UInt64: return "uint64";
   }
   return "?";
+}
+
+int integer_bits(Type t) {
+  switch (t) {
+  case Type::Int8:
+  case Type::UInt8: return 8;
+  case Type::Int16:
+  case Type::UInt16: return 16;
+  case Type::Int64:
+  case Type::UInt64:
+  case Type::Time: return 64;
+  default: return 32;
+  }
+}
+
+const char *c_integer_type(Type t) {
+  switch (t) {
+  case Type::Int: return "int32_t";
+  case Type::Int8: return "int8_t";
+  case Type::Int16: return "int16_t";
+  case Type::Int64:
+  case Type::Time: return "int64_t";
+  case Type::UInt8: return "uint8_t";
+  case Type::UInt16: return "uint16_t";
+  case Type::UInt32: return "uint32_t";
+  case Type::UInt64: return "uint64_t";
+  default: return nullptr;
+  }
 }
 
 std::string source_text(const Model &m, const SourceRange &range) {

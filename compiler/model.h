@@ -40,11 +40,42 @@ using ActorId = Id<struct ActorTag>;            ///< Plan::actors
 using ConfigId = Id<struct ConfigTag>;          ///< Plan::config
 using BlockId = Id<struct BlockTag>;            ///< Model::blocks
 
-enum class Type : std::uint8_t { Void, Bool, Int, Float, Double, String, Object, Duration };
+/// `Duration` is a duration literal or `elapsed(P)` where whole ticks are meant (§5.3); `Time`
+/// is the language's `time`: a signed 64-bit count of milliseconds (docs/language.md §4). The
+/// sized integers (docs/targets.md "Sized integers") are appended: a value's type never changes
+/// its number.
+enum class Type : std::uint8_t {
+  Void,
+  Bool,
+  Int,
+  Float,
+  Double,
+  String,
+  Object,
+  Duration,
+  Time,
+  Int8,
+  Int16,
+  Int64,
+  UInt8,
+  UInt16,
+  UInt32,
+  UInt64,
+};
 
 /// The type as the language (and C, for the numeric ones) spells it: "bool", "float", ...
 const char *type_name(Type t);
-inline bool is_numeric(Type t) { return t == Type::Int || t == Type::Float || t == Type::Double; }
+/// An integer type: `int` or a sized one.
+inline bool is_integer(Type t) { return t == Type::Int || (t >= Type::Int8 && t <= Type::UInt64); }
+inline bool is_numeric(Type t) { return is_integer(t) || t == Type::Float || t == Type::Double; }
+/// A sized integer type (not `int`).
+inline bool is_sized(Type t) { return t >= Type::Int8 && t <= Type::UInt64; }
+inline bool is_unsigned(Type t) { return t >= Type::UInt8 && t <= Type::UInt64; }
+/// The bits of an integer type (Time: 64).
+int integer_bits(Type t);
+/// The C type of a value of `t` in an engine: "int32_t", "int64_t", "uint8_t", ...; null for
+/// types that are not integers or time.
+const char *c_integer_type(Type t);
 
 // ---------------------------------------------------------------- expressions and statements
 
@@ -84,8 +115,18 @@ struct Expr {
   // value in bool_value (Bool), int_value (Int) or float_value (Float, Double).
   bool folded = false;
   SourceRange range;
-  std::int32_t int_value = 0;
-  unsigned long ticks = 0;
+
+private:
+  // Here, not below: it fills the padding after `range` (a model::Expr stays 80 bytes).
+  std::uint32_t ref_ = UINT32_MAX;
+
+public:
+  union {
+    /// Int (of any integer type, or Time: milliseconds), and folded integer or time values: the
+    /// value; an unsigned 64-bit value is kept as its bit pattern.
+    std::int64_t int_value = 0;
+    unsigned long ticks;  ///< Kind::Ticks of type Duration only
+  };
   /// The value as a double; converted to `type` it is the expression's value. Kind::Ticks: the
   /// duration as written, in milliseconds (no Ticks expression has a float value of its own).
   double float_value = 0;
@@ -118,7 +159,6 @@ private:
     (void)right_kind;
     return ref_ == kNoRef ? IdT() : IdT(ref_);
   }
-  std::uint32_t ref_ = kNoRef;
 };
 
 struct Stmt {

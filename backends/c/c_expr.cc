@@ -1,6 +1,7 @@
 #include "c_expr.h"
 
 #include "c_form.h"
+#include "constant.h"
 
 #include <fmt/format.h>
 
@@ -114,6 +115,23 @@ Rendered int_literal(std::int32_t v) {
   return {std::to_string(v), v < 0 ? kUnary : kPrimary};
 }
 
+/// A literal of a sized integer type or of `time` (milliseconds): its value as a C constant
+/// every target reads as that value (a decimal constant takes the first of int, long, long long
+/// that holds it; only INT64_MIN and the uint64 values above INT64_MAX need more).
+Rendered wide_literal(const Expr &e) {
+  const constant::Value v = constant::Value::of_integer(e.type, e.int_value);
+  std::string text = constant::decimal(v);
+  if (e.type == Type::UInt64 && e.int_value < 0) text = fmt::format("UINT64_C({})", text);
+  else if (e.int_value == INT64_MIN) text = "(-INT64_C(9223372036854775807) - 1)";
+  Rendered r{text, e.int_value < 0 && e.type != Type::UInt64 ? kUnary : kPrimary};
+  if (e.type == Type::Time && e.kind == Expr::Kind::Int && !e.text.empty() && e.text.str() != text + "ms" &&
+      e.text.str().find("*/") == std::string::npos)
+    r.text += fmt::format(" /* {} */", e.text.str());
+  return r;
+}
+
+bool is_wide(Type t) { return model::is_sized(t) || t == Type::Time; }
+
 /// A float as a C literal that every compiler reads as exactly this float: the shortest
 /// decimal that rounds back to it, with an `f`, which a compiler rounds once, straight to float.
 /// (`(float)1.00000005960464478` would round twice where double is binary64 and once where it
@@ -140,7 +158,7 @@ Rendered literal(const Expr &e) {
   switch (e.kind) {
   case Expr::Kind::Bool: return {e.bool_value ? "true" : "false"};
   case Expr::Kind::String: return {c_string_literal(e.text.str())};
-  case Expr::Kind::Int: return int_literal(e.int_value);
+  case Expr::Kind::Int: return is_wide(e.type) ? wide_literal(e) : int_literal(static_cast<std::int32_t>(e.int_value));
   default:
     if (e.type == Type::Float) return float_literal(e);
     return {e.text.str(), !e.text.empty() && e.text.data()[0] == '-' ? kUnary : kPrimary};
@@ -336,8 +354,9 @@ public:
       in_folded_ = true;
       Rendered spelled = render(e);
       in_folded_ = false;
-      Rendered value =
-          e.type == Type::Int ? int_literal(e.int_value) : float_value_literal(static_cast<float>(e.float_value));
+      Rendered value = is_wide(e.type)       ? wide_literal(e)
+                       : e.type == Type::Int ? int_literal(static_cast<std::int32_t>(e.int_value))
+                                             : float_value_literal(static_cast<float>(e.float_value));
       return annotated(std::move(value), e, spelled.text);
     }
     switch (e.kind) {
@@ -349,7 +368,11 @@ public:
     case Expr::Kind::Var: return {c_.field(c_.var_field.at(e.var()))};
     case Expr::Kind::Const: return constant(e);
     case Expr::Kind::Call: return call(e);
-    case Expr::Kind::Elapsed: return {c_.timer_of(e.place())};
+    case Expr::Kind::Elapsed:
+      // As a time: ticks times the period in milliseconds (docs/language.md §4), in 64 bits.
+      if (e.type == Type::Time)
+        return {fmt::format("((int64_t){} * {})", c_.timer_of(e.place()), static_cast<long long>(c_.chart.period_ms))};
+      return {c_.timer_of(e.place())};
     case Expr::Kind::Unary: return unary(e);
     case Expr::Kind::Binary: return binary(e);
     case Expr::Kind::Active:
@@ -384,7 +407,16 @@ public:
       }
     }
     const char *cast = nullptr;
-    if (to == Type::Int && is_floating(e.type)) {
+    if (is_floating(to) && model::is_sized(e.type)) {
+      cast = to == Type::Float ? "(float)" : "(double)";  // -Wimplicit-int-float-conversion
+    } else if (model::is_sized(to) && model::integer_bits(to) < 32 && e.type == to && e.kind != Expr::Kind::Var &&
+               e.kind != Expr::Kind::Int && !e.folded && e.kind != Expr::Kind::Const) {
+      // C computes an int8/int16/uint8/uint16 expression in int; the language's value fits the
+      // type (gfec run checks it), so the conversion back is written out (-Wconversion).
+      r.text = fmt::format("({})({})", model::c_integer_type(to), r.text);
+      r.prec = kUnary;
+      return r;
+    } else if (to == Type::Int && is_floating(e.type)) {
       cast = "(int32_t)";
     } else if (to == Type::Float && e.type == Type::Int) {
       // A value read at run time may not fit a float exactly (gcc's -Wconversion, clang's
@@ -428,6 +460,11 @@ public:
         BinaryOp op = s.op == AssignOp::Add ? BinaryOp::Add : BinaryOp::Sub;
         if (r.prec <= precedence(op)) r.text = bracket(r.text);
         r.text = fmt::format("{} = (float)((double){} {} {});", target, target, spelling(op), r.text);
+      } else if (s.op != AssignOp::Set && model::is_sized(to) && model::integer_bits(to) < 32) {
+        // `v += e` computes in int: written out with its conversion back (-Wconversion).
+        BinaryOp op = s.op == AssignOp::Add ? BinaryOp::Add : BinaryOp::Sub;
+        if (r.prec <= precedence(op)) r.text = bracket(r.text);
+        r.text = fmt::format("{} = ({})({} {} {});", target, model::c_integer_type(to), target, spelling(op), r.text);
       } else {
         r = converted(std::move(r), s.expr, to);
         r.text = fmt::format("{} {} {};", target, spelling(s.op), r.text);
@@ -752,6 +789,14 @@ const char *c_type(model::Type type) {
   switch (type) {
   case model::Type::Bool: return "bool";
   case model::Type::Int: return "int32_t";
+  case model::Type::Time:
+  case model::Type::Int8:
+  case model::Type::Int16:
+  case model::Type::Int64:
+  case model::Type::UInt8:
+  case model::Type::UInt16:
+  case model::Type::UInt32:
+  case model::Type::UInt64: return model::c_integer_type(type);
   case model::Type::Float: return "float";
   case model::Type::Double: return "double";
   case model::Type::Void: return "void";

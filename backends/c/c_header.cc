@@ -133,11 +133,12 @@ void state_struct(CodeWriter &w, const EngineContext &c) {
   }
   for (model::VarId v : c.chart.vars.ids()) {
     const model::Var &var = c.chart.vars[v];
-    rows.emplace_back(fmt::format("{} {};", c_type(var.type), c.var_field[v]),
-                      var.role == model::VarRole::In ? fmt::format("in {}: the caller sets it before a tick", var.name)
-                      : var.role == model::VarRole::Out
-                          ? fmt::format("out {}: the caller reads it after a tick", var.name)
-                          : fmt::format("var {}", var.name));
+    std::string what = var.role == model::VarRole::In ? fmt::format("in {}: the caller sets it before a tick", var.name)
+                       : var.role == model::VarRole::Out
+                           ? fmt::format("out {}: the caller reads it after a tick", var.name)
+                           : fmt::format("var {}", var.name);
+    if (var.type == model::Type::Time) what += " (a time: milliseconds)";
+    rows.emplace_back(fmt::format("{} {};", c_type(var.type), c.var_field[v]), std::move(what));
   }
   for (model::PlaceId p : c.chart.places.ids())
     if (c.sub[p])

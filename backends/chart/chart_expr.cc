@@ -1,5 +1,7 @@
 #include "chart_expr.h"
 
+#include "constant.h"
+
 #include <fmt/format.h>
 
 #include <cmath>
@@ -31,7 +33,12 @@ std::string expr(const model::Model &m, model::ChartId chart, const model::Expr 
   switch (e.kind) {
   case K::Bool: return e.bool_value ? "true" : "false";
   // INT_MIN has no literal (2147483648 does not fit an int): C's spelling, which reads back.
-  case K::Int: return e.text.str() == "-2147483648" ? "(-2147483647 - 1)" : e.text.str();
+  case K::Int:
+    // A time is written in milliseconds, a sized integer in decimal (its literal takes the type
+    // of what it meets, docs/language.md §4).
+    if (e.type == model::Type::Time) return constant::decimal(constant::Value::of_time(e.int_value)) + "ms";
+    if (model::is_sized(e.type)) return constant::decimal(constant::Value::of_integer(e.type, e.int_value));
+    return e.text.str() == "-2147483648" ? "(-2147483647 - 1)" : e.text.str();
   case K::Float: {
     // A float folded to FLT_MAX is spelled 3.4028235e+38, which as the double it reads back as
     // lies past FLT_MAX and is refused: then the value's own digits, as a double.

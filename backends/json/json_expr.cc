@@ -73,7 +73,10 @@ Json expression_tree(const model::Model &m, const Scope &scope, const Expr &e) {
   switch (e.kind) {
   case Expr::Kind::Bool: j["value"] = e.bool_value; break;
   // The values the validator parsed from the spellings (a literal's value as C reads it).
-  case Expr::Kind::Int: j["value"] = e.int_value; break;
+  case Expr::Kind::Int:  // an integer of e.type, or a time in milliseconds
+    if (e.type == model::Type::UInt64) j["value"] = static_cast<std::uint64_t>(e.int_value);
+    else j["value"] = e.int_value;
+    break;
   case Expr::Kind::Float: j["value"] = e.float_value; break;
   case Expr::Kind::String: j["value"] = e.text; break;
   case Expr::Kind::Ticks:

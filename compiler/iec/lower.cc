@@ -17,16 +17,21 @@
 
 namespace gfec::iec {
 
-namespace {
+namespace {}  // namespace
 
-/// The chart type of an IEC elementary type gfec reads, or null.
 const char *chart_type(const std::string &iec) {
-  if (iec == "BOOL") return "bool";
-  if (iec == "DINT") return "int";
-  if (iec == "REAL") return "float";
-  if (iec == "LREAL") return "double";
+  static const char *const kMap[][2] = {
+      {"BOOL", "bool"},   {"DINT", "int"},    {"REAL", "float"},   {"LREAL", "double"},
+      {"TIME", "time"},   {"SINT", "int8"},   {"INT", "int16"},    {"LINT", "int64"},
+      {"USINT", "uint8"}, {"UINT", "uint16"}, {"UDINT", "uint32"}, {"ULINT", "uint64"},
+      {"BYTE", "uint8"},  {"WORD", "uint16"}, {"DWORD", "uint32"}, {"LWORD", "uint64"},
+  };
+  for (const auto &m : kMap)
+    if (iec == m[0]) return m[1];
   return nullptr;
 }
+
+namespace {
 
 bool elementary(const std::string &iec) {
   static const char *const kTypes[] = {"SINT",          "INT",   "LINT",   "USINT",   "UINT", "UDINT", "ULINT",
@@ -156,8 +161,8 @@ ast::ValueDecl lower_variable(Variable &v, Diagnostics &diag, const KnownBlocks 
     std::string head = t.substr(0, t.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZ_0123456789"));
     if (elementary(head))
       diag.error(v.type.range, ErrorKind::NotSupported,
-                 fmt::format("the IEC type '{}' is not supported yet: gfec reads BOOL, DINT, REAL and LREAL "
-                             "variables",
+                 fmt::format("the IEC type '{}' is not supported yet: gfec reads BOOL, the integers, REAL, "
+                             "LREAL and TIME variables",
                              v.type.text));
     else
       diag.error(v.type.range, ErrorKind::NotSupported,
@@ -221,10 +226,10 @@ template <typename Stmts> void exact_step_times_in(Stmts &block, double period_m
   }
 }
 
-/// The first place `e` reads a time (`Step.T`, a TIME literal), or null.
+/// The first place `e` reads a step's time (`Step.T`), or null. A TIME literal alone needs no
+/// period: as a TIME value it counts milliseconds.
 const SourceRange *time_read(const ast::Expr &e) {
-  if (e.kind == ast::Expr::Kind::Duration || (e.kind == ast::Expr::Kind::Call && e.name.text == "elapsed"))
-    return &e.range;
+  if (e.kind == ast::Expr::Kind::Call && e.name.text == "elapsed") return &e.range;
   for (const ast::Expr *a : e.args)
     if (const SourceRange *r = a ? time_read(*a) : nullptr) return r;
   return nullptr;
@@ -240,7 +245,7 @@ template <typename Stmts> const SourceRange *time_read(const Stmts &block) {
   return nullptr;
 }
 
-/// The first place the chart reads a time: a timed association, `Step.T`, a TIME literal.
+/// The first place the chart reads a step's time: a timed association, `Step.T`.
 const SourceRange *time_read(const ast::Chart &c) {
   for (const ast::Place &p : c.places)
     if (p.extras)

@@ -13,6 +13,10 @@ namespace gfec::iec {
 /// The scan period of `pou`: the INTERVAL of the one task of `project` that runs it, or nullopt
 /// (none runs it, or it has no INTERVAL). Two tasks with different intervals running it are an
 /// error at the second one.
+/// The chart type (docs/iec.md "What a program is in gfec's chart language") of an IEC
+/// elementary type gfec reads, given in upper case (`INT` is `int16`, `TIME` is `time`), or null.
+const char *chart_type(const std::string &iec);
+
 std::optional<ast::Period> period_of(const Project &project, const Pou &pou, Diagnostics &diag);
 
 /// Lowers every PROGRAM of `project` into `file` (each with the period of the task that runs

@@ -5,6 +5,7 @@
 #include "iec/st_parser.h"
 #include "iec/iec_text.h"
 #include "iec/st_reader.h"
+#include "iec/lower.h"
 
 #include <fmt/format.h>
 
@@ -233,7 +234,7 @@ void StParser::declaration(Pou &pou, Section section, bool constant, std::string
   const StToken &last = toks_[type_end];
   ast::Name type{text_.substr(type_start.begin, last.end - type_start.begin), range(type_start, last)};
   const std::string t = upper(type.text);
-  const bool readable = t == "BOOL" || t == "DINT" || t == "REAL" || t == "LREAL";
+  const bool readable = chart_type(t) != nullptr;
   ast::ExprPtr init;
   if (tok().kind == StTok::Assign) {
     next();

@@ -34,9 +34,14 @@ Value arith(BinaryOp op, const Value &a, const Value &b, SourceRange r) {
   const Type t = constant::common_type(a.type, b.type);
   switch (v.fault) {
   case constant::Fault::DivisionByZero: throw RuntimeError(r, "division by zero (undefined behaviour in C)");
-  case constant::Fault::IntOverflow:
+  case constant::Fault::IntOverflow: {
     // INT_MIN / -1 and INT_MIN % -1 overflow in C even though the 64-bit result looks harmless.
-    throw RuntimeError(r, fmt::format("int overflow: {} {} {} (undefined behaviour in C)", a.i, spelling(op), b.i));
+    const Type in = a.type == Type::Time || b.type == Type::Time ? Type::Time : t;
+    if (in == Type::Int)
+      throw RuntimeError(r, fmt::format("int overflow: {} {} {} (undefined behaviour in C)", a.i, spelling(op), b.i));
+    throw RuntimeError(r, fmt::format("{} overflow: {} {} {} does not fit in '{}'", model::type_name(in),
+                                      constant::text(a), spelling(op), constant::text(b), model::type_name(in)));
+  }
   case constant::Fault::NotFinite:
     // Results C would print or compare differently across platforms (infinities, NaNs).
     throw RuntimeError(r, fmt::format("the result of {} {} {} is not a finite number", operand_text(a, t), spelling(op),
@@ -66,7 +71,7 @@ Value literal_float(const Expr &e) {
 Value literal(const Expr &e) {
   switch (e.kind) {
   case Expr::Kind::Bool: return Value::of_bool(e.bool_value);
-  case Expr::Kind::Int: return Value::of_int(e.int_value);
+  case Expr::Kind::Int: return Value::of_integer(e.type, e.int_value);  // an integer or a time
   case Expr::Kind::Float: return literal_float(e);
   case Expr::Kind::Ticks: return Value::of_ticks(e.ticks);
   default: throw RuntimeError(e.range, "a string has no value in a chart");
@@ -105,8 +110,11 @@ Value unary(const Expr &e, Frame &f) {
   if (e.unary_op == UnaryOp::Not) return Value::of_bool(!convert(v, Type::Bool, e.range).b);
   constant::Outcome r = constant::unary(e.unary_op, v);
   if (r) return r.value;
-  if (r.fault == constant::Fault::IntOverflow)
-    throw RuntimeError(e.range, "int overflow: -(-2147483648) (undefined behaviour in C)");
+  if (r.fault == constant::Fault::IntOverflow) {
+    if (v.type == Type::Int) throw RuntimeError(e.range, "int overflow: -(-2147483648) (undefined behaviour in C)");
+    throw RuntimeError(e.range, fmt::format("{} overflow: -({}) does not fit in '{}'", model::type_name(v.type),
+                                            constant::text(v), model::type_name(v.type)));
+  }
   throw RuntimeError(e.range, "'-' needs a number");
 }
 
@@ -137,7 +145,12 @@ Value evaluate(const Expr &e, Frame &f) {
     const model::Const &k = f.model.consts.at(e.constant());
     return convert(literal(k.value), k.type, e.range);
   }
-  case Expr::Kind::Elapsed: return Value::of_ticks(f.timers.at(e.place()));
+  case Expr::Kind::Elapsed:
+    // As a time (docs/language.md §4): its ticks times the period, a whole number of ms.
+    if (e.type == Type::Time)
+      return Value::of_time(static_cast<std::int64_t>(f.timers.at(e.place())) *
+                            static_cast<std::int64_t>(f.chart.period_ms));
+    return Value::of_ticks(f.timers.at(e.place()));
   case Expr::Kind::Call: return call(e, f);
   case Expr::Kind::Unary: return unary(e, f);
   case Expr::Kind::Binary: return binary(e, f);

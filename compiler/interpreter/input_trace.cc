@@ -1,5 +1,7 @@
 #include "input_trace.h"
 
+#include "constant.h"
+
 #include "did_you_mean.h"
 
 #include <fmt/format.h>
@@ -59,6 +61,18 @@ std::optional<Value> parse_value(std::string_view text, model::Type t) {
     long long v = std::strtoll(s.c_str(), &end, 10);
     if (errno || *end || v < INT_MIN || v > INT_MAX) return std::nullopt;
     return Value::of_int(static_cast<std::int32_t>(v));
+  }
+  if (model::is_integer(t) || t == model::Type::Time) {
+    // Decimal, within the type's range; a time is integer milliseconds (docs/iec.md).
+    if (model::is_unsigned(t)) {
+      if (s[0] == '-') return std::nullopt;
+      unsigned long long v = std::strtoull(s.c_str(), &end, 10);
+      if (errno || *end || static_cast<constant::Wide>(v) > constant::highest(t)) return std::nullopt;
+      return Value::of_integer(t, static_cast<std::int64_t>(v));
+    }
+    long long v = std::strtoll(s.c_str(), &end, 10);
+    if (errno || *end || v < constant::lowest(t) || v > constant::highest(t)) return std::nullopt;
+    return Value::of_integer(t, v);
   }
   double v = std::strtod(s.c_str(), &end);
   if (errno || *end || !std::isfinite(v)) return std::nullopt;

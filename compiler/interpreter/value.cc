@@ -31,6 +31,14 @@ Value to_float(double d, SourceRange where) {
 
 Value convert(const Value &v, model::Type to, SourceRange where) {
   if (v.type == to) return v;
+  if (model::is_sized(to) || model::is_sized(v.type)) {
+    // The sized integers: exact, and a value that does not fit its type stops the run
+    // (docs/targets.md "Sized integers").
+    auto r = constant::convert(v, to);
+    if (r) return r.value;
+    if (r.fault == constant::Fault::DoesNotFit)
+      throw RuntimeError(where, fmt::format("{} does not fit in '{}'", constant::text(v), model::type_name(to)));
+  }
   switch (to) {
   case model::Type::Int:
     if (v.type == model::Type::Float || v.type == model::Type::Double) return to_int(v.f, where);
@@ -63,7 +71,8 @@ std::string format_value(const Value &v) {
   case model::Type::Bool: return v.b ? "true" : "false";
   case model::Type::Float: std::snprintf(buffer, sizeof buffer, "%.9g", v.f); return buffer;
   case model::Type::Double: std::snprintf(buffer, sizeof buffer, "%.17g", v.f); return buffer;
-  default: return std::to_string(v.i);
+  case model::Type::Time: return "T#" + constant::decimal(v) + "ms";  // IEC's spelling (docs/iec.md)
+  default: return constant::decimal(v);
   }
 }
 
@@ -71,6 +80,14 @@ std::pair<std::string, std::string> c_printf_of(model::Type t, const std::string
   switch (t) {
   case model::Type::Bool: return {"%s", fmt::format("{} ? \"true\" : \"false\"", expr)};
   case model::Type::Int: return {"%d", expr};
+  case model::Type::Time: return {"T#%lldms", "(long long)" + expr};
+  case model::Type::Int8:
+  case model::Type::Int16:
+  case model::Type::Int64: return {"%lld", "(long long)" + expr};
+  case model::Type::UInt8:
+  case model::Type::UInt16:
+  case model::Type::UInt32:
+  case model::Type::UInt64: return {"%llu", "(unsigned long long)" + expr};
   case model::Type::Float: return {"%.9g", "(double)" + expr};
   default: return {"%.17g", expr};
   }

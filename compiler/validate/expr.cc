@@ -29,13 +29,13 @@ model::Expr make(K kind, Type type, SourceRange range) {
 /// The unknown names already reported where `s` stands.
 std::set<std::string> &seen(ExprScope &s) { return s.chart ? s.chart->unknown : s.cx.file_unknown; }
 
+/// A duration literal. Its period is required where it counts ticks (compared with a timer:
+/// lower_binary); as a `time` (as_time) it counts milliseconds and needs none.
 std::optional<model::Expr> lower_duration(const ast::Expr &e, ExprScope &s) {
   model::Expr d = make(K::Ticks, Type::Duration, e.range);
   d.float_value = e.duration_ms;
-  if (s.chart) {
-    require_period(s, e.range, fmt::format("duration '{}'", e.text()));
-    d.ticks = to_ticks(d.float_value, s.chart->out.period_ms);
-  }
+  d.text = e.text();
+  if (s.chart) d.ticks = to_ticks(d.float_value, s.chart->out.period_ms);
   return d;
 }
 
@@ -327,10 +327,84 @@ bool check_arguments(const ast::Expr &call, const model::Function &f,
   return ok;
 }
 
-/// The note every misuse of a duration gets: durations are for timers only.
+/// The note every misuse of a duration gets: durations are for timers and times only.
 void duration_note(Diagnostic &d, Type a, Type b) {
-  if (a == Type::Duration || b == Type::Duration)
+  if (a == Type::Time || b == Type::Time)
+    d.note("a 'time' mixes only with times and durations (and is multiplied or divided by an integer), as in "
+           "'t + 100ms'; a number is never a time");
+  else if (a == Type::Duration || b == Type::Duration)
     d.note("a duration can only be compared with another duration, as in 'elapsed(P) >= 500ms'");
+}
+
+/// The largest number of milliseconds a `time` constant is kept exact in (a double's integers).
+constexpr double kMaxTimeMs = 9007199254740992.0;
+
+/// `x`, a duration or `elapsed(P)`, as a `time` (docs/language.md §4): a literal becomes its
+/// milliseconds, which must be whole; `elapsed(P)` its ticks times the period, which must be a
+/// whole number of milliseconds then. False after reporting why not.
+bool as_time(model::Expr &x, ExprScope &s) {
+  if (x.type != Type::Duration) return true;
+  switch (x.kind) {
+  case K::Ticks: {
+    const double ms = x.float_value;
+    if (ms != std::floor(ms) || std::fabs(ms) > kMaxTimeMs) {
+      s.cx.diag.error(
+          x.range, ErrorKind::TypeMismatch,
+          ms != std::floor(ms)
+              ? fmt::format("duration '{}' is not a whole number of milliseconds, which a 'time' counts", x.text.str())
+              : fmt::format("duration '{}' is too large for a 'time' constant", x.text.str()));
+      return false;
+    }
+    x.kind = K::Int;
+    x.type = Type::Time;
+    x.int_value = static_cast<std::int64_t>(ms);
+    return true;
+  }
+  case K::Elapsed: {
+    const double period = s.chart ? s.chart->out.period_ms : 0;
+    if (period > 0 && period != std::floor(period)) {
+      s.cx.diag.error(x.range, ErrorKind::TypeMismatch,
+                      fmt::format("'{}' as a 'time' needs a period of whole milliseconds, not {}ms",
+                                  source_text(s.cx.model, x.range), period));
+      return false;
+    }
+    x.type = Type::Time;
+    return true;
+  }
+  case K::Paren:
+    if (x.args.empty() || !as_time(x.args[0], s)) return false;
+    x.type = Type::Time;
+    return true;
+  default: return true;
+  }
+}
+
+/// An `int` constant (a literal, a folded expression, a constant's name) that meets a sized
+/// integer takes that type (§4), checked to fit: `x + 1` for an int16 `x` adds an int16 1, and
+/// `u < -1` for a uint8 `u` is an error at the -1. False after reporting it.
+bool retype_constant(model::Expr &x, Type to, ExprScope &s) {
+  // A literal beyond int's range is an int64 literal that any integer type holding it takes.
+  const bool big = x.kind == K::Int && !x.folded && x.type == Type::Int64 && !x.text.empty();
+  if (big && (to == Type::Int || to == Type::Bool)) {
+    s.cx.diag.error(x.range, ErrorKind::NotConstant,
+                    fmt::format("integer constant '{}' is too large for 'int'", x.text.str()));
+    return false;
+  }
+  if (!(x.type == Type::Int || big) || !model::is_sized(to)) return true;
+  auto v = evaluate(x, s.cx.model, nullptr);
+  if (!v) return true;  // not a constant: the typing rules decide
+  auto literal = to_literal(*v, to, x.range, s.cx.diag, nullptr);
+  if (!literal) return false;
+  x = std::move(*literal);
+  return true;
+}
+
+/// The message's advice where two integer types do not mix: the conversion that says which.
+void conversion_note(Diagnostic &d, Type to, Type from) {
+  if (model::is_integer(to) && (model::is_integer(from) || from == Type::Float || from == Type::Double))
+    d.note(fmt::format("'{}' does not hold every value of '{}': convert explicitly, e.g. '{}(x)', which stops the "
+                       "run where a value does not fit",
+                       model::type_name(to), model::type_name(from), model::type_name(to)));
 }
 
 std::optional<model::Expr> lower_unary(const ast::Expr &e, ExprScope &s) {
@@ -345,6 +419,7 @@ std::optional<model::Expr> lower_unary(const ast::Expr &e, ExprScope &s) {
     duration_note(d, operand->type, operand->type);
     return std::nullopt;
   }
+  if (*type == Type::Time && !as_time(*operand, s)) return std::nullopt;
   model::Expr x = make(K::Unary, *type, e.range);
   x.unary_op = e.unary_op;
   x.args.push_back(std::move(*operand));
@@ -379,15 +454,29 @@ std::optional<model::Expr> lower_binary(const ast::Expr &e, ExprScope &s) {
   auto a = lower_expr(e.args[0], s);
   auto b = lower_expr(e.args[1], s);
   if (!a || !b) return std::nullopt;
+  if (!retype_constant(*b, a->type, s) || !retype_constant(*a, b->type, s)) return std::nullopt;
   auto type = binary_type(e.binary_op, a->type, b->type);
   if (!type) {
     auto &d = s.cx.diag.error(e.range, ErrorKind::TypeMismatch,
                               fmt::format("invalid operands to binary '{}' (have {} and {})",
                                           written_operator(e, s.cx.sources), quoted(a->type), quoted(b->type)));
     duration_note(d, a->type, b->type);
+    if (model::is_integer(a->type) && model::is_integer(b->type))
+      d.note(fmt::format("'{}' and '{}' do not mix: neither holds every value of the other; convert one, e.g. "
+                         "'{}(x)' or '{}(x)'",
+                         model::type_name(a->type), model::type_name(b->type), model::type_name(a->type),
+                         model::type_name(b->type)));
     return std::nullopt;
   }
-  if (a->type == Type::Duration && b->type == Type::Duration) warn_timer_rounding(e, *a, *b, s);
+  if (a->type == Type::Duration && b->type == Type::Duration) {
+    // Compared in whole ticks (§5.3): the period is needed ('elapsed' asked for it already).
+    for (const model::Expr *d : {&*a, &*b})
+      if (s.chart && d->kind == K::Ticks) require_period(s, d->range, fmt::format("duration '{}'", d->text.str()));
+    warn_timer_rounding(e, *a, *b, s);
+  } else if ((*type == Type::Time || a->type == Type::Time || b->type == Type::Time) &&
+             (!as_time(*a, s) || !as_time(*b, s))) {
+    return std::nullopt;
+  }
   if (divides_by_zero(e.binary_op, *a, *b, e.range, s.cx)) return std::nullopt;
   model::Expr x = make(K::Binary, *type, e.range);
   x.binary_op = e.binary_op;
@@ -447,20 +536,23 @@ std::optional<model::Stmt> lower_assign(const ast::Stmt &st, ExprScope &s) {
     return std::nullopt;
   }
   Type type = var.type;
-  if (st.assign_op != AssignOp::Set && !model::is_numeric(type)) {
+  if (st.assign_op != AssignOp::Set && !model::is_numeric(type) && type != Type::Time) {
     diag.error(target.range, ErrorKind::TypeMismatch,
                fmt::format("operator '{}' needs a numeric variable; '{}' has type {}", spelling(st.assign_op),
                            target.text, quoted(type)));
     return std::nullopt;
   }
   if (!value) return std::nullopt;
+  if (!retype_constant(*value, type, s)) return std::nullopt;
   if (!assignable(type, value->type)) {
     auto &d = diag.error(value->range, ErrorKind::TypeMismatch,
                          fmt::format("incompatible types when assigning to '{}' of type {} from type {}", target.text,
                                      quoted(type), quoted(value->type)));
-    duration_note(d, value->type, value->type);
+    duration_note(d, value->type, type);
+    conversion_note(d, type, value->type);
     return std::nullopt;
   }
+  if (type == Type::Time && !as_time(*value, s)) return std::nullopt;
   if (!constant_fits(*value, type, s)) return std::nullopt;
   model::Stmt out;
   out.kind = model::Stmt::Kind::Assign;
@@ -626,6 +718,8 @@ std::optional<model::Expr> lower_call(const ast::Expr &e, ExprScope &s, bool sta
   if (!s.cx.function_ok[sym->index]) return std::nullopt;
   const model::FunctionId function = sym->id<model::FunctionId>();
   const model::Function &f = s.cx.model.functions[function];
+  for (std::size_t i = 0; i < args.size() && i < f.params.size(); ++i)
+    if (args[i] && !retype_constant(*args[i], f.params[i].type, s)) return std::nullopt;
   if (!check_arguments(e, f, args, s.cx.diag)) return std::nullopt;
   for (std::size_t i = 0; i < args.size(); ++i)
     if (!constant_fits(*args[i], f.params[i].type, s)) return std::nullopt;
@@ -654,12 +748,17 @@ std::optional<model::Expr> lower_condition(const ast::Expr *e, ExprScope &s, con
 std::optional<model::Expr> lower_initializer(const ast::Expr *e, ExprScope &s, Type type, const std::string &name) {
   auto x = lower_expr(e, s);
   if (!x) return x;
+  if (!retype_constant(*x, type, s)) return std::nullopt;
   // As an assignment's value: a constant that does not fit the variable is an error.
-  if (assignable(type, x->type)) return constant_fits(*x, type, s) ? x : std::nullopt;
+  if (assignable(type, x->type)) {
+    if (type == Type::Time && !as_time(*x, s)) return std::nullopt;
+    return constant_fits(*x, type, s) ? x : std::nullopt;
+  }
   auto &d = s.cx.diag.error(
       x->range, ErrorKind::TypeMismatch,
       fmt::format("cannot initialize '{}' of type {} with a value of type {}", name, quoted(type), quoted(x->type)));
-  duration_note(d, x->type, x->type);
+  duration_note(d, x->type, type);
+  conversion_note(d, type, x->type);
   return std::nullopt;
 }
 

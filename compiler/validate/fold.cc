@@ -15,6 +15,7 @@ using K = model::Expr::Kind;
 
 /// The value the model stores in `e`: a literal's, or the one check_constant() folded.
 Value stored(const model::Expr &e) {
+  if (model::is_sized(e.type) || e.type == Type::Time) return Value::of_integer(e.type, e.int_value);
   switch (e.type) {
   case Type::Bool: return Value::of_bool(e.bool_value);
   case Type::Int: return Value::of_int(e.int_value);
@@ -29,10 +30,10 @@ void store(model::Expr &e, const Value &v) {
   e.folded = true;
   switch (v.type) {
   case Type::Bool: e.bool_value = v.b; break;
-  case Type::Int: e.int_value = static_cast<std::int32_t>(v.i); break;
   case Type::Float:
   case Type::Double: e.float_value = v.f; break;
-  default: e.text = v.s; break;
+  case Type::String: e.text = v.s; break;
+  default: e.int_value = v.i; break;  // an integer, a time
   }
 }
 
@@ -116,15 +117,27 @@ std::optional<model::Expr> number_literal(const ast::Expr &e, Diagnostics &diag)
   x.range = e.range;
   x.text = e.text();
   if (e.kind == ast::Expr::Kind::Int) {
-    auto v = constant::int_literal(e.text());
-    if (!v) {
+    x.kind = K::Int;
+    x.type = Type::Int;
+    if (auto v = constant::int_literal(e.text())) {
+      x.int_value = *v;
+      return x;
+    }
+    // Beyond int: an int64 literal, which only a type that holds it takes (expr.cc,
+    // retype_constant; docs/language.md §4).
+    std::int64_t big = 0;
+    bool digits = !e.text().empty() && e.text().size() <= 18;
+    for (char c : e.text()) {
+      digits = digits && c >= '0' && c <= '9';
+      if (digits) big = big * 10 + (c - '0');
+    }
+    if (!digits) {
       diag.error(e.range, ErrorKind::NotConstant,
                  fmt::format("integer constant '{}' is too large for 'int'", e.text()));
       return std::nullopt;
     }
-    x.kind = K::Int;
-    x.type = Type::Int;
-    x.int_value = *v;
+    x.type = Type::Int64;
+    x.int_value = big;
     return x;
   }
   auto v = constant::float_literal(e.text());
@@ -171,9 +184,22 @@ std::optional<model::Expr> to_literal(const Value &v, model::Type to, SourceRang
     e.bool_value = v.b;
     return e;
   }
+  if (to == Type::Time) {
+    if (v.type != Type::Time) return std::nullopt;  // the caller reported the type mismatch
+    e.kind = K::Int;
+    e.int_value = v.i;
+    e.text = constant::text(v);
+    return e;
+  }
   if (!(model::is_numeric(to) && model::is_numeric(v.type)) && to != Type::String)
     return std::nullopt;  // the caller reported the type mismatch
   auto c = constant::convert(v, to);
+  if (!c && model::is_sized(to)) {
+    if (c.fault == constant::Fault::DoesNotFit)
+      diag.error(range, ErrorKind::NotConstant,
+                 fmt::format("value {} does not fit in '{}'", constant::text(v), model::type_name(to)));
+    return std::nullopt;
+  }
   if (!c) {
     if (c.fault == constant::Fault::DoesNotFit)
       diag.error(
@@ -186,6 +212,12 @@ std::optional<model::Expr> to_literal(const Value &v, model::Type to, SourceRang
     return std::nullopt;
   }
   const Value &w = c.value;
+  if (model::is_sized(to)) {
+    e.kind = K::Int;
+    e.int_value = w.i;
+    e.text = constant::decimal(w);
+    return e;
+  }
   switch (to) {
   case Type::Int:
     e.kind = K::Int;

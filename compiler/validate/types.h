@@ -19,7 +19,11 @@ enum TypeSet : unsigned {
   kVoid = 1u << 4,
   kString = 1u << 5,
   kObject = 1u << 6,
+  kTime = 1u << 7,
+  kSized = 1u << 8,  ///< int8 int16 int64 uint8 uint16 uint32 uint64
   kScalar = kBool | kInt | kFloat | kDouble,
+  /// What a chart's variable or constant may be.
+  kValue = kScalar | kTime | kSized,
 };
 
 /// The type `t` names, if it is in `allowed`; otherwise reports `unknown-type` (with a

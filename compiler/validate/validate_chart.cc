@@ -113,7 +113,7 @@ void declare_place(Context &cx, ChartScope &s, const ast::Place &p, model::Place
 void declare_value(Context &cx, ChartScope &s, const ast::ValueDecl &v) {
   if (declare_instance(cx, s, v)) return;
   if (!v.is_const) {
-    auto type = lower_type(v.type, kScalar, "a variable", cx.diag);
+    auto type = lower_type(v.type, kValue, "a variable", cx.diag);
     const model::VarRole role = v.role == ast::VarRole::In    ? model::VarRole::In
                                 : v.role == ast::VarRole::Out ? model::VarRole::Out
                                                               : model::VarRole::Local;
@@ -131,7 +131,7 @@ void declare_value(Context &cx, ChartScope &s, const ast::ValueDecl &v) {
     s.names.declare(v.name, Sym::Var, index, cx.diag);
     return;
   }
-  auto type = lower_type(v.type, kScalar, "a constant", cx.diag);
+  auto type = lower_type(v.type, kValue, "a constant", cx.diag);
   const model::ConstId index = cx.model.consts.next_id();
   model::Const c;
   c.name = v.name.text;

@@ -14,9 +14,10 @@ import re
 import sys
 
 header, trace, chart = sys.argv[1:4]
-fields = re.findall(r'^\s+(\w+)\s+(\w+);\s+/\* (in|out) \2:', open(header).read(), re.M)
-ins = [(t, n) for t, n, r in fields if r == 'in']
-outs = [(t, n) for t, n, r in fields if r == 'out']
+fields = re.findall(r'^\s+(\w+)\s+(\w+);\s+/\* (in|out) \2:(.*)$', open(header).read(), re.M)
+# A time's field is an int64_t whose comment says so: printed as IEC's T#<ms>ms.
+ins = [(t, n) for t, n, r, rest in fields if r == 'in']
+outs = [('time' if 'a time: milliseconds' in rest else t, n) for t, n, r, rest in fields if r == 'out']
 lines = [l for l in open(trace) if l.strip() and not l.lstrip().startswith('#')]
 rows = [[c.strip() for c in r] for r in csv.reader(lines)]
 cols, rows = rows[0], rows[1:]
@@ -46,6 +47,10 @@ for t, n in outs:
         print(f'    printf("out {n} = %.9g\\n", (double)m.{n});')
     elif t == 'double':
         print(f'    printf("out {n} = %.17g\\n", m.{n});')
+    elif t == 'time':
+        print(f'    printf("out {n} = T#%lldms\\n", (long long)m.{n});')
+    elif t.startswith('uint'):
+        print(f'    printf("out {n} = %llu\\n", (unsigned long long)m.{n});')
     else:
-        print(f'    printf("out {n} = %ld\\n", (long)m.{n});')
+        print(f'    printf("out {n} = %lld\\n", (long long)m.{n});')
 print('  }\n  return 0;\n}')
