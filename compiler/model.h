@@ -103,6 +103,7 @@ struct Expr {
     // Team machines (docs/language.md "Teams").
     TeamCount,  ///< `team(S)`: place() = state S of this chart. Type Int.
     Agent,      ///< `agent()`. Type Int.
+    Now,        ///< `now()`: the time of this tick, its number times the period (docs/language.md §15). Type Time.
   };
   Kind kind = Kind::Bool;
   Type type = Type::Bool;
@@ -323,6 +324,7 @@ struct Chart {
   int team = 0;                       ///< fsm `team N;`: N (>= 2); 0 for a machine that is no team
   ActivationBound activation;         ///< recorded by analysis::record_activation_bounds
   bool in_main_file = false;          ///< declared in the file being compiled, not an import
+  bool clock = false;                 ///< `now()` is read (by the chart or a block it calls): the engine counts ticks
   SourceRange range;
   SourceRange name_range;  ///< the chart's name where it is declared
 };
@@ -339,6 +341,7 @@ struct Block {
   std::vector<ConstId> consts;        ///< constants the body reads
   bool standard = false;              ///< predefined by gfec (TON, CTU, ...: docs/iec.md)
   bool used = false;                  ///< some chart of the program has an instance of it
+  bool clock = false;                 ///< its body (or an instance inside it) reads `now()`
   SourceRange range;
   SourceRange name_range;
 };

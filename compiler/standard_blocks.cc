@@ -12,7 +12,9 @@ namespace {
 
 // Written as the standard writes them (IEC 61131-3, 2nd edition, 2.5.2.3): a counter counts
 // while its value is inside its type's range, which MatIEC replaces with PV and 0 (docs/iec.md
-// "Where MatIEC differs"). INT is the chart language's int until sized integers exist.
+// "Where MatIEC differs"). INT is the chart language's int until sized integers exist. The
+// timers are MatIEC's (lib/timer.txt), which write the standard's timing diagrams out: a timer
+// reads the time of the tick when it is called (`now()`).
 constexpr const char *kText = R"(block R_TRIG {
   in bool CLK;
   out bool Q;
@@ -102,9 +104,91 @@ block CTUD {
   QU = CV >= PV;
   QD = CV <= 0;
 }
+
+block TP {
+  in bool IN;
+  in time PT;
+  out bool Q;
+  out time ET;
+  var int STATE;
+  var bool PREV_IN;
+  var time START_TIME;
+  if (STATE == 0 && !PREV_IN && IN) {
+    STATE = 1;
+    Q = true;
+    START_TIME = now();
+  } else if (STATE == 1) {
+    if (START_TIME + PT <= now()) {
+      STATE = 2;
+      Q = false;
+      ET = PT;
+    } else {
+      ET = now() - START_TIME;
+    }
+  }
+  if (STATE == 2 && !IN) {
+    ET = 0ms;
+    STATE = 0;
+  }
+  PREV_IN = IN;
+}
+
+block TON {
+  in bool IN;
+  in time PT;
+  out bool Q;
+  out time ET;
+  var int STATE;
+  var bool PREV_IN;
+  var time START_TIME;
+  if (STATE == 0 && !PREV_IN && IN) {
+    STATE = 1;
+    Q = false;
+    START_TIME = now();
+  } else if (!IN) {
+    ET = 0ms;
+    Q = false;
+    STATE = 0;
+  } else if (STATE == 1) {
+    if (START_TIME + PT <= now()) {
+      STATE = 2;
+      Q = true;
+      ET = PT;
+    } else {
+      ET = now() - START_TIME;
+    }
+  }
+  PREV_IN = IN;
+}
+
+block TOF {
+  in bool IN;
+  in time PT;
+  out bool Q;
+  out time ET;
+  var int STATE;
+  var bool PREV_IN;
+  var time START_TIME;
+  if (STATE == 0 && PREV_IN && !IN) {
+    STATE = 1;
+    START_TIME = now();
+  } else if (IN) {
+    ET = 0ms;
+    STATE = 0;
+  } else if (STATE == 1) {
+    if (START_TIME + PT <= now()) {
+      STATE = 2;
+      ET = PT;
+    } else {
+      ET = now() - START_TIME;
+    }
+  }
+  Q = IN || STATE == 1;
+  PREV_IN = IN;
+}
 )";
 
-constexpr std::string_view kNames[] = {"R_TRIG", "F_TRIG", "SR", "RS", "CTU", "CTD", "CTUD"};
+constexpr std::string_view kNames[] = {"R_TRIG", "F_TRIG", "SR", "RS", "CTU", "CTD", "CTUD", "TP", "TON", "TOF"};
 
 bool standard_name(std::string_view name) {
   for (std::string_view n : kNames)

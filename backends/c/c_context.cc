@@ -147,6 +147,7 @@ void name_fields(EngineContext &c) {
   c.state = fields.take("state");
   c.status = fields.take("status");
   c.started = fields.take("started");
+  if (c.chart.clock) c.clock = fields.take("clock");
   c.current = fields.take("current");
   c.active = fields.take("active");
   c.candidates = fields.take("candidates");

@@ -243,6 +243,7 @@ bool same_value(const EngineContext &c, const Expr &x, const Expr &y) {
   case Expr::Kind::Ticks: return a.ticks == b.ticks;
   case Expr::Kind::Var: return a.var() == b.var();
   case Expr::Kind::Agent: return true;  // the engine's own agent number, a field
+  case Expr::Kind::Now: return true;    // one tick, one time
   case Expr::Kind::Elapsed: return a.place() == b.place();
   case Expr::Kind::Succeeded:
   case Expr::Kind::Failed: return a.place() == b.place();
@@ -373,6 +374,8 @@ public:
       if (e.type == Type::Time)
         return {fmt::format("((int64_t){} * {})", c_.timer_of(e.place()), static_cast<long long>(c_.chart.period_ms))};
       return {c_.timer_of(e.place())};
+    case Expr::Kind::Now:  // the tick's number times the period (docs/language.md §15)
+      return {fmt::format("({} * {})", c_.field(c_.clock), static_cast<long long>(c_.chart.period_ms))};
     case Expr::Kind::Unary: return unary(e);
     case Expr::Kind::Binary: return binary(e);
     case Expr::Kind::Active:

@@ -79,6 +79,7 @@ std::string expr(const model::Model &m, model::ChartId chart, const model::Expr 
   case K::Failed: return fmt::format("failed({})", place_name(m, chart, e.place()));
   case K::TeamCount: return fmt::format("team({})", place_name(m, chart, e.place()));
   case K::Agent: return "agent()";
+  case K::Now: return "now()";
   }
   return "";
 }

@@ -30,6 +30,7 @@ const char *kind_name(Expr::Kind k) {
   case Expr::Kind::Failed: return "failed";
   case Expr::Kind::TeamCount: return "team";
   case Expr::Kind::Agent: return "agent";
+  case Expr::Kind::Now: return "now";
   default: break;
   }
   return "?";

@@ -151,6 +151,8 @@ Value evaluate(const Expr &e, Frame &f) {
       return Value::of_time(static_cast<std::int64_t>(f.timers.at(e.place())) *
                             static_cast<std::int64_t>(f.chart.period_ms));
     return Value::of_ticks(f.timers.at(e.place()));
+  case Expr::Kind::Now:  // the tick's number times the period: the first tick is at one period
+    return Value::of_time(static_cast<std::int64_t>(f.tick) * static_cast<std::int64_t>(f.chart.period_ms));
   case Expr::Kind::Call: return call(e, f);
   case Expr::Kind::Unary: return unary(e, f);
   case Expr::Kind::Binary: return binary(e, f);

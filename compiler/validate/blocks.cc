@@ -39,7 +39,7 @@ bool ensure_block(Context &cx, model::BlockId id, SourceRange used_at);
 /// A plain member (in, out, var) of the block being validated, as a chart declares a var.
 void declare_member(Context &cx, ChartScope &s, const ast::ValueDecl &v) {
   if (v.is_const) return;  // the parser refuses constants in a block
-  auto type = lower_type(v.type, kScalar, "a variable", cx.diag);
+  auto type = lower_type(v.type, kValue, "a variable", cx.diag);
   const model::VarRole role = v.role == ast::VarRole::In    ? model::VarRole::In
                               : v.role == ast::VarRole::Out ? model::VarRole::Out
                                                             : model::VarRole::Local;
@@ -94,6 +94,7 @@ bool ensure_block(Context &cx, model::BlockId id, SourceRange used_at) {
   block.vars.assign(out.vars.begin(), out.vars.end());
   block.instances = std::move(out.instances);
   block.body = std::move(body);
+  block.clock = out.clock;
   block.functions.assign(scope.functions.begin(), scope.functions.end());
   block.consts.assign(scope.consts.begin(), scope.consts.end());
   src.state = watch.clean() ? BlockSource::State::Done : BlockSource::State::Failed;
@@ -155,6 +156,7 @@ std::optional<model::Stmt> assign_member(model::VarId var, const ast::Name &show
   auto value = lower_expr(value_expr, s);
   if (!value || !var.valid()) return std::nullopt;
   const model::Var &target = s.chart->out.vars[var];
+  if (!assignable_value(*value, target.type, s)) return std::nullopt;
   if (!assignable(target.type, value->type)) {
     s.cx.diag.error(value->range, ErrorKind::TypeMismatch,
                     fmt::format("incompatible types when assigning to '{}' of type {} from type {}", shown.text,
@@ -234,6 +236,12 @@ bool declare_instance(Context &cx, ChartScope &s, const ast::ValueDecl &v) {
   if (ensure_block(cx, block, v.type.range)) {
     model::Block &b = cx.model.blocks[block];
     b.used = true;
+    if (b.clock) {
+      // The block reads the time of the tick: its holder's period (docs/language.md §15).
+      ExprScope scope{cx, &s, false};
+      if (s.index.valid()) require_period(scope, v.type.range, fmt::format("block '{}' (it reads now())", b.name));
+      s.out.clock = true;
+    }
     model::Instance inst;
     inst.name = v.name.text;
     inst.block = block;
