@@ -42,15 +42,10 @@ sfc S {
   }
 }
 )--"}});
-  CHECK(r.text() == R"--(t.sfc:4:7: error: block 'Twice' contains an instance of itself [type-mismatch]
-   var Twice inner;
-       ^~~~~
-t.sfc:1:7: note: 'Twice' declared here
- block Twice {
-       ^~~~~
-t.sfc:13:7: error: unknown type name 'TONN' [unknown-type]
+  CHECK(r.text() == R"--(t.sfc:13:7: error: unknown type name 'TONN' [unknown-type]
    var TONN t;
        ^~~~
+t.sfc:13:7: note: did you mean the block 'TON'?
 t.sfc:14:18: error: block instance 'r' takes no initial value: its members start as block 'R_TRIG' says [type-mismatch]
    var R_TRIG r = 1;
                   ^
@@ -60,7 +55,6 @@ t.sfc:15:3: error: block instance 's' is declared 'var', not 'in' [chart-io]
 t.sfc:18:15: error: block 'CTU' has no input 'RR' [unknown-name]
      c(CU = P, RR = P);
                ^~
-               R
 <standard blocks>:33:3: note: did you mean 'R'?
    in bool R;
    ^~~~~~~~~~
@@ -73,7 +67,6 @@ t.sfc:20:12: error: incompatible types when assigning to 'PV' of type 'int' from
 t.sfc:21:11: error: block 'CTU' has no output 'QQ' [unknown-name]
      Q = c.QQ;
            ^~
-           Q
 <standard blocks>:35:3: note: did you mean 'Q'?
    out bool Q;
    ^~~~~~~~~~~
@@ -110,6 +103,12 @@ t.sfc:28:9: error: a path to a sub-chart's place is only read through 'active(..
 t.sfc:29:5: error: an input of a block instance is set with '=', not '+=' [not-assignable]
      c.PV += 1;
      ^~~~
+t.sfc:4:7: error: block 'Twice' contains an instance of itself [type-mismatch]
+   var Twice inner;
+       ^~~~~
+t.sfc:1:7: note: 'Twice' declared here
+ block Twice {
+       ^~~~~
 )--");
 }
 
@@ -118,7 +117,6 @@ TEST_CASE("validate: a misspelt block type is offered the block", "[validate][bl
   CHECK(r.text() == R"--(t.sfc:2:7: error: unknown type name 'CTUU' [unknown-type]
    var CTUU c;
        ^~~~
-       CTU
 t.sfc:2:7: note: did you mean the block 'CTU'?
 )--");
 }
