@@ -308,6 +308,30 @@ Outcome convert(const Value &v, Type to) {
   return fault(Fault::BadOperands);
 }
 
+Outcome conversion(const Value &v, Type to) {
+  const bool from_integer = model::is_integer(v.type) || v.type == Type::Time;
+  if (model::is_integer(to) || to == Type::Time) {
+    if (from_integer) {
+      const Wide w = wide(v);
+      if (w < lowest(to) || w > highest(to)) return fault(Fault::DoesNotFit);
+      return ok(Value::of_integer(to, static_cast<std::int64_t>(static_cast<std::uint64_t>(w))));
+    }
+    if (is_floating(v.type)) {
+      const double r = std::round(v.f);  // ties away from zero
+      if (!std::isfinite(r)) return fault(Fault::DoesNotFit);
+      return truncated(r, to == Type::Time ? Type::Int64 : to).fault == Fault::None
+                 ? ok(Value::of_integer(to, truncated(r, to == Type::Time ? Type::Int64 : to).value.i))
+                 : fault(Fault::DoesNotFit);
+    }
+    return fault(Fault::BadOperands);
+  }
+  if (to == Type::Float || to == Type::Double) {
+    if (is_floating(v.type)) return convert(v, to);
+    if (model::is_integer(v.type)) return ok(to_floating(v, to));
+  }
+  return fault(Fault::BadOperands);
+}
+
 Outcome unary(UnaryOp op, const Value &a) {
   if (op == UnaryOp::Not) {
     if (a.type != Type::Bool) return fault(Fault::BadOperands);

@@ -88,6 +88,12 @@ std::optional<double> float_literal(std::string_view spelling);
 /// range), a number to a string as it would be printed (plan formulas).
 Outcome convert(const Value &v, model::Type to);
 
+/// `T(v)`, the language's explicit conversion (model::Expr::Kind::Convert): exact between
+/// integer types and between an integer and `time` (milliseconds), rounded to nearest (ties away
+/// from zero) from a floating value to an integer, as C converts to a floating type; DoesNotFit
+/// where the value is beyond T.
+Outcome conversion(const Value &v, model::Type to);
+
 /// C's usual arithmetic conversions: the type `a op b` computes in.
 model::Type common_type(model::Type a, model::Type b);
 

@@ -104,6 +104,10 @@ struct Expr {
     TeamCount,  ///< `team(S)`: place() = state S of this chart. Type Int.
     Agent,      ///< `agent()`. Type Int.
     Now,        ///< `now()`: the time of this tick, its number times the period (docs/language.md §15). Type Time.
+    /// A conversion `T(x)` (docs/language.md §4), args[0] = x, type T: between integer types
+    /// and to and from `time` exact (a value that does not fit is an error), a floating value to
+    /// an integer rounded to nearest, ties away from zero (IEC's REAL_TO_INT).
+    Convert,
   };
   Kind kind = Kind::Bool;
   Type type = Type::Bool;

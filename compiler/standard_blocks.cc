@@ -12,7 +12,7 @@ namespace {
 
 // Written as the standard writes them (IEC 61131-3, 2nd edition, 2.5.2.3): a counter counts
 // while its value is inside its type's range, which MatIEC replaces with PV and 0 (docs/iec.md
-// "Where MatIEC differs"). INT is the chart language's int until sized integers exist. The
+// "Where MatIEC differs"). PV and CV are INT, the chart language's int16. The
 // timers are MatIEC's (lib/timer.txt), which write the standard's timing diagrams out: a timer
 // reads the time of the tick when it is called (`now()`).
 constexpr const char *kText = R"(block R_TRIG {
@@ -48,14 +48,14 @@ block RS {
 block CTU {
   in bool CU;
   in bool R;
-  in int PV;
+  in int16 PV;
   out bool Q;
-  out int CV;
+  out int16 CV;
   var R_TRIG CU_T;
   CU_T(CLK = CU);
   if (R) {
     CV = 0;
-  } else if (CU_T.Q && CV < 2147483647) {
+  } else if (CU_T.Q && CV < 32767) {
     CV = CV + 1;
   }
   Q = CV >= PV;
@@ -64,14 +64,14 @@ block CTU {
 block CTD {
   in bool CD;
   in bool LD;
-  in int PV;
+  in int16 PV;
   out bool Q;
-  out int CV;
+  out int16 CV;
   var R_TRIG CD_T;
   CD_T(CLK = CD);
   if (LD) {
     CV = PV;
-  } else if (CD_T.Q && CV > -2147483647 - 1) {
+  } else if (CD_T.Q && CV > -32767 - 1) {
     CV = CV - 1;
   }
   Q = CV <= 0;
@@ -82,10 +82,10 @@ block CTUD {
   in bool CD;
   in bool R;
   in bool LD;
-  in int PV;
+  in int16 PV;
   out bool QU;
   out bool QD;
-  out int CV;
+  out int16 CV;
   var R_TRIG CD_T;
   var R_TRIG CU_T;
   CD_T(CLK = CD);
@@ -95,9 +95,9 @@ block CTUD {
   } else if (LD) {
     CV = PV;
   } else if (!(CU_T.Q && CD_T.Q)) {
-    if (CU_T.Q && CV < 2147483647) {
+    if (CU_T.Q && CV < 32767) {
       CV = CV + 1;
-    } else if (CD_T.Q && CV > -2147483647 - 1) {
+    } else if (CD_T.Q && CV > -32767 - 1) {
       CV = CV - 1;
     }
   }

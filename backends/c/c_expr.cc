@@ -123,11 +123,9 @@ Rendered wide_literal(const Expr &e) {
   std::string text = constant::decimal(v);
   if (e.type == Type::UInt64 && e.int_value < 0) text = fmt::format("UINT64_C({})", text);
   else if (e.int_value == INT64_MIN) text = "(-INT64_C(9223372036854775807) - 1)";
-  Rendered r{text, e.int_value < 0 && e.type != Type::UInt64 ? kUnary : kPrimary};
-  if (e.type == Type::Time && e.kind == Expr::Kind::Int && !e.text.empty() && e.text.str() != text + "ms" &&
-      e.text.str().find("*/") == std::string::npos)
-    r.text += fmt::format(" /* {} */", e.text.str());
-  return r;
+  // A time is written in milliseconds without the spelling it had (`2s`, IEC's `T#2s`): chart
+  // text converted from another language compiles to the same engine.
+  return {text, e.int_value < 0 && e.type != Type::UInt64 ? kUnary : kPrimary};
 }
 
 bool is_wide(Type t) { return model::is_sized(t) || t == Type::Time; }
@@ -389,6 +387,7 @@ public:
     case Expr::Kind::TeamCount:  // no side effect: the order of calls is not its concern
       return {fmt::format("{}({}, {})", c_.team_fn, c_.self, c_.place_const.at(e.place()))};
     case Expr::Kind::Agent: return {c_.field(c_.agent)};
+    case Expr::Kind::Convert: return conversion(e);
     case Expr::Kind::Config: break;  // plans only: the validator keeps it out of charts
     default: break;                  // team machines: not in this back end's charts
     }
@@ -528,7 +527,7 @@ private:
   /// expression in a comment: computed by the target's compiler in C's `int` it could overflow
   /// where int is 16 bits (`200 * 200` on the AVR).
   bool written_as_value(const Expr &e) const {
-    if (in_folded_ || !e.folded || (e.type != Type::Int && e.type != Type::Float)) return false;
+    if (in_folded_ || !e.folded || (e.type != Type::Int && e.type != Type::Float && !is_wide(e.type))) return false;
     return e.kind != Expr::Kind::Int && e.kind != Expr::Kind::Float && e.kind != Expr::Kind::Const;
   }
 
@@ -540,6 +539,21 @@ private:
         origin.find("*/") == std::string::npos)
       value.text += fmt::format(" /* {} */", origin);
     return value;
+  }
+
+  /// `T(x)`: a cast where C's conversion is the language's (between integer types, which the
+  /// interpreter checks to fit; to a floating type); a floating value to an integer through
+  /// gfec_round (c_source.cc), rounded to nearest, ties away from zero.
+  Rendered conversion(const Expr &e) {
+    Rendered x = render(e.args.at(0));
+    const Type from = e.args.at(0).type;
+    const char *to = e.type == Type::Float ? "float" : e.type == Type::Double ? "double" : c_type(e.type);
+    if (model::is_integer(e.type) || e.type == Type::Time) {
+      if (is_floating(from))
+        return {fmt::format("({})gfec_round((double){})", to, bracket(x.text)), kUnary, std::move(x.before)};
+    }
+    if (x.prec < kUnary) x.text = bracket(x.text);
+    return {fmt::format("({}){}", to, x.text), kUnary, std::move(x.before)};
   }
 
   /// A constant is written as its folded value, named in a comment: no C name of the chart's can
@@ -657,7 +671,7 @@ private:
       // stricter warnings of docs/c-engine.md): an int meeting a float becomes a float, a float
       // meeting a double a double; an int meeting a double converts exactly and stays implicit.
       const Type a = e.args[0].type, b = e.args[1].type;
-      if (model::is_numeric(a) && model::is_numeric(b) && a != b) {
+      if (model::is_numeric(a) && model::is_numeric(b) && a != b && (is_floating(a) || is_floating(b))) {
         const Type common = a == Type::Double || b == Type::Double ? Type::Double : Type::Float;
         if (!(common == Type::Double && a == Type::Int)) l = converted(std::move(l), e.args[0], common);
         if (!(common == Type::Double && b == Type::Int)) r = converted(std::move(r), e.args[1], common);

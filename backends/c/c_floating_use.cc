@@ -39,6 +39,8 @@ public:
       return;
     }
     type(e.type);
+    if (e.kind == Expr::Kind::Convert && !e.args.empty() && is_floating(e.args[0].type) && !is_floating(e.type))
+      use_.rounding = true;
     if (e.kind == Expr::Kind::Binary || e.kind == Expr::Kind::Unary) {
       for (const auto &a : e.args) {
         type(a.type);
@@ -93,6 +95,13 @@ public:
     }
     for (const auto &t : c.chart.transitions)
       if (t.condition) expr(*t.condition);
+    for (const auto &a : c.chart.actions) {
+      // Named actions' bodies count for the rounding helper only: the floating flags stay as
+      // they were for charts already generated.
+      FloatingUse own;
+      Walk(own).statements(c, a.body);
+      use_.rounding |= own.rounding;
+    }
     for (const auto &s : c.sub)
       if (s) chart(*s);
   }

@@ -13,6 +13,7 @@ struct FloatingUse {
   bool float_type = false;   ///< a float is stored, passed or computed
   bool double_type = false;  ///< a double is stored, passed or computed at run time
   bool arithmetic = false;   ///< + - * / or unary minus on floating operands at run time
+  bool rounding = false;     ///< a conversion of a floating value to an integer at run time (gfec_round)
 };
 
 /// What the engine of `root` (and of every sub-chart instance it holds) needs. Constants do not

@@ -49,7 +49,14 @@ public:
     case Type::Bool: return string(fmt::format("({}) ? \"true\" : \"false\"", expr));
     case Type::Int: return integer(expr);
     case Type::Float: return real(expr, 9);
-    default: return real(expr, 17);
+    case Type::Double: return real(expr, 17);
+    // The sized integers and times through `long` (the host's 64 bits; the run's values are
+    // checked against gfec run's, which prints them whole).
+    case Type::Time: return text("T#").integer(expr).text("ms");
+    default:
+      if (model::is_unsigned(t)) return unsigned_(expr);
+      if (model::is_integer(t)) return integer(expr);
+      return real(expr, 17);
     }
   }
   /// The compact log's `%d` (an int or bool) or `%g` (a float or double).
@@ -193,7 +200,15 @@ std::string c_constant(const interp::Value &v, Type t) {
   case Type::Bool: return v.b ? "1" : "0";
   case Type::Int: return v.i == INT32_MIN ? "(-2147483647 - 1)" : std::to_string(v.i);
   case Type::Float: std::snprintf(buffer, sizeof buffer, "%.9g", v.f); break;
-  default: std::snprintf(buffer, sizeof buffer, "%.17g", v.f); break;
+  case Type::Double: std::snprintf(buffer, sizeof buffer, "%.17g", v.f); break;
+  default:
+    if (model::is_integer(t) || t == Type::Time) {
+      if (t == Type::UInt64) return fmt::format("UINT64_C({})", static_cast<std::uint64_t>(v.i));
+      if (v.i == INT64_MIN) return "(-INT64_C(9223372036854775807) - 1)";
+      return v.i < -2147483647 || v.i > 2147483647 ? fmt::format("INT64_C({})", v.i) : std::to_string(v.i);
+    }
+    std::snprintf(buffer, sizeof buffer, "%.17g", v.f);
+    break;
   }
   // A floating constant, whatever its value: `-0` would be the int 0, `7f` no constant at all.
   std::string text = buffer;

@@ -51,6 +51,18 @@ void includes(CodeWriter &w, const EngineContext &c) {
 /// operation, as the interpreter does. clang obeys the standard pragma; gcc ignores it and takes
 /// its own (which avr-gcc and arm-none-eabi-gcc understand too).
 void no_contraction(CodeWriter &w, const EngineContext &c) {
+  if (floating_use(c).rounding) {
+    // T(x) of a floating x (docs/language.md §4), IEC's REAL_TO_INT: no <math.h> needed. The
+    // difference of x and its truncation is exact, so the tie is decided exactly.
+    w.blank();
+    w.line("/* A floating value rounded to the nearest integer, ties away from zero (docs/language.md §4). */");
+    w.line("static int64_t gfec_round(double x)");
+    w.line("{");
+    w.line("    int64_t t = (int64_t)x;");
+    w.line("    double d = x - (double)t;");
+    w.line("    return d >= 0.5 ? t + 1 : (d <= -0.5 ? t - 1 : t);");
+    w.line("}");
+  }
   if (!floating_use(c).arithmetic) return;
   w.blank();
   w.line("/* Floating arithmetic rounds after every operation, as the language computes it: no fused");

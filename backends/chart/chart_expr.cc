@@ -80,6 +80,7 @@ std::string expr(const model::Model &m, model::ChartId chart, const model::Expr 
   case K::TeamCount: return fmt::format("team({})", place_name(m, chart, e.place()));
   case K::Agent: return "agent()";
   case K::Now: return "now()";
+  case K::Convert: return fmt::format("{}({})", model::type_name(e.type), expr(m, chart, e.args[0]));
   }
   return "";
 }

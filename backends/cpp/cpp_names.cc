@@ -15,8 +15,7 @@ const char *cpp_type(model::Type type) {
   case model::Type::Double: return "double";
   case model::Type::String: return "std::string";
   case model::Type::Object: return "afp::Object";
-  case model::Type::Void:
-  case model::Type::Duration: break;  // never the type of a parameter or config entry
+  default: break;  // void, durations, times and sized integers: never a parameter's or config entry's
   }
   return "int";
 }
@@ -29,8 +28,7 @@ std::string afp_type(model::Type type) {
   case model::Type::Double: return "afp::Type::Double";
   case model::Type::String: return "afp::Type::String";
   case model::Type::Object: return "afp::Type::Object";
-  case model::Type::Void:
-  case model::Type::Duration: break;
+  default: break;
   }
   return "afp::Type::Int";
 }

@@ -31,6 +31,7 @@ const char *kind_name(Expr::Kind k) {
   case Expr::Kind::TeamCount: return "team";
   case Expr::Kind::Agent: return "agent";
   case Expr::Kind::Now: return "now";
+  case Expr::Kind::Convert: return "convert";
   default: break;
   }
   return "?";
@@ -100,7 +101,8 @@ Json expression_tree(const model::Model &m, const Scope &scope, const Expr &e) {
     j["op"] = spelling(e.binary_op);
     j["args"] = args();
     break;
-  case Expr::Kind::Paren: j["args"] = args(); break;
+  case Expr::Kind::Paren:
+  case Expr::Kind::Convert: j["args"] = args(); break;  // a conversion: to `type`
   case Expr::Kind::Active: {
     // The names along the path, each a place or state of the chart the previous one runs.
     Json path = Json::array();

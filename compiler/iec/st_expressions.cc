@@ -2,6 +2,8 @@
 // the user wrote (`AND`, `<>`, `MOD`), `Step.X` and `Step.T` become `active(Step)` and
 // `elapsed(Step)`, TIME literals durations (docs/iec.md).
 #include "iec/st_parser.h"
+#include "iec/lower.h"
+#include "iec/iec_text.h"
 
 #include <fmt/format.h>
 
@@ -350,6 +352,34 @@ StParser::Node StParser::name_use() {
     return {std::move(e), 1};
   }
   if (tok().kind == StTok::LParen) {
+    // `<T1>_TO_<T2>(x)`, the standard's type conversions, is the chart language's `t2(x)`
+    // (docs/iec.md): exact between integers and TIME, rounded from REAL and LREAL.
+    const std::string call = upper(t.text);
+    const std::size_t to = call.find("_TO_");
+    const char *from_type = to == std::string::npos ? nullptr : chart_type(call.substr(0, to));
+    const char *to_type = to == std::string::npos ? nullptr : chart_type(call.substr(to + 4));
+    if (from_type && to_type && std::string_view(from_type) != "bool" && std::string_view(to_type) != "bool") {
+      next();  // (
+      if (++depth_ > kMaxStNesting) {
+        --depth_;
+        error(range(t), fmt::format("expression nested too deeply (more than {} levels)", kMaxStNesting),
+              ErrorKind::Nesting);
+        return {};
+      }
+      Node arg = or_expr();
+      --depth_;
+      if (!arg.e) return {};
+      if (tok().kind != StTok::RParen) {
+        error(range(tok()), fmt::format("expected ')' to close the call of '{}', not {}", t.text, quoted()));
+        return {};
+      }
+      const StToken close = tok();
+      next();
+      auto e = make(ast::Expr::Kind::Call, range(t, close));
+      e->name = {std::string_view(to_type), range(t)};
+      e->args.push_back(std::move(arg.e));
+      return {std::move(e), arg.height + 1};
+    }
     not_supported(range(t), fmt::format("calling '{}' is not supported yet: gfec reads no functions or function "
                                         "blocks in structured text",
                                         t.text));

@@ -218,7 +218,8 @@ private:
       duration(tok, start);
       return;
     }
-    static const char *const kInts[] = {"SINT", "INT", "DINT", "LINT", "USINT", "UINT", "UDINT", "ULINT"};
+    static const char *const kInts[] = {"SINT",  "INT",   "DINT", "LINT", "USINT", "UINT",
+                                        "UDINT", "ULINT", "BYTE", "WORD", "DWORD", "LWORD"};
     bool integer = false;
     for (const char *k : kInts) integer = integer || prefix == k;
     bool real = prefix == "REAL" || prefix == "LREAL";

@@ -174,6 +174,15 @@ Value evaluate(const Expr &e, Frame &f) {
     return Value::of_int(n);
   }
   case Expr::Kind::Agent: return Value::of_int(f.agent);
+  case Expr::Kind::Convert: {
+    const Value v = evaluate(e.args.at(0), f);
+    constant::Outcome r = constant::conversion(v, e.type);
+    if (r) return r.value;
+    throw RuntimeError(
+        e.range, fmt::format("{}({}): the value does not fit in '{}'", model::type_name(e.type),
+                             v.type == Type::Float || v.type == Type::Double ? constant::text(v) : format_value(v),
+                             model::type_name(e.type)));
+  }
   case Expr::Kind::Config: break;
   default: throw RuntimeError(e.range, "this expression is not supported by the interpreter yet");
   }

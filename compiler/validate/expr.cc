@@ -599,7 +599,8 @@ bool divides_by_zero(BinaryOp op, const model::Expr &a, const model::Expr &b, So
   if (op != BinaryOp::Div && op != BinaryOp::Mod) return false;
   // Both constant: folding reports it.
   auto divisor = evaluate(b, cx.model, nullptr);
-  if (!divisor || (divisor->type == Type::Int ? divisor->i != 0 : divisor->f != 0) || evaluate(a, cx.model, nullptr))
+  if (!divisor || (model::is_integer(divisor->type) ? divisor->i != 0 : divisor->f != 0) ||
+      evaluate(a, cx.model, nullptr))
     return false;
   cx.diag.error(b.range, ErrorKind::DivisionByZero,
                 fmt::format("{} by zero: '{}' is undefined in C", op == BinaryOp::Div ? "division" : "remainder",
@@ -714,8 +715,54 @@ bool misspelt_builtin(const ast::Name &name, ExprScope &s) {
   return false;
 }
 
+namespace {
+
+/// The type a conversion `T(x)` names, if `name` is one (docs/language.md §4).
+std::optional<Type> conversion_type(std::string_view name) {
+  static const Type kTargets[] = {Type::Int,    Type::Int8,   Type::Int16, Type::Int64,  Type::UInt8, Type::UInt16,
+                                  Type::UInt32, Type::UInt64, Type::Float, Type::Double, Type::Time};
+  for (Type t : kTargets)
+    if (name == model::type_name(t)) return t;
+  return std::nullopt;
+}
+
+/// `T(x)`: between the integer types, from and to `time` (its milliseconds) and to and from
+/// the floating types; the value is checked where it is known (check_constant folds it).
+std::optional<model::Expr> lower_conversion(const ast::Expr &e, Type to, ExprScope &s, bool statement) {
+  if (statement) {
+    s.cx.diag.error(e.range, ErrorKind::TypeMismatch,
+                    fmt::format("the conversion '{}()' as a statement has no effect", e.name.text));
+    return std::nullopt;
+  }
+  if (e.args.size() != 1) {
+    s.cx.diag.error(e.range, ErrorKind::ArgumentCount,
+                    fmt::format("the conversion '{}' takes one value (have {})", e.name.text, e.args.size()));
+    return std::nullopt;
+  }
+  auto x = lower_expr(e.args[0], s);
+  if (!x) return std::nullopt;
+  if (x->type == Type::Duration && !as_time(*x, s)) return std::nullopt;
+  const Type from = x->type;
+  const bool integer_from = model::is_integer(from), integer_to = model::is_integer(to);
+  const bool floating_from = from == Type::Float || from == Type::Double;
+  const bool ok = (integer_to && (integer_from || floating_from || from == Type::Time)) ||
+                  (to == Type::Time && integer_from) ||
+                  ((to == Type::Float || to == Type::Double) && (integer_from || floating_from));
+  if (!ok) {
+    s.cx.diag.error(e.range, ErrorKind::TypeMismatch,
+                    fmt::format("cannot convert a value of type {} to {}", quoted(from), quoted(to)));
+    return std::nullopt;
+  }
+  model::Expr c = make(K::Convert, to, e.range);
+  c.args.push_back(std::move(*x));
+  return check_constant(std::move(c), s.cx.model, s.cx.diag);
+}
+
+}  // namespace
+
 std::optional<model::Expr> lower_call(const ast::Expr &e, ExprScope &s, bool statement) {
   const ast::Name &name = e.name;
+  if (auto to = conversion_type(name.text)) return lower_conversion(e, *to, s, statement);
   if (name.text == "elapsed") return lower_elapsed(e, s, statement);
   if (name.text == "active") return lower_active(e, s, statement);
   if (name.text == "succeeded" || name.text == "failed") return lower_outcome(e, s, statement);

@@ -99,6 +99,17 @@ std::optional<Value> evaluate(const model::Expr &e, const model::Model &m, Diagn
     return checked(constant::unary(e.unary_op, *a), e.range, diag);
   }
   case K::Binary: return e.args.size() == 2 ? binary(e, m, diag) : std::nullopt;
+  case K::Convert: {
+    if (e.args.size() != 1) return std::nullopt;
+    auto a = evaluate(e.args[0], m, diag);
+    if (!a) return std::nullopt;
+    auto r = constant::conversion(*a, e.type);
+    if (!r && diag && r.fault == constant::Fault::DoesNotFit)
+      diag->error(e.range, ErrorKind::NotConstant,
+                  fmt::format("value {} does not fit in '{}'", constant::text(*a), model::type_name(e.type)));
+    if (!r) return std::nullopt;
+    return r.value;
+  }
   default: return std::nullopt;  // runs on the robot: a var, a call, a timer, a config entry
   }
 }

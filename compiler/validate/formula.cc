@@ -129,7 +129,15 @@ std::optional<model::Expr> lower_formula(const ast::Expr *e, Context &cx, PlanSc
     return x;
   }
   case ast::Expr::Kind::Int:
-  case ast::Expr::Kind::Float: return number_literal(*e, cx.diag);
+  case ast::Expr::Kind::Float: {
+    auto x = number_literal(*e, cx.diag);
+    if (x && x->type == Type::Int64) {  // plans have no sized integers: int's range is the limit
+      cx.diag.error(e->range, ErrorKind::NotConstant,
+                    fmt::format("integer constant '{}' is too large for 'int'", e->text()));
+      return std::nullopt;
+    }
+    return x;
+  }
   case ast::Expr::Kind::String: {
     model::Expr x = make(K::String, Type::String, e->range);
     x.text = e->text();

@@ -240,3 +240,19 @@ test('json: block instances, the blocks they use and a call (docs/language.md §
   const timers = emit(path.join(SOURCE_DIR, 'tests', 'blocks', 'timers.sfc'));
   assert.ok(timers.blocks.some((b) => b.name === 'TON' && b.members.some((m) => m.name === 'PT' && m.type === 'time')));
 });
+
+test('json: sized integers, time and conversions are typed nodes the schema knows', () => {
+  const file = path.join(scratch(), 'types.sfc');
+  fs.writeFileSync(file, 'sfc Types {\n  period 10ms;\n  in time Limit = 2s;\n  out uint16 n = 7;\n' +
+    '  var int64 big = 3000000000;\n  initial place A { n = n + 1; big = big + int64(n); }\n' +
+    '  A -> A when elapsed(A) >= Limit;\n}\n');
+  const doc = emit(file);
+  const vars = Object.fromEntries(doc.vars.map((v) => [v.name, v]));
+  assert.equal(vars.Limit.type, 'time');
+  assert.deepEqual([vars.Limit.init.tree.kind, vars.Limit.init.tree.type, vars.Limit.init.tree.value], ['int', 'time', 2000]);
+  assert.equal(vars.n.type, 'uint16');
+  assert.equal(vars.big.init.tree.value, 3000000000);
+  const text = JSON.stringify(doc);
+  assert.match(text, /"kind":"convert","type":"int64"/);
+  assert.match(text, /"kind":"elapsed","type":"time"/);
+});

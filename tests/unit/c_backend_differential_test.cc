@@ -312,3 +312,53 @@ TEST_CASE("c engine: an fsm's switches, whole and in parts, agree with the inter
   CHECK(one->files.front().contents.find("switch ((int)m->state) {") != std::string::npos);
   check_forms("whole.fsm", {{"whole.fsm", whole}}, 2, {EngineForm::Scalable});
 }
+
+TEST_CASE("c engine: every integer type, time and the conversions agree with the interpreter",
+          "[c_backend][run][differential]") {
+  // Values stay in range for any script (the interpreter would stop at an overflow, the engine
+  // not): the point is that both compute, store and print each type alike, in both forms, with
+  // gcc and clang -Werror.
+  const std::string text = R"(interface TypesBot {
+  bool B0();
+  int Level();
+  void Act(int n);
+}
+sfc Types {
+  period 10ms;
+  var int8 a = -5;
+  var int16 b = 300;
+  var int64 c = 3000000000;
+  var uint8 d = 200;
+  var uint16 e = 60000;
+  var uint32 f = 4000000000;
+  var uint64 g = 900000000000000000;
+  var time t = 1s;
+  var double x = 0.5;
+  var float y = 2.5;
+  const int16 HALF = 2;
+  initial place A {
+    a = int8(Level() % 100);
+    b = b / HALF + a;
+    c = c + b * 3;
+    d = uint8(d / 3 + 10);
+    e = e - uint16(d);
+    f = f / 2 + e;
+    g = g + f;
+    t = t + elapsed(A) * 2;
+    if (t > 3s) { t = 0ms; }
+    x = x * 0.5 + 1;
+    Act(int(b) + int(time(c % 7) / 2));
+  }
+  place B {
+    a = int8(x * -10.0);
+    b = int16(y * 100.0);
+    y += 0.25;
+    t -= 10ms;
+    Act(int(t) + int(a));
+  }
+  A -> B when B0() && elapsed(A) >= 30ms;
+  B -> A when elapsed(B) >= 20ms || t <= elapsed(B);
+}
+)";
+  check_forms("types.sfc", {{"types.sfc", text}}, 3);
+}

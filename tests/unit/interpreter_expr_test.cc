@@ -80,3 +80,53 @@ TEST_CASE("interpreter expressions: undefined behaviour stops the run where it h
         "call Si() = 7\n"
         "t.sfc:4:21: error: 3500000000 does not fit in an int (undefined behaviour in C) during tick 1 [runtime]\n");
 }
+
+namespace {
+
+/// The log of one tick of a chart whose initial place runs `action`, with `vars` declared.
+std::string one_tick(const std::string &action, const std::string &vars) {
+  auto c =
+      compile("sfc E {\n" + vars + "\n  initial place A { " + action + " }\n}\n", "interface Bot { void I(int v); }");
+  ScriptedEnv env(*c);
+  interp::RenderOptions explained;
+  explained.explain = true;  // the `set` lines
+  return run_log(*c, env, 1, explained);
+}
+
+}  // namespace
+
+TEST_CASE("interpreter expressions: sized integers are exact and stop the run where a value does not fit") {
+  // In range: each type computes and prints its values whole (uint64 above INT64_MAX too).
+  CHECK(one_tick("a = a + 1; b = b - 1; c = c * 2; d = d + 1;",
+                 "var int8 a = 126; var uint8 b = 1; var int64 c = 900000000000000000; var uint64 d = 0;")
+            .find("set a = 127\nset b = 0\nset c = 1800000000000000000\nset d = 1\n") != std::string::npos);
+  struct Case {
+    const char *vars, *action, *error;
+  };
+  const Case cases[] = {
+      {"var int8 n = 127;", "n = n + 1;", "int8 overflow: 127 + 1 does not fit in 'int8'"},
+      {"var int16 n = -32768;", "n = n - 1;", "int16 overflow: -32768 - 1 does not fit in 'int16'"},
+      {"var int64 n = 900000000000000000;", "n = n * 11;",
+       "int64 overflow: 900000000000000000 * 11 does not fit in 'int64'"},
+      {"var uint8 n = 255;", "n += 1;", "uint8 overflow: 255 + 1 does not fit in 'uint8'"},
+      {"var uint16 n = 0;", "n = n - 1;", "uint16 overflow: 0 - 1 does not fit in 'uint16'"},
+      {"var uint32 n = 4294967295;", "n = n + 1;", "uint32 overflow: 4294967295 + 1 does not fit in 'uint32'"},
+      {"var uint64 n = 0;", "n -= 1;", "uint64 overflow: 0 - 1 does not fit in 'uint64'"},
+      {"var time t = 900000000000000ms;", "t = t * 20000;",
+       "time overflow: 900000000000000ms * 20000 does not fit in 'time'"},
+      {"var int n = 300; var int8 s;", "s = int8(n);", "int8(300): the value does not fit in 'int8'"},
+      {"var double d = -0.5; var uint8 s;", "s = uint8(d - 0.5);", "uint8(-1): the value does not fit in 'uint8'"},
+  };
+  for (const Case &k : cases) {
+    INFO(k.vars << " " << k.action);
+    const std::string log = one_tick(k.action, k.vars);
+    CHECK(log.find(k.error) != std::string::npos);
+    CHECK(log.find("[runtime]") != std::string::npos);
+  }
+}
+
+TEST_CASE("interpreter expressions: conversions round floating values to nearest, ties away from zero") {
+  CHECK(one_tick("a = int16(d); b = int16(-d); c = int8(e); t = time(a) * 3; n = int(t);",
+                 "var double d = 2.5; var float e = 1.49; var int16 a; var int16 b; var int8 c; var time t; var int n;")
+            .find("set a = 3\nset b = -3\nset c = 1\nset t = T#9ms\nset n = 9\n") != std::string::npos);
+}

@@ -331,7 +331,7 @@ sfc S {
   initial place A;
   place B;
   transition A -> B when elapsed(A) > 3;
-  transition A -> B when elapsed(A) + 1s > 2s;
+  transition A -> B when elapsed(A) + 1s > 2s; // durations that add are times (§4): fine
   transition A -> B when 500ms;
   transition A -> B when Motor(1, 500ms) == 1;
   transition A -> B when elapsed(A) >= 1s && elapsed(A) != elapsed(B) && 2s > 1s;
@@ -342,10 +342,6 @@ sfc S {
    transition A -> B when elapsed(A) > 3;
                           ^~~~~~~~~~~~~~
 t.sfc:9:26: note: a duration can only be compared with another duration, as in 'elapsed(P) >= 500ms'
-t.sfc:10:26: error: invalid operands to binary '+' (have 'duration' and 'duration') [type-mismatch]
-   transition A -> B when elapsed(A) + 1s > 2s;
-                          ^~~~~~~~~~~~~~~
-t.sfc:10:26: note: a duration can only be compared with another duration, as in 'elapsed(P) >= 500ms'
 t.sfc:11:26: error: condition must be bool, not 'duration' [type-mismatch]
    transition A -> B when 500ms;
                           ^~~~~
@@ -681,4 +677,89 @@ invalid operands to binary '<' (have 'int' and 'bool')
 invalid operand to unary '!' (have 'int')
 invalid operands to binary '<' (have 'int' and 'bool')
 )--");
+}
+
+TEST_CASE("validate: sized integers mix only where one type holds the other; constants must fit", "[validate]") {
+  Validated r({{"t.sfc", R"--(import "bot.iface";
+sfc S {
+  var int16 a = 1;
+  var uint16 b = 70000;
+  var int n = 0;
+  var uint8 u = 0;
+  var int64 w = 3000000000;
+  const int8 K = 100 + 28;
+  initial place A {
+    a = a + b;
+    a = n;
+    n = a + u;
+    w = w + n;
+    u = u + 256;
+    a = int16(n) + 1;
+    a = int8(200);
+    n = 3000000000;
+    u = 2.5;
+  }
+}
+)--"},
+               {"bot.iface", kBot}});
+  const std::string t = r.text();
+  INFO(t);
+  CHECK(t.find("t.sfc:4:18: error: value 70000 does not fit in 'uint16' [not-constant]") != std::string::npos);
+  CHECK(t.find("t.sfc:8:18: error: value 128 does not fit in 'int8' [not-constant]") != std::string::npos);
+  CHECK(t.find("t.sfc:10:9: error: invalid operands to binary '+' (have 'int16' and 'uint16') [type-mismatch]") !=
+        std::string::npos);
+  CHECK(t.find("'int16' and 'uint16' do not mix: neither holds every value of the other; convert one, e.g. "
+               "'int16(x)' or 'uint16(x)'") != std::string::npos);
+  CHECK(t.find("t.sfc:11:9: error: incompatible types when assigning to 'a' of type 'int16' from type 'int' "
+               "[type-mismatch]") != std::string::npos);
+  CHECK(t.find("'int16' does not hold every value of 'int': convert explicitly, e.g. 'int16(x)'") != std::string::npos);
+  CHECK(t.find("t.sfc:14:13: error: value 256 does not fit in 'uint8' [not-constant]") != std::string::npos);
+  CHECK(t.find("t.sfc:16:9: error: value 200 does not fit in 'int8' [not-constant]") != std::string::npos);
+  CHECK(t.find("t.sfc:17:9: error: integer constant '3000000000' is too large for 'int' [not-constant]") !=
+        std::string::npos);
+  CHECK(t.find("t.sfc:18:9: error: incompatible types when assigning to 'u' of type 'uint8' from type 'double'") !=
+        std::string::npos);
+  // `n = a + u` (int16 + uint8 is int16, which int holds), `w = w + n` and `a = int16(n) + 1` are fine.
+  CHECK(t.find("t.sfc:12:") == std::string::npos);
+  CHECK(t.find("t.sfc:13:") == std::string::npos);
+  CHECK(t.find("t.sfc:15:") == std::string::npos);
+  CHECK(r.fe.diag.error_count() == 8);
+}
+
+TEST_CASE("validate: a time mixes only with times; durations are times where one is meant", "[validate]") {
+  Validated r({{"t.sfc", R"--(import "bot.iface";
+sfc S {
+  period 10ms;
+  var time t = 2s;
+  var time h = 1.5ms;
+  var int n = 0;
+  initial place A {
+    t = t + 5;
+    t = n;
+    t = t * 3 + 100ms;
+    t = t / 2 - elapsed(A);
+  }
+  transition A -> A when t > 0;
+  transition A -> A when elapsed(A) >= t && elapsed(A) < 1s;
+}
+sfc P {
+  period 2.5ms;
+  var time t;
+  initial place A { t = elapsed(A); }
+}
+)--"},
+               {"bot.iface", kBot}});
+  const std::string t = r.text();
+  INFO(t);
+  CHECK(t.find("t.sfc:5:16: error: duration '1.5ms' is not a whole number of milliseconds, which a 'time' counts "
+               "[type-mismatch]") != std::string::npos);
+  CHECK(t.find("t.sfc:8:9: error: invalid operands to binary '+' (have 'time' and 'int') [type-mismatch]") !=
+        std::string::npos);
+  CHECK(t.find("a 'time' mixes only with times and durations") != std::string::npos);
+  CHECK(t.find("t.sfc:9:9: error: incompatible types when assigning to 't' of type 'time' from type 'int'") !=
+        std::string::npos);
+  CHECK(t.find("t.sfc:13:26: error: invalid operands to binary '>' (have 'time' and 'int')") != std::string::npos);
+  CHECK(t.find("t.sfc:19:25: error: 'elapsed(A)' as a 'time' needs a period of whole milliseconds, not 2.5ms") !=
+        std::string::npos);
+  CHECK(r.fe.diag.error_count() == 5);
 }
