@@ -61,7 +61,7 @@ t.sfc:18:15: error: block 'CTU' has no input 'RR' [unknown-name]
 t.sfc:19:15: error: input 'CU' given twice [duplicate-name]
      c(CU = P, CU = P);
                ^~
-t.sfc:20:12: error: incompatible types when assigning to 'PV' of type 'int' from type 'bool' [type-mismatch]
+t.sfc:20:12: error: incompatible types when assigning to 'PV' of type 'int16' from type 'bool' [type-mismatch]
      c(PV = true);
             ^~~~
 t.sfc:21:11: error: block 'CTU' has no output 'QQ' [unknown-name]
