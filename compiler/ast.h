@@ -74,7 +74,9 @@ struct Expr {
 
 struct Stmt {
   /// While, DoWhile, For, Break, Return: docs/language.md §10 "Loops".
-  enum class Kind : std::uint8_t { Call, Assign, Verbatim, If, While, DoWhile, For, Break, Return };
+  /// Invoke: `inst(a = e, b = f);`, a call of a block instance (docs/language.md "Blocks"):
+  /// target is the instance, then_block holds one Assign per argument (its target the input).
+  enum class Kind : std::uint8_t { Call, Assign, Verbatim, If, While, DoWhile, For, Break, Return, Invoke };
   Kind kind;
   AssignOp assign_op = AssignOp::Set;
   bool has_else = false;  ///< Kind::If: `else` was written
@@ -84,7 +86,7 @@ struct Stmt {
   ExprPtr value;  ///< Kind::Assign; Kind::If, While, DoWhile, For: the condition
   // What only one kind of statement has lives on the heap, a pointer wide when absent: a chart
   // may hold a million statements (docs/performance.md).
-  HeapOptional<Name> target;           ///< Kind::Assign
+  HeapOptional<Name> target;           ///< Kind::Assign; Kind::Invoke: the instance
   HeapOptional<std::string> verbatim;  ///< Kind::Verbatim: the text between %{ and %}
   HeapVector<Stmt> then_block;         ///< Kind::If; While, DoWhile, For: the loop's body
   HeapVector<Stmt> else_block;         ///< Kind::If: empty without `else`; `else if` is one If in it;
@@ -262,6 +264,16 @@ struct Chart {
   SourceRange range;
 };
 
+/// `block NAME { in T a; out T q; var T v; var B inst; statements }` at file level
+/// (docs/language.md "Blocks"): a function block, whose body runs once per call of an instance.
+struct BlockDecl {
+  Name name;
+  std::vector<ValueDecl> values;  ///< in, out and var (an instance is a var of a block type)
+  Block body;
+  bool standard = false;  ///< one of the standard blocks gfec predefines (TON, CTU, ...)
+  SourceRange range;
+};
+
 // ---------------------------------------------------------------- toolbox and plan
 
 enum class ParamDir { In, Out };
@@ -383,6 +395,7 @@ struct File {
   std::vector<ValueDecl> consts;
   std::vector<Interface> interfaces;
   std::vector<Chart> charts;
+  std::vector<BlockDecl> blocks;
   std::vector<Toolbox> toolboxes;
   std::vector<Plan> plans;
   std::vector<Test> tests;

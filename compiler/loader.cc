@@ -2,6 +2,7 @@
 
 #include "input_languages.h"
 #include "parser.h"
+#include "standard_blocks.h"
 #include "did_you_mean.h"
 
 #include <fmt/format.h>
@@ -198,6 +199,7 @@ LoadResult load_program(const std::string &main_path, const LoadOptions &options
   const InputLanguage &language = options.language ? *options.language : input_language_of(main_path, *text);
   result.language = &language;
   language.read(main_path, std::move(*text), options, fs, sources, diag, result);
+  add_standard_blocks(result.program, sources, diag);
   if (options.period_ms && !language.reads_period && !result.program.files.empty() && result.program.files.front())
     diag.error({result.program.files.front()->id, 0, 0}, ErrorKind::Period,
                fmt::format("--period is for IEC programs (-x iec-st, plcopen), not {}{}", language.summary,

@@ -38,6 +38,7 @@ using ToolboxId = Id<struct ToolboxTag>;        ///< Model::toolboxes
 using PlanId = Id<struct PlanTag>;              ///< Model::plans
 using ActorId = Id<struct ActorTag>;            ///< Plan::actors
 using ConfigId = Id<struct ConfigTag>;          ///< Plan::config
+using BlockId = Id<struct BlockTag>;            ///< Model::blocks
 
 /// `Duration` is a duration literal or `elapsed(P)` where whole ticks are meant (§5.3); `Time`
 /// is the language's `time`: a signed 64-bit count of milliseconds (docs/language.md §4). The
@@ -106,6 +107,7 @@ struct Expr {
     // the value of the latest action control (docs/iec.md "Action flags").
     ActionQ,  ///< `active(A)`: the action's Q (IEC's `A.Q`)
     ActionA,  ///< `running(A)`: the action's body runs (IEC's `A.A`: Q, its final run, an edge)
+    Now,        ///< `now()`: the time of this tick, its number times the period (docs/language.md §15). Type Time.
     /// A conversion `T(x)` (docs/language.md §4), args[0] = x, type T: between integer types
     /// and to and from `time` exact (a value that does not fit is an error), a floating value to
     /// an integer rounded to nearest, ties away from zero (IEC's REAL_TO_INT).
@@ -171,13 +173,17 @@ private:
 
 struct Stmt {
   /// While, DoWhile, For, Break, Return: docs/language.md §10 "Loops".
-  enum class Kind : std::uint8_t { Call, Assign, Verbatim, If, While, DoWhile, For, Break, Return };
+  /// Invoke: a call of a block instance (docs/language.md "Blocks"), already inlined: var is
+  /// the instance's first member (Instance::first), then_block its first code_begin statements
+  /// the arguments (Assigns of inputs, as written) and then the block's body for this instance.
+  enum class Kind : std::uint8_t { Call, Assign, Verbatim, If, While, DoWhile, For, Break, Return, Invoke };
   Kind kind = Kind::Call;
   AssignOp op = AssignOp::Set;
   bool else_if = false;  ///< Kind::If: else_block is one If written as `else if`
   SourceRange range;
-  VarId var;                     ///< Kind::Assign
+  VarId var;                     ///< Kind::Assign; Kind::Invoke: the instance's first member
   std::uint32_t code_begin = 0;  ///< Kind::Verbatim: where `verbatim` starts in range.file (after `%{`); 0: unknown
+                                 ///< Kind::Invoke: how many arguments then_block begins with
   /// Kind::Call: the call (an Expr of Kind::Call; its result, if any, is discarded);
   /// Kind::Assign: the value; Kind::If, While, DoWhile, For: the condition (Bool). One expression per statement:
   /// a chart may hold a million statements (docs/performance.md).
@@ -230,6 +236,18 @@ struct Var {
   std::optional<Expr> init;  ///< absent: zero
   SourceRange range;
   std::string address;  ///< an imported IEC located variable's direct address (`%IX0.0`), or empty
+};
+
+/// `var TON t1;`: an instance of a block (docs/language.md "Blocks"). Its state is the block's
+/// vars, copied into the chart (or the block) that declares it as vars[first, first + count),
+/// named `t1.IN`, `t1.Q`, ... in the block's order; the members of an instance inside it follow
+/// as `t1.inner.Q`. Each is a Local var of the holder: the instance's inputs are not the chart's.
+struct Instance {
+  std::string name;
+  BlockId block;
+  VarId first;
+  std::uint32_t count = 0;
+  SourceRange range;
 };
 
 enum class Terminal : std::uint8_t { None, Success, Failure };
@@ -314,6 +332,7 @@ struct Chart {
   Table<TransitionId, Transition> transitions;  ///< declaration order: the order of §5.1 and §7
   Table<VarId, Var> vars;
   Table<ActionId, Action> actions;    ///< named actions in declaration order: the order they run in
+  std::vector<Instance> instances;    ///< block instances, in declaration order (their vars are in vars)
   std::vector<FunctionId> functions;  ///< interface functions the chart calls, in declaration order
   std::vector<ConstId> consts;        ///< constants the chart reads, in declaration order
   int team = 0;                       ///< fsm `team N;`: N (>= 2); 0 for a machine that is no team
@@ -322,8 +341,26 @@ struct Chart {
   /// Some expression reads an action's flags (`active(A)`, `running(A)`): the action control
   /// then runs for every action before any body (docs/iec.md "Action flags").
   bool reads_action_flags = false;
+  bool clock = false;                 ///< `now()` is read (by the chart or a block it calls): the engine counts ticks
   SourceRange range;
   SourceRange name_range;  ///< the chart's name where it is declared
+};
+
+/// A block (docs/language.md "Blocks"): its vars (the in, out and var members in declaration
+/// order, and the members of its own instances), and its body over them. A call of an instance
+/// inlines the body with every var moved to the instance's (Stmt::Kind::Invoke).
+struct Block {
+  std::string name;
+  std::vector<Var> vars;  ///< roles: In, Out, Local, as declared
+  std::vector<Instance> instances;
+  std::vector<Stmt> body;
+  std::vector<FunctionId> functions;  ///< interface functions the body calls
+  std::vector<ConstId> consts;        ///< constants the body reads
+  bool standard = false;              ///< predefined by gfec (TON, CTU, ...: docs/iec.md)
+  bool used = false;                  ///< some chart of the program has an instance of it
+  bool clock = false;                 ///< its body (or an instance inside it) reads `now()`
+  SourceRange range;
+  SourceRange name_range;
 };
 
 // ---------------------------------------------------------------- toolbox and plan
@@ -430,6 +467,7 @@ struct Model {
   Table<FunctionId, Function> functions;
   Table<ConstId, Const> consts;
   Table<ChartId, Chart> charts;
+  Table<BlockId, Block> blocks;  ///< user blocks in declaration order, then the standard ones used
   Table<TemplateId, Template> templates;
   Table<ToolboxId, Toolbox> toolboxes;
   Table<PlanId, Plan> plans;

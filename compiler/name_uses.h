@@ -32,6 +32,8 @@ enum class Sym {
   ConfigEntry,
   Actor,
   Supervisor,
+  Block,
+  Instance,
 };
 
 }  // namespace validation

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <climits>
 #include <cstdlib>
@@ -56,6 +57,12 @@ private:
     return *lookahead_;
   }
   bool at(Tok k) const { return tok_.kind == k; }
+  /// Whether the text from `pos` on, after white space, is `=` and not `==`: a second token of
+  /// lookahead for `inst(a = e)`, which only a block call has.
+  bool assign_follows(std::uint32_t pos) const {
+    while (pos < text_.size() && std::isspace(static_cast<unsigned char>(text_[pos]))) ++pos;
+    return pos < text_.size() && text_[pos] == '=' && (pos + 1 >= text_.size() || text_[pos + 1] != '=');
+  }
   bool accept(Tok k) {
     if (!at(k)) return false;
     advance();
@@ -178,6 +185,9 @@ private:
   void place_body(Place &p);
   Association association();
   ActionDecl action_decl();
+  BlockDecl block_decl();
+  Name member_name(Name first);
+  void invoke_arguments(Stmt &s);
   Transition transition();
   std::vector<Name> place_list(bool &parenthesised);
   Toolbox toolbox();
@@ -292,6 +302,13 @@ void Parser::top_level(File &file) {
   case Tok::KwVar:
     diag_.error(tok_.range, ErrorKind::Syntax, "'var' declares chart state and belongs inside an sfc or fsm");
     throw SyntaxError{};
+  case Tok::Ident:
+    // `block` is a keyword only here, before a name (docs/language.md "Blocks").
+    if (tok_.text == "block" && peek().kind == Tok::Ident) {
+      file.blocks.push_back(block_decl());
+      return;
+    }
+    [[fallthrough]];
   default: {
     const std::string what = "expected a declaration (import, interface, sfc, fsm, toolbox, plan, const or test)";
     // A file that opens with '{' is JSON, most likely an ALICA plan under another extension.
@@ -537,6 +554,46 @@ ActionDecl Parser::action_decl() {
   a.body = block();
   a.range = from(begin);
   return a;
+}
+
+//G block_decl: 'block' IDENT '{' { var_decl | statement } '}'
+BlockDecl Parser::block_decl() {
+  std::uint32_t begin = here();
+  advance();
+  BlockDecl b;
+  b.name = name("after 'block'");
+  braced("to open the block", [&] {
+    if (at(Tok::KwIn) || at(Tok::KwOut) || at(Tok::KwVar)) b.values.push_back(value_decl());
+    else if (at(Tok::KwConst))
+      fail("expected a statement or a declaration (in, out, var); constants belong at file level");
+    else b.body.push_back(statement());
+  });
+  b.range = from(begin);
+  return b;
+}
+
+/// `inst.member` after its first name, as one name: the text is kept in File::strings.
+Name Parser::member_name(Name first) {
+  advance();  // the '.'
+  Name member = name("after '.' (a member of the block instance)");
+  const SourceRange range{file_, first.range.begin, member.range.end};
+  return {out_->strings.emplace_back(fmt::format("{}.{}", first.text, member.text)), range};
+}
+
+//G invoke_arguments: '(' IDENT '=' expr { ',' IDENT '=' expr } ')'
+void Parser::invoke_arguments(Stmt &s) {
+  expect(Tok::LParen, "(the arguments)");
+  do {
+    std::uint32_t begin = here();
+    Stmt a;
+    a.kind = Stmt::Kind::Assign;
+    a.target = name("(an input of the block)");
+    expect(Tok::Assign, "after the input's name (a block's arguments are 'name = value')");
+    a.value = expr();
+    a.range = from(begin);
+    s.then_block.push_back(std::move(a));
+  } while (accept(Tok::Comma));
+  expect(Tok::RParen, "to close the argument list");
 }
 
 //G block: '{' { statement } '}'
@@ -826,6 +883,18 @@ Stmt Parser::statement() {
   }
   if (!at(Tok::Ident)) fail("expected a statement (a call, an assignment, 'if', a loop or %{ ... %})");
   Name target = name();
+  if (at(Tok::Dot)) target = member_name(std::move(target));  // `inst.a = e;` sets an input
+  if (at(Tok::LParen) && peek().kind == Tok::Ident && target.text.find('.') == std::string_view::npos) {
+    // `inst(a = e)`: a block call names its arguments; a function call never starts with `x =`.
+    if (assign_follows(peek().range.end)) {
+      s.kind = Stmt::Kind::Invoke;
+      s.target = std::move(target);
+      invoke_arguments(s);
+      expect(Tok::Semi, "after the statement");
+      s.range = from(begin);
+      return s;
+    }
+  }
   if (at(Tok::Assign) || at(Tok::PlusAssign) || at(Tok::MinusAssign)) {
     s = assignment(std::move(target), begin);
   } else if (at(Tok::LParen)) {
@@ -1078,11 +1147,8 @@ ExprPtr Parser::primary() {
   }
   case Tok::Ident: {
     Name n = name();
-    if (at(Tok::Dot)) {
-      diag_.error(path(std::move(n))->range, ErrorKind::Syntax,
-                  "a path to a sub-chart's place is only read through 'active(...)'");
-      throw SyntaxError{};
-    }
+    // `inst.q`, an output of a block instance; the validator says what any other path is.
+    if (at(Tok::Dot)) return path(std::move(n));
     if (!at(Tok::LParen)) {
       auto e = make(Expr::Kind::Name, n.range);
       e->name = std::move(n);

@@ -137,11 +137,17 @@ void name_fields(EngineContext &c) {
     if (!used->empty()) fields.claim(*used);
   // The context's type (`motor_t *`) is the last field's.
   for (const auto &word : c.context_type.words) fields.claim(word);
-  for (const auto &v : c.chart.vars) c.var_field.push_back(fields.take(v.name));
+  for (const auto &v : c.chart.vars) {
+    // A block instance's member `t1.Q` (docs/language.md "Blocks") is the field `t1_Q`.
+    std::string field = v.name;
+    std::replace(field.begin(), field.end(), '.', '_');
+    c.var_field.push_back(fields.take(std::move(field)));
+  }
   c.av = fields.take("av");
   c.state = fields.take("state");
   c.status = fields.take("status");
   c.started = fields.take("started");
+  if (c.chart.clock) c.clock = fields.take("clock");
   c.current = fields.take("current");
   c.active = fields.take("active");
   c.candidates = fields.take("candidates");

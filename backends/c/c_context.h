@@ -106,6 +106,7 @@ struct EngineContext {
   std::string state;       ///< fsm: the current state
   std::string status;      ///< fsm: 0 running, 1 succeeded, -1 failed
   std::string started;     ///< set by the first tick, when an initial place has an entry block
+  std::string clock;       ///< the ticks run, when now() is read (model::Chart::clock)
   std::string current;     ///< sequential form: the number of the one active place
   std::string active;      ///< sparse form: the active places as bits with summary levels
   std::string candidates;  ///< sparse form, not place-driven: the transitions to try this tick

@@ -243,6 +243,7 @@ bool same_value(const EngineContext &c, const Expr &x, const Expr &y) {
   case Expr::Kind::Agent: return true;  // the engine's own agent number, a field
   case Expr::Kind::ActionQ:
   case Expr::Kind::ActionA: return a.action() == b.action();
+  case Expr::Kind::Now: return true;    // one tick, one time
   case Expr::Kind::Elapsed: return a.place() == b.place();
   case Expr::Kind::Succeeded:
   case Expr::Kind::Failed: return a.place() == b.place();
@@ -376,6 +377,8 @@ public:
       if (e.type == Type::Time)
         return {fmt::format("((int64_t){} * {})", c_.timer_of(e.place()), static_cast<long long>(c_.chart.period_ms))};
       return {c_.timer_of(e.place())};
+    case Expr::Kind::Now:  // the tick's number times the period (docs/language.md §15)
+      return {fmt::format("({} * {})", c_.field(c_.clock), static_cast<long long>(c_.chart.period_ms))};
     case Expr::Kind::Unary: return unary(e);
     case Expr::Kind::Binary: return binary(e);
     case Expr::Kind::Active:
@@ -964,6 +967,7 @@ void render_statements(const EngineContext &c, const std::vector<model::Stmt> &s
       text.push_back(r.statement(s.else_block.back()));
       render_block(c, s.then_block, temps, r, text);
       break;
+    case model::Stmt::Kind::Invoke: render_statements(c, s.then_block, temps, r, text); break;  // inlined
     case model::Stmt::Kind::If: {
       // The test (its temporaries belong to the enclosing block), then each branch: the
       // declarations of its own temporaries, then its statements. An `else if` is the one If
@@ -1005,6 +1009,10 @@ public:
         w_.verbatim(sources_, s.range, *s.verbatim, s.code_begin);
         next_ = 0;
         ++at_;
+        continue;
+      }
+      if (s.kind == model::Stmt::Kind::Invoke) {  // a block call: its body inlined, in line
+        list(s.then_block);
         continue;
       }
       point_at(s.range);

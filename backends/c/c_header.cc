@@ -89,6 +89,8 @@ void state_struct(CodeWriter &w, const EngineContext &c) {
       rows.emplace_back(fmt::format("uint32_t {};", c.timer_field[p]),
                         fmt::format("ticks {} has been active: elapsed({})", c.place(p).name, c.place(p).name));
   if (c.needs_started) rows.emplace_back(fmt::format("bool {};", c.started), "the first tick has run");
+  if (c.chart.clock)
+    rows.emplace_back(fmt::format("int64_t {};", c.clock), "ticks run: now() is this times the period");
   for (model::ActionId a : c.action_q.ids()) {
     const std::string &name = c.chart.actions[a].name.str();
     if (!c.action_stored[a].empty()) {

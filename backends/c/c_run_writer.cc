@@ -21,6 +21,10 @@ void RunWriter::section(const std::string &comment) {
 }
 
 void RunWriter::first_tick(const std::string &comment) {
+  if (c_.chart.clock) {
+    section("/* The clock: now() is this tick's number times the period */");
+    w_.line("{} += 1;", c_.field(c_.clock));
+  }
   if (!c_.needs_started) return;
   section(comment);
   auto scope = w_.block(fmt::format("if (!{}) {{", c_.field(c_.started)));

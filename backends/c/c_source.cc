@@ -101,6 +101,7 @@ void init(CodeWriter &w, const EngineContext &c) {
   for (model::PlaceId p : c.chart.places.ids())
     if (c.place(p).timed) w.line("{} = 0;", c.timer_of(p));
   if (c.needs_started) w.line("{} = false;", c.field(c.started));
+  if (c.chart.clock) w.line("{} = 0;", c.field(c.clock));
   // Action control starts clear: no action stored or active, no place active before tick 1 (so
   // that an initial place rises in tick 1).
   for (model::ActionId a : c.action_q.ids()) {

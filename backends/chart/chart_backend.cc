@@ -113,6 +113,52 @@ std::string places(const model::Chart &c, const model::PlaceList &list) {
   return "(" + out + ")";
 }
 
+/// The vars of chart `index`: each block instance as `var B inst;` where its members begin.
+void vars(CodeWriter &w, const model::Model &m, model::ChartId index) {
+  const model::Chart &c = m.charts[index];
+  for (model::VarId v : c.vars.ids()) {
+    const model::Instance *holder = nullptr;
+    for (const model::Instance &i : c.instances)
+      if (i.name.find('.') == std::string::npos && v.index() >= i.first.index() &&
+          v.index() < i.first.index() + i.count)
+        holder = &i;
+    if (holder) {
+      if (holder->first == v) w.line("var {} {};", m.blocks[holder->block].name, holder->name);
+      continue;
+    }
+    const model::Var &x = c.vars[v];
+    value(w, m, index,
+          x.role == model::VarRole::In    ? "in"
+          : x.role == model::VarRole::Out ? "out"
+                                          : "var",
+          x.type, x.name, x.init ? &*x.init : nullptr, x.address);
+  }
+}
+
+/// The user's blocks (the standard ones are predefined), each written over a scratch chart
+/// that holds its vars, so that its statements are spelled as a chart's.
+void blocks(CodeWriter &w, const model::Model &m) {
+  bool any = false;
+  for (const model::Block &b : m.blocks) any = any || !b.standard;
+  if (!any) return;
+  model::Model scratch = m;
+  for (const model::Block &b : m.blocks) {
+    if (b.standard) continue;
+    model::Chart shell;
+    shell.name = b.name;
+    for (const model::Var &v : b.vars) shell.vars.push_back(v);
+    shell.instances = b.instances;
+    const model::ChartId id = scratch.charts.next_id();
+    scratch.charts.push_back(std::move(shell));
+    {
+      auto body = w.block(fmt::format("block {} {{", b.name));
+      vars(w, scratch, id);
+      chart_text::statements(w, scratch, id, b.body);
+    }
+    w.blank();
+  }
+}
+
 void chart(CodeWriter &w, const model::Model &m, model::ChartId index) {
   const model::Chart &c = m.charts[index];
   bool fsm = c.kind == model::Chart::Kind::Fsm;
@@ -121,12 +167,7 @@ void chart(CodeWriter &w, const model::Model &m, model::ChartId index) {
   if (c.team > 0) w.line("team {};", c.team);
   for (const auto &k : m.consts)
     if (k.chart == index) value(w, m, index, "const", k.type, k.name, &k.value);
-  for (const auto &v : c.vars)
-    value(w, m, index,
-          v.role == model::VarRole::In    ? "in"
-          : v.role == model::VarRole::Out ? "out"
-                                          : "var",
-          v.type, v.name, v.init ? &*v.init : nullptr, v.address);
+  vars(w, m, index);
   for (const auto &a : c.actions) {
     auto action = w.block(fmt::format("action {} {{", chart_text::name(a.name.view())));
     chart_text::statements(w, m, index, a.body);
@@ -164,6 +205,7 @@ public:
       value(w, m, root, "const", cst.type, cst.name, &cst.value);
     }
     if (!consts.empty()) w.blank();
+    blocks(w, m);
     // Model order, which is the order the converted file declares them in again.
     bool first = true;
     for (model::ChartId c : charts) {

@@ -98,6 +98,7 @@ std::string expr(const model::Model &m, model::ChartId chart, const model::Expr 
   case K::Agent: return "agent()";
   case K::ActionQ: return fmt::format("active({})", name(c.actions[e.action()].name.view()));
   case K::ActionA: return fmt::format("running({})", name(c.actions[e.action()].name.view()));
+  case K::Now: return "now()";
   case K::Convert: return fmt::format("{}({})", model::type_name(e.type), expr(m, chart, e.args[0]));
   }
   return "";
@@ -134,6 +135,21 @@ void statements(CodeWriter &w, const model::Model &m, model::ChartId chart, cons
       }
       if (s.kind == model::Stmt::Kind::DoWhile) w.line("}} while ({});", condition);
       else w.line("}");
+      break;
+    }
+    case model::Stmt::Kind::Invoke: {
+      // `inst(a = e, ...)`: the arguments are the first code_begin statements, the rest the
+      // block's body, which the block's declaration writes.
+      std::string instance = "?";
+      for (const model::Instance &i : c.instances)
+        if (i.first == s.var) instance = i.name;
+      std::string args;
+      for (std::uint32_t k = 0; k < s.code_begin; ++k) {
+        const model::Stmt &a = s.then_block[k];
+        const std::string &member = c.vars[a.var].name;
+        args += fmt::format("{}{} = {}", k ? ", " : "", member.substr(member.rfind('.') + 1), expr(m, chart, a.expr));
+      }
+      w.line("{}({});", instance, args);
       break;
     }
     case model::Stmt::Kind::If: {

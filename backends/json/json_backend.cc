@@ -5,6 +5,7 @@
 
 #include <ostream>
 #include <algorithm>
+#include <set>
 #include <stdexcept>
 
 namespace gfec {
@@ -115,6 +116,38 @@ void chart_fields(const model::Model &m, const model::Chart &c, Json &doc) {
     vars.push_back(std::move(j));
   }
   doc["vars"] = std::move(vars);
+
+  // Only a chart with block instances has the fields (docs/model-json.md "Blocks").
+  if (!c.instances.empty()) {
+    Json instances = Json::array();
+    std::set<model::BlockId> used;
+    for (const model::Instance &i : c.instances) {
+      used.insert(i.block);
+      if (i.name.find('.') != std::string::npos) continue;  // inside another instance
+      instances.push_back({{"name", i.name},
+                           {"block", m.blocks[i.block].name},
+                           {"first_var", i.first.index()},
+                           {"var_count", i.count},
+                           {"location", location(m, i.range)}});
+    }
+    doc["instances"] = std::move(instances);
+    Json blocks = Json::array();
+    for (model::BlockId id : used) {
+      const model::Block &b = m.blocks[id];
+      Json members = Json::array();
+      for (const model::Var &v : b.vars) {
+        if (v.name.find('.') != std::string::npos) continue;  // a member of an inner instance
+        Json j = {{"name", v.name}, {"type", model::type_name(v.type)}};
+        if (v.role != model::VarRole::Local) j["role"] = v.role == model::VarRole::In ? "in" : "out";
+        members.push_back(std::move(j));
+      }
+      blocks.push_back({{"name", b.name},
+                        {"standard", b.standard},
+                        {"members", std::move(members)},
+                        {"location", location(m, b.range)}});
+    }
+    doc["blocks"] = std::move(blocks);
+  }
 
   Json consts = Json::array();
   for (model::ConstId k : c.consts) {

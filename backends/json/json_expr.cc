@@ -32,6 +32,7 @@ const char *kind_name(Expr::Kind k) {
   case Expr::Kind::Agent: return "agent";
   case Expr::Kind::ActionQ: return "active";
   case Expr::Kind::ActionA: return "running";
+  case Expr::Kind::Now: return "now";
   case Expr::Kind::Convert: return "convert";
   default: break;
   }
@@ -171,6 +172,18 @@ Json statements(const model::Model &m, const Scope &scope, const std::vector<mod
       j["step"] = statements(m, scope, {s.else_block.back()})[0];
       j["body"] = statements(m, scope, s.then_block);
       break;
+    case model::Stmt::Kind::Invoke: {
+      // A block call: the instance, its arguments; the inlined body is the block's (blocks[]).
+      j["kind"] = "invoke";
+      std::string instance = "?";
+      if (scope.chart)
+        for (const model::Instance &i : scope.chart->instances)
+          if (i.first == s.var) instance = i.name;
+      j["instance"] = instance;
+      j["args"] =
+          statements(m, scope, std::vector<model::Stmt>(s.then_block.begin(), s.then_block.begin() + s.code_begin));
+      break;
+    }
     case model::Stmt::Kind::If:
       j["kind"] = "if";
       j["condition"] = expression_tree(m, scope, s.expr);

@@ -77,8 +77,9 @@ struct Pou {
   std::vector<Step> steps;          ///< in declaration order
   std::vector<Transition> transitions;
   std::vector<Action> actions;  ///< in declaration order: the order their bodies run in
-  /// The POU's body is statements, not an SFC: ST as written, or an FBD or LD network read as
-  /// the ST it means. A program so is a chart of one step that runs them every scan.
+  /// The POU's body when it is statements, not an SFC: ST as written, or an FBD or LD network
+  /// read as the ST it means. A program so is a chart of one step that runs them every scan; a
+  /// FUNCTION_BLOCK's statements are its block's body.
   std::optional<ast::Block> body;
   SourceRange body_range;  ///< where the body's first statement is, when the reader knows
   /// The POU has a body that is not an SFC (plain ST statements, LD, FBD, IL): where, to report

@@ -4,6 +4,7 @@
 // `Start` declared); the range stays on what the user wrote.
 #include "iec/lower.h"
 #include "iec/iec_text.h"
+#include "standard_blocks.h"
 
 #include <fmt/format.h>
 
@@ -11,6 +12,7 @@
 #include <cctype>
 #include <cmath>
 #include <iterator>
+#include <deque>
 #include <map>
 #include <memory>
 #include <set>
@@ -105,7 +107,65 @@ void located_role(const Variable &v, ast::ValueDecl &d, Diagnostics &diag) {
   }
 }
 
-ast::ValueDecl lower_variable(Variable &v, Diagnostics &diag) {
+/// The function blocks a POU may instantiate, by their upper-case names: the project's
+/// FUNCTION_BLOCKs and the standard blocks. IEC names are case-insensitive: a type, an instance's
+/// member and a parameter are respelled as the block declares them.
+struct KnownBlocks {
+  std::map<std::string, std::string> spelled;  ///< upper-case name -> as declared
+  std::map<std::string, Spellings> members;    ///< a FUNCTION_BLOCK's; a standard block's are upper case
+
+  const std::string *type(const std::string &iec_upper) const {
+    auto it = spelled.find(iec_upper);
+    return it == spelled.end() ? nullptr : &it->second;
+  }
+  /// `member` of a block `type` (as declared), respelled as the block declares it.
+  void respell_member(const std::string &type, ast::Name &member, std::deque<std::string> &strings) const {
+    auto it = members.find(upper(type));
+    if (it != members.end()) it->second.respell(member);
+    else if (upper(member.text) != member.text) member.text = strings.emplace_back(upper(member.text));
+  }
+};
+
+/// The instances a POU declares: upper-case name -> block type as declared.
+using Instances = std::map<std::string, std::string>;
+
+void respell_members(ast::Expr &e, const Instances &inst, const KnownBlocks &known, std::deque<std::string> &strings) {
+  for (ast::Expr *a : e.args)
+    if (a) respell_members(*a, inst, known, strings);
+  if (e.kind != ast::Expr::Kind::Path || e.args.size() != 2 || !e.args[0] || !e.args[1]) return;
+  auto it = inst.find(upper(e.args[0]->name.text));
+  if (it != inst.end()) known.respell_member(it->second, e.args[1]->name, strings);
+}
+
+template <typename Stmts> void respell_members_in(Stmts &block, const Instances &inst, const KnownBlocks &known,
+                                                  const Spellings &names, std::deque<std::string> &strings) {
+  for (ast::Stmt &s : block) {
+    if (s.value) respell_members(*s.value, inst, known, strings);
+    if (s.call) respell_members(*s.call, inst, known, strings);
+    if (s.kind == ast::Stmt::Kind::Invoke && s.target) {
+      auto it = inst.find(upper(s.target->text));
+      for (ast::Stmt &a : s.then_block) {
+        if (a.value) respell_members(*a.value, inst, known, strings);
+        if (it != inst.end() && a.target) known.respell_member(it->second, *a.target, strings);
+      }
+      continue;
+    }
+    if (s.kind == ast::Stmt::Kind::Assign && s.target && s.target->text.find('.') != std::string_view::npos) {
+      // `inst.IN := x`: both names respelled, joined again.
+      const std::size_t dot = s.target->text.find('.');
+      ast::Name head{s.target->text.substr(0, dot), s.target->range};
+      ast::Name member{s.target->text.substr(dot + 1), s.target->range};
+      names.respell(head);
+      auto it = inst.find(upper(head.text));
+      if (it != inst.end()) known.respell_member(it->second, member, strings);
+      s.target->text = strings.emplace_back(fmt::format("{}.{}", head.text, member.text));
+    }
+    respell_members_in(s.then_block, inst, known, names, strings);
+    respell_members_in(s.else_block, inst, known, names, strings);
+  }
+}
+
+ast::ValueDecl lower_variable(Variable &v, Diagnostics &diag, const KnownBlocks *known = nullptr) {
   ast::ValueDecl d;
   d.role = v.section == Section::Input    ? ast::VarRole::In
            : v.section == Section::Output ? ast::VarRole::Out
@@ -114,8 +174,15 @@ ast::ValueDecl lower_variable(Variable &v, Diagnostics &diag) {
   d.name = v.name;
   d.range = v.range;
   const std::string t = upper(v.type.text);
+  const std::string *block = known ? known->type(t) : nullptr;
   if (const char *c = chart_type(t)) {
     d.type = {c, v.type.range};
+  } else if (block) {
+    d.type = {*block, v.type.range};  // an instance (docs/iec.md "Function blocks")
+    if (v.section != Section::Local)
+      diag.error(
+          v.type.range, ErrorKind::NotSupported,
+          fmt::format("a function-block instance as an input or output ('{}') is not supported yet", v.name.text));
   } else {
     d.type = {"int", v.type.range};  // reported: what follows is still checked
     std::string head = t.substr(0, t.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZ_0123456789"));
@@ -148,16 +215,28 @@ void action_flags(ast::Expr &e, const std::map<std::string, bool> &actions, Diag
     if (a) action_flags(*a, actions, diag);
   if (e.kind != ast::Expr::Kind::Call || (e.name.text != ".Q" && e.name.text != ".A")) return;
   const bool q = e.name.text == ".Q";
-  const ast::Expr *of = e.args.size() == 1 ? e.args[0] : nullptr;
-  if (of && actions.count(upper(of->name.text))) {
+  if (e.args.size() != 2 || !e.args[0] || !e.args[1]) return;  // the reader makes them so
+  if (actions.count(upper(e.args[0]->name.text))) {
+    ast::ExprList of;
+    of.push_back(clone(*e.args[0]));
     e.name.text = q ? "active" : "running";
+    e.args = std::move(of);
     return;
   }
-  diag.error(e.range, ErrorKind::NotSupported,
-             fmt::format("'{}{}': '{}' is no ACTION of the program; members of structures and function-block "
-                         "instances are not supported yet",
-                         of ? of->name.text : "", e.name.text, of ? of->name.text : ""));
-  e.name.text = q ? "active" : "running";
+  if (!q) {
+    diag.error(e.range, ErrorKind::NotSupported,
+               fmt::format("'{}.{}': '{}' is no ACTION of the program, and '.A' is an action's flag",
+                           e.args[0]->name.text, e.args[1]->name.text, e.args[0]->name.text));
+    return;
+  }
+  // Not an action: a member read, `inst.Q` of a function-block instance; the validator says
+  // what else it is.
+  ast::ExprList parts;
+  parts.push_back(clone(*e.args[0]));
+  parts.push_back(clone(*e.args[1]));
+  e.kind = ast::Expr::Kind::Path;
+  e.name = {};
+  e.args = std::move(parts);
 }
 
 template <typename Stmts>
@@ -274,7 +353,46 @@ std::optional<ast::Period> period_of(const Project &project, const Pou &pou, Dia
   return found;
 }
 
-bool lower(Pou &&pou, const std::optional<ast::Period> &period, ast::File &file, Diagnostics &diag) {
+namespace {
+
+/// A FUNCTION_BLOCK: a block of the chart language (docs/iec.md "Function blocks").
+void lower_function_block(Pou &pou, ast::File &file, Diagnostics &diag, const KnownBlocks &known) {
+  Spellings names;
+  for (const Variable &v : pou.variables) names.declare(v.name);
+  Instances instances;
+  ast::BlockDecl &b = file.blocks.emplace_back();
+  b.name = pou.name;
+  b.range = pou.range;
+  for (Variable &v : pou.variables) {
+    if (v.constant) {
+      diag.error(v.name.range, ErrorKind::NotSupported,
+                 fmt::format("a constant in a function block ('{}') is not supported yet", v.name.text));
+      continue;
+    }
+    ast::ValueDecl d = lower_variable(v, diag, &known);
+    if (d.init) names.respell(*d.init);
+    if (known.type(upper(v.type.text))) instances.emplace(upper(v.name.text), d.type.text);
+    b.values.push_back(std::move(d));
+  }
+  if (pou.body) {
+    names.respell_block(*pou.body);
+    respell_members_in(*pou.body, instances, known, names, file.strings);
+    b.body = std::move(*pou.body);
+  }
+}
+
+/// Turns `pou` into an sfc of the chart language and appends it to `file.charts`: its variables
+/// (BOOL, DINT, REAL, LREAL as bool, int, float, double, a known block's instances; every other
+/// type a located "not supported yet" error), steps, transitions (ordered by PRIORITY within
+/// their divergence), named actions and the period. A FUNCTION_BLOCK becomes a block of
+/// `file.blocks`; a FUNCTION, or a PROGRAM whose body is not an SFC, is reported and adds
+/// nothing. Returns whether a chart was added.
+bool lower_pou(Pou &&pou, const std::optional<ast::Period> &period, ast::File &file, Diagnostics &diag,
+               const KnownBlocks &known) {
+  if (pou.kind == PouKind::FunctionBlock) {
+    lower_function_block(pou, file, diag, known);
+    return false;  // a block, not a program
+  }
   if (pou.kind != PouKind::Program) {
     diag.error(pou.name.range, ErrorKind::NotSupported,
                fmt::format("{} '{}' is not supported yet: gfec compiles PROGRAMs", pou_kind(pou.kind), pou.name.text));
@@ -303,9 +421,11 @@ bool lower(Pou &&pou, const std::optional<ast::Period> &period, ast::File &file,
   c.name = pou.name;
   c.range = pou.range;
   if (period) c.periods.push_back(*period);
+  Instances instances;
   for (Variable &v : pou.variables) {
-    ast::ValueDecl d = lower_variable(v, diag);
+    ast::ValueDecl d = lower_variable(v, diag, &known);
     if (d.init) names.respell(*d.init);
+    if (known.type(upper(v.type.text))) instances.emplace(upper(v.name.text), d.type.text);
     c.values.push_back(std::move(d));
   }
   // An association naming a variable rather than an ACTION is IEC's Boolean action: the
@@ -359,6 +479,12 @@ bool lower(Pou &&pou, const std::optional<ast::Period> &period, ast::File &file,
   }
   pou.actions.insert(pou.actions.begin(), std::make_move_iterator(generated.begin()),
                      std::make_move_iterator(generated.end()));
+  // `A.Q` and `A.A` are an action's flags or, `Q` of an instance, its output: told apart before
+  // the members of instances are respelled.
+  for (Transition &t : pou.transitions)
+    if (t.condition) action_flags(*t.condition, actions, diag);
+  for (Action &a : pou.actions) action_flags_in(a.body, actions, diag);
+  if (pou.body) action_flags_in(*pou.body, actions, diag);
   if (pou.body) {
     // A body of statements: one initial step that is never left runs them every scan, as the
     // place block of step 4 of a tick (docs/iec.md "Programs without an SFC"). The step is
@@ -371,6 +497,7 @@ bool lower(Pou &&pou, const std::optional<ast::Period> &period, ast::File &file,
     p.name = {file.strings.emplace_back(std::move(step)), pou.name.range};
     p.range = pou.range;
     names.respell_block(*pou.body);
+    respell_members_in(*pou.body, instances, known, names, file.strings);
     p.action = std::move(*pou.body);
   }
   for (Step &s : pou.steps) {
@@ -408,6 +535,7 @@ bool lower(Pou &&pou, const std::optional<ast::Period> &period, ast::File &file,
     x.range = t.range;
     x.condition = std::move(t.condition);
     if (x.condition) names.respell(*x.condition);
+    if (x.condition) respell_members(*x.condition, instances, known, file.strings);
   }
   // An unnamed transition is T<position> in the chart language, which a PLC program may have
   // given to another one (`TRANSITION T1 FROM ...` third in the file): such a one is named
@@ -432,12 +560,9 @@ bool lower(Pou &&pou, const std::optional<ast::Period> &period, ast::File &file,
     d.name = a.name;
     d.range = a.range;
     names.respell_block(a.body);
+    respell_members_in(a.body, instances, known, names, file.strings);
     d.body = std::move(a.body);
   }
-  for (ast::Transition &t : c.transitions)
-    if (t.condition) action_flags(*t.condition, actions, diag);
-  for (ast::ActionDecl &a : c.actions) action_flags_in(a.body, actions, diag);
-  for (ast::Place &p : c.places) action_flags_in(p.action, actions, diag);
   for (ast::ValueDecl &v : c.values)
     if (v.init) action_flags(*v.init, actions, diag);
   if (period) {
@@ -457,15 +582,26 @@ bool lower(Pou &&pou, const std::optional<ast::Period> &period, ast::File &file,
   return true;
 }
 
+}  // namespace
+
 std::size_t lower(Project &&project, ast::File &file, Diagnostics &diag, std::optional<double> period_ms) {
   std::size_t added = 0;
+  KnownBlocks known;
+  for (const char *s : {"TON", "TOF", "TP", "R_TRIG", "F_TRIG", "SR", "RS", "CTU", "CTD", "CTUD"})
+    if (is_standard_block(s)) known.spelled.emplace(s, s);
+  for (const Pou &p : project.pous)
+    if (p.kind == PouKind::FunctionBlock) {
+      known.spelled[upper(p.name.text)] = std::string(p.name.text);
+      Spellings &m = known.members[upper(p.name.text)];
+      for (const Variable &v : p.variables) m.declare(v.name);
+    }
   for (Pou &p : project.pous) {
     std::optional<ast::Period> period;
     // --period wins: the tasks' INTERVALs, even disagreeing ones, are not asked. Its range is
     // the program's name, the place a diagnostic about the period can point at.
     if (p.kind == PouKind::Program)
       period = period_ms ? ast::Period{*period_ms, p.name.range} : period_of(project, p, diag);
-    if (lower(std::move(p), period, file, diag)) ++added;
+    if (lower_pou(std::move(p), period, file, diag, known)) ++added;
   }
   return added;
 }

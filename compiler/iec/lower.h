@@ -19,17 +19,10 @@ const char *chart_type(const std::string &iec);
 
 std::optional<ast::Period> period_of(const Project &project, const Pou &pou, Diagnostics &diag);
 
-/// Turns `pou` into an sfc of the chart language and appends it to `file.charts`: its variables
-/// (BOOL, DINT, REAL, LREAL as bool, int, float, double; every other type a located
-/// "not supported yet" error), steps, transitions (ordered by PRIORITY within their divergence),
-/// named actions and the period. Consumes the POU's expressions and statements. A FUNCTION_BLOCK
-/// or FUNCTION, or a POU whose body is not an SFC, is reported and adds nothing. Returns whether
-/// a chart was added.
-bool lower(Pou &&pou, const std::optional<ast::Period> &period, ast::File &file, Diagnostics &diag);
-
 /// Lowers every PROGRAM of `project` into `file` (each with the period of the task that runs
-/// it, or `period_ms` when given: --period, which wins over every task), and reports every other
-/// POU kind as not supported yet. Returns how many charts it added.
+/// it, or `period_ms` when given: --period, which wins over every task), every FUNCTION_BLOCK
+/// into a block of `file` (docs/iec.md "Function blocks"), and reports a FUNCTION as not
+/// supported yet. Returns how many charts it added.
 std::size_t lower(Project &&project, ast::File &file, Diagnostics &diag,
                   std::optional<double> period_ms = std::nullopt);
 

@@ -338,19 +338,27 @@ StParser::Node StParser::name_use() {
       return {std::move(e), 1};
     }
     if (is_keyword(member, "Q") || is_keyword(member, "A")) {
-      // An action's flag, if `t` is an action: the lowering knows the POU's actions, and makes it
-      // `active(t)` or `running(t)` or reports what else it is (lower.cc, action_flags).
+      // An action's flag, if `t` is an action, or an instance's output Q (A): the lowering knows
+      // the POU's actions and instances, and makes it `active(t)`, `running(t)` or `t.Q`, or
+      // reports what else it is (lower.cc, action_flags).
       auto e = make(ast::Expr::Kind::Call, range(t, member));
       e->name = {is_keyword(member, "Q") ? std::string_view(".Q") : std::string_view(".A"), range(member)};
       auto arg = make(ast::Expr::Kind::Name, range(t));
       arg->name = name(t);
       e->args.push_back(std::move(arg));
+      auto spelled = make(ast::Expr::Kind::Name, range(member));
+      spelled->name = name(member);  // the member as written, for `t.Q` of an instance
+      e->args.push_back(std::move(spelled));
       return {std::move(e), 1};
     }
-    not_supported(range(t, member),
-                  fmt::format("'{}.{}': members of structures and function-block instances are not supported yet",
-                              t.text, member.text));
-    return {};
+    // `inst.Q`: an output of a function-block instance (the validator says what else it is).
+    auto e = make(ast::Expr::Kind::Path, range(t, member));
+    for (const StToken *part : {&t, &member}) {
+      auto n = make(ast::Expr::Kind::Name, range(*part));
+      n->name = name(*part);
+      e->args.push_back(std::move(n));
+    }
+    return {std::move(e), 1};
   }
   if (tok().kind == StTok::LParen && is_keyword(t, "MOD")) {
     // The standard function MOD(a, b) is the operator `a MOD b`: C's `%` (docs/iec.md).

@@ -86,6 +86,8 @@ private:
 
   void statement(ast::Block &out);
   void if_statement(ast::Block &out);
+  /// `inst(IN := x, Q => y);`: an Invoke, then `y := inst.Q` for each output bound.
+  void block_call(ast::Block &out);
   void case_statement(ast::Block &out);
   void loop_statement(ast::Block &out);
   /// FOR's `i := a TO b BY s` as the header of a chart `for`; false when reported.
@@ -95,6 +97,8 @@ private:
   // st_reader.cc
   void pou(Project &project, PouKind kind, std::string_view end);
   void var_section(Pou &pou);
+  /// A FUNCTION_BLOCK's variables and ST body (an SFC body is not supported yet).
+  void function_block(Pou &pou, const StToken &start, std::string_view end);
   void declaration(Pou &pou, Section section, bool constant, std::string_view end);
   void step(Pou &pou, bool initial);
   void transition(Pou &pou);

@@ -75,6 +75,7 @@ void StParser::pou(Project &project, PouKind kind, std::string_view end) {
   p.kind = kind;
   p.name = name(tok());
   next();
+  if (kind == PouKind::FunctionBlock) return function_block(p, start, end);
   if (kind != PouKind::Program) {
     // Reported by the lowering at its name; its body is not read, so that nothing in it adds
     // errors of its own.
@@ -110,6 +111,38 @@ void StParser::pou(Project &project, PouKind kind, std::string_view end) {
       skip_statement();
     }
     if (pos_ == before) next();  // never loop on a token nothing consumed
+  }
+  p.range = range(start, tok());
+  if (at_end()) {
+    error(range(start), fmt::format("'{}' without its '{}'", start.text, end));
+    return;
+  }
+  next();
+}
+
+void StParser::function_block(Pou &p, const StToken &start, std::string_view end) {
+  while (!at_end() && !keyword(end)) {
+    resync();
+    const std::size_t before = pos_;
+    const StToken t = tok();
+    if (t.kind == StTok::Ident && upper(t.text).rfind("VAR", 0) == 0 && !is_keyword(t, "VAR_X")) {
+      var_section(p);
+    } else if (is_keyword(t, "INITIAL_STEP") || is_keyword(t, "STEP") || is_keyword(t, "TRANSITION") ||
+               is_keyword(t, "ACTION")) {
+      not_supported(range(t), fmt::format("function block '{}': a body that is not structured text (an SFC) is not "
+                                          "supported yet",
+                                          p.name.text));
+      while (!at_end() && !keyword(end)) next();
+    } else if (block_end()) {
+      error(range(t),
+            fmt::format("expected a statement of function block '{}' or '{}', not {}", p.name.text, end, quoted()));
+      next();
+    } else {
+      ast::Block b = statements();
+      if (!p.body) p.body.emplace();
+      for (ast::Stmt &s : b) p.body->push_back(std::move(s));
+    }
+    if (pos_ == before) next();
   }
   p.range = range(start, tok());
   if (at_end()) {

@@ -337,11 +337,29 @@ void StParser::statement(ast::Block &out) {
     s.value = std::move(value);
     return;
   }
-  if (after.kind == StTok::LParen)
-    not_supported(range(t), fmt::format("calling '{}' is not supported yet: gfec reads no functions or function "
-                                        "blocks in structured text",
-                                        t.text));
-  else if (after.kind == StTok::Dot || after.kind == StTok::LBracket || after.kind == StTok::Caret)
+  if (after.kind == StTok::LParen) return block_call(out);
+  if (after.kind == StTok::Dot && peek(2).kind == StTok::Ident && peek(3).kind == StTok::Assign) {
+    // `inst.IN := x;` sets an input of a function-block instance (the validator checks it is one).
+    const StToken member = peek(2);
+    next();
+    next();
+    next();
+    next();
+    ast::ExprPtr value = expression();
+    const StToken last = tok();
+    if (!value || !expect_semi("the assignment")) {
+      skip_statement();
+      return;
+    }
+    ast::Stmt &s = out.emplace_back();
+    s.kind = ast::Stmt::Kind::Assign;
+    s.assign_op = AssignOp::Set;
+    s.range = range(t, last);
+    s.target.emplace(ast::Name{strings().emplace_back(fmt::format("{}.{}", t.text, member.text)), range(t, member)});
+    s.value = std::move(value);
+    return;
+  }
+  if (after.kind == StTok::Dot || after.kind == StTok::LBracket || after.kind == StTok::Caret)
     not_supported(
         range(t, after),
         fmt::format("assigning a member, an element or through a pointer of '{}' is not supported yet", t.text));
@@ -351,6 +369,81 @@ void StParser::statement(ast::Block &out) {
     error(range(t), fmt::format("expected a statement, not {}", quoted()));
   else error(range(after), fmt::format("expected ':=' after '{}', not '{}'", t.text, after.text));
   skip_statement();
+}
+
+void StParser::block_call(ast::Block &out) {
+  const StToken inst = tok();
+  next();
+  next();  // the name and '('
+  ast::Stmt call;
+  call.kind = ast::Stmt::Kind::Invoke;
+  call.target.emplace(name(inst));
+  std::vector<ast::Stmt> outputs;  // `Q => v`: assignments `v := inst.Q` after the call
+  while (tok().kind != StTok::RParen) {
+    const StToken param = tok();
+    const StTok bind = peek().kind;
+    if (param.kind != StTok::Ident || (bind != StTok::Assign && bind != StTok::Arrow)) {
+      not_supported(range(param), fmt::format("a parameter that is not named ({}) in the call of '{}' is not "
+                                              "supported yet: write 'input := value' or 'output => variable'",
+                                              quoted(), inst.text));
+      skip_statement();
+      return;
+    }
+    next();
+    next();
+    if (bind == StTok::Assign) {
+      ast::ExprPtr value = expression();
+      if (!value) {
+        skip_statement();
+        return;
+      }
+      ast::Stmt a;
+      a.kind = ast::Stmt::Kind::Assign;
+      a.target.emplace(name(param));
+      a.range = {value->range.file, range(param).begin, value->range.end};
+      a.value = std::move(value);
+      call.then_block.push_back(std::move(a));
+    } else {
+      const StToken var = tok();
+      if (var.kind != StTok::Ident) {
+        error(range(var),
+              fmt::format("expected the variable that receives '{}' after '=>', not {}", param.text, quoted()));
+        skip_statement();
+        return;
+      }
+      next();
+      ast::Stmt &o = outputs.emplace_back();
+      o.kind = ast::Stmt::Kind::Assign;
+      o.target.emplace(name(var));
+      o.range = range(param, var);
+      auto path = std::make_unique<ast::Expr>();
+      path->kind = ast::Expr::Kind::Path;
+      path->range = range(param);
+      for (const StToken *part : {&inst, &param}) {
+        auto n = std::make_unique<ast::Expr>();
+        n->kind = ast::Expr::Kind::Name;
+        n->range = range(*part);
+        n->name = name(*part);
+        path->args.push_back(std::move(n));
+      }
+      o.value = std::move(path);
+    }
+    if (tok().kind == StTok::Comma) next();
+    else if (tok().kind != StTok::RParen) {
+      error(range(tok()), fmt::format("expected ',' or ')' in the call of '{}', not {}", inst.text, quoted()));
+      skip_statement();
+      return;
+    }
+  }
+  next();  // ')'
+  const StToken last = tok();
+  if (!expect_semi("the call")) {
+    skip_statement();
+    return;
+  }
+  call.range = range(inst, last);
+  out.push_back(std::move(call));
+  for (ast::Stmt &o : outputs) out.push_back(std::move(o));
 }
 
 void StParser::if_statement(ast::Block &out) {

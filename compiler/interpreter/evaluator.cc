@@ -151,6 +151,8 @@ Value evaluate(const Expr &e, Frame &f) {
       return Value::of_time(static_cast<std::int64_t>(f.timers.at(e.place())) *
                             static_cast<std::int64_t>(f.chart.period_ms));
     return Value::of_ticks(f.timers.at(e.place()));
+  case Expr::Kind::Now:  // the tick's number times the period: the first tick is at one period
+    return Value::of_time(static_cast<std::int64_t>(f.tick) * static_cast<std::int64_t>(f.chart.period_ms));
   case Expr::Kind::Call: return call(e, f);
   case Expr::Kind::Unary: return unary(e, f);
   case Expr::Kind::Binary: return binary(e, f);
@@ -254,6 +256,10 @@ Flow run_one(const model::Stmt &s, Frame &f) {
     if (f.log) f.log->add(EventKind::Note, f.depth, "note verbatim code is not run by the interpreter");
     break;
   case model::Stmt::Kind::If: return run(holds(s, f) ? s.then_block : s.else_block, f);
+  case model::Stmt::Kind::Invoke:
+    // The block's body, inlined: a `return` in it ends this call only.
+    run(s.then_block, f);
+    break;
   }
   return Flow::Next;
 }

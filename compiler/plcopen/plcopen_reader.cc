@@ -109,6 +109,10 @@ void Reader::read_pou(const pugi::xml_node &node, iec::Project &project) {
                             pou.name.text, text::printable(type)));
     return;
   }
+  if (pou.kind == iec::PouKind::FunctionBlock) {
+    read_function_block(node, pou, project);
+    return;
+  }
   if (pou.kind != iec::PouKind::Program) {  // the lowering reports it; its insides are not read
     project.pous.push_back(std::move(pou));
     return;
@@ -157,6 +161,35 @@ void Reader::read_pou(const pugi::xml_node &node, iec::Project &project) {
     return;
   }
   read_sfc(sfc, node, pou);
+  project.pous.push_back(std::move(pou));
+}
+
+void Reader::read_function_block(const pugi::xml_node &node, iec::Pou &pou, iec::Project &project) {
+  if (pugi::xml_node interface = child(node, "interface")) read_interface(interface, pou);
+  pugi::xml_node body = child(node, "body");
+  pugi::xml_node st = child(body, "ST");
+  // FBD and LD are read as the ST they mean (network_body.cc), as a program's are.
+  pugi::xml_node network = child(body, "FBD") ? child(body, "FBD") : child(body, "LD");
+  if (!st && network) {
+    pou.body = read_network(network);
+    if (pou.body) project.pous.push_back(std::move(pou));
+    return;
+  }
+  if (!st) {
+    pugi::xml_node what = body ? body : node;
+    for (pugi::xml_node c : body.children())
+      if (c.type() == pugi::node_element && local_name(c) != "documentation" && local_name(c) != "addData") {
+        what = c;
+        break;
+      }
+    not_supported(what, fmt::format("function block '{}': a body in {} is not supported yet; gfec reads ST, FBD and "
+                                    "LD bodies of function blocks",
+                                    pou.name.text, body ? text::printable(local_name(what)) : "none"));
+    return;
+  }
+  auto block = statements(xml_.text_below(st));
+  if (!block) return;
+  pou.body = std::move(block);
   project.pous.push_back(std::move(pou));
 }
 

@@ -33,6 +33,8 @@ private:
   // ---------------------------------------------------------- plcopen_reader.cc
   void read_pou(const pugi::xml_node &pou, iec::Project &project);
   void read_interface(const pugi::xml_node &interface, iec::Pou &pou);
+  /// A functionBlock POU with an ST body (docs/iec.md "Function blocks"); another body is reported.
+  void read_function_block(const pugi::xml_node &node, iec::Pou &pou, iec::Project &project);
   void read_variable(const pugi::xml_node &v, iec::Section section, bool constant, iec::Pou &pou);
   void read_actions(const pugi::xml_node &actions, iec::Pou &pou);
   void read_tasks(const pugi::xml_node &instances, iec::Project &project);

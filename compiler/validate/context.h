@@ -25,6 +25,14 @@ struct ConstSource {
   bool used = false;  ///< an expression, a plan argument or another constant reads it (-Wunused-const)
 };
 
+/// A block's declaration and how far its validation got (blocks are validated on first use,
+/// as an instance needs its block's vars).
+struct BlockSource {
+  enum class State { Pending, Busy, Done, Failed };
+  ast::BlockDecl *decl = nullptr;
+  State state = State::Pending;
+};
+
 struct Context {
   Context(ast::Program &p, const SourceManager &s, Diagnostics &d, model::Model &m)
       : program(p), sources(s), diag(d), model(m) {}
@@ -45,6 +53,9 @@ struct Context {
   Namespace plan_names;
   Namespace interfaces;
   Namespace toolboxes;
+  /// Blocks (docs/language.md "Blocks"): a type name in a `var` may name one.
+  Namespace blocks;
+  Table<model::BlockId, BlockSource> block_sources;
   /// ValidateOptions::name_uses: every namespace made while validating records into it.
   NameUses *uses = nullptr;
 

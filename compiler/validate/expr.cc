@@ -1,5 +1,6 @@
 #include "validate/expr.h"
 
+#include "validate/blocks.h"
 #include "validate/fold.h"
 #include "validate/suggest.h"
 #include "validate/types.h"
@@ -318,6 +319,36 @@ std::optional<model::Expr> lower_agent(const ast::Expr &e, ExprScope &s, bool st
   return make(K::Agent, Type::Int, e.range);
 }
 
+/// `now()`: the time of the tick (docs/language.md §15), for the timers of blocks. In a block the
+/// period is its holder's, asked for where the instance is declared.
+std::optional<model::Expr> lower_now(const ast::Expr &e, ExprScope &s, bool statement) {
+  if (!s.chart || s.constant) {
+    s.cx.diag.error(e.range, ErrorKind::NotConstant, "'now()' is read only in a chart or a block, not in a constant");
+    return std::nullopt;
+  }
+  if (!e.args.empty()) {
+    s.cx.diag.error(e.range, ErrorKind::ArgumentCount,
+                    fmt::format("'now' takes no arguments (have {})", e.args.size()));
+    return std::nullopt;
+  }
+  if (statement) {
+    s.cx.diag.error(e.range, ErrorKind::TypeMismatch, "'now()' as a statement has no effect");
+    return std::nullopt;
+  }
+  if (s.chart->index.valid()) {
+    require_period(s, e.range, "'now()'");
+    for (const auto &runs : s.cx.runs)
+      for (model::ChartId r : runs)
+        if (r == s.chart->index) {
+          s.cx.diag.error(e.range, ErrorKind::NotSupported,
+                          "'now()' in a sub-chart is not supported yet: read it in the chart that runs it");
+          return std::nullopt;
+        }
+  }
+  s.chart->out.clock = true;
+  return make(K::Now, Type::Time, e.range);
+}
+
 /// Checks the lowered arguments of a call of `f` against its prototype.
 bool check_arguments(const ast::Expr &call, const model::Function &f,
                      const std::vector<std::optional<model::Expr>> &args, Diagnostics &diag) {
@@ -529,6 +560,7 @@ bool constant_fits(const model::Expr &x, Type to, ExprScope &s) {
 
 std::optional<model::Stmt> lower_assign(const ast::Stmt &st, ExprScope &s) {
   Diagnostics &diag = s.cx.diag;
+  if (st.target && s.chart && st.target->text.find('.') != std::string_view::npos) return lower_member_assign(st, s);
   auto value = lower_expr(st.value.get(), s);  // first: its errors are independent of the target's
   if (!st.target || st.target->text.empty() || !s.chart) return std::nullopt;  // a recovered syntax error
   const ast::Name &target = *st.target;
@@ -676,9 +708,8 @@ std::optional<model::Expr> lower_expr(const ast::Expr *e, ExprScope &s) {
   case ast::Expr::Kind::Unary: return check_constant(lower_unary(*e, s), s.cx.model, s.cx.diag);
   case ast::Expr::Kind::Binary: return check_constant(lower_binary(*e, s), s.cx.model, s.cx.diag);
   case ast::Expr::Kind::Path:
-    // Only `active(...)` reads a path, and it reads its argument itself.
-    s.cx.diag.error(e->range, ErrorKind::Syntax, "a path to a sub-chart's place is only read through 'active(...)'");
-    return std::nullopt;
+    // `inst.q`: a block's output; `active(...)` reads a path to a place itself.
+    return lower_member(*e, s);
   case ast::Expr::Kind::Paren: {
     if (e->args.size() != 1) return std::nullopt;
     auto inner = lower_expr(e->args[0], s);
@@ -769,6 +800,7 @@ std::optional<model::Expr> lower_call(const ast::Expr &e, ExprScope &s, bool sta
   if (name.text == "succeeded" || name.text == "failed") return lower_outcome(e, s, statement);
   if (name.text == "team") return lower_team(e, s, statement);
   if (name.text == "agent") return lower_agent(e, s, statement);
+  if (name.text == "now") return lower_now(e, s, statement);
   if (misspelt_builtin(name, s)) return std::nullopt;
   std::vector<std::optional<model::Expr>> args;
   for (const auto &a : e.args) args.push_back(lower_expr(a, s));
@@ -953,8 +985,15 @@ std::vector<model::Stmt> lower_statements(ast::Stmt *first, ast::Stmt *last, Exp
     case ast::Stmt::Kind::If:
       if (auto m = lower_if(st, s)) out.push_back(std::move(*m));
       break;
+    case ast::Stmt::Kind::Invoke:
+      if (auto m = lower_invoke(st, s)) out.push_back(std::move(*m));
+      break;
     case ast::Stmt::Kind::Call:
       if (!st.call || st.call->kind != ast::Expr::Kind::Call) break;
+      if (names_instance(st.call->name, s)) {  // `inst();`
+        if (auto m = lower_invoke(st, s)) out.push_back(std::move(*m));
+        break;
+      }
       if (auto call = lower_call(*st.call, s, true)) {
         model::Stmt m;
         m.kind = model::Stmt::Kind::Call;
@@ -983,6 +1022,13 @@ std::vector<model::Stmt> lower_statements(ast::Stmt *first, ast::Stmt *last, Exp
 }
 
 }  // namespace
+
+bool assignable_value(model::Expr &value, Type to, ExprScope &s) {
+  if (!retype_constant(value, to, s)) return false;
+  if (!assignable(to, value.type)) return true;  // the caller reports the mismatch
+  if (to == Type::Time && !as_time(value, s)) return false;
+  return constant_fits(value, to, s);
+}
 
 std::vector<model::Stmt> lower_block(ast::Block &b, ExprScope &s) {
   return lower_statements(b.data(), b.data() + b.size(), s);

@@ -55,6 +55,11 @@ std::optional<model::Expr> lower_condition(const ast::Expr *e, ExprScope &s, con
 std::optional<model::Expr> lower_initializer(const ast::Expr *e, ExprScope &s, model::Type type,
                                              const std::string &name);
 
+/// `value` made what an assignment to a `to` makes it (a constant retyped to a sized integer, a
+/// duration to a time) and checked to fit; false after reporting why not. The caller checks that
+/// the types are assignable at all.
+bool assignable_value(model::Expr &value, model::Type to, ExprScope &s);
+
 /// Moves what it can (verbatim text) out of `b`: a block is released once lowered (validate.h).
 std::vector<model::Stmt> lower_block(ast::Block &b, ExprScope &s);
 

@@ -36,6 +36,8 @@ const char *describe(Sym kind) {
   case Sym::ConfigEntry: return "config entry";
   case Sym::Actor: return "actor";
   case Sym::Supervisor: return "supervisor";
+  case Sym::Block: return "block";
+  case Sym::Instance: return "block instance";
   }
   return "name";
 }

@@ -95,7 +95,8 @@ private:
 /// returns false; generated code names things after the user's names.
 /// The chart language's built-in functions (docs/language.md §1): no declaration may take their
 /// names, and a misspelt call is offered the nearest.
-inline constexpr std::string_view kBuiltinFunctions[] = {"elapsed", "active", "succeeded", "failed", "team", "agent"};
+inline constexpr std::string_view kBuiltinFunctions[] = {"elapsed", "active", "succeeded", "failed",
+                                                         "team",    "agent",  "now"};
 
 bool check_reserved(const ast::Name &name, Sym kind, Diagnostics &diag);
 

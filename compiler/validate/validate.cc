@@ -4,6 +4,7 @@
 
 #include "scenario/scenario.h"
 #include "scenario/validate_tests.h"
+#include "validate/blocks.h"
 #include "validate/families.h"
 
 #include <fmt/format.h>
@@ -64,10 +65,12 @@ model::Model validate(ast::Program &program, const SourceManager &sources, Diagn
   for (validation::Namespace *ns : {&cx.c_names, &cx.plan_names, &cx.interfaces, &cx.toolboxes}) ns->uses = cx.uses;
 
   validation::collect_symbols(cx);
+  validation::collect_blocks(cx);
   collect_verbatims(cx);
   validation::fold_file_consts(cx);
   validation::resolve_subcharts(cx);
   for (model::ChartId c : model.charts.ids()) validation::validate_chart(cx, c);
+  validation::validate_unused_blocks(cx);
   for (model::PlanId p : model.plans.ids()) validation::validate_plan(cx, p);
   validation::check_plan_recursion(cx);
   validation::check_shared_config(cx);

@@ -1,6 +1,7 @@
 // What sfc and fsm share (§4, §5, §7): the chart's namespace, its period, vars and constants,
 // place bodies and transition conditions. The rules of each kind follow in validate_sfc.cc and
 // validate_fsm.cc.
+#include "validate/blocks.h"
 #include "validate/families.h"
 #include "validate/fold.h"
 #include "validate/types.h"
@@ -110,6 +111,7 @@ void declare_place(Context &cx, ChartScope &s, const ast::Place &p, model::Place
 }
 
 void declare_value(Context &cx, ChartScope &s, const ast::ValueDecl &v) {
+  if (declare_instance(cx, s, v)) return;
   if (!v.is_const) {
     auto type = lower_type(v.type, kValue, "a variable", cx.diag);
     const model::VarRole role = v.role == ast::VarRole::In    ? model::VarRole::In
@@ -239,6 +241,7 @@ void lower_values(Context &cx, ChartScope &s) {
   for (const ast::ValueDecl &v : s.ast.values) {
     const Symbol *sym = s.names.find(v.name.text);
     if (!sym || sym->range.begin != v.name.range.begin) continue;  // a duplicate, already reported
+    if (sym->kind == Sym::Instance) continue;
     if (v.is_const) {
       fold_const(cx, sym->id<model::ConstId>());  // used or not, so each error is reported
       continue;

@@ -220,6 +220,27 @@ test('json: SD, DS and SL associations with their durations; DS times its place,
   assert.deepEqual(doc.places.map((p) => [p.name, p.timed]), [['Idle', false], ['Arm', false], ['Run', true]]);
 });
 
+test('json: block instances, the blocks they use and a call (docs/language.md §15)', () => {
+  const doc = emit(path.join(SOURCE_DIR, 'tests', 'blocks', 'standard.sfc'));
+  assert.deepEqual(doc.instances.map((i) => [i.name, i.block]), [
+    ['c', 'CTU'], ['r', 'R_TRIG'], ['latch', 'SR'], ['acc', 'Acc'], ['f', 'F_TRIG'], ['rs', 'RS'], ['cd', 'CTD'], ['ud', 'CTUD'],
+  ]);
+  const c = doc.instances[0];
+  assert.equal(doc.vars[c.first_var].name, 'c.CU');
+  const ctu = doc.blocks.find((b) => b.name === 'CTU');
+  assert.equal(ctu.standard, true);
+  assert.deepEqual(ctu.members.map((m) => [m.name, m.role || null]), [
+    ['CU', 'in'], ['R', 'in'], ['PV', 'in'], ['Q', 'out'], ['CV', 'out'],
+  ]);
+  assert.equal(doc.blocks.find((b) => b.name === 'Acc').standard, false);
+  const call = doc.places[0].action[0];
+  assert.equal(call.kind, 'invoke');
+  assert.equal(call.instance, 'c');
+  assert.deepEqual(call.args.map((a) => a.var), ['c.CU', 'c.R', 'c.PV']);
+  const timers = emit(path.join(SOURCE_DIR, 'tests', 'blocks', 'timers.sfc'));
+  assert.ok(timers.blocks.some((b) => b.name === 'TON' && b.members.some((m) => m.name === 'PT' && m.type === 'time')));
+});
+
 test('json: sized integers, time and conversions are typed nodes the schema knows', () => {
   const file = path.join(scratch(), 'types.sfc');
   fs.writeFileSync(file, 'sfc Types {\n  period 10ms;\n  in time Limit = 2s;\n  out uint16 n = 7;\n' +

@@ -75,6 +75,11 @@ diff -u "$dir/mixer.expected" st.txt || fail "mixer.st runs to other outputs tha
 "$gfec" run "$dir/st_mixer.xml" --inputs "$dir/../st/mixer.csv" --observable > st_mixer.txt ||
   fail "st_mixer.xml: gfec run fails"
 diff -u "$dir/../st/mixer.expected" st_mixer.txt || fail "st_mixer.xml runs to another log than tests/iec/st/mixer.st"
+# Function blocks (docs/iec.md "Function blocks"): tests/iec/st/blocks.st as PLCopen XML, a
+# functionBlock POU and <derived> instances, runs to that program's log.
+"$gfec" run "$dir/st_blocks.xml" --inputs "$dir/../st/blocks.csv" --observable > st_blocks.txt ||
+  fail "st_blocks.xml: gfec run fails"
+diff -u "$dir/../st/blocks.expected" st_blocks.txt || fail "st_blocks.xml runs to another log than tests/iec/st/blocks.st"
 
 # A generated project: program Big of 500 steps and 23 more SFC programs, read, checked, compiled
 # and built; its engine and the interpreter agree.
