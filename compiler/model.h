@@ -107,7 +107,7 @@ struct Expr {
     // the value of the latest action control (docs/iec.md "Action flags").
     ActionQ,  ///< `active(A)`: the action's Q (IEC's `A.Q`)
     ActionA,  ///< `running(A)`: the action's body runs (IEC's `A.A`: Q, its final run, an edge)
-    Now,        ///< `now()`: the time of this tick, its number times the period (docs/language.md §15). Type Time.
+    Now,      ///< `now()`: the time of this tick, its number times the period (docs/language.md §15). Type Time.
     /// A conversion `T(x)` (docs/language.md §4), args[0] = x, type T: between integer types
     /// and to and from `time` exact (a value that does not fit is an error), a floating value to
     /// an integer rounded to nearest, ties away from zero (IEC's REAL_TO_INT).
@@ -341,7 +341,7 @@ struct Chart {
   /// Some expression reads an action's flags (`active(A)`, `running(A)`): the action control
   /// then runs for every action before any body (docs/iec.md "Action flags").
   bool reads_action_flags = false;
-  bool clock = false;                 ///< `now()` is read (by the chart or a block it calls): the engine counts ticks
+  bool clock = false;  ///< `now()` is read (by the chart or a block it calls): the engine counts ticks
   SourceRange range;
   SourceRange name_range;  ///< the chart's name where it is declared
 };

@@ -243,7 +243,7 @@ bool same_value(const EngineContext &c, const Expr &x, const Expr &y) {
   case Expr::Kind::Agent: return true;  // the engine's own agent number, a field
   case Expr::Kind::ActionQ:
   case Expr::Kind::ActionA: return a.action() == b.action();
-  case Expr::Kind::Now: return true;    // one tick, one time
+  case Expr::Kind::Now: return true;  // one tick, one time
   case Expr::Kind::Elapsed: return a.place() == b.place();
   case Expr::Kind::Succeeded:
   case Expr::Kind::Failed: return a.place() == b.place();
