@@ -327,7 +327,7 @@ Outcome conversion(const Value &v, Type to) {
   }
   if (to == Type::Float || to == Type::Double) {
     if (is_floating(v.type)) return convert(v, to);
-    if (model::is_integer(v.type)) return ok(to_floating(v, to));
+    if (model::is_integer(v.type) || v.type == Type::Time) return ok(to_floating(v, to));
   }
   return fault(Fault::BadOperands);
 }

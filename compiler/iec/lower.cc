@@ -375,6 +375,7 @@ void lower_function_block(Pou &pou, ast::File &file, Diagnostics &diag, const Kn
     b.values.push_back(std::move(d));
   }
   if (pou.body) {
+    action_flags_in(*pou.body, {}, diag);  // a block has no actions: `x.Q` is an instance's output
     names.respell_block(*pou.body);
     respell_members_in(*pou.body, instances, known, names, file.strings);
     b.body = std::move(*pou.body);

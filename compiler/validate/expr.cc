@@ -770,9 +770,11 @@ std::optional<model::Expr> lower_conversion(const ast::Expr &e, Type to, ExprSco
   const Type from = x->type;
   const bool integer_from = model::is_integer(from), integer_to = model::is_integer(to);
   const bool floating_from = from == Type::Float || from == Type::Double;
+  // A time converts as its count of milliseconds, to and from floating values too (IEC's
+  // TIME_TO_REAL and REAL_TO_TIME, docs/iec.md "Reading structured text").
   const bool ok = (integer_to && (integer_from || floating_from || from == Type::Time)) ||
-                  (to == Type::Time && integer_from) ||
-                  ((to == Type::Float || to == Type::Double) && (integer_from || floating_from));
+                  (to == Type::Time && (integer_from || floating_from)) ||
+                  ((to == Type::Float || to == Type::Double) && (integer_from || floating_from || from == Type::Time));
   if (!ok) {
     s.cx.diag.error(e.range, ErrorKind::TypeMismatch,
                     fmt::format("cannot convert a value of type {} to {}", quoted(from), quoted(to)));
