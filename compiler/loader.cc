@@ -40,6 +40,18 @@ private:
 
   void load(const std::string &path, std::string text) {
     if (auto id = fs_.identity(path)) by_identity_.emplace(*id, path);
+    // An imported file of another input language (`import "mixer.st";`, an IEC program a test
+    // file runs) is read by that language's reader, into the same program: its charts are
+    // visible as an imported chart file's are (docs/testing-charts.md).
+    if (!stack_.empty()) {
+      const InputLanguage &language = input_language_of(path, text);
+      if (&language != &chart_text_language()) {
+        state_[path] = State::Loading;
+        language.read(path, std::move(text), options_, fs_, sources_, diag_, result_);
+        state_[path] = State::Done;
+        return;
+      }
+    }
     state_[path] = State::Loading;
     stack_.push_back(path);
     FileId id = sources_.add(path, std::move(text));

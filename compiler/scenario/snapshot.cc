@@ -182,10 +182,10 @@ bool same_arguments(const model::Function &f, const std::vector<std::string> &se
   for (std::size_t i = 0; i < seen.size(); ++i) {
     const model::Type t = f.params[i].type;
     const interp::Value a = parse_value(seen[i], t), b = parse_value(want[i], t);
-    const bool equal = t == Type::Bool                         ? a.b == b.b
-                       : t == Type::Int                        ? a.i == b.i
-                       : t == Type::Float || t == Type::Double ? a.f == b.f
-                                                               : seen[i] == want[i];
+    const bool equal = t == Type::Bool                           ? a.b == b.b
+                       : model::is_integer(t) || t == Type::Time ? a.i == b.i
+                       : t == Type::Float || t == Type::Double   ? a.f == b.f
+                                                                 : seen[i] == want[i];
     if (!equal) return false;
   }
   return true;
@@ -331,7 +331,14 @@ interp::Value parse_value(const std::string &text, model::Type t) {
   case Type::Int: return interp::Value::of_int(static_cast<std::int32_t>(std::strtol(text.c_str(), nullptr, 10)));
   case Type::Float: return interp::Value::of_float(std::strtof(text.c_str(), nullptr));
   case Type::Double: return interp::Value::of_double(std::strtod(text.c_str(), nullptr));
-  default: return interp::Value::zero(t);
+  case Type::Time:  // as the harness prints it: T#<ms>ms
+    return interp::Value::of_time(std::strtoll(text.c_str() + (text.rfind("T#", 0) == 0 ? 2 : 0), nullptr, 10));
+  default:
+    // The sized integers, whole: an unsigned 64-bit value keeps its bits.
+    if (model::is_unsigned(t))
+      return interp::Value::of_integer(t, static_cast<std::int64_t>(std::strtoull(text.c_str(), nullptr, 10)));
+    if (model::is_integer(t)) return interp::Value::of_integer(t, std::strtoll(text.c_str(), nullptr, 10));
+    return interp::Value::zero(t);
   }
 }
 

@@ -85,11 +85,18 @@ public:
       return {};
     }
     if (const Symbol *local = chart_.names.find(name.text)) {  // a variable, place...: not what `set` sets
-      cx_.diag
-          .error(
-              name.range, ErrorKind::TypeMismatch,
-              fmt::format("'{}' is {} of '{}', not a function", name.text, with_article(local->kind), chart_.out.name))
-          .note(local->range, fmt::format("'{}' declared here", name.text));
+      Diagnostic &d = cx_.diag
+                          .error(name.range, ErrorKind::TypeMismatch,
+                                 fmt::format("'{}' is {} of '{}', not a function", name.text, with_article(local->kind),
+                                             chart_.out.name))
+                          .note(local->range, fmt::format("'{}' declared here", name.text));
+      if (local->kind == Sym::Var) {
+        const auto v = local->id<model::VarId>();
+        if (v.index() < chart_.out.vars.size() && chart_.out.vars[v].role == model::VarRole::In)
+          d.note(fmt::format("'set' of a chart's input is not supported yet: in a test, '{}' keeps its initial "
+                             "value (docs/testing-charts.md)",
+                             name.text));
+      }
       return {};
     }
     report_unknown(cx_.diag, chart_.unknown, name, "function", cx_.c_names.of({Sym::Function}));

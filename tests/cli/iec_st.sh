@@ -63,4 +63,15 @@ grep -q '"address": "%QD0"' located.json || fail "located.st: --emit=json has no
 grep -q '^ *in bool Start;  // AT %IX0.0$' located.sfc || fail "located.st: --emit=chart: $(cat located.sfc)"
 # A byte-order mark and CR LF line ends, as Windows editors write them, read as any file.
 "$gfec" --check "$dir/../../fuzz/corpus_iec/bom_crlf.st" || fail "a file with a byte-order mark and CR LF"
+# gfec test against an imported IEC program (docs/testing-charts.md "Testing an IEC program"): a
+# test file imports the .st file; each test runs on the interpreter and on the C engine, which
+# must agree on the program's sized-integer and TIME outputs too. A wrong expectation fails.
+tests=$2/tests/iec/test
+"$gfec" test "$tests/blink.test" > test.txt 2> test.err || fail "blink.test: $(cat test.err)"
+grep -qx '3 passed, 0 failed' test.txt || fail "blink.test: $(cat test.txt)"
+status=0
+"$gfec" test "$tests/wrong.test" > wrong.txt 2> wrong.err || status=$?
+[[ $status == 1 ]] || fail "wrong.test: exit $status, not 1"
+grep -q "wrong.test:25:3: error: expectation failed: Cycles == 11 \[expectation\]" wrong.err || fail "wrong.test: $(cat wrong.err)"
+[[ $(grep -c 'error:' wrong.err) == 1 ]] || fail "wrong.test: more than the one wrong expectation fails: $(cat wrong.err)"
 echo "iec_st: ok"
