@@ -43,7 +43,8 @@ private:
     // An imported file of another input language (`import "mixer.st";`, an IEC program a test
     // file runs) is read by that language's reader, into the same program: its charts are
     // visible as an imported chart file's are (docs/testing-charts.md).
-    if (!stack_.empty()) {
+    // `-x LANG` says what every file is, imports included (as gcc's -x does).
+    if (!stack_.empty() && !options_.language) {
       const InputLanguage &language = input_language_of(path, text);
       if (&language != &chart_text_language()) {
         state_[path] = State::Loading;

@@ -373,7 +373,7 @@ sfc Top {
   CHECK(active_one.args[0]->kind == ast::Expr::Kind::Name);
 }
 
-TEST_CASE("parser: a path outside active() parses (a block's member); a path cut short is a syntax error") {
+TEST_CASE("parser: a path outside active() parses (a block's member), a path cut short is a syntax error") {
   // `a.b` reads output b of block instance a (docs/language.md "Blocks"): the validator says
   // what else a path is.
   CHECK(parse_errors("sfc S { initial place A; A -> A when elapsed(A.B) > 1s; }") == "");

@@ -679,7 +679,7 @@ invalid operands to binary '<' (have 'int' and 'bool')
 )--");
 }
 
-TEST_CASE("validate: sized integers mix only where one type holds the other; constants must fit", "[validate]") {
+TEST_CASE("validate: sized integers mix only where one type holds the other, constants must fit", "[validate]") {
   Validated r({{"t.sfc", R"--(import "bot.iface";
 sfc S {
   var int16 a = 1;
@@ -726,7 +726,7 @@ sfc S {
   CHECK(r.fe.diag.error_count() == 8);
 }
 
-TEST_CASE("validate: a time mixes only with times; durations are times where one is meant", "[validate]") {
+TEST_CASE("validate: a time mixes only with times, durations are times where one is meant", "[validate]") {
   Validated r({{"t.sfc", R"--(import "bot.iface";
 sfc S {
   period 10ms;
