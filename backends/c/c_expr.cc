@@ -995,6 +995,16 @@ void render_statements(const EngineContext &c, const std::vector<model::Stmt> &s
   }
 }
 
+/// Whether `block` holds a `return` that ends the block it is written in: a `return` in a block
+/// call's inlined body ends that call only, so it does not count here.
+template <typename Stmts> bool returns(const Stmts &block) {
+  for (const model::Stmt &s : block) {
+    if (s.kind == model::Stmt::Kind::Invoke) continue;
+    if (s.kind == model::Stmt::Kind::Return || returns(s.then_block) || returns(s.else_block)) return true;
+  }
+  return false;
+}
+
 /// Writes statements from `text`, consuming it from `at` in the order render_statements() filled it.
 class StatementWriter {
 public:
@@ -1012,7 +1022,16 @@ public:
         continue;
       }
       if (s.kind == model::Stmt::Kind::Invoke) {  // a block call: its body inlined, in line
+        // A `return` in the block's body ends this call: a label of its own after the body.
+        if (!returns(s.then_block)) {
+          list(s.then_block);
+          continue;
+        }
+        const std::string outer = done_, call_done = fmt::format("gfec_return_{}", w_.new_label());
+        done_ = call_done;
         list(s.then_block);
+        done_ = outer;
+        line(fmt::format("{}:;", call_done));
         continue;
       }
       point_at(s.range);
@@ -1148,23 +1167,11 @@ std::vector<std::string> c_statements(const EngineContext &c, const std::vector<
   return text;
 }
 
-namespace {
-
-bool returns(const HeapVector<model::Stmt> &block) {
-  for (const model::Stmt &s : block)
-    if (s.kind == model::Stmt::Kind::Return || returns(s.then_block) || returns(s.else_block)) return true;
-  return false;
-}
-
-}  // namespace
-
 void emit_statements(CodeWriter &w, const EngineContext &c, const std::vector<model::Stmt> &stmts,
                      const std::vector<std::string> &text) {
   // `return` ends the chart's block, not the engine function it is written into: a forward
   // `goto` to a label after the block's last statement, placed only where a `return` needs it.
-  bool any = false;
-  for (const model::Stmt &s : stmts)
-    any = any || s.kind == model::Stmt::Kind::Return || returns(s.then_block) || returns(s.else_block);
+  const bool any = returns(stmts);
   // Labels have a name space of their own in C: no variable or function can collide with it.
   const std::string done = any ? fmt::format("gfec_return_{}", w.new_label()) : std::string();
   StatementWriter(w, c, text).list(stmts, done);
