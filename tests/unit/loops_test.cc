@@ -175,7 +175,7 @@ TEST_CASE("loops: the interpreter stops a loop that runs away, at the loop") {
 
 TEST_CASE("loops: IEC FOR, WHILE, REPEAT, EXIT and RETURN read as the chart's loops", "[iec]") {
   std::deque<std::string> strings;
-  auto read = [&](const std::string &text, Diagnostics &diag) {
+  auto read = [&](std::string_view text, Diagnostics &diag) {
     return iec::parse_st_statements(text, iec::FragmentPlace::at(0, 0), strings, diag);
   };
   Diagnostics diag;
