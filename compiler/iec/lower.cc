@@ -437,10 +437,6 @@ bool lower_pou(Pou &&pou, const std::optional<ast::Period> &period, ast::File &f
   for (const Variable &v : pou.variables) variables.emplace(upper(v.name.text), &v);
   std::map<std::string, bool> actions;
   for (const Action &a : pou.actions) actions.emplace(upper(a.name.text), true);
-  std::set<std::string> names_taken;
-  for (const Variable &v : pou.variables) names_taken.insert(upper(v.name.text));
-  for (const Step &s : pou.steps) names_taken.insert(upper(s.name.text));
-  for (const Action &a : pou.actions) names_taken.insert(upper(a.name.text));
   std::map<std::string, std::string_view> boolean_actions;  ///< variable (upper case) -> its action
   std::vector<Action> generated;
   for (Step &s : pou.steps)
@@ -451,11 +447,11 @@ bool lower_pou(Pou &&pou, const std::optional<ast::Period> &period, ast::File &f
       auto [it, fresh] = boolean_actions.emplace(n, std::string_view());
       if (fresh) {
         std::string name = std::string(v->second->name.text) + "_Q";
-        while (names_taken.count(upper(name))) name += '_';
-        names_taken.insert(upper(name));
+        while (names.declared(name)) name += '_';
         it->second = file.strings.emplace_back(std::move(name));
         Action &a = generated.emplace_back();
         a.name = {it->second, as.action.range};
+        names.declare(a.name);
         a.range = as.action.range;
         ast::Stmt &st = a.body.emplace_back();
         st.kind = ast::Stmt::Kind::Assign;
@@ -474,10 +470,7 @@ bool lower_pou(Pou &&pou, const std::optional<ast::Period> &period, ast::File &f
       }
       as.action = {it->second, as.action.range};
     }
-  for (Action &a : generated) {
-    names.declare(a.name);
-    actions.emplace(upper(a.name.text), true);
-  }
+  for (Action &a : generated) actions.emplace(upper(a.name.text), true);
   pou.actions.insert(pou.actions.begin(), std::make_move_iterator(generated.begin()),
                      std::make_move_iterator(generated.end()));
   // `A.Q` and `A.A` are an action's flags or, `Q` of an instance, its output: told apart before

@@ -85,6 +85,8 @@ private:
   Node name_use();
 
   void statement(ast::Block &out);
+  /// `:= value;` once the target is read: an assignment to `target`, `first` its first token.
+  void assignment(ast::Block &out, const StToken &first, const ast::Name &target);
   void if_statement(ast::Block &out);
   /// `inst(IN := x, Q => y);`: an Invoke, then `y := inst.Q` for each output bound.
   void block_call(ast::Block &out);
@@ -99,6 +101,10 @@ private:
   void var_section(Pou &pou);
   /// A FUNCTION_BLOCK's variables and ST body (an SFC body is not supported yet).
   void function_block(Pou &pou, const StToken &start, std::string_view end);
+  /// `VAR_INPUT`, `VAR`, `VAR_OUTPUT` ...: a section of variables starts at `t`.
+  bool var_section_start(const StToken &t) const;
+  /// The POU's range, and its `END_...` read (or reported missing).
+  void close_pou(Pou &p, const StToken &start, std::string_view end);
   void declaration(Pou &pou, Section section, bool constant, std::string_view end);
   void step(Pou &pou, bool initial);
   void transition(Pou &pou);

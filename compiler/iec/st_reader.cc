@@ -62,6 +62,19 @@ void StParser::file(Project &project) {
   }
 }
 
+bool StParser::var_section_start(const StToken &t) const {
+  return t.kind == StTok::Ident && upper(t.text).rfind("VAR", 0) == 0 && !is_keyword(t, "VAR_X");
+}
+
+void StParser::close_pou(Pou &p, const StToken &start, std::string_view end) {
+  p.range = range(start, tok());
+  if (at_end()) {
+    error(range(start), fmt::format("'{}' without its '{}'", start.text, end));
+    return;
+  }
+  next();
+}
+
 void StParser::pou(Project &project, PouKind kind, std::string_view end) {
   const StToken start = tok();
   next();
@@ -89,7 +102,7 @@ void StParser::pou(Project &project, PouKind kind, std::string_view end) {
     resync();
     const std::size_t before = pos_;
     const StToken t = tok();
-    if (t.kind == StTok::Ident && upper(t.text).rfind("VAR", 0) == 0 && !is_keyword(t, "VAR_X")) {
+    if (var_section_start(t)) {
       var_section(p);
     } else if (is_keyword(t, "INITIAL_STEP") || is_keyword(t, "STEP")) {
       sfc = true;
@@ -112,12 +125,7 @@ void StParser::pou(Project &project, PouKind kind, std::string_view end) {
     }
     if (pos_ == before) next();  // never loop on a token nothing consumed
   }
-  p.range = range(start, tok());
-  if (at_end()) {
-    error(range(start), fmt::format("'{}' without its '{}'", start.text, end));
-    return;
-  }
-  next();
+  close_pou(p, start, end);
 }
 
 void StParser::function_block(Pou &p, const StToken &start, std::string_view end) {
@@ -125,7 +133,7 @@ void StParser::function_block(Pou &p, const StToken &start, std::string_view end
     resync();
     const std::size_t before = pos_;
     const StToken t = tok();
-    if (t.kind == StTok::Ident && upper(t.text).rfind("VAR", 0) == 0 && !is_keyword(t, "VAR_X")) {
+    if (var_section_start(t)) {
       var_section(p);
     } else if (is_keyword(t, "INITIAL_STEP") || is_keyword(t, "STEP") || is_keyword(t, "TRANSITION") ||
                is_keyword(t, "ACTION")) {
@@ -144,12 +152,7 @@ void StParser::function_block(Pou &p, const StToken &start, std::string_view end
     }
     if (pos_ == before) next();
   }
-  p.range = range(start, tok());
-  if (at_end()) {
-    error(range(start), fmt::format("'{}' without its '{}'", start.text, end));
-    return;
-  }
-  next();
+  close_pou(p, start, end);
 }
 
 // ------------------------------------------------------------------ variables

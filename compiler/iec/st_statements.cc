@@ -207,6 +207,21 @@ void StParser::loop_statement(ast::Block &out) {
   out.push_back(std::move(loop));
 }
 
+void StParser::assignment(ast::Block &out, const StToken &first, const ast::Name &target) {
+  ast::ExprPtr value = expression();
+  const StToken last = tok();
+  if (!value || !expect_semi("the assignment")) {
+    skip_statement();
+    return;
+  }
+  ast::Stmt &s = out.emplace_back();
+  s.kind = ast::Stmt::Kind::Assign;
+  s.assign_op = AssignOp::Set;
+  s.range = range(first, last);
+  s.target.emplace(target);
+  s.value = std::move(value);
+}
+
 bool StParser::block_end() const {
   if (at_end()) return true;
   if (tok().kind != StTok::Ident) return false;
@@ -319,23 +334,7 @@ void StParser::statement(ast::Block &out) {
   if (after.kind == StTok::Assign) {
     next();
     next();
-    ast::ExprPtr value = expression();
-    if (!value) {
-      skip_statement();
-      return;
-    }
-    const StToken last = tok();
-    if (!expect_semi("the assignment")) {
-      skip_statement();
-      return;
-    }
-    ast::Stmt &s = out.emplace_back();
-    s.kind = ast::Stmt::Kind::Assign;
-    s.assign_op = AssignOp::Set;
-    s.range = range(t, last);
-    s.target.emplace(name(t));
-    s.value = std::move(value);
-    return;
+    return assignment(out, t, name(t));
   }
   if (after.kind == StTok::LParen) return block_call(out);
   if (after.kind == StTok::Dot && peek(2).kind == StTok::Ident && peek(3).kind == StTok::Assign) {
@@ -345,19 +344,8 @@ void StParser::statement(ast::Block &out) {
     next();
     next();
     next();
-    ast::ExprPtr value = expression();
-    const StToken last = tok();
-    if (!value || !expect_semi("the assignment")) {
-      skip_statement();
-      return;
-    }
-    ast::Stmt &s = out.emplace_back();
-    s.kind = ast::Stmt::Kind::Assign;
-    s.assign_op = AssignOp::Set;
-    s.range = range(t, last);
-    s.target.emplace(ast::Name{strings().emplace_back(fmt::format("{}.{}", t.text, member.text)), range(t, member)});
-    s.value = std::move(value);
-    return;
+    return assignment(out, t,
+                      ast::Name{strings().emplace_back(fmt::format("{}.{}", t.text, member.text)), range(t, member)});
   }
   if (after.kind == StTok::Dot || after.kind == StTok::LBracket || after.kind == StTok::Caret)
     not_supported(

@@ -49,6 +49,15 @@ constexpr Operator kOperators[] = {
     {"LE", "<=", true, true},     {"NE", "<>", false, true},
 };
 
+/// Whether an expression's text is one name or literal (blanks round it aside), which needs no
+/// brackets where it is used.
+bool is_atom(std::string_view text) {
+  const std::size_t first = text.find_first_not_of(" \t\r\n");
+  if (first == std::string_view::npos) return false;
+  const std::size_t last = text.find_last_not_of(" \t\r\n");
+  return text.substr(first, last - first + 1).find_first_of("+-*/<>=&|:,()^ \t") == std::string_view::npos;
+}
+
 const Operator *operator_of(const std::string &type) {
   for (const Operator &o : kOperators)
     if (type == o.name) return &o;
@@ -201,9 +210,7 @@ private:
       if (e.blank()) return broken(n, fmt::format("{} has no expression", r_.describe(n)));
       const bool negated = attribute_true(n, k == "inVariable" ? "negated" : "negatedOut");
       // Brackets only round what is more than a name or a literal: the chart text stays readable.
-      const bool atom = e.text.find_first_not_of(" \t\r\n") != std::string::npos &&
-                        e.text.find_first_of("+-*/<>=&|:,()^ \t", e.text.find_first_not_of(" \t\r\n")) >
-                            e.text.find_last_not_of(" \t\r\n");
+      const bool atom = is_atom(e.text);
       if (negated) piece(out, "NOT ", n);
       if (!atom) piece(out, "(", n);
       append(out, e);
