@@ -124,14 +124,15 @@ struct Interface {
 };
 
 /// What a chart's `var` is to the chart's caller (docs/language.md §14): its own state, an input
-/// the caller sets before a tick (`in`), or an output the caller reads after one (`out`).
-enum class VarRole : std::uint8_t { Local, In, Out };
+/// the caller sets before a tick (`in`), an output the caller reads after one (`out`), or both: an
+/// input the chart may assign, which the caller sets before a tick and reads after it (`inout`).
+enum class VarRole : std::uint8_t { Local, In, Out, InOut };
 
 /// `const float CRUISE = 0.6;` (file level or in a chart) and `var int laps = 0;`, `in bool Start;`,
 /// `out int Count = 0;` (in a chart).
 struct ValueDecl {
   bool is_const = false;
-  VarRole role = VarRole::Local;  ///< not a const: var, in or out
+  VarRole role = VarRole::Local;  ///< not a const: var, in, out or inout
   TypeName type;
   Name name;
   ExprPtr init;  ///< may be null for `var`

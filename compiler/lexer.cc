@@ -44,6 +44,7 @@ const Keyword kKeywords[] = {
     {"config", Tok::KwConfig},
     {"in", Tok::KwIn},
     {"out", Tok::KwOut},
+    {"inout", Tok::KwInOut},
     {"entry", Tok::KwEntry},
     {"exit", Tok::KwExit},
     {"true", Tok::KwTrue},

@@ -226,8 +226,18 @@ struct Const {
 // ---------------------------------------------------------------- sfc and fsm
 
 /// What a var is to the chart's caller (docs/language.md §14): the chart's own state, an input the
-/// caller sets before a tick, or an output the caller reads after one.
-enum class VarRole : std::uint8_t { Local, In, Out };
+/// caller sets before a tick, an output the caller reads after one, or both (an input the chart
+/// may assign). The same order as ast::VarRole.
+enum class VarRole : std::uint8_t { Local, In, Out, InOut };
+
+/// The caller sets it before each tick: `in` and `inout`.
+inline bool set_by_caller(VarRole r) { return r == VarRole::In || r == VarRole::InOut; }
+/// The caller reads it after each tick: `out` and `inout`.
+inline bool read_by_caller(VarRole r) { return r == VarRole::Out || r == VarRole::InOut; }
+/// The keyword that declares it: `var`, `in`, `out`, `inout`.
+inline const char *role_keyword(VarRole r) {
+  return r == VarRole::In ? "in" : r == VarRole::Out ? "out" : r == VarRole::InOut ? "inout" : "var";
+}
 
 struct Var {
   std::string name;

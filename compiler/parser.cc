@@ -367,13 +367,16 @@ FunctionDecl Parser::function_decl() {
 }
 
 //G const_decl: 'const' type IDENT '=' expr ';'
-//G var_decl: ( 'var' | 'in' | 'out' ) type IDENT [ '=' expr ] ';'
+//G var_decl: ( 'var' | 'in' | 'out' | 'inout' ) type IDENT [ '=' expr ] ';'
 ValueDecl Parser::value_decl() {
   std::uint32_t begin = here();
   ValueDecl v;
   const Tok kw = take().kind;
   v.is_const = kw == Tok::KwConst;
-  v.role = kw == Tok::KwIn ? VarRole::In : kw == Tok::KwOut ? VarRole::Out : VarRole::Local;
+  v.role = kw == Tok::KwIn      ? VarRole::In
+           : kw == Tok::KwOut   ? VarRole::Out
+           : kw == Tok::KwInOut ? VarRole::InOut
+                                : VarRole::Local;
   v.type = type_name();
   v.name = name();
   if (v.is_const) {
@@ -422,6 +425,7 @@ void Parser::chart_item(Chart &c) {
   case Tok::KwTeam: team_decl(c); return;
   case Tok::KwIn:
   case Tok::KwOut:
+  case Tok::KwInOut:
   case Tok::KwVar:
   case Tok::KwConst: c.values.push_back(value_decl()); return;
   case Tok::KwInitial:

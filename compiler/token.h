@@ -14,7 +14,7 @@ enum class Tok {
   // keywords
   KwSfc, KwFsm, KwPlan, KwToolbox, KwInterface, KwImport, KwVar, KwConst, KwInitial, KwPlace,
   KwState, KwTransition, KwWhen, KwSuccess, KwFailure, KwPost, KwPeriod, KwActor, KwComputation,
-  KwSupervisor, KwSupervise, KwEvents, KwStart, KwTerminate, KwIgnore, KwConfig, KwIn, KwOut,
+  KwSupervisor, KwSupervise, KwEvents, KwStart, KwTerminate, KwIgnore, KwConfig, KwIn, KwOut, KwInOut,
   KwEntry, KwExit, KwTrue, KwFalse, KwRuns, KwTest,
   KwIf, KwElse, KwWhile, KwDo, KwFor, KwBreak, KwReturn,  // statements (§10)
   KwTeam,  // team machines (§11)

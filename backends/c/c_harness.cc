@@ -340,7 +340,7 @@ std::string observable(const model::Chart &c, const Names &fields) {
             .string(fmt::format("{0}_status(m) == 0 ? \"running\" : {0}_status(m) > 0 ? \"succeeded\" : \"failed\"", t))
             .end();
   for (model::VarId i : c.vars.ids())
-    if (c.vars[i].role == model::VarRole::Out)
+    if (model::read_by_caller(c.vars[i].role))
       s += Line("    ")
                .text(fmt::format("out {} = ", c.vars[i].name))
                .value(c.vars[i].type, "m->" + fields.var_field[i])
@@ -354,7 +354,7 @@ std::string input_var_tables(const model::Chart &c, const HarnessOptions &o) {
   const std::uint64_t ticks = std::max<std::uint64_t>(o.table.ticks, 1);
   for (model::VarId id : c.vars.ids()) {
     const model::Var &v = c.vars[id];
-    if (v.role != model::VarRole::In) continue;
+    if (!model::set_by_caller(v.role)) continue;
     std::string values, given;
     for (std::uint64_t t = 1; t <= ticks; ++t) {
       std::optional<interp::Value> x;
@@ -374,7 +374,7 @@ std::string set_input_vars(const model::Chart &c, const Names &fields, const Har
   std::string s;
   if (o.inputs != HarnessInputs::Table) return s;
   for (model::VarId id : c.vars.ids())
-    if (c.vars[id].role == model::VarRole::In)
+    if (model::set_by_caller(c.vars[id].role))
       s += fmt::format("        if (@H@var{0}_set[@H@tick_count - 1] != 0u) {{\n"
                        "            {1}[a].{2} = @H@var{0}[@H@tick_count - 1];\n        }}\n",
                        id.index(), kEngines, fields.var_field[id]);

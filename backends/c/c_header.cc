@@ -141,6 +141,8 @@ void state_struct(CodeWriter &w, const EngineContext &c) {
     std::string what = var.role == model::VarRole::In ? fmt::format("in {}: the caller sets it before a tick", var.name)
                        : var.role == model::VarRole::Out
                            ? fmt::format("out {}: the caller reads it after a tick", var.name)
+                       : var.role == model::VarRole::InOut
+                           ? fmt::format("inout {}: the caller sets it before a tick and reads it after", var.name)
                            : fmt::format("var {}", var.name);
     if (var.type == model::Type::Time) what += " (a time: milliseconds)";
     rows.emplace_back(fmt::format("{} {};", c_type(var.type), c.var_field[v]), std::move(what));

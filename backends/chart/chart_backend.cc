@@ -127,11 +127,7 @@ void vars(CodeWriter &w, const model::Model &m, model::ChartId index) {
       continue;
     }
     const model::Var &x = c.vars[v];
-    value(w, m, index,
-          x.role == model::VarRole::In    ? "in"
-          : x.role == model::VarRole::Out ? "out"
-                                          : "var",
-          x.type, x.name, x.init ? &*x.init : nullptr, x.address);
+    value(w, m, index, model::role_keyword(x.role), x.type, x.name, x.init ? &*x.init : nullptr, x.address);
   }
 }
 

@@ -111,7 +111,7 @@ void chart_fields(const model::Model &m, const model::Chart &c, Json &doc) {
               {"init", v.init ? expression(m, scope, *v.init) : Json(nullptr)},
               {"location", location(m, v.range)}};
     // Only inputs and outputs carry a role (docs/model-json.md): a chart's own var has none.
-    if (v.role != model::VarRole::Local) j["role"] = v.role == model::VarRole::In ? "in" : "out";
+    if (v.role != model::VarRole::Local) j["role"] = model::role_keyword(v.role);
     if (!v.address.empty()) j["address"] = v.address;
     vars.push_back(std::move(j));
   }
@@ -138,7 +138,7 @@ void chart_fields(const model::Model &m, const model::Chart &c, Json &doc) {
       for (const model::Var &v : b.vars) {
         if (v.name.find('.') != std::string::npos) continue;  // a member of an inner instance
         Json j = {{"name", v.name}, {"type", model::type_name(v.type)}};
-        if (v.role != model::VarRole::Local) j["role"] = v.role == model::VarRole::In ? "in" : "out";
+        if (v.role != model::VarRole::Local) j["role"] = model::role_keyword(v.role);
         members.push_back(std::move(j));
       }
       blocks.push_back({{"name", b.name},

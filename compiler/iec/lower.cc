@@ -165,6 +165,27 @@ template <typename Stmts> void respell_members_in(Stmts &block, const Instances 
   }
 }
 
+/// IEC writes a BOOL's values 0 and 1 too (`Q := 0;`, as MatIEC's library does): an integer
+/// literal 0 or 1 becomes FALSE or TRUE where it is a BOOL's initial value or is assigned to a
+/// BOOL variable of the POU. Anywhere else an integer stays one, and the validator says so.
+void bool_literal(const std::string &type, ast::ExprPtr &value) {
+  if (upper(type) == "BOOL" && value && value->kind == ast::Expr::Kind::Int &&
+      (value->text() == "0" || value->text() == "1")) {
+    value->bool_value = value->text() == "1";
+    value->kind = ast::Expr::Kind::Bool;
+  }
+}
+
+template <typename Stmts> void bool_literals_in(Stmts &block, const std::vector<Variable> &vars) {
+  for (ast::Stmt &s : block) {
+    if (s.kind == ast::Stmt::Kind::Assign && s.target && s.assign_op == AssignOp::Set)
+      for (const Variable &v : vars)
+        if (upper(v.name.text) == upper(s.target->text)) bool_literal(std::string(v.type.text), s.value);
+    bool_literals_in(s.then_block, vars);
+    bool_literals_in(s.else_block, vars);
+  }
+}
+
 ast::ValueDecl lower_variable(Variable &v, Diagnostics &diag, const KnownBlocks *known = nullptr) {
   ast::ValueDecl d;
   d.role = v.section == Section::Input    ? ast::VarRole::In
@@ -199,13 +220,29 @@ ast::ValueDecl lower_variable(Variable &v, Diagnostics &diag, const KnownBlocks 
   }
   if (v.located) located_role(v, d, diag);
   d.init = std::move(v.init);
-  // IEC's BOOL literals include 0 and 1 (`Lamp AT %QX0.0 : BOOL := 1;`, as MatIEC's tests write).
-  if (t == "BOOL" && d.init && d.init->kind == ast::Expr::Kind::Int &&
-      (d.init->text() == "0" || d.init->text() == "1")) {
-    d.init->bool_value = d.init->text() == "1";
-    d.init->kind = ast::Expr::Kind::Bool;
-  }
+  bool_literal(t, d.init);  // `Lamp AT %QX0.0 : BOOL := 1;`, as MatIEC's tests write
   return d;
+}
+
+/// The names a block of statements assigns (as respelled: as declared).
+template <typename Stmts> void assigned_names(const Stmts &block, std::set<std::string_view> &out) {
+  for (const ast::Stmt &s : block) {
+    if (s.kind == ast::Stmt::Kind::Assign && s.target) out.insert(s.target->text);
+    assigned_names(s.then_block, out);
+    assigned_names(s.else_block, out);
+  }
+}
+
+/// A %I variable that the program assigns is an `inout` of the chart: the caller sets it before
+/// each scan, as the PLC's input image is refreshed, and what the program writes holds until then
+/// (docs/iec.md "Located variables"). MatIEC and OpenPLC run such programs; a VAR_INPUT stays
+/// read-only, as the standard has it.
+void written_inputs(ast::Chart &c) {
+  std::set<std::string_view> assigned;
+  for (const ast::ActionDecl &a : c.actions) assigned_names(a.body, assigned);
+  for (const ast::Place &p : c.places) assigned_names(p.action, assigned);
+  for (ast::ValueDecl &v : c.values)
+    if (v.role == ast::VarRole::In && !v.address.empty() && assigned.count(v.name.text)) v.role = ast::VarRole::InOut;
 }
 
 /// `A.Q` and `A.A` as the ST parser left them (calls named ".Q", ".A"): of an action, its flags
@@ -375,6 +412,7 @@ void lower_function_block(Pou &pou, ast::File &file, Diagnostics &diag, const Kn
     b.values.push_back(std::move(d));
   }
   if (pou.body) {
+    bool_literals_in(*pou.body, pou.variables);
     action_flags_in(*pou.body, {}, diag);  // a block has no actions: `x.Q` is an instance's output
     names.respell_block(*pou.body);
     respell_members_in(*pou.body, instances, known, names, file.strings);
@@ -477,8 +515,14 @@ bool lower_pou(Pou &&pou, const std::optional<ast::Period> &period, ast::File &f
   // the members of instances are respelled.
   for (Transition &t : pou.transitions)
     if (t.condition) action_flags(*t.condition, actions, diag);
-  for (Action &a : pou.actions) action_flags_in(a.body, actions, diag);
-  if (pou.body) action_flags_in(*pou.body, actions, diag);
+  for (Action &a : pou.actions) {
+    bool_literals_in(a.body, pou.variables);
+    action_flags_in(a.body, actions, diag);
+  }
+  if (pou.body) {
+    bool_literals_in(*pou.body, pou.variables);
+    action_flags_in(*pou.body, actions, diag);
+  }
   if (pou.body) {
     // A body of statements: one initial step that is never left runs them every scan, as the
     // place block of step 4 of a tick (docs/iec.md "Programs without an SFC"). The step is
@@ -559,6 +603,7 @@ bool lower_pou(Pou &&pou, const std::optional<ast::Period> &period, ast::File &f
   }
   for (ast::ValueDecl &v : c.values)
     if (v.init) action_flags(*v.init, actions, diag);
+  written_inputs(c);
   if (period) {
     for (ast::Transition &t : c.transitions)
       if (t.condition) exact_step_times(*t.condition, period->ms);

@@ -64,6 +64,15 @@ private:
         skip_comment(i_, "*/", "a comment '/*' that is never closed");
       } else if (c == '/' && at(i_ + 1) == '/') {
         while (i_ < t_.size() && t_[i_] != '\n') ++i_;
+      } else if (c == '{' && at(i_ + 1) == '{') {
+        // Beremiz's inline C, `{{ code }}`: run as written by Beremiz's runtime, which gfec's
+        // engine cannot, so reported rather than skipped as a pragma is.
+        const std::size_t start = i_;
+        skip_comment(i_, "}}", "inline C code '{{' that is never closed");
+        diag_.error(place_.range(static_cast<std::uint32_t>(start), static_cast<std::uint32_t>(start + 2)),
+                    ErrorKind::NotSupported,
+                    "inline C code ('{{ ... }}', a Beremiz extension) is not supported: gfec compiles the "
+                    "program's IEC text");
       } else if (c == '{') {
         skip_comment(i_, "}", "a pragma '{' that is never closed");
       } else {

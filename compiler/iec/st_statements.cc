@@ -138,6 +138,19 @@ bool StParser::for_header(ast::Stmt &loop, const StToken &start) {
   return true;
 }
 
+namespace {
+
+/// The IL operators that begin a line of an Instruction List body (`LD x`, `ST y`, `CAL t`): a
+/// body so written is IL, not a malformed ST assignment.
+bool il_operator(const StToken &t) {
+  for (const char *op : {"LD", "LDN", "ST", "STN", "CAL", "CALC", "CALCN", "JMP", "JMPC", "JMPCN", "ANDN", "ORN",
+                         "XORN", "ADD", "SUB", "MUL", "DIV", "RET"})
+    if (is_keyword(t, op)) return true;
+  return false;
+}
+
+}  // namespace
+
 void StParser::loop_statement(ast::Block &out) {
   const StToken start = tok();
   const std::string_view kind = is_keyword(start, "FOR") ? "FOR" : is_keyword(start, "WHILE") ? "WHILE" : "REPEAT";
@@ -355,6 +368,11 @@ void StParser::statement(ast::Block &out) {
     error(range(after), fmt::format("'=' compares; an ST assignment is '{} := ...;'", t.text)).fix(range(after), ":=");
   else if (after.kind == StTok::Colon && (is_keyword(t, "ACTION") || is_keyword(t, "STEP")))
     error(range(t), fmt::format("expected a statement, not {}", quoted()));
+  else if (il_operator(t) && (after.kind == StTok::Ident || after.kind == StTok::Int || after.kind == StTok::Real ||
+                              after.kind == StTok::Time || after.kind == StTok::Direct))
+    not_supported(range(t, after), fmt::format("'{} {}' is Instruction List (IL): an IL body is not supported yet; "
+                                               "gfec reads ST, FBD, LD and SFC",
+                                               t.text, after.text));
   else error(range(after), fmt::format("expected ':=' after '{}', not '{}'", t.text, after.text));
   skip_statement();
 }
@@ -370,16 +388,25 @@ void StParser::block_call(ast::Block &out) {
   while (tok().kind != StTok::RParen) {
     const StToken param = tok();
     const StTok bind = peek().kind;
-    if (param.kind != StTok::Ident || (bind != StTok::Assign && bind != StTok::Arrow)) {
-      not_supported(range(param), fmt::format("a parameter that is not named ({}) in the call of '{}' is not "
-                                              "supported yet: write 'input := value' or 'output => variable'",
-                                              quoted(), inst.text));
-      skip_statement();
-      return;
+    const bool formal = param.kind == StTok::Ident && (bind == StTok::Assign || bind == StTok::Arrow);
+    if (formal) {
+      next();
+      next();
     }
-    next();
-    next();
-    if (bind == StTok::Assign) {
+    if (!formal) {
+      // A non-formal argument (`CU_T(CU);`): an Assign without a target, bound by the validator
+      // to the block's inputs in declaration order (docs/iec.md "Function blocks").
+      ast::ExprPtr value = expression();
+      if (!value) {
+        skip_statement();
+        return;
+      }
+      ast::Stmt a;
+      a.kind = ast::Stmt::Kind::Assign;
+      a.range = value->range;
+      a.value = std::move(value);
+      call.then_block.push_back(std::move(a));
+    } else if (bind == StTok::Assign) {
       ast::ExprPtr value = expression();
       if (!value) {
         skip_statement();

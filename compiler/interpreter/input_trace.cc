@@ -153,7 +153,7 @@ InputTrace::InputTrace(const model::Model &model, const SourceManager &sources, 
           const model::Var *input = nullptr;
           for (const model::Chart &c : model.charts)
             for (const model::Var &v : c.vars)
-              if (!input && v.role == model::VarRole::In && v.name == name) input = &v;
+              if (!input && model::set_by_caller(v.role) && v.name == name) input = &v;
           if (input) {
             for (const Column &c : columns_)
               if (c.kind == Column::Kind::Input && c.input->name == name)

@@ -109,7 +109,7 @@ void Machine::run(Environment &env, EventLog *log) {
   if (log) log->add(EventKind::Tick, 0, fmt::format("tick {}", tick_));
   // docs/iec.md "The scan": the caller sets the inputs before the tick.
   for (model::VarId v : chart_.vars.ids())
-    if (chart_.vars[v].role == model::VarRole::In)
+    if (model::set_by_caller(chart_.vars[v].role))
       if (std::optional<Value> value = env.input(chart_.vars[v], tick_)) vars_[v] = *value;
   Frame f = frame(&env, log, tick_);
   step(f);
@@ -406,7 +406,7 @@ void Machine::end_of_tick(Frame &f) {
   }
   // docs/iec.md "`gfec run` on a program": what the caller reads after the tick.
   for (model::VarId v : chart_.vars.ids())
-    if (chart_.vars[v].role == model::VarRole::Out)
+    if (model::read_by_caller(chart_.vars[v].role))
       f.log->add(EventKind::Output, 1, fmt::format("out {} = {}", chart_.vars[v].name, format_value(vars_[v])));
 }
 

@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <set>
 
 namespace gfec::validation {
@@ -40,9 +41,7 @@ bool ensure_block(Context &cx, model::BlockId id, SourceRange used_at);
 void declare_member(Context &cx, ChartScope &s, const ast::ValueDecl &v) {
   if (v.is_const) return;  // the parser refuses constants in a block
   auto type = lower_type(v.type, kValue, "a variable", cx.diag);
-  const model::VarRole role = v.role == ast::VarRole::In    ? model::VarRole::In
-                              : v.role == ast::VarRole::Out ? model::VarRole::Out
-                                                            : model::VarRole::Local;
+  const auto role = static_cast<model::VarRole>(v.role);
   model::VarId index;
   if (type) {
     index = s.out.vars.next_id();
@@ -226,7 +225,7 @@ bool declare_instance(Context &cx, ChartScope &s, const ast::ValueDecl &v) {
   if (v.role != ast::VarRole::Local)
     cx.diag.error(v.range, ErrorKind::ChartIo,
                   fmt::format("block instance '{}' is declared 'var', not '{}'", v.name.text,
-                              v.role == ast::VarRole::In ? "in" : "out"));
+                              model::role_keyword(static_cast<model::VarRole>(v.role))));
   if (v.init)
     cx.diag.error(v.init->range, ErrorKind::TypeMismatch,
                   fmt::format("block instance '{}' takes no initial value: its members start as block '{}' says",
@@ -332,12 +331,39 @@ std::optional<model::Stmt> lower_invoke(const ast::Stmt &st, ExprScope &s) {
   std::vector<model::Stmt> args;
   std::set<std::string_view> given;
   bool ok = inst != nullptr;
+  // An IEC non-formal call (`CU_T(CU);`, read from structured text only) binds its arguments to
+  // the block's inputs in declaration order, and may not mix with named ones.
+  std::vector<const model::Var *> inputs;
+  if (inst)
+    for (const model::Var &v : s.cx.model.blocks[inst->block].vars)
+      if (v.role == model::VarRole::In) inputs.push_back(&v);
+  std::size_t positional = 0;
+  const bool mixed =
+      std::any_of(st.then_block.begin(), st.then_block.end(),
+                  [](const ast::Stmt &a) { return a.target.has_value(); }) &&
+      std::any_of(st.then_block.begin(), st.then_block.end(), [](const ast::Stmt &a) { return !a.target; });
   for (const ast::Stmt &a : st.then_block) {
     if (!inst) {
       lower_expr(a.value.get(), s);
       continue;
     }
-    const ast::Name &member = *a.target;
+    if (!a.target && (mixed || positional == inputs.size())) {
+      const model::Block &b = s.cx.model.blocks[inst->block];
+      if (mixed)
+        s.cx.diag.error(a.range, ErrorKind::TypeMismatch,
+                        fmt::format("the call of '{}' names some arguments and not others: name them all "
+                                    "('input := value')",
+                                    name.text));
+      else
+        s.cx.diag
+            .error(a.range, ErrorKind::TypeMismatch,
+                   fmt::format("too many arguments in the call of '{}': block '{}' has {} input{}", name.text, b.name,
+                               inputs.size(), inputs.size() == 1 ? "" : "s"))
+            .note(b.name_range, fmt::format("block '{}' declared here", b.name));
+      ok = false;
+      break;
+    }
+    const ast::Name member = a.target ? *a.target : ast::Name{inputs[positional++]->name, a.range};
     if (!given.insert(member.text).second) {
       s.cx.diag.error(member.range, ErrorKind::DuplicateName, fmt::format("input '{}' given twice", member.text));
       ok = false;

@@ -578,16 +578,13 @@ std::optional<model::Stmt> lower_assign(const ast::Stmt &st, ExprScope &s) {
   }
   if (sym->index < 0) return std::nullopt;
   const model::Var &var = s.chart->out.vars[sym->id<model::VarId>()];
-  if (var.role == model::VarRole::In) {
+  if (var.role == model::VarRole::In) {  // an `inout` may be assigned: that is what it is for
     auto &d = diag.error(
         target.range, ErrorKind::NotAssignable,
         fmt::format("cannot assign to input '{}': the chart's caller sets it before each tick", target.text));
-    // An IEC located variable is an input by its address, not by a keyword the user wrote.
-    if (!var.address.empty())
-      d.note(var.range, fmt::format("'{}' is located at {}, an input of the program; locate it at %M or %Q to "
-                                    "assign it",
-                                    target.text, var.address));
-    else d.note(var.range, fmt::format("'{}' declared 'in' here; declare it 'var' or 'out' to assign it", target.text));
+    // (An IEC program's %I variable that it assigns is lowered to an `inout`, never seen here.)
+    d.note(var.range,
+           fmt::format("'{}' declared 'in' here; declare it 'var', 'out' or 'inout' to assign it", target.text));
     return std::nullopt;
   }
   Type type = var.type;

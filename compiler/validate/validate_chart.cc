@@ -114,15 +114,13 @@ void declare_value(Context &cx, ChartScope &s, const ast::ValueDecl &v) {
   if (declare_instance(cx, s, v)) return;
   if (!v.is_const) {
     auto type = lower_type(v.type, kValue, "a variable", cx.diag);
-    const model::VarRole role = v.role == ast::VarRole::In    ? model::VarRole::In
-                                : v.role == ast::VarRole::Out ? model::VarRole::Out
-                                                              : model::VarRole::Local;
+    const auto role = static_cast<model::VarRole>(v.role);
     // An fsm's caller steers it through sensing functions and reads its state; inputs and
     // outputs are an IEC program's, and an sfc's (docs/language.md §14).
     if (role != model::VarRole::Local && s.is_fsm())
       cx.diag.error(v.range, ErrorKind::ChartIo,
-                    fmt::format("'{}' declares an {} variable in an fsm; only an sfc has inputs and outputs",
-                                v.name.text, role == model::VarRole::In ? "'in'" : "'out'"));
+                    fmt::format("'{}' declares an '{}' variable in an fsm; only an sfc has inputs and outputs",
+                                v.name.text, model::role_keyword(role)));
     model::VarId index;
     if (type) {
       index = s.out.vars.next_id();

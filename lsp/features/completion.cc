@@ -135,7 +135,8 @@ CompletionContext classify(const Where &w) {
   const Scope scope = w.frames.empty() ? Scope::Other : w.frames.back().scope;
   const Tok last = s.empty() ? Tok::End : s.back()->kind;
   if (in_place_call(s)) return CompletionContext::PlaceList;
-  if (last == Tok::KwVar || last == Tok::KwConst || last == Tok::KwIn || last == Tok::KwOut || last == Tok::KwConfig)
+  if (last == Tok::KwVar || last == Tok::KwConst || last == Tok::KwIn || last == Tok::KwOut || last == Tok::KwInOut ||
+      last == Tok::KwConfig)
     return CompletionContext::Types;
   if (last == Tok::KwRuns) return CompletionContext::Charts;
   if (w.frames.empty()) return s.empty() ? CompletionContext::TopLevel : CompletionContext::None;

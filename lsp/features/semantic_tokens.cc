@@ -159,7 +159,7 @@ private:
       else if (before == Tok::Ident && is_type_word(t_[i - 1].text) &&
                (kind(i + 1) == Tok::Comma || kind(i + 1) == Tok::RParen))
         decl = NameClass{Parameter};
-      else if ((before == Tok::KwIn || before == Tok::KwOut)) decl = NameClass{TypeName};
+      else if ((before == Tok::KwIn || before == Tok::KwOut || before == Tok::KwInOut)) decl = NameClass{TypeName};
       if (decl && decl->type != TypeName) {
         if (declare) names_.names.emplace(std::make_pair(scope, tok.text), *decl);
         emit(decl->type, decl->modifiers | Declaration);

@@ -14,10 +14,11 @@ import re
 import sys
 
 header, trace, chart = sys.argv[1:4]
-fields = re.findall(r'^\s+(\w+)\s+(\w+);\s+/\* (in|out) \2:(.*)$', open(header).read(), re.M)
+fields = re.findall(r'^\s+(\w+)\s+(\w+);\s+/\* (in|out|inout) \2:(.*)$', open(header).read(), re.M)
 # A time's field is an int64_t whose comment says so: printed as IEC's T#<ms>ms.
-ins = [(t, n) for t, n, r, rest in fields if r == 'in']
-outs = [('time' if 'a time: milliseconds' in rest else t, n) for t, n, r, rest in fields if r == 'out']
+# An inout is both: set before every scan (the chart may have written it), printed after.
+ins = [(t, n) for t, n, r, rest in fields if r in ('in', 'inout')]
+outs = [('time' if 'a time: milliseconds' in rest else t, n) for t, n, r, rest in fields if r in ('out', 'inout')]
 lines = [l for l in open(trace) if l.strip() and not l.lstrip().startswith('#')]
 rows = [[c.strip() for c in r] for r in csv.reader(lines)]
 cols, rows = rows[0], rows[1:]
@@ -31,12 +32,15 @@ print('#include "engine.h"\n#include <stdio.h>\nint main(void) {')
 print(f'  static const double rows[][{len(cols)}] = {{' + ', '.join('{' + ', '.join(r) + '}' for r in rows) + '};')
 print(f'  {chart} m;\n  int tick, p, row = 0;\n  {chart}_init(&m);')
 print(f'  for (tick = 1; tick <= {ticks}; ++tick) {{')
-print(f'    if (row < {len(rows)} && (int)rows[row][0] == tick) {{')
+# A row holds until the next row's tick: the inputs are set from it before every scan, as gfec
+# run sets them.
+print(f'    if (row + 1 < {len(rows)} && (int)rows[row + 1][0] <= tick) ++row;')
+print(f'    if ((int)rows[row][0] <= tick) {{')
 for t, n in ins:
     if n in cols:
         cast = '0 != ' if t == 'bool' else f'({t})'
         print(f'      m.{n} = {cast}rows[row][{cols.index(n)}];')
-print('      ++row;\n    }')
+print('    }')
 print(f'    {chart}_run(&m);\n    printf("tick %d\\nav", tick);')
 print(f'    for (p = 0; p < {chart}_PLACE_COUNT; ++p) printf(" %u", (unsigned){chart}_activation(&m, p));')
 print('    printf("\\n");')
