@@ -162,6 +162,15 @@ void parse_output(std::istream &in, const model::Model &m, const scenario::Test 
   }
 }
 
+/// An input's value as the harness reads it (strtoll, strtoull, strtof, strtod): a bool 1 or 0,
+/// a time its milliseconds, a number as gfec run prints it.
+std::string harness_number(model::Type t, const std::string &value) {
+  const interp::Value v = scenario::parse_value(value, t);
+  if (t == model::Type::Bool) return v.b ? "1" : "0";
+  if (t == model::Type::Time) return constant::decimal(v);
+  return interp::format_value(v);
+}
+
 /// The program `gfec test` runs: the steps on stdin, the records on stdout (test_engine.h).
 c_backend::HarnessOptions harness_options(int agents) {
   c_backend::HarnessOptions o;
@@ -293,7 +302,10 @@ scenario::Run EngineBuilds::run(const Build &build, const model::Model &model, c
   scenario::Run run;
   std::string steps;
   for (const scenario::Step &s : test.steps) {
-    if (s.kind == scenario::Step::Kind::Set)
+    if (s.kind == scenario::Step::Kind::Set && s.input)
+      steps += fmt::format("input {} {} {}\n", s.agent, s.input.index(),
+                           harness_number(model.charts[test.chart].vars[s.input].type, s.value));
+    else if (s.kind == scenario::Step::Kind::Set)
       steps += fmt::format("set {} {} {}\n", s.agent, s.function.index(), s.value);
     if (s.kind == scenario::Step::Kind::Tick)
       for (unsigned long i = 0; i < s.count; ++i) steps += "tick\n";

@@ -369,16 +369,44 @@ std::string input_var_tables(const model::Chart &c, const HarnessOptions &o) {
                    : std::string("/* What the caller sets each input variable to, by tick (1: set). */\n") + s + "\n";
 }
 
-/// Before a tick: the caller sets the chart's `in` variables (docs/iec.md "The scan").
+/// Steps inputs: a `set` input's value in harness.c (steps_main), as a C expression of its type.
+std::string step_input(Type t, model::VarId id) {
+  const std::size_t i = id.index();
+  switch (t) {
+  case Type::Bool: return fmt::format("@H@input_ll(a, {}) != 0", i);
+  case Type::Float: return fmt::format("@H@input_f(a, {})", i);
+  case Type::Double: return fmt::format("@H@input_d(a, {})", i);
+  default:
+    if (model::is_unsigned(t)) return fmt::format("({})@H@input_ull(a, {})", c_type(t), i);
+    return fmt::format("({})@H@input_ll(a, {})", c_type(t), i);
+  }
+}
+
+/// Before a tick: the caller sets the chart's `in` variables (docs/iec.md "The scan"); with Steps
+/// inputs those a test's `set` gave a value, from then on.
 std::string set_input_vars(const model::Chart &c, const Names &fields, const HarnessOptions &o) {
   std::string s;
-  if (o.inputs != HarnessInputs::Table) return s;
-  for (model::VarId id : c.vars.ids())
-    if (model::set_by_caller(c.vars[id].role))
+  if (o.inputs == HarnessInputs::Script) return s;
+  for (model::VarId id : c.vars.ids()) {
+    if (!model::set_by_caller(c.vars[id].role)) continue;
+    if (o.inputs == HarnessInputs::Table)
       s += fmt::format("        if (@H@var{0}_set[@H@tick_count - 1] != 0u) {{\n"
                        "            {1}[a].{2} = @H@var{0}[@H@tick_count - 1];\n        }}\n",
                        id.index(), kEngines, fields.var_field[id]);
+    else
+      s += fmt::format("        if (@H@input_set(a, {0}) != 0) {{\n            {1}[a].{2} = {3};\n        }}\n",
+                       id.index(), kEngines, fields.var_field[id], step_input(c.vars[id].type, id));
+  }
   return s;
+}
+
+/// One past the number of the chart's last `in` variable (at least 1): the size of harness.c's
+/// table of the values `set` gave them.
+std::size_t inputs_end(const model::Chart &c) {
+  std::size_t end = 1;
+  for (model::VarId id : c.vars.ids())
+    if (model::set_by_caller(c.vars[id].role)) end = std::max(end, id.index() + 1);
+  return end;
 }
 
 /// The compact log's lines after a tick: the active places by name (an fsm's state and status),
@@ -429,12 +457,22 @@ std::string compact(const model::Model &model, model::ChartId chart, const Names
 }
 
 /// What harness.c holds for Steps inputs: the values `set` stored, and main reading the steps.
-std::string steps_main(int agents, std::size_t functions) {
+std::string steps_main(int agents, std::size_t functions, std::size_t inputs) {
   // Each record is flushed as it is complete: an engine that dies of a signal in tick n leaves
   // the records before it, so that a message can name the tick.
   return fmt::format(
       "/* By agent and function (its index in the model): what `set` gave it; \"\" is false/0. */\n"
       "static char @H@value[{0}][{1}][64];\n\n"
+      "/* By agent and input variable (its number in the chart): what `set` gave it, as a number (a bool\n"
+      "   0 or 1, a time in milliseconds); \"\" until set, when the input keeps its value. */\n"
+      "static char @H@input[{0}][{2}][64];\n\n"
+      "int @H@input_set(int agent, int var)\n{{\n    return @H@input[agent][var][0] != '\\0';\n}}\n\n"
+      "long long @H@input_ll(int agent, int var)\n{{\n"
+      "    return strtoll(@H@input[agent][var], NULL, 10);\n}}\n\n"
+      "unsigned long long @H@input_ull(int agent, int var)\n{{\n"
+      "    return strtoull(@H@input[agent][var], NULL, 10);\n}}\n\n"
+      "float @H@input_f(int agent, int var)\n{{\n    return strtof(@H@input[agent][var], NULL);\n}}\n\n"
+      "double @H@input_d(int agent, int var)\n{{\n    return strtod(@H@input[agent][var], NULL);\n}}\n\n"
       "int @H@bool(int agent, int function)\n{{\n"
       "    return strcmp(@H@value[agent][function], \"true\") == 0;\n}}\n\n"
       "int @H@int(int agent, int function)\n{{\n"
@@ -453,8 +491,15 @@ std::string steps_main(int agents, std::size_t functions) {
       "            for (a = 0; a < {0}; ++a) {{\n"
       "                if (who < 0 || who == a) {{\n"
       "                    strcpy(@H@value[a][f], v);\n                }}\n            }}\n"
+      "        }} else if (strcmp(word, \"input\") == 0) {{\n"
+      "            int who;\n            int i;\n            int a;\n            char v[64];\n"
+      "            if (scanf(\"%d %d %63s\", &who, &i, v) != 3 || who < -1 || who >= {0} || i < 0 || i >= {2}) {{\n"
+      "                return 2;\n            }}\n"
+      "            for (a = 0; a < {0}; ++a) {{\n"
+      "                if (who < 0 || who == a) {{\n"
+      "                    strcpy(@H@input[a][i], v);\n                }}\n            }}\n"
       "        }}\n    }}\n    return 0;\n}}\n",
-      agents, functions);
+      agents, functions, inputs);
 }
 
 /// What harness.c holds for Script inputs: this tick's line, and main reading one a tick.
@@ -501,7 +546,8 @@ std::vector<std::string> harness_library_names(const HarnessOptions &o) {
   std::vector<std::string> names = {"main", "vprintf", "fflush"};
   if (o.context) names.push_back("exit");
   if (o.inputs == HarnessInputs::Steps)
-    for (const char *n : {"scanf", "strcmp", "strcpy", "strtol", "strtof", "strtod"}) names.push_back(n);
+    for (const char *n : {"scanf", "strcmp", "strcpy", "strtol", "strtoll", "strtoull", "strtof", "strtod"})
+      names.push_back(n);
   if (o.inputs == HarnessInputs::Script)
     for (const char *n : {"setvbuf", "fgets", "strlen", "strstr", "atof"}) names.push_back(n);
   return names;
@@ -534,7 +580,11 @@ HarnessSources write_harness(const model::Model &model, model::ChartId chart, co
   if (o.inputs == HarnessInputs::Steps)
     g += "/* harness.c: the values `set` gave each agent's sensing functions. */\n"
          "int @H@bool(int agent, int function);\nint @H@int(int agent, int function);\n"
-         "float @H@float(int agent, int function);\ndouble @H@double(int agent, int function);\n";
+         "float @H@float(int agent, int function);\ndouble @H@double(int agent, int function);\n"
+         "/* harness.c: whether `set` gave an agent's input variable a value, and the value. */\n"
+         "int @H@input_set(int agent, int var);\nlong long @H@input_ll(int agent, int var);\n"
+         "unsigned long long @H@input_ull(int agent, int var);\nfloat @H@input_f(int agent, int var);\n"
+         "double @H@input_d(int agent, int var);\n";
   if (o.inputs == HarnessInputs::Script)
     g += "/* harness.c: the value this tick's line gives a name. */\n"
          "double @H@value(const char *name);\n";
@@ -604,7 +654,7 @@ HarnessSources write_harness(const model::Model &model, model::ChartId chart, co
         "#include <stdarg.h>\n#include <stdio.h>\n#include <stdlib.h>\n#include <string.h>\n\n" +
         std::string(kOutputCalls) + "void @H@init(void);\nvoid @H@tick(void);\n\n" + std::string(kStdioOutput);
     if (o.context) h += kStdioExit;
-    if (o.inputs == HarnessInputs::Steps) h += steps_main(n, model.functions.size() + 1);
+    if (o.inputs == HarnessInputs::Steps) h += steps_main(n, model.functions.size() + 1, inputs_end(c));
     if (o.inputs == HarnessInputs::Script) h += kScriptMain;
   }
   // The harness's own names: a prefix that begins no name of the interface.

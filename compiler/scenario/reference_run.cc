@@ -8,13 +8,21 @@ namespace gfec::scenario {
 
 namespace {
 
-/// The interface as a test sets it: `set` values for sensing functions (false/0 until set),
-/// every call recorded.
+/// The interface as a test sets it: `set` values for sensing functions (false/0 until set) and
+/// for the chart's inputs (their initial values until set), every call recorded.
 class TestEnvironment : public interp::Environment {
 public:
   explicit TestEnvironment(const model::Model &model) : model_(model), values_(model.functions.size()) {}
 
-  void set(model::FunctionId function, const std::string &value) { values_[function] = value; }
+  void set(const Step &step, const model::Chart &chart) {
+    if (step.input) inputs_[&chart.vars.at(step.input)] = parse_value(step.value, chart.vars.at(step.input).type);
+    else values_[step.function] = step.value;
+  }
+  std::optional<interp::Value> input(const model::Var &var, std::uint64_t) override {
+    auto it = inputs_.find(&var);
+    if (it == inputs_.end()) return std::nullopt;
+    return it->second;
+  }
   std::vector<Call> take_calls() { return std::move(calls_); }
 
   interp::Value call(model::FunctionId function, const std::vector<interp::Value> &args, std::uint64_t) override {
@@ -34,6 +42,8 @@ public:
 private:
   const model::Model &model_;
   IdMap<model::FunctionId, std::string> values_;  ///< as `set` formatted it; "" until set
+  /// The inputs set so far, by the chart's declaration the interpreter passes to input().
+  std::map<const model::Var *, interp::Value> inputs_;
   std::vector<Call> calls_;
 };
 
@@ -128,7 +138,7 @@ Run run_reference(const model::Model &model, const Test &test, KeptTicks keep) {
     for (const Step &step : test.steps) {
       if (step.kind == Step::Kind::Set)
         for (std::size_t a = 0; a < n; ++a)
-          if (step.agent < 0 || static_cast<std::size_t>(step.agent) == a) envs[a].set(step.function, step.value);
+          if (step.agent < 0 || static_cast<std::size_t>(step.agent) == a) envs[a].set(step, chart);
       if (step.kind != Step::Kind::Tick) continue;
       for (unsigned long i = 0; i < step.count; ++i) {
         for (agent = 0; agent < n; ++agent) engines[agent].run(envs[agent], nullptr);

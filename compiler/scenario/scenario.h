@@ -45,9 +45,12 @@ struct Step {
   Kind kind = Kind::Tick;
   SourceRange range;
   unsigned long count = 1;     ///< Tick
-  model::FunctionId function;  ///< Set
-  std::string value;           ///< Set: the constant converted to the function's type, formatted
-  Expect expect;               ///< Expect
+  model::FunctionId function;  ///< Set: the sensing function set, or none when `input` is set
+  /// Set: the chart's `in` variable set (docs/language.md §14), or none when `function` is set;
+  /// from the next tick on the caller gives it `value` before every tick.
+  model::VarId input;
+  std::string value;  ///< Set: the constant converted to the function's (input's) type, formatted
+  Expect expect;      ///< Expect
   /// A team machine's agent the step is for (`agent K { ... }`), or -1: a `set` for every
   /// agent, an `expect` of agent 0.
   int agent = -1;

@@ -84,23 +84,77 @@ public:
           .note(sym->range, fmt::format("'{}' declared here", name.text));
       return {};
     }
-    if (const Symbol *local = chart_.names.find(name.text)) {  // a variable, place...: not what `set` sets
-      Diagnostic &d = cx_.diag
-                          .error(name.range, ErrorKind::TypeMismatch,
-                                 fmt::format("'{}' is {} of '{}', not a function", name.text, with_article(local->kind),
-                                             chart_.out.name))
-                          .note(local->range, fmt::format("'{}' declared here", name.text));
-      if (local->kind == Sym::Var) {
-        const auto v = local->id<model::VarId>();
-        if (v.index() < chart_.out.vars.size() && chart_.out.vars[v].role == model::VarRole::In)
-          d.note(fmt::format("'set' of a chart's input is not supported yet: in a test, '{}' keeps its initial "
-                             "value (docs/testing-charts.md)",
-                             name.text));
-      }
+    if (const Symbol *local = chart_.names.find(name.text)) {  // a variable, place...: not a function
+      cx_.diag
+          .error(
+              name.range, ErrorKind::TypeMismatch,
+              fmt::format("'{}' is {} of '{}', not a function", name.text, with_article(local->kind), chart_.out.name))
+          .note(local->range, fmt::format("'{}' declared here", name.text));
       return {};
     }
     report_unknown(cx_.diag, chart_.unknown, name, "function", cx_.c_names.of({Sym::Function}));
     return {};
+  }
+
+  /// What `set NAME` sets: one of the chart's `in` variables (docs/language.md §14), or else the
+  /// function `name` names. Both none after reporting why neither.
+  struct Settable {
+    model::VarId input;
+    model::FunctionId function;
+  };
+  Settable settable(const ast::Name &name) {
+    if (name.text.empty()) return {};
+    const Symbol *local = chart_.names.find(name.text);
+    // An input is read by its bare name in the chart's expressions: so it is here, before a
+    // function of the same name.
+    if (local && input_var(*local)) {
+      chart_.names.resolve(name);
+      return {local->id<model::VarId>(), {}};
+    }
+    const std::vector<const Symbol *> ins = inputs();
+    if (cx_.c_names.find(name.text) || (!local && ins.empty())) return {{}, function(name)};
+    if (!local) {  // unknown: the did-you-mean offers the chart's inputs too
+      std::vector<const Symbol *> candidates = cx_.c_names.of({Sym::Function});
+      candidates.insert(candidates.end(), ins.begin(), ins.end());
+      report_unknown(cx_.diag, chart_.unknown, name, "input or function", candidates);
+      return {};
+    }
+    std::string what = with_article(local->kind);
+    if (local->kind == Sym::Var && local->index >= 0 && static_cast<std::size_t>(local->index) < chart_.out.vars.size())
+      what = chart_.out.vars[local->id<model::VarId>()].role == model::VarRole::Out ? "an output ('out')"
+                                                                                    : "a variable ('var')";
+    cx_.diag
+        .error(name.range, ErrorKind::Test,
+               fmt::format("'{}' is {} of '{}': 'set' sets only the chart's inputs ('in', 'inout') and sensing functions",
+                           name.text, what, chart_.out.name))
+        .note(local->range, fmt::format("'{}' declared here", name.text));
+    return {};
+  }
+
+  /// `set` of input `var`: the constant taken as the variable's initialiser takes it (§14: the
+  /// chart's types, a sized integer's range, a duration as a `time`), formatted as engines print it.
+  std::optional<std::string> input_value(const ast::Expr *e, const model::Var &var) {
+    ExprScope constant_scope{cx_, &chart_, true};
+    auto x = lower_expr(e, constant_scope);
+    if (!x) return std::nullopt;
+    const std::string what = fmt::format("the value of '{}'", var.name);
+    // An integer constant of another integer type is the initialiser's to judge (a literal
+    // takes a sized type when it fits); any other mismatch is said here, in the words of `set`.
+    if (!assignable(var.type, x->type) && !(model::is_integer(var.type) && model::is_integer(x->type))) {
+      cx_.diag.error(x->range, ErrorKind::TypeMismatch,
+                     fmt::format("{} must be {}, not {}", what, quoted(var.type), quoted(x->type)));
+      return std::nullopt;
+    }
+    auto checked = lower_initializer(e, constant_scope, var.type, var.name);
+    if (!checked) return std::nullopt;
+    auto v = evaluate(*checked, cx_.model, &cx_.diag);
+    if (!v) return std::nullopt;
+    try {
+      return interp::format_value(interp::convert(*v, var.type, checked->range));
+    } catch (const interp::RuntimeError &err) {
+      cx_.diag.error(checked->range, ErrorKind::TypeMismatch, fmt::format("{}: {}", what, err.what()));
+      return std::nullopt;
+    }
   }
 
   /// `e`, a constant, as a value of type `to` formatted as engines print it (§12: "converted as
@@ -148,6 +202,19 @@ public:
   }
 
 private:
+  bool input_var(const Symbol &sym) const {
+    return sym.kind == Sym::Var && sym.index >= 0 && static_cast<std::size_t>(sym.index) < chart_.out.vars.size() &&
+           model::set_by_caller(chart_.out.vars[sym.id<model::VarId>()].role);
+  }
+
+  /// The chart's `in` variables, as did-you-mean candidates.
+  std::vector<const Symbol *> inputs() const {
+    std::vector<const Symbol *> out;
+    for (const Symbol *v : chart_.names.of({Sym::Var}))
+      if (input_var(*v)) out.push_back(v);
+    return out;
+  }
+
   static Expect make(Expect::Kind kind, Type type, SourceRange range) {
     Expect x;
     x.kind = kind;
@@ -412,11 +479,20 @@ bool check_agents(Context &cx, const ast::Test &t, const model::Chart &chart, sc
   return ok;
 }
 
-/// `set F = CONST;`: F is a parameterless sensing function of the chart's interface.
+/// `set F = CONST;`: F is a parameterless sensing function of the chart's interface, or one of
+/// the chart's `in` variables.
 bool lower_set(Context &cx, TestLowering &lowering, model::ChartId chart_id, const ast::TestStep &in,
                scenario::Step &out) {
   const model::Chart &chart = cx.model.charts[chart_id];
-  model::FunctionId f = lowering.function(in.function);
+  const TestLowering::Settable target = lowering.settable(in.function);
+  if (target.input) {
+    auto v = lowering.input_value(in.value.get(), chart.vars[target.input]);
+    if (!v) return false;
+    out.input = target.input;
+    out.value = *v;
+    return true;
+  }
+  model::FunctionId f = target.function;
   if (!f) return false;
   const model::Function &fn = cx.model.functions[f];
   if (fn.result == Type::Void || !fn.params.empty()) {

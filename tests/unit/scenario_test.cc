@@ -37,6 +37,15 @@ fsm Machine {
   S0 -> Done when Black();
 }
 plan P { start a; actor a: Nothing() { X -> terminate; } }
+sfc Press {
+  in bool Start;
+  in int8 Force = 5;
+  out int Seen = 0;
+  var int n = 0;
+  initial place Up { Seen = Force; }
+  place Down { Seen = Force; }
+  Up -> Down when Start;
+}
 )--";
 
 struct Checked {
@@ -197,6 +206,79 @@ TEST_CASE("set needs a parameterless sensing function of the chart's interface",
         "                                ^~~~\n");
 }
 
+TEST_CASE("set of a chart's input is lowered to the input and its converted constant", "[scenario]") {
+  Checked c("test \"t\" of Press { set Start = true; set Force = -128; set Force = 2 * 3; tick; expect Start; }\n");
+  CHECK(c.test_errors() == "");
+  REQUIRE(c.suite.tests.size() == 1);
+  const auto &t = c.suite.tests[0];
+  REQUIRE(t.steps.size() == 5);
+  const model::Chart &press = c.model.charts[t.chart];
+  REQUIRE(t.steps[0].input);
+  CHECK(press.vars[t.steps[0].input].name == "Start");
+  CHECK(!t.steps[0].function);
+  CHECK(t.steps[0].value == "true");
+  REQUIRE(t.steps[1].input);
+  CHECK(press.vars[t.steps[1].input].name == "Force");
+  CHECK(t.steps[1].value == "-128");
+  CHECK(t.steps[2].value == "6");
+}
+
+TEST_CASE("set names an input or a sensing function, and an input's value fits its type", "[scenario]") {
+  // An unknown name: the did-you-mean offers the chart's inputs beside the functions.
+  CHECK(Checked("test \"t\" of Press { set Strat = true; }\n").test_errors() ==
+        "t.test:2:25: error: unknown input or function 'Strat' [unknown-name]\n"
+        " test \"t\" of Press { set Strat = true; }\n"
+        "                         ^~~~~\n"
+        "bot.sfc:25:11: note: did you mean 'Start'?\n"
+        "   in bool Start;\n"
+        "           ^~~~~\n");
+  CHECK(Checked("test \"t\" of Press { set Blak = true; }\n")
+            .test_errors()
+            .rfind("t.test:2:25: error: unknown input or function 'Blak' [unknown-name]\n"
+                   " test \"t\" of Press { set Blak = true; }\n"
+                   "                         ^~~~\n"
+                   "bot.sfc:2:8: note: did you mean 'Black'?\n",
+                   0) == 0);
+  // An output, a variable or a place cannot be set.
+  CHECK(Checked("test \"t\" of Press { set Seen = 1; }\n").test_errors() ==
+        "t.test:2:25: error: 'Seen' is an output ('out') of 'Press': 'set' sets only the chart's inputs ('in', 'inout') and "
+        "sensing functions [test]\n"
+        " test \"t\" of Press { set Seen = 1; }\n"
+        "                         ^~~~\n"
+        "bot.sfc:27:11: note: 'Seen' declared here\n"
+        "   out int Seen = 0;\n"
+        "           ^~~~\n");
+  CHECK(Checked("test \"t\" of Press { set n = 1; }\n")
+            .test_errors()
+            .rfind("t.test:2:25: error: 'n' is a variable ('var') of 'Press': 'set' sets only the chart's inputs "
+                   "('in') and sensing functions [test]\n",
+                   0) == 0);
+  CHECK(Checked("test \"t\" of Press { set Up = true; }\n")
+            .test_errors()
+            .rfind("t.test:2:25: error: 'Up' is a place of 'Press': 'set' sets only the chart's inputs ('in', 'inout') and "
+                   "sensing functions [test]\n",
+                   0) == 0);
+  // A value out of a sized input's range is an error at the constant, as for an initialiser.
+  CHECK(Checked("test \"t\" of Press { set Force = 128; }\n").test_errors() ==
+        "t.test:2:33: error: value 128 does not fit in 'int8' [not-constant]\n"
+        " test \"t\" of Press { set Force = 128; }\n"
+        "                                 ^~~\n");
+  CHECK(Checked("test \"t\" of Press { set Force = -129; }\n")
+            .test_errors()
+            .rfind("t.test:2:33: error: value -129 does not fit in 'int8' [not-constant]\n", 0) == 0);
+  // The chart's types: a bool input takes true or false, a sized integer no fraction.
+  CHECK(Checked("test \"t\" of Press { set Start = 1; }\n").test_errors() ==
+        "t.test:2:33: error: the value of 'Start' must be 'bool', not 'int' [type-mismatch]\n"
+        " test \"t\" of Press { set Start = 1; }\n"
+        "                                 ^\n");
+  CHECK(Checked("test \"t\" of Press { set Force = 2.5; }\n")
+            .test_errors()
+            .rfind("t.test:2:33: error: the value of 'Force' must be 'int8', not 'double' [type-mismatch]\n", 0) == 0);
+  CHECK(Checked("test \"t\" of Press { set Force = n; }\n")
+            .test_errors()
+            .rfind("t.test:2:33: error: a constant expression cannot read variable 'n' [not-constant]\n", 0) == 0);
+}
+
 TEST_CASE("called F(ARGS) is checked against F's prototype with constant arguments", "[scenario]") {
   CHECK(Checked("test \"t\" of Line { expect called Motor(1); }\n")
             .test_errors()
@@ -275,6 +357,34 @@ TEST_CASE("a test runs on the reference interpreter and its expectations are eva
   CHECK(!third.holds);
   REQUIRE(third.operands.size() == 1);
   CHECK(third.operands[0].value == "false");
+}
+
+TEST_CASE("the reference run gives a set input its value before every later tick", "[scenario]") {
+  Checked c("test \"t\" of Press { tick; set Force = -7; set Start = true; tick; }\n");
+  REQUIRE(c.test_errors() == "");
+  const scenario::Test &t = c.suite.tests.at(0);
+  scenario::Run run = scenario::run_reference(c.model, t);
+  REQUIRE(run.error == "");
+  REQUIRE(run.recorded() == 3);
+  const model::Chart &press = c.model.charts[t.chart];
+  model::VarId start, force, seen;
+  for (model::VarId v : press.vars.ids()) {
+    if (press.vars[v].name == "Start") start = v;
+    if (press.vars[v].name == "Force") force = v;
+    if (press.vars[v].name == "Seen") seen = v;
+  }
+  // Tick 1: not set yet, the inputs keep their initial values.
+  const scenario::Snapshot &first = run.at(1)->at(0);
+  CHECK(!first.vars[start].b);
+  CHECK(first.vars[force].i == 5);
+  CHECK(first.vars[seen].i == 5);
+  CHECK(first.activation[model::PlaceId(0)] == 1);
+  // Tick 2: both set before it; Up -> Down fires and Down reads the new Force.
+  const scenario::Snapshot &second = run.at(2)->at(0);
+  CHECK(second.vars[start].b);
+  CHECK(second.vars[force].i == -7);
+  CHECK(second.vars[seen].i == -7);
+  CHECK(second.activation[model::PlaceId(1)] == 1);
 }
 
 TEST_CASE("two runs that differ are told apart by their first differing call", "[scenario]") {
