@@ -639,6 +639,10 @@ void resolve_externals(Project &project, Diagnostics &diag) {
         if (best)
           d.fix(v.name.range, std::string(best->name.text))
               .note(best->name.range, fmt::format("did you mean '{}'?", best->name.text));
+        else if (project.globals.empty())
+          // Beremiz declares the globals of its extensions (Python, HMI) outside the PLCopen file.
+          d.note("the file declares no global variables: a CONFIGURATION or RESOURCE declares them in a "
+                 "VAR_GLOBAL section (PLCopen: globalVars)");
         continue;
       }
       const Variable &g = *it->second;
