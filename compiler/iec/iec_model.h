@@ -18,9 +18,10 @@
 
 namespace gfec::iec {
 
-/// A variable section. Only these three are read; the readers report the others
-/// (VAR_IN_OUT, VAR_EXTERNAL, VAR_GLOBAL, VAR_TEMP, ...) as located "not supported yet" errors.
-enum class Section : std::uint8_t { Input, Output, Local };
+/// A variable section. The readers report the others (VAR_IN_OUT, VAR_TEMP, a POU's VAR_GLOBAL,
+/// ...) as located "not supported yet" errors. External is a POU's VAR_EXTERNAL, which names a
+/// Global: a VAR_GLOBAL of a CONFIGURATION or RESOURCE (docs/iec.md "Global variables").
+enum class Section : std::uint8_t { Input, Output, Local, External, Global };
 
 /// `Start : BOOL;`, `Count : DINT := 3;` in one of the sections.
 struct Variable {
@@ -34,7 +35,7 @@ struct Variable {
   /// %I variable an input, %Q an output and %M a local variable (docs/iec.md "Located variables").
   std::optional<SourceRange> located;
   std::string_view address;  ///< the direct address as written (`%IX0.0`), when located
-  bool constant = false;     ///< in a `VAR CONSTANT` section
+  bool constant = false;     ///< in a `VAR CONSTANT` (`VAR_GLOBAL CONSTANT`, ...) section
   SourceRange range;
 };
 
@@ -103,6 +104,9 @@ struct Task {
 struct Project {
   std::vector<Pou> pous;
   std::vector<Task> tasks;
+  /// The VAR_GLOBALs of its CONFIGURATIONs and RESOURCEs, in declaration order (Section::Global):
+  /// one scope for the whole file, which the lowering checks for a name declared twice.
+  std::vector<Variable> globals;
 };
 
 }  // namespace gfec::iec

@@ -4,6 +4,7 @@
 // `Start` declared); the range stays on what the user wrote.
 #include "iec/lower.h"
 #include "iec/iec_text.h"
+#include "did_you_mean.h"
 #include "standard_blocks.h"
 
 #include <fmt/format.h>
@@ -401,6 +402,15 @@ void lower_function_block(Pou &pou, ast::File &file, Diagnostics &diag, const Kn
   b.name = pou.name;
   b.range = pou.range;
   for (Variable &v : pou.variables) {
+    if (v.section == Section::External) {
+      // A block is inlined into every program that holds an instance (docs/iec.md "Global
+      // variables"): reaching a program's global from inside it is not done yet.
+      diag.error(v.name.range, ErrorKind::NotSupported,
+                 fmt::format("a VAR_EXTERNAL in a function block ('{}' of '{}') is not supported yet: declare it "
+                             "VAR_EXTERNAL in the PROGRAM and pass it to the block as an input",
+                             v.name.text, pou.name.text));
+      continue;
+    }
     if (v.constant) {
       diag.error(v.name.range, ErrorKind::NotSupported,
                  fmt::format("a constant in a function block ('{}') is not supported yet", v.name.text));
@@ -621,10 +631,113 @@ bool lower_pou(Pou &&pou, const std::optional<ast::Period> &period, ast::File &f
   return true;
 }
 
+/// A type as written, for comparing an external's with its global's: upper case, no spaces.
+std::string type_key(std::string_view type) {
+  std::string out;
+  for (char c : upper(type))
+    if (!std::isspace(static_cast<unsigned char>(c))) out += c;
+  return out;
+}
+
+/// The file's VAR_GLOBALs by their upper-case names (one scope for all its configurations and
+/// resources); a name declared twice is an error at the second.
+std::map<std::string, const Variable *> global_scope(const Project &project, Diagnostics &diag) {
+  std::map<std::string, const Variable *> scope;
+  for (const Variable &g : project.globals) {
+    auto [it, fresh] = scope.emplace(upper(g.name.text), &g);
+    if (!fresh)
+      diag.error(g.name.range, ErrorKind::DuplicateName,
+                 fmt::format("global variable '{}' is declared twice", g.name.text))
+          .note(it->second->name.range, "the first declaration");
+  }
+  return scope;
+}
+
+/// Each VAR_EXTERNAL of a PROGRAM becomes a variable of the program (Section::Local) with its
+/// global's type, initial value, constness and address, so the lowering that follows makes it
+/// what a VAR of the program would be, a located one's role from the address (docs/iec.md
+/// "Global variables"). An external that matches no global is reported and stays a variable
+/// of its own declaration, so the program is still checked.
+void resolve_externals(Project &project, Diagnostics &diag) {
+  const std::map<std::string, const Variable *> globals = global_scope(project, diag);
+  struct User {
+    std::string_view program;
+    SourceRange at;
+  };
+  std::map<std::string, User> first_user;  ///< a global (upper case) -> the first program naming it
+  for (Pou &p : project.pous) {
+    if (p.kind != PouKind::Program) continue;
+    for (Variable &v : p.variables) {
+      if (v.section != Section::External) continue;
+      v.section = Section::Local;
+      const std::string key = upper(v.name.text);
+      auto it = globals.find(key);
+      if (it == globals.end()) {
+        Diagnostic &d = diag.error(v.name.range, ErrorKind::UnknownName,
+                                   fmt::format("'{}' is declared VAR_EXTERNAL in program '{}', but no VAR_GLOBAL of "
+                                               "the file declares it",
+                                               v.name.text, p.name.text));
+        NearestName nearest(v.name.text, typo_limit(v.name.text.size()));
+        const Variable *best = nullptr;
+        for (const Variable &g : project.globals)
+          if (nearest.offer(g.name.text)) best = &g;
+        if (best)
+          d.fix(v.name.range, std::string(best->name.text))
+              .note(best->name.range, fmt::format("did you mean '{}'?", best->name.text));
+        else if (project.globals.empty())
+          // Beremiz declares the globals of its extensions (Python, HMI) outside the PLCopen file.
+          d.note("the file declares no global variables: a CONFIGURATION or RESOURCE declares them in a "
+                 "VAR_GLOBAL section (PLCopen: globalVars)");
+        continue;
+      }
+      const Variable &g = *it->second;
+      if (type_key(v.type.text) != type_key(g.type.text)) {
+        diag.error(v.type.range, ErrorKind::TypeMismatch,
+                   fmt::format("external '{}' is declared {} in program '{}', but the global is {}", v.name.text,
+                               v.type.text, p.name.text, g.type.text))
+            .note(g.type.range, "the global's type");
+        continue;
+      }
+      if (g.constant && !v.constant)
+        diag.error(v.name.range, ErrorKind::NotAssignable,
+                   fmt::format("global '{}' is CONSTANT: program '{}' must declare it in a VAR_EXTERNAL CONSTANT "
+                               "section",
+                               g.name.text, p.name.text))
+            .note(g.name.range, "the CONSTANT global");
+      if (v.init)
+        diag.error(v.init->range, ErrorKind::Syntax,
+                   fmt::format("external '{}' takes its initial value from its VAR_GLOBAL: IEC gives a VAR_EXTERNAL "
+                               "none",
+                               v.name.text))
+            .note(g.name.range, "the global");
+      if (v.located)
+        diag.error(*v.located, ErrorKind::Syntax,
+                   fmt::format("external '{}' takes its address from its VAR_GLOBAL: IEC gives a VAR_EXTERNAL none",
+                               v.name.text))
+            .note(g.name.range, "the global");
+      // Named as the global is, whatever case the program writes: the engine's field is the
+      // global the configuration declares, the same in every program's engine.
+      v.name.text = g.name.text;
+      v.init = g.init ? clone(*g.init) : nullptr;
+      v.constant = v.constant || g.constant;
+      v.located = g.located;
+      v.address = g.address;
+      auto [user, fresh] = first_user.emplace(key, User{p.name.text, v.name.range});
+      if (!fresh && upper(user->second.program) != upper(p.name.text))
+        diag.warning(Warning::SharedGlobal, v.name.range,
+                     fmt::format("global '{}' is external to program '{}' too: gfec compiles each program into an "
+                                 "engine of its own, which holds its own '{}'",
+                                 g.name.text, user->second.program, v.name.text))
+            .note(user->second.at, fmt::format("program '{}' names it here", user->second.program));
+    }
+  }
+}
+
 }  // namespace
 
 std::size_t lower(Project &&project, ast::File &file, Diagnostics &diag, std::optional<double> period_ms) {
   std::size_t added = 0;
+  resolve_externals(project, diag);
   KnownBlocks known;
   for (const char *s : {"TON", "TOF", "TP", "R_TRIG", "F_TRIG", "SR", "RS", "CTU", "CTD", "CTUD"})
     if (is_standard_block(s)) known.spelled.emplace(s, s);

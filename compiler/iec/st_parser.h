@@ -11,6 +11,7 @@
 #include "iec/st_lexer.h"
 
 #include <deque>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -98,7 +99,10 @@ private:
 
   // st_reader.cc
   void pou(Project &project, PouKind kind, std::string_view end);
-  void var_section(Pou &pou);
+  /// A section of variables of `pou`, of the kind its keyword says, or `given` (VAR_GLOBAL's).
+  void var_section(Pou &pou, std::optional<Section> given = std::nullopt);
+  /// `VAR_GLOBAL [CONSTANT | RETAIN ...] ... END_VAR` of a configuration: into project.globals.
+  void global_section(Project &project);
   /// A FUNCTION_BLOCK's variables and ST body (an SFC body is not supported yet).
   void function_block(Pou &pou, const StToken &start, std::string_view end);
   /// `VAR_INPUT`, `VAR`, `VAR_OUTPUT` ...: a section of variables starts at `t`.

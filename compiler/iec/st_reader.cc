@@ -42,8 +42,9 @@ void StParser::file(Project &project) {
       not_supported(range(t), "data type declarations (TYPE ... END_TYPE) are not supported yet");
       skip_block("TYPE");
     } else if (is_keyword(t, "VAR_GLOBAL")) {
-      not_supported(range(t), "global variables (VAR_GLOBAL) are not supported yet");
-      skip_block("VAR");
+      // Outside a CONFIGURATION, as CODESYS's global variable lists are exported: read as a
+      // configuration's (docs/iec.md "Global variables").
+      global_section(project);
     } else if (is_keyword(t, "USING")) {
       not_supported(range(t), "'USING' (IEC 61131-3 third edition namespaces) is not supported yet");
       skip_statement();
@@ -157,17 +158,19 @@ void StParser::function_block(Pou &p, const StToken &start, std::string_view end
 
 // ------------------------------------------------------------------ variables
 
-void StParser::var_section(Pou &pou) {
+void StParser::var_section(Pou &pou, std::optional<Section> given) {
   const StToken kw = tok();
   const std::string k = upper(kw.text);
   next();
-  Section section;
-  if (k == "VAR_INPUT") section = Section::Input;
+  Section section = Section::Local;
+  if (given) section = *given;
+  else if (k == "VAR_INPUT") section = Section::Input;
   else if (k == "VAR_OUTPUT") section = Section::Output;
   else if (k == "VAR") section = Section::Local;
+  else if (k == "VAR_EXTERNAL") section = Section::External;
   else {
-    not_supported(range(kw), fmt::format("'{}' sections are not supported yet: gfec reads VAR_INPUT, VAR_OUTPUT "
-                                         "and VAR",
+    not_supported(range(kw), fmt::format("'{}' sections are not supported yet: gfec reads VAR_INPUT, VAR_OUTPUT, "
+                                         "VAR and VAR_EXTERNAL",
                                          kw.text));
     skip_block("VAR");
     return;
@@ -191,6 +194,13 @@ void StParser::var_section(Pou &pou) {
     if (pos_ == before) next();
   }
   if (keyword("END_VAR")) next();
+}
+
+void StParser::global_section(Project &project) {
+  // Declared as a POU's variables are (the same declarations), then moved to the file's scope.
+  Pou scratch;
+  var_section(scratch, Section::Global);
+  for (Variable &v : scratch.variables) project.globals.push_back(std::move(v));
 }
 
 void StParser::declaration(Pou &pou, Section section, bool constant, std::string_view) {
@@ -557,9 +567,11 @@ void StParser::resource(Project &project, std::string_view end) {
       task(project);
     } else if (keyword("PROGRAM")) {
       program_instance(project);
-    } else if (keyword("VAR_GLOBAL") || keyword("VAR_ACCESS") || keyword("VAR_CONFIG")) {
-      // Variables of the configuration: a program reaches them only through VAR_EXTERNAL, which
-      // is reported where it is declared.
+    } else if (keyword("VAR_GLOBAL")) {
+      global_section(project);
+    } else if (keyword("VAR_ACCESS") || keyword("VAR_CONFIG")) {
+      // Access paths for other devices and addresses of `AT %I*` variables: no program reads
+      // them (an open address is reported where it is declared).
       skip_block("VAR");
     } else {
       error(range(tok()), fmt::format("expected 'RESOURCE', 'TASK', 'PROGRAM' or '{}', not {}", end, quoted()));

@@ -202,10 +202,11 @@ void Reader::read_interface(const pugi::xml_node &interface, iec::Pou &pou) {
     if (kind == "inputVars") s = iec::Section::Input;
     else if (kind == "outputVars") s = iec::Section::Output;
     else if (kind == "localVars") s = iec::Section::Local;
+    else if (kind == "externalVars") s = iec::Section::External;
     if (!s) {
       if (child(section, "variable"))
-        not_supported(section, fmt::format("a {} section is not supported yet: gfec reads inputVars, outputVars and "
-                                           "localVars",
+        not_supported(section, fmt::format("a {} section is not supported yet: gfec reads inputVars, outputVars, "
+                                           "localVars and externalVars",
                                            text::printable(kind)));
       continue;
     }
@@ -289,8 +290,10 @@ void Reader::read_tasks(const pugi::xml_node &instances, iec::Project &project) 
     for (pugi::xml_node configuration : configurations.children()) {
       if (local_name(configuration) != "configuration") continue;
       for (pugi::xml_node resource : configuration.children()) {
+        if (local_name(resource) == "globalVars") read_globals(resource, project);
         if (local_name(resource) != "resource") continue;
         for (pugi::xml_node t : resource.children()) {
+          if (local_name(t) == "globalVars") read_globals(t, project);
           if (local_name(t) != "task") continue;
           iec::Task task;
           task.name = name_of(t, "name");
@@ -313,6 +316,16 @@ void Reader::read_tasks(const pugi::xml_node &instances, iec::Project &project) 
       }
     }
   }
+}
+
+void Reader::read_globals(const pugi::xml_node &section, iec::Project &project) {
+  // Read as a POU's variables are, then moved to the file's scope (docs/iec.md "Global
+  // variables"); `retain` and `persistent` mean nothing to gfec.
+  iec::Pou scratch;
+  bool constant = is_true(section.attribute("constant").value());
+  for (pugi::xml_node v : section.children())
+    if (local_name(v) == "variable") read_variable(v, iec::Section::Global, constant, scratch);
+  for (iec::Variable &v : scratch.variables) project.globals.push_back(std::move(v));
 }
 
 // ---------------------------------------------------------------- the entry point

@@ -37,7 +37,10 @@ private:
   void read_function_block(const pugi::xml_node &node, iec::Pou &pou, iec::Project &project);
   void read_variable(const pugi::xml_node &v, iec::Section section, bool constant, iec::Pou &pou);
   void read_actions(const pugi::xml_node &actions, iec::Pou &pou);
+  /// The tasks and the globalVars of every configuration and resource below `instances`.
   void read_tasks(const pugi::xml_node &instances, iec::Project &project);
+  /// A configuration's or resource's `globalVars` into project.globals.
+  void read_globals(const pugi::xml_node &section, iec::Project &project);
 
   // ---------------------------------------------------------- sfc_body.cc
   void read_sfc(const pugi::xml_node &sfc, const pugi::xml_node &pou_node, iec::Pou &pou);

@@ -80,6 +80,22 @@ diff -u "$dir/../st/mixer.expected" st_mixer.txt || fail "st_mixer.xml runs to a
 "$gfec" run "$dir/st_blocks.xml" --inputs "$dir/../st/blocks.csv" --observable > st_blocks.txt ||
   fail "st_blocks.xml: gfec run fails"
 diff -u "$dir/../st/blocks.expected" st_blocks.txt || fail "st_blocks.xml runs to another log than tests/iec/st/blocks.st"
+# Global variables as Beremiz writes them (docs/iec.md "Global variables"): tests/iec/st/globals.st
+# as PLCopen XML, located globalVars of the resource and a CONSTANT one of the configuration that
+# the program declares in externalVars, reads without a word and runs to that program's log; both
+# engine forms print it too, the located globals the engine's inputs and outputs.
+"$gfec" --check "$dir/globals.xml" 2> globals.err && [[ ! -s globals.err ]] ||
+  fail "globals.xml: --check: $(cat globals.err)"
+"$gfec" run "$dir/globals.xml" --inputs "$dir/../st/globals.csv" --observable > globals.txt ||
+  fail "globals.xml: gfec run fails"
+diff -u "$dir/../st/globals.expected" globals.txt || fail "globals.xml runs to another log than tests/iec/st/globals.st"
+for form in readable scalable; do
+  "$gfec" "$dir/globals.xml" --engine=$form -o engine.c
+  python3 "$caller" engine.h "$dir/../st/globals.csv" Station > main.c
+  cc -std=c99 -Wall -Wextra -Wpedantic -Werror main.c engine.c -o run || fail "globals.xml: the $form engine does not build"
+  ./run > engine.txt
+  diff -u globals.txt engine.txt || fail "globals.xml: the $form engine differs from gfec run"
+done
 
 # A generated project: program Big of 500 steps and 23 more SFC programs, read, checked, compiled
 # and built; its engine and the interpreter agree.

@@ -2,7 +2,8 @@
 """Runs IEC programs on MatIEC and writes its logs: the expected outputs of the MatIEC comparison.
 
 For each NAME.st (with NAME.csv, one row per scan, columns the VAR_INPUT names) in the folders
-given: `iec2c` compiles the program with its CONFIGURATION/RESOURCE/TASK to C; gcc builds that C
+given (a VAR_EXTERNAL of a global at %I is an input too and one at %Q an output, set and read at
+the global's location, as Beremiz's runtime copies its process image): `iec2c` compiles the program with its CONFIGURATION/RESOURCE/TASK to C; gcc builds that C
 with a small main written here, which drives it as Beremiz's runtime does: `config_init__()` at
 t = 0, then for scan n = 1, 2, ... the inputs of row n, __CURRENT_TIME = n * the task's period and
 `config_run__(n)` (so the first scan comes at t = one period and the initial step's .T is one
@@ -68,19 +69,34 @@ int main(void)
 
 
 def declarations(st_text):
-    """(inputs, outputs) of the first PROGRAM: lists of (name, type) in declaration order."""
+    """(inputs, outputs, locations) of the first PROGRAM: inputs and outputs are lists of (name,
+    type, C lvalue) in declaration order; locations the C names and types of the located globals
+    (`__IX0_0`), whose storage the main defines."""
     text = re.sub(r"\(\*.*?\*\)", " ", st_text, flags=re.S)
     prog = re.search(r"\bPROGRAM\s+(\w+)(.*?)\bEND_PROGRAM", text, re.S | re.I)
+    rest = text[:prog.start()] + text[prog.end():]
+    located = {}  # global (upper case) -> its location's C name
+    locations = []
+    for body in re.findall(r"\bVAR_GLOBAL\b(.*?)\bEND_VAR", rest, re.S | re.I):
+        for name, address, typ in re.findall(r"(\w+)\s+AT\s+%([IQM][A-Z]?[\d.]+)\s*:\s*(\w+)", body, re.I):
+            c = "__" + address.upper().replace(".", "_")
+            located[name.upper()] = c
+            locations.append((c, typ.upper()))
     sections = {"VAR_INPUT": [], "VAR_OUTPUT": []}
-    for kind, body in re.findall(r"\b(VAR_INPUT|VAR_OUTPUT)\b(.*?)\bEND_VAR", prog.group(2), re.S | re.I):
+    for kind, body in re.findall(r"\b(VAR_INPUT|VAR_OUTPUT|VAR_EXTERNAL)\b(.*?)\bEND_VAR", prog.group(2),
+                                 re.S | re.I):
         for names, typ in re.findall(r"([\w\s,]+?)\s*:\s*(\w+)", body):
             for n in names.split(","):
-                sections[kind.upper()].append((n.strip(), typ.upper()))
-    return prog.group(1), sections["VAR_INPUT"], sections["VAR_OUTPUT"]
+                n = re.sub(r"^CONSTANT\s+", "", n.strip(), flags=re.I)
+                if kind.upper() != "VAR_EXTERNAL":
+                    sections[kind.upper()].append((n, typ.upper(), "RES__INST.%s.value" % n.upper()))
+                elif located.get(n.upper(), "__M")[2] in "IQ":
+                    c = located[n.upper()]
+                    sections["VAR_INPUT" if c[2] == "I" else "VAR_OUTPUT"].append((n, typ.upper(), "*" + c))
+    return prog.group(1), sections["VAR_INPUT"], sections["VAR_OUTPUT"], locations
 
 
-def print_line(name, typ):
-    field = "RES__INST.%s.value" % name.upper()
+def print_line(name, typ, field):
     if typ == "BOOL":
         return '        printf("out %s = %%s\\n", %s ? "true" : "false");' % (name, field)
     if typ in ("REAL",):
@@ -126,7 +142,7 @@ def run_one(st_path, matiec, with_final):
     base = st_path[:-3]
     with open(st_path) as f:
         st_text = f.read()
-    name, inputs, outputs = declarations(st_text)
+    name, inputs, outputs, locations = declarations(st_text)
     with open(base + ".csv") as f:
         rows = [r for r in csv.reader(line for line in f if line.strip() and not line.startswith("#"))]
     header = [h.strip() for h in rows[0]]
@@ -134,16 +150,18 @@ def run_one(st_path, matiec, with_final):
     table = []
     for r in rows[1:]:
         cells = []
-        for n, _ in inputs:
+        for n, _, _ in inputs:
             text = r[index[n.lower()]].strip() if n.lower() in index else "0"
             cells.append({"true": "1", "false": "0"}.get(text.lower(), text))
         table.append(cells)
-    sets = "\n".join("        RES__INST.%s.value = (%s)trace[n - 1][%d];" % (n.upper(), t, i)
-                     for i, (n, t) in enumerate(inputs))
+    sets = "\n".join("        %s = (%s)trace[n - 1][%d];" % (field, t, i) for i, (n, t, field) in enumerate(inputs))
+    storage = "".join("%s %s_storage;\n%s *%s = &%s_storage;\n" % (t, c, t, c, c) for c, t in locations)
     main = MAIN % {
         "type": name.upper(), "ncols": max(1, len(inputs)),
         "rows": ",\n".join("    {%s}" % ", ".join(str(v) for v in (r or [0])) for r in table),
-        "sets": sets, "prints": "\n".join(print_line(n, t) for n, t in outputs)}
+        "sets": sets, "prints": "\n".join(print_line(n, t, f) for n, t, f in outputs)}
+    # The process image: the storage of each located global, after the prelude's types.
+    main = main.replace("static const double trace", storage + "static const double trace", 1)
     logs = {}
     with tempfile.TemporaryDirectory() as work:
         iec2c = subprocess.run([os.path.join(matiec, "iec2c"), "-I", os.path.join(matiec, "lib"), "-T", work,
