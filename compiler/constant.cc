@@ -381,6 +381,55 @@ Outcome binary(BinaryOp op, const Value &a, const Value &b) {
   }
 }
 
+namespace {
+
+/// `a < b` in their common type (both of the result type here).
+bool less(const Value &a, const Value &b) {
+  Outcome r = binary(BinaryOp::Lt, a, b);
+  return r && r.value.b;
+}
+
+}  // namespace
+
+Outcome standard(model::Expr::Builtin f, const std::vector<Value> &args, Type to) {
+  using B = model::Expr::Builtin;
+  // The operands chosen among: all but the selector of sel and mux.
+  const std::size_t first = f == B::Sel || f == B::Mux ? 1 : 0;
+  if (args.size() <= first) return fault(Fault::BadOperands);
+  std::vector<Value> v;
+  for (std::size_t i = first; i < args.size(); ++i) {
+    Outcome c = convert(args[i], to);
+    if (!c) return c;
+    v.push_back(std::move(c.value));
+  }
+  switch (f) {
+  case B::Abs: {
+    if (!less(v[0], Value::zero(to))) return ok(v[0]);  // -0.0 stays -0.0, as in MatIEC's ABS
+    return unary(UnaryOp::Neg, v[0]);                   // the lowest value of a type overflows
+  }
+  case B::Min:
+  case B::Max: {
+    Value best = v[0];
+    for (std::size_t i = 1; i < v.size(); ++i)
+      if (f == B::Max ? less(best, v[i]) : less(v[i], best)) best = v[i];
+    return ok(best);
+  }
+  case B::Limit:
+    if (v.size() != 3) return fault(Fault::BadOperands);
+    return ok(less(v[0], v[1]) ? (less(v[1], v[2]) ? v[1] : v[2]) : v[0]);
+  case B::Sel:
+    if (v.size() != 2 || args[0].type != Type::Bool) return fault(Fault::BadOperands);
+    return ok(args[0].b ? v[1] : v[0]);
+  case B::Mux: {
+    if (!model::is_integer(args[0].type)) return fault(Fault::BadOperands);
+    const Wide k = wide(args[0]);
+    if (k < 0 || k >= static_cast<Wide>(v.size())) return ok(Value::zero(to));
+    return ok(v[static_cast<std::size_t>(k)]);
+  }
+  }
+  return fault(Fault::BadOperands);
+}
+
 std::string text(const Value &v) {
   if (model::is_integer(v.type)) return decimal(v);
   if (v.type == Type::Time) return decimal(v) + "ms";

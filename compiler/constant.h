@@ -16,6 +16,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace gfec::constant {
 
@@ -117,6 +118,13 @@ template <typename T> bool compare(BinaryOp op, T a, T b) {
   default: return false;  // not a comparison
   }
 }
+
+/// A standard function `f` (model::Expr::Kind::Builtin) of `args`, each of the type the validator
+/// gave them, in the result type `to`: each value operand converted to `to`, then chosen as
+/// MatIEC's library chooses (docs/language.md §4, "Standard functions"): max keeps the first of
+/// equal values, `limit(mn, x, mx)` is `x > mn ? (x < mx ? x : mx) : mn`, a `mux` selector out of
+/// range gives zero of `to`. IntOverflow for `abs` of a type's lowest value.
+Outcome standard(model::Expr::Builtin f, const std::vector<Value> &args, model::Type to);
 
 /// An integer value in decimal (a uint64 above INT64_MAX too).
 std::string decimal(const Value &v);

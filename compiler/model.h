@@ -112,11 +112,17 @@ struct Expr {
     /// and to and from `time` exact (a value that does not fit is an error), a floating value to
     /// an integer rounded to nearest, ties away from zero (IEC's REAL_TO_INT).
     Convert,
+    /// A standard function (docs/language.md §4, "Standard functions"): builtin says which,
+    /// args its operands in order; type the common type of the values it chooses among.
+    Builtin,
   };
+  /// The standard functions of Kind::Builtin, IEC 61131-3's ABS, MIN, MAX, LIMIT, SEL and MUX.
+  enum class Builtin : std::uint8_t { Abs, Min, Max, Limit, Sel, Mux };
   Kind kind = Kind::Bool;
   Type type = Type::Bool;
   UnaryOp unary_op = UnaryOp::Not;
   BinaryOp binary_op = BinaryOp::Add;
+  Builtin builtin = Builtin::Abs;  ///< Kind::Builtin
   bool bool_value = false;
   // Values computed once by the validator with the one evaluator (compiler/constant.h), so that
   // no later stage parses a spelling or folds again. A literal (Int, Float) always has its value
@@ -170,6 +176,12 @@ private:
     return ref_ == kNoRef ? IdT() : IdT(ref_);
   }
 };
+
+/// A standard function's name as chart text spells it: "abs", "min", ...
+inline const char *builtin_name(Expr::Builtin f) {
+  static const char *const kNames[] = {"abs", "min", "max", "limit", "sel", "mux"};
+  return kNames[static_cast<int>(f)];
+}
 
 struct Stmt {
   /// While, DoWhile, For, Break, Return: docs/language.md §10 "Loops".

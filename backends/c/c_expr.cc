@@ -402,6 +402,7 @@ public:
       return {f.empty() ? "false" : c_.field(f)};
     }
     case Expr::Kind::Convert: return conversion(e);
+    case Expr::Kind::Builtin: return standard(e);
     case Expr::Kind::Config: break;  // plans only: the validator keeps it out of charts
     default: break;                  // team machines: not in this back end's charts
     }
@@ -426,7 +427,8 @@ public:
     if (is_floating(to) && model::is_sized(e.type)) {
       cast = to == Type::Float ? "(float)" : "(double)";  // -Wimplicit-int-float-conversion
     } else if (model::is_sized(to) && model::integer_bits(to) < 32 && e.type == to && e.kind != Expr::Kind::Var &&
-               e.kind != Expr::Kind::Int && !e.folded && e.kind != Expr::Kind::Const) {
+               e.kind != Expr::Kind::Int && !e.folded && e.kind != Expr::Kind::Const &&
+               e.kind != Expr::Kind::Builtin) {  // standard(): cast already
       // C computes an int8/int16/uint8/uint16 expression in int; the language's value fits the
       // type (gfec run checks it), so the conversion back is written out (-Wconversion).
       r.text = fmt::format("({})({})", model::c_integer_type(to), r.text);
@@ -568,6 +570,97 @@ private:
     }
     if (x.prec < kUnary) x.text = bracket(x.text);
     return {fmt::format("({}){}", to, x.text), kUnary, std::move(x.before)};
+  }
+
+  /// An operand a standard function may read more than once: a read without side effects.
+  static bool plain_read(const Expr &e) {
+    switch (e.kind) {
+    case Expr::Kind::Paren: return plain_read(e.args.at(0));
+    case Expr::Kind::Bool:
+    case Expr::Kind::Int:
+    case Expr::Kind::Float:
+    case Expr::Kind::Var:
+    case Expr::Kind::Const: return true;
+    default: return e.folded;
+    }
+  }
+
+  /// `text`, of type `t` computed in C's int, cast back to `t` where `t` is narrower than int
+  /// (-Wconversion; the language's value fits: gfec run checks abs()).
+  static std::string narrowed(const std::string &text, Type t) {
+    if (model::is_sized(t) && model::integer_bits(t) < 32)
+      return fmt::format("({})({})", model::c_integer_type(t), text);
+    return text;
+  }
+
+  /// abs, min, max, limit, sel, mux (docs/language.md §4): every operand evaluated once, in
+  /// order: one that is not a plain read goes into a temporary first, each value converted to
+  /// the result type; then C's conditional operator chooses as the interpreter does
+  /// (constant::standard). No helper functions, no <math.h>: the same C on every target.
+  Rendered standard(const Expr &e) {
+    using B = Expr::Builtin;
+    if (e.folded && e.type == Type::Bool) return {e.bool_value ? "true" : "false"};
+    if (e.folded && e.type == Type::Double) {
+      Rendered v{constant::float_spelling(e.float_value, Type::Double), e.float_value < 0 ? kUnary : kPrimary};
+      return v;
+    }
+    if (in_folded_) {  // the comment of a folded value: the chart's call
+      std::string text = std::string(model::builtin_name(e.builtin)) + "(";
+      for (std::size_t i = 0; i < e.args.size(); ++i) text += (i ? ", " : "") + render(e.args[i]).text;
+      return {text + ")"};
+    }
+    const bool selects = e.builtin == B::Sel || e.builtin == B::Mux;
+    std::vector<std::string> before, v;
+    for (std::size_t i = 0; i < e.args.size(); ++i) {
+      const Expr &a = e.args[i];
+      const Type to = selects && i == 0 ? a.type : e.type;
+      const bool plain = plain_read(a);
+      Rendered r = render(plain ? a : unbracketed(a));
+      for (auto &b : r.before) before.push_back(std::move(b));
+      r.before.clear();
+      r = converted(std::move(r), a, to);
+      if (plain) {
+        v.push_back(r.prec < kPrimary ? bracket(r.text) : r.text);
+        continue;
+      }
+      std::string name = temps_.add(to);
+      before.push_back(fmt::format("{} = {}", name, r.text));
+      v.push_back(std::move(name));
+    }
+    const Type t = e.type;
+    const char *zero = t == Type::Bool ? "false" : t == Type::Float ? "0.0f" : t == Type::Double ? "0.0" : "0";
+    if (e.builtin == B::Abs && model::is_unsigned(t)) return {v[0], kPrimary, std::move(before)};
+    std::string choice;  // a conditional expression, not bracketed
+    switch (e.builtin) {
+    case B::Abs: choice = fmt::format("({} < {}) ? -{} : {}", v[0], zero, v[0], v[0]); break;
+    case B::Min:
+    case B::Max: {
+      // The first of equal values stays, as MatIEC's MIN and MAX keep it.
+      const char *op = e.builtin == B::Max ? "<" : ">";
+      std::string best = v[0];
+      if (v.size() > 2) {  // the best so far in a temporary of its own
+        best = temps_.add(t);
+        before.push_back(fmt::format("{} = {}", best, v[0]));
+        for (std::size_t i = 1; i + 1 < v.size(); ++i)
+          before.push_back(fmt::format("{} = {}", best,
+                                       narrowed(fmt::format("({} {} {}) ? {} : {}", best, op, v[i], v[i], best), t)));
+      }
+      choice = fmt::format("({} {} {}) ? {} : {}", best, op, v.back(), v.back(), best);
+      break;
+    }
+    case B::Limit:
+      choice = fmt::format("({} > {}) ? (({} < {}) ? {} : {}) : {}", v[1], v[0], v[1], v[2], v[1], v[2], v[0]);
+      break;
+    case B::Sel: choice = fmt::format("{} ? {} : {}", v[0], v[2], v[1]); break;
+    case B::Mux:
+      // A selector out of range gives zero, as MatIEC's MUX does.
+      choice = zero;
+      for (std::size_t i = v.size() - 1; i >= 1; --i)
+        choice = fmt::format("({} == {}) ? {} : {}", v[0], i - 1, v[i], i + 1 == v.size() ? choice : bracket(choice));
+      break;
+    }
+    if (model::is_sized(t) && model::integer_bits(t) < 32) return {narrowed(choice, t), kUnary, std::move(before)};
+    return {bracket(choice), kPrimary, std::move(before)};
   }
 
   /// A constant is written as its folded value, named in a comment: no C name of the chart's can

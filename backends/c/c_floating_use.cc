@@ -47,6 +47,10 @@ public:
         use_.arithmetic |= is_floating(a.type) && e.type == a.type;
       }
     }
+    if (e.kind == Expr::Kind::Builtin) {  // abs, min, ... compare (and abs negates) in their type
+      for (const auto &a : e.args) type(a.type);
+      use_.arithmetic |= is_floating(e.type);
+    }
     for (const auto &a : e.args) expr(a);
   }
 

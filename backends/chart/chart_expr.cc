@@ -100,6 +100,7 @@ std::string expr(const model::Model &m, model::ChartId chart, const model::Expr 
   case K::ActionA: return fmt::format("running({})", name(c.actions[e.action()].name.view()));
   case K::Now: return "now()";
   case K::Convert: return fmt::format("{}({})", model::type_name(e.type), expr(m, chart, e.args[0]));
+  case K::Builtin: return fmt::format("{}({})", model::builtin_name(e.builtin), args_of(m, chart, e.args));
   }
   return "";
 }

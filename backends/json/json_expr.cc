@@ -34,6 +34,7 @@ const char *kind_name(Expr::Kind k) {
   case Expr::Kind::ActionA: return "running";
   case Expr::Kind::Now: return "now";
   case Expr::Kind::Convert: return "convert";
+  case Expr::Kind::Builtin: return "builtin";
   default: break;
   }
   return "?";
@@ -105,6 +106,10 @@ Json expression_tree(const model::Model &m, const Scope &scope, const Expr &e) {
     break;
   case Expr::Kind::Paren:
   case Expr::Kind::Convert: j["args"] = args(); break;  // a conversion: to `type`
+  case Expr::Kind::Builtin:                             // a standard function: "abs", "min", ...
+    j["function"] = model::builtin_name(e.builtin);
+    j["args"] = args();
+    break;
   case Expr::Kind::Active: {
     // The names along the path, each a place or state of the chart the previous one runs.
     Json path = Json::array();

@@ -51,6 +51,7 @@ std::string key(const Expr &e) {
   if (e.kind == Expr::Kind::Paren && !e.args.empty()) return key(e.args[0]);
   std::string k = fmt::format("{}:{}:{}:{}:{}:{}:{}", static_cast<int>(e.kind), named(e), e.text, e.bool_value, e.ticks,
                               static_cast<int>(e.unary_op), static_cast<int>(e.binary_op));
+  if (e.kind == Expr::Kind::Builtin) k += model::builtin_name(e.builtin);  // max(a, b) is not min(a, b)
   for (const auto &a : e.args) k += "(" + key(a) + ")";
   // active(P.Q) and active(P.R) are different atoms: the path is part of the spelling.
   for (model::PlaceId p : e.path) k += fmt::format(".{}", p.index());

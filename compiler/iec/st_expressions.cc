@@ -415,6 +415,10 @@ StParser::Node StParser::name_use() {
       e->args.push_back(std::move(arg.e));
       return {std::move(e), arg.height + 1};
     }
+    // ABS, MIN, MAX, LIMIT, SEL and MUX are the chart language's standard functions (docs/iec.md).
+    static const char *const kStandard[] = {"abs", "min", "max", "limit", "sel", "mux"};
+    for (const char *f : kStandard)
+      if (call == upper(f)) return standard_call(t, f);
     not_supported(range(t), fmt::format("calling '{}' is not supported yet: gfec reads no functions or function "
                                         "blocks in structured text",
                                         t.text));
@@ -431,6 +435,125 @@ StParser::Node StParser::name_use() {
   auto e = make(ast::Expr::Kind::Name, range(t));
   e->name = name(t);
   return {std::move(e), 0};
+}
+
+namespace {
+
+/// The formal names of a standard function's inputs (IEC 61131-3's, as MatIEC spells them), the
+/// position of `formal` among them; -1 if it has none of that name. MIN, MAX and MUX are
+/// extensible: IN1, IN2, ... and IN0, IN1, ...
+int formal_position(std::string_view function, const std::string &formal) {
+  auto numbered = [&](int first) {
+    if (formal.size() < 3 || formal.compare(0, 2, "IN") != 0 || formal.size() > 5) return -1;
+    int n = 0;
+    for (char c : formal.substr(2)) {
+      if (c < '0' || c > '9') return -1;
+      n = n * 10 + (c - '0');
+    }
+    return n >= first ? n - first : -1;
+  };
+  if (function == "abs") return formal == "IN" ? 0 : -1;
+  if (function == "min" || function == "max") return numbered(1);
+  if (function == "limit") return formal == "MN" ? 0 : formal == "IN" ? 1 : formal == "MX" ? 2 : -1;
+  if (function == "sel") return formal == "G" ? 0 : formal == "IN0" ? 1 : formal == "IN1" ? 2 : -1;
+  if (function == "mux") return formal == "K" ? 0 : numbered(0) < 0 ? -1 : numbered(0) + 1;
+  return -1;
+}
+
+const char *formal_names(std::string_view function) {
+  if (function == "abs") return "IN";
+  if (function == "min" || function == "max") return "IN1, IN2, ...";
+  if (function == "limit") return "MN, IN, MX";
+  if (function == "sel") return "G, IN0, IN1";
+  return "K, IN0, IN1, ...";
+}
+
+}  // namespace
+
+StParser::Node StParser::standard_call(const StToken &t, const char *chart) {
+  next();  // (
+  if (++depth_ > kMaxStNesting) {
+    --depth_;
+    error(range(t), fmt::format("expression nested too deeply (more than {} levels)", kMaxStNesting),
+          ErrorKind::Nesting);
+    return {};
+  }
+  struct Argument {
+    std::string formal;  ///< upper case; empty when positional
+    SourceRange at;
+    ast::ExprPtr e;
+  };
+  std::vector<Argument> args;
+  int height = 0;
+  while (tok().kind != StTok::RParen) {
+    Argument a;
+    if (tok().kind == StTok::Ident && peek().kind == StTok::Assign) {
+      a.formal = upper(tok().text);
+      a.at = range(tok());
+      next();
+      next();
+    }
+    Node v = or_expr();
+    if (!v.e) {
+      --depth_;
+      return {};
+    }
+    if (a.formal.empty()) a.at = v.e->range;
+    height = std::max(height, v.height);
+    a.e = std::move(v.e);
+    args.push_back(std::move(a));
+    if (tok().kind == StTok::Comma) {
+      next();
+      continue;
+    }
+    if (tok().kind != StTok::RParen) {
+      --depth_;
+      error(range(tok()), fmt::format("expected ',' or ')' in the call of '{}', not {}", t.text, quoted()));
+      return {};
+    }
+  }
+  --depth_;
+  const StToken close = tok();
+  next();
+  auto e = make(ast::Expr::Kind::Call, range(t, close));
+  e->name = {std::string_view(chart), range(t)};
+  const bool formal = !args.empty() && !args[0].formal.empty();
+  std::vector<ast::ExprPtr> placed;
+  for (Argument &a : args) {
+    if (a.formal.empty() == formal) {
+      error(a.at, fmt::format("the call of '{}' mixes formal ('IN := x') and positional arguments", t.text));
+      return {};
+    }
+    if (!formal) {
+      e->args.push_back(std::move(a.e));
+      continue;
+    }
+    const int at = formal_position(chart, a.formal);
+    if (a.formal == "EN" || a.formal == "ENO") {
+      not_supported(a.at, fmt::format("'{}' of '{}' is not supported yet", a.formal, t.text));
+      return {};
+    }
+    if (at < 0) {
+      error(a.at, fmt::format("'{}' has no input '{}' (its inputs: {})", t.text, a.formal, formal_names(chart)));
+      return {};
+    }
+    const auto i = static_cast<std::size_t>(at);
+    if (i >= placed.size()) placed.resize(i + 1);
+    if (placed[i]) {
+      error(a.at, fmt::format("input '{}' of '{}' is given twice", a.formal, t.text));
+      return {};
+    }
+    placed[i] = std::move(a.e);
+  }
+  for (auto &p : placed) {
+    if (!p) {
+      error(range(t, close),
+            fmt::format("the call of '{}' leaves out an input (its inputs: {})", t.text, formal_names(chart)));
+      return {};
+    }
+    e->args.push_back(std::move(p));
+  }
+  return {std::move(e), height + 1};
 }
 
 }  // namespace gfec::iec

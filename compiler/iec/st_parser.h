@@ -84,6 +84,9 @@ private:
   Node binary(Node lhs, Node rhs, BinaryOp op, const StToken &at);
   Node literal();
   Node name_use();
+  /// `MAX(a, b)`, `LIMIT(MN := 0, IN := x, MX := 9)`: a standard function the chart language has
+  /// (`chart` its name there), once `t` and the `(` after it are read.
+  Node standard_call(const StToken &t, const char *chart);
 
   void statement(ast::Block &out);
   /// `:= value;` once the target is read: an assignment to `target`, `first` its first token.

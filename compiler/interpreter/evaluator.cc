@@ -131,6 +131,21 @@ Value binary(const Expr &e, Frame &f) {
   return comparison(op, a, b, e.range);
 }
 
+/// A standard function: every operand evaluated, in order, then computed by the one evaluator;
+/// `abs` of a type's lowest value overflows as `-x` does.
+Value standard(const Expr &e, Frame &f) {
+  std::vector<Value> args;
+  for (const auto &a : e.args) args.push_back(evaluate(a, f));
+  constant::Outcome r = constant::standard(e.builtin, args, e.type);
+  if (r) return r.value;
+  if (r.fault == constant::Fault::IntOverflow) {
+    if (e.type == Type::Int) throw RuntimeError(e.range, "int overflow: abs(-2147483648) (undefined behaviour in C)");
+    throw RuntimeError(e.range, fmt::format("{} overflow: abs({}) does not fit in '{}'", model::type_name(e.type),
+                                            constant::text(args.at(0)), model::type_name(e.type)));
+  }
+  throw RuntimeError(e.range, fmt::format("invalid operands to '{}'", model::builtin_name(e.builtin)));
+}
+
 }  // namespace
 
 Value evaluate(const Expr &e, Frame &f) {
@@ -187,6 +202,7 @@ Value evaluate(const Expr &e, Frame &f) {
                              v.type == Type::Float || v.type == Type::Double ? constant::text(v) : format_value(v),
                              model::type_name(e.type)));
   }
+  case Expr::Kind::Builtin: return standard(e, f);
   case Expr::Kind::Config: break;
   default: throw RuntimeError(e.range, "this expression is not supported by the interpreter yet");
   }

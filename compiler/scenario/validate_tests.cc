@@ -124,9 +124,10 @@ public:
       what = chart_.out.vars[local->id<model::VarId>()].role == model::VarRole::Out ? "an output ('out')"
                                                                                     : "a variable ('var')";
     cx_.diag
-        .error(name.range, ErrorKind::Test,
-               fmt::format("'{}' is {} of '{}': 'set' sets only the chart's inputs ('in', 'inout') and sensing functions",
-                           name.text, what, chart_.out.name))
+        .error(
+            name.range, ErrorKind::Test,
+            fmt::format("'{}' is {} of '{}': 'set' sets only the chart's inputs ('in', 'inout') and sensing functions",
+                        name.text, what, chart_.out.name))
         .note(local->range, fmt::format("'{}' declared here", name.text));
     return {};
   }

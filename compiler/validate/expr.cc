@@ -782,6 +782,115 @@ std::optional<model::Expr> lower_conversion(const ast::Expr &e, Type to, ExprSco
   return check_constant(std::move(c), s.cx.model, s.cx.diag);
 }
 
+using Builtin = model::Expr::Builtin;
+
+/// The standard function `name` spells (docs/language.md §4, "Standard functions"), if any.
+std::optional<Builtin> standard_function(std::string_view name) {
+  for (Builtin f : {Builtin::Abs, Builtin::Min, Builtin::Max, Builtin::Limit, Builtin::Sel, Builtin::Mux})
+    if (name == model::builtin_name(f)) return f;
+  return std::nullopt;
+}
+
+/// The type the values `xs` of a standard function mix in, as `a + b` would (§4): an `int`
+/// constant takes the first sized integer type among them, two integer types mix only when one
+/// holds the other, a duration meeting a `time` is a `time`. `selects`: sel and mux, which also
+/// choose among bools. Nothing after reporting why not.
+std::optional<Type> mixed_type(std::vector<model::Expr> &xs, const ast::Expr &e, ExprScope &s, bool selects) {
+  const std::string_view f = e.name.text;
+  for (const model::Expr &x : xs)
+    if (model::is_sized(x.type)) {
+      const Type sized = x.type;
+      for (model::Expr &y : xs)
+        if (!retype_constant(y, sized, s)) return std::nullopt;
+      break;
+    }
+  const bool time = std::any_of(xs.begin(), xs.end(), [](const model::Expr &x) { return x.type == Type::Time; });
+  for (model::Expr &x : xs)
+    if (time && x.type == Type::Duration && !as_time(x, s)) return std::nullopt;
+  auto fits = [&](Type t) { return model::is_numeric(t) || t == Type::Time || (selects && t == Type::Bool); };
+  for (const model::Expr &x : xs)
+    if (!fits(x.type)) {
+      auto &d = s.cx.diag.error(x.range, ErrorKind::TypeMismatch,
+                                fmt::format("'{}' takes {}, not {}", f,
+                                            selects ? "numbers, times or bools" : "numbers or times", quoted(x.type)));
+      duration_note(d, x.type, x.type);
+      return std::nullopt;
+    }
+  Type acc = xs[0].type;
+  for (std::size_t i = 1; i < xs.size(); ++i) {
+    const Type t = xs[i].type;
+    if (t == acc && !model::is_numeric(t)) continue;  // two times, two bools
+    if (model::is_numeric(acc) && model::is_numeric(t))
+      if (auto r = binary_type(BinaryOp::Add, acc, t)) {
+        acc = *r;
+        continue;
+      }
+    auto &d = s.cx.diag.error(xs[i].range, ErrorKind::TypeMismatch,
+                              fmt::format("the values of '{}' do not mix: {} and {}", f, quoted(acc), quoted(t)));
+    if (model::is_integer(acc) && model::is_integer(t))
+      d.note(fmt::format("neither '{}' nor '{}' holds every value of the other; convert one, e.g. '{}(x)'",
+                         model::type_name(acc), model::type_name(t), model::type_name(acc)));
+    else duration_note(d, acc, t);
+    return std::nullopt;
+  }
+  return acc;
+}
+
+/// `abs(x)`, `min(a, b, ...)`, `max(a, b, ...)`, `limit(mn, x, mx)`, `sel(g, a, b)`,
+/// `mux(k, a, b, ...)`: IEC 61131-3's standard functions ABS, MIN, MAX, LIMIT, SEL and MUX. Every
+/// operand is evaluated, in order; constant operands fold.
+std::optional<model::Expr> lower_standard(const ast::Expr &e, Builtin f, ExprScope &s, bool statement) {
+  const std::string_view name = e.name.text;
+  std::vector<std::optional<model::Expr>> lowered;
+  for (const auto &a : e.args) lowered.push_back(lower_expr(a, s));
+  const std::size_t n = e.args.size();
+  const char *wanted = nullptr;
+  switch (f) {
+  case Builtin::Abs: wanted = n == 1 ? nullptr : "one value"; break;
+  case Builtin::Min:
+  case Builtin::Max: wanted = n >= 2 ? nullptr : "two or more values"; break;
+  case Builtin::Limit: wanted = n == 3 ? nullptr : "three values: the lowest, the value and the highest"; break;
+  case Builtin::Sel: wanted = n == 3 ? nullptr : "a bool and two values: 'sel(g, a, b)' is a when g is false"; break;
+  case Builtin::Mux: wanted = n >= 3 ? nullptr : "an integer and two or more values: 'mux(k, a, b, ...)'"; break;
+  }
+  if (wanted) {
+    s.cx.diag.error(e.range, ErrorKind::ArgumentCount, fmt::format("'{}' takes {} (have {})", name, wanted, n));
+    return std::nullopt;
+  }
+  if (statement) {
+    s.cx.diag.error(e.range, ErrorKind::TypeMismatch, fmt::format("'{}()' as a statement has no effect", name));
+    return std::nullopt;
+  }
+  for (const auto &a : lowered)
+    if (!a) return std::nullopt;
+  const bool selects = f == Builtin::Sel || f == Builtin::Mux;
+  if (f == Builtin::Sel && lowered[0]->type != Type::Bool) {
+    s.cx.diag.error(lowered[0]->range, ErrorKind::TypeMismatch,
+                    fmt::format("the selector of 'sel' must be bool, not {}", quoted(lowered[0]->type)));
+    return std::nullopt;
+  }
+  if (f == Builtin::Mux && !model::is_integer(lowered[0]->type)) {
+    s.cx.diag.error(lowered[0]->range, ErrorKind::TypeMismatch,
+                    fmt::format("the selector of 'mux' must be an integer, not {}", quoted(lowered[0]->type)));
+    return std::nullopt;
+  }
+  std::vector<model::Expr> values;
+  for (std::size_t i = selects ? 1 : 0; i < n; ++i) values.push_back(std::move(*lowered[i]));
+  if (f == Builtin::Abs && !model::is_numeric(values[0].type)) {
+    auto &d = s.cx.diag.error(values[0].range, ErrorKind::TypeMismatch,
+                              fmt::format("'abs' takes a number, not {}", quoted(values[0].type)));
+    duration_note(d, values[0].type, values[0].type);
+    return std::nullopt;
+  }
+  auto type = mixed_type(values, e, s, selects);
+  if (!type) return std::nullopt;
+  model::Expr x = make(K::Builtin, *type, e.range);
+  x.builtin = f;
+  if (selects) x.args.push_back(std::move(*lowered[0]));
+  for (auto &v : values) x.args.push_back(std::move(v));
+  return check_constant(std::move(x), s.cx.model, s.cx.diag);
+}
+
 }  // namespace
 
 std::optional<model::Expr> lower_call(const ast::Expr &e, ExprScope &s, bool statement) {
@@ -800,6 +909,12 @@ std::optional<model::Expr> lower_call(const ast::Expr &e, ExprScope &s, bool sta
   if (name.text == "team") return lower_team(e, s, statement);
   if (name.text == "agent") return lower_agent(e, s, statement);
   if (name.text == "now") return lower_now(e, s, statement);
+  // A standard function unless an interface declares a function of its name, which a call
+  // then means, as C would (docs/language.md §4).
+  if (auto f = standard_function(name.text)) {
+    const Symbol *declared = s.cx.c_names.find(name.text);
+    if (!declared || declared->kind != Sym::Function) return lower_standard(e, *f, s, statement);
+  }
   if (misspelt_builtin(name, s)) return std::nullopt;
   std::vector<std::optional<model::Expr>> args;
   for (const auto &a : e.args) args.push_back(lower_expr(a, s));

@@ -110,6 +110,15 @@ std::optional<Value> evaluate(const model::Expr &e, const model::Model &m, Diagn
     if (!r) return std::nullopt;
     return r.value;
   }
+  case K::Builtin: {
+    std::vector<Value> args;
+    for (const auto &a : e.args) {
+      auto v = evaluate(a, m, diag);
+      if (!v) return std::nullopt;
+      args.push_back(std::move(*v));
+    }
+    return checked(constant::standard(e.builtin, args, e.type), e.range, diag);
+  }
   default: return std::nullopt;  // runs on the robot: a var, a call, a timer, a config entry
   }
 }

@@ -135,6 +135,14 @@ test('verbatim code, block comments, strings with escapes, floats and exponents'
   assert.equal(scopeOf(tokens, 's', 7), 'keyword.other.unit.gfec');
 });
 
+test('standard functions are built-ins where they are called', () => {
+  const tokens = tokenize('sfc T { var int max = 0; initial place A { max = limit(0, max(1, 2), 9); } }');
+  assert.equal(scopeOf(tokens, 'limit'), 'support.function.builtin.gfec');
+  assert.ok(tokens.some((t) => t.text === 'max' && t.scopes.includes('support.function.builtin.gfec')));
+  assert.ok(tokens.some((t) => t.text === 'max' && !t.scopes.includes('support.function.builtin.gfec')),
+            'a variable named max is no built-in');
+});
+
 test('sub-charts: runs, the built-ins that read them and paths', () => {
   const tokens = tokenize([
     'sfc Patrol {',

@@ -272,3 +272,16 @@ test('json: loops, break and return as statements (tests/run/loops.sfc)', () => 
   assert.equal(scan[4].condition.type, 'bool');
   assert.equal(scan[5].body.length, 1);
 });
+
+test('json: standard functions as builtin nodes (tests/run/standard.sfc)', () => {
+  const doc = emit(path.join(SOURCE_DIR, 'tests', 'run', 'standard.sfc'));
+  const first = doc.places.find((p) => p.name === 'A').action[0];
+  const max = first.call.args[0];
+  assert.equal(max.kind, 'builtin');
+  assert.equal(max.function, 'max');
+  assert.equal(max.type, 'int');
+  assert.deepEqual(max.args.map((a) => a.kind), ['call', 'call']);
+  const text = JSON.stringify(doc);
+  assert.match(text, /"kind":"builtin","type":"int8","function":"abs"/);
+  assert.match(text, /"kind":"builtin","type":"time","function":"limit"/);
+});

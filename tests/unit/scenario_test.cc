@@ -241,7 +241,8 @@ TEST_CASE("set names an input or a sensing function, and an input's value fits i
                    0) == 0);
   // An output, a variable or a place cannot be set.
   CHECK(Checked("test \"t\" of Press { set Seen = 1; }\n").test_errors() ==
-        "t.test:2:25: error: 'Seen' is an output ('out') of 'Press': 'set' sets only the chart's inputs ('in', 'inout') and "
+        "t.test:2:25: error: 'Seen' is an output ('out') of 'Press': 'set' sets only the chart's inputs ('in', "
+        "'inout') and "
         "sensing functions [test]\n"
         " test \"t\" of Press { set Seen = 1; }\n"
         "                         ^~~~\n"
@@ -253,11 +254,13 @@ TEST_CASE("set names an input or a sensing function, and an input's value fits i
             .rfind("t.test:2:25: error: 'n' is a variable ('var') of 'Press': 'set' sets only the chart's inputs "
                    "('in') and sensing functions [test]\n",
                    0) == 0);
-  CHECK(Checked("test \"t\" of Press { set Up = true; }\n")
-            .test_errors()
-            .rfind("t.test:2:25: error: 'Up' is a place of 'Press': 'set' sets only the chart's inputs ('in', 'inout') and "
-                   "sensing functions [test]\n",
-                   0) == 0);
+  CHECK(
+      Checked("test \"t\" of Press { set Up = true; }\n")
+          .test_errors()
+          .rfind(
+              "t.test:2:25: error: 'Up' is a place of 'Press': 'set' sets only the chart's inputs ('in', 'inout') and "
+              "sensing functions [test]\n",
+              0) == 0);
   // A value out of a sized input's range is an error at the constant, as for an initialiser.
   CHECK(Checked("test \"t\" of Press { set Force = 128; }\n").test_errors() ==
         "t.test:2:33: error: value 128 does not fit in 'int8' [not-constant]\n"
