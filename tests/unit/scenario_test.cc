@@ -252,7 +252,7 @@ TEST_CASE("set names an input or a sensing function, and an input's value fits i
   CHECK(Checked("test \"t\" of Press { set n = 1; }\n")
             .test_errors()
             .rfind("t.test:2:25: error: 'n' is a variable ('var') of 'Press': 'set' sets only the chart's inputs "
-                   "('in') and sensing functions [test]\n",
+                   "('in', 'inout') and sensing functions [test]\n",
                    0) == 0);
   CHECK(
       Checked("test \"t\" of Press { set Up = true; }\n")
