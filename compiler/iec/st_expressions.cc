@@ -326,6 +326,15 @@ StParser::Node StParser::name_use() {
     const StToken member = peek();
     next();
     next();
+    if (tok().kind == StTok::Dot || tok().kind == StTok::LBracket) {
+      // `a.b.c`, `a.b[1]`: a structure's field, an instance inside an instance, an array member.
+      const bool field = tok().kind == StTok::Dot && peek().kind == StTok::Ident;
+      not_supported(range(t, field ? peek() : tok()),
+                    fmt::format("'{}.{}{}{}': a member of a member (a structure's field, an instance inside an "
+                                "instance, an element of an array) is not supported yet",
+                                t.text, member.text, field ? "." : "[", field ? peek().text : "...]"));
+      return {};
+    }
     bool x = is_keyword(member, "X"), time = is_keyword(member, "T");
     if (x || time) {
       // `Step.X` is active(Step), `Step.T` elapsed(Step) (docs/iec.md); an unknown step is the
