@@ -42,12 +42,7 @@ Diagnostic &StParser::error(const SourceRange &at, std::string message, ErrorKin
 }
 
 ast::ExprPtr StParser::expression() {
-  if (++depth_ > kMaxStNesting) {
-    --depth_;
-    error(range(tok()), fmt::format("expression nested too deeply (more than {} levels)", kMaxStNesting),
-          ErrorKind::Nesting);
-    return nullptr;
-  }
+  if (!deeper(range(tok()), "expression")) return nullptr;
   Node n = or_expr();
   --depth_;
   return std::move(n.e);
@@ -194,12 +189,7 @@ StParser::Node StParser::unary() {
   StToken op = tok();
   bool neg = op.kind == StTok::Minus, plus = op.kind == StTok::Plus, not_ = keyword("NOT");
   if (!neg && !plus && !not_) return primary();
-  if (++depth_ > kMaxStNesting) {
-    --depth_;
-    error(range(op), fmt::format("expression nested too deeply (more than {} levels)", kMaxStNesting),
-          ErrorKind::Nesting);
-    return {};
-  }
+  if (!deeper(range(op), "expression")) { return {}; }
   next();
   Node operand = unary();
   --depth_;
@@ -275,12 +265,7 @@ StParser::Node StParser::primary() {
   case StTok::String: return literal();
   case StTok::LParen: {
     next();
-    if (++depth_ > kMaxStNesting) {
-      --depth_;
-      error(range(t), fmt::format("expression nested too deeply (more than {} levels)", kMaxStNesting),
-            ErrorKind::Nesting);
-      return {};
-    }
+    if (!deeper(range(t), "expression")) { return {}; }
     Node inner = or_expr();
     --depth_;
     if (!inner.e) return {};
@@ -404,12 +389,7 @@ StParser::Node StParser::name_use() {
     const char *to_type = to == std::string::npos ? nullptr : chart_type(call.substr(to + 4));
     if (from_type && to_type && std::string_view(from_type) != "bool" && std::string_view(to_type) != "bool") {
       next();  // (
-      if (++depth_ > kMaxStNesting) {
-        --depth_;
-        error(range(t), fmt::format("expression nested too deeply (more than {} levels)", kMaxStNesting),
-              ErrorKind::Nesting);
-        return {};
-      }
+      if (!deeper(range(t), "expression")) { return {}; }
       Node arg = or_expr();
       --depth_;
       if (!arg.e) return {};
@@ -481,12 +461,7 @@ const char *formal_names(std::string_view function) {
 
 StParser::Node StParser::standard_call(const StToken &t, const char *chart) {
   next();  // (
-  if (++depth_ > kMaxStNesting) {
-    --depth_;
-    error(range(t), fmt::format("expression nested too deeply (more than {} levels)", kMaxStNesting),
-          ErrorKind::Nesting);
-    return {};
-  }
+  if (!deeper(range(t), "expression")) { return {}; }
   struct Argument {
     std::string formal;  ///< upper case; empty when positional
     SourceRange at;

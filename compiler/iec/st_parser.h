@@ -121,6 +121,9 @@ private:
   void task(Project &project);
   void program_instance(Project &project);
   std::vector<ast::Name> step_list(bool &parenthesised);
+  /// One level deeper (`what`: "expression", "statements"): false, reported at `at`, past
+  /// kMaxStNesting. The caller that got true goes back up with `--depth_`.
+  bool deeper(const SourceRange &at, const char *what);
 
   std::string_view text_;
   const FragmentPlace &place_;

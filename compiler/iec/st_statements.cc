@@ -151,6 +151,13 @@ bool il_operator(const StToken &t) {
 
 }  // namespace
 
+bool StParser::deeper(const SourceRange &at, const char *what) {
+  if (++depth_ <= kMaxStNesting) return true;
+  --depth_;
+  error(at, fmt::format("{} nested too deeply (more than {} levels)", what, kMaxStNesting), ErrorKind::Nesting);
+  return false;
+}
+
 void StParser::loop_statement(ast::Block &out) {
   const StToken start = tok();
   const std::string_view kind = is_keyword(start, "FOR") ? "FOR" : is_keyword(start, "WHILE") ? "WHILE" : "REPEAT";
@@ -173,10 +180,7 @@ void StParser::loop_statement(ast::Block &out) {
     skip_block(kind);
     return;
   }
-  if (++depth_ > kMaxStNesting) {
-    --depth_;
-    error(range(start), fmt::format("statements nested too deeply (more than {} levels)", kMaxStNesting),
-          ErrorKind::Nesting);
+  if (!deeper(range(start), "statements")) {
     skip_block(kind);
     return;
   }
@@ -393,9 +397,7 @@ void StParser::block_call(ast::Block &out) {
       next();
       next();
     }
-    if (!formal) {
-      // A non-formal argument (`CU_T(CU);`): an Assign without a target, bound by the validator
-      // to the block's inputs in declaration order (docs/iec.md "Function blocks").
+    if (!formal || bind == StTok::Assign) {
       ast::ExprPtr value = expression();
       if (!value) {
         skip_statement();
@@ -404,18 +406,12 @@ void StParser::block_call(ast::Block &out) {
       ast::Stmt a;
       a.kind = ast::Stmt::Kind::Assign;
       a.range = value->range;
-      a.value = std::move(value);
-      call.then_block.push_back(std::move(a));
-    } else if (bind == StTok::Assign) {
-      ast::ExprPtr value = expression();
-      if (!value) {
-        skip_statement();
-        return;
+      // A non-formal argument (`CU_T(CU);`) is an Assign without a target, bound by the validator
+      // to the block's inputs in declaration order (docs/iec.md "Function blocks").
+      if (formal) {
+        a.target.emplace(name(param));
+        a.range.begin = range(param).begin;
       }
-      ast::Stmt a;
-      a.kind = ast::Stmt::Kind::Assign;
-      a.target.emplace(name(param));
-      a.range = {value->range.file, range(param).begin, value->range.end};
       a.value = std::move(value);
       call.then_block.push_back(std::move(a));
     } else {
@@ -480,10 +476,7 @@ void StParser::if_statement(ast::Block &out) {
       ok = false;
     }
     if (keyword("THEN")) next();
-    if (++depth_ > kMaxStNesting) {
-      --depth_;
-      error(range(kw), fmt::format("statements nested too deeply (more than {} levels)", kMaxStNesting),
-            ErrorKind::Nesting);
+    if (!deeper(range(kw), "statements")) {
       skip_block("IF");
       return;
     }
@@ -565,10 +558,7 @@ void StParser::case_statement(ast::Block &out) {
   };
   std::vector<Branch> branches;
   ast::Block otherwise;
-  if (++depth_ > kMaxStNesting) {
-    --depth_;
-    error(range(start), fmt::format("statements nested too deeply (more than {} levels)", kMaxStNesting),
-          ErrorKind::Nesting);
+  if (!deeper(range(start), "statements")) {
     skip_block("CASE");
     return;
   }
