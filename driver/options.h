@@ -1,6 +1,7 @@
 // Everything the command line says, in one value passed down (no option globals).
 #pragma once
 
+#include "period_text.h"
 #include "backend_registry.h"
 #include "diagnostics.h"
 
@@ -82,10 +83,6 @@ struct FrontEndFlags {
   /// Applies them to `o` (-w last, as gcc); returns "" or the usage error.
   std::string apply(Options &o) const;
 };
-
-/// --period's value in milliseconds: a duration of the chart language (`10ms`, `1.5s`) or an IEC
-/// TIME literal (`T#10ms`, `TIME#1s500ms`, `t#2s`); nullopt when it is neither or not above 0.
-std::optional<double> parse_period(std::string_view written);
 
 /// The options every command takes alike, so that `gfec run` and `gfec test` read a chart as gfec
 /// does: -I and -x into `o`, and -W..., -w and -f... (diagnostics, -fmax-errors) into `flags`

@@ -1,8 +1,9 @@
 // initialize, initialized, shutdown (LSP 3.17 "Lifecycle Messages"); `exit` ends the loop in
 // server.cc. initializationOptions: {"includeDirs": [...] (as -I), "warnings": ["all",
-// "no-unused-var", ...] (as -W)}.
+// "no-unused-var", ...] (as -W), "period": "10ms" (as --period)}.
 #include "diagnostics.h"
 #include "methods.h"
+#include "period_text.h"
 #include "uri.h"
 
 namespace gfec::lsp::handlers {
@@ -29,6 +30,13 @@ void read_options(Session &s, const json &options) {
         throw RequestError{error_code::kInvalidParams, "initializationOptions.warnings: no warning '" + name + "'"};
       }
     }
+  if (options.contains("period")) {
+    const json &p = options["period"];
+    s.front_end.period_ms = p.is_string() ? parse_period(p.get<std::string>()) : std::nullopt;
+    if (!s.front_end.period_ms)
+      throw RequestError{error_code::kInvalidParams,
+                         "initializationOptions.period: not a duration above 0 (write it as 10ms, 1.5s or T#10ms)"};
+  }
 }
 
 }  // namespace
