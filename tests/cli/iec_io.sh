@@ -41,13 +41,9 @@ cmp direct/engine.h back/engine.h || fail "the converted chart compiles to anoth
 # gfec test sets the inputs (`set Start = true;`) on the interpreter and on the C engine: every
 # type an input may have; an expectation that would hold if `set` were ignored fails on both.
 tests=$2/tests/iec/test
-"$gfec" test "$tests/inputs.test" > test.txt 2> test.err || fail "inputs.test: $(cat test.err)"
-grep -qx '4 passed, 0 failed' test.txt || fail "inputs.test: $(cat test.txt)"
-status=0
-"$gfec" test "$tests/inputs_wrong.test" > wrong.txt 2> wrong.err || status=$?
-[[ $status == 1 ]] || fail "inputs_wrong.test: exit $status, not 1"
-grep -q "inputs_wrong.test:8:3: error: expectation failed: Seen == 5 \[expectation\]" wrong.err || fail "inputs_wrong.test: $(cat wrong.err)"
-grep -q "expectation failed: Tally == 12 \[expectation\]" wrong.err || fail "inputs_wrong.test: an inout's set ignored: $(cat wrong.err)"
-[[ $(grep -c 'error:' wrong.err) == 2 ]] || fail "inputs_wrong.test: $(cat wrong.err)"
-if grep -q ' only; it holds on ' wrong.err; then fail "inputs_wrong.test: one run ignored 'set': $(cat wrong.err)"; fi
+source "$(dirname "$caller")/scenario_checks.sh"
+tests_pass "$tests/inputs.test" 4
+tests_fail_with "$tests/inputs_wrong.test" \
+  "inputs_wrong.test:8:3: error: expectation failed: Seen == 5 \[expectation\]" \
+  "inputs_wrong.test:16:3: error: expectation failed: Tally == 12 \[expectation\]"
 echo "iec_io: ok"

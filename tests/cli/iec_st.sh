@@ -67,22 +67,13 @@ grep -q '^ *in bool Start;  // AT %IX0.0$' located.sfc || fail "located.st: --em
 # test file imports the .st file; each test runs on the interpreter and on the C engine, which
 # must agree on the program's sized-integer and TIME outputs too. A wrong expectation fails.
 tests=$2/tests/iec/test
-"$gfec" test "$tests/blink.test" > test.txt 2> test.err || fail "blink.test: $(cat test.err)"
-grep -qx '4 passed, 0 failed' test.txt || fail "blink.test: $(cat test.txt)"
+source "$(dirname "$caller")/scenario_checks.sh"
+tests_pass "$tests/blink.test" 4
 # `set` of a program's VAR_INPUTs (a BOOL latch and an INT limit): honoured on both runs, so the
 # expectations that would hold if it were ignored fail, each on both runs.
-"$gfec" test "$tests/counter.test" > test.txt 2> test.err || fail "counter.test: $(cat test.err)"
-grep -qx '3 passed, 0 failed' test.txt || fail "counter.test: $(cat test.txt)"
-status=0
-"$gfec" test "$tests/counter_wrong.test" > wrong.txt 2> wrong.err || status=$?
-[[ $status == 1 ]] || fail "counter_wrong.test: exit $status, not 1"
-grep -q "counter_wrong.test:8:3: error: expectation failed: Count == 0 \[expectation\]" wrong.err || fail "counter_wrong.test: $(cat wrong.err)"
-grep -q "counter_wrong.test:14:3: error: expectation failed: Count == 3 \[expectation\]" wrong.err || fail "counter_wrong.test: $(cat wrong.err)"
-[[ $(grep -c 'error:' wrong.err) == 2 ]] || fail "counter_wrong.test: not the two wrong expectations: $(cat wrong.err)"
-if grep -q ' only; it holds on ' wrong.err; then fail "counter_wrong.test: one run ignored 'set': $(cat wrong.err)"; fi
-status=0
-"$gfec" test "$tests/wrong.test" > wrong.txt 2> wrong.err || status=$?
-[[ $status == 1 ]] || fail "wrong.test: exit $status, not 1"
-grep -q "wrong.test:25:3: error: expectation failed: Cycles == 11 \[expectation\]" wrong.err || fail "wrong.test: $(cat wrong.err)"
-[[ $(grep -c 'error:' wrong.err) == 1 ]] || fail "wrong.test: more than the one wrong expectation fails: $(cat wrong.err)"
+tests_pass "$tests/counter.test" 3
+tests_fail_with "$tests/counter_wrong.test" \
+  "counter_wrong.test:8:3: error: expectation failed: Count == 0 \[expectation\]" \
+  "counter_wrong.test:14:3: error: expectation failed: Count == 3 \[expectation\]"
+tests_fail_with "$tests/wrong.test" "wrong.test:25:3: error: expectation failed: Cycles == 11 \[expectation\]"
 echo "iec_st: ok"

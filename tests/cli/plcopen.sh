@@ -14,6 +14,19 @@ dir=$2/tests/iec/plcopen
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
+# Both engine forms of SRC, driven by a caller generated from their header and fed CSV, print
+# REFERENCE (what gfec run printed). Arguments after REFERENCE go to gfec (--chart POU).
+engines_agree() { # LABEL SRC CSV CHART TICKS REFERENCE [GFEC-ARG...]; TICKS "" for the trace's
+  local label=$1 src=$2 csv=$3 chart=$4 ticks=$5 reference=$6 form
+  shift 6
+  for form in readable scalable; do
+    "$gfec" "$src" "$@" --engine=$form -o engine.c
+    python3 "$caller" engine.h "$csv" "$chart" $ticks > main.c
+    cc -std=c99 -Wall -Wextra -Wpedantic -Werror main.c engine.c -o run || fail "$label: the $form engine does not build"
+    ./run > engine.txt
+    diff -u "$reference" engine.txt || fail "$label: the $form engine differs from gfec run"
+  done
+}
 cd "$work"
 
 
@@ -30,13 +43,7 @@ for producer in beremiz openplc codesys twincat tc6_old; do
     fail "$producer: gfec run fails: $(cat run.err)"
   grep -v '^av' run.txt > outs.txt
   diff -u "$dir/mixer.expected" outs.txt || fail "$producer: gfec run's outputs differ from mixer.expected"
-  for form in readable scalable; do
-    "$gfec" "$src" --engine=$form -o engine.c 2> /dev/null
-    python3 "$caller" engine.h "$dir/mixer.csv" Mixer 14 > main.c
-    cc -std=c99 -Wall -Wextra -Wpedantic -Werror main.c engine.c -o run || fail "$producer: the $form engine does not build"
-    ./run > engine.txt
-    diff -u run.txt engine.txt || fail "$producer: the $form engine differs from gfec run"
-  done
+  engines_agree "$producer" "$src" "$dir/mixer.csv" Mixer 14 run.txt
   # The converted chart text compiles to the same engine.
   rm -rf direct back && mkdir direct back
   "$gfec" --emit=chart "$src" -o back/Mixer.sfc 2> /dev/null
@@ -53,13 +60,7 @@ done
 # hand, both engine forms agree, and the converted chart compiles to the same engine.
 "$gfec" run "$dir/macro.xml" --inputs "$dir/macro.csv" --observable > macro.txt || fail "macro.xml: gfec run fails"
 diff -u "$dir/macro.expected" macro.txt || fail "macro.xml: gfec run differs from macro.expected"
-for form in readable scalable; do
-  "$gfec" "$dir/macro.xml" --engine=$form -o engine.c
-  python3 "$caller" engine.h "$dir/macro.csv" Press > main.c
-  cc -std=c99 -Wall -Wextra -Wpedantic -Werror main.c engine.c -o run || fail "macro.xml: the $form engine does not build"
-  ./run > engine.txt
-  diff -u macro.txt engine.txt || fail "macro.xml: the $form engine differs from gfec run"
-done
+engines_agree "macro.xml" "$dir/macro.xml" "$dir/macro.csv" Press "" macro.txt
 rm -rf direct back && mkdir direct back
 "$gfec" --emit=chart "$dir/macro.xml" -o back/Press.sfc
 "$gfec" "$dir/macro.xml" --no-line-directives -o direct/engine.c
@@ -89,13 +90,7 @@ diff -u "$dir/../st/blocks.expected" st_blocks.txt || fail "st_blocks.xml runs t
 "$gfec" run "$dir/globals.xml" --inputs "$dir/../st/globals.csv" --observable > globals.txt ||
   fail "globals.xml: gfec run fails"
 diff -u "$dir/../st/globals.expected" globals.txt || fail "globals.xml runs to another log than tests/iec/st/globals.st"
-for form in readable scalable; do
-  "$gfec" "$dir/globals.xml" --engine=$form -o engine.c
-  python3 "$caller" engine.h "$dir/../st/globals.csv" Station > main.c
-  cc -std=c99 -Wall -Wextra -Wpedantic -Werror main.c engine.c -o run || fail "globals.xml: the $form engine does not build"
-  ./run > engine.txt
-  diff -u globals.txt engine.txt || fail "globals.xml: the $form engine differs from gfec run"
-done
+engines_agree "globals.xml" "$dir/globals.xml" "$dir/../st/globals.csv" Station "" globals.txt
 
 # A generated project: program Big of 500 steps and 23 more SFC programs, read, checked, compiled
 # and built; its engine and the interpreter agree.
@@ -130,13 +125,7 @@ for case in gates:Gates:4 latch:Latch:6 seq:Seq:7; do
   "$gfec" run "$dir/networks.xml" --chart "$pou" --inputs "$dir/$name.csv" --observable --ticks "$ticks" > run.txt 2> run.err ||
     fail "networks.xml $pou: gfec run fails: $(cat run.err)"
   grep -v '^av' run.txt | diff -u "$dir/$name.expected" - || fail "networks.xml $pou: outputs differ from $name.expected"
-  for form in readable scalable; do
-    "$gfec" "$dir/networks.xml" --chart "$pou" --engine=$form -o engine.c
-    python3 "$caller" engine.h "$dir/$name.csv" "$pou" "$ticks" > main.c
-    cc -std=c99 -Wall -Wextra -Wpedantic -Werror main.c engine.c -o run || fail "networks.xml $pou: the $form engine does not build"
-    ./run > engine.txt
-    diff -u run.txt engine.txt || fail "networks.xml $pou: the $form engine differs from gfec run"
-  done
+  engines_agree "networks.xml $pou" "$dir/networks.xml" "$dir/$name.csv" "$pou" "$ticks" run.txt --chart "$pou"
   rm -rf direct back && mkdir direct back
   "$gfec" --emit=chart "$dir/networks.xml" --chart "$pou" -o "back/$pou.sfc"
   "$gfec" "$dir/networks.xml" --chart "$pou" --no-line-directives -o direct/engine.c
@@ -150,13 +139,7 @@ done
 "$gfec" run "$dir/standard_fbd.xml" --chart Clamp --inputs "$dir/standard_fbd.csv" --observable --ticks 4 > run.txt 2> run.err ||
   fail "standard_fbd.xml: gfec run fails: $(cat run.err)"
 grep -v '^av' run.txt | diff -u "$dir/standard_fbd.expected" - || fail "standard_fbd.xml: outputs differ from standard_fbd.expected"
-for form in readable scalable; do
-  "$gfec" "$dir/standard_fbd.xml" --chart Clamp --engine=$form -o engine.c
-  python3 "$caller" engine.h "$dir/standard_fbd.csv" Clamp 4 > main.c
-  cc -std=c99 -Wall -Wextra -Wpedantic -Werror main.c engine.c -o run || fail "standard_fbd.xml: the $form engine does not build"
-  ./run > engine.txt
-  diff -u run.txt engine.txt || fail "standard_fbd.xml: the $form engine differs from gfec run"
-done
+engines_agree "standard_fbd.xml" "$dir/standard_fbd.xml" "$dir/standard_fbd.csv" Clamp 4 run.txt --chart Clamp
 
 # XML that is not PLCopen, as a PLC project's folder holds it (a Beremiz project's beremiz.xml, a
 # Maven POM): one located error naming the root or the namespace, exit 1, never chart text's
