@@ -21,7 +21,7 @@ namespace gfec::iec {
 /// A variable section. The readers report the others (VAR_IN_OUT, VAR_TEMP, a POU's VAR_GLOBAL,
 /// ...) as located "not supported yet" errors. External is a POU's VAR_EXTERNAL, which names a
 /// Global: a VAR_GLOBAL of a CONFIGURATION or RESOURCE (docs/iec.md "Global variables").
-enum class Section : std::uint8_t { Input, Output, Local, External, Global };
+enum class Section : std::uint8_t { Input, Output, Local, External, Global, InOut };
 
 /// `Start : BOOL;`, `Count : DINT := 3;` in one of the sections.
 struct Variable {

@@ -189,8 +189,11 @@ template <typename Stmts> void bool_literals_in(Stmts &block, const std::vector<
 
 ast::ValueDecl lower_variable(Variable &v, Diagnostics &diag, const KnownBlocks *known = nullptr) {
   ast::ValueDecl d;
+  // A PROGRAM's VAR_IN_OUT is the caller's variable, read and written by the scan: an `inout`
+  // (docs/iec.md "What a program is in gfec's chart language").
   d.role = v.section == Section::Input    ? ast::VarRole::In
            : v.section == Section::Output ? ast::VarRole::Out
+           : v.section == Section::InOut  ? ast::VarRole::InOut
                                           : ast::VarRole::Local;
   d.is_const = v.constant && v.section == Section::Local;
   d.name = v.name;
@@ -402,6 +405,15 @@ void lower_function_block(Pou &pou, ast::File &file, Diagnostics &diag, const Kn
   b.name = pou.name;
   b.range = pou.range;
   for (Variable &v : pou.variables) {
+    if (v.section == Section::InOut) {
+      // A block's VAR_IN_OUT is a reference to its caller's variable; an instance's members are
+      // its own copies (docs/iec.md "Function blocks").
+      diag.error(v.name.range, ErrorKind::NotSupported,
+                 fmt::format("a VAR_IN_OUT in a function block ('{}' of '{}') is not supported yet: pass it as "
+                             "an input and read it back as an output",
+                             v.name.text, pou.name.text));
+      continue;
+    }
     if (v.section == Section::External) {
       // A block is inlined into every program that holds an instance (docs/iec.md "Global
       // variables"): reaching a program's global from inside it is not done yet.

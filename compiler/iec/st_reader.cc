@@ -168,9 +168,10 @@ void StParser::var_section(Pou &pou, std::optional<Section> given) {
   else if (k == "VAR_OUTPUT") section = Section::Output;
   else if (k == "VAR") section = Section::Local;
   else if (k == "VAR_EXTERNAL") section = Section::External;
+  else if (k == "VAR_IN_OUT") section = Section::InOut;
   else {
     not_supported(range(kw), fmt::format("'{}' sections are not supported yet: gfec reads VAR_INPUT, VAR_OUTPUT, "
-                                         "VAR and VAR_EXTERNAL",
+                                         "VAR_IN_OUT, VAR and VAR_EXTERNAL",
                                          kw.text));
     skip_block("VAR");
     return;

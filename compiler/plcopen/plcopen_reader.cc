@@ -203,10 +203,11 @@ void Reader::read_interface(const pugi::xml_node &interface, iec::Pou &pou) {
     else if (kind == "outputVars") s = iec::Section::Output;
     else if (kind == "localVars") s = iec::Section::Local;
     else if (kind == "externalVars") s = iec::Section::External;
+    else if (kind == "inOutVars") s = iec::Section::InOut;
     if (!s) {
       if (child(section, "variable"))
         not_supported(section, fmt::format("a {} section is not supported yet: gfec reads inputVars, outputVars, "
-                                           "localVars and externalVars",
+                                           "inOutVars, localVars and externalVars",
                                            text::printable(kind)));
       continue;
     }

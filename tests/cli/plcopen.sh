@@ -66,6 +66,11 @@ rm -rf direct back && mkdir direct back
 "$gfec" "$dir/macro.xml" --no-line-directives -o direct/engine.c
 (cd back && "$gfec" Press.sfc --no-line-directives -o engine.c)
 cmp <(tail -n +2 direct/engine.c) <(tail -n +2 back/engine.c) || fail "macro.xml: --emit=chart's text compiles to another engine"
+# A program's inOutVars are inouts (docs/iec.md): the inputs of macro.xml so declared.
+sed 's/inputVars>/inOutVars>/' "$dir/macro.xml" > inout.xml
+"$gfec" --emit=chart inout.xml -o inout.sfc || fail "inOutVars: --emit=chart fails"
+grep -q '^ *inout bool Start;' inout.sfc && grep -q '^ *inout bool Done;' inout.sfc ||
+  fail "inOutVars: not inouts: $(cat inout.sfc)"
 
 # The ST program of the same meaning (written as the ST reader reads it) runs to the same outputs.
 "$gfec" run "$dir/mixer.st" --inputs "$dir/mixer.csv" --observable --ticks 14 | grep -v '^av' > st.txt ||
