@@ -190,6 +190,12 @@ test('json: inputs and outputs carry their role, a chart\'s own var none (docs/l
   const own = emit(path.join(dir, 'own.sfc'));
   assert.equal(own.vars.length, 1);
   assert.equal('role' in own.vars[0], false);
+  // An IEC program that writes a %I variable: an inout (docs/iec.md "Located variables").
+  const calls = emit(path.join(SOURCE_DIR, 'tests', 'iec', 'st', 'calls.st'));
+  assert.deepEqual(calls.vars.filter((v) => v.role).map((v) => [v.name, v.role, v.address || null]), [
+    ['Up', 'in', null], ['Clear', 'in', null], ['Count', 'out', null], ['Held', 'out', null],
+    ['Seen', 'out', null], ['Budget', 'inout', null], ['Ack', 'inout', '%IX0.1'],
+  ]);
 });
 
 test('json: named actions with their associations, only in a chart that has them (docs/language.md §14)', () => {
