@@ -719,12 +719,16 @@ std::optional<model::Expr> lower_expr(const ast::Expr *e, ExprScope &s) {
   return std::nullopt;
 }
 
-/// A call of an unknown name that is a built-in misspelt (`acitve(P)`): reported as such, with
-/// the fix, and its arguments left unread (a place is no value: that error would be noise).
+/// A call of an unknown name that is a built-in or a standard function misspelt (`acitve(P)`,
+/// `maks(a, b)`): reported as such, with the fix, and its arguments left unread (a place is no
+/// value: that error would be noise).
 bool misspelt_builtin(const ast::Name &name, ExprScope &s) {
   if (name.text.empty() || name.text.size() > kMaxSuggestedLength || s.cx.c_names.find(name.text)) return false;
   const std::size_t limit = typo_limit(name.text.size());
-  for (std::string_view builtin : kBuiltinFunctions) {
+  std::vector<std::string_view> builtins(std::begin(kBuiltinFunctions), std::end(kBuiltinFunctions));
+  for (int f = 0; f <= static_cast<int>(model::Expr::Builtin::Mux); ++f)
+    builtins.push_back(model::builtin_name(static_cast<model::Expr::Builtin>(f)));
+  for (std::string_view builtin : builtins) {
     // The built-ins first: they are few, and the search among the interface functions only
     // matters for a name close to one of them.
     if (edit_distance_within(name.text, builtin, limit) > limit) continue;
