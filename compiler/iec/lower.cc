@@ -177,14 +177,21 @@ void bool_literal(const std::string &type, ast::ExprPtr &value) {
   }
 }
 
-template <typename Stmts> void bool_literals_in(Stmts &block, const std::vector<Variable> &vars) {
+template <typename Stmts> void bool_literals_in(Stmts &block, const Spellings &bools) {
   for (ast::Stmt &s : block) {
-    if (s.kind == ast::Stmt::Kind::Assign && s.target && s.assign_op == AssignOp::Set)
-      for (const Variable &v : vars)
-        if (upper(v.name.text) == upper(s.target->text)) bool_literal(std::string(v.type.text), s.value);
-    bool_literals_in(s.then_block, vars);
-    bool_literals_in(s.else_block, vars);
+    if (s.kind == ast::Stmt::Kind::Assign && s.target && s.assign_op == AssignOp::Set && bools.declared(s.target->text))
+      bool_literal("BOOL", s.value);
+    bool_literals_in(s.then_block, bools);
+    bool_literals_in(s.else_block, bools);
   }
+}
+
+/// The POU's BOOL variables, by IEC's case-insensitive names: where bool_literals_in applies.
+Spellings bool_variables(const std::vector<Variable> &vars) {
+  Spellings bools;
+  for (const Variable &v : vars)
+    if (upper(v.type.text) == "BOOL") bools.declare(v.name);
+  return bools;
 }
 
 ast::ValueDecl lower_variable(Variable &v, Diagnostics &diag, const KnownBlocks *known = nullptr) {
@@ -405,22 +412,16 @@ void lower_function_block(Pou &pou, ast::File &file, Diagnostics &diag, const Kn
   b.name = pou.name;
   b.range = pou.range;
   for (Variable &v : pou.variables) {
-    if (v.section == Section::InOut) {
-      // A block's VAR_IN_OUT is a reference to its caller's variable; an instance's members are
-      // its own copies (docs/iec.md "Function blocks").
+    if (v.section == Section::InOut || v.section == Section::External) {
+      // A VAR_IN_OUT is a reference to the caller's variable, a VAR_EXTERNAL a program's global;
+      // an instance, inlined into the program, holds copies of its own (docs/iec.md "Function
+      // blocks", "Global variables").
+      const bool in_out = v.section == Section::InOut;
       diag.error(v.name.range, ErrorKind::NotSupported,
-                 fmt::format("a VAR_IN_OUT in a function block ('{}' of '{}') is not supported yet: pass it as "
-                             "an input and read it back as an output",
-                             v.name.text, pou.name.text));
-      continue;
-    }
-    if (v.section == Section::External) {
-      // A block is inlined into every program that holds an instance (docs/iec.md "Global
-      // variables"): reaching a program's global from inside it is not done yet.
-      diag.error(v.name.range, ErrorKind::NotSupported,
-                 fmt::format("a VAR_EXTERNAL in a function block ('{}' of '{}') is not supported yet: declare it "
-                             "VAR_EXTERNAL in the PROGRAM and pass it to the block as an input",
-                             v.name.text, pou.name.text));
+                 fmt::format("a {} in a function block ('{}' of '{}') is not supported yet: {}",
+                             in_out ? "VAR_IN_OUT" : "VAR_EXTERNAL", v.name.text, pou.name.text,
+                             in_out ? "pass it as an input and read it back as an output"
+                                    : "declare it VAR_EXTERNAL in the PROGRAM and pass it to the block as an input"));
       continue;
     }
     if (v.constant) {
@@ -434,7 +435,7 @@ void lower_function_block(Pou &pou, ast::File &file, Diagnostics &diag, const Kn
     b.values.push_back(std::move(d));
   }
   if (pou.body) {
-    bool_literals_in(*pou.body, pou.variables);
+    bool_literals_in(*pou.body, bool_variables(pou.variables));
     action_flags_in(*pou.body, {}, diag);  // a block has no actions: `x.Q` is an instance's output
     names.respell_block(*pou.body);
     respell_members_in(*pou.body, instances, known, names, file.strings);
@@ -537,12 +538,13 @@ bool lower_pou(Pou &&pou, const std::optional<ast::Period> &period, ast::File &f
   // the members of instances are respelled.
   for (Transition &t : pou.transitions)
     if (t.condition) action_flags(*t.condition, actions, diag);
+  const Spellings bools = bool_variables(pou.variables);
   for (Action &a : pou.actions) {
-    bool_literals_in(a.body, pou.variables);
+    bool_literals_in(a.body, bools);
     action_flags_in(a.body, actions, diag);
   }
   if (pou.body) {
-    bool_literals_in(*pou.body, pou.variables);
+    bool_literals_in(*pou.body, bools);
     action_flags_in(*pou.body, actions, diag);
   }
   if (pou.body) {
