@@ -60,10 +60,15 @@ struct Transition {
   SourceRange range;
 };
 
-/// `ACTION name: <ST statements> END_ACTION`.
+/// `ACTION name: <ST statements> END_ACTION`, or an action whose body is an SFC: `ACTION name:
+/// INITIAL_STEP ... END_ACTION`, a PLCopen action whose body is `<SFC>` (docs/iec.md "SFC inside
+/// actions and function blocks"). The actions its steps hold are the POU's, in Pou::actions.
 struct Action {
   ast::Name name;
-  ast::Block body;
+  ast::Block body;                       ///< an ST body; empty when the body is an SFC
+  std::vector<Step> steps;               ///< an SFC body's steps, in declaration order; else empty
+  std::vector<Transition> transitions;   ///< an SFC body's transitions
+  bool sfc() const { return !steps.empty() || !transitions.empty(); }
   SourceRange range;
 };
 
