@@ -575,6 +575,11 @@ bool lower_pou(Pou &&pou, const std::optional<ast::Period> &period, ast::File &f
     bool_literals_in(*pou.body, bools);
     action_flags_in(*pou.body, actions, diag);
   }
+  // The SFCs inside actions become statements (docs/iec.md "SFC inside actions and function
+  // blocks"): the actions their steps hold run inside them, not as the chart's.
+  InnerSfcs inner =
+      compile_inner_sfcs(pou, false, names, file, diag, period ? std::optional<double>(period->ms) : std::nullopt);
+  for (ast::ValueDecl &v : inner.variables) c.values.push_back(std::move(v));
   if (pou.body) {
     // A body of statements: one initial step that is never left runs them every scan, as the
     // place block of step 4 of a tick (docs/iec.md "Programs without an SFC"). The step is
@@ -645,11 +650,6 @@ bool lower_pou(Pou &&pou, const std::optional<ast::Period> &period, ast::File &f
     t.name = {file.strings.emplace_back(std::move(name)), t.range};
     taken.insert(t.name.text);
   }
-  // The SFCs inside actions become statements (docs/iec.md "SFC inside actions and function
-  // blocks"): the actions their steps hold run inside them, not as the chart's.
-  InnerSfcs inner =
-      compile_inner_sfcs(pou, false, names, file, diag, period ? std::optional<double>(period->ms) : std::nullopt);
-  for (ast::ValueDecl &v : inner.variables) c.values.push_back(std::move(v));
   for (Action &a : pou.actions) {
     if (inner.inner.count(upper(a.name.text))) continue;
     ast::ActionDecl &d = c.actions.emplace_back();

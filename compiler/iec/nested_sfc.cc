@@ -148,6 +148,10 @@ struct Held {
   SourceRange range;
 };
 
+/// How deep SFCs may sit inside the SFCs of actions (docs/iec.md "SFC inside actions and
+/// function blocks").
+constexpr std::size_t kMaxDepth = 16;
+
 /// One SFC being compiled: its steps' variables, by index of Step.
 struct StepVars {
   std::string_view x, t, avail, add, was;
@@ -224,6 +228,7 @@ private:
   std::string_view dt_;                            ///< a function block's: the time since its instance's previous call
   std::set<std::string> compiling_;                ///< SFC actions being compiled (a cycle check)
   bool period_reported_ = false;
+  bool too_deep_ = false;  ///< reported once: the SFCs below it are not compiled
 };
 
 bool Compiler::owners() {
@@ -355,6 +360,18 @@ ast::Block Compiler::body_of(std::size_t i) {
   for (const Sfc &s : sfcs_)
     if (s.key == key) g = &s;
   if (!g || !compiling_.insert(key).second) return {};
+  if (compiling_.size() > kMaxDepth || too_deep_) {
+    compiling_.erase(key);
+    if (too_deep_) return {};
+    too_deep_ = true;
+    // Each level is an `if` around the next one's scan: the tree's depth, which every later
+    // stage walks recursively, stays bounded whatever a file holds.
+    diag_.error(a.name.range, ErrorKind::Nesting,
+                fmt::format("action '{}' runs an SFC inside the SFCs of {} other actions: more than {} levels are "
+                            "not supported",
+                            a.name.text, compiling_.size(), kMaxDepth));
+    return {};
+  }
   std::function<ast::ExprPtr(const Builder &)> q = [this, key](const Builder &b) { return b.name(out_.q.at(key)); };
   ast::Block body = scan(*g, &q);
   compiling_.erase(key);
@@ -670,7 +687,8 @@ void Compiler::run(bool function_block) {
   for (std::size_t i = 0; i < pou_.actions.size(); ++i) {
     Action &a = pou_.actions[i];
     const std::string key = upper(a.name.text);
-    if (!a.sfc() || out_.inner.count(key)) continue;
+    auto held = owner_.find(key);
+    if (!a.sfc() || out_.inner.count(key) || (held != owner_.end() && !held->second.empty())) continue;
     const Sfc *g = nullptr;
     for (const Sfc &s : sfcs_)
       if (s.key == key) g = &s;

@@ -150,7 +150,10 @@ void StParser::function_block(Pou &p, const StToken &start, std::string_view end
       next();
     } else {
       ast::Block b = statements();
-      if (!p.body) p.body.emplace();
+      if (!p.body) {
+        p.body.emplace();
+        p.body_range = range(t);
+      }
       for (ast::Stmt &s : b) p.body->push_back(std::move(s));
     }
     if (pos_ == before) next();
