@@ -65,9 +65,9 @@ struct Transition {
 /// actions and function blocks"). The actions its steps hold are the POU's, in Pou::actions.
 struct Action {
   ast::Name name;
-  ast::Block body;                       ///< an ST body; empty when the body is an SFC
-  std::vector<Step> steps;               ///< an SFC body's steps, in declaration order; else empty
-  std::vector<Transition> transitions;   ///< an SFC body's transitions
+  ast::Block body;                      ///< an ST body; empty when the body is an SFC
+  std::vector<Step> steps;              ///< an SFC body's steps, in declaration order; else empty
+  std::vector<Transition> transitions;  ///< an SFC body's transitions
   bool sfc() const { return !steps.empty() || !transitions.empty(); }
   SourceRange range;
 };

@@ -4,6 +4,8 @@
 // `Start` declared); the range stays on what the user wrote.
 #include "iec/lower.h"
 #include "iec/iec_text.h"
+#include "iec/nested_sfc.h"
+#include "iec/spellings.h"
 #include "did_you_mean.h"
 #include "standard_blocks.h"
 
@@ -55,35 +57,6 @@ const char *pou_kind(PouKind k) {
   }
   return "POU";
 }
-
-/// Declared names by their upper-case spelling: IEC's case-insensitive scope of one POU.
-class Spellings {
-public:
-  void declare(const ast::Name &n) { by_upper_.emplace(upper(n.text), n.text); }
-  bool declared(std::string_view name) const { return by_upper_.count(upper(name)) != 0; }
-  /// Respells `n` as its declaration, if it has one.
-  void respell(ast::Name &n) const {
-    auto it = by_upper_.find(upper(n.text));
-    if (it != by_upper_.end()) n.text = it->second;
-  }
-  void respell(ast::Expr &e) const {
-    if (e.kind == ast::Expr::Kind::Name || e.kind == ast::Expr::Kind::Path) respell(e.name);
-    for (ast::Expr *a : e.args)
-      if (a) respell(*a);
-  }
-  template <typename Stmts> void respell_block(Stmts &b) const {
-    for (ast::Stmt &s : b) {
-      if (s.call) respell(*s.call);
-      if (s.value) respell(*s.value);
-      if (s.target) respell(*s.target);
-      respell_block(s.then_block);
-      respell_block(s.else_block);
-    }
-  }
-
-private:
-  std::map<std::string, std::string_view> by_upper_;
-};
 
 /// A located variable's role comes from its address, whatever its section: the caller sets the
 /// process image's inputs (%I) before a scan and reads its outputs (%Q) after it; %M is memory the
@@ -403,10 +376,81 @@ std::optional<ast::Period> period_of(const Project &project, const Pou &pou, Dia
 
 namespace {
 
-/// A FUNCTION_BLOCK: a block of the chart language (docs/iec.md "Function blocks").
-void lower_function_block(Pou &pou, ast::File &file, Diagnostics &diag, const KnownBlocks &known) {
+/// An association naming a variable rather than an ACTION is IEC's Boolean action: the variable
+/// is the action's Q. It becomes a generated action `V_Q { V = active(V_Q); }`, held as written,
+/// run before the POU's actions: TRUE while Q, FALSE in its final run (docs/iec.md "Boolean
+/// actions"). The steps of every SFC of the POU are looked at, an action's SFC too. Returns
+/// the POU's actions (upper case), the generated ones with them.
+std::map<std::string, bool> boolean_actions(Pou &pou, Spellings &names, ast::File &file) {
+  std::map<std::string, const Variable *> variables;
+  for (const Variable &v : pou.variables) variables.emplace(upper(v.name.text), &v);
+  std::map<std::string, bool> actions;
+  for (const Action &a : pou.actions) actions.emplace(upper(a.name.text), true);
+  std::map<std::string, std::string_view> boolean_actions;  ///< variable (upper case) -> its action
+  std::vector<Action> generated;
+  std::vector<Step *> steps;
+  for (Step &s : pou.steps) steps.push_back(&s);
+  for (Action &a : pou.actions)
+    for (Step &s : a.steps) steps.push_back(&s);
+  for (Step *s : steps)
+    for (ast::Association &as : s->associations) {
+      const std::string n = upper(as.action.text);
+      auto v = variables.find(n);
+      if (v == variables.end() || actions.count(n)) continue;
+      auto [it, fresh] = boolean_actions.emplace(n, std::string_view());
+      if (fresh) {
+        std::string name = std::string(v->second->name.text) + "_Q";
+        while (names.declared(name)) name += '_';
+        it->second = file.strings.emplace_back(std::move(name));
+        Action &a = generated.emplace_back();
+        a.name = {it->second, as.action.range};
+        names.declare(a.name);
+        a.range = as.action.range;
+        ast::Stmt &st = a.body.emplace_back();
+        st.kind = ast::Stmt::Kind::Assign;
+        st.range = as.action.range;
+        st.target.emplace(ast::Name{v->second->name.text, as.action.range});
+        auto call = std::make_unique<ast::Expr>();
+        call->kind = ast::Expr::Kind::Call;
+        call->range = as.action.range;
+        call->name = {"active", as.action.range};
+        auto arg = std::make_unique<ast::Expr>();
+        arg->kind = ast::Expr::Kind::Name;
+        arg->range = as.action.range;
+        arg->name = a.name;
+        call->args.push_back(std::move(arg));
+        st.value = std::move(call);
+      }
+      as.action = {it->second, as.action.range};
+    }
+  for (Action &a : generated) actions.emplace(upper(a.name.text), true);
+  pou.actions.insert(pou.actions.begin(), std::make_move_iterator(generated.begin()),
+                     std::make_move_iterator(generated.end()));
+  return actions;
+}
+
+/// The names of a POU's scope: its variables, the steps of each of its SFCs, its actions.
+Spellings pou_names(const Pou &pou) {
   Spellings names;
   for (const Variable &v : pou.variables) names.declare(v.name);
+  for (const Step &s : pou.steps) names.declare(s.name);
+  for (const Action &a : pou.actions) {
+    names.declare(a.name);
+    for (const Step &s : a.steps) names.declare(s.name);
+  }
+  return names;
+}
+
+/// `A.Q`, `A.A`, BOOL 0/1 in the conditions of the transitions of the SFCs inside actions.
+void inner_conditions(Pou &pou, const std::map<std::string, bool> &actions, Diagnostics &diag) {
+  for (Action &a : pou.actions)
+    for (Transition &t : a.transitions)
+      if (t.condition) action_flags(*t.condition, actions, diag);
+}
+
+/// A FUNCTION_BLOCK: a block of the chart language (docs/iec.md "Function blocks").
+void lower_function_block(Pou &pou, ast::File &file, Diagnostics &diag, const KnownBlocks &known) {
+  Spellings names = pou_names(pou);
   Instances instances;
   ast::BlockDecl &b = file.blocks.emplace_back();
   b.name = pou.name;
@@ -434,11 +478,40 @@ void lower_function_block(Pou &pou, ast::File &file, Diagnostics &diag, const Kn
     if (known.type(upper(v.type.text))) instances.emplace(upper(v.name.text), d.type.text);
     b.values.push_back(std::move(d));
   }
+  const bool sfc = !pou.steps.empty() || !pou.transitions.empty();
+  if (sfc && pou.body) {
+    diag.error(
+            pou.steps.empty() ? pou.transitions.front().range : pou.steps.front().range, ErrorKind::Syntax,
+            fmt::format("function block '{}' has both statements and an SFC: IEC gives a POU one body", pou.name.text))
+        .note(pou.body_range, "the statements");
+    return;
+  }
+  // An SFC body (docs/iec.md "SFC inside actions and function blocks"): each call is one scan of
+  // it, compiled into statements; the actions its steps hold run inside that scan.
+  const std::map<std::string, bool> actions = boolean_actions(pou, names, file);
+  const Spellings bools = bool_variables(pou.variables);
+  for (Transition &t : pou.transitions)
+    if (t.condition) action_flags(*t.condition, actions, diag);
+  inner_conditions(pou, actions, diag);
+  for (Action &a : pou.actions) {
+    bool_literals_in(a.body, bools);
+    action_flags_in(a.body, actions, diag);
+  }
+  InnerSfcs inner;
+  if (sfc) inner = compile_inner_sfcs(pou, true, names, file, diag, std::nullopt);
+  for (const Action &a : pou.actions)
+    if (!inner.inner.count(upper(a.name.text)))
+      diag.error(a.name.range, ErrorKind::NotSupported,
+                 fmt::format("action '{}' of function block '{}' is held by no step of its SFC: such an action runs "
+                             "only when called ('inst.{}();'), which is not supported yet",
+                             a.name.text, pou.name.text, a.name.text));
+  for (ast::ValueDecl &v : inner.variables) b.values.push_back(std::move(v));
   if (pou.body) {
-    bool_literals_in(*pou.body, bool_variables(pou.variables));
-    action_flags_in(*pou.body, {}, diag);  // a block has no actions: `x.Q` is an instance's output
+    bool_literals_in(*pou.body, bools);
+    action_flags_in(*pou.body, {}, diag);  // `x.Q` outside an SFC is an instance's output
     names.respell_block(*pou.body);
     respell_members_in(*pou.body, instances, known, names, file.strings);
+    rewrite_inner_reads(*pou.body, inner);
     b.body = std::move(*pou.body);
   }
 }
@@ -473,10 +546,7 @@ bool lower_pou(Pou &&pou, const std::optional<ast::Period> &period, ast::File &f
         .note(pou.body_range, "the statements");
     return false;
   }
-  Spellings names;
-  for (const Variable &v : pou.variables) names.declare(v.name);
-  for (const Step &s : pou.steps) names.declare(s.name);
-  for (const Action &a : pou.actions) names.declare(a.name);
+  Spellings names = pou_names(pou);
 
   ast::Chart &c = file.charts.emplace_back();
   c.kind = ast::Chart::Kind::Sfc;
@@ -490,54 +560,12 @@ bool lower_pou(Pou &&pou, const std::optional<ast::Period> &period, ast::File &f
     if (known.type(upper(v.type.text))) instances.emplace(upper(v.name.text), d.type.text);
     c.values.push_back(std::move(d));
   }
-  // An association naming a variable rather than an ACTION is IEC's Boolean action: the
-  // variable is the action's Q. It becomes a generated action `V_Q { V = active(V_Q); }`, held
-  // as written, run before the program's actions: TRUE while Q, FALSE in its final run
-  // (docs/iec.md "Boolean actions").
-  std::map<std::string, const Variable *> variables;
-  for (const Variable &v : pou.variables) variables.emplace(upper(v.name.text), &v);
-  std::map<std::string, bool> actions;
-  for (const Action &a : pou.actions) actions.emplace(upper(a.name.text), true);
-  std::map<std::string, std::string_view> boolean_actions;  ///< variable (upper case) -> its action
-  std::vector<Action> generated;
-  for (Step &s : pou.steps)
-    for (ast::Association &as : s.associations) {
-      const std::string n = upper(as.action.text);
-      auto v = variables.find(n);
-      if (v == variables.end() || actions.count(n)) continue;
-      auto [it, fresh] = boolean_actions.emplace(n, std::string_view());
-      if (fresh) {
-        std::string name = std::string(v->second->name.text) + "_Q";
-        while (names.declared(name)) name += '_';
-        it->second = file.strings.emplace_back(std::move(name));
-        Action &a = generated.emplace_back();
-        a.name = {it->second, as.action.range};
-        names.declare(a.name);
-        a.range = as.action.range;
-        ast::Stmt &st = a.body.emplace_back();
-        st.kind = ast::Stmt::Kind::Assign;
-        st.range = as.action.range;
-        st.target.emplace(ast::Name{v->second->name.text, as.action.range});
-        auto call = std::make_unique<ast::Expr>();
-        call->kind = ast::Expr::Kind::Call;
-        call->range = as.action.range;
-        call->name = {"active", as.action.range};
-        auto arg = std::make_unique<ast::Expr>();
-        arg->kind = ast::Expr::Kind::Name;
-        arg->range = as.action.range;
-        arg->name = a.name;
-        call->args.push_back(std::move(arg));
-        st.value = std::move(call);
-      }
-      as.action = {it->second, as.action.range};
-    }
-  for (Action &a : generated) actions.emplace(upper(a.name.text), true);
-  pou.actions.insert(pou.actions.begin(), std::make_move_iterator(generated.begin()),
-                     std::make_move_iterator(generated.end()));
+  std::map<std::string, bool> actions = boolean_actions(pou, names, file);
   // `A.Q` and `A.A` are an action's flags or, `Q` of an instance, its output: told apart before
   // the members of instances are respelled.
   for (Transition &t : pou.transitions)
     if (t.condition) action_flags(*t.condition, actions, diag);
+  inner_conditions(pou, actions, diag);
   const Spellings bools = bool_variables(pou.variables);
   for (Action &a : pou.actions) {
     bool_literals_in(a.body, bools);
@@ -547,6 +575,11 @@ bool lower_pou(Pou &&pou, const std::optional<ast::Period> &period, ast::File &f
     bool_literals_in(*pou.body, bools);
     action_flags_in(*pou.body, actions, diag);
   }
+  // The SFCs inside actions become statements (docs/iec.md "SFC inside actions and function
+  // blocks"): the actions their steps hold run inside them, not as the chart's.
+  InnerSfcs inner =
+      compile_inner_sfcs(pou, false, names, file, diag, period ? std::optional<double>(period->ms) : std::nullopt);
+  for (ast::ValueDecl &v : inner.variables) c.values.push_back(std::move(v));
   if (pou.body) {
     // A body of statements: one initial step that is never left runs them every scan, as the
     // place block of step 4 of a tick (docs/iec.md "Programs without an SFC"). The step is
@@ -618,6 +651,7 @@ bool lower_pou(Pou &&pou, const std::optional<ast::Period> &period, ast::File &f
     taken.insert(t.name.text);
   }
   for (Action &a : pou.actions) {
+    if (inner.inner.count(upper(a.name.text))) continue;
     ast::ActionDecl &d = c.actions.emplace_back();
     d.name = a.name;
     d.range = a.range;
@@ -634,7 +668,7 @@ bool lower_pou(Pou &&pou, const std::optional<ast::Period> &period, ast::File &f
     for (ast::ActionDecl &a : c.actions) exact_step_times_in(a.body, period->ms);
   }
   // The validator would ask for chart text's `period`; an IEC program gets it from its task.
-  if (!period)
+  if (!period && !inner.period_reported)
     if (const SourceRange *at = time_read(c))
       diag.error(*at, ErrorKind::MissingPeriod,
                  fmt::format("program '{}' reads a time, but no TASK with an INTERVAL runs it", c.name.text))
@@ -642,6 +676,12 @@ bool lower_pou(Pou &&pou, const std::optional<ast::Period> &period, ast::File &f
                                           "PROGRAM i WITH t : {};', or give the period on the command line: "
                                           "'--period 10ms'",
                                           c.name.text));
+  if (!inner.x.empty() || !inner.q.empty()) {
+    for (ast::Transition &t : c.transitions)
+      if (t.condition) rewrite_inner_reads(*t.condition, inner);
+    for (ast::ActionDecl &a : c.actions) rewrite_inner_reads(a.body, inner);
+    for (ast::Place &p : c.places) rewrite_inner_reads(p.action, inner);
+  }
   return true;
 }
 

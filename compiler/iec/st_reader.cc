@@ -136,19 +136,24 @@ void StParser::function_block(Pou &p, const StToken &start, std::string_view end
     const StToken t = tok();
     if (var_section_start(t)) {
       var_section(p);
-    } else if (is_keyword(t, "INITIAL_STEP") || is_keyword(t, "STEP") || is_keyword(t, "TRANSITION") ||
-               is_keyword(t, "ACTION")) {
-      not_supported(range(t), fmt::format("function block '{}': a body that is not structured text (an SFC) is not "
-                                          "supported yet",
-                                          p.name.text));
-      while (!at_end() && !keyword(end)) next();
+    } else if (is_keyword(t, "INITIAL_STEP") || is_keyword(t, "STEP")) {
+      // An SFC body (docs/iec.md "SFC inside actions and function blocks"); statements beside it
+      // are the lowering's to refuse, as a program's are.
+      step(p, is_keyword(t, "INITIAL_STEP"));
+    } else if (is_keyword(t, "TRANSITION")) {
+      transition(p);
+    } else if (is_keyword(t, "ACTION")) {
+      action(p);
     } else if (block_end()) {
       error(range(t),
             fmt::format("expected a statement of function block '{}' or '{}', not {}", p.name.text, end, quoted()));
       next();
     } else {
       ast::Block b = statements();
-      if (!p.body) p.body.emplace();
+      if (!p.body) {
+        p.body.emplace();
+        p.body_range = range(t);
+      }
       for (ast::Stmt &s : b) p.body->push_back(std::move(s));
     }
     if (pos_ == before) next();
@@ -525,15 +530,46 @@ void StParser::action(Pou &pou) {
         .fix({at.file, at.end, at.end}, ":");
     resync();
   }
-  if (keyword("INITIAL_STEP") || keyword("STEP")) {
-    not_supported(range(tok()), fmt::format("an SFC inside action '{}' is not supported yet", a.name.text));
-    while (!at_end() && !keyword("END_ACTION")) next();
+  const std::size_t index = pou.actions.size() - 1;
+  if (keyword("INITIAL_STEP") || keyword("STEP") || keyword("TRANSITION")) {
+    // An SFC body (docs/iec.md "SFC inside actions and function blocks"): its steps and
+    // transitions are the action's; an ACTION declared among them is the POU's, as IEC's
+    // grammar lets an SFC declare its actions anywhere in it.
+    Pou inner;
+    while (!at_end() && !keyword("END_ACTION")) {
+      resync();
+      const std::size_t before = pos_;
+      const StToken t = tok();
+      if (is_keyword(t, "INITIAL_STEP") || is_keyword(t, "STEP")) {
+        step(inner, is_keyword(t, "INITIAL_STEP"));
+      } else if (is_keyword(t, "TRANSITION")) {
+        transition(inner);
+      } else if (is_keyword(t, "ACTION")) {
+        if (deeper(range(t), "actions")) {
+          action(inner);
+          --depth_;
+        } else {
+          while (!at_end() && !keyword("END_ACTION")) next();
+        }
+      } else if (block_end()) {
+        break;
+      } else {
+        error(range(t), fmt::format("expected a step, transition or action of the SFC inside action '{}', not {}",
+                                    pou.actions[index].name.text, quoted()));
+        skip_statement();
+      }
+      if (pos_ == before) next();
+    }
+    pou.actions[index].steps = std::move(inner.steps);
+    pou.actions[index].transitions = std::move(inner.transitions);
+    for (Action &nested : inner.actions) pou.actions.push_back(std::move(nested));
   } else {
     a.body = statements();
   }
-  a.range = range(kw, tok());
+  Action &done = pou.actions[index];
+  done.range = range(kw, tok());
   if (!keyword("END_ACTION")) {
-    error(range(tok()), fmt::format("expected 'END_ACTION' to close action '{}', not {}", a.name.text, quoted()))
+    error(range(tok()), fmt::format("expected 'END_ACTION' to close action '{}', not {}", done.name.text, quoted()))
         .note(range(kw), "the action");
     return;
   }

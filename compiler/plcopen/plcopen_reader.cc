@@ -95,6 +95,7 @@ iec::Project Reader::read_project(const pugi::xml_node &root) {
 
 void Reader::read_pou(const pugi::xml_node &node, iec::Project &project) {
   iec::Pou pou;
+  inline_actions_ = 0;
   pou.name = name_of(node, "name");
   pou.range = at(node);
   if (!identifier(pou.name, "POU")) return;
@@ -118,7 +119,7 @@ void Reader::read_pou(const pugi::xml_node &node, iec::Project &project) {
     return;
   }
   if (pugi::xml_node interface = child(node, "interface")) read_interface(interface, pou);
-  if (pugi::xml_node actions = child(node, "actions")) read_actions(actions, pou);
+  if (pugi::xml_node actions = child(node, "actions")) read_actions(actions, node, pou);
   // A program has one body (TC6 2.01 allows several, one per worksheet: gfec reads one).
   pugi::xml_node sfc, other;
   int bodies = 0;
@@ -160,13 +161,25 @@ void Reader::read_pou(const pugi::xml_node &node, iec::Project &project) {
                             pou.name.text, text::printable(local_name(what))));
     return;
   }
-  read_sfc(sfc, node, pou);
+  read_sfc(sfc, node, {pou.steps, pou.transitions, pou.actions});
   project.pous.push_back(std::move(pou));
 }
 
 void Reader::read_function_block(const pugi::xml_node &node, iec::Pou &pou, iec::Project &project) {
   if (pugi::xml_node interface = child(node, "interface")) read_interface(interface, pou);
   pugi::xml_node body = child(node, "body");
+  if (pugi::xml_node sfc = child(body, "SFC")) {
+    // An SFC function block is read as an SFC program is, its actions with it: each call of an
+    // instance is one scan of the chart (docs/iec.md "SFC inside actions and function blocks").
+    if (pugi::xml_node actions = child(node, "actions")) read_actions(actions, node, pou);
+    const std::size_t errors = diag_.error_count();
+    read_sfc(sfc, node, {pou.steps, pou.transitions, pou.actions});
+    if (pou.steps.empty() && errors == diag_.error_count())  // else a block that does nothing
+      diag_.error(at(sfc), ErrorKind::Plcopen,
+                  fmt::format("the SFC body of function block '{}' has no step", pou.name.text));
+    project.pous.push_back(std::move(pou));
+    return;
+  }
   pugi::xml_node st = child(body, "ST");
   // FBD and LD are read as the ST they mean (network_body.cc), as a program's are.
   pugi::xml_node network = child(body, "FBD") ? child(body, "FBD") : child(body, "LD");
@@ -182,8 +195,8 @@ void Reader::read_function_block(const pugi::xml_node &node, iec::Pou &pou, iec:
         what = c;
         break;
       }
-    not_supported(what, fmt::format("function block '{}': a body in {} is not supported yet; gfec reads ST, FBD and "
-                                    "LD bodies of function blocks",
+    not_supported(what, fmt::format("function block '{}': a body in {} is not supported yet; gfec reads SFC, ST, FBD "
+                                    "and LD bodies of function blocks",
                                     pou.name.text, body ? text::printable(local_name(what)) : "none"));
     return;
   }
@@ -256,7 +269,10 @@ void Reader::read_variable(const pugi::xml_node &v, iec::Section section, bool c
   pou.variables.push_back(std::move(var));
 }
 
-void Reader::read_actions(const pugi::xml_node &actions, iec::Pou &pou) {
+void Reader::read_actions(const pugi::xml_node &actions, const pugi::xml_node &pou_node, iec::Pou &pou) {
+  // The inline actions of the steps of SFC bodies: the POU's, after its named actions (as those of
+  // its body's SFC are), in the file's order.
+  std::vector<iec::Action> held;
   for (pugi::xml_node a : actions.children()) {
     if (local_name(a) != "action") continue;
     iec::Action action;
@@ -264,6 +280,21 @@ void Reader::read_actions(const pugi::xml_node &actions, iec::Pou &pou) {
     action.range = at(a);
     if (!identifier(action.name, "action")) continue;
     pugi::xml_node body = child(a, "body");
+    if (pugi::xml_node sfc = child(body, "SFC")) {
+      // An SFC inside an action (docs/iec.md "SFC inside actions and function blocks"), read as a
+      // program's SFC is.
+      const std::size_t errors = diag_.error_count();
+      read_sfc(sfc, pou_node, {action.steps, action.transitions, held});
+      if (action.steps.empty()) {
+        // Else it would pass for an action with an empty ST body.
+        if (errors == diag_.error_count())
+          diag_.error(at(sfc), ErrorKind::Plcopen,
+                      fmt::format("the SFC body of action '{}' has no step", action.name.text));
+        continue;
+      }
+      pou.actions.push_back(std::move(action));
+      continue;
+    }
     pugi::xml_node st = child(body, "ST");
     if (!st) {
       pugi::xml_node what = body;
@@ -273,8 +304,8 @@ void Reader::read_actions(const pugi::xml_node &actions, iec::Pou &pou) {
           break;
         }
       if (!what) what = a;
-      not_supported(what, fmt::format("the body of action '{}' is {}: gfec reads action bodies in ST; {} is not "
-                                      "supported yet",
+      not_supported(what, fmt::format("the body of action '{}' is {}: gfec reads action bodies in ST and SFC; {} is "
+                                      "not supported yet",
                                       action.name.text, describe(what), local_name(what)));
       continue;
     }
@@ -283,6 +314,7 @@ void Reader::read_actions(const pugi::xml_node &actions, iec::Pou &pou) {
     action.body = std::move(*block);
     pou.actions.push_back(std::move(action));
   }
+  for (iec::Action &h : held) pou.actions.push_back(std::move(h));
 }
 
 void Reader::read_tasks(const pugi::xml_node &instances, iec::Project &project) {

@@ -33,17 +33,28 @@ private:
   // ---------------------------------------------------------- plcopen_reader.cc
   void read_pou(const pugi::xml_node &pou, iec::Project &project);
   void read_interface(const pugi::xml_node &interface, iec::Pou &pou);
-  /// A functionBlock POU with an ST body (docs/iec.md "Function blocks"); another body is reported.
+  /// A functionBlock POU with an SFC, ST, FBD or LD body (docs/iec.md "Function blocks"); another
+  /// body is reported.
   void read_function_block(const pugi::xml_node &node, iec::Pou &pou, iec::Project &project);
   void read_variable(const pugi::xml_node &v, iec::Section section, bool constant, iec::Pou &pou);
-  void read_actions(const pugi::xml_node &actions, iec::Pou &pou);
+  /// The named actions of POU `pou_node` (`<actions>`), their bodies in ST or SFC.
+  void read_actions(const pugi::xml_node &actions, const pugi::xml_node &pou_node, iec::Pou &pou);
   /// The tasks and the globalVars of every configuration and resource below `instances`.
   void read_tasks(const pugi::xml_node &instances, iec::Project &project);
   /// A configuration's or resource's `globalVars` into project.globals.
   void read_globals(const pugi::xml_node &section, iec::Project &project);
 
   // ---------------------------------------------------------- sfc_body.cc
-  void read_sfc(const pugi::xml_node &sfc, const pugi::xml_node &pou_node, iec::Pou &pou);
+  /// Where one SFC goes: a program's or function block's body into Pou::steps/transitions, an
+  /// action's body into Action::steps/transitions. The inline actions of its steps are actions of
+  /// the POU either way, appended to `actions`.
+  struct SfcInto {
+    std::vector<iec::Step> &steps;
+    std::vector<iec::Transition> &transitions;
+    std::vector<iec::Action> &actions;
+  };
+  /// The SFC `sfc` of POU `pou_node` (whose `<transitions>` its references name).
+  void read_sfc(const pugi::xml_node &sfc, const pugi::xml_node &pou_node, SfcInto into);
 
   // ---------------------------------------------------------- network_body.cc
   friend class Network;
@@ -73,6 +84,9 @@ private:
   const XmlFile &xml_;
   ast::File &file_;
   Diagnostics &diag_;
+  /// The N of STEP_inlineN, counted over all the SFCs of one POU (its body's and its actions'), so
+  /// that two of its inline actions never share a name. read_pou starts it again.
+  int inline_actions_ = 0;
 };
 
 }  // namespace gfec::plcopen

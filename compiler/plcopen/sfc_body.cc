@@ -1,6 +1,7 @@
 // An SFC body as the IEC program model: steps, transitions between the steps they link, and the
-// associations of action blocks. The graph is read from localId/refLocalId alone; positions say
-// nothing (CODESYS and TwinCAT write every one as 0,0). docs/iec.md "PLCopen XML" has the rules.
+// associations of action blocks; a program's, a function block's or an action's body alike. The
+// graph is read from localId/refLocalId alone; positions say nothing (CODESYS and TwinCAT write
+// every one as 0,0). docs/iec.md "PLCopen XML" has the rules.
 #include "escape.h"
 #include "iec/iec_text.h"
 #include "plcopen/iec_duration.h"
@@ -58,7 +59,8 @@ constexpr int kMaxDepth = 64;
 
 class SfcGraph {
 public:
-  SfcGraph(const XmlFile &xml, Diagnostics &diag, iec::Pou &pou) : xml_(xml), diag_(diag), pou_(pou) {}
+  SfcGraph(const XmlFile &xml, Diagnostics &diag, const std::vector<iec::Step> &steps)
+      : xml_(xml), diag_(diag), steps_(steps) {}
 
   std::vector<Node> nodes;
   std::map<std::string, std::size_t> by_id;
@@ -77,7 +79,7 @@ public:
     return text::printable(out);
   }
 
-  ast::Name step_name(std::size_t step) const { return pou_.steps[step].name; }
+  ast::Name step_name(std::size_t step) const { return steps_[step].name; }
 
   /// The steps a transition's input link leads back to.
   bool steps_before(const Node &n, const Link &via, const Node &transition, std::vector<ast::Name> &out, int depth) {
@@ -159,7 +161,7 @@ public:
 private:
   const XmlFile &xml_;
   Diagnostics &diag_;
-  iec::Pou &pou_;
+  const std::vector<iec::Step> &steps_;  ///< the SFC's steps, which Node::step indexes
   std::set<const Node *> seen_;
 };
 
@@ -276,8 +278,8 @@ void mark_network(SfcGraph &g, const Node &from) {
 
 }  // namespace
 
-void Reader::read_sfc(const pugi::xml_node &sfc, const pugi::xml_node &pou_node, iec::Pou &pou) {
-  SfcGraph g(xml_, diag_, pou);
+void Reader::read_sfc(const pugi::xml_node &sfc, const pugi::xml_node &pou_node, SfcInto into) {
+  SfcGraph g(xml_, diag_, into.steps);
   // ---- the elements, by localId. A macro step's body is read into the same graph, its
   // localIds qualified by the macro step's ("7/3") and its steps named after it ("Fill_Open"):
   // the macro step is expanded inline (docs/iec.md "PLCopen XML").
@@ -314,11 +316,11 @@ void Reader::read_sfc(const pugi::xml_node &sfc, const pugi::xml_node &pou_node,
         } else {
           step.initial = initial;
         }
-        n.step = pou.steps.size();
+        n.step = into.steps.size();
         auto [it, fresh] = g.step_by_name.emplace(upper(step.name.text), n.step);
         (void)it;
         (void)fresh;  // a duplicate name is the validator's to report, at both places
-        pou.steps.push_back(std::move(step));
+        into.steps.push_back(std::move(step));
       }
       auto [it, fresh] = g.by_id.emplace(prefix + id, g.nodes.size());
       if (!fresh) {
@@ -485,7 +487,7 @@ void Reader::read_sfc(const pugi::xml_node &sfc, const pugi::xml_node &pou_node,
     // `<condition negated="true">`: the transition clears when the condition does not hold.
     if (is_true(cond.attribute("negated").value()))
       t.condition = negated(std::move(t.condition), xml_.attribute_range(cond, "negated"));
-    if (ok && t.condition) pou.transitions.push_back(std::move(t));
+    if (ok && t.condition) into.transitions.push_back(std::move(t));
   }
   // ---- steps: inferred convergences and divergences
   for (const Node &n : g.nodes) {
@@ -505,7 +507,6 @@ void Reader::read_sfc(const pugi::xml_node &sfc, const pugi::xml_node &pou_node,
                                 g.describe(n), to));
   }
   // ---- action blocks, then what gfec does not read
-  int inline_actions = 0;
   for (Node &n : g.nodes) {
     if (n.kind == Kind::ActionBlock) {
       const Node *owner = n.ins.size() == 1 ? g.target(n.ins[0]) : nullptr;
@@ -513,7 +514,7 @@ void Reader::read_sfc(const pugi::xml_node &sfc, const pugi::xml_node &pou_node,
         diag_.error(at(n.xml), ErrorKind::Plcopen, fmt::format("{} is not connected to one step", g.describe(n)));
         continue;
       }
-      iec::Step &step = pou.steps[owner->step];
+      iec::Step &step = into.steps[owner->step];
       for (pugi::xml_node a : n.xml.children()) {
         if (local_name(a) != "action") continue;
         ast::Association as;
@@ -548,11 +549,11 @@ void Reader::read_sfc(const pugi::xml_node &sfc, const pugi::xml_node &pou_node,
           auto block = statements(xml_.text_below(st));
           if (!block) continue;
           iec::Action action;
-          action.name = {keep(fmt::format("{}_inline{}", step.name.text, ++inline_actions)), at(in)};
+          action.name = {keep(fmt::format("{}_inline{}", step.name.text, ++inline_actions_)), at(in)};
           action.range = at(in);
           action.body = std::move(*block);
           as.action = action.name;
-          pou.actions.push_back(std::move(action));
+          into.actions.push_back(std::move(action));
         } else {
           diag_.error(at(a), ErrorKind::Plcopen,
                       fmt::format("an action of step '{}' names no action and has no inline body", step.name.text));

@@ -1,9 +1,12 @@
 // The PLCopen reader's pieces that the CLI test (tests/cli/plcopen.sh) cannot see alone: texts of
 // the XML located offset for offset through entities, CDATA and markup; attribute values
-// located; TIME literals; and which .xml files are PLCopen's.
+// located; TIME literals; which .xml files are PLCopen's; and the IEC program model the reader
+// fills before any lowering (SFC bodies of actions and function blocks).
 #include "plcopen/iec_duration.h"
 #include "plcopen/plcopen_reader.h"
+#include "plcopen/reader_context.h"
 #include "plcopen/xml_text.h"
+#include "support.h"
 
 #include <catch2/catch.hpp>
 
@@ -21,6 +24,45 @@ struct Parsed {
     REQUIRE(doc.load_buffer(text.data(), text.size(), pugi::parse_default, pugi::encoding_utf8));
   }
 };
+
+/// The IEC program model the reader fills from tests/iec/plcopen/NAME, as the lowering receives it.
+struct ReadSample {
+  std::string text;
+  pugi::xml_document doc;
+  ast::File file;
+  Diagnostics diag;
+  iec::Project project;
+  explicit ReadSample(const std::string &name)
+      : text(gfec::test::read_file(std::string(GFEC_SOURCE_DIR) + "/tests/iec/plcopen/" + name)) {
+    REQUIRE(doc.load_buffer(text.data(), text.size(), pugi::parse_default, pugi::encoding_utf8));
+    XmlFile xml(0, text);
+    Reader reader(xml, file, diag);
+    project = reader.read_project(doc.document_element());
+  }
+  const iec::Pou &pou(std::string_view name) const {
+    for (const iec::Pou &p : project.pous)
+      if (p.name.text == name) return p;
+    FAIL("no POU " << name);
+    throw;
+  }
+};
+
+std::vector<std::string> names_of(const std::vector<iec::Step> &steps) {
+  std::vector<std::string> out;
+  for (const iec::Step &s : steps) out.emplace_back(s.name.text);
+  return out;
+}
+std::vector<std::string> names_of(const std::vector<iec::Action> &actions) {
+  std::vector<std::string> out;
+  for (const iec::Action &a : actions) out.emplace_back(a.name.text);
+  return out;
+}
+std::vector<std::string> names_of(const std::vector<ast::Name> &names) {
+  std::vector<std::string> out;
+  for (const ast::Name &n : names) out.emplace_back(n.text);
+  return out;
+}
+using Names = std::vector<std::string>;
 
 /// The file offset of the `n`th occurrence (0-based) of `what` in `text`.
 std::uint32_t offset_of(const std::string &text, const std::string &what, int n = 0) {
@@ -98,4 +140,59 @@ TEST_CASE("plcopen: every XML document of a .xml file goes to the PLCopen reader
   CHECK_FALSE(is_xml_document("sfc Blink { initial place A; when a < b }"));
   CHECK_FALSE(is_xml_document("// <project>\nsfc A { initial place a; }"));
   CHECK_FALSE(is_xml_document(""));
+}
+
+TEST_CASE("plcopen: an action whose body is an SFC holds its steps and transitions", "[plcopen]") {
+  ReadSample r("sfc_action.xml");
+  CHECK_FALSE(r.diag.has_errors());
+  const iec::Pou &feeder = r.pou("Feeder");
+  // The program's own SFC, as before.
+  CHECK(names_of(feeder.steps) == Names{"Idle", "Run"});
+  REQUIRE(feeder.transitions.size() == 2);
+  // Named actions first, then the inline actions in the file's order, numbered over the POU:
+  // Seq's step Take's, then the main SFC's step Run's.
+  CHECK(names_of(feeder.actions) == Names{"Seq", "Take_inline1", "Run_inline2"});
+  const iec::Action &seq = feeder.actions[0];
+  CHECK(seq.sfc());
+  CHECK(seq.body.empty());
+  CHECK(names_of(seq.steps) == Names{"Wait", "Take"});
+  CHECK(seq.steps[0].initial);
+  CHECK_FALSE(seq.steps[1].initial);
+  REQUIRE(seq.transitions.size() == 2);
+  CHECK(names_of(seq.transitions[0].from) == Names{"Wait"});
+  CHECK(names_of(seq.transitions[0].to) == Names{"Take"});
+  CHECK(names_of(seq.transitions[1].from) == Names{"Take"});
+  CHECK(names_of(seq.transitions[1].to) == Names{"Wait"});
+  CHECK(seq.transitions[0].condition);
+  REQUIRE(seq.steps[1].associations.size() == 1);
+  CHECK(seq.steps[1].associations[0].qualifier.text == "N");
+  CHECK(seq.steps[1].associations[0].action.text == "Take_inline1");
+  CHECK(feeder.actions[1].body.size() == 1);
+  CHECK_FALSE(feeder.actions[1].sfc());
+  // The program's step Run holds Seq and its own inline action.
+  REQUIRE(feeder.steps[1].associations.size() == 2);
+  CHECK(feeder.steps[1].associations[0].action.text == "Seq");
+  CHECK(feeder.steps[1].associations[1].action.text == "Run_inline2");
+}
+
+TEST_CASE("plcopen: a function block whose body is an SFC is read as an SFC program is", "[plcopen]") {
+  ReadSample r("sfc_fb.xml");
+  CHECK_FALSE(r.diag.has_errors());
+  const iec::Pou &light = r.pou("TrafficLight");
+  CHECK(light.kind == iec::PouKind::FunctionBlock);
+  CHECK_FALSE(light.body);
+  CHECK(light.variables.size() == 4);
+  CHECK(names_of(light.steps) == Names{"Stop", "Pass", "Caution"});
+  CHECK(light.steps[0].initial);
+  REQUIRE(light.transitions.size() == 3);
+  CHECK(names_of(light.transitions[1].from) == Names{"Pass"});
+  CHECK(names_of(light.transitions[1].to) == Names{"Caution"});
+  CHECK(names_of(light.transitions[2].to) == Names{"Stop"});  // the jump
+  CHECK(names_of(light.actions) == Names{"Stop_inline1", "Pass_inline2", "Caution_inline3"});
+  for (const iec::Step &s : light.steps) CHECK(s.associations.size() == 1);
+  // The program calling it has its ST body.
+  const iec::Pou &crossing = r.pou("Crossing");
+  CHECK(crossing.kind == iec::PouKind::Program);
+  REQUIRE(crossing.body);
+  CHECK(crossing.body->size() == 4);
 }
