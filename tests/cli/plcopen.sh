@@ -93,11 +93,11 @@ diff -u "$dir/../st/blocks.expected" st_blocks.txt || fail "st_blocks.xml runs t
 for name in sfc_action sfc_fb; do
   "$gfec" --check "$dir/$name.xml" 2> check.txt && [[ ! -s check.txt ]] || fail "$name.xml: --check: $(cat check.txt)"
 done
-# TO ENABLE once the lowering compiles them and NAME.expected is worked out by hand from
-# docs/iec.md, scan by scan (not copied from gfec run): add "NAME:PROGRAM:TICKS" here. Each then
-# runs with NAME.csv to NAME.expected (outputs; av lines aside), both engine forms print what the
+# SFC inside an action and an SFC function block (docs/iec.md "SFC inside actions and function
+# blocks"), "NAME:PROGRAM:TICKS": each runs with NAME.csv to NAME.expected (outputs; av lines
+# aside), worked out by hand from docs/iec.md scan by scan; both engine forms print what the
 # interpreter printed, and the converted chart text compiles to the same engine.
-nested_sfc_cases=()  # to enable: (sfc_action:Feeder:14 sfc_fb:Crossing:28)
+nested_sfc_cases=(sfc_action:Feeder:14 sfc_fb:Crossing:28)
 for case in "${nested_sfc_cases[@]}"; do
   IFS=: read -r name pou ticks <<< "$case"
   "$gfec" run "$dir/$name.xml" --inputs "$dir/$name.csv" --observable --ticks "$ticks" > run.txt 2> run.err ||
