@@ -502,9 +502,9 @@ void lower_function_block(Pou &pou, ast::File &file, Diagnostics &diag, const Kn
   for (const Action &a : pou.actions)
     if (!inner.inner.count(upper(a.name.text)))
       diag.error(a.name.range, ErrorKind::NotSupported,
-                 fmt::format("action '{}' of function block '{}' is held by no step of its SFC: such an action runs "
-                             "only when called ('inst.{}();'), which is not supported yet",
-                             a.name.text, pou.name.text, a.name.text));
+                 fmt::format("action '{}' of function block '{}' is held by no step{}: such an action runs only when "
+                             "called ('inst.{}();'), which is not supported yet",
+                             a.name.text, pou.name.text, sfc ? " of its SFC" : " (its body is no SFC)", a.name.text));
   for (ast::ValueDecl &v : inner.variables) b.values.push_back(std::move(v));
   if (pou.body) {
     bool_literals_in(*pou.body, bools);
