@@ -429,14 +429,26 @@ std::map<std::string, bool> boolean_actions(Pou &pou, Spellings &names, ast::Fil
   return actions;
 }
 
-/// The names of a POU's scope: its variables, the steps of each of its SFCs, its actions.
-Spellings pou_names(const Pou &pou) {
+/// The names of a POU's scope: its variables, the steps of each of its SFCs, its actions. A
+/// name declared again in another case (`Fill`, `FILL`) is an error here: IEC names are
+/// case-insensitive and the chart language's are not, so the validator would take them for two.
+/// One declared again in the same case is the validator's to report.
+Spellings pou_names(const Pou &pou, Diagnostics &diag) {
   Spellings names;
-  for (const Variable &v : pou.variables) names.declare(v.name);
-  for (const Step &s : pou.steps) names.declare(s.name);
+  std::map<std::string, ast::Name> first;
+  auto declare = [&](const ast::Name &n) {
+    auto [it, fresh] = first.emplace(upper(n.text), n);
+    if (!fresh && it->second.text != n.text)
+      diag.error(n.range, ErrorKind::DuplicateName,
+                 fmt::format("'{}' is declared again as '{}': IEC names are case-insensitive", it->second.text, n.text))
+          .note(it->second.range, "the first declaration");
+    names.declare(n);
+  };
+  for (const Variable &v : pou.variables) declare(v.name);
+  for (const Step &s : pou.steps) declare(s.name);
   for (const Action &a : pou.actions) {
-    names.declare(a.name);
-    for (const Step &s : a.steps) names.declare(s.name);
+    declare(a.name);
+    for (const Step &s : a.steps) declare(s.name);
   }
   return names;
 }
@@ -450,7 +462,7 @@ void inner_conditions(Pou &pou, const std::map<std::string, bool> &actions, Diag
 
 /// A FUNCTION_BLOCK: a block of the chart language (docs/iec.md "Function blocks").
 void lower_function_block(Pou &pou, ast::File &file, Diagnostics &diag, const KnownBlocks &known) {
-  Spellings names = pou_names(pou);
+  Spellings names = pou_names(pou, diag);
   Instances instances;
   ast::BlockDecl &b = file.blocks.emplace_back();
   b.name = pou.name;
@@ -502,9 +514,9 @@ void lower_function_block(Pou &pou, ast::File &file, Diagnostics &diag, const Kn
   for (const Action &a : pou.actions)
     if (!inner.inner.count(upper(a.name.text)))
       diag.error(a.name.range, ErrorKind::NotSupported,
-                 fmt::format("action '{}' of function block '{}' is held by no step of its SFC: such an action runs "
-                             "only when called ('inst.{}();'), which is not supported yet",
-                             a.name.text, pou.name.text, a.name.text));
+                 fmt::format("action '{}' of function block '{}' is held by no step{}: such an action runs only when "
+                             "called ('inst.{}();'), which is not supported yet",
+                             a.name.text, pou.name.text, sfc ? " of its SFC" : " (its body is no SFC)", a.name.text));
   for (ast::ValueDecl &v : inner.variables) b.values.push_back(std::move(v));
   if (pou.body) {
     bool_literals_in(*pou.body, bools);
@@ -546,7 +558,7 @@ bool lower_pou(Pou &&pou, const std::optional<ast::Period> &period, ast::File &f
         .note(pou.body_range, "the statements");
     return false;
   }
-  Spellings names = pou_names(pou);
+  Spellings names = pou_names(pou, diag);
 
   ast::Chart &c = file.charts.emplace_back();
   c.kind = ast::Chart::Kind::Sfc;

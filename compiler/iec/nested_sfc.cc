@@ -513,6 +513,7 @@ ast::Block Compiler::scan(const Sfc &g, const std::function<ast::ExprPtr(const B
     ast::ExprPtr open;
     for (const ast::Name &n : t.from) open = b.all(std::move(open), b.name(vars[index(n)].avail));
     if (t.condition) open = b.all(std::move(open), std::move(t.condition));
+    if (!open) open = b.boolean(true);  // a transition from no step (a reader's recovery)
     ast::Block fire;
     for (const ast::Name &n : t.from) fire.push_back(b.assign(vars[index(n)].avail, b.boolean(false)));
     for (const ast::Name &n : t.to) fire.push_back(b.assign(vars[index(n)].add, b.boolean(true)));
@@ -644,6 +645,13 @@ void Compiler::run(bool function_block) {
       sfcs_.push_back({upper(a.name.text), file_.strings.emplace_back(fmt::format("action '{}'", a.name.text)),
                        &a.steps, &a.transitions, a.name.range});
   if (sfcs_.size() == 1 && !function_block) return;
+  std::set<std::string> seen;
+  for (const Action &a : pou_.actions)
+    if (!seen.insert(upper(a.name.text)).second) {
+      // An action declared twice: the validator reports it, and which one a step holds is moot.
+      for (Action &x : pou_.actions) x.steps.clear(), x.transitions.clear();
+      return;
+    }
   // Which inner steps have their `.T` read anywhere in the POU.
   std::set<std::string> inner_steps;
   for (std::size_t k = function_block ? 0 : 1; k < sfcs_.size(); ++k)

@@ -167,11 +167,13 @@ void Reader::read_pou(const pugi::xml_node &node, iec::Project &project) {
 
 void Reader::read_function_block(const pugi::xml_node &node, iec::Pou &pou, iec::Project &project) {
   if (pugi::xml_node interface = child(node, "interface")) read_interface(interface, pou);
+  // Its actions are read whatever its body: those no step of an SFC body holds are the
+  // lowering's to report, never dropped.
+  if (pugi::xml_node actions = child(node, "actions")) read_actions(actions, node, pou);
   pugi::xml_node body = child(node, "body");
   if (pugi::xml_node sfc = child(body, "SFC")) {
-    // An SFC function block is read as an SFC program is, its actions with it: each call of an
-    // instance is one scan of the chart (docs/iec.md "SFC inside actions and function blocks").
-    if (pugi::xml_node actions = child(node, "actions")) read_actions(actions, node, pou);
+    // An SFC function block is read as an SFC program is: each call of an instance is one scan
+    // of the chart (docs/iec.md "SFC inside actions and function blocks").
     const std::size_t errors = diag_.error_count();
     read_sfc(sfc, node, {pou.steps, pou.transitions, pou.actions});
     if (pou.steps.empty() && errors == diag_.error_count())  // else a block that does nothing

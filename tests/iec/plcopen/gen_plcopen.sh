@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Writes a large PLCopen TC6 XML project to stdout, for cli.plcopen and scripts/bench.sh: program
-# Big with STEPS steps in a loop, and POUS-1 programs Small1... of 20 steps each. Every tenth step
+# Big with STEPS steps in a loop, and POUS-1 programs Small1... of 20 steps each, whose step S1
+# holds action Sub, an SFC of three steps. Every tenth step
 # opens a selection divergence (go on, or skip a step) that a selection convergence closes, every
 # fifth holds action Count with N; task Main runs Big every 10 ms. Positions are all 0,0, as
 # CODESYS writes them: only localId/refLocalId link the elements.
@@ -53,14 +54,35 @@ esac
 steps=${1:-500}
 pous=${2:-24}
 awk -v steps="$steps" -v pous="$pous" '
-function pou(name, n,    i, id, prev, t, d, c) {
+# An action whose body is an SFC (docs/iec.md "SFC inside actions and function blocks"): Sub, whose
+# steps U0, U1, U2 go round on Go and NOT Skip; U1 holds Tally, which counts by two.
+function sub_action() {
+  print "          <action name=\"Tally\"><body><ST><xhtml:p><![CDATA[Count := Count + 2;]]></xhtml:p></ST></body></action>"
+  print "          <action name=\"Sub\"><body><SFC>"
+  print "            <step localId=\"1\" name=\"U0\" initialStep=\"true\"><position x=\"0\" y=\"0\"/><connectionPointOut formalParameter=\"\"/></step>"
+  print "            <transition localId=\"2\"><position x=\"0\" y=\"0\"/><connectionPointIn><connection refLocalId=\"1\"/></connectionPointIn>"
+  print "              <condition><inline name=\"\"><ST><xhtml:p><![CDATA[Go]]></xhtml:p></ST></inline></condition></transition>"
+  print "            <step localId=\"3\" name=\"U1\"><position x=\"0\" y=\"0\"/><connectionPointIn><connection refLocalId=\"2\"/></connectionPointIn><connectionPointOut formalParameter=\"\"/></step>"
+  print "            <actionBlock localId=\"4\"><position x=\"0\" y=\"0\"/><connectionPointIn><connection refLocalId=\"3\"/></connectionPointIn>"
+  print "              <action localId=\"0\" qualifier=\"N\"><relPosition x=\"0\" y=\"0\"/><reference name=\"Tally\"/></action></actionBlock>"
+  print "            <transition localId=\"5\"><position x=\"0\" y=\"0\"/><connectionPointIn><connection refLocalId=\"3\"/></connectionPointIn>"
+  print "              <condition><inline name=\"\"><ST><xhtml:p><![CDATA[NOT Skip]]></xhtml:p></ST></inline></condition></transition>"
+  print "            <step localId=\"6\" name=\"U2\"><position x=\"0\" y=\"0\"/><connectionPointIn><connection refLocalId=\"5\"/></connectionPointIn><connectionPointOut formalParameter=\"\"/></step>"
+  print "            <transition localId=\"7\"><position x=\"0\" y=\"0\"/><connectionPointIn><connection refLocalId=\"6\"/></connectionPointIn>"
+  print "              <condition><inline name=\"\"><ST><xhtml:p><![CDATA[Go]]></xhtml:p></ST></inline></condition></transition>"
+  print "            <jumpStep localId=\"8\" targetName=\"U0\"><position x=\"0\" y=\"0\"/><connectionPointIn><connection refLocalId=\"7\"/></connectionPointIn></jumpStep>"
+  print "          </SFC></body></action>"
+}
+function pou(name, n, nested,    i, id, prev, t, d, c) {
   print "      <pou name=\"" name "\" pouType=\"program\">"
   print "        <interface>"
   print "          <inputVars><variable name=\"Go\"><type><BOOL/></type></variable>"
   print "            <variable name=\"Skip\"><type><BOOL/></type></variable></inputVars>"
   print "          <outputVars><variable name=\"Count\"><type><DINT/></type><initialValue><simpleValue value=\"0\"/></initialValue></variable></outputVars>"
   print "        </interface>"
-  print "        <actions><action name=\"Inc\"><body><ST><xhtml:p><![CDATA[Count := Count + 1;]]></xhtml:p></ST></body></action></actions>"
+  print "        <actions><action name=\"Inc\"><body><ST><xhtml:p><![CDATA[Count := Count + 1;]]></xhtml:p></ST></body></action>"
+  if (nested) sub_action()
+  print "        </actions>"
   print "        <body>"
   print "          <SFC>"
   # ids: step i is 10*i+1, its outgoing transition 10*i+2, divergence 10*i+3, skip transition
@@ -79,6 +101,12 @@ function pou(name, n,    i, id, prev, t, d, c) {
       print "            <actionBlock localId=\"" 10 * i + 6 "\"><position x=\"0\" y=\"0\"/>"
       print "              <connectionPointIn><connection refLocalId=\"" id "\"/></connectionPointIn>"
       print "              <action localId=\"0\" qualifier=\"N\"><relPosition x=\"0\" y=\"0\"/><reference name=\"Inc\"/></action>"
+      print "            </actionBlock>"
+    }
+    if (nested && i == 1) {
+      print "            <actionBlock localId=\"" 10 * i + 6 "\"><position x=\"0\" y=\"0\"/>"
+      print "              <connectionPointIn><connection refLocalId=\"" id "\"/></connectionPointIn>"
+      print "              <action localId=\"0\" qualifier=\"N\"><relPosition x=\"0\" y=\"0\"/><reference name=\"Sub\"/></action>"
       print "            </actionBlock>"
     }
     from = id
@@ -119,8 +147,8 @@ BEGIN {
   print "  <fileHeader companyName=\"gfec\" productName=\"gen_plcopen.sh\" productVersion=\"1\" creationDateTime=\"2026-12-07T00:00:00\"/>"
   print "  <types>"
   print "    <pous>"
-  pou("Big", steps)
-  for (p = 1; p < pous; p++) pou("Small" p, 20)
+  pou("Big", steps, 0)
+  for (p = 1; p < pous; p++) pou("Small" p, 20, 1)
   print "    </pous>"
   print "  </types>"
   print "  <instances><configurations><configuration name=\"Plant\"><resource name=\"Cpu\">"
