@@ -49,8 +49,9 @@ same() { # NAME WHAT OUT: OUT must be the original's lines (original.txt)
   if ! cmp -s original.txt "$3"; then
     mismatches=$((mismatches + 1))
     echo "MISMATCH: $1 ($2): first differing scan:" >&2
+    # awk reads to the end (no exit): paste must not die of a closed pipe under pipefail.
     paste -d '\n' <(scanwise original.txt) <(scanwise "$3") |
-      awk 'NR % 2 == 1 {o = $0} NR % 2 == 0 && o != $0 {print "  original: " o; print "  " w ": " $0; n = 1; exit}
+      awk 'NR % 2 == 1 {o = $0} NR % 2 == 0 && o != $0 && !n {print "  original: " o; print "  " w ": " $0; n = 1}
            END {if (!n) print "  (the same scans, but a different number of them or of lines)"}' w="$2" >&2
   fi
 }
