@@ -12,6 +12,7 @@
 #include "ast.h"
 #include "source.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -59,6 +60,17 @@ struct Transition {
   ast::ExprPtr condition;  ///< a BOOL ST expression; never null in a transition the reader kept
   SourceRange range;
 };
+
+/// Puts `transitions` in the order the scan tries them: within a selection divergence a PRIORITY
+/// orders them, lower first, and those without one keep their order after those with one
+/// (docs/iec.md). Transitions of different divergences never compete, so one stable order over
+/// all of them says the same.
+inline void order_by_priority(std::vector<Transition> &transitions) {
+  std::stable_sort(transitions.begin(), transitions.end(), [](const Transition &a, const Transition &b) {
+    if (!a.priority || !b.priority) return a.priority.has_value() && !b.priority.has_value();
+    return *a.priority < *b.priority;
+  });
+}
 
 /// `ACTION name: <ST statements> END_ACTION`, or an action whose body is an SFC: `ACTION name:
 /// INITIAL_STEP ... END_ACTION`, a PLCopen action whose body is `<SFC>` (docs/iec.md "SFC inside

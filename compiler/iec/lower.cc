@@ -621,13 +621,7 @@ bool lower_pou(Pou &&pou, const std::optional<ast::Period> &period, ast::File &f
       p.extra().associations = std::move(s.associations);
     }
   }
-  // PRIORITY orders the transitions of a divergence, lower first; those without one keep their
-  // order after those with one (docs/iec.md). Transitions of different divergences never
-  // compete, so one stable order over all of them says the same.
-  std::stable_sort(pou.transitions.begin(), pou.transitions.end(), [](const Transition &a, const Transition &b) {
-    if (!a.priority || !b.priority) return a.priority.has_value() && !b.priority.has_value();
-    return *a.priority < *b.priority;
-  });
+  order_by_priority(pou.transitions);  // PRIORITY first within a divergence (docs/iec.md)
   for (Transition &t : pou.transitions) {
     ast::Transition &x = c.transitions.emplace_back();
     for (ast::Name &n : t.from) names.respell(n);
@@ -743,14 +737,9 @@ void resolve_externals(Project &project, Diagnostics &diag) {
                                    fmt::format("'{}' is declared VAR_EXTERNAL in program '{}', but no VAR_GLOBAL of "
                                                "the file declares it",
                                                v.name.text, p.name.text));
-        NearestName nearest(v.name.text, typo_limit(v.name.text.size()));
-        const Variable *best = nullptr;
-        for (const Variable &g : project.globals)
-          if (nearest.offer(g.name.text)) best = &g;
-        if (best)
-          d.fix(v.name.range, std::string(best->name.text))
-              .note(best->name.range, fmt::format("did you mean '{}'?", best->name.text));
-        else if (project.globals.empty())
+        if (!suggest_nearest(d, v.name, project.globals,
+                             [](const Variable &g) -> const ast::Name & { return g.name; }) &&
+            project.globals.empty())
           // Beremiz declares the globals of its extensions (Python, HMI) outside the PLCopen file.
           d.note("the file declares no global variables: a CONFIGURATION or RESOURCE declares them in a "
                  "VAR_GLOBAL section (PLCopen: globalVars)");

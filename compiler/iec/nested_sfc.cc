@@ -244,13 +244,7 @@ bool Compiler::owners() {
           Diagnostic &d = diag_.error(as.action.range, ErrorKind::UnknownName,
                                       fmt::format("no action '{}' (step '{}' of the SFC of {})", as.action.text,
                                                   (*g.steps)[s].name.text, g.label));
-          NearestName nearest(as.action.text, typo_limit(as.action.text.size()));
-          const Action *best = nullptr;
-          for (const Action &x : pou_.actions)
-            if (nearest.offer(x.name.text)) best = &x;
-          if (best)
-            d.fix(as.action.range, std::string(best->name.text))
-                .note(best->name.range, fmt::format("did you mean '{}'?", best->name.text));
+          suggest_nearest(d, as.action, pou_.actions, [](const Action &x) -> const ast::Name & { return x.name; });
           ok = false;
           continue;
         }
@@ -321,13 +315,7 @@ bool Compiler::check(const Sfc &g) {
         Diagnostic &d = diag_.error(
             n.range, ErrorKind::UnknownName,
             fmt::format("no step '{}' in the SFC of {}: a transition links steps of its own SFC", n.text, g.label));
-        NearestName nearest(n.text, typo_limit(n.text.size()));
-        const Step *best = nullptr;
-        for (const Step &s : *g.steps)
-          if (nearest.offer(s.name.text)) best = &s;
-        if (best)
-          d.fix(n.range, std::string(best->name.text))
-              .note(best->name.range, fmt::format("did you mean '{}'?", best->name.text));
+        suggest_nearest(d, n, *g.steps, [](const Step &x) -> const ast::Name & { return x.name; });
         ok = false;
       }
   return ok;
@@ -504,10 +492,7 @@ ast::Block Compiler::scan(const Sfc &g, const std::function<ast::ExprPtr(const B
     if (!vars[s].avail.empty()) out.push_back(b.assign(vars[s].avail, b.name(vars[s].x)));
     if (!vars[s].add.empty()) out.push_back(b.assign(vars[s].add, b.boolean(false)));
   }
-  std::stable_sort(transitions.begin(), transitions.end(), [](const Transition &a, const Transition &b) {
-    if (!a.priority || !b.priority) return a.priority.has_value() && !b.priority.has_value();
-    return *a.priority < *b.priority;
-  });
+  order_by_priority(transitions);
   for (Transition &t : transitions) {
     const Builder b(file_, t.range);
     ast::ExprPtr open;

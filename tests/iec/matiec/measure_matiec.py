@@ -30,7 +30,7 @@ def trace_rows(base, inputs):
     with open(base + ".csv") as f:
         rows = list(csv.reader(line for line in f if line.strip() and not line.startswith("#")))
     index = {h.strip().lower(): i for i, h in enumerate(rows[0])}
-    return [[int(r[index[n.lower()]]) if n.lower() in index else 0 for n, _ in inputs] for r in rows[1:]]
+    return [[int(r[index[n.lower()]]) if n.lower() in index else 0 for n, *_ in inputs] for r in rows[1:]]
 
 
 def table(rows, ncols):
@@ -98,7 +98,7 @@ def measure_matiec(st_path, matiec, name, inputs, rows, ncols, work):
     subprocess.run([os.path.join(matiec, "iec2c"), "-I", os.path.join(matiec, "lib"), "-T", work,
                     os.path.abspath(st_path)], check=True, capture_output=True)
     sets = "\n".join("            RES__INST.%s.value = trace[i][%d];" % (n.upper(), k)
-                     for k, (n, _) in enumerate(inputs))
+                     for k, (n, *_) in enumerate(inputs))
     with open(os.path.join(work, "main.c"), "w") as f:
         f.write(MATIEC_MAIN % {"type": name.upper(), "ncols": ncols, "rows": table(rows, ncols),
                                "sets": sets, "repeat": REPEAT})
@@ -111,14 +111,14 @@ def measure_matiec(st_path, matiec, name, inputs, rows, ncols, work):
 def measure(st_path, matiec, gfec):
     base = st_path[:-3]
     with open(st_path) as f:
-        name, inputs, outputs = run_matiec.declarations(f.read())
+        name, inputs, outputs, _ = run_matiec.declarations(f.read())  # located globals: none here
     rows = trace_rows(base, inputs)
     ncols = max(1, len(inputs))
     results = {}
     with tempfile.TemporaryDirectory() as work:
         if matiec:
             results["MatIEC"] = measure_matiec(st_path, matiec, name, inputs, rows, ncols, work)
-        sets = "\n".join("            m.%s = trace[i][%d];" % (n, k) for k, (n, _) in enumerate(inputs))
+        sets = "\n".join("            m.%s = trace[i][%d];" % (n, k) for k, (n, *_) in enumerate(inputs))
         with open(os.path.join(work, "gmain.c"), "w") as f:
             f.write(GFEC_MAIN % {"type": name, "ncols": ncols, "rows": table(rows, ncols), "sets": sets,
                                  "repeat": REPEAT})
