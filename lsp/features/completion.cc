@@ -70,6 +70,10 @@ Where locate(const LexedText &lexed, std::uint32_t offset) {
           f.scope = Scope::Plan;
         } else if (first == Tok::KwTest) {
           f.scope = Scope::Test;
+          // `test "NAME" of CHART`: the chart whose inputs a `set` may name.
+          for (std::size_t k = 0; k + 1 < statement.size(); ++k)
+            if (statement[k]->text == "of" && statement[k + 1]->kind == Tok::Ident)
+              f.chart = std::string(statement[k + 1]->text);
         }
       } else if (w.before_statement && w.before_statement->kind == Tok::RBrace) {
         f.scope = Scope::Block;  // `} else {` reads as a statement of its own
@@ -157,6 +161,7 @@ CompletionContext classify(const Where &w) {
     return CompletionContext::None;
   case Scope::Test:
     if (s.empty()) return CompletionContext::TestStep;
+    if (s.size() == 1 && s.front()->text == "set") return CompletionContext::TestSet;
     return CompletionContext::Condition;
   default: return CompletionContext::None;
   }
@@ -165,6 +170,7 @@ CompletionContext classify(const Where &w) {
 /// The names completion offers, gathered once per request.
 struct Names {
   std::set<std::string> value_functions, action_functions, consts, vars, places, charts;
+  std::set<std::string> inputs;  ///< the chart's `in` and `inout` variables: what a test may set
 
   void from_tree(const ast::Program &p, const std::string &chart) {
     for (const auto &file : p.files) {
@@ -176,7 +182,11 @@ struct Names {
         charts.insert(std::string(c.name.text));
         if (c.name.text != chart) continue;
         for (const ast::Place &pl : c.places) places.insert(std::string(pl.name.text));
-        for (const ast::ValueDecl &v : c.values) (v.is_const ? consts : vars).insert(std::string(v.name.text));
+        for (const ast::ValueDecl &v : c.values) {
+          (v.is_const ? consts : vars).insert(std::string(v.name.text));
+          if (!v.is_const && (v.role == ast::VarRole::In || v.role == ast::VarRole::InOut))
+            inputs.insert(std::string(v.name.text));
+        }
       }
     }
   }
@@ -196,9 +206,12 @@ struct Names {
         current = name, chart_depth = depth;
       } else if ((t[i].kind == Tok::KwPlace || t[i].kind == Tok::KwState) && current == chart) {
         places.insert(name);
-      } else if (i > 0 && (t[i - 1].kind == Tok::KwVar || t[i - 1].kind == Tok::KwConst) && t[i].kind == Tok::Ident) {
-        if (t[i - 1].kind == Tok::KwConst) consts.insert(name);
-        else if (current == chart) vars.insert(name);
+      } else if (i > 0 && t[i].kind == Tok::Ident) {
+        const Tok role = t[i - 1].kind;  // `var TYPE NAME`, `in TYPE NAME`, ...
+        if (role == Tok::KwConst) consts.insert(name);
+        if (current != chart) continue;
+        if (role == Tok::KwVar || role == Tok::KwIn || role == Tok::KwOut || role == Tok::KwInOut) vars.insert(name);
+        if (role == Tok::KwIn || role == Tok::KwInOut) inputs.insert(name);
       }
     }
   }
@@ -232,7 +245,7 @@ nlohmann::json completion(std::string_view text, std::uint32_t offset, const ast
   const CompletionContext context = classify(w);
   std::string chart;
   for (const Frame &f : w.frames)
-    if (f.scope == Scope::Chart) chart = f.chart;
+    if (f.scope == Scope::Chart || f.scope == Scope::Test) chart = f.chart;
   Names names;
   if (program) names.from_tree(*program, chart);
   names.from_tokens(lexed, chart);
@@ -274,6 +287,10 @@ nlohmann::json completion(std::string_view text, std::uint32_t offset, const ast
   case CompletionContext::Charts: add_all(names.charts, kClass, "chart"); break;
   case CompletionContext::Types: add_words(kTypes, kTypeParameter, "type"); break;
   case CompletionContext::TestStep: add_words(kTestSteps, kKeyword, "keyword"); break;
+  case CompletionContext::TestSet:
+    add_all(names.inputs, kVariable, "input");
+    add_all(names.value_functions, kFunction, "function");
+    break;
   case CompletionContext::Import: {
     // The folder of what is typed so far, beside the document.
     std::string typed(w.inside->text.substr(1, offset - w.inside->range.begin - 1));

@@ -32,6 +32,7 @@ enum class CompletionContext {
   Types,
   Import,
   TestStep,
+  TestSet,  ///< after `set` in a test: the tested chart's inputs and the sensing functions
   None
 };
 

@@ -1,6 +1,7 @@
 # Completion knows where the cursor is: in a condition the functions that return a value, the
 # vars and constants (and the built-ins); in a transition's place list the chart's places; at
-# the start of a chart's item its keywords; in an import the chart files beside the document.
+# the start of a chart's item its keywords; in an import the chart files beside the document;
+# after a test's `set` the inputs of the chart it tests.
 // file io.iface
 interface Io {
   void led_on();
@@ -43,6 +44,18 @@ interface Other { }
 {"jsonrpc":"2.0","id":5,"method":"textDocument/completion","params":{"textDocument":{"uri":"${root}/c.sfc"},"position":{"line":0,"character":8}}}
 // expect
 {"id":5,"result":{"isIncomplete":false,"items":[{"label":"io.iface","kind":17},{"label":"other.iface","kind":17}]}}
+# After `set` in a scenario test: the tested chart's inputs (`in`, `inout`; not `out` or `var`)
+# and the functions a test may set (those that return a value).
+// send
+{"jsonrpc":"2.0","method":"textDocument/didOpen","params":{"textDocument":{"uri":"${root}/t.sfc","languageId":"gfec-sfc","version":1,
+ "text":"import \"io.iface\";\nsfc D {\n  in bool go;\n  inout int level;\n  out int shown;\n  var int n;\n  initial place A { shown = level; }\n}\ntest \"t\" of D {\n  set go = true;\n  tick;\n  expect shown == 0;\n}\n"}}}
+// expect
+{"method":"textDocument/publishDiagnostics","params":{"uri":"${root}/t.sfc","diagnostics":[]}}
+# `set g|o = true;`
+// send
+{"jsonrpc":"2.0","id":6,"method":"textDocument/completion","params":{"textDocument":{"uri":"${root}/t.sfc"},"position":{"line":9,"character":7}}}
+// expect
+{"id":6,"result":{"isIncomplete":false,"items":[{"label":"go","kind":6},{"label":"level","kind":6},{"label":"button","kind":3}]}}
 // send
 {"jsonrpc":"2.0","id":9,"method":"shutdown"}
 // expect
