@@ -177,9 +177,8 @@ private:
   };
 
   std::size_t action_index(std::string_view name) const {
-    for (std::size_t i = 0; i < pou_.actions.size(); ++i)
-      if (upper(pou_.actions[i].name.text) == upper(name)) return i;
-    return SIZE_MAX;
+    auto it = action_by_name_.find(upper(name));
+    return it == action_by_name_.end() ? SIZE_MAX : it->second;
   }
   std::string_view fresh(std::string base) {
     while (names_.declared(base)) base += '_';
@@ -227,6 +226,7 @@ private:
   std::set<std::string> timed_;                    ///< inner steps (upper case) whose `.T` is read
   std::string_view dt_;                            ///< a function block's: the time since its instance's previous call
   std::set<std::string> compiling_;                ///< SFC actions being compiled (a cycle check)
+  std::map<std::string, std::size_t> action_by_name_;  ///< upper case -> index in Pou::actions
   bool period_reported_ = false;
   bool too_deep_ = false;  ///< reported once: the SFCs below it are not compiled
 };
@@ -630,9 +630,8 @@ void Compiler::run(bool function_block) {
       sfcs_.push_back({upper(a.name.text), file_.strings.emplace_back(fmt::format("action '{}'", a.name.text)),
                        &a.steps, &a.transitions, a.name.range});
   if (sfcs_.size() == 1 && !function_block) return;
-  std::set<std::string> seen;
-  for (const Action &a : pou_.actions)
-    if (!seen.insert(upper(a.name.text)).second) {
+  for (std::size_t i = 0; i < pou_.actions.size(); ++i)
+    if (!action_by_name_.emplace(upper(pou_.actions[i].name.text), i).second) {
       // An action declared twice: the validator reports it, and which one a step holds is moot.
       for (Action &x : pou_.actions) x.steps.clear(), x.transitions.clear();
       return;
