@@ -1,7 +1,8 @@
 // textDocument/hover: what the name at the cursor is, from its declaration in the syntax tree
 // (outline.h) and the validator's resolution: an interface function's prototype and interface,
 // a place's kind and actions, a var's or constant's type and initial value, a chart's
-// interface (its places' kinds, vars and constants). Markdown, with chart text in `gfec` blocks.
+// interface (its places' kinds, vars and constants); or a built-in function's signature and
+// meaning. Markdown, with chart text in `gfec` blocks.
 #include "handlers/navigation.h"
 #include "methods.h"
 #include "outline.h"
@@ -39,11 +40,46 @@ std::string chart_interface(const OutlineItem &chart) {
   return s + "}";
 }
 
+/// A built-in function of the chart language (docs/language.md §4, §9, §11, §14, §15): its
+/// signature and what it gives, for a name no declaration resolves.
+const char *builtin_doc(std::string_view name) {
+  static const struct {
+    const char *name, *doc;
+  } kBuiltins[] = {
+      {"elapsed", "`elapsed(P)`: the time place or state `P` has been active, in ticks (a `time` where one is meant)"},
+      {"active", "`active(P)`: place or state `P` is active (`active(P.Q)`: in the chart `P` runs); of a named "
+                 "action, its Q"},
+      {"running", "`running(A)`: the body of named action `A` runs in this tick (IEC's `A.A`)"},
+      {"succeeded", "`succeeded(P)`: `P` runs an fsm that is in a success state"},
+      {"failed", "`failed(P)`: `P` runs an fsm that is in a failure state"},
+      {"team", "`team(S)`: how many other agents last reported state `S`"},
+      {"agent", "`agent()`: this engine's agent number"},
+      {"now", "`now()`: the time of the tick, a `time`: the tick's number times the period"},
+      {"abs", "`abs(x)`: the absolute value of `x`, of its type (IEC's ABS)"},
+      {"min", "`min(a, b, ...)`: the least of its operands; the first of equal ones (IEC's MIN)"},
+      {"max", "`max(a, b, ...)`: the greatest of its operands; the first of equal ones (IEC's MAX)"},
+      {"limit", "`limit(mn, x, mx)`: `x` kept between `mn` and `mx`, `x > mn ? (x < mx ? x : mx) : mn` (IEC's LIMIT)"},
+      {"sel", "`sel(g, a, b)`: `a` when `g` is false, `b` when it is true (IEC's SEL)"},
+      {"mux", "`mux(k, a, b, ...)`: `a` when `k` is 0, `b` when 1, ...; 0 when `k` is out of range (IEC's MUX)"},
+  };
+  for (const auto &b : kBuiltins)
+    if (name == b.name) return b.doc;
+  return nullptr;
+}
+
 }  // namespace
 
 json hover(Session &s, const json &params) {
   At at = name_at_request(s, params);
-  if (!at.name) return nullptr;
+  if (!at.name) {
+    // No declared name: a built-in function, if the word at the cursor is one.
+    const Token t = at.doc.token_at(at.doc.offset_at(read_position(params.at("position"))));
+    const char *doc = t.kind == Tok::Ident ? builtin_doc(t.text) : nullptr;
+    if (!doc) return nullptr;
+    return {{"contents",
+             {{"kind", "markdown"}, {"value", "**built-in function** `" + std::string(t.text) + "`\n\n" + doc}}},
+            {"range", at.doc.range(t.range)}};
+  }
   const NameUse &u = *at.name;
   std::string header =
       "**" + std::string(validation::describe(u.kind)) + "** `" + std::string(at.doc.text_of(u.at)) + "`";

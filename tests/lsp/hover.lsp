@@ -1,5 +1,6 @@
 # textDocument/hover: an interface function's prototype, a place's kind and actions, a var's
-# type and initial value, a chart's interface; null where there is no name.
+# type and initial value, a chart's interface, a built-in function's meaning; null where there is
+# no name.
 // file io.iface
 interface Io {
   void led_on();
@@ -52,6 +53,19 @@ test "lights up" of Blink {
 {"jsonrpc":"2.0","id":6,"method":"textDocument/hover","params":{"textDocument":{"uri":"${root}/blink.sfc"},"position":{"line":2,"character":10}}}
 // expect
 {"id":6,"result":null}
+# Built-in functions: their signature and meaning (docs/language.md §4, §5.3).
+// send
+{"jsonrpc":"2.0","method":"textDocument/didOpen","params":{"textDocument":{"uri":"${root}/h.sfc","languageId":"gfec-sfc","version":1,"text":"sfc H {\n  period 10ms;\n  var int n;\n  initial place A { n = limit(0, n + 1, 9); }\n  place B { }\n  A -> B when elapsed(A) >= 20ms;\n}\n"}}}
+// expect
+{"method":"textDocument/publishDiagnostics","params":{"uri":"${root}/h.sfc","diagnostics":[]}}
+// send
+{"jsonrpc":"2.0","id":7,"method":"textDocument/hover","params":{"textDocument":{"uri":"${root}/h.sfc"},"position":{"line":3,"character":24}}}
+// expect
+{"id":7,"result":{"contents":{"kind":"markdown","value":"**built-in function** `limit`\n\n`limit(mn, x, mx)`: `x` kept between `mn` and `mx`, `x > mn ? (x < mx ? x : mx) : mn` (IEC's LIMIT)"},"range":{"start":{"line":3,"character":24},"end":{"line":3,"character":29}}}}
+// send
+{"jsonrpc":"2.0","id":8,"method":"textDocument/hover","params":{"textDocument":{"uri":"${root}/h.sfc"},"position":{"line":5,"character":15}}}
+// expect
+{"id":8,"result":{"contents":{"kind":"markdown","value":"**built-in function** `elapsed`\n\n`elapsed(P)`: the time place or state `P` has been active, in ticks (a `time` where one is meant)"}}}
 // send
 {"jsonrpc":"2.0","id":99,"method":"shutdown"}
 // expect
