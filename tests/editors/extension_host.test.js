@@ -327,10 +327,12 @@ test('activate: the client runs `gfec lsp` (gfec.path) for the six languages wit
   const c = fake.clients[0];
   assert.equal(c.id, 'gfec', 'the id under which vscode-languageclient reads gfec.trace.server');
   assert.deepEqual(c.server, { command: '/opt/gfec/bin/gfec', args: ['lsp'], transport: 0 });
-  assert.deepEqual(c.options.documentSelector.map((d) => d.language).sort(),
+  assert.deepEqual(c.options.documentSelector.filter((d) => d.language).map((d) => d.language).sort(),
                    ['gfec-fsm', 'gfec-iface', 'gfec-plan', 'gfec-sfc', 'gfec-test', 'gfec-toolbox']);
+  assert.deepEqual(c.options.documentSelector.filter((d) => !d.language), [{ scheme: 'file', pattern: '**/*.st' }],
+                   'IEC structured text by its extension');
   assert.deepEqual(c.options.initializationOptions, { warnings: ['all', 'no-unused-var'] }, 'only the settings that are set');
-  assert.equal(c.options.synchronize.fileEvents.glob, '**/*.{sfc,fsm,plan,toolbox,iface,test}');
+  assert.equal(c.options.synchronize.fileEvents.glob, '**/*.{sfc,fsm,plan,toolbox,iface,test,st}');
   assert.ok(c.started);
   assert.deepEqual(Object.keys(fake.commands).sort(),
                    ['gfec.openLiveMonitor', 'gfec.openPreview', 'gfec.openRunReplay', 'gfec.restartServer']);
@@ -346,6 +348,12 @@ test('activate: the client runs `gfec lsp` (gfec.path) for the six languages wit
   fake.events.config.fire({ affectsConfiguration: (k) => k === 'gfec.preview.delay' });
   await sleep(50);
   assert.equal(fake.clients.length, 2, 'the preview\'s delay restarts nothing');
+  // gfec.period: the server's period for IEC programs that no task runs.
+  fake.settings.period = 'T#100ms';
+  fake.events.config.fire({ affectsConfiguration: (k) => k === 'gfec.period' });
+  await until(() => fake.clients.length === 3 && fake.clients[2].started, 'a client with the period');
+  assert.deepEqual(fake.clients[2].options.initializationOptions, { warnings: ['all', 'no-unused-var'], period: 'T#100ms' });
+  fake.settings.period = '';
 
   // A gfec that cannot start: an error naming the setting, no crash.
   fake.startError = new Error('spawn gfec ENOENT');

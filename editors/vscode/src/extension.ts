@@ -14,17 +14,21 @@ function makeClient(): LanguageClient {
   // The server's own settings (docs/editors.md, "Starting the server"): given only when set, so a
   // server's defaults stay its own.
   const config = vscode.workspace.getConfiguration('gfec');
-  const initializationOptions: { includeDirs?: string[]; warnings?: string[] } = {};
+  const initializationOptions: { includeDirs?: string[]; warnings?: string[]; period?: string } = {};
   const includeDirs = config.get<string[]>('includeDirs') ?? [];
   const warnings = config.get<string[]>('warnings') ?? [];
+  const period = config.get<string>('period') ?? '';
   if (includeDirs.length > 0) initializationOptions.includeDirs = includeDirs;
   if (warnings.length > 0) initializationOptions.warnings = warnings;
+  if (period !== '') initializationOptions.period = period;
   const options: LanguageClientOptions = {
-    documentSelector: LANGUAGES.map((language) => ({ language })),
+    // IEC 61131-3 structured text by its extension, whatever language mode another extension
+    // gives it: the server checks it as gfec --check does (docs/iec.md).
+    documentSelector: [...LANGUAGES.map((language) => ({ language })), { scheme: 'file', pattern: '**/*.st' }],
     initializationOptions,
     // Files of the workspace the server reads without their being open (imports, .test files
     // naming a chart): it hears when they change on disk.
-    synchronize: { fileEvents: vscode.workspace.createFileSystemWatcher('**/*.{sfc,fsm,plan,toolbox,iface,test}') },
+    synchronize: { fileEvents: vscode.workspace.createFileSystemWatcher('**/*.{sfc,fsm,plan,toolbox,iface,test,st}') },
   };
   // The id 'gfec' makes vscode-languageclient read the setting gfec.trace.server itself.
   return new LanguageClient('gfec', 'gfec language server', server, options);
@@ -57,7 +61,8 @@ export async function activate(context: vscode.ExtensionContext): Promise<void> 
     vscode.commands.registerCommand('gfec.openLiveMonitor', openLiveMonitor),
     vscode.commands.registerCommand('gfec.restartServer', restartClient),
     vscode.workspace.onDidChangeConfiguration((e) => {
-      if (['gfec.path', 'gfec.includeDirs', 'gfec.warnings'].some((k) => e.affectsConfiguration(k))) void restartClient();
+      if (['gfec.path', 'gfec.includeDirs', 'gfec.warnings', 'gfec.period'].some((k) => e.affectsConfiguration(k)))
+        void restartClient();
     }),
   );
   await startClient();
