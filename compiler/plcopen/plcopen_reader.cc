@@ -298,6 +298,15 @@ void Reader::read_actions(const pugi::xml_node &actions, const pugi::xml_node &p
       continue;
     }
     pugi::xml_node st = child(body, "ST");
+    // FBD and LD are read as the ST they mean (network_body.cc), as a POU's body is.
+    pugi::xml_node network = child(body, "FBD") ? child(body, "FBD") : child(body, "LD");
+    if (!st && network) {
+      auto block = read_network(network);
+      if (!block) continue;
+      action.body = std::move(*block);
+      pou.actions.push_back(std::move(action));
+      continue;
+    }
     if (!st) {
       pugi::xml_node what = body;
       for (pugi::xml_node c : body.children())
@@ -306,8 +315,8 @@ void Reader::read_actions(const pugi::xml_node &actions, const pugi::xml_node &p
           break;
         }
       if (!what) what = a;
-      not_supported(what, fmt::format("the body of action '{}' is {}: gfec reads action bodies in ST and SFC; {} is "
-                                      "not supported yet",
+      not_supported(what, fmt::format("the body of action '{}' is {}: gfec reads action bodies in ST, SFC, FBD and "
+                                      "LD; {} is not supported yet",
                                       action.name.text, describe(what), local_name(what)));
       continue;
     }

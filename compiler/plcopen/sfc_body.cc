@@ -453,6 +453,26 @@ void Reader::read_sfc(const pugi::xml_node &sfc, const pugi::xml_node &pou_node,
                                 g.describe(n), text::printable(name.text)));
       } else if (pugi::xml_node st = child(child(body_of, "body"), "ST")) {
         t.condition = expression(condition_of_body(xml_.text_below(st), name.text));
+      } else if (pugi::xml_node net = child(child(body_of, "body"), "FBD") ? child(child(body_of, "body"), "FBD")
+                                                                           : child(child(body_of, "body"), "LD")) {
+        // An FBD or LD network whose one output is the transition's name (Beremiz draws `STOP`
+        // := NOT SWITCH_BUTTON so): what it assigns is the condition (network_body.cc).
+        if (std::optional<ast::Block> block = read_network(net)) {
+          ast::Stmt *assign = nullptr;
+          for (ast::Stmt &st : *block)
+            if (st.kind == ast::Stmt::Kind::Assign && st.target && upper(st.target->text) == upper(name.text))
+              assign = assign ? nullptr : &st;
+          if (assign && block->size() == 1) {
+            t.condition = std::move(assign->value);
+          } else {
+            diag_
+                .error(at(net), ErrorKind::NotSupported,
+                       fmt::format("the {} body of transition '{}' does more than give the transition's value (one "
+                                   "output variable '{}'): not supported yet",
+                                   local_name(net), text::printable(name.text), text::printable(name.text)))
+                .note(name.range, fmt::format("the condition of {}", g.describe(n)));
+          }
+        }
       } else {
         pugi::xml_node what = child(body_of, "body");
         for (pugi::xml_node c : what.children())
@@ -463,8 +483,8 @@ void Reader::read_sfc(const pugi::xml_node &sfc, const pugi::xml_node &pou_node,
         if (!what) what = body_of;
         diag_
             .error(at(what), ErrorKind::NotSupported,
-                   fmt::format("the body of transition '{}' is written in {}: gfec reads transition bodies in ST; "
-                               "{} is not supported yet",
+                   fmt::format("the body of transition '{}' is written in {}: gfec reads transition bodies in ST, "
+                               "FBD and LD; {} is not supported yet",
                                text::printable(name.text), local_name(what), local_name(what)))
             .note(name.range, fmt::format("the condition of {}", g.describe(n)));
       }

@@ -149,9 +149,9 @@ TEST_CASE("plcopen: an action whose body is an SFC holds its steps and transitio
   // The program's own SFC, as before.
   CHECK(names_of(feeder.steps) == Names{"Idle", "Run"});
   REQUIRE(feeder.transitions.size() == 2);
-  // Named actions first, then the inline actions in the file's order, numbered over the POU:
-  // Seq's step Take's, then the main SFC's step Run's.
-  CHECK(names_of(feeder.actions) == Names{"Seq", "Take_inline1", "Run_inline2"});
+  // Named actions first (Seq, and Show whose body is LD), then the inline action of Seq's step
+  // Take, numbered over the POU.
+  CHECK(names_of(feeder.actions) == Names{"Seq", "Show", "Take_inline1"});
   const iec::Action &seq = feeder.actions[0];
   CHECK(seq.sfc());
   CHECK(seq.body.empty());
@@ -167,12 +167,14 @@ TEST_CASE("plcopen: an action whose body is an SFC holds its steps and transitio
   REQUIRE(seq.steps[1].associations.size() == 1);
   CHECK(seq.steps[1].associations[0].qualifier.text == "N");
   CHECK(seq.steps[1].associations[0].action.text == "Take_inline1");
-  CHECK(feeder.actions[1].body.size() == 1);
+  CHECK(feeder.actions[1].body.size() == 1);  // the LD rung, read as `Busy := Go;`
   CHECK_FALSE(feeder.actions[1].sfc());
-  // The program's step Run holds Seq and its own inline action.
+  CHECK(feeder.actions[2].body.size() == 1);
+  CHECK_FALSE(feeder.actions[2].sfc());
+  // The program's step Run holds Seq and Show.
   REQUIRE(feeder.steps[1].associations.size() == 2);
   CHECK(feeder.steps[1].associations[0].action.text == "Seq");
-  CHECK(feeder.steps[1].associations[1].action.text == "Run_inline2");
+  CHECK(feeder.steps[1].associations[1].action.text == "Show");
 }
 
 TEST_CASE("plcopen: a function block whose body is an SFC is read as an SFC program is", "[plcopen]") {
@@ -188,6 +190,10 @@ TEST_CASE("plcopen: a function block whose body is an SFC is read as an SFC prog
   CHECK(names_of(light.transitions[1].from) == Names{"Pass"});
   CHECK(names_of(light.transitions[1].to) == Names{"Caution"});
   CHECK(names_of(light.transitions[2].to) == Names{"Stop"});  // the jump
+  // The named transition Asked, an FBD network, gives its output variable's value: Request.
+  REQUIRE(light.transitions[0].condition);
+  CHECK(light.transitions[0].condition->kind == ast::Expr::Kind::Name);
+  CHECK(light.transitions[0].condition->name.text == "Request");
   CHECK(names_of(light.actions) == Names{"Stop_inline1", "Pass_inline2", "Caution_inline3"});
   for (const iec::Step &s : light.steps) CHECK(s.associations.size() == 1);
   // The program calling it has its ST body.
