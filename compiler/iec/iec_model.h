@@ -116,6 +116,14 @@ struct Task {
   SourceRange range;
 };
 
+/// `TYPE Level : INT; END_TYPE`, or a PLCopen `<dataType>` whose `<baseType>` is an elementary
+/// type or another alias: another name of a type (docs/iec.md "Type aliases").
+struct TypeAlias {
+  ast::Name name;
+  ast::Name base;  ///< as written: `INT`, `HMI_INT`
+  SourceRange range;
+};
+
 /// Everything one file declares: its POUs in order, and the tasks of its CONFIGURATION /
 /// RESOURCE (the period of a program is the INTERVAL of the task that runs it).
 struct Project {
@@ -124,6 +132,7 @@ struct Project {
   /// The VAR_GLOBALs of its CONFIGURATIONs and RESOURCEs, in declaration order (Section::Global):
   /// one scope for the whole file, which the lowering checks for a name declared twice.
   std::vector<Variable> globals;
+  std::vector<TypeAlias> aliases;  ///< the file's type aliases, in declaration order
 };
 
 }  // namespace gfec::iec

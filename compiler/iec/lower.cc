@@ -87,6 +87,20 @@ void located_role(const Variable &v, ast::ValueDecl &d, Diagnostics &diag) {
 struct KnownBlocks {
   std::map<std::string, std::string> spelled;  ///< upper-case name -> as declared
   std::map<std::string, Spellings> members;    ///< a FUNCTION_BLOCK's; a standard block's are upper case
+  /// Type aliases, upper case -> upper case: the file's, and Beremiz's SVGHMI types (docs/iec.md
+  /// "Type aliases").
+  std::map<std::string, std::string> aliases;
+
+  /// `type` (upper case) with its aliases followed to the type they name; a chain that goes
+  /// round stops where it started, an unknown type then.
+  std::string resolve(std::string type) const {
+    for (std::size_t hops = 0; hops <= aliases.size(); ++hops) {
+      auto it = aliases.find(type);
+      if (it == aliases.end()) return type;
+      type = it->second;
+    }
+    return type;
+  }
 
   const std::string *type(const std::string &iec_upper) const {
     auto it = spelled.find(iec_upper);
@@ -178,7 +192,7 @@ ast::ValueDecl lower_variable(Variable &v, Diagnostics &diag, const KnownBlocks 
   d.is_const = v.constant && v.section == Section::Local;
   d.name = v.name;
   d.range = v.range;
-  const std::string t = upper(v.type.text);
+  const std::string t = known ? known->resolve(upper(v.type.text)) : upper(v.type.text);
   const std::string *block = known ? known->type(t) : nullptr;
   if (const char *c = chart_type(t)) {
     d.type = {c, v.type.range};
@@ -794,6 +808,38 @@ std::size_t lower(Project &&project, ast::File &file, Diagnostics &diag, std::op
   std::size_t added = 0;
   resolve_externals(project, diag);
   KnownBlocks known;
+  // Beremiz's SVGHMI extension declares its HMI types in a library of its own, not in the project
+  // file that uses them: each is another name of an elementary type (HMI_NODE of BOOL).
+  static const char *const kHmiTypes[][2] = {{"HMI_SINT", "SINT"},     {"HMI_INT", "INT"},     {"HMI_DINT", "DINT"},
+                                             {"HMI_LINT", "LINT"},     {"HMI_USINT", "USINT"}, {"HMI_UINT", "UINT"},
+                                             {"HMI_UDINT", "UDINT"},   {"HMI_ULINT", "ULINT"}, {"HMI_REAL", "REAL"},
+                                             {"HMI_STRING", "STRING"}, {"HMI_BOOL", "BOOL"},   {"HMI_NODE", "BOOL"}};
+  for (const auto &h : kHmiTypes) known.aliases[h[0]] = h[1];
+  for (const TypeAlias &a : project.aliases) known.aliases[upper(a.name.text)] = upper(a.base.text);
+  // An alias that names itself, directly or through others, names no type: said once per cycle.
+  std::map<std::string, std::string_view> alias_spelled;
+  for (const TypeAlias &a : project.aliases) alias_spelled.emplace(upper(a.name.text), a.name.text);
+  std::set<std::string> in_cycle;
+  for (const TypeAlias &a : project.aliases) {
+    const std::string self = upper(a.name.text);
+    if (in_cycle.count(self)) continue;
+    std::string chain(a.name.text), at = self;
+    std::vector<std::string> members{self};
+    for (std::size_t hops = 0; hops <= known.aliases.size(); ++hops) {
+      auto it = known.aliases.find(at);
+      if (it == known.aliases.end()) break;
+      at = it->second;
+      auto spelled = alias_spelled.find(at);
+      chain += " -> " + (spelled == alias_spelled.end() ? at : std::string(spelled->second));
+      if (at == self) {
+        diag.error(a.name.range, ErrorKind::BadType,
+                   fmt::format("data type '{}' names itself: {}", a.name.text, chain));
+        in_cycle.insert(members.begin(), members.end());
+        break;
+      }
+      members.push_back(at);
+    }
+  }
   for (const char *s : {"TON", "TOF", "TP", "R_TRIG", "F_TRIG", "SR", "RS", "CTU", "CTD", "CTUD"})
     if (is_standard_block(s)) known.spelled.emplace(s, s);
   for (const Pou &p : project.pous)

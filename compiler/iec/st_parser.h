@@ -106,6 +106,9 @@ private:
   void var_section(Pou &pou, std::optional<Section> given = std::nullopt);
   /// `VAR_GLOBAL [CONSTANT | RETAIN ...] ... END_VAR` of a configuration: into project.globals.
   void global_section(Project &project);
+  /// `TYPE ... END_TYPE`: the aliases (`Level : INT;`) into Project::aliases; any other data
+  /// type is reported not supported yet, at its name.
+  void type_section(Project &project);
   /// A FUNCTION_BLOCK's variables and ST body (an SFC body is not supported yet).
   void function_block(Pou &pou, const StToken &start, std::string_view end);
   /// `VAR_INPUT`, `VAR`, `VAR_OUTPUT` ...: a section of variables starts at `t`.

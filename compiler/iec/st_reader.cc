@@ -39,8 +39,7 @@ void StParser::file(Project &project) {
     } else if (is_keyword(t, "CONFIGURATION")) {
       configuration(project);
     } else if (is_keyword(t, "TYPE")) {
-      not_supported(range(t), "data type declarations (TYPE ... END_TYPE) are not supported yet");
-      skip_block("TYPE");
+      type_section(project);
     } else if (is_keyword(t, "VAR_GLOBAL")) {
       // Outside a CONFIGURATION, as CODESYS's global variable lists are exported: read as a
       // configuration's (docs/iec.md "Global variables").
@@ -240,6 +239,7 @@ void StParser::declaration(Pou &pou, Section section, bool constant, std::string
   // The type: one name, or anything up to ':=' or ';' (ARRAY, STRING(20), an enumeration, a
   // subrange), kept whole for the lowering to name as not supported.
   const StToken type_start = tok();
+  const std::size_t type_begin = pos_;
   std::size_t type_end = pos_;
   int depth = 0;
   while (!at_end()) {
@@ -259,11 +259,20 @@ void StParser::declaration(Pou &pou, Section section, bool constant, std::string
   const StToken &last = toks_[type_end];
   ast::Name type{text_.substr(type_start.begin, last.end - type_start.begin), range(type_start, last)};
   const std::string t = upper(type.text);
-  const bool readable = chart_type(t) != nullptr;
+  // An elementary type, or one name (an alias of one, docs/iec.md "Type aliases"; a block's
+  // instance, whose initial value the lowering refuses): its initial value is an expression.
+  const bool readable = chart_type(t) != nullptr || (type_start.kind == StTok::Ident && type_end == type_begin);
   ast::ExprPtr init;
   if (tok().kind == StTok::Assign) {
     next();
-    if (readable) {
+    if (readable && tok().kind == StTok::LParen && peek().kind == StTok::Ident && peek(2).kind == StTok::Assign) {
+      // `(PT := T#1s)`: a structure's or an instance's initial members, never silently dropped.
+      not_supported(range(tok()), fmt::format("the initial value of '{}' names members ('({} := ...)'): initial "
+                                              "values of structures and function-block instances are not supported "
+                                              "yet",
+                                              first.text, peek().text));
+      while (!at_end() && tok().kind != StTok::Semi && !block_end()) next();
+    } else if (readable) {
       init = expression();
       if (!init) {
         skip_statement();
@@ -574,6 +583,38 @@ void StParser::action(Pou &pou) {
     return;
   }
   next();
+  if (tok().kind == StTok::Semi) next();
+}
+
+// ------------------------------------------------------------------ data types
+
+void StParser::type_section(Project &project) {
+  next();
+  while (!at_end() && !keyword("END_TYPE")) {
+    resync();
+    const std::size_t before = pos_;
+    if (tok().kind == StTok::Ident && peek().kind == StTok::Colon && peek(2).kind == StTok::Ident &&
+        peek(3).kind == StTok::Semi && !is_keyword(peek(2), "STRUCT")) {
+      project.aliases.push_back({name(tok()), name(peek(2)), range(tok(), peek(3))});
+      for (int k = 0; k < 4; ++k) next();
+    } else if (tok().kind == StTok::Ident && peek().kind == StTok::Colon && !block_end()) {
+      not_supported(range(tok()), fmt::format("data type '{}': gfec reads a new name of another type ('{} : INT;'); "
+                                              "structures, enumerations, arrays, subranges and initial values are "
+                                              "not supported yet",
+                                              tok().text, tok().text));
+      next();
+      next();
+      if (keyword("STRUCT")) skip_block("STRUCT");
+      else skip_statement();
+    } else {
+      error(range(tok()),
+            fmt::format("expected a data type declaration ('Level : INT;') or 'END_TYPE', not {}", quoted()));
+      if (block_end() && !keyword("END_TYPE")) return;
+      skip_statement();
+    }
+    if (pos_ == before) next();
+  }
+  if (keyword("END_TYPE")) next();
   if (tok().kind == StTok::Semi) next();
 }
 

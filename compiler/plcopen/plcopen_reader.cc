@@ -88,6 +88,25 @@ iec::Project Reader::read_project(const pugi::xml_node &root) {
       if (local_name(pous) == "pous")
         for (pugi::xml_node pou : pous.children())
           if (local_name(pou) == "pou") read_pou(pou, project);
+    // A data type whose base type is an elementary one or another name is an alias (docs/iec.md
+    // "Type aliases"); the others (structures, enumerations, arrays, subranges) are reported
+    // where a variable has one, as an unknown type is.
+    for (pugi::xml_node data : types.children())
+      if (local_name(data) == "dataTypes")
+        for (pugi::xml_node d : data.children()) {
+          if (local_name(d) != "dataType") continue;
+          pugi::xml_node base;
+          for (pugi::xml_node c : child(d, "baseType").children())
+            if (c.type() == pugi::node_element) {
+              base = c;
+              break;
+            }
+          if (!base || child(d, "initialValue")) continue;
+          ast::Name name = name_of(d, "name");
+          if (local_name(base) == "derived") project.aliases.push_back({name, name_of(base, "name"), at(d)});
+          else if (!base.first_child())  // <INT/>: an elementary type; <struct>, <array> ... have children
+            project.aliases.push_back({name, {keep(upper(local_name(base))), at(base)}, at(d)});
+        }
   }
   if (pugi::xml_node instances = child(root, "instances")) read_tasks(instances, project);
   return project;
