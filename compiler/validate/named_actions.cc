@@ -110,6 +110,12 @@ void check_named_actions(Context &cx, ChartScope &s) {
       s.out.actions[id->second].associations.push_back(out);
     }
   }
+  // An action no place holds never runs (its flags stay false): most likely a forgotten
+  // association, as an unused chart is a forgotten `runs`.
+  for (const model::Action &a : s.out.actions)
+    if (a.associations.empty())
+      cx.diag.warning(Warning::UnusedAction, a.name_range,
+                      fmt::format("action '{}' is held by no place: its body never runs", a.name));
 }
 
 }  // namespace gfec::validation
