@@ -157,6 +157,9 @@ struct StepVars {
   std::string_view x, t, avail, add, was;
 };
 
+/// Makes the expression of an SFC action's Q, which its scan tests to stop the SFC.
+using StopWhen = std::function<ast::ExprPtr(const Builder &)>;
+
 class Compiler {
 public:
   Compiler(Pou &pou, Spellings &names, ast::File &file, Diagnostics &diag, std::optional<double> period_ms,
@@ -205,12 +208,13 @@ private:
   /// One scan of `g`. `stop`: the Q of the action whose body it is (its SFC then starts over in
   /// the first run after a run with Q false); null for a function block's, which runs from its
   /// instance's start on.
-  ast::Block scan(const Sfc &g, const std::function<ast::ExprPtr(const Builder &)> *stop);
+  ast::Block scan(const Sfc &g, const StopWhen *stop);
   /// The time one scan of `g` adds to its timers: the period, or for a function block the time
   /// since its previous call (now()), kept in `last`.
   ast::ExprPtr step_time(const Builder &b, const Sfc &g);
-  /// The body of action `i` as run by the SFC that holds it: its own statements, or its SFC's scan.
-  ast::Block body_of(std::size_t i);
+  /// The body of action `i`: its own statements, or its SFC's scan, which stops after a run in
+  /// which `q` (the action's Q) is false.
+  ast::Block body_of(std::size_t i, const StopWhen &q);
 
   Pou &pou_;
   Spellings &names_;
@@ -340,14 +344,12 @@ ast::ExprPtr Compiler::step_time(const Builder &b, const Sfc &g) {
   return b.duration(*period_ms_);
 }
 
-ast::Block Compiler::body_of(std::size_t i) {
+ast::Block Compiler::body_of(std::size_t i, const StopWhen &q) {
   Action &a = pou_.actions[i];
   if (!a.sfc()) return std::move(a.body);
   const std::string key = upper(a.name.text);
-  const Sfc *g = nullptr;
-  for (const Sfc &s : sfcs_)
-    if (s.key == key) g = &s;
-  if (!g || !compiling_.insert(key).second) return {};
+  auto g = std::find_if(sfcs_.begin(), sfcs_.end(), [&](const Sfc &s) { return s.key == key; });
+  if (g == sfcs_.end() || !compiling_.insert(key).second) return {};
   if (compiling_.size() > kMaxDepth || too_deep_) {
     compiling_.erase(key);
     if (too_deep_) return {};
@@ -360,13 +362,12 @@ ast::Block Compiler::body_of(std::size_t i) {
                             a.name.text, compiling_.size(), kMaxDepth));
     return {};
   }
-  std::function<ast::ExprPtr(const Builder &)> q = [this, key](const Builder &b) { return b.name(out_.q.at(key)); };
   ast::Block body = scan(*g, &q);
   compiling_.erase(key);
   return body;
 }
 
-ast::Block Compiler::scan(const Sfc &g, const std::function<ast::ExprPtr(const Builder &)> *stop) {
+ast::Block Compiler::scan(const Sfc &g, const StopWhen *stop) {
   std::vector<Step> &steps = *g.steps;
   std::vector<Transition> &transitions = *g.transitions;
   ast::Block out;
@@ -600,7 +601,9 @@ ast::Block Compiler::scan(const Sfc &g, const std::function<ast::ExprPtr(const B
   if (!acted_var.empty()) out.push_back(sfc.assign(acted_var, sfc.boolean(true)));
   for (std::size_t i : held) {
     const Builder b(file_, pou_.actions[i].range);
-    out.push_back(b.when(b.name(avars[i].a), body_of(i)));
+    const std::string key = upper(pou_.actions[i].name.text);
+    const StopWhen q = [this, key](const Builder &b) { return b.name(out_.q.at(key)); };  // this scan's Q
+    out.push_back(b.when(b.name(avars[i].a), body_of(i, q)));
   }
   if (stop) {
     // A run with the action's Q false was its last: the SFC stops, every step and action off,
@@ -681,10 +684,7 @@ void Compiler::run(bool function_block) {
     const std::string key = upper(a.name.text);
     auto held = owner_.find(key);
     if (!a.sfc() || out_.inner.count(key) || (held != owner_.end() && !held->second.empty())) continue;
-    const Sfc *g = nullptr;
-    for (const Sfc &s : sfcs_)
-      if (s.key == key) g = &s;
-    std::function<ast::ExprPtr(const Builder &)> q = [&a](const Builder &b) {
+    const StopWhen q = [&a](const Builder &b) {
       auto e = std::make_unique<ast::Expr>();
       e->kind = ast::Expr::Kind::Call;
       e->range = a.name.range;
@@ -692,9 +692,7 @@ void Compiler::run(bool function_block) {
       e->args.push_back(b.name(a.name.text));
       return e;
     };
-    compiling_.insert(key);
-    a.body = scan(*g, &q);
-    compiling_.erase(key);
+    a.body = body_of(i, q);
   }
   for (Action &a : pou_.actions) a.steps.clear(), a.transitions.clear();
 }
